@@ -1,0 +1,78 @@
+"""``gazelle sim | spawn | check | demo``: Gazebo's workflow from one pip-installed command."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+app = typer.Typer(
+    add_completion=False,
+    no_args_is_help=True,
+    help="Gazebo-style robot simulation for ROS 2 on MuJoCo. Headless first.",
+)
+
+
+def _parse_args(values: list[str]) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for v in values:
+        if ":=" not in v:
+            raise typer.BadParameter(f"expected NAME:=VALUE, got {v!r}")
+        k, val = v.split(":=", 1)
+        out[k] = val
+    return out
+
+
+@app.command()
+def sim(
+    world: Optional[Path] = typer.Argument(None, help="World file (.sdf/.world) or a model (.urdf/.xacro/.sdf); default: the embedded empty world."),
+    rtf: Optional[float] = typer.Option(None, "--rtf", help="Real-time factor (default: the world's, 1.0); 0 = as fast as possible."),
+    clock_rate: float = typer.Option(1000.0, "--clock-rate", help="/clock publish rate in sim-time Hz (0 = every step)."),
+    paused: bool = typer.Option(False, "--paused", help="Start paused (unpause with /unpause_physics)."),
+    arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
+) -> None:
+    """Run a simulation server: /clock, /spawn_entity, /delete_entity and every plugin's topics."""
+    from ._sim import run_sim
+
+    raise typer.Exit(run_sim(world, rtf=rtf, clock_rate_hz=clock_rate, paused=paused, args=_parse_args(arg)))
+
+
+@app.command(
+    context_settings={"allow_extra_args": True, "ignore_unknown_options": True, "help_option_names": []},
+    add_help_option=False,
+)
+def spawn(ctx: typer.Context) -> None:
+    """Spawn an entity like gazebo_ros's spawn_entity.py (-entity NAME -file F | -topic T | -string XML ...)."""
+    from ..ros._spawn import main as spawn_main
+
+    raise typer.Exit(spawn_main(list(ctx.args)))
+
+
+@app.command()
+def check(
+    file: Path = typer.Argument(..., help="A URDF, xacro, SDF or SRDF file."),
+    arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
+    strict: bool = typer.Option(False, "--strict", help="Treat warnings as errors."),
+) -> None:
+    """Print a description's diagnostics and a summary; exit non-zero on errors."""
+    from ._check import run_check
+
+    raise typer.Exit(run_check(file, args=_parse_args(arg), strict=strict))
+
+
+@app.command()
+def demo(
+    out: Path = typer.Option(Path("out/demo"), "--out", help="Where to write the path image and logs."),
+    rtf: float = typer.Option(1.0, "--rtf", help="Real-time factor of the demo (0 = as fast as possible, with sim time)."),
+) -> None:
+    """Start the sim, spawn the seed robot, drive one square with square_movement.py, report, stop."""
+    from ..ros._demo import run_demo
+
+    raise typer.Exit(run_demo(out, rtf=rtf))
+
+
+def main(argv: list[str] | None = None) -> None:
+    """Entry point of the ``gazelle`` console script."""
+    app(args=argv if argv is not None else sys.argv[1:], prog_name="gazelle")

@@ -1,0 +1,77 @@
+"""``gazelle sim``: load a world, start physics and the ROS bridge, run until Ctrl-C."""
+
+from __future__ import annotations
+
+import logging
+import os
+import signal
+import sys
+import threading
+from pathlib import Path
+
+from ..description import Model, ModelLoadError, World, load
+from ..worlds import default_world
+
+
+def load_world(path: Path | None, args: dict[str, str]) -> World:
+    """The world to simulate: the embedded default, a world file, or the default world plus one model.
+
+    Raises:
+        ModelLoadError: the file has errors.
+    """
+    if path is None:
+        return default_world()
+    result = load(path, args=args)
+    for d in result.diagnostics:
+        print(d.format(), file=sys.stderr)
+    value = result.value
+    if isinstance(value, World):
+        return value
+    if isinstance(value, Model):
+        base = default_world()
+        return World(
+            name=base.name, gravity=base.gravity, physics=base.physics, models=(*base.models, value), lights=base.lights
+        )
+    raise ModelLoadError(result.diagnostics)
+
+
+def run_sim(path: Path | None, *, rtf: float | None, clock_rate_hz: float, paused: bool, args: dict[str, str]) -> int:
+    """Run the server; returns the process exit code."""
+    logging.basicConfig(level=logging.INFO, format="[%(levelname)s] [%(name)s]: %(message)s", stream=sys.stderr)
+    try:
+        world = load_world(path, args)
+    except ModelLoadError as err:
+        print(str(err), file=sys.stderr)
+        return 1
+    from ..physics import Simulation
+    from ..ros._bridge import RosBridge
+
+    # rclpy prints our records itself once the bridge is up
+    for h in list(logging.getLogger().handlers):
+        logging.getLogger().removeHandler(h)
+    sim = Simulation(world, rtf=rtf)
+    sim.paused = paused
+    bridge = RosBridge(sim, clock_rate_hz=clock_rate_hz)
+    stop = threading.Event()
+
+    def on_signal(signum: int, _frame: object) -> None:
+        stop.set()
+
+    signal.signal(signal.SIGINT, on_signal)
+    signal.signal(signal.SIGTERM, on_signal)
+    sim.start()
+    target = "as fast as possible" if sim.rtf == 0 else f"{sim.rtf:g}"
+    print(
+        f"gazelle: ready: world '{world.name}' ({len(sim.world.entities)} entities), "
+        f"step {sim.world.timestep * 1000:g} ms, real-time factor {target}, "
+        f"ROS_DOMAIN_ID={os.environ.get('ROS_DOMAIN_ID', '0')}",
+        flush=True,
+    )
+    while not stop.wait(0.2):
+        if not sim.running:
+            print("gazelle: simulation thread stopped unexpectedly", file=sys.stderr)
+            break
+    print("gazelle: shutting down", flush=True)
+    sim.stop()
+    bridge.shutdown()
+    return 0

@@ -1,0 +1,194 @@
+"""Robot and world descriptions: URDF, xacro, SDF and SRDF into one typed model.
+
+Public entry points are :func:`load` (a file, dispatched by suffix) and
+:func:`load_string` (text with an explicit or detected format). Both return a
+:class:`LoadResult` whose ``value`` is a :class:`Model`, :class:`World` or
+:class:`Semantics`, and raise :class:`ModelLoadError` carrying every
+diagnostic when the input has errors.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from pathlib import Path
+from typing import Mapping
+
+from ._diagnostics import Diagnostic as Diagnostic
+from ._diagnostics import DiagnosticSink as DiagnosticSink
+from ._diagnostics import ErrorCode as ErrorCode
+from ._diagnostics import ModelLoadError as ModelLoadError
+from ._diagnostics import Severity as Severity
+from ._diagnostics import SimError as SimError
+from ._diagnostics import SourceLocation as SourceLocation
+from ._model import *  # noqa: F401,F403  (the model dataclasses are the public surface)
+from ._model import LoadResult, Model, World
+from ._resources import ResourceResolver as ResourceResolver
+
+FORMATS = ("urdf", "xacro", "sdf", "srdf")
+_SUFFIXES = {
+    ".urdf": "urdf",
+    ".xacro": "xacro",
+    ".sdf": "sdf",
+    ".world": "sdf",
+    ".srdf": "srdf",
+}
+
+
+def format_for_path(path: str | os.PathLike[str]) -> str | None:
+    """The format implied by a file name, or None if the suffix is unknown."""
+    name = Path(path).name.lower()
+    for suffix, fmt in _SUFFIXES.items():
+        if name.endswith(suffix):
+            return fmt
+    return None
+
+
+_XACRO_NS = re.compile(r"xmlns:xacro\s*=|<xacro:")
+
+
+def detect_format(text: str) -> str | None:
+    """Guess the format of XML text from its content (xacro markup, root element)."""
+    if _XACRO_NS.search(text):
+        return "xacro"
+    # skip comments and the declaration, find the first element name
+    body = re.sub(r"<!--.*?-->", "", text, flags=re.S)
+    m = re.search(r"<\s*([A-Za-z_][\w:.-]*)", re.sub(r"<\?.*?\?>", "", body, flags=re.S))
+    if not m:
+        return None
+    root = m.group(1)
+    if root == "sdf":
+        return "sdf"
+    if root == "robot":
+        if re.search(r"<\s*(group|disable_collisions|virtual_joint|end_effector)\b", body) and not re.search(
+            r"<\s*link\s+name=[^>]*>\s*<\s*(visual|collision|inertial)", body
+        ):
+            return "srdf"
+        return "urdf"
+    return None
+
+
+def load(
+    path: str | os.PathLike[str],
+    *,
+    args: Mapping[str, str] | None = None,
+    strict: bool = False,
+    resolver: ResourceResolver | None = None,
+) -> LoadResult:
+    """Load a description file, dispatched by suffix.
+
+    Args:
+        path: a ``.urdf``, ``.xacro`` (``.urdf.xacro``), ``.sdf``/``.world`` or ``.srdf`` file.
+        args: xacro ``$(arg)`` values.
+        strict: turn warnings into errors.
+        resolver: how ``package://``/``model://`` are found (default: environment).
+
+    Returns:
+        The loaded value and every warning.
+
+    Raises:
+        ModelLoadError: the file is missing, unreadable, has an unknown suffix, or has errors.
+    """
+    p = Path(path)
+    fmt = format_for_path(p)
+    if fmt is None:
+        raise ModelLoadError(
+            [
+                Diagnostic(
+                    ErrorCode.UNKNOWN_FORMAT,
+                    Severity.ERROR,
+                    f"unknown description format for '{p.name}'; supported suffixes: "
+                    + ", ".join(sorted(_SUFFIXES)),
+                    SourceLocation(str(p)),
+                )
+            ]
+        )
+    try:
+        text = p.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise ModelLoadError(
+            [Diagnostic(ErrorCode.FILE_NOT_FOUND, Severity.ERROR, f"no such file: {p}", SourceLocation(str(p)))]
+        ) from None
+    except (OSError, UnicodeDecodeError) as err:
+        raise ModelLoadError(
+            [Diagnostic(ErrorCode.FILE_READ_ERROR, Severity.ERROR, f"cannot read {p}: {err}", SourceLocation(str(p)))]
+        ) from None
+    return load_string(text, format=fmt, source=str(p), args=args, strict=strict, resolver=resolver)
+
+
+def load_string(
+    text: str,
+    *,
+    format: str = "auto",
+    source: str | None = None,
+    args: Mapping[str, str] | None = None,
+    strict: bool = False,
+    resolver: ResourceResolver | None = None,
+) -> LoadResult:
+    """Load description text.
+
+    Args:
+        text: the XML.
+        format: one of ``urdf``, ``xacro``, ``sdf``, ``srdf`` or ``auto`` (detect).
+        source: the name used in diagnostics (default ``<string>.<format>``); relative
+            paths in the text resolve against its folder when it is a real path.
+        args: xacro ``$(arg)`` values.
+        strict: turn warnings into errors.
+        resolver: how ``package://``/``model://`` are found.
+
+    Raises:
+        ModelLoadError: with every diagnostic, when there is any error.
+    """
+    fmt = detect_format(text) if format == "auto" else format
+    if fmt is None or fmt not in FORMATS:
+        name = source or "<string>"
+        raise ModelLoadError(
+            [
+                Diagnostic(
+                    ErrorCode.UNKNOWN_FORMAT,
+                    Severity.ERROR,
+                    f"cannot tell the description format (got {format!r}); expected one of "
+                    + ", ".join(FORMATS)
+                    + " (a <robot> or <sdf> root element)",
+                    SourceLocation(name),
+                )
+            ]
+        )
+    source = source or f"<string>.{fmt}"
+    resolver = resolver or ResourceResolver()
+    sink = DiagnosticSink(strict=strict)
+    base_dir = str(Path(source).parent) if not source.startswith("<") else os.getcwd()
+    value: Model | World | object | None
+    if fmt in ("urdf", "xacro"):
+        from . import _urdf, _xacro
+
+        if fmt == "xacro":
+            expanded = _xacro.expand(text, source=source, args=dict(args or {}), sink=sink, resolver=resolver)
+            if expanded is None:
+                sink.raise_if_errors()
+                raise ModelLoadError(sink.items)
+            inner = detect_format(expanded) or "urdf"
+            if inner == "srdf":
+                from . import _srdf
+
+                value = _srdf.parse_srdf(expanded, source=source, sink=sink)
+            elif inner == "sdf":
+                from . import _sdf
+
+                value = _sdf.parse_sdf(expanded, source=source, sink=sink, resolver=resolver, base_dir=base_dir)
+            else:
+                value = _urdf.parse_urdf(expanded, source=source, sink=sink, resolver=resolver, base_dir=base_dir)
+        else:
+            value = _urdf.parse_urdf(text, source=source, sink=sink, resolver=resolver, base_dir=base_dir)
+    elif fmt == "srdf":
+        from . import _srdf
+
+        value = _srdf.parse_srdf(text, source=source, sink=sink)
+    else:
+        from . import _sdf
+
+        value = _sdf.parse_sdf(text, source=source, sink=sink, resolver=resolver, base_dir=base_dir)
+    sink.raise_if_errors()
+    if value is None:
+        raise ModelLoadError(sink.items)
+    return LoadResult(value, tuple(sink.items))  # type: ignore[arg-type]

@@ -1,0 +1,154 @@
+"""Diagnostics: every problem found in a user's file, with a stable code and a location.
+
+Loaders report into a :class:`DiagnosticSink`; at the API boundary one
+:class:`ModelLoadError` is raised carrying every diagnostic, so users see all
+their mistakes at once, printed like a compiler::
+
+    robot.urdf:42: error: [JOINT_PARENT_INVALID] joint 'wheel_l' has unknown parent link 'bse'
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass, field
+
+
+class Severity(enum.Enum):
+    """How bad a diagnostic is."""
+
+    WARNING = "warning"
+    ERROR = "error"
+
+
+class ErrorCode(enum.Enum):
+    """Stable codes for diagnostics. Tests check the code; humans read the message."""
+
+    # generic XML / file problems
+    FILE_NOT_FOUND = "FILE_NOT_FOUND"
+    FILE_READ_ERROR = "FILE_READ_ERROR"
+    XML_PARSE_ERROR = "XML_PARSE_ERROR"
+    UNKNOWN_FORMAT = "UNKNOWN_FORMAT"
+    XACRO_ERROR = "XACRO_ERROR"
+    ROOT_ELEMENT_INVALID = "ROOT_ELEMENT_INVALID"
+    ELEMENT_MISSING = "ELEMENT_MISSING"
+    ATTRIBUTE_MISSING = "ATTRIBUTE_MISSING"
+    ATTRIBUTE_INVALID = "ATTRIBUTE_INVALID"
+    VALUE_INVALID = "VALUE_INVALID"
+    ELEMENT_UNSUPPORTED = "ELEMENT_UNSUPPORTED"
+    ATTRIBUTE_UNSUPPORTED = "ATTRIBUTE_UNSUPPORTED"
+    # structure
+    DUPLICATE_NAME = "DUPLICATE_NAME"
+    LINK_MISSING = "LINK_MISSING"
+    JOINT_PARENT_INVALID = "JOINT_PARENT_INVALID"
+    JOINT_CHILD_INVALID = "JOINT_CHILD_INVALID"
+    JOINT_TYPE_INVALID = "JOINT_TYPE_INVALID"
+    JOINT_AXIS_INVALID = "JOINT_AXIS_INVALID"
+    KINEMATIC_LOOP = "KINEMATIC_LOOP"
+    MULTIPLE_ROOTS = "MULTIPLE_ROOTS"
+    FRAME_INVALID = "FRAME_INVALID"
+    FRAME_CYCLE = "FRAME_CYCLE"
+    MATERIAL_UNDEFINED = "MATERIAL_UNDEFINED"
+    # physics-relevant values
+    INERTIA_MISSING = "INERTIA_MISSING"
+    INERTIA_INVALID = "INERTIA_INVALID"
+    INERTIAL_NESTED = "INERTIAL_NESTED"
+    MASS_INVALID = "MASS_INVALID"
+    GEOMETRY_INVALID = "GEOMETRY_INVALID"
+    MESH_NOT_FOUND = "MESH_NOT_FOUND"
+    MESH_LOAD_ERROR = "MESH_LOAD_ERROR"
+    URI_UNRESOLVED = "URI_UNRESOLVED"
+    # extensions
+    GAZEBO_REFERENCE_INVALID = "GAZEBO_REFERENCE_INVALID"
+    PLUGIN_UNSUPPORTED = "PLUGIN_UNSUPPORTED"
+    PLUGIN_CONFIG_INVALID = "PLUGIN_CONFIG_INVALID"
+    SDF_VERSION_UNSUPPORTED = "SDF_VERSION_UNSUPPORTED"
+    SRDF_REFERENCE_INVALID = "SRDF_REFERENCE_INVALID"
+
+
+@dataclass(frozen=True, slots=True)
+class SourceLocation:
+    """Where something came from in a user's file."""
+
+    file: str
+    """Path of the file, or a synthetic name such as ``<string>.urdf``."""
+    line: int | None = None
+    """1-based line number, when known."""
+
+    def __str__(self) -> str:
+        return f"{self.file}:{self.line}" if self.line is not None else self.file
+
+
+@dataclass(frozen=True, slots=True)
+class Diagnostic:
+    """One problem found while loading a description."""
+
+    code: ErrorCode
+    """Stable machine-readable code."""
+    severity: Severity
+    """Warning or error."""
+    message: str
+    """Human-readable message."""
+    location: SourceLocation | None = None
+    """File and line the problem is at, if known."""
+
+    def format(self) -> str:
+        """Format like a compiler: ``file:line: error: [CODE] message``."""
+        where = f"{self.location}: " if self.location is not None else ""
+        return f"{where}{self.severity.value}: [{self.code.value}] {self.message}"
+
+    def __str__(self) -> str:
+        return self.format()
+
+
+class SimError(Exception):
+    """Base class of every error gazelle raises on purpose."""
+
+
+class ModelLoadError(SimError, ValueError):
+    """A description could not be loaded. ``.diagnostics`` holds every problem found."""
+
+    def __init__(self, diagnostics: tuple[Diagnostic, ...] | list[Diagnostic]):
+        self.diagnostics: tuple[Diagnostic, ...] = tuple(diagnostics)
+        errors = [d for d in self.diagnostics if d.severity is Severity.ERROR]
+        shown = errors or list(self.diagnostics)
+        super().__init__("\n".join(d.format() for d in shown) or "model could not be loaded")
+
+    @property
+    def first(self) -> Diagnostic | None:
+        """The first error (or diagnostic) found, handy for one-line reports."""
+        for d in self.diagnostics:
+            if d.severity is Severity.ERROR:
+                return d
+        return self.diagnostics[0] if self.diagnostics else None
+
+
+@dataclass
+class DiagnosticSink:
+    """Collects diagnostics while loading; a policy decides what happens at the end."""
+
+    strict: bool = False
+    """When true, warnings count as errors."""
+    items: list[Diagnostic] = field(default_factory=list)
+
+    def error(self, code: ErrorCode, message: str, location: SourceLocation | None = None) -> None:
+        """Report an error."""
+        self.items.append(Diagnostic(code, Severity.ERROR, message, location))
+
+    def warning(self, code: ErrorCode, message: str, location: SourceLocation | None = None) -> None:
+        """Report a warning (an error in strict mode)."""
+        sev = Severity.ERROR if self.strict else Severity.WARNING
+        self.items.append(Diagnostic(code, sev, message, location))
+
+    @property
+    def has_errors(self) -> bool:
+        """Whether any error has been reported."""
+        return any(d.severity is Severity.ERROR for d in self.items)
+
+    def raise_if_errors(self) -> None:
+        """Raise :class:`ModelLoadError` with everything collected if there is any error."""
+        if self.has_errors:
+            raise ModelLoadError(self.items)
+
+    def extend(self, diagnostics: tuple[Diagnostic, ...] | list[Diagnostic]) -> None:
+        """Add diagnostics collected elsewhere."""
+        self.items.extend(diagnostics)

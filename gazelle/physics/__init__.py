@@ -1,0 +1,10 @@
+"""MuJoCo physics built from description objects: step, spawn/delete, pause/step/reset, RTF."""
+
+from ._builder import BuildError as BuildError
+from ._simulation import RtfSample as RtfSample
+from ._simulation import Simulation as Simulation
+from ._world import Entity as Entity
+from ._world import EntityState as EntityState
+from ._world import ErrorKind as ErrorKind
+from ._world import PhysicsWorld as PhysicsWorld
+from ._world import WorldError as WorldError

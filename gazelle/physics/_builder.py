@@ -1,0 +1,342 @@
+"""Turn description objects into MuJoCo ``MjSpec`` bodies. Never sees XML.
+
+Naming: every MuJoCo element of an entity is prefixed ``<entity>::``, e.g. the
+link ``base_link`` of entity ``robot`` is the body ``robot::base_link`` and its
+joint ``wheel`` the joint ``robot::wheel``. Links with a fixed joint become
+separate welded bodies (never lumped), so every link frame stays addressable.
+
+How description joints map to MuJoCo:
+
+=============  ===============================================================
+revolute       hinge, limited to [lower, upper]
+continuous     hinge, unlimited
+prismatic      slide, limited
+fixed          no joint (welded body)
+floating       free joint at the top level; three slides + ball when nested
+planar         two slides + hinge about the plane normal
+ball           ball
+universal      two hinges
+screw          hinge + slide, coupled by a joint equality (thread pitch)
+=============  ===============================================================
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import mujoco
+import numpy as np
+
+from ..description import (
+    Box,
+    Capsule,
+    Collision,
+    Cylinder,
+    Ellipsoid,
+    Joint,
+    JointType,
+    Link,
+    Mesh,
+    Model,
+    Plane,
+    Pose,
+    Sphere,
+)
+from ..description._model import quat_conj, quat_rotate
+
+SEP = "::"
+MIN_MASS = 1e-6
+JOINT_ARMATURE = 1e-4
+"""Rotor inertia added to every 1-dof joint (kg·m²): keeps light links well conditioned."""
+
+
+class BuildError(Exception):
+    """A description cannot become a MuJoCo model; the message names the element."""
+
+
+def scoped(entity: str, name: str) -> str:
+    """The MuJoCo name of an element ``name`` of entity ``entity``."""
+    return f"{entity}{SEP}{name}"
+
+
+@dataclass
+class BuiltEntity:
+    """What the builder added to the spec for one entity (names only: indices change on recompile)."""
+
+    name: str
+    root_body: str
+    free_joint: str | None
+    bodies: dict[str, str] = field(default_factory=dict)
+    """link name -> MuJoCo body name."""
+    joints: dict[str, list[str]] = field(default_factory=dict)
+    """description joint name -> MuJoCo joint names (several for planar/universal/...)."""
+    equalities: list[str] = field(default_factory=list)
+
+
+def friction_priority(mu: float) -> int:
+    """MuJoCo combines the friction of two geoms by taking the larger; ODE/Gazebo take the smaller.
+
+    MuJoCo uses the parameters of the geom with the higher ``priority`` instead, so
+    giving slippery geoms a higher priority reproduces ODE's min(mu1, mu2) rule.
+    """
+    mu = max(mu, 0.0)
+    return int(max(0, min(100, round(40 - 20 * math.log10(mu + 1e-2)))))
+
+
+def _surface_friction(col: Collision) -> list[float]:
+    s = col.surface
+    mu = s.mu if s.mu is not None else 1.0
+    if s.mu2 is not None:
+        mu = min(mu, s.mu2) if s.mu2 >= 0 else mu
+    torsional = s.torsional if s.torsional is not None else 0.005
+    rolling = s.rolling if s.rolling is not None else 0.0001
+    return [max(mu, 0.0), max(torsional, 0.0), max(rolling, 0.0)]
+
+
+def _solref_from_surface(col: Collision, mass_hint: float) -> tuple[list[float], list[float]] | None:
+    """Map ODE kp/kd to MuJoCo's direct (negative) solref = [-stiffness, -damping]."""
+    s = col.surface
+    if s.kp is None and s.kd is None:
+        return None
+    kp = s.kp if s.kp is not None else 1e13
+    kd = s.kd if s.kd is not None else 1.0
+    # MuJoCo direct solref is per unit mass of the contact; divide by a mass hint.
+    m = max(mass_hint, MIN_MASS)
+    return [-kp / m, -kd / m], [0.9, 0.95, 0.001, 0.5, 2.0]
+
+
+def _add_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, col: Collision, name: str, mass_hint: float) -> None:
+    g = col.geometry
+    kwargs: dict = {
+        "name": name,
+        "pos": list(col.pose.position),
+        "quat": list(col.pose.orientation),
+        "friction": (friction := _surface_friction(col)),
+        "priority": friction_priority(friction[0]),
+        "group": 3,
+    }
+    if isinstance(g, Box):
+        kwargs.update(type=mujoco.mjtGeom.mjGEOM_BOX, size=[g.size[0] / 2, g.size[1] / 2, g.size[2] / 2])
+    elif isinstance(g, Cylinder):
+        kwargs.update(type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[g.radius, g.length / 2, 0])
+    elif isinstance(g, Sphere):
+        kwargs.update(type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[g.radius, 0, 0])
+    elif isinstance(g, Capsule):
+        kwargs.update(type=mujoco.mjtGeom.mjGEOM_CAPSULE, size=[g.radius, g.length / 2, 0])
+    elif isinstance(g, Ellipsoid):
+        kwargs.update(type=mujoco.mjtGeom.mjGEOM_ELLIPSOID, size=list(g.radii))
+    elif isinstance(g, Plane):
+        kwargs.update(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[g.size[0] / 2, g.size[1] / 2, 1.0])
+        n = np.asarray(g.normal, dtype=float)
+        if np.linalg.norm(n) > 0 and not np.allclose(n / np.linalg.norm(n), [0, 0, 1]):
+            z = np.array([0.0, 0.0, 1.0])
+            n = n / np.linalg.norm(n)
+            axis = np.cross(z, n)
+            ang = math.atan2(np.linalg.norm(axis), float(np.dot(z, n)))
+            if np.linalg.norm(axis) > 1e-12:
+                axis = axis / np.linalg.norm(axis)
+                q = [math.cos(ang / 2), *(axis * math.sin(ang / 2))]
+                qq = np.zeros(4)
+                mujoco.mju_mulQuat(qq, np.asarray(col.pose.orientation, dtype=float), np.asarray(q))
+                kwargs["quat"] = list(qq)
+    elif isinstance(g, Mesh):
+        if g.path is None:
+            raise BuildError(f"collision '{col.name}': mesh '{g.uri}' could not be resolved")
+        mesh_name = f"{name}__mesh"
+        mesh = spec.add_mesh(name=mesh_name)
+        vertices, faces = _load_mesh(g.path)
+        mesh.uservert = list((vertices * np.asarray(g.scale)).ravel())
+        mesh.userface = list(faces.ravel())
+        kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh_name)
+    else:  # pragma: no cover - the union is closed
+        raise BuildError(f"collision '{col.name}': unsupported geometry {type(g).__name__}")
+    solref = _solref_from_surface(col, mass_hint)
+    if solref is not None:
+        kwargs["solref"], kwargs["solimp"] = solref
+    if col.surface.min_depth is not None:
+        kwargs["margin"] = 0.0
+        kwargs["gap"] = 0.0
+    body.add_geom(**kwargs)
+
+
+_MESH_CACHE: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+
+
+def _load_mesh(path: str) -> tuple[np.ndarray, np.ndarray]:
+    """Vertices and faces of a mesh file (cached); collisions use MuJoCo's convex hull of it."""
+    if path not in _MESH_CACHE:
+        try:
+            import trimesh
+        except ImportError as err:  # pragma: no cover - trimesh is a dependency
+            raise BuildError(f"mesh '{path}' needs trimesh: {err}") from err
+        try:
+            loaded = trimesh.load(path, force="mesh", process=False)
+        except Exception as err:  # noqa: BLE001 - trimesh raises many types
+            raise BuildError(f"cannot load mesh '{path}': {err}") from err
+        verts = np.asarray(loaded.vertices, dtype=float)
+        faces = np.asarray(loaded.faces, dtype=np.int32)
+        if len(verts) < 4:
+            raise BuildError(f"mesh '{path}' has fewer than 4 vertices")
+        _MESH_CACHE[path] = (verts, faces)
+    return _MESH_CACHE[path]
+
+
+def _set_inertial(body: mujoco.MjsBody, link: Link) -> None:
+    inertial = link.inertial
+    if inertial is None:
+        return
+    body.explicitinertial = True
+    body.mass = max(inertial.mass, MIN_MASS)
+    body.ipos = list(inertial.pose.position)
+    body.iquat = list(inertial.pose.orientation)
+    body.fullinertia = [inertial.ixx, inertial.iyy, inertial.izz, inertial.ixy, inertial.ixz, inertial.iyz]
+
+
+def _joint_frame_in_child(joint: Joint) -> Pose:
+    return joint.child_offset.inverse()
+
+
+def _add_joint_dofs(spec: mujoco.MjSpec, body: mujoco.MjsBody, joint: Joint, name: str, built: BuiltEntity) -> None:
+    X_CJ = _joint_frame_in_child(joint)
+    pos = list(X_CJ.position)
+    axis_j = joint.axis.xyz if joint.axis is not None else (1.0, 0.0, 0.0)
+    axis = list(quat_rotate(X_CJ.orientation, axis_j))
+    names: list[str] = []
+    limit = joint.axis.limit if joint.axis is not None else None
+    dyn = joint.axis.dynamics if joint.axis is not None else None
+
+    def add(kind: mujoco.mjtJoint, jname: str, jaxis: list[float], limited: bool) -> mujoco.MjsJoint:
+        j = body.add_joint(name=jname, type=kind, pos=pos, axis=jaxis)
+        if limited and limit is not None and limit.lower is not None and limit.upper is not None and limit.upper >= limit.lower:
+            j.limited = mujoco.mjtLimited.mjLIMITED_TRUE
+            j.range = [limit.lower, limit.upper]
+        else:
+            j.limited = mujoco.mjtLimited.mjLIMITED_FALSE
+        if dyn is not None:
+            j.damping = [dyn.damping, 0.0, 0.0]  # MuJoCo 4: polynomial coefficients
+            j.frictionloss = dyn.friction
+            if dyn.spring_stiffness:
+                j.stiffness = [dyn.spring_stiffness, 0.0, 0.0]
+                j.springref = dyn.spring_reference
+        if limit is not None and limit.effort is not None and limit.effort > 0 and kind in (
+            mujoco.mjtJoint.mjJNT_HINGE,
+            mujoco.mjtJoint.mjJNT_SLIDE,
+        ):
+            j.actfrclimited = mujoco.mjtLimited.mjLIMITED_TRUE
+            j.actfrcrange = [-limit.effort, limit.effort]
+        j.armature = JOINT_ARMATURE
+        names.append(jname)
+        return j
+
+    t = joint.type
+    if t in (JointType.REVOLUTE, JointType.CONTINUOUS):
+        add(mujoco.mjtJoint.mjJNT_HINGE, name, axis, t is JointType.REVOLUTE)
+    elif t is JointType.PRISMATIC:
+        add(mujoco.mjtJoint.mjJNT_SLIDE, name, axis, True)
+    elif t is JointType.BALL:
+        j = body.add_joint(name=name, type=mujoco.mjtJoint.mjJNT_BALL, pos=pos)
+        names.append(j.name)
+    elif t is JointType.UNIVERSAL:
+        add(mujoco.mjtJoint.mjJNT_HINGE, name, axis, True)
+        axis2 = joint.axis2.xyz if joint.axis2 is not None else (0.0, 1.0, 0.0)
+        add(mujoco.mjtJoint.mjJNT_HINGE, name + "#2", list(quat_rotate(X_CJ.orientation, axis2)), False)
+    elif t is JointType.SCREW:
+        add(mujoco.mjtJoint.mjJNT_HINGE, name, axis, False)
+        add(mujoco.mjtJoint.mjJNT_SLIDE, name + "#slide", axis, False)
+        pitch = joint.screw_thread_pitch or 1.0
+        eq = spec.add_equality(
+            name=name + "#screw",
+            type=mujoco.mjtEq.mjEQ_JOINT,
+            name1=name + "#slide",
+            name2=name,
+            data=[0, 1.0 / (2 * math.pi * pitch) if pitch else 0, 0, 0, 0] + [0] * 6,
+        )
+        del eq
+        built.equalities.append(name + "#screw")
+    elif t is JointType.PLANAR:
+        # plane normal = axis; translate in two orthogonal directions, rotate about the normal
+        n = np.asarray(axis, dtype=float)
+        n = n / (np.linalg.norm(n) or 1.0)
+        a = np.cross(n, [1.0, 0.0, 0.0])
+        if np.linalg.norm(a) < 1e-6:
+            a = np.cross(n, [0.0, 1.0, 0.0])
+        a = a / np.linalg.norm(a)
+        b = np.cross(n, a)
+        add(mujoco.mjtJoint.mjJNT_SLIDE, name + "#x", list(a), False)
+        add(mujoco.mjtJoint.mjJNT_SLIDE, name + "#y", list(b), False)
+        add(mujoco.mjtJoint.mjJNT_HINGE, name, list(n), False)
+    elif t is JointType.FLOATING:
+        for i, ax in enumerate(([1, 0, 0], [0, 1, 0], [0, 0, 1])):
+            add(mujoco.mjtJoint.mjJNT_SLIDE, f"{name}#t{i}", ax, False)
+        j = body.add_joint(name=name, type=mujoco.mjtJoint.mjJNT_BALL, pos=pos)
+        names.append(j.name)
+    elif t is JointType.FIXED:
+        pass
+    else:  # pragma: no cover
+        raise BuildError(f"joint '{joint.name}': unsupported type {t.value}")
+    built.joints[joint.name] = names
+
+
+def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> BuiltEntity:
+    """Add ``model`` to ``spec`` as entity ``entity`` placed at ``X_WM``.
+
+    Raises:
+        BuildError: the model cannot be represented (e.g. an unresolved collision mesh).
+    """
+    if not model.links:
+        raise BuildError(f"model '{model.name}' has no links")
+    children: dict[str, list[Joint]] = {}
+    child_joint: dict[str, Joint] = {}
+    for j in model.joints:
+        children.setdefault(j.parent, []).append(j)
+        child_joint[j.child] = j
+    links = {lk.name: lk for lk in model.links}
+    roots = [lk.name for lk in model.links if lk.name not in child_joint]
+    world_joints = children.get("world", [])
+
+    built = BuiltEntity(name=entity, root_body="", free_joint=None)
+    total_mass = sum((lk.inertial.mass if lk.inertial else 0.0) for lk in model.links) or 1.0
+
+    def add_subtree(parent_body: mujoco.MjsBody, link_name: str, X_PC: Pose, joint: Joint | None) -> None:
+        link = links[link_name]
+        body = parent_body.add_body(
+            name=scoped(entity, link_name), pos=list(X_PC.position), quat=list(X_PC.orientation)
+        )
+        if link.kinematic:
+            body.gravcomp = 1.0
+        elif not link.gravity:
+            body.gravcomp = 1.0
+        built.bodies[link_name] = body.name
+        _set_inertial(body, link)
+        if joint is not None:
+            _add_joint_dofs(spec, body, joint, scoped(entity, joint.name), built)
+        mass_hint = link.inertial.mass if link.inertial else total_mass
+        for i, col in enumerate(link.collisions):
+            _add_geom(spec, body, col, scoped(entity, f"{link_name}::{col.name or 'collision'}#{i}"), mass_hint)
+        for j in children.get(link_name, []):
+            add_subtree(body, j.child, j.origin * j.child_offset, j)
+
+    world = spec.worldbody
+    X_WR = X_WM
+    for r in roots:
+        # a root link of a non-static model gets a free joint (SDF: its link pose in the model frame)
+        link = links[r]
+        X_MR = link.pose or Pose()
+        add_subtree(world, r, X_WR * X_MR, None)
+        body = spec.body(scoped(entity, r))
+        if not built.root_body:
+            built.root_body = body.name
+        if not model.static and not link.kinematic:
+            fj = body.add_freejoint(name=scoped(entity, f"{r}#free"))
+            if built.free_joint is None:
+                built.free_joint = fj.name
+    for j in world_joints:
+        child = links.get(j.child)
+        if child is None:
+            raise BuildError(f"joint '{j.name}': unknown child link '{j.child}'")
+        X_WJ = X_WM * j.origin
+        add_subtree(world, j.child, X_WJ * j.child_offset, j)
+        if not built.root_body:
+            built.root_body = scoped(entity, j.child)
+    return built

@@ -1,0 +1,297 @@
+"""The running simulation: a physics world, its systems, pacing to a real-time factor.
+
+All access to the world goes through one thread. Other threads (ROS service
+callbacks, the viewer) hand work to it with :meth:`Simulation.call`, which runs
+a function between two physics steps and returns its result, so requests never
+race the stepping and are applied at step boundaries (deterministically when
+the simulation is stepped in lock-step).
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import queue
+import threading
+import time
+from concurrent.futures import Future
+from dataclasses import dataclass
+from typing import Any, Callable, TypeVar
+
+import mujoco
+import numpy as np
+
+from ..description import Model, Pose, World
+from ..systems._base import SystemContext, SystemManager, UpdateInfo
+from ..systems._bus import Bus
+from ..systems._registry import create_system
+from ._world import Entity, ErrorKind, PhysicsWorld, WorldError
+
+T = TypeVar("T")
+_log = logging.getLogger("gazelle")
+
+
+@dataclass(frozen=True)
+class RtfSample:
+    """Real-time factor measured over the last window."""
+
+    rtf: float
+    steps_per_sec: float
+
+
+class Simulation:
+    """A world plus systems, stepped on its own thread (or by hand, in lock-step)."""
+
+    def __init__(self, world: World, *, rtf: float | None = None, bus: Bus | None = None):
+        """
+        Args:
+            world: the world description.
+            rtf: target real-time factor; None = the world's ``real_time_factor``; 0 = as fast as possible.
+        """
+        if rtf is not None and (not math.isfinite(rtf) or rtf < 0):
+            raise ValueError(f"`rtf` must be >= 0, got {rtf!r}")
+        self.world = PhysicsWorld(world)
+        self.world.model.opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_AUTORESET)
+        self.world.spec.option.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_AUTORESET)
+        self.systems = SystemManager()
+        self.bus = bus or Bus()
+        physics = world.physics
+        if rtf is None:
+            rtf = physics.real_time_factor
+            if physics.real_time_update_rate_hz == 0:
+                rtf = 0.0
+        self.rtf = rtf
+        self.paused = False
+        self.iterations = 0
+        self.step_listeners: list[Callable[[UpdateInfo], None]] = []
+        """Called on the sim thread after every step (e.g. the /clock publisher)."""
+        self.divergence_listeners: list[Callable[[str, str], None]] = []
+        self._queue: queue.Queue[tuple[Callable[[], Any], Future]] = queue.Queue()
+        self._thread: threading.Thread | None = None
+        self._stop = threading.Event()
+        self._wall0 = time.monotonic()
+        self._anchor = (time.monotonic(), 0.0)
+        self._rtf_window: list[tuple[float, float, int]] = []
+        self.diverged: dict[str, str] = {}
+        """Entity name -> what went wrong, for entities that blew up."""
+        for m in world.models:
+            self._add_entity(m, name=m.name, pose=Pose(), namespace="", spawned=False)
+
+    # ------------------------------------------------------------------ threading
+    @property
+    def running(self) -> bool:
+        return self._thread is not None and self._thread.is_alive()
+
+    def start(self) -> None:
+        """Start stepping on a background thread."""
+        if self.running:
+            return
+        self._stop.clear()
+        self._anchor = (time.monotonic(), self.world.time)
+        self._thread = threading.Thread(target=self._loop, name="gazelle-sim", daemon=True)
+        self._thread.start()
+
+    def stop(self, timeout: float = 5.0) -> None:
+        """Stop the stepping thread (pending calls are still answered)."""
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join(timeout)
+        self._thread = None
+        self._drain()
+
+    def call(self, fn: Callable[[], T], timeout: float | None = 10.0) -> T:
+        """Run ``fn`` on the simulation thread between two steps and return its result.
+
+        Raises whatever ``fn`` raises; ``TimeoutError`` if the sim thread does not get to it.
+        """
+        if not self.running or threading.current_thread() is self._thread:
+            return fn()
+        fut: Future = Future()
+        self._queue.put((fn, fut))
+        return fut.result(timeout=timeout)
+
+    def _drain(self) -> None:
+        while True:
+            try:
+                fn, fut = self._queue.get_nowait()
+            except queue.Empty:
+                return
+            self._run_item(fn, fut)
+
+    @staticmethod
+    def _run_item(fn: Callable[[], Any], fut: Future) -> None:
+        if not fut.set_running_or_notify_cancel():
+            return
+        try:
+            fut.set_result(fn())
+        except BaseException as err:  # noqa: BLE001 - handed to the caller
+            fut.set_exception(err)
+
+    def _wait(self, seconds: float) -> None:
+        """Sleep up to ``seconds`` but serve calls as they arrive."""
+        deadline = time.monotonic() + seconds
+        while True:
+            remaining = deadline - time.monotonic()
+            if remaining <= 0:
+                return
+            try:
+                fn, fut = self._queue.get(timeout=remaining)
+            except queue.Empty:
+                return
+            self._run_item(fn, fut)
+
+    def _loop(self) -> None:
+        try:
+            while not self._stop.is_set():
+                self._drain()
+                if self.paused:
+                    self._wait(0.01)
+                    self._anchor = (time.monotonic(), self.world.time)
+                    continue
+                self.step()
+                if self.rtf > 0:
+                    wall_anchor, sim_anchor = self._anchor
+                    target = wall_anchor + (self.world.time - sim_anchor) / self.rtf
+                    ahead = target - time.monotonic()
+                    if ahead > 0:
+                        self._wait(ahead)
+                    elif ahead < -0.1:  # fell behind: do not burst to catch up
+                        self._anchor = (time.monotonic(), self.world.time)
+        except Exception:  # pragma: no cover - reported, never silent
+            _log.exception("simulation thread crashed")
+            raise
+
+    # ------------------------------------------------------------------ stepping
+    def _info(self, paused: bool = False) -> UpdateInfo:
+        return UpdateInfo(
+            sim_time_sec=self.world.time,
+            real_time_sec=time.monotonic() - self._wall0,
+            dt_sec=self.world.timestep,
+            iterations=self.iterations,
+            paused=paused,
+        )
+
+    def step(self, n: int = 1) -> None:
+        """Take ``n`` physics steps with every system phase (call on the sim thread or when stopped)."""
+        w = self.world
+        for _ in range(n):
+            self.systems.pre_update(self._info(), w)
+            w.step()
+            self.iterations += 1
+            info = self._info()
+            self.systems.post_physics(info, w)
+            for listener in self.step_listeners:
+                listener(info)
+            if self.iterations % 50 == 0:
+                self._check_divergence()
+            self._record_rtf()
+
+    def _record_rtf(self) -> None:
+        now = time.monotonic()
+        win = self._rtf_window
+        win.append((now, self.world.time, self.iterations))
+        while len(win) > 2 and now - win[0][0] > 2.0:
+            win.pop(0)
+
+    def measured_rtf(self) -> RtfSample:
+        """RTF and steps/s over the last ~2 s of stepping."""
+        win = self._rtf_window
+        if len(win) < 2 or win[-1][0] <= win[0][0]:
+            return RtfSample(0.0, 0.0)
+        dw = win[-1][0] - win[0][0]
+        return RtfSample((win[-1][1] - win[0][1]) / dw, (win[-1][2] - win[0][2]) / dw)
+
+    def _check_divergence(self) -> None:
+        d = self.world.data
+        if np.all(np.isfinite(d.qpos)) and np.all(np.isfinite(d.qvel)) and np.all(np.abs(d.qvel) < 1e4):
+            return
+        for name in self.world.diverged_entities() or ["<world>"]:
+            reason = f"simulation of '{name}' diverged at t={self.world.time:.3f}s (NaN or runaway velocity)"
+            self.diverged[name] = reason
+            _log.error(reason + "; its state is reset to its spawn pose")
+            for listener in self.divergence_listeners:
+                listener(name, reason)
+            if name in self.world.entities:
+                e = self.world.entities[name]
+                bad = ~np.isfinite(d.qpos)
+                d.qpos[bad] = 0.0
+                d.qvel[~np.isfinite(d.qvel)] = 0.0
+                if e.built.free_joint:
+                    self.world.set_entity_state(name, self.world._spawn_root_pose(e))
+        d.qacc[:] = 0.0
+        d.qacc_warmstart[:] = 0.0
+        d.qvel[~np.isfinite(d.qvel)] = 0.0
+        mujoco.mj_forward(self.world.model, d)
+
+    # ------------------------------------------------------------------ entities
+    def _add_entity(self, model: Model, *, name: str, pose: Pose, namespace: str, spawned: bool) -> Entity:
+        pending: list = []
+
+        def configure(entity: Entity) -> None:
+            for plugin in entity.model.plugins:
+                system = create_system(plugin)
+                if system is None:
+                    continue
+                logger = logging.getLogger(plugin.name or plugin.filename)
+                system.configure(SystemContext(self.world, entity, plugin, self.bus, logger))
+                pending.append(system)
+
+        try:
+            entity = self.world.add_entity(
+                model, name=name, X_WM=pose * model.pose, namespace=namespace, spawned=spawned, configure=configure
+            )
+        except WorldError:
+            self.bus.remove_owner(name)
+            raise
+        entity.systems.extend(pending)
+        for s in pending:
+            self.systems.add(name, s)
+        return entity
+
+    def spawn(self, model: Model, *, name: str | None = None, pose: Pose = Pose(), namespace: str = "") -> Entity:
+        """Add a model (thread-safe). ``pose`` is where its model frame goes, composed with the file's own pose.
+
+        Raises:
+            WorldError: on a duplicate/invalid name, a bad pose or a model that cannot be built.
+        """
+        return self.call(
+            lambda: self._add_entity(model, name=name or model.name, pose=pose, namespace=namespace, spawned=True)
+        )
+
+    def delete(self, name: str) -> None:
+        """Remove an entity and its systems (thread-safe).
+
+        Raises:
+            WorldError: no such entity.
+        """
+
+        def do() -> None:
+            if name not in self.world.entities:
+                raise WorldError(ErrorKind.NOT_FOUND, f"entity '{name}' does not exist")
+            self.systems.remove_owner(name)
+            self.bus.remove_owner(name)
+            self.world.remove_entity(name)
+            self.diverged.pop(name, None)
+
+        self.call(do)
+
+    def reset(self, *, time_: bool = True, state: bool = True, spawned: bool = True) -> None:
+        """Reset sim time, entity states and/or remove the spawned entities (thread-safe)."""
+
+        def do() -> None:
+            t = self.world.time
+            if spawned:
+                for e in [e for e in self.world.entities.values() if e.spawned]:
+                    self.systems.remove_owner(e.name)
+                    self.bus.remove_owner(e.name)
+                    self.world.remove_entity(e.name)
+            if state:
+                self.world.reset_state()
+                self.world.data.time = t
+            if time_:
+                self.world.reset_time()
+                self.iterations = 0
+            self._anchor = (time.monotonic(), self.world.time)
+            self.systems.reset(self._info(self.paused), self.world)
+
+        self.call(do)

@@ -1,0 +1,316 @@
+"""The simulated world: a MuJoCo model and data built from description objects.
+
+``PhysicsWorld`` is not thread-safe by itself; :class:`gazelle.physics.Simulation`
+owns one and serialises every access through its command queue.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from typing import Callable
+
+import mujoco
+import numpy as np
+
+from ..description import Model, Plane, Pose, World
+from ..description._model import quat_conj, quat_rotate
+from ._builder import JOINT_ARMATURE, SEP, BuildError, BuiltEntity, add_model, scoped
+
+ENTITY_NAME_RE = re.compile(r"^[A-Za-z_][A-Za-z0-9_\-.]*(/[A-Za-z_][A-Za-z0-9_\-.]*)*$")
+
+
+class WorldError(Exception):
+    """A request on the world failed; ``code`` says how (see :class:`ErrorKind`)."""
+
+    def __init__(self, kind: str, message: str):
+        super().__init__(message)
+        self.kind = kind
+
+
+class ErrorKind:
+    """Failure kinds, mapped to ROS result codes by the bridge."""
+
+    NAME_NOT_UNIQUE = "name_not_unique"
+    NAME_INVALID = "name_invalid"
+    NOT_FOUND = "not_found"
+    INVALID_POSE = "invalid_pose"
+    BUILD_FAILED = "build_failed"
+    INCORRECT_STATE = "incorrect_state"
+    DIVERGED = "diverged"
+
+
+@dataclass
+class Entity:
+    """A model living in the world."""
+
+    name: str
+    model: Model
+    namespace: str
+    X_WM: Pose
+    """Where it was placed at spawn time."""
+    built: BuiltEntity
+    spawned: bool
+    """True if added at run time (removed by a SCOPE_SPAWNED reset)."""
+    generation_added: int = 0
+    systems: list = field(default_factory=list)
+
+    @property
+    def static(self) -> bool:
+        return self.model.static
+
+
+@dataclass(frozen=True)
+class EntityState:
+    """Ground-truth state of an entity's model frame, in the world frame."""
+
+    pose: Pose
+    linear_velocity: tuple[float, float, float]
+    angular_velocity: tuple[float, float, float]
+
+
+class PhysicsWorld:
+    """MuJoCo model + data, with spawn and delete while running."""
+
+    def __init__(self, world: World, *, timestep_sec: float | None = None):
+        self.description = world
+        self.spec = mujoco.MjSpec()
+        self.spec.modelname = world.name or "world"
+        opt = self.spec.option
+        opt.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
+        opt.timestep = timestep_sec or world.physics.max_step_size_sec
+        opt.gravity = list(world.gravity)
+        opt.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
+        self.spec.compiler.degree = False
+        self.entities: dict[str, Entity] = {}
+        self.generation = 0
+        """Bumped at every recompile: indices cached against an older generation are stale."""
+        self._before_compile: list[Callable[[], None]] = []
+        self.model: mujoco.MjModel = self.spec.compile()
+        self.data = mujoco.MjData(self.model)
+
+    # ------------------------------------------------------------------ building
+    def _recompile(self) -> None:
+        self.model, self.data = self.spec.recompile(self.model, self.data)
+        self.generation += 1
+
+    def add_entity(
+        self,
+        model: Model,
+        *,
+        name: str,
+        X_WM: Pose,
+        namespace: str = "",
+        spawned: bool = True,
+        configure: Callable[[Entity], None] | None = None,
+    ) -> Entity:
+        """Add a model as a new entity while keeping every other entity's state.
+
+        ``configure`` runs after the bodies are added and before the recompile, so
+        systems can add actuators. On any failure the world is left unchanged.
+
+        Raises:
+            WorldError: duplicate or invalid name, NaN pose, or the model cannot be built.
+        """
+        if name in self.entities:
+            raise WorldError(ErrorKind.NAME_NOT_UNIQUE, f"entity '{name}' already exists")
+        if not name or SEP in name or not ENTITY_NAME_RE.match(name):
+            raise WorldError(
+                ErrorKind.NAME_INVALID,
+                f"invalid entity name {name!r}: use letters, digits, '_', '-', '.' and '/' (not '::')",
+            )
+        if not all(math.isfinite(v) for v in (*X_WM.position, *X_WM.orientation)):
+            raise WorldError(ErrorKind.INVALID_POSE, f"pose of '{name}' is not finite: {X_WM}")
+        qn = math.sqrt(sum(v * v for v in X_WM.orientation))
+        if qn < 1e-9:
+            raise WorldError(ErrorKind.INVALID_POSE, f"orientation of '{name}' is a zero quaternion")
+        X_WM = Pose(X_WM.position, tuple(v / qn for v in X_WM.orientation))  # type: ignore[arg-type]
+        built = BuiltEntity(name=name, root_body="", free_joint=None)
+        entity: Entity | None = None
+        try:
+            built = add_model(self.spec, model, name, X_WM)
+            entity = Entity(name, model, namespace, X_WM, built, spawned)
+            if configure is not None:
+                configure(entity)
+            self._recompile()
+        except (BuildError, ValueError, mujoco.FatalError) as err:
+            # the recompile either did not happen or failed, so model/data are the old ones;
+            # removing what we added makes the spec match them again
+            self._remove_elements(name)
+            raise WorldError(ErrorKind.BUILD_FAILED, f"cannot build '{name}': {err}") from None
+        entity.generation_added = self.generation
+        self.entities[name] = entity
+        mujoco.mj_forward(self.model, self.data)
+        return entity
+
+    def _remove_elements(self, name: str) -> None:
+        prefix = name + SEP
+        for act in list(self.spec.actuators):
+            if act.name.startswith(prefix):
+                self.spec.delete(act)
+        for eq in list(self.spec.equalities):
+            if eq.name.startswith(prefix):
+                self.spec.delete(eq)
+        for body in list(self.spec.worldbody.bodies):
+            if body.name.startswith(prefix):
+                self.spec.delete(body)
+        for mesh in list(self.spec.meshes):
+            if mesh.name.startswith(prefix):
+                self.spec.delete(mesh)
+
+    def remove_entity(self, name: str) -> Entity:
+        """Delete an entity; every other entity keeps its state.
+
+        Raises:
+            WorldError: no such entity.
+        """
+        entity = self.entities.get(name)
+        if entity is None:
+            raise WorldError(ErrorKind.NOT_FOUND, f"entity '{name}' does not exist")
+        self._remove_elements(name)
+        self._recompile()
+        del self.entities[name]
+        mujoco.mj_forward(self.model, self.data)
+        return entity
+
+    def add_velocity_actuator(self, entity: Entity, joint: str, *, kv: float, force_limit: float | None) -> str:
+        """Add a velocity servo on a MuJoCo joint of ``entity`` (call from ``configure``)."""
+        act_name = scoped(entity.name, f"{joint}#vel")
+        act = self.spec.add_actuator(name=act_name, target=scoped(entity.name, joint), trntype=mujoco.mjtTrn.mjTRN_JOINT)
+        act.set_to_velocity(kv=kv)
+        if force_limit is not None and force_limit > 0:
+            act.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
+            act.forcerange = [-force_limit, force_limit]
+        return act_name
+
+    # ------------------------------------------------------------------ stepping
+    @property
+    def time(self) -> float:
+        return float(self.data.time)
+
+    @property
+    def armature(self) -> float:
+        """The armature every 1-dof joint gets (see the builder)."""
+        return JOINT_ARMATURE
+
+    @property
+    def timestep(self) -> float:
+        return float(self.model.opt.timestep)
+
+    def step(self) -> None:
+        mujoco.mj_step(self.model, self.data)
+
+    def diverged_entities(self) -> list[str]:
+        """Entities whose state holds NaN/inf or absurd velocities."""
+        bad: list[str] = []
+        for e in self.entities.values():
+            for jn in e.built.joints.values():
+                for mj in jn:
+                    jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, mj)
+                    if jid >= 0:
+                        a = self.model.jnt_qposadr[jid]
+                        if not np.all(np.isfinite(self.data.qpos[a : a + 1])):
+                            bad.append(e.name)
+                            break
+            if e.built.free_joint:
+                jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, e.built.free_joint)
+                a, v = self.model.jnt_qposadr[jid], self.model.jnt_dofadr[jid]
+                if not np.all(np.isfinite(self.data.qpos[a : a + 7])) or np.any(
+                    np.abs(self.data.qvel[v : v + 6]) > 1e4
+                ):
+                    bad.append(e.name)
+        return sorted(set(bad))
+
+    # ------------------------------------------------------------------ queries
+    def body_id(self, entity: str, link: str | None = None) -> int:
+        e = self.entities.get(entity)
+        if e is None:
+            raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' does not exist")
+        body = e.built.root_body if link is None else e.built.bodies.get(link)
+        if body is None:
+            raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' has no link '{link}'")
+        return mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_BODY, body)
+
+    def body_pose(self, body_id: int) -> Pose:
+        p = self.data.xpos[body_id]
+        q = self.data.xquat[body_id]
+        return Pose((float(p[0]), float(p[1]), float(p[2])), (float(q[0]), float(q[1]), float(q[2]), float(q[3])))
+
+    def body_velocity(self, body_id: int) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
+        """World-frame linear velocity of the body origin and angular velocity."""
+        vel = np.zeros(6)
+        mujoco.mj_objectVelocity(self.model, self.data, mujoco.mjtObj.mjOBJ_BODY, body_id, vel, 0)
+        ang = vel[:3]
+        lin = vel[3:]
+        return (float(lin[0]), float(lin[1]), float(lin[2])), (float(ang[0]), float(ang[1]), float(ang[2]))
+
+    def entity_state(self, entity: str, link: str | None = None) -> EntityState:
+        """World pose and twist of an entity's model frame (its root link), or of one of its links."""
+        bid = self.body_id(entity, link)
+        lin, ang = self.body_velocity(bid)
+        return EntityState(self.body_pose(bid), lin, ang)
+
+    def set_entity_state(
+        self,
+        entity: str,
+        pose: Pose,
+        linear: tuple[float, float, float] = (0.0, 0.0, 0.0),
+        angular: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    ) -> None:
+        """Teleport an entity's free root and set its twist (world frame)."""
+        e = self.entities.get(entity)
+        if e is None:
+            raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' does not exist")
+        vals = (*pose.position, *pose.orientation, *linear, *angular)
+        if not all(math.isfinite(v) for v in vals):
+            raise WorldError(ErrorKind.INVALID_POSE, f"state for '{entity}' is not finite")
+        qn = math.sqrt(sum(v * v for v in pose.orientation))
+        if qn < 1e-9:
+            raise WorldError(ErrorKind.INVALID_POSE, "orientation is a zero quaternion")
+        if e.built.free_joint is None:
+            if any(linear) or any(angular):
+                raise WorldError(ErrorKind.INCORRECT_STATE, f"entity '{entity}' is static; it cannot have a twist")
+            bid = self.body_id(entity)
+            self.model.body_pos[bid] = pose.position
+            self.model.body_quat[bid] = [v / qn for v in pose.orientation]
+            mujoco.mj_forward(self.model, self.data)
+            return
+        jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, e.built.free_joint)
+        a, v = self.model.jnt_qposadr[jid], self.model.jnt_dofadr[jid]
+        self.data.qpos[a : a + 3] = pose.position
+        q = [x / qn for x in pose.orientation]
+        self.data.qpos[a + 3 : a + 7] = q
+        self.data.qvel[v : v + 3] = linear
+        # free joint angular velocity is in the body frame
+        self.data.qvel[v + 3 : v + 6] = quat_rotate(quat_conj(tuple(q)), angular)  # type: ignore[arg-type]
+        mujoco.mj_forward(self.model, self.data)
+
+    def joint_address(self, entity: str, mj_joint: str) -> tuple[int, int]:
+        """(qposadr, dofadr) of a MuJoCo joint of an entity."""
+        jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, scoped(entity, mj_joint))
+        if jid < 0:
+            raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' has no joint '{mj_joint}'")
+        return int(self.model.jnt_qposadr[jid]), int(self.model.jnt_dofadr[jid])
+
+    def actuator_id(self, name: str) -> int:
+        return mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_ACTUATOR, name)
+
+    def reset_time(self) -> None:
+        self.data.time = 0.0
+
+    def reset_state(self) -> None:
+        """Put every entity back where it was spawned, at rest."""
+        mujoco.mj_resetData(self.model, self.data)
+        for e in self.entities.values():
+            if e.built.free_joint:
+                self.set_entity_state(e.name, self._spawn_root_pose(e))
+        mujoco.mj_forward(self.model, self.data)
+
+    def _spawn_root_pose(self, e: Entity) -> Pose:
+        root = e.model.root_link
+        link = e.model.link(root)
+        return e.X_WM * (link.pose or Pose())
+
+    def ground_planes(self) -> list[str]:
+        return [m.name for m in self.description.models if any(isinstance(c.geometry, Plane) for lk in m.links for c in lk.collisions)]

@@ -1,0 +1,383 @@
+"""The ROS 2 side of a running simulation: /clock, services, and every system's topics.
+
+The node is called ``gazelle``. The classic gazebo_ros services live at the root
+(``/spawn_entity``, ``/delete_entity``, ...) as gazebo_ros had them.
+Service callbacks run on a multi-threaded executor and hand the world work to
+the simulation thread (:meth:`Simulation.call`), so a request never races a
+physics step and a slow request never blocks the others.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import threading
+import time
+from dataclasses import dataclass
+from typing import Any
+
+import rclpy
+from gazebo_msgs.srv import DeleteEntity as GzDeleteEntity
+from gazebo_msgs.srv import GetEntityState as GzGetEntityState
+from gazebo_msgs.srv import GetModelList as GzGetModelList
+from gazebo_msgs.srv import SetEntityState as GzSetEntityState
+from gazebo_msgs.srv import SpawnEntity as GzSpawnEntity
+from rclpy.callback_groups import ReentrantCallbackGroup
+from rclpy.executors import MultiThreadedExecutor
+from rclpy.node import Node
+from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
+from rosgraph_msgs.msg import Clock
+from std_srvs.srv import Empty
+
+from ..description import Model, ModelLoadError, Pose, World, load_string
+from ..physics import Simulation, WorldError
+from ..systems._base import UpdateInfo
+from ..systems._bus import Endpoint, Qos
+from ._convert import FROM_ROS, ROS_TYPES, TO_ROS, from_pose_msg, to_pose_msg, to_time
+
+WORLD_FRAMES = ("", "world", "map", "/map")
+
+
+class SpawnFailed(Exception):
+    """A spawn request was refused; ``kind`` says why (maps to result codes)."""
+
+    def __init__(self, kind: str, message: str):
+        super().__init__(message)
+        self.kind = kind
+
+
+class SpawnFailure:
+    PARSE = "parse"
+    NO_MODEL = "no_model"
+    FRAME = "frame"
+
+
+def qos_profile(qos: Qos, depth: int) -> QoSProfile:
+    """rclpy QoS for a bus QoS name."""
+    if qos is Qos.SENSOR:
+        return QoSProfile(depth=depth, reliability=ReliabilityPolicy.BEST_EFFORT)
+    if qos is Qos.LATCHED:
+        return QoSProfile(depth=depth, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
+    return QoSProfile(depth=depth, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
+
+
+CLOCK_QOS = QoSProfile(depth=1, reliability=ReliabilityPolicy.BEST_EFFORT)
+"""rclcpp's ClockQoS, as gazebo_ros publishes /clock."""
+
+
+class _RosLogHandler(logging.Handler):
+    """Send Python log records (systems, physics) to rclpy loggers named after the record's logger."""
+
+    _LEVELS = {
+        logging.DEBUG: "debug",
+        logging.INFO: "info",
+        logging.WARNING: "warning",
+        logging.ERROR: "error",
+        logging.CRITICAL: "fatal",
+    }
+
+    def emit(self, record: logging.LogRecord) -> None:
+        try:
+            logger = rclpy.logging.get_logger(record.name)
+            level = self._LEVELS.get(record.levelno, "info")
+            getattr(logger, level)(record.getMessage())
+        except Exception:  # noqa: BLE001 - logging must never raise
+            self.handleError(record)
+
+
+@dataclass
+class _RosEndpoint:
+    """One rclpy publisher or subscription, shared by every bus endpoint with the same topic."""
+
+    handle: Any
+    users: int = 0
+
+
+class SimulationNode(Node):
+    """The simulation's ROS 2 node."""
+
+    def __init__(
+        self,
+        sim: Simulation,
+        *,
+        node_name: str = "gazelle",
+        clock_rate_hz: float = 1000.0,
+        context: rclpy.Context | None = None,
+    ):
+        super().__init__(node_name, context=context)
+        self.sim = sim
+        self._cb = ReentrantCallbackGroup()
+        self._lock = threading.Lock()
+        self._pubs: dict[tuple[str, str], _RosEndpoint] = {}
+        self._subs: dict[int, Any] = {}
+        self._clock_pub = self.create_publisher(Clock, "/clock", CLOCK_QOS)
+        self._clock_period = 1.0 / clock_rate_hz if clock_rate_hz > 0 else 0.0
+        self._last_clock = -math.inf
+        self._srv = []
+        for srv_type, name, cb in (
+            (GzSpawnEntity, "/spawn_entity", self._gz_spawn),
+            (GzDeleteEntity, "/delete_entity", self._gz_delete),
+            (GzGetEntityState, "/get_entity_state", self._gz_get_state),
+            (GzSetEntityState, "/set_entity_state", self._gz_set_state),
+            (GzGetModelList, "/get_model_list", self._gz_model_list),
+            (Empty, "/pause_physics", self._pause),
+            (Empty, "/unpause_physics", self._unpause),
+            (Empty, "/reset_simulation", self._reset_simulation),
+            (Empty, "/reset_world", self._reset_world),
+        ):
+            self._srv.append(self.create_service(srv_type, name, cb, callback_group=self._cb))
+        sim.step_listeners.append(self._on_step)
+        sim.bus.add_listener(self)
+        self.publish_clock(sim.world.time)
+
+    # ------------------------------------------------------------------ clock
+    def publish_clock(self, sim_time: float) -> None:
+        msg = Clock()
+        msg.clock = to_time(sim_time)
+        self._clock_pub.publish(msg)
+
+    def _on_step(self, info: UpdateInfo) -> None:
+        t = info.sim_time_sec
+        if t < self._last_clock:  # reset: time went backwards
+            self._last_clock = -math.inf
+        if t - self._last_clock + 1e-9 >= self._clock_period:
+            self._last_clock = t
+            self.publish_clock(t)
+
+    # ------------------------------------------------------------------ bus mirroring
+    def endpoint_added(self, ep: Endpoint) -> None:
+        ros_type = ROS_TYPES[ep.msg_type]
+        if ep.is_publisher:
+            key = (ep.topic, ep.msg_type.value)
+            with self._lock:
+                entry = self._pubs.get(key)
+                if entry is None:
+                    entry = _RosEndpoint(self.create_publisher(ros_type, ep.topic, qos_profile(ep.qos, ep.depth)))
+                    self._pubs[key] = entry
+                entry.users += 1
+            convert = TO_ROS[ep.msg_type]
+            handle = entry.handle
+            ep.sink = lambda payload: handle.publish(convert(payload))
+        else:
+            convert_in = FROM_ROS[ep.msg_type]
+            callback = ep.callback
+            assert callback is not None
+            sub = self.create_subscription(
+                ros_type,
+                ep.topic,
+                lambda msg: callback(convert_in(msg)),
+                qos_profile(ep.qos, ep.depth),
+                callback_group=self._cb,
+            )
+            with self._lock:
+                self._subs[id(ep)] = sub
+
+    def endpoint_removed(self, ep: Endpoint) -> None:
+        with self._lock:
+            if ep.is_publisher:
+                key = (ep.topic, ep.msg_type.value)
+                entry = self._pubs.get(key)
+                if entry is None:
+                    return
+                entry.users -= 1
+                if entry.users > 0:
+                    return
+                del self._pubs[key]
+                handle = entry.handle
+                self.destroy_publisher(handle)
+            else:
+                sub = self._subs.pop(id(ep), None)
+                if sub is not None:
+                    self.destroy_subscription(sub)
+
+    # ------------------------------------------------------------------ spawning
+    def resolve_frame(self, frame: str) -> Pose:
+        """World pose of a reference frame: '' / world / map, an entity, or ``entity::link``."""
+        if frame in WORLD_FRAMES:
+            return Pose()
+        entity, _, link = frame.partition("::")
+
+        def lookup() -> Pose:
+            return self.sim.world.entity_state(entity, link or None).pose
+
+        try:
+            return self.sim.call(lookup)
+        except WorldError:
+            raise SpawnFailed(SpawnFailure.FRAME, f"reference_frame '{frame}' not found: no such entity or link") from None
+
+    def spawn_xml(self, xml: str, *, name: str, namespace: str, pose: Pose, reference_frame: str, source: str) -> str:
+        """Parse and spawn; returns the entity name.
+
+        Raises:
+            SpawnFailed: the XML is bad or holds no model, or the frame is unknown.
+            WorldError: the world refused (duplicate name, NaN pose, build failure).
+        """
+        for v in (*pose.position, *pose.orientation):
+            if not math.isfinite(v):
+                raise WorldError("invalid_pose", f"initial_pose is not finite: {pose}")
+        try:
+            result = load_string(xml, source=source)
+        except ModelLoadError as err:
+            raise SpawnFailed(SpawnFailure.PARSE, str(err)) from None
+        value = result.value
+        model: Model | None
+        if isinstance(value, Model):
+            model = value
+        elif isinstance(value, World) and value.models:
+            model = value.models[0]
+        else:
+            raise SpawnFailed(SpawnFailure.NO_MODEL, f"{source}: no <model> or <robot> to spawn")
+        for d in result.diagnostics:
+            self.get_logger().warning(d.format())
+        X_WF = self.resolve_frame(reference_frame)
+        entity = self.sim.spawn(model, name=name or model.name, pose=X_WF * pose, namespace=namespace)
+        return entity.name
+
+    def _gz_spawn(self, req: GzSpawnEntity.Request, res: GzSpawnEntity.Response) -> GzSpawnEntity.Response:
+        t0 = time.monotonic()
+        label = req.name or "entity"
+        try:
+            name = self.spawn_xml(
+                req.xml,
+                name=req.name,
+                namespace=req.robot_namespace,
+                pose=from_pose_msg(req.initial_pose),
+                reference_frame=req.reference_frame,
+                source=f"<spawn_entity:{label}>",
+            )
+        except (SpawnFailed, WorldError, TimeoutError) as err:
+            res.success = False
+            res.status_message = f"SpawnEntity: Failure - {err}"
+            self.get_logger().error(res.status_message)
+            return res
+        res.success = True
+        res.status_message = f"SpawnEntity: Successfully spawned entity [{name}]"
+        self.get_logger().info(f"{res.status_message} in {1000 * (time.monotonic() - t0):.1f} ms")
+        return res
+
+    def _gz_delete(self, req: GzDeleteEntity.Request, res: GzDeleteEntity.Response) -> GzDeleteEntity.Response:
+        try:
+            self.sim.delete(req.name)
+        except (WorldError, TimeoutError) as err:
+            res.success = False
+            res.status_message = f"DeleteEntity: Failure - {err}"
+            return res
+        res.success = True
+        res.status_message = f"Successfully deleted entity [{req.name}]"
+        return res
+
+    def _gz_get_state(self, req: GzGetEntityState.Request, res: GzGetEntityState.Response) -> GzGetEntityState.Response:
+        entity, _, link = req.name.partition("::")
+        frame = req.reference_frame
+
+        def query() -> tuple[Any, Pose, float]:
+            st = self.sim.world.entity_state(entity, link or None)
+            if frame in WORLD_FRAMES:
+                X_WF = Pose()
+            else:
+                fe, _, fl = frame.partition("::")
+                X_WF = self.sim.world.entity_state(fe, fl or None).pose
+            return st, X_WF, self.sim.world.time
+
+        try:
+            st, X_WF, t = self.sim.call(query)
+        except (WorldError, TimeoutError) as err:
+            res.success = False
+            self.get_logger().error(f"GetEntityState: {err}")
+            return res
+        from ..description._model import quat_conj, quat_rotate
+
+        X_FE = X_WF.inverse() * st.pose
+        q_inv = quat_conj(X_WF.orientation)
+        lin = quat_rotate(q_inv, st.linear_velocity)
+        ang = quat_rotate(q_inv, st.angular_velocity)
+        res.header.stamp = to_time(t)
+        res.header.frame_id = frame
+        res.state.name = req.name
+        res.state.pose = to_pose_msg(X_FE)
+        res.state.twist.linear.x, res.state.twist.linear.y, res.state.twist.linear.z = lin
+        res.state.twist.angular.x, res.state.twist.angular.y, res.state.twist.angular.z = ang
+        res.state.reference_frame = frame
+        res.success = True
+        return res
+
+    def _gz_set_state(self, req: GzSetEntityState.Request, res: GzSetEntityState.Response) -> GzSetEntityState.Response:
+        s = req.state
+        entity, _, _link = s.name.partition("::")
+        try:
+            X_WF = self.resolve_frame(s.reference_frame)
+            pose = X_WF * from_pose_msg(s.pose)
+            from ..description._model import quat_rotate
+
+            lin = quat_rotate(X_WF.orientation, (s.twist.linear.x, s.twist.linear.y, s.twist.linear.z))
+            ang = quat_rotate(X_WF.orientation, (s.twist.angular.x, s.twist.angular.y, s.twist.angular.z))
+            self.sim.call(lambda: self.sim.world.set_entity_state(entity, pose, lin, ang))
+        except (SpawnFailed, WorldError, TimeoutError) as err:
+            self.get_logger().error(f"SetEntityState: {err}")
+            res.success = False
+            return res
+        res.success = True
+        return res
+
+    def _gz_model_list(self, req: GzGetModelList.Request, res: GzGetModelList.Response) -> GzGetModelList.Response:
+        names, t = self.sim.call(lambda: (list(self.sim.world.entities), self.sim.world.time))
+        res.header.stamp = to_time(t)
+        res.model_names = names
+        res.success = True
+        return res
+
+    def _pause(self, req: Empty.Request, res: Empty.Response) -> Empty.Response:
+        self.sim.call(lambda: setattr(self.sim, "paused", True))
+        return res
+
+    def _unpause(self, req: Empty.Request, res: Empty.Response) -> Empty.Response:
+        self.sim.call(lambda: setattr(self.sim, "paused", False))
+        return res
+
+    def _reset_simulation(self, req: Empty.Request, res: Empty.Response) -> Empty.Response:
+        self.sim.reset(time_=True, state=True, spawned=False)
+        return res
+
+    def _reset_world(self, req: Empty.Request, res: Empty.Response) -> Empty.Response:
+        self.sim.reset(time_=False, state=True, spawned=False)
+        return res
+
+    def destroy_node(self) -> None:
+        if self._on_step in self.sim.step_listeners:
+            self.sim.step_listeners.remove(self._on_step)
+        self.sim.bus.remove_listener(self)
+        for ep in self.sim.bus.endpoints():
+            ep.sink = None
+        super().destroy_node()
+
+
+class RosBridge:
+    """Owns rclpy's context, the node and an executor thread for a simulation."""
+
+    def __init__(self, sim: Simulation, *, clock_rate_hz: float = 1000.0, args: list[str] | None = None):
+        self.context = rclpy.Context()
+        rclpy.init(args=args, context=self.context)
+        self._handler = _RosLogHandler()
+        root = logging.getLogger()
+        root.addHandler(self._handler)
+        if root.level > logging.INFO or root.level == logging.NOTSET:
+            root.setLevel(logging.INFO)
+        self.node = SimulationNode(sim, clock_rate_hz=clock_rate_hz, context=self.context)
+        self.executor = MultiThreadedExecutor(num_threads=4, context=self.context)
+        self.executor.add_node(self.node)
+        self._thread = threading.Thread(target=self._spin, name="gazelle-ros", daemon=True)
+        self._thread.start()
+
+    def _spin(self) -> None:
+        try:
+            self.executor.spin()
+        except Exception:  # noqa: BLE001 - shutting down
+            pass
+
+    def shutdown(self) -> None:
+        logging.getLogger().removeHandler(self._handler)
+        self.executor.shutdown(timeout_sec=2.0)
+        self.node.destroy_node()
+        if self.context.ok():
+            rclpy.shutdown(context=self.context)
+        self._thread.join(timeout=2.0)

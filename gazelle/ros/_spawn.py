@@ -1,0 +1,167 @@
+"""``gazelle spawn``: the arguments and behaviour of gazebo_ros's ``spawn_entity.py``.
+
+It reads the entity XML from a file, a latched topic (``robot_description``),
+a string or stdin, waits for ``<gazebo_namespace>/spawn_entity``, calls it, and
+exits 0 on success or 1 with a one-line reason. Unlike the original it never
+hangs: every wait has a timeout.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+import time
+from pathlib import Path
+
+import rclpy
+from gazebo_msgs.srv import SpawnEntity
+from rclpy.executors import SingleThreadedExecutor
+from rclpy.node import Node
+from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from std_msgs.msg import String
+from std_srvs.srv import Empty
+
+from ..description._model import quat_from_rpy
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog="gazelle spawn",
+        description="Spawn an entity in gazelle (the arguments of gazebo_ros's spawn_entity.py).",
+    )
+    source = p.add_mutually_exclusive_group(required=True)
+    source.add_argument("-file", dest="file", help="load entity XML (URDF, SDF or xacro) from a file")
+    source.add_argument("-topic", dest="topic", help="load entity XML from a std_msgs/String topic (latched)")
+    source.add_argument("-string", dest="string", help="entity XML given on the command line")
+    source.add_argument("-database", dest="database", help="spawn model://NAME from the resource paths")
+    source.add_argument("-stdin", dest="stdin", action="store_true", help="load entity XML from standard input")
+    p.add_argument("-entity", dest="entity", required=True, help="name of the entity to spawn")
+    p.add_argument("-reference_frame", default="", help="frame of the pose ('' or world = world)")
+    p.add_argument("-gazebo_namespace", default="", help="ROS namespace of the spawn service")
+    p.add_argument("-robot_namespace", default="", help="namespace for the entity's topics")
+    p.add_argument("-timeout", type=float, default=30.0, help="seconds to wait for the XML and the service")
+    p.add_argument("-spawn_service_timeout", type=float, default=None, help="deprecated alias of -timeout")
+    p.add_argument("-unpause", action="store_true", help="call unpause_physics after spawning")
+    p.add_argument("-wait", dest="wait", default=None, help="wait for this entity in /get_model_list first")
+    for axis in ("x", "y", "z", "R", "P", "Y"):
+        p.add_argument(f"-{axis}", type=float, default=0.0, help=f"initial {axis}")
+    return p
+
+
+def _fail(node: Node | None, message: str) -> int:
+    if node is not None:
+        node.get_logger().error(message)
+    else:
+        print(f"[ERROR] [spawn_entity]: {message}", file=sys.stderr)
+    return 1
+
+
+def _read_topic(node: Node, executor: SingleThreadedExecutor, topic: str, timeout: float) -> str | None:
+    got: list[str] = []
+    qos = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
+    sub = node.create_subscription(String, topic, lambda m: got.append(m.data), qos)
+    deadline = time.monotonic() + timeout
+    while not got and time.monotonic() < deadline and executor.context.ok():
+        executor.spin_once(timeout_sec=0.1)
+    node.destroy_subscription(sub)
+    return got[0] if got else None
+
+
+def _xml_from_file(path: str) -> str:
+    p = Path(path)
+    if p.name.endswith(".xacro"):
+        from ..description import DiagnosticSink, ModelLoadError, ResourceResolver
+        from ..description import _xacro
+
+        sink = DiagnosticSink()
+        out = _xacro.expand(p.read_text(encoding="utf-8"), source=str(p), args={}, sink=sink, resolver=ResourceResolver())
+        if out is None:
+            raise ModelLoadError(sink.items)
+        return out
+    return p.read_text(encoding="utf-8")
+
+
+def main(argv: list[str]) -> int:
+    """Run ``gazelle spawn``; returns the exit code."""
+    args = build_parser().parse_args(argv)
+    timeout = args.spawn_service_timeout if args.spawn_service_timeout is not None else args.timeout
+    if not math.isfinite(timeout) or timeout < 0:
+        return _fail(None, f"-timeout must be a non-negative number, got {timeout}")
+    context = rclpy.Context()
+    rclpy.init(args=[], context=context)
+    node = rclpy.create_node("spawn_entity", context=context)
+    executor = SingleThreadedExecutor(context=context)
+    executor.add_node(node)
+    try:
+        return _run(node, executor, args, timeout)
+    except KeyboardInterrupt:
+        return _fail(node, "interrupted")
+    finally:
+        executor.shutdown()
+        node.destroy_node()
+        if context.ok():
+            rclpy.shutdown(context=context)
+
+
+def _run(node: Node, executor: SingleThreadedExecutor, args: argparse.Namespace, timeout: float) -> int:
+    log = node.get_logger()
+    log.info("Spawn Entity started")
+    if args.file:
+        log.info(f"Loading entity XML from file {args.file}")
+        try:
+            xml = _xml_from_file(args.file)
+        except FileNotFoundError:
+            return _fail(node, f"Error: specified file {args.file} does not exist")
+        except Exception as err:  # noqa: BLE001 - includes ModelLoadError with file:line
+            return _fail(node, f"Error: cannot read {args.file}: {err}")
+    elif args.topic:
+        log.info(f"Loading entity published on topic {args.topic}")
+        log.info(f"Waiting for entity xml on {args.topic}")
+        got = _read_topic(node, executor, args.topic, timeout)
+        if got is None:
+            return _fail(node, f"Timed out after {timeout:g} s waiting for entity xml on topic {args.topic}")
+        xml = got
+    elif args.string is not None:
+        xml = args.string
+    elif args.database:
+        xml = (
+            '<sdf version="1.6"><world name="default"><include>'
+            f"<uri>model://{args.database}</uri></include></world></sdf>"
+        )
+    else:
+        log.info("Loading entity XML from stdin")
+        xml = sys.stdin.read()
+    if not xml.strip():
+        return _fail(node, "Error: entity XML is empty")
+
+    ns = args.gazebo_namespace.rstrip("/")
+    service = f"{ns}/spawn_entity"
+    client = node.create_client(SpawnEntity, service)
+    log.info(f"Waiting for service {service}, timeout = {timeout:.0f}")
+    if not client.wait_for_service(timeout_sec=timeout):
+        return _fail(node, f"Service {service} unavailable. Was gazelle sim started?")
+    req = SpawnEntity.Request()
+    req.name = args.entity
+    req.xml = xml
+    req.robot_namespace = args.robot_namespace
+    req.reference_frame = args.reference_frame
+    req.initial_pose.position.x, req.initial_pose.position.y, req.initial_pose.position.z = args.x, args.y, args.z
+    w, x, y, z = quat_from_rpy(args.R, args.P, args.Y)
+    o = req.initial_pose.orientation
+    o.w, o.x, o.y, o.z = w, x, y, z
+    log.info(f"Calling service {service}")
+    future = client.call_async(req)
+    executor.spin_until_future_complete(future, timeout_sec=max(timeout, 1.0))
+    if not future.done() or future.result() is None:
+        return _fail(node, f"Service {service} did not answer within {max(timeout, 1.0):g} s")
+    res = future.result()
+    if not res.success:
+        return _fail(node, f"Spawn service failed: {res.status_message}")
+    log.info(f"Spawn status: {res.status_message}")
+    if args.unpause:
+        unpause = node.create_client(Empty, f"{ns}/unpause_physics")
+        if unpause.wait_for_service(timeout_sec=timeout):
+            f2 = unpause.call_async(Empty.Request())
+            executor.spin_until_future_complete(f2, timeout_sec=timeout)
+    return 0

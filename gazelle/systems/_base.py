@@ -1,0 +1,184 @@
+"""The plugin framework: systems opt into phases, run in an explicit priority order.
+
+Phases per step, as in gz-sim:
+
+1. ``pre_update`` (before physics): controllers write commands; takes effect this step.
+2. ``update`` with priority < ``PHYSICS`` runs before the physics step, the rest after it.
+3. ``post_update`` (after physics): read-only observers (odometry, joint states, TF).
+
+``configure`` runs once when the entity is added (before the MuJoCo model is
+recompiled, so a system can add actuators), ``reset`` on a world reset.
+"""
+
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from ..description import ConfigElement, Plugin
+from ._bus import Bus
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..physics._world import Entity, PhysicsWorld
+
+PRE_PHYSICS = -128
+PHYSICS = -64
+DEFAULT_PRIORITY = 0
+
+
+@dataclass(frozen=True, slots=True)
+class UpdateInfo:
+    """What every system receives each step."""
+
+    sim_time_sec: float
+    """Simulation time at the start of this step (pre/update) or after it (post)."""
+    real_time_sec: float
+    """Wall-clock seconds since the simulation started."""
+    dt_sec: float
+    """Physics step size."""
+    iterations: int
+    """Steps taken so far."""
+    paused: bool
+
+
+@dataclass
+class SystemContext:
+    """Everything a system may touch while configuring."""
+
+    world: "PhysicsWorld"
+    entity: "Entity"
+    plugin: Plugin | None
+    bus: Bus
+    logger: logging.Logger
+
+
+class System:
+    """Base class; override only the phases you need (trivial ones are skipped)."""
+
+    priority: int = DEFAULT_PRIORITY
+
+    def configure(self, ctx: SystemContext) -> None:
+        """Read the configuration, check the entity, declare endpoints and actuators."""
+
+    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        """Forget internal state after a world reset."""
+
+    def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        """Before physics: write commands."""
+
+    def update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        """Around physics, by priority."""
+
+    def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        """After physics: observe; must not change the world."""
+
+    def shutdown(self) -> None:
+        """The entity is being removed."""
+
+
+def _overrides(system: System, phase: str) -> bool:
+    return getattr(type(system), phase) is not getattr(System, phase)
+
+
+class SystemManager:
+    """Keeps one sorted list per phase; equal priorities run in load order."""
+
+    PHASES = ("reset", "pre_update", "update", "post_update")
+
+    def __init__(self) -> None:
+        self._systems: list[tuple[str, System]] = []
+        self._phase: dict[str, list[System]] = {p: [] for p in self.PHASES}
+        self._update_before: list[System] = []
+        self._update_after: list[System] = []
+
+    def add(self, owner: str, system: System) -> None:
+        self._systems.append((owner, system))
+        self._rebuild()
+
+    def remove_owner(self, owner: str) -> list[System]:
+        gone = [s for o, s in self._systems if o == owner]
+        self._systems = [(o, s) for o, s in self._systems if o != owner]
+        self._rebuild()
+        for s in gone:
+            s.shutdown()
+        return gone
+
+    def systems(self, owner: str | None = None) -> list[System]:
+        return [s for o, s in self._systems if owner is None or o == owner]
+
+    def _rebuild(self) -> None:
+        ordered = [s for _, s in sorted(enumerate(self._systems), key=lambda it: (it[1][1].priority, it[0]))]
+        systems = [s for _, s in ordered]
+        for p in self.PHASES:
+            self._phase[p] = [s for s in systems if _overrides(s, p)]
+        self._update_before = [s for s in self._phase["update"] if s.priority < PHYSICS]
+        self._update_after = [s for s in self._phase["update"] if s.priority >= PHYSICS]
+
+    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        for s in self._phase["reset"]:
+            s.reset(info, world)
+
+    def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        for s in self._phase["pre_update"]:
+            s.pre_update(info, world)
+        for s in self._update_before:
+            s.update(info, world)
+
+    def post_physics(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        for s in self._update_after:
+            s.update(info, world)
+        for s in self._phase["post_update"]:
+            s.post_update(info, world)
+
+
+# --------------------------------------------------------------------------- config helpers
+def child_text(cfg: ConfigElement, tag: str) -> str | None:
+    el = cfg.find(tag)
+    return el.text.strip() if el is not None else None
+
+
+def parse_float(cfg: ConfigElement, tag: str, default: float, log: logging.Logger) -> float:
+    raw = child_text(cfg, tag)
+    if raw is None or raw == "":
+        return default
+    try:
+        return float(raw)
+    except ValueError:
+        el = cfg.find(tag)
+        where = f"{el.location}: " if el is not None and el.location else ""
+        log.warning(f"{where}<{tag}> must be a number, got {raw!r}; using {default}")
+        return default
+
+
+def parse_bool(cfg: ConfigElement, tag: str, default: bool, log: logging.Logger) -> bool:
+    raw = child_text(cfg, tag)
+    if raw is None or raw == "":
+        return default
+    low = raw.lower()
+    if low in ("1", "true"):
+        return True
+    if low in ("0", "false"):
+        return False
+    el = cfg.find(tag)
+    where = f"{el.location}: " if el is not None and el.location else ""
+    log.warning(f"{where}<{tag}> must be true/false, got {raw!r}; using {default}")
+    return default
+
+
+def ros_block(cfg: ConfigElement) -> tuple[str, dict[str, str]]:
+    """The ``<ros><namespace>`` and ``<remapping>from:=to`` entries of a gazebo_ros plugin."""
+    ros = cfg.find("ros")
+    if ros is None:
+        return "", {}
+    ns = child_text(ros, "namespace") or ""
+    remaps: dict[str, str] = {}
+    for r in ros.findall("remapping"):
+        text = r.text.strip()
+        if ":=" in text:
+            src, dst = text.split(":=", 1)
+            remaps[src.strip()] = dst.strip()
+        elif "=" in text:
+            src, dst = text.split("=", 1)
+            remaps[src.strip()] = dst.strip()
+    return ns, remaps

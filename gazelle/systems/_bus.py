@@ -1,0 +1,199 @@
+"""A small in-process message bus between systems and the outside world.
+
+Systems publish and subscribe plain dataclass payloads (below) on ROS-style
+topic names; the ROS bridge (``gazelle.ros``) listens for endpoints being added
+and removed and mirrors them as rclpy publishers and subscriptions. The core
+never imports rclpy: with no bridge attached, publishing costs a list lookup.
+"""
+
+from __future__ import annotations
+
+import enum
+import threading
+from dataclasses import dataclass, field
+from typing import Any, Callable, Protocol
+
+from ..description import Pose
+
+Vec3 = tuple[float, float, float]
+
+
+# --------------------------------------------------------------------------- payloads
+@dataclass(frozen=True, slots=True)
+class Twist:
+    """geometry_msgs/Twist."""
+
+    linear: Vec3 = (0.0, 0.0, 0.0)
+    angular: Vec3 = (0.0, 0.0, 0.0)
+
+
+@dataclass(frozen=True, slots=True)
+class Odometry:
+    """nav_msgs/Odometry."""
+
+    stamp_sec: float
+    frame_id: str
+    child_frame_id: str
+    pose: Pose
+    twist: Twist
+    pose_covariance: tuple[float, ...] = (0.0,) * 36
+    twist_covariance: tuple[float, ...] = (0.0,) * 36
+
+
+@dataclass(frozen=True, slots=True)
+class Transform:
+    """geometry_msgs/TransformStamped: ``pose`` is the child frame in the parent frame."""
+
+    stamp_sec: float
+    parent: str
+    child: str
+    pose: Pose
+
+
+@dataclass(frozen=True, slots=True)
+class TransformBatch:
+    """tf2_msgs/TFMessage."""
+
+    transforms: tuple[Transform, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class JointStates:
+    """sensor_msgs/JointState."""
+
+    stamp_sec: float
+    names: tuple[str, ...]
+    positions: tuple[float, ...]
+    velocities: tuple[float, ...]
+    efforts: tuple[float, ...] = ()
+
+
+class MsgType(enum.Enum):
+    """The ROS message type each payload maps to."""
+
+    TWIST = "geometry_msgs/msg/Twist"
+    ODOMETRY = "nav_msgs/msg/Odometry"
+    TF = "tf2_msgs/msg/TFMessage"
+    JOINT_STATE = "sensor_msgs/msg/JointState"
+
+
+class Qos(enum.Enum):
+    """QoS profiles named after what ROS uses them for."""
+
+    DEFAULT = "default"
+    """reliable, volatile, keep last ``depth``."""
+    SENSOR = "sensor"
+    """best effort, keep last ``depth``."""
+    LATCHED = "latched"
+    """reliable, transient local (like /tf_static, /robot_description)."""
+
+
+# --------------------------------------------------------------------------- endpoints
+@dataclass(eq=False)
+class Endpoint:
+    """One publisher or subscription declared by a system."""
+
+    owner: str
+    """Entity name (endpoints are removed with their entity)."""
+    topic: str
+    """Fully resolved topic name, e.g. ``/cmd_vel`` or ``/r1/odom``."""
+    msg_type: MsgType
+    is_publisher: bool
+    qos: Qos = Qos.DEFAULT
+    depth: int = 10
+    callback: Callable[[Any], None] | None = None
+    """Subscriptions: called (from a bridge thread) with each payload."""
+    sink: Callable[[Any], None] | None = field(default=None, repr=False)
+    """Publishers: set by the bridge; receives each published payload."""
+
+    def publish(self, payload: Any) -> None:
+        """Send a payload (a no-op when nothing outside listens)."""
+        sink = self.sink
+        if sink is not None:
+            sink(payload)
+
+
+class BusListener(Protocol):
+    def endpoint_added(self, endpoint: Endpoint) -> None: ...
+
+    def endpoint_removed(self, endpoint: Endpoint) -> None: ...
+
+
+class Bus:
+    """Registry of endpoints with listeners (the ROS bridge)."""
+
+    def __init__(self) -> None:
+        self._lock = threading.Lock()
+        self._endpoints: list[Endpoint] = []
+        self._listeners: list[BusListener] = []
+
+    def add_listener(self, listener: BusListener) -> None:
+        """Attach a listener; it is told about every existing endpoint first."""
+        with self._lock:
+            self._listeners.append(listener)
+            existing = list(self._endpoints)
+        for ep in existing:
+            listener.endpoint_added(ep)
+
+    def remove_listener(self, listener: BusListener) -> None:
+        with self._lock:
+            if listener in self._listeners:
+                self._listeners.remove(listener)
+
+    def advertise(
+        self, owner: str, topic: str, msg_type: MsgType, *, qos: Qos = Qos.DEFAULT, depth: int = 10
+    ) -> Endpoint:
+        """Declare a publisher."""
+        return self._add(Endpoint(owner, topic, msg_type, True, qos, depth))
+
+    def subscribe(
+        self,
+        owner: str,
+        topic: str,
+        msg_type: MsgType,
+        callback: Callable[[Any], None],
+        *,
+        qos: Qos = Qos.DEFAULT,
+        depth: int = 10,
+    ) -> Endpoint:
+        """Declare a subscription; ``callback`` may run on any thread."""
+        return self._add(Endpoint(owner, topic, msg_type, False, qos, depth, callback))
+
+    def _add(self, ep: Endpoint) -> Endpoint:
+        with self._lock:
+            self._endpoints.append(ep)
+            listeners = list(self._listeners)
+        for listener in listeners:
+            listener.endpoint_added(ep)
+        return ep
+
+    def remove_owner(self, owner: str) -> None:
+        """Remove every endpoint of an entity."""
+        with self._lock:
+            gone = [ep for ep in self._endpoints if ep.owner == owner]
+            self._endpoints = [ep for ep in self._endpoints if ep.owner != owner]
+            listeners = list(self._listeners)
+        for ep in gone:
+            ep.sink = None
+            for listener in listeners:
+                listener.endpoint_removed(ep)
+
+    def endpoints(self) -> list[Endpoint]:
+        with self._lock:
+            return list(self._endpoints)
+
+
+def resolve_topic(name: str, namespace: str = "", remaps: dict[str, str] | None = None) -> str:
+    """Resolve a topic name the way rclcpp does for a node in ``namespace``.
+
+    Remappings (``from:=to`` as in ``<ros><remapping>``) apply to the name as written.
+    """
+    if remaps:
+        for src, dst in remaps.items():
+            if name.lstrip("/") == src.lstrip("/"):
+                name = dst
+                break
+    if name.startswith("/"):
+        return name
+    ns = "/" + namespace.strip("/") if namespace.strip("/") else ""
+    return f"{ns}/{name}"

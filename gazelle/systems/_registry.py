@@ -1,0 +1,46 @@
+"""Maps plugin file names and class names to system implementations."""
+
+from __future__ import annotations
+
+import logging
+import re
+from typing import Callable
+
+from ..description import Plugin
+from ._base import System
+
+_log = logging.getLogger("gazelle.systems")
+
+
+def _normalise(filename: str) -> str:
+    """``libgazebo_ros_diff_drive.so`` -> ``gazebo_ros_diff_drive``; keeps gz names."""
+    name = filename.strip()
+    name = re.sub(r"^lib", "", name)
+    name = re.sub(r"\.(so|dylib|dll)$", "", name)
+    return name
+
+
+def _diff_drive() -> System:
+    from .diff_drive import DiffDrive
+
+    return DiffDrive()
+
+
+_REGISTRY: dict[str, Callable[[], System]] = {
+    "gazebo_ros_diff_drive": _diff_drive,
+}
+
+
+def supported_plugins() -> list[str]:
+    """Plugin file names (normalised) with an implementation."""
+    return sorted(_REGISTRY)
+
+
+def create_system(plugin: Plugin) -> System | None:
+    """A new system for ``plugin``, or None (with a warning naming it) if unsupported."""
+    factory = _REGISTRY.get(_normalise(plugin.filename)) or _REGISTRY.get(_normalise(plugin.name))
+    if factory is None:
+        where = f"{plugin.location}: " if plugin.location else ""
+        _log.warning(f"{where}plugin '{plugin.name}' ({plugin.filename}) is not supported; it is ignored")
+        return None
+    return factory()

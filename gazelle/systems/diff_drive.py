@@ -1,0 +1,377 @@
+"""Differential drive, configured like Gazebo Classic's ``libgazebo_ros_diff_drive.so``.
+
+Subscribes ``cmd_vel`` (geometry_msgs/Twist) and drives each wheel joint with a
+force-limited MuJoCo velocity servo towards ``(v ∓ ω·separation/2) / radius``
+along the joint's own axis, exactly as the classic plugin sets the joint
+velocity. Publishes ``odom`` (nav_msgs/Odometry) and the odom → base transform
+on ``/tf`` at ``update_rate``, stamped with sim time.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+import mujoco
+import numpy as np
+
+from ..description import Model, Pose
+from ..description._model import quat_from_rpy, quat_rotate
+from ._base import System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
+from ._bus import Endpoint, MsgType, Odometry, Qos, Transform, TransformBatch, Twist, resolve_topic
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..physics._world import PhysicsWorld
+
+ODOM_ENCODER = 0
+ODOM_WORLD = 1
+
+
+@dataclass(frozen=True)
+class DiffDriveConfig:
+    """Parameters of ``libgazebo_ros_diff_drive.so`` (names and defaults as the classic plugin)."""
+
+    left_joints: tuple[str, ...] = ()
+    """``<left_joint>`` (repeatable, one per wheel pair). Required."""
+    right_joints: tuple[str, ...] = ()
+    """``<right_joint>`` (repeatable). Required."""
+    num_wheel_pairs: int = 1
+    """``<num_wheel_pairs>``, default 1."""
+    wheel_separation: tuple[float, ...] = (0.34,)
+    """``<wheel_separation>`` per pair, metres; default 0.34."""
+    wheel_diameter: tuple[float, ...] = (0.15,)
+    """``<wheel_diameter>`` per pair, metres; default 0.15."""
+    max_wheel_torque: float = 5.0
+    """``<max_wheel_torque>``, N·m; the servo's force limit. Default 5."""
+    max_wheel_acceleration: float = 0.0
+    """``<max_wheel_acceleration>``, m/s² at the rim; 0 = unlimited (default)."""
+    update_rate: float = 100.0
+    """``<update_rate>``, Hz, for commands and odometry; ≤ 0 = every step. Default 100."""
+    odometry_frame: str = "odom"
+    """``<odometry_frame>``, default ``odom``."""
+    robot_base_frame: str = "base_footprint"
+    """``<robot_base_frame>``, default ``base_footprint``."""
+    odometry_source: int = ODOM_WORLD
+    """``<odometry_source>``: 1 = world (ground truth, default), 0 = encoder."""
+    publish_odom: bool = False
+    """``<publish_odom>``, default false."""
+    publish_odom_tf: bool = False
+    """``<publish_odom_tf>``, default false."""
+    publish_wheel_tf: bool = False
+    """``<publish_wheel_tf>``, default false."""
+    covariance_x: float = 0.00001
+    covariance_y: float = 0.00001
+    covariance_yaw: float = 0.001
+    namespace: str = ""
+    """``<ros><namespace>``."""
+    remappings: tuple[tuple[str, str], ...] = ()
+    """``<ros><remapping>from:=to``."""
+
+
+def parse_config(ctx: SystemContext, log: logging.Logger) -> DiffDriveConfig:
+    """Read a ``<plugin>`` block into :class:`DiffDriveConfig`, logging what is wrong."""
+    cfg = ctx.plugin.config if ctx.plugin is not None else None
+    if cfg is None:
+        return DiffDriveConfig()
+    pairs = int(parse_float(cfg, "num_wheel_pairs", 1, log))
+    if pairs < 1:
+        log.warning("Drive requires at least one pair of wheels. Setting [num_wheel_pairs] to 1")
+        pairs = 1
+
+    def floats(tag: str, default: float) -> tuple[float, ...]:
+        vals: list[float] = []
+        for el in cfg.findall(tag):
+            try:
+                vals.append(float(el.text.strip()))
+            except ValueError:
+                log.warning(f"{el.location}: <{tag}> must be a number, got {el.text.strip()!r}")
+        if len(vals) > pairs:
+            log.warning(f"Ignoring rest of specified <{tag}>")
+            vals = vals[:pairs]
+        while len(vals) < pairs:
+            vals.append(default)
+        return tuple(vals)
+
+    ns, remaps = ros_block(cfg)
+    ns = ns or ctx.entity.namespace
+    source = int(parse_float(cfg, "odometry_source", ODOM_WORLD, log))
+    return DiffDriveConfig(
+        left_joints=tuple(el.text.strip() for el in cfg.findall("left_joint")),
+        right_joints=tuple(el.text.strip() for el in cfg.findall("right_joint")),
+        num_wheel_pairs=pairs,
+        wheel_separation=floats("wheel_separation", 0.34),
+        wheel_diameter=floats("wheel_diameter", 0.15),
+        max_wheel_torque=parse_float(cfg, "max_wheel_torque", 5.0, log),
+        max_wheel_acceleration=parse_float(cfg, "max_wheel_acceleration", 0.0, log),
+        update_rate=parse_float(cfg, "update_rate", 100.0, log),
+        odometry_frame=child_text(cfg, "odometry_frame") or "odom",
+        robot_base_frame=child_text(cfg, "robot_base_frame") or "base_footprint",
+        odometry_source=source if source in (ODOM_ENCODER, ODOM_WORLD) else ODOM_WORLD,
+        publish_odom=parse_bool(cfg, "publish_odom", False, log),
+        publish_odom_tf=parse_bool(cfg, "publish_odom_tf", False, log),
+        publish_wheel_tf=parse_bool(cfg, "publish_wheel_tf", False, log),
+        covariance_x=parse_float(cfg, "covariance_x", 0.00001, log),
+        covariance_y=parse_float(cfg, "covariance_y", 0.00001, log),
+        covariance_yaw=parse_float(cfg, "covariance_yaw", 0.001, log),
+        namespace=ns,
+        remappings=tuple(remaps.items()),
+    )
+
+
+INTEGRAL_TIME_SEC = 0.05
+"""Integral time of the wheel speed loop."""
+
+
+def servo_gain(inertia_about_axis: float, dt_sec: float) -> float:
+    """Velocity-servo gain kv (N·m·s/rad) for a wheel.
+
+    ``implicitfast`` integrates an unsaturated velocity servo implicitly, so any kv
+    is stable there; but a saturated servo (at ``max_wheel_torque``) is an explicit
+    constant torque that changes the wheel speed by ``τ·dt/I`` in one step. If that
+    jump is wider than the unsaturated band ``τ/kv`` the wheel chatters between
+    ±τ and the robot hops (we measured it: kv=1000 turned 0° instead of 90°).
+    ``kv = I/dt`` keeps the band at least one step wide, and since the wheel drags
+    the robot's mass along, its effective inertia (and so its tracking) is higher.
+    """
+    return max(inertia_about_axis, 1e-6) / dt_sec
+
+
+def wheel_inertia_about_axis(model: Model, joint_name: str, armature: float) -> float:
+    """Moment of inertia of a joint's child link about the joint axis, plus the joint armature."""
+    j = model.joint(joint_name)
+    inertial = model.link(j.child).inertial
+    if inertial is None or j.axis is None:
+        return armature
+    # axis in the child frame, then in the inertial (principal) frame
+    X_CJ = j.child_offset.inverse()
+    a_c = np.asarray(quat_rotate(X_CJ.orientation, j.axis.xyz))
+    R_ci = np.zeros(9)
+    mujoco.mju_quat2Mat(R_ci, np.asarray(inertial.pose.orientation, dtype=float))
+    R_ci = R_ci.reshape(3, 3)
+    a_i = R_ci.T @ a_c
+    I = np.array(
+        [
+            [inertial.ixx, inertial.ixy, inertial.ixz],
+            [inertial.ixy, inertial.iyy, inertial.iyz],
+            [inertial.ixz, inertial.iyz, inertial.izz],
+        ]
+    )
+    com = np.asarray(inertial.pose.position) - np.asarray(X_CJ.position)
+    perp = com - a_c * float(com @ a_c)
+    return float(a_i @ I @ a_i) + inertial.mass * float(perp @ perp) + armature
+
+
+@dataclass
+class _Wheel:
+    joint: str
+    actuator: str
+    radius: float
+    side: int
+    """+1 right, -1 left (sign of the ω term)."""
+    separation: float
+    integral_limit: float
+    """Anti-windup bound of the integral term, rad/s (torque limit / kv)."""
+    instructed: float = 0.0
+    """Current rim speed command after the acceleration limit, m/s."""
+    integral: float = 0.0
+    """Integral correction added to the servo's target, rad/s."""
+
+
+class DiffDrive(System):
+    """The classic gazebo_ros differential drive."""
+
+    def __init__(self) -> None:
+        self.config = DiffDriveConfig()
+        self.log = logging.getLogger("diff_drive")
+        self._wheels: list[_Wheel] = []
+        self._cmd = Twist()
+        self._last_update = -math.inf
+        self._odom_pub: Endpoint | None = None
+        self._tf_pub: Endpoint | None = None
+        self._cmd_sub: Endpoint | None = None
+        self._entity = ""
+        self._enc_pose = (0.0, 0.0, 0.0)
+        self._enc_twist = (0.0, 0.0)
+        self._ok = False
+        self._due = False
+        self._addr_cache: tuple[int, dict[str, tuple[int, int, int]]] = (-1, {})
+
+    # ------------------------------------------------------------------ configure
+    def configure(self, ctx: SystemContext) -> None:
+        self.log = ctx.logger
+        self.config = c = parse_config(ctx, self.log)
+        self._entity = ctx.entity.name
+        model = ctx.entity.model
+        joint_names = {j.name for j in model.joints}
+        if len(c.left_joints) != c.num_wheel_pairs or len(c.right_joints) != c.num_wheel_pairs:
+            self.log.error("Inconsistent number of joints specified. Plugin will not work.")
+            return
+        ok = True
+        for jn in (*c.left_joints, *c.right_joints):
+            if jn not in joint_names:
+                self.log.error(f"Joint [{jn}] not found, plugin will not work.")
+                ok = False
+        if not ok:
+            return
+        for i in range(c.num_wheel_pairs):
+            self.log.info(f"Wheel pair {i + 1} separation set to [{c.wheel_separation[i]:f}m]")
+            self.log.info(f"Wheel pair {i + 1} diameter set to [{c.wheel_diameter[i]:f}m]")
+        # joint order as the classic plugin: [right0, left0, right1, left1, ...]
+        for i in range(c.num_wheel_pairs):
+            for side, jn in ((1, c.right_joints[i]), (-1, c.left_joints[i])):
+                kv = servo_gain(wheel_inertia_about_axis(model, jn, ctx.world.armature), ctx.world.timestep)
+                act = ctx.world.add_velocity_actuator(ctx.entity, jn, kv=kv, force_limit=c.max_wheel_torque)
+                limit = c.max_wheel_torque / kv if c.max_wheel_torque > 0 else math.inf
+                self._wheels.append(_Wheel(jn, act, c.wheel_diameter[i] / 2.0, side, c.wheel_separation[i], limit))
+        remaps = dict(c.remappings)
+        cmd_topic = resolve_topic("cmd_vel", c.namespace, remaps)
+        self._cmd_sub = ctx.bus.subscribe(self._entity, cmd_topic, MsgType.TWIST, self._on_cmd, depth=1)
+        self.log.info(f"Subscribed to [{cmd_topic}]")
+        if c.publish_odom:
+            odom_topic = resolve_topic("odom", c.namespace, remaps)
+            self._odom_pub = ctx.bus.advertise(self._entity, odom_topic, MsgType.ODOMETRY, depth=1)
+            self.log.info(f"Advertise odometry on [{odom_topic}]")
+        if c.publish_odom_tf or c.publish_wheel_tf:
+            self._tf_pub = ctx.bus.advertise(self._entity, "/tf", MsgType.TF, depth=100)
+        if c.publish_odom_tf:
+            self.log.info(f"Publishing odom transforms between [{c.odometry_frame}] and [{c.robot_base_frame}]")
+        if c.publish_wheel_tf:
+            self.log.info(
+                f"Publishing wheel transforms between [{c.robot_base_frame}], [{c.left_joints[0]}] and [{c.right_joints[0]}]"
+            )
+        self._ok = True
+
+    def _on_cmd(self, twist: Twist) -> None:
+        self._cmd = twist  # one reference assignment: safe from the bridge thread
+
+    def command(self, linear_x: float, angular_z: float) -> None:
+        """Set the commanded body velocity directly (as a ``cmd_vel`` message would)."""
+        self._cmd = Twist((linear_x, 0.0, 0.0), (0.0, 0.0, angular_z))
+
+    # ------------------------------------------------------------------ stepping
+    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        self._cmd = Twist()
+        self._last_update = -math.inf
+        self._due = False
+        self._enc_pose = (0.0, 0.0, 0.0)
+        self._enc_twist = (0.0, 0.0)
+        for w in self._wheels:
+            w.instructed = 0.0
+            w.integral = 0.0
+
+    def _addresses(self, world: "PhysicsWorld") -> dict[str, tuple[int, int, int]]:
+        gen, cache = self._addr_cache
+        if gen != world.generation:
+            cache = {}
+            for w in self._wheels:
+                qadr, dadr = world.joint_address(self._entity, w.joint)
+                cache[w.joint] = (qadr, dadr, world.actuator_id(w.actuator))
+            self._addr_cache = (world.generation, cache)
+        return cache
+
+    def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        if not self._ok or info.paused:
+            return
+        c = self.config
+        period = 1.0 / c.update_rate if c.update_rate > 0 else 0.0
+        if info.sim_time_sec - self._last_update + 1e-12 >= period:
+            dt = info.sim_time_sec - self._last_update if math.isfinite(self._last_update) else period
+            self._last_update = info.sim_time_sec
+            self._due = True
+            v, wz = self._cmd.linear[0], self._cmd.angular[2]
+            for w in self._wheels:
+                target = v + w.side * wz * w.separation / 2.0
+                if c.max_wheel_acceleration > 0 and abs(target - w.instructed) >= 0.01:
+                    step = c.max_wheel_acceleration * max(dt, info.dt_sec)
+                    delta = max(-step, min(step, target - w.instructed))
+                    w.instructed += delta
+                else:
+                    w.instructed = target
+        addrs = self._addresses(world)
+        for w in self._wheels:
+            target = w.instructed / w.radius
+            speed = float(world.data.qvel[addrs[w.joint][1]])
+            # integral action removes the servo's steady-state error under load (scrub,
+            # rolling resistance), as a constraint motor (Gazebo's "vel" + "fmax") has none
+            w.integral += (target - speed) * info.dt_sec / INTEGRAL_TIME_SEC
+            w.integral = max(-w.integral_limit, min(w.integral_limit, w.integral))
+            world.data.ctrl[addrs[w.joint][2]] = target + w.integral
+
+    def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        if not self._ok or info.paused:
+            return
+        c = self.config
+        if c.odometry_source == ODOM_ENCODER:
+            self._integrate_encoders(info, world)
+        if not self._due:
+            return  # odometry goes out on the steps where commands were updated
+        self._due = False
+        if self._odom_pub is None and self._tf_pub is None:
+            return
+        stamp = info.sim_time_sec
+        pose, twist = self._odometry(world)
+        if self._odom_pub is not None:
+            cov = [0.0] * 36
+            cov[0], cov[7], cov[14], cov[21], cov[28], cov[35] = (
+                c.covariance_x,
+                c.covariance_y,
+                1e12,
+                1e12,
+                1e12,
+                c.covariance_yaw,
+            )
+            self._odom_pub.publish(
+                Odometry(stamp, c.odometry_frame, c.robot_base_frame, pose, twist, tuple(cov), tuple(cov))
+            )
+        if self._tf_pub is not None:
+            tfs: list[Transform] = []
+            if c.publish_odom_tf:
+                tfs.append(Transform(stamp, c.odometry_frame, c.robot_base_frame, pose))
+            if c.publish_wheel_tf:
+                tfs.extend(self._wheel_transforms(stamp, world))
+            if tfs:
+                self._tf_pub.publish(TransformBatch(tuple(tfs)))
+
+    def _odometry(self, world: "PhysicsWorld") -> tuple[Pose, Twist]:
+        if self.config.odometry_source == ODOM_ENCODER:
+            x, y, th = self._enc_pose
+            return Pose((x, y, 0.0), quat_from_rpy(0.0, 0.0, th)), Twist(
+                (self._enc_twist[0], 0.0, 0.0), (0.0, 0.0, self._enc_twist[1])
+            )
+        st = world.entity_state(self._entity)
+        yaw = st.pose.rpy[2]
+        vx, vy, _ = st.linear_velocity
+        cy, sy = math.cos(yaw), math.sin(yaw)
+        twist = Twist((cy * vx + sy * vy, cy * vy - sy * vx, 0.0), (0.0, 0.0, st.angular_velocity[2]))
+        return st.pose, twist
+
+    def _integrate_encoders(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        """Siegwart 2011, as the classic plugin's encoder odometry (pair 0 only)."""
+        if len(self._wheels) < 2:
+            return
+        addrs = self._addresses(world)
+        right, left = self._wheels[0], self._wheels[1]
+        wr = float(world.data.qvel[addrs[right.joint][1]])
+        wl = float(world.data.qvel[addrs[left.joint][1]])
+        dt = info.dt_sec
+        sr, sl = wr * right.radius * dt, wl * left.radius * dt
+        b = right.separation
+        x, y, th = self._enc_pose
+        ssum, sdiff = sl + sr, sr - sl
+        dx = ssum / 2.0 * math.cos(th + sdiff / (2.0 * b))
+        dy = ssum / 2.0 * math.sin(th + sdiff / (2.0 * b))
+        dth = sdiff / b
+        self._enc_pose = (x + dx, y + dy, th + dth)
+        self._enc_twist = (math.hypot(dx, dy) / dt if dt > 0 else 0.0, dth / dt if dt > 0 else 0.0)
+
+    def _wheel_transforms(self, stamp: float, world: "PhysicsWorld") -> list[Transform]:
+        out: list[Transform] = []
+        model = world.entities[self._entity].model
+        for w in self._wheels:
+            j = model.joint(w.joint)
+            X_WP = world.entity_state(self._entity, j.parent).pose
+            X_WC = world.entity_state(self._entity, j.child).pose
+            out.append(Transform(stamp, j.parent, j.child, X_WP.inverse() * X_WC))
+        return out

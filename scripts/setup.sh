@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Set up everything gazelle needs, idempotently, on a Debian machine with Python >= 3.11:
+# Debian build tools if missing, a virtualenv in .venv, the pinned wheels (ROS 2 Jazzy,
+# MuJoCo, xacro, ...), gazelle itself (editable), and our ROS interface packages.
+# Each step is skipped when what it would produce is already there and up to date.
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+VENV="$ROOT/.venv"
+say() { printf '[setup] %s\n' "$*"; }
+
+# 1. Debian packages: a C/C++ toolchain and CMake build our interface packages.
+missing=()
+command -v cmake >/dev/null || missing+=(cmake)
+command -v g++ >/dev/null || missing+=(g++)
+command -v make >/dev/null || missing+=(make)
+if ((${#missing[@]})); then
+  if [[ $(id -u) -eq 0 ]]; then SUDO=""; else SUDO="sudo"; fi
+  say "installing Debian packages: ${missing[*]}"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+
+# 2. The virtualenv, with a Python >= 3.11.
+PY=""
+for cand in python3.11 python3.12 python3.13 python3; do
+  if command -v "$cand" >/dev/null && "$cand" -c 'import sys; sys.exit(sys.version_info < (3, 11))'; then
+    PY="$cand"; break
+  fi
+done
+[[ -n "$PY" ]] || { echo "[setup] need Python >= 3.11" >&2; exit 1; }
+if [[ ! -x "$VENV/bin/python" ]]; then
+  if ! "$PY" -m venv "$VENV" 2>/dev/null; then
+    say "installing python3-venv"
+    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq python3-venv >/dev/null
+    "$PY" -m venv "$VENV"
+  fi
+  say "created $VENV"
+fi
+
+# 3. Pinned wheels, then gazelle itself (only when requirements or pyproject changed).
+want="$(cat "$ROOT/requirements.txt" "$ROOT/pyproject.toml" | sha256sum | cut -d' ' -f1)"
+stamp="$VENV/.gazelle_requirements.sha256"
+if [[ ! -f "$stamp" || "$(cat "$stamp")" != "$want" ]]; then
+  say "installing wheels (ROS 2 Jazzy, MuJoCo, xacro, ...)"
+  "$VENV/bin/python" -m pip install -q --disable-pip-version-check -r "$ROOT/requirements.txt"
+  "$VENV/bin/python" -m pip install -q --disable-pip-version-check --no-deps --no-build-isolation -e "$ROOT"
+  echo "$want" > "$stamp"
+fi
+
+# 4. Our interface packages (tf2_msgs, simulation_interfaces, gazebo_msgs), rebuilt only on change.
+"$ROOT/scripts/build_interfaces.sh" "$VENV"
