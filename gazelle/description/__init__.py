@@ -140,6 +140,8 @@ def load_string(
         ModelLoadError: with every diagnostic, when there is any error.
     """
     fmt = detect_format(text) if format == "auto" else format
+    if fmt == "urdf" and detect_format(text) == "xacro":
+        fmt = "xacro"  # a ".urdf" that is really xacro (TurtleBot3's main branch ships one)
     if fmt is None or fmt not in FORMATS:
         name = source or "<string>"
         raise ModelLoadError(

@@ -1,0 +1,945 @@
+"""URDF text to :class:`Model`, with every problem reported as a located diagnostic.
+
+Entry point: :func:`parse_urdf`. The loader reads the document in three passes:
+
+1. elements to drafts (links, joints, materials, ``<gazebo>`` blocks), checking values;
+2. the kinematic structure (names, parents, loops, roots);
+3. finishing links: ``<gazebo>`` extensions applied, missing or invalid inertia derived.
+
+Fixed joints are kept as they are (no lumping). Elements expanded by xacro carry their
+original file and line (see :mod:`._xml`), so diagnostics point into the xacro sources.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import os
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from lxml import etree
+
+from . import _inertia
+from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
+from ._model import (
+    Box,
+    Calibration,
+    Capsule,
+    Collision,
+    ConfigElement,
+    Cylinder,
+    GazeboExtension,
+    Geometry,
+    Inertial,
+    Joint,
+    JointAxis,
+    JointDynamics,
+    JointLimit,
+    JointType,
+    Link,
+    Material,
+    Mesh,
+    Mimic,
+    Model,
+    Plugin,
+    Pose,
+    SafetyController,
+    Sensor,
+    Sphere,
+    Surface,
+    Visual,
+)
+from ._resources import ResourceResolver
+from ._xml import (
+    child_elements,
+    element_location,
+    local_name,
+    parse_bool,
+    parse_float,
+    parse_floats,
+    parse_xml,
+    to_config,
+)
+
+URDF_JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "planar")
+"""Joint types a URDF may use."""
+
+_AXIS_JOINTS = frozenset({JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC, JointType.PLANAR})
+
+_CHILDREN: dict[str, frozenset[str]] = {
+    "link": frozenset({"inertial", "visual", "collision"}),
+    "visual": frozenset({"origin", "geometry", "material"}),
+    "collision": frozenset({"origin", "geometry"}),
+    "inertial": frozenset({"origin", "mass", "inertia"}),
+    "material": frozenset({"color", "texture"}),
+    "joint": frozenset(
+        {"origin", "parent", "child", "axis", "limit", "dynamics", "mimic", "safety_controller", "calibration"}
+    ),
+}
+"""Known child elements of each URDF element; anything else is reported as unsupported."""
+
+# <gazebo reference="link"> tags applied to every collision's Surface: tag -> (field, vector length).
+_SURFACE_TAGS: dict[str, tuple[str, int]] = {
+    "mu1": ("mu", 1),
+    "mu2": ("mu2", 1),
+    "kp": ("kp", 1),
+    "kd": ("kd", 1),
+    "maxVel": ("max_vel", 1),
+    "minDepth": ("min_depth", 1),
+    "fdir1": ("fdir1", 3),
+}
+# <gazebo reference="link"> boolean tags applied to the Link: tag -> (field, inverted).
+_LINK_FLAGS: dict[str, tuple[str, bool]] = {
+    "selfCollide": ("self_collide", False),
+    "gravity": ("gravity", False),
+    "turnGravityOff": ("gravity", True),
+    "kinematic": ("kinematic", False),
+}
+# <gazebo> (no reference) boolean tags applied to the Model.
+_MODEL_FLAGS: dict[str, str] = {"static": "static", "self_collide": "self_collide"}
+
+# Colours of the common Gazebo classic material scripts (diffuse RGBA).
+_GAZEBO_COLORS: dict[str, tuple[float, float, float, float]] = {
+    "Gazebo/Black": (0.0, 0.0, 0.0, 1.0),
+    "Gazebo/FlatBlack": (0.1, 0.1, 0.1, 1.0),
+    "Gazebo/DarkGrey": (0.175, 0.175, 0.175, 1.0),
+    "Gazebo/Grey": (0.7, 0.7, 0.7, 1.0),
+    "Gazebo/White": (1.0, 1.0, 1.0, 1.0),
+    "Gazebo/Red": (1.0, 0.0, 0.0, 1.0),
+    "Gazebo/Green": (0.0, 1.0, 0.0, 1.0),
+    "Gazebo/Blue": (0.0, 0.0, 1.0, 1.0),
+    "Gazebo/Yellow": (1.0, 1.0, 0.0, 1.0),
+    "Gazebo/Orange": (1.0, 0.5088, 0.0468, 1.0),
+    "Gazebo/Purple": (1.0, 0.0, 1.0, 1.0),
+    "Gazebo/Turquoise": (0.0, 1.0, 1.0, 1.0),
+    "Gazebo/Wood": (0.5, 0.3, 0.1, 1.0),
+}
+
+
+# --------------------------------------------------------------------------- drafts
+@dataclass
+class _InertialDraft:
+    """An ``<inertial>`` as written, with what is wrong with it."""
+
+    element: etree._Element
+    pose: Pose
+    mass: float | None
+    tensor: tuple[float, float, float, float, float, float] | None
+    problems: list[tuple[ErrorCode, str, SourceLocation]] = field(default_factory=list)
+
+
+@dataclass
+class _LinkDraft:
+    """A link while the document is being read (mutable until :meth:`_Reader.finish_link`)."""
+
+    name: str
+    element: etree._Element
+    location: SourceLocation
+    visuals: list[Visual] = field(default_factory=list)
+    collisions: list[Collision] = field(default_factory=list)
+    inertial: _InertialDraft | None = None
+    sensors: list[Sensor] = field(default_factory=list)
+    surface: dict[str, object] = field(default_factory=dict)
+    flags: dict[str, bool] = field(default_factory=dict)
+    gazebo_material: str | None = None
+
+
+@dataclass
+class _Document:
+    """Everything read from the ``<robot>`` element."""
+
+    name: str
+    links: dict[str, _LinkDraft] = field(default_factory=dict)
+    joints: dict[str, Joint] = field(default_factory=dict)
+    materials: dict[str, Material] = field(default_factory=dict)
+    plugins: list[Plugin] = field(default_factory=list)
+    gazebo: list[GazeboExtension] = field(default_factory=list)
+    transmissions: list[ConfigElement] = field(default_factory=list)
+    model_flags: dict[str, bool] = field(default_factory=dict)
+
+
+# --------------------------------------------------------------------------- reader
+@dataclass
+class _Reader:
+    """Reads URDF elements, reporting problems with their source location."""
+
+    source: str
+    sink: DiagnosticSink
+    resolver: ResourceResolver
+    base_dir: str
+
+    # ---- reporting
+    def loc(self, element: etree._Element) -> SourceLocation:
+        """Where ``element`` came from."""
+        return element_location(element, self.source)
+
+    def error(self, code: ErrorCode, message: str, element: etree._Element) -> None:
+        """Report an error at ``element``."""
+        self.sink.error(code, message, self.loc(element))
+
+    def warn(self, code: ErrorCode, message: str, element: etree._Element) -> None:
+        """Report a warning at ``element``."""
+        self.sink.warning(code, message, self.loc(element))
+
+    def check_children(self, element: etree._Element, what: str) -> None:
+        """Warn about children of ``element`` that this loader does not read."""
+        known = _CHILDREN[local_name(element)]
+        for child in child_elements(element):
+            if local_name(child) not in known:
+                self.unsupported(child, f"<{local_name(child)}> in {what}")
+
+    def unsupported(self, element: etree._Element, what: str) -> None:
+        """Warn that ``element`` is ignored."""
+        tag = local_name(element)
+        hint = ""
+        if tag.startswith("xacro:"):
+            hint = "; this looks like xacro: load the file as xacro (a .xacro suffix or format='xacro')"
+        self.warn(ErrorCode.ELEMENT_UNSUPPORTED, f"{what} is not supported and is ignored{hint}", element)
+
+    # ---- values
+    def name(self, element: etree._Element, what: str) -> str | None:
+        """The required, non-empty ``name`` attribute (ATTRIBUTE_MISSING error when absent)."""
+        value = element.get("name")
+        if value is None or not value.strip():
+            self.error(ErrorCode.ATTRIBUTE_MISSING, f"{what} has no 'name' attribute", element)
+            return None
+        return value
+
+    def floats(
+        self, element: etree._Element, attr: str, count: int, default: tuple[float, ...] | None
+    ) -> tuple[float, ...] | None:
+        """``count`` floats from attribute ``attr``; ``default`` if absent; None (after an error) if invalid."""
+        text = element.get(attr)
+        if text is None:
+            return default
+        values = parse_floats(text, count)
+        if values is None:
+            parts = text.split()
+            problem = f"expected {count} numbers, got {len(parts)}" if len(parts) != count else "not a number"
+            self.error(
+                ErrorCode.VALUE_INVALID,
+                f'<{local_name(element)} {attr}="{text}">: {problem}',
+                element,
+            )
+        return values
+
+    def number(self, element: etree._Element, attr: str, default: float | None = None) -> float | None:
+        """One float from attribute ``attr`` (``default`` if absent; None after an error if invalid)."""
+        values = self.floats(element, attr, 1, None if default is None else (default,))
+        return None if values is None else values[0]
+
+    def numbers(self, element: etree._Element, attrs: tuple[str, ...]) -> dict[str, float]:
+        """The attributes of ``attrs`` that are present and valid, as floats."""
+        result: dict[str, float] = {}
+        for attr in attrs:
+            value = self.number(element, attr)
+            if value is not None:
+                result[attr] = value
+        return result
+
+    def positive(self, element: etree._Element, attr: str, what: str) -> float | None:
+        """A required attribute that must be > 0 (GEOMETRY_INVALID otherwise)."""
+        if element.get(attr) is None:
+            self.error(ErrorCode.ATTRIBUTE_MISSING, f"{what} has no '{attr}' attribute", element)
+            return None
+        value = self.number(element, attr)
+        if value is not None and value <= 0:
+            self.error(ErrorCode.GEOMETRY_INVALID, f"{what} {attr} must be > 0, got {value:g}", element)
+            return None
+        return value
+
+    def pose(self, parent: etree._Element) -> Pose:
+        """The pose of the ``<origin>`` child of ``parent`` (identity when absent)."""
+        origin = parent.find("origin")
+        if origin is None:
+            return Pose()
+        xyz = self.floats(origin, "xyz", 3, (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0)
+        rpy = self.floats(origin, "rpy", 3, (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0)
+        return Pose.from_xyz_rpy(xyz, rpy)  # type: ignore[arg-type]
+
+    # ---- geometry
+    def geometry(self, parent: etree._Element, what: str) -> Geometry | None:
+        """The one shape inside ``parent``'s ``<geometry>`` (errors when missing or invalid)."""
+        geom = parent.find("geometry")
+        if geom is None:
+            self.error(ErrorCode.ELEMENT_MISSING, f"{what} has no <geometry>", parent)
+            return None
+        shapes = child_elements(geom)
+        if len(shapes) != 1:
+            self.error(
+                ErrorCode.GEOMETRY_INVALID, f"<geometry> of {what} must hold exactly one shape, has {len(shapes)}", geom
+            )
+            return None
+        shape = shapes[0]
+        reader = _SHAPE_READERS.get(local_name(shape))
+        if reader is None:
+            self.error(
+                ErrorCode.GEOMETRY_INVALID,
+                f"unknown geometry <{local_name(shape)}> in {what}; expected one of " + ", ".join(_SHAPE_READERS),
+                shape,
+            )
+            return None
+        return reader(self, shape, f"<{local_name(shape)}> of {what}")
+
+    def box(self, element: etree._Element, what: str) -> Geometry | None:
+        """A ``<box size="x y z">``."""
+        if element.get("size") is None:
+            self.error(ErrorCode.ATTRIBUTE_MISSING, f"{what} has no 'size' attribute", element)
+            return None
+        size = self.floats(element, "size", 3, None)
+        if size is None:
+            return None
+        if min(size) <= 0:
+            self.error(ErrorCode.GEOMETRY_INVALID, f"{what} size must be > 0, got {element.get('size')!r}", element)
+            return None
+        return Box(size)  # type: ignore[arg-type]
+
+    def sphere(self, element: etree._Element, what: str) -> Geometry | None:
+        """A ``<sphere radius>``."""
+        radius = self.positive(element, "radius", what)
+        return None if radius is None else Sphere(radius)
+
+    def cylinder(self, element: etree._Element, what: str) -> Geometry | None:
+        """A ``<cylinder radius length>`` (``<capsule>`` reads the same attributes)."""
+        radius = self.positive(element, "radius", what)
+        length = self.positive(element, "length", what)
+        if radius is None or length is None:
+            return None
+        return (Capsule if local_name(element) == "capsule" else Cylinder)(radius, length)
+
+    def mesh(self, element: etree._Element, what: str) -> Geometry | None:
+        """A ``<mesh filename scale>``, resolved to a file (a warning when it cannot be)."""
+        uri = element.get("filename")
+        if uri is None or not uri.strip():
+            self.error(ErrorCode.ATTRIBUTE_MISSING, f"{what} has no 'filename' attribute", element)
+            return None
+        scale = self.floats(element, "scale", 3, (1.0, 1.0, 1.0))
+        if scale is None:
+            return None
+        if 0.0 in scale:
+            self.error(
+                ErrorCode.GEOMETRY_INVALID, f"{what} scale must not be zero, got {element.get('scale')!r}", element
+            )
+            return None
+        return Mesh(uri, self.mesh_path(element, uri), scale)  # type: ignore[arg-type]
+
+    def mesh_path(self, element: etree._Element, uri: str) -> str | None:
+        """The absolute file of a mesh URI, or None after a URI_UNRESOLVED / MESH_NOT_FOUND warning."""
+        loc = self.loc(element)
+        base = os.path.dirname(loc.file) if loc.file != self.source and not loc.file.startswith("<") else self.base_dir
+        try:
+            path = self.resolver.resolve_uri(uri, base)
+        except (OSError, ValueError):
+            path = None
+        if path is None:
+            self.warn(
+                ErrorCode.URI_UNRESOLVED,
+                f"cannot resolve mesh URI '{uri}' (is the package on GAZELLE_RESOURCE_PATH or the ament index?)",
+                element,
+            )
+            return None
+        if not _is_file(path):
+            self.warn(ErrorCode.MESH_NOT_FOUND, f"mesh file '{path}' (from '{uri}') does not exist", element)
+            return None
+        return str(path)
+
+    # ---- materials
+    def material(self, element: etree._Element, named: dict[str, Material]) -> Material | None:
+        """A ``<material>`` element: inline colour/texture, or a reference to a named one."""
+        name = element.get("name", "")
+        color_el, texture_el = element.find("color"), element.find("texture")
+        self.check_children(element, f"material '{name}'")
+        if color_el is None and texture_el is None:
+            if name in named:
+                return named[name]
+            if name:
+                self.warn(ErrorCode.MATERIAL_UNDEFINED, f"material '{name}' is not defined", element)
+            return Material(name=name)
+        diffuse = None if color_el is None else self.floats(color_el, "rgba", 4, None)
+        texture = None if texture_el is None else texture_el.get("filename")
+        return Material(name=name, diffuse=diffuse, texture=texture)  # type: ignore[arg-type]
+
+    # ---- links
+    def link(self, element: etree._Element, materials: dict[str, Material]) -> _LinkDraft | None:
+        """A ``<link>`` with its visuals, collisions and inertial."""
+        name = self.name(element, "<link>")
+        if name is None:
+            return None
+        self.check_children(element, f"link '{name}'")
+        draft = _LinkDraft(name, element, self.loc(element))
+        for i, el in enumerate(element.findall("visual")):
+            visual = self.visual(el, name, i, materials)
+            if visual is not None:
+                draft.visuals.append(visual)
+        for i, el in enumerate(element.findall("collision")):
+            collision = self.collision(el, name, i)
+            if collision is not None:
+                draft.collisions.append(collision)
+        inertials = element.findall("inertial")
+        if len(inertials) > 1:
+            self.warn(
+                ErrorCode.ELEMENT_UNSUPPORTED,
+                f"link '{name}' has {len(inertials)} <inertial>; using the first",
+                inertials[1],
+            )
+        if inertials:
+            draft.inertial = self.inertial(inertials[0])
+        return draft
+
+    def shape_header(self, element: etree._Element, link: str, index: int) -> tuple[str, str, Pose, Geometry | None]:
+        """Name, description, pose and geometry shared by ``<visual>`` and ``<collision>``."""
+        kind = local_name(element)
+        name = element.get("name") or f"{link}_{kind}_{index}"
+        what = f"{kind} '{name}' of link '{link}'"
+        self.check_children(element, what)
+        return name, what, self.pose(element), self.geometry(element, what)
+
+    def visual(self, element: etree._Element, link: str, index: int, materials: dict[str, Material]) -> Visual | None:
+        """A ``<visual>``."""
+        name, _, pose, geometry = self.shape_header(element, link, index)
+        if geometry is None:
+            return None
+        mat_el = element.find("material")
+        material = None if mat_el is None else self.material(mat_el, materials)
+        return Visual(name, pose, geometry, material, self.loc(element))
+
+    def collision(self, element: etree._Element, link: str, index: int) -> Collision | None:
+        """A ``<collision>``."""
+        name, _, pose, geometry = self.shape_header(element, link, index)
+        if geometry is None:
+            return None
+        return Collision(name, pose, geometry, Surface(), self.loc(element))
+
+    def inertial(self, element: etree._Element) -> _InertialDraft:
+        """An ``<inertial>``; bad mass or inertia become problems (warnings later), not errors."""
+        self.check_children(element, "<inertial>")
+        draft = _InertialDraft(element, self.pose(element), None, None)
+        mass_el, inertia_el = element.find("mass"), element.find("inertia")
+        if mass_el is None:
+            draft.problems.append((ErrorCode.MASS_INVALID, "<inertial> has no <mass>", self.loc(element)))
+        else:
+            draft.mass = parse_float(mass_el.get("value"))
+            if draft.mass is None or draft.mass <= 0:
+                shown = mass_el.get("value")
+                draft.problems.append((ErrorCode.MASS_INVALID, f"mass must be > 0, got {shown!r}", self.loc(mass_el)))
+                draft.mass = None
+        if inertia_el is None:
+            draft.problems.append((ErrorCode.INERTIA_MISSING, "<inertial> has no <inertia>", self.loc(element)))
+            return draft
+        values = [parse_float(inertia_el.get(k, "0")) for k in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")]
+        if any(v is None for v in values):
+            draft.problems.append(
+                (ErrorCode.INERTIA_INVALID, "<inertia> has a value that is not a number", self.loc(inertia_el))
+            )
+            return draft
+        problem = _inertia.inertia_problem(*values)  # type: ignore[arg-type]
+        if problem is not None:
+            draft.problems.append((ErrorCode.INERTIA_INVALID, problem, self.loc(inertia_el)))
+        else:
+            draft.tensor = tuple(values)  # type: ignore[assignment]
+        return draft
+
+    # ---- joints
+    def joint(self, element: etree._Element) -> Joint | None:
+        """A ``<joint>`` (JOINT_* errors for a bad type, axis, parent or child element)."""
+        name = self.name(element, "<joint>")
+        if name is None:
+            return None
+        self.check_children(element, f"joint '{name}'")
+        type_text = element.get("type")
+        if type_text not in URDF_JOINT_TYPES:
+            self.error(
+                ErrorCode.JOINT_TYPE_INVALID,
+                f"joint '{name}' has unknown type {type_text!r}; expected one of " + ", ".join(URDF_JOINT_TYPES),
+                element,
+            )
+            return None
+        jtype = JointType(type_text)
+        parent = self.link_ref(element, "parent", name, ErrorCode.JOINT_PARENT_INVALID)
+        child = self.link_ref(element, "child", name, ErrorCode.JOINT_CHILD_INVALID)
+        axis = self.axis(element, name, jtype)
+        if parent is None or child is None or (jtype in _AXIS_JOINTS and axis is None):
+            return None
+        return Joint(
+            name=name,
+            type=jtype,
+            parent=parent,
+            child=child,
+            origin=self.pose(element),
+            axis=axis,
+            mimic=self.optional(element, "mimic", self.mimic),
+            safety_controller=self.optional(element, "safety_controller", self.safety_controller),
+            calibration=self.optional(element, "calibration", self.calibration),
+            location=self.loc(element),
+        )
+
+    def link_ref(self, joint: etree._Element, tag: str, name: str, code: ErrorCode) -> str | None:
+        """The ``link`` attribute of the joint's ``<parent>`` or ``<child>``."""
+        el = joint.find(tag)
+        value = None if el is None else el.get("link")
+        if value is None or not value.strip():
+            self.error(code, f"joint '{name}' has no <{tag} link=\"...\">", joint if el is None else el)
+            return None
+        return value
+
+    def axis(self, element: etree._Element, joint: str, jtype: JointType) -> JointAxis | None:
+        """The normalised axis with limit and dynamics (None for fixed/floating, or after an error)."""
+        if jtype not in _AXIS_JOINTS:
+            return None
+        axis_el = element.find("axis")
+        xyz: tuple[float, ...] | None = (1.0, 0.0, 0.0)
+        if axis_el is not None:
+            xyz = self.floats(axis_el, "xyz", 3, (1.0, 0.0, 0.0))
+            if xyz is None:
+                return None
+        norm = math.sqrt(sum(v * v for v in xyz))
+        if norm < 1e-12:
+            self.error(
+                ErrorCode.JOINT_AXIS_INVALID,
+                f"joint '{joint}' has a zero axis",
+                axis_el if axis_el is not None else element,
+            )
+            return None
+        return JointAxis(
+            tuple(v / norm for v in xyz),  # type: ignore[arg-type]
+            limit=self.limit(element, joint, jtype),
+            dynamics=self.optional(element, "dynamics", self.dynamics) or JointDynamics(),
+        )
+
+    def limit(self, element: etree._Element, joint: str, jtype: JointType) -> JointLimit:
+        """``<limit>``; revolute and prismatic joints should have one (a warning otherwise)."""
+        limit_el = element.find("limit")
+        if limit_el is None:
+            if jtype in (JointType.REVOLUTE, JointType.PRISMATIC):
+                self.warn(
+                    ErrorCode.ELEMENT_MISSING, f"{jtype.value} joint '{joint}' has no <limit>; it is unlimited", element
+                )
+            return JointLimit()
+        v = self.numbers(limit_el, ("lower", "upper", "effort", "velocity"))
+        for bound in ("lower", "upper"):
+            if jtype is JointType.CONTINUOUS:
+                v.pop(bound, None)  # a continuous joint has no position limits
+            elif jtype in (JointType.REVOLUTE, JointType.PRISMATIC):
+                v.setdefault(bound, 0.0)  # the URDF default
+        return JointLimit(v.get("lower"), v.get("upper"), v.get("effort"), v.get("velocity"))
+
+    def optional(self, element: etree._Element, tag: str, read: Callable[[etree._Element], object]) -> object:
+        """``read(child)`` for the ``tag`` child of ``element``, or None when absent."""
+        child = element.find(tag)
+        return None if child is None else read(child)
+
+    def dynamics(self, element: etree._Element) -> JointDynamics:
+        """``<dynamics damping friction>``."""
+        v = self.numbers(element, ("damping", "friction"))
+        return JointDynamics(damping=v.get("damping", 0.0), friction=v.get("friction", 0.0))
+
+    def mimic(self, element: etree._Element) -> Mimic | None:
+        """``<mimic joint multiplier offset>``."""
+        target = element.get("joint")
+        if not target:
+            self.error(ErrorCode.ATTRIBUTE_MISSING, "<mimic> has no 'joint' attribute", element)
+            return None
+        v = self.numbers(element, ("multiplier", "offset"))
+        return Mimic(target, v.get("multiplier", 1.0), v.get("offset", 0.0))
+
+    def safety_controller(self, element: etree._Element) -> SafetyController:
+        """``<safety_controller>`` (kept; not simulated)."""
+        v = self.numbers(element, ("soft_lower_limit", "soft_upper_limit", "k_position", "k_velocity"))
+        return SafetyController(**v)
+
+    def calibration(self, element: etree._Element) -> Calibration:
+        """``<calibration rising falling>`` (kept; not simulated)."""
+        return Calibration(**self.numbers(element, ("rising", "falling")))
+
+    # ---- <gazebo>
+    def plugin(self, element: etree._Element) -> Plugin | None:
+        """A ``<plugin name filename>`` with its whole element as config."""
+        filename = element.get("filename")
+        if not filename:
+            self.error(
+                ErrorCode.ATTRIBUTE_MISSING,
+                f"<plugin name={element.get('name', '')!r}> has no 'filename' attribute",
+                element,
+            )
+            return None
+        return Plugin(element.get("name", ""), filename, to_config(element, self.source), self.loc(element))
+
+    def sensor(self, element: etree._Element) -> Sensor | None:
+        """A ``<sensor type name>`` inside ``<gazebo reference=link>``."""
+        name = self.name(element, "<sensor>")
+        stype = element.get("type")
+        if not stype:
+            self.error(ErrorCode.ATTRIBUTE_MISSING, f"sensor '{name}' has no 'type' attribute", element)
+        if name is None or not stype:
+            return None
+        pose = Pose()
+        pose_el = element.find("pose")
+        if pose_el is not None:
+            values = parse_floats(pose_el.text or "0 0 0 0 0 0", 6)
+            if values is None:
+                self.error(
+                    ErrorCode.VALUE_INVALID, f"sensor '{name}' <pose> needs 6 numbers, got {pose_el.text!r}", pose_el
+                )
+            else:
+                pose = Pose.from_xyz_rpy(values[:3], values[3:])  # type: ignore[arg-type]
+        rate = self.text_value(element, "update_rate", parse_float)
+        always_on = self.text_value(element, "always_on", parse_bool)
+        plugins = [p for p in (self.plugin(el) for el in element.findall("plugin")) if p is not None]
+        return Sensor(
+            name=name,
+            type=stype,
+            pose=pose,
+            update_rate_hz=rate if rate is not None else 0.0,
+            always_on=bool(always_on),
+            topic=(element.findtext("topic") or "").strip(),
+            config=to_config(element, self.source),
+            plugins=tuple(plugins),
+            location=self.loc(element),
+        )
+
+    def text_value(self, parent: etree._Element, tag: str, parse: Callable[[str | None], object]) -> object:
+        """The parsed text of child ``tag`` (VALUE_INVALID error when unparsable; None when absent)."""
+        el = parent.find(tag)
+        if el is None:
+            return None
+        value = parse(el.text)
+        if value is None:
+            self.error(ErrorCode.VALUE_INVALID, f"<{tag}> has an invalid value {el.text!r}", el)
+        return value
+
+    def gazebo(self, element: etree._Element, doc: _Document) -> None:
+        """A ``<gazebo>`` block: kept whole, and its known tags applied."""
+        reference = element.get("reference")
+        doc.gazebo.append(GazeboExtension(reference, to_config(element, self.source), self.loc(element)))
+        if reference is None:
+            self.apply_model_gazebo(element, doc)
+        elif reference in doc.links:
+            self.apply_link_gazebo(element, doc.links[reference], doc)
+        elif reference in doc.joints:
+            for child in child_elements(element):
+                self.unsupported(child, f'<{local_name(child)}> in <gazebo reference="{reference}"> (a joint)')
+        else:
+            self.warn(
+                ErrorCode.GAZEBO_REFERENCE_INVALID,
+                f'<gazebo reference="{reference}"> names no link or joint; the block is ignored',
+                element,
+            )
+
+    def apply_model_gazebo(self, element: etree._Element, doc: _Document) -> None:
+        """Robot-level ``<gazebo>``: plugins and model flags."""
+        for child in child_elements(element):
+            tag = local_name(child)
+            if tag == "plugin":
+                plugin = self.plugin(child)
+                if plugin is not None:
+                    doc.plugins.append(plugin)
+            elif tag in _MODEL_FLAGS:
+                value = self.text_value(element, tag, parse_bool)
+                if value is not None:
+                    doc.model_flags[_MODEL_FLAGS[tag]] = bool(value)
+            else:
+                self.unsupported(child, f"<{tag}> in <gazebo>")
+
+    def apply_link_gazebo(self, element: etree._Element, link: _LinkDraft, doc: _Document) -> None:
+        """``<gazebo reference=link>``: surface, flags, material, sensors and plugins."""
+        for child in child_elements(element):
+            tag = local_name(child)
+            if tag in _SURFACE_TAGS:
+                field_name, count = _SURFACE_TAGS[tag]
+                values = parse_floats(child.text, count)
+                if values is None:
+                    self.error(ErrorCode.VALUE_INVALID, f"<{tag}> needs {count} number(s), got {child.text!r}", child)
+                else:
+                    link.surface[field_name] = values if count > 1 else values[0]
+            elif tag in _LINK_FLAGS:
+                field_name, inverted = _LINK_FLAGS[tag]
+                flag = self.text_value(element, tag, parse_bool)
+                if flag is not None:
+                    link.flags[field_name] = bool(flag) != inverted
+            elif tag == "material":
+                link.gazebo_material = (child.text or "").strip() or None
+            elif tag == "sensor":
+                sensor = self.sensor(child)
+                if sensor is not None:
+                    link.sensors.append(sensor)
+            elif tag == "plugin":
+                plugin = self.plugin(child)
+                if plugin is not None:
+                    doc.plugins.append(plugin)
+            else:
+                self.unsupported(child, f'<{tag}> in <gazebo reference="{link.name}">')
+
+    # ---- top level
+    def document(self, root: etree._Element) -> _Document | None:
+        """All of ``<robot>``, first pass."""
+        name = self.name(root, "<robot>")
+        doc = _Document(name or "")
+        doc.materials = self.named_materials(root)
+        gazebo_blocks: list[etree._Element] = []
+        for child in child_elements(root):
+            tag = local_name(child)
+            if tag == "link":
+                self.add_unique(doc.links, self.link(child, doc.materials), "link", child)
+            elif tag == "joint":
+                self.add_unique(doc.joints, self.joint(child), "joint", child)
+            elif tag == "gazebo":
+                gazebo_blocks.append(child)  # after all links and joints are known
+            elif tag == "transmission":
+                doc.transmissions.append(to_config(child, self.source))
+                self.warn(
+                    ErrorCode.ELEMENT_UNSUPPORTED,
+                    f"transmission '{child.get('name', '')}' is kept but not simulated",
+                    child,
+                )
+            elif tag == "ros2_control":
+                self.warn(ErrorCode.ELEMENT_UNSUPPORTED, "ros2_control is not supported yet", child)
+            elif tag != "material":
+                self.unsupported(child, f"<{tag}> in <robot>")
+        for block in gazebo_blocks:
+            self.gazebo(block, doc)
+        return None if name is None else doc
+
+    def named_materials(self, root: etree._Element) -> dict[str, Material]:
+        """Materials usable by name: top-level ones first, then any defined inline in a visual."""
+        named: dict[str, Material] = {}
+        top = [el for el in root.findall("material")]
+        inline = [el for el in root.iterfind("link/visual/material")]
+        for el in top + inline:
+            has_content = el.find("color") is not None or el.find("texture") is not None
+            name = el.get("name")
+            if el in top and not name:
+                self.error(ErrorCode.ATTRIBUTE_MISSING, "<material> has no 'name' attribute", el)
+                continue
+            if not name or not has_content:
+                continue
+            if name in named:
+                if el in top:
+                    self.warn(
+                        ErrorCode.DUPLICATE_NAME, f"material '{name}' is defined more than once; the first is used", el
+                    )
+                continue
+            named[name] = self.material(el, named)
+        return named
+
+    def add_unique(self, table: dict[str, object], item: object, what: str, element: etree._Element) -> None:
+        """Add a named link/joint draft, reporting a DUPLICATE_NAME error for a repeat."""
+        if item is None:
+            return
+        name: str = item.name  # type: ignore[attr-defined]
+        if name in table:
+            first = getattr(table[name], "location", None)
+            where = f" (first at {first})" if first is not None else ""
+            self.error(ErrorCode.DUPLICATE_NAME, f"{what} '{name}' is defined more than once{where}", element)
+            return
+        table[name] = item
+
+
+def _is_file(path: Path) -> bool:
+    try:
+        return path.is_file()
+    except (OSError, ValueError):
+        return False
+
+
+_SHAPE_READERS: dict[str, Callable[[_Reader, etree._Element, str], Geometry | None]] = {
+    "box": _Reader.box,
+    "cylinder": _Reader.cylinder,
+    "sphere": _Reader.sphere,
+    "capsule": _Reader.cylinder,
+    "mesh": _Reader.mesh,
+}
+
+
+# --------------------------------------------------------------------------- structure
+def _check_structure(doc: _Document, reader: _Reader) -> None:
+    """Parents and children exist, one parent per link, no loops, one root."""
+    parent_of: dict[str, Joint] = {}
+    for joint in doc.joints.values():
+        loc = joint.location
+        if joint.parent not in doc.links and joint.parent != "world":
+            reader.sink.error(
+                ErrorCode.JOINT_PARENT_INVALID, f"joint '{joint.name}' has unknown parent link '{joint.parent}'", loc
+            )
+        if joint.child not in doc.links:
+            reader.sink.error(
+                ErrorCode.JOINT_CHILD_INVALID, f"joint '{joint.name}' has unknown child link '{joint.child}'", loc
+            )
+            continue
+        if joint.child == joint.parent:
+            reader.sink.error(
+                ErrorCode.KINEMATIC_LOOP, f"joint '{joint.name}' connects link '{joint.child}' to itself", loc
+            )
+            continue
+        if joint.child in parent_of:
+            other = parent_of[joint.child]
+            reader.sink.error(
+                ErrorCode.JOINT_CHILD_INVALID,
+                f"link '{joint.child}' has two parents: joint '{other.name}' ({other.location})"
+                f" and joint '{joint.name}'",
+                loc,
+            )
+            continue
+        parent_of[joint.child] = joint
+    _check_loops(doc, parent_of, reader)
+    for joint in doc.joints.values():
+        if joint.mimic is not None and joint.mimic.joint not in doc.joints:
+            reader.sink.warning(
+                ErrorCode.ATTRIBUTE_INVALID,
+                f"joint '{joint.name}' mimics unknown joint '{joint.mimic.joint}'",
+                joint.location,
+            )
+    roots = [draft for name, draft in doc.links.items() if name not in parent_of]
+    if len(roots) > 1:
+        names = ", ".join(f"'{r.name}'" for r in roots)
+        reader.sink.error(
+            ErrorCode.MULTIPLE_ROOTS,
+            f"robot '{doc.name}' has {len(roots)} root links ({names}); connect them with joints into one tree",
+            roots[1].location,
+        )
+    if not doc.links:
+        reader.sink.error(ErrorCode.LINK_MISSING, f"robot '{doc.name}' has no links", SourceLocation(reader.source))
+
+
+def _check_loops(doc: _Document, parent_of: dict[str, Joint], reader: _Reader) -> None:
+    """Report each cycle of the child -> parent relation once."""
+    done: set[str] = set()
+    for start in doc.links:
+        path: list[str] = []
+        node: str | None = start
+        while node is not None and node not in done and node not in path:
+            path.append(node)
+            joint = parent_of.get(node)
+            node = joint.parent if joint is not None else None
+        if node is not None and node in path:
+            cycle = path[path.index(node) :]
+            chain = " -> ".join(f"'{n}'" for n in [*reversed(cycle), cycle[-1]])
+            reader.sink.error(ErrorCode.KINEMATIC_LOOP, f"kinematic loop: {chain}", parent_of[cycle[0]].location)
+        done.update(path)
+
+
+# --------------------------------------------------------------------------- finishing links
+def _finish_link(draft: _LinkDraft, movable_by: str | None, reader: _Reader) -> Link:
+    """The frozen :class:`Link`: ``<gazebo>`` applied and the inertial settled."""
+    collisions = tuple(
+        dataclasses.replace(c, surface=dataclasses.replace(c.surface, **draft.surface)) for c in draft.collisions
+    )
+    visuals = tuple(_apply_gazebo_material(v, draft.gazebo_material) for v in draft.visuals)
+    return Link(
+        name=draft.name,
+        inertial=_settle_inertial(draft, movable_by, reader),
+        visuals=visuals,
+        collisions=collisions,
+        sensors=tuple(draft.sensors),
+        gravity=draft.flags.get("gravity", True),
+        kinematic=draft.flags.get("kinematic", False),
+        self_collide=draft.flags.get("self_collide"),
+        location=draft.location,
+    )
+
+
+def _apply_gazebo_material(visual: Visual, script: str | None) -> Visual:
+    if script is None:
+        return visual
+    diffuse = _GAZEBO_COLORS.get(script) or (visual.material.diffuse if visual.material else None)
+    base = visual.material or Material()
+    return dataclasses.replace(visual, material=dataclasses.replace(base, name=script, diffuse=diffuse))
+
+
+def _settle_inertial(draft: _LinkDraft, movable_by: str | None, reader: _Reader) -> Inertial | None:
+    """The link's inertial; derived (with a warning per problem) when missing or invalid."""
+    raw = draft.inertial
+    if raw is not None and not raw.problems and raw.mass is not None and raw.tensor is not None:
+        ixx, ixy, ixz, iyy, iyz, izz = raw.tensor
+        return Inertial(raw.mass, raw.pose, ixx, ixy, ixz, iyy, iyz, izz)
+    if raw is None and not draft.collisions:
+        if movable_by is None:
+            return None  # a pure frame (base_footprint, sensor frames)
+        inertial = _inertia.default_inertial()
+        problems = [
+            (ErrorCode.INERTIA_MISSING, f"has no <inertial> but moves with joint '{movable_by}'", draft.location)
+        ]
+        remedy = f"using a placeholder mass of {inertial.mass:g} kg"
+    else:
+        mass = raw.mass if raw is not None else None
+        problems = (
+            raw.problems
+            if raw is not None
+            else [(ErrorCode.INERTIA_MISSING, "has collision geometry but no <inertial>", draft.location)]
+        )
+        inertial, remedy = _derive(draft, mass)
+    for code, text, loc in problems:
+        reader.sink.warning(code, f"link '{draft.name}': {text}; {remedy}", loc)
+    return inertial
+
+
+def _derive(draft: _LinkDraft, mass: float | None) -> tuple[Inertial, str]:
+    """Inertia from the collision shapes (mass from volume when ``mass`` is None) and a note saying how."""
+    result = _inertia.inertia_from_geometries([(c.geometry, c.pose) for c in draft.collisions], mass)
+    if result is None:
+        inertial = _inertia.default_inertial(mass)
+        why = "no collision shape has a volume" if draft.collisions else "the link has no collision geometry"
+        return inertial, f"{why}, using mass {inertial.mass:g} kg with a placeholder inertia"
+    inertial = result.inertial
+    how = f"inertia derived from {len(draft.collisions)} collision shape(s)"
+    if result.mass_from_volume:
+        how += (
+            f", mass {inertial.mass:.4g} kg from volume {result.volume:.4g} m^3 at {_inertia.DEFAULT_DENSITY:g} kg/m^3"
+        )
+    if result.notes:
+        how += " (" + "; ".join(result.notes) + ")"
+    return inertial, how
+
+
+# --------------------------------------------------------------------------- entry point
+def parse_urdf(
+    text: str,
+    *,
+    source: str,
+    sink: DiagnosticSink,
+    resolver: ResourceResolver,
+    base_dir: str,
+) -> Model | None:
+    """Parse URDF text into a :class:`Model`.
+
+    Args:
+        text: the URDF (possibly produced by :mod:`._xacro`, with location annotations).
+        source: file name used in diagnostics.
+        sink: receives every diagnostic.
+        resolver: resolves ``package://`` and friends for meshes.
+        base_dir: folder that relative mesh paths are relative to.
+
+    Returns:
+        The model, or None when an error was reported.
+    """
+    root = parse_xml(text, source=source, sink=sink)
+    if root is None:
+        return None
+    reader = _Reader(source, sink, resolver, base_dir)
+    if local_name(root) != "robot":
+        reader.error(
+            ErrorCode.ROOT_ELEMENT_INVALID, f"root element is <{local_name(root)}>; a URDF must have <robot>", root
+        )
+        return None
+    doc = reader.document(root)
+    if doc is None or sink.has_errors:
+        return None
+    _check_structure(doc, reader)
+    if sink.has_errors:
+        return None
+    movers = {j.child: j.name for j in doc.joints.values() if j.type is not JointType.FIXED}
+    links = tuple(_finish_link(d, movers.get(d.name), reader) for d in doc.links.values())
+    return Model(
+        name=doc.name,
+        links=links,
+        joints=tuple(doc.joints.values()),
+        plugins=tuple(doc.plugins),
+        gazebo=tuple(doc.gazebo),
+        static=doc.model_flags.get("static", False),
+        self_collide=doc.model_flags.get("self_collide", False),
+        source_format="urdf",
+        source_file=source,
+        location=reader.loc(root),
+        transmissions=tuple(doc.transmissions),
+    )

@@ -1,0 +1,304 @@
+"""xacro expansion through the real ``xacro`` package, with file:line kept for every element.
+
+:func:`expand` runs xacro's own ``process_doc`` with four scoped changes, undone afterwards
+(xacro keeps its state in module globals, so expansions are serialised by a lock):
+
+- ``$(find pkg)`` resolves through our :class:`ResourceResolver` (search paths, then the
+  ament index) instead of ``ament_index_python``;
+- xacro's ``parse`` is replaced by a line-aware one: every element remembers the file and
+  line it was read from (minidom user data, copied when macros clone nodes), and every
+  non-xacro element also gets a :data:`._xml.LOCATION_ATTRIBUTE` attribute, which survives
+  macro expansion into the output so the URDF parser can point at the original xacro line;
+- the functions xacro calls per element are wrapped to track which element is being
+  processed, so an error (undefined property, bad expression, missing include) is
+  reported at that element's file and line, even inside an included file or a macro;
+- xacro's warnings go to the diagnostic sink instead of stderr.
+
+Any failure becomes a diagnostic (``XACRO_ERROR``, or ``XML_PARSE_ERROR`` for malformed
+XML); nothing is raised.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import functools
+import os
+import threading
+import xml.dom
+import xml.dom.minidom
+import xml.parsers.expat
+from collections.abc import Callable, Iterator, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+from xml.dom import expatbuilder
+
+import xacro
+import xacro.substitution_args as xacro_subst
+
+from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
+from ._resources import ResourceResolver
+from ._xml import LOCATION_ATTRIBUTE, encode_location
+
+_LOCK = threading.Lock()
+_USER_DATA_KEY = "gazelle.location"
+_TRACKED = ("eval_all", "process_include", "grab_macro", "grab_property", "handle_macro_call")
+"""xacro functions whose first argument is the element being processed."""
+
+
+class _PackageNotFound(Exception):
+    """``$(find pkg)`` named a package the resolver does not know."""
+
+    def __init__(self, package: str):
+        super().__init__(
+            f"package '{package}' not found (searched GAZELLE_RESOURCE_PATH, GZ_SIM_RESOURCE_PATH, "
+            "GAZEBO_MODEL_PATH, ROS_PACKAGE_PATH and the ament index)"
+        )
+
+
+class _IncludedXmlError(Exception):
+    """A file read by xacro (the main text or an include) is not well-formed XML."""
+
+    def __init__(self, file: str | None, line: int | None, message: str):
+        super().__init__(message)
+        self.location_file = file
+        self.line = line
+
+
+class _CopyOnClone:
+    """minidom user-data handler: clones (macro expansion) keep their origin's location."""
+
+    def handle(self, operation: int, key: str, data: object, src: object, dst: Any) -> None:
+        if operation == xml.dom.UserDataHandler.NODE_CLONED and dst is not None:
+            dst.setUserData(key, data, self)
+
+
+_COPY_ON_CLONE = _CopyOnClone()
+
+
+class _LineBuilder(expatbuilder.ExpatBuilderNS):
+    """minidom builder that records each element's file and line."""
+
+    def __init__(self, file: str) -> None:
+        super().__init__()
+        self._file = file
+
+    def start_element_handler(self, name: str, attributes: list[str]) -> None:
+        super().start_element_handler(name, attributes)
+        node = self.curNode
+        line = int(self._parser.CurrentLineNumber)
+        node.setUserData(_USER_DATA_KEY, (self._file, line), _COPY_ON_CLONE)
+        if not node.tagName.startswith("xacro:"):  # xacro checks its own tags' attributes
+            node.setAttribute(LOCATION_ATTRIBUTE, encode_location(self._file, line))
+
+
+def _parse_located(data: str | bytes, file: str) -> xml.dom.minidom.Document:
+    """Parse XML into a located minidom document (raises :class:`_IncludedXmlError`)."""
+    try:
+        return _LineBuilder(file).parseString(data)
+    except xml.parsers.expat.ExpatError as err:
+        raise _IncludedXmlError(file, err.lineno, f"malformed XML: {err}") from None
+
+
+def node_location(node: Any) -> SourceLocation | None:
+    """The file:line an element (or its nearest located ancestor) was read from."""
+    while node is not None:
+        getter = getattr(node, "getUserData", None)
+        data = getter(_USER_DATA_KEY) if getter is not None else None
+        if data is not None:
+            return SourceLocation(data[0], data[1])
+        node = getattr(node, "parentNode", None)
+    return None
+
+
+@dataclass
+class _Tracker:
+    """Which element xacro is processing, to place errors and warnings."""
+
+    sink: DiagnosticSink
+    source: str
+    stack: list[Any] = field(default_factory=list)
+    last: Any = None
+
+    def location(self) -> SourceLocation:
+        """Location of the element being processed (the document when unknown)."""
+        return node_location(self.last) or SourceLocation(self.source)
+
+    def track(self, fn: Callable[..., Any]) -> Callable[..., Any]:
+        """Wrap a xacro function taking an element first: errors get that element's location."""
+
+        @functools.wraps(fn)
+        def wrapper(node: Any, *args: Any, **kwargs: Any) -> Any:
+            self.stack.append(node)
+            self.last = node
+            try:
+                result = fn(node, *args, **kwargs)
+            except Exception as err:  # re-raised; only annotated with the innermost location
+                if getattr(err, "gazelle_location", None) is None:
+                    with contextlib.suppress(AttributeError):
+                        err.gazelle_location = self.location()  # type: ignore[attr-defined]
+                raise
+            self.stack.pop()
+            self.last = self.stack[-1] if self.stack else None
+            return result
+
+        return wrapper
+
+    def touch(self, fn: Callable[..., Any]) -> Callable[..., Any]:
+        """Wrap ``check_attrs``: the element it checks is the one being processed."""
+
+        @functools.wraps(fn)
+        def wrapper(node: Any, *args: Any, **kwargs: Any) -> Any:
+            self.last = node
+            return fn(node, *args, **kwargs)
+
+        return wrapper
+
+    def warning(self, *args: Any, **_: Any) -> None:
+        """Replacement for xacro's stderr warnings."""
+        text = " ".join(str(a) for a in args)
+        self.sink.warning(ErrorCode.XACRO_ERROR, f"xacro: {text}", self.location())
+
+
+def _find_with(resolver: ResourceResolver) -> Callable[[str], str]:
+    def find(package: str) -> str:
+        path = resolver.find_package(package)
+        if path is None:
+            raise _PackageNotFound(package)
+        return str(path)
+
+    return find
+
+
+def _xacro_parse(inp: Any, filename: str | None = None) -> Any:
+    """Drop-in for ``xacro.parse`` producing located documents."""
+    if inp is None:
+        try:
+            with open(os.path.join(xacro.root_dir, filename or ""), "rb") as f:
+                data = f.read()
+        except OSError as err:
+            xacro.filestack.pop()  # as xacro does: the failing file is not "current"
+            raise xacro.XacroException(f"{err.strerror}: {err.filename}", exc=err) from None
+        return _parse_located(data, filename or "<string>")
+    if isinstance(inp, (str, bytes)):
+        return _parse_located(inp, filename or "<string>")
+    if hasattr(inp, "read"):
+        return _parse_located(inp.read(), filename or "<string>")
+    return inp
+
+
+@contextlib.contextmanager
+def _patched(resolver: ResourceResolver, tracker: _Tracker) -> Iterator[None]:
+    """Install our hooks into the xacro modules, restoring everything afterwards."""
+    find = _find_with(resolver)
+    patches: list[tuple[Any, str, Any]] = [
+        (xacro_subst, "_eval_find", find),
+        (xacro, "parse", _xacro_parse),
+        (xacro, "warning", tracker.warning),
+        (xacro, "print_location", lambda *a, **k: None),
+        (xacro, "check_attrs", tracker.touch(xacro.check_attrs)),
+    ]
+    patches += [(xacro, name, tracker.track(getattr(xacro, name))) for name in _TRACKED]
+    saved = [(mod, name, getattr(mod, name)) for mod, name, _ in patches]
+    saved_find = xacro_subst._eval_dict["find"]
+    saved_stacks = (xacro.filestack, xacro.macrostack)
+    try:
+        for mod, name, value in patches:
+            setattr(mod, name, value)
+        xacro_subst._eval_dict["find"] = find
+        yield
+    finally:
+        for mod, name, value in saved:
+            setattr(mod, name, value)
+        xacro_subst._eval_dict["find"] = saved_find
+        xacro.filestack, xacro.macrostack = saved_stacks
+        xacro.substitution_args_context["arg"] = {}
+        xacro.all_includes.clear()
+
+
+def _describe(err: BaseException) -> str:
+    """A one-line message for a xacro failure, without xacro's repeated wrapping."""
+    parts: list[str] = []
+    suffixes: list[str] = []
+    node: BaseException | None = err
+    while node is not None:
+        if isinstance(node, xacro.XacroException):
+            msg = str(node.args[0]) if node.args and node.args[0] else ""
+            if node.suffix:
+                suffixes.append(" ".join(str(node.suffix).split()))
+            if msg and not msg.startswith("<class"):
+                parts.append(msg.strip())
+            if isinstance(node.exc, OSError) and msg:
+                break
+            node = node.exc
+        else:
+            plain = isinstance(node, (NameError, _PackageNotFound, xacro_subst.SubstitutionException))
+            parts.append(str(node) if plain else f"{type(node).__name__}: {node}")
+            break
+    text = " ".join(p for p in parts if p) or type(err).__name__
+    return text + "".join(f" ({s})" for s in suffixes)
+
+
+def _macro_context() -> str:
+    names = [str(m.body.getAttribute("name")) for m in (xacro.macrostack or []) if getattr(m, "body", None)]
+    return f" (in macro {' <- '.join(repr(n) for n in reversed(names))})" if names else ""
+
+
+def _strip_locations(doc: xml.dom.minidom.Document) -> None:
+    for el in doc.getElementsByTagName("*"):
+        if el.hasAttribute(LOCATION_ATTRIBUTE):
+            el.removeAttribute(LOCATION_ATTRIBUTE)
+
+
+def _keeps_locations(doc: xml.dom.minidom.Document) -> bool:
+    """Only URDF output keeps the location attributes (the URDF parser reads them)."""
+    from . import detect_format  # the package's format sniffing; imported late to avoid a cycle
+
+    root = doc.documentElement
+    return root is not None and root.tagName == "robot" and detect_format(root.toxml()) == "urdf"
+
+
+def _run(text: str, source: str, args: Mapping[str, str], tracker: _Tracker) -> xml.dom.minidom.Document:
+    """Parse and process ``text`` with the hooks installed (raises on any failure)."""
+    doc = _parse_located(text, source)
+    xacro.init_stacks(None if source.startswith("<") else source)
+    xacro.process_doc(doc, mappings={str(k): str(v) for k, v in args.items()})
+    return doc
+
+
+def expand(
+    text: str,
+    *,
+    source: str,
+    args: Mapping[str, str] | None = None,
+    sink: DiagnosticSink,
+    resolver: ResourceResolver,
+) -> str | None:
+    """Expand xacro text to plain XML.
+
+    Args:
+        text: the xacro document.
+        source: its file name (relative includes resolve against its folder) or a
+            synthetic name such as ``<string>.xacro`` (then against the working directory).
+        args: values for ``$(arg name)``, overriding ``<xacro:arg>`` defaults.
+        sink: receives ``XACRO_ERROR`` / ``XML_PARSE_ERROR`` diagnostics and xacro's warnings.
+        resolver: resolves ``$(find pkg)``.
+
+    Returns:
+        The expanded XML (URDF output keeps per-element location attributes), or None
+        after reporting an error.
+    """
+    tracker = _Tracker(sink, source)
+    with _LOCK, _patched(resolver, tracker):
+        try:
+            doc = _run(text, source, args or {}, tracker)
+        except _IncludedXmlError as err:
+            where = SourceLocation(err.location_file or source, err.line)
+            sink.error(ErrorCode.XML_PARSE_ERROR, str(err), where)
+            return None
+        except Exception as err:  # xacro evaluates user expressions: any exception type can come out
+            where = getattr(err, "gazelle_location", None) or tracker.location()
+            sink.error(ErrorCode.XACRO_ERROR, f"xacro: {_describe(err)}{_macro_context()}", where)
+            return None
+        if not _keeps_locations(doc):
+            _strip_locations(doc)
+        return doc.documentElement.toxml()
