@@ -89,8 +89,9 @@ def _surface_friction(col: Collision) -> list[float]:
     mu = s.mu if s.mu is not None else 1.0
     if s.mu2 is not None:
         mu = min(mu, s.mu2) if s.mu2 >= 0 else mu
-    torsional = s.torsional if s.torsional is not None else 0.005
-    rolling = s.rolling if s.rolling is not None else 0.0001
+    frictionless = mu == 0.0  # a frictionless caster resists neither sliding nor spinning
+    torsional = s.torsional if s.torsional is not None else (0.0 if frictionless else 0.005)
+    rolling = s.rolling if s.rolling is not None else (0.0 if frictionless else 0.0001)
     return [max(mu, 0.0), max(torsional, 0.0), max(rolling, 0.0)]
 
 
