@@ -28,8 +28,14 @@ def _parse_args(values: list[str]) -> dict[str, str]:
 @app.command()
 def sim(
     world: Optional[Path] = typer.Argument(None, help="World file (.sdf/.world) or a model (.urdf/.xacro/.sdf); default: the embedded empty world."),
-    rtf: Optional[float] = typer.Option(None, "--rtf", help="Real-time factor (default: the world's, 1.0); 0 = as fast as possible."),
-    clock_rate: float = typer.Option(1000.0, "--clock-rate", help="/clock publish rate in sim-time Hz (0 = every step)."),
+    rtf: Optional[float] = typer.Option(
+        None,
+        "--rtf",
+        help="Real-time factor (default: the world's, 1.0); 0 = as fast as possible. While /clock has "
+        "subscribers, the clock keeps its resolution: at most 1000 /clock messages per wall second, "
+        "so at most 10x real time at the default --clock-rate 100.",
+    ),
+    clock_rate: float = typer.Option(100.0, "--clock-rate", help="/clock publish rate in sim-time Hz (0 = every step); default 100."),
     paused: bool = typer.Option(False, "--paused", help="Start paused (unpause with /unpause_physics)."),
     arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
 ) -> None:

@@ -21,6 +21,8 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from ._meshes import MeshReadError as _MeshFileError
+from ._meshes import load_mesh
 from ._model import (
     IDENTITY,
     Box,
@@ -123,16 +125,10 @@ def _read_stl(path: str) -> npt.NDArray[np.float64]:
 
 def _read_with_trimesh(path: str) -> npt.NDArray[np.float64]:
     try:
-        import trimesh  # type: ignore[import-not-found]
-    except ImportError:
-        raise MeshReadError(
-            f"cannot read '{os.path.basename(path)}' for its inertia: only STL is supported without trimesh"
-        ) from None
-    try:
-        mesh = trimesh.load(path, force="mesh")
-        return np.asarray(mesh.triangles, dtype=np.float64)
-    except Exception as err:  # trimesh raises many unrelated types on bad files
-        raise MeshReadError(f"trimesh could not read it: {err}") from err
+        vertices, faces = load_mesh(path)
+    except _MeshFileError as err:
+        raise MeshReadError(str(err)) from err
+    return vertices[faces]
 
 
 def _triangle_props(tris: npt.NDArray[np.float64]) -> UnitProperties:

@@ -43,7 +43,8 @@ from ..description import (
     Pose,
     Sphere,
 )
-from ..description._model import quat_conj, quat_rotate
+from ..description._meshes import MeshReadError, load_mesh
+from ..description._model import quat_rotate
 
 SEP = "::"
 MIN_MASS = 1e-6
@@ -95,16 +96,22 @@ def _surface_friction(col: Collision) -> list[float]:
     return [max(mu, 0.0), max(torsional, 0.0), max(rolling, 0.0)]
 
 
-def _solref_from_surface(col: Collision, mass_hint: float) -> tuple[list[float], list[float]] | None:
-    """Map ODE kp/kd to MuJoCo's direct (negative) solref = [-stiffness, -damping]."""
+def _solref_from_surface(col: Collision, mass_hint: float, timestep: float) -> tuple[list[float], list[float]] | None:
+    """Map ODE's contact stiffness kp (N/m) to a critically damped MuJoCo contact.
+
+    ODE turns kp/kd into ERP/CFM, a heavily damped constraint; a raw spring of
+    stiffness kp on a light link would ring faster than the step and launch it. So
+    kp sets the time constant ``2·sqrt(m/kp)`` of a critically damped contact
+    (never shorter than two steps, MuJoCo's stability limit); kd is ignored.
+    """
     s = col.surface
-    if s.kp is None and s.kd is None:
+    if s.kp is None:
         return None
-    kp = s.kp if s.kp is not None else 1e13
-    kd = s.kd if s.kd is not None else 1.0
-    # MuJoCo direct solref is per unit mass of the contact; divide by a mass hint.
+    if s.kp <= 0:
+        return None
     m = max(mass_hint, MIN_MASS)
-    return [-kp / m, -kd / m], [0.9, 0.95, 0.001, 0.5, 2.0]
+    timeconst = max(2.0 * timestep, 2.0 * math.sqrt(m / s.kp))
+    return [timeconst, 1.0], [0.9, 0.95, 0.001, 0.5, 2.0]
 
 
 def _add_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, col: Collision, name: str, mass_hint: float) -> None:
@@ -152,7 +159,7 @@ def _add_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, col: Collision, name: s
         kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh_name)
     else:  # pragma: no cover - the union is closed
         raise BuildError(f"collision '{col.name}': unsupported geometry {type(g).__name__}")
-    solref = _solref_from_surface(col, mass_hint)
+    solref = _solref_from_surface(col, mass_hint, spec.option.timestep)
     if solref is not None:
         kwargs["solref"], kwargs["solimp"] = solref
     if col.surface.min_depth is not None:
@@ -161,26 +168,15 @@ def _add_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, col: Collision, name: s
     body.add_geom(**kwargs)
 
 
-_MESH_CACHE: dict[str, tuple[np.ndarray, np.ndarray]] = {}
-
-
 def _load_mesh(path: str) -> tuple[np.ndarray, np.ndarray]:
-    """Vertices and faces of a mesh file (cached); collisions use MuJoCo's convex hull of it."""
-    if path not in _MESH_CACHE:
-        try:
-            import trimesh
-        except ImportError as err:  # pragma: no cover - trimesh is a dependency
-            raise BuildError(f"mesh '{path}' needs trimesh: {err}") from err
-        try:
-            loaded = trimesh.load(path, force="mesh", process=False)
-        except Exception as err:  # noqa: BLE001 - trimesh raises many types
-            raise BuildError(f"cannot load mesh '{path}': {err}") from err
-        verts = np.asarray(loaded.vertices, dtype=float)
-        faces = np.asarray(loaded.faces, dtype=np.int32)
-        if len(verts) < 4:
-            raise BuildError(f"mesh '{path}' has fewer than 4 vertices")
-        _MESH_CACHE[path] = (verts, faces)
-    return _MESH_CACHE[path]
+    """Vertices (metres) and faces of a mesh file; MuJoCo collides with their convex hull."""
+    try:
+        verts, faces = load_mesh(path)
+    except MeshReadError as err:
+        raise BuildError(str(err)) from err
+    if len(verts) < 4:
+        raise BuildError(f"mesh '{path}' has fewer than 4 vertices")
+    return verts, faces
 
 
 def _set_inertial(body: mujoco.MjsBody, link: Link) -> None:
@@ -191,7 +187,12 @@ def _set_inertial(body: mujoco.MjsBody, link: Link) -> None:
     body.mass = max(inertial.mass, MIN_MASS)
     body.ipos = list(inertial.pose.position)
     body.iquat = list(inertial.pose.orientation)
-    body.fullinertia = [inertial.ixx, inertial.iyy, inertial.izz, inertial.ixy, inertial.ixz, inertial.iyz]
+    # an isotropic 1e-6 of the trace absorbs the rounding the loader tolerates (A + B >= C within rtol 1e-6,
+    # e.g. TurtleBot3's thin-disk wheels, A + B == C), which MuJoCo's exact check would reject
+    eps = 1e-6 * (inertial.ixx + inertial.iyy + inertial.izz)
+    body.fullinertia = [
+        inertial.ixx + eps, inertial.iyy + eps, inertial.izz + eps, inertial.ixy, inertial.ixz, inertial.iyz
+    ]
 
 
 def _joint_frame_in_child(joint: Joint) -> Pose:
@@ -293,7 +294,10 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> Bui
         children.setdefault(j.parent, []).append(j)
         child_joint[j.child] = j
     links = {lk.name: lk for lk in model.links}
-    roots = [lk.name for lk in model.links if lk.name not in child_joint]
+    # a link named "world" with joints from it is the world frame itself (r6bot, dual-arm Panda): not a body
+    roots = [
+        lk.name for lk in model.links if lk.name not in child_joint and not (lk.name == "world" and "world" in children)
+    ]
     world_joints = children.get("world", [])
 
     built = BuiltEntity(name=entity, root_body="", free_joint=None)

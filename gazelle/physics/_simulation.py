@@ -240,8 +240,9 @@ class Simulation:
             entity = self.world.add_entity(
                 model, name=name, X_WM=pose * model.pose, namespace=namespace, spawned=spawned, configure=configure
             )
-        except WorldError:
-            self.bus.remove_owner(name)
+        except WorldError as err:
+            if err.kind == ErrorKind.BUILD_FAILED:  # only then did this attempt configure systems
+                self.bus.remove_owner(name)
             raise
         entity.systems.extend(pending)
         for s in pending:
@@ -295,3 +296,72 @@ class Simulation:
             self.systems.reset(self._info(self.paused), self.world)
 
         self.call(do)
+
+    # ------------------------------------------------------------------ batch spawning (simulation_interfaces)
+    def spawn_many(
+        self, requests: list[tuple[Model, str, Pose, str, bool]], timeout: float | None = 60.0
+    ) -> list[Entity | WorldError]:
+        """Add several models in one sim-thread call with one recompile (thread-safe).
+
+        Each request is ``(model, name, pose, namespace, allow_renaming)``; an empty
+        name means the model's own. With ``allow_renaming`` a taken name becomes
+        ``name_1``, ``name_2``, ... Returns, per request, the new entity or the
+        :class:`WorldError` that refused it.
+        """
+        return self.call(lambda: self._spawn_many(requests), timeout=timeout)
+
+    def _spawn_many(self, requests: list[tuple[Model, str, Pose, str, bool]]) -> list[Entity | WorldError]:
+        taken = set(self.world.entities)
+        names: list[str] = []
+        for model, name, _pose, _ns, rename in requests:
+            name = name or model.name
+            if rename and name in taken:
+                i = 1
+                while f"{name}_{i}" in taken:
+                    i += 1
+                name = f"{name}_{i}"
+            taken.add(name)
+            names.append(name)
+        pending: dict[str, list] = {}
+
+        def make_configure(name: str) -> Callable[[Entity], None]:
+            def configure(entity: Entity) -> None:
+                systems = pending.setdefault(name, [])
+                for plugin in entity.model.plugins:
+                    system = create_system(plugin)
+                    if system is None:
+                        continue
+                    logger = logging.getLogger(plugin.name or plugin.filename)
+                    system.configure(SystemContext(self.world, entity, plugin, self.bus, logger))
+                    systems.append(system)
+
+            return configure
+
+        items = [
+            (model, name, pose * model.pose, ns, True, make_configure(name))
+            for (model, _n, pose, ns, _r), name in zip(requests, names)
+        ]
+        try:
+            out = self.world.add_entities(items)
+        except WorldError:
+            # the combined build failed: undo every configure, then add one at a time
+            for name in pending:
+                self.bus.remove_owner(name)
+            out = []
+            for (model, _n, pose, ns, _r), name in zip(requests, names):
+                if name in self.world.entities:  # never touch an existing entity's endpoints
+                    out.append(WorldError(ErrorKind.NAME_NOT_UNIQUE, f"entity '{name}' already exists"))
+                    continue
+                try:
+                    out.append(self._add_entity(model, name=name, pose=pose, namespace=ns, spawned=True))
+                except WorldError as err:
+                    out.append(err)
+            return out
+        for res, name in zip(out, names):
+            if isinstance(res, Entity):
+                res.systems.extend(pending.get(name, []))
+                for s in pending.get(name, []):
+                    self.systems.add(name, s)
+            elif name in pending:  # configured, then its build failed
+                self.bus.remove_owner(name)
+        return out

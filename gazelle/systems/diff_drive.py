@@ -120,6 +120,12 @@ def parse_config(ctx: SystemContext, log: logging.Logger) -> DiffDriveConfig:
     )
 
 
+WHEEL_ARMATURE = 1e-3
+"""Reflected rotor inertia of a wheel's gear motor, kg·m² (a small DC motor through a ~30:1 gearbox).
+
+It lets the speed servo be stiffer (kv grows with the wheel's inertia, see :func:`servo_gain`),
+so the wheels follow cmd_vel changes within a few milliseconds as Gazebo's joint motors do."""
+
 INTEGRAL_TIME_SEC = 0.05
 """Integral time of the wheel speed loop."""
 
@@ -221,7 +227,9 @@ class DiffDrive(System):
         # joint order as the classic plugin: [right0, left0, right1, left1, ...]
         for i in range(c.num_wheel_pairs):
             for side, jn in ((1, c.right_joints[i]), (-1, c.left_joints[i])):
-                kv = servo_gain(wheel_inertia_about_axis(model, jn, ctx.world.armature), ctx.world.timestep)
+                ctx.world.make_wheel_contacts_pointlike(ctx.entity, model.joint(jn).child)
+                ctx.world.set_joint_armature(ctx.entity, jn, WHEEL_ARMATURE)
+                kv = servo_gain(wheel_inertia_about_axis(model, jn, WHEEL_ARMATURE), ctx.world.timestep)
                 act = ctx.world.add_velocity_actuator(ctx.entity, jn, kv=kv, force_limit=c.max_wheel_torque)
                 limit = c.max_wheel_torque / kv if c.max_wheel_torque > 0 else math.inf
                 self._wheels.append(_Wheel(jn, act, c.wheel_diameter[i] / 2.0, side, c.wheel_separation[i], limit))

@@ -4,13 +4,19 @@
 A 10 Hz timer drives forward 5 s at 0.2 m/s, turns 3.14 s at 0.5 rad/s, and repeats,
 timing itself with the node's own clock (so ``use_sim_time:=true`` makes it follow /clock).
 
-Extra over the seed: the ``max_sides`` parameter (default 0 = run forever, as the seed)
-stops the node after that many forward+turn sides, which the demo uses for one square.
+Changes from the seed, each for a measured reason:
+- the ``max_sides`` parameter (default 0 = run forever, as the seed) stops the node after
+  that many forward+turn sides; the demo uses it for one square;
+- the clock starts at the first tick once /cmd_vel has a subscriber (with use_sim_time the
+  clock reads 0 until the first /clock message, and early commands are lost to discovery);
+- a switching tick publishes the new state's command (the seed drove every side 0.1 s long).
 """
 
 import rclpy
 from geometry_msgs.msg import Twist
 from rclpy.node import Node
+
+TICK_TOLERANCE = 0.01  # seconds: timer ticks jitter by a few milliseconds
 
 
 class SquareMovement(Node):
@@ -21,36 +27,43 @@ class SquareMovement(Node):
         self.max_sides = self.declare_parameter('max_sides', 0).value
         self.sides_done = 0
         self.state = 'forward'
-        self.state_start_time = self.get_clock().now()
+        # Started at the first tick, not here: with use_sim_time the clock reads 0 until
+        # the first /clock message, and the seed's first side would then end at once.
+        self.state_start_time = None
         self.get_logger().info('Square movement started')
 
     def timer_callback(self):
+        if self.state_start_time is None and self.publisher.get_subscription_count() == 0:
+            # Commands published before DDS discovery matches them with the simulator are
+            # lost, and the first side would come out short: wait for the subscriber.
+            self.get_logger().info('Waiting for a /cmd_vel subscriber', throttle_duration_sec=2.0)
+            return
         current_time = self.get_clock().now()
+        if current_time.nanoseconds == 0:
+            return  # use_sim_time and no /clock message yet
+        if self.state_start_time is None:
+            self.state_start_time = current_time
+            self.get_logger().info(f'Starting at t={current_time.nanoseconds / 1e9:.3f}')
         elapsed_time = (current_time - self.state_start_time).nanoseconds / 1e9
 
-        msg = Twist()
+        # Switch first, then publish the new state's command. The seed published the old
+        # state's command on the switching tick, which drove every side a tick (0.1 s) too
+        # long; and a tick that runs a millisecond early (elapsed 4.999 s) would add another.
+        if self.state == 'forward' and elapsed_time >= 5.0 - TICK_TOLERANCE:  # after 5 seconds
+            self.state = 'turn'
+            self.state_start_time = current_time
+            self.get_logger().info(f'Turning (forward for {elapsed_time:.3f} s from t={self.state_start_time.nanoseconds / 1e9:.3f})')
+        elif self.state == 'turn' and elapsed_time >= 3.14 - TICK_TOLERANCE:  # after ~90 degrees
+            self.sides_done += 1
+            self.state = 'done' if self.max_sides and self.sides_done >= self.max_sides else 'forward'
+            self.state_start_time = current_time
+            self.get_logger().info(f'Side {self.sides_done} done')
 
+        msg = Twist()
         if self.state == 'forward':
             msg.linear.x = 0.2  # Move forward at 0.2 m/s
-            msg.angular.z = 0.0
-            if elapsed_time >= 5.0:  # After 5 seconds
-                self.state = 'turn'
-                self.state_start_time = current_time
-                self.get_logger().info('Turning')
         elif self.state == 'turn':
-            msg.linear.x = 0.0
             msg.angular.z = 0.5  # Turn at 0.5 rad/s
-            if elapsed_time >= 3.14:  # After ~90 degrees
-                self.state = 'forward'
-                self.state_start_time = current_time
-                self.sides_done += 1
-                self.get_logger().info(f'Side {self.sides_done} done, moving forward')
-        elif self.state == 'done':
-            msg = Twist()
-
-        if self.max_sides and self.sides_done >= self.max_sides:
-            self.state = 'done'
-            msg = Twist()
         self.publisher.publish(msg)
 
 

@@ -1,0 +1,5 @@
+"""``python -m gazelle.cli`` = the ``gazelle`` command."""
+
+from . import main
+
+main()

@@ -1,0 +1,52 @@
+"""Reading mesh files (STL, DAE, OBJ, ...) through trimesh, in metres.
+
+COLLADA files declare their unit (``<unit meter="0.001"/>``); Gazebo honours it,
+so we convert every mesh to metres before anything uses its vertices.
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+
+import numpy as np
+import numpy.typing as npt
+
+
+class MeshReadError(Exception):
+    """A mesh file could not be read."""
+
+
+@functools.lru_cache(maxsize=256)
+def _load(path: str, mtime_ns: int) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int32]]:
+    del mtime_ns  # cache key only
+    try:
+        import trimesh  # type: ignore[import-not-found]
+    except ImportError as err:  # pragma: no cover - trimesh is a dependency
+        raise MeshReadError(f"cannot read '{os.path.basename(path)}': trimesh is not installed") from err
+    try:
+        mesh = trimesh.load(path, force="mesh", process=False)
+        if getattr(mesh, "units", None) not in (None, "m", "meter", "meters"):
+            mesh.convert_units("meters")
+    except Exception as err:  # noqa: BLE001 - trimesh raises many unrelated types on bad files
+        raise MeshReadError(f"cannot read '{os.path.basename(path)}': {err}") from err
+    vertices = np.asarray(mesh.vertices, dtype=np.float64)
+    faces = np.asarray(mesh.faces, dtype=np.int32)
+    if len(vertices) == 0 or len(faces) == 0:
+        raise MeshReadError(f"'{os.path.basename(path)}' has no triangles")
+    vertices.setflags(write=False)
+    faces.setflags(write=False)
+    return vertices, faces
+
+
+def load_mesh(path: str) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int32]]:
+    """Vertices (metres) and triangle indices of a mesh file; cached until the file changes.
+
+    Raises:
+        MeshReadError: missing, unreadable or empty.
+    """
+    try:
+        mtime = os.stat(path).st_mtime_ns
+    except OSError as err:
+        raise MeshReadError(f"cannot read '{path}': {err.strerror}") from err
+    return _load(path, mtime)

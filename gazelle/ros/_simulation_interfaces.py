@@ -1,0 +1,673 @@
+"""The ``simulation_interfaces`` (Jazzy 1.5.1) services and action, under the node's namespace.
+
+Everything is advertised as ``~/<name>`` on the node named ``gazelle``, i.e.
+``/gazelle/spawn_entity``, ``/gazelle/get_entities``, ... and the action
+``/gazelle/simulate_steps``. Callbacks run in a :class:`ReentrantCallbackGroup`
+on the bridge's multi-threaded executor and hand every piece of world work to
+the simulation thread with ``node.sim.call``.
+
+Decisions (also what :func:`features` advertises, nothing more):
+
+* Simulation state: ``STATE_STOPPED`` is reported while paused with no step
+  taken since the last time reset (``sim.iterations == 0``), like ros_gz.
+  Setting STOPPED = pause + reset everything (time, state, spawned entities).
+  Setting PAUSED from STOPPED succeeds (it stays reported as STOPPED until a
+  step is taken). ``STATE_QUITTING`` (and NO_WORLD / LOADING_WORLD) are refused
+  with ``INCORRECT_TRANSITION``: the server is stopped with Ctrl-C / SIGTERM,
+  never by a service request.
+* StepSimulation and SimulateSteps require the simulation to be paused
+  (``RESULT_INCORRECT_STATE`` otherwise) and step in chunks, each chunk one
+  ``sim.call``, so other requests are served between chunks.
+* Entity categories: ``CATEGORY_STATIC_OBJECT`` for static models (no free
+  root), ``CATEGORY_ROBOT`` for dynamic models that have plugins or a movable
+  (non-fixed) joint, ``CATEGORY_DYNAMIC_OBJECT`` for the other dynamic models.
+  Tags and bounds filters are not supported (``RESULT_FEATURE_UNSUPPORTED``).
+* Name filters are Python ``re.search`` patterns (POSIX-extended syntax is a
+  subset for the usual cases); a bad pattern is ``RESULT_OPERATION_FAILED``.
+* States (get and set) are in the world frame: ``header.frame_id = "world"``,
+  ``header.stamp`` = sim time. SetEntityState also accepts an entity or
+  ``entity::link`` frame in ``state.header.frame_id``. Accelerations are ignored.
+* Spawning by ``uri``: ``model://`` and ``package://`` resolve through
+  :class:`gazelle.description.ResourceResolver` (a URI that does not resolve,
+  or escapes its package folder, is ``NO_RESOURCE``); ``file://`` and plain
+  paths must name an existing file. A folder (``model://box``) means its
+  ``model.sdf``. URDF, xacro and SDF are accepted (by suffix, or detected).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from rclpy.action import ActionServer, CancelResponse, GoalResponse
+from rclpy.callback_groups import ReentrantCallbackGroup
+from simulation_interfaces.action import SimulateSteps
+from simulation_interfaces.msg import EntityCategory, EntityState, Result, SimulationState, SimulatorFeatures, SpawnResult
+from simulation_interfaces.srv import (
+    DeleteEntity,
+    GetEntities,
+    GetEntitiesStates,
+    GetEntityInfo,
+    GetEntityState,
+    GetSimulationState,
+    GetSimulatorFeatures,
+    ResetSimulation,
+    SetEntityState,
+    SetSimulationState,
+    SpawnEntities,
+    SpawnEntity,
+    StepSimulation,
+)
+
+from ..description import ErrorCode, Model, ModelLoadError, Pose, ResourceResolver, World, format_for_path, load_string
+from ..description._model import JointType, quat_rotate
+from ..physics import WorldError
+from ..physics._world import Entity, ErrorKind
+from ._convert import from_pose_msg, to_pose_msg, to_time
+
+if TYPE_CHECKING:
+    from ._bridge import SimulationNode
+
+STEP_CHUNK = 200
+"""Physics steps per sim-thread call while stepping on request."""
+FEEDBACK_PERIOD_SEC = 0.1
+MAX_STEPS = 2**32 - 1
+
+FEATURES = (
+    SimulatorFeatures.SPAWNING,
+    SimulatorFeatures.DELETING,
+    SimulatorFeatures.ENTITY_CATEGORIES,
+    SimulatorFeatures.SPAWNING_RESOURCE_STRING,
+    SimulatorFeatures.ENTITY_STATE_GETTING,
+    SimulatorFeatures.ENTITY_STATE_SETTING,
+    SimulatorFeatures.ENTITY_INFO_GETTING,
+    SimulatorFeatures.SIMULATION_RESET,
+    SimulatorFeatures.SIMULATION_RESET_TIME,
+    SimulatorFeatures.SIMULATION_RESET_STATE,
+    SimulatorFeatures.SIMULATION_RESET_SPAWNED,
+    SimulatorFeatures.SIMULATION_STATE_GETTING,
+    SimulatorFeatures.SIMULATION_STATE_SETTING,
+    SimulatorFeatures.SIMULATION_STATE_PAUSE,
+    SimulatorFeatures.STEP_SIMULATION_SINGLE,
+    SimulatorFeatures.STEP_SIMULATION_MULTIPLE,
+    SimulatorFeatures.STEP_SIMULATION_ACTION,
+    SimulatorFeatures.SPAWNING_ENTITIES,
+)
+
+_WORLD_FRAMES = ("", "world", "map", "/map")
+_NAMESPACE_RE = re.compile(r"^/?([A-Za-z_][A-Za-z0-9_]*)(/[A-Za-z_][A-Za-z0-9_]*)*/?$")
+
+_WORLD_KIND_TO_SPAWN = {
+    ErrorKind.NAME_NOT_UNIQUE: SpawnResult.NAME_NOT_UNIQUE,
+    ErrorKind.NAME_INVALID: SpawnResult.NAME_INVALID,
+    ErrorKind.INVALID_POSE: SpawnResult.INVALID_POSE,
+}
+
+
+def _result(code: int, message: str = "") -> Result:
+    return Result(result=code, error_message=message)
+
+
+OK = Result.RESULT_OK
+
+
+class _Refused(Exception):
+    """A request failed with a result code."""
+
+    def __init__(self, code: int, message: str):
+        super().__init__(message)
+        self.code = code
+
+
+@dataclass
+class _Prepared:
+    model: Model
+    name: str
+    pose: Pose
+    namespace: str
+    allow_renaming: bool
+
+
+def category_of(entity: Entity) -> int:
+    """The EntityCategory of an entity (see the module docstring)."""
+    if entity.static or entity.built.free_joint is None:
+        return EntityCategory.CATEGORY_STATIC_OBJECT
+    m = entity.model
+    if m.plugins or any(j.type is not JointType.FIXED for j in m.joints):
+        return EntityCategory.CATEGORY_ROBOT
+    return EntityCategory.CATEGORY_DYNAMIC_OBJECT
+
+
+_CATEGORY_NAMES = {
+    EntityCategory.CATEGORY_STATIC_OBJECT: "static object",
+    EntityCategory.CATEGORY_ROBOT: "robot",
+    EntityCategory.CATEGORY_DYNAMIC_OBJECT: "dynamic object",
+}
+
+
+def _finite(*values: float) -> bool:
+    return all(math.isfinite(v) for v in values)
+
+
+class SimulationInterfaces:
+    """The services and action, bound to one :class:`SimulationNode`."""
+
+    def __init__(self, node: SimulationNode, resolver: ResourceResolver | None = None):
+        self.node = node
+        self.sim = node.sim
+        self.resolver = resolver or ResourceResolver()
+        self.cb = ReentrantCallbackGroup()
+        self.services = []
+        for srv_type, name, fn in (
+            (GetSimulatorFeatures, "get_simulator_features", self.get_simulator_features),
+            (GetSimulationState, "get_simulation_state", self.get_simulation_state),
+            (SetSimulationState, "set_simulation_state", self.set_simulation_state),
+            (ResetSimulation, "reset_simulation", self.reset_simulation),
+            (StepSimulation, "step_simulation", self.step_simulation),
+            (SpawnEntity, "spawn_entity", self.spawn_entity),
+            (SpawnEntities, "spawn_entities", self.spawn_entities),
+            (DeleteEntity, "delete_entity", self.delete_entity),
+            (GetEntities, "get_entities", self.get_entities),
+            (GetEntityState, "get_entity_state", self.get_entity_state),
+            (GetEntitiesStates, "get_entities_states", self.get_entities_states),
+            (SetEntityState, "set_entity_state", self.set_entity_state),
+            (GetEntityInfo, "get_entity_info", self.get_entity_info),
+        ):
+            self.services.append(node.create_service(srv_type, f"~/{name}", fn, callback_group=self.cb))
+        self.action = ActionServer(
+            node,
+            SimulateSteps,
+            "~/simulate_steps",
+            execute_callback=self._simulate_steps,
+            goal_callback=lambda goal: GoalResponse.ACCEPT,
+            cancel_callback=lambda handle: CancelResponse.ACCEPT,
+            callback_group=self.cb,
+        )
+
+    def destroy(self) -> None:
+        self.action.destroy()
+        for s in self.services:
+            self.node.destroy_service(s)
+
+    # ------------------------------------------------------------------ features and state
+    def get_simulator_features(self, req: Any, res: GetSimulatorFeatures.Response) -> Any:
+        res.features.features = [int(f) for f in FEATURES]
+        res.features.spawn_formats = ["urdf", "sdf"]
+        res.features.custom_info = (
+            "gazelle (MuJoCo): xacro is also accepted for spawning (.xacro / xacro markup); "
+            "uri: model://, package://, file:// or a path; name filters are Python regular expressions; "
+            "states are in the world frame"
+        )
+        return res
+
+    def _state(self) -> int:
+        if self.sim.paused:
+            return SimulationState.STATE_STOPPED if self.sim.iterations == 0 else SimulationState.STATE_PAUSED
+        return SimulationState.STATE_PLAYING
+
+    def get_simulation_state(self, req: Any, res: GetSimulationState.Response) -> Any:
+        res.state.state = self.sim.call(self._state)
+        res.result = _result(OK)
+        return res
+
+    def set_simulation_state(self, req: SetSimulationState.Request, res: SetSimulationState.Response) -> Any:
+        target = req.state.state
+        S = SimulationState
+        names = {S.STATE_STOPPED: "STOPPED", S.STATE_PLAYING: "PLAYING", S.STATE_PAUSED: "PAUSED"}
+        if target in (S.STATE_QUITTING, S.STATE_NO_WORLD, S.STATE_LOADING_WORLD):
+            res.result = _result(
+                SetSimulationState.Response.INCORRECT_TRANSITION,
+                f"transition to state {target} is not supported: gazelle always has its world loaded, "
+                "and the server quits on Ctrl-C / SIGTERM only",
+            )
+            return res
+        if target not in names:
+            res.result = _result(Result.RESULT_OPERATION_FAILED, f"unknown simulation state {target}")
+            return res
+
+        def do() -> int:
+            current = self._state()
+            if current == target:
+                return current
+            if target == S.STATE_PLAYING:
+                self.sim.paused = False
+            elif target == S.STATE_PAUSED:
+                self.sim.paused = True
+            else:
+                self.sim.paused = True
+                self.sim.reset(time_=True, state=True, spawned=True)  # runs inline: we are on the sim thread
+            return -1
+
+        try:
+            before = self.sim.call(do)
+        except (WorldError, TimeoutError) as err:
+            res.result = _result(SetSimulationState.Response.STATE_TRANSITION_ERROR, str(err))
+            return res
+        if before == target:
+            res.result = _result(
+                SetSimulationState.Response.ALREADY_IN_TARGET_STATE, f"the simulation is already {names[target]}"
+            )
+        else:
+            res.result = _result(OK)
+        return res
+
+    def reset_simulation(self, req: ResetSimulation.Request, res: ResetSimulation.Response) -> Any:
+        R = ResetSimulation.Request
+        scope = req.scope
+        if scope in (R.SCOPE_DEFAULT, R.SCOPE_ALL):
+            scope = R.SCOPE_TIME | R.SCOPE_STATE | R.SCOPE_SPAWNED
+        elif scope & ~(R.SCOPE_TIME | R.SCOPE_STATE | R.SCOPE_SPAWNED):
+            res.result = _result(
+                Result.RESULT_FEATURE_UNSUPPORTED,
+                f"unknown scope bits in {scope}: use SCOPE_TIME=1, SCOPE_STATE=2, SCOPE_SPAWNED=4 or SCOPE_ALL",
+            )
+            return res
+        try:
+            self.sim.reset(
+                time_=bool(scope & R.SCOPE_TIME), state=bool(scope & R.SCOPE_STATE), spawned=bool(scope & R.SCOPE_SPAWNED)
+            )
+        except (WorldError, TimeoutError) as err:
+            res.result = _result(Result.RESULT_OPERATION_FAILED, f"reset failed: {err}")
+            return res
+        res.result = _result(OK)
+        return res
+
+    # ------------------------------------------------------------------ stepping
+    def _check_steps(self, steps: int) -> None:
+        if steps < 1 or steps > MAX_STEPS:
+            raise _Refused(Result.RESULT_OPERATION_FAILED, f"steps must be between 1 and {MAX_STEPS}, got {steps}")
+        if not self.sim.call(lambda: self.sim.paused):
+            raise _Refused(
+                Result.RESULT_INCORRECT_STATE,
+                "the simulation must be paused to step it (SetSimulationState STATE_PAUSED first)",
+            )
+
+    def _step_chunk(self, n: int) -> int:
+        """Take up to ``n`` steps on the sim thread; returns how many were taken (0 if it was unpaused)."""
+
+        def do() -> int:
+            if not self.sim.paused:
+                return 0
+            self.sim.step(n)
+            return n
+
+        return self.sim.call(do)
+
+    def step_simulation(self, req: StepSimulation.Request, res: StepSimulation.Response) -> Any:
+        try:
+            self._check_steps(req.steps)
+            done = 0
+            while done < req.steps:
+                taken = self._step_chunk(min(STEP_CHUNK, req.steps - done))
+                if taken == 0:
+                    raise _Refused(
+                        Result.RESULT_INCORRECT_STATE, f"the simulation was unpaused after {done} of {req.steps} steps"
+                    )
+                done += taken
+        except _Refused as err:
+            res.result = _result(err.code, str(err))
+            return res
+        except (WorldError, TimeoutError) as err:
+            res.result = _result(Result.RESULT_OPERATION_FAILED, f"stepping failed: {err}")
+            return res
+        res.result = _result(OK)
+        return res
+
+    def _simulate_steps(self, goal_handle: Any) -> Any:
+        steps = goal_handle.request.steps
+        result = SimulateSteps.Result()
+        try:
+            self._check_steps(steps)
+        except _Refused as err:
+            result.result = _result(err.code, str(err))
+            goal_handle.abort()
+            return result
+        done = 0
+        last_feedback = 0.0
+        try:
+            while done < steps:
+                if goal_handle.is_cancel_requested:
+                    goal_handle.canceled()
+                    result.result = _result(OK, f"cancelled after {done} of {steps} steps")
+                    return result
+                taken = self._step_chunk(min(STEP_CHUNK, steps - done))
+                if taken == 0:
+                    goal_handle.abort()
+                    result.result = _result(
+                        Result.RESULT_INCORRECT_STATE, f"the simulation was unpaused after {done} of {steps} steps"
+                    )
+                    return result
+                done += taken
+                now = time.monotonic()
+                if now - last_feedback >= FEEDBACK_PERIOD_SEC or done == steps:
+                    last_feedback = now
+                    goal_handle.publish_feedback(SimulateSteps.Feedback(completed_steps=done, remaining_steps=steps - done))
+        except (WorldError, TimeoutError) as err:
+            goal_handle.abort()
+            result.result = _result(Result.RESULT_OPERATION_FAILED, f"stepping failed after {done} steps: {err}")
+            return result
+        goal_handle.succeed()
+        result.result = _result(OK)
+        return result
+
+    # ------------------------------------------------------------------ spawning
+    def _read_uri(self, uri: str) -> tuple[str, str, str]:
+        """(text, format, source path) of a URI; raises NO_RESOURCE / UNSUPPORTED_FORMAT."""
+        path = self.resolver.resolve_uri(uri)
+        if path is None:
+            where = ", ".join(str(p) for p in self.resolver.search_paths()) or "none; set GAZELLE_RESOURCE_PATH"
+            raise _Refused(
+                SpawnEntity.Response.NO_RESOURCE,
+                f"uri '{uri}' cannot be resolved (unknown model/package, outside its package, or unsupported scheme); "
+                f"resource paths: {where}",
+            )
+        if path.is_dir():
+            cands = [path / "model.sdf", *sorted(path.glob("*.sdf")), *sorted(path.glob("*.urdf")), *sorted(path.glob("*.xacro"))]
+            found = next((c for c in cands if c.is_file()), None)
+            if found is None:
+                raise _Refused(SpawnEntity.Response.NO_RESOURCE, f"uri '{uri}' is a folder ({path}) with no model.sdf")
+            path = found
+        if not path.is_file():
+            raise _Refused(SpawnEntity.Response.NO_RESOURCE, f"uri '{uri}': no such file {path}")
+        fmt = format_for_path(path)
+        if fmt is None or fmt == "srdf":
+            raise _Refused(
+                SpawnEntity.Response.UNSUPPORTED_FORMAT,
+                f"uri '{uri}': unsupported format '{Path(path).suffix}' (use .urdf, .xacro or .sdf)",
+            )
+        try:
+            text = path.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as err:
+            raise _Refused(SpawnEntity.Response.NO_RESOURCE, f"uri '{uri}': cannot read {path}: {err}") from None
+        return text, fmt, str(path)
+
+    def _prepare(
+        self, *, name: str, allow_renaming: bool, uri: str, resource_string: str, namespace: str, initial_pose: Any
+    ) -> _Prepared:
+        """Parse and place one spawn request (off the sim thread, except the frame lookup)."""
+        R = SpawnEntity.Response
+        p = initial_pose.pose
+        if not _finite(
+            p.position.x, p.position.y, p.position.z, p.orientation.x, p.orientation.y, p.orientation.z, p.orientation.w
+        ):
+            raise _Refused(R.INVALID_POSE, "initial_pose is not finite (NaN or inf)")
+        if namespace and not _NAMESPACE_RE.match(namespace):
+            raise _Refused(R.NAMESPACE_INVALID, f"entity_namespace {namespace!r} is not a valid ROS namespace")
+        if uri:
+            text, fmt, source = self._read_uri(uri)
+        elif resource_string:
+            text, fmt, source = resource_string, "auto", f"<resource_string:{name or 'entity'}>"
+        else:
+            raise _Refused(R.NO_RESOURCE, "either uri or resource_string must be set")
+        try:
+            loaded = load_string(text, format=fmt, source=source, resolver=self.resolver)
+        except ModelLoadError as err:
+            first = err.first
+            if first is not None and first.code is ErrorCode.UNKNOWN_FORMAT:
+                raise _Refused(R.UNSUPPORTED_FORMAT, str(err)) from None
+            raise _Refused(R.RESOURCE_PARSE_ERROR, str(err)) from None
+        value = loaded.value
+        if isinstance(value, Model):
+            model = value
+        elif isinstance(value, World) and value.models:
+            model = value.models[0]
+        else:
+            raise _Refused(R.RESOURCE_PARSE_ERROR, f"{source}: no <model> or <robot> to spawn")
+        for d in loaded.diagnostics:
+            self.node.get_logger().warning(d.format())
+        frame = initial_pose.header.frame_id
+        X_WF = Pose()
+        if frame not in _WORLD_FRAMES:
+            X_WF = self._frame_pose(frame, "initial_pose.header.frame_id")
+        return _Prepared(model, name, X_WF * from_pose_msg(p), namespace.strip("/"), allow_renaming)
+
+    def _frame_pose(self, frame: str, field_name: str) -> Pose:
+        entity, _, link = frame.partition("::")
+        try:
+            return self.sim.call(lambda: self.sim.world.entity_state(entity, link or None).pose)
+        except WorldError:
+            raise _Refused(
+                Result.RESULT_OPERATION_FAILED, f"{field_name} '{frame}' not found: no such entity or entity::link"
+            ) from None
+
+    def _commit(self, prepared: list[_Prepared]) -> list[Entity | WorldError]:
+        return self.sim.spawn_many([(p.model, p.name, p.pose, p.namespace, p.allow_renaming) for p in prepared])
+
+    @staticmethod
+    def _world_error_result(err: WorldError) -> Result:
+        code = _WORLD_KIND_TO_SPAWN.get(err.kind, Result.RESULT_OPERATION_FAILED)
+        return _result(code, str(err))
+
+    def spawn_entity(self, req: SpawnEntity.Request, res: SpawnEntity.Response) -> Any:
+        t0 = time.monotonic()
+        try:
+            prepared = self._prepare(
+                name=req.name,
+                allow_renaming=req.allow_renaming,
+                uri=req.uri,
+                resource_string=req.resource_string,
+                namespace=req.entity_namespace,
+                initial_pose=req.initial_pose,
+            )
+            (out,) = self._commit([prepared])
+        except _Refused as err:
+            res.result = _result(err.code, str(err))
+            return res
+        except TimeoutError as err:
+            res.result = _result(Result.RESULT_OPERATION_FAILED, f"the simulation did not answer: {err}")
+            return res
+        if isinstance(out, WorldError):
+            res.result = self._world_error_result(out)
+            return res
+        res.entity_name = out.name
+        res.result = _result(OK)
+        self.node.get_logger().info(f"SpawnEntity: spawned [{out.name}] in {1000 * (time.monotonic() - t0):.1f} ms")
+        return res
+
+    def spawn_entities(self, req: SpawnEntities.Request, res: SpawnEntities.Response) -> Any:
+        results: list[SpawnResult | None] = []
+        todo: list[tuple[int, _Prepared]] = []
+        for i, r in enumerate(req.spawn_requests):
+            try:
+                todo.append(
+                    (
+                        i,
+                        self._prepare(
+                            name=r.name,
+                            allow_renaming=r.allow_renaming,
+                            uri=r.entity_resource.uri,
+                            resource_string=r.entity_resource.resource_string,
+                            namespace=r.entity_namespace,
+                            initial_pose=r.initial_pose,
+                        ),
+                    )
+                )
+                results.append(None)
+            except _Refused as err:
+                results.append(SpawnResult(result=_result(err.code, str(err))))
+            except TimeoutError as err:
+                results.append(SpawnResult(result=_result(Result.RESULT_OPERATION_FAILED, str(err))))
+        if todo:
+            try:
+                outs = self._commit([p for _, p in todo])
+            except TimeoutError as err:
+                outs = [WorldError(ErrorKind.BUILD_FAILED, f"the simulation did not answer: {err}")] * len(todo)
+            for (i, _p), out in zip(todo, outs):
+                if isinstance(out, WorldError):
+                    results[i] = SpawnResult(result=self._world_error_result(out))
+                else:
+                    results[i] = SpawnResult(result=_result(OK), entity_name=out.name)
+        res.results = results
+        failed = [i for i, r in enumerate(results) if r is not None and r.result.result != OK]
+        if failed:
+            res.result = _result(
+                SpawnEntities.Response.ENTITIES_SPAWN_FAILED,
+                f"{len(failed)} of {len(results)} entities failed to spawn (indices {failed}); see results",
+            )
+        else:
+            res.result = _result(OK)
+        return res
+
+    def delete_entity(self, req: DeleteEntity.Request, res: DeleteEntity.Response) -> Any:
+        try:
+            self.sim.delete(req.entity)
+        except WorldError as err:
+            code = Result.RESULT_NOT_FOUND if err.kind == ErrorKind.NOT_FOUND else Result.RESULT_OPERATION_FAILED
+            res.result = _result(code, str(err))
+            return res
+        except TimeoutError as err:
+            res.result = _result(Result.RESULT_OPERATION_FAILED, str(err))
+            return res
+        res.result = _result(OK)
+        return res
+
+    # ------------------------------------------------------------------ queries
+    def _compile_filters(self, filters: Any) -> tuple[re.Pattern | None, set[int]]:
+        if filters.tags.tags:
+            raise _Refused(Result.RESULT_FEATURE_UNSUPPORTED, "entity tags are not supported (filters.tags must be empty)")
+        if filters.bounds.type != 0 or filters.bounds.points:
+            raise _Refused(Result.RESULT_FEATURE_UNSUPPORTED, "bounds filters are not supported (filters.bounds must be empty)")
+        pattern = None
+        if filters.filter:
+            try:
+                pattern = re.compile(filters.filter)
+            except re.error as err:
+                raise _Refused(
+                    Result.RESULT_OPERATION_FAILED, f"filters.filter {filters.filter!r} is not a valid regular expression: {err}"
+                ) from None
+        return pattern, {c.category for c in filters.categories}
+
+    def _select(self, filters: Any) -> list[str]:
+        pattern, cats = self._compile_filters(filters)
+
+        def do() -> list[str]:
+            return [
+                name
+                for name, e in self.sim.world.entities.items()
+                if (pattern is None or pattern.search(name)) and (not cats or category_of(e) in cats)
+            ]
+
+        return self.sim.call(do)
+
+    def get_entities(self, req: GetEntities.Request, res: GetEntities.Response) -> Any:
+        try:
+            res.entities = self._select(req.filters)
+        except _Refused as err:
+            res.result = _result(err.code, str(err))
+            return res
+        res.result = _result(OK)
+        return res
+
+    def _state_msg(self, name: str) -> EntityState:
+        """World-frame state of an entity (call on the sim thread)."""
+        st = self.sim.world.entity_state(name)
+        msg = EntityState()
+        msg.header.frame_id = "world"
+        msg.header.stamp = to_time(self.sim.world.time)
+        msg.pose = to_pose_msg(st.pose)
+        msg.twist.linear.x, msg.twist.linear.y, msg.twist.linear.z = (float(v) for v in st.linear_velocity)
+        msg.twist.angular.x, msg.twist.angular.y, msg.twist.angular.z = (float(v) for v in st.angular_velocity)
+        return msg
+
+    def get_entity_state(self, req: GetEntityState.Request, res: GetEntityState.Response) -> Any:
+        try:
+            res.state = self.sim.call(lambda: self._state_msg(req.entity))
+        except WorldError as err:
+            res.result = _result(Result.RESULT_NOT_FOUND, str(err))
+            return res
+        res.result = _result(OK)
+        return res
+
+    def get_entities_states(self, req: GetEntitiesStates.Request, res: GetEntitiesStates.Response) -> Any:
+        try:
+            pattern, cats = self._compile_filters(req.filters)
+        except _Refused as err:
+            res.result = _result(err.code, str(err))
+            return res
+
+        def do() -> tuple[list[str], list[EntityState]]:
+            names = [
+                name
+                for name, e in self.sim.world.entities.items()
+                if (pattern is None or pattern.search(name)) and (not cats or category_of(e) in cats)
+            ]
+            return names, [self._state_msg(n) for n in names]
+
+        res.entities, res.states = self.sim.call(do)
+        res.result = _result(OK)
+        return res
+
+    def set_entity_state(self, req: SetEntityState.Request, res: SetEntityState.Response) -> Any:
+        s = req.state
+        p, tw = s.pose, s.twist
+        vals = (
+            p.position.x, p.position.y, p.position.z, p.orientation.x, p.orientation.y, p.orientation.z, p.orientation.w,
+        )
+        if not _finite(*vals):
+            res.result = _result(SetEntityState.Response.INVALID_POSE, "state.pose is not finite (NaN or inf)")
+            return res
+        if not _finite(tw.linear.x, tw.linear.y, tw.linear.z, tw.angular.x, tw.angular.y, tw.angular.z):
+            res.result = _result(Result.RESULT_OPERATION_FAILED, "state.twist is not finite (NaN or inf)")
+            return res
+        try:
+            frame = s.header.frame_id
+            X_WF = Pose() if frame in _WORLD_FRAMES else self._frame_pose(frame, "state.header.frame_id")
+            pose = X_WF * from_pose_msg(p)
+            lin = quat_rotate(X_WF.orientation, (tw.linear.x, tw.linear.y, tw.linear.z))
+            ang = quat_rotate(X_WF.orientation, (tw.angular.x, tw.angular.y, tw.angular.z))
+            self.sim.call(lambda: self.sim.world.set_entity_state(req.entity, pose, lin, ang))
+        except _Refused as err:
+            res.result = _result(err.code, str(err))
+            return res
+        except WorldError as err:
+            code = {
+                ErrorKind.NOT_FOUND: Result.RESULT_NOT_FOUND,
+                ErrorKind.INVALID_POSE: SetEntityState.Response.INVALID_POSE,
+            }.get(err.kind, Result.RESULT_OPERATION_FAILED)
+            res.result = _result(code, str(err))
+            return res
+        except TimeoutError as err:
+            res.result = _result(Result.RESULT_OPERATION_FAILED, str(err))
+            return res
+        res.result = _result(OK)
+        return res
+
+    def get_entity_info(self, req: GetEntityInfo.Request, res: GetEntityInfo.Response) -> Any:
+        def do() -> tuple[int, str]:
+            e = self.sim.world.entities.get(req.entity)
+            if e is None:
+                raise WorldError(ErrorKind.NOT_FOUND, f"entity '{req.entity}' does not exist")
+            cat = category_of(e)
+            m = e.model
+            parts = [
+                f"{_CATEGORY_NAMES[cat]} '{e.name}'",
+                f"model '{m.name}' ({m.source_format or 'unknown format'}"
+                + (f", {m.source_file}" if m.source_file and not m.source_file.startswith("<") else "")
+                + ")",
+                f"{len(m.links)} links, {len(m.joints)} joints, {len(m.plugins)} plugins",
+            ]
+            if e.namespace:
+                parts.append(f"namespace '/{e.namespace}'")
+            parts.append("spawned" if e.spawned else "from the world file")
+            return cat, "; ".join(parts)
+
+        try:
+            cat, desc = self.sim.call(do)
+        except WorldError as err:
+            res.result = _result(Result.RESULT_NOT_FOUND, str(err))
+            return res
+        res.info.category.category = cat
+        res.info.description = desc
+        res.result = _result(OK)
+        return res
+
+
+def register(node: SimulationNode) -> SimulationInterfaces:
+    """Advertise the simulation_interfaces services and action on ``node`` (under ``~/``)."""
+    si = SimulationInterfaces(node)
+    node.simulation_interfaces = si  # type: ignore[attr-defined]
+    return si

@@ -1,0 +1,220 @@
+"""Harness for integration tests: real `gazelle sim` processes, real DDS, a unique domain per run.
+
+Every test here talks to a separate server process over ROS 2 (Fast DDS on
+localhost) exactly like a user's node would. Waits are conditions with
+timeouts, never bare sleeps.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Iterator
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[2]
+SEED_XACRO = REPO / "examples" / "simple_robot" / "simple_robot" / "robot.urdf.xacro"
+SQUARE_NODE = REPO / "examples" / "simple_robot" / "simple_robot" / "square_movement.py"
+GAZELLE = [sys.executable, "-m", "gazelle.cli"]
+
+rclpy = pytest.importorskip("rclpy")
+
+
+def _domain_id() -> int:
+    # one domain per pytest process; pytest-xdist workers get their own
+    worker = os.environ.get("PYTEST_XDIST_WORKER", "gw0")
+    base = 10 + (os.getpid() % 40) * 2
+    return base + (int(worker[2:]) if worker[2:].isdigit() else 0)
+
+
+@pytest.fixture(scope="session", autouse=True)
+def ros_env() -> Iterator[dict[str, str]]:
+    """A unique ROS_DOMAIN_ID for this test run, discovery limited to localhost."""
+    saved = {k: os.environ.get(k) for k in ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE", "RMW_IMPLEMENTATION")}
+    os.environ["ROS_DOMAIN_ID"] = str(_domain_id())
+    os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
+    os.environ["RMW_IMPLEMENTATION"] = "rmw_fastrtps_cpp"
+    yield dict(os.environ)
+    for k, v in saved.items():
+        if v is None:
+            os.environ.pop(k, None)
+        else:
+            os.environ[k] = v
+
+
+def wait_for(predicate: Callable[[], Any], timeout: float, what: str, interval: float = 0.02) -> Any:
+    """Poll ``predicate`` until it returns something truthy; fail the test after ``timeout`` s."""
+    deadline = time.monotonic() + timeout
+    while True:
+        value = predicate()
+        if value:
+            return value
+        if time.monotonic() > deadline:
+            pytest.fail(f"timed out after {timeout:g} s waiting for {what}")
+        time.sleep(interval)
+
+
+@dataclass
+class Proc:
+    """A child process whose output is collected line by line."""
+
+    popen: subprocess.Popen
+    name: str
+    lines: list[str] = field(default_factory=list)
+    _cond: threading.Condition = field(default_factory=threading.Condition)
+
+    def start_reader(self) -> None:
+        def read() -> None:
+            assert self.popen.stdout is not None
+            for line in self.popen.stdout:
+                with self._cond:
+                    self.lines.append(line.rstrip("\n"))
+                    self._cond.notify_all()
+            with self._cond:
+                self._cond.notify_all()
+
+        threading.Thread(target=read, daemon=True).start()
+
+    def wait_line(self, needle: str, timeout: float) -> str:
+        deadline = time.monotonic() + timeout
+        with self._cond:
+            while True:
+                for line in self.lines:
+                    if needle in line:
+                        return line
+                if self.popen.poll() is not None:
+                    self._cond.wait(0.2)
+                    if not any(needle in ln for ln in self.lines):
+                        pytest.fail(f"{self.name} exited ({self.popen.returncode}) before printing {needle!r}:\n" + self.output)
+                remaining = deadline - time.monotonic()
+                if remaining <= 0:
+                    pytest.fail(f"{self.name} did not print {needle!r} within {timeout:g} s:\n" + self.output)
+                self._cond.wait(remaining)
+
+    @property
+    def output(self) -> str:
+        with self._cond:
+            return "\n".join(self.lines[-80:])
+
+    def wait(self, timeout: float) -> int:
+        try:
+            return self.popen.wait(timeout)
+        except subprocess.TimeoutExpired:
+            self.popen.kill()
+            pytest.fail(f"{self.name} did not exit within {timeout:g} s:\n" + self.output)
+
+    def interrupt(self, timeout: float = 15.0) -> int:
+        if self.popen.poll() is None:
+            self.popen.send_signal(signal.SIGINT)
+        return self.wait(timeout)
+
+
+def start(cmd: list[str], name: str, env: dict[str, str] | None = None) -> Proc:
+    p = subprocess.Popen(
+        cmd,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        cwd=REPO,
+        env=env or os.environ.copy(),
+    )
+    proc = Proc(p, name)
+    proc.start_reader()
+    return proc
+
+
+@pytest.fixture
+def sim_factory() -> Iterator[Callable[..., Proc]]:
+    """Start `gazelle sim` servers; each is stopped with Ctrl-C (SIGINT) at teardown and must exit 0."""
+    procs: list[Proc] = []
+
+    def make(*args: str) -> Proc:
+        proc = start([*GAZELLE, "sim", *args], "gazelle sim")
+        procs.append(proc)
+        proc.wait_line("gazelle: ready", timeout=60)
+        return proc
+
+    yield make
+    for p in procs:
+        rc = p.interrupt()
+        assert rc == 0, f"gazelle sim exited with {rc} on Ctrl-C:\n{p.output}"
+
+
+class RosClient:
+    """A plain rclpy node in the test process for observing and calling the simulation."""
+
+    def __init__(self, name: str = "test_client"):
+        from rclpy.executors import MultiThreadedExecutor
+
+        self.context = rclpy.Context()
+        rclpy.init(context=self.context)
+        self.node = rclpy.create_node(name, context=self.context)
+        self.executor = MultiThreadedExecutor(num_threads=2, context=self.context)
+        self.executor.add_node(self.node)
+        self._lock = threading.Lock()
+        self._clients: dict[tuple[Any, str], Any] = {}
+        self._thread = threading.Thread(target=self._spin, daemon=True)
+        self._thread.start()
+
+    def _spin(self) -> None:
+        try:
+            self.executor.spin()
+        except Exception:  # noqa: BLE001 - shutting down
+            pass
+
+    def client(self, srv_type: Any, name: str, timeout: float = 15.0) -> Any:
+        """A service client, created once per (type, name) and ready to call."""
+        key = (srv_type, name)
+        with self._lock:
+            client = self._clients.get(key)
+            if client is None:
+                client = self._clients[key] = self.node.create_client(srv_type, name)
+        if not client.service_is_ready() and not client.wait_for_service(timeout_sec=timeout):
+            pytest.fail(f"service {name} not available within {timeout} s")
+        return client
+
+    def call(self, srv_type: Any, name: str, request: Any, timeout: float = 15.0) -> Any:
+        future = self.client(srv_type, name, timeout).call_async(request)
+        done = threading.Event()
+        future.add_done_callback(lambda _f: done.set())
+        if not done.wait(timeout):
+            pytest.fail(f"service {name} did not answer within {timeout} s")
+        return future.result()
+
+    def entity_state(self, name: str, reference_frame: str = "") -> Any:
+        from gazebo_msgs.srv import GetEntityState
+
+        res = self.call(GetEntityState, "/get_entity_state", GetEntityState.Request(name=name, reference_frame=reference_frame))
+        assert res.success, f"get_entity_state({name!r}) failed"
+        return res
+
+    def close(self) -> None:
+        self.executor.shutdown(timeout_sec=2.0)
+        self.node.destroy_node()
+        if self.context.ok():
+            rclpy.shutdown(context=self.context)
+
+
+@pytest.fixture
+def ros_client() -> Iterator[RosClient]:
+    client = RosClient()
+    yield client
+    client.close()
+
+
+def yaw_of(q: Any) -> float:
+    return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
+
+
+def xacro_to_urdf(path: Path) -> str:
+    import xacro
+
+    return xacro.process_file(str(path)).toxml()
