@@ -64,8 +64,10 @@ def qos_profile(qos: Qos, depth: int) -> QoSProfile:
 MIN_CLOCK_WALL_PERIOD_SEC = 1.0 / 1000.0
 """/clock goes out at most 1000 times per wall-clock second (see ``_on_step``)."""
 
-CLOCK_QOS = QoSProfile(depth=1, reliability=ReliabilityPolicy.BEST_EFFORT)
-"""rclcpp's ClockQoS, as gazebo_ros publishes /clock."""
+CLOCK_QOS = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE)
+"""/clock is keep-last 1 like rclcpp's ClockQoS, but reliable: a reliable writer matches both
+rclpy's best-effort TimeSource and a plain default (reliable) subscription, which a best-effort
+writer (gazebo_ros) silently never reaches. Keep-last 1 never blocks the simulation."""
 
 
 class _RosLogHandler(logging.Handler):

@@ -1,0 +1,251 @@
+"""``gazelle demo``: the seed's workflow, end to end, as a newcomer would run it by hand.
+
+1. ``gazelle sim`` (embedded default world) in its own process;
+2. the seed robot's xacro output published latched on ``robot_description``;
+3. ``gazelle spawn -entity simple_robot -topic robot_description``;
+4. the seed's ``square_movement.py`` (plain rclpy) for one square;
+5. the four corners by ground truth and by /odom, and an SVG of both paths.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[2]
+EXAMPLE = REPO / "examples" / "simple_robot" / "simple_robot"
+
+
+@dataclass
+class Sample:
+    t: float
+    x: float
+    y: float
+    yaw: float
+
+
+class _Child:
+    """A child process whose output is echoed with a prefix and kept."""
+
+    def __init__(self, name: str, cmd: list[str], env: dict[str, str]):
+        self.name = name
+        self.lines: list[str] = []
+        self.proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env, cwd=REPO)
+        self._ready = threading.Event()
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def _read(self) -> None:
+        assert self.proc.stdout is not None
+        for line in self.proc.stdout:
+            line = line.rstrip("\n")
+            self.lines.append(line)
+            print(f"  [{self.name}] {line}", flush=True)
+
+    def wait_for_line(self, needle: str, timeout: float) -> bool:
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if any(needle in ln for ln in self.lines):
+                return True
+            if self.proc.poll() is not None:
+                return any(needle in ln for ln in self.lines)
+            time.sleep(0.05)
+        return False
+
+    def stop(self, timeout: float = 10.0) -> int:
+        if self.proc.poll() is None:
+            self.proc.send_signal(signal.SIGINT)
+            try:
+                self.proc.wait(timeout)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+        return self.proc.returncode
+
+
+def _yaw(q) -> float:  # noqa: ANN001 - geometry_msgs/Quaternion
+    return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
+
+
+def find_corners(truth: list[Sample], min_turn_rate: float = 0.25) -> list[int]:
+    """Indices of the middle sample of each turn-in-place phase (where the yaw changes fast)."""
+    turning: list[list[int]] = []
+    for i in range(1, len(truth)):
+        a, b = truth[i - 1], truth[i]
+        dt = b.t - a.t
+        if dt <= 0:
+            continue
+        rate = abs(math.remainder(b.yaw - a.yaw, math.tau)) / dt
+        if rate > min_turn_rate:
+            if turning and turning[-1][-1] == i - 1:
+                turning[-1].append(i)
+            else:
+                turning.append([i])
+    return [seg[len(seg) // 2] for seg in turning if len(seg) >= 3]
+
+
+def interpolate(samples: list[Sample], t: float) -> Sample | None:
+    """The odometry sample at time t (linear interpolation), or None outside the record."""
+    for a, b in zip(samples, samples[1:]):
+        if a.t <= t <= b.t:
+            w = (t - a.t) / (b.t - a.t) if b.t > a.t else 0.0
+            return Sample(t, a.x + w * (b.x - a.x), a.y + w * (b.y - a.y), a.yaw)
+    return None
+
+
+def write_svg(path: Path, truth: list[Sample], odom: list[Sample], corners: list[Sample]) -> None:
+    """Both paths in metres, ground truth solid blue, /odom dashed orange, corners as dots."""
+    pts = [(s.x, s.y) for s in truth + odom] or [(0.0, 0.0)]
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    margin = 0.15
+    x0, x1, y0, y1 = min(xs) - margin, max(xs) + margin, min(ys) - margin, max(ys) + margin
+    scale = 400.0 / max(x1 - x0, y1 - y0, 1e-6)
+    width, height = (x1 - x0) * scale, (y1 - y0) * scale
+
+    def px(x: float, y: float) -> str:
+        return f"{(x - x0) * scale:.1f},{(y1 - y) * scale:.1f}"
+
+    def poly(samples: list[Sample], style: str) -> str:
+        return f'<polyline fill="none" {style} points="{" ".join(px(s.x, s.y) for s in samples)}"/>'
+
+    dots = "".join(
+        f'<circle cx="{px(c.x, c.y).split(",")[0]}" cy="{px(c.x, c.y).split(",")[1]}" r="4" fill="#c00"/>'
+        f'<text x="{(c.x - x0) * scale + 6:.1f}" y="{(y1 - c.y) * scale - 6:.1f}" font-size="12">{i + 1}</text>'
+        for i, c in enumerate(corners)
+    )
+    svg = (
+        f'<svg xmlns="http://www.w3.org/2000/svg" width="{width:.0f}" height="{height + 40:.0f}" '
+        f'viewBox="0 0 {width:.0f} {height + 40:.0f}">'
+        f'<rect width="100%" height="100%" fill="white"/>'
+        + poly(truth, 'stroke="#1f5fbf" stroke-width="3"')
+        + poly(odom, 'stroke="#f08000" stroke-width="1.5" stroke-dasharray="6 4"')
+        + dots
+        + f'<text x="8" y="{height + 18:.0f}" font-size="13" font-family="sans-serif">'
+        "gazelle demo: seed robot, one square. blue = ground truth, orange dashed = /odom, red = corners</text>"
+        "</svg>"
+    )
+    path.write_text(svg)
+
+
+def run_demo(out: Path, *, rtf: float = 1.0) -> int:
+    """Run the demo; returns the exit code (0 = the robot drove a square)."""
+    env = os.environ.copy()
+    env.setdefault("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
+    os.environ.update({k: env[k] for k in ("ROS_AUTOMATIC_DISCOVERY_RANGE",)})
+    out.mkdir(parents=True, exist_ok=True)
+    import rclpy
+    import xacro
+    from gazebo_msgs.srv import GetEntityState
+    from nav_msgs.msg import Odometry
+    from rclpy.executors import MultiThreadedExecutor
+    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+    from std_msgs.msg import String
+
+    gazelle = [sys.executable, "-m", "gazelle.cli"]
+    print(f"gazelle demo: ROS_DOMAIN_ID={env.get('ROS_DOMAIN_ID', '0')}, real-time factor {rtf:g}", flush=True)
+    print("1. gazelle sim (embedded default world)", flush=True)
+    sim = _Child("sim", [*gazelle, "sim", "--rtf", str(rtf)], env)
+    context = rclpy.Context()
+    rclpy.init(context=context)
+    node = rclpy.create_node("gazelle_demo", context=context)
+    executor = MultiThreadedExecutor(num_threads=2, context=context)
+    executor.add_node(node)
+    threading.Thread(target=executor.spin, daemon=True).start()
+    children = [sim]
+    try:
+        if not sim.wait_for_line("gazelle: ready", 60):
+            print("gazelle demo: the simulator did not start", file=sys.stderr)
+            return 1
+        print("2. robot_description <- xacro examples/simple_robot/simple_robot/robot.urdf.xacro", flush=True)
+        qos = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
+        pub = node.create_publisher(String, "robot_description", qos)
+        pub.publish(String(data=xacro.process_file(str(EXAMPLE / "robot.urdf.xacro")).toxml()))
+        print("3. gazelle spawn -entity simple_robot -topic robot_description", flush=True)
+        spawn = _Child("spawn", [*gazelle, "spawn", "-entity", "simple_robot", "-topic", "robot_description"], env)
+        children.append(spawn)
+        if spawn.proc.wait(90) != 0:
+            print("gazelle demo: spawning failed", file=sys.stderr)
+            return 1
+
+        truth: list[Sample] = []
+        odom: list[Sample] = []
+        lock = threading.Lock()
+
+        def on_odom(msg: Odometry) -> None:
+            p = msg.pose.pose
+            with lock:
+                odom.append(Sample(msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9, p.position.x, p.position.y, _yaw(p.orientation)))
+
+        node.create_subscription(Odometry, "/odom", on_odom, 100)
+        client = node.create_client(GetEntityState, "/get_entity_state")
+        if not client.wait_for_service(timeout_sec=30):
+            print("gazelle demo: /get_entity_state is not available", file=sys.stderr)
+            return 1
+        done = threading.Event()
+
+        def sample_truth() -> None:
+            while not done.is_set():
+                fut = client.call_async(GetEntityState.Request(name="simple_robot"))
+                ev = threading.Event()
+                fut.add_done_callback(lambda _f: ev.set())
+                if ev.wait(5) and fut.result() is not None and fut.result().success:
+                    r = fut.result()
+                    p = r.state.pose
+                    with lock:
+                        truth.append(Sample(r.header.stamp.sec + r.header.stamp.nanosec * 1e-9, p.position.x, p.position.y, _yaw(p.orientation)))
+                done.wait(0.02)
+
+        sampler = threading.Thread(target=sample_truth, daemon=True)
+        sampler.start()
+        print("4. square_movement.py (the seed's node, plain rclpy): one square", flush=True)
+        node_cmd = [sys.executable, str(EXAMPLE / "square_movement.py"), "--ros-args", "-p", "max_sides:=4"]
+        if rtf != 1.0:
+            node_cmd += ["-p", "use_sim_time:=true"]
+        square = _Child("square_movement", node_cmd, env)
+        children.append(square)
+        if square.proc.wait(300) != 0:
+            print("gazelle demo: square_movement failed", file=sys.stderr)
+            return 1
+        time.sleep(0.5 if rtf == 1.0 else 0.1)  # a last few samples of the robot at rest
+        done.set()
+        sampler.join(10)
+
+        with lock:
+            truth_s, odom_s = sorted(truth, key=lambda s: s.t), sorted(odom, key=lambda s: s.t)
+        corner_idx = find_corners(truth_s)
+        print("5. corners (x, y in metres)", flush=True)
+        print(f"   {'':8}{'ground truth':>22}{'/odom':>22}{'difference':>14}")
+        corners: list[Sample] = []
+        worst = 0.0
+        for k, i in enumerate(corner_idx, 1):
+            g = truth_s[i]
+            o = interpolate(odom_s, g.t)
+            corners.append(g)
+            diff = math.hypot(o.x - g.x, o.y - g.y) if o else float("nan")
+            worst = max(worst, diff) if o else worst
+            ostr = f"({o.x:+.3f}, {o.y:+.3f})" if o else "n/a"
+            print(f"   corner {k}{f'({g.x:+.3f}, {g.y:+.3f})':>22}{ostr:>22}{diff * 1000:>11.2f} mm")
+        svg = out / "square.svg"
+        write_svg(svg, truth_s, odom_s, corners)
+        print(f"   path image: {svg.resolve()}")
+        ok = len(corners) == 4
+        if ok:
+            sides = [math.hypot(b.x - a.x, b.y - a.y) for a, b in zip(corners, corners[1:])]
+            print("   sides between corners: " + ", ".join(f"{s:.3f} m" for s in sides) + f"; worst /odom error {worst * 1000:.2f} mm")
+        else:
+            print(f"gazelle demo: expected 4 corners, found {len(corners)}", file=sys.stderr)
+        return 0 if ok else 1
+    finally:
+        for c in reversed(children):
+            c.stop()
+        executor.shutdown(timeout_sec=2.0)
+        node.destroy_node()
+        if context.ok():
+            rclpy.shutdown(context=context)
+        print("gazelle demo: stopped everything", flush=True)

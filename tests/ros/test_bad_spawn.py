@@ -1,0 +1,106 @@
+"""Bad input gets a one-line error naming file:line or the request field; the server stays up."""
+
+from __future__ import annotations
+
+import pytest
+from gazebo_msgs.srv import DeleteEntity, GetModelList, SpawnEntity
+from rosgraph_msgs.msg import Clock
+
+from .conftest import GAZELLE, REPO, SEED_XACRO, start, wait_for, xacro_to_urdf
+
+MISSING_PARENT = """<?xml version="1.0"?>
+<robot name="broken">
+  <link name="base"/>
+  <link name="arm"/>
+  <joint name="j" type="fixed">
+    <parent link="bse"/>
+    <child link="arm"/>
+  </joint>
+</robot>
+"""
+
+MALFORMED = """<?xml version="1.0"?>
+<robot name="broken">
+  <link name="base">
+    <visual>
+  </link>
+</robot>
+"""
+
+
+def _spawn(ros_client, name: str, xml: str, reference_frame: str = "") -> SpawnEntity.Response:
+    req = SpawnEntity.Request(name=name, xml=xml, reference_frame=reference_frame)
+    return ros_client.call(SpawnEntity, "/spawn_entity", req)
+
+
+def _one_line(message: str) -> str:
+    assert "\n" not in message.strip(), f"error is not one line: {message!r}"
+    assert "Traceback" not in message
+    return message
+
+
+def test_bad_spawns_fail_clearly_and_the_server_keeps_running(sim_factory, ros_client, tmp_path):
+    sim = sim_factory()
+
+    res = _spawn(ros_client, "broken", MISSING_PARENT)
+    assert not res.success
+    msg = _one_line(res.status_message)
+    assert "<spawn_entity:broken>:5: error: [JOINT_PARENT_INVALID]" in msg and "'bse'" in msg
+
+    res = _spawn(ros_client, "broken", MALFORMED)
+    assert not res.success
+    msg = _one_line(res.status_message)
+    assert "<spawn_entity:broken>:" in msg and "[XML_PARSE_ERROR]" in msg
+
+    urdf = xacro_to_urdf(SEED_XACRO)
+    res = _spawn(ros_client, "robot", urdf, reference_frame="no_such_frame")
+    assert not res.success
+    assert "reference_frame 'no_such_frame' not found" in _one_line(res.status_message)
+
+    # the same mistakes through the CLI: exit 1 with the location, on one line
+    bad = tmp_path / "bad_parent.urdf"
+    bad.write_text(MISSING_PARENT)
+    cli = start([*GAZELLE, "spawn", "-entity", "broken", "-file", str(bad), "-timeout", "20"], "gazelle spawn")
+    assert cli.wait(60) == 1
+    errors = [ln for ln in cli.lines if "[ERROR]" in ln]
+    assert len(errors) == 1 and "<spawn_entity:broken>:5: error: [JOINT_PARENT_INVALID]" in errors[0], cli.output
+    assert "Traceback" not in cli.output
+
+    missing = start([*GAZELLE, "spawn", "-entity", "x", "-file", str(tmp_path / "nope.urdf")], "gazelle spawn")
+    assert missing.wait(30) == 1
+    assert "does not exist" in missing.output and "Traceback" not in missing.output
+
+    # the server is alive: /clock still advances, and the next valid spawn works
+    seen: list[float] = []
+    ros_client.node.create_subscription(Clock, "/clock", lambda m: seen.append(m.clock.sec + m.clock.nanosec * 1e-9), 10)
+    wait_for(lambda: len(seen) > 5 and seen[-1] > seen[0], 10, "/clock to advance after the bad requests")
+    res = _spawn(ros_client, "robot", urdf)
+    assert res.success, res.status_message
+    names = ros_client.call(GetModelList, "/get_model_list", GetModelList.Request()).model_names
+    assert "robot" in names and "broken" not in names
+
+    # a duplicate name is refused and leaves the first robot (and its topics) alone
+    res = _spawn(ros_client, "robot", urdf)
+    assert not res.success and "already exists" in _one_line(res.status_message)
+    res = ros_client.call(DeleteEntity, "/delete_entity", DeleteEntity.Request(name="ghost"))
+    assert not res.success and "ghost" in res.status_message
+    assert sim.popen.poll() is None
+    assert "Traceback" not in sim.output
+
+
+def test_spawn_times_out_cleanly_without_a_server(tmp_path):
+    # no `gazelle sim` in this domain: the CLI must not hang
+    proc = start(
+        [*GAZELLE, "spawn", "-entity", "r", "-file", str(REPO / "examples/simple_robot/simple_robot/robot.urdf.xacro"), "-timeout", "2"],
+        "gazelle spawn",
+        env={**__import__("os").environ, "ROS_DOMAIN_ID": "99"},
+    )
+    assert proc.wait(30) == 1
+    assert "unavailable" in proc.output
+
+
+@pytest.mark.parametrize("flag", ["-file", "-topic"])
+def test_spawn_arguments_are_checked(flag):
+    proc = start([*GAZELLE, "spawn", flag], "gazelle spawn")
+    assert proc.wait(30) == 2
+    assert "usage: gazelle spawn" in proc.output
