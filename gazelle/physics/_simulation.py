@@ -111,7 +111,7 @@ class Simulation:
         return fut.result(timeout=timeout)
 
     def _drain(self) -> None:
-        while True:
+        while not self._queue.empty():  # cheap check first: this runs before every step
             try:
                 fn, fut = self._queue.get_nowait()
             except queue.Empty:

@@ -106,7 +106,7 @@ class SimulationNode(Node):
         sim: Simulation,
         *,
         node_name: str = "gazelle",
-        clock_rate_hz: float = 1000.0,
+        clock_rate_hz: float = 100.0,
         context: rclpy.Context | None = None,
     ):
         super().__init__(node_name, context=context)
@@ -375,7 +375,7 @@ class SimulationNode(Node):
 class RosBridge:
     """Owns rclpy's context, the node and an executor thread for a simulation."""
 
-    def __init__(self, sim: Simulation, *, clock_rate_hz: float = 1000.0, args: list[str] | None = None):
+    def __init__(self, sim: Simulation, *, clock_rate_hz: float = 100.0, args: list[str] | None = None):
         self.context = rclpy.Context()
         rclpy.init(args=args, context=self.context)
         self._handler = _RosLogHandler()
