@@ -18,7 +18,8 @@ import time
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parent.parent
-REAL = Path(os.environ.get("GAZELLE_REAL_FIXTURES", "/work/shared/fixtures/real"))
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+from _paths import REAL  # noqa: E402
 TARGET_SEC = 0.5
 
 # (label, GAZELLE_RESOURCE_PATH, file); relative paths are under REAL, the seed robot is in the repo

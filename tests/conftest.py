@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-REAL = Path(os.environ.get("GAZELLE_REAL_FIXTURES", "/work/shared/fixtures/real"))
+from _paths import REAL  # noqa: E402
 """Real public robot/world descriptions (test inputs, read in place; never copied into the repo)."""
 
 

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 REPO = Path(__file__).resolve().parent.parent
-REAL = Path(os.environ.get("GAZELLE_REAL_FIXTURES", "/work/shared/fixtures/real"))
+from _paths import REAL  # noqa: E402
 needs_real = pytest.mark.skipif(not REAL.is_dir(), reason="shared real fixtures not available")
 
 SEED = REPO / "examples/simple_robot/simple_robot/robot.urdf.xacro"

@@ -19,7 +19,7 @@ import pytest
 from gazelle.description import Model, Pose, load
 from gazelle.physics._simulation import Simulation
 from gazelle.worlds import default_world
-REAL = Path(os.environ.get("GAZELLE_REAL_FIXTURES", "/work/shared/fixtures/real"))
+from _paths import REAL  # noqa: E402
 pytestmark = pytest.mark.skipif(not REAL.is_dir(), reason="shared real fixtures not available")
 
 MOBILE, ARM, OBJECT = "mobile", "arm", "object"

@@ -25,7 +25,7 @@ from gazelle.description import (
 )
 
 DATA = Path(__file__).parent / "data" / "sdf"
-REAL = Path("/work/shared/fixtures/real")
+from _paths import REAL  # noqa: E402
 TB3 = REAL / "turtlebot3" / "turtlebot3_gazebo"
 GZM = REAL / "gazebo_models" / "models"
 needs_real = pytest.mark.skipif(not REAL.is_dir(), reason="shared real fixtures not available")

@@ -10,7 +10,7 @@ import pytest
 from gazelle.description import Chain, ModelLoadError, Semantics, load, load_string
 
 DATA = Path(__file__).parent / "data" / "srdf"
-REAL = Path("/work/shared/fixtures/real")
+from _paths import REAL  # noqa: E402
 needs_real = pytest.mark.skipif(not REAL.is_dir(), reason="shared real fixtures not available")
 
 # file, groups, group_states, end_effectors, disable_collisions, warning codes

@@ -24,7 +24,7 @@ from gazelle.description import (
 from gazelle.description._inertia import inertia_from_geometry, inertia_problem
 
 DATA = Path(__file__).parent / "data" / "urdf"
-REAL = Path("/work/shared/fixtures/real")
+from _paths import REAL  # noqa: E402
 SEED_URDF = DATA / "mybot2.urdf"
 
 

@@ -14,7 +14,7 @@ from gazelle.description import Mesh, Model, ModelLoadError, ResourceResolver, l
 
 DATA = Path(__file__).parent / "data" / "urdf"
 XACRO = DATA / "xacro"
-REAL = Path("/work/shared/fixtures/real")
+from _paths import REAL  # noqa: E402
 
 SEED_ROBOT = """<?xml version="1.0"?>
 <robot xmlns:xacro="http://www.ros.org/wiki/xacro" name="simple_robot">
