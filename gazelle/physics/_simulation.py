@@ -224,17 +224,21 @@ class Simulation:
         mujoco.mj_forward(self.world.model, d)
 
     # ------------------------------------------------------------------ entities
+    def _configure_plugins(self, entity: Entity, into: list) -> None:
+        """Create and configure a system for each supported plugin of ``entity`` (before the recompile)."""
+        for plugin in entity.model.plugins:
+            system = create_system(plugin)
+            if system is None:
+                continue
+            logger = logging.getLogger(plugin.name or plugin.filename)
+            system.configure(SystemContext(self.world, entity, plugin, self.bus, logger))
+            into.append(system)
+
     def _add_entity(self, model: Model, *, name: str, pose: Pose, namespace: str, spawned: bool) -> Entity:
         pending: list = []
 
         def configure(entity: Entity) -> None:
-            for plugin in entity.model.plugins:
-                system = create_system(plugin)
-                if system is None:
-                    continue
-                logger = logging.getLogger(plugin.name or plugin.filename)
-                system.configure(SystemContext(self.world, entity, plugin, self.bus, logger))
-                pending.append(system)
+            self._configure_plugins(entity, pending)
 
         try:
             entity = self.world.add_entity(
@@ -326,14 +330,7 @@ class Simulation:
 
         def make_configure(name: str) -> Callable[[Entity], None]:
             def configure(entity: Entity) -> None:
-                systems = pending.setdefault(name, [])
-                for plugin in entity.model.plugins:
-                    system = create_system(plugin)
-                    if system is None:
-                        continue
-                    logger = logging.getLogger(plugin.name or plugin.filename)
-                    system.configure(SystemContext(self.world, entity, plugin, self.bus, logger))
-                    systems.append(system)
+                self._configure_plugins(entity, pending.setdefault(name, []))
 
             return configure
 
