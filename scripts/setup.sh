@@ -41,9 +41,17 @@ fi
 want="$(cat "$ROOT/requirements.txt" "$ROOT/pyproject.toml" | sha256sum | cut -d' ' -f1)"
 stamp="$VENV/.gazelle_requirements.sha256"
 if [[ ! -f "$stamp" || "$(cat "$stamp")" != "$want" ]]; then
-  say "installing wheels (ROS 2 Jazzy, MuJoCo, xacro, ...)"
-  "$VENV/bin/python" -m pip install -q --disable-pip-version-check -r "$ROOT/requirements.txt"
-  "$VENV/bin/python" -m pip install -q --disable-pip-version-check --no-deps --no-build-isolation -e "$ROOT"
+  say "installing wheels (ROS 2 Jazzy, MuJoCo, xacro, ...); log: $VENV/pip-install.log"
+  pip_install() {
+    if ! "$VENV/bin/python" -m pip install --disable-pip-version-check "$@" >>"$VENV/pip-install.log" 2>&1; then
+      tail -n 40 "$VENV/pip-install.log" >&2
+      echo "[setup] pip install failed (full log: $VENV/pip-install.log)" >&2
+      exit 1
+    fi
+  }
+  : > "$VENV/pip-install.log"
+  pip_install -r "$ROOT/requirements.txt"
+  pip_install --no-deps --no-build-isolation -e "$ROOT"
   echo "$want" > "$stamp"
 fi
 
