@@ -28,6 +28,9 @@ from ..systems._registry import create_system
 from ._world import Entity, ErrorKind, PhysicsWorld, WorldError
 
 T = TypeVar("T")
+
+MAX_CATCH_UP_SEC = 1.0
+"""With a target RTF, a lag behind the wall clock up to this long is made up by running flat out."""
 _log = logging.getLogger("gazelle")
 
 
@@ -155,8 +158,11 @@ class Simulation:
                     ahead = target - time.monotonic()
                     if ahead > 0:
                         self._wait(ahead)
-                    elif ahead < -0.1:  # fell behind: do not burst to catch up
+                    elif ahead < -MAX_CATCH_UP_SEC:
+                        # too far behind to catch up: accept the loss and pace from here
                         self._anchor = (time.monotonic(), self.world.time)
+                    # a shorter stall (a busy CPU, a garbage collection) is made up by stepping
+                    # without sleeping, so sim time keeps tracking wall time for wall-clock nodes
         except Exception:  # pragma: no cover - reported, never silent
             _log.exception("simulation thread crashed")
             raise

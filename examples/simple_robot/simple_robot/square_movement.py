@@ -14,6 +14,7 @@ Changes from the seed, each for a measured reason:
 
 import rclpy
 from geometry_msgs.msg import Twist
+from rclpy.duration import Duration
 from rclpy.node import Node
 
 TICK_TOLERANCE = 0.01  # seconds: timer ticks jitter by a few milliseconds
@@ -73,9 +74,9 @@ def main(args=None):
     try:
         while rclpy.ok() and node.state != 'done':
             rclpy.spin_once(node)
-        # say stop a few times so the robot surely gets it
-        for _ in range(3):
-            node.publisher.publish(Twist())
+        # stop, and make sure the simulator has the message before this process goes away
+        node.publisher.publish(Twist())
+        node.publisher.wait_for_all_acked(Duration(seconds=5.0))
     except KeyboardInterrupt:
         pass
     node.destroy_node()
