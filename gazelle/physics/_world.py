@@ -87,6 +87,7 @@ class PhysicsWorld:
         self.generation = 0
         """Bumped at every recompile: indices cached against an older generation are stale."""
         self._before_compile: list[Callable[[], None]] = []
+        self._kinematics_stale = False
         self.model: mujoco.MjModel = self.spec.compile()
         self.data = mujoco.MjData(self.model)
 
@@ -229,6 +230,18 @@ class PhysicsWorld:
 
     def step(self) -> None:
         mujoco.mj_step(self.model, self.data)
+        # mj_step computes kinematics *before* it integrates, so xpos/xquat/cvel now describe
+        # the previous step's state; refresh them lazily, on the first query
+        self._kinematics_stale = True
+
+    def _refresh_kinematics(self) -> None:
+        """Bring body poses and velocities up to the current qpos/qvel (derived fields only:
+        the next mj_step recomputes them anyway, so trajectories are unchanged)."""
+        if self._kinematics_stale:
+            mujoco.mj_kinematics(self.model, self.data)
+            mujoco.mj_comPos(self.model, self.data)
+            mujoco.mj_comVel(self.model, self.data)
+            self._kinematics_stale = False
 
     def diverged_entities(self) -> list[str]:
         """Entities whose state holds NaN/inf or absurd velocities."""
@@ -262,12 +275,14 @@ class PhysicsWorld:
         return mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_BODY, body)
 
     def body_pose(self, body_id: int) -> Pose:
+        self._refresh_kinematics()
         p = self.data.xpos[body_id]
         q = self.data.xquat[body_id]
         return Pose((float(p[0]), float(p[1]), float(p[2])), (float(q[0]), float(q[1]), float(q[2]), float(q[3])))
 
     def body_velocity(self, body_id: int) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
         """World-frame linear velocity of the body origin and angular velocity."""
+        self._refresh_kinematics()
         vel = np.zeros(6)
         mujoco.mj_objectVelocity(self.model, self.data, mujoco.mjtObj.mjOBJ_BODY, body_id, vel, 0)
         ang = vel[:3]
