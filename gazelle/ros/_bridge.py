@@ -17,11 +17,13 @@ from dataclasses import dataclass
 from typing import Any
 
 import rclpy
+from gazebo_msgs.msg import ModelStates
 from gazebo_msgs.srv import DeleteEntity as GzDeleteEntity
 from gazebo_msgs.srv import GetEntityState as GzGetEntityState
 from gazebo_msgs.srv import GetModelList as GzGetModelList
 from gazebo_msgs.srv import SetEntityState as GzSetEntityState
 from gazebo_msgs.srv import SpawnEntity as GzSpawnEntity
+from geometry_msgs.msg import Twist
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import MultiThreadedExecutor
 from rclpy.node import Node
@@ -68,6 +70,14 @@ CLOCK_QOS = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE)
 """/clock is keep-last 1 like rclcpp's ClockQoS, but reliable: a reliable writer matches both
 rclpy's best-effort TimeSource and a plain default (reliable) subscription, which a best-effort
 writer (gazebo_ros) silently never reaches. Keep-last 1 never blocks the simulation."""
+
+MODEL_STATES_RATE_HZ = 100.0
+"""/model_states goes out every 10 ms of sim time, gazebo_ros_state's 100 Hz, and at most
+MODEL_STATES_RATE_HZ times per wall-clock second (faster than real time, sim-time periods are
+skipped rather than the simulation held back). Nothing is built while nobody subscribes."""
+
+MODEL_STATES_QOS = QoSProfile(depth=1, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
+"""Keep-last 1, reliable: a subscriber always gets the newest states and never stalls the sim."""
 
 
 class _RosLogHandler(logging.Handler):
@@ -135,6 +145,11 @@ class SimulationNode(Node):
         from ._simulation_interfaces import register  # simulation_interfaces services under ~/
         register(self)
         sim.step_listeners.append(self._on_step)
+        self._model_states_pub = self.create_publisher(ModelStates, "/model_states", MODEL_STATES_QOS)
+        self._model_states_period = 1.0 / MODEL_STATES_RATE_HZ
+        self._last_model_states = -math.inf
+        self._last_model_states_wall = -math.inf
+        sim.step_listeners.append(self._on_step_model_states)
         sim.bus.add_listener(self)
         self.publish_clock(sim.world.time)
 
@@ -164,6 +179,39 @@ class SimulationNode(Node):
             wall = time.monotonic()
         self._last_clock, self._last_clock_wall = t, wall
         self.publish_clock(t)
+
+    # ------------------------------------------------------------------ /model_states
+    def _on_step_model_states(self, info: UpdateInfo) -> None:
+        """Publish every entity's world pose and twist (gazebo_msgs/ModelStates) from the sim thread."""
+        t = info.sim_time_sec
+        if t < self._last_model_states:  # reset: time went backwards
+            self._last_model_states = -math.inf
+        if t - self._last_model_states + 1e-9 < self._model_states_period:
+            return
+        wall = time.monotonic()
+        if wall - self._last_model_states_wall + 1e-6 < self._model_states_period:
+            return
+        self._last_model_states, self._last_model_states_wall = t, wall
+        if self._model_states_pub.get_subscription_count() == 0:
+            return
+        self._model_states_pub.publish(self.model_states())
+
+    def model_states(self) -> ModelStates:
+        """The current ModelStates (call on the sim thread)."""
+        msg = ModelStates()
+        world = self.sim.world
+        for name in list(world.entities):
+            try:
+                st = world.entity_state(name)
+            except WorldError:  # an entity without a body: nothing to report
+                continue
+            msg.name.append(name)
+            msg.pose.append(to_pose_msg(st.pose))
+            twist = Twist()
+            twist.linear.x, twist.linear.y, twist.linear.z = st.linear_velocity
+            twist.angular.x, twist.angular.y, twist.angular.z = st.angular_velocity
+            msg.twist.append(twist)
+        return msg
 
     # ------------------------------------------------------------------ bus mirroring
     def endpoint_added(self, ep: Endpoint) -> None:
@@ -366,6 +414,8 @@ class SimulationNode(Node):
     def destroy_node(self) -> None:
         if self._on_step in self.sim.step_listeners:
             self.sim.step_listeners.remove(self._on_step)
+        if self._on_step_model_states in self.sim.step_listeners:
+            self.sim.step_listeners.remove(self._on_step_model_states)
         self.sim.bus.remove_listener(self)
         for ep in self.sim.bus.endpoints():
             ep.sink = None
