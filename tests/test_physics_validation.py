@@ -302,3 +302,35 @@ def test_diff_drive_arc_radius_is_v_over_omega(v: float, w: float) -> None:
     assert radius == pytest.approx(R, rel=0.03)
     assert speed == pytest.approx(v, rel=0.03)
     assert yaw_rate == pytest.approx(w, rel=0.03)
+
+
+# ---------------------------------------------------------------------- divergence
+@pytest.mark.parametrize("poison", [math.nan, 1e6])
+def test_divergence_is_reported_and_isolated(poison: float) -> None:
+    """A NaN (or runaway) velocity in one entity: it is reported and reset; the others keep going untouched."""
+    box = (
+        '<model name="{n}"><pose>{x} 0 0.1 0 0 0</pose><link name="link"><inertial><mass>1</mass>'
+        "<inertia><ixx>0.0067</ixx><iyy>0.0067</iyy><izz>0.0067</izz></inertia></inertial>"
+        '<collision name="c"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision></link></model>'
+    )
+    ground = (
+        '<model name="ground"><static>true</static><link name="l"><collision name="c">'
+        "<geometry><plane><normal>0 0 1</normal><size>100 100</size></plane></geometry></collision></link></model>"
+    )
+    sim = Simulation(make_world(ground + box.format(n="victim", x=0) + box.format(n="bystander", x=2) + ball("faller", z=100.0, x=5)), rtf=0)
+    reports: list[tuple[str, str]] = []
+    sim.divergence_listeners.append(lambda name, why: reports.append((name, why)))
+    sim.step(100)
+    _, v = sim.world.joint_address("victim", "link#free")
+    sim.world.data.qvel[v + 2] = poison
+    sim.step(100)
+    assert [n for n, _ in reports] == ["victim"]
+    assert "victim" in sim.diverged and "diverged" in sim.diverged["victim"]
+    assert np.all(np.isfinite(sim.world.data.qpos)) and np.all(np.isfinite(sim.world.data.qvel))
+    # the victim is back at its spawn pose, resting; the falling ball never noticed
+    assert sim.world.entity_state("victim").pose.position == pytest.approx((0, 0, 0.1), abs=0.002)
+    assert z_of(sim, "bystander") == pytest.approx(0.1, abs=0.002)
+    t = sim.world.time
+    assert z_of(sim, "faller") == pytest.approx(100.0 - G * t * t / 2, abs=G * 0.001 * t)
+    sim.step(500)
+    assert len(reports) == 1  # reported once, and the world keeps stepping

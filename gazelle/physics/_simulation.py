@@ -182,14 +182,15 @@ class Simulation:
         w = self.world
         for _ in range(n):
             self.systems.pre_update(self._info(), w)
+            # checked right before every step: MuJoCo's solver spreads one body's NaN to every
+            # body in one step, so a NaN set from outside (a service, a system) must be caught here
+            self._check_divergence()
             w.step()
             self.iterations += 1
             info = self._info()
             self.systems.post_physics(info, w)
             for listener in self.step_listeners:
                 listener(info)
-            if self.iterations % 50 == 0:
-                self._check_divergence()
             self._record_rtf()
 
     def _record_rtf(self) -> None:
@@ -209,6 +210,9 @@ class Simulation:
 
     def _check_divergence(self) -> None:
         d = self.world.data
+        # fast path (~1 µs): a NaN/inf makes these dot products non-finite, a |qvel| >= 1e4 makes the first >= 1e8
+        if float(d.qvel @ d.qvel) < 1e8 and math.isfinite(float(d.qpos @ d.qpos)):
+            return
         if np.all(np.isfinite(d.qpos)) and np.all(np.isfinite(d.qvel)) and np.all(np.abs(d.qvel) < 1e4):
             return
         for name in self.world.diverged_entities() or ["<world>"]:

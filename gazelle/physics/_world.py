@@ -244,24 +244,24 @@ class PhysicsWorld:
             self._kinematics_stale = False
 
     def diverged_entities(self) -> list[str]:
-        """Entities whose state holds NaN/inf or absurd velocities."""
+        """Entities whose state holds NaN/inf or absurd velocities (|qvel| > 1e4)."""
+        nq = {int(mujoco.mjtJoint.mjJNT_FREE): (7, 6), int(mujoco.mjtJoint.mjJNT_BALL): (4, 3)}
         bad: list[str] = []
         for e in self.entities.values():
-            for jn in e.built.joints.values():
-                for mj in jn:
-                    jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, mj)
-                    if jid >= 0:
-                        a = self.model.jnt_qposadr[jid]
-                        if not np.all(np.isfinite(self.data.qpos[a : a + 1])):
-                            bad.append(e.name)
-                            break
+            names = [mj for jn in e.built.joints.values() for mj in jn]
             if e.built.free_joint:
-                jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, e.built.free_joint)
+                names.append(e.built.free_joint)
+            for mj in names:
+                jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, mj)
+                if jid < 0:
+                    continue
                 a, v = self.model.jnt_qposadr[jid], self.model.jnt_dofadr[jid]
-                if not np.all(np.isfinite(self.data.qpos[a : a + 7])) or np.any(
-                    np.abs(self.data.qvel[v : v + 6]) > 1e4
-                ):
+                na, nv = nq.get(int(self.model.jnt_type[jid]), (1, 1))
+                qvel = np.abs(self.data.qvel[v : v + nv])
+                # written so that NaN fails the test (NaN <= x is False)
+                if not (np.all(np.isfinite(self.data.qpos[a : a + na])) and np.all(qvel <= 1e4)):
                     bad.append(e.name)
+                    break
         return sorted(set(bad))
 
     # ------------------------------------------------------------------ queries

@@ -161,6 +161,8 @@ class SimulationInterfaces:
         self.sim = node.sim
         self.resolver = resolver or ResourceResolver()
         self.cb = ReentrantCallbackGroup()
+        # a diverged entity is reported on /rosout (the sim thread calls this once per divergence)
+        self.sim.divergence_listeners.append(lambda _name, reason: node.get_logger().error(reason))
         self.services = []
         for srv_type, name, fn in (
             (GetSimulatorFeatures, "get_simulator_features", self.get_simulator_features),
@@ -653,6 +655,8 @@ class SimulationInterfaces:
             if e.namespace:
                 parts.append(f"namespace '/{e.namespace}'")
             parts.append("spawned" if e.spawned else "from the world file")
+            if e.name in self.sim.diverged:
+                parts.append(f"DIVERGED: {self.sim.diverged[e.name]}")
             return cat, "; ".join(parts)
 
         try:
