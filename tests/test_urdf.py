@@ -8,6 +8,8 @@ import re
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, event, given, settings
+from hypothesis import strategies as st
 
 from gazelle.description import (
     Box,
@@ -267,6 +269,84 @@ def test_strict_mode_turns_warnings_into_errors() -> None:
         load(DATA / "undefined_material.urdf", strict=True)
 
 
+def test_strict_mode_still_reports_structure_errors() -> None:
+    """Promoted warnings do not hide the structure errors behind them."""
+    relaxed = load_error("strict_structure.urdf")
+    with pytest.raises(ModelLoadError) as info:
+        load(DATA / "strict_structure.urdf", strict=True)
+    strict = formatted(info.value.diagnostics)
+    expected = [
+        'strict_structure.urdf:3: error: [ATTRIBUTE_UNSUPPORTED] attribute foo="1" of <link>',
+        "strict_structure.urdf:4: error: [MATERIAL_UNDEFINED] material 'blue_QQQ' is not defined",
+        "strict_structure.urdf:7: error: [JOINT_PARENT_INVALID] joint 'j' has unknown parent link 'a_QQQ'",
+    ]
+    for line in expected:
+        assert line in strict, strict
+    assert [d.code for d in info.value.diagnostics] == [d.code for d in load_error_diagnostics("strict_structure.urdf")]
+    assert "JOINT_PARENT_INVALID" in relaxed
+
+
+def test_strict_mode_reports_inertia_warnings_after_the_structure_checks() -> None:
+    with pytest.raises(ModelLoadError) as info:
+        load(DATA / "unsupported_attributes.urdf", strict=True)
+    assert sorted({d.code.value for d in info.value.diagnostics}) == ["ATTRIBUTE_UNSUPPORTED", "INERTIA_MISSING"]
+    assert all(d.severity.value == "error" for d in info.value.diagnostics)
+
+
+def load_error_diagnostics(name: str) -> tuple:
+    with pytest.raises(ModelLoadError) as info:
+        load(DATA / name)
+    return info.value.diagnostics
+
+
+def test_unsupported_attributes_warn_with_line() -> None:
+    result = load(DATA / "unsupported_attributes.urdf")
+    text = formatted(result.diagnostics)
+    assert codes(result) == ["ATTRIBUTE_UNSUPPORTED"] * 3 + ["INERTIA_MISSING"], text
+    assert (
+        'unsupported_attributes.urdf:4: warning: [ATTRIBUTE_UNSUPPORTED] attribute foo="1" of <link> '
+        "is not supported and is ignored" in text
+    )
+    assert 'unsupported_attributes.urdf:5: warning: [ATTRIBUTE_UNSUPPORTED] attribute colour="red" of <box>' in text
+    assert 'unsupported_attributes.urdf:9: warning: [ATTRIBUTE_UNSUPPORTED] attribute degrees="true" of <origin>' in text
+    # robot version, xmlns declarations, xsi:schemaLocation and plugin attributes (raw config) do not warn
+    assert "version" not in text and "xsi" not in text and "any_attribute_here" not in text
+
+
+def test_repeated_unsupported_attribute_warns_once() -> None:
+    joints = "".join(
+        f'<link name="l{i}"/><joint name="j{i}" type="fixed"><parent link="l{i - 1}"/><child link="l{i}"/>'
+        f'<dynamics damping="1" D="1"/></joint>'
+        for i in range(1, 4)
+    )
+    result = load_string(f'<robot name="r"><link name="l0"/>{joints}</robot>')
+    (warning,) = result.diagnostics
+    assert warning.message == 'attribute D="1" of <dynamics> is not supported and is ignored (and on 2 more <dynamics>)'
+    assert warning.location is not None and warning.location.line == 1
+
+
+def test_joints_without_links_is_an_error() -> None:
+    diagnostics = load_error_diagnostics("joints_without_links.urdf")
+    text = formatted(diagnostics)
+    assert "joints_without_links.urdf:3: error: [LINK_MISSING] robot 'r' has 1 joint(s) but no links" in text
+    assert "FRAGMENT" not in text
+
+
+def test_empty_nameless_robot_is_a_fragment() -> None:
+    result = load_string("<robot>\n  <material name='m'><color rgba='1 0 0 1'/></material>\n</robot>")
+    model = result.value
+    assert isinstance(model, Model) and model.links == () and model.name == ""
+    assert formatted(result.diagnostics) == (
+        "<string>.urdf:1: warning: [FRAGMENT] <robot> defines no links (an include fragment?): "
+        "it holds 1 material(s); it cannot be simulated on its own"
+    )
+
+
+def test_nameless_robot_with_links_is_still_an_error() -> None:
+    with pytest.raises(ModelLoadError, match=r"<string>.urdf:1: error: \[ATTRIBUTE_MISSING\] <robot> has no 'name'"):
+        load_string('<robot><link name="a"/></robot>')
+
+
 def test_derived_inertia_keeps_given_mass_and_missing_mesh_path_is_none() -> None:
     model = load(DATA / "bad_inertia.urdf").value
     assert isinstance(model, Model)
@@ -371,3 +451,86 @@ def test_fuzzed_urdf_only_raises_model_load_error() -> None:
         seed=2,
         rounds=300,
     )
+
+
+# --------------------------------------------------------------------------- property-based fuzzing
+_VALUES = st.one_of(
+    st.sampled_from(_JUNK + ["inf", "-0", "1e-320", "1 2 3", "package://nope/a.stl", "model://x/y.dae", "__model__"]),
+    st.text(alphabet=st.characters(blacklist_categories=("Cs", "Cc")), max_size=12),
+    st.floats(allow_nan=True, allow_infinity=True).map(repr),
+)
+_TAGS = st.sampled_from(
+    ["link", "joint", "origin", "inertial", "inertia", "mass", "geometry", "box", "mesh", "pose", "frame",
+     "model", "include", "collision", "visual", "plugin", "gazebo", "axis", "limit", "QQQ", "xacro:macro"]
+)
+_OPS = st.lists(
+    st.tuples(
+        st.sampled_from(["set_attr", "del_attr", "set_text", "drop", "duplicate", "add_child", "rename", "move"]),
+        st.integers(min_value=0, max_value=10_000),
+        st.integers(min_value=0, max_value=10_000),
+        _VALUES,
+        _TAGS,
+    ),
+    min_size=1,
+    max_size=4,
+)
+
+
+def _apply_ops(text: str, ops: list) -> str:
+    """Structured mutations of an XML document (elements, attributes, values), serialized back."""
+    from lxml import etree
+
+    root = etree.fromstring(text.encode())
+    for op, i, j, value, tag in ops:
+        elements = [e for e in root.iter() if isinstance(e.tag, str)]
+        el = elements[i % len(elements)]
+        other = elements[j % len(elements)]
+        names = sorted(el.attrib) or ["name"]
+        if op == "set_attr":
+            el.set(names[j % len(names)] if j % 3 else tag.replace(":", "_"), value)
+        elif op == "del_attr" and el.attrib:
+            del el.attrib[names[j % len(names)]]
+        elif op == "set_text":
+            el.text = value
+        elif op == "drop" and el is not root:
+            el.getparent().remove(el)
+        elif op == "duplicate" and el is not root:
+            from copy import deepcopy
+
+            el.addnext(deepcopy(el))
+        elif op == "add_child":
+            etree.SubElement(el, tag.replace(":", "_"), {"name": value} if j % 2 else {}).text = value
+        elif op == "rename" and el is not root:
+            el.tag = tag.replace(":", "_")
+        elif op == "move" and el is not root and other is not el and el not in other.iterancestors():
+            other.append(el)
+    return etree.tostring(root, encoding="unicode")
+
+
+_FUZZ_SEEDS = {
+    "urdf": (DATA / "features.urdf").read_text(),
+    "urdf-seed": SEED_URDF.read_text(),
+    "sdf": (Path(__file__).parent / "data" / "sdf" / "chess_piece.sdf").read_text(),
+}
+
+
+@pytest.mark.parametrize("seed", sorted(_FUZZ_SEEDS))
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow], database=None)
+@given(ops=_OPS)
+def test_hypothesis_mutations_only_raise_model_load_error(seed: str, ops: list) -> None:
+    """Structured mutations of the seed robot(s) and the chess piece: the loaders either load or
+    raise their own error; nothing else escapes."""
+    text = _apply_ops(re.sub(r"<\?xml[^>]*\?>", "", _FUZZ_SEEDS[seed]), ops)
+    fmt = seed.split("-")[0]
+    try:
+        result = load_string(text, format=fmt, resolver=ResourceResolver(env={}))
+    except ModelLoadError as err:
+        assert err.diagnostics
+        event(f"error {err.first.code.value if err.first else None}")
+        return
+    event("loaded")
+    assert isinstance(result, LoadResult)
+    try:  # strict mode walks the same paths further (structure checks after promoted warnings)
+        load_string(text, format=fmt, strict=True, resolver=ResourceResolver(env={}))
+    except ModelLoadError as err:
+        assert err.diagnostics

@@ -63,6 +63,9 @@ class ErrorCode(enum.Enum):
     PLUGIN_CONFIG_INVALID = "PLUGIN_CONFIG_INVALID"
     SDF_VERSION_UNSUPPORTED = "SDF_VERSION_UNSUPPORTED"
     SRDF_REFERENCE_INVALID = "SRDF_REFERENCE_INVALID"
+    # documents
+    FRAGMENT = "FRAGMENT"
+    """A description with no links or joints (an include file of macros, properties, extensions)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -129,9 +132,11 @@ class DiagnosticSink:
     strict: bool = False
     """When true, warnings count as errors."""
     items: list[Diagnostic] = field(default_factory=list)
+    _hard_errors: int = field(default=0, repr=False)
 
     def error(self, code: ErrorCode, message: str, location: SourceLocation | None = None) -> None:
         """Report an error."""
+        self._hard_errors += 1
         self.items.append(Diagnostic(code, Severity.ERROR, message, location))
 
     def warning(self, code: ErrorCode, message: str, location: SourceLocation | None = None) -> None:
@@ -144,6 +149,15 @@ class DiagnosticSink:
         """Whether any error has been reported."""
         return any(d.severity is Severity.ERROR for d in self.items)
 
+    @property
+    def has_hard_errors(self) -> bool:
+        """Whether any error was reported as an error (not a warning promoted by strict mode).
+
+        Loaders use this to decide whether later checks can still run: in strict mode a
+        promoted warning must not hide the structure errors behind it.
+        """
+        return self._hard_errors > 0
+
     def raise_if_errors(self) -> None:
         """Raise :class:`ModelLoadError` with everything collected if there is any error."""
         if self.has_errors:
@@ -151,4 +165,5 @@ class DiagnosticSink:
 
     def extend(self, diagnostics: tuple[Diagnostic, ...] | list[Diagnostic]) -> None:
         """Add diagnostics collected elsewhere."""
+        self._hard_errors += sum(1 for d in diagnostics if d.severity is Severity.ERROR)
         self.items.extend(diagnostics)

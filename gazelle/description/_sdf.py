@@ -809,7 +809,7 @@ class _Loader:
                 joint = _replace_origin(joint, X_WM * X_MJ)
             joints.append(joint)
         if not built.links:
-            if self.sink.has_errors:
+            if self.sink.has_hard_errors:
                 return None  # its links failed and were reported
             self.sink.error(ErrorCode.LINK_MISSING, f"model '{built.name}' has no link", built.location)
             return None

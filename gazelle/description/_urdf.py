@@ -53,6 +53,7 @@ from ._model import (
 )
 from ._resources import ResourceResolver
 from ._xml import (
+    LOCATION_ATTRIBUTE,
     child_elements,
     element_location,
     local_name,
@@ -673,8 +674,14 @@ class _Reader:
 
     # ---- top level
     def document(self, root: etree._Element) -> _Document | None:
-        """All of ``<robot>``, first pass."""
-        name = self.name(root, "<robot>")
+        """All of ``<robot>``, first pass.
+
+        A ``<robot>`` with no ``<link>`` and no ``<joint>`` is an include fragment (a file of
+        xacro macros, properties, materials, ``<gazebo>`` or ``<ros2_control>`` blocks): it
+        needs no name, and its ``<gazebo reference>`` blocks name links defined elsewhere.
+        """
+        fragment = is_fragment(root)
+        name = root.get("name", "").strip() if fragment else self.name(root, "<robot>")
         doc = _Document(name or "")
         doc.materials = self.named_materials(root)
         gazebo_blocks: list[etree._Element] = []
@@ -698,7 +705,10 @@ class _Reader:
             elif tag != "material":
                 self.unsupported(child, f"<{tag}> in <robot>")
         for block in gazebo_blocks:
-            self.gazebo(block, doc)
+            if fragment and block.get("reference") is not None:
+                doc.gazebo.append(GazeboExtension(block.get("reference"), to_config(block, self.source), self.loc(block)))
+            else:
+                self.gazebo(block, doc)
         return None if name is None else doc
 
     def named_materials(self, root: etree._Element) -> dict[str, Material]:
@@ -752,6 +762,99 @@ _SHAPE_READERS: dict[str, Callable[[_Reader, etree._Element, str], Geometry | No
 }
 
 
+# --------------------------------------------------------------------------- fragments
+def is_fragment(root: etree._Element) -> bool:
+    """Whether a ``<robot>`` defines no ``<link>`` and no ``<joint>`` (an include fragment)."""
+    return root.find("link") is None and root.find("joint") is None
+
+
+def _report_fragment(root: etree._Element, doc: _Document, reader: _Reader) -> None:
+    """One FRAGMENT warning for a document that defines no links or joints."""
+    kept = []
+    if doc.materials:
+        kept.append(f"{len(doc.materials)} material(s)")
+    if doc.gazebo:
+        kept.append(f"{len(doc.gazebo)} <gazebo> block(s), for links defined elsewhere")
+    if doc.transmissions:
+        kept.append(f"{len(doc.transmissions)} transmission(s)")
+    what = ", ".join(kept) if kept else "nothing once expanded (macros or properties only)"
+    label = f"robot '{doc.name}'" if doc.name else "<robot>"
+    reader.warn(
+        ErrorCode.FRAGMENT,
+        f"{label} defines no links (an include fragment?): it holds {what}; it cannot be simulated on its own",
+        root,
+    )
+
+
+# --------------------------------------------------------------------------- attributes
+_ATTRIBUTES: dict[str, frozenset[str]] = {
+    "robot": frozenset({"name", "version"}),
+    "link": frozenset({"name", "type"}),
+    "joint": frozenset({"name", "type"}),
+    "origin": frozenset({"xyz", "rpy"}),
+    "parent": frozenset({"link"}),
+    "child": frozenset({"link"}),
+    "axis": frozenset({"xyz"}),
+    "limit": frozenset({"lower", "upper", "effort", "velocity"}),
+    "dynamics": frozenset({"damping", "friction"}),
+    "mimic": frozenset({"joint", "multiplier", "offset"}),
+    "safety_controller": frozenset({"soft_lower_limit", "soft_upper_limit", "k_position", "k_velocity"}),
+    "calibration": frozenset({"rising", "falling", "reference_position"}),
+    "inertial": frozenset(),
+    "mass": frozenset({"value"}),
+    "inertia": frozenset({"ixx", "ixy", "ixz", "iyy", "iyz", "izz"}),
+    "visual": frozenset({"name"}),
+    "collision": frozenset({"name"}),
+    "geometry": frozenset(),
+    "box": frozenset({"size"}),
+    "cylinder": frozenset({"radius", "length"}),
+    "capsule": frozenset({"radius", "length"}),
+    "sphere": frozenset({"radius"}),
+    "mesh": frozenset({"filename", "scale"}),
+    "material": frozenset({"name"}),
+    "color": frozenset({"rgba"}),
+    "texture": frozenset({"filename"}),
+    "gazebo": frozenset({"reference"}),
+}
+"""Attributes the URDF loader reads (or knowingly accepts) on each element it interprets.
+
+``link type`` and ``robot version`` come from the URDF spec/urdfdom and carry nothing to simulate.
+Namespaced attributes (``xsi:schemaLocation``, ``{ns}...``) and namespace declarations are
+extensions and never reported.
+"""
+
+_WALKED: dict[str, frozenset[str]] = {
+    "robot": frozenset({"link", "joint", "material", "gazebo"}),
+    "geometry": frozenset({"box", "cylinder", "capsule", "sphere", "mesh"}),
+    **{k: v for k, v in _CHILDREN.items()},
+}
+"""Children whose attributes are checked, per element (raw blocks such as plugins are not)."""
+
+
+def _check_attributes(root: etree._Element, reader: _Reader) -> None:
+    """ATTRIBUTE_UNSUPPORTED warnings for attributes the loader ignores on elements it reads."""
+    found: dict[tuple[str, str], list[etree._Element]] = {}
+    stack = [root]
+    while stack:
+        element = stack.pop()
+        tag = local_name(element)
+        known = _ATTRIBUTES.get(tag)
+        if known is not None:
+            for attr in element.attrib:
+                if attr != LOCATION_ATTRIBUTE and not attr.startswith("{") and attr not in known:
+                    found.setdefault((tag, attr), []).append(element)
+        walked = _WALKED.get(tag, frozenset())
+        stack.extend(reversed([c for c in child_elements(element) if local_name(c) in walked]))
+    # one warning per (element, attribute), at its first use: vendor attributes repeat on every joint
+    for (tag, attr), elements in found.items():
+        more = f" (and on {len(elements) - 1} more <{tag}>)" if len(elements) > 1 else ""
+        reader.warn(
+            ErrorCode.ATTRIBUTE_UNSUPPORTED,
+            f'attribute {attr}="{elements[0].get(attr)}" of <{tag}> is not supported and is ignored{more}',
+            elements[0],
+        )
+
+
 # --------------------------------------------------------------------------- structure
 def _check_structure(doc: _Document, reader: _Reader) -> None:
     """Parents and children exist, one parent per link, no loops, one root."""
@@ -798,8 +901,12 @@ def _check_structure(doc: _Document, reader: _Reader) -> None:
             f"robot '{doc.name}' has {len(roots)} root links ({names}); connect them with joints into one tree",
             roots[1].location,
         )
-    if not doc.links:
-        reader.sink.error(ErrorCode.LINK_MISSING, f"robot '{doc.name}' has no links", SourceLocation(reader.source))
+    if not doc.links and doc.joints:
+        reader.sink.error(
+            ErrorCode.LINK_MISSING,
+            f"robot '{doc.name}' has {len(doc.joints)} joint(s) but no links",
+            next(iter(doc.joints.values())).location,
+        )
 
 
 def _check_loops(doc: _Document, parent_of: dict[str, Joint], reader: _Reader) -> None:
@@ -922,14 +1029,20 @@ def parse_urdf(
             ErrorCode.ROOT_ELEMENT_INVALID, f"root element is <{local_name(root)}>; a URDF must have <robot>", root
         )
         return None
+    _check_attributes(root, reader)
     doc = reader.document(root)
-    if doc is None or sink.has_errors:
+    # Warnings promoted by strict mode do not stop the structure checks: only real errors do.
+    if doc is None or sink.has_hard_errors:
         return None
     _check_structure(doc, reader)
-    if sink.has_errors:
+    if sink.has_hard_errors:
         return None
+    if not doc.links:
+        _report_fragment(root, doc, reader)
     movers = {j.child: j.name for j in doc.joints.values() if j.type is not JointType.FIXED}
     links = tuple(_finish_link(d, movers.get(d.name), reader) for d in doc.links.values())
+    if sink.has_errors:
+        return None  # strict mode: warnings were promoted, every one of them is reported
     return Model(
         name=doc.name,
         links=links,
