@@ -9,6 +9,7 @@ diagnostic when the input has errors.
 
 from __future__ import annotations
 
+import dataclasses
 import os
 import re
 from pathlib import Path
@@ -161,6 +162,7 @@ def load_string(
     sink = DiagnosticSink(strict=strict)
     base_dir = str(Path(source).parent) if not source.startswith("<") else os.getcwd()
     value: Model | World | object | None
+    expanded = text
     if fmt in ("urdf", "xacro"):
         from . import _urdf, _xacro
 
@@ -193,4 +195,9 @@ def load_string(
     sink.raise_if_errors()
     if value is None:
         raise ModelLoadError(sink.items)
+    if isinstance(value, Model) and value.source_format in ("urdf", "xacro") and not value.urdf:
+        from ._xml import LOCATION_ATTRIBUTE
+
+        urdf = re.sub(rf'\s{LOCATION_ATTRIBUTE}="[^"]*"', "", expanded) if fmt == "xacro" else text
+        value = dataclasses.replace(value, urdf=urdf)
     return LoadResult(value, tuple(sink.items))  # type: ignore[arg-type]

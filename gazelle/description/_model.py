@@ -529,6 +529,8 @@ class Model:
     location: SourceLocation | None = None
     transmissions: tuple[ConfigElement, ...] = ()
     """URDF ``<transmission>`` blocks as written (kept, not simulated)."""
+    urdf: str = ""
+    """The URDF text this model was read from (xacro expanded); published as /robot_description."""
 
     def link(self, name: str) -> Link:
         """The link with this name (KeyError if absent)."""

@@ -25,6 +25,7 @@ from ..description import Model, Pose, World
 from ..systems._base import SystemContext, SystemManager, UpdateInfo
 from ..systems._bus import Bus
 from ..systems._registry import create_system
+from ..systems.robot_state import RSP_PLUGIN, RobotStatePublisher, robot_state_config
 from ._world import Entity, ErrorKind, PhysicsWorld, WorldError
 
 T = TypeVar("T")
@@ -45,7 +46,9 @@ class RtfSample:
 class Simulation:
     """A world plus systems, stepped on its own thread (or by hand, in lock-step)."""
 
-    def __init__(self, world: World, *, rtf: float | None = None, bus: Bus | None = None):
+    def __init__(
+        self, world: World, *, rtf: float | None = None, bus: Bus | None = None, robot_state_publisher: bool = True
+    ):
         """
         Args:
             world: the world description.
@@ -75,6 +78,8 @@ class Simulation:
         self._wall0 = time.monotonic()
         self._anchor = (time.monotonic(), 0.0)
         self._rtf_window: list[tuple[float, float, int]] = []
+        self.robot_state_publisher = robot_state_publisher
+        """Give every spawned robot the built-in robot_state_publisher (a model file may still opt out)."""
         self.diverged: dict[str, str] = {}
         """Entity name -> what went wrong, for entities that blew up."""
         for m in world.models:
@@ -235,14 +240,24 @@ class Simulation:
 
     # ------------------------------------------------------------------ entities
     def _configure_plugins(self, entity: Entity, into: list) -> None:
-        """Create and configure a system for each supported plugin of ``entity`` (before the recompile)."""
+        """Create and configure a system for each supported plugin of ``entity`` (before the recompile),
+        and the built-in robot_state_publisher for anything with joints or a URDF."""
         for plugin in entity.model.plugins:
+            if plugin.filename == RSP_PLUGIN:
+                continue  # configures the built-in one below
             system = create_system(plugin)
             if system is None:
                 continue
             logger = logging.getLogger(plugin.name or plugin.filename)
             system.configure(SystemContext(self.world, entity, plugin, self.bus, logger))
             into.append(system)
+        if self.robot_state_publisher and (entity.model.joints or entity.model.urdf):
+            logger = logging.getLogger(f"{entity.name}.robot_state_publisher")
+            config, plugin = robot_state_config(entity, logger)
+            if config.enabled:
+                rsp = RobotStatePublisher(config)
+                rsp.configure(SystemContext(self.world, entity, plugin, self.bus, logger))
+                into.append(rsp)
 
     def _add_entity(self, model: Model, *, name: str, pose: Pose, namespace: str, spawned: bool) -> Entity:
         pending: list = []

@@ -34,7 +34,7 @@ from std_srvs.srv import Empty
 from ..description import Model, ModelLoadError, Pose, World, load_string
 from ..physics import Simulation, WorldError
 from ..systems._base import UpdateInfo
-from ..systems._bus import Endpoint, Qos
+from ..systems._bus import Endpoint, MsgType, Qos, Transform, TransformBatch
 from ._convert import FROM_ROS, ROS_TYPES, TO_ROS, from_pose_msg, to_pose_msg, to_time
 
 WORLD_FRAMES = ("", "world", "map", "/map")
@@ -125,6 +125,7 @@ class SimulationNode(Node):
         self._lock = threading.Lock()
         self._pubs: dict[tuple[str, str], _RosEndpoint] = {}
         self._subs: dict[int, Any] = {}
+        self._static: dict[int, tuple[Transform, ...]] = {}
         self._clock_pub = self.create_publisher(Clock, "/clock", CLOCK_QOS)
         self._clock_period = 1.0 / clock_rate_hz if clock_rate_hz > 0 else 0.0
         self._last_clock = -math.inf
@@ -226,7 +227,10 @@ class SimulationNode(Node):
                 entry.users += 1
             convert = TO_ROS[ep.msg_type]
             handle = entry.handle
-            ep.sink = lambda payload: handle.publish(convert(payload))
+            if ep.msg_type is MsgType.TF_STATIC:
+                ep.sink = lambda payload: self._publish_static(handle, ep, payload)
+            else:
+                ep.sink = lambda payload: handle.publish(convert(payload))
         else:
             convert_in = FROM_ROS[ep.msg_type]
             callback = ep.callback
@@ -241,7 +245,17 @@ class SimulationNode(Node):
             with self._lock:
                 self._subs[id(ep)] = sub
 
+    def _publish_static(self, handle: Any, ep: Endpoint, batch: TransformBatch) -> None:
+        """/tf_static keeps one latched message: it must hold every robot's static transforms."""
+        with self._lock:
+            self._static[id(ep)] = batch.transforms
+            union = TransformBatch(tuple(t for ts in self._static.values() for t in ts))
+        handle.publish(TO_ROS[MsgType.TF_STATIC](union))
+
     def endpoint_removed(self, ep: Endpoint) -> None:
+        if ep.msg_type is MsgType.TF_STATIC:
+            with self._lock:
+                self._static.pop(id(ep), None)
         with self._lock:
             if ep.is_publisher:
                 key = (ep.topic, ep.msg_type.value)

@@ -10,10 +10,11 @@ from geometry_msgs.msg import Pose as PoseMsg
 from geometry_msgs.msg import Twist as TwistMsg
 from nav_msgs.msg import Odometry as OdometryMsg
 from sensor_msgs.msg import JointState as JointStateMsg
+from std_msgs.msg import String as StringMsg
 from tf2_msgs.msg import TFMessage
 
 from ..description import Pose
-from ..systems._bus import JointStates, MsgType, Odometry, Transform, TransformBatch, Twist
+from ..systems._bus import JointStates, MsgType, Odometry, Text, Transform, TransformBatch, Twist
 
 
 def to_time(sec: float) -> Time:
@@ -96,13 +97,17 @@ ROS_TYPES = {
     MsgType.TWIST: TwistMsg,
     MsgType.ODOMETRY: OdometryMsg,
     MsgType.TF: TFMessage,
+    MsgType.TF_STATIC: TFMessage,
     MsgType.JOINT_STATE: JointStateMsg,
+    MsgType.STRING: StringMsg,
 }
 """The rclpy message class for each bus message type."""
 
 TO_ROS = {
     MsgType.ODOMETRY: to_odometry_msg,
     MsgType.TF: _to_tf,
+    MsgType.TF_STATIC: _to_tf,
+    MsgType.STRING: lambda t: StringMsg(data=t.data),
     MsgType.JOINT_STATE: to_joint_state_msg,
     MsgType.TWIST: to_twist_msg,
 }

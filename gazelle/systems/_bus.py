@@ -68,13 +68,23 @@ class JointStates:
     efforts: tuple[float, ...] = ()
 
 
+@dataclass(frozen=True, slots=True)
+class Text:
+    """std_msgs/String."""
+
+    data: str
+
+
 class MsgType(enum.Enum):
     """The ROS message type each payload maps to."""
 
     TWIST = "geometry_msgs/msg/Twist"
     ODOMETRY = "nav_msgs/msg/Odometry"
     TF = "tf2_msgs/msg/TFMessage"
+    TF_STATIC = "tf2_msgs/msg/TFMessage#static"
+    """Like TF, but every publisher's transforms are kept and sent together, as tf2's static broadcaster does."""
     JOINT_STATE = "sensor_msgs/msg/JointState"
+    STRING = "std_msgs/msg/String"
 
 
 class Qos(enum.Enum):

@@ -26,8 +26,25 @@ def _diff_drive() -> System:
     return DiffDrive()
 
 
+def _classic_joint_states() -> System:
+    from .robot_state import JointStatePublisher
+
+    return JointStatePublisher(all_by_default=False)
+
+
+def _gz_joint_states() -> System:
+    from .robot_state import JointStatePublisher
+
+    return JointStatePublisher(all_by_default=True)
+
+
 _REGISTRY: dict[str, Callable[[], System]] = {
     "gazebo_ros_diff_drive": _diff_drive,
+    "gazebo_ros_joint_state_publisher": _classic_joint_states,
+    "gz-sim-joint-state-publisher-system": _gz_joint_states,
+    "gz::sim::systems::JointStatePublisher": _gz_joint_states,
+    "ignition-gazebo-joint-state-publisher-system": _gz_joint_states,
+    "ignition::gazebo::systems::JointStatePublisher": _gz_joint_states,
 }
 
 

@@ -198,6 +198,8 @@ class DiffDrive(System):
         self._tf_pub: Endpoint | None = None
         self._cmd_sub: Endpoint | None = None
         self._entity = ""
+        self.prefix = ""
+        """Prepended to every frame (the namespace by default)."""
         self._enc_pose = (0.0, 0.0, 0.0)
         self._enc_twist = (0.0, 0.0)
         self._ok = False
@@ -209,6 +211,9 @@ class DiffDrive(System):
         self.log = ctx.logger
         self.config = c = parse_config(ctx, self.log)
         self._entity = ctx.entity.name
+        from .robot_state import entity_frame_prefix  # a namespaced robot's frames: r1/odom, r1/base_link
+
+        self.prefix = entity_frame_prefix(ctx.entity, self.log)
         model = ctx.entity.model
         joint_names = {j.name for j in model.joints}
         if len(c.left_joints) != c.num_wheel_pairs or len(c.right_joints) != c.num_wheel_pairs:
@@ -244,7 +249,9 @@ class DiffDrive(System):
         if c.publish_odom_tf or c.publish_wheel_tf:
             self._tf_pub = ctx.bus.advertise(self._entity, "/tf", MsgType.TF, depth=100)
         if c.publish_odom_tf:
-            self.log.info(f"Publishing odom transforms between [{c.odometry_frame}] and [{c.robot_base_frame}]")
+            self.log.info(
+                f"Publishing odom transforms between [{self.prefix}{c.odometry_frame}] and [{self.prefix}{c.robot_base_frame}]"
+            )
         if c.publish_wheel_tf:
             self.log.info(
                 f"Publishing wheel transforms between [{c.robot_base_frame}], [{c.left_joints[0]}] and [{c.right_joints[0]}]"
@@ -331,12 +338,14 @@ class DiffDrive(System):
                 c.covariance_yaw,
             )
             self._odom_pub.publish(
-                Odometry(stamp, c.odometry_frame, c.robot_base_frame, pose, twist, tuple(cov), tuple(cov))
+                Odometry(
+                    stamp, self.prefix + c.odometry_frame, self.prefix + c.robot_base_frame, pose, twist, tuple(cov), tuple(cov)
+                )
             )
         if self._tf_pub is not None:
             tfs: list[Transform] = []
             if c.publish_odom_tf:
-                tfs.append(Transform(stamp, c.odometry_frame, c.robot_base_frame, pose))
+                tfs.append(Transform(stamp, self.prefix + c.odometry_frame, self.prefix + c.robot_base_frame, pose))
             if c.publish_wheel_tf:
                 tfs.extend(self._wheel_transforms(stamp, world))
             if tfs:
@@ -381,5 +390,5 @@ class DiffDrive(System):
             j = model.joint(w.joint)
             X_WP = world.entity_state(self._entity, j.parent).pose
             X_WC = world.entity_state(self._entity, j.child).pose
-            out.append(Transform(stamp, j.parent, j.child, X_WP.inverse() * X_WC))
+            out.append(Transform(stamp, self.prefix + j.parent, self.prefix + j.child, X_WP.inverse() * X_WC))
         return out

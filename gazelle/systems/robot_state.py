@@ -1,0 +1,226 @@
+"""robot_state_publisher built in, and the joint state publishers of Gazebo Classic and gz-sim.
+
+Every spawned robot gets a :class:`RobotStatePublisher` unless its file says otherwise
+(see :func:`robot_state_config`): ``/robot_description`` (std_msgs/String, reliable,
+transient local), ``/tf_static`` for fixed joints (transient local), and ``/tf`` for
+moving joints from the simulated joint positions, stamped with sim time, with the
+URDF's frame names. A namespaced robot's topics go under its namespace and its frames
+get the namespace as prefix (``r1/base_link``) unless ``frame_prefix`` says otherwise.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import mujoco
+
+from ..description import JointType, Model, Plugin
+from ._base import System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
+from ._bus import Endpoint, JointStates, MsgType, Qos, Text, Transform, TransformBatch, resolve_topic
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..physics._world import Entity, PhysicsWorld
+
+RSP_PLUGIN = "gazelle_robot_state_publisher"
+"""File name of the built-in robot_state_publisher, to configure or disable it in a model file."""
+
+
+def default_frame_prefix(namespace: str) -> str:
+    """``r1/`` for namespace ``/r1`` (so two robots never publish the same frame); '' without one."""
+    ns = namespace.strip("/")
+    return f"{ns}/" if ns else ""
+
+
+@dataclass(frozen=True)
+class RobotStateConfig:
+    """Parameters of the built-in robot_state_publisher (``<plugin filename="gazelle_robot_state_publisher">``)."""
+
+    enabled: bool = True
+    """``<enabled>``: false when you run your own robot_state_publisher (nothing is published twice)."""
+    publish_frequency: float = 50.0
+    """``<publish_frequency>``, Hz of sim time, for /tf of the moving joints. Default 50."""
+    frame_prefix: str | None = None
+    """``<frame_prefix>``: prepended to every frame; default: the namespace plus '/', or nothing."""
+    namespace: str = ""
+    """``<ros><namespace>``; default: the entity's namespace."""
+
+
+def robot_state_config(entity: "Entity", log: logging.Logger) -> tuple[RobotStateConfig, Plugin | None]:
+    """The configuration from the model's own ``gazelle_robot_state_publisher`` plugin block, if any."""
+    plugin = next((p for p in entity.model.plugins if p.filename == RSP_PLUGIN), None)
+    if plugin is None:
+        return RobotStateConfig(namespace=entity.namespace), None
+    cfg = plugin.config
+    ns, _ = ros_block(cfg)
+    prefix = child_text(cfg, "frame_prefix")
+    return (
+        RobotStateConfig(
+            enabled=parse_bool(cfg, "enabled", True, log),
+            publish_frequency=parse_float(cfg, "publish_frequency", 50.0, log),
+            frame_prefix=prefix,
+            namespace=ns or entity.namespace,
+        ),
+        plugin,
+    )
+
+
+def entity_frame_prefix(entity: "Entity", log: logging.Logger) -> str:
+    """The prefix of every TF frame of an entity: its RSP ``frame_prefix``, else ``<namespace>/``."""
+    config, _ = robot_state_config(entity, log)
+    return config.frame_prefix if config.frame_prefix is not None else default_frame_prefix(config.namespace)
+
+
+@dataclass
+class _MovingJoint:
+    parent_body: str
+    child_body: str
+    parent_frame: str
+    child_frame: str
+
+
+class RobotStatePublisher(System):
+    """What robot_state_publisher does, from the simulated state instead of /joint_states."""
+
+    def __init__(self, config: RobotStateConfig | None = None) -> None:
+        self.config = config or RobotStateConfig()
+        self.prefix = ""
+        self._moving: list[_MovingJoint] = []
+        self._tf: Endpoint | None = None
+        self._next = 0.0
+        self._ids: tuple[int, list[tuple[int, int]]] = (-1, [])
+
+    def configure(self, ctx: SystemContext) -> None:
+        c = self.config
+        model = ctx.entity.model
+        self.prefix = entity_frame_prefix(ctx.entity, ctx.logger)
+        owner = ctx.entity.name
+        statics: list[Transform] = []
+        for j in model.joints:
+            if j.parent == "world" or j.type is JointType.FLOATING:
+                continue  # robot_state_publisher skips floating joints
+            parent, child = self.prefix + j.parent, self.prefix + j.child
+            if j.type in (JointType.FIXED, JointType.PLANAR):  # RSP: planar becomes fixed (KDL)
+                statics.append(Transform(0.0, parent, child, j.origin * j.child_offset))
+            else:
+                self._moving.append(
+                    _MovingJoint(
+                        ctx.entity.built.bodies[j.parent], ctx.entity.built.bodies[j.child], parent, child
+                    )
+                )
+        if model.urdf:
+            desc = ctx.bus.advertise(
+                owner, resolve_topic("robot_description", c.namespace), MsgType.STRING, qos=Qos.LATCHED, depth=1
+            )
+            desc.publish(Text(model.urdf))
+        if statics:
+            static = ctx.bus.advertise(owner, "/tf_static", MsgType.TF_STATIC, qos=Qos.LATCHED, depth=1)
+            static.publish(TransformBatch(tuple(statics)))
+        if self._moving:
+            self._tf = ctx.bus.advertise(owner, "/tf", MsgType.TF, depth=100)
+        ctx.logger.info(
+            f"robot_state_publisher: {len(statics)} fixed and {len(self._moving)} moving joints, "
+            f"frame prefix '{self.prefix}'"
+        )
+
+    def _body_ids(self, world: "PhysicsWorld") -> list[tuple[int, int]]:
+        gen, ids = self._ids
+        if gen != world.generation:
+            name2id = lambda n: mujoco.mj_name2id(world.model, mujoco.mjtObj.mjOBJ_BODY, n)  # noqa: E731
+            ids = [(name2id(m.parent_body), name2id(m.child_body)) for m in self._moving]
+            self._ids = (world.generation, ids)
+        return ids
+
+    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        self._next = 0.0
+
+    def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        if self._tf is None or info.paused or info.sim_time_sec + 1e-9 < self._next:
+            return
+        period = 1.0 / self.config.publish_frequency if self.config.publish_frequency > 0 else 0.0
+        self._next = info.sim_time_sec + period if math.isfinite(period) else math.inf
+        out = []
+        for m, (pid, cid) in zip(self._moving, self._body_ids(world)):
+            X_WP, X_WC = world.body_pose(pid), world.body_pose(cid)
+            out.append(Transform(info.sim_time_sec, m.parent_frame, m.child_frame, X_WP.inverse() * X_WC))
+        self._tf.publish(TransformBatch(tuple(out)))
+
+
+# --------------------------------------------------------------------------- joint states
+@dataclass(frozen=True)
+class JointStateConfig:
+    """``libgazebo_ros_joint_state_publisher.so`` / gz-sim ``JointStatePublisher`` parameters."""
+
+    joint_names: tuple[str, ...] = ()
+    """``<joint_name>`` (repeatable). Classic: required. gz-sim: default all joints."""
+    update_rate: float = 100.0
+    """``<update_rate>``, Hz of sim time; default 100 (classic) / every step's 50 Hz cap (gz)."""
+    topic: str = "joint_states"
+    """``<topic>`` (gz-sim); classic publishes ``joint_states`` under ``<ros><namespace>``."""
+    namespace: str = ""
+
+
+class JointStatePublisher(System):
+    """Publishes sensor_msgs/JointState (name, position, velocity; effort empty) in sim time."""
+
+    def __init__(self, *, all_by_default: bool) -> None:
+        self.all_by_default = all_by_default
+        self.config = JointStateConfig()
+        self._pub: Endpoint | None = None
+        self._joints: list[str] = []
+        self._next = 0.0
+        self._addr: tuple[int, list[tuple[int, int]]] = (-1, [])
+
+    def configure(self, ctx: SystemContext) -> None:
+        log = ctx.logger
+        cfg = ctx.plugin.config if ctx.plugin is not None else None
+        model: Model = ctx.entity.model
+        names = tuple(el.text.strip() for el in cfg.findall("joint_name")) if cfg is not None else ()
+        ns, remaps = ros_block(cfg) if cfg is not None else ("", {})
+        rate = parse_float(cfg, "update_rate", 100.0, log) if cfg is not None else 100.0
+        if cfg is not None and cfg.find("update_rate") is None and not self.all_by_default:
+            log.info(f"Missing <update_rate>, defaults to {rate:f}")
+        topic = (child_text(cfg, "topic") if cfg is not None else None) or "joint_states"
+        self.config = JointStateConfig(names, rate, topic, ns or ctx.entity.namespace)
+        movable = [j.name for j in model.joints if j.type not in (JointType.FIXED, JointType.FLOATING)]
+        wanted = list(names) if names else (movable if self.all_by_default else [])
+        if not wanted:
+            log.error("Plugin missing <joint_name>s")
+            return
+        for jn in wanted:
+            if jn not in movable:
+                log.error(f"Joint {jn} does not exist!")
+                continue
+            self._joints.append(jn)
+            log.info(f"Going to publish joint [{jn}]")
+        if not self._joints:
+            log.error("No joints found.")
+            return
+        self._pub = ctx.bus.advertise(
+            ctx.entity.name, resolve_topic(topic, self.config.namespace, remaps), MsgType.JOINT_STATE, depth=1000
+        )
+        self._entity = ctx.entity.name
+
+    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        self._next = 0.0
+
+    def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        if self._pub is None or info.paused or info.sim_time_sec + 1e-9 < self._next:
+            return
+        rate = self.config.update_rate
+        self._next = info.sim_time_sec + (1.0 / rate if rate > 0 else 0.0)
+        gen, addrs = self._addr
+        if gen != world.generation:
+            addrs = [world.joint_address(self._entity, jn) for jn in self._joints]
+            self._addr = (world.generation, addrs)
+        qpos, qvel = world.data.qpos, world.data.qvel
+        self._pub.publish(
+            JointStates(
+                info.sim_time_sec,
+                tuple(self._joints),
+                tuple(float(qpos[a]) for a, _ in addrs),
+                tuple(float(qvel[d]) for _, d in addrs),
+            )
+        )
