@@ -117,9 +117,10 @@ class Proc:
         return self.wait(timeout)
 
 
-def start(cmd: list[str], name: str, env: dict[str, str] | None = None) -> Proc:
+def start(cmd: list[str], name: str, env: dict[str, str] | None = None, *, stdin: bool = False) -> Proc:
     p = subprocess.Popen(
         cmd,
+        stdin=subprocess.PIPE if stdin else subprocess.DEVNULL,
         stdout=subprocess.PIPE,
         stderr=subprocess.STDOUT,
         text=True,
@@ -128,7 +129,26 @@ def start(cmd: list[str], name: str, env: dict[str, str] | None = None) -> Proc:
     )
     proc = Proc(p, name)
     proc.start_reader()
+    _STARTED.append(proc)
     return proc
+
+
+_STARTED: list[Proc] = []
+
+
+@pytest.fixture(autouse=True)
+def _no_leftover_processes() -> Iterator[None]:
+    """Whatever a test started and left running is stopped after it (Ctrl-C, then kill)."""
+    yield
+    while _STARTED:
+        proc = _STARTED.pop()
+        if proc.popen.poll() is None:
+            proc.popen.send_signal(signal.SIGINT)
+            try:
+                proc.popen.wait(10)
+            except subprocess.TimeoutExpired:
+                proc.popen.kill()
+                proc.popen.wait()
 
 
 @pytest.fixture

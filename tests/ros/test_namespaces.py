@@ -1,0 +1,106 @@
+"""Three namespaced seed robots in one world, each driven by its own plain rclpy process.
+
+Their odometry and TF trees stay separate: a separate TF listener process (rclpy and
+tf2_msgs only, no tf2_ros) composes the transforms itself and finds each robot's
+base_link where ground truth says it is.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import sys
+import threading
+from pathlib import Path
+
+from nav_msgs.msg import Odometry
+
+from .conftest import GAZELLE, SEED_XACRO, SQUARE_NODE, start, wait_for, yaw_of
+
+LISTENER = Path(__file__).with_name("tf_listener.py")
+ROBOTS = {"r1": 0.0, "r2": 1.2, "r3": 2.4}  # namespace -> spawn y
+
+
+def test_three_namespaced_robots_keep_separate_odometry_and_tf(sim_factory, ros_client):
+    sim = sim_factory()
+    for ns, y in ROBOTS.items():
+        spawn = start(
+            [*GAZELLE, "spawn", "-entity", ns, "-robot_namespace", ns, "-file", str(SEED_XACRO), "-y", str(y)],
+            f"spawn {ns}",
+        )
+        assert spawn.wait(60) == 0, spawn.output
+        sim.wait_line(f"Subscribed to [/{ns}/cmd_vel]", 10)
+        sim.wait_line(f"Advertise odometry on [/{ns}/odom]", 10)
+
+    odom: dict[str, Odometry] = {}
+    lock = threading.Lock()
+    for ns in ROBOTS:
+        def on_odom(msg: Odometry, ns: str = ns) -> None:
+            with lock:
+                odom[ns] = msg
+
+        ros_client.node.create_subscription(Odometry, f"/{ns}/odom", on_odom, 10)
+
+    listener = start([sys.executable, str(LISTENER)], "tf_listener", stdin=True)
+    listener.wait_line("READY", 30)
+
+    drivers = [
+        start(
+            [sys.executable, str(SQUARE_NODE), "--ros-args", "-r", f"/cmd_vel:=/{ns}/cmd_vel", "-r", f"__node:=square_{ns}",
+             "-p", "max_sides:=1"],
+            f"driver {ns}",
+        )
+        for ns in ROBOTS
+    ]
+    for d in drivers:
+        assert d.wait(120) == 0, d.output
+    for ns in ROBOTS:
+        wait_for(lambda ns=ns: abs(ros_client.entity_state(ns).state.twist.angular.z) < 1e-3, 30, f"{ns} at rest")
+
+    truth = {ns: ros_client.entity_state(ns).state.pose for ns in ROBOTS}
+    # every robot moved (its own driver reached it) and they did not move together
+    for ns, y in ROBOTS.items():
+        p = truth[ns].position
+        assert math.hypot(p.x, p.y - y) > 0.9, f"{ns} did not drive: {p}"
+
+    with lock:
+        got = dict(odom)
+    for ns in ROBOTS:
+        msg = got[ns]
+        assert msg.header.frame_id == f"{ns}/odom" and msg.child_frame_id == f"{ns}/base_link"
+        p = msg.pose.pose.position
+        assert math.hypot(p.x - truth[ns].position.x, p.y - truth[ns].position.y) < 1e-3
+
+    # ask the listener, a separate process, to compose each robot's chain
+    def ask(query: str) -> dict:
+        assert listener.popen.stdin is not None
+        n = len(listener.lines)
+        listener.popen.stdin.write(query + "\n")
+        listener.popen.stdin.flush()
+        line = wait_for(lambda: next((ln for ln in listener.lines[n:] if ln.startswith("{")), None), 10, "listener answer")
+        return json.loads(line)
+
+    for ns in ROBOTS:
+        ans = wait_for(
+            lambda ns=ns: (a := ask(f"{ns}/odom {ns}/base_link {ns}/left_wheel {ns}/right_wheel"))[f"{ns}/left_wheel"]
+            and a,
+            20,
+            f"{ns}'s TF tree",
+        )
+        x, y, z, qw, qx, qy, qz = ans[f"{ns}/base_link"]
+        t = truth[ns]
+        assert math.dist((x, y, z), (t.position.x, t.position.y, t.position.z)) < 1e-3, (ns, ans, t)
+
+        class Q:
+            pass
+
+        q = Q()
+        q.w, q.x, q.y, q.z = qw, qx, qy, qz
+        assert abs(math.remainder(yaw_of(q) - yaw_of(t.orientation), math.tau)) < 1e-3
+        # wheels hang off this robot's own base_link, 0.17 m to each side of it
+        lw, rw = ans[f"{ns}/left_wheel"], ans[f"{ns}/right_wheel"]
+        assert abs(math.dist(lw[:2], rw[:2]) - 0.34) < 1e-3
+        frames = ans["__frames__"]
+    assert not {"base_link", "odom", "left_wheel"} & set(frames), f"unprefixed frames published: {frames}"
+    for ns in ROBOTS:
+        assert {f"{ns}/base_link", f"{ns}/left_wheel", f"{ns}/right_wheel"} <= set(frames)
