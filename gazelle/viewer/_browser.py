@@ -1,0 +1,94 @@
+"""A headless browser on the viewer: Debian's chromium driven by Playwright (snapshots, tests, bench).
+
+Never a downloaded browser: we launch the system ``chromium`` with the flags that keep it
+off the network and out of the GPU.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import shutil
+import tempfile
+import time
+from pathlib import Path
+from typing import Any, Iterator
+
+CHROMIUM_CANDIDATES = ("/usr/bin/chromium", "/usr/bin/chromium-browser")
+CHROMIUM_ARGS = (
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+)
+VIEWPORT = {"width": 1280, "height": 800}
+
+
+class BrowserUnavailable(RuntimeError):
+    """No system chromium, or no playwright package."""
+
+
+def find_chromium() -> str | None:
+    """The system chromium's path ($GAZELLE_CHROMIUM overrides), or None."""
+    env = os.environ.get("GAZELLE_CHROMIUM")
+    if env:
+        return env if Path(env).exists() else None
+    for c in CHROMIUM_CANDIDATES:
+        if Path(c).exists():
+            return c
+    return shutil.which("chromium")
+
+
+@contextlib.contextmanager
+def open_viewer_page(url: str, *, timeout_sec: float = 30.0) -> Iterator[Any]:
+    """A Playwright page showing the viewer at ``url`` with its scene loaded (sync API).
+
+    Raises:
+        BrowserUnavailable: no chromium or playwright.
+        TimeoutError: the viewer did not render within ``timeout_sec``.
+    """
+    exe = find_chromium()
+    if exe is None:
+        raise BrowserUnavailable("no system chromium (apt-get install chromium; scripts/setup.sh does it)")
+    try:
+        from playwright.sync_api import sync_playwright
+    except ImportError as err:  # pragma: no cover - pinned in requirements.txt
+        raise BrowserUnavailable("the playwright package is not installed") from err
+    with tempfile.TemporaryDirectory(prefix="gazelle-chromium-") as profile, sync_playwright() as pw:
+        ctx = pw.chromium.launch_persistent_context(
+            profile,
+            executable_path=exe,
+            headless=True,
+            args=list(CHROMIUM_ARGS),
+            viewport=VIEWPORT,
+        )
+        try:
+            page = ctx.pages[0] if ctx.pages else ctx.new_page()
+            page.goto(url, timeout=timeout_sec * 1000)
+            wait_rendered(page, timeout_sec)
+            yield page
+        finally:
+            ctx.close()
+
+
+def wait_rendered(page: Any, timeout_sec: float) -> None:
+    """Wait until the 3D canvas and the control panel exist and the scene had a moment to draw."""
+    page.wait_for_selector("canvas", timeout=timeout_sec * 1000)
+    page.get_by_text("Sim time").first.wait_for(timeout=timeout_sec * 1000)
+    # the first frames after connecting stream the scene: wait for two animation frames
+    page.evaluate("() => new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))")
+
+
+def screenshot(url: str, out: Path, *, settle_sec: float = 1.0, timeout_sec: float = 30.0) -> Path:
+    """Write a PNG of the viewer at ``url``; returns ``out``."""
+    out.parent.mkdir(parents=True, exist_ok=True)
+    with open_viewer_page(url, timeout_sec=timeout_sec) as page:
+        deadline = time.monotonic() + settle_sec
+        while time.monotonic() < deadline:  # let meshes stream in and poses settle
+            page.wait_for_timeout(100)
+        page.screenshot(path=str(out))
+    return out

@@ -1,0 +1,373 @@
+"""The browser viewer: a viser server showing and controlling a running :class:`Simulation`.
+
+Threads: viser serves the browser on its own threads; one viewer thread polls the
+world at ``rate_hz`` through ``sim.call`` (one call per frame returns every body
+pose, the sim time and the entity set), so MuJoCo data is only ever read on the
+simulation thread and the frame rate is independent of the physics rate. GUI
+callbacks (buttons) also hand their work to the sim thread with ``sim.call``.
+
+Driving: the viewer publishes ``cmd_vel`` the way teleop_twist_keyboard does,
+by delivering a Twist to every cmd_vel subscription on the bus owned by the
+selected entity (exactly what the ROS bridge does with a received message).
+"""
+
+from __future__ import annotations
+
+import logging
+import threading
+import time
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import viser
+
+from ..systems._bus import MsgType, Twist
+from ._geometry import rgba_to_rgb255, to_trimesh
+
+if TYPE_CHECKING:
+    from ..physics import Simulation
+
+_log = logging.getLogger("gazelle.viewer")
+
+DEFAULT_HOST = "127.0.0.1"
+DEFAULT_PORT = 8080
+POSE_RATE_HZ = 30.0
+GUI_RATE_HZ = 10.0
+LINEAR_STEP = 0.5
+"""m/s per drive button press (teleop_twist_keyboard's default ``speed``)."""
+ANGULAR_STEP = 1.0
+"""rad/s per turn button press (teleop_twist_keyboard's default ``turn``)."""
+CAMERA_POSITION = (1.6, -1.6, 1.2)
+CAMERA_LOOK_AT = (0.0, 0.0, 0.05)
+CAMERA_FOV_RAD = 50.0 * np.pi / 180.0
+NO_SELECTION = "(none)"
+COLLISION_RGB = (255, 120, 0)
+
+
+@dataclass
+class _LinkNode:
+    frame: Any
+    pose: tuple[tuple[float, ...], tuple[float, ...]] | None = None
+
+
+@dataclass
+class _EntityNodes:
+    key: tuple[str, int]
+    root: Any
+    links: dict[str, _LinkNode] = field(default_factory=dict)
+    collisions: list[Any] = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class Snapshot:
+    """What one sim-thread call returns for a frame."""
+
+    time: float
+    paused: bool
+    rtf: float
+    entities: dict[str, int]
+    """name -> generation it was added in (a re-spawn under the same name is a new entity)."""
+    poses: dict[str, dict[str, tuple[tuple[float, ...], tuple[float, ...]]]]
+    """entity -> link -> (position, wxyz) in the world."""
+
+
+def _safe(name: str) -> str:
+    return name.replace("/", "_").replace(" ", "_") or "_"
+
+
+class Viewer:
+    """A viser server mirroring a simulation; :meth:`start` it, :meth:`stop` it."""
+
+    def __init__(
+        self,
+        sim: "Simulation",
+        *,
+        host: str = DEFAULT_HOST,
+        port: int = DEFAULT_PORT,
+        rate_hz: float = POSE_RATE_HZ,
+    ):
+        self.sim = sim
+        self.rate_hz = rate_hz
+        self.server = viser.ViserServer(host=host, port=port, verbose=False)
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
+        self._nodes: dict[str, _EntityNodes] = {}
+        self._body_cache: tuple[int, list[tuple[str, str, int]]] = (-1, [])
+        self._lock = threading.Lock()
+        self._last: Snapshot | None = None
+        self._wall0 = time.monotonic()
+        self.frames = 0
+        """Frames pushed so far (for tests and the bench)."""
+        self._setup_scene()
+        self._setup_gui()
+
+    # ------------------------------------------------------------------ lifecycle
+    @property
+    def url(self) -> str:
+        host = self.server.get_host()
+        return f"http://{'127.0.0.1' if host in ('0.0.0.0', '') else host}:{self.server.get_port()}"
+
+    def start(self) -> None:
+        self._stop.clear()
+        self._thread = threading.Thread(target=self._loop, name="gazelle-viewer", daemon=True)
+        self._thread.start()
+
+    def stop(self) -> None:
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join(5.0)
+        self.server.stop()
+
+    # ------------------------------------------------------------------ scene
+    def _setup_scene(self) -> None:
+        s = self.server.scene
+        s.set_up_direction("+z")
+        # no HDRI: it would be fetched from a CDN, and gazelle works offline
+        s.configure_environment_map(hdri=None)
+        s.configure_default_lights(enabled=True, cast_shadow=False)
+        s.add_grid("/grid", width=20.0, height=20.0, cell_size=0.5, section_size=1.0, plane="xy")
+        s.add_frame("/world_axes", axes_length=0.5, axes_radius=0.01)
+        cam = self.server.initial_camera
+        cam.position = CAMERA_POSITION
+        cam.look_at = CAMERA_LOOK_AT
+        cam.up = (0.0, 0.0, 1.0)
+        cam.fov = CAMERA_FOV_RAD
+
+    def _add_entity(self, name: str, generation: int) -> None:
+        e = self.sim.world.entities.get(name)
+        if e is None:
+            return
+        s = self.server.scene
+        root_name = f"/entities/{_safe(name)}"
+        nodes = _EntityNodes((name, generation), s.add_frame(root_name, show_axes=False))
+        show_tf = bool(self._tf_box.value)
+        show_col = bool(self._col_box.value)
+        for link in e.model.links:
+            if link.name not in e.built.bodies:
+                continue
+            base = f"{root_name}/{_safe(link.name)}"
+            frame = s.add_frame(base, show_axes=show_tf, axes_length=0.1, axes_radius=0.004)
+            nodes.links[link.name] = _LinkNode(frame)
+            for i, vis in enumerate(link.visuals):
+                self._add_geometry(
+                    f"{base}/visual_{i}", vis.geometry, vis.pose, vis.material.diffuse if vis.material else None
+                )
+            for i, col in enumerate(link.collisions):
+                h = self._add_geometry(f"{base}/collision_{i}", col.geometry, col.pose, None, collision=True)
+                if h is not None:
+                    h.visible = show_col
+                    nodes.collisions.append(h)
+        self._nodes[name] = nodes
+
+    def _add_geometry(self, name: str, geometry: object, pose: Any, rgba: Any, *, collision: bool = False) -> Any:
+        tm = to_trimesh(geometry)
+        if tm is None:
+            return None
+        kw = dict(position=pose.position, wxyz=pose.orientation)
+        s = self.server.scene
+        if collision:
+            return s.add_mesh_simple(name, tm.vertices, tm.faces, color=COLLISION_RGB, wireframe=True, **kw)
+        if rgba is None and tm.source is not None:
+            return s.add_mesh_trimesh(name, tm.source, **kw)
+        opacity = None if rgba is None or rgba[3] >= 1.0 else float(rgba[3])
+        return s.add_mesh_simple(name, tm.vertices, tm.faces, color=rgba_to_rgb255(rgba), opacity=opacity, **kw)
+
+    def _remove_entity(self, name: str) -> None:
+        nodes = self._nodes.pop(name, None)
+        if nodes is not None:
+            nodes.root.remove()
+
+    # ------------------------------------------------------------------ gui
+    def _setup_gui(self) -> None:
+        g = self.server.gui
+        with g.add_folder("Simulation"):
+            self._play = g.add_button("Pause", hint="Pause or resume physics")
+            self._step_btn = g.add_button("Step", hint="One physics step (while paused)")
+            self._reset_btn = g.add_button("Reset", hint="Reset time and state; removes spawned entities")
+            self._time_text = g.add_text("Sim time", initial_value="0.000 s", disabled=True)
+            self._real_text = g.add_text("Real time", initial_value="0.0 s", disabled=True)
+            self._rtf_text = g.add_text("RTF", initial_value="-", disabled=True)
+        with g.add_folder("Entities"):
+            self._entity_dd = g.add_dropdown("Entity", options=[NO_SELECTION], initial_value=NO_SELECTION)
+            self._pose_text = g.add_text("Pose", initial_value="", disabled=True)
+            self._delete_btn = g.add_button("Delete entity", color="red")
+        with g.add_folder("Drive"):
+            self._drive_text = g.add_text("cmd_vel", initial_value="select a diff-drive robot", disabled=True)
+            self._fwd = g.add_button("Forward")
+            self._back = g.add_button("Back")
+            self._left = g.add_button("Left")
+            self._right = g.add_button("Right")
+            self._stop_btn = g.add_button("Stop")
+        with g.add_folder("Overlays"):
+            self._tf_box = g.add_checkbox("TF frames", initial_value=False)
+            self._col_box = g.add_checkbox("Collision geometry", initial_value=False)
+
+        self._play.on_click(lambda _e: self._toggle_pause())
+        self._step_btn.on_click(lambda _e: self._step())
+        self._reset_btn.on_click(lambda _e: self.sim.reset(time_=True, state=True, spawned=False))
+        self._delete_btn.on_click(lambda _e: self._delete_selected())
+        for btn, lin, ang in (
+            (self._fwd, LINEAR_STEP, 0.0),
+            (self._back, -LINEAR_STEP, 0.0),
+            (self._left, 0.0, ANGULAR_STEP),
+            (self._right, 0.0, -ANGULAR_STEP),
+            (self._stop_btn, 0.0, 0.0),
+        ):
+            btn.on_click(lambda _e, lin=lin, ang=ang: self.drive(lin, ang))
+        self._tf_box.on_update(lambda _e: self._set_overlays())
+        self._col_box.on_update(lambda _e: self._set_overlays())
+
+    def _toggle_pause(self) -> None:
+        paused, t = self.sim.call(self._flip_paused)
+        self._time_text.value = f"{t:.3f} s"
+        self._play.label = "Play" if paused else "Pause"
+
+    def _flip_paused(self) -> tuple[bool, float]:
+        self.sim.paused = not self.sim.paused
+        return self.sim.paused, self.sim.world.time
+
+    def _step(self) -> None:
+        def do() -> None:
+            if self.sim.paused:
+                self.sim.step(1)
+
+        self.sim.call(do)
+
+    def _delete_selected(self) -> None:
+        name = self._entity_dd.value
+        if name == NO_SELECTION:
+            return
+        try:
+            self.sim.delete(name)
+        except Exception as err:  # noqa: BLE001 - shown to the user, never fatal
+            _log.warning(f"viewer: cannot delete '{name}': {err}")
+
+    def drive(self, linear_x: float, angular_z: float, entity: str | None = None) -> int:
+        """Publish a Twist to the cmd_vel subscriptions of ``entity`` (default: the selected one).
+
+        Returns how many subscriptions received it (0: the entity has no diff drive).
+        """
+        name = entity if entity is not None else self._entity_dd.value
+        twist = Twist((float(linear_x), 0.0, 0.0), (0.0, 0.0, float(angular_z)))
+        n = 0
+        for ep in self.sim.bus.endpoints():
+            if ep.owner == name and not ep.is_publisher and ep.msg_type == MsgType.TWIST and ep.callback is not None:
+                ep.callback(twist)
+                n += 1
+        self._drive_text.value = (
+            f"{name}: linear {linear_x:+.2f} m/s, angular {angular_z:+.2f} rad/s" if n else f"{name}: no cmd_vel subscriber"
+        )
+        return n
+
+    def _set_overlays(self) -> None:
+        tf, col = bool(self._tf_box.value), bool(self._col_box.value)
+        with self.server.atomic():
+            for nodes in self._nodes.values():
+                for ln in nodes.links.values():
+                    ln.frame.show_axes = tf
+                for h in nodes.collisions:
+                    h.visible = col
+
+    # ------------------------------------------------------------------ frames
+    def _snapshot(self) -> Snapshot:
+        """Runs on the sim thread: every link pose, the time and the entity set."""
+        sim, w = self.sim, self.sim.world
+        gen, bodies = self._body_cache
+        if gen != w.generation:
+            bodies = []
+            for e in w.entities.values():
+                for link in e.model.links:
+                    if link.name in e.built.bodies:
+                        bodies.append((e.name, link.name, w.body_id(e.name, link.name)))
+            self._body_cache = (w.generation, bodies)
+        poses: dict[str, dict[str, tuple[tuple[float, ...], tuple[float, ...]]]] = {}
+        for ename, lname, bid in bodies:
+            p = w.body_pose(bid)
+            poses.setdefault(ename, {})[lname] = (p.position, p.orientation)
+        return Snapshot(
+            time=w.time,
+            paused=sim.paused,
+            rtf=sim.measured_rtf().rtf,
+            entities={e.name: e.generation_added for e in w.entities.values()},
+            poses=poses,
+        )
+
+    def update(self) -> Snapshot | None:
+        """Pull one snapshot and push it to the browsers (the viewer thread calls this at ``rate_hz``)."""
+        try:
+            snap = self.sim.call(self._snapshot, timeout=5.0)
+        except TimeoutError:
+            return None
+        # entities: added, removed, or re-spawned under the same name
+        for name in [n for n, nodes in self._nodes.items() if snap.entities.get(n) != nodes.key[1]]:
+            self._remove_entity(name)
+        with self.server.atomic():
+            for name, gen in snap.entities.items():
+                if name not in self._nodes:
+                    self._add_entity(name, gen)
+            for name, links in snap.poses.items():
+                nodes = self._nodes.get(name)
+                if nodes is None:
+                    continue
+                for lname, pose in links.items():
+                    ln = nodes.links.get(lname)
+                    if ln is None or ln.pose == pose:
+                        continue  # unchanged poses (static models, paused sim) cost nothing
+                    ln.pose = pose
+                    ln.frame.position = pose[0]
+                    ln.frame.wxyz = pose[1]
+        names = [NO_SELECTION, *sorted(snap.entities)]
+        if tuple(self._entity_dd.options) != tuple(names):
+            current = self._entity_dd.value
+            self._entity_dd.options = names
+            self._entity_dd.value = current if current in names else NO_SELECTION
+        self._last = snap
+        self.frames += 1
+        return snap
+
+    def _update_gui(self, snap: Snapshot) -> None:
+        self._time_text.value = f"{snap.time:.3f} s"
+        self._real_text.value = f"{time.monotonic() - self._wall0:.1f} s"
+        self._rtf_text.value = "paused" if snap.paused else f"{snap.rtf:.2f}"
+        label = "Play" if snap.paused else "Pause"
+        if self._play.label != label:
+            self._play.label = label
+        sel = self._entity_dd.value
+        links = snap.poses.get(sel)
+        if sel != NO_SELECTION and links:
+            e = self.sim.world.entities.get(sel)
+            root = e.built.root_body if e is not None else None
+            link = next((ln for ln, b in (e.built.bodies.items() if e else ()) if b == root), next(iter(links)))
+            pos, q = links.get(link, next(iter(links.values())))
+            yaw = np.degrees(np.arctan2(2 * (q[0] * q[3] + q[1] * q[2]), 1 - 2 * (q[2] ** 2 + q[3] ** 2)))
+            self._pose_text.value = f"x {pos[0]:.3f}  y {pos[1]:.3f}  z {pos[2]:.3f}  yaw {yaw:.1f}°"
+        else:
+            self._pose_text.value = ""
+
+    def _loop(self) -> None:
+        period = 1.0 / self.rate_hz
+        gui_period = 1.0 / GUI_RATE_HZ
+        next_gui = 0.0
+        next_frame = time.monotonic()
+        while not self._stop.is_set():
+            if not self.server.get_clients():
+                # nobody watching: cost the simulation nothing (a client that connects gets
+                # the whole scene on the next frame)
+                self._stop.wait(period)
+                next_frame = time.monotonic()
+                continue
+            try:
+                snap = self.update()
+                now = time.monotonic()
+                if snap is not None and now >= next_gui:
+                    self._update_gui(snap)
+                    next_gui = now + gui_period
+            except Exception:  # noqa: BLE001 - logged; the viewer keeps going
+                _log.exception("viewer: frame update failed")
+            next_frame += period
+            delay = next_frame - time.monotonic()
+            if delay < 0:
+                next_frame = time.monotonic()
+                delay = 0.0
+            self._stop.wait(delay)
