@@ -38,11 +38,27 @@ def sim(
     clock_rate: float = typer.Option(100.0, "--clock-rate", help="/clock publish rate in sim-time Hz (0 = every step); default 100."),
     paused: bool = typer.Option(False, "--paused", help="Start paused (unpause with /unpause_physics)."),
     arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
+    no_viewer: bool = typer.Option(False, "--no-viewer", help="Do not serve the browser viewer."),
+    viewer_host: str = typer.Option(
+        "127.0.0.1", "--viewer-host", help="Interface the viewer binds to (0.0.0.0: every interface; think twice)."
+    ),
+    viewer_port: int = typer.Option(8080, "--viewer-port", help="Viewer port; the next free one if taken; 0 = any free port."),
 ) -> None:
-    """Run a simulation server: /clock, /spawn_entity, /delete_entity and every plugin's topics."""
+    """Run a simulation server: /clock, /spawn_entity, /delete_entity and every plugin's topics, and the browser viewer."""
     from ._sim import run_sim
 
-    raise typer.Exit(run_sim(world, rtf=rtf, clock_rate_hz=clock_rate, paused=paused, args=_parse_args(arg)))
+    raise typer.Exit(
+        run_sim(
+            world,
+            rtf=rtf,
+            clock_rate_hz=clock_rate,
+            paused=paused,
+            args=_parse_args(arg),
+            viewer=not no_viewer,
+            viewer_host=viewer_host,
+            viewer_port=viewer_port,
+        )
+    )
 
 
 @app.command(

@@ -38,7 +38,17 @@ def load_world(path: Path | None, args: dict[str, str]) -> World:
     raise ModelLoadError(result.diagnostics)
 
 
-def run_sim(path: Path | None, *, rtf: float | None, clock_rate_hz: float, paused: bool, args: dict[str, str]) -> int:
+def run_sim(
+    path: Path | None,
+    *,
+    rtf: float | None,
+    clock_rate_hz: float,
+    paused: bool,
+    args: dict[str, str],
+    viewer: bool = False,
+    viewer_host: str = "127.0.0.1",
+    viewer_port: int = 8080,
+) -> int:
     """Run the server; returns the process exit code."""
     logging.basicConfig(level=logging.INFO, format="[%(levelname)s] [%(name)s]: %(message)s", stream=sys.stderr)
     try:
@@ -67,6 +77,17 @@ def run_sim(path: Path | None, *, rtf: float | None, clock_rate_hz: float, pause
     signal.signal(signal.SIGINT, on_signal)
     signal.signal(signal.SIGTERM, on_signal)
     sim.start()
+    view = None
+    if viewer:
+        from ..viewer import Viewer
+
+        try:
+            view = Viewer(sim, host=viewer_host, port=viewer_port)
+        except OSError as err:
+            print(f"gazelle: viewer not started: {err}", file=sys.stderr)
+        else:
+            view.start()
+            print(f"gazelle: viewer at {view.url}", flush=True)
     target = "as fast as possible" if sim.rtf == 0 else f"{sim.rtf:g}"
     print(
         f"gazelle: ready: world '{world.name}' ({len(sim.world.entities)} entities), "
@@ -79,6 +100,8 @@ def run_sim(path: Path | None, *, rtf: float | None, clock_rate_hz: float, pause
             print("gazelle: simulation thread stopped unexpectedly", file=sys.stderr)
             break
     print("gazelle: shutting down", flush=True)
+    if view is not None:
+        view.stop()
     sim.stop()
     bridge.shutdown()
     return 0
