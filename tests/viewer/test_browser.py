@@ -1,0 +1,166 @@
+"""End to end: headless Debian chromium (Playwright) on the viewer of a real `gazelle sim`.
+
+One server and one browser page for the module (kept under ~60 s); the tests run in order:
+the robot is spawned and seen by pixels, the sim is paused and resumed from the GUI, then
+driven from the GUI and its motion checked by ground truth (/get_entity_state).
+"""
+
+from __future__ import annotations
+
+import io
+import math
+import shutil
+import subprocess
+import time
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+
+from gazelle.viewer._viewer import CAMERA_FOV_RAD, CAMERA_LOOK_AT, CAMERA_POSITION
+
+from .conftest import ARTIFACTS, GAZELLE, REPO, SEED_XACRO, wait_for
+
+ROBOT = "simple_robot"
+ROBOT_CENTRE = (0.0, 0.0, 0.07)
+"""The base box centre once the robot rests on the ground (wheel radius 5 cm + 2 cm axle drop)."""
+REGION_HALF_PX = 90
+MIN_BLUE_PX = 3000
+"""The 0.3 x 0.3 x 0.1 m blue box covers ~10 000 px at this camera; the blue world z axis alone ~800."""
+
+
+def project(point: tuple[float, float, float], width: int, height: int) -> tuple[float, float]:
+    """Pixel (x right, y down) of a world point for the viewer's fixed initial camera (z up)."""
+    eye, target = np.asarray(CAMERA_POSITION), np.asarray(CAMERA_LOOK_AT)
+    fwd = target - eye
+    fwd /= np.linalg.norm(fwd)
+    right = np.cross(fwd, (0.0, 0.0, 1.0))
+    right /= np.linalg.norm(right)
+    up = np.cross(right, fwd)
+    d = np.asarray(point) - eye
+    x, y, z = d @ right, d @ up, d @ fwd
+    f = (height / 2) / math.tan(CAMERA_FOV_RAD / 2)
+    return width / 2 + f * x / z, height / 2 - f * y / z
+
+
+def blue_mask(png: bytes) -> np.ndarray:
+    from PIL import Image
+
+    rgb = np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(int)
+    r, g, b = rgb[..., 0], rgb[..., 1], rgb[..., 2]
+    return (b > 100) & (b > r + 60) & (b > g + 60)
+
+
+def blue_in_region(page: Any, save: Path | None = None) -> tuple[int, tuple[float, float], tuple[float, float] | None]:
+    """(strongly blue pixel count near the robot's projected position, that position, the blue centroid)."""
+    png = page.screenshot()
+    if save is not None:
+        save.write_bytes(png)
+        shutil.copy(save, ARTIFACTS / save.name)
+    mask = blue_mask(png)
+    h, w = mask.shape
+    cx, cy = project(ROBOT_CENTRE, w, h)
+    x0, x1 = int(cx - REGION_HALF_PX), int(cx + REGION_HALF_PX)
+    y0, y1 = int(cy - REGION_HALF_PX), int(cy + REGION_HALF_PX)
+    region = mask[max(y0, 0) : y1, max(x0, 0) : x1]
+    ys, xs = np.nonzero(region)
+    centroid = (float(xs.mean()) + max(x0, 0), float(ys.mean()) + max(y0, 0)) if len(xs) else None
+    return int(region.sum()), (cx, cy), centroid
+
+
+def gui_input(page: Any, label: str) -> Any:
+    """The input next to a viser GUI label."""
+    return page.locator(
+        f"xpath=//label[normalize-space()='{label}']/ancestor::div[contains(@class,'mantine-Flex-root')][1]//input"
+    ).first
+
+
+def sim_time(page: Any) -> float:
+    return float(gui_input(page, "Sim time").input_value().split()[0])
+
+
+def test_blue_robot_appears_at_its_projected_position(page: Any, artifacts: Path) -> None:
+    empty, (cx, cy), _ = blue_in_region(page, artifacts / "viewer_empty.png")
+    assert empty < MIN_BLUE_PX / 2, f"{empty} blue pixels before anything was spawned"
+    spawn = subprocess.run(
+        [*GAZELLE, "spawn", "-file", str(SEED_XACRO), "-entity", ROBOT],
+        cwd=REPO,
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert spawn.returncode == 0, spawn.stdout + spawn.stderr
+    seen: list[int] = []
+
+    def enough_blue() -> bool:
+        n, _, _ = blue_in_region(page)
+        seen.append(n)
+        return n >= MIN_BLUE_PX
+
+    wait_for(enough_blue, timeout=15, what=f">= {MIN_BLUE_PX} blue pixels around ({cx:.0f}, {cy:.0f}) (last: {seen[-3:]})", interval=0.2)
+    n, _, centroid = blue_in_region(page, artifacts / "viewer_robot.png")
+    assert n >= MIN_BLUE_PX
+    assert centroid is not None and math.dist(centroid, (cx, cy)) < 40, (
+        f"blue centroid {centroid} is far from the projected robot position ({cx:.0f}, {cy:.0f})"
+    )
+
+
+def test_pause_stops_sim_time_and_play_resumes(page: Any, ros_client_mod: Any) -> None:
+    from rosgraph_msgs.msg import Clock
+
+    last_clock: list[float] = []
+    ros_client_mod.node.create_subscription(
+        Clock, "/clock", lambda m: last_clock.append(m.clock.sec + m.clock.nanosec * 1e-9), 10
+    )
+    t0 = sim_time(page)
+    wait_for(lambda: sim_time(page) > t0 + 0.2, timeout=10, what="sim time advancing in the GUI")
+    wait_for(lambda: last_clock, timeout=10, what="/clock")
+
+    page.get_by_role("button", name="Pause", exact=True).click()
+    wait_for(lambda: page.get_by_role("button", name="Play", exact=True).count() == 1, timeout=5, what="the Play button")
+    # the GUI refreshes at 10 Hz: let a frame taken just before the click be overwritten
+    reads: list[float] = []
+
+    def settled() -> bool:
+        reads.append(sim_time(page))
+        page.wait_for_timeout(250)
+        return sim_time(page) == reads[-1]
+
+    wait_for(settled, timeout=5, what=f"the GUI sim time settling while paused (reads: {reads[-3:]})")
+    paused_gui, paused_clock = sim_time(page), last_clock[-1]
+    # an observation window: nothing may advance during it
+    window_end = time.monotonic() + 1.0
+    while time.monotonic() < window_end:
+        assert sim_time(page) == paused_gui, "sim time advanced in the GUI while paused"
+        page.wait_for_timeout(100)
+    assert last_clock[-1] == pytest.approx(paused_clock, abs=1e-9), "/clock advanced while paused"
+    assert abs(paused_clock - paused_gui) < 0.05, f"GUI time {paused_gui} vs /clock {paused_clock}"
+
+    page.get_by_role("button", name="Play", exact=True).click()
+    wait_for(lambda: sim_time(page) > paused_gui + 0.2, timeout=10, what="sim time advancing after Play")
+    wait_for(lambda: last_clock[-1] > paused_clock + 0.2, timeout=10, what="/clock advancing after Play")
+
+
+def test_drive_buttons_move_the_robot(page: Any, ros_client_mod: Any) -> None:
+    page.get_by_role("combobox").first.click()
+    page.get_by_role("option", name=ROBOT, exact=True).click()
+    wait_for(lambda: "x " in gui_input(page, "Pose").input_value(), timeout=5, what="the selected robot's pose")
+    start = ros_client_mod.entity_state(ROBOT).state.pose.position
+    page.get_by_role("button", name="Forward", exact=True).click()
+    wait_for(
+        lambda: "linear +0.50" in gui_input(page, "cmd_vel").input_value(), timeout=5, what="the cmd_vel echo"
+    )
+
+    def moved() -> bool:
+        p = ros_client_mod.entity_state(ROBOT).state.pose.position
+        return p.x - start.x > 0.25 and abs(p.y - start.y) < 0.1
+
+    wait_for(moved, timeout=10, what="the robot driving 0.25 m forward (+x) by ground truth", interval=0.1)
+    page.get_by_role("button", name="Stop", exact=True).click()
+
+    def stopped() -> bool:
+        v = ros_client_mod.entity_state(ROBOT).state.twist.linear
+        return math.hypot(v.x, v.y) < 0.02
+
+    wait_for(stopped, timeout=10, what="the robot stopping after Stop", interval=0.1)
