@@ -17,10 +17,10 @@ from typing import TYPE_CHECKING
 import mujoco
 import numpy as np
 
-from ..description import Model, Pose
+from ..description import ConfigElement, Model, Pose
 from ..description._model import quat_from_rpy, quat_rotate
 from ._base import System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
-from ._bus import Endpoint, MsgType, Odometry, Qos, Transform, TransformBatch, Twist, resolve_topic
+from ._bus import Endpoint, JointStates, MsgType, Odometry, Qos, Transform, TransformBatch, Twist, resolve_topic
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..physics._world import PhysicsWorld
@@ -64,17 +64,86 @@ class DiffDriveConfig:
     covariance_x: float = 0.00001
     covariance_y: float = 0.00001
     covariance_yaw: float = 0.001
+    command_topic: str = "cmd_vel"
+    """``<commandTopic>`` (ROS 1 name; the ROS 2 plugin fixes it to ``cmd_vel``, use a remapping)."""
+    odometry_topic: str = "odom"
+    """``<odometryTopic>`` (ROS 1 name; the ROS 2 plugin fixes it to ``odom``)."""
+    publish_wheel_joint_state: bool = False
+    """``<publishWheelJointState>`` (ROS 1): publish the wheel joints on ``joint_states``."""
+    legacy_mode: bool = False
+    """``<legacyMode>`` (ROS 1): true swaps the left and right wheel speeds, as ROS 1's default did."""
     namespace: str = ""
     """``<ros><namespace>``."""
     remappings: tuple[tuple[str, str], ...] = ()
     """``<ros><remapping>from:=to``."""
 
 
+ROS1_NAMES = {
+    "leftJoint": "left_joint",
+    "rightJoint": "right_joint",
+    "wheelSeparation": "wheel_separation",
+    "wheelDiameter": "wheel_diameter",
+    "wheelTorque": "max_wheel_torque",
+    "wheelAcceleration": "max_wheel_acceleration",
+    "updateRate": "update_rate",
+    "commandTopic": "command_topic",
+    "odometryTopic": "odometry_topic",
+    "odometryFrame": "odometry_frame",
+    "robotBaseFrame": "robot_base_frame",
+    "publishWheelTF": "publish_wheel_tf",
+    "publishOdomTF": "publish_odom_tf",
+    "publishWheelJointState": "publish_wheel_joint_state",
+    "odometrySource": "odometry_source",
+    "legacyMode": "legacy_mode",
+    "rosDebugLevel": "",  # accepted, no effect (ROS 1 console verbosity)
+    "publishTf": "",  # ROS 1 master switch for all TF; handled below
+    "robotNamespace": "",  # ROS 1 namespace; handled below
+}
+"""ROS 1 (``gazebo_ros_diff_drive`` for Gazebo 7-11) camelCase names -> the ROS 2 names used here."""
+
+KNOWN_TAGS = {
+    "left_joint", "right_joint", "num_wheel_pairs", "wheel_separation", "wheel_diameter", "max_wheel_torque",
+    "max_wheel_acceleration", "update_rate", "odometry_frame", "robot_base_frame", "odometry_source",
+    "publish_odom", "publish_odom_tf", "publish_wheel_tf", "covariance_x", "covariance_y", "covariance_yaw", "ros",
+}  # fmt: skip
+
+
+def _translate_ros1(cfg: ConfigElement, log: logging.Logger) -> tuple[ConfigElement, bool]:
+    """Rename ROS 1 camelCase children to the ROS 2 names; warn about unknown children by name.
+
+    Returns the (possibly rewritten) element and whether any ROS 1 name was used.
+    """
+    children: list[ConfigElement] = []
+    ros1 = False
+    for c in cfg.children:
+        where = f"{c.location}: " if c.location else ""
+        if c.tag in ROS1_NAMES:
+            ros1 = True
+            new = ROS1_NAMES[c.tag]
+            if new == "odometry_source":  # ROS 1 takes "encoder" / "world" (or the number)
+                text = {"encoder": str(ODOM_ENCODER), "world": str(ODOM_WORLD)}.get(c.text.strip().lower(), c.text)
+                c = ConfigElement(c.tag, c.attributes, text, c.children, c.location)
+            if new:
+                children.append(ConfigElement(new, c.attributes, c.text, c.children, c.location))
+            children.append(c)
+        else:
+            if c.tag not in KNOWN_TAGS:
+                log.warning(f"{where}<{c.tag}> is not a parameter of gazebo_ros_diff_drive; it is ignored")
+            children.append(c)
+    return ConfigElement(cfg.tag, cfg.attributes, cfg.text, tuple(children), cfg.location), ros1
+
+
 def parse_config(ctx: SystemContext, log: logging.Logger) -> DiffDriveConfig:
-    """Read a ``<plugin>`` block into :class:`DiffDriveConfig`, logging what is wrong."""
+    """Read a ``<plugin>`` block into :class:`DiffDriveConfig`, logging what is wrong.
+
+    Also accepts the ROS 1 camelCase names (``leftJoint``, ``wheelDiameter``, ``commandTopic``...,
+    see :data:`ROS1_NAMES`). A ROS 1 block keeps ROS 1's behaviour where it differs: odometry is
+    always published and ``publishOdomTF`` defaults to true.
+    """
     cfg = ctx.plugin.config if ctx.plugin is not None else None
     if cfg is None:
         return DiffDriveConfig()
+    cfg, ros1 = _translate_ros1(cfg, log)
     pairs = int(parse_float(cfg, "num_wheel_pairs", 1, log))
     if pairs < 1:
         log.warning("Drive requires at least one pair of wheels. Setting [num_wheel_pairs] to 1")
@@ -95,8 +164,19 @@ def parse_config(ctx: SystemContext, log: logging.Logger) -> DiffDriveConfig:
         return tuple(vals)
 
     ns, remaps = ros_block(cfg)
-    ns = ns or ctx.entity.namespace
+    ns = ns or child_text(cfg, "robotNamespace") or ctx.entity.namespace
     source = int(parse_float(cfg, "odometry_source", ODOM_WORLD, log))
+    publish_tf = parse_bool(cfg, "publishTf", True, log)
+    legacy = False
+    if ros1:
+        if cfg.find("legacyMode") is None:
+            log.warning(
+                "missing <legacyMode>, defaults to true (as in ROS 1): left and right wheels are swapped; "
+                "set <legacyMode>false</legacyMode>"
+            )
+            legacy = True
+        else:
+            legacy = parse_bool(cfg, "legacyMode", True, log)
     return DiffDriveConfig(
         left_joints=tuple(el.text.strip() for el in cfg.findall("left_joint")),
         right_joints=tuple(el.text.strip() for el in cfg.findall("right_joint")),
@@ -109,12 +189,16 @@ def parse_config(ctx: SystemContext, log: logging.Logger) -> DiffDriveConfig:
         odometry_frame=child_text(cfg, "odometry_frame") or "odom",
         robot_base_frame=child_text(cfg, "robot_base_frame") or "base_footprint",
         odometry_source=source if source in (ODOM_ENCODER, ODOM_WORLD) else ODOM_WORLD,
-        publish_odom=parse_bool(cfg, "publish_odom", False, log),
-        publish_odom_tf=parse_bool(cfg, "publish_odom_tf", False, log),
-        publish_wheel_tf=parse_bool(cfg, "publish_wheel_tf", False, log),
+        publish_odom=ros1 or parse_bool(cfg, "publish_odom", False, log),
+        publish_odom_tf=publish_tf and parse_bool(cfg, "publish_odom_tf", ros1, log),
+        publish_wheel_tf=publish_tf and parse_bool(cfg, "publish_wheel_tf", False, log),
         covariance_x=parse_float(cfg, "covariance_x", 0.00001, log),
         covariance_y=parse_float(cfg, "covariance_y", 0.00001, log),
         covariance_yaw=parse_float(cfg, "covariance_yaw", 0.001, log),
+        command_topic=child_text(cfg, "command_topic") or "cmd_vel",
+        odometry_topic=child_text(cfg, "odometry_topic") or "odom",
+        publish_wheel_joint_state=parse_bool(cfg, "publish_wheel_joint_state", False, log),
+        legacy_mode=legacy,
         namespace=ns,
         remappings=tuple(remaps.items()),
     )
@@ -169,6 +253,40 @@ def wheel_inertia_about_axis(model: Model, joint_name: str, armature: float) -> 
     return float(a_i @ I @ a_i) + inertial.mass * float(perp @ perp) + armature
 
 
+UNLIMITED_INTEGRAL = 10.0
+"""Anti-windup bound (rad/s) of the integral term of a wheel servo without a torque limit."""
+
+
+def add_wheel_servo(ctx: SystemContext, joint: str, torque_limit: float) -> tuple[str, float]:
+    """Make ``joint`` a drive wheel (call from ``configure``): point contacts, armature and a
+    velocity servo with kv = I/dt (see :func:`servo_gain`) limited to ``torque_limit`` (≤ 0 or inf: none).
+
+    Returns the actuator name and the anti-windup bound of the integral term for :func:`drive_wheel`.
+    """
+    world, entity, model = ctx.world, ctx.entity, ctx.entity.model
+    world.make_wheel_contacts_pointlike(entity, model.joint(joint).child)
+    world.set_joint_armature(entity, joint, WHEEL_ARMATURE)
+    kv = servo_gain(wheel_inertia_about_axis(model, joint, WHEEL_ARMATURE), world.timestep)
+    limited = 0 < torque_limit < math.inf
+    act = world.add_velocity_actuator(entity, joint, kv=kv, force_limit=torque_limit if limited else None)
+    return act, (torque_limit / kv if limited else UNLIMITED_INTEGRAL)
+
+
+def drive_wheel(
+    world: "PhysicsWorld", dof_adr: int, actuator_id: int, target: float, integral: float, limit: float, dt: float
+) -> float:
+    """Command a wheel servo towards ``target`` rad/s (PI: the servo plus an integral term); returns the new integral.
+
+    The integral action removes the servo's steady-state error under load (scrub, rolling
+    resistance), as a constraint motor (Gazebo's "vel" + "fmax") has none.
+    """
+    speed = float(world.data.qvel[dof_adr])
+    integral += (target - speed) * dt / INTEGRAL_TIME_SEC
+    integral = max(-limit, min(limit, integral))
+    world.data.ctrl[actuator_id] = target + integral
+    return integral
+
+
 @dataclass
 class _Wheel:
     joint: str
@@ -196,6 +314,7 @@ class DiffDrive(System):
         self._last_update = -math.inf
         self._odom_pub: Endpoint | None = None
         self._tf_pub: Endpoint | None = None
+        self._js_pub: Endpoint | None = None
         self._cmd_sub: Endpoint | None = None
         self._entity = ""
         self.prefix = ""
@@ -230,22 +349,26 @@ class DiffDrive(System):
             self.log.info(f"Wheel pair {i + 1} separation set to [{c.wheel_separation[i]:f}m]")
             self.log.info(f"Wheel pair {i + 1} diameter set to [{c.wheel_diameter[i]:f}m]")
         # joint order as the classic plugin: [right0, left0, right1, left1, ...]
+        if c.legacy_mode:
+            self.log.warning("<legacyMode> is true: the left and right wheel speeds are swapped, as in ROS 1")
+        swap = -1 if c.legacy_mode else 1
         for i in range(c.num_wheel_pairs):
             for side, jn in ((1, c.right_joints[i]), (-1, c.left_joints[i])):
-                ctx.world.make_wheel_contacts_pointlike(ctx.entity, model.joint(jn).child)
-                ctx.world.set_joint_armature(ctx.entity, jn, WHEEL_ARMATURE)
-                kv = servo_gain(wheel_inertia_about_axis(model, jn, WHEEL_ARMATURE), ctx.world.timestep)
-                act = ctx.world.add_velocity_actuator(ctx.entity, jn, kv=kv, force_limit=c.max_wheel_torque)
-                limit = c.max_wheel_torque / kv if c.max_wheel_torque > 0 else math.inf
-                self._wheels.append(_Wheel(jn, act, c.wheel_diameter[i] / 2.0, side, c.wheel_separation[i], limit))
+                act, limit = add_wheel_servo(ctx, jn, c.max_wheel_torque)
+                self._wheels.append(
+                    _Wheel(jn, act, c.wheel_diameter[i] / 2.0, side * swap, c.wheel_separation[i], limit)
+                )
         remaps = dict(c.remappings)
-        cmd_topic = resolve_topic("cmd_vel", c.namespace, remaps)
+        cmd_topic = resolve_topic(c.command_topic, c.namespace, remaps)
         self._cmd_sub = ctx.bus.subscribe(self._entity, cmd_topic, MsgType.TWIST, self._on_cmd, depth=1)
         self.log.info(f"Subscribed to [{cmd_topic}]")
         if c.publish_odom:
-            odom_topic = resolve_topic("odom", c.namespace, remaps)
+            odom_topic = resolve_topic(c.odometry_topic, c.namespace, remaps)
             self._odom_pub = ctx.bus.advertise(self._entity, odom_topic, MsgType.ODOMETRY, depth=1)
             self.log.info(f"Advertise odometry on [{odom_topic}]")
+        if c.publish_wheel_joint_state:
+            js_topic = resolve_topic("joint_states", c.namespace, remaps)
+            self._js_pub = ctx.bus.advertise(self._entity, js_topic, MsgType.JOINT_STATE, depth=1000)
         if c.publish_odom_tf or c.publish_wheel_tf:
             self._tf_pub = ctx.bus.advertise(self._entity, "/tf", MsgType.TF, depth=100)
         if c.publish_odom_tf:
@@ -306,13 +429,8 @@ class DiffDrive(System):
                     w.instructed = target
         addrs = self._addresses(world)
         for w in self._wheels:
-            target = w.instructed / w.radius
-            speed = float(world.data.qvel[addrs[w.joint][1]])
-            # integral action removes the servo's steady-state error under load (scrub,
-            # rolling resistance), as a constraint motor (Gazebo's "vel" + "fmax") has none
-            w.integral += (target - speed) * info.dt_sec / INTEGRAL_TIME_SEC
-            w.integral = max(-w.integral_limit, min(w.integral_limit, w.integral))
-            world.data.ctrl[addrs[w.joint][2]] = target + w.integral
+            _, dadr, aid = addrs[w.joint]
+            w.integral = drive_wheel(world, dadr, aid, w.instructed / w.radius, w.integral, w.integral_limit, info.dt_sec)
 
     def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
         if not self._ok or info.paused:
@@ -323,9 +441,20 @@ class DiffDrive(System):
         if not self._due:
             return  # odometry goes out on the steps where commands were updated
         self._due = False
+        stamp = info.sim_time_sec
+        if self._js_pub is not None:
+            addrs = self._addresses(world)
+            qpos, qvel = world.data.qpos, world.data.qvel
+            self._js_pub.publish(
+                JointStates(
+                    stamp,
+                    tuple(w.joint for w in self._wheels),
+                    tuple(float(qpos[addrs[w.joint][0]]) for w in self._wheels),
+                    tuple(float(qvel[addrs[w.joint][1]]) for w in self._wheels),
+                )
+            )
         if self._odom_pub is None and self._tf_pub is None:
             return
-        stamp = info.sim_time_sec
         pose, twist = self._odometry(world)
         if self._odom_pub is not None:
             cov = [0.0] * 36
