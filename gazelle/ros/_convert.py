@@ -10,11 +10,12 @@ from geometry_msgs.msg import Pose as PoseMsg
 from geometry_msgs.msg import Twist as TwistMsg
 from nav_msgs.msg import Odometry as OdometryMsg
 from sensor_msgs.msg import JointState as JointStateMsg
+from std_msgs.msg import Float64 as Float64Msg
 from std_msgs.msg import String as StringMsg
 from tf2_msgs.msg import TFMessage
 
 from ..description import Pose
-from ..systems._bus import JointStates, MsgType, Odometry, Text, Transform, TransformBatch, Twist
+from ..systems._bus import Float64, JointStates, MsgType, Odometry, Text, Transform, TransformBatch, Twist
 
 
 def to_time(sec: float) -> Time:
@@ -100,6 +101,7 @@ ROS_TYPES = {
     MsgType.TF_STATIC: TFMessage,
     MsgType.JOINT_STATE: JointStateMsg,
     MsgType.STRING: StringMsg,
+    MsgType.FLOAT64: Float64Msg,
 }
 """The rclpy message class for each bus message type."""
 
@@ -110,7 +112,9 @@ TO_ROS = {
     MsgType.STRING: lambda t: StringMsg(data=t.data),
     MsgType.JOINT_STATE: to_joint_state_msg,
     MsgType.TWIST: to_twist_msg,
+    MsgType.FLOAT64: lambda f: Float64Msg(data=float(f.data)),
 }
 FROM_ROS = {
     MsgType.TWIST: from_twist_msg,
+    MsgType.FLOAT64: lambda m: Float64(float(m.data)),
 }

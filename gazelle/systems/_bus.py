@@ -75,6 +75,13 @@ class Text:
     data: str
 
 
+@dataclass(frozen=True, slots=True)
+class Float64:
+    """std_msgs/Float64 (joint position / velocity commands)."""
+
+    data: float
+
+
 class MsgType(enum.Enum):
     """The ROS message type each payload maps to."""
 
@@ -85,6 +92,7 @@ class MsgType(enum.Enum):
     """Like TF, but every publisher's transforms are kept and sent together, as tf2's static broadcaster does."""
     JOINT_STATE = "sensor_msgs/msg/JointState"
     STRING = "std_msgs/msg/String"
+    FLOAT64 = "std_msgs/msg/Float64"
 
 
 class Qos(enum.Enum):

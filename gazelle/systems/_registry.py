@@ -38,6 +38,36 @@ def _gz_joint_states() -> System:
     return JointStatePublisher(all_by_default=True)
 
 
+def _gz_diff_drive() -> System:
+    from .gz_diff_drive import GzDiffDrive
+
+    return GzDiffDrive()
+
+
+def _gz_joint_position() -> System:
+    from .joint_controllers import JointPositionController
+
+    return JointPositionController()
+
+
+def _gz_joint_velocity() -> System:
+    from .joint_controllers import JointController
+
+    return JointController()
+
+
+def _joint_commands() -> System:
+    from .joint_controllers import JointCommands
+
+    return JointCommands()
+
+
+def _p3d() -> System:
+    from .pose_publisher import P3D
+
+    return P3D()
+
+
 _REGISTRY: dict[str, Callable[[], System]] = {
     "gazebo_ros_diff_drive": _diff_drive,
     "gazebo_ros_joint_state_publisher": _classic_joint_states,
@@ -45,6 +75,20 @@ _REGISTRY: dict[str, Callable[[], System]] = {
     "gz::sim::systems::JointStatePublisher": _gz_joint_states,
     "ignition-gazebo-joint-state-publisher-system": _gz_joint_states,
     "ignition::gazebo::systems::JointStatePublisher": _gz_joint_states,
+    "gz-sim-diff-drive-system": _gz_diff_drive,
+    "gz::sim::systems::DiffDrive": _gz_diff_drive,
+    "ignition-gazebo-diff-drive-system": _gz_diff_drive,
+    "ignition::gazebo::systems::DiffDrive": _gz_diff_drive,
+    "gz-sim-joint-position-controller-system": _gz_joint_position,
+    "gz::sim::systems::JointPositionController": _gz_joint_position,
+    "ignition-gazebo-joint-position-controller-system": _gz_joint_position,
+    "ignition::gazebo::systems::JointPositionController": _gz_joint_position,
+    "gz-sim-joint-controller-system": _gz_joint_velocity,
+    "gz::sim::systems::JointController": _gz_joint_velocity,
+    "ignition-gazebo-joint-controller-system": _gz_joint_velocity,
+    "ignition::gazebo::systems::JointController": _gz_joint_velocity,
+    "gazelle_joint_commands": _joint_commands,
+    "gazebo_ros_p3d": _p3d,
 }
 
 

@@ -1,0 +1,329 @@
+"""Differential drive, configured like new Gazebo's ``gz-sim-diff-drive-system`` (``gz::sim::systems::DiffDrive``).
+
+Differences from the classic plugin (:mod:`.diff_drive`), as in gz-sim 8:
+
+* ``wheel_radius`` (not diameter), defaults ``wheel_separation`` 1.0 m and ``wheel_radius`` 0.2 m;
+* velocity / acceleration / jerk limiters on the body twist (``math::SpeedLimiter``), applied every step;
+* encoder odometry from the wheel joint *positions* (``math::DiffDriveOdometry``), published at
+  ``odom_publish_frequency`` (default 50 Hz) with frames ``<model>/odom`` → ``<model>/<canonical link>``;
+* topics ``/model/<model>/cmd_vel`` and ``/model/<model>/odometry`` by default. A relative ``<topic>``
+  (TurtleBot3's ``cmd_vel``) resolves under the entity's namespace.
+
+gz-sim publishes TF on the gz-transport topic ``/model/<model>/tf`` for ros_gz_bridge to carry to ROS.
+Here, so that it works with no bridge, the odom → child transform always goes on ROS ``/tf``;
+an explicit ``<tf_topic>`` other than ``/tf`` gets it as well.
+
+The wheels use the same velocity servo as the classic drive (:func:`.diff_drive.add_wheel_servo`);
+gz-sim's joint velocity command has no torque parameter, so the servo is limited by the joint's
+``<limit><effort>`` when the file gives one.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from collections import deque
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from ..description import ConfigElement, Pose
+from ..description._model import quat_from_rpy
+from ._base import System, SystemContext, UpdateInfo, child_text, parse_float
+from ._bus import Endpoint, MsgType, Odometry, Transform, TransformBatch, Twist, resolve_topic
+from .diff_drive import add_wheel_servo, drive_wheel
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..physics._world import PhysicsWorld
+
+_INF = math.inf
+
+
+@dataclass(frozen=True)
+class SpeedLimits:
+    """Bounds of one ``math::SpeedLimiter`` (unset = unbounded)."""
+
+    min_velocity: float = -_INF
+    max_velocity: float = _INF
+    min_acceleration: float = -_INF
+    max_acceleration: float = _INF
+    min_jerk: float = -_INF
+    max_jerk: float = _INF
+
+
+class SpeedLimiter:
+    """gz::math::SpeedLimiter: jerk, then acceleration, then velocity clamping."""
+
+    def __init__(self, limits: SpeedLimits) -> None:
+        self.limits = limits
+
+    def limit(self, vel: float, prev: float, prev_prev: float, dt: float) -> float:
+        """The limited velocity given the last two commands (``prev`` newest) and the step ``dt``."""
+        lim = self.limits
+        if dt <= 0:
+            return min(max(vel, lim.min_velocity), lim.max_velocity)
+        # jerk
+        if math.isfinite(lim.min_jerk) or math.isfinite(lim.max_jerk):
+            dv, dpv = vel - prev, prev - prev_prev
+            da = min(max(dv - dpv, lim.min_jerk * dt * dt), lim.max_jerk * dt * dt)
+            vel = prev + dpv + da
+        # acceleration
+        dv = min(max(vel - prev, lim.min_acceleration * dt), lim.max_acceleration * dt)
+        vel = prev + dv
+        # velocity
+        return min(max(vel, lim.min_velocity), lim.max_velocity)
+
+
+class DiffDriveOdometry:
+    """gz::math::DiffDriveOdometry: pose from wheel angle increments, velocities as a rolling mean."""
+
+    def __init__(self, separation: float, left_radius: float, right_radius: float, window: int = 10) -> None:
+        self.separation = separation
+        self.left_radius = left_radius
+        self.right_radius = right_radius
+        self._lin: deque[float] = deque(maxlen=window)
+        self._ang: deque[float] = deque(maxlen=window)
+        self.reset()
+
+    def reset(self) -> None:
+        self.x = self.y = self.heading = 0.0
+        self.linear = self.angular = 0.0
+        self._lin.clear()
+        self._ang.clear()
+        self._left_old: float | None = None
+        self._right_old = 0.0
+        self._time = 0.0
+
+    def update(self, left_pos: float, right_pos: float, time_sec: float) -> None:
+        if self._left_old is None:  # Init(): remember where the wheels are
+            self._left_old, self._right_old, self._time = left_pos, right_pos, time_sec
+            return
+        dt = time_sec - self._time
+        if dt < 0.0001:
+            return
+        left = (left_pos - self._left_old) * self.left_radius
+        right = (right_pos - self._right_old) * self.right_radius
+        self._left_old, self._right_old, self._time = left_pos, right_pos, time_sec
+        lin = (right + left) * 0.5
+        ang = (right - left) / self.separation
+        if abs(ang) < 1e-6:  # Runge-Kutta 2
+            direction = self.heading + ang * 0.5
+            self.x += lin * math.cos(direction)
+            self.y += lin * math.sin(direction)
+            self.heading += ang
+        else:  # exact arc
+            old = self.heading
+            r = lin / ang
+            self.heading += ang
+            self.x += r * (math.sin(self.heading) - math.sin(old))
+            self.y += -r * (math.cos(self.heading) - math.cos(old))
+        self._lin.append(lin / dt)
+        self._ang.append(ang / dt)
+        self.linear = sum(self._lin) / len(self._lin)
+        self.angular = sum(self._ang) / len(self._ang)
+
+
+@dataclass(frozen=True)
+class GzDiffDriveConfig:
+    """Parameters of gz-sim's ``DiffDrive`` system (names and defaults as gz-sim 8)."""
+
+    left_joints: tuple[str, ...] = ()
+    """``<left_joint>`` (repeatable). Required; every listed joint gets the same command."""
+    right_joints: tuple[str, ...] = ()
+    """``<right_joint>`` (repeatable). Required."""
+    wheel_separation: float = 1.0
+    """``<wheel_separation>``, metres; default 1.0."""
+    wheel_radius: float = 0.2
+    """``<wheel_radius>``, metres; default 0.2."""
+    odom_publish_frequency: float = 50.0
+    """``<odom_publish_frequency>``, Hz of sim time; default 50."""
+    topic: str = ""
+    """``<topic>`` for geometry_msgs/Twist; default ``/model/<model>/cmd_vel``; relative names go under the namespace."""
+    odom_topic: str = ""
+    """``<odom_topic>`` for nav_msgs/Odometry; default ``/model/<model>/odometry``."""
+    tf_topic: str = ""
+    """``<tf_topic>``; the transform always goes on ``/tf`` too (gz-sim: ``/model/<model>/tf`` for ros_gz_bridge)."""
+    frame_id: str = ""
+    """``<frame_id>``; default ``<model>/odom``. An explicit one gets the entity's frame prefix."""
+    child_frame_id: str = ""
+    """``<child_frame_id>``; default ``<model>/<canonical link>``. An explicit one gets the frame prefix."""
+    linear: SpeedLimits = SpeedLimits()
+    """``<min|max_velocity|acceleration|jerk>`` then ``<min|max_linear_…>``: limits of the forward speed."""
+    angular: SpeedLimits = SpeedLimits()
+    """``<min|max_velocity|acceleration|jerk>`` then ``<min|max_angular_…>``: limits of the turn rate."""
+    namespace: str = ""
+    """The entity's namespace (relative topics resolve under it)."""
+
+
+KNOWN_TAGS = {
+    "left_joint", "right_joint", "wheel_separation", "wheel_radius", "odom_publish_frequency", "topic",
+    "odom_topic", "tf_topic", "frame_id", "child_frame_id",
+} | {
+    f"{m}_{kind}{q}"
+    for m in ("min", "max")
+    for kind in ("", "linear_", "angular_")
+    for q in ("velocity", "acceleration", "jerk")
+}  # fmt: skip
+
+
+def _limits(cfg: ConfigElement, which: str, log: logging.Logger) -> SpeedLimits:
+    vals: dict[str, float] = {}
+    for m in ("min", "max"):
+        for q in ("velocity", "acceleration", "jerk"):
+            default = -_INF if m == "min" else _INF
+            v = parse_float(cfg, f"{m}_{q}", default, log)
+            vals[f"{m}_{q}"] = parse_float(cfg, f"{m}_{which}_{q}", v, log)
+    return SpeedLimits(**vals)
+
+
+def parse_config(ctx: SystemContext, log: logging.Logger) -> GzDiffDriveConfig:
+    """Read the ``<plugin>`` block; unknown children are warned about by name and location."""
+    cfg = ctx.plugin.config if ctx.plugin is not None else None
+    if cfg is None:
+        return GzDiffDriveConfig(namespace=ctx.entity.namespace)
+    for c in cfg.children:
+        if c.tag not in KNOWN_TAGS:
+            where = f"{c.location}: " if c.location else ""
+            log.warning(f"{where}<{c.tag}> is not a parameter of gz-sim DiffDrive; it is ignored")
+    return GzDiffDriveConfig(
+        left_joints=tuple(el.text.strip() for el in cfg.findall("left_joint")),
+        right_joints=tuple(el.text.strip() for el in cfg.findall("right_joint")),
+        wheel_separation=parse_float(cfg, "wheel_separation", 1.0, log),
+        wheel_radius=parse_float(cfg, "wheel_radius", 0.2, log),
+        odom_publish_frequency=parse_float(cfg, "odom_publish_frequency", 50.0, log),
+        topic=child_text(cfg, "topic") or "",
+        odom_topic=child_text(cfg, "odom_topic") or "",
+        tf_topic=child_text(cfg, "tf_topic") or "",
+        frame_id=child_text(cfg, "frame_id") or "",
+        child_frame_id=child_text(cfg, "child_frame_id") or "",
+        linear=_limits(cfg, "linear", log),
+        angular=_limits(cfg, "angular", log),
+        namespace=ctx.entity.namespace,
+    )
+
+
+class GzDiffDrive(System):
+    """gz-sim's DiffDrive: limiters every step, encoder odometry, ``/model/<model>/…`` topics."""
+
+    def __init__(self) -> None:
+        self.config = GzDiffDriveConfig()
+        self.log = logging.getLogger("DiffDrive")
+        self._cmd = Twist()
+        self._wheels: list[tuple[str, str, int, float]] = []  # joint, actuator, side (+1 right), integral limit
+        self._integral: list[float] = []
+        self._last0 = (0.0, 0.0)
+        self._last1 = (0.0, 0.0)
+        self._odom: DiffDriveOdometry | None = None
+        self._odom_pub: Endpoint | None = None
+        self._tf_pubs: list[Endpoint] = []
+        self._next_pub = 0.0
+        self._entity = ""
+        self.frame_id = ""
+        self.child_frame_id = ""
+        self.cmd_topic = ""
+        self._addr: tuple[int, list[tuple[int, int, int]]] = (-1, [])
+        self._ok = False
+
+    def configure(self, ctx: SystemContext) -> None:
+        self.log = log = ctx.logger
+        self.config = c = parse_config(ctx, log)
+        entity = ctx.entity
+        self._entity = model_name = entity.name
+        from .robot_state import entity_frame_prefix
+
+        prefix = entity_frame_prefix(entity, log)
+        if not c.left_joints or not c.right_joints:
+            log.error("DiffDrive plugin missing <left_joint> or <right_joint>; it will not work")
+            return
+        joints = {j.name: j for j in entity.model.joints}
+        missing = [jn for jn in (*c.left_joints, *c.right_joints) if jn not in joints]
+        if missing:
+            for jn in missing:
+                log.error(f"Joint [{jn}] not found, DiffDrive will not work.")
+            return
+        for side, names in ((1, c.right_joints), (-1, c.left_joints)):
+            for jn in names:
+                limit = joints[jn].axis.limit.effort if joints[jn].axis is not None else None
+                act, ilimit = add_wheel_servo(ctx, jn, limit if limit is not None else _INF)
+                self._wheels.append((jn, act, side, ilimit))
+                self._integral.append(0.0)
+        self._odom = DiffDriveOdometry(c.wheel_separation, c.wheel_radius, c.wheel_radius)
+        self._limit_lin = SpeedLimiter(c.linear)
+        self._limit_ang = SpeedLimiter(c.angular)
+        self.cmd_topic = resolve_topic(c.topic or f"/model/{model_name}/cmd_vel", c.namespace)
+        ctx.bus.subscribe(model_name, self.cmd_topic, MsgType.TWIST, self._on_cmd, depth=1)
+        log.info(f"DiffDrive subscribing to twist messages on [{self.cmd_topic}]")
+        odom_topic = resolve_topic(c.odom_topic or f"/model/{model_name}/odometry", c.namespace)
+        self._odom_pub = ctx.bus.advertise(model_name, odom_topic, MsgType.ODOMETRY, depth=1)
+        tf_topics = ["/tf"]
+        if c.tf_topic and resolve_topic(c.tf_topic, c.namespace) != "/tf":
+            tf_topics.append(resolve_topic(c.tf_topic, c.namespace))
+        self._tf_pubs = [ctx.bus.advertise(model_name, t, MsgType.TF, depth=100) for t in tf_topics]
+        self.frame_id = prefix + c.frame_id if c.frame_id else f"{model_name}/odom"
+        canonical = entity.model.root_link
+        self.child_frame_id = prefix + c.child_frame_id if c.child_frame_id else f"{model_name}/{canonical}"
+        log.info(
+            f"DiffDrive publishing odometry on [{odom_topic}] and TF on {tf_topics} "
+            f"between [{self.frame_id}] and [{self.child_frame_id}]"
+        )
+        self._ok = True
+
+    def _on_cmd(self, twist: Twist) -> None:
+        self._cmd = twist
+
+    def command(self, linear_x: float, angular_z: float) -> None:
+        """Set the commanded body velocity directly (as a ``cmd_vel`` message would)."""
+        self._cmd = Twist((linear_x, 0.0, 0.0), (0.0, 0.0, angular_z))
+
+    @property
+    def limited_command(self) -> tuple[float, float]:
+        """The (linear, angular) command after the limiters, as sent to the wheels this step."""
+        return self._last0
+
+    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        self._cmd = Twist()
+        self._last0 = self._last1 = (0.0, 0.0)
+        self._integral = [0.0] * len(self._integral)
+        self._next_pub = 0.0
+        if self._odom is not None:
+            self._odom.reset()
+
+    def _addresses(self, world: "PhysicsWorld") -> list[tuple[int, int, int]]:
+        gen, addrs = self._addr
+        if gen != world.generation:
+            addrs = [(*world.joint_address(self._entity, jn), world.actuator_id(act)) for jn, act, _, _ in self._wheels]
+            self._addr = (world.generation, addrs)
+        return addrs
+
+    def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        if not self._ok or info.paused:
+            return
+        c = self.config
+        lin = self._limit_lin.limit(self._cmd.linear[0], self._last0[0], self._last1[0], info.dt_sec)
+        ang = self._limit_ang.limit(self._cmd.angular[2], self._last0[1], self._last1[1], info.dt_sec)
+        self._last1, self._last0 = self._last0, (lin, ang)
+        for i, ((_, _, side, ilimit), (_, dadr, aid)) in enumerate(zip(self._wheels, self._addresses(world))):
+            target = (lin + side * ang * c.wheel_separation / 2.0) / c.wheel_radius
+            self._integral[i] = drive_wheel(world, dadr, aid, target, self._integral[i], ilimit, info.dt_sec)
+
+    def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        if not self._ok or info.paused or self._odom is None:
+            return
+        addrs = self._addresses(world)
+        qpos = world.data.qpos
+        right = next(i for i, w in enumerate(self._wheels) if w[2] == 1)
+        left = next(i for i, w in enumerate(self._wheels) if w[2] == -1)
+        self._odom.update(float(qpos[addrs[left][0]]), float(qpos[addrs[right][0]]), info.sim_time_sec)
+        if info.sim_time_sec + 1e-9 < self._next_pub:
+            return
+        f = self.config.odom_publish_frequency
+        self._next_pub = info.sim_time_sec + (1.0 / f if f > 0 else 0.0)
+        o = self._odom
+        pose = Pose((o.x, o.y, 0.0), quat_from_rpy(0.0, 0.0, o.heading))
+        stamp = info.sim_time_sec
+        if self._odom_pub is not None:
+            self._odom_pub.publish(
+                Odometry(stamp, self.frame_id, self.child_frame_id, pose, Twist((o.linear, 0.0, 0.0), (0.0, 0.0, o.angular)))
+            )
+        batch = TransformBatch((Transform(stamp, self.frame_id, self.child_frame_id, pose),))
+        for pub in self._tf_pubs:
+            pub.publish(batch)

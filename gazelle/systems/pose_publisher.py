@@ -1,0 +1,186 @@
+"""Ground-truth pose publisher, like ``libgazebo_ros_p3d.so``.
+
+Publishes nav_msgs/Odometry of one link on ``odom`` (under ``<ros><namespace>``, remappable) at
+``update_rate`` Hz of sim time (0 = every step): pose and twist of ``body_name`` in ``frame_name``
+(``world`` by default, or a link of the same model), with constant ``xyz_offsets`` / ``rpy_offsets``
+and Gaussian noise of standard deviation ``gaussian_noise`` on position and velocities (covariance
+diagonal = noise²). The ROS 1 names (``bodyName``, ``frameName``, ``topicName``, ``updateRate``,
+``xyzOffsets``/``xyzOffset``, ``rpyOffsets``/``rpyOffset``, ``gaussianNoise``, ``robotNamespace``)
+are accepted too.
+
+Unlike gazebo_ros_p3d's own arithmetic, a reference link's pose and velocities are removed
+exactly: the pose is ``X_WF⁻¹·X_WB`` and the twist is ``R_WF⁻¹·(v_B − v_F)``.
+"""
+
+from __future__ import annotations
+
+import logging
+import random
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from ..description import ConfigElement, Pose
+from ..description._model import quat_conj, quat_from_rpy, quat_mul, quat_rotate
+from ._base import System, SystemContext, UpdateInfo, child_text, parse_float, ros_block
+from ._bus import Endpoint, MsgType, Odometry, Twist, resolve_topic
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..physics._world import PhysicsWorld
+
+ROS1_NAMES = {
+    "bodyName": "body_name",
+    "frameName": "frame_name",
+    "topicName": "topic",
+    "updateRate": "update_rate",
+    "xyzOffsets": "xyz_offsets",
+    "xyzOffset": "xyz_offsets",
+    "rpyOffsets": "rpy_offsets",
+    "rpyOffset": "rpy_offsets",
+    "gaussianNoise": "gaussian_noise",
+}
+WORLD_FRAMES = ("world", "map", "/world", "/map", "")
+
+
+@dataclass(frozen=True)
+class P3dConfig:
+    """Parameters of ``libgazebo_ros_p3d.so`` (ROS 2 names; ROS 1 camelCase accepted)."""
+
+    body_name: str = ""
+    """``<body_name>``: the link to report. Required."""
+    frame_name: str = "world"
+    """``<frame_name>``: ``world`` or a link of the same model; the odometry's frame_id."""
+    topic: str = "odom"
+    """Topic (``odom`` in ROS 2, remappable; ``<topicName>`` in ROS 1); relative names go under the namespace."""
+    update_rate: float = 0.0
+    """``<update_rate>``, Hz of sim time; 0 = every step (the default)."""
+    xyz_offsets: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    """``<xyz_offsets>``: added to the position."""
+    rpy_offsets: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    """``<rpy_offsets>``: pre-multiplied onto the orientation."""
+    gaussian_noise: float = 0.0
+    """``<gaussian_noise>``: standard deviation on position and velocities."""
+    namespace: str = ""
+    """``<ros><namespace>`` (ROS 1: ``<robotNamespace>``); default the entity's namespace."""
+    remappings: tuple[tuple[str, str], ...] = ()
+
+
+def _vec3(cfg: ConfigElement, tag: str, log: logging.Logger) -> tuple[float, float, float]:
+    raw = child_text(cfg, tag)
+    if not raw:
+        return (0.0, 0.0, 0.0)
+    try:
+        vals = [float(v) for v in raw.split()]
+        if len(vals) == 3:
+            return (vals[0], vals[1], vals[2])
+    except ValueError:
+        pass
+    log.warning(f"<{tag}> must be three numbers, got {raw!r}; using 0 0 0")
+    return (0.0, 0.0, 0.0)
+
+
+def parse_config(ctx: SystemContext, log: logging.Logger) -> P3dConfig:
+    cfg = ctx.plugin.config if ctx.plugin is not None else None
+    if cfg is None:
+        return P3dConfig(namespace=ctx.entity.namespace)
+    kids = []
+    for c in cfg.children:
+        tag = ROS1_NAMES.get(c.tag, c.tag)
+        kids.append(ConfigElement(tag, c.attributes, c.text, c.children, c.location))
+    cfg = ConfigElement(cfg.tag, cfg.attributes, cfg.text, tuple(kids), cfg.location)
+    ns, remaps = ros_block(cfg)
+    return P3dConfig(
+        body_name=child_text(cfg, "body_name") or "",
+        frame_name=child_text(cfg, "frame_name") or "world",
+        topic=child_text(cfg, "topic") or "odom",
+        update_rate=parse_float(cfg, "update_rate", 0.0, log),
+        xyz_offsets=_vec3(cfg, "xyz_offsets", log),
+        rpy_offsets=_vec3(cfg, "rpy_offsets", log),
+        gaussian_noise=parse_float(cfg, "gaussian_noise", 0.0, log),
+        namespace=ns or child_text(cfg, "robotNamespace") or ctx.entity.namespace,
+        remappings=tuple(remaps.items()),
+    )
+
+
+class P3D(System):
+    """Publishes a link's ground-truth pose and twist as nav_msgs/Odometry."""
+
+    def __init__(self, seed: int | None = None) -> None:
+        self.config = P3dConfig()
+        self._pub: Endpoint | None = None
+        self._entity = ""
+        self._frame_link: str | None = None
+        self.frame_id = ""
+        self.child_frame_id = ""
+        self.topic = ""
+        self._next = 0.0
+        self._rng = random.Random(seed)
+
+    def configure(self, ctx: SystemContext) -> None:
+        log = ctx.logger
+        self.config = c = parse_config(ctx, log)
+        model = ctx.entity.model
+        links = {lk.name for lk in model.links}
+        if not c.body_name:
+            log.error("Missing <body_name>, cannot proceed")
+            return
+        if c.body_name not in links:
+            log.error(f"body_name: {c.body_name} does not exist")
+            return
+        from .robot_state import entity_frame_prefix
+
+        prefix = entity_frame_prefix(ctx.entity, log)
+        if c.frame_name in WORLD_FRAMES:
+            self._frame_link = None
+            self.frame_id = c.frame_name or "world"
+        elif c.frame_name in links:
+            self._frame_link = c.frame_name
+            self.frame_id = prefix + c.frame_name
+        else:
+            log.warning(f"frame_name: {c.frame_name} does not exist, using world")
+            self._frame_link = None
+            self.frame_id = "world"
+        self.child_frame_id = prefix + c.body_name
+        self._entity = ctx.entity.name
+        self.topic = resolve_topic(c.topic, c.namespace, dict(c.remappings))
+        self._pub = ctx.bus.advertise(self._entity, self.topic, MsgType.ODOMETRY, depth=10)
+        self._offset = Pose(c.xyz_offsets, quat_from_rpy(*c.rpy_offsets))
+        log.info(f"p3d: ground truth of [{self.child_frame_id}] in [{self.frame_id}] on [{self.topic}]")
+
+    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        self._next = 0.0
+
+    def measure(self, world: "PhysicsWorld") -> tuple[Pose, Twist]:
+        """Noise-free pose and twist of the body in the frame, with the offsets applied."""
+        body = world.entity_state(self._entity, self.config.body_name)
+        pose, lin, ang = body.pose, body.linear_velocity, body.angular_velocity
+        if self._frame_link is not None:
+            frame = world.entity_state(self._entity, self._frame_link)
+            qi = quat_conj(frame.pose.orientation)
+            pose = frame.pose.inverse() * pose
+            lin = quat_rotate(qi, tuple(a - b for a, b in zip(lin, frame.linear_velocity)))  # type: ignore[arg-type]
+            ang = quat_rotate(qi, tuple(a - b for a, b in zip(ang, frame.angular_velocity)))  # type: ignore[arg-type]
+        o = self._offset
+        pose = Pose(
+            tuple(p + d for p, d in zip(pose.position, o.position)),  # type: ignore[arg-type]
+            quat_mul(o.orientation, pose.orientation),
+        )
+        return pose, Twist(tuple(lin), tuple(ang))  # type: ignore[arg-type]
+
+    def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        if self._pub is None or info.paused or info.sim_time_sec + 1e-9 < self._next:
+            return
+        rate = self.config.update_rate
+        self._next = info.sim_time_sec + (1.0 / rate if rate > 0 else 0.0)
+        pose, twist = self.measure(world)
+        gn = self.config.gaussian_noise
+        if gn > 0:
+            g = self._rng.gauss
+            pose = Pose(tuple(p + g(0.0, gn) for p in pose.position), pose.orientation)  # type: ignore[arg-type]
+            twist = Twist(
+                tuple(v + g(0.0, gn) for v in twist.linear),  # type: ignore[arg-type]
+                tuple(v + g(0.0, gn) for v in twist.angular),  # type: ignore[arg-type]
+            )
+        cov = [0.0] * 36
+        for i in (0, 7, 14, 21, 28, 35):
+            cov[i] = gn * gn
+        self._pub.publish(Odometry(info.sim_time_sec, self.frame_id, self.child_frame_id, pose, twist, tuple(cov), tuple(cov)))
