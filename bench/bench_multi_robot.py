@@ -1,0 +1,128 @@
+"""Real-time factor with 1, 10 and 50 namespaced seed robots, each with the ROS bridge on, beside raw MuJoCo.
+
+Run: ``.venv/bin/python bench/bench_multi_robot.py [--seconds S] [--counts 1,10,50]``.
+
+Each robot is the seed robot (examples/simple_robot) spawned in namespace ``rN`` on ``default_world()``
+with its classic diff drive at ``update_rate`` 50 Hz (odom + odom->base TF + wheel TF) and a
+``gazebo_ros_joint_state_publisher`` block added (50 Hz), plus the built-in robot_state_publisher
+(/tf of the moving joints at 50 Hz). All robots drive at v=0.2 m/s, w=0.3 rad/s. Per count it prints:
+
+* raw MuJoCo: ``mj_step`` in a Python loop on a copy of the same compiled model, ctrl as the drives set it;
+* gazelle ``sim.step(N)`` in-process with no ROS (systems on, nothing listening);
+* gazelle + RosBridge (``RosBridge``, /clock at 100 Hz, every endpoint mirrored to rclpy) on the sim
+  thread at rtf=0 for ``--seconds`` wall seconds, nobody subscribed.
+
+RTF = steps/s x timestep. Machine-dependent; nothing asserts timing. Takes well under 2 minutes.
+"""
+
+from __future__ import annotations
+
+import argparse
+import copy
+import logging
+import os
+import re
+import time
+from pathlib import Path
+
+os.environ["ROS_DOMAIN_ID"] = str(os.environ.get("GAZELLE_BENCH_DOMAIN_ID") or (os.getpid() % 100 + 1))
+os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
+
+REPO = Path(__file__).resolve().parent.parent
+ROBOT = REPO / "examples/simple_robot/simple_robot/robot.urdf.xacro"
+V, W = 0.2, 0.3
+RATE_HZ = 50
+
+
+def robot_urdf() -> str:
+    """The seed URDF with the drive at 50 Hz and a 50 Hz joint state publisher block."""
+    from gazelle.description import load
+
+    urdf = load(ROBOT).value.urdf
+    assert urdf
+    urdf = urdf.replace("<publish_odom>", f"<update_rate>{RATE_HZ}</update_rate><publish_odom>", 1)
+    joints = re.findall(r'<joint name="([^"]+)" type="continuous"', urdf)
+    js = "".join(f"<joint_name>{j}</joint_name>" for j in joints)
+    block = (
+        f'<gazebo><plugin name="joint_states" filename="libgazebo_ros_joint_state_publisher.so">'
+        f"<update_rate>{RATE_HZ}</update_rate>{js}</plugin></gazebo>"
+    )
+    return urdf.replace("</robot>", block + "</robot>")
+
+
+def make_sim(n: int):
+    from gazelle.description import Pose, load_string
+    from gazelle.physics._simulation import Simulation
+    from gazelle.systems.diff_drive import DiffDrive
+    from gazelle.worlds import default_world
+
+    model = load_string(robot_urdf()).value
+    sim = Simulation(default_world(), rtf=0)
+    side = max(1, int(n**0.5 + 0.999))
+    for i in range(n):
+        x, y = (i % side) * 3.0, (i // side) * 3.0
+        e = sim.spawn(model, name=f"r{i}", namespace=f"r{i}", pose=Pose((x, y, 0.07)))
+        next(s for s in e.systems if isinstance(s, DiffDrive)).command(V, W)
+    sim.step(200)
+    return sim
+
+
+def measure(n: int, steps: int, seconds: float, bridge_cls) -> dict:
+    import mujoco
+
+    sim = make_sim(n)
+    m = copy.copy(sim.world.model)
+    d = mujoco.MjData(m)
+    d.qpos[:], d.qvel[:], d.ctrl[:] = sim.world.data.qpos, sim.world.data.qvel, sim.world.data.ctrl
+    mujoco.mj_forward(m, d)
+    t0 = time.perf_counter()
+    for _ in range(steps):
+        mujoco.mj_step(m, d)
+    raw = steps / (time.perf_counter() - t0)
+    t0 = time.perf_counter()
+    sim.step(steps)
+    no_ros = steps / (time.perf_counter() - t0)
+    bridge = bridge_cls(sim, clock_rate_hz=100.0)
+    pubs = sum(1 for e in sim.bus.endpoints() if e.is_publisher)
+    i0, w0 = sim.iterations, time.monotonic()
+    sim.start()
+    time.sleep(seconds)
+    sim.stop()
+    ros = (sim.iterations - i0) / (time.monotonic() - w0)
+    bridge.shutdown()
+    return dict(n=n, dt=sim.world.timestep, raw=raw, no_ros=no_ros, ros=ros, nv=m.nv, pubs=pubs)
+
+
+def main() -> int:
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--counts", default="1,10,50", help="robot counts (default 1,10,50)")
+    p.add_argument("--seconds", type=float, default=5.0, help="wall seconds of the ROS measurement (default 5)")
+    p.add_argument("--steps", type=int, default=0, help="steps of the in-process measurements (default: ~3 s worth)")
+    opts = p.parse_args()
+    logging.disable(logging.CRITICAL)
+    t_all = time.perf_counter()
+    from gazelle.ros._bridge import RosBridge
+
+    rows = []
+    for n in (int(c) for c in opts.counts.split(",")):
+        steps = opts.steps or max(500, 6000 // n)
+        rows.append(measure(n, steps, opts.seconds, RosBridge))
+    dt = rows[0]["dt"]
+    print(f"namespaced seed robots on default_world(), each driving v={V} w={W}: diff drive (odom + TF) at {RATE_HZ} Hz,")
+    print(f"joint states at {RATE_HZ} Hz, robot_state_publisher /tf at 50 Hz; dt = {dt * 1000:g} ms; {os.cpu_count()} CPUs\n")
+    hdr = f"{'robots':>6} {'nv':>5} {'ROS pubs':>8} | {'raw mj_step':>15} | {'gazelle no ROS':>15} {'x raw':>6} | {'gazelle + ROS':>15} {'x raw':>6}"
+    print(hdr)
+    print("-" * len(hdr))
+    for r in rows:
+        print(
+            f"{r['n']:>6} {r['nv']:>5} {r['pubs']:>8} | {r['raw'] * dt:>8.2f}x RTF   | {r['no_ros'] * dt:>8.2f}x RTF   "
+            f"{r['no_ros'] / r['raw']:>6.2f} | {r['ros'] * dt:>8.2f}x RTF   {r['ros'] / r['raw']:>6.2f}"
+        )
+    print("-" * len(hdr))
+    print("RTF = steps/s x dt. 'gazelle + ROS' runs the sim thread at rtf=0 with RosBridge up (no subscribers).")
+    print(f"bench took {time.perf_counter() - t_all:.1f} s")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
