@@ -22,6 +22,7 @@ screw          hinge + slide, coupled by a joint equality (thread pitch)
 
 from __future__ import annotations
 
+import logging
 import math
 from dataclasses import dataclass, field
 
@@ -45,6 +46,8 @@ from ..description import (
 )
 from ..description._meshes import MeshReadError, load_mesh
 from ..description._model import quat_rotate
+
+_log = logging.getLogger("gazelle.physics")
 
 SEP = "::"
 MIN_MASS = 1e-6
@@ -162,10 +165,28 @@ def _add_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, col: Collision, name: s
     solref = _solref_from_surface(col, mass_hint, spec.option.timestep)
     if solref is not None:
         kwargs["solref"], kwargs["solimp"] = solref
-    if col.surface.min_depth is not None:
-        kwargs["margin"] = 0.0
-        kwargs["gap"] = 0.0
+    surface = col.surface
+    # MuJoCo uses torsional friction from condim 4 and rolling friction from condim 6
+    if surface.rolling:
+        kwargs["condim"] = 6
+    elif surface.torsional:
+        kwargs["condim"] = 4
+    # Gazebo collides two shapes when (bitmask1 & bitmask2) != 0, default 0xffff; MuJoCo when
+    # (contype1 & conaffinity2) | (contype2 & conaffinity1): both fields = the bitmask is the same rule.
+    mask = surface.collide_bitmask if surface.collide_bitmask is not None else DEFAULT_COLLIDE_BITMASK
+    kwargs["contype"] = kwargs["conaffinity"] = int(mask) & 0xFFFFFFFF
     body.add_geom(**kwargs)
+
+
+DEFAULT_COLLIDE_BITMASK = 0xFFFF
+"""Gazebo's default ``collide_bitmask``."""
+
+_NOT_SIMULATED = ("fdir1", "slip1", "slip2", "kd", "min_depth", "max_vel", "soft_cfm", "soft_erp", "restitution")
+
+
+def unsimulated_surface_parameters(col: Collision) -> list[str]:
+    """The contact parameters a collision sets that MuJoCo cannot honour (see docs/contact_parameters.md)."""
+    return [name for name in _NOT_SIMULATED if getattr(col.surface, name) is not None]
 
 
 def _load_mesh(path: str) -> tuple[np.ndarray, np.ndarray]:
@@ -301,6 +322,7 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> Bui
     world_joints = children.get("world", [])
 
     built = BuiltEntity(name=entity, root_body="", free_joint=None)
+    ignored: dict[str, list[str]] = {}
     total_mass = sum((lk.inertial.mass if lk.inertial else 0.0) for lk in model.links) or 1.0
 
     def add_subtree(parent_body: mujoco.MjsBody, link_name: str, X_PC: Pose, joint: Joint | None) -> None:
@@ -319,6 +341,8 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> Bui
         mass_hint = link.inertial.mass if link.inertial else total_mass
         for i, col in enumerate(link.collisions):
             _add_geom(spec, body, col, scoped(entity, f"{link_name}::{col.name or 'collision'}#{i}"), mass_hint)
+            for param in unsimulated_surface_parameters(col):
+                ignored.setdefault(param, []).append(f"{link_name}/{col.name}")
         for j in children.get(link_name, []):
             add_subtree(body, j.child, j.origin * j.child_offset, j)
 
@@ -344,4 +368,20 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> Bui
         add_subtree(world, j.child, X_WJ * j.child_offset, j)
         if not built.root_body:
             built.root_body = scoped(entity, j.child)
+    for param, where in ignored.items():
+        shown = ", ".join(where[:3]) + (f" and {len(where) - 3} more" if len(where) > 3 else "")
+        _log.warning(f"'{entity}': surface <{param}> is not simulated (MuJoCo has no counterpart), on {shown}")
+    _exclude_self_collisions(spec, model, entity, built)
     return built
+
+
+def _exclude_self_collisions(spec: mujoco.MjSpec, model: Model, entity: str, built: BuiltEntity) -> None:
+    """Gazebo's links of one model do not collide with each other unless self_collide is on."""
+    if model.self_collide:
+        return
+    with_geoms = [lk.name for lk in model.links if lk.collisions and lk.self_collide is not True and lk.name in built.bodies]
+    for i, a in enumerate(with_geoms):
+        for b in with_geoms[i + 1 :]:
+            spec.add_exclude(
+                name=scoped(entity, f"{a}|{b}#exclude"), bodyname1=built.bodies[a], bodyname2=built.bodies[b]
+            )

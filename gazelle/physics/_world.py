@@ -153,6 +153,9 @@ class PhysicsWorld:
         for eq in list(self.spec.equalities):
             if eq.name.startswith(prefix):
                 self.spec.delete(eq)
+        for ex in list(self.spec.excludes):
+            if ex.name.startswith(prefix):
+                self.spec.delete(ex)
         for body in list(self.spec.worldbody.bodies):
             if body.name.startswith(prefix):
                 self.spec.delete(body)

@@ -136,9 +136,9 @@ def start(cmd: list[str], name: str, env: dict[str, str] | None = None, *, stdin
 _STARTED: list[Proc] = []
 
 
-@pytest.fixture(autouse=True)
+@pytest.fixture(autouse=True, scope="module")
 def _no_leftover_processes() -> Iterator[None]:
-    """Whatever a test started and left running is stopped after it (Ctrl-C, then kill)."""
+    """Whatever a test module started and left running is stopped after it (Ctrl-C, then kill)."""
     yield
     while _STARTED:
         proc = _STARTED.pop()
