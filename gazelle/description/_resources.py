@@ -89,3 +89,16 @@ class ResourceResolver:
         if not path.is_absolute():
             path = Path(base_dir or ".") / path
         return path.resolve()
+
+    def roots(self) -> list[Path]:
+        """Every folder a resource may come from: the search paths and the ament prefixes' share folders."""
+        env = self.env if self.env is not None else os.environ
+        found = list(self.search_paths())
+        found.extend(prefix / "share" for prefix in _split(env.get("AMENT_PREFIX_PATH")))
+        return [r.resolve() for r in found if r.is_dir()]
+
+    def is_inside_roots(self, path: Path) -> bool:
+        """Whether ``path`` lies in one of :meth:`roots` (spawning by URI reads nothing else)."""
+        path = path.resolve()
+        return any(path == root or root in path.parents for root in self.roots())
+

@@ -30,7 +30,7 @@ Decisions (also what :func:`features` advertises, nothing more):
 * Spawning by ``uri``: ``model://`` and ``package://`` resolve through
   :class:`gazelle.description.ResourceResolver` (a URI that does not resolve,
   or escapes its package folder, is ``NO_RESOURCE``); ``file://`` and plain
-  paths must name an existing file. A folder (``model://box``) means its
+  paths must name an existing file inside the resource paths (or an ament share folder). A folder (``model://box``) means its
   ``model.sdf``. URDF, xacro and SDF are accepted (by suffix, or detected).
 """
 
@@ -115,6 +115,12 @@ def _result(code: int, message: str = "") -> Result:
 OK = Result.RESULT_OK
 
 
+def builtin_resource_paths() -> list[Path]:
+    """gazelle's own example packages (``package://simple_robot/...``), when installed from a checkout."""
+    examples = Path(__file__).resolve().parents[2] / "examples"
+    return [examples] if examples.is_dir() else []
+
+
 class _Refused(Exception):
     """A request failed with a result code."""
 
@@ -159,7 +165,7 @@ class SimulationInterfaces:
     def __init__(self, node: SimulationNode, resolver: ResourceResolver | None = None):
         self.node = node
         self.sim = node.sim
-        self.resolver = resolver or ResourceResolver()
+        self.resolver = resolver or ResourceResolver(extra_paths=builtin_resource_paths())
         self.cb = ReentrantCallbackGroup()
         # a diverged entity is reported on /rosout (the sim thread calls this once per divergence)
         self.sim.divergence_listeners.append(lambda _name, reason: node.get_logger().error(reason))
@@ -366,6 +372,12 @@ class SimulationInterfaces:
                 SpawnEntity.Response.NO_RESOURCE,
                 f"uri '{uri}' cannot be resolved (unknown model/package, outside its package, or unsupported scheme); "
                 f"resource paths: {where}",
+            )
+        if not uri.startswith(("model://", "package://")) and not self.resolver.is_inside_roots(path):
+            where = ", ".join(str(p) for p in self.resolver.roots()) or "none; set GAZELLE_RESOURCE_PATH"
+            raise _Refused(
+                SpawnEntity.Response.NO_RESOURCE,
+                f"uri '{uri}' is outside the resource paths, so it is not read; resource paths: {where}",
             )
         if path.is_dir():
             cands = [path / "model.sdf", *sorted(path.glob("*.sdf")), *sorted(path.glob("*.urdf")), *sorted(path.glob("*.xacro"))]

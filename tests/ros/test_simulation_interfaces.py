@@ -7,6 +7,7 @@ spawns entities with its own names and puts the simulation in the state it needs
 from __future__ import annotations
 
 import math
+from pathlib import Path
 import re
 import time
 from typing import Any, Iterator
@@ -281,7 +282,7 @@ def test_spawn_entity_uri_and_renaming(ros: RosClient, server: Proc) -> None:
     assert spawn(ros, "x").result.result == SpawnEntity.Response.NO_RESOURCE
 
 
-def test_spawn_entity_failures(ros: RosClient) -> None:
+def test_spawn_entity_failures(ros: RosClient, tmp_path: Path) -> None:
     R = SpawnEntity.Response
     ok = spawn(ros, "str_box", xml=box_sdf("whatever"), z=0.5)
     assert ok.result.result == OK and ok.entity_name == "str_box"
@@ -296,6 +297,12 @@ def test_spawn_entity_failures(ros: RosClient) -> None:
     frame = spawn(ros, "frame_box", xml=box_sdf(), frame="no_such_frame")
     assert frame.result.result == Result.RESULT_OPERATION_FAILED
     assert "initial_pose.header.frame_id" in frame.result.error_message and "no_such_frame" in frame.result.error_message
+    # a real model file outside the resource paths is not read, by path or by file://
+    outside = tmp_path / "secret_robot.sdf"
+    outside.write_text(box_sdf("secret"))
+    for uri in (str(outside), f"file://{outside}"):
+        res = spawn(ros, "secret", uri=uri)
+        assert res.result.result == R.NO_RESOURCE and "outside the resource paths" in res.result.error_message
 
 
 def test_spawn_entities_batch(ros: RosClient) -> None:
