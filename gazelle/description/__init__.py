@@ -198,6 +198,6 @@ def load_string(
     if isinstance(value, Model) and value.source_format in ("urdf", "xacro") and not value.urdf:
         from ._xml import LOCATION_ATTRIBUTE
 
-        urdf = re.sub(rf'\s{LOCATION_ATTRIBUTE}="[^"]*"', "", expanded) if fmt == "xacro" else text
+        urdf = re.sub(rf'\s{LOCATION_ATTRIBUTE}="[^"]*"', "", expanded if fmt == "xacro" else text)
         value = dataclasses.replace(value, urdf=urdf)
     return LoadResult(value, tuple(sink.items))  # type: ignore[arg-type]

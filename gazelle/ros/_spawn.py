@@ -23,6 +23,7 @@ from std_msgs.msg import String
 from std_srvs.srv import Empty
 
 from ..description._model import quat_from_rpy
+from ..systems.robot_state import RSP_PLUGIN
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -44,6 +45,13 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("-spawn_service_timeout", type=float, default=None, help="deprecated alias of -timeout")
     p.add_argument("-unpause", action="store_true", help="call unpause_physics after spawning")
     p.add_argument("-wait", dest="wait", default=None, help="wait for this entity in /get_model_list first")
+    p.add_argument(
+        "-no_robot_state_publisher",
+        action="store_true",
+        help="you run your own robot_state_publisher: gazelle publishes no /robot_description, /tf_static "
+        "or joint /tf for this entity",
+    )
+    p.add_argument("-frame_prefix", default=None, help="prefix of the entity's TF frames (default: NAMESPACE/)")
     for axis in ("x", "y", "z", "R", "P", "Y"):
         p.add_argument(f"-{axis}", type=float, default=0.0, help=f"initial {axis}")
     return p
@@ -80,6 +88,23 @@ def _xml_from_file(path: str) -> str:
             raise ModelLoadError(sink.items)
         return out
     return p.read_text(encoding="utf-8")
+
+
+def with_robot_state_options(xml: str, *, enabled: bool, frame_prefix: str | None) -> str:
+    """Add a ``gazelle_robot_state_publisher`` plugin block (see gazelle.systems.robot_state) to URDF or SDF text."""
+    from xml.sax.saxutils import escape
+
+    body = f"<enabled>{'true' if enabled else 'false'}</enabled>"
+    if frame_prefix is not None:
+        body += f"<frame_prefix>{escape(frame_prefix)}</frame_prefix>"
+    plugin = f'<plugin name="robot_state_publisher" filename="{RSP_PLUGIN}">{body}</plugin>'
+    if "</robot>" in xml:
+        i = xml.rindex("</robot>")
+        return xml[:i] + f"<gazebo>{plugin}</gazebo>" + xml[i:]
+    if "</model>" in xml:
+        i = xml.rindex("</model>")  # the outermost model closes last
+        return xml[:i] + plugin + xml[i:]
+    return xml
 
 
 def main(argv: list[str]) -> int:
@@ -135,6 +160,8 @@ def _run(node: Node, executor: SingleThreadedExecutor, args: argparse.Namespace,
     if not xml.strip():
         return _fail(node, "Error: entity XML is empty")
 
+    if args.no_robot_state_publisher or args.frame_prefix is not None:
+        xml = with_robot_state_options(xml, enabled=not args.no_robot_state_publisher, frame_prefix=args.frame_prefix)
     ns = args.gazebo_namespace.rstrip("/")
     service = f"{ns}/spawn_entity"
     client = node.create_client(SpawnEntity, service)

@@ -104,3 +104,40 @@ def test_three_namespaced_robots_keep_separate_odometry_and_tf(sim_factory, ros_
     assert not {"base_link", "odom", "left_wheel"} & set(frames), f"unprefixed frames published: {frames}"
     for ns in ROBOTS:
         assert {f"{ns}/base_link", f"{ns}/left_wheel", f"{ns}/right_wheel"} <= set(frames)
+
+
+def test_robot_state_publisher_is_built_in_and_can_be_turned_off(sim_factory, ros_client):
+    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+    from std_msgs.msg import String
+    from tf2_msgs.msg import TFMessage
+
+    sim_factory()
+    latched = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
+    descriptions: dict[str, str] = {}
+    frames: set[tuple[str, str]] = set()
+    lock = threading.Lock()
+    for ns in ("own", "mine"):
+        ros_client.node.create_subscription(
+            String, f"/{ns}/robot_description", lambda m, ns=ns: descriptions.__setitem__(ns, m.data), latched
+        )
+
+    def on_tf(msg: TFMessage) -> None:
+        with lock:
+            frames.update((t.header.frame_id, t.child_frame_id) for t in msg.transforms)
+
+    ros_client.node.create_subscription(TFMessage, "/tf", on_tf, 100)
+    for ns, extra in (("own", ["-frame_prefix", "custom/"]), ("mine", ["-no_robot_state_publisher"])):
+        spawn = start(
+            [*GAZELLE, "spawn", "-entity", ns, "-robot_namespace", ns, "-file", str(SEED_XACRO), "-y", "2" if ns == "own" else "0", *extra],
+            f"spawn {ns}",
+        )
+        assert spawn.wait(60) == 0, spawn.output
+    # the built-in one: the URDF on /own/robot_description, joint frames with the chosen prefix
+    wait_for(lambda: "own" in descriptions, 15, "/own/robot_description")
+    assert '<robot name="simple_robot"' in descriptions["own"] and "gazelle_source" not in descriptions["own"]
+    wait_for(lambda: ("custom/base_link", "custom/left_wheel") in frames, 15, "the built-in publisher's joint TF")
+    # turned off: nothing on /mine/robot_description; the wheel TF comes from the diff drive's publish_wheel_tf only
+    with lock:
+        mine = {f for f in frames if f[0].startswith("mine/")}
+    assert "mine" not in descriptions
+    assert mine <= {("mine/odom", "mine/base_link"), ("mine/base_link", "mine/left_wheel"), ("mine/base_link", "mine/right_wheel")}
