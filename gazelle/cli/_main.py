@@ -95,6 +95,31 @@ def demo(
     raise typer.Exit(run_demo(out, rtf=rtf))
 
 
+@app.command()
+def snapshot(
+    world: Optional[Path] = typer.Option(None, "--world", help="World or model file to show (default: the empty world)."),
+    out: Path = typer.Option(Path("out/snapshot.png"), "--out", help="PNG to write."),
+    attach: Optional[str] = typer.Option(
+        None, "--attach", help="Viewer URL of a running `gazelle sim` (e.g. http://127.0.0.1:8080) instead of a new sim."
+    ),
+    settle: float = typer.Option(1.0, "--settle", help="Seconds to let the scene load and settle before the shot."),
+    arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
+) -> None:
+    """Write a PNG of the browser view, headlessly (Debian's chromium), for docs and bug reports."""
+    from ._sim import load_world
+    from ..description import ModelLoadError
+    from ..viewer._snapshot import run_snapshot
+
+    loaded = None
+    if attach is None:
+        try:
+            loaded = load_world(world, _parse_args(arg))
+        except ModelLoadError as err:
+            print(str(err), file=sys.stderr)
+            raise typer.Exit(1)
+    raise typer.Exit(run_snapshot(loaded, out, attach=attach, settle_sec=settle))
+
+
 def main(argv: list[str] | None = None) -> None:
     """Entry point of the ``gazelle`` console script."""
     app(args=argv if argv is not None else sys.argv[1:], prog_name="gazelle")

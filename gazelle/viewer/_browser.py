@@ -79,6 +79,8 @@ def wait_rendered(page: Any, timeout_sec: float) -> None:
     """Wait until the 3D canvas and the control panel exist and the scene had a moment to draw."""
     page.wait_for_selector("canvas", timeout=timeout_sec * 1000)
     page.get_by_text("Sim time").first.wait_for(timeout=timeout_sec * 1000)
+    # hide toasts (e.g. "Software WebGL rendering detected"): they would cover the scene in snapshots
+    page.add_style_tag(content=".mantine-Notifications-root, .mantine-Notification-root { display: none !important; }")
     # the first frames after connecting stream the scene: wait for two animation frames
     page.evaluate("() => new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))")
 
