@@ -35,8 +35,8 @@ def rgba_to_rgb255(rgba: tuple[float, float, float, float] | None) -> tuple[int,
 @lru_cache(maxsize=256)
 def _load_mesh_file(path: str) -> trimesh.Trimesh:
     loaded = trimesh.load(path, force="mesh", process=False)
-    if not isinstance(loaded, trimesh.Trimesh):  # pragma: no cover - force="mesh" concatenates scenes
-        raise ValueError(f"{path}: not a triangle mesh")
+    if not isinstance(loaded, trimesh.Trimesh) or len(loaded.faces) == 0:
+        raise ValueError("no triangles in the file")
     return loaded
 
 

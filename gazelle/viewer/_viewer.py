@@ -13,6 +13,8 @@ selected entity (exactly what the ROS bridge does with a received message).
 
 from __future__ import annotations
 
+import contextlib
+import io
 import logging
 import threading
 import time
@@ -89,7 +91,8 @@ class Viewer:
     ):
         self.sim = sim
         self.rate_hz = rate_hz
-        self.server = viser.ViserServer(host=host, port=port, verbose=False)
+        with contextlib.redirect_stdout(io.StringIO()):  # viser's banner; we print our own URL line
+            self.server = viser.ViserServer(host=host, port=port, verbose=False)
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
         self._nodes: dict[str, _EntityNodes] = {}
@@ -99,6 +102,8 @@ class Viewer:
         self._wall0 = time.monotonic()
         self.frames = 0
         """Frames pushed so far (for tests and the bench)."""
+        self.cpu_sec = 0.0
+        """CPU time the viewer thread spent on frames (for the bench)."""
         self._setup_scene()
         self._setup_gui()
 
@@ -117,7 +122,8 @@ class Viewer:
         self._stop.set()
         if self._thread is not None:
             self._thread.join(5.0)
-        self.server.stop()
+        with contextlib.redirect_stdout(io.StringIO()):
+            self.server.stop()
 
     # ------------------------------------------------------------------ scene
     def _setup_scene(self) -> None:
@@ -357,6 +363,7 @@ class Viewer:
                 self._stop.wait(period)
                 next_frame = time.monotonic()
                 continue
+            cpu0 = time.thread_time()
             try:
                 snap = self.update()
                 now = time.monotonic()
@@ -365,6 +372,7 @@ class Viewer:
                     next_gui = now + gui_period
             except Exception:  # noqa: BLE001 - logged; the viewer keeps going
                 _log.exception("viewer: frame update failed")
+            self.cpu_sec += time.thread_time() - cpu0
             next_frame += period
             delay = next_frame - time.monotonic()
             if delay < 0:
