@@ -1,5 +1,5 @@
 """Fixtures for the viewer tests: a real `gazelle sim` with its viewer on a free port, and a
-headless Debian chromium (Playwright) looking at it."""
+headless Debian chromium (Playwright) looking at it (test_browser.py skips without chromium)."""
 
 from __future__ import annotations
 
@@ -7,12 +7,6 @@ from pathlib import Path
 from typing import Any, Iterator
 
 import pytest
-
-from gazelle.viewer._browser import find_chromium
-
-pytest.importorskip("playwright")
-if find_chromium() is None:
-    pytest.skip("no system chromium (scripts/setup.sh installs Debian's chromium)", allow_module_level=True)
 
 from ros.conftest import GAZELLE, REPO, SEED_XACRO, Proc, RosClient, ros_env, start, wait_for  # noqa: E402,F401
 

@@ -18,7 +18,12 @@ from typing import Any
 import numpy as np
 import pytest
 
+from gazelle.viewer._browser import find_chromium
 from gazelle.viewer._viewer import CAMERA_FOV_RAD, CAMERA_LOOK_AT, CAMERA_POSITION
+
+pytest.importorskip("playwright")
+if find_chromium() is None:
+    pytest.skip("no system chromium (scripts/setup.sh installs Debian's chromium)", allow_module_level=True)
 
 from .conftest import ARTIFACTS, GAZELLE, REPO, SEED_XACRO, wait_for
 
@@ -164,3 +169,21 @@ def test_drive_buttons_move_the_robot(page: Any, ros_client_mod: Any) -> None:
         return math.hypot(v.x, v.y) < 0.02
 
     wait_for(stopped, timeout=10, what="the robot stopping after Stop", interval=0.1)
+
+
+def test_snapshot_command_writes_a_png_with_the_robot(tmp_path: Path) -> None:
+    out = tmp_path / "snapshot.png"
+    res = subprocess.run(
+        [*GAZELLE, "snapshot", "--world", str(SEED_XACRO), "--out", str(out)],
+        cwd=REPO,
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert res.returncode == 0, res.stdout + res.stderr
+    shutil.copy(out, ARTIFACTS / "snapshot_seed.png")
+    mask = blue_mask(out.read_bytes())
+    h, w = mask.shape
+    cx, cy = project(ROBOT_CENTRE, w, h)
+    region = mask[int(cy) - REGION_HALF_PX : int(cy) + REGION_HALF_PX, int(cx) - REGION_HALF_PX : int(cx) + REGION_HALF_PX]
+    assert region.sum() >= MIN_BLUE_PX, f"only {region.sum()} blue pixels where the robot should be"

@@ -1,0 +1,99 @@
+"""The viewer layer without a browser: its import boundaries, geometry, and the scene/controls it keeps."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+import trimesh
+
+from gazelle.description import Box, Capsule, Cylinder, Ellipsoid, Mesh, Plane, Pose, Sphere, load
+from gazelle.viewer._geometry import to_trimesh
+
+from .conftest import REPO, SEED_XACRO
+
+
+def test_layers_viewer_never_imports_rclpy_and_core_never_imports_viewer() -> None:
+    code = (
+        "import sys, gazelle.physics, gazelle.systems, gazelle.description, gazelle.cli._sim\n"
+        "assert 'gazelle.viewer' not in sys.modules, 'the core imported the viewer'\n"
+        "import gazelle.viewer, gazelle.viewer._browser, gazelle.viewer._snapshot\n"
+        "bad = sorted(m for m in sys.modules if m.split('.')[0] == 'rclpy')\n"
+        "assert not bad, bad\n"
+    )
+    res = subprocess.run([sys.executable, "-c", code], cwd=REPO, capture_output=True, text=True, timeout=60)
+    assert res.returncode == 0, res.stderr
+
+
+@pytest.mark.parametrize(
+    ("geometry", "extents"),
+    [
+        (Box((0.3, 0.2, 0.1)), (0.3, 0.2, 0.1)),
+        (Cylinder(0.05, 0.04), (0.1, 0.1, 0.04)),  # along z, as in URDF/SDF
+        (Sphere(0.1), (0.2, 0.2, 0.2)),
+        (Capsule(0.1, 0.5), (0.2, 0.2, 0.7)),
+        (Ellipsoid((0.1, 0.2, 0.3)), (0.2, 0.4, 0.6)),
+    ],
+)
+def test_primitives_have_their_description_size(geometry: object, extents: tuple[float, float, float]) -> None:
+    tm = to_trimesh(geometry)
+    assert tm is not None
+    np.testing.assert_allclose(tm.vertices.max(0) - tm.vertices.min(0), extents, rtol=0.02)
+
+
+def test_plane_sits_just_below_zero_so_the_grid_shows() -> None:
+    tm = to_trimesh(Plane(size=(10.0, 4.0)))
+    assert tm is not None
+    assert tm.vertices[:, 2].max() < 0.0 and tm.vertices[:, 2].min() > -0.01
+    np.testing.assert_allclose(tm.vertices.max(0)[:2] - tm.vertices.min(0)[:2], (10.0, 4.0))
+
+
+@pytest.mark.parametrize("ext", ["stl", "obj"])
+def test_mesh_files_load_with_their_scale(tmp_path, ext: str) -> None:
+    path = tmp_path / f"box.{ext}"
+    trimesh.creation.box(extents=(1.0, 2.0, 3.0)).export(path)
+    tm = to_trimesh(Mesh(uri=str(path), path=str(path), scale=(0.5, 0.5, 2.0)))
+    assert tm is not None
+    np.testing.assert_allclose(tm.vertices.max(0) - tm.vertices.min(0), (0.5, 1.0, 6.0), rtol=1e-6)
+
+
+def test_unresolved_or_broken_mesh_is_skipped(tmp_path) -> None:
+    assert to_trimesh(Mesh(uri="package://nowhere/x.stl", path=None)) is None
+    bad = tmp_path / "bad.stl"
+    bad.write_text("not a mesh")
+    assert to_trimesh(Mesh(uri=str(bad), path=str(bad))) is None
+
+
+def test_scene_follows_spawn_and_delete_and_drive_reaches_the_diff_drive() -> None:
+    from gazelle.physics import Simulation
+    from gazelle.viewer import Viewer
+    from gazelle.worlds import default_world
+
+    sim = Simulation(default_world(), rtf=0.0)
+    sim.start()
+    viewer = Viewer(sim, port=0)  # no thread: frames are pulled by hand
+    try:
+        assert viewer.server.get_host() == "127.0.0.1"
+        viewer.update()
+        before = set(viewer._nodes)
+        sim.spawn(load(SEED_XACRO).value, name="r1", pose=Pose((1.0, 0.0, 0.0)))
+        snap = viewer.update()
+        assert snap is not None and set(viewer._nodes) == before | {"r1"}
+        assert set(viewer._nodes["r1"].links) == {"base_link", "left_wheel", "right_wheel"}
+        assert "r1" in viewer._entity_dd.options
+        x0 = snap.poses["r1"]["base_link"][0][0]
+        assert viewer.drive(0.5, 0.0, "r1") == 1
+        assert viewer.drive(0.5, 0.0, "ground_plane") == 0
+        deadline = sim.call(lambda: sim.world.time) + 2.0
+        while sim.call(lambda: sim.world.time) < deadline:
+            snap = viewer.update()
+        assert snap is not None and snap.poses["r1"]["base_link"][0][0] > x0 + 0.3
+        assert viewer._nodes["r1"].links["base_link"].frame.position[0] > x0 + 0.3
+        sim.delete("r1")
+        viewer.update()
+        assert set(viewer._nodes) == before and "r1" not in viewer._entity_dd.options
+    finally:
+        viewer.stop()
+        sim.stop()
