@@ -8,10 +8,7 @@ over) must keep bounded velocities.
 
 from __future__ import annotations
 
-import importlib.util
 import math
-import os
-from pathlib import Path
 
 import numpy as np
 import pytest

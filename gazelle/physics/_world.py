@@ -14,7 +14,7 @@ from typing import Callable
 import mujoco
 import numpy as np
 
-from ..description import Model, Plane, Pose, World
+from ..description import Model, Pose, World
 from ..description._model import quat_conj, quat_rotate
 from ._builder import JOINT_ARMATURE, SEP, BuildError, BuiltEntity, add_model, scoped
 
@@ -359,8 +359,6 @@ class PhysicsWorld:
         link = e.model.link(root)
         return e.X_WM * (link.pose or Pose())
 
-    def ground_planes(self) -> list[str]:
-        return [m.name for m in self.description.models if any(isinstance(c.geometry, Plane) for lk in m.links for c in lk.collisions)]
 
     # ------------------------------------------------------------------ batch building (simulation_interfaces SpawnEntities)
     def add_entities(

@@ -32,6 +32,7 @@ from rosgraph_msgs.msg import Clock
 from std_srvs.srv import Empty
 
 from ..description import Model, ModelLoadError, Pose, World, load_string
+from ..description._model import quat_conj, quat_rotate
 from ..physics import Simulation, WorldError
 from ..systems._base import UpdateInfo
 from ..systems._bus import Endpoint, MsgType, Qos, Transform, TransformBatch
@@ -368,8 +369,6 @@ class SimulationNode(Node):
             res.success = False
             self.get_logger().error(f"GetEntityState: {err}")
             return res
-        from ..description._model import quat_conj, quat_rotate
-
         X_FE = X_WF.inverse() * st.pose
         q_inv = quat_conj(X_WF.orientation)
         lin = quat_rotate(q_inv, st.linear_velocity)
@@ -390,8 +389,6 @@ class SimulationNode(Node):
         try:
             X_WF = self.resolve_frame(s.reference_frame)
             pose = X_WF * from_pose_msg(s.pose)
-            from ..description._model import quat_rotate
-
             lin = quat_rotate(X_WF.orientation, (s.twist.linear.x, s.twist.linear.y, s.twist.linear.z))
             ang = quat_rotate(X_WF.orientation, (s.twist.angular.x, s.twist.angular.y, s.twist.angular.z))
             self.sim.call(lambda: self.sim.world.set_entity_state(entity, pose, lin, ang))

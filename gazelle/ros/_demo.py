@@ -193,7 +193,7 @@ def run_demo(out: Path, *, rtf: float = 1.0) -> int:
             while not done.is_set():
                 fut = client.call_async(GetEntityState.Request(name="simple_robot"))
                 ev = threading.Event()
-                fut.add_done_callback(lambda _f: ev.set())
+                fut.add_done_callback(lambda _f, ev=ev: ev.set())
                 if ev.wait(5) and fut.result() is not None and fut.result().success:
                     r = fut.result()
                     p = r.state.pose

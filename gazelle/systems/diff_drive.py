@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import logging
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import mujoco
@@ -20,7 +20,7 @@ import numpy as np
 from ..description import ConfigElement, Model, Pose
 from ..description._model import quat_from_rpy, quat_rotate
 from ._base import System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
-from ._bus import Endpoint, JointStates, MsgType, Odometry, Qos, Transform, TransformBatch, Twist, resolve_topic
+from ._bus import Endpoint, JointStates, MsgType, Odometry, Transform, TransformBatch, Twist, resolve_topic
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..physics._world import PhysicsWorld

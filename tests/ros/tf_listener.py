@@ -8,7 +8,6 @@ transforms from ROOT to each TARGET itself and prints one JSON line:
 """
 
 import json
-import math
 import sys
 import threading
 
