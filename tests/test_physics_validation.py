@@ -198,6 +198,17 @@ def test_pendulum_period(L: float) -> None:
     assert np.max(np.abs(qs)) == pytest.approx(theta0, rel=0.01)  # no numerical damping to speak of
 
 
+def test_joint_to_the_world_sits_at_the_model_pose_once() -> None:
+    """An SDF model hinged to the world at <pose>0 0 2</pose> has its hinge at z = 2 (not the model pose twice);
+    spawned at a pose, the hinge follows the spawn pose."""
+    sim = Simulation(make_world(pendulum()), rtf=0)
+    bob = sim.world.body_id("pendulum")
+    assert tuple(sim.world.data.xpos[bob]) == pytest.approx((0.0, 0.0, 2.0), abs=1e-12)
+    model = make_world(pendulum()).models[0]
+    sim.spawn(model, name="moved", pose=Pose((1.0, 0.0, 0.5)))
+    assert sim.world.entity_state("moved").pose.position == pytest.approx((1.0, 0.0, 2.5), abs=1e-12)
+
+
 def test_joint_damping_decays_as_exp_minus_bt_over_2I() -> None:
     b = 0.2
     sim = Simulation(make_world(pendulum(damping=b)), rtf=0)
@@ -258,6 +269,51 @@ def test_kinematic_link_is_not_moved_by_gravity_or_contacts() -> None:
     sim.world.set_entity_state("plate", Pose((0.0, 0.0, 0.5)))
     sim.step(10)
     assert sim.world.entity_state("plate").pose.position == pytest.approx((0.0, 0.0, 0.5), abs=1e-12)
+
+
+def flap(kinematic: bool) -> str:
+    """A 1 m x 0.3 m plate hinged about y to the world at (0, 0, 1), reaching out along +x (its weight pulls it down)."""
+    kin = "<kinematic>true</kinematic>" if kinematic else ""
+    return (
+        f'<model name="flap"><pose>0 0 1 0 0 0</pose><link name="plate">{kin}'
+        "<inertial><pose>0.5 0 0 0 0 0</pose><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.08</iyy><izz>0.09</izz></inertia></inertial>"
+        '<collision name="c"><pose>0.5 0 0 0 0 0</pose><geometry><box><size>1 0.3 0.05</size></box></geometry></collision>'
+        '</link><joint name="hinge" type="revolute"><parent>world</parent><child>plate</child>'
+        "<axis><xyz>0 1 0</xyz></axis></joint></model>"
+    )
+
+
+def test_kinematic_link_on_a_hinge_is_not_moved_by_gravity_or_contacts() -> None:
+    """A kinematic link below a joint: its weight and a 1 kg ball landing off-axis leave the joint exactly where it is;
+    it carries the ball; only set-state calls move it (and then it keeps its set velocity exactly)."""
+    # without <kinematic> the same plate swings down at once, and the ball would knock it further
+    free = Simulation(make_world(flap(False)), rtf=0)
+    free.step(300)
+    qadr, dadr = free.world.joint_address("flap", "hinge")
+    assert free.world.data.qpos[qadr] > 0.3  # +y rotation tips +x downwards
+
+    sim = Simulation(make_world(flap(True) + ball(z=2.0, x=0.8)), rtf=0)
+    qadr, dadr = sim.world.joint_address("flap", "hinge")
+    hit = False
+    for _ in range(30):
+        sim.step(100)
+        hit = hit or sim.world.data.ncon > 0
+        assert sim.world.data.qpos[qadr] == 0.0 and sim.world.data.qvel[dadr] == 0.0, sim.world.time
+    assert hit
+    assert z_of(sim, "ball") == pytest.approx(1.0 + 0.025 + 0.1, abs=0.003)  # resting on the plate
+    assert sim.world.entity_state("ball").pose.position[0] == pytest.approx(0.8, abs=0.01)
+    # set-state moves it: a position stays put, a velocity is kept exactly while the ball rides on it
+    sim.world.set_joint_state("flap", "hinge", position=-0.05)
+    sim.step(500)
+    assert sim.world.data.qpos[qadr] == -0.05
+    sim.world.set_joint_state("flap", "hinge", velocity=-0.1)
+    n = 1000
+    sim.step(n)
+    assert sim.world.data.qvel[dadr] == -0.1
+    assert sim.world.data.qpos[qadr] == pytest.approx(-0.05 - 0.1 * n * sim.world.timestep, rel=1e-12)
+    assert z_of(sim, "ball") > 1.0 + 0.1  # lifted with the plate, not knocked through it
+    with pytest.raises(Exception, match="no movable joint"):
+        sim.world.set_joint_state("flap", "nope", position=0.0)
 
 
 # ---------------------------------------------------------------------- diff drive

@@ -18,6 +18,25 @@ ball           ball
 universal      two hinges
 screw          hinge + slide, coupled by a joint equality (thread pitch)
 =============  ===============================================================
+
+Kinematic links (SDF ``<kinematic>true</kinematic>``; Gazebo: not moved by forces,
+gravity or contacts, yet placed by joint positions and set-state calls):
+
+* a kinematic *root* link gets no free joint: it stays where it is put
+  (:meth:`PhysicsWorld.set_entity_state` moves it) and carries what lands on it;
+* a kinematic link *below a joint* gets gravity compensation, and the dofs of the
+  joint above it get a huge armature (:data:`KINEMATIC_ARMATURE`) so that the
+  constraint solver sees an obstacle of practically infinite inertia; after every
+  step :class:`PhysicsWorld` then puts those dofs back exactly where their own
+  velocity takes them (``q += qdot·dt``, ``qdot`` unchanged), so no force moves
+  them by even one bit. Their position and velocity change only through
+  :meth:`PhysicsWorld.set_joint_state` (or a reset).
+
+Limits: actuators on a kinematic joint (e.g. a ``JointPositionController``) have no
+effect: command it with ``set_joint_state``; only hinge and slide dofs are held
+exactly (the ball of a nested ``ball``/``floating`` joint above a kinematic link
+only gets the armature, so it creeps under large loads); the dynamic links of the
+same robot still feel the kinematic link's inertia but not its weight.
 """
 
 from __future__ import annotations
@@ -53,6 +72,8 @@ SEP = "::"
 MIN_MASS = 1e-6
 JOINT_ARMATURE = 1e-4
 """Rotor inertia added to every 1-dof joint (kg·m²): keeps light links well conditioned."""
+KINEMATIC_ARMATURE = 1e8
+"""Armature of the dofs above a kinematic link (kg·m² or kg): contacts see an immovable obstacle."""
 
 
 class BuildError(Exception):
@@ -76,6 +97,8 @@ class BuiltEntity:
     joints: dict[str, list[str]] = field(default_factory=dict)
     """description joint name -> MuJoCo joint names (several for planar/universal/...)."""
     equalities: list[str] = field(default_factory=list)
+    kinematic_joints: list[str] = field(default_factory=list)
+    """MuJoCo joints above kinematic links: moved only by set-state calls (see the module docstring)."""
 
 
 def friction_priority(mu: float) -> int:
@@ -338,6 +361,14 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> Bui
         _set_inertial(body, link)
         if joint is not None:
             _add_joint_dofs(spec, body, joint, scoped(entity, joint.name), built)
+            if link.kinematic:
+                for jname in built.joints[joint.name]:
+                    mj = spec.joint(jname)
+                    mj.armature = KINEMATIC_ARMATURE
+                    mj.damping = [0.0, 0.0, 0.0]
+                    mj.frictionloss = 0.0
+                    mj.stiffness = [0.0, 0.0, 0.0]
+                    built.kinematic_joints.append(jname)
         mass_hint = link.inertial.mass if link.inertial else total_mass
         for i, col in enumerate(link.collisions):
             _add_geom(spec, body, col, scoped(entity, f"{link_name}::{col.name or 'collision'}#{i}"), mass_hint)
@@ -364,7 +395,10 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> Bui
         child = links.get(j.child)
         if child is None:
             raise BuildError(f"joint '{j.name}': unknown child link '{j.child}'")
-        X_WJ = X_WM * j.origin
+        # the SDF loader gives a joint to the world its origin in the world frame of the model's own
+        # pose (``model.pose``): re-express it in the model frame, so it follows the spawn pose and the
+        # model pose is not applied twice (URDF: ``model.pose`` is the identity, origin in the model frame)
+        X_WJ = X_WM * model.pose.inverse() * j.origin
         add_subtree(world, j.child, X_WJ * j.child_offset, j)
         if not built.root_body:
             built.root_body = scoped(entity, j.child)

@@ -18,6 +18,7 @@ from ..description import Model, Pose, World
 from ..description._model import quat_conj, quat_rotate
 from ._builder import JOINT_ARMATURE, SEP, BuildError, BuiltEntity, add_model, scoped
 
+_ONE_DOF = (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
 ENTITY_NAME_RE = re.compile(r"^[A-Za-z_][A-Za-z0-9_\-.]*(/[A-Za-z_][A-Za-z0-9_\-.]*)*$")
 
 
@@ -88,6 +89,8 @@ class PhysicsWorld:
         """Bumped at every recompile: indices cached against an older generation are stale."""
         self._before_compile: list[Callable[[], None]] = []
         self._kinematics_stale = False
+        self._held: tuple[np.ndarray, np.ndarray] | None | bool = False
+        """(qpos addresses, dof addresses) of the hinge/slide dofs above kinematic links; False = not indexed yet."""
         self.model: mujoco.MjModel = self.spec.compile()
         self.data = mujoco.MjData(self.model)
 
@@ -95,6 +98,7 @@ class PhysicsWorld:
     def _recompile(self) -> None:
         self.model, self.data = self.spec.recompile(self.model, self.data)
         self.generation += 1
+        self._held = False  # re-indexed at the next step, once ``entities`` matches the model
 
     def add_entity(
         self,
@@ -231,8 +235,30 @@ class PhysicsWorld:
     def timestep(self) -> float:
         return float(self.model.opt.timestep)
 
+    def _held_dofs(self) -> tuple[np.ndarray, np.ndarray] | None:
+        if self._held is False:
+            qadr: list[int] = []
+            dadr: list[int] = []
+            for e in self.entities.values():
+                for mj in e.built.kinematic_joints:
+                    jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, mj)
+                    if jid >= 0 and int(self.model.jnt_type[jid]) in _ONE_DOF:
+                        qadr.append(int(self.model.jnt_qposadr[jid]))
+                        dadr.append(int(self.model.jnt_dofadr[jid]))
+            self._held = (np.array(qadr), np.array(dadr)) if qadr else None
+        return self._held  # type: ignore[return-value]
+
     def step(self) -> None:
-        mujoco.mj_step(self.model, self.data)
+        held = self._held_dofs()
+        if held is None:
+            mujoco.mj_step(self.model, self.data)
+        else:
+            # kinematic joints: no force moves them; they keep their own velocity exactly
+            qadr, dadr = held
+            q0, v0 = self.data.qpos[qadr], self.data.qvel[dadr]
+            mujoco.mj_step(self.model, self.data)
+            self.data.qvel[dadr] = v0
+            self.data.qpos[qadr] = q0 + v0 * self.model.opt.timestep
         # mj_step computes kinematics *before* it integrates, so xpos/xquat/cvel now describe
         # the previous step's state; refresh them lazily, on the first query
         self._kinematics_stale = True
@@ -339,6 +365,27 @@ class PhysicsWorld:
         if jid < 0:
             raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' has no joint '{mj_joint}'")
         return int(self.model.jnt_qposadr[jid]), int(self.model.jnt_dofadr[jid])
+
+    def set_joint_state(self, entity: str, joint: str, position: float | None = None, velocity: float | None = None) -> None:
+        """Set the position and/or velocity of a 1-dof (hinge or slide) joint of an entity, by its
+        description name; the way to move a kinematic joint, which no force moves."""
+        e = self.entities.get(entity)
+        if e is None:
+            raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' does not exist")
+        mj = e.built.joints.get(joint)
+        if not mj:
+            raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' has no movable joint '{joint}'")
+        if any(v is not None and not math.isfinite(v) for v in (position, velocity)):
+            raise WorldError(ErrorKind.INVALID_POSE, f"state for joint '{joint}' of '{entity}' is not finite")
+        jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, mj[0])
+        if int(self.model.jnt_type[jid]) not in _ONE_DOF:
+            raise WorldError(ErrorKind.INCORRECT_STATE, f"joint '{joint}' of '{entity}' is not a 1-dof joint")
+        if position is not None:
+            self.data.qpos[self.model.jnt_qposadr[jid]] = position
+        if velocity is not None:
+            self.data.qvel[self.model.jnt_dofadr[jid]] = velocity
+        mujoco.mj_forward(self.model, self.data)
+        self._kinematics_stale = False
 
     def actuator_id(self, name: str) -> int:
         return mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_ACTUATOR, name)
