@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import contextlib
 import io
+import math
 import logging
 import threading
 import time
@@ -24,8 +25,10 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import viser
 
+from ..description import Model, Pose, load
 from ..systems._bus import MsgType, Twist
 from ._geometry import rgba_to_rgb255, to_trimesh
+from ._models import ModelFile, find_models
 
 if TYPE_CHECKING:
     from ..physics import Simulation
@@ -45,6 +48,44 @@ CAMERA_LOOK_AT = (0.0, 0.0, 0.05)
 CAMERA_FOV_RAD = 50.0 * np.pi / 180.0
 NO_SELECTION = "(none)"
 COLLISION_RGB = (255, 120, 0)
+TRAIL_RGB = (230, 30, 140)
+TRAIL_RATE_HZ = 5.0
+"""Trail samples per wall second (and trail redraws while a browser is connected)."""
+TRAIL_MAX_POINTS = 3000
+TRAIL_MIN_STEP = 0.005
+"""Metres the robot must move before a new trail point is kept."""
+CONTACT_RGB = (230, 20, 20)
+CONTACT_MAX = 500
+NO_MODELS = "(no models on the resource paths)"
+SENSORS_NOTE = (
+    "**Sensors:** gazelle has no sensors yet (no lidar, no camera), "
+    "so there is nothing to overlay; lidar rays and camera images will appear here once sensors exist."
+)
+KEYS_MARKER = "gazelle-keyboard-drive"
+KEYS_HELP = "W/↑ forward, S/↓ back, A/← left, D/→ right (hold); release or Space/X: stop"
+# viser has no keyboard-event API: this snippet (run through an <img onerror> in a GUI
+# HTML element, as viser renders HTML without running <script>) maps keys to clicks on
+# the Drive buttons, so the keys go through the same path as the buttons. It acts only
+# while the marker element exists (the checkbox puts it there) and swallows the keys
+# in the capture phase so viser's own WASD camera movement does not also fire.
+KEYS_JS = (
+    "if(!window.__gazelleKeys){window.__gazelleKeys=1;"
+    "const M={KeyW:'Forward',ArrowUp:'Forward',KeyS:'Back',ArrowDown:'Back',KeyA:'Left',ArrowLeft:'Left',"
+    "KeyD:'Right',ArrowRight:'Right',Space:'Stop',KeyX:'Stop'};const H=new Set();"
+    "const on=()=>!!document.getElementById('" + KEYS_MARKER + "');"
+    "const form=(t)=>t&&(t.tagName==='INPUT'||t.tagName==='TEXTAREA'||t.isContentEditable);"
+    "const press=(n)=>{const b=[...document.querySelectorAll('button')].find(b=>b.textContent.trim()===n);if(b)b.click();};"
+    "window.addEventListener('keydown',(e)=>{if(!on()||!(e.code in M)||form(e.target))return;"
+    "e.preventDefault();e.stopImmediatePropagation();if(e.repeat||H.has(e.code))return;"
+    "if(M[e.code]!=='Stop')H.add(e.code);press(M[e.code]);},true);"
+    "window.addEventListener('keyup',(e)=>{if(!on()||!(e.code in M)||form(e.target))return;"
+    "e.preventDefault();e.stopImmediatePropagation();if(H.delete(e.code)&&H.size===0)press('Stop');},true);"
+    "window.addEventListener('blur',()=>{if(H.size){H.clear();if(on())press('Stop');}});}"
+)
+KEYS_HTML = (
+    f'<div id="{KEYS_MARKER}" style="font-size:0.8em;opacity:0.8">{KEYS_HELP}</div>'
+    f'<img src="data:," alt="" style="display:none" onerror="{KEYS_JS}">'
+)
 
 
 @dataclass
@@ -100,6 +141,14 @@ class Viewer:
         self._lock = threading.Lock()
         self._last: Snapshot | None = None
         self._wall0 = time.monotonic()
+        self._trail: list[tuple[float, float, float]] = []
+        self._trail_entity: tuple[str, int] | None = None
+        self._trail_handle: Any = None
+        self._trail_drawn = -1
+        self._trail_last_t = -1.0
+        self._next_trail = 0.0
+        self._contact_handle: Any = None
+        self._models: list[ModelFile] = []
         self.frames = 0
         """Frames pushed so far (for tests and the bench)."""
         self.cpu_sec = 0.0
@@ -205,9 +254,29 @@ class Viewer:
             self._left = g.add_button("Left")
             self._right = g.add_button("Right")
             self._stop_btn = g.add_button("Stop")
+            self._keys_box = g.add_checkbox(
+                "Keyboard drive", initial_value=False, hint="WASD / arrow keys press the buttons above (instead of moving the camera)"
+            )
+            self._keys_html = g.add_html("")
+        with g.add_folder("Spawn"):
+            self._model_dd = g.add_dropdown("Model", options=[NO_MODELS], initial_value=NO_MODELS)
+            self._spawn_name = g.add_text("Name", initial_value="", hint="empty: the model's own name")
+            self._spawn_xyz = g.add_vector3("Position", initial_value=(0.0, 0.0, 0.0), step=0.1)
+            self._spawn_yaw = g.add_number("Yaw (deg)", initial_value=0.0, step=15.0)
+            self._spawn_btn = g.add_button("Spawn")
+            self._rescan_btn = g.add_button("Rescan resource paths")
+            self._spawn_text = g.add_text("Spawn result", initial_value="", disabled=True)
         with g.add_folder("Overlays"):
             self._tf_box = g.add_checkbox("TF frames", initial_value=False)
             self._col_box = g.add_checkbox("Collision geometry", initial_value=False)
+            self._trail_box = g.add_checkbox(
+                "Path trail",
+                initial_value=True,
+                hint="Ground-truth path of the selected entity (or of the first diff-drive robot)",
+            )
+            self._trail_text = g.add_text("Trail of", initial_value="", disabled=True)
+            self._contact_box = g.add_checkbox("Contact points", initial_value=False, hint="MuJoCo contacts (red)")
+            g.add_markdown(SENSORS_NOTE)
 
         self._play.on_click(lambda _e: self._toggle_pause())
         self._step_btn.on_click(lambda _e: self._step())
@@ -223,6 +292,12 @@ class Viewer:
             btn.on_click(lambda _e, lin=lin, ang=ang: self.drive(lin, ang))
         self._tf_box.on_update(lambda _e: self._set_overlays())
         self._col_box.on_update(lambda _e: self._set_overlays())
+        self._trail_box.on_update(lambda _e: self._redraw_trail(force=True))
+        self._contact_box.on_update(lambda _e: self._update_contacts())
+        self._keys_box.on_update(lambda _e: setattr(self._keys_html, "content", KEYS_HTML if self._keys_box.value else ""))
+        self._spawn_btn.on_click(lambda _e: self._spawn_selected())
+        self._rescan_btn.on_click(lambda _e: self.rescan_models())
+        self.rescan_models()
 
     def _toggle_pause(self) -> None:
         paused, t = self.sim.call(self._flip_paused)
@@ -265,6 +340,134 @@ class Viewer:
             f"{name}: linear {linear_x:+.2f} m/s, angular {angular_z:+.2f} rad/s" if n else f"{name}: no cmd_vel subscriber"
         )
         return n
+
+    # ------------------------------------------------------------------ spawn
+    def rescan_models(self) -> list[ModelFile]:
+        """Refresh the Spawn dropdown from the resource paths; returns what was found."""
+        self._models = find_models()
+        labels = [m.label for m in self._models] or [NO_MODELS]
+        current = self._model_dd.value
+        self._model_dd.options = labels
+        self._model_dd.value = current if current in labels else labels[0]
+        return self._models
+
+    def spawn_model(self, path: str, *, name: str = "", xyz: tuple[float, float, float] = (0.0, 0.0, 0.0), yaw: float = 0.0) -> str:
+        """Load ``path`` with the loaders the ROS layer uses and spawn it; returns the entity name.
+
+        A name already taken gets a ``_2``, ``_3``... suffix. Raises on a file that does not load or spawn.
+        """
+        result = load(path)
+        model = result.value
+        if not isinstance(model, Model):
+            raise ValueError(f"{path} is not a single model")
+        base = name.strip() or model.name or "model"
+        taken = set(self.sim.call(lambda: list(self.sim.world.entities)))
+        entity, k = base, 2
+        while entity in taken:
+            entity, k = f"{base}_{k}", k + 1
+        pose = Pose.from_xyz_rpy(tuple(float(v) for v in xyz), (0.0, 0.0, float(yaw)))  # type: ignore[arg-type]
+        return self.sim.spawn(model, name=entity, pose=pose).name
+
+    def _spawn_selected(self) -> None:
+        label = self._model_dd.value
+        mf = next((m for m in self._models if m.label == label), None)
+        if mf is None:
+            self._spawn_text.value = "no model selected"
+            return
+        try:
+            name = self.spawn_model(
+                str(mf.path),
+                name=self._spawn_name.value,
+                xyz=tuple(self._spawn_xyz.value),  # type: ignore[arg-type]
+                yaw=math.radians(float(self._spawn_yaw.value)),
+            )
+        except Exception as err:  # noqa: BLE001 - shown to the user, never fatal
+            self._spawn_text.value = f"failed: {err}"[:300]
+            _log.warning(f"viewer: cannot spawn {mf.path}: {err}")
+        else:
+            self._spawn_text.value = f"spawned '{name}'"
+
+    # ------------------------------------------------------------------ overlays
+    def trail_target(self) -> str | None:
+        """The entity whose path is drawn: the selected one, else the first with a cmd_vel subscriber."""
+        sel = self._entity_dd.value
+        names = self.sim.world.entities
+        if sel != NO_SELECTION and sel in names:
+            return sel
+        driven = sorted(
+            {ep.owner for ep in self.sim.bus.endpoints() if not ep.is_publisher and ep.msg_type == MsgType.TWIST}
+        )
+        return next((n for n in driven if n in names), None)
+
+    def _root_sample(self, name: str) -> tuple[float, int, tuple[float, float, float]] | None:
+        """Runs on the sim thread: (time, generation added, root link position) of ``name``."""
+        w = self.sim.world
+        e = w.entities.get(name)
+        if e is None:
+            return None
+        link = next((ln for ln, b in e.built.bodies.items() if b == e.built.root_body), None)
+        p = w.body_pose(w.body_id(name, link)).position
+        return w.time, e.generation_added, (float(p[0]), float(p[1]), float(p[2]))
+
+    def sample_trail(self) -> None:
+        """Add the trail target's current position to the trail (cleared on a new target or a reset)."""
+        if not self._trail_box.value:
+            return
+        name = self.trail_target()
+        sample = self.sim.call(lambda: self._root_sample(name), timeout=5.0) if name else None
+        if sample is None:
+            if self._trail_entity is not None:
+                self._trail, self._trail_entity = [], None
+                self._trail_text.value = ""
+            return
+        t, gen, pos = sample
+        if self._trail_entity != (name, gen) or t < self._trail_last_t:
+            self._trail, self._trail_entity = [], (name, gen)
+            self._trail_text.value = f"{name} (ground truth)"
+        self._trail_last_t = t
+        if not self._trail or math.dist(self._trail[-1], pos) >= TRAIL_MIN_STEP:
+            self._trail.append(pos)
+            if len(self._trail) > TRAIL_MAX_POINTS:
+                del self._trail[: len(self._trail) - TRAIL_MAX_POINTS]
+
+    @property
+    def trail(self) -> list[tuple[float, float, float]]:
+        """The trail's points (world frame), oldest first."""
+        return list(self._trail)
+
+    def _redraw_trail(self, *, force: bool = False) -> None:
+        pts = self._trail if self._trail_box.value else []
+        key = (len(pts), pts[-1] if pts else None)
+        if not force and key == self._trail_drawn:
+            return
+        self._trail_drawn = key
+        if self._trail_handle is not None:
+            self._trail_handle.remove()
+            self._trail_handle = None
+        if len(pts) >= 2:
+            a = np.asarray(pts, dtype=np.float32)
+            a[:, 2] = 0.005  # on the ground, so the body never hides it
+            segs = np.stack([a[:-1], a[1:]], axis=1)
+            self._trail_handle = self.server.scene.add_line_segments(
+                "/overlays/trail", segs, TRAIL_RGB, thickness=4.0, thickness_units="screen"
+            )
+
+    def _contacts(self) -> np.ndarray:
+        """Runs on the sim thread: the contact points (N x 3)."""
+        d = self.sim.world.data
+        n = min(int(d.ncon), CONTACT_MAX)
+        return np.array(d.contact.pos[:n], dtype=np.float32).reshape(n, 3)
+
+    def _update_contacts(self) -> np.ndarray | None:
+        pts = self.sim.call(self._contacts, timeout=5.0) if self._contact_box.value else None
+        if self._contact_handle is not None:
+            self._contact_handle.remove()
+            self._contact_handle = None
+        if pts is not None and len(pts):
+            self._contact_handle = self.server.scene.add_point_cloud(
+                "/overlays/contacts", pts, CONTACT_RGB, point_size=0.025, point_shape="circle", precision="float32"
+            )
+        return pts
 
     def _set_overlays(self) -> None:
         tf, col = bool(self._tf_box.value), bool(self._col_box.value)
@@ -358,8 +561,15 @@ class Viewer:
         next_frame = time.monotonic()
         while not self._stop.is_set():
             if not self.server.get_clients():
-                # nobody watching: cost the simulation nothing (a client that connects gets
-                # the whole scene on the next frame)
+                # nobody watching: cost the simulation next to nothing (a client that connects
+                # gets the whole scene on the next frame); only the path trail keeps sampling
+                try:
+                    now = time.monotonic()
+                    if now >= self._next_trail:
+                        self.sample_trail()
+                        self._next_trail = now + 1.0 / TRAIL_RATE_HZ
+                except Exception:  # noqa: BLE001
+                    _log.exception("viewer: trail sample failed")
                 self._stop.wait(period)
                 next_frame = time.monotonic()
                 continue
@@ -369,7 +579,13 @@ class Viewer:
                 now = time.monotonic()
                 if snap is not None and now >= next_gui:
                     self._update_gui(snap)
+                    if self._contact_box.value or self._contact_handle is not None:
+                        self._update_contacts()
                     next_gui = now + gui_period
+                if now >= self._next_trail:
+                    self.sample_trail()
+                    self._redraw_trail()
+                    self._next_trail = now + 1.0 / TRAIL_RATE_HZ
             except Exception:  # noqa: BLE001 - logged; the viewer keeps going
                 _log.exception("viewer: frame update failed")
             self.cpu_sec += time.thread_time() - cpu0

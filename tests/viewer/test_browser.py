@@ -35,9 +35,11 @@ MIN_BLUE_PX = 3000
 """The 0.3 x 0.3 x 0.1 m blue box covers ~10 000 px at this camera; the blue world z axis alone ~800."""
 
 
-def project(point: tuple[float, float, float], width: int, height: int) -> tuple[float, float]:
+def project(
+    point: tuple[float, float, float], width: int, height: int, eye: Any = CAMERA_POSITION, target: Any = CAMERA_LOOK_AT
+) -> tuple[float, float]:
     """Pixel (x right, y down) of a world point for the viewer's fixed initial camera (z up)."""
-    eye, target = np.asarray(CAMERA_POSITION), np.asarray(CAMERA_LOOK_AT)
+    eye, target = np.asarray(eye, dtype=float), np.asarray(target, dtype=float)
     fwd = target - eye
     fwd /= np.linalg.norm(fwd)
     right = np.cross(fwd, (0.0, 0.0, 1.0))
@@ -170,6 +172,37 @@ def test_drive_buttons_move_the_robot(page: Any, ros_client_mod: Any) -> None:
 
     wait_for(stopped, timeout=10, what="the robot stopping after Stop", interval=0.1)
 
+    # the path trail of the selected robot is drawn (magenta, on the ground)
+    def trail_px() -> int:
+        rgb = np.asarray(Image.open(io.BytesIO(page.screenshot())).convert("RGB")).astype(int)
+        r, g, b = rgb[..., 0], rgb[..., 1], rgb[..., 2]
+        return int(((r > 170) & (g < 90) & (b > 90) & (b < 200)).sum())
+
+    from PIL import Image
+
+    wait_for(lambda: trail_px() > 150, timeout=5, what="the magenta path trail in the view")
+
+
+def test_keyboard_drive_presses_the_drive_buttons(page: Any, ros_client_mod: Any) -> None:
+    page.get_by_text("Keyboard drive", exact=True).click()
+    page.wait_for_selector("#gazelle-keyboard-drive", state="attached", timeout=5000)
+    page.evaluate("() => document.activeElement && document.activeElement.blur()")
+    start = ros_client_mod.entity_state(ROBOT).state.pose.position
+    page.keyboard.down("w")
+    wait_for(lambda: "linear +0.50" in gui_input(page, "cmd_vel").input_value(), timeout=5, what="W -> Forward")
+
+    def moved() -> bool:
+        p = ros_client_mod.entity_state(ROBOT).state.pose.position
+        return math.hypot(p.x - start.x, p.y - start.y) > 0.15
+
+    wait_for(moved, timeout=10, what="the robot driving while W is held", interval=0.1)
+    page.keyboard.up("w")
+    wait_for(lambda: "linear +0.00" in gui_input(page, "cmd_vel").input_value(), timeout=5, what="releasing W -> Stop")
+    page.keyboard.down("ArrowLeft")
+    wait_for(lambda: "angular +1.00" in gui_input(page, "cmd_vel").input_value(), timeout=5, what="Left arrow -> Left")
+    page.keyboard.up("ArrowLeft")
+    wait_for(lambda: "angular +0.00" in gui_input(page, "cmd_vel").input_value(), timeout=5, what="release -> Stop")
+
 
 def test_snapshot_command_writes_a_png_with_the_robot(tmp_path: Path) -> None:
     out = tmp_path / "snapshot.png"
@@ -187,3 +220,62 @@ def test_snapshot_command_writes_a_png_with_the_robot(tmp_path: Path) -> None:
     cx, cy = project(ROBOT_CENTRE, w, h)
     region = mask[int(cy) - REGION_HALF_PX : int(cy) + REGION_HALF_PX, int(cx) - REGION_HALF_PX : int(cx) + REGION_HALF_PX]
     assert region.sum() >= MIN_BLUE_PX, f"only {region.sum()} blue pixels where the robot should be"
+
+
+CHESS_EYE = (0.25, 0.85, 1.75)
+CHESS_TARGET = (0.25, 1.39, 0.90)
+
+
+def test_chessboard_world_renders_33_entities(page: Any, artifacts: Path) -> None:
+    """The board and 32 pieces (the grid of examples/chessboard/spawn_chessboard.py), seen from above."""
+    from PIL import Image
+
+    from gazelle.description import Pose, load
+    from gazelle.physics import Simulation
+    from gazelle.viewer import Viewer
+    from gazelle.viewer._browser import wait_rendered
+    from gazelle.worlds import default_world
+
+    here = REPO / "examples" / "chessboard"
+    bx, by, bz = CHESS_TARGET
+    sim = Simulation(default_world(), rtf=1.0)
+    sim.start()
+    sim.spawn(load(here / "chess_board.sdf").value, name="chess_board", pose=Pose((bx, by, bz)))
+    piece = load(here / "chess_piece.sdf").value
+    for row in (0, 1, 6, 7):
+        for col in range(8):
+            sim.spawn(piece, name=f"piece_r{row}_c{col}", pose=Pose((bx - 0.175 + 0.05 * col, by - 0.175 + 0.05 * row, bz + 0.02)))
+    viewer = Viewer(sim, port=0)
+    cam = viewer.server.initial_camera
+    cam.position, cam.look_at = CHESS_EYE, CHESS_TARGET
+    viewer.start()
+    try:
+        page.goto(viewer.url)  # the module's browser (Playwright's sync API allows one at a time)
+        wait_rendered(page, 30)
+        wait_for(lambda: len(viewer._nodes) == 34, timeout=10, what="34 entities in the scene")
+        page.wait_for_timeout(1000)
+        out = artifacts / "chessboard.png"
+        page.screenshot(path=str(out))
+        assert len(viewer._nodes) == 34  # ground plane + board + 32 pieces
+    finally:
+        viewer.stop()
+        sim.stop()
+    shutil.copy(out, ARTIFACTS / "chessboard.png")
+    rgb = np.asarray(Image.open(out).convert("RGB")).astype(int)
+    h, w = rgb.shape[:2]
+    # the board's middle rows (2..5) hold no pieces: its plain grey top must fill that band
+    corners = [project((bx + dx, by + dy, bz + 0.01), w, h, CHESS_EYE, CHESS_TARGET) for dx in (-0.15, 0.15) for dy in (-0.07, 0.07)]
+    x0, x1 = int(min(c[0] for c in corners)), int(max(c[0] for c in corners))
+    y0, y1 = int(min(c[1] for c in corners)), int(max(c[1] for c in corners))
+    band = rgb[y0:y1, x0:x1]
+    r, g, b = band[..., 0], band[..., 1], band[..., 2]
+    grey = (np.abs(r - g) < 25) & (np.abs(g - b) < 25) & (r > 60) & (r < 240)
+    assert band.size and grey.mean() > 0.8, f"board grey covers {grey.mean():.0%} of its band ({x0}..{x1}, {y0}..{y1})"
+    # the 32 pieces (dark boxes) stand where the spawner's grid puts them
+    dark = 0
+    for row in (0, 1, 6, 7):
+        for col in range(8):
+            px, py = project((bx - 0.175 + 0.05 * col, by - 0.175 + 0.05 * row, bz + 0.03), w, h, CHESS_EYE, CHESS_TARGET)
+            win = rgb[int(py) - 5 : int(py) + 6, int(px) - 5 : int(px) + 6].max(axis=-1)
+            dark += (win < 100).mean() > 0.3
+    assert dark == 32, f"only {dark} of 32 pieces seen at their squares"

@@ -97,3 +97,57 @@ def test_scene_follows_spawn_and_delete_and_drive_reaches_the_diff_drive() -> No
     finally:
         viewer.stop()
         sim.stop()
+
+
+def test_find_models_lists_model_folders_and_description_files(tmp_path) -> None:
+    from gazelle.description import ResourceResolver
+    from gazelle.viewer._models import find_models
+
+    box = tmp_path / "my_box"
+    box.mkdir()
+    (box / "model.config").write_text("<model><name>my_box</name><sdf version='1.6'>model.sdf</sdf></model>")
+    (box / "model.sdf").write_text("<sdf version='1.6'><model name='my_box'/></sdf>")
+    (box / "ignored.sdf").write_text("<sdf/>")  # model.config names the model's file
+    (tmp_path / "robots").mkdir()
+    (tmp_path / "robots" / "r.urdf.xacro").write_text("<robot/>")
+    (tmp_path / "notes.txt").write_text("")
+    labels = {m.label for m in find_models(ResourceResolver(extra_paths=[tmp_path], env={}))}
+    assert labels == {"my_box/model.sdf", "robots/r.urdf.xacro"}
+
+
+def test_trail_contacts_and_spawn_from_the_resource_paths(monkeypatch) -> None:
+    from gazelle.physics import Simulation
+    from gazelle.viewer import Viewer
+    from gazelle.worlds import default_world
+
+    monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(REPO / "examples"))
+    sim = Simulation(default_world(), rtf=0.0)
+    sim.start()
+    viewer = Viewer(sim, port=0)
+    try:
+        labels = {m.label for m in viewer._models}
+        assert "chessboard/chess_board.sdf" in labels and "simple_robot/robot.urdf.xacro" not in labels
+        assert "chessboard/chess_board.sdf" in viewer._model_dd.options
+        viewer.sample_trail()
+        assert viewer.trail == [] and viewer.trail_target() is None
+        sim.spawn(load(SEED_XACRO).value, name="r1")
+        assert viewer.trail_target() == "r1"  # no selection: the first diff-drive robot
+        viewer.drive(0.5, 0.0, "r1")
+        t_end = sim.call(lambda: sim.world.time) + 2.0
+        while sim.call(lambda: sim.world.time) < t_end:  # rtf 0: the sim runs on its own
+            viewer.sample_trail()
+        xs = [p[0] for p in viewer.trail]
+        assert len(xs) >= 5 and xs[-1] > xs[0] + 0.05 and xs == sorted(xs)
+        viewer._redraw_trail(force=True)
+        assert viewer._trail_handle is not None
+        viewer._contact_box.value = True
+        pts = viewer._update_contacts()
+        assert pts is not None and len(pts) >= 2 and np.all(np.abs(pts[:, 2]) < 0.05)  # wheels (and caster) on the ground
+        name = viewer.spawn_model(str(REPO / "examples/chessboard/chess_piece.sdf"), xyz=(2.0, 0.0, 0.1), yaw=0.5)
+        name2 = viewer.spawn_model(str(REPO / "examples/chessboard/chess_piece.sdf"), xyz=(2.5, 0.0, 0.1))
+        assert name2 == f"{name}_2" and {name, name2} <= set(sim.world.entities)
+        x = sim.call(lambda: sim.world.entity_state(name).pose.position[0])
+        assert x == pytest.approx(2.0, abs=0.01)
+    finally:
+        viewer.stop()
+        sim.stop()

@@ -1,0 +1,71 @@
+"""Models a user can spawn from the viewer: what the resource paths hold (no viser here).
+
+The same search paths ``model://`` and ``package://`` URIs resolve against
+(:class:`gazelle.description.ResourceResolver`): in each folder and its direct
+sub-folders, a Gazebo model folder (``model.config`` naming its SDF) or any
+``*.sdf`` / ``*.urdf`` / ``*.urdf.xacro`` / ``*.xacro`` file.
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..description import ResourceResolver
+
+MODEL_SUFFIXES = (".sdf", ".urdf", ".xacro")
+MAX_MODELS = 200
+
+
+@dataclass(frozen=True)
+class ModelFile:
+    label: str
+    """What the dropdown shows: ``folder/file`` relative to its search path."""
+    path: Path
+
+
+def _config_sdf(folder: Path) -> Path | None:
+    """The SDF a Gazebo ``model.config`` names (the last ``<sdf>`` element, as Gazebo picks the newest)."""
+    try:
+        root = ET.parse(folder / "model.config").getroot()
+    except (OSError, ET.ParseError):
+        return None
+    names = [e.text.strip() for e in root.iter("sdf") if e.text and e.text.strip()]
+    for name in reversed(names):
+        cand = (folder / name).resolve()
+        if cand.is_file() and folder.resolve() in cand.parents:
+            return cand
+    return None
+
+
+def _files_in(folder: Path) -> list[Path]:
+    if (folder / "model.config").is_file():
+        sdf = _config_sdf(folder)
+        return [sdf] if sdf is not None else []
+    try:
+        return sorted(p for p in folder.iterdir() if p.is_file() and p.suffix in MODEL_SUFFIXES)
+    except OSError:
+        return []
+
+
+def find_models(resolver: ResourceResolver | None = None) -> list[ModelFile]:
+    """Every model file on the resolver's search paths (depth <= 1 below each path), at most ``MAX_MODELS``."""
+    resolver = resolver or ResourceResolver()
+    found: dict[Path, ModelFile] = {}
+    for root in resolver.search_paths():
+        if not root.is_dir():
+            continue
+        folders = [root]
+        try:
+            folders += sorted(p for p in root.iterdir() if p.is_dir() and not p.name.startswith("."))
+        except OSError:
+            pass
+        for folder in folders:
+            for f in _files_in(folder):
+                if f.resolve() not in found:
+                    rel = f.relative_to(root) if root in f.parents else Path(f.name)
+                    found[f.resolve()] = ModelFile(str(rel), f.resolve())
+                if len(found) >= MAX_MODELS:
+                    return list(found.values())
+    return list(found.values())
