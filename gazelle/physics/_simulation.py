@@ -82,6 +82,8 @@ class Simulation:
         """Give every spawned robot the built-in robot_state_publisher (a model file may still opt out)."""
         self.diverged: dict[str, str] = {}
         """Entity name -> what went wrong, for entities that blew up."""
+        self._state_views: tuple[Any, np.ndarray, np.ndarray] = (None, np.zeros(0), np.zeros(0))
+        """(MjData, its qpos, its qvel): array views kept for the divergence check before every step."""
         for m in world.models:
             self._add_entity(m, name=m.name, pose=Pose(), namespace="", spawned=False)
 
@@ -215,8 +217,13 @@ class Simulation:
 
     def _check_divergence(self) -> None:
         d = self.world.data
-        # fast path (~1 µs): a NaN/inf makes these dot products non-finite, a |qvel| >= 1e4 makes the first >= 1e8
-        if float(d.qvel @ d.qvel) < 1e8 and math.isfinite(float(d.qpos @ d.qpos)):
+        cache = self._state_views
+        if cache[0] is not d:  # a recompile made a new MjData; `d.qpos` builds a new array object per access
+            cache = self._state_views = (d, d.qpos, d.qvel)
+        _, qpos, qvel = cache
+        # fast path (~0.6 µs): a NaN/inf makes these dot products non-finite (NaN < x is False),
+        # a |qvel| >= 1e4 makes the first >= 1e8
+        if qvel.dot(qvel) < 1e8 and math.isfinite(qpos.dot(qpos)):
             return
         if np.all(np.isfinite(d.qpos)) and np.all(np.isfinite(d.qvel)) and np.all(np.abs(d.qvel) < 1e4):
             return
