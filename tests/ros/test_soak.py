@@ -7,6 +7,7 @@ fails, and the robot's arc radius and speed stay v/ω and v within a few per cen
 from __future__ import annotations
 
 import math
+import os
 import threading
 import time
 
@@ -52,9 +53,21 @@ def circle_fit(xy: np.ndarray) -> float:
     return float(math.sqrt(c + cx * cx + cy * cy))
 
 
+def servers(ros_client, service: str) -> str:
+    """Who serves ``service`` on this domain: a second gazelle sharing the ROS_DOMAIN_ID answers our calls too
+    (the first reply wins), which shows up as an entity that was just spawned 'does not exist'."""
+    n = ros_client.node.count_services(service)
+    nodes = sorted(f"{ns.rstrip('/')}/{name}" for name, ns in ros_client.node.get_node_names_and_namespaces())
+    return f"{n} server(s) of {service} on ROS_DOMAIN_ID={os.environ.get('ROS_DOMAIN_ID')}; nodes: {nodes}"
+
+
 def test_soak_spawn_delete_while_driving(sim_factory, ros_client) -> None:
     sim = sim_factory()
     pid = sim.popen.pid
+    ros_client.client(SpawnEntity, NS + "spawn_entity")
+    assert ros_client.node.count_services(NS + "spawn_entity") == 1, "another server shares this domain: " + servers(
+        ros_client, NS + "spawn_entity"
+    )
     res = ros_client.call(SpawnEntity, NS + "spawn_entity", spawn_req("robot", xacro_to_urdf(SEED_XACRO), z=0.05), timeout=30)
     assert res.result.result == Result.RESULT_OK, res.result.error_message
     pub = ros_client.node.create_publisher(Twist, "/cmd_vel", 10)
@@ -62,15 +75,22 @@ def test_soak_spawn_delete_while_driving(sim_factory, ros_client) -> None:
     cmd.linear.x, cmd.angular.z = V, W
 
     samples: list[tuple[float, float, float]] = []  # (sim time, x, y)
+    problems: list[str] = []  # the observer's failures (an exception in a thread would be lost)
     stop = threading.Event()
 
     def observe() -> None:
         while not stop.is_set():
             pub.publish(cmd)
-            st = ros_client.call(GetEntityState, NS + "get_entity_state", GetEntityState.Request(entity="robot"), timeout=10)
+            try:
+                st = ros_client.call(GetEntityState, NS + "get_entity_state", GetEntityState.Request(entity="robot"), timeout=10)
+            except BaseException as err:  # noqa: BLE001 - pytest.fail raises Failed, a BaseException
+                problems.append(f"get_entity_state: {err}")
+                return
             if st.result.result == Result.RESULT_OK:
                 t = st.state.header.stamp.sec + st.state.header.stamp.nanosec * 1e-9
                 samples.append((t, st.state.pose.position.x, st.state.pose.position.y))
+            else:
+                problems.append(f"get_entity_state(robot): {st.result.error_message}")
             stop.wait(0.1)
 
     observer = threading.Thread(target=observe, daemon=True)
@@ -79,10 +99,19 @@ def test_soak_spawn_delete_while_driving(sim_factory, ros_client) -> None:
 
     def cycle(i: int) -> None:
         name = f"soak_box_{i}"
+        c0 = time.monotonic()
         r = ros_client.call(SpawnEntity, NS + "spawn_entity", spawn_req(name, BOX, x=3.0, y=3.0, z=0.05), timeout=10)
-        assert r.result.result == Result.RESULT_OK, f"spawn {i}: {r.result.error_message}"
+        assert r.result.result == Result.RESULT_OK, (
+            f"spawn {i} failed after {time.monotonic() - c0:.3f} s: {r.result.error_message}; "
+            + servers(ros_client, NS + "spawn_entity")
+        )
+        c1 = time.monotonic()
         r = ros_client.call(DeleteEntity, NS + "delete_entity", DeleteEntity.Request(entity=name), timeout=10)
-        assert r.result.result == Result.RESULT_OK, f"delete {i}: {r.result.error_message}"
+        assert r.result.result == Result.RESULT_OK, (
+            f"delete {i} failed after {time.monotonic() - c1:.3f} s: {r.result.error_message}; "
+            + servers(ros_client, NS + "delete_entity")
+            + f"; server alive: {sim.popen.poll() is None}; its last output:\n{sim.output}"
+        )
 
     try:
         for i in range(WARMUP):
@@ -102,6 +131,7 @@ def test_soak_spawn_delete_while_driving(sim_factory, ros_client) -> None:
         observer.join(5)
         pub.publish(Twist())
 
+    assert not problems, f"the robot observer failed: {problems[:5]}"
     soak = np.array(samples[n0:])
     lat = np.array(latencies) * 1e3
     print(
@@ -112,7 +142,7 @@ def test_soak_spawn_delete_while_driving(sim_factory, ros_client) -> None:
     print(f"soak: server VmRSS {rss0 / 1024:.1f} MB -> {rss1 / 1024:.1f} MB ({(rss1 - rss0) / 1024:+.1f} MB)")
     assert rss1 - rss0 < 30 * 1024, f"RSS grew by {(rss1 - rss0) / 1024:.1f} MB"
 
-    assert len(soak) > 20, "too few robot samples during the soak"
+    assert len(soak) > 20, f"only {len(soak)} robot samples during the {wall:.1f} s soak"
     radius = circle_fit(soak[:, 1:])
     dist = float(np.sum(np.linalg.norm(np.diff(soak[:, 1:], axis=0), axis=1)))
     speed = dist / (soak[-1, 0] - soak[0, 0])
@@ -122,5 +152,5 @@ def test_soak_spawn_delete_while_driving(sim_factory, ros_client) -> None:
         f"R = {radius:.4f} m vs v/ω = {V / W:.4f} ({(radius * W / V - 1) * 100:+.2f} %), "
         f"speed {speed:.4f} vs {V} ({(speed / V - 1) * 100:+.2f} %)"
     )
-    assert radius == pytest.approx(V / W, rel=0.03)
-    assert speed == pytest.approx(V, rel=0.03)
+    assert radius == pytest.approx(V / W, rel=0.03), f"arc radius {radius:.4f} m, expected v/ω = {V / W:.4f} m"
+    assert speed == pytest.approx(V, rel=0.03), f"speed {speed:.4f} m/s, expected {V} m/s"
