@@ -18,7 +18,9 @@ import pytest
 
 # Keep DDS traffic of this test on this machine and away from other runs.
 os.environ.setdefault("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
-DOMAIN_ID = int(os.environ.get("ROS_DOMAIN_ID") or (os.getpid() % 90) + 10)
+from _ros_domain import reserved_domain_id  # noqa: E402
+
+DOMAIN_ID = reserved_domain_id()
 
 import rclpy  # noqa: E402
 from rclpy.executors import SingleThreadedExecutor  # noqa: E402

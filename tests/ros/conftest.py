@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import Any, Callable, Iterator
 
 import pytest
+from _ros_domain import reserved_domain_id
 
 REPO = Path(__file__).resolve().parents[2]
 SEED_XACRO = REPO / "examples" / "simple_robot" / "simple_robot" / "robot.urdf.xacro"
@@ -28,18 +29,11 @@ GAZELLE = [sys.executable, "-m", "gazelle.cli"]
 rclpy = pytest.importorskip("rclpy")
 
 
-def _domain_id() -> int:
-    # one domain per pytest process; pytest-xdist workers get their own
-    worker = os.environ.get("PYTEST_XDIST_WORKER", "gw0")
-    base = 10 + (os.getpid() % 40) * 2
-    return base + (int(worker[2:]) if worker[2:].isdigit() else 0)
-
-
 @pytest.fixture(scope="session", autouse=True)
 def ros_env() -> Iterator[dict[str, str]]:
     """A unique ROS_DOMAIN_ID for this test run, discovery limited to localhost."""
     saved = {k: os.environ.get(k) for k in ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE", "RMW_IMPLEMENTATION")}
-    os.environ["ROS_DOMAIN_ID"] = str(_domain_id())
+    os.environ["ROS_DOMAIN_ID"] = str(reserved_domain_id())
     os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
     os.environ["RMW_IMPLEMENTATION"] = "rmw_fastrtps_cpp"
     yield dict(os.environ)
