@@ -88,11 +88,13 @@ def check(
 def demo(
     out: Path = typer.Option(Path("out/demo"), "--out", help="Where to write the path image and logs."),
     rtf: float = typer.Option(1.0, "--rtf", help="Real-time factor of the demo (0 = as fast as possible, with sim time)."),
+    snapshot: bool = typer.Option(False, "--snapshot", help="Also write a PNG of the viewer (the square's path trail) to OUT/viewer.png."),
+    record: bool = typer.Option(False, "--record", help="Also record an animated GIF of the viewer during the square to OUT/square.gif."),
 ) -> None:
-    """Start the sim, spawn the seed robot, drive one square with square_movement.py, report, stop."""
+    """Start the sim (with its browser viewer), spawn the seed robot, drive one square with square_movement.py, report, stop."""
     from ..ros._demo import run_demo
 
-    raise typer.Exit(run_demo(out, rtf=rtf))
+    raise typer.Exit(run_demo(out, rtf=rtf, snapshot=snapshot, record=record))
 
 
 @app.command()
@@ -118,6 +120,40 @@ def snapshot(
             print(str(err), file=sys.stderr)
             raise typer.Exit(1)
     raise typer.Exit(run_snapshot(loaded, out, attach=attach, settle_sec=settle))
+
+
+@app.command("record-video")
+def record_video(
+    world: Optional[Path] = typer.Option(None, "--world", help="World or model file to show (default: the empty world)."),
+    out: Path = typer.Option(Path("out/video.gif"), "--out", help="Animated GIF to write."),
+    attach: Optional[str] = typer.Option(None, "--attach", help="Viewer URL of a running `gazelle sim` instead of a new sim."),
+    seconds: float = typer.Option(5.0, "--seconds", help="Wall seconds to record."),
+    fps: float = typer.Option(4.0, "--fps", help="Frames per second (headless chromium renders in software: keep it modest)."),
+    drive: Optional[str] = typer.Option(
+        None, "--drive", help="V,W: send this Twist (m/s, rad/s) to the first diff-drive robot of --world before recording."
+    ),
+    arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
+) -> None:
+    """Record an animated GIF of the browser view, headlessly (Debian's chromium)."""
+    from ._sim import load_world
+    from ..description import ModelLoadError
+    from ..viewer._snapshot import run_record
+
+    twist = None
+    if drive is not None:
+        try:
+            v, w = (float(x) for x in drive.split(","))
+        except ValueError:
+            raise typer.BadParameter(f"--drive expects V,W (e.g. 0.2,0.3), got {drive!r}")
+        twist = (v, w)
+    loaded = None
+    if attach is None:
+        try:
+            loaded = load_world(world, _parse_args(arg))
+        except ModelLoadError as err:
+            print(str(err), file=sys.stderr)
+            raise typer.Exit(1)
+    raise typer.Exit(run_record(loaded, out, attach=attach, seconds=seconds, fps=fps, drive=twist))
 
 
 def main(argv: list[str] | None = None) -> None:

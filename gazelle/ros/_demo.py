@@ -133,7 +133,15 @@ def write_svg(path: Path, truth: list[Sample], odom: list[Sample], corners: list
     path.write_text(svg)
 
 
-def run_demo(out: Path, *, rtf: float = 1.0) -> int:
+def _viewer_url(sim: "_Child") -> str | None:
+    """The URL `gazelle sim` printed for its browser viewer (None: no viewer)."""
+    for ln in sim.lines:
+        if "gazelle: viewer at " in ln:
+            return ln.split("gazelle: viewer at ", 1)[1].strip()
+    return None
+
+
+def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: bool = False) -> int:
     """Run the demo; returns the exit code (0 = the robot drove a square)."""
     env = os.environ.copy()
     env.setdefault("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
@@ -162,6 +170,9 @@ def run_demo(out: Path, *, rtf: float = 1.0) -> int:
         if not sim.wait_for_line("gazelle: ready", 60):
             print("gazelle demo: the simulator did not start", file=sys.stderr)
             return 1
+        url = _viewer_url(sim)
+        if url:
+            print(f"   watch it in a browser: {url} (the magenta line is the robot's path)", flush=True)
         print("2. robot_description <- xacro examples/simple_robot/simple_robot/robot.urdf.xacro", flush=True)
         qos = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
         pub = node.create_publisher(String, "robot_description", qos)
@@ -207,9 +218,30 @@ def run_demo(out: Path, *, rtf: float = 1.0) -> int:
         node_cmd = [sys.executable, str(EXAMPLE / "square_movement.py"), "--ros-args", "-p", "max_sides:=4"]
         if rtf != 1.0:
             node_cmd += ["-p", "use_sim_time:=true"]
+        recorder = None
+        if record and url:
+            from ..viewer._snapshot import record_gif
+
+            stop_rec = threading.Event()
+            rec_result: list[object] = []
+
+            def rec() -> None:
+                try:
+                    rec_result.append(record_gif(url, out / "square.gif", seconds=600, fps=2.0, stop=stop_rec, settle_sec=0.5))
+                except Exception as err:  # noqa: BLE001 - reported below; the demo itself goes on
+                    rec_result.append(err)
+
+            recorder = threading.Thread(target=rec, daemon=True)
+            recorder.start()
         square = _Child("square_movement", node_cmd, env)
         children.append(square)
-        if square.proc.wait(300) != 0:
+        square_rc = square.proc.wait(300)
+        if recorder is not None:
+            stop_rec.set()
+            recorder.join(60)
+            r = rec_result[0] if rec_result else "no result"
+            print(f"   video: {r[0].resolve()} ({r[1]} frames)" if isinstance(r, tuple) else f"   video failed: {r}", flush=True)
+        if square_rc != 0:
             print("gazelle demo: square_movement failed", file=sys.stderr)
             return 1
         time.sleep(0.5 if rtf == 1.0 else 0.1)  # a last few samples of the robot at rest
@@ -234,6 +266,14 @@ def run_demo(out: Path, *, rtf: float = 1.0) -> int:
         svg = out / "square.svg"
         write_svg(svg, truth_s, odom_s, corners)
         print(f"   path image: {svg.resolve()}")
+        if snapshot and url:
+            from ..viewer._browser import screenshot
+
+            try:
+                png = screenshot(url, out / "viewer.png", settle_sec=1.0)
+                print(f"   viewer snapshot: {png.resolve()}", flush=True)
+            except Exception as err:  # noqa: BLE001 - the demo's result does not depend on the browser
+                print(f"   viewer snapshot failed: {type(err).__name__}: {err}", flush=True)
         ok = len(corners) == 4
         if ok:
             sides = [math.hypot(b.x - a.x, b.y - a.y) for a, b in zip(corners, corners[1:])]

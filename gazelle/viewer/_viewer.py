@@ -9,6 +9,15 @@ callbacks (buttons) also hand their work to the sim thread with ``sim.call``.
 Driving: the viewer publishes ``cmd_vel`` the way teleop_twist_keyboard does,
 by delivering a Twist to every cmd_vel subscription on the bus owned by the
 selected entity (exactly what the ROS bridge does with a received message).
+viser has no keyboard-event API; with "Keyboard drive" ticked, a small script in a
+GUI HTML element turns WASD / arrow keys into clicks on the Drive buttons (held key:
+drive; release: Stop) and keeps them from moving viser's camera.
+
+Overlays: the path trail is the ground-truth root position of the selected entity
+(or, with nothing selected, of the first diff-drive robot), sampled at 5 Hz even
+with no browser connected, at most 3000 points; it is what /odom reports up to
+the drive's odometry drift (the demo prints that drift, ~mm). Contact points are
+MuJoCo's ``data.contact``. Sensors do not exist yet, so there are no sensor overlays.
 """
 
 from __future__ import annotations
@@ -446,7 +455,7 @@ class Viewer:
             self._trail_handle = None
         if len(pts) >= 2:
             a = np.asarray(pts, dtype=np.float32)
-            a[:, 2] = 0.005  # on the ground, so the body never hides it
+            a[:, 2] = 0.02  # just above the ground and the world axes (radius 1 cm), below the robot bodies
             segs = np.stack([a[:-1], a[1:]], axis=1)
             self._trail_handle = self.server.scene.add_line_segments(
                 "/overlays/trail", segs, TRAIL_RGB, thickness=4.0, thickness_units="screen"
