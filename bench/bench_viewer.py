@@ -48,13 +48,34 @@ def make_sim(rtf: float):
     return sim
 
 
-def measure(sim, seconds: float) -> float:
-    """RTF over ``seconds`` of wall time on the running sim thread (after a 1 s warm-up)."""
+def child_cpu_sec() -> float:
+    """CPU seconds used so far by this process's descendants (Playwright's driver and chromium), from /proc."""
+    tick = os.sysconf("SC_CLK_TCK")
+    children: dict[int, list[tuple[int, float]]] = {}
+    for p in os.listdir("/proc"):
+        if not p.isdigit():
+            continue
+        try:
+            st = Path(f"/proc/{p}/stat").read_text()
+        except OSError:
+            continue
+        f = st[st.rindex(")") + 2 :].split()
+        children.setdefault(int(f[1]), []).append((int(p), (int(f[11]) + int(f[12])) / tick))
+    total, stack = 0.0, [os.getpid()]
+    while stack:
+        for pid, cpu in children.get(stack.pop(), []):
+            total += cpu
+            stack.append(pid)
+    return total
+
+
+def measure(sim, seconds: float) -> tuple[float, float]:
+    """(RTF, browser CPU in cores) over ``seconds`` of wall time on the running sim (after a 1 s warm-up)."""
     time.sleep(1.0)
-    t0, w0 = sim.call(lambda: sim.world.time), time.monotonic()
+    t0, w0, c0 = sim.call(lambda: sim.world.time), time.monotonic(), child_cpu_sec()
     time.sleep(seconds)
-    t1, w1 = sim.call(lambda: sim.world.time), time.monotonic()
-    return (t1 - t0) / (w1 - w0)
+    t1, w1, c1 = sim.call(lambda: sim.world.time), time.monotonic(), child_cpu_sec()
+    return (t1 - t0) / (w1 - w0), (c1 - c0) / (w1 - w0)
 
 
 @contextlib.contextmanager
@@ -103,10 +124,14 @@ def main() -> int:
     for r in range(a.rounds):
         for mode in labels:  # interleaved, so a load change on the machine hits every mode alike
             with running(a.rtf, mode, rate) as (sim, view):
-                rtf = measure(sim, a.seconds)
+                rtf, browser_cores = measure(sim, a.seconds)
                 frames, cpu = getattr(view, "frames", 0), getattr(view, "cpu_sec", 0.0)
             results[mode].append(rtf)
-            extra = f"  ({frames} frames pushed, viewer thread CPU {cpu:.2f} s)" if mode == "browser" else ""
+            extra = (
+                f"  ({frames} frames pushed, viewer thread CPU {cpu:.2f} s, chromium {browser_cores:.2f} cores)"
+                if mode == "browser"
+                else ""
+            )
             print(f"  round {r + 1}: {labels[mode]:28s} RTF {rtf:8.2f}{extra}", flush=True)
     med = {m: statistics.median(v) for m, v in results.items()}
     print("medians:")
