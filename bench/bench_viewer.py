@@ -2,13 +2,15 @@
 
 Run: ``.venv/bin/python bench/bench_viewer.py [--seconds S] [--rtf R]``. The seed robot
 (examples/simple_robot) is spawned on ``default_world()`` and drives at v=0.2 m/s, w=0.3 rad/s on
-the simulation thread (in process, no ROS), as fast as possible by default (``--rtf 0``). Three runs:
+the simulation thread (in process, no ROS), as fast as possible by default (``--rtf 0``). Four runs:
 
 * no viewer;
 * the viewer serving, nobody connected (what ``gazelle sim`` costs by default);
-* the viewer with a headless Debian chromium attached (Playwright), rendering the live scene.
+* the viewer with a headless Debian chromium attached (Playwright), rendering the live scene;
+* the same with chromium's frame rate capped (``--max-fps``, default 10): what our own headless
+  client can cost at least (a user's browser is not capped).
 
-The three runs are interleaved over ``--rounds`` rounds; it prints each run, the median RTF of each
+The four runs are interleaved over ``--rounds`` rounds; it prints each run, the median RTF of each
 mode and the drop against no viewer (target: < 10 %). Figures depend on the
 machine and its load (chromium renders WebGL in software, on the same CPUs); nothing asserts timing.
 """
@@ -79,7 +81,7 @@ def measure(sim, seconds: float) -> tuple[float, float]:
 
 
 @contextlib.contextmanager
-def running(rtf: float, viewer: str, rate_hz: float = 30.0) -> Iterator[object]:
+def running(rtf: float, viewer: str, rate_hz: float = 30.0, max_fps: float | None = None) -> Iterator[object]:
     sim = make_sim(rtf)
     sim.start()
     view = None
@@ -89,10 +91,11 @@ def running(rtf: float, viewer: str, rate_hz: float = 30.0) -> Iterator[object]:
 
             view = Viewer(sim, port=0, rate_hz=rate_hz)
             view.start()
-        if viewer == "browser":
+        if viewer in ("browser", "capped"):
             from gazelle.viewer._browser import open_viewer_page
 
-            with open_viewer_page(view.url) as page:
+            kw = {} if max_fps is None else {"max_fps": max_fps}
+            with open_viewer_page(view.url, **kw) as page:
                 page.wait_for_timeout(500)
                 yield sim, view
         else:
@@ -106,30 +109,44 @@ def running(rtf: float, viewer: str, rate_hz: float = 30.0) -> Iterator[object]:
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--seconds", type=float, default=4.0, help="wall seconds measured per run (default 4)")
-    ap.add_argument("--rounds", type=int, default=3, help="interleaved rounds of the three runs (default 3; medians are printed)")
+    ap.add_argument("--rounds", type=int, default=3, help="interleaved rounds of the four runs (default 3; medians are printed)")
     ap.add_argument("--rtf", type=float, default=0.0, help="target real-time factor (default 0: as fast as possible)")
     ap.add_argument("--rate", type=float, default=None, help="viewer pose rate in Hz (default: the viewer's)")
+    ap.add_argument(
+        "--max-fps",
+        type=float,
+        default=None,
+        help="render cap of the 'capped' chromium run (default: gazelle.viewer._browser.LOW_COST_MAX_FPS, 10)",
+    )
     a = ap.parse_args()
     logging.basicConfig(level=logging.WARNING)
     sys.setswitchinterval(0.0002)  # as `gazelle sim` does
+    from gazelle.viewer._browser import LOW_COST_MAX_FPS
     from gazelle.viewer._viewer import POSE_RATE_HZ
 
     rate = a.rate or POSE_RATE_HZ
     print(
         f"seed robot driving, target rtf {a.rtf:g} ({'flat out' if a.rtf == 0 else 'paced'}), viewer at {rate:g} Hz, "
-        f"{a.rounds} x {a.seconds:g} s per mode, {os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.1f}"
+        f"{a.rounds} x {a.seconds:g} s per mode, {os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.1f}, "
+        f"capped chromium at {a.max_fps or LOW_COST_MAX_FPS:g} fps"
     )
-    labels = {"none": "no viewer", "idle": "viewer, no client", "browser": "viewer + headless chromium"}
+    labels = {
+        "none": "no viewer",
+        "idle": "viewer, no client",
+        "browser": "viewer + headless chromium",
+        "capped": "viewer + chromium, capped fps",
+    }
     results: dict[str, list[float]] = {m: [] for m in labels}
     for r in range(a.rounds):
         for mode in labels:  # interleaved, so a load change on the machine hits every mode alike
-            with running(a.rtf, mode, rate) as (sim, view):
+            cap = 0.0 if mode == "browser" else (a.max_fps or LOW_COST_MAX_FPS)
+            with running(a.rtf, mode, rate, cap) as (sim, view):
                 rtf, browser_cores = measure(sim, a.seconds)
                 frames, cpu = getattr(view, "frames", 0), getattr(view, "cpu_sec", 0.0)
             results[mode].append(rtf)
             extra = (
                 f"  ({frames} frames pushed, viewer thread CPU {cpu:.2f} s, chromium {browser_cores:.2f} cores)"
-                if mode == "browser"
+                if mode in ("browser", "capped")
                 else ""
             )
             print(f"  round {r + 1}: {labels[mode]:28s} RTF {rtf:8.2f}{extra}", flush=True)
@@ -137,7 +154,7 @@ def main() -> int:
     print("medians:")
     for m, label in labels.items():
         print(f"  {label:28s} RTF {med[m]:8.2f}")
-    for m in ("idle", "browser"):
+    for m in ("idle", "browser", "capped"):
         ratio = med[m] / med["none"] if med["none"] > 0 else float("nan")
         print(f"  {labels[m]:28s} vs no viewer: ratio {ratio:.3f}, drop {100 * (1 - ratio):5.1f} % (target < 10 %)")
     return 0

@@ -26,6 +26,19 @@ CHROMIUM_ARGS = (
     "--disable-sync",
 )
 VIEWPORT = {"width": 1280, "height": 800}
+LOW_COST_MAX_FPS = 10.0
+"""A frame-rate cap for a headless chromium that shares the machine with the simulation.
+viser's client renders on demand, but every scene update opens a 250 ms window of continuous
+frames, so with poses streaming at 30 Hz it renders at the display rate all the time; in
+software WebGL that is ~1-1.7 CPU cores taken from the simulation. Capped at 10 fps (a
+throttled requestAnimationFrame, installed before viser's scripts run) it measured ~0.2 core.
+Not the default: viser also drains its message queue once per frame, so a capped page loads
+the scene more slowly (tests and snapshots took ~1.5x as long)."""
+# runs before the page's own scripts (Playwright init script), so the render loop picks it up
+_RAF_CAP_JS = """(() => { const fps = %s; if (!(fps > 0)) return;
+  const raf = window.requestAnimationFrame.bind(window); let next = 0;
+  window.requestAnimationFrame = (cb) => { const now = performance.now(); const d = next - now;
+    next = Math.max(now, next) + 1000 / fps; return d > 1 ? setTimeout(() => raf(cb), d) : raf(cb); }; })()"""
 
 
 class BrowserUnavailable(RuntimeError):
@@ -44,8 +57,10 @@ def find_chromium() -> str | None:
 
 
 @contextlib.contextmanager
-def open_viewer_page(url: str, *, timeout_sec: float = 30.0) -> Iterator[Any]:
+def open_viewer_page(url: str, *, timeout_sec: float = 30.0, max_fps: float = 0.0) -> Iterator[Any]:
     """A Playwright page showing the viewer at ``url`` with its scene loaded (sync API).
+
+    ``max_fps`` caps the page's rendering (0: uncapped, as a user's browser renders).
 
     Raises:
         BrowserUnavailable: no chromium or playwright.
@@ -68,6 +83,8 @@ def open_viewer_page(url: str, *, timeout_sec: float = 30.0) -> Iterator[Any]:
         )
         try:
             page = ctx.pages[0] if ctx.pages else ctx.new_page()
+            if max_fps > 0:
+                page.add_init_script(_RAF_CAP_JS % float(max_fps))
             page.goto(url, timeout=timeout_sec * 1000)
             wait_rendered(page, timeout_sec)
             yield page
