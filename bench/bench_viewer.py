@@ -7,7 +7,7 @@ the simulation thread (in process, no ROS), as fast as possible by default (``--
 * no viewer;
 * the viewer serving, nobody connected (what ``gazelle sim`` costs by default);
 * the viewer with a headless Debian chromium attached (Playwright), rendering the live scene;
-* the same with chromium's frame rate capped (``--max-fps``, default 10): what our own headless
+* the same with chromium's frame rate capped (``--max-fps``, default 5): what our own headless
   client can cost at least (a user's browser is not capped).
 
 The four runs are interleaved over ``--rounds`` rounds; it prints each run, the median RTF of each
@@ -116,7 +116,7 @@ def main() -> int:
         "--max-fps",
         type=float,
         default=None,
-        help="render cap of the 'capped' chromium run (default: gazelle.viewer._browser.LOW_COST_MAX_FPS, 10)",
+        help="render cap of the 'capped' chromium run (default: gazelle.viewer._browser.LOW_COST_MAX_FPS, 5)",
     )
     a = ap.parse_args()
     logging.basicConfig(level=logging.WARNING)

@@ -26,19 +26,25 @@ CHROMIUM_ARGS = (
     "--disable-sync",
 )
 VIEWPORT = {"width": 1280, "height": 800}
-LOW_COST_MAX_FPS = 10.0
+LOW_COST_MAX_FPS = 5.0
 """A frame-rate cap for a headless chromium that shares the machine with the simulation.
 viser's client renders on demand, but every scene update opens a 250 ms window of continuous
-frames, so with poses streaming at 30 Hz it renders at the display rate all the time; in
-software WebGL that is ~1-1.7 CPU cores taken from the simulation. Capped at 10 fps (a
-throttled requestAnimationFrame, installed before viser's scripts run) it measured ~0.2 core.
-Not the default: viser also drains its message queue once per frame, so a capped page loads
-the scene more slowly (tests and snapshots took ~1.5x as long)."""
+frames, so with poses streaming at 30 Hz it renders as fast as it can all the time. In
+software WebGL a 1280x800 frame costs ~140 ms of CPU (~40 ms at 320x200: fill-bound), so
+uncapped it reaches ~15 fps on ~1.8 cores; capped (a requestAnimationFrame that batches
+callbacks into at most ``fps`` frames per second, installed before viser's scripts run) it
+measured ~1.3 cores at 10 fps and ~0.75 core at 5 fps. Not the default: viser also drains its
+message queue once per frame, so a capped page loads the scene more slowly."""
 # runs before the page's own scripts (Playwright init script), so the render loop picks it up
 _RAF_CAP_JS = """(() => { const fps = %s; if (!(fps > 0)) return;
-  const raf = window.requestAnimationFrame.bind(window); let next = 0;
-  window.requestAnimationFrame = (cb) => { const now = performance.now(); const d = next - now;
-    next = Math.max(now, next) + 1000 / fps; return d > 1 ? setTimeout(() => raf(cb), d) : raf(cb); }; })()"""
+  const raf = window.requestAnimationFrame.bind(window);
+  let queue = new Map(), nextId = 1, timer = null, last = 0;
+  const tick = (t) => { timer = null; last = performance.now(); const q = queue; queue = new Map();
+    for (const cb of q.values()) { try { cb(t); } catch (e) { console.error(e); } } };
+  window.requestAnimationFrame = (cb) => { const id = nextId++; queue.set(id, cb);
+    if (timer === null) { timer = setTimeout(() => raf(tick), Math.max(0, last + 1000 / fps - performance.now())); }
+    return id; };
+  window.cancelAnimationFrame = (id) => { queue.delete(id); }; })()"""
 
 
 class BrowserUnavailable(RuntimeError):
