@@ -15,6 +15,18 @@ app = typer.Typer(
 )
 
 
+def _load_world_or_exit(world: Optional[Path], arg: list[str]):  # noqa: ANN202 - a World
+    """The world to show (see ``gazelle sim``), or exit 1 with the diagnostics."""
+    from ..description import ModelLoadError
+    from ._sim import load_world
+
+    try:
+        return load_world(world, _parse_args(arg))
+    except ModelLoadError as err:
+        print(str(err), file=sys.stderr)
+        raise typer.Exit(1) from None
+
+
 def _parse_args(values: list[str]) -> dict[str, str]:
     out: dict[str, str] = {}
     for v in values:
@@ -108,17 +120,9 @@ def snapshot(
     arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
 ) -> None:
     """Write a PNG of the browser view, headlessly (Debian's chromium), for docs and bug reports."""
-    from ._sim import load_world
-    from ..description import ModelLoadError
     from ..viewer._snapshot import run_snapshot
 
-    loaded = None
-    if attach is None:
-        try:
-            loaded = load_world(world, _parse_args(arg))
-        except ModelLoadError as err:
-            print(str(err), file=sys.stderr)
-            raise typer.Exit(1)
+    loaded = None if attach is not None else _load_world_or_exit(world, arg)
     raise typer.Exit(run_snapshot(loaded, out, attach=attach, settle_sec=settle))
 
 
@@ -135,8 +139,6 @@ def record_video(
     arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
 ) -> None:
     """Record an animated GIF of the browser view, headlessly (Debian's chromium)."""
-    from ._sim import load_world
-    from ..description import ModelLoadError
     from ..viewer._snapshot import run_record
 
     twist = None
@@ -146,13 +148,7 @@ def record_video(
         except ValueError:
             raise typer.BadParameter(f"--drive expects V,W (e.g. 0.2,0.3), got {drive!r}")
         twist = (v, w)
-    loaded = None
-    if attach is None:
-        try:
-            loaded = load_world(world, _parse_args(arg))
-        except ModelLoadError as err:
-            print(str(err), file=sys.stderr)
-            raise typer.Exit(1)
+    loaded = None if attach is not None else _load_world_or_exit(world, arg)
     raise typer.Exit(run_record(loaded, out, attach=attach, seconds=seconds, fps=fps, drive=twist))
 
 

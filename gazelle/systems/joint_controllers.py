@@ -151,6 +151,31 @@ class _StepVelocityToPosition(_Servo):
 
 
 # --------------------------------------------------------------------------- gz-sim
+class _ServoGroup(System):
+    """Systems whose joints all follow one Float64 command (position or velocity, by servo kind)."""
+
+    def __init__(self) -> None:
+        self.servos: list[_Servo] = []
+
+    def _on_msg(self, msg: Float64) -> None:
+        for s in self.servos:
+            s.command(msg.data)
+
+    def command(self, value: float) -> None:
+        """Set the target directly, as a message on the command topic would."""
+        self._on_msg(Float64(value))
+
+    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        for s in self.servos:
+            s.reset()
+
+    def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        if info.paused:
+            return
+        for s in self.servos:
+            s.step(world, info.dt_sec)
+
+
 @dataclass(frozen=True)
 class PidGains:
     p_gain: float = 1.0
@@ -204,12 +229,12 @@ class JointPositionControllerConfig:
     """``<initial_position>``: target before the first command."""
 
 
-class JointPositionController(System):
+class JointPositionController(_ServoGroup):
     """gz-sim JointPositionController (``gz-sim-joint-position-controller-system``)."""
 
     def __init__(self) -> None:
+        super().__init__()
         self.config = JointPositionControllerConfig()
-        self.servos: list[_Servo] = []
         self.topic = ""
 
     def configure(self, ctx: SystemContext) -> None:
@@ -253,23 +278,6 @@ class JointPositionController(System):
         ctx.bus.subscribe(model, self.topic, MsgType.FLOAT64, self._on_msg, depth=10)
         log.info(f"JointPositionController subscribing to Double messages on [{self.topic}]")
 
-    def _on_msg(self, msg: Float64) -> None:
-        for s in self.servos:
-            s.command(msg.data)
-
-    def command(self, position: float) -> None:
-        """Set the target position directly (as a message would)."""
-        self._on_msg(Float64(position))
-
-    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        for s in self.servos:
-            s.reset()
-
-    def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        if info.paused:
-            return
-        for s in self.servos:
-            s.step(world, info.dt_sec)
 
 
 @dataclass(frozen=True)
@@ -300,12 +308,12 @@ class JointControllerConfig:
     cmd_offset: float = 0.0
 
 
-class JointController(System):
+class JointController(_ServoGroup):
     """gz-sim JointController (``gz-sim-joint-controller-system``): joint velocity from std_msgs/Float64."""
 
     def __init__(self) -> None:
+        super().__init__()
         self.config = JointControllerConfig()
-        self.servos: list[_Servo] = []
         self.topic = ""
 
     def configure(self, ctx: SystemContext) -> None:
@@ -340,22 +348,6 @@ class JointController(System):
         ctx.bus.subscribe(model, self.topic, MsgType.FLOAT64, self._on_msg, depth=10)
         log.info(f"JointController subscribing to Double messages on [{self.topic}]")
 
-    def _on_msg(self, msg: Float64) -> None:
-        for s in self.servos:
-            s.command(msg.data)
-
-    def command(self, velocity: float) -> None:
-        self._on_msg(Float64(velocity))
-
-    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        for s in self.servos:
-            s.reset()
-
-    def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        if info.paused:
-            return
-        for s in self.servos:
-            s.step(world, info.dt_sec)
 
 
 # --------------------------------------------------------------------------- classic-style topics
