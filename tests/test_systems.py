@@ -313,3 +313,28 @@ def test_plugin_docs_are_up_to_date() -> None:
         [sys.executable, str(REPO / "scripts" / "gen_plugin_docs.py"), "--check"], capture_output=True, text=True, cwd=REPO
     )
     assert out.returncode == 0, out.stdout + out.stderr
+
+
+def test_a_system_that_raises_is_disabled_and_the_world_goes_on(caplog):
+    from gazelle.description import Pose, load
+    from gazelle.physics import Simulation
+    from gazelle.systems import System
+    from gazelle.worlds import default_world
+
+    class Broken(System):
+        calls = 0
+
+        def pre_update(self, info, world):
+            Broken.calls += 1
+            raise RuntimeError("plugin bug")
+
+    sim = Simulation(default_world(), rtf=0)
+    robot = load("examples/simple_robot/simple_robot/robot.urdf.xacro").value
+    e = sim.spawn(robot, pose=Pose((0.0, 0.0, 0.08)))
+    sim.systems.add(e.name, Broken())
+    e.systems[0].command(0.2, 0.0)
+    with caplog.at_level("ERROR"):
+        sim.step(500)
+    assert Broken.calls == 1
+    assert "system Broken of entity 'simple_robot' raised in pre_update: RuntimeError: plugin bug" in caplog.text
+    assert sim.world.entity_state("simple_robot").pose.position[0] > 0.05  # the diff drive still drives

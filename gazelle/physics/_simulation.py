@@ -196,8 +196,12 @@ class Simulation:
             self.iterations += 1
             info = self._info()
             self.systems.post_physics(info, w)
-            for listener in self.step_listeners:
-                listener(info)
+            for listener in tuple(self.step_listeners):
+                try:
+                    listener(info)
+                except Exception:  # noqa: BLE001 - an observer must not stop the world
+                    _log.exception(f"step listener {listener!r} raised; it is removed")
+                    self.step_listeners.remove(listener)
             self._record_rtf()
 
     def _record_rtf(self) -> None:

@@ -22,6 +22,8 @@ from ._bus import Bus
 if TYPE_CHECKING:  # pragma: no cover
     from ..physics._world import Entity, PhysicsWorld
 
+_log = logging.getLogger("gazelle.systems")
+
 PRE_PHYSICS = -128
 PHYSICS = -64
 DEFAULT_PRIORITY = 0
@@ -115,21 +117,33 @@ class SystemManager:
         self._update_before = [s for s in self._phase["update"] if s.priority < PHYSICS]
         self._update_after = [s for s in self._phase["update"] if s.priority >= PHYSICS]
 
+    def _disable(self, system: System, phase: str, err: BaseException) -> None:
+        """A system that raises is reported and taken out; the simulation keeps running."""
+        owner = next((o for o, s in self._systems if s is system), "?")
+        _log.error(
+            f"system {type(system).__name__} of entity '{owner}' raised in {phase}: "
+            f"{type(err).__name__}: {err}; it is disabled, the simulation goes on"
+        )
+        self._systems = [(o, s) for o, s in self._systems if s is not system]
+        self._rebuild()
+
+    def _run(self, systems: list[System], phase: str, info: UpdateInfo, world: "PhysicsWorld") -> None:
+        for s in systems:
+            try:
+                getattr(s, phase)(info, world)
+            except Exception as err:  # noqa: BLE001 - one broken plugin must not stop the world
+                self._disable(s, phase, err)
+
     def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        for s in self._phase["reset"]:
-            s.reset(info, world)
+        self._run(self._phase["reset"], "reset", info, world)
 
     def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        for s in self._phase["pre_update"]:
-            s.pre_update(info, world)
-        for s in self._update_before:
-            s.update(info, world)
+        self._run(self._phase["pre_update"], "pre_update", info, world)
+        self._run(self._update_before, "update", info, world)
 
     def post_physics(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        for s in self._update_after:
-            s.update(info, world)
-        for s in self._phase["post_update"]:
-            s.post_update(info, world)
+        self._run(self._update_after, "update", info, world)
+        self._run(self._phase["post_update"], "post_update", info, world)
 
 
 # --------------------------------------------------------------------------- config helpers
