@@ -151,7 +151,7 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
     import xacro
     from gazebo_msgs.srv import GetEntityState
     from nav_msgs.msg import Odometry
-    from rclpy.executors import MultiThreadedExecutor
+    from rclpy.executors import SingleThreadedExecutor
     from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
     from std_msgs.msg import String
 
@@ -162,7 +162,7 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
     context = rclpy.Context()
     rclpy.init(context=context)
     node = rclpy.create_node("gazelle_demo", context=context)
-    executor = MultiThreadedExecutor(num_threads=2, context=context)
+    executor = SingleThreadedExecutor(context=context)  # the multi-threaded one drops /odom at 100 Hz
     executor.add_node(node)
     threading.Thread(target=executor.spin, daemon=True).start()
     children = [sim]

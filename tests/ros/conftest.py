@@ -166,12 +166,14 @@ class RosClient:
     """A plain rclpy node in the test process for observing and calling the simulation."""
 
     def __init__(self, name: str = "test_client"):
-        from rclpy.executors import MultiThreadedExecutor
+        # rclpy's MultiThreadedExecutor is slow enough (Jazzy) that a node taking /clock and /odom
+        # at 100 Hz each plus service replies falls behind and drops most of them; one thread keeps up.
+        from rclpy.executors import SingleThreadedExecutor
 
         self.context = rclpy.Context()
         rclpy.init(context=self.context)
         self.node = rclpy.create_node(name, context=self.context)
-        self.executor = MultiThreadedExecutor(num_threads=2, context=self.context)
+        self.executor = SingleThreadedExecutor(context=self.context)
         self.executor.add_node(self.node)
         self._lock = threading.Lock()
         self._clients: dict[tuple[Any, str], Any] = {}

@@ -92,6 +92,11 @@ def test_seed_robot_drives_a_side_and_turns(mode, sim_factory, ros_client):
         "the robot to stop turning",
     )
     end_state = ros_client.entity_state("simple_robot").state
+    # at rest, the latest /odom is where ground truth says the robot is
+    wait_for(lambda: odoms and odoms[-1][0] >= ros_client.entity_state("simple_robot").header.stamp.sec, 10, "a fresh /odom")
+    with lock:
+        _, ox, oy = max(odoms)
+    assert math.hypot(ox - end_state.pose.position.x, oy - end_state.pose.position.y) < 1e-3
     p0, p1 = start_state.pose.position, end_state.pose.position
     distance = math.hypot(p1.x - p0.x, p1.y - p0.y)
     turn = math.degrees(math.remainder(yaw_of(end_state.pose.orientation) - yaw_of(start_state.pose.orientation), math.tau))
