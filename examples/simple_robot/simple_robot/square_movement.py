@@ -31,6 +31,7 @@ class SquareMovement(Node):
         # Started at the first tick, not here: with use_sim_time the clock reads 0 until
         # the first /clock message, and the seed's first side would then end at once.
         self.state_start_time = None
+        self.last_tick = None
         self.get_logger().info('Square movement started')
 
     def timer_callback(self):
@@ -43,6 +44,12 @@ class SquareMovement(Node):
         if current_time.nanoseconds == 0:
             return  # use_sim_time and no /clock message yet
         if self.state_start_time is None:
+            # Start on a tick that comes one period after the previous one: then this node's clock
+            # is current. Right after start-up it may still be reading an old /clock message, and a
+            # side timed from that stale start ends early (we measured 0.58 m instead of 1 m at 10x).
+            last, self.last_tick = self.last_tick, current_time
+            if last is None or not 0.05 <= (current_time - last).nanoseconds / 1e9 <= 0.2:
+                return
             self.state_start_time = current_time
             self.get_logger().info(f'Starting at t={current_time.nanoseconds / 1e9:.3f}')
         elapsed_time = (current_time - self.state_start_time).nanoseconds / 1e9
