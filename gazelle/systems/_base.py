@@ -152,6 +152,11 @@ def child_text(cfg: ConfigElement, tag: str) -> str | None:
     return el.text.strip() if el is not None else None
 
 
+def all_texts(cfg: ConfigElement | None, tag: str) -> tuple[str, ...]:
+    """The stripped text of every direct child ``<tag>`` (repeatable elements such as ``<joint_name>``)."""
+    return tuple(el.text.strip() for el in cfg.findall(tag)) if cfg is not None else ()
+
+
 def parse_float(cfg: ConfigElement, tag: str, default: float, log: logging.Logger) -> float:
     raw = child_text(cfg, tag)
     if raw is None or raw == "":

@@ -19,7 +19,7 @@ import numpy as np
 
 from ..description import ConfigElement, Model, Pose
 from ..description._model import quat_from_rpy, quat_rotate
-from ._base import System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
+from ._base import System, all_texts, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
 from ._bus import Endpoint, JointStates, MsgType, Odometry, Transform, TransformBatch, Twist, resolve_topic
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -178,8 +178,8 @@ def parse_config(ctx: SystemContext, log: logging.Logger) -> DiffDriveConfig:
         else:
             legacy = parse_bool(cfg, "legacyMode", True, log)
     return DiffDriveConfig(
-        left_joints=tuple(el.text.strip() for el in cfg.findall("left_joint")),
-        right_joints=tuple(el.text.strip() for el in cfg.findall("right_joint")),
+        left_joints=all_texts(cfg, "left_joint"),
+        right_joints=all_texts(cfg, "right_joint"),
         num_wheel_pairs=pairs,
         wheel_separation=floats("wheel_separation", 0.34),
         wheel_diameter=floats("wheel_diameter", 0.15),

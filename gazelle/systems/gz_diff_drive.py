@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING
 
 from ..description import ConfigElement, Pose
 from ..description._model import quat_from_rpy
-from ._base import System, SystemContext, UpdateInfo, child_text, parse_float
+from ._base import System, all_texts, SystemContext, UpdateInfo, child_text, parse_float
 from ._bus import Endpoint, MsgType, Odometry, Transform, TransformBatch, Twist, resolve_topic
 from .diff_drive import add_wheel_servo, drive_wheel
 
@@ -185,8 +185,8 @@ def parse_config(ctx: SystemContext, log: logging.Logger) -> GzDiffDriveConfig:
             where = f"{c.location}: " if c.location else ""
             log.warning(f"{where}<{c.tag}> is not a parameter of gz-sim DiffDrive; it is ignored")
     return GzDiffDriveConfig(
-        left_joints=tuple(el.text.strip() for el in cfg.findall("left_joint")),
-        right_joints=tuple(el.text.strip() for el in cfg.findall("right_joint")),
+        left_joints=all_texts(cfg, "left_joint"),
+        right_joints=all_texts(cfg, "right_joint"),
         wheel_separation=parse_float(cfg, "wheel_separation", 1.0, log),
         wheel_radius=parse_float(cfg, "wheel_radius", 0.2, log),
         odom_publish_frequency=parse_float(cfg, "odom_publish_frequency", 50.0, log),

@@ -25,7 +25,7 @@ import mujoco
 
 from ..description import ConfigElement, JointType
 from ..physics._builder import scoped
-from ._base import System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
+from ._base import all_texts, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
 from ._bus import Float64, MsgType, resolve_topic
 from .diff_drive import INTEGRAL_TIME_SEC, UNLIMITED_INTEGRAL, servo_gain, wheel_inertia_about_axis
 
@@ -240,7 +240,7 @@ class JointPositionController(_ServoGroup):
     def configure(self, ctx: SystemContext) -> None:
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
-        names = tuple(el.text.strip() for el in cfg.findall("joint_name")) if cfg is not None else ()
+        names = all_texts(cfg, "joint_name")
         g = _pid(cfg, log, PidGains())
         get = (lambda tag: child_text(cfg, tag) or "") if cfg is not None else (lambda tag: "")
         self.config = c = JointPositionControllerConfig(
@@ -319,7 +319,7 @@ class JointController(_ServoGroup):
     def configure(self, ctx: SystemContext) -> None:
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
-        names = tuple(el.text.strip() for el in cfg.findall("joint_name")) if cfg is not None else ()
+        names = all_texts(cfg, "joint_name")
         g = _pid(cfg, log, PidGains(p_gain=1.0, i_gain=0.0, d_gain=0.0))
         get = (lambda tag: child_text(cfg, tag) or "") if cfg is not None else (lambda tag: "")
         self.config = c = JointControllerConfig(
@@ -391,7 +391,7 @@ class JointCommands(System):
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         d = JointCommandsConfig()
-        names = tuple(el.text.strip() for el in cfg.findall("joint_name")) if cfg is not None else ()
+        names = all_texts(cfg, "joint_name")
         if not names:
             names = tuple(j.name for j in ctx.entity.model.joints if j.type in _MOVABLE)
         ns, remaps = ros_block(cfg) if cfg is not None else ("", {})

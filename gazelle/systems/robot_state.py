@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING
 import mujoco
 
 from ..description import JointType, Model, Plugin
-from ._base import System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
+from ._base import all_texts, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
 from ._bus import Endpoint, JointStates, MsgType, Qos, Text, Transform, TransformBatch, resolve_topic
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -177,7 +177,7 @@ class JointStatePublisher(System):
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         model: Model = ctx.entity.model
-        names = tuple(el.text.strip() for el in cfg.findall("joint_name")) if cfg is not None else ()
+        names = all_texts(cfg, "joint_name")
         ns, remaps = ros_block(cfg) if cfg is not None else ("", {})
         rate = parse_float(cfg, "update_rate", 100.0, log) if cfg is not None else 100.0
         if cfg is not None and cfg.find("update_rate") is None and not self.all_by_default:
