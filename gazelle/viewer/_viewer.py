@@ -564,11 +564,11 @@ class Viewer:
             self._pose_text.value = ""
 
     def _loop(self) -> None:
-        period = 1.0 / self.rate_hz
         gui_period = 1.0 / GUI_RATE_HZ
         next_gui = 0.0
         next_frame = time.monotonic()
         while not self._stop.is_set():
+            period = 1.0 / self.rate_hz
             if not self.server.get_clients():
                 # nobody watching: cost the simulation next to nothing (a client that connects
                 # gets the whole scene on the next frame); only the path trail keeps sampling
