@@ -101,7 +101,7 @@ def demo(
     out: Path = typer.Option(Path("out/demo"), "--out", help="Where to write the path image and logs."),
     rtf: float = typer.Option(1.0, "--rtf", help="Real-time factor of the demo (0 = as fast as possible, with sim time)."),
     snapshot: bool = typer.Option(False, "--snapshot", help="Also write a PNG of the viewer (the square's path trail) to OUT/viewer.png."),
-    record: bool = typer.Option(False, "--record", help="Also record an animated GIF of the viewer during the square to OUT/square.gif."),
+    record: bool = typer.Option(False, "--record", help="Also record an MP4 of the viewer during the square to OUT/square.mp4."),
 ) -> None:
     """Start the sim (with its browser viewer), spawn the seed robot, drive one square with square_movement.py, report, stop."""
     from ..ros._demo import run_demo
@@ -129,7 +129,9 @@ def snapshot(
 @app.command("record-video")
 def record_video(
     world: Optional[Path] = typer.Option(None, "--world", help="World or model file to show (default: the empty world)."),
-    out: Path = typer.Option(Path("out/video.gif"), "--out", help="Animated GIF to write."),
+    out: Path = typer.Option(
+        Path("out/video.mp4"), "--out", help="Video to write; its extension picks the format: .mp4 (H.264) or .gif."
+    ),
     attach: Optional[str] = typer.Option(None, "--attach", help="Viewer URL of a running `gazelle sim` instead of a new sim."),
     seconds: float = typer.Option(5.0, "--seconds", help="Wall seconds to record."),
     fps: float = typer.Option(4.0, "--fps", help="Frames per second (headless chromium renders in software: keep it modest)."),
@@ -138,9 +140,14 @@ def record_video(
     ),
     arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
 ) -> None:
-    """Record an animated GIF of the browser view, headlessly (Debian's chromium)."""
-    from ..viewer._snapshot import run_record
+    """Record an MP4 (H.264) or an animated GIF of the browser view, headlessly (Debian's chromium)."""
+    from ..viewer._snapshot import run_record, video_format
 
+    try:
+        video_format(out)  # before loading the world or starting anything
+    except ValueError as err:
+        print(f"gazelle record-video: {err}", file=sys.stderr)
+        raise typer.Exit(2) from None
     twist = None
     if drive is not None:
         try:

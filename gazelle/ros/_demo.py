@@ -220,14 +220,14 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
             node_cmd += ["-p", "use_sim_time:=true"]
         recorder = None
         if record and url:
-            from ..viewer._snapshot import record_gif
+            from ..viewer._snapshot import record_video
 
             stop_rec = threading.Event()
             rec_result: list[object] = []
 
             def rec() -> None:
                 try:
-                    rec_result.append(record_gif(url, out / "square.gif", seconds=600, fps=2.0, stop=stop_rec, settle_sec=0.5))
+                    rec_result.append(record_video(url, out / "square.mp4", seconds=600, fps=2.0, stop=stop_rec, settle_sec=0.5))
                 except Exception as err:  # noqa: BLE001 - reported below; the demo itself goes on
                     rec_result.append(err)
 
