@@ -6,6 +6,17 @@ pose, the sim time and the entity set), so MuJoCo data is only ever read on the
 simulation thread and the frame rate is independent of the physics rate. GUI
 callbacks (buttons) also hand their work to the sim thread with ``sim.call``.
 
+Selecting: the Entities dropdown is the selection (pose, Delete, Drive and the trail
+follow it). Clicking an entity's visual geometry in the 3D view sets it too: every
+visual mesh of a selectable entity gets a viser ``on_click`` callback (registered
+once when the mesh is added, so it costs no per-frame messages; viser then outlines
+the hovered mesh and shows a pointer cursor, and a press that moves, i.e. an orbit,
+is not a click). Static world scenery (static models that came with the world, such
+as the ground plane) is not clickable; spawned models are, static or not (the chess
+board, each chess piece). Collision overlays are not clickable (the click goes through
+their wireframe to the visual inside). Clicking elsewhere does not deselect: choose
+"(none)" in the dropdown.
+
 Driving: the viewer publishes ``cmd_vel`` the way teleop_twist_keyboard does,
 by delivering a Twist to every cmd_vel subscription on the bus owned by the
 selected entity (exactly what the ROS bridge does with a received message).
@@ -108,7 +119,10 @@ class _EntityNodes:
     key: tuple[str, int]
     root: Any
     links: dict[str, _LinkNode] = field(default_factory=dict)
+    visuals: list[Any] = field(default_factory=list)
     collisions: list[Any] = field(default_factory=list)
+    selectable: bool = False
+    """Its visuals select it when clicked (not static world scenery such as the ground plane)."""
 
 
 @dataclass(frozen=True)
@@ -205,6 +219,7 @@ class Viewer:
         s = self.server.scene
         root_name = f"/entities/{_safe(name)}"
         nodes = _EntityNodes((name, generation), s.add_frame(root_name, show_axes=False))
+        nodes.selectable = bool(e.spawned or not e.static)
         show_tf = bool(self._tf_box.value)
         show_col = bool(self._col_box.value)
         for link in e.model.links:
@@ -214,9 +229,13 @@ class Viewer:
             frame = s.add_frame(base, show_axes=show_tf, axes_length=0.1, axes_radius=0.004)
             nodes.links[link.name] = _LinkNode(frame)
             for i, vis in enumerate(link.visuals):
-                self._add_geometry(
+                h = self._add_geometry(
                     f"{base}/visual_{i}", vis.geometry, vis.pose, vis.material.diffuse if vis.material else None
                 )
+                if h is not None:
+                    nodes.visuals.append(h)
+                    if nodes.selectable:
+                        h.on_click(lambda _ev, name=name: self.select(name))
             for i, col in enumerate(link.collisions):
                 h = self._add_geometry(f"{base}/collision_{i}", col.geometry, col.pose, None, collision=True)
                 if h is not None:
@@ -237,6 +256,18 @@ class Viewer:
         opacity = None if rgba is None or rgba[3] >= 1.0 else float(rgba[3])
         return s.add_mesh_simple(name, tm.vertices, tm.faces, color=rgba_to_rgb255(rgba), opacity=opacity, **kw)
 
+    def select(self, name: str) -> bool:
+        """Select entity ``name`` (what clicking its geometry does): the Entities dropdown shows it.
+
+        Returns False, changing nothing, when ``name`` is not (or no longer) an entity in the dropdown.
+        """
+        with self._lock:
+            if name not in self._entity_dd.options:
+                return False
+            if self._entity_dd.value != name:
+                self._entity_dd.value = name
+        return True
+
     def _remove_entity(self, name: str) -> None:
         nodes = self._nodes.pop(name, None)
         if nodes is not None:
@@ -253,7 +284,9 @@ class Viewer:
             self._real_text = g.add_text("Real time", initial_value="0.0 s", disabled=True)
             self._rtf_text = g.add_text("RTF", initial_value="-", disabled=True)
         with g.add_folder("Entities"):
-            self._entity_dd = g.add_dropdown("Entity", options=[NO_SELECTION], initial_value=NO_SELECTION)
+            self._entity_dd = g.add_dropdown(
+                "Entity", options=[NO_SELECTION], initial_value=NO_SELECTION, hint="Or click an entity in the 3D view"
+            )
             self._pose_text = g.add_text("Pose", initial_value="", disabled=True)
             self._delete_btn = g.add_button("Delete entity", color="red")
         with g.add_folder("Drive"):
@@ -537,9 +570,10 @@ class Viewer:
                     ln.frame.wxyz = pose[1]
         names = [NO_SELECTION, *sorted(snap.entities)]
         if tuple(self._entity_dd.options) != tuple(names):
-            current = self._entity_dd.value
-            self._entity_dd.options = names
-            self._entity_dd.value = current if current in names else NO_SELECTION
+            with self._lock:  # against a click selecting meanwhile (select() runs on viser's threads)
+                current = self._entity_dd.value
+                self._entity_dd.options = names
+                self._entity_dd.value = current if current in names else NO_SELECTION
         self._last = snap
         self.frames += 1
         return snap

@@ -1,8 +1,9 @@
 """End to end: headless Debian chromium (Playwright) on the viewer of a real `gazelle sim`.
 
 One server and one browser page for the module (kept under ~60 s); the tests run in order:
-the robot is spawned and seen by pixels, the sim is paused and resumed from the GUI, then
-driven from the GUI and its motion checked by ground truth (/get_entity_state).
+the robot is spawned and seen by pixels, the sim is paused and resumed from the GUI, the robot
+is selected by clicking it in the 3D view, then driven from the GUI and its motion checked by
+ground truth (/get_entity_state).
 """
 
 from __future__ import annotations
@@ -147,6 +148,101 @@ def test_pause_stops_sim_time_and_play_resumes(page: Any, ros_client_mod: Any) -
     page.get_by_role("button", name="Play", exact=True).click()
     wait_for(lambda: sim_time(page) > paused_gui + 0.2, timeout=10, what="sim time advancing after Play")
     wait_for(lambda: last_clock[-1] > paused_clock + 0.2, timeout=10, what="/clock advancing after Play")
+
+
+def entity_dropdown(page: Any) -> str:
+    """The Entities dropdown's displayed value."""
+    return gui_input(page, "Entity").input_value()
+
+
+def choose_entity(page: Any, name: str) -> None:
+    page.get_by_role("combobox").first.click()
+    page.get_by_role("option", name=name, exact=True).click()
+    wait_for(lambda: entity_dropdown(page) == name, timeout=5, what=f"the Entity dropdown showing {name!r}")
+
+
+def canvas_at(page: Any, xy: tuple[float, float]) -> bool:
+    """Whether the pixel is on the 3D canvas (inside the viewport, not under the control panel)."""
+    return page.evaluate("([x, y]) => document.elementFromPoint(x, y)?.tagName === 'CANVAS'", list(xy))
+
+
+def canvas_cursor(page: Any, xy: tuple[float, float]) -> str:
+    """The CSS cursor viser sets on the 3D canvas at that pixel ('pointer' over clickable meshes)."""
+    return page.evaluate("([x, y]) => document.elementFromPoint(x, y)?.style.cursor ?? ''", list(xy))
+
+
+def test_clicking_the_robot_in_the_view_selects_it(page: Any, ros_client_mod: Any, artifacts: Path) -> None:
+    """Wherever earlier tests drove it: empty ground selects nothing, the robot's body selects it, an orbit
+    starting on the robot moves the camera and selects nothing."""
+    choose_entity(page, "(none)")
+    wait_for(lambda: gui_input(page, "Pose").input_value() == "", timeout=5, what="an empty Pose with nothing selected")
+    size = page.viewport_size
+    w, h = size["width"], size["height"]
+    p = ros_client_mod.entity_state(ROBOT).state.pose.position  # base_link = the blue box's centre
+    robot_xy = project((p.x, p.y, p.z), w, h)
+    ground_xy = project((p.x - 0.6, p.y + 0.6, 0.0), w, h)  # behind the robot seen from the camera
+    assert canvas_at(page, robot_xy), f"the robot at ({p.x:.2f}, {p.y:.2f}) projects to {robot_xy}, off the 3D canvas"
+    assert canvas_at(page, ground_xy), f"{ground_xy} is off the 3D canvas"
+
+    # hovering: the robot is clickable (pointer cursor; viser also outlines the mesh), the ground is not
+    page.mouse.move(*robot_xy)
+    wait_for(lambda: canvas_cursor(page, robot_xy) == "pointer", timeout=10, what="the pointer cursor over the robot")
+    page.mouse.move(*ground_xy)
+    wait_for(
+        lambda: canvas_cursor(page, ground_xy) in ("", "auto"), timeout=10, what="the default cursor over the ground"
+    )
+
+    # clicking empty ground (the static ground plane) selects nothing: watch a window for any change
+    page.mouse.click(*ground_xy)
+    window_end = time.monotonic() + 1.0
+    while time.monotonic() < window_end:
+        assert entity_dropdown(page) == "(none)", "clicking empty ground selected something"
+        assert gui_input(page, "Pose").input_value() == ""
+        page.wait_for_timeout(100)
+
+    page.mouse.click(*robot_xy)
+    wait_for(lambda: entity_dropdown(page) == ROBOT, timeout=10, what=f"the Entity dropdown showing {ROBOT}")
+
+    # what follows the dropdown follows the click: the Pose text shows the robot's ground-truth pose
+    def pose_matches() -> bool:
+        text = gui_input(page, "Pose").input_value().split()
+        if len(text) < 6 or text[0] != "x":
+            return False
+        q = ros_client_mod.entity_state(ROBOT).state.pose.position
+        return abs(float(text[1]) - q.x) < 0.05 and abs(float(text[3]) - q.y) < 0.05
+
+    wait_for(pose_matches, timeout=5, what="the Pose text showing the robot's ground-truth position")
+    page.screenshot(path=str(artifacts / "viewer_click_select.png"))
+    shutil.copy(artifacts / "viewer_click_select.png", ARTIFACTS / "viewer_click_select.png")
+
+    # a drag that starts on the robot orbits the camera and is not a click. The orbit pivots about the
+    # look-at point next to the robot, so the robot stays put on screen while the grid turns around it.
+    choose_entity(page, "(none)")
+    page.mouse.move(*ground_xy)  # no hover outline in the reference image
+
+    def view() -> np.ndarray:
+        from PIL import Image
+
+        rgb = np.asarray(Image.open(io.BytesIO(page.screenshot())).convert("RGB")).astype(int)
+        return rgb[:, : int(0.7 * w)]  # the 3D view left of the control panel
+
+    before = view()
+    page.mouse.move(*robot_xy)
+    page.mouse.down()
+    page.mouse.move(robot_xy[0] + 150, robot_xy[1], steps=5)
+    page.mouse.up()
+
+    def orbited() -> bool:  # ~1% of the view changes (the grid lines); without an orbit, none
+        return float((np.abs(view() - before).max(axis=-1) > 40).mean()) > 0.004
+
+    wait_for(orbited, timeout=10, what="the view turning after a drag that starts on the robot", interval=0.2)
+    assert entity_dropdown(page) == "(none)", "a drag starting on the robot selected it"
+    # back to the initial camera (later tests project with it) with nothing selected
+    page.reload()
+    from gazelle.viewer._browser import wait_rendered
+
+    wait_rendered(page, 30)
+    wait_for(lambda: entity_dropdown(page) == "(none)", timeout=10, what="nothing selected after the reload")
 
 
 def test_drive_buttons_move_the_robot(page: Any, ros_client_mod: Any) -> None:

@@ -99,6 +99,77 @@ def test_scene_follows_spawn_and_delete_and_drive_reaches_the_diff_drive() -> No
         sim.stop()
 
 
+def _click(handle) -> None:
+    """What viser does with a SceneNodeClickMessage for ``handle``: call its click callbacks with the event."""
+    from viser._scene_handles import SceneNodePointerEvent
+
+    event = SceneNodePointerEvent(
+        client=None,
+        client_id=0,
+        event="click",
+        target=handle,
+        ray_origin=(0.0, 0.0, 1.0),
+        ray_direction=(0.0, 0.0, -1.0),
+        screen_pos=(0.5, 0.5),
+        instance_index=None,
+        modifier=None,
+    )
+    for entry in list(handle._impl.click_cb):
+        entry.callback(event)
+
+
+def test_clicking_an_entity_selects_it_but_not_the_ground_plane_or_collision_overlays() -> None:
+    from gazelle.physics import Simulation
+    from gazelle.viewer import Viewer
+    from gazelle.viewer._viewer import NO_SELECTION
+    from gazelle.worlds import default_world
+
+    here = REPO / "examples" / "chessboard"
+    sim = Simulation(default_world(), rtf=0.0)
+    sim.start()
+    viewer = Viewer(sim, port=0)  # no thread: frames are pulled by hand
+    try:
+        sim.spawn(load(SEED_XACRO).value, name="r1", pose=Pose((1.0, 0.0, 0.0)))
+        sim.spawn(load(here / "chess_board.sdf").value, name="board", pose=Pose((0.0, 2.0, 0.0)))  # static, spawned
+        sim.spawn(load(here / "chess_piece.sdf").value, name="piece", pose=Pose((0.0, 2.0, 0.05)))
+        viewer.update()
+        nodes = viewer._nodes
+        assert viewer._entity_dd.value == NO_SELECTION
+        # the world's static scenery is not clickable: a click on the ground must not select it
+        assert sim.world.entities["ground_plane"].static and nodes["ground_plane"].visuals
+        assert not nodes["ground_plane"].selectable
+        assert all(not h._impl.click_cb for h in nodes["ground_plane"].visuals)
+        _click(nodes["ground_plane"].visuals[0])
+        assert viewer._entity_dd.value == NO_SELECTION
+        # every visual of the robot (base box, 2 casters, 2 wheels) selects it; collision overlays select nothing
+        assert len(nodes["r1"].visuals) == 5 and all(h._impl.click_cb for h in nodes["r1"].visuals)
+        assert nodes["r1"].collisions and all(not h._impl.click_cb for h in nodes["r1"].collisions)
+        for h in nodes["r1"].visuals:
+            viewer._entity_dd.value = NO_SELECTION
+            _click(h)
+            assert viewer._entity_dd.value == "r1"
+        _click(nodes["r1"].visuals[0])  # clicking the selection again keeps it selected
+        assert viewer._entity_dd.value == "r1"
+        # what follows the dropdown follows the click: pose text, drive target, trail
+        viewer._update_gui(viewer.update())
+        assert viewer._pose_text.value.startswith("x 1.0")
+        assert viewer.drive(0.0, 0.0) == 1 and viewer._drive_text.value.startswith("r1:")
+        # a static model that was spawned (the chess board) is selectable, and so is each piece
+        _click(nodes["board"].visuals[0])
+        assert viewer._entity_dd.value == "board" and viewer.trail_target() == "board"
+        _click(nodes["piece"].visuals[0])
+        assert viewer._entity_dd.value == "piece"
+        # a click arriving for an entity deleted meanwhile changes nothing
+        r1_visual = nodes["r1"].visuals[0]
+        sim.delete("r1")
+        viewer.update()
+        _click(r1_visual)
+        assert viewer._entity_dd.value == "piece" and not viewer.select("r1")
+    finally:
+        viewer.stop()
+        sim.stop()
+
+
 def test_find_models_lists_model_folders_and_description_files(tmp_path) -> None:
     from gazelle.description import ResourceResolver
     from gazelle.viewer._models import find_models
