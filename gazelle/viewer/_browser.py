@@ -26,15 +26,6 @@ CHROMIUM_ARGS = (
     "--disable-sync",
 )
 VIEWPORT = {"width": 1280, "height": 800}
-LOW_COST_MAX_FPS = 5.0
-"""A frame-rate cap for a headless chromium that shares the machine with the simulation.
-viser's client renders on demand, but every scene update opens a 250 ms window of continuous
-frames, so with poses streaming at 30 Hz it renders as fast as it can all the time. In
-software WebGL a 1280x800 frame costs ~140 ms of CPU (~40 ms at 320x200: fill-bound), so
-uncapped it reaches ~15 fps on ~1.8 cores; capped (a requestAnimationFrame that batches
-callbacks into at most ``fps`` frames per second, installed before viser's scripts run) it
-measured ~1.3 cores at 10 fps and ~0.75 core at 5 fps. Not the default: viser also drains its
-message queue once per frame, so a capped page loads the scene more slowly."""
 # runs before the page's own scripts (Playwright init script), so the render loop picks it up
 _RAF_CAP_JS = """(() => { const fps = %s; if (!(fps > 0)) return;
   const raf = window.requestAnimationFrame.bind(window);
@@ -66,7 +57,13 @@ def find_chromium() -> str | None:
 def open_viewer_page(url: str, *, timeout_sec: float = 30.0, max_fps: float = 0.0) -> Iterator[Any]:
     """A Playwright page showing the viewer at ``url`` with its scene loaded (sync API).
 
-    ``max_fps`` caps the page's rendering (0: uncapped, as a user's browser renders).
+    ``max_fps`` caps the page's rendering (0: uncapped, as a user's browser renders). viser's client
+    renders on demand, but each scene update opens a 250 ms window of continuous frames, so while
+    poses stream it renders as fast as it can: in software WebGL a 1280x800 frame costs ~100-140 ms
+    of CPU on two SwiftShader threads (~40 ms at 320x200: fill-bound), ~10 fps on one core. The cap
+    (a requestAnimationFrame that batches callbacks into at most ``max_fps`` frames per second,
+    installed before viser's scripts run) lowers chromium's CPU (5 fps: ~0.7 core) but slows scene
+    loading, as viser drains its message queue once per frame.
 
     Raises:
         BrowserUnavailable: no chromium or playwright.

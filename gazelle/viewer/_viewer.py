@@ -621,7 +621,8 @@ class Viewer:
                 snap = self.update()
                 now = time.monotonic()
                 if snap is not None and now >= next_gui:
-                    self._update_gui(snap)
+                    with self.server.atomic():  # one wake-up of viser's event loop for the whole panel
+                        self._update_gui(snap)
                     if self._contact_box.value or self._contact_handle is not None:
                         self._update_contacts()
                     next_gui = now + gui_period
