@@ -118,12 +118,13 @@ def snapshot(
     ),
     settle: float = typer.Option(1.0, "--settle", help="Seconds to let the scene load and settle before the shot."),
     arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
+    panel: bool = typer.Option(True, "--panel/--no-panel", help="Show the control panel, or minimize it so the scene fills the view."),
 ) -> None:
     """Write a PNG of the browser view, headlessly (Debian's chromium), for docs and bug reports."""
     from ..viewer._snapshot import run_snapshot
 
     loaded = None if attach is not None else _load_world_or_exit(world, arg)
-    raise typer.Exit(run_snapshot(loaded, out, attach=attach, settle_sec=settle))
+    raise typer.Exit(run_snapshot(loaded, out, attach=attach, settle_sec=settle, panel=panel))
 
 
 @app.command("record-video")
@@ -139,6 +140,7 @@ def record_video(
         None, "--drive", help="V,W: send this Twist (m/s, rad/s) to the first diff-drive robot of --world before recording."
     ),
     arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
+    panel: bool = typer.Option(True, "--panel/--no-panel", help="Show the control panel, or minimize it so the scene fills the view."),
 ) -> None:
     """Record an MP4 (H.264) or an animated GIF of the browser view, headlessly (Debian's chromium)."""
     from ..viewer._snapshot import run_record, video_format
@@ -156,7 +158,7 @@ def record_video(
             raise typer.BadParameter(f"--drive expects V,W (e.g. 0.2,0.3), got {drive!r}")
         twist = (v, w)
     loaded = None if attach is not None else _load_world_or_exit(world, arg)
-    raise typer.Exit(run_record(loaded, out, attach=attach, seconds=seconds, fps=fps, drive=twist))
+    raise typer.Exit(run_record(loaded, out, attach=attach, seconds=seconds, fps=fps, drive=twist, panel=panel))
 
 
 def main(argv: list[str] | None = None) -> None:

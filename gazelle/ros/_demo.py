@@ -164,7 +164,8 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
     node = rclpy.create_node("gazelle_demo", context=context)
     executor = SingleThreadedExecutor(context=context)  # the multi-threaded one drops /odom at 100 Hz
     executor.add_node(node)
-    threading.Thread(target=executor.spin, daemon=True).start()
+    spinner = threading.Thread(target=executor.spin, daemon=True)
+    spinner.start()
     children = [sim]
     try:
         if not sim.wait_for_line("gazelle: ready", 60):
@@ -222,17 +223,25 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
         if record and url:
             from ..viewer._snapshot import record_video
 
-            stop_rec = threading.Event()
+            stop_rec, rec_ready = threading.Event(), threading.Event()
             rec_result: list[object] = []
 
             def rec() -> None:
                 try:
-                    rec_result.append(record_video(url, out / "square.mp4", seconds=600, fps=2.0, stop=stop_rec, settle_sec=0.5))
+                    rec_result.append(
+                        record_video(
+                            url, out / "square.mp4", seconds=600, fps=2.0, stop=stop_rec, settle_sec=0.5, panel=False, on_start=rec_ready.set
+                        )
+                    )
                 except Exception as err:  # noqa: BLE001 - reported below; the demo itself goes on
                     rec_result.append(err)
+                finally:
+                    rec_ready.set()
 
             recorder = threading.Thread(target=rec, daemon=True)
             recorder.start()
+            # the browser takes a few seconds to start: the square waits for it (at --rtf 0 it is over in ~4 s)
+            rec_ready.wait(60)
         square = _Child("square_movement", node_cmd, env)
         children.append(square)
         square_rc = square.proc.wait(300)
@@ -270,7 +279,7 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
             from ..viewer._browser import screenshot
 
             try:
-                png = screenshot(url, out / "viewer.png", settle_sec=1.0)
+                png = screenshot(url, out / "viewer.png", settle_sec=1.0, panel=False)
                 print(f"   viewer snapshot: {png.resolve()}", flush=True)
             except Exception as err:  # noqa: BLE001 - the demo's result does not depend on the browser
                 print(f"   viewer snapshot failed: {type(err).__name__}: {err}", flush=True)
@@ -285,6 +294,7 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
         for c in reversed(children):
             c.stop()
         executor.shutdown(timeout_sec=2.0)
+        spinner.join(5.0)  # a thread still inside rclpy's wait at interpreter exit aborts the process (rc 134)
         node.destroy_node()
         if context.ok():
             rclpy.shutdown(context=context)

@@ -54,8 +54,10 @@ def find_chromium() -> str | None:
 
 
 @contextlib.contextmanager
-def open_viewer_page(url: str, *, timeout_sec: float = 30.0, max_fps: float = 0.0) -> Iterator[Any]:
+def open_viewer_page(url: str, *, timeout_sec: float = 30.0, max_fps: float = 0.0, panel: bool = True) -> Iterator[Any]:
     """A Playwright page showing the viewer at ``url`` with its scene loaded (sync API).
+
+    ``panel=False`` minimizes the control panel (for pictures of the scene: it covers its right quarter).
 
     ``max_fps`` caps the page's rendering (0: uncapped, as a user's browser renders). viser's client
     renders on demand, but each scene update opens a 250 ms window of continuous frames, so while
@@ -90,6 +92,8 @@ def open_viewer_page(url: str, *, timeout_sec: float = 30.0, max_fps: float = 0.
                 page.add_init_script(_RAF_CAP_JS % float(max_fps))
             page.goto(url, timeout=timeout_sec * 1000)
             wait_rendered(page, timeout_sec)
+            if not panel:
+                minimize_panel(page, timeout_sec)
             yield page
         finally:
             ctx.close()
@@ -105,10 +109,17 @@ def wait_rendered(page: Any, timeout_sec: float) -> None:
     page.evaluate("() => new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))")
 
 
-def screenshot(url: str, out: Path, *, settle_sec: float = 1.0, timeout_sec: float = 30.0) -> Path:
-    """Write a PNG of the viewer at ``url``; returns ``out``."""
+def minimize_panel(page: Any, timeout_sec: float = 30.0) -> None:
+    """Minimize viser's control panel, and move the pointer off it (its tooltip would show)."""
+    page.get_by_label("Minimize panel").click(timeout=timeout_sec * 1000)
+    page.get_by_label("Expand panel").first.wait_for(timeout=timeout_sec * 1000)
+    page.mouse.move(2, VIEWPORT["height"] - 2)
+
+
+def screenshot(url: str, out: Path, *, settle_sec: float = 1.0, timeout_sec: float = 30.0, panel: bool = True) -> Path:
+    """Write a PNG of the viewer at ``url`` (``panel=False``: with the control panel minimized); returns ``out``."""
     out.parent.mkdir(parents=True, exist_ok=True)
-    with open_viewer_page(url, timeout_sec=timeout_sec) as page:
+    with open_viewer_page(url, timeout_sec=timeout_sec, panel=panel) as page:
         deadline = time.monotonic() + settle_sec
         while time.monotonic() < deadline:  # let meshes stream in and poses settle
             page.wait_for_timeout(100)

@@ -17,7 +17,7 @@ if TYPE_CHECKING:
     from ..physics import Simulation
 
 
-def snapshot_world(world: "World", out: Path, *, settle_sec: float = 1.0) -> Path:
+def snapshot_world(world: "World", out: Path, *, settle_sec: float = 1.0, panel: bool = True) -> Path:
     """Simulate ``world`` in this process for a moment, serve it, and write a PNG of the viewer."""
     from ..physics import Simulation
     from ._viewer import Viewer
@@ -27,20 +27,20 @@ def snapshot_world(world: "World", out: Path, *, settle_sec: float = 1.0) -> Pat
     viewer = Viewer(sim, port=0)
     viewer.start()
     try:
-        return screenshot(viewer.url, out, settle_sec=settle_sec)
+        return screenshot(viewer.url, out, settle_sec=settle_sec, panel=panel)
     finally:
         viewer.stop()
         sim.stop()
 
 
-def run_snapshot(world: "World | None", out: Path, *, attach: str | None, settle_sec: float) -> int:
+def run_snapshot(world: "World | None", out: Path, *, attach: str | None, settle_sec: float, panel: bool = True) -> int:
     """CLI body: returns the exit code."""
     try:
         if attach is not None:
-            path = screenshot(attach, out, settle_sec=settle_sec)
+            path = screenshot(attach, out, settle_sec=settle_sec, panel=panel)
         else:
             assert world is not None
-            path = snapshot_world(world, out, settle_sec=settle_sec)
+            path = snapshot_world(world, out, settle_sec=settle_sec, panel=panel)
     except BrowserUnavailable as err:
         print(f"gazelle snapshot: {err}", file=sys.stderr)
         return 2
@@ -188,6 +188,7 @@ def record_video(
     stop: "threading.Event | None" = None,
     settle_sec: float = 1.0,
     on_start: "Callable[[], object] | None" = None,
+    panel: bool = True,
 ) -> tuple[Path, int]:
     """Screenshots of the viewer at ``url`` at ``fps`` for ``seconds`` (or until ``stop`` is set), as a video.
 
@@ -196,6 +197,7 @@ def record_video(
     ``width`` scales the frames (default: the viewport for MP4, ``VIDEO_WIDTH`` for GIF).
     Headless chromium renders WebGL in software, so a frame costs ~0.1-0.3 s of CPU: keep ``fps`` modest.
     ``on_start`` is called once the page shows the scene, just before the first frame.
+    ``panel=False`` minimizes the control panel, so the whole view shows the scene.
     If the recording fails half-way, what was captured is still written (a valid, shorter file).
     Returns (``out``, frame count).
     """
@@ -209,7 +211,7 @@ def record_video(
     out.parent.mkdir(parents=True, exist_ok=True)
     writer: _GifWriter | _Mp4Writer = _Mp4Writer(out, fps, width) if fmt == "mp4" else _GifWriter(out, width)
     period = 1.0 / max(fps, 0.1)
-    with open_viewer_page(url) as page:
+    with open_viewer_page(url, panel=panel) as page:
         page.wait_for_timeout(int(settle_sec * 1000))
         if on_start is not None:
             on_start()
@@ -257,6 +259,7 @@ def run_record(
     seconds: float,
     fps: float,
     drive: tuple[float, float] | None,
+    panel: bool = True,
 ) -> int:
     """CLI body of ``gazelle record-video``: returns the exit code."""
     from ..physics import Simulation
@@ -285,7 +288,7 @@ def run_record(
                     who = drive_first_robot(the_sim, *drive)
                     print(f"gazelle: driving {who}" if who else "gazelle: no diff-drive robot to drive", flush=True)
 
-        path, n = record_video(url, out, seconds=seconds, fps=fps, on_start=on_start)
+        path, n = record_video(url, out, seconds=seconds, fps=fps, on_start=on_start, panel=panel)
     except BrowserUnavailable as err:
         print(f"gazelle record-video: {err}", file=sys.stderr)
         return 2

@@ -20,11 +20,12 @@ import numpy as np
 import pytest
 
 from gazelle.viewer._browser import find_chromium
-from gazelle.viewer._viewer import CAMERA_FOV_RAD, CAMERA_LOOK_AT, CAMERA_POSITION
 
 pytest.importorskip("playwright")
 if find_chromium() is None:
     pytest.skip("no system chromium (scripts/setup.sh installs Debian's chromium)", allow_module_level=True)
+
+from _pixels import blue_mask, project
 
 from .conftest import ARTIFACTS, GAZELLE, REPO, SEED_XACRO, wait_for
 
@@ -34,30 +35,6 @@ ROBOT_CENTRE = (0.0, 0.0, 0.07)
 REGION_HALF_PX = 90
 MIN_BLUE_PX = 3000
 """The 0.3 x 0.3 x 0.1 m blue box covers ~10 000 px at this camera; the blue world z axis alone ~800."""
-
-
-def project(
-    point: tuple[float, float, float], width: int, height: int, eye: Any = CAMERA_POSITION, target: Any = CAMERA_LOOK_AT
-) -> tuple[float, float]:
-    """Pixel (x right, y down) of a world point for the viewer's fixed initial camera (z up)."""
-    eye, target = np.asarray(eye, dtype=float), np.asarray(target, dtype=float)
-    fwd = target - eye
-    fwd /= np.linalg.norm(fwd)
-    right = np.cross(fwd, (0.0, 0.0, 1.0))
-    right /= np.linalg.norm(right)
-    up = np.cross(right, fwd)
-    d = np.asarray(point) - eye
-    x, y, z = d @ right, d @ up, d @ fwd
-    f = (height / 2) / math.tan(CAMERA_FOV_RAD / 2)
-    return width / 2 + f * x / z, height / 2 - f * y / z
-
-
-def blue_mask(png: bytes) -> np.ndarray:
-    from PIL import Image
-
-    rgb = np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(int)
-    r, g, b = rgb[..., 0], rgb[..., 1], rgb[..., 2]
-    return (b > 100) & (b > r + 60) & (b > g + 60)
 
 
 def blue_in_region(page: Any, save: Path | None = None) -> tuple[int, tuple[float, float], tuple[float, float] | None]:
@@ -304,22 +281,34 @@ def test_keyboard_drive_presses_the_drive_buttons(page: Any, ros_client_mod: Any
     wait_for(lambda: "angular +0.00" in gui_input(page, "cmd_vel").input_value(), timeout=5, what="release -> Stop")
 
 
-def test_snapshot_command_writes_a_png_with_the_robot(tmp_path: Path) -> None:
+@pytest.mark.parametrize("panel", [True, False], ids=["panel", "no-panel"])
+def test_snapshot_command_writes_a_png_with_the_robot(tmp_path: Path, panel: bool) -> None:
+    """`gazelle snapshot` shows the robot; with --no-panel the control panel's area shows the scene instead."""
+    from PIL import Image
+
     out = tmp_path / "snapshot.png"
     res = subprocess.run(
-        [*GAZELLE, "snapshot", "--world", str(SEED_XACRO), "--out", str(out)],
+        [*GAZELLE, "snapshot", "--world", str(SEED_XACRO), "--out", str(out), *([] if panel else ["--no-panel"])],
         cwd=REPO,
         capture_output=True,
         text=True,
         timeout=60,
     )
     assert res.returncode == 0, res.stdout + res.stderr
-    shutil.copy(out, ARTIFACTS / "snapshot_seed.png")
+    shutil.copy(out, ARTIFACTS / ("snapshot_seed.png" if panel else "snapshot_seed_no_panel.png"))
     mask = blue_mask(out.read_bytes())
     h, w = mask.shape
     cx, cy = project(ROBOT_CENTRE, w, h)
     region = mask[int(cy) - REGION_HALF_PX : int(cy) + REGION_HALF_PX, int(cx) - REGION_HALF_PX : int(cx) + REGION_HALF_PX]
     assert region.sum() >= MIN_BLUE_PX, f"only {region.sum()} blue pixels where the robot should be"
+    # the panel is white; the scene there is the grey ground (see viewer_robot.png)
+    rgb = np.asarray(Image.open(io.BytesIO(out.read_bytes())).convert("RGB"))
+    area = rgb[int(0.15 * h) : int(0.85 * h), int(0.78 * w) : int(0.96 * w)]
+    white = float((area.min(axis=2) >= 245).mean())
+    if panel:
+        assert white > 0.3, f"the control panel should cover its area, but only {white:.0%} of it is white"
+    else:
+        assert white < 0.05, f"--no-panel: {white:.0%} of the panel's area is still white"
 
 
 CHESS_EYE = (0.25, 0.85, 1.75)

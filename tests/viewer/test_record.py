@@ -15,6 +15,8 @@ import pytest
 from gazelle.viewer._browser import find_chromium
 from gazelle.viewer._snapshot import video_format
 
+from _pixels import blue_mask
+
 from .conftest import ARTIFACTS, GAZELLE, REPO, SEED_XACRO
 
 needs_browser = pytest.mark.skipif(
@@ -41,8 +43,7 @@ def decode_mp4(path: Path) -> tuple[object, float, list[np.ndarray]]:
 def blue_centroid(rgb: np.ndarray) -> tuple[float, float]:
     """Centroid (x, y) of the strongly blue pixels (the seed robot's box) left of the control panel."""
     rgb = rgb[:, : int(0.7 * rgb.shape[1])]  # the control panel (blue buttons) is on the right
-    r, g, b = rgb[..., 0], rgb[..., 1], rgb[..., 2]
-    ys, xs = np.nonzero((b > 100) & (b > r + 60) & (b > g + 60))
+    ys, xs = np.nonzero(blue_mask(rgb))
     assert len(xs) > 3000, f"no blue robot in a frame ({len(xs)} blue pixels; the robot alone has ~10 000)"
     return float(xs.mean()), float(ys.mean())
 

@@ -1,0 +1,47 @@
+"""Pixel helpers for the browser tests: where a world point lands in the viewer, and colour masks."""
+
+from __future__ import annotations
+
+import io
+import math
+from typing import Any
+
+import numpy as np
+
+from gazelle.viewer._viewer import CAMERA_FOV_RAD, CAMERA_LOOK_AT, CAMERA_POSITION, TRAIL_RGB
+
+
+def project(
+    point: tuple[float, float, float], width: int, height: int, eye: Any = CAMERA_POSITION, target: Any = CAMERA_LOOK_AT
+) -> tuple[float, float]:
+    """Pixel (x right, y down) of a world point for the viewer's fixed initial camera (z up)."""
+    eye, target = np.asarray(eye, dtype=float), np.asarray(target, dtype=float)
+    fwd = target - eye
+    fwd /= np.linalg.norm(fwd)
+    right = np.cross(fwd, (0.0, 0.0, 1.0))
+    right /= np.linalg.norm(right)
+    up = np.cross(right, fwd)
+    d = np.asarray(point) - eye
+    x, y, z = d @ right, d @ up, d @ fwd
+    f = (height / 2) / math.tan(CAMERA_FOV_RAD / 2)
+    return width / 2 + f * x / z, height / 2 - f * y / z
+
+
+def rgb_of(png: bytes) -> np.ndarray:
+    """H x W x 3 int array of a PNG."""
+    from PIL import Image
+
+    return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(int)
+
+
+def blue_mask(image: bytes | np.ndarray) -> np.ndarray:
+    """Strongly blue pixels (the seed robot's box) of a PNG or an RGB array."""
+    rgb = rgb_of(image) if isinstance(image, bytes) else image.astype(int)
+    r, g, b = rgb[..., 0], rgb[..., 1], rgb[..., 2]
+    return (b > 100) & (b > r + 60) & (b > g + 60)
+
+
+def trail_mask(image: bytes | np.ndarray, tol: int = 40) -> np.ndarray:
+    """Pixels of the path trail's magenta (``TRAIL_RGB``, lit evenly: it is a screen-space line)."""
+    rgb = rgb_of(image) if isinstance(image, bytes) else image.astype(int)
+    return (np.abs(rgb - np.asarray(TRAIL_RGB)).max(axis=-1) <= tol)
