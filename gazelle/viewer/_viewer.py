@@ -54,6 +54,8 @@ if TYPE_CHECKING:
     from ..physics import Simulation
 
 _log = logging.getLogger("gazelle.viewer")
+# viser's websockets server logs every browser connect/close at INFO: noise in `gazelle sim`'s output
+logging.getLogger("websockets").setLevel(logging.WARNING)
 
 DEFAULT_HOST = "127.0.0.1"
 DEFAULT_PORT = 8080
