@@ -44,8 +44,27 @@ def blue_centroid(rgb: np.ndarray) -> tuple[float, float]:
     """Centroid (x, y) of the strongly blue pixels (the seed robot's box) left of the control panel."""
     rgb = rgb[:, : int(0.7 * rgb.shape[1])]  # the control panel (blue buttons) is on the right
     ys, xs = np.nonzero(blue_mask(rgb))
-    assert len(xs) > 3000, f"no blue robot in a frame ({len(xs)} blue pixels; the robot alone has ~10 000)"
+    # the robot alone is ~10 000 px of a 1280 x 800 view (GIF frames are scaled down)
+    least = 3000 * rgb.shape[0] * rgb.shape[1] / (0.7 * 1280 * 800)
+    assert len(xs) > least, f"no blue robot in a frame ({len(xs)} blue pixels)"
     return float(xs.mean()), float(ys.mean())
+
+
+def record(out: Path, *, drive: str, seconds: float, fps: float) -> None:
+    """Run `gazelle record-video` on the seed robot driving ``drive`` (V,W) and check it succeeded."""
+    res = subprocess.run(
+        [*GAZELLE, "record-video", "--world", str(SEED_XACRO), "--drive", drive, "--seconds", str(seconds)]
+        + ["--fps", str(fps), "--out", str(out)],
+        check=False,
+        cwd=REPO,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert res.returncode == 0, res.stdout + res.stderr
+    assert "driving simple_robot" in res.stdout
+    ARTIFACTS.mkdir(parents=True, exist_ok=True)
+    shutil.copy(out, ARTIFACTS / f"record_video_seed{out.suffix}")
 
 
 @pytest.mark.parametrize("name", ["x.avi", "x", "x.mp4.txt"])
@@ -75,19 +94,7 @@ def test_video_format_follows_the_extension() -> None:
 def test_record_video_writes_an_h264_mp4_of_the_robot_driving_in_real_time(tmp_path: Path) -> None:
     seconds = 4.0
     out = tmp_path / "drive.mp4"
-    res = subprocess.run(
-        [*GAZELLE, "record-video", "--world", str(SEED_XACRO), "--drive", "0.1,0", "--seconds", str(seconds)]
-        + ["--fps", "4", "--out", str(out)],
-        check=False,
-        cwd=REPO,
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
-    assert res.returncode == 0, res.stdout + res.stderr
-    assert "driving simple_robot" in res.stdout
-    ARTIFACTS.mkdir(parents=True, exist_ok=True)
-    shutil.copy(out, ARTIFACTS / "record_video_seed.mp4")
+    record(out, drive="0.1,0", seconds=seconds, fps=4)
     _, duration, frames = decode_mp4(out)
     # at 4 fps a frame every 0.25 s; a busy machine (software WebGL) may take ~1 s a screenshot
     assert len(frames) >= 3, f"only {len(frames)} frames in {seconds} s"
@@ -97,6 +104,19 @@ def test_record_video_writes_an_h264_mp4_of_the_robot_driving_in_real_time(tmp_p
     # driving +x moves the robot right and towards the camera at (1.6, -1.6): its blue shifts right and down
     # (slowly: at 0.3 m/s it would be under the control panel after ~4 s)
     assert x1 > x0 + 20, f"the robot's blue centroid went from ({x0:.0f}, {y0:.0f}) to ({x1:.0f}, {y1:.0f})"
+
+
+@needs_browser
+def test_record_video_writes_an_animated_gif_of_the_robot_driving(tmp_path: Path) -> None:
+    from PIL import Image, ImageSequence
+
+    out = tmp_path / "drive.gif"
+    record(out, drive="0.1,0", seconds=3.0, fps=2)
+    frames = [np.asarray(f.convert("RGB")).astype(int) for f in ImageSequence.Iterator(Image.open(out))]
+    assert len(frames) >= 2
+    (x0, _), (x1, _) = blue_centroid(frames[0]), blue_centroid(frames[-1])
+    # driving +x moves the robot right and towards the camera: its blue shifts right (GIFs are 640 wide)
+    assert x1 > x0 + 5, f"the robot's blue centroid went from x {x0:.0f} to {x1:.0f}"
 
 
 @needs_browser
