@@ -214,6 +214,7 @@ class RosClient:
 
     def close(self) -> None:
         self.executor.shutdown(timeout_sec=2.0)
+        self._thread.join(5.0)  # a thread left inside rclpy at interpreter exit aborts the process
         self.node.destroy_node()
         if self.context.ok():
             rclpy.shutdown(context=self.context)
