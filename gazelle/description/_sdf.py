@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from lxml import etree
@@ -777,7 +777,7 @@ class _Loader:
             return n if n == "world" else prefix + n
 
         for link in sub.links:
-            parent.links.append(_replace_link(link, prefix + link.name, X_PS * (link.pose or IDENTITY)))
+            parent.links.append(replace(link, name=prefix + link.name, pose=X_PS * (link.pose or IDENTITY)))
         for joint in sub.joints:
             parent.joints.append(
                 Joint(
@@ -806,7 +806,7 @@ class _Loader:
         for joint in built.joints:
             X_MJ = built.world_joints.get(joint.name)
             if X_MJ is not None and joint.parent == "world":
-                joint = _replace_origin(joint, X_WM * X_MJ)
+                joint = replace(joint, origin=X_WM * X_MJ)
             joints.append(joint)
         if not built.links:
             if self.sink.has_hard_errors:
@@ -1442,36 +1442,3 @@ def _link_pose(built: _Built, link_name: str) -> Pose:
         if link.name == link_name:
             return link.pose or IDENTITY
     return IDENTITY
-
-
-def _replace_link(link: Link, name: str, pose: Pose) -> Link:
-    return Link(
-        name=name,
-        inertial=link.inertial,
-        visuals=link.visuals,
-        collisions=link.collisions,
-        sensors=link.sensors,
-        gravity=link.gravity,
-        kinematic=link.kinematic,
-        self_collide=link.self_collide,
-        pose=pose,
-        location=link.location,
-    )
-
-
-def _replace_origin(joint: Joint, origin: Pose) -> Joint:
-    return Joint(
-        name=joint.name,
-        type=joint.type,
-        parent=joint.parent,
-        child=joint.child,
-        origin=origin,
-        child_offset=joint.child_offset,
-        axis=joint.axis,
-        axis2=joint.axis2,
-        screw_thread_pitch=joint.screw_thread_pitch,
-        mimic=joint.mimic,
-        safety_controller=joint.safety_controller,
-        calibration=joint.calibration,
-        location=joint.location,
-    )

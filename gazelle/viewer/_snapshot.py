@@ -261,15 +261,10 @@ def run_record(
     drive: tuple[float, float] | None,
     panel: bool = True,
 ) -> int:
-    """CLI body of ``gazelle record-video``: returns the exit code."""
+    """CLI body of ``gazelle record-video`` (the CLI has checked ``out``'s format): returns the exit code."""
     from ..physics import Simulation
     from ._viewer import Viewer
 
-    try:
-        video_format(out)
-    except ValueError as err:
-        print(f"gazelle record-video: {err}", file=sys.stderr)
-        return 2
     sim = viewer = None
     try:
         url = attach
