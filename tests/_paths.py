@@ -1,4 +1,5 @@
-"""Where the shared real-robot fixtures are: $GAZELLE_REAL_FIXTURES, else ../shared beside the repo."""
+"""Where test inputs are: the seed robot, a plain box model, and the shared real-robot fixtures
+($GAZELLE_REAL_FIXTURES, else ../shared beside the repo)."""
 
 from __future__ import annotations
 
@@ -6,6 +7,13 @@ import os
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
+SEED_XACRO = REPO / "examples" / "simple_robot" / "simple_robot" / "robot.urdf.xacro"
+BOX = (
+    '<?xml version="1.0"?><sdf version="1.9"><model name="box"><link name="link">'
+    "<inertial><mass>1.0</mass><inertia><ixx>0.0067</ixx><iyy>0.0067</iyy><izz>0.0067</izz></inertia></inertial>"
+    '<collision name="c"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision></link></model></sdf>'
+)
+"""A free 1 kg, 0.2 m box (SDF)."""
 
 
 def _real_fixtures() -> Path:

@@ -2,23 +2,13 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 
 from gazelle.description import Pose, load, load_string
 from gazelle.physics import Simulation
 from gazelle.systems.diff_drive import DiffDrive
 from gazelle.worlds import default_world
-
-REPO = Path(__file__).resolve().parents[1]
-SEED_XACRO = REPO / "examples" / "simple_robot" / "simple_robot" / "robot.urdf.xacro"
-
-BOX = (
-    '<?xml version="1.0"?><sdf version="1.9"><model name="box"><link name="link">'
-    "<inertial><mass>1.0</mass><inertia><ixx>0.0067</ixx><iyy>0.0067</iyy><izz>0.0067</izz></inertia></inertial>"
-    '<collision name="c"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision></link></model></sdf>'
-)
+from _paths import BOX, SEED_XACRO
 
 
 def run() -> list[np.ndarray]:

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import math
 import time
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -19,9 +18,8 @@ from gazelle.physics import Simulation
 from gazelle.physics._builder import JOINT_ARMATURE
 from gazelle.systems.diff_drive import DiffDrive
 from gazelle.worlds import default_world
+from _paths import SEED_XACRO
 
-REPO = Path(__file__).resolve().parents[1]
-SEED_XACRO = REPO / "examples" / "simple_robot" / "simple_robot" / "robot.urdf.xacro"
 G = 9.81
 
 

@@ -7,7 +7,6 @@ import math
 import re
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
@@ -20,18 +19,9 @@ from gazelle.systems.gz_diff_drive import GzDiffDrive, SpeedLimiter, SpeedLimits
 from gazelle.systems.joint_controllers import JointCommands, JointController, JointPositionController
 from gazelle.systems.pose_publisher import P3D
 from gazelle.worlds import default_world
+from _paths import BOX, REAL, REPO, SEED_XACRO
 
-REPO = Path(__file__).resolve().parents[1]
-SEED_XACRO = REPO / "examples" / "simple_robot" / "simple_robot" / "robot.urdf.xacro"
-TB3 = Path("/work/shared/fixtures/real/turtlebot3")
-if not TB3.is_dir():  # pragma: no cover - the shared fixtures live beside the repo
-    TB3 = REPO.parent / "shared" / "fixtures" / "real" / "turtlebot3"
-
-BOX = (
-    '<?xml version="1.0"?><sdf version="1.9"><model name="box"><link name="link">'
-    "<inertial><mass>1.0</mass><inertia><ixx>0.0067</ixx><iyy>0.0067</iyy><izz>0.0067</izz></inertia></inertial>"
-    '<collision name="c"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision></link></model></sdf>'
-)
+TB3 = REAL / "turtlebot3"
 
 
 def seed_urdf(plugin_xml: str) -> str:

@@ -19,10 +19,9 @@ from pathlib import Path
 from typing import Any, Callable, Iterator
 
 import pytest
+from _paths import REPO, SEED_XACRO  # noqa: F401 - SEED_XACRO: the ros and viewer tests import it from here
 from _ros_domain import reserved_domain_id
 
-REPO = Path(__file__).resolve().parents[2]
-SEED_XACRO = REPO / "examples" / "simple_robot" / "simple_robot" / "robot.urdf.xacro"
 SQUARE_NODE = REPO / "examples" / "simple_robot" / "simple_robot" / "square_movement.py"
 GAZELLE = [sys.executable, "-m", "gazelle.cli"]
 
