@@ -208,7 +208,9 @@ def test_trail_contacts_and_spawn_from_the_resource_paths(monkeypatch) -> None:
         while sim.call(lambda: sim.world.time) < t_end:  # rtf 0: the sim runs on its own
             viewer.sample_trail()
         xs = [p[0] for p in viewer.trail]
-        assert len(xs) >= 5 and xs[-1] > xs[0] + 0.05 and xs == sorted(xs)
+        assert len(xs) >= 5 and xs[-1] > xs[0] + 0.05
+        # forward along the path; settling after the spawn drop may move x back by a fraction of a mm
+        assert all(b > a - 1e-3 for a, b in zip(xs, xs[1:])), xs[:20]
         viewer._redraw_trail(force=True)
         assert viewer._trail_handle is not None
         viewer._contact_box.value = True
