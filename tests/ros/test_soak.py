@@ -17,7 +17,7 @@ from geometry_msgs.msg import PoseStamped, Twist
 from simulation_interfaces.msg import Result
 from simulation_interfaces.srv import DeleteEntity, GetEntityState, SpawnEntity
 
-from .conftest import SEED_XACRO, xacro_to_urdf
+from .conftest import SEED_XACRO, wait_for, xacro_to_urdf
 
 pytestmark = pytest.mark.ros
 
@@ -95,7 +95,9 @@ def test_soak_spawn_delete_while_driving(sim_factory, ros_client) -> None:
 
     observer = threading.Thread(target=observe, daemon=True)
     observer.start()
-    time.sleep(3.0)  # the robot reaches its steady circle
+    # the robot reaches its steady circle: 3 s of sim time observed
+    wait_for(lambda: problems or (samples and samples[-1][0] - samples[0][0] >= 3.0), 60, "3 s of driving")
+    assert not problems, problems
 
     def cycle(i: int) -> None:
         name = f"soak_box_{i}"
