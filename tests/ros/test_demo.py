@@ -35,8 +35,9 @@ def test_demo_drives_one_square_reports_it_and_exits_0(ros_env: dict[str, str], 
     m = SIDES.search(res.stdout)
     assert m, log
     sides, odom_err_mm = [float(x) for x in m.groups()[:3]], float(m.group(4))
-    assert all(abs(s - 1.0) < 0.03 for s in sides), f"sides {sides} (1 m each: 5 s at 0.2 m/s)"
-    assert odom_err_mm < 5.0, f"/odom is {odom_err_mm} mm from ground truth at the corners"
+    # the log shows the seed's own timing ("forward for 5.0xx s"): a late tick on a starved CPU makes a long side
+    assert all(abs(s - 1.0) < 0.03 for s in sides), f"sides {sides} (1 m each: 5 s at 0.2 m/s)\n{log}"
+    assert odom_err_mm < 5.0, f"/odom is {odom_err_mm} mm from ground truth at the corners\n{log}"
     svg = (tmp_path / "square.svg").read_text()
     assert svg.lstrip().startswith("<svg") and "polyline" in svg
     if not HAVE_BROWSER:
