@@ -292,7 +292,7 @@ def test_snapshot_command_writes_a_png_with_the_robot(tmp_path: Path, panel: boo
         cwd=REPO,
         capture_output=True,
         text=True,
-        timeout=60,
+        timeout=120,  # ~5 s normally; its page wait alone may take 30 s on a starved CPU
     )
     assert res.returncode == 0, res.stdout + res.stderr
     shutil.copy(out, ARTIFACTS / ("snapshot_seed.png" if panel else "snapshot_seed_no_panel.png"))
