@@ -123,9 +123,12 @@ class Endpoint:
     """Subscriptions: called (from a bridge thread) with each payload."""
     sink: Callable[[Any], None] | None = field(default=None, repr=False)
     """Publishers: set by the bridge; receives each published payload."""
+    last: Any = field(default=None, repr=False)
+    """Publishers: the latest payload (observers that sample, such as the viewer's /odom trail, read it)."""
 
     def publish(self, payload: Any) -> None:
-        """Send a payload (a no-op when nothing outside listens)."""
+        """Send a payload (with nothing outside listening, only ``last`` is kept)."""
+        self.last = payload
         sink = self.sink
         if sink is not None:
             sink(payload)

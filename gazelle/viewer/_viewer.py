@@ -24,11 +24,13 @@ viser has no keyboard-event API; with "Keyboard drive" ticked, a small script in
 GUI HTML element turns WASD / arrow keys into clicks on the Drive buttons (held key:
 drive; release: Stop) and keeps them from moving viser's camera.
 
-Overlays: the path trail is the ground-truth root position of the selected entity
-(or, with nothing selected, of the first diff-drive robot), sampled at 5 Hz even
-with no browser connected, at most 3000 points; it is what /odom reports up to
-the drive's odometry drift (the demo prints that drift, ~mm). Contact points are
-MuJoCo's ``data.contact``. Sensors do not exist yet, so there are no sensor overlays.
+Overlays: the path trail follows the selected entity (or, with nothing selected, the
+first diff-drive robot), sampled at 5 Hz even with no browser connected, at most 3000
+points. Its source is the entity's odometry topic (what /odom reports, read from the bus
+publisher's latest message, with the odom frame placed where odometry and ground truth
+agreed when the trail started) or, chosen in the panel or for entities without
+odometry, the ground-truth root position. Contact points are MuJoCo's
+``data.contact``. Sensors do not exist yet, so there are no sensor overlays.
 """
 
 from __future__ import annotations
@@ -76,6 +78,9 @@ TRAIL_RATE_HZ = 5.0
 TRAIL_MAX_POINTS = 3000
 TRAIL_MIN_STEP = 0.005
 """Metres the robot must move before a new trail point is kept."""
+TRAIL_ODOM = "odom"
+TRAIL_TRUTH = "ground truth"
+TRAIL_SOURCES = (TRAIL_ODOM, TRAIL_TRUTH)
 CONTACT_RGB = (230, 20, 20)
 CONTACT_MAX = 500
 NO_MODELS = "(no models on the resource paths)"
@@ -140,6 +145,36 @@ class Snapshot:
     """entity -> link -> (position, wxyz) in the world."""
 
 
+@dataclass(frozen=True)
+class _TrailSample:
+    time: float
+    generation: int
+    truth: Pose
+    """The root link's pose in the world."""
+    odom_topic: str | None
+    """The entity's odometry topic (a diff drive's ``odom``), if it has one."""
+    odom: Any
+    """The latest message on it (``systems._bus.Odometry``), if any yet."""
+
+
+def _odom_frame_in_world(truth: Pose, odom: Any, now: float) -> tuple[float, float, float]:
+    """The planar (x, y, yaw) of the odometry frame in the world, from one pair of poses.
+
+    The message is up to an update period old: it is first carried forward to ``now`` with its
+    own twist (base frame), so a robot that is moving when the trail starts gets no offset.
+    """
+    dt = max(0.0, now - odom.stamp_sec)
+    ox, oy, _ = odom.pose.position
+    oyaw = odom.pose.rpy[2]
+    vx, vy, _ = odom.twist.linear
+    c, s = math.cos(oyaw), math.sin(oyaw)
+    ox, oy, oyaw = ox + (c * vx - s * vy) * dt, oy + (s * vx + c * vy) * dt, oyaw + odom.twist.angular[2] * dt
+    tx, ty, _ = truth.position
+    yaw = truth.rpy[2] - oyaw
+    c, s = math.cos(yaw), math.sin(yaw)
+    return tx - (c * ox - s * oy), ty - (s * ox + c * oy), yaw
+
+
 def _safe(name: str) -> str:
     return name.replace("/", "_").replace(" ", "_") or "_"
 
@@ -167,7 +202,10 @@ class Viewer:
         self._last: Snapshot | None = None
         self._wall0 = time.monotonic()
         self._trail: list[tuple[float, float, float]] = []
-        self._trail_entity: tuple[str, int] | None = None
+        self._trail_entity: tuple[str, int, str] | None = None
+        """(entity, generation added, source) the trail belongs to; a change starts a new trail."""
+        self._trail_anchor: tuple[float, float, float] | None = None
+        """/odom trails: the odometry frame in the world, planar (x, y, yaw)."""
         self._trail_handle: Any = None
         self._trail_drawn = -1
         self._trail_last_t = -1.0
@@ -316,7 +354,13 @@ class Viewer:
             self._trail_box = g.add_checkbox(
                 "Path trail",
                 initial_value=True,
-                hint="Ground-truth path of the selected entity (or of the first diff-drive robot)",
+                hint="Path of the selected entity (or of the first diff-drive robot)",
+            )
+            self._trail_source = g.add_dropdown(
+                "Trail source",
+                options=TRAIL_SOURCES,
+                initial_value=TRAIL_ODOM,
+                hint="odom: what the robot's odometry topic reports (ground truth for entities without one)",
             )
             self._trail_text = g.add_text("Trail of", initial_value="", disabled=True)
             self._contact_box = g.add_checkbox("Contact points", initial_value=False, hint="MuJoCo contacts (red)")
@@ -443,32 +487,64 @@ class Viewer:
         )
         return next((n for n in driven if n in names), None)
 
-    def _root_sample(self, name: str) -> tuple[float, int, tuple[float, float, float]] | None:
-        """Runs on the sim thread: (time, generation added, root link position) of ``name``."""
+    def _trail_sample(self, name: str) -> _TrailSample | None:
+        """Runs on the sim thread: ``name``'s root link pose and its latest odometry message."""
         w = self.sim.world
         e = w.entities.get(name)
         if e is None:
             return None
         link = next((ln for ln, b in e.built.bodies.items() if b == e.built.root_body), None)
-        p = w.body_pose(w.body_id(name, link)).position
-        return w.time, e.generation_added, (float(p[0]), float(p[1]), float(p[2]))
+        odom = next(
+            (ep for ep in self.sim.bus.endpoints() if ep.owner == name and ep.is_publisher and ep.msg_type == MsgType.ODOMETRY),
+            None,
+        )
+        return _TrailSample(
+            w.time,
+            e.generation_added,
+            w.body_pose(w.body_id(name, link)),
+            odom.topic if odom is not None else None,
+            odom.last if odom is not None else None,
+        )
 
     def sample_trail(self) -> None:
-        """Add the trail target's current position to the trail (cleared on a new target or a reset)."""
+        """Add the trail target's current position to the trail (a new trail on a new target, source or reset).
+
+        The "odom" source draws what the target's odometry topic reports: its odom frame is placed in
+        the world where the robot's ground truth and its odometry agreed when the trail started (for
+        gazebo_ros' default world odometry that is the world frame itself; for encoder odometry the
+        trail then shows the drift). Entities without an odometry topic get their ground truth.
+        """
         if not self._trail_box.value:
             return
         name = self.trail_target()
-        sample = self.sim.call(lambda: self._root_sample(name), timeout=5.0) if name else None
+        sample = self.sim.call(lambda: self._trail_sample(name), timeout=5.0) if name else None
         if sample is None:
             if self._trail_entity is not None:
                 self._trail, self._trail_entity = [], None
                 self._trail_text.value = ""
             return
-        t, gen, pos = sample
-        if self._trail_entity != (name, gen) or t < self._trail_last_t:
-            self._trail, self._trail_entity = [], (name, gen)
-            self._trail_text.value = f"{name} (ground truth)"
-        self._trail_last_t = t
+        source = TRAIL_ODOM if self._trail_source.value == TRAIL_ODOM and sample.odom_topic else TRAIL_TRUTH
+        assert name is not None
+        if self._trail_entity != (name, sample.generation, source) or sample.time < self._trail_last_t:
+            self._trail, self._trail_entity, self._trail_anchor = [], (name, sample.generation, source), None
+            label = f"{sample.odom_topic}" if source == TRAIL_ODOM else "ground truth"
+            if self._trail_source.value == TRAIL_ODOM and source != TRAIL_ODOM:
+                label += ": no odometry topic"
+            self._trail_text.value = f"{name} ({label})"
+        self._trail_last_t = sample.time
+        if source == TRAIL_TRUTH:
+            p = sample.truth.position
+            pos = (float(p[0]), float(p[1]), float(p[2]))
+        else:
+            odom = sample.odom
+            if odom is None:
+                return  # nothing published yet
+            if self._trail_anchor is None:
+                self._trail_anchor = _odom_frame_in_world(sample.truth, odom, sample.time)
+            x, y, yaw = self._trail_anchor
+            ox, oy, oz = odom.pose.position
+            c, s_ = math.cos(yaw), math.sin(yaw)
+            pos = (x + c * ox - s_ * oy, y + s_ * ox + c * oy, float(oz))
         if not self._trail or math.dist(self._trail[-1], pos) >= TRAIL_MIN_STEP:
             self._trail.append(pos)
             if len(self._trail) > TRAIL_MAX_POINTS:

@@ -211,6 +211,13 @@ def test_trail_contacts_and_spawn_from_the_resource_paths(monkeypatch) -> None:
         assert len(xs) >= 5 and xs[-1] > xs[0] + 0.05
         # forward along the path; settling after the spawn drop may move x back by a fraction of a mm
         assert all(b > a - 1e-3 for a, b in zip(xs, xs[1:])), xs[:20]
+        # the seed's odometry is gazebo_ros' world odometry: its odom frame is the world, so the /odom trail is truth
+        assert viewer._trail_text.value == "r1 (/odom)"
+        sim.call(lambda: setattr(sim, "paused", True))  # the last point and the truth at the same instant
+        viewer.sample_trail()
+        truth = sim.call(lambda: sim.world.entity_state("r1").pose.position)
+        assert viewer.trail[-1][:2] == pytest.approx(truth[:2], abs=0.02)  # the message is <= 10 ms old
+        sim.call(lambda: setattr(sim, "paused", False))
         viewer._redraw_trail(force=True)
         assert viewer._trail_handle is not None
         viewer._contact_box.value = True
@@ -221,6 +228,82 @@ def test_trail_contacts_and_spawn_from_the_resource_paths(monkeypatch) -> None:
         assert name2 == f"{name}_2" and {name, name2} <= set(sim.world.entities)
         x = sim.call(lambda: sim.world.entity_state(name).pose.position[0])
         assert x == pytest.approx(2.0, abs=0.01)
+    finally:
+        viewer.stop()
+        sim.stop()
+
+
+def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_path) -> None:
+    """A robot whose encoder odometry over-reports distance by 10 % (its plugin's wheels are 10 % too big)."""
+    import re
+
+    import xacro
+
+    from gazelle.physics import Simulation
+    from gazelle.viewer import Viewer
+    from gazelle.viewer._viewer import TRAIL_TRUTH
+    from gazelle.worlds import default_world
+
+    from _paths import BOX
+
+    from gazelle.description import load_string
+
+    urdf = xacro.process_file(str(SEED_XACRO)).toxml()
+    urdf, n = re.subn(
+        r"<wheel_diameter>([\d.]+)</wheel_diameter>",
+        lambda m: f"<wheel_diameter>{float(m.group(1)) * 1.1}</wheel_diameter><odometry_source>0</odometry_source>",
+        urdf,
+    )
+    assert n == 1
+    (tmp_path / "enc.urdf").write_text(urdf)
+    sim = Simulation(default_world(), rtf=0.0)
+    sim.start()
+    viewer = Viewer(sim, port=0)
+    try:
+
+        def drive(seconds: float) -> None:  # samples the trail at least once (rtf 0: the sim runs on its own)
+            t_end = sim.call(lambda: sim.world.time) + seconds
+            viewer.sample_trail()
+            while sim.call(lambda: sim.world.time) < t_end:
+                viewer.sample_trail()
+
+        def truth_xy() -> tuple[float, float]:
+            return tuple(sim.call(lambda: sim.world.entity_state("r1").pose.position)[:2])  # type: ignore[return-value]
+
+        def pause_and_sample() -> None:  # the trail's last point and the truth at the same instant
+            sim.call(lambda: setattr(sim, "paused", True))
+            viewer.sample_trail()
+
+        sim.spawn(load(tmp_path / "enc.urdf").value, name="r1", pose=Pose((1.0, 2.0, 0.05)))
+        drive(0.5)  # at rest on the ground; the trail (and its odom frame) starts here
+        x0, y0 = truth_xy()
+        viewer.drive(0.5, 0.0, "r1")
+        drive(2.0)
+        pause_and_sample()
+        x1, y1 = truth_xy()
+        assert viewer._trail_text.value == "r1 (/odom)"
+        end = viewer.trail[-1]
+        moved, reported = x1 - x0, end[0] - x0
+        assert moved > 0.5, f"the robot moved {moved:.3f} m"
+        assert reported == pytest.approx(1.1 * moved, rel=0.03), f"odom trail {reported:.3f} m for {moved:.3f} m moved"
+        assert abs(end[1] - y0) < 0.02  # anchored where the robot started: (1, 2), not the odom origin (0, 0)
+
+        viewer._trail_source.value = TRAIL_TRUTH
+        sim.call(lambda: setattr(sim, "paused", False))
+        drive(1.0)
+        pause_and_sample()
+        assert viewer._trail_text.value == "r1 (ground truth)"
+        assert viewer.trail[0][0] > x1 - 0.05  # a new trail, from where the robot was
+        assert viewer.trail[-1][:2] == pytest.approx(truth_xy(), abs=0.006)  # within a trail step (5 mm)
+        sim.call(lambda: setattr(sim, "paused", False))
+
+        sim.spawn(load_string(BOX).value, name="box", pose=Pose((-1.0, 0.0, 0.2)))
+        viewer._trail_source.value = "odom"
+        viewer.update()  # the scene and the Entities dropdown catch up with the spawn
+        assert viewer.select("box")
+        drive(0.2)
+        assert viewer._trail_text.value == "box (ground truth: no odometry topic)"
+        assert viewer.trail[-1][:2] == pytest.approx((-1.0, 0.0), abs=0.01)
     finally:
         viewer.stop()
         sim.stop()
