@@ -527,7 +527,7 @@ class Viewer:
         assert name is not None
         if self._trail_entity != (name, sample.generation, source) or sample.time < self._trail_last_t:
             self._trail, self._trail_entity, self._trail_anchor = [], (name, sample.generation, source), None
-            label = f"{sample.odom_topic}" if source == TRAIL_ODOM else "ground truth"
+            label = sample.odom_topic if source == TRAIL_ODOM else "ground truth"
             if self._trail_source.value == TRAIL_ODOM and source != TRAIL_ODOM:
                 label += ": no odometry topic"
             self._trail_text.value = f"{name} ({label})"
@@ -537,8 +537,8 @@ class Viewer:
             pos = (float(p[0]), float(p[1]), float(p[2]))
         else:
             odom = sample.odom
-            if odom is None:
-                return  # nothing published yet
+            if odom is None or odom.stamp_sec > sample.time:
+                return  # nothing published yet, or the last message is from before a reset
             if self._trail_anchor is None:
                 self._trail_anchor = _odom_frame_in_world(sample.truth, odom, sample.time)
             x, y, yaw = self._trail_anchor

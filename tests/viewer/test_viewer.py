@@ -304,6 +304,19 @@ def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_
         drive(0.2)
         assert viewer._trail_text.value == "box (ground truth: no odometry topic)"
         assert viewer.trail[-1][:2] == pytest.approx((-1.0, 0.0), abs=0.01)
+
+        # a reset puts the robot back and zeroes its encoder odometry: a new trail from (1, 2)
+        assert viewer.select("r1")
+        drive(0.2)
+        assert viewer.trail[-1][0] > x1  # the over-reported path so far
+        sim.call(lambda: setattr(sim, "paused", True))
+        sim.reset(time_=True, state=True, spawned=False)
+        viewer.sample_trail()  # no step since the reset: the last odom message is from before it, not a point
+        assert viewer.trail == []
+        sim.call(lambda: setattr(sim, "paused", False))
+        drive(0.3)
+        assert viewer._trail_text.value == "r1 (/odom)"
+        assert viewer.trail and all(p[:2] == pytest.approx((1.0, 2.0), abs=0.02) for p in viewer.trail), viewer.trail[:3]
     finally:
         viewer.stop()
         sim.stop()
