@@ -147,8 +147,9 @@ class SystemManager:
 
 
 # --------------------------------------------------------------------------- config helpers
-def child_text(cfg: ConfigElement, tag: str) -> str | None:
-    el = cfg.find(tag)
+def child_text(cfg: ConfigElement | None, tag: str) -> str | None:
+    """The stripped text of ``<tag>``; None when it (or the whole configuration) is absent."""
+    el = cfg.find(tag) if cfg is not None else None
     return el.text.strip() if el is not None else None
 
 
@@ -157,9 +158,9 @@ def all_texts(cfg: ConfigElement | None, tag: str) -> tuple[str, ...]:
     return tuple(el.text.strip() for el in cfg.findall(tag)) if cfg is not None else ()
 
 
-def parse_float(cfg: ConfigElement, tag: str, default: float, log: logging.Logger) -> float:
+def parse_float(cfg: ConfigElement | None, tag: str, default: float, log: logging.Logger) -> float:
     raw = child_text(cfg, tag)
-    if raw is None or raw == "":
+    if cfg is None or raw is None or raw == "":
         return default
     try:
         return float(raw)
@@ -170,9 +171,9 @@ def parse_float(cfg: ConfigElement, tag: str, default: float, log: logging.Logge
         return default
 
 
-def parse_bool(cfg: ConfigElement, tag: str, default: bool, log: logging.Logger) -> bool:
+def parse_bool(cfg: ConfigElement | None, tag: str, default: bool, log: logging.Logger) -> bool:
     raw = child_text(cfg, tag)
-    if raw is None or raw == "":
+    if cfg is None or raw is None or raw == "":
         return default
     low = raw.lower()
     if low in ("1", "true"):
@@ -185,9 +186,9 @@ def parse_bool(cfg: ConfigElement, tag: str, default: bool, log: logging.Logger)
     return default
 
 
-def ros_block(cfg: ConfigElement) -> tuple[str, dict[str, str]]:
+def ros_block(cfg: ConfigElement | None) -> tuple[str, dict[str, str]]:
     """The ``<ros><namespace>`` and ``<remapping>from:=to`` entries of a gazebo_ros plugin."""
-    ros = cfg.find("ros")
+    ros = cfg.find("ros") if cfg is not None else None
     if ros is None:
         return "", {}
     ns = child_text(ros, "namespace") or ""

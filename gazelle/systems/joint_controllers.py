@@ -156,6 +156,22 @@ class _ServoGroup(System):
 
     def __init__(self) -> None:
         self.servos: list[_Servo] = []
+        self.topic = ""
+
+    @staticmethod
+    def _joints(ctx: SystemContext, names: tuple[str, ...], system: str) -> list[str]:
+        """The ``<joint_name>``s that exist and can be driven (gz-sim's errors for the others)."""
+        if not names:
+            ctx.logger.error(f"{system} found an empty jointName parameter. Failed to initialize.")
+            return []
+        return [jn for jn in names if _check_joint(ctx, jn, ctx.logger)]
+
+    def _subscribe(self, ctx: SystemContext, system: str, topic: str, sub_topic: str, default: str) -> None:
+        """Follow Float64 commands on ``topic``, else ``/model/<model>/<sub_topic>``, else ``/model/<model>/<default>``."""
+        model = ctx.entity.name
+        self.topic = resolve_topic(topic or f"/model/{model}/{sub_topic or default}", ctx.entity.namespace)
+        ctx.bus.subscribe(model, self.topic, MsgType.FLOAT64, self._on_msg, depth=10)
+        ctx.logger.info(f"{system} subscribing to Double messages on [{self.topic}]")
 
     def _on_msg(self, msg: Float64) -> None:
         for s in self.servos:
@@ -189,8 +205,6 @@ class PidGains:
 
 
 def _pid(cfg: ConfigElement | None, log: logging.Logger, defaults: PidGains) -> PidGains:
-    if cfg is None:
-        return defaults
     vals = {k: parse_float(cfg, k, getattr(defaults, k), log) for k in PidGains.__dataclass_fields__}
     return PidGains(**vals)
 
@@ -235,29 +249,24 @@ class JointPositionController(_ServoGroup):
     def __init__(self) -> None:
         super().__init__()
         self.config = JointPositionControllerConfig()
-        self.topic = ""
 
     def configure(self, ctx: SystemContext) -> None:
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         names = all_texts(cfg, "joint_name")
         g = _pid(cfg, log, PidGains())
-        get = (lambda tag: child_text(cfg, tag) or "") if cfg is not None else (lambda tag: "")
         self.config = c = JointPositionControllerConfig(
             joint_names=names,
-            joint_index=int(parse_float(cfg, "joint_index", 0, log)) if cfg is not None else 0,
-            topic=get("topic"),
-            sub_topic=get("sub_topic"),
-            use_velocity_commands=parse_bool(cfg, "use_velocity_commands", False, log) if cfg is not None else False,
-            initial_position=parse_float(cfg, "initial_position", 0.0, log) if cfg is not None else 0.0,
+            joint_index=int(parse_float(cfg, "joint_index", 0, log)),
+            topic=child_text(cfg, "topic") or "",
+            sub_topic=child_text(cfg, "sub_topic") or "",
+            use_velocity_commands=parse_bool(cfg, "use_velocity_commands", False, log),
+            initial_position=parse_float(cfg, "initial_position", 0.0, log),
             **{k: getattr(g, k) for k in PidGains.__dataclass_fields__},
         )
-        if not names:
-            log.error("JointPositionController found an empty jointName parameter. Failed to initialize.")
-            return
-        if c.joint_index != 0:
+        if names and c.joint_index != 0:
             log.warning(f"<joint_index> {c.joint_index}: only axis 0 is supported; using 0")
-        joints = [jn for jn in names if _check_joint(ctx, jn, log)]
+        joints = self._joints(ctx, names, "JointPositionController")
         if not joints:
             return
         for jn in joints:
@@ -267,16 +276,7 @@ class JointPositionController(_ServoGroup):
                 self.servos.append(_StepVelocityToPosition(ctx, jn, c.initial_position, vmax if vmax > 0 else math.inf))
             else:
                 self.servos.append(_PositionServo(ctx, jn, g, c.initial_position))
-        model = ctx.entity.name
-        if c.topic:
-            topic = c.topic
-        elif c.sub_topic:
-            topic = f"/model/{model}/{c.sub_topic}"
-        else:
-            topic = f"/model/{model}/joint/{joints[0]}/{c.joint_index}/cmd_pos"
-        self.topic = resolve_topic(topic, ctx.entity.namespace)
-        ctx.bus.subscribe(model, self.topic, MsgType.FLOAT64, self._on_msg, depth=10)
-        log.info(f"JointPositionController subscribing to Double messages on [{self.topic}]")
+        self._subscribe(ctx, "JointPositionController", c.topic, c.sub_topic, f"joint/{joints[0]}/{c.joint_index}/cmd_pos")
 
 
 
@@ -314,26 +314,21 @@ class JointController(_ServoGroup):
     def __init__(self) -> None:
         super().__init__()
         self.config = JointControllerConfig()
-        self.topic = ""
 
     def configure(self, ctx: SystemContext) -> None:
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         names = all_texts(cfg, "joint_name")
         g = _pid(cfg, log, PidGains(p_gain=1.0, i_gain=0.0, d_gain=0.0))
-        get = (lambda tag: child_text(cfg, tag) or "") if cfg is not None else (lambda tag: "")
         self.config = c = JointControllerConfig(
             joint_names=names,
-            topic=get("topic"),
-            sub_topic=get("sub_topic"),
-            initial_velocity=parse_float(cfg, "initial_velocity", 0.0, log) if cfg is not None else 0.0,
-            use_force_commands=parse_bool(cfg, "use_force_commands", False, log) if cfg is not None else False,
+            topic=child_text(cfg, "topic") or "",
+            sub_topic=child_text(cfg, "sub_topic") or "",
+            initial_velocity=parse_float(cfg, "initial_velocity", 0.0, log),
+            use_force_commands=parse_bool(cfg, "use_force_commands", False, log),
             **{k: getattr(g, k) for k in PidGains.__dataclass_fields__},
         )
-        if not names:
-            log.error("JointController found an empty jointName parameter. Failed to initialize.")
-            return
-        joints = [jn for jn in names if _check_joint(ctx, jn, log)]
+        joints = self._joints(ctx, names, "JointController")
         if not joints:
             return
         for jn in joints:
@@ -342,11 +337,7 @@ class JointController(_ServoGroup):
             else:
                 servo = _VelocityServo(ctx, jn, c.initial_velocity)
             self.servos.append(servo)
-        model = ctx.entity.name
-        topic = c.topic or (f"/model/{model}/{c.sub_topic}" if c.sub_topic else f"/model/{model}/joint/{joints[0]}/cmd_vel")
-        self.topic = resolve_topic(topic, ctx.entity.namespace)
-        ctx.bus.subscribe(model, self.topic, MsgType.FLOAT64, self._on_msg, depth=10)
-        log.info(f"JointController subscribing to Double messages on [{self.topic}]")
+        self._subscribe(ctx, "JointController", c.topic, c.sub_topic, f"joint/{joints[0]}/cmd_vel")
 
 
 
@@ -394,8 +385,8 @@ class JointCommands(System):
         names = all_texts(cfg, "joint_name")
         if not names:
             names = tuple(j.name for j in ctx.entity.model.joints if j.type in _MOVABLE)
-        ns, remaps = ros_block(cfg) if cfg is not None else ("", {})
-        mode = ((child_text(cfg, "mode") if cfg is not None else None) or d.mode).lower()
+        ns, remaps = ros_block(cfg)
+        mode = (child_text(cfg, "mode") or d.mode).lower()
         if mode not in ("position", "velocity"):
             log.warning(f"<mode> must be position or velocity, got {mode!r}; using position")
             mode = "position"

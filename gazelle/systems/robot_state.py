@@ -178,11 +178,11 @@ class JointStatePublisher(System):
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         model: Model = ctx.entity.model
         names = all_texts(cfg, "joint_name")
-        ns, remaps = ros_block(cfg) if cfg is not None else ("", {})
-        rate = parse_float(cfg, "update_rate", 100.0, log) if cfg is not None else 100.0
+        ns, remaps = ros_block(cfg)
+        rate = parse_float(cfg, "update_rate", 100.0, log)
         if cfg is not None and cfg.find("update_rate") is None and not self.all_by_default:
             log.info(f"Missing <update_rate>, defaults to {rate:f}")
-        topic = (child_text(cfg, "topic") if cfg is not None else None) or "joint_states"
+        topic = child_text(cfg, "topic") or "joint_states"
         self.config = JointStateConfig(names, rate, topic, ns or ctx.entity.namespace)
         movable = [j.name for j in model.joints if j.type not in (JointType.FIXED, JointType.FLOATING)]
         wanted = list(names) if names else (movable if self.all_by_default else [])
