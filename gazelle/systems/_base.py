@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import logging
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Callable, Generic, TypeVar
 
 from ..description import ConfigElement, Plugin
 from ._bus import Bus
@@ -27,6 +27,25 @@ _log = logging.getLogger("gazelle.systems")
 PRE_PHYSICS = -128
 PHYSICS = -64
 DEFAULT_PRIORITY = 0
+T = TypeVar("T")
+
+
+class PerGeneration(Generic[T]):
+    """A value derived from the compiled model (MuJoCo ids, qpos/qvel addresses): ``get(world)`` computes
+    it once per ``world.generation``, since every recompile (a spawn, a delete) may renumber them."""
+
+    __slots__ = ("_compute", "_generation", "_value")
+
+    def __init__(self, compute: Callable[[PhysicsWorld], T]) -> None:
+        self._compute = compute
+        self._generation = -1
+        self._value: T | None = None
+
+    def get(self, world: PhysicsWorld) -> T:
+        if self._generation != world.generation:
+            self._value = self._compute(world)
+            self._generation = world.generation
+        return self._value  # type: ignore[return-value]
 
 
 @dataclass(frozen=True, slots=True)

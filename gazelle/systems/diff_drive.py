@@ -19,7 +19,7 @@ import numpy as np
 
 from ..description import ConfigElement, Model, Pose
 from ..description._model import quat_from_rpy, quat_rotate
-from ._base import System, all_texts, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
+from ._base import PerGeneration, System, all_texts, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
 from ._bus import Endpoint, JointStates, MsgType, Odometry, Transform, TransformBatch, Twist, resolve_topic
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -323,7 +323,7 @@ class DiffDrive(System):
         self._enc_twist = (0.0, 0.0)
         self._ok = False
         self._due = False
-        self._addr_cache: tuple[int, dict[str, tuple[int, int, int]]] = (-1, {})
+        self._addr = PerGeneration(self._addresses)
 
     # ------------------------------------------------------------------ configure
     def configure(self, ctx: SystemContext) -> None:
@@ -400,14 +400,8 @@ class DiffDrive(System):
             w.integral = 0.0
 
     def _addresses(self, world: "PhysicsWorld") -> dict[str, tuple[int, int, int]]:
-        gen, cache = self._addr_cache
-        if gen != world.generation:
-            cache = {}
-            for w in self._wheels:
-                qadr, dadr = world.joint_address(self._entity, w.joint)
-                cache[w.joint] = (qadr, dadr, world.actuator_id(w.actuator))
-            self._addr_cache = (world.generation, cache)
-        return cache
+        """wheel joint -> (qpos address, dof address, actuator id)."""
+        return {w.joint: (*world.joint_address(self._entity, w.joint), world.actuator_id(w.actuator)) for w in self._wheels}
 
     def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
         if not self._ok or info.paused:
@@ -427,7 +421,7 @@ class DiffDrive(System):
                     w.instructed += delta
                 else:
                     w.instructed = target
-        addrs = self._addresses(world)
+        addrs = self._addr.get(world)
         for w in self._wheels:
             _, dadr, aid = addrs[w.joint]
             w.integral = drive_wheel(world, dadr, aid, w.instructed / w.radius, w.integral, w.integral_limit, info.dt_sec)
@@ -443,7 +437,7 @@ class DiffDrive(System):
         self._due = False
         stamp = info.sim_time_sec
         if self._js_pub is not None:
-            addrs = self._addresses(world)
+            addrs = self._addr.get(world)
             qpos, qvel = world.data.qpos, world.data.qvel
             self._js_pub.publish(
                 JointStates(
@@ -497,7 +491,7 @@ class DiffDrive(System):
         """Siegwart 2011, as the classic plugin's encoder odometry (pair 0 only)."""
         if len(self._wheels) < 2:
             return
-        addrs = self._addresses(world)
+        addrs = self._addr.get(world)
         right, left = self._wheels[0], self._wheels[1]
         wr = float(world.data.qvel[addrs[right.joint][1]])
         wl = float(world.data.qvel[addrs[left.joint][1]])

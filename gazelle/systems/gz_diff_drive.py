@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING
 
 from ..description import ConfigElement, Pose
 from ..description._model import quat_from_rpy
-from ._base import System, all_texts, SystemContext, UpdateInfo, child_text, parse_float
+from ._base import PerGeneration, System, all_texts, SystemContext, UpdateInfo, child_text, parse_float
 from ._bus import Endpoint, MsgType, Odometry, Transform, TransformBatch, Twist, resolve_topic
 from .diff_drive import add_wheel_servo, drive_wheel
 
@@ -220,7 +220,7 @@ class GzDiffDrive(System):
         self.frame_id = ""
         self.child_frame_id = ""
         self.cmd_topic = ""
-        self._addr: tuple[int, list[tuple[int, int, int]]] = (-1, [])
+        self._addr = PerGeneration(self._addresses)
         self._ok = False
 
     def configure(self, ctx: SystemContext) -> None:
@@ -288,11 +288,8 @@ class GzDiffDrive(System):
             self._odom.reset()
 
     def _addresses(self, world: "PhysicsWorld") -> list[tuple[int, int, int]]:
-        gen, addrs = self._addr
-        if gen != world.generation:
-            addrs = [(*world.joint_address(self._entity, jn), world.actuator_id(act)) for jn, act, _, _ in self._wheels]
-            self._addr = (world.generation, addrs)
-        return addrs
+        """(qpos address, dof address, actuator id) of each wheel."""
+        return [(*world.joint_address(self._entity, jn), world.actuator_id(act)) for jn, act, _, _ in self._wheels]
 
     def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
         if not self._ok or info.paused:
@@ -301,14 +298,14 @@ class GzDiffDrive(System):
         lin = self._limit_lin.limit(self._cmd.linear[0], self._last0[0], self._last1[0], info.dt_sec)
         ang = self._limit_ang.limit(self._cmd.angular[2], self._last0[1], self._last1[1], info.dt_sec)
         self._last1, self._last0 = self._last0, (lin, ang)
-        for i, ((_, _, side, ilimit), (_, dadr, aid)) in enumerate(zip(self._wheels, self._addresses(world))):
+        for i, ((_, _, side, ilimit), (_, dadr, aid)) in enumerate(zip(self._wheels, self._addr.get(world))):
             target = (lin + side * ang * c.wheel_separation / 2.0) / c.wheel_radius
             self._integral[i] = drive_wheel(world, dadr, aid, target, self._integral[i], ilimit, info.dt_sec)
 
     def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
         if not self._ok or info.paused or self._odom is None:
             return
-        addrs = self._addresses(world)
+        addrs = self._addr.get(world)
         qpos = world.data.qpos
         right = next(i for i, w in enumerate(self._wheels) if w[2] == 1)
         left = next(i for i, w in enumerate(self._wheels) if w[2] == -1)

@@ -25,7 +25,7 @@ import mujoco
 
 from ..description import ConfigElement, JointType
 from ..physics._builder import scoped
-from ._base import all_texts, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
+from ._base import PerGeneration, all_texts, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
 from ._bus import Float64, MsgType, resolve_topic
 from .diff_drive import INTEGRAL_TIME_SEC, UNLIMITED_INTEGRAL, servo_gain, wheel_inertia_about_axis
 
@@ -67,7 +67,7 @@ class _Servo:
         self.target = target
         self.initial = target
         self.integral = 0.0
-        self._addr: tuple[int, tuple[int, int, int]] = (-1, (0, 0, 0))
+        self._addr = PerGeneration(lambda w: (*w.joint_address(self.entity, self.joint), w.actuator_id(self.actuator)))
 
     def command(self, value: float) -> None:
         if math.isfinite(value):
@@ -77,11 +77,8 @@ class _Servo:
         self.command(msg.data)
 
     def addresses(self, world: "PhysicsWorld") -> tuple[int, int, int]:
-        gen, addr = self._addr
-        if gen != world.generation:
-            addr = (*world.joint_address(self.entity, self.joint), world.actuator_id(self.actuator))
-            self._addr = (world.generation, addr)
-        return addr
+        """(qpos address, dof address, actuator id)."""
+        return self._addr.get(world)
 
     def reset(self) -> None:
         self.target = self.initial

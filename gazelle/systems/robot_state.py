@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING
 import mujoco
 
 from ..description import JointType, Model, Plugin
-from ._base import all_texts, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
+from ._base import PerGeneration, all_texts, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
 from ._bus import Endpoint, JointStates, MsgType, Qos, Text, Transform, TransformBatch, resolve_topic
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -90,7 +90,7 @@ class RobotStatePublisher(System):
         self._moving: list[_MovingJoint] = []
         self._tf: Endpoint | None = None
         self._next = 0.0
-        self._ids: tuple[int, list[tuple[int, int]]] = (-1, [])
+        self._ids = PerGeneration(self._body_ids)
 
     def configure(self, ctx: SystemContext) -> None:
         c = self.config
@@ -126,12 +126,9 @@ class RobotStatePublisher(System):
         )
 
     def _body_ids(self, world: "PhysicsWorld") -> list[tuple[int, int]]:
-        gen, ids = self._ids
-        if gen != world.generation:
-            name2id = lambda n: mujoco.mj_name2id(world.model, mujoco.mjtObj.mjOBJ_BODY, n)  # noqa: E731
-            ids = [(name2id(m.parent_body), name2id(m.child_body)) for m in self._moving]
-            self._ids = (world.generation, ids)
-        return ids
+        """(parent body id, child body id) of each moving joint."""
+        name2id = lambda n: mujoco.mj_name2id(world.model, mujoco.mjtObj.mjOBJ_BODY, n)  # noqa: E731
+        return [(name2id(m.parent_body), name2id(m.child_body)) for m in self._moving]
 
     def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
         self._next = 0.0
@@ -142,7 +139,7 @@ class RobotStatePublisher(System):
         period = 1.0 / self.config.publish_frequency if self.config.publish_frequency > 0 else 0.0
         self._next = info.sim_time_sec + period if math.isfinite(period) else math.inf
         out = []
-        for m, (pid, cid) in zip(self._moving, self._body_ids(world)):
+        for m, (pid, cid) in zip(self._moving, self._ids.get(world)):
             X_WP, X_WC = world.body_pose(pid), world.body_pose(cid)
             out.append(Transform(info.sim_time_sec, m.parent_frame, m.child_frame, X_WP.inverse() * X_WC))
         self._tf.publish(TransformBatch(tuple(out)))
@@ -171,7 +168,7 @@ class JointStatePublisher(System):
         self._pub: Endpoint | None = None
         self._joints: list[str] = []
         self._next = 0.0
-        self._addr: tuple[int, list[tuple[int, int]]] = (-1, [])
+        self._addr = PerGeneration(lambda w: [w.joint_address(self._entity, jn) for jn in self._joints])
 
     def configure(self, ctx: SystemContext) -> None:
         log = ctx.logger
@@ -211,10 +208,7 @@ class JointStatePublisher(System):
             return
         rate = self.config.update_rate
         self._next = info.sim_time_sec + (1.0 / rate if rate > 0 else 0.0)
-        gen, addrs = self._addr
-        if gen != world.generation:
-            addrs = [world.joint_address(self._entity, jn) for jn in self._joints]
-            self._addr = (world.generation, addrs)
+        addrs = self._addr.get(world)
         qpos, qvel = world.data.qpos, world.data.qvel
         self._pub.publish(
             JointStates(

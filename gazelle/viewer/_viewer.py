@@ -48,12 +48,13 @@ import numpy as np
 import viser
 
 from ..description import Model, Pose, load
+from ..systems._base import PerGeneration
 from ..systems._bus import MsgType, Twist
 from ._geometry import rgba_to_rgb255, to_trimesh
 from ._models import ModelFile, find_models
 
 if TYPE_CHECKING:
-    from ..physics import Simulation
+    from ..physics import PhysicsWorld, Simulation
 
 _log = logging.getLogger("gazelle.viewer")
 # viser's websockets server logs every browser connect/close at INFO: noise in `gazelle sim`'s output
@@ -175,6 +176,16 @@ def _odom_frame_in_world(truth: Pose, odom: Any, now: float) -> tuple[float, flo
     return tx - (c * ox - s * oy), ty - (s * ox + c * oy), yaw
 
 
+def _bodies(w: PhysicsWorld) -> list[tuple[str, str, int]]:
+    """(entity, link, MuJoCo body id) of every link that has a body."""
+    return [
+        (e.name, link.name, w.body_id(e.name, link.name))
+        for e in w.entities.values()
+        for link in e.model.links
+        if link.name in e.built.bodies
+    ]
+
+
 def _safe(name: str) -> str:
     return name.replace("/", "_").replace(" ", "_") or "_"
 
@@ -197,7 +208,7 @@ class Viewer:
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
         self._nodes: dict[str, _EntityNodes] = {}
-        self._body_cache: tuple[int, list[tuple[str, str, int]]] = (-1, [])
+        self._bodies = PerGeneration(_bodies)
         self._lock = threading.Lock()
         self._last: Snapshot | None = None
         self._wall0 = time.monotonic()
@@ -602,14 +613,7 @@ class Viewer:
     def _snapshot(self) -> Snapshot:
         """Runs on the sim thread: every link pose, the time and the entity set."""
         sim, w = self.sim, self.sim.world
-        gen, bodies = self._body_cache
-        if gen != w.generation:
-            bodies = []
-            for e in w.entities.values():
-                for link in e.model.links:
-                    if link.name in e.built.bodies:
-                        bodies.append((e.name, link.name, w.body_id(e.name, link.name)))
-            self._body_cache = (w.generation, bodies)
+        bodies = self._bodies.get(w)
         poses: dict[str, dict[str, tuple[tuple[float, ...], tuple[float, ...]]]] = {}
         for ename, lname, bid in bodies:
             p = w.body_pose(bid)
