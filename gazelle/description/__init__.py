@@ -22,6 +22,8 @@ from ._diagnostics import ModelLoadError as ModelLoadError
 from ._diagnostics import Severity as Severity
 from ._diagnostics import SimError as SimError
 from ._diagnostics import SourceLocation as SourceLocation
+from ._diagnostics import excerpt as excerpt
+from ._diagnostics import reply_text as reply_text
 from ._model import *  # noqa: F401,F403  (the model dataclasses are the public surface)
 from ._model import LoadResult, Model, World
 from ._resources import ResourceResolver as ResourceResolver
@@ -45,12 +47,29 @@ def format_for_path(path: str | os.PathLike[str]) -> str | None:
     return None
 
 
-_XACRO_NS = re.compile(r"xmlns:xacro\s*=|<xacro:")
+_XACRO_MARKUP = re.compile(r"<\s*xacro:|\$\{|\$\(")
+"""What only xacro gives meaning to: its elements, ``${expr}`` and ``$(subst ...)``. A bare
+``xmlns:xacro`` declaration is not markup: xacro's own output keeps it."""
+
+XACRO_REFUSED = (
+    "this description contains xacro ({what}); expand it first (`xacro file.urdf.xacro > robot.urdf`) "
+    "or spawn the file with `gazelle spawn -file FILE`: a description sent as a string is data, "
+    "never expanded or evaluated"
+)
+
+
+def xacro_markup(text: str) -> str | None:
+    """The first piece of xacro markup in ``text`` outside comments (shortened), or None."""
+    body = re.sub(r"<!--.*?-->", "", text, flags=re.S)
+    m = _XACRO_MARKUP.search(body)
+    if m is None:
+        return None
+    return body[m.start() : m.start() + 24].split("\n")[0]
 
 
 def detect_format(text: str) -> str | None:
     """Guess the format of XML text from its content (xacro markup, root element)."""
-    if _XACRO_NS.search(text):
+    if xacro_markup(text) is not None:
         return "xacro"
     # skip comments and the declaration, find the first element name
     body = re.sub(r"<!--.*?-->", "", text, flags=re.S)
@@ -75,6 +94,7 @@ def load(
     args: Mapping[str, str] | None = None,
     strict: bool = False,
     resolver: ResourceResolver | None = None,
+    expand_xacro: bool = True,
 ) -> LoadResult:
     """Load a description file, dispatched by suffix.
 
@@ -83,6 +103,9 @@ def load(
         args: xacro ``$(arg)`` values.
         strict: turn warnings into errors.
         resolver: how ``package://``/``model://`` are found (default: environment).
+        expand_xacro: run xacro on a xacro file (in a child process bounded in time and memory).
+            True for files the user named themselves; False for files a remote request picked
+            (the viewer's spawn panel), which then get ``XACRO_NOT_ALLOWED``.
 
     Returns:
         The loaded value and every warning.
@@ -114,7 +137,9 @@ def load(
         raise ModelLoadError(
             [Diagnostic(ErrorCode.FILE_READ_ERROR, Severity.ERROR, f"cannot read {p}: {err}", SourceLocation(str(p)))]
         ) from None
-    return load_string(text, format=fmt, source=str(p), args=args, strict=strict, resolver=resolver)
+    return load_string(
+        text, format=fmt, source=str(p), args=args, strict=strict, resolver=resolver, expand_xacro=expand_xacro
+    )
 
 
 def load_string(
@@ -125,8 +150,13 @@ def load_string(
     args: Mapping[str, str] | None = None,
     strict: bool = False,
     resolver: ResourceResolver | None = None,
+    expand_xacro: bool = False,
 ) -> LoadResult:
     """Load description text.
+
+    Text is data: xacro markup in it is refused (``XACRO_NOT_ALLOWED``) unless the caller
+    read the text from a file the user named and says so with ``expand_xacro=True``.
+    xacro evaluates Python expressions, and its evaluator is no sandbox.
 
     Args:
         text: the XML.
@@ -136,6 +166,7 @@ def load_string(
         args: xacro ``$(arg)`` values.
         strict: turn warnings into errors.
         resolver: how ``package://``/``model://`` are found.
+        expand_xacro: expand xacro (bounded in time and memory); only for a user's own file.
 
     Raises:
         ModelLoadError: with every diagnostic, when there is any error.
@@ -166,8 +197,15 @@ def load_string(
     if fmt in ("urdf", "xacro"):
         from . import _urdf, _xacro
 
+        if fmt == "xacro" and not expand_xacro:
+            markup = xacro_markup(text)
+            if markup is None:
+                fmt = "urdf"  # a .xacro name, or an xmlns:xacro declaration, but nothing to expand
+            else:
+                sink.error(ErrorCode.XACRO_NOT_ALLOWED, XACRO_REFUSED.format(what=repr(markup)), SourceLocation(source))
+                raise ModelLoadError(sink.items)
         if fmt == "xacro":
-            expanded = _xacro.expand(text, source=source, args=dict(args or {}), sink=sink, resolver=resolver)
+            expanded = _xacro.expand_bounded(text, source=source, args=dict(args or {}), sink=sink, resolver=resolver)
             if expanded is None:
                 sink.raise_if_errors()
                 raise ModelLoadError(sink.items)

@@ -10,7 +10,39 @@ their mistakes at once, printed like a compiler::
 from __future__ import annotations
 
 import enum
+import re
 from dataclasses import dataclass, field
+
+EXCERPT_CHARS = 60
+"""The longest excerpt of a user's value that a message echoes (then ``…`` and its length)."""
+MESSAGE_CHARS = 600
+"""The longest diagnostic message; error replies go over the wire, so they stay short."""
+_QUOTED = re.compile(r"'[^'\n]{%d,}'|\"[^\"\n]{%d,}\"" % (EXCERPT_CHARS + 1, EXCERPT_CHARS + 1))
+
+
+def excerpt(value: object, limit: int = EXCERPT_CHARS) -> str:
+    """``repr(value)`` cut to ``limit`` characters, saying how long it was: what an error may echo."""
+    text = value if isinstance(value, str) else str(value)
+    if len(text) <= limit:
+        return repr(text)
+    return repr(text[:limit]) + f"… ({len(text)} characters)"
+
+
+def shorten_message(message: str, limit: int = MESSAGE_CHARS) -> str:
+    """Cut every quoted value longer than :data:`EXCERPT_CHARS`, and the whole to ``limit`` characters."""
+    out = _QUOTED.sub(lambda m: m.group(0)[: EXCERPT_CHARS + 1] + f"…{m.group(0)[0]} ({len(m.group(0)) - 2} characters)", message)
+    if len(out) > limit:
+        out = out[:limit] + f"… ({len(out)} characters)"
+    return out
+
+
+REPLY_CHARS = 4000
+"""The longest error text a service reply carries."""
+
+
+def reply_text(message: str) -> str:
+    """An error message made fit for a service reply: excerpts of values, at most :data:`REPLY_CHARS`."""
+    return shorten_message(message, REPLY_CHARS)
 
 
 class Severity(enum.Enum):
@@ -29,6 +61,8 @@ class ErrorCode(enum.Enum):
     XML_PARSE_ERROR = "XML_PARSE_ERROR"
     UNKNOWN_FORMAT = "UNKNOWN_FORMAT"
     XACRO_ERROR = "XACRO_ERROR"
+    XACRO_NOT_ALLOWED = "XACRO_NOT_ALLOWED"
+    """xacro markup in a description that arrived as a string: strings are data, never evaluated."""
     ROOT_ELEMENT_INVALID = "ROOT_ELEMENT_INVALID"
     ELEMENT_MISSING = "ELEMENT_MISSING"
     ATTRIBUTE_MISSING = "ATTRIBUTE_MISSING"
@@ -116,6 +150,14 @@ class ModelLoadError(SimError, ValueError):
         shown = errors or list(self.diagnostics)
         super().__init__("\n".join(d.format() for d in shown) or "model could not be loaded")
 
+    def summary(self, max_items: int = 8) -> str:
+        """The first ``max_items`` errors and how many more: what a service reply carries."""
+        errors = [d for d in self.diagnostics if d.severity is Severity.ERROR] or list(self.diagnostics)
+        lines = [d.format() for d in errors[:max_items]]
+        if len(errors) > max_items:
+            lines.append(f"... and {len(errors) - max_items} more errors")
+        return "\n".join(lines) or "model could not be loaded"
+
     @property
     def first(self) -> Diagnostic | None:
         """The first error (or diagnostic) found, handy for one-line reports."""
@@ -135,14 +177,14 @@ class DiagnosticSink:
     _hard_errors: int = field(default=0, repr=False)
 
     def error(self, code: ErrorCode, message: str, location: SourceLocation | None = None) -> None:
-        """Report an error."""
+        """Report an error (long values in the message are cut to an excerpt)."""
         self._hard_errors += 1
-        self.items.append(Diagnostic(code, Severity.ERROR, message, location))
+        self.items.append(Diagnostic(code, Severity.ERROR, shorten_message(message), location))
 
     def warning(self, code: ErrorCode, message: str, location: SourceLocation | None = None) -> None:
         """Report a warning (an error in strict mode)."""
         sev = Severity.ERROR if self.strict else Severity.WARNING
-        self.items.append(Diagnostic(code, sev, message, location))
+        self.items.append(Diagnostic(code, sev, shorten_message(message), location))
 
     @property
     def has_errors(self) -> bool:

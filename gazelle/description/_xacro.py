@@ -230,6 +230,9 @@ def _describe(err: BaseException) -> str:
             if isinstance(node.exc, OSError) and msg:
                 break
             node = node.exc
+        elif isinstance(node, MemoryError):
+            parts.append("out of memory (the memory limit of xacro expansion is set by GAZELLE_XACRO_MEMORY_MB)")
+            break
         else:
             plain = isinstance(node, (NameError, _PackageNotFound, xacro_subst.SubstitutionException))
             parts.append(str(node) if plain else f"{type(node).__name__}: {node}")
@@ -302,3 +305,43 @@ def expand(
         if not _keeps_locations(doc):
             _strip_locations(doc)
         return doc.documentElement.toxml()
+
+
+def expand_bounded(
+    text: str,
+    *,
+    source: str,
+    args: Mapping[str, str] | None = None,
+    sink: DiagnosticSink,
+    resolver: ResourceResolver,
+) -> str | None:
+    """:func:`expand` in a forked child bounded in time and memory (see :mod:`._bounded`).
+
+    Use it for every file a user names: xacro evaluates Python, and ``${9**9**9}`` would
+    otherwise hold the process (and its GIL) for minutes. Only files a user named on their own
+    command line come here; a description that arrives as a string is never expanded.
+    """
+    from ._bounded import BoundExceeded, run_bounded
+    from ._diagnostics import Diagnostic, Severity
+
+    def work() -> tuple[str | None, list[tuple[str, str, str, str | None, int | None]]]:
+        child_sink = DiagnosticSink(strict=sink.strict)
+        out = expand(text, source=source, args=args, sink=child_sink, resolver=resolver)
+        items = [
+            (d.code.value, d.severity.value, d.message, d.location.file if d.location else None,
+             d.location.line if d.location else None)
+            for d in child_sink.items
+        ]
+        return out, items
+
+    try:
+        out, items = run_bounded(work, what=f"xacro expansion of {source}")
+    except BoundExceeded as err:
+        sink.error(ErrorCode.XACRO_ERROR, f"xacro: {err}", SourceLocation(source))
+        return None
+    diagnostics = [
+        Diagnostic(ErrorCode(code), Severity(sev), msg, SourceLocation(file, line) if file is not None else None)
+        for code, sev, msg, file, line in items
+    ]
+    sink.extend(diagnostics)
+    return out

@@ -14,7 +14,7 @@ from typing import Callable
 import mujoco
 import numpy as np
 
-from ..description import Model, Pose, World
+from ..description import Model, Pose, World, excerpt
 from ..description._model import quat_conj, quat_rotate
 from ._builder import JOINT_ARMATURE, SEP, BuildError, BuiltEntity, add_model, scoped
 
@@ -123,7 +123,7 @@ class PhysicsWorld:
         if not name or SEP in name or not ENTITY_NAME_RE.match(name):
             raise WorldError(
                 ErrorKind.NAME_INVALID,
-                f"invalid entity name {name!r}: use letters, digits, '_', '-', '.' and '/' (not '::')",
+                f"invalid entity name {excerpt(name)}: use letters, digits, '_', '-', '.' and '/' (not '::')",
             )
         if not all(math.isfinite(v) for v in (*X_WM.position, *X_WM.orientation)):
             raise WorldError(ErrorKind.INVALID_POSE, f"pose of '{name}' is not finite: {X_WM}")
@@ -434,7 +434,7 @@ class PhysicsWorld:
                 out.append(
                     WorldError(
                         ErrorKind.NAME_INVALID,
-                        f"invalid entity name {name!r}: use letters, digits, '_', '-', '.' and '/' (not '::')",
+                        f"invalid entity name {excerpt(name)}: use letters, digits, '_', '-', '.' and '/' (not '::')",
                     )
                 )
                 continue

@@ -31,7 +31,7 @@ from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPo
 from rosgraph_msgs.msg import Clock
 from std_srvs.srv import Empty
 
-from ..description import Model, ModelLoadError, Pose, World, load_string
+from ..description import Model, ModelLoadError, Pose, World, load_string, reply_text
 from ..description._model import quat_conj, quat_rotate
 from ..physics import Simulation, WorldError
 from ..systems._base import UpdateInfo
@@ -302,7 +302,7 @@ class SimulationNode(Node):
         try:
             result = load_string(xml, source=source)
         except ModelLoadError as err:
-            raise SpawnFailed(SpawnFailure.PARSE, str(err)) from None
+            raise SpawnFailed(SpawnFailure.PARSE, err.summary()) from None
         value = result.value
         model: Model | None
         if isinstance(value, Model):
@@ -331,7 +331,7 @@ class SimulationNode(Node):
             )
         except (SpawnFailed, WorldError, TimeoutError) as err:
             res.success = False
-            res.status_message = f"SpawnEntity: Failure - {err}"
+            res.status_message = reply_text(f"SpawnEntity: Failure - {err}")
             self.get_logger().error(res.status_message)
             return res
         res.success = True
@@ -344,7 +344,7 @@ class SimulationNode(Node):
             self.sim.delete(req.name)
         except (WorldError, TimeoutError) as err:
             res.success = False
-            res.status_message = f"DeleteEntity: Failure - {err}"
+            res.status_message = reply_text(f"DeleteEntity: Failure - {err}")
             return res
         res.success = True
         res.status_message = f"Successfully deleted entity [{req.name}]"

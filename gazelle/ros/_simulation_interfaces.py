@@ -63,7 +63,17 @@ from simulation_interfaces.srv import (
     StepSimulation,
 )
 
-from ..description import ErrorCode, Model, ModelLoadError, Pose, ResourceResolver, World, format_for_path, load_string
+from ..description import (
+    ErrorCode,
+    Model,
+    ModelLoadError,
+    Pose,
+    ResourceResolver,
+    World,
+    format_for_path,
+    load_string,
+    reply_text,
+)
 from ..description._model import JointType, quat_rotate
 from ..physics import WorldError
 from ..physics._world import Entity, ErrorKind
@@ -109,7 +119,7 @@ _WORLD_KIND_TO_SPAWN = {
 
 
 def _result(code: int, message: str = "") -> Result:
-    return Result(result=code, error_message=message)
+    return Result(result=code, error_message=reply_text(message))
 
 
 OK = Result.RESULT_OK
@@ -206,7 +216,8 @@ class SimulationInterfaces:
         res.features.features = [int(f) for f in FEATURES]
         res.features.spawn_formats = ["urdf", "sdf"]
         res.features.custom_info = (
-            "gazelle (MuJoCo): xacro is also accepted for spawning (.xacro / xacro markup); "
+            "gazelle (MuJoCo): xacro is never expanded by the server (a description is data): "
+            "expand it first, or use `gazelle spawn -file robot.urdf.xacro`, which expands it locally; "
             "uri: model://, package://, file:// or a path; name filters are Python regular expressions; "
             "states are in the world frame"
         )
@@ -380,7 +391,7 @@ class SimulationInterfaces:
                 f"uri '{uri}' is outside the resource paths, so it is not read; resource paths: {where}",
             )
         if path.is_dir():
-            cands = [path / "model.sdf", *sorted(path.glob("*.sdf")), *sorted(path.glob("*.urdf")), *sorted(path.glob("*.xacro"))]
+            cands = [path / "model.sdf", *sorted(path.glob("*.sdf")), *sorted(path.glob("*.urdf"))]
             found = next((c for c in cands if c.is_file()), None)
             if found is None:
                 raise _Refused(SpawnEntity.Response.NO_RESOURCE, f"uri '{uri}' is a folder ({path}) with no model.sdf")
@@ -391,7 +402,7 @@ class SimulationInterfaces:
         if fmt is None or fmt == "srdf":
             raise _Refused(
                 SpawnEntity.Response.UNSUPPORTED_FORMAT,
-                f"uri '{uri}': unsupported format '{Path(path).suffix}' (use .urdf, .xacro or .sdf)",
+                f"uri '{uri}': unsupported format '{Path(path).suffix}' (use .urdf or .sdf)",
             )
         try:
             text = path.read_text(encoding="utf-8")
@@ -422,8 +433,8 @@ class SimulationInterfaces:
         except ModelLoadError as err:
             first = err.first
             if first is not None and first.code is ErrorCode.UNKNOWN_FORMAT:
-                raise _Refused(R.UNSUPPORTED_FORMAT, str(err)) from None
-            raise _Refused(R.RESOURCE_PARSE_ERROR, str(err)) from None
+                raise _Refused(R.UNSUPPORTED_FORMAT, err.summary()) from None
+            raise _Refused(R.RESOURCE_PARSE_ERROR, err.summary()) from None
         value = loaded.value
         if isinstance(value, Model):
             model = value

@@ -77,17 +77,20 @@ def _read_topic(node: Node, executor: SingleThreadedExecutor, topic: str, timeou
 
 
 def _xml_from_file(path: str) -> str:
-    p = Path(path)
-    if p.name.endswith(".xacro"):
-        from ..description import DiagnosticSink, ModelLoadError, ResourceResolver
-        from ..description import _xacro
+    """The entity XML of a file the user named: xacro (by suffix or markup) is expanded here, in the
+    user's own process and bounded in time and memory, so the server only ever receives plain XML."""
+    from ..description import DiagnosticSink, ModelLoadError, ResourceResolver, xacro_markup
+    from ..description import _xacro
 
-        sink = DiagnosticSink()
-        out = _xacro.expand(p.read_text(encoding="utf-8"), source=str(p), args={}, sink=sink, resolver=ResourceResolver())
-        if out is None:
-            raise ModelLoadError(sink.items)
-        return out
-    return p.read_text(encoding="utf-8")
+    p = Path(path)
+    text = p.read_text(encoding="utf-8")
+    if not p.name.endswith(".xacro") and xacro_markup(text) is None:
+        return text
+    sink = DiagnosticSink()
+    out = _xacro.expand_bounded(text, source=str(p), args={}, sink=sink, resolver=ResourceResolver())
+    if out is None:
+        raise ModelLoadError(sink.items)
+    return out
 
 
 def with_robot_state_options(xml: str, *, enabled: bool, frame_prefix: str | None) -> str:
@@ -113,13 +116,22 @@ def main(argv: list[str]) -> int:
     timeout = args.spawn_service_timeout if args.spawn_service_timeout is not None else args.timeout
     if not math.isfinite(timeout) or timeout < 0:
         return _fail(None, f"-timeout must be a non-negative number, got {timeout}")
+    file_xml: str | None = None
+    if args.file:  # before rclpy starts its threads: a xacro file is expanded in a forked child
+        print(f"[INFO] [spawn_entity]: Loading entity XML from file {args.file}", file=sys.stderr)
+        try:
+            file_xml = _xml_from_file(args.file)
+        except FileNotFoundError:
+            return _fail(None, f"Error: specified file {args.file} does not exist")
+        except Exception as err:  # noqa: BLE001 - includes ModelLoadError with file:line
+            return _fail(None, f"Error: cannot read {args.file}: {err}")
     context = rclpy.Context()
     rclpy.init(args=[], context=context)
     node = rclpy.create_node("spawn_entity", context=context)
     executor = SingleThreadedExecutor(context=context)
     executor.add_node(node)
     try:
-        return _run(node, executor, args, timeout)
+        return _run(node, executor, args, timeout, file_xml)
     except KeyboardInterrupt:
         return _fail(node, "interrupted")
     finally:
@@ -129,17 +141,13 @@ def main(argv: list[str]) -> int:
             rclpy.shutdown(context=context)
 
 
-def _run(node: Node, executor: SingleThreadedExecutor, args: argparse.Namespace, timeout: float) -> int:
+def _run(
+    node: Node, executor: SingleThreadedExecutor, args: argparse.Namespace, timeout: float, file_xml: str | None
+) -> int:
     log = node.get_logger()
     log.info("Spawn Entity started")
-    if args.file:
-        log.info(f"Loading entity XML from file {args.file}")
-        try:
-            xml = _xml_from_file(args.file)
-        except FileNotFoundError:
-            return _fail(node, f"Error: specified file {args.file} does not exist")
-        except Exception as err:  # noqa: BLE001 - includes ModelLoadError with file:line
-            return _fail(node, f"Error: cannot read {args.file}: {err}")
+    if file_xml is not None:
+        xml = file_xml
     elif args.topic:
         log.info(f"Loading entity published on topic {args.topic}")
         log.info(f"Waiting for entity xml on {args.topic}")

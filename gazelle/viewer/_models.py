@@ -3,7 +3,8 @@
 The same search paths ``model://`` and ``package://`` URIs resolve against
 (:class:`gazelle.description.ResourceResolver`): in each folder and its direct
 sub-folders, a Gazebo model folder (``model.config`` naming its SDF) or any
-``*.sdf`` / ``*.urdf`` / ``*.urdf.xacro`` / ``*.xacro`` file.
+``*.sdf`` / ``*.urdf`` file. xacro files are not offered: the server never runs xacro
+(expand them first, or spawn them with ``gazelle spawn -file``).
 """
 
 from __future__ import annotations
@@ -14,7 +15,7 @@ from pathlib import Path
 
 from ..description import ResourceResolver
 
-MODEL_SUFFIXES = (".sdf", ".urdf", ".xacro")
+MODEL_SUFFIXES = (".sdf", ".urdf")
 MAX_MODELS = 200
 
 

@@ -455,7 +455,7 @@ class Viewer:
 
         A name already taken gets a ``_2``, ``_3``... suffix. Raises on a file that does not load or spawn.
         """
-        result = load(path)
+        result = load(path, expand_xacro=False)  # the panel is remote input: it never runs xacro
         model = result.value
         if not isinstance(model, Model):
             raise ValueError(f"{path} is not a single model")

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import time
+
 import pytest
 from gazebo_msgs.srv import DeleteEntity, GetModelList, SpawnEntity
 from rosgraph_msgs.msg import Clock
@@ -104,3 +106,38 @@ def test_spawn_arguments_are_checked(flag):
     proc = start([*GAZELLE, "spawn", flag], "gazelle spawn")
     assert proc.wait(30) == 2
     assert "usage: gazelle spawn" in proc.output
+
+
+RCE = (
+    '<robot name="x" xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:property name="p" value="'
+    "${python.vars(python.type(()).mro()[-1])['__getattribute__'](xacro.load_yaml, '__globals__')"
+    "['os'].system('id > %s')}\"/><link name=\"a\"/></robot>"
+)
+POWER_BOMB = '<robot name="x" xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:property name="p" value="${9**9**9}"/><link name="b${p}"/></robot>'
+
+
+def test_descriptions_from_the_wire_are_data_never_code(sim_factory, ros_client, tmp_path):
+    """The RCE payload, a file read and the power bomb, through every way a string reaches the server."""
+    from simulation_interfaces.srv import SpawnEntity as SiSpawnEntity
+
+    sim_factory()
+    marker = tmp_path / "pwned"
+    payloads = [RCE % marker, POWER_BOMB, '<robot name="x"><link name="${xacro.load_yaml(\'/etc/passwd\')}"/></robot>']
+    for xml in payloads:
+        t0 = time.monotonic()
+        res = _spawn(ros_client, "x", xml)
+        assert time.monotonic() - t0 < 5.0
+        assert not res.success and "[XACRO_NOT_ALLOWED]" in res.status_message, res.status_message
+        assert "expand it first" in res.status_message and "root:" not in res.status_message
+        req = SiSpawnEntity.Request(name="x", resource_string=xml)
+        si = ros_client.call(SiSpawnEntity, "/gazelle/spawn_entity", req)
+        assert si.result.result == SiSpawnEntity.Response.RESOURCE_PARSE_ERROR, si.result.error_message
+        assert "[XACRO_NOT_ALLOWED]" in si.result.error_message
+    # gazelle spawn -string / -stdin send the string as it is: the server refuses it the same way
+    cli = start([*GAZELLE, "spawn", "-entity", "x", "-string", RCE % marker, "-timeout", "20"], "gazelle spawn")
+    assert cli.wait(60) == 1 and "XACRO_NOT_ALLOWED" in cli.output, cli.output
+    assert not marker.exists()
+    names = ros_client.call(GetModelList, "/get_model_list", GetModelList.Request()).model_names
+    assert "x" not in names
+    # and the server answers at once: a real spawn right after works
+    assert _spawn(ros_client, "robot", xacro_to_urdf(SEED_XACRO)).success

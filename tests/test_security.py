@@ -1,0 +1,124 @@
+"""Descriptions that arrive as strings are data; xacro runs only on a user's own file, bounded.
+
+The payloads are the ones an attacker used on `/spawn_entity` (issue 10): an escape from
+xacro's evaluator that ran `id`, file and environment reads echoed back in errors, and
+`${9**9**9}`, which froze the whole server.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from gazelle.description import ErrorCode, ModelLoadError, load, load_string
+
+RCE_EXPR = (
+    "${python.vars(python.type(()).mro()[-1])['__getattribute__'](xacro.load_yaml, '__globals__')"
+    "['os'].system('id > %s')}"
+)
+
+
+def _robot(body: str) -> str:
+    return f'<robot name="x" xmlns:xacro="http://www.ros.org/wiki/xacro">{body}<link name="a"/></robot>'
+
+
+def _refused(text: str, **kw) -> ModelLoadError:
+    with pytest.raises(ModelLoadError) as info:
+        load_string(text, **kw)
+    return info.value
+
+
+def test_the_remote_code_execution_payload_is_refused_and_runs_nothing(tmp_path: Path) -> None:
+    marker = tmp_path / "pwned"
+    text = _robot(f'<xacro:property name="p" value="{RCE_EXPR % marker}"/>')
+    for fmt in ("auto", "urdf", "xacro"):
+        err = _refused(text, format=fmt)
+        assert err.first is not None and err.first.code is ErrorCode.XACRO_NOT_ALLOWED
+        assert "expand it first" in str(err) and "gazelle spawn -file" in str(err)
+    # the expression alone in an attribute, without any xacro element, is refused the same way
+    err = _refused(f'<robot name="x"><link name="{RCE_EXPR % marker}"/></robot>')
+    assert err.first is not None and err.first.code is ErrorCode.XACRO_NOT_ALLOWED
+    assert not marker.exists()
+
+
+@pytest.mark.parametrize(
+    "body",
+    [
+        "<link name=\"${xacro.load_yaml('/etc/passwd')}\"/>",
+        '<link name="$(env PATH)"/>',
+        "<xacro:property name=\"p\" value=\"${'a'*(10**9)}\"/>",
+    ],
+)
+def test_file_and_environment_reads_are_never_evaluated_or_echoed(body: str) -> None:
+    start = time.monotonic()
+    err = _refused(_robot(body))
+    assert time.monotonic() - start < 1.0
+    text = str(err)
+    assert "root:" not in text and os.environ.get("PATH", "/usr/bin") not in text
+    assert len(text) < 600
+
+
+def test_the_power_bomb_in_a_string_is_answered_at_once() -> None:
+    start = time.monotonic()
+    err = _refused(_robot('<xacro:property name="p" value="${9**9**9}"/>'))
+    assert time.monotonic() - start < 1.0
+    assert err.first is not None and err.first.code is ErrorCode.XACRO_NOT_ALLOWED
+
+
+def test_a_plain_urdf_that_only_declares_the_xacro_namespace_loads() -> None:
+    # xacro's own output keeps xmlns:xacro on <robot>: that is no markup and must still spawn
+    model = load_string(_robot("")).value
+    assert model.name == "x"
+
+
+@pytest.mark.slow
+def test_the_power_bomb_in_a_local_file_ends_within_10_s_with_a_clear_error(tmp_path: Path) -> None:
+    bomb = tmp_path / "bomb.urdf.xacro"
+    bomb.write_text(_robot('<xacro:property name="p" value="${9**9**9}"/><link name="b${p}"/>'))
+    start = time.monotonic()
+    proc = subprocess.run(
+        [sys.executable, "-m", "gazelle.cli", "check", str(bomb)], capture_output=True, text=True, timeout=60
+    )
+    elapsed = time.monotonic() - start
+    assert proc.returncode == 1, proc.stderr
+    assert elapsed < 10.0, elapsed
+    assert f"{bomb}: error: [XACRO_ERROR]" in proc.stderr and "took longer than" in proc.stderr
+    assert "Traceback" not in proc.stderr
+
+
+def test_a_memory_bomb_in_a_local_file_is_stopped_by_the_memory_limit(tmp_path: Path, monkeypatch) -> None:
+    monkeypatch.setenv("GAZELLE_XACRO_MEMORY_MB", "200")
+    bomb = tmp_path / "big.urdf.xacro"
+    bomb.write_text(_robot("<xacro:property name=\"p\" value=\"${'a'*(10**9)}\"/><link name=\"b${p}\"/>"))
+    with pytest.raises(ModelLoadError) as info:
+        load(bomb)
+    assert "out of memory" in str(info.value) and "GAZELLE_XACRO_MEMORY_MB" in str(info.value), str(info.value)
+
+
+def test_a_users_own_xacro_file_still_expands(tmp_path: Path) -> None:
+    f = tmp_path / "ok.urdf.xacro"
+    f.write_text(
+        _robot(
+            '<xacro:property name="w" value="0.5"/><link name="b"><visual><geometry><box size="${w} 1 1"/></geometry>'
+            '</visual></link><joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint>'
+        )
+    )
+    model = load(f).value
+    assert sorted(lk.name for lk in model.links) == ["a", "b"]
+    assert model.link("b").visuals[0].geometry.size == (0.5, 1.0, 1.0)
+    # ... unless the caller says the file came from a remote request (the viewer's spawn panel)
+    with pytest.raises(ModelLoadError) as info:
+        load(f, expand_xacro=False)
+    assert info.value.first is not None and info.value.first.code is ErrorCode.XACRO_NOT_ALLOWED
+
+
+def test_errors_echo_only_an_excerpt_of_a_long_value() -> None:
+    huge = "9" * 5000 + "x"
+    err = _refused(f'<robot name="r"><link name="a"><collision><geometry><box size="{huge}"/></geometry></collision></link></robot>')
+    text = err.summary()
+    assert "characters" in text and len(text) < 600, text
