@@ -55,6 +55,12 @@ def sim(
         "127.0.0.1", "--viewer-host", help="Interface the viewer binds to (0.0.0.0: every interface; think twice)."
     ),
     viewer_port: int = typer.Option(8080, "--viewer-port", help="Viewer port; the next free one if taken; 0 = any free port."),
+    viewer_allow_origin: list[str] = typer.Option(
+        [],
+        "--viewer-allow-origin",
+        help="A web origin (http://host:port, or '*') besides the viewer's own whose pages may connect to it "
+        "(repeatable); see docs/security.md.",
+    ),
 ) -> None:
     """Run a simulation server: /clock, /spawn_entity, /delete_entity and every plugin's topics, and the browser viewer."""
     from ._sim import run_sim
@@ -69,8 +75,18 @@ def sim(
             viewer=not no_viewer,
             viewer_host=viewer_host,
             viewer_port=viewer_port,
+            viewer_allow_origins=_origins(viewer_allow_origin),
         )
     )
+
+
+def _origins(values: list[str]) -> tuple[str, ...]:
+    from ..viewer._origin import allowed_origins
+
+    try:
+        return allowed_origins(values)
+    except ValueError as err:
+        raise typer.BadParameter(str(err)) from None
 
 
 @app.command(

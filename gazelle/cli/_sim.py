@@ -48,6 +48,7 @@ def run_sim(
     viewer: bool = False,
     viewer_host: str = "127.0.0.1",
     viewer_port: int = 8080,
+    viewer_allow_origins: tuple[str, ...] = (),
 ) -> int:
     """Run the server; returns the process exit code."""
     logging.basicConfig(level=logging.INFO, format="[%(levelname)s] [%(name)s]: %(message)s", stream=sys.stderr)
@@ -82,7 +83,7 @@ def run_sim(
         from ..viewer import Viewer
 
         try:
-            view = Viewer(sim, host=viewer_host, port=viewer_port)
+            view = Viewer(sim, host=viewer_host, port=viewer_port, allow_origins=viewer_allow_origins)
         except OSError as err:
             print(f"gazelle: viewer not started: {err}", file=sys.stderr)
         else:

@@ -52,6 +52,7 @@ from ..systems._base import PerGeneration
 from ..systems._bus import MsgType, Twist
 from ._geometry import rgba_to_rgb255, to_trimesh
 from ._models import ModelFile, find_models
+from ._origin import OriginPolicy, guarded
 
 if TYPE_CHECKING:
     from ..physics import PhysicsWorld, Simulation
@@ -200,10 +201,20 @@ class Viewer:
         host: str = DEFAULT_HOST,
         port: int = DEFAULT_PORT,
         rate_hz: float = POSE_RATE_HZ,
+        allow_origins: tuple[str, ...] = (),
     ):
+        """
+        Args:
+            sim: the simulation to show and control.
+            host: interface to bind (loopback by default; see :mod:`._origin` for what a wider one opens).
+            port: port to bind, or the next free one.
+            rate_hz: pose updates per second.
+            allow_origins: web origins besides the viewer's own that may open its websocket.
+        """
         self.sim = sim
         self.rate_hz = rate_hz
-        with contextlib.redirect_stdout(io.StringIO()):  # viser's banner; we print our own URL line
+        self.origin_policy = OriginPolicy(host, allow_origins)
+        with contextlib.redirect_stdout(io.StringIO()), guarded(self.origin_policy):  # viser's banner: we print our own
             self.server = viser.ViserServer(host=host, port=port, verbose=False)
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None

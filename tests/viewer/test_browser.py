@@ -376,3 +376,56 @@ def test_chessboard_world_renders_33_entities(page: Any, artifacts: Path) -> Non
         viewer.stop()
         sim.stop()
     shutil.copy(out, ARTIFACTS / "chessboard.png")
+
+
+_TRY_WS_JS = """(url) => new Promise((resolve) => {
+    const ws = new WebSocket(url);
+    ws.onopen = () => { ws.close(); resolve('open'); };
+    ws.onerror = () => resolve('refused');
+    setTimeout(() => resolve('timeout'), 10000);
+})"""
+
+
+def test_foreign_pages_cannot_open_the_viewer_websocket(page: Any, viewer_sim) -> None:
+    """A page on another origin (any site the user visits) gets no websocket; the viewer's own page does."""
+    import http.client
+    import http.server
+    import threading
+    from urllib.parse import urlsplit
+
+    url = viewer_sim[1]
+    ws_url = "ws://" + urlsplit(url).netloc
+    body = b"<html><body>another site</body></html>"
+
+    class Page(http.server.BaseHTTPRequestHandler):
+        def do_GET(self) -> None:  # noqa: N802 - http.server's name
+            self.send_response(200)
+            self.send_header("Content-Type", "text/html")
+            self.send_header("Content-Length", str(len(body)))
+            self.end_headers()
+            self.wfile.write(body)
+
+        def log_message(self, *args: Any) -> None:
+            pass
+
+    other = http.server.ThreadingHTTPServer(("127.0.0.1", 0), Page)
+    threading.Thread(target=other.serve_forever, daemon=True).start()
+    foreign = page.context.new_page()
+    try:
+        foreign.goto(f"http://127.0.0.1:{other.server_address[1]}/")
+        assert foreign.evaluate(_TRY_WS_JS, ws_url) == "refused"
+        foreign.goto(f"http://localhost:{other.server_address[1]}/")
+        assert foreign.evaluate(_TRY_WS_JS, ws_url.replace("127.0.0.1", "localhost")) == "refused"
+    finally:
+        foreign.close()
+        other.shutdown()
+    # the viewer's own page still connects (and the scene kept streaming: see the tests above)
+    assert page.evaluate(_TRY_WS_JS, ws_url) == "open"
+    # DNS rebinding: a request naming another host is refused, even for the page itself
+    netloc = urlsplit(url).netloc
+    host, port = netloc.rsplit(":", 1)
+    for host_header, want in ((f"evil.example:{port}", 403), (netloc, 200), (f"localhost:{port}", 200)):
+        conn = http.client.HTTPConnection(host, int(port), timeout=10)
+        conn.request("GET", "/", headers={"Host": host_header})
+        assert conn.getresponse().status == want, host_header
+        conn.close()
