@@ -96,13 +96,19 @@ def run_sim(
         f"ROS_DOMAIN_ID={os.environ.get('ROS_DOMAIN_ID', '0')}",
         flush=True,
     )
+    rc = 0
     while not stop.wait(0.2):
         if not sim.running:
-            print("gazelle: simulation thread stopped unexpectedly", file=sys.stderr)
+            print("gazelle: simulation thread stopped unexpectedly (its traceback is above); exiting", file=sys.stderr)
+            rc = 1
+            break
+        if not bridge.alive:
+            print(f"gazelle: ROS executor thread stopped ({bridge.failure!r}); exiting", file=sys.stderr)
+            rc = 1
             break
     print("gazelle: shutting down", flush=True)
     if view is not None:
         view.stop()
     sim.stop()
     bridge.shutdown()
-    return 0
+    return rc

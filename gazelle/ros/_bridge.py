@@ -13,6 +13,7 @@ import logging
 import math
 import threading
 import time
+import traceback
 from dataclasses import dataclass
 from typing import Any
 
@@ -25,7 +26,9 @@ from gazebo_msgs.srv import SetEntityState as GzSetEntityState
 from gazebo_msgs.srv import SpawnEntity as GzSpawnEntity
 from geometry_msgs.msg import Twist
 from rclpy.callback_groups import ReentrantCallbackGroup
-from rclpy.executors import MultiThreadedExecutor
+from rclpy.event_handler import PublisherEventCallbacks, SubscriptionEventCallbacks
+from rclpy.exceptions import InvalidHandle
+from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, ShutdownException
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 from rosgraph_msgs.msg import Clock
@@ -96,9 +99,28 @@ class _RosLogHandler(logging.Handler):
         try:
             logger = rclpy.logging.get_logger(record.name)
             level = self._LEVELS.get(record.levelno, "info")
-            getattr(logger, level)(record.getMessage())
+            text = record.getMessage()
+            if record.exc_info:
+                text += "\n" + "".join(traceback.format_exception(*record.exc_info)).rstrip()
+            getattr(logger, level)(text)
         except Exception:  # noqa: BLE001 - logging must never raise
             self.handleError(record)
+
+
+# Publishers and subscriptions of systems come and go with their entities. rclpy (Jazzy) gives
+# each one a QoS event handler (a waitable) by default, and destroying it while the executor
+# builds its wait set raises InvalidHandle inside ``add_to_wait_set``, which ends ``spin()``: an
+# attacker killed the executor thread by deleting a diff-drive robot. So the bridge's endpoints
+# get no event handlers, and its spin loop also survives an InvalidHandle of an entity destroyed
+# mid-build (see RosBridge._spin).
+
+
+def _no_pub_events() -> PublisherEventCallbacks:
+    return PublisherEventCallbacks(use_default_callbacks=False)
+
+
+def _no_sub_events() -> SubscriptionEventCallbacks:
+    return SubscriptionEventCallbacks(use_default_callbacks=False)
 
 
 @dataclass
@@ -223,7 +245,11 @@ class SimulationNode(Node):
             with self._lock:
                 entry = self._pubs.get(key)
                 if entry is None:
-                    entry = _RosEndpoint(self.create_publisher(ros_type, ep.topic, qos_profile(ep.qos, ep.depth)))
+                    entry = _RosEndpoint(
+                        self.create_publisher(
+                            ros_type, ep.topic, qos_profile(ep.qos, ep.depth), event_callbacks=_no_pub_events()
+                        )
+                    )
                     self._pubs[key] = entry
                 entry.users += 1
             convert = TO_ROS[ep.msg_type]
@@ -242,6 +268,7 @@ class SimulationNode(Node):
                 lambda msg: callback(convert_in(msg)),
                 qos_profile(ep.qos, ep.depth),
                 callback_group=self._cb,
+                event_callbacks=_no_sub_events(),
             )
             with self._lock:
                 self._subs[id(ep)] = sub
@@ -447,16 +474,41 @@ class RosBridge:
         self.node = SimulationNode(sim, clock_rate_hz=clock_rate_hz, context=self.context)
         self.executor = MultiThreadedExecutor(num_threads=4, context=self.context)
         self.executor.add_node(self.node)
+        self.failure: BaseException | None = None
+        """What ended the executor thread, if it died (the server then exits non-zero)."""
+        self._stopping = threading.Event()
         self._thread = threading.Thread(target=self._spin, name="gazelle-ros", daemon=True)
         self._thread.start()
 
+    @property
+    def alive(self) -> bool:
+        """Whether the executor thread is serving (False after a crash or shutdown)."""
+        return self._thread.is_alive()
+
     def _spin(self) -> None:
-        try:
-            self.executor.spin()
-        except Exception:  # noqa: BLE001 - shutting down
-            pass
+        """Serve callbacks until shutdown. An entity destroyed while the executor built its wait set
+        (InvalidHandle) only costs that wait; anything else is logged with its traceback and kept in
+        :attr:`failure`, and the server's main loop then stops the process with a non-zero status."""
+        log = logging.getLogger("gazelle.ros")
+        invalid = 0
+        while not self._stopping.is_set() and self.context.ok():
+            try:
+                self.executor.spin_once(timeout_sec=0.1)
+            except InvalidHandle:
+                invalid += 1  # the next wait set is built without the destroyed entity
+                if invalid == 1:
+                    log.debug("an entity was destroyed while the executor waited on it; retrying")
+            except (ShutdownException, ExternalShutdownException):
+                return
+            except BaseException as err:  # noqa: BLE001 - recorded and reported, never swallowed
+                if self._stopping.is_set() or not self.context.ok():
+                    return
+                self.failure = err
+                log.critical("ROS executor thread crashed; the server stops", exc_info=err)
+                return
 
     def shutdown(self) -> None:
+        self._stopping.set()
         logging.getLogger().removeHandler(self._handler)
         self.executor.shutdown(timeout_sec=2.0)
         self.node.destroy_node()

@@ -35,7 +35,7 @@ from simulation_interfaces.srv import (
     StepSimulation,
 )
 
-from .conftest import GAZELLE, SEED_XACRO, Proc, RosClient, start, wait_for
+from .conftest import GAZELLE, SEED_XACRO, Proc, RosClient, start, wait_for, xacro_to_urdf
 
 pytestmark = pytest.mark.ros
 
@@ -254,16 +254,23 @@ def test_simulate_steps_action(ros: RosClient) -> None:
 # ---------------------------------------------------------------------- spawning and deleting
 def test_spawn_entity_uri_and_renaming(ros: RosClient, server: Proc) -> None:
     pause(ros)
-    res = spawn(ros, uri=str(SEED_XACRO), z=0.1)
+    # the server never runs xacro, not even on a file found by URI: the reply says what to do
+    refused = spawn(ros, uri=str(SEED_XACRO), z=0.1)
+    assert refused.result.result == SpawnEntity.Response.RESOURCE_PARSE_ERROR
+    assert "[XACRO_NOT_ALLOWED]" in refused.result.error_message and "gazelle spawn -file" in refused.result.error_message
+    urdf = server.resources / "simple_robot.urdf"  # type: ignore[attr-defined]
+    urdf.write_text(xacro_to_urdf(SEED_XACRO))
+    SEED_URDF = str(urdf)
+    res = spawn(ros, uri=SEED_URDF, z=0.1)
     assert res.result.result == OK, res.result.error_message
     assert res.entity_name == "simple_robot"  # empty name: the file's model name
-    again = spawn(ros, uri=str(SEED_XACRO), allow_renaming=True)
+    again = spawn(ros, uri=SEED_URDF, allow_renaming=True)
     assert again.result.result == OK and again.entity_name == "simple_robot_1"
-    dup = spawn(ros, uri=str(SEED_XACRO))
+    dup = spawn(ros, uri=SEED_URDF)
     assert dup.result.result == SpawnEntity.Response.NAME_NOT_UNIQUE and "simple_robot" in dup.result.error_message
     # the refused duplicate did not disturb the existing robot
     assert entity_state(ros, "simple_robot").pose.position.z == pytest.approx(0.1, abs=0.05)
-    ns = spawn(ros, "ns_robot", uri="file://" + str(SEED_XACRO), entity_namespace="robot1", frame="simple_robot", z=1.0)
+    ns = spawn(ros, "ns_robot", uri="file://" + SEED_URDF, entity_namespace="robot1", frame="simple_robot", z=1.0)
     assert ns.result.result == OK, ns.result.error_message
     info = call(ros, GetEntityInfo, "get_entity_info", entity="ns_robot")
     assert "/robot1" in info.info.description
@@ -358,7 +365,7 @@ def _filters(pattern: str = "", categories: tuple[int, ...] = ()) -> Any:
 
 
 def test_get_entities_filters(ros: RosClient) -> None:
-    assert spawn(ros, "q_robot", uri=str(SEED_XACRO), allow_renaming=True).result.result == OK
+    assert spawn(ros, "q_robot", xml=xacro_to_urdf(SEED_XACRO), allow_renaming=True).result.result == OK
     assert spawn(ros, "q_box", xml=box_sdf(), z=0.5).result.result == OK
     assert spawn(ros, "q_wall", xml=box_sdf("wall", static=True), z=0.5).result.result == OK
     res = call(ros, GetEntities, "get_entities", filters=_filters("^q_"))
@@ -418,7 +425,7 @@ def test_set_entity_state(ros: RosClient) -> None:
 
 
 def test_get_entity_info(ros: RosClient) -> None:
-    assert spawn(ros, "info_robot", uri=str(SEED_XACRO)).result.result == OK
+    assert spawn(ros, "info_robot", xml=xacro_to_urdf(SEED_XACRO)).result.result == OK
     res = call(ros, GetEntityInfo, "get_entity_info", entity="info_robot")
     assert res.result.result == OK
     assert res.info.category.category == EntityCategory.CATEGORY_ROBOT

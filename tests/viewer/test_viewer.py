@@ -180,10 +180,11 @@ def test_find_models_lists_model_folders_and_description_files(tmp_path) -> None
     (box / "model.sdf").write_text("<sdf version='1.6'><model name='my_box'/></sdf>")
     (box / "ignored.sdf").write_text("<sdf/>")  # model.config names the model's file
     (tmp_path / "robots").mkdir()
-    (tmp_path / "robots" / "r.urdf.xacro").write_text("<robot/>")
+    (tmp_path / "robots" / "r.urdf.xacro").write_text("<robot/>")  # never offered: the server runs no xacro
+    (tmp_path / "robots" / "r.urdf").write_text("<robot/>")
     (tmp_path / "notes.txt").write_text("")
     labels = {m.label for m in find_models(ResourceResolver(extra_paths=[tmp_path], env={}))}
-    assert labels == {"my_box/model.sdf", "robots/r.urdf.xacro"}
+    assert labels == {"my_box/model.sdf", "robots/r.urdf"}
 
 
 def test_trail_contacts_and_spawn_from_the_resource_paths(monkeypatch) -> None:
