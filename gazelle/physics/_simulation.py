@@ -15,6 +15,7 @@ import queue
 import threading
 import time
 from concurrent.futures import Future
+from concurrent.futures import TimeoutError as FutureTimeout
 from dataclasses import dataclass
 from typing import Any, Callable, TypeVar
 
@@ -112,13 +113,22 @@ class Simulation:
     def call(self, fn: Callable[[], T], timeout: float | None = 10.0) -> T:
         """Run ``fn`` on the simulation thread between two steps and return its result.
 
-        Raises whatever ``fn`` raises; ``TimeoutError`` if the sim thread does not get to it.
+        A call the sim thread has not started within ``timeout`` is cancelled, never applied
+        later: the caller was told it failed, so it must not happen behind its back. One already
+        running is waited for (its work is bounded), so its reply is the truth.
+
+        Raises whatever ``fn`` raises; ``TimeoutError`` if the sim thread did not get to it in time.
         """
         if not self.running or threading.current_thread() is self._thread:
             return fn()
         fut: Future = Future()
         self._queue.put((fn, fut))
-        return fut.result(timeout=timeout)
+        try:
+            return fut.result(timeout=timeout)
+        except FutureTimeout:
+            if fut.cancel():
+                raise TimeoutError(f"the simulation thread did not take the request within {timeout:g} s") from None
+            return fut.result()  # it started in the meantime: its outcome is the reply
 
     def _drain(self) -> None:
         while not self._queue.empty():  # cheap check first: this runs before every step

@@ -39,6 +39,7 @@ from ..description._model import quat_conj, quat_rotate
 from ..physics import Simulation, WorldError
 from ..systems._base import UpdateInfo
 from ..systems._bus import Endpoint, MsgType, Qos, Transform, TransformBatch
+from ._replies import guarded_service
 from ._convert import FROM_ROS, ROS_TYPES, TO_ROS, from_pose_msg, to_pose_msg, to_time
 
 WORLD_FRAMES = ("", "world", "map", "/map")
@@ -165,7 +166,7 @@ class SimulationNode(Node):
             (Empty, "/reset_simulation", self._reset_simulation),
             (Empty, "/reset_world", self._reset_world),
         ):
-            self._srv.append(self.create_service(srv_type, name, cb, callback_group=self._cb))
+            self._srv.append(self.create_service(srv_type, name, guarded_service(name, cb), callback_group=self._cb))
         from ._simulation_interfaces import register  # simulation_interfaces services under ~/
         register(self)
         sim.step_listeners.append(self._on_step)

@@ -78,6 +78,7 @@ from ..description._model import JointType, quat_rotate
 from ..physics import WorldError
 from ..physics._world import Entity, ErrorKind
 from ._convert import from_pose_msg, to_pose_msg, to_time
+from ._replies import guarded_service
 
 if TYPE_CHECKING:
     from ._bridge import SimulationNode
@@ -195,7 +196,9 @@ class SimulationInterfaces:
             (SetEntityState, "set_entity_state", self.set_entity_state),
             (GetEntityInfo, "get_entity_info", self.get_entity_info),
         ):
-            self.services.append(node.create_service(srv_type, f"~/{name}", fn, callback_group=self.cb))
+            self.services.append(
+                node.create_service(srv_type, f"~/{name}", guarded_service(name, fn), callback_group=self.cb)
+            )
         self.action = ActionServer(
             node,
             SimulateSteps,
