@@ -72,6 +72,9 @@ SEP = "::"
 MIN_MASS = 1e-6
 JOINT_ARMATURE = 1e-4
 """Rotor inertia added to every 1-dof joint (kg·m²): keeps light links well conditioned."""
+MAX_TREE_DEPTH = 1000
+"""Deepest link tree the builder accepts: MuJoCo's compiler refuses bodies nested deeper than ~1,020
+("depth limit exceeded in signature computation"); we say so up front, naming the link."""
 KINEMATIC_ARMATURE = 1e8
 """Armature of the dofs above a kinematic link (kg·m² or kg): contacts see an immovable obstacle."""
 
@@ -349,7 +352,20 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> Bui
     total_mass = sum((lk.inertial.mass if lk.inertial else 0.0) for lk in model.links) or 1.0
 
     def add_subtree(parent_body: mujoco.MjsBody, link_name: str, X_PC: Pose, joint: Joint | None) -> None:
-        link = links[link_name]
+        # iterative (an explicit stack), so a 5,000-link chain is no RecursionError
+        stack: list[tuple[mujoco.MjsBody, str, Pose, Joint | None, int]] = [(parent_body, link_name, X_PC, joint, 1)]
+        while stack:
+            parent, name, X, jnt, depth = stack.pop()
+            if depth > MAX_TREE_DEPTH:
+                raise BuildError(
+                    f"model '{model.name}': the link tree is deeper than {MAX_TREE_DEPTH} links (at link '{name}'); "
+                    "MuJoCo nests bodies at most ~1,000 deep"
+                )
+            body = _add_link_body(parent, links[name], X, jnt)
+            stack.extend((body, j.child, j.origin * j.child_offset, j, depth + 1) for j in reversed(children.get(name, [])))
+
+    def _add_link_body(parent_body: mujoco.MjsBody, link: Link, X_PC: Pose, joint: Joint | None) -> mujoco.MjsBody:
+        link_name = link.name
         body = parent_body.add_body(
             name=scoped(entity, link_name), pos=list(X_PC.position), quat=list(X_PC.orientation)
         )
@@ -374,8 +390,7 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> Bui
             _add_geom(spec, body, col, scoped(entity, f"{link_name}::{col.name or 'collision'}#{i}"), mass_hint)
             for param in unsimulated_surface_parameters(col):
                 ignored.setdefault(param, []).append(f"{link_name}/{col.name}")
-        for j in children.get(link_name, []):
-            add_subtree(body, j.child, j.origin * j.child_offset, j)
+        return body
 
     world = spec.worldbody
     X_WR = X_WM

@@ -36,6 +36,14 @@ MAX_CATCH_UP_SEC = 1.0
 _log = logging.getLogger("gazelle")
 
 
+def _shutdown_system(system: object) -> None:
+    """Shut down a system whose entity never made it into the world (its spawn failed)."""
+    try:
+        system.shutdown()  # type: ignore[attr-defined]
+    except Exception:  # noqa: BLE001 - the spawn already failed; say so and go on
+        _log.exception(f"{type(system).__name__}.shutdown raised after a failed spawn")
+
+
 @dataclass(frozen=True)
 class RtfSample:
     """Real-time factor measured over the last window."""
@@ -292,6 +300,8 @@ class Simulation:
             )
         except WorldError as err:
             if err.kind == ErrorKind.BUILD_FAILED:  # only then did this attempt configure systems
+                for system in pending:
+                    _shutdown_system(system)
                 self.bus.remove_owner(name)
             raise
         entity.systems.extend(pending)
@@ -388,7 +398,9 @@ class Simulation:
             out = self.world.add_entities(items)
         except WorldError:
             # the combined build failed: undo every configure, then add one at a time
-            for name in pending:
+            for name, systems in pending.items():
+                for system in systems:
+                    _shutdown_system(system)
                 self.bus.remove_owner(name)
             out = []
             for (model, _n, pose, ns, _r), name in zip(requests, names):
@@ -406,5 +418,7 @@ class Simulation:
                 for s in pending.get(name, []):
                     self.systems.add(name, s)
             elif name in pending:  # configured, then its build failed
+                for system in pending[name]:
+                    _shutdown_system(system)
                 self.bus.remove_owner(name)
         return out

@@ -42,6 +42,25 @@ class ErrorKind:
     DIVERGED = "diverged"
 
 
+def _describe(err: Exception) -> str:
+    """A one-line reason for a failed build: our own errors as they are, others with their type."""
+    if isinstance(err, (BuildError, WorldError)):
+        return str(err)
+    text = " ".join(str(err).split())
+    if isinstance(err, (ValueError, mujoco.FatalError)):
+        return text
+    return f"{type(err).__name__}: {text}" if text else type(err).__name__
+
+
+def _no_joint_message(entity: "Entity", joint: str) -> str:
+    """Why ``joint`` cannot be actuated: missing, or fixed (and then no MuJoCo joint exists)."""
+    for j in entity.model.joints:
+        if j.name == joint:
+            return f"joint '{joint}' of entity '{entity.name}' is {j.type.value}: it has no degree of freedom to drive"
+    movable = sorted(j.name for j in entity.model.joints if j.type.value != "fixed")
+    return f"entity '{entity.name}' has no joint '{joint}' (movable joints: {', '.join(movable) or 'none'})"
+
+
 @dataclass
 class Entity:
     """A model living in the world."""
@@ -139,11 +158,11 @@ class PhysicsWorld:
             if configure is not None:
                 configure(entity)
             self._recompile()
-        except (BuildError, ValueError, mujoco.FatalError) as err:
+        except Exception as err:  # noqa: BLE001 - whatever failed (builder, a plugin's configure, MuJoCo): undo it
             # the recompile either did not happen or failed, so model/data are the old ones;
             # removing what we added makes the spec match them again
             self._remove_elements(name)
-            raise WorldError(ErrorKind.BUILD_FAILED, f"cannot build '{name}': {err}") from None
+            raise WorldError(ErrorKind.BUILD_FAILED, f"cannot build '{name}': {_describe(err)}") from None
         entity.generation_added = self.generation
         self.entities[name] = entity
         mujoco.mj_forward(self.model, self.data)
@@ -184,6 +203,8 @@ class PhysicsWorld:
 
     def add_velocity_actuator(self, entity: Entity, joint: str, *, kv: float, force_limit: float | None) -> str:
         """Add a velocity servo on a MuJoCo joint of ``entity`` (call from ``configure``)."""
+        if self.spec.joint(scoped(entity.name, joint)) is None:
+            raise WorldError(ErrorKind.NOT_FOUND, _no_joint_message(entity, joint))
         act_name = scoped(entity.name, f"{joint}#vel")
         act = self.spec.add_actuator(name=act_name, target=scoped(entity.name, joint), trntype=mujoco.mjtTrn.mjTRN_JOINT)
         act.set_to_velocity(kv=kv)
@@ -218,7 +239,7 @@ class PhysicsWorld:
         """Set the armature (reflected rotor inertia, kg·m²) of a 1-dof joint; call from ``configure``."""
         j = self.spec.joint(scoped(entity.name, joint))
         if j is None:
-            raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity.name}' has no joint '{joint}'")
+            raise WorldError(ErrorKind.NOT_FOUND, _no_joint_message(entity, joint))
         j.armature = armature
 
     # ------------------------------------------------------------------ stepping
@@ -451,9 +472,9 @@ class PhysicsWorld:
                 entity = Entity(name, model, namespace, X_WM, built, spawned)
                 if configure is not None:
                     configure(entity)
-            except (BuildError, ValueError, mujoco.FatalError) as err:
+            except Exception as err:  # noqa: BLE001 - see add_entity
                 self._remove_elements(name)
-                out.append(WorldError(ErrorKind.BUILD_FAILED, f"cannot build '{name}': {err}"))
+                out.append(WorldError(ErrorKind.BUILD_FAILED, f"cannot build '{name}': {_describe(err)}"))
                 continue
             taken.add(name)
             added.append(entity)
@@ -462,10 +483,10 @@ class PhysicsWorld:
             return out
         try:
             self._recompile()
-        except (BuildError, ValueError, mujoco.FatalError) as err:
+        except Exception as err:  # noqa: BLE001 - see add_entity
             for e in added:
                 self._remove_elements(e.name)
-            raise WorldError(ErrorKind.BUILD_FAILED, f"cannot build the batch: {err}") from None
+            raise WorldError(ErrorKind.BUILD_FAILED, f"cannot build the batch: {_describe(err)}") from None
         for e in added:
             e.generation_added = self.generation
             self.entities[e.name] = e

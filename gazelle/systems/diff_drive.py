@@ -343,6 +343,9 @@ class DiffDrive(System):
             if jn not in joint_names:
                 self.log.error(f"Joint [{jn}] not found, plugin will not work.")
                 ok = False
+            elif model.joint(jn).type.value == "fixed":
+                self.log.error(f"Joint [{jn}] is fixed: a wheel needs a continuous or revolute joint; plugin will not work.")
+                ok = False
         if not ok:
             return
         for i in range(c.num_wheel_pairs):

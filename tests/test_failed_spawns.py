@@ -1,0 +1,129 @@
+"""A failed spawn, whatever failed, leaves the world bit-identical, the name free, and says why.
+
+Found by an attacker (issue 10): a 985-link chain raised RecursionError in the builder and left
+~989 orphan bodies; a plugin whose configuration failed left `repeated name 'dd::a'` debris;
+"entity 'dd' has no joint 'r'" when the joint existed but was fixed.
+"""
+
+from __future__ import annotations
+
+import logging
+
+import numpy as np
+import pytest
+
+from gazelle.description import Pose, load, load_string
+from gazelle.physics import Simulation, WorldError
+from gazelle.worlds import default_world
+from _paths import BOX, SEED_XACRO
+
+
+def chain(n: int, joint_type: str) -> str:
+    parts = ['<robot name="chain">']
+    inertial = (
+        '<inertial><mass value="0.1"/><inertia ixx="1e-3" iyy="1e-3" izz="1e-3" ixy="0" ixz="0" iyz="0"/></inertial>'
+    )
+    for i in range(n):
+        parts.append(f'<link name="l{i}">{inertial}</link>')
+        if i:
+            parts.append(
+                f'<joint name="j{i}" type="{joint_type}"><parent link="l{i - 1}"/><child link="l{i}"/>'
+                '<origin xyz="0 0 0.01"/><axis xyz="0 1 0"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
+            )
+    parts.append("</robot>")
+    return "".join(parts)
+
+
+def fingerprint(sim: Simulation) -> tuple:
+    """Everything a failed spawn must not change: the compiled model's sizes, the state, the names."""
+    m, d = sim.world.model, sim.world.data
+    return (
+        m.nbody, m.njnt, m.ngeom, m.nu, m.nmesh, m.neq,
+        d.qpos.tobytes(), d.qvel.tobytes(), d.ctrl.tobytes(), float(d.time),
+        tuple(sim.world.entities), len(sim.world.spec.bodies), len(sim.systems.systems()),
+        tuple(sorted(ep.topic for ep in sim.bus.endpoints())),
+    )
+
+
+@pytest.fixture
+def busy_sim() -> Simulation:
+    """A world with a driving robot and a falling box, stepped a little."""
+    sim = Simulation(default_world(), rtf=0.0)
+    sim.spawn(load(SEED_XACRO).value, name="robot", pose=Pose((0.0, 0.0, 0.05)))
+    sim.spawn(load_string(BOX).value, name="box", pose=Pose((2.0, 0.0, 1.0)))
+    sim.step(50)
+    return sim
+
+
+def assert_next_spawn_works(sim: Simulation, name: str) -> None:
+    before = fingerprint(sim)
+    sim.step(20)
+    again = fingerprint(sim)
+    assert before[:6] == again[:6]
+    e = sim.spawn(load_string(BOX).value, name=name, pose=Pose((-2.0, 0.0, 0.5)))
+    assert e.name == name
+    sim.step(5)
+
+
+@pytest.mark.parametrize("joint_type", ["fixed", "revolute"])
+@pytest.mark.parametrize("n", [985, 5000])
+def test_long_chains_fail_clearly_or_spawn_and_the_world_is_untouched(busy_sim: Simulation, n: int, joint_type: str):
+    model = load_string(chain(n, joint_type)).value
+    before = fingerprint(busy_sim)
+    if n <= 1000:
+        busy_sim.spawn(model, name="c")
+        busy_sim.delete("c")
+    else:
+        with pytest.raises(WorldError) as info:
+            busy_sim.spawn(model, name="c")
+        assert "deeper than 1000 links" in str(info.value) and "'l1000'" in str(info.value)
+        assert fingerprint(busy_sim) == before
+    assert_next_spawn_works(busy_sim, "c")
+
+
+def test_a_plugin_that_raises_in_configure_leaves_no_debris(busy_sim: Simulation, monkeypatch) -> None:
+    from gazelle.systems.diff_drive import DiffDrive
+
+    def broken(self, ctx):  # a bug in a plugin, of any exception type
+        ctx.world.add_velocity_actuator(ctx.entity, "base_left_wheel_joint", kv=1.0, force_limit=None)
+        raise KeyError("surprise")
+
+    robot = load(SEED_XACRO).value
+    before = fingerprint(busy_sim)
+    monkeypatch.setattr(DiffDrive, "configure", broken)
+    with pytest.raises(WorldError) as info:
+        busy_sim.spawn(robot, name="dd")
+    assert "cannot build 'dd': KeyError: 'surprise'" in str(info.value)
+    assert fingerprint(busy_sim) == before
+    monkeypatch.undo()
+    busy_sim.spawn(robot, name="dd", pose=Pose((0.0, 3.0, 0.05)))  # the same name, no "repeated name" debris
+    assert "dd" in busy_sim.world.entities
+
+
+def test_a_wheel_on_a_fixed_joint_is_named_as_fixed(busy_sim: Simulation, caplog) -> None:
+    from gazelle.description import SourceLocation  # noqa: F401 - the model is real xacro output
+
+    import xacro
+
+    urdf = xacro.process_file(str(SEED_XACRO)).toxml().replace(
+        'name="base_right_wheel_joint" type="continuous"', 'name="base_right_wheel_joint" type="fixed"'
+    )
+    assert 'type="fixed"' in urdf
+    with caplog.at_level(logging.ERROR):
+        busy_sim.spawn(load_string(urdf).value, name="dd", pose=Pose((0.0, 3.0, 0.05)))
+    text = "\n".join(r.getMessage() for r in caplog.records)
+    assert "Joint [base_right_wheel_joint] is fixed" in text, text
+    from gazelle.physics._world import _no_joint_message
+
+    assert "is fixed" in _no_joint_message(busy_sim.world.entities["dd"], "base_right_wheel_joint")
+    assert "movable joints: base_left_wheel_joint" in _no_joint_message(busy_sim.world.entities["dd"], "r")
+
+
+def test_a_failed_batch_member_leaves_the_others_and_the_world_intact(busy_sim: Simulation) -> None:
+    deep = load_string(chain(1200, "fixed")).value
+    box = load_string(BOX).value
+    before_names = tuple(busy_sim.world.entities)
+    out = busy_sim.spawn_many([(box, "b1", Pose((3.0, 3.0, 0.5)), "", False), (deep, "deep", Pose(), "", False)])
+    assert not isinstance(out[0], WorldError) and isinstance(out[1], WorldError)
+    assert tuple(busy_sim.world.entities) == (*before_names, "b1")
+    assert np.all(np.isfinite(busy_sim.world.data.qpos))
