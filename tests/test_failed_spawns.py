@@ -127,3 +127,41 @@ def test_a_failed_batch_member_leaves_the_others_and_the_world_intact(busy_sim: 
     assert not isinstance(out[0], WorldError) and isinstance(out[1], WorldError)
     assert tuple(busy_sim.world.entities) == (*before_names, "b1")
     assert np.all(np.isfinite(busy_sim.world.data.qpos))
+
+
+@pytest.mark.parametrize(("pose", "field"), [(Pose((0.0, 0.0, -1e12)), "position.z"), (Pose((1e308, 0.0, 0.0)), "position.x")])
+def test_absurd_poses_are_refused_with_the_field_named(busy_sim: Simulation, pose: Pose, field: str) -> None:
+    before = fingerprint(busy_sim)
+    with pytest.raises(WorldError) as info:
+        busy_sim.spawn(load_string(BOX).value, name="far", pose=pose)
+    assert field in str(info.value) and "out of range" in str(info.value)
+    with pytest.raises(WorldError) as info:
+        busy_sim.world.set_entity_state("box", pose)
+    assert field in str(info.value)
+    assert fingerprint(busy_sim) == before
+
+
+def test_a_diverging_entity_is_reported_once_then_summarised(busy_sim: Simulation, caplog) -> None:
+    """Poisoned every step for 2,000 steps (a reset loop): one ERROR line, not 2,000."""
+    d = busy_sim.world.data
+    with caplog.at_level(logging.ERROR, logger="gazelle"):
+        for _ in range(2000):
+            d.qvel[-1] = float("nan")  # the box's last dof
+            busy_sim.step()
+    errors = [r.getMessage() for r in caplog.records if r.levelno >= logging.ERROR]
+    assert 1 <= len(errors) <= 2, errors
+    assert "simulation of 'box' diverged" in errors[0]
+    assert np.all(np.isfinite(d.qpos))
+
+
+def test_unsimulated_contact_parameters_are_reported_once_per_model_file(caplog) -> None:
+    from _paths import REPO
+
+    sim = Simulation(default_world(), rtf=0.0)
+    piece = load(REPO / "examples" / "chessboard" / "chess_piece.sdf").value
+    with caplog.at_level(logging.WARNING, logger="gazelle.physics"):
+        for i in range(32):
+            sim.spawn(piece, name=f"p{i}", pose=Pose((0.1 * i, 0.0, 0.1)))
+    lines = [r.getMessage() for r in caplog.records if "not simulated" in r.getMessage()]
+    assert len(lines) == 1, lines
+    assert "<max_vel>" in lines[0] and "<min_depth>" in lines[0] and "chess_piece.sdf" in lines[0]

@@ -102,6 +102,8 @@ class BuiltEntity:
     equalities: list[str] = field(default_factory=list)
     kinematic_joints: list[str] = field(default_factory=list)
     """MuJoCo joints above kinematic links: moved only by set-state calls (see the module docstring)."""
+    unsimulated: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    """Contact parameters MuJoCo cannot honour -> the ``link/collision`` places that set them."""
 
 
 def friction_priority(mu: float) -> int:
@@ -417,9 +419,7 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> Bui
         add_subtree(world, j.child, X_WJ * j.child_offset, j)
         if not built.root_body:
             built.root_body = scoped(entity, j.child)
-    for param, where in ignored.items():
-        shown = ", ".join(where[:3]) + (f" and {len(where) - 3} more" if len(where) > 3 else "")
-        _log.warning(f"'{entity}': surface <{param}> is not simulated (MuJoCo has no counterpart), on {shown}")
+    built.unsimulated = {param: tuple(where) for param, where in ignored.items()}
     _exclude_self_collisions(spec, model, entity, built)
     return built
 

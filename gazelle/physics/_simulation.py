@@ -31,6 +31,8 @@ from ._world import Entity, ErrorKind, PhysicsWorld, WorldError
 
 T = TypeVar("T")
 
+DIVERGENCE_REPORT_SEC = 10.0
+"""After the first report of an entity's divergence, repeats are summarised at most this often."""
 MAX_CATCH_UP_SEC = 1.0
 """With a target RTF, a lag behind the wall clock up to this long is made up by running flat out."""
 _log = logging.getLogger("gazelle")
@@ -91,6 +93,8 @@ class Simulation:
         """Give every spawned robot the built-in robot_state_publisher (a model file may still opt out)."""
         self.diverged: dict[str, str] = {}
         """Entity name -> what went wrong, for entities that blew up."""
+        self._divergence_log: dict[str, tuple[int, float]] = {}
+        """Entity name -> (divergences not yet reported, wall time of the last report)."""
         self._state_views: tuple[Any, np.ndarray, np.ndarray] = (None, np.zeros(0), np.zeros(0))
         """(MjData, its qpos, its qvel): array views kept for the divergence check before every step."""
         for m in world.models:
@@ -251,10 +255,12 @@ class Simulation:
             return
         for name in self.world.diverged_entities() or ["<world>"]:
             reason = f"simulation of '{name}' diverged at t={self.world.time:.3f}s (NaN or runaway velocity)"
+            first = name not in self.diverged
             self.diverged[name] = reason
-            _log.error(reason + "; its state is reset to its spawn pose")
-            for listener in self.divergence_listeners:
-                listener(name, reason)
+            self._report_divergence(name, reason, first)
+            if first:
+                for listener in self.divergence_listeners:
+                    listener(name, reason)
             if name in self.world.entities:
                 e = self.world.entities[name]
                 bad = ~np.isfinite(d.qpos)
@@ -266,6 +272,26 @@ class Simulation:
         d.qacc_warmstart[:] = 0.0
         d.qvel[~np.isfinite(d.qvel)] = 0.0
         mujoco.mj_forward(self.world.model, d)
+
+    def _report_divergence(self, name: str, reason: str, first: bool) -> None:
+        """Log a divergence once, then at most a summary every :data:`DIVERGENCE_REPORT_SEC` of wall time.
+
+        An entity that keeps diverging (reset, diverge, reset...) logged 2,006 lines a second.
+        """
+        now = time.monotonic()
+        count, last = self._divergence_log.get(name, (0, -math.inf))
+        if first:
+            _log.error(reason + "; its state is reset to its spawn pose (repeats are summarised)")
+            self._divergence_log[name] = (0, now)
+            return
+        count += 1
+        if now - last >= DIVERGENCE_REPORT_SEC:
+            _log.error(
+                f"simulation of '{name}' diverged {count} more time(s) in the last {now - last:.0f} s, "
+                "each time reset to its spawn pose; delete it or fix its model (inertia, joint limits, start pose)"
+            )
+            count, last = 0, now
+        self._divergence_log[name] = (count, last)
 
     # ------------------------------------------------------------------ entities
     def _configure_plugins(self, entity: Entity, into: list) -> None:
@@ -333,6 +359,7 @@ class Simulation:
             self.bus.remove_owner(name)
             self.world.remove_entity(name)
             self.diverged.pop(name, None)
+            self._divergence_log.pop(name, None)
 
         self.call(do)
 

@@ -6,6 +6,7 @@ owns one and serialises every access through its command queue.
 
 from __future__ import annotations
 
+import logging
 import math
 import re
 from dataclasses import dataclass, field
@@ -17,6 +18,11 @@ import numpy as np
 from ..description import Model, Pose, World, excerpt
 from ..description._model import quat_conj, quat_rotate
 from ._builder import JOINT_ARMATURE, SEP, BuildError, BuiltEntity, add_model, scoped
+
+_log = logging.getLogger("gazelle.physics")
+MAX_COORDINATE_M = 1.0e5
+"""Farthest a spawn or set-state may place anything from the origin (100 km): beyond, float64
+positions lose the millimetres contacts need, and such a pose is a mistake or an attack."""
 
 _ONE_DOF = (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
 ENTITY_NAME_RE = re.compile(r"^[A-Za-z_][A-Za-z0-9_\-.]*(/[A-Za-z_][A-Za-z0-9_\-.]*)*$")
@@ -40,6 +46,14 @@ class ErrorKind:
     BUILD_FAILED = "build_failed"
     INCORRECT_STATE = "incorrect_state"
     DIVERGED = "diverged"
+
+
+def pose_out_of_range(pose: Pose, field_name: str) -> str | None:
+    """Why a pose is absurd (a coordinate beyond :data:`MAX_COORDINATE_M`), naming the field, or None."""
+    for axis, v in zip("xyz", pose.position):
+        if abs(v) > MAX_COORDINATE_M:
+            return f"{field_name}.{axis} = {v:g} m is out of range (at most {MAX_COORDINATE_M:g} m from the origin)"
+    return None
 
 
 def _describe(err: Exception) -> str:
@@ -108,6 +122,8 @@ class PhysicsWorld:
         """Bumped at every recompile: indices cached against an older generation are stale."""
         self._before_compile: list[Callable[[], None]] = []
         self._kinematics_stale = False
+        self._reported: dict[tuple[str, tuple[str, ...]], int] = {}
+        """(model source, unsimulated parameters) -> how many entities had them (reported at the first)."""
         self._held: tuple[np.ndarray, np.ndarray] | None | bool = False
         """(qpos addresses, dof addresses) of the hinge/slide dofs above kinematic links; False = not indexed yet."""
         self.model: mujoco.MjModel = self.spec.compile()
@@ -146,6 +162,9 @@ class PhysicsWorld:
             )
         if not all(math.isfinite(v) for v in (*X_WM.position, *X_WM.orientation)):
             raise WorldError(ErrorKind.INVALID_POSE, f"pose of '{name}' is not finite: {X_WM}")
+        far = pose_out_of_range(X_WM, "position")
+        if far is not None:
+            raise WorldError(ErrorKind.INVALID_POSE, f"pose of '{name}': {far}")
         qn = math.sqrt(sum(v * v for v in X_WM.orientation))
         if qn < 1e-9:
             raise WorldError(ErrorKind.INVALID_POSE, f"orientation of '{name}' is a zero quaternion")
@@ -165,8 +184,30 @@ class PhysicsWorld:
             raise WorldError(ErrorKind.BUILD_FAILED, f"cannot build '{name}': {_describe(err)}") from None
         entity.generation_added = self.generation
         self.entities[name] = entity
+        self._report_unsimulated(entity)
         mujoco.mj_forward(self.model, self.data)
         return entity
+
+    def _report_unsimulated(self, entity: Entity) -> None:
+        """One warning per model file (or string) for the contact parameters MuJoCo cannot honour,
+        naming them all with their places; the same file spawned again is not reported again
+        (32 chess pieces made 100 lines)."""
+        params = entity.built.unsimulated
+        if not params:
+            return
+        key = (entity.model.source_file or entity.model.name, tuple(sorted(params)))
+        if key in self._reported:
+            self._reported[key] += 1
+            return
+        self._reported[key] = 1
+        places = sorted({w for where in params.values() for w in where})
+        shown = ", ".join(places[:3]) + (f" and {len(places) - 3} more" if len(places) > 3 else "")
+        names = ", ".join(f"<{p}>" for p in sorted(params))
+        source = f" ({entity.model.source_file})" if entity.model.source_file else ""
+        _log.warning(
+            f"'{entity.name}'{source}: surface {names} not simulated (MuJoCo has no counterpart; see "
+            f"docs/contact_parameters.md), on {shown}; later spawns of this model are not reported again"
+        )
 
     def _remove_elements(self, name: str) -> None:
         prefix = name + SEP
@@ -359,6 +400,9 @@ class PhysicsWorld:
         vals = (*pose.position, *pose.orientation, *linear, *angular)
         if not all(math.isfinite(v) for v in vals):
             raise WorldError(ErrorKind.INVALID_POSE, f"state for '{entity}' is not finite")
+        far = pose_out_of_range(pose, "pose.position")
+        if far is not None:
+            raise WorldError(ErrorKind.INVALID_POSE, f"state for '{entity}': {far}")
         qn = math.sqrt(sum(v * v for v in pose.orientation))
         if qn < 1e-9:
             raise WorldError(ErrorKind.INVALID_POSE, "orientation is a zero quaternion")
@@ -462,6 +506,10 @@ class PhysicsWorld:
             if not all(math.isfinite(v) for v in (*X_WM.position, *X_WM.orientation)):
                 out.append(WorldError(ErrorKind.INVALID_POSE, f"pose of '{name}' is not finite: {X_WM}"))
                 continue
+            far = pose_out_of_range(X_WM, "position")
+            if far is not None:
+                out.append(WorldError(ErrorKind.INVALID_POSE, f"pose of '{name}': {far}"))
+                continue
             qn = math.sqrt(sum(v * v for v in X_WM.orientation))
             if qn < 1e-9:
                 out.append(WorldError(ErrorKind.INVALID_POSE, f"orientation of '{name}' is a zero quaternion"))
@@ -490,5 +538,6 @@ class PhysicsWorld:
         for e in added:
             e.generation_added = self.generation
             self.entities[e.name] = e
+            self._report_unsimulated(e)
         mujoco.mj_forward(self.model, self.data)
         return out

@@ -36,7 +36,7 @@ from std_srvs.srv import Empty
 
 from ..description import Model, ModelLoadError, Pose, World, load_string, reply_text
 from ..description._model import quat_conj, quat_rotate
-from ..physics import Simulation, WorldError
+from ..physics import Simulation, WorldError, pose_out_of_range
 from ..systems._base import UpdateInfo
 from ..systems._bus import Endpoint, MsgType, Qos, Transform, TransformBatch
 from ._replies import guarded_service
@@ -327,6 +327,9 @@ class SimulationNode(Node):
         for v in (*pose.position, *pose.orientation):
             if not math.isfinite(v):
                 raise WorldError("invalid_pose", f"initial_pose is not finite: {pose}")
+        far = pose_out_of_range(pose, "initial_pose.position")
+        if far is not None:
+            raise WorldError("invalid_pose", far)
         try:
             result = load_string(xml, source=source)
         except ModelLoadError as err:

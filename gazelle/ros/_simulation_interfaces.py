@@ -75,7 +75,7 @@ from ..description import (
     reply_text,
 )
 from ..description._model import JointType, quat_rotate
-from ..physics import WorldError
+from ..physics import WorldError, pose_out_of_range
 from ..physics._world import Entity, ErrorKind
 from ._convert import from_pose_msg, to_pose_msg, to_time
 from ._replies import guarded_service
@@ -423,6 +423,9 @@ class SimulationInterfaces:
             p.position.x, p.position.y, p.position.z, p.orientation.x, p.orientation.y, p.orientation.z, p.orientation.w
         ):
             raise _Refused(R.INVALID_POSE, "initial_pose is not finite (NaN or inf)")
+        far = pose_out_of_range(from_pose_msg(p), "initial_pose.pose.position")
+        if far is not None:
+            raise _Refused(R.INVALID_POSE, far)
         if namespace and not _NAMESPACE_RE.match(namespace):
             raise _Refused(R.NAMESPACE_INVALID, f"entity_namespace {namespace!r} is not a valid ROS namespace")
         if uri:
