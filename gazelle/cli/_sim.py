@@ -14,6 +14,13 @@ from ..worlds import default_world
 
 
 GIL_SWITCH_INTERVAL_SEC = 0.0002
+SHUTDOWN_DEADLINE_SEC = 2.5
+"""SIGINT/SIGTERM end the process within this long, even if a thread is stuck (then with status 1)."""
+
+
+def _force_exit() -> None:
+    print(f"gazelle: shutdown did not finish within {SHUTDOWN_DEADLINE_SEC:g} s; exiting now", file=sys.stderr, flush=True)
+    os._exit(1)
 
 
 def load_world(path: Path | None, args: dict[str, str]) -> World:
@@ -107,6 +114,11 @@ def run_sim(
             rc = 1
             break
     print("gazelle: shutting down", flush=True)
+    # the user asked to stop: whatever a thread is in the middle of, the process ends within
+    # SHUTDOWN_DEADLINE_SEC (an orderly shutdown takes ~0.3 s)
+    watchdog = threading.Timer(SHUTDOWN_DEADLINE_SEC, _force_exit)
+    watchdog.daemon = True
+    watchdog.start()
     if view is not None:
         view.stop()
     sim.stop()

@@ -111,3 +111,24 @@ def test_a_dead_ros_thread_is_reported_with_its_traceback(monkeypatch, caplog):
         assert any("ROS executor thread crashed" in r.getMessage() and r.exc_info for r in caplog.records)
     finally:
         bridge.shutdown()
+
+
+@pytest.mark.parametrize("signum", ["SIGINT", "SIGTERM"])
+def test_a_signal_stops_a_busy_server_within_3_s(ros_client, signum):
+    """A 999-link chain makes every step cost ~80 ms and a request in flight; the server still stops in 3 s."""
+    import signal
+
+    from test_failed_spawns import chain
+
+    from .conftest import GAZELLE, start
+
+    proc = start([*GAZELLE, "sim", "--no-viewer", "--rtf", "0"], "gazelle sim")
+    proc.wait_line("gazelle: ready", timeout=60)
+    assert _spawn(ros_client, "chain", chain(999, "revolute"), timeout=60).success
+    # a request in flight while the signal arrives
+    ros_client.client(GetModelList, "/get_model_list").call_async(GetModelList.Request())
+    t0 = time.monotonic()
+    proc.popen.send_signal(getattr(signal, signum))
+    rc = proc.wait(30)
+    assert time.monotonic() - t0 < 3.0, proc.output
+    assert rc in (0, 1), proc.output
