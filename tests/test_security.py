@@ -122,3 +122,75 @@ def test_errors_echo_only_an_excerpt_of_a_long_value() -> None:
     err = _refused(f'<robot name="r"><link name="a"><collision><geometry><box size="{huge}"/></geometry></collision></link></robot>')
     text = err.summary()
     assert "characters" in text and len(text) < 600, text
+
+
+def _box_model(name: str) -> str:
+    return (
+        f'<sdf version="1.9"><model name="{name}"><link name="l"><inertial><mass>1</mass></inertial>'
+        '<collision name="c"><geometry><box><size>0.1 0.1 0.1</size></box></geometry></collision></link></model></sdf>'
+    )
+
+
+@pytest.fixture
+def roots(tmp_path: Path):
+    """A resource root with a good model, a model whose model.sdf links to a secret outside, and a secret."""
+    from gazelle.description import ResourceResolver
+
+    root = tmp_path / "models"
+    (root / "good").mkdir(parents=True)
+    (root / "good" / "model.sdf").write_text(_box_model("good"))
+    outside = tmp_path / "private"
+    outside.mkdir()
+    secret = outside / "secret.sdf"
+    secret.write_text(_box_model("SECRET_CONTENT"))
+    (root / "evil").mkdir()
+    (root / "evil" / "model.sdf").symlink_to(secret)
+    (root / "linked_dir").symlink_to(outside)  # a whole folder linking out
+    return ResourceResolver(extra_paths=[root], env={}), root, secret
+
+
+def _world(include_uri: str) -> str:
+    return f'<sdf version="1.9"><world name="w"><include><uri>{include_uri}</uri></include></world></sdf>'
+
+
+def test_model_uris_do_not_follow_symlinks_out_of_the_resource_paths(roots) -> None:
+    resolver, root, secret = roots
+    ok = load_string(_world("model://good"), resolver=resolver).value
+    assert [m.name for m in ok.models] == ["good"]
+    for uri in ("model://evil", "model://linked_dir/secret.sdf", str(secret), f"file://{secret}"):
+        with pytest.raises(ModelLoadError) as info:
+            load_string(_world(uri), resolver=resolver)
+        assert "SECRET_CONTENT" not in str(info.value)
+        first = info.value.first
+        assert first is not None and first.code is ErrorCode.URI_UNRESOLVED or "outside" in str(info.value), str(info.value)
+    assert resolver.resolve_uri("model://evil/model.sdf") is None
+
+
+def test_includes_in_a_users_world_file_are_confined_like_spawn_by_uri(roots, tmp_path: Path) -> None:
+    resolver, root, secret = roots
+    world = tmp_path / "mine" / "w.sdf"
+    world.parent.mkdir()
+    (world.parent / "local.sdf").write_text(_box_model("local"))
+    world.write_text(
+        '<sdf version="1.9"><world name="w"><include><uri>local.sdf</uri></include>'
+        f"<include><uri>{secret}</uri></include></world></sdf>"
+    )
+    with pytest.raises(ModelLoadError) as info:
+        load(world, resolver=resolver)
+    assert "outside the folders files may be read from" in str(info.value) and "GAZELLE_RESOURCE_PATH" in str(info.value)
+    # the folder of the user's own file may be read
+    world.write_text('<sdf version="1.9"><world name="w"><include><uri>local.sdf</uri></include></world></sdf>')
+    assert [m.name for m in load(world, resolver=resolver).value.models] == ["local"]
+
+
+def test_a_spawn_string_reads_no_file_outside_the_resource_paths(roots) -> None:
+    resolver, root, secret = roots
+    urdf = (
+        '<robot name="r"><link name="a"><visual><geometry><mesh filename="file:///etc/passwd"/></geometry></visual>'
+        '<collision><geometry><mesh filename="/etc/passwd"/></geometry></collision></link></robot>'
+    )
+    result = load_string(urdf, resolver=resolver)
+    link = result.value.links[0]
+    assert link.visuals[0].geometry.path is None
+    messages = " ".join(d.message for d in result.diagnostics)
+    assert "outside the folders files may be read from" in messages and "root:" not in messages

@@ -190,6 +190,8 @@ def load_string(
         )
     source = source or f"<string>.{fmt}"
     resolver = resolver or ResourceResolver()
+    if not source.startswith("<"):  # the folder of a file (the user's, or one found on the roots) may be read
+        resolver = resolver.trusting(Path(source).parent)
     sink = DiagnosticSink(strict=strict)
     base_dir = str(Path(source).parent) if not source.startswith("<") else os.getcwd()
     value: Model | World | object | None

@@ -13,7 +13,7 @@ import enum
 import re
 from dataclasses import dataclass, field
 
-EXCERPT_CHARS = 60
+EXCERPT_CHARS = 160
 """The longest excerpt of a user's value that a message echoes (then ``…`` and its length)."""
 MESSAGE_CHARS = 600
 """The longest diagnostic message; error replies go over the wire, so they stay short."""

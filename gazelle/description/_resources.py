@@ -8,7 +8,12 @@ Search order for a package or model name ``NAME``:
 2. the ament index: ``<prefix>/share/NAME`` for each prefix in ``AMENT_PREFIX_PATH``
    that registers ``NAME`` in ``share/ament_index/resource_index/packages``.
 
-Only names that resolve this way are read: a URI never escapes the folder it resolves to.
+Only names that resolve this way are read: a URI never escapes the folder it resolves to,
+and no file is read from outside the *allowed folders*: the resource roots (the search paths
+and the ament prefixes' ``share``), the folder of the file the user named (``trusted_dirs``),
+and, for a package installed by ``colcon build --symlink-install``, the source folder its
+``package.xml`` links to. Symbolic links are resolved first, so a ``model.sdf`` that links to
+``/etc/passwd`` is not read. A description that arrives as a string has no trusted folder.
 """
 
 from __future__ import annotations
@@ -38,6 +43,29 @@ class ResourceResolver:
     """Folders searched before the environment's."""
     env: dict[str, str] | None = None
     """Environment to read (defaults to ``os.environ``)."""
+    trusted_dirs: list[Path] = field(default_factory=list)
+    """Folders besides the resource roots whose files may be read: the folder of the file the user named."""
+
+    def trusting(self, folder: str | os.PathLike[str] | None) -> "ResourceResolver":
+        """This resolver, also allowing files under ``folder`` (the folder of a file the user named)."""
+        if folder is None:
+            return self
+        return ResourceResolver(list(self.extra_paths), self.env, [*self.trusted_dirs, Path(folder)])
+
+    def allowed_roots(self) -> list[Path]:
+        """Every folder a file may be read from (resolved): the roots and the trusted folders."""
+        return [*self.roots(), *(t.resolve() for t in self.trusted_dirs if t.is_dir())]
+
+    def allowed(self, path: str | os.PathLike[str]) -> bool:
+        """Whether ``path``, with its symbolic links resolved, lies in an allowed folder."""
+        real = Path(path).resolve()
+        for root in self.allowed_roots():
+            if real == root or root in real.parents:
+                return True
+            source = _symlinked_source(root, real)
+            if source is not None:
+                return True
+        return False
 
     def search_paths(self) -> list[Path]:
         """Folders whose sub-folders are packages or models, in search order."""
@@ -78,7 +106,7 @@ class ResourceResolver:
                 if root is None:
                     return None
                 path = (root / sub).resolve()
-                if path != root and root not in path.parents:
+                if path != root and root not in path.parents and not _in_package_source(root, path):
                     return None
                 return path
         if uri.startswith("file://"):
@@ -87,8 +115,48 @@ class ResourceResolver:
             return None
         path = Path(uri)
         if not path.is_absolute():
-            path = Path(base_dir or ".") / path
-        return path.resolve()
+            if base_dir is None:
+                return None
+            path = Path(base_dir) / path
+        path = path.resolve()
+        return path if self.allowed(path) else None
+
+    def unresolved_reason(self, uri: str, base_dir: str | os.PathLike[str] | None = None) -> str:
+        """Why :meth:`resolve_uri` gave None for ``uri``: an unknown package, or a file outside the allowed folders."""
+        raw = uri.strip()
+        if raw.startswith(("package://", "model://")):
+            name = raw.split("://", 1)[1].partition("/")[0]
+            if self.find_package(name) is None:
+                return f"package or model '{name}' not found (is it on GAZELLE_RESOURCE_PATH or the ament index?)"
+            return self.refusal(uri)
+        if "://" in raw and not raw.startswith("file://"):
+            return f"unsupported URI scheme in '{uri}' (nothing is downloaded)"
+        return self.refusal(uri) if self.refused(uri, base_dir) else f"no such file: {uri}"
+
+    def refused(self, uri: str, base_dir: str | os.PathLike[str] | None = None) -> bool:
+        """Whether ``uri`` names an existing file that is not read because it lies outside the allowed folders."""
+        raw = uri.strip()
+        if raw.startswith(("package://", "model://")):
+            name, _, sub = raw.split("://", 1)[1].partition("/")
+            root = self.find_package(name)
+            return root is not None and (root / sub).exists() and self.resolve_uri(uri, base_dir) is None
+        raw = raw[len("file://"):] if raw.startswith("file://") else raw
+        if "://" in raw:
+            return False
+        path = Path(raw)
+        if not path.is_absolute():
+            if base_dir is None:
+                return False
+            path = Path(base_dir) / path
+        return path.exists() and not self.allowed(path)
+
+    def refusal(self, uri: str) -> str:
+        """Why a URI that names an existing file is not read (for error messages)."""
+        roots = ", ".join(str(r) for r in self.allowed_roots()) or "none"
+        return (
+            f"'{uri}' is outside the folders files may be read from (after resolving symbolic links); "
+            f"add its folder to GAZELLE_RESOURCE_PATH. Allowed: {roots}"
+        )
 
     def roots(self) -> list[Path]:
         """Every folder a resource may come from: the search paths and the ament prefixes' share folders."""
@@ -102,3 +170,25 @@ class ResourceResolver:
         path = path.resolve()
         return any(path == root or root in path.parents for root in self.roots())
 
+
+
+def _in_package_source(package_root: Path, path: Path) -> bool:
+    """Whether ``path`` is in the source folder of a package installed with ``--symlink-install``
+    (colcon links ``share/PKG/package.xml`` and the package's files to the source tree)."""
+    manifest = package_root / "package.xml"
+    if not manifest.is_symlink():
+        return False
+    source = manifest.resolve().parent
+    return path == source or source in path.parents
+
+
+def _symlinked_source(root: Path, path: Path) -> Path | None:
+    """The symlink-install source folder of the package under ``root`` that holds ``path``, if any."""
+    try:
+        candidates = [root, *(p for p in root.iterdir() if p.is_dir())] if root.is_dir() else []
+    except OSError:
+        return None
+    for pkg in candidates:
+        if _in_package_source(pkg, path):
+            return pkg
+    return None

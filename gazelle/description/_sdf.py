@@ -507,8 +507,12 @@ class _Loader:
         if found is not None:
             return found
         here = doc.base_dir
+        if not self.resolver.allowed(here):  # a string's working directory is no model collection
+            return None
         for cand in (here if here.name == name else None, here.parent / name):
             if cand is not None and cand.is_dir() and name not in ("", ".", ".."):
+                # a sibling of a model the user pointed at (models/a includes model://b): its files may be read
+                self.resolver = self.resolver.trusting(cand)
                 return cand.resolve()
         return None
 
@@ -565,8 +569,14 @@ class _Loader:
         path = None if "://" in uri and not uri.startswith(("model://", "package://", "file://")) else self.resolve(uri, doc)
         if path is not None and path.is_dir():
             path = self.pick_sdf(path, loc)
+        if path is None and self.resolver.refused(uri, doc.base_dir):
+            self.sink.error(ErrorCode.URI_UNRESOLVED, f"include {self.resolver.refusal(uri)}", loc)
+            return None
         if path is None or not path.is_file():
             self.sink.warning(ErrorCode.URI_UNRESOLVED, f"cannot resolve include URI '{uri}'; include skipped", loc)
+            return None
+        if not self.resolver.allowed(path):  # e.g. a model.sdf that links out of the resource paths
+            self.sink.error(ErrorCode.URI_UNRESOLVED, f"include {self.resolver.refusal(uri)}", loc)
             return None
         try:
             text = path.read_text(encoding="utf-8")
@@ -1029,7 +1039,11 @@ class _Loader:
             scale = self.vector(shape, "scale", 3, (1.0, 1.0, 1.0), doc)
             path = self.resolve(uri, doc) if ("://" not in uri or uri.startswith(("model://", "package://", "file://"))) else None
             if path is None or not path.is_file():
-                self.sink.warning(ErrorCode.MESH_NOT_FOUND, f"mesh '{uri}' not found", loc)
+                why = f": {self.resolver.unresolved_reason(uri, doc.base_dir)}" if path is None else ""
+                self.sink.warning(ErrorCode.MESH_NOT_FOUND, f"mesh '{uri}' not found{why}", loc)
+                return Mesh(uri, None, scale)
+            if not self.resolver.allowed(path):
+                self.sink.warning(ErrorCode.URI_UNRESOLVED, f"mesh {self.resolver.refusal(uri)}", loc)
                 return Mesh(uri, None, scale)
             return Mesh(uri, str(path), scale)
         if kind == "empty":

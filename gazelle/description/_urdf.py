@@ -337,7 +337,7 @@ class _Reader:
         if path is None:
             self.warn(
                 ErrorCode.URI_UNRESOLVED,
-                f"cannot resolve mesh URI '{uri}' (is the package on GAZELLE_RESOURCE_PATH or the ament index?)",
+                f"cannot resolve mesh URI '{uri}': {self.resolver.unresolved_reason(uri, base)}",
                 element,
             )
             return None

@@ -401,6 +401,8 @@ class SimulationInterfaces:
             path = found
         if not path.is_file():
             raise _Refused(SpawnEntity.Response.NO_RESOURCE, f"uri '{uri}': no such file {path}")
+        if not self.resolver.allowed(path):  # a model.sdf that links out of the resource paths is not read
+            raise _Refused(SpawnEntity.Response.NO_RESOURCE, f"uri {self.resolver.refusal(uri)}")
         fmt = format_for_path(path)
         if fmt is None or fmt == "srdf":
             raise _Refused(

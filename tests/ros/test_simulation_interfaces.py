@@ -62,6 +62,10 @@ def server(tmp_path_factory: pytest.TempPathFactory, ros_env: dict[str, str]) ->
     (res / "crate").mkdir()
     (res / "crate" / "model.sdf").write_text(box_sdf("crate", 0.3))
     (res / "notes.txt").write_text("not a model")
+    secret = tmp_path_factory.mktemp("private") / "secret.sdf"
+    secret.write_text(box_sdf("SECRET_MODEL"))
+    (res / "evil").mkdir()
+    (res / "evil" / "model.sdf").symlink_to(secret)  # a link out of the resource paths is never followed
     env = dict(ros_env, GAZELLE_RESOURCE_PATH=str(res))
     proc = start([*GAZELLE, "sim", "--paused"], "gazelle sim", env=env)
     proc.wait_line("gazelle: ready", timeout=60)
@@ -280,6 +284,9 @@ def test_spawn_entity_uri_and_renaming(ros: RosClient, server: Proc) -> None:
     )
     crate = spawn(ros, uri="model://crate", z=0.5)
     assert crate.result.result == OK and crate.entity_name == "crate"
+    evil = spawn(ros, "x", uri="model://evil")
+    assert evil.result.result == SpawnEntity.Response.NO_RESOURCE and "SECRET_MODEL" not in evil.result.error_message
+    assert "outside" in evil.result.error_message, evil.result.error_message
     for uri in ("model://no_such_model", "model://crate/../../../etc/passwd", "package://nope/x.urdf", "http://x/y.sdf"):
         r = spawn(ros, "x", uri=uri)
         assert r.result.result == SpawnEntity.Response.NO_RESOURCE, uri
