@@ -55,6 +55,13 @@ def sim(
         "127.0.0.1", "--viewer-host", help="Interface the viewer binds to (0.0.0.0: every interface; think twice)."
     ),
     viewer_port: int = typer.Option(8080, "--viewer-port", help="Viewer port; the next free one if taken; 0 = any free port."),
+    ros_discovery: Optional[str] = typer.Option(
+        None,
+        "--ros-discovery",
+        help="ROS discovery range of the server: localhost (default unless ROS_AUTOMATIC_DISCOVERY_RANGE, "
+        "ROS_LOCALHOST_ONLY or ROS_STATIC_PEERS is set), subnet (anyone on the network can call its services), "
+        "or off.",
+    ),
     viewer_allow_origin: list[str] = typer.Option(
         [],
         "--viewer-allow-origin",
@@ -76,8 +83,15 @@ def sim(
             viewer_host=viewer_host,
             viewer_port=viewer_port,
             viewer_allow_origins=_origins(viewer_allow_origin),
+            ros_discovery=_discovery(ros_discovery),
         )
     )
+
+
+def _discovery(value: Optional[str]) -> Optional[str]:
+    if value is not None and value.lower() not in ("localhost", "subnet", "off"):
+        raise typer.BadParameter(f"--ros-discovery is localhost, subnet or off, got {value!r}")
+    return value.lower() if value is not None else None
 
 
 def _origins(values: list[str]) -> tuple[str, ...]:

@@ -56,6 +56,7 @@ def run_sim(
     viewer_host: str = "127.0.0.1",
     viewer_port: int = 8080,
     viewer_allow_origins: tuple[str, ...] = (),
+    ros_discovery: str | None = None,
 ) -> int:
     """Run the server; returns the process exit code."""
     logging.basicConfig(level=logging.INFO, format="[%(levelname)s] [%(name)s]: %(message)s", stream=sys.stderr)
@@ -66,6 +67,7 @@ def run_sim(
         return 1
     from ..physics import Simulation
     from ..ros._bridge import RosBridge
+    from ..ros._exposure import choose_discovery_range
 
     # rclpy prints our records itself once the bridge is up
     for h in list(logging.getLogger().handlers):
@@ -74,9 +76,10 @@ def run_sim(
     # for the interpreter's switch interval, 5 ms by default: at 30x real time that is
     # 150 ms of sim time between a command and its effect. 0.2 ms keeps it to ~6 ms.
     sys.setswitchinterval(GIL_SWITCH_INTERVAL_SEC)
+    discovery = choose_discovery_range(ros_discovery)
     sim = Simulation(world, rtf=rtf)
     sim.paused = paused
-    bridge = RosBridge(sim, clock_rate_hz=clock_rate_hz)
+    bridge = RosBridge(sim, clock_rate_hz=clock_rate_hz, announce=True)
     stop = threading.Event()
 
     def on_signal(signum: int, _frame: object) -> None:
@@ -100,7 +103,7 @@ def run_sim(
     print(
         f"gazelle: ready: world '{world.name}' ({len(sim.world.entities)} entities), "
         f"step {sim.world.timestep * 1000:g} ms, real-time factor {target}, "
-        f"ROS_DOMAIN_ID={os.environ.get('ROS_DOMAIN_ID', '0')}",
+        f"ROS_DOMAIN_ID={os.environ.get('ROS_DOMAIN_ID', '0')}, discovery {discovery}",
         flush=True,
     )
     rc = 0
@@ -111,6 +114,10 @@ def run_sim(
             break
         if not bridge.alive:
             print(f"gazelle: ROS executor thread stopped ({bridge.failure!r}); exiting", file=sys.stderr)
+            rc = 1
+            break
+        if bridge.registry is not None and bridge.registry.conflict is not None:
+            print(f"gazelle: {bridge.registry.conflict}; exiting", file=sys.stderr)
             rc = 1
             break
     print("gazelle: shutting down", flush=True)

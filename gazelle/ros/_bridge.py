@@ -39,6 +39,7 @@ from ..description._model import quat_conj, quat_rotate
 from ..physics import Simulation, WorldError, pose_out_of_range
 from ..systems._base import UpdateInfo
 from ..systems._bus import Endpoint, MsgType, Qos, Transform, TransformBatch
+from ._exposure import ServerRegistry
 from ._replies import guarded_service
 from ._convert import FROM_ROS, ROS_TYPES, TO_ROS, from_pose_msg, to_pose_msg, to_time
 
@@ -467,7 +468,16 @@ class SimulationNode(Node):
 class RosBridge:
     """Owns rclpy's context, the node and an executor thread for a simulation."""
 
-    def __init__(self, sim: Simulation, *, clock_rate_hz: float = 100.0, args: list[str] | None = None):
+    def __init__(
+        self, sim: Simulation, *, clock_rate_hz: float = 100.0, args: list[str] | None = None, announce: bool = False
+    ):
+        """
+        Args:
+            sim: the simulation to serve.
+            clock_rate_hz: /clock rate in sim time.
+            args: ROS arguments for rclpy.
+            announce: take part in the one-server-per-domain check (``gazelle sim`` does).
+        """
         self.context = rclpy.Context()
         rclpy.init(args=args, context=self.context)
         self._handler = _RosLogHandler()
@@ -476,6 +486,8 @@ class RosBridge:
         if root.level > logging.INFO or root.level == logging.NOTSET:
             root.setLevel(logging.INFO)
         self.node = SimulationNode(sim, clock_rate_hz=clock_rate_hz, context=self.context)
+        self.registry = ServerRegistry(self.node) if announce else None
+        """Notices another server on the same ROS domain (``registry.conflict``)."""
         self.executor = MultiThreadedExecutor(num_threads=4, context=self.context)
         self.executor.add_node(self.node)
         self.failure: BaseException | None = None

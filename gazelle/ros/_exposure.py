@@ -1,0 +1,100 @@
+"""Who can reach ``gazelle sim`` over ROS, and one server per ROS domain.
+
+Discovery range. ROS 2 Jazzy discovers nodes on the whole subnet by default, so anyone on the
+same network could call ``/spawn_entity`` and ``/delete_entity``. ``gazelle sim`` therefore
+limits its own discovery to this machine (``ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST``) unless
+the user chose a range (that variable, ``ROS_LOCALHOST_ONLY`` or ``ROS_STATIC_PEERS``) or passed
+``--ros-discovery subnet``. Plain rclpy nodes started in a fresh shell (subnet range, the
+default) still reach it on the same machine: a localhost participant answers their discovery.
+
+One server per domain. Two servers on one domain would both answer every ``/spawn_entity``
+and spawn every robot twice. Each server announces itself on a hidden latched topic; a server
+that hears of one started before it says so and stops (exit status 1), and the older keeps
+serving. The newer one is told the older's host, process id and start time.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import socket
+import threading
+import time
+from dataclasses import dataclass
+from typing import Any
+
+from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from std_msgs.msg import String
+
+DISCOVERY_VARIABLES = ("ROS_AUTOMATIC_DISCOVERY_RANGE", "ROS_LOCALHOST_ONLY", "ROS_STATIC_PEERS")
+ANNOUNCE_TOPIC = "/_gazelle/servers"
+"""Hidden (a leading underscore): ``ros2 topic list`` shows it only with ``--include-hidden-topics``."""
+
+
+def choose_discovery_range(requested: str | None, environ: dict[str, str] | os._Environ[str] = os.environ) -> str:
+    """Set the discovery range for this process (before rclpy starts) and return a description of it.
+
+    ``requested`` is ``--ros-discovery`` (``localhost``, ``subnet``, ``off``) or None: keep what the
+    environment says, else LOCALHOST.
+    """
+    if requested is not None:
+        environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = requested.upper()
+        return f"{requested.upper()} (--ros-discovery)"
+    chosen = [v for v in DISCOVERY_VARIABLES if environ.get(v)]
+    if chosen:
+        return ", ".join(f"{v}={environ[v]}" for v in chosen) + " (from the environment)"
+    environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
+    return "LOCALHOST (default of gazelle sim; --ros-discovery subnet opens it)"
+
+
+@dataclass(frozen=True, order=True)
+class ServerId:
+    """Identifies one running server; the smaller (earlier started) one wins a conflict."""
+
+    started: float
+    host: str
+    pid: int
+
+    def describe(self) -> str:
+        age = time.time() - self.started
+        return f"pid {self.pid} on {self.host}, started {age:.0f} s ago"
+
+
+class ServerRegistry:
+    """Announces this server and notices others on the same domain (see the module docstring)."""
+
+    def __init__(self, node: Any) -> None:
+        self.me = ServerId(time.time(), socket.gethostname(), os.getpid())
+        self.conflict: str | None = None
+        """Set when an older server serves this domain: why this one must stop."""
+        self._warned: set[ServerId] = set()
+        self._lock = threading.Lock()
+        self._log = node.get_logger()
+        qos = QoSProfile(depth=10, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
+        self._pub = node.create_publisher(String, ANNOUNCE_TOPIC, qos)
+        self._sub = node.create_subscription(String, ANNOUNCE_TOPIC, self._on_announce, qos)
+        self._pub.publish(String(data=json.dumps({"started": self.me.started, "host": self.me.host, "pid": self.me.pid})))
+
+    def _on_announce(self, msg: String) -> None:
+        try:
+            data = json.loads(msg.data)
+            other = ServerId(float(data["started"]), str(data["host"]), int(data["pid"]))
+        except (ValueError, KeyError, TypeError):
+            return
+        if other == self.me:
+            return
+        domain = os.environ.get("ROS_DOMAIN_ID", "0")
+        with self._lock:
+            if other in self._warned:
+                return
+            self._warned.add(other)
+            if other < self.me:
+                self.conflict = (
+                    f"another gazelle sim already serves ROS_DOMAIN_ID={domain} ({other.describe()}); "
+                    "two servers would both answer /spawn_entity. Stop it, or start this one with another ROS_DOMAIN_ID"
+                )
+                self._log.error(self.conflict)
+            else:
+                self._log.warning(
+                    f"a second gazelle sim started on ROS_DOMAIN_ID={domain} ({other.describe()}); it is told to stop"
+                )
