@@ -115,18 +115,6 @@ def load(
     """
     p = Path(path)
     fmt = format_for_path(p)
-    if fmt is None:
-        raise ModelLoadError(
-            [
-                Diagnostic(
-                    ErrorCode.UNKNOWN_FORMAT,
-                    Severity.ERROR,
-                    f"unknown description format for '{p.name}'; supported suffixes: "
-                    + ", ".join(sorted(_SUFFIXES)),
-                    SourceLocation(str(p)),
-                )
-            ]
-        )
     try:
         text = p.read_text(encoding="utf-8")
     except FileNotFoundError:
@@ -137,6 +125,21 @@ def load(
         raise ModelLoadError(
             [Diagnostic(ErrorCode.FILE_READ_ERROR, Severity.ERROR, f"cannot read {p}: {err}", SourceLocation(str(p)))]
         ) from None
+    if fmt is None:  # a suffix that does not tell (r2.urdf.xml): the root element does, as in spawn
+        fmt = detect_format(text)
+    if fmt is None:
+        raise ModelLoadError(
+            [
+                Diagnostic(
+                    ErrorCode.UNKNOWN_FORMAT,
+                    Severity.ERROR,
+                    f"unknown description format for '{p.name}': neither its suffix ("
+                    + ", ".join(sorted(_SUFFIXES))
+                    + ") nor its root element (<robot>, <sdf>) tells",
+                    SourceLocation(str(p)),
+                )
+            ]
+        )
     return load_string(
         text, format=fmt, source=str(p), args=args, strict=strict, resolver=resolver, expand_xacro=expand_xacro
     )

@@ -27,6 +27,7 @@ from ._model import (
     IDENTITY,
     Box,
     Capsule,
+    Cone,
     Cylinder,
     Ellipsoid,
     Geometry,
@@ -85,6 +86,13 @@ def _cylinder_props(radius: float, length: float) -> UnitProperties:
     v = math.pi * radius**2 * length
     side = v * (3 * radius**2 + length**2) / 12
     return UnitProperties(v, (0.0, 0.0, 0.0), _diag(side, side, v * radius**2 / 2))
+
+
+def _cone_props(radius: float, length: float) -> UnitProperties:
+    """A solid cone, base at z = -length/2: its centroid is a quarter of the height above the base."""
+    v = math.pi * radius**2 * length / 3.0
+    side = v * (3.0 * radius**2 / 20.0 + 3.0 * length**2 / 80.0)
+    return UnitProperties(v, (0.0, 0.0, -length / 4.0), _diag(side, side, v * 3.0 * radius**2 / 10.0))
 
 
 def _capsule_props(radius: float, length: float) -> UnitProperties:
@@ -194,6 +202,8 @@ def unit_properties(geometry: Geometry) -> UnitProperties | None:
         return UnitProperties(v, (0.0, 0.0, 0.0), np.eye(3) * (0.4 * v * r * r))
     if isinstance(geometry, Capsule):
         return _capsule_props(geometry.radius, geometry.length)
+    if isinstance(geometry, Cone):
+        return _cone_props(geometry.radius, geometry.length)
     if isinstance(geometry, Ellipsoid):
         return _ellipsoid_props(*geometry.radii)
     if isinstance(geometry, Mesh):

@@ -144,6 +144,14 @@ class Capsule:
 
 
 @dataclass(frozen=True, slots=True)
+class Cone:
+    """A solid cone along local z (SDF 1.11): base of ``radius`` at z = -length/2, apex at +length/2."""
+
+    radius: float
+    length: float
+
+
+@dataclass(frozen=True, slots=True)
 class Ellipsoid:
     """An ellipsoid with semi-axes ``radii``."""
 
@@ -169,7 +177,7 @@ class Mesh:
     scale: Vec3 = (1.0, 1.0, 1.0)
 
 
-Geometry = Union[Box, Cylinder, Sphere, Capsule, Ellipsoid, Plane, Mesh]
+Geometry = Union[Box, Cylinder, Sphere, Capsule, Cone, Ellipsoid, Plane, Mesh]
 
 
 # --------------------------------------------------------------------------- appearance / contact

@@ -37,6 +37,7 @@ from lxml import etree
 
 from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
 from ._model import (
+    Cone,
     IDENTITY,
     Box,
     Capsule,
@@ -1014,6 +1015,10 @@ class _Loader:
             if not positive(radius, length):
                 return None
             return Cylinder(radius, length) if kind == "cylinder" else Capsule(radius, length)
+        if kind == "cone":  # SDF 1.11
+            radius = self.number(shape, "radius", 1.0, doc)
+            length = self.number(shape, "length", 1.0, doc)
+            return Cone(radius, length) if positive(radius, length) else None
         if kind == "sphere":
             radius = self.number(shape, "radius", 1.0, doc)
             return Sphere(radius) if positive(radius) else None
@@ -1048,7 +1053,12 @@ class _Loader:
             return Mesh(uri, str(path), scale)
         if kind == "empty":
             return None
-        self.sink.warning(ErrorCode.ELEMENT_UNSUPPORTED, f"geometry <{kind}> is not supported; shape skipped", loc)
+        self.sink.warning(
+            ErrorCode.ELEMENT_UNSUPPORTED,
+            f"geometry <{kind}> is not supported; the shape is skipped, so as a <collision> it collides with "
+            "nothing (supported: box, cylinder, sphere, capsule, cone, ellipsoid, plane, mesh)",
+            loc,
+        )
         return None
 
     def surface(self, element: etree._Element | None, doc: _Doc) -> Surface:

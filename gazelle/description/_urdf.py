@@ -162,6 +162,13 @@ class _Document:
 
 
 # --------------------------------------------------------------------------- reader
+def gazebo_value(element: etree._Element) -> str | None:
+    """The value of a ``<gazebo>`` extension element: its ``value`` attribute (``<mu1 value="1.0"/>``,
+    as Gazebo Classic's URDF reader and sdformat accept it) or else its text (``<mu1>1.0</mu1>``)."""
+    attr = element.get("value")
+    return attr if attr is not None else element.text
+
+
 @dataclass
 class _Reader:
     """Reads URDF elements, reporting problems with their source location."""
@@ -605,9 +612,10 @@ class _Reader:
         el = parent.find(tag)
         if el is None:
             return None
-        value = parse(el.text)
+        text = gazebo_value(el)
+        value = parse(text)
         if value is None:
-            self.error(ErrorCode.VALUE_INVALID, f"<{tag}> has an invalid value {el.text!r}", el)
+            self.error(ErrorCode.VALUE_INVALID, f"<{tag}> has an invalid value {text!r}", el)
         return value
 
     def gazebo(self, element: etree._Element, doc: _Document) -> None:
@@ -649,9 +657,10 @@ class _Reader:
             tag = local_name(child)
             if tag in _SURFACE_TAGS:
                 field_name, count = _SURFACE_TAGS[tag]
-                values = parse_floats(child.text, count)
+                text = gazebo_value(child)
+                values = parse_floats(text, count)
                 if values is None:
-                    self.error(ErrorCode.VALUE_INVALID, f"<{tag}> needs {count} number(s), got {child.text!r}", child)
+                    self.error(ErrorCode.VALUE_INVALID, f"<{tag}> needs {count} number(s), got {text!r}", child)
                 else:
                     link.surface[field_name] = values if count > 1 else values[0]
             elif tag in _LINK_FLAGS:

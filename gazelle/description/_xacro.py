@@ -37,7 +37,7 @@ import xacro.substitution_args as xacro_subst
 
 from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
 from ._resources import ResourceResolver
-from ._xml import LOCATION_ATTRIBUTE, encode_location
+from ._xml import LOCATION_ATTRIBUTE, encode_location, relax_comments
 
 _LOCK = threading.Lock()
 _USER_DATA_KEY = "gazelle.location"
@@ -92,7 +92,16 @@ class _LineBuilder(expatbuilder.ExpatBuilderNS):
 
 
 def _parse_located(data: str | bytes, file: str) -> xml.dom.minidom.Document:
-    """Parse XML into a located minidom document (raises :class:`_IncludedXmlError`)."""
+    """Parse XML into a located minidom document (raises :class:`_IncludedXmlError`).
+
+    Comments with ``--`` are accepted as TinyXML accepts them (see :func:`._xml.relax_comments`).
+    """
+    if isinstance(data, bytes):
+        try:
+            data = data.decode("utf-8")
+        except UnicodeDecodeError as err:
+            raise _IncludedXmlError(file, None, f"not UTF-8: {err}") from None
+    data, _lines = relax_comments(data)
     try:
         return _LineBuilder(file).parseString(data)
     except xml.parsers.expat.ExpatError as err:

@@ -16,6 +16,7 @@ Nothing here reports anything except :func:`parse_xml`; callers decide the code 
 from __future__ import annotations
 
 import math
+import re
 from urllib.parse import quote, unquote
 
 from lxml import etree
@@ -54,6 +55,30 @@ def _parser() -> etree.XMLParser:
     )
 
 
+_COMMENT = re.compile(r"<!--(.*?)-->", re.S)
+
+
+def relax_comments(text: str) -> tuple[str, list[int]]:
+    """``text`` with every ``--`` inside a comment (and a ``-`` right before ``-->``) blanked, and the
+    lines of those comments. XML forbids them; TinyXML, and so Gazebo, accepts them, and 19 of
+    gz-sim's example worlds have them. Blanking keeps every line and column where it was."""
+    if "--" not in text:
+        return text, []
+    lines: list[int] = []
+
+    def fix(m: re.Match[str]) -> str:
+        body = m.group(1)
+        if "--" not in body and not body.endswith("-"):
+            return m.group(0)
+        lines.append(text.count("\n", 0, m.start()) + 1)
+        body = body.replace("--", "  ")
+        if body.endswith("-"):
+            body = body[:-1] + " "
+        return f"<!--{body}-->"
+
+    return _COMMENT.sub(fix, text), lines
+
+
 def parse_xml(text: str, *, source: str, sink: DiagnosticSink) -> etree._Element | None:
     """Parse XML text into its root element.
 
@@ -65,8 +90,15 @@ def parse_xml(text: str, *, source: str, sink: DiagnosticSink) -> etree._Element
     Returns:
         The root element, or None after reporting an error.
     """
+    fixed, lines = relax_comments(text)
+    for line in lines:
+        sink.warning(
+            ErrorCode.XML_PARSE_ERROR,
+            "comment contains '--', which XML forbids; accepted as TinyXML (Gazebo) accepts it",
+            SourceLocation(source, line),
+        )
     try:
-        root = etree.fromstring(text.encode("utf-8"), _parser())
+        root = etree.fromstring(fixed.encode("utf-8"), _parser())
     except etree.XMLSyntaxError as err:
         line = err.lineno if isinstance(err.lineno, int) and err.lineno > 0 else None
         msg = getattr(err, "msg", None) or str(err)

@@ -52,6 +52,7 @@ from ..description import (
     Box,
     Capsule,
     Collision,
+    Cone,
     Cylinder,
     Ellipsoid,
     Joint,
@@ -179,6 +180,11 @@ def _add_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, col: Collision, name: s
                 qq = np.zeros(4)
                 mujoco.mju_mulQuat(qq, np.asarray(col.pose.orientation, dtype=float), np.asarray(q))
                 kwargs["quat"] = list(qq)
+    elif isinstance(g, Cone):
+        mesh_name = f"{name}__cone"
+        mesh = spec.add_mesh(name=mesh_name)
+        mesh.uservert = list(cone_vertices(g.radius, g.length).ravel())
+        kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh_name)
     elif isinstance(g, Mesh):
         if g.path is None:
             raise BuildError(f"collision '{col.name}': mesh '{g.uri}' could not be resolved")
@@ -204,6 +210,16 @@ def _add_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, col: Collision, name: s
     mask = surface.collide_bitmask if surface.collide_bitmask is not None else DEFAULT_COLLIDE_BITMASK
     kwargs["contype"] = kwargs["conaffinity"] = int(mask) & 0xFFFFFFFF
     body.add_geom(**kwargs)
+
+
+CONE_SEGMENTS = 32
+
+
+def cone_vertices(radius: float, length: float, segments: int = CONE_SEGMENTS) -> np.ndarray:
+    """Vertices of a cone (base ring at z = -length/2, apex at +length/2); MuJoCo takes their hull."""
+    a = np.linspace(0.0, 2.0 * math.pi, segments, endpoint=False)
+    ring = np.column_stack([radius * np.cos(a), radius * np.sin(a), np.full(segments, -length / 2.0)])
+    return np.vstack([ring, [[0.0, 0.0, length / 2.0]]])
 
 
 DEFAULT_COLLIDE_BITMASK = 0xFFFF

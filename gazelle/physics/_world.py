@@ -25,7 +25,11 @@ MAX_COORDINATE_M = 1.0e5
 positions lose the millimetres contacts need, and such a pose is a mistake or an attack."""
 
 _ONE_DOF = (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
-ENTITY_NAME_RE = re.compile(r"^[A-Za-z_][A-Za-z0-9_\-.]*(/[A-Za-z_][A-Za-z0-9_\-.]*)*$")
+ENTITY_NAME_RE = re.compile(r"^(?!\s)[^\x00-\x1f\x7f]{1,256}(?<!\s)$")
+"""Entity names as Gazebo takes them: any printable text up to 256 characters without leading or
+trailing white space ("Construction Cone" comes from every GUI-saved world); ``::`` is refused
+separately, as it separates an entity from its links."""
+NAME_RULE = "printable characters, at most 256, no leading or trailing space, no '::'"
 
 
 class WorldError(Exception):
@@ -158,7 +162,7 @@ class PhysicsWorld:
         if not name or SEP in name or not ENTITY_NAME_RE.match(name):
             raise WorldError(
                 ErrorKind.NAME_INVALID,
-                f"invalid entity name {excerpt(name)}: use letters, digits, '_', '-', '.' and '/' (not '::')",
+                f"invalid entity name {excerpt(name)}: use {NAME_RULE}",
             )
         if not all(math.isfinite(v) for v in (*X_WM.position, *X_WM.orientation)):
             raise WorldError(ErrorKind.INVALID_POSE, f"pose of '{name}' is not finite: {X_WM}")
@@ -499,7 +503,7 @@ class PhysicsWorld:
                 out.append(
                     WorldError(
                         ErrorKind.NAME_INVALID,
-                        f"invalid entity name {excerpt(name)}: use letters, digits, '_', '-', '.' and '/' (not '::')",
+                        f"invalid entity name {excerpt(name)}: use {NAME_RULE}",
                     )
                 )
                 continue

@@ -9,7 +9,7 @@ from functools import lru_cache
 import numpy as np
 import trimesh
 
-from ..description import Box, Capsule, Cylinder, Ellipsoid, Mesh, Plane, Sphere
+from ..description import Box, Capsule, Cone, Cylinder, Ellipsoid, Mesh, Plane, Sphere
 
 _log = logging.getLogger("gazelle.viewer")
 
@@ -53,6 +53,9 @@ def to_trimesh(geometry: object) -> TriMesh | None:
         m = trimesh.creation.icosphere(subdivisions=3, radius=geometry.radius)
     elif isinstance(geometry, Capsule):
         m = trimesh.creation.capsule(height=geometry.length, radius=geometry.radius, count=[16, 16])
+    elif isinstance(geometry, Cone):
+        m = trimesh.creation.cone(radius=geometry.radius, height=geometry.length, sections=32)
+        m.apply_translation((0.0, 0.0, -geometry.length / 2))  # trimesh puts the base at z=0
     elif isinstance(geometry, Ellipsoid):
         m = trimesh.creation.icosphere(subdivisions=3, radius=1.0)
         m.vertices = m.vertices * np.asarray(geometry.radii)

@@ -303,7 +303,10 @@ def test_spawn_entity_failures(ros: RosClient, tmp_path: Path) -> None:
     parse = spawn(ros, "broken", xml=BROKEN_SDF)
     assert parse.result.result == R.RESOURCE_PARSE_ERROR
     assert re.search(r":\d+", parse.result.error_message), parse.result.error_message  # file:line
-    assert spawn(ros, "bad name", xml=box_sdf()).result.result == R.NAME_INVALID
+    assert spawn(ros, "bad::name", xml=box_sdf()).result.result == R.NAME_INVALID
+    assert spawn(ros, " padded", xml=box_sdf()).result.result == R.NAME_INVALID
+    spaced = spawn(ros, "Construction Cone", xml=box_sdf(), z=3.0)  # Gazebo GUI-saved worlds are full of these
+    assert spaced.result.result == OK and spaced.entity_name == "Construction Cone"
     assert spawn(ros, "x", xml="<robot name='r'>", z=0.0).result.result == R.RESOURCE_PARSE_ERROR
     assert spawn(ros, "ns_bad", xml=box_sdf(), entity_namespace="1bad ns").result.result == R.NAMESPACE_INVALID
     nan = spawn(ros, "nan_box", xml=box_sdf(), z=math.nan)
