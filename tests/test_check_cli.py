@@ -97,7 +97,9 @@ XACRO_WITH_ARGS = """<?xml version="1.0"?>
 <robot xmlns:xacro="http://www.ros.org/wiki/xacro" name="argbot">
   <xacro:arg name="prefix" default=""/>
   <xacro:arg name="links" default="1"/>
-  <link name="$(arg prefix)base_link"/>
+  <link name="$(arg prefix)base_link">
+    <inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial>
+  </link>
   <xacro:if value="${$(arg links) > 1}">
     <link name="second"/>
     <joint name="j" type="fixed"><parent link="left_base_link"/><child link="second"/></joint>
@@ -138,8 +140,10 @@ def test_turtlebot3_xacro_with_resource_path() -> None:
     assert proc.returncode == 0, proc.stderr
     assert proc.stdout.splitlines() == [
         "model turtlebot3_burger: 7 links, 6 joints, 2 sensors, 3 plugins",
-        "0 errors, 0 warnings",
+        "0 errors, 3 warnings",  # check tells what spawn would: sensors and their plugins are not simulated yet
     ]
+    assert "turtlebot3_burger.gazebo.xacro:104: warning: [ELEMENT_UNSUPPORTED] sensor 'lds_lfcd_sensor' (ray)" in proc.stderr
+    assert "plugin 'imu_plugin' (libgazebo_ros_imu.so) is ignored: sensors are not simulated yet" in proc.stderr
     # without the resource path, $(find turtlebot3_description) cannot resolve: a clean error
     proc = check(path)
     assert proc.returncode == 1
@@ -153,13 +157,16 @@ def test_turtlebot3_sdf_model_and_world() -> None:
     proc = check(models / "turtlebot3_burger/model.sdf", env={"GAZELLE_RESOURCE_PATH": str(models)})
     assert proc.returncode == 0, proc.stderr
     assert proc.stdout.splitlines()[0] == "model turtlebot3_burger: 7 links, 6 joints, 2 sensors, 2 plugins"
+    assert "model.sdf:135: warning: [ELEMENT_UNSUPPORTED] sensor 'hls_lfcd_lds' (gpu_lidar)" in proc.stderr
+    # the DiffDrive's own configuration check, at its file:line (as spawning it would log)
+    assert "model.sdf:376: warning: [PLUGIN_CONFIG_INVALID] plugin 'gz::sim::systems::DiffDrive'" in proc.stderr
 
     world = REAL / "turtlebot3/turtlebot3_gazebo/worlds/turtlebot3_world.world"
     proc = check(world, env={"GAZELLE_RESOURCE_PATH": str(models)})
     assert proc.returncode == 0, proc.stderr
-    assert proc.stdout.splitlines()[0].startswith("world default: 1 model, 0 lights, ")
-    assert proc.stdout.splitlines()[-1] == "0 errors, 2 warnings"  # the two Fuel includes
-    assert proc.stderr.count(": warning: [URI_UNRESOLVED]") == 2
+    assert proc.stdout.splitlines()[0].startswith("world default: 2 models, 1 light, ")  # Fuel's, built in
+    assert proc.stdout.splitlines()[-1] == "0 errors, 2 warnings"  # the gz-sim sensor systems
+    assert proc.stderr.count("is ignored: sensors are not simulated yet") == 2
     # --strict turns those warnings into errors
     proc = check("--strict", world, env={"GAZELLE_RESOURCE_PATH": str(models)})
     assert proc.returncode == 1
@@ -174,3 +181,31 @@ def test_panda_srdf_summary() -> None:
         "semantics panda: 3 groups, 5 group states, 1 end effector, 1 virtual joint, 34 disabled collisions",
         "0 errors, 0 warnings",
     ]
+
+
+def test_check_tells_what_spawn_would_tell(tmp_path: Path) -> None:
+    """A plugin name typo, a diff drive joint that is not there, and the seed's wheels that drive backwards."""
+    seed = SEED.read_text()
+    typo = tmp_path / "typo.urdf.xacro"
+    typo.write_text(seed.replace("libgazebo_ros_diff_drive.so", "libgazebo_ros_diff_drve.so"))
+    proc = check("--strict", typo)
+    assert proc.returncode == 1
+    assert "[PLUGIN_UNSUPPORTED]" in proc.stderr and "did you mean 'libgazebo_ros_diff_drive.so'?" in proc.stderr
+
+    missing = tmp_path / "missing.urdf.xacro"
+    missing.write_text(seed.replace("<left_joint>base_left_wheel_joint<", "<left_joint>base_left_whel_joint<"))
+    proc = check(missing)
+    assert proc.returncode == 1
+    line = next(ln for ln in proc.stderr.splitlines() if "base_left_whel_joint" in ln)
+    assert f"{missing}:" in line and ": error: [PLUGIN_CONFIG_INVALID]" in line
+    assert "The model's joints: base_left_wheel_joint (continuous), base_right_wheel_joint (continuous)" in line
+
+    # the blog's original wheels (+pi/2 about x): they point right, so cmd_vel drives backwards
+    backwards = tmp_path / "blog.urdf.xacro"
+    backwards.write_text(seed.replace('rpy="${-PI/2} 0 0"', 'rpy="${PI/2} 0 0"'))
+    assert 'rpy="${PI/2} 0 0"' in backwards.read_text()
+    proc = check(backwards)
+    assert proc.returncode == 0 and "0 errors, 1 warning" in proc.stdout
+    assert "a positive cmd_vel drives this robot backwards" in proc.stderr
+    proc = check(SEED)
+    assert proc.returncode == 0 and "0 errors, 0 warnings" in proc.stdout, proc.stderr

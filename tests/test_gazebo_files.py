@@ -109,3 +109,40 @@ def test_an_unsupported_geometry_says_the_link_collides_with_nothing() -> None:
     )
     [d] = [d for d in result.diagnostics if "heightmap" in d.message]
     assert d.code is ErrorCode.ELEMENT_UNSUPPORTED and "collides with nothing" in d.message
+
+
+def _fuel_world(*names: str) -> str:
+    incs = "".join(f"<include><uri>https://fuel.gazebosim.org/1.0/{n}</uri></include>" for n in names)
+    return f'<sdf version="1.8"><world name="w">{incs}</world></sdf>'
+
+
+def test_fuel_ground_plane_and_sun_are_built_in(monkeypatch, tmp_path: Path) -> None:
+    monkeypatch.setenv("HOME", str(tmp_path))  # no local Fuel cache
+    monkeypatch.delenv("GZ_FUEL_CACHE_PATH", raising=False)
+    world = load_string(_fuel_world("OpenRobotics/models/Ground Plane", "OpenRobotics/models/Sun")).value
+    assert [m.name for m in world.models] == ["ground_plane"] and [lt.name for lt in world.lights] == ["sun"]
+    sim = Simulation(world, rtf=0.0)
+    sim.spawn(load_string(
+        '<sdf version="1.9"><model name="b"><link name="l"><inertial><mass>1</mass></inertial><collision name="c">'
+        "<geometry><sphere><radius>0.1</radius></sphere></geometry></collision></link></model></sdf>"
+    ).value, name="b", pose=Pose((0.0, 0.0, 0.5)))
+    sim.step(1500)
+    assert sim.world.entity_state("b").pose.position[2] == pytest.approx(0.1, abs=0.005)  # rests on Fuel's plane
+
+
+def test_other_fuel_models_come_from_the_local_cache_or_are_named_in_a_warning(monkeypatch, tmp_path: Path) -> None:
+    monkeypatch.setenv("HOME", str(tmp_path / "home"))
+    monkeypatch.delenv("GZ_FUEL_CACHE_PATH", raising=False)
+    result = load_string(_fuel_world("OpenRobotics/models/Construction Cone"))
+    [d] = result.diagnostics
+    assert "Fuel model 'OpenRobotics/Construction Cone'" in d.message and "nothing was fetched" in d.message
+    # gz-sim's cache layout: <cache>/<host>/<owner>/models/<name>/<version>/model.sdf
+    cache = tmp_path / "cache"
+    model_dir = cache / "fuel.gazebosim.org" / "openrobotics" / "models" / "construction cone" / "2"
+    model_dir.mkdir(parents=True)
+    (model_dir / "model.sdf").write_text(
+        '<sdf version="1.6"><model name="Construction Cone"><static>true</static><link name="link"/></model></sdf>'
+    )
+    monkeypatch.setenv("GZ_FUEL_CACHE_PATH", str(cache))
+    world = load_string(_fuel_world("OpenRobotics/models/Construction Cone")).value
+    assert [m.name for m in world.models] == ["Construction Cone"]

@@ -126,9 +126,9 @@ EXPECTED: dict[str, tuple[type, dict[str, int]]] = {
     "turtlebot3/turtlebot3_gazebo/models/turtlebot3_world/model.sdf": (Model, {}),
     "turtlebot3/turtlebot3_gazebo/urdf/common_properties.urdf": (Model, {"FRAGMENT": 1}),
     "turtlebot3/turtlebot3_gazebo/urdf/turtlebot3_burger.urdf": (Model, {}),
-    # Fuel https:// includes (network) are not fetched; empty_world also has a <gui> block
-    "turtlebot3/turtlebot3_gazebo/worlds/empty_world.world": (World, {"URI_UNRESOLVED": 2, "ELEMENT_UNSUPPORTED": 1}),
-    "turtlebot3/turtlebot3_gazebo/worlds/turtlebot3_world.world": (World, {"URI_UNRESOLVED": 2}),
+    # Fuel's Ground Plane and Sun are built in (nothing is fetched); empty_world also has a <gui> block
+    "turtlebot3/turtlebot3_gazebo/worlds/empty_world.world": (World, {"ELEMENT_UNSUPPORTED": 1}),
+    "turtlebot3/turtlebot3_gazebo/worlds/turtlebot3_world.world": (World, {}),
 }
 
 XACRO_ARGS = {"ros2_control_diffbot/_xacro_expanded/diffbot.mock.urdf": {"use_mock_hardware": "true"}}

@@ -57,13 +57,9 @@ REAL_CASES = [
     ("turtlebot3/turtlebot3_gazebo/models/turtlebot3_burger/model-1_4.sdf", TB3 / "models", Model, set()),
     ("turtlebot3/turtlebot3_gazebo/models/turtlebot3_world/model.sdf", TB3 / "models", Model, set()),
     ("turtlebot3/turtlebot3_gazebo/models/turtlebot3_world/model-1_4.sdf", TB3 / "models", Model, set()),
-    ("turtlebot3/turtlebot3_gazebo/worlds/turtlebot3_world.world", TB3 / "models", World, {"URI_UNRESOLVED"}),
-    (
-        "turtlebot3/turtlebot3_gazebo/worlds/empty_world.world",
-        TB3 / "models",
-        World,
-        {"URI_UNRESOLVED", "ELEMENT_UNSUPPORTED"},
-    ),
+    # Fuel's Ground Plane and Sun are built in (nothing is fetched)
+    ("turtlebot3/turtlebot3_gazebo/worlds/turtlebot3_world.world", TB3 / "models", World, set()),
+    ("turtlebot3/turtlebot3_gazebo/worlds/empty_world.world", TB3 / "models", World, {"ELEMENT_UNSUPPORTED"}),
 ] + [
     (f"gazebo_models/models/{m}/{f}", GZM, World if m == "sun" else Model, set())
     for m in ("ground_plane", "sun", "table", "coke_can")
@@ -136,16 +132,14 @@ def test_turtlebot3_world_includes_nested_model():
     result = load(TB3 / "worlds/turtlebot3_world.world", resolver=res)
     world = result.value
     assert isinstance(world, World) and world.name == "default"
-    assert [m.name for m in world.models] == ["turtlebot3_world"]
-    model = world.models[0]
+    assert [m.name for m in world.models] == ["ground_plane", "turtlebot3_world"]  # Fuel's Ground Plane, built in
+    assert [lt.name for lt in world.lights] == ["sun"]
+    model = world.models[1]
     assert model.static and [lk.name for lk in model.links] == ["ros_symbol::symbol"]
     assert len(model.links[0].collisions) == 15
     assert world.physics.max_step_size_sec == 0.001 and world.physics.real_time_update_rate_hz == 1000
     assert len(world.plugins) == 5 and world.plugins[3].config.find("render_engine").text == "ogre2"
-    unresolved = [d for d in result.diagnostics if d.code.value == "URI_UNRESOLVED"]
-    assert [d.location.line for d in unresolved] == [46, 50]
-    assert "https://fuel.gazebosim.org/1.0/OpenRobotics/models/Ground Plane" in unresolved[0].message
-    assert unresolved[0].format().startswith(f"{TB3 / 'worlds/turtlebot3_world.world'}:46: warning: [URI_UNRESOLVED]")
+    assert [d for d in result.diagnostics if d.code.value == "URI_UNRESOLVED"] == []
 
 
 @needs_real

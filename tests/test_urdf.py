@@ -144,7 +144,13 @@ def test_gazebo_extension_applied_to_link(features: LoadResult) -> None:
 
 
 def test_mesh_inertia_is_derived_from_an_stl(features: LoadResult) -> None:
-    model = features.value
+    # in a robot with some mass, a massless link fixed to another merges into it (sdformat's reduction)
+    assert features.value.link("l_mesh").inertial is None
+    # in a robot with no mass at all (Gazebo would model none of it), inertia comes from the collisions
+    urdf = (DATA / "features.urdf").read_text()
+    alone = '<robot name="m"><link name="l_mesh"><collision><geometry><mesh filename="file://meshes/cube.stl"/></geometry></collision></link></robot>'
+    model = load_string(alone, source=str(DATA / "alone.urdf")).value
+    assert "l_mesh" in urdf
     assert isinstance(model, Model)
     inertial = model.link("l_mesh").inertial
     assert inertial is not None and inertial.derived
@@ -154,7 +160,41 @@ def test_mesh_inertia_is_derived_from_an_stl(features: LoadResult) -> None:
 
 
 def test_features_warning_codes(features: LoadResult) -> None:
-    assert sorted(set(codes(features))) == ["ELEMENT_UNSUPPORTED", "INERTIA_MISSING"]
+    # its massless links are all fixed to massive ones: merged, as sdformat reduces fixed joints, no warning
+    assert sorted(set(codes(features))) == ["ELEMENT_UNSUPPORTED"]
+
+
+def test_massless_links_follow_sdformat() -> None:
+    """Merged through fixed joints, else left out with their joint and what hangs below, with a warning."""
+    inertial = '<inertial><mass value="2"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial>'
+    urdf = (
+        '<robot name="r"><link name="base_footprint"/>'  # massless root: carried by base_link fixed to it
+        f'<link name="base_link">{inertial}<collision><geometry><box size="1 1 1"/></geometry></collision></link>'
+        '<link name="arm"><collision><geometry><box size="1 1 1"/></geometry></collision></link>'  # massless, moves
+        f'<link name="hand">{inertial}</link>'  # below the massless arm: left out with it
+        '<link name="laser_frame"/>'  # massless sensor frame, fixed: merged
+        '<joint name="fp" type="fixed"><parent link="base_footprint"/><child link="base_link"/></joint>'
+        '<joint name="shoulder" type="revolute"><parent link="base_link"/><child link="arm"/>'
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
+        '<joint name="wrist" type="continuous"><parent link="arm"/><child link="hand"/></joint>'
+        '<joint name="laser" type="fixed"><parent link="base_link"/><child link="laser_frame"/></joint></robot>'
+    )
+    result = load_string(urdf)
+    model = result.value
+    assert sorted(lk.name for lk in model.links) == ["base_footprint", "base_link", "laser_frame"]
+    assert sorted(j.name for j in model.joints) == ["fp", "laser"]
+    assert model.link("base_link").inertial.mass == 2.0  # never made up from the collision volume
+    [warning] = [d for d in result.diagnostics if d.code.value == "INERTIA_MISSING"]
+    assert "link 'arm'" in warning.message and "'shoulder'" in warning.message and "hand" in warning.message
+    # and it simulates: the merged root carries the mass
+    from gazelle.description import Pose
+    from gazelle.physics import Simulation
+    from gazelle.worlds import default_world
+
+    sim = Simulation(default_world(), rtf=0.0)
+    sim.spawn(model, name="r", pose=Pose((0.0, 0.0, 1.0)))
+    sim.step(2000)
+    assert sim.world.entity_state("r").pose.position[2] == pytest.approx(0.5, abs=0.01)
 
 
 # --------------------------------------------------------------------------- structural errors

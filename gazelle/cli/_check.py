@@ -7,12 +7,15 @@ the summary goes to stdout. The exit code is 0 when there is no error, 1 otherwi
 
 from __future__ import annotations
 
+import logging
 import os
 import sys
 from typing import Iterable, Mapping
 
 from ..description import (
     Diagnostic,
+    ErrorCode,
+    SourceLocation,
     Model,
     ModelLoadError,
     Semantics,
@@ -92,6 +95,65 @@ def _counts_line(errors: int, warnings: int) -> str:
     return f"{_plural(errors, 'error')}, {_plural(warnings, 'warning')}"
 
 
+class _PluginLogs(logging.Handler):
+    """Collects what plugins log while they are configured, as diagnostics at the plugin's file:line."""
+
+    def __init__(self, locations: dict[str, SourceLocation | None], strict: bool) -> None:
+        super().__init__(logging.WARNING)
+        self.locations = locations
+        self.strict = strict
+        self.found: list[Diagnostic] = []
+
+    def emit(self, record: logging.LogRecord) -> None:
+        if record.name not in self.locations:
+            return  # the simulation's own lines (the audit below says the same, located)
+        error = record.levelno >= logging.ERROR or self.strict
+        self.found.append(
+            Diagnostic(
+                ErrorCode.PLUGIN_CONFIG_INVALID,
+                Severity.ERROR if error else Severity.WARNING,
+                f"plugin '{record.name}': {record.getMessage()}",
+                self.locations[record.name],
+            )
+        )
+
+
+def simulation_diagnostics(value: object, *, strict: bool = False) -> list[Diagnostic]:
+    """What spawning ``value`` would tell: plugins and sensors that will not run (with a "did you mean"),
+    and what each plugin says while it is configured (a joint it cannot find, wheels that would
+    drive backwards), by building it in a throwaway simulation of the default world."""
+    from ..physics import Simulation, WorldError
+    from ..systems._registry import audit_model, audit_world
+    from ..worlds import default_world
+
+    if isinstance(value, World):
+        audit, models, world = audit_world(value), list(value.models), value
+    elif isinstance(value, Model):
+        audit, models, world = audit_model(value), [value], None
+    else:
+        return []
+    sev = Severity.ERROR if strict else Severity.WARNING
+    out = [Diagnostic(d.code, sev, d.message, d.location) for d in audit]
+    locations = {p.name or p.filename: p.location for m in models for p in m.plugins}
+    capture = _PluginLogs(locations, strict)
+    root = logging.getLogger()
+    saved_level = root.level
+    root.addHandler(capture)
+    root.setLevel(logging.WARNING)
+    try:
+        sim = Simulation(world if world is not None else default_world(), rtf=0.0, robot_state_publisher=False)
+        if world is None:
+            sim.spawn(models[0], name="checked")
+        sim.step(1)
+    except WorldError as err:
+        where = models[0].location if models else None
+        out.append(Diagnostic(ErrorCode.PLUGIN_CONFIG_INVALID, Severity.ERROR, f"cannot be simulated: {err}", where))
+    finally:
+        root.removeHandler(capture)
+        root.setLevel(saved_level)
+    return out + capture.found
+
+
 def run_check(file: str | os.PathLike[str], *, args: Mapping[str, str] | None = None, strict: bool = False) -> int:
     """Load ``file``, print every diagnostic (stderr) and a summary (stdout).
 
@@ -109,8 +171,9 @@ def run_check(file: str | os.PathLike[str], *, args: Mapping[str, str] | None = 
         print(f"{file}: error: internal error while loading: {type(err).__name__}: {err}", file=sys.stderr)
         print(_counts_line(1, 0))
         return 1
-    _print_diagnostics(result.diagnostics)
-    errors, warnings = _tally(result.diagnostics)
+    diagnostics = list(result.diagnostics) + simulation_diagnostics(result.value, strict=strict)
+    _print_diagnostics(diagnostics)
+    errors, warnings = _tally(diagnostics)
     print(summarize(result.value))
     print(_counts_line(errors, warnings))
     return 1 if errors else 0

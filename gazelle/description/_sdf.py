@@ -76,6 +76,8 @@ from ._resources import ResourceResolver
 from ._sdf_frames import FrameNode, Scope, ScopeFrames
 from ._inertia import default_inertial, inertia_from_geometries, inertia_problem
 from ._sdf_text import decode_config, decode_name, prepare
+from ._fuel import BUILTIN as FUEL_BUILTIN
+from ._fuel import FuelModel, cache_roots, find_cached, parse_fuel_uri
 from ._xml import child_elements, element_location, local_name, parse_bool, parse_float, parse_floats, parse_xml, to_config
 
 Version = tuple[int, int]
@@ -554,20 +556,8 @@ class _Loader:
         fallback = folder / "model.sdf"
         return fallback if fallback.is_file() else None
 
-    def include(
-        self, element: etree._Element, doc: _Doc, depth: int, allow_light: bool
-    ) -> _Built | Light | None:
-        """Load an ``<include>``: a model (or, in a world, a light) with the overrides applied."""
-        self.check(element, doc, "include")
-        loc = self.loc(element, doc)
-        uri = self.text(element, "uri")
-        if not uri:
-            self.sink.error(ErrorCode.ELEMENT_MISSING, "<include> has no <uri>", loc)
-            return None
-        if depth >= MAX_NESTING:
-            self.sink.error(ErrorCode.URI_UNRESOLVED, f"includes nest deeper than {MAX_NESTING} (a cycle?) at '{uri}'", loc)
-            return None
-        path = None if "://" in uri and not uri.startswith(("model://", "package://", "file://")) else self.resolve(uri, doc)
+    def include_file(self, uri: str, path: Path | None, doc: _Doc, loc: SourceLocation) -> tuple[str, str, Path] | None:
+        """(text, source, folder) of an included file, or None after reporting why it is not read."""
         if path is not None and path.is_dir():
             path = self.pick_sdf(path, loc)
         if path is None and self.resolver.refused(uri, doc.base_dir):
@@ -584,7 +574,54 @@ class _Loader:
         except (OSError, UnicodeDecodeError) as err:
             self.sink.error(ErrorCode.FILE_READ_ERROR, f"cannot read included file {path}: {err}", loc)
             return None
-        got = self.read(text, str(path), path.parent)
+        return text, str(path), path.parent
+
+    def fuel_include(self, fuel: FuelModel, uri: str, loc: SourceLocation) -> tuple[str, str, Path] | None:
+        """A Fuel model without the network: built in, or from Gazebo's local Fuel cache (see :mod:`._fuel`)."""
+        builtin = FUEL_BUILTIN.get(fuel.name.lower()) if fuel.owner.lower() == "openrobotics" else None
+        if builtin is not None:
+            return builtin, f"<builtin:fuel {fuel.label()}>", Path.cwd()
+        cached = find_cached(fuel, cache_roots())
+        if cached is not None:
+            self.resolver = self.resolver.trusting(cached)  # the user's own Gazebo cache
+            sdf = self.pick_sdf(cached, loc)
+            if sdf is not None:
+                return self.include_file(uri, sdf, _Doc(str(sdf), cached, MAX_VERSION, False), loc)
+        self.sink.warning(
+            ErrorCode.URI_UNRESOLVED,
+            f"Fuel model '{fuel.label()}' is not built in and not in a local Fuel cache "
+            f"({', '.join(str(r) for r in cache_roots()) or '~/.gz/fuel: none'}); nothing was fetched "
+            "(no network); include skipped",
+            loc,
+        )
+        return None
+
+    def include(
+        self, element: etree._Element, doc: _Doc, depth: int, allow_light: bool
+    ) -> _Built | Light | None:
+        """Load an ``<include>``: a model (or, in a world, a light) with the overrides applied."""
+        self.check(element, doc, "include")
+        loc = self.loc(element, doc)
+        uri = self.text(element, "uri")
+        if not uri:
+            self.sink.error(ErrorCode.ELEMENT_MISSING, "<include> has no <uri>", loc)
+            return None
+        if depth >= MAX_NESTING:
+            self.sink.error(ErrorCode.URI_UNRESOLVED, f"includes nest deeper than {MAX_NESTING} (a cycle?) at '{uri}'", loc)
+            return None
+        fuel = parse_fuel_uri(uri)
+        if fuel is not None:
+            got = self.fuel_include(fuel, uri, loc)
+            if got is None:
+                return None
+            text, source, base = got
+        else:
+            path = None if "://" in uri and not uri.startswith(("model://", "package://", "file://")) else self.resolve(uri, doc)
+            got_file = self.include_file(uri, path, doc, loc)
+            if got_file is None:
+                return None
+            text, source, base = got_file
+        got = self.read(text, source, base)
         if got is None:
             return None
         root, inner_doc = got

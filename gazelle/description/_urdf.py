@@ -935,8 +935,68 @@ def _check_loops(doc: _Document, parent_of: dict[str, Joint], reader: _Reader) -
         done.update(path)
 
 
+# --------------------------------------------------------------------------- massless links (sdformat's rule)
+def _has_mass(draft: _LinkDraft) -> bool:
+    raw = draft.inertial
+    return raw is not None and raw.mass is not None and raw.mass > 0
+
+
+def _drop_massless_links(doc: _Document, reader: _Reader) -> None:
+    """Leave out what Gazebo leaves out, as sdformat's URDF conversion does.
+
+    Fixed joints are reduced first: a link fixed to its parent merges into it, massless or not, and
+    a link's mass includes everything fixed below it. Then a link that still has no mass (no
+    ``<inertial>``, or mass 0), reached by a moving joint or being the root, is not modelled: it
+    is dropped with its parent joint and every link below it, with a warning. Its mass is never
+    made up from its collision volume (that tripled Husky's mass). Static robots keep every link.
+    """
+    children: dict[str, list[Joint]] = {}
+    parent_of: dict[str, Joint] = {}
+    for j in doc.joints.values():
+        children.setdefault(j.parent, []).append(j)
+        parent_of[j.child] = j
+    lumped: dict[str, bool] = {}
+    order: list[str] = []
+    stack = [name for name in doc.links if name not in parent_of]
+    while stack:  # a pre-order walk, iterative (5,000-link chains)
+        name = stack.pop()
+        order.append(name)
+        stack.extend(j.child for j in children.get(name, []) if j.child in doc.links)
+    for name in reversed(order):  # children before parents
+        lumped[name] = _has_mass(doc.links[name]) or any(
+            lumped.get(j.child, False) for j in children.get(name, []) if j.type is JointType.FIXED
+        )
+    dropped: set[str] = set()
+    for name in order:
+        if name in dropped:
+            continue
+        up = parent_of.get(name)
+        merged = up is not None and up.type is JointType.FIXED and up.parent not in dropped
+        if merged or lumped[name]:
+            continue
+        below: list[str] = []
+        todo = [j.child for j in children.get(name, [])]
+        while todo:
+            child = todo.pop()
+            below.append(child)
+            todo.extend(j.child for j in children.get(child, []))
+        dropped.update([name, *below])
+        what = f"its joint '{up.name}'" if up is not None else "it is the root"
+        tail = f" and the {len(below)} link(s) below it ({', '.join(below[:4])}{', ...' if len(below) > 4 else ''})" if below else ""
+        reader.sink.warning(
+            ErrorCode.INERTIA_MISSING,
+            f"link '{name}' has no <inertial> with mass > 0 (nor has anything fixed to it): Gazebo does not model "
+            f"it; it is left out ({what}){tail}",
+            doc.links[name].location,
+        )
+    if dropped:
+        for name in dropped:
+            del doc.links[name]
+        doc.joints = {k: j for k, j in doc.joints.items() if j.child not in dropped and j.parent not in dropped}
+
+
 # --------------------------------------------------------------------------- finishing links
-def _finish_link(draft: _LinkDraft, movable_by: str | None, reader: _Reader) -> Link:
+def _finish_link(draft: _LinkDraft, movable_by: str | None, reader: _Reader, derive: bool) -> Link:
     """The frozen :class:`Link`: ``<gazebo>`` applied and the inertial settled."""
     collisions = tuple(
         dataclasses.replace(c, surface=dataclasses.replace(c.surface, **draft.surface)) for c in draft.collisions
@@ -944,7 +1004,7 @@ def _finish_link(draft: _LinkDraft, movable_by: str | None, reader: _Reader) -> 
     visuals = tuple(_apply_gazebo_material(v, draft.gazebo_material) for v in draft.visuals)
     return Link(
         name=draft.name,
-        inertial=_settle_inertial(draft, movable_by, reader),
+        inertial=_settle_inertial(draft, movable_by, reader, derive),
         visuals=visuals,
         collisions=collisions,
         sensors=tuple(draft.sensors),
@@ -963,12 +1023,15 @@ def _apply_gazebo_material(visual: Visual, script: str | None) -> Visual:
     return dataclasses.replace(visual, material=dataclasses.replace(base, name=script, diffuse=diffuse))
 
 
-def _settle_inertial(draft: _LinkDraft, movable_by: str | None, reader: _Reader) -> Inertial | None:
-    """The link's inertial; derived (with a warning per problem) when missing or invalid."""
+def _settle_inertial(draft: _LinkDraft, movable_by: str | None, reader: _Reader, derive: bool) -> Inertial | None:
+    """The link's inertial; derived (with a warning per problem) when invalid, or when missing and ``derive``
+    (a robot with no mass at all); otherwise a missing one stays missing (see :func:`_drop_massless_links`)."""
     raw = draft.inertial
     if raw is not None and not raw.problems and raw.mass is not None and raw.tensor is not None:
         ixx, ixy, ixz, iyy, iyz, izz = raw.tensor
         return Inertial(raw.mass, raw.pose, ixx, ixy, ixz, iyy, iyz, izz)
+    if raw is None and not derive:
+        return None  # massless: merged into its parent, or carried by what is fixed to it
     if raw is None and not draft.collisions:
         if movable_by is None:
             return None  # a pure frame (base_footprint, sensor frames)
@@ -1048,8 +1111,16 @@ def parse_urdf(
         return None
     if not doc.links:
         _report_fragment(root, doc, reader)
+    derive = False
+    if doc.links and not doc.model_flags.get("static", False):
+        if any(_has_mass(d) for d in doc.links.values()):
+            _drop_massless_links(doc, reader)
+        else:
+            # Gazebo would model none of it (moveit_resources' Panda, kinematics-only descriptions):
+            # here each link gets an inertia from its collision shapes, with a warning per link
+            derive = True
     movers = {j.child: j.name for j in doc.joints.values() if j.type is not JointType.FIXED}
-    links = tuple(_finish_link(d, movers.get(d.name), reader) for d in doc.links.values())
+    links = tuple(_finish_link(d, movers.get(d.name), reader, derive) for d in doc.links.values())
     if sink.has_errors:
         return None  # strict mode: warnings were promoted, every one of them is reported
     return Model(

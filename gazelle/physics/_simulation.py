@@ -25,7 +25,7 @@ import numpy as np
 from ..description import Model, Pose, World
 from ..systems._base import SystemContext, SystemManager, UpdateInfo
 from ..systems._bus import Bus
-from ..systems._registry import create_system
+from ..systems._registry import audit_model, audit_world, create_system
 from ..systems.robot_state import RSP_PLUGIN, RobotStatePublisher, robot_state_config
 from ._world import Entity, ErrorKind, PhysicsWorld, WorldError
 
@@ -97,6 +97,8 @@ class Simulation:
         """Entity name -> (divergences not yet reported, wall time of the last report)."""
         self._state_views: tuple[Any, np.ndarray, np.ndarray] = (None, np.zeros(0), np.zeros(0))
         """(MjData, its qpos, its qvel): array views kept for the divergence check before every step."""
+        for problem in audit_world(World(name=world.name, plugins=world.plugins)):
+            _log.warning(problem.format())
         for m in world.models:
             self._add_entity(m, name=m.name, pose=Pose(), namespace="", spawned=False)
 
@@ -297,6 +299,8 @@ class Simulation:
     def _configure_plugins(self, entity: Entity, into: list) -> None:
         """Create and configure a system for each supported plugin of ``entity`` (before the recompile),
         and the built-in robot_state_publisher for anything with joints or a URDF."""
+        for problem in audit_model(entity.model):  # unsupported plugins and sensors: named, never dropped silently
+            _log.warning(f"'{entity.name}': {problem.format()}")
         for plugin in entity.model.plugins:
             if plugin.filename == RSP_PLUGIN:
                 continue  # configures the built-in one below

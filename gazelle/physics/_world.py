@@ -60,11 +60,22 @@ def pose_out_of_range(pose: Pose, field_name: str) -> str | None:
     return None
 
 
+_MASSLESS = re.compile(r"mass and inertia of moving bodies must be larger than mjMINVAL Element name '([^']*)'")
+"""MuJoCo's compile error for a moving body without mass; users get it in their own terms."""
+
+
 def _describe(err: Exception) -> str:
     """A one-line reason for a failed build: our own errors as they are, others with their type."""
     if isinstance(err, (BuildError, WorldError)):
         return str(err)
     text = " ".join(str(err).split())
+    massless = _MASSLESS.search(text)
+    if massless is not None:
+        entity, _, link = massless.group(1).partition(SEP)
+        return (
+            f"link '{link}' moves (it has a joint, or is the free root) but neither it nor any link fixed to it has "
+            "mass or inertia; give it an <inertial> with mass > 0 (Gazebo would not model it)"
+        )
     if isinstance(err, (ValueError, mujoco.FatalError)):
         return text
     return f"{type(err).__name__}: {text}" if text else type(err).__name__

@@ -40,7 +40,7 @@ from ..physics import Simulation, WorldError, pose_out_of_range
 from ..systems._base import UpdateInfo
 from ..systems._bus import Endpoint, MsgType, Qos, Transform, TransformBatch
 from ._exposure import ServerRegistry
-from ._replies import guarded_service
+from ._replies import guarded_service, with_warnings
 from ._convert import FROM_ROS, ROS_TYPES, TO_ROS, from_pose_msg, to_pose_msg, to_time
 
 WORLD_FRAMES = ("", "world", "map", "/map")
@@ -318,8 +318,10 @@ class SimulationNode(Node):
         except WorldError:
             raise SpawnFailed(SpawnFailure.FRAME, f"reference_frame '{frame}' not found: no such entity or link") from None
 
-    def spawn_xml(self, xml: str, *, name: str, namespace: str, pose: Pose, reference_frame: str, source: str) -> str:
-        """Parse and spawn; returns the entity name.
+    def spawn_xml(
+        self, xml: str, *, name: str, namespace: str, pose: Pose, reference_frame: str, source: str
+    ) -> tuple[str, list[str]]:
+        """Parse and spawn; returns the entity name and the description's warnings.
 
         Raises:
             SpawnFailed: the XML is bad or holds no model, or the frame is unknown.
@@ -347,13 +349,13 @@ class SimulationNode(Node):
             self.get_logger().warning(d.format())
         X_WF = self.resolve_frame(reference_frame)
         entity = self.sim.spawn(model, name=name or model.name, pose=X_WF * pose, namespace=namespace)
-        return entity.name
+        return entity.name, [d.format() for d in result.diagnostics]
 
     def _gz_spawn(self, req: GzSpawnEntity.Request, res: GzSpawnEntity.Response) -> GzSpawnEntity.Response:
         t0 = time.monotonic()
         label = req.name or "entity"
         try:
-            name = self.spawn_xml(
+            name, warnings = self.spawn_xml(
                 req.xml,
                 name=req.name,
                 namespace=req.robot_namespace,
@@ -367,7 +369,7 @@ class SimulationNode(Node):
             self.get_logger().error(res.status_message)
             return res
         res.success = True
-        res.status_message = f"SpawnEntity: Successfully spawned entity [{name}]"
+        res.status_message = f"SpawnEntity: Successfully spawned entity [{name}]" + with_warnings(warnings)
         self.get_logger().info(f"{res.status_message} in {1000 * (time.monotonic() - t0):.1f} ms")
         return res
 

@@ -38,3 +38,11 @@ def guarded_service(name: str, callback: Any) -> Any:
             return failure_reply(response, f"{name}: internal error: {type(err).__name__}: {err}")
 
     return wrapper
+
+
+def with_warnings(warnings: list[str]) -> str:
+    """What a success reply adds about the description's warnings (they are also in the server's log)."""
+    if not warnings:
+        return ""
+    more = f" (and {len(warnings) - 1} more in the server's log)" if len(warnings) > 1 else ""
+    return reply_text(f"; {len(warnings)} warning(s): {warnings[0]}{more}")

@@ -78,7 +78,7 @@ from ..description._model import JointType, quat_rotate
 from ..physics import WorldError, pose_out_of_range
 from ..physics._world import Entity, ErrorKind
 from ._convert import from_pose_msg, to_pose_msg, to_time
-from ._replies import guarded_service
+from ._replies import guarded_service, with_warnings
 
 if TYPE_CHECKING:
     from ._bridge import SimulationNode
@@ -147,6 +147,8 @@ class _Prepared:
     pose: Pose
     namespace: str
     allow_renaming: bool
+    warnings: tuple[str, ...] = ()
+    """The description's warnings, also carried in the success reply's message."""
 
 
 def category_of(entity: Entity) -> int:
@@ -380,6 +382,13 @@ class SimulationInterfaces:
     def _read_uri(self, uri: str) -> tuple[str, str, str]:
         """(text, format, source path) of a URI; raises NO_RESOURCE / UNSUPPORTED_FORMAT."""
         path = self.resolver.resolve_uri(uri)
+        if path is None and self.resolver.refused(uri):
+            where = ", ".join(str(p) for p in self.resolver.roots()) or "none; set GAZELLE_RESOURCE_PATH"
+            raise _Refused(
+                SpawnEntity.Response.NO_RESOURCE,
+                f"uri '{uri}' is outside the resource paths (symbolic links resolved), so it is not read; "
+                f"resource paths: {where}",
+            )
         if path is None:
             where = ", ".join(str(p) for p in self.resolver.search_paths()) or "none; set GAZELLE_RESOURCE_PATH"
             raise _Refused(
@@ -456,7 +465,8 @@ class SimulationInterfaces:
         X_WF = Pose()
         if frame not in _WORLD_FRAMES:
             X_WF = self._frame_pose(frame, "initial_pose.header.frame_id")
-        return _Prepared(model, name, X_WF * from_pose_msg(p), namespace.strip("/"), allow_renaming)
+        warnings = tuple(d.format() for d in loaded.diagnostics)
+        return _Prepared(model, name, X_WF * from_pose_msg(p), namespace.strip("/"), allow_renaming, warnings)
 
     def _frame_pose(self, frame: str, field_name: str) -> Pose:
         entity, _, link = frame.partition("::")
@@ -497,7 +507,7 @@ class SimulationInterfaces:
             res.result = self._world_error_result(out)
             return res
         res.entity_name = out.name
-        res.result = _result(OK)
+        res.result = _result(OK, with_warnings(list(prepared.warnings)).lstrip("; "))
         self.node.get_logger().info(f"SpawnEntity: spawned [{out.name}] in {1000 * (time.monotonic() - t0):.1f} ms")
         return res
 

@@ -6,7 +6,7 @@ import logging
 import re
 from typing import Callable
 
-from ..description import Plugin
+from ..description import Diagnostic, ErrorCode, Model, Plugin, Severity, World
 from ._base import System
 
 _log = logging.getLogger("gazelle.systems")
@@ -98,10 +98,112 @@ def supported_plugins() -> list[str]:
 
 
 def create_system(plugin: Plugin) -> System | None:
-    """A new system for ``plugin``, or None (with a warning naming it) if unsupported."""
+    """A new system for ``plugin``, or None if unsupported (:func:`audit_model` says why)."""
     factory = _REGISTRY.get(_normalise(plugin.filename)) or _REGISTRY.get(_normalise(plugin.name))
-    if factory is None:
-        where = f"{plugin.location}: " if plugin.location else ""
-        _log.warning(f"{where}plugin '{plugin.name}' ({plugin.filename}) is not supported; it is ignored")
+    return factory() if factory is not None else None
+
+
+# Plugins gazelle knows but does not simulate yet, and what to say about them.
+_NOT_YET: dict[str, str] = {
+    **{
+        n: "sensors are not simulated yet"
+        for n in (
+            "gazebo_ros_ray_sensor", "gazebo_ros_laser", "gazebo_ros_camera", "gazebo_ros_depth_camera",
+            "gazebo_ros_imu_sensor", "gazebo_ros_imu", "gazebo_ros_bumper", "gazebo_ros_gps_sensor",
+            "gazebo_ros_ft_sensor", "gazebo_ros_openni_kinect", "gazebo_ros_range",
+            "gz-sim-sensors-system", "gz::sim::systems::Sensors", "gz-sim-imu-system", "gz::sim::systems::Imu",
+            "gz-sim-contact-system", "gz::sim::systems::Contact", "gz-sim-navsat-system", "gz::sim::systems::NavSat",
+            "gz-sim-forcetorque-system", "gz::sim::systems::ForceTorque", "gz-sim-altimeter-system",
+            "gz-sim-magnetometer-system", "ignition-gazebo-sensors-system", "ignition-gazebo-imu-system",
+        )
+    },
+    **{
+        n: "ros2_control is not supported yet"
+        for n in (
+            "gazebo_ros2_control", "gz_ros2_control-system", "gz_ros2_control::GazeboSimROS2ControlPlugin",
+            "ign_ros2_control-system", "ign_ros2_control::IgnitionROS2ControlPlugin",
+        )
+    },
+}
+
+# gz-sim world systems whose work gazelle does itself: no warning.
+BUILT_IN_WORLD_SYSTEMS = frozenset(
+    {
+        "gz-sim-physics-system", "gz::sim::systems::Physics", "ignition-gazebo-physics-system",
+        "gz-sim-user-commands-system", "gz::sim::systems::UserCommands", "ignition-gazebo-user-commands-system",
+        "gz-sim-scene-broadcaster-system", "gz::sim::systems::SceneBroadcaster",
+        "ignition-gazebo-scene-broadcaster-system",
+        "gazebo_ros_init", "gazebo_ros_factory", "gazebo_ros_state", "gazebo_ros_properties",
+    }
+)
+"""Physics (MuJoCo), user commands and the factory (the spawn/delete/state services), the scene
+broadcaster (the browser viewer), gazebo_ros's init/factory/state world plugins (/clock and the
+classic services)."""
+
+
+def _known_names() -> list[str]:
+    return sorted({*_REGISTRY, *_NOT_YET, *BUILT_IN_WORLD_SYSTEMS})
+
+
+def _did_you_mean(plugin: Plugin) -> str:
+    import difflib
+
+    names = _known_names()
+    for raw in (plugin.filename, plugin.name):
+        close = difflib.get_close_matches(_normalise(raw), names, n=1, cutoff=0.8)
+        if close:
+            return f"; did you mean '{_display(close[0])}'?"
+    return ""
+
+
+def _display(name: str) -> str:
+    """A known name as users write it (``libgazebo_ros_diff_drive.so``)."""
+    return f"lib{name}.so" if name.startswith("gazebo_ros") else name
+
+
+def plugin_problem(plugin: Plugin, *, world: bool = False) -> str | None:
+    """Why ``plugin`` will not run (unsupported, not yet, a likely typo), or None when it runs or is built in."""
+    key_f, key_n = _normalise(plugin.filename), _normalise(plugin.name)
+    if key_f in _REGISTRY or key_n in _REGISTRY:
         return None
-    return factory()
+    if key_f in BUILT_IN_WORLD_SYSTEMS or key_n in BUILT_IN_WORLD_SYSTEMS:
+        return None
+    label = f"{'world ' if world else ''}plugin '{plugin.name}' ({plugin.filename})"
+    why = _NOT_YET.get(key_f) or _NOT_YET.get(key_n)
+    if why is not None:
+        return f"{label} is ignored: {why}"
+    return f"{label} is not supported; it is ignored{_did_you_mean(plugin)}"
+
+
+def audit_model(model: Model) -> list[Diagnostic]:
+    """What of ``model`` will not be simulated: unsupported plugins (with a "did you mean") and sensors."""
+    out: list[Diagnostic] = []
+    for plugin in model.plugins:
+        problem = plugin_problem(plugin)
+        if problem is not None:
+            out.append(Diagnostic(ErrorCode.PLUGIN_UNSUPPORTED, Severity.WARNING, problem, plugin.location))
+    for link in model.links:
+        for sensor in link.sensors:
+            names = ", ".join(f"'{p.filename}'" for p in sensor.plugins)
+            extra = f"; its plugin {names} is ignored" if names else ""
+            out.append(
+                Diagnostic(
+                    ErrorCode.ELEMENT_UNSUPPORTED,
+                    Severity.WARNING,
+                    f"sensor '{sensor.name}' ({sensor.type}) on link '{link.name}' is not simulated yet{extra}",
+                    sensor.location,
+                )
+            )
+    return out
+
+
+def audit_world(world: World) -> list[Diagnostic]:
+    """:func:`audit_model` for every model of ``world``, and its world plugins."""
+    out = [
+        Diagnostic(ErrorCode.PLUGIN_UNSUPPORTED, Severity.WARNING, problem, p.location)
+        for p in world.plugins
+        if (problem := plugin_problem(p, world=True)) is not None
+    ]
+    for model in world.models:
+        out.extend(audit_model(model))
+    return out

@@ -341,13 +341,16 @@ class DiffDrive(System):
         ok = True
         for jn in (*c.left_joints, *c.right_joints):
             if jn not in joint_names:
-                self.log.error(f"Joint [{jn}] not found, plugin will not work.")
+                self.log.error(f"Joint [{jn}] not found, plugin will not work. {joints_listing(model)}")
                 ok = False
             elif model.joint(jn).type.value == "fixed":
                 self.log.error(f"Joint [{jn}] is fixed: a wheel needs a continuous or revolute joint; plugin will not work.")
                 ok = False
         if not ok:
             return
+        hint = wheel_direction_hint(model, tuple(c.left_joints), tuple(c.right_joints))
+        if hint is not None:
+            self.log.warning(hint)
         for i in range(c.num_wheel_pairs):
             self.log.info(f"Wheel pair {i + 1} separation set to [{c.wheel_separation[i]:f}m]")
             self.log.info(f"Wheel pair {i + 1} diameter set to [{c.wheel_diameter[i]:f}m]")
@@ -518,3 +521,57 @@ class DiffDrive(System):
             X_WC = world.entity_state(self._entity, j.child).pose
             out.append(Transform(stamp, self.prefix + j.parent, self.prefix + j.child, X_WP.inverse() * X_WC))
         return out
+
+
+def joint_axis_in_root(model: Model, joint_name: str) -> tuple[float, float, float]:
+    """The axis of ``joint_name`` in the model's root link frame, with every joint at zero."""
+    by_child = {j.child: j for j in model.joints}
+    joint = model.joint(joint_name)
+    axis = joint.axis.xyz if joint.axis is not None else (1.0, 0.0, 0.0)
+    v = quat_rotate(joint.origin.orientation, axis)  # joint frame -> parent link frame
+    link = joint.parent
+    seen: set[str] = set()
+    while link in by_child and link not in seen:  # up the tree to the root
+        seen.add(link)
+        up = by_child[link]
+        X_PC = up.origin * up.child_offset
+        v = quat_rotate(X_PC.orientation, v)
+        link = up.parent
+    return v  # type: ignore[return-value]
+
+
+def wheel_direction_hint(model: Model, left: tuple[str, ...], right: tuple[str, ...]) -> str | None:
+    """Why a positive ``cmd_vel`` would not drive this robot forward, or None when it does.
+
+    Gazebo (and gazelle) turn each wheel joint at ``v/r`` about its own axis, so a wheel rolls the
+    robot forward (+x of its root link) only when that axis points to the robot's left (+y). The
+    seed blog's robot rotates its wheel joints by +pi/2 about x, so its axes point right and it
+    drives backwards and turns clockwise.
+    """
+    try:
+        lefts = [joint_axis_in_root(model, j)[1] for j in left]
+        rights = [joint_axis_in_root(model, j)[1] for j in right]
+    except KeyError:
+        return None
+    eps = 1e-6
+    if any(abs(a) < eps for a in (*lefts, *rights)):
+        return "a wheel joint's axis has no left/right (y) component in the robot frame: that wheel cannot roll it forward"
+    back_l, back_r = all(a < 0 for a in lefts), all(a < 0 for a in rights)
+    if back_l and back_r:
+        return (
+            "a positive cmd_vel drives this robot backwards and turns it clockwise: its wheel joint axes point to "
+            "the robot's right (-y); Gazebo does the same. Flip them (axis xyz=\"0 0 -1\", or turn the wheel "
+            "joints by -pi/2 about x instead of +pi/2)"
+        )
+    if back_l != back_r:
+        return (
+            "the left and right wheel joint axes point opposite ways: a positive cmd_vel spins this robot in place "
+            "instead of driving it; give both axes the robot's +y direction"
+        )
+    return None
+
+
+def joints_listing(model: Model) -> str:
+    """``The model's joints: a (continuous), b (fixed)`` for messages about a joint that is not there."""
+    names = ", ".join(f"{j.name} ({j.type.value})" for j in model.joints) or "none"
+    return f"The model's joints: {names}."

@@ -30,7 +30,7 @@ from ..description import ConfigElement, Pose
 from ..description._model import quat_from_rpy
 from ._base import PerGeneration, System, all_texts, SystemContext, UpdateInfo, child_text, parse_float
 from ._bus import Endpoint, MsgType, Odometry, Transform, TransformBatch, Twist, resolve_topic
-from .diff_drive import add_wheel_servo, drive_wheel
+from .diff_drive import joints_listing, wheel_direction_hint, add_wheel_servo, drive_wheel
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..physics._world import PhysicsWorld
@@ -238,8 +238,11 @@ class GzDiffDrive(System):
         missing = [jn for jn in (*c.left_joints, *c.right_joints) if jn not in joints]
         if missing:
             for jn in missing:
-                log.error(f"Joint [{jn}] not found, DiffDrive will not work.")
+                log.error(f"Joint [{jn}] not found, DiffDrive will not work. {joints_listing(entity.model)}")
             return
+        hint = wheel_direction_hint(entity.model, tuple(c.left_joints), tuple(c.right_joints))
+        if hint is not None:
+            log.warning(hint)
         for side, names in ((1, c.right_joints), (-1, c.left_joints)):
             for jn in names:
                 limit = joints[jn].axis.limit.effort if joints[jn].axis is not None else None
