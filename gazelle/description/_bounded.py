@@ -62,7 +62,14 @@ def _mapped_bytes() -> int:
     return 0
 
 
-def run_bounded(fn: Callable[[], T], *, what: str, timeout_sec: float | None = None, memory_bytes: int | None = None) -> T:
+def run_bounded(
+    fn: Callable[[], T],
+    *,
+    what: str,
+    timeout_sec: float | None = None,
+    memory_bytes: int | None = None,
+    timeout_hint: str = "GAZELLE_XACRO_TIMEOUT",
+) -> T:
     """Run ``fn`` in a forked child limited in wall time and memory; return its result.
 
     The result travels back as JSON (plain data only: no pickle, so nothing the child sends
@@ -127,7 +134,7 @@ def run_bounded(fn: Callable[[], T], *, what: str, timeout_sec: float | None = N
             os.kill(pid, signal.SIGKILL)
         _, status = os.waitpid(pid, 0)
     if timed_out:
-        raise BoundExceeded(f"{what} took longer than {timeout_sec:g} s and was stopped (GAZELLE_XACRO_TIMEOUT)")
+        raise BoundExceeded(f"{what} took longer than {timeout_sec:g} s and was stopped ({timeout_hint})")
     if not chunks:
         if os.WIFSIGNALED(status):
             why = f"was killed by signal {os.WTERMSIG(status)}"

@@ -65,6 +65,7 @@ from ..description import (
     Sphere,
 )
 from ..description._meshes import MeshReadError, load_mesh
+from ._convex import collision_parts
 from ..description._model import quat_rotate
 
 _log = logging.getLogger("gazelle.physics")
@@ -105,6 +106,8 @@ class BuiltEntity:
     """MuJoCo joints above kinematic links: moved only by set-state calls (see the module docstring)."""
     unsimulated: dict[str, tuple[str, ...]] = field(default_factory=dict)
     """Contact parameters MuJoCo cannot honour -> the ``link/collision`` places that set them."""
+    decomposed: tuple[tuple[str, int, float, str], ...] = ()
+    """Non-convex collision meshes split into convex parts: (file, parts, seconds, where from)."""
 
 
 def friction_priority(mu: float) -> int:
@@ -146,7 +149,14 @@ def _solref_from_surface(col: Collision, mass_hint: float, timestep: float) -> t
     return [timeconst, 1.0], [0.9, 0.95, 0.001, 0.5, 2.0]
 
 
-def _add_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, col: Collision, name: str, mass_hint: float) -> None:
+def _add_geom(
+    spec: mujoco.MjSpec,
+    body: mujoco.MjsBody,
+    col: Collision,
+    name: str,
+    mass_hint: float,
+    decomposed: list[tuple[str, int, float, str]] | None = None,
+) -> None:
     g = col.geometry
     kwargs: dict = {
         "name": name,
@@ -188,12 +198,26 @@ def _add_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, col: Collision, name: s
     elif isinstance(g, Mesh):
         if g.path is None:
             raise BuildError(f"collision '{col.name}': mesh '{g.uri}' could not be resolved")
-        mesh_name = f"{name}__mesh"
-        mesh = spec.add_mesh(name=mesh_name)
-        vertices, faces = _load_mesh(g.path)
-        mesh.uservert = list((vertices * np.asarray(g.scale)).ravel())
-        mesh.userface = list(faces.ravel())
-        kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh_name)
+        try:
+            parts = collision_parts(g.path, tuple(g.scale))  # type: ignore[arg-type]
+        except MeshReadError as err:
+            raise BuildError(str(err)) from err
+        if parts is None:  # convex: the mesh itself
+            mesh_name = f"{name}__mesh"
+            mesh = spec.add_mesh(name=mesh_name)
+            vertices, faces = _load_mesh(g.path)
+            mesh.uservert = list((vertices * np.asarray(g.scale)).ravel())
+            mesh.userface = list(faces.ravel())
+            kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh_name)
+        else:  # not convex: one geom per convex part (see _convex)
+            kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH)
+            piece_names = []
+            for i, piece in enumerate(parts.pieces):
+                mesh = spec.add_mesh(name=f"{name}__part{i}")
+                mesh.uservert = list(np.asarray(piece, dtype=float).ravel())
+                piece_names.append(mesh.name)
+            if decomposed is not None:
+                decomposed.append((g.path, len(piece_names), parts.seconds, parts.source))
     else:  # pragma: no cover - the union is closed
         raise BuildError(f"collision '{col.name}': unsupported geometry {type(g).__name__}")
     solref = _solref_from_surface(col, mass_hint, spec.option.timestep)
@@ -209,6 +233,10 @@ def _add_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, col: Collision, name: s
     # (contype1 & conaffinity2) | (contype2 & conaffinity1): both fields = the bitmask is the same rule.
     mask = surface.collide_bitmask if surface.collide_bitmask is not None else DEFAULT_COLLIDE_BITMASK
     kwargs["contype"] = kwargs["conaffinity"] = int(mask) & 0xFFFFFFFF
+    if isinstance(g, Mesh) and "meshname" not in kwargs:
+        for i, mesh_name in enumerate(piece_names):
+            body.add_geom(**{**kwargs, "name": f"{name}/{i}", "meshname": mesh_name})
+        return
     body.add_geom(**kwargs)
 
 
@@ -367,6 +395,7 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> Bui
 
     built = BuiltEntity(name=entity, root_body="", free_joint=None)
     ignored: dict[str, list[str]] = {}
+    decomposed: list[tuple[str, int, float, str]] = []
     total_mass = sum((lk.inertial.mass if lk.inertial else 0.0) for lk in model.links) or 1.0
 
     def add_subtree(parent_body: mujoco.MjsBody, link_name: str, X_PC: Pose, joint: Joint | None) -> None:
@@ -405,7 +434,9 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> Bui
                     built.kinematic_joints.append(jname)
         mass_hint = link.inertial.mass if link.inertial else total_mass
         for i, col in enumerate(link.collisions):
-            _add_geom(spec, body, col, scoped(entity, f"{link_name}::{col.name or 'collision'}#{i}"), mass_hint)
+            _add_geom(
+                spec, body, col, scoped(entity, f"{link_name}::{col.name or 'collision'}#{i}"), mass_hint, decomposed
+            )
             for param in unsimulated_surface_parameters(col):
                 ignored.setdefault(param, []).append(f"{link_name}/{col.name}")
         return body
@@ -436,6 +467,7 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> Bui
         if not built.root_body:
             built.root_body = scoped(entity, j.child)
     built.unsimulated = {param: tuple(where) for param, where in ignored.items()}
+    built.decomposed = tuple(decomposed)
     _exclude_self_collisions(spec, model, entity, built)
     return built
 

@@ -27,6 +27,7 @@ from ..systems._base import SystemContext, SystemManager, UpdateInfo
 from ..systems._bus import Bus
 from ..systems._registry import audit_model, audit_world, create_system
 from ..systems.robot_state import RSP_PLUGIN, RobotStatePublisher, robot_state_config
+from ._convex import prepare as prepare_meshes
 from ._world import Entity, ErrorKind, PhysicsWorld, WorldError
 
 T = TypeVar("T")
@@ -345,6 +346,7 @@ class Simulation:
         Raises:
             WorldError: on a duplicate/invalid name, a bad pose or a model that cannot be built.
         """
+        prepare_meshes(model)  # slow work (convex decompositions) here, in the caller's thread
         return self.call(
             lambda: self._add_entity(model, name=name or model.name, pose=pose, namespace=namespace, spawned=True)
         )
@@ -399,6 +401,8 @@ class Simulation:
         ``name_1``, ``name_2``, ... Returns, per request, the new entity or the
         :class:`WorldError` that refused it.
         """
+        for request in requests:
+            prepare_meshes(request[0])
         return self.call(lambda: self._spawn_many(requests), timeout=timeout)
 
     def _spawn_many(self, requests: list[tuple[Model, str, Pose, str, bool]]) -> list[Entity | WorldError]:

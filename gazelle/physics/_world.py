@@ -17,6 +17,7 @@ import numpy as np
 
 from ..description import Model, Pose, World, excerpt
 from ..description._model import quat_conj, quat_rotate
+from ._convex import cache_dir
 from ._builder import JOINT_ARMATURE, SEP, BuildError, BuiltEntity, add_model, scoped
 
 _log = logging.getLogger("gazelle.physics")
@@ -200,8 +201,22 @@ class PhysicsWorld:
         entity.generation_added = self.generation
         self.entities[name] = entity
         self._report_unsimulated(entity)
+        self._report_decomposed(entity)
         mujoco.mj_forward(self.model, self.data)
         return entity
+
+    def _report_decomposed(self, entity: Entity) -> None:
+        """Say once per mesh file what was done to its non-convex collision mesh, and what it cost."""
+        for path, parts, seconds, source in entity.built.decomposed:
+            key = (path, ("decomposed",))
+            if key in self._reported:
+                continue
+            self._reported[key] = 1
+            how = f"in {seconds:.2f} s" if source == "computed" else f"from the {source}"
+            _log.info(
+                f"'{entity.name}': collision mesh {path} is not convex: it collides as {parts} convex parts "
+                f"(CoACD, {how}; cache: {cache_dir()})"
+            )
 
     def _report_unsimulated(self, entity: Entity) -> None:
         """One warning per model file (or string) for the contact parameters MuJoCo cannot honour,
@@ -554,5 +569,6 @@ class PhysicsWorld:
             e.generation_added = self.generation
             self.entities[e.name] = e
             self._report_unsimulated(e)
+            self._report_decomposed(e)
         mujoco.mj_forward(self.model, self.data)
         return out

@@ -1,0 +1,219 @@
+"""Collision meshes that are not convex: a convex decomposition, cached on disk.
+
+MuJoCo collides a mesh as its convex hull. Gazebo collides with the triangles, so a concave mesh
+(TurtleBot3's hexagonal arena wall, a cup, a U) must not become one solid block: the arena's hull
+buried the burger 84° on its side. A non-convex collision mesh is split into convex parts with
+CoACD (collision-aware approximate convex decomposition, the ``coacd`` wheel), each part a MuJoCo
+mesh geom. The parts are cached by a hash of the scaled vertices and faces and the settings, in
+memory and in ``$GAZELLE_CACHE_DIR`` (default ``~/.cache/gazelle/convex``), so only the first load
+of a mesh pays for it (TurtleBot3's wall: 0.8 s, 6 parts).
+
+The decomposition runs in a forked child bounded in time (``GAZELLE_DECOMPOSE_TIMEOUT``, default
+30 s) and memory, off the simulation thread (:func:`prepare`); a mesh it cannot decompose in time,
+or with more than ``GAZELLE_DECOMPOSE_MAX_FACES`` faces (5,000), keeps its convex hull with a
+warning that says so (and that outcome is cached too).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import logging
+import os
+import threading
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..description import Mesh, Model
+from ..description._bounded import BoundExceeded, run_bounded
+from ..description._meshes import MeshReadError, load_mesh
+
+_log = logging.getLogger("gazelle.physics")
+
+CONVEXITY_TOLERANCE = 1e-4
+"""How far (as a fraction of the mesh's size) a vertex may stick out of a face's plane in a convex mesh."""
+COACD_THRESHOLD = 0.05
+"""CoACD's concavity threshold: the largest allowed concavity, as a fraction of the mesh's size."""
+COACD_MAX_PARTS = 64
+SETTINGS_VERSION = "coacd-1.0.14/t0.05/max64/v1"
+"""Part of the cache key: changing the settings recomputes the parts."""
+DEFAULT_TIMEOUT_SEC = 30.0
+DEFAULT_MAX_FACES = 5000
+"""Larger non-convex meshes keep their hull (with a warning) unless ``GAZELLE_DECOMPOSE_MAX_FACES`` is
+raised: CoACD's time grows quickly with detail (TurtleBot3's 34,320-face burger_base.stl: 193 s), while
+the concave meshes that matter for contact (walls, arenas, bins) are simple."""
+
+
+@dataclass(frozen=True)
+class Parts:
+    """The convex pieces a collision mesh collides as (vertices in the mesh frame, scaled)."""
+
+    pieces: tuple[np.ndarray, ...]
+    seconds: float
+    """Time spent decomposing (0 when it came from a cache)."""
+    source: str
+    """"computed", "disk cache" or "memory"."""
+
+
+_memory: dict[str, Parts | None] = {}
+"""Cache key -> the parts, or None for a convex mesh (collide as it is)."""
+_lock = threading.Lock()
+
+
+def cache_dir() -> Path:
+    """Where decompositions are kept between runs."""
+    env = os.environ.get("GAZELLE_CACHE_DIR")
+    base = Path(env) if env else Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "gazelle"
+    return base / "convex"
+
+
+def is_convex(vertices: np.ndarray, faces: np.ndarray) -> bool:
+    """Whether no vertex lies outside the plane of any face (within :data:`CONVEXITY_TOLERANCE` of the size)."""
+    if len(faces) == 0:
+        return True
+    v = np.asarray(vertices, dtype=float)
+    tri = v[np.asarray(faces, dtype=np.int64)]
+    normals = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    lengths = np.linalg.norm(normals, axis=1)
+    keep = lengths > 1e-12
+    normals, origins = normals[keep] / lengths[keep, None], tri[keep, 0]
+    size = float(np.linalg.norm(v.max(axis=0) - v.min(axis=0))) or 1.0
+    tol = CONVEXITY_TOLERANCE * size
+    # orient every normal outwards (away from the centroid), then no vertex may be in front of any face
+    centroid = v.mean(axis=0)
+    flip = np.einsum("ij,ij->i", normals, origins - centroid) < 0
+    normals[flip] *= -1
+    step = max(1, 2_000_000 // max(len(v), 1))  # chunks of faces x vertices stay around 16 MB
+    for start in range(0, len(normals), step):
+        n, o = normals[start : start + step], origins[start : start + step]
+        ahead = v @ n.T - np.einsum("ij,ij->i", n, o)
+        if np.any(ahead > tol):
+            return False
+    return True
+
+
+def _key(vertices: np.ndarray, faces: np.ndarray) -> str:
+    h = hashlib.sha256(SETTINGS_VERSION.encode())
+    h.update(np.ascontiguousarray(vertices, dtype=np.float64).tobytes())
+    h.update(np.ascontiguousarray(faces, dtype=np.int64).tobytes())
+    return h.hexdigest()
+
+
+def _decompose(vertices: np.ndarray, faces: np.ndarray) -> list[list[list[float]]]:
+    """Run CoACD (in the bounded child); plain lists travel back as JSON."""
+    import coacd
+
+    coacd.set_log_level("error")
+    parts = coacd.run_coacd(
+        coacd.Mesh(np.asarray(vertices, dtype=float), np.asarray(faces, dtype=np.int64)),
+        threshold=COACD_THRESHOLD,
+        max_convex_hull=COACD_MAX_PARTS,
+        seed=0,
+    )
+    return [np.asarray(p[0], dtype=float).tolist() for p in parts]
+
+
+def _load_disk(path: Path) -> tuple[np.ndarray, ...] | None:
+    """The cached parts; ``()`` records that the mesh keeps its hull."""
+    try:
+        with np.load(path) as data:
+            return tuple(data[k] for k in sorted(data.files, key=lambda s: int(s[1:])))
+    except (OSError, ValueError, KeyError):
+        return None
+
+
+def _save_disk(path: Path, pieces: tuple[np.ndarray, ...]) -> None:
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(f".{os.getpid()}.tmp.npz")
+        np.savez(tmp, **{f"p{i}": p for i, p in enumerate(pieces)})
+        os.replace(tmp, path)
+    except OSError as err:  # a read-only home: decompose again next time
+        _log.debug(f"cannot cache a convex decomposition in {path.parent}: {err}")
+
+
+def collision_parts(path: str, scale: tuple[float, float, float]) -> Parts | None:
+    """The convex parts of the collision mesh at ``path`` (scaled), or None when it is convex already.
+
+    Raises:
+        MeshReadError: the mesh cannot be read.
+    """
+    verts, faces = _welded(*load_mesh(path))
+    verts = verts * np.asarray(scale, dtype=float)
+    key = _key(verts, faces)
+    with _lock:
+        if key in _memory:
+            cached = _memory[key]
+            return None if cached is None else Parts(cached.pieces, 0.0, "memory")
+    if is_convex(verts, faces):
+        with _lock:
+            _memory[key] = None
+        return None
+    max_faces = int(float(os.environ.get("GAZELLE_DECOMPOSE_MAX_FACES") or DEFAULT_MAX_FACES))
+    if len(faces) > max_faces:
+        return _hull(key, path, f"it has {len(faces)} faces, more than GAZELLE_DECOMPOSE_MAX_FACES={max_faces}")
+    disk = cache_dir() / f"{key}.npz"
+    pieces = _load_disk(disk) if disk.is_file() else None
+    if pieces == ():
+        return _hull(key, path, "its decomposition failed before (cached)")
+    if pieces is not None:
+        parts = Parts(pieces, 0.0, "disk cache")
+    else:
+        timeout = float(os.environ.get("GAZELLE_DECOMPOSE_TIMEOUT") or DEFAULT_TIMEOUT_SEC)
+        t0 = time.monotonic()
+        try:
+            raw = run_bounded(
+                lambda: _decompose(verts, faces),
+                what="its convex decomposition",
+                timeout_sec=timeout,
+                timeout_hint="GAZELLE_DECOMPOSE_TIMEOUT",
+            )
+        except BoundExceeded as err:
+            _save_disk(disk, ())  # not again on this machine
+            return _hull(key, path, str(err))
+        pieces = tuple(np.asarray(p, dtype=float) for p in raw if len(p) >= 4)
+        parts = Parts(pieces, time.monotonic() - t0, "computed")
+        _save_disk(disk, pieces)
+    with _lock:
+        _memory[key] = parts
+    return parts
+
+
+def _hull(key: str, path: str, why: str) -> None:
+    """Fall back to the convex hull for a mesh, with a warning (once per process)."""
+    with _lock:
+        known = key in _memory
+        _memory[key] = None
+    if not known:
+        _log.warning(f"collision mesh '{path}' is not convex, but {why}: it collides as its convex hull (an approximation)")
+    return None
+
+
+def _welded(vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Vertices shared by faces merged (mesh files repeat them per face), so a closed mesh is manifold:
+    CoACD then skips its slow remeshing (TurtleBot3's wall: 0.7 s instead of 10 s)."""
+    v = np.asarray(vertices, dtype=float)
+    f = np.asarray(faces, dtype=np.int64)
+    if len(v) == 0:
+        return v, f
+    rounded = np.round(v, 9)
+    unique, inverse = np.unique(rounded, axis=0, return_inverse=True)
+    return unique, inverse.reshape(-1)[f]
+
+
+def prepare(model: Model) -> None:
+    """Decompose ``model``'s non-convex collision meshes now, in the calling thread (not the simulation's).
+
+    The builder finds the results in the memory cache; a mesh that cannot be read is left for the
+    builder to report.
+    """
+    for link in model.links:
+        for col in link.collisions:
+            g = col.geometry
+            if isinstance(g, Mesh) and g.path is not None:
+                try:
+                    collision_parts(g.path, tuple(g.scale))  # type: ignore[arg-type]
+                except MeshReadError:
+                    pass

@@ -1,0 +1,113 @@
+"""Non-convex collision meshes collide with their shape, not their hull (issue 10).
+
+TurtleBot3's arena walls became one solid block: a box dropped inside rested on top at z = 1.02,
+and the burger at the official spawn pose ended tipped 84°.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+import trimesh
+
+from gazelle.description import Pose, load, load_string
+from gazelle.physics import Simulation
+from gazelle.physics import _convex
+from gazelle.worlds import default_world
+from _paths import REAL
+
+
+def ring_stl(path: Path) -> Path:
+    """A square ring 1 m across, walls 0.1 m thick and 0.3 m high: one closed, non-convex mesh."""
+    outer, inner, h = 0.5, 0.4, 0.3
+    # the ring's cross-section as two squares, extruded: top and bottom faces are quad strips
+    o = [(-outer, -outer), (outer, -outer), (outer, outer), (-outer, outer)]
+    i = [(-inner, -inner), (inner, -inner), (inner, inner), (-inner, inner)]
+    verts = [(x, y, z) for z in (0.0, h) for (x, y) in (*o, *i)]  # 0-3 outer bottom, 4-7 inner bottom, 8-15 top
+    faces = []
+    for k in range(4):
+        a, b = k, (k + 1) % 4
+        ob, ib, ot, it = a, 4 + a, 8 + a, 12 + a
+        ob2, ib2, ot2, it2 = b, 4 + b, 8 + b, 12 + b
+        faces += [(ob, ob2, ot2), (ob, ot2, ot)]  # outer wall, facing out
+        faces += [(ib, it2, ib2), (ib, it, it2)]  # inner wall, facing in
+        faces += [(ot, ot2, it2), (ot, it2, it)]  # top
+        faces += [(ob, ib2, ob2), (ob, ib, ib2)]  # bottom
+    mesh = trimesh.Trimesh(vertices=np.array(verts, dtype=float), faces=np.array(faces), process=False)
+    assert mesh.is_watertight and mesh.is_winding_consistent
+    mesh.export(path)
+    return path
+
+
+BALL = (
+    '<sdf version="1.9"><model name="ball"><link name="l"><inertial><mass>0.1</mass><inertia><ixx>1e-4</ixx>'
+    "<iyy>1e-4</iyy><izz>1e-4</izz></inertia></inertial><collision name=\"c\"><geometry><sphere><radius>0.05</radius>"
+    "</sphere></geometry></collision></link></model></sdf>"
+)
+
+
+def ring_model(stl: Path) -> str:
+    return (
+        f'<sdf version="1.9"><model name="ring"><static>true</static><link name="l"><collision name="c">'
+        f"<geometry><mesh><uri>{stl}</uri></mesh></geometry></collision></link></model></sdf>"
+    )
+
+
+def test_a_concave_ring_holds_a_ball_inside(tmp_path: Path, monkeypatch, caplog) -> None:
+    monkeypatch.setenv("GAZELLE_CACHE_DIR", str(tmp_path / "cache"))
+    stl = ring_stl(tmp_path / "ring.stl")
+    assert not _convex.is_convex(*_convex._welded(*trimesh_arrays(stl)))
+    ring = load_string(ring_model(stl), source=str(tmp_path / "ring.sdf")).value
+    sim = Simulation(default_world(), rtf=0.0)
+    with caplog.at_level(logging.INFO, logger="gazelle.physics"):
+        sim.spawn(ring, name="ring")
+    assert any("is not convex: it collides as" in r.getMessage() for r in caplog.records)
+    sim.spawn(load_string(BALL).value, name="ball", pose=Pose((0.1, 0.1, 0.6)))
+    sim.step(2000)
+    x, y, z = sim.world.entity_state("ball").pose.position
+    assert z == pytest.approx(0.05, abs=0.005), "the ball rests on the ground inside the ring (the hull held it at 0.35)"
+    assert abs(x) < 0.4 and abs(y) < 0.4
+
+
+def test_decompositions_are_cached_on_disk(tmp_path: Path, monkeypatch) -> None:
+    monkeypatch.setenv("GAZELLE_CACHE_DIR", str(tmp_path / "cache"))
+    _convex._memory.clear()  # the ring of the test above is in the process's memory cache
+    stl = ring_stl(tmp_path / "ring.stl")
+    first = _convex.collision_parts(str(stl), (1.0, 1.0, 1.0))
+    assert first is not None and len(first.pieces) >= 4
+    assert list((tmp_path / "cache" / "convex").glob("*.npz"))
+    _convex._memory.clear()
+    again = _convex.collision_parts(str(stl), (1.0, 1.0, 1.0))
+    assert again is not None and again.source == "disk cache" and len(again.pieces) == len(first.pieces)
+    # a convex mesh stays one geom
+    box = tmp_path / "box.stl"
+    trimesh.creation.box(extents=(1, 1, 1)).export(box)
+    assert _convex.collision_parts(str(box), (1.0, 1.0, 1.0)) is None
+
+
+def trimesh_arrays(path: Path) -> tuple[np.ndarray, np.ndarray]:
+    m = trimesh.load(path, force="mesh", process=False)
+    return np.asarray(m.vertices), np.asarray(m.faces)
+
+
+def test_turtlebot3_world_arena_is_hollow(monkeypatch) -> None:
+    """A box dropped inside the arena reaches the floor (it rested on the hull's top at z = 1.02), and the
+    burger at the official spawn pose (-2, -0.5) stands upright (it ended tipped 84°)."""
+    tb3 = REAL / "turtlebot3" / "turtlebot3_gazebo"
+    monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(tb3 / "models"))
+    sim = Simulation(load(tb3 / "worlds" / "turtlebot3_world.world").value, rtf=0.0)
+    sim.spawn(load(tb3 / "models" / "turtlebot3_burger" / "model.sdf").value, name="burger", pose=Pose((-2.0, -0.5, 0.01)))
+    box = load_string(
+        '<sdf version="1.9"><model name="b"><link name="l"><inertial><mass>1</mass></inertial><collision name="c">'
+        "<geometry><box><size>0.1 0.1 0.1</size></box></geometry></collision></link></model></sdf>"
+    ).value
+    sim.spawn(box, name="box", pose=Pose((0.5, 0.5, 1.0)))
+    sim.step(3000)
+    assert sim.world.entity_state("box").pose.position[2] == pytest.approx(0.05, abs=0.005)
+    q = sim.world.entity_state("burger").pose.orientation
+    tilt = math.degrees(math.acos(max(-1.0, min(1.0, 1 - 2 * (q[1] ** 2 + q[2] ** 2)))))
+    assert tilt < 2.0
