@@ -69,16 +69,16 @@ def run_sim(
     from ..ros._bridge import RosBridge
     from ..ros._exposure import choose_discovery_range
 
-    # rclpy prints our records itself once the bridge is up
-    for h in list(logging.getLogger().handlers):
-        logging.getLogger().removeHandler(h)
     # The sim thread holds the GIL while it steps; ROS callbacks (a cmd_vel arriving) wait
     # for the interpreter's switch interval, 5 ms by default: at 30x real time that is
     # 150 ms of sim time between a command and its effect. 0.2 ms keeps it to ~6 ms.
     sys.setswitchinterval(GIL_SWITCH_INTERVAL_SEC)
     discovery = choose_discovery_range(ros_discovery)
-    sim = Simulation(world, rtf=rtf)
+    sim = Simulation(world, rtf=rtf)  # its log lines (plugins, decompositions) go to stderr as they are
     sim.paused = paused
+    # rclpy prints our records itself once the bridge is up
+    for h in list(logging.getLogger().handlers):
+        logging.getLogger().removeHandler(h)
     bridge = RosBridge(sim, clock_rate_hz=clock_rate_hz, announce=True)
     stop = threading.Event()
 

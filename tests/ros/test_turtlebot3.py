@@ -6,6 +6,7 @@ the fixtures; this process only uses plain rclpy (no tf2_ros) to drive and obser
 
 from __future__ import annotations
 
+import math
 import threading
 import time
 from pathlib import Path
@@ -130,3 +131,42 @@ def test_ros2_control_diffbot_spawns_with_tf_and_a_warning(resources, sim_factor
     sim.wait_line("ros2_control", 10)
     line = next(ln for ln in sim.output.splitlines() if "ros2_control" in ln)
     assert "not supported" in line, line
+
+
+def _tilt_deg(q) -> float:
+    import math
+
+    return math.degrees(math.acos(max(-1.0, min(1.0, 1 - 2 * (q.x * q.x + q.y * q.y)))))
+
+
+@pytest.mark.slow
+def test_turtlebot3_world_burger_stands_and_drives_half_a_metre(resources, sim_factory, ros_client):
+    """TurtleBot3's own world (concave arena walls, Fuel ground plane and sun) with the burger at the
+    official spawn pose (-2, -0.5): it stands upright and drives 0.5 m on /cmd_vel."""
+    world = TB3 / "turtlebot3_gazebo/worlds/turtlebot3_world.world"
+    sim = sim_factory(str(world))
+    spawn = start(
+        [*GAZELLE, "spawn", "-entity", "burger", "-file", str(CASES["gz_model_sdf"]), "-x", "-2.0", "-y", "-0.5",
+         "-z", "0.01", "-timeout", "30"],
+        "gazelle spawn",
+    )
+    assert spawn.wait(90) == 0, spawn.output
+    wait_for(lambda: abs(ros_client.entity_state("burger").state.twist.linear.z) < 1e-3, 15, "the burger at rest")
+    start_pose = ros_client.entity_state("burger").state.pose
+    assert _tilt_deg(start_pose.orientation) < 2.0
+    cmd = ros_client.node.create_publisher(Twist, "/cmd_vel", 10)
+    wait_for(lambda: cmd.get_subscription_count() > 0, 10, "the burger's /cmd_vel subscription")
+    twist = Twist()
+    twist.linear.x = 0.2
+
+    def travelled() -> float:
+        p = ros_client.entity_state("burger").state.pose.position
+        cmd.publish(twist)
+        return math.hypot(p.x - start_pose.position.x, p.y - start_pose.position.y)
+
+    wait_for(lambda: travelled() >= 0.5, 20, "the burger to drive 0.5 m", interval=0.05)
+    cmd.publish(Twist())
+    end = ros_client.entity_state("burger").state.pose
+    assert _tilt_deg(end.orientation) < 2.0
+    assert abs(end.position.y - start_pose.position.y) < 0.05  # straight ahead (+x), not into a wall
+    assert "is not convex: it collides as" in sim.output
