@@ -76,6 +76,28 @@ def _read_topic(node: Node, executor: SingleThreadedExecutor, topic: str, timeou
     return got[0] if got else None
 
 
+def _topic_hint(node: Node, topic: str) -> str:
+    """What the graph says about a description topic that delivered nothing: who publishes it, or what to do."""
+    name = topic if topic.startswith("/") else f"/{topic}"
+    try:
+        pubs = node.get_publishers_info_by_topic(name)
+    except Exception:  # noqa: BLE001 - a hint must never turn a clear failure into a traceback
+        pubs = []
+    if not pubs:
+        return (
+            f"no node publishes {name}. Start robot_state_publisher with your robot_description, or spawn the "
+            "file directly: gazelle spawn -entity NAME -file robot.urdf.xacro"
+        )
+    who = ", ".join(sorted({f"{p.node_namespace.rstrip('/')}/{p.node_name}" for p in pubs}))
+    latched = any(p.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for p in pubs)
+    if not latched:
+        return (
+            f"{who} publishes {name} but not latched (durability volatile), so a late subscriber gets nothing; "
+            "publish it with transient_local durability, as robot_state_publisher does, or use -file"
+        )
+    return f"{who} publishes {name} (latched) but sent nothing yet; is its description parameter empty?"
+
+
 def _xml_from_file(path: str) -> str:
     """The entity XML of a file the user named: xacro (by suffix or markup) is expanded here, in the
     user's own process and bounded in time and memory, so the server only ever receives plain XML."""
@@ -153,7 +175,8 @@ def _run(
         log.info(f"Waiting for entity xml on {args.topic}")
         got = _read_topic(node, executor, args.topic, timeout)
         if got is None:
-            return _fail(node, f"Timed out after {timeout:g} s waiting for entity xml on topic {args.topic}")
+            return _fail(node, f"Timed out after {timeout:g} s waiting for entity xml on topic {args.topic}: "
+                         + _topic_hint(node, args.topic))
         xml = got
     elif args.string is not None:
         xml = args.string

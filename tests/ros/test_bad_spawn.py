@@ -141,3 +141,18 @@ def test_descriptions_from_the_wire_are_data_never_code(sim_factory, ros_client,
     assert "x" not in names
     # and the server answers at once: a real spawn right after works
     assert _spawn(ros_client, "robot", xacro_to_urdf(SEED_XACRO)).success
+
+
+def test_spawn_from_a_silent_topic_says_who_publishes_it(ros_client):
+    from rclpy.qos import QoSProfile
+    from std_msgs.msg import String
+
+    proc = start([*GAZELLE, "spawn", "-entity", "r", "-topic", "robot_description", "-timeout", "2"], "gazelle spawn")
+    assert proc.wait(30) == 1
+    assert "no node publishes /robot_description" in proc.output and "-file" in proc.output, proc.output
+    # a volatile publisher (a common mistake): named, and told to latch
+    pub = ros_client.node.create_publisher(String, "/robot_description", QoSProfile(depth=1))
+    assert pub is not None
+    proc = start([*GAZELLE, "spawn", "-entity", "r", "-topic", "robot_description", "-timeout", "3"], "gazelle spawn")
+    assert proc.wait(30) == 1
+    assert "/test_client publishes /robot_description but not latched" in proc.output, proc.output
