@@ -67,6 +67,21 @@ def robot_state_config(entity: "Entity", log: logging.Logger) -> tuple[RobotStat
     )
 
 
+GZ_DIFF_DRIVES = frozenset(
+    {"gz-sim-diff-drive-system", "gz::sim::systems::DiffDrive", "ignition-gazebo-diff-drive-system",
+     "ignition::gazebo::systems::DiffDrive", "libignition-gazebo-diff-drive-system.so", "libgz-sim-diff-drive-system.so"}
+)
+
+
+def gz_scoped_frames(model: Model) -> bool:
+    """Whether a gz-sim DiffDrive of ``model`` uses its default, model-scoped frames (no ``<child_frame_id>``)."""
+    for p in model.plugins:
+        if p.filename.strip() in GZ_DIFF_DRIVES or p.name.strip() in GZ_DIFF_DRIVES:
+            if p.config is None or p.config.find("child_frame_id") is None:
+                return True
+    return False
+
+
 def entity_frame_prefix(entity: "Entity", log: logging.Logger) -> str:
     """The prefix of every TF frame of an entity: its RSP ``frame_prefix``, else ``<namespace>/``."""
     config, _ = robot_state_config(entity, log)
@@ -96,6 +111,10 @@ class RobotStatePublisher(System):
         c = self.config
         model = ctx.entity.model
         self.prefix = entity_frame_prefix(ctx.entity, ctx.logger)
+        if not self.prefix and gz_scoped_frames(model):
+            # gz-sim's DiffDrive names its frames <model>/odom -> <model>/<canonical link>: the links hang
+            # below that, so two vehicles of one SDF (gz-sim's diff_drive.sdf) never share a frame name
+            self.prefix = f"{ctx.entity.name}/"
         owner = ctx.entity.name
         statics: list[Transform] = []
         for j in model.joints:
