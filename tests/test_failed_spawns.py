@@ -165,3 +165,32 @@ def test_unsimulated_contact_parameters_are_reported_once_per_model_file(caplog)
     lines = [r.getMessage() for r in caplog.records if "not simulated" in r.getMessage()]
     assert len(lines) == 1, lines
     assert "<max_vel>" in lines[0] and "<min_depth>" in lines[0] and "chess_piece.sdf" in lines[0]
+
+
+def test_a_body_spawned_into_the_ground_rises_gently_and_rests() -> None:
+    """gazebo_ros's skid-steer demo: sphere wheels (r 0.5) start 0.2 m inside the ground. It shot up to
+    29 m and landed upside down; now it rises at a bounded speed and settles on its wheels."""
+    inertial = "<inertial><mass>{m}</mass><inertia><ixx>{i}</ixx><iyy>{i}</iyy><izz>{i}</izz></inertia></inertial>"
+    wheels = joints = ""
+    for n, (x, y) in {"fl": (0.5, 0.6), "fr": (0.5, -0.6), "rl": (-0.5, 0.6), "rr": (-0.5, -0.6)}.items():
+        wheels += (
+            f"<link name='{n}'><pose>{x} {y} 0 -1.5707 0 0</pose>{inertial.format(m=1, i=0.1)}"
+            "<collision name='c'><geometry><sphere><radius>0.5</radius></sphere></geometry></collision></link>"
+        )
+        joints += f"<joint name='{n}_j' type='revolute'><parent>chassis</parent><child>{n}</child><axis><xyz>0 0 1</xyz></axis></joint>"
+    vehicle = (
+        f"<sdf version='1.6'><model name='v'><link name='chassis'>{inertial.format(m=10, i=1)}<collision name='c'>"
+        f"<geometry><box><size>1.5 1 0.3</size></box></geometry></collision></link>{wheels}{joints}</model></sdf>"
+    )
+    sim = Simulation(default_world(), rtf=0.0)
+    sim.spawn(load_string(vehicle).value, name="v", pose=Pose((0.0, 0.0, 0.3)))  # wheel bottoms at -0.2
+    top = fastest = 0.0
+    for _ in range(4000):
+        sim.step()
+        st = sim.world.entity_state("v")
+        top, fastest = max(top, st.pose.position[2]), max(fastest, st.linear_velocity[2])
+    assert fastest <= 0.5 + 1e-6, fastest
+    assert top < 0.5 + 0.05  # at rest the chassis centre is 0.5 up (the wheel radius); never 5 cm above it
+    assert st.pose.position[2] == pytest.approx(0.5, abs=0.01)
+    q = st.pose.orientation
+    assert 1 - 2 * (q[1] ** 2 + q[2] ** 2) > 0.999  # upright

@@ -25,6 +25,14 @@ MAX_COORDINATE_M = 1.0e5
 """Farthest a spawn or set-state may place anything from the origin (100 km): beyond, float64
 positions lose the millimetres contacts need, and such a pose is a mistake or an attack."""
 
+DEEP_PENETRATION_M = 0.01
+"""A contact deeper than this is a start-up overlap (or a teleport), not a resting contact (~0.3 mm)."""
+MAX_CORRECTING_VEL = 0.5
+"""m/s: the fastest a body deep in penetration is pushed out (ODE's ``max_correcting_vel`` idea); it then
+rises at most v²/2g ≈ 1.3 cm above its resting height."""
+MAX_CORRECTING_SPIN = 2.0
+"""rad/s: the fastest such a body may spin while it is pushed out (uneven overlaps flipped it over)."""
+
 _ONE_DOF = (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
 ENTITY_NAME_RE = re.compile(r"^(?!\s)[^\x00-\x1f\x7f]{1,256}(?<!\s)$")
 """Entity names as Gazebo takes them: any printable text up to 256 characters without leading or
@@ -354,6 +362,40 @@ class PhysicsWorld:
         # mj_step computes kinematics *before* it integrates, so xpos/xquat/cvel now describe
         # the previous step's state; refresh them lazily, on the first query
         self._kinematics_stale = True
+        d = self.data
+        if d.ncon and float(d.contact.dist[: d.ncon].min()) < -DEEP_PENETRATION_M:
+            self._limit_correcting_velocity()
+
+    def _limit_correcting_velocity(self) -> None:
+        """Bodies deep in penetration come out at most :data:`MAX_CORRECTING_VEL` fast.
+
+        MuJoCo pushes penetrating geoms apart with a spring whose force grows with the depth, so a
+        robot spawned with its wheels 0.2 m into the ground was launched 29 m up and landed upside
+        down. ODE (Gazebo) caps the correcting velocity (``max_correcting_vel``); here the free root
+        of a body in a contact deeper than :data:`DEEP_PENETRATION_M` may not move apart along the
+        contact normal faster than the cap, nor spin faster than :data:`MAX_CORRECTING_SPIN`.
+        """
+        m, d = self.model, self.data
+        free = int(mujoco.mjtJoint.mjJNT_FREE)
+        for i in range(d.ncon):
+            c = d.contact[i]
+            if c.dist >= -DEEP_PENETRATION_M:
+                continue
+            normal = c.frame[:3]
+            for geom, sign in ((c.geom1, -1.0), (c.geom2, 1.0)):
+                root = int(m.body_rootid[m.geom_bodyid[geom]])
+                jnt = int(m.body_jntadr[root])
+                if root == 0 or jnt < 0 or int(m.jnt_type[jnt]) != free:
+                    continue
+                dof = int(m.jnt_dofadr[jnt])
+                v = d.qvel[dof : dof + 3]
+                apart = sign * float(normal @ v)
+                if apart > MAX_CORRECTING_VEL:
+                    v -= sign * (apart - MAX_CORRECTING_VEL) * normal
+                w = d.qvel[dof + 3 : dof + 6]
+                spin = float(np.linalg.norm(w))
+                if spin > MAX_CORRECTING_SPIN:
+                    w *= MAX_CORRECTING_SPIN / spin
 
     def _refresh_kinematics(self) -> None:
         """Bring body poses and velocities up to the current qpos/qvel (derived fields only:
