@@ -30,6 +30,8 @@ DEEP_PENETRATION_M = 0.01
 MAX_CORRECTING_VEL = 0.5
 """m/s: the fastest a body deep in penetration is pushed out (ODE's ``max_correcting_vel`` idea); it then
 rises at most v²/2g ≈ 1.3 cm above its resting height."""
+OVERLAP_WATCH_SEC = 5.0
+"""How long after a body is placed deep overlaps are watched for (1 m of overlap clears in 2 s)."""
 MAX_CORRECTING_SPIN = 2.0
 """rad/s: the fastest such a body may spin while it is pushed out (uneven overlaps flipped it over)."""
 
@@ -146,6 +148,8 @@ class PhysicsWorld:
         """Bumped at every recompile: indices cached against an older generation are stale."""
         self._before_compile: list[Callable[[], None]] = []
         self._kinematics_stale = False
+        self._overlap_steps = 0
+        """Steps left in which deep overlaps are limited (see :meth:`_limit_correcting_velocity`)."""
         self._reported: dict[tuple[str, tuple[str, ...]], int] = {}
         """(model source, unsimulated parameters) -> how many entities had them (reported at the first)."""
         self._held: tuple[np.ndarray, np.ndarray] | None | bool = False
@@ -210,6 +214,7 @@ class PhysicsWorld:
         self.entities[name] = entity
         self._report_unsimulated(entity)
         self._report_decomposed(entity)
+        self._watch_overlaps()
         mujoco.mj_forward(self.model, self.data)
         return entity
 
@@ -362,9 +367,15 @@ class PhysicsWorld:
         # mj_step computes kinematics *before* it integrates, so xpos/xquat/cvel now describe
         # the previous step's state; refresh them lazily, on the first query
         self._kinematics_stale = True
-        d = self.data
-        if d.ncon and float(d.contact.dist[: d.ncon].min()) < -DEEP_PENETRATION_M:
-            self._limit_correcting_velocity()
+        if self._overlap_steps:  # only for a while after something was placed: costs nothing in steady state
+            self._overlap_steps -= 1
+            d = self.data
+            if d.ncon and float(d.contact.dist[: d.ncon].min()) < -DEEP_PENETRATION_M:
+                self._limit_correcting_velocity()
+
+    def _watch_overlaps(self) -> None:
+        """Something was placed (spawn, set-state, reset): watch for deep overlaps for a while."""
+        self._overlap_steps = max(1, int(OVERLAP_WATCH_SEC / max(self.timestep, 1e-6)))
 
     def _limit_correcting_velocity(self) -> None:
         """Bodies deep in penetration come out at most :data:`MAX_CORRECTING_VEL` fast.
@@ -494,6 +505,7 @@ class PhysicsWorld:
         self.data.qvel[v : v + 3] = linear
         # free joint angular velocity is in the body frame
         self.data.qvel[v + 3 : v + 6] = quat_rotate(quat_conj(tuple(q)), angular)  # type: ignore[arg-type]
+        self._watch_overlaps()
         mujoco.mj_forward(self.model, self.data)
 
     def joint_address(self, entity: str, mj_joint: str) -> tuple[int, int]:
@@ -536,6 +548,7 @@ class PhysicsWorld:
         for e in self.entities.values():
             if e.built.free_joint:
                 self.set_entity_state(e.name, self._spawn_root_pose(e))
+        self._watch_overlaps()
         mujoco.mj_forward(self.model, self.data)
 
     def _spawn_root_pose(self, e: Entity) -> Pose:
@@ -612,5 +625,6 @@ class PhysicsWorld:
             self.entities[e.name] = e
             self._report_unsimulated(e)
             self._report_decomposed(e)
+        self._watch_overlaps()
         mujoco.mj_forward(self.model, self.data)
         return out
