@@ -29,6 +29,7 @@ import xml.dom.minidom
 import xml.parsers.expat
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 from xml.dom import expatbuilder
 
@@ -316,6 +317,33 @@ def expand(
         return doc.documentElement.toxml()
 
 
+def _expand_request(request: dict) -> tuple[str | None, list[tuple[str, str, str, str | None, int | None]]]:
+    """The worker's side of :func:`expand_bounded`: plain data in, plain data out."""
+    resolver = ResourceResolver(
+        [Path(p) for p in request["extra_paths"]], request["env"], [Path(p) for p in request["trusted_dirs"]]
+    )
+    sink = DiagnosticSink(strict=request["strict"])
+    out = expand(request["text"], source=request["source"], args=request["args"], sink=sink, resolver=resolver)
+    items = [
+        (d.code.value, d.severity.value, d.message, d.location.file if d.location else None,
+         d.location.line if d.location else None)
+        for d in sink.items
+    ]
+    return out, items
+
+
+_WORKER: Any = None
+
+
+def _worker() -> Any:
+    from ._bounded import BoundedWorker
+
+    global _WORKER
+    if _WORKER is None:
+        _WORKER = BoundedWorker(_expand_request)  # type: ignore[arg-type]
+    return _WORKER
+
+
 def expand_bounded(
     text: str,
     *,
@@ -324,27 +352,28 @@ def expand_bounded(
     sink: DiagnosticSink,
     resolver: ResourceResolver,
 ) -> str | None:
-    """:func:`expand` in a forked child bounded in time and memory (see :mod:`._bounded`).
+    """:func:`expand` in a helper process bounded in time and memory (see :mod:`._bounded`).
 
     Use it for every file a user names: xacro evaluates Python, and ``${9**9**9}`` would
     otherwise hold the process (and its GIL) for minutes. Only files a user named on their own
     command line come here; a description that arrives as a string is never expanded.
     """
-    from ._bounded import BoundExceeded, run_bounded
+    from ._bounded import BoundExceeded
     from ._diagnostics import Diagnostic, Severity
+    from ._resources import SEARCH_PATH_VARIABLES
 
-    def work() -> tuple[str | None, list[tuple[str, str, str, str | None, int | None]]]:
-        child_sink = DiagnosticSink(strict=sink.strict)
-        out = expand(text, source=source, args=args, sink=child_sink, resolver=resolver)
-        items = [
-            (d.code.value, d.severity.value, d.message, d.location.file if d.location else None,
-             d.location.line if d.location else None)
-            for d in child_sink.items
-        ]
-        return out, items
-
+    env = resolver.env if resolver.env is not None else os.environ
+    request = {
+        "text": text,
+        "source": source,
+        "args": {str(k): str(v) for k, v in (args or {}).items()},
+        "strict": sink.strict,
+        "extra_paths": [str(p) for p in resolver.extra_paths],
+        "trusted_dirs": [str(p) for p in resolver.trusted_dirs],
+        "env": {k: env[k] for k in (*SEARCH_PATH_VARIABLES, "AMENT_PREFIX_PATH") if k in env},
+    }
     try:
-        out, items = run_bounded(work, what=f"xacro expansion of {source}")
+        out, items = _worker().call(request, what=f"xacro expansion of {source}")
     except BoundExceeded as err:
         sink.error(ErrorCode.XACRO_ERROR, f"xacro: {err}", SourceLocation(source))
         return None
