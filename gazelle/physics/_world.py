@@ -238,7 +238,9 @@ class PhysicsWorld:
         params = entity.built.unsimulated
         if not params:
             return
-        key = (entity.model.source_file or entity.model.name, tuple(sorted(params)))
+        source = entity.model.source_file
+        origin = source if source and not source.startswith("<") else f"{source}:{entity.model.name}"
+        key = (origin, tuple(sorted(params)))
         if key in self._reported:
             self._reported[key] += 1
             return
