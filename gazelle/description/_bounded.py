@@ -3,9 +3,10 @@
 xacro evaluates Python expressions. For a file the user named on their own command line that
 is their right, but a typo or a hostile file must not freeze the process: ``${9**9**9}`` is one
 C-level big-integer operation that no signal interrupts, and it grows without limit. So the work
-runs in a forked child with an address-space limit (``RLIMIT_AS``) and a wall-clock deadline;
-the parent kills it when the deadline passes. The child inherits every imported module, so a
-fork costs milliseconds, not an interpreter start.
+runs in a forked helper process with an address-space limit (``RLIMIT_AS``) and a wall-clock
+deadline per request; the parent kills the helper when the deadline passes. The helper inherits
+every imported module, and :class:`BoundedWorker` keeps it for the next request, so a bounded call
+costs a pipe round trip, not an interpreter start.
 
 Limits (generous for real robots: TurtleBot3, Husky and Panda expand in well under a second):
 
@@ -71,86 +72,19 @@ def run_bounded(
     memory_bytes: int | None = None,
     timeout_hint: str = "GAZELLE_XACRO_TIMEOUT",
 ) -> T:
-    """Run ``fn`` in a forked child limited in wall time and memory; return its result.
+    """Run ``fn`` once in a forked child limited in wall time and memory; return its result.
 
-    The result travels back as JSON (plain data only: no pickle, so nothing the child sends
-    can run code in the parent). An exception ``fn`` raises becomes a :class:`BoundExceeded`
-    naming it.
+    The result travels back as JSON (plain data only: no pickle, so nothing the child sends can
+    run code in the parent). An exception ``fn`` raises becomes a :class:`BoundExceeded` naming it.
 
     Raises:
         BoundExceeded: the time or memory limit was hit, or the child died.
     """
-    default_timeout, default_memory = limits()
-    timeout_sec = default_timeout if timeout_sec is None else timeout_sec
-    memory_bytes = default_memory if memory_bytes is None else memory_bytes
-    read_fd, write_fd = os.pipe()
-    cap = _mapped_bytes() + memory_bytes
-    pid = os.fork()
-    if pid == 0:  # the child: compute, send, and leave without running the parent's atexit handlers
-        code = 0
-        try:
-            os.close(read_fd)
-            signal.signal(signal.SIGINT, signal.SIG_DFL)
-            signal.signal(signal.SIGTERM, signal.SIG_DFL)
-            if cap > memory_bytes:
-                resource.setrlimit(resource.RLIMIT_AS, (cap, cap))
-            try:
-                payload = ("ok", fn())
-            except MemoryError:
-                payload = ("memory", None)
-            except BaseException as err:  # noqa: BLE001 - handed to the parent
-                payload = ("error", f"{type(err).__name__}: {err}")
-            try:
-                data = json.dumps(payload).encode()
-            except (TypeError, ValueError) as err:  # a result that is not plain data
-                data = json.dumps(("error", f"{type(err).__name__}: {err}")).encode()
-            view = memoryview(data)
-            while view:
-                n = os.write(write_fd, view)
-                view = view[n:]
-        except BaseException:  # noqa: BLE001 - a child never returns into the parent's code
-            code = 1
-        finally:
-            os._exit(code)
-    os.close(write_fd)
-    chunks: list[bytes] = []
-    deadline = time.monotonic() + timeout_sec
-    timed_out = False
+    worker = BoundedWorker(lambda _request: fn(), memory_bytes=memory_bytes)
     try:
-        while True:
-            remaining = deadline - time.monotonic()
-            if remaining <= 0:
-                timed_out = True
-                break
-            ready, _, _ = select.select([read_fd], [], [], remaining)
-            if not ready:
-                continue
-            chunk = os.read(read_fd, 1 << 20)
-            if not chunk:
-                break
-            chunks.append(chunk)
+        return worker.call({}, what=what, timeout_sec=timeout_sec, timeout_hint=timeout_hint)  # type: ignore[return-value]
     finally:
-        os.close(read_fd)
-        if timed_out:
-            os.kill(pid, signal.SIGKILL)
-        _, status = os.waitpid(pid, 0)
-    if timed_out:
-        raise BoundExceeded(f"{what} took longer than {timeout_sec:g} s and was stopped ({timeout_hint})")
-    if not chunks:
-        if os.WIFSIGNALED(status):
-            why = f"was killed by signal {os.WTERMSIG(status)}"
-        else:
-            why = "ended without a result"
-        raise BoundExceeded(f"{what} {why} (memory limit {memory_bytes >> 20} MiB, GAZELLE_XACRO_MEMORY_MB)")
-    try:
-        kind, value = json.loads(b"".join(chunks))
-    except ValueError:
-        raise BoundExceeded(f"{what} sent back a malformed result") from None
-    if kind == "ok":
-        return value
-    if kind == "memory":
-        raise BoundExceeded(f"{what} needed more than {memory_bytes >> 20} MiB and was stopped (GAZELLE_XACRO_MEMORY_MB)")
-    raise BoundExceeded(f"{what} failed: {value}")
+        worker.close()
 
 
 class BoundedWorker:
@@ -227,6 +161,11 @@ class BoundedWorker:
             except ChildProcessError:
                 pass
         self._pid = 0
+
+    def close(self) -> None:
+        """Stop the helper process (a later call starts a new one)."""
+        with self._lock:
+            self._stop()
 
     def call(self, request: dict, *, what: str, timeout_sec: float | None = None, timeout_hint: str = "GAZELLE_XACRO_TIMEOUT") -> object:
         """Send ``request`` to the worker and return its reply.

@@ -30,6 +30,8 @@ DEEP_PENETRATION_M = 0.01
 MAX_CORRECTING_VEL = 0.5
 """m/s: the fastest a body deep in penetration is pushed out (ODE's ``max_correcting_vel`` idea); it then
 rises at most v²/2g ≈ 1.3 cm above its resting height."""
+OVERLAP_CHECK_EVERY = 16
+"""Steps between two overlap checks while nothing is deep in (a new overlap waits at most 16 ms)."""
 OVERLAP_WATCH_SEC = 5.0
 """How long after a body is placed deep overlaps are watched for (1 m of overlap clears in 2 s)."""
 MAX_CORRECTING_SPIN = 2.0
@@ -150,6 +152,8 @@ class PhysicsWorld:
         self._kinematics_stale = False
         self._overlap_steps = 0
         """Steps left in which deep overlaps are limited (see :meth:`_limit_correcting_velocity`)."""
+        self._deep = False
+        """Whether the last check found a deep overlap (then every step is checked)."""
         self._reported: dict[tuple[str, tuple[str, ...]], int] = {}
         """(model source, unsimulated parameters) -> how many entities had them (reported at the first)."""
         self._held: tuple[np.ndarray, np.ndarray] | None | bool = False
@@ -371,13 +375,17 @@ class PhysicsWorld:
         self._kinematics_stale = True
         if self._overlap_steps:  # only for a while after something was placed: costs nothing in steady state
             self._overlap_steps -= 1
-            d = self.data
-            if d.ncon and float(d.contact.dist[: d.ncon].min()) < -DEEP_PENETRATION_M:
-                self._limit_correcting_velocity()
+            # every step while something is deep in, else every OVERLAP_CHECK_EVERY steps (~2 µs a check)
+            if self._deep or self._overlap_steps % OVERLAP_CHECK_EVERY == 0:
+                d = self.data
+                self._deep = bool(d.ncon) and float(d.contact.dist[: d.ncon].min()) < -DEEP_PENETRATION_M
+                if self._deep:
+                    self._limit_correcting_velocity()
 
     def _watch_overlaps(self) -> None:
         """Something was placed (spawn, set-state, reset): watch for deep overlaps for a while."""
         self._overlap_steps = max(1, int(OVERLAP_WATCH_SEC / max(self.timestep, 1e-6)))
+        self._deep = True  # check at the very next step
 
     def _limit_correcting_velocity(self) -> None:
         """Bodies deep in penetration come out at most :data:`MAX_CORRECTING_VEL` fast.
