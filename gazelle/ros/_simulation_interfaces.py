@@ -22,8 +22,10 @@ Decisions (also what :func:`features` advertises, nothing more):
   root), ``CATEGORY_ROBOT`` for dynamic models that have plugins or a movable
   (non-fixed) joint, ``CATEGORY_DYNAMIC_OBJECT`` for the other dynamic models.
   Tags and bounds filters are not supported (``RESULT_FEATURE_UNSUPPORTED``).
-* Name filters are Python ``re.search`` patterns (POSIX-extended syntax is a
-  subset for the usual cases); a bad pattern is ``RESULT_OPERATION_FAILED``.
+* Name filters are Python regular expressions (the ``regex`` module, ``re`` syntax; POSIX-extended
+  syntax is a subset for the usual cases), matched off the simulation thread within 0.2 s per
+  request: a backtracking bomb is refused, not run for minutes. A bad pattern, or one that runs out
+  of time, is ``RESULT_OPERATION_FAILED``.
 * States (get and set) are in the world frame: ``header.frame_id = "world"``,
   ``header.stamp`` = sim time. SetEntityState also accepts an entity or
   ``entity::link`` frame in ``state.header.frame_id``. Accelerations are ignored.
@@ -39,6 +41,8 @@ from __future__ import annotations
 import math
 import re
 import time
+
+import regex
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -149,6 +153,30 @@ class _Prepared:
     allow_renaming: bool
     warnings: tuple[str, ...] = ()
     """The description's warnings, also carried in the success reply's message."""
+
+
+FILTER_TIME_LIMIT_SEC = 0.2
+"""The most a request's name filter may spend matching: ``(a+)+$`` against long names would
+otherwise backtrack for minutes, holding the interpreter (and so the simulation)."""
+
+
+def _matching(pattern: Any, names: list[str], source: str) -> list[str]:
+    """The names ``pattern`` finds (all without one), within :data:`FILTER_TIME_LIMIT_SEC` in total."""
+    if pattern is None:
+        return names
+    deadline = time.monotonic() + FILTER_TIME_LIMIT_SEC
+    out = []
+    try:
+        for name in names:
+            if pattern.search(name, timeout=max(deadline - time.monotonic(), 1e-3)):
+                out.append(name)
+    except TimeoutError:
+        raise _Refused(
+            Result.RESULT_OPERATION_FAILED,
+            f"filters.filter {source!r} took longer than {FILTER_TIME_LIMIT_SEC:g} s to match "
+            "(catastrophic backtracking?); simplify it",
+        ) from None
+    return out
 
 
 def category_of(entity: Entity) -> int:
@@ -569,7 +597,7 @@ class SimulationInterfaces:
         return res
 
     # ------------------------------------------------------------------ queries
-    def _compile_filters(self, filters: Any) -> tuple[re.Pattern | None, set[int]]:
+    def _compile_filters(self, filters: Any) -> tuple[Any, set[int]]:
         if filters.tags.tags:
             raise _Refused(Result.RESULT_FEATURE_UNSUPPORTED, "entity tags are not supported (filters.tags must be empty)")
         if filters.bounds.type != 0 or filters.bounds.points:
@@ -577,8 +605,8 @@ class SimulationInterfaces:
         pattern = None
         if filters.filter:
             try:
-                pattern = re.compile(filters.filter)
-            except re.error as err:
+                pattern = regex.compile(filters.filter)
+            except (regex.error, ValueError) as err:
                 raise _Refused(
                     Result.RESULT_OPERATION_FAILED, f"filters.filter {filters.filter!r} is not a valid regular expression: {err}"
                 ) from None
@@ -586,15 +614,11 @@ class SimulationInterfaces:
 
     def _select(self, filters: Any) -> list[str]:
         pattern, cats = self._compile_filters(filters)
-
-        def do() -> list[str]:
-            return [
-                name
-                for name, e in self.sim.world.entities.items()
-                if (pattern is None or pattern.search(name)) and (not cats or category_of(e) in cats)
-            ]
-
-        return self.sim.call(do)
+        # categories on the sim thread (cheap); the pattern here, off it, and bounded in time
+        named = self.sim.call(
+            lambda: [name for name, e in self.sim.world.entities.items() if not cats or category_of(e) in cats]
+        )
+        return _matching(pattern, named, filters.filter)
 
     def get_entities(self, req: GetEntities.Request, res: GetEntities.Response) -> Any:
         try:
@@ -632,12 +656,17 @@ class SimulationInterfaces:
             res.result = _result(err.code, str(err))
             return res
 
+        try:
+            named = self.sim.call(
+                lambda: [name for name, e in self.sim.world.entities.items() if not cats or category_of(e) in cats]
+            )
+            wanted = _matching(pattern, named, req.filters.filter)
+        except _Refused as err:
+            res.result = _result(err.code, str(err))
+            return res
+
         def do() -> tuple[list[str], list[EntityState]]:
-            names = [
-                name
-                for name, e in self.sim.world.entities.items()
-                if (pattern is None or pattern.search(name)) and (not cats or category_of(e) in cats)
-            ]
+            names = [n for n in wanted if n in self.sim.world.entities]
             return names, [self._state_msg(n) for n in names]
 
         res.entities, res.states = self.sim.call(do)

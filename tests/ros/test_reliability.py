@@ -132,3 +132,18 @@ def test_a_signal_stops_a_busy_server_within_3_s(ros_client, signum):
     rc = proc.wait(30)
     assert time.monotonic() - t0 < 3.0, proc.output
     assert rc in (0, 1), proc.output
+
+
+@pytest.mark.parametrize("joint_type", ["fixed", "revolute"])
+def test_a_5000_link_chain_gets_an_answer_and_the_next_spawn_works(ros_client, sim_factory, joint_type):
+    from test_failed_spawns import chain
+
+    from gazebo_msgs.srv import GetModelList
+
+    sim = sim_factory("--no-viewer")
+    res = _spawn(ros_client, "chain", chain(5000, joint_type), timeout=60)
+    assert not res.success and "deeper than 1000 links" in res.status_message, res.status_message
+    assert "chain" not in _names(ros_client)
+    assert _spawn(ros_client, "chain", chain(5, joint_type)).success  # the name is free, the world builds
+    assert ros_client.call(GetModelList, "/get_model_list", GetModelList.Request()).success
+    assert "Traceback" not in sim.output

@@ -391,6 +391,13 @@ def test_get_entities_filters(ros: RosClient) -> None:
     tags = _filters()
     tags.tags.tags = ["furniture"]
     assert call(ros, GetEntities, "get_entities", filters=tags).result.result == Result.RESULT_FEATURE_UNSUPPORTED
+    # a backtracking bomb against a long name is refused within its time limit, for both services
+    assert spawn(ros, "a" * 60 + "!", xml=box_sdf(), z=5.0).result.result == OK
+    for srv, name in ((GetEntities, "get_entities"), (GetEntitiesStates, "get_entities_states")):
+        t0 = time.monotonic()
+        bomb = call(ros, srv, name, filters=_filters("(a|aa)+$"))  # exponential backtracking
+        assert time.monotonic() - t0 < 3.0
+        assert bomb.result.result == Result.RESULT_OPERATION_FAILED and "took longer than" in bomb.result.error_message
 
 
 def test_entity_states(ros: RosClient) -> None:
