@@ -104,6 +104,7 @@ class BoundedWorker:
         self._pid = 0
         self._to_child = -1
         self._from_child = -1
+        self._started_memory = -1
 
     def _start(self) -> None:
         memory = limits()[1] if self._memory is None else self._memory
@@ -178,8 +179,11 @@ class BoundedWorker:
         with self._lock:
             if self._pid and os.waitpid(self._pid, os.WNOHANG)[0] != 0:
                 self._pid = 0  # it died between calls
+            if self._pid and self._started_memory != memory:
+                self._stop()  # the limit changed (GAZELLE_XACRO_MEMORY_MB): a helper under the new one
             if not self._pid:
                 self._start()
+                self._started_memory = memory
             try:
                 _write_message(self._to_child, json.dumps(request).encode())
                 reply = _read_message(self._from_child, time.monotonic() + timeout)
