@@ -194,3 +194,41 @@ def test_a_body_spawned_into_the_ground_rises_gently_and_rests() -> None:
     assert st.pose.position[2] == pytest.approx(0.5, abs=0.01)
     q = st.pose.orientation
     assert 1 - 2 * (q[1] ** 2 + q[2] ** 2) > 0.999  # upright
+
+
+def test_when_contacts_outgrow_mujocos_arena_it_grows_and_the_world_keeps_stepping(caplog) -> None:
+    """8 clients spawning boxes at one spot ran MuJoCo out of arena memory, and its FatalError killed
+    the simulation thread. Here the arena starts tiny so a pile of 40 overlapping boxes overflows it."""
+    sim = Simulation(default_world(), rtf=0.0)
+    sim.world.spec.memory = 1 << 20  # 1 MiB
+    sim.world._recompile()
+    box = load_string(BOX).value
+    with caplog.at_level(logging.WARNING, logger="gazelle.physics"):
+        for i in range(40):
+            sim.spawn(box, name=f"b{i}", pose=Pose((0.0, 0.0, 0.1)))
+        sim.step(200)
+    assert any("arena ran out" in r.getMessage() for r in caplog.records)
+    assert sim.world.model.narena > 1 << 20 and not sim.paused
+    assert np.all(np.isfinite(sim.world.data.qpos))
+
+
+def test_past_the_arena_cap_the_simulation_pauses_and_says_why(monkeypatch, caplog) -> None:
+    from gazelle.physics import _world
+
+    monkeypatch.setattr(_world, "MAX_ARENA_BYTES", 1 << 20)
+    sim = Simulation(default_world(), rtf=0.0)
+    sim.world.spec.memory = 1 << 20
+    sim.world._recompile()
+    box = load_string(BOX).value
+    refused = 0
+    for i in range(40):
+        try:
+            sim.spawn(box, name=f"b{i}", pose=Pose((0.0, 0.0, 0.1)))
+        except WorldError as err:
+            refused += 1
+            assert "arena" in str(err) and f"b{i}" not in sim.world.entities  # refused, and left out
+    with caplog.at_level(logging.ERROR, logger="gazelle"):
+        sim.step(50)
+    if refused == 0:  # the pile overflowed while stepping instead: paused, said once
+        assert sim.paused and sum("simulation paused" in r.getMessage() for r in caplog.records) == 1
+    sim.delete("b0")  # and requests are still served

@@ -28,7 +28,7 @@ from ..systems._bus import Bus
 from ..systems._registry import audit_model, audit_world, create_system
 from ..systems.robot_state import RSP_PLUGIN, RobotStatePublisher, robot_state_config
 from ._convex import prepare as prepare_meshes
-from ._world import Entity, ErrorKind, PhysicsWorld, WorldError
+from ._world import Entity, ErrorKind, PhysicsOverload, PhysicsWorld, WorldError
 
 T = TypeVar("T")
 
@@ -217,7 +217,15 @@ class Simulation:
             # checked right before every step: MuJoCo's solver spreads one body's NaN to every
             # body in one step, so a NaN set from outside (a service, a system) must be caught here
             self._check_divergence()
-            w.step()
+            try:
+                w.step()
+            except PhysicsOverload as err:
+                # never a dead simulation thread: pause, say why once, and keep serving requests
+                self.paused = True
+                _log.error(f"simulation paused: {err}")
+                for listener in self.divergence_listeners:
+                    listener("<world>", str(err))
+                return
             self.iterations += 1
             info = self._info()
             self.systems.post_physics(info, w)

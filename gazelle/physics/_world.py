@@ -53,6 +53,17 @@ class WorldError(Exception):
         self.kind = kind
 
 
+class PhysicsOverload(WorldError):
+    """MuJoCo cannot step the world within its memory bounds (see :meth:`PhysicsWorld._guarded`)."""
+
+    def __init__(self, message: str):
+        super().__init__("overload", message)
+
+
+MAX_ARENA_BYTES = 1 << 30
+"""The most MuJoCo arena (contacts, constraints, solver scratch) the world may grow to: 1 GiB."""
+
+
 class ErrorKind:
     """Failure kinds, mapped to ROS result codes by the bridge."""
 
@@ -162,6 +173,45 @@ class PhysicsWorld:
         self.data = mujoco.MjData(self.model)
 
     # ------------------------------------------------------------------ building
+    def _forward(self) -> None:
+        """``mj_forward``, growing the arena if the contacts need more memory (see :meth:`_guarded`)."""
+        self._guarded(mujoco.mj_forward)
+
+    def _guarded(self, fn: Callable[[mujoco.MjModel, mujoco.MjData], None]) -> None:
+        """Run a MuJoCo pipeline call; when its arena (contacts, constraints) runs out, grow it and retry.
+
+        Overlapping bodies make contacts by the thousand (8 clients spawning boxes at one spot ran
+        MuJoCo's arena out and killed the simulation thread with ``mj_stackAlloc: out of memory``).
+        The arena doubles, keeping the state, up to :data:`MAX_ARENA_BYTES`; past that,
+        :class:`PhysicsOverload` says so, and the simulation pauses instead of dying.
+        """
+        try:
+            fn(self.model, self.data)
+            return
+        except mujoco.FatalError as err:
+            if "memory" not in str(err).lower() and "stack" not in str(err).lower():
+                raise
+            reason = str(err).strip().splitlines()[0]
+        while True:
+            # the interrupted pipeline left its stack frames and a partial arena in mjData: release them,
+            # or copying the data (the recompile) is a fatal MuJoCo error that ends the process
+            d = self.data
+            d.pstack, d.pbase, d.parena, d.ncon = 0, 0, 0, 0
+            current = int(self.model.narena)
+            if current >= MAX_ARENA_BYTES:
+                raise PhysicsOverload(
+                    f"the contacts and constraints need more than {MAX_ARENA_BYTES >> 20} MiB of MuJoCo arena "
+                    f"({reason}); overlapping bodies? delete some, or reset"
+                )
+            self.spec.memory = min(MAX_ARENA_BYTES, max(2 * current, 64 << 20))
+            self._recompile()
+            _log.warning(f"MuJoCo's arena ran out ({reason}): grown to {self.spec.memory >> 20} MiB")
+            try:
+                fn(self.model, self.data)
+                return
+            except mujoco.FatalError as err:
+                reason = str(err).strip().splitlines()[0]
+
     def _recompile(self) -> None:
         self.model, self.data = self.spec.recompile(self.model, self.data)
         self.generation += 1
@@ -219,7 +269,11 @@ class PhysicsWorld:
         self._report_unsimulated(entity)
         self._report_decomposed(entity)
         self._watch_overlaps()
-        mujoco.mj_forward(self.model, self.data)
+        try:
+            self._forward()
+        except PhysicsOverload:
+            self.remove_entity(name)  # the world as it was; the reply says why
+            raise
         return entity
 
     def _report_decomposed(self, entity: Entity) -> None:
@@ -288,7 +342,7 @@ class PhysicsWorld:
         self._remove_elements(name)
         self._recompile()
         del self.entities[name]
-        mujoco.mj_forward(self.model, self.data)
+        self._forward()
         return entity
 
     def add_velocity_actuator(self, entity: Entity, joint: str, *, kv: float, force_limit: float | None) -> str:
@@ -362,12 +416,12 @@ class PhysicsWorld:
     def step(self) -> None:
         held = self._held_dofs()
         if held is None:
-            mujoco.mj_step(self.model, self.data)
+            self._guarded(mujoco.mj_step)
         else:
             # kinematic joints: no force moves them; they keep their own velocity exactly
             qadr, dadr = held
             q0, v0 = self.data.qpos[qadr], self.data.qvel[dadr]
-            mujoco.mj_step(self.model, self.data)
+            self._guarded(mujoco.mj_step)
             self.data.qvel[dadr] = v0
             self.data.qpos[qadr] = q0 + v0 * self.model.opt.timestep
         # mj_step computes kinematics *before* it integrates, so xpos/xquat/cvel now describe
@@ -505,7 +559,7 @@ class PhysicsWorld:
             bid = self.body_id(entity)
             self.model.body_pos[bid] = pose.position
             self.model.body_quat[bid] = [v / qn for v in pose.orientation]
-            mujoco.mj_forward(self.model, self.data)
+            self._forward()
             return
         jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, e.built.free_joint)
         a, v = self.model.jnt_qposadr[jid], self.model.jnt_dofadr[jid]
@@ -516,7 +570,7 @@ class PhysicsWorld:
         # free joint angular velocity is in the body frame
         self.data.qvel[v + 3 : v + 6] = quat_rotate(quat_conj(tuple(q)), angular)  # type: ignore[arg-type]
         self._watch_overlaps()
-        mujoco.mj_forward(self.model, self.data)
+        self._forward()
 
     def joint_address(self, entity: str, mj_joint: str) -> tuple[int, int]:
         """(qposadr, dofadr) of a MuJoCo joint of an entity."""
@@ -543,7 +597,7 @@ class PhysicsWorld:
             self.data.qpos[self.model.jnt_qposadr[jid]] = position
         if velocity is not None:
             self.data.qvel[self.model.jnt_dofadr[jid]] = velocity
-        mujoco.mj_forward(self.model, self.data)
+        self._forward()
         self._kinematics_stale = False
 
     def actuator_id(self, name: str) -> int:
@@ -559,7 +613,7 @@ class PhysicsWorld:
             if e.built.free_joint:
                 self.set_entity_state(e.name, self._spawn_root_pose(e))
         self._watch_overlaps()
-        mujoco.mj_forward(self.model, self.data)
+        self._forward()
 
     def _spawn_root_pose(self, e: Entity) -> Pose:
         root = e.model.root_link
@@ -636,5 +690,5 @@ class PhysicsWorld:
             self._report_unsimulated(e)
             self._report_decomposed(e)
         self._watch_overlaps()
-        mujoco.mj_forward(self.model, self.data)
+        self._forward()
         return out
