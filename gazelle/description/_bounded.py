@@ -146,7 +146,9 @@ class BoundedWorker:
                 data = json.dumps(("error", f"{type(err).__name__}: {err}")).encode()
             _write_message(rep_w, data)
 
-    def _stop(self) -> None:
+    def _stop(self) -> str:
+        """Kill and reap the helper; returns how it ended (for messages)."""
+        how = "ended"
         if self._pid:
             for fd in (self._to_child, self._from_child):
                 try:
@@ -158,10 +160,23 @@ class BoundedWorker:
             except ProcessLookupError:
                 pass
             try:
-                os.waitpid(self._pid, 0)
+                _, status = os.waitpid(self._pid, 0)
+                if os.WIFSIGNALED(status) and os.WTERMSIG(status) != signal.SIGKILL:
+                    how = f"was killed by signal {os.WTERMSIG(status)}"
+                elif os.WIFEXITED(status):
+                    how = f"exited with status {os.WEXITSTATUS(status)}"
             except ChildProcessError:
                 pass
         self._pid = 0
+        return how
+
+    def _alive(self) -> bool:
+        if not self._pid:
+            return False
+        try:
+            return os.waitpid(self._pid, os.WNOHANG)[0] == 0
+        except ChildProcessError:  # reaped elsewhere
+            return False
 
     def close(self) -> None:
         """Stop the helper process (a later call starts a new one)."""
@@ -177,24 +192,31 @@ class BoundedWorker:
         timeout = limits()[0] if timeout_sec is None else timeout_sec
         memory = limits()[1] if self._memory is None else self._memory
         with self._lock:
-            if self._pid and os.waitpid(self._pid, os.WNOHANG)[0] != 0:
-                self._pid = 0  # it died between calls
-            if self._pid and self._started_memory != memory:
-                self._stop()  # the limit changed (GAZELLE_XACRO_MEMORY_MB): a helper under the new one
-            if not self._pid:
-                self._start()
-                self._started_memory = memory
-            try:
-                _write_message(self._to_child, json.dumps(request).encode())
-                reply = _read_message(self._from_child, time.monotonic() + timeout)
-            except _Timeout:
-                self._stop()
-                raise BoundExceeded(f"{what} took longer than {timeout:g} s and was stopped ({timeout_hint})") from None
-            except OSError:
-                reply = None
-            if reply is None:
-                self._stop()
-                raise BoundExceeded(f"{what} ended without a result (memory limit {memory >> 20} MiB, GAZELLE_XACRO_MEMORY_MB)")
+            reply = None
+            for attempt in (1, 2):  # a helper that died (not one that overran) is replaced once
+                if self._pid and not self._alive():
+                    self._pid = 0  # it died between calls
+                if self._pid and self._started_memory != memory:
+                    self._stop()  # the limit changed (GAZELLE_XACRO_MEMORY_MB): a helper under the new one
+                if not self._pid:
+                    self._start()
+                    self._started_memory = memory
+                try:
+                    _write_message(self._to_child, json.dumps(request).encode())
+                    reply = _read_message(self._from_child, time.monotonic() + timeout)
+                except _Timeout:
+                    self._stop()
+                    raise BoundExceeded(f"{what} took longer than {timeout:g} s and was stopped ({timeout_hint})") from None
+                except OSError:
+                    reply = None
+                if reply is not None:
+                    break
+                how = self._stop()
+                if attempt == 2:
+                    raise BoundExceeded(
+                        f"{what}: its helper process {how} without a result "
+                        f"(memory limit {memory >> 20} MiB, GAZELLE_XACRO_MEMORY_MB)"
+                    )
         try:
             kind, value = json.loads(reply)
         except ValueError:
