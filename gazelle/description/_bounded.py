@@ -138,7 +138,7 @@ class BoundedWorker:
                 payload = ("ok", self._handler(json.loads(request)))
             except MemoryError:
                 payload = ("memory", None)
-            except Exception as err:  # noqa: BLE001 - handed to the parent
+            except (Exception, SystemExit) as err:  # noqa: BLE001 - handed to the parent (a library's sys.exit too)
                 payload = ("error", f"{type(err).__name__}: {err}")
             try:
                 data = json.dumps(payload).encode()

@@ -1,0 +1,79 @@
+"""The bounded helper process that runs xacro (and convex decompositions): bounded, and never a dead end."""
+
+from __future__ import annotations
+
+import os
+import signal
+import time
+
+import pytest
+
+from gazelle.description._bounded import BoundedWorker, BoundExceeded, run_bounded
+
+
+def _handler(request: dict) -> object:
+    kind = request["kind"]
+    if kind == "echo":
+        return request["value"]
+    if kind == "pid":
+        return os.getpid()
+    if kind == "spin":
+        while True:
+            pass
+    if kind == "exit":
+        raise SystemExit(3)
+    if kind == "die-once" and not os.path.exists(request["marker"]):
+        open(request["marker"], "w").close()
+        os._exit(9)  # the helper dies in the middle of a request
+    return "survived"
+
+
+def test_the_helper_is_reused_and_answers_in_order() -> None:
+    worker = BoundedWorker(_handler)
+    try:
+        pids = {worker.call({"kind": "pid"}, what="t") for _ in range(5)}
+        assert len(pids) == 1 and os.getpid() not in pids
+        assert worker.call({"kind": "echo", "value": [1, "a"]}, what="t") == [1, "a"]
+    finally:
+        worker.close()
+
+
+def test_an_overrun_is_stopped_and_the_next_request_gets_a_new_helper() -> None:
+    worker = BoundedWorker(_handler)
+    try:
+        first = worker.call({"kind": "pid"}, what="t")
+        t0 = time.monotonic()
+        with pytest.raises(BoundExceeded, match="took longer than 0.5 s"):
+            worker.call({"kind": "spin"}, what="spin", timeout_sec=0.5)
+        assert time.monotonic() - t0 < 3.0
+        assert worker.call({"kind": "pid"}, what="t") != first
+    finally:
+        worker.close()
+
+
+def test_a_helper_that_dies_is_replaced_and_the_request_retried(tmp_path) -> None:
+    worker = BoundedWorker(_handler)
+    try:
+        pid = worker.call({"kind": "pid"}, what="t")
+        os.kill(pid, signal.SIGKILL)  # killed between two requests
+        assert worker.call({"kind": "echo", "value": 1}, what="t") == 1
+        assert worker.call({"kind": "die-once", "marker": str(tmp_path / "m")}, what="t") == "survived"
+    finally:
+        worker.close()
+
+
+def test_sys_exit_in_the_work_is_an_error_not_a_dead_helper() -> None:
+    worker = BoundedWorker(_handler)
+    try:
+        pid = worker.call({"kind": "pid"}, what="t")
+        with pytest.raises(BoundExceeded, match="SystemExit: 3"):
+            worker.call({"kind": "exit"}, what="t")
+        assert worker.call({"kind": "pid"}, what="t") == pid
+    finally:
+        worker.close()
+
+
+def test_run_bounded_returns_plain_data_only() -> None:
+    assert run_bounded(lambda: {"a": [1, 2.5]}, what="t") == {"a": [1, 2.5]}
+    with pytest.raises(BoundExceeded, match="failed: ValueError: nope"):
+        run_bounded(lambda: (_ for _ in ()).throw(ValueError("nope")), what="t")
