@@ -29,7 +29,7 @@ from typing import TypeVar
 
 T = TypeVar("T")
 
-DEFAULT_TIMEOUT_SEC = 6.0
+DEFAULT_TIMEOUT_SEC = 5.0
 DEFAULT_MEMORY_MB = 2048
 
 

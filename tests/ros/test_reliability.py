@@ -59,7 +59,10 @@ def test_concurrent_spawn_and_delete_get_a_reply_each_and_leak_nothing(sim_facto
         try:
             for i in range(25):
                 name = f"b{k}_{i}"
-                fut = client.client(SpawnEntity, "/spawn_entity").call_async(SpawnEntity.Request(name=name, xml=box))
+                req = SpawnEntity.Request(name=name, xml=box)
+                req.initial_pose.position.x, req.initial_pose.position.y = 0.5 * k, 0.3 * i  # a pile is tested in-process
+                req.initial_pose.position.z = 0.1
+                fut = client.client(SpawnEntity, "/spawn_entity").call_async(req)
                 done = threading.Event()
                 fut.add_done_callback(lambda _f: done.set())
                 if not done.wait(30):
