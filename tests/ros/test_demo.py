@@ -7,6 +7,8 @@ system chromium it also takes the snapshot and the MP4, and the snapshot must sh
 
 from __future__ import annotations
 
+import pytest
+
 import importlib.util
 import re
 import subprocess
@@ -23,6 +25,7 @@ HAVE_BROWSER = importlib.util.find_spec("playwright") is not None and find_chrom
 SIDES = re.compile(r"sides between corners: ([\d.]+) m, ([\d.]+) m, ([\d.]+) m; worst /odom error ([\d.]+) mm")
 
 
+@pytest.mark.slow
 def test_demo_drives_one_square_reports_it_and_exits_0(ros_env: dict[str, str], tmp_path: Path) -> None:
     cmd = [*GAZELLE, "demo", "--out", str(tmp_path)]
     if HAVE_BROWSER:

@@ -7,6 +7,8 @@ base_link where ground truth says it is.
 
 from __future__ import annotations
 
+import pytest
+
 import json
 import math
 import sys
@@ -21,6 +23,7 @@ LISTENER = Path(__file__).with_name("tf_listener.py")
 ROBOTS = {"r1": 0.0, "r2": 1.2, "r3": 2.4}  # namespace -> spawn y
 
 
+@pytest.mark.slow
 def test_three_namespaced_robots_keep_separate_odometry_and_tf(sim_factory, ros_client):
     sim = sim_factory()
     for ns, y in ROBOTS.items():

@@ -116,6 +116,7 @@ def test_a_dead_ros_thread_is_reported_with_its_traceback(monkeypatch, caplog):
         bridge.shutdown()
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("signum", ["SIGINT", "SIGTERM"])
 def test_a_signal_stops_a_busy_server_within_3_s(ros_client, signum):
     """A 999-link chain makes every step cost ~80 ms and a request in flight; the server still stops in 3 s."""

@@ -61,6 +61,7 @@ def servers(ros_client, service: str) -> str:
     return f"{n} server(s) of {service} on ROS_DOMAIN_ID={os.environ.get('ROS_DOMAIN_ID')}; nodes: {nodes}"
 
 
+@pytest.mark.slow
 def test_soak_spawn_delete_while_driving(sim_factory, ros_client) -> None:
     sim = sim_factory()
     pid = sim.popen.pid
