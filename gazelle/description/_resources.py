@@ -109,15 +109,9 @@ class ResourceResolver:
                 if path != root and root not in path.parents and not _in_package_source(root, path):
                     return None
                 return path
-        if uri.startswith("file://"):
-            uri = uri[len("file://"):]
-        if "://" in uri:
+        path = _local_path(uri, base_dir)
+        if path is None:
             return None
-        path = Path(uri)
-        if not path.is_absolute():
-            if base_dir is None:
-                return None
-            path = Path(base_dir) / path
         path = path.resolve()
         return path if self.allowed(path) else None
 
@@ -140,15 +134,8 @@ class ResourceResolver:
             name, _, sub = raw.split("://", 1)[1].partition("/")
             root = self.find_package(name)
             return root is not None and (root / sub).exists() and self.resolve_uri(uri, base_dir) is None
-        raw = raw[len("file://"):] if raw.startswith("file://") else raw
-        if "://" in raw:
-            return False
-        path = Path(raw)
-        if not path.is_absolute():
-            if base_dir is None:
-                return False
-            path = Path(base_dir) / path
-        return path.exists() and not self.allowed(path)
+        path = _local_path(raw, base_dir)
+        return path is not None and path.exists() and not self.allowed(path)
 
     def refusal(self, uri: str) -> str:
         """Why a URI that names an existing file is not read (for error messages)."""
@@ -170,6 +157,18 @@ class ResourceResolver:
         path = path.resolve()
         return any(path == root or root in path.parents for root in self.roots())
 
+
+
+def _local_path(uri: str, base_dir: str | os.PathLike[str] | None) -> Path | None:
+    """The file a ``file://`` URI or a plain path names (relative to ``base_dir``), unresolved; None for
+    other schemes, or a relative path without a base."""
+    uri = uri[len("file://"):] if uri.startswith("file://") else uri
+    if "://" in uri:
+        return None
+    path = Path(uri)
+    if path.is_absolute():
+        return path
+    return Path(base_dir) / path if base_dir is not None else None
 
 
 def _in_package_source(package_root: Path, path: Path) -> bool:
