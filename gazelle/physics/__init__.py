@@ -8,6 +8,7 @@ from ._world import EntityState as EntityState
 from ._world import ErrorKind as ErrorKind
 from ._world import PhysicsWorld as PhysicsWorld
 from ._world import WorldError as WorldError
+from ._world import WORLD_FRAMES as WORLD_FRAMES
 from ._world import PhysicsOverload as PhysicsOverload
 from ._world import MAX_COORDINATE_M as MAX_COORDINATE_M
 from ._world import pose_out_of_range as pose_out_of_range

@@ -25,6 +25,10 @@ MAX_COORDINATE_M = 1.0e5
 """Farthest a spawn or set-state may place anything from the origin (100 km): beyond, float64
 positions lose the millimetres contacts need, and such a pose is a mistake or an attack."""
 
+WORLD_FRAMES = frozenset({"", "world", "/world", "map", "/map"})
+"""Frame names that mean the world frame in requests and plugin configuration (gazebo_ros accepts
+'' and world; map and the slashed spellings are what ROS users write)."""
+
 DEEP_PENETRATION_M = 0.01
 """A contact deeper than this is a start-up overlap (or a teleport), not a resting contact (~0.3 mm)."""
 MAX_CORRECTING_VEL = 0.5
@@ -526,6 +530,18 @@ class PhysicsWorld:
         ang = vel[:3]
         lin = vel[3:]
         return (float(lin[0]), float(lin[1]), float(lin[2])), (float(ang[0]), float(ang[1]), float(ang[2]))
+
+    def frame_pose(self, frame: str) -> Pose:
+        """World pose of a frame named in a request: a :data:`WORLD_FRAMES` name, an entity (its model
+        frame), or ``entity::link``.
+
+        Raises:
+            WorldError: (NOT_FOUND) no such entity or link.
+        """
+        if frame in WORLD_FRAMES:
+            return Pose()
+        entity, _, link = frame.partition(SEP)
+        return self.entity_state(entity, link or None).pose
 
     def entity_state(self, entity: str, link: str | None = None) -> EntityState:
         """World pose and twist of an entity's model frame (its root link), or of one of its links."""

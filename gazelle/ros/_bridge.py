@@ -36,14 +36,12 @@ from std_srvs.srv import Empty
 
 from ..description import Model, ModelLoadError, Pose, World, load_string, reply_text
 from ..description._model import quat_conj, quat_rotate
-from ..physics import Simulation, WorldError, pose_out_of_range
+from ..physics import WORLD_FRAMES, Simulation, WorldError, pose_out_of_range
 from ..systems._base import UpdateInfo
 from ..systems._bus import Endpoint, MsgType, Qos, Transform, TransformBatch
 from ._exposure import ServerRegistry
 from ._replies import guarded_service, with_warnings
 from ._convert import FROM_ROS, ROS_TYPES, TO_ROS, from_pose_msg, to_pose_msg, to_time
-
-WORLD_FRAMES = ("", "world", "map", "/map")
 
 
 class SpawnFailed(Exception):
@@ -308,13 +306,8 @@ class SimulationNode(Node):
         """World pose of a reference frame: '' / world / map, an entity, or ``entity::link``."""
         if frame in WORLD_FRAMES:
             return Pose()
-        entity, _, link = frame.partition("::")
-
-        def lookup() -> Pose:
-            return self.sim.world.entity_state(entity, link or None).pose
-
         try:
-            return self.sim.call(lookup)
+            return self.sim.call(lambda: self.sim.world.frame_pose(frame))
         except WorldError:
             raise SpawnFailed(SpawnFailure.FRAME, f"reference_frame '{frame}' not found: no such entity or link") from None
 
@@ -390,12 +383,7 @@ class SimulationNode(Node):
 
         def query() -> tuple[Any, Pose, float]:
             st = self.sim.world.entity_state(entity, link or None)
-            if frame in WORLD_FRAMES:
-                X_WF = Pose()
-            else:
-                fe, _, fl = frame.partition("::")
-                X_WF = self.sim.world.entity_state(fe, fl or None).pose
-            return st, X_WF, self.sim.world.time
+            return st, self.sim.world.frame_pose(frame), self.sim.world.time
 
         try:
             st, X_WF, t = self.sim.call(query)

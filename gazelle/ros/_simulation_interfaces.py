@@ -79,7 +79,7 @@ from ..description import (
     reply_text,
 )
 from ..description._model import JointType, quat_rotate
-from ..physics import WorldError, pose_out_of_range
+from ..physics import WORLD_FRAMES, WorldError, pose_out_of_range
 from ..physics._world import Entity, ErrorKind
 from ._convert import from_pose_msg, to_pose_msg, to_time
 from ._replies import guarded_service, with_warnings
@@ -113,7 +113,6 @@ FEATURES = (
     SimulatorFeatures.SPAWNING_ENTITIES,
 )
 
-_WORLD_FRAMES = ("", "world", "map", "/map")
 _NAMESPACE_RE = re.compile(r"^/?([A-Za-z_][A-Za-z0-9_]*)(/[A-Za-z_][A-Za-z0-9_]*)*/?$")
 
 _WORLD_KIND_TO_SPAWN = {
@@ -491,15 +490,14 @@ class SimulationInterfaces:
             self.node.get_logger().warning(d.format())
         frame = initial_pose.header.frame_id
         X_WF = Pose()
-        if frame not in _WORLD_FRAMES:
+        if frame not in WORLD_FRAMES:
             X_WF = self._frame_pose(frame, "initial_pose.header.frame_id")
         warnings = tuple(d.format() for d in loaded.diagnostics)
         return _Prepared(model, name, X_WF * from_pose_msg(p), namespace.strip("/"), allow_renaming, warnings)
 
     def _frame_pose(self, frame: str, field_name: str) -> Pose:
-        entity, _, link = frame.partition("::")
         try:
-            return self.sim.call(lambda: self.sim.world.entity_state(entity, link or None).pose)
+            return self.sim.call(lambda: self.sim.world.frame_pose(frame))
         except WorldError:
             raise _Refused(
                 Result.RESULT_OPERATION_FAILED, f"{field_name} '{frame}' not found: no such entity or entity::link"
@@ -687,7 +685,7 @@ class SimulationInterfaces:
             return res
         try:
             frame = s.header.frame_id
-            X_WF = Pose() if frame in _WORLD_FRAMES else self._frame_pose(frame, "state.header.frame_id")
+            X_WF = Pose() if frame in WORLD_FRAMES else self._frame_pose(frame, "state.header.frame_id")
             pose = X_WF * from_pose_msg(p)
             lin = quat_rotate(X_WF.orientation, (tw.linear.x, tw.linear.y, tw.linear.z))
             ang = quat_rotate(X_WF.orientation, (tw.angular.x, tw.angular.y, tw.angular.z))

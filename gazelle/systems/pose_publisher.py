@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING
 from ..description import ConfigElement, Pose
 from ..description._model import quat_conj, quat_from_rpy, quat_mul, quat_rotate
 from ._base import System, SystemContext, UpdateInfo, child_text, parse_float, ros_block
+from ..physics import WORLD_FRAMES
 from ._bus import Endpoint, MsgType, Odometry, Twist, resolve_topic
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -38,7 +39,6 @@ ROS1_NAMES = {
     "rpyOffset": "rpy_offsets",
     "gaussianNoise": "gaussian_noise",
 }
-WORLD_FRAMES = ("world", "map", "/world", "/map", "")
 
 
 @dataclass(frozen=True)
