@@ -13,7 +13,7 @@ import pytest
 from gazelle.description import Pose, load, load_string
 from gazelle.physics import Simulation
 from gazelle.systems import System, UpdateInfo
-from gazelle.systems._bus import MsgType
+from gazelle.systems._bus import MsgType, Twist
 from gazelle.systems.diff_drive import ODOM_WORLD, DiffDrive
 from gazelle.systems.gz_diff_drive import GzDiffDrive, SpeedLimiter, SpeedLimits
 from gazelle.systems.joint_controllers import JointCommands, JointController, JointPositionController
@@ -284,7 +284,7 @@ def test_p3d_publishes_ground_truth_with_offsets() -> None:
     assert p3d.topic == "/gt/odom" and (p3d.frame_id, p3d.child_frame_id) == ("world", "base_link")
     got = []
     ep = next(e for e in sim.bus.endpoints() if e.topic == "/gt/odom")
-    ep.sink = got.append
+    ep.add_sink(got.append)
     system(entity, DiffDrive).command(0.2, 0.0)
     sim.step(1000)
     assert len(got) == pytest.approx(50, abs=1)
@@ -328,3 +328,23 @@ def test_a_system_that_raises_is_disabled_and_the_world_goes_on(caplog):
     assert Broken.calls == 1
     assert "system Broken of entity 'simple_robot' raised in pre_update: RuntimeError: plugin bug" in caplog.text
     assert sim.world.entity_state("simple_robot").pose.position[0] > 0.05  # the diff drive still drives
+
+
+def test_the_bus_fans_out_and_takes_injection() -> None:
+    """Any number of listeners per publisher (a recorder and an echo beside the bridge), and anything
+    can publish into the simulation as the ROS bridge does (the viewer's drive buttons, bag playback)."""
+    sim, entity = spawn(load(SEED_XACRO).value.urdf)
+    odom = next(e for e in sim.bus.endpoints() if e.topic == "/odom" and e.is_publisher)
+    first, second = [], []
+    odom.add_sink(first.append)
+    odom.add_sink(second.append)
+    delivered = sim.bus.inject("/cmd_vel", MsgType.TWIST, Twist((0.2, 0.0, 0.0), (0.0, 0.0, 0.0)))
+    assert delivered == 1
+    sim.step(1000)
+    assert len(first) == len(second) > 0 and first[-1] is second[-1]
+    assert first[-1].pose.position[0] > 0.15  # the injected command drove it
+    odom.remove_sink(second.append)
+    n = len(second)
+    sim.step(100)
+    assert len(second) == n and len(first) > n
+    assert sim.bus.inject("/nobody", MsgType.TWIST, Twist((0.0, 0.0, 0.0), (0.0, 0.0, 0.0))) == 0

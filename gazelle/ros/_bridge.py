@@ -148,6 +148,8 @@ class SimulationNode(Node):
         self._lock = threading.Lock()
         self._pubs: dict[tuple[str, str], _RosEndpoint] = {}
         self._subs: dict[int, Any] = {}
+        self._sinks: dict[int, Any] = {}
+        """id(publisher endpoint) -> the sink this bridge added to it (other sinks stay)."""
         self._static: dict[int, tuple[Transform, ...]] = {}
         self._clock_pub = self.create_publisher(Clock, "/clock", CLOCK_QOS)
         self._clock_period = 1.0 / clock_rate_hz if clock_rate_hz > 0 else 0.0
@@ -255,9 +257,12 @@ class SimulationNode(Node):
             convert = TO_ROS[ep.msg_type]
             handle = entry.handle
             if ep.msg_type is MsgType.TF_STATIC:
-                ep.sink = lambda payload: self._publish_static(handle, ep, payload)
+                sink = lambda payload: self._publish_static(handle, ep, payload)  # noqa: E731
             else:
-                ep.sink = lambda payload: handle.publish(convert(payload))
+                sink = lambda payload: handle.publish(convert(payload))  # noqa: E731
+            with self._lock:
+                self._sinks[id(ep)] = sink
+            ep.add_sink(sink)
         else:
             convert_in = FROM_ROS[ep.msg_type]
             callback = ep.callback
@@ -284,6 +289,10 @@ class SimulationNode(Node):
         if ep.msg_type is MsgType.TF_STATIC:
             with self._lock:
                 self._static.pop(id(ep), None)
+        with self._lock:
+            sink = self._sinks.pop(id(ep), None)
+        if sink is not None:
+            ep.remove_sink(sink)
         with self._lock:
             if ep.is_publisher:
                 key = (ep.topic, ep.msg_type.value)
@@ -451,7 +460,9 @@ class SimulationNode(Node):
             self.sim.step_listeners.remove(self._on_step_model_states)
         self.sim.bus.remove_listener(self)
         for ep in self.sim.bus.endpoints():
-            ep.sink = None
+            sink = self._sinks.pop(id(ep), None)
+            if sink is not None:
+                ep.remove_sink(sink)
         super().destroy_node()
 
 

@@ -120,17 +120,23 @@ class Endpoint:
     qos: Qos = Qos.DEFAULT
     depth: int = 10
     callback: Callable[[Any], None] | None = None
-    """Subscriptions: called (from a bridge thread) with each payload."""
-    sink: Callable[[Any], None] | None = field(default=None, repr=False)
-    """Publishers: set by the bridge; receives each published payload."""
+    """Subscriptions: called (from a bridge thread, or by :meth:`Bus.inject`) with each payload."""
+    sinks: tuple[Callable[[Any], None], ...] = field(default=(), repr=False)
+    """Publishers: everything that receives each published payload (the ROS bridge, a recorder, an echo)."""
     last: Any = field(default=None, repr=False)
     """Publishers: the latest payload (observers that sample, such as the viewer's /odom trail, read it)."""
 
+    def add_sink(self, sink: Callable[[Any], None]) -> None:
+        """Also send every published payload to ``sink`` (any number of them: the bus fans out)."""
+        self.sinks = (*self.sinks, sink)  # a new tuple: publish() iterates without a lock
+
+    def remove_sink(self, sink: Callable[[Any], None]) -> None:
+        self.sinks = tuple(s for s in self.sinks if s != sink)  # == so that bound methods match
+
     def publish(self, payload: Any) -> None:
-        """Send a payload (with nothing outside listening, only ``last`` is kept)."""
+        """Send a payload to every sink (with nothing listening, only ``last`` is kept)."""
         self.last = payload
-        sink = self.sink
-        if sink is not None:
+        for sink in self.sinks:
             sink(payload)
 
 
@@ -195,13 +201,28 @@ class Bus:
             self._endpoints = [ep for ep in self._endpoints if ep.owner != owner]
             listeners = list(self._listeners)
         for ep in gone:
-            ep.sink = None
+            ep.sinks = ()
             for listener in listeners:
                 listener.endpoint_removed(ep)
 
     def endpoints(self) -> list[Endpoint]:
         with self._lock:
             return list(self._endpoints)
+
+    def inject(self, topic: str, msg_type: MsgType, payload: Any) -> int:
+        """Deliver ``payload`` to every subscription of ``topic`` as if it came from ROS.
+
+        What the viewer's drive buttons, a command line tool or bag playback use to publish
+        into the simulation the way the ROS bridge does. Returns how many subscriptions got it.
+        """
+        with self._lock:
+            targets = [
+                ep for ep in self._endpoints
+                if not ep.is_publisher and ep.topic == topic and ep.msg_type == msg_type and ep.callback is not None
+            ]
+        for ep in targets:
+            ep.callback(payload)  # type: ignore[misc]
+        return len(targets)
 
 
 def resolve_topic(name: str, namespace: str = "", remaps: dict[str, str] | None = None) -> str:

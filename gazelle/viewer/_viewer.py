@@ -441,11 +441,11 @@ class Viewer:
         """
         name = entity if entity is not None else self._entity_dd.value
         twist = Twist((float(linear_x), 0.0, 0.0), (0.0, 0.0, float(angular_z)))
-        n = 0
-        for ep in self.sim.bus.endpoints():
-            if ep.owner == name and not ep.is_publisher and ep.msg_type == MsgType.TWIST and ep.callback is not None:
-                ep.callback(twist)
-                n += 1
+        # publish on the entity's command topics as teleop_twist_keyboard would: through the bus
+        topics = sorted(
+            {ep.topic for ep in self.sim.bus.endpoints() if ep.owner == name and not ep.is_publisher and ep.msg_type == MsgType.TWIST}
+        )
+        n = sum(self.sim.bus.inject(topic, MsgType.TWIST, twist) for topic in topics)
         self._drive_text.value = (
             f"{name}: linear {linear_x:+.2f} m/s, angular {angular_z:+.2f} rad/s" if n else f"{name}: no cmd_vel subscriber"
         )
