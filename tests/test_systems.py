@@ -348,3 +348,14 @@ def test_the_bus_fans_out_and_takes_injection() -> None:
     sim.step(100)
     assert len(second) == n and len(first) > n
     assert sim.bus.inject("/nobody", MsgType.TWIST, Twist((0.0, 0.0, 0.0), (0.0, 0.0, 0.0))) == 0
+
+
+def test_one_rate_gate_for_every_periodic_publisher() -> None:
+    from gazelle.systems import RateGate
+
+    gate = RateGate()
+    due = [k for k in range(1000) if gate.due(k * 0.001, 50.0)]
+    assert len(due) == 50 and due[:3] == [0, 20, 40]  # 50 Hz of sim time, first at the first step
+    assert all(gate.due(1.0 + k * 0.001, 0.0) for k in range(5))  # rate 0: every step
+    gate.reset()
+    assert gate.due(0.0, 50.0)  # after a reset of sim time, at once

@@ -2,6 +2,7 @@
 
 from ._base import PHYSICS as PHYSICS
 from ._base import PRE_PHYSICS as PRE_PHYSICS
+from ._base import RateGate as RateGate
 from ._base import System as System
 from ._base import SystemContext as SystemContext
 from ._base import SystemManager as SystemManager

@@ -221,3 +221,25 @@ def ros_block(cfg: ConfigElement | None) -> tuple[str, dict[str, str]]:
             src, dst = text.split("=", 1)
             remaps[src.strip()] = dst.strip()
     return ns, remaps
+
+
+class RateGate:
+    """A sim-time rate limit: :meth:`due` is true at most ``rate_hz`` times per second of sim time
+    (every step when ``rate_hz`` is 0 or less), first at the first step. One implementation for every
+    periodic publisher (robot_state_publisher, joint states, p3d, gz-sim odometry, sensors next)."""
+
+    __slots__ = ("_next",)
+
+    def __init__(self) -> None:
+        self._next = 0.0
+
+    def due(self, sim_time_sec: float, rate_hz: float) -> bool:
+        """Whether it is time to act at ``sim_time_sec``; if so, the next time is one period later."""
+        if sim_time_sec + 1e-9 < self._next:
+            return False
+        self._next = sim_time_sec + (1.0 / rate_hz if rate_hz > 0 else 0.0)
+        return True
+
+    def reset(self) -> None:
+        """Act at the next step (after a reset of sim time)."""
+        self._next = 0.0

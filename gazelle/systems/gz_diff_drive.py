@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING
 
 from ..description import ConfigElement, Pose
 from ..description._model import quat_from_rpy
-from ._base import PerGeneration, System, all_texts, SystemContext, UpdateInfo, child_text, parse_float
+from ._base import PerGeneration, RateGate, System, all_texts, SystemContext, UpdateInfo, child_text, parse_float
 from ._bus import Endpoint, MsgType, Odometry, Transform, TransformBatch, Twist, resolve_topic
 from .diff_drive import joints_listing, wheel_direction_hint, add_wheel_servo, drive_wheel
 
@@ -215,7 +215,7 @@ class GzDiffDrive(System):
         self._odom: DiffDriveOdometry | None = None
         self._odom_pub: Endpoint | None = None
         self._tf_pubs: list[Endpoint] = []
-        self._next_pub = 0.0
+        self._odom_gate = RateGate()
         self._entity = ""
         self.frame_id = ""
         self.child_frame_id = ""
@@ -286,7 +286,7 @@ class GzDiffDrive(System):
         self._cmd = Twist()
         self._last0 = self._last1 = (0.0, 0.0)
         self._integral = [0.0] * len(self._integral)
-        self._next_pub = 0.0
+        self._odom_gate.reset()
         if self._odom is not None:
             self._odom.reset()
 
@@ -313,10 +313,8 @@ class GzDiffDrive(System):
         right = next(i for i, w in enumerate(self._wheels) if w[2] == 1)
         left = next(i for i, w in enumerate(self._wheels) if w[2] == -1)
         self._odom.update(float(qpos[addrs[left][0]]), float(qpos[addrs[right][0]]), info.sim_time_sec)
-        if info.sim_time_sec + 1e-9 < self._next_pub:
+        if not self._odom_gate.due(info.sim_time_sec, self.config.odom_publish_frequency):
             return
-        f = self.config.odom_publish_frequency
-        self._next_pub = info.sim_time_sec + (1.0 / f if f > 0 else 0.0)
         o = self._odom
         pose = Pose((o.x, o.y, 0.0), quat_from_rpy(0.0, 0.0, o.heading))
         stamp = info.sim_time_sec

@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING
 
 from ..description import ConfigElement, Pose
 from ..description._model import quat_conj, quat_from_rpy, quat_mul, quat_rotate
-from ._base import System, SystemContext, UpdateInfo, child_text, parse_float, ros_block
+from ._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_float, ros_block
 from ..physics import WORLD_FRAMES
 from ._bus import Endpoint, MsgType, Odometry, Twist, resolve_topic
 
@@ -112,7 +112,7 @@ class P3D(System):
         self.frame_id = ""
         self.child_frame_id = ""
         self.topic = ""
-        self._next = 0.0
+        self._gate = RateGate()
         self._rng = random.Random(seed)
 
     def configure(self, ctx: SystemContext) -> None:
@@ -147,7 +147,7 @@ class P3D(System):
         log.info(f"p3d: ground truth of [{self.child_frame_id}] in [{self.frame_id}] on [{self.topic}]")
 
     def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        self._next = 0.0
+        self._gate.reset()
 
     def measure(self, world: "PhysicsWorld") -> tuple[Pose, Twist]:
         """Noise-free pose and twist of the body in the frame, with the offsets applied."""
@@ -167,10 +167,8 @@ class P3D(System):
         return pose, Twist(tuple(lin), tuple(ang))  # type: ignore[arg-type]
 
     def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        if self._pub is None or info.paused or info.sim_time_sec + 1e-9 < self._next:
+        if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.config.update_rate):
             return
-        rate = self.config.update_rate
-        self._next = info.sim_time_sec + (1.0 / rate if rate > 0 else 0.0)
         pose, twist = self.measure(world)
         gn = self.config.gaussian_noise
         if gn > 0:

@@ -11,14 +11,13 @@ get the namespace as prefix (``r1/base_link``) unless ``frame_prefix`` says othe
 from __future__ import annotations
 
 import logging
-import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import mujoco
 
 from ..description import JointType, Model, Plugin
-from ._base import PerGeneration, all_texts, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
+from ._base import RateGate, PerGeneration, all_texts, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
 from ._bus import Endpoint, JointStates, MsgType, Qos, Text, Transform, TransformBatch, resolve_topic
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -104,7 +103,7 @@ class RobotStatePublisher(System):
         self.prefix = ""
         self._moving: list[_MovingJoint] = []
         self._tf: Endpoint | None = None
-        self._next = 0.0
+        self._gate = RateGate()
         self._ids = PerGeneration(self._body_ids)
 
     def configure(self, ctx: SystemContext) -> None:
@@ -150,13 +149,11 @@ class RobotStatePublisher(System):
         return [(name2id(m.parent_body), name2id(m.child_body)) for m in self._moving]
 
     def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        self._next = 0.0
+        self._gate.reset()
 
     def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        if self._tf is None or info.paused or info.sim_time_sec + 1e-9 < self._next:
+        if self._tf is None or info.paused or not self._gate.due(info.sim_time_sec, self.config.publish_frequency):
             return
-        period = 1.0 / self.config.publish_frequency if self.config.publish_frequency > 0 else 0.0
-        self._next = info.sim_time_sec + period if math.isfinite(period) else math.inf
         out = []
         for m, (pid, cid) in zip(self._moving, self._ids.get(world)):
             X_WP, X_WC = world.body_pose(pid), world.body_pose(cid)
@@ -186,7 +183,7 @@ class JointStatePublisher(System):
         self.config = JointStateConfig()
         self._pub: Endpoint | None = None
         self._joints: list[str] = []
-        self._next = 0.0
+        self._gate = RateGate()
         self._addr = PerGeneration(lambda w: [w.joint_address(self._entity, jn) for jn in self._joints])
 
     def configure(self, ctx: SystemContext) -> None:
@@ -220,13 +217,11 @@ class JointStatePublisher(System):
         self._entity = ctx.entity.name
 
     def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        self._next = 0.0
+        self._gate.reset()
 
     def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        if self._pub is None or info.paused or info.sim_time_sec + 1e-9 < self._next:
+        if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.config.update_rate):
             return
-        rate = self.config.update_rate
-        self._next = info.sim_time_sec + (1.0 / rate if rate > 0 else 0.0)
         addrs = self._addr.get(world)
         qpos, qvel = world.data.qpos, world.data.qvel
         self._pub.publish(
