@@ -22,6 +22,8 @@ from gazelle.viewer._browser import find_chromium
 from .conftest import GAZELLE, REPO
 
 HAVE_BROWSER = importlib.util.find_spec("playwright") is not None and find_chromium() is not None
+CORNER = re.compile(r"corner (\d)\s+\(([+-]?[\d.]+), ([+-]?[\d.]+)\)")
+"""A demo line ``corner 2      (+0.972, +0.998)      (...)``: the corner by ground truth."""
 SIDES = re.compile(r"sides between corners: ([\d.]+) m, ([\d.]+) m, ([\d.]+) m; worst /odom error ([\d.]+) mm")
 
 
@@ -46,11 +48,15 @@ def test_demo_drives_one_square_reports_it_and_exits_0(ros_env: dict[str, str], 
     if not HAVE_BROWSER:
         return
     assert "viewer snapshot failed" not in log and "video failed" not in log, log
-    # the snapshot shows the square's path: magenta near each corner's projected pixel (panel minimized)
+    # the snapshot shows the square's path: magenta near the projected pixel of each corner the robot
+    # really reached (by ground truth, as the demo reports them: the seed's square does not close, its
+    # second corner is at x = 0.97, 20 px from the ideal (1, 1) in the picture) (panel minimized)
+    reached = {int(k): (float(x), float(y)) for k, x, y in CORNER.findall(res.stdout)}
+    assert {1, 2, 3} <= set(reached), log
     rgb = rgb_of((tmp_path / "viewer.png").read_bytes())
     h, w = rgb.shape[:2]
     trail = trail_mask(rgb)
-    for corner in ((1.0, 0.0, 0.02), (1.0, 1.0, 0.02), (0.0, 1.0, 0.02)):
+    for corner in ((*reached[1], 0.02), (*reached[2], 0.02), (*reached[3], 0.02)):
         cx, cy = project(corner, w, h)
         assert 0 <= cx < w and 0 <= cy < h, f"corner {corner} is off the picture at {cx:.0f}, {cy:.0f}"
         near = trail[max(int(cy) - 25, 0) : int(cy) + 25, max(int(cx) - 25, 0) : int(cx) + 25]
