@@ -10,7 +10,7 @@ import logging
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Callable, Container
 
 import mujoco
 import numpy as np
@@ -78,6 +78,27 @@ class ErrorKind:
     BUILD_FAILED = "build_failed"
     INCORRECT_STATE = "incorrect_state"
     DIVERGED = "diverged"
+
+
+def _checked_placement(name: str, X_WM: Pose, taken: Container[str]) -> Pose:
+    """``X_WM`` with a unit quaternion, once the name is free and valid and the pose usable.
+
+    Raises:
+        WorldError: a taken or invalid name, a non-finite, absurd or zero-quaternion pose.
+    """
+    if name in taken:
+        raise WorldError(ErrorKind.NAME_NOT_UNIQUE, f"entity '{name}' already exists")
+    if not name or SEP in name or not ENTITY_NAME_RE.match(name):
+        raise WorldError(ErrorKind.NAME_INVALID, f"invalid entity name {excerpt(name)}: use {NAME_RULE}")
+    if not all(math.isfinite(v) for v in (*X_WM.position, *X_WM.orientation)):
+        raise WorldError(ErrorKind.INVALID_POSE, f"pose of '{name}' is not finite: {X_WM}")
+    far = pose_out_of_range(X_WM, "position")
+    if far is not None:
+        raise WorldError(ErrorKind.INVALID_POSE, f"pose of '{name}': {far}")
+    qn = math.sqrt(sum(v * v for v in X_WM.orientation))
+    if qn < 1e-9:
+        raise WorldError(ErrorKind.INVALID_POSE, f"orientation of '{name}' is a zero quaternion")
+    return Pose(X_WM.position, tuple(v / qn for v in X_WM.orientation))  # type: ignore[arg-type]
 
 
 def pose_out_of_range(pose: Pose, field_name: str) -> str | None:
@@ -239,22 +260,7 @@ class PhysicsWorld:
         Raises:
             WorldError: duplicate or invalid name, NaN pose, or the model cannot be built.
         """
-        if name in self.entities:
-            raise WorldError(ErrorKind.NAME_NOT_UNIQUE, f"entity '{name}' already exists")
-        if not name or SEP in name or not ENTITY_NAME_RE.match(name):
-            raise WorldError(
-                ErrorKind.NAME_INVALID,
-                f"invalid entity name {excerpt(name)}: use {NAME_RULE}",
-            )
-        if not all(math.isfinite(v) for v in (*X_WM.position, *X_WM.orientation)):
-            raise WorldError(ErrorKind.INVALID_POSE, f"pose of '{name}' is not finite: {X_WM}")
-        far = pose_out_of_range(X_WM, "position")
-        if far is not None:
-            raise WorldError(ErrorKind.INVALID_POSE, f"pose of '{name}': {far}")
-        qn = math.sqrt(sum(v * v for v in X_WM.orientation))
-        if qn < 1e-9:
-            raise WorldError(ErrorKind.INVALID_POSE, f"orientation of '{name}' is a zero quaternion")
-        X_WM = Pose(X_WM.position, tuple(v / qn for v in X_WM.orientation))  # type: ignore[arg-type]
+        X_WM = _checked_placement(name, X_WM, self.entities)
         built = BuiltEntity(name=name, root_body="", free_joint=None)
         entity: Entity | None = None
         try:
@@ -657,29 +663,11 @@ class PhysicsWorld:
         added: list[Entity] = []
         taken = set(self.entities)
         for model, name, X_WM, namespace, spawned, configure in items:
-            if name in taken:
-                out.append(WorldError(ErrorKind.NAME_NOT_UNIQUE, f"entity '{name}' already exists"))
+            try:
+                X_WM = _checked_placement(name, X_WM, taken)
+            except WorldError as err:
+                out.append(err)
                 continue
-            if not name or SEP in name or not ENTITY_NAME_RE.match(name):
-                out.append(
-                    WorldError(
-                        ErrorKind.NAME_INVALID,
-                        f"invalid entity name {excerpt(name)}: use {NAME_RULE}",
-                    )
-                )
-                continue
-            if not all(math.isfinite(v) for v in (*X_WM.position, *X_WM.orientation)):
-                out.append(WorldError(ErrorKind.INVALID_POSE, f"pose of '{name}' is not finite: {X_WM}"))
-                continue
-            far = pose_out_of_range(X_WM, "position")
-            if far is not None:
-                out.append(WorldError(ErrorKind.INVALID_POSE, f"pose of '{name}': {far}"))
-                continue
-            qn = math.sqrt(sum(v * v for v in X_WM.orientation))
-            if qn < 1e-9:
-                out.append(WorldError(ErrorKind.INVALID_POSE, f"orientation of '{name}' is a zero quaternion"))
-                continue
-            X_WM = Pose(X_WM.position, tuple(v / qn for v in X_WM.orientation))  # type: ignore[arg-type]
             try:
                 built = add_model(self.spec, model, name, X_WM)
                 entity = Entity(name, model, namespace, X_WM, built, spawned)
