@@ -613,10 +613,13 @@ class SimulationInterfaces:
     def _select(self, filters: Any) -> list[str]:
         pattern, cats = self._compile_filters(filters)
         # categories on the sim thread (cheap); the pattern here, off it, and bounded in time
-        named = self.sim.call(
+        return _matching(pattern, self._names_in(cats), filters.filter)
+
+    def _names_in(self, cats: set[int]) -> list[str]:
+        """The entities of the given categories (all when none), read on the sim thread."""
+        return self.sim.call(
             lambda: [name for name, e in self.sim.world.entities.items() if not cats or category_of(e) in cats]
         )
-        return _matching(pattern, named, filters.filter)
 
     def get_entities(self, req: GetEntities.Request, res: GetEntities.Response) -> Any:
         try:
@@ -655,10 +658,7 @@ class SimulationInterfaces:
             return res
 
         try:
-            named = self.sim.call(
-                lambda: [name for name, e in self.sim.world.entities.items() if not cats or category_of(e) in cats]
-            )
-            wanted = _matching(pattern, named, req.filters.filter)
+            wanted = _matching(pattern, self._names_in(cats), req.filters.filter)
         except _Refused as err:
             res.result = _result(err.code, str(err))
             return res
