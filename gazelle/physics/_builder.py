@@ -158,6 +158,8 @@ def _add_geom(
     decomposed: list[tuple[str, int, float, str]] | None = None,
 ) -> None:
     g = col.geometry
+    piece_names: list[str] = []
+    """MuJoCo meshes of a non-convex mesh's convex parts (one geom each); empty otherwise."""
     kwargs: dict = {
         "name": name,
         "pos": list(col.pose.position),
@@ -211,7 +213,6 @@ def _add_geom(
             kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh_name)
         else:  # not convex: one geom per convex part (see _convex)
             kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH)
-            piece_names = []
             for i, piece in enumerate(parts.pieces):
                 mesh = spec.add_mesh(name=f"{name}__part{i}")
                 mesh.uservert = list(np.asarray(piece, dtype=float).ravel())
@@ -233,7 +234,7 @@ def _add_geom(
     # (contype1 & conaffinity2) | (contype2 & conaffinity1): both fields = the bitmask is the same rule.
     mask = surface.collide_bitmask if surface.collide_bitmask is not None else DEFAULT_COLLIDE_BITMASK
     kwargs["contype"] = kwargs["conaffinity"] = int(mask) & 0xFFFFFFFF
-    if isinstance(g, Mesh) and "meshname" not in kwargs:
+    if piece_names:
         for i, mesh_name in enumerate(piece_names):
             body.add_geom(**{**kwargs, "name": f"{name}/{i}", "meshname": mesh_name})
         return

@@ -59,6 +59,8 @@ class Parts:
 
 _memory: dict[str, Parts | None] = {}
 """Cache key -> the parts, or None for a convex mesh (collide as it is)."""
+_keys: dict[tuple[str, int, tuple[float, ...]], str] = {}
+"""(file, its modification time, scale) -> cache key of its content."""
 _lock = threading.Lock()
 
 
@@ -140,10 +142,20 @@ def collision_parts(path: str, scale: tuple[float, float, float]) -> Parts | Non
     Raises:
         MeshReadError: the mesh cannot be read.
     """
+    try:
+        seen = (path, os.stat(path).st_mtime_ns, tuple(float(v) for v in scale))
+    except OSError as err:
+        raise MeshReadError(f"cannot read '{path}': {err.strerror}") from None
+    with _lock:  # a mesh spawned again (32 chess pieces, a robot re-spawned) is neither welded nor hashed again
+        key = _keys.get(seen)
+        if key is not None and key in _memory:
+            cached = _memory[key]
+            return None if cached is None else Parts(cached.pieces, 0.0, "memory")
     verts, faces = _welded(*load_mesh(path))
     verts = verts * np.asarray(scale, dtype=float)
     key = _key(verts, faces)
     with _lock:
+        _keys[seen] = key
         if key in _memory:
             cached = _memory[key]
             return None if cached is None else Parts(cached.pieces, 0.0, "memory")
