@@ -50,7 +50,7 @@ def variants(text: str) -> list[tuple[str, str, float]]:
 def run(text: str, drop: float) -> dict[str, float]:
     from gazelle.description import Pose, load_string
     from gazelle.description._model import quat_to_rpy
-    from gazelle.physics._simulation import Simulation
+    from gazelle.sim import Simulation
     from gazelle.systems.diff_drive import DiffDrive
     from gazelle.worlds import default_world
 

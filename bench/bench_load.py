@@ -54,7 +54,7 @@ def main() -> int:
 
     t_import, _ = timed(lambda: __import__("gazelle.description"))
     from gazelle.description import Model, Pose, load
-    from gazelle.physics._simulation import Simulation
+    from gazelle.sim import Simulation
     from gazelle.worlds import default_world
 
     print(f"import gazelle.description: {t_import * 1000:.0f} ms (not counted below)")

@@ -52,7 +52,7 @@ def robot_urdf() -> str:
 
 def make_sim(n: int):
     from gazelle.description import Pose, load_string
-    from gazelle.physics._simulation import Simulation
+    from gazelle.sim import Simulation
     from gazelle.systems.diff_drive import DiffDrive
     from gazelle.worlds import default_world
 

@@ -59,7 +59,7 @@ SUBSCRIBER = textwrap.dedent(
 
 def make_sim():
     from gazelle.description import Pose, load
-    from gazelle.physics._simulation import Simulation
+    from gazelle.sim import Simulation
     from gazelle.systems.diff_drive import DiffDrive
     from gazelle.worlds import default_world
 

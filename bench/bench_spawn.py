@@ -158,7 +158,7 @@ def over_dds(reps: int, rtf: float) -> tuple[list[float], list[float], list[floa
 def in_process() -> dict[str, float]:
     """Parse, one spawn (recompile) at growing world size, and one spawn_many, without ROS (ms)."""
     from gazelle.description import Pose, load_string
-    from gazelle.physics import Simulation
+    from gazelle.sim import Simulation, SpawnRequest
     from gazelle.worlds import default_world
 
     board_xml = (EXAMPLE / "chess_board.sdf").read_text()
@@ -181,7 +181,7 @@ def in_process() -> dict[str, float]:
     sim2 = Simulation(default_world(), rtf=0)
     t0 = time.perf_counter()
     sim2.spawn_many(
-        [(board if n == "chess_board" else piece, n, Pose(p, (1, 0, 0, 0)), "", False) for n, p in zip(NAMES, poses())]
+        [SpawnRequest(board if n == "chess_board" else piece, n, Pose(p, (1, 0, 0, 0))) for n, p in zip(NAMES, poses())]
     )
     out["spawn_many of 33 (one recompile)"] = (time.perf_counter() - t0) * 1000
     return out

@@ -62,7 +62,7 @@ BROWSER = textwrap.dedent(
 
 def make_sim(rtf: float):
     from gazelle.description import load
-    from gazelle.physics import Simulation
+    from gazelle.sim import Simulation
     from gazelle.systems._bus import MsgType, Twist
     from gazelle.worlds import default_world
 

@@ -15,7 +15,7 @@ import pytest
 import trimesh
 
 from gazelle.description import Pose, load, load_string
-from gazelle.physics import Simulation
+from gazelle.sim import Simulation
 from gazelle.physics import _convex
 from gazelle.worlds import default_world
 from _paths import REAL

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from gazelle.description import Pose, load, load_string
-from gazelle.physics import Simulation
+from gazelle.sim import Simulation
 from gazelle.systems.diff_drive import DiffDrive
 from gazelle.worlds import default_world
 from _paths import BOX, SEED_XACRO

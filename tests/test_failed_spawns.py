@@ -13,7 +13,8 @@ import numpy as np
 import pytest
 
 from gazelle.description import Pose, load, load_string
-from gazelle.physics import Simulation, WorldError
+from gazelle.physics import ActuatorKind, WorldError
+from gazelle.sim import Simulation, SpawnRequest
 from gazelle.worlds import default_world
 from _paths import BOX, SEED_XACRO
 
@@ -85,7 +86,7 @@ def test_a_plugin_that_raises_in_configure_leaves_no_debris(busy_sim: Simulation
     from gazelle.systems.diff_drive import DiffDrive
 
     def broken(self, ctx):  # a bug in a plugin, of any exception type
-        ctx.world.add_velocity_actuator(ctx.entity, "base_left_wheel_joint", kv=1.0, force_limit=None)
+        ctx.world.add_actuator(ctx.entity, "base_left_wheel_joint", ActuatorKind.VELOCITY, kv=1.0)
         raise KeyError("surprise")
 
     robot = load(SEED_XACRO).value
@@ -123,7 +124,7 @@ def test_a_failed_batch_member_leaves_the_others_and_the_world_intact(busy_sim: 
     deep = load_string(chain(1200, "fixed")).value
     box = load_string(BOX).value
     before_names = tuple(busy_sim.world.entities)
-    out = busy_sim.spawn_many([(box, "b1", Pose((3.0, 3.0, 0.5)), "", False), (deep, "deep", Pose(), "", False)])
+    out = busy_sim.spawn_many([SpawnRequest(box, "b1", Pose((3.0, 3.0, 0.5))), SpawnRequest(deep, "deep", Pose())])
     assert not isinstance(out[0], WorldError) and isinstance(out[1], WorldError)
     assert tuple(busy_sim.world.entities) == (*before_names, "b1")
     assert np.all(np.isfinite(busy_sim.world.data.qpos))

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from gazelle.description import Model, Pose, load
-from gazelle.physics._simulation import Simulation
+from gazelle.sim import Simulation
 from gazelle.worlds import default_world
 from _paths import REAL  # noqa: E402
 pytestmark = pytest.mark.skipif(not REAL.is_dir(), reason="shared real fixtures not available")

@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from gazelle.description import Cone, ErrorCode, Pose, load, load_string
-from gazelle.physics import Simulation
+from gazelle.sim import Simulation
 from gazelle.worlds import default_world
 
 

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from gazelle.description import Pose, load, load_string
-from gazelle.physics import Simulation
+from gazelle.sim import Simulation
 from gazelle.physics._builder import JOINT_ARMATURE
 from gazelle.systems.diff_drive import DiffDrive
 from gazelle.worlds import default_world

@@ -11,7 +11,7 @@ import sys
 import pytest
 
 from gazelle.description import Pose, load, load_string
-from gazelle.physics import Simulation
+from gazelle.sim import Simulation
 from gazelle.systems import System, UpdateInfo
 from gazelle.systems._bus import MsgType, Twist
 from gazelle.systems.diff_drive import ODOM_WORLD, DiffDrive
@@ -307,7 +307,7 @@ def test_plugin_docs_are_up_to_date() -> None:
 
 def test_a_system_that_raises_is_disabled_and_the_world_goes_on(caplog):
     from gazelle.description import Pose, load
-    from gazelle.physics import Simulation
+    from gazelle.sim import Simulation
     from gazelle.systems import System
     from gazelle.worlds import default_world
 

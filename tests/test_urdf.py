@@ -188,7 +188,7 @@ def test_massless_links_follow_sdformat() -> None:
     assert "link 'arm'" in warning.message and "'shoulder'" in warning.message and "hand" in warning.message
     # and it simulates: the merged root carries the mass
     from gazelle.description import Pose
-    from gazelle.physics import Simulation
+    from gazelle.sim import Simulation
     from gazelle.worlds import default_world
 
     sim = Simulation(default_world(), rtf=0.0)

@@ -122,8 +122,9 @@ def simulation_diagnostics(value: object, *, strict: bool = False) -> list[Diagn
     """What spawning ``value`` would tell: plugins and sensors that will not run (with a "did you mean"),
     and what each plugin says while it is configured (a joint it cannot find, wheels that would
     drive backwards), by building it in a throwaway simulation of the default world."""
-    from ..physics import Simulation, WorldError
-    from ..systems._registry import audit_model, audit_world
+    from ..physics import WorldError
+    from ..sim import Simulation
+    from ..systems import audit_model, audit_world
     from ..worlds import default_world
 
     if isinstance(value, World):

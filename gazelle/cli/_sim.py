@@ -65,7 +65,7 @@ def run_sim(
     except ModelLoadError as err:
         print(str(err), file=sys.stderr)
         return 1
-    from ..physics import Simulation
+    from ..sim import Simulation
     from ..ros._bridge import RosBridge
     from ..ros._exposure import choose_discovery_range
 

@@ -27,6 +27,11 @@ from ._diagnostics import reply_text as reply_text
 from ._model import *  # noqa: F401,F403  (the model dataclasses are the public surface)
 from ._model import LoadResult, Model, World
 from ._resources import ResourceResolver as ResourceResolver
+from ._meshes import MeshReadError as MeshReadError
+from ._meshes import load_mesh as load_mesh
+from ._bounded import BoundedWorker as BoundedWorker
+from ._bounded import BoundExceeded as BoundExceeded
+from ._bounded import run_bounded as run_bounded
 
 FORMATS = ("urdf", "xacro", "sdf", "srdf")
 _SUFFIXES = {

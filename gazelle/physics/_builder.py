@@ -64,9 +64,9 @@ from ..description import (
     Pose,
     Sphere,
 )
-from ..description._meshes import MeshReadError, load_mesh
+from ..description import MeshReadError, load_mesh
 from ._convex import collision_parts
-from ..description._model import quat_rotate
+from ..description import quat_rotate
 
 _log = logging.getLogger("gazelle.physics")
 

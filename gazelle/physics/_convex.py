@@ -27,8 +27,8 @@ from pathlib import Path
 import numpy as np
 
 from ..description import Mesh, Model
-from ..description._bounded import BoundExceeded, run_bounded
-from ..description._meshes import MeshReadError, load_mesh
+from ..description import BoundExceeded, run_bounded
+from ..description import MeshReadError, load_mesh
 
 _log = logging.getLogger("gazelle.physics")
 

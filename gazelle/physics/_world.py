@@ -6,19 +6,21 @@ owns one and serialises every access through its command queue.
 
 from __future__ import annotations
 
+import enum
 import logging
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Callable, Container
+from typing import Any, Callable, Container
 
 import mujoco
 import numpy as np
 
 from ..description import Model, Pose, World, excerpt
-from ..description._model import quat_conj, quat_rotate
+from ..description import quat_conj, quat_rotate
 from ._convex import cache_dir
 from ._builder import JOINT_ARMATURE, SEP, BuildError, BuiltEntity, add_model, scoped
+from ._handles import ActuatorHandle, ActuatorKind, BodyHandle, JointHandle
 
 _log = logging.getLogger("gazelle.physics")
 MAX_COORDINATE_M = 1.0e5
@@ -41,6 +43,7 @@ OVERLAP_WATCH_SEC = 5.0
 MAX_CORRECTING_SPIN = 2.0
 """rad/s: the fastest such a body may spin while it is pushed out (uneven overlaps flipped it over)."""
 
+_ACTUATOR_SUFFIX = {ActuatorKind.POSITION: "pos", ActuatorKind.VELOCITY: "vel", ActuatorKind.EFFORT: "eff"}
 _ONE_DOF = (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
 ENTITY_NAME_RE = re.compile(r"^(?!\s)[^\x00-\x1f\x7f]{1,256}(?<!\s)$")
 """Entity names as Gazebo takes them: any printable text up to 256 characters without leading or
@@ -49,27 +52,8 @@ separately, as it separates an entity from its links."""
 NAME_RULE = "printable characters, at most 256, no leading or trailing space, no '::'"
 
 
-class WorldError(Exception):
-    """A request on the world failed; ``code`` says how (see :class:`ErrorKind`)."""
-
-    def __init__(self, kind: str, message: str):
-        super().__init__(message)
-        self.kind = kind
-
-
-class PhysicsOverload(WorldError):
-    """MuJoCo cannot step the world within its memory bounds (see :meth:`PhysicsWorld._guarded`)."""
-
-    def __init__(self, message: str):
-        super().__init__("overload", message)
-
-
-MAX_ARENA_BYTES = 1 << 30
-"""The most MuJoCo arena (contacts, constraints, solver scratch) the world may grow to: 1 GiB."""
-
-
-class ErrorKind:
-    """Failure kinds, mapped to ROS result codes by the bridge."""
+class ErrorKind(enum.StrEnum):
+    """Why a request on the world failed; the bridge maps each to the services' result codes."""
 
     NAME_NOT_UNIQUE = "name_not_unique"
     NAME_INVALID = "name_invalid"
@@ -78,6 +62,26 @@ class ErrorKind:
     BUILD_FAILED = "build_failed"
     INCORRECT_STATE = "incorrect_state"
     DIVERGED = "diverged"
+    OVERLOAD = "overload"
+
+
+class WorldError(Exception):
+    """A request on the world failed; :attr:`kind` says how."""
+
+    def __init__(self, kind: ErrorKind, message: str):
+        super().__init__(message)
+        self.kind = kind
+
+
+class PhysicsOverload(WorldError):
+    """MuJoCo cannot step the world within its memory bounds (see :meth:`PhysicsWorld._guarded`)."""
+
+    def __init__(self, message: str):
+        super().__init__(ErrorKind.OVERLOAD, message)
+
+
+MAX_ARENA_BYTES = 1 << 30
+"""The most MuJoCo arena (contacts, constraints, solver scratch) the world may grow to: 1 GiB."""
 
 
 def _checked_placement(name: str, X_WM: Pose, taken: Container[str]) -> Pose:
@@ -111,6 +115,11 @@ def pose_out_of_range(pose: Pose, field_name: str) -> str | None:
 
 _MASSLESS = re.compile(r"mass and inertia of moving bodies must be larger than mjMINVAL Element name '([^']*)'")
 """MuJoCo's compile error for a moving body without mass; users get it in their own terms."""
+
+
+def build_failed(name: str, err: Exception) -> WorldError:
+    """The :class:`WorldError` (``BUILD_FAILED``) for an entity whose build (or a plugin's configure) raised."""
+    return WorldError(ErrorKind.BUILD_FAILED, f"cannot build '{name}': {_describe(err)}")
 
 
 def _describe(err: Exception) -> str:
@@ -152,11 +161,24 @@ class Entity:
     spawned: bool
     """True if added at run time (removed by a SCOPE_SPAWNED reset)."""
     generation_added: int = 0
-    systems: list = field(default_factory=list)
+    systems: list[Any] = field(default_factory=list)
+    """What the runtime attached to this entity (its plugins' systems); physics never looks inside."""
 
     @property
     def static(self) -> bool:
         return self.model.static
+
+
+@dataclass(frozen=True, slots=True)
+class StagedRequest:
+    """One model to add in a batch (:meth:`PhysicsWorld.stage_many`)."""
+
+    model: Model
+    name: str
+    X_WM: Pose
+    """Where the model frame goes in the world."""
+    namespace: str = ""
+    spawned: bool = True
 
 
 @dataclass(frozen=True)
@@ -180,6 +202,9 @@ class PhysicsWorld:
         opt.timestep = timestep_sec or world.physics.max_step_size_sec
         opt.gravity = list(world.gravity)
         opt.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
+        # a diverging state is found, reported and repaired per entity (recover_divergence),
+        # never silently reset for the whole world as MuJoCo would
+        opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_AUTORESET)
         self.spec.compiler.degree = False
         self.entities: dict[str, Entity] = {}
         self.generation = 0
@@ -195,7 +220,10 @@ class PhysicsWorld:
         self._held: tuple[np.ndarray, np.ndarray] | None | bool = False
         """(qpos addresses, dof addresses) of the hinge/slide dofs above kinematic links; False = not indexed yet."""
         self.model: mujoco.MjModel = self.spec.compile()
+        self._timestep = float(self.model.opt.timestep)
         self.data = mujoco.MjData(self.model)
+        self._state_views: tuple[Any, np.ndarray, np.ndarray] = (None, np.zeros(0), np.zeros(0))
+        """(MjData, its qpos, its qvel): array views kept for the divergence check before every block of steps."""
 
     # ------------------------------------------------------------------ building
     def _forward(self) -> None:
@@ -216,7 +244,10 @@ class PhysicsWorld:
         except mujoco.FatalError as err:
             if "memory" not in str(err).lower() and "stack" not in str(err).lower():
                 raise
-            reason = str(err).strip().splitlines()[0]
+            self._grow_arena(fn, str(err).strip().splitlines()[0])
+
+    def _grow_arena(self, fn: Callable[[mujoco.MjModel, mujoco.MjData], None], reason: str) -> None:
+        """After ``fn`` ran MuJoCo's arena out: grow it (see :meth:`_guarded`) and run ``fn`` again."""
         while True:
             # the interrupted pipeline left its stack frames and a partial arena in mjData: release them,
             # or copying the data (the recompile) is a fatal MuJoCo error that ends the process
@@ -242,48 +273,73 @@ class PhysicsWorld:
         self.generation += 1
         self._held = False  # re-indexed at the next step, once ``entities`` matches the model
 
-    def add_entity(
-        self,
-        model: Model,
-        *,
-        name: str,
-        X_WM: Pose,
-        namespace: str = "",
-        spawned: bool = True,
-        configure: Callable[[Entity], None] | None = None,
-    ) -> Entity:
-        """Add a model as a new entity while keeping every other entity's state.
+    def stage(self, model: Model, *, name: str, X_WM: Pose, namespace: str = "", spawned: bool = True) -> Entity:
+        """Add a model's bodies to the world's spec, not yet to the running model.
 
-        ``configure`` runs after the bodies are added and before the recompile, so
-        systems can add actuators. On any failure the world is left unchanged.
+        The caller (the runtime) then lets the entity's systems add actuators and set joint
+        properties (:meth:`add_actuator`, :meth:`set_joint_armature`, ...), and finally
+        :meth:`commit` s it, or :meth:`discard` s it. Until then the running model is unchanged.
 
         Raises:
-            WorldError: duplicate or invalid name, NaN pose, or the model cannot be built.
+            WorldError: a taken or invalid name, a bad pose (nothing was added), or the
+                description cannot be built (``BUILD_FAILED``; what was added is removed again).
         """
-        X_WM = _checked_placement(name, X_WM, self.entities)
-        built = BuiltEntity(name=name, root_body="", free_joint=None)
-        entity: Entity | None = None
+        return self._stage(model, name, X_WM, namespace, spawned, self.entities)
+
+    def _stage(self, model: Model, name: str, X_WM: Pose, namespace: str, spawned: bool, taken: Container[str]) -> Entity:
+        X_WM = _checked_placement(name, X_WM, taken)
         try:
             built = add_model(self.spec, model, name, X_WM)
-            entity = Entity(name, model, namespace, X_WM, built, spawned)
-            if configure is not None:
-                configure(entity)
-            self._recompile()
-        except Exception as err:  # noqa: BLE001 - whatever failed (builder, a plugin's configure, MuJoCo): undo it
-            # the recompile either did not happen or failed, so model/data are the old ones;
-            # removing what we added makes the spec match them again
+        except Exception as err:  # noqa: BLE001 - whatever the builder raised: undo it, say why
             self._remove_elements(name)
-            raise WorldError(ErrorKind.BUILD_FAILED, f"cannot build '{name}': {_describe(err)}") from None
-        entity.generation_added = self.generation
-        self.entities[name] = entity
-        self._report_unsimulated(entity)
-        self._report_decomposed(entity)
+            raise build_failed(name, err) from None
+        return Entity(name, model, namespace, X_WM, built, spawned)
+
+    def discard(self, entity: Entity) -> None:
+        """Take a staged entity's elements out of the spec again (the running model never had them)."""
+        self._remove_elements(entity.name)
+
+    def commit(self, staged: list[Entity]) -> None:
+        """Recompile with the staged entities, keeping every existing entity's state.
+
+        Raises:
+            WorldError: (``BUILD_FAILED``) MuJoCo refused the model: the staged entities are
+                discarded and the world is as it was. (``OVERLOAD``) the new contacts need more
+                memory than the world may have: they are removed again.
+        """
+        if not staged:
+            return
+        try:
+            self._recompile()
+        except Exception as err:  # noqa: BLE001 - MuJoCo's compile errors come in several types
+            # the recompile failed, so model/data are the old ones; removing what was staged
+            # makes the spec match them again
+            for e in staged:
+                self._remove_elements(e.name)
+            what = staged[0].name if len(staged) == 1 else "the batch"
+            raise build_failed(what, err) from None
+        for e in staged:
+            e.generation_added = self.generation
+            self.entities[e.name] = e
+            self._report_unsimulated(e)
+            self._report_decomposed(e)
         self._watch_overlaps()
         try:
             self._forward()
         except PhysicsOverload:
-            self.remove_entity(name)  # the world as it was; the reply says why
+            for e in staged:
+                self.remove_entity(e.name)  # the world as it was; the reply says why
             raise
+
+    def add_entity(self, model: Model, *, name: str, X_WM: Pose, namespace: str = "", spawned: bool = True) -> Entity:
+        """Add a model as a new entity (no systems) while keeping every other entity's state.
+
+        Raises:
+            WorldError: duplicate or invalid name, NaN pose, or the model cannot be built;
+                the world is then unchanged.
+        """
+        entity = self.stage(model, name=name, X_WM=X_WM, namespace=namespace, spawned=spawned)
+        self.commit([entity])
         return entity
 
     def _report_decomposed(self, entity: Entity) -> None:
@@ -355,17 +411,54 @@ class PhysicsWorld:
         self._forward()
         return entity
 
-    def add_velocity_actuator(self, entity: Entity, joint: str, *, kv: float, force_limit: float | None) -> str:
-        """Add a velocity servo on a MuJoCo joint of ``entity`` (call from ``configure``)."""
-        if self.spec.joint(scoped(entity.name, joint)) is None:
+    def add_actuator(
+        self,
+        entity: Entity,
+        joint: str,
+        kind: ActuatorKind,
+        *,
+        kp: float = 0.0,
+        kv: float = 0.0,
+        force_limit: tuple[float, float] | None = None,
+    ) -> ActuatorHandle:
+        """Add an actuator on a 1-dof joint of a staged ``entity`` (between :meth:`stage` and :meth:`commit`).
+
+        ``POSITION``: force = kp·(command − q) − kv·q̇; ``VELOCITY``: force = kv·(command − q̇);
+        ``EFFORT``: force = command. MuJoCo integrates the kv terms implicitly (``implicitfast``), so a
+        stiff servo stays stable at any gain. ``force_limit`` (lo, hi) clamps the force.
+
+        Raises:
+            WorldError: (``NOT_FOUND``) the entity has no such joint.
+        """
+        target = scoped(entity.name, joint)
+        if self.spec.joint(target) is None:
             raise WorldError(ErrorKind.NOT_FOUND, _no_joint_message(entity, joint))
-        act_name = scoped(entity.name, f"{joint}#vel")
-        act = self.spec.add_actuator(name=act_name, target=scoped(entity.name, joint), trntype=mujoco.mjtTrn.mjTRN_JOINT)
-        act.set_to_velocity(kv=kv)
-        if force_limit is not None and force_limit > 0:
+        name = scoped(entity.name, f"{joint}#{_ACTUATOR_SUFFIX[kind]}")
+        act = self.spec.add_actuator(name=name, target=target, trntype=mujoco.mjtTrn.mjTRN_JOINT)
+        if kind is ActuatorKind.POSITION:
+            act.set_to_position(kp=kp, kv=kv)
+        elif kind is ActuatorKind.VELOCITY:
+            act.set_to_velocity(kv=kv)
+        else:
+            act.set_to_motor()
+        if force_limit is not None and (math.isfinite(force_limit[0]) or math.isfinite(force_limit[1])):
             act.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
-            act.forcerange = [-force_limit, force_limit]
-        return act_name
+            act.forcerange = [max(force_limit[0], -1e30), min(force_limit[1], 1e30)]
+        return ActuatorHandle(JointHandle(self, entity.name, joint), kind, name)
+
+    def joint(self, entity: str, joint: str) -> JointHandle:
+        """A handle on a 1-dof joint of an entity (by its description name; MuJoCo joint ``joint``).
+
+        Raises:
+            WorldError: (``NOT_FOUND``) no such entity, or (once compiled) no such joint.
+        """
+        if entity not in self.entities and self.spec.joint(scoped(entity, joint)) is None:
+            raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' has no joint '{joint}'")
+        return JointHandle(self, entity, joint)
+
+    def body(self, entity: str, link: str | None = None) -> BodyHandle:
+        """A handle on a link of an entity (None: its root link, the model frame)."""
+        return BodyHandle(self, entity, link)
 
     def make_wheel_contacts_pointlike(self, entity: Entity, link: str) -> int:
         """Turn the cylinder collisions of a drive wheel into ellipsoids of the same radius.
@@ -408,7 +501,8 @@ class PhysicsWorld:
 
     @property
     def timestep(self) -> float:
-        return float(self.model.opt.timestep)
+        """The physics step, seconds (fixed for the world's lifetime)."""
+        return self._timestep
 
     def _held_dofs(self) -> tuple[np.ndarray, np.ndarray] | None:
         if self._held is False:
@@ -423,28 +517,71 @@ class PhysicsWorld:
             self._held = (np.array(qadr), np.array(dadr)) if qadr else None
         return self._held  # type: ignore[return-value]
 
-    def step(self) -> None:
+    def step(self, n: int = 1) -> None:
+        """Take ``n`` physics steps with the actuators' commands held.
+
+        The steps run inside MuJoCo (``mj_step(m, d, nstep)``), bit-identical to ``n`` single steps.
+        Two things need Python between steps, and only while they apply: kinematic joints (held
+        exactly, every step) and the overlap watch after something was placed (every
+        :data:`OVERLAP_CHECK_EVERY` steps, every step while something is deep in).
+        """
+        if not self._overlap_steps and self._held_dofs() is None:  # the usual case: one MuJoCo call
+            self._kinematics_stale = True
+            self._steps(n)
+            return
+        while n > 0:
+            if self._held_dofs() is not None:
+                k = 1
+            elif self._overlap_steps:
+                # stop exactly where single steps would have checked (see _step_block)
+                k = 1 if self._deep else min(n, self._overlap_steps % OVERLAP_CHECK_EVERY or OVERLAP_CHECK_EVERY)
+            else:
+                k = n
+            self._step_block(k)
+            n -= k
+
+    def _step_block(self, k: int) -> None:
         held = self._held_dofs()
         if held is None:
-            self._guarded(mujoco.mj_step)
+            self._steps(k)
         else:
             # kinematic joints: no force moves them; they keep their own velocity exactly
             qadr, dadr = held
             q0, v0 = self.data.qpos[qadr], self.data.qvel[dadr]
-            self._guarded(mujoco.mj_step)
+            self._steps(1)
             self.data.qvel[dadr] = v0
             self.data.qpos[qadr] = q0 + v0 * self.model.opt.timestep
         # mj_step computes kinematics *before* it integrates, so xpos/xquat/cvel now describe
         # the previous step's state; refresh them lazily, on the first query
         self._kinematics_stale = True
         if self._overlap_steps:  # only for a while after something was placed: costs nothing in steady state
-            self._overlap_steps -= 1
+            self._overlap_steps = max(0, self._overlap_steps - k)
             # every step while something is deep in, else every OVERLAP_CHECK_EVERY steps (~2 µs a check)
             if self._deep or self._overlap_steps % OVERLAP_CHECK_EVERY == 0:
                 d = self.data
                 self._deep = bool(d.ncon) and float(d.contact.dist[: d.ncon].min()) < -DEEP_PENETRATION_M
                 if self._deep:
                     self._limit_correcting_velocity()
+
+    def _steps(self, k: int) -> None:
+        """``k`` steps in one MuJoCo call; after an arena growth (see :meth:`_guarded`) only the rest."""
+        t0 = self.data.time
+        try:
+            mujoco.mj_step(self.model, self.data, nstep=k)
+            return
+        except mujoco.FatalError as err:
+            if "memory" not in str(err).lower() and "stack" not in str(err).lower():
+                raise
+            reason = str(err).strip().splitlines()[0]
+        dt = self._timestep
+        t_end = t0 + k * dt
+
+        def rest(m: mujoco.MjModel, d: mujoco.MjData) -> None:
+            left = max(0, round((t_end - d.time) / dt))
+            if left:
+                mujoco.mj_step(m, d, nstep=left)
+
+        self._grow_arena(rest, reason)
 
     def _watch_overlaps(self) -> None:
         """Something was placed (spawn, set-state, reset): watch for deep overlaps for a while."""
@@ -491,6 +628,39 @@ class PhysicsWorld:
             mujoco.mj_comVel(self.model, self.data)
             self._kinematics_stale = False
 
+    def recover_divergence(self) -> list[str] | None:
+        """Find a diverged state (NaN, inf or runaway velocity) and repair it.
+
+        Returns None when the state is sound (the usual case, ~0.6 µs); else the names of the
+        entities that diverged (``["<world>"]`` when none can be blamed), after putting each back
+        at its spawn pose, at rest, and zeroing every non-finite value.
+        """
+        d = self.data
+        cache = self._state_views
+        if cache[0] is not d:  # a recompile made a new MjData; `d.qpos` builds a new array object per access
+            cache = self._state_views = (d, d.qpos, d.qvel)
+        _, qpos, qvel = cache
+        # fast path: a NaN/inf makes these dot products non-finite (NaN < x is False),
+        # a |qvel| >= 1e4 makes the first >= 1e8
+        if qvel.dot(qvel) < 1e8 and math.isfinite(qpos.dot(qpos)):
+            return None
+        if np.all(np.isfinite(d.qpos)) and np.all(np.isfinite(d.qvel)) and np.all(np.abs(d.qvel) < 1e4):
+            return None
+        names = self.diverged_entities() or ["<world>"]
+        for name in names:
+            e = self.entities.get(name)
+            if e is None:
+                continue
+            d.qpos[~np.isfinite(d.qpos)] = 0.0
+            d.qvel[~np.isfinite(d.qvel)] = 0.0
+            if e.built.free_joint:
+                self.set_entity_state(name, self._spawn_root_pose(e))
+        d.qacc[:] = 0.0
+        d.qacc_warmstart[:] = 0.0
+        d.qvel[~np.isfinite(d.qvel)] = 0.0
+        mujoco.mj_forward(self.model, d)
+        return names
+
     def diverged_entities(self) -> list[str]:
         """Entities whose state holds NaN/inf or absurd velocities (|qvel| > 1e4)."""
         nq = {int(mujoco.mjtJoint.mjJNT_FREE): (7, 6), int(mujoco.mjtJoint.mjJNT_BALL): (4, 3)}
@@ -524,9 +694,9 @@ class PhysicsWorld:
 
     def body_pose(self, body_id: int) -> Pose:
         self._refresh_kinematics()
-        p = self.data.xpos[body_id]
-        q = self.data.xquat[body_id]
-        return Pose((float(p[0]), float(p[1]), float(p[2])), (float(q[0]), float(q[1]), float(q[2]), float(q[3])))
+        x, y, z = self.data.xpos[body_id].tolist()
+        w, qx, qy, qz = self.data.xquat[body_id].tolist()
+        return Pose((x, y, z), (w, qx, qy, qz))
 
     def body_velocity(self, body_id: int) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
         """World-frame linear velocity of the body origin and angular velocity."""
@@ -643,56 +813,16 @@ class PhysicsWorld:
         return e.X_WM * (link.pose or Pose())
 
 
-    # ------------------------------------------------------------------ batch building (simulation_interfaces SpawnEntities)
-    def add_entities(
-        self,
-        items: list[tuple[Model, str, Pose, str, bool, Callable[[Entity], None] | None]],
-    ) -> list[Entity | WorldError]:
-        """Add several models as new entities with ONE recompile.
-
-        ``items`` are ``(model, name, X_WM, namespace, spawned, configure)`` as for
-        :meth:`add_entity`. Each item that fails its own checks (name, pose, build)
-        gets a :class:`WorldError` in its slot of the returned list and is left out;
-        the others are added together.
-
-        Raises:
-            WorldError: (``BUILD_FAILED``) the combined recompile failed; nothing was
-                added and the world is unchanged (add them one at a time to find the culprit).
-        """
+    def stage_many(self, items: list[StagedRequest]) -> list[Entity | WorldError]:
+        """:meth:`stage` several models; each that fails its own checks gets its error in its slot."""
         out: list[Entity | WorldError] = []
-        added: list[Entity] = []
         taken = set(self.entities)
-        for model, name, X_WM, namespace, spawned, configure in items:
+        for it in items:
             try:
-                X_WM = _checked_placement(name, X_WM, taken)
+                entity = self._stage(it.model, it.name, it.X_WM, it.namespace, it.spawned, taken)
             except WorldError as err:
                 out.append(err)
                 continue
-            try:
-                built = add_model(self.spec, model, name, X_WM)
-                entity = Entity(name, model, namespace, X_WM, built, spawned)
-                if configure is not None:
-                    configure(entity)
-            except Exception as err:  # noqa: BLE001 - see add_entity
-                self._remove_elements(name)
-                out.append(WorldError(ErrorKind.BUILD_FAILED, f"cannot build '{name}': {_describe(err)}"))
-                continue
-            taken.add(name)
-            added.append(entity)
+            taken.add(it.name)
             out.append(entity)
-        if not added:
-            return out
-        try:
-            self._recompile()
-        except Exception as err:  # noqa: BLE001 - see add_entity
-            for e in added:
-                self._remove_elements(e.name)
-            raise WorldError(ErrorKind.BUILD_FAILED, f"cannot build the batch: {_describe(err)}") from None
-        for e in added:
-            e.generation_added = self.generation
-            self.entities[e.name] = e
-            self._report_unsimulated(e)
-            self._report_decomposed(e)
-        self._watch_overlaps()
-        self._forward()
         return out

@@ -15,7 +15,7 @@ from std_msgs.msg import String as StringMsg
 from tf2_msgs.msg import TFMessage
 
 from ..description import Pose
-from ..systems._bus import Float64, JointStates, MsgType, Odometry, Transform, TransformBatch, Twist
+from ..systems import Float64, JointStates, MsgType, Odometry, Transform, TransformBatch, Twist
 
 
 def to_time(sec: float) -> Time:

@@ -78,9 +78,9 @@ from ..description import (
     load_string,
     reply_text,
 )
-from ..description._model import JointType, quat_rotate
-from ..physics import WORLD_FRAMES, WorldError, pose_out_of_range
-from ..physics._world import Entity, ErrorKind
+from ..description import JointType, quat_rotate
+from ..physics import WORLD_FRAMES, Entity, ErrorKind, WorldError, pose_out_of_range
+from ..sim import SpawnRequest
 from ._convert import from_pose_msg, to_pose_msg, to_time
 from ._replies import guarded_service, with_warnings
 
@@ -504,7 +504,7 @@ class SimulationInterfaces:
             ) from None
 
     def _commit(self, prepared: list[_Prepared]) -> list[Entity | WorldError]:
-        return self.sim.spawn_many([(p.model, p.name, p.pose, p.namespace, p.allow_renaming) for p in prepared])
+        return self.sim.spawn_many([SpawnRequest(p.model, p.name, p.pose, p.namespace, p.allow_renaming) for p in prepared])
 
     @staticmethod
     def _world_error_result(err: WorldError) -> Result:

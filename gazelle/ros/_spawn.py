@@ -22,8 +22,8 @@ from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
 from std_srvs.srv import Empty
 
-from ..description._model import quat_from_rpy
-from ..systems.robot_state import RSP_PLUGIN
+from ..description import quat_from_rpy
+from ..systems import RSP_PLUGIN
 
 
 def build_parser() -> argparse.ArgumentParser:

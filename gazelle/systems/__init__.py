@@ -1,5 +1,18 @@
-"""Systems (Gazebo-style plugins) with configure/reset/pre_update/update/post_update phases."""
+"""Systems (Gazebo-style plugins) with configure/reset/pre_update/update/post_update phases.
 
+A system is created for each supported ``<plugin>`` of an entity (see :func:`create_system`),
+configures while its entity is staged in the physics world, and then runs its phases around the
+physics steps, at the rate it declares (:meth:`System.next_update`). Systems talk to the world
+through the typed handles of :mod:`gazelle.physics` and to ROS through the :class:`Bus`; they
+never import MuJoCo, the runtime or rclpy.
+"""
+
+from ._actuation import PidGains as PidGains
+from ._actuation import PositionServo as PositionServo
+from ._actuation import VelocityServo as VelocityServo
+from ._actuation import add_position_servo as add_position_servo
+from ._actuation import add_velocity_servo as add_velocity_servo
+from ._actuation import add_wheel_servo as add_wheel_servo
 from ._base import PHYSICS as PHYSICS
 from ._base import PRE_PHYSICS as PRE_PHYSICS
 from ._base import RateGate as RateGate
@@ -9,6 +22,55 @@ from ._base import SystemManager as SystemManager
 from ._base import UpdateInfo as UpdateInfo
 from ._bus import Bus as Bus
 from ._bus import Endpoint as Endpoint
+from ._bus import Float64 as Float64
+from ._bus import JointStates as JointStates
 from ._bus import MsgType as MsgType
+from ._bus import Odometry as Odometry
+from ._bus import Qos as Qos
+from ._bus import Text as Text
+from ._bus import Transform as Transform
+from ._bus import TransformBatch as TransformBatch
+from ._bus import Twist as Twist
+from ._bus import resolve_topic as resolve_topic
+from ._registry import audit_model as audit_model
+from ._registry import audit_world as audit_world
 from ._registry import create_system as create_system
 from ._registry import supported_plugins as supported_plugins
+from .robot_state import RSP_PLUGIN as RSP_PLUGIN
+from .robot_state import RobotStatePublisher as RobotStatePublisher
+from .robot_state import robot_state_config as robot_state_config
+
+__all__ = [
+    "PHYSICS",
+    "PRE_PHYSICS",
+    "RSP_PLUGIN",
+    "Bus",
+    "Endpoint",
+    "Float64",
+    "JointStates",
+    "MsgType",
+    "Odometry",
+    "PidGains",
+    "PositionServo",
+    "Qos",
+    "RateGate",
+    "RobotStatePublisher",
+    "System",
+    "SystemContext",
+    "SystemManager",
+    "Text",
+    "Transform",
+    "TransformBatch",
+    "Twist",
+    "UpdateInfo",
+    "VelocityServo",
+    "add_position_servo",
+    "add_velocity_servo",
+    "add_wheel_servo",
+    "audit_model",
+    "audit_world",
+    "create_system",
+    "resolve_topic",
+    "robot_state_config",
+    "supported_plugins",
+]

@@ -6,58 +6,42 @@ Phases per step, as in gz-sim:
 2. ``update`` with priority < ``PHYSICS`` runs before the physics step, the rest after it.
 3. ``post_update`` (after physics): read-only observers (odometry, joint states, TF).
 
-``configure`` runs once when the entity is added (before the MuJoCo model is
-recompiled, so a system can add actuators), ``reset`` on a world reset.
+``configure`` runs once when the entity is added (while it is staged, before the MuJoCo
+model is recompiled, so a system can add actuators), ``reset`` on a world reset.
+
+Between two updates the world steps inside MuJoCo: a system says when it next needs to run
+(:meth:`System.next_update`), and the runtime takes all the steps until the earliest such time
+in one MuJoCo call. A system that does not say runs every step.
 """
 
 from __future__ import annotations
 
 import logging
+import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Callable, Generic, TypeVar
+from typing import NamedTuple
 
 from ..description import ConfigElement, Plugin
+from ..physics import Entity, PhysicsWorld
 from ._bus import Bus
-
-if TYPE_CHECKING:  # pragma: no cover
-    from ..physics._world import Entity, PhysicsWorld
 
 _log = logging.getLogger("gazelle.systems")
 
 PRE_PHYSICS = -128
 PHYSICS = -64
 DEFAULT_PRIORITY = 0
-T = TypeVar("T")
 
 
-class PerGeneration(Generic[T]):
-    """A value derived from the compiled model (MuJoCo ids, qpos/qvel addresses): ``get(world)`` computes
-    it once per ``world.generation``, since every recompile (a spawn, a delete) may renumber them."""
-
-    __slots__ = ("_compute", "_generation", "_value")
-
-    def __init__(self, compute: Callable[[PhysicsWorld], T]) -> None:
-        self._compute = compute
-        self._generation = -1
-        self._value: T | None = None
-
-    def get(self, world: PhysicsWorld) -> T:
-        if self._generation != world.generation:
-            self._value = self._compute(world)
-            self._generation = world.generation
-        return self._value  # type: ignore[return-value]
-
-
-@dataclass(frozen=True, slots=True)
-class UpdateInfo:
-    """What every system receives each step."""
+class UpdateInfo(NamedTuple):
+    """What every system receives at each update (immutable; a named tuple, as it is made twice per block of steps)."""
 
     sim_time_sec: float
-    """Simulation time at the start of this step (pre/update) or after it (post)."""
+    """Simulation time at the start of this update's steps (pre/update) or after them (post)."""
     real_time_sec: float
     """Wall-clock seconds since the simulation started."""
     dt_sec: float
-    """Physics step size."""
+    """Simulation time this update covers: the steps taken between its pre_update and post_update
+    (one physics step when a system runs every step)."""
     iterations: int
     """Steps taken so far."""
     paused: bool
@@ -67,9 +51,11 @@ class UpdateInfo:
 class SystemContext:
     """Everything a system may touch while configuring."""
 
-    world: "PhysicsWorld"
-    entity: "Entity"
+    world: PhysicsWorld
+    """The world; while configuring, the entity is staged in it (add actuators, set joint properties)."""
+    entity: Entity
     plugin: Plugin | None
+    """The ``<plugin>`` this system was made from (None for built-in systems)."""
     bus: Bus
     logger: logging.Logger
 
@@ -82,16 +68,25 @@ class System:
     def configure(self, ctx: SystemContext) -> None:
         """Read the configuration, check the entity, declare endpoints and actuators."""
 
-    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def next_update(self, sim_time_sec: float) -> float:
+        """The sim time at which this system next needs a phase call (at or after ``sim_time_sec``).
+
+        The world steps inside MuJoCo until the earliest such time over all systems, so a system
+        that runs at a rate returns its next period (see :class:`RateGate`). The default, the
+        current time, means every step; ``math.inf`` means only when something else runs.
+        """
+        return sim_time_sec
+
+    def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         """Forget internal state after a world reset."""
 
-    def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def pre_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         """Before physics: write commands."""
 
-    def update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         """Around physics, by priority."""
 
-    def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         """After physics: observe; must not change the world."""
 
     def shutdown(self) -> None:
@@ -112,6 +107,7 @@ class SystemManager:
         self._phase: dict[str, list[System]] = {p: [] for p in self.PHASES}
         self._update_before: list[System] = []
         self._update_after: list[System] = []
+        self._stepped: list[System] = []
 
     def add(self, owner: str, system: System) -> None:
         self._systems.append((owner, system))
@@ -135,6 +131,23 @@ class SystemManager:
             self._phase[p] = [s for s in systems if _overrides(s, p)]
         self._update_before = [s for s in self._phase["update"] if s.priority < PHYSICS]
         self._update_after = [s for s in self._phase["update"] if s.priority >= PHYSICS]
+        stepped = ("pre_update", "update", "post_update")
+        self._stepped = [s for s in systems if any(_overrides(s, p) for p in stepped)]
+
+    def next_update(self, sim_time_sec: float) -> float:
+        """The earliest :meth:`System.next_update` of the systems that have a per-step phase."""
+        earliest = math.inf
+        for s in self._stepped:
+            try:
+                t = s.next_update(sim_time_sec)
+            except Exception as err:  # noqa: BLE001 - as for the phases
+                self._disable(s, "next_update", err)
+                return sim_time_sec
+            if t < earliest:
+                earliest = t
+                if t <= sim_time_sec:
+                    break
+        return earliest
 
     def _disable(self, system: System, phase: str, err: BaseException) -> None:
         """A system that raises is reported and taken out; the simulation keeps running."""
@@ -146,21 +159,21 @@ class SystemManager:
         self._systems = [(o, s) for o, s in self._systems if s is not system]
         self._rebuild()
 
-    def _run(self, systems: list[System], phase: str, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def _run(self, systems: list[System], phase: str, info: UpdateInfo, world: PhysicsWorld) -> None:
         for s in systems:
             try:
                 getattr(s, phase)(info, world)
             except Exception as err:  # noqa: BLE001 - one broken plugin must not stop the world
                 self._disable(s, phase, err)
 
-    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         self._run(self._phase["reset"], "reset", info, world)
 
-    def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def pre_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         self._run(self._phase["pre_update"], "pre_update", info, world)
         self._run(self._update_before, "update", info, world)
 
-    def post_physics(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def post_physics(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         self._run(self._update_after, "update", info, world)
         self._run(self._phase["post_update"], "post_update", info, world)
 
@@ -226,18 +239,30 @@ def ros_block(cfg: ConfigElement | None) -> tuple[str, dict[str, str]]:
 class RateGate:
     """A sim-time rate limit: :meth:`due` is true at most ``rate_hz`` times per second of sim time
     (every step when ``rate_hz`` is 0 or less), first at the first step. One implementation for every
-    periodic publisher (robot_state_publisher, joint states, p3d, gz-sim odometry, sensors next)."""
+    periodic publisher (robot_state_publisher, joint states, p3d, gz-sim odometry, sensors next);
+    :attr:`next` is what the system's :meth:`System.next_update` returns."""
 
     __slots__ = ("_next",)
 
     def __init__(self) -> None:
         self._next = 0.0
 
+    @property
+    def next(self) -> float:
+        """The sim time from which :meth:`due` is true again."""
+        return self._next
+
     def due(self, sim_time_sec: float, rate_hz: float) -> bool:
-        """Whether it is time to act at ``sim_time_sec``; if so, the next time is one period later."""
+        """Whether it is time to act at ``sim_time_sec``; if so, the next time is the next multiple of
+        the period. Every gate of one rate (and of rates that divide each other: 100, 50, 20 Hz) then
+        falls on the same times, so the world steps inside MuJoCo between them in long blocks."""
         if sim_time_sec + 1e-9 < self._next:
             return False
-        self._next = sim_time_sec + (1.0 / rate_hz if rate_hz > 0 else 0.0)
+        if rate_hz > 0:
+            period = 1.0 / rate_hz
+            self._next = (math.floor(sim_time_sec / period + 1e-6) + 1) * period
+        else:
+            self._next = sim_time_sec
         return True
 
     def reset(self) -> None:

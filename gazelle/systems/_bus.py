@@ -124,17 +124,35 @@ class Endpoint:
     sinks: tuple[Callable[[Any], None], ...] = field(default=(), repr=False)
     """Publishers: everything that receives each published payload (the ROS bridge, a recorder, an echo)."""
     last: Any = field(default=None, repr=False)
-    """Publishers: the latest payload (observers that sample, such as the viewer's /odom trail, read it)."""
+    """Publishers: the latest payload published (only published while :attr:`wanted`)."""
+    _interest: tuple[Callable[[], bool] | None, ...] = field(default=(), repr=False)
+    """Per sink: whether it wants payloads now (None: always)."""
 
-    def add_sink(self, sink: Callable[[Any], None]) -> None:
-        """Also send every published payload to ``sink`` (any number of them: the bus fans out)."""
-        self.sinks = (*self.sinks, sink)  # a new tuple: publish() iterates without a lock
+    def add_sink(self, sink: Callable[[Any], None], wanted: Callable[[], bool] | None = None) -> None:
+        """Also send every published payload to ``sink`` (any number of them: the bus fans out).
+
+        ``wanted`` says whether the sink wants payloads at the moment (the ROS bridge: whether
+        anyone subscribes in ROS); without it, the sink always does.
+        """
+        # new tuples: publish() and wanted iterate without a lock
+        self.sinks, self._interest = (*self.sinks, sink), (*self._interest, wanted)
 
     def remove_sink(self, sink: Callable[[Any], None]) -> None:
-        self.sinks = tuple(s for s in self.sinks if s != sink)  # == so that bound methods match
+        keep = [(s, w) for s, w in zip(self.sinks, self._interest) if s != sink]  # == so that bound methods match
+        self.sinks, self._interest = tuple(s for s, _ in keep), tuple(w for _, w in keep)
+
+    @property
+    def wanted(self) -> bool:
+        """Whether a payload published now reaches anyone. Systems build a message only when it is:
+        with nobody listening (no ROS subscriber, no recorder, no viewer trail), publishing costs
+        nothing, as in gz-transport."""
+        for w in self._interest:
+            if w is None or w():
+                return True
+        return False
 
     def publish(self, payload: Any) -> None:
-        """Send a payload to every sink (with nothing listening, only ``last`` is kept)."""
+        """Send a payload to every sink."""
         self.last = payload
         for sink in self.sinks:
             sink(payload)
@@ -201,7 +219,7 @@ class Bus:
             self._endpoints = [ep for ep in self._endpoints if ep.owner != owner]
             listeners = list(self._listeners)
         for ep in gone:
-            ep.sinks = ()
+            ep.sinks, ep._interest = (), ()
             for listener in listeners:
                 listener.endpoint_removed(ep)
 

@@ -1,10 +1,13 @@
 """Differential drive, configured like Gazebo Classic's ``libgazebo_ros_diff_drive.so``.
 
 Subscribes ``cmd_vel`` (geometry_msgs/Twist) and drives each wheel joint with a
-force-limited MuJoCo velocity servo towards ``(v ∓ ω·separation/2) / radius``
-along the joint's own axis, exactly as the classic plugin sets the joint
-velocity. Publishes ``odom`` (nav_msgs/Odometry) and the odom → base transform
-on ``/tf`` at ``update_rate``, stamped with sim time.
+force-limited velocity servo (:class:`~gazelle.systems._actuation.VelocityServo`)
+towards ``(v ∓ ω·separation/2) / radius`` along the joint's own axis, exactly as
+the classic plugin sets the joint velocity. Publishes ``odom`` (nav_msgs/Odometry)
+and the odom → base transform on ``/tf`` at ``update_rate``, stamped with sim time.
+
+It runs at ``update_rate`` (100 Hz by default), as the classic plugin updates its
+commands and odometry; between its updates the wheels' servos run inside MuJoCo.
 """
 
 from __future__ import annotations
@@ -12,18 +15,12 @@ from __future__ import annotations
 import logging
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
-import mujoco
-import numpy as np
-
-from ..description import ConfigElement, Model, Pose
-from ..description._model import quat_from_rpy, quat_rotate
-from ._base import PerGeneration, System, all_texts, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
+from ..description import ConfigElement, Model, Pose, quat_from_rpy, quat_rotate
+from ..physics import BodyHandle, PhysicsWorld
+from ._actuation import VelocityServo, add_wheel_servo
+from ._base import System, SystemContext, UpdateInfo, all_texts, child_text, parse_bool, parse_float, ros_block
 from ._bus import Endpoint, JointStates, MsgType, Odometry, Transform, TransformBatch, Twist, resolve_topic
-
-if TYPE_CHECKING:  # pragma: no cover
-    from ..physics._world import PhysicsWorld
 
 ODOM_ENCODER = 0
 ODOM_WORLD = 1
@@ -204,103 +201,16 @@ def parse_config(ctx: SystemContext, log: logging.Logger) -> DiffDriveConfig:
     )
 
 
-WHEEL_ARMATURE = 1e-3
-"""Reflected rotor inertia of a wheel's gear motor, kg·m² (a small DC motor through a ~30:1 gearbox).
-
-It lets the speed servo be stiffer (kv grows with the wheel's inertia, see :func:`servo_gain`),
-so the wheels follow cmd_vel changes within a few milliseconds as Gazebo's joint motors do."""
-
-INTEGRAL_TIME_SEC = 0.05
-"""Integral time of the wheel speed loop."""
-
-
-def servo_gain(inertia_about_axis: float, dt_sec: float) -> float:
-    """Velocity-servo gain kv (N·m·s/rad) for a wheel.
-
-    ``implicitfast`` integrates an unsaturated velocity servo implicitly, so any kv
-    is stable there; but a saturated servo (at ``max_wheel_torque``) is an explicit
-    constant torque that changes the wheel speed by ``τ·dt/I`` in one step. If that
-    jump is wider than the unsaturated band ``τ/kv`` the wheel chatters between
-    ±τ and the robot hops (we measured it: kv=1000 turned 0° instead of 90°).
-    ``kv = I/dt`` keeps the band at least one step wide, and since the wheel drags
-    the robot's mass along, its effective inertia (and so its tracking) is higher.
-    """
-    return max(inertia_about_axis, 1e-6) / dt_sec
-
-
-def wheel_inertia_about_axis(model: Model, joint_name: str, armature: float) -> float:
-    """Moment of inertia of a joint's child link about the joint axis, plus the joint armature."""
-    j = model.joint(joint_name)
-    inertial = model.link(j.child).inertial
-    if inertial is None or j.axis is None:
-        return armature
-    # axis in the child frame, then in the inertial (principal) frame
-    X_CJ = j.child_offset.inverse()
-    a_c = np.asarray(quat_rotate(X_CJ.orientation, j.axis.xyz))
-    R_ci = np.zeros(9)
-    mujoco.mju_quat2Mat(R_ci, np.asarray(inertial.pose.orientation, dtype=float))
-    R_ci = R_ci.reshape(3, 3)
-    a_i = R_ci.T @ a_c
-    I = np.array(
-        [
-            [inertial.ixx, inertial.ixy, inertial.ixz],
-            [inertial.ixy, inertial.iyy, inertial.iyz],
-            [inertial.ixz, inertial.iyz, inertial.izz],
-        ]
-    )
-    com = np.asarray(inertial.pose.position) - np.asarray(X_CJ.position)
-    perp = com - a_c * float(com @ a_c)
-    return float(a_i @ I @ a_i) + inertial.mass * float(perp @ perp) + armature
-
-
-UNLIMITED_INTEGRAL = 10.0
-"""Anti-windup bound (rad/s) of the integral term of a wheel servo without a torque limit."""
-
-
-def add_wheel_servo(ctx: SystemContext, joint: str, torque_limit: float) -> tuple[str, float]:
-    """Make ``joint`` a drive wheel (call from ``configure``): point contacts, armature and a
-    velocity servo with kv = I/dt (see :func:`servo_gain`) limited to ``torque_limit`` (≤ 0 or inf: none).
-
-    Returns the actuator name and the anti-windup bound of the integral term for :func:`drive_wheel`.
-    """
-    world, entity, model = ctx.world, ctx.entity, ctx.entity.model
-    world.make_wheel_contacts_pointlike(entity, model.joint(joint).child)
-    world.set_joint_armature(entity, joint, WHEEL_ARMATURE)
-    kv = servo_gain(wheel_inertia_about_axis(model, joint, WHEEL_ARMATURE), world.timestep)
-    limited = 0 < torque_limit < math.inf
-    act = world.add_velocity_actuator(entity, joint, kv=kv, force_limit=torque_limit if limited else None)
-    return act, (torque_limit / kv if limited else UNLIMITED_INTEGRAL)
-
-
-def drive_wheel(
-    world: "PhysicsWorld", dof_adr: int, actuator_id: int, target: float, integral: float, limit: float, dt: float
-) -> float:
-    """Command a wheel servo towards ``target`` rad/s (PI: the servo plus an integral term); returns the new integral.
-
-    The integral action removes the servo's steady-state error under load (scrub, rolling
-    resistance), as a constraint motor (Gazebo's "vel" + "fmax") has none.
-    """
-    speed = float(world.data.qvel[dof_adr])
-    integral += (target - speed) * dt / INTEGRAL_TIME_SEC
-    integral = max(-limit, min(limit, integral))
-    world.data.ctrl[actuator_id] = target + integral
-    return integral
-
-
 @dataclass
 class _Wheel:
     joint: str
-    actuator: str
+    servo: VelocityServo
     radius: float
     side: int
     """+1 right, -1 left (sign of the ω term)."""
     separation: float
-    integral_limit: float
-    """Anti-windup bound of the integral term, rad/s (torque limit / kv)."""
     instructed: float = 0.0
     """Current rim speed command after the acceleration limit, m/s."""
-    integral: float = 0.0
-    """Integral correction added to the servo's target, rad/s."""
 
 
 class DiffDrive(System):
@@ -321,9 +231,13 @@ class DiffDrive(System):
         """Prepended to every frame (the namespace by default)."""
         self._enc_pose = (0.0, 0.0, 0.0)
         self._enc_twist = (0.0, 0.0)
+        self._enc_last: tuple[float, float, float] | None = None
+        """(sim time, right wheel angle, left wheel angle) at the last encoder update."""
         self._ok = False
         self._due = False
-        self._addr = PerGeneration(self._addresses)
+        self._root: BodyHandle | None = None
+        self._wheel_links: list[tuple[BodyHandle, BodyHandle, str, str]] = []
+        """(parent link, child link, parent frame, child frame) of each wheel joint, for the wheel TF."""
 
     # ------------------------------------------------------------------ configure
     def configure(self, ctx: SystemContext) -> None:
@@ -360,10 +274,14 @@ class DiffDrive(System):
         swap = -1 if c.legacy_mode else 1
         for i in range(c.num_wheel_pairs):
             for side, jn in ((1, c.right_joints[i]), (-1, c.left_joints[i])):
-                act, limit = add_wheel_servo(ctx, jn, c.max_wheel_torque)
-                self._wheels.append(
-                    _Wheel(jn, act, c.wheel_diameter[i] / 2.0, side * swap, c.wheel_separation[i], limit)
-                )
+                servo = add_wheel_servo(ctx.world, ctx.entity, jn, c.max_wheel_torque)
+                self._wheels.append(_Wheel(jn, servo, c.wheel_diameter[i] / 2.0, side * swap, c.wheel_separation[i]))
+        self._root = ctx.world.body(self._entity)
+        self._wheel_links = []
+        for w in self._wheels:
+            j = model.joint(w.joint)
+            parent, child = ctx.world.body(self._entity, j.parent), ctx.world.body(self._entity, j.child)
+            self._wheel_links.append((parent, child, self.prefix + j.parent, self.prefix + j.child))
         remaps = dict(c.remappings)
         cmd_topic = resolve_topic(c.command_topic, c.namespace, remaps)
         self._cmd_sub = ctx.bus.subscribe(self._entity, cmd_topic, MsgType.TWIST, self._on_cmd, depth=1)
@@ -395,68 +313,67 @@ class DiffDrive(System):
         self._cmd = Twist((linear_x, 0.0, 0.0), (0.0, 0.0, angular_z))
 
     # ------------------------------------------------------------------ stepping
-    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def next_update(self, sim_time_sec: float) -> float:
+        """Commands and odometry at ``update_rate``; between them the wheel servos run inside MuJoCo."""
+        period = 1.0 / self.config.update_rate if self.config.update_rate > 0 else 0.0
+        return self._last_update + period if self._ok and math.isfinite(self._last_update) else sim_time_sec
+
+    def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         self._cmd = Twist()
         self._last_update = -math.inf
         self._due = False
         self._enc_pose = (0.0, 0.0, 0.0)
         self._enc_twist = (0.0, 0.0)
+        self._enc_last = None
         for w in self._wheels:
             w.instructed = 0.0
-            w.integral = 0.0
+            w.servo.reset()
 
-    def _addresses(self, world: "PhysicsWorld") -> dict[str, tuple[int, int, int]]:
-        """wheel joint -> (qpos address, dof address, actuator id)."""
-        return {w.joint: (*world.joint_address(self._entity, w.joint), world.actuator_id(w.actuator)) for w in self._wheels}
-
-    def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def pre_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         if not self._ok or info.paused:
             return
         c = self.config
         period = 1.0 / c.update_rate if c.update_rate > 0 else 0.0
-        if info.sim_time_sec - self._last_update + 1e-12 >= period:
-            dt = info.sim_time_sec - self._last_update if math.isfinite(self._last_update) else period
-            self._last_update = info.sim_time_sec
-            self._due = True
-            v, wz = self._cmd.linear[0], self._cmd.angular[2]
-            for w in self._wheels:
-                target = v + w.side * wz * w.separation / 2.0
-                if c.max_wheel_acceleration > 0 and abs(target - w.instructed) >= 0.01:
-                    step = c.max_wheel_acceleration * max(dt, info.dt_sec)
-                    delta = max(-step, min(step, target - w.instructed))
-                    w.instructed += delta
-                else:
-                    w.instructed = target
-        addrs = self._addr.get(world)
-        for w in self._wheels:
-            _, dadr, aid = addrs[w.joint]
-            w.integral = drive_wheel(world, dadr, aid, w.instructed / w.radius, w.integral, w.integral_limit, info.dt_sec)
-
-    def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        if not self._ok or info.paused:
+        if info.sim_time_sec - self._last_update + 1e-12 < period:
             return
+        dt = info.sim_time_sec - self._last_update if math.isfinite(self._last_update) else period
+        self._last_update = info.sim_time_sec
+        self._due = True
+        v, wz = self._cmd.linear[0], self._cmd.angular[2]
+        for w in self._wheels:
+            target = v + w.side * wz * w.separation / 2.0
+            if c.max_wheel_acceleration > 0 and abs(target - w.instructed) >= 0.01:
+                step = c.max_wheel_acceleration * max(dt, info.dt_sec)
+                delta = max(-step, min(step, target - w.instructed))
+                w.instructed += delta
+            else:
+                w.instructed = target
+            w.servo.update(w.instructed / w.radius, info.sim_time_sec)
+
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        if not self._ok or info.paused or not self._due:
+            return  # odometry goes out after the steps that followed a command update
+        self._due = False
         c = self.config
         if c.odometry_source == ODOM_ENCODER:
-            self._integrate_encoders(info, world)
-        if not self._due:
-            return  # odometry goes out on the steps where commands were updated
-        self._due = False
+            self._integrate_encoders(info.sim_time_sec)
         stamp = info.sim_time_sec
-        if self._js_pub is not None:
-            addrs = self._addr.get(world)
-            qpos, qvel = world.data.qpos, world.data.qvel
+        if self._js_pub is not None and self._js_pub.wanted:
+            joints = [w.servo.actuator.joint for w in self._wheels]
             self._js_pub.publish(
                 JointStates(
                     stamp,
                     tuple(w.joint for w in self._wheels),
-                    tuple(float(qpos[addrs[w.joint][0]]) for w in self._wheels),
-                    tuple(float(qvel[addrs[w.joint][1]]) for w in self._wheels),
+                    tuple(j.position for j in joints),
+                    tuple(j.velocity for j in joints),
                 )
             )
-        if self._odom_pub is None and self._tf_pub is None:
-            return
+        odom_pub = self._odom_pub if self._odom_pub is not None and self._odom_pub.wanted else None
+        tf_pub = self._tf_pub if self._tf_pub is not None and self._tf_pub.wanted else None
+        if odom_pub is None and tf_pub is None:
+            return  # nobody listens: nothing to build
         pose, twist = self._odometry(world)
-        if self._odom_pub is not None:
+        if odom_pub is not None:
             cov = [0.0] * 36
             cov[0], cov[7], cov[14], cov[21], cov[28], cov[35] = (
                 c.covariance_x,
@@ -466,43 +383,47 @@ class DiffDrive(System):
                 1e12,
                 c.covariance_yaw,
             )
-            self._odom_pub.publish(
+            odom_pub.publish(
                 Odometry(
                     stamp, self.prefix + c.odometry_frame, self.prefix + c.robot_base_frame, pose, twist, tuple(cov), tuple(cov)
                 )
             )
-        if self._tf_pub is not None:
+        if tf_pub is not None:
             tfs: list[Transform] = []
             if c.publish_odom_tf:
                 tfs.append(Transform(stamp, self.prefix + c.odometry_frame, self.prefix + c.robot_base_frame, pose))
             if c.publish_wheel_tf:
                 tfs.extend(self._wheel_transforms(stamp, world))
             if tfs:
-                self._tf_pub.publish(TransformBatch(tuple(tfs)))
+                tf_pub.publish(TransformBatch(tuple(tfs)))
 
-    def _odometry(self, world: "PhysicsWorld") -> tuple[Pose, Twist]:
+    def _odometry(self, world: PhysicsWorld) -> tuple[Pose, Twist]:
         if self.config.odometry_source == ODOM_ENCODER:
             x, y, th = self._enc_pose
             return Pose((x, y, 0.0), quat_from_rpy(0.0, 0.0, th)), Twist(
                 (self._enc_twist[0], 0.0, 0.0), (0.0, 0.0, self._enc_twist[1])
             )
-        st = world.entity_state(self._entity)
-        yaw = st.pose.rpy[2]
-        vx, vy, _ = st.linear_velocity
+        assert self._root is not None
+        pose = self._root.pose
+        (vx, vy, _), angular = self._root.velocity
+        yaw = pose.rpy[2]
         cy, sy = math.cos(yaw), math.sin(yaw)
-        twist = Twist((cy * vx + sy * vy, cy * vy - sy * vx, 0.0), (0.0, 0.0, st.angular_velocity[2]))
-        return st.pose, twist
+        twist = Twist((cy * vx + sy * vy, cy * vy - sy * vx, 0.0), (0.0, 0.0, angular[2]))
+        return pose, twist
 
-    def _integrate_encoders(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        """Siegwart 2011, as the classic plugin's encoder odometry (pair 0 only)."""
+    def _integrate_encoders(self, sim_time_sec: float) -> None:
+        """Siegwart 2011, as the classic plugin's encoder odometry (pair 0 only): the wheels' travel
+        since the last update, once per update as the classic plugin does it."""
         if len(self._wheels) < 2:
             return
-        addrs = self._addr.get(world)
         right, left = self._wheels[0], self._wheels[1]
-        wr = float(world.data.qvel[addrs[right.joint][1]])
-        wl = float(world.data.qvel[addrs[left.joint][1]])
-        dt = info.dt_sec
-        sr, sl = wr * right.radius * dt, wl * left.radius * dt
+        qr, ql = right.servo.actuator.joint.position, left.servo.actuator.joint.position
+        last, self._enc_last = self._enc_last, (sim_time_sec, qr, ql)
+        if last is None:
+            return
+        t0, qr0, ql0 = last
+        dt = sim_time_sec - t0
+        sr, sl = (qr - qr0) * right.radius, (ql - ql0) * left.radius
         b = right.separation
         x, y, th = self._enc_pose
         ssum, sdiff = sl + sr, sr - sl
@@ -512,14 +433,10 @@ class DiffDrive(System):
         self._enc_pose = (x + dx, y + dy, th + dth)
         self._enc_twist = (math.hypot(dx, dy) / dt if dt > 0 else 0.0, dth / dt if dt > 0 else 0.0)
 
-    def _wheel_transforms(self, stamp: float, world: "PhysicsWorld") -> list[Transform]:
+    def _wheel_transforms(self, stamp: float, world: PhysicsWorld) -> list[Transform]:
         out: list[Transform] = []
-        model = world.entities[self._entity].model
-        for w in self._wheels:
-            j = model.joint(w.joint)
-            X_WP = world.entity_state(self._entity, j.parent).pose
-            X_WC = world.entity_state(self._entity, j.child).pose
-            out.append(Transform(stamp, self.prefix + j.parent, self.prefix + j.child, X_WP.inverse() * X_WC))
+        for parent, child, parent_frame, child_frame in self._wheel_links:
+            out.append(Transform(stamp, parent_frame, child_frame, parent.pose.inverse() * child.pose))
         return out
 
 

@@ -24,16 +24,14 @@ import logging
 import math
 from collections import deque
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
-from ..description import ConfigElement, Pose
-from ..description._model import quat_from_rpy
-from ._base import PerGeneration, RateGate, System, all_texts, SystemContext, UpdateInfo, child_text, parse_float
+from ..description import ConfigElement, Pose, quat_from_rpy
+from ..physics import PhysicsWorld
+from ._actuation import VelocityServo, add_wheel_servo
+from ._base import RateGate, System, SystemContext, UpdateInfo, all_texts, child_text, parse_float
 from ._bus import Endpoint, MsgType, Odometry, Transform, TransformBatch, Twist, resolve_topic
-from .diff_drive import joints_listing, wheel_direction_hint, add_wheel_servo, drive_wheel
+from .diff_drive import joints_listing, wheel_direction_hint
 
-if TYPE_CHECKING:  # pragma: no cover
-    from ..physics._world import PhysicsWorld
 
 _INF = math.inf
 
@@ -208,8 +206,8 @@ class GzDiffDrive(System):
         self.config = GzDiffDriveConfig()
         self.log = logging.getLogger("DiffDrive")
         self._cmd = Twist()
-        self._wheels: list[tuple[str, str, int, float]] = []  # joint, actuator, side (+1 right), integral limit
-        self._integral: list[float] = []
+        self._wheels: list[tuple[VelocityServo, int]] = []
+        """(servo, side): +1 right, -1 left."""
         self._last0 = (0.0, 0.0)
         self._last1 = (0.0, 0.0)
         self._odom: DiffDriveOdometry | None = None
@@ -220,7 +218,6 @@ class GzDiffDrive(System):
         self.frame_id = ""
         self.child_frame_id = ""
         self.cmd_topic = ""
-        self._addr = PerGeneration(self._addresses)
         self._ok = False
 
     def configure(self, ctx: SystemContext) -> None:
@@ -246,9 +243,7 @@ class GzDiffDrive(System):
         for side, names in ((1, c.right_joints), (-1, c.left_joints)):
             for jn in names:
                 limit = joints[jn].axis.limit.effort if joints[jn].axis is not None else None
-                act, ilimit = add_wheel_servo(ctx, jn, limit if limit is not None else _INF)
-                self._wheels.append((jn, act, side, ilimit))
-                self._integral.append(0.0)
+                self._wheels.append((add_wheel_servo(ctx.world, entity, jn, limit if limit is not None else _INF), side))
         self._odom = DiffDriveOdometry(c.wheel_separation, c.wheel_radius, c.wheel_radius)
         self._limit_lin = SpeedLimiter(c.linear)
         self._limit_ang = SpeedLimiter(c.angular)
@@ -282,46 +277,44 @@ class GzDiffDrive(System):
         """The (linear, angular) command after the limiters, as sent to the wheels this step."""
         return self._last0
 
-    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         self._cmd = Twist()
         self._last0 = self._last1 = (0.0, 0.0)
-        self._integral = [0.0] * len(self._integral)
+        for servo, _ in self._wheels:
+            servo.reset()
         self._odom_gate.reset()
         if self._odom is not None:
             self._odom.reset()
 
-    def _addresses(self, world: "PhysicsWorld") -> list[tuple[int, int, int]]:
-        """(qpos address, dof address, actuator id) of each wheel."""
-        return [(*world.joint_address(self._entity, jn), world.actuator_id(act)) for jn, act, _, _ in self._wheels]
-
-    def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def pre_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         if not self._ok or info.paused:
             return
         c = self.config
         lin = self._limit_lin.limit(self._cmd.linear[0], self._last0[0], self._last1[0], info.dt_sec)
         ang = self._limit_ang.limit(self._cmd.angular[2], self._last0[1], self._last1[1], info.dt_sec)
         self._last1, self._last0 = self._last0, (lin, ang)
-        for i, ((_, _, side, ilimit), (_, dadr, aid)) in enumerate(zip(self._wheels, self._addr.get(world))):
-            target = (lin + side * ang * c.wheel_separation / 2.0) / c.wheel_radius
-            self._integral[i] = drive_wheel(world, dadr, aid, target, self._integral[i], ilimit, info.dt_sec)
+        for servo, side in self._wheels:
+            servo.update((lin + side * ang * c.wheel_separation / 2.0) / c.wheel_radius, info.sim_time_sec)
 
-    def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         if not self._ok or info.paused or self._odom is None:
             return
-        addrs = self._addr.get(world)
-        qpos = world.data.qpos
-        right = next(i for i, w in enumerate(self._wheels) if w[2] == 1)
-        left = next(i for i, w in enumerate(self._wheels) if w[2] == -1)
-        self._odom.update(float(qpos[addrs[left][0]]), float(qpos[addrs[right][0]]), info.sim_time_sec)
+        right = next(servo for servo, side in self._wheels if side == 1)
+        left = next(servo for servo, side in self._wheels if side == -1)
+        self._odom.update(left.actuator.joint.position, right.actuator.joint.position, info.sim_time_sec)
         if not self._odom_gate.due(info.sim_time_sec, self.config.odom_publish_frequency):
             return
+        tf_pubs = [pub for pub in self._tf_pubs if pub.wanted]
+        odom_pub = self._odom_pub if self._odom_pub is not None and self._odom_pub.wanted else None
+        if odom_pub is None and not tf_pubs:
+            return  # nobody listens: nothing to build
         o = self._odom
         pose = Pose((o.x, o.y, 0.0), quat_from_rpy(0.0, 0.0, o.heading))
         stamp = info.sim_time_sec
-        if self._odom_pub is not None:
-            self._odom_pub.publish(
+        if odom_pub is not None:
+            odom_pub.publish(
                 Odometry(stamp, self.frame_id, self.child_frame_id, pose, Twist((o.linear, 0.0, 0.0), (0.0, 0.0, o.angular)))
             )
         batch = TransformBatch((Transform(stamp, self.frame_id, self.child_frame_id, pose),))
-        for pub in self._tf_pubs:
+        for pub in tf_pubs:
             pub.publish(batch)

@@ -7,11 +7,11 @@ stiff part of each loop is integrated implicitly:
 * position (PID): a MuJoCo position servo with ``kp = p_gain``, ``kv = d_gain`` plus the
   integral term (``i_gain``, clamped to ``[i_min, i_max]``) added as a force offset; the
   force is clamped to ``[cmd_min, cmd_max]`` and to the joint's ``<limit><effort>``;
-* velocity: the wheel velocity servo of :mod:`.diff_drive` (``kv = I/dt`` plus an integral
+* velocity: the wheels' velocity servo (:mod:`._actuation`: ``kv = I/dt`` plus an integral
   term), as gz-sim's joint velocity command; with ``use_force_commands`` a PI velocity loop
   with ``kv = p_gain`` instead.
 
-Commands arrive on a bridge thread and are applied at the next step's ``pre_update``.
+Commands arrive on a bridge thread and are applied at the next update (:data:`CONTROL_RATE_HZ`).
 """
 
 from __future__ import annotations
@@ -19,32 +19,18 @@ from __future__ import annotations
 import logging
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
-
-import mujoco
 
 from ..description import ConfigElement, JointType
-from ..physics._builder import scoped
-from ._base import PerGeneration, all_texts, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
+from ..physics import PhysicsWorld
+from ._actuation import PidGains, PositionServo, VelocityServo, add_position_servo, add_velocity_servo
+from ._base import RateGate, System, SystemContext, UpdateInfo, all_texts, child_text, parse_bool, parse_float, ros_block
 from ._bus import Float64, MsgType, resolve_topic
-from .diff_drive import INTEGRAL_TIME_SEC, UNLIMITED_INTEGRAL, servo_gain, wheel_inertia_about_axis
-
-if TYPE_CHECKING:  # pragma: no cover
-    from ..physics._world import PhysicsWorld
 
 _MOVABLE = (JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC)
 
-
-def _effort_limit(ctx: SystemContext, joint: str) -> float:
-    j = ctx.entity.model.joint(joint)
-    eff = j.axis.limit.effort if j.axis is not None else None
-    return eff if eff is not None and eff > 0 else math.inf
-
-
-def _force_range(act: mujoco.MjsActuator, lo: float, hi: float) -> None:
-    if math.isfinite(lo) or math.isfinite(hi):
-        act.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
-        act.forcerange = [max(lo, -1e30), min(hi, 1e30)]
+CONTROL_RATE_HZ = 100.0
+"""How often (sim time) the controllers take new commands and update their servos' integral terms;
+between updates the servos run inside MuJoCo. (``use_velocity_commands`` runs every step.)"""
 
 
 def _check_joint(ctx: SystemContext, joint: str, log: logging.Logger) -> bool:
@@ -59,101 +45,90 @@ def _check_joint(ctx: SystemContext, joint: str, log: logging.Logger) -> bool:
     return True
 
 
-class _Servo:
-    """One joint driven by one MuJoCo actuator; ``command`` is thread-safe (one float assignment)."""
+class _Command:
+    """One joint's command: a target set from any thread (one float assignment), applied by its servo."""
 
-    def __init__(self, entity: str, joint: str, actuator: str, target: float) -> None:
-        self.entity, self.joint, self.actuator = entity, joint, actuator
+    every_step = False
+    """Whether the control law needs Python every physics step."""
+
+    def __init__(self, joint: str, servo: PositionServo | VelocityServo, target: float) -> None:
+        self.joint = joint
+        self.servo = servo
         self.target = target
         self.initial = target
-        self.integral = 0.0
-        self._addr = PerGeneration(lambda w: (*w.joint_address(self.entity, self.joint), w.actuator_id(self.actuator)))
 
     def command(self, value: float) -> None:
+        """Set the target (rad, m, rad/s or m/s by the servo's kind); non-finite values are ignored."""
         if math.isfinite(value):
             self.target = value
 
     def on_msg(self, msg: Float64) -> None:
         self.command(msg.data)
 
-    def addresses(self, world: "PhysicsWorld") -> tuple[int, int, int]:
-        """(qpos address, dof address, actuator id)."""
-        return self._addr.get(world)
+    def update(self, sim_time_sec: float, dt_sec: float) -> None:
+        self.servo.update(self.target, sim_time_sec)
 
     def reset(self) -> None:
         self.target = self.initial
-        self.integral = 0.0
+        self.servo.reset()
 
 
-class _PositionServo(_Servo):
-    """PID on position: MuJoCo position actuator (kp, kv) plus the integral force."""
+class _StepVelocityToPosition(_Command):
+    """gz-sim ``use_velocity_commands``: a velocity servo commanded with (target − q)/dt, clamped, every step."""
 
-    def __init__(self, ctx: SystemContext, joint: str, gains: "PidGains", target: float) -> None:
-        self.gains = g = gains
-        name = scoped(ctx.entity.name, f"{joint}#pos")
-        act = ctx.world.spec.add_actuator(name=name, target=scoped(ctx.entity.name, joint), trntype=mujoco.mjtTrn.mjTRN_JOINT)
-        act.set_to_position(kp=max(g.p_gain, 1e-9), kv=max(g.d_gain, 0.0))
-        eff = _effort_limit(ctx, joint)
-        _force_range(act, max(g.cmd_min, -eff), min(g.cmd_max, eff))
-        super().__init__(ctx.entity.name, joint, name, target)
+    every_step = True
 
-    def step(self, world: "PhysicsWorld", dt: float) -> None:
-        qadr, _, aid = self.addresses(world)
-        g = self.gains
-        err = self.target - float(world.data.qpos[qadr])
-        self.integral = min(max(self.integral + g.i_gain * err * dt, g.i_min), g.i_max)
-        # force = kp (ctrl - q) - kv qdot, so the integral force shifts ctrl by integral/kp
-        kp = max(g.p_gain, 1e-9)
-        world.data.ctrl[aid] = self.target + (g.cmd_offset + self.integral) / kp
-
-
-class _VelocityServo(_Servo):
-    """Velocity loop: servo kv (I/dt, or p_gain) plus an integral term as a velocity offset."""
-
-    def __init__(self, ctx: SystemContext, joint: str, target: float, *, kv: float | None = None, force_limit: float = math.inf) -> None:
-        model, world = ctx.entity.model, ctx.world
-        arm = world.armature
-        if kv is None:
-            kv = servo_gain(wheel_inertia_about_axis(model, joint, arm), world.timestep)
-        limit = min(force_limit, _effort_limit(ctx, joint))
-        act = world.add_velocity_actuator(ctx.entity, joint, kv=kv, force_limit=limit if math.isfinite(limit) else None)
-        self.integral_limit = limit / kv if math.isfinite(limit) else UNLIMITED_INTEGRAL
-        super().__init__(ctx.entity.name, joint, act, target)
-
-    def step(self, world: "PhysicsWorld", dt: float) -> None:
-        _, dadr, aid = self.addresses(world)
-        speed = float(world.data.qvel[dadr])
-        self.integral += (self.target - speed) * dt / INTEGRAL_TIME_SEC
-        self.integral = max(-self.integral_limit, min(self.integral_limit, self.integral))
-        world.data.ctrl[aid] = self.target + self.integral
-
-
-class _StepVelocityToPosition(_Servo):
-    """gz-sim ``use_velocity_commands``: a velocity servo commanded with (target - q)/dt, clamped."""
-
-    def __init__(self, ctx: SystemContext, joint: str, target: float, max_speed: float) -> None:
-        self.vel = _VelocityServo(ctx, joint, 0.0)
+    def __init__(self, joint: str, servo: VelocityServo, target: float, max_speed: float) -> None:
+        super().__init__(joint, servo, target)
+        self.vel = servo
         self.max_speed = max_speed
-        super().__init__(ctx.entity.name, joint, self.vel.actuator, target)
 
-    def step(self, world: "PhysicsWorld", dt: float) -> None:
-        qadr, _, _ = self.addresses(world)
-        v = (self.target - float(world.data.qpos[qadr])) / dt
-        self.vel.target = max(-self.max_speed, min(self.max_speed, v))
-        self.vel.step(world, dt)
+    def update(self, sim_time_sec: float, dt_sec: float) -> None:
+        v = (self.target - self.vel.actuator.joint.position) / dt_sec
+        self.vel.update(max(-self.max_speed, min(self.max_speed, v)), sim_time_sec)
 
-    def reset(self) -> None:
-        super().reset()
-        self.vel.reset()
+
+class _Controlled(System):
+    """Joints following commands: they update at :data:`CONTROL_RATE_HZ` (every step if one needs it)."""
+
+    def __init__(self) -> None:
+        self._commands: list[_Command] = []
+        self._gate = RateGate()
+
+    def next_update(self, sim_time_sec: float) -> float:
+        if not self._commands:
+            return math.inf
+        if any(c.every_step for c in self._commands):
+            return sim_time_sec
+        return self._gate.next
+
+    def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        self._gate.reset()
+        for c in self._commands:
+            c.reset()
+
+    def pre_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        if info.paused or not self._commands:
+            return
+        every_step = any(c.every_step for c in self._commands)
+        if not self._gate.due(info.sim_time_sec, 0.0 if every_step else CONTROL_RATE_HZ):
+            return
+        for c in self._commands:
+            c.update(info.sim_time_sec, info.dt_sec)
 
 
 # --------------------------------------------------------------------------- gz-sim
-class _ServoGroup(System):
+class _ServoGroup(_Controlled):
     """Systems whose joints all follow one Float64 command (position or velocity, by servo kind)."""
 
     def __init__(self) -> None:
-        self.servos: list[_Servo] = []
+        super().__init__()
         self.topic = ""
+
+    @property
+    def servos(self) -> list[_Command]:
+        """The joints' commands, in ``<joint_name>`` order."""
+        return self._commands
 
     @staticmethod
     def _joints(ctx: SystemContext, names: tuple[str, ...], system: str) -> list[str]:
@@ -171,34 +146,12 @@ class _ServoGroup(System):
         ctx.logger.info(f"{system} subscribing to Double messages on [{self.topic}]")
 
     def _on_msg(self, msg: Float64) -> None:
-        for s in self.servos:
-            s.command(msg.data)
+        for c in self._commands:
+            c.command(msg.data)
 
     def command(self, value: float) -> None:
         """Set the target directly, as a message on the command topic would."""
         self._on_msg(Float64(value))
-
-    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        for s in self.servos:
-            s.reset()
-
-    def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        if info.paused:
-            return
-        for s in self.servos:
-            s.step(world, info.dt_sec)
-
-
-@dataclass(frozen=True)
-class PidGains:
-    p_gain: float = 1.0
-    i_gain: float = 0.1
-    d_gain: float = 0.01
-    i_max: float = 1.0
-    i_min: float = -1.0
-    cmd_max: float = 1000.0
-    cmd_min: float = -1000.0
-    cmd_offset: float = 0.0
 
 
 def _pid(cfg: ConfigElement | None, log: logging.Logger, defaults: PidGains) -> PidGains:
@@ -270,9 +223,10 @@ class JointPositionController(_ServoGroup):
             if c.use_velocity_commands:
                 j = ctx.entity.model.joint(jn)
                 vmax = j.axis.limit.velocity if j.axis is not None and j.axis.limit.velocity else math.inf
-                self.servos.append(_StepVelocityToPosition(ctx, jn, c.initial_position, vmax if vmax > 0 else math.inf))
+                vel = add_velocity_servo(ctx.world, ctx.entity, jn)
+                self._commands.append(_StepVelocityToPosition(jn, vel, c.initial_position, vmax if vmax > 0 else math.inf))
             else:
-                self.servos.append(_PositionServo(ctx, jn, g, c.initial_position))
+                self._commands.append(_Command(jn, add_position_servo(ctx.world, ctx.entity, jn, g), c.initial_position))
         self._subscribe(ctx, "JointPositionController", c.topic, c.sub_topic, f"joint/{joints[0]}/{c.joint_index}/cmd_pos")
 
 
@@ -330,10 +284,11 @@ class JointController(_ServoGroup):
             return
         for jn in joints:
             if c.use_force_commands:
-                servo = _VelocityServo(ctx, jn, c.initial_velocity, kv=max(c.p_gain, 1e-9), force_limit=max(abs(c.cmd_min), abs(c.cmd_max)))
+                limit = max(abs(c.cmd_min), abs(c.cmd_max))
+                servo = add_velocity_servo(ctx.world, ctx.entity, jn, kv=max(c.p_gain, 1e-9), force_limit=limit)
             else:
-                servo = _VelocityServo(ctx, jn, c.initial_velocity)
-            self.servos.append(servo)
+                servo = add_velocity_servo(ctx.world, ctx.entity, jn)
+            self._commands.append(_Command(jn, servo, c.initial_velocity))
         self._subscribe(ctx, "JointController", c.topic, c.sub_topic, f"joint/{joints[0]}/cmd_vel")
 
 
@@ -367,13 +322,16 @@ class JointCommandsConfig:
     remappings: tuple[tuple[str, str], ...] = ()
 
 
-class JointCommands(System):
+class JointCommands(_Controlled):
     """Classic-style position or velocity command topics, one per joint, effort-limited by ``<limit><effort>``."""
 
     def __init__(self) -> None:
+        super().__init__()
         self.config = JointCommandsConfig()
-        self.servos: dict[str, _Servo] = {}
+        self.servos: dict[str, _Command] = {}
+        """Joint name -> its command."""
         self.topics: dict[str, str] = {}
+        """Joint name -> its command topic."""
 
     def configure(self, ctx: SystemContext) -> None:
         log = ctx.logger
@@ -394,28 +352,19 @@ class JointCommands(System):
         for jn in names:
             if not _check_joint(ctx, jn, log):
                 continue
+            servo: PositionServo | VelocityServo
             if mode == "position":
-                q0 = 0.0
-                servo: _Servo = _PositionServo(ctx, jn, g, q0)
-                suffix = "cmd_pos"
+                servo, suffix = add_position_servo(ctx.world, ctx.entity, jn, g), "cmd_pos"
             else:
-                servo = _VelocityServo(ctx, jn, 0.0)
-                suffix = "cmd_vel"
+                servo, suffix = add_velocity_servo(ctx.world, ctx.entity, jn), "cmd_vel"
+            cmd = _Command(jn, servo, 0.0)
             topic = resolve_topic(f"{jn}/{suffix}", c.namespace, dict(c.remappings))
-            ctx.bus.subscribe(ctx.entity.name, topic, MsgType.FLOAT64, servo.on_msg, depth=10)
-            self.servos[jn] = servo
+            ctx.bus.subscribe(ctx.entity.name, topic, MsgType.FLOAT64, cmd.on_msg, depth=10)
+            self._commands.append(cmd)
+            self.servos[jn] = cmd
             self.topics[jn] = topic
             log.info(f"Joint [{jn}] {mode} commands on [{topic}]")
 
     def command(self, joint: str, value: float) -> None:
+        """Set one joint's target directly, as a message on its topic would."""
         self.servos[joint].command(value)
-
-    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        for s in self.servos.values():
-            s.reset()
-
-    def pre_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
-        if info.paused:
-            return
-        for s in self.servos.values():
-            s.step(world, info.dt_sec)

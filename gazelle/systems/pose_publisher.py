@@ -15,18 +15,17 @@ exactly: the pose is ``X_WF⁻¹·X_WB`` and the twist is ``R_WF⁻¹·(v_B − 
 from __future__ import annotations
 
 import logging
+import math
 import random
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 from ..description import ConfigElement, Pose
-from ..description._model import quat_conj, quat_from_rpy, quat_mul, quat_rotate
+from ..description import quat_conj, quat_from_rpy, quat_mul, quat_rotate
 from ._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_float, ros_block
 from ..physics import WORLD_FRAMES
 from ._bus import Endpoint, MsgType, Odometry, Twist, resolve_topic
 
-if TYPE_CHECKING:  # pragma: no cover
-    from ..physics._world import PhysicsWorld
+from ..physics import PhysicsWorld
 
 ROS1_NAMES = {
     "bodyName": "body_name",
@@ -146,10 +145,13 @@ class P3D(System):
         self._offset = Pose(c.xyz_offsets, quat_from_rpy(*c.rpy_offsets))
         log.info(f"p3d: ground truth of [{self.child_frame_id}] in [{self.frame_id}] on [{self.topic}]")
 
-    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def next_update(self, sim_time_sec: float) -> float:
+        return self._gate.next if self._pub is not None else math.inf
+
+    def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         self._gate.reset()
 
-    def measure(self, world: "PhysicsWorld") -> tuple[Pose, Twist]:
+    def measure(self, world: PhysicsWorld) -> tuple[Pose, Twist]:
         """Noise-free pose and twist of the body in the frame, with the offsets applied."""
         body = world.entity_state(self._entity, self.config.body_name)
         pose, lin, ang = body.pose, body.linear_velocity, body.angular_velocity
@@ -166,9 +168,11 @@ class P3D(System):
         )
         return pose, Twist(tuple(lin), tuple(ang))  # type: ignore[arg-type]
 
-    def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.config.update_rate):
             return
+        if not self._pub.wanted:
+            return  # nobody listens: nothing to build
         pose, twist = self.measure(world)
         gn = self.config.gaussian_noise
         if gn > 0:

@@ -11,17 +11,14 @@ get the namespace as prefix (``r1/base_link``) unless ``frame_prefix`` says othe
 from __future__ import annotations
 
 import logging
+import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
-
-import mujoco
 
 from ..description import JointType, Model, Plugin
-from ._base import RateGate, PerGeneration, all_texts, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
+from ..physics import BodyHandle, Entity, JointHandle, PhysicsWorld
+from ._base import RateGate, System, SystemContext, UpdateInfo, all_texts, child_text, parse_bool, parse_float, ros_block
 from ._bus import Endpoint, JointStates, MsgType, Qos, Text, Transform, TransformBatch, resolve_topic
 
-if TYPE_CHECKING:  # pragma: no cover
-    from ..physics._world import Entity, PhysicsWorld
 
 RSP_PLUGIN = "gazelle_robot_state_publisher"
 """File name of the built-in robot_state_publisher, to configure or disable it in a model file."""
@@ -47,7 +44,7 @@ class RobotStateConfig:
     """``<ros><namespace>``; default: the entity's namespace."""
 
 
-def robot_state_config(entity: "Entity", log: logging.Logger) -> tuple[RobotStateConfig, Plugin | None]:
+def robot_state_config(entity: Entity, log: logging.Logger) -> tuple[RobotStateConfig, Plugin | None]:
     """The configuration from the model's own ``gazelle_robot_state_publisher`` plugin block, if any."""
     plugin = next((p for p in entity.model.plugins if p.filename == RSP_PLUGIN), None)
     if plugin is None:
@@ -81,7 +78,7 @@ def gz_scoped_frames(model: Model) -> bool:
     return False
 
 
-def entity_frame_prefix(entity: "Entity", log: logging.Logger) -> str:
+def entity_frame_prefix(entity: Entity, log: logging.Logger) -> str:
     """The prefix of every TF frame of an entity: its RSP ``frame_prefix``, else ``<namespace>/``."""
     config, _ = robot_state_config(entity, log)
     return config.frame_prefix if config.frame_prefix is not None else default_frame_prefix(config.namespace)
@@ -89,8 +86,8 @@ def entity_frame_prefix(entity: "Entity", log: logging.Logger) -> str:
 
 @dataclass
 class _MovingJoint:
-    parent_body: str
-    child_body: str
+    parent: BodyHandle
+    child: BodyHandle
     parent_frame: str
     child_frame: str
 
@@ -104,7 +101,6 @@ class RobotStatePublisher(System):
         self._moving: list[_MovingJoint] = []
         self._tf: Endpoint | None = None
         self._gate = RateGate()
-        self._ids = PerGeneration(self._body_ids)
 
     def configure(self, ctx: SystemContext) -> None:
         c = self.config
@@ -123,11 +119,7 @@ class RobotStatePublisher(System):
             if j.type in (JointType.FIXED, JointType.PLANAR):  # RSP: planar becomes fixed (KDL)
                 statics.append(Transform(0.0, parent, child, j.origin * j.child_offset))
             else:
-                self._moving.append(
-                    _MovingJoint(
-                        ctx.entity.built.bodies[j.parent], ctx.entity.built.bodies[j.child], parent, child
-                    )
-                )
+                self._moving.append(_MovingJoint(ctx.world.body(owner, j.parent), ctx.world.body(owner, j.child), parent, child))
         if model.urdf:
             desc = ctx.bus.advertise(
                 owner, resolve_topic("robot_description", c.namespace), MsgType.STRING, qos=Qos.LATCHED, depth=1
@@ -143,20 +135,20 @@ class RobotStatePublisher(System):
             f"frame prefix '{self.prefix}'"
         )
 
-    def _body_ids(self, world: "PhysicsWorld") -> list[tuple[int, int]]:
-        """(parent body id, child body id) of each moving joint."""
-        name2id = lambda n: mujoco.mj_name2id(world.model, mujoco.mjtObj.mjOBJ_BODY, n)  # noqa: E731
-        return [(name2id(m.parent_body), name2id(m.child_body)) for m in self._moving]
+    def next_update(self, sim_time_sec: float) -> float:
+        return self._gate.next if self._tf is not None else math.inf
 
-    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         self._gate.reset()
 
-    def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         if self._tf is None or info.paused or not self._gate.due(info.sim_time_sec, self.config.publish_frequency):
             return
+        if not self._tf.wanted:
+            return  # nobody listens: nothing to build
         out = []
-        for m, (pid, cid) in zip(self._moving, self._ids.get(world)):
-            X_WP, X_WC = world.body_pose(pid), world.body_pose(cid)
+        for m in self._moving:
+            X_WP, X_WC = m.parent.pose, m.child.pose
             out.append(Transform(info.sim_time_sec, m.parent_frame, m.child_frame, X_WP.inverse() * X_WC))
         self._tf.publish(TransformBatch(tuple(out)))
 
@@ -184,7 +176,7 @@ class JointStatePublisher(System):
         self._pub: Endpoint | None = None
         self._joints: list[str] = []
         self._gate = RateGate()
-        self._addr = PerGeneration(lambda w: [w.joint_address(self._entity, jn) for jn in self._joints])
+        self._handles: list[JointHandle] = []
 
     def configure(self, ctx: SystemContext) -> None:
         log = ctx.logger
@@ -215,20 +207,24 @@ class JointStatePublisher(System):
             ctx.entity.name, resolve_topic(topic, self.config.namespace, remaps), MsgType.JOINT_STATE, depth=1000
         )
         self._entity = ctx.entity.name
+        self._handles = [ctx.world.joint(self._entity, jn) for jn in self._joints]
 
-    def reset(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def next_update(self, sim_time_sec: float) -> float:
+        return self._gate.next if self._pub is not None else math.inf
+
+    def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         self._gate.reset()
 
-    def post_update(self, info: UpdateInfo, world: "PhysicsWorld") -> None:
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.config.update_rate):
             return
-        addrs = self._addr.get(world)
-        qpos, qvel = world.data.qpos, world.data.qvel
+        if not self._pub.wanted:
+            return  # nobody listens: nothing to build
         self._pub.publish(
             JointStates(
                 info.sim_time_sec,
                 tuple(self._joints),
-                tuple(float(qpos[a]) for a, _ in addrs),
-                tuple(float(qvel[d]) for _, d in addrs),
+                tuple(j.position for j in self._handles),
+                tuple(j.velocity for j in self._handles),
             )
         )

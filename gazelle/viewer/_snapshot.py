@@ -14,12 +14,12 @@ from ._browser import BrowserUnavailable, screenshot
 
 if TYPE_CHECKING:
     from ..description import World
-    from ..physics import Simulation
+    from ..sim import Simulation
 
 
 def snapshot_world(world: "World", out: Path, *, settle_sec: float = 1.0, panel: bool = True) -> Path:
     """Simulate ``world`` in this process for a moment, serve it, and write a PNG of the viewer."""
-    from ..physics import Simulation
+    from ..sim import Simulation
     from ._viewer import Viewer
 
     sim = Simulation(world, rtf=1.0)
@@ -236,7 +236,7 @@ def record_video(
 
 def drive_first_robot(sim: "Simulation", linear: float, angular: float) -> str | None:
     """Send one Twist to the first entity with a cmd_vel subscription (as the viewer's Drive buttons do)."""
-    from ..systems._bus import MsgType, Twist
+    from ..systems import MsgType, Twist
 
     eps = sorted(
         (ep for ep in sim.bus.endpoints() if not ep.is_publisher and ep.msg_type == MsgType.TWIST and ep.callback),
@@ -262,7 +262,7 @@ def run_record(
     panel: bool = True,
 ) -> int:
     """CLI body of ``gazelle record-video`` (the CLI has checked ``out``'s format): returns the exit code."""
-    from ..physics import Simulation
+    from ..sim import Simulation
     from ._viewer import Viewer
 
     sim = viewer = None

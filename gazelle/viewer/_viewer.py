@@ -48,14 +48,15 @@ import numpy as np
 import viser
 
 from ..description import Model, Pose, load
-from ..systems._base import PerGeneration
-from ..systems._bus import MsgType, Twist
+from ..physics import PerGeneration
+from ..systems import MsgType, Twist
 from ._geometry import rgba_to_rgb255, to_trimesh
 from ._models import ModelFile, find_models
 from ._origin import OriginPolicy, guarded
 
 if TYPE_CHECKING:
-    from ..physics import PhysicsWorld, Simulation
+    from ..physics import PhysicsWorld
+    from ..sim import Simulation
 
 _log = logging.getLogger("gazelle.viewer")
 # viser's websockets server logs every browser connect/close at INFO: noise in `gazelle sim`'s output

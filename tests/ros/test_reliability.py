@@ -98,7 +98,7 @@ def test_a_dead_ros_thread_is_reported_with_its_traceback(monkeypatch, caplog):
     """If the executor thread dies anyway, the bridge records why and the server loop sees it (never a deaf server)."""
     from rclpy.executors import MultiThreadedExecutor
 
-    from gazelle.physics import Simulation
+    from gazelle.sim import Simulation
     from gazelle.ros._bridge import RosBridge
     from gazelle.worlds import default_world
 

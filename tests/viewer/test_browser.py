@@ -320,7 +320,7 @@ def test_chessboard_world_renders_33_entities(page: Any, artifacts: Path) -> Non
     from PIL import Image
 
     from gazelle.description import Pose, load
-    from gazelle.physics import Simulation
+    from gazelle.sim import Simulation
     from gazelle.viewer import Viewer
     from gazelle.viewer._browser import wait_rendered
     from gazelle.worlds import default_world

@@ -122,7 +122,7 @@ def test_record_video_writes_an_animated_gif_of_the_robot_driving(tmp_path: Path
 @needs_browser
 def test_a_recording_stopped_early_is_a_valid_mp4(tmp_path: Path) -> None:
     from gazelle.cli._sim import load_world
-    from gazelle.physics import Simulation
+    from gazelle.sim import Simulation
     from gazelle.viewer import Viewer
     from gazelle.viewer._snapshot import record_video
 

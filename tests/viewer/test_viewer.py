@@ -67,7 +67,7 @@ def test_unresolved_or_broken_mesh_is_skipped(tmp_path) -> None:
 
 
 def test_scene_follows_spawn_and_delete_and_drive_reaches_the_diff_drive() -> None:
-    from gazelle.physics import Simulation
+    from gazelle.sim import Simulation
     from gazelle.viewer import Viewer
     from gazelle.worlds import default_world
 
@@ -119,7 +119,7 @@ def _click(handle) -> None:
 
 
 def test_clicking_an_entity_selects_it_but_not_the_ground_plane_or_collision_overlays() -> None:
-    from gazelle.physics import Simulation
+    from gazelle.sim import Simulation
     from gazelle.viewer import Viewer
     from gazelle.viewer._viewer import NO_SELECTION
     from gazelle.worlds import default_world
@@ -188,7 +188,7 @@ def test_find_models_lists_model_folders_and_description_files(tmp_path) -> None
 
 
 def test_trail_contacts_and_spawn_from_the_resource_paths(monkeypatch) -> None:
-    from gazelle.physics import Simulation
+    from gazelle.sim import Simulation
     from gazelle.viewer import Viewer
     from gazelle.worlds import default_world
 
@@ -240,7 +240,7 @@ def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_
 
     import xacro
 
-    from gazelle.physics import Simulation
+    from gazelle.sim import Simulation
     from gazelle.viewer import Viewer
     from gazelle.viewer._viewer import TRAIL_TRUTH
     from gazelle.worlds import default_world

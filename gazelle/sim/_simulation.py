@@ -1,5 +1,13 @@
 """The running simulation: a physics world, its systems, pacing to a real-time factor.
 
+This is the runtime layer: it owns the :class:`~gazelle.physics.PhysicsWorld`, creates the
+systems of every entity's plugins and runs their phases around the physics steps.
+
+Stepping: between two system updates the world steps inside MuJoCo. Before each block of
+steps the runtime asks the systems (and the step listeners, such as /clock) when they next
+need to run, and takes all the steps up to then in one ``mj_step(m, d, nstep)`` call. Python
+runs only when something is due.
+
 All access to the world goes through one thread. Other threads (ROS service
 callbacks, the viewer) hand work to it with :meth:`Simulation.call`, which runs
 a function between two physics steps and returns its result, so requests never
@@ -16,19 +24,36 @@ import threading
 import time
 from concurrent.futures import Future
 from concurrent.futures import TimeoutError as FutureTimeout
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Callable, TypeVar
 
-import mujoco
 import numpy as np
 
 from ..description import Model, Pose, World
-from ..systems._base import SystemContext, SystemManager, UpdateInfo
-from ..systems._bus import Bus
-from ..systems._registry import audit_model, audit_world, create_system
-from ..systems.robot_state import RSP_PLUGIN, RobotStatePublisher, robot_state_config
-from ._convex import prepare as prepare_meshes
-from ._world import Entity, ErrorKind, PhysicsOverload, PhysicsWorld, WorldError
+from ..physics import (
+    Entity,
+    ErrorKind,
+    PhysicsOverload,
+    PhysicsWorld,
+    StagedRequest,
+    WorldError,
+    build_failed,
+    prepare_meshes,
+)
+from ..systems import (
+    RSP_PLUGIN,
+    Bus,
+    RateGate,
+    RobotStatePublisher,
+    System,
+    SystemContext,
+    SystemManager,
+    UpdateInfo,
+    audit_model,
+    audit_world,
+    create_system,
+    robot_state_config,
+)
 
 T = TypeVar("T")
 
@@ -36,13 +61,15 @@ DIVERGENCE_REPORT_SEC = 10.0
 """After the first report of an entity's divergence, repeats are summarised at most this often."""
 MAX_CATCH_UP_SEC = 1.0
 """With a target RTF, a lag behind the wall clock up to this long is made up by running flat out."""
+MAX_BLOCK_SEC = 0.01
+"""The longest block of steps (sim time) taken without returning to Python, when nothing is due sooner."""
 _log = logging.getLogger("gazelle")
 
 
-def _shutdown_system(system: object) -> None:
+def _shutdown_system(system: System) -> None:
     """Shut down a system whose entity never made it into the world (its spawn failed)."""
     try:
-        system.shutdown()  # type: ignore[attr-defined]
+        system.shutdown()
     except Exception:  # noqa: BLE001 - the spawn already failed; say so and go on
         _log.exception(f"{type(system).__name__}.shutdown raised after a failed spawn")
 
@@ -69,8 +96,6 @@ class Simulation:
         if rtf is not None and (not math.isfinite(rtf) or rtf < 0):
             raise ValueError(f"`rtf` must be >= 0, got {rtf!r}")
         self.world = PhysicsWorld(world)
-        self.world.model.opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_AUTORESET)
-        self.world.spec.option.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_AUTORESET)
         self.systems = SystemManager()
         self.bus = bus or Bus()
         physics = world.physics
@@ -81,8 +106,8 @@ class Simulation:
         self.rtf = rtf
         self.paused = False
         self.iterations = 0
-        self.step_listeners: list[Callable[[UpdateInfo], None]] = []
-        """Called on the sim thread after every step (e.g. the /clock publisher)."""
+        self.step_listeners: list[StepListener] = []
+        """Called on the sim thread after the steps (e.g. the /clock publisher); see :meth:`add_step_listener`."""
         self.divergence_listeners: list[Callable[[str, str], None]] = []
         self._queue: queue.Queue[tuple[Callable[[], Any], Future]] = queue.Queue()
         self._thread: threading.Thread | None = None
@@ -92,12 +117,12 @@ class Simulation:
         self._rtf_window: list[tuple[float, float, int]] = []
         self.robot_state_publisher = robot_state_publisher
         """Give every spawned robot the built-in robot_state_publisher (a model file may still opt out)."""
+        self.max_block_steps = max(1, round(MAX_BLOCK_SEC / self.world.timestep))
+        """The most steps taken in one MuJoCo call: calls from other threads wait at most this long."""
         self.diverged: dict[str, str] = {}
         """Entity name -> what went wrong, for entities that blew up."""
         self._divergence_log: dict[str, tuple[int, float]] = {}
         """Entity name -> (divergences not yet reported, wall time of the last report)."""
-        self._state_views: tuple[Any, np.ndarray, np.ndarray] = (None, np.zeros(0), np.zeros(0))
-        """(MjData, its qpos, its qvel): array views kept for the divergence check before every step."""
         for problem in audit_world(World(name=world.name, plugins=world.plugins)):
             _log.warning(problem.format())
         for m in world.models:
@@ -183,7 +208,7 @@ class Simulation:
                     self._wait(0.01)
                     self._anchor = (time.monotonic(), self.world.time)
                     continue
-                self.step()
+                self._block(self.max_block_steps)
                 if self.rtf > 0:
                     wall_anchor, sim_anchor = self._anchor
                     target = wall_anchor + (self.world.time - sim_anchor) / self.rtf
@@ -200,47 +225,86 @@ class Simulation:
             raise
 
     # ------------------------------------------------------------------ stepping
-    def _info(self, paused: bool = False) -> UpdateInfo:
-        return UpdateInfo(
-            sim_time_sec=self.world.time,
-            real_time_sec=time.monotonic() - self._wall0,
-            dt_sec=self.world.timestep,
-            iterations=self.iterations,
-            paused=paused,
-        )
+    def add_step_listener(self, fn: Callable[[UpdateInfo], None], rate_hz: float = 0.0) -> StepListener:
+        """Call ``fn`` on the sim thread after the steps, at most ``rate_hz`` times per sim second
+        (every step when 0). A listener that raises is logged and removed. Thread-safe."""
+        listener = StepListener(fn, rate_hz)
+        self.call(lambda: self.step_listeners.append(listener))
+        return listener
+
+    def remove_step_listener(self, fn: Callable[[UpdateInfo], None]) -> None:
+        """Stop calling ``fn`` (thread-safe; unknown functions are ignored)."""
+
+        def do() -> None:
+            self.step_listeners[:] = [listener for listener in self.step_listeners if listener.fn != fn]
+
+        self.call(do)
+
+    def _info(self, paused: bool = False, dt: float | None = None) -> UpdateInfo:
+        w = self.world
+        return UpdateInfo(w.time, time.monotonic() - self._wall0, w.timestep if dt is None else dt, self.iterations, paused)
+
+    def _steps_until_due(self, limit: int) -> int:
+        """How many physics steps (1..``limit``) can run before a system or listener is due."""
+        t = self.world.time
+        due = self.systems.next_update(t)
+        for listener in self.step_listeners:
+            due = min(due, listener.gate.next if listener.rate_hz > 0 else t)
+        if due <= t:
+            return 1
+        dt = self.world.timestep
+        steps = (due - t) / dt - 1e-6  # the gates accept a time within 1e-9 s of their period
+        return max(1, min(limit, math.ceil(steps))) if math.isfinite(steps) else limit
 
     def step(self, n: int = 1) -> None:
-        """Take ``n`` physics steps with every system phase (call on the sim thread or when stopped)."""
+        """Take ``n`` physics steps with every system phase (call on the sim thread or when stopped).
+
+        The steps run in blocks: each block starts with the systems' ``pre_update`` and ends with
+        their ``post_update`` and the step listeners, and is as long as nothing is due in between.
+        """
+        while n > 0:
+            n -= self._block(n)
+
+    def _block(self, limit: int) -> int:
+        """One block of steps, at most ``limit``; returns how many steps were taken."""
         w = self.world
-        for _ in range(n):
-            self.systems.pre_update(self._info(), w)
-            # checked right before every step: MuJoCo's solver spreads one body's NaN to every
-            # body in one step, so a NaN set from outside (a service, a system) must be caught here
-            self._check_divergence()
+        self.systems.pre_update(self._info(), w)
+        # checked right before the steps: MuJoCo's solver spreads one body's NaN to every body in one
+        # step, so a NaN set from outside (a service, a system) must be caught here
+        self._check_divergence()
+        k = self._steps_until_due(min(limit, self.max_block_steps))
+        try:
+            w.step(k)
+        except PhysicsOverload as err:
+            # never a dead simulation thread: pause, say why once, and keep serving requests
+            self.paused = True
+            _log.error(f"simulation paused: {err}")
+            for listener in self.divergence_listeners:
+                listener("<world>", str(err))
+            return limit
+        self.iterations += k
+        info = self._info(dt=k * w.timestep)
+        self.systems.post_physics(info, w)
+        for listener in tuple(self.step_listeners):
+            if listener.rate_hz > 0 and not listener.gate.due(info.sim_time_sec, listener.rate_hz):
+                continue
             try:
-                w.step()
-            except PhysicsOverload as err:
-                # never a dead simulation thread: pause, say why once, and keep serving requests
-                self.paused = True
-                _log.error(f"simulation paused: {err}")
-                for listener in self.divergence_listeners:
-                    listener("<world>", str(err))
-                return
-            self.iterations += 1
-            info = self._info()
-            self.systems.post_physics(info, w)
-            for listener in tuple(self.step_listeners):
-                try:
-                    listener(info)
-                except Exception:  # noqa: BLE001 - an observer must not stop the world
-                    _log.exception(f"step listener {listener!r} raised; it is removed")
+                listener.fn(info)
+            except Exception:  # noqa: BLE001 - an observer must not stop the world
+                _log.exception(f"step listener {listener.fn!r} raised; it is removed")
+                if listener in self.step_listeners:
                     self.step_listeners.remove(listener)
-            self._record_rtf()
+        self._record_rtf()
+        return k
 
     def _record_rtf(self) -> None:
         now = time.monotonic()
         win = self._rtf_window
-        win.append((now, self.world.time, self.iterations))
+        sample = (now, self.world.time, self.iterations)
+        if len(win) > 2 and now - win[-2][0] < 0.01:
+            win[-1] = sample  # one sample per 10 ms of wall time is plenty for a 2 s window
+            return
+        win.append(sample)
         while len(win) > 2 and now - win[0][0] > 2.0:
             win.pop(0)
 
@@ -253,18 +317,10 @@ class Simulation:
         return RtfSample((win[-1][1] - win[0][1]) / dw, (win[-1][2] - win[0][2]) / dw)
 
     def _check_divergence(self) -> None:
-        d = self.world.data
-        cache = self._state_views
-        if cache[0] is not d:  # a recompile made a new MjData; `d.qpos` builds a new array object per access
-            cache = self._state_views = (d, d.qpos, d.qvel)
-        _, qpos, qvel = cache
-        # fast path (~0.6 µs): a NaN/inf makes these dot products non-finite (NaN < x is False),
-        # a |qvel| >= 1e4 makes the first >= 1e8
-        if qvel.dot(qvel) < 1e8 and math.isfinite(qpos.dot(qpos)):
+        diverged = self.world.recover_divergence()
+        if diverged is None:
             return
-        if np.all(np.isfinite(d.qpos)) and np.all(np.isfinite(d.qvel)) and np.all(np.abs(d.qvel) < 1e4):
-            return
-        for name in self.world.diverged_entities() or ["<world>"]:
+        for name in diverged:
             reason = f"simulation of '{name}' diverged at t={self.world.time:.3f}s (NaN or runaway velocity)"
             first = name not in self.diverged
             self.diverged[name] = reason
@@ -272,17 +328,6 @@ class Simulation:
             if first:
                 for listener in self.divergence_listeners:
                     listener(name, reason)
-            if name in self.world.entities:
-                e = self.world.entities[name]
-                bad = ~np.isfinite(d.qpos)
-                d.qpos[bad] = 0.0
-                d.qvel[~np.isfinite(d.qvel)] = 0.0
-                if e.built.free_joint:
-                    self.world.set_entity_state(name, self.world._spawn_root_pose(e))
-        d.qacc[:] = 0.0
-        d.qacc_warmstart[:] = 0.0
-        d.qvel[~np.isfinite(d.qvel)] = 0.0
-        mujoco.mj_forward(self.world.model, d)
 
     def _report_divergence(self, name: str, reason: str, first: bool) -> None:
         """Log a divergence once, then at most a summary every :data:`DIVERGENCE_REPORT_SEC` of wall time.
@@ -305,47 +350,62 @@ class Simulation:
         self._divergence_log[name] = (count, last)
 
     # ------------------------------------------------------------------ entities
-    def _configure_plugins(self, entity: Entity, into: list) -> None:
-        """Create and configure a system for each supported plugin of ``entity`` (before the recompile),
-        and the built-in robot_state_publisher for anything with joints or a URDF."""
-        for problem in audit_model(entity.model):  # unsupported plugins and sensors: named, never dropped silently
-            _log.warning(f"'{entity.name}': {problem.format()}")
-        for plugin in entity.model.plugins:
-            if plugin.filename == RSP_PLUGIN:
-                continue  # configures the built-in one below
-            system = create_system(plugin)
-            if system is None:
-                continue
-            logger = logging.getLogger(plugin.name or plugin.filename)
-            system.configure(SystemContext(self.world, entity, plugin, self.bus, logger))
-            into.append(system)
-        if self.robot_state_publisher and (entity.model.joints or entity.model.urdf):
-            logger = logging.getLogger(f"{entity.name}.robot_state_publisher")
-            config, plugin = robot_state_config(entity, logger)
-            if config.enabled:
-                rsp = RobotStatePublisher(config)
-                rsp.configure(SystemContext(self.world, entity, plugin, self.bus, logger))
-                into.append(rsp)
+    def _configure_plugins(self, entity: Entity) -> list[System]:
+        """Create and configure (while the entity is staged) a system for each supported plugin of
+        ``entity``, and the built-in robot_state_publisher for anything with joints or a URDF.
+
+        Raises whatever a plugin's ``configure`` raises, after shutting down the systems made so far.
+        """
+        made: list[System] = []
+        try:
+            for problem in audit_model(entity.model):  # unsupported plugins and sensors: named, never dropped silently
+                _log.warning(f"'{entity.name}': {problem.format()}")
+            for plugin in entity.model.plugins:
+                if plugin.filename == RSP_PLUGIN:
+                    continue  # configures the built-in one below
+                system = create_system(plugin)
+                if system is None:
+                    continue
+                logger = logging.getLogger(plugin.name or plugin.filename)
+                made.append(system)
+                system.configure(SystemContext(self.world, entity, plugin, self.bus, logger))
+            if self.robot_state_publisher and (entity.model.joints or entity.model.urdf):
+                logger = logging.getLogger(f"{entity.name}.robot_state_publisher")
+                config, plugin = robot_state_config(entity, logger)
+                if config.enabled:
+                    rsp = RobotStatePublisher(config)
+                    made.append(rsp)
+                    rsp.configure(SystemContext(self.world, entity, plugin, self.bus, logger))
+        except Exception:
+            self._undo_systems(entity.name, made)
+            raise
+        return made
+
+    def _undo_systems(self, name: str, systems: list[System]) -> None:
+        """Shut down the systems of an entity that never made it into the world, and drop its endpoints."""
+        for system in systems:
+            _shutdown_system(system)
+        self.bus.remove_owner(name)
+
+    def _attach(self, entity: Entity, systems: list[System]) -> None:
+        entity.systems.extend(systems)
+        for s in systems:
+            self.systems.add(entity.name, s)
 
     def _add_entity(self, model: Model, *, name: str, pose: Pose, namespace: str, spawned: bool) -> Entity:
-        pending: list = []
-
-        def configure(entity: Entity) -> None:
-            self._configure_plugins(entity, pending)
-
+        """Stage the model, configure its systems, commit: the one way an entity comes into the world."""
+        entity = self.world.stage(model, name=name, X_WM=pose * model.pose, namespace=namespace, spawned=spawned)
         try:
-            entity = self.world.add_entity(
-                model, name=name, X_WM=pose * model.pose, namespace=namespace, spawned=spawned, configure=configure
-            )
-        except WorldError as err:
-            if err.kind == ErrorKind.BUILD_FAILED:  # only then did this attempt configure systems
-                for system in pending:
-                    _shutdown_system(system)
-                self.bus.remove_owner(name)
+            systems = self._configure_plugins(entity)
+        except Exception as err:  # noqa: BLE001 - a plugin that cannot configure fails the spawn, not the world
+            self.world.discard(entity)
+            raise build_failed(name, err) from None
+        try:
+            self.world.commit([entity])
+        except WorldError:
+            self._undo_systems(name, systems)
             raise
-        entity.systems.extend(pending)
-        for s in pending:
-            self.systems.add(name, s)
+        self._attach(entity, systems)
         return entity
 
     def spawn(self, model: Model, *, name: str | None = None, pose: Pose = Pose(), namespace: str = "") -> Entity:
@@ -393,75 +453,91 @@ class Simulation:
             if time_:
                 self.world.reset_time()
                 self.iterations = 0
+                for listener in self.step_listeners:
+                    listener.gate.reset()
             self._anchor = (time.monotonic(), self.world.time)
             self.systems.reset(self._info(self.paused), self.world)
 
         self.call(do)
 
     # ------------------------------------------------------------------ batch spawning (simulation_interfaces)
-    def spawn_many(
-        self, requests: list[tuple[Model, str, Pose, str, bool]], timeout: float | None = 60.0
-    ) -> list[Entity | WorldError]:
+    def spawn_many(self, requests: list[SpawnRequest], timeout: float | None = 60.0) -> list[Entity | WorldError]:
         """Add several models in one sim-thread call with one recompile (thread-safe).
 
-        Each request is ``(model, name, pose, namespace, allow_renaming)``; an empty
-        name means the model's own. With ``allow_renaming`` a taken name becomes
-        ``name_1``, ``name_2``, ... Returns, per request, the new entity or the
-        :class:`WorldError` that refused it.
+        Returns, per request, the new entity or the :class:`WorldError` that refused it.
         """
         for request in requests:
-            prepare_meshes(request[0])
+            prepare_meshes(request.model)
         return self.call(lambda: self._spawn_many(requests), timeout=timeout)
 
-    def _spawn_many(self, requests: list[tuple[Model, str, Pose, str, bool]]) -> list[Entity | WorldError]:
+    def _spawn_many(self, requests: list[SpawnRequest]) -> list[Entity | WorldError]:
         taken = set(self.world.entities)
         names: list[str] = []
-        for model, name, _pose, _ns, rename in requests:
-            name = name or model.name
-            if rename and name in taken:
+        for r in requests:
+            name = r.name or r.model.name
+            if r.allow_renaming and name in taken:
                 i = 1
                 while f"{name}_{i}" in taken:
                     i += 1
                 name = f"{name}_{i}"
             taken.add(name)
             names.append(name)
-        pending: dict[str, list] = {}
-
-        def make_configure(name: str) -> Callable[[Entity], None]:
-            def configure(entity: Entity) -> None:
-                self._configure_plugins(entity, pending.setdefault(name, []))
-
-            return configure
-
-        items = [
-            (model, name, pose * model.pose, ns, True, make_configure(name))
-            for (model, _n, pose, ns, _r), name in zip(requests, names)
-        ]
+        staged = self.world.stage_many(
+            [StagedRequest(r.model, name, r.pose * r.model.pose, r.namespace) for r, name in zip(requests, names)]
+        )
+        out: list[Entity | WorldError] = []
+        ready: list[tuple[Entity, list[System]]] = []
+        for res, name in zip(staged, names):
+            if isinstance(res, WorldError):
+                out.append(res)
+                continue
+            try:
+                systems = self._configure_plugins(res)
+            except Exception as err:  # noqa: BLE001 - as in _add_entity
+                self.world.discard(res)
+                out.append(build_failed(name, err))
+                continue
+            ready.append((res, systems))
+            out.append(res)
         try:
-            out = self.world.add_entities(items)
+            self.world.commit([e for e, _ in ready])
         except WorldError:
             # the combined build failed: undo every configure, then add one at a time
-            for name, systems in pending.items():
-                for system in systems:
-                    _shutdown_system(system)
-                self.bus.remove_owner(name)
+            for e, systems in ready:
+                self._undo_systems(e.name, systems)
             out = []
-            for (model, _n, pose, ns, _r), name in zip(requests, names):
-                if name in self.world.entities:  # never touch an existing entity's endpoints
-                    out.append(WorldError(ErrorKind.NAME_NOT_UNIQUE, f"entity '{name}' already exists"))
+            for r, name, res in zip(requests, names, staged):
+                if isinstance(res, WorldError):
+                    out.append(res)
                     continue
                 try:
-                    out.append(self._add_entity(model, name=name, pose=pose, namespace=ns, spawned=True))
+                    out.append(self._add_entity(r.model, name=name, pose=r.pose, namespace=r.namespace, spawned=True))
                 except WorldError as err:
                     out.append(err)
             return out
-        for res, name in zip(out, names):
-            if isinstance(res, Entity):
-                res.systems.extend(pending.get(name, []))
-                for s in pending.get(name, []):
-                    self.systems.add(name, s)
-            elif name in pending:  # configured, then its build failed
-                for system in pending[name]:
-                    _shutdown_system(system)
-                self.bus.remove_owner(name)
+        for e, systems in ready:
+            self._attach(e, systems)
         return out
+
+
+@dataclass(frozen=True, slots=True)
+class SpawnRequest:
+    """One model to add with :meth:`Simulation.spawn_many`."""
+
+    model: Model
+    name: str = ""
+    """The entity's name; empty means the model's own."""
+    pose: Pose = Pose()
+    """Where the model frame goes (composed with the file's own pose)."""
+    namespace: str = ""
+    allow_renaming: bool = False
+    """A taken name becomes ``name_1``, ``name_2``, ... instead of failing."""
+
+
+@dataclass(eq=False)
+class StepListener:
+    """A function called after the steps, at most ``rate_hz`` times per second of sim time (0: every step)."""
+
+    fn: Callable[[UpdateInfo], None]
+    rate_hz: float = 0.0
+    gate: RateGate = field(default_factory=RateGate)

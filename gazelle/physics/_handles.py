@@ -1,0 +1,161 @@
+"""Typed handles on the compiled world: joints, actuators and bodies of one entity.
+
+Systems (plugins, controllers, sensors next, ros2_control's hardware interface) read and
+command the simulation through these and never through MuJoCo: a handle knows its
+entity and element by name, and resolves MuJoCo's indices again after every recompile
+(a spawn or a delete renumbers them), so it stays valid for the entity's lifetime.
+
+A handle is used on the simulation thread only, like the world it belongs to.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Callable, Generic, TypeVar
+
+from ..description import Pose
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ._world import PhysicsWorld
+
+T = TypeVar("T")
+
+
+class PerGeneration(Generic[T]):
+    """A value derived from the compiled model (MuJoCo ids, qpos/qvel addresses).
+
+    ``get(world)`` computes it once per ``world.generation``: every recompile (a spawn,
+    a delete) may renumber what it holds.
+    """
+
+    __slots__ = ("_compute", "_generation", "_value")
+
+    def __init__(self, compute: Callable[[PhysicsWorld], T]) -> None:
+        self._compute = compute
+        self._generation = -1
+        self._value: T | None = None
+
+    def get(self, world: PhysicsWorld) -> T:
+        """The value for the world's current model, computed at most once per recompile."""
+        if self._generation != world.generation:
+            self._value = self._compute(world)
+            self._generation = world.generation
+        return self._value  # type: ignore[return-value]
+
+
+class ActuatorKind(enum.Enum):
+    """What an actuator's command means, as ros2_control's command interfaces name them."""
+
+    POSITION = "position"
+    """Target position (rad or m): a PD servo with ``kp`` and ``kv``."""
+    VELOCITY = "velocity"
+    """Target velocity (rad/s or m/s): a damping servo with ``kv``, integrated implicitly."""
+    EFFORT = "effort"
+    """Force or torque (N·m or N), applied as given."""
+
+
+@dataclass(frozen=True, slots=True)
+class _JointIds:
+    qpos: int
+    dof: int
+
+
+class JointHandle:
+    """One 1-dof (hinge or slide) joint of an entity: its position, velocity and actuator effort.
+
+    Get one with :meth:`PhysicsWorld.joint`. ``position`` is in rad (hinge) or m (slide),
+    ``velocity`` in rad/s or m/s, ``effort`` is the force all actuators on the joint apply (N·m or N).
+    """
+
+    __slots__ = ("world", "entity", "name", "_ids")
+
+    def __init__(self, world: PhysicsWorld, entity: str, name: str) -> None:
+        self.world = world
+        self.entity = entity
+        """The entity's name."""
+        self.name = name
+        """The joint's name in the entity's description."""
+        self._ids = PerGeneration(self._resolve)
+
+    def _resolve(self, world: PhysicsWorld) -> _JointIds:
+        qadr, dadr = world.joint_address(self.entity, self.name)
+        return _JointIds(qadr, dadr)
+
+    @property
+    def position(self) -> float:
+        return float(self.world.data.qpos[self._ids.get(self.world).qpos])
+
+    @property
+    def velocity(self) -> float:
+        return float(self.world.data.qvel[self._ids.get(self.world).dof])
+
+    @property
+    def effort(self) -> float:
+        return float(self.world.data.qfrc_actuator[self._ids.get(self.world).dof])
+
+    def __repr__(self) -> str:
+        return f"JointHandle({self.entity!r}, {self.name!r})"
+
+
+class ActuatorHandle:
+    """One actuator on a joint, added by :meth:`PhysicsWorld.add_actuator`; ``command`` sets its input.
+
+    The command holds until the next one: the world steps with it, inside MuJoCo, for as many
+    steps as go by before the system that owns the actuator runs again.
+    """
+
+    __slots__ = ("joint", "kind", "name", "_id")
+
+    def __init__(self, joint: JointHandle, kind: ActuatorKind, name: str) -> None:
+        self.joint = joint
+        self.kind = kind
+        self.name = name
+        """The actuator's MuJoCo name (``<entity>::<joint>#<kind>``)."""
+        self._id = PerGeneration(lambda w: w.actuator_id(self.name))
+
+    def command(self, value: float) -> None:
+        """Set the actuator's input: a position, a velocity or an effort, by :attr:`kind`."""
+        world = self.joint.world
+        world.data.ctrl[self._id.get(world)] = value
+
+    @property
+    def commanded(self) -> float:
+        """The input last set."""
+        world = self.joint.world
+        return float(world.data.ctrl[self._id.get(world)])
+
+    @property
+    def force(self) -> float:
+        """The force or torque this actuator applied in the last step."""
+        world = self.joint.world
+        return float(world.data.actuator_force[self._id.get(world)])
+
+    def __repr__(self) -> str:
+        return f"ActuatorHandle({self.name!r}, {self.kind.value})"
+
+
+class BodyHandle:
+    """One link of an entity: its world pose and velocity (ground truth)."""
+
+    __slots__ = ("world", "entity", "link", "_id")
+
+    def __init__(self, world: PhysicsWorld, entity: str, link: str | None) -> None:
+        self.world = world
+        self.entity = entity
+        self.link = link
+        """The link's name; None for the entity's root (its model frame)."""
+        self._id = PerGeneration(lambda w: w.body_id(self.entity, self.link))
+
+    @property
+    def pose(self) -> Pose:
+        """World pose of the link frame."""
+        return self.world.body_pose(self._id.get(self.world))
+
+    @property
+    def velocity(self) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
+        """(linear velocity of the link origin, angular velocity), both in the world frame."""
+        return self.world.body_velocity(self._id.get(self.world))
+
+    def __repr__(self) -> str:
+        return f"BodyHandle({self.entity!r}, {self.link!r})"

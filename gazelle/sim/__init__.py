@@ -1,0 +1,14 @@
+"""The runtime: a :class:`Simulation` (its thread, pacing, spawn and delete orchestration).
+
+It sits above physics and systems: it stages an entity in the physics world, lets the
+systems of its plugins configure (add actuators, declare topics), commits it, and then
+runs the systems' phases around blocks of physics steps. ROS, the viewer and the command
+line drive it through its thread-safe methods.
+"""
+
+from ._simulation import RtfSample as RtfSample
+from ._simulation import Simulation as Simulation
+from ._simulation import SpawnRequest as SpawnRequest
+from ._simulation import StepListener as StepListener
+
+__all__ = ["RtfSample", "Simulation", "SpawnRequest", "StepListener"]
