@@ -147,7 +147,10 @@ def main() -> int:
     def verdict(r: dict[str, float]) -> str:
         parts = []
         if tilt(r) >= 3.0:
-            parts.append(f"tilts {tilt(r):.0f} deg" + (" nose down" if abs(r["pitch"]) >= abs(r["roll"]) and r["pitch"] > 0 else ""))
+            parts.append(
+                f"tilts {tilt(r):.0f} deg"
+                + (" nose down" if abs(r["pitch"]) >= abs(r["roll"]) and r["pitch"] > 0 else "")
+            )
         if abs(r["side"] / want_side - 1) > 0.05:
             parts.append(f"side {100 * r['side'] / want_side:.0f}%")
         if abs(r["turn"] / want_turn - 1) > 0.05:

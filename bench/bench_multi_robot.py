@@ -108,9 +108,17 @@ def main() -> int:
         steps = opts.steps or max(500, 6000 // n)
         rows.append(measure(n, steps, opts.seconds, RosBridge))
     dt = rows[0]["dt"]
-    print(f"namespaced seed robots on default_world(), each driving v={V} w={W}: diff drive (odom + TF) at {RATE_HZ} Hz,")
-    print(f"joint states at {RATE_HZ} Hz, robot_state_publisher /tf at 50 Hz; dt = {dt * 1000:g} ms; {os.cpu_count()} CPUs\n")
-    hdr = f"{'robots':>6} {'nv':>5} {'ROS pubs':>8} | {'raw mj_step':>15} | {'gazelle no ROS':>15} {'x raw':>6} | {'gazelle + ROS':>15} {'x raw':>6}"
+    print(
+        f"namespaced seed robots on default_world(), each driving v={V} w={W}: diff drive (odom + TF) at {RATE_HZ} Hz,"
+    )
+    print(
+        f"joint states at {RATE_HZ} Hz, robot_state_publisher /tf at 50 Hz; dt = {dt * 1000:g} ms;"
+        f" {os.cpu_count()} CPUs\n"
+    )
+    hdr = (
+        f"{'robots':>6} {'nv':>5} {'ROS pubs':>8} | {'raw mj_step':>15} | {'gazelle no ROS':>15} {'x raw':>6}"
+        f" | {'gazelle + ROS':>15} {'x raw':>6}"
+    )
     print(hdr)
     print("-" * len(hdr))
     for r in rows:

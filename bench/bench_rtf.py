@@ -83,7 +83,9 @@ def run_threaded(sim, seconds: float) -> tuple[float, int, float]:
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-n", "--steps", type=int, default=20000, help="steps per in-process measurement (default 20000)")
+    parser.add_argument(
+        "-n", "--steps", type=int, default=20000, help="steps per in-process measurement (default 20000)"
+    )
     parser.add_argument("--seconds", type=float, default=4.0, help="wall seconds per threaded measurement (default 4)")
     opts = parser.parse_args()
     logging.disable(logging.CRITICAL)
@@ -130,7 +132,9 @@ def main() -> int:
     clock_pub = bridge.node._clock_pub
     subs_free = clock_pub.get_subscription_count()
     s, n, w = run_threaded(sim, opts.seconds)
-    rows.append(("gazelle + RosBridge, /clock unheard", n / w, f"{s:.1f} sim s in {w:.1f} wall s, {subs_free} /clock subs"))
+    rows.append(
+        ("gazelle + RosBridge, /clock unheard", n / w, f"{s:.1f} sim s in {w:.1f} wall s, {subs_free} /clock subs")
+    )
     with_ros = rows[-1][1]
 
     # --- the same with a plain rclpy process subscribed to /clock
@@ -158,7 +162,9 @@ def main() -> int:
             note = "subscriber never matched (discovery?)"
         out, _ = proc.communicate(timeout=10)  # closes its stdin: it prints its count and exits
         received = out.strip().splitlines()[-1] if out.strip() else "?"
-        rows.append(("gazelle + RosBridge, /clock subscribed", throttled, note + f"; listener got {received} /clock msgs"))
+        rows.append(
+            ("gazelle + RosBridge, /clock subscribed", throttled, note + f"; listener got {received} /clock msgs")
+        )
     finally:
         if proc.poll() is None:
             proc.kill()
@@ -177,7 +183,8 @@ def main() -> int:
         print(f"{label:<40} {sps:>9.0f} {sps * dt:>7.1f}x {sps / raw:>7.3f}  {note}")
     print("-" * (len(header) + 40))
     print(
-        f"ratios vs raw Python-loop mj_step: gazelle no-ROS {no_ros / raw:.3f}, gazelle + ROS (free) {with_ros / raw:.3f},"
+        f"ratios vs raw Python-loop mj_step: gazelle no-ROS {no_ros / raw:.3f},"
+        f" gazelle + ROS (free) {with_ros / raw:.3f},"
         f" gazelle + ROS (/clock subscribed) {throttled / raw:.3f}"
     )
     cap = (1.0 / CLOCK_HZ) / 1e-3  # MIN_CLOCK_WALL_PERIOD_SEC = 1 ms: one clock period of sim time per ms of wall time

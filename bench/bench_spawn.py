@@ -57,7 +57,10 @@ class Server:
         self.lines: list[str] = []
         self.proc = subprocess.Popen(
             [sys.executable, "-m", "gazelle.cli", "sim", "--rtf", str(rtf)],
-            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=REPO,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+            cwd=REPO,
         )
         self.ready = threading.Event()
         threading.Thread(target=self._read, daemon=True).start()
@@ -197,16 +200,24 @@ def main() -> None:
     n = len(NAMES)
     med_c, med_b, med_s = statistics.median(classic), statistics.median(batch), statistics.median(server)
     print(f"chessboard: {n} entities, {args.reps} runs, gazelle sim --rtf {args.rtf:g}, client in a separate process")
-    print(f"  classic, {n} x /spawn_entity : median {med_c:.3f} s (min {min(classic):.3f}, max {max(classic):.3f}),"
-          f" {1000 * med_c / n:.1f} ms per spawn;"
-          f" target < {TARGET_CLASSIC} s: {'met' if med_c < TARGET_CLASSIC else 'MISSED'}")
-    print(f"     of which on the server (parse + build + recompile): {med_s:.3f} s;"
-          f" service round trips: {med_c - med_s:.3f} s ({1000 * (med_c - med_s) / n:.1f} ms per call)")
-    print(f"  batch, 1 x spawn_entities      : median {med_b:.3f} s (min {min(batch):.3f}, max {max(batch):.3f});"
-          f" target < {TARGET_BATCH} s: {'met' if med_b < TARGET_BATCH else 'MISSED'}")
-    print(f"  Gazebo 11 (anchors §1.4): {lo:.3f}-{hi:.2f} s per spawn -> {n * lo:.1f}-{n * hi:.1f} s for the board;"
-          f" gazelle classic is {n * lo / med_c:.0f}-{n * hi / med_c:.0f}x faster,"
-          f" batch {n * lo / med_b:.0f}-{n * hi / med_b:.0f}x")
+    print(
+        f"  classic, {n} x /spawn_entity : median {med_c:.3f} s (min {min(classic):.3f}, max {max(classic):.3f}),"
+        f" {1000 * med_c / n:.1f} ms per spawn;"
+        f" target < {TARGET_CLASSIC} s: {'met' if med_c < TARGET_CLASSIC else 'MISSED'}"
+    )
+    print(
+        f"     of which on the server (parse + build + recompile): {med_s:.3f} s;"
+        f" service round trips: {med_c - med_s:.3f} s ({1000 * (med_c - med_s) / n:.1f} ms per call)"
+    )
+    print(
+        f"  batch, 1 x spawn_entities      : median {med_b:.3f} s (min {min(batch):.3f}, max {max(batch):.3f});"
+        f" target < {TARGET_BATCH} s: {'met' if med_b < TARGET_BATCH else 'MISSED'}"
+    )
+    print(
+        f"  Gazebo 11 (anchors §1.4): {lo:.3f}-{hi:.2f} s per spawn -> {n * lo:.1f}-{n * hi:.1f} s for the board;"
+        f" gazelle classic is {n * lo / med_c:.0f}-{n * hi / med_c:.0f}x faster,"
+        f" batch {n * lo / med_b:.0f}-{n * hi / med_b:.0f}x"
+    )
     print("in-process profile (no ROS):")
     for k, v in in_process().items():
         print(f"  {k:40s} {v:8.2f} ms")

@@ -34,9 +34,9 @@ import subprocess
 import sys
 import textwrap
 import time
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Iterator
 
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
@@ -69,7 +69,12 @@ def make_sim(rtf: float):
     sim = Simulation(default_world(), rtf=rtf)
     sim.spawn(load(ROBOT).value, name="simple_robot")
     for ep in sim.bus.endpoints():
-        if ep.owner == "simple_robot" and not ep.is_publisher and ep.callback is not None and ep.msg_type == MsgType.TWIST:
+        if (
+            ep.owner == "simple_robot"
+            and not ep.is_publisher
+            and ep.callback is not None
+            and ep.msg_type == MsgType.TWIST
+        ):
             ep.callback(Twist((V, 0.0, 0.0), (0.0, 0.0, W)))
     return sim
 
@@ -113,10 +118,15 @@ class Run:
 
 def measure(sim, seconds: float) -> Run:
     """RTF, the sim thread's CPU and the browser's CPU over ``seconds`` of wall time (after a 1 s warm-up)."""
-    tid = sim._thread.native_id  # noqa: SLF001 - the bench reads the thread's CPU from /proc
+    tid = sim._thread.native_id
 
     def sample() -> tuple[float, float, float, float]:
-        return sim.call(lambda: sim.world.time), time.monotonic(), _stat_cpu(f"/proc/self/task/{tid}/stat"), tree_cpu_sec(os.getpid())
+        return (
+            sim.call(lambda: sim.world.time),
+            time.monotonic(),
+            _stat_cpu(f"/proc/self/task/{tid}/stat"),
+            tree_cpu_sec(os.getpid()),
+        )
 
     time.sleep(1.0)
     t0, w0, s0, b0 = sample()
@@ -168,7 +178,10 @@ def scenario(name: str, rtf: float, a: argparse.Namespace) -> dict[str, float]:
                 run.frames = getattr(view, "frames", 0)
             runs[mode].append(run)
             extra = f"  chromium {run.browser_cores:.2f} cores, {run.frames} frames pushed" if mode == "browser" else ""
-            print(f"  round {r + 1}: {MODES[mode]:28s} RTF {run.rtf:7.3f}  sim thread {run.sim_load:.2f} cores{extra}", flush=True)
+            print(
+                f"  round {r + 1}: {MODES[mode]:28s} RTF {run.rtf:7.3f}  sim thread {run.sim_load:.2f} cores{extra}",
+                flush=True,
+            )
     med_rtf = {m: statistics.median(x.rtf for x in v) for m, v in runs.items()}
     med_load = {m: statistics.median(x.sim_load for x in v) for m, v in runs.items()}
     print("  medians:")
@@ -184,7 +197,9 @@ def scenario(name: str, rtf: float, a: argparse.Namespace) -> dict[str, float]:
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--seconds", type=float, default=4.0, help="wall seconds measured per run (default 4)")
-    ap.add_argument("--rounds", type=int, default=3, help="interleaved rounds of the three modes (default 3; medians are printed)")
+    ap.add_argument(
+        "--rounds", type=int, default=3, help="interleaved rounds of the three modes (default 3; medians are printed)"
+    )
     ap.add_argument("--scenario", choices=("paced", "flat", "both"), default="both")
     ap.add_argument("--max-fps", type=float, default=0.0, help="cap chromium's frame rate (default 0: uncapped)")
     a = ap.parse_args()

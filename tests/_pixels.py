@@ -44,4 +44,4 @@ def blue_mask(image: bytes | np.ndarray) -> np.ndarray:
 def trail_mask(image: bytes | np.ndarray, tol: int = 40) -> np.ndarray:
     """Pixels of the path trail's magenta (``TRAIL_RGB``, lit evenly: it is a screen-space line)."""
     rgb = rgb_of(image) if isinstance(image, bytes) else image.astype(int)
-    return (np.abs(rgb - np.asarray(TRAIL_RGB)).max(axis=-1) <= tol)
+    return np.abs(rgb - np.asarray(TRAIL_RGB)).max(axis=-1) <= tol

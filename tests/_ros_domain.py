@@ -23,7 +23,7 @@ def reserved_domain_id() -> int:
     start = 10 + os.getpid() % 91
     for k in range(91):
         domain = 10 + (start - 10 + k) % 91
-        handle = open(f"/tmp/gazelle-ros-domain-{domain}.lock", "a+")  # noqa: SIM115 - held for the process
+        handle = open(f"/tmp/gazelle-ros-domain-{domain}.lock", "a+")
         try:
             fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError:

@@ -6,8 +6,8 @@ import os
 from pathlib import Path
 
 import pytest
+from _paths import REAL
 
-from _paths import REAL  # noqa: E402
 """Real public robot/world descriptions (test inputs, read in place; never copied into the repo)."""
 
 

@@ -11,6 +11,7 @@ import pytest
 
 REPO = Path(__file__).resolve().parent.parent
 from _paths import REAL  # noqa: E402
+
 needs_real = pytest.mark.skipif(not REAL.is_dir(), reason="shared real fixtures not available")
 
 SEED = REPO / "examples/simple_robot/simple_robot/robot.urdf.xacro"
@@ -142,7 +143,10 @@ def test_turtlebot3_xacro_with_resource_path() -> None:
         "model turtlebot3_burger: 7 links, 6 joints, 2 sensors, 3 plugins",
         "0 errors, 3 warnings",  # check tells what spawn would: sensors and their plugins are not simulated yet
     ]
-    assert "turtlebot3_burger.gazebo.xacro:104: warning: [ELEMENT_UNSUPPORTED] sensor 'lds_lfcd_sensor' (ray)" in proc.stderr
+    assert (
+        "turtlebot3_burger.gazebo.xacro:104: warning: [ELEMENT_UNSUPPORTED] sensor 'lds_lfcd_sensor' (ray)"
+        in proc.stderr
+    )
     assert "plugin 'imu_plugin' (libgazebo_ros_imu.so) is ignored: sensors are not simulated yet" in proc.stderr
     # without the resource path, $(find turtlebot3_description) cannot resolve: a clean error
     proc = check(path)

@@ -13,12 +13,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 import trimesh
+from _paths import REAL
 
 from gazelle.description import Pose, load, load_string
-from gazelle.sim import Simulation
 from gazelle.physics import _convex
+from gazelle.sim import Simulation
 from gazelle.worlds import default_world
-from _paths import REAL
 
 
 def ring_stl(path: Path) -> Path:
@@ -45,7 +45,7 @@ def ring_stl(path: Path) -> Path:
 
 BALL = (
     '<sdf version="1.9"><model name="ball"><link name="l"><inertial><mass>0.1</mass><inertia><ixx>1e-4</ixx>'
-    "<iyy>1e-4</iyy><izz>1e-4</izz></inertia></inertial><collision name=\"c\"><geometry><sphere><radius>0.05</radius>"
+    '<iyy>1e-4</iyy><izz>1e-4</izz></inertia></inertial><collision name="c"><geometry><sphere><radius>0.05</radius>'
     "</sphere></geometry></collision></link></model></sdf>"
 )
 
@@ -69,7 +69,9 @@ def test_a_concave_ring_holds_a_ball_inside(tmp_path: Path, monkeypatch, caplog)
     sim.spawn(load_string(BALL).value, name="ball", pose=Pose((0.1, 0.1, 0.6)))
     sim.step(2000)
     x, y, z = sim.world.entity_state("ball").pose.position
-    assert z == pytest.approx(0.05, abs=0.005), "the ball rests on the ground inside the ring (the hull held it at 0.35)"
+    assert z == pytest.approx(0.05, abs=0.005), (
+        "the ball rests on the ground inside the ring (the hull held it at 0.35)"
+    )
     assert abs(x) < 0.4 and abs(y) < 0.4
 
 
@@ -100,7 +102,9 @@ def test_turtlebot3_world_arena_is_hollow(monkeypatch) -> None:
     tb3 = REAL / "turtlebot3" / "turtlebot3_gazebo"
     monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(tb3 / "models"))
     sim = Simulation(load(tb3 / "worlds" / "turtlebot3_world.world").value, rtf=0.0)
-    sim.spawn(load(tb3 / "models" / "turtlebot3_burger" / "model.sdf").value, name="burger", pose=Pose((-2.0, -0.5, 0.01)))
+    sim.spawn(
+        load(tb3 / "models" / "turtlebot3_burger" / "model.sdf").value, name="burger", pose=Pose((-2.0, -0.5, 0.01))
+    )
     box = load_string(
         '<sdf version="1.9"><model name="b"><link name="l"><inertial><mass>1</mass></inertial><collision name="c">'
         "<geometry><box><size>0.1 0.1 0.1</size></box></geometry></collision></link></model></sdf>"

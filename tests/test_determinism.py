@@ -3,12 +3,12 @@
 from __future__ import annotations
 
 import numpy as np
+from _paths import BOX, SEED_XACRO
 
 from gazelle.description import Pose, load, load_string
 from gazelle.sim import Simulation
 from gazelle.systems.diff_drive import DiffDrive
 from gazelle.worlds import default_world
-from _paths import BOX, SEED_XACRO
 
 
 def run() -> list[np.ndarray]:

@@ -11,12 +11,12 @@ import logging
 
 import numpy as np
 import pytest
+from _paths import BOX, SEED_XACRO
 
 from gazelle.description import Pose, load, load_string
 from gazelle.physics import ActuatorKind, WorldError
 from gazelle.sim import Simulation, SpawnRequest
 from gazelle.worlds import default_world
-from _paths import BOX, SEED_XACRO
 
 
 def chain(n: int, joint_type: str) -> str:
@@ -39,9 +39,19 @@ def fingerprint(sim: Simulation) -> tuple:
     """Everything a failed spawn must not change: the compiled model's sizes, the state, the names."""
     m, d = sim.world.model, sim.world.data
     return (
-        m.nbody, m.njnt, m.ngeom, m.nu, m.nmesh, m.neq,
-        d.qpos.tobytes(), d.qvel.tobytes(), d.ctrl.tobytes(), float(d.time),
-        tuple(sim.world.entities), len(sim.world.spec.bodies), len(sim.systems.systems()),
+        m.nbody,
+        m.njnt,
+        m.ngeom,
+        m.nu,
+        m.nmesh,
+        m.neq,
+        d.qpos.tobytes(),
+        d.qvel.tobytes(),
+        d.ctrl.tobytes(),
+        float(d.time),
+        tuple(sim.world.entities),
+        len(sim.world.spec.bodies),
+        len(sim.systems.systems()),
         tuple(sorted(ep.topic for ep in sim.bus.endpoints())),
     )
 
@@ -102,12 +112,14 @@ def test_a_plugin_that_raises_in_configure_leaves_no_debris(busy_sim: Simulation
 
 
 def test_a_wheel_on_a_fixed_joint_is_named_as_fixed(busy_sim: Simulation, caplog) -> None:
-    from gazelle.description import SourceLocation  # noqa: F401 - the model is real xacro output
-
     import xacro
 
-    urdf = xacro.process_file(str(SEED_XACRO)).toxml().replace(
-        'name="base_right_wheel_joint" type="continuous"', 'name="base_right_wheel_joint" type="fixed"'
+    from gazelle.description import SourceLocation  # noqa: F401 - the model is real xacro output
+
+    urdf = (
+        xacro.process_file(str(SEED_XACRO))
+        .toxml()
+        .replace('name="base_right_wheel_joint" type="continuous"', 'name="base_right_wheel_joint" type="fixed"')
     )
     assert 'type="fixed"' in urdf
     with caplog.at_level(logging.ERROR):
@@ -130,7 +142,9 @@ def test_a_failed_batch_member_leaves_the_others_and_the_world_intact(busy_sim: 
     assert np.all(np.isfinite(busy_sim.world.data.qpos))
 
 
-@pytest.mark.parametrize(("pose", "field"), [(Pose((0.0, 0.0, -1e12)), "position.z"), (Pose((1e308, 0.0, 0.0)), "position.x")])
+@pytest.mark.parametrize(
+    ("pose", "field"), [(Pose((0.0, 0.0, -1e12)), "position.z"), (Pose((1e308, 0.0, 0.0)), "position.x")]
+)
 def test_absurd_poses_are_refused_with_the_field_named(busy_sim: Simulation, pose: Pose, field: str) -> None:
     before = fingerprint(busy_sim)
     with pytest.raises(WorldError) as info:

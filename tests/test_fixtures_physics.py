@@ -12,11 +12,12 @@ import math
 
 import numpy as np
 import pytest
+from _paths import REAL
 
 from gazelle.description import Model, Pose, load
 from gazelle.sim import Simulation
 from gazelle.worlds import default_world
-from _paths import REAL  # noqa: E402
+
 pytestmark = pytest.mark.skipif(not REAL.is_dir(), reason="shared real fixtures not available")
 
 MOBILE, ARM, OBJECT = "mobile", "arm", "object"
@@ -24,41 +25,68 @@ MOBILE, ARM, OBJECT = "mobile", "arm", "object"
 # (id, GAZELLE_RESOURCE_PATH relative to REAL, file relative to REAL, kind, spawn height, xacro args)
 CASES = [
     pytest.param(
-        "turtlebot3/turtlebot3_gazebo/models", "turtlebot3/turtlebot3_gazebo/models/turtlebot3_burger/model.sdf",
-        MOBILE, 0.02, id="turtlebot3_sdf",
+        "turtlebot3/turtlebot3_gazebo/models",
+        "turtlebot3/turtlebot3_gazebo/models/turtlebot3_burger/model.sdf",
+        MOBILE,
+        0.02,
+        id="turtlebot3_sdf",
     ),
     pytest.param(
-        "turtlebot3", "turtlebot3/turtlebot3_description/urdf/turtlebot3_burger.urdf.xacro",
-        MOBILE, 0.5, id="turtlebot3_xacro",
+        "turtlebot3",
+        "turtlebot3/turtlebot3_description/urdf/turtlebot3_burger.urdf.xacro",
+        MOBILE,
+        0.5,
+        id="turtlebot3_xacro",
     ),
     pytest.param(
-        "ros2_control_diffbot", "ros2_control_diffbot/ros2_control_demo_example_2/urdf/diffbot.urdf.xacro",
-        MOBILE, 0.5, id="diffbot_xacro",
+        "ros2_control_diffbot",
+        "ros2_control_diffbot/ros2_control_demo_example_2/urdf/diffbot.urdf.xacro",
+        MOBILE,
+        0.5,
+        id="diffbot_xacro",
     ),
     pytest.param(
-        "moveit_panda", "moveit_panda/moveit_resources_panda_description/urdf/panda.urdf",
-        ARM, 0.05, id="panda_urdf",
+        "moveit_panda",
+        "moveit_panda/moveit_resources_panda_description/urdf/panda.urdf",
+        ARM,
+        0.05,
+        id="panda_urdf",
     ),
     pytest.param(
-        "moveit_panda", "moveit_panda/moveit_resources_panda_description/urdf/panda.urdf.xacro",
-        ARM, 0.05, id="panda_xacro",
+        "moveit_panda",
+        "moveit_panda/moveit_resources_panda_description/urdf/panda.urdf.xacro",
+        ARM,
+        0.05,
+        id="panda_xacro",
     ),
     pytest.param(
-        "moveit_panda", "moveit_panda/moveit_resources_panda_moveit_config/config/panda.urdf.xacro",
-        ARM, 0.05, id="panda_moveit_config_xacro",
+        "moveit_panda",
+        "moveit_panda/moveit_resources_panda_moveit_config/config/panda.urdf.xacro",
+        ARM,
+        0.05,
+        id="panda_moveit_config_xacro",
     ),
     pytest.param(
-        "moveit_panda", "moveit_panda/dual_arm_panda_moveit_config/config/panda.urdf.xacro",
-        ARM, 0.0, id="dual_arm_panda_xacro",
+        "moveit_panda",
+        "moveit_panda/dual_arm_panda_moveit_config/config/panda.urdf.xacro",
+        ARM,
+        0.0,
+        id="dual_arm_panda_xacro",
     ),
     pytest.param(
-        "ros2_control_r6bot", "ros2_control_r6bot/ros2_control_demo_example_7/urdf/r6bot.urdf.xacro",
-        ARM, 0.0, id="r6bot_xacro",
+        "ros2_control_r6bot",
+        "ros2_control_r6bot/ros2_control_demo_example_7/urdf/r6bot.urdf.xacro",
+        ARM,
+        0.0,
+        id="r6bot_xacro",
     ),
     pytest.param("gazebo_models/models", "gazebo_models/models/table/model.sdf", OBJECT, 0.0, id="table"),
     pytest.param(
-        "gazebo_models/models", "gazebo_models/models/coke_can/model.sdf", OBJECT, 0.05, id="coke_can",
-
+        "gazebo_models/models",
+        "gazebo_models/models/coke_can/model.sdf",
+        OBJECT,
+        0.05,
+        id="coke_can",
     ),
 ]
 

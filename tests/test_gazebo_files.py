@@ -50,11 +50,13 @@ def test_a_bad_value_in_a_xacro_included_file_points_at_that_file(tmp_path: Path
 @pytest.mark.parametrize("suffix", [".sdf", ".urdf", ".urdf.xacro"])
 def test_comments_with_double_hyphens_are_accepted_with_a_warning(tmp_path: Path, suffix: str) -> None:
     if suffix == ".sdf":
-        text = '<?xml version="1.0"?>\n<sdf version="1.9">\n<!-- --- a ruler -- and more --->\n<world name="w"/>\n</sdf>\n'
+        text = (
+            '<?xml version="1.0"?>\n<sdf version="1.9">\n<!-- --- a ruler -- and more --->\n<world name="w"/>\n</sdf>\n'
+        )
     else:
         text = (
             '<?xml version="1.0"?>\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
-            "<!-- -- old -- notes -->\n<link name=\"a\"/>\n</robot>\n"
+            '<!-- -- old -- notes -->\n<link name="a"/>\n</robot>\n'
         )
     f = tmp_path / f"doc{suffix}"
     f.write_text(text)
@@ -85,13 +87,15 @@ def test_names_with_spaces_load_and_simulate() -> None:
     sim.step(10)
     assert "Construction Cone" in sim.world.entities
     sim.spawn(sim.world.entities["Construction Cone"].model, name="Construction Cone_0", pose=Pose((3.0, 0.0, 0.5)))
-    assert sim.world.entity_state("Construction Cone_0").pose.position[0] == pytest.approx(4.0, abs=1e-3)  # + its file pose
+    assert sim.world.entity_state("Construction Cone_0").pose.position[0] == pytest.approx(
+        4.0, abs=1e-3
+    )  # + its file pose
 
 
 def test_a_cone_collides_and_rests_on_its_base() -> None:
     model = load_string(
         '<sdf version="1.11"><model name="cone"><link name="l"><inertial><mass>1</mass><inertia><ixx>0.01</ixx>'
-        "<iyy>0.01</iyy><izz>0.01</izz></inertia></inertial><collision name=\"c\"><geometry><cone><radius>0.2</radius>"
+        '<iyy>0.01</iyy><izz>0.01</izz></inertia></inertial><collision name="c"><geometry><cone><radius>0.2</radius>'
         "<length>0.4</length></cone></geometry></collision></link></model></sdf>"
     ).value
     assert model.links[0].collisions[0].geometry == Cone(0.2, 0.4)
@@ -122,10 +126,14 @@ def test_fuel_ground_plane_and_sun_are_built_in(monkeypatch, tmp_path: Path) -> 
     world = load_string(_fuel_world("OpenRobotics/models/Ground Plane", "OpenRobotics/models/Sun")).value
     assert [m.name for m in world.models] == ["ground_plane"] and [lt.name for lt in world.lights] == ["sun"]
     sim = Simulation(world, rtf=0.0)
-    sim.spawn(load_string(
-        '<sdf version="1.9"><model name="b"><link name="l"><inertial><mass>1</mass></inertial><collision name="c">'
-        "<geometry><sphere><radius>0.1</radius></sphere></geometry></collision></link></model></sdf>"
-    ).value, name="b", pose=Pose((0.0, 0.0, 0.5)))
+    sim.spawn(
+        load_string(
+            '<sdf version="1.9"><model name="b"><link name="l"><inertial><mass>1</mass></inertial><collision name="c">'
+            "<geometry><sphere><radius>0.1</radius></sphere></geometry></collision></link></model></sdf>"
+        ).value,
+        name="b",
+        pose=Pose((0.0, 0.0, 0.5)),
+    )
     sim.step(1500)
     assert sim.world.entity_state("b").pose.position[2] == pytest.approx(0.1, abs=0.005)  # rests on Fuel's plane
 

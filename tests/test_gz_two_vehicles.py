@@ -26,11 +26,11 @@ def _inertial(m: float, ixx: float, iyy: float, izz: float) -> str:
 
 
 def vehicle(name: str, y: float, limits: str = "") -> str:
-    wheel = lambda n, wy: (  # noqa: E731
+    wheel = lambda n, wy: (
         f"<link name='{n}'><pose>0.554 {wy} -0.025 -1.5707 0 0</pose>{_inertial(2, 0.145833, 0.145833, 0.125)}"
         "<collision name='c'><geometry><sphere><radius>0.3</radius></sphere></geometry></collision></link>"
     )
-    hinge = lambda n, c: (  # noqa: E731
+    hinge = lambda n, c: (
         f"<joint name='{n}' type='revolute'><parent>chassis</parent><child>{c}</child><axis><xyz>0 0 1</xyz>"
         "<limit><lower>-1.79769e+308</lower><upper>1.79769e+308</upper></limit></axis></joint>"
     )
@@ -95,7 +95,9 @@ def _turn(limits: str, seconds: float) -> tuple[float, float, float, float]:
     steps = int(seconds * 1000)
     for i in range(steps + 1):
         if i in (0, steps - 1000, steps):
-            marks.append((_yaw(sim.world.entity_state("vehicle_blue").pose.orientation), _yaw(odom.last.pose.orientation)))
+            marks.append(
+                (_yaw(sim.world.entity_state("vehicle_blue").pose.orientation), _yaw(odom.last.pose.orientation))
+            )
         if i % 100 == 0:
             cmd.callback(Twist(linear=(0.0, 0.0, 0.0), angular=(0.0, 0.0, 1.0)))
         if i < steps:

@@ -18,7 +18,7 @@ import pytest
 
 # Keep DDS traffic of this test on this machine and away from other runs.
 os.environ.setdefault("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
-from _ros_domain import reserved_domain_id  # noqa: E402
+from _ros_domain import reserved_domain_id
 
 DOMAIN_ID = reserved_domain_id()
 
@@ -85,8 +85,8 @@ def test_simulation_interfaces_constants_and_layout():
         Result,
         SimulationState,
         SimulatorFeatures,
-        SpawnResult,
         Spawnable,
+        SpawnResult,
     )
     from simulation_interfaces.msg import SpawnEntity as SpawnEntityMsg
     from simulation_interfaces.srv import (
@@ -120,10 +120,21 @@ def test_simulation_interfaces_constants_and_layout():
 
     # Jazzy 1.x layout, not the 2.x/Rolling one.
     assert list(SpawnEntity.Request.get_fields_and_field_types()) == [
-        "name", "allow_renaming", "uri", "resource_string", "entity_namespace", "initial_pose"]
+        "name",
+        "allow_renaming",
+        "uri",
+        "resource_string",
+        "entity_namespace",
+        "initial_pose",
+    ]
     assert list(Spawnable.get_fields_and_field_types()) == ["uri", "description", "spawn_bounds"]
     assert list(SpawnEntityMsg.get_fields_and_field_types()) == [
-        "name", "allow_renaming", "entity_resource", "entity_namespace", "initial_pose"]
+        "name",
+        "allow_renaming",
+        "entity_resource",
+        "entity_namespace",
+        "initial_pose",
+    ]
     assert list(SetEntityState.Request.get_fields_and_field_types()) == ["entity", "state"]
     assert list(LoadWorld.Request.get_fields_and_field_types())[:2] == ["uri", "resource_string"]
     assert list(GetSimulationState.Response.get_fields_and_field_types()) == ["state", "result"]
@@ -150,7 +161,12 @@ def test_tf2_and_gazebo_msgs():
     assert deserialize_message(serialize_message(msg), TFMessage) == msg
     assert TF2Error.TRANSFORM_ERROR == 6
     assert list(GzSpawnEntity.Request.get_fields_and_field_types()) == [
-        "name", "xml", "robot_namespace", "initial_pose", "reference_frame"]
+        "name",
+        "xml",
+        "robot_namespace",
+        "initial_pose",
+        "reference_frame",
+    ]
     assert list(ModelStates.get_fields_and_field_types()) == ["name", "pose", "twist"]
     assert GetJointProperties.Response.UNIVERSAL == 5
 
@@ -214,8 +230,8 @@ def test_spawn_entity_service_round_trip():
         pose.header.frame_id = "world"
         pose.pose.position.z = 0.5
         request = SpawnEntity.Request(
-            name="box", allow_renaming=True, resource_string="<sdf version='1.11'/>",
-            initial_pose=pose)
+            name="box", allow_renaming=True, resource_string="<sdf version='1.11'/>", initial_pose=pose
+        )
         future = client.call_async(request)
         executor.spin_until_future_complete(future, timeout_sec=10.0)
         assert future.done(), "no response within 10 s"

@@ -12,18 +12,20 @@ import time
 
 import numpy as np
 import pytest
+from _paths import SEED_XACRO
 
 from gazelle.description import Pose, load, load_string
-from gazelle.sim import Simulation
 from gazelle.physics._builder import JOINT_ARMATURE
+from gazelle.sim import Simulation
 from gazelle.systems.diff_drive import DiffDrive
 from gazelle.worlds import default_world
-from _paths import SEED_XACRO
 
 G = 9.81
 
 
-def world_sdf(models: str, *, gravity: str = "0 0 -9.81", step: float = 0.001, rtf: float = 1.0, rate: float = 1000) -> str:
+def world_sdf(
+    models: str, *, gravity: str = "0 0 -9.81", step: float = 0.001, rtf: float = 1.0, rate: float = 1000
+) -> str:
     return (
         '<?xml version="1.0"?><sdf version="1.9"><world name="w">'
         f'<physics type="ode"><max_step_size>{step}</max_step_size><real_time_factor>{rtf}</real_time_factor>'
@@ -67,7 +69,9 @@ def test_free_fall_follows_z0_minus_half_g_t2(gravity: float, step: float) -> No
         worst = max(worst, err)
     vz = sim.world.entity_state("ball").linear_velocity[2]
     assert vz == pytest.approx(-gravity * 1.0, rel=1e-9)  # velocity is exact under constant acceleration
-    print(f"free fall g={gravity} dt={step}: worst |z - (z0 - g t²/2)| = {worst * 1e3:.3f} mm over a {gravity / 2:.3f} m fall")
+    print(
+        f"free fall g={gravity} dt={step}: worst |z - (z0 - g t²/2)| = {worst * 1e3:.3f} mm over a {gravity / 2:.3f} m fall"
+    )
 
 
 def test_world_settings_reach_the_simulation() -> None:
@@ -146,13 +150,17 @@ def test_sliding_threshold_on_an_incline(theta_deg: float, slides: bool) -> None
         assert v1 < 0.005
     else:
         a_expected = G * (math.sin(th) - mu * math.cos(th))
-        print(f"θ={theta_deg}° (tan {math.tan(th):.3f} > μ): a = {a:.4f} m/s², Coulomb {a_expected:.4f} ({(a / a_expected - 1) * 100:+.1f} %)")
+        print(
+            f"θ={theta_deg}° (tan {math.tan(th):.3f} > μ): a = {a:.4f} m/s², Coulomb {a_expected:.4f} ({(a / a_expected - 1) * 100:+.1f} %)"
+        )
         assert moved > 0.2
         assert a == pytest.approx(a_expected, rel=0.03)
 
 
 # ---------------------------------------------------------------------- pendulum and joint dynamics
-def pendulum(*, L: float = 1.0, damping: float = 0.0, friction: float = 0.0, limit: tuple[float, float] | None = None) -> str:
+def pendulum(
+    *, L: float = 1.0, damping: float = 0.0, friction: float = 0.0, limit: tuple[float, float] | None = None
+) -> str:
     """A 1 kg point-like bob on a massless rod, hinged about y to the world at (0, 0, 2)."""
     lim = f"<limit><lower>{limit[0]}</lower><upper>{limit[1]}</upper></limit>" if limit else ""
     return (
@@ -191,7 +199,9 @@ def test_pendulum_period(L: float) -> None:
     inertia = L * L + 1e-6 + JOINT_ARMATURE
     expected = 2 * math.pi * math.sqrt(inertia / (G * L)) * (1 + theta0**2 / 16)  # finite-amplitude correction
     simple = 2 * math.pi * math.sqrt(L / G)
-    print(f"pendulum L={L}: T={period:.5f} s, physical {expected:.5f} ({(period / expected - 1) * 1e6:+.0f} ppm), 2π√(L/g) {simple:.5f}")
+    print(
+        f"pendulum L={L}: T={period:.5f} s, physical {expected:.5f} ({(period / expected - 1) * 1e6:+.0f} ppm), 2π√(L/g) {simple:.5f}"
+    )
     assert period == pytest.approx(expected, rel=1e-3)
     assert np.max(np.abs(qs)) == pytest.approx(theta0, rel=0.01)  # no numerical damping to speak of
 
@@ -227,7 +237,9 @@ def test_joint_friction_holds_below_and_yields_above() -> None:
     falls = Simulation(make_world(pendulum(friction=f)), rtf=0)
     _, qs = swing(falls, 0.3, 2.0)
     assert abs(qs[-1]) < 0.2 + 0.01 and qs[-1] < 0.25
-    print(f"joint friction: held at 0.15 rad -> {held.world.data.qpos[0]:.4f}; from 0.3 rad stopped at {qs[-1]:.4f} (band ±0.2)")
+    print(
+        f"joint friction: held at 0.15 rad -> {held.world.data.qpos[0]:.4f}; from 0.3 rad stopped at {qs[-1]:.4f} (band ±0.2)"
+    )
 
 
 def test_revolute_joint_stops_at_its_limit() -> None:
@@ -371,7 +383,12 @@ def test_divergence_is_reported_and_isolated(poison: float) -> None:
         '<model name="ground"><static>true</static><link name="l"><collision name="c">'
         "<geometry><plane><normal>0 0 1</normal><size>100 100</size></plane></geometry></collision></link></model>"
     )
-    sim = Simulation(make_world(ground + box.format(n="victim", x=0) + box.format(n="bystander", x=2) + ball("faller", z=100.0, x=5)), rtf=0)
+    sim = Simulation(
+        make_world(
+            ground + box.format(n="victim", x=0) + box.format(n="bystander", x=2) + ball("faller", z=100.0, x=5)
+        ),
+        rtf=0,
+    )
     reports: list[tuple[str, str]] = []
     sim.divergence_listeners.append(lambda name, why: reports.append((name, why)))
     sim.step(100)

@@ -174,9 +174,7 @@ def test_the_table_lists_exactly_the_description_files() -> None:
 
 
 @pytest.mark.parametrize("rel", description_files())
-def test_real_file_loads_without_errors_and_with_the_listed_warnings(
-    monkeypatch: pytest.MonkeyPatch, rel: str
-) -> None:
+def test_real_file_loads_without_errors_and_with_the_listed_warnings(monkeypatch: pytest.MonkeyPatch, rel: str) -> None:
     kind, warnings = EXPECTED.get(rel, (None, None))
     try:
         result = load_fixture(monkeypatch, rel)
@@ -197,7 +195,11 @@ def test_real_file_loads_without_errors_and_with_the_listed_warnings(
 # source (expanded with the real xacro here) -> reference expansion stored in _xacro_expanded
 EXPANSIONS = [
     ("turtlebot3/turtlebot3_description/urdf/turtlebot3_burger.urdf", "turtlebot3_burger.from_urdf.urdf", None),
-    ("turtlebot3/turtlebot3_description/urdf/turtlebot3_burger.urdf.xacro", "turtlebot3_burger.noetic_xacro.urdf", None),
+    (
+        "turtlebot3/turtlebot3_description/urdf/turtlebot3_burger.urdf.xacro",
+        "turtlebot3_burger.noetic_xacro.urdf",
+        None,
+    ),
     ("moveit_panda/moveit_resources_panda_description/urdf/panda.urdf.xacro", "panda_description.urdf", None),
     ("moveit_panda/moveit_resources_panda_moveit_config/config/panda.urdf.xacro", "panda_moveit_config.urdf", None),
     ("moveit_panda/dual_arm_panda_moveit_config/config/panda.urdf.xacro", "dual_arm_panda.urdf", None),
@@ -240,7 +242,12 @@ def test_links_and_joints_match_the_real_xacro_expansion(
 @pytest.mark.parametrize(
     ("rel", "reference", "groups", "disabled"),
     [
-        ("moveit_panda/moveit_resources_panda_moveit_config/config/panda_arm_hand.srdf.xacro", "panda_arm_hand.srdf", 3, 34),
+        (
+            "moveit_panda/moveit_resources_panda_moveit_config/config/panda_arm_hand.srdf.xacro",
+            "panda_arm_hand.srdf",
+            3,
+            34,
+        ),
         ("moveit_panda/moveit_resources_panda_moveit_config/config/panda_arm.srdf.xacro", "panda_arm.srdf", 1, 19),
     ],
 )

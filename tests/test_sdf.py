@@ -26,6 +26,7 @@ from gazelle.description import (
 
 DATA = Path(__file__).parent / "data" / "sdf"
 from _paths import REAL  # noqa: E402
+
 TB3 = REAL / "turtlebot3" / "turtlebot3_gazebo"
 GZM = REAL / "gazebo_models" / "models"
 needs_real = pytest.mark.skipif(not REAL.is_dir(), reason="shared real fixtures not available")
@@ -81,7 +82,13 @@ def test_turtlebot3_burger_structure():
     model = load(TB3 / "models/turtlebot3_burger/model.sdf", resolver=resolver(TB3 / "models")).value
     assert isinstance(model, Model)
     assert [lk.name for lk in model.links] == [
-        "base_footprint", "base_link", "imu_link", "base_scan", "wheel_left_link", "wheel_right_link", "caster_back_link",
+        "base_footprint",
+        "base_link",
+        "imu_link",
+        "base_scan",
+        "wheel_left_link",
+        "wheel_right_link",
+        "caster_back_link",
     ]
     assert len(model.joints) == 6
     assert model.root_link == "base_footprint"
@@ -181,8 +188,14 @@ def test_world_include_overrides():
     result = load(DATA / "world_include.sdf", resolver=resolver(GZM))
     world = result.value
     assert world.name == "kitchen" and world.gravity == (0, 0, -9.81)
-    assert (world.physics.max_step_size_sec, world.physics.real_time_factor, world.physics.real_time_update_rate_hz) == (
-        0.002, 2.0, 500.0,
+    assert (
+        world.physics.max_step_size_sec,
+        world.physics.real_time_factor,
+        world.physics.real_time_update_rate_hz,
+    ) == (
+        0.002,
+        2.0,
+        500.0,
     )
     assert world.scene.ambient == (0.1, 0.2, 0.3, 1.0) and world.scene.shadows is False
     assert [m.name for m in world.models] == ["table_1", "coke_can"]
@@ -191,7 +204,12 @@ def test_world_include_overrides():
     assert close(can.pose.position, (1, 2, 1.02)) and can.static  # relative_to the table, static override
     assert [lt.name for lt in world.lights] == ["sun", "lamp"]
     lamp = world.lights[1]
-    assert (lamp.type, lamp.attenuation_range, lamp.cast_shadows, lamp.diffuse) == ("spot", 20.0, True, (1, 0.5, 0.5, 1))
+    assert (lamp.type, lamp.attenuation_range, lamp.cast_shadows, lamp.diffuse) == (
+        "spot",
+        20.0,
+        True,
+        (1, 0.5, 0.5, 1),
+    )
     assert close(world.lights[0].direction, (-0.5, 0.1, -0.9))
     [diag] = result.diagnostics
     assert diag.format() == (
@@ -269,7 +287,10 @@ def test_relative_to_degrees_quaternion_and_expressed_in():
     assert close((joint.origin * joint.child_offset).position, (1, 0, 0.5))
     assert close(joint.axis.xyz, (0, 1, 0))  # joint frame is aligned with the model frame
     assert (joint.axis.limit.lower, joint.axis.limit.upper, joint.axis.limit.effort, joint.axis.limit.velocity) == (
-        -1, 1, 5, 2,
+        -1,
+        1,
+        5,
+        2,
     )
     assert (joint.axis.dynamics.damping, joint.axis.dynamics.friction) == (0.1, 0.2)
     frames = {f.name: f for f in model.frames}
@@ -317,14 +338,21 @@ def test_world_parent_and_shapes():
     assert (col.surface.mu, col.surface.mu2, col.surface.torsional, col.surface.restitution) == (0.7, 0.6, 0.5, 0.3)
     assert col.surface.collide_bitmask == 1
     vis = model.link("l").visuals[0]
-    assert isinstance(vis.geometry, Cylinder) and vis.material.diffuse == (1, 0, 0, 1) and vis.material.texture == "tex.png"
+    assert (
+        isinstance(vis.geometry, Cylinder)
+        and vis.material.diffuse == (1, 0, 0, 1)
+        and vis.material.texture == "tex.png"
+    )
     assert model.joint("s").screw_thread_pitch == 0.01
 
 
 def test_inertia_problems_are_warned_and_derived():
     result = load(DATA / "inertia_problems.sdf", resolver=resolver())
     assert [(d.code.value, d.location.line) for d in result.diagnostics] == [
-        ("INERTIA_INVALID", 7), ("MASS_INVALID", 13), ("INERTIA_MISSING", 18), ("INERTIA_INVALID", 26),
+        ("INERTIA_INVALID", 7),
+        ("MASS_INVALID", 13),
+        ("INERTIA_MISSING", 18),
+        ("INERTIA_INVALID", 26),
     ]
     model = result.value
     box = model.link("not_pd").inertial
@@ -339,7 +367,10 @@ def test_inertia_problems_are_warned_and_derived():
 def test_mesh_not_found_warns_with_line():
     result = load(DATA / "mesh_missing.sdf", resolver=resolver())
     [diag] = result.diagnostics
-    assert diag.format() == f"{DATA / 'mesh_missing.sdf'}:7: warning: [MESH_NOT_FOUND] mesh 'meshes/QQQmissing.stl' not found"
+    assert (
+        diag.format()
+        == f"{DATA / 'mesh_missing.sdf'}:7: warning: [MESH_NOT_FOUND] mesh 'meshes/QQQmissing.stl' not found"
+    )
     mesh = result.value.links[0].visuals[0].geometry
     assert mesh.path is None and mesh.scale == (2, 2, 2)
 
@@ -363,14 +394,29 @@ def test_lone_light_is_a_world():
 
 # --------------------------------------------------------------------------- invalid files
 INVALID = [
-    ("malformed_xml.sdf", 5, "XML_PARSE_ERROR", "malformed XML: Opening and ending tag mismatch: link line 4 and model, line 5, column 11"),
+    (
+        "malformed_xml.sdf",
+        5,
+        "XML_PARSE_ERROR",
+        "malformed XML: Opening and ending tag mismatch: link line 4 and model, line 5, column 11",
+    ),
     ("model_missing_name.sdf", 3, "ATTRIBUTE_MISSING", "<model> is missing the required 'name' attribute"),
-    ("joint_unknown_type.sdf", 6, "JOINT_TYPE_INVALID", "joint 'j' has unknown type 'QQQhinge' (expected one of ball, continuous, fixed, prismatic, revolute, revolute2, screw, universal)"),
+    (
+        "joint_unknown_type.sdf",
+        6,
+        "JOINT_TYPE_INVALID",
+        "joint 'j' has unknown type 'QQQhinge' (expected one of ball, continuous, fixed, prismatic, revolute, revolute2, screw, universal)",
+    ),
     ("joint_unknown_parent.sdf", 7, "JOINT_PARENT_INVALID", "joint 'j' has unknown parent 'QQQa'"),
     ("joint_unknown_child.sdf", 8, "JOINT_CHILD_INVALID", "joint 'j' has unknown child 'QQQb'"),
     ("duplicate_link.sdf", 5, "DUPLICATE_NAME", "link name 'a' is already used by a link in model 'm'"),
     ("bad_number.sdf", 6, "VALUE_INVALID", "<radius> must be a number, got 'QQQ'"),
-    ("version_unsupported.sdf", 2, "SDF_VERSION_UNSUPPORTED", "SDF version '1.12' is not supported (supported: 1.2 to 1.11)"),
+    (
+        "version_unsupported.sdf",
+        2,
+        "SDF_VERSION_UNSUPPORTED",
+        "SDF version '1.12' is not supported (supported: 1.2 to 1.11)",
+    ),
     ("version_missing.sdf", 2, "ATTRIBUTE_MISSING", "<sdf> has no 'version' attribute"),
     ("frame_cycle.sdf", 5, "FRAME_CYCLE", "cycle in pose relative_to: f1 -> f2 -> f1"),
     ("relative_to_unknown.sdf", 4, "FRAME_INVALID", "unknown frame 'QQQframe'"),
@@ -395,14 +441,22 @@ def _mutate(text: str, rng: random.Random) -> str:
     if ops == 0:
         return text[:i] + text[j:]
     if ops == 1:
-        return text[:i] + rng.choice(["<", ">", "</link>", "&", "'", '"', "::", "nan", "-1e999", "<model name='x'>"]) + text[i:]
+        return (
+            text[:i]
+            + rng.choice(["<", ">", "</link>", "&", "'", '"', "::", "nan", "-1e999", "<model name='x'>"])
+            + text[i:]
+        )
     if ops == 2:
         lines = text.splitlines(keepends=True)
         k = rng.randrange(len(lines))
         lines.insert(rng.randrange(len(lines)), lines[k])
         return "".join(lines)
     if ops == 3:
-        return text.replace(rng.choice(["link", "joint", "pose", "mass", "inertia", "box", "parent", "child"]), rng.choice(["frame", "QQQ", "model", "include", "link"]), 1)
+        return text.replace(
+            rng.choice(["link", "joint", "pose", "mass", "inertia", "box", "parent", "child"]),
+            rng.choice(["frame", "QQQ", "model", "include", "link"]),
+            1,
+        )
     if ops == 4:
         return text[:i] + rng.choice(["0", "-3", "abc", "1 2", "1e308", "", "world", "__model__"]) + text[j:]
     return text[:i] + text[j:] + text[i:j]

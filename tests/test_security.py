@@ -51,7 +51,7 @@ def test_the_remote_code_execution_payload_is_refused_and_runs_nothing(tmp_path:
     [
         "<link name=\"${xacro.load_yaml('/etc/passwd')}\"/>",
         '<link name="$(env PATH)"/>',
-        "<xacro:property name=\"p\" value=\"${'a'*(10**9)}\"/>",
+        '<xacro:property name="p" value="${\'a\'*(10**9)}"/>',
     ],
 )
 def test_file_and_environment_reads_are_never_evaluated_or_echoed(body: str) -> None:
@@ -94,7 +94,7 @@ def test_the_power_bomb_in_a_local_file_ends_within_10_s_with_a_clear_error(tmp_
 def test_a_memory_bomb_in_a_local_file_is_stopped_by_the_memory_limit(tmp_path: Path, monkeypatch) -> None:
     monkeypatch.setenv("GAZELLE_XACRO_MEMORY_MB", "200")
     bomb = tmp_path / "big.urdf.xacro"
-    bomb.write_text(_robot("<xacro:property name=\"p\" value=\"${'a'*(10**9)}\"/><link name=\"b${p}\"/>"))
+    bomb.write_text(_robot('<xacro:property name="p" value="${\'a\'*(10**9)}"/><link name="b${p}"/>'))
     with pytest.raises(ModelLoadError) as info:
         load(bomb)
     assert "out of memory" in str(info.value) and "GAZELLE_XACRO_MEMORY_MB" in str(info.value), str(info.value)
@@ -119,7 +119,9 @@ def test_a_users_own_xacro_file_still_expands(tmp_path: Path) -> None:
 
 def test_errors_echo_only_an_excerpt_of_a_long_value() -> None:
     huge = "9" * 5000 + "x"
-    err = _refused(f'<robot name="r"><link name="a"><collision><geometry><box size="{huge}"/></geometry></collision></link></robot>')
+    err = _refused(
+        f'<robot name="r"><link name="a"><collision><geometry><box size="{huge}"/></geometry></collision></link></robot>'
+    )
     text = err.summary()
     assert "characters" in text and len(text) < 600, text
 
@@ -162,7 +164,9 @@ def test_model_uris_do_not_follow_symlinks_out_of_the_resource_paths(roots) -> N
             load_string(_world(uri), resolver=resolver)
         assert "SECRET_CONTENT" not in str(info.value)
         first = info.value.first
-        assert first is not None and first.code is ErrorCode.URI_UNRESOLVED or "outside" in str(info.value), str(info.value)
+        assert first is not None and first.code is ErrorCode.URI_UNRESOLVED or "outside" in str(info.value), str(
+            info.value
+        )
     assert resolver.resolve_uri("model://evil/model.sdf") is None
 
 
@@ -177,7 +181,9 @@ def test_includes_in_a_users_world_file_are_confined_like_spawn_by_uri(roots, tm
     )
     with pytest.raises(ModelLoadError) as info:
         load(world, resolver=resolver)
-    assert "outside the folders files may be read from" in str(info.value) and "GAZELLE_RESOURCE_PATH" in str(info.value)
+    assert "outside the folders files may be read from" in str(info.value) and "GAZELLE_RESOURCE_PATH" in str(
+        info.value
+    )
     # the folder of the user's own file may be read
     world.write_text('<sdf version="1.9"><world name="w"><include><uri>local.sdf</uri></include></world></sdf>')
     assert [m.name for m in load(world, resolver=resolver).value.models] == ["local"]

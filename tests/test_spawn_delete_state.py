@@ -13,15 +13,15 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 import pytest
+from _paths import BOX, SEED_XACRO
 
 from gazelle.description import Pose, load, load_string
 from gazelle.sim import Simulation, SpawnRequest
 from gazelle.systems.diff_drive import DiffDrive
 from gazelle.worlds import default_world
-from _paths import BOX, SEED_XACRO
 
 ICE_BOX = BOX.replace(
-    '<box><size>0.2 0.2 0.2</size></box></geometry>',
+    "<box><size>0.2 0.2 0.2</size></box></geometry>",
     "<box><size>0.2 0.2 0.2</size></box></geometry><surface><friction><ode><mu>0.05</mu></ode></friction></surface>",
 )
 BALL = (
@@ -149,7 +149,12 @@ def test_batch_spawn_keeps_the_others(batch: bool) -> None:
     ref, _ = make_sim()
     before = snapshot(sim)
     if batch:
-        sim.spawn_many([SpawnRequest(models["box"], "b1", Pose((5.0, 5.0, 0.3))), SpawnRequest(models["robot"], "r2", Pose((-5.0, 5.0, 0.05)))])
+        sim.spawn_many(
+            [
+                SpawnRequest(models["box"], "b1", Pose((5.0, 5.0, 0.3))),
+                SpawnRequest(models["robot"], "r2", Pose((-5.0, 5.0, 0.05))),
+            ]
+        )
     else:
         sim.spawn(models["box"], name="b1", pose=Pose((5.0, 5.0, 0.3)))
     assert_same(before, snapshot(sim), "across the spawn")

@@ -9,6 +9,7 @@ import subprocess
 import sys
 
 import pytest
+from _paths import BOX, REAL, REPO, SEED_XACRO
 
 from gazelle.description import Pose, load, load_string
 from gazelle.sim import Simulation
@@ -19,7 +20,6 @@ from gazelle.systems.gz_diff_drive import GzDiffDrive, SpeedLimiter, SpeedLimits
 from gazelle.systems.joint_controllers import JointCommands, JointController, JointPositionController
 from gazelle.systems.pose_publisher import P3D
 from gazelle.worlds import default_world
-from _paths import BOX, REAL, REPO, SEED_XACRO
 
 TB3 = REAL / "turtlebot3"
 
@@ -28,7 +28,12 @@ def seed_urdf(plugin_xml: str) -> str:
     """The seed robot's URDF with its classic diff drive replaced by ``plugin_xml`` (in a ``<gazebo>`` block)."""
     urdf = load(SEED_XACRO).value.urdf
     assert urdf
-    out, n = re.subn(r"<gazebo>\s*<plugin[^>]*libgazebo_ros_diff_drive.*?</gazebo>", f"<gazebo>{plugin_xml}</gazebo>", urdf, flags=re.S)
+    out, n = re.subn(
+        r"<gazebo>\s*<plugin[^>]*libgazebo_ros_diff_drive.*?</gazebo>",
+        f"<gazebo>{plugin_xml}</gazebo>",
+        urdf,
+        flags=re.S,
+    )
     assert n == 1
     return out
 
@@ -131,7 +136,12 @@ def test_classic_diff_drive_reads_the_ros1_names_of_turtlebot3(caplog, monkeypat
     assert (c.left_joints, c.right_joints) == (("wheel_left_joint",), ("wheel_right_joint",))
     assert (c.wheel_separation, c.wheel_diameter) == ((0.16,), (0.066,))
     assert (c.max_wheel_torque, c.max_wheel_acceleration, c.update_rate) == (10.0, 1.0, 30.0)
-    assert (c.command_topic, c.odometry_topic, c.odometry_frame, c.robot_base_frame) == ("cmd_vel", "odom", "odom", "base_footprint")
+    assert (c.command_topic, c.odometry_topic, c.odometry_frame, c.robot_base_frame) == (
+        "cmd_vel",
+        "odom",
+        "odom",
+        "base_footprint",
+    )
     assert c.odometry_source == ODOM_WORLD and c.publish_odom and c.publish_odom_tf and not c.publish_wheel_tf
     assert c.publish_wheel_joint_state and not c.legacy_mode
     assert "is not a parameter" not in caplog.text
@@ -300,7 +310,10 @@ def test_p3d_publishes_ground_truth_with_offsets() -> None:
 # --------------------------------------------------------------------------- docs
 def test_plugin_docs_are_up_to_date() -> None:
     out = subprocess.run(
-        [sys.executable, str(REPO / "scripts" / "gen_plugin_docs.py"), "--check"], capture_output=True, text=True, cwd=REPO
+        [sys.executable, str(REPO / "scripts" / "gen_plugin_docs.py"), "--check"],
+        capture_output=True,
+        text=True,
+        cwd=REPO,
     )
     assert out.returncode == 0, out.stdout + out.stderr
 

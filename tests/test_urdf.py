@@ -27,6 +27,7 @@ from gazelle.description._inertia import inertia_from_geometry, inertia_problem
 
 DATA = Path(__file__).parent / "data" / "urdf"
 from _paths import REAL  # noqa: E402
+
 SEED_URDF = DATA / "mybot2.urdf"
 
 
@@ -348,7 +349,9 @@ def test_unsupported_attributes_warn_with_line() -> None:
         "is not supported and is ignored" in text
     )
     assert 'unsupported_attributes.urdf:5: warning: [ATTRIBUTE_UNSUPPORTED] attribute colour="red" of <box>' in text
-    assert 'unsupported_attributes.urdf:9: warning: [ATTRIBUTE_UNSUPPORTED] attribute degrees="true" of <origin>' in text
+    assert (
+        'unsupported_attributes.urdf:9: warning: [ATTRIBUTE_UNSUPPORTED] attribute degrees="true" of <origin>' in text
+    )
     # robot version, xmlns declarations, xsi:schemaLocation and plugin attributes (raw config) do not warn
     assert "version" not in text and "xsi" not in text and "any_attribute_here" not in text
 
@@ -500,8 +503,29 @@ _VALUES = st.one_of(
     st.floats(allow_nan=True, allow_infinity=True).map(repr),
 )
 _TAGS = st.sampled_from(
-    ["link", "joint", "origin", "inertial", "inertia", "mass", "geometry", "box", "mesh", "pose", "frame",
-     "model", "include", "collision", "visual", "plugin", "gazebo", "axis", "limit", "QQQ", "xacro:macro"]
+    [
+        "link",
+        "joint",
+        "origin",
+        "inertial",
+        "inertia",
+        "mass",
+        "geometry",
+        "box",
+        "mesh",
+        "pose",
+        "frame",
+        "model",
+        "include",
+        "collision",
+        "visual",
+        "plugin",
+        "gazebo",
+        "axis",
+        "limit",
+        "QQQ",
+        "xacro:macro",
+    ]
 )
 _OPS = st.lists(
     st.tuples(

@@ -10,16 +10,16 @@ from __future__ import annotations
 import logging
 import os
 import sys
-from typing import Iterable, Mapping
+from collections.abc import Iterable, Mapping
 
 from ..description import (
     Diagnostic,
     ErrorCode,
-    SourceLocation,
     Model,
     ModelLoadError,
     Semantics,
     Severity,
+    SourceLocation,
     World,
     load,
 )

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
-from typing import Optional
 
 import typer
 
@@ -15,7 +14,7 @@ app = typer.Typer(
 )
 
 
-def _load_world_or_exit(world: Optional[Path], arg: list[str]):  # noqa: ANN202 - a World
+def _load_world_or_exit(world: Path | None, arg: list[str]):
     """The world to show (see ``gazelle sim``), or exit 1 with the diagnostics."""
     from ..description import ModelLoadError
     from ._sim import load_world
@@ -39,23 +38,29 @@ def _parse_args(values: list[str]) -> dict[str, str]:
 
 @app.command()
 def sim(
-    world: Optional[Path] = typer.Argument(None, help="World file (.sdf/.world) or a model (.urdf/.xacro/.sdf); default: the embedded empty world."),
-    rtf: Optional[float] = typer.Option(
+    world: Path | None = typer.Argument(
+        None, help="World file (.sdf/.world) or a model (.urdf/.xacro/.sdf); default: the embedded empty world."
+    ),
+    rtf: float | None = typer.Option(
         None,
         "--rtf",
         help="Real-time factor (default: the world's, 1.0); 0 = as fast as possible. While /clock has "
         "subscribers, the clock keeps its resolution: at most 1000 /clock messages per wall second, "
         "so at most 10x real time at the default --clock-rate 100.",
     ),
-    clock_rate: float = typer.Option(100.0, "--clock-rate", help="/clock publish rate in sim-time Hz (0 = every step); default 100."),
+    clock_rate: float = typer.Option(
+        100.0, "--clock-rate", help="/clock publish rate in sim-time Hz (0 = every step); default 100."
+    ),
     paused: bool = typer.Option(False, "--paused", help="Start paused (unpause with /unpause_physics)."),
     arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
     no_viewer: bool = typer.Option(False, "--no-viewer", help="Do not serve the browser viewer."),
     viewer_host: str = typer.Option(
         "127.0.0.1", "--viewer-host", help="Interface the viewer binds to (0.0.0.0: every interface; think twice)."
     ),
-    viewer_port: int = typer.Option(8080, "--viewer-port", help="Viewer port; the next free one if taken; 0 = any free port."),
-    ros_discovery: Optional[str] = typer.Option(
+    viewer_port: int = typer.Option(
+        8080, "--viewer-port", help="Viewer port; the next free one if taken; 0 = any free port."
+    ),
+    ros_discovery: str | None = typer.Option(
         None,
         "--ros-discovery",
         help="ROS discovery range of the server: localhost (default unless ROS_AUTOMATIC_DISCOVERY_RANGE, "
@@ -69,7 +74,7 @@ def sim(
         "(repeatable); see docs/security.md.",
     ),
 ) -> None:
-    """Run a simulation server: /clock, /spawn_entity, /delete_entity and every plugin's topics, and the browser viewer."""
+    """Run a simulation server: /clock, /spawn_entity, /delete_entity, every plugin's topics, and the browser viewer."""
     from ._sim import run_sim
 
     raise typer.Exit(
@@ -88,14 +93,14 @@ def sim(
     )
 
 
-def _discovery(value: Optional[str]) -> Optional[str]:
+def _discovery(value: str | None) -> str | None:
     if value is not None and value.lower() not in ("localhost", "subnet", "off"):
         raise typer.BadParameter(f"--ros-discovery is localhost, subnet or off, got {value!r}")
     return value.lower() if value is not None else None
 
 
 def _origins(values: list[str]) -> tuple[str, ...]:
-    from ..viewer._origin import allowed_origins
+    from ..viewer import allowed_origins
 
     try:
         return allowed_origins(values)
@@ -109,7 +114,7 @@ def _origins(values: list[str]) -> tuple[str, ...]:
 )
 def spawn(ctx: typer.Context) -> None:
     """Spawn an entity like gazebo_ros's spawn_entity.py (-entity NAME -file F | -topic T | -string XML ...)."""
-    from ..ros._spawn import main as spawn_main
+    from ..ros import spawn_main
 
     raise typer.Exit(spawn_main(list(ctx.args)))
 
@@ -129,29 +134,39 @@ def check(
 @app.command()
 def demo(
     out: Path = typer.Option(Path("out/demo"), "--out", help="Where to write the path image and logs."),
-    rtf: float = typer.Option(1.0, "--rtf", help="Real-time factor of the demo (0 = as fast as possible, with sim time)."),
-    snapshot: bool = typer.Option(False, "--snapshot", help="Also write a PNG of the viewer (the square's path trail) to OUT/viewer.png."),
-    record: bool = typer.Option(False, "--record", help="Also record an MP4 of the viewer during the square to OUT/square.mp4."),
+    rtf: float = typer.Option(
+        1.0, "--rtf", help="Real-time factor of the demo (0 = as fast as possible, with sim time)."
+    ),
+    snapshot: bool = typer.Option(
+        False, "--snapshot", help="Also write a PNG of the viewer (the square's path trail) to OUT/viewer.png."
+    ),
+    record: bool = typer.Option(
+        False, "--record", help="Also record an MP4 of the viewer during the square to OUT/square.mp4."
+    ),
 ) -> None:
-    """Start the sim (with its browser viewer), spawn the seed robot, drive one square with square_movement.py, report, stop."""
-    from ..ros._demo import run_demo
+    """Start the sim and its viewer, spawn the seed robot, drive one square with square_movement.py, report, stop."""
+    from ._demo import run_demo
 
     raise typer.Exit(run_demo(out, rtf=rtf, snapshot=snapshot, record=record))
 
 
 @app.command()
 def snapshot(
-    world: Optional[Path] = typer.Option(None, "--world", help="World or model file to show (default: the empty world)."),
+    world: Path | None = typer.Option(None, "--world", help="World or model file to show (default: the empty world)."),
     out: Path = typer.Option(Path("out/snapshot.png"), "--out", help="PNG to write."),
-    attach: Optional[str] = typer.Option(
-        None, "--attach", help="Viewer URL of a running `gazelle sim` (e.g. http://127.0.0.1:8080) instead of a new sim."
+    attach: str | None = typer.Option(
+        None,
+        "--attach",
+        help="Viewer URL of a running `gazelle sim` (e.g. http://127.0.0.1:8080) instead of a new sim.",
     ),
     settle: float = typer.Option(1.0, "--settle", help="Seconds to let the scene load and settle before the shot."),
     arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
-    panel: bool = typer.Option(True, "--panel/--no-panel", help="Show the control panel, or minimize it so the scene fills the view."),
+    panel: bool = typer.Option(
+        True, "--panel/--no-panel", help="Show the control panel, or minimize it so the scene fills the view."
+    ),
 ) -> None:
     """Write a PNG of the browser view, headlessly (Debian's chromium), for docs and bug reports."""
-    from ..viewer._snapshot import run_snapshot
+    from ..viewer import run_snapshot
 
     loaded = None if attach is not None else _load_world_or_exit(world, arg)
     raise typer.Exit(run_snapshot(loaded, out, attach=attach, settle_sec=settle, panel=panel))
@@ -159,21 +174,29 @@ def snapshot(
 
 @app.command("record-video")
 def record_video(
-    world: Optional[Path] = typer.Option(None, "--world", help="World or model file to show (default: the empty world)."),
+    world: Path | None = typer.Option(None, "--world", help="World or model file to show (default: the empty world)."),
     out: Path = typer.Option(
         Path("out/video.mp4"), "--out", help="Video to write; its extension picks the format: .mp4 (H.264) or .gif."
     ),
-    attach: Optional[str] = typer.Option(None, "--attach", help="Viewer URL of a running `gazelle sim` instead of a new sim."),
+    attach: str | None = typer.Option(
+        None, "--attach", help="Viewer URL of a running `gazelle sim` instead of a new sim."
+    ),
     seconds: float = typer.Option(5.0, "--seconds", help="Wall seconds to record."),
-    fps: float = typer.Option(4.0, "--fps", help="Frames per second (headless chromium renders in software: keep it modest)."),
-    drive: Optional[str] = typer.Option(
-        None, "--drive", help="V,W: send this Twist (m/s, rad/s) to the first diff-drive robot of --world before recording."
+    fps: float = typer.Option(
+        4.0, "--fps", help="Frames per second (headless chromium renders in software: keep it modest)."
+    ),
+    drive: str | None = typer.Option(
+        None,
+        "--drive",
+        help="V,W: send this Twist (m/s, rad/s) to the first diff-drive robot of --world before recording.",
     ),
     arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
-    panel: bool = typer.Option(True, "--panel/--no-panel", help="Show the control panel, or minimize it so the scene fills the view."),
+    panel: bool = typer.Option(
+        True, "--panel/--no-panel", help="Show the control panel, or minimize it so the scene fills the view."
+    ),
 ) -> None:
     """Record an MP4 (H.264) or an animated GIF of the browser view, headlessly (Debian's chromium)."""
-    from ..viewer._snapshot import run_record, video_format
+    from ..viewer import run_record, video_format
 
     try:
         video_format(out)  # before loading the world or starting anything
@@ -185,7 +208,7 @@ def record_video(
         try:
             v, w = (float(x) for x in drive.split(","))
         except ValueError:
-            raise typer.BadParameter(f"--drive expects V,W (e.g. 0.2,0.3), got {drive!r}")
+            raise typer.BadParameter(f"--drive expects V,W (e.g. 0.2,0.3), got {drive!r}") from None
         twist = (v, w)
     loaded = None if attach is not None else _load_world_or_exit(world, arg)
     raise typer.Exit(run_record(loaded, out, attach=attach, seconds=seconds, fps=fps, drive=twist, panel=panel))

@@ -12,14 +12,15 @@ from pathlib import Path
 from ..description import Model, ModelLoadError, World, load
 from ..worlds import default_world
 
-
 GIL_SWITCH_INTERVAL_SEC = 0.0002
 SHUTDOWN_DEADLINE_SEC = 2.5
 """SIGINT/SIGTERM end the process within this long, even if a thread is stuck (then with status 1)."""
 
 
 def _force_exit() -> None:
-    print(f"gazelle: shutdown did not finish within {SHUTDOWN_DEADLINE_SEC:g} s; exiting now", file=sys.stderr, flush=True)
+    print(
+        f"gazelle: shutdown did not finish within {SHUTDOWN_DEADLINE_SEC:g} s; exiting now", file=sys.stderr, flush=True
+    )
     os._exit(1)
 
 
@@ -65,9 +66,8 @@ def run_sim(
     except ModelLoadError as err:
         print(str(err), file=sys.stderr)
         return 1
+    from ..ros import RosBridge, choose_discovery_range
     from ..sim import Simulation
-    from ..ros._bridge import RosBridge
-    from ..ros._exposure import choose_discovery_range
 
     # The sim thread holds the GIL while it steps; ROS callbacks (a cmd_vel arriving) wait
     # for the interpreter's switch interval, 5 ms by default: at 30x real time that is

@@ -12,9 +12,12 @@ from __future__ import annotations
 import dataclasses
 import os
 import re
+from collections.abc import Mapping
 from pathlib import Path
-from typing import Mapping
 
+from ._bounded import BoundedWorker as BoundedWorker
+from ._bounded import BoundExceeded as BoundExceeded
+from ._bounded import run_bounded as run_bounded
 from ._diagnostics import Diagnostic as Diagnostic
 from ._diagnostics import DiagnosticSink as DiagnosticSink
 from ._diagnostics import ErrorCode as ErrorCode
@@ -24,14 +27,12 @@ from ._diagnostics import SimError as SimError
 from ._diagnostics import SourceLocation as SourceLocation
 from ._diagnostics import excerpt as excerpt
 from ._diagnostics import reply_text as reply_text
-from ._model import *  # noqa: F401,F403  (the model dataclasses are the public surface)
-from ._model import LoadResult, Model, World
-from ._resources import ResourceResolver as ResourceResolver
 from ._meshes import MeshReadError as MeshReadError
 from ._meshes import load_mesh as load_mesh
-from ._bounded import BoundedWorker as BoundedWorker
-from ._bounded import BoundExceeded as BoundExceeded
-from ._bounded import run_bounded as run_bounded
+from ._model import *  # noqa: F403  (the model dataclasses are the public surface)
+from ._model import LoadResult, Model, World
+from ._resources import ResourceResolver as ResourceResolver
+from ._xacro import expand_bounded as expand_xacro_bounded  # noqa: F401 - public
 
 FORMATS = ("urdf", "xacro", "sdf", "srdf")
 _SUFFIXES = {

@@ -17,8 +17,8 @@ Limits (generous for real robots: TurtleBot3, Husky and Panda expand in well und
 
 from __future__ import annotations
 
-import os
 import json
+import os
 import resource
 import select
 import signal
@@ -121,7 +121,7 @@ class BoundedWorker:
                 if cap > memory:
                     resource.setrlimit(resource.RLIMIT_AS, (cap, cap))
                 self._serve(req_r, rep_w)
-            except BaseException:  # noqa: BLE001 - a child never returns into the parent's code
+            except BaseException:
                 code = 1
             finally:
                 os._exit(code)
@@ -138,7 +138,7 @@ class BoundedWorker:
                 payload = ("ok", self._handler(json.loads(request)))
             except MemoryError:
                 payload = ("memory", None)
-            except (Exception, SystemExit) as err:  # noqa: BLE001 - handed to the parent (a library's sys.exit too)
+            except (Exception, SystemExit) as err:
                 payload = ("error", f"{type(err).__name__}: {err}")
             try:
                 data = json.dumps(payload).encode()
@@ -183,7 +183,9 @@ class BoundedWorker:
         with self._lock:
             self._stop()
 
-    def call(self, request: dict, *, what: str, timeout_sec: float | None = None, timeout_hint: str = "GAZELLE_XACRO_TIMEOUT") -> object:
+    def call(
+        self, request: dict, *, what: str, timeout_sec: float | None = None, timeout_hint: str = "GAZELLE_XACRO_TIMEOUT"
+    ) -> object:
         """Send ``request`` to the worker and return its reply.
 
         Raises:
@@ -206,7 +208,9 @@ class BoundedWorker:
                     reply = _read_message(self._from_child, time.monotonic() + timeout)
                 except _Timeout:
                     self._stop()
-                    raise BoundExceeded(f"{what} took longer than {timeout:g} s and was stopped ({timeout_hint})") from None
+                    raise BoundExceeded(
+                        f"{what} took longer than {timeout:g} s and was stopped ({timeout_hint})"
+                    ) from None
                 except OSError:
                     reply = None
                 if reply is not None:
@@ -218,7 +222,7 @@ class BoundedWorker:
                         f"(memory limit {memory >> 20} MiB, GAZELLE_XACRO_MEMORY_MB)"
                     )
         try:
-            kind, value = json.loads(reply)
+            kind, value = json.loads(reply)  # pyright: ignore[reportArgumentType]
         except ValueError:
             raise BoundExceeded(f"{what} sent back a malformed result") from None
         if kind == "ok":

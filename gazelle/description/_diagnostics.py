@@ -17,7 +17,7 @@ EXCERPT_CHARS = 160
 """The longest excerpt of a user's value that a message echoes (then ``…`` and its length)."""
 MESSAGE_CHARS = 600
 """The longest diagnostic message; error replies go over the wire, so they stay short."""
-_QUOTED = re.compile(r"'[^'\n]{%d,}'|\"[^\"\n]{%d,}\"" % (EXCERPT_CHARS + 1, EXCERPT_CHARS + 1))
+_QUOTED = re.compile(rf"'[^'\n]{{{EXCERPT_CHARS + 1},}}'|\"[^\"\n]{{{EXCERPT_CHARS + 1},}}\"")
 
 
 def excerpt(value: object, limit: int = EXCERPT_CHARS) -> str:
@@ -30,7 +30,9 @@ def excerpt(value: object, limit: int = EXCERPT_CHARS) -> str:
 
 def shorten_message(message: str, limit: int = MESSAGE_CHARS) -> str:
     """Cut every quoted value longer than :data:`EXCERPT_CHARS`, and the whole to ``limit`` characters."""
-    out = _QUOTED.sub(lambda m: m.group(0)[: EXCERPT_CHARS + 1] + f"…{m.group(0)[0]} ({len(m.group(0)) - 2} characters)", message)
+    out = _QUOTED.sub(
+        lambda m: m.group(0)[: EXCERPT_CHARS + 1] + f"…{m.group(0)[0]} ({len(m.group(0)) - 2} characters)", message
+    )
     if len(out) > limit:
         out = out[:limit] + f"… ({len(out)} characters)"
     return out

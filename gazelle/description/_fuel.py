@@ -29,7 +29,9 @@ GROUND_PLANE_SDF = """<?xml version="1.0"?>
       </collision>
       <visual name="visual">
         <geometry><plane><normal>0 0 1</normal><size>100 100</size></plane></geometry>
-        <material><ambient>0.8 0.8 0.8 1</ambient><diffuse>0.8 0.8 0.8 1</diffuse><specular>0.8 0.8 0.8 1</specular></material>
+        <material>
+          <ambient>0.8 0.8 0.8 1</ambient><diffuse>0.8 0.8 0.8 1</diffuse><specular>0.8 0.8 0.8 1</specular>
+        </material>
       </visual>
     </link>
   </model>
@@ -83,7 +85,9 @@ def parse_fuel_uri(uri: str) -> FuelModel | None:
     if m is None:
         return None
     version = m.group("version")
-    return FuelModel(host, unquote(m.group("owner")), unquote(m.group("name")), None if version in (None, "tip") else version)
+    return FuelModel(
+        host, unquote(m.group("owner")), unquote(m.group("name")), None if version in (None, "tip") else version
+    )
 
 
 def cache_roots(environ: dict[str, str] | os._Environ[str] = os.environ) -> list[Path]:

@@ -287,7 +287,7 @@ def inertia_from_geometries(
         tensor += rho * (r @ props.inertia @ r.T + props.volume * (float(d @ d) * np.eye(3) - np.outer(d, d)))
     inertial = Inertial(
         mass=float(total_mass),
-        pose=Pose((float(com[0]), float(com[1]), float(com[2]))),
+        pose=Pose((float(com[0]), float(com[1]), float(com[2]))),  # pyright: ignore[reportIndexIssue]
         ixx=float(tensor[0, 0]),
         ixy=float(tensor[0, 1]),
         ixz=float(tensor[0, 2]),
@@ -328,9 +328,9 @@ def inertia_problem(
         return "inertia is zero"
     moments = np.linalg.eigvalsh(tensor)
     if moments[0] <= 0:
-        return f"inertia is not positive-definite (principal moments {_fmt(moments)})"
+        return f"inertia is not positive-definite (principal moments {_fmt(moments)})"  # pyright: ignore[reportArgumentType]
     if moments[0] + moments[1] < moments[2] * (1 - rtol):
-        return f"principal moments {_fmt(moments)} violate the triangle inequality"
+        return f"principal moments {_fmt(moments)} violate the triangle inequality"  # pyright: ignore[reportArgumentType]
     return None
 
 

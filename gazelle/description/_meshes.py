@@ -27,11 +27,11 @@ def _load(path: str, mtime_ns: int) -> tuple[npt.NDArray[np.float64], npt.NDArra
     try:
         mesh = trimesh.load(path, force="mesh", process=False)
         if getattr(mesh, "units", None) not in (None, "m", "meter", "meters"):
-            mesh.convert_units("meters")
-    except Exception as err:  # noqa: BLE001 - trimesh raises many unrelated types on bad files
+            mesh.convert_units("meters")  # pyright: ignore[reportAttributeAccessIssue]
+    except Exception as err:
         raise MeshReadError(f"cannot read '{os.path.basename(path)}': {err}") from err
-    vertices = np.asarray(mesh.vertices, dtype=np.float64)
-    faces = np.asarray(mesh.faces, dtype=np.int32)
+    vertices = np.asarray(mesh.vertices, dtype=np.float64)  # pyright: ignore[reportAttributeAccessIssue]
+    faces = np.asarray(mesh.faces, dtype=np.int32)  # pyright: ignore[reportAttributeAccessIssue]
     if len(vertices) == 0 or len(faces) == 0:
         raise MeshReadError(f"'{os.path.basename(path)}' has no triangles")
     vertices.setflags(write=False)

@@ -11,7 +11,6 @@ from __future__ import annotations
 import enum
 import math
 from dataclasses import dataclass, field
-from typing import Union
 
 from ._diagnostics import Diagnostic, SourceLocation
 
@@ -85,11 +84,11 @@ class Pose:
     """Unit quaternion, wxyz."""
 
     @staticmethod
-    def from_xyz_rpy(xyz: Vec3 = (0.0, 0.0, 0.0), rpy: Vec3 = (0.0, 0.0, 0.0)) -> "Pose":
+    def from_xyz_rpy(xyz: Vec3 = (0.0, 0.0, 0.0), rpy: Vec3 = (0.0, 0.0, 0.0)) -> Pose:
         """Pose from a translation and fixed-axis roll/pitch/yaw in radians."""
         return Pose(tuple(float(v) for v in xyz), quat_from_rpy(*rpy))  # type: ignore[arg-type]
 
-    def __mul__(self, other: "Pose") -> "Pose":
+    def __mul__(self, other: Pose) -> Pose:
         """Compose: ``X_AB * X_BC = X_AC``."""
         p = quat_rotate(self.orientation, other.position)
         return Pose(
@@ -97,7 +96,7 @@ class Pose:
             quat_mul(self.orientation, other.orientation),
         )
 
-    def inverse(self) -> "Pose":
+    def inverse(self) -> Pose:
         """``X_BA`` from ``X_AB``."""
         qi = quat_conj(self.orientation)
         p = quat_rotate(qi, self.position)
@@ -177,7 +176,7 @@ class Mesh:
     scale: Vec3 = (1.0, 1.0, 1.0)
 
 
-Geometry = Union[Box, Cylinder, Sphere, Capsule, Cone, Ellipsoid, Plane, Mesh]
+Geometry = Box | Cylinder | Sphere | Capsule | Cone | Ellipsoid | Plane | Mesh
 
 
 # --------------------------------------------------------------------------- appearance / contact
@@ -276,7 +275,7 @@ class ConfigElement:
     tag: str
     attributes: tuple[tuple[str, str], ...] = ()
     text: str = ""
-    children: tuple["ConfigElement", ...] = ()
+    children: tuple[ConfigElement, ...] = ()
     location: SourceLocation | None = None
 
     def attr(self, name: str, default: str | None = None) -> str | None:
@@ -286,14 +285,14 @@ class ConfigElement:
                 return v
         return default
 
-    def find(self, tag: str) -> "ConfigElement | None":
+    def find(self, tag: str) -> ConfigElement | None:
         """First direct child with this tag."""
         for c in self.children:
             if c.tag == tag:
                 return c
         return None
 
-    def findall(self, tag: str) -> tuple["ConfigElement", ...]:
+    def findall(self, tag: str) -> tuple[ConfigElement, ...]:
         """All direct children with this tag."""
         return tuple(c for c in self.children if c.tag == tag)
 
@@ -613,5 +612,5 @@ class World:
 class LoadResult:
     """What a loader returns: the description plus every diagnostic (warnings included)."""
 
-    value: Union[Model, World, Semantics]
+    value: Model | World | Semantics
     diagnostics: tuple[Diagnostic, ...] = field(default=())

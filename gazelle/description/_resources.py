@@ -46,7 +46,7 @@ class ResourceResolver:
     trusted_dirs: list[Path] = field(default_factory=list)
     """Folders besides the resource roots whose files may be read: the folder of the file the user named."""
 
-    def trusting(self, folder: str | os.PathLike[str] | None) -> "ResourceResolver":
+    def trusting(self, folder: str | os.PathLike[str] | None) -> ResourceResolver:
         """This resolver, also allowing files under ``folder`` (the folder of a file the user named)."""
         if folder is None:
             return self
@@ -100,7 +100,7 @@ class ResourceResolver:
         uri = uri.strip()
         for scheme in ("package://", "model://"):
             if uri.startswith(scheme):
-                rest = uri[len(scheme):]
+                rest = uri[len(scheme) :]
                 name, _, sub = rest.partition("/")
                 root = self.find_package(name)
                 if root is None:
@@ -158,11 +158,10 @@ class ResourceResolver:
         return any(path == root or root in path.parents for root in self.roots())
 
 
-
 def _local_path(uri: str, base_dir: str | os.PathLike[str] | None) -> Path | None:
     """The file a ``file://`` URI or a plain path names (relative to ``base_dir``), unresolved; None for
     other schemes, or a relative path without a base."""
-    uri = uri[len("file://"):] if uri.startswith("file://") else uri
+    uri = uri[len("file://") :] if uri.startswith("file://") else uri
     if "://" in uri:
         return None
     path = Path(uri)

@@ -33,15 +33,18 @@ import re
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from lxml import etree
+from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
 
 from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
+from ._fuel import BUILTIN as FUEL_BUILTIN
+from ._fuel import FuelModel, cache_roots, find_cached, parse_fuel_uri
+from ._inertia import default_inertial, inertia_from_geometries, inertia_problem
 from ._model import (
-    Cone,
     IDENTITY,
     Box,
     Capsule,
     Collision,
+    Cone,
     ConfigElement,
     Cylinder,
     Ellipsoid,
@@ -74,11 +77,17 @@ from ._model import (
 )
 from ._resources import ResourceResolver
 from ._sdf_frames import FrameNode, Scope, ScopeFrames
-from ._inertia import default_inertial, inertia_from_geometries, inertia_problem
 from ._sdf_text import decode_config, decode_name, prepare
-from ._fuel import BUILTIN as FUEL_BUILTIN
-from ._fuel import FuelModel, cache_roots, find_cached, parse_fuel_uri
-from ._xml import child_elements, element_location, local_name, parse_bool, parse_float, parse_floats, parse_xml, to_config
+from ._xml import (
+    child_elements,
+    element_location,
+    local_name,
+    parse_bool,
+    parse_float,
+    parse_floats,
+    parse_xml,
+    to_config,
+)
 
 Version = tuple[int, int]
 
@@ -333,9 +342,7 @@ class _Loader:
         return None
 
     def warn_extra(self, element: etree._Element, doc: _Doc, why: str) -> None:
-        self.sink.warning(
-            ErrorCode.ELEMENT_UNSUPPORTED, f"<{_tag(element)}> ignored: {why}", self.loc(element, doc)
-        )
+        self.sink.warning(ErrorCode.ELEMENT_UNSUPPORTED, f"<{_tag(element)}> ignored: {why}", self.loc(element, doc))
 
     # ================================================================== small helpers
     def loc(self, element: etree._Element, doc: _Doc) -> SourceLocation:
@@ -400,7 +407,9 @@ class _Loader:
         value = self.number(element, tag, math.nan, doc)
         return None if math.isnan(value) else value
 
-    def vector(self, element: etree._Element | None, tag: str, count: int, default: tuple[float, ...] | None, doc: _Doc):
+    def vector(
+        self, element: etree._Element | None, tag: str, count: int, default: tuple[float, ...] | None, doc: _Doc
+    ):
         """``count`` numbers from a child; default when absent; error + default when malformed."""
         if element is None:
             return default
@@ -466,12 +475,16 @@ class _Loader:
         degrees = parse_bool(child.get("degrees") or "false")
         loc = self.loc(child, doc)
         if degrees is None:
-            self.sink.error(ErrorCode.ATTRIBUTE_INVALID, f"pose 'degrees' must be true/false, got {child.get('degrees')!r}", loc)
+            self.sink.error(
+                ErrorCode.ATTRIBUTE_INVALID, f"pose 'degrees' must be true/false, got {child.get('degrees')!r}", loc
+            )
             degrees = False
         if fmt == "euler_rpy":
             values = parse_floats(text, 6)
             if values is None:
-                self.sink.error(ErrorCode.VALUE_INVALID, f"<pose> must be 6 numbers 'x y z roll pitch yaw', got {text!r}", loc)
+                self.sink.error(
+                    ErrorCode.VALUE_INVALID, f"<pose> must be 6 numbers 'x y z roll pitch yaw', got {text!r}", loc
+                )
                 return IDENTITY, relative_to
             rpy = values[3:]
             if degrees:
@@ -480,7 +493,9 @@ class _Loader:
         if fmt == "quat_xyzw":
             values = parse_floats(text, 7)
             if values is None:
-                self.sink.error(ErrorCode.VALUE_INVALID, f"<pose> must be 7 numbers 'x y z qx qy qz qw', got {text!r}", loc)
+                self.sink.error(
+                    ErrorCode.VALUE_INVALID, f"<pose> must be 7 numbers 'x y z qx qy qz qw', got {text!r}", loc
+                )
                 return IDENTITY, relative_to
             qx, qy, qz, qw = values[3:]
             norm = math.sqrt(qx * qx + qy * qy + qz * qz + qw * qw)
@@ -501,7 +516,9 @@ class _Loader:
         if not filename:
             self.sink.error(ErrorCode.ATTRIBUTE_MISSING, "<plugin> is missing the required 'filename' attribute", loc)
             return None
-        return Plugin(name=(element.get("name") or "").strip(), filename=filename, config=self.config(element, doc), location=loc)
+        return Plugin(
+            name=(element.get("name") or "").strip(), filename=filename, config=self.config(element, doc), location=loc
+        )
 
     # ================================================================== URIs and includes
     def find_model_dir(self, name: str, doc: _Doc) -> Path | None:
@@ -523,7 +540,7 @@ class _Loader:
         """A ``model://``, ``package://``, ``file://`` URI or path as a file system path (may not exist)."""
         uri = uri.strip()
         if uri.startswith("model://"):
-            name, _, sub = uri[len("model://"):].partition("/")
+            name, _, sub = uri[len("model://") :].partition("/")
             root = self.find_model_dir(name, doc)
             if root is None:
                 return None
@@ -596,9 +613,7 @@ class _Loader:
         )
         return None
 
-    def include(
-        self, element: etree._Element, doc: _Doc, depth: int, allow_light: bool
-    ) -> _Built | Light | None:
+    def include(self, element: etree._Element, doc: _Doc, depth: int, allow_light: bool) -> _Built | Light | None:
         """Load an ``<include>``: a model (or, in a world, a light) with the overrides applied."""
         self.check(element, doc, "include")
         loc = self.loc(element, doc)
@@ -607,7 +622,9 @@ class _Loader:
             self.sink.error(ErrorCode.ELEMENT_MISSING, "<include> has no <uri>", loc)
             return None
         if depth >= MAX_NESTING:
-            self.sink.error(ErrorCode.URI_UNRESOLVED, f"includes nest deeper than {MAX_NESTING} (a cycle?) at '{uri}'", loc)
+            self.sink.error(
+                ErrorCode.URI_UNRESOLVED, f"includes nest deeper than {MAX_NESTING} (a cycle?) at '{uri}'", loc
+            )
             return None
         fuel = parse_fuel_uri(uri)
         if fuel is not None:
@@ -616,7 +633,11 @@ class _Loader:
                 return None
             text, source, base = got
         else:
-            path = None if "://" in uri and not uri.startswith(("model://", "package://", "file://")) else self.resolve(uri, doc)
+            path = (
+                None
+                if "://" in uri and not uri.startswith(("model://", "package://", "file://"))
+                else self.resolve(uri, doc)
+            )
             got_file = self.include_file(uri, path, doc, loc)
             if got_file is None:
                 return None
@@ -724,21 +745,37 @@ class _Loader:
                 child_loc = self.loc(child, doc)
                 if tag == "link":
                     link_els.append((child_name, child))
-                    scope.nodes[child_name] = FrameNode(child_name, "link", child_pose, child_rel or "__model__", location=child_loc)
+                    scope.nodes[child_name] = FrameNode(
+                        child_name, "link", child_pose, child_rel or "__model__", location=child_loc
+                    )
                 elif tag == "joint":
                     joint_els.append((child_name, child))
                     child_ref = self.text(child, "child") or ""
                     scope.nodes[child_name] = FrameNode(
-                        child_name, "joint", child_pose, child_rel or child_ref or "__model__", attached_to=child_ref, location=child_loc
+                        child_name,
+                        "joint",
+                        child_pose,
+                        child_rel or child_ref or "__model__",
+                        attached_to=child_ref,
+                        location=child_loc,
                     )
                 else:
                     frame_els.append((child_name, child))
                     attached = (child.get("attached_to") or "").strip() or None
                     scope.nodes[child_name] = FrameNode(
-                        child_name, "frame", child_pose, child_rel or attached or "__model__", attached_to=attached, location=child_loc
+                        child_name,
+                        "frame",
+                        child_pose,
+                        child_rel or attached or "__model__",
+                        attached_to=attached,
+                        location=child_loc,
                     )
             elif tag in ("model", "include"):
-                sub = self.model(child, doc, depth + 1) if tag == "model" else self.include(child, doc, depth, allow_light=False)
+                sub = (
+                    self.model(child, doc, depth + 1)
+                    if tag == "model"
+                    else self.include(child, doc, depth, allow_light=False)
+                )
                 if not isinstance(sub, _Built) or not register(sub.name, "model", child):
                     continue
                 post = IDENTITY
@@ -754,14 +791,22 @@ class _Loader:
                         post = inner.inverse()
                 nested.append(sub)
                 scope.nested[sub.name] = sub.exported
-                scope.nodes[sub.name] = FrameNode(sub.name, "model", sub.pose, sub.relative_to or "__model__", post=post, location=sub.location)
+                scope.nodes[sub.name] = FrameNode(
+                    sub.name, "model", sub.pose, sub.relative_to or "__model__", post=post, location=sub.location
+                )
 
         # -- canonical link
         canonical_attr = (element.get("canonical_link") or "").strip() or None
         if canonical_attr is not None:
             body = scope.body(canonical_attr, loc) if canonical_attr in scope.nodes or "::" in canonical_attr else None
-            if body is None or (canonical_attr in scope.nodes and scope.nodes[canonical_attr].kind != "link" and "::" not in canonical_attr):
-                self.sink.error(ErrorCode.FRAME_INVALID, f"canonical_link '{canonical_attr}' is not a link of model '{name}'", loc)
+            if body is None or (
+                canonical_attr in scope.nodes
+                and scope.nodes[canonical_attr].kind != "link"
+                and "::" not in canonical_attr
+            ):
+                self.sink.error(
+                    ErrorCode.FRAME_INVALID, f"canonical_link '{canonical_attr}' is not a link of model '{name}'", loc
+                )
             else:
                 built.canonical = body
         if built.canonical is None:
@@ -838,7 +883,9 @@ class _Loader:
                     axis=joint.axis,
                     axis2=joint.axis2,
                     screw_thread_pitch=joint.screw_thread_pitch,
-                    mimic=Mimic(prefix + joint.mimic.joint, joint.mimic.multiplier, joint.mimic.offset) if joint.mimic else None,
+                    mimic=Mimic(prefix + joint.mimic.joint, joint.mimic.multiplier, joint.mimic.offset)
+                    if joint.mimic
+                    else None,
                     location=joint.location,
                 )
             )
@@ -899,7 +946,11 @@ class _Loader:
             if col_name is None:
                 continue
             if col_name in seen:
-                self.sink.error(ErrorCode.DUPLICATE_NAME, f"collision name '{col_name}' is used twice in link '{name}'", self.loc(col_el, doc))
+                self.sink.error(
+                    ErrorCode.DUPLICATE_NAME,
+                    f"collision name '{col_name}' is used twice in link '{name}'",
+                    self.loc(col_el, doc),
+                )
                 continue
             seen.add(col_name)
             self.check(col_el, doc, "collision")
@@ -907,7 +958,13 @@ class _Loader:
             if geometry is None:
                 continue
             collisions.append(
-                Collision(col_name, local_pose(col_el), geometry, self.surface(_find(col_el, "surface"), doc), self.loc(col_el, doc))
+                Collision(
+                    col_name,
+                    local_pose(col_el),
+                    geometry,
+                    self.surface(_find(col_el, "surface"), doc),
+                    self.loc(col_el, doc),
+                )
             )
         visuals: list[Visual] = []
         seen = set()
@@ -916,20 +973,34 @@ class _Loader:
             if vis_name is None:
                 continue
             if vis_name in seen:
-                self.sink.error(ErrorCode.DUPLICATE_NAME, f"visual name '{vis_name}' is used twice in link '{name}'", self.loc(vis_el, doc))
+                self.sink.error(
+                    ErrorCode.DUPLICATE_NAME,
+                    f"visual name '{vis_name}' is used twice in link '{name}'",
+                    self.loc(vis_el, doc),
+                )
                 continue
             seen.add(vis_name)
             self.check(vis_el, doc, "visual")
             geometry = self.geometry(vis_el, doc)
             if geometry is None:
                 continue
-            visuals.append(Visual(vis_name, local_pose(vis_el), geometry, self.material(_find(vis_el, "material"), doc), self.loc(vis_el, doc)))
+            visuals.append(
+                Visual(
+                    vis_name,
+                    local_pose(vis_el),
+                    geometry,
+                    self.material(_find(vis_el, "material"), doc),
+                    self.loc(vis_el, doc),
+                )
+            )
         sensors: list[Sensor] = []
         for sen_el in _findall(element, "sensor"):
             sensor = self.sensor(sen_el, doc, local_pose(sen_el))
             if sensor is not None:
                 sensors.append(sensor)
-        inertial = self.inertial(name, _find(element, "inertial"), doc, [(c.pose, c.geometry) for c in collisions], local_pose)
+        inertial = self.inertial(
+            name, _find(element, "inertial"), doc, [(c.pose, c.geometry) for c in collisions], local_pose
+        )
         self_collide = None
         if _find(element, "self_collide") is not None:
             self_collide = self.flag(element, "self_collide", False, doc)
@@ -993,7 +1064,8 @@ class _Loader:
         if inertia_el is None:
             self.sink.warning(
                 ErrorCode.INERTIA_MISSING,
-                f"link '{link}': <inertial> has no <inertia>; deriving it from the collision geometry and mass {mass:g} kg",
+                f"link '{link}': <inertial> has no <inertia>; "
+                f"deriving it from the collision geometry and mass {mass:g} kg",
                 loc,
             )
             return derive_inertial(shapes, mass)
@@ -1024,7 +1096,9 @@ class _Loader:
         element = _find(owner, "geometry")
         owner_loc = self.loc(owner, doc)
         if element is None:
-            self.sink.error(ErrorCode.ELEMENT_MISSING, f"<{_tag(owner)}> '{owner.get('name')}' has no <geometry>", owner_loc)
+            self.sink.error(
+                ErrorCode.ELEMENT_MISSING, f"<{_tag(owner)}> '{owner.get('name')}' has no <geometry>", owner_loc
+            )
             return None
         shapes = [c for c in child_elements(element) if ":" not in _tag(c)]
         if not shapes:
@@ -1044,7 +1118,7 @@ class _Loader:
 
         if kind == "box":
             size = self.vector(shape, "size", 3, (1.0, 1.0, 1.0), doc)
-            return Box(size) if positive(*size) else None
+            return Box(size) if positive(*size) else None  # pyright: ignore[reportArgumentType, reportOptionalIterable]
         if kind in ("cylinder", "capsule"):
             default_r = 1.0 if kind == "cylinder" else 0.5
             radius = self.number(shape, "radius", default_r, doc)
@@ -1061,11 +1135,11 @@ class _Loader:
             return Sphere(radius) if positive(radius) else None
         if kind == "ellipsoid":
             radii = self.vector(shape, "radii", 3, (1.0, 1.0, 1.0), doc)
-            return Ellipsoid(radii) if positive(*radii) else None
+            return Ellipsoid(radii) if positive(*radii) else None  # pyright: ignore[reportArgumentType, reportOptionalIterable]
         if kind == "plane":
             normal = self.vector(shape, "normal", 3, (0.0, 0.0, 1.0), doc)
             size = self.vector(shape, "size", 2, Plane().size, doc)
-            n = math.sqrt(sum(v * v for v in normal))
+            n = math.sqrt(sum(v * v for v in normal))  # pyright: ignore[reportOptionalIterable]
             if n < 1e-12:
                 self.sink.error(ErrorCode.GEOMETRY_INVALID, "<plane> normal has zero length", loc)
                 return None
@@ -1079,15 +1153,19 @@ class _Loader:
                 self.sink.error(ErrorCode.ELEMENT_MISSING, "<mesh> has no <uri>", loc)
                 return None
             scale = self.vector(shape, "scale", 3, (1.0, 1.0, 1.0), doc)
-            path = self.resolve(uri, doc) if ("://" not in uri or uri.startswith(("model://", "package://", "file://"))) else None
+            path = (
+                self.resolve(uri, doc)
+                if ("://" not in uri or uri.startswith(("model://", "package://", "file://")))
+                else None
+            )
             if path is None or not path.is_file():
                 why = f": {self.resolver.unresolved_reason(uri, doc.base_dir)}" if path is None else ""
                 self.sink.warning(ErrorCode.MESH_NOT_FOUND, f"mesh '{uri}' not found{why}", loc)
-                return Mesh(uri, None, scale)
+                return Mesh(uri, None, scale)  # pyright: ignore[reportArgumentType]
             if not self.resolver.allowed(path):
                 self.sink.warning(ErrorCode.URI_UNRESOLVED, f"mesh {self.resolver.refusal(uri)}", loc)
-                return Mesh(uri, None, scale)
-            return Mesh(uri, str(path), scale)
+                return Mesh(uri, None, scale)  # pyright: ignore[reportArgumentType]
+            return Mesh(uri, str(path), scale)  # pyright: ignore[reportArgumentType]
         if kind == "empty":
             return None
         self.sink.warning(
@@ -1135,11 +1213,15 @@ class _Loader:
             try:
                 bitmask = int(raw, 0)
             except ValueError:
-                self.sink.error(ErrorCode.VALUE_INVALID, f"<collide_bitmask> must be an integer, got {raw!r}", self.loc(_find(contact, "collide_bitmask"), doc))  # type: ignore[arg-type]
+                self.sink.error(
+                    ErrorCode.VALUE_INVALID,
+                    f"<collide_bitmask> must be an integer, got {raw!r}",
+                    self.loc(_find(contact, "collide_bitmask"), doc),
+                )  # type: ignore[arg-type]
         return Surface(
             mu=mu,
             mu2=mu2,
-            fdir1=self.vector(ode, "fdir1", 3, None, doc),
+            fdir1=self.vector(ode, "fdir1", 3, None, doc),  # pyright: ignore[reportArgumentType]
             slip1=self.opt_number(ode, "slip1", doc),
             slip2=self.opt_number(ode, "slip2", doc),
             torsional=self.opt_number(torsional, "coefficient", doc),
@@ -1170,10 +1252,10 @@ class _Loader:
                 texture = self.text(workflow, "albedo_map") or texture
         return Material(
             name=name,
-            diffuse=self.color(element, "diffuse", doc),
-            ambient=self.color(element, "ambient", doc),
-            specular=self.color(element, "specular", doc),
-            emissive=self.color(element, "emissive", doc),
+            diffuse=self.color(element, "diffuse", doc),  # pyright: ignore[reportArgumentType]
+            ambient=self.color(element, "ambient", doc),  # pyright: ignore[reportArgumentType]
+            specular=self.color(element, "specular", doc),  # pyright: ignore[reportArgumentType]
+            emissive=self.color(element, "emissive", doc),  # pyright: ignore[reportArgumentType]
             texture=texture,
         )
 
@@ -1182,7 +1264,9 @@ class _Loader:
         loc = self.loc(element, doc)
         kind = (element.get("type") or "").strip()
         if not kind:
-            self.sink.error(ErrorCode.ATTRIBUTE_MISSING, f"<sensor> '{name}' is missing the required 'type' attribute", loc)
+            self.sink.error(
+                ErrorCode.ATTRIBUTE_MISSING, f"<sensor> '{name}' is missing the required 'type' attribute", loc
+            )
             return None
         if name is None:
             return None
@@ -1205,10 +1289,14 @@ class _Loader:
         self.check(element, doc, "joint")
         raw_type = (element.get("type") or "").strip()
         if not raw_type:
-            self.sink.error(ErrorCode.ATTRIBUTE_MISSING, f"joint '{name}' is missing the required 'type' attribute", loc)
+            self.sink.error(
+                ErrorCode.ATTRIBUTE_MISSING, f"joint '{name}' is missing the required 'type' attribute", loc
+            )
             return
         if raw_type == "gearbox":
-            self.sink.warning(ErrorCode.JOINT_TYPE_INVALID, f"joint '{name}': type 'gearbox' is not supported; joint skipped", loc)
+            self.sink.warning(
+                ErrorCode.JOINT_TYPE_INVALID, f"joint '{name}': type 'gearbox' is not supported; joint skipped", loc
+            )
             return
         jtype = _JOINT_TYPES.get(raw_type)
         if jtype is None:
@@ -1219,7 +1307,11 @@ class _Loader:
             )
             return
         if raw_type == "revolute2":
-            self.sink.warning(ErrorCode.JOINT_TYPE_INVALID, f"joint '{name}': type 'revolute2' is not supported; loaded as 'universal'", loc)
+            self.sink.warning(
+                ErrorCode.JOINT_TYPE_INVALID,
+                f"joint '{name}': type 'revolute2' is not supported; loaded as 'universal'",
+                loc,
+            )
         ends = []
         for role, code in (("parent", ErrorCode.JOINT_PARENT_INVALID), ("child", ErrorCode.JOINT_CHILD_INVALID)):
             el = _find(element, role)
@@ -1241,7 +1333,9 @@ class _Loader:
             ends.append(body)
         parent, child = ends
         if parent == child:
-            self.sink.error(ErrorCode.JOINT_CHILD_INVALID, f"joint '{name}': parent and child are the same link '{child}'", loc)
+            self.sink.error(
+                ErrorCode.JOINT_CHILD_INVALID, f"joint '{name}': parent and child are the same link '{child}'", loc
+            )
             return
         X_MJ = scope.pose(name, loc)
         X_MC = scope.pose(child, loc)
@@ -1251,7 +1345,11 @@ class _Loader:
         axes = []
         for axis_tag in ("axis", "axis2"):
             axis_el = _find(element, axis_tag)
-            if axis_el is None or jtype not in _AXIS_JOINTS or (axis_tag == "axis2" and jtype is not JointType.UNIVERSAL):
+            if (
+                axis_el is None
+                or jtype not in _AXIS_JOINTS
+                or (axis_tag == "axis2" and jtype is not JointType.UNIVERSAL)
+            ):
                 axes.append(None)
                 continue
             axes.append(self.axis(name, axis_el, doc, scope, X_MJ))
@@ -1297,20 +1395,22 @@ class _Loader:
         expressed_in = None
         if doc.version <= (1, 4):
             expressed_in = "__model__"
-        elif _find(element, "use_parent_model_frame") is not None and self.flag(element, "use_parent_model_frame", False, doc):
+        elif _find(element, "use_parent_model_frame") is not None and self.flag(
+            element, "use_parent_model_frame", False, doc
+        ):
             expressed_in = "__model__"
         if xyz_el is not None and doc.version >= (1, 7):
             expressed_in = (xyz_el.get("expressed_in") or "").strip() or expressed_in
         if expressed_in is not None and expressed_in != joint:
             X_MF = scope.pose(expressed_in, loc)
             if X_MF is not None:
-                xyz = quat_rotate(quat_conj(X_MJ.orientation), quat_rotate(X_MF.orientation, xyz))
-        norm = math.sqrt(sum(v * v for v in xyz))
+                xyz = quat_rotate(quat_conj(X_MJ.orientation), quat_rotate(X_MF.orientation, xyz))  # pyright: ignore[reportArgumentType]
+        norm = math.sqrt(sum(v * v for v in xyz))  # pyright: ignore[reportOptionalIterable]
         if norm < 1e-12:
             self.sink.error(ErrorCode.JOINT_AXIS_INVALID, f"joint '{joint}': axis xyz has zero length", loc)
             norm = 1.0
             xyz = (0.0, 0.0, 1.0)
-        xyz = tuple(v / norm for v in xyz)
+        xyz = tuple(v / norm for v in xyz)  # pyright: ignore[reportOptionalIterable]
         limit_el = _find(element, "limit")
         limit = JointLimit()
         if limit_el is not None:
@@ -1320,7 +1420,11 @@ class _Loader:
             effort = self.number(limit_el, "effort", -1.0, doc)
             velocity = self.number(limit_el, "velocity", -1.0, doc)
             if lower > upper:
-                self.sink.error(ErrorCode.VALUE_INVALID, f"joint '{joint}': limit lower {lower:g} > upper {upper:g}", self.loc(limit_el, doc))
+                self.sink.error(
+                    ErrorCode.VALUE_INVALID,
+                    f"joint '{joint}': limit lower {lower:g} > upper {upper:g}",
+                    self.loc(limit_el, doc),
+                )
             limit = JointLimit(
                 lower=lower if lower > -_UNLIMITED else None,
                 upper=upper if upper < _UNLIMITED else None,
@@ -1339,9 +1443,15 @@ class _Loader:
         if mimic_el is not None:
             leader = (mimic_el.get("joint") or "").strip()
             if not leader:
-                self.sink.error(ErrorCode.ATTRIBUTE_MISSING, "<mimic> is missing the required 'joint' attribute", self.loc(mimic_el, doc))
+                self.sink.error(
+                    ErrorCode.ATTRIBUTE_MISSING,
+                    "<mimic> is missing the required 'joint' attribute",
+                    self.loc(mimic_el, doc),
+                )
             else:
-                mimic = Mimic(leader, self.number(mimic_el, "multiplier", 1.0, doc), self.number(mimic_el, "offset", 0.0, doc))
+                mimic = Mimic(
+                    leader, self.number(mimic_el, "multiplier", 1.0, doc), self.number(mimic_el, "offset", 0.0, doc)
+                )
         return JointAxis(xyz, limit, dynamics), mimic  # type: ignore[arg-type]
 
     # ================================================================== worlds
@@ -1353,7 +1463,11 @@ class _Loader:
         self.check(element, doc, "light")
         kind = (element.get("type") or "point").strip()
         if kind not in ("directional", "point", "spot"):
-            self.sink.error(ErrorCode.ATTRIBUTE_INVALID, f"light '{name}' type must be directional, point or spot, got {kind!r}", loc)
+            self.sink.error(
+                ErrorCode.ATTRIBUTE_INVALID,
+                f"light '{name}' type must be directional, point or spot, got {kind!r}",
+                loc,
+            )
             return None
         pose, rel = self.pose(element, doc)
         if rel not in (None, "world"):
@@ -1370,9 +1484,9 @@ class _Loader:
             name=name,
             type=kind,
             pose=pose,
-            diffuse=self.color(element, "diffuse", doc) or default.diffuse,
-            specular=self.color(element, "specular", doc) or default.specular,
-            direction=self.vector(element, "direction", 3, default.direction, doc),
+            diffuse=self.color(element, "diffuse", doc) or default.diffuse,  # pyright: ignore[reportArgumentType]
+            specular=self.color(element, "specular", doc) or default.specular,  # pyright: ignore[reportArgumentType]
+            direction=self.vector(element, "direction", 3, default.direction, doc),  # pyright: ignore[reportArgumentType]
             cast_shadows=self.flag(element, "cast_shadows", False, doc),
             attenuation_range=self.opt_number(attenuation, "range", doc),
             location=loc,
@@ -1383,7 +1497,10 @@ class _Loader:
         loc = self.loc(element, doc)
         self.check(element, doc, "world")
         physics_els = _findall(element, "physics")
-        physics_el = next((p for p in physics_els if parse_bool(p.get("default") or "") is True), physics_els[0] if physics_els else None)
+        physics_el = next(
+            (p for p in physics_els if parse_bool(p.get("default") or "") is True),
+            physics_els[0] if physics_els else None,
+        )
         if physics_el is not None:
             self.check(physics_el, doc, "physics")
         gravity = (0.0, 0.0, -9.8)
@@ -1393,7 +1510,11 @@ class _Loader:
             gravity = self.vector(physics_el, "gravity", 3, gravity, doc)
         default_physics = PhysicsSettings()
         step = self.number(physics_el, "max_step_size", default_physics.max_step_size_sec, doc)
-        rate_tag = "update_rate" if doc.version <= (1, 3) and physics_el is not None and _find(physics_el, "update_rate") is not None else "real_time_update_rate"
+        rate_tag = (
+            "update_rate"
+            if doc.version <= (1, 3) and physics_el is not None and _find(physics_el, "update_rate") is not None
+            else "real_time_update_rate"
+        )
         physics = PhysicsSettings(
             max_step_size_sec=step,
             real_time_factor=self.number(physics_el, "real_time_factor", default_physics.real_time_factor, doc),
@@ -1402,16 +1523,22 @@ class _Loader:
         if physics_el is not None:
             for value, what in ((physics.max_step_size_sec, "max_step_size"),):
                 if not value > 0:
-                    self.sink.error(ErrorCode.VALUE_INVALID, f"<{what}> must be > 0, got {value:g}", self.loc(physics_el, doc))
+                    self.sink.error(
+                        ErrorCode.VALUE_INVALID, f"<{what}> must be > 0, got {value:g}", self.loc(physics_el, doc)
+                    )
             if physics.real_time_factor < 0 or physics.real_time_update_rate_hz < 0:
-                self.sink.error(ErrorCode.VALUE_INVALID, "real_time_factor and real_time_update_rate must be >= 0", self.loc(physics_el, doc))
+                self.sink.error(
+                    ErrorCode.VALUE_INVALID,
+                    "real_time_factor and real_time_update_rate must be >= 0",
+                    self.loc(physics_el, doc),
+                )
         scene_el = _find(element, "scene")
         scene = Scene()
         if scene_el is not None:
             self.check(scene_el, doc, "scene")
             scene = Scene(
-                ambient=self.color(scene_el, "ambient", doc) or scene.ambient,
-                background=self.color(scene_el, "background", doc) or scene.background,
+                ambient=self.color(scene_el, "ambient", doc) or scene.ambient,  # pyright: ignore[reportArgumentType]
+                background=self.color(scene_el, "background", doc) or scene.background,  # pyright: ignore[reportArgumentType]
                 shadows=self.flag(scene_el, "shadows", scene.shadows, doc),
                 grid=self.flag(scene_el, "grid", scene.grid, doc),
             )
@@ -1434,12 +1561,23 @@ class _Loader:
                 if frame_name is None:
                     continue
                 if frame_name in names:
-                    self.sink.error(ErrorCode.DUPLICATE_NAME, f"name '{frame_name}' is used twice in world '{name}'", self.loc(child, doc))
+                    self.sink.error(
+                        ErrorCode.DUPLICATE_NAME,
+                        f"name '{frame_name}' is used twice in world '{name}'",
+                        self.loc(child, doc),
+                    )
                     continue
                 names.add(frame_name)
                 fpose, frel = self.pose(child, doc)
                 attached = (child.get("attached_to") or "").strip() or None
-                scope.nodes[frame_name] = FrameNode(frame_name, "frame", fpose, frel or attached or "world", attached_to=attached, location=self.loc(child, doc))
+                scope.nodes[frame_name] = FrameNode(
+                    frame_name,
+                    "frame",
+                    fpose,
+                    frel or attached or "world",
+                    attached_to=attached,
+                    location=self.loc(child, doc),
+                )
                 continue
             else:
                 continue
@@ -1447,19 +1585,29 @@ class _Loader:
                 light_items.append(sub)
             elif isinstance(sub, _Built):
                 if sub.name in names:
-                    self.sink.error(ErrorCode.DUPLICATE_NAME, f"model name '{sub.name}' is used twice in world '{name}'", sub.location)
+                    self.sink.error(
+                        ErrorCode.DUPLICATE_NAME,
+                        f"model name '{sub.name}' is used twice in world '{name}'",
+                        sub.location,
+                    )
                     continue
                 names.add(sub.name)
                 post = IDENTITY
                 if sub.placement_frame is not None:
                     inner = sub.exported.poses.get(sub.placement_frame)
                     if inner is None:
-                        self.sink.error(ErrorCode.FRAME_INVALID, f"placement_frame '{sub.placement_frame}' is not a frame of model '{sub.name}'", sub.location)
+                        self.sink.error(
+                            ErrorCode.FRAME_INVALID,
+                            f"placement_frame '{sub.placement_frame}' is not a frame of model '{sub.name}'",
+                            sub.location,
+                        )
                     else:
                         post = inner.inverse()
                 builts.append(sub)
                 scope.nested[sub.name] = sub.exported
-                scope.nodes[sub.name] = FrameNode(sub.name, "model", sub.pose, sub.relative_to or "world", post=post, location=sub.location)
+                scope.nodes[sub.name] = FrameNode(
+                    sub.name, "model", sub.pose, sub.relative_to or "world", post=post, location=sub.location
+                )
         models = []
         for sub in builts:
             X_WM = scope.pose(sub.name, sub.location)

@@ -82,7 +82,7 @@ class Scope:
         node = self.nodes.get(name)
         if node is not None:
             if name in _stack:
-                cycle = " -> ".join(_stack[_stack.index(name):] + (name,))
+                cycle = " -> ".join(_stack[_stack.index(name) :] + (name,))
                 self._error(ErrorCode.FRAME_CYCLE, f"cycle in pose relative_to: {cycle}", node.location)
                 self._poses[name] = _FAILED
                 return None
@@ -115,7 +115,7 @@ class Scope:
         result: object
         if node is not None:
             if name in _stack:
-                cycle = " -> ".join(_stack[_stack.index(name):] + (name,))
+                cycle = " -> ".join(_stack[_stack.index(name) :] + (name,))
                 self._error(ErrorCode.FRAME_CYCLE, f"cycle in attached_to: {cycle}", node.location)
                 self._bodies[name] = _FAILED
                 return None

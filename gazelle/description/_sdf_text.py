@@ -66,7 +66,7 @@ def prepare(text: str) -> tuple[str, bool]:
         text = text[1:]
     decl = _DECL.search(text)
     if decl is not None and decl.start() > 0 and _LEADING_JUNK.match(text[: decl.start()]):
-        text = text[: decl.start()] + _blank(decl.group(0)) + text[decl.end():]
+        text = text[: decl.start()] + _blank(decl.group(0)) + text[decl.end() :]
     if ":" not in text:
         return text, False
     rewritten = _TOKEN.sub(_rewrite_tag, text)

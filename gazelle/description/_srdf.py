@@ -14,7 +14,7 @@ reads top-level ones, but the author's intent is plain).
 
 from __future__ import annotations
 
-from lxml import etree
+from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
 
 from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
 from ._model import (
@@ -82,7 +82,9 @@ class _Reader:
     def robot(self, root: etree._Element) -> Semantics | None:
         if local_name(root) != "robot":
             self.sink.error(
-                ErrorCode.ROOT_ELEMENT_INVALID, f"SRDF root element must be <robot>, got <{local_name(root)}>", self.loc(root)
+                ErrorCode.ROOT_ELEMENT_INVALID,
+                f"SRDF root element must be <robot>, got <{local_name(root)}>",
+                self.loc(root),
             )
             return None
         robot_name = self.attr(root, "name") or ""
@@ -139,7 +141,9 @@ class _Reader:
         # references between SRDF elements
         for ref, element in subgroup_refs:
             if ref not in group_els:
-                self.sink.warning(ErrorCode.SRDF_REFERENCE_INVALID, f"subgroup '{ref}' is not a defined group", self.loc(element))
+                self.sink.warning(
+                    ErrorCode.SRDF_REFERENCE_INVALID, f"subgroup '{ref}' is not a defined group", self.loc(element)
+                )
         for state, element in states:
             if state.group not in group_els:
                 self.sink.warning(

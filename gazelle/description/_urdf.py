@@ -19,7 +19,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from lxml import etree
+from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
 
 from . import _inertia
 from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
@@ -477,9 +477,9 @@ class _Reader:
             child=child,
             origin=self.pose(element),
             axis=axis,
-            mimic=self.optional(element, "mimic", self.mimic),
-            safety_controller=self.optional(element, "safety_controller", self.safety_controller),
-            calibration=self.optional(element, "calibration", self.calibration),
+            mimic=self.optional(element, "mimic", self.mimic),  # pyright: ignore[reportArgumentType]
+            safety_controller=self.optional(element, "safety_controller", self.safety_controller),  # pyright: ignore[reportArgumentType]
+            calibration=self.optional(element, "calibration", self.calibration),  # pyright: ignore[reportArgumentType]
             location=self.loc(element),
         )
 
@@ -513,7 +513,7 @@ class _Reader:
         return JointAxis(
             tuple(v / norm for v in xyz),  # type: ignore[arg-type]
             limit=self.limit(element, joint, jtype),
-            dynamics=self.optional(element, "dynamics", self.dynamics) or JointDynamics(),
+            dynamics=self.optional(element, "dynamics", self.dynamics) or JointDynamics(),  # pyright: ignore[reportArgumentType]
         )
 
     def limit(self, element: etree._Element, joint: str, jtype: JointType) -> JointLimit:
@@ -599,7 +599,7 @@ class _Reader:
             name=name,
             type=stype,
             pose=pose,
-            update_rate_hz=rate if rate is not None else 0.0,
+            update_rate_hz=rate if rate is not None else 0.0,  # pyright: ignore[reportArgumentType]
             always_on=bool(always_on),
             topic=(element.findtext("topic") or "").strip(),
             config=to_config(element, self.source),
@@ -697,9 +697,9 @@ class _Reader:
         for child in child_elements(root):
             tag = local_name(child)
             if tag == "link":
-                self.add_unique(doc.links, self.link(child, doc.materials), "link", child)
+                self.add_unique(doc.links, self.link(child, doc.materials), "link", child)  # pyright: ignore[reportArgumentType]
             elif tag == "joint":
-                self.add_unique(doc.joints, self.joint(child), "joint", child)
+                self.add_unique(doc.joints, self.joint(child), "joint", child)  # pyright: ignore[reportArgumentType]
             elif tag == "gazebo":
                 gazebo_blocks.append(child)  # after all links and joints are known
             elif tag == "transmission":
@@ -715,7 +715,9 @@ class _Reader:
                 self.unsupported(child, f"<{tag}> in <robot>")
         for block in gazebo_blocks:
             if fragment and block.get("reference") is not None:
-                doc.gazebo.append(GazeboExtension(block.get("reference"), to_config(block, self.source), self.loc(block)))
+                doc.gazebo.append(
+                    GazeboExtension(block.get("reference"), to_config(block, self.source), self.loc(block))
+                )
             else:
                 self.gazebo(block, doc)
         return None if name is None else doc
@@ -739,7 +741,7 @@ class _Reader:
                         ErrorCode.DUPLICATE_NAME, f"material '{name}' is defined more than once; the first is used", el
                     )
                 continue
-            named[name] = self.material(el, named)
+            named[name] = self.material(el, named)  # pyright: ignore[reportArgumentType]
         return named
 
     def add_unique(self, table: dict[str, object], item: object, what: str, element: etree._Element) -> None:
@@ -982,7 +984,11 @@ def _drop_massless_links(doc: _Document, reader: _Reader) -> None:
             todo.extend(j.child for j in children.get(child, []))
         dropped.update([name, *below])
         what = f"its joint '{up.name}'" if up is not None else "it is the root"
-        tail = f" and the {len(below)} link(s) below it ({', '.join(below[:4])}{', ...' if len(below) > 4 else ''})" if below else ""
+        tail = (
+            f" and the {len(below)} link(s) below it ({', '.join(below[:4])}{', ...' if len(below) > 4 else ''})"
+            if below
+            else ""
+        )
         reader.sink.warning(
             ErrorCode.INERTIA_MISSING,
             f"link '{name}' has no <inertial> with mass > 0 (nor has anything fixed to it): Gazebo does not model "

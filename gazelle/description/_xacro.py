@@ -86,10 +86,10 @@ class _LineBuilder(expatbuilder.ExpatBuilderNS):
     def start_element_handler(self, name: str, attributes: list[str]) -> None:
         super().start_element_handler(name, attributes)
         node = self.curNode
-        line = int(self._parser.CurrentLineNumber)
+        line = int(self._parser.CurrentLineNumber)  # pyright: ignore[reportAttributeAccessIssue]
         node.setUserData(_USER_DATA_KEY, (self._file, line), _COPY_ON_CLONE)
-        if not node.tagName.startswith("xacro:"):  # xacro checks its own tags' attributes
-            node.setAttribute(LOCATION_ATTRIBUTE, encode_location(self._file, line))
+        if not node.tagName.startswith("xacro:"):  # xacro checks its own tags' attributes  # pyright: ignore[reportAttributeAccessIssue]
+            node.setAttribute(LOCATION_ATTRIBUTE, encode_location(self._file, line))  # pyright: ignore[reportAttributeAccessIssue]
 
 
 def _parse_located(data: str | bytes, file: str) -> xml.dom.minidom.Document:
@@ -314,7 +314,7 @@ def expand(
             return None
         if not _keeps_locations(doc):
             _strip_locations(doc)
-        return doc.documentElement.toxml()
+        return doc.documentElement.toxml()  # pyright: ignore[reportOptionalMemberAccess]
 
 
 def _expand_request(request: dict) -> tuple[str | None, list[tuple[str, str, str, str | None, int | None]]]:
@@ -325,8 +325,13 @@ def _expand_request(request: dict) -> tuple[str | None, list[tuple[str, str, str
     sink = DiagnosticSink(strict=request["strict"])
     out = expand(request["text"], source=request["source"], args=request["args"], sink=sink, resolver=resolver)
     items = [
-        (d.code.value, d.severity.value, d.message, d.location.file if d.location else None,
-         d.location.line if d.location else None)
+        (
+            d.code.value,
+            d.severity.value,
+            d.message,
+            d.location.file if d.location else None,
+            d.location.line if d.location else None,
+        )
         for d in sink.items
     ]
     return out, items

@@ -7,8 +7,8 @@ an entity's systems add actuators in between. Systems read and command the world
 This package imports nothing from the systems, the runtime or ROS.
 """
 
-from ._builder import BuildError as BuildError
 from ._builder import SEP as SEP
+from ._builder import BuildError as BuildError
 from ._convex import prepare as prepare_meshes
 from ._handles import ActuatorHandle as ActuatorHandle
 from ._handles import ActuatorKind as ActuatorKind

@@ -59,14 +59,15 @@ from ..description import (
     JointType,
     Link,
     Mesh,
+    MeshReadError,
     Model,
     Plane,
     Pose,
     Sphere,
+    load_mesh,
+    quat_rotate,
 )
-from ..description import MeshReadError, load_mesh
 from ._convex import collision_parts
-from ..description import quat_rotate
 
 _log = logging.getLogger("gazelle.physics")
 
@@ -279,13 +280,18 @@ def _set_inertial(body: mujoco.MjsBody, link: Link) -> None:
         return
     body.explicitinertial = True
     body.mass = max(inertial.mass, MIN_MASS)
-    body.ipos = list(inertial.pose.position)
-    body.iquat = list(inertial.pose.orientation)
+    body.ipos = list(inertial.pose.position)  # pyright: ignore[reportAttributeAccessIssue]
+    body.iquat = list(inertial.pose.orientation)  # pyright: ignore[reportAttributeAccessIssue]
     # an isotropic 1e-6 of the trace absorbs the rounding the loader tolerates (A + B >= C within rtol 1e-6,
     # e.g. TurtleBot3's thin-disk wheels, A + B == C), which MuJoCo's exact check would reject
     eps = 1e-6 * (inertial.ixx + inertial.iyy + inertial.izz)
-    body.fullinertia = [
-        inertial.ixx + eps, inertial.iyy + eps, inertial.izz + eps, inertial.ixy, inertial.ixz, inertial.iyz
+    body.fullinertia = [  # pyright: ignore[reportAttributeAccessIssue]
+        inertial.ixx + eps,
+        inertial.iyy + eps,
+        inertial.izz + eps,
+        inertial.ixy,
+        inertial.ixz,
+        inertial.iyz,
     ]
 
 
@@ -304,23 +310,35 @@ def _add_joint_dofs(spec: mujoco.MjSpec, body: mujoco.MjsBody, joint: Joint, nam
 
     def add(kind: mujoco.mjtJoint, jname: str, jaxis: list[float], limited: bool) -> mujoco.MjsJoint:
         j = body.add_joint(name=jname, type=kind, pos=pos, axis=jaxis)
-        if limited and limit is not None and limit.lower is not None and limit.upper is not None and limit.upper >= limit.lower:
+        if (
+            limited
+            and limit is not None
+            and limit.lower is not None
+            and limit.upper is not None
+            and limit.upper >= limit.lower
+        ):
             j.limited = mujoco.mjtLimited.mjLIMITED_TRUE
-            j.range = [limit.lower, limit.upper]
+            j.range = [limit.lower, limit.upper]  # pyright: ignore[reportAttributeAccessIssue]
         else:
             j.limited = mujoco.mjtLimited.mjLIMITED_FALSE
         if dyn is not None:
-            j.damping = [dyn.damping, 0.0, 0.0]  # MuJoCo 4: polynomial coefficients
+            j.damping = [dyn.damping, 0.0, 0.0]  # MuJoCo 4: polynomial coefficients  # pyright: ignore[reportAttributeAccessIssue]
             j.frictionloss = dyn.friction
             if dyn.spring_stiffness:
-                j.stiffness = [dyn.spring_stiffness, 0.0, 0.0]
+                j.stiffness = [dyn.spring_stiffness, 0.0, 0.0]  # pyright: ignore[reportAttributeAccessIssue]
                 j.springref = dyn.spring_reference
-        if limit is not None and limit.effort is not None and limit.effort > 0 and kind in (
-            mujoco.mjtJoint.mjJNT_HINGE,
-            mujoco.mjtJoint.mjJNT_SLIDE,
+        if (
+            limit is not None
+            and limit.effort is not None
+            and limit.effort > 0
+            and kind
+            in (
+                mujoco.mjtJoint.mjJNT_HINGE,
+                mujoco.mjtJoint.mjJNT_SLIDE,
+            )
         ):
             j.actfrclimited = mujoco.mjtLimited.mjLIMITED_TRUE
-            j.actfrcrange = [-limit.effort, limit.effort]
+            j.actfrcrange = [-limit.effort, limit.effort]  # pyright: ignore[reportAttributeAccessIssue]
         j.armature = JOINT_ARMATURE
         names.append(jname)
         return j
@@ -364,7 +382,7 @@ def _add_joint_dofs(spec: mujoco.MjSpec, body: mujoco.MjsBody, joint: Joint, nam
         add(mujoco.mjtJoint.mjJNT_HINGE, name, list(n), False)
     elif t is JointType.FLOATING:
         for i, ax in enumerate(([1, 0, 0], [0, 1, 0], [0, 0, 1])):
-            add(mujoco.mjtJoint.mjJNT_SLIDE, f"{name}#t{i}", ax, False)
+            add(mujoco.mjtJoint.mjJNT_SLIDE, f"{name}#t{i}", ax, False)  # pyright: ignore[reportArgumentType]
         j = body.add_joint(name=name, type=mujoco.mjtJoint.mjJNT_BALL, pos=pos)
         names.append(j.name)
     elif t is JointType.FIXED:
@@ -410,7 +428,9 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> Bui
                     "MuJoCo nests bodies at most ~1,000 deep"
                 )
             body = _add_link_body(parent, links[name], X, jnt)
-            stack.extend((body, j.child, j.origin * j.child_offset, j, depth + 1) for j in reversed(children.get(name, [])))
+            stack.extend(
+                (body, j.child, j.origin * j.child_offset, j, depth + 1) for j in reversed(children.get(name, []))
+            )
 
     def _add_link_body(parent_body: mujoco.MjsBody, link: Link, X_PC: Pose, joint: Joint | None) -> mujoco.MjsBody:
         link_name = link.name
@@ -429,9 +449,9 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> Bui
                 for jname in built.joints[joint.name]:
                     mj = spec.joint(jname)
                     mj.armature = KINEMATIC_ARMATURE
-                    mj.damping = [0.0, 0.0, 0.0]
+                    mj.damping = [0.0, 0.0, 0.0]  # pyright: ignore[reportAttributeAccessIssue]
                     mj.frictionloss = 0.0
-                    mj.stiffness = [0.0, 0.0, 0.0]
+                    mj.stiffness = [0.0, 0.0, 0.0]  # pyright: ignore[reportAttributeAccessIssue]
                     built.kinematic_joints.append(jname)
         mass_hint = link.inertial.mass if link.inertial else total_mass
         for i, col in enumerate(link.collisions):
@@ -477,7 +497,9 @@ def _exclude_self_collisions(spec: mujoco.MjSpec, model: Model, entity: str, bui
     """Gazebo's links of one model do not collide with each other unless self_collide is on."""
     if model.self_collide:
         return
-    with_geoms = [lk.name for lk in model.links if lk.collisions and lk.self_collide is not True and lk.name in built.bodies]
+    with_geoms = [
+        lk.name for lk in model.links if lk.collisions and lk.self_collide is not True and lk.name in built.bodies
+    ]
     for i, a in enumerate(with_geoms):
         for b in with_geoms[i + 1 :]:
             spec.add_exclude(

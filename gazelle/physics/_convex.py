@@ -26,9 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..description import Mesh, Model
-from ..description import BoundExceeded, run_bounded
-from ..description import MeshReadError, load_mesh
+from ..description import BoundExceeded, Mesh, MeshReadError, Model, load_mesh, run_bounded
 
 _log = logging.getLogger("gazelle.physics")
 
@@ -109,7 +107,7 @@ def _decompose(vertices: np.ndarray, faces: np.ndarray) -> list[list[list[float]
 
     coacd.set_log_level("error")
     parts = coacd.run_coacd(
-        coacd.Mesh(np.asarray(vertices, dtype=float), np.asarray(faces, dtype=np.int64)),
+        coacd.Mesh(np.asarray(vertices, dtype=float), np.asarray(faces, dtype=np.int64)),  # pyright: ignore[reportArgumentType]
         threshold=COACD_THRESHOLD,
         max_convex_hull=COACD_MAX_PARTS,
         seed=0,
@@ -130,7 +128,7 @@ def _save_disk(path: Path, pieces: tuple[np.ndarray, ...]) -> None:
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
         tmp = path.with_suffix(f".{os.getpid()}.tmp.npz")
-        np.savez(tmp, **{f"p{i}": p for i, p in enumerate(pieces)})
+        np.savez(tmp, **{f"p{i}": p for i, p in enumerate(pieces)})  # pyright: ignore[reportArgumentType]
         os.replace(tmp, path)
     except OSError as err:  # a read-only home: decompose again next time
         _log.debug(f"cannot cache a convex decomposition in {path.parent}: {err}")
@@ -199,7 +197,9 @@ def _hull(key: str, path: str, why: str) -> None:
         known = key in _memory
         _memory[key] = None
     if not known:
-        _log.warning(f"collision mesh '{path}' is not convex, but {why}: it collides as its convex hull (an approximation)")
+        _log.warning(
+            f"collision mesh '{path}' is not convex, but {why}: it collides as its convex hull (an approximation)"
+        )
     return None
 
 

@@ -11,8 +11,9 @@ A handle is used on the simulation thread only, like the world it belongs to.
 from __future__ import annotations
 
 import enum
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Callable, Generic, TypeVar
+from typing import TYPE_CHECKING, Generic, TypeVar
 
 from ..description import Pose
 

@@ -10,16 +10,16 @@ import enum
 import logging
 import math
 import re
+from collections.abc import Callable, Container
 from dataclasses import dataclass, field
-from typing import Any, Callable, Container
+from typing import Any
 
 import mujoco
 import numpy as np
 
-from ..description import Model, Pose, World, excerpt
-from ..description import quat_conj, quat_rotate
-from ._convex import cache_dir
+from ..description import Model, Pose, World, excerpt, quat_conj, quat_rotate
 from ._builder import JOINT_ARMATURE, SEP, BuildError, BuiltEntity, add_model, scoped
+from ._convex import cache_dir
 from ._handles import ActuatorHandle, ActuatorKind, BodyHandle, JointHandle
 
 _log = logging.getLogger("gazelle.physics")
@@ -139,7 +139,7 @@ def _describe(err: Exception) -> str:
     return f"{type(err).__name__}: {text}" if text else type(err).__name__
 
 
-def _no_joint_message(entity: "Entity", joint: str) -> str:
+def _no_joint_message(entity: Entity, joint: str) -> str:
     """Why ``joint`` cannot be actuated: missing, or fixed (and then no MuJoCo joint exists)."""
     for j in entity.model.joints:
         if j.name == joint:
@@ -200,7 +200,7 @@ class PhysicsWorld:
         opt = self.spec.option
         opt.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
         opt.timestep = timestep_sec or world.physics.max_step_size_sec
-        opt.gravity = list(world.gravity)
+        opt.gravity = list(world.gravity)  # pyright: ignore[reportAttributeAccessIssue]
         opt.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
         # a diverging state is found, reported and repaired per entity (recover_divergence),
         # never silently reset for the whole world as MuJoCo would
@@ -286,11 +286,13 @@ class PhysicsWorld:
         """
         return self._stage(model, name, X_WM, namespace, spawned, self.entities)
 
-    def _stage(self, model: Model, name: str, X_WM: Pose, namespace: str, spawned: bool, taken: Container[str]) -> Entity:
+    def _stage(
+        self, model: Model, name: str, X_WM: Pose, namespace: str, spawned: bool, taken: Container[str]
+    ) -> Entity:
         X_WM = _checked_placement(name, X_WM, taken)
         try:
             built = add_model(self.spec, model, name, X_WM)
-        except Exception as err:  # noqa: BLE001 - whatever the builder raised: undo it, say why
+        except Exception as err:
             self._remove_elements(name)
             raise build_failed(name, err) from None
         return Entity(name, model, namespace, X_WM, built, spawned)
@@ -311,7 +313,7 @@ class PhysicsWorld:
             return
         try:
             self._recompile()
-        except Exception as err:  # noqa: BLE001 - MuJoCo's compile errors come in several types
+        except Exception as err:
             # the recompile failed, so model/data are the old ones; removing what was staged
             # makes the spec match them again
             for e in staged:
@@ -443,7 +445,7 @@ class PhysicsWorld:
             act.set_to_motor()
         if force_limit is not None and (math.isfinite(force_limit[0]) or math.isfinite(force_limit[1])):
             act.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
-            act.forcerange = [max(force_limit[0], -1e30), min(force_limit[1], 1e30)]
+            act.forcerange = [max(force_limit[0], -1e30), min(force_limit[1], 1e30)]  # pyright: ignore[reportAttributeAccessIssue]
         return ActuatorHandle(JointHandle(self, entity.name, joint), kind, name)
 
     def joint(self, entity: str, joint: str) -> JointHandle:
@@ -771,7 +773,9 @@ class PhysicsWorld:
             raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' has no joint '{mj_joint}'")
         return int(self.model.jnt_qposadr[jid]), int(self.model.jnt_dofadr[jid])
 
-    def set_joint_state(self, entity: str, joint: str, position: float | None = None, velocity: float | None = None) -> None:
+    def set_joint_state(
+        self, entity: str, joint: str, position: float | None = None, velocity: float | None = None
+    ) -> None:
         """Set the position and/or velocity of a 1-dof (hinge or slide) joint of an entity, by its
         description name; the way to move a kinematic joint, which no force moves."""
         e = self.entities.get(entity)
@@ -811,7 +815,6 @@ class PhysicsWorld:
         root = e.model.root_link
         link = e.model.link(root)
         return e.X_WM * (link.pose or Pose())
-
 
     def stage_many(self, items: list[StagedRequest]) -> list[Entity | WorldError]:
         """:meth:`stage` several models; each that fails its own checks gets its error in its slot."""

@@ -26,6 +26,7 @@ from gazebo_msgs.srv import SetEntityState as GzSetEntityState
 from gazebo_msgs.srv import SpawnEntity as GzSpawnEntity
 from geometry_msgs.msg import Twist
 from rclpy.callback_groups import ReentrantCallbackGroup
+from rclpy.context import Context
 from rclpy.event_handler import PublisherEventCallbacks, SubscriptionEventCallbacks
 from rclpy.exceptions import InvalidHandle
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, ShutdownException
@@ -34,14 +35,13 @@ from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPo
 from rosgraph_msgs.msg import Clock
 from std_srvs.srv import Empty
 
-from ..description import Model, ModelLoadError, Pose, World, load_string, reply_text
-from ..description import quat_conj, quat_rotate
-from ..physics import WORLD_FRAMES, WorldError, pose_out_of_range
+from ..description import Model, ModelLoadError, Pose, World, load_string, quat_conj, quat_rotate, reply_text
+from ..physics import WORLD_FRAMES, ErrorKind, WorldError, pose_out_of_range
 from ..sim import Simulation
 from ..systems import Endpoint, MsgType, Qos, Transform, TransformBatch, UpdateInfo
+from ._convert import FROM_ROS, ROS_TYPES, TO_ROS, from_pose_msg, to_pose_msg, to_time
 from ._exposure import ServerRegistry
 from ._replies import guarded_service, with_warnings
-from ._convert import FROM_ROS, ROS_TYPES, TO_ROS, from_pose_msg, to_pose_msg, to_time
 
 
 class SpawnFailed(Exception):
@@ -63,7 +63,9 @@ def qos_profile(qos: Qos, depth: int) -> QoSProfile:
     if qos is Qos.SENSOR:
         return QoSProfile(depth=depth, reliability=ReliabilityPolicy.BEST_EFFORT)
     if qos is Qos.LATCHED:
-        return QoSProfile(depth=depth, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
+        return QoSProfile(
+            depth=depth, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE
+        )
     return QoSProfile(depth=depth, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
 
 
@@ -97,13 +99,13 @@ class _RosLogHandler(logging.Handler):
 
     def emit(self, record: logging.LogRecord) -> None:
         try:
-            logger = rclpy.logging.get_logger(record.name)
+            logger = rclpy.logging.get_logger(record.name)  # pyright: ignore[reportAttributeAccessIssue]
             level = self._LEVELS.get(record.levelno, "info")
             text = record.getMessage()
             if record.exc_info:
                 text += "\n" + "".join(traceback.format_exception(*record.exc_info)).rstrip()
             getattr(logger, level)(text)
-        except Exception:  # noqa: BLE001 - logging must never raise
+        except Exception:
             self.handleError(record)
 
 
@@ -140,7 +142,7 @@ class SimulationNode(Node):
         *,
         node_name: str = "gazelle",
         clock_rate_hz: float = 100.0,
-        context: rclpy.Context | None = None,
+        context: Context | None = None,
     ):
         super().__init__(node_name, context=context)
         self.sim = sim
@@ -169,6 +171,7 @@ class SimulationNode(Node):
         ):
             self._srv.append(self.create_service(srv_type, name, guarded_service(name, cb), callback_group=self._cb))
         from ._simulation_interfaces import register  # simulation_interfaces services under ~/
+
         register(self)
         # /clock at its rate (held back while listened to: see _on_step); the runtime steps inside
         # MuJoCo between two clock periods
@@ -178,7 +181,7 @@ class SimulationNode(Node):
         self._last_model_states = -math.inf
         self._last_model_states_wall = -math.inf
         self._model_states_listener = sim.add_step_listener(self._on_step_model_states, MODEL_STATES_RATE_HZ)
-        sim.bus.add_listener(self)
+        sim.bus.add_listener(self)  # pyright: ignore[reportArgumentType]
         self.publish_clock(sim.world.time)
 
     # ------------------------------------------------------------------ clock
@@ -235,12 +238,12 @@ class SimulationNode(Node):
                 st = world.entity_state(name)
             except WorldError:  # an entity without a body: nothing to report
                 continue
-            msg.name.append(name)
-            msg.pose.append(to_pose_msg(st.pose))
+            msg.name.append(name)  # pyright: ignore[reportAttributeAccessIssue]
+            msg.pose.append(to_pose_msg(st.pose))  # pyright: ignore[reportAttributeAccessIssue]
             twist = Twist()
             twist.linear.x, twist.linear.y, twist.linear.z = st.linear_velocity
             twist.angular.x, twist.angular.y, twist.angular.z = st.angular_velocity
-            msg.twist.append(twist)
+            msg.twist.append(twist)  # pyright: ignore[reportAttributeAccessIssue]
         return msg
 
     # ------------------------------------------------------------------ bus mirroring
@@ -261,9 +264,9 @@ class SimulationNode(Node):
             convert = TO_ROS[ep.msg_type]
             handle = entry.handle
             if ep.msg_type is MsgType.TF_STATIC:
-                sink = lambda payload: self._publish_static(handle, ep, payload)  # noqa: E731
+                sink = lambda payload: self._publish_static(handle, ep, payload)
             else:
-                sink = lambda payload: handle.publish(convert(payload))  # noqa: E731
+                sink = lambda payload: handle.publish(convert(payload))
             with self._lock:
                 self._sinks[id(ep)] = sink
             # latched topics always publish (late joiners get the last one); the others only while
@@ -325,7 +328,9 @@ class SimulationNode(Node):
         try:
             return self.sim.call(lambda: self.sim.world.frame_pose(frame))
         except WorldError:
-            raise SpawnFailed(SpawnFailure.FRAME, f"reference_frame '{frame}' not found: no such entity or link") from None
+            raise SpawnFailed(
+                SpawnFailure.FRAME, f"reference_frame '{frame}' not found: no such entity or link"
+            ) from None
 
     def spawn_xml(
         self, xml: str, *, name: str, namespace: str, pose: Pose, reference_frame: str, source: str
@@ -338,10 +343,10 @@ class SimulationNode(Node):
         """
         for v in (*pose.position, *pose.orientation):
             if not math.isfinite(v):
-                raise WorldError("invalid_pose", f"initial_pose is not finite: {pose}")
+                raise WorldError(ErrorKind.INVALID_POSE, f"initial_pose is not finite: {pose}")
         far = pose_out_of_range(pose, "initial_pose.position")
         if far is not None:
-            raise WorldError("invalid_pose", far)
+            raise WorldError(ErrorKind.INVALID_POSE, far)
         try:
             result = load_string(xml, source=source)
         except ModelLoadError as err:
@@ -463,7 +468,7 @@ class SimulationNode(Node):
     def destroy_node(self) -> None:
         self.sim.remove_step_listener(self._on_step)
         self.sim.remove_step_listener(self._on_step_model_states)
-        self.sim.bus.remove_listener(self)
+        self.sim.bus.remove_listener(self)  # pyright: ignore[reportArgumentType]
         for ep in self.sim.bus.endpoints():
             sink = self._sinks.pop(id(ep), None)
             if sink is not None:
@@ -484,7 +489,7 @@ class RosBridge:
             args: ROS arguments for rclpy.
             announce: take part in the one-server-per-domain check (``gazelle sim`` does).
         """
-        self.context = rclpy.Context()
+        self.context = Context()
         rclpy.init(args=args, context=self.context)
         self._handler = _RosLogHandler()
         root = logging.getLogger()
@@ -522,7 +527,7 @@ class RosBridge:
                     log.debug("an entity was destroyed while the executor waited on it; retrying")
             except (ShutdownException, ExternalShutdownException):
                 return
-            except BaseException as err:  # noqa: BLE001 - recorded and reported, never swallowed
+            except BaseException as err:
                 if self._stopping.is_set() or not self.context.ok():
                     return
                 self.failure = err

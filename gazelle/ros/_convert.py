@@ -50,7 +50,10 @@ def from_pose_msg(m: PoseMsg) -> Pose:
 
 
 def to_twist_msg(t: Twist) -> TwistMsg:
-    return TwistMsg(linear=Vector3(x=t.linear[0], y=t.linear[1], z=t.linear[2]), angular=Vector3(x=t.angular[0], y=t.angular[1], z=t.angular[2]))
+    return TwistMsg(
+        linear=Vector3(x=t.linear[0], y=t.linear[1], z=t.linear[2]),
+        angular=Vector3(x=t.angular[0], y=t.angular[1], z=t.angular[2]),
+    )
 
 
 def from_twist_msg(m: TwistMsg) -> Twist:

@@ -73,7 +73,9 @@ class ServerRegistry:
         qos = QoSProfile(depth=10, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
         self._pub = node.create_publisher(String, ANNOUNCE_TOPIC, qos)
         self._sub = node.create_subscription(String, ANNOUNCE_TOPIC, self._on_announce, qos)
-        self._pub.publish(String(data=json.dumps({"started": self.me.started, "host": self.me.host, "pid": self.me.pid})))
+        self._pub.publish(
+            String(data=json.dumps({"started": self.me.started, "host": self.me.host, "pid": self.me.pid}))
+        )
 
     def _on_announce(self, msg: String) -> None:
         try:

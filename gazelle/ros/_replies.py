@@ -33,7 +33,7 @@ def guarded_service(name: str, callback: Any) -> Any:
     def wrapper(request: Any, response: Any) -> Any:
         try:
             return callback(request, response)
-        except Exception as err:  # noqa: BLE001 - reported to the log and to the client
+        except Exception as err:
             log.error(f"{name}: internal error while serving a request", exc_info=err)
             return failure_reply(response, f"{name}: internal error: {type(err).__name__}: {err}")
 

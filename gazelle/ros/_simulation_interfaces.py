@@ -32,8 +32,9 @@ Decisions (also what :func:`features` advertises, nothing more):
 * Spawning by ``uri``: ``model://`` and ``package://`` resolve through
   :class:`gazelle.description.ResourceResolver` (a URI that does not resolve,
   or escapes its package folder, is ``NO_RESOURCE``); ``file://`` and plain
-  paths must name an existing file inside the resource paths (or an ament share folder). A folder (``model://box``) means its
-  ``model.sdf``. URDF, xacro and SDF are accepted (by suffix, or detected).
+  paths must name an existing file inside the resource paths (or an ament share
+  folder). A folder (``model://box``) means its ``model.sdf``. URDF, xacro and
+  SDF are accepted (by suffix, or detected).
 """
 
 from __future__ import annotations
@@ -41,16 +42,22 @@ from __future__ import annotations
 import math
 import re
 import time
-
-import regex
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from rclpy.action import ActionServer, CancelResponse, GoalResponse
+import regex
+from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
 from rclpy.callback_groups import ReentrantCallbackGroup
 from simulation_interfaces.action import SimulateSteps
-from simulation_interfaces.msg import EntityCategory, EntityState, Result, SimulationState, SimulatorFeatures, SpawnResult
+from simulation_interfaces.msg import (
+    EntityCategory,
+    EntityState,
+    Result,
+    SimulationState,
+    SimulatorFeatures,
+    SpawnResult,
+)
 from simulation_interfaces.srv import (
     DeleteEntity,
     GetEntities,
@@ -69,6 +76,7 @@ from simulation_interfaces.srv import (
 
 from ..description import (
     ErrorCode,
+    JointType,
     Model,
     ModelLoadError,
     Pose,
@@ -76,9 +84,9 @@ from ..description import (
     World,
     format_for_path,
     load_string,
+    quat_rotate,
     reply_text,
 )
-from ..description import JointType, quat_rotate
 from ..physics import WORLD_FRAMES, Entity, ErrorKind, WorldError, pose_out_of_range
 from ..sim import SpawnRequest
 from ._convert import from_pose_msg, to_pose_msg, to_time
@@ -208,7 +216,7 @@ class SimulationInterfaces:
         self.resolver = resolver or ResourceResolver(extra_paths=builtin_resource_paths())
         self.cb = ReentrantCallbackGroup()
         # a diverged entity is reported on /rosout (the sim thread calls this once per divergence)
-        self.sim.divergence_listeners.append(lambda _name, reason: node.get_logger().error(reason))
+        self.sim.divergence_listeners.append(lambda _name, reason: node.get_logger().error(reason))  # pyright: ignore[reportArgumentType]
         self.services = []
         for srv_type, name, fn in (
             (GetSimulatorFeatures, "get_simulator_features", self.get_simulator_features),
@@ -319,7 +327,9 @@ class SimulationInterfaces:
             return res
         try:
             self.sim.reset(
-                time_=bool(scope & R.SCOPE_TIME), state=bool(scope & R.SCOPE_STATE), spawned=bool(scope & R.SCOPE_SPAWNED)
+                time_=bool(scope & R.SCOPE_TIME),
+                state=bool(scope & R.SCOPE_STATE),
+                spawned=bool(scope & R.SCOPE_SPAWNED),
             )
         except (WorldError, TimeoutError) as err:
             res.result = _result(Result.RESULT_OPERATION_FAILED, f"reset failed: {err}")
@@ -396,7 +406,9 @@ class SimulationInterfaces:
                 now = time.monotonic()
                 if now - last_feedback >= FEEDBACK_PERIOD_SEC or done == steps:
                     last_feedback = now
-                    goal_handle.publish_feedback(SimulateSteps.Feedback(completed_steps=done, remaining_steps=steps - done))
+                    goal_handle.publish_feedback(
+                        SimulateSteps.Feedback(completed_steps=done, remaining_steps=steps - done)
+                    )
         except (WorldError, TimeoutError) as err:
             goal_handle.abort()
             result.result = _result(Result.RESULT_OPERATION_FAILED, f"stepping failed after {done} steps: {err}")
@@ -504,7 +516,9 @@ class SimulationInterfaces:
             ) from None
 
     def _commit(self, prepared: list[_Prepared]) -> list[Entity | WorldError]:
-        return self.sim.spawn_many([SpawnRequest(p.model, p.name, p.pose, p.namespace, p.allow_renaming) for p in prepared])
+        return self.sim.spawn_many(
+            [SpawnRequest(p.model, p.name, p.pose, p.namespace, p.allow_renaming) for p in prepared]
+        )
 
     @staticmethod
     def _world_error_result(err: WorldError) -> Result:
@@ -597,16 +611,21 @@ class SimulationInterfaces:
     # ------------------------------------------------------------------ queries
     def _compile_filters(self, filters: Any) -> tuple[Any, set[int]]:
         if filters.tags.tags:
-            raise _Refused(Result.RESULT_FEATURE_UNSUPPORTED, "entity tags are not supported (filters.tags must be empty)")
+            raise _Refused(
+                Result.RESULT_FEATURE_UNSUPPORTED, "entity tags are not supported (filters.tags must be empty)"
+            )
         if filters.bounds.type != 0 or filters.bounds.points:
-            raise _Refused(Result.RESULT_FEATURE_UNSUPPORTED, "bounds filters are not supported (filters.bounds must be empty)")
+            raise _Refused(
+                Result.RESULT_FEATURE_UNSUPPORTED, "bounds filters are not supported (filters.bounds must be empty)"
+            )
         pattern = None
         if filters.filter:
             try:
                 pattern = regex.compile(filters.filter)
             except (regex.error, ValueError) as err:
                 raise _Refused(
-                    Result.RESULT_OPERATION_FAILED, f"filters.filter {filters.filter!r} is not a valid regular expression: {err}"
+                    Result.RESULT_OPERATION_FAILED,
+                    f"filters.filter {filters.filter!r} is not a valid regular expression: {err}",
                 ) from None
         return pattern, {c.category for c in filters.categories}
 
@@ -675,7 +694,13 @@ class SimulationInterfaces:
         s = req.state
         p, tw = s.pose, s.twist
         vals = (
-            p.position.x, p.position.y, p.position.z, p.orientation.x, p.orientation.y, p.orientation.z, p.orientation.w,
+            p.position.x,
+            p.position.y,
+            p.position.z,
+            p.orientation.x,
+            p.orientation.y,
+            p.orientation.z,
+            p.orientation.w,
         )
         if not _finite(*vals):
             res.result = _result(SetEntityState.Response.INVALID_POSE, "state.pose is not finite (NaN or inf)")

@@ -16,6 +16,7 @@ from pathlib import Path
 
 import rclpy
 from gazebo_msgs.srv import SpawnEntity
+from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
@@ -68,7 +69,7 @@ def _fail(node: Node | None, message: str) -> int:
 def _read_topic(node: Node, executor: SingleThreadedExecutor, topic: str, timeout: float) -> str | None:
     got: list[str] = []
     qos = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
-    sub = node.create_subscription(String, topic, lambda m: got.append(m.data), qos)
+    sub = node.create_subscription(String, topic, lambda m: got.append(m.data), qos)  # pyright: ignore[reportAttributeAccessIssue]
     deadline = time.monotonic() + timeout
     while not got and time.monotonic() < deadline and executor.context.ok():
         executor.spin_once(timeout_sec=0.1)
@@ -81,7 +82,7 @@ def _topic_hint(node: Node, topic: str) -> str:
     name = topic if topic.startswith("/") else f"/{topic}"
     try:
         pubs = node.get_publishers_info_by_topic(name)
-    except Exception:  # noqa: BLE001 - a hint must never turn a clear failure into a traceback
+    except Exception:
         pubs = []
     if not pubs:
         return (
@@ -101,15 +102,14 @@ def _topic_hint(node: Node, topic: str) -> str:
 def _xml_from_file(path: str) -> str:
     """The entity XML of a file the user named: xacro (by suffix or markup) is expanded here, in the
     user's own process and bounded in time and memory, so the server only ever receives plain XML."""
-    from ..description import DiagnosticSink, ModelLoadError, ResourceResolver, xacro_markup
-    from ..description import _xacro
+    from ..description import DiagnosticSink, ModelLoadError, ResourceResolver, expand_xacro_bounded, xacro_markup
 
     p = Path(path)
     text = p.read_text(encoding="utf-8")
     if not p.name.endswith(".xacro") and xacro_markup(text) is None:
         return text
     sink = DiagnosticSink()
-    out = _xacro.expand_bounded(text, source=str(p), args={}, sink=sink, resolver=ResourceResolver())
+    out = expand_xacro_bounded(text, source=str(p), args={}, sink=sink, resolver=ResourceResolver())
     if out is None:
         raise ModelLoadError(sink.items)
     return out
@@ -145,9 +145,9 @@ def main(argv: list[str]) -> int:
             file_xml = _xml_from_file(args.file)
         except FileNotFoundError:
             return _fail(None, f"Error: specified file {args.file} does not exist")
-        except Exception as err:  # noqa: BLE001 - includes ModelLoadError with file:line
+        except Exception as err:
             return _fail(None, f"Error: cannot read {args.file}: {err}")
-    context = rclpy.Context()
+    context = Context()
     rclpy.init(args=[], context=context)
     node = rclpy.create_node("spawn_entity", context=context)
     executor = SingleThreadedExecutor(context=context)
@@ -175,8 +175,11 @@ def _run(
         log.info(f"Waiting for entity xml on {args.topic}")
         got = _read_topic(node, executor, args.topic, timeout)
         if got is None:
-            return _fail(node, f"Timed out after {timeout:g} s waiting for entity xml on topic {args.topic}: "
-                         + _topic_hint(node, args.topic))
+            return _fail(
+                node,
+                f"Timed out after {timeout:g} s waiting for entity xml on topic {args.topic}: "
+                + _topic_hint(node, args.topic),
+            )
         xml = got
     elif args.string is not None:
         xml = args.string
@@ -211,9 +214,9 @@ def _run(
     log.info(f"Calling service {service}")
     future = client.call_async(req)
     executor.spin_until_future_complete(future, timeout_sec=max(timeout, 1.0))
-    if not future.done() or future.result() is None:
+    res = future.result() if future.done() else None
+    if res is None:
         return _fail(node, f"Service {service} did not answer within {max(timeout, 1.0):g} s")
-    res = future.result()
     if not res.success:
         return _fail(node, f"Spawn service failed: {res.status_message}")
     log.info(f"Spawn status: {res.status_message}")

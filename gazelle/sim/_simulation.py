@@ -22,12 +22,11 @@ import math
 import queue
 import threading
 import time
+from collections.abc import Callable
 from concurrent.futures import Future
 from concurrent.futures import TimeoutError as FutureTimeout
 from dataclasses import dataclass, field
-from typing import Any, Callable, TypeVar
-
-import numpy as np
+from typing import Any, TypeVar
 
 from ..description import Model, Pose, World
 from ..physics import (
@@ -70,7 +69,7 @@ def _shutdown_system(system: System) -> None:
     """Shut down a system whose entity never made it into the world (its spawn failed)."""
     try:
         system.shutdown()
-    except Exception:  # noqa: BLE001 - the spawn already failed; say so and go on
+    except Exception:
         _log.exception(f"{type(system).__name__}.shutdown raised after a failed spawn")
 
 
@@ -184,7 +183,7 @@ class Simulation:
             return
         try:
             fut.set_result(fn())
-        except BaseException as err:  # noqa: BLE001 - handed to the caller
+        except BaseException as err:
             fut.set_exception(err)
 
     def _wait(self, seconds: float) -> None:
@@ -242,7 +241,9 @@ class Simulation:
 
     def _info(self, paused: bool = False, dt: float | None = None) -> UpdateInfo:
         w = self.world
-        return UpdateInfo(w.time, time.monotonic() - self._wall0, w.timestep if dt is None else dt, self.iterations, paused)
+        return UpdateInfo(
+            w.time, time.monotonic() - self._wall0, w.timestep if dt is None else dt, self.iterations, paused
+        )
 
     def _steps_until_due(self, limit: int) -> int:
         """How many physics steps (1..``limit``) can run before a system or listener is due."""
@@ -290,7 +291,7 @@ class Simulation:
                 continue
             try:
                 listener.fn(info)
-            except Exception:  # noqa: BLE001 - an observer must not stop the world
+            except Exception:
                 _log.exception(f"step listener {listener.fn!r} raised; it is removed")
                 if listener in self.step_listeners:
                     self.step_listeners.remove(listener)
@@ -397,7 +398,7 @@ class Simulation:
         entity = self.world.stage(model, name=name, X_WM=pose * model.pose, namespace=namespace, spawned=spawned)
         try:
             systems = self._configure_plugins(entity)
-        except Exception as err:  # noqa: BLE001 - a plugin that cannot configure fails the spawn, not the world
+        except Exception as err:
             self.world.discard(entity)
             raise build_failed(name, err) from None
         try:
@@ -493,7 +494,7 @@ class Simulation:
                 continue
             try:
                 systems = self._configure_plugins(res)
-            except Exception as err:  # noqa: BLE001 - as in _add_entity
+            except Exception as err:
                 self.world.discard(res)
                 out.append(build_failed(name, err))
                 continue

@@ -65,7 +65,7 @@ def wheel_inertia_about_axis(model: Model, joint_name: str, armature: float) -> 
     q_ci = inertial.pose.orientation
     R_ci = np.column_stack([quat_rotate(q_ci, e) for e in ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))])
     a_i = R_ci.T @ a_c
-    I = np.array(
+    inertia = np.array(
         [
             [inertial.ixx, inertial.ixy, inertial.ixz],
             [inertial.ixy, inertial.iyy, inertial.iyz],
@@ -74,7 +74,7 @@ def wheel_inertia_about_axis(model: Model, joint_name: str, armature: float) -> 
     )
     com = np.asarray(inertial.pose.position) - np.asarray(X_CJ.position)
     perp = com - a_c * float(com @ a_c)
-    return float(a_i @ I @ a_i) + inertial.mass * float(perp @ perp) + armature
+    return float(a_i @ inertia @ a_i) + inertial.mass * float(perp @ perp) + armature
 
 
 def joint_effort_limit(model: Model, joint: str) -> float:
@@ -95,7 +95,9 @@ class VelocityServo:
 
     __slots__ = ("actuator", "integral_limit", "integral_time", "target", "integral", "_last")
 
-    def __init__(self, actuator: ActuatorHandle, integral_limit: float, integral_time: float = INTEGRAL_TIME_SEC) -> None:
+    def __init__(
+        self, actuator: ActuatorHandle, integral_limit: float, integral_time: float = INTEGRAL_TIME_SEC
+    ) -> None:
         self.actuator = actuator
         self.integral_limit = integral_limit
         self.integral_time = integral_time
@@ -174,7 +176,7 @@ class PositionServo:
 
 
 def add_position_servo(world: PhysicsWorld, entity: Entity, joint: str, gains: PidGains) -> PositionServo:
-    """A :class:`PositionServo` on ``joint``, its force clamped to ``[cmd_min, cmd_max]`` and the joint's effort limit."""
+    """A :class:`PositionServo` on ``joint``, its force clamped to ``[cmd_min, cmd_max]`` and the joint's effort."""
     eff = joint_effort_limit(entity.model, joint)
     act = world.add_actuator(
         entity,
@@ -190,12 +192,14 @@ def add_position_servo(world: PhysicsWorld, entity: Entity, joint: str, gains: P
 def add_velocity_servo(
     world: PhysicsWorld, entity: Entity, joint: str, *, kv: float | None = None, force_limit: float = math.inf
 ) -> VelocityServo:
-    """A :class:`VelocityServo` on ``joint``: kv = I/dt unless given, force-limited by ``force_limit`` and the joint's effort limit."""
+    """A :class:`VelocityServo` on ``joint``: kv = I/dt unless given; limited by ``force_limit`` and its effort."""
     if kv is None:
         kv = servo_gain(wheel_inertia_about_axis(entity.model, joint, world.armature), world.timestep)
     limit = min(force_limit, joint_effort_limit(entity.model, joint))
     finite = 0 < limit < math.inf
-    act = world.add_actuator(entity, joint, ActuatorKind.VELOCITY, kv=kv, force_limit=(-limit, limit) if finite else None)
+    act = world.add_actuator(
+        entity, joint, ActuatorKind.VELOCITY, kv=kv, force_limit=(-limit, limit) if finite else None
+    )
     return VelocityServo(act, limit / kv if finite else UNLIMITED_INTEGRAL)
 
 

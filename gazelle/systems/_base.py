@@ -140,7 +140,7 @@ class SystemManager:
         for s in self._stepped:
             try:
                 t = s.next_update(sim_time_sec)
-            except Exception as err:  # noqa: BLE001 - as for the phases
+            except Exception as err:
                 self._disable(s, "next_update", err)
                 return sim_time_sec
             if t < earliest:
@@ -163,7 +163,7 @@ class SystemManager:
         for s in systems:
             try:
                 getattr(s, phase)(info, world)
-            except Exception as err:  # noqa: BLE001 - one broken plugin must not stop the world
+            except Exception as err:
                 self._disable(s, phase, err)
 
     def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:

@@ -10,8 +10,9 @@ from __future__ import annotations
 
 import enum
 import threading
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any, Callable, Protocol
+from typing import Any, Protocol
 
 from ..description import Pose
 
@@ -235,7 +236,8 @@ class Bus:
         """
         with self._lock:
             targets = [
-                ep for ep in self._endpoints
+                ep
+                for ep in self._endpoints
                 if not ep.is_publisher and ep.topic == topic and ep.msg_type == msg_type and ep.callback is not None
             ]
         for ep in targets:

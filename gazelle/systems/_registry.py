@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import logging
 import re
-from typing import Callable
+from collections.abc import Callable
 
 from ..description import Diagnostic, ErrorCode, Model, Plugin, Severity, World
 from ._base import System
@@ -108,20 +108,41 @@ _NOT_YET: dict[str, str] = {
     **{
         n: "sensors are not simulated yet"
         for n in (
-            "gazebo_ros_ray_sensor", "gazebo_ros_laser", "gazebo_ros_camera", "gazebo_ros_depth_camera",
-            "gazebo_ros_imu_sensor", "gazebo_ros_imu", "gazebo_ros_bumper", "gazebo_ros_gps_sensor",
-            "gazebo_ros_ft_sensor", "gazebo_ros_openni_kinect", "gazebo_ros_range",
-            "gz-sim-sensors-system", "gz::sim::systems::Sensors", "gz-sim-imu-system", "gz::sim::systems::Imu",
-            "gz-sim-contact-system", "gz::sim::systems::Contact", "gz-sim-navsat-system", "gz::sim::systems::NavSat",
-            "gz-sim-forcetorque-system", "gz::sim::systems::ForceTorque", "gz-sim-altimeter-system",
-            "gz-sim-magnetometer-system", "ignition-gazebo-sensors-system", "ignition-gazebo-imu-system",
+            "gazebo_ros_ray_sensor",
+            "gazebo_ros_laser",
+            "gazebo_ros_camera",
+            "gazebo_ros_depth_camera",
+            "gazebo_ros_imu_sensor",
+            "gazebo_ros_imu",
+            "gazebo_ros_bumper",
+            "gazebo_ros_gps_sensor",
+            "gazebo_ros_ft_sensor",
+            "gazebo_ros_openni_kinect",
+            "gazebo_ros_range",
+            "gz-sim-sensors-system",
+            "gz::sim::systems::Sensors",
+            "gz-sim-imu-system",
+            "gz::sim::systems::Imu",
+            "gz-sim-contact-system",
+            "gz::sim::systems::Contact",
+            "gz-sim-navsat-system",
+            "gz::sim::systems::NavSat",
+            "gz-sim-forcetorque-system",
+            "gz::sim::systems::ForceTorque",
+            "gz-sim-altimeter-system",
+            "gz-sim-magnetometer-system",
+            "ignition-gazebo-sensors-system",
+            "ignition-gazebo-imu-system",
         )
     },
     **{
         n: "ros2_control is not supported yet"
         for n in (
-            "gazebo_ros2_control", "gz_ros2_control-system", "gz_ros2_control::GazeboSimROS2ControlPlugin",
-            "ign_ros2_control-system", "ign_ros2_control::IgnitionROS2ControlPlugin",
+            "gazebo_ros2_control",
+            "gz_ros2_control-system",
+            "gz_ros2_control::GazeboSimROS2ControlPlugin",
+            "ign_ros2_control-system",
+            "ign_ros2_control::IgnitionROS2ControlPlugin",
         )
     },
 }
@@ -129,11 +150,19 @@ _NOT_YET: dict[str, str] = {
 # gz-sim world systems whose work gazelle does itself: no warning.
 BUILT_IN_WORLD_SYSTEMS = frozenset(
     {
-        "gz-sim-physics-system", "gz::sim::systems::Physics", "ignition-gazebo-physics-system",
-        "gz-sim-user-commands-system", "gz::sim::systems::UserCommands", "ignition-gazebo-user-commands-system",
-        "gz-sim-scene-broadcaster-system", "gz::sim::systems::SceneBroadcaster",
+        "gz-sim-physics-system",
+        "gz::sim::systems::Physics",
+        "ignition-gazebo-physics-system",
+        "gz-sim-user-commands-system",
+        "gz::sim::systems::UserCommands",
+        "ignition-gazebo-user-commands-system",
+        "gz-sim-scene-broadcaster-system",
+        "gz::sim::systems::SceneBroadcaster",
         "ignition-gazebo-scene-broadcaster-system",
-        "gazebo_ros_init", "gazebo_ros_factory", "gazebo_ros_state", "gazebo_ros_properties",
+        "gazebo_ros_init",
+        "gazebo_ros_factory",
+        "gazebo_ros_state",
+        "gazebo_ros_properties",
     }
 )
 """Physics (MuJoCo), user commands and the factory (the spawn/delete/state services), the scene

@@ -258,7 +258,9 @@ class DiffDrive(System):
                 self.log.error(f"Joint [{jn}] not found, plugin will not work. {joints_listing(model)}")
                 ok = False
             elif model.joint(jn).type.value == "fixed":
-                self.log.error(f"Joint [{jn}] is fixed: a wheel needs a continuous or revolute joint; plugin will not work.")
+                self.log.error(
+                    f"Joint [{jn}] is fixed: a wheel needs a continuous or revolute joint; plugin will not work."
+                )
                 ok = False
         if not ok:
             return
@@ -297,11 +299,13 @@ class DiffDrive(System):
             self._tf_pub = ctx.bus.advertise(self._entity, "/tf", MsgType.TF, depth=100)
         if c.publish_odom_tf:
             self.log.info(
-                f"Publishing odom transforms between [{self.prefix}{c.odometry_frame}] and [{self.prefix}{c.robot_base_frame}]"
+                f"Publishing odom transforms between [{self.prefix}{c.odometry_frame}] and "
+                f"[{self.prefix}{c.robot_base_frame}]"
             )
         if c.publish_wheel_tf:
             self.log.info(
-                f"Publishing wheel transforms between [{c.robot_base_frame}], [{c.left_joints[0]}] and [{c.right_joints[0]}]"
+                f"Publishing wheel transforms between [{c.robot_base_frame}], [{c.left_joints[0]}] and "
+                f"[{c.right_joints[0]}]"
             )
         self._ok = True
 
@@ -385,7 +389,13 @@ class DiffDrive(System):
             )
             odom_pub.publish(
                 Odometry(
-                    stamp, self.prefix + c.odometry_frame, self.prefix + c.robot_base_frame, pose, twist, tuple(cov), tuple(cov)
+                    stamp,
+                    self.prefix + c.odometry_frame,
+                    self.prefix + c.robot_base_frame,
+                    pose,
+                    twist,
+                    tuple(cov),
+                    tuple(cov),
                 )
             )
         if tf_pub is not None:
@@ -472,12 +482,14 @@ def wheel_direction_hint(model: Model, left: tuple[str, ...], right: tuple[str, 
         return None
     eps = 1e-6
     if any(abs(a) < eps for a in (*lefts, *rights)):
-        return "a wheel joint's axis has no left/right (y) component in the robot frame: that wheel cannot roll it forward"
+        return (
+            "a wheel joint's axis has no left/right (y) component in the robot frame: that wheel cannot roll it forward"
+        )
     back_l, back_r = all(a < 0 for a in lefts), all(a < 0 for a in rights)
     if back_l and back_r:
         return (
             "a positive cmd_vel drives this robot backwards and turns it clockwise: its wheel joint axes point to "
-            "the robot's right (-y); Gazebo does the same. Flip them (axis xyz=\"0 0 -1\", or turn the wheel "
+            'the robot\'s right (-y); Gazebo does the same. Flip them (axis xyz="0 0 -1", or turn the wheel '
             "joints by -pi/2 about x instead of +pi/2)"
         )
     if back_l != back_r:

@@ -32,7 +32,6 @@ from ._base import RateGate, System, SystemContext, UpdateInfo, all_texts, child
 from ._bus import Endpoint, MsgType, Odometry, Transform, TransformBatch, Twist, resolve_topic
 from .diff_drive import joints_listing, wheel_direction_hint
 
-
 _INF = math.inf
 
 
@@ -135,7 +134,7 @@ class GzDiffDriveConfig:
     odom_publish_frequency: float = 50.0
     """``<odom_publish_frequency>``, Hz of sim time; default 50."""
     topic: str = ""
-    """``<topic>`` for geometry_msgs/Twist; default ``/model/<model>/cmd_vel``; relative names go under the namespace."""
+    """``<topic>`` for geometry_msgs/Twist; default ``/model/<model>/cmd_vel``; relative ones go under the namespace."""
     odom_topic: str = ""
     """``<odom_topic>`` for nav_msgs/Odometry; default ``/model/<model>/odometry``."""
     tf_topic: str = ""
@@ -242,8 +241,11 @@ class GzDiffDrive(System):
             log.warning(hint)
         for side, names in ((1, c.right_joints), (-1, c.left_joints)):
             for jn in names:
-                limit = joints[jn].axis.limit.effort if joints[jn].axis is not None else None
-                self._wheels.append((add_wheel_servo(ctx.world, entity, jn, limit if limit is not None else _INF), side))
+                axis = joints[jn].axis
+                limit = axis.limit.effort if axis is not None else None
+                self._wheels.append(
+                    (add_wheel_servo(ctx.world, entity, jn, limit if limit is not None else _INF), side)
+                )
         self._odom = DiffDriveOdometry(c.wheel_separation, c.wheel_radius, c.wheel_radius)
         self._limit_lin = SpeedLimiter(c.linear)
         self._limit_ang = SpeedLimiter(c.angular)
@@ -313,7 +315,9 @@ class GzDiffDrive(System):
         stamp = info.sim_time_sec
         if odom_pub is not None:
             odom_pub.publish(
-                Odometry(stamp, self.frame_id, self.child_frame_id, pose, Twist((o.linear, 0.0, 0.0), (0.0, 0.0, o.angular)))
+                Odometry(
+                    stamp, self.frame_id, self.child_frame_id, pose, Twist((o.linear, 0.0, 0.0), (0.0, 0.0, o.angular))
+                )
             )
         batch = TransformBatch((Transform(stamp, self.frame_id, self.child_frame_id, pose),))
         for pub in tf_pubs:

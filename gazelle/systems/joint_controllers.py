@@ -23,7 +23,17 @@ from dataclasses import dataclass
 from ..description import ConfigElement, JointType
 from ..physics import PhysicsWorld
 from ._actuation import PidGains, PositionServo, VelocityServo, add_position_servo, add_velocity_servo
-from ._base import RateGate, System, SystemContext, UpdateInfo, all_texts, child_text, parse_bool, parse_float, ros_block
+from ._base import (
+    RateGate,
+    System,
+    SystemContext,
+    UpdateInfo,
+    all_texts,
+    child_text,
+    parse_bool,
+    parse_float,
+    ros_block,
+)
 from ._bus import Float64, MsgType, resolve_topic
 
 _MOVABLE = (JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC)
@@ -40,7 +50,10 @@ def _check_joint(ctx: SystemContext, joint: str, log: logging.Logger) -> bool:
         log.error(f"Joint [{joint}] not found in model [{ctx.entity.name}]; the controller will not work")
         return False
     if j.type not in _MOVABLE:
-        log.error(f"Joint [{joint}] is {j.type.name.lower()}; only revolute, continuous and prismatic joints can be controlled")
+        log.error(
+            f"Joint [{joint}] is {j.type.name.lower()}; "
+            "only revolute, continuous and prismatic joints can be controlled"
+        )
         return False
     return True
 
@@ -139,7 +152,7 @@ class _ServoGroup(_Controlled):
         return [jn for jn in names if _check_joint(ctx, jn, ctx.logger)]
 
     def _subscribe(self, ctx: SystemContext, system: str, topic: str, sub_topic: str, default: str) -> None:
-        """Follow Float64 commands on ``topic``, else ``/model/<model>/<sub_topic>``, else ``/model/<model>/<default>``."""
+        """Follow Float64 commands on ``topic``, else ``/model/<model>/<sub_topic>``, else on ``<default>`` there."""
         model = ctx.entity.name
         self.topic = resolve_topic(topic or f"/model/{model}/{sub_topic or default}", ctx.entity.namespace)
         ctx.bus.subscribe(model, self.topic, MsgType.FLOAT64, self._on_msg, depth=10)
@@ -168,7 +181,9 @@ class JointPositionControllerConfig:
     joint_index: int = 0
     """``<joint_index>``: axis of a multi-axis joint (only 0 is supported)."""
     topic: str = ""
-    """``<topic>`` (std_msgs/Float64); default ``/model/<model>/joint/<joint>/<index>/cmd_pos``; relative names go under the namespace."""
+    """``<topic>`` (std_msgs/Float64); default ``/model/<model>/joint/<joint>/<index>/cmd_pos``.
+
+    Relative names go under the namespace."""
     sub_topic: str = ""
     """``<sub_topic>``: ``/model/<model>/<sub_topic>`` instead of the default topic."""
     p_gain: float = 1.0
@@ -188,7 +203,7 @@ class JointPositionControllerConfig:
     cmd_offset: float = 0.0
     """``<cmd_offset>``: constant force added."""
     use_velocity_commands: bool = False
-    """``<use_velocity_commands>``: drive with a velocity servo at (target − q)/dt, clamped to the joint's velocity limit."""
+    """``<use_velocity_commands>``: a velocity servo at (target − q)/dt, clamped to the joint's velocity limit."""
     initial_position: float = 0.0
     """``<initial_position>``: target before the first command."""
 
@@ -224,11 +239,16 @@ class JointPositionController(_ServoGroup):
                 j = ctx.entity.model.joint(jn)
                 vmax = j.axis.limit.velocity if j.axis is not None and j.axis.limit.velocity else math.inf
                 vel = add_velocity_servo(ctx.world, ctx.entity, jn)
-                self._commands.append(_StepVelocityToPosition(jn, vel, c.initial_position, vmax if vmax > 0 else math.inf))
+                self._commands.append(
+                    _StepVelocityToPosition(jn, vel, c.initial_position, vmax if vmax > 0 else math.inf)
+                )
             else:
-                self._commands.append(_Command(jn, add_position_servo(ctx.world, ctx.entity, jn, g), c.initial_position))
-        self._subscribe(ctx, "JointPositionController", c.topic, c.sub_topic, f"joint/{joints[0]}/{c.joint_index}/cmd_pos")
-
+                self._commands.append(
+                    _Command(jn, add_position_servo(ctx.world, ctx.entity, jn, g), c.initial_position)
+                )
+        self._subscribe(
+            ctx, "JointPositionController", c.topic, c.sub_topic, f"joint/{joints[0]}/{c.joint_index}/cmd_pos"
+        )
 
 
 @dataclass(frozen=True)
@@ -292,7 +312,6 @@ class JointController(_ServoGroup):
         self._subscribe(ctx, "JointController", c.topic, c.sub_topic, f"joint/{joints[0]}/cmd_vel")
 
 
-
 # --------------------------------------------------------------------------- classic-style topics
 JOINT_COMMANDS_PLUGIN = "gazelle_joint_commands"
 
@@ -345,9 +364,19 @@ class JointCommands(_Controlled):
         if mode not in ("position", "velocity"):
             log.warning(f"<mode> must be position or velocity, got {mode!r}; using position")
             mode = "position"
-        g = _pid(cfg, log, PidGains(p_gain=d.p_gain, i_gain=d.i_gain, d_gain=d.d_gain, cmd_max=math.inf, cmd_min=-math.inf))
+        g = _pid(
+            cfg, log, PidGains(p_gain=d.p_gain, i_gain=d.i_gain, d_gain=d.d_gain, cmd_max=math.inf, cmd_min=-math.inf)
+        )
         self.config = c = JointCommandsConfig(
-            names, mode, g.p_gain, g.i_gain, g.d_gain, g.i_max, g.i_min, ns or ctx.entity.namespace, tuple(remaps.items())
+            names,
+            mode,
+            g.p_gain,
+            g.i_gain,
+            g.d_gain,
+            g.i_max,
+            g.i_min,
+            ns or ctx.entity.namespace,
+            tuple(remaps.items()),
         )
         for jn in names:
             if not _check_joint(ctx, jn, log):

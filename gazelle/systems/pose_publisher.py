@@ -19,13 +19,10 @@ import math
 import random
 from dataclasses import dataclass
 
-from ..description import ConfigElement, Pose
-from ..description import quat_conj, quat_from_rpy, quat_mul, quat_rotate
+from ..description import ConfigElement, Pose, quat_conj, quat_from_rpy, quat_mul, quat_rotate
+from ..physics import WORLD_FRAMES, PhysicsWorld
 from ._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_float, ros_block
-from ..physics import WORLD_FRAMES
 from ._bus import Endpoint, MsgType, Odometry, Twist, resolve_topic
-
-from ..physics import PhysicsWorld
 
 ROS1_NAMES = {
     "bodyName": "body_name",
@@ -185,4 +182,6 @@ class P3D(System):
         cov = [0.0] * 36
         for i in (0, 7, 14, 21, 28, 35):
             cov[i] = gn * gn
-        self._pub.publish(Odometry(info.sim_time_sec, self.frame_id, self.child_frame_id, pose, twist, tuple(cov), tuple(cov)))
+        self._pub.publish(
+            Odometry(info.sim_time_sec, self.frame_id, self.child_frame_id, pose, twist, tuple(cov), tuple(cov))
+        )

@@ -16,9 +16,18 @@ from dataclasses import dataclass
 
 from ..description import JointType, Model, Plugin
 from ..physics import BodyHandle, Entity, JointHandle, PhysicsWorld
-from ._base import RateGate, System, SystemContext, UpdateInfo, all_texts, child_text, parse_bool, parse_float, ros_block
+from ._base import (
+    RateGate,
+    System,
+    SystemContext,
+    UpdateInfo,
+    all_texts,
+    child_text,
+    parse_bool,
+    parse_float,
+    ros_block,
+)
 from ._bus import Endpoint, JointStates, MsgType, Qos, Text, Transform, TransformBatch, resolve_topic
-
 
 RSP_PLUGIN = "gazelle_robot_state_publisher"
 """File name of the built-in robot_state_publisher, to configure or disable it in a model file."""
@@ -64,8 +73,14 @@ def robot_state_config(entity: Entity, log: logging.Logger) -> tuple[RobotStateC
 
 
 GZ_DIFF_DRIVES = frozenset(
-    {"gz-sim-diff-drive-system", "gz::sim::systems::DiffDrive", "ignition-gazebo-diff-drive-system",
-     "ignition::gazebo::systems::DiffDrive", "libignition-gazebo-diff-drive-system.so", "libgz-sim-diff-drive-system.so"}
+    {
+        "gz-sim-diff-drive-system",
+        "gz::sim::systems::DiffDrive",
+        "ignition-gazebo-diff-drive-system",
+        "ignition::gazebo::systems::DiffDrive",
+        "libignition-gazebo-diff-drive-system.so",
+        "libgz-sim-diff-drive-system.so",
+    }
 )
 
 
@@ -119,7 +134,9 @@ class RobotStatePublisher(System):
             if j.type in (JointType.FIXED, JointType.PLANAR):  # RSP: planar becomes fixed (KDL)
                 statics.append(Transform(0.0, parent, child, j.origin * j.child_offset))
             else:
-                self._moving.append(_MovingJoint(ctx.world.body(owner, j.parent), ctx.world.body(owner, j.child), parent, child))
+                self._moving.append(
+                    _MovingJoint(ctx.world.body(owner, j.parent), ctx.world.body(owner, j.child), parent, child)
+                )
         if model.urdf:
             desc = ctx.bus.advertise(
                 owner, resolve_topic("robot_description", c.namespace), MsgType.STRING, qos=Qos.LATCHED, depth=1

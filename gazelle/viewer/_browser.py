@@ -11,8 +11,9 @@ import os
 import shutil
 import tempfile
 import time
+from collections.abc import Iterator
 from pathlib import Path
-from typing import Any, Iterator
+from typing import Any
 
 CHROMIUM_CANDIDATES = ("/usr/bin/chromium", "/usr/bin/chromium-browser")
 CHROMIUM_ARGS = (
@@ -84,7 +85,7 @@ def open_viewer_page(url: str, *, timeout_sec: float = 30.0, max_fps: float = 0.
             executable_path=exe,
             headless=True,
             args=list(CHROMIUM_ARGS),
-            viewport=VIEWPORT,
+            viewport=VIEWPORT,  # pyright: ignore[reportArgumentType]
         )
         try:
             page = ctx.pages[0] if ctx.pages else ctx.new_page()

@@ -29,7 +29,11 @@ class TriMesh:
 
 def rgba_to_rgb255(rgba: tuple[float, float, float, float] | None) -> tuple[int, int, int]:
     r, g, b, _a = rgba or DEFAULT_RGBA
-    return (int(round(255 * min(max(r, 0.0), 1.0))), int(round(255 * min(max(g, 0.0), 1.0))), int(round(255 * min(max(b, 0.0), 1.0))))
+    return (
+        int(round(255 * min(max(r, 0.0), 1.0))),
+        int(round(255 * min(max(g, 0.0), 1.0))),
+        int(round(255 * min(max(b, 0.0), 1.0))),
+    )
 
 
 @lru_cache(maxsize=256)
@@ -73,7 +77,7 @@ def to_trimesh(geometry: object) -> TriMesh | None:
             return None
         try:
             src = _load_mesh_file(geometry.path)
-        except Exception as err:  # noqa: BLE001 - a bad mesh must not take the viewer down
+        except Exception as err:
             _log.warning(f"viewer: cannot load mesh {geometry.path}: {err}")
             return None
         scale = np.asarray(geometry.scale, dtype=float)

@@ -87,8 +87,7 @@ class OriginPolicy:
             origin = request.headers.get("Origin")
             if not self.origin_ok(origin, host):
                 _log.warning(
-                    f"viewer: refused a websocket from foreign origin {origin!r} "
-                    "(allow it with --viewer-allow-origin)"
+                    f"viewer: refused a websocket from foreign origin {origin!r} (allow it with --viewer-allow-origin)"
                 )
                 return connection.respond(http.HTTPStatus.FORBIDDEN, "Forbidden: foreign Origin\n")
         return None

@@ -6,9 +6,10 @@ from __future__ import annotations
 import sys
 import threading
 import time
+from collections.abc import Callable
 from fractions import Fraction
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Callable
+from typing import TYPE_CHECKING, Any
 
 from ._browser import BrowserUnavailable, screenshot
 
@@ -17,7 +18,7 @@ if TYPE_CHECKING:
     from ..sim import Simulation
 
 
-def snapshot_world(world: "World", out: Path, *, settle_sec: float = 1.0, panel: bool = True) -> Path:
+def snapshot_world(world: World, out: Path, *, settle_sec: float = 1.0, panel: bool = True) -> Path:
     """Simulate ``world`` in this process for a moment, serve it, and write a PNG of the viewer."""
     from ..sim import Simulation
     from ._viewer import Viewer
@@ -33,7 +34,7 @@ def snapshot_world(world: "World", out: Path, *, settle_sec: float = 1.0, panel:
         sim.stop()
 
 
-def run_snapshot(world: "World | None", out: Path, *, attach: str | None, settle_sec: float, panel: bool = True) -> int:
+def run_snapshot(world: World | None, out: Path, *, attach: str | None, settle_sec: float, panel: bool = True) -> int:
     """CLI body: returns the exit code."""
     try:
         if attach is not None:
@@ -44,7 +45,7 @@ def run_snapshot(world: "World | None", out: Path, *, attach: str | None, settle
     except BrowserUnavailable as err:
         print(f"gazelle snapshot: {err}", file=sys.stderr)
         return 2
-    except Exception as err:  # noqa: BLE001 - a timeout or an unreachable URL: say which
+    except Exception as err:
         print(f"gazelle snapshot: {type(err).__name__}: {err}", file=sys.stderr)
         return 1
     print(f"gazelle: snapshot written to {path}")
@@ -81,7 +82,7 @@ class _GifWriter:
         from PIL import Image
 
         h = round(img.height * self.width / img.width)
-        small = img.resize((self.width, h), Image.BILINEAR)
+        small = img.resize((self.width, h), Image.BILINEAR)  # pyright: ignore[reportAttributeAccessIssue]
         self.frames.append(small.quantize(colors=128, method=Image.Quantize.MEDIANCUT))
         self.stamps.append(stamp)
 
@@ -149,13 +150,13 @@ class _Mp4Writer:
         from PIL import Image
 
         if self.width:
-            img = img.resize((self.width, round(img.height * self.width / img.width)), Image.BILINEAR)
+            img = img.resize((self.width, round(img.height * self.width / img.width)), Image.BILINEAR)  # pyright: ignore[reportAttributeAccessIssue]
         if img.width % 2 or img.height % 2:  # yuv420p halves the chroma planes: even sizes only
             img = img.crop((0, 0, img.width - img.width % 2, img.height - img.height % 2))
         if self.container is None:
             self._open(img.width, img.height, stamp)
         elif (img.width, img.height) != (self.stream.width, self.stream.height):
-            img = img.resize((self.stream.width, self.stream.height), Image.BILINEAR)  # the window was resized
+            img = img.resize((self.stream.width, self.stream.height), Image.BILINEAR)  # the window was resized  # pyright: ignore[reportAttributeAccessIssue]
         pts = self._pts(stamp)
         if self.pending is not None:
             pts = max(pts, self.pending.pts + 1)
@@ -185,9 +186,9 @@ def record_video(
     seconds: float,
     fps: float = 4.0,
     width: int | None = None,
-    stop: "threading.Event | None" = None,
+    stop: threading.Event | None = None,
     settle_sec: float = 1.0,
-    on_start: "Callable[[], object] | None" = None,
+    on_start: Callable[[], object] | None = None,
     panel: bool = True,
 ) -> tuple[Path, int]:
     """Screenshots of the viewer at ``url`` at ``fps`` for ``seconds`` (or until ``stop`` is set), as a video.
@@ -234,7 +235,7 @@ def record_video(
     return out, n
 
 
-def drive_first_robot(sim: "Simulation", linear: float, angular: float) -> str | None:
+def drive_first_robot(sim: Simulation, linear: float, angular: float) -> str | None:
     """Send one Twist to the first entity with a cmd_vel subscription (as the viewer's Drive buttons do)."""
     from ..systems import MsgType, Twist
 
@@ -247,12 +248,12 @@ def drive_first_robot(sim: "Simulation", linear: float, angular: float) -> str |
     owner = eps[0].owner
     for ep in eps:
         if ep.owner == owner:
-            ep.callback(Twist((linear, 0.0, 0.0), (0.0, 0.0, angular)))
+            ep.callback(Twist((linear, 0.0, 0.0), (0.0, 0.0, angular)))  # pyright: ignore[reportOptionalCall]
     return owner
 
 
 def run_record(
-    world: "World | None",
+    world: World | None,
     out: Path,
     *,
     attach: str | None,
@@ -268,7 +269,7 @@ def run_record(
     sim = viewer = None
     try:
         url = attach
-        on_start = None
+        on_start = None  # pyright: ignore[reportAssignmentType]
         if url is None:
             assert world is not None
             sim = Simulation(world, rtf=1.0)
@@ -287,7 +288,7 @@ def run_record(
     except BrowserUnavailable as err:
         print(f"gazelle record-video: {err}", file=sys.stderr)
         return 2
-    except Exception as err:  # noqa: BLE001 - a timeout, an unreachable URL: say which
+    except Exception as err:
         print(f"gazelle record-video: {type(err).__name__}: {err}", file=sys.stderr)
         return 1
     finally:

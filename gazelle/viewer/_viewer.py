@@ -37,8 +37,8 @@ from __future__ import annotations
 
 import contextlib
 import io
-import math
 import logging
+import math
 import threading
 import time
 from dataclasses import dataclass, field
@@ -49,7 +49,7 @@ import viser
 
 from ..description import Model, Pose, load
 from ..physics import PerGeneration
-from ..systems import MsgType, Twist
+from ..systems import Endpoint, MsgType, Twist
 from ._geometry import rgba_to_rgb255, to_trimesh
 from ._models import ModelFile, find_models
 from ._origin import OriginPolicy, guarded
@@ -104,7 +104,8 @@ KEYS_JS = (
     "KeyD:'Right',ArrowRight:'Right',Space:'Stop',KeyX:'Stop'};const H=new Set();"
     "const on=()=>!!document.getElementById('" + KEYS_MARKER + "');"
     "const form=(t)=>t&&(t.tagName==='INPUT'||t.tagName==='TEXTAREA'||t.isContentEditable);"
-    "const press=(n)=>{const b=[...document.querySelectorAll('button')].find(b=>b.textContent.trim()===n);if(b)b.click();};"
+    "const press=(n)=>{const b=[...document.querySelectorAll('button')]"
+    ".find(b=>b.textContent.trim()===n);if(b)b.click();};"
     "window.addEventListener('keydown',(e)=>{if(!on()||!(e.code in M)||form(e.target))return;"
     "e.preventDefault();e.stopImmediatePropagation();if(e.repeat||H.has(e.code))return;"
     "if(M[e.code]!=='Stop')H.add(e.code);press(M[e.code]);},true);"
@@ -133,6 +134,22 @@ class _EntityNodes:
     collisions: list[Any] = field(default_factory=list)
     selectable: bool = False
     """Its visuals select it when clicked (not static world scenery such as the ground plane)."""
+    root_link: str | None = None
+
+
+@dataclass(frozen=True)
+class EntityView:
+    """What the viewer thread may know of an entity, copied on the sim thread (it never reads the world)."""
+
+    generation: int
+    """The world generation it was added in (a re-spawn under the same name is a new entity)."""
+    model: Model
+    """Its description (immutable)."""
+    links: frozenset[str]
+    """The links that have a body."""
+    root_link: str | None
+    selectable: bool
+    """Spawned, or not static: clicking its visuals selects it (not the ground plane)."""
 
 
 @dataclass(frozen=True)
@@ -144,6 +161,8 @@ class Snapshot:
     rtf: float
     entities: dict[str, int]
     """name -> generation it was added in (a re-spawn under the same name is a new entity)."""
+    views: dict[str, EntityView]
+    """name -> what the viewer needs to draw it (only for entities it does not draw yet)."""
     poses: dict[str, dict[str, tuple[tuple[float, ...], tuple[float, ...]]]]
     """entity -> link -> (position, wxyz) in the world."""
 
@@ -197,7 +216,7 @@ class Viewer:
 
     def __init__(
         self,
-        sim: "Simulation",
+        sim: Simulation,
         *,
         host: str = DEFAULT_HOST,
         port: int = DEFAULT_PORT,
@@ -220,6 +239,8 @@ class Viewer:
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
         self._nodes: dict[str, _EntityNodes] = {}
+        self._drawn: dict[str, int] = {}
+        """Entity -> generation the viewer draws (read by the sim thread's snapshot: a new dict each frame)."""
         self._bodies = PerGeneration(_bodies)
         self._lock = threading.Lock()
         self._last: Snapshot | None = None
@@ -230,6 +251,8 @@ class Viewer:
         self._trail_anchor: tuple[float, float, float] | None = None
         """/odom trails: the odometry frame in the world, planar (x, y, yaw)."""
         self._trail_handle: Any = None
+        self._odom_heard: Endpoint | None = None
+        """The odometry endpoint the trail listens to."""
         self._trail_drawn = -1
         self._trail_last_t = -1.0
         self._next_trail = 0.0
@@ -275,18 +298,16 @@ class Viewer:
         cam.up = (0.0, 0.0, 1.0)
         cam.fov = CAMERA_FOV_RAD
 
-    def _add_entity(self, name: str, generation: int) -> None:
-        e = self.sim.world.entities.get(name)
-        if e is None:
-            return
+    def _add_entity(self, name: str, view: EntityView) -> None:
         s = self.server.scene
         root_name = f"/entities/{_safe(name)}"
-        nodes = _EntityNodes((name, generation), s.add_frame(root_name, show_axes=False))
-        nodes.selectable = bool(e.spawned or not e.static)
+        nodes = _EntityNodes((name, view.generation), s.add_frame(root_name, show_axes=False))
+        nodes.selectable = view.selectable
+        nodes.root_link = view.root_link
         show_tf = bool(self._tf_box.value)
         show_col = bool(self._col_box.value)
-        for link in e.model.links:
-            if link.name not in e.built.bodies:
+        for link in view.model.links:
+            if link.name not in view.links:
                 continue
             base = f"{root_name}/{_safe(link.name)}"
             frame = s.add_frame(base, show_axes=show_tf, axes_length=0.1, axes_radius=0.004)
@@ -360,7 +381,9 @@ class Viewer:
             self._right = g.add_button("Right")
             self._stop_btn = g.add_button("Stop")
             self._keys_box = g.add_checkbox(
-                "Keyboard drive", initial_value=False, hint="WASD / arrow keys press the buttons above (instead of moving the camera)"
+                "Keyboard drive",
+                initial_value=False,
+                hint="WASD / arrow keys press the buttons above (instead of moving the camera)",
             )
             self._keys_html = g.add_html("")
         with g.add_folder("Spawn"):
@@ -400,14 +423,16 @@ class Viewer:
             (self._right, 0.0, -ANGULAR_STEP),
             (self._stop_btn, 0.0, 0.0),
         ):
-            btn.on_click(lambda _e, lin=lin, ang=ang: self.drive(lin, ang))
+            btn.on_click(lambda _e, lin=lin, ang=ang: self.drive(lin, ang))  # pyright: ignore[reportArgumentType]
         self._tf_box.on_update(lambda _e: self._set_overlays())
         self._col_box.on_update(lambda _e: self._set_overlays())
         self._trail_box.on_update(lambda _e: self._redraw_trail(force=True))
-        self._contact_box.on_update(lambda _e: self._update_contacts())
-        self._keys_box.on_update(lambda _e: setattr(self._keys_html, "content", KEYS_HTML if self._keys_box.value else ""))
+        self._contact_box.on_update(lambda _e: self._update_contacts())  # pyright: ignore[reportArgumentType]
+        self._keys_box.on_update(
+            lambda _e: setattr(self._keys_html, "content", KEYS_HTML if self._keys_box.value else "")
+        )
         self._spawn_btn.on_click(lambda _e: self._spawn_selected())
-        self._rescan_btn.on_click(lambda _e: self.rescan_models())
+        self._rescan_btn.on_click(lambda _e: self.rescan_models())  # pyright: ignore[reportArgumentType]
         self.rescan_models()
 
     def _toggle_pause(self) -> None:
@@ -432,7 +457,7 @@ class Viewer:
             return
         try:
             self.sim.delete(name)
-        except Exception as err:  # noqa: BLE001 - shown to the user, never fatal
+        except Exception as err:
             _log.warning(f"viewer: cannot delete '{name}': {err}")
 
     def drive(self, linear_x: float, angular_z: float, entity: str | None = None) -> int:
@@ -444,11 +469,17 @@ class Viewer:
         twist = Twist((float(linear_x), 0.0, 0.0), (0.0, 0.0, float(angular_z)))
         # publish on the entity's command topics as teleop_twist_keyboard would: through the bus
         topics = sorted(
-            {ep.topic for ep in self.sim.bus.endpoints() if ep.owner == name and not ep.is_publisher and ep.msg_type == MsgType.TWIST}
+            {
+                ep.topic
+                for ep in self.sim.bus.endpoints()
+                if ep.owner == name and not ep.is_publisher and ep.msg_type == MsgType.TWIST
+            }
         )
         n = sum(self.sim.bus.inject(topic, MsgType.TWIST, twist) for topic in topics)
         self._drive_text.value = (
-            f"{name}: linear {linear_x:+.2f} m/s, angular {angular_z:+.2f} rad/s" if n else f"{name}: no cmd_vel subscriber"
+            f"{name}: linear {linear_x:+.2f} m/s, angular {angular_z:+.2f} rad/s"
+            if n
+            else f"{name}: no cmd_vel subscriber"
         )
         return n
 
@@ -458,11 +489,13 @@ class Viewer:
         self._models = find_models()
         labels = [m.label for m in self._models] or [NO_MODELS]
         current = self._model_dd.value
-        self._model_dd.options = labels
-        self._model_dd.value = current if current in labels else labels[0]
+        self._model_dd.options = labels  # pyright: ignore[reportAttributeAccessIssue]
+        self._model_dd.value = current if current in labels else labels[0]  # pyright: ignore[reportAttributeAccessIssue]
         return self._models
 
-    def spawn_model(self, path: str, *, name: str = "", xyz: tuple[float, float, float] = (0.0, 0.0, 0.0), yaw: float = 0.0) -> str:
+    def spawn_model(
+        self, path: str, *, name: str = "", xyz: tuple[float, float, float] = (0.0, 0.0, 0.0), yaw: float = 0.0
+    ) -> str:
         """Load ``path`` with the loaders the ROS layer uses and spawn it; returns the entity name.
 
         A name already taken gets a ``_2``, ``_3``... suffix. Raises on a file that does not load or spawn.
@@ -492,7 +525,7 @@ class Viewer:
                 xyz=tuple(self._spawn_xyz.value),  # type: ignore[arg-type]
                 yaw=math.radians(float(self._spawn_yaw.value)),
             )
-        except Exception as err:  # noqa: BLE001 - shown to the user, never fatal
+        except Exception as err:
             self._spawn_text.value = f"failed: {err}"[:300]
             _log.warning(f"viewer: cannot spawn {mf.path}: {err}")
         else:
@@ -502,7 +535,7 @@ class Viewer:
     def trail_target(self) -> str | None:
         """The entity whose path is drawn: the selected one, else the first with a cmd_vel subscriber."""
         sel = self._entity_dd.value
-        names = self.sim.world.entities
+        names = self._nodes  # the entities of the last frame (the world itself is the sim thread's)
         if sel != NO_SELECTION and sel in names:
             return sel
         driven = sorted(
@@ -518,9 +551,19 @@ class Viewer:
             return None
         link = next((ln for ln, b in e.built.bodies.items() if b == e.built.root_body), None)
         odom = next(
-            (ep for ep in self.sim.bus.endpoints() if ep.owner == name and ep.is_publisher and ep.msg_type == MsgType.ODOMETRY),
+            (
+                ep
+                for ep in self.sim.bus.endpoints()
+                if ep.owner == name and ep.is_publisher and ep.msg_type == MsgType.ODOMETRY
+            ),
             None,
         )
+        if odom is not self._odom_heard:  # listen to the target's odometry (nothing is built for nobody)
+            if self._odom_heard is not None:
+                self._odom_heard.remove_sink(self._hear_odom)
+            if odom is not None:
+                odom.add_sink(self._hear_odom)
+            self._odom_heard = odom
         return _TrailSample(
             w.time,
             e.generation_added,
@@ -528,6 +571,9 @@ class Viewer:
             odom.topic if odom is not None else None,
             odom.last if odom is not None else None,
         )
+
+    def _hear_odom(self, _payload: Any) -> None:
+        """The trail's sink on its target's odometry endpoint: the endpoint keeps the latest message."""
 
     def sample_trail(self) -> None:
         """Add the trail target's current position to the trail (a new trail on a new target, source or reset).
@@ -550,7 +596,7 @@ class Viewer:
         assert name is not None
         if self._trail_entity != (name, sample.generation, source) or sample.time < self._trail_last_t:
             self._trail, self._trail_entity, self._trail_anchor = [], (name, sample.generation, source), None
-            label = sample.odom_topic if source == TRAIL_ODOM else "ground truth"
+            label = (sample.odom_topic or "") if source == TRAIL_ODOM else "ground truth"
             if self._trail_source.value == TRAIL_ODOM and source != TRAIL_ODOM:
                 label += ": no odometry topic"
             self._trail_text.value = f"{name} ({label})"
@@ -630,11 +676,24 @@ class Viewer:
         for ename, lname, bid in bodies:
             p = w.body_pose(bid)
             poses.setdefault(ename, {})[lname] = (p.position, p.orientation)
+        drawn = self._drawn
+        views = {
+            e.name: EntityView(
+                e.generation_added,
+                e.model,
+                frozenset(link.name for link in e.model.links if link.name in e.built.bodies),
+                next((ln for ln, b in e.built.bodies.items() if b == e.built.root_body), None),
+                bool(e.spawned or not e.static),
+            )
+            for e in w.entities.values()
+            if drawn.get(e.name) != e.generation_added
+        }
         return Snapshot(
             time=w.time,
             paused=sim.paused,
             rtf=sim.measured_rtf().rtf,
             entities={e.name: e.generation_added for e in w.entities.values()},
+            views=views,
             poses=poses,
         )
 
@@ -648,9 +707,11 @@ class Viewer:
         for name in [n for n, nodes in self._nodes.items() if snap.entities.get(n) != nodes.key[1]]:
             self._remove_entity(name)
         with self.server.atomic():
-            for name, gen in snap.entities.items():
-                if name not in self._nodes:
-                    self._add_entity(name, gen)
+            for name in snap.entities:
+                if name not in self._nodes and name in snap.views:
+                    self._add_entity(name, snap.views[name])
+        self._drawn = {name: nodes.key[1] for name, nodes in self._nodes.items()}
+        with self.server.atomic():
             for name, links in snap.poses.items():
                 nodes = self._nodes.get(name)
                 if nodes is None:
@@ -666,7 +727,7 @@ class Viewer:
         if tuple(self._entity_dd.options) != tuple(names):
             with self._lock:  # against a click selecting meanwhile (select() runs on viser's threads)
                 current = self._entity_dd.value
-                self._entity_dd.options = names
+                self._entity_dd.options = names  # pyright: ignore[reportAttributeAccessIssue]
                 self._entity_dd.value = current if current in names else NO_SELECTION
         self._last = snap
         self.frames += 1
@@ -682,9 +743,8 @@ class Viewer:
         sel = self._entity_dd.value
         links = snap.poses.get(sel)
         if sel != NO_SELECTION and links:
-            e = self.sim.world.entities.get(sel)
-            root = e.built.root_body if e is not None else None
-            link = next((ln for ln, b in (e.built.bodies.items() if e else ()) if b == root), next(iter(links)))
+            nodes = self._nodes.get(sel)
+            link = nodes.root_link if nodes is not None and nodes.root_link in links else next(iter(links))
             pos, q = links.get(link, next(iter(links.values())))
             yaw = np.degrees(np.arctan2(2 * (q[0] * q[3] + q[1] * q[2]), 1 - 2 * (q[2] ** 2 + q[3] ** 2)))
             self._pose_text.value = f"x {pos[0]:.3f}  y {pos[1]:.3f}  z {pos[2]:.3f}  yaw {yaw:.1f}°"
@@ -705,7 +765,7 @@ class Viewer:
                     if now >= self._next_trail:
                         self.sample_trail()
                         self._next_trail = now + 1.0 / TRAIL_RATE_HZ
-                except Exception:  # noqa: BLE001
+                except Exception:
                     _log.exception("viewer: trail sample failed")
                 self._stop.wait(period)
                 next_frame = time.monotonic()
@@ -724,7 +784,7 @@ class Viewer:
                     self.sample_trail()
                     self._redraw_trail()
                     self._next_trail = now + 1.0 / TRAIL_RATE_HZ
-            except Exception:  # noqa: BLE001 - logged; the viewer keeps going
+            except Exception:
                 _log.exception("viewer: frame update failed")
             self.cpu_sec += time.thread_time() - cpu0
             next_frame += period

@@ -29,4 +29,6 @@ def default_world() -> World:
         direction=(-0.5, 0.1, -0.9),
         cast_shadows=True,
     )
-    return World(name="default", gravity=(0.0, 0.0, -9.8), models=(ground,), lights=(sun,), source_file="<builtin:default>")
+    return World(
+        name="default", gravity=(0.0, 0.0, -9.8), models=(ground,), lights=(sun,), source_file="<builtin:default>"
+    )

@@ -14,9 +14,10 @@ import subprocess
 import sys
 import threading
 import time
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable, Iterator
+from typing import Any
 
 import pytest
 from _paths import REPO, SEED_XACRO  # noqa: F401 - SEED_XACRO: the ros and viewer tests import it from here
@@ -86,7 +87,9 @@ class Proc:
                 if self.popen.poll() is not None:
                     self._cond.wait(0.2)
                     if not any(needle in ln for ln in self.lines):
-                        pytest.fail(f"{self.name} exited ({self.popen.returncode}) before printing {needle!r}:\n" + self.output)
+                        pytest.fail(
+                            f"{self.name} exited ({self.popen.returncode}) before printing {needle!r}:\n" + self.output
+                        )
                 remaining = deadline - time.monotonic()
                 if remaining <= 0:
                     pytest.fail(f"{self.name} did not print {needle!r} within {timeout:g} s:\n" + self.output)
@@ -182,7 +185,7 @@ class RosClient:
     def _spin(self) -> None:
         try:
             self.executor.spin()
-        except Exception:  # noqa: BLE001 - shutting down
+        except Exception:
             pass
 
     def client(self, srv_type: Any, name: str, timeout: float = 15.0) -> Any:
@@ -207,7 +210,9 @@ class RosClient:
     def entity_state(self, name: str, reference_frame: str = "") -> Any:
         from gazebo_msgs.srv import GetEntityState
 
-        res = self.call(GetEntityState, "/get_entity_state", GetEntityState.Request(name=name, reference_frame=reference_frame))
+        res = self.call(
+            GetEntityState, "/get_entity_state", GetEntityState.Request(name=name, reference_frame=reference_frame)
+        )
         assert res.success, f"get_entity_state({name!r}) failed"
         return res
 

@@ -74,7 +74,9 @@ def test_bad_spawns_fail_clearly_and_the_server_keeps_running(sim_factory, ros_c
 
     # the server is alive: /clock still advances, and the next valid spawn works
     seen: list[float] = []
-    ros_client.node.create_subscription(Clock, "/clock", lambda m: seen.append(m.clock.sec + m.clock.nanosec * 1e-9), 10)
+    ros_client.node.create_subscription(
+        Clock, "/clock", lambda m: seen.append(m.clock.sec + m.clock.nanosec * 1e-9), 10
+    )
     wait_for(lambda: len(seen) > 5 and seen[-1] > seen[0], 10, "/clock to advance after the bad requests")
     res = _spawn(ros_client, "robot", urdf)
     assert res.success, res.status_message
@@ -93,7 +95,16 @@ def test_bad_spawns_fail_clearly_and_the_server_keeps_running(sim_factory, ros_c
 def test_spawn_times_out_cleanly_without_a_server(tmp_path):
     # no `gazelle sim` in this domain: the CLI must not hang
     proc = start(
-        [*GAZELLE, "spawn", "-entity", "r", "-file", str(REPO / "examples/simple_robot/simple_robot/robot.urdf.xacro"), "-timeout", "2"],
+        [
+            *GAZELLE,
+            "spawn",
+            "-entity",
+            "r",
+            "-file",
+            str(REPO / "examples/simple_robot/simple_robot/robot.urdf.xacro"),
+            "-timeout",
+            "2",
+        ],
         "gazelle spawn",
         env={**__import__("os").environ, "ROS_DOMAIN_ID": "99"},
     )

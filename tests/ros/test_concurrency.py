@@ -36,7 +36,12 @@ def test_many_clients_at_once(sim_factory) -> None:
             name = f"c{k}_box_{r}"
             pose = PoseStamped()
             pose.pose.position.x, pose.pose.position.y, pose.pose.position.z = float(k), float(r) * 0.3, 0.05
-            res = ros.call(SpawnEntity, NS + "spawn_entity", SpawnEntity.Request(name=name, resource_string=BOX, initial_pose=pose), timeout=30)
+            res = ros.call(
+                SpawnEntity,
+                NS + "spawn_entity",
+                SpawnEntity.Request(name=name, resource_string=BOX, initial_pose=pose),
+                timeout=30,
+            )
             if res.result.result != Result.RESULT_OK or res.entity_name != name:
                 errors.append(f"spawn {name}: {res.result.error_message}")
             answered[k] += 1

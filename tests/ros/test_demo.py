@@ -7,14 +7,13 @@ system chromium it also takes the snapshot and the MP4, and the snapshot must sh
 
 from __future__ import annotations
 
-import pytest
-
 import importlib.util
 import re
 import subprocess
 from pathlib import Path
 
 import numpy as np
+import pytest
 from _pixels import project, rgb_of, trail_mask
 
 from gazelle.viewer._browser import find_chromium

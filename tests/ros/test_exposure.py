@@ -36,7 +36,9 @@ def test_the_server_limits_discovery_to_this_machine_yet_a_fresh_shells_node_rea
     proc = start([*GAZELLE, "sim", "--no-viewer"], "gazelle sim", env=_fresh_env())
     ready = proc.wait_line("gazelle: ready", timeout=60)
     assert "discovery LOCALHOST (default of gazelle sim" in ready
-    out = subprocess.run([sys.executable, "-c", FRESH_CLIENT], env=_fresh_env(), capture_output=True, text=True, timeout=90)
+    out = subprocess.run(
+        [sys.executable, "-c", FRESH_CLIENT], env=_fresh_env(), capture_output=True, text=True, timeout=90
+    )
     assert "MODELS ['ground_plane']" in out.stdout, out.stdout + out.stderr
     assert proc.interrupt() == 0
 

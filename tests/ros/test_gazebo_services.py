@@ -81,7 +81,9 @@ def test_get_entity_state_in_world_and_relative_frames(world):
         assert not client.call(GetEntityState, "/get_entity_state", req).success
     # every world-frame spelling means the world, in every service (one frame resolver for all)
     for world_name in ("world", "/world", "map", "/map"):
-        res = client.call(GetEntityState, "/get_entity_state", GetEntityState.Request(name="b", reference_frame=world_name))
+        res = client.call(
+            GetEntityState, "/get_entity_state", GetEntityState.Request(name="b", reference_frame=world_name)
+        )
         assert res.success and res.state.pose.position.x == pytest.approx(3.0, abs=1e-3), world_name
     assert spawn(client, "c", x=5.0, frame="/world").success
     assert client.entity_state("c").state.pose.position.x == pytest.approx(5.0, abs=1e-3)

@@ -7,14 +7,13 @@ base_link where ground truth says it is.
 
 from __future__ import annotations
 
-import pytest
-
 import json
 import math
 import sys
 import threading
 from pathlib import Path
 
+import pytest
 from nav_msgs.msg import Odometry
 
 from .conftest import GAZELLE, SEED_XACRO, SQUARE_NODE, start, wait_for, yaw_of
@@ -38,6 +37,7 @@ def test_three_namespaced_robots_keep_separate_odometry_and_tf(sim_factory, ros_
     odom: dict[str, Odometry] = {}
     lock = threading.Lock()
     for ns in ROBOTS:
+
         def on_odom(msg: Odometry, ns: str = ns) -> None:
             with lock:
                 odom[ns] = msg
@@ -49,8 +49,17 @@ def test_three_namespaced_robots_keep_separate_odometry_and_tf(sim_factory, ros_
 
     drivers = [
         start(
-            [sys.executable, str(SQUARE_NODE), "--ros-args", "-r", f"/cmd_vel:=/{ns}/cmd_vel", "-r", f"__node:=square_{ns}",
-             "-p", "max_sides:=1"],
+            [
+                sys.executable,
+                str(SQUARE_NODE),
+                "--ros-args",
+                "-r",
+                f"/cmd_vel:=/{ns}/cmd_vel",
+                "-r",
+                f"__node:=square_{ns}",
+                "-p",
+                "max_sides:=1",
+            ],
             f"driver {ns}",
         )
         for ns in ROBOTS
@@ -80,13 +89,16 @@ def test_three_namespaced_robots_keep_separate_odometry_and_tf(sim_factory, ros_
         n = len(listener.lines)
         listener.popen.stdin.write(query + "\n")
         listener.popen.stdin.flush()
-        line = wait_for(lambda: next((ln for ln in listener.lines[n:] if ln.startswith("{")), None), 10, "listener answer")
+        line = wait_for(
+            lambda: next((ln for ln in listener.lines[n:] if ln.startswith("{")), None), 10, "listener answer"
+        )
         return json.loads(line)
 
     for ns in ROBOTS:
         ans = wait_for(
-            lambda ns=ns: (a := ask(f"{ns}/odom {ns}/base_link {ns}/left_wheel {ns}/right_wheel"))[f"{ns}/left_wheel"]
-            and a,
+            lambda ns=ns: (
+                (a := ask(f"{ns}/odom {ns}/base_link {ns}/left_wheel {ns}/right_wheel"))[f"{ns}/left_wheel"] and a
+            ),
             20,
             f"{ns}'s TF tree",
         )
@@ -131,7 +143,19 @@ def test_robot_state_publisher_is_built_in_and_can_be_turned_off(sim_factory, ro
     ros_client.node.create_subscription(TFMessage, "/tf", on_tf, 100)
     for ns, extra in (("own", ["-frame_prefix", "custom/"]), ("mine", ["-no_robot_state_publisher"])):
         spawn = start(
-            [*GAZELLE, "spawn", "-entity", ns, "-robot_namespace", ns, "-file", str(SEED_XACRO), "-y", "2" if ns == "own" else "0", *extra],
+            [
+                *GAZELLE,
+                "spawn",
+                "-entity",
+                ns,
+                "-robot_namespace",
+                ns,
+                "-file",
+                str(SEED_XACRO),
+                "-y",
+                "2" if ns == "own" else "0",
+                *extra,
+            ],
             f"spawn {ns}",
         )
         assert spawn.wait(60) == 0, spawn.output
@@ -143,4 +167,8 @@ def test_robot_state_publisher_is_built_in_and_can_be_turned_off(sim_factory, ro
     with lock:
         mine = {f for f in frames if f[0].startswith("mine/")}
     assert "mine" not in descriptions
-    assert mine <= {("mine/odom", "mine/base_link"), ("mine/base_link", "mine/left_wheel"), ("mine/base_link", "mine/right_wheel")}
+    assert mine <= {
+        ("mine/odom", "mine/base_link"),
+        ("mine/base_link", "mine/left_wheel"),
+        ("mine/base_link", "mine/right_wheel"),
+    }

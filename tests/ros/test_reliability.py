@@ -60,11 +60,14 @@ def test_concurrent_spawn_and_delete_get_a_reply_each_and_leak_nothing(sim_facto
             for i in range(25):
                 name = f"b{k}_{i}"
                 req = SpawnEntity.Request(name=name, xml=box)
-                req.initial_pose.position.x, req.initial_pose.position.y = 0.5 * k, 0.3 * i  # a pile is tested in-process
+                req.initial_pose.position.x, req.initial_pose.position.y = (
+                    0.5 * k,
+                    0.3 * i,
+                )  # a pile is tested in-process
                 req.initial_pose.position.z = 0.1
                 fut = client.client(SpawnEntity, "/spawn_entity").call_async(req)
                 done = threading.Event()
-                fut.add_done_callback(lambda _f: done.set())
+                fut.add_done_callback(lambda _f, done=done: done.set())
                 if not done.wait(30):
                     errors.append(f"spawn {name}: no reply in 30 s")
                     continue
@@ -73,7 +76,7 @@ def test_concurrent_spawn_and_delete_get_a_reply_each_and_leak_nothing(sim_facto
                 if i % 2 == 0 and fut.result().success:
                     fut = client.client(DeleteEntity, "/delete_entity").call_async(DeleteEntity.Request(name=name))
                     done = threading.Event()
-                    fut.add_done_callback(lambda _f: done.set())
+                    fut.add_done_callback(lambda _f, done=done: done.set())
                     if not done.wait(30):
                         errors.append(f"delete {name}: no reply in 30 s")
                         continue
@@ -98,8 +101,8 @@ def test_a_dead_ros_thread_is_reported_with_its_traceback(monkeypatch, caplog):
     """If the executor thread dies anyway, the bridge records why and the server loop sees it (never a deaf server)."""
     from rclpy.executors import MultiThreadedExecutor
 
-    from gazelle.sim import Simulation
     from gazelle.ros._bridge import RosBridge
+    from gazelle.sim import Simulation
     from gazelle.worlds import default_world
 
     def broken(self, timeout_sec=None):
@@ -140,9 +143,8 @@ def test_a_signal_stops_a_busy_server_within_3_s(ros_client, signum):
 
 @pytest.mark.parametrize("joint_type", ["fixed", "revolute"])
 def test_a_5000_link_chain_gets_an_answer_and_the_next_spawn_works(ros_client, sim_factory, joint_type):
-    from test_failed_spawns import chain
-
     from gazebo_msgs.srv import GetModelList
+    from test_failed_spawns import chain
 
     sim = sim_factory("--no-viewer")
     res = _spawn(ros_client, "chain", chain(5000, joint_type), timeout=60)

@@ -7,10 +7,11 @@ spawns entities with its own names and puts the simulation in the state it needs
 from __future__ import annotations
 
 import math
-from pathlib import Path
 import re
 import time
-from typing import Any, Iterator
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
 
 import pytest
 from action_msgs.msg import GoalStatus
@@ -53,7 +54,9 @@ def box_sdf(name: str = "box", size: float = 0.2, static: bool = False) -> str:
     )
 
 
-BROKEN_SDF = '<?xml version="1.0"?>\n<sdf version="1.9">\n  <model name="broken">\n    <link name="l">\n  </model>\n</sdf>\n'
+BROKEN_SDF = (
+    '<?xml version="1.0"?>\n<sdf version="1.9">\n  <model name="broken">\n    <link name="l">\n  </model>\n</sdf>\n'
+)
 
 
 @pytest.fixture(scope="module")
@@ -95,7 +98,9 @@ def pause(ros: RosClient) -> None:
     assert set_state(ros, SimulationState.STATE_PAUSED) in (OK, SetSimulationState.Response.ALREADY_IN_TARGET_STATE)
 
 
-def spawn(ros: RosClient, name: str = "", *, uri: str = "", xml: str = "", frame: str = "", z: float = 0.0, **kw: Any) -> Any:
+def spawn(
+    ros: RosClient, name: str = "", *, uri: str = "", xml: str = "", frame: str = "", z: float = 0.0, **kw: Any
+) -> Any:
     pose = PoseStamped()
     pose.header.frame_id = frame
     pose.pose.position.z = z
@@ -157,7 +162,9 @@ def test_simulation_state_transitions(ros: RosClient) -> None:
     wait_for(lambda: stamp(entity_state(ros, "state_box")) > 0.05, 10, "sim time to advance while playing")
     assert set_state(ros, SimulationState.STATE_PAUSED) == OK
     assert call(ros, GetSimulationState, "get_simulation_state").state.state == SimulationState.STATE_PAUSED
-    res = call(ros, SetSimulationState, "set_simulation_state", state=SimulationState(state=SimulationState.STATE_QUITTING))
+    res = call(
+        ros, SetSimulationState, "set_simulation_state", state=SimulationState(state=SimulationState.STATE_QUITTING)
+    )
     assert res.result.result == A.INCORRECT_TRANSITION
     assert "Ctrl-C" in res.result.error_message
     # STOPPED = pause + reset everything: time to 0, spawned entities removed
@@ -208,7 +215,9 @@ def test_step_simulation(ros: RosClient) -> None:
 
 
 def _send_goal(client: ActionClient, steps: int, feedback: list) -> Any:
-    fut = client.send_goal_async(SimulateSteps.Goal(steps=steps), feedback_callback=lambda m: feedback.append(m.feedback))
+    fut = client.send_goal_async(
+        SimulateSteps.Goal(steps=steps), feedback_callback=lambda m: feedback.append(m.feedback)
+    )
     return wait_for(lambda: fut.done() and fut.result(), 10, "goal response")
 
 
@@ -261,7 +270,9 @@ def test_spawn_entity_uri_and_renaming(ros: RosClient, server: Proc) -> None:
     # the server never runs xacro, not even on a file found by URI: the reply says what to do
     refused = spawn(ros, uri=str(SEED_XACRO), z=0.1)
     assert refused.result.result == SpawnEntity.Response.RESOURCE_PARSE_ERROR
-    assert "[XACRO_NOT_ALLOWED]" in refused.result.error_message and "gazelle spawn -file" in refused.result.error_message
+    assert (
+        "[XACRO_NOT_ALLOWED]" in refused.result.error_message and "gazelle spawn -file" in refused.result.error_message
+    )
     urdf = server.resources / "simple_robot.urdf"  # type: ignore[attr-defined]
     urdf.write_text(xacro_to_urdf(SEED_XACRO))
     SEED_URDF = str(urdf)
@@ -287,7 +298,12 @@ def test_spawn_entity_uri_and_renaming(ros: RosClient, server: Proc) -> None:
     evil = spawn(ros, "x", uri="model://evil")
     assert evil.result.result == SpawnEntity.Response.NO_RESOURCE and "SECRET_MODEL" not in evil.result.error_message
     assert "outside" in evil.result.error_message, evil.result.error_message
-    for uri in ("model://no_such_model", "model://crate/../../../etc/passwd", "package://nope/x.urdf", "http://x/y.sdf"):
+    for uri in (
+        "model://no_such_model",
+        "model://crate/../../../etc/passwd",
+        "package://nope/x.urdf",
+        "http://x/y.sdf",
+    ):
         r = spawn(ros, "x", uri=uri)
         assert r.result.result == SpawnEntity.Response.NO_RESOURCE, uri
         assert uri in r.result.error_message
@@ -313,7 +329,9 @@ def test_spawn_entity_failures(ros: RosClient, tmp_path: Path) -> None:
     assert nan.result.result == R.INVALID_POSE
     frame = spawn(ros, "frame_box", xml=box_sdf(), frame="no_such_frame")
     assert frame.result.result == Result.RESULT_OPERATION_FAILED
-    assert "initial_pose.header.frame_id" in frame.result.error_message and "no_such_frame" in frame.result.error_message
+    assert (
+        "initial_pose.header.frame_id" in frame.result.error_message and "no_such_frame" in frame.result.error_message
+    )
     # a real model file outside the resource paths is not read, by path or by file://
     outside = tmp_path / "secret_robot.sdf"
     outside.write_text(box_sdf("secret"))
@@ -381,11 +399,14 @@ def test_get_entities_filters(ros: RosClient) -> None:
     res = call(ros, GetEntities, "get_entities", filters=_filters("^q_"))
     assert res.result.result == OK and set(res.entities) == {"q_robot", "q_box", "q_wall"}
     C = EntityCategory
-    cat = lambda c: set(call(ros, GetEntities, "get_entities", filters=_filters("^q_", (c,))).entities)  # noqa: E731
+    cat = lambda c: set(call(ros, GetEntities, "get_entities", filters=_filters("^q_", (c,))).entities)
     assert cat(C.CATEGORY_ROBOT) == {"q_robot"}
     assert cat(C.CATEGORY_DYNAMIC_OBJECT) == {"q_box"}
     assert cat(C.CATEGORY_STATIC_OBJECT) == {"q_wall"}
-    assert "ground_plane" in call(ros, GetEntities, "get_entities", filters=_filters("", (C.CATEGORY_STATIC_OBJECT,))).entities
+    assert (
+        "ground_plane"
+        in call(ros, GetEntities, "get_entities", filters=_filters("", (C.CATEGORY_STATIC_OBJECT,))).entities
+    )
     bad = call(ros, GetEntities, "get_entities", filters=_filters("q_(["))
     assert bad.result.result == Result.RESULT_OPERATION_FAILED and "regular expression" in bad.result.error_message
     tags = _filters()

@@ -69,7 +69,9 @@ def test_soak_spawn_delete_while_driving(sim_factory, ros_client) -> None:
     assert ros_client.node.count_services(NS + "spawn_entity") == 1, "another server shares this domain: " + servers(
         ros_client, NS + "spawn_entity"
     )
-    res = ros_client.call(SpawnEntity, NS + "spawn_entity", spawn_req("robot", xacro_to_urdf(SEED_XACRO), z=0.05), timeout=30)
+    res = ros_client.call(
+        SpawnEntity, NS + "spawn_entity", spawn_req("robot", xacro_to_urdf(SEED_XACRO), z=0.05), timeout=30
+    )
     assert res.result.result == Result.RESULT_OK, res.result.error_message
     pub = ros_client.node.create_publisher(Twist, "/cmd_vel", 10)
     cmd = Twist()
@@ -83,8 +85,10 @@ def test_soak_spawn_delete_while_driving(sim_factory, ros_client) -> None:
         while not stop.is_set():
             pub.publish(cmd)
             try:
-                st = ros_client.call(GetEntityState, NS + "get_entity_state", GetEntityState.Request(entity="robot"), timeout=10)
-            except BaseException as err:  # noqa: BLE001 - pytest.fail raises Failed, a BaseException
+                st = ros_client.call(
+                    GetEntityState, NS + "get_entity_state", GetEntityState.Request(entity="robot"), timeout=10
+                )
+            except BaseException as err:
                 problems.append(f"get_entity_state: {err}")
                 return
             if st.result.result == Result.RESULT_OK:

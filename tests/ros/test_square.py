@@ -31,7 +31,9 @@ def _spawn_from_topic(ros_client, name: str) -> None:
     qos = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
     pub = ros_client.node.create_publisher(String, "robot_description", qos)
     pub.publish(String(data=xacro_to_urdf(SEED_XACRO)))
-    spawn = start([*GAZELLE, "spawn", "-entity", name, "-topic", "robot_description", "-timeout", "30"], "gazelle spawn")
+    spawn = start(
+        [*GAZELLE, "spawn", "-entity", name, "-topic", "robot_description", "-timeout", "30"], "gazelle spawn"
+    )
     rc = spawn.wait(60)
     assert rc == 0, spawn.output
     assert f"Successfully spawned entity [{name}]" in spawn.output
@@ -79,7 +81,9 @@ def test_seed_robot_drives_a_side_and_turns(mode, sim_factory, ros_client):
 
     sampler = threading.Thread(target=sample, daemon=True)
     sampler.start()
-    driver = start([sys.executable, str(SQUARE_NODE), "--ros-args", "-p", "max_sides:=1", *cfg["node_args"]], "square_movement")
+    driver = start(
+        [sys.executable, str(SQUARE_NODE), "--ros-args", "-p", "max_sides:=1", *cfg["node_args"]], "square_movement"
+    )
     rc = driver.wait(120)
     done.set()
     sampler.join(10)
@@ -93,13 +97,17 @@ def test_seed_robot_drives_a_side_and_turns(mode, sim_factory, ros_client):
     )
     end_state = ros_client.entity_state("simple_robot").state
     # at rest, the latest /odom is where ground truth says the robot is
-    wait_for(lambda: odoms and odoms[-1][0] >= ros_client.entity_state("simple_robot").header.stamp.sec, 10, "a fresh /odom")
+    wait_for(
+        lambda: odoms and odoms[-1][0] >= ros_client.entity_state("simple_robot").header.stamp.sec, 10, "a fresh /odom"
+    )
     with lock:
         _, ox, oy = max(odoms)
     assert math.hypot(ox - end_state.pose.position.x, oy - end_state.pose.position.y) < 1e-3
     p0, p1 = start_state.pose.position, end_state.pose.position
     distance = math.hypot(p1.x - p0.x, p1.y - p0.y)
-    turn = math.degrees(math.remainder(yaw_of(end_state.pose.orientation) - yaw_of(start_state.pose.orientation), math.tau))
+    turn = math.degrees(
+        math.remainder(yaw_of(end_state.pose.orientation) - yaw_of(start_state.pose.orientation), math.tau)
+    )
     print(f"[{mode}] side: {distance:.4f} m, turn: {turn:.2f} deg")
     assert distance == pytest.approx(1.00, abs=0.03)
     assert turn == pytest.approx(90.0, abs=3.0)

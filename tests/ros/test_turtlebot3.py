@@ -51,7 +51,9 @@ class Observer:
         node.create_subscription(Odometry, "/odom", lambda m: self._add(self.odom, m), 50)
         node.create_subscription(JointState, "/joint_states", lambda m: self._add(self.joint_states, m), 50)
         node.create_subscription(TFMessage, "/tf", self._on_tf, 100)
-        latched = QoSProfile(depth=100, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
+        latched = QoSProfile(
+            depth=100, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE
+        )
         node.create_subscription(TFMessage, "/tf_static", self._on_tf, latched)
 
     def _add(self, into: list, msg) -> None:
@@ -103,8 +105,12 @@ def test_turtlebot3_spawns_drives_and_publishes(case, resources, sim_factory, ro
     dx = end_pose.position.x - start_pose.position.x
     dy = end_pose.position.y - start_pose.position.y
     # judged against the sim time that passed (at RTF 1 the sim may make up a stall), not wall time
-    sim_dt = (end.header.stamp.sec - start.header.stamp.sec) + (end.header.stamp.nanosec - start.header.stamp.nanosec) * 1e-9
-    assert 0.15 < dx < 0.15 * sim_dt + 0.02, f"moved {dx:.3f} m forward (commanded 0.15 m/s; {sim_dt:.2f} s of sim time passed)"
+    sim_dt = (end.header.stamp.sec - start.header.stamp.sec) + (
+        end.header.stamp.nanosec - start.header.stamp.nanosec
+    ) * 1e-9
+    assert 0.15 < dx < 0.15 * sim_dt + 0.02, (
+        f"moved {dx:.3f} m forward (commanded 0.15 m/s; {sim_dt:.2f} s of sim time passed)"
+    )
     assert abs(dy) < 0.05
 
     wait_for(lambda: len(obs.odom) > 5 and len(obs.joint_states) > 5, 10, "/odom and /joint_states")
@@ -146,8 +152,22 @@ def test_turtlebot3_world_burger_stands_and_drives_half_a_metre(resources, sim_f
     world = TB3 / "turtlebot3_gazebo/worlds/turtlebot3_world.world"
     sim = sim_factory(str(world))
     spawn = start(
-        [*GAZELLE, "spawn", "-entity", "burger", "-file", str(CASES["gz_model_sdf"]), "-x", "-2.0", "-y", "-0.5",
-         "-z", "0.01", "-timeout", "30"],
+        [
+            *GAZELLE,
+            "spawn",
+            "-entity",
+            "burger",
+            "-file",
+            str(CASES["gz_model_sdf"]),
+            "-x",
+            "-2.0",
+            "-y",
+            "-0.5",
+            "-z",
+            "0.01",
+            "-timeout",
+            "30",
+        ],
         "gazelle spawn",
     )
     assert spawn.wait(90) == 0, spawn.output

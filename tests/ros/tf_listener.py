@@ -38,9 +38,11 @@ class Listener:
     def __init__(self, node):
         self.edges = {}  # child -> (parent, pose)
         self.lock = threading.Lock()
-        node.create_subscription(TFMessage, '/tf', self.on_tf, QoSProfile(depth=100))
-        static_qos = QoSProfile(depth=100, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
-        node.create_subscription(TFMessage, '/tf_static', self.on_tf, static_qos)
+        node.create_subscription(TFMessage, "/tf", self.on_tf, QoSProfile(depth=100))
+        static_qos = QoSProfile(
+            depth=100, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE
+        )
+        node.create_subscription(TFMessage, "/tf_static", self.on_tf, static_qos)
 
     def on_tf(self, msg):
         with self.lock:
@@ -69,10 +71,10 @@ class Listener:
 
 def main():
     rclpy.init()
-    node = rclpy.create_node('tf_listener')
+    node = rclpy.create_node("tf_listener")
     listener = Listener(node)
     threading.Thread(target=rclpy.spin, args=(node,), daemon=True).start()
-    print('READY', flush=True)
+    print("READY", flush=True)
     for line in sys.stdin:
         words = line.split()
         if not words:
@@ -83,11 +85,11 @@ def main():
             pose = listener.lookup(root, t)
             out[t] = None if pose is None else [*pose[0], *pose[1]]
         with listener.lock:
-            out['__frames__'] = sorted(listener.edges)
+            out["__frames__"] = sorted(listener.edges)
         print(json.dumps(out), flush=True)
     node.destroy_node()
     rclpy.shutdown()
 
 
-if __name__ == '__main__':
+if __name__ == "__main__":
     main()

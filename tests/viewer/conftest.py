@@ -3,12 +3,12 @@ headless Debian chromium (Playwright) looking at it (test_browser.py skips witho
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from pathlib import Path
-from typing import Any, Iterator
+from typing import Any
 
 import pytest
-
-from ros.conftest import GAZELLE, REPO, SEED_XACRO, Proc, RosClient, ros_env, start, wait_for  # noqa: E402,F401
+from ros.conftest import GAZELLE, REPO, SEED_XACRO, Proc, RosClient, ros_env, start, wait_for  # noqa: F401
 
 ARTIFACTS = REPO / "out" / "viewer"
 

@@ -83,7 +83,12 @@ def test_blue_robot_appears_at_its_projected_position(page: Any, artifacts: Path
         seen.append(n)
         return n >= MIN_BLUE_PX
 
-    wait_for(enough_blue, timeout=15, what=f">= {MIN_BLUE_PX} blue pixels around ({cx:.0f}, {cy:.0f}) (last: {seen[-3:]})", interval=0.2)
+    wait_for(
+        enough_blue,
+        timeout=15,
+        what=f">= {MIN_BLUE_PX} blue pixels around ({cx:.0f}, {cy:.0f}) (last: {seen[-3:]})",
+        interval=0.2,
+    )
     n, _, centroid = blue_in_region(page, artifacts / "viewer_robot.png")
     assert n >= MIN_BLUE_PX
     assert centroid is not None and math.dist(centroid, (cx, cy)) < 40, (
@@ -103,7 +108,9 @@ def test_pause_stops_sim_time_and_play_resumes(page: Any, ros_client_mod: Any) -
     wait_for(lambda: last_clock, timeout=10, what="/clock")
 
     page.get_by_role("button", name="Pause", exact=True).click()
-    wait_for(lambda: page.get_by_role("button", name="Play", exact=True).count() == 1, timeout=5, what="the Play button")
+    wait_for(
+        lambda: page.get_by_role("button", name="Play", exact=True).count() == 1, timeout=5, what="the Play button"
+    )
     # the GUI refreshes at 10 Hz: let a frame taken just before the click be overwritten
     reads: list[float] = []
 
@@ -228,9 +235,7 @@ def test_drive_buttons_move_the_robot(page: Any, ros_client_mod: Any) -> None:
     wait_for(lambda: "x " in gui_input(page, "Pose").input_value(), timeout=5, what="the selected robot's pose")
     start = ros_client_mod.entity_state(ROBOT).state.pose.position
     page.get_by_role("button", name="Forward", exact=True).click()
-    wait_for(
-        lambda: "linear +0.50" in gui_input(page, "cmd_vel").input_value(), timeout=5, what="the cmd_vel echo"
-    )
+    wait_for(lambda: "linear +0.50" in gui_input(page, "cmd_vel").input_value(), timeout=5, what="the cmd_vel echo")
 
     def moved() -> bool:
         p = ros_client_mod.entity_state(ROBOT).state.pose.position
@@ -255,7 +260,9 @@ def test_drive_buttons_move_the_robot(page: Any, ros_client_mod: Any) -> None:
 
     counts: list[int] = []
     try:
-        wait_for(lambda: counts.append(trail_px()) or counts[-1] > 150, timeout=5, what="the magenta path trail in the view")
+        wait_for(
+            lambda: counts.append(trail_px()) or counts[-1] > 150, timeout=5, what="the magenta path trail in the view"
+        )
     finally:
         page.screenshot(path=str(ARTIFACTS / "viewer_trail.png"))
 
@@ -299,7 +306,9 @@ def test_snapshot_command_writes_a_png_with_the_robot(tmp_path: Path, panel: boo
     mask = blue_mask(out.read_bytes())
     h, w = mask.shape
     cx, cy = project(ROBOT_CENTRE, w, h)
-    region = mask[int(cy) - REGION_HALF_PX : int(cy) + REGION_HALF_PX, int(cx) - REGION_HALF_PX : int(cx) + REGION_HALF_PX]
+    region = mask[
+        int(cy) - REGION_HALF_PX : int(cy) + REGION_HALF_PX, int(cx) - REGION_HALF_PX : int(cx) + REGION_HALF_PX
+    ]
     assert region.sum() >= MIN_BLUE_PX, f"only {region.sum()} blue pixels where the robot should be"
     # the panel is white; the scene there is the grey ground (see viewer_robot.png)
     rgb = np.asarray(Image.open(io.BytesIO(out.read_bytes())).convert("RGB"))
@@ -333,7 +342,11 @@ def test_chessboard_world_renders_33_entities(page: Any, artifacts: Path) -> Non
     piece = load(here / "chess_piece.sdf").value
     for row in (0, 1, 6, 7):
         for col in range(8):
-            sim.spawn(piece, name=f"piece_r{row}_c{col}", pose=Pose((bx - 0.175 + 0.05 * col, by - 0.175 + 0.05 * row, bz + 0.02)))
+            sim.spawn(
+                piece,
+                name=f"piece_r{row}_c{col}",
+                pose=Pose((bx - 0.175 + 0.05 * col, by - 0.175 + 0.05 * row, bz + 0.02)),
+            )
     viewer = Viewer(sim, port=0)
     cam = viewer.server.initial_camera
     cam.position, cam.look_at = CHESS_EYE, CHESS_TARGET
@@ -346,7 +359,11 @@ def test_chessboard_world_renders_33_entities(page: Any, artifacts: Path) -> Non
         rgb = np.asarray(Image.open(out).convert("RGB")).astype(int)
         h, w = rgb.shape[:2]
         # the board's middle rows (2..5) hold no pieces: its plain grey top must fill that band
-        corners = [project((bx + dx, by + dy, bz + 0.01), w, h, CHESS_EYE, CHESS_TARGET) for dx in (-0.15, 0.15) for dy in (-0.07, 0.07)]
+        corners = [
+            project((bx + dx, by + dy, bz + 0.01), w, h, CHESS_EYE, CHESS_TARGET)
+            for dx in (-0.15, 0.15)
+            for dy in (-0.07, 0.07)
+        ]
         x0, x1 = int(min(c[0] for c in corners)), int(max(c[0] for c in corners))
         y0, y1 = int(min(c[1] for c in corners)), int(max(c[1] for c in corners))
         band = rgb[y0:y1, x0:x1]
@@ -356,7 +373,9 @@ def test_chessboard_world_renders_33_entities(page: Any, artifacts: Path) -> Non
         dark = 0
         for row in (0, 1, 6, 7):
             for col in range(8):
-                px, py = project((bx - 0.175 + 0.05 * col, by - 0.175 + 0.05 * row, bz + 0.03), w, h, CHESS_EYE, CHESS_TARGET)
+                px, py = project(
+                    (bx - 0.175 + 0.05 * col, by - 0.175 + 0.05 * row, bz + 0.03), w, h, CHESS_EYE, CHESS_TARGET
+                )
                 win = rgb[int(py) - 5 : int(py) + 6, int(px) - 5 : int(px) + 6].max(axis=-1)
                 dark += (win < 100).mean() > 0.3
         seen.append((float(grey.mean()) if band.size else 0.0, int(dark)))
@@ -370,7 +389,9 @@ def test_chessboard_world_renders_33_entities(page: Any, artifacts: Path) -> Non
         deadline = time.monotonic() + 30
         while not board_and_pieces():  # the scene streams in over the first frames; on a slow CPU, seconds
             grey, dark = seen[-1]
-            assert time.monotonic() < deadline, f"board grey covers {grey:.0%} of its band (> 80 % expected); {dark} of 32 pieces seen"
+            assert time.monotonic() < deadline, (
+                f"board grey covers {grey:.0%} of its band (> 80 % expected); {dark} of 32 pieces seen"
+            )
             page.wait_for_timeout(300)
     finally:
         viewer.stop()
@@ -398,7 +419,7 @@ def test_foreign_pages_cannot_open_the_viewer_websocket(page: Any, viewer_sim) -
     body = b"<html><body>another site</body></html>"
 
     class Page(http.server.BaseHTTPRequestHandler):
-        def do_GET(self) -> None:  # noqa: N802 - http.server's name
+        def do_GET(self) -> None:
             self.send_response(200)
             self.send_header("Content-Type", "text/html")
             self.send_header("Content-Length", str(len(body)))

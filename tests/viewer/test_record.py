@@ -11,11 +11,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _pixels import blue_mask
 
 from gazelle.viewer._browser import find_chromium
 from gazelle.viewer._snapshot import video_format
-
-from _pixels import blue_mask
 
 from .conftest import ARTIFACTS, GAZELLE, REPO, SEED_XACRO
 

@@ -223,7 +223,9 @@ def test_trail_contacts_and_spawn_from_the_resource_paths(monkeypatch) -> None:
         assert viewer._trail_handle is not None
         viewer._contact_box.value = True
         pts = viewer._update_contacts()
-        assert pts is not None and len(pts) >= 2 and np.all(np.abs(pts[:, 2]) < 0.05)  # wheels (and caster) on the ground
+        assert (
+            pts is not None and len(pts) >= 2 and np.all(np.abs(pts[:, 2]) < 0.05)
+        )  # wheels (and caster) on the ground
         name = viewer.spawn_model(str(REPO / "examples/chessboard/chess_piece.sdf"), xyz=(2.0, 0.0, 0.1), yaw=0.5)
         name2 = viewer.spawn_model(str(REPO / "examples/chessboard/chess_piece.sdf"), xyz=(2.5, 0.0, 0.1))
         assert name2 == f"{name}_2" and {name, name2} <= set(sim.world.entities)
@@ -239,15 +241,13 @@ def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_
     import re
 
     import xacro
+    from _paths import BOX
 
+    from gazelle.description import load_string
     from gazelle.sim import Simulation
     from gazelle.viewer import Viewer
     from gazelle.viewer._viewer import TRAIL_TRUTH
     from gazelle.worlds import default_world
-
-    from _paths import BOX
-
-    from gazelle.description import load_string
 
     urdf = xacro.process_file(str(SEED_XACRO)).toxml()
     urdf, n = re.subn(
@@ -317,7 +317,9 @@ def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_
         sim.call(lambda: setattr(sim, "paused", False))
         drive(0.3)
         assert viewer._trail_text.value == "r1 (/odom)"
-        assert viewer.trail and all(p[:2] == pytest.approx((1.0, 2.0), abs=0.02) for p in viewer.trail), viewer.trail[:3]
+        assert viewer.trail and all(p[:2] == pytest.approx((1.0, 2.0), abs=0.02) for p in viewer.trail), viewer.trail[
+            :3
+        ]
     finally:
         viewer.stop()
         sim.stop()

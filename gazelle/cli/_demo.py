@@ -37,7 +37,9 @@ class _Child:
     def __init__(self, name: str, cmd: list[str], env: dict[str, str]):
         self.name = name
         self.lines: list[str] = []
-        self.proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env, cwd=REPO)
+        self.proc = subprocess.Popen(
+            cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env, cwd=REPO
+        )
         self._ready = threading.Event()
         threading.Thread(target=self._read, daemon=True).start()
 
@@ -69,7 +71,7 @@ class _Child:
         return self.proc.returncode
 
 
-def _yaw(q) -> float:  # noqa: ANN001 - geometry_msgs/Quaternion
+def _yaw(q) -> float:
     return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
 
 
@@ -133,7 +135,7 @@ def write_svg(path: Path, truth: list[Sample], odom: list[Sample], corners: list
     path.write_text(svg)
 
 
-def _viewer_url(sim: "_Child") -> str | None:
+def _viewer_url(sim: _Child) -> str | None:
     """The URL `gazelle sim` printed for its browser viewer (None: no viewer)."""
     for ln in sim.lines:
         if "gazelle: viewer at " in ln:
@@ -151,6 +153,7 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
     import xacro
     from gazebo_msgs.srv import GetEntityState
     from nav_msgs.msg import Odometry
+    from rclpy.context import Context
     from rclpy.executors import SingleThreadedExecutor
     from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
     from std_msgs.msg import String
@@ -159,7 +162,7 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
     print(f"gazelle demo: ROS_DOMAIN_ID={env.get('ROS_DOMAIN_ID', '0')}, real-time factor {rtf:g}", flush=True)
     print("1. gazelle sim (embedded default world)", flush=True)
     sim = _Child("sim", [*gazelle, "sim", "--rtf", str(rtf)], env)
-    context = rclpy.Context()
+    context = Context()
     rclpy.init(context=context)
     node = rclpy.create_node("gazelle_demo", context=context)
     executor = SingleThreadedExecutor(context=context)  # the multi-threaded one drops /odom at 100 Hz
@@ -177,7 +180,7 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
         print("2. robot_description <- xacro examples/simple_robot/simple_robot/robot.urdf.xacro", flush=True)
         qos = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
         pub = node.create_publisher(String, "robot_description", qos)
-        pub.publish(String(data=xacro.process_file(str(EXAMPLE / "robot.urdf.xacro")).toxml()))
+        pub.publish(String(data=xacro.process_file(str(EXAMPLE / "robot.urdf.xacro")).toxml()))  # pyright: ignore[reportAttributeAccessIssue]
         print("3. gazelle spawn -entity simple_robot -topic robot_description", flush=True)
         spawn = _Child("spawn", [*gazelle, "spawn", "-entity", "simple_robot", "-topic", "robot_description"], env)
         children.append(spawn)
@@ -192,7 +195,14 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
         def on_odom(msg: Odometry) -> None:
             p = msg.pose.pose
             with lock:
-                odom.append(Sample(msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9, p.position.x, p.position.y, _yaw(p.orientation)))
+                odom.append(
+                    Sample(
+                        msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9,
+                        p.position.x,
+                        p.position.y,
+                        _yaw(p.orientation),
+                    )
+                )
 
         node.create_subscription(Odometry, "/odom", on_odom, 100)
         client = node.create_client(GetEntityState, "/get_entity_state")
@@ -206,11 +216,18 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
                 fut = client.call_async(GetEntityState.Request(name="simple_robot"))
                 ev = threading.Event()
                 fut.add_done_callback(lambda _f, ev=ev: ev.set())
-                if ev.wait(5) and fut.result() is not None and fut.result().success:
-                    r = fut.result()
+                r = fut.result() if ev.wait(5) else None
+                if r is not None and r.success:
                     p = r.state.pose
                     with lock:
-                        truth.append(Sample(r.header.stamp.sec + r.header.stamp.nanosec * 1e-9, p.position.x, p.position.y, _yaw(p.orientation)))
+                        truth.append(
+                            Sample(
+                                r.header.stamp.sec + r.header.stamp.nanosec * 1e-9,
+                                p.position.x,
+                                p.position.y,
+                                _yaw(p.orientation),
+                            )
+                        )
                 done.wait(0.02)
 
         sampler = threading.Thread(target=sample_truth, daemon=True)
@@ -221,7 +238,7 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
             node_cmd += ["-p", "use_sim_time:=true"]
         recorder = None
         if record and url:
-            from ..viewer._snapshot import record_video
+            from ..viewer import record_video
 
             stop_rec, rec_ready = threading.Event(), threading.Event()
             rec_result: list[object] = []
@@ -230,10 +247,17 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
                 try:
                     rec_result.append(
                         record_video(
-                            url, out / "square.mp4", seconds=600, fps=2.0, stop=stop_rec, settle_sec=0.5, panel=False, on_start=rec_ready.set
+                            url,
+                            out / "square.mp4",
+                            seconds=600,
+                            fps=2.0,
+                            stop=stop_rec,
+                            settle_sec=0.5,
+                            panel=False,
+                            on_start=rec_ready.set,
                         )
                     )
-                except Exception as err:  # noqa: BLE001 - reported below; the demo itself goes on
+                except Exception as err:
                     rec_result.append(err)
                 finally:
                     rec_ready.set()
@@ -249,7 +273,10 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
             stop_rec.set()
             recorder.join(60)
             r = rec_result[0] if rec_result else "no result"
-            print(f"   video: {r[0].resolve()} ({r[1]} frames)" if isinstance(r, tuple) else f"   video failed: {r}", flush=True)
+            print(
+                f"   video: {r[0].resolve()} ({r[1]} frames)" if isinstance(r, tuple) else f"   video failed: {r}",
+                flush=True,
+            )
         if square_rc != 0:
             print("gazelle demo: square_movement failed", file=sys.stderr)
             return 1
@@ -276,17 +303,21 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
         write_svg(svg, truth_s, odom_s, corners)
         print(f"   path image: {svg.resolve()}")
         if snapshot and url:
-            from ..viewer._browser import screenshot
+            from ..viewer import screenshot
 
             try:
                 png = screenshot(url, out / "viewer.png", settle_sec=1.0, panel=False)
                 print(f"   viewer snapshot: {png.resolve()}", flush=True)
-            except Exception as err:  # noqa: BLE001 - the demo's result does not depend on the browser
+            except Exception as err:
                 print(f"   viewer snapshot failed: {type(err).__name__}: {err}", flush=True)
         ok = len(corners) == 4
         if ok:
             sides = [math.hypot(b.x - a.x, b.y - a.y) for a, b in zip(corners, corners[1:])]
-            print("   sides between corners: " + ", ".join(f"{s:.3f} m" for s in sides) + f"; worst /odom error {worst * 1000:.2f} mm")
+            print(
+                "   sides between corners: "
+                + ", ".join(f"{s:.3f} m" for s in sides)
+                + f"; worst /odom error {worst * 1000:.2f} mm"
+            )
         else:
             print(f"gazelle demo: expected 4 corners, found {len(corners)}", file=sys.stderr)
         return 0 if ok else 1

@@ -1,0 +1,13 @@
+"""The ROS 2 side: the only package that imports rclpy.
+
+:class:`RosBridge` puts a running :class:`~gazelle.sim.Simulation` on the ROS graph: /clock, the
+gazebo_ros and simulation_interfaces services, and every system's topics (mirrored from the bus).
+``spawn_main`` is ``gazelle spawn`` (gazebo_ros's spawn_entity.py); ``choose_discovery_range``
+keeps a server on this host unless asked otherwise.
+"""
+
+from ._bridge import RosBridge
+from ._exposure import choose_discovery_range
+from ._spawn import main as spawn_main
+
+__all__ = ["RosBridge", "choose_discovery_range", "spawn_main"]

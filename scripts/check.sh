@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Static checks, run by ./test.sh before the tests: ruff (lint + format) and pyright (basic) on gazelle/.
+# MuJoCo ships no type stubs: pybind11-stubgen writes them to build/typings (pyright's stubPath) first.
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$ROOT"
+PY="$ROOT/.venv/bin"
+"$PY/ruff" check gazelle tests bench
+"$PY/ruff" format --check gazelle tests bench
+stamp="build/typings/.mujoco-$("$PY/python" -c 'import mujoco; print(mujoco.__version__)')"
+if [ ! -e "$stamp" ]; then
+  rm -rf build/typings
+  "$PY/pybind11-stubgen" mujoco -o build/typings --ignore-all-errors >/dev/null 2>&1
+  touch "$stamp"
+fi
+"$PY/pyright" --warnings
