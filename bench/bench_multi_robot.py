@@ -1,6 +1,6 @@
-"""Real-time factor with 1, 10 and 50 namespaced seed robots, each with the ROS bridge on, beside raw MuJoCo.
+"""Real-time factor with 1, 10 and 100 namespaced seed robots, each with the ROS bridge on, beside raw MuJoCo.
 
-Run: ``.venv/bin/python bench/bench_multi_robot.py [--seconds S] [--counts 1,10,50]``.
+Run: ``.venv/bin/python bench/bench_multi_robot.py [--seconds S] [--counts 1,10,100] [--no-rss]``.
 
 Each robot is the seed robot (examples/simple_robot) spawned in namespace ``rN`` on ``default_world()``
 with its classic diff drive at ``update_rate`` 50 Hz (odom + odom->base TF + wheel TF) and a
@@ -12,7 +12,9 @@ with its classic diff drive at ``update_rate`` 50 Hz (odom + odom->base TF + whe
 * gazelle + RosBridge (``RosBridge``, /clock at 100 Hz, every endpoint mirrored to rclpy) on the sim
   thread at rtf=0 for ``--seconds`` wall seconds, nobody subscribed.
 
-RTF = steps/s x timestep. Machine-dependent; nothing asserts timing. Takes well under 2 minutes.
+Then the RSS of a fresh process holding a session (Simulation + RosBridge) idle, with 1 robot and with 100.
+
+RTF = steps/s x timestep. Machine-dependent; nothing asserts timing. Takes about 2 minutes.
 """
 
 from __future__ import annotations
@@ -93,15 +95,65 @@ def measure(n: int, steps: int, seconds: float, bridge_cls) -> dict:
     return dict(n=n, dt=sim.world.timestep, raw=raw, no_ros=no_ros, ros=ros, nv=m.nv, pubs=pubs)
 
 
+def _rss_mib() -> float:
+    with open("/proc/self/status") as f:
+        for line in f:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1]) / 1024
+    return float("nan")
+
+
+def rss_child(n: int) -> int:
+    """In a fresh process: RSS after the imports, then with a `gazelle sim` session (Simulation + RosBridge +
+    viewer-less) holding ``n`` robots; prints ``imports idle_or_n`` in MiB."""
+    import mujoco  # noqa: F401
+    import rclpy  # noqa: F401
+
+    from gazelle.ros import RosBridge
+    from gazelle.sim import Simulation
+    from gazelle.worlds import default_world
+
+    imports = _rss_mib()
+    if n:
+        sim = make_sim(n)
+    else:
+        sim = Simulation(default_world(), rtf=0)
+        sim.step(200)
+    bridge = RosBridge(sim, clock_rate_hz=100.0)
+    sim.step(100)
+    print(f"{imports:.0f} {_rss_mib():.0f}", flush=True)
+    bridge.shutdown()
+    return 0
+
+
+def rss_table(counts: list[int]) -> None:
+    """RSS of a gazelle session (in a fresh process per count) and what dominates it."""
+    import subprocess
+    import sys
+
+    print("\nmemory (RSS of a fresh process: Simulation + RosBridge, no viewer):")
+    for n in counts:
+        out = subprocess.run(
+            [sys.executable, __file__, "--rss-child", str(n)], capture_output=True, text=True, check=True
+        ).stdout.split()
+        imports, total = float(out[0]), float(out[1])
+        label = "idle (default world)" if n == 0 else f"{n} robot{'s' if n > 1 else ''}"
+        print(f"  {label:<22} {total:>6.0f} MiB  (imports of Python, numpy, MuJoCo, rclpy: {imports:.0f} MiB)")
+
+
 def main() -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--counts", default="1,10,50", help="robot counts (default 1,10,50)")
+    p.add_argument("--counts", default="1,10,100", help="robot counts (default 1,10,100)")
+    p.add_argument("--rss-child", type=int, default=-1, help=argparse.SUPPRESS)
+    p.add_argument("--no-rss", action="store_true", help="skip the memory table")
     p.add_argument("--seconds", type=float, default=5.0, help="wall seconds of the ROS measurement (default 5)")
     p.add_argument("--steps", type=int, default=0, help="steps of the in-process measurements (default: ~3 s worth)")
     opts = p.parse_args()
     logging.disable(logging.CRITICAL)
+    if opts.rss_child >= 0:
+        return rss_child(opts.rss_child)
     t_all = time.perf_counter()
-    from gazelle.ros._bridge import RosBridge
+    from gazelle.ros import RosBridge
 
     rows = []
     for n in (int(c) for c in opts.counts.split(",")):
@@ -128,6 +180,8 @@ def main() -> int:
         )
     print("-" * len(hdr))
     print("RTF = steps/s x dt. 'gazelle + ROS' runs the sim thread at rtf=0 with RosBridge up (no subscribers).")
+    if not opts.no_rss:
+        rss_table([0, 1, 100])
     print(f"bench took {time.perf_counter() - t_all:.1f} s")
     return 0
 

@@ -64,6 +64,7 @@ from ..description import (
     Plane,
     Pose,
     Sphere,
+    Visual,
     load_mesh,
     quat_rotate,
 )
@@ -242,6 +243,63 @@ def _add_geom(
     body.add_geom(**kwargs)
 
 
+VISUAL_GROUP = 1
+"""MuJoCo geom group of visual geoms (collision geoms are group 3): renderers show group 1, not 3."""
+
+
+def _add_visual_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, vis: Visual, name: str) -> bool:
+    """Add a link's visual as a geom that never collides and has no mass, so a camera renders what
+    users see (collision shapes are often simpler). Returns False when its mesh cannot be read
+    (the description already warned about a missing one)."""
+    g = vis.geometry
+    kwargs: dict = {
+        "name": name,
+        "pos": list(vis.pose.position),
+        "quat": list(vis.pose.orientation),
+        "group": VISUAL_GROUP,
+        "contype": 0,
+        "conaffinity": 0,
+        "density": 0.0,
+    }
+    rgba = vis.material.diffuse if vis.material is not None and vis.material.diffuse is not None else None
+    if rgba is not None:
+        kwargs["rgba"] = list(rgba)
+    if isinstance(g, Box):
+        kwargs.update(type=mujoco.mjtGeom.mjGEOM_BOX, size=[g.size[0] / 2, g.size[1] / 2, g.size[2] / 2])
+    elif isinstance(g, Cylinder):
+        kwargs.update(type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[g.radius, g.length / 2, 0])
+    elif isinstance(g, Sphere):
+        kwargs.update(type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[g.radius, 0, 0])
+    elif isinstance(g, Capsule):
+        kwargs.update(type=mujoco.mjtGeom.mjGEOM_CAPSULE, size=[g.radius, g.length / 2, 0])
+    elif isinstance(g, Ellipsoid):
+        kwargs.update(type=mujoco.mjtGeom.mjGEOM_ELLIPSOID, size=list(g.radii))
+    elif isinstance(g, Plane):
+        return False  # an infinite visual plane is the collision plane's look: nothing to add
+    elif isinstance(g, (Cone, Mesh)):
+        if isinstance(g, Cone):
+            vertices, faces, scale = cone_vertices(g.radius, g.length), None, (1.0, 1.0, 1.0)
+        else:
+            if g.path is None:
+                return False
+            try:
+                vertices, faces = _load_mesh(g.path)
+            except (MeshReadError, BuildError) as err:
+                _log.warning(f"visual '{vis.name}': {err}; it is not in the physics model (cameras will not see it)")
+                return False
+            scale = tuple(g.scale)
+        mesh = spec.add_mesh(name=f"{name}__vmesh")
+        mesh.uservert = list((np.asarray(vertices, dtype=float) * np.asarray(scale)).ravel())
+        if faces is not None:
+            mesh.userface = list(np.asarray(faces).ravel())
+        mesh.inertia = mujoco.mjtMeshInertia.mjMESH_INERTIA_SHELL  # open visual meshes have no volume
+        kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh.name)
+    else:  # pragma: no cover - the union is closed
+        return False
+    body.add_geom(**kwargs)
+    return True
+
+
 CONE_SEGMENTS = 32
 
 
@@ -392,8 +450,9 @@ def _add_joint_dofs(spec: mujoco.MjSpec, body: mujoco.MjsBody, joint: Joint, nam
     built.joints[joint.name] = names
 
 
-def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> BuiltEntity:
-    """Add ``model`` to ``spec`` as entity ``entity`` placed at ``X_WM``.
+def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose, *, visuals: bool = False) -> BuiltEntity:
+    """Add ``model`` to ``spec`` as entity ``entity`` placed at ``X_WM``; with ``visuals``, its visual
+    shapes too, as geoms that neither collide nor weigh (group :data:`VISUAL_GROUP`), for cameras.
 
     Raises:
         BuildError: the model cannot be represented (e.g. an unresolved collision mesh).
@@ -460,6 +519,8 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose) -> Bui
             )
             for param in unsimulated_surface_parameters(col):
                 ignored.setdefault(param, []).append(f"{link_name}/{col.name}")
+        for i, vis in enumerate(link.visuals if visuals else ()):
+            _add_visual_geom(spec, body, vis, scoped(entity, f"{link_name}::{vis.name or 'visual'}#v{i}"))
         return body
 
     world = spec.worldbody

@@ -53,6 +53,8 @@ class SpawnFailed(Exception):
 
 
 class SpawnFailure:
+    """Why a spawn request was refused before it reached the world."""
+
     PARSE = "parse"
     NO_MODEL = "no_model"
     FRAME = "frame"
@@ -98,6 +100,7 @@ class _RosLogHandler(logging.Handler):
     }
 
     def emit(self, record: logging.LogRecord) -> None:
+        """Forward one Python log record to the rclpy logger of the same name."""
         try:
             logger = rclpy.logging.get_logger(record.name)  # pyright: ignore[reportAttributeAccessIssue]
             level = self._LEVELS.get(record.levelno, "info")
@@ -186,6 +189,7 @@ class SimulationNode(Node):
 
     # ------------------------------------------------------------------ clock
     def publish_clock(self, sim_time: float) -> None:
+        """Publish ``sim_time`` on /clock."""
         msg = Clock()
         msg.clock = to_time(sim_time)
         self._clock_pub.publish(msg)
@@ -248,6 +252,7 @@ class SimulationNode(Node):
 
     # ------------------------------------------------------------------ bus mirroring
     def endpoint_added(self, ep: Endpoint) -> None:
+        """Mirror a bus endpoint in ROS: a shared rclpy publisher (a sink on the endpoint) or a subscription."""
         ros_type = ROS_TYPES[ep.msg_type]
         if ep.is_publisher:
             key = (ep.topic, ep.msg_type.value)
@@ -296,6 +301,7 @@ class SimulationNode(Node):
         handle.publish(TO_ROS[MsgType.TF_STATIC](union))
 
     def endpoint_removed(self, ep: Endpoint) -> None:
+        """Undo :meth:`endpoint_added` (the rclpy publisher goes when its last user goes)."""
         if ep.msg_type is MsgType.TF_STATIC:
             with self._lock:
                 self._static.pop(id(ep), None)
@@ -466,6 +472,7 @@ class SimulationNode(Node):
         return res
 
     def destroy_node(self) -> None:
+        """Detach from the simulation (listeners, sinks), then destroy the node."""
         self.sim.remove_step_listener(self._on_step)
         self.sim.remove_step_listener(self._on_step_model_states)
         self.sim.bus.remove_listener(self)  # pyright: ignore[reportArgumentType]
@@ -535,6 +542,7 @@ class RosBridge:
                 return
 
     def shutdown(self) -> None:
+        """Stop spinning, destroy the node and the bridge's own rclpy context."""
         self._stopping.set()
         logging.getLogger().removeHandler(self._handler)
         self.executor.shutdown(timeout_sec=2.0)

@@ -29,10 +29,12 @@ def to_time(sec: float) -> Time:
 
 
 def from_time(t: Time) -> float:
+    """builtin_interfaces/Time -> seconds."""
     return t.sec + t.nanosec * 1e-9
 
 
 def to_pose_msg(p: Pose) -> PoseMsg:
+    """A Pose -> geometry_msgs/Pose."""
     w, x, y, z = p.orientation
     return PoseMsg(
         position=Point(x=float(p.position[0]), y=float(p.position[1]), z=float(p.position[2])),
@@ -50,6 +52,7 @@ def from_pose_msg(m: PoseMsg) -> Pose:
 
 
 def to_twist_msg(t: Twist) -> TwistMsg:
+    """A bus Twist -> geometry_msgs/Twist."""
     return TwistMsg(
         linear=Vector3(x=t.linear[0], y=t.linear[1], z=t.linear[2]),
         angular=Vector3(x=t.angular[0], y=t.angular[1], z=t.angular[2]),
@@ -57,10 +60,12 @@ def to_twist_msg(t: Twist) -> TwistMsg:
 
 
 def from_twist_msg(m: TwistMsg) -> Twist:
+    """geometry_msgs/Twist -> a bus Twist."""
     return Twist((m.linear.x, m.linear.y, m.linear.z), (m.angular.x, m.angular.y, m.angular.z))
 
 
 def to_transform_msg(t: Transform) -> TransformStamped:
+    """A bus Transform -> geometry_msgs/TransformStamped."""
     msg = TransformStamped()
     msg.header.stamp = to_time(t.stamp_sec)
     msg.header.frame_id = t.parent
@@ -72,6 +77,7 @@ def to_transform_msg(t: Transform) -> TransformStamped:
 
 
 def to_odometry_msg(o: Odometry) -> OdometryMsg:
+    """A bus Odometry -> nav_msgs/Odometry."""
     msg = OdometryMsg()
     msg.header.stamp = to_time(o.stamp_sec)
     msg.header.frame_id = o.frame_id
@@ -84,6 +90,7 @@ def to_odometry_msg(o: Odometry) -> OdometryMsg:
 
 
 def to_joint_state_msg(j: JointStates) -> JointStateMsg:
+    """Bus JointStates -> sensor_msgs/JointState."""
     msg = JointStateMsg()
     msg.header.stamp = to_time(j.stamp_sec)
     msg.name = list(j.names)

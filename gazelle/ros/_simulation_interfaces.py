@@ -247,12 +247,14 @@ class SimulationInterfaces:
         )
 
     def destroy(self) -> None:
+        """Stop the action server and the services (the node is being destroyed)."""
         self.action.destroy()
         for s in self.services:
             self.node.destroy_service(s)
 
     # ------------------------------------------------------------------ features and state
     def get_simulator_features(self, req: Any, res: GetSimulatorFeatures.Response) -> Any:
+        """simulation_interfaces GetSimulatorFeatures: what this simulator supports (features, formats)."""
         res.features.features = [int(f) for f in FEATURES]
         res.features.spawn_formats = ["urdf", "sdf"]
         res.features.custom_info = (
@@ -269,11 +271,13 @@ class SimulationInterfaces:
         return SimulationState.STATE_PLAYING
 
     def get_simulation_state(self, req: Any, res: GetSimulationState.Response) -> Any:
+        """GetSimulationState: playing, paused or stopped."""
         res.state.state = self.sim.call(self._state)
         res.result = _result(OK)
         return res
 
     def set_simulation_state(self, req: SetSimulationState.Request, res: SetSimulationState.Response) -> Any:
+        """SetSimulationState: play, pause, stop (reset and pause) or quit (refused)."""
         target = req.state.state
         S = SimulationState
         names = {S.STATE_STOPPED: "STOPPED", S.STATE_PLAYING: "PLAYING", S.STATE_PAUSED: "PAUSED"}
@@ -315,6 +319,7 @@ class SimulationInterfaces:
         return res
 
     def reset_simulation(self, req: ResetSimulation.Request, res: ResetSimulation.Response) -> Any:
+        """ResetSimulation: time, state and/or spawned entities, by scope."""
         R = ResetSimulation.Request
         scope = req.scope
         if scope in (R.SCOPE_DEFAULT, R.SCOPE_ALL):
@@ -359,6 +364,7 @@ class SimulationInterfaces:
         return self.sim.call(do)
 
     def step_simulation(self, req: StepSimulation.Request, res: StepSimulation.Response) -> Any:
+        """StepSimulation: take N steps while paused (the reply comes when they are done)."""
         try:
             self._check_steps(req.steps)
             done = 0
@@ -526,6 +532,7 @@ class SimulationInterfaces:
         return _result(code, str(err))
 
     def spawn_entity(self, req: SpawnEntity.Request, res: SpawnEntity.Response) -> Any:
+        """SpawnEntity: by ``uri`` (a resolvable model or package path) or ``resource_string`` (data, never xacro)."""
         t0 = time.monotonic()
         try:
             prepared = self._prepare(
@@ -552,6 +559,7 @@ class SimulationInterfaces:
         return res
 
     def spawn_entities(self, req: SpawnEntities.Request, res: SpawnEntities.Response) -> Any:
+        """SpawnEntities: several models with one recompile; one result per request."""
         results: list[SpawnResult | None] = []
         todo: list[tuple[int, _Prepared]] = []
         for i, r in enumerate(req.spawn_requests):
@@ -596,6 +604,7 @@ class SimulationInterfaces:
         return res
 
     def delete_entity(self, req: DeleteEntity.Request, res: DeleteEntity.Response) -> Any:
+        """DeleteEntity: remove one entity and its systems."""
         try:
             self.sim.delete(req.entity)
         except WorldError as err:
@@ -641,6 +650,7 @@ class SimulationInterfaces:
         )
 
     def get_entities(self, req: GetEntities.Request, res: GetEntities.Response) -> Any:
+        """GetEntities: names, filtered by a bounded regular expression and by category."""
         try:
             res.entities = self._select(req.filters)
         except _Refused as err:
@@ -661,6 +671,7 @@ class SimulationInterfaces:
         return msg
 
     def get_entity_state(self, req: GetEntityState.Request, res: GetEntityState.Response) -> Any:
+        """GetEntityState: an entity's pose and twist in a reference frame."""
         try:
             res.state = self.sim.call(lambda: self._state_msg(req.entity))
         except WorldError as err:
@@ -670,6 +681,7 @@ class SimulationInterfaces:
         return res
 
     def get_entities_states(self, req: GetEntitiesStates.Request, res: GetEntitiesStates.Response) -> Any:
+        """GetEntitiesStates: the states of the filtered entities, in one sim-thread call."""
         try:
             pattern, cats = self._compile_filters(req.filters)
         except _Refused as err:
@@ -691,6 +703,7 @@ class SimulationInterfaces:
         return res
 
     def set_entity_state(self, req: SetEntityState.Request, res: SetEntityState.Response) -> Any:
+        """SetEntityState: teleport an entity and set its twist."""
         s = req.state
         p, tw = s.pose, s.twist
         vals = (
@@ -732,6 +745,8 @@ class SimulationInterfaces:
         return res
 
     def get_entity_info(self, req: GetEntityInfo.Request, res: GetEntityInfo.Response) -> Any:
+        """GetEntityInfo: an entity's category and description."""
+
         def do() -> tuple[int, str]:
             e = self.sim.world.entities.get(req.entity)
             if e is None:

@@ -85,16 +85,26 @@ class Simulation:
     """A world plus systems, stepped on its own thread (or by hand, in lock-step)."""
 
     def __init__(
-        self, world: World, *, rtf: float | None = None, bus: Bus | None = None, robot_state_publisher: bool = True
+        self,
+        world: World,
+        *,
+        rtf: float | None = None,
+        bus: Bus | None = None,
+        robot_state_publisher: bool = True,
+        visual_geoms: bool = False,
     ):
         """
         Args:
             world: the world description.
             rtf: target real-time factor; None = the world's ``real_time_factor``; 0 = as fast as possible.
+            bus: the bus systems publish on (a new one by default); the ROS bridge listens to it.
+            robot_state_publisher: give every robot the built-in robot_state_publisher.
+            visual_geoms: put the visuals in the MuJoCo model (see :class:`~gazelle.physics.PhysicsWorld`),
+                for offscreen cameras.
         """
         if rtf is not None and (not math.isfinite(rtf) or rtf < 0):
             raise ValueError(f"`rtf` must be >= 0, got {rtf!r}")
-        self.world = PhysicsWorld(world)
+        self.world = PhysicsWorld(world, visual_geoms=visual_geoms)
         self.systems = SystemManager()
         self.bus = bus or Bus()
         physics = world.physics

@@ -110,10 +110,12 @@ class SystemManager:
         self._stepped: list[System] = []
 
     def add(self, owner: str, system: System) -> None:
+        """Add a system owned by entity ``owner``; the phase lists are re-sorted by priority."""
         self._systems.append((owner, system))
         self._rebuild()
 
     def remove_owner(self, owner: str) -> list[System]:
+        """Remove and shut down every system of entity ``owner``; returns them."""
         gone = [s for o, s in self._systems if o == owner]
         self._systems = [(o, s) for o, s in self._systems if o != owner]
         self._rebuild()
@@ -122,6 +124,7 @@ class SystemManager:
         return gone
 
     def systems(self, owner: str | None = None) -> list[System]:
+        """The systems of ``owner`` (all when None), in load order."""
         return [s for o, s in self._systems if owner is None or o == owner]
 
     def _rebuild(self) -> None:
@@ -167,13 +170,16 @@ class SystemManager:
                 self._disable(s, phase, err)
 
     def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """Run every system's ``reset`` (a world reset)."""
         self._run(self._phase["reset"], "reset", info, world)
 
     def pre_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """Before the steps: every ``pre_update``, then the ``update`` s with priority below PHYSICS."""
         self._run(self._phase["pre_update"], "pre_update", info, world)
         self._run(self._update_before, "update", info, world)
 
     def post_physics(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """After the steps: the other ``update`` s, then every ``post_update``."""
         self._run(self._update_after, "update", info, world)
         self._run(self._phase["post_update"], "post_update", info, world)
 
@@ -191,6 +197,7 @@ def all_texts(cfg: ConfigElement | None, tag: str) -> tuple[str, ...]:
 
 
 def parse_float(cfg: ConfigElement | None, tag: str, default: float, log: logging.Logger) -> float:
+    """The number in ``<tag>``, else ``default``; a non-number is warned about with its file:line."""
     raw = child_text(cfg, tag)
     if cfg is None or raw is None or raw == "":
         return default
@@ -204,6 +211,7 @@ def parse_float(cfg: ConfigElement | None, tag: str, default: float, log: loggin
 
 
 def parse_bool(cfg: ConfigElement | None, tag: str, default: bool, log: logging.Logger) -> bool:
+    """``true``/``false``/``1``/``0`` in ``<tag>``, else ``default``; anything else is warned about."""
     raw = child_text(cfg, tag)
     if cfg is None or raw is None or raw == "":
         return default

@@ -139,6 +139,7 @@ class Endpoint:
         self.sinks, self._interest = (*self.sinks, sink), (*self._interest, wanted)
 
     def remove_sink(self, sink: Callable[[Any], None]) -> None:
+        """Stop sending payloads to ``sink``."""
         keep = [(s, w) for s, w in zip(self.sinks, self._interest) if s != sink]  # == so that bound methods match
         self.sinks, self._interest = tuple(s for s, _ in keep), tuple(w for _, w in keep)
 
@@ -160,9 +161,13 @@ class Endpoint:
 
 
 class BusListener(Protocol):
-    def endpoint_added(self, endpoint: Endpoint) -> None: ...
+    """What listens to the bus (the ROS bridge): told of every endpoint added and removed."""
 
-    def endpoint_removed(self, endpoint: Endpoint) -> None: ...
+    def endpoint_added(self, endpoint: Endpoint) -> None:
+        """A system declared ``endpoint`` (called on the declaring thread)."""
+
+    def endpoint_removed(self, endpoint: Endpoint) -> None:
+        """``endpoint`` went away with its entity."""
 
 
 class Bus:
@@ -182,6 +187,7 @@ class Bus:
             listener.endpoint_added(ep)
 
     def remove_listener(self, listener: BusListener) -> None:
+        """Detach a listener (it is not told about removals any more)."""
         with self._lock:
             if listener in self._listeners:
                 self._listeners.remove(listener)
@@ -225,6 +231,7 @@ class Bus:
                 listener.endpoint_removed(ep)
 
     def endpoints(self) -> list[Endpoint]:
+        """A snapshot of every endpoint."""
         with self._lock:
             return list(self._endpoints)
 

@@ -76,12 +76,15 @@ class _Command:
             self.target = value
 
     def on_msg(self, msg: Float64) -> None:
+        """A std_msgs/Float64 on the command topic (any thread)."""
         self.command(msg.data)
 
     def update(self, sim_time_sec: float, dt_sec: float) -> None:
+        """Apply the target to the servo at ``sim_time_sec`` (the simulation thread)."""
         self.servo.update(self.target, sim_time_sec)
 
     def reset(self) -> None:
+        """Back to the initial target, integral forgotten."""
         self.target = self.initial
         self.servo.reset()
 
@@ -97,6 +100,7 @@ class _StepVelocityToPosition(_Command):
         self.max_speed = max_speed
 
     def update(self, sim_time_sec: float, dt_sec: float) -> None:
+        """Apply the target to the servo at ``sim_time_sec`` (the simulation thread)."""
         v = (self.target - self.vel.actuator.joint.position) / dt_sec
         self.vel.update(max(-self.max_speed, min(self.max_speed, v)), sim_time_sec)
 
@@ -109,6 +113,7 @@ class _Controlled(System):
         self._gate = RateGate()
 
     def next_update(self, sim_time_sec: float) -> float:
+        """The next :data:`CONTROL_RATE_HZ` period, or every step when a joint's law needs it."""
         if not self._commands:
             return math.inf
         if any(c.every_step for c in self._commands):
@@ -116,11 +121,13 @@ class _Controlled(System):
         return self._gate.next
 
     def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """Back to the initial target, integral forgotten."""
         self._gate.reset()
         for c in self._commands:
             c.reset()
 
     def pre_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """Apply the latest commands to the servos, when due."""
         if info.paused or not self._commands:
             return
         every_step = any(c.every_step for c in self._commands)
@@ -216,6 +223,7 @@ class JointPositionController(_ServoGroup):
         self.config = JointPositionControllerConfig()
 
     def configure(self, ctx: SystemContext) -> None:
+        """Read the plugin block, check the joints, add a servo per joint and subscribe to the command topic."""
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         names = all_texts(cfg, "joint_name")
@@ -287,6 +295,7 @@ class JointController(_ServoGroup):
         self.config = JointControllerConfig()
 
     def configure(self, ctx: SystemContext) -> None:
+        """Read the plugin block, check the joints, add a servo per joint and subscribe to the command topic."""
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         names = all_texts(cfg, "joint_name")
@@ -353,6 +362,7 @@ class JointCommands(_Controlled):
         """Joint name -> its command topic."""
 
     def configure(self, ctx: SystemContext) -> None:
+        """Read the plugin block, check the joints, add a servo per joint and subscribe to the command topic."""
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         d = JointCommandsConfig()

@@ -118,6 +118,7 @@ class RobotStatePublisher(System):
         self._gate = RateGate()
 
     def configure(self, ctx: SystemContext) -> None:
+        """Read the configuration, find the joints, advertise the topics (and publish the latched ones)."""
         c = self.config
         model = ctx.entity.model
         self.prefix = entity_frame_prefix(ctx.entity, ctx.logger)
@@ -153,12 +154,15 @@ class RobotStatePublisher(System):
         )
 
     def next_update(self, sim_time_sec: float) -> float:
+        """The next publishing period (never when there is nothing to publish)."""
         return self._gate.next if self._tf is not None else math.inf
 
     def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """Publish again at the next step (sim time went back)."""
         self._gate.reset()
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """Publish, when due and wanted, from the simulated state."""
         if self._tf is None or info.paused or not self._gate.due(info.sim_time_sec, self.config.publish_frequency):
             return
         if not self._tf.wanted:
@@ -196,6 +200,7 @@ class JointStatePublisher(System):
         self._handles: list[JointHandle] = []
 
     def configure(self, ctx: SystemContext) -> None:
+        """Read the configuration, find the joints, advertise the topics (and publish the latched ones)."""
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         model: Model = ctx.entity.model
@@ -227,12 +232,15 @@ class JointStatePublisher(System):
         self._handles = [ctx.world.joint(self._entity, jn) for jn in self._joints]
 
     def next_update(self, sim_time_sec: float) -> float:
+        """The next publishing period (never when there is nothing to publish)."""
         return self._gate.next if self._pub is not None else math.inf
 
     def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """Publish again at the next step (sim time went back)."""
         self._gate.reset()
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """Publish, when due and wanted, from the simulated state."""
         if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.config.update_rate):
             return
         if not self._pub.wanted:

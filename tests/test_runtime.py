@@ -1,0 +1,175 @@
+"""The runtime seam (issue 11): blocks of steps inside MuJoCo between system updates, typed handles,
+one servo module, listeners on the bus, visuals in the MuJoCo model."""
+
+from __future__ import annotations
+
+import math
+
+import mujoco
+import numpy as np
+import pytest
+from _paths import SEED_XACRO
+
+from gazelle.description import Pose, load, load_string
+from gazelle.physics import ActuatorKind, JointHandle
+from gazelle.sim import Simulation
+from gazelle.systems import MsgType, System, UpdateInfo
+from gazelle.systems.diff_drive import DiffDrive
+from gazelle.worlds import default_world
+
+
+def _seed_sim(**kw) -> tuple[Simulation, DiffDrive]:
+    sim = Simulation(default_world(), rtf=0, **kw)
+    entity = sim.spawn(load(SEED_XACRO).value, name="robot", pose=Pose((0.0, 0.0, 0.07)))
+    return sim, next(s for s in entity.systems if isinstance(s, DiffDrive))
+
+
+def test_the_world_steps_inside_mujoco_between_system_updates(monkeypatch) -> None:
+    """With only the diff drive (100 Hz) and robot_state_publisher (50 Hz on the same grid) due, 1 s of sim
+    time is 100 blocks of 10 steps, each one MuJoCo call, not 1000 Python round trips."""
+    sim, drive = _seed_sim()
+    drive.command(0.2, 0.3)
+    sim.step(10)  # past the spawn's first blocks
+    calls: list[int] = []
+    real = mujoco.mj_step
+
+    def counting(m, d, nstep=1):
+        calls.append(nstep)
+        real(m, d, nstep=nstep)
+
+    monkeypatch.setattr(mujoco, "mj_step", counting)
+    sim._rtf_window.clear()
+    sim.world._overlap_steps = 0  # the 5 s watch after the spawn is over in a real run; here it would split blocks
+    sim.step(1000)
+    assert sum(calls) == 1000
+    assert len(calls) <= 101, f"{len(calls)} MuJoCo calls for 1000 steps: {calls[:20]}"
+    assert max(calls) == 10
+
+
+class _EveryStep(System):
+    def __init__(self) -> None:
+        self.times: list[float] = []
+
+    def pre_update(self, info: UpdateInfo, world) -> None:
+        self.times.append(info.sim_time_sec)
+
+
+class _TenHz(System):
+    def __init__(self) -> None:
+        self.times: list[float] = []
+        self._next = 0.0
+
+    def next_update(self, sim_time_sec: float) -> float:
+        return self._next
+
+    def post_update(self, info: UpdateInfo, world) -> None:
+        if info.sim_time_sec + 1e-9 >= self._next:
+            self.times.append(round(info.sim_time_sec, 6))
+            self._next = info.sim_time_sec + 0.1
+
+
+def test_a_system_that_declares_no_rate_runs_every_step_and_one_with_a_rate_at_its_times() -> None:
+    sim = Simulation(default_world(), rtf=0)
+    fast, slow = _EveryStep(), _TenHz()
+    sim.systems.add("x", fast)
+    sim.systems.add("x", slow)
+    sim.step(500)
+    assert len(fast.times) == 500
+    assert slow.times[:5] == [0.001, 0.101, 0.201, 0.301, 0.401]
+    sim.systems.remove_owner("x")
+    slow2 = _TenHz()
+    sim.systems.add("y", slow2)
+    sim.world._overlap_steps = 0
+    before = sim.iterations
+    sim.step(1000)
+    assert sim.iterations - before == 1000
+    assert len(slow2.times) == 10
+
+
+def test_blocks_do_not_change_the_trajectory() -> None:
+    """The same robot stepped in one call per step and in blocks ends bit-identical."""
+    a, da = _seed_sim()
+    b, db = _seed_sim()
+    for d in (da, db):
+        d.command(0.3, 0.5)
+    for _ in range(2000):
+        a.step(1)
+    b.step(2000)
+    assert np.array_equal(a.world.data.qpos, b.world.data.qpos)
+    assert np.array_equal(a.world.data.qvel, b.world.data.qvel)
+
+
+def test_joint_and_actuator_handles_read_and_command_through_recompiles() -> None:
+    sim, drive = _seed_sim()
+    wheel = drive._wheels[0].servo.actuator
+    assert wheel.kind is ActuatorKind.VELOCITY
+    assert isinstance(wheel.joint, JointHandle)
+    drive.command(0.4, 0.0)
+    sim.step(300)
+    v = wheel.joint.velocity
+    assert v == pytest.approx(0.4 / drive._wheels[0].radius, rel=0.02)
+    # a spawn renumbers MuJoCo's arrays: the handle still reads this wheel
+    sim.spawn(load_string(VISUAL).value, name="other", pose=Pose((5.0, 0.0, 0.5)))
+    sim.step(1)
+    qadr, dadr = sim.world.joint_address("robot", wheel.joint.name)
+    assert wheel.joint.position == sim.world.data.qpos[qadr]
+    assert wheel.joint.velocity == sim.world.data.qvel[dadr]
+    assert wheel.force == sim.world.data.actuator_force[sim.world.actuator_id(wheel.name)]
+
+
+def test_the_wheel_servo_holds_its_speed_under_load_by_its_integral_term() -> None:
+    """The integral term, updated only at the drive's 100 Hz from the wheel's travel, removes the
+    proportional servo's steady-state error: driving straight, the robot's speed is v within 0.5 %."""
+    sim, drive = _seed_sim()
+    drive.command(0.3, 0.0)
+    sim.step(3000)
+    vx = sim.world.entity_state("robot").linear_velocity
+    assert math.hypot(vx[0], vx[1]) == pytest.approx(0.3, rel=0.005)
+    assert any(abs(w.servo.integral) > 0 for w in drive._wheels)
+
+
+def test_nothing_is_built_for_nobody_and_every_listener_gets_each_message() -> None:
+    sim, drive = _seed_sim()
+    drive.command(0.2, 0.0)
+    odom = next(ep for ep in sim.bus.endpoints() if ep.is_publisher and ep.msg_type == MsgType.ODOMETRY)
+    sim.step(100)
+    assert odom.last is None and not odom.wanted  # nobody listens: no message was built
+    first, second = [], []
+    odom.add_sink(first.append)
+    odom.add_sink(second.append, wanted=lambda: False)
+    sim.step(100)
+    assert len(first) == 10 and second == first  # the bus fans out: both get all ten (100 Hz)
+    odom.remove_sink(first.append)
+    n = len(second)
+    sim.step(100)
+    assert len(second) == n  # the one left does not want any: nothing is built
+
+
+VISUAL = """<robot name="lamp">
+  <link name="base">
+    <inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <visual><geometry><sphere radius="0.3"/></geometry><material name="red"><color rgba="1 0 0 1"/></material></visual>
+    <collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision>
+  </link>
+</robot>"""
+
+
+def test_visuals_go_into_the_mujoco_model_as_massless_non_colliding_geoms() -> None:
+    runs = {}
+    for visuals in (False, True):
+        sim = Simulation(default_world(), rtf=0, visual_geoms=visuals)
+        sim.spawn(load_string(VISUAL).value, name="lamp", pose=Pose((0.0, 0.0, 0.5)))
+        sim.step(2000)
+        m = sim.world.model
+        groups = [int(g) for g in m.geom_group]
+        runs[visuals] = (groups, m, sim.world.data.qpos.copy())
+    groups, m, qpos = runs[True]
+    vis = [i for i, g in enumerate(groups) if g == 1]
+    assert len(vis) == 1 and 1 not in runs[False][0]
+    g = vis[0]
+    assert int(m.geom_type[g]) == int(mujoco.mjtGeom.mjGEOM_SPHERE) and m.geom_size[g][0] == pytest.approx(0.3)
+    assert int(m.geom_contype[g]) == 0 and int(m.geom_conaffinity[g]) == 0
+    assert list(m.geom_rgba[g]) == pytest.approx([1.0, 0.0, 0.0, 1.0])
+    # the 0.3 m sphere neither collides nor weighs: the box lands on its 5 cm half-height as without it
+    assert np.array_equal(qpos, runs[False][2])
+    assert qpos[2] == pytest.approx(0.05, abs=3e-3)
