@@ -535,7 +535,7 @@ class Viewer:
     def trail_target(self) -> str | None:
         """The entity whose path is drawn: the selected one, else the first with a cmd_vel subscriber."""
         sel = self._entity_dd.value
-        names = self._nodes  # the entities of the last frame (the world itself is the sim thread's)
+        names = self.sim.call(lambda: set(self.sim.world.entities), timeout=5.0)  # the world is the sim thread's
         if sel != NO_SELECTION and sel in names:
             return sel
         driven = sorted(
