@@ -9,6 +9,7 @@ physics step and a slow request never blocks the others.
 
 from __future__ import annotations
 
+import enum
 import logging
 import math
 import threading
@@ -44,20 +45,20 @@ from ._exposure import ServerRegistry
 from ._replies import guarded_service, with_warnings
 
 
-class SpawnFailed(Exception):
-    """A spawn request was refused; ``kind`` says why (maps to result codes)."""
-
-    def __init__(self, kind: str, message: str):
-        super().__init__(message)
-        self.kind = kind
-
-
-class SpawnFailure:
+class SpawnFailure(enum.StrEnum):
     """Why a spawn request was refused before it reached the world."""
 
     PARSE = "parse"
     NO_MODEL = "no_model"
     FRAME = "frame"
+
+
+class SpawnFailed(Exception):
+    """A spawn request was refused; ``kind`` says why (maps to result codes)."""
+
+    def __init__(self, kind: SpawnFailure, message: str):
+        super().__init__(message)
+        self.kind = kind
 
 
 def qos_profile(qos: Qos, depth: int) -> QoSProfile:
