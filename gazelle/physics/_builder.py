@@ -151,6 +151,21 @@ def _solref_from_surface(col: Collision, mass_hint: float, timestep: float) -> t
     return [timeconst, 1.0], [0.9, 0.95, 0.001, 0.5, 2.0]
 
 
+def _primitive(g: object) -> dict | None:
+    """MuJoCo ``type`` and ``size`` of a box, cylinder, sphere, capsule or ellipsoid (half sizes); None for others."""
+    if isinstance(g, Box):
+        return {"type": mujoco.mjtGeom.mjGEOM_BOX, "size": [g.size[0] / 2, g.size[1] / 2, g.size[2] / 2]}
+    if isinstance(g, Cylinder):
+        return {"type": mujoco.mjtGeom.mjGEOM_CYLINDER, "size": [g.radius, g.length / 2, 0]}
+    if isinstance(g, Sphere):
+        return {"type": mujoco.mjtGeom.mjGEOM_SPHERE, "size": [g.radius, 0, 0]}
+    if isinstance(g, Capsule):
+        return {"type": mujoco.mjtGeom.mjGEOM_CAPSULE, "size": [g.radius, g.length / 2, 0]}
+    if isinstance(g, Ellipsoid):
+        return {"type": mujoco.mjtGeom.mjGEOM_ELLIPSOID, "size": list(g.radii)}
+    return None
+
+
 def _add_geom(
     spec: mujoco.MjSpec,
     body: mujoco.MjsBody,
@@ -170,16 +185,9 @@ def _add_geom(
         "priority": friction_priority(friction[0]),
         "group": 3,
     }
-    if isinstance(g, Box):
-        kwargs.update(type=mujoco.mjtGeom.mjGEOM_BOX, size=[g.size[0] / 2, g.size[1] / 2, g.size[2] / 2])
-    elif isinstance(g, Cylinder):
-        kwargs.update(type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[g.radius, g.length / 2, 0])
-    elif isinstance(g, Sphere):
-        kwargs.update(type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[g.radius, 0, 0])
-    elif isinstance(g, Capsule):
-        kwargs.update(type=mujoco.mjtGeom.mjGEOM_CAPSULE, size=[g.radius, g.length / 2, 0])
-    elif isinstance(g, Ellipsoid):
-        kwargs.update(type=mujoco.mjtGeom.mjGEOM_ELLIPSOID, size=list(g.radii))
+    primitive = _primitive(g)
+    if primitive is not None:
+        kwargs.update(primitive)
     elif isinstance(g, Plane):
         kwargs.update(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[g.size[0] / 2, g.size[1] / 2, 1.0])
         n = np.asarray(g.normal, dtype=float)
@@ -264,16 +272,9 @@ def _add_visual_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, vis: Visual, nam
     rgba = vis.material.diffuse if vis.material is not None and vis.material.diffuse is not None else None
     if rgba is not None:
         kwargs["rgba"] = list(rgba)
-    if isinstance(g, Box):
-        kwargs.update(type=mujoco.mjtGeom.mjGEOM_BOX, size=[g.size[0] / 2, g.size[1] / 2, g.size[2] / 2])
-    elif isinstance(g, Cylinder):
-        kwargs.update(type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[g.radius, g.length / 2, 0])
-    elif isinstance(g, Sphere):
-        kwargs.update(type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[g.radius, 0, 0])
-    elif isinstance(g, Capsule):
-        kwargs.update(type=mujoco.mjtGeom.mjGEOM_CAPSULE, size=[g.radius, g.length / 2, 0])
-    elif isinstance(g, Ellipsoid):
-        kwargs.update(type=mujoco.mjtGeom.mjGEOM_ELLIPSOID, size=list(g.radii))
+    primitive = _primitive(g)
+    if primitive is not None:
+        kwargs.update(primitive)
     elif isinstance(g, Plane):
         return False  # an infinite visual plane is the collision plane's look: nothing to add
     elif isinstance(g, (Cone, Mesh)):
