@@ -173,3 +173,14 @@ def test_visuals_go_into_the_mujoco_model_as_massless_non_colliding_geoms() -> N
     # the 0.3 m sphere neither collides nor weighs: the box lands on its 5 cm half-height as without it
     assert np.array_equal(qpos, runs[False][2])
     assert qpos[2] == pytest.approx(0.05, abs=3e-3)
+
+
+def test_a_handle_on_a_joint_that_is_not_there_is_refused_by_name() -> None:
+    from gazelle.physics import WorldError
+
+    sim, drive = _seed_sim()
+    assert sim.world.joint("robot", drive._wheels[0].joint).position == drive._wheels[0].servo.actuator.joint.position
+    with pytest.raises(WorldError, match="entity 'robot' has no joint 'QQQ'"):
+        sim.world.joint("robot", "QQQ")
+    with pytest.raises(WorldError, match="entity 'ghost' has no joint"):
+        sim.world.joint("ghost", drive._wheels[0].joint)

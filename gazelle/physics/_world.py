@@ -462,9 +462,9 @@ class PhysicsWorld:
         """A handle on a 1-dof joint of an entity (by its description name; MuJoCo joint ``joint``).
 
         Raises:
-            WorldError: (``NOT_FOUND``) no such entity, or (once compiled) no such joint.
+            WorldError: (``NOT_FOUND``) the entity (staged or in the world) has no such joint.
         """
-        if entity not in self.entities and self.spec.joint(scoped(entity, joint)) is None:
+        if self.spec.joint(scoped(entity, joint)) is None:
             raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' has no joint '{joint}'")
         return JointHandle(self, entity, joint)
 

@@ -158,8 +158,6 @@ class SimulationNode(Node):
         """id(publisher endpoint) -> the sink this bridge added to it (other sinks stay)."""
         self._static: dict[int, tuple[Transform, ...]] = {}
         self._clock_pub = self.create_publisher(Clock, "/clock", CLOCK_QOS)
-        self._clock_period = 1.0 / clock_rate_hz if clock_rate_hz > 0 else 0.0
-        self._last_clock = -math.inf
         self._last_clock_wall = -math.inf
         self._srv = []
         for srv_type, name, cb in (
@@ -179,12 +177,11 @@ class SimulationNode(Node):
         register(self)
         # /clock at its rate (held back while listened to: see _on_step); the runtime steps inside
         # MuJoCo between two clock periods
-        self._clock_listener = sim.add_step_listener(self._on_step, clock_rate_hz)
+        sim.add_step_listener(self._on_step, clock_rate_hz)
         self._model_states_pub = self.create_publisher(ModelStates, "/model_states", MODEL_STATES_QOS)
         self._model_states_period = 1.0 / MODEL_STATES_RATE_HZ
-        self._last_model_states = -math.inf
         self._last_model_states_wall = -math.inf
-        self._model_states_listener = sim.add_step_listener(self._on_step_model_states, MODEL_STATES_RATE_HZ)
+        sim.add_step_listener(self._on_step_model_states, MODEL_STATES_RATE_HZ)
         sim.bus.add_listener(self)  # pyright: ignore[reportArgumentType]
         self.publish_clock(sim.world.time)
 
@@ -196,11 +193,8 @@ class SimulationNode(Node):
         self._clock_pub.publish(msg)
 
     def _on_step(self, info: UpdateInfo) -> None:
+        """A /clock period of sim time went by (the runtime calls this at the clock rate, and after a reset)."""
         t = info.sim_time_sec
-        if t < self._last_clock:  # reset: time went backwards
-            self._last_clock = -math.inf
-        if t - self._last_clock + 1e-9 < self._clock_period:
-            return
         # Faster than real time, a sim-time rate becomes a flood in wall time: use_sim_time
         # nodes fall behind, their 10 Hz timers fire late, and a command lands a latency x RTF
         # too late (we measured a 5 s side driven for 5.2 s at 30x). While anyone listens to
@@ -213,23 +207,19 @@ class SimulationNode(Node):
                 return
             time.sleep(wait)
             wall = time.monotonic()
-        self._last_clock, self._last_clock_wall = t, wall
+        self._last_clock_wall = wall
         self.publish_clock(t)
 
     # ------------------------------------------------------------------ /model_states
     def _on_step_model_states(self, info: UpdateInfo) -> None:
-        """Publish every entity's world pose and twist (gazebo_msgs/ModelStates) from the sim thread."""
-        t = info.sim_time_sec
-        if t < self._last_model_states:  # reset: time went backwards
-            self._last_model_states = -math.inf
-        if t - self._last_model_states + 1e-9 < self._model_states_period:
-            return
+        """Publish every entity's world pose and twist (gazebo_msgs/ModelStates) from the sim thread
+        (the runtime calls this every 10 ms of sim time)."""
         wall = time.monotonic()
         # at most about MODEL_STATES_RATE_HZ per wall second; the slack keeps the sim-time rate at real
         # time, where the blocks of steps that end on a 10 ms period arrive with a little jitter
         if wall - self._last_model_states_wall < 0.75 * self._model_states_period:
             return
-        self._last_model_states, self._last_model_states_wall = t, wall
+        self._last_model_states_wall = wall
         if self._model_states_pub.get_subscription_count() == 0:
             return
         self._model_states_pub.publish(self.model_states())
