@@ -18,6 +18,7 @@ import threading
 import time
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 REPO = Path(__file__).resolve().parents[2]
 EXAMPLE = REPO / "examples" / "simple_robot" / "simple_robot"
@@ -25,10 +26,17 @@ EXAMPLE = REPO / "examples" / "simple_robot" / "simple_robot"
 
 @dataclass
 class Sample:
+    """A planar pose at a time (from /odom or the ground truth)."""
+
     t: float
     x: float
     y: float
     yaw: float
+
+    @staticmethod
+    def of(stamp: Any, pose: Any) -> Sample:
+        """From a message's ``header.stamp`` and ``geometry_msgs/Pose``."""
+        return Sample(stamp.sec + stamp.nanosec * 1e-9, pose.position.x, pose.position.y, _yaw(pose.orientation))
 
 
 class _Child:
@@ -193,16 +201,8 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
         lock = threading.Lock()
 
         def on_odom(msg: Odometry) -> None:
-            p = msg.pose.pose
             with lock:
-                odom.append(
-                    Sample(
-                        msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9,
-                        p.position.x,
-                        p.position.y,
-                        _yaw(p.orientation),
-                    )
-                )
+                odom.append(Sample.of(msg.header.stamp, msg.pose.pose))
 
         node.create_subscription(Odometry, "/odom", on_odom, 100)
         client = node.create_client(GetEntityState, "/get_entity_state")
@@ -218,16 +218,8 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
                 fut.add_done_callback(lambda _f, ev=ev: ev.set())
                 r = fut.result() if ev.wait(5) else None
                 if r is not None and r.success:
-                    p = r.state.pose
                     with lock:
-                        truth.append(
-                            Sample(
-                                r.header.stamp.sec + r.header.stamp.nanosec * 1e-9,
-                                p.position.x,
-                                p.position.y,
-                                _yaw(p.orientation),
-                            )
-                        )
+                        truth.append(Sample.of(r.header.stamp, r.state.pose))
                 done.wait(0.02)
 
         sampler = threading.Thread(target=sample_truth, daemon=True)
