@@ -3,7 +3,10 @@ one servo module, listeners on the bus, visuals in the MuJoCo model."""
 
 from __future__ import annotations
 
+import logging
 import math
+import threading
+import time
 
 import mujoco
 import numpy as np
@@ -12,7 +15,7 @@ from _paths import SEED_XACRO
 
 from gazelle.description import Pose, load, load_string
 from gazelle.physics import ActuatorKind, JointHandle
-from gazelle.sim import Simulation
+from gazelle.sim import MAX_CATCH_UP_SEC, Simulation
 from gazelle.systems import MsgType, System, UpdateInfo
 from gazelle.systems.diff_drive import DiffDrive
 from gazelle.worlds import default_world
@@ -184,3 +187,32 @@ def test_a_handle_on_a_joint_that_is_not_there_is_refused_by_name() -> None:
         sim.world.joint("robot", "QQQ")
     with pytest.raises(WorldError, match="entity 'ghost' has no joint"):
         sim.world.joint("ghost", drive._wheels[0].joint)
+
+
+def test_a_stall_longer_than_the_catch_up_is_reported_once_and_pacing_goes_on(caplog) -> None:
+    sim = Simulation(default_world(), rtf=1.0)
+    stalled = threading.Event()
+
+    def stall(_info) -> None:
+        if not stalled.is_set():
+            stalled.set()
+            time.sleep(MAX_CATCH_UP_SEC + 0.3)  # the stall under test (a busy CPU), not a wait for a condition
+
+    sim.add_step_listener(stall, rate_hz=10)
+    with caplog.at_level(logging.WARNING, logger="gazelle"):
+        sim.start()
+        try:
+            assert stalled.wait(5)
+            deadline = time.monotonic() + 10
+            while "behind the wall clock" not in caplog.text and time.monotonic() < deadline:
+                time.sleep(0.01)
+            t0, w0 = sim.world.time, time.monotonic()
+            while time.monotonic() - w0 < 0.5:
+                time.sleep(0.01)
+            rate = (sim.world.time - t0) / (time.monotonic() - w0)
+        finally:
+            sim.stop()
+    lines = [r.getMessage() for r in caplog.records if "behind the wall clock" in r.getMessage()]
+    assert len(lines) == 1, lines
+    assert "dropped 0." in lines[0] and "real-time factor 1" in lines[0]
+    assert 0.7 < rate < 1.3  # paced at real time again from the new anchor, not racing to make up the loss

@@ -84,19 +84,26 @@ def _yaw(q) -> float:
 
 
 def find_corners(truth: list[Sample], min_turn_rate: float = 0.25) -> list[int]:
-    """Indices of the middle sample of each turn-in-place phase (where the yaw changes fast)."""
+    """Indices of the middle sample of each turn-in-place phase (where the yaw changes fast).
+
+    A sample with the same stamp as the one before it (the sampler asked twice while the simulation
+    had not stepped, e.g. on a loaded machine) is skipped without ending the turn it falls in: it
+    once split one turn into two corners at the same place.
+    """
     turning: list[list[int]] = []
+    prev = 0
     for i in range(1, len(truth)):
-        a, b = truth[i - 1], truth[i]
+        a, b = truth[prev], truth[i]
         dt = b.t - a.t
         if dt <= 0:
             continue
         rate = abs(math.remainder(b.yaw - a.yaw, math.tau)) / dt
         if rate > min_turn_rate:
-            if turning and turning[-1][-1] == i - 1:
+            if turning and turning[-1][-1] == prev:
                 turning[-1].append(i)
             else:
                 turning.append([i])
+        prev = i
     return [seg[len(seg) // 2] for seg in turning if len(seg) >= 3]
 
 

@@ -132,6 +132,8 @@ class Simulation:
         """Entity name -> what went wrong, for entities that blew up."""
         self._divergence_log: dict[str, tuple[int, float]] = {}
         """Entity name -> (divergences not yet reported, wall time of the last report)."""
+        self._lag_log: tuple[int, float, float] = (0, 0.0, -math.inf)
+        """(lags not yet reported, their wall seconds lost, wall time of the last report)."""
         for problem in audit_world(World(name=world.name, plugins=world.plugins)):
             _log.warning(problem.format())
         for m in world.models:
@@ -227,6 +229,7 @@ class Simulation:
                     elif ahead < -MAX_CATCH_UP_SEC:
                         # too far behind to catch up: accept the loss and pace from here
                         self._anchor = (time.monotonic(), self.world.time)
+                        self._report_lag(-ahead)
                     # a shorter stall (a busy CPU, a garbage collection) is made up by stepping
                     # without sleeping, so sim time keeps tracking wall time for wall-clock nodes
         except Exception:  # pragma: no cover - reported, never silent
@@ -339,6 +342,23 @@ class Simulation:
             if first:
                 for listener in self.divergence_listeners:
                     listener(name, reason)
+
+    def _report_lag(self, behind: float) -> None:
+        """Say that sim time fell behind the wall clock for good (nodes timing with the wall clock see
+        shorter motions): the first time at once, then a summary at most every
+        :data:`DIVERGENCE_REPORT_SEC`."""
+        now = time.monotonic()
+        count, lost, last = self._lag_log
+        count, lost = count + 1, lost + behind - MAX_CATCH_UP_SEC
+        if now - last < DIVERGENCE_REPORT_SEC:
+            self._lag_log = (count, lost, last)
+            return
+        _log.warning(
+            f"the simulation fell {behind:.2f} s behind the wall clock (real-time factor {self.rtf:g}) and "
+            f"dropped {lost:.2f} s of wall time in {count} stall(s) since the last report; nodes timing "
+            "with the wall clock saw less sim time (a busy CPU? use_sim_time:=true avoids it)"
+        )
+        self._lag_log = (0, 0.0, now)
 
     def _report_divergence(self, name: str, reason: str, first: bool) -> None:
         """Log a divergence once, then at most a summary every :data:`DIVERGENCE_REPORT_SEC` of wall time.
