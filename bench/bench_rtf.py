@@ -117,6 +117,11 @@ def run_threaded(sim, seconds: float) -> tuple[float, int, float]:
     return sim.world.time - t0, sim.iterations - i0, time.monotonic() - w0
 
 
+def best_threaded(sim, seconds: float, runs: int = 3) -> tuple[float, int, float]:
+    """:func:`run_threaded` ``runs`` times; the run with the most steps per second (the least disturbed)."""
+    return max((run_threaded(sim, seconds) for _ in range(runs)), key=lambda r: r[1] / r[2])
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument(
@@ -159,8 +164,8 @@ def main() -> int:
     raw = rows[0][1]
     rows.append(("gazelle sim.step(N), no ROS", max(steps), f"{N} steps, systems on, best of 3"))
     no_ros = rows[-1][1]
-    s, n, w = run_threaded(sim, opts.seconds)
-    rows.append(("gazelle sim.start() rtf=0, no ROS", n / w, f"{s:.1f} sim s in {w:.1f} wall s"))
+    s, n, w = best_threaded(sim, opts.seconds)
+    rows.append(("gazelle sim.start() rtf=0, no ROS", n / w, f"{s:.1f} sim s in {w:.1f} wall s, best of 3"))
 
     # --- gazelle with the ROS bridge, nobody subscribed
     from gazelle.ros import RosBridge
@@ -169,13 +174,22 @@ def main() -> int:
     node = bridge.node
     clock_pub = node._clock_pub
     subs_free = clock_pub.get_subscription_count()
-    s, n, w = run_threaded(sim, opts.seconds)
-    rows.append(("gazelle + RosBridge, nobody subscribed", n / w, f"{s:.1f} sim s in {w:.1f} wall s, {subs_free} subs"))
+    s, n, w = best_threaded(sim, opts.seconds)
+    rows.append(
+        (
+            "gazelle + RosBridge, nobody subscribed",
+            n / w,
+            f"{s:.1f} sim s in {w:.1f} wall s, {subs_free} subs, best of 3",
+        )
+    )
     with_ros = rows[-1][1]
 
     # --- a plain rclpy process on /odom and /tf (not /clock): every message is built and sent
     odom_tf = [node._pubs[(t, k)].handle for (t, k) in node._pubs if t in ("/odom", "/tf")]
+    box = node.outbox
+    p0, d0 = box.published, box.dropped
     rate, note = with_listener("/odom,/tf", odom_tf, sim, opts.seconds)
+    note += f"; bridge published {box.published - p0}, dropped {box.dropped - d0} (keep-last, publisher thread behind)"
     rows.append(("gazelle + RosBridge, /odom + /tf heard", rate, note))
     heard = rate
 

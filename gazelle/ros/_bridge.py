@@ -37,11 +37,12 @@ from rosgraph_msgs.msg import Clock
 from std_srvs.srv import Empty
 
 from ..description import Model, ModelLoadError, Pose, World, load_string, quat_conj, quat_rotate, reply_text
-from ..physics import WORLD_FRAMES, ErrorKind, WorldError, pose_out_of_range
+from ..physics import WORLD_FRAMES, EntityState, ErrorKind, WorldError, pose_out_of_range
 from ..sim import Simulation
 from ..systems import Endpoint, MsgType, Qos, Transform, TransformBatch, UpdateInfo
 from ._convert import FROM_ROS, ROS_TYPES, TO_ROS, from_pose_msg, to_pose_msg, to_time
 from ._exposure import ServerRegistry
+from ._outbox import Lane, Outbox
 from ._replies import guarded_service, with_warnings
 
 
@@ -89,6 +90,19 @@ MODEL_STATES_QOS = QoSProfile(depth=1, history=HistoryPolicy.KEEP_LAST, reliabil
 """Keep-last 1, reliable: a subscriber always gets the newest states and never stalls the sim."""
 
 
+def model_states_msg(states: list[tuple[str, EntityState]]) -> ModelStates:
+    """gazebo_msgs/ModelStates of entity names and world states (see ``SimulationNode.entity_states``)."""
+    msg = ModelStates()
+    for name, st in states:
+        msg.name.append(name)  # pyright: ignore[reportAttributeAccessIssue]
+        msg.pose.append(to_pose_msg(st.pose))  # pyright: ignore[reportAttributeAccessIssue]
+        twist = Twist()
+        twist.linear.x, twist.linear.y, twist.linear.z = st.linear_velocity
+        twist.angular.x, twist.angular.y, twist.angular.z = st.angular_velocity
+        msg.twist.append(twist)  # pyright: ignore[reportAttributeAccessIssue]
+    return msg
+
+
 class _RosLogHandler(logging.Handler):
     """Send Python log records (systems, physics) to rclpy loggers named after the record's logger."""
 
@@ -129,12 +143,35 @@ def _no_sub_events() -> SubscriptionEventCallbacks:
     return SubscriptionEventCallbacks(use_default_callbacks=False)
 
 
+class _Subscribed:
+    """Whether an rclpy publisher has subscribers, asked of rclpy at most every ``refresh_sec`` of wall
+    time: the simulation asks before building each message (thousands of times a second faster than
+    real time), and a subscriber that just matched waits at most that long (far less than discovery)."""
+
+    __slots__ = ("_handle", "_refresh", "_until", "_value")
+
+    def __init__(self, handle: Any, refresh_sec: float = 0.02):
+        self._handle = handle
+        self._refresh = refresh_sec
+        self._until = -math.inf
+        self._value = False
+
+    def __call__(self) -> bool:
+        now = time.monotonic()
+        if now >= self._until:
+            self._value = self._handle.get_subscription_count() > 0
+            self._until = now + self._refresh
+        return self._value
+
+
 @dataclass
 class _RosEndpoint:
     """One rclpy publisher or subscription, shared by every bus endpoint with the same topic."""
 
     handle: Any
     users: int = 0
+    lane: Lane | None = None
+    """/tf_static: the one lane of the union of every robot's static transforms."""
 
 
 class SimulationNode(Node):
@@ -157,7 +194,14 @@ class SimulationNode(Node):
         self._sinks: dict[int, Any] = {}
         """id(publisher endpoint) -> the sink this bridge added to it (other sinks stay)."""
         self._static: dict[int, tuple[Transform, ...]] = {}
+        self.outbox = Outbox()
+        """The publisher thread: the simulation thread only queues payloads (see ``_outbox``)."""
+        self._lanes: dict[int, Lane] = {}
+        """id(publisher endpoint) -> its lane in the outbox."""
         self._clock_pub = self.create_publisher(Clock, "/clock", CLOCK_QOS)
+        clock_pub = self._clock_pub
+        self._clock_heard = _Subscribed(clock_pub)
+        self._clock_lane = self.outbox.lane(lambda t: clock_pub.publish(Clock(clock=to_time(t))), 1, "/clock")
         self._last_clock_wall = -math.inf
         self._srv = []
         for srv_type, name, cb in (
@@ -179,6 +223,10 @@ class SimulationNode(Node):
         # MuJoCo between two clock periods
         sim.add_step_listener(self._on_step, clock_rate_hz)
         self._model_states_pub = self.create_publisher(ModelStates, "/model_states", MODEL_STATES_QOS)
+        states_pub = self._model_states_pub
+        self._model_states_lane = self.outbox.lane(
+            lambda states: states_pub.publish(model_states_msg(states)), 1, "/model_states"
+        )
         self._model_states_period = 1.0 / MODEL_STATES_RATE_HZ
         self._last_model_states_wall = -math.inf
         sim.add_step_listener(self._on_step_model_states, MODEL_STATES_RATE_HZ)
@@ -187,10 +235,8 @@ class SimulationNode(Node):
 
     # ------------------------------------------------------------------ clock
     def publish_clock(self, sim_time: float) -> None:
-        """Publish ``sim_time`` on /clock."""
-        msg = Clock()
-        msg.clock = to_time(sim_time)
-        self._clock_pub.publish(msg)
+        """Publish ``sim_time`` on /clock (queued for the publisher thread)."""
+        self._clock_lane.put(sim_time)
 
     def _on_step(self, info: UpdateInfo) -> None:
         """A /clock period of sim time went by (the runtime calls this at the clock rate, and after a reset)."""
@@ -200,11 +246,13 @@ class SimulationNode(Node):
         # too late (we measured a 5 s side driven for 5.2 s at 30x). While anyone listens to
         # /clock, keep its resolution and hold the simulation back instead: at most one clock
         # period of sim time per MIN_CLOCK_WALL_PERIOD_SEC of wall time (10x at 100 Hz).
+        # Nobody listening: nothing to send and nothing to hold back for (a late subscriber gets
+        # the next period's message).
+        if not self._clock_heard():
+            return
         wall = time.monotonic()
         wait = self._last_clock_wall + MIN_CLOCK_WALL_PERIOD_SEC - wall
         if wait > 0:
-            if self._clock_pub.get_subscription_count() == 0:
-                return
             time.sleep(wait)
             wall = time.monotonic()
         self._last_clock_wall = wall
@@ -222,24 +270,18 @@ class SimulationNode(Node):
         self._last_model_states_wall = wall
         if self._model_states_pub.get_subscription_count() == 0:
             return
-        self._model_states_pub.publish(self.model_states())
+        self._model_states_lane.put(self.entity_states())
 
-    def model_states(self) -> ModelStates:
-        """The current ModelStates (call on the sim thread)."""
-        msg = ModelStates()
+    def entity_states(self) -> list[tuple[str, EntityState]]:
+        """Every entity's name and world state, now (call on the sim thread; see :func:`model_states_msg`)."""
+        out = []
         world = self.sim.world
         for name in list(world.entities):
             try:
-                st = world.entity_state(name)
+                out.append((name, world.entity_state(name)))
             except WorldError:  # an entity without a body: nothing to report
                 continue
-            msg.name.append(name)  # pyright: ignore[reportAttributeAccessIssue]
-            msg.pose.append(to_pose_msg(st.pose))  # pyright: ignore[reportAttributeAccessIssue]
-            twist = Twist()
-            twist.linear.x, twist.linear.y, twist.linear.z = st.linear_velocity
-            twist.angular.x, twist.angular.y, twist.angular.z = st.angular_velocity
-            msg.twist.append(twist)  # pyright: ignore[reportAttributeAccessIssue]
-        return msg
+        return out
 
     # ------------------------------------------------------------------ bus mirroring
     def endpoint_added(self, ep: Endpoint) -> None:
@@ -260,14 +302,21 @@ class SimulationNode(Node):
             convert = TO_ROS[ep.msg_type]
             handle = entry.handle
             if ep.msg_type is MsgType.TF_STATIC:
-                sink = lambda payload: self._publish_static(handle, ep, payload)
+                with self._lock:
+                    if entry.lane is None:
+                        entry.lane = self.outbox.lane(lambda payload: handle.publish(convert(payload)), 1, ep.topic)
+                static_lane = entry.lane
+                sink = lambda payload: self._publish_static(static_lane, ep, payload)
             else:
-                sink = lambda payload: handle.publish(convert(payload))
+                lane = self.outbox.lane(lambda payload: handle.publish(convert(payload)), ep.depth, ep.topic)
+                sink = lane.put
+                with self._lock:
+                    self._lanes[id(ep)] = lane
             with self._lock:
                 self._sinks[id(ep)] = sink
             # latched topics always publish (late joiners get the last one); the others only while
-            # someone in ROS subscribes, so nothing is built for nobody (~1 µs a check)
-            wanted = None if ep.qos is Qos.LATCHED else (lambda: handle.get_subscription_count() > 0)
+            # someone in ROS subscribes, so nothing is built for nobody
+            wanted = None if ep.qos is Qos.LATCHED else _Subscribed(handle)
             ep.add_sink(sink, wanted)
         else:
             convert_in = FROM_ROS[ep.msg_type]
@@ -284,12 +333,12 @@ class SimulationNode(Node):
             with self._lock:
                 self._subs[id(ep)] = sub
 
-    def _publish_static(self, handle: Any, ep: Endpoint, batch: TransformBatch) -> None:
+    def _publish_static(self, lane: Lane, ep: Endpoint, batch: TransformBatch) -> None:
         """/tf_static keeps one latched message: it must hold every robot's static transforms."""
         with self._lock:
             self._static[id(ep)] = batch.transforms
             union = TransformBatch(tuple(t for ts in self._static.values() for t in ts))
-        handle.publish(TO_ROS[MsgType.TF_STATIC](union))
+        lane.put(union)
 
     def endpoint_removed(self, ep: Endpoint) -> None:
         """Undo :meth:`endpoint_added` (the rclpy publisher goes when its last user goes)."""
@@ -298,24 +347,29 @@ class SimulationNode(Node):
                 self._static.pop(id(ep), None)
         with self._lock:
             sink = self._sinks.pop(id(ep), None)
+            lane = self._lanes.pop(id(ep), None)
         if sink is not None:
             ep.remove_sink(sink)
-        with self._lock:
-            if ep.is_publisher:
-                key = (ep.topic, ep.msg_type.value)
-                entry = self._pubs.get(key)
-                if entry is None:
-                    return
-                entry.users -= 1
-                if entry.users > 0:
-                    return
-                del self._pubs[key]
-                handle = entry.handle
-                self.destroy_publisher(handle)
-            else:
+        if lane is not None:
+            lane.close()  # nothing of it is published once its publisher may be gone
+        if not ep.is_publisher:
+            with self._lock:
                 sub = self._subs.pop(id(ep), None)
-                if sub is not None:
-                    self.destroy_subscription(sub)
+            if sub is not None:
+                self.destroy_subscription(sub)
+            return
+        with self._lock:
+            key = (ep.topic, ep.msg_type.value)
+            entry = self._pubs.get(key)
+            if entry is None:
+                return
+            entry.users -= 1
+            if entry.users > 0:
+                return
+            del self._pubs[key]
+        if entry.lane is not None:
+            entry.lane.close()
+        self.destroy_publisher(entry.handle)
 
     # ------------------------------------------------------------------ spawning
     def resolve_frame(self, frame: str) -> Pose:
@@ -536,6 +590,7 @@ class RosBridge:
         """Stop spinning, destroy the node and the bridge's own rclpy context."""
         self._stopping.set()
         logging.getLogger().removeHandler(self._handler)
+        self.node.outbox.close()  # what the simulation queued goes out before the node goes
         self.executor.shutdown(timeout_sec=2.0)
         self.node.destroy_node()
         if self.context.ok():

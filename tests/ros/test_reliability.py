@@ -153,3 +153,45 @@ def test_a_5000_link_chain_gets_an_answer_and_the_next_spawn_works(ros_client, s
     assert _spawn(ros_client, "chain", chain(5, joint_type)).success  # the name is free, the world builds
     assert ros_client.call(GetModelList, "/get_model_list", GetModelList.Request()).success
     assert "Traceback" not in sim.output
+
+
+def test_the_simulation_thread_queues_and_a_publisher_thread_publishes(monkeypatch, ros_client):
+    """Publishing to ROS never runs on the simulation thread: /clock, /odom, /tf and /model_states
+    are converted and sent by the bridge's publisher thread while the physics steps."""
+    from gazebo_msgs.msg import ModelStates
+    from nav_msgs.msg import Odometry
+    from rclpy.publisher import Publisher
+    from rosgraph_msgs.msg import Clock
+    from tf2_msgs.msg import TFMessage
+
+    from gazelle.description import Pose, load_string
+    from gazelle.ros._bridge import RosBridge
+    from gazelle.sim import Simulation
+    from gazelle.worlds import default_world
+
+    threads: dict[str, set[str]] = {}
+    real_publish = Publisher.publish
+
+    def spy(self, msg):
+        threads.setdefault(type(msg).__name__, set()).add(threading.current_thread().name)
+        return real_publish(self, msg)
+
+    monkeypatch.setattr(Publisher, "publish", spy)
+    got: dict[str, int] = {}
+    for typ, topic in ((Clock, "/clock"), (Odometry, "/odom"), (TFMessage, "/tf"), (ModelStates, "/model_states")):
+        ros_client.node.create_subscription(
+            typ, topic, lambda _m, topic=topic: got.__setitem__(topic, got.get(topic, 0) + 1), 10
+        )
+    sim = Simulation(default_world(), rtf=1.0)
+    bridge = RosBridge(sim)
+    try:
+        sim.spawn(load_string(xacro_to_urdf(SEED_XACRO)).value, name="simple_robot", pose=Pose((0, 0, 0.07)))
+        sim.start()
+        wait_for(lambda: all(got.get(t, 0) >= 5 for t in ("/clock", "/odom", "/tf", "/model_states")), 30, "messages")
+    finally:
+        sim.stop()
+        bridge.shutdown()
+    sim_thread = {"gazelle-sim"} & set().union(*threads.values())
+    assert not sim_thread, threads
+    for name in ("Clock", "Odometry", "TFMessage", "ModelStates"):
+        assert threads[name] == {"gazelle-publish"}, threads
