@@ -40,7 +40,11 @@ def fmt_default(f: dataclasses.Field) -> str:
     else:
         return "required"
     if dataclasses.is_dataclass(v):
-        parts = [f"{k}={getattr(v, k)}" for k in (x.name for x in dataclasses.fields(v)) if getattr(v, k) not in (float("inf"), float("-inf"))]
+        parts = [
+            f"{k}={getattr(v, k)}"
+            for k in (x.name for x in dataclasses.fields(v))
+            if getattr(v, k) not in (float("inf"), float("-inf"))
+        ]
         return "unbounded" if not parts else ", ".join(parts)
     if v == "" or v == ():
         return "—"
@@ -53,6 +57,8 @@ def render() -> str:
 
     by_factory: dict = defaultdict(list)
     for name, factory in _registry._REGISTRY.items():
+        by_factory[factory].append(name)
+    for name, (factory, _types) in _registry._SENSOR_PLUGINS.items():
         by_factory[factory].append(name)
     sections: list[tuple[str, list[str], type, type]] = []
     for factory, names in by_factory.items():

@@ -15,6 +15,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Generic, TypeVar
 
+import numpy as np
+
 from ..description import Pose
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -157,6 +159,14 @@ class BodyHandle:
     def velocity(self) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
         """(linear velocity of the link origin, angular velocity), both in the world frame."""
         return self.world.body_velocity(self._id.get(self.world))
+
+    def cast_rays(self, origin: np.ndarray, directions: np.ndarray, max_range: float) -> tuple[np.ndarray, np.ndarray]:
+        """:meth:`PhysicsWorld.cast_rays` that never hits this body (a lidar's own housing)."""
+        return self.world.cast_rays(origin, directions, self._id.get(self.world), max_range)
+
+    def imu_reading(self, offset: Pose) -> tuple[tuple[float, float, float, float], np.ndarray, np.ndarray]:
+        """:meth:`PhysicsWorld.imu_reading` of a sensor at ``offset`` in this link's frame."""
+        return self.world.imu_reading(self._id.get(self.world), offset)
 
     def __repr__(self) -> str:
         return f"BodyHandle({self.entity!r}, {self.link!r})"

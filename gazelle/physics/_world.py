@@ -191,6 +191,17 @@ class EntityState:
     angular_velocity: tuple[float, float, float]
 
 
+RAY_GEOM_GROUPS = np.array([0, 0, 0, 1, 0, 0], dtype=np.uint8)
+"""Geom groups rays hit: the collision geoms (group 3), as Gazebo's ``ray`` sensor sees collisions."""
+
+
+def _quat_matrix(q: tuple[float, float, float, float]) -> np.ndarray:
+    """Rotation matrix of a unit quaternion (w, x, y, z)."""
+    out = np.empty(9)
+    mujoco.mju_quat2Mat(out, np.asarray(q, dtype=float))
+    return out.reshape(3, 3)
+
+
 class PhysicsWorld:
     """MuJoCo model + data, with spawn and delete while running."""
 
@@ -721,6 +732,57 @@ class PhysicsWorld:
         ang = vel[:3]
         lin = vel[3:]
         return (float(lin[0]), float(lin[1]), float(lin[2])), (float(ang[0]), float(ang[1]), float(ang[2]))
+
+    def cast_rays(
+        self, origin: np.ndarray, directions: np.ndarray, exclude_body: int, max_range: float
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """Cast rays from ``origin`` along the unit ``directions`` (N×3, world frame) against collision
+        geoms (what Gazebo's ``ray`` sensor sees), ignoring the body ``exclude_body``, in one
+        ``mj_multiRay`` call. Returns (distances, geom ids): distance -1 and id -1 where nothing is hit
+        within ``max_range``."""
+        self._refresh_kinematics()
+        n = len(directions)
+        dist = np.empty(n)
+        geom = np.empty(n, dtype=np.int32)
+        mujoco.mj_multiRay(
+            self.model,
+            self.data,
+            np.ascontiguousarray(origin, dtype=float),
+            np.ascontiguousarray(directions, dtype=float).reshape(-1),
+            RAY_GEOM_GROUPS,
+            True,
+            exclude_body,
+            geom,
+            dist,
+            None,
+            n,
+            max_range,
+        )
+        return dist, geom
+
+    def imu_reading(
+        self, body_id: int, offset: Pose
+    ) -> tuple[tuple[float, float, float, float], np.ndarray, np.ndarray]:
+        """What an ideal IMU at ``offset`` (a pose in the body frame) reads now: its world orientation
+        (w, x, y, z), its angular velocity and its proper linear acceleration, both in its own frame.
+        At rest the acceleration is +g upwards (0, 0, 9.81), as a real accelerometer reads: MuJoCo's
+        body accelerations (``mj_rnePostConstraint``) start from the gravity as a base acceleration.
+        Only derived fields are computed, so the trajectory is unchanged."""
+        self._refresh_kinematics()
+        m, d = self.model, self.data
+        mujoco.mj_rnePostConstraint(m, d)
+        acc = np.empty(6)
+        vel = np.empty(6)
+        mujoco.mj_objectAcceleration(m, d, mujoco.mjtObj.mjOBJ_XBODY, body_id, acc, 0)
+        mujoco.mj_objectVelocity(m, d, mujoco.mjtObj.mjOBJ_XBODY, body_id, vel, 0)
+        R_WB = d.xmat[body_id].reshape(3, 3)
+        r = R_WB @ np.asarray(offset.position, dtype=float)  # body origin -> sensor, world frame
+        w, alpha = vel[:3], acc[:3]
+        a = acc[3:] + np.cross(alpha, r) + np.cross(w, np.cross(w, r))
+        q_WB = tuple(float(v) for v in d.xquat[body_id])
+        q_WS = Pose((0.0, 0.0, 0.0), q_WB) * Pose((0.0, 0.0, 0.0), offset.orientation)  # type: ignore[arg-type]
+        R_WS = R_WB @ _quat_matrix(offset.orientation)
+        return q_WS.orientation, R_WS.T @ w, R_WS.T @ a
 
     def frame_pose(self, frame: str) -> Pose:
         """World pose of a frame named in a request: a :data:`WORLD_FRAMES` name, an entity (its model

@@ -3,19 +3,36 @@
 from __future__ import annotations
 
 import math
+from array import array
 
 from builtin_interfaces.msg import Time
 from geometry_msgs.msg import Point, Quaternion, TransformStamped, Vector3
 from geometry_msgs.msg import Pose as PoseMsg
 from geometry_msgs.msg import Twist as TwistMsg
 from nav_msgs.msg import Odometry as OdometryMsg
+from sensor_msgs.msg import Imu as ImuMsg
 from sensor_msgs.msg import JointState as JointStateMsg
+from sensor_msgs.msg import LaserScan as LaserScanMsg
+from sensor_msgs.msg import PointCloud2, PointField
+from sensor_msgs.msg import Range as RangeMsg
 from std_msgs.msg import Float64 as Float64Msg
 from std_msgs.msg import String as StringMsg
 from tf2_msgs.msg import TFMessage
 
 from ..description import Pose
-from ..systems import Float64, JointStates, MsgType, Odometry, Transform, TransformBatch, Twist
+from ..systems import (
+    Float64,
+    Imu,
+    JointStates,
+    LaserScan,
+    MsgType,
+    Odometry,
+    PointCloud,
+    Range,
+    Transform,
+    TransformBatch,
+    Twist,
+)
 
 
 def to_time(sec: float) -> Time:
@@ -100,6 +117,65 @@ def to_joint_state_msg(j: JointStates) -> JointStateMsg:
     return msg
 
 
+def to_laser_scan_msg(s: LaserScan) -> LaserScanMsg:
+    """sensor_msgs/LaserScan (the float32 bytes go into the array fields without a Python loop)."""
+    msg = LaserScanMsg()
+    msg.header.stamp = to_time(s.stamp_sec)
+    msg.header.frame_id = s.frame_id
+    msg.angle_min, msg.angle_max, msg.angle_increment = s.angle_min, s.angle_max, s.angle_increment
+    msg.time_increment, msg.scan_time = s.time_increment, s.scan_time
+    msg.range_min, msg.range_max = s.range_min, s.range_max
+    msg.ranges = array("f", s.ranges)
+    msg.intensities = array("f", s.intensities)
+    return msg
+
+
+_CLOUD_FIELDS = [
+    PointField(name=n, offset=4 * i, datatype=PointField.FLOAT32, count=1) for i, n in enumerate("xyz")
+] + [PointField(name="intensity", offset=12, datatype=PointField.FLOAT32, count=1)]
+
+
+def to_point_cloud_msg(c: PointCloud) -> PointCloud2:
+    """sensor_msgs/PointCloud2 with float32 x, y, z, intensity (gazebo_ros_ray_sensor's layout)."""
+    msg = PointCloud2()
+    msg.header.stamp = to_time(c.stamp_sec)
+    msg.header.frame_id = c.frame_id
+    msg.height, msg.width = c.height, c.width
+    msg.fields = _CLOUD_FIELDS
+    msg.is_bigendian = False
+    msg.point_step = 16
+    msg.row_step = 16 * c.width
+    msg.data = c.data
+    msg.is_dense = False
+    return msg
+
+
+def to_range_msg(r: Range) -> RangeMsg:
+    """sensor_msgs/Range."""
+    msg = RangeMsg()
+    msg.header.stamp = to_time(r.stamp_sec)
+    msg.header.frame_id = r.frame_id
+    msg.radiation_type = r.radiation_type
+    msg.field_of_view, msg.min_range, msg.max_range, msg.range = r.field_of_view, r.min_range, r.max_range, r.range
+    return msg
+
+
+def to_imu_msg(i: Imu) -> ImuMsg:
+    """sensor_msgs/Imu."""
+    msg = ImuMsg()
+    msg.header.stamp = to_time(i.stamp_sec)
+    msg.header.frame_id = i.frame_id
+    q = msg.orientation
+    q.w, q.x, q.y, q.z = (float(v) for v in i.orientation)
+    av, la = msg.angular_velocity, msg.linear_acceleration
+    av.x, av.y, av.z = (float(v) for v in i.angular_velocity)
+    la.x, la.y, la.z = (float(v) for v in i.linear_acceleration)
+    msg.orientation_covariance = array("d", i.orientation_covariance)
+    msg.angular_velocity_covariance = array("d", i.angular_velocity_covariance)
+    msg.linear_acceleration_covariance = array("d", i.linear_acceleration_covariance)
+    return msg
+
+
 def _to_tf(batch: TransformBatch) -> TFMessage:
     return TFMessage(transforms=[to_transform_msg(t) for t in batch.transforms])
 
@@ -112,6 +188,10 @@ ROS_TYPES = {
     MsgType.JOINT_STATE: JointStateMsg,
     MsgType.STRING: StringMsg,
     MsgType.FLOAT64: Float64Msg,
+    MsgType.LASER_SCAN: LaserScanMsg,
+    MsgType.POINT_CLOUD2: PointCloud2,
+    MsgType.RANGE: RangeMsg,
+    MsgType.IMU: ImuMsg,
 }
 """The rclpy message class for each bus message type."""
 
@@ -123,6 +203,10 @@ TO_ROS = {
     MsgType.JOINT_STATE: to_joint_state_msg,
     MsgType.TWIST: to_twist_msg,
     MsgType.FLOAT64: lambda f: Float64Msg(data=float(f.data)),
+    MsgType.LASER_SCAN: to_laser_scan_msg,
+    MsgType.POINT_CLOUD2: to_point_cloud_msg,
+    MsgType.RANGE: to_range_msg,
+    MsgType.IMU: to_imu_msg,
 }
 FROM_ROS = {
     MsgType.TWIST: from_twist_msg,

@@ -51,6 +51,7 @@ from ..systems import (
     audit_model,
     audit_world,
     create_system,
+    plan_sensors,
     robot_state_config,
 )
 
@@ -134,6 +135,9 @@ class Simulation:
         """Entity name -> (divergences not yet reported, wall time of the last report)."""
         self._lag_log: tuple[int, float, float] = (0, 0.0, -math.inf)
         """(lags not yet reported, their wall seconds lost, wall time of the last report)."""
+        self.world_name = world.name
+        self.world_plugins = world.plugins
+        """The world's plugins: gz-sim's sensor systems among them run the sensors without a gazebo_ros plugin."""
         for problem in audit_world(World(name=world.name, plugins=world.plugins)):
             _log.warning(problem.format())
         for m in world.models:
@@ -389,7 +393,8 @@ class Simulation:
         """
         made: list[System] = []
         try:
-            for problem in audit_model(entity.model):  # unsupported plugins and sensors: named, never dropped silently
+            # unsupported plugins and sensors: named, never dropped silently
+            for problem in audit_model(entity.model, self.world_plugins):
                 _log.warning(f"'{entity.name}': {problem.format()}")
             for plugin in entity.model.plugins:
                 if plugin.filename == RSP_PLUGIN:
@@ -399,7 +404,26 @@ class Simulation:
                     continue
                 logger = logging.getLogger(plugin.name or plugin.filename)
                 made.append(system)
-                system.configure(SystemContext(self.world, entity, plugin, self.bus, logger))
+                system.configure(
+                    SystemContext(self.world, entity, plugin, self.bus, logger, world_name=self.world_name)
+                )
+            for plan in plan_sensors(entity.model, self.world_plugins)[0]:
+                system = plan.make()
+                named = plan.plugin.name if plan.plugin is not None else plan.sensor.name
+                logger = logging.getLogger(named or plan.sensor.name)
+                made.append(system)
+                system.configure(
+                    SystemContext(
+                        self.world,
+                        entity,
+                        plan.plugin,
+                        self.bus,
+                        logger,
+                        sensor=plan.sensor,
+                        link=plan.link,
+                        world_name=self.world_name,
+                    )
+                )
             if self.robot_state_publisher and (entity.model.joints or entity.model.urdf):
                 logger = logging.getLogger(f"{entity.name}.robot_state_publisher")
                 config, plugin = robot_state_config(entity, logger)

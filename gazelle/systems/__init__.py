@@ -23,36 +23,46 @@ from ._base import UpdateInfo as UpdateInfo
 from ._bus import Bus as Bus
 from ._bus import Endpoint as Endpoint
 from ._bus import Float64 as Float64
+from ._bus import Imu as Imu
 from ._bus import JointStates as JointStates
+from ._bus import LaserScan as LaserScan
 from ._bus import MsgType as MsgType
 from ._bus import Odometry as Odometry
+from ._bus import PointCloud as PointCloud
 from ._bus import Qos as Qos
+from ._bus import Range as Range
 from ._bus import Text as Text
 from ._bus import Transform as Transform
 from ._bus import TransformBatch as TransformBatch
 from ._bus import Twist as Twist
 from ._bus import resolve_topic as resolve_topic
+from ._registry import SensorPlan as SensorPlan
 from ._registry import audit_model as audit_model
 from ._registry import audit_world as audit_world
 from ._registry import create_system as create_system
+from ._registry import plan_sensors as plan_sensors
 from ._registry import supported_plugins as supported_plugins
 from .robot_state import RSP_PLUGIN as RSP_PLUGIN
 from .robot_state import RobotStatePublisher as RobotStatePublisher
 from .robot_state import robot_state_config as robot_state_config
 
 __all__ = [
-    "PHYSICS",
-    "PRE_PHYSICS",
-    "RSP_PLUGIN",
     "Bus",
     "Endpoint",
     "Float64",
+    "Imu",
     "JointStates",
+    "LaserScan",
     "MsgType",
     "Odometry",
+    "PHYSICS",
+    "PRE_PHYSICS",
     "PidGains",
+    "PointCloud",
     "PositionServo",
     "Qos",
+    "RSP_PLUGIN",
+    "Range",
     "RateGate",
     "RobotStatePublisher",
     "System",
@@ -67,7 +77,9 @@ __all__ = [
     "add_position_servo",
     "add_velocity_servo",
     "add_wheel_servo",
+    "SensorPlan",
     "audit_model",
+    "plan_sensors",
     "audit_world",
     "create_system",
     "resolve_topic",

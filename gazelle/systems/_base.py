@@ -21,7 +21,7 @@ import math
 from dataclasses import dataclass
 from typing import NamedTuple
 
-from ..description import ConfigElement, Plugin
+from ..description import ConfigElement, Plugin, Sensor
 from ..physics import Entity, PhysicsWorld
 from ._bus import Bus
 
@@ -58,6 +58,12 @@ class SystemContext:
     """The ``<plugin>`` this system was made from (None for built-in systems)."""
     bus: Bus
     logger: logging.Logger
+    sensor: Sensor | None = None
+    """The ``<sensor>`` a sensor plugin sits in (None for model plugins)."""
+    link: str = ""
+    """The link that ``sensor`` is on."""
+    world_name: str = "default"
+    """The world's name (gz-sim's default sensor topics contain it)."""
 
 
 class System:

@@ -83,6 +83,64 @@ class Float64:
     data: float
 
 
+@dataclass(frozen=True, slots=True)
+class LaserScan:
+    """sensor_msgs/LaserScan. ``ranges`` and ``intensities`` are float32 arrays' bytes (immutable,
+    cheap to hand to the publisher thread); out-of-range readings are ±inf as REP 117 says."""
+
+    stamp_sec: float
+    frame_id: str
+    angle_min: float
+    angle_max: float
+    angle_increment: float
+    range_min: float
+    range_max: float
+    ranges: bytes
+    intensities: bytes
+    time_increment: float = 0.0
+    scan_time: float = 0.0
+
+
+@dataclass(frozen=True, slots=True)
+class PointCloud:
+    """sensor_msgs/PointCloud2 with float32 fields x, y, z, intensity (16-byte points, unorganised
+    when ``height`` is 1), ``data`` little-endian bytes."""
+
+    stamp_sec: float
+    frame_id: str
+    width: int
+    height: int
+    data: bytes
+
+
+@dataclass(frozen=True, slots=True)
+class Range:
+    """sensor_msgs/Range (``radiation_type`` 0 ultrasound, 1 infrared)."""
+
+    stamp_sec: float
+    frame_id: str
+    radiation_type: int
+    field_of_view: float
+    min_range: float
+    max_range: float
+    range: float
+
+
+@dataclass(frozen=True, slots=True)
+class Imu:
+    """sensor_msgs/Imu. A covariance whose first element is -1 says "not provided" (REP 145)."""
+
+    stamp_sec: float
+    frame_id: str
+    orientation: tuple[float, float, float, float]
+    """(w, x, y, z)."""
+    angular_velocity: Vec3
+    linear_acceleration: Vec3
+    orientation_covariance: tuple[float, ...] = (0.0,) * 9
+    angular_velocity_covariance: tuple[float, ...] = (0.0,) * 9
+    linear_acceleration_covariance: tuple[float, ...] = (0.0,) * 9
+
+
 class MsgType(enum.Enum):
     """The ROS message type each payload maps to."""
 
@@ -94,6 +152,10 @@ class MsgType(enum.Enum):
     JOINT_STATE = "sensor_msgs/msg/JointState"
     STRING = "std_msgs/msg/String"
     FLOAT64 = "std_msgs/msg/Float64"
+    LASER_SCAN = "sensor_msgs/msg/LaserScan"
+    POINT_CLOUD2 = "sensor_msgs/msg/PointCloud2"
+    RANGE = "sensor_msgs/msg/Range"
+    IMU = "sensor_msgs/msg/Imu"
 
 
 class Qos(enum.Enum):
@@ -252,16 +314,21 @@ class Bus:
         return len(targets)
 
 
-def resolve_topic(name: str, namespace: str = "", remaps: dict[str, str] | None = None) -> str:
-    """Resolve a topic name the way rclcpp does for a node in ``namespace``.
+def resolve_topic(name: str, namespace: str = "", remaps: dict[str, str] | None = None, node: str = "") -> str:
+    """Resolve a topic name the way rclcpp does for a node called ``node`` in ``namespace``.
 
-    Remappings (``from:=to`` as in ``<ros><remapping>``) apply to the name as written.
+    Remappings (``from:=to`` as in ``<ros><remapping>``) apply to the name as written, so
+    ``~/out:=scan`` turns a sensor plugin's ``~/out`` into ``<ns>/scan``; an unmapped ``~/out``
+    is ``<ns>/<node>/out``.
     """
     if remaps:
         for src, dst in remaps.items():
             if name.lstrip("/") == src.lstrip("/"):
                 name = dst
                 break
+    if name.startswith("~"):
+        # node-private (~/out): under the node's own name, as gazebo_ros plugins publish ~/out
+        name = f"{node.strip('/')}/{name[1:].lstrip('/')}" if node else name[1:].lstrip("/")
     if name.startswith("/"):
         return name
     ns = "/" + namespace.strip("/") if namespace.strip("/") else ""

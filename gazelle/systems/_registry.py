@@ -5,8 +5,10 @@ from __future__ import annotations
 import logging
 import re
 from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
 
-from ..description import Diagnostic, ErrorCode, Model, Plugin, Severity, World
+from ..description import Diagnostic, ErrorCode, Model, Plugin, Sensor, Severity, World
 from ._base import System
 
 _log = logging.getLogger("gazelle.systems")
@@ -62,6 +64,18 @@ def _joint_commands() -> System:
     return JointCommands()
 
 
+def _lidar() -> System:
+    from .sensors import Lidar
+
+    return Lidar()
+
+
+def _imu() -> System:
+    from .sensors import ImuSensor
+
+    return ImuSensor()
+
+
 def _p3d() -> System:
     from .pose_publisher import P3D
 
@@ -89,7 +103,121 @@ _REGISTRY: dict[str, Callable[[], System]] = {
     "ignition::gazebo::systems::JointController": _gz_joint_velocity,
     "gazelle_joint_commands": _joint_commands,
     "gazebo_ros_p3d": _p3d,
+    "gazebo_ros_imu": _imu,  # ROS 1's IMU model plugin (<bodyName>), as in TurtleBot3's noetic xacro
 }
+
+_SENSOR_PLUGINS: dict[str, tuple[Callable[[], System], frozenset[str]]] = {
+    "gazebo_ros_ray_sensor": (_lidar, frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"})),
+    "gazebo_ros_laser": (_lidar, frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"})),
+    "gazebo_ros_gpu_laser": (_lidar, frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"})),
+    "gazebo_ros_imu_sensor": (_imu, frozenset({"imu"})),
+}
+"""gazebo_ros plugins that sit inside a ``<sensor>``: the system and the sensor types they take."""
+
+GZ_SENSOR_WORLD_SYSTEMS: dict[str, tuple[Callable[[], System], frozenset[str]]] = {
+    **{
+        n: (_lidar, frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"}))
+        for n in ("gz-sim-sensors-system", "gz::sim::systems::Sensors", "ignition-gazebo-sensors-system")
+    },
+    **{
+        n: (_imu, frozenset({"imu"}))
+        for n in ("gz-sim-imu-system", "gz::sim::systems::Imu", "ignition-gazebo-imu-system")
+    },
+}
+"""gz-sim world systems that run the sensors of a type that have no gazebo_ros plugin."""
+
+
+@dataclass(frozen=True)
+class SensorPlan:
+    """One sensor that will run: its link, the ``<sensor>``, the gazebo_ros plugin (None: gz-sim) and its system."""
+
+    link: str
+    sensor: Sensor
+    plugin: Plugin | None
+    make: Callable[[], System]
+
+
+def plan_sensors(
+    model: Model, world_plugins: tuple[Plugin, ...] | None = None
+) -> tuple[list[SensorPlan], list[Diagnostic]]:
+    """Which sensors of ``model`` run, and a warning naming each one that does not and why.
+
+    A sensor runs through a gazebo_ros plugin inside it, or, without one and in a model that uses no
+    gazebo_ros plugin (a gz-sim model), through the gz-sim world system for its type among
+    ``world_plugins`` (None: not known, e.g. ``gazelle check`` of a model file; then no warning is
+    given for that case).
+    """
+    gz_types: dict[str, Callable[[], System]] = {}
+    for wp in world_plugins or ():
+        for key in (_normalise(wp.filename), _normalise(wp.name)):
+            if key in GZ_SENSOR_WORLD_SYSTEMS:
+                make, types = GZ_SENSOR_WORLD_SYSTEMS[key]
+                gz_types.update(dict.fromkeys(types, make))
+    plans: list[SensorPlan] = []
+    out: list[Diagnostic] = []
+    # a model with gazebo_ros plugins is a Gazebo Classic model: its sensors publish through their own
+    # plugins only (gz-sim's world systems would add a second, gz-named topic Classic never had)
+    classic = any(
+        _normalise(p.filename).startswith("gazebo_ros")
+        for p in (*model.plugins, *(q for lk in model.links for sn in lk.sensors for q in sn.plugins))
+    )
+
+    def warn(text: str, where: Any) -> None:
+        out.append(Diagnostic(ErrorCode.ELEMENT_UNSUPPORTED, Severity.WARNING, text, where))
+
+    for link in model.links:
+        for sensor in link.sensors:
+            label = f"sensor '{sensor.name}' ({sensor.type}) on link '{link.name}'"
+            ran = False
+            for plugin in sensor.plugins:
+                key = (
+                    _normalise(plugin.filename)
+                    if _normalise(plugin.filename) in _SENSOR_PLUGINS
+                    else _normalise(plugin.name)
+                )
+                entry = _SENSOR_PLUGINS.get(key)
+                if entry is None:
+                    problem = plugin_problem(plugin)
+                    warn(
+                        f"{label}: {problem or f'plugin {plugin.filename} does not publish a sensor'}", plugin.location
+                    )
+                    continue
+                make, types = entry
+                if sensor.type not in types:
+                    warn(
+                        f"{label}: plugin '{plugin.filename}' does not publish a {sensor.type} sensor; it is ignored",
+                        plugin.location,
+                    )
+                    continue
+                plans.append(SensorPlan(link.name, sensor, plugin, make))
+                ran = True
+            if ran:
+                continue
+            if sensor.plugins:
+                continue  # each plugin was warned about above
+            make_gz = gz_types.get(sensor.type)
+            if classic:
+                warn(
+                    f"{label} publishes nothing: it has no gazebo_ros plugin (as in Gazebo Classic, whose plugins "
+                    "this model uses)",
+                    sensor.location,
+                )
+            elif make_gz is not None:
+                plans.append(SensorPlan(link.name, sensor, None, make_gz))
+            elif sensor.type in {t for _, ts in GZ_SENSOR_WORLD_SYSTEMS.values() for t in ts}:
+                if world_plugins is not None:
+                    system = next(
+                        n
+                        for n, (_, ts) in GZ_SENSOR_WORLD_SYSTEMS.items()
+                        if sensor.type in ts and n.startswith("gz-sim")
+                    )
+                    warn(
+                        f"{label} publishes nothing: it has no gazebo_ros plugin and the world has no '{system}'",
+                        sensor.location,
+                    )
+            else:
+                warn(f"{label} is not simulated yet", sensor.location)
+    return plans, out
 
 
 def supported_plugins() -> list[str]:
@@ -108,21 +236,13 @@ _NOT_YET: dict[str, str] = {
     **{
         n: "sensors are not simulated yet"
         for n in (
-            "gazebo_ros_ray_sensor",
-            "gazebo_ros_laser",
             "gazebo_ros_camera",
             "gazebo_ros_depth_camera",
-            "gazebo_ros_imu_sensor",
-            "gazebo_ros_imu",
             "gazebo_ros_bumper",
             "gazebo_ros_gps_sensor",
             "gazebo_ros_ft_sensor",
             "gazebo_ros_openni_kinect",
             "gazebo_ros_range",
-            "gz-sim-sensors-system",
-            "gz::sim::systems::Sensors",
-            "gz-sim-imu-system",
-            "gz::sim::systems::Imu",
             "gz-sim-contact-system",
             "gz::sim::systems::Contact",
             "gz-sim-navsat-system",
@@ -131,8 +251,6 @@ _NOT_YET: dict[str, str] = {
             "gz::sim::systems::ForceTorque",
             "gz-sim-altimeter-system",
             "gz-sim-magnetometer-system",
-            "ignition-gazebo-sensors-system",
-            "ignition-gazebo-imu-system",
         )
     },
     **{
@@ -171,7 +289,7 @@ classic services)."""
 
 
 def _known_names() -> list[str]:
-    return sorted({*_REGISTRY, *_NOT_YET, *BUILT_IN_WORLD_SYSTEMS})
+    return sorted({*_REGISTRY, *_SENSOR_PLUGINS, *GZ_SENSOR_WORLD_SYSTEMS, *_NOT_YET, *BUILT_IN_WORLD_SYSTEMS})
 
 
 def _did_you_mean(plugin: Plugin) -> str:
@@ -198,31 +316,25 @@ def plugin_problem(plugin: Plugin, *, world: bool = False) -> str | None:
     if key_f in BUILT_IN_WORLD_SYSTEMS or key_n in BUILT_IN_WORLD_SYSTEMS:
         return None
     label = f"{'world ' if world else ''}plugin '{plugin.name}' ({plugin.filename})"
+    if world and {key_f, key_n} & set(GZ_SENSOR_WORLD_SYSTEMS):
+        return None
+    if {key_f, key_n} & set(_SENSOR_PLUGINS):
+        return f"{label} is ignored: a sensor plugin works only inside the <sensor> it publishes"
     why = _NOT_YET.get(key_f) or _NOT_YET.get(key_n)
     if why is not None:
         return f"{label} is ignored: {why}"
     return f"{label} is not supported; it is ignored{_did_you_mean(plugin)}"
 
 
-def audit_model(model: Model) -> list[Diagnostic]:
-    """What of ``model`` will not be simulated: unsupported plugins (with a "did you mean") and sensors."""
+def audit_model(model: Model, world_plugins: tuple[Plugin, ...] | None = None) -> list[Diagnostic]:
+    """What of ``model`` will not be simulated: unsupported plugins (with a "did you mean") and sensors
+    (see :func:`plan_sensors`; ``world_plugins`` are those of the world it goes into, if known)."""
     out: list[Diagnostic] = []
     for plugin in model.plugins:
         problem = plugin_problem(plugin)
         if problem is not None:
             out.append(Diagnostic(ErrorCode.PLUGIN_UNSUPPORTED, Severity.WARNING, problem, plugin.location))
-    for link in model.links:
-        for sensor in link.sensors:
-            names = ", ".join(f"'{p.filename}'" for p in sensor.plugins)
-            extra = f"; its plugin {names} is ignored" if names else ""
-            out.append(
-                Diagnostic(
-                    ErrorCode.ELEMENT_UNSUPPORTED,
-                    Severity.WARNING,
-                    f"sensor '{sensor.name}' ({sensor.type}) on link '{link.name}' is not simulated yet{extra}",
-                    sensor.location,
-                )
-            )
+    out.extend(plan_sensors(model, world_plugins)[1])
     return out
 
 
@@ -234,5 +346,5 @@ def audit_world(world: World) -> list[Diagnostic]:
         if (problem := plugin_problem(p, world=True)) is not None
     ]
     for model in world.models:
-        out.extend(audit_model(model))
+        out.extend(audit_model(model, world.plugins))
     return out

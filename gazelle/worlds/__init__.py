@@ -2,11 +2,33 @@
 
 from __future__ import annotations
 
-from ..description import Collision, Light, Link, Material, Model, Plane, Pose, Surface, Visual, World
+from ..description import (
+    Collision,
+    ConfigElement,
+    Light,
+    Link,
+    Material,
+    Model,
+    Plane,
+    Plugin,
+    Pose,
+    Surface,
+    Visual,
+    World,
+)
+
+DEFAULT_WORLD_SYSTEMS = (
+    Plugin("gz::sim::systems::Sensors", "gz-sim-sensors-system", ConfigElement("plugin")),
+    Plugin("gz::sim::systems::Imu", "gz-sim-imu-system", ConfigElement("plugin")),
+)
+"""gz-sim's sensor systems, on in the embedded default world: a sensor with no gazebo_ros plugin
+(a gz-sim model such as TurtleBot3's model.sdf) publishes as it would in TurtleBot3's own gz world.
+A user's world file gets exactly the systems it lists, as in gz-sim."""
 
 
 def default_world() -> World:
-    """The embedded default world: a ground plane, a sun and Earth gravity (as Gazebo's empty world)."""
+    """The embedded default world: a ground plane, a sun and Earth gravity (as Gazebo's empty world),
+    and gz-sim's sensor systems (:data:`DEFAULT_WORLD_SYSTEMS`)."""
     plane = Plane(normal=(0.0, 0.0, 1.0), size=(100.0, 100.0))
     ground = Model(
         name="ground_plane",
@@ -30,5 +52,10 @@ def default_world() -> World:
         cast_shadows=True,
     )
     return World(
-        name="default", gravity=(0.0, 0.0, -9.8), models=(ground,), lights=(sun,), source_file="<builtin:default>"
+        name="default",
+        gravity=(0.0, 0.0, -9.8),
+        models=(ground,),
+        lights=(sun,),
+        plugins=DEFAULT_WORLD_SYSTEMS,
+        source_file="<builtin:default>",
     )

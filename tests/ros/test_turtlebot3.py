@@ -67,8 +67,8 @@ class Observer:
                 self.edges.add((t.header.frame_id, t.child_frame_id))
 
 
-def spawn_file(path: Path, name: str) -> None:
-    spawn = start([*GAZELLE, "spawn", "-entity", name, "-file", str(path), "-timeout", "30"], "gazelle spawn")
+def spawn_file(path: Path, name: str, *extra: str) -> None:
+    spawn = start([*GAZELLE, "spawn", "-entity", name, "-file", str(path), "-timeout", "30", *extra], "gazelle spawn")
     rc = spawn.wait(90)
     assert rc == 0, spawn.output
     assert f"Successfully spawned entity [{name}]" in spawn.output
@@ -190,3 +190,46 @@ def test_turtlebot3_world_burger_stands_and_drives_half_a_metre(resources, sim_f
     assert _tilt_deg(end.orientation) < 2.0
     assert abs(end.position.y - start_pose.position.y) < 0.05  # straight ahead (+x), not into a wall
     assert "is not convex: it collides as" in sim.output
+
+
+SENSOR_LISTENER = Path(__file__).with_name("sensor_listener.py")
+SENSOR_CASES = {
+    "classic_ros2_sdf": TB3 / "turtlebot3_gazebo/models/turtlebot3_burger/model-1_4.sdf",
+    "gz_model_sdf": TB3 / "turtlebot3_gazebo/models/turtlebot3_burger/model.sdf",
+}
+
+
+@pytest.mark.parametrize("case", list(SENSOR_CASES))
+def test_turtlebot3_scan_and_imu_reach_a_plain_rclpy_process_with_sim_time_stamps(
+    case, resources, sim_factory, ros_client
+):
+    """/scan (360 ranges at 5 Hz in base_scan) and /imu, as TurtleBot3's own files say, received by a
+    separate process that never imports gazelle, stamped with sim time."""
+    import json
+    import sys
+
+    sim_factory()
+    obs = Observer(ros_client.node)
+    spawn_file(SENSOR_CASES[case], "tb3", "-z", "0.01")  # turtlebot3_gazebo's launch files spawn at z 0.01
+    wait_for(lambda: abs(ros_client.entity_state("tb3").state.twist.angular.y) < 1e-3, 15, "the robot at rest")
+    listener = start([sys.executable, str(SENSOR_LISTENER), "4", "/scan:LaserScan", "/imu:Imu"], "sensor_listener")
+    assert "gazelle" not in SENSOR_LISTENER.read_text().replace("never imports gazelle", "")
+    assert listener.popen.wait(60) == 0, listener.output
+    msgs = [json.loads(ln) for ln in listener.lines if ln.startswith("{") and '"topic"' in ln]
+    scans = [m for m in msgs if m["topic"] == "/scan"]
+    imus = [m for m in msgs if m["topic"] == "/imu"]
+    assert len(scans) == 4 and len(imus) == 4, listener.output
+    for s in scans:
+        assert (s["n"], s["frame"]) == (360, "base_scan")
+        assert s["angle_min"] == 0.0 and s["angle_increment"] == pytest.approx(6.28 / 359, rel=1e-6)
+        assert s["finite"] == 0, (s["min"], s["finite"], s["stamp"])  # an empty world: nothing within 3.5 m
+    stamps = [s["stamp"] for s in scans]
+    assert all(0 < t < 1e5 for t in stamps), stamps  # sim time, not wall time (~1.8e9)
+    gaps = [b - a for a, b in zip(stamps, stamps[1:])]
+    assert all(g == pytest.approx(0.2, abs=1e-6) for g in gaps), gaps  # 5 Hz of sim time
+    for m in imus:
+        assert m["frame"] == ("imu_link" if case == "classic_ros2_sdf" else "tb3::imu_link::tb3_imu")
+        assert m["accel"][2] == pytest.approx(9.8, abs=0.1)  # +g at rest, noise 0.017 as the file says
+        assert 0 < m["stamp"] < 1e5
+    # the scan's frame is on TF, where robot_state_publisher puts the lidar
+    wait_for(lambda: "base_scan" in obs.frames, 10, "base_scan on /tf_static")

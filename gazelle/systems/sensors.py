@@ -1,0 +1,589 @@
+"""Sensors: lidars and rays, and IMUs, published as gazebo_ros's plugins and gz-sim's sensors publish them.
+
+Each sensor is a :class:`System` made for one ``<sensor>`` of a link (or, for ROS 1's
+``libgazebo_ros_imu.so``, for a model plugin naming a ``<bodyName>``):
+
+* **gazebo_ros** (Gazebo Classic): a ``<plugin>`` inside the ``<sensor>`` publishes it on ``~/out``,
+  which is ``/<ns>/<plugin name>/out`` unless ``<ros><remapping>~/out:=scan</remapping>`` renames it,
+  in ``<frame_name>`` (else the sensor's link). ``libgazebo_ros_ray_sensor.so`` takes ``<output_type>``
+  (``sensor_msgs/PointCloud2`` by default, ``LaserScan`` or ``Range``), ``<radiation_type>`` and
+  ``<min_intensity>``; ``libgazebo_ros_imu_sensor.so`` takes ``<initial_orientation_as_reference>``.
+  ROS 1's names (``libgazebo_ros_laser.so`` with ``<topicName>``/``<frameName>``, the
+  ``libgazebo_ros_imu.so`` model plugin) are read too.
+* **gz-sim**: with the world's ``gz-sim-sensors-system`` (lidars) or ``gz-sim-imu-system`` (IMUs), a
+  sensor publishes on its ``<topic>`` (relative names under the entity's namespace), else on
+  ``/world/<w>/model/<m>/link/<l>/sensor/<s>/scan|imu``, in ``<frame_id>``/``<gz_frame_id>``, else the
+  scoped ``<model>::<link>::<sensor>``; the ROS topic has the gz topic's name, as ros_gz_bridge maps it.
+
+Measurements are taken at the sim time they are stamped with, at the sensor's ``<update_rate>`` (0:
+every step) through the runtime's rate gate, and only while someone listens. Rays are cast in one
+``mj_multiRay`` call against collision geoms, excluding the sensor's own link; readings beyond the
+maximum range are +inf and nearer than the minimum -inf (REP 117). The IMU reads its link's proper
+acceleration (+g upwards at rest) and angular velocity in its own frame. Gaussian noise (``mean``,
+``stddev``; ``bias_mean``/``bias_stddev`` drawn once, with a random sign, as gz-sensors does) is
+applied as configured; any other noise type is warned about with its file:line and left out.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..description import ConfigElement, Pose, Sensor, quat_conj, quat_mul
+from ..physics import BodyHandle, PhysicsWorld
+from ._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
+from ._bus import Endpoint, Imu, LaserScan, MsgType, PointCloud, Range, resolve_topic
+
+LIDAR_TYPES = frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"})
+"""``<sensor type>`` values cast as rays (Gazebo's ``gpu_*`` variants see visuals; here all see collisions)."""
+IMU_TYPES = frozenset({"imu"})
+
+SENSOR_DEPTH = 5
+"""Publisher history of every sensor topic: SensorDataQoS's depth 5, made reliable as gazebo_ros does."""
+
+
+# --------------------------------------------------------------------------- noise
+@dataclass(frozen=True)
+class Noise:
+    """``<noise>``: Gaussian with ``mean`` and ``stddev``, plus a bias drawn once from
+    N(``bias_mean``, ``bias_stddev``). ``type`` none means exact readings."""
+
+    type: str = "none"
+    mean: float = 0.0
+    stddev: float = 0.0
+    bias_mean: float = 0.0
+    bias_stddev: float = 0.0
+
+    @property
+    def active(self) -> bool:
+        """Whether readings are changed at all."""
+        return self.type != "none" and (self.mean, self.stddev, self.bias_mean, self.bias_stddev) != (0, 0, 0, 0)
+
+    def bias(self, rng: np.random.Generator) -> float:
+        """The constant bias of one sensor channel: |N(bias_mean, bias_stddev)| with a random sign."""
+        if not self.active or (self.bias_mean == 0 and self.bias_stddev == 0):
+            return 0.0
+        b = rng.normal(self.bias_mean, self.bias_stddev) if self.bias_stddev > 0 else self.bias_mean
+        return float(b if rng.random() < 0.5 else -b)
+
+
+SIMULATED_NOISE = frozenset({"none", "gaussian"})
+
+
+def parse_noise(el: ConfigElement | None, log: logging.Logger, what: str) -> Noise:
+    """A ``<noise>`` element, its type as an attribute (IMU channels) or a ``<type>`` child (rays)."""
+    if el is None:
+        return Noise()
+    kind = (el.attr("type") or child_text(el, "type") or "none").strip().lower()
+    where = f"{el.location}: " if el.location else ""
+    if kind == "gaussian_quantized":
+        log.warning(f"{where}{what}: noise type 'gaussian_quantized' is simulated as 'gaussian' (no quantization)")
+        kind = "gaussian"
+    elif kind not in SIMULATED_NOISE:
+        log.warning(f"{where}{what}: noise type '{kind}' is not simulated; readings are exact")
+        return Noise()
+    for tag in ("dynamic_bias_stddev", "dynamic_bias_correlation_time", "precision"):
+        if el.find(tag) is not None:
+            log.warning(f"{where}{what}: <{tag}> is not simulated")
+    return Noise(
+        kind,
+        parse_float(el, "mean", 0.0, log),
+        parse_float(el, "stddev", 0.0, log),
+        parse_float(el, "bias_mean", 0.0, log),
+        parse_float(el, "bias_stddev", 0.0, log),
+    )
+
+
+# --------------------------------------------------------------------------- lidar geometry
+@dataclass(frozen=True)
+class ScanAxis:
+    """One axis of ``<scan>``: ``samples`` x ``resolution`` rays from ``min_angle`` to ``max_angle``."""
+
+    samples: int = 1
+    resolution: float = 1.0
+    min_angle: float = 0.0
+    max_angle: float = 0.0
+
+    @property
+    def count(self) -> int:
+        """Readings on this axis (SDF: ``resolution`` multiplies ``samples``)."""
+        return max(1, round(self.samples * self.resolution))
+
+    def angles(self) -> np.ndarray:
+        """The ray angles, both ends included."""
+        if self.count == 1:
+            return np.array([self.min_angle])
+        return np.linspace(self.min_angle, self.max_angle, self.count)
+
+    @property
+    def increment(self) -> float:
+        """The angle between neighbouring rays (0 for a single ray)."""
+        return (self.max_angle - self.min_angle) / (self.count - 1) if self.count > 1 else 0.0
+
+
+@dataclass(frozen=True)
+class LidarSpec:
+    """A lidar's ``<ray>``/``<lidar>`` block."""
+
+    horizontal: ScanAxis = ScanAxis(640, 1.0, 0.0, 0.0)
+    vertical: ScanAxis = ScanAxis()
+    range_min: float = 0.0
+    range_max: float = 10.0
+    noise: Noise = Noise()
+
+    def directions(self) -> np.ndarray:
+        """Unit ray directions in the sensor frame, vertical-major (row v, column h): x forward, z up."""
+        h = self.horizontal.angles()
+        v = self.vertical.angles()
+        cv, sv = np.cos(v)[:, None], np.sin(v)[:, None]
+        d = np.stack([cv * np.cos(h)[None, :], cv * np.sin(h)[None, :], np.broadcast_to(sv, (len(v), len(h)))], axis=-1)
+        return d.reshape(-1, 3)
+
+
+def _axis(el: ConfigElement | None, log: logging.Logger, default: ScanAxis) -> ScanAxis:
+    if el is None:
+        return default
+    return ScanAxis(
+        int(parse_float(el, "samples", default.samples, log)),
+        parse_float(el, "resolution", default.resolution, log),
+        parse_float(el, "min_angle", default.min_angle, log),
+        parse_float(el, "max_angle", default.max_angle, log),
+    )
+
+
+class SensorConfigError(ValueError):
+    """A sensor's configuration that cannot be simulated (the message names the file:line)."""
+
+
+def parse_lidar(sensor: Sensor, log: logging.Logger) -> LidarSpec:
+    """The ``<ray>`` (Classic) or ``<lidar>`` (gz) block of a lidar sensor.
+
+    Raises:
+        SensorConfigError: zero samples, a range that is not 0 <= min < max, or angles out of order.
+    """
+    cfg = sensor.config
+    block = None
+    if cfg is not None:
+        block = cfg.find("lidar") or cfg.find("ray")
+    where = f"{sensor.location}: " if sensor.location else ""
+    if block is None:
+        log.warning(f"{where}sensor '{sensor.name}' ({sensor.type}) has no <ray>/<lidar> block; using SDF's defaults")
+        return LidarSpec()
+    scan = block.find("scan")
+    h = _axis(scan.find("horizontal") if scan else None, log, LidarSpec.horizontal)
+    v = _axis(scan.find("vertical") if scan else None, log, ScanAxis())
+    rng = block.find("range")
+    rmin = parse_float(rng, "min", 0.0, log)
+    rmax = parse_float(rng, "max", 10.0, log)
+    if h.samples < 1 or v.samples < 1 or h.count < 1:
+        raise SensorConfigError(f"{where}sensor '{sensor.name}': <samples> must be at least 1")
+    if not (0.0 <= rmin < rmax) or not math.isfinite(rmax):
+        raise SensorConfigError(f"{where}sensor '{sensor.name}': <range> needs 0 <= min < max, got {rmin} .. {rmax}")
+    if h.max_angle < h.min_angle or v.max_angle < v.min_angle:
+        raise SensorConfigError(f"{where}sensor '{sensor.name}': <max_angle> is below <min_angle>")
+    return LidarSpec(h, v, rmin, rmax, parse_noise(block.find("noise"), log, f"sensor '{sensor.name}'"))
+
+
+# --------------------------------------------------------------------------- where a sensor publishes
+@dataclass(frozen=True)
+class Output:
+    """Where and how a sensor publishes: the ROS topic, the frame_id and (rays) the message type."""
+
+    topic: str
+    frame_id: str
+    msg_type: MsgType
+    radiation_type: int = 1
+    min_intensity: float = -math.inf
+
+
+_OUTPUT_TYPES = {
+    "sensor_msgs/laserscan": MsgType.LASER_SCAN,
+    "sensor_msgs/msg/laserscan": MsgType.LASER_SCAN,
+    "sensor_msgs/pointcloud2": MsgType.POINT_CLOUD2,
+    "sensor_msgs/msg/pointcloud2": MsgType.POINT_CLOUD2,
+    "sensor_msgs/range": MsgType.RANGE,
+    "sensor_msgs/msg/range": MsgType.RANGE,
+}
+
+
+def gz_scoped_topic(ctx: SystemContext, link: str, sensor: Sensor, suffix: str) -> str:
+    """gz-sim's topic for a sensor without ``<topic>``."""
+    return f"/world/{ctx.world_name}/model/{ctx.entity.name}/link/{link}/sensor/{sensor.name}/{suffix}"
+
+
+@dataclass(frozen=True)
+class SensorPluginConfig:
+    """Parameters of ``libgazebo_ros_ray_sensor.so`` and ``libgazebo_ros_imu_sensor.so`` (inside a
+    ``<sensor>``), and of ROS 1's ``libgazebo_ros_laser.so`` and ``libgazebo_ros_imu.so``. Without any
+    of them (a gz-sim model), the sensor's own ``<topic>`` and ``<frame_id>``/``<gz_frame_id>`` apply."""
+
+    output_type: str = ""
+    """Ray sensors: ``sensor_msgs/PointCloud2`` (the default; ROS 1's laser plugin: LaserScan),
+    ``sensor_msgs/LaserScan`` or ``sensor_msgs/Range``."""
+    frame_name: str = ""
+    """``<frame_name>`` (ROS 1: ``<frameName>``): the header's frame_id; default the sensor's link."""
+    radiation_type: str = "infrared"
+    """Range output: ``infrared`` or ``ultrasound``."""
+    min_intensity: float = -math.inf
+    """Intensities below it are raised to it (gazelle's rays have intensity 0: no laser_retro yet)."""
+    initial_orientation_as_reference: bool = False
+    """IMU: report orientation relative to the first reading instead of the world."""
+    topic: str = "~/out"
+    """``~/out`` in ROS 2 (rename it with ``<ros><remapping>~/out:=scan``); ROS 1: ``<topicName>``."""
+    body_name: str = ""
+    """ROS 1's IMU model plugin: ``<bodyName>``, the link it measures."""
+    update_rate: float = 0.0
+    """ROS 1's IMU model plugin: ``<updateRate>``, Hz of sim time (0: every step). Sensors use ``<update_rate>``."""
+    gaussian_noise: float = 0.0
+    """ROS 1's IMU model plugin: ``<gaussianNoise>``, standard deviation of every channel."""
+    namespace: str = ""
+    """``<ros><namespace>`` (ROS 1: ``<robotNamespace>``); default the entity's namespace."""
+    remappings: tuple[tuple[str, str], ...] = ()
+    """``<ros><remapping>from:=to``."""
+
+
+def parse_plugin_config(ctx: SystemContext) -> SensorPluginConfig:
+    """The plugin's parameters (ROS 2 and ROS 1 names); defaults without a plugin."""
+    cfg = ctx.plugin.config if ctx.plugin is not None else None
+    if cfg is None:
+        return SensorPluginConfig(namespace=ctx.entity.namespace)
+    log = ctx.logger
+    ns, remaps = ros_block(cfg)
+    raw_type = child_text(cfg, "output_type")
+    if raw_type is None and "laser" in ctx.plugin.filename.lower():  # type: ignore[union-attr]
+        raw_type = "sensor_msgs/LaserScan"  # ROS 1's gazebo_ros_laser publishes LaserScan
+    return SensorPluginConfig(
+        output_type=raw_type or "sensor_msgs/PointCloud2",
+        frame_name=child_text(cfg, "frame_name") or child_text(cfg, "frameName") or "",
+        radiation_type=(child_text(cfg, "radiation_type") or "infrared").strip().lower(),
+        min_intensity=parse_float(cfg, "min_intensity", -math.inf, log),
+        initial_orientation_as_reference=parse_bool(cfg, "initial_orientation_as_reference", False, log),
+        topic=child_text(cfg, "topicName") or "~/out",
+        body_name=child_text(cfg, "bodyName") or child_text(cfg, "body_name") or "",
+        update_rate=parse_float(cfg, "updateRate", 0.0, log),
+        gaussian_noise=parse_float(cfg, "gaussianNoise", 0.0, log),
+        namespace=ns or child_text(cfg, "robotNamespace") or ctx.entity.namespace,
+        remappings=tuple(remaps.items()),
+    )
+
+
+def sensor_output(ctx: SystemContext, link: str, sensor: Sensor | None, kind: str, c: SensorPluginConfig) -> Output:
+    """Resolve the topic, frame and message type of a sensor (``kind``: ``scan`` or ``imu``), from its
+    gazebo_ros plugin's parameters ``c`` or, without a plugin, as gz-sim names it."""
+    from .robot_state import entity_frame_prefix
+
+    log = ctx.logger
+    prefix = entity_frame_prefix(ctx.entity, log)
+    default_type = MsgType.IMU if kind == "imu" else MsgType.LASER_SCAN
+    if ctx.plugin is None:  # gz-sim: <topic> and <frame_id>
+        assert sensor is not None
+        cfg = sensor.config
+        topic = sensor.topic or gz_scoped_topic(ctx, link, sensor, kind)
+        frame = child_text(cfg, "frame_id") or child_text(cfg, "gz_frame_id")
+        frame = prefix + frame if frame else f"{ctx.entity.name}::{link}::{sensor.name}"
+        return Output(resolve_topic(topic, ctx.entity.namespace), frame, default_type)
+    topic = resolve_topic(c.topic, c.namespace, dict(c.remappings), node=ctx.plugin.name)
+    msg_type = default_type
+    if kind == "scan":
+        found = _OUTPUT_TYPES.get(c.output_type.strip().lower())
+        if found is None:
+            el = ctx.plugin.config.find("output_type")
+            where = f"{el.location}: " if el is not None and el.location else ""
+            log.warning(
+                f"{where}<output_type> '{c.output_type}' is not one gazelle publishes (LaserScan, PointCloud2, "
+                "Range); publishing sensor_msgs/PointCloud2"
+            )
+            found = MsgType.POINT_CLOUD2
+        msg_type = found
+    return Output(
+        topic,
+        prefix + (c.frame_name or link),
+        msg_type,
+        radiation_type=0 if c.radiation_type == "ultrasound" else 1,
+        min_intensity=c.min_intensity,
+    )
+
+
+# --------------------------------------------------------------------------- systems
+class _SensorSystem(System):
+    """What the lidar and the IMU share: the link, the pose on it, the rate gate and the publisher."""
+
+    kind = ""
+
+    def __init__(self, seed: int | None = None) -> None:
+        self.sensor: Sensor | None = None
+        self.link = ""
+        self.offset = Pose()
+        """X_LS: the sensor in its link's frame."""
+        self.rate_hz = 0.0
+        self.output: Output | None = None
+        self.config = SensorPluginConfig()
+        self._pub: Endpoint | None = None
+        self._body: BodyHandle | None = None
+        self._gate = RateGate()
+        self._rng = np.random.default_rng(seed)
+
+    def _configure_common(self, ctx: SystemContext) -> bool:
+        """Read link, pose, rate and output; False (after an error naming why) when it cannot run."""
+        log = ctx.logger
+        self.sensor, link = ctx.sensor, ctx.link
+        self.config = c = parse_plugin_config(ctx)
+        if self.sensor is None:
+            if not c.body_name:
+                where = f"{ctx.plugin.location}: " if ctx.plugin and ctx.plugin.location else ""
+                log.error(
+                    f"{where}a {self.kind} plugin must be inside a <sensor> or name a <bodyName>; it does nothing"
+                )
+                return False
+            link = c.body_name
+            self.rate_hz = c.update_rate
+        else:
+            self.offset = self.sensor.pose
+            self.rate_hz = self.sensor.update_rate_hz
+        if link not in {lk.name for lk in ctx.entity.model.links}:
+            log.error(f"{self.kind} sensor: link '{link}' does not exist in '{ctx.entity.name}'; it does nothing")
+            return False
+        self.link = link or ""
+        self.output = sensor_output(ctx, self.link, self.sensor, "imu" if self.kind == "IMU" else "scan", c)
+        self._body = ctx.world.body(ctx.entity.name, self.link)
+        self._pub = ctx.bus.advertise(ctx.entity.name, self.output.topic, self.output.msg_type, depth=SENSOR_DEPTH)
+        return True
+
+    def next_update(self, sim_time_sec: float) -> float:
+        """The next scan time (never, when the sensor could not be configured)."""
+        return self._gate.next if self._pub is not None else math.inf
+
+    def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """Measure again at the next step after a world reset."""
+        self._gate.reset()
+
+    def _due(self, info: UpdateInfo) -> bool:
+        if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.rate_hz):
+            return False
+        return self._pub.wanted
+
+    def sensor_pose(self) -> Pose:
+        """X_WS: the sensor's world pose now."""
+        assert self._body is not None
+        return self._body.pose * self.offset
+
+
+class Lidar(_SensorSystem):
+    """A ray / lidar sensor: LaserScan, PointCloud2 or Range (see the module docstring)."""
+
+    kind = "lidar"
+
+    def __init__(self, seed: int | None = None) -> None:
+        super().__init__(seed)
+        self.spec = LidarSpec()
+        self._dirs = np.zeros((0, 3))
+
+    def configure(self, ctx: SystemContext) -> None:
+        """Parse the sensor's ``<ray>``/``<lidar>`` block and the plugin; declare the output topic."""
+        if ctx.sensor is None:
+            where = f"{ctx.plugin.location}: " if ctx.plugin and ctx.plugin.location else ""
+            ctx.logger.error(f"{where}a ray sensor plugin must be inside a <sensor type='ray'>; it does nothing")
+            return
+        try:
+            self.spec = parse_lidar(ctx.sensor, ctx.logger)
+        except SensorConfigError as err:
+            ctx.logger.error(f"{err}; the sensor does nothing")
+            return
+        if not self._configure_common(ctx):
+            return
+        self._dirs = self.spec.directions()
+        assert self.output is not None
+        s = self.spec
+        ctx.logger.info(
+            f"{ctx.sensor.type} '{ctx.sensor.name}': {s.vertical.count}x{s.horizontal.count} rays, "
+            f"{s.range_min:g}..{s.range_max:g} m at {self.rate_hz:g} Hz on [{self.output.topic}] "
+            f"({self.output.msg_type.value.rsplit('/', 1)[-1]}) in frame [{self.output.frame_id}]"
+        )
+
+    def scan(self, world: PhysicsWorld) -> np.ndarray:
+        """Ranges (vertical-major, v rows x h columns) with noise and REP 117's ±inf."""
+        assert self._body is not None
+        X_WS = self.sensor_pose()
+        R = _matrix(X_WS.orientation)
+        dist, _ = self._body.cast_rays(np.asarray(X_WS.position), self._dirs @ R.T, self.spec.range_max)
+        s = self.spec
+        hit = dist >= 0
+        ranges = np.where(hit, dist, np.inf)
+        if s.noise.active:
+            n = int(hit.sum())
+            ranges[hit] += s.noise.mean + (self._rng.normal(0.0, s.noise.stddev, n) if s.noise.stddev > 0 else 0.0)
+        ranges[hit & (ranges < s.range_min)] = -np.inf
+        ranges[hit & (ranges > s.range_max)] = np.inf
+        return ranges.reshape(s.vertical.count, s.horizontal.count)
+
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """At the sensor's rate, while listened to: scan and publish stamped with this sim time."""
+        if not self._due(info):
+            return
+        assert self._pub is not None and self.output is not None
+        ranges = self.scan(world)
+        s, out, t = self.spec, self.output, info.sim_time_sec
+        intensity = max(0.0, out.min_intensity)
+        if out.msg_type is MsgType.LASER_SCAN:
+            row = ranges[s.vertical.count // 2].astype(np.float32)
+            self._pub.publish(
+                LaserScan(
+                    t,
+                    out.frame_id,
+                    s.horizontal.min_angle,
+                    s.horizontal.max_angle,
+                    s.horizontal.increment,
+                    s.range_min,
+                    s.range_max,
+                    row.tobytes(),
+                    np.full(len(row), intensity, np.float32).tobytes(),
+                    scan_time=1.0 / self.rate_hz if self.rate_hz > 0 else 0.0,
+                )
+            )
+        elif out.msg_type is MsgType.RANGE:
+            valid = ranges[np.isfinite(ranges)]
+            r = float(valid.min()) if valid.size else (-math.inf if np.any(ranges < 0) else math.inf)
+            fov = max(s.horizontal.max_angle - s.horizontal.min_angle, s.vertical.max_angle - s.vertical.min_angle)
+            self._pub.publish(Range(t, out.frame_id, out.radiation_type, fov, s.range_min, s.range_max, r))
+        else:
+            flat = ranges.reshape(-1)
+            ok = np.isfinite(flat)
+            pts = self._dirs[ok] * flat[ok, None]
+            cloud = np.empty((len(pts), 4), np.float32)
+            cloud[:, :3] = pts
+            cloud[:, 3] = intensity
+            self._pub.publish(PointCloud(t, out.frame_id, len(pts), 1, cloud.astype("<f4").tobytes()))
+
+
+@dataclass(frozen=True)
+class ImuNoise:
+    """Per-channel noise of an IMU: angular velocity x, y, z and linear acceleration x, y, z."""
+
+    rate: tuple[Noise, Noise, Noise] = (Noise(), Noise(), Noise())
+    accel: tuple[Noise, Noise, Noise] = (Noise(), Noise(), Noise())
+
+
+def _imu_axes(el: ConfigElement | None, log: logging.Logger, what: str) -> tuple[Noise, Noise, Noise]:
+    """``<x>``, ``<y>``, ``<z>`` each with a ``<noise type>`` (SDF 1.5+)."""
+    out = []
+    for ax in "xyz":
+        a = el.find(ax) if el is not None else None
+        out.append(parse_noise(a.find("noise") if a is not None else None, log, f"{what} {ax}"))
+    return out[0], out[1], out[2]
+
+
+def _imu_channel(old: ConfigElement, tag: str, log: logging.Logger) -> Noise:
+    """``<rate>`` or ``<accel>`` of SDF 1.4's ``<imu><noise>``; its ``<type>`` is the parent's."""
+    el = old.find(tag)
+    if el is None:
+        return Noise()
+    kind = child_text(old, "type") or "none"
+    return parse_noise(ConfigElement("noise", (("type", kind),), "", el.children, el.location), log, f"IMU {tag}")
+
+
+def parse_imu_noise(sensor: Sensor | None, plugin_cfg: ConfigElement | None, log: logging.Logger) -> ImuNoise:
+    """SDF 1.5+ per-axis ``<imu><angular_velocity><x><noise>``, or the older ``<imu><noise><rate>/<accel>``
+    (SDF 1.4 and ROS 1's gazebo_ros_imu plugin), or ROS 1's ``<gaussianNoise>``."""
+    blocks: list[ConfigElement] = []
+    for holder in (sensor.config if sensor is not None else None, plugin_cfg):
+        imu = holder.find("imu") if holder is not None else None
+        if imu is not None:
+            blocks.append(imu)
+    for imu in blocks:
+        av, la = imu.find("angular_velocity"), imu.find("linear_acceleration")
+        if av is not None or la is not None:
+            return ImuNoise(_imu_axes(av, log, "IMU angular velocity"), _imu_axes(la, log, "IMU linear acceleration"))
+        old = imu.find("noise")
+        if old is not None:
+            r, a = _imu_channel(old, "rate", log), _imu_channel(old, "accel", log)
+            return ImuNoise((r, r, r), (a, a, a))
+    g = parse_float(plugin_cfg, "gaussianNoise", 0.0, log) if plugin_cfg is not None else 0.0
+    if g > 0:  # ROS 1's model plugin
+        n = Noise("gaussian", 0.0, g)
+        return ImuNoise((n, n, n), (n, n, n))
+    return ImuNoise()
+
+
+class ImuSensor(_SensorSystem):
+    """An IMU: orientation, angular velocity and proper linear acceleration (sensor_msgs/Imu)."""
+
+    kind = "IMU"
+
+    def __init__(self, seed: int | None = None) -> None:
+        super().__init__(seed)
+        self.noise = ImuNoise()
+        self.orientation_reference = False
+        self._q0: tuple[float, float, float, float] | None = None
+        self._bias = np.zeros(6)
+
+    def configure(self, ctx: SystemContext) -> None:
+        """Parse the noise and the plugin; declare the output topic."""
+        if not self._configure_common(ctx):
+            return
+        cfg = ctx.plugin.config if ctx.plugin is not None else None
+        self.noise = parse_imu_noise(ctx.sensor, cfg, ctx.logger)
+        self.orientation_reference = self.config.initial_orientation_as_reference
+        self._bias = np.array([n.bias(self._rng) for n in (*self.noise.rate, *self.noise.accel)])
+        assert self.output is not None
+        ctx.logger.info(
+            f"IMU on [{self.link}] at {self.rate_hz:g} Hz on [{self.output.topic}] in frame [{self.output.frame_id}]"
+        )
+
+    def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """Measure again at the next step; a reference orientation is taken again."""
+        super().reset(info, world)
+        self._q0 = None
+
+    def read(self) -> tuple[tuple[float, float, float, float], np.ndarray, np.ndarray]:
+        """(orientation, angular velocity, linear acceleration) with noise, as published."""
+        assert self._body is not None
+        q, w, a = self._body.imu_reading(self.offset)
+        if self.orientation_reference:
+            if self._q0 is None:
+                self._q0 = q
+            q = quat_mul(quat_conj(self._q0), q)
+        values = np.concatenate([w, a]) + self._bias
+        for i, n in enumerate((*self.noise.rate, *self.noise.accel)):
+            if n.active:
+                values[i] += n.mean + (self._rng.normal(0.0, n.stddev) if n.stddev > 0 else 0.0)
+        return q, values[:3], values[3:]
+
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """At the sensor's rate, while listened to: read and publish stamped with this sim time."""
+        if not self._due(info):
+            return
+        assert self._pub is not None and self.output is not None
+        q, w, a = self.read()
+
+        def cov(ns: tuple[Noise, Noise, Noise]) -> tuple[float, ...]:
+            c = [0.0] * 9
+            for i, n in enumerate(ns):
+                c[4 * i] = n.stddev**2 if n.active else 0.0
+            return tuple(c)
+
+        self._pub.publish(
+            Imu(
+                info.sim_time_sec,
+                self.output.frame_id,
+                q,
+                (float(w[0]), float(w[1]), float(w[2])),
+                (float(a[0]), float(a[1]), float(a[2])),
+                angular_velocity_covariance=cov(self.noise.rate),
+                linear_acceleration_covariance=cov(self.noise.accel),
+            )
+        )
+
+
+def _matrix(q: tuple[float, float, float, float]) -> np.ndarray:
+    """Rotation matrix of a unit quaternion (w, x, y, z)."""
+    w, x, y, z = q
+    return np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+        ]
+    )

@@ -1,0 +1,328 @@
+"""Sensors against geometry and physics with known answers (issue 12): lidar ranges, angles and noise,
+the IMU at rest and spinning, and which sensors of real robots run and where they publish.
+
+Noise is off unless a test is about noise.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+
+import numpy as np
+import pytest
+from _paths import REAL
+
+from gazelle.description import Pose, load, load_string
+from gazelle.sim import Simulation
+from gazelle.systems import Imu, LaserScan, MsgType, PointCloud, Range, plan_sensors
+from gazelle.systems.sensors import ImuSensor, Lidar
+from gazelle.worlds import default_world
+
+TB3 = REAL / "turtlebot3"
+
+
+def _lidar_model(
+    *,
+    samples: int = 181,
+    min_angle: float = -math.pi / 2,
+    max_angle: float = math.pi / 2,
+    rmin: float = 0.1,
+    rmax: float = 10.0,
+    noise: str = "",
+    output: str = "sensor_msgs/LaserScan",
+    vertical: str = "",
+    z: float = 0.5,
+) -> str:
+    """A static post carrying a lidar at height ``z`` with a gazebo_ros ray sensor plugin (``~/out:=scan``)."""
+    return f"""<?xml version="1.0"?>
+<sdf version="1.9"><model name="scanner"><static>true</static>
+  <link name="base">
+    <collision name="post"><pose>0 0 {z / 2} 0 0 0</pose><geometry><box><size>0.05 0.05 {z}</size></box></geometry></collision>
+    <sensor name="laser" type="ray">
+      <pose>0 0 {z} 0 0 0</pose>
+      <update_rate>10</update_rate>
+      <ray>
+        <scan><horizontal><samples>{samples}</samples><resolution>1</resolution>
+          <min_angle>{min_angle!r}</min_angle><max_angle>{max_angle!r}</max_angle></horizontal>{vertical}</scan>
+        <range><min>{rmin}</min><max>{rmax}</max></range>
+        {noise}
+      </ray>
+      <plugin name="my_laser" filename="libgazebo_ros_ray_sensor.so">
+        <ros><remapping>~/out:=scan</remapping></ros>
+        <output_type>{output}</output_type>
+      </plugin>
+    </sensor>
+  </link>
+</model></sdf>"""
+
+
+def _wall(name: str, x: float, y: float, sx: float, sy: float) -> str:
+    return f"""<?xml version="1.0"?>
+<sdf version="1.9"><model name="{name}"><static>true</static><pose>{x} {y} 1 0 0 0</pose>
+  <link name="l"><collision name="c"><geometry><box><size>{sx} {sy} 2</size></box></geometry></collision></link>
+</model></sdf>"""
+
+
+def _spawn(sim: Simulation, xml: str, name: str, pose: Pose = Pose()):
+    result = load_string(xml)
+    assert not [d for d in result.diagnostics if d.severity.name == "ERROR"], [d.format() for d in result.diagnostics]
+    return sim.spawn(result.value, name=name, pose=pose)
+
+
+def _lidar(entity) -> Lidar:
+    return next(s for s in entity.systems if isinstance(s, Lidar))
+
+
+def _record(sim: Simulation, topic: str) -> list:
+    got: list = []
+    ep = next(e for e in sim.bus.endpoints() if e.topic == topic and e.is_publisher)
+    ep.add_sink(got.append)
+    return got
+
+
+def test_a_lidar_facing_a_wall_reads_the_geometry_to_1_mm_with_exact_first_and_last_angles():
+    sim = Simulation(default_world(), rtf=0)
+    d = 2.0  # the wall's near face is 2 m in front of the sensor
+    _spawn(sim, _wall("wall", d + 0.1, 0.0, 0.2, 20.0), "wall")
+    scanner = _spawn(sim, _lidar_model(), "scanner")
+    lidar = _lidar(scanner)
+    assert lidar.output is not None and lidar.output.topic == "/scan"  # ~/out:=scan
+    assert lidar.output.frame_id == "base"  # no <frame_name>: the sensor's link
+    scans = _record(sim, "/scan")
+    sim.step(150)  # 10 Hz: scans at t = 0, 0.1
+    assert len(scans) == 2
+    scan: LaserScan = scans[-1]
+    assert isinstance(scan, LaserScan)
+    assert scan.stamp_sec == pytest.approx(0.1, abs=1e-9)  # stamped with the sim time of the scan
+    assert (scan.angle_min, scan.angle_max) == (-math.pi / 2, math.pi / 2)
+    assert scan.angle_increment == pytest.approx(math.pi / 180, rel=1e-12)
+    ranges = np.frombuffer(scan.ranges, np.float32)
+    assert len(ranges) == 181
+    angles = scan.angle_min + scan.angle_increment * np.arange(181)
+    expect = d / np.cos(angles)
+    hits = np.abs(angles) < math.radians(75)  # the wall is 20 m long: it fills ±84° within 10 m
+    assert np.all(np.abs(ranges[hits] - expect[hits]) < 1e-3)
+    # the two end rays run parallel to the wall: nothing within range is +inf (REP 117)
+    assert math.isinf(ranges[0]) and ranges[0] > 0 and math.isinf(ranges[-1]) and ranges[-1] > 0
+
+
+def test_a_lidar_in_a_closed_square_room_matches_the_analytic_ranges():
+    sim = Simulation(default_world(), rtf=0)
+    a, t = 1.5, 0.2  # half the room's inner width; wall thickness
+    for name, x, y, sx, sy in (
+        ("north", 0, a + t / 2, 2 * a + 2 * t, t),
+        ("south", 0, -a - t / 2, 2 * a + 2 * t, t),
+        ("east", a + t / 2, 0, t, 2 * a),
+        ("west", -a - t / 2, 0, t, 2 * a),
+    ):
+        _spawn(sim, _wall(name, x, y, sx, sy), name)
+    scanner = _spawn(sim, _lidar_model(samples=360, min_angle=0.0, max_angle=2 * math.pi * 359 / 360), "scanner")
+    lidar = _lidar(scanner)
+    sim.step(1)
+    ranges = lidar.scan(sim.world)[0]
+    angles = np.arange(360) * 2 * math.pi / 360
+    expect = a / np.maximum(np.abs(np.cos(angles)), np.abs(np.sin(angles)))
+    assert np.max(np.abs(ranges - expect)) < 1e-3
+
+
+def test_gaussian_noise_has_the_configured_stddev_over_10000_samples():
+    sim = Simulation(default_world(), rtf=0)
+    _spawn(sim, _wall("wall", 2.1, 0.0, 0.2, 20.0), "wall")
+    noise = "<noise><type>gaussian</type><mean>0.0</mean><stddev>0.01</stddev></noise>"
+    lidar = _lidar(_spawn(sim, _lidar_model(samples=100, min_angle=-0.5, max_angle=0.5, noise=noise), "scanner"))
+    sim.step(1)
+    angles = np.linspace(-0.5, 0.5, 100)
+    errors = np.concatenate([lidar.scan(sim.world)[0] - 2.0 / np.cos(angles) for _ in range(100)])
+    assert errors.size == 10_000
+    assert abs(errors.std() - 0.01) < 0.001
+    assert abs(errors.mean()) < 0.001
+
+
+def test_rays_nearer_than_the_minimum_are_minus_inf_and_the_own_link_is_not_seen():
+    sim = Simulation(default_world(), rtf=0)
+    _spawn(sim, _wall("wall", 0.35, 0.0, 0.2, 20.0), "wall")  # near face at 0.25 m
+    lidar = _lidar(_spawn(sim, _lidar_model(samples=3, min_angle=-0.1, max_angle=0.1, rmin=0.3), "scanner"))
+    sim.step(1)
+    ranges = lidar.scan(sim.world)[0]
+    assert np.all(np.isneginf(ranges))  # REP 117: detected, but too close to quantify
+
+
+def test_pointcloud2_and_range_outputs():
+    sim = Simulation(default_world(), rtf=0)
+    _spawn(sim, _wall("wall", 2.1, 0.0, 0.2, 20.0), "wall")
+    vertical = "<vertical><samples>3</samples><min_angle>-0.1</min_angle><max_angle>0.1</max_angle></vertical>"
+    cloud_model = _lidar_model(
+        samples=11, min_angle=-0.2, max_angle=0.2, output="sensor_msgs/PointCloud2", vertical=vertical
+    )
+    _spawn(sim, cloud_model, "cloud")
+    range_model = _lidar_model(samples=5, min_angle=-0.2, max_angle=0.2, output="sensor_msgs/Range").replace(
+        "~/out:=scan", "~/out:=range"
+    )
+    _spawn(sim, range_model, "ranger", Pose((0.0, 5.0, 0.0)))
+    clouds, ranges = _record(sim, "/scan"), _record(sim, "/range")
+    sim.step(1)
+    cloud: PointCloud = clouds[-1]
+    assert (cloud.width, cloud.height) == (33, 1)
+    pts = np.frombuffer(cloud.data, "<f4").reshape(-1, 4)
+    assert np.allclose(pts[:, 0], 2.0, atol=1e-3)  # every point on the wall's face, in the sensor frame
+    rng: Range = ranges[-1]
+    assert rng.radiation_type == 1 and rng.field_of_view == pytest.approx(0.4)
+    # the ranger stands 5 m to the side, facing the same wall: its nearest ray is the straight one
+    assert rng.range == pytest.approx(2.0 / math.cos(0.0), abs=1e-3)
+
+
+def _imu_box(extra: str = "", offset: str = "0.3 0 0 0 0 0") -> str:
+    return f"""<?xml version="1.0"?>
+<sdf version="1.9"><model name="imu_box">
+  <link name="body">
+    <inertial><mass>1.0</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.02</izz></inertia></inertial>
+    <collision name="c"><geometry><box><size>0.4 0.4 0.1</size></box></geometry></collision>
+    <sensor name="imu" type="imu">
+      <pose>{offset}</pose>
+      <update_rate>100</update_rate>
+      {extra}
+      <plugin name="imu_plugin" filename="libgazebo_ros_imu_sensor.so">
+        <ros><namespace>/demo</namespace><remapping>~/out:=imu</remapping></ros>
+        <frame_name>imu_link</frame_name>
+      </plugin>
+    </sensor>
+  </link>
+</model></sdf>"""
+
+
+def test_an_imu_at_rest_reads_plus_g_and_no_rotation():
+    world = dataclasses.replace(default_world(), gravity=(0.0, 0.0, -9.81))
+    sim = Simulation(world, rtf=0)
+    entity = _spawn(sim, _imu_box(), "imu_box", Pose((0.0, 0.0, 0.05)))
+    imu = next(s for s in entity.systems if isinstance(s, ImuSensor))
+    assert imu.output is not None and (imu.output.topic, imu.output.frame_id) == ("/demo/imu", "imu_link")
+    got = _record(sim, "/demo/imu")
+    sim.step(1000)  # settle on the ground
+    msg: Imu = got[-1]
+    assert msg.stamp_sec == pytest.approx(1.0, abs=1e-9)  # after the 1000th step
+    assert np.allclose(msg.linear_acceleration, (0.0, 0.0, 9.81), atol=0.01)
+    assert np.allclose(msg.angular_velocity, (0.0, 0.0, 0.0), atol=1e-3)
+    assert np.allclose(msg.orientation, (1.0, 0.0, 0.0, 0.0), atol=1e-3)
+
+
+def test_an_imu_spinning_about_z_reads_omega_and_the_centripetal_acceleration():
+    world = dataclasses.replace(default_world(), gravity=(0.0, 0.0, 0.0))
+    sim = Simulation(world, rtf=0)
+    entity = _spawn(sim, _imu_box(), "imu_box", Pose((0.0, 0.0, 1.0)))
+    imu = next(s for s in entity.systems if isinstance(s, ImuSensor))
+    omega = 2.0
+    sim.world.set_entity_state("imu_box", Pose((0.0, 0.0, 1.0)), angular=(0.0, 0.0, omega))
+    sim.step(100)
+    _q, w, a = imu.read()
+    assert w[2] == pytest.approx(omega, rel=0.01)
+    assert abs(w[0]) < 1e-3 and abs(w[1]) < 1e-3
+    # 0.3 m from the axis: a centripetal omega^2 r towards the axis, i.e. along the sensor's -x
+    assert a[0] == pytest.approx(-(omega**2) * 0.3, rel=0.01)
+    assert abs(a[1]) < 0.01 and abs(a[2]) < 0.01
+
+
+def test_imu_noise_per_axis_as_configured():
+    noise = (
+        "<imu><angular_velocity>"
+        + "".join(f"<{ax}><noise type='gaussian'><mean>0</mean><stddev>0.02</stddev></noise></{ax}>" for ax in "xyz")
+        + "</angular_velocity></imu>"
+    )
+    world = dataclasses.replace(default_world(), gravity=(0.0, 0.0, -9.81))
+    sim = Simulation(world, rtf=0)
+    entity = _spawn(sim, _imu_box(noise), "imu_box", Pose((0.0, 0.0, 0.05)))
+    imu = next(s for s in entity.systems if isinstance(s, ImuSensor))
+    sim.step(500)
+    samples = np.array([imu.read()[1] for _ in range(3000)])
+    assert np.allclose(samples.std(axis=0), 0.02, rtol=0.1)
+    accel = np.array([imu.read()[2] for _ in range(10)])
+    assert np.allclose(accel, (0.0, 0.0, 9.81), atol=0.01)  # no noise configured there: exact
+
+
+def test_unsimulated_noise_and_bad_lidar_configuration_are_named_with_file_and_line(caplog):
+    sim = Simulation(default_world(), rtf=0)
+    bad_noise = "<noise><type>custom</type><stddev>0.1</stddev></noise>"
+    with caplog.at_level(logging.WARNING):
+        _spawn(sim, _lidar_model(noise=bad_noise), "a")
+    assert any(
+        "<string>.sdf:12: sensor 'laser': noise type 'custom' is not simulated" in r.getMessage()
+        for r in caplog.records
+    )
+    caplog.clear()
+    with caplog.at_level(logging.ERROR):
+        entity = _spawn(sim, _lidar_model(samples=0), "b")
+    msgs = [r.getMessage() for r in caplog.records]
+    assert any("<string>.sdf:5: sensor 'laser': <samples> must be at least 1" in m for m in msgs), msgs
+    assert _lidar(entity).next_update(0.0) == math.inf  # it does nothing, and says so; the world goes on
+
+
+def test_turtlebot3_burger_sensors_run_from_all_three_of_its_files():
+    # ROS 2 Classic SDF (gazebo_ros plugins with ~/out remappings)
+    classic = load(TB3 / "turtlebot3_gazebo/models/turtlebot3_burger/model-1_4.sdf").value
+    plans, problems = plan_sensors(classic, ())
+    assert sorted((p.sensor.name, p.plugin.filename if p.plugin else None) for p in plans) == [
+        ("hls_lfcd_lds", "libgazebo_ros_ray_sensor.so"),
+        ("tb3_imu", "libgazebo_ros_imu_sensor.so"),
+    ]
+    assert problems == []
+    # gz-sim SDF: sensors run by the world's gz-sim systems (present in the default world)
+    gz = load(TB3 / "turtlebot3_gazebo/models/turtlebot3_burger/model.sdf").value
+    plans, problems = plan_sensors(gz, default_world().plugins)
+    assert sorted(p.sensor.name for p in plans) == ["hls_lfcd_lds", "tb3_imu"] and problems == []
+    plans, problems = plan_sensors(gz, ())  # a world file without them: named, as gz-sim would not run them
+    assert plans == [] and len(problems) == 2
+    assert all("gz-sim-" in p.message for p in problems)
+
+    for path, scan_frame, imu_topic in (
+        ("turtlebot3_gazebo/models/turtlebot3_burger/model-1_4.sdf", "base_scan", "/imu"),
+        ("turtlebot3_gazebo/models/turtlebot3_burger/model.sdf", "base_scan", "/imu"),
+    ):
+        sim = Simulation(default_world(), rtf=0)
+        entity = sim.spawn(load(TB3 / path).value, name="burger", pose=Pose((0.0, 0.0, 0.01)))
+        lidar = _lidar(entity)
+        imu = next(s for s in entity.systems if isinstance(s, ImuSensor))
+        assert lidar.output is not None and imu.output is not None
+        assert (lidar.output.topic, lidar.output.frame_id, lidar.output.msg_type) == (
+            "/scan",
+            scan_frame,
+            MsgType.LASER_SCAN,
+        )
+        assert imu.output.topic == imu_topic
+        assert (lidar.rate_hz, imu.rate_hz) == (5.0, 200.0)
+        scans = _record(sim, "/scan")
+        sim.step(201)
+        assert len(scans) == 2 and len(np.frombuffer(scans[-1].ranges, np.float32)) == 360
+
+
+def _ray_circle(origin: np.ndarray, dirs: np.ndarray, centre: tuple[float, float], r: float) -> np.ndarray:
+    """Distance along each 2-D unit direction from origin to a circle (inf where it misses)."""
+    oc = origin - np.asarray(centre)
+    b = dirs @ oc
+    c = oc @ oc - r * r
+    disc = b * b - c
+    t = -b - np.sqrt(np.maximum(disc, 0.0))
+    return np.where((disc >= 0) & (t > 0), t, np.inf)
+
+
+def test_turtlebot3_in_its_world_sees_the_pillars_at_the_distances_the_geometry_gives(resource_path):
+    resource_path("turtlebot3/turtlebot3_gazebo/models")
+    world = load(TB3 / "turtlebot3_gazebo/worlds/turtlebot3_world.world").value
+    sim = Simulation(world, rtf=0)
+    burger = load(TB3 / "turtlebot3_gazebo/models/turtlebot3_burger/model.sdf").value
+    entity = sim.spawn(burger, name="burger", pose=Pose((-2.0, -0.5, 0.01)))  # turtlebot3_world.launch.py's pose
+    lidar = _lidar(entity)
+    lidar.spec = dataclasses.replace(lidar.spec, noise=dataclasses.replace(lidar.spec.noise, type="none"))
+    sim.step(2000)
+    ranges = lidar.scan(sim.world)[0]
+    X = lidar.sensor_pose()
+    q = X.orientation
+    yaw = math.atan2(2 * (q[0] * q[3] + q[1] * q[2]), 1 - 2 * (q[2] ** 2 + q[3] ** 2))
+    angles = yaw + lidar.spec.horizontal.angles()
+    dirs = np.stack([np.cos(angles), np.sin(angles)], axis=1)
+    origin = np.array(X.position[:2])
+    pillars = [(x, y) for x in (-1.1, 0.0, 1.1) for y in (-1.1, 0.0, 1.1)]  # radius 0.15, from its model.sdf
+    expect = np.min([_ray_circle(origin, dirs, c, 0.15) for c in pillars], axis=0)
+    seen = expect < 3.5
+    assert seen.sum() >= 20, "the burger at its launch pose should see several pillars"
+    assert np.max(np.abs(ranges[seen] - expect[seen])) < 1e-3
