@@ -15,6 +15,10 @@ command -v g++ >/dev/null || missing+=(g++)
 command -v make >/dev/null || missing+=(make)
 # the viewer's browser tests and `gazelle snapshot` use Debian's chromium (Playwright never downloads one)
 [[ -x /usr/bin/chromium ]] || missing+=(chromium)
+# cameras render offscreen with MuJoCo through EGL on Mesa (llvmpipe on a CPU; a GPU driver where present)
+if ! compgen -G "/usr/lib/*/libEGL.so.1" >/dev/null || ! compgen -G "/usr/lib/*/libEGL_mesa.so.0" >/dev/null; then
+  missing+=(libegl1 libegl-mesa0 libgl1-mesa-dri)
+fi
 if ((${#missing[@]})); then
   if [[ $(id -u) -eq 0 ]]; then SUDO=""; else SUDO="sudo"; fi
   say "installing Debian packages: ${missing[*]}"

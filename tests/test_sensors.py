@@ -326,3 +326,91 @@ def test_turtlebot3_in_its_world_sees_the_pillars_at_the_distances_the_geometry_
     seen = expect < 3.5
     assert seen.sum() >= 20, "the burger at its launch pose should see several pillars"
     assert np.max(np.abs(ranges[seen] - expect[seen])) < 1e-3
+
+
+def _camera_model(sensor_type: str = "camera", hfov: float = 1.2, width: int = 320, height: int = 240) -> str:
+    return f"""<?xml version="1.0"?>
+<sdf version="1.9"><model name="cam"><static>true</static>
+  <link name="camera_link">
+    <sensor name="front" type="{sensor_type}">
+      <pose>0 0 0.5 0 0 0</pose>
+      <update_rate>10</update_rate>
+      <camera><horizontal_fov>{hfov!r}</horizontal_fov>
+        <image><width>{width}</width><height>{height}</height><format>R8G8B8</format></image>
+        <clip><near>0.05</near><far>50</far></clip></camera>
+      <plugin name="front_camera" filename="libgazebo_ros_camera.so"><ros><namespace>/bot</namespace></ros></plugin>
+    </sensor>
+  </link>
+</model></sdf>"""
+
+
+def _box(name: str, pos: tuple[float, float, float], size: tuple[float, float, float], rgba: str) -> str:
+    return f"""<?xml version="1.0"?>
+<sdf version="1.9"><model name="{name}"><static>true</static><pose>{pos[0]} {pos[1]} {pos[2]} 0 0 0</pose>
+  <link name="l">
+    <collision name="c"><geometry><box><size>{size[0]} {size[1]} {size[2]}</size></box></geometry></collision>
+    <visual name="v"><geometry><box><size>{size[0]} {size[1]} {size[2]}</size></box></geometry>
+      <material><diffuse>{rgba}</diffuse></material></visual>
+  </link>
+</model></sdf>"""
+
+
+def test_a_camera_sees_a_red_plate_where_its_pose_and_camera_info_project_it_and_depth_to_1_mm():
+    from gazelle.systems.sensors import Camera
+
+    sim = Simulation(default_world(), rtf=0)
+    _spawn(sim, _box("plate", (3.0, 0.4, 0.6), (0.02, 0.4, 0.4), "1 0 0 1"), "plate")  # face at x = 2.99
+    _spawn(sim, _box("wall", (6.0, 0.0, 1.0), (0.2, 20.0, 2.0), "0.5 0.5 0.5 1"), "wall")  # face at x = 5.9
+    cam = next(s for s in _spawn(sim, _camera_model(), "cam").systems if isinstance(s, Camera))
+    assert (cam.topics.image, cam.topics.info) == ("/bot/front/image_raw", "/bot/front/camera_info")
+    sim.step(1)
+    assert cam._renderer is None  # nobody subscribed: nothing was rendered
+    images, infos = _record(sim, "/bot/front/image_raw"), _record(sim, "/bot/front/camera_info")
+    sim.step(100)
+    image, info = images[-1], infos[-1]
+    assert (image.width, image.height, image.encoding, image.frame_id) == (320, 240, "rgb8", "camera_link")
+    f = 160 / math.tan(0.6)
+    assert info.k == pytest.approx((f, 0, 160, 0, f, 120, 0, 0, 1)) and info.p[0] == pytest.approx(f)
+    rgb = np.frombuffer(image.data, np.uint8).reshape(240, 320, 3)
+    red = (rgb[..., 0] > 100) & (rgb[..., 1] < 60) & (rgb[..., 2] < 60)
+    assert red.sum() > 100
+    ys, xs = np.nonzero(red)
+    # the plate's centre (2.99 m ahead, 0.4 m left, 0.1 m up from the camera) through K
+    u, v = 160 - f * 0.4 / 2.99, 120 - f * 0.1 / 2.99
+    assert abs(xs.mean() + 0.5 - u) <= 1.0 and abs(ys.mean() + 0.5 - v) <= 1.0
+    _rgb, depth = cam.render(sim.world, depth=True)
+    assert depth is not None
+    assert abs(depth[120, 160] - 5.9) < 1e-3  # the wall straight ahead
+    assert abs(depth[int(v), int(u)] - 2.99) < 1e-3  # the plate, perpendicular to the axis
+    assert math.isinf(depth[0, 160]) and depth[0, 160] > 0  # the sky: nothing within 50 m
+
+
+def test_a_depth_camera_publishes_32fc1_and_a_cloud_in_the_optical_frame():
+    from gazelle.systems.sensors import Camera
+
+    sim = Simulation(default_world(), rtf=0)
+    _spawn(sim, _box("wall", (3.1, 0.0, 1.0), (0.2, 20.0, 4.0), "0.5 0.5 0.5 1"), "wall")  # face at x = 3
+    cam = next(
+        s for s in _spawn(sim, _camera_model("depth", width=64, height=48), "cam").systems if isinstance(s, Camera)
+    )
+    assert (cam.topics.depth, cam.topics.points) == ("/bot/front/depth/image_raw", "/bot/front/points")
+    depths, clouds = _record(sim, "/bot/front/depth/image_raw"), _record(sim, "/bot/front/points")
+    sim.step(1)
+    d = np.frombuffer(depths[-1].data, "<f4").reshape(48, 64)
+    assert depths[-1].encoding == "32FC1"
+    assert np.nanmax(np.abs(d[20:28, :] - 3.0)) < 1e-3  # the wall fills the middle rows, 3 m along the axis
+    pts = np.frombuffer(clouds[-1].data, "<f4").reshape(-1, 4)
+    on_wall = np.abs(pts[:, 2] - 3.0) < 1e-3  # optical frame: z forward
+    assert on_wall.sum() > 500
+    # x right, y down: a point left of centre in the image has negative x
+    assert pts[on_wall, 0].min() < -1.0 and pts[on_wall, 0].max() > 1.0
+
+
+def test_a_camera_of_zero_pixels_is_an_error_naming_file_and_line(caplog):
+    sim = Simulation(default_world(), rtf=0)
+    with caplog.at_level(logging.ERROR):
+        _spawn(sim, _camera_model(width=0), "cam")
+    assert any(
+        "<string>.sdf:4: sensor 'front': a camera of 0x240 pixels cannot render" in r.getMessage()
+        for r in caplog.records
+    )

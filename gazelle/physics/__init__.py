@@ -15,6 +15,8 @@ from ._handles import ActuatorKind as ActuatorKind
 from ._handles import BodyHandle as BodyHandle
 from ._handles import JointHandle as JointHandle
 from ._handles import PerGeneration as PerGeneration
+from ._render import OffscreenRenderer as OffscreenRenderer
+from ._render import RenderError as RenderError
 from ._world import MAX_COORDINATE_M as MAX_COORDINATE_M
 from ._world import WORLD_FRAMES as WORLD_FRAMES
 from ._world import Entity as Entity
@@ -28,7 +30,6 @@ from ._world import build_failed as build_failed
 from ._world import pose_out_of_range as pose_out_of_range
 
 __all__ = [
-    "SEP",
     "ActuatorHandle",
     "ActuatorKind",
     "BodyHandle",
@@ -38,9 +39,12 @@ __all__ = [
     "ErrorKind",
     "JointHandle",
     "MAX_COORDINATE_M",
+    "OffscreenRenderer",
     "PerGeneration",
     "PhysicsOverload",
     "PhysicsWorld",
+    "RenderError",
+    "SEP",
     "StagedRequest",
     "WORLD_FRAMES",
     "WorldError",

@@ -173,6 +173,9 @@ def _add_geom(
     name: str,
     mass_hint: float,
     decomposed: list[tuple[str, int, float, str]] | None = None,
+    *,
+    group: int = 3,
+    rgba: tuple[float, float, float, float] | None = None,
 ) -> None:
     g = col.geometry
     piece_names: list[str] = []
@@ -183,8 +186,10 @@ def _add_geom(
         "quat": list(col.pose.orientation),
         "friction": (friction := _surface_friction(col)),
         "priority": friction_priority(friction[0]),
-        "group": 3,
+        "group": group,
     }
+    if rgba is not None:
+        kwargs["rgba"] = list(rgba)
     primitive = _primitive(g)
     if primitive is not None:
         kwargs.update(primitive)
@@ -252,7 +257,12 @@ def _add_geom(
 
 
 VISUAL_GROUP = 1
-"""MuJoCo geom group of visual geoms (collision geoms are group 3): renderers show group 1, not 3."""
+"""MuJoCo geom group of visual geoms."""
+COLLISION_GROUP = 3
+"""Collision geoms of an entity whose visuals are in the model: cameras do not draw them."""
+SHOWN_COLLISION_GROUP = 2
+"""Collision geoms of an entity without visuals in the model: cameras draw them (in the colour of the
+link's first visual), so props look as they should without the cost of their visual meshes."""
 
 
 def _add_visual_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, vis: Visual, name: str) -> bool:
@@ -514,9 +524,20 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose, *, vis
                     mj.stiffness = [0.0, 0.0, 0.0]  # pyright: ignore[reportAttributeAccessIssue]
                     built.kinematic_joints.append(jname)
         mass_hint = link.inertial.mass if link.inertial else total_mass
+        colour = next(
+            (v.material.diffuse for v in link.visuals if v.material is not None and v.material.diffuse is not None),
+            None,
+        )
         for i, col in enumerate(link.collisions):
             _add_geom(
-                spec, body, col, scoped(entity, f"{link_name}::{col.name or 'collision'}#{i}"), mass_hint, decomposed
+                spec,
+                body,
+                col,
+                scoped(entity, f"{link_name}::{col.name or 'collision'}#{i}"),
+                mass_hint,
+                decomposed,
+                group=COLLISION_GROUP if visuals else SHOWN_COLLISION_GROUP,
+                rgba=None if visuals else colour,
             )
             for param in unsimulated_surface_parameters(col):
                 ignored.setdefault(param, []).append(f"{link_name}/{col.name}")

@@ -17,10 +17,11 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from ..description import Model, Pose, World, excerpt, quat_conj, quat_rotate
+from ..description import Light, Model, Pose, World, excerpt, quat_conj, quat_rotate
 from ._builder import JOINT_ARMATURE, SEP, BuildError, BuiltEntity, add_model, scoped
 from ._convex import cache_dir
 from ._handles import ActuatorHandle, ActuatorKind, BodyHandle, JointHandle
+from ._render import OffscreenRenderer
 
 _log = logging.getLogger("gazelle.physics")
 MAX_COORDINATE_M = 1.0e5
@@ -191,8 +192,16 @@ class EntityState:
     angular_velocity: tuple[float, float, float]
 
 
-RAY_GEOM_GROUPS = np.array([0, 0, 0, 1, 0, 0], dtype=np.uint8)
-"""Geom groups rays hit: the collision geoms (group 3), as Gazebo's ``ray`` sensor sees collisions."""
+RAY_GEOM_GROUPS = np.array([0, 0, 1, 1, 0, 0], dtype=np.uint8)
+"""Geom groups rays hit: the collision geoms (groups 2 and 3), as Gazebo's ``ray`` sensor sees collisions."""
+
+
+CAMERA_SENSOR_TYPES = frozenset({"camera", "depth", "depth_camera", "rgbd_camera", "rgbd", "multicamera"})
+
+
+def has_camera(model: Model) -> bool:
+    """Whether a model carries a camera: its visuals then go into the MuJoCo model, so it renders what users see."""
+    return any(s.type in CAMERA_SENSOR_TYPES for lk in model.links for s in lk.sensors)
 
 
 def _quat_matrix(q: tuple[float, float, float, float]) -> np.ndarray:
@@ -227,6 +236,8 @@ class PhysicsWorld:
         # never silently reset for the whole world as MuJoCo would
         opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_AUTORESET)
         self.spec.compiler.degree = False
+        for light in world.lights:
+            self._add_light(light)
         self.entities: dict[str, Entity] = {}
         self.generation = 0
         """Bumped at every recompile: indices cached against an older generation are stale."""
@@ -312,7 +323,7 @@ class PhysicsWorld:
     ) -> Entity:
         X_WM = _checked_placement(name, X_WM, taken)
         try:
-            built = add_model(self.spec, model, name, X_WM, visuals=self.visual_geoms)
+            built = add_model(self.spec, model, name, X_WM, visuals=self.visual_geoms or has_camera(model))
         except Exception as err:
             self._remove_elements(name)
             raise build_failed(name, err) from None
@@ -642,6 +653,30 @@ class PhysicsWorld:
                 spin = float(np.linalg.norm(w))
                 if spin > MAX_CORRECTING_SPIN:
                     w *= MAX_CORRECTING_SPIN / spin
+
+    def _add_light(self, light: Light) -> None:
+        """A world light for cameras (its direction is in the light's frame, as SDF gives it)."""
+        kinds = {"directional": mujoco.mjtLightType.mjLIGHT_DIRECTIONAL, "spot": mujoco.mjtLightType.mjLIGHT_SPOT}
+        R = _quat_matrix(light.pose.orientation)
+        direction = R @ np.asarray(light.direction, dtype=float)
+        n = float(np.linalg.norm(direction))
+        self.spec.worldbody.add_light(
+            name=f"light::{light.name}",
+            type=kinds.get(light.type, mujoco.mjtLightType.mjLIGHT_POINT),
+            pos=list(light.pose.position),
+            dir=list(direction / n) if n > 0 else [0.0, 0.0, -1.0],
+            diffuse=list(light.diffuse[:3]),
+            specular=list(light.specular[:3]),
+            castshadow=bool(light.cast_shadows),
+        )
+
+    def offscreen_renderer(self, width: int, height: int) -> OffscreenRenderer:
+        """A renderer of this world's images (create and use it on the simulation thread)."""
+        return OffscreenRenderer(self, width, height)
+
+    def refresh_kinematics(self) -> None:
+        """Bring body poses up to the current state (cheap when already current); for renderers."""
+        self._refresh_kinematics()
 
     def _refresh_kinematics(self) -> None:
         """Bring body poses and velocities up to the current qpos/qvel (derived fields only:

@@ -10,6 +10,8 @@ from geometry_msgs.msg import Point, Quaternion, TransformStamped, Vector3
 from geometry_msgs.msg import Pose as PoseMsg
 from geometry_msgs.msg import Twist as TwistMsg
 from nav_msgs.msg import Odometry as OdometryMsg
+from sensor_msgs.msg import CameraInfo as CameraInfoMsg
+from sensor_msgs.msg import Image as ImageMsg
 from sensor_msgs.msg import Imu as ImuMsg
 from sensor_msgs.msg import JointState as JointStateMsg
 from sensor_msgs.msg import LaserScan as LaserScanMsg
@@ -21,7 +23,9 @@ from tf2_msgs.msg import TFMessage
 
 from ..description import Pose
 from ..systems import (
+    CameraInfo,
     Float64,
+    Image,
     Imu,
     JointStates,
     LaserScan,
@@ -176,6 +180,31 @@ def to_imu_msg(i: Imu) -> ImuMsg:
     return msg
 
 
+def to_image_msg(i: Image) -> ImageMsg:
+    """sensor_msgs/Image."""
+    msg = ImageMsg()
+    msg.header.stamp = to_time(i.stamp_sec)
+    msg.header.frame_id = i.frame_id
+    msg.height, msg.width, msg.encoding, msg.step = i.height, i.width, i.encoding, i.step
+    msg.is_bigendian = 0
+    msg.data = i.data
+    return msg
+
+
+def to_camera_info_msg(c: CameraInfo) -> CameraInfoMsg:
+    """sensor_msgs/CameraInfo."""
+    msg = CameraInfoMsg()
+    msg.header.stamp = to_time(c.stamp_sec)
+    msg.header.frame_id = c.frame_id
+    msg.height, msg.width = c.height, c.width
+    msg.distortion_model = c.distortion_model
+    msg.d = array("d", c.d)
+    msg.k = array("d", c.k)
+    msg.r = array("d", c.r)
+    msg.p = array("d", c.p)
+    return msg
+
+
 def _to_tf(batch: TransformBatch) -> TFMessage:
     return TFMessage(transforms=[to_transform_msg(t) for t in batch.transforms])
 
@@ -192,6 +221,8 @@ ROS_TYPES = {
     MsgType.POINT_CLOUD2: PointCloud2,
     MsgType.RANGE: RangeMsg,
     MsgType.IMU: ImuMsg,
+    MsgType.IMAGE: ImageMsg,
+    MsgType.CAMERA_INFO: CameraInfoMsg,
 }
 """The rclpy message class for each bus message type."""
 
@@ -207,6 +238,8 @@ TO_ROS = {
     MsgType.POINT_CLOUD2: to_point_cloud_msg,
     MsgType.RANGE: to_range_msg,
     MsgType.IMU: to_imu_msg,
+    MsgType.IMAGE: to_image_msg,
+    MsgType.CAMERA_INFO: to_camera_info_msg,
 }
 FROM_ROS = {
     MsgType.TWIST: from_twist_msg,

@@ -21,8 +21,10 @@ from ._base import SystemContext as SystemContext
 from ._base import SystemManager as SystemManager
 from ._base import UpdateInfo as UpdateInfo
 from ._bus import Bus as Bus
+from ._bus import CameraInfo as CameraInfo
 from ._bus import Endpoint as Endpoint
 from ._bus import Float64 as Float64
+from ._bus import Image as Image
 from ._bus import Imu as Imu
 from ._bus import JointStates as JointStates
 from ._bus import LaserScan as LaserScan
@@ -48,8 +50,10 @@ from .robot_state import robot_state_config as robot_state_config
 
 __all__ = [
     "Bus",
+    "CameraInfo",
     "Endpoint",
     "Float64",
+    "Image",
     "Imu",
     "JointStates",
     "LaserScan",

@@ -141,6 +141,34 @@ class Imu:
     linear_acceleration_covariance: tuple[float, ...] = (0.0,) * 9
 
 
+@dataclass(frozen=True, slots=True)
+class Image:
+    """sensor_msgs/Image: ``data`` holds ``height`` rows of ``step`` bytes."""
+
+    stamp_sec: float
+    frame_id: str
+    height: int
+    width: int
+    encoding: str
+    step: int
+    data: bytes
+
+
+@dataclass(frozen=True, slots=True)
+class CameraInfo:
+    """sensor_msgs/CameraInfo (row-major K 3x3, R 3x3, P 3x4; D as ``distortion_model`` orders it)."""
+
+    stamp_sec: float
+    frame_id: str
+    height: int
+    width: int
+    distortion_model: str
+    d: tuple[float, ...]
+    k: tuple[float, ...]
+    r: tuple[float, ...]
+    p: tuple[float, ...]
+
+
 class MsgType(enum.Enum):
     """The ROS message type each payload maps to."""
 
@@ -156,6 +184,8 @@ class MsgType(enum.Enum):
     POINT_CLOUD2 = "sensor_msgs/msg/PointCloud2"
     RANGE = "sensor_msgs/msg/Range"
     IMU = "sensor_msgs/msg/Imu"
+    IMAGE = "sensor_msgs/msg/Image"
+    CAMERA_INFO = "sensor_msgs/msg/CameraInfo"
 
 
 class Qos(enum.Enum):

@@ -76,6 +76,12 @@ def _imu() -> System:
     return ImuSensor()
 
 
+def _camera() -> System:
+    from .sensors import Camera
+
+    return Camera()
+
+
 def _p3d() -> System:
     from .pose_publisher import P3D
 
@@ -111,18 +117,20 @@ _SENSOR_PLUGINS: dict[str, tuple[Callable[[], System], frozenset[str]]] = {
     "gazebo_ros_laser": (_lidar, frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"})),
     "gazebo_ros_gpu_laser": (_lidar, frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"})),
     "gazebo_ros_imu_sensor": (_imu, frozenset({"imu"})),
+    "gazebo_ros_camera": (_camera, frozenset({"camera", "depth", "depth_camera", "rgbd_camera", "rgbd"})),
+    "gazebo_ros_depth_camera": (_camera, frozenset({"depth", "depth_camera", "rgbd_camera", "rgbd"})),
+    "gazebo_ros_openni_kinect": (_camera, frozenset({"depth", "depth_camera", "rgbd_camera", "rgbd"})),
 }
 """gazebo_ros plugins that sit inside a ``<sensor>``: the system and the sensor types they take."""
 
-GZ_SENSOR_WORLD_SYSTEMS: dict[str, tuple[Callable[[], System], frozenset[str]]] = {
+_LIDARS = ("ray", "gpu_ray", "lidar", "gpu_lidar")
+_CAMERAS = ("camera", "depth", "depth_camera", "rgbd_camera", "rgbd")
+GZ_SENSOR_WORLD_SYSTEMS: dict[str, dict[str, Callable[[], System]]] = {
     **{
-        n: (_lidar, frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"}))
+        n: {**dict.fromkeys(_LIDARS, _lidar), **dict.fromkeys(_CAMERAS, _camera)}
         for n in ("gz-sim-sensors-system", "gz::sim::systems::Sensors", "ignition-gazebo-sensors-system")
     },
-    **{
-        n: (_imu, frozenset({"imu"}))
-        for n in ("gz-sim-imu-system", "gz::sim::systems::Imu", "ignition-gazebo-imu-system")
-    },
+    **{n: {"imu": _imu} for n in ("gz-sim-imu-system", "gz::sim::systems::Imu", "ignition-gazebo-imu-system")},
 }
 """gz-sim world systems that run the sensors of a type that have no gazebo_ros plugin."""
 
@@ -150,9 +158,7 @@ def plan_sensors(
     gz_types: dict[str, Callable[[], System]] = {}
     for wp in world_plugins or ():
         for key in (_normalise(wp.filename), _normalise(wp.name)):
-            if key in GZ_SENSOR_WORLD_SYSTEMS:
-                make, types = GZ_SENSOR_WORLD_SYSTEMS[key]
-                gz_types.update(dict.fromkeys(types, make))
+            gz_types.update(GZ_SENSOR_WORLD_SYSTEMS.get(key, {}))
     plans: list[SensorPlan] = []
     out: list[Diagnostic] = []
     # a model with gazebo_ros plugins is a Gazebo Classic model: its sensors publish through their own
@@ -204,12 +210,12 @@ def plan_sensors(
                 )
             elif make_gz is not None:
                 plans.append(SensorPlan(link.name, sensor, None, make_gz))
-            elif sensor.type in {t for _, ts in GZ_SENSOR_WORLD_SYSTEMS.values() for t in ts}:
+            elif any(sensor.type in types for types in GZ_SENSOR_WORLD_SYSTEMS.values()):
                 if world_plugins is not None:
                     system = next(
                         n
-                        for n, (_, ts) in GZ_SENSOR_WORLD_SYSTEMS.items()
-                        if sensor.type in ts and n.startswith("gz-sim")
+                        for n, types in GZ_SENSOR_WORLD_SYSTEMS.items()
+                        if sensor.type in types and n.startswith("gz-sim")
                     )
                     warn(
                         f"{label} publishes nothing: it has no gazebo_ros plugin and the world has no '{system}'",
@@ -236,12 +242,9 @@ _NOT_YET: dict[str, str] = {
     **{
         n: "sensors are not simulated yet"
         for n in (
-            "gazebo_ros_camera",
-            "gazebo_ros_depth_camera",
             "gazebo_ros_bumper",
             "gazebo_ros_gps_sensor",
             "gazebo_ros_ft_sensor",
-            "gazebo_ros_openni_kinect",
             "gazebo_ros_range",
             "gz-sim-contact-system",
             "gz::sim::systems::Contact",

@@ -33,11 +33,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..description import ConfigElement, Pose, Sensor, quat_conj, quat_mul
-from ..physics import BodyHandle, PhysicsWorld
+from ..physics import BodyHandle, OffscreenRenderer, PhysicsWorld, RenderError
 from ._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
-from ._bus import Endpoint, Imu, LaserScan, MsgType, PointCloud, Range, resolve_topic
+from ._bus import CameraInfo, Endpoint, Image, Imu, LaserScan, MsgType, PointCloud, Range, resolve_topic
 
 LIDAR_TYPES = frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"})
+CAMERA_TYPES = frozenset({"camera", "depth", "depth_camera", "rgbd_camera", "rgbd"})
+DEPTH_TYPES = frozenset({"depth", "depth_camera", "rgbd_camera", "rgbd"})
 """``<sensor type>`` values cast as rays (Gazebo's ``gpu_*`` variants see visuals; here all see collisions)."""
 IMU_TYPES = frozenset({"imu"})
 
@@ -239,6 +241,8 @@ class SensorPluginConfig:
     """ROS 1's IMU model plugin: ``<updateRate>``, Hz of sim time (0: every step). Sensors use ``<update_rate>``."""
     gaussian_noise: float = 0.0
     """ROS 1's IMU model plugin: ``<gaussianNoise>``, standard deviation of every channel."""
+    camera_name: str = ""
+    """Cameras: ``<camera_name>``, the first part of their topics; default the sensor's name."""
     namespace: str = ""
     """``<ros><namespace>`` (ROS 1: ``<robotNamespace>``); default the entity's namespace."""
     remappings: tuple[tuple[str, str], ...] = ()
@@ -265,27 +269,33 @@ def parse_plugin_config(ctx: SystemContext) -> SensorPluginConfig:
         body_name=child_text(cfg, "bodyName") or child_text(cfg, "body_name") or "",
         update_rate=parse_float(cfg, "updateRate", 0.0, log),
         gaussian_noise=parse_float(cfg, "gaussianNoise", 0.0, log),
+        camera_name=child_text(cfg, "camera_name") or child_text(cfg, "cameraName") or "",
         namespace=ns or child_text(cfg, "robotNamespace") or ctx.entity.namespace,
         remappings=tuple(remaps.items()),
     )
 
 
 def sensor_output(ctx: SystemContext, link: str, sensor: Sensor | None, kind: str, c: SensorPluginConfig) -> Output:
-    """Resolve the topic, frame and message type of a sensor (``kind``: ``scan`` or ``imu``), from its
+    """Resolve the topic, frame and message type of a sensor (``kind``: ``scan``, ``imu`` or ``image``), from its
     gazebo_ros plugin's parameters ``c`` or, without a plugin, as gz-sim names it."""
     from .robot_state import entity_frame_prefix
 
     log = ctx.logger
     prefix = entity_frame_prefix(ctx.entity, log)
-    default_type = MsgType.IMU if kind == "imu" else MsgType.LASER_SCAN
+    default_type = {"imu": MsgType.IMU, "image": MsgType.IMAGE}.get(kind, MsgType.LASER_SCAN)
     if ctx.plugin is None:  # gz-sim: <topic> and <frame_id>
         assert sensor is not None
         cfg = sensor.config
-        topic = sensor.topic or gz_scoped_topic(ctx, link, sensor, kind)
+        suffix = "depth_image" if kind == "image" and sensor.type in ("depth", "depth_camera") else kind
+        topic = sensor.topic or gz_scoped_topic(ctx, link, sensor, suffix)
         frame = child_text(cfg, "frame_id") or child_text(cfg, "gz_frame_id")
         frame = prefix + frame if frame else f"{ctx.entity.name}::{link}::{sensor.name}"
         return Output(resolve_topic(topic, ctx.entity.namespace), frame, default_type)
-    topic = resolve_topic(c.topic, c.namespace, dict(c.remappings), node=ctx.plugin.name)
+    if kind == "image":  # gazebo_ros_camera: <camera_name>/image_raw in the plugin's namespace
+        name = c.camera_name or (sensor.name if sensor is not None else "camera")
+        topic = resolve_topic(f"{name}/image_raw", c.namespace, dict(c.remappings))
+    else:
+        topic = resolve_topic(c.topic, c.namespace, dict(c.remappings), node=ctx.plugin.name)
     msg_type = default_type
     if kind == "scan":
         found = _OUTPUT_TYPES.get(c.output_type.strip().lower())
@@ -347,7 +357,8 @@ class _SensorSystem(System):
             log.error(f"{self.kind} sensor: link '{link}' does not exist in '{ctx.entity.name}'; it does nothing")
             return False
         self.link = link or ""
-        self.output = sensor_output(ctx, self.link, self.sensor, "imu" if self.kind == "IMU" else "scan", c)
+        kind = {"IMU": "imu", "camera": "image"}.get(self.kind, "scan")
+        self.output = sensor_output(ctx, self.link, self.sensor, kind, c)
         self._body = ctx.world.body(ctx.entity.name, self.link)
         self._pub = ctx.bus.advertise(ctx.entity.name, self.output.topic, self.output.msg_type, depth=SENSOR_DEPTH)
         return True
@@ -575,6 +586,267 @@ class ImuSensor(_SensorSystem):
                 linear_acceleration_covariance=cov(self.noise.accel),
             )
         )
+
+
+# --------------------------------------------------------------------------- cameras
+@dataclass(frozen=True)
+class CameraSpec:
+    """A ``<camera>`` block: image size and format, field of view, clip planes, distortion, noise."""
+
+    width: int = 320
+    height: int = 240
+    format: str = "R8G8B8"
+    horizontal_fov: float = 1.047
+    near: float = 0.1
+    far: float = 100.0
+    distortion: tuple[float, float, float, float, float] = (0.0, 0.0, 0.0, 0.0, 0.0)
+    """k1, k2, p1, p2, k3 (ROS's plumb_bob order); published in CameraInfo, not applied to the image."""
+    noise: Noise = Noise()
+
+    def k(self) -> tuple[float, ...]:
+        """The intrinsic matrix: square pixels, f = (width / 2) / tan(hfov / 2), principal point at the
+        image centre (pixel centres at half-integers, as the renderer draws them)."""
+        f = (self.width / 2.0) / math.tan(self.horizontal_fov / 2.0)
+        return (f, 0.0, self.width / 2.0, 0.0, f, self.height / 2.0, 0.0, 0.0, 1.0)
+
+
+_ENCODINGS = {
+    "R8G8B8": "rgb8",
+    "RGB_INT8": "rgb8",
+    "B8G8R8": "bgr8",
+    "BGR_INT8": "bgr8",
+    "L8": "mono8",
+    "L_INT8": "mono8",
+}
+
+
+def parse_camera(sensor: Sensor, log: logging.Logger) -> CameraSpec:
+    """The ``<camera>`` block of a camera sensor.
+
+    Raises:
+        SensorConfigError: an image of zero size, a field of view outside (0, pi), or clip planes out of order.
+    """
+    cam = sensor.config.find("camera") if sensor.config is not None else None
+    where = f"{sensor.location}: " if sensor.location else ""
+    if cam is None:
+        log.warning(f"{where}sensor '{sensor.name}' ({sensor.type}) has no <camera> block; using SDF's defaults")
+        return CameraSpec()
+    image, clip, dist = cam.find("image"), cam.find("clip"), cam.find("distortion")
+    width = int(parse_float(image, "width", 320, log))
+    height = int(parse_float(image, "height", 240, log))
+    fmt = (child_text(image, "format") or "R8G8B8").strip()
+    hfov = parse_float(cam, "horizontal_fov", 1.047, log)
+    near, far = parse_float(clip, "near", 0.1, log), parse_float(clip, "far", 100.0, log)
+    if width < 1 or height < 1:
+        raise SensorConfigError(f"{where}sensor '{sensor.name}': a camera of {width}x{height} pixels cannot render")
+    if not 0.0 < hfov < math.pi:
+        raise SensorConfigError(f"{where}sensor '{sensor.name}': <horizontal_fov> must be in (0, pi), got {hfov}")
+    if not 0.0 < near < far:
+        raise SensorConfigError(f"{where}sensor '{sensor.name}': <clip> needs 0 < near < far, got {near} .. {far}")
+    if fmt not in _ENCODINGS:
+        log.warning(f"{where}sensor '{sensor.name}': image format '{fmt}' is not rendered; publishing rgb8 (R8G8B8)")
+        fmt = "R8G8B8"
+    coeffs = tuple(parse_float(dist, t, 0.0, log) for t in ("k1", "k2", "p1", "p2", "k3"))
+    if dist is not None and any(coeffs):
+        log.warning(
+            f"{where}sensor '{sensor.name}': <distortion> is published in CameraInfo but not applied to the image"
+        )
+    return CameraSpec(
+        width,
+        height,
+        fmt,
+        hfov,
+        near,
+        far,
+        coeffs,  # type: ignore[arg-type]
+        parse_noise(cam.find("noise"), log, f"sensor '{sensor.name}'"),
+    )
+
+
+@dataclass(frozen=True)
+class CameraTopics:
+    """Where a camera publishes (an empty name: not published)."""
+
+    image: str
+    info: str
+    depth: str = ""
+    depth_info: str = ""
+    points: str = ""
+
+
+OPTICAL = np.array([[0.0, -1.0, 0.0], [0.0, 0.0, -1.0], [1.0, 0.0, 0.0]])
+"""Rotation from a link frame (x forward, z up) to the optical frame (z forward, x right, y down)."""
+
+
+class Camera(_SensorSystem):
+    """A camera or depth camera: Image, CameraInfo, depth Image (32FC1) and PointCloud2 (see the module
+    docstring). It renders only while someone subscribes."""
+
+    kind = "camera"
+
+    def __init__(self, seed: int | None = None) -> None:
+        super().__init__(seed)
+        self.spec = CameraSpec()
+        self.topics = CameraTopics("", "")
+        self.depth = False
+        self._eps: dict[str, Endpoint] = {}
+        self._renderer: OffscreenRenderer | None = None
+        self._failed = False
+
+    def configure(self, ctx: SystemContext) -> None:
+        """Parse the ``<camera>`` block and the plugin; declare the image, info, depth and points topics."""
+        if ctx.sensor is None:
+            where = f"{ctx.plugin.location}: " if ctx.plugin and ctx.plugin.location else ""
+            ctx.logger.error(f"{where}a camera plugin must be inside a <sensor type='camera'>; it does nothing")
+            return
+        try:
+            self.spec = parse_camera(ctx.sensor, ctx.logger)
+        except SensorConfigError as err:
+            ctx.logger.error(f"{err}; the sensor does nothing")
+            return
+        if not self._configure_common(ctx):
+            return
+        assert self.output is not None and self._pub is not None
+        self.depth = ctx.sensor.type in DEPTH_TYPES
+        self.topics = self._topics(ctx)
+        # _configure_common advertised the image topic (output.topic); the others go beside it
+        self._eps = {"image": self._pub}
+        for key, msg_type in (
+            ("info", MsgType.CAMERA_INFO),
+            ("depth", MsgType.IMAGE),
+            ("depth_info", MsgType.CAMERA_INFO),
+            ("points", MsgType.POINT_CLOUD2),
+        ):
+            topic = getattr(self.topics, key)
+            if topic:
+                self._eps[key] = ctx.bus.advertise(ctx.entity.name, topic, msg_type, depth=SENSOR_DEPTH)
+        s = self.spec
+        ctx.logger.info(
+            f"{ctx.sensor.type} '{ctx.sensor.name}': {s.width}x{s.height} at {self.rate_hz:g} Hz on "
+            f"[{self.topics.image}]"
+            + (f" and [{self.topics.depth}]" if self.depth else "")
+            + f" in frame [{self.output.frame_id}]"
+        )
+
+    def _topics(self, ctx: SystemContext) -> CameraTopics:
+        assert self.output is not None and self.sensor is not None
+        image = self.output.topic
+        parent = image.rsplit("/", 1)[0]
+        if ctx.plugin is not None:  # gazebo_ros: <camera_name>/image_raw etc. under the node's namespace
+            return CameraTopics(
+                image,
+                f"{parent}/camera_info",
+                f"{parent}/depth/image_raw" if self.depth else "",
+                f"{parent}/depth/camera_info" if self.depth else "",
+                f"{parent}/points" if self.depth else "",
+            )
+        if self.sensor.type in ("rgbd_camera", "rgbd"):  # gz: <topic>/image, /depth_image, /points, /camera_info
+            base = resolve_topic(
+                self.sensor.topic or gz_scoped_topic(ctx, self.link, self.sensor, ""), ctx.entity.namespace
+            ).rstrip("/")
+            return CameraTopics(
+                f"{base}/image", f"{base}/camera_info", f"{base}/depth_image", f"{base}/camera_info", f"{base}/points"
+            )
+        if self.depth:  # gz depth_camera: <topic> is the depth image
+            return CameraTopics("", f"{parent}/camera_info", image, f"{parent}/camera_info", f"{image}/points")
+        return CameraTopics(image, f"{parent}/camera_info")
+
+    def _wanted(self) -> dict[str, bool]:
+        return {k: ep.wanted for k, ep in self._eps.items()}
+
+    def info(self, stamp: float) -> CameraInfo:
+        """CameraInfo of this camera (K and P from ``horizontal_fov`` and the image size)."""
+        s = self.spec
+        k = s.k()
+        p = (k[0], 0.0, k[2], 0.0, 0.0, k[4], k[5], 0.0, 0.0, 0.0, 1.0, 0.0)
+        assert self.output is not None
+        return CameraInfo(
+            stamp,
+            self.output.frame_id,
+            s.height,
+            s.width,
+            "plumb_bob",
+            s.distortion,
+            k,
+            (1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0),
+            p,
+        )
+
+    def render(self, world: PhysicsWorld, depth: bool) -> tuple[np.ndarray, np.ndarray | None] | None:
+        """Colour (H x W x 3 uint8) and depth (metres, -inf nearer than near, +inf where nothing is
+        within far) as this camera sees the world now; None when no GL context could be made."""
+        if self._failed:
+            return None
+        s = self.spec
+        try:
+            if self._renderer is None:
+                self._renderer = world.offscreen_renderer(s.width, s.height)
+            rgb, d = self._renderer.render(self.sensor_pose(), s.horizontal_fov, s.near, s.far, depth=depth)
+        except RenderError as err:
+            self._failed = True
+            logging.getLogger("gazelle.sensors").error(f"camera '{self.sensor.name if self.sensor else ''}': {err}")
+            return None
+        if d is not None:
+            d = d.copy()
+            d[d >= s.far * (1 - 1e-4)] = np.inf
+        return rgb.copy(), d
+
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """At the camera's rate, while anyone subscribes: render and publish stamped with this sim time."""
+        if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.rate_hz):
+            return
+        want = self._wanted()
+        if not any(want.values()):
+            return
+        t, s = info.sim_time_sec, self.spec
+        assert self.output is not None
+        frame = self.output.frame_id
+        need_depth = self.depth and (want.get("depth", False) or want.get("points", False))
+        need_image = want.get("image", False) and bool(self.topics.image)
+        out = self.render(world, need_depth) if (need_image or need_depth) else None
+        ci = self.info(t)
+        for key in ("info", "depth_info"):
+            if want.get(key):
+                self._eps[key].publish(ci)
+        if out is None:
+            return
+        rgb, d = out
+        if need_image:
+            img = rgb
+            if s.noise.active:
+                noisy = rgb.astype(np.float32) + 255.0 * self._rng.normal(s.noise.mean, s.noise.stddev, rgb.shape)
+                img = np.clip(noisy, 0, 255).astype(np.uint8)
+            enc = _ENCODINGS[s.format]
+            if enc == "bgr8":
+                img = img[..., ::-1]
+            elif enc == "mono8":
+                img = (img.astype(np.float32) @ np.array([0.299, 0.587, 0.114], np.float32)).astype(np.uint8)
+            data = np.ascontiguousarray(img)
+            channels = 1 if data.ndim == 2 else 3
+            self._eps["image"].publish(Image(t, frame, s.height, s.width, enc, s.width * channels, data.tobytes()))
+        if d is None:
+            return
+        if want.get("depth"):
+            self._eps["depth"].publish(
+                Image(t, frame, s.height, s.width, "32FC1", s.width * 4, d.astype("<f4").tobytes())
+            )
+        if want.get("points"):
+            k = s.k()
+            v, u = np.mgrid[0 : s.height, 0 : s.width]
+            ok = np.isfinite(d)
+            z = d[ok]
+            x = (u[ok] + 0.5 - k[2]) / k[0] * z
+            y = (v[ok] + 0.5 - k[5]) / k[4] * z
+            cloud = np.empty((len(z), 4), np.float32)
+            cloud[:, 0], cloud[:, 1], cloud[:, 2] = x, y, z
+            cloud[:, 3] = rgb[ok] @ np.array([1.0 / 3, 1.0 / 3, 1.0 / 3]) / 255.0
+            self._eps["points"].publish(PointCloud(t, frame, len(z), 1, cloud.astype("<f4").tobytes()))
+
+    def shutdown(self) -> None:
+        """Free the GL context (on the simulation thread, where it was made)."""
+        if self._renderer is not None:
+            self._renderer.close()
+            self._renderer = None
 
 
 def _matrix(q: tuple[float, float, float, float]) -> np.ndarray:

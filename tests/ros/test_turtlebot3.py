@@ -233,3 +233,46 @@ def test_turtlebot3_scan_and_imu_reach_a_plain_rclpy_process_with_sim_time_stamp
         assert 0 < m["stamp"] < 1e5
     # the scan's frame is on TF, where robot_state_publisher puts the lidar
     wait_for(lambda: "base_scan" in obs.frames, 10, "base_scan on /tf_static")
+
+
+def test_a_waffle_style_robot_publishes_camera_images_and_info_scan_and_imu(sim_factory, ros_client):
+    """examples/sensor_bot: its camera's Image and CameraInfo, its /scan and /imu reach a plain rclpy
+    process, stamped with sim time; K follows horizontal_fov and the image size."""
+    import json
+    import sys
+
+    sim_factory()
+    spawn_file(REPO / "examples/sensor_bot/sensor_bot.urdf", "bot", "-z", "0.07")
+    listener = start(
+        [
+            sys.executable,
+            str(SENSOR_LISTENER),
+            "3",
+            "/camera/image_raw:Image",
+            "/camera/camera_info:CameraInfo",
+            "/scan:LaserScan",
+            "/imu:Imu",
+        ],
+        "sensor_listener",
+    )
+    assert listener.popen.wait(90) == 0, listener.output
+    msgs = [json.loads(ln) for ln in listener.lines if ln.startswith("{") and '"topic"' in ln]
+    by = {
+        t: [m for m in msgs if m["topic"] == t] for t in ("/camera/image_raw", "/camera/camera_info", "/scan", "/imu")
+    }
+    assert all(len(v) == 3 for v in by.values()), listener.output
+    for img in by["/camera/image_raw"]:
+        assert (img["width"], img["height"], img["encoding"], img["bytes"], img["frame"]) == (
+            320,
+            240,
+            "rgb8",
+            320 * 240 * 3,
+            "camera_link",
+        )
+        assert 20 < img["mean"] < 235  # a lit floor under a dark sky, not a blank image
+        assert 0 < img["stamp"] < 1e5
+    f = 160 / math.tan(1.085595 / 2)
+    for info in by["/camera/camera_info"]:
+        assert info["k"] == pytest.approx([f, 0, 160, 0, f, 120, 0, 0, 1])
+    assert all(s["n"] == 360 for s in by["/scan"])
+    assert all(m["accel"][2] == pytest.approx(9.8, abs=0.05) for m in by["/imu"])
