@@ -378,9 +378,25 @@ def test_mesh_not_found_warns_with_line():
 def test_unsupported_elements_warn():
     result = load(DATA / "unsupported_elements.sdf", resolver=resolver())
     assert [(d.code.value, d.location.line) for d in result.diagnostics] == [
-        ("ELEMENT_UNSUPPORTED", line) for line in range(4, 10)
+        ("ELEMENT_UNSUPPORTED", line)
+        for line in (4, 5, 7, 8, 9)  # line 6's <spherical_coordinates> is read
     ]
     assert "<gui> in <world>" in result.diagnostics[0].message
+    assert result.value.spherical_coordinates is not None
+
+
+def test_spherical_coordinates_are_read_for_gps_sensors():
+    world = load_string(
+        """<sdf version="1.9"><world name="w"><spherical_coordinates>
+        <surface_model>EARTH_WGS84</surface_model><world_frame_orientation>ENU</world_frame_orientation>
+        <latitude_deg>-22.986687</latitude_deg><longitude_deg>-43.202501</longitude_deg>
+        <elevation>12.5</elevation><heading_deg>15</heading_deg></spherical_coordinates></world></sdf>""",
+        format="sdf",
+        resolver=resolver(),
+    ).value
+    sc = world.spherical_coordinates
+    assert (sc.latitude_deg, sc.longitude_deg, sc.elevation, sc.heading_deg) == (-22.986687, -43.202501, 12.5, 15.0)
+    assert load_string('<sdf version="1.9"><world name="w"/></sdf>', format="sdf").value.spherical_coordinates is None
 
 
 def test_lone_light_is_a_world():

@@ -21,6 +21,11 @@ from gazelle.systems.sensors import ImuSensor, Lidar
 from gazelle.worlds import default_world
 
 TB3 = REAL / "turtlebot3"
+BOX_2KG = (
+    '<?xml version="1.0"?><sdf version="1.9"><model name="box"><link name="link">'
+    "<inertial><mass>2.0</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>"
+    '<collision name="c"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision></link></model></sdf>'
+)
 
 
 def _lidar_model(
@@ -414,3 +419,156 @@ def test_a_camera_of_zero_pixels_is_an_error_naming_file_and_line(caplog):
         "<string>.sdf:4: sensor 'front': a camera of 0x240 pixels cannot render" in r.getMessage()
         for r in caplog.records
     )
+
+
+def _bumper_plate(plugin: bool = True) -> str:
+    plug = (
+        '<plugin name="bumper" filename="libgazebo_ros_bumper.so"><ros><namespace>/plate</namespace></ros></plugin>'
+        if plugin
+        else ""
+    )
+    return f"""<?xml version="1.0"?>
+<sdf version="1.9"><model name="plate"><static>true</static>
+  <link name="base">
+    <collision name="plate_collision"><geometry><box><size>1 1 0.02</size></box></geometry></collision>
+    <sensor name="bumper" type="contact">
+      <update_rate>50</update_rate>
+      <contact><collision>plate_collision</collision><topic>bumps</topic></contact>
+      {plug}
+    </sensor>
+  </link>
+</model></sdf>"""
+
+
+def test_a_box_dropped_on_a_bumper_plate_gives_contacts_naming_both_collisions_and_its_weight():
+    from gazelle.systems import Contacts
+    from gazelle.systems.sensors import ContactSensor
+
+    sim = Simulation(default_world(), rtf=0)
+    plate = _spawn(sim, _bumper_plate(), "plate", Pose((0.0, 0.0, 0.01)))
+    sensor = next(s for s in plate.systems if isinstance(s, ContactSensor))
+    assert sensor.output is not None and (sensor.output.topic, sensor.output.frame_id) == (
+        "/plate/bumper_states",
+        "world",
+    )
+    got = _record(sim, "/plate/bumper_states")
+    sim.step(100)
+    assert got and all(msg.states == () for msg in got)  # nothing on it yet
+    box = load_string(BOX_2KG).value
+    sim.spawn(box, name="box", pose=Pose((0.0, 0.0, 0.3)))
+    sim.step(1500)  # falls and comes to rest
+    msg: Contacts = got[-1]
+    assert msg.stamp_sec == pytest.approx(1.6, abs=1e-9)
+    assert [(s.collision1, s.collision2) for s in msg.states] == [("plate::base::plate_collision", "box::link::c")]
+    pair = msg.states[0]
+    total = np.sum(pair.forces, axis=0)
+    assert total == pytest.approx((0.0, 0.0, -2.0 * 9.8), abs=0.05)  # the box's weight, on the plate
+    assert all(n == pytest.approx((0.0, 0.0, -1.0), abs=1e-6) for n in pair.normals)  # from the box into the plate
+    assert all(abs(p[2] - 0.02) < 0.002 for p in pair.positions) and all(0 <= d < 1e-3 for d in pair.depths)
+
+
+def test_a_gz_contact_sensor_publishes_on_its_topic_with_the_world_contact_system():
+    from gazelle.systems.sensors import ContactSensor
+
+    sim = Simulation(default_world(), rtf=0)  # the default world runs gz-sim's contact system
+    plate = _spawn(sim, _bumper_plate(plugin=False), "plate", Pose((0.0, 0.0, 0.01)))
+    sensor = next(s for s in plate.systems if isinstance(s, ContactSensor))
+    assert sensor.output is not None and sensor.output.topic == "/bumps"
+
+
+def test_a_contact_sensor_naming_a_collision_its_link_lacks_is_an_error_with_file_and_line(caplog):
+    sim = Simulation(default_world(), rtf=0)
+    with caplog.at_level(logging.ERROR):
+        _spawn(
+            sim, _bumper_plate().replace("<collision>plate_collision</collision>", "<collision>nope</collision>"), "p"
+        )
+    assert any(
+        "<string>.sdf:5: contact sensor 'bumper': its <collision> nope is not a collision of link 'base'"
+        in r.getMessage()
+        for r in caplog.records
+    ), [r.getMessage() for r in caplog.records]
+
+
+def _gps_box() -> str:
+    return """<?xml version="1.0"?>
+<sdf version="1.9"><model name="rover"><static>true</static>
+  <link name="base">
+    <sensor name="gps" type="gps">
+      <update_rate>10</update_rate>
+      <plugin name="gps" filename="libgazebo_ros_gps_sensor.so"><ros><remapping>~/out:=fix</remapping></ros></plugin>
+    </sensor>
+  </link>
+</model></sdf>"""
+
+
+def test_a_gps_moved_100_m_north_changes_latitude_by_100_m_over_the_earth_radius():
+    from gazelle.description import SphericalCoordinates
+    from gazelle.systems import NavSatFix
+    from gazelle.systems.sensors import GpsSensor
+
+    origin = SphericalCoordinates(latitude_deg=47.0, longitude_deg=8.0, elevation=400.0)
+    sim = Simulation(dataclasses.replace(default_world(), spherical_coordinates=origin), rtf=0)
+    entity = _spawn(sim, _gps_box(), "rover")
+    gps = next(s for s in entity.systems if isinstance(s, GpsSensor))
+    fixes, vels = _record(sim, "/fix"), _record(sim, "/gps/vel")
+    sim.step(1)
+    home: NavSatFix = fixes[-1]
+    assert (home.latitude, home.longitude, home.altitude) == pytest.approx((47.0, 8.0, 400.0), abs=1e-9)
+    sim.world.set_entity_state("rover", Pose((0.0, 100.0, 0.0)))  # ENU, heading 0: +y is north
+    sim.step(100)
+    north: NavSatFix = fixes[-1]
+    earth = 6_371_000.0
+    assert math.radians(north.latitude - 47.0) == pytest.approx(100.0 / earth, rel=0.01)
+    assert north.longitude == pytest.approx(8.0, abs=1e-9)
+    sim.world.set_entity_state("rover", Pose((100.0, 0.0, 10.0)))  # +x is east
+    sim.step(100)
+    east: NavSatFix = fixes[-1]
+    assert math.radians(east.longitude - 8.0) * math.cos(math.radians(47.0)) == pytest.approx(100.0 / earth, rel=0.01)
+    assert east.altitude == pytest.approx(410.0, abs=1e-6)
+    assert vels and vels[-1].vector == pytest.approx((0.0, 0.0, 0.0), abs=1e-9)
+    assert gps.output is not None and gps.output.frame_id == "base"
+
+
+def _arm(sensor: str = "", plugin: str = "") -> str:
+    return f"""<?xml version="1.0"?>
+<sdf version="1.9"><model name="arm">
+  <link name="base"><inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial></link>
+  <joint name="mount" type="fixed"><parent>world</parent><child>base</child></joint>
+  <link name="bob"><pose>0.5 0 1 0 0 0</pose>
+    <inertial><mass>2</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial></link>
+  <joint name="wrist" type="fixed"><pose relative_to="base">0 0 1 0 0 0</pose><parent>base</parent><child>bob</child>
+    {sensor}
+  </joint>
+  {plugin}
+</model></sdf>"""
+
+
+def test_a_force_torque_sensor_reads_the_weight_and_moment_a_joint_carries():
+    from gazelle.systems.sensors import ForceTorqueSensor
+
+    world = dataclasses.replace(default_world(), gravity=(0.0, 0.0, -9.81))
+    gz = """<sensor name="ft" type="force_torque"><update_rate>100</update_rate>
+      <force_torque><frame>child</frame><measure_direction>parent_to_child</measure_direction></force_torque></sensor>"""
+    ros = """<plugin name="ft" filename="libgazebo_ros_ft_sensor.so">
+      <ros><namespace>/arm</namespace></ros><joint_name>wrist</joint_name><update_rate>100</update_rate></plugin>"""
+    for sensor, plugin, topic in (
+        (gz, "", "/world/default/model/arm/joint/wrist/sensor/ft/forcetorque"),
+        ("", ros, "/arm/wrench"),
+    ):
+        sim = Simulation(world, rtf=0)
+        entity = _spawn(sim, _arm(sensor, plugin), "arm")
+        ft = next(s for s in entity.systems if isinstance(s, ForceTorqueSensor))
+        assert ft.topic == topic and ft.frame_id == "bob"
+        got = _record(sim, topic)
+        sim.step(20)
+        w = got[-1]
+        # the 2 kg bob hangs 0.5 m out from the wrist: the parent holds up 19.62 N and -9.81 N m about y
+        assert w.force == pytest.approx((0.0, 0.0, 2 * 9.81), abs=1e-6)
+        assert w.torque == pytest.approx((0.0, -0.5 * 2 * 9.81, 0.0), abs=1e-6)
+    # gz's default direction: what the child exerts on the parent
+    sim = Simulation(world, rtf=0)
+    entity = _spawn(sim, _arm(gz.replace("parent_to_child", "child_to_parent")), "arm")
+    ft = next(s for s in entity.systems if isinstance(s, ForceTorqueSensor))
+    sim.step(2)
+    f, _t = ft.read(sim.world)
+    assert f == pytest.approx((0.0, 0.0, -2 * 9.81), abs=1e-6)

@@ -322,6 +322,9 @@ class Sensor:
     config: ConfigElement | None = None
     plugins: tuple[Plugin, ...] = ()
     location: SourceLocation | None = None
+    joint: str = ""
+    """For a sensor on a joint (force_torque): the joint's name. The sensor is kept with the joint's
+    child link, and ``pose`` is then in the joint's frame."""
 
 
 # --------------------------------------------------------------------------- kinematics
@@ -594,6 +597,21 @@ class Scene:
 
 
 @dataclass(frozen=True, slots=True)
+class SphericalCoordinates:
+    """``<spherical_coordinates>``: where the world's origin is on the Earth (GPS sensors read it)."""
+
+    latitude_deg: float = 0.0
+    longitude_deg: float = 0.0
+    elevation: float = 0.0
+    """Metres above the WGS84 ellipsoid."""
+    heading_deg: float = 0.0
+    """Rotation of the world frame from ``world_frame_orientation`` about the downward vertical
+    (North to East positive), as SDF defines it."""
+    surface_model: str = "EARTH_WGS84"
+    world_frame_orientation: str = "ENU"
+
+
+@dataclass(frozen=True, slots=True)
 class World:
     """A world: settings, models and lights."""
 
@@ -606,6 +624,8 @@ class World:
     plugins: tuple[Plugin, ...] = ()
     source_file: str = ""
     location: SourceLocation | None = None
+    spherical_coordinates: SphericalCoordinates | None = None
+    """None: the world does not say (GPS sensors then place its origin at 0° N, 0° E, as gz-sim does)."""
 
 
 @dataclass(frozen=True, slots=True)

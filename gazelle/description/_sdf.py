@@ -69,6 +69,7 @@ from ._model import (
     Scene,
     Sensor,
     Sphere,
+    SphericalCoordinates,
     Surface,
     Visual,
     World,
@@ -144,10 +145,15 @@ _USED: dict[str, frozenset[str]] = {
     "contact": frozenset({"ode", "collide_bitmask"}),
     "contact_ode": frozenset({"kp", "kd", "min_depth", "max_vel", "soft_cfm", "soft_erp"}),
     "bounce": frozenset({"restitution_coefficient"}),
-    "joint": frozenset({"parent", "child", "pose", "axis", "axis2", "thread_pitch", "screw_thread_pitch"}),
+    "joint": frozenset({"parent", "child", "pose", "axis", "axis2", "thread_pitch", "screw_thread_pitch", "sensor"}),
     "axis": frozenset({"xyz", "limit", "dynamics", "use_parent_model_frame", "mimic"}),
     "limit": frozenset({"lower", "upper", "effort", "velocity"}),
-    "world": frozenset({"gravity", "physics", "scene", "light", "model", "include", "plugin", "frame"}),
+    "world": frozenset(
+        {"gravity", "physics", "scene", "light", "model", "include", "plugin", "frame", "spherical_coordinates"}
+    ),
+    "spherical_coordinates": frozenset(
+        {"surface_model", "world_frame_orientation", "latitude_deg", "longitude_deg", "elevation", "heading_deg"}
+    ),
     "physics": frozenset({"max_step_size", "real_time_factor", "real_time_update_rate", "gravity", "update_rate"}),
     "scene": frozenset({"ambient", "background", "shadows", "grid"}),
     "light": frozenset({"pose", "diffuse", "specular", "direction", "cast_shadows", "attenuation"}),
@@ -220,6 +226,8 @@ class _Built:
     """X_MJ of joints whose parent is ``world`` (their origin needs the model's world pose)."""
     frames: list[Frame] = field(default_factory=list)
     plugins: list[Plugin] = field(default_factory=list)
+    joint_sensors: dict[str, list[Sensor]] = field(default_factory=dict)
+    """Child link name -> the sensors of joints above it (force_torque)."""
     exported: ScopeFrames = field(default_factory=ScopeFrames)
     doc: _Doc | None = None
     location: SourceLocation | None = None
@@ -910,7 +918,12 @@ class _Loader:
             return None
         return Model(
             name=built.name,
-            links=tuple(built.links),
+            links=tuple(
+                replace(lk, sensors=(*lk.sensors, *built.joint_sensors[lk.name]))
+                if lk.name in built.joint_sensors
+                else lk
+                for lk in built.links
+            ),
             joints=tuple(joints),
             frames=tuple(built.frames),
             plugins=tuple(built.plugins),
@@ -1385,6 +1398,11 @@ class _Loader:
         if parent == "world":
             built.world_joints[name] = X_MJ
         built.joints.append(joint)
+        for sen_el in _findall(element, "sensor"):  # force_torque: kept with the child link
+            pose, _rel = self.pose(sen_el, doc)  # in the joint frame
+            sensor = self.sensor(sen_el, doc, pose)
+            if sensor is not None:
+                built.joint_sensors.setdefault(child, []).append(replace(sensor, joint=name))
 
     def axis(self, joint: str, element: etree._Element, doc: _Doc, scope: Scope, X_MJ: Pose):
         """An axis in the joint frame, plus its mimic (1.11), converting older frame conventions."""
@@ -1508,6 +1526,25 @@ class _Loader:
             gravity = self.vector(element, "gravity", 3, gravity, doc)
         elif physics_el is not None:
             gravity = self.vector(physics_el, "gravity", 3, gravity, doc)
+        spherical = None
+        sph_el = _find(element, "spherical_coordinates")
+        if sph_el is not None:
+            self.check(sph_el, doc, "spherical_coordinates")
+            orientation = (self.text(sph_el, "world_frame_orientation") or "ENU").strip().upper()
+            if orientation != "ENU":
+                self.sink.warning(
+                    ErrorCode.VALUE_INVALID,
+                    f"<world_frame_orientation> {orientation} is not simulated; GPS sensors assume ENU",
+                    self.loc(sph_el, doc),
+                )
+            spherical = SphericalCoordinates(
+                latitude_deg=self.number(sph_el, "latitude_deg", 0.0, doc),
+                longitude_deg=self.number(sph_el, "longitude_deg", 0.0, doc),
+                elevation=self.number(sph_el, "elevation", 0.0, doc),
+                heading_deg=self.number(sph_el, "heading_deg", 0.0, doc),
+                surface_model=(self.text(sph_el, "surface_model") or "EARTH_WGS84").strip(),
+                world_frame_orientation=orientation,
+            )
         default_physics = PhysicsSettings()
         step = self.number(physics_el, "max_step_size", default_physics.max_step_size_sec, doc)
         rate_tag = (
@@ -1634,6 +1671,7 @@ class _Loader:
             plugins=plugins,
             source_file=doc.source,
             location=loc,
+            spherical_coordinates=spherical,
         )
 
 

@@ -16,7 +16,7 @@ import dataclasses
 import math
 import os
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
@@ -627,8 +627,14 @@ class _Reader:
         elif reference in doc.links:
             self.apply_link_gazebo(element, doc.links[reference], doc)
         elif reference in doc.joints:
+            joint = doc.joints[reference]
             for child in child_elements(element):
-                self.unsupported(child, f'<{local_name(child)}> in <gazebo reference="{reference}"> (a joint)')
+                if local_name(child) == "sensor" and joint is not None and joint.child in doc.links:
+                    sensor = self.sensor(child)  # force_torque: kept with the joint's child link
+                    if sensor is not None:
+                        doc.links[joint.child].sensors.append(replace(sensor, joint=reference))
+                else:
+                    self.unsupported(child, f'<{local_name(child)}> in <gazebo reference="{reference}"> (a joint)')
         else:
             self.warn(
                 ErrorCode.GAZEBO_REFERENCE_INVALID,

@@ -19,6 +19,7 @@ from ._render import OffscreenRenderer as OffscreenRenderer
 from ._render import RenderError as RenderError
 from ._world import MAX_COORDINATE_M as MAX_COORDINATE_M
 from ._world import WORLD_FRAMES as WORLD_FRAMES
+from ._world import ContactPoint as ContactPoint
 from ._world import Entity as Entity
 from ._world import EntityState as EntityState
 from ._world import ErrorKind as ErrorKind
@@ -30,6 +31,7 @@ from ._world import build_failed as build_failed
 from ._world import pose_out_of_range as pose_out_of_range
 
 __all__ = [
+    "ContactPoint",
     "ActuatorHandle",
     "ActuatorKind",
     "BodyHandle",

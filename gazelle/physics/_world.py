@@ -211,6 +211,27 @@ def _quat_matrix(q: tuple[float, float, float, float]) -> np.ndarray:
     return out.reshape(3, 3)
 
 
+@dataclass(frozen=True)
+class ContactPoint:
+    """One MuJoCo contact, seen from the side of ``collision1``: the force and torque that
+    ``collision2`` exerts on ``collision1`` (world frame, at the contact point), the normal pointing
+    from ``collision2`` into ``collision1``, and the penetration depth (positive when overlapping)."""
+
+    collision1: str
+    collision2: str
+    """Gazebo-style scoped names: ``model::link::collision``."""
+    position: tuple[float, float, float]
+    normal: tuple[float, float, float]
+    force: tuple[float, float, float]
+    torque: tuple[float, float, float]
+    depth: float
+
+
+def _gazebo_collision_name(geom_name: str) -> str:
+    """``entity::link::collision#i`` (MuJoCo) -> ``entity::link::collision`` (Gazebo)."""
+    return geom_name.rsplit("#", 1)[0] if "#" in geom_name else geom_name
+
+
 class PhysicsWorld:
     """MuJoCo model + data, with spawn and delete while running."""
 
@@ -669,6 +690,60 @@ class PhysicsWorld:
             specular=list(light.specular[:3]),
             castshadow=bool(light.cast_shadows),
         )
+
+    def joint_wrench(self, entity: str, child_link: str, point: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(force, torque) that the parent exerts on ``child_link`` through the joint above it, in the
+        world frame, the torque about ``point`` (world). From MuJoCo's ``cfrc_int`` (after
+        ``mj_rnePostConstraint``: derived fields only, the trajectory is unchanged), so gravity and
+        motion of the child's whole subtree are in it, as a force-torque sensor at the joint reads."""
+        self._refresh_kinematics()
+        m, d = self.model, self.data
+        mujoco.mj_rnePostConstraint(m, d)
+        bid = self.body_id(entity, child_link)
+        torque_c, force = np.array(d.cfrc_int[bid, :3]), np.array(d.cfrc_int[bid, 3:])
+        c = d.subtree_com[int(m.body_rootid[bid])]  # cfrc_int is about its tree's centre of mass
+        return force, torque_c + np.cross(c - point, force)
+
+    def collision_geoms(self, entity: str, link: str, collision: str | None = None) -> frozenset[int]:
+        """MuJoCo ids of a link's collision geoms (every convex part of a decomposed mesh), or of its
+        collision named ``collision`` (valid until the next recompile)."""
+        prefix = scoped(entity, f"{link}{SEP}{collision}#") if collision else scoped(entity, f"{link}{SEP}")
+        m = self.model
+        out = set()
+        for i in range(m.ngeom):
+            name = mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_GEOM, i) or ""
+            if name.startswith(prefix) and "#v" not in name[len(prefix) - 1 :]:
+                out.add(i)
+        return frozenset(out)
+
+    def contacts_of(self, geoms: frozenset[int]) -> list[ContactPoint]:
+        """The current contacts that involve any of ``geoms``, each seen from that geom's side."""
+        m, d = self.model, self.data
+        out: list[ContactPoint] = []
+        f6 = np.zeros(6)
+        for i in range(int(d.ncon)):
+            c = d.contact[i]
+            g1, g2 = int(c.geom1), int(c.geom2)
+            if g1 not in geoms and g2 not in geoms:
+                continue
+            mujoco.mj_contactForce(m, d, i, f6)
+            frame = np.asarray(c.frame, dtype=float).reshape(3, 3)  # rows: normal (geom1 -> geom2), tangents
+            force_w = frame.T @ f6[:3]  # MuJoCo: the force geom1 exerts on geom2, in the contact frame
+            torque_w = frame.T @ f6[3:]
+            mine, other, sign = (g1, g2, -1.0) if g1 in geoms else (g2, g1, 1.0)
+            normal = sign * frame[0]  # MuJoCo's normal points from geom1 to geom2: turned to point into mine
+            out.append(
+                ContactPoint(
+                    _gazebo_collision_name(mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_GEOM, mine) or str(mine)),
+                    _gazebo_collision_name(mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_GEOM, other) or str(other)),
+                    tuple(float(v) for v in c.pos),  # type: ignore[arg-type]
+                    tuple(float(v) for v in normal),  # type: ignore[arg-type]
+                    tuple(float(v) for v in sign * force_w),  # type: ignore[arg-type]
+                    tuple(float(v) for v in sign * torque_w),  # type: ignore[arg-type]
+                    float(-c.dist),
+                )
+            )
+        return out
 
     def offscreen_renderer(self, width: int, height: int) -> OffscreenRenderer:
         """A renderer of this world's images (create and use it on the simulation thread)."""

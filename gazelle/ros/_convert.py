@@ -6,16 +6,20 @@ import math
 from array import array
 
 from builtin_interfaces.msg import Time
-from geometry_msgs.msg import Point, Quaternion, TransformStamped, Vector3
+from gazebo_msgs.msg import ContactsState, ContactState
+from geometry_msgs.msg import Point, Quaternion, TransformStamped, Vector3, Wrench
 from geometry_msgs.msg import Pose as PoseMsg
 from geometry_msgs.msg import Twist as TwistMsg
+from geometry_msgs.msg import Vector3Stamped as Vector3StampedMsg
+from geometry_msgs.msg import WrenchStamped as WrenchStampedMsg
 from nav_msgs.msg import Odometry as OdometryMsg
 from sensor_msgs.msg import CameraInfo as CameraInfoMsg
 from sensor_msgs.msg import Image as ImageMsg
 from sensor_msgs.msg import Imu as ImuMsg
 from sensor_msgs.msg import JointState as JointStateMsg
 from sensor_msgs.msg import LaserScan as LaserScanMsg
-from sensor_msgs.msg import PointCloud2, PointField
+from sensor_msgs.msg import NavSatFix as NavSatFixMsg
+from sensor_msgs.msg import NavSatStatus, PointCloud2, PointField
 from sensor_msgs.msg import Range as RangeMsg
 from std_msgs.msg import Float64 as Float64Msg
 from std_msgs.msg import String as StringMsg
@@ -24,18 +28,22 @@ from tf2_msgs.msg import TFMessage
 from ..description import Pose
 from ..systems import (
     CameraInfo,
+    Contacts,
     Float64,
     Image,
     Imu,
     JointStates,
     LaserScan,
     MsgType,
+    NavSatFix,
     Odometry,
     PointCloud,
     Range,
     Transform,
     TransformBatch,
     Twist,
+    Vector3Stamped,
+    WrenchStamped,
 )
 
 
@@ -205,6 +213,62 @@ def to_camera_info_msg(c: CameraInfo) -> CameraInfoMsg:
     return msg
 
 
+def _vec(v) -> Vector3:
+    return Vector3(x=float(v[0]), y=float(v[1]), z=float(v[2]))
+
+
+def to_contacts_msg(c: Contacts) -> ContactsState:
+    """gazebo_msgs/ContactsState (one ContactState per pair of collisions in contact)."""
+    msg = ContactsState()
+    msg.header.stamp = to_time(c.stamp_sec)
+    msg.header.frame_id = c.frame_id
+    for pair in c.states:
+        st = ContactState()
+        st.info = f"{len(pair.depths)} contact point(s) of {pair.collision1} with {pair.collision2}"
+        st.collision1_name, st.collision2_name = pair.collision1, pair.collision2
+        st.wrenches = [Wrench(force=_vec(f), torque=_vec(t)) for f, t in zip(pair.forces, pair.torques)]
+        st.total_wrench = Wrench(
+            force=_vec([sum(f[i] for f in pair.forces) for i in range(3)]),
+            torque=_vec([sum(t[i] for t in pair.torques) for i in range(3)]),
+        )
+        st.contact_positions = [_vec(p) for p in pair.positions]
+        st.contact_normals = [_vec(n) for n in pair.normals]
+        st.depths = [float(d) for d in pair.depths]
+        msg.states.append(st)  # pyright: ignore[reportAttributeAccessIssue]
+    return msg
+
+
+def to_nav_sat_fix_msg(f: NavSatFix) -> NavSatFixMsg:
+    """sensor_msgs/NavSatFix with a fix from the GPS service."""
+    msg = NavSatFixMsg()
+    msg.header.stamp = to_time(f.stamp_sec)
+    msg.header.frame_id = f.frame_id
+    msg.status.status = NavSatStatus.STATUS_FIX
+    msg.status.service = NavSatStatus.SERVICE_GPS
+    msg.latitude, msg.longitude, msg.altitude = f.latitude, f.longitude, f.altitude
+    msg.position_covariance = array("d", f.position_covariance)
+    msg.position_covariance_type = f.covariance_type
+    return msg
+
+
+def to_vector3_stamped_msg(v: Vector3Stamped) -> Vector3StampedMsg:
+    """geometry_msgs/Vector3Stamped."""
+    msg = Vector3StampedMsg()
+    msg.header.stamp = to_time(v.stamp_sec)
+    msg.header.frame_id = v.frame_id
+    msg.vector = _vec(v.vector)
+    return msg
+
+
+def to_wrench_stamped_msg(w: WrenchStamped) -> WrenchStampedMsg:
+    """geometry_msgs/WrenchStamped."""
+    msg = WrenchStampedMsg()
+    msg.header.stamp = to_time(w.stamp_sec)
+    msg.header.frame_id = w.frame_id
+    msg.wrench = Wrench(force=_vec(w.force), torque=_vec(w.torque))
+    return msg
+
+
 def _to_tf(batch: TransformBatch) -> TFMessage:
     return TFMessage(transforms=[to_transform_msg(t) for t in batch.transforms])
 
@@ -223,6 +287,10 @@ ROS_TYPES = {
     MsgType.IMU: ImuMsg,
     MsgType.IMAGE: ImageMsg,
     MsgType.CAMERA_INFO: CameraInfoMsg,
+    MsgType.CONTACTS: ContactsState,
+    MsgType.NAV_SAT_FIX: NavSatFixMsg,
+    MsgType.VECTOR3_STAMPED: Vector3StampedMsg,
+    MsgType.WRENCH_STAMPED: WrenchStampedMsg,
 }
 """The rclpy message class for each bus message type."""
 
@@ -240,6 +308,10 @@ TO_ROS = {
     MsgType.IMU: to_imu_msg,
     MsgType.IMAGE: to_image_msg,
     MsgType.CAMERA_INFO: to_camera_info_msg,
+    MsgType.CONTACTS: to_contacts_msg,
+    MsgType.NAV_SAT_FIX: to_nav_sat_fix_msg,
+    MsgType.VECTOR3_STAMPED: to_vector3_stamped_msg,
+    MsgType.WRENCH_STAMPED: to_wrench_stamped_msg,
 }
 FROM_ROS = {
     MsgType.TWIST: from_twist_msg,

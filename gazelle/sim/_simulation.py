@@ -137,6 +137,7 @@ class Simulation:
         """(lags not yet reported, their wall seconds lost, wall time of the last report)."""
         self.world_name = world.name
         self.world_plugins = world.plugins
+        self.spherical_coordinates = world.spherical_coordinates
         """The world's plugins: gz-sim's sensor systems among them run the sensors without a gazebo_ros plugin."""
         for problem in audit_world(World(name=world.name, plugins=world.plugins)):
             _log.warning(problem.format())
@@ -422,6 +423,7 @@ class Simulation:
                         sensor=plan.sensor,
                         link=plan.link,
                         world_name=self.world_name,
+                        spherical_coordinates=self.spherical_coordinates,
                     )
                 )
             if self.robot_state_publisher and (entity.model.joints or entity.model.urdf):

@@ -22,6 +22,8 @@ from ._base import SystemManager as SystemManager
 from ._base import UpdateInfo as UpdateInfo
 from ._bus import Bus as Bus
 from ._bus import CameraInfo as CameraInfo
+from ._bus import ContactPair as ContactPair
+from ._bus import Contacts as Contacts
 from ._bus import Endpoint as Endpoint
 from ._bus import Float64 as Float64
 from ._bus import Image as Image
@@ -29,6 +31,7 @@ from ._bus import Imu as Imu
 from ._bus import JointStates as JointStates
 from ._bus import LaserScan as LaserScan
 from ._bus import MsgType as MsgType
+from ._bus import NavSatFix as NavSatFix
 from ._bus import Odometry as Odometry
 from ._bus import PointCloud as PointCloud
 from ._bus import Qos as Qos
@@ -37,6 +40,8 @@ from ._bus import Text as Text
 from ._bus import Transform as Transform
 from ._bus import TransformBatch as TransformBatch
 from ._bus import Twist as Twist
+from ._bus import Vector3Stamped as Vector3Stamped
+from ._bus import WrenchStamped as WrenchStamped
 from ._bus import resolve_topic as resolve_topic
 from ._registry import SensorPlan as SensorPlan
 from ._registry import audit_model as audit_model
@@ -51,6 +56,8 @@ from .robot_state import robot_state_config as robot_state_config
 __all__ = [
     "Bus",
     "CameraInfo",
+    "ContactPair",
+    "Contacts",
     "Endpoint",
     "Float64",
     "Image",
@@ -58,6 +65,7 @@ __all__ = [
     "JointStates",
     "LaserScan",
     "MsgType",
+    "NavSatFix",
     "Odometry",
     "PHYSICS",
     "PRE_PHYSICS",
@@ -76,6 +84,8 @@ __all__ = [
     "Transform",
     "TransformBatch",
     "Twist",
+    "Vector3Stamped",
+    "WrenchStamped",
     "UpdateInfo",
     "VelocityServo",
     "add_position_servo",

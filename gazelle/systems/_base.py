@@ -21,7 +21,7 @@ import math
 from dataclasses import dataclass
 from typing import NamedTuple
 
-from ..description import ConfigElement, Plugin, Sensor
+from ..description import ConfigElement, Plugin, Sensor, SphericalCoordinates
 from ..physics import Entity, PhysicsWorld
 from ._bus import Bus
 
@@ -64,6 +64,8 @@ class SystemContext:
     """The link that ``sensor`` is on."""
     world_name: str = "default"
     """The world's name (gz-sim's default sensor topics contain it)."""
+    spherical_coordinates: SphericalCoordinates | None = None
+    """Where the world's origin is on the Earth (GPS sensors)."""
 
 
 class System:

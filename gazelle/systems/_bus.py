@@ -169,6 +169,61 @@ class CameraInfo:
     p: tuple[float, ...]
 
 
+@dataclass(frozen=True, slots=True)
+class ContactPair:
+    """gazebo_msgs/ContactState: the contacts between two collisions, forces on ``collision1``."""
+
+    collision1: str
+    collision2: str
+    positions: tuple[Vec3, ...]
+    normals: tuple[Vec3, ...]
+    forces: tuple[Vec3, ...]
+    torques: tuple[Vec3, ...]
+    depths: tuple[float, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Contacts:
+    """gazebo_msgs/ContactsState."""
+
+    stamp_sec: float
+    frame_id: str
+    states: tuple[ContactPair, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class NavSatFix:
+    """sensor_msgs/NavSatFix (status FIX, service GPS)."""
+
+    stamp_sec: float
+    frame_id: str
+    latitude: float
+    longitude: float
+    altitude: float
+    position_covariance: tuple[float, ...] = (0.0,) * 9
+    covariance_type: int = 0
+    """0 unknown, 1 approximated, 2 diagonal known, 3 known."""
+
+
+@dataclass(frozen=True, slots=True)
+class Vector3Stamped:
+    """geometry_msgs/Vector3Stamped."""
+
+    stamp_sec: float
+    frame_id: str
+    vector: Vec3
+
+
+@dataclass(frozen=True, slots=True)
+class WrenchStamped:
+    """geometry_msgs/WrenchStamped."""
+
+    stamp_sec: float
+    frame_id: str
+    force: Vec3
+    torque: Vec3
+
+
 class MsgType(enum.Enum):
     """The ROS message type each payload maps to."""
 
@@ -186,6 +241,10 @@ class MsgType(enum.Enum):
     IMU = "sensor_msgs/msg/Imu"
     IMAGE = "sensor_msgs/msg/Image"
     CAMERA_INFO = "sensor_msgs/msg/CameraInfo"
+    CONTACTS = "gazebo_msgs/msg/ContactsState"
+    NAV_SAT_FIX = "sensor_msgs/msg/NavSatFix"
+    VECTOR3_STAMPED = "geometry_msgs/msg/Vector3Stamped"
+    WRENCH_STAMPED = "geometry_msgs/msg/WrenchStamped"
 
 
 class Qos(enum.Enum):

@@ -82,6 +82,24 @@ def _camera() -> System:
     return Camera()
 
 
+def _contact() -> System:
+    from .sensors import ContactSensor
+
+    return ContactSensor()
+
+
+def _gps() -> System:
+    from .sensors import GpsSensor
+
+    return GpsSensor()
+
+
+def _force_torque() -> System:
+    from .sensors import ForceTorqueSensor
+
+    return ForceTorqueSensor()
+
+
 def _p3d() -> System:
     from .pose_publisher import P3D
 
@@ -109,6 +127,7 @@ _REGISTRY: dict[str, Callable[[], System]] = {
     "ignition::gazebo::systems::JointController": _gz_joint_velocity,
     "gazelle_joint_commands": _joint_commands,
     "gazebo_ros_p3d": _p3d,
+    "gazebo_ros_ft_sensor": _force_torque,  # a model plugin naming a <joint_name>
     "gazebo_ros_imu": _imu,  # ROS 1's IMU model plugin (<bodyName>), as in TurtleBot3's noetic xacro
 }
 
@@ -120,6 +139,8 @@ _SENSOR_PLUGINS: dict[str, tuple[Callable[[], System], frozenset[str]]] = {
     "gazebo_ros_camera": (_camera, frozenset({"camera", "depth", "depth_camera", "rgbd_camera", "rgbd"})),
     "gazebo_ros_depth_camera": (_camera, frozenset({"depth", "depth_camera", "rgbd_camera", "rgbd"})),
     "gazebo_ros_openni_kinect": (_camera, frozenset({"depth", "depth_camera", "rgbd_camera", "rgbd"})),
+    "gazebo_ros_bumper": (_contact, frozenset({"contact"})),
+    "gazebo_ros_gps_sensor": (_gps, frozenset({"gps", "navsat"})),
 }
 """gazebo_ros plugins that sit inside a ``<sensor>``: the system and the sensor types they take."""
 
@@ -131,6 +152,18 @@ GZ_SENSOR_WORLD_SYSTEMS: dict[str, dict[str, Callable[[], System]]] = {
         for n in ("gz-sim-sensors-system", "gz::sim::systems::Sensors", "ignition-gazebo-sensors-system")
     },
     **{n: {"imu": _imu} for n in ("gz-sim-imu-system", "gz::sim::systems::Imu", "ignition-gazebo-imu-system")},
+    **{
+        n: {"contact": _contact}
+        for n in ("gz-sim-contact-system", "gz::sim::systems::Contact", "ignition-gazebo-contact-system")
+    },
+    **{
+        n: {"gps": _gps, "navsat": _gps}
+        for n in ("gz-sim-navsat-system", "gz::sim::systems::NavSat", "ignition-gazebo-navsat-system")
+    },
+    **{
+        n: {"force_torque": _force_torque}
+        for n in ("gz-sim-forcetorque-system", "gz::sim::systems::ForceTorque", "ignition-gazebo-forcetorque-system")
+    },
 }
 """gz-sim world systems that run the sensors of a type that have no gazebo_ros plugin."""
 
@@ -242,16 +275,7 @@ _NOT_YET: dict[str, str] = {
     **{
         n: "sensors are not simulated yet"
         for n in (
-            "gazebo_ros_bumper",
-            "gazebo_ros_gps_sensor",
-            "gazebo_ros_ft_sensor",
             "gazebo_ros_range",
-            "gz-sim-contact-system",
-            "gz::sim::systems::Contact",
-            "gz-sim-navsat-system",
-            "gz::sim::systems::NavSat",
-            "gz-sim-forcetorque-system",
-            "gz::sim::systems::ForceTorque",
             "gz-sim-altimeter-system",
             "gz-sim-magnetometer-system",
         )

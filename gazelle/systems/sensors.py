@@ -26,16 +26,32 @@ applied as configured; any other noise type is warned about with its file:line a
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from ..description import ConfigElement, Pose, Sensor, quat_conj, quat_mul
-from ..physics import BodyHandle, OffscreenRenderer, PhysicsWorld, RenderError
+from ..description import ConfigElement, Pose, Sensor, SphericalCoordinates, quat_conj, quat_mul
+from ..physics import BodyHandle, OffscreenRenderer, PerGeneration, PhysicsWorld, RenderError
 from ._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
-from ._bus import CameraInfo, Endpoint, Image, Imu, LaserScan, MsgType, PointCloud, Range, resolve_topic
+from ._bus import (
+    CameraInfo,
+    ContactPair,
+    Contacts,
+    Endpoint,
+    Image,
+    Imu,
+    LaserScan,
+    MsgType,
+    NavSatFix,
+    PointCloud,
+    Range,
+    Vector3Stamped,
+    WrenchStamped,
+    resolve_topic,
+)
 
 LIDAR_TYPES = frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"})
 CAMERA_TYPES = frozenset({"camera", "depth", "depth_camera", "rgbd_camera", "rgbd"})
@@ -336,8 +352,9 @@ class _SensorSystem(System):
         self._gate = RateGate()
         self._rng = np.random.default_rng(seed)
 
-    def _configure_common(self, ctx: SystemContext) -> bool:
-        """Read link, pose, rate and output; False (after an error naming why) when it cannot run."""
+    def _configure_common(self, ctx: SystemContext, *, advertise: bool = True) -> bool:
+        """Read link, pose, rate and output (and declare the output topic unless ``advertise`` is False);
+        False (after an error naming why) when it cannot run."""
         log = ctx.logger
         self.sensor, link = ctx.sensor, ctx.link
         self.config = c = parse_plugin_config(ctx)
@@ -360,7 +377,8 @@ class _SensorSystem(System):
         kind = {"IMU": "imu", "camera": "image"}.get(self.kind, "scan")
         self.output = sensor_output(ctx, self.link, self.sensor, kind, c)
         self._body = ctx.world.body(ctx.entity.name, self.link)
-        self._pub = ctx.bus.advertise(ctx.entity.name, self.output.topic, self.output.msg_type, depth=SENSOR_DEPTH)
+        if advertise:
+            self._pub = ctx.bus.advertise(ctx.entity.name, self.output.topic, self.output.msg_type, depth=SENSOR_DEPTH)
         return True
 
     def next_update(self, sim_time_sec: float) -> float:
@@ -414,8 +432,9 @@ class Lidar(_SensorSystem):
             f"({self.output.msg_type.value.rsplit('/', 1)[-1]}) in frame [{self.output.frame_id}]"
         )
 
-    def scan(self, world: PhysicsWorld) -> np.ndarray:
-        """Ranges (vertical-major, v rows x h columns) with noise and REP 117's ±inf."""
+    def scan(self, world: PhysicsWorld, *, noise: bool = True) -> np.ndarray:
+        """Ranges (vertical-major, v rows x h columns) with noise (unless ``noise`` is False: the viewer's
+        overlay, which must not draw from the sensor's random stream) and REP 117's ±inf."""
         assert self._body is not None
         X_WS = self.sensor_pose()
         R = _matrix(X_WS.orientation)
@@ -423,12 +442,20 @@ class Lidar(_SensorSystem):
         s = self.spec
         hit = dist >= 0
         ranges = np.where(hit, dist, np.inf)
-        if s.noise.active:
+        if noise and s.noise.active:
             n = int(hit.sum())
             ranges[hit] += s.noise.mean + (self._rng.normal(0.0, s.noise.stddev, n) if s.noise.stddev > 0 else 0.0)
         ranges[hit & (ranges < s.range_min)] = -np.inf
         ranges[hit & (ranges > s.range_max)] = np.inf
         return ranges.reshape(s.vertical.count, s.horizontal.count)
+
+    def world_points(self, world: PhysicsWorld) -> np.ndarray:
+        """The noise-free hit points of a scan now, in the world frame (N x 3, float32): the viewer's overlay."""
+        ranges = self.scan(world, noise=False).reshape(-1)
+        ok = np.isfinite(ranges)
+        X = self.sensor_pose()
+        pts = (self._dirs[ok] * ranges[ok, None]) @ _matrix(X.orientation).T + np.asarray(X.position)
+        return pts.astype(np.float32)
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         """At the sensor's rate, while listened to: scan and publish stamped with this sim time."""
@@ -847,6 +874,395 @@ class Camera(_SensorSystem):
         if self._renderer is not None:
             self._renderer.close()
             self._renderer = None
+
+
+# --------------------------------------------------------------------------- contact
+class ContactSensor(_SensorSystem):
+    """A contact sensor (``<sensor type="contact">`` with ``<contact><collision>``): every contact of its
+    collisions as gazebo_msgs/ContactsState, forces on the sensor's collision. gazebo_ros_bumper
+    publishes ``bumper_states`` in ``<frame_name>`` (default ``world``); gz-sim's contact system on
+    ``<contact><topic>``/``<topic>``, else ``/world/<w>/model/<m>/link/<l>/sensor/<s>/contact``."""
+
+    kind = "contact"
+
+    def __init__(self, seed: int | None = None) -> None:
+        super().__init__(seed)
+        self.collisions: tuple[str, ...] = ()
+        self.frame_link: str | None = None
+        self._geoms: PerGeneration[frozenset[int]] | None = None
+        self._entity = ""
+
+    def configure(self, ctx: SystemContext) -> None:
+        """Read the collisions it watches and the plugin; declare the output topic."""
+        sensor = ctx.sensor
+        if sensor is None:
+            where = f"{ctx.plugin.location}: " if ctx.plugin and ctx.plugin.location else ""
+            ctx.logger.error(f"{where}a bumper plugin must be inside a <sensor type='contact'>; it does nothing")
+            return
+        block = sensor.config.find("contact") if sensor.config is not None else None
+        names = tuple(el.text.strip() for el in (block.findall("collision") if block is not None else ()))
+        link = next((lk for lk in ctx.entity.model.links if lk.name == ctx.link), None)
+        known = {c.name for c in link.collisions} if link is not None else set()
+        where = f"{sensor.location}: " if sensor.location else ""
+        missing = [n for n in names if n not in known]
+        if not names or missing:
+            what = f"its <collision> {', '.join(missing)} is not" if missing else "it names no <collision>"
+            ctx.logger.error(
+                f"{where}contact sensor '{sensor.name}': {what} a collision of link '{ctx.link}' "
+                f"(it has {', '.join(sorted(known)) or 'none'}); it does nothing"
+            )
+            return
+        if not self._configure_common(ctx, advertise=False):
+            return
+        self.collisions = names
+        gz_topic = child_text(block, "topic")
+        assert self.output is not None
+        if ctx.plugin is None:
+            topic = sensor.topic or gz_topic or gz_scoped_topic(ctx, self.link, sensor, "contact")
+            self.output = dataclasses.replace(self.output, topic=resolve_topic(topic, ctx.entity.namespace))
+        else:
+            c = self.config
+            self.output = dataclasses.replace(
+                self.output,
+                topic=resolve_topic("bumper_states", c.namespace, dict(c.remappings)),
+                frame_id=c.frame_name or "world",
+            )
+            if c.frame_name and c.frame_name not in ("world", "map"):
+                self.frame_link = c.frame_name if c.frame_name in {lk.name for lk in ctx.entity.model.links} else None
+        self._pub = ctx.bus.advertise(ctx.entity.name, self.output.topic, MsgType.CONTACTS, depth=SENSOR_DEPTH)
+        entity, link = self._entity, self.link = ctx.entity.name, self.link
+        self._geoms = PerGeneration(lambda w: frozenset().union(*(w.collision_geoms(entity, link, n) for n in names)))
+        ctx.logger.info(
+            f"contact sensor '{sensor.name}' on [{', '.join(names)}] at {self.rate_hz:g} Hz on [{self.output.topic}]"
+        )
+
+    def read(self, world: PhysicsWorld) -> tuple[ContactPair, ...]:
+        """The current contacts of the watched collisions, grouped by pair, in the output frame."""
+        assert self._geoms is not None
+        points = world.contacts_of(self._geoms.get(world))
+        R = None
+        origin = np.zeros(3)
+        if self.frame_link is not None:
+            X = world.body(self._entity, self.frame_link).pose
+            R, origin = _matrix(X.orientation).T, np.asarray(X.position)
+        pairs: dict[tuple[str, str], list] = {}
+        for p in points:
+            pos, n, f, t = (np.asarray(v) for v in (p.position, p.normal, p.force, p.torque))
+            if R is not None:
+                pos, n, f, t = R @ (pos - origin), R @ n, R @ f, R @ t
+            pairs.setdefault((p.collision1, p.collision2), []).append((pos, n, f, t, p.depth))
+
+        def vec(a: np.ndarray) -> tuple[float, float, float]:
+            return (float(a[0]), float(a[1]), float(a[2]))
+
+        return tuple(
+            ContactPair(
+                c1,
+                c2,
+                tuple(vec(x[0]) for x in items),
+                tuple(vec(x[1]) for x in items),
+                tuple(vec(x[2]) for x in items),
+                tuple(vec(x[3]) for x in items),
+                tuple(float(x[4]) for x in items),
+            )
+            for (c1, c2), items in pairs.items()
+        )
+
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """At the sensor's rate, while listened to: publish the contacts stamped with this sim time."""
+        if not self._due(info):
+            return
+        assert self._pub is not None and self.output is not None
+        self._pub.publish(Contacts(info.sim_time_sec, self.output.frame_id, self.read(world)))
+
+
+# --------------------------------------------------------------------------- GPS
+WGS84_A = 6378137.0
+"""WGS84 equatorial radius (m)."""
+WGS84_E2 = 6.69437999014e-3
+"""WGS84 first eccentricity squared."""
+
+
+def enu_to_geodetic(east: float, north: float, up: float, origin: SphericalCoordinates) -> tuple[float, float, float]:
+    """(latitude deg, longitude deg, altitude m) of a point ``east``/``north``/``up`` metres from the
+    origin, on the WGS84 ellipsoid's local radii of curvature (exact to centimetres over kilometres)."""
+    lat0 = math.radians(origin.latitude_deg)
+    s2 = math.sin(lat0) ** 2
+    meridian = WGS84_A * (1 - WGS84_E2) / (1 - WGS84_E2 * s2) ** 1.5
+    prime = WGS84_A / math.sqrt(1 - WGS84_E2 * s2)
+    lat = origin.latitude_deg + math.degrees(north / (meridian + origin.elevation))
+    lon = origin.longitude_deg + math.degrees(east / ((prime + origin.elevation) * math.cos(lat0)))
+    return lat, lon, origin.elevation + up
+
+
+def world_to_enu(v: tuple[float, float, float], heading_deg: float) -> tuple[float, float, float]:
+    """A world-frame vector in East, North, Up: the world frame is ENU turned by ``heading`` about the
+    downward vertical (North to East positive), as SDF's ``<heading_deg>`` says."""
+    h = math.radians(heading_deg)
+    x, y, z = v
+    return (x * math.cos(h) + y * math.sin(h), -x * math.sin(h) + y * math.cos(h), z)
+
+
+@dataclass(frozen=True)
+class GpsNoise:
+    """``<gps>``/``<navsat>`` noise: position horizontal and vertical, velocity horizontal and vertical."""
+
+    position_horizontal: Noise = Noise()
+    position_vertical: Noise = Noise()
+    velocity_horizontal: Noise = Noise()
+    velocity_vertical: Noise = Noise()
+
+
+def parse_gps_noise(sensor: Sensor, log: logging.Logger) -> GpsNoise:
+    """SDF's ``<gps>`` (or ``<navsat>``) ``<position_sensing>``/``<velocity_sensing>`` noise."""
+    block = None
+    if sensor.config is not None:
+        block = sensor.config.find("navsat") or sensor.config.find("gps")
+    if block is None:
+        return GpsNoise()
+
+    def one(kind: str, axis: str) -> Noise:
+        el = block.find(kind)
+        ax = el.find(axis) if el is not None else None
+        return parse_noise(ax.find("noise") if ax is not None else None, log, f"GPS {kind} {axis}")
+
+    return GpsNoise(
+        one("position_sensing", "horizontal"),
+        one("position_sensing", "vertical"),
+        one("velocity_sensing", "horizontal"),
+        one("velocity_sensing", "vertical"),
+    )
+
+
+class GpsSensor(_SensorSystem):
+    """A GPS (``gps``/``navsat``): NavSatFix from the world's ``<spherical_coordinates>`` and, with
+    gazebo_ros_gps_sensor, the ENU velocity on ``~/vel``."""
+
+    kind = "GPS"
+
+    def __init__(self, seed: int | None = None) -> None:
+        super().__init__(seed)
+        self.origin = SphericalCoordinates()
+        self.noise = GpsNoise()
+        self._vel: Endpoint | None = None
+
+    def configure(self, ctx: SystemContext) -> None:
+        """Read the world's spherical coordinates and the noise; declare ``~/out`` and ``~/vel``."""
+        if ctx.sensor is None:
+            where = f"{ctx.plugin.location}: " if ctx.plugin and ctx.plugin.location else ""
+            ctx.logger.error(f"{where}a GPS plugin must be inside a <sensor type='gps'>; it does nothing")
+            return
+        if not self._configure_common(ctx, advertise=False):
+            return
+        assert self.output is not None
+        if ctx.plugin is None:  # gz navsat: <topic> or .../navsat
+            topic = ctx.sensor.topic or gz_scoped_topic(ctx, self.link, ctx.sensor, "navsat")
+            self.output = dataclasses.replace(self.output, topic=resolve_topic(topic, ctx.entity.namespace))
+        self._pub = ctx.bus.advertise(ctx.entity.name, self.output.topic, MsgType.NAV_SAT_FIX, depth=SENSOR_DEPTH)
+        if ctx.plugin is not None:
+            c = self.config
+            vel = resolve_topic("~/vel", c.namespace, dict(c.remappings), node=ctx.plugin.name)
+            self._vel = ctx.bus.advertise(ctx.entity.name, vel, MsgType.VECTOR3_STAMPED, depth=SENSOR_DEPTH)
+        if ctx.spherical_coordinates is None:
+            where = f"{ctx.sensor.location}: " if ctx.sensor.location else ""
+            ctx.logger.warning(
+                f"{where}GPS '{ctx.sensor.name}': the world has no <spherical_coordinates>; its origin is 0° N 0° E"
+            )
+        self.origin = ctx.spherical_coordinates or SphericalCoordinates()
+        self.noise = parse_gps_noise(ctx.sensor, ctx.logger)
+        ctx.logger.info(f"GPS '{ctx.sensor.name}' at {self.rate_hz:g} Hz on [{self.output.topic}]")
+
+    def read(self, world: PhysicsWorld) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
+        """((latitude, longitude, altitude), ENU velocity) of the sensor now, with noise."""
+        assert self._body is not None
+        X = self.sensor_pose()
+        h = self.origin.heading_deg
+        e, n, u = world_to_enu(X.position, h)
+        lin, ang = self._body.velocity
+        r = np.asarray(X.position) - np.asarray(self._body.pose.position)
+        v = np.asarray(lin) + np.cross(np.asarray(ang), r)  # the sensor point's velocity
+        ve, vn, vu = world_to_enu((float(v[0]), float(v[1]), float(v[2])), h)
+        nz = self.noise
+
+        def noisy(value: float, noise: Noise) -> float:
+            if not noise.active:
+                return value
+            return value + noise.mean + (float(self._rng.normal(0.0, noise.stddev)) if noise.stddev > 0 else 0.0)
+
+        e, n = noisy(e, nz.position_horizontal), noisy(n, nz.position_horizontal)
+        u = noisy(u, nz.position_vertical)
+        ve, vn = noisy(ve, nz.velocity_horizontal), noisy(vn, nz.velocity_horizontal)
+        vu = noisy(vu, nz.velocity_vertical)
+        return enu_to_geodetic(e, n, u, self.origin), (ve, vn, vu)
+
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """At the sensor's rate, while listened to: publish the fix (and the velocity) stamped with this sim time."""
+        if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.rate_hz):
+            return
+        want_fix = self._pub.wanted
+        want_vel = self._vel is not None and self._vel.wanted
+        if not (want_fix or want_vel):
+            return
+        assert self.output is not None
+        (lat, lon, alt), vel = self.read(world)
+        t, frame = info.sim_time_sec, self.output.frame_id
+        if want_fix:
+            sh, sv = self.noise.position_horizontal.stddev, self.noise.position_vertical.stddev
+            cov = (sh * sh, 0.0, 0.0, 0.0, sh * sh, 0.0, 0.0, 0.0, sv * sv)
+            self._pub.publish(NavSatFix(t, frame, lat, lon, alt, cov, 2 if any(cov) else 0))
+        if want_vel and self._vel is not None:
+            self._vel.publish(Vector3Stamped(t, frame, vel))
+
+
+# --------------------------------------------------------------------------- force-torque
+@dataclass(frozen=True)
+class ForceTorqueConfig:
+    """Parameters of ``libgazebo_ros_ft_sensor.so`` (a model plugin), and of a gz-sim
+    ``<sensor type="force_torque">`` in a ``<joint>``."""
+
+    joint_name: str = ""
+    """``<joint_name>`` (ROS 1: ``<jointName>``); for a gz-sim sensor, the joint it is in."""
+    frame: str = "child"
+    """gz-sim ``<force_torque><frame>``: child, parent or sensor. The plugin reports in the child frame."""
+    measure_direction: str = "child_to_parent"
+    """gz-sim ``<measure_direction>``: child_to_parent or parent_to_child (the plugin's)."""
+    update_rate: float = 0.0
+    """``<update_rate>`` (ROS 1: ``<updateRate>``), Hz of sim time; 0 = every step."""
+    gaussian_noise: float = 0.0
+    """``<gaussian_noise>`` (ROS 1: ``<gaussianNoise>``): standard deviation on every component."""
+    topic: str = "wrench"
+    """The plugin's topic (ROS 1: ``<topicName>``); gz-sim: ``<topic>``."""
+
+
+class ForceTorqueSensor(System):
+    """The wrench through a joint (geometry_msgs/WrenchStamped), at the joint's origin.
+
+    * gz-sim (``<sensor type="force_torque">`` in a ``<joint>``, with the world's
+      ``gz-sim-forcetorque-system``): ``<force_torque><frame>`` child (default), parent or sensor, and
+      ``<measure_direction>`` child_to_parent (default: what the child exerts on the parent) or
+      parent_to_child; on ``<topic>``, else ``/world/<w>/model/<m>/joint/<j>/sensor/<s>/forcetorque``.
+    * gazebo_ros (``libgazebo_ros_ft_sensor.so``, a model plugin): ``<joint_name>`` (ROS 1:
+      ``<jointName>``), ``<update_rate>``, ``<gaussian_noise>``; the wrench on the child link in its
+      frame, on ``wrench`` (ROS 1: ``<topicName>``) under ``<ros><namespace>``.
+    """
+
+    def __init__(self, seed: int | None = None) -> None:
+        self.config = ForceTorqueConfig()
+        self.joint = ""
+        self.parent = ""
+        self.child = ""
+        self.frame = "child"
+        self.parent_to_child = False
+        self.rate_hz = 0.0
+        self.noise = 0.0
+        self.offset = Pose()
+        """The sensor frame in the joint frame (frame "sensor")."""
+        self.frame_id = ""
+        self.topic = ""
+        self._X_CJ = Pose()
+        """The joint frame in the child link frame."""
+        self._entity = ""
+        self._pub: Endpoint | None = None
+        self._gate = RateGate()
+        self._rng = np.random.default_rng(seed)
+
+    def configure(self, ctx: SystemContext) -> None:
+        """Find the joint; read the frame, direction, rate and topic."""
+        log, model = ctx.logger, ctx.entity.model
+        sensor, plugin = ctx.sensor, ctx.plugin
+        if sensor is not None:
+            self.joint = sensor.joint
+            block = sensor.config.find("force_torque") if sensor.config is not None else None
+            self.frame = (child_text(block, "frame") or "child").strip().lower()
+            direction = (child_text(block, "measure_direction") or "child_to_parent").strip().lower()
+            self.parent_to_child = direction == "parent_to_child"
+            self.rate_hz, self.offset = sensor.update_rate_hz, sensor.pose
+            where = f"{sensor.location}: " if sensor.location else ""
+            if self.frame not in ("child", "parent", "sensor"):
+                log.warning(f"{where}<frame> '{self.frame}' is not child, parent or sensor; using child")
+                self.frame = "child"
+        else:
+            cfg = plugin.config if plugin is not None else None
+            self.joint = child_text(cfg, "joint_name") or child_text(cfg, "jointName") or ""
+            self.rate_hz = parse_float(cfg, "update_rate", parse_float(cfg, "updateRate", 0.0, log), log)
+            self.noise = parse_float(cfg, "gaussian_noise", parse_float(cfg, "gaussianNoise", 0.0, log), log)
+            self.parent_to_child = True
+            where = f"{plugin.location}: " if plugin is not None and plugin.location else ""
+        joint = next((j for j in model.joints if j.name == self.joint), None)
+        if joint is None:
+            log.error(f"{where}force-torque sensor: '{ctx.entity.name}' has no joint '{self.joint}'; it does nothing")
+            return
+        self.parent, self.child = joint.parent, joint.child
+        self._X_CJ = joint.child_offset.inverse()
+        self._entity = ctx.entity.name
+        from .robot_state import entity_frame_prefix
+
+        prefix = entity_frame_prefix(ctx.entity, log)
+        if sensor is not None:
+            scoped = f"/world/{ctx.world_name}/model/{ctx.entity.name}/joint/{self.joint}"
+            topic = sensor.topic or f"{scoped}/sensor/{sensor.name}/forcetorque"
+            self.topic = resolve_topic(topic, ctx.entity.namespace)
+            frame_link = {"child": self.child, "parent": self.parent}.get(self.frame)
+            self.frame_id = prefix + frame_link if frame_link else f"{ctx.entity.name}::{self.joint}::{sensor.name}"
+        else:
+            cfg = plugin.config if plugin is not None else None
+            ns, remaps = ros_block(cfg)
+            ns = ns or child_text(cfg, "robotNamespace") or ctx.entity.namespace
+            self.topic = resolve_topic(child_text(cfg, "topicName") or "wrench", ns, remaps)
+            self.frame_id = prefix + self.child
+        self.config = ForceTorqueConfig(
+            self.joint,
+            self.frame,
+            "parent_to_child" if self.parent_to_child else "child_to_parent",
+            self.rate_hz,
+            self.noise,
+            self.topic,
+        )
+        self._pub = ctx.bus.advertise(ctx.entity.name, self.topic, MsgType.WRENCH_STAMPED, depth=SENSOR_DEPTH)
+        log.info(f"force-torque on joint [{self.joint}] at {self.rate_hz:g} Hz on [{self.topic}] in [{self.frame_id}]")
+
+    def next_update(self, sim_time_sec: float) -> float:
+        """The next reading time (never, when not configured)."""
+        return self._gate.next if self._pub is not None else math.inf
+
+    def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """Read again at the next step after a world reset."""
+        self._gate.reset()
+
+    def read(self, world: PhysicsWorld) -> tuple[np.ndarray, np.ndarray]:
+        """(force, torque) at the joint origin, in the output frame and direction."""
+        X_WC = world.body(self._entity, self.child).pose
+        X_WJ = X_WC * self._X_CJ
+        f, t = world.joint_wrench(self._entity, self.child, np.asarray(X_WJ.position))
+        if not self.parent_to_child:
+            f, t = -f, -t
+        if self.frame == "parent":
+            R = _matrix(world.body(self._entity, self.parent).pose.orientation)
+        elif self.frame == "sensor":
+            R = _matrix((X_WJ * self.offset).orientation)
+        else:
+            R = _matrix(X_WC.orientation)
+        f, t = R.T @ f, R.T @ t
+        if self.noise > 0:
+            f = f + self._rng.normal(0.0, self.noise, 3)
+            t = t + self._rng.normal(0.0, self.noise, 3)
+        return f, t
+
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """At the sensor's rate, while listened to: publish the wrench stamped with this sim time."""
+        if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.rate_hz):
+            return
+        if not self._pub.wanted:
+            return
+        f, t = self.read(world)
+        self._pub.publish(
+            WrenchStamped(
+                info.sim_time_sec,
+                self.frame_id,
+                (float(f[0]), float(f[1]), float(f[2])),
+                (float(t[0]), float(t[1]), float(t[2])),
+            )
+        )
 
 
 def _matrix(q: tuple[float, float, float, float]) -> np.ndarray:

@@ -30,7 +30,10 @@ points. Its source is the entity's odometry topic (what /odom reports, read from
 publisher's latest message, with the odom frame placed where odometry and ground truth
 agreed when the trail started) or, chosen in the panel or for entities without
 odometry, the ground-truth root position. Contact points are MuJoCo's
-``data.contact``. Sensors do not exist yet, so there are no sensor overlays.
+``data.contact``. Lidar points are where each lidar's rays hit now (noise-free, cast again at the
+panel's rate on the sim thread, so the published scans' random noise is untouched). The Camera
+panel shows the image of the camera chosen in its dropdown, rendered on the sim thread at the
+panel's rate while one is chosen.
 """
 
 from __future__ import annotations
@@ -50,6 +53,7 @@ import viser
 from ..description import Model, Pose, load
 from ..physics import PerGeneration
 from ..systems import Endpoint, MsgType, Twist
+from ..systems.sensors import Camera, Lidar
 from ._geometry import rgba_to_rgb255, to_trimesh
 from ._models import ModelFile, find_models
 from ._origin import OriginPolicy, guarded
@@ -87,10 +91,9 @@ TRAIL_SOURCES = (TRAIL_ODOM, TRAIL_TRUTH)
 CONTACT_RGB = (230, 20, 20)
 CONTACT_MAX = 500
 NO_MODELS = "(no models on the resource paths)"
-SENSORS_NOTE = (
-    "**Sensors:** gazelle has no sensors yet (no lidar, no camera), "
-    "so there is nothing to overlay; lidar rays and camera images will appear here once sensors exist."
-)
+LIDAR_RGB = (20, 200, 60)
+LIDAR_MAX_POINTS = 50_000
+NO_CAMERA = "(none)"
 KEYS_MARKER = "gazelle-keyboard-drive"
 KEYS_HELP = "W/↑ forward, S/↓ back, A/← left, D/→ right (hold); release or Space/X: stop"
 # viser has no keyboard-event API: this snippet (run through an <img onerror> in a GUI
@@ -257,6 +260,7 @@ class Viewer:
         self._trail_last_t = -1.0
         self._next_trail = 0.0
         self._contact_handle: Any = None
+        self._lidar_handles: dict[str, Any] = {}
         self._models: list[ModelFile] = []
         self.frames = 0
         """Frames pushed so far (for tests and the bench)."""
@@ -410,7 +414,14 @@ class Viewer:
             )
             self._trail_text = g.add_text("Trail of", initial_value="", disabled=True)
             self._contact_box = g.add_checkbox("Contact points", initial_value=False, hint="MuJoCo contacts (red)")
-            g.add_markdown(SENSORS_NOTE)
+            self._lidar_box = g.add_checkbox(
+                "Lidar points", initial_value=True, hint="Where each lidar's rays hit now (green, noise-free)"
+            )
+        with g.add_folder("Camera"):
+            self._camera_dd = g.add_dropdown(
+                "Camera", options=[NO_CAMERA], initial_value=NO_CAMERA, hint="A camera sensor's image, live"
+            )
+            self._camera_img = g.add_image(np.zeros((48, 64, 3), dtype=np.uint8), label="Image", format="jpeg")
 
         self._play.on_click(lambda _e: self._toggle_pause())
         self._step_btn.on_click(lambda _e: self._step())
@@ -428,6 +439,7 @@ class Viewer:
         self._col_box.on_update(lambda _e: self._set_overlays())
         self._trail_box.on_update(lambda _e: self._redraw_trail(force=True))
         self._contact_box.on_update(lambda _e: self._update_contacts())  # pyright: ignore[reportArgumentType]
+        self._lidar_box.on_update(lambda _e: self._update_lidars())  # pyright: ignore[reportArgumentType]
         self._keys_box.on_update(
             lambda _e: setattr(self._keys_html, "content", KEYS_HTML if self._keys_box.value else "")
         )
@@ -658,6 +670,66 @@ class Viewer:
             )
         return pts
 
+    def _sensor_systems(self) -> tuple[dict[str, Lidar], dict[str, Camera]]:
+        """Runs on the sim thread: every running lidar and camera, by ``entity/sensor``."""
+        lidars: dict[str, Lidar] = {}
+        cameras: dict[str, Camera] = {}
+        for e in self.sim.world.entities.values():
+            for s in e.systems:
+                if not isinstance(s, (Lidar, Camera)) or s.sensor is None or s.next_update(0.0) == math.inf:
+                    continue
+                key = f"{e.name}/{s.sensor.name}"
+                if isinstance(s, Lidar):
+                    lidars[key] = s
+                else:
+                    cameras[key] = s
+        return lidars, cameras
+
+    def _lidar_points(self) -> dict[str, np.ndarray]:
+        """Runs on the sim thread: each lidar's hit points now (world frame)."""
+        lidars, _ = self._sensor_systems()
+        return {key: lidar.world_points(self.sim.world)[:LIDAR_MAX_POINTS] for key, lidar in lidars.items()}
+
+    def _update_lidars(self) -> dict[str, np.ndarray]:
+        """Redraw the lidar overlay (or clear it when unticked); returns the points drawn per lidar."""
+        pts = self.sim.call(self._lidar_points, timeout=5.0) if self._lidar_box.value else {}
+        for key in [k for k in self._lidar_handles if k not in pts]:
+            self._lidar_handles.pop(key).remove()
+        for key, p in pts.items():
+            old = self._lidar_handles.pop(key, None)
+            if old is not None:
+                old.remove()
+            if len(p):
+                self._lidar_handles[key] = self.server.scene.add_point_cloud(
+                    f"/overlays/lidar/{_safe(key)}",
+                    p,
+                    LIDAR_RGB,
+                    point_size=0.03,
+                    point_shape="circle",
+                    precision="float32",
+                )
+        return pts
+
+    def _camera_image(self, key: str) -> tuple[list[str], np.ndarray | None]:
+        """Runs on the sim thread: the camera names, and the image of camera ``key`` (None: no such camera)."""
+        _, cameras = self._sensor_systems()
+        cam = cameras.get(key)
+        out = cam.render(self.sim.world, depth=False) if cam is not None else None
+        return sorted(cameras), (out[0] if out is not None else None)
+
+    def _update_camera(self) -> np.ndarray | None:
+        """Refresh the Camera dropdown and, with a camera chosen, its image; returns the image shown."""
+        key = self._camera_dd.value
+        names, image = self.sim.call(lambda: self._camera_image(key), timeout=5.0)
+        options = [NO_CAMERA, *names]
+        if tuple(self._camera_dd.options) != tuple(options):
+            self._camera_dd.options = options  # pyright: ignore[reportAttributeAccessIssue]
+            if key not in options:
+                self._camera_dd.value = NO_CAMERA  # pyright: ignore[reportAttributeAccessIssue]
+        if image is not None:
+            self._camera_img.image = image
+        return image
+
     def _set_overlays(self) -> None:
         tf, col = bool(self._tf_box.value), bool(self._col_box.value)
         with self.server.atomic():
@@ -779,6 +851,9 @@ class Viewer:
                         self._update_gui(snap)
                     if self._contact_box.value or self._contact_handle is not None:
                         self._update_contacts()
+                    if self._lidar_box.value or self._lidar_handles:
+                        self._update_lidars()
+                    self._update_camera()
                     next_gui = now + gui_period
                 if now >= self._next_trail:
                     self.sample_trail()

@@ -399,6 +399,68 @@ def test_chessboard_world_renders_33_entities(page: Any, artifacts: Path) -> Non
     shutil.copy(out, ARTIFACTS / "chessboard.png")
 
 
+LIDAR_EYE = (0.6, -2.6, 3.2)
+LIDAR_TARGET = (1.4, 0.0, 0.0)
+
+
+def test_lidar_overlay_points_appear_where_the_wall_is(page: Any, artifacts: Path) -> None:
+    """examples/sensor_bot's lidar facing a wall 2 m ahead: green overlay points along the wall's face
+    in the browser's pixels, and none over the empty floor between robot and wall."""
+    from PIL import Image
+
+    from gazelle.description import Pose, load, load_string
+    from gazelle.sim import Simulation
+    from gazelle.viewer import Viewer
+    from gazelle.viewer._browser import wait_rendered
+    from gazelle.worlds import default_world
+
+    wall = """<?xml version="1.0"?><sdf version="1.9"><model name="wall"><static>true</static>
+      <pose>2.1 0 0.25 0 0 0</pose><link name="l">
+      <collision name="c"><geometry><box><size>0.2 2 0.5</size></box></geometry></collision>
+      <visual name="v"><geometry><box><size>0.2 2 0.5</size></box></geometry><material><diffuse>0.6 0.6 0.6 1</diffuse></material></visual>
+      </link></model></sdf>"""
+    sim = Simulation(default_world(), rtf=1.0)
+    sim.spawn(load_string(wall).value, name="wall")
+    sim.spawn(load(REPO / "examples/sensor_bot/sensor_bot.urdf").value, name="bot", pose=Pose((0.0, 0.0, 0.07)))
+    sim.start()
+    viewer = Viewer(sim, port=0)
+    cam = viewer.server.initial_camera
+    cam.position, cam.look_at = LIDAR_EYE, LIDAR_TARGET
+    out = artifacts / "lidar_overlay.png"
+    seen: list[tuple[int, int]] = []
+    scan_z = 0.07 + 0.075 + 0.03  # base height + scan joint + the sensor's pose
+
+    def green_on_the_wall() -> bool:
+        page.screenshot(path=str(out))
+        rgb = np.asarray(Image.open(out).convert("RGB")).astype(int)
+        h, w = rgb.shape[:2]
+        green = (rgb[..., 1] > 150) & (rgb[..., 0] < 100) & (rgb[..., 2] < 130)
+
+        def near(p: tuple[float, float, float]) -> bool:
+            px, py = project(p, w, h, LIDAR_EYE, LIDAR_TARGET)
+            return bool(green[int(py) - 6 : int(py) + 7, int(px) - 6 : int(px) + 7].any())
+
+        on_wall = sum(near((2.0, y, scan_z)) for y in np.linspace(-0.8, 0.8, 9))
+        on_floor = sum(near((x, y, scan_z)) for x in (0.8, 1.2) for y in (-0.3, 0.3))
+        seen.append((on_wall, on_floor))
+        return on_wall == 9 and on_floor == 0
+
+    viewer.start()
+    try:
+        page.goto(viewer.url)
+        wait_rendered(page, 30)
+        deadline = time.monotonic() + 30
+        while not green_on_the_wall():
+            assert time.monotonic() < deadline, (
+                f"green overlay at {seen[-1][0]}/9 wall spots, {seen[-1][1]}/4 floor spots"
+            )
+            page.wait_for_timeout(300)
+    finally:
+        viewer.stop()
+        sim.stop()
+    shutil.copy(out, ARTIFACTS / "lidar_overlay.png")
+
+
 _TRY_WS_JS = """(url) => new Promise((resolve) => {
     const ws = new WebSocket(url);
     ws.onopen = () => { ws.close(); resolve('open'); };

@@ -323,3 +323,39 @@ def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_
     finally:
         viewer.stop()
         sim.stop()
+
+
+def test_lidar_points_land_on_the_wall_and_the_camera_panel_shows_the_camera_image() -> None:
+    from gazelle.description import load_string
+    from gazelle.sim import Simulation
+    from gazelle.viewer import Viewer
+    from gazelle.worlds import default_world
+
+    wall = """<?xml version="1.0"?><sdf version="1.9"><model name="wall"><static>true</static><pose>2.1 0 0.5 0 0 0</pose>
+      <link name="l"><collision name="c"><geometry><box><size>0.2 6 1</size></box></geometry></collision>
+      <visual name="v"><geometry><box><size>0.2 6 1</size></box></geometry><material><diffuse>1 0 0 1</diffuse></material></visual>
+      </link></model></sdf>"""
+    sim = Simulation(default_world(), rtf=0.0)
+    sim.spawn(load_string(wall).value, name="wall")
+    sim.spawn(load(REPO / "examples/sensor_bot/sensor_bot.urdf").value, name="bot", pose=Pose((0.0, 0.0, 0.07)))
+    sim.step(200)
+    viewer = Viewer(sim, port=0)  # no thread: the panel is updated by hand
+    sim.start()
+    try:
+        pts = viewer._update_lidars()
+        p = pts["bot/lidar"]
+        assert len(p) > 50
+        assert np.all(np.abs(p[:, 0] - 2.0) < 0.01)  # every hit on the wall's face, x = 2.0 m
+        assert "bot/lidar" in viewer._lidar_handles
+        viewer._lidar_box.value = False
+        assert viewer._update_lidars() == {} and not viewer._lidar_handles
+        assert viewer._update_camera() is None  # no camera chosen: nothing rendered
+        assert "bot/camera" in viewer._camera_dd.options
+        viewer._camera_dd.value = "bot/camera"
+        image = viewer._update_camera()
+        assert image is not None and image.shape == (240, 320, 3)
+        red = (image[..., 0] > 100) & (image[..., 1] < 60) & (image[..., 2] < 60)
+        assert red[90:125, 140:180].mean() > 0.9  # the red wall straight ahead (its foot is ~15 px below centre)
+    finally:
+        viewer.stop()
+        sim.stop()
