@@ -4,7 +4,8 @@ A :class:`OffscreenRenderer` owns an OpenGL context (EGL, which Mesa provides on
 driver accelerates, else OSMesa; ``MUJOCO_GL=egl|osmesa`` picks one) and MuJoCo's render context for
 the world's current model, rebuilt after a recompile. It draws the visual geoms of entities whose
 visuals are in the model and the collision geoms of the others (see the builder's geom groups),
-lit by the world's lights.
+lit by the world's lights, without shadows (measured: they cost 37 of 47 ms per 640 x 480 image
+on Mesa's CPU rasteriser; see ``_ensure``).
 
 The camera follows Gazebo's convention: it looks along the pose's +x with +z up, and the image has
 ``width`` x ``height`` pixels with horizontal field of view ``hfov``. Rendering must happen on one
@@ -83,6 +84,9 @@ class OffscreenRenderer:
             glob.offwidth = max(int(glob.offwidth), self.width)
             glob.offheight = max(int(glob.offheight), self.height)
             self._scene = mujoco.MjvScene(m, maxgeom=max(1000, 2 * m.ngeom))
+            # Shadow maps cost 37 of 47 ms of a 640x480 image on Mesa's CPU rasteriser (9.6 ms without):
+            # camera images are drawn without shadows, so a 30 Hz camera keeps real time on a CPU
+            self._scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = 0
             if self._ctx is not None:
                 self._ctx.free()
             self._ctx = mujoco.MjrContext(m, mujoco.mjtFontScale.mjFONTSCALE_100)

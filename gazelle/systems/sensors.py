@@ -556,6 +556,10 @@ class ImuSensor(_SensorSystem):
         self.orientation_reference = False
         self._q0: tuple[float, float, float, float] | None = None
         self._bias = np.zeros(6)
+        self._mean = np.zeros(6)
+        self._std = np.zeros(6)
+        self._noisy = False
+        self._cov: tuple[tuple[float, ...], tuple[float, ...]] = ((0.0,) * 9, (0.0,) * 9)
 
     def configure(self, ctx: SystemContext) -> None:
         """Parse the noise and the plugin; declare the output topic."""
@@ -564,7 +568,19 @@ class ImuSensor(_SensorSystem):
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         self.noise = parse_imu_noise(ctx.sensor, cfg, ctx.logger)
         self.orientation_reference = self.config.initial_orientation_as_reference
-        self._bias = np.array([n.bias(self._rng) for n in (*self.noise.rate, *self.noise.accel)])
+        channels = (*self.noise.rate, *self.noise.accel)
+        self._bias = np.array([n.bias(self._rng) for n in channels])
+        self._mean = np.array([n.mean if n.active else 0.0 for n in channels])
+        self._std = np.array([n.stddev if n.active else 0.0 for n in channels])
+        self._noisy = bool(self._mean.any() or self._std.any())
+
+        def cov(ns: tuple[Noise, Noise, Noise]) -> tuple[float, ...]:
+            c = [0.0] * 9
+            for i, n in enumerate(ns):
+                c[4 * i] = n.stddev**2 if n.active else 0.0
+            return tuple(c)
+
+        self._cov = (cov(self.noise.rate), cov(self.noise.accel))
         assert self.output is not None
         ctx.logger.info(
             f"IMU on [{self.link}] at {self.rate_hz:g} Hz on [{self.output.topic}] in frame [{self.output.frame_id}]"
@@ -584,9 +600,8 @@ class ImuSensor(_SensorSystem):
                 self._q0 = q
             q = quat_mul(quat_conj(self._q0), q)
         values = np.concatenate([w, a]) + self._bias
-        for i, n in enumerate((*self.noise.rate, *self.noise.accel)):
-            if n.active:
-                values[i] += n.mean + (self._rng.normal(0.0, n.stddev) if n.stddev > 0 else 0.0)
+        if self._noisy:
+            values += self._mean + self._std * self._rng.standard_normal(6)
         return q, values[:3], values[3:]
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
@@ -595,22 +610,16 @@ class ImuSensor(_SensorSystem):
             return
         assert self._pub is not None and self.output is not None
         q, w, a = self.read()
-
-        def cov(ns: tuple[Noise, Noise, Noise]) -> tuple[float, ...]:
-            c = [0.0] * 9
-            for i, n in enumerate(ns):
-                c[4 * i] = n.stddev**2 if n.active else 0.0
-            return tuple(c)
-
+        wl, al = w.tolist(), a.tolist()
         self._pub.publish(
             Imu(
                 info.sim_time_sec,
                 self.output.frame_id,
                 q,
-                (float(w[0]), float(w[1]), float(w[2])),
-                (float(a[0]), float(a[1]), float(a[2])),
-                angular_velocity_covariance=cov(self.noise.rate),
-                linear_acceleration_covariance=cov(self.noise.accel),
+                (wl[0], wl[1], wl[2]),
+                (al[0], al[1], al[2]),
+                angular_velocity_covariance=self._cov[0],
+                linear_acceleration_covariance=self._cov[1],
             )
         )
 
