@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import threading
+from collections.abc import Callable
 
 from gazelle.ros._outbox import Outbox
 
@@ -21,7 +22,8 @@ def test_everything_is_published_in_the_order_it_was_queued_across_lanes():
     box.close()
 
 
-def test_a_publisher_thread_that_falls_behind_drops_the_oldest_of_a_lane_and_never_blocks_the_queuer():
+def _stuck_publisher() -> tuple[Outbox, threading.Event, threading.Event, list[int], Callable[[int], None]]:
+    """An outbox and a publish function that blocks until ``release`` is set (``publishing`` says it started)."""
     box = Outbox()
     release, publishing = threading.Event(), threading.Event()
     got: list[int] = []
@@ -31,6 +33,11 @@ def test_a_publisher_thread_that_falls_behind_drops_the_oldest_of_a_lane_and_nev
         release.wait(10)
         got.append(p)
 
+    return box, release, publishing, got, slow
+
+
+def test_a_publisher_thread_that_falls_behind_drops_the_oldest_of_a_lane_and_never_blocks_the_queuer():
+    box, release, publishing, got, slow = _stuck_publisher()
     lane = box.lane(slow, 3, "/joint_states")
     lane.put(0)
     assert publishing.wait(5)  # 0 is being published; the publisher thread is stuck in it
@@ -46,15 +53,7 @@ def test_a_publisher_thread_that_falls_behind_drops_the_oldest_of_a_lane_and_nev
 
 
 def test_a_closed_lane_publishes_nothing_more_and_close_waits_for_its_publish_in_progress():
-    box = Outbox()
-    release, publishing = threading.Event(), threading.Event()
-    got: list[int] = []
-
-    def slow(p: int) -> None:
-        publishing.set()
-        release.wait(10)
-        got.append(p)
-
+    box, release, publishing, got, slow = _stuck_publisher()
     lane = box.lane(slow, 10, "/odom")
     other = box.lane(lambda p: got.append(100 + p), 10, "/tf")
     lane.put(0)

@@ -29,7 +29,9 @@ from __future__ import annotations
 import dataclasses
 import logging
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import TypeVar
 
 import numpy as np
 
@@ -52,6 +54,8 @@ from ._bus import (
     WrenchStamped,
     resolve_topic,
 )
+
+T = TypeVar("T")
 
 LIDAR_TYPES = frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"})
 CAMERA_TYPES = frozenset({"camera", "depth", "depth_camera", "rgbd_camera", "rgbd"})
@@ -352,6 +356,23 @@ class _SensorSystem(System):
         self._gate = RateGate()
         self._rng = np.random.default_rng(seed)
 
+    def _parse_sensor(
+        self, ctx: SystemContext, sensor_type: str, parse: Callable[[Sensor, logging.Logger], T]
+    ) -> T | None:
+        """``parse(sensor, logger)`` of the ``<sensor>`` this plugin sits in; None, after an error that
+        names why and where, when there is no sensor or its configuration cannot be simulated."""
+        if ctx.sensor is None:
+            where = f"{ctx.plugin.location}: " if ctx.plugin and ctx.plugin.location else ""
+            ctx.logger.error(
+                f"{where}a {self.kind} plugin must be inside a <sensor type='{sensor_type}'>; it does nothing"
+            )
+            return None
+        try:
+            return parse(ctx.sensor, ctx.logger)
+        except SensorConfigError as err:
+            ctx.logger.error(f"{err}; the sensor does nothing")
+            return None
+
     def _configure_common(self, ctx: SystemContext, *, advertise: bool = True) -> bool:
         """Read link, pose, rate and output (and declare the output topic unless ``advertise`` is False);
         False (after an error naming why) when it cannot run."""
@@ -412,15 +433,10 @@ class Lidar(_SensorSystem):
 
     def configure(self, ctx: SystemContext) -> None:
         """Parse the sensor's ``<ray>``/``<lidar>`` block and the plugin; declare the output topic."""
-        if ctx.sensor is None:
-            where = f"{ctx.plugin.location}: " if ctx.plugin and ctx.plugin.location else ""
-            ctx.logger.error(f"{where}a ray sensor plugin must be inside a <sensor type='ray'>; it does nothing")
+        spec = self._parse_sensor(ctx, "ray", parse_lidar)
+        if spec is None:
             return
-        try:
-            self.spec = parse_lidar(ctx.sensor, ctx.logger)
-        except SensorConfigError as err:
-            ctx.logger.error(f"{err}; the sensor does nothing")
-            return
+        self.spec = spec
         if not self._configure_common(ctx):
             return
         self._dirs = self.spec.directions()
@@ -731,15 +747,10 @@ class Camera(_SensorSystem):
 
     def configure(self, ctx: SystemContext) -> None:
         """Parse the ``<camera>`` block and the plugin; declare the image, info, depth and points topics."""
-        if ctx.sensor is None:
-            where = f"{ctx.plugin.location}: " if ctx.plugin and ctx.plugin.location else ""
-            ctx.logger.error(f"{where}a camera plugin must be inside a <sensor type='camera'>; it does nothing")
+        spec = self._parse_sensor(ctx, "camera", parse_camera)
+        if spec is None:
             return
-        try:
-            self.spec = parse_camera(ctx.sensor, ctx.logger)
-        except SensorConfigError as err:
-            ctx.logger.error(f"{err}; the sensor does nothing")
-            return
+        self.spec = spec
         if not self._configure_common(ctx):
             return
         assert self.output is not None and self._pub is not None
@@ -904,9 +915,7 @@ class ContactSensor(_SensorSystem):
     def configure(self, ctx: SystemContext) -> None:
         """Read the collisions it watches and the plugin; declare the output topic."""
         sensor = ctx.sensor
-        if sensor is None:
-            where = f"{ctx.plugin.location}: " if ctx.plugin and ctx.plugin.location else ""
-            ctx.logger.error(f"{where}a bumper plugin must be inside a <sensor type='contact'>; it does nothing")
+        if self._parse_sensor(ctx, "contact", lambda _s, _log: True) is None or sensor is None:
             return
         block = sensor.config.find("contact") if sensor.config is not None else None
         names = tuple(el.text.strip() for el in (block.findall("collision") if block is not None else ()))
@@ -1057,9 +1066,7 @@ class GpsSensor(_SensorSystem):
 
     def configure(self, ctx: SystemContext) -> None:
         """Read the world's spherical coordinates and the noise; declare ``~/out`` and ``~/vel``."""
-        if ctx.sensor is None:
-            where = f"{ctx.plugin.location}: " if ctx.plugin and ctx.plugin.location else ""
-            ctx.logger.error(f"{where}a GPS plugin must be inside a <sensor type='gps'>; it does nothing")
+        if self._parse_sensor(ctx, "gps", lambda _s, _log: True) is None:
             return
         if not self._configure_common(ctx, advertise=False):
             return
