@@ -224,6 +224,7 @@ class SimulationNode(Node):
         sim.add_step_listener(self._on_step, clock_rate_hz)
         self._model_states_pub = self.create_publisher(ModelStates, "/model_states", MODEL_STATES_QOS)
         states_pub = self._model_states_pub
+        self._model_states_heard = _Subscribed(states_pub)
         self._model_states_lane = self.outbox.lane(
             lambda states: states_pub.publish(model_states_msg(states)), 1, "/model_states"
         )
@@ -262,14 +263,14 @@ class SimulationNode(Node):
     def _on_step_model_states(self, info: UpdateInfo) -> None:
         """Publish every entity's world pose and twist (gazebo_msgs/ModelStates) from the sim thread
         (the runtime calls this every 10 ms of sim time)."""
+        if not self._model_states_heard():
+            return  # nothing is built for nobody
         wall = time.monotonic()
         # at most about MODEL_STATES_RATE_HZ per wall second; the slack keeps the sim-time rate at real
         # time, where the blocks of steps that end on a 10 ms period arrive with a little jitter
         if wall - self._last_model_states_wall < 0.75 * self._model_states_period:
             return
         self._last_model_states_wall = wall
-        if self._model_states_pub.get_subscription_count() == 0:
-            return
         self._model_states_lane.put(self.entity_states())
 
     def entity_states(self) -> list[tuple[str, EntityState]]:
