@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 import pytest
-from _paths import REAL
+from _paths import REAL, REPO
 
 from gazelle.description import Pose, load, load_string
 from gazelle.sim import Simulation
@@ -572,3 +572,25 @@ def test_a_force_torque_sensor_reads_the_weight_and_moment_a_joint_carries():
     sim.step(2)
     f, _t = ft.read(sim.world)
     assert f == pytest.approx((0.0, 0.0, -2 * 9.81), abs=1e-6)
+
+
+def test_namespaced_robots_get_namespaced_sensor_topics_and_prefixed_frames():
+    """Two sensor_bots spawned with namespaces (as `gazelle spawn -robot_namespace r1`): each sensor's
+    topics and frames are its own (gz-sensors #359 is about sensors that ignored the namespace)."""
+    from gazelle.systems.sensors import Camera, ImuSensor
+
+    sim = Simulation(default_world(), rtf=0)
+    bot = load(REPO / "examples/sensor_bot/sensor_bot.urdf").value
+    for i, ns in enumerate(("r1", "r2")):
+        entity = sim.spawn(bot, name=f"bot_{ns}", pose=Pose((0.0, 2.0 * i, 0.07)), namespace=ns)
+        lidar = _lidar(entity)
+        cam = next(s for s in entity.systems if isinstance(s, Camera))
+        imu = next(s for s in entity.systems if isinstance(s, ImuSensor))
+        assert lidar.output is not None and imu.output is not None and cam.output is not None
+        assert (lidar.output.topic, lidar.output.frame_id) == (f"/{ns}/scan", f"{ns}/base_scan")
+        assert (imu.output.topic, imu.output.frame_id) == (f"/{ns}/imu", f"{ns}/imu_link")
+        assert (cam.topics.image, cam.topics.info, cam.output.frame_id) == (
+            f"/{ns}/camera/image_raw",
+            f"/{ns}/camera/camera_info",
+            f"{ns}/camera_link",
+        )

@@ -3,15 +3,18 @@
 per message received (topic, type, stamp, frame and a few fields), exiting after ``count`` of each.
 
 Usage: sensor_listener.py COUNT TOPIC:TYPE [TOPIC:TYPE ...], TYPE one of LaserScan, Imu, PointCloud2,
-Range, Image, CameraInfo.
+Range, Image, CameraInfo,
+ContactsState, NavSatFix, Vector3Stamped, WrenchStamped.
 """
 
 import json
 import sys
 
 import rclpy
+from gazebo_msgs.msg import ContactsState
+from geometry_msgs.msg import Vector3Stamped, WrenchStamped
 from rclpy.qos import qos_profile_sensor_data
-from sensor_msgs.msg import CameraInfo, Image, Imu, LaserScan, PointCloud2, Range
+from sensor_msgs.msg import CameraInfo, Image, Imu, LaserScan, NavSatFix, PointCloud2, Range
 
 TYPES = {
     "LaserScan": LaserScan,
@@ -20,6 +23,10 @@ TYPES = {
     "Range": Range,
     "Image": Image,
     "CameraInfo": CameraInfo,
+    "ContactsState": ContactsState,
+    "NavSatFix": NavSatFix,
+    "Vector3Stamped": Vector3Stamped,
+    "WrenchStamped": WrenchStamped,
 }
 
 
@@ -47,9 +54,18 @@ def summary(msg) -> dict:
         }
     if isinstance(msg, CameraInfo):
         return {"width": msg.width, "height": msg.height, "k": list(msg.k)}
+    if isinstance(msg, ContactsState):
+        return {"pairs": [[st.collision1_name, st.collision2_name] for st in msg.states]}
+    if isinstance(msg, NavSatFix):
+        return {"lat": msg.latitude, "lon": msg.longitude, "alt": msg.altitude, "status": msg.status.status}
+    if isinstance(msg, Vector3Stamped):
+        return {"v": [msg.vector.x, msg.vector.y, msg.vector.z]}
+    if isinstance(msg, WrenchStamped):
+        f = msg.wrench.force
+        return {"force": [f.x, f.y, f.z]}
     if isinstance(msg, PointCloud2):
         return {"width": msg.width, "fields": [f.name for f in msg.fields]}
-    return {"range": msg.range}
+    return {"range": msg.range, "radiation": msg.radiation_type}
 
 
 def main() -> None:

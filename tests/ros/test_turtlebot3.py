@@ -196,14 +196,25 @@ SENSOR_LISTENER = Path(__file__).with_name("sensor_listener.py")
 SENSOR_CASES = {
     "classic_ros2_sdf": TB3 / "turtlebot3_gazebo/models/turtlebot3_burger/model-1_4.sdf",
     "gz_model_sdf": TB3 / "turtlebot3_gazebo/models/turtlebot3_burger/model.sdf",
+    "classic_ros1_xacro": TB3 / "turtlebot3_description/urdf/turtlebot3_burger.urdf.xacro",
 }
+IMU_FRAMES = {
+    "classic_ros2_sdf": "imu_link",
+    "gz_model_sdf": "tb3::imu_link::tb3_imu",
+    "classic_ros1_xacro": "imu_link",
+}
+SCAN_MAX_ANGLE = {"classic_ros2_sdf": 6.28, "gz_model_sdf": 6.28, "classic_ros1_xacro": 6.28319}
+"""What each file gives as <max_angle> (360 samples from 0): the increment is max / 359."""
+IMU_ACCEL_TOLERANCE = {"classic_ros2_sdf": 0.1, "gz_model_sdf": 0.1, "classic_ros1_xacro": 0.2}
+"""The ROS 1 xacro's IMU has an accelerometer bias of 0.1 m/s² (drawn once, either sign) on top of its noise."""
 
 
 @pytest.mark.parametrize("case", list(SENSOR_CASES))
 def test_turtlebot3_scan_and_imu_reach_a_plain_rclpy_process_with_sim_time_stamps(
     case, resources, sim_factory, ros_client
 ):
-    """/scan (360 ranges at 5 Hz in base_scan) and /imu, as TurtleBot3's own files say, received by a
+    """/scan (360 ranges at 5 Hz in base_scan) and /imu, as TurtleBot3's own files say (the ROS 2
+    Classic SDF, the gz-sim SDF and the ROS 1 xacro with libgazebo_ros_laser/imu), received by a
     separate process that never imports gazelle, stamped with sim time."""
     import json
     import sys
@@ -221,15 +232,15 @@ def test_turtlebot3_scan_and_imu_reach_a_plain_rclpy_process_with_sim_time_stamp
     assert len(scans) == 4 and len(imus) == 4, listener.output
     for s in scans:
         assert (s["n"], s["frame"]) == (360, "base_scan")
-        assert s["angle_min"] == 0.0 and s["angle_increment"] == pytest.approx(6.28 / 359, rel=1e-6)
+        assert s["angle_min"] == 0.0 and s["angle_increment"] == pytest.approx(SCAN_MAX_ANGLE[case] / 359, rel=1e-6)
         assert s["finite"] == 0, (s["min"], s["finite"], s["stamp"])  # an empty world: nothing within 3.5 m
     stamps = [s["stamp"] for s in scans]
     assert all(0 < t < 1e5 for t in stamps), stamps  # sim time, not wall time (~1.8e9)
     gaps = [b - a for a, b in zip(stamps, stamps[1:])]
     assert all(g == pytest.approx(0.2, abs=1e-6) for g in gaps), gaps  # 5 Hz of sim time
     for m in imus:
-        assert m["frame"] == ("imu_link" if case == "classic_ros2_sdf" else "tb3::imu_link::tb3_imu")
-        assert m["accel"][2] == pytest.approx(9.8, abs=0.1)  # +g at rest, noise 0.017 as the file says
+        assert m["frame"] == IMU_FRAMES[case]
+        assert m["accel"][2] == pytest.approx(9.8, abs=IMU_ACCEL_TOLERANCE[case])  # +g at rest, with the file's noise
         assert 0 < m["stamp"] < 1e5
     # the scan's frame is on TF, where robot_state_publisher puts the lidar
     wait_for(lambda: "base_scan" in obs.frames, 10, "base_scan on /tf_static")
@@ -276,3 +287,38 @@ def test_a_waffle_style_robot_publishes_camera_images_and_info_scan_and_imu(sim_
         assert info["k"] == pytest.approx([f, 0, 160, 0, f, 120, 0, 0, 1])
     assert all(s["n"] == 360 for s in by["/scan"])
     assert all(m["accel"][2] == pytest.approx(9.8, abs=0.05) for m in by["/imu"])
+
+
+def test_every_other_sensor_message_type_reaches_a_plain_rclpy_process(sim_factory, ros_client):
+    """tests/data/sensor_zoo.sdf: PointCloud2, Range, ContactsState, NavSatFix (+ velocity), the
+    depth camera's 32FC1 image and points, and WrenchStamped, each received with sim-time stamps."""
+    import json
+    import sys
+
+    sim_factory()
+    spawn_file(REPO / "tests/data/sensor_zoo.sdf", "zoo")
+    specs = {
+        "/points": "PointCloud2",
+        "/range": "Range",
+        "/bumper_states": "ContactsState",
+        "/fix": "NavSatFix",
+        "/gps/vel": "Vector3Stamped",
+        "/depth_cam/depth/image_raw": "Image",
+        "/depth_cam/points": "PointCloud2",
+        "/wrench": "WrenchStamped",
+    }
+    listener = start(
+        [sys.executable, str(SENSOR_LISTENER), "2", *(f"{t}:{k}" for t, k in specs.items())], "sensor_listener"
+    )
+    assert listener.popen.wait(90) == 0, listener.output
+    msgs = [json.loads(ln) for ln in listener.lines if ln.startswith("{") and '"topic"' in ln]
+    by = {t: [m for m in msgs if m["topic"] == t] for t in specs}
+    assert all(len(v) == 2 for v in by.values()), {t: len(v) for t, v in by.items()}
+    assert all(0 < m["stamp"] < 1e5 for m in msgs)  # sim time
+    assert by["/points"][0]["width"] > 100 and by["/points"][0]["fields"] == ["x", "y", "z", "intensity"]
+    assert by["/range"][0]["range"] == pytest.approx(0.3, abs=0.02) and by["/range"][0]["radiation"] == 0
+    assert by["/bumper_states"][0]["frame"] == "world"
+    assert by["/fix"][0]["status"] == 0 and by["/fix"][0]["lat"] == pytest.approx(0.0, abs=1e-6)
+    depth = by["/depth_cam/depth/image_raw"][0]
+    assert (depth["encoding"], depth["width"], depth["height"], depth["bytes"]) == ("32FC1", 64, 48, 64 * 48 * 4)
+    assert by["/wrench"][0]["frame"] == "tool"
