@@ -434,7 +434,7 @@ class Lidar(_SensorSystem):
     def configure(self, ctx: SystemContext) -> None:
         """Parse the sensor's ``<ray>``/``<lidar>`` block and the plugin; declare the output topic."""
         spec = self._parse_sensor(ctx, "ray", parse_lidar)
-        if spec is None:
+        if spec is None or ctx.sensor is None:
             return
         self.spec = spec
         if not self._configure_common(ctx):
@@ -748,7 +748,7 @@ class Camera(_SensorSystem):
     def configure(self, ctx: SystemContext) -> None:
         """Parse the ``<camera>`` block and the plugin; declare the image, info, depth and points topics."""
         spec = self._parse_sensor(ctx, "camera", parse_camera)
-        if spec is None:
+        if spec is None or ctx.sensor is None:
             return
         self.spec = spec
         if not self._configure_common(ctx):
@@ -1066,7 +1066,7 @@ class GpsSensor(_SensorSystem):
 
     def configure(self, ctx: SystemContext) -> None:
         """Read the world's spherical coordinates and the noise; declare ``~/out`` and ``~/vel``."""
-        if self._parse_sensor(ctx, "gps", lambda _s, _log: True) is None:
+        if self._parse_sensor(ctx, "gps", lambda _s, _log: True) is None or ctx.sensor is None:
             return
         if not self._configure_common(ctx, advertise=False):
             return
