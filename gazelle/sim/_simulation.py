@@ -260,12 +260,16 @@ class Simulation:
     def _info(self, paused: bool = False, dt: float | None = None) -> UpdateInfo:
         w = self.world
         return UpdateInfo(
-            w.time, time.monotonic() - self._wall0, w.timestep if dt is None else dt, self.iterations, paused
+            float(w.data.time),
+            time.monotonic() - self._wall0,
+            w.timestep if dt is None else dt,
+            self.iterations,
+            paused,
         )
 
     def _steps_until_due(self, limit: int) -> int:
         """How many physics steps (1..``limit``) can run before a system or listener is due."""
-        t = self.world.time
+        t = float(self.world.data.time)
         due = self.systems.next_update(t)
         for listener in self.step_listeners:
             due = min(due, listener.gate.next if listener.rate_hz > 0 else t)
@@ -304,8 +308,9 @@ class Simulation:
         self.iterations += k
         info = self._info(dt=k * w.timestep)
         self.systems.post_physics(info, w)
-        for listener in tuple(self.step_listeners):
-            if listener.rate_hz > 0 and not listener.gate.due(info.sim_time_sec, listener.rate_hz):
+        t = info.sim_time_sec
+        for listener in tuple(self.step_listeners) if self.step_listeners else ():
+            if listener.rate_hz > 0 and not listener.gate.due(t, listener.rate_hz):
                 continue
             try:
                 listener.fn(info)
@@ -319,7 +324,7 @@ class Simulation:
     def _record_rtf(self) -> None:
         now = time.monotonic()
         win = self._rtf_window
-        sample = (now, self.world.time, self.iterations)
+        sample = (now, float(self.world.data.time), self.iterations)
         if len(win) > 2 and now - win[-2][0] < 0.01:
             win[-1] = sample  # one sample per 10 ms of wall time is plenty for a 2 s window
             return

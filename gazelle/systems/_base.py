@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import logging
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import NamedTuple
 
@@ -113,6 +114,8 @@ class SystemManager:
     def __init__(self) -> None:
         self._systems: list[tuple[str, System]] = []
         self._phase: dict[str, list[System]] = {p: [] for p in self.PHASES}
+        self._before_calls: list[tuple[System, str, Callable[[UpdateInfo, PhysicsWorld], None]]] = []
+        self._after_calls: list[tuple[System, str, Callable[[UpdateInfo, PhysicsWorld], None]]] = []
         self._update_before: list[System] = []
         self._update_after: list[System] = []
         self._stepped: list[System] = []
@@ -144,6 +147,13 @@ class SystemManager:
         self._update_after = [s for s in self._phase["update"] if s.priority >= PHYSICS]
         stepped = ("pre_update", "update", "post_update")
         self._stepped = [s for s in systems if any(_overrides(s, p) for p in stepped)]
+        # the calls of each stepping phase, bound once (each block of steps makes them all)
+        self._before_calls = [(s, "pre_update", s.pre_update) for s in self._phase["pre_update"]] + [
+            (s, "update", s.update) for s in self._update_before
+        ]
+        self._after_calls = [(s, "update", s.update) for s in self._update_after] + [
+            (s, "post_update", s.post_update) for s in self._phase["post_update"]
+        ]
 
     def next_update(self, sim_time_sec: float) -> float:
         """The earliest :meth:`System.next_update` of the systems that have a per-step phase."""
@@ -183,13 +193,23 @@ class SystemManager:
 
     def pre_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         """Before the steps: every ``pre_update``, then the ``update`` s with priority below PHYSICS."""
-        self._run(self._phase["pre_update"], "pre_update", info, world)
-        self._run(self._update_before, "update", info, world)
+        self._call(self._before_calls, info, world)
 
     def post_physics(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         """After the steps: the other ``update`` s, then every ``post_update``."""
-        self._run(self._update_after, "update", info, world)
-        self._run(self._phase["post_update"], "post_update", info, world)
+        self._call(self._after_calls, info, world)
+
+    def _call(
+        self,
+        calls: list[tuple[System, str, Callable[[UpdateInfo, PhysicsWorld], None]]],
+        info: UpdateInfo,
+        world: PhysicsWorld,
+    ) -> None:
+        for system, phase, fn in calls:
+            try:
+                fn(info, world)
+            except Exception as err:
+                self._disable(system, phase, err)  # rebuilds the lists; this loop goes on over the old one
 
 
 # --------------------------------------------------------------------------- config helpers
