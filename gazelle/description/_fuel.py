@@ -66,6 +66,7 @@ class FuelModel:
     version: str | None
 
     def label(self) -> str:
+        """``owner/name`` (and the version), as messages name the model."""
         return f"{self.owner}/{self.name}" + (f" (version {self.version})" if self.version else "")
 
 

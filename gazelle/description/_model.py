@@ -362,6 +362,8 @@ class JointType(enum.Enum):
 
 @dataclass(frozen=True, slots=True)
 class JointLimit:
+    """A joint's range and limits (URDF ``<limit>``, SDF ``<axis><limit>``); None: unlimited."""
+
     lower: float | None = None
     upper: float | None = None
     effort: float | None = None
@@ -371,6 +373,8 @@ class JointLimit:
 
 @dataclass(frozen=True, slots=True)
 class JointDynamics:
+    """A joint's damping, friction and spring (URDF ``<dynamics>``, SDF ``<axis><dynamics>``)."""
+
     damping: float = 0.0
     friction: float = 0.0
     spring_stiffness: float = 0.0
@@ -388,6 +392,8 @@ class JointAxis:
 
 @dataclass(frozen=True, slots=True)
 class Mimic:
+    """URDF ``<mimic>``: this joint follows ``joint`` as ``multiplier * q + offset``."""
+
     joint: str
     multiplier: float = 1.0
     offset: float = 0.0
@@ -395,6 +401,8 @@ class Mimic:
 
 @dataclass(frozen=True, slots=True)
 class SafetyController:
+    """URDF ``<safety_controller>`` (kept for controllers that read it; not simulated)."""
+
     soft_lower_limit: float = 0.0
     soft_upper_limit: float = 0.0
     k_position: float = 0.0
@@ -403,6 +411,8 @@ class SafetyController:
 
 @dataclass(frozen=True, slots=True)
 class Calibration:
+    """URDF ``<calibration>`` (kept as given; not simulated)."""
+
     rising: float | None = None
     falling: float | None = None
 
@@ -457,12 +467,16 @@ class GazeboExtension:
 # --------------------------------------------------------------------------- semantics (SRDF)
 @dataclass(frozen=True, slots=True)
 class Chain:
+    """SRDF ``<chain base_link tip_link>`` inside a group."""
+
     base_link: str
     tip_link: str
 
 
 @dataclass(frozen=True, slots=True)
 class Group:
+    """SRDF ``<group>``: the joints, links, chains and subgroups a planner moves together."""
+
     name: str
     links: tuple[str, ...] = ()
     joints: tuple[str, ...] = ()
@@ -472,6 +486,8 @@ class Group:
 
 @dataclass(frozen=True, slots=True)
 class GroupState:
+    """SRDF ``<group_state>``: a named joint configuration of a group (``home``, ``ready``)."""
+
     name: str
     group: str
     joint_values: tuple[tuple[str, tuple[float, ...]], ...] = ()
@@ -479,6 +495,8 @@ class GroupState:
 
 @dataclass(frozen=True, slots=True)
 class EndEffector:
+    """SRDF ``<end_effector>``: a group attached to a parent link (and parent group)."""
+
     name: str
     parent_link: str
     group: str
@@ -487,6 +505,8 @@ class EndEffector:
 
 @dataclass(frozen=True, slots=True)
 class VirtualJoint:
+    """SRDF ``<virtual_joint>``: how the robot's root attaches to the world frame."""
+
     name: str
     type: str
     parent_frame: str
@@ -495,6 +515,8 @@ class VirtualJoint:
 
 @dataclass(frozen=True, slots=True)
 class DisabledCollision:
+    """SRDF ``<disable_collisions>``: a link pair a planner never checks, and why."""
+
     link1: str
     link2: str
     reason: str = ""
@@ -568,6 +590,8 @@ class Model:
 
 @dataclass(frozen=True, slots=True)
 class Light:
+    """A world ``<light>``: directional, point or spot, with its colours and direction."""
+
     name: str
     type: str = "directional"
     """"directional", "point" or "spot"."""
@@ -582,6 +606,8 @@ class Light:
 
 @dataclass(frozen=True, slots=True)
 class PhysicsSettings:
+    """A world's ``<physics>``: step size and real-time factor (the engine is always MuJoCo)."""
+
     max_step_size_sec: float = 0.001
     real_time_factor: float = 1.0
     real_time_update_rate_hz: float = 1000.0
@@ -590,6 +616,8 @@ class PhysicsSettings:
 
 @dataclass(frozen=True, slots=True)
 class Scene:
+    """A world's ``<scene>``: ambient and background colours, shadows, grid."""
+
     ambient: RGBA = (0.4, 0.4, 0.4, 1.0)
     background: RGBA = (0.7, 0.7, 0.7, 1.0)
     shadows: bool = True

@@ -87,14 +87,17 @@ class JointHandle:
 
     @property
     def position(self) -> float:
+        """The joint's position now (rad or m), as ros2_control's ``position`` state interface reads it."""
         return float(self.world.data.qpos[self._ids.get(self.world).qpos])
 
     @property
     def velocity(self) -> float:
+        """The joint's velocity now (rad/s or m/s): the ``velocity`` state interface."""
         return float(self.world.data.qvel[self._ids.get(self.world).dof])
 
     @property
     def effort(self) -> float:
+        """The actuators' force or torque on the joint in the last step: the ``effort`` state interface."""
         return float(self.world.data.qfrc_actuator[self._ids.get(self.world).dof])
 
     def __repr__(self) -> str:

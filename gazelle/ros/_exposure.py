@@ -56,6 +56,7 @@ class ServerId:
     pid: int
 
     def describe(self) -> str:
+        """Who the other server is, for the "one server per domain" warning."""
         age = time.time() - self.started
         return f"pid {self.pid} on {self.host}, started {age:.0f} s ago"
 

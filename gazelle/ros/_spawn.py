@@ -28,6 +28,7 @@ from ..systems import RSP_PLUGIN
 
 
 def build_parser() -> argparse.ArgumentParser:
+    """gazebo_ros's ``spawn_entity.py`` options (single-dash, as its users type them)."""
     p = argparse.ArgumentParser(
         prog="gazelle spawn",
         description="Spawn an entity in gazelle (the arguments of gazebo_ros's spawn_entity.py).",

@@ -147,6 +147,7 @@ class Simulation:
     # ------------------------------------------------------------------ threading
     @property
     def running(self) -> bool:
+        """Whether the simulation thread is stepping (or paused but alive)."""
         return self._thread is not None and self._thread.is_alive()
 
     def start(self) -> None:

@@ -75,6 +75,7 @@ def _vec3(cfg: ConfigElement, tag: str, log: logging.Logger) -> tuple[float, flo
 
 
 def parse_config(ctx: SystemContext, log: logging.Logger) -> P3dConfig:
+    """The plugin's parameters, ROS 1 names mapped to ROS 2 ones first."""
     cfg = ctx.plugin.config if ctx.plugin is not None else None
     if cfg is None:
         return P3dConfig(namespace=ctx.entity.namespace)

@@ -28,6 +28,7 @@ class TriMesh:
 
 
 def rgba_to_rgb255(rgba: tuple[float, float, float, float] | None) -> tuple[int, int, int]:
+    """A description colour (0..1 floats, None: the default grey) as viser's 0..255 RGB."""
     r, g, b, _a = rgba or DEFAULT_RGBA
     return (
         int(round(255 * min(max(r, 0.0), 1.0))),

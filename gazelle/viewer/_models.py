@@ -21,6 +21,8 @@ MAX_MODELS = 200
 
 @dataclass(frozen=True)
 class ModelFile:
+    """A model description found on the resource paths, as the Spawn panel lists it."""
+
     label: str
     """What the dropdown shows: ``folder/file`` relative to its search path."""
     path: Path

@@ -272,15 +272,18 @@ class Viewer:
     # ------------------------------------------------------------------ lifecycle
     @property
     def url(self) -> str:
+        """The address to open in a browser (loopback when the server listens on every interface)."""
         host = self.server.get_host()
         return f"http://{'127.0.0.1' if host in ('0.0.0.0', '') else host}:{self.server.get_port()}"
 
     def start(self) -> None:
+        """Start the viewer thread (frames pulled from the simulation at ``rate_hz``)."""
         self._stop.clear()
         self._thread = threading.Thread(target=self._loop, name="gazelle-viewer", daemon=True)
         self._thread.start()
 
     def stop(self) -> None:
+        """Stop the viewer thread and the web server."""
         self._stop.set()
         if self._thread is not None:
             self._thread.join(5.0)
