@@ -55,20 +55,18 @@ EXPECTED: dict[str, tuple[type, dict[str, int]]] = {
         for f in ("model.sdf", "model-1_2.sdf", "model-1_3.sdf", "model-1_4.sdf")
     },
     # ---- moveit_panda
-    # dual arm: 2 ros2_control blocks per arm are not simulated; its links carry no <inertial>
-    "moveit_panda/_xacro_expanded/dual_arm_panda.urdf": (Model, {"ELEMENT_UNSUPPORTED": 4, "INERTIA_MISSING": 22}),
+    # dual arm: its links carry no <inertial> (its 4 <ros2_control> blocks are read: spawn and check
+    # say they are not simulated yet)
+    "moveit_panda/_xacro_expanded/dual_arm_panda.urdf": (Model, {"INERTIA_MISSING": 22}),
     "moveit_panda/_xacro_expanded/panda_arm.srdf": (Semantics, {}),
     "moveit_panda/_xacro_expanded/panda_arm_hand.srdf": (Semantics, {}),
     "moveit_panda/_xacro_expanded/panda_description.urdf": (Model, PANDA_DYNAMICS),
-    "moveit_panda/_xacro_expanded/panda_moveit_config.urdf": (Model, {**PANDA_DYNAMICS, "ELEMENT_UNSUPPORTED": 2}),
+    "moveit_panda/_xacro_expanded/panda_moveit_config.urdf": (Model, PANDA_DYNAMICS),
     "moveit_panda/dual_arm_panda_moveit_config/config/hand.xacro": (Model, {"FRAGMENT": 1}),
     "moveit_panda/dual_arm_panda_moveit_config/config/panda.ros2_control.xacro": (Model, {"FRAGMENT": 1}),
     # the dual-arm SRDF names two links that its URDF does not have (upstream as is)
     "moveit_panda/dual_arm_panda_moveit_config/config/panda.srdf": (Semantics, {"SRDF_REFERENCE_INVALID": 2}),
-    "moveit_panda/dual_arm_panda_moveit_config/config/panda.urdf.xacro": (
-        Model,
-        {"ELEMENT_UNSUPPORTED": 4, "INERTIA_MISSING": 22},
-    ),
+    "moveit_panda/dual_arm_panda_moveit_config/config/panda.urdf.xacro": (Model, {"INERTIA_MISSING": 22}),
     "moveit_panda/dual_arm_panda_moveit_config/config/panda_arm_macro.xacro": (Model, {"FRAGMENT": 1}),
     "moveit_panda/dual_arm_panda_moveit_config/config/panda_hand.ros2_control.xacro": (Model, {"FRAGMENT": 1}),
     # the plain panda.urdf has no <inertial> at all: derived from the collision meshes
@@ -77,17 +75,14 @@ EXPECTED: dict[str, tuple[type, dict[str, int]]] = {
     "moveit_panda/moveit_resources_panda_moveit_config/config/hand.xacro": (Model, {"FRAGMENT": 1}),
     "moveit_panda/moveit_resources_panda_moveit_config/config/panda.ros2_control.xacro": (Model, {"FRAGMENT": 1}),
     "moveit_panda/moveit_resources_panda_moveit_config/config/panda.srdf": (Semantics, {}),
-    "moveit_panda/moveit_resources_panda_moveit_config/config/panda.urdf.xacro": (
-        Model,
-        {**PANDA_DYNAMICS, "ELEMENT_UNSUPPORTED": 2},
-    ),
+    "moveit_panda/moveit_resources_panda_moveit_config/config/panda.urdf.xacro": (Model, PANDA_DYNAMICS),
     "moveit_panda/moveit_resources_panda_moveit_config/config/panda_arm.srdf.xacro": (Semantics, {}),
     "moveit_panda/moveit_resources_panda_moveit_config/config/panda_arm.xacro": (Model, {"FRAGMENT": 1}),
     "moveit_panda/moveit_resources_panda_moveit_config/config/panda_arm_hand.srdf.xacro": (Semantics, {}),
     "moveit_panda/moveit_resources_panda_moveit_config/config/panda_hand.ros2_control.xacro": (Model, {"FRAGMENT": 1}),
-    # ---- ros2_control_diffbot: the <ros2_control> block is kept but not simulated
-    "ros2_control_diffbot/_xacro_expanded/diffbot.mock.urdf": (Model, {"ELEMENT_UNSUPPORTED": 1}),
-    "ros2_control_diffbot/_xacro_expanded/diffbot.urdf": (Model, {"ELEMENT_UNSUPPORTED": 1}),
+    # ---- ros2_control_diffbot: the <ros2_control> block is read (spawn and check say it is not simulated yet)
+    "ros2_control_diffbot/_xacro_expanded/diffbot.mock.urdf": (Model, {}),
+    "ros2_control_diffbot/_xacro_expanded/diffbot.urdf": (Model, {}),
     "ros2_control_diffbot/ros2_control_demo_description/diffbot/urdf/diffbot.materials.xacro": (
         Model,
         {"FRAGMENT": 1},
@@ -100,9 +95,9 @@ EXPECTED: dict[str, tuple[type, dict[str, int]]] = {
         Model,
         {"FRAGMENT": 1},
     ),
-    "ros2_control_diffbot/ros2_control_demo_example_2/urdf/diffbot.urdf.xacro": (Model, {"ELEMENT_UNSUPPORTED": 1}),
+    "ros2_control_diffbot/ros2_control_demo_example_2/urdf/diffbot.urdf.xacro": (Model, {}),
     # ---- ros2_control_r6bot
-    "ros2_control_r6bot/_xacro_expanded/r6bot.urdf": (Model, {"ELEMENT_UNSUPPORTED": 1}),
+    "ros2_control_r6bot/_xacro_expanded/r6bot.urdf": (Model, {}),
     "ros2_control_r6bot/ros2_control_demo_description/r6bot/srdf/r6bot.srdf": (Semantics, {}),
     "ros2_control_r6bot/ros2_control_demo_description/r6bot/urdf/inc/create_link.xacro": (Model, {"FRAGMENT": 1}),
     "ros2_control_r6bot/ros2_control_demo_description/r6bot/urdf/r6bot_description.urdf.xacro": (
@@ -110,7 +105,7 @@ EXPECTED: dict[str, tuple[type, dict[str, int]]] = {
         {"FRAGMENT": 1},
     ),
     "ros2_control_r6bot/ros2_control_demo_example_7/ros2_control/r6bot.ros2_control.xacro": (Model, {"FRAGMENT": 1}),
-    "ros2_control_r6bot/ros2_control_demo_example_7/urdf/r6bot.urdf.xacro": (Model, {"ELEMENT_UNSUPPORTED": 1}),
+    "ros2_control_r6bot/ros2_control_demo_example_7/urdf/r6bot.urdf.xacro": (Model, {}),
     # ---- turtlebot3
     "turtlebot3/_xacro_expanded/turtlebot3_burger.from_urdf.urdf": (Model, {}),
     "turtlebot3/_xacro_expanded/turtlebot3_burger.noetic_xacro.urdf": (Model, {}),

@@ -293,7 +293,7 @@ def test_invalid_file_reports_code_message_and_line(name: str, expected: str) ->
             "unsupported.urdf",
             "unsupported.urdf:11: warning: [ELEMENT_UNSUPPORTED] transmission 't1' is kept but not simulated",
         ),
-        ("unsupported.urdf", "unsupported.urdf:14: warning: [ELEMENT_UNSUPPORTED] ros2_control is not supported yet"),
+        ("unsupported.urdf", "unsupported.urdf:14: warning: [ELEMENT_MISSING] ros2_control 'sys' has no <hardware>"),
         (
             "unsupported.urdf",
             "unsupported.urdf:15: warning: [ELEMENT_UNSUPPORTED] <sensor> in <robot> is not supported",

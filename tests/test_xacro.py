@@ -92,17 +92,17 @@ _REAL_CASES = [
         "moveit_resources_panda_moveit_config/config/panda.urdf.xacro",
         12,
         11,
-        {"ELEMENT_UNSUPPORTED", "ATTRIBUTE_UNSUPPORTED"},
+        {"ATTRIBUTE_UNSUPPORTED"},
     ),
     (
         "moveit_panda",
         "dual_arm_panda_moveit_config/config/panda.urdf.xacro",
         25,
         24,
-        {"ELEMENT_UNSUPPORTED", "INERTIA_MISSING"},
+        {"INERTIA_MISSING"},
     ),
-    ("ros2_control_diffbot", "ros2_control_demo_example_2/urdf/diffbot.urdf.xacro", 5, 4, {"ELEMENT_UNSUPPORTED"}),
-    ("ros2_control_r6bot", "ros2_control_demo_example_7/urdf/r6bot.urdf.xacro", 10, 9, {"ELEMENT_UNSUPPORTED"}),
+    ("ros2_control_diffbot", "ros2_control_demo_example_2/urdf/diffbot.urdf.xacro", 5, 4, set()),
+    ("ros2_control_r6bot", "ros2_control_demo_example_7/urdf/r6bot.urdf.xacro", 10, 9, set()),
 ]
 
 
@@ -122,13 +122,12 @@ def test_real_robot_loads_through_xacro(
     assert all(m.path is not None and Path(m.path).is_file() for m in meshes)
 
 
-def test_ros2_control_warning_points_into_included_file(monkeypatch: pytest.MonkeyPatch) -> None:
+def test_ros2_control_location_points_into_included_file(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(REAL / "ros2_control_diffbot"))
     result = load(REAL / "ros2_control_diffbot/ros2_control_demo_example_2/urdf/diffbot.urdf.xacro")
-    assert (
-        "diffbot.ros2_control.xacro:6: warning: [ELEMENT_UNSUPPORTED] ros2_control is not supported yet"
-        in formatted(result.diagnostics)
-    )
+    (rc,) = result.value.ros2_control
+    assert rc.location is not None and rc.location.line == 6
+    assert str(rc.location.file).endswith("diffbot.ros2_control.xacro")
 
 
 def test_turtlebot3_gazebo_blocks_are_applied(monkeypatch: pytest.MonkeyPatch) -> None:

@@ -535,6 +535,65 @@ class Semantics:
     disabled_collisions: tuple[DisabledCollision, ...] = ()
 
 
+# --------------------------------------------------------------------------- ros2_control
+SIMULATED_HARDWARE = frozenset(
+    {
+        "gazebo_ros2_control/GazeboSystem",
+        "gz_ros2_control/GazeboSimSystem",
+        "ign_ros2_control/IgnitionSystem",
+        "mujoco_ros2_control/MujocoSystem",
+        "mock_components/GenericSystem",
+    }
+)
+"""``<hardware><plugin>`` names that mean "the simulator is the hardware"."""
+
+
+@dataclass(frozen=True, slots=True)
+class ControlInterface:
+    """A ``<command_interface>`` or ``<state_interface>`` of a ros2_control component, with its
+    ``<param>`` s (``min``, ``max``, ``initial_value``, ``data_type``...) as written."""
+
+    name: str
+    params: tuple[tuple[str, str], ...] = ()
+    location: SourceLocation | None = None
+
+    def param(self, name: str) -> str | None:
+        """A ``<param name=...>`` value as written, or None."""
+        return next((v for k, v in self.params if k == name), None)
+
+
+@dataclass(frozen=True, slots=True)
+class ControlComponent:
+    """A ``<joint>``, ``<sensor>`` or ``<gpio>`` of a ``<ros2_control>`` block."""
+
+    name: str
+    command_interfaces: tuple[ControlInterface, ...] = ()
+    state_interfaces: tuple[ControlInterface, ...] = ()
+    params: tuple[tuple[str, str], ...] = ()
+    location: SourceLocation | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Ros2Control:
+    """A URDF ``<ros2_control name type>`` block: its hardware and what it exposes to controllers."""
+
+    name: str
+    type: str
+    """``system``, ``actuator`` or ``sensor``."""
+    hardware_plugin: str = ""
+    """``<hardware><plugin>``; see :data:`SIMULATED_HARDWARE` and :attr:`simulated`."""
+    hardware_params: tuple[tuple[str, str], ...] = ()
+    joints: tuple[ControlComponent, ...] = ()
+    sensors: tuple[ControlComponent, ...] = ()
+    gpios: tuple[ControlComponent, ...] = ()
+    location: SourceLocation | None = None
+
+    @property
+    def simulated(self) -> bool:
+        """Whether the hardware plugin is a simulator's (else a real driver, which the simulator stands in for)."""
+        return self.hardware_plugin in SIMULATED_HARDWARE
+
+
 # --------------------------------------------------------------------------- models and worlds
 @dataclass(frozen=True, slots=True)
 class Model:
@@ -561,6 +620,8 @@ class Model:
     location: SourceLocation | None = None
     transmissions: tuple[ConfigElement, ...] = ()
     """URDF ``<transmission>`` blocks as written (kept, not simulated)."""
+    ros2_control: tuple[Ros2Control, ...] = ()
+    """URDF ``<ros2_control>`` blocks."""
     urdf: str = ""
     """The URDF text this model was read from (xacro expanded); published as /robot_description."""
 

@@ -29,6 +29,8 @@ from ._model import (
     Capsule,
     Collision,
     ConfigElement,
+    ControlComponent,
+    ControlInterface,
     Cylinder,
     GazeboExtension,
     Geometry,
@@ -45,6 +47,7 @@ from ._model import (
     Model,
     Plugin,
     Pose,
+    Ros2Control,
     SafetyController,
     Sensor,
     Sphere,
@@ -158,6 +161,7 @@ class _Document:
     plugins: list[Plugin] = field(default_factory=list)
     gazebo: list[GazeboExtension] = field(default_factory=list)
     transmissions: list[ConfigElement] = field(default_factory=list)
+    ros2_control: list[etree._Element] = field(default_factory=list)
     model_flags: dict[str, bool] = field(default_factory=dict)
 
 
@@ -716,7 +720,7 @@ class _Reader:
                     child,
                 )
             elif tag == "ros2_control":
-                self.warn(ErrorCode.ELEMENT_UNSUPPORTED, "ros2_control is not supported yet", child)
+                doc.ros2_control.append(child)  # read once every joint is known
             elif tag != "material":
                 self.unsupported(child, f"<{tag}> in <robot>")
         for block in gazebo_blocks:
@@ -727,6 +731,82 @@ class _Reader:
             else:
                 self.gazebo(block, doc)
         return None if name is None else doc
+
+    def ros2_control(self, element: etree._Element, doc: _Document) -> Ros2Control | None:
+        """A ``<ros2_control name type>`` block. A joint it names that the robot lacks, or a tag it
+        does not know, is warned about (file:line) and left out; the rest is kept."""
+        name = self.name(element, "<ros2_control>")
+        if name is None:
+            return None
+        kind = (element.get("type") or "system").strip()
+        if kind not in ("system", "actuator", "sensor"):
+            self.warn(
+                ErrorCode.VALUE_INVALID,
+                f"ros2_control '{name}' has type '{kind}' (system, actuator or sensor)",
+                element,
+            )
+        plugin, hw_params = "", ()
+        joints: list[ControlComponent] = []
+        sensors: list[ControlComponent] = []
+        gpios: list[ControlComponent] = []
+        for child in child_elements(element):
+            tag = local_name(child)
+            if tag == "hardware":
+                plugin_el = child.find("plugin")
+                if plugin_el is None:
+                    plugin_el = child.find("classType")  # before Humble
+                plugin = (plugin_el.text or "").strip() if plugin_el is not None else ""
+                hw_params = self.control_params(child)
+                if not plugin:
+                    self.warn(ErrorCode.ELEMENT_MISSING, f"ros2_control '{name}' has no <hardware><plugin>", child)
+            elif tag in ("joint", "sensor", "gpio"):
+                component = self.control_component(child, tag)
+                if component is None:
+                    continue
+                if tag == "joint" and component.name not in doc.joints:
+                    known = ", ".join(sorted(doc.joints)) or "none"
+                    self.warn(
+                        ErrorCode.CONTROL_JOINT_INVALID,
+                        f"ros2_control '{name}': joint '{component.name}' is not a joint of the robot "
+                        f"(it has {known}); it is left out",
+                        child,
+                    )
+                    continue
+                {"joint": joints, "sensor": sensors, "gpio": gpios}[tag].append(component)
+            else:
+                self.unsupported(child, f"<{tag}> in <ros2_control>")
+        if element.find("hardware") is None:
+            self.warn(ErrorCode.ELEMENT_MISSING, f"ros2_control '{name}' has no <hardware>", element)
+        return Ros2Control(
+            name, kind, plugin, hw_params, tuple(joints), tuple(sensors), tuple(gpios), self.loc(element)
+        )
+
+    def control_params(self, element: etree._Element) -> tuple[tuple[str, str], ...]:
+        """The ``<param name=...>value</param>`` children, in order."""
+        return tuple(
+            ((p.get("name") or "").strip(), (p.text or "").strip())
+            for p in element.findall("param")
+            if (p.get("name") or "").strip()
+        )
+
+    def control_component(self, element: etree._Element, tag: str) -> ControlComponent | None:
+        """A ``<joint>``/``<sensor>``/``<gpio>`` of a ros2_control block, with its interfaces."""
+        name = self.name(element, f"<{tag}> in <ros2_control>")
+        if name is None:
+            return None
+        commands, states = [], []
+        for child in child_elements(element):
+            t = local_name(child)
+            if t in ("command_interface", "state_interface"):
+                iname = (child.get("name") or "").strip()
+                if not iname:
+                    self.warn(ErrorCode.ATTRIBUTE_MISSING, f"<{t}> of {tag} '{name}' has no name", child)
+                    continue
+                iface = ControlInterface(iname, self.control_params(child), self.loc(child))
+                (commands if t == "command_interface" else states).append(iface)
+            elif t != "param":
+                self.unsupported(child, f"<{t}> in ros2_control {tag} '{name}'")
+        return ControlComponent(name, tuple(commands), tuple(states), self.control_params(element), self.loc(element))
 
     def named_materials(self, root: etree._Element) -> dict[str, Material]:
         """Materials usable by name: top-level ones first, then any defined inline in a visual."""
@@ -1147,4 +1227,5 @@ def parse_urdf(
         source_file=source,
         location=reader.loc(root),
         transmissions=tuple(doc.transmissions),
+        ros2_control=tuple(rc for rc in (reader.ros2_control(el, doc) for el in doc.ros2_control) if rc is not None),
     )

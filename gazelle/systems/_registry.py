@@ -362,6 +362,16 @@ def audit_model(model: Model, world_plugins: tuple[Plugin, ...] | None = None) -
         if problem is not None:
             out.append(Diagnostic(ErrorCode.PLUGIN_UNSUPPORTED, Severity.WARNING, problem, plugin.location))
     out.extend(plan_sensors(model, world_plugins)[1])
+    for rc in model.ros2_control:
+        out.append(
+            Diagnostic(
+                ErrorCode.ELEMENT_UNSUPPORTED,
+                Severity.WARNING,
+                f"ros2_control '{rc.name}' ({rc.hardware_plugin or 'no hardware plugin'}, {len(rc.joints)} joint(s)) "
+                "is read but not simulated yet: no controller manager runs its controllers",
+                rc.location,
+            )
+        )
     return out
 
 

@@ -136,7 +136,9 @@ def test_ros2_control_diffbot_spawns_with_tf_and_a_warning(resources, sim_factor
     wait_for(lambda: links <= obs.frames, 15, f"every frame of {sorted(links)} on /tf + /tf_static")
     sim.wait_line("ros2_control", 10)
     line = next(ln for ln in sim.output.splitlines() if "ros2_control" in ln)
-    assert "not supported" in line, line
+    assert (
+        "ros2_control 'DiffBot'" in line and "not simulated yet" in line and "diffbot.ros2_control.xacro:6" in line
+    ), line
 
 
 def _tilt_deg(q) -> float:
