@@ -594,3 +594,21 @@ def test_namespaced_robots_get_namespaced_sensor_topics_and_prefixed_frames():
             f"/{ns}/camera/camera_info",
             f"{ns}/camera_link",
         )
+
+
+def test_an_unknown_sensor_type_is_named_with_a_did_you_mean_and_an_unsimulated_one_as_not_yet():
+    xml = _lidar_model().replace('type="ray"', 'type="lidarr"')
+    _plans, problems = plan_sensors(load_string(xml).value, default_world().plugins)
+    assert [(p.message, p.location.line if p.location else None) for p in problems] == [
+        (
+            "sensor 'laser' (lidarr) on link 'base': 'lidarr' is not an SDF sensor type, so nothing runs it; "
+            "did you mean 'lidar'?",
+            5,
+        )
+    ]
+    gz = """<?xml version="1.0"?><sdf version="1.9"><model name="m"><link name="l">
+      <sensor name="alt" type="altimeter"><update_rate>10</update_rate></sensor></link></model></sdf>"""
+    plans, problems = plan_sensors(load_string(gz).value, default_world().plugins)
+    assert plans == [] and [p.message for p in problems] == [
+        "sensor 'alt' (altimeter) on link 'l' is not simulated yet"
+    ]

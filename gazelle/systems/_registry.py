@@ -168,6 +168,56 @@ GZ_SENSOR_WORLD_SYSTEMS: dict[str, dict[str, Callable[[], System]]] = {
 """gz-sim world systems that run the sensors of a type that have no gazebo_ros plugin."""
 
 
+SDF_SENSOR_TYPES = frozenset(
+    {
+        "air_pressure",
+        "air_speed",
+        "altimeter",
+        "boundingbox_camera",
+        "camera",
+        "contact",
+        "custom",
+        "depth",
+        "depth_camera",
+        "force_torque",
+        "gps",
+        "gpu_lidar",
+        "gpu_ray",
+        "imu",
+        "lidar",
+        "logical_camera",
+        "magnetometer",
+        "multicamera",
+        "navsat",
+        "ray",
+        "rfid",
+        "rfidtag",
+        "rgbd",
+        "rgbd_camera",
+        "segmentation",
+        "segmentation_camera",
+        "sonar",
+        "thermal",
+        "thermal_camera",
+        "wide_angle_camera",
+        "wireless_receiver",
+        "wireless_transmitter",
+    }
+)
+"""Every ``<sensor type>`` SDF knows (sdformat's sensor.sdf, 1.4 to 1.11)."""
+
+
+def _sensor_type_problem(label: str, kind: str) -> str:
+    """Why a sensor of ``kind`` does not run: not simulated yet, or not a sensor type at all."""
+    if kind in SDF_SENSOR_TYPES:
+        return f"{label} is not simulated yet"
+    import difflib
+
+    close = difflib.get_close_matches(kind, sorted(SDF_SENSOR_TYPES), n=1, cutoff=0.6)
+    hint = f"; did you mean '{close[0]}'?" if close else ""
+    return f"{label}: '{kind}' is not an SDF sensor type, so nothing runs it{hint}"
+
+
 @dataclass(frozen=True)
 class SensorPlan:
     """One sensor that will run: its link, the ``<sensor>``, the gazebo_ros plugin (None: gz-sim) and its system."""
@@ -223,10 +273,14 @@ def plan_sensors(
                     continue
                 make, types = entry
                 if sensor.type not in types:
-                    warn(
-                        f"{label}: plugin '{plugin.filename}' does not publish a {sensor.type} sensor; it is ignored",
-                        plugin.location,
-                    )
+                    if sensor.type not in SDF_SENSOR_TYPES:
+                        warn(_sensor_type_problem(label, sensor.type), sensor.location)
+                    else:
+                        warn(
+                            f"{label}: plugin '{plugin.filename}' does not publish a {sensor.type} sensor; "
+                            "it is ignored",
+                            plugin.location,
+                        )
                     continue
                 plans.append(SensorPlan(link.name, sensor, plugin, make))
                 ran = True
@@ -255,7 +309,7 @@ def plan_sensors(
                         sensor.location,
                     )
             else:
-                warn(f"{label} is not simulated yet", sensor.location)
+                warn(_sensor_type_problem(label, sensor.type), sensor.location)
     return plans, out
 
 
