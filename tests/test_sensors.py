@@ -612,3 +612,24 @@ def test_an_unknown_sensor_type_is_named_with_a_did_you_mean_and_an_unsimulated_
     assert plans == [] and [p.message for p in problems] == [
         "sensor 'alt' (altimeter) on link 'l' is not simulated yet"
     ]
+
+
+def test_a_camera_keeps_rendering_across_recompiles_and_a_deleted_one_frees_its_gl_context():
+    from gazelle.systems.sensors import Camera
+
+    sim = Simulation(default_world(), rtf=0)
+    bot = load(REPO / "examples/sensor_bot/sensor_bot.urdf").value
+    cam = next(s for s in sim.spawn(bot, name="bot", pose=Pose((0.0, 0.0, 0.07))).systems if isinstance(s, Camera))
+    first = cam.render(sim.world, depth=True)
+    assert first is not None and np.isinf(first[1][0, 160])  # the sky
+    # a wall spawned in front recompiles the model: the renderer follows the new model
+    _spawn(sim, _box("wall", (2.1, 0.0, 1.0), (0.2, 6.0, 2.0), "1 0 0 1"), "wall")
+    again = cam.render(sim.world, depth=True)
+    assert again is not None and abs(again[1][120, 160] - (2.0 - 0.17)) < 0.01  # the wall, from the camera at x 0.17
+    renderer = cam._renderer
+    assert renderer is not None and renderer._gl is not None
+    sim.delete("bot")
+    assert cam._renderer is None and renderer._gl is None  # shut down with its entity
+    cam2 = next(s for s in sim.spawn(bot, name="bot", pose=Pose((0.0, 0.0, 0.07))).systems if isinstance(s, Camera))
+    third = cam2.render(sim.world, depth=False)
+    assert third is not None and (third[0][100:120, 150:170, 0] > 100).mean() > 0.9  # the red wall again
