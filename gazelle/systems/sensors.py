@@ -63,6 +63,11 @@ DEPTH_TYPES = frozenset({"depth", "depth_camera", "rgbd_camera", "rgbd"})
 """``<sensor type>`` values cast as rays (Gazebo's ``gpu_*`` variants see visuals; here all see collisions)."""
 IMU_TYPES = frozenset({"imu"})
 
+MAX_RAYS = 2_000_000
+"""The most rays one lidar scan may cast (a 128 x 4096 automotive lidar casts 524,288)."""
+MAX_IMAGE_SIDE = 8192
+"""The widest and tallest camera image (an offscreen framebuffer's usual limit)."""
+
 SENSOR_DEPTH = 5
 """Publisher history of every sensor topic: SensorDataQoS's depth 5, made reliable as gazebo_ros does."""
 
@@ -202,6 +207,10 @@ def parse_lidar(sensor: Sensor, log: logging.Logger) -> LidarSpec:
     rmax = parse_float(rng, "max", 10.0, log)
     if h.samples < 1 or v.samples < 1 or h.count < 1:
         raise SensorConfigError(f"{where}sensor '{sensor.name}': <samples> must be at least 1")
+    if h.count * v.count > MAX_RAYS:
+        raise SensorConfigError(
+            f"{where}sensor '{sensor.name}': {v.count} x {h.count} rays is more than the {MAX_RAYS:,} a scan may cast"
+        )
     if not (0.0 <= rmin < rmax) or not math.isfinite(rmax):
         raise SensorConfigError(f"{where}sensor '{sensor.name}': <range> needs 0 <= min < max, got {rmin} .. {rmax}")
     if h.max_angle < h.min_angle or v.max_angle < v.min_angle:
@@ -691,6 +700,11 @@ def parse_camera(sensor: Sensor, log: logging.Logger) -> CameraSpec:
     near, far = parse_float(clip, "near", 0.1, log), parse_float(clip, "far", 100.0, log)
     if width < 1 or height < 1:
         raise SensorConfigError(f"{where}sensor '{sensor.name}': a camera of {width}x{height} pixels cannot render")
+    if width > MAX_IMAGE_SIDE or height > MAX_IMAGE_SIDE:
+        raise SensorConfigError(
+            f"{where}sensor '{sensor.name}': a camera of {width}x{height} pixels is larger than "
+            f"{MAX_IMAGE_SIDE}x{MAX_IMAGE_SIDE}, the most an offscreen buffer may be"
+        )
     if not 0.0 < hfov < math.pi:
         raise SensorConfigError(f"{where}sensor '{sensor.name}': <horizontal_fov> must be in (0, pi), got {hfov}")
     if not 0.0 < near < far:
