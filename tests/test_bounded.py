@@ -20,6 +20,9 @@ def _handler(request: dict) -> object:
     if kind == "spin":
         while True:
             pass
+    if kind == "sleep":  # blocked, not computing: a stalled machine looks like this to the budget
+        time.sleep(request["sec"])
+        return "slept"
     if kind == "exit":
         raise SystemExit(3)
     if kind == "die-once" and not os.path.exists(request["marker"]):
@@ -47,6 +50,23 @@ def test_an_overrun_is_stopped_and_the_next_request_gets_a_new_helper() -> None:
             worker.call({"kind": "spin"}, what="spin", timeout_sec=0.5)
         assert time.monotonic() - t0 < 3.0
         assert worker.call({"kind": "pid"}, what="t") != first
+    finally:
+        worker.close()
+
+
+def test_time_the_helper_spends_not_computing_does_not_use_up_its_budget(monkeypatch) -> None:
+    """The budget is the helper's CPU time: a 0.1 s expansion once hit a 5 s wall-clock limit on a
+    stalled CI machine. A helper that blocks for good is still stopped, by the wall-clock cap."""
+    from gazelle.description import _bounded
+
+    worker = BoundedWorker(_handler)
+    try:
+        assert worker.call({"kind": "sleep", "sec": 1.0}, what="nap", timeout_sec=0.3) == "slept"
+        monkeypatch.setattr(_bounded, "MIN_WALL_SEC", 1.0)
+        t0 = time.monotonic()
+        with pytest.raises(BoundExceeded, match="took longer than 0.1 s"):
+            worker.call({"kind": "sleep", "sec": 30.0}, what="hang", timeout_sec=0.1)
+        assert time.monotonic() - t0 < 5.0
     finally:
         worker.close()
 

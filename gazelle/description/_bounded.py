@@ -3,14 +3,17 @@
 xacro evaluates Python expressions. For a file the user named on their own command line that
 is their right, but a typo or a hostile file must not freeze the process: ``${9**9**9}`` is one
 C-level big-integer operation that no signal interrupts, and it grows without limit. So the work
-runs in a forked helper process with an address-space limit (``RLIMIT_AS``) and a wall-clock
-deadline per request; the parent kills the helper when the deadline passes. The helper inherits
+runs in a forked helper process with an address-space limit (``RLIMIT_AS``) and a time budget per
+request; the parent kills the helper when it is spent. The budget counts the helper's own CPU time
+(``/proc/<pid>/stat``), so a stalled or busy machine does not use it up: a 0.1 s expansion once
+ran into a 5 s wall-clock limit on a loaded CI machine. A helper that blocks without computing is
+stopped after :data:`WALL_FACTOR` times the budget of wall time (at least :data:`MIN_WALL_SEC`). The helper inherits
 every imported module, and :class:`BoundedWorker` keeps it for the next request, so a bounded call
 costs a pipe round trip, not an interpreter start.
 
 Limits (generous for real robots: TurtleBot3, Husky and Panda expand in well under a second):
 
-- ``GAZELLE_XACRO_TIMEOUT`` seconds of wall time, default :data:`DEFAULT_TIMEOUT_SEC`;
+- ``GAZELLE_XACRO_TIMEOUT`` seconds of the helper's CPU time, default :data:`DEFAULT_TIMEOUT_SEC`;
 - ``GAZELLE_XACRO_MEMORY_MB`` MiB of memory on top of what the process already maps, default
   :data:`DEFAULT_MEMORY_MB`.
 """
@@ -31,6 +34,44 @@ T = TypeVar("T")
 
 DEFAULT_TIMEOUT_SEC = 5.0
 DEFAULT_MEMORY_MB = 2048
+WALL_FACTOR = 6.0
+"""A helper gets at most this many times its CPU budget of wall time (at least :data:`MIN_WALL_SEC`)."""
+MIN_WALL_SEC = 30.0
+_TICK = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
+
+
+def _cpu_seconds(pid: int) -> float | None:
+    """User + system CPU time of process ``pid`` (None where /proc does not say)."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            fields = f.read().rsplit(b")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / _TICK  # utime, stime (fields 14 and 15)
+    except (OSError, IndexError, ValueError):
+        return None
+
+
+class _Budget:
+    """One request's allowance: ``cpu_sec`` of the helper's CPU time and a wall-clock cap."""
+
+    def __init__(self, pid: int, cpu_sec: float) -> None:
+        self.pid = pid
+        self.cpu_sec = cpu_sec
+        start = time.monotonic()
+        self.cpu0 = _cpu_seconds(pid)
+        # without /proc, the budget is wall time, as before
+        self.wall_end = start + (max(MIN_WALL_SEC, WALL_FACTOR * cpu_sec) if self.cpu0 is not None else cpu_sec)
+
+    def next_wait(self) -> float:
+        """Seconds to wait for the reply before looking again; raises :class:`_Timeout` when spent."""
+        now = time.monotonic()
+        if now >= self.wall_end:
+            raise _Timeout("wall")
+        if self.cpu0 is None:
+            return self.wall_end - now
+        used = (_cpu_seconds(self.pid) or self.cpu0) - self.cpu0
+        if used >= self.cpu_sec:
+            raise _Timeout("cpu")
+        return min(0.05, self.wall_end - now)
 
 
 class BoundExceeded(Exception):
@@ -205,11 +246,12 @@ class BoundedWorker:
                     self._started_memory = memory
                 try:
                     _write_message(self._to_child, json.dumps(request).encode())
-                    reply = _read_message(self._from_child, time.monotonic() + timeout)
-                except _Timeout:
+                    reply = _read_message(self._from_child, _Budget(self._pid, timeout))
+                except _Timeout as spent:
                     self._stop()
+                    how = "of computing" if str(spent) == "cpu" else "and gave no result in time"
                     raise BoundExceeded(
-                        f"{what} took longer than {timeout:g} s and was stopped ({timeout_hint})"
+                        f"{what} took longer than {timeout:g} s {how}; it was stopped ({timeout_hint})"
                     ) from None
                 except OSError:
                     reply = None
@@ -243,14 +285,11 @@ def _write_message(fd: int, data: bytes) -> None:
         view = view[n:]
 
 
-def _read_exact(fd: int, n: int, deadline: float | None) -> bytes | None:
+def _read_exact(fd: int, n: int, budget: _Budget | None) -> bytes | None:
     chunks: list[bytes] = []
     while n > 0:
-        if deadline is not None:
-            remaining = deadline - time.monotonic()
-            if remaining <= 0:
-                raise _Timeout
-            ready, _, _ = select.select([fd], [], [], remaining)
+        if budget is not None:
+            ready, _, _ = select.select([fd], [], [], budget.next_wait())
             if not ready:
                 continue
         chunk = os.read(fd, min(n, 1 << 20))
@@ -261,9 +300,9 @@ def _read_exact(fd: int, n: int, deadline: float | None) -> bytes | None:
     return b"".join(chunks)
 
 
-def _read_message(fd: int, deadline: float | None) -> bytes | None:
-    """One length-prefixed message, or None at end of file; raises :class:`_Timeout` past ``deadline``."""
-    head = _read_exact(fd, 8, deadline)
+def _read_message(fd: int, budget: _Budget | None) -> bytes | None:
+    """One length-prefixed message, or None at end of file; raises :class:`_Timeout` when ``budget`` is spent."""
+    head = _read_exact(fd, 8, budget)
     if head is None:
         return None
-    return _read_exact(fd, int.from_bytes(head, "little"), deadline)
+    return _read_exact(fd, int.from_bytes(head, "little"), budget)
