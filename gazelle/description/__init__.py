@@ -27,6 +27,7 @@ from ._diagnostics import SimError as SimError
 from ._diagnostics import SourceLocation as SourceLocation
 from ._diagnostics import excerpt as excerpt
 from ._diagnostics import reply_text as reply_text
+from ._inertia import rotation_matrix as rotation_matrix
 from ._meshes import MeshReadError as MeshReadError
 from ._meshes import load_mesh as load_mesh
 from ._model import *  # noqa: F403  (the model dataclasses are the public surface)

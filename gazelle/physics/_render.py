@@ -20,7 +20,7 @@ import os
 import mujoco
 import numpy as np
 
-from ..description import Pose
+from ..description import Pose, rotation_matrix
 from ._builder import SHOWN_COLLISION_GROUP, VISUAL_GROUP
 
 
@@ -45,12 +45,6 @@ def _gl_context(width: int, height: int):
     raise RenderError(
         "cannot render offscreen: " + "; ".join(errors) + " (install Mesa's libegl1 or libosmesa6: scripts/setup.sh)"
     )
-
-
-def _sensor_axes(q: tuple[float, float, float, float]) -> np.ndarray:
-    m = np.empty(9)
-    mujoco.mju_quat2Mat(m, np.asarray(q, dtype=float))
-    return m.reshape(3, 3)
 
 
 class OffscreenRenderer:
@@ -106,7 +100,7 @@ class OffscreenRenderer:
         scn, ctx = self._scene, self._ctx
         assert scn is not None and ctx is not None
         mujoco.mjv_updateScene(w.model, w.data, self._option, None, self._camera, mujoco.mjtCatBit.mjCAT_ALL, scn)
-        R = _sensor_axes(X_WS.orientation)
+        R = rotation_matrix(X_WS.orientation)
         tan_v = math.tan(hfov / 2) * self.height / self.width
         for cam in (scn.camera[0], scn.camera[1]):
             cam.pos[:] = X_WS.position

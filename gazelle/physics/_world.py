@@ -17,7 +17,7 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from ..description import Light, Model, Pose, World, excerpt, quat_conj, quat_rotate
+from ..description import Light, Model, Pose, World, excerpt, quat_conj, quat_rotate, rotation_matrix
 from ._builder import JOINT_ARMATURE, SEP, BuildError, BuiltEntity, add_model, scoped
 from ._convex import cache_dir
 from ._handles import ActuatorHandle, ActuatorKind, BodyHandle, JointHandle
@@ -207,13 +207,6 @@ def has_camera(model: Model) -> bool:
 def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """a x b for 3-vectors (np.cross costs ~10 µs a call)."""
     return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
-
-
-def _quat_matrix(q: tuple[float, float, float, float]) -> np.ndarray:
-    """Rotation matrix of a unit quaternion (w, x, y, z)."""
-    out = np.empty(9)
-    mujoco.mju_quat2Mat(out, np.asarray(q, dtype=float))
-    return out.reshape(3, 3)
 
 
 @dataclass(frozen=True)
@@ -691,7 +684,7 @@ class PhysicsWorld:
     def _add_light(self, light: Light) -> None:
         """A world light for cameras (its direction is in the light's frame, as SDF gives it)."""
         kinds = {"directional": mujoco.mjtLightType.mjLIGHT_DIRECTIONAL, "spot": mujoco.mjtLightType.mjLIGHT_SPOT}
-        R = _quat_matrix(light.pose.orientation)
+        R = rotation_matrix(light.pose.orientation)
         direction = R @ np.asarray(light.direction, dtype=float)
         n = float(np.linalg.norm(direction))
         self.spec.worldbody.add_light(
@@ -900,7 +893,7 @@ class PhysicsWorld:
         mujoco.mj_objectVelocity(m, d, mujoco.mjtObj.mjOBJ_XBODY, body_id, vel, 0)
         cached = self._offsets.get(offset)
         if cached is None:
-            R = _quat_matrix(offset.orientation)
+            R = rotation_matrix(offset.orientation)
             cached = self._offsets[offset] = (np.asarray(offset.position, dtype=float), R)
         p_BS, R_BS = cached
         R_WB = d.xmat[body_id].reshape(3, 3)

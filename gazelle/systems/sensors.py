@@ -35,7 +35,15 @@ from typing import TypeVar
 
 import numpy as np
 
-from ..description import ConfigElement, Pose, Sensor, SphericalCoordinates, quat_conj, quat_mul
+from ..description import (
+    ConfigElement,
+    Pose,
+    Sensor,
+    SphericalCoordinates,
+    quat_conj,
+    quat_mul,
+    rotation_matrix,
+)
 from ..physics import BodyHandle, OffscreenRenderer, PerGeneration, PhysicsWorld, RenderError
 from ._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
 from ._bus import (
@@ -462,7 +470,7 @@ class Lidar(_SensorSystem):
         overlay, which must not draw from the sensor's random stream) and REP 117's ±inf."""
         assert self._body is not None
         X_WS = self.sensor_pose()
-        R = _matrix(X_WS.orientation)
+        R = rotation_matrix(X_WS.orientation)
         dist, _ = self._body.cast_rays(np.asarray(X_WS.position), self._dirs @ R.T, self.spec.range_max)
         s = self.spec
         hit = dist >= 0
@@ -479,7 +487,7 @@ class Lidar(_SensorSystem):
         ranges = self.scan(world, noise=False).reshape(-1)
         ok = np.isfinite(ranges)
         X = self.sensor_pose()
-        pts = (self._dirs[ok] * ranges[ok, None]) @ _matrix(X.orientation).T + np.asarray(X.position)
+        pts = (self._dirs[ok] * ranges[ok, None]) @ rotation_matrix(X.orientation).T + np.asarray(X.position)
         return pts.astype(np.float32)
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
@@ -976,7 +984,7 @@ class ContactSensor(_SensorSystem):
         origin = np.zeros(3)
         if self.frame_link is not None:
             X = world.body(self._entity, self.frame_link).pose
-            R, origin = _matrix(X.orientation).T, np.asarray(X.position)
+            R, origin = rotation_matrix(X.orientation).T, np.asarray(X.position)
         pairs: dict[tuple[str, str], list] = {}
         for p in points:
             pos, n, f, t = (np.asarray(v) for v in (p.position, p.normal, p.force, p.torque))
@@ -1267,11 +1275,11 @@ class ForceTorqueSensor(System):
         if not self.parent_to_child:
             f, t = -f, -t
         if self.frame == "parent":
-            R = _matrix(world.body(self._entity, self.parent).pose.orientation)
+            R = rotation_matrix(world.body(self._entity, self.parent).pose.orientation)
         elif self.frame == "sensor":
-            R = _matrix((X_WJ * self.offset).orientation)
+            R = rotation_matrix((X_WJ * self.offset).orientation)
         else:
-            R = _matrix(X_WC.orientation)
+            R = rotation_matrix(X_WC.orientation)
         f, t = R.T @ f, R.T @ t
         if self.noise > 0:
             f = f + self._rng.normal(0.0, self.noise, 3)
@@ -1293,15 +1301,3 @@ class ForceTorqueSensor(System):
                 (float(t[0]), float(t[1]), float(t[2])),
             )
         )
-
-
-def _matrix(q: tuple[float, float, float, float]) -> np.ndarray:
-    """Rotation matrix of a unit quaternion (w, x, y, z)."""
-    w, x, y, z = q
-    return np.array(
-        [
-            [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
-        ]
-    )
