@@ -648,3 +648,15 @@ def test_a_lidar_or_camera_too_large_to_simulate_is_refused_with_file_and_line_a
         s.next_update(0.0) == math.inf for s in cam.systems if hasattr(s, "spec")
     )
     sim.step(10)  # both spawned, both idle: the world steps on
+
+
+def test_a_bumper_frame_that_is_no_link_is_named_and_the_contacts_stay_in_the_world_frame(caplog):
+    from gazelle.systems.sensors import ContactSensor
+
+    sim = Simulation(default_world(), rtf=0)
+    xml = _bumper_plate().replace("</ros></plugin>", "</ros><frame_name>nope</frame_name></plugin>")
+    with caplog.at_level(logging.WARNING):
+        plate = _spawn(sim, xml, "plate")
+    sensor = next(s for s in plate.systems if isinstance(s, ContactSensor))
+    assert sensor.output is not None and sensor.output.frame_id == "world"
+    assert any("<frame_name> 'nope' is not a link of 'plate'" in r.getMessage() for r in caplog.records)

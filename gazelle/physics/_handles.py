@@ -167,6 +167,10 @@ class BodyHandle:
         """:meth:`PhysicsWorld.cast_rays` that never hits this body (a lidar's own housing)."""
         return self.world.cast_rays(origin, directions, self._id.get(self.world), max_range)
 
+    def joint_wrench(self, point: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """:meth:`PhysicsWorld.joint_wrench` of this link: what its parent exerts on it, about ``point``."""
+        return self.world.joint_wrench(self._id.get(self.world), point)
+
     def imu_reading(self, offset: Pose) -> tuple[tuple[float, float, float, float], np.ndarray, np.ndarray]:
         """:meth:`PhysicsWorld.imu_reading` of a sensor at ``offset`` in this link's frame."""
         return self.world.imu_reading(self._id.get(self.world), offset)

@@ -697,15 +697,15 @@ class PhysicsWorld:
             castshadow=bool(light.cast_shadows),
         )
 
-    def joint_wrench(self, entity: str, child_link: str, point: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(force, torque) that the parent exerts on ``child_link`` through the joint above it, in the
+    def joint_wrench(self, body_id: int, point: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(force, torque) that the parent exerts on body ``body_id`` through the joint above it, in the
         world frame, the torque about ``point`` (world). From MuJoCo's ``cfrc_int`` (after
         ``mj_rnePostConstraint``: derived fields only, the trajectory is unchanged), so gravity and
         motion of the child's whole subtree are in it, as a force-torque sensor at the joint reads."""
         self._refresh_kinematics()
         m, d = self.model, self.data
         mujoco.mj_rnePostConstraint(m, d)
-        bid = self.body_id(entity, child_link)
+        bid = body_id
         torque_c, force = np.array(d.cfrc_int[bid, :3]), np.array(d.cfrc_int[bid, 3:])
         c = d.subtree_com[int(m.body_rootid[bid])]  # cfrc_int is about its tree's centre of mass
         return force, torque_c + np.cross(c - point, force)

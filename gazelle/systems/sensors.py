@@ -930,9 +930,9 @@ class ContactSensor(_SensorSystem):
     def __init__(self, seed: int | None = None) -> None:
         super().__init__(seed)
         self.collisions: tuple[str, ...] = ()
-        self.frame_link: str | None = None
+        self._frame: BodyHandle | None = None
+        """``<frame_name>``'s link, when the contacts are reported in a link's frame (None: the world)."""
         self._geoms: PerGeneration[frozenset[int]] | None = None
-        self._entity = ""
 
     def configure(self, ctx: SystemContext) -> None:
         """Read the collisions it watches and the plugin; declare the output topic."""
@@ -968,9 +968,17 @@ class ContactSensor(_SensorSystem):
                 frame_id=c.frame_name or "world",
             )
             if c.frame_name and c.frame_name not in ("world", "map"):
-                self.frame_link = c.frame_name if c.frame_name in {lk.name for lk in ctx.entity.model.links} else None
+                if c.frame_name in {lk.name for lk in ctx.entity.model.links}:
+                    self._frame = ctx.world.body(ctx.entity.name, c.frame_name)
+                else:
+                    where = f"{ctx.plugin.location}: " if ctx.plugin.location else ""
+                    ctx.logger.warning(
+                        f"{where}<frame_name> '{c.frame_name}' is not a link of '{ctx.entity.name}'; "
+                        "contacts are reported in the world frame"
+                    )
+                    self.output = dataclasses.replace(self.output, frame_id="world")
         self._pub = ctx.bus.advertise(ctx.entity.name, self.output.topic, MsgType.CONTACTS, depth=SENSOR_DEPTH)
-        entity, link = self._entity, self.link = ctx.entity.name, self.link
+        entity, link = ctx.entity.name, self.link
         self._geoms = PerGeneration(lambda w: frozenset().union(*(w.collision_geoms(entity, link, n) for n in names)))
         ctx.logger.info(
             f"contact sensor '{sensor.name}' on [{', '.join(names)}] at {self.rate_hz:g} Hz on [{self.output.topic}]"
@@ -982,8 +990,8 @@ class ContactSensor(_SensorSystem):
         points = world.contacts_of(self._geoms.get(world))
         R = None
         origin = np.zeros(3)
-        if self.frame_link is not None:
-            X = world.body(self._entity, self.frame_link).pose
+        if self._frame is not None:
+            X = self._frame.pose
             R, origin = rotation_matrix(X.orientation).T, np.asarray(X.position)
         pairs: dict[tuple[str, str], list] = {}
         for p in points:
@@ -1113,11 +1121,12 @@ class GpsSensor(_SensorSystem):
     def read(self, world: PhysicsWorld) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
         """((latitude, longitude, altitude), ENU velocity) of the sensor now, with noise."""
         assert self._body is not None
-        X = self.sensor_pose()
+        X_WB = self._body.pose
+        X = X_WB * self.offset
         h = self.origin.heading_deg
         e, n, u = world_to_enu(X.position, h)
         lin, ang = self._body.velocity
-        r = np.asarray(X.position) - np.asarray(self._body.pose.position)
+        r = np.asarray(X.position) - np.asarray(X_WB.position)
         v = np.asarray(lin) + np.cross(np.asarray(ang), r)  # the sensor point's velocity
         ve, vn, vu = world_to_enu((float(v[0]), float(v[1]), float(v[2])), h)
         nz = self.noise
@@ -1186,78 +1195,72 @@ class ForceTorqueSensor(System):
 
     def __init__(self, seed: int | None = None) -> None:
         self.config = ForceTorqueConfig()
-        self.joint = ""
-        self.parent = ""
-        self.child = ""
-        self.frame = "child"
-        self.parent_to_child = False
-        self.rate_hz = 0.0
-        self.noise = 0.0
         self.offset = Pose()
         """The sensor frame in the joint frame (frame "sensor")."""
         self.frame_id = ""
-        self.topic = ""
         self._X_CJ = Pose()
         """The joint frame in the child link frame."""
-        self._entity = ""
+        self._child: BodyHandle | None = None
+        self._parent: BodyHandle | None = None
         self._pub: Endpoint | None = None
         self._gate = RateGate()
         self._rng = np.random.default_rng(seed)
 
+    @property
+    def topic(self) -> str:
+        """Where the wrench goes."""
+        return self.config.topic
+
+    def _parse(self, ctx: SystemContext) -> tuple[ForceTorqueConfig, str]:
+        """The parameters from the gz ``<sensor>`` or the gazebo_ros plugin, and a file:line prefix."""
+        log, sensor, plugin = ctx.logger, ctx.sensor, ctx.plugin
+        if sensor is not None:
+            block = sensor.config.find("force_torque") if sensor.config is not None else None
+            where = f"{sensor.location}: " if sensor.location else ""
+            frame = (child_text(block, "frame") or "child").strip().lower()
+            if frame not in ("child", "parent", "sensor"):
+                log.warning(f"{where}<frame> '{frame}' is not child, parent or sensor; using child")
+                frame = "child"
+            direction = (child_text(block, "measure_direction") or "child_to_parent").strip().lower()
+            scoped = f"/world/{ctx.world_name}/model/{ctx.entity.name}/joint/{sensor.joint}"
+            topic = resolve_topic(sensor.topic or f"{scoped}/sensor/{sensor.name}/forcetorque", ctx.entity.namespace)
+            return ForceTorqueConfig(sensor.joint, frame, direction, sensor.update_rate_hz, 0.0, topic), where
+        cfg = plugin.config if plugin is not None else None
+        ns, remaps = ros_block(cfg)
+        ns = ns or child_text(cfg, "robotNamespace") or ctx.entity.namespace
+        return ForceTorqueConfig(
+            joint_name=child_text(cfg, "joint_name") or child_text(cfg, "jointName") or "",
+            measure_direction="parent_to_child",
+            update_rate=parse_float(cfg, "update_rate", parse_float(cfg, "updateRate", 0.0, log), log),
+            gaussian_noise=parse_float(cfg, "gaussian_noise", parse_float(cfg, "gaussianNoise", 0.0, log), log),
+            topic=resolve_topic(child_text(cfg, "topicName") or "wrench", ns, remaps),
+        ), (f"{plugin.location}: " if plugin is not None and plugin.location else "")
+
     def configure(self, ctx: SystemContext) -> None:
         """Find the joint; read the frame, direction, rate and topic."""
-        log, model = ctx.logger, ctx.entity.model
-        sensor, plugin = ctx.sensor, ctx.plugin
-        if sensor is not None:
-            self.joint = sensor.joint
-            block = sensor.config.find("force_torque") if sensor.config is not None else None
-            self.frame = (child_text(block, "frame") or "child").strip().lower()
-            direction = (child_text(block, "measure_direction") or "child_to_parent").strip().lower()
-            self.parent_to_child = direction == "parent_to_child"
-            self.rate_hz, self.offset = sensor.update_rate_hz, sensor.pose
-            where = f"{sensor.location}: " if sensor.location else ""
-            if self.frame not in ("child", "parent", "sensor"):
-                log.warning(f"{where}<frame> '{self.frame}' is not child, parent or sensor; using child")
-                self.frame = "child"
-        else:
-            cfg = plugin.config if plugin is not None else None
-            self.joint = child_text(cfg, "joint_name") or child_text(cfg, "jointName") or ""
-            self.rate_hz = parse_float(cfg, "update_rate", parse_float(cfg, "updateRate", 0.0, log), log)
-            self.noise = parse_float(cfg, "gaussian_noise", parse_float(cfg, "gaussianNoise", 0.0, log), log)
-            self.parent_to_child = True
-            where = f"{plugin.location}: " if plugin is not None and plugin.location else ""
-        joint = next((j for j in model.joints if j.name == self.joint), None)
+        log = ctx.logger
+        c, where = self._parse(ctx)
+        self.config = c
+        joint = next((j for j in ctx.entity.model.joints if j.name == c.joint_name), None)
         if joint is None:
-            log.error(f"{where}force-torque sensor: '{ctx.entity.name}' has no joint '{self.joint}'; it does nothing")
+            log.error(f"{where}force-torque sensor: '{ctx.entity.name}' has no joint '{c.joint_name}'; it does nothing")
             return
-        self.parent, self.child = joint.parent, joint.child
         self._X_CJ = joint.child_offset.inverse()
-        self._entity = ctx.entity.name
+        self._child = ctx.world.body(ctx.entity.name, joint.child)
+        self._parent = ctx.world.body(ctx.entity.name, joint.parent)
         from .robot_state import entity_frame_prefix
 
         prefix = entity_frame_prefix(ctx.entity, log)
-        if sensor is not None:
-            scoped = f"/world/{ctx.world_name}/model/{ctx.entity.name}/joint/{self.joint}"
-            topic = sensor.topic or f"{scoped}/sensor/{sensor.name}/forcetorque"
-            self.topic = resolve_topic(topic, ctx.entity.namespace)
-            frame_link = {"child": self.child, "parent": self.parent}.get(self.frame)
-            self.frame_id = prefix + frame_link if frame_link else f"{ctx.entity.name}::{self.joint}::{sensor.name}"
+        if ctx.sensor is not None:
+            self.offset = ctx.sensor.pose
+            frame_link = {"child": joint.child, "parent": joint.parent}.get(c.frame)
+            self.frame_id = (
+                prefix + frame_link if frame_link else f"{ctx.entity.name}::{c.joint_name}::{ctx.sensor.name}"
+            )
         else:
-            cfg = plugin.config if plugin is not None else None
-            ns, remaps = ros_block(cfg)
-            ns = ns or child_text(cfg, "robotNamespace") or ctx.entity.namespace
-            self.topic = resolve_topic(child_text(cfg, "topicName") or "wrench", ns, remaps)
-            self.frame_id = prefix + self.child
-        self.config = ForceTorqueConfig(
-            self.joint,
-            self.frame,
-            "parent_to_child" if self.parent_to_child else "child_to_parent",
-            self.rate_hz,
-            self.noise,
-            self.topic,
-        )
-        self._pub = ctx.bus.advertise(ctx.entity.name, self.topic, MsgType.WRENCH_STAMPED, depth=SENSOR_DEPTH)
-        log.info(f"force-torque on joint [{self.joint}] at {self.rate_hz:g} Hz on [{self.topic}] in [{self.frame_id}]")
+            self.frame_id = prefix + joint.child
+        self._pub = ctx.bus.advertise(ctx.entity.name, c.topic, MsgType.WRENCH_STAMPED, depth=SENSOR_DEPTH)
+        log.info(f"force-torque on joint [{c.joint_name}] at {c.update_rate:g} Hz on [{c.topic}] in [{self.frame_id}]")
 
     def next_update(self, sim_time_sec: float) -> float:
         """The next reading time (never, when not configured)."""
@@ -1269,26 +1272,28 @@ class ForceTorqueSensor(System):
 
     def read(self, world: PhysicsWorld) -> tuple[np.ndarray, np.ndarray]:
         """(force, torque) at the joint origin, in the output frame and direction."""
-        X_WC = world.body(self._entity, self.child).pose
+        assert self._child is not None and self._parent is not None
+        c = self.config
+        X_WC = self._child.pose
         X_WJ = X_WC * self._X_CJ
-        f, t = world.joint_wrench(self._entity, self.child, np.asarray(X_WJ.position))
-        if not self.parent_to_child:
+        f, t = self._child.joint_wrench(np.asarray(X_WJ.position))
+        if c.measure_direction != "parent_to_child":
             f, t = -f, -t
-        if self.frame == "parent":
-            R = rotation_matrix(world.body(self._entity, self.parent).pose.orientation)
-        elif self.frame == "sensor":
+        if c.frame == "parent":
+            R = rotation_matrix(self._parent.pose.orientation)
+        elif c.frame == "sensor":
             R = rotation_matrix((X_WJ * self.offset).orientation)
         else:
             R = rotation_matrix(X_WC.orientation)
         f, t = R.T @ f, R.T @ t
-        if self.noise > 0:
-            f = f + self._rng.normal(0.0, self.noise, 3)
-            t = t + self._rng.normal(0.0, self.noise, 3)
+        if c.gaussian_noise > 0:
+            f = f + self._rng.normal(0.0, c.gaussian_noise, 3)
+            t = t + self._rng.normal(0.0, c.gaussian_noise, 3)
         return f, t
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         """At the sensor's rate, while listened to: publish the wrench stamped with this sim time."""
-        if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.rate_hz):
+        if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.config.update_rate):
             return
         if not self._pub.wanted:
             return
