@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Build gazelle's own ROS 2 interface packages (interfaces/: tf2_msgs,
-# simulation_interfaces, gazebo_msgs) with the ROS 2 Jazzy rosidl/ament CMake
+# simulation_interfaces, gazebo_msgs, control_msgs, controller_manager_msgs) with the ROS 2 Jazzy rosidl/ament CMake
 # tooling from the PyPI wheels, and install them into a Python virtualenv.
 #
 #   scripts/build_interfaces.sh VENV_DIR
@@ -28,11 +28,11 @@ PY="$VENV_DIR/bin/python"
 STAMP="$VENV_DIR/.gazelle_interfaces.sha256"
 BUILD_ROOT="$REPO_ROOT/build/interfaces"
 # Build order: each depends only on wheel packages, none on another.
-PKGS=(tf2_msgs simulation_interfaces gazebo_msgs)
+PKGS=(tf2_msgs simulation_interfaces gazebo_msgs control_msgs controller_manager_msgs)
 # Wheel packages whose version change must trigger a rebuild.
 DEP_PKGS=(ament_cmake rosidl_default_generators rosidl_generator_py
   rosidl_typesupport_fastrtps_c builtin_interfaces std_msgs geometry_msgs
-  action_msgs service_msgs unique_identifier_msgs trajectory_msgs)
+  action_msgs service_msgs unique_identifier_msgs trajectory_msgs sensor_msgs lifecycle_msgs)
 
 for tool in cmake make g++ sha256sum; do
   command -v "$tool" >/dev/null || { echo "build_interfaces: '$tool' not found" >&2; exit 1; }
@@ -67,8 +67,12 @@ from simulation_interfaces.srv import SpawnEntity
 from simulation_interfaces.action import SimulateSteps
 from gazebo_msgs.msg import ModelStates
 from gazebo_msgs.srv import SpawnEntity as GzSpawnEntity
+from control_msgs.action import FollowJointTrajectory
+from control_msgs.msg import DynamicJointState
+from controller_manager_msgs.srv import SwitchController
 for t in (TFMessage, LookupTransform, Result, SpawnEntity, SimulateSteps,
-          ModelStates, GzSpawnEntity):
+          ModelStates, GzSpawnEntity, FollowJointTrajectory, DynamicJointState,
+          SwitchController):
     type(t).__import_type_support__()
 EOF
 }
