@@ -78,17 +78,21 @@ def test_a_joint_the_robot_lacks_is_named_with_its_line_and_left_out():
     assert rc.simulated and [j.name for j in rc.joints] == ["j"]
 
 
-def test_spawn_and_check_say_the_block_is_not_simulated_yet(caplog):
+def test_spawn_runs_a_controller_manager_and_names_the_real_driver_it_stands_in_for(caplog):
     from gazelle.sim import Simulation
+    from gazelle.systems.ros2_control import ControllerManager
     from gazelle.worlds import default_world
 
     model = load(DIFFBOT).value
-    problems = [p.format() for p in audit_model(model)]
-    assert any("ros2_control 'DiffBot'" in p and "not simulated yet" in p and "diffbot.urdf:164" in p for p in problems)
+    assert not [p for p in audit_model(model) if "ros2_control" in p.format()]  # simulated: nothing to warn of
     sim = Simulation(default_world(), rtf=0)
-    with caplog.at_level(logging.WARNING):
-        sim.spawn(model, name="diffbot")
-    assert any("ros2_control 'DiffBot'" in r.getMessage() for r in caplog.records)
+    with caplog.at_level(logging.INFO):
+        entity = sim.spawn(model, name="diffbot")
+    (manager,) = [s for s in entity.systems if isinstance(s, ControllerManager)]
+    assert manager.node_name == "/controller_manager"
+    assert sorted(manager.all_command_interfaces()) == ["left_wheel_joint/velocity", "right_wheel_joint/velocity"]
+    messages = [r.getMessage() for r in caplog.records]
+    assert any("'ros2_control_demo_example_2/DiffBotSystemHardware' is a real robot's driver" in m for m in messages)
 
 
 def test_an_unknown_block_type_is_a_warning():

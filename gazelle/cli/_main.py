@@ -119,6 +119,29 @@ def spawn(ctx: typer.Context) -> None:
     raise typer.Exit(spawn_main(list(ctx.args)))
 
 
+@app.command(
+    context_settings={"allow_extra_args": True, "ignore_unknown_options": True, "help_option_names": []},
+    add_help_option=False,
+)
+def spawner(ctx: typer.Context) -> None:
+    """Load, configure and activate ros2_control controllers, like ``ros2 run controller_manager spawner``
+    (NAME... [-c MANAGER] [-p PARAM_FILE] [--inactive] [--controller-manager-timeout S] ...)."""
+    from ..ros import spawner_main
+
+    raise typer.Exit(spawner_main(list(ctx.args)))
+
+
+@app.command(
+    context_settings={"allow_extra_args": True, "ignore_unknown_options": True, "help_option_names": []},
+    add_help_option=False,
+)
+def unspawner(ctx: typer.Context) -> None:
+    """Deactivate and unload ros2_control controllers, like ``ros2 run controller_manager unspawner``."""
+    from ..ros import unspawner_main
+
+    raise typer.Exit(unspawner_main(list(ctx.args)))
+
+
 @app.command()
 def check(
     file: Path = typer.Argument(..., help="A URDF, xacro, SDF or SRDF file."),

@@ -125,6 +125,10 @@ class ActuatorHandle:
         world = self.joint.world
         world.data.ctrl[self._id.get(world)] = value
 
+    def set_enabled(self, enabled: bool) -> None:
+        """Switch the actuator on (its gains) or off (no force); see :meth:`PhysicsWorld.set_actuator_enabled`."""
+        self.joint.world.set_actuator_enabled(self, enabled)
+
     @property
     def commanded(self) -> float:
         """The input last set."""

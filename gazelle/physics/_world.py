@@ -18,7 +18,7 @@ import mujoco
 import numpy as np
 
 from ..description import Light, Model, Pose, World, excerpt, quat_conj, quat_rotate, rotation_matrix
-from ._builder import JOINT_ARMATURE, SEP, BuildError, BuiltEntity, add_model, scoped
+from ._builder import JOINT_ARMATURE, SEP, BuildError, BuiltEntity, add_model, friction_priority, scoped
 from ._convex import cache_dir
 from ._handles import ActuatorHandle, ActuatorKind, BodyHandle, JointHandle
 from ._render import OffscreenRenderer
@@ -270,6 +270,8 @@ class PhysicsWorld:
         )
         self._offsets: dict[Pose, tuple[np.ndarray, np.ndarray]] = {}
         """IMU offsets (in their body) -> (position, rotation matrix)."""
+        self._actuator_gains: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+        """Actuator name -> its gain and bias parameters as added (see :meth:`set_actuator_enabled`)."""
         self._overlap_steps = 0
         """Steps left in which deep overlaps are limited (see :meth:`_limit_correcting_velocity`)."""
         self._deep = False
@@ -507,6 +509,25 @@ class PhysicsWorld:
             act.forcerange = [max(force_limit[0], -1e30), min(force_limit[1], 1e30)]  # pyright: ignore[reportAttributeAccessIssue]
         return ActuatorHandle(JointHandle(self, entity.name, joint), kind, name)
 
+    def set_actuator_enabled(self, handle: ActuatorHandle, enabled: bool) -> None:
+        """Switch an actuator on (its gains as added) or off (no force at all), as ros2_control's
+        command mode switch does between a joint's position, velocity and effort interfaces.
+
+        Kept in the model description too, so a recompile (a spawn elsewhere) keeps it."""
+        act = self.spec.actuator(handle.name)
+        if act is None:
+            raise WorldError(ErrorKind.NOT_FOUND, f"no actuator '{handle.name}'")
+        saved = self._actuator_gains.get(handle.name)
+        if saved is None:
+            saved = self._actuator_gains[handle.name] = (np.array(act.gainprm), np.array(act.biasprm))
+        gain, bias = (saved[0], saved[1]) if enabled else (np.zeros_like(saved[0]), np.zeros_like(saved[1]))
+        act.gainprm, act.biasprm = gain.copy(), bias.copy()
+        aid = self.actuator_id(handle.name)
+        if aid >= 0:
+            n_g, n_b = self.model.actuator_gainprm.shape[1], self.model.actuator_biasprm.shape[1]
+            self.model.actuator_gainprm[aid] = gain[:n_g]
+            self.model.actuator_biasprm[aid] = bias[:n_b]
+
     def joint(self, entity: str, joint: str) -> JointHandle:
         """A handle on a 1-dof joint of an entity (by its description name; MuJoCo joint ``joint``).
 
@@ -540,6 +561,23 @@ class PhysicsWorld:
                 r, half = float(geom.size[0]), float(geom.size[1])
                 geom.type = mujoco.mjtGeom.mjGEOM_ELLIPSOID
                 geom.size = [r, r, half]
+                changed += 1
+        return changed
+
+    def make_caster_frictionless(self, entity: Entity, link: str) -> int:
+        """Make the sphere collisions of ``link`` roll like a ball caster: frictionless contacts
+        (``condim`` 1 and ``mu`` 0, with the priority the builder gives a frictionless surface, so the
+        other geom's friction is not used: ODE's min rule). Call from ``configure`` (before the
+        recompile). Returns how many geoms changed."""
+        body = self.spec.body(scoped(entity.name, link))
+        if body is None:
+            return 0
+        changed = 0
+        for geom in body.geoms:
+            if geom.type == mujoco.mjtGeom.mjGEOM_SPHERE and geom.contype:
+                geom.condim = 1
+                geom.friction = [0.0, 0.0, 0.0]
+                geom.priority = friction_priority(0.0)
                 changed += 1
         return changed
 

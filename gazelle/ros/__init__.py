@@ -9,5 +9,7 @@ keeps a server on this host unless asked otherwise.
 from ._bridge import RosBridge
 from ._exposure import choose_discovery_range
 from ._spawn import main as spawn_main
+from ._spawner import spawner_main as spawner_main
+from ._spawner import unspawner_main as unspawner_main
 
-__all__ = ["RosBridge", "choose_discovery_range", "spawn_main"]
+__all__ = ["RosBridge", "choose_discovery_range", "spawn_main", "spawner_main", "unspawner_main"]

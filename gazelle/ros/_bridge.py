@@ -198,6 +198,11 @@ class SimulationNode(Node):
         """The publisher thread: the simulation thread only queues payloads (see ``_outbox``)."""
         self._lanes: dict[int, Lane] = {}
         """id(publisher endpoint) -> its lane in the outbox."""
+        self._managers: dict[str, Any] = {}
+        """Entity -> the node of its controller manager (see ``_control``)."""
+        self._executor: Any = None
+        self._pending_nodes: list[Any] = []
+        """Manager nodes made before the executor was attached."""
         self._clock_pub = self.create_publisher(Clock, "/clock", CLOCK_QOS)
         clock_pub = self._clock_pub
         self._clock_heard = _Subscribed(clock_pub)
@@ -347,6 +352,61 @@ class SimulationNode(Node):
             self._static[id(ep)] = batch.transforms
             union = TransformBatch(tuple(t for ts in self._static.values() for t in ts))
         lane.put(union)
+
+    # ------------------------------------------------------------------ ros2_control
+    def attach_executor(self, executor: Any) -> None:
+        """Give the node the executor that spins it: controller managers' nodes are added to it."""
+        with self._lock:
+            self._executor = executor
+            pending, self._pending_nodes = self._pending_nodes, []
+        for node in pending:
+            executor.add_node(node)
+
+    def component_added(self, owner: str, component: Any) -> None:
+        """A controller manager gets its node; a trajectory controller its action server."""
+        from ..systems.ros2_control import ControllerManager, JointTrajectoryController
+        from ._control import ControllerManagerNode
+
+        if isinstance(component, ControllerManager):
+            node = ControllerManagerNode(self.sim, component, self.context)
+            with self._lock:
+                self._managers[owner] = node
+                executor = self._executor
+                if executor is None:
+                    self._pending_nodes.append(node)
+            if executor is not None:
+                executor.add_node(node)
+        elif isinstance(component, JointTrajectoryController):
+            with self._lock:
+                node = self._managers.get(owner)
+            if node is not None:
+                node.add_trajectory_action(component)
+
+    def manager_nodes(self) -> list[Any]:
+        """The controller managers' nodes."""
+        with self._lock:
+            return list(self._managers.values())
+
+    def component_removed(self, component: Any) -> None:
+        """Undo :meth:`component_added`."""
+        from ..systems.ros2_control import ControllerManager, JointTrajectoryController
+
+        if isinstance(component, ControllerManager):
+            with self._lock:
+                owner = next((o for o, n in self._managers.items() if n.manager is component), None)
+                node = self._managers.pop(owner, None) if owner is not None else None
+                executor = self._executor
+                if node is not None and node in self._pending_nodes:
+                    self._pending_nodes.remove(node)
+            if node is not None:
+                if executor is not None:
+                    executor.remove_node(node)
+                node.destroy_node()
+        elif isinstance(component, JointTrajectoryController):
+            with self._lock:
+                nodes = list(self._managers.values())
+            for node in nodes:
+                node.remove_trajectory_action(component)
 
     def endpoint_removed(self, ep: Endpoint) -> None:
         """Undo :meth:`endpoint_added` (the rclpy publisher goes when its last user goes)."""
@@ -561,6 +621,7 @@ class RosBridge:
         """Notices another server on the same ROS domain (``registry.conflict``)."""
         self.executor = MultiThreadedExecutor(num_threads=4, context=self.context)
         self.executor.add_node(self.node)
+        self.node.attach_executor(self.executor)
         self.failure: BaseException | None = None
         """What ended the executor thread, if it died (the server then exits non-zero)."""
         self._stopping = threading.Event()
@@ -600,6 +661,8 @@ class RosBridge:
         logging.getLogger().removeHandler(self._handler)
         self.node.outbox.close()  # what the simulation queued goes out before the node goes
         self.executor.shutdown(timeout_sec=2.0)
+        for manager_node in self.node.manager_nodes():
+            manager_node.destroy_node()
         self.node.destroy_node()
         if self.context.ok():
             rclpy.shutdown(context=self.context)

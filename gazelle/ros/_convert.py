@@ -5,11 +5,15 @@ from __future__ import annotations
 import math
 from array import array
 
-from builtin_interfaces.msg import Time
+from builtin_interfaces.msg import Duration, Time
+from control_msgs.msg import DynamicJointState as DynamicJointStateMsg
+from control_msgs.msg import InterfaceValue
+from control_msgs.msg import JointTrajectoryControllerState as JtcStateMsg
 from gazebo_msgs.msg import ContactsState, ContactState
 from geometry_msgs.msg import Point, Quaternion, TransformStamped, Vector3, Wrench
 from geometry_msgs.msg import Pose as PoseMsg
 from geometry_msgs.msg import Twist as TwistMsg
+from geometry_msgs.msg import TwistStamped as TwistStampedMsg
 from geometry_msgs.msg import Vector3Stamped as Vector3StampedMsg
 from geometry_msgs.msg import WrenchStamped as WrenchStampedMsg
 from nav_msgs.msg import Odometry as OdometryMsg
@@ -22,26 +26,35 @@ from sensor_msgs.msg import NavSatFix as NavSatFixMsg
 from sensor_msgs.msg import NavSatStatus, PointCloud2, PointField
 from sensor_msgs.msg import Range as RangeMsg
 from std_msgs.msg import Float64 as Float64Msg
+from std_msgs.msg import Float64MultiArray
 from std_msgs.msg import String as StringMsg
 from tf2_msgs.msg import TFMessage
+from trajectory_msgs.msg import JointTrajectory as JointTrajectoryMsg
+from trajectory_msgs.msg import JointTrajectoryPoint
 
 from ..description import Pose
 from ..systems import (
     CameraInfo,
     Contacts,
+    DynamicJointState,
     Float64,
+    Float64Array,
     Image,
     Imu,
     JointStates,
+    JointTrajectory,
     LaserScan,
     MsgType,
     NavSatFix,
     Odometry,
     PointCloud,
     Range,
+    TrajectoryControllerState,
+    TrajectoryPoint,
     Transform,
     TransformBatch,
     Twist,
+    TwistStamped,
     Vector3Stamped,
     WrenchStamped,
 )
@@ -273,6 +286,96 @@ def _to_tf(batch: TransformBatch) -> TFMessage:
     return TFMessage(transforms=[to_transform_msg(t) for t in batch.transforms])
 
 
+def to_duration(sec: float) -> Duration:
+    """builtin_interfaces/Duration from seconds (the nanoseconds always non-negative, as ROS keeps them)."""
+    s = math.floor(sec)
+    ns = int(round((sec - s) * 1e9))
+    if ns >= 1_000_000_000:
+        s, ns = s + 1, ns - 1_000_000_000
+    return Duration(sec=int(s), nanosec=ns)
+
+
+def from_duration(d: Duration) -> float:
+    """Seconds of a builtin_interfaces/Duration."""
+    return d.sec + d.nanosec * 1e-9
+
+
+def from_twist_stamped_msg(m: TwistStampedMsg) -> TwistStamped:
+    """geometry_msgs/TwistStamped -> bus payload."""
+    return TwistStamped(from_time(m.header.stamp), m.header.frame_id, from_twist_msg(m.twist))
+
+
+def to_twist_stamped_msg(t: TwistStamped) -> TwistStampedMsg:
+    """Bus payload -> geometry_msgs/TwistStamped."""
+    msg = TwistStampedMsg()
+    msg.header.stamp = to_time(t.stamp_sec)
+    msg.header.frame_id = t.frame_id
+    msg.twist = to_twist_msg(t.twist)
+    return msg
+
+
+def to_trajectory_point_msg(p: TrajectoryPoint) -> JointTrajectoryPoint:
+    """Bus payload -> trajectory_msgs/JointTrajectoryPoint."""
+    return JointTrajectoryPoint(
+        positions=list(p.positions),
+        velocities=list(p.velocities),
+        accelerations=list(p.accelerations),
+        effort=list(p.effort),
+        time_from_start=to_duration(p.time_from_start_sec),
+    )
+
+
+def from_trajectory_point_msg(m: JointTrajectoryPoint) -> TrajectoryPoint:
+    """trajectory_msgs/JointTrajectoryPoint -> bus payload."""
+    return TrajectoryPoint(
+        from_duration(m.time_from_start),
+        tuple(float(v) for v in m.positions),
+        tuple(float(v) for v in m.velocities),
+        tuple(float(v) for v in m.accelerations),
+        tuple(float(v) for v in m.effort),
+    )
+
+
+def from_joint_trajectory_msg(m: JointTrajectoryMsg) -> JointTrajectory:
+    """trajectory_msgs/JointTrajectory -> bus payload."""
+    return JointTrajectory(
+        from_time(m.header.stamp), tuple(m.joint_names), tuple(from_trajectory_point_msg(p) for p in m.points)
+    )
+
+
+def to_joint_trajectory_msg(t: JointTrajectory) -> JointTrajectoryMsg:
+    """Bus payload -> trajectory_msgs/JointTrajectory."""
+    msg = JointTrajectoryMsg(joint_names=list(t.joint_names), points=[to_trajectory_point_msg(p) for p in t.points])
+    msg.header.stamp = to_time(t.stamp_sec)
+    return msg
+
+
+def to_jtc_state_msg(s: TrajectoryControllerState) -> JtcStateMsg:
+    """Bus payload -> control_msgs/JointTrajectoryControllerState."""
+    msg = JtcStateMsg(
+        joint_names=list(s.joint_names),
+        reference=to_trajectory_point_msg(s.reference),
+        feedback=to_trajectory_point_msg(s.feedback),
+        error=to_trajectory_point_msg(s.error),
+        output=to_trajectory_point_msg(s.output),
+    )
+    msg.header.stamp = to_time(s.stamp_sec)
+    return msg
+
+
+def to_dynamic_joint_state_msg(s: DynamicJointState) -> DynamicJointStateMsg:
+    """Bus payload -> control_msgs/DynamicJointState."""
+    msg = DynamicJointStateMsg(
+        joint_names=list(s.joint_names),
+        interface_values=[
+            InterfaceValue(interface_names=list(names), values=[float(v) for v in values])
+            for names, values in s.interface_values
+        ],
+    )
+    msg.header.stamp = to_time(s.stamp_sec)
+    return msg
+
+
 ROS_TYPES = {
     MsgType.TWIST: TwistMsg,
     MsgType.ODOMETRY: OdometryMsg,
@@ -291,6 +394,11 @@ ROS_TYPES = {
     MsgType.NAV_SAT_FIX: NavSatFixMsg,
     MsgType.VECTOR3_STAMPED: Vector3StampedMsg,
     MsgType.WRENCH_STAMPED: WrenchStampedMsg,
+    MsgType.TWIST_STAMPED: TwistStampedMsg,
+    MsgType.FLOAT64_ARRAY: Float64MultiArray,
+    MsgType.JOINT_TRAJECTORY: JointTrajectoryMsg,
+    MsgType.TRAJECTORY_CONTROLLER_STATE: JtcStateMsg,
+    MsgType.DYNAMIC_JOINT_STATE: DynamicJointStateMsg,
 }
 """The rclpy message class for each bus message type."""
 
@@ -312,8 +420,16 @@ TO_ROS = {
     MsgType.NAV_SAT_FIX: to_nav_sat_fix_msg,
     MsgType.VECTOR3_STAMPED: to_vector3_stamped_msg,
     MsgType.WRENCH_STAMPED: to_wrench_stamped_msg,
+    MsgType.TWIST_STAMPED: to_twist_stamped_msg,
+    MsgType.FLOAT64_ARRAY: lambda a: Float64MultiArray(data=[float(v) for v in a.data]),
+    MsgType.JOINT_TRAJECTORY: to_joint_trajectory_msg,
+    MsgType.TRAJECTORY_CONTROLLER_STATE: to_jtc_state_msg,
+    MsgType.DYNAMIC_JOINT_STATE: to_dynamic_joint_state_msg,
 }
 FROM_ROS = {
     MsgType.TWIST: from_twist_msg,
     MsgType.FLOAT64: lambda m: Float64(float(m.data)),
+    MsgType.TWIST_STAMPED: from_twist_stamped_msg,
+    MsgType.FLOAT64_ARRAY: lambda m: Float64Array(tuple(float(v) for v in m.data)),
+    MsgType.JOINT_TRAJECTORY: from_joint_trajectory_msg,
 }

@@ -54,6 +54,7 @@ from ..systems import (
     plan_sensors,
     robot_state_config,
 )
+from ..systems.ros2_control import ControllerManager
 
 T = TypeVar("T")
 
@@ -407,12 +408,26 @@ class Simulation:
                 if plugin.filename == RSP_PLUGIN:
                     continue  # configures the built-in one below
                 system = create_system(plugin)
-                if system is None:
+                if system is None or (isinstance(system, ControllerManager) and not entity.model.ros2_control):
                     continue
                 logger = logging.getLogger(plugin.name or plugin.filename)
                 made.append(system)
                 system.configure(
                     SystemContext(self.world, entity, plugin, self.bus, logger, world_name=self.world_name)
+                )
+            if entity.model.ros2_control and not any(isinstance(s, ControllerManager) for s in made):
+                # as mujoco_ros2_control and the mock hardware do: <ros2_control> alone runs a manager
+                manager = ControllerManager()
+                made.append(manager)
+                manager.configure(
+                    SystemContext(
+                        self.world,
+                        entity,
+                        None,
+                        self.bus,
+                        logging.getLogger("controller_manager"),
+                        world_name=self.world_name,
+                    )
                 )
             for plan in plan_sensors(entity.model, self.world_plugins)[0]:
                 system = plan.make()

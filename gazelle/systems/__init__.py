@@ -24,11 +24,14 @@ from ._bus import Bus as Bus
 from ._bus import CameraInfo as CameraInfo
 from ._bus import ContactPair as ContactPair
 from ._bus import Contacts as Contacts
+from ._bus import DynamicJointState as DynamicJointState
 from ._bus import Endpoint as Endpoint
 from ._bus import Float64 as Float64
+from ._bus import Float64Array as Float64Array
 from ._bus import Image as Image
 from ._bus import Imu as Imu
 from ._bus import JointStates as JointStates
+from ._bus import JointTrajectory as JointTrajectory
 from ._bus import LaserScan as LaserScan
 from ._bus import MsgType as MsgType
 from ._bus import NavSatFix as NavSatFix
@@ -37,9 +40,12 @@ from ._bus import PointCloud as PointCloud
 from ._bus import Qos as Qos
 from ._bus import Range as Range
 from ._bus import Text as Text
+from ._bus import TrajectoryControllerState as TrajectoryControllerState
+from ._bus import TrajectoryPoint as TrajectoryPoint
 from ._bus import Transform as Transform
 from ._bus import TransformBatch as TransformBatch
 from ._bus import Twist as Twist
+from ._bus import TwistStamped as TwistStamped
 from ._bus import Vector3Stamped as Vector3Stamped
 from ._bus import WrenchStamped as WrenchStamped
 from ._bus import resolve_topic as resolve_topic
@@ -54,6 +60,12 @@ from .robot_state import RobotStatePublisher as RobotStatePublisher
 from .robot_state import robot_state_config as robot_state_config
 
 __all__ = [
+    "DynamicJointState",
+    "Float64Array",
+    "JointTrajectory",
+    "TrajectoryControllerState",
+    "TrajectoryPoint",
+    "TwistStamped",
     "Bus",
     "CameraInfo",
     "ContactPair",

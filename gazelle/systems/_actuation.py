@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..description import Model, quat_rotate
+from ..description import Cylinder, JointType, Model, Pose, Sphere, quat_rotate
 from ..physics import ActuatorHandle, ActuatorKind, Entity, PhysicsWorld
 
 WHEEL_ARMATURE = 1e-3
@@ -160,15 +160,18 @@ class PositionServo:
         """Whether the integral term is on (else one command holds until the target changes)."""
         return self.gains.i_gain != 0.0
 
-    def update(self, target: float, sim_time_sec: float) -> None:
-        """Command ``target``, integrating the position error over the time since the last update."""
+    def update(self, target: float, sim_time_sec: float, velocity: float = 0.0) -> None:
+        """Command ``target`` (moving at ``velocity``: the damping then acts on the velocity error,
+        not on the velocity, so a moving target is followed without lag), integrating the position
+        error over the time since the last update."""
         g = self.gains
         if self._last is not None and g.i_gain:
             err = target - self.actuator.joint.position
             self.integral = min(max(self.integral + g.i_gain * err * (sim_time_sec - self._last), g.i_min), g.i_max)
         self._last = sim_time_sec
         kp = max(g.p_gain, 1e-9)
-        self.actuator.command(target + (g.cmd_offset + self.integral) / kp)
+        # kp·(c − q) − kv·q̇ with c = target + kv·velocity/kp is kp·(target − q) + kv·(velocity − q̇)
+        self.actuator.command(target + (g.cmd_offset + self.integral + g.d_gain * velocity) / kp)
 
     def reset(self) -> None:
         self.integral = 0.0
@@ -216,3 +219,43 @@ def add_wheel_servo(world: PhysicsWorld, entity: Entity, joint: str, torque_limi
         entity, joint, ActuatorKind.VELOCITY, kv=kv, force_limit=(-torque_limit, torque_limit) if limited else None
     )
     return VelocityServo(act, torque_limit / kv if limited else UNLIMITED_INTEGRAL)
+
+
+def ball_casters(model: Model, wheel_joints: list[str], tolerance: float = 0.005) -> list[str]:
+    """Links that are ball casters of a robot driven by ``wheel_joints``: welded (fixed joints) under
+    the wheels' parent link, with a sphere collision whose bottom is level with the wheels' bottom
+    (within ``tolerance`` m) at spawn. A URDF ball caster is a fixed sphere; in Gazebo its author
+    gives it ``mu 0`` or it drags (the ros2_control diffbot's two casters, with default friction,
+    carry as much weight as its wheels and halved its speed)."""
+    wheels = [model.joint(j) for j in wheel_joints]
+    parents = {w.parent for w in wheels}
+    if len(parents) != 1:
+        return []
+    base = parents.pop()
+    bottoms = []
+    for w in wheels:
+        radius = max(
+            (c.geometry.radius for c in model.link(w.child).collisions if isinstance(c.geometry, (Cylinder, Sphere))),
+            default=None,
+        )
+        if radius is None:
+            return []
+        bottoms.append(w.origin.position[2] - radius)
+    wheel_bottom = min(bottoms)
+    out: list[str] = []
+    # walk the fixed joints down from the base link, composing their poses
+    frontier: list[tuple[str, Pose]] = [(base, Pose())]
+    while frontier:
+        link, X_BL = frontier.pop()
+        for j in model.joints:
+            if j.parent != link or j.type is not JointType.FIXED:
+                continue
+            X_BC = X_BL * j.origin * j.child_offset
+            frontier.append((j.child, X_BC))
+            for c in model.link(j.child).collisions:
+                if isinstance(c.geometry, Sphere):
+                    bottom = (X_BC * c.pose).position[2] - c.geometry.radius
+                    if abs(bottom - wheel_bottom) <= tolerance:
+                        out.append(j.child)
+                        break
+    return out

@@ -224,6 +224,64 @@ class WrenchStamped:
     torque: Vec3
 
 
+@dataclass(frozen=True, slots=True)
+class TwistStamped:
+    """geometry_msgs/TwistStamped (diff_drive_controller's ``~/cmd_vel`` on Jazzy)."""
+
+    stamp_sec: float
+    frame_id: str
+    twist: Twist
+
+
+@dataclass(frozen=True, slots=True)
+class Float64Array:
+    """std_msgs/Float64MultiArray (forward command controllers' ``~/commands``); the layout is not used."""
+
+    data: tuple[float, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class TrajectoryPoint:
+    """trajectory_msgs/JointTrajectoryPoint (empty tuples where the message has no values)."""
+
+    time_from_start_sec: float
+    positions: tuple[float, ...] = ()
+    velocities: tuple[float, ...] = ()
+    accelerations: tuple[float, ...] = ()
+    effort: tuple[float, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class JointTrajectory:
+    """trajectory_msgs/JointTrajectory (``stamp_sec`` 0: start now)."""
+
+    stamp_sec: float
+    joint_names: tuple[str, ...]
+    points: tuple[TrajectoryPoint, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class TrajectoryControllerState:
+    """control_msgs/JointTrajectoryControllerState: reference, feedback and error of each joint."""
+
+    stamp_sec: float
+    joint_names: tuple[str, ...]
+    reference: TrajectoryPoint
+    feedback: TrajectoryPoint
+    error: TrajectoryPoint
+    output: TrajectoryPoint
+
+
+@dataclass(frozen=True, slots=True)
+class DynamicJointState:
+    """control_msgs/DynamicJointState: every interface of every joint (and sensor) by name."""
+
+    stamp_sec: float
+    joint_names: tuple[str, ...]
+    interface_values: tuple[tuple[tuple[str, ...], tuple[float, ...]], ...]
+    """Per joint: (interface names, values)."""
+
+
 class MsgType(enum.Enum):
     """The ROS message type each payload maps to."""
 
@@ -245,6 +303,11 @@ class MsgType(enum.Enum):
     NAV_SAT_FIX = "sensor_msgs/msg/NavSatFix"
     VECTOR3_STAMPED = "geometry_msgs/msg/Vector3Stamped"
     WRENCH_STAMPED = "geometry_msgs/msg/WrenchStamped"
+    TWIST_STAMPED = "geometry_msgs/msg/TwistStamped"
+    FLOAT64_ARRAY = "std_msgs/msg/Float64MultiArray"
+    JOINT_TRAJECTORY = "trajectory_msgs/msg/JointTrajectory"
+    TRAJECTORY_CONTROLLER_STATE = "control_msgs/msg/JointTrajectoryControllerState"
+    DYNAMIC_JOINT_STATE = "control_msgs/msg/DynamicJointState"
 
 
 class Qos(enum.Enum):
@@ -320,6 +383,13 @@ class BusListener(Protocol):
     def endpoint_removed(self, endpoint: Endpoint) -> None:
         """``endpoint`` went away with its entity."""
 
+    def component_added(self, owner: str, component: Any) -> None:
+        """A system announced something the ROS layer serves for it (a controller manager's node, an
+        action server of a controller); called on the announcing thread."""
+
+    def component_removed(self, component: Any) -> None:
+        """An announced component went away."""
+
 
 class Bus:
     """Registry of endpoints with listeners (the ROS bridge)."""
@@ -328,6 +398,7 @@ class Bus:
         self._lock = threading.Lock()
         self._endpoints: list[Endpoint] = []
         self._listeners: list[BusListener] = []
+        self._components: list[tuple[str, Any]] = []
 
     def add_listener(self, listener: BusListener) -> None:
         """Attach a listener; it is told about every existing endpoint first."""
@@ -336,6 +407,12 @@ class Bus:
             existing = list(self._endpoints)
         for ep in existing:
             listener.endpoint_added(ep)
+        with self._lock:
+            components = list(self._components)
+        added = getattr(listener, "component_added", None)
+        if added is not None:
+            for owner, c in components:
+                added(owner, c)
 
     def remove_listener(self, listener: BusListener) -> None:
         """Detach a listener (it is not told about removals any more)."""
@@ -380,6 +457,53 @@ class Bus:
             ep.sinks, ep._interest = (), ()
             for listener in listeners:
                 listener.endpoint_removed(ep)
+        with self._lock:
+            dropped = [c for o, c in self._components if o == owner]
+            self._components = [(o, c) for o, c in self._components if o != owner]
+        for c in dropped:
+            for listener in listeners:
+                removed = getattr(listener, "component_removed", None)
+                if removed is not None:
+                    removed(c)
+
+    def add_component(self, owner: str, component: Any) -> None:
+        """Announce a component of entity ``owner`` to the listeners (see :meth:`BusListener.component_added`)."""
+        with self._lock:
+            self._components.append((owner, component))
+            listeners = list(self._listeners)
+        for listener in listeners:
+            added = getattr(listener, "component_added", None)
+            if added is not None:
+                added(owner, component)
+
+    def remove_component(self, component: Any) -> None:
+        """Withdraw a component (its listeners are told)."""
+        with self._lock:
+            before = len(self._components)
+            self._components = [(o, c) for o, c in self._components if c is not component]
+            if len(self._components) == before:
+                return
+            listeners = list(self._listeners)
+        for listener in listeners:
+            removed = getattr(listener, "component_removed", None)
+            if removed is not None:
+                removed(component)
+
+    def components(self) -> list[tuple[str, Any]]:
+        """A snapshot of the announced components, with their owners."""
+        with self._lock:
+            return list(self._components)
+
+    def remove(self, endpoint: Endpoint) -> None:
+        """Remove one endpoint (a controller unloaded while its entity stays)."""
+        with self._lock:
+            if endpoint not in self._endpoints:
+                return
+            self._endpoints.remove(endpoint)
+            listeners = list(self._listeners)
+        endpoint.sinks, endpoint._interest = (), ()
+        for listener in listeners:
+            listener.endpoint_removed(endpoint)
 
     def endpoints(self) -> list[Endpoint]:
         """A snapshot of every endpoint."""

@@ -100,6 +100,12 @@ def _force_torque() -> System:
     return ForceTorqueSensor()
 
 
+def _controller_manager() -> System:
+    from .ros2_control import ControllerManager
+
+    return ControllerManager()
+
+
 def _p3d() -> System:
     from .pose_publisher import P3D
 
@@ -129,6 +135,13 @@ _REGISTRY: dict[str, Callable[[], System]] = {
     "gazebo_ros_p3d": _p3d,
     "gazebo_ros_ft_sensor": _force_torque,  # a model plugin naming a <joint_name>
     "gazebo_ros_imu": _imu,  # ROS 1's IMU model plugin (<bodyName>), as in TurtleBot3's noetic xacro
+    # ros2_control's simulator plugins: the controller manager (a robot with <ros2_control> and no such
+    # tag gets one too, see Simulation)
+    "gazebo_ros2_control": _controller_manager,
+    "gz_ros2_control-system": _controller_manager,
+    "gz_ros2_control::GazeboSimROS2ControlPlugin": _controller_manager,
+    "ign_ros2_control-system": _controller_manager,
+    "ign_ros2_control::IgnitionROS2ControlPlugin": _controller_manager,
 }
 
 _SENSOR_PLUGINS: dict[str, tuple[Callable[[], System], frozenset[str]]] = {
@@ -324,6 +337,17 @@ def create_system(plugin: Plugin) -> System | None:
     return factory() if factory is not None else None
 
 
+_CONTROL_PLUGINS = frozenset(
+    {
+        "gazebo_ros2_control",
+        "gz_ros2_control-system",
+        "gz_ros2_control::GazeboSimROS2ControlPlugin",
+        "ign_ros2_control-system",
+        "ign_ros2_control::IgnitionROS2ControlPlugin",
+    }
+)
+
+
 # Plugins gazelle knows but does not simulate yet, and what to say about them.
 _NOT_YET: dict[str, str] = {
     **{
@@ -332,16 +356,6 @@ _NOT_YET: dict[str, str] = {
             "gazebo_ros_range",
             "gz-sim-altimeter-system",
             "gz-sim-magnetometer-system",
-        )
-    },
-    **{
-        n: "ros2_control is not supported yet"
-        for n in (
-            "gazebo_ros2_control",
-            "gz_ros2_control-system",
-            "gz_ros2_control::GazeboSimROS2ControlPlugin",
-            "ign_ros2_control-system",
-            "ign_ros2_control::IgnitionROS2ControlPlugin",
         )
     },
 }
@@ -416,14 +430,18 @@ def audit_model(model: Model, world_plugins: tuple[Plugin, ...] | None = None) -
         if problem is not None:
             out.append(Diagnostic(ErrorCode.PLUGIN_UNSUPPORTED, Severity.WARNING, problem, plugin.location))
     out.extend(plan_sensors(model, world_plugins)[1])
-    for rc in model.ros2_control:
+    if not model.ros2_control and any(
+        _normalise(p.filename) in _CONTROL_PLUGINS or p.name in _CONTROL_PLUGINS for p in model.plugins
+    ):
+        plugin = next(
+            p for p in model.plugins if _normalise(p.filename) in _CONTROL_PLUGINS or p.name in _CONTROL_PLUGINS
+        )
         out.append(
             Diagnostic(
                 ErrorCode.ELEMENT_UNSUPPORTED,
                 Severity.WARNING,
-                f"ros2_control '{rc.name}' ({rc.hardware_plugin or 'no hardware plugin'}, {len(rc.joints)} joint(s)) "
-                "is read but not simulated yet: no controller manager runs its controllers",
-                rc.location,
+                "the ros2_control plugin has no <ros2_control> block to control: no controller manager runs",
+                plugin.location,
             )
         )
     return out

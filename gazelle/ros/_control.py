@@ -1,0 +1,319 @@
+"""ros2_control's ROS interfaces for each simulated controller manager.
+
+For every :class:`~gazelle.systems.ros2_control.ControllerManager` announced on the bus, a node
+named as the manager (``/controller_manager``, ``/<ns>/controller_manager``) serves the
+controller_manager_msgs services the stock ``spawner`` calls, and holds the parameters users set
+on it (``<controller>.type``, ``<controller>.params_file``). Each joint_trajectory_controller gets
+its ``~/follow_joint_trajectory`` action server on that node.
+
+Every request runs on the simulation thread (``Simulation.call``); a refused one answers
+``ok: false`` and says why in the log, as ros2_control does, and the server keeps serving.
+"""
+
+from __future__ import annotations
+
+import logging
+import threading
+from typing import Any
+
+from control_msgs.action import FollowJointTrajectory
+from controller_manager_msgs.msg import ControllerState, HardwareComponentState, HardwareInterface
+from controller_manager_msgs.srv import (
+    CleanupController,
+    ConfigureController,
+    ListControllers,
+    ListControllerTypes,
+    ListHardwareComponents,
+    ListHardwareInterfaces,
+    LoadController,
+    SetHardwareComponentState,
+    SwitchController,
+    UnloadController,
+)
+from lifecycle_msgs.msg import State
+from rcl_interfaces.msg import SetParametersResult
+from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
+from rclpy.callback_groups import ReentrantCallbackGroup
+from rclpy.node import Node
+
+from ..sim import Simulation
+from ..systems.ros2_control import (
+    ACTIVE,
+    CONTROLLER_TYPES,
+    INACTIVE,
+    UNCONFIGURED,
+    ControlError,
+    ControllerManager,
+    JointTrajectoryController,
+    TrajectoryGoal,
+    goal_tolerances,
+)
+from ._convert import from_duration, from_joint_trajectory_msg, to_trajectory_point_msg
+
+_LIFECYCLE = {
+    UNCONFIGURED: (State.PRIMARY_STATE_UNCONFIGURED, "unconfigured"),
+    INACTIVE: (State.PRIMARY_STATE_INACTIVE, "inactive"),
+    ACTIVE: (State.PRIMARY_STATE_ACTIVE, "active"),
+    "finalized": (State.PRIMARY_STATE_FINALIZED, "finalized"),
+}
+_BY_ID = {State.PRIMARY_STATE_UNCONFIGURED: "unconfigured", State.PRIMARY_STATE_INACTIVE: "inactive",
+          State.PRIMARY_STATE_ACTIVE: "active", State.PRIMARY_STATE_FINALIZED: "finalized"}  # fmt: skip
+
+ACTION_MONITOR_SEC = 0.05
+"""How often an action's progress is looked at (JTC's default action_monitor_rate, 20 Hz)."""
+
+
+def _state(label: str) -> State:
+    sid, text = _LIFECYCLE.get(label, (State.PRIMARY_STATE_UNKNOWN, label))
+    return State(id=sid, label=text)
+
+
+class ControllerManagerNode(Node):
+    """The ROS face of one controller manager (see the module docstring)."""
+
+    def __init__(self, sim: Simulation, manager: ControllerManager, context: Any) -> None:
+        super().__init__(
+            manager.name,
+            namespace=manager.namespace or "/",
+            context=context,
+            allow_undeclared_parameters=True,
+            automatically_declare_parameters_from_overrides=False,
+        )
+        self.sim = sim
+        self.manager = manager
+        self._log = logging.getLogger(manager.node_name.lstrip("/"))
+        self._cb = ReentrantCallbackGroup()
+        self._actions: dict[int, ActionServer] = {}
+        self._lock = threading.Lock()
+        self.declare_parameter("update_rate", manager.update_rate)
+        self.add_on_set_parameters_callback(self._on_set_parameters)
+        for srv_type, name, fn in (
+            (ListControllers, "list_controllers", self._list_controllers),
+            (ListControllerTypes, "list_controller_types", self._list_types),
+            (ListHardwareInterfaces, "list_hardware_interfaces", self._list_interfaces),
+            (ListHardwareComponents, "list_hardware_components", self._list_components),
+            (LoadController, "load_controller", self._load),
+            (ConfigureController, "configure_controller", self._configure),
+            (CleanupController, "cleanup_controller", self._cleanup),
+            (SwitchController, "switch_controller", self._switch),
+            (UnloadController, "unload_controller", self._unload),
+            (SetHardwareComponentState, "set_hardware_component_state", self._set_hw_state),
+        ):
+            self.create_service(srv_type, f"~/{name}", self._guard(name, fn), callback_group=self._cb)
+
+    # ------------------------------------------------------------------ plumbing
+    def _guard(self, name: str, fn: Any) -> Any:
+        def wrapper(req: Any, res: Any) -> Any:
+            try:
+                return fn(req, res)
+            except ControlError as err:
+                self._log.error(f"{name}: {err}")
+            except TimeoutError:
+                self._log.error(f"{name}: the simulation did not answer in time")
+            except Exception as err:
+                self._log.error(f"{name}: internal error", exc_info=err)
+            if hasattr(res, "ok"):
+                res.ok = False
+            return res
+
+        return wrapper
+
+    def _on_set_parameters(self, params: list[Any]) -> SetParametersResult:
+        for p in params:
+            if p.name == "update_rate":
+                return SetParametersResult(successful=False, reason="update_rate is read when the manager starts")
+        values = [(p.name, p.value) for p in params]
+
+        def apply() -> None:
+            for name, value in values:
+                self.manager.set_parameter(name, value)
+
+        self.sim.call(apply)
+        return SetParametersResult(successful=True)
+
+    # ------------------------------------------------------------------ services
+    def _list_controllers(self, req: Any, res: Any) -> Any:
+        def query() -> list[ControllerState]:
+            claimed = self.manager.claimed()
+            out = []
+            for name, loaded in self.manager.controllers.items():
+                c = loaded.controller
+                mine = sorted(i for i, owner in claimed.items() if owner == name)
+                out.append(
+                    ControllerState(
+                        name=name,
+                        state=c.state,
+                        type=loaded.type_name,
+                        is_async=False,
+                        update_rate=c.update_rate or self.manager.update_rate,
+                        claimed_interfaces=mine,
+                        required_command_interfaces=c.command_interfaces() if c.state != UNCONFIGURED else [],
+                        required_state_interfaces=(c.state_interfaces() or self.manager.all_state_interfaces())
+                        if c.state != UNCONFIGURED
+                        else [],
+                    )
+                )
+            return out
+
+        res.controller = self.sim.call(query)
+        return res
+
+    def _list_types(self, req: Any, res: Any) -> Any:
+        res.types = sorted(CONTROLLER_TYPES)
+        res.base_classes = ["controller_interface::ControllerInterface"] * len(res.types)
+        return res
+
+    def _list_interfaces(self, req: Any, res: Any) -> Any:
+        def query() -> tuple[list[HardwareInterface], list[HardwareInterface]]:
+            claimed = self.manager.claimed()
+            cmds = [
+                HardwareInterface(name=n, data_type="double", is_available=True, is_claimed=n in claimed)
+                for n in self.manager.all_command_interfaces()
+            ]
+            states = [
+                HardwareInterface(name=n, data_type="double", is_available=True, is_claimed=False)
+                for n in self.manager.all_state_interfaces()
+            ]
+            return cmds, states
+
+        res.command_interfaces, res.state_interfaces = self.sim.call(query)
+        return res
+
+    def _list_components(self, req: Any, res: Any) -> Any:
+        def query() -> list[HardwareComponentState]:
+            claimed = self.manager.claimed()
+            return [
+                HardwareComponentState(
+                    name=hw.name,
+                    type=hw.type,
+                    is_async=False,
+                    rw_rate=self.manager.update_rate,
+                    class_type=hw.plugin,
+                    plugin_name=hw.plugin,
+                    state=_state(hw.state),
+                    command_interfaces=[
+                        HardwareInterface(name=n, data_type="double", is_available=True, is_claimed=n in claimed)
+                        for n in hw.command_interfaces()
+                    ],
+                    state_interfaces=[
+                        HardwareInterface(name=n, data_type="double", is_available=True, is_claimed=False)
+                        for n in hw.state_interfaces()
+                    ],
+                )
+                for hw in self.manager.hardware
+            ]
+
+        res.component = self.sim.call(query)
+        return res
+
+    def _load(self, req: Any, res: Any) -> Any:
+        self.sim.call(lambda: self.manager.load_controller(req.name))
+        res.ok = True
+        return res
+
+    def _configure(self, req: Any, res: Any) -> Any:
+        self.sim.call(lambda: self.manager.configure_controller(req.name))
+        res.ok = True
+        return res
+
+    def _cleanup(self, req: Any, res: Any) -> Any:
+        self.sim.call(lambda: self.manager.cleanup_controller(req.name))
+        res.ok = True
+        return res
+
+    def _switch(self, req: Any, res: Any) -> Any:
+        activate, deactivate = list(req.activate_controllers), list(req.deactivate_controllers)
+        strictness = req.strictness if req.strictness in (1, 2) else 2  # AUTO / FORCE_AUTO: as strict
+        problems = self.sim.call(lambda: self.manager.switch_controller(activate, deactivate, strictness))
+        for p in problems:
+            self._log.warning(f"switch_controller (best effort): {p}")
+        res.ok = True
+        res.message = "; ".join(problems) if problems else "Switch successful"
+        return res
+
+    def _unload(self, req: Any, res: Any) -> Any:
+        self.sim.call(lambda: self.manager.unload_controller(req.name))
+        res.ok = True
+        return res
+
+    def _set_hw_state(self, req: Any, res: Any) -> Any:
+        target = _BY_ID.get(req.target_state.id) or req.target_state.label
+        state = self.sim.call(lambda: self.manager.set_hardware_component_state(req.name, target))
+        res.ok = True
+        res.state = _state(state)
+        return res
+
+    # ------------------------------------------------------------------ trajectory actions
+    def add_trajectory_action(self, jtc: JointTrajectoryController) -> None:
+        """Serve ``<controller>/follow_joint_trajectory`` for ``jtc``."""
+        server = ActionServer(
+            self,
+            FollowJointTrajectory,
+            jtc.action_name,
+            execute_callback=lambda handle: self._execute(jtc, handle),
+            goal_callback=lambda goal: self._accept(jtc, goal),
+            cancel_callback=lambda _handle: CancelResponse.ACCEPT,
+            callback_group=self._cb,
+        )
+        with self._lock:
+            self._actions[id(jtc)] = server
+
+    def remove_trajectory_action(self, jtc: JointTrajectoryController) -> None:
+        """Stop serving ``jtc``'s action (the controller was cleaned up or unloaded)."""
+        with self._lock:
+            server = self._actions.pop(id(jtc), None)
+        if server is not None:
+            server.destroy()
+
+    def _accept(self, jtc: JointTrajectoryController, goal: Any) -> GoalResponse:
+        traj = from_joint_trajectory_msg(goal.trajectory)
+        try:
+            why = self.sim.call(lambda: jtc.validate(traj, self.sim.world.time))
+        except TimeoutError:
+            why = (-1, "the simulation did not answer in time")
+        if why is not None:
+            self._log.error(f"{jtc.name}: goal rejected: {why[1]}")
+            return GoalResponse.REJECT
+        return GoalResponse.ACCEPT
+
+    def _execute(self, jtc: JointTrajectoryController, handle: Any) -> Any:
+        req = handle.request
+        traj = from_joint_trajectory_msg(req.trajectory)
+        path = [(t.name, t.position, t.velocity, t.acceleration) for t in req.path_tolerance]
+        goal_tol = [(t.name, t.position, t.velocity, t.acceleration) for t in req.goal_tolerance]
+        goal = TrajectoryGoal(
+            traj,
+            goal_tolerances(jtc, path, path=True),
+            goal_tolerances(jtc, goal_tol, path=False),
+            from_duration(req.goal_time_tolerance),
+        )
+        result = FollowJointTrajectory.Result()
+        try:
+            self.sim.call(lambda: jtc.submit(goal))
+        except TimeoutError:
+            handle.abort()
+            result.error_code, result.error_string = FollowJointTrajectory.Result.INVALID_GOAL, "simulation busy"
+            return result
+        while not goal.done.wait(ACTION_MONITOR_SEC):
+            if handle.is_cancel_requested:
+                self.sim.call(lambda: jtc.cancel(goal))
+                break
+            if not handle.is_active:
+                break
+            state = jtc.last_state
+            if state is not None:
+                fb = FollowJointTrajectory.Feedback()
+                fb.header.stamp = self.get_clock().now().to_msg()
+                fb.joint_names = list(state.joint_names)
+                fb.desired = to_trajectory_point_msg(state.reference)
+                fb.actual = to_trajectory_point_msg(state.feedback)
+                fb.error = to_trajectory_point_msg(state.error)
+                handle.publish_feedback(fb)
+        result.error_code, result.error_string = goal.error_code, goal.error_string
+        if goal.status == "succeeded":
+            handle.succeed()
+        elif goal.status == "canceled" and handle.is_cancel_requested:
+            handle.canceled()
+        else:
+            handle.abort()
+        return result

@@ -1,0 +1,245 @@
+"""``gazelle spawner`` / ``gazelle unspawner``: controller_manager's spawner and unspawner, with
+ros2_control Jazzy's command line, for the simulated controller managers (or any real one).
+
+The spawner waits for the manager (``--controller-manager-timeout``, 10 s), then for each
+controller: sets its ``params_file`` (and ``type``) on the manager when ``--param-file`` is given,
+loads it, configures it and, unless ``--inactive`` or ``--load-only``, activates it (strict).
+Without a manager it says "Controller manager not available" and exits 1, as the real one does;
+any refused step exits 1 with the reason the manager logged. It never hangs: every service call
+has ``--service-call-timeout``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from typing import Any
+
+import rclpy
+from controller_manager_msgs.srv import (
+    ConfigureController,
+    ListControllers,
+    LoadController,
+    SwitchController,
+    UnloadController,
+)
+from rcl_interfaces.msg import Parameter, ParameterType, ParameterValue
+from rcl_interfaces.srv import SetParameters
+from rclpy.context import Context
+from rclpy.executors import SingleThreadedExecutor
+from rclpy.node import Node
+
+from ..systems.ros2_control import ParamsError, load_params
+
+STRICT = SwitchController.Request.STRICT
+
+
+def build_parser(prog: str, unspawner: bool = False) -> argparse.ArgumentParser:
+    """The arguments of ros2_control's spawner (or unspawner)."""
+    p = argparse.ArgumentParser(prog=prog)
+    p.add_argument("controller_names", nargs="+", help="names of the controllers")
+    p.add_argument("-c", "--controller-manager", default="controller_manager", help="name of the controller manager")
+    p.add_argument(
+        "--switch-timeout", type=float, default=5.0, help="time to wait for a successful state switch of controllers"
+    )
+    p.add_argument("--service-call-timeout", type=float, default=10.0, help="time to wait for a service call to answer")
+    if not unspawner:
+        p.add_argument(
+            "-p", "--param-file", action="append", default=[], help="controller parameters file (repeatable)"
+        )
+        p.add_argument("-n", "--namespace", default="", help="namespace of the controller manager and controllers")
+        p.add_argument("--load-only", action="store_true", help="only load the controllers")
+        p.add_argument(
+            "--inactive", "--stopped", dest="inactive", action="store_true", help="configure, do not activate"
+        )
+        p.add_argument("-t", "--controller-type", default=None, help="controller type (else from the parameters)")
+        p.add_argument("-u", "--unload-on-kill", action="store_true", help="unload the controllers on SIGINT")
+        p.add_argument(
+            "--controller-manager-timeout", type=float, default=10.0, help="time to wait for the controller manager"
+        )
+        p.add_argument("--activate-as-group", action="store_true", help="activate all controllers in one switch")
+        p.add_argument("--controller-ros-args", default=None, help="ROS arguments for the controllers (unused)")
+    return p
+
+
+class _Client:
+    def __init__(self, node: Node, executor: SingleThreadedExecutor, manager: str, timeout: float) -> None:
+        self.node, self.executor, self.manager, self.timeout = node, executor, manager, timeout
+
+    def call(self, srv_type: Any, name: str, request: Any) -> Any:
+        client = self.node.create_client(srv_type, f"{self.manager}/{name}")
+        try:
+            if not client.wait_for_service(timeout_sec=self.timeout):
+                raise RuntimeError(f"service {self.manager}/{name} is not available")
+            future = client.call_async(request)
+            self.executor.spin_until_future_complete(future, timeout_sec=self.timeout)
+            if not future.done():
+                raise RuntimeError(f"service {self.manager}/{name} did not answer in {self.timeout:g} s")
+            return future.result()
+        finally:
+            self.node.destroy_client(client)
+
+
+def _error(text: str) -> None:
+    print(f"[ERROR] [spawner]: {text}", file=sys.stderr)
+
+
+def _info(text: str) -> None:
+    print(f"[INFO] [spawner]: {text}", file=sys.stderr)
+
+
+def _manager_name(args: argparse.Namespace) -> str:
+    name = args.controller_manager
+    ns = getattr(args, "namespace", "") or ""
+    if not name.startswith("/"):
+        name = f"/{ns.strip('/')}/{name}" if ns.strip("/") else f"/{name}"
+    return name
+
+
+def _wait_for_manager(cli: _Client, timeout: float) -> bool:
+    client = cli.node.create_client(ListControllers, f"{cli.manager}/list_controllers")
+    try:
+        return client.wait_for_service(timeout_sec=timeout)
+    finally:
+        cli.node.destroy_client(client)
+
+
+def _string_param(name: str, value: str) -> Parameter:
+    return Parameter(name=name, value=ParameterValue(type=ParameterType.PARAMETER_STRING, string_value=value))
+
+
+def _set_params(cli: _Client, params: list[Parameter]) -> str | None:
+    res = cli.call(SetParameters, "set_parameters", SetParameters.Request(parameters=params))
+    for r in res.results:
+        if not r.successful:
+            return r.reason or "refused"
+    return None
+
+
+def spawner_main(argv: list[str]) -> int:
+    """``gazelle spawner``; returns the exit status."""
+    args = build_parser("spawner").parse_args(argv)
+    return _with_node("spawner", lambda cli: _spawn(cli, args), _manager_name(args), args.service_call_timeout)
+
+
+def unspawner_main(argv: list[str]) -> int:
+    """``gazelle unspawner``: deactivate and unload controllers; returns the exit status."""
+    args = build_parser("unspawner", unspawner=True).parse_args(argv)
+    return _with_node("unspawner", lambda cli: _unspawn(cli, args), _manager_name(args), args.service_call_timeout)
+
+
+def _with_node(name: str, body: Any, manager: str, timeout: float) -> int:
+    context = Context()
+    rclpy.init(args=[], context=context)
+    node = rclpy.create_node(f"{name}_{int(time.time() * 1000) % 100000}", context=context)
+    executor = SingleThreadedExecutor(context=context)
+    executor.add_node(node)
+    try:
+        return body(_Client(node, executor, manager, timeout))
+    except KeyboardInterrupt:
+        _error("interrupted")
+        return 1
+    except RuntimeError as err:
+        _error(str(err))
+        return 1
+    finally:
+        executor.shutdown()
+        node.destroy_node()
+        if context.ok():
+            rclpy.shutdown(context=context)
+
+
+def _spawn(cli: _Client, args: argparse.Namespace) -> int:
+    if not _wait_for_manager(cli, args.controller_manager_timeout):
+        _error("Controller manager not available")
+        return 1
+    listed = cli.call(ListControllers, "list_controllers", ListControllers.Request())
+    loaded = {c.name: c.state for c in listed.controller}
+    for path in args.param_file:
+        try:
+            load_params(path)
+        except ParamsError as err:
+            _error(str(err))
+            return 1
+    for name in args.controller_names:
+        if name in loaded:
+            _info(f"Controller already loaded, skipping load_controller: {name}")
+        else:
+            params: list[Parameter] = []
+            if args.controller_type:
+                params.append(_string_param(f"{name}.type", args.controller_type))
+            for path in args.param_file:
+                params.append(_string_param(f"{name}.params_file", path))
+                pf = load_params(path)
+                own = pf.for_node(name, args.namespace)
+                # the type as the controller's own 'type', or in the file's controller_manager section
+                # (the layout of ros2_control_demos' files, usually given to the manager itself)
+                manager_node = cli.manager.rstrip("/").rpartition("/")
+                cm_params = pf.for_node(manager_node[2], manager_node[0])
+                kind = own.get("type") or cm_params.get(f"{name}.type")
+                if not args.controller_type and isinstance(kind, str) and kind:
+                    params.append(_string_param(f"{name}.type", kind))
+            if params:
+                why = _set_params(cli, params)
+                if why is not None:
+                    _error(f"Failed to set the parameters of {name} on {cli.manager}: {why}")
+                    return 1
+            if not cli.call(LoadController, "load_controller", LoadController.Request(name=name)).ok:
+                _error(f"Failed loading controller {name} (the reason is in {cli.manager}'s log)")
+                return 1
+            _info(f"Loaded {name}")
+        if args.load_only:
+            continue
+        if loaded.get(name, "unconfigured") == "unconfigured":
+            if not cli.call(ConfigureController, "configure_controller", ConfigureController.Request(name=name)).ok:
+                _error(f"Failed to configure controller {name} (the reason is in {cli.manager}'s log)")
+                return 1
+        if args.inactive or args.activate_as_group:
+            if args.inactive:
+                _info(f"Configured {name}")
+            continue
+        if loaded.get(name) == "active":
+            _info(f"Controller {name} is already active")
+            continue
+        if not _switch(cli, [name], [], args.switch_timeout):
+            _error(f"Failed to activate controller {name} (the reason is in {cli.manager}'s log)")
+            return 1
+        _info(f"Configured and activated {name}")
+    if args.activate_as_group and not args.inactive and not args.load_only:
+        names = [n for n in args.controller_names if loaded.get(n) != "active"]
+        if not _switch(cli, names, [], args.switch_timeout):
+            _error(f"Failed to activate the controllers {names} (the reason is in {cli.manager}'s log)")
+            return 1
+        _info(f"Configured and activated all the parsed controllers list: {names}")
+    return 0
+
+
+def _switch(cli: _Client, activate: list[str], deactivate: list[str], timeout: float) -> bool:
+    req = SwitchController.Request(
+        activate_controllers=activate, deactivate_controllers=deactivate, strictness=STRICT, activate_asap=True
+    )
+    req.timeout.sec = int(timeout)
+    req.timeout.nanosec = int((timeout - int(timeout)) * 1e9)
+    return bool(cli.call(SwitchController, "switch_controller", req).ok)
+
+
+def _unspawn(cli: _Client, args: argparse.Namespace) -> int:
+    if not _wait_for_manager(cli, args.service_call_timeout):
+        _error("Controller manager not available")
+        return 1
+    listed = cli.call(ListControllers, "list_controllers", ListControllers.Request())
+    states = {c.name: c.state for c in listed.controller}
+    active = [n for n in args.controller_names if states.get(n) == "active"]
+    if active and not _switch(cli, [], active, args.switch_timeout):
+        _error(f"Failed to deactivate {active}")
+        return 1
+    for name in args.controller_names:
+        if name not in states:
+            _error(f"Controller {name} is not loaded")
+            return 1
+        if not cli.call(UnloadController, "unload_controller", UnloadController.Request(name=name)).ok:
+            _error(f"Failed to unload {name}")
+            return 1
+        _info(f"Deactivated and unloaded {name}" if name in active else f"Unloaded {name}")
+    return 0

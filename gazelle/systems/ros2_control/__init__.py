@@ -1,0 +1,45 @@
+"""ros2_control in the simulator: the controller manager, the simulated hardware and the standard
+controllers, with ros2_control Jazzy's names, parameters and lifecycle (no rclpy here: the ROS
+layer serves the manager's services and the controllers' actions)."""
+
+from ._controller import ACTIVE as ACTIVE
+from ._controller import FINALIZED as FINALIZED
+from ._controller import INACTIVE as INACTIVE
+from ._controller import UNCONFIGURED as UNCONFIGURED
+from ._controller import Controller as Controller
+from ._hardware import ControlError as ControlError
+from ._hardware import SimHardware as SimHardware
+from ._manager import BEST_EFFORT as BEST_EFFORT
+from ._manager import CONTROLLER_TYPES as CONTROLLER_TYPES
+from ._manager import STRICT as STRICT
+from ._manager import ControllerManager as ControllerManager
+from ._params import ParamsError as ParamsError
+from ._params import ParamsFile as ParamsFile
+from ._params import load_params as load_params
+from ._params import parse_params as parse_params
+from ._trajectory import JointTrajectoryController as JointTrajectoryController
+from ._trajectory import Tolerance as Tolerance
+from ._trajectory import TrajectoryGoal as TrajectoryGoal
+from ._trajectory import goal_tolerances as goal_tolerances
+
+__all__ = [
+    "ACTIVE",
+    "BEST_EFFORT",
+    "CONTROLLER_TYPES",
+    "FINALIZED",
+    "INACTIVE",
+    "STRICT",
+    "UNCONFIGURED",
+    "ControlError",
+    "Controller",
+    "ControllerManager",
+    "JointTrajectoryController",
+    "ParamsError",
+    "ParamsFile",
+    "SimHardware",
+    "Tolerance",
+    "TrajectoryGoal",
+    "goal_tolerances",
+    "load_params",
+    "parse_params",
+]

@@ -1,0 +1,160 @@
+"""What every ros2_control controller shares: its lifecycle, parameters, interfaces and topics."""
+
+from __future__ import annotations
+
+import logging
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any, ClassVar, TypeVar
+
+from .._bus import Bus, Endpoint, MsgType, Qos, resolve_topic
+from ._hardware import ControlError
+from ._params import Params
+
+T = TypeVar("T")
+
+UNCONFIGURED, INACTIVE, ACTIVE, FINALIZED = "unconfigured", "inactive", "active", "finalized"
+"""Lifecycle states, as ros2_control names them in ``list_controllers``."""
+
+
+@dataclass
+class ControllerContext:
+    """What a controller may use: the bus and where its node is."""
+
+    bus: Bus
+    owner: str
+    """The entity (its endpoints go with it)."""
+    namespace: str
+    """The controller manager's namespace; the controller's node is ``<namespace>/<name>``."""
+    logger: logging.Logger
+    state_names: tuple[str, ...]
+    """Every state interface of the hardware (``joint/position``...)."""
+    command_names: tuple[str, ...]
+    """Every command interface of the hardware."""
+    joint_names: tuple[str, ...]
+    """The hardware's joints, in the ``<ros2_control>`` block's order."""
+    add_component: Callable[[Any], None] = lambda _c: None
+    """Announce an interface the ROS layer serves for this controller (an action server)."""
+    remove_component: Callable[[Any], None] = lambda _c: None
+
+
+class Controller:
+    """Base class of the controllers. The manager drives the lifecycle; each cycle it calls
+    :meth:`update` with the hardware's state values and the command values to write."""
+
+    type_name: ClassVar[str] = ""
+    """``package/Class`` as in the controller YAML."""
+
+    def __init__(self, name: str, params: Params, ctx: ControllerContext) -> None:
+        self.name = name
+        self.params = params
+        self.ctx = ctx
+        self.log = ctx.logger
+        self.state = UNCONFIGURED
+        self.update_rate = 0
+        """Hz; 0: every cycle of the manager."""
+        self._endpoints: list[Endpoint] = []
+
+    # ------------------------------------------------------------------ parameters
+    def param(self, key: str, default: T, kind: type | tuple[type, ...] | None = None) -> T:
+        """A parameter, checked against the type of ``default`` (ints accepted for floats).
+
+        Raises:
+            ControlError: a value of the wrong type, naming the controller and the parameter.
+        """
+        if key not in self.params:
+            return default
+        value = self.params[key]
+        want = kind or type(default)
+        ok = {
+            float: isinstance(value, (int, float)) and not isinstance(value, bool),
+            int: isinstance(value, int) and not isinstance(value, bool),
+            bool: isinstance(value, bool),
+            str: isinstance(value, str),
+            list: isinstance(value, list),
+        }.get(want, isinstance(value, want))  # type: ignore[arg-type]
+        if not ok:
+            raise ControlError(f"controller '{self.name}': parameter '{key}' is {value!r}, expected {_type_name(want)}")
+        return float(value) if want is float else value  # type: ignore[return-value]
+
+    def float_list(self, key: str, default: list[float]) -> list[float]:
+        """A list of numbers."""
+        value = self.param(key, default, list)
+        if not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value):
+            raise ControlError(f"controller '{self.name}': parameter '{key}' must be a list of numbers, got {value!r}")
+        return [float(v) for v in value]
+
+    def string_list(self, key: str, default: list[str] | None = None) -> list[str]:
+        """A list of strings."""
+        value = self.param(key, default if default is not None else [], list)
+        if not all(isinstance(v, str) for v in value):
+            raise ControlError(f"controller '{self.name}': parameter '{key}' must be a list of strings, got {value!r}")
+        return list(value)
+
+    # ------------------------------------------------------------------ topics
+    def topic(self, name: str) -> str:
+        """A topic name resolved for the controller's node (``~/cmd_vel`` is ``<ns>/<name>/cmd_vel``)."""
+        return resolve_topic(name, self.ctx.namespace, node=self.name)
+
+    def advertise(self, name: str, msg_type: MsgType, qos: Qos = Qos.DEFAULT, depth: int = 10) -> Endpoint:
+        """A publisher of the controller's, removed at cleanup."""
+        ep = self.ctx.bus.advertise(self.ctx.owner, self.topic(name), msg_type, qos=qos, depth=depth)
+        self._endpoints.append(ep)
+        return ep
+
+    def subscribe(self, name: str, msg_type: MsgType, callback: Callable[[Any], None], depth: int = 10) -> Endpoint:
+        """A subscription of the controller's, removed at cleanup."""
+        ep = self.ctx.bus.subscribe(self.ctx.owner, self.topic(name), msg_type, callback, depth=depth)
+        self._endpoints.append(ep)
+        return ep
+
+    def drop_endpoints(self) -> None:
+        """Remove every topic of this controller."""
+        for ep in self._endpoints:
+            self.ctx.bus.remove(ep)
+        self._endpoints.clear()
+
+    # ------------------------------------------------------------------ the lifecycle
+    def configure(self) -> None:
+        """Read the parameters and declare topics (raises :class:`ControlError` on bad ones)."""
+        rate = self.param("update_rate", 0, int)
+        if rate < 0:
+            raise ControlError(f"controller '{self.name}': update_rate must not be negative")
+        self.update_rate = rate
+        self.on_configure()
+
+    def on_configure(self) -> None:
+        """Subclasses: read parameters, declare topics."""
+
+    def command_interfaces(self) -> list[str]:
+        """The command interfaces this controller claims while active."""
+        return []
+
+    def state_interfaces(self) -> list[str] | None:
+        """The state interfaces it reads (None: every one)."""
+        return []
+
+    def on_activate(self, states: dict[str, float], commands: dict[str, float]) -> None:
+        """Going active (on the simulation thread, between two cycles)."""
+
+    def on_deactivate(self) -> None:
+        """Going inactive."""
+
+    def on_cleanup(self) -> None:
+        """Back to unconfigured: drop topics and state."""
+        self.drop_endpoints()
+
+    def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
+        """One cycle: read ``states``, write the claimed entries of ``commands``."""
+
+
+def _type_name(t: type | tuple[type, ...]) -> str:
+    if isinstance(t, tuple):
+        return " or ".join(_type_name(x) for x in t)
+    return {bool: "a bool", int: "an integer", float: "a number", str: "a string", list: "a list"}.get(t, t.__name__)
+
+
+def finite(values: list[float]) -> bool:
+    """Whether every value is finite."""
+    return all(math.isfinite(v) for v in values)

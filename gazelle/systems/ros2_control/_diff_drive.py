@@ -1,0 +1,227 @@
+"""``diff_drive_controller/DiffDriveController`` with ros2_controllers Jazzy's parameters and topics."""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+
+from ...description import Pose, quat_from_rpy
+from .._bus import MsgType, Odometry, Transform, TransformBatch, Twist, TwistStamped
+from ._controller import Controller
+from ._hardware import ControlError
+
+
+class SpeedLimiter:
+    """Velocity, acceleration and jerk limits of one axis (ros2_controllers' SpeedLimiter): a limit
+    not given (NaN) is not applied; a ``min_*`` not given is ``-max_*``."""
+
+    def __init__(self, prefix: str, controller: Controller) -> None:
+        def get(name: str) -> float:
+            return controller.param(f"{prefix}.{name}", math.nan, float)
+
+        def enabled(kind: str) -> bool:
+            return controller.param(f"{prefix}.has_{kind}_limits", True, bool)
+
+        nan = math.nan
+        self.max_v, self.min_v = (get("max_velocity"), get("min_velocity")) if enabled("velocity") else (nan, nan)
+        self.max_a, self.min_a = (
+            (get("max_acceleration"), get("min_acceleration")) if enabled("acceleration") else (nan, nan)
+        )
+        self.max_j, self.min_j = (get("max_jerk"), get("min_jerk")) if enabled("jerk") else (nan, nan)
+        for lo, hi in ((self.min_v, self.max_v), (self.min_a, self.max_a), (self.min_j, self.max_j)):
+            if not math.isnan(lo) and not math.isnan(hi) and lo > hi:
+                raise ControlError(f"controller '{controller.name}': {prefix} has a min limit above its max")
+        self.min_v = -self.max_v if math.isnan(self.min_v) else self.min_v
+        self.min_a = -self.max_a if math.isnan(self.min_a) else self.min_a
+        self.min_j = -self.max_j if math.isnan(self.min_j) else self.min_j
+
+    @staticmethod
+    def _clamp(x: float, lo: float, hi: float) -> float:
+        if not math.isnan(lo):
+            x = max(x, lo)
+        if not math.isnan(hi):
+            x = min(x, hi)
+        return x
+
+    def limit(self, v: float, v0: float, v1: float, dt: float) -> float:
+        """``v`` limited, given the last two outputs ``v0`` (previous) and ``v1`` (before it)."""
+        v = self._clamp(v, self.min_v, self.max_v)
+        if dt > 0:
+            dv = self._clamp(v - v0, self.min_a * dt, self.max_a * dt)
+            v = v0 + dv
+            if not math.isnan(self.max_j) or not math.isnan(self.min_j):
+                dv0 = v0 - v1
+                ddv = self._clamp(dv - dv0, self.min_j * dt * dt, self.max_j * dt * dt)
+                v = v0 + dv0 + ddv
+        return v
+
+
+class DiffDriveController(Controller):
+    """Drives wheel velocity interfaces from ``~/cmd_vel`` and publishes ``~/odom`` and odom→base on ``/tf``."""
+
+    type_name = "diff_drive_controller/DiffDriveController"
+
+    def on_configure(self) -> None:
+        self.left = self.string_list("left_wheel_names")
+        self.right = self.string_list("right_wheel_names")
+        if not self.left or not self.right:
+            raise ControlError(f"controller '{self.name}': left_wheel_names and right_wheel_names must not be empty")
+        if len(self.left) != len(self.right):
+            raise ControlError(f"controller '{self.name}': as many left wheels as right wheels are needed")
+        self.separation = self.param("wheel_separation", 0.0, float)
+        self.radius = self.param("wheel_radius", 0.0, float)
+        if self.separation <= 0 or self.radius <= 0:
+            raise ControlError(
+                f"controller '{self.name}': wheel_separation ({self.separation}) and wheel_radius "
+                f"({self.radius}) must be positive"
+            )
+        self.sep_mult = self.param("wheel_separation_multiplier", 1.0, float)
+        self.left_mult = self.param("left_wheel_radius_multiplier", 1.0, float)
+        self.right_mult = self.param("right_wheel_radius_multiplier", 1.0, float)
+        self.open_loop = self.param("open_loop", False, bool)
+        self.position_feedback = self.param("position_feedback", True, bool)
+        self.enable_tf = self.param("enable_odom_tf", True, bool)
+        self.timeout = self.param("cmd_vel_timeout", 0.5, float)
+        self.publish_limited = self.param("publish_limited_velocity", False, bool)
+        self.window = max(1, self.param("velocity_rolling_window_size", 10, int))
+        self.publish_rate = self.param("publish_rate", 50.0, float)
+        self.pose_cov = self.float_list("pose_covariance_diagonal", [0.0] * 6)
+        self.twist_cov = self.float_list("twist_covariance_diagonal", [0.0] * 6)
+        if len(self.pose_cov) != 6 or len(self.twist_cov) != 6:
+            raise ControlError(f"controller '{self.name}': the covariance diagonals need 6 values")
+        prefix = ""
+        if self.param("tf_frame_prefix_enable", True, bool):
+            prefix = self.param("tf_frame_prefix", "", str) or self.ctx.namespace.strip("/")
+            prefix = f"{prefix.strip('/')}/" if prefix.strip("/") else ""
+        self.odom_frame = prefix + self.param("odom_frame_id", "odom", str)
+        self.base_frame = prefix + self.param("base_frame_id", "base_link", str)
+        self.linear = SpeedLimiter("linear.x", self)
+        self.angular = SpeedLimiter("angular.z", self)
+        stamped = self.param("use_stamped_vel", True, bool)
+        self._cmd: tuple[Twist, float | None] | None = None
+        """(twist, header stamp or None) as received; its arrival time is taken at the next cycle."""
+        if stamped:
+            self.subscribe("~/cmd_vel", MsgType.TWIST_STAMPED, self._on_stamped)
+        else:
+            self.subscribe("~/cmd_vel_unstamped", MsgType.TWIST, self._on_twist)
+        self._odom = self.advertise("~/odom", MsgType.ODOMETRY)
+        self._tf = self.advertise("/tf", MsgType.TF, depth=100) if self.enable_tf else None
+        self._limited = self.advertise("~/cmd_vel_out", MsgType.TWIST_STAMPED) if self.publish_limited else None
+        self._reset_state()
+
+    def _reset_state(self) -> None:
+        self.x = self.y = self.heading = 0.0
+        self.v = self.w = 0.0
+        self._last_cmd: tuple[Twist, float] | None = None
+        self._prev = [(0.0, 0.0), (0.0, 0.0)]
+        """The last two limited (linear, angular) outputs."""
+        self._wheel_pos: tuple[float, float] | None = None
+        self._v_hist: deque[float] = deque(maxlen=self.window)
+        self._w_hist: deque[float] = deque(maxlen=self.window)
+        self._next_publish = -math.inf
+
+    def _on_stamped(self, msg: TwistStamped) -> None:
+        self._cmd = (msg.twist, msg.stamp_sec if msg.stamp_sec > 0 else None)
+
+    def _on_twist(self, msg: Twist) -> None:
+        self._cmd = (msg, None)
+
+    def command_interfaces(self) -> list[str]:
+        return [f"{w}/velocity" for w in (*self.left, *self.right)]
+
+    def state_interfaces(self) -> list[str] | None:
+        kind = "position" if self.position_feedback else "velocity"
+        return [f"{w}/{kind}" for w in (*self.left, *self.right)]
+
+    def on_activate(self, states: dict[str, float], commands: dict[str, float]) -> None:
+        missing = [s for s in self.state_interfaces() or [] if s not in states]
+        if missing:
+            raise ControlError(f"controller '{self.name}': the hardware has no state interface {', '.join(missing)}")
+        self._reset_state()
+        self._cmd = None
+
+    def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
+        cmd = self._cmd
+        if cmd is not None:
+            self._cmd = None
+            # the command's age counts from when it arrived (its header stamp may be in another clock)
+            self._last_cmd = (cmd[0], t)
+        twist = Twist()
+        if self._last_cmd is not None and t - self._last_cmd[1] <= self.timeout:
+            twist = self._last_cmd[0]
+        # limits
+        (v0, w0), (v1, w1) = self._prev
+        lin = self.linear.limit(twist.linear[0], v0, v1, period)
+        ang = self.angular.limit(twist.angular[2], w0, w1, period)
+        self._prev = [(lin, ang), (v0, w0)]
+        sep = self.separation * self.sep_mult
+        r_l, r_r = self.radius * self.left_mult, self.radius * self.right_mult
+        vl, vr = (lin - ang * sep / 2.0) / r_l, (lin + ang * sep / 2.0) / r_r
+        for w in self.left:
+            commands[f"{w}/velocity"] = vl
+        for w in self.right:
+            commands[f"{w}/velocity"] = vr
+        self._odometry(t, period, states, lin, ang, sep, r_l, r_r)
+        if self._limited is not None and self._limited.wanted:
+            self._limited.publish(TwistStamped(t, self.base_frame, Twist((lin, 0.0, 0.0), (0.0, 0.0, ang))))
+        self._publish(t)
+
+    def _odometry(
+        self, t: float, dt: float, states: dict[str, float], lin: float, ang: float, sep: float, r_l: float, r_r: float
+    ) -> None:
+        if self.open_loop:
+            v, w = lin, ang
+        elif self.position_feedback:
+            pl = sum(states[f"{n}/position"] for n in self.left) / len(self.left)
+            pr = sum(states[f"{n}/position"] for n in self.right) / len(self.right)
+            last = self._wheel_pos
+            self._wheel_pos = (pl, pr)
+            if last is None or dt <= 0:
+                return
+            dl, dr = (pl - last[0]) * r_l, (pr - last[1]) * r_r
+            self._v_hist.append((dl + dr) / 2.0 / dt)
+            self._w_hist.append((dr - dl) / sep / dt)
+            v, w = sum(self._v_hist) / len(self._v_hist), sum(self._w_hist) / len(self._w_hist)
+        else:
+            ql = sum(states[f"{n}/velocity"] for n in self.left) / len(self.left) * r_l
+            qr = sum(states[f"{n}/velocity"] for n in self.right) / len(self.right) * r_r
+            self._v_hist.append((ql + qr) / 2.0)
+            self._w_hist.append((qr - ql) / sep)
+            v, w = sum(self._v_hist) / len(self._v_hist), sum(self._w_hist) / len(self._w_hist)
+        # exact integration along the arc (second-order Runge-Kutta when turning slowly)
+        dth = w * dt
+        if abs(dth) < 1e-6:
+            mid = self.heading + dth / 2.0
+            self.x += v * dt * math.cos(mid)
+            self.y += v * dt * math.sin(mid)
+        else:
+            r = v / w
+            self.x += r * (math.sin(self.heading + dth) - math.sin(self.heading))
+            self.y -= r * (math.cos(self.heading + dth) - math.cos(self.heading))
+        self.heading += dth
+        self.v, self.w = v, w
+
+    def _publish(self, t: float) -> None:
+        if self.publish_rate > 0:
+            if t + 1e-9 < self._next_publish:
+                return
+            period = 1.0 / self.publish_rate
+            self._next_publish = (math.floor(t / period + 1e-6) + 1) * period
+        pose = Pose((self.x, self.y, 0.0), quat_from_rpy(0.0, 0.0, self.heading))
+        if self._odom.wanted:
+            pc, tc = [0.0] * 36, [0.0] * 36
+            for i in range(6):
+                pc[7 * i], tc[7 * i] = self.pose_cov[i], self.twist_cov[i]
+            self._odom.publish(
+                Odometry(
+                    t,
+                    self.odom_frame,
+                    self.base_frame,
+                    pose,
+                    Twist((self.v, 0.0, 0.0), (0.0, 0.0, self.w)),
+                    tuple(pc),
+                    tuple(tc),
+                )
+            )
+        if self._tf is not None and self._tf.wanted:
+            self._tf.publish(TransformBatch((Transform(t, self.odom_frame, self.base_frame, pose),)))

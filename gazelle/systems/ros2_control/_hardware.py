@@ -1,0 +1,365 @@
+"""The simulated hardware behind a ``<ros2_control>`` block: its interfaces, over MuJoCo actuators.
+
+What gazebo_ros2_control's ``GazeboSystem`` and gz_ros2_control's ``GazeboSimSystem`` do, on the
+runtime's typed handles:
+
+* every ``<joint>`` gets its state interfaces (``position``, ``velocity``, ``effort``) read from
+  the joint each cycle, and one actuator per command interface:
+  - ``position``: a stiff PD servo in MuJoCo (every step, implicit damping) plus an integral
+    term updated each cycle, so a held arm does not sag under gravity;
+  - ``velocity``: a velocity servo (``kv = I/dt``) with an integral term; a continuous joint
+    is treated as a drive wheel (point contacts, gear-motor armature), as the diff drives are;
+  - ``effort``: a motor, the torque as commanded;
+* only the actuator of the joint's active command mode exerts force; a joint whose interfaces no
+  active controller claims holds where it is (``hold_joints``, gz_ros2_control's default);
+* ``<param name="min|max">`` of a command interface clamp the command, ``<limit effort>``
+  clamps the force; ``initial_value`` of a state interface sets the joint at spawn; a
+  ``<joint><mimic>`` joint follows its leader's position interface.
+
+URDF ``<limit velocity>`` is not enforced on commands, as ros2_control Jazzy's resource manager
+does not enforce it either (the ros2_control diffbot demo limits its wheels to 1 rad/s in the URDF
+and drives them at 13 rad/s).
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass, field
+
+from ...description import JointType, Ros2Control
+from ...physics import ActuatorHandle, ActuatorKind, Entity, JointHandle, PhysicsWorld
+from .._actuation import (
+    PidGains,
+    PositionServo,
+    VelocityServo,
+    add_velocity_servo,
+    add_wheel_servo,
+    ball_casters,
+    joint_effort_limit,
+    wheel_inertia_about_axis,
+)
+
+JOINT_INTERFACES = ("position", "velocity", "effort")
+"""The joint interfaces simulated (ros2_control's hardware_interface::HW_IF_*)."""
+
+POSITION_BANDWIDTH_HZ = 25.0
+"""Natural frequency of a position interface's servo (critically damped), capped by the timestep."""
+
+POSITION_INTEGRAL_SEC = 0.2
+"""Integral time of a position interface's servo (removes the sag under gravity)."""
+
+
+class ControlError(ValueError):
+    """A ``<ros2_control>`` block or request that cannot be honoured; the message names it."""
+
+
+@dataclass
+class _Joint:
+    name: str
+    handle: JointHandle
+    commands: dict[str, ActuatorHandle] = field(default_factory=dict)
+    limits: dict[str, tuple[float, float]] = field(default_factory=dict)
+    position: PositionServo | None = None
+    velocity: VelocityServo | None = None
+    mode: str | None = None
+    """The command interface in force (None: holding)."""
+    hold: float = 0.0
+    """Where the joint is held while no controller commands it."""
+    mimic: tuple[str, float, float] | None = None
+    """(leader, multiplier, offset) of a ``<mimic>`` joint."""
+    enabled: str | None = None
+    """The command interface whose actuator is switched on."""
+    initial: float | None = None
+    """``initial_value`` of the position state interface, applied by :meth:`SimHardware.start`."""
+    last_target: tuple[float, float] | None = None
+    """(position target, sim time) last sent in position mode."""
+
+
+class SimHardware:
+    """The interfaces of one ``<ros2_control>`` block and the actuators behind them.
+
+    Build it while the entity is staged (it adds actuators); then each cycle :meth:`read`
+    fills :attr:`states`, controllers read those and write :attr:`commands`, and :meth:`write`
+    sends the commands of the joints' active modes to the actuators.
+    """
+
+    def __init__(
+        self, rc: Ros2Control, world: PhysicsWorld, entity: Entity, log: logging.Logger, *, hold: bool = True
+    ) -> None:
+        self.name = rc.name
+        self.hold_joints = hold
+        """Joints that no controller commands hold where they are (gz_ros2_control's ``hold_joints``);
+        else their actuators are off and the joints are free."""
+        self.type = rc.type
+        self.plugin = rc.hardware_plugin
+        self.state = "active"
+        """Lifecycle state of the component (``set_hardware_component_state``)."""
+        self.world = world
+        self._log = log
+        model = entity.model
+        self.states: dict[str, float] = {}
+        """``joint/interface`` -> value read this cycle."""
+        self.commands: dict[str, float] = {}
+        """``joint/interface`` -> value commanded (NaN until a controller writes one)."""
+        self.joints: dict[str, _Joint] = {}
+        self._velocity_servos: dict[str, VelocityServo] = {}
+        self._velocity_servos_wheels: list[str] = []
+        self._started = False
+        self.entity = entity.name
+        self.sensors: dict[str, tuple[str, ...]] = {}
+        where = f"{rc.location}: " if rc.location else ""
+        for comp in rc.joints:
+            try:
+                j = model.joint(comp.name)
+            except KeyError:
+                raise ControlError(
+                    f"{where}ros2_control '{rc.name}': joint '{comp.name}' is not in the robot description"
+                ) from None
+            if j.type in (JointType.FIXED, JointType.FLOATING, JointType.PLANAR, JointType.BALL):
+                raise ControlError(
+                    f"{where}ros2_control '{rc.name}': joint '{comp.name}' is {j.type.value}; "
+                    "only revolute, continuous and prismatic joints have interfaces"
+                )
+            joint = _Joint(comp.name, world.joint(entity.name, comp.name))
+            for ci in comp.command_interfaces:
+                kind = ci.name
+                if kind not in JOINT_INTERFACES:
+                    self._warn(
+                        f"{where}ros2_control '{rc.name}': command interface '{kind}' of joint '{comp.name}' "
+                        f"is not simulated (only {', '.join(JOINT_INTERFACES)}); no controller can claim it"
+                    )
+                    continue
+                lo, hi = _float(ci.param("min"), -math.inf), _float(ci.param("max"), math.inf)
+                joint.limits[kind] = (lo, hi)
+                joint.commands[kind] = self._actuator(world, entity, comp.name, kind, j.type is JointType.CONTINUOUS)
+                self.commands[f"{comp.name}/{kind}"] = math.nan
+            for si in comp.state_interfaces:
+                if si.name not in JOINT_INTERFACES:
+                    self._warn(
+                        f"{where}ros2_control '{rc.name}': state interface '{si.name}' of joint '{comp.name}' "
+                        f"is not simulated (only {', '.join(JOINT_INTERFACES)})"
+                    )
+                    continue
+                self.states[f"{comp.name}/{si.name}"] = 0.0
+                init = si.param("initial_value")
+                if si.name == "position" and init is not None:
+                    joint.initial = _float(init, 0.0)
+            if j.mimic is not None:
+                joint.mimic = (j.mimic.joint, j.mimic.multiplier, j.mimic.offset)
+            joint.velocity = self._velocity_servos.get(comp.name)
+            if "position" in joint.commands:
+                act = joint.commands["position"]
+                joint.position = PositionServo(act, self._position_gains(world, model, comp.name))
+            self.joints[comp.name] = joint
+        wheels = list(self._velocity_servos_wheels)
+        if len(wheels) >= 2:
+            casters = ball_casters(model, wheels)
+            for link in casters:
+                world.make_caster_frictionless(entity, link)
+            if casters:
+                log.info(
+                    f"ros2_control '{rc.name}': {', '.join(casters)} roll as ball casters (frictionless spheres "
+                    f"level with the wheels {', '.join(wheels)})"
+                )
+        for comp in rc.sensors:
+            names = tuple(f"{comp.name}/{si.name}" for si in comp.state_interfaces)
+            self.sensors[comp.name] = names
+            for n in names:
+                self.states[n] = math.nan  # sensor state interfaces: read by the sensor broadcasters
+        if rc.sensors:
+            self._warn(
+                f"{where}ros2_control '{rc.name}': sensor components "
+                f"({', '.join(c.name for c in rc.sensors)}) are listed with NaN values; their readings are "
+                "not wired to the simulated sensors yet"
+            )
+        if rc.gpios:
+            self._warn(
+                f"{where}ros2_control '{rc.name}': gpio components ({', '.join(c.name for c in rc.gpios)}) "
+                "are not simulated"
+            )
+
+    def _warn(self, text: str) -> None:
+        self._log.warning(text)
+
+    def _actuator(self, world: PhysicsWorld, entity: Entity, joint: str, kind: str, wheel: bool) -> ActuatorHandle:
+        model = entity.model
+        if kind == "position":
+            gains = self._position_gains(world, model, joint)
+            eff = joint_effort_limit(model, joint)
+            act = world.add_actuator(
+                entity,
+                joint,
+                ActuatorKind.POSITION,
+                kp=gains.p_gain,
+                kv=gains.d_gain,
+                force_limit=(-eff, eff) if math.isfinite(eff) else None,
+            )
+        elif kind == "velocity":
+            eff = joint_effort_limit(model, joint)
+            servo = (
+                add_wheel_servo(world, entity, joint, eff)
+                if wheel
+                else add_velocity_servo(world, entity, joint, force_limit=eff)
+            )
+            if wheel:
+                self._velocity_servos_wheels.append(joint)
+            act = servo.actuator
+            self._velocity_servos[joint] = servo
+        else:
+            eff = joint_effort_limit(model, joint)
+            act = world.add_actuator(
+                entity, joint, ActuatorKind.EFFORT, force_limit=(-eff, eff) if math.isfinite(eff) else None
+            )
+        return act
+
+    @staticmethod
+    def _position_gains(world: PhysicsWorld, model, joint: str) -> PidGains:
+        inertia = wheel_inertia_about_axis(model, joint, world.armature)
+        omega = min(2.0 * math.pi * POSITION_BANDWIDTH_HZ, 0.2 / world.timestep)
+        kp = inertia * omega * omega
+        kv = 2.0 * math.sqrt(kp * inertia)
+        eff = joint_effort_limit(model, joint)
+        imax = eff if math.isfinite(eff) else 1e6
+        return PidGains(
+            p_gain=kp,
+            i_gain=kp / POSITION_INTEGRAL_SEC,
+            d_gain=kv,
+            i_max=imax,
+            i_min=-imax,
+            cmd_max=imax,
+            cmd_min=-imax,
+        )
+
+    # ------------------------------------------------------------------ after the spawn
+    def start(self) -> None:
+        """Once the entity is in the world (idempotent): joints go to their ``initial_value``, and
+        those no controller commands hold there."""
+        if self._started:
+            return
+        self._started = True
+        for joint in self.joints.values():
+            if joint.initial is not None:
+                self.world.set_joint_state(self.entity, joint.name, position=joint.initial, velocity=0.0)
+            if joint.mode is None:
+                self._set_mode(joint, None)
+
+    def command_interfaces(self) -> list[str]:
+        """Every ``joint/interface`` a controller may claim."""
+        return list(self.commands)
+
+    def state_interfaces(self) -> list[str]:
+        """Every ``name/interface`` a controller may read."""
+        return list(self.states)
+
+    def read(self) -> None:
+        """Fill :attr:`states` from the joints."""
+        states = self.states
+        for name, joint in self.joints.items():
+            h = joint.handle
+            if f"{name}/position" in states:
+                states[f"{name}/position"] = h.position
+            if f"{name}/velocity" in states:
+                states[f"{name}/velocity"] = h.velocity
+            if f"{name}/effort" in states:
+                states[f"{name}/effort"] = h.effort
+
+    def write(self, sim_time_sec: float) -> None:
+        """Send each joint's command in its active mode (clamped to the interface's min/max); hold the others."""
+        if self.state != "active":
+            return
+        for name, joint in self.joints.items():
+            mode = joint.mode
+            if joint.mimic is not None and mode is None and joint.mimic[0] in self.joints:
+                leader = self.joints[joint.mimic[0]]
+                if leader.mode == "position" and "position" in joint.commands:
+                    target = self.commands.get(f"{leader.name}/position", math.nan)
+                    if math.isfinite(target):
+                        self._drive_position(joint, joint.mimic[1] * target + joint.mimic[2], sim_time_sec)
+                        continue
+            if mode is None:
+                self._hold(joint, sim_time_sec)
+                continue
+            value = self.commands.get(f"{name}/{mode}", math.nan)
+            if not math.isfinite(value):
+                self._hold(joint, sim_time_sec)
+                continue
+            lo, hi = joint.limits.get(mode, (-math.inf, math.inf))
+            value = min(max(value, lo), hi)
+            if mode == "position":
+                self._drive_position(joint, value, sim_time_sec)
+            elif mode == "velocity":
+                assert joint.velocity is not None
+                joint.velocity.update(value, sim_time_sec)
+            else:
+                joint.commands["effort"].command(value)
+
+    def _drive_position(self, joint: _Joint, target: float, sim_time_sec: float) -> None:
+        assert joint.position is not None
+        self._enable_only(joint, "position")
+        # the target's own speed (the velocity interface when claimed too, else from the last target)
+        # is the servo's velocity reference, as a real servo fed a trajectory has one
+        velocity = self.commands.get(f"{joint.name}/velocity", math.nan) if joint.mode == "position" else math.nan
+        if not math.isfinite(velocity):
+            last = joint.last_target
+            dt = sim_time_sec - last[1] if last is not None else 0.0
+            velocity = (target - last[0]) / dt if last is not None and dt > 0 else 0.0
+        joint.last_target = (target, sim_time_sec)
+        joint.position.update(target, sim_time_sec, velocity)
+        joint.hold = target
+
+    def _hold(self, joint: _Joint, sim_time_sec: float) -> None:
+        joint.last_target = None
+        if not self.hold_joints:
+            if joint.enabled is not None:
+                for act in joint.commands.values():
+                    act.set_enabled(False)
+                joint.enabled = None
+            return
+        if joint.position is not None:
+            self._enable_only(joint, "position")
+            joint.position.update(joint.hold, sim_time_sec)
+        elif joint.velocity is not None:
+            self._enable_only(joint, "velocity")
+            joint.velocity.update(0.0, sim_time_sec)
+        elif "effort" in joint.commands:
+            self._enable_only(joint, "effort")
+            joint.commands["effort"].command(0.0)
+
+    def _enable_only(self, joint: _Joint, kind: str) -> None:
+        if joint.enabled == kind:
+            return
+        for k, act in joint.commands.items():
+            act.set_enabled(k == kind)
+        joint.enabled = kind
+
+    def _set_mode(self, joint: _Joint, mode: str | None) -> None:
+        joint.mode = mode
+        if mode is None:
+            joint.hold = joint.handle.position
+        else:
+            self._enable_only(joint, mode)
+        if joint.position is not None:
+            joint.position.reset()
+        if joint.velocity is not None:
+            joint.velocity.reset()
+
+    def claim(self, interfaces: set[str]) -> None:
+        """Set the joints' command modes from the interfaces claimed by active controllers (a joint
+        with two claimed, as position and velocity, runs on position); the rest hold."""
+        for name, joint in self.joints.items():
+            claimed = [k for k in JOINT_INTERFACES if f"{name}/{k}" in interfaces]
+            mode = claimed[0] if claimed else None
+            if mode != joint.mode:
+                self._set_mode(joint, mode)
+                if mode is not None:
+                    self.commands[f"{name}/{mode}"] = math.nan
+
+
+def _float(text: str | None, default: float) -> float:
+    if text is None or not text.strip():
+        return default
+    try:
+        return float(text)
+    except ValueError:
+        return default

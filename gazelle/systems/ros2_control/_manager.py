@@ -1,0 +1,523 @@
+"""The controller manager: one per robot with ``<ros2_control>``, as gazebo_ros2_control and
+gz_ros2_control run one inside the simulator.
+
+It owns the robot's :class:`SimHardware` and its controllers. Every ``1/update_rate`` of sim time
+it runs read → update (each active controller, at its own rate) → write, on the simulation
+thread, before the physics steps: deterministic, as ros2_control's loop in Gazebo is.
+
+The ROS layer serves its controller_manager_msgs services by calling the methods here on the
+simulation thread (``Simulation.call``); they raise :class:`ControlError` with the reason a
+request fails, which the services return (``ok: false``) and log.
+
+Parameters come from the plugin tag's ``<parameters>`` files (in order; a later one wins), then
+from parameters set on the manager's node at run time (``<controller>.type``,
+``<controller>.params_file``: what ``spawner --param-file`` sets), as in ros2_control.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from ...description import ResourceResolver
+from ...physics import PhysicsWorld
+from .._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_bool, ros_block
+from ._broadcasters import (
+    ForwardCommandController,
+    JointGroupEffortController,
+    JointGroupPositionController,
+    JointGroupVelocityController,
+    JointStateBroadcaster,
+)
+from ._controller import ACTIVE, FINALIZED, INACTIVE, UNCONFIGURED, Controller, ControllerContext
+from ._diff_drive import DiffDriveController
+from ._hardware import ControlError, SimHardware
+from ._params import Params, ParamsError, ParamsFile, load_params
+from ._trajectory import JointTrajectoryController
+
+CONTROLLER_TYPES: dict[str, type[Controller]] = {
+    c.type_name: c
+    for c in (
+        JointStateBroadcaster,
+        DiffDriveController,
+        JointTrajectoryController,
+        ForwardCommandController,
+        JointGroupPositionController,
+        JointGroupVelocityController,
+        JointGroupEffortController,
+    )
+}
+"""Controller types this manager can load, by their ``package/Class`` name."""
+
+DEFAULT_UPDATE_RATE = 100
+"""ros2_control's default ``update_rate`` (Hz)."""
+
+STRICT, BEST_EFFORT = 2, 1
+"""``switch_controller`` strictness (controller_manager_msgs/SwitchController)."""
+
+_FIND = re.compile(r"\$\(find\s+([A-Za-z0-9_]+)\)")
+
+
+@dataclass(frozen=True)
+class ControlPluginConfig:
+    """The ros2_control plugin tag (``libgazebo_ros2_control.so``, ``gz_ros2_control-system``).
+
+    ``robot_param`` and ``robot_param_node`` are read and not needed: the robot description is
+    the spawned model itself, so the manager never waits for robot_state_publisher."""
+
+    parameters: tuple[str, ...] = ()
+    """``<parameters>`` files (repeatable; a later one wins), through ``$(find pkg)`` and ``package://``."""
+    controller_manager_name: str = "controller_manager"
+    """``<controller_manager_name>``: the manager's node name."""
+    namespace: str = ""
+    """``<ros><namespace>``, else the spawn's robot namespace."""
+    hold_joints: bool = True
+    """``<hold_joints>``: joints no controller commands hold where they are (else they are free)."""
+    robot_param: str = "robot_description"
+    """``<robot_param>`` (not needed, see above)."""
+    robot_param_node: str = "robot_state_publisher"
+    """``<robot_param_node>`` (not needed, see above)."""
+
+
+@dataclass
+class _Loaded:
+    controller: Controller
+    type_name: str
+    cycle: int = 0
+    last_update: float = -math.inf
+
+
+class ControllerManager(System):
+    """See the module docstring."""
+
+    def __init__(self, extra_param_files: tuple[str, ...] = ()) -> None:
+        self.name = "controller_manager"
+        self.namespace = ""
+        self.update_rate = DEFAULT_UPDATE_RATE
+        self.hardware: list[SimHardware] = []
+        self.controllers: dict[str, _Loaded] = {}
+        self.files: list[ParamsFile] = []
+        self.overrides: Params = {}
+        """Parameters set on the manager's node at run time (``<ctrl>.type``, ``<ctrl>.params_file``)."""
+        self.config = ControlPluginConfig()
+        self._extra_files = extra_param_files
+        self._gate = RateGate()
+        self._ctx: SystemContext | None = None
+        self.log = logging.getLogger("controller_manager")
+
+    # ------------------------------------------------------------------ configure
+    def configure(self, ctx: SystemContext) -> None:
+        """Build the hardware from the ``<ros2_control>`` blocks and read the plugin's parameters."""
+        self._ctx = ctx
+        model = ctx.entity.model
+        cfg = ctx.plugin.config if ctx.plugin is not None else None
+        ns, _remaps = ros_block(cfg)
+        ns = (ns or ctx.entity.namespace).strip("/")
+        self.config = ControlPluginConfig(
+            parameters=tuple(el.text.strip() for el in cfg.findall("parameters") if el.text.strip())
+            if cfg is not None
+            else (),
+            controller_manager_name=(child_text(cfg, "controller_manager_name") or "controller_manager").strip("/")
+            or "controller_manager",
+            namespace=ns,
+            hold_joints=parse_bool(cfg, "hold_joints", True, self.log),
+            robot_param=child_text(cfg, "robot_param") or "robot_description",
+            robot_param_node=child_text(cfg, "robot_param_node") or "robot_state_publisher",
+        )
+        self.namespace = f"/{ns}" if ns else ""
+        self.name = self.config.controller_manager_name
+        self.log = logging.getLogger(f"{self.namespace}/{self.name}".lstrip("/"))
+        base = Path(model.source_file).parent if model.source_file else None
+        resolver = ResourceResolver().trusting(base)
+        for raw in (*self.config.parameters, *self._extra_files):
+            path = self._resolve(raw, resolver, base)
+            if path is None:
+                where = f"{cfg.location}: " if cfg is not None and cfg.location else ""
+                raise ControlError(
+                    f"{where}parameters file '{raw}' is not in a package or model folder gazelle may read"
+                )
+            try:
+                self.files.append(load_params(path))
+            except ParamsError as err:
+                raise ControlError(str(err)) from None
+        for rc in model.ros2_control:
+            if not rc.simulated:
+                self.log.warning(
+                    f"ros2_control '{rc.name}': hardware plugin '{rc.hardware_plugin or '(none)'}' is a real "
+                    "robot's driver; the simulation stands in for it (as gazebo_ros2_control/GazeboSystem)"
+                )
+            self.hardware.append(SimHardware(rc, ctx.world, ctx.entity, self.log, hold=self.config.hold_joints))
+        rate = self.manager_params().get("update_rate", DEFAULT_UPDATE_RATE)
+        if not isinstance(rate, (int, float)) or isinstance(rate, bool) or rate <= 0:
+            raise ControlError(f"controller_manager: update_rate must be a positive number, got {rate!r}")
+        self.update_rate = int(rate)
+        ctx.bus.add_component(ctx.entity.name, self)
+        self.log.info(
+            f"controller manager '{self.node_name}' at {self.update_rate} Hz over "
+            f"{sum(len(h.joints) for h in self.hardware)} joint(s) of {', '.join(h.name for h in self.hardware)}"
+        )
+
+    @staticmethod
+    def _resolve(raw: str, resolver: ResourceResolver, base: Path | None) -> Path | None:
+        text = raw
+        m = _FIND.search(text)
+        if m is not None:
+            pkg = resolver.find_package(m.group(1))
+            if pkg is None:
+                return None
+            text = text.replace(m.group(0), str(pkg))
+        if text.startswith(("package://", "model://", "file://")):
+            return resolver.resolve_uri(text, base)
+        p = Path(text)
+        if not p.is_absolute() and base is not None:
+            p = base / p
+        return p if resolver.allowed(p) else None
+
+    @property
+    def node_name(self) -> str:
+        """The manager's fully qualified node name (``/controller_manager``, ``/r1/controller_manager``)."""
+        return f"{self.namespace}/{self.name}"
+
+    def manager_params(self) -> Params:
+        """The manager node's own parameters (``update_rate``, ``<ctrl>.type``...)."""
+        out: Params = {}
+        for f in self.files:
+            out.update(f.for_node(self.name, self.namespace))
+        out.update(self.overrides)
+        return out
+
+    def controller_params(self, name: str) -> Params:
+        """A controller's parameters: its sections in the plugin's files, then its ``params_file``."""
+        out: Params = {}
+        for f in self.files:
+            out.update(f.for_node(name, self.namespace))
+        own = self.manager_params().get(f"{name}.params_file")
+        files = own if isinstance(own, list) else [own] if isinstance(own, str) and own else []
+        for path in files:
+            try:
+                out.update(load_params(str(path)).for_node(name, self.namespace))
+            except ParamsError as err:
+                raise ControlError(str(err)) from None
+        return out
+
+    def controller_type(self, name: str) -> str | None:
+        """The type configured for controller ``name`` (manager's ``<name>.type``, else its own ``type``)."""
+        t = self.manager_params().get(f"{name}.type")
+        if isinstance(t, str) and t:
+            return t
+        own = self.controller_params(name).get("type")
+        return own if isinstance(own, str) and own else None
+
+    # ------------------------------------------------------------------ the loop
+    def next_update(self, sim_time_sec: float) -> float:
+        """The next cycle."""
+        return self._gate.next
+
+    def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """A world reset: cycle again at once; the controllers keep their state."""
+        self._gate.reset()
+        for loaded in self.controllers.values():
+            loaded.last_update = -math.inf
+
+    def pre_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """read → update → write, at ``update_rate``."""
+        if info.paused or not self._gate.due(info.sim_time_sec, self.update_rate):
+            return
+        for hw in self.hardware:
+            hw.start()
+        t = info.sim_time_sec
+        for hw in self.hardware:
+            hw.read()
+        states, commands = self._merged()
+        for name, loaded in list(self.controllers.items()):
+            c = loaded.controller
+            if c.state != ACTIVE:
+                continue
+            loaded.cycle += 1
+            if c.update_rate and c.update_rate < self.update_rate:
+                every = max(1, round(self.update_rate / c.update_rate))
+                if (loaded.cycle - 1) % every:
+                    continue
+            period = t - loaded.last_update if math.isfinite(loaded.last_update) else 1.0 / self.update_rate
+            loaded.last_update = t
+            try:
+                c.update(t, period, states, commands)
+            except Exception as err:  # a controller that raises is deactivated, the robot holds
+                self.log.error(f"controller '{name}' raised in update: {type(err).__name__}: {err}; it is deactivated")
+                self._deactivate(name)
+        self._split(commands)
+        for hw in self.hardware:
+            hw.write(t)
+
+    def _merged(self) -> tuple[dict[str, float], dict[str, float]]:
+        if len(self.hardware) == 1:
+            return self.hardware[0].states, self.hardware[0].commands
+        states: dict[str, float] = {}
+        commands: dict[str, float] = {}
+        for hw in self.hardware:
+            states.update(hw.states)
+            commands.update(hw.commands)
+        return states, commands
+
+    def _split(self, commands: dict[str, float]) -> None:
+        if len(self.hardware) == 1:
+            return
+        for hw in self.hardware:
+            for k in hw.commands:
+                hw.commands[k] = commands[k]
+
+    def shutdown(self) -> None:
+        """The robot is deleted: controllers are cleaned up, the manager's node goes."""
+        for name in list(self.controllers):
+            try:
+                self.unload_controller(name, force=True)
+            except ControlError:
+                pass
+        if self._ctx is not None:
+            self._ctx.bus.remove_component(self)
+
+    # ------------------------------------------------------------------ services (sim thread)
+    def all_state_interfaces(self) -> list[str]:
+        """Every state interface of every hardware component."""
+        return [n for hw in self.hardware for n in hw.state_interfaces()]
+
+    def all_command_interfaces(self) -> list[str]:
+        """Every command interface of every hardware component."""
+        return [n for hw in self.hardware for n in hw.command_interfaces()]
+
+    def claimed(self) -> dict[str, str]:
+        """Command interface -> the active controller claiming it."""
+        out: dict[str, str] = {}
+        for name, loaded in self.controllers.items():
+            if loaded.controller.state == ACTIVE:
+                for i in loaded.controller.command_interfaces():
+                    out[i] = name
+        return out
+
+    def load_controller(self, name: str) -> Controller:
+        """Load (create) controller ``name`` from its configured type; it is ``unconfigured``.
+
+        Raises:
+            ControlError: already loaded, no type configured, or a type that does not exist.
+        """
+        if name in self.controllers:
+            raise ControlError(f"a controller named '{name}' is already loaded")
+        type_name = self.controller_type(name)
+        if type_name is None:
+            raise ControlError(
+                f"the 'type' of controller '{name}' is not set: the parameter '{name}.type' of "
+                f"{self.node_name}, or 'type' under '{name}: ros__parameters' in a parameters file, names it"
+            )
+        cls = CONTROLLER_TYPES.get(type_name)
+        if cls is None:
+            raise ControlError(
+                f"controller type '{type_name}' of '{name}' does not exist; the types are: "
+                + ", ".join(sorted(CONTROLLER_TYPES))
+            )
+        assert self._ctx is not None
+        ctx = self._ctx
+        cctx = ControllerContext(
+            ctx.bus,
+            ctx.entity.name,
+            self.namespace,
+            logging.getLogger(f"{self.namespace}/{name}".lstrip("/")),
+            tuple(self.all_state_interfaces()),
+            tuple(self.all_command_interfaces()),
+            tuple(j for hw in self.hardware for j in hw.joints),
+            add_component=lambda c: ctx.bus.add_component(ctx.entity.name, c),
+            remove_component=ctx.bus.remove_component,
+        )
+        controller = cls(name, self.controller_params(name), cctx)
+        self.controllers[name] = _Loaded(controller, type_name)
+        self.log.info(f"Loaded controller '{name}' ({type_name})")
+        return controller
+
+    def configure_controller(self, name: str) -> None:
+        """``unconfigured`` → ``inactive`` (reads its parameters again, declares its topics).
+
+        Raises:
+            ControlError: not loaded, active, or a parameter or interface problem (named).
+        """
+        loaded = self._get(name)
+        c = loaded.controller
+        if c.state == ACTIVE:
+            raise ControlError(f"controller '{name}' is active; deactivate it before configuring it")
+        if c.state == INACTIVE:
+            c.on_cleanup()
+        c.params = self.controller_params(name)
+        try:
+            c.configure()
+            self._check_interfaces(c)
+        except ControlError:
+            c.drop_endpoints()
+            c.state = UNCONFIGURED
+            raise
+        except Exception as err:
+            c.drop_endpoints()
+            c.state = UNCONFIGURED
+            raise ControlError(f"controller '{name}' failed to configure: {type(err).__name__}: {err}") from None
+        c.state = INACTIVE
+        self.log.info(f"Configured controller '{name}'")
+
+    def _check_interfaces(self, c: Controller) -> None:
+        commands, states = set(self.all_command_interfaces()), set(self.all_state_interfaces())
+        missing_c = [i for i in c.command_interfaces() if i not in commands]
+        missing_s = [i for i in (c.state_interfaces() or []) if i not in states]
+        if missing_c or missing_s:
+            parts = []
+            if missing_c:
+                parts.append(f"command interface(s) {', '.join(missing_c)}")
+            if missing_s:
+                parts.append(f"state interface(s) {', '.join(missing_s)}")
+            raise ControlError(
+                f"controller '{c.name}' needs {' and '.join(parts)}, which the hardware does not offer "
+                f"(it has command interfaces {sorted(commands)})"
+            )
+
+    def switch_controller(self, activate: list[str], deactivate: list[str], strictness: int = STRICT) -> list[str]:
+        """Deactivate then activate controllers, all at once between two cycles.
+
+        With STRICT, any problem refuses the whole switch; with BEST_EFFORT, the controllers that
+        can switch do and the problems are returned. Returns the problems (empty: all switched).
+
+        Raises:
+            ControlError: STRICT and a problem (the reason lists them all).
+        """
+        problems: list[str] = []
+        for name in deactivate:
+            if name not in self.controllers:
+                problems.append(f"controller '{name}' is not loaded")
+            elif self.controllers[name].controller.state != ACTIVE:
+                problems.append(f"controller '{name}' is not active")
+        claimed = {i: n for i, n in self.claimed().items() if n not in deactivate}
+        for name in activate:
+            if name not in self.controllers:
+                problems.append(f"controller '{name}' is not loaded")
+                continue
+            c = self.controllers[name].controller
+            if c.state == ACTIVE and name not in deactivate:
+                problems.append(f"controller '{name}' is already active")
+                continue
+            if c.state != INACTIVE and not (c.state == ACTIVE and name in deactivate):
+                problems.append(f"controller '{name}' is {c.state}; configure it first")
+                continue
+            for i in c.command_interfaces():
+                if i in claimed:
+                    problems.append(f"command interface '{i}' of '{name}' is claimed by '{claimed[i]}'")
+                claimed[i] = name
+        if problems and strictness == STRICT:
+            raise ControlError("; ".join(problems))
+        for name in deactivate:
+            if name in self.controllers and self.controllers[name].controller.state == ACTIVE:
+                self._deactivate(name)
+        bad = set()
+        for p in problems:
+            m = re.search(r"'([^']+)'", p)
+            if m:
+                bad.add(m.group(1))
+        for name in activate:
+            if name in bad or name not in self.controllers:
+                continue
+            c = self.controllers[name].controller
+            if c.state != INACTIVE:
+                continue
+            try:
+                self._activate(name)
+            except ControlError as err:
+                if strictness == STRICT:
+                    raise
+                problems.append(str(err))
+        return problems
+
+    def _activate(self, name: str) -> None:
+        loaded = self.controllers[name]
+        c = loaded.controller
+        for hw in self.hardware:
+            hw.start()
+            hw.read()
+        states, commands = self._merged()
+        claimed = set(self.claimed()) | set(c.command_interfaces())
+        for hw in self.hardware:
+            hw.claim(claimed)
+        states, commands = self._merged()
+        try:
+            c.on_activate(states, commands)
+        except ControlError:
+            for hw in self.hardware:
+                hw.claim(set(self.claimed()))
+            raise
+        c.state = ACTIVE
+        loaded.cycle = 0
+        loaded.last_update = -math.inf
+        self.log.info(f"Activated controller '{name}'")
+
+    def _deactivate(self, name: str) -> None:
+        c = self.controllers[name].controller
+        c.on_deactivate()
+        c.state = INACTIVE
+        for hw in self.hardware:
+            hw.claim(set(self.claimed()))
+        self.log.info(f"Deactivated controller '{name}'")
+
+    def unload_controller(self, name: str, force: bool = False) -> None:
+        """Unload an inactive (or unconfigured) controller.
+
+        Raises:
+            ControlError: not loaded, or active (unless ``force``).
+        """
+        loaded = self._get(name)
+        c = loaded.controller
+        if c.state == ACTIVE:
+            if not force:
+                raise ControlError(f"controller '{name}' is active; deactivate it before unloading it")
+            self._deactivate(name)
+        if c.state == INACTIVE:
+            c.on_cleanup()
+        c.state = FINALIZED
+        del self.controllers[name]
+        self.log.info(f"Unloaded controller '{name}'")
+
+    def cleanup_controller(self, name: str) -> None:
+        """``inactive`` → ``unconfigured``."""
+        c = self._get(name).controller
+        if c.state != INACTIVE:
+            raise ControlError(f"controller '{name}' is {c.state}; only an inactive one can be cleaned up")
+        c.on_cleanup()
+        c.state = UNCONFIGURED
+
+    def set_hardware_component_state(self, component: str, state: str) -> str:
+        """Set a hardware component's lifecycle state (``active``, ``inactive``, ``unconfigured``,
+        ``finalized``); an inactive component holds its joints. Returns the state now."""
+        hw = next((h for h in self.hardware if h.name == component), None)
+        if hw is None:
+            raise ControlError(
+                f"no hardware component '{component}' (there are: {', '.join(h.name for h in self.hardware)})"
+            )
+        if state not in ("active", "inactive", "unconfigured", "finalized"):
+            raise ControlError(f"'{state}' is not a lifecycle state of a hardware component")
+        if state != "active":
+            users = [
+                n
+                for n, ld in self.controllers.items()
+                if ld.controller.state == ACTIVE and any(i in hw.commands for i in ld.controller.command_interfaces())
+            ]
+            for n in users:
+                self._deactivate(n)
+        hw.state = state
+        return hw.state
+
+    def _get(self, name: str) -> _Loaded:
+        loaded = self.controllers.get(name)
+        if loaded is None:
+            raise ControlError(
+                f"controller '{name}' is not loaded"
+                + (f" (loaded: {', '.join(self.controllers)})" if self.controllers else " (none is loaded)")
+            )
+        return loaded
+
+    def set_parameter(self, name: str, value: object) -> None:
+        """A parameter set on the manager's node at run time (``<ctrl>.type``, ``<ctrl>.params_file``...)."""
+        self.overrides[name] = value  # type: ignore[assignment]

@@ -1,0 +1,117 @@
+"""ROS 2 parameter files (``--params-file`` YAML) as ros2_control reads them.
+
+A file maps node names to ``ros__parameters``; a node's section is found by its name, its
+fully qualified name (``/ns/name``) or a wildcard (``/**``). Nested mappings flatten to dotted
+names (``linear: {x: {max_velocity: 1.0}}`` is ``linear.x.max_velocity``), as rclcpp does.
+"""
+
+from __future__ import annotations
+
+import fnmatch
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+ParamValue = bool | int | float | str | list[Any]
+Params = dict[str, ParamValue]
+
+
+class ParamsError(ValueError):
+    """A parameters file that cannot be used; the message names the file (and line where YAML says)."""
+
+
+@dataclass(frozen=True)
+class ParamsFile:
+    """One YAML file: node name (as written) -> flattened parameters."""
+
+    path: str
+    nodes: dict[str, Params]
+
+    def for_node(self, name: str, namespace: str = "") -> Params:
+        """The parameters of node ``name`` in ``namespace``: wildcard sections (``/**``), then the bare
+        name's, then the fully qualified name's (the most specific wins).
+
+        A bare name (``diffbot_base_controller:``) also applies in a namespace: rcl would not match it
+        there, but controller files are written for one robot and reused for namespaced copies; a
+        ``/ns/name`` section is the way to give one of them other values."""
+        ns = "/" + namespace.strip("/") if namespace.strip("/") else ""
+        fq = f"{ns}/{name}"
+        out: Params = {}
+        for key, params in self.nodes.items():
+            if "*" in key and fnmatch.fnmatchcase(fq, "/" + key.strip("/").replace("**", "*")):
+                out.update(params)
+        for key in (name, f"/{name}"):
+            out.update(self.nodes.get(key, {}))
+        if ns:
+            for key in (fq, fq.lstrip("/")):
+                out.update(self.nodes.get(key, {}))
+        return out
+
+
+def _flatten(prefix: str, value: Any, out: Params, where: str) -> None:
+    if isinstance(value, dict):
+        for k, v in value.items():
+            _flatten(f"{prefix}.{k}" if prefix else str(k), v, out, where)
+    elif isinstance(value, (bool, int, float, str)):
+        out[prefix] = value
+    elif isinstance(value, list):
+        out[prefix] = list(value)
+    elif value is None:
+        return  # "key:" with nothing: rclcpp skips it too
+    else:
+        raise ParamsError(f"{where}: parameter '{prefix}' has a value of type {type(value).__name__}")
+
+
+def parse_params(text: str, path: str = "<string>") -> ParamsFile:
+    """Parse a parameters file's text.
+
+    Raises:
+        ParamsError: YAML that does not parse (with its line), or a layout that is not
+            ``node: {ros__parameters: {...}}``.
+    """
+    try:
+        data = yaml.safe_load(text)
+    except yaml.YAMLError as err:
+        mark = getattr(err, "problem_mark", None)
+        line = f":{mark.line + 1}" if mark is not None else ""
+        problem = getattr(err, "problem", None) or str(err)
+        raise ParamsError(f"{path}{line}: not valid YAML: {problem}") from None
+    if data is None:
+        return ParamsFile(path, {})
+    if not isinstance(data, dict):
+        raise ParamsError(f"{path}: a parameters file maps node names to 'ros__parameters'")
+    nodes: dict[str, Params] = {}
+
+    def walk(prefix: str, section: Any) -> None:
+        if not isinstance(section, dict):
+            raise ParamsError(f"{path}: '{prefix}' must be a mapping with 'ros__parameters'")
+        for key, value in section.items():
+            if key == "ros__parameters":
+                params: Params = {}
+                if value is not None:
+                    if not isinstance(value, dict):
+                        raise ParamsError(f"{path}: '{prefix}.ros__parameters' must be a mapping")
+                    _flatten("", value, params, f"{path}: {prefix}")
+                nodes[prefix] = {**nodes.get(prefix, {}), **params}
+            else:
+                # a namespace level: /ns: {node: {ros__parameters: ...}}
+                walk(f"{prefix.rstrip('/')}/{str(key).strip('/')}" if prefix else str(key), value)
+
+    walk("", data)
+    return ParamsFile(path, nodes)
+
+
+def load_params(path: str | Path) -> ParamsFile:
+    """Read and parse a parameters file.
+
+    Raises:
+        ParamsError: the file cannot be read or parsed.
+    """
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except OSError as err:
+        raise ParamsError(f"{p}: cannot read the parameters file: {err.strerror or err}") from None
+    return parse_params(text, str(p))

@@ -1,0 +1,401 @@
+"""``joint_trajectory_controller/JointTrajectoryController`` (ros2_controllers Jazzy's parameters and behaviour).
+
+* Trajectories come from the ``~/follow_joint_trajectory`` action (served by the ROS layer through
+  :class:`TrajectoryGoal`) or the ``~/joint_trajectory`` topic; a new one replaces the one running.
+* The first segment starts from the joints' state when the trajectory starts. Between points it
+  interpolates as ``interpolation_method: splines`` does: linear with positions only, cubic with
+  velocities, quintic with accelerations. After the last point it holds the last positions.
+* Command interfaces ``position`` (+ ``velocity``, + ``acceleration``), ``velocity`` or ``effort``;
+  the last two close the loop with ``gains.<joint>.{p,i,d,ff_velocity_scale}``.
+* ``constraints``: ``stopped_velocity_tolerance``, ``goal_time``, ``<joint>.trajectory`` (path) and
+  ``<joint>.goal``; a goal's own tolerances override them (0: the default, -1: none). A path
+  violation aborts with PATH_TOLERANCE_VIOLATED and holds where the joints are; missing the goal
+  by more than ``goal_time`` after the end aborts with GOAL_TOLERANCE_VIOLATED.
+* ``~/controller_state`` (control_msgs/JointTrajectoryControllerState) every cycle.
+"""
+
+from __future__ import annotations
+
+import bisect
+import math
+import threading
+from dataclasses import dataclass, field
+
+from .._bus import JointTrajectory, MsgType, TrajectoryControllerState, TrajectoryPoint
+from ._controller import Controller
+from ._hardware import ControlError
+
+# control_msgs/FollowJointTrajectory result codes
+SUCCESSFUL, INVALID_GOAL, INVALID_JOINTS, OLD_HEADER_TIMESTAMP = 0, -1, -2, -3
+PATH_TOLERANCE_VIOLATED, GOAL_TOLERANCE_VIOLATED = -4, -5
+
+_ALLOWED_COMMANDS = (
+    ("position",),
+    ("position", "velocity"),
+    ("position", "velocity", "acceleration"),
+    ("velocity",),
+    ("effort",),
+)
+
+
+@dataclass(frozen=True)
+class Tolerance:
+    """Position, velocity and acceleration tolerance of one joint (0: not checked)."""
+
+    position: float = 0.0
+    velocity: float = 0.0
+    acceleration: float = 0.0
+
+
+@dataclass
+class TrajectoryGoal:
+    """One FollowJointTrajectory goal as the controller runs it; the ROS layer reads its progress.
+
+    Fields written on the simulation thread, read from the ROS thread (single assignments).
+    """
+
+    trajectory: JointTrajectory
+    path_tolerance: dict[str, Tolerance] = field(default_factory=dict)
+    goal_tolerance: dict[str, Tolerance] = field(default_factory=dict)
+    goal_time_tolerance: float = 0.0
+    status: str = "pending"
+    """pending, executing, succeeded, aborted, canceled."""
+    error_code: int = SUCCESSFUL
+    error_string: str = ""
+    feedback: TrajectoryControllerState | None = None
+    done: threading.Event = field(default_factory=threading.Event)
+
+    def finish(self, status: str, code: int, text: str) -> None:
+        """End the goal (once)."""
+        if self.done.is_set():
+            return
+        self.status, self.error_code, self.error_string = status, code, text
+        self.done.set()
+
+
+@dataclass
+class _Segmented:
+    """A trajectory in the controller's joint order, times absolute (sim seconds)."""
+
+    times: list[float]
+    pos: list[list[float]]
+    vel: list[list[float]] | None
+    acc: list[list[float]] | None
+    goal: TrajectoryGoal | None
+
+    def sample(self, t: float) -> tuple[list[float], list[float], list[float]]:
+        times = self.times
+        n = len(self.pos[0])
+        if t <= times[0]:
+            return list(self.pos[0]), [0.0] * n, [0.0] * n
+        if t >= times[-1]:
+            return list(self.pos[-1]), [0.0] * n, [0.0] * n
+        k = bisect.bisect_right(times, t) - 1
+        t0, t1 = times[k], times[k + 1]
+        T, s = t1 - t0, t - t0
+        p0, p1 = self.pos[k], self.pos[k + 1]
+        if self.vel is None:
+            v = [(b - a) / T for a, b in zip(p0, p1, strict=True)]
+            return [a + vi * s for a, vi in zip(p0, v, strict=True)], v, [0.0] * n
+        v0, v1 = self.vel[k], self.vel[k + 1]
+        if self.acc is None:
+            out_p, out_v, out_a = [], [], []
+            for a, b, va, vb in zip(p0, p1, v0, v1, strict=True):
+                c2 = (3 * (b - a) - (2 * va + vb) * T) / T**2
+                c3 = (2 * (a - b) + (va + vb) * T) / T**3
+                out_p.append(a + va * s + c2 * s * s + c3 * s**3)
+                out_v.append(va + 2 * c2 * s + 3 * c3 * s * s)
+                out_a.append(2 * c2 + 6 * c3 * s)
+            return out_p, out_v, out_a
+        a0s, a1s = self.acc[k], self.acc[k + 1]
+        out_p, out_v, out_a = [], [], []
+        for a, b, va, vb, aa, ab in zip(p0, p1, v0, v1, a0s, a1s, strict=True):
+            # quintic with position, velocity and acceleration at both ends
+            c0, c1, c2 = a, va, aa / 2.0
+            h = b - a - va * T - aa * T * T / 2.0
+            dv = vb - va - aa * T
+            da = ab - aa
+            c3 = (10 * h - 4 * dv * T + da * T * T / 2.0) / T**3
+            c4 = (-15 * h + 7 * dv * T - da * T * T) / T**4
+            c5 = (6 * h - 3 * dv * T + da * T * T / 2.0) / T**5
+            out_p.append(c0 + c1 * s + c2 * s**2 + c3 * s**3 + c4 * s**4 + c5 * s**5)
+            out_v.append(c1 + 2 * c2 * s + 3 * c3 * s**2 + 4 * c4 * s**3 + 5 * c5 * s**4)
+            out_a.append(2 * c2 + 6 * c3 * s + 12 * c4 * s**2 + 20 * c5 * s**3)
+        return out_p, out_v, out_a
+
+
+class JointTrajectoryController(Controller):
+    """See the module docstring."""
+
+    type_name = "joint_trajectory_controller/JointTrajectoryController"
+
+    def on_configure(self) -> None:
+        self.joints = self.string_list("joints")
+        if not self.joints:
+            raise ControlError(f"controller '{self.name}': 'joints' is empty")
+        cmd = tuple(self.string_list("command_interfaces"))
+        if cmd not in _ALLOWED_COMMANDS:
+            raise ControlError(
+                f"controller '{self.name}': command_interfaces {list(cmd)} is not a supported combination "
+                f"({'; '.join(', '.join(c) for c in _ALLOWED_COMMANDS)})"
+            )
+        self.cmd_kinds = cmd
+        self.state_kinds = tuple(self.string_list("state_interfaces")) or ("position", "velocity")
+        if "position" not in self.state_kinds:
+            raise ControlError(f"controller '{self.name}': state_interfaces must include 'position'")
+        self.allow_partial = self.param("allow_partial_joints_goal", False, bool)
+        self.open_loop = self.param("open_loop_control", False, bool)
+        self.stopped_velocity = self.param("constraints.stopped_velocity_tolerance", 0.01, float)
+        self.goal_time = self.param("constraints.goal_time", 0.0, float)
+        self.path_tol = {j: Tolerance(self.param(f"constraints.{j}.trajectory", 0.0, float)) for j in self.joints}
+        self.goal_tol = {
+            j: Tolerance(self.param(f"constraints.{j}.goal", 0.0, float), self.stopped_velocity) for j in self.joints
+        }
+        self.gains = {
+            j: (
+                self.param(f"gains.{j}.p", 0.0, float),
+                self.param(f"gains.{j}.i", 0.0, float),
+                self.param(f"gains.{j}.d", 0.0, float),
+                self.param(f"gains.{j}.ff_velocity_scale", 0.0, float),
+            )
+            for j in self.joints
+        }
+        if cmd in (("velocity",), ("effort",)) and all(g[0] == 0 for g in self.gains.values()):
+            self.log.warning(
+                f"{self.name}: {cmd[0]} command interface without gains.<joint>.p: only the feed-forward "
+                "velocity is commanded"
+            )
+        self._integral = [0.0] * len(self.joints)
+        self._traj: _Segmented | None = None
+        self._incoming: tuple[JointTrajectory, TrajectoryGoal | None] | None = None
+        self._lock = threading.Lock()
+        self._hold: list[float] | None = None
+        self.last_state: TrajectoryControllerState | None = None
+        """The reference, feedback and error of the last cycle while a goal runs (the action's feedback)."""
+        self.subscribe("~/joint_trajectory", MsgType.JOINT_TRAJECTORY, lambda m: self._queue(m, None))
+        self._state_pub = self.advertise("~/controller_state", MsgType.TRAJECTORY_CONTROLLER_STATE)
+        self.action_name = self.topic("~/follow_joint_trajectory")
+        self.ctx.add_component(self)
+
+    def on_cleanup(self) -> None:
+        self.ctx.remove_component(self)
+        super().on_cleanup()
+
+    def command_interfaces(self) -> list[str]:
+        return [f"{j}/{k}" for k in self.cmd_kinds if k != "acceleration" for j in self.joints]
+
+    def state_interfaces(self) -> list[str] | None:
+        return [f"{j}/{k}" for k in self.state_kinds for j in self.joints]
+
+    # ------------------------------------------------------------------ goals (from the ROS thread)
+    def validate(self, traj: JointTrajectory, now: float | None = None) -> tuple[int, str] | None:
+        """Why a trajectory is refused (code, reason), or None when it is acceptable."""
+        if self.state != "active":
+            return INVALID_GOAL, f"controller '{self.name}' is not active"
+        unknown = [j for j in traj.joint_names if j not in self.joints]
+        if unknown:
+            return INVALID_JOINTS, f"joints {unknown} are not controlled by '{self.name}' (it has {self.joints})"
+        if len(set(traj.joint_names)) != len(traj.joint_names):
+            return INVALID_JOINTS, "a joint is named twice"
+        if not self.allow_partial and traj.points and set(traj.joint_names) != set(self.joints):
+            missing = [j for j in self.joints if j not in traj.joint_names]
+            return INVALID_JOINTS, f"joints {missing} are missing and allow_partial_joints_goal is false"
+        n = len(traj.joint_names)
+        last = -math.inf
+        for i, p in enumerate(traj.points):
+            if len(p.positions) != n and not (not p.positions and self.cmd_kinds in (("velocity",), ("effort",))):
+                return INVALID_GOAL, f"point {i} has {len(p.positions)} positions for {n} joints"
+            for label, values in (("velocities", p.velocities), ("accelerations", p.accelerations)):
+                if values and len(values) != n:
+                    return INVALID_GOAL, f"point {i} has {len(values)} {label} for {n} joints"
+            if not all(math.isfinite(v) for v in (*p.positions, *p.velocities, *p.accelerations)):
+                return INVALID_GOAL, f"point {i} has a value that is not finite"
+            if p.time_from_start_sec <= last:
+                return INVALID_GOAL, f"point {i}: time_from_start must increase strictly"
+            last = p.time_from_start_sec
+        if now is not None and traj.stamp_sec > 0 and traj.points:
+            if traj.stamp_sec + traj.points[-1].time_from_start_sec < now:
+                return OLD_HEADER_TIMESTAMP, "the trajectory ended before it arrived (header stamp in the past)"
+        return None
+
+    def submit(self, goal: TrajectoryGoal) -> None:
+        """Run ``goal`` from the next cycle (replacing whatever runs)."""
+        self._queue(goal.trajectory, goal)
+
+    def _queue(self, traj: JointTrajectory, goal: TrajectoryGoal | None) -> None:
+        if goal is None:
+            why = self.validate(traj)
+            if why is not None:
+                self.log.error(f"{self.name}: trajectory on ~/joint_trajectory refused: {why[1]}")
+                return
+        with self._lock:
+            old = self._incoming
+            self._incoming = (traj, goal)
+        if old is not None and old[1] is not None:
+            old[1].finish("aborted", SUCCESSFUL, "replaced by a newer trajectory before it started")
+
+    def cancel(self, goal: TrajectoryGoal) -> None:
+        """Stop ``goal`` (the joints hold where they are)."""
+        goal.finish("canceled", SUCCESSFUL, "canceled")
+
+    # ------------------------------------------------------------------ the cycle
+    def on_activate(self, states: dict[str, float], commands: dict[str, float]) -> None:
+        missing = [s for s in self.state_interfaces() or [] if s not in states]
+        if missing:
+            raise ControlError(f"controller '{self.name}': the hardware has no state interface {', '.join(missing)}")
+        self._traj = None
+        self._hold = [states[f"{j}/position"] for j in self.joints]
+        self._integral = [0.0] * len(self.joints)
+
+    def on_deactivate(self) -> None:
+        traj = self._traj
+        if traj is not None and traj.goal is not None:
+            traj.goal.finish("aborted", INVALID_GOAL, f"controller '{self.name}' was deactivated")
+        self._traj = None
+
+    def _start(self, traj: JointTrajectory, goal: TrajectoryGoal | None, t: float, actual: list[float]) -> None:
+        old = self._traj
+        if old is not None and old.goal is not None and old.goal is not goal:
+            old.goal.finish("aborted", SUCCESSFUL, "preempted by a newer trajectory")
+        if not traj.points:
+            self._traj = None
+            self._hold = list(actual)
+            if goal is not None:
+                goal.finish("succeeded", SUCCESSFUL, "empty trajectory: holding")
+            return
+        start = traj.stamp_sec if traj.stamp_sec > 0 else t
+        index = {j: i for i, j in enumerate(traj.joint_names)}
+        base = self._hold if self._hold is not None else actual
+        times, pos, vel, acc = [t], [list(actual)], [[0.0] * len(self.joints)], [[0.0] * len(self.joints)]
+        have_vel = all(p.velocities for p in traj.points)
+        have_acc = have_vel and all(p.accelerations for p in traj.points)
+        for p in traj.points:
+            tt = start + p.time_from_start_sec
+            if tt <= times[-1]:
+                continue  # points already past (a stamp in the past)
+            times.append(tt)
+            pos.append([p.positions[index[j]] if j in index else base[k] for k, j in enumerate(self.joints)])
+            vel.append([p.velocities[index[j]] if j in index and have_vel else 0.0 for j in self.joints])
+            acc.append([p.accelerations[index[j]] if j in index and have_acc else 0.0 for j in self.joints])
+        self._traj = _Segmented(times, pos, vel if have_vel else None, acc if have_acc else None, goal)
+        self._hold = pos[-1]
+        if goal is not None:
+            goal.status = "executing"
+
+    def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
+        joints = self.joints
+        actual = [states[f"{j}/position"] for j in joints]
+        actual_v = [states.get(f"{j}/velocity", 0.0) for j in joints]
+        with self._lock:
+            incoming, self._incoming = self._incoming, None
+        if incoming is not None:
+            self._start(incoming[0], incoming[1], t, actual)
+        traj = self._traj
+        if traj is not None and traj.goal is not None and traj.goal.done.is_set():
+            # canceled (or ended) from outside: hold where the joints are
+            self._traj, self._hold = None, list(actual)
+            traj = None
+        if traj is not None:
+            des_p, des_v, des_a = traj.sample(t)
+        else:
+            hold = self._hold if self._hold is not None else actual
+            des_p, des_v, des_a = list(hold), [0.0] * len(joints), [0.0] * len(joints)
+        err_p = [d - a for d, a in zip(des_p, actual, strict=True)]
+        err_v = [d - a for d, a in zip(des_v, actual_v, strict=True)]
+        self._write(commands, des_p, des_v, err_p, err_v, period)
+        if traj is not None and traj.goal is not None:
+            self._check(traj, t, err_p, err_v, actual)
+        elif traj is not None and t >= traj.times[-1]:
+            self._traj = None  # a topic trajectory ran out: hold its last point
+        wanted = self._state_pub.wanted
+        if wanted or (traj is not None and traj.goal is not None):
+            state = TrajectoryControllerState(
+                t,
+                tuple(joints),
+                TrajectoryPoint(0.0, tuple(des_p), tuple(des_v), tuple(des_a)),
+                TrajectoryPoint(0.0, tuple(actual), tuple(actual_v)),
+                TrajectoryPoint(0.0, tuple(err_p), tuple(err_v)),
+                TrajectoryPoint(0.0, tuple(commands.get(f"{j}/{self.cmd_kinds[0]}", math.nan) for j in joints)),
+            )
+            self.last_state = state
+            if wanted:
+                self._state_pub.publish(state)
+
+    def _write(
+        self,
+        commands: dict[str, float],
+        des_p: list[float],
+        des_v: list[float],
+        err_p: list[float],
+        err_v: list[float],
+        period: float,
+    ) -> None:
+        kinds = self.cmd_kinds
+        for k, j in enumerate(self.joints):
+            if kinds[0] == "position":
+                commands[f"{j}/position"] = des_p[k]
+                if "velocity" in kinds:
+                    commands[f"{j}/velocity"] = des_v[k]
+                continue
+            p, i, d, ff = self.gains[j]
+            self._integral[k] += err_p[k] * period
+            u = ff * des_v[k] + p * err_p[k] + i * self._integral[k] + d * err_v[k]
+            commands[f"{j}/{kinds[0]}"] = u
+
+    def _check(self, traj: _Segmented, t: float, err_p: list[float], err_v: list[float], actual: list[float]) -> None:
+        goal = traj.goal
+        assert goal is not None
+        end = traj.times[-1]
+        if t < end:
+            for k, j in enumerate(self.joints):
+                tol = goal.path_tolerance.get(j, self.path_tol[j])
+                if _violates(tol, err_p[k], err_v[k]):
+                    self._traj, self._hold = None, list(actual)
+                    goal.finish(
+                        "aborted",
+                        PATH_TOLERANCE_VIOLATED,
+                        f"joint '{j}' left the path tolerance: position error {err_p[k]:.4g} "
+                        f"(tolerance {tol.position:g}), velocity error {err_v[k]:.4g} (tolerance {tol.velocity:g})",
+                    )
+                    return
+            return
+        outside = [
+            j
+            for k, j in enumerate(self.joints)
+            if _violates(goal.goal_tolerance.get(j, self.goal_tol[j]), err_p[k], err_v[k])
+        ]
+        if not outside:
+            self._traj = None
+            goal.finish("succeeded", SUCCESSFUL, "")
+            return
+        allowed = goal.goal_time_tolerance if goal.goal_time_tolerance > 0 else self.goal_time
+        if allowed > 0 and t > end + allowed:
+            self._traj, self._hold = None, list(actual)
+            goal.finish(
+                "aborted",
+                GOAL_TOLERANCE_VIOLATED,
+                f"joints {outside} were not within the goal tolerance {allowed:g} s after the trajectory's end",
+            )
+
+
+def _violates(tol: Tolerance, err_p: float, err_v: float) -> bool:
+    return (tol.position > 0 and abs(err_p) > tol.position) or (tol.velocity > 0 and abs(err_v) > tol.velocity)
+
+
+def goal_tolerances(
+    controller: JointTrajectoryController, given: list[tuple[str, float, float, float]], path: bool
+) -> dict[str, Tolerance]:
+    """A goal's JointTolerance list applied over the controller's defaults: a value > 0 replaces the
+    default, 0 keeps it, -1 removes the check."""
+    defaults = controller.path_tol if path else controller.goal_tol
+    out = dict(defaults)
+    for name, p, v, a in given:
+        if name not in defaults:
+            continue
+        d = defaults[name]
+
+        def pick(value: float, default: float) -> float:
+            return 0.0 if value < 0 else (value if value > 0 else default)
+
+        out[name] = Tolerance(pick(p, d.position), pick(v, d.velocity), pick(a, d.acceleration))
+    return out

@@ -1,0 +1,211 @@
+"""ros2_control over ROS: the spawner against the simulated controller manager, real robots' files.
+
+A `gazelle sim` server process, robots spawned with `gazelle spawn`, controllers started with
+`gazelle spawner` (ros2_control's spawner command line), driven and watched by a plain rclpy node.
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+
+import pytest
+from _paths import REAL as FIXTURES
+from _paths import REPO
+from control_msgs.action import FollowJointTrajectory
+from controller_manager_msgs.srv import ListControllers, ListHardwareInterfaces, SwitchController
+from geometry_msgs.msg import TwistStamped
+from nav_msgs.msg import Odometry
+from rclpy.action import ActionClient
+from sensor_msgs.msg import JointState
+from trajectory_msgs.msg import JointTrajectoryPoint
+
+from .conftest import GAZELLE, start, wait_for
+
+DIFFBOT = FIXTURES / "ros2_control_diffbot"
+DIFFBOT_URDF = DIFFBOT / "_xacro_expanded" / "diffbot.urdf"
+DIFFBOT_YAML = DIFFBOT / "ros2_control_demo_example_2" / "config" / "diffbot_controllers.yaml"
+R6BOT = FIXTURES / "ros2_control_r6bot"
+R6BOT_URDF = R6BOT / "_xacro_expanded" / "r6bot.urdf"
+R6BOT_YAML = REPO / "tests" / "data" / "ros2_control" / "r6bot_jtc.yaml"
+
+
+def _sim_time(stamp) -> float:
+    return stamp.sec + stamp.nanosec * 1e-9
+
+
+def _spawner(*args: str, timeout: float = 60) -> tuple[int, str]:
+    proc = start([*GAZELLE, "spawner", *args], "spawner")
+    rc = proc.wait(timeout)
+    return rc, proc.output
+
+
+@pytest.mark.slow
+def test_diffbot_drives_with_its_own_controllers_yaml_and_the_spawner(sim_factory, ros_client):
+    sim = sim_factory("--no-viewer")
+    spawn = start([*GAZELLE, "spawn", "-entity", "diffbot", "-file", str(DIFFBOT_URDF), "-z", "0.05"], "spawn")
+    assert spawn.wait(60) == 0, spawn.output
+    sim.wait_line("controller manager '/controller_manager'", 10)
+
+    rc, out = _spawner("joint_state_broadcaster", "diffbot_base_controller", "-p", str(DIFFBOT_YAML))
+    assert rc == 0, out
+    assert "Configured and activated diffbot_base_controller" in out
+
+    listed = ros_client.call(ListControllers, "/controller_manager/list_controllers", ListControllers.Request())
+    states = {c.name: (c.state, c.type) for c in listed.controller}
+    assert states == {
+        "joint_state_broadcaster": ("active", "joint_state_broadcaster/JointStateBroadcaster"),
+        "diffbot_base_controller": ("active", "diff_drive_controller/DiffDriveController"),
+    }
+    hw = ros_client.call(
+        ListHardwareInterfaces, "/controller_manager/list_hardware_interfaces", ListHardwareInterfaces.Request()
+    )
+    claimed = {i.name for i in hw.command_interfaces if i.is_claimed}
+    assert claimed == {"left_wheel_joint/velocity", "right_wheel_joint/velocity"}
+
+    odom: list[Odometry] = []
+    joints: list[JointState] = []
+    lock = threading.Lock()
+
+    def keep(store: list):
+        def cb(msg) -> None:
+            with lock:
+                store.append(msg)
+
+        return cb
+
+    ros_client.node.create_subscription(Odometry, "/diffbot_base_controller/odom", keep(odom), 10)
+    ros_client.node.create_subscription(JointState, "/joint_states", keep(joints), 10)
+    wait_for(lambda: odom and joints, 15, "/diffbot_base_controller/odom and /joint_states")
+    assert set(joints[-1].name) == {"left_wheel_joint", "right_wheel_joint"}
+
+    pub = ros_client.node.create_publisher(TwistStamped, "/diffbot_base_controller/cmd_vel", 10)
+    start_state = ros_client.entity_state("diffbot")
+    t0 = _sim_time(start_state.header.stamp)
+    with lock:
+        odom_x0 = odom[-1].pose.pose.position.x
+    cmd = TwistStamped()
+    cmd.twist.linear.x = 0.2
+
+    def sim_now() -> float:
+        with lock:
+            return _sim_time(odom[-1].header.stamp)
+
+    # 0.2 m/s for 5 s of sim time, then stop
+    stop = threading.Event()
+
+    def drive() -> None:
+        while not stop.is_set() and sim_now() < t0 + 5.0:
+            pub.publish(cmd)
+            stop.wait(0.02)
+        pub.publish(TwistStamped())
+
+    driver = threading.Thread(target=drive, daemon=True)
+    driver.start()
+    driver.join(30)
+    stop.set()
+    wait_for(lambda: sim_now() > t0 + 6.5, 20, "the robot to stop")
+    end = ros_client.entity_state("diffbot")
+    moved = math.hypot(
+        end.state.pose.position.x - start_state.state.pose.position.x,
+        end.state.pose.position.y - start_state.state.pose.position.y,
+    )
+    with lock:
+        odom_moved = odom[-1].pose.pose.position.x - odom_x0
+    assert moved == pytest.approx(1.0, abs=0.03), f"ground truth moved {moved:.4f} m"
+    assert odom_moved == pytest.approx(moved, rel=0.02), f"odom {odom_moved:.4f} m vs ground truth {moved:.4f} m"
+
+
+@pytest.mark.slow
+def test_r6bot_follows_a_trajectory_holds_and_aborts_on_path_tolerance(sim_factory, ros_client, monkeypatch):
+    monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(R6BOT))  # the server finds the meshes' package
+    sim = sim_factory("--no-viewer")
+    spawn = start([*GAZELLE, "spawn", "-entity", "r6bot", "-file", str(R6BOT_URDF)], "spawn")
+    assert spawn.wait(120) == 0, spawn.output
+    sim.wait_line("controller manager '/controller_manager'", 10)
+    rc, out = _spawner("joint_state_broadcaster", "joint_trajectory_controller", "-p", str(R6BOT_YAML))
+    assert rc == 0, out
+
+    joints: list[JointState] = []
+    ros_client.node.create_subscription(JointState, "/joint_states", joints.append, 10)
+    wait_for(lambda: joints, 15, "/joint_states")
+    names = [f"joint_{i}" for i in range(1, 7)]
+    client = ActionClient(
+        ros_client.node, FollowJointTrajectory, "/joint_trajectory_controller/follow_joint_trajectory"
+    )
+    assert client.wait_for_server(timeout_sec=15)
+
+    def goal(points: list[tuple[float, list[float]]], path_tol: float = 0.0) -> FollowJointTrajectory.Goal:
+        g = FollowJointTrajectory.Goal()
+        g.trajectory.joint_names = names
+        for t, q in points:
+            p = JointTrajectoryPoint(positions=q)
+            p.time_from_start.sec = int(t)
+            p.time_from_start.nanosec = int((t - int(t)) * 1e9)
+            g.trajectory.points.append(p)
+        if path_tol:
+            from control_msgs.msg import JointTolerance
+
+            g.path_tolerance = [JointTolerance(name=n, position=path_tol) for n in names]
+        return g
+
+    def run(g: FollowJointTrajectory.Goal, timeout: float = 30.0):
+        done = threading.Event()
+        box: dict = {}
+
+        def on_goal(f) -> None:
+            handle = f.result()
+            box["accepted"] = handle.accepted
+            if not handle.accepted:
+                done.set()
+                return
+            handle.get_result_async().add_done_callback(lambda r: (box.__setitem__("result", r.result()), done.set()))
+
+        client.send_goal_async(g).add_done_callback(on_goal)
+        assert done.wait(timeout), "no result"
+        return box
+
+    final = [0.2, -0.2, 0.3, 0.1, 0.2, -0.3]
+    box = run(goal([(1.0, [0.3, -0.4, 0.5, 0.2, -0.3, 0.4]), (2.0, [0.6, -0.8, 1.0, 0.4, -0.6, 0.8]), (3.0, final)]))
+    assert box["accepted"]
+    result = box["result"].result
+    assert result.error_code == FollowJointTrajectory.Result.SUCCESSFUL, result.error_string
+
+    def position() -> list[float]:
+        msg = joints[-1]
+        return [msg.position[list(msg.name).index(n)] for n in names]
+
+    q_end = position()
+    assert max(abs(a - b) for a, b in zip(q_end, final, strict=True)) < 1e-3
+    t_end = _sim_time(joints[-1].header.stamp)
+    wait_for(lambda: _sim_time(joints[-1].header.stamp) > t_end + 10.0, 40, "10 s of holding")
+    drift = max(abs(a - b) for a, b in zip(position(), q_end, strict=True))
+    assert drift < 1e-3, f"drifted {drift:.2e} rad in 10 s"
+
+    # a fast move with a path tolerance it cannot keep: aborted with PATH_TOLERANCE_VIOLATED
+    box = run(goal([(0.3, [1.5, -1.0, 1.5, 1.0, 1.0, 1.0])], path_tol=1e-4))
+    assert box["accepted"]
+    assert box["result"].result.error_code == FollowJointTrajectory.Result.PATH_TOLERANCE_VIOLATED
+
+    # a goal naming a joint the controller does not have is rejected
+    bad = goal([(1.0, [0.0] * 6)])
+    bad.trajectory.joint_names = [*names[:5], "elbow"]
+    assert run(bad)["accepted"] is False
+
+    # switching to a controller that is not loaded: refused, and the server still answers
+    res = ros_client.call(
+        SwitchController,
+        "/controller_manager/switch_controller",
+        SwitchController.Request(activate_controllers=["nope"], strictness=SwitchController.Request.STRICT),
+    )
+    assert res.ok is False
+    sim.wait_line("controller 'nope' is not loaded", 10)
+    rc, out = _spawner("not_in_yaml", "-p", str(R6BOT_YAML), "--controller-manager-timeout", "5")
+    assert rc == 1 and "not_in_yaml" in out
+    assert ros_client.entity_state("r6bot").success
+
+
+def test_spawner_without_a_manager_says_so_and_exits_1():
+    rc, out = _spawner("joint_state_broadcaster", "--controller-manager-timeout", "1", timeout=30)
+    assert rc == 1
+    assert "Controller manager not available" in out

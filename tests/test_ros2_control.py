@@ -1,0 +1,377 @@
+"""ros2_control in the simulator, without ROS: the controller manager, the hardware and the
+controllers, on real robots' files (ros2_control_demos' diffbot and r6bot, MoveIt's Panda)."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from _paths import REAL, REPO
+
+from gazelle.description import Pose, load, load_string
+from gazelle.sim import Simulation
+from gazelle.systems import Float64Array, JointTrajectory, MsgType, TrajectoryPoint, Twist, TwistStamped
+from gazelle.systems.ros2_control import (
+    ControlError,
+    ControllerManager,
+    ParamsError,
+    TrajectoryGoal,
+    goal_tolerances,
+    load_params,
+    parse_params,
+)
+from gazelle.worlds import default_world
+
+DIFFBOT = REAL / "ros2_control_diffbot"
+DIFFBOT_URDF = DIFFBOT / "_xacro_expanded" / "diffbot.urdf"
+DIFFBOT_YAML = DIFFBOT / "ros2_control_demo_example_2" / "config" / "diffbot_controllers.yaml"
+R6BOT = REAL / "ros2_control_r6bot"
+R6BOT_URDF = R6BOT / "_xacro_expanded" / "r6bot.urdf"
+R6BOT_YAML = REPO / "tests" / "data" / "ros2_control" / "r6bot_jtc.yaml"
+PANDA = REAL / "moveit_panda"
+PANDA_XACRO = PANDA / "moveit_resources_panda_moveit_config" / "config" / "panda.urdf.xacro"
+PANDA_YAML = PANDA / "moveit_resources_panda_moveit_config" / "config" / "ros2_controllers.yaml"
+R6_JOINTS = tuple(f"joint_{i}" for i in range(1, 7))
+
+
+def _manager(entity) -> ControllerManager:
+    (cm,) = [s for s in entity.systems if isinstance(s, ControllerManager)]
+    return cm
+
+
+def _start(cm: ControllerManager, yaml_path, *names: str) -> None:
+    """What the spawner does with ``-p yaml_path``: the params file (and type) set on the manager,
+    then load, configure and activate."""
+    pf = load_params(yaml_path)
+    for n in names:
+        cm.set_parameter(f"{n}.params_file", str(yaml_path))
+        kind = pf.for_node(n).get("type") or pf.for_node("controller_manager").get(f"{n}.type")
+        cm.set_parameter(f"{n}.type", kind)
+        cm.load_controller(n)
+        cm.configure_controller(n)
+    cm.switch_controller(list(names), [])
+
+
+def _diffbot(sim: Simulation, name: str = "diffbot", namespace: str = "", y: float = 0.0):
+    model = load(DIFFBOT_URDF).value
+    return sim.spawn(model, name=name, pose=Pose((0.0, y, 0.05)), namespace=namespace)
+
+
+# --------------------------------------------------------------------------- parameters
+def test_parameter_files_flatten_nested_keys_and_match_wildcards_and_namespaces():
+    pf = parse_params(
+        """
+/**:
+  ros__parameters:
+    use_sim_time: true
+r1:
+  diff:
+    ros__parameters:
+      linear: {x: {max_velocity: 2.0}}
+      wheel_radius: 0.1
+diff:
+  ros__parameters:
+    angular.z.max_velocity: 1.5
+""",
+        "f.yaml",
+    )
+    assert pf.for_node("diff", "/r1") == {
+        "use_sim_time": True,
+        "angular.z.max_velocity": 1.5,
+        "linear.x.max_velocity": 2.0,
+        "wheel_radius": 0.1,
+    }
+    assert pf.for_node("diff") == {"use_sim_time": True, "angular.z.max_velocity": 1.5}
+
+
+def test_bad_yaml_names_the_file_and_line(tmp_path):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("controller_manager:\n  ros__parameters:\n    update_rate: [1, 2\n")
+    with pytest.raises(ParamsError, match=r"bad\.yaml:\d+: not valid YAML"):
+        load_params(bad)
+    with pytest.raises(ParamsError, match="maps node names"):
+        parse_params("- a\n- b\n", "list.yaml")
+
+
+# --------------------------------------------------------------------------- diffbot
+def test_the_diffbot_drives_one_metre_in_five_seconds_and_its_odometry_agrees():
+    sim = Simulation(default_world(), rtf=0)
+    entity = _diffbot(sim)
+    cm = _manager(entity)
+    assert cm.update_rate == 100  # ros2_control's default: its YAML has no controller_manager section
+    _start(cm, DIFFBOT_YAML, "joint_state_broadcaster", "diffbot_base_controller")
+    assert cm.claimed() == {
+        "left_wheel_joint/velocity": "diffbot_base_controller",
+        "right_wheel_joint/velocity": "diffbot_base_controller",
+    }
+    odom: list = []
+    joint_states: list = []
+    for ep in sim.bus.endpoints():
+        if ep.topic == "/diffbot_base_controller/odom":
+            ep.add_sink(odom.append)
+        if ep.topic == "/joint_states":
+            ep.add_sink(joint_states.append)
+    sim.step(500)
+    x0 = sim.world.entity_state("diffbot").pose.position[0]
+    t0 = sim.world.time
+    go = TwistStamped(0.0, "", Twist((0.2, 0.0, 0.0)))
+    while sim.world.time < t0 + 5.0 - 1e-9:
+        assert sim.bus.inject("/diffbot_base_controller/cmd_vel", MsgType.TWIST_STAMPED, go) == 1
+        sim.step(20)
+    sim.bus.inject("/diffbot_base_controller/cmd_vel", MsgType.TWIST_STAMPED, TwistStamped(0.0, "", Twist()))
+    sim.step(1500)
+    moved = sim.world.entity_state("diffbot").pose.position[0] - x0
+    assert moved == pytest.approx(1.0, abs=0.03)
+    assert odom[-1].pose.position[0] == pytest.approx(moved, rel=0.02)
+    assert odom[-1].frame_id == "odom" and odom[-1].child_frame_id == "base_link"
+    assert joint_states[-1].names == ("left_wheel_joint", "right_wheel_joint")
+    # both wheels turned the same way by distance / radius (0.015 m in its YAML)
+    assert joint_states[-1].positions[0] == pytest.approx(moved / 0.015, rel=0.03)
+
+
+def test_the_diffbot_holds_still_after_cmd_vel_timeout():
+    sim = Simulation(default_world(), rtf=0)
+    cm = _manager(_diffbot(sim))
+    _start(cm, DIFFBOT_YAML, "diffbot_base_controller")
+    sim.step(200)
+    sim.bus.inject("/diffbot_base_controller/cmd_vel", MsgType.TWIST_STAMPED, TwistStamped(0.0, "", Twist((0.2,))))
+    sim.step(2000)  # one command, then 0.5 s cmd_vel_timeout: it stops by itself
+    x1 = sim.world.entity_state("diffbot").pose.position[0]
+    sim.step(1000)
+    assert 0.05 < x1 < 0.2
+    assert sim.world.entity_state("diffbot").pose.position[0] == pytest.approx(x1, abs=1e-3)
+
+
+def test_two_namespaced_robots_each_have_their_own_manager_and_topics():
+    sim = Simulation(default_world(), rtf=0)
+    r1, r2 = _diffbot(sim, "r1", "r1", 0.0), _diffbot(sim, "r2", "r2", 1.0)
+    m1, m2 = _manager(r1), _manager(r2)
+    assert (m1.node_name, m2.node_name) == ("/r1/controller_manager", "/r2/controller_manager")
+    _start(m1, DIFFBOT_YAML, "diffbot_base_controller")
+    _start(m2, DIFFBOT_YAML, "diffbot_base_controller")
+    topics = {ep.topic for ep in sim.bus.endpoints()}
+    assert {"/r1/diffbot_base_controller/cmd_vel", "/r2/diffbot_base_controller/odom"} <= topics
+    odom2 = []
+    for ep in sim.bus.endpoints():
+        if ep.topic == "/r2/diffbot_base_controller/odom":
+            ep.add_sink(odom2.append)
+    for _ in range(50):
+        sim.bus.inject("/r1/diffbot_base_controller/cmd_vel", MsgType.TWIST_STAMPED, TwistStamped(0, "", Twist((0.2,))))
+        sim.step(20)
+    assert sim.world.entity_state("r1").pose.position[0] > 0.1
+    assert abs(sim.world.entity_state("r2").pose.position[0]) < 1e-3
+    assert odom2[-1].frame_id == "r2/odom"  # tf_frame_prefix defaults to the namespace
+
+
+def test_a_forward_command_controller_drives_the_wheels_and_switches_with_the_diff_drive():
+    sim = Simulation(default_world(), rtf=0)
+    cm = _manager(_diffbot(sim))
+    cm.files.append(
+        parse_params(
+            "wheels:\n  ros__parameters:\n    type: velocity_controllers/JointGroupVelocityController\n"
+            "    joints: [left_wheel_joint, right_wheel_joint]\n"
+        )
+    )
+    _start(cm, DIFFBOT_YAML, "diffbot_base_controller")
+    cm.load_controller("wheels")
+    cm.configure_controller("wheels")
+    with pytest.raises(ControlError, match="claimed by 'diffbot_base_controller'"):
+        cm.switch_controller(["wheels"], [])
+    cm.switch_controller(["wheels"], ["diffbot_base_controller"])
+    sim.bus.inject("/wheels/commands", MsgType.FLOAT64_ARRAY, Float64Array((10.0, 10.0)))
+    sim.step(1000)
+    joint = sim.world.joint("diffbot", "left_wheel_joint")
+    assert joint.velocity == pytest.approx(10.0, rel=0.02)
+
+
+# --------------------------------------------------------------------------- r6bot and JTC
+@pytest.fixture
+def r6bot(monkeypatch):
+    monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(R6BOT))
+    sim = Simulation(default_world(), rtf=0)
+    entity = sim.spawn(load(R6BOT_URDF).value, name="r6bot")
+    cm = _manager(entity)
+    cm.files.append(load_params(R6BOT_YAML))
+    for n in ("joint_state_broadcaster", "joint_trajectory_controller"):
+        cm.load_controller(n)
+        cm.configure_controller(n)
+    cm.switch_controller(["joint_state_broadcaster", "joint_trajectory_controller"], [])
+    return sim, cm
+
+
+def _positions(cm: ControllerManager) -> list[float]:
+    return [cm.hardware[0].joints[j].handle.position for j in R6_JOINTS]
+
+
+def _run(sim: Simulation, goal: TrajectoryGoal, limit: float = 15.0) -> None:
+    while not goal.done.is_set() and sim.world.time < limit:
+        sim.step(10)
+
+
+def test_r6bot_follows_three_waypoints_then_holds_under_gravity(r6bot):
+    sim, cm = r6bot
+    jtc = cm.controllers["joint_trajectory_controller"].controller
+    sim.step(300)
+    final = (0.2, -0.2, 0.3, 0.1, 0.2, -0.3)
+    points = (
+        TrajectoryPoint(1.0, (0.3, -0.4, 0.5, 0.2, -0.3, 0.4)),
+        TrajectoryPoint(2.0, (0.6, -0.8, 1.0, 0.4, -0.6, 0.8)),
+        TrajectoryPoint(3.0, final),
+    )
+    goal = TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, points))
+    assert jtc.validate(goal.trajectory) is None
+    jtc.submit(goal)
+    worst = 0.0
+    while not goal.done.is_set() and sim.world.time < 10:
+        sim.step(10)
+        if jtc.last_state is not None:
+            worst = max(worst, *(abs(e) for e in jtc.last_state.error.positions))
+    assert goal.status == "succeeded", goal.error_string
+    assert sim.world.time < 0.3 + 3.0 + 1.0  # within its goal_time of 1 s
+    q_end = _positions(cm)
+    assert max(abs(a - b) for a, b in zip(q_end, final, strict=True)) < 1e-3
+    assert worst < 0.05  # the YAML's path tolerance (it was checked every cycle)
+    sim.step(10_000)  # 10 s under gravity
+    assert max(abs(a - b) for a, b in zip(_positions(cm), q_end, strict=True)) < 1e-3
+
+
+def test_r6bot_aborts_a_goal_that_leaves_its_path_tolerance(r6bot):
+    sim, cm = r6bot
+    jtc = cm.controllers["joint_trajectory_controller"].controller
+    sim.step(100)
+    goal = TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, (TrajectoryPoint(0.3, (1.5, -1.0, 1.5, 1.0, 1.0, 1.0)),)))
+    goal.path_tolerance = goal_tolerances(jtc, [(j, 1e-4, 0.0, 0.0) for j in R6_JOINTS], path=True)
+    jtc.submit(goal)
+    _run(sim, goal)
+    assert goal.status == "aborted" and goal.error_code == -4  # PATH_TOLERANCE_VIOLATED
+    sim.step(1000)  # it was moving fast: it comes to rest and holds there
+    q = _positions(cm)
+    sim.step(1000)
+    assert max(abs(a - b) for a, b in zip(_positions(cm), q, strict=True)) < 1e-3
+
+
+def test_r6bot_refuses_goals_it_cannot_run(r6bot):
+    sim, cm = r6bot
+    jtc = cm.controllers["joint_trajectory_controller"].controller
+    code, why = jtc.validate(JointTrajectory(0.0, (*R6_JOINTS[:5], "elbow"), (TrajectoryPoint(1.0, (0.0,) * 6),)))
+    assert code == -2 and "elbow" in why  # INVALID_JOINTS
+    code, why = jtc.validate(JointTrajectory(0.0, R6_JOINTS[:3], (TrajectoryPoint(1.0, (0.0,) * 3),)))
+    assert code == -2 and "allow_partial_joints_goal" in why
+    pts = (TrajectoryPoint(1.0, (0.0,) * 6), TrajectoryPoint(1.0, (0.1,) * 6))
+    code, why = jtc.validate(JointTrajectory(0.0, R6_JOINTS, pts))
+    assert code == -1 and "increase" in why
+
+
+# --------------------------------------------------------------------------- Panda
+def test_panda_loads_with_its_moveit_controllers_yaml_and_its_arm_jtc_moves(monkeypatch):
+    monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(PANDA))
+    sim = Simulation(default_world(), rtf=0)
+    entity = sim.spawn(load(PANDA_XACRO).value, name="panda")
+    cm = _manager(entity)
+    cm.files.append(load_params(PANDA_YAML))
+    assert [h.name for h in cm.hardware] == ["PandaFakeSystem", "PandaHandFakeSystem"]
+    for n in ("joint_state_broadcaster", "panda_arm_controller"):
+        cm.load_controller(n)
+        cm.configure_controller(n)
+    cm.switch_controller(["joint_state_broadcaster", "panda_arm_controller"], [])
+    sim.step(200)
+    # initial_value from initial_positions.yaml: panda_joint4 starts at -2.356 (not 0)
+    assert cm.hardware[0].joints["panda_joint4"].handle.position == pytest.approx(-2.356, abs=0.01)
+    jtc = cm.controllers["panda_arm_controller"].controller
+    names = tuple(f"panda_joint{i}" for i in range(1, 8))
+    target = (0.3, -0.5, 0.2, -2.0, 0.1, 1.8, 0.5)
+    goal = TrajectoryGoal(JointTrajectory(0.0, names, (TrajectoryPoint(2.0, target),)))
+    jtc.submit(goal)
+    _run(sim, goal)
+    assert goal.status == "succeeded", goal.error_string
+    q = [cm.hardware[0].joints[n].handle.position for n in names]
+    assert max(abs(a - b) for a, b in zip(q, target, strict=True)) < 0.01
+    # the hand's GripperActionController is a type this manager does not have: a clear error
+    with pytest.raises(ControlError, match="position_controllers/GripperActionController.*does not exist"):
+        cm.load_controller("panda_hand_controller")
+
+
+# --------------------------------------------------------------------------- bad input
+def test_unknown_types_missing_interfaces_and_unloaded_controllers_are_clear_errors():
+    sim = Simulation(default_world(), rtf=0)
+    cm = _manager(_diffbot(sim))
+    cm.files.append(
+        parse_params(
+            "x:\n  ros__parameters:\n    type: fancy_controllers/Fancy\n"
+            "arm:\n  ros__parameters:\n    type: joint_trajectory_controller/JointTrajectoryController\n"
+            "    joints: [left_wheel_joint]\n    command_interfaces: [effort]\n"
+        )
+    )
+    with pytest.raises(ControlError, match=r"'fancy_controllers/Fancy' of 'x' does not exist; the types are: .*"
+                       r"diff_drive_controller/DiffDriveController"):  # fmt: skip
+        cm.load_controller("x")
+    with pytest.raises(ControlError, match="type' of controller 'nothing' is not set"):
+        cm.load_controller("nothing")
+    cm.load_controller("arm")
+    with pytest.raises(ControlError, match=r"needs command interface\(s\) left_wheel_joint/effort"):
+        cm.configure_controller("arm")
+    with pytest.raises(ControlError, match="controller 'ghost' is not loaded"):
+        cm.switch_controller(["ghost"], [])
+    with pytest.raises(ControlError, match="'arm' is unconfigured; configure it first"):
+        cm.switch_controller(["arm"], [])
+    # the world kept running through all of it
+    sim.step(10)
+
+
+def test_a_ros2_control_joint_missing_from_the_urdf_fails_the_spawn_and_the_world_goes_on():
+    urdf = """<robot name="r"><link name="a"><inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1"
+      ixy="0" ixz="0" iyz="0"/></inertial></link>
+      <ros2_control name="hw" type="system"><hardware><plugin>mock_components/GenericSystem</plugin></hardware>
+      <joint name="ghost"><command_interface name="position"/><state_interface name="position"/></joint>
+      </ros2_control></robot>"""
+    model = load_string(urdf).value
+    sim = Simulation(default_world(), rtf=0)
+    # the description already dropped the joint with a warning (file:line); the manager runs with none
+    entity = sim.spawn(model, name="r")
+    assert _manager(entity).all_command_interfaces() == []
+    sim.step(10)
+
+
+def test_bad_parameter_files_in_the_plugin_tag_fail_the_spawn_with_the_reason(tmp_path):
+    bad = tmp_path / "c.yaml"
+    bad.write_text("controller_manager:\n  ros__parameters:\n    update_rate: {oops\n")
+    urdf = DIFFBOT_URDF.read_text().replace(
+        "</robot>",
+        f'<gazebo><plugin filename="libgazebo_ros2_control.so" name="gazebo_ros2_control">'
+        f"<parameters>{bad}</parameters></plugin></gazebo></robot>",
+    )
+    model = load_string(urdf, source=str(tmp_path / "robot.urdf")).value
+    sim = Simulation(default_world(), rtf=0)
+    with pytest.raises(Exception, match=r"c\.yaml:\d+: not valid YAML"):
+        sim.spawn(model, name="diffbot")
+    assert "diffbot" not in sim.world.entities
+    sim.step(10)
+
+
+def test_the_plugin_tag_names_the_manager_and_its_parameters(tmp_path):
+    cfg = tmp_path / "c.yaml"
+    cfg.write_text(
+        "my_cm:\n  ros__parameters:\n    update_rate: 50\n"
+        "    diffbot_base_controller:\n      type: diff_drive_controller/DiffDriveController\n"
+        f"diffbot_base_controller:\n  ros__parameters:\n{_diffbot_controller_body()}"
+    )
+    urdf = DIFFBOT_URDF.read_text().replace(
+        "</robot>",
+        '<gazebo><plugin filename="gz_ros2_control-system" name="gz_ros2_control::GazeboSimROS2ControlPlugin">'
+        f"<parameters>{cfg}</parameters><controller_manager_name>my_cm</controller_manager_name>"
+        "<ros><namespace>bot</namespace></ros></plugin></gazebo></robot>",
+    )
+    model = load_string(urdf, source=str(tmp_path / "robot.urdf")).value
+    sim = Simulation(default_world(), rtf=0)
+    cm = _manager(sim.spawn(model, name="diffbot", pose=Pose((0, 0, 0.05))))
+    assert (cm.node_name, cm.update_rate) == ("/bot/my_cm", 50)
+    cm.load_controller("diffbot_base_controller")
+    cm.configure_controller("diffbot_base_controller")
+    cm.switch_controller(["diffbot_base_controller"], [])
+    assert "/bot/diffbot_base_controller/cmd_vel" in {ep.topic for ep in sim.bus.endpoints()}
+    assert math.isclose(cm.controllers["diffbot_base_controller"].controller.radius, 0.015)  # type: ignore[attr-defined]
+
+
+def _diffbot_controller_body() -> str:
+    body = DIFFBOT_YAML.read_text().split("ros__parameters:", 2)[2]  # diffbot_base_controller's section
+    return body
