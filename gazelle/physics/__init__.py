@@ -13,6 +13,7 @@ from ._convex import prepare as prepare_meshes
 from ._handles import ActuatorHandle as ActuatorHandle
 from ._handles import ActuatorKind as ActuatorKind
 from ._handles import BodyHandle as BodyHandle
+from ._handles import JointGroup as JointGroup
 from ._handles import JointHandle as JointHandle
 from ._handles import PerGeneration as PerGeneration
 from ._render import OffscreenRenderer as OffscreenRenderer
@@ -39,6 +40,7 @@ __all__ = [
     "Entity",
     "EntityState",
     "ErrorKind",
+    "JointGroup",
     "JointHandle",
     "MAX_COORDINATE_M",
     "OffscreenRenderer",

@@ -104,6 +104,40 @@ class JointHandle:
         return f"JointHandle({self.entity!r}, {self.name!r})"
 
 
+class JointGroup:
+    """Several 1-dof joints of one entity, read together as numpy arrays (one indexing per quantity
+    instead of a lookup per joint): what a ros2_control hardware component reads every cycle.
+
+    Get one with :meth:`PhysicsWorld.joint_group`."""
+
+    __slots__ = ("world", "entity", "names", "_ids")
+
+    def __init__(self, world: PhysicsWorld, entity: str, names: tuple[str, ...]) -> None:
+        self.world = world
+        self.entity = entity
+        self.names = names
+        self._ids = PerGeneration(self._resolve)
+
+    def _resolve(self, world: PhysicsWorld) -> tuple[np.ndarray, np.ndarray]:
+        addresses = [world.joint_address(self.entity, n) for n in self.names]
+        return (
+            np.array([a[0] for a in addresses], dtype=np.intp),
+            np.array([a[1] for a in addresses], dtype=np.intp),
+        )
+
+    def positions(self) -> np.ndarray:
+        """Positions now, in :attr:`names` order."""
+        return self.world.data.qpos[self._ids.get(self.world)[0]]
+
+    def velocities(self) -> np.ndarray:
+        """Velocities now."""
+        return self.world.data.qvel[self._ids.get(self.world)[1]]
+
+    def efforts(self) -> np.ndarray:
+        """The actuators' forces on the joints in the last step."""
+        return self.world.data.qfrc_actuator[self._ids.get(self.world)[1]]
+
+
 class ActuatorHandle:
     """One actuator on a joint, added by :meth:`PhysicsWorld.add_actuator`; ``command`` sets its input.
 

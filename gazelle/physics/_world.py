@@ -20,7 +20,7 @@ import numpy as np
 from ..description import Light, Model, Pose, World, excerpt, quat_conj, quat_rotate, rotation_matrix
 from ._builder import JOINT_ARMATURE, SEP, BuildError, BuiltEntity, add_model, friction_priority, scoped
 from ._convex import cache_dir
-from ._handles import ActuatorHandle, ActuatorKind, BodyHandle, JointHandle
+from ._handles import ActuatorHandle, ActuatorKind, BodyHandle, JointGroup, JointHandle
 from ._render import OffscreenRenderer
 
 _log = logging.getLogger("gazelle.physics")
@@ -508,6 +508,10 @@ class PhysicsWorld:
             act.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
             act.forcerange = [max(force_limit[0], -1e30), min(force_limit[1], 1e30)]  # pyright: ignore[reportAttributeAccessIssue]
         return ActuatorHandle(JointHandle(self, entity.name, joint), kind, name)
+
+    def joint_group(self, entity: str, joints: tuple[str, ...]) -> JointGroup:
+        """A handle reading several 1-dof joints of an entity at once (see :class:`JointGroup`)."""
+        return JointGroup(self, entity, joints)
 
     def set_actuator_enabled(self, handle: ActuatorHandle, enabled: bool) -> None:
         """Switch an actuator on (its gains as added) or off (no force at all), as ros2_control's

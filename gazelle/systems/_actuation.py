@@ -160,13 +160,14 @@ class PositionServo:
         """Whether the integral term is on (else one command holds until the target changes)."""
         return self.gains.i_gain != 0.0
 
-    def update(self, target: float, sim_time_sec: float, velocity: float = 0.0) -> None:
+    def update(self, target: float, sim_time_sec: float, velocity: float = 0.0, measured: float | None = None) -> None:
         """Command ``target`` (moving at ``velocity``: the damping then acts on the velocity error,
         not on the velocity, so a moving target is followed without lag), integrating the position
-        error over the time since the last update."""
+        error over the time since the last update (``measured``: the joint's position, when the
+        caller has just read it)."""
         g = self.gains
         if self._last is not None and g.i_gain:
-            err = target - self.actuator.joint.position
+            err = target - (self.actuator.joint.position if measured is None else measured)
             self.integral = min(max(self.integral + g.i_gain * err * (sim_time_sec - self._last), g.i_min), g.i_max)
         self._last = sim_time_sec
         kp = max(g.p_gain, 1e-9)

@@ -53,34 +53,32 @@ class JointStateBroadcaster(Controller):
             groups[prefix].append(iface)
         self._groups = [(n, tuple(groups[n])) for n in names]
         mapped = {v: k for k, v in self._map.items()}
-        self._js_joints = [n for n, ifaces in self._groups if any(i in mapped for i in ifaces)]
-        self._js_keys = [
-            tuple(f"{n}/{self._map[f]}" if self._map[f] in dict(self._groups)[n] else "" for f in _JOINT_STATE_FIELDS)
-            for n in self._js_joints
+        self._js_joints = tuple(n for n, ifaces in self._groups if any(i in mapped for i in ifaces))
+        have = dict(self._groups)
+        # per JointState field: the state keys in joint order ("" where a joint lacks that interface)
+        self._columns = [
+            [f"{n}/{self._map[f]}" if self._map[f] in have[n] else "" for n in self._js_joints]
+            for f in _JOINT_STATE_FIELDS
         ]
+        self._djs_keys = [[f"{n}/{i}" for i in ifaces] for n, ifaces in self._groups]
 
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
         if self._js.wanted:
-            cols: list[list[float]] = [[], [], []]
-            for keys in self._js_keys:
-                for c, key in enumerate(keys):
-                    cols[c].append(states[key] if key else math.nan)
-            extra = len(self._extra)
-            self._js.publish(
-                JointStates(
-                    t,
-                    tuple(self._js_joints) + tuple(self._extra),
-                    tuple(cols[0]) + (0.0,) * extra,
-                    tuple(cols[1]) + (0.0,) * extra,
-                    tuple(cols[2]) + (0.0,) * extra,
-                )
-            )
+            nan = math.nan
+            pos, vel, eff = (tuple(states[k] if k else nan for k in col) for col in self._columns)
+            if self._extra:
+                zeros = (0.0,) * len(self._extra)
+                pos, vel, eff = pos + zeros, vel + zeros, eff + zeros
+            self._js.publish(JointStates(t, self._js_joints + tuple(self._extra), pos, vel, eff))
         if self._djs.wanted:
             self._djs.publish(
                 DynamicJointState(
                     t,
                     tuple(n for n, _ in self._groups),
-                    tuple((ifaces, tuple(states[f"{n}/{i}"] for i in ifaces)) for n, ifaces in self._groups),
+                    tuple(
+                        (ifaces, tuple(states[k] for k in keys))
+                        for (_, ifaces), keys in zip(self._groups, self._djs_keys, strict=True)
+                    ),
                 )
             )
 

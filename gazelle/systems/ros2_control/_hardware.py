@@ -41,6 +41,7 @@ from .._actuation import (
 )
 
 JOINT_INTERFACES = ("position", "velocity", "effort")
+_UNLIMITED = (-math.inf, math.inf)
 """The joint interfaces simulated (ros2_control's hardware_interface::HW_IF_*)."""
 
 POSITION_BANDWIDTH_HZ = 25.0
@@ -74,6 +75,8 @@ class _Joint:
     """``initial_value`` of the position state interface, applied by :meth:`SimHardware.start`."""
     last_target: tuple[float, float] | None = None
     """(position target, sim time) last sent in position mode."""
+    keys: dict[str, str] = field(default_factory=dict)
+    """Interface -> ``joint/interface`` (made once: the cycle runs at up to 1 kHz)."""
 
 
 class SimHardware:
@@ -122,6 +125,7 @@ class SimHardware:
                     "only revolute, continuous and prismatic joints have interfaces"
                 )
             joint = _Joint(comp.name, world.joint(entity.name, comp.name))
+            joint.keys = {k: f"{comp.name}/{k}" for k in JOINT_INTERFACES}
             for ci in comp.command_interfaces:
                 kind = ci.name
                 if kind not in JOINT_INTERFACES:
@@ -152,6 +156,14 @@ class SimHardware:
                 act = joint.commands["position"]
                 joint.position = PositionServo(act, self._position_gains(world, model, comp.name))
             self.joints[comp.name] = joint
+        names = tuple(self.joints)
+        self._group = world.joint_group(entity.name, names)
+        self._read_plan: list[tuple[str, list[int], list[str], bool]] = []
+        """Per interface kind read: (kind, joint indices, state keys, whether every joint has it)."""
+        for kind in JOINT_INTERFACES:
+            idx = [i for i, n in enumerate(names) if f"{n}/{kind}" in self.states]
+            if idx:
+                self._read_plan.append((kind, idx, [f"{names[i]}/{kind}" for i in idx], len(idx) == len(names)))
         wheels = list(self._velocity_servos_wheels)
         if len(wheels) >= 2:
             casters = ball_casters(model, wheels)
@@ -253,39 +265,45 @@ class SimHardware:
         return list(self.states)
 
     def read(self) -> None:
-        """Fill :attr:`states` from the joints."""
-        states = self.states
-        for name, joint in self.joints.items():
-            h = joint.handle
-            if f"{name}/position" in states:
-                states[f"{name}/position"] = h.position
-            if f"{name}/velocity" in states:
-                states[f"{name}/velocity"] = h.velocity
-            if f"{name}/effort" in states:
-                states[f"{name}/effort"] = h.effort
+        """Fill :attr:`states` from the joints (one array read per interface kind)."""
+        states, group = self.states, self._group
+        for kind, idx, keys, every in self._read_plan:
+            arr = (
+                group.positions()
+                if kind == "position"
+                else group.velocities()
+                if kind == "velocity"
+                else group.efforts()
+            )
+            values = arr.tolist() if every else arr[idx].tolist()
+            states.update(zip(keys, values))
 
     def write(self, sim_time_sec: float) -> None:
         """Send each joint's command in its active mode (clamped to the interface's min/max); hold the others."""
         if self.state != "active":
             return
-        for name, joint in self.joints.items():
+        commands = self.commands
+        for joint in self.joints.values():
             mode = joint.mode
             if joint.mimic is not None and mode is None and joint.mimic[0] in self.joints:
                 leader = self.joints[joint.mimic[0]]
                 if leader.mode == "position" and "position" in joint.commands:
-                    target = self.commands.get(f"{leader.name}/position", math.nan)
+                    target = commands.get(leader.keys["position"], math.nan)
                     if math.isfinite(target):
                         self._drive_position(joint, joint.mimic[1] * target + joint.mimic[2], sim_time_sec)
                         continue
             if mode is None:
                 self._hold(joint, sim_time_sec)
                 continue
-            value = self.commands.get(f"{name}/{mode}", math.nan)
-            if not math.isfinite(value):
+            value = commands.get(joint.keys[mode], math.nan)
+            if value != value or value in (math.inf, -math.inf):  # NaN or infinite: nothing commanded
                 self._hold(joint, sim_time_sec)
                 continue
-            lo, hi = joint.limits.get(mode, (-math.inf, math.inf))
-            value = min(max(value, lo), hi)
+            lo, hi = joint.limits.get(mode, _UNLIMITED)
+            if value < lo:
+                value = lo
+            elif value > hi:
+                value = hi
             if mode == "position":
                 self._drive_position(joint, value, sim_time_sec)
             elif mode == "velocity":
@@ -295,17 +313,21 @@ class SimHardware:
                 joint.commands["effort"].command(value)
 
     def _drive_position(self, joint: _Joint, target: float, sim_time_sec: float) -> None:
-        assert joint.position is not None
-        self._enable_only(joint, "position")
+        servo = joint.position
+        assert servo is not None
+        if joint.enabled != "position":
+            self._enable_only(joint, "position")
         # the target's own speed (the velocity interface when claimed too, else from the last target)
         # is the servo's velocity reference, as a real servo fed a trajectory has one
-        velocity = self.commands.get(f"{joint.name}/velocity", math.nan) if joint.mode == "position" else math.nan
-        if not math.isfinite(velocity):
+        velocity = self.commands.get(joint.keys["velocity"], math.nan) if joint.mode == "position" else math.nan
+        if velocity != velocity:
             last = joint.last_target
-            dt = sim_time_sec - last[1] if last is not None else 0.0
-            velocity = (target - last[0]) / dt if last is not None and dt > 0 else 0.0
+            if last is not None and sim_time_sec > last[1]:
+                velocity = (target - last[0]) / (sim_time_sec - last[1])
+            else:
+                velocity = 0.0
         joint.last_target = (target, sim_time_sec)
-        joint.position.update(target, sim_time_sec, velocity)
+        servo.update(target, sim_time_sec, velocity, self.states.get(joint.keys["position"]))
         joint.hold = target
 
     def _hold(self, joint: _Joint, sim_time_sec: float) -> None:

@@ -170,8 +170,10 @@ class JointTrajectoryController(Controller):
         self._incoming: tuple[JointTrajectory, TrajectoryGoal | None] | None = None
         self._lock = threading.Lock()
         self._hold: list[float] | None = None
-        self.last_state: TrajectoryControllerState | None = None
-        """The reference, feedback and error of the last cycle while a goal runs (the action's feedback)."""
+        self._last: tuple | None = None
+        self._pos_keys = [f"{j}/position" for j in self.joints]
+        self._vel_keys = [f"{j}/velocity" for j in self.joints]
+        self._out_keys = [f"{j}/{self.cmd_kinds[0]}" for j in self.joints]
         self.subscribe("~/joint_trajectory", MsgType.JOINT_TRAJECTORY, lambda m: self._queue(m, None))
         self._state_pub = self.advertise("~/controller_state", MsgType.TRAJECTORY_CONTROLLER_STATE)
         self.action_name = self.topic("~/follow_joint_trajectory")
@@ -284,8 +286,8 @@ class JointTrajectoryController(Controller):
 
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
         joints = self.joints
-        actual = [states[f"{j}/position"] for j in joints]
-        actual_v = [states.get(f"{j}/velocity", 0.0) for j in joints]
+        actual = [states[k] for k in self._pos_keys]
+        actual_v = [states.get(k, 0.0) for k in self._vel_keys]
         with self._lock:
             incoming, self._incoming = self._incoming, None
         if incoming is not None:
@@ -307,19 +309,36 @@ class JointTrajectoryController(Controller):
             self._check(traj, t, err_p, err_v, actual)
         elif traj is not None and t >= traj.times[-1]:
             self._traj = None  # a topic trajectory ran out: hold its last point
-        wanted = self._state_pub.wanted
-        if wanted or (traj is not None and traj.goal is not None):
-            state = TrajectoryControllerState(
-                t,
-                tuple(joints),
-                TrajectoryPoint(0.0, tuple(des_p), tuple(des_v), tuple(des_a)),
-                TrajectoryPoint(0.0, tuple(actual), tuple(actual_v)),
-                TrajectoryPoint(0.0, tuple(err_p), tuple(err_v)),
-                TrajectoryPoint(0.0, tuple(commands.get(f"{j}/{self.cmd_kinds[0]}", math.nan) for j in joints)),
-            )
-            self.last_state = state
-            if wanted:
-                self._state_pub.publish(state)
+        if self._state_pub.wanted:
+            self._state_pub.publish(self._state(t, des_p, des_v, des_a, actual, actual_v, err_p, err_v, commands))
+        self._last = (t, des_p, des_v, des_a, actual, actual_v, err_p, err_v, commands)
+
+    @property
+    def last_state(self) -> TrajectoryControllerState | None:
+        """The reference, feedback and error of the last cycle (what the action's feedback reports)."""
+        last = self._last
+        return self._state(*last) if last is not None else None
+
+    def _state(
+        self,
+        t: float,
+        des_p: list[float],
+        des_v: list[float],
+        des_a: list[float],
+        actual: list[float],
+        actual_v: list[float],
+        err_p: list[float],
+        err_v: list[float],
+        commands: dict[str, float],
+    ) -> TrajectoryControllerState:
+        return TrajectoryControllerState(
+            t,
+            tuple(self.joints),
+            TrajectoryPoint(0.0, tuple(des_p), tuple(des_v), tuple(des_a)),
+            TrajectoryPoint(0.0, tuple(actual), tuple(actual_v)),
+            TrajectoryPoint(0.0, tuple(err_p), tuple(err_v)),
+            TrajectoryPoint(0.0, tuple(commands.get(k, math.nan) for k in self._out_keys)),
+        )
 
     def _write(
         self,

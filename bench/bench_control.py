@@ -1,0 +1,123 @@
+#!/usr/bin/env python3
+"""ros2_control's cost, as ratios measured in one run (issue 13's target).
+
+r6bot (ros2_control_demos example 7) following a looping joint trajectory under
+joint_trajectory_controller at a 1 kHz ``update_rate`` (with joint_state_broadcaster at 1 kHz,
+listened to), against the same robot with no controllers:
+
+* "no ros2_control": its ``<ros2_control>`` block taken out, so no manager runs and the joints hang
+  limp (the issue's baseline);
+* "manager, no controller": the manager running its 1 kHz cycle with nothing loaded (the joints held).
+
+Goal: RTF under JTC at least 0.8 of the no-controller RTF. Every system runs in-process on
+``sim.step`` (``rtf`` 0).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+import os
+import sys
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))
+sys.path.insert(0, str(REPO / "tests"))
+
+from _paths import REAL  # noqa: E402
+
+R6BOT = REAL / "ros2_control_r6bot"
+URDF = R6BOT / "_xacro_expanded" / "r6bot.urdf"
+JOINTS = tuple(f"joint_{i}" for i in range(1, 7))
+YAML = """
+controller_manager:
+  ros__parameters:
+    update_rate: 1000
+jsb:
+  ros__parameters:
+    type: joint_state_broadcaster/JointStateBroadcaster
+jtc:
+  ros__parameters:
+    type: joint_trajectory_controller/JointTrajectoryController
+    joints: [joint_1, joint_2, joint_3, joint_4, joint_5, joint_6]
+    command_interfaces: [position]
+    state_interfaces: [position, velocity]
+"""
+
+
+def make(kind: str):
+    from gazelle.description import load
+    from gazelle.sim import Simulation
+    from gazelle.systems.ros2_control import ControllerManager, parse_params
+    from gazelle.worlds import default_world
+
+    model = load(URDF).value
+    if kind == "none":
+        model = dataclasses.replace(model, ros2_control=())
+    sim = Simulation(default_world(), rtf=0)
+    entity = sim.spawn(model, name="r6bot")
+    if kind == "none":
+        return sim, None
+    cm = next(s for s in entity.systems if isinstance(s, ControllerManager))
+    cm.files.append(parse_params(YAML))
+    cm.update_rate = 1000
+    if kind == "jtc":
+        for name in ("jsb", "jtc"):
+            cm.load_controller(name)
+            cm.configure_controller(name)
+        cm.switch_controller(["jsb", "jtc"], [])
+        for ep in sim.bus.endpoints():
+            if ep.topic == "/joint_states":
+                ep.add_sink(lambda _m: None)  # listened to: every message is built
+        return sim, cm.controllers["jtc"].controller
+    return sim, None
+
+
+def trajectory(start: float):
+    from gazelle.systems import JointTrajectory, TrajectoryPoint
+
+    points = tuple(
+        TrajectoryPoint(0.1 * k, tuple(0.5 * math.sin(0.1 * k * (1 + 0.2 * i)) for i in range(6)))
+        for k in range(1, 101)
+    )
+    return JointTrajectory(start, JOINTS, points)
+
+
+def rtf_of(kind: str, seconds: float) -> float:
+    sim, jtc = make(kind)
+    sim.step(200)
+    best = 0.0
+    for _ in range(3):
+        if jtc is not None:
+            from gazelle.systems.ros2_control import TrajectoryGoal
+
+            jtc.submit(TrajectoryGoal(trajectory(0.0)))
+        n = round(seconds / sim.world.timestep)
+        t0 = time.perf_counter()
+        sim.step(n)
+        best = max(best, seconds / (time.perf_counter() - t0))
+    return best
+
+
+def main() -> int:
+    logging.disable(logging.WARNING)
+    os.environ["GAZELLE_RESOURCE_PATH"] = str(R6BOT)
+    seconds = 5.0
+    none = rtf_of("none", seconds)
+    idle = rtf_of("idle", seconds)
+    jtc = rtf_of("jtc", seconds)
+    print("r6bot, 1 ms physics steps, best of 3 runs of 5 sim-seconds each")
+    print(f"{'case':58s} {'RTF':>8s}")
+    print(f"{'no ros2_control (joints limp)':58s} {none:7.1f}x")
+    print(f"{'controller manager at 1 kHz, no controller (joints held)':58s} {idle:7.1f}x")
+    print(f"{'JTC + joint_state_broadcaster at 1 kHz, following a path':58s} {jtc:7.1f}x")
+    print(f"ratio JTC / no ros2_control: {jtc / none:.2f} (goal >= 0.8)")
+    print(f"ratio JTC / manager without controllers: {jtc / idle:.2f}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
