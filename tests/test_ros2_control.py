@@ -3,17 +3,19 @@ controllers, on real robots' files (ros2_control_demos' diffbot and r6bot, MoveI
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import pytest
 from _paths import REAL, REPO
 
-from gazelle.description import Pose, load, load_string
+from gazelle.description import Joint, JointType, Pose, load, load_string
 from gazelle.sim import Simulation
 from gazelle.systems import Float64Array, JointTrajectory, MsgType, TrajectoryPoint, Twist, TwistStamped
 from gazelle.systems.ros2_control import (
     ControlError,
     ControllerManager,
+    GripperGoal,
     ParamsError,
     TrajectoryGoal,
     goal_tolerances,
@@ -266,7 +268,11 @@ def test_r6bot_refuses_goals_it_cannot_run(r6bot):
 def test_panda_loads_with_its_moveit_controllers_yaml_and_its_arm_jtc_moves(monkeypatch):
     monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(PANDA))
     sim = Simulation(default_world(), rtf=0)
-    entity = sim.spawn(load(PANDA_XACRO).value, name="panda")
+    model = load(PANDA_XACRO).value
+    # bolted to the world as MoveIt's virtual_joint says (its URDF alone is a free-standing arm that
+    # topples, as in Gazebo without a world joint)
+    bolt = Joint("virtual_joint", JointType.FIXED, "world", "panda_link0")
+    entity = sim.spawn(dataclasses.replace(model, joints=(bolt, *model.joints)), name="panda")
     cm = _manager(entity)
     cm.files.append(load_params(PANDA_YAML))
     assert [h.name for h in cm.hardware] == ["PandaFakeSystem", "PandaHandFakeSystem"]
@@ -279,16 +285,29 @@ def test_panda_loads_with_its_moveit_controllers_yaml_and_its_arm_jtc_moves(monk
     assert cm.hardware[0].joints["panda_joint4"].handle.position == pytest.approx(-2.356, abs=0.01)
     jtc = cm.controllers["panda_arm_controller"].controller
     names = tuple(f"panda_joint{i}" for i in range(1, 8))
-    target = (0.3, -0.5, 0.2, -2.0, 0.1, 1.8, 0.5)
+    target = (0.3, -0.6, 0.2, -2.2, 0.1, 1.7, 0.9)
     goal = TrajectoryGoal(JointTrajectory(0.0, names, (TrajectoryPoint(2.0, target),)))
     jtc.submit(goal)
     _run(sim, goal)
     assert goal.status == "succeeded", goal.error_string
     q = [cm.hardware[0].joints[n].handle.position for n in names]
     assert max(abs(a - b) for a, b in zip(q, target, strict=True)) < 0.01
-    # the hand's GripperActionController is a type this manager does not have: a clear error
-    with pytest.raises(ControlError, match="position_controllers/GripperActionController.*does not exist"):
-        cm.load_controller("panda_hand_controller")
+    assert sim.world.entity_state("panda", "panda_hand").pose.position[2] > 0.3  # upright, off the floor
+    # the hand: position_controllers/GripperActionController on panda_finger_joint1; finger 2 follows
+    # it through its URDF <mimic> (it has state interfaces only)
+    cm.load_controller("panda_hand_controller")
+    cm.configure_controller("panda_hand_controller")
+    cm.switch_controller(["panda_hand_controller"], [])
+    hand = cm.controllers["panda_hand_controller"].controller
+    grip = GripperGoal(0.03)
+    hand.submit(grip)  # type: ignore[attr-defined]
+    t0 = sim.world.time
+    while not grip.done.is_set() and sim.world.time < t0 + 5:
+        sim.step(10)
+    assert grip.status == "succeeded" and grip.reached_goal and not grip.stalled  # within goal_tolerance 0.01
+    sim.step(1000)  # and it settles at the goal
+    fingers = [cm.hardware[1].joints[f"panda_finger_joint{i}"].handle.position for i in (1, 2)]
+    assert fingers[0] == pytest.approx(0.03, abs=1e-3) and fingers[1] == pytest.approx(fingers[0], abs=1e-3)
 
 
 # --------------------------------------------------------------------------- bad input
@@ -375,3 +394,24 @@ def test_the_plugin_tag_names_the_manager_and_its_parameters(tmp_path):
 def _diffbot_controller_body() -> str:
     body = DIFFBOT_YAML.read_text().split("ros__parameters:", 2)[2]  # diffbot_base_controller's section
     return body
+
+
+def test_a_urdf_mimic_joint_follows_its_leader():
+    inertial = (
+        '<inertial><mass value="0.1"/><inertia ixx="1e-4" iyy="1e-4" izz="1e-4" ixy="0" ixz="0" iyz="0"/></inertial>'
+    )
+    urdf = f"""<robot name="g"><link name="world"/><link name="base">{inertial}</link>
+      <link name="a">{inertial}</link><link name="b">{inertial}</link>
+      <joint name="fix" type="fixed"><parent link="world"/><child link="base"/></joint>
+      <joint name="j1" type="prismatic"><parent link="base"/><child link="a"/><axis xyz="1 0 0"/>
+        <limit lower="-1" upper="1" effort="10" velocity="1"/></joint>
+      <joint name="j2" type="prismatic"><parent link="base"/><child link="b"/><axis xyz="1 0 0"/>
+        <limit lower="-1" upper="1" effort="10" velocity="1"/><mimic joint="j1" multiplier="-2" offset="0.01"/></joint>
+    </robot>"""
+    sim = Simulation(default_world(), rtf=0)
+    sim.spawn(load_string(urdf).value, name="g")
+    sim.world.set_joint_state("g", "j1", position=0.02)
+    sim.step(300)
+    j1, j2 = sim.world.joint("g", "j1").position, sim.world.joint("g", "j2").position
+    assert j2 == pytest.approx(0.01 - 2 * j1, abs=1e-4)
+    assert abs(j1) > 1e-3  # the pair moved together rather than the follower snapping alone

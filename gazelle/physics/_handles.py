@@ -100,6 +100,17 @@ class JointHandle:
         """The actuators' force or torque on the joint in the last step: the ``effort`` state interface."""
         return float(self.world.data.qfrc_actuator[self._ids.get(self.world).dof])
 
+    @property
+    def inertia(self) -> float:
+        """The joint's effective inertia now (kg·m² or kg): its diagonal entry of the mass matrix, with
+        everything it carries and its armature (as of the last step)."""
+        world = self.world
+        dof = self._ids.get(world).dof
+        m = world.model
+        start, count = int(m.M_rowadr[dof]), int(m.M_rownnz[dof])  # the mass matrix's CSR row
+        cols = m.M_colind[start : start + count]
+        return float(world.data.M[start + int(np.flatnonzero(cols == dof)[0])])
+
     def __repr__(self) -> str:
         return f"JointHandle({self.entity!r}, {self.name!r})"
 
@@ -158,6 +169,10 @@ class ActuatorHandle:
         """Set the actuator's input: a position, a velocity or an effort, by :attr:`kind`."""
         world = self.joint.world
         world.data.ctrl[self._id.get(world)] = value
+
+    def set_gains(self, kp: float, kv: float) -> None:
+        """Change the servo gains; see :meth:`PhysicsWorld.set_actuator_gains`."""
+        self.joint.world.set_actuator_gains(self, kp, kv)
 
     def set_enabled(self, enabled: bool) -> None:
         """Switch the actuator on (its gains) or off (no force); see :meth:`PhysicsWorld.set_actuator_enabled`."""

@@ -513,6 +513,26 @@ class PhysicsWorld:
         """A handle reading several 1-dof joints of an entity at once (see :class:`JointGroup`)."""
         return JointGroup(self, entity, joints)
 
+    def set_actuator_gains(self, handle: ActuatorHandle, kp: float, kv: float) -> None:
+        """Change a position (``kp``, ``kv``) or velocity (``kv``) actuator's gains, e.g. once the
+        joint's inertia is known; kept in the model description, and applied when the actuator is on."""
+        act = self.spec.actuator(handle.name)
+        if act is None:
+            raise WorldError(ErrorKind.NOT_FOUND, f"no actuator '{handle.name}'")
+        gain, bias = np.array(act.gainprm), np.array(act.biasprm)
+        saved = self._actuator_gains.get(handle.name)
+        if saved is not None:
+            gain, bias = saved[0].copy(), saved[1].copy()
+        if handle.kind is ActuatorKind.POSITION:
+            gain[0], bias[1], bias[2] = kp, -kp, -kv
+        elif handle.kind is ActuatorKind.VELOCITY:
+            gain[0], bias[2] = kv, -kv
+        else:
+            return
+        enabled = saved is None or bool(np.any(np.array(act.gainprm)))
+        self._actuator_gains[handle.name] = (gain, bias)
+        self.set_actuator_enabled(handle, enabled)
+
     def set_actuator_enabled(self, handle: ActuatorHandle, enabled: bool) -> None:
         """Switch an actuator on (its gains as added) or off (no force at all), as ros2_control's
         command mode switch does between a joint's position, velocity and effort interfaces.

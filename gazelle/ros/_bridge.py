@@ -364,7 +364,7 @@ class SimulationNode(Node):
 
     def component_added(self, owner: str, component: Any) -> None:
         """A controller manager gets its node; a trajectory controller its action server."""
-        from ..systems.ros2_control import ControllerManager, JointTrajectoryController
+        from ..systems.ros2_control import ControllerManager, GripperActionController, JointTrajectoryController
         from ._control import ControllerManagerNode
 
         if isinstance(component, ControllerManager):
@@ -376,11 +376,11 @@ class SimulationNode(Node):
                     self._pending_nodes.append(node)
             if executor is not None:
                 executor.add_node(node)
-        elif isinstance(component, JointTrajectoryController):
+        elif isinstance(component, (JointTrajectoryController, GripperActionController)):
             with self._lock:
                 node = self._managers.get(owner)
             if node is not None:
-                node.add_trajectory_action(component)
+                node.add_controller_action(component)
 
     def manager_nodes(self) -> list[Any]:
         """The controller managers' nodes."""
@@ -389,7 +389,7 @@ class SimulationNode(Node):
 
     def component_removed(self, component: Any) -> None:
         """Undo :meth:`component_added`."""
-        from ..systems.ros2_control import ControllerManager, JointTrajectoryController
+        from ..systems.ros2_control import ControllerManager, GripperActionController, JointTrajectoryController
 
         if isinstance(component, ControllerManager):
             with self._lock:
@@ -402,11 +402,11 @@ class SimulationNode(Node):
                 if executor is not None:
                     executor.remove_node(node)
                 node.destroy_node()
-        elif isinstance(component, JointTrajectoryController):
+        elif isinstance(component, (JointTrajectoryController, GripperActionController)):
             with self._lock:
                 nodes = list(self._managers.values())
             for node in nodes:
-                node.remove_trajectory_action(component)
+                node.remove_controller_action(component)
 
     def endpoint_removed(self, ep: Endpoint) -> None:
         """Undo :meth:`endpoint_added` (the rclpy publisher goes when its last user goes)."""

@@ -16,7 +16,7 @@ import logging
 import threading
 from typing import Any
 
-from control_msgs.action import FollowJointTrajectory
+from control_msgs.action import FollowJointTrajectory, GripperCommand
 from controller_manager_msgs.msg import ControllerState, HardwareComponentState, HardwareInterface
 from controller_manager_msgs.srv import (
     CleanupController,
@@ -44,6 +44,8 @@ from ..systems.ros2_control import (
     UNCONFIGURED,
     ControlError,
     ControllerManager,
+    GripperActionController,
+    GripperGoal,
     JointTrajectoryController,
     TrajectoryGoal,
     goal_tolerances,
@@ -243,27 +245,64 @@ class ControllerManagerNode(Node):
         res.state = _state(state)
         return res
 
-    # ------------------------------------------------------------------ trajectory actions
-    def add_trajectory_action(self, jtc: JointTrajectoryController) -> None:
-        """Serve ``<controller>/follow_joint_trajectory`` for ``jtc``."""
-        server = ActionServer(
-            self,
-            FollowJointTrajectory,
-            jtc.action_name,
-            execute_callback=lambda handle: self._execute(jtc, handle),
-            goal_callback=lambda goal: self._accept(jtc, goal),
-            cancel_callback=lambda _handle: CancelResponse.ACCEPT,
-            callback_group=self._cb,
-        )
+    # ------------------------------------------------------------------ controllers' actions
+    def add_controller_action(self, controller: JointTrajectoryController | GripperActionController) -> None:
+        """Serve a controller's action: ``follow_joint_trajectory`` of a JTC, ``gripper_cmd`` of a gripper."""
+        if isinstance(controller, JointTrajectoryController):
+            jtc = controller
+            server = ActionServer(
+                self,
+                FollowJointTrajectory,
+                jtc.action_name,
+                execute_callback=lambda handle: self._execute(jtc, handle),
+                goal_callback=lambda goal: self._accept(jtc, goal),
+                cancel_callback=lambda _handle: CancelResponse.ACCEPT,
+                callback_group=self._cb,
+            )
+        else:
+            gripper = controller
+            server = ActionServer(
+                self,
+                GripperCommand,
+                gripper.action_name,
+                execute_callback=lambda handle: self._execute_gripper(gripper, handle),
+                goal_callback=lambda _goal: GoalResponse.ACCEPT if gripper.state == ACTIVE else GoalResponse.REJECT,
+                cancel_callback=lambda _handle: CancelResponse.ACCEPT,
+                callback_group=self._cb,
+            )
         with self._lock:
-            self._actions[id(jtc)] = server
+            self._actions[id(controller)] = server
 
-    def remove_trajectory_action(self, jtc: JointTrajectoryController) -> None:
-        """Stop serving ``jtc``'s action (the controller was cleaned up or unloaded)."""
+    def remove_controller_action(self, controller: Any) -> None:
+        """Stop serving a controller's action (it was cleaned up or unloaded)."""
         with self._lock:
-            server = self._actions.pop(id(jtc), None)
+            server = self._actions.pop(id(controller), None)
         if server is not None:
             server.destroy()
+
+    def _execute_gripper(self, gripper: GripperActionController, handle: Any) -> Any:
+        cmd = handle.request.command
+        goal = GripperGoal(float(cmd.position), float(cmd.max_effort))
+        self.sim.call(lambda: gripper.submit(goal))
+        while not goal.done.wait(ACTION_MONITOR_SEC):
+            if handle.is_cancel_requested:
+                self.sim.call(lambda: gripper.cancel(goal))
+                break
+            if not handle.is_active:
+                break
+            q, effort = goal.feedback
+            handle.publish_feedback(
+                GripperCommand.Feedback(position=q, effort=effort, stalled=goal.stalled, reached_goal=goal.reached_goal)
+            )
+        q, effort = goal.feedback
+        result = GripperCommand.Result(position=q, effort=effort, stalled=goal.stalled, reached_goal=goal.reached_goal)
+        if goal.status == "succeeded":
+            handle.succeed()
+        elif goal.status == "canceled" and handle.is_cancel_requested:
+            handle.canceled()
+        else:
+            handle.abort()
+        return result
 
     def _accept(self, jtc: JointTrajectoryController, goal: Any) -> GoalResponse:
         traj = from_joint_trajectory_msg(goal.trajectory)

@@ -7,6 +7,8 @@ from ._controller import FINALIZED as FINALIZED
 from ._controller import INACTIVE as INACTIVE
 from ._controller import UNCONFIGURED as UNCONFIGURED
 from ._controller import Controller as Controller
+from ._gripper import GripperActionController as GripperActionController
+from ._gripper import GripperGoal as GripperGoal
 from ._hardware import ControlError as ControlError
 from ._hardware import SimHardware as SimHardware
 from ._manager import BEST_EFFORT as BEST_EFFORT
@@ -33,6 +35,8 @@ __all__ = [
     "ControlError",
     "Controller",
     "ControllerManager",
+    "GripperActionController",
+    "GripperGoal",
     "JointTrajectoryController",
     "ParamsError",
     "ParamsFile",

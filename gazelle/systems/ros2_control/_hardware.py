@@ -23,6 +23,7 @@ and drives them at 13 rad/s).
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import math
 from dataclasses import dataclass, field
@@ -227,21 +228,11 @@ class SimHardware:
 
     @staticmethod
     def _position_gains(world: PhysicsWorld, model, joint: str) -> PidGains:
-        inertia = wheel_inertia_about_axis(model, joint, world.armature)
-        omega = min(2.0 * math.pi * POSITION_BANDWIDTH_HZ, 0.2 / world.timestep)
-        kp = inertia * omega * omega
-        kv = 2.0 * math.sqrt(kp * inertia)
+        """Gains until the joint's inertia is known (:meth:`start`): from its child link alone."""
         eff = joint_effort_limit(model, joint)
         imax = eff if math.isfinite(eff) else 1e6
-        return PidGains(
-            p_gain=kp,
-            i_gain=kp / POSITION_INTEGRAL_SEC,
-            d_gain=kv,
-            i_max=imax,
-            i_min=-imax,
-            cmd_max=imax,
-            cmd_min=-imax,
-        )
+        base = PidGains(i_max=imax, i_min=-imax, cmd_max=imax, cmd_min=-imax)
+        return _gains_for(wheel_inertia_about_axis(model, joint, world.armature), world.timestep, base)
 
     # ------------------------------------------------------------------ after the spawn
     def start(self) -> None:
@@ -253,6 +244,12 @@ class SimHardware:
         for joint in self.joints.values():
             if joint.initial is not None:
                 self.world.set_joint_state(self.entity, joint.name, position=joint.initial, velocity=0.0)
+        for joint in self.joints.values():
+            if joint.position is not None:
+                # now the joint's real inertia is known (with all it carries): the servo's gains from it
+                gains = _gains_for(joint.handle.inertia, self.world.timestep, joint.position.gains)
+                joint.position.gains = gains
+                joint.commands["position"].set_gains(gains.p_gain, gains.d_gain)
             if joint.mode is None:
                 self._set_mode(joint, None)
 
@@ -376,6 +373,15 @@ class SimHardware:
                 self._set_mode(joint, mode)
                 if mode is not None:
                     self.commands[f"{name}/{mode}"] = math.nan
+
+
+def _gains_for(inertia: float, timestep: float, base: PidGains) -> PidGains:
+    """A critically damped servo of :data:`POSITION_BANDWIDTH_HZ` (at most 0.2/dt rad/s) on ``inertia``,
+    with the integral time :data:`POSITION_INTEGRAL_SEC`; force limits from ``base``."""
+    inertia = max(inertia, 1e-6)
+    omega = min(2.0 * math.pi * POSITION_BANDWIDTH_HZ, 0.2 / timestep)
+    kp = inertia * omega * omega
+    return dataclasses.replace(base, p_gain=kp, i_gain=kp / POSITION_INTEGRAL_SEC, d_gain=2.0 * math.sqrt(kp * inertia))
 
 
 def _float(text: str | None, default: float) -> float:

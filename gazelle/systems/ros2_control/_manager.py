@@ -34,6 +34,7 @@ from ._broadcasters import (
 )
 from ._controller import ACTIVE, FINALIZED, INACTIVE, UNCONFIGURED, Controller, ControllerContext
 from ._diff_drive import DiffDriveController
+from ._gripper import EffortGripperActionController, GripperActionController
 from ._hardware import ControlError, SimHardware
 from ._params import Params, ParamsError, ParamsFile, load_params
 from ._trajectory import JointTrajectoryController
@@ -48,6 +49,8 @@ CONTROLLER_TYPES: dict[str, type[Controller]] = {
         JointGroupPositionController,
         JointGroupVelocityController,
         JointGroupEffortController,
+        GripperActionController,
+        EffortGripperActionController,
     )
 }
 """Controller types this manager can load, by their ``package/Class`` name."""
