@@ -415,3 +415,81 @@ def test_a_urdf_mimic_joint_follows_its_leader():
     j1, j2 = sim.world.joint("g", "j1").position, sim.world.joint("g", "j2").position
     assert j2 == pytest.approx(0.01 - 2 * j1, abs=1e-4)
     assert abs(j1) > 1e-3  # the pair moved together rather than the follower snapping alone
+
+
+def test_humble_style_unstamped_cmd_vel_and_a_hardware_component_switched_off():
+    sim = Simulation(default_world(), rtf=0)
+    cm = _manager(_diffbot(sim))
+    cm.files.append(parse_params("diffbot_base_controller:\n  ros__parameters:\n    use_stamped_vel: false\n"))
+    _start(cm, DIFFBOT_YAML, "diffbot_base_controller")  # the diffbot YAML, plus Humble's use_stamped_vel
+    topics = {ep.topic: ep.msg_type for ep in sim.bus.endpoints() if not ep.is_publisher}
+    assert topics.get("/diffbot_base_controller/cmd_vel_unstamped") is MsgType.TWIST
+    assert "/diffbot_base_controller/cmd_vel" not in topics
+    for _ in range(50):
+        sim.bus.inject("/diffbot_base_controller/cmd_vel_unstamped", MsgType.TWIST, Twist((0.2,)))
+        sim.step(20)
+    assert sim.world.entity_state("diffbot").pose.position[0] > 0.1
+    # the hardware component made inactive: its controller is deactivated and the wheels hold
+    assert cm.set_hardware_component_state("DiffBot", "inactive") == "inactive"
+    assert cm.controllers["diffbot_base_controller"].controller.state == "inactive"
+    with pytest.raises(ControlError, match="no hardware component 'Nope'"):
+        cm.set_hardware_component_state("Nope", "active")
+
+
+SENSOR_BOT = """<robot name="s">
+  <link name="world"/>
+  <link name="base"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/>
+  </inertial></link>
+  <link name="tool"><inertial><mass value="2"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/>
+  </inertial></link>
+  <joint name="fix" type="fixed"><parent link="world"/><child link="base"/><origin xyz="0 0 1"/></joint>
+  <joint name="wrist" type="revolute"><parent link="base"/><child link="tool"/><axis xyz="0 0 1"/>
+    <limit lower="-3" upper="3" effort="50" velocity="2"/></joint>
+  <gazebo reference="base"><sensor name="imu" type="imu"><update_rate>100</update_rate></sensor></gazebo>
+  <gazebo reference="wrist"><sensor name="ft" type="force_torque"><update_rate>100</update_rate></sensor></gazebo>
+  <ros2_control name="hw" type="system">
+    <hardware><plugin>gz_ros2_control/GazeboSimSystem</plugin></hardware>
+    <joint name="wrist"><command_interface name="position"/><state_interface name="position"/>
+      <state_interface name="velocity"/></joint>
+    <sensor name="imu">
+      <state_interface name="orientation.x"/><state_interface name="orientation.y"/>
+      <state_interface name="orientation.z"/><state_interface name="orientation.w"/>
+      <state_interface name="angular_velocity.x"/><state_interface name="angular_velocity.y"/>
+      <state_interface name="angular_velocity.z"/><state_interface name="linear_acceleration.x"/>
+      <state_interface name="linear_acceleration.y"/><state_interface name="linear_acceleration.z"/>
+    </sensor>
+    <sensor name="ft">
+      <state_interface name="force.x"/><state_interface name="force.y"/><state_interface name="force.z"/>
+      <state_interface name="torque.x"/><state_interface name="torque.y"/><state_interface name="torque.z"/>
+    </sensor>
+  </ros2_control>
+</robot>"""
+
+
+def test_imu_and_force_torque_sensor_components_are_read_from_the_simulated_sensors():
+    sim = Simulation(default_world(), rtf=0)
+    cm = _manager(sim.spawn(load_string(SENSOR_BOT).value, name="s"))
+    cm.files.append(
+        parse_params(
+            "imu_broadcaster:\n  ros__parameters:\n    type: imu_sensor_broadcaster/IMUSensorBroadcaster\n"
+            "    sensor_name: imu\n    frame_id: base\n"
+            "ft_broadcaster:\n  ros__parameters:\n    type: force_torque_sensor_broadcaster/ForceTorqueSensorBroadcaster\n"
+            "    sensor_name: ft\n    frame_id: tool\n"
+        )
+    )
+    for n in ("imu_broadcaster", "ft_broadcaster"):
+        cm.load_controller(n)
+        cm.configure_controller(n)
+    cm.switch_controller(["imu_broadcaster", "ft_broadcaster"], [])
+    imu, wrench = [], []
+    for ep in sim.bus.endpoints():
+        if ep.topic == "/imu_broadcaster/imu":
+            ep.add_sink(imu.append)
+        if ep.topic == "/ft_broadcaster/wrench":
+            ep.add_sink(wrench.append)
+    sim.step(500)
+    assert imu[-1].frame_id == "base" and imu[-1].linear_acceleration[2] == pytest.approx(9.81, abs=0.01)
+    assert imu[-1].orientation == pytest.approx((1.0, 0.0, 0.0, 0.0), abs=1e-6)
+    # the 2 kg tool hangs on the wrist joint: 19.6 N along z, as the simulated sensor reads it
+    assert abs(wrench[-1].force[2]) == pytest.approx(2 * 9.81, rel=0.01)
+    assert wrench[-1].frame_id == "tool"

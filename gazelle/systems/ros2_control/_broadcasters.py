@@ -1,12 +1,12 @@
-"""joint_state_broadcaster and the forward_command_controller family."""
+"""joint_state_broadcaster, the sensor broadcasters and the forward_command_controller family."""
 
 from __future__ import annotations
 
 import math
 
-from .._bus import DynamicJointState, Float64Array, JointStates, MsgType
+from .._bus import DynamicJointState, Float64Array, Imu, JointStates, MsgType, Qos, WrenchStamped
 from ._controller import Controller
-from ._hardware import ControlError
+from ._hardware import FT_INTERFACES, IMU_INTERFACES, ControlError
 
 _JOINT_STATE_FIELDS = ("position", "velocity", "effort")
 
@@ -142,3 +142,74 @@ class JointGroupEffortController(ForwardCommandController):
 
     type_name = "effort_controllers/JointGroupEffortController"
     fixed_interface = "effort"
+
+
+class ImuSensorBroadcaster(Controller):
+    """``imu_sensor_broadcaster/IMUSensorBroadcaster``: the ``sensor_name`` component's 10 interfaces as
+    sensor_msgs/Imu on ``~/imu`` in ``frame_id``, with the ``static_covariance_*`` parameters."""
+
+    type_name = "imu_sensor_broadcaster/IMUSensorBroadcaster"
+
+    def on_configure(self) -> None:
+        self.sensor = self.param("sensor_name", "", str)
+        self.frame_id = self.param("frame_id", "", str)
+        if not self.sensor or not self.frame_id:
+            raise ControlError(f"controller '{self.name}': 'sensor_name' and 'frame_id' must be set")
+        covs = []
+        for key in ("orientation", "angular_velocity", "linear_acceleration"):
+            values = self.float_list(f"static_covariance_{key}", [0.0] * 9)
+            if len(values) != 9:
+                raise ControlError(f"controller '{self.name}': static_covariance_{key} needs 9 values")
+            covs.append(tuple(values))
+        self._cov = covs
+        self._keys = [f"{self.sensor}/{i}" for i in IMU_INTERFACES]
+        self._pub = self.advertise("~/imu", MsgType.IMU, Qos.SENSOR)
+
+    def state_interfaces(self) -> list[str] | None:
+        return list(self._keys)
+
+    def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
+        if not self._pub.wanted:
+            return
+        v = [states[k] for k in self._keys]
+        self._pub.publish(
+            Imu(
+                t,
+                self.frame_id,
+                (v[3], v[0], v[1], v[2]),
+                (v[4], v[5], v[6]),
+                (v[7], v[8], v[9]),
+                self._cov[0],
+                self._cov[1],
+                self._cov[2],
+            )
+        )
+
+
+class ForceTorqueSensorBroadcaster(Controller):
+    """``force_torque_sensor_broadcaster/ForceTorqueSensorBroadcaster``: geometry_msgs/WrenchStamped on
+    ``~/wrench`` in ``frame_id``, from ``sensor_name``'s force.x..torque.z or the ``interface_names.*`` given."""
+
+    type_name = "force_torque_sensor_broadcaster/ForceTorqueSensorBroadcaster"
+
+    def on_configure(self) -> None:
+        self.sensor = self.param("sensor_name", "", str)
+        self.frame_id = self.param("frame_id", "", str)
+        names = [self.param(f"interface_names.{i}", "", str) for i in FT_INTERFACES]
+        if not self.sensor and not any(names):
+            raise ControlError(f"controller '{self.name}': 'sensor_name' or 'interface_names' must be set")
+        if not self.frame_id:
+            raise ControlError(f"controller '{self.name}': 'frame_id' must be set")
+        self._keys = [
+            n if n else (f"{self.sensor}/{i}" if self.sensor else "") for n, i in zip(names, FT_INTERFACES, strict=True)
+        ]
+        self._pub = self.advertise("~/wrench", MsgType.WRENCH_STAMPED)
+
+    def state_interfaces(self) -> list[str] | None:
+        return [k for k in self._keys if k]
+
+    def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
+        if not self._pub.wanted:
+            return
+        v = [states[k] if k else math.nan for k in self._keys]
+        self._pub.publish(WrenchStamped(t, self.frame_id, (v[0], v[1], v[2]), (v[3], v[4], v[5])))

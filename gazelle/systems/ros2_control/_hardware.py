@@ -26,9 +26,12 @@ from __future__ import annotations
 import dataclasses
 import logging
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from ...description import JointType, Ros2Control
+import numpy as np
+
+from ...description import JointType, Ros2Control, rotation_matrix
 from ...physics import ActuatorHandle, ActuatorKind, Entity, JointHandle, PhysicsWorld
 from .._actuation import (
     PidGains,
@@ -175,16 +178,25 @@ class SimHardware:
                     f"ros2_control '{rc.name}': {', '.join(casters)} roll as ball casters (frictionless spheres "
                     f"level with the wheels {', '.join(wheels)})"
                 )
+        self._sensor_readers: list[tuple[list[int], Callable[[], list[float]], list[str]]] = []
+        """Per wired sensor component: (indices into its reading, the reading function, the state keys)."""
+        unwired = []
         for comp in rc.sensors:
             names = tuple(f"{comp.name}/{si.name}" for si in comp.state_interfaces)
             self.sensors[comp.name] = names
             for n in names:
                 self.states[n] = math.nan  # sensor state interfaces: read by the sensor broadcasters
-        if rc.sensors:
+            reader = _sensor_reader(world, entity, comp.name)
+            if reader is None:
+                unwired.append(comp.name)
+                continue
+            order, read = reader
+            wanted = [si.name for si in comp.state_interfaces if si.name in order]
+            self._sensor_readers.append(([order.index(w) for w in wanted], read, [f"{comp.name}/{w}" for w in wanted]))
+        if unwired:
             self._warn(
-                f"{where}ros2_control '{rc.name}': sensor components "
-                f"({', '.join(c.name for c in rc.sensors)}) are listed with NaN values; their readings are "
-                "not wired to the simulated sensors yet"
+                f"{where}ros2_control '{rc.name}': sensor component(s) {', '.join(unwired)} have no <sensor> of "
+                "the same name and type imu or force_torque in the robot: their state interfaces stay NaN"
             )
         if rc.gpios:
             self._warn(
@@ -262,7 +274,7 @@ class SimHardware:
         return list(self.states)
 
     def read(self) -> None:
-        """Fill :attr:`states` from the joints (one array read per interface kind)."""
+        """Fill :attr:`states` from the joints (one array read per interface kind) and the sensors."""
         states, group = self.states, self._group
         for kind, idx, keys, every in self._read_plan:
             arr = (
@@ -274,6 +286,9 @@ class SimHardware:
             )
             values = arr.tolist() if every else arr[idx].tolist()
             states.update(zip(keys, values))
+        for idx, reader, keys in self._sensor_readers:
+            values = reader()
+            states.update(zip(keys, (values[i] for i in idx)))
 
     def write(self, sim_time_sec: float) -> None:
         """Send each joint's command in its active mode (clamped to the interface's min/max); hold the others."""
@@ -373,6 +388,57 @@ class SimHardware:
                 self._set_mode(joint, mode)
                 if mode is not None:
                     self.commands[f"{name}/{mode}"] = math.nan
+
+
+IMU_INTERFACES = (
+    "orientation.x",
+    "orientation.y",
+    "orientation.z",
+    "orientation.w",
+    "angular_velocity.x",
+    "angular_velocity.y",
+    "angular_velocity.z",
+    "linear_acceleration.x",
+    "linear_acceleration.y",
+    "linear_acceleration.z",
+)
+"""An IMU sensor component's state interfaces (semantic_components::IMUSensor)."""
+
+FT_INTERFACES = ("force.x", "force.y", "force.z", "torque.x", "torque.y", "torque.z")
+"""A force-torque sensor component's state interfaces (semantic_components::ForceTorqueSensor)."""
+
+
+def _sensor_reader(
+    world: PhysicsWorld, entity: Entity, name: str
+) -> tuple[tuple[str, ...], Callable[[], list[float]]] | None:
+    """How to read the robot's ``<sensor name=name>`` (imu or force_torque) as gazebo_ros2_control's
+    GazeboSystem does: the interfaces in order and a reading function; None when there is no such sensor."""
+    for link in entity.model.links:
+        for sensor in link.sensors:
+            if sensor.name != name:
+                continue
+            if sensor.type == "imu":
+                body, offset = world.body(entity.name, link.name), sensor.pose
+
+                def read_imu() -> list[float]:
+                    q, w, a = body.imu_reading(offset)
+                    return [q[1], q[2], q[3], q[0], *w.tolist(), *a.tolist()]
+
+                return IMU_INTERFACES, read_imu
+            if sensor.type in ("force_torque", "forcetorque") and sensor.joint:
+                joint = entity.model.joint(sensor.joint)
+                child = world.body(entity.name, joint.child)
+                X_CJ = joint.child_offset.inverse()
+
+                def read_ft() -> list[float]:
+                    X_WC = child.pose
+                    f, t = child.joint_wrench(np.asarray((X_WC * X_CJ).position))
+                    R = rotation_matrix(X_WC.orientation)
+                    f, t = -(R.T @ f), -(R.T @ t)  # what the child exerts on the parent, in the child frame
+                    return [*f.tolist(), *t.tolist()]
+
+                return FT_INTERFACES, read_ft
+    return None
 
 
 def _gains_for(inertia: float, timestep: float, base: PidGains) -> PidGains:

@@ -26,7 +26,9 @@ from ...description import ResourceResolver
 from ...physics import PhysicsWorld
 from .._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_bool, ros_block
 from ._broadcasters import (
+    ForceTorqueSensorBroadcaster,
     ForwardCommandController,
+    ImuSensorBroadcaster,
     JointGroupEffortController,
     JointGroupPositionController,
     JointGroupVelocityController,
@@ -51,6 +53,8 @@ CONTROLLER_TYPES: dict[str, type[Controller]] = {
         JointGroupEffortController,
         GripperActionController,
         EffortGripperActionController,
+        ImuSensorBroadcaster,
+        ForceTorqueSensorBroadcaster,
     )
 }
 """Controller types this manager can load, by their ``package/Class`` name."""
