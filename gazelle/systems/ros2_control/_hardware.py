@@ -31,8 +31,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ...description import JointType, Ros2Control, rotation_matrix
-from ...physics import ActuatorHandle, ActuatorKind, Entity, JointHandle, PhysicsWorld
+from ...description import JointType, Pose, Ros2Control, rotation_matrix
+from ...physics import ActuatorHandle, ActuatorKind, BodyHandle, Entity, JointHandle, PhysicsWorld
 from .._actuation import (
     PidGains,
     PositionServo,
@@ -420,7 +420,7 @@ def _sensor_reader(
             if sensor.type == "imu":
                 body, offset = world.body(entity.name, link.name), sensor.pose
 
-                def read_imu() -> list[float]:
+                def read_imu(body: BodyHandle = body, offset: Pose = offset) -> list[float]:
                     q, w, a = body.imu_reading(offset)
                     return [q[1], q[2], q[3], q[0], *w.tolist(), *a.tolist()]
 
@@ -430,7 +430,7 @@ def _sensor_reader(
                 child = world.body(entity.name, joint.child)
                 X_CJ = joint.child_offset.inverse()
 
-                def read_ft() -> list[float]:
+                def read_ft(child: BodyHandle = child, X_CJ: Pose = X_CJ) -> list[float]:
                     X_WC = child.pose
                     f, t = child.joint_wrench(np.asarray((X_WC * X_CJ).position))
                     R = rotation_matrix(X_WC.orientation)
