@@ -106,14 +106,17 @@ class ControllerManagerNode(Node):
     # ------------------------------------------------------------------ plumbing
     def _guard(self, name: str, fn: Any) -> Any:
         def wrapper(req: Any, res: Any) -> Any:
+            # refusals go to this node's logger: on the console and on /rosout as the manager's own
+            # lines, where the spawner finds the reason to print
             try:
                 return fn(req, res)
             except ControlError as err:
-                self._log.error(f"{name}: {err}")
+                self.get_logger().error(f"{name}: {err}")
             except TimeoutError:
-                self._log.error(f"{name}: the simulation did not answer in time")
+                self.get_logger().error(f"{name}: the simulation did not answer in time")
             except Exception as err:
                 self._log.error(f"{name}: internal error", exc_info=err)
+                self.get_logger().error(f"{name}: internal error: {type(err).__name__}: {err}")
             if hasattr(res, "ok"):
                 res.ok = False
             return res

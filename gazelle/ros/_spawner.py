@@ -24,11 +24,12 @@ from controller_manager_msgs.srv import (
     SwitchController,
     UnloadController,
 )
-from rcl_interfaces.msg import Parameter, ParameterType, ParameterValue
+from rcl_interfaces.msg import Log, Parameter, ParameterType, ParameterValue
 from rcl_interfaces.srv import SetParameters
 from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
+from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
 from ..systems.ros2_control import ParamsError, load_params
 
@@ -66,6 +67,28 @@ def build_parser(prog: str, unspawner: bool = False) -> argparse.ArgumentParser:
 class _Client:
     def __init__(self, node: Node, executor: SingleThreadedExecutor, manager: str, timeout: float) -> None:
         self.node, self.executor, self.manager, self.timeout = node, executor, manager, timeout
+        self.errors: list[str] = []
+        """The manager's ERROR lines on /rosout (why it refused a request)."""
+        logger = manager.strip("/").replace("/", ".")
+        qos = QoSProfile(
+            depth=1000, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL
+        )
+
+        def on_log(msg: Log) -> None:
+            if msg.name == logger and msg.level >= Log.ERROR:
+                self.errors.append(msg.msg)
+
+        self._rosout = node.create_subscription(Log, "/rosout", on_log, qos)
+
+    def reason(self, about: str) -> str:
+        """The manager's last logged refusal mentioning ``about`` (waiting briefly for it to arrive)."""
+        deadline = time.monotonic() + 1.0
+        while time.monotonic() < deadline:
+            found = [e for e in self.errors if about in e]
+            if found:
+                return found[-1]
+            self.executor.spin_once(timeout_sec=0.05)
+        return f"the reason is in {self.manager}'s log"
 
     def call(self, srv_type: Any, name: str, request: Any) -> Any:
         client = self.node.create_client(srv_type, f"{self.manager}/{name}")
@@ -186,14 +209,14 @@ def _spawn(cli: _Client, args: argparse.Namespace) -> int:
                     _error(f"Failed to set the parameters of {name} on {cli.manager}: {why}")
                     return 1
             if not cli.call(LoadController, "load_controller", LoadController.Request(name=name)).ok:
-                _error(f"Failed loading controller {name} (the reason is in {cli.manager}'s log)")
+                _error(f"Failed loading controller {name}: {cli.reason(name)}")
                 return 1
             _info(f"Loaded {name}")
         if args.load_only:
             continue
         if loaded.get(name, "unconfigured") == "unconfigured":
             if not cli.call(ConfigureController, "configure_controller", ConfigureController.Request(name=name)).ok:
-                _error(f"Failed to configure controller {name} (the reason is in {cli.manager}'s log)")
+                _error(f"Failed to configure controller {name}: {cli.reason(name)}")
                 return 1
         if args.inactive or args.activate_as_group:
             if args.inactive:
@@ -203,13 +226,13 @@ def _spawn(cli: _Client, args: argparse.Namespace) -> int:
             _info(f"Controller {name} is already active")
             continue
         if not _switch(cli, [name], [], args.switch_timeout):
-            _error(f"Failed to activate controller {name} (the reason is in {cli.manager}'s log)")
+            _error(f"Failed to activate controller {name}: {cli.reason(name)}")
             return 1
         _info(f"Configured and activated {name}")
     if args.activate_as_group and not args.inactive and not args.load_only:
         names = [n for n in args.controller_names if loaded.get(n) != "active"]
         if not _switch(cli, names, [], args.switch_timeout):
-            _error(f"Failed to activate the controllers {names} (the reason is in {cli.manager}'s log)")
+            _error(f"Failed to activate the controllers {names}: {cli.reason('switch_controller')}")
             return 1
         _info(f"Configured and activated all the parsed controllers list: {names}")
     return 0

@@ -201,7 +201,9 @@ def test_r6bot_follows_a_trajectory_holds_and_aborts_on_path_tolerance(sim_facto
     assert res.ok is False
     sim.wait_line("controller 'nope' is not loaded", 10)
     rc, out = _spawner("not_in_yaml", "-p", str(R6BOT_YAML), "--controller-manager-timeout", "5")
-    assert rc == 1 and "not_in_yaml" in out
+    assert rc == 1 and "the 'type' of controller 'not_in_yaml' is not set" in out, out
+    rc, out = _spawner("arm", "-t", "fancy_controllers/Fancy", "--controller-manager-timeout", "5")
+    assert rc == 1 and "controller type 'fancy_controllers/Fancy' of 'arm' does not exist; the types are" in out, out
     assert ros_client.entity_state("r6bot").success
 
 
@@ -209,3 +211,38 @@ def test_spawner_without_a_manager_says_so_and_exits_1():
     rc, out = _spawner("joint_state_broadcaster", "--controller-manager-timeout", "1", timeout=30)
     assert rc == 1
     assert "Controller manager not available" in out
+
+
+@pytest.mark.slow
+def test_a_namespaced_panda_closes_its_gripper_through_the_gripper_action(sim_factory, ros_client, monkeypatch):
+    from control_msgs.action import GripperCommand
+
+    panda = FIXTURES / "moveit_panda"
+    monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(panda))
+    sim = sim_factory("--no-viewer")
+    xacro_file = panda / "moveit_resources_panda_moveit_config" / "config" / "panda.urdf.xacro"
+    spawn = start(
+        [*GAZELLE, "spawn", "-entity", "panda", "-robot_namespace", "panda", "-file", str(xacro_file)], "spawn"
+    )
+    assert spawn.wait(120) == 0, spawn.output
+    sim.wait_line("controller manager '/panda/controller_manager'", 10)
+    yaml = panda / "moveit_resources_panda_moveit_config" / "config" / "ros2_controllers.yaml"
+    rc, out = _spawner("panda_hand_controller", "-c", "/panda/controller_manager", "-p", str(yaml))
+    assert rc == 0, out
+    client = ActionClient(ros_client.node, GripperCommand, "/panda/panda_hand_controller/gripper_cmd")
+    assert client.wait_for_server(timeout_sec=15)
+    goal = GripperCommand.Goal()
+    goal.command.position = 0.03
+    done = threading.Event()
+    box: dict = {}
+
+    def on_goal(f) -> None:
+        handle = f.result()
+        assert handle.accepted
+        handle.get_result_async().add_done_callback(lambda r: (box.__setitem__("result", r.result()), done.set()))
+
+    client.send_goal_async(goal).add_done_callback(on_goal)
+    assert done.wait(30), "no gripper result"
+    result = box["result"].result
+    assert result.reached_goal and not result.stalled
+    assert result.position == pytest.approx(0.03, abs=0.01)
