@@ -133,9 +133,35 @@ def with_robot_state_options(xml: str, *, enabled: bool, frame_prefix: str | Non
     return xml
 
 
+def _split_ros_args(argv: list[str]) -> tuple[list[str], list[str]]:
+    """(the spawn's own arguments, what follows ``--ros-args`` up to ``--``)."""
+    if "--ros-args" not in argv:
+        return argv, []
+    i = argv.index("--ros-args")
+    rest = argv[i + 1 :]
+    end = rest.index("--") if "--" in rest else len(rest)
+    return argv[:i] + rest[end + 1 :], rest[:end]
+
+
+def _params_files(ros_args: list[str]) -> list[str]:
+    """The ``--params-file F`` of the ROS arguments (for the robot's controller manager); the other
+    ROS arguments are named in a warning (this process is a client, they would not reach the robot)."""
+    files, i = [], 0
+    while i < len(ros_args):
+        if ros_args[i] == "--params-file" and i + 1 < len(ros_args):
+            files.append(ros_args[i + 1])
+            i += 2
+            continue
+        print(f"[WARN] [spawn_entity]: ROS argument '{ros_args[i]}' is not used by gazelle spawn", file=sys.stderr)
+        i += 1
+    return files
+
+
 def main(argv: list[str]) -> int:
     """Run ``gazelle spawn``; returns the exit code."""
+    argv, ros_args = _split_ros_args(argv)
     args = build_parser().parse_args(argv)
+    args.params_files = _params_files(ros_args)
     timeout = args.spawn_service_timeout if args.spawn_service_timeout is not None else args.timeout
     if not math.isfinite(timeout) or timeout < 0:
         return _fail(None, f"-timeout must be a non-negative number, got {timeout}")
@@ -221,6 +247,15 @@ def _run(
     if not res.success:
         return _fail(node, f"Spawn service failed: {res.status_message}")
     log.info(f"Spawn status: {res.status_message}")
+    if args.params_files:
+        from ._spawner import give_params_files
+
+        robot_ns = args.robot_namespace.strip("/")
+        manager = f"/{robot_ns}/controller_manager" if robot_ns else "/controller_manager"
+        why = give_params_files(node, executor, manager, args.params_files, max(timeout, 1.0))
+        if why is not None:
+            return _fail(node, f"--params-file: {why}")
+        log.info(f"Gave {', '.join(args.params_files)} to {manager}")
     if args.unpause:
         unpause = node.create_client(Empty, f"{ns}/unpause_physics")
         if unpause.wait_for_service(timeout_sec=timeout):

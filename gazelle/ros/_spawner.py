@@ -14,6 +14,7 @@ from __future__ import annotations
 import argparse
 import sys
 import time
+from pathlib import Path
 from typing import Any
 
 import rclpy
@@ -266,3 +267,32 @@ def _unspawn(cli: _Client, args: argparse.Namespace) -> int:
             return 1
         _info(f"Deactivated and unloaded {name}" if name in active else f"Unloaded {name}")
     return 0
+
+
+def give_params_files(
+    node: Node, executor: SingleThreadedExecutor, manager: str, files: list[str], timeout: float
+) -> str | None:
+    """Hand parameter files to a controller manager as ``spawner -p`` does, for every controller they
+    configure: ``<controller>.params_file`` and its ``type`` (from its own section or the file's
+    ``controller_manager`` section). What ``gazelle spawn ... --ros-args --params-file F`` does after
+    the spawn. Returns why it could not, or None."""
+    cli = _Client(node, executor, manager, timeout)
+    if not _wait_for_manager(cli, timeout):
+        return f"{manager} is not available (the robot has no <ros2_control>?)"
+    manager_ns, _, manager_name = manager.rstrip("/").rpartition("/")
+    params: list[Parameter] = []
+    for path in files:
+        try:
+            pf = load_params(path)
+        except ParamsError as err:
+            return str(err)
+        absolute = str(Path(path).resolve())
+        cm = pf.for_node(manager_name, manager_ns)
+        names = {k.rsplit("/", 1)[-1] for k in pf.nodes if "*" not in k and k.rsplit("/", 1)[-1] != manager_name}
+        names |= {k[: -len(".type")] for k in cm if k.endswith(".type")}
+        for name in sorted(names):
+            params.append(_string_param(f"{name}.params_file", absolute))
+            kind = pf.for_node(name, manager_ns).get("type") or cm.get(f"{name}.type")
+            if isinstance(kind, str) and kind:
+                params.append(_string_param(f"{name}.type", kind))
+    return _set_params(cli, params) if params else None

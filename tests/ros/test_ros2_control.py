@@ -43,11 +43,16 @@ def _spawner(*args: str, timeout: float = 60) -> tuple[int, str]:
 @pytest.mark.slow
 def test_diffbot_drives_with_its_own_controllers_yaml_and_the_spawner(sim_factory, ros_client):
     sim = sim_factory("--no-viewer")
-    spawn = start([*GAZELLE, "spawn", "-entity", "diffbot", "-file", str(DIFFBOT_URDF), "-z", "0.05"], "spawn")
+    # the controllers YAML the way launch files pass it: --ros-args --params-file on the spawn
+    spawn = start(
+        [*GAZELLE, "spawn", "-entity", "diffbot", "-file", str(DIFFBOT_URDF), "-z", "0.05"]
+        + ["--ros-args", "--params-file", str(DIFFBOT_YAML)],
+        "spawn",
+    )
     assert spawn.wait(60) == 0, spawn.output
     sim.wait_line("controller manager '/controller_manager'", 10)
 
-    rc, out = _spawner("joint_state_broadcaster", "diffbot_base_controller", "-p", str(DIFFBOT_YAML))
+    rc, out = _spawner("joint_state_broadcaster", "diffbot_base_controller")
     assert rc == 0, out
     assert "Configured and activated diffbot_base_controller" in out
 
