@@ -61,5 +61,20 @@ if [[ ! -f "$stamp" || "$(cat "$stamp")" != "$want" ]]; then
   echo "$want" > "$stamp"
 fi
 
-# 4. Our interface packages (tf2_msgs, simulation_interfaces, gazebo_msgs), rebuilt only on change.
+# 4. Our interface packages (tf2_msgs, simulation_interfaces, gazebo_msgs, control_msgs,
+#    controller_manager_msgs), rebuilt only on change.
 "$ROOT/scripts/build_interfaces.sh" "$VENV"
+
+# 5. The venv is a ROS prefix: gazelle's stand-ins for gazebo_ros, robot_state_publisher,
+#    controller_manager and xacro in its ament index, and AMENT_PREFIX_PATH set by `activate`
+#    (after a sourced workspace's), so `ros2 launch/run` and get_package_share_directory find them.
+"$VENV/bin/python" "$ROOT/scripts/install_ros_packages.py" "$VENV"
+if ! grep -q "gazelle: the venv is a ROS prefix" "$VENV/bin/activate"; then
+  cat >>"$VENV/bin/activate" <<'ACTIVATE'
+# gazelle: the venv is a ROS prefix (our interface packages and compat/ros_packages)
+case ":${AMENT_PREFIX_PATH:-}:" in
+  *":$VIRTUAL_ENV:"*) ;;
+  *) export AMENT_PREFIX_PATH="${AMENT_PREFIX_PATH:+$AMENT_PREFIX_PATH:}$VIRTUAL_ENV" ;;
+esac
+ACTIVATE
+fi

@@ -123,6 +123,32 @@ def spawn(ctx: typer.Context) -> None:
     context_settings={"allow_extra_args": True, "ignore_unknown_options": True, "help_option_names": []},
     add_help_option=False,
 )
+def launch(ctx: typer.Context) -> None:
+    """Run a launch file: the same as ``ros2 launch`` (PKG FILE [name:=value ...] | PATH, --show-args)."""
+    from ..ros2cli import ensure_ament_prefix
+    from ..ros2cli._launch import main as launch_main
+
+    ensure_ament_prefix()
+    raise typer.Exit(launch_main(list(ctx.args)))
+
+
+@app.command(
+    context_settings={"allow_extra_args": True, "ignore_unknown_options": True, "help_option_names": []},
+    add_help_option=False,
+)
+def run(ctx: typer.Context) -> None:
+    """Run a package's executable: the same as ``ros2 run PKG EXECUTABLE [args]``."""
+    from ..ros2cli import ensure_ament_prefix
+    from ..ros2cli._run import main as run_main
+
+    ensure_ament_prefix()
+    raise typer.Exit(run_main(list(ctx.args)))
+
+
+@app.command(
+    context_settings={"allow_extra_args": True, "ignore_unknown_options": True, "help_option_names": []},
+    add_help_option=False,
+)
 def spawner(ctx: typer.Context) -> None:
     """Load, configure and activate ros2_control controllers, like ``ros2 run controller_manager spawner``
     (NAME... [-c MANAGER] [-p PARAM_FILE] [--inactive] [--controller-manager-timeout S] ...)."""

@@ -133,6 +133,33 @@ def with_robot_state_options(xml: str, *, enabled: bool, frame_prefix: str | Non
     return xml
 
 
+def _published_by_robot_state_publisher(node: Node, topic: str) -> bool:
+    """Whether a node named robot_state_publisher publishes ``topic`` (the description just read)."""
+    name = topic if topic.startswith("/") else f"/{topic}"
+    try:
+        return any(p.node_name == "robot_state_publisher" for p in node.get_publishers_info_by_topic(name))
+    except Exception:
+        return False
+
+
+def with_joint_state_publisher(xml: str) -> str:
+    """Add gz-sim's JointStatePublisher (every joint, on ``joint_states`` under the robot's namespace)
+    to a URDF or SDF that has no joint state publisher plugin."""
+    if "joint_state_publisher" in xml or "JointStatePublisher" in xml or "joint-state-publisher" in xml:
+        return xml
+    plugin = (
+        '<plugin filename="gz-sim-joint-state-publisher-system" name="gz::sim::systems::JointStatePublisher">'
+        "<topic>joint_states</topic></plugin>"
+    )
+    if "</robot>" in xml:
+        i = xml.rindex("</robot>")
+        return xml[:i] + f"<gazebo>{plugin}</gazebo>" + xml[i:]
+    if "</model>" in xml:
+        i = xml.rindex("</model>")
+        return xml[:i] + plugin + xml[i:]
+    return xml
+
+
 def _split_ros_args(argv: list[str]) -> tuple[list[str], list[str]]:
     """(the spawn's own arguments, what follows ``--ros-args`` up to ``--``)."""
     if "--ros-args" not in argv:
@@ -221,6 +248,16 @@ def _run(
     if not xml.strip():
         return _fail(node, "Error: entity XML is empty")
 
+    if args.topic and not args.no_robot_state_publisher and _published_by_robot_state_publisher(node, args.topic):
+        # one publisher per transform: the user's robot_state_publisher publishes this robot's TF, so
+        # gazelle's built-in one is off, and the robot publishes joint_states for it (as Gazebo users add
+        # a joint state publisher plugin for)
+        log.info(
+            f"{args.topic} comes from a running robot_state_publisher: gazelle's built-in one is off for this "
+            "robot, which publishes joint_states for it"
+        )
+        args.no_robot_state_publisher = True
+        xml = with_joint_state_publisher(xml)
     if args.no_robot_state_publisher or args.frame_prefix is not None:
         xml = with_robot_state_options(xml, enabled=not args.no_robot_state_publisher, frame_prefix=args.frame_prefix)
     ns = args.gazebo_namespace.rstrip("/")

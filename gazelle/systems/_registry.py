@@ -10,6 +10,7 @@ from typing import Any
 
 from ..description import Diagnostic, ErrorCode, Model, Plugin, Sensor, Severity, World
 from ._base import System
+from .robot_state import RSP_PLUGIN
 
 _log = logging.getLogger("gazelle.systems")
 
@@ -406,8 +407,8 @@ def _display(name: str) -> str:
 def plugin_problem(plugin: Plugin, *, world: bool = False) -> str | None:
     """Why ``plugin`` will not run (unsupported, not yet, a likely typo), or None when it runs or is built in."""
     key_f, key_n = _normalise(plugin.filename), _normalise(plugin.name)
-    if key_f in _REGISTRY or key_n in _REGISTRY:
-        return None
+    if key_f in _REGISTRY or key_n in _REGISTRY or key_f == RSP_PLUGIN:
+        return None  # (the built-in robot_state_publisher's options are read by the runtime)
     if key_f in BUILT_IN_WORLD_SYSTEMS or key_n in BUILT_IN_WORLD_SYSTEMS:
         return None
     label = f"{'world ' if world else ''}plugin '{plugin.name}' ({plugin.filename})"

@@ -152,8 +152,9 @@ class ControllerManager(System):
                 raise ControlError(str(err)) from None
         for rc in model.ros2_control:
             if not rc.simulated:
+                where = f"{rc.location}: " if rc.location else ""
                 self.log.warning(
-                    f"ros2_control '{rc.name}': hardware plugin '{rc.hardware_plugin or '(none)'}' is a real "
+                    f"{where}ros2_control '{rc.name}': hardware plugin '{rc.hardware_plugin or '(none)'}' is a real "
                     "robot's driver; the simulation stands in for it (as gazebo_ros2_control/GazeboSystem)"
                 )
             self.hardware.append(SimHardware(rc, ctx.world, ctx.entity, self.log, hold=self.config.hold_joints))

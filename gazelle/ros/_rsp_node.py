@@ -1,0 +1,133 @@
+"""robot_state_publisher as a ROS node (the real one is C++ and not on PyPI): ``ros2 run
+robot_state_publisher robot_state_publisher --ros-args -p robot_description:=...``.
+
+Reads the ``robot_description`` parameter (URDF text: data, never xacro-expanded) and ``joint_states``;
+publishes ``robot_description`` (latched), ``/tf_static`` for fixed joints and ``/tf`` for moving ones
+from each JointState (stamped with it, or now with ``ignore_timestamp``), at most ``publish_frequency``
+times a second, every frame prefixed with ``frame_prefix``. Floating joints are skipped and planar
+ones are fixed, as robot_state_publisher does.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import time
+
+import rclpy
+from geometry_msgs.msg import TransformStamped
+from rclpy.executors import ExternalShutdownException
+from rclpy.node import Node
+from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from sensor_msgs.msg import JointState
+from std_msgs.msg import String
+from tf2_msgs.msg import TFMessage
+
+from ..description import Joint, JointType, Model, ModelLoadError, Pose, load_string
+
+
+def joint_motion(joint: Joint, q: float) -> Pose:
+    """X_PC of a 1-dof joint at position ``q``: origin * motion(axis, q) * child_offset."""
+    axis = joint.axis.xyz if joint.axis is not None else (1.0, 0.0, 0.0)
+    n = math.sqrt(sum(a * a for a in axis)) or 1.0
+    ax = tuple(a / n for a in axis)
+    if joint.type is JointType.PRISMATIC:
+        motion = Pose((ax[0] * q, ax[1] * q, ax[2] * q))
+    else:
+        s = math.sin(q / 2.0)
+        motion = Pose(orientation=(math.cos(q / 2.0), ax[0] * s, ax[1] * s, ax[2] * s))
+    return joint.origin * motion * joint.child_offset
+
+
+def _tf(stamp, parent: str, child: str, pose: Pose) -> TransformStamped:
+    t = TransformStamped()
+    t.header.stamp = stamp
+    t.header.frame_id = parent
+    t.child_frame_id = child
+    t.transform.translation.x, t.transform.translation.y, t.transform.translation.z = pose.position
+    o = pose.orientation
+    t.transform.rotation.w, t.transform.rotation.x, t.transform.rotation.y, t.transform.rotation.z = o
+    return t
+
+
+class RobotStatePublisherNode(Node):
+    def __init__(self) -> None:
+        super().__init__("robot_state_publisher")
+        self.declare_parameter("robot_description", "")
+        self.declare_parameter("publish_frequency", 20.0)
+        self.declare_parameter("frame_prefix", "")
+        self.declare_parameter("ignore_timestamp", False)
+        text = self.get_parameter("robot_description").value
+        if not text:
+            raise RuntimeError("robot_description parameter must not be empty")
+        try:
+            loaded = load_string(str(text), format="urdf", source="robot_description").value
+        except ModelLoadError as err:
+            raise RuntimeError(f"robot_description is not a URDF robot_state_publisher can use: {err}") from None
+        if not isinstance(loaded, Model):
+            raise RuntimeError("robot_description is not a robot (URDF)")
+        model = loaded
+        prefix = str(self.get_parameter("frame_prefix").value)
+        self._period = 1.0 / max(float(self.get_parameter("publish_frequency").value or 20.0), 1e-6)
+        self._ignore_stamp = bool(self.get_parameter("ignore_timestamp").value)
+        latched = QoSProfile(
+            depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE
+        )
+        self._desc = self.create_publisher(String, "robot_description", latched)
+        self._desc.publish(String(data=str(text)))
+        self._static = self.create_publisher(TFMessage, "/tf_static", latched)
+        self._tf = self.create_publisher(TFMessage, "/tf", 100)
+        for link in model.links:
+            self.get_logger().info(f"got segment {link.name}")
+        statics, self._moving = [], {}
+        now = self.get_clock().now().to_msg()
+        for j in model.joints:
+            if j.parent == "world" or j.type is JointType.FLOATING:
+                continue
+            if j.type in (JointType.FIXED, JointType.PLANAR):
+                statics.append(_tf(now, prefix + j.parent, prefix + j.child, j.origin * j.child_offset))
+            else:
+                self._moving[j.name] = (j, prefix + j.parent, prefix + j.child)
+        if statics:
+            self._static.publish(TFMessage(transforms=statics))
+        self._last = -math.inf
+        self.create_subscription(JointState, "joint_states", self._on_joint_states, 10)
+
+    def _on_joint_states(self, msg: JointState) -> None:
+        now = time.monotonic()
+        if now - self._last < self._period * 0.999:
+            return
+        self._last = now
+        stamp = (
+            self.get_clock().now().to_msg()
+            if self._ignore_stamp or (msg.header.stamp.sec == 0 and msg.header.stamp.nanosec == 0)
+            else msg.header.stamp
+        )
+        out = []
+        for name, q in zip(msg.name, msg.position):
+            entry = self._moving.get(name)
+            if entry is None or not math.isfinite(q):
+                continue
+            joint, parent, child = entry
+            out.append(_tf(stamp, parent, child, joint_motion(joint, float(q))))
+        if out:
+            self._tf.publish(TFMessage(transforms=out))
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the node until Ctrl-C; returns the exit status."""
+    rclpy.init(args=sys.argv if argv is None else argv)
+    try:
+        node = RobotStatePublisherNode()
+    except RuntimeError as err:
+        print(f"[ERROR] [robot_state_publisher]: {err}", file=sys.stderr)
+        rclpy.try_shutdown()  # pyright: ignore[reportPrivateImportUsage]
+        return 1
+    try:
+        rclpy.spin(node)
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass
+    finally:
+        node.destroy_node()
+        rclpy.try_shutdown()  # pyright: ignore[reportPrivateImportUsage]
+    return 0

@@ -1,0 +1,166 @@
+"""``ros2 launch PKG FILE [name:=value ...]`` or ``ros2 launch PATH ...`` with ``--show-args``,
+``--debug``, ``--print`` and ``--launch-prefix``."""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+
+
+def _find_launch_file(package: str, name: str) -> str:
+    from ament_index_python.packages import PackageNotFoundError, get_package_share_directory
+
+    try:
+        share = get_package_share_directory(package)
+    except (PackageNotFoundError, LookupError):
+        raise LookupError(f"Package '{package}' not found") from None
+    matches = []
+    for root, _dirs, files in os.walk(share, followlinks=True):
+        if name in files:
+            matches.append(os.path.join(root, name))
+    if not matches:
+        raise LookupError(
+            f"file '{name}' was not found in the share directory of package '{package}' which is at '{share}'"
+        )
+    if len(matches) > 1:
+        raise LookupError(
+            f"multiple files named '{name}' found in the share directory of package '{package}': {matches}"
+        )
+    return matches[0]
+
+
+def main(argv: list[str]) -> int:
+    p = argparse.ArgumentParser(prog="ros2 launch", description="Run a launch file")
+    p.add_argument("-n", "--noninteractive", action="store_true")
+    p.add_argument("-d", "--debug", action="store_true", help="Put the launch system in debug mode")
+    p.add_argument("-p", "--print", "--print-description", dest="print_description", action="store_true")
+    p.add_argument("-s", "--show-args", "--show-arguments", dest="show_args", action="store_true")
+    p.add_argument("--launch-prefix", default=None)
+    p.add_argument("package_name", help="Name of the ROS package which contains the launch file (or a path)")
+    p.add_argument("launch_file_name", nargs="?", help="Name of the launch file")
+    p.add_argument("launch_arguments", nargs="*", help="Arguments to the launch file; '<name>:=<value>'")
+    args = p.parse_args(argv)
+    from launch.logging import log
+
+    positional = (
+        [args.package_name] + ([args.launch_file_name] if args.launch_file_name else []) + args.launch_arguments
+    )
+    if os.path.isfile(positional[0]) or positional[0].endswith((".py", ".xml", ".yaml", ".yml")):
+        path, rest = positional[0], positional[1:]
+        if not os.path.isfile(path):
+            log("ERROR", "launch", f"launch file '{path}' does not exist")
+            return 1
+    else:
+        if len(positional) < 2:
+            p.error("a launch file name is needed after the package name")
+        try:
+            path = _find_launch_file(positional[0], positional[1])
+        except LookupError as err:
+            print(str(err), file=sys.stderr)
+            return 1
+        rest = positional[2:]
+    launch_args: list[tuple[str, str]] = []
+    for a in rest:
+        if ":=" not in a:
+            p.error(f"malformed launch argument '{a}', expected format '<name>:=<value>'")
+        k, v = a.split(":=", 1)
+        launch_args.append((k, v))
+    return run_launch_file(
+        path, launch_args, debug=args.debug, show_args=args.show_args, print_description=args.print_description
+    )
+
+
+def run_launch_file(
+    path: str,
+    launch_args: list[tuple[str, str]],
+    *,
+    debug: bool = False,
+    show_args: bool = False,
+    print_description: bool = False,
+) -> int:
+    import traceback
+
+    from launch import LaunchDescription, LaunchService
+    from launch.actions import IncludeLaunchDescription
+    from launch.launch_description_sources import AnyLaunchDescriptionSource, InvalidLaunchFileError
+    from launch.logging import log
+
+    if path.endswith((".xml", ".yaml", ".yml")):
+        log(
+            "ERROR",
+            "launch",
+            f"'{path}': XML and YAML launch files are not supported by gazelle's launch yet; use a .launch.py",
+        )
+        return 1
+    source = AnyLaunchDescriptionSource(os.path.abspath(path))
+    try:
+        from launch.launch_context import LaunchContext
+
+        ld = source.get_launch_description(LaunchContext())
+    except InvalidLaunchFileError as err:
+        log("ERROR", "launch", str(err))
+        return 1
+    except Exception as err:
+        # the user's launch file raised: show its traceback (the user's frames), not ours
+        from launch.launch_service import _user_traceback
+
+        log("ERROR", "launch", f"Caught exception when trying to load file of format [py]: {err}")
+        tb = _user_traceback(err)
+        sys.stderr.write(tb if tb else "".join(traceback.format_exception(err)))
+        if debug:
+            traceback.print_exception(err)
+        return 1
+    if ld is None or not isinstance(ld, LaunchDescription):
+        log("ERROR", "launch", f"generate_launch_description() of '{path}' did not return a LaunchDescription")
+        return 1
+    from launch.launch_context import LaunchContext as _Context
+
+    walk_context = _Context()
+    walk_context.extend_locals(
+        {
+            "current_launch_file_path": os.path.abspath(path),
+            "current_launch_file_directory": os.path.dirname(os.path.abspath(path)),
+        }
+    )
+    declared = ld.get_launch_arguments(context=walk_context)
+    if show_args:
+        print("Arguments (pass arguments as '<name>:=<value>'):\n")
+        if not declared:
+            print("  No arguments.")
+        for d in declared:
+            print(f"    '{d.name}':")
+            print(f"        {d.description}")
+            if d.choices is not None:
+                print(f"        Valid choices are: {d.choices}")
+            default = d.default_text()
+            print(f"        (default: '{default}')\n" if default is not None else "")
+        return 0
+    if print_description:
+        for e in ld.entities:
+            print(type(e).__name__)
+        return 0
+    names = {d.name for d in declared}
+    unknown = [k for k, _ in launch_args if k not in names]
+    if unknown:
+        log(
+            "ERROR",
+            "launch",
+            f"launch argument(s) {', '.join(repr(u) for u in unknown)} not declared by '{path}' or what it includes; "
+            f"its arguments are: {', '.join(sorted(names)) or '(none)'}",
+        )
+        return 1
+    log("INFO", "launch", f"All log files can be found below {os.path.expanduser('~/.ros/log')}")
+    log("INFO", "launch", "Default logging verbosity is set to INFO")
+    service = LaunchService(argv=[f"{k}:={v}" for k, v in launch_args], debug=debug)
+    for k, v in launch_args:
+        service.context.launch_configurations[k] = v
+    service.context.extend_locals(
+        {
+            "current_launch_file_path": os.path.abspath(path),
+            "current_launch_file_directory": os.path.dirname(os.path.abspath(path)),
+        }
+    )
+    service.include_launch_description(ld)
+    _ = IncludeLaunchDescription
+    return service.run()

@@ -1,0 +1,242 @@
+"""launch.substitutions: the substitutions Gazebo-style launch files use."""
+
+from __future__ import annotations
+
+import os
+import shlex
+import shutil
+import subprocess
+from typing import Any
+
+from ..launch_context import LaunchContext
+from ..substitution import Substitution, normalize_to_list_of_substitutions, perform_substitutions
+from .text_substitution import TextSubstitution
+
+
+class SubstitutionFailure(RuntimeError):
+    """A substitution that cannot be performed (launch.substitutions.SubstitutionFailure)."""
+
+
+class LaunchConfiguration(Substitution):
+    """The value of a launch argument / configuration (``LaunchConfiguration('use_sim_time')``)."""
+
+    def __init__(self, variable_name: Any, *, default: Any = None) -> None:
+        self.variable_name = normalize_to_list_of_substitutions(variable_name)
+        self.default = None if default is None else normalize_to_list_of_substitutions(default)
+
+    def perform(self, context: LaunchContext) -> str:
+        name = perform_substitutions(context, self.variable_name)
+        if name in context.launch_configurations:
+            return context.launch_configurations[name]
+        if self.default is not None:
+            return perform_substitutions(context, self.default)
+        raise SubstitutionFailure(f"launch configuration '{name}' does not exist")
+
+    def describe(self) -> str:
+        return f"LaunchConfiguration({''.join(s.describe() for s in self.variable_name)})"
+
+
+class PathJoinSubstitution(Substitution):
+    """Path parts joined with ``os.path.join``."""
+
+    def __init__(self, substitutions: Any) -> None:
+        self.parts = [normalize_to_list_of_substitutions(s) for s in substitutions]
+
+    def perform(self, context: LaunchContext) -> str:
+        return os.path.join(*(perform_substitutions(context, p) for p in self.parts))
+
+    def __truediv__(self, other: Any) -> PathJoinSubstitution:
+        new = PathJoinSubstitution([])
+        new.parts = [*self.parts, normalize_to_list_of_substitutions(other)]
+        return new
+
+
+class EnvironmentVariable(Substitution):
+    """An environment variable of the launch (``default_value`` when unset)."""
+
+    def __init__(self, name: Any, *, default_value: Any = None) -> None:
+        self.name = normalize_to_list_of_substitutions(name)
+        self.default_value = None if default_value is None else normalize_to_list_of_substitutions(default_value)
+
+    def perform(self, context: LaunchContext) -> str:
+        name = perform_substitutions(context, self.name)
+        value = context.environment.get(name)
+        if value is not None:
+            return value
+        if self.default_value is not None:
+            return perform_substitutions(context, self.default_value)
+        raise SubstitutionFailure(f"environment variable '{name}' does not exist")
+
+
+class FindExecutable(Substitution):
+    """The path of an executable on PATH."""
+
+    def __init__(self, *, name: Any) -> None:
+        self.name = normalize_to_list_of_substitutions(name)
+
+    def perform(self, context: LaunchContext) -> str:
+        name = perform_substitutions(context, self.name)
+        found = shutil.which(name, path=context.environment.get("PATH"))
+        if found is None:
+            raise SubstitutionFailure(f"executable '{name}' not found on the PATH")
+        return found
+
+
+class Command(Substitution):
+    """The standard output of a command (``Command(['xacro ', path])``); a failure stops the launch."""
+
+    def __init__(self, command: Any, *, on_stderr: str = "fail") -> None:
+        self.command = normalize_to_list_of_substitutions(command)
+        self.on_stderr = on_stderr
+
+    def perform(self, context: LaunchContext) -> str:
+        text = perform_substitutions(context, self.command)
+        argv = shlex.split(text)
+        try:
+            out = subprocess.run(argv, capture_output=True, text=True, env=context.environment, check=False)
+        except OSError as err:
+            raise SubstitutionFailure(f"executed command failed. Command: {text}\n{err}") from None
+        if out.returncode != 0:
+            raise SubstitutionFailure(
+                f"executed command failed. Command: {text}\nCaptured stderr output: {out.stderr.strip()}"
+            )
+        if out.stderr.strip():
+            if self.on_stderr == "fail":
+                raise SubstitutionFailure(
+                    f"executed command showed stderr output. Command: {text}\nCaptured stderr output: {out.stderr}"
+                )
+            if self.on_stderr == "warn":
+                import logging
+
+                logging.getLogger("launch").warning(out.stderr.strip())
+        return out.stdout
+
+
+class PythonExpression(Substitution):
+    """``eval`` of the joined text with ``math`` available (as launch does: it is the user's own file)."""
+
+    def __init__(self, expression: Any, python_modules: Any = ("math",)) -> None:
+        self.expression = normalize_to_list_of_substitutions(expression)
+        self.python_modules = list(python_modules)
+
+    def perform(self, context: LaunchContext) -> str:
+        import importlib
+
+        text = perform_substitutions(context, self.expression)
+        names: dict[str, Any] = {}
+        for mod in self.python_modules:
+            name = (
+                mod if isinstance(mod, str) else perform_substitutions(context, normalize_to_list_of_substitutions(mod))
+            )
+            names[name] = importlib.import_module(name)
+        if "math" in names:
+            names.update({k: getattr(names["math"], k) for k in dir(names["math"]) if not k.startswith("_")})
+        return str(eval(text, names))
+
+
+class ThisLaunchFileDir(Substitution):
+    """The folder of the launch file being read."""
+
+    def perform(self, context: LaunchContext) -> str:
+        path = getattr(context.locals, "current_launch_file_directory", None) if hasattr(context, "locals") else None
+        try:
+            return context.locals.current_launch_file_directory
+        except AttributeError:
+            if path:
+                return path
+            raise SubstitutionFailure("ThisLaunchFileDir used outside a launch file") from None
+
+
+class ThisLaunchFile(Substitution):
+    """The path of the launch file being read."""
+
+    def perform(self, context: LaunchContext) -> str:
+        try:
+            return context.locals.current_launch_file_path
+        except AttributeError:
+            raise SubstitutionFailure("ThisLaunchFile used outside a launch file") from None
+
+
+class AnonName(Substitution):
+    """A name made unique per launch (``AnonName('rviz')``)."""
+
+    _made: dict[str, str] = {}
+
+    def __init__(self, name: Any) -> None:
+        self.name = normalize_to_list_of_substitutions(name)
+
+    def perform(self, context: LaunchContext) -> str:
+        import uuid
+
+        name = perform_substitutions(context, self.name)
+        return self._made.setdefault(name, f"{name}_{uuid.uuid4().hex[:8]}")
+
+
+class NotSubstitution(Substitution):
+    def __init__(self, value: Any) -> None:
+        self.value = normalize_to_list_of_substitutions(value)
+
+    def perform(self, context: LaunchContext) -> str:
+        from ..conditions import evaluate_condition_expression
+
+        return str(not evaluate_condition_expression(context, self.value)).lower()
+
+
+class AndSubstitution(Substitution):
+    def __init__(self, left: Any, right: Any) -> None:
+        self.left, self.right = normalize_to_list_of_substitutions(left), normalize_to_list_of_substitutions(right)
+
+    def perform(self, context: LaunchContext) -> str:
+        from ..conditions import evaluate_condition_expression
+
+        both = evaluate_condition_expression(context, self.left) and evaluate_condition_expression(context, self.right)
+        return str(both).lower()
+
+
+class OrSubstitution(Substitution):
+    def __init__(self, left: Any, right: Any) -> None:
+        self.left, self.right = normalize_to_list_of_substitutions(left), normalize_to_list_of_substitutions(right)
+
+    def perform(self, context: LaunchContext) -> str:
+        from ..conditions import evaluate_condition_expression
+
+        either = evaluate_condition_expression(context, self.left) or evaluate_condition_expression(context, self.right)
+        return str(either).lower()
+
+
+class EqualsSubstitution(Substitution):
+    def __init__(self, left: Any, right: Any) -> None:
+        self.left, self.right = normalize_to_list_of_substitutions(left), normalize_to_list_of_substitutions(right)
+
+    def perform(self, context: LaunchContext) -> str:
+        return str(perform_substitutions(context, self.left) == perform_substitutions(context, self.right)).lower()
+
+
+class LocalSubstitution(Substitution):
+    """A value from ``context.locals`` (``LocalSubstitution('event.returncode')``)."""
+
+    def __init__(self, expression: str, description: str | None = None) -> None:
+        self.expression = expression
+
+    def perform(self, context: LaunchContext) -> str:
+        return str(eval(self.expression, {}, context.get_locals_as_dict()))
+
+
+__all__ = [
+    "AndSubstitution",
+    "AnonName",
+    "Command",
+    "EnvironmentVariable",
+    "EqualsSubstitution",
+    "FindExecutable",
+    "LaunchConfiguration",
+    "LocalSubstitution",
+    "NotSubstitution",
+    "OrSubstitution",
+    "PathJoinSubstitution",
+    "PythonExpression",
+    "SubstitutionFailure",
+    "TextSubstitution",
+    "ThisLaunchFile",
+    "ThisLaunchFileDir",
+]

@@ -1,0 +1,292 @@
+"""gazelle's `launch` / `launch_ros` and the `ros2` command, on launch files of our own written in the
+style of TurtleBot3's and articubot_one's Gazebo launch files. Real processes, no ROS graph needed."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+from pathlib import Path
+
+import pytest
+
+ROS2 = [sys.executable, "-c", "import sys; from gazelle.ros2cli import main; sys.exit(main(sys.argv[1:]))"]
+
+ECHO_ARGS = """#!{python}
+import json, sys, os
+print("ARGS " + json.dumps(sys.argv[1:]))
+for i, a in enumerate(sys.argv):
+    if a == "--params-file":
+        print("PARAMS " + open(sys.argv[i + 1]).read().replace("\\n", "|"))
+print("ENV " + os.environ.get("GREETING", "-"))
+"""
+
+
+@pytest.fixture
+def prefix(tmp_path: Path) -> Path:
+    """An install prefix with package demo_pkg: share/demo_pkg/launch and lib/demo_pkg/echo_args."""
+    root = tmp_path / "install"
+    (root / "share" / "ament_index" / "resource_index" / "packages").mkdir(parents=True)
+    (root / "share" / "ament_index" / "resource_index" / "packages" / "demo_pkg").write_text("")
+    (root / "share" / "demo_pkg" / "launch").mkdir(parents=True)
+    (root / "lib" / "demo_pkg").mkdir(parents=True)
+    exe = root / "lib" / "demo_pkg" / "echo_args"
+    exe.write_text(ECHO_ARGS.format(python=sys.executable))
+    exe.chmod(0o755)
+    return root
+
+
+def ros2(args: list[str], prefix: Path | None = None, timeout: float = 60) -> subprocess.CompletedProcess:
+    env = dict(os.environ)
+    if prefix is not None:
+        env["AMENT_PREFIX_PATH"] = f"{prefix}{os.pathsep}{sys.prefix}"
+    return subprocess.run([*ROS2, *args], capture_output=True, text=True, env=env, timeout=timeout)
+
+
+def write(path: Path, text: str) -> Path:
+    path.write_text(textwrap.dedent(text))
+    return path
+
+
+INCLUDED = """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, LogInfo
+from launch.substitutions import LaunchConfiguration
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument("robot", default_value="burger", description="Which robot"),
+        LogInfo(msg=["included with robot=", LaunchConfiguration("robot")]),
+    ])
+"""
+
+MAIN = """
+import os
+from launch import LaunchDescription
+from launch.actions import (DeclareLaunchArgument, ExecuteProcess, GroupAction, IncludeLaunchDescription, LogInfo,
+    OpaqueFunction, RegisterEventHandler, SetEnvironmentVariable, AppendEnvironmentVariable, TimerAction)
+from launch.conditions import IfCondition, UnlessCondition
+from launch.event_handlers import OnProcessExit
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import (Command, EnvironmentVariable, FindExecutable, LaunchConfiguration,
+    PathJoinSubstitution, PythonExpression, TextSubstitution, ThisLaunchFileDir)
+from launch_ros.actions import Node, PushRosNamespace, SetParameter, SetRemap
+from launch_ros.parameter_descriptions import ParameterValue
+from launch_ros.substitutions import FindPackageShare
+
+
+def say(context, word):
+    return [LogInfo(msg="opaque says " + word + " with use_sim_time=" + context.launch_configurations["use_sim_time"])]
+
+
+def generate_launch_description():
+    use_sim_time = LaunchConfiguration("use_sim_time")
+    first = ExecuteProcess(cmd=[FindExecutable(name="python3"), "-c", "print('first ran')"], name="first", output="screen")
+    description = ParameterValue(Command(["echo ", "<robot name='r'/>"]), value_type=str)
+    return LaunchDescription([
+        DeclareLaunchArgument("use_sim_time", default_value="false", description="Use simulation (Gazebo) clock if true"),
+        DeclareLaunchArgument("namespace", default_value="r1", description="Robot namespace"),
+        SetEnvironmentVariable("GREETING", "hello"),
+        AppendEnvironmentVariable("GREETING", "world", separator=" "),
+        IncludeLaunchDescription(
+            PythonLaunchDescriptionSource(PathJoinSubstitution([ThisLaunchFileDir(), "included.launch.py"])),
+            launch_arguments={"robot": "waffle"}.items(),
+        ),
+        LogInfo(msg="sim time on", condition=IfCondition(use_sim_time)),
+        LogInfo(msg="sim time off", condition=UnlessCondition(use_sim_time)),
+        LogInfo(msg=["twice two is ", PythonExpression(["2 * ", "2"])]),
+        LogInfo(msg=["share is ", FindPackageShare("demo_pkg")]),
+        LogInfo(msg=["home is ", EnvironmentVariable("HOME")]),
+        OpaqueFunction(function=say, args=["hi"]),
+        first,
+        RegisterEventHandler(OnProcessExit(target_action=first, on_exit=[LogInfo(msg="after first exited")])),
+        GroupAction([
+            PushRosNamespace(LaunchConfiguration("namespace")),
+            SetParameter(name="use_sim_time", value=use_sim_time),
+            SetRemap(src="/cmd_vel", dst="cmd_vel_nav"),
+            Node(package="demo_pkg", executable="echo_args", name="talker", output="screen",
+                 parameters=[{"robot_description": description, "rate": 10.5}],
+                 remappings=[("/odom", "odom_raw")], arguments=["--flag"]),
+        ]),
+        Node(package="demo_pkg", executable="echo_args", name="outside", output="screen"),
+        TimerAction(period=0.5, actions=[LogInfo(msg="timer fired")]),
+    ])
+"""
+
+
+def test_a_launch_file_with_includes_conditions_events_groups_and_nodes(tmp_path, prefix):
+    launch_dir = prefix / "share" / "demo_pkg" / "launch"
+    write(launch_dir / "included.launch.py", INCLUDED)
+    write(launch_dir / "main.launch.py", MAIN)
+    out = ros2(["launch", "demo_pkg", "main.launch.py", "use_sim_time:=true"], prefix)
+    text = out.stdout + out.stderr
+    assert out.returncode == 0, text
+    for line in (
+        "[INFO] [launch.user]: included with robot=waffle",
+        "[INFO] [launch.user]: sim time on",
+        "[INFO] [launch.user]: twice two is 4",
+        f"[INFO] [launch.user]: share is {prefix / 'share' / 'demo_pkg'}",
+        "[INFO] [launch.user]: opaque says hi with use_sim_time=true",
+        "[first-1] first ran",
+        "[INFO] [launch.user]: after first exited",
+        "[INFO] [launch.user]: timer fired",
+    ):
+        assert line in text, f"missing {line!r} in:\n{text}"
+    assert "sim time off" not in text
+    # the output prefix is the executable's name, as ros2 launch prints it ([echo_args-2])
+    talker = [ln for ln in text.splitlines() if ln.startswith("[echo_args-") and "__node:=talker" in ln]
+    args = json.loads(talker[0].split("ARGS ", 1)[1])
+    assert args[0] == "--flag" and args[1] == "--ros-args"
+    ros = " ".join(args[2:])
+    assert "-r __node:=talker" in ros and "-r __ns:=/r1" in ros
+    assert "-r /cmd_vel:=cmd_vel_nav" in ros and "-r /odom:=odom_raw" in ros
+    proc = talker[0].split("]", 1)[0] + "]"
+    params = " ".join(ln for ln in text.splitlines() if ln.startswith(proc) and "PARAMS" in ln)
+    assert "use_sim_time: true" in params and "rate: 10.5" in params
+    assert "robot_description: '<robot name=r/>" in params  # the Command's output (shlex-split), a string
+    assert f"{proc} ENV hello world" in text
+    outside = [ln for ln in text.splitlines() if "__node:=outside" in ln]
+    assert "__ns" not in outside[0]  # the group's namespace stayed inside the group
+
+
+def test_show_args_lists_the_arguments_of_the_file_and_its_includes(prefix):
+    launch_dir = prefix / "share" / "demo_pkg" / "launch"
+    write(launch_dir / "included.launch.py", INCLUDED)
+    write(launch_dir / "main.launch.py", MAIN)
+    out = ros2(["launch", "demo_pkg", "main.launch.py", "--show-args"], prefix)
+    assert out.returncode == 0, out.stderr
+    assert "'use_sim_time':" in out.stdout and "Use simulation (Gazebo) clock if true" in out.stdout
+    assert "(default: 'false')" in out.stdout and "'robot':" in out.stdout
+
+
+@pytest.mark.parametrize(
+    "args, expected",
+    [
+        (["launch", "no_such_pkg", "x.launch.py"], "Package 'no_such_pkg' not found"),
+        (["launch", "demo_pkg", "missing.launch.py"], "file 'missing.launch.py' was not found in the share directory"),
+        (["launch", "demo_pkg", "main.launch.py", "colour:=red"], "launch argument(s) 'colour' not declared"),
+        (["run", "no_such_pkg", "x"], "Package 'no_such_pkg' not found"),
+        (["run", "demo_pkg", "no_such_exe"], "No executable found"),
+        (["topic", "list"], "invalid choice: 'topic' (choose from 'launch', 'pkg', 'run')"),
+    ],
+)
+def test_bad_input_is_a_clear_error_without_a_traceback_of_ours(prefix, args, expected):
+    write(prefix / "share" / "demo_pkg" / "launch" / "main.launch.py", INCLUDED)
+    out = ros2(args, prefix)
+    assert out.returncode != 0
+    assert expected in out.stdout + out.stderr
+    assert "Traceback" not in out.stderr
+
+
+def test_a_launch_file_that_raises_shows_the_users_traceback(prefix):
+    write(
+        prefix / "share" / "demo_pkg" / "launch" / "bad.launch.py",
+        """
+        from launch import LaunchDescription
+
+
+        def generate_launch_description():
+            robots = {"burger": 1}
+            return LaunchDescription([robots["waffle"]])
+        """,
+    )
+    out = ros2(["launch", "demo_pkg", "bad.launch.py"], prefix)
+    assert out.returncode == 1
+    assert 'bad.launch.py", line 7, in generate_launch_description' in out.stderr
+    assert "KeyError: 'waffle'" in out.stderr
+    assert "gazelle" not in out.stderr.split("Traceback", 1)[-1]  # only the user's frames
+
+
+def test_an_unsupported_launch_api_names_itself_and_the_line(prefix):
+    write(
+        prefix / "share" / "demo_pkg" / "launch" / "each.launch.py",
+        """
+        from launch import LaunchDescription
+        from launch.actions import ForEach
+
+
+        def generate_launch_description():
+            return LaunchDescription([ForEach([1], function=print)])
+        """,
+    )
+    out = ros2(["launch", "demo_pkg", "each.launch.py"], prefix)
+    assert out.returncode == 1
+    assert "launch.actions.ForEach is not supported by gazelle's launch yet" in out.stderr
+    assert 'each.launch.py", line 7' in out.stderr
+
+
+def test_ros2_run_finds_lib_and_colcon_bin_executables_and_pkg_lists_them(tmp_path, prefix):
+    out = ros2(["run", "demo_pkg", "echo_args", "a", "b"], prefix)
+    assert out.returncode == 0 and 'ARGS ["a", "b"]' in out.stdout
+    # an ament_python package built by colcon without setup.cfg: its scripts land in <prefix>/bin
+    ws = tmp_path / "ws_install" / "blogpkg"
+    (ws / "share" / "ament_index" / "resource_index" / "packages").mkdir(parents=True)
+    (ws / "share" / "ament_index" / "resource_index" / "packages" / "blogpkg").write_text("")
+    (ws / "bin").mkdir()
+    (ws / "bin" / "node").write_text(ECHO_ARGS.format(python=sys.executable))
+    (ws / "bin" / "node").chmod(0o755)
+    env_prefix = f"{ws}{os.pathsep}{prefix}"
+    out = ros2(["run", "blogpkg", "node", "x"], Path(env_prefix))
+    assert out.returncode == 0 and 'ARGS ["x"]' in out.stdout
+    listed = ros2(["pkg", "executables", "demo_pkg"], prefix)
+    assert listed.stdout.strip() == "demo_pkg echo_args"
+    assert "demo_pkg" in ros2(["pkg", "list"], prefix).stdout.split()
+
+
+def test_ctrl_c_stops_the_whole_tree_within_5_s(tmp_path, prefix):
+    write(
+        prefix / "share" / "demo_pkg" / "launch" / "sleepers.launch.py",
+        """
+        from launch import LaunchDescription
+        from launch.actions import ExecuteProcess
+
+
+        def generate_launch_description():
+            stubborn = "import signal, time; signal.signal(signal.SIGINT, signal.SIG_IGN); print('up', flush=True); time.sleep(60)"
+            return LaunchDescription([
+                ExecuteProcess(cmd=["python3", "-c", "import time; print('up', flush=True); time.sleep(60)"], output="screen"),
+                ExecuteProcess(cmd=["python3", "-c", stubborn], name="stubborn", output="screen"),
+            ])
+        """,
+    )
+    env = dict(os.environ, AMENT_PREFIX_PATH=f"{prefix}{os.pathsep}{sys.prefix}")
+    proc = subprocess.Popen(
+        [*ROS2, "launch", "demo_pkg", "sleepers.launch.py"],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        env=env,
+    )
+    lines: list[str] = []
+    assert proc.stdout is not None
+    deadline = time.monotonic() + 30
+    while sum("] up" in ln for ln in lines) < 2 and time.monotonic() < deadline:
+        lines.append(proc.stdout.readline())
+    pids = [int(ln.split("pid [")[1].split("]")[0]) for ln in lines if "process started with pid" in ln]
+    assert len(pids) == 2, "".join(lines)
+    t0 = time.monotonic()
+    proc.send_signal(signal.SIGINT)
+    rest, _ = proc.communicate(timeout=10)
+    elapsed = time.monotonic() - t0
+    assert elapsed < 5.0, f"took {elapsed:.1f} s"
+    assert "user interrupted with ctrl-c (SIGINT)" in rest
+    for pid in pids:
+        with pytest.raises(ProcessLookupError):
+            os.kill(pid, 0)
+
+
+def test_gazelle_launch_and_run_are_the_ros2_verbs(prefix):
+    env = dict(os.environ, AMENT_PREFIX_PATH=f"{prefix}{os.pathsep}{sys.prefix}")
+    gazelle = [sys.executable, "-m", "gazelle.cli"]
+    out = subprocess.run([*gazelle, "run", "demo_pkg", "echo_args", "z"], capture_output=True, text=True, env=env)
+    assert out.returncode == 0 and 'ARGS ["z"]' in out.stdout
+    write(prefix / "share" / "demo_pkg" / "launch" / "one.launch.py", INCLUDED)
+    out = subprocess.run(
+        [*gazelle, "launch", "demo_pkg", "one.launch.py", "robot:=waffle"], capture_output=True, text=True, env=env
+    )
+    assert out.returncode == 0 and "included with robot=waffle" in out.stderr
