@@ -7,7 +7,9 @@ A `gazelle sim` server process, robots spawned with `gazelle spawn`, controllers
 from __future__ import annotations
 
 import math
+import sys
 import threading
+from pathlib import Path
 
 import pytest
 from _paths import REAL as FIXTURES
@@ -128,8 +130,14 @@ def test_r6bot_follows_a_trajectory_holds_and_aborts_on_path_tolerance(sim_facto
     spawn = start([*GAZELLE, "spawn", "-entity", "r6bot", "-file", str(R6BOT_URDF)], "spawn")
     assert spawn.wait(120) == 0, spawn.output
     sim.wait_line("controller manager '/controller_manager'", 10)
-    rc, out = _spawner("joint_state_broadcaster", "joint_trajectory_controller", "-p", str(R6BOT_YAML))
-    assert rc == 0, out
+    # as launch files start it: `ros2 run controller_manager spawner ...`
+    ros2 = start(
+        [str(Path(sys.prefix) / "bin" / "ros2"), "run", "controller_manager", "spawner"]
+        + ["joint_state_broadcaster", "joint_trajectory_controller", "-p", str(R6BOT_YAML)],
+        "ros2 run spawner",
+    )
+    assert ros2.wait(60) == 0, ros2.output
+    assert "Configured and activated joint_trajectory_controller" in ros2.output
 
     joints: list[JointState] = []
     ros_client.node.create_subscription(JointState, "/joint_states", joints.append, 10)
