@@ -40,7 +40,7 @@ def main() -> int:
         times = []
         for run in range(3):
             got: list[float] = []
-            sub = node.create_subscription(Odometry, "/odom", lambda _m: got.append(time.perf_counter()), 10)
+            sub = node.create_subscription(Odometry, "/odom", lambda _m, got=got: got.append(time.perf_counter()), 10)
             t0 = time.perf_counter()
             proc = subprocess.Popen(
                 [

@@ -21,10 +21,14 @@ from typing import Any
 import rclpy
 from gazebo_msgs.msg import ModelStates
 from gazebo_msgs.srv import DeleteEntity as GzDeleteEntity
+from gazebo_msgs.srv import DeleteModel as GzDeleteModel
 from gazebo_msgs.srv import GetEntityState as GzGetEntityState
 from gazebo_msgs.srv import GetModelList as GzGetModelList
+from gazebo_msgs.srv import GetModelState as GzGetModelState
 from gazebo_msgs.srv import SetEntityState as GzSetEntityState
+from gazebo_msgs.srv import SetModelState as GzSetModelState
 from gazebo_msgs.srv import SpawnEntity as GzSpawnEntity
+from gazebo_msgs.srv import SpawnModel as GzSpawnModel
 from geometry_msgs.msg import Twist
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.context import Context
@@ -218,6 +222,12 @@ class SimulationNode(Node):
             (Empty, "/unpause_physics", self._unpause),
             (Empty, "/reset_simulation", self._reset_simulation),
             (Empty, "/reset_world", self._reset_world),
+            # ROS 1 gazebo_ros's names (the seed's chessboard spawner calls /gazebo/spawn_sdf_model)
+            (GzSpawnModel, "/gazebo/spawn_sdf_model", self._ros1_spawn),
+            (GzSpawnModel, "/gazebo/spawn_urdf_model", self._ros1_spawn),
+            (GzDeleteModel, "/gazebo/delete_model", self._ros1_delete),
+            (GzGetModelState, "/gazebo/get_model_state", self._ros1_get_state),
+            (GzSetModelState, "/gazebo/set_model_state", self._ros1_set_state),
         ):
             self._srv.append(self.create_service(srv_type, name, guarded_service(name, cb), callback_group=self._cb))
         from ._simulation_interfaces import register  # simulation_interfaces services under ~/
@@ -559,6 +569,59 @@ class SimulationNode(Node):
             res.success = False
             return res
         res.success = True
+        return res
+
+    # ------------------------------------------------------------------ ROS 1 names
+    def _ros1_spawn(self, req: GzSpawnModel.Request, res: GzSpawnModel.Response) -> GzSpawnModel.Response:
+        """/gazebo/spawn_sdf_model and /gazebo/spawn_urdf_model: SpawnEntity under ROS 1's names."""
+        inner = GzSpawnEntity.Request(
+            name=req.model_name,
+            xml=req.model_xml,
+            robot_namespace=req.robot_namespace,
+            initial_pose=req.initial_pose,
+            reference_frame=req.reference_frame,
+        )
+        out = self._gz_spawn(inner, GzSpawnEntity.Response())
+        res.success = out.success
+        res.status_message = out.status_message.replace("SpawnEntity:", "SpawnModel:", 1)
+        return res
+
+    def _ros1_delete(self, req: GzDeleteModel.Request, res: GzDeleteModel.Response) -> GzDeleteModel.Response:
+        """/gazebo/delete_model."""
+        out = self._gz_delete(GzDeleteEntity.Request(name=req.model_name), GzDeleteEntity.Response())
+        res.success = out.success
+        res.status_message = out.status_message.replace("DeleteEntity:", "DeleteModel:", 1)
+        return res
+
+    def _ros1_get_state(self, req: GzGetModelState.Request, res: GzGetModelState.Response) -> GzGetModelState.Response:
+        """/gazebo/get_model_state: the entity's pose and twist relative to ``relative_entity_name``."""
+        out = self._gz_get_state(
+            GzGetEntityState.Request(name=req.model_name, reference_frame=req.relative_entity_name),
+            GzGetEntityState.Response(),
+        )
+        res.success = out.success
+        res.header = out.header
+        res.pose = out.state.pose
+        res.twist = out.state.twist
+        where = f"model [{req.model_name}] or frame [{req.relative_entity_name}]"
+        res.status_message = "GetModelState: got properties" if out.success else f"GetModelState: no {where}"
+        return res
+
+    def _ros1_set_state(self, req: GzSetModelState.Request, res: GzSetModelState.Response) -> GzSetModelState.Response:
+        """/gazebo/set_model_state."""
+        m = req.model_state
+        inner = GzSetEntityState.Request()
+        inner.state.name = m.model_name
+        inner.state.pose = m.pose
+        inner.state.twist = m.twist
+        inner.state.reference_frame = m.reference_frame
+        out = self._gz_set_state(inner, GzSetEntityState.Response())
+        res.success = out.success
+        res.status_message = (
+            "SetModelState: set model state done"
+            if out.success
+            else (f"SetModelState: could not set the state of [{m.model_name}] (see the server's log)")
+        )
         return res
 
     def _gz_model_list(self, req: GzGetModelList.Request, res: GzGetModelList.Response) -> GzGetModelList.Response:

@@ -149,3 +149,33 @@ def test_model_states_lists_spawned_entities_with_their_poses(sim_factory, ros_c
     assert count.wait(10), f"only {len(stamps)} /model_states in 10 s"
     rate = 40 / (stamps[40] - stamps[0])
     assert 60 < rate < 140, f"/model_states at {rate:.0f} Hz of sim time (expected 100)"
+
+
+def test_a_literal_port_of_the_seeds_ros1_script_lays_out_the_board(sim_factory, ros_client):
+    """The seed's ROS 1 spawn_chessboard.py, line by line in rclpy, on /gazebo/delete_model and
+    /gazebo/spawn_sdf_model; the board and pieces are then read back with /gazebo/get_model_state."""
+    from gazebo_msgs.srv import GetModelState
+
+    script = EXAMPLE / "spawn_chessboard_ros1.py"
+    assert not re.search(r"^\s*(import|from)\s+gazelle", script.read_text(), re.M)
+    sim_factory()
+    proc = start([sys.executable, str(script)], script.name)
+    assert proc.wait(120) == 0, proc.output
+    assert "SpawnModel: Successfully spawned entity [chessboard]" in proc.output
+
+    def board_time() -> float:
+        st = ros_client.call(GetModelState, "/gazebo/get_model_state", GetModelState.Request(model_name="chessboard"))
+        assert st.success, st.status_message
+        return st.header.stamp.sec + st.header.stamp.nanosec * 1e-9
+
+    t0 = board_time()
+    wait_for(lambda: board_time() >= t0 + 2.0, 30, "2 s of sim time")
+    for r in ROWS:
+        for c in COLS:
+            st = ros_client.call(
+                GetModelState, "/gazebo/get_model_state", GetModelState.Request(model_name=f"piece_{r}_{c}")
+            )
+            assert st.success, f"piece_{r}_{c}: {st.status_message}"
+            x, y = cell(r, c)
+            p = st.pose.position
+            assert math.hypot(p.x - x, p.y - y) < 0.005 and abs(p.z - (BOARD_TOP + PIECE_HEIGHT / 2)) < 0.002, (r, c, p)
