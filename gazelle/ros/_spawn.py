@@ -39,7 +39,15 @@ def build_parser() -> argparse.ArgumentParser:
     source.add_argument("-string", dest="string", help="entity XML given on the command line")
     source.add_argument("-database", dest="database", help="spawn model://NAME from the resource paths")
     source.add_argument("-stdin", dest="stdin", action="store_true", help="load entity XML from standard input")
-    p.add_argument("-entity", dest="entity", required=True, help="name of the entity to spawn")
+    source.add_argument(
+        "-param",
+        dest="param",
+        help="ROS 1 spawn_model: the description parameter; in ROS 2 read from the topic of that name "
+        "(robot_state_publisher publishes it)",
+    )
+    p.add_argument("-entity", "-model", dest="entity", required=True, help="name of the entity to spawn")
+    p.add_argument("-sdf", action="store_true", help="ROS 1 spawn_model: the XML is SDF (detected anyway)")
+    p.add_argument("-urdf", action="store_true", help="ROS 1 spawn_model: the XML is URDF (detected anyway)")
     p.add_argument("-reference_frame", default="", help="frame of the pose ('' or world = world)")
     p.add_argument("-gazebo_namespace", default="", help="ROS namespace of the spawn service")
     p.add_argument("-robot_namespace", default="", help="namespace for the entity's topics")
@@ -188,6 +196,8 @@ def main(argv: list[str]) -> int:
     """Run ``gazelle spawn``; returns the exit code."""
     argv, ros_args = _split_ros_args(argv)
     args = build_parser().parse_args(argv)
+    if args.param:  # ROS 1's parameter server is ROS 2's latched description topic
+        args.topic = args.param
     args.params_files = _params_files(ros_args)
     timeout = args.spawn_service_timeout if args.spawn_service_timeout is not None else args.timeout
     if not math.isfinite(timeout) or timeout < 0:

@@ -1,0 +1,55 @@
+"""ros_gz_sim's gz_sim.launch.py for gazelle: `gazelle sim` from gz_args (a world file, -r to run,
+-s for no GUI: no viewer; gz's empty.sdf is gazelle's default world)."""
+
+import shlex
+
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, ExecuteProcess, LogInfo, OpaqueFunction, Shutdown
+
+GAZELLE = "@GAZELLE@"
+
+
+def _server(context):
+    cfg = context.launch_configurations
+    tokens = shlex.split(cfg.get("gz_args", ""))
+    cmd, world, run, ignored = [GAZELLE, "sim"], "", False, []
+    skip = False
+    for i, tok in enumerate(tokens):
+        if skip:
+            skip = False
+            continue
+        if tok == "-r":
+            run = True
+        elif tok in ("-s", "--headless-rendering"):
+            cmd.append("--no-viewer") if tok == "-s" else None
+        elif tok in ("-v", "--verbose", "--render-engine", "--physics-engine", "--gui-config"):
+            skip = i + 1 < len(tokens) and not tokens[i + 1].startswith("-")
+            ignored.append(tok)
+        elif tok.startswith("-v") and tok[2:].isdigit():
+            ignored.append(tok)
+        elif not tok.startswith("-"):
+            world = tok
+        else:
+            ignored.append(tok)
+    if world and world not in ("empty.sdf", "empty.world"):
+        cmd.insert(2, world)
+    if not run:
+        cmd.append("--paused")  # gz sim starts paused without -r
+    actions = []
+    if ignored:
+        actions.append(LogInfo(msg=f"gz_args {' '.join(ignored)} have no meaning for gazelle sim"))
+    shutdown = cfg.get("on_exit_shutdown", "false").lower() in ("true", "1")
+    actions.append(ExecuteProcess(cmd=cmd, name="gazebo", output="screen", on_exit=Shutdown() if shutdown else None))
+    return actions
+
+
+def generate_launch_description():
+    return LaunchDescription(
+        [
+            DeclareLaunchArgument("gz_args", default_value="", description="Arguments to be passed to Gazebo Sim"),
+            DeclareLaunchArgument("gz_version", default_value="8", description="Gazebo Sim's major version"),
+            DeclareLaunchArgument("ign_args", default_value="", description="Deprecated: use gz_args"),
+            DeclareLaunchArgument("on_exit_shutdown", default_value="false", description="Shutdown on gz-sim exit"),
+            OpaqueFunction(function=_server),
+        ]
+    )
