@@ -8,7 +8,8 @@ packages would lay them out:
     VENV/share/PKG/...            (package.xml, launch files)
     VENV/lib/PKG/EXECUTABLE       (with VENV's python in its #! line)
 
-Idempotent; a package the venv already has for real (no gazelle marker) is left alone.
+It also repairs the wheels' CMake exports (see repair_cmake_exports). Idempotent; a package the
+venv already has for real (no gazelle marker) is left alone.
 
     scripts/install_ros_packages.py VENV_DIR
 """
@@ -21,6 +22,28 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 MARKER = ".gazelle-compat"
+
+
+WHEEL_PYTHON_INCLUDE = "/opt/python/cp311-cp311/include/python3.11"
+"""Where the machine that built the ROS wheels had Python's headers: their CMake exports name it."""
+WHEEL_NUMPY_INCLUDE = "/opt/python/cp311-cp311/lib/python3.11/site-packages/numpy/_core/include"
+"""And numpy's headers there."""
+
+
+def repair_cmake_exports(venv: Path) -> None:
+    """Point the wheels' exported ``*__rosidl_generator_py`` CMake targets at this Python's headers, so
+    that ``colcon build`` of a user's interface package (ament_cmake + rosidl) configures; the wheels
+    name the build machine's folder, which does not exist here."""
+    import subprocess
+
+    code = "import sysconfig, numpy; print(sysconfig.get_paths()['include']); print(numpy.get_include())"
+    out = subprocess.run([str(venv / "bin" / "python"), "-c", code], capture_output=True, text=True, check=True)
+    include, numpy_include = out.stdout.split()
+    for export in (venv / "share").glob("*/cmake/*__rosidl_generator_pyExport.cmake"):
+        text = export.read_text()
+        fixed = text.replace(WHEEL_PYTHON_INCLUDE, include).replace(WHEEL_NUMPY_INCLUDE, numpy_include)
+        if fixed != text:
+            export.write_text(fixed)
 
 
 def main() -> int:
@@ -58,6 +81,7 @@ def main() -> int:
                 dest.write_text(exe.read_text().replace("@PYTHON@", str(python)))
                 dest.chmod(0o755)
         (index / pkg.name).write_text("")
+    repair_cmake_exports(venv)
     # colcon chains workspaces over prefixes with a local_setup file; the venv is one
     for shell in ("sh", "bash"):
         f = venv / f"local_setup.{shell}"

@@ -290,3 +290,42 @@ def test_gazelle_launch_and_run_are_the_ros2_verbs(prefix):
         [*gazelle, "launch", "demo_pkg", "one.launch.py", "robot:=waffle"], capture_output=True, text=True, env=env
     )
     assert out.returncode == 0 and "included with robot=waffle" in out.stderr
+
+
+def test_a_failing_required_process_is_reported_and_shuts_the_launch_down(prefix):
+    (prefix / "share" / "demo_pkg" / "config").mkdir()
+    (prefix / "share" / "demo_pkg" / "config" / "p.yaml").write_text("/**:\n  ros__parameters:\n    speed: 2.5\n")
+    write(
+        prefix / "share" / "demo_pkg" / "launch" / "required.launch.py",
+        """
+        import os
+        from launch import LaunchDescription
+        from launch.actions import ExecuteProcess, LogInfo, RegisterEventHandler, Shutdown
+        from launch.event_handlers import OnProcessStart, OnShutdown
+        from launch_ros.actions import Node
+        from launch_ros.parameter_descriptions import ParameterFile
+        from launch_ros.substitutions import FindPackageShare
+        from launch.substitutions import PathJoinSubstitution
+
+
+        def generate_launch_description():
+            sleeper = ExecuteProcess(cmd=["python3", "-c", "import time; time.sleep(60)"], name="sleeper")
+            params = ParameterFile(PathJoinSubstitution([FindPackageShare("demo_pkg"), "config", "p.yaml"]))
+            return LaunchDescription([
+                sleeper,
+                RegisterEventHandler(OnProcessStart(target_action=sleeper, on_start=[LogInfo(msg="sleeper is up")])),
+                RegisterEventHandler(OnShutdown(on_shutdown=[LogInfo(msg="shutting down now")])),
+                Node(package="demo_pkg", executable="echo_args", name="reader", parameters=[params], output="screen"),
+                ExecuteProcess(cmd=["python3", "-c", "import sys, time; time.sleep(0.5); sys.exit(3)"],
+                               name="required", on_exit=Shutdown(reason="required process died")),
+            ])
+        """,
+    )
+    t0 = time.monotonic()
+    out = ros2(["launch", "demo_pkg", "required.launch.py"], prefix)
+    text = out.stdout + out.stderr
+    assert time.monotonic() - t0 < 20, text  # the sleeper did not keep it alive for 60 s
+    assert "[INFO] [launch.user]: sleeper is up" in text
+    assert "[ERROR] [required-" in text and "process has died" in text and "exit code 3" in text
+    assert "[INFO] [launch.user]: shutting down now" in text
+    assert "PARAMS /**:|  ros__parameters:|    speed: 2.5|" in text  # the ParameterFile reached the node

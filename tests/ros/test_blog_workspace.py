@@ -193,3 +193,51 @@ def test_the_blog_commands_build_launch_and_drive_the_robot(tmp_path, ros_client
     assert elapsed < 6.0, f"Ctrl-C took {elapsed:.1f} s"
     assert rc in (0, -signal.SIGINT, 130), launch.output
     wait_for(lambda: not _group_alive(launch.popen.pid), 5, "every launched process to exit")
+
+
+INTERFACE_PACKAGE_XML = """<?xml version="1.0"?>
+<package format="3">
+  <name>my_msgs</name>
+  <version>0.0.1</version>
+  <description>A user's interface package</description>
+  <maintainer email="user@example.com">user</maintainer>
+  <license>Apache-2.0</license>
+  <buildtool_depend>ament_cmake</buildtool_depend>
+  <buildtool_depend>rosidl_default_generators</buildtool_depend>
+  <depend>std_msgs</depend>
+  <exec_depend>rosidl_default_runtime</exec_depend>
+  <member_of_group>rosidl_interface_packages</member_of_group>
+  <export><build_type>ament_cmake</build_type></export>
+</package>
+"""
+
+INTERFACE_CMAKE = """cmake_minimum_required(VERSION 3.8)
+project(my_msgs)
+find_package(ament_cmake REQUIRED)
+find_package(rosidl_default_generators REQUIRED)
+find_package(std_msgs REQUIRED)
+rosidl_generate_interfaces(${PROJECT_NAME} "msg/Num.msg" DEPENDENCIES std_msgs)
+ament_package()
+"""
+
+ROUND_TRIP = (
+    "import rclpy; from my_msgs.msg import Num; rclpy.init(); n = rclpy.create_node('rt'); got = []; "
+    "n.create_subscription(Num, 'num', got.append, 10); p = n.create_publisher(Num, 'num', 10); "
+    "[(p.publish(Num(num=42)), rclpy.spin_once(n, timeout_sec=0.1)) for _ in range(50) if not got]; "
+    "print('GOT', got[0].num if got else None)"
+)
+
+
+@pytest.mark.slow
+def test_colcon_builds_an_ament_cmake_interface_package_and_rclpy_uses_it(tmp_path):
+    pkg = tmp_path / "ws" / "src" / "my_msgs"
+    (pkg / "msg").mkdir(parents=True)
+    (pkg / "package.xml").write_text(INTERFACE_PACKAGE_XML)
+    (pkg / "CMakeLists.txt").write_text(INTERFACE_CMAKE)
+    (pkg / "msg" / "Num.msg").write_text("int64 num\nstd_msgs/Header header\n")
+    ws = tmp_path / "ws"
+    build = shell(f"cd {ws} && colcon build", "colcon")
+    assert build.wait(300) == 0, build.output
+    run = shell(f'cd {ws} && source install/setup.bash && python -c "{ROUND_TRIP}"', "round trip")
+    assert run.wait(60) == 0, run.output
+    assert "GOT 42" in run.output, run.output
