@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Register gazelle's stand-ins for ROS packages that are not on PyPI (compat/ros_packages/: gazebo_ros,
-robot_state_publisher, controller_manager, xacro) in a virtualenv's ament index, so that
+robot_state_publisher, controller_manager, ros_gz_sim, ros_gz_bridge, joint_state_publisher, xacro;
+compat/python/: gazebo_ros's Python module) in a virtualenv's ament index, so that
 get_package_share_directory, FindPackageShare and `ros2 run` find them, as an install of the real
 packages would lay them out:
 
@@ -46,6 +47,21 @@ def repair_cmake_exports(venv: Path) -> None:
             export.write_text(fixed)
 
 
+def install_python_modules(venv: Path) -> None:
+    """compat/python/* (gazebo_ros's GazeboRosPaths) into the venv's site-packages, marked as ours."""
+    import sysconfig
+
+    site = Path(sysconfig.get_paths(vars={"base": str(venv), "platbase": str(venv)})["purelib"])
+    for module in sorted((ROOT / "compat" / "python").iterdir()):
+        dest = site / module.name
+        if dest.exists() and not (dest / MARKER).exists():
+            continue  # a real one
+        if dest.exists():
+            shutil.rmtree(dest)
+        shutil.copytree(module, dest, ignore=shutil.ignore_patterns("__pycache__"))
+        (dest / MARKER).write_text("installed by gazelle's scripts/install_ros_packages.py\n")
+
+
 def main() -> int:
     venv = Path(sys.argv[1]).resolve()
     python = venv / "bin" / "python"
@@ -81,6 +97,7 @@ def main() -> int:
                 dest.write_text(exe.read_text().replace("@PYTHON@", str(python)))
                 dest.chmod(0o755)
         (index / pkg.name).write_text("")
+    install_python_modules(venv)
     repair_cmake_exports(venv)
     # colcon chains workspaces over prefixes with a local_setup file; the venv is one
     for shell in ("sh", "bash"):

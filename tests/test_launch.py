@@ -329,3 +329,13 @@ def test_a_failing_required_process_is_reported_and_shuts_the_launch_down(prefix
     assert "[ERROR] [required-" in text and "process has died" in text and "exit code 3" in text
     assert "[INFO] [launch.user]: shutting down now" in text
     assert "PARAMS /**:|  ros__parameters:|    speed: 2.5|" in text  # the ParameterFile reached the node
+
+
+def test_gazebo_ros_paths_for_launch_files_that_import_it(prefix):
+    code = "from gazebo_ros import GazeboRosPaths; m, p, r = GazeboRosPaths.get_paths(); print(m); print(p)"
+    env = dict(os.environ, AMENT_PREFIX_PATH=f"{prefix}{os.pathsep}{sys.prefix}", GAZEBO_MODEL_PATH="/mine")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env)
+    assert out.returncode == 0, out.stderr
+    model, plugin = out.stdout.splitlines()
+    assert model.split(os.pathsep)[0] == "/mine" and str(prefix / "share") in model.split(os.pathsep)
+    assert str(prefix / "lib") in plugin.split(os.pathsep)
