@@ -94,11 +94,11 @@ class ControllerManagerNode(Node):
             (ListControllerTypes, "list_controller_types", self._list_types),
             (ListHardwareInterfaces, "list_hardware_interfaces", self._list_interfaces),
             (ListHardwareComponents, "list_hardware_components", self._list_components),
-            (LoadController, "load_controller", self._load),
-            (ConfigureController, "configure_controller", self._configure),
-            (CleanupController, "cleanup_controller", self._cleanup),
+            (LoadController, "load_controller", self._by_name(manager.load_controller)),
+            (ConfigureController, "configure_controller", self._by_name(manager.configure_controller)),
+            (CleanupController, "cleanup_controller", self._by_name(manager.cleanup_controller)),
             (SwitchController, "switch_controller", self._switch),
-            (UnloadController, "unload_controller", self._unload),
+            (UnloadController, "unload_controller", self._by_name(manager.unload_controller)),
             (SetHardwareComponentState, "set_hardware_component_state", self._set_hw_state),
         ):
             self.create_service(srv_type, f"~/{name}", self._guard(name, fn), callback_group=self._cb)
@@ -211,20 +211,15 @@ class ControllerManagerNode(Node):
         res.component = self.sim.call(query)
         return res
 
-    def _load(self, req: Any, res: Any) -> Any:
-        self.sim.call(lambda: self.manager.load_controller(req.name))
-        res.ok = True
-        return res
+    def _by_name(self, action: Any) -> Any:
+        """A service whose request is a controller's ``name``: ``action(name)`` on the simulation thread."""
 
-    def _configure(self, req: Any, res: Any) -> Any:
-        self.sim.call(lambda: self.manager.configure_controller(req.name))
-        res.ok = True
-        return res
+        def serve(req: Any, res: Any) -> Any:
+            self.sim.call(lambda: action(req.name))
+            res.ok = True
+            return res
 
-    def _cleanup(self, req: Any, res: Any) -> Any:
-        self.sim.call(lambda: self.manager.cleanup_controller(req.name))
-        res.ok = True
-        return res
+        return serve
 
     def _switch(self, req: Any, res: Any) -> Any:
         activate, deactivate = list(req.activate_controllers), list(req.deactivate_controllers)
@@ -234,11 +229,6 @@ class ControllerManagerNode(Node):
             self._log.warning(f"switch_controller (best effort): {p}")
         res.ok = True
         res.message = "; ".join(problems) if problems else "Switch successful"
-        return res
-
-    def _unload(self, req: Any, res: Any) -> Any:
-        self.sim.call(lambda: self.manager.unload_controller(req.name))
-        res.ok = True
         return res
 
     def _set_hw_state(self, req: Any, res: Any) -> Any:

@@ -115,12 +115,12 @@ def joint_state_publisher_main(argv: list[str] | None = None) -> int:
     import math
 
     import rclpy
-    from rclpy.executors import ExternalShutdownException
     from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
     from sensor_msgs.msg import JointState
     from std_msgs.msg import String
 
     from ..description import JointType, Model, ModelLoadError, load_string
+    from ._rsp_node import spin_until_interrupted
 
     rclpy.init(args=sys.argv if argv is None else argv)
     node = rclpy.create_node("joint_state_publisher")
@@ -164,11 +164,5 @@ def joint_state_publisher_main(argv: list[str] | None = None) -> int:
         pub.publish(msg)
 
     node.create_timer(1.0 / max(rate, 1e-3), tick)
-    try:
-        rclpy.spin(node)
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
-    finally:
-        node.destroy_node()
-        rclpy.try_shutdown()  # pyright: ignore[reportPrivateImportUsage]
+    spin_until_interrupted(node)
     return 0

@@ -123,6 +123,12 @@ def main(argv: list[str] | None = None) -> int:
         print(f"[ERROR] [robot_state_publisher]: {err}", file=sys.stderr)
         rclpy.try_shutdown()  # pyright: ignore[reportPrivateImportUsage]
         return 1
+    spin_until_interrupted(node)
+    return 0
+
+
+def spin_until_interrupted(node: Node) -> None:
+    """Spin ``node`` until Ctrl-C (or an external shutdown), then destroy it and shut rclpy down."""
     try:
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):
@@ -130,4 +136,3 @@ def main(argv: list[str] | None = None) -> int:
     finally:
         node.destroy_node()
         rclpy.try_shutdown()  # pyright: ignore[reportPrivateImportUsage]
-    return 0
