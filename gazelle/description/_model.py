@@ -700,6 +700,10 @@ class SphericalCoordinates:
     world_frame_orientation: str = "ENU"
 
 
+DEFAULT_MAGNETIC_FIELD: Vec3 = (5.5645e-6, 22.8758e-6, -42.3884e-6)
+"""SDF's default ``<magnetic_field>`` (tesla, ENU world frame)."""
+
+
 @dataclass(frozen=True, slots=True)
 class World:
     """A world: settings, models and lights."""
@@ -715,6 +719,8 @@ class World:
     location: SourceLocation | None = None
     spherical_coordinates: SphericalCoordinates | None = None
     """None: the world does not say (GPS sensors then place its origin at 0° N, 0° E, as gz-sim does)."""
+    magnetic_field: Vec3 = DEFAULT_MAGNETIC_FIELD
+    """``<magnetic_field>`` in tesla, world frame (magnetometers read it); SDF's default otherwise."""
 
 
 @dataclass(frozen=True, slots=True)

@@ -40,6 +40,7 @@ from ._fuel import BUILTIN as FUEL_BUILTIN
 from ._fuel import FuelModel, cache_roots, find_cached, parse_fuel_uri
 from ._inertia import default_inertial, inertia_from_geometries, inertia_problem
 from ._model import (
+    DEFAULT_MAGNETIC_FIELD,
     IDENTITY,
     Box,
     Capsule,
@@ -149,7 +150,18 @@ _USED: dict[str, frozenset[str]] = {
     "axis": frozenset({"xyz", "limit", "dynamics", "use_parent_model_frame", "mimic"}),
     "limit": frozenset({"lower", "upper", "effort", "velocity"}),
     "world": frozenset(
-        {"gravity", "physics", "scene", "light", "model", "include", "plugin", "frame", "spherical_coordinates"}
+        {
+            "gravity",
+            "physics",
+            "scene",
+            "light",
+            "model",
+            "include",
+            "plugin",
+            "frame",
+            "spherical_coordinates",
+            "magnetic_field",
+        }
     ),
     "spherical_coordinates": frozenset(
         {"surface_model", "world_frame_orientation", "latitude_deg", "longitude_deg", "elevation", "heading_deg"}
@@ -1526,6 +1538,11 @@ class _Loader:
             gravity = self.vector(element, "gravity", 3, gravity, doc)
         elif physics_el is not None:
             gravity = self.vector(physics_el, "gravity", 3, gravity, doc)
+        magnetic = DEFAULT_MAGNETIC_FIELD
+        if _find(element, "magnetic_field") is not None:
+            magnetic = self.vector(element, "magnetic_field", 3, magnetic, doc)
+        elif physics_el is not None and _find(physics_el, "magnetic_field") is not None:
+            magnetic = self.vector(physics_el, "magnetic_field", 3, magnetic, doc)
         spherical = None
         sph_el = _find(element, "spherical_coordinates")
         if sph_el is not None:
@@ -1672,6 +1689,7 @@ class _Loader:
             source_file=doc.source,
             location=loc,
             spherical_coordinates=spherical,
+            magnetic_field=magnetic,  # type: ignore[arg-type]
         )
 
 

@@ -22,6 +22,7 @@ from sensor_msgs.msg import Image as ImageMsg
 from sensor_msgs.msg import Imu as ImuMsg
 from sensor_msgs.msg import JointState as JointStateMsg
 from sensor_msgs.msg import LaserScan as LaserScanMsg
+from sensor_msgs.msg import MagneticField as MagneticFieldMsg
 from sensor_msgs.msg import NavSatFix as NavSatFixMsg
 from sensor_msgs.msg import NavSatStatus, PointCloud2, PointField
 from sensor_msgs.msg import Range as RangeMsg
@@ -44,6 +45,7 @@ from ..systems import (
     JointStates,
     JointTrajectory,
     LaserScan,
+    MagneticField,
     MsgType,
     NavSatFix,
     Odometry,
@@ -286,6 +288,15 @@ def _to_tf(batch: TransformBatch) -> TFMessage:
     return TFMessage(transforms=[to_transform_msg(t) for t in batch.transforms])
 
 
+def to_magnetic_field_msg(m: MagneticField) -> MagneticFieldMsg:
+    """Bus payload -> sensor_msgs/MagneticField."""
+    msg = MagneticFieldMsg(magnetic_field_covariance=list(m.covariance))
+    msg.header.stamp = to_time(m.stamp_sec)
+    msg.header.frame_id = m.frame_id
+    msg.magnetic_field.x, msg.magnetic_field.y, msg.magnetic_field.z = m.field
+    return msg
+
+
 def to_duration(sec: float) -> Duration:
     """builtin_interfaces/Duration from seconds (the nanoseconds always non-negative, as ROS keeps them)."""
     s = math.floor(sec)
@@ -395,6 +406,7 @@ ROS_TYPES = {
     MsgType.VECTOR3_STAMPED: Vector3StampedMsg,
     MsgType.WRENCH_STAMPED: WrenchStampedMsg,
     MsgType.TWIST_STAMPED: TwistStampedMsg,
+    MsgType.MAGNETIC_FIELD: MagneticFieldMsg,
     MsgType.FLOAT64_ARRAY: Float64MultiArray,
     MsgType.JOINT_TRAJECTORY: JointTrajectoryMsg,
     MsgType.TRAJECTORY_CONTROLLER_STATE: JtcStateMsg,
@@ -421,6 +433,7 @@ TO_ROS = {
     MsgType.VECTOR3_STAMPED: to_vector3_stamped_msg,
     MsgType.WRENCH_STAMPED: to_wrench_stamped_msg,
     MsgType.TWIST_STAMPED: to_twist_stamped_msg,
+    MsgType.MAGNETIC_FIELD: to_magnetic_field_msg,
     MsgType.FLOAT64_ARRAY: lambda a: Float64MultiArray(data=[float(v) for v in a.data]),
     MsgType.JOINT_TRAJECTORY: to_joint_trajectory_msg,
     MsgType.TRAJECTORY_CONTROLLER_STATE: to_jtc_state_msg,

@@ -139,6 +139,7 @@ class Simulation:
         self.world_name = world.name
         self.world_plugins = world.plugins
         self.spherical_coordinates = world.spherical_coordinates
+        self.magnetic_field = world.magnetic_field
         """The world's plugins: gz-sim's sensor systems among them run the sensors without a gazebo_ros plugin."""
         for problem in audit_world(World(name=world.name, plugins=world.plugins)):
             _log.warning(problem.format())
@@ -445,6 +446,7 @@ class Simulation:
                         link=plan.link,
                         world_name=self.world_name,
                         spherical_coordinates=self.spherical_coordinates,
+                        magnetic_field=self.magnetic_field,
                     )
                 )
             if self.robot_state_publisher and (entity.model.joints or entity.model.urdf):

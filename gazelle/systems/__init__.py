@@ -33,6 +33,7 @@ from ._bus import Imu as Imu
 from ._bus import JointStates as JointStates
 from ._bus import JointTrajectory as JointTrajectory
 from ._bus import LaserScan as LaserScan
+from ._bus import MagneticField as MagneticField
 from ._bus import MsgType as MsgType
 from ._bus import NavSatFix as NavSatFix
 from ._bus import Odometry as Odometry
@@ -60,6 +61,7 @@ from .robot_state import RobotStatePublisher as RobotStatePublisher
 from .robot_state import robot_state_config as robot_state_config
 
 __all__ = [
+    "MagneticField",
     "DynamicJointState",
     "Float64Array",
     "JointTrajectory",

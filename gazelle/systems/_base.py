@@ -22,7 +22,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import NamedTuple
 
-from ..description import ConfigElement, Plugin, Sensor, SphericalCoordinates
+from ..description import DEFAULT_MAGNETIC_FIELD, ConfigElement, Plugin, Sensor, SphericalCoordinates
 from ..physics import Entity, PhysicsWorld
 from ._bus import Bus
 
@@ -66,6 +66,8 @@ class SystemContext:
     world_name: str = "default"
     """The world's name (gz-sim's default sensor topics contain it)."""
     spherical_coordinates: SphericalCoordinates | None = None
+    magnetic_field: tuple[float, float, float] = DEFAULT_MAGNETIC_FIELD
+    """The world's magnetic field (tesla, world frame): what magnetometers read."""
     """Where the world's origin is on the Earth (GPS sensors)."""
 
 

@@ -225,6 +225,16 @@ class WrenchStamped:
 
 
 @dataclass(frozen=True, slots=True)
+class MagneticField:
+    """sensor_msgs/MagneticField (tesla, in the sensor's frame)."""
+
+    stamp_sec: float
+    frame_id: str
+    field: Vec3
+    covariance: tuple[float, ...] = (0.0,) * 9
+
+
+@dataclass(frozen=True, slots=True)
 class TwistStamped:
     """geometry_msgs/TwistStamped (diff_drive_controller's ``~/cmd_vel`` on Jazzy)."""
 
@@ -304,6 +314,7 @@ class MsgType(enum.Enum):
     VECTOR3_STAMPED = "geometry_msgs/msg/Vector3Stamped"
     WRENCH_STAMPED = "geometry_msgs/msg/WrenchStamped"
     TWIST_STAMPED = "geometry_msgs/msg/TwistStamped"
+    MAGNETIC_FIELD = "sensor_msgs/msg/MagneticField"
     FLOAT64_ARRAY = "std_msgs/msg/Float64MultiArray"
     JOINT_TRAJECTORY = "trajectory_msgs/msg/JointTrajectory"
     TRAJECTORY_CONTROLLER_STATE = "control_msgs/msg/JointTrajectoryControllerState"

@@ -95,6 +95,12 @@ def _gps() -> System:
     return GpsSensor()
 
 
+def _magnetometer() -> System:
+    from .sensors import Magnetometer
+
+    return Magnetometer()
+
+
 def _force_torque() -> System:
     from .sensors import ForceTorqueSensor
 
@@ -173,6 +179,10 @@ GZ_SENSOR_WORLD_SYSTEMS: dict[str, dict[str, Callable[[], System]]] = {
     **{
         n: {"gps": _gps, "navsat": _gps}
         for n in ("gz-sim-navsat-system", "gz::sim::systems::NavSat", "ignition-gazebo-navsat-system")
+    },
+    **{
+        n: {"magnetometer": _magnetometer}
+        for n in ("gz-sim-magnetometer-system", "gz::sim::systems::Magnetometer", "ignition-gazebo-magnetometer-system")
     },
     **{
         n: {"force_torque": _force_torque}
@@ -356,7 +366,6 @@ _NOT_YET: dict[str, str] = {
         for n in (
             "gazebo_ros_range",
             "gz-sim-altimeter-system",
-            "gz-sim-magnetometer-system",
         )
     },
 }

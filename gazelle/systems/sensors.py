@@ -54,6 +54,7 @@ from ._bus import (
     Image,
     Imu,
     LaserScan,
+    MagneticField,
     MsgType,
     NavSatFix,
     PointCloud,
@@ -319,7 +320,9 @@ def sensor_output(ctx: SystemContext, link: str, sensor: Sensor | None, kind: st
 
     log = ctx.logger
     prefix = entity_frame_prefix(ctx.entity, log)
-    default_type = {"imu": MsgType.IMU, "image": MsgType.IMAGE}.get(kind, MsgType.LASER_SCAN)
+    default_type = {"imu": MsgType.IMU, "image": MsgType.IMAGE, "magnetometer": MsgType.MAGNETIC_FIELD}.get(
+        kind, MsgType.LASER_SCAN
+    )
     if ctx.plugin is None:  # gz-sim: <topic> and <frame_id>
         assert sensor is not None
         cfg = sensor.config
@@ -412,7 +415,7 @@ class _SensorSystem(System):
             log.error(f"{self.kind} sensor: link '{link}' does not exist in '{ctx.entity.name}'; it does nothing")
             return False
         self.link = link or ""
-        kind = {"IMU": "imu", "camera": "image"}.get(self.kind, "scan")
+        kind = {"IMU": "imu", "camera": "image", "magnetometer": "magnetometer"}.get(self.kind, "scan")
         self.output = sensor_output(ctx, self.link, self.sensor, kind, c)
         self._body = ctx.world.body(ctx.entity.name, self.link)
         if advertise:
@@ -655,6 +658,57 @@ class ImuSensor(_SensorSystem):
                 linear_acceleration_covariance=self._cov[1],
             )
         )
+
+
+# --------------------------------------------------------------------------- magnetometer
+class Magnetometer(_SensorSystem):
+    """gz-sim's magnetometer (``gz-sim-magnetometer-system``): the world's ``<magnetic_field>`` in the
+    sensor's frame, with ``<magnetometer><x|y|z><noise>``, as sensor_msgs/MagneticField on ``<topic>``
+    (else gz's ``.../sensor/<s>/magnetometer``), which ros_gz_bridge maps to ROS under the same name."""
+
+    kind = "magnetometer"
+
+    def __init__(self, seed: int | None = None) -> None:
+        super().__init__(seed)
+        self.field_W = np.zeros(3)
+        self._noise: tuple[Noise, Noise, Noise] = (Noise(), Noise(), Noise())
+        self._bias = np.zeros(3)
+        self._cov: tuple[float, ...] = (0.0,) * 9
+
+    def configure(self, ctx: SystemContext) -> None:
+        """The world's field and the noise; declare the output topic."""
+        if not self._configure_common(ctx):
+            return
+        self.field_W = np.asarray(ctx.magnetic_field, dtype=float)
+        block = self.sensor.config.find("magnetometer") if self.sensor and self.sensor.config is not None else None
+        self._noise = _imu_axes(block, ctx.logger, "magnetometer")
+        self._bias = np.array([n.bias(self._rng) for n in self._noise])
+        cov = [0.0] * 9
+        for i, n in enumerate(self._noise):
+            cov[4 * i] = n.stddev**2 if n.active else 0.0
+        self._cov = tuple(cov)
+        assert self.output is not None
+        ctx.logger.info(
+            f"magnetometer on [{self.link}] at {self.rate_hz:g} Hz on [{self.output.topic}] "
+            f"in frame [{self.output.frame_id}]"
+        )
+
+    def read(self) -> np.ndarray:
+        """The field in the sensor's frame (tesla), with noise."""
+        R_WS = rotation_matrix(self.sensor_pose().orientation)
+        value = R_WS.T @ self.field_W + self._bias
+        for i, n in enumerate(self._noise):
+            if n.active:
+                value[i] += n.mean + n.stddev * self._rng.standard_normal()
+        return value
+
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """At the sensor's rate, while listened to: publish stamped with this sim time."""
+        if not self._due(info):
+            return
+        assert self._pub is not None and self.output is not None
+        b = self.read().tolist()
+        self._pub.publish(MagneticField(info.sim_time_sec, self.output.frame_id, (b[0], b[1], b[2]), self._cov))
 
 
 # --------------------------------------------------------------------------- cameras
