@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Build gazelle's own ROS 2 interface packages (interfaces/: tf2_msgs,
-# simulation_interfaces, gazebo_msgs, control_msgs, controller_manager_msgs) with the ROS 2 Jazzy rosidl/ament CMake
+# simulation_interfaces, gazebo_msgs, control_msgs, controller_manager_msgs, ros_gz_interfaces) with the ROS 2 Jazzy rosidl/ament CMake
 # tooling from the PyPI wheels, and install them into a Python virtualenv.
 #
 #   scripts/build_interfaces.sh VENV_DIR
@@ -28,7 +28,7 @@ PY="$VENV_DIR/bin/python"
 STAMP="$VENV_DIR/.gazelle_interfaces.sha256"
 BUILD_ROOT="$REPO_ROOT/build/interfaces"
 # Build order: each depends only on wheel packages, none on another.
-PKGS=(tf2_msgs simulation_interfaces gazebo_msgs control_msgs controller_manager_msgs)
+PKGS=(tf2_msgs simulation_interfaces gazebo_msgs control_msgs controller_manager_msgs ros_gz_interfaces)
 # Wheel packages whose version change must trigger a rebuild.
 DEP_PKGS=(ament_cmake rosidl_default_generators rosidl_generator_py
   rosidl_typesupport_fastrtps_c builtin_interfaces std_msgs geometry_msgs
@@ -70,9 +70,10 @@ from gazebo_msgs.srv import SpawnEntity as GzSpawnEntity
 from control_msgs.action import FollowJointTrajectory
 from control_msgs.msg import DynamicJointState
 from controller_manager_msgs.srv import SwitchController
+from ros_gz_interfaces.msg import Altimeter
 for t in (TFMessage, LookupTransform, Result, SpawnEntity, SimulateSteps,
           ModelStates, GzSpawnEntity, FollowJointTrajectory, DynamicJointState,
-          SwitchController):
+          SwitchController, Altimeter):
     type(t).__import_type_support__()
 EOF
 }

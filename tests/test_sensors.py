@@ -720,3 +720,46 @@ def test_a_world_magnetic_field_is_read_and_reaches_the_magnetometer():
     next(e for e in sim.bus.endpoints() if e.msg_type is MsgType.MAGNETIC_FIELD).add_sink(got.append)
     sim.step(100)
     assert got[-1].field == pytest.approx((2e-5, 0.0, -3e-5), abs=1e-12)
+
+
+ALT_BOX = """<?xml version="1.0"?>
+<sdf version="1.9"><model name="alt"><pose>0 0 2 0 0 0</pose>
+<link name="base">
+  <inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+  <collision name="c"><geometry><box><size>0.1 0.1 0.1</size></box></geometry></collision>
+  <sensor name="alt" type="altimeter"><update_rate>100</update_rate><topic>altimeter</topic></sensor>
+</link></model></sdf>"""
+
+
+def test_an_altimeter_reads_height_above_where_it_started_and_vertical_velocity():
+    from gazelle.description import load_string
+    from gazelle.sim import Simulation
+    from gazelle.systems import MsgType
+    from gazelle.worlds import default_world
+
+    sim = Simulation(default_world(), rtf=0)
+    sim.spawn(load_string(ALT_BOX).value, name="alt")
+    got: list = []
+    (ep,) = [e for e in sim.bus.endpoints() if e.msg_type is MsgType.ALTIMETER]
+    assert ep.topic == "/altimeter"
+    ep.add_sink(got.append)
+    sim.step(300)  # free fall from 2 m for 0.3 s
+    last = got[-1]
+    z = sim.world.entity_state("alt").pose.position[2]
+    vz = sim.world.entity_state("alt").linear_velocity[2]
+    assert last.vertical_reference == pytest.approx(2.0, abs=1e-3)
+    assert last.vertical_position == pytest.approx(z - 2.0, abs=1e-3)
+    assert last.vertical_position == pytest.approx(-0.5 * 9.8 * 0.3**2, abs=0.01)
+    assert last.vertical_velocity == pytest.approx(vz, abs=1e-6) and vz == pytest.approx(-9.8 * 0.3, rel=0.02)
+
+
+def test_altimeter_and_magnetic_field_convert_to_their_ros_messages():
+    from gazelle.ros._convert import ROS_TYPES, TO_ROS
+    from gazelle.systems import Altimeter, MagneticField, MsgType
+
+    alt = TO_ROS[MsgType.ALTIMETER](Altimeter(1.5, "alt_frame", -0.25, -1.0, 2.0))
+    assert type(alt) is ROS_TYPES[MsgType.ALTIMETER] and type(alt).__module__.startswith("ros_gz_interfaces")
+    assert (alt.vertical_position, alt.vertical_velocity, alt.vertical_reference) == (-0.25, -1.0, 2.0)
+    assert (alt.header.stamp.sec, alt.header.stamp.nanosec, alt.header.frame_id) == (1, 500_000_000, "alt_frame")
+    mag = TO_ROS[MsgType.MAGNETIC_FIELD](MagneticField(2.0, "m", (1e-5, 2e-5, -3e-5)))
+    assert (mag.magnetic_field.x, mag.magnetic_field.y, mag.magnetic_field.z) == (1e-5, 2e-5, -3e-5)

@@ -17,6 +17,7 @@ from geometry_msgs.msg import TwistStamped as TwistStampedMsg
 from geometry_msgs.msg import Vector3Stamped as Vector3StampedMsg
 from geometry_msgs.msg import WrenchStamped as WrenchStampedMsg
 from nav_msgs.msg import Odometry as OdometryMsg
+from ros_gz_interfaces.msg import Altimeter as AltimeterMsg
 from sensor_msgs.msg import CameraInfo as CameraInfoMsg
 from sensor_msgs.msg import Image as ImageMsg
 from sensor_msgs.msg import Imu as ImuMsg
@@ -35,6 +36,7 @@ from trajectory_msgs.msg import JointTrajectoryPoint
 
 from ..description import Pose
 from ..systems import (
+    Altimeter,
     CameraInfo,
     Contacts,
     DynamicJointState,
@@ -297,6 +299,18 @@ def to_magnetic_field_msg(m: MagneticField) -> MagneticFieldMsg:
     return msg
 
 
+def to_altimeter_msg(a: Altimeter) -> AltimeterMsg:
+    """Bus payload -> ros_gz_interfaces/Altimeter."""
+    msg = AltimeterMsg(
+        vertical_position=a.vertical_position,
+        vertical_velocity=a.vertical_velocity,
+        vertical_reference=a.vertical_reference,
+    )
+    msg.header.stamp = to_time(a.stamp_sec)
+    msg.header.frame_id = a.frame_id
+    return msg
+
+
 def to_duration(sec: float) -> Duration:
     """builtin_interfaces/Duration from seconds (the nanoseconds always non-negative, as ROS keeps them)."""
     s = math.floor(sec)
@@ -407,6 +421,7 @@ ROS_TYPES = {
     MsgType.WRENCH_STAMPED: WrenchStampedMsg,
     MsgType.TWIST_STAMPED: TwistStampedMsg,
     MsgType.MAGNETIC_FIELD: MagneticFieldMsg,
+    MsgType.ALTIMETER: AltimeterMsg,
     MsgType.FLOAT64_ARRAY: Float64MultiArray,
     MsgType.JOINT_TRAJECTORY: JointTrajectoryMsg,
     MsgType.TRAJECTORY_CONTROLLER_STATE: JtcStateMsg,
@@ -434,6 +449,7 @@ TO_ROS = {
     MsgType.WRENCH_STAMPED: to_wrench_stamped_msg,
     MsgType.TWIST_STAMPED: to_twist_stamped_msg,
     MsgType.MAGNETIC_FIELD: to_magnetic_field_msg,
+    MsgType.ALTIMETER: to_altimeter_msg,
     MsgType.FLOAT64_ARRAY: lambda a: Float64MultiArray(data=[float(v) for v in a.data]),
     MsgType.JOINT_TRAJECTORY: to_joint_trajectory_msg,
     MsgType.TRAJECTORY_CONTROLLER_STATE: to_jtc_state_msg,

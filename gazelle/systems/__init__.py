@@ -20,6 +20,7 @@ from ._base import System as System
 from ._base import SystemContext as SystemContext
 from ._base import SystemManager as SystemManager
 from ._base import UpdateInfo as UpdateInfo
+from ._bus import Altimeter as Altimeter
 from ._bus import Bus as Bus
 from ._bus import CameraInfo as CameraInfo
 from ._bus import ContactPair as ContactPair
@@ -61,6 +62,7 @@ from .robot_state import RobotStatePublisher as RobotStatePublisher
 from .robot_state import robot_state_config as robot_state_config
 
 __all__ = [
+    "Altimeter",
     "MagneticField",
     "DynamicJointState",
     "Float64Array",

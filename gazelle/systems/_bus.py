@@ -235,6 +235,18 @@ class MagneticField:
 
 
 @dataclass(frozen=True, slots=True)
+class Altimeter:
+    """ros_gz_interfaces/Altimeter (what ros_gz_bridge makes of gz's): height above the reference (m),
+    vertical velocity (m/s) and the reference (the sensor's height when it started)."""
+
+    stamp_sec: float
+    frame_id: str
+    vertical_position: float
+    vertical_velocity: float
+    vertical_reference: float
+
+
+@dataclass(frozen=True, slots=True)
 class TwistStamped:
     """geometry_msgs/TwistStamped (diff_drive_controller's ``~/cmd_vel`` on Jazzy)."""
 
@@ -315,6 +327,7 @@ class MsgType(enum.Enum):
     WRENCH_STAMPED = "geometry_msgs/msg/WrenchStamped"
     TWIST_STAMPED = "geometry_msgs/msg/TwistStamped"
     MAGNETIC_FIELD = "sensor_msgs/msg/MagneticField"
+    ALTIMETER = "ros_gz_interfaces/msg/Altimeter"
     FLOAT64_ARRAY = "std_msgs/msg/Float64MultiArray"
     JOINT_TRAJECTORY = "trajectory_msgs/msg/JointTrajectory"
     TRAJECTORY_CONTROLLER_STATE = "control_msgs/msg/JointTrajectoryControllerState"

@@ -95,6 +95,12 @@ def _gps() -> System:
     return GpsSensor()
 
 
+def _altimeter() -> System:
+    from .sensors import AltimeterSensor
+
+    return AltimeterSensor()
+
+
 def _magnetometer() -> System:
     from .sensors import Magnetometer
 
@@ -179,6 +185,10 @@ GZ_SENSOR_WORLD_SYSTEMS: dict[str, dict[str, Callable[[], System]]] = {
     **{
         n: {"gps": _gps, "navsat": _gps}
         for n in ("gz-sim-navsat-system", "gz::sim::systems::NavSat", "ignition-gazebo-navsat-system")
+    },
+    **{
+        n: {"altimeter": _altimeter}
+        for n in ("gz-sim-altimeter-system", "gz::sim::systems::Altimeter", "ignition-gazebo-altimeter-system")
     },
     **{
         n: {"magnetometer": _magnetometer}
@@ -361,13 +371,7 @@ _CONTROL_PLUGINS = frozenset(
 
 # Plugins gazelle knows but does not simulate yet, and what to say about them.
 _NOT_YET: dict[str, str] = {
-    **{
-        n: "sensors are not simulated yet"
-        for n in (
-            "gazebo_ros_range",
-            "gz-sim-altimeter-system",
-        )
-    },
+    **{n: "sensors are not simulated yet" for n in ("gazebo_ros_range",)},
 }
 
 # gz-sim world systems whose work gazelle does itself: no warning.

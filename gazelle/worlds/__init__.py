@@ -24,6 +24,7 @@ DEFAULT_WORLD_SYSTEMS = (
     Plugin("gz::sim::systems::NavSat", "gz-sim-navsat-system", ConfigElement("plugin")),
     Plugin("gz::sim::systems::ForceTorque", "gz-sim-forcetorque-system", ConfigElement("plugin")),
     Plugin("gz::sim::systems::Magnetometer", "gz-sim-magnetometer-system", ConfigElement("plugin")),
+    Plugin("gz::sim::systems::Altimeter", "gz-sim-altimeter-system", ConfigElement("plugin")),
 )
 """gz-sim's sensor systems, on in the embedded default world: a sensor with no gazebo_ros plugin
 (a gz-sim model such as TurtleBot3's model.sdf) publishes as it would in TurtleBot3's own gz world.
