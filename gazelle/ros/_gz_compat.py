@@ -3,9 +3,10 @@
 * ``create`` (ros_gz_sim): ``-name -topic -file -string -param -x -y -z -R -P -Y -world``, spawned
   as ``gazelle spawn`` spawns.
 * ``parameter_bridge`` (ros_gz_bridge): gazelle publishes ROS topics itself, under the gz topic's
-  name (see the README's sensors section), so there is nothing to bridge. It reads the same
-  arguments (``/topic@ros_type@gz_type`` with ``@``, ``[`` or ``]``, and ``config_file`` YAML) and
-  logs one line per entry: nothing to do, or that a renamed topic keeps its gz name.
+  name (see the README's sensors section), so an entry with equal names has nothing to bridge (one
+  line says so); an entry that renames (``gz_topic_name: lidar``, ``ros_topic_name: scan``) is
+  relayed between the two names, in its direction. Arguments as the bridge's:
+  ``/topic@ros_type@gz_type`` (``[`` gz to ROS, ``]`` ROS to gz) and the ``config_file`` YAML.
 * ``joint_state_publisher``: ``joint_states`` with every movable joint of ``robot_description`` (the
   parameter, else the latched topic) at zero, or the middle of its limits when zero is outside them;
   mimic joints follow; ``rate`` (10 Hz).
@@ -14,6 +15,7 @@
 from __future__ import annotations
 
 import sys
+from dataclasses import dataclass
 from typing import Any
 
 BRIDGE_DIRECTIONS = ("@", "[", "]")
@@ -47,9 +49,20 @@ def create_main(argv: list[str]) -> int:
     return spawn_main(out)
 
 
-def _bridge_entries(argv: list[str]) -> tuple[list[tuple[str, str]], list[str]]:
-    """(ros name, gz name) pairs from the command line and the config file; and the problems."""
-    entries: list[tuple[str, str]] = []
+@dataclass(frozen=True)
+class BridgeEntry:
+    """One topic a ros_gz_bridge would bridge: its ROS and gz names, ROS type and direction."""
+
+    ros_name: str
+    gz_name: str
+    ros_type: str = ""
+    direction: str = "BIDIRECTIONAL"
+    """GZ_TO_ROS, ROS_TO_GZ or BIDIRECTIONAL (the YAML's ``direction``; ``[``, ``]``, ``@`` on the command line)."""
+
+
+def _bridge_entries(argv: list[str]) -> tuple[list[BridgeEntry], list[str]]:
+    """The entries of the command line (``/topic@ros_type[gz_type``) and the config file; and the problems."""
+    entries: list[BridgeEntry] = []
     problems: list[str] = []
     config = None
     args = list(argv)
@@ -62,13 +75,16 @@ def _bridge_entries(argv: list[str]) -> tuple[list[tuple[str, str]], list[str]]:
     for a in args:
         if a.startswith("-"):
             continue
-        topic = a
-        for d in BRIDGE_DIRECTIONS:
-            topic = topic.split(d, 1)[0]
-        if not topic:
-            problems.append(f"cannot read bridge argument '{a}'")
+        cut = min((a.find(d) for d in BRIDGE_DIRECTIONS if d in a), default=-1)
+        if cut <= 0:
+            problems.append(f"cannot read bridge argument '{a}' (expected /topic@ros_type@gz_type, with [ or ])")
             continue
-        entries.append((topic, topic))
+        topic, rest = a[:cut], a[cut + 1 :]
+        second = min((rest.find(d) for d in BRIDGE_DIRECTIONS if d in rest), default=-1)
+        ros_type = rest[:second] if second >= 0 else rest
+        mark = rest[second] if second >= 0 else "@"
+        direction = {"[": "GZ_TO_ROS", "]": "ROS_TO_GZ"}.get(mark, "BIDIRECTIONAL")
+        entries.append(BridgeEntry(topic, topic, ros_type, direction))
     if config:
         import yaml
 
@@ -83,31 +99,76 @@ def _bridge_entries(argv: list[str]) -> tuple[list[tuple[str, str]], list[str]]:
                 ros_name = str(item.get("ros_topic_name") or item.get("topic_name") or "")
                 gz_name = str(item.get("gz_topic_name") or item.get("topic_name") or ros_name)
                 if ros_name:
-                    entries.append((ros_name, gz_name))
+                    entries.append(
+                        BridgeEntry(
+                            ros_name,
+                            gz_name,
+                            str(item.get("ros_type_name") or ""),
+                            str(item.get("direction") or "BIDIRECTIONAL"),
+                        )
+                    )
     return entries, problems
 
 
+def _message_class(type_name: str) -> Any:
+    """``pkg/msg/Type`` (or ``pkg/Type``) -> the rclpy message class."""
+    import importlib
+
+    parts = type_name.split("/")
+    if len(parts) == 2:
+        parts = [parts[0], "msg", parts[1]]
+    if len(parts) != 3:
+        raise ValueError(f"'{type_name}' is not a message type (pkg/msg/Type)")
+    return getattr(importlib.import_module(f"{parts[0]}.{parts[1]}"), parts[2])
+
+
 def bridge_main(argv: list[str]) -> int:
-    """``parameter_bridge``: one line per entry (gazelle publishes ROS topics itself)."""
+    """``parameter_bridge``: gazelle has every topic on ROS under its gz name already; an entry whose
+    ROS name differs is relayed between the two names in this process, as the bridge would; the rest
+    get one line saying there is nothing to do."""
+    import rclpy
+    from rclpy.qos import QoSPresetProfiles
+
     entries, problems = _bridge_entries(argv)
     for p in problems:
         print(f"[ERROR] [ros_gz_bridge]: {p}", file=sys.stderr)
-    for ros_name, gz_name in entries:
-        if ros_name.strip("/") == gz_name.strip("/"):
+    relays = [e for e in entries if e.ros_name.strip("/") != e.gz_name.strip("/")]
+    for e in entries:
+        if e not in relays:
             print(
-                f"[INFO] [ros_gz_bridge]: {ros_name}: gazelle has it on ROS directly; nothing to bridge",
-                file=sys.stderr,
-            )
-        else:
-            print(
-                f"[WARN] [ros_gz_bridge]: gz topic {gz_name} would appear as ROS topic {ros_name}; gazelle publishes "
-                f"it as {gz_name}: set the sensor's <topic> to {ros_name}, or remap {gz_name}:={ros_name} in its "
-                "subscriber",
+                f"[INFO] [ros_gz_bridge]: {e.ros_name}: gazelle has it on ROS directly; nothing to bridge",
                 file=sys.stderr,
             )
     if not entries and not problems:
         print("[INFO] [ros_gz_bridge]: nothing to bridge", file=sys.stderr)
-    return 1 if problems else 0
+    if problems:
+        return 1
+    if not relays:
+        return 0
+    rclpy.init(args=["--ros-args", *argv[argv.index("--ros-args") + 1 :]] if "--ros-args" in argv else None)
+    node = rclpy.create_node("ros_gz_bridge")
+    qos = QoSPresetProfiles.SYSTEM_DEFAULT.value
+    keep: list[Any] = []
+    for e in relays:
+        try:
+            cls = _message_class(e.ros_type)
+        except (ValueError, ImportError, AttributeError) as err:
+            node.get_logger().error(f"{e.ros_name}: cannot bridge: {err}")
+            continue
+        pairs = []
+        if e.direction in ("GZ_TO_ROS", "BIDIRECTIONAL"):
+            pairs.append((e.gz_name, e.ros_name))
+        if e.direction == "ROS_TO_GZ":
+            pairs.append((e.ros_name, e.gz_name))
+        for src, dst in pairs:
+            pub = node.create_publisher(cls, dst, qos)
+            keep.append(pub)
+            keep.append(node.create_subscription(cls, src, lambda m, pub=pub: pub.publish(m), qos))
+            node.get_logger().info(f"Creating relay [{src}] -> [{dst}] ({e.ros_type}): gazelle publishes the gz name")
+    from ._rsp_node import spin_until_interrupted
+
+    spin_until_interrupted(node)
+    return 0
 
 
 def joint_state_publisher_main(argv: list[str] | None = None) -> int:

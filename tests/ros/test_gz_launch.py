@@ -15,6 +15,7 @@ import pytest
 from gazebo_msgs.srv import GetModelState
 from sensor_msgs.msg import JointState, LaserScan
 
+from .conftest import GAZELLE as GAZELLE_CMD
 from .conftest import REPO, SEED_XACRO, start, wait_for, xacro_to_urdf
 from .test_turtlebot3 import TB3
 
@@ -120,3 +121,50 @@ def test_ros1_spawn_model_command_line_and_joint_state_publisher(sim_factory, ro
         assert list(msg.position) == [0.0, 0.0]
     finally:
         jsp.interrupt()
+
+
+def test_parameter_bridge_relays_a_renamed_topic_in_its_direction(sim_factory, ros_client, tmp_path):
+    """A bridge YAML that renames: gz's `model/diff/odometry` becomes ROS `odom_renamed`, and ROS
+    `cmd_vel_renamed` feeds gz's `cmd_vel`; gazelle publishes the gz names, the bridge relays."""
+    from geometry_msgs.msg import Twist
+    from nav_msgs.msg import Odometry
+
+    sim_factory("--no-viewer")
+    spawn = start([*GAZELLE_CMD, "spawn", "-entity", "bot", "-file", str(SEED_XACRO)], "spawn")
+    assert spawn.wait(60) == 0, spawn.output
+    config = tmp_path / "bridge.yaml"
+    config.write_text(
+        textwrap.dedent(
+            """
+            - ros_topic_name: "odom_renamed"
+              gz_topic_name: "odom"
+              ros_type_name: "nav_msgs/msg/Odometry"
+              gz_type_name: "gz.msgs.Odometry"
+              direction: GZ_TO_ROS
+            - ros_topic_name: "cmd_vel_renamed"
+              gz_topic_name: "cmd_vel"
+              ros_type_name: "geometry_msgs/msg/Twist"
+              gz_type_name: "gz.msgs.Twist"
+              direction: ROS_TO_GZ
+            """
+        )
+    )
+    bridge = start(
+        [ROS2, "run", "ros_gz_bridge", "parameter_bridge", "--ros-args", "-p", f"config_file:={config}"], "bridge"
+    )
+    try:
+        bridge.wait_line("Creating relay [cmd_vel_renamed] -> [cmd_vel]", 20)
+        odom: list[Odometry] = []
+        ros_client.node.create_subscription(Odometry, "/odom_renamed", odom.append, 10)
+        wait_for(lambda: odom, 20, "/odom_renamed relayed from gazelle's /odom")
+        pub = ros_client.node.create_publisher(Twist, "/cmd_vel_renamed", 10)
+        cmd = Twist()
+        cmd.linear.x = 0.3
+
+        def moved() -> bool:
+            pub.publish(cmd)
+            return odom[-1].pose.pose.position.x > 0.1
+
+        wait_for(moved, 30, "the robot to drive on /cmd_vel_renamed", interval=0.1)
+    finally:
+        bridge.interrupt()
