@@ -86,13 +86,23 @@ def _read_topic(node: Node, executor: SingleThreadedExecutor, topic: str, timeou
     return got[0] if got else None
 
 
+GRAPH_SETTLE_SEC = 2.0
+"""How long the hint for a silent description topic waits for the graph to show its publishers."""
+
+
 def _topic_hint(node: Node, topic: str) -> str:
     """What the graph says about a description topic that delivered nothing: who publishes it, or what to do."""
     name = topic if topic.startswith("/") else f"/{topic}"
-    try:
-        pubs = node.get_publishers_info_by_topic(name)
-    except Exception:
-        pubs = []
+    pubs: list = []
+    deadline = time.monotonic() + GRAPH_SETTLE_SEC
+    while True:  # on a loaded machine discovery may lag behind the wait: give the graph a moment
+        try:
+            pubs = node.get_publishers_info_by_topic(name)
+        except Exception:
+            pubs = []
+        if pubs or time.monotonic() > deadline:
+            break
+        time.sleep(0.05)
     if not pubs:
         return (
             f"no node publishes {name}. Start robot_state_publisher with your robot_description, or spawn the "
