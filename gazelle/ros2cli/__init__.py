@@ -1,8 +1,10 @@
-"""The ``ros2`` command for a venv without ROS 2's ros2cli: ``launch``, ``run`` and ``pkg``.
+"""The ``ros2`` command for a venv without ROS 2's ros2cli: ``launch``, ``run``, ``pkg``, and the first
+introspection verbs: ``topic`` (list, echo, hz, info, type, pub), ``service`` (list, type, find, call),
+``node`` (list, info) and ``interface`` (show, list, package).
 
 Same arguments and output as ros2cli Jazzy for what it covers; an unknown verb lists the verbs that
-exist. ``gazelle launch`` and ``gazelle run`` are the same commands. The introspection verbs (topic,
-service, node, param, interface, bag) are not here yet.
+exist. ``gazelle launch`` and ``gazelle run`` are the same commands. ``param``, ``action`` and ``bag``
+are not here yet.
 """
 
 from __future__ import annotations
@@ -11,7 +13,7 @@ import argparse
 import os
 import sys
 
-VERBS = ("launch", "pkg", "run")
+VERBS = ("interface", "launch", "node", "pkg", "run", "service", "topic")
 
 
 def ensure_ament_prefix() -> None:
@@ -31,8 +33,10 @@ def main(argv: list[str] | None = None) -> int:
     if not argv or argv[0] in ("-h", "--help"):
         print("usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ...\n")
         print("ros2 is an extensible command-line tool for ROS 2 (gazelle's subset).\n")
-        print("Commands:\n  launch  Run a launch file\n  pkg     Various package related sub-commands")
-        print("  run     Run a package specific executable\n")
+        print("Commands:\n  interface  Show information about ROS interfaces\n  launch     Run a launch file")
+        print("  node       Various node related sub-commands\n  pkg        Various package related sub-commands")
+        print("  run        Run a package specific executable\n  service    Various service related sub-commands")
+        print("  topic      Various topic related sub-commands\n")
         print("  Call `ros2 <command> -h` for more detailed usage.")
         return 0 if argv else 2
     verb, rest = argv[0], argv[1:]
@@ -48,11 +52,19 @@ def main(argv: list[str] | None = None) -> int:
         from ._pkg import main as pkg_main
 
         return pkg_main(rest)
+    if verb == "topic":
+        from ._topic import main as topic_main
+
+        return topic_main(rest)
+    if verb in ("service", "node", "interface"):
+        from . import _service
+
+        verbs = {"service": _service.service_main, "node": _service.node_main, "interface": _service.interface_main}
+        return verbs[verb](rest)
     print(
         f"usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ...\n"
         f"ros2: error: argument Call `ros2 <command> -h` for more detailed usage.: invalid choice: '{verb}' "
-        f"(choose from {', '.join(repr(v) for v in VERBS)}); the introspection verbs (topic, service, node, "
-        "param, interface, bag) are not in gazelle's ros2 yet",
+        f"(choose from {', '.join(repr(v) for v in VERBS)}); param, action and bag are not in gazelle's ros2 yet",
         file=sys.stderr,
     )
     return 2

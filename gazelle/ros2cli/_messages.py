@@ -1,0 +1,146 @@
+"""Messages by type name, and to and from YAML as ros2cli prints and reads them (rosidl_runtime_py's
+conventions: fields in definition order, nested mappings, arrays as block lists, ``{}`` for defaults)."""
+
+from __future__ import annotations
+
+import array
+import importlib
+from collections import OrderedDict
+from typing import Any
+
+import yaml
+
+
+class InterfaceError(ValueError):
+    """A type name that does not name an installed interface; the message says which."""
+
+
+def get_interface(type_name: str, kind: str = "msg") -> Any:
+    """``pkg/msg/Type`` (or ``pkg/Type``) -> its Python class (``kind`` msg, srv or action)."""
+    parts = type_name.strip("/").split("/")
+    if len(parts) == 2:
+        parts = [parts[0], kind, parts[1]]
+    if len(parts) != 3 or not all(parts):
+        raise InterfaceError(f"The passed {kind} type '{type_name}' is invalid")
+    pkg, sub, name = parts
+    try:
+        module = importlib.import_module(f"{pkg}.{sub}")
+    except ImportError:
+        raise InterfaceError(f"The passed {kind} type '{type_name}' is invalid (no package '{pkg}')") from None
+    cls = getattr(module, name, None)
+    if cls is None:
+        raise InterfaceError(f"The passed {kind} type '{type_name}' is invalid (no '{name}' in {pkg}/{sub})")
+    return cls
+
+
+def type_name_of(cls: Any) -> str:
+    """``pkg/msg/Type`` of a message class."""
+    module = cls.__module__.split(".")
+    return f"{module[0]}/{module[1]}/{cls.__name__}"
+
+
+def to_ordered(msg: Any, *, truncate: int | None = 128, no_arr: bool = False, no_str: bool = False) -> Any:
+    """A message as nested ordered dicts and lists (what ros2 topic echo dumps)."""
+    if not hasattr(msg, "get_fields_and_field_types"):
+        if isinstance(msg, (bytes, bytearray)):
+            msg = list(msg)
+        if isinstance(msg, (list, tuple, array.array)) or type(msg).__name__ == "ndarray":
+            items = [to_ordered(v, truncate=truncate, no_arr=no_arr, no_str=no_str) for v in list(msg)]
+            if no_arr:
+                return f"<array type: {len(items)} items>"
+            if truncate is not None and len(items) > truncate:
+                return [*items[:truncate], "..."]
+            return items
+        if isinstance(msg, str):
+            if no_str:
+                return f"<string length: <{len(msg)}>>"
+            if truncate is not None and len(msg) > truncate:
+                return msg[:truncate] + "..."
+            return msg
+        if type(msg).__module__ == "numpy":
+            return msg.item()
+        return msg
+    out: OrderedDict = OrderedDict()
+    for field in msg.get_fields_and_field_types():
+        out[field] = to_ordered(getattr(msg, field), truncate=truncate, no_arr=no_arr, no_str=no_str)
+    return out
+
+
+class _Dumper(yaml.SafeDumper):
+    pass
+
+
+_Dumper.add_representer(
+    OrderedDict, lambda dumper, data: dumper.represent_mapping("tag:yaml.org,2002:map", data.items())
+)
+
+
+def to_yaml(msg: Any, **kwargs: Any) -> str:
+    """A message as ros2cli prints it (block style)."""
+    return yaml.dump(
+        to_ordered(msg, **kwargs), Dumper=_Dumper, default_flow_style=False, allow_unicode=True, width=10**6
+    )
+
+
+def to_csv(msg: Any) -> str:
+    """A message's leaf values comma-separated, in field order (``ros2 topic echo --csv``)."""
+    values: list[str] = []
+
+    def walk(v: Any) -> None:
+        if isinstance(v, dict):
+            for x in v.values():
+                walk(x)
+        elif isinstance(v, list):
+            for x in v:
+                walk(x)
+        else:
+            values.append(str(v))
+
+    walk(to_ordered(msg, truncate=None))
+    return ",".join(values)
+
+
+def set_fields(msg: Any, values: Any, where: str = "") -> Any:
+    """Fill ``msg`` from a mapping parsed from YAML (nested, lists; absent fields keep their defaults).
+
+    Raises:
+        InterfaceError: a field the type does not have, or a value of the wrong kind (the field named).
+    """
+    if values is None:
+        return msg
+    if not isinstance(values, dict):
+        raise InterfaceError(f"{where or type(msg).__name__}: expected a mapping of fields, got {values!r}")
+    fields = msg.get_fields_and_field_types()
+    for key, value in values.items():
+        if key not in fields:
+            raise InterfaceError(
+                f"{type_name_of(type(msg))} has no field '{where + key}' (its fields: {', '.join(fields)})"
+            )
+        current = getattr(msg, key)
+        path = f"{where}{key}."
+        try:
+            if hasattr(current, "get_fields_and_field_types"):
+                set_fields(current, value, path)
+            elif isinstance(current, (list, tuple)) or type(current).__name__ in ("ndarray", "array"):
+                ftype = fields[key]
+                inner = ftype.split("<", 1)[1].rstrip(">") if "<" in ftype else ftype.split("[", 1)[0]
+                if "/" in inner and isinstance(value, list):
+                    cls = get_interface(inner)
+                    setattr(msg, key, [set_fields(cls(), v, path) for v in value])
+                else:
+                    setattr(msg, key, value)
+            elif isinstance(current, float) and isinstance(value, int) and not isinstance(value, bool):
+                setattr(msg, key, float(value))
+            else:
+                setattr(msg, key, value)
+        except (AssertionError, TypeError, ValueError) as err:
+            raise InterfaceError(f"field '{where + key}': {value!r} does not fit ({err})") from None
+    return msg
+
+
+def parse_values(text: str) -> Any:
+    """The YAML of a ``pub`` / ``call`` argument (``{linear: {x: 0.2}}``)."""
+    try:
+        return yaml.safe_load(text) if text.strip() else {}
+    except yaml.YAMLError as err:
+        raise InterfaceError(f"the values are not valid YAML: {err}") from None

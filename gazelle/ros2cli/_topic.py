@@ -1,0 +1,259 @@
+"""``ros2 topic list | echo | hz | info | type | pub``, with ros2cli Jazzy's arguments and output."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from typing import Any
+
+from ._graph import cli_node, discover, is_hidden, wait_until
+from ._messages import InterfaceError, get_interface, parse_values, set_fields, to_csv, to_yaml
+
+
+def _topic_types(node: Any, hidden: bool = False) -> dict[str, list[str]]:
+    return {n: t for n, t in node.get_topic_names_and_types() if hidden or not is_hidden(n)}
+
+
+def _qos_for(node: Any, topic: str) -> Any:
+    """A subscription QoS that matches the publishers (reliable only when all are, transient local when any is)."""
+    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+
+    infos = node.get_publishers_info_by_topic(topic)
+    reliable = bool(infos) and all(i.qos_profile.reliability == ReliabilityPolicy.RELIABLE for i in infos)
+    latched = any(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for i in infos)
+    return QoSProfile(
+        depth=10,
+        reliability=ReliabilityPolicy.RELIABLE if reliable else ReliabilityPolicy.BEST_EFFORT,
+        durability=DurabilityPolicy.TRANSIENT_LOCAL if latched else DurabilityPolicy.VOLATILE,
+    )
+
+
+def _resolve_type(node: Any, topic: str, given: str | None, wait: float = 5.0) -> str | None:
+    if given:
+        return given
+    deadline = time.monotonic() + wait
+    while time.monotonic() < deadline:
+        types = dict(node.get_topic_names_and_types()).get(topic)
+        if types:
+            return types[0]
+        discover(node, 0.1)
+    return None
+
+
+def main(argv: list[str]) -> int:
+    p = argparse.ArgumentParser(prog="ros2 topic", description="Various topic related sub-commands")
+    sub = p.add_subparsers(dest="cmd", required=True)
+    ls = sub.add_parser("list", help="Output a list of available topics")
+    ls.add_argument("-t", "--show-types", action="store_true")
+    ls.add_argument("-c", "--count-topics", action="store_true")
+    ls.add_argument("--include-hidden-topics", action="store_true")
+    ls.add_argument("--spin-time", type=float, default=1.5)
+    echo = sub.add_parser("echo", help="Output messages from a topic")
+    echo.add_argument("topic_name")
+    echo.add_argument("message_type", nargs="?")
+    echo.add_argument("--once", action="store_true")
+    echo.add_argument("--field", default=None)
+    echo.add_argument("--no-arr", action="store_true")
+    echo.add_argument("--no-str", action="store_true")
+    echo.add_argument("--csv", action="store_true")
+    echo.add_argument("--flow-style", action="store_true")
+    echo.add_argument("--truncate-length", "-l", type=int, default=128)
+    echo.add_argument("--timeout", type=float, default=None)
+    echo.add_argument("--qos-reliability", choices=["reliable", "best_effort", "system_default"], default=None)
+    echo.add_argument("--qos-durability", choices=["transient_local", "volatile", "system_default"], default=None)
+    echo.add_argument("--qos-profile", default=None)
+    hz = sub.add_parser("hz", help="Print the average publishing rate to screen")
+    hz.add_argument("topic_name")
+    hz.add_argument("--window", "-w", type=int, default=10000)
+    hz.add_argument("--count", type=int, default=None, help="(gazelle) stop after this many reports")
+    info = sub.add_parser("info", help="Print information about a topic")
+    info.add_argument("topic_name")
+    info.add_argument("-v", "--verbose", action="store_true")
+    typ = sub.add_parser("type", help="Print a topic's type")
+    typ.add_argument("topic_name")
+    pub = sub.add_parser("pub", help="Publish a message to a topic")
+    pub.add_argument("topic_name")
+    pub.add_argument("message_type")
+    pub.add_argument("values", nargs="?", default="{}")
+    pub.add_argument("-1", "--once", action="store_true")
+    pub.add_argument("-r", "--rate", type=float, default=1.0)
+    pub.add_argument("-t", "--times", type=int, default=0)
+    pub.add_argument("-w", "--wait-matching-subscriptions", type=int, default=None)
+    pub.add_argument("-p", "--print", type=int, default=1)
+    args = p.parse_args(argv)
+    try:
+        with cli_node("ros2topic") as node:
+            return {"list": _list, "echo": _echo, "hz": _hz, "info": _info, "type": _type, "pub": _pub}[args.cmd](
+                node, args
+            )
+    except InterfaceError as err:
+        print(str(err), file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        return 0
+
+
+def _list(node: Any, args: argparse.Namespace) -> int:
+    discover(node, args.spin_time)
+    topics = _topic_types(node, args.include_hidden_topics)
+    if args.count_topics:
+        print(len(topics))
+        return 0
+    for name in sorted(topics):
+        print(f"{name} [{', '.join(topics[name])}]" if args.show_types else name)
+    return 0
+
+
+def _echo(node: Any, args: argparse.Namespace) -> int:
+    import rclpy
+    from rclpy.qos import DurabilityPolicy, ReliabilityPolicy
+
+    topic = args.topic_name if args.topic_name.startswith("/") else f"/{args.topic_name}"
+    type_name = _resolve_type(node, topic, args.message_type)
+    if type_name is None:
+        print(f"Could not determine the type for the passed topic {topic}", file=sys.stderr)
+        return 1
+    cls = get_interface(type_name)
+    discover(node, 0.3)
+    qos = _qos_for(node, topic)
+    if args.qos_reliability == "reliable":
+        qos.reliability = ReliabilityPolicy.RELIABLE
+    elif args.qos_reliability == "best_effort":
+        qos.reliability = ReliabilityPolicy.BEST_EFFORT
+    if args.qos_durability == "transient_local":
+        qos.durability = DurabilityPolicy.TRANSIENT_LOCAL
+    elif args.qos_durability == "volatile":
+        qos.durability = DurabilityPolicy.VOLATILE
+    got: list[Any] = []
+    node.create_subscription(cls, topic, got.append, qos)
+    deadline = time.monotonic() + args.timeout if args.timeout else None
+    while True:
+        rclpy.spin_once(node, timeout_sec=0.1)
+        while got:
+            msg = got.pop(0)
+            if args.field:
+                for part in args.field.split("."):
+                    msg = getattr(msg, part)
+            if args.csv:
+                print(to_csv(msg) if hasattr(msg, "get_fields_and_field_types") else str(msg))
+            elif hasattr(msg, "get_fields_and_field_types"):
+                text = to_yaml(msg, truncate=args.truncate_length, no_arr=args.no_arr, no_str=args.no_str)
+                print(text + "---", flush=True)
+            else:
+                print(f"{msg}\n---", flush=True)
+            if args.once:
+                return 0
+        if deadline is not None and time.monotonic() > deadline:
+            print(f"Timeout after {args.timeout} seconds", file=sys.stderr) if args.once else None
+            return 0 if not args.once else 1
+
+
+def _hz(node: Any, args: argparse.Namespace) -> int:
+    import rclpy
+
+    topic = args.topic_name if args.topic_name.startswith("/") else f"/{args.topic_name}"
+    type_name = _resolve_type(node, topic, None)
+    if type_name is None:
+        print(f"WARNING: topic [{topic}] does not appear to be published yet", file=sys.stderr)
+        return 1
+    cls = get_interface(type_name)
+    stamps: list[float] = []
+    node.create_subscription(cls, topic, lambda _m: stamps.append(time.monotonic()), _qos_for(node, topic))
+    reports, last = 0, time.monotonic()
+    while args.count is None or reports < args.count:
+        rclpy.spin_once(node, timeout_sec=0.05)
+        if time.monotonic() - last >= 1.0:
+            last = time.monotonic()
+            window = stamps[-args.window :]
+            if len(window) < 2:
+                continue
+            gaps = [b - a for a, b in zip(window, window[1:], strict=False)]
+            mean = sum(gaps) / len(gaps)
+            std = (sum((g - mean) ** 2 for g in gaps) / len(gaps)) ** 0.5
+            print(f"average rate: {1.0 / mean:.3f}")
+            print(
+                f"\tmin: {min(gaps):.3f}s max: {max(gaps):.3f}s std dev: {std:.5f}s window: {len(window)}", flush=True
+            )
+            reports += 1
+    return 0
+
+
+def _info(node: Any, args: argparse.Namespace) -> int:
+    topic = args.topic_name if args.topic_name.startswith("/") else f"/{args.topic_name}"
+    types = wait_until(node, lambda: dict(node.get_topic_names_and_types()).get(topic))
+    discover(node, 0.3)  # the topic's other endpoints
+    if not types:
+        print(f"Unknown topic '{topic}'", file=sys.stderr)
+        return 1
+    pubs, subs = node.get_publishers_info_by_topic(topic), node.get_subscriptions_info_by_topic(topic)
+    print(f"Type: {', '.join(types)}\n")
+    print(f"Publisher count: {len(pubs)}\n" if not args.verbose else f"Publisher count: {len(pubs)}\n")
+    for i in pubs if args.verbose else []:
+        _endpoint(i, "PUBLISHER")
+    print(f"Subscription count: {len(subs)}" + ("\n" if args.verbose else ""))
+    for i in subs if args.verbose else []:
+        _endpoint(i, "SUBSCRIPTION")
+    return 0
+
+
+def _endpoint(info: Any, kind: str) -> None:
+    q = info.qos_profile
+    print(f"Node name: {info.node_name}")
+    print(f"Node namespace: {info.node_namespace}")
+    print(f"Topic type: {info.topic_type}")
+    print(f"Endpoint type: {kind}")
+    print("QoS profile:")
+    print(f"  Reliability: {q.reliability.name}")
+    print(f"  History (Depth): {q.history.name} ({q.depth})")
+    print(f"  Durability: {q.durability.name}\n")
+
+
+def _type(node: Any, args: argparse.Namespace) -> int:
+    topic = args.topic_name if args.topic_name.startswith("/") else f"/{args.topic_name}"
+    types = wait_until(node, lambda: dict(node.get_topic_names_and_types()).get(topic))
+    if not types:
+        print(f"Unknown topic '{topic}'", file=sys.stderr)
+        return 1
+    for t in types:
+        print(t)
+    return 0
+
+
+def _pub(node: Any, args: argparse.Namespace) -> int:
+    import rclpy
+    from rclpy.qos import QoSProfile
+
+    cls = get_interface(args.message_type)
+    msg = set_fields(cls(), parse_values(args.values))
+    topic = args.topic_name
+    pub = node.create_publisher(cls, topic, QoSProfile(depth=10))
+    times = 1 if args.once else args.times
+    wait_for = args.wait_matching_subscriptions if args.wait_matching_subscriptions is not None else (1 if times else 0)
+    deadline = time.monotonic() + 5.0
+    while pub.get_subscription_count() < wait_for and time.monotonic() < deadline:
+        rclpy.spin_once(node, timeout_sec=0.05)
+    print("publisher: beginning loop\n", flush=True)
+    count = 0
+    period = 1.0 / args.rate if args.rate > 0 else 0.0
+    while times == 0 or count < times:
+        pub.publish(msg)
+        count += 1
+        if args.print and count % args.print == 0:
+            print(
+                f"publishing #{count}: {cls.__module__.split('.')[0]}.msg.{cls.__name__}({_short(msg)})\n", flush=True
+            )
+        if times and count >= times:
+            break
+        end = time.monotonic() + period
+        while time.monotonic() < end:
+            rclpy.spin_once(node, timeout_sec=max(0.0, end - time.monotonic()))
+    if args.once or times:
+        end = time.monotonic() + 0.5  # let the last message go out before the node goes
+        while time.monotonic() < end:
+            rclpy.spin_once(node, timeout_sec=0.05)
+    return 0
+
+
+def _short(msg: Any) -> str:
+    return ", ".join(f"{k}={getattr(msg, k)!r}" for k in msg.get_fields_and_field_types())
