@@ -342,3 +342,37 @@ def test_gazebo_ros_paths_for_launch_files_that_import_it(prefix):
     model, plugin = out.stdout.splitlines()
     assert model.split(os.pathsep)[0] == "/mine" and str(prefix / "share") in model.split(os.pathsep)
     assert str(prefix / "lib") in plugin.split(os.pathsep)
+
+
+def test_respawn_restarts_a_process_and_xacro_runs_with_ros2_run(prefix, tmp_path):
+    counter = tmp_path / "count.txt"
+    write(
+        prefix / "share" / "demo_pkg" / "launch" / "respawn.launch.py",
+        f"""
+        from launch import LaunchDescription
+        from launch.actions import ExecuteProcess, Shutdown, TimerAction
+
+        COUNT = {str(counter)!r}
+        CODE = "import os; p = COUNT; n = int(open(p).read()) + 1 if os.path.exists(p) else 1; open(p, 'w').write(str(n))"
+
+
+        def generate_launch_description():
+            return LaunchDescription([
+                ExecuteProcess(cmd=["python3", "-c", CODE.replace("COUNT", repr(COUNT))], name="flaky",
+                               respawn=True, respawn_delay=0.2),
+                TimerAction(period=2.0, actions=[Shutdown(reason="enough")]),
+            ])
+        """,
+    )
+    out = ros2(["launch", "demo_pkg", "respawn.launch.py"], prefix)
+    assert out.returncode == 0, out.stderr
+    assert int(counter.read_text()) >= 3  # it ran, exited, and was started again, until the shutdown
+    assert "[INFO] [flaky-2]: process started" in out.stderr
+    xacro_file = tmp_path / "r.urdf.xacro"
+    xacro_file.write_text(
+        '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:property name="w" value="0.5"/>'
+        '<link name="base"><visual><geometry><box size="${w} 1 1"/></geometry></visual></link></robot>'
+    )
+    expanded = ros2(["run", "xacro", "xacro", str(xacro_file)], prefix)
+    assert expanded.returncode == 0, expanded.stderr
+    assert '<box size="0.5 1 1"/>' in expanded.stdout
