@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-ROS2 = [sys.executable, "-c", "import sys; from gazelle.ros2cli import main; sys.exit(main(sys.argv[1:]))"]
+ROS2 = [sys.executable, "-c", "import sys; from gazelle.cli.ros2cli import main; sys.exit(main(sys.argv[1:]))"]
 
 ECHO_ARGS = """#!{python}
 import json, sys, os

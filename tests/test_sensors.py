@@ -607,10 +607,10 @@ def test_an_unknown_sensor_type_is_named_with_a_did_you_mean_and_an_unsimulated_
         )
     ]
     gz = """<?xml version="1.0"?><sdf version="1.9"><model name="m"><link name="l">
-      <sensor name="alt" type="altimeter"><update_rate>10</update_rate></sensor></link></model></sdf>"""
+      <sensor name="baro" type="air_pressure"><update_rate>10</update_rate></sensor></link></model></sdf>"""
     plans, problems = plan_sensors(load_string(gz).value, default_world().plugins)
     assert plans == [] and [p.message for p in problems] == [
-        "sensor 'alt' (altimeter) on link 'l' is not simulated yet"
+        "sensor 'baro' (air_pressure) on link 'l' is not simulated yet"
     ]
 
 

@@ -125,8 +125,8 @@ def spawn(ctx: typer.Context) -> None:
 )
 def launch(ctx: typer.Context) -> None:
     """Run a launch file: the same as ``ros2 launch`` (PKG FILE [name:=value ...] | PATH, --show-args)."""
-    from ..ros2cli import ensure_ament_prefix
-    from ..ros2cli._launch import main as launch_main
+    from .ros2cli import ensure_ament_prefix
+    from .ros2cli._launch import main as launch_main
 
     ensure_ament_prefix()
     raise typer.Exit(launch_main(list(ctx.args)))
@@ -138,8 +138,8 @@ def launch(ctx: typer.Context) -> None:
 )
 def run(ctx: typer.Context) -> None:
     """Run a package's executable: the same as ``ros2 run PKG EXECUTABLE [args]``."""
-    from ..ros2cli import ensure_ament_prefix
-    from ..ros2cli._run import main as run_main
+    from .ros2cli import ensure_ament_prefix
+    from .ros2cli._run import main as run_main
 
     ensure_ament_prefix()
     raise typer.Exit(run_main(list(ctx.args)))
