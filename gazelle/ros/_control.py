@@ -277,25 +277,35 @@ class ControllerManagerNode(Node):
         cmd = handle.request.command
         goal = GripperGoal(float(cmd.position), float(cmd.max_effort))
         self.sim.call(lambda: gripper.submit(goal))
+
+        def feedback() -> Any:
+            q, effort = goal.feedback
+            return GripperCommand.Feedback(
+                position=q, effort=effort, stalled=goal.stalled, reached_goal=goal.reached_goal
+            )
+
+        self._follow(handle, goal, lambda: gripper.cancel(goal), feedback)
+        q, effort = goal.feedback
+        return GripperCommand.Result(position=q, effort=effort, stalled=goal.stalled, reached_goal=goal.reached_goal)
+
+    def _follow(self, handle: Any, goal: Any, cancel: Any, feedback: Any) -> None:
+        """Watch a submitted goal until it ends: feedback at the monitor rate, a cancel request passed on
+        to the controller, and the action ended as the goal did (succeeded, canceled or aborted)."""
         while not goal.done.wait(ACTION_MONITOR_SEC):
             if handle.is_cancel_requested:
-                self.sim.call(lambda: gripper.cancel(goal))
+                self.sim.call(cancel)
                 break
             if not handle.is_active:
                 break
-            q, effort = goal.feedback
-            handle.publish_feedback(
-                GripperCommand.Feedback(position=q, effort=effort, stalled=goal.stalled, reached_goal=goal.reached_goal)
-            )
-        q, effort = goal.feedback
-        result = GripperCommand.Result(position=q, effort=effort, stalled=goal.stalled, reached_goal=goal.reached_goal)
+            fb = feedback()
+            if fb is not None:
+                handle.publish_feedback(fb)
         if goal.status == "succeeded":
             handle.succeed()
         elif goal.status == "canceled" and handle.is_cancel_requested:
             handle.canceled()
         else:
             handle.abort()
-        return result
 
     def _accept(self, jtc: JointTrajectoryController, goal: Any) -> GoalResponse:
         traj = from_joint_trajectory_msg(goal.trajectory)
@@ -326,26 +336,19 @@ class ControllerManagerNode(Node):
             handle.abort()
             result.error_code, result.error_string = FollowJointTrajectory.Result.INVALID_GOAL, "simulation busy"
             return result
-        while not goal.done.wait(ACTION_MONITOR_SEC):
-            if handle.is_cancel_requested:
-                self.sim.call(lambda: jtc.cancel(goal))
-                break
-            if not handle.is_active:
-                break
+
+        def feedback() -> Any:
             state = jtc.last_state
-            if state is not None:
-                fb = FollowJointTrajectory.Feedback()
-                fb.header.stamp = self.get_clock().now().to_msg()
-                fb.joint_names = list(state.joint_names)
-                fb.desired = to_trajectory_point_msg(state.reference)
-                fb.actual = to_trajectory_point_msg(state.feedback)
-                fb.error = to_trajectory_point_msg(state.error)
-                handle.publish_feedback(fb)
+            if state is None:
+                return None
+            fb = FollowJointTrajectory.Feedback()
+            fb.header.stamp = self.get_clock().now().to_msg()
+            fb.joint_names = list(state.joint_names)
+            fb.desired = to_trajectory_point_msg(state.reference)
+            fb.actual = to_trajectory_point_msg(state.feedback)
+            fb.error = to_trajectory_point_msg(state.error)
+            return fb
+
+        self._follow(handle, goal, lambda: jtc.cancel(goal), feedback)
         result.error_code, result.error_string = goal.error_code, goal.error_string
-        if goal.status == "succeeded":
-            handle.succeed()
-        elif goal.status == "canceled" and handle.is_cancel_requested:
-            handle.canceled()
-        else:
-            handle.abort()
         return result
