@@ -163,7 +163,18 @@ def test_the_blog_commands_build_launch_and_drive_the_robot(tmp_path, ros_client
 
         ros_client.node.create_subscription(Odometry, "/odom", lambda m: odom.append(m), 10)
         ros_client.node.create_subscription(TFMessage, "/tf", on_tf, 10)
-        tf_pubs = wait_for(lambda: ros_client.node.get_publishers_info_by_topic("/tf"), 15, "/tf publishers")
+        tf_pubs = wait_for(
+            lambda: (
+                [
+                    p
+                    for p in ros_client.node.get_publishers_info_by_topic("/tf")
+                    if p.node_name == "robot_state_publisher"
+                ]
+                and ros_client.node.get_publishers_info_by_topic("/tf")
+            ),
+            15,
+            "robot_state_publisher among the /tf publishers",
+        )
         wait_for(lambda: odom, 15, "/odom")
         x0 = odom[-1].pose.pose.position.x
 

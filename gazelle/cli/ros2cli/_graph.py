@@ -27,7 +27,7 @@ def cli_node(name: str = "ros2cli") -> Iterator[Any]:
         rclpy.try_shutdown()  # pyright: ignore[reportPrivateImportUsage]
 
 
-QUIET_SEC = 1.0
+QUIET_SEC = 2.0
 """Discovery is taken as done when the graph has not changed for this long (after the spin time)."""
 MAX_DISCOVERY_SEC = 8.0
 

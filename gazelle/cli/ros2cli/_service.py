@@ -116,7 +116,7 @@ def node_main(argv: list[str]) -> int:
 
         if target not in names and wait_until(node, lambda: target in node_names()):
             names = node_names()
-            discover(node, 0.3)
+        discover(node)  # its endpoints arrive after the node itself
 
         if target not in names:
             print(f"Unable to find node '{target}'", file=sys.stderr)
