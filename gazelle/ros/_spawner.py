@@ -33,6 +33,7 @@ from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
 from ..systems.ros2_control import ParamsError, load_params
+from ._convert import to_duration
 
 STRICT = SwitchController.Request.STRICT
 
@@ -174,12 +175,19 @@ def _with_node(name: str, body: Any, manager: str, timeout: float) -> int:
             rclpy.shutdown(context=context)
 
 
-def _spawn(cli: _Client, args: argparse.Namespace) -> int:
-    if not _wait_for_manager(cli, args.controller_manager_timeout):
+def _controller_states(cli: _Client, manager_timeout: float) -> dict[str, str] | None:
+    """Controller name -> lifecycle state, once the manager answers; None (after saying so) when it does not."""
+    if not _wait_for_manager(cli, manager_timeout):
         _error("Controller manager not available")
-        return 1
+        return None
     listed = cli.call(ListControllers, "list_controllers", ListControllers.Request())
-    loaded = {c.name: c.state for c in listed.controller}
+    return {c.name: c.state for c in listed.controller}
+
+
+def _spawn(cli: _Client, args: argparse.Namespace) -> int:
+    loaded = _controller_states(cli, args.controller_manager_timeout)
+    if loaded is None:
+        return 1
     for path in args.param_file:
         try:
             load_params(path)
@@ -243,17 +251,14 @@ def _switch(cli: _Client, activate: list[str], deactivate: list[str], timeout: f
     req = SwitchController.Request(
         activate_controllers=activate, deactivate_controllers=deactivate, strictness=STRICT, activate_asap=True
     )
-    req.timeout.sec = int(timeout)
-    req.timeout.nanosec = int((timeout - int(timeout)) * 1e9)
+    req.timeout = to_duration(timeout)
     return bool(cli.call(SwitchController, "switch_controller", req).ok)
 
 
 def _unspawn(cli: _Client, args: argparse.Namespace) -> int:
-    if not _wait_for_manager(cli, args.service_call_timeout):
-        _error("Controller manager not available")
+    states = _controller_states(cli, args.service_call_timeout)
+    if states is None:
         return 1
-    listed = cli.call(ListControllers, "list_controllers", ListControllers.Request())
-    states = {c.name: c.state for c in listed.controller}
     active = [n for n in args.controller_names if states.get(n) == "active"]
     if active and not _switch(cli, [], active, args.switch_timeout):
         _error(f"Failed to deactivate {active}")
