@@ -10,6 +10,7 @@ This package imports nothing from the systems, the runtime or ROS.
 from ._builder import SEP as SEP
 from ._builder import BuildError as BuildError
 from ._convex import prepare as prepare_meshes
+from ._handles import ActuatorGroup as ActuatorGroup
 from ._handles import ActuatorHandle as ActuatorHandle
 from ._handles import ActuatorKind as ActuatorKind
 from ._handles import BodyHandle as BodyHandle
@@ -33,6 +34,7 @@ from ._world import pose_out_of_range as pose_out_of_range
 
 __all__ = [
     "ContactPoint",
+    "ActuatorGroup",
     "ActuatorHandle",
     "ActuatorKind",
     "BodyHandle",

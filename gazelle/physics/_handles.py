@@ -194,6 +194,23 @@ class ActuatorHandle:
         return f"ActuatorHandle({self.name!r}, {self.kind.value})"
 
 
+class ActuatorGroup:
+    """Several actuators set together (one indexed write instead of one per actuator): what a
+    ros2_control hardware component writes every cycle. Get one with :meth:`PhysicsWorld.actuator_group`."""
+
+    __slots__ = ("world", "actuators", "_ids")
+
+    def __init__(self, world: PhysicsWorld, actuators: tuple[ActuatorHandle, ...]) -> None:
+        self.world = world
+        self.actuators = actuators
+        self._ids = PerGeneration(lambda w: np.array([w.actuator_id(a.name) for a in actuators], dtype=np.intp))
+
+    def command(self, values: list[float]) -> None:
+        """Set every actuator's input, in :attr:`actuators` order."""
+        world = self.world
+        world.data.ctrl[self._ids.get(world)] = values
+
+
 class BodyHandle:
     """One link of an entity: its world pose and velocity (ground truth)."""
 

@@ -20,7 +20,7 @@ import numpy as np
 from ..description import Light, Model, Pose, World, excerpt, quat_conj, quat_rotate, rotation_matrix
 from ._builder import JOINT_ARMATURE, SEP, BuildError, BuiltEntity, add_model, friction_priority, scoped
 from ._convex import cache_dir
-from ._handles import ActuatorHandle, ActuatorKind, BodyHandle, JointGroup, JointHandle
+from ._handles import ActuatorGroup, ActuatorHandle, ActuatorKind, BodyHandle, JointGroup, JointHandle
 from ._render import OffscreenRenderer
 
 _log = logging.getLogger("gazelle.physics")
@@ -512,6 +512,10 @@ class PhysicsWorld:
     def joint_group(self, entity: str, joints: tuple[str, ...]) -> JointGroup:
         """A handle reading several 1-dof joints of an entity at once (see :class:`JointGroup`)."""
         return JointGroup(self, entity, joints)
+
+    def actuator_group(self, actuators: tuple[ActuatorHandle, ...]) -> ActuatorGroup:
+        """A handle setting several actuators at once (see :class:`ActuatorGroup`)."""
+        return ActuatorGroup(self, actuators)
 
     def set_actuator_gains(self, handle: ActuatorHandle, kp: float, kv: float) -> None:
         """Change a position (``kp``, ``kv``) or velocity (``kv``) actuator's gains, e.g. once the

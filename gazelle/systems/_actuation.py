@@ -165,14 +165,20 @@ class PositionServo:
         not on the velocity, so a moving target is followed without lag), integrating the position
         error over the time since the last update (``measured``: the joint's position, when the
         caller has just read it)."""
+        self.actuator.command(self.control(target, sim_time_sec, velocity, measured))
+
+    def control(
+        self, target: float, sim_time_sec: float, velocity: float = 0.0, measured: float | None = None
+    ) -> float:
+        """What :meth:`update` commands, returned instead (to set several actuators in one write)."""
         g = self.gains
         if self._last is not None and g.i_gain:
             err = target - (self.actuator.joint.position if measured is None else measured)
             self.integral = min(max(self.integral + g.i_gain * err * (sim_time_sec - self._last), g.i_min), g.i_max)
         self._last = sim_time_sec
-        kp = max(g.p_gain, 1e-9)
+        kp = g.p_gain if g.p_gain > 1e-9 else 1e-9
         # kp·(c − q) − kv·q̇ with c = target + kv·velocity/kp is kp·(target − q) + kv·(velocity − q̇)
-        self.actuator.command(target + (g.cmd_offset + self.integral + g.d_gain * velocity) / kp)
+        return target + (g.cmd_offset + self.integral + g.d_gain * velocity) / kp
 
     def reset(self) -> None:
         self.integral = 0.0

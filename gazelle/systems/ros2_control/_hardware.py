@@ -81,6 +81,8 @@ class _Joint:
     """(position target, sim time) last sent in position mode."""
     keys: dict[str, str] = field(default_factory=dict)
     """Interface -> ``joint/interface`` (made once: the cycle runs at up to 1 kHz)."""
+    slot: int = -1
+    """Index of its position servo in :attr:`SimHardware._servo_values` (-1: none)."""
 
 
 class SimHardware:
@@ -162,6 +164,13 @@ class SimHardware:
             self.joints[comp.name] = joint
         names = tuple(self.joints)
         self._group = world.joint_group(entity.name, names)
+        servos = [j for j in self.joints.values() if j.position is not None]
+        for slot, j in enumerate(servos):
+            j.slot = slot
+        self._servos = world.actuator_group(tuple(j.commands["position"] for j in servos))
+        """The position servos' actuators, set in one write each cycle."""
+        self._servo_values: list[float] = [0.0] * len(servos)
+        self._joint_list = list(self.joints.values())
         self._read_plan: list[tuple[str, list[int], list[str], bool]] = []
         """Per interface kind read: (kind, joint indices, state keys, whether every joint has it)."""
         for kind in JOINT_INTERFACES:
@@ -264,6 +273,7 @@ class SimHardware:
                 joint.commands["position"].set_gains(gains.p_gain, gains.d_gain)
             if joint.mode is None:
                 self._set_mode(joint, None)
+        self._servo_values = [act.commanded for act in self._servos.actuators]
 
     def command_interfaces(self) -> list[str]:
         """Every ``joint/interface`` a controller may claim."""
@@ -291,20 +301,24 @@ class SimHardware:
             states.update(zip(keys, (values[i] for i in idx)))
 
     def write(self, sim_time_sec: float) -> None:
-        """Send each joint's command in its active mode (clamped to the interface's min/max); hold the others."""
+        """Send each joint's command in its active mode (clamped to the interface's min/max); hold the others.
+
+        The position servos' commands go to MuJoCo in one write (this runs every cycle, up to 1 kHz)."""
         if self.state != "active":
             return
-        commands = self.commands
-        for joint in self.joints.values():
+        commands, joints, servo_values = self.commands, self.joints, self._servo_values
+        for joint in self._joint_list:
             mode = joint.mode
-            if joint.mimic is not None and mode is None and joint.mimic[0] in self.joints:
-                leader = self.joints[joint.mimic[0]]
-                if leader.mode == "position" and "position" in joint.commands:
-                    target = commands.get(leader.keys["position"], math.nan)
-                    if math.isfinite(target):
-                        self._drive_position(joint, joint.mimic[1] * target + joint.mimic[2], sim_time_sec)
-                        continue
             if mode is None:
+                mimic = joint.mimic
+                if mimic is not None and joint.slot >= 0 and mimic[0] in joints:
+                    leader = joints[mimic[0]]
+                    target = commands.get(leader.keys["position"], math.nan) if leader.mode == "position" else math.nan
+                    if target == target and target not in (math.inf, -math.inf):
+                        servo_values[joint.slot] = self._drive_position(
+                            joint, mimic[1] * target + mimic[2], sim_time_sec
+                        )
+                        continue
                 self._hold(joint, sim_time_sec)
                 continue
             value = commands.get(joint.keys[mode], math.nan)
@@ -317,14 +331,17 @@ class SimHardware:
             elif value > hi:
                 value = hi
             if mode == "position":
-                self._drive_position(joint, value, sim_time_sec)
+                servo_values[joint.slot] = self._drive_position(joint, value, sim_time_sec)
             elif mode == "velocity":
                 assert joint.velocity is not None
                 joint.velocity.update(value, sim_time_sec)
             else:
                 joint.commands["effort"].command(value)
+        if servo_values:
+            self._servos.command(servo_values)
 
-    def _drive_position(self, joint: _Joint, target: float, sim_time_sec: float) -> None:
+    def _drive_position(self, joint: _Joint, target: float, sim_time_sec: float) -> float:
+        """The position servo's command for ``target`` (its actuator switched on)."""
         servo = joint.position
         assert servo is not None
         if joint.enabled != "position":
@@ -339,8 +356,8 @@ class SimHardware:
             else:
                 velocity = 0.0
         joint.last_target = (target, sim_time_sec)
-        servo.update(target, sim_time_sec, velocity, self.states.get(joint.keys["position"]))
         joint.hold = target
+        return servo.control(target, sim_time_sec, velocity, self.states.get(joint.keys["position"]))
 
     def _hold(self, joint: _Joint, sim_time_sec: float) -> None:
         joint.last_target = None
@@ -351,8 +368,11 @@ class SimHardware:
                 joint.enabled = None
             return
         if joint.position is not None:
-            self._enable_only(joint, "position")
-            joint.position.update(joint.hold, sim_time_sec)
+            if joint.enabled != "position":
+                self._enable_only(joint, "position")
+            self._servo_values[joint.slot] = joint.position.control(
+                joint.hold, sim_time_sec, 0.0, self.states.get(joint.keys["position"])
+            )
         elif joint.velocity is not None:
             self._enable_only(joint, "velocity")
             joint.velocity.update(0.0, sim_time_sec)

@@ -19,10 +19,11 @@ from __future__ import annotations
 import bisect
 import math
 import threading
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from .._bus import JointTrajectory, MsgType, TrajectoryControllerState, TrajectoryPoint
-from ._controller import Controller
+from ._controller import Controller, values_getter
 from ._hardware import ControlError
 
 # control_msgs/FollowJointTrajectory result codes
@@ -82,6 +83,8 @@ class _Segmented:
     vel: list[list[float]] | None
     acc: list[list[float]] | None
     goal: TrajectoryGoal | None
+    path_tolerance: list[Tolerance] | None = None
+    """Per joint (controller order), what the goal's path must keep to; None: nothing to check."""
 
     def sample(self, t: float) -> tuple[list[float], list[float], list[float]]:
         times = self.times
@@ -174,6 +177,9 @@ class JointTrajectoryController(Controller):
         self._pos_keys = [f"{j}/position" for j in self.joints]
         self._vel_keys = [f"{j}/velocity" for j in self.joints]
         self._out_keys = [f"{j}/{self.cmd_kinds[0]}" for j in self.joints]
+        self._get_pos = values_getter(self._pos_keys)
+        self._get_vel = values_getter(self._vel_keys)
+        self._write_velocity = self.cmd_kinds[0] == "position" and "velocity" in self.cmd_kinds
         self.subscribe("~/joint_trajectory", MsgType.JOINT_TRAJECTORY, lambda m: self._queue(m, None))
         self._state_pub = self.advertise("~/controller_state", MsgType.TRAJECTORY_CONTROLLER_STATE)
         self.action_name = self.topic("~/follow_joint_trajectory")
@@ -248,6 +254,8 @@ class JointTrajectoryController(Controller):
         self._traj = None
         self._hold = [states[f"{j}/position"] for j in self.joints]
         self._integral = [0.0] * len(self.joints)
+        if not all(k in states for k in self._vel_keys):
+            self._get_vel = lambda values: tuple(values.get(k, 0.0) for k in self._vel_keys)
 
     def on_deactivate(self) -> None:
         traj = self._traj
@@ -279,19 +287,25 @@ class JointTrajectoryController(Controller):
             pos.append([p.positions[index[j]] if j in index else base[k] for k, j in enumerate(self.joints)])
             vel.append([p.velocities[index[j]] if j in index and have_vel else 0.0 for j in self.joints])
             acc.append([p.accelerations[index[j]] if j in index and have_acc else 0.0 for j in self.joints])
-        self._traj = _Segmented(times, pos, vel if have_vel else None, acc if have_acc else None, goal)
+        path_tol = None
+        if goal is not None:
+            tols = [goal.path_tolerance.get(j, self.path_tol[j]) for j in self.joints]
+            if any(tol.position > 0 or tol.velocity > 0 for tol in tols):
+                path_tol = tols
+        self._traj = _Segmented(times, pos, vel if have_vel else None, acc if have_acc else None, goal, path_tol)
         self._hold = pos[-1]
         if goal is not None:
             goal.status = "executing"
 
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
         joints = self.joints
-        actual = [states[k] for k in self._pos_keys]
-        actual_v = [states.get(k, 0.0) for k in self._vel_keys]
-        with self._lock:
-            incoming, self._incoming = self._incoming, None
-        if incoming is not None:
-            self._start(incoming[0], incoming[1], t, actual)
+        actual = list(self._get_pos(states))
+        actual_v = self._get_vel(states)
+        if self._incoming is not None:  # (a plain read first: no lock taken on the usual cycle)
+            with self._lock:
+                incoming, self._incoming = self._incoming, None
+            if incoming is not None:
+                self._start(incoming[0], incoming[1], t, actual)
         traj = self._traj
         if traj is not None and traj.goal is not None and traj.goal.done.is_set():
             # canceled (or ended) from outside: hold where the joints are
@@ -326,7 +340,7 @@ class JointTrajectoryController(Controller):
         des_v: list[float],
         des_a: list[float],
         actual: list[float],
-        actual_v: list[float],
+        actual_v: Sequence[float],
         err_p: list[float],
         err_v: list[float],
         commands: dict[str, float],
@@ -350,25 +364,25 @@ class JointTrajectoryController(Controller):
         period: float,
     ) -> None:
         kinds = self.cmd_kinds
+        if kinds[0] == "position":
+            commands.update(zip(self._out_keys, des_p))
+            if self._write_velocity:
+                commands.update(zip(self._vel_keys, des_v))
+            return
         for k, j in enumerate(self.joints):
-            if kinds[0] == "position":
-                commands[f"{j}/position"] = des_p[k]
-                if "velocity" in kinds:
-                    commands[f"{j}/velocity"] = des_v[k]
-                continue
             p, i, d, ff = self.gains[j]
             self._integral[k] += err_p[k] * period
             u = ff * des_v[k] + p * err_p[k] + i * self._integral[k] + d * err_v[k]
-            commands[f"{j}/{kinds[0]}"] = u
+            commands[self._out_keys[k]] = u
 
     def _check(self, traj: _Segmented, t: float, err_p: list[float], err_v: list[float], actual: list[float]) -> None:
         goal = traj.goal
         assert goal is not None
         end = traj.times[-1]
         if t < end:
-            for k, j in enumerate(self.joints):
-                tol = goal.path_tolerance.get(j, self.path_tol[j])
+            for k, tol in enumerate(traj.path_tolerance or ()):
                 if _violates(tol, err_p[k], err_v[k]):
+                    j = self.joints[k]
                     self._traj, self._hold = None, list(actual)
                     goal.finish(
                         "aborted",
