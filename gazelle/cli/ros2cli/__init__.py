@@ -1,10 +1,10 @@
 """The ``ros2`` command for a venv without ROS 2's ros2cli: ``launch``, ``run``, ``pkg``, and the first
 introspection verbs: ``topic`` (list, echo, hz, info, type, pub), ``service`` (list, type, find, call),
-``node`` (list, info) and ``interface`` (show, list, package).
+``node`` (list, info), ``interface`` (show, list, package) and ``bag`` (record, play, info: MCAP).
 
 Same arguments and output as ros2cli Jazzy for what it covers; an unknown verb lists the verbs that
-exist. ``gazelle launch`` and ``gazelle run`` are the same commands. ``param``, ``action`` and ``bag``
-are not here yet.
+exist. ``gazelle launch`` and ``gazelle run`` are the same commands. ``param`` and ``action`` are not
+here yet.
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ import argparse
 import os
 import sys
 
-VERBS = ("interface", "launch", "node", "pkg", "run", "service", "topic")
+VERBS = ("bag", "interface", "launch", "node", "pkg", "run", "service", "topic")
 
 
 def ensure_ament_prefix() -> None:
@@ -33,7 +33,10 @@ def main(argv: list[str] | None = None) -> int:
     if not argv or argv[0] in ("-h", "--help"):
         print("usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ...\n")
         print("ros2 is an extensible command-line tool for ROS 2 (gazelle's subset).\n")
-        print("Commands:\n  interface  Show information about ROS interfaces\n  launch     Run a launch file")
+        print(
+            "Commands:\n  bag        Various rosbag related sub-commands\n"
+            "  interface  Show information about ROS interfaces\n  launch     Run a launch file"
+        )
         print("  node       Various node related sub-commands\n  pkg        Various package related sub-commands")
         print("  run        Run a package specific executable\n  service    Various service related sub-commands")
         print("  topic      Various topic related sub-commands\n")
@@ -52,6 +55,10 @@ def main(argv: list[str] | None = None) -> int:
         from ._pkg import main as pkg_main
 
         return pkg_main(rest)
+    if verb == "bag":
+        from ._bag import main as bag_main
+
+        return bag_main(rest)
     if verb == "topic":
         from ._topic import main as topic_main
 
@@ -64,7 +71,7 @@ def main(argv: list[str] | None = None) -> int:
     print(
         f"usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ...\n"
         f"ros2: error: argument Call `ros2 <command> -h` for more detailed usage.: invalid choice: '{verb}' "
-        f"(choose from {', '.join(repr(v) for v in VERBS)}); param, action and bag are not in gazelle's ros2 yet",
+        f"(choose from {', '.join(repr(v) for v in VERBS)}); param and action are not in gazelle's ros2 yet",
         file=sys.stderr,
     )
     return 2

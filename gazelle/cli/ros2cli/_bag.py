@@ -1,0 +1,484 @@
+"""``ros2 bag record | play | info``: rosbag2's MCAP storage, written and read with the ``mcap`` library.
+
+A bag is a folder with ``metadata.yaml`` (rosbag2's version 9 layout) and ``<folder>_0.mcap``: profile
+``ros2``, one schema per type (``ros2msg``: the definition with its dependencies, see
+:mod:`._definitions`), one channel per topic (``cdr``, with the publishers' ``offered_qos_profiles``),
+and the messages as the CDR bytes received (raw subscriptions: nothing is deserialised while
+recording). rosbag2 itself, ``rosbags`` and Foxglove read it.
+
+Decisions where rosbag2 leaves a choice:
+
+* ``record`` subscribes with a QoS compatible with every publisher (reliable only if all are, transient
+  local if any is) and stamps each message with its receive time (``--use-sim-time``: /clock's);
+* ``play`` waits, before the first message, until the subscribers already in the graph have matched its
+  publishers (at most ``--wait`` seconds, 2 by default), so a listener started first misses nothing,
+  and at the end until reliable subscribers acknowledged everything (at most 2 s).
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import re
+import signal
+import sys
+import time
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from ._definitions import full_text
+from ._graph import cli_node, is_hidden
+from ._messages import InterfaceError, get_interface
+
+ROSBAG2_VERSION = 9
+"""metadata.yaml's layout version (rosbag2 Jazzy's)."""
+DISCOVERY_PERIOD_SEC = 0.1
+"""How often ``record`` looks for new topics (rosbag2's default topic polling interval)."""
+
+
+class BagError(Exception):
+    """What makes a bag command fail; the message is the one line printed."""
+
+
+def main(argv: list[str]) -> int:
+    p = argparse.ArgumentParser(prog="ros2 bag", description="Various rosbag related sub-commands")
+    sub = p.add_subparsers(dest="cmd", required=True)
+    rec = sub.add_parser("record", help="Record ROS data to a bag")
+    rec.add_argument("topics", nargs="*", help="topics to record")
+    rec.add_argument("-a", "--all", action="store_true", help="record all topics")
+    rec.add_argument("-e", "--regex", default="", help="record the topics matching this regular expression")
+    rec.add_argument("-x", "--exclude", default="", help="leave out the topics matching this regular expression")
+    rec.add_argument("-o", "--output", default=None, help="the bag folder (default rosbag2_<date>-<time>)")
+    rec.add_argument("-s", "--storage", default="mcap", help="storage identifier (mcap)")
+    rec.add_argument("-d", "--max-bag-duration", type=float, default=0.0, help="(not split: one file)")
+    rec.add_argument("--max-duration", type=float, default=0.0, help="stop after this many seconds")
+    rec.add_argument("--include-hidden-topics", action="store_true")
+    rec.add_argument("--use-sim-time", action="store_true", help="stamp messages with /clock's time")
+    play = sub.add_parser("play", help="Play back ROS data from a bag")
+    play.add_argument("bag_path")
+    play.add_argument("-r", "--rate", type=float, default=1.0)
+    play.add_argument("-l", "--loop", action="store_true")
+    play.add_argument("--topics", nargs="+", default=None)
+    play.add_argument("--clock", nargs="?", type=float, const=40.0, default=None, help="publish /clock at HZ (40)")
+    play.add_argument("--start-offset", type=float, default=0.0)
+    play.add_argument("--delay", type=float, default=0.0, help="seconds to wait before playing")
+    play.add_argument("--wait", type=float, default=2.0, help="(gazelle) at most this long for subscribers to match")
+    play.add_argument("-s", "--storage", default="mcap")
+    info = sub.add_parser("info", help="Print information about a bag to the screen")
+    info.add_argument("bag_path")
+    info.add_argument("-s", "--storage", default="mcap")
+    args = p.parse_args(argv)
+    try:
+        if getattr(args, "storage", "mcap") != "mcap":
+            raise BagError(f"storage '{args.storage}' is not available: gazelle's rosbag2 writes and reads mcap")
+        if args.cmd == "info":
+            return _info(Path(args.bag_path))
+        if args.cmd == "record":
+            return _record(args)
+        return _play(args)
+    except (BagError, InterfaceError) as err:
+        print(f"[ERROR] [ros2bag]: {err}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        return 0
+
+
+# --------------------------------------------------------------------------- metadata
+def _qos_dicts(infos: list[Any]) -> list[dict[str, Any]]:
+    """The offered QoS of publishers as rosbag2 Jazzy writes them (names lower case)."""
+    out = []
+    for info in infos:
+        q = info.qos_profile
+
+        def dur(d: Any) -> dict[str, int]:
+            ns = int(d.nanoseconds)
+            return {"sec": ns // 1_000_000_000, "nsec": ns % 1_000_000_000}
+
+        out.append(
+            {
+                "history": q.history.name.lower(),
+                "depth": int(q.depth),
+                "reliability": q.reliability.name.lower(),
+                "durability": q.durability.name.lower(),
+                "deadline": dur(q.deadline),
+                "lifespan": dur(q.lifespan),
+                "liveliness": q.liveliness.name.lower(),
+                "liveliness_lease_duration": dur(q.liveliness_lease_duration),
+                "avoid_ros_namespace_conventions": bool(q.avoid_ros_namespace_conventions),
+            }
+        )
+    return out
+
+
+def _read_metadata(bag: Path) -> dict[str, Any]:
+    if not bag.exists():
+        raise BagError(f"bag '{bag}' does not exist")
+    meta_path = bag / "metadata.yaml"
+    if not meta_path.is_file():
+        raise BagError(f"'{bag}' is not a bag folder: it has no metadata.yaml")
+    try:
+        meta = yaml.safe_load(meta_path.read_text(encoding="utf-8"))["rosbag2_bagfile_information"]
+        missing = [
+            k
+            for k in ("relative_file_paths", "topics_with_message_count", "duration", "starting_time")
+            if k not in meta
+        ]
+        if missing:
+            raise KeyError(", ".join(missing))
+    except (yaml.YAMLError, KeyError, TypeError) as err:
+        raise BagError(f"{meta_path}: not rosbag2 metadata ({type(err).__name__}: {err})") from None
+    if meta.get("storage_identifier") != "mcap":
+        raise BagError(f"{meta_path}: storage '{meta.get('storage_identifier')}' is not supported (only mcap)")
+    return meta
+
+
+def _mcap_files(bag: Path, meta: dict[str, Any]) -> list[Path]:
+    files = [bag / Path(p).name for p in meta["relative_file_paths"]]
+    missing = [str(f) for f in files if not f.is_file()]
+    if missing:
+        raise BagError(f"the bag's file(s) {', '.join(missing)} are missing")
+    return files
+
+
+def _summary(path: Path) -> Any:
+    """The MCAP file's summary (schemas, channels, statistics); a corrupt file is a :class:`BagError`."""
+    from mcap.reader import make_reader
+
+    try:
+        with open(path, "rb") as f:
+            summary = make_reader(f).get_summary()
+    except Exception as err:  # the mcap library raises several kinds on a damaged file
+        raise BagError(f"could not read '{path}': not a valid MCAP file ({type(err).__name__}: {err})") from None
+    if summary is None:
+        raise BagError(f"could not read '{path}': the MCAP file has no summary (was the recording cut short?)")
+    return summary
+
+
+# --------------------------------------------------------------------------- info
+def _stamp(ns: int) -> str:
+    t = datetime.datetime.fromtimestamp(ns / 1e9)
+    return (
+        f"{t.strftime('%b %d %Y %H:%M:%S')}.{ns % 1_000_000_000:09d} ({ns // 1_000_000_000}.{ns % 1_000_000_000:09d})"
+    )
+
+
+def _size(n: float) -> str:
+    for unit in ("B", "KiB", "MiB", "GiB"):
+        if n < 1024 or unit == "GiB":
+            return f"{n:.1f} {unit}" if unit != "B" else f"{int(n)} B"
+        n /= 1024
+    return f"{n:.1f} GiB"
+
+
+def _info(bag: Path) -> int:
+    meta = _read_metadata(bag)
+    files = _mcap_files(bag, meta)
+    for f in files:
+        _summary(f)  # a damaged file is reported, not described from metadata.yaml alone
+    topics = meta["topics_with_message_count"]
+    start = int(meta["starting_time"]["nanoseconds_since_epoch"])
+    duration = int(meta["duration"]["nanoseconds"])
+    label = 19
+    print(f"{'Files:':{label}}{files[0].name}")
+    for f in files[1:]:
+        print(f"{'':{label}}{f.name}")
+    print(f"{'Bag size:':{label}}{_size(sum(f.stat().st_size for f in files))}")
+    print(f"{'Storage id:':{label}}{meta['storage_identifier']}")
+    print(f"{'ROS Distro:':{label}}{meta.get('ros_distro', '')}")
+    print(f"{'Duration:':{label}}{duration // 1_000_000_000}.{duration % 1_000_000_000:09d}s")
+    print(f"{'Start:':{label}}{_stamp(start)}")
+    print(f"{'End:':{label}}{_stamp(start + duration)}")
+    print(f"{'Messages:':{label}}{meta['message_count']}")
+    lines = [
+        f"Topic: {t['topic_metadata']['name']} | Type: {t['topic_metadata']['type']} | Count: {t['message_count']} | "
+        f"Serialization Format: {t['topic_metadata']['serialization_format']}"
+        for t in topics
+    ]
+    print(f"{'Topic information:':{label}}{lines[0] if lines else ''}")
+    for line in lines[1:]:
+        print(f"{'':{label}}{line}")
+    print(f"{'Service:':{label}}0")
+    print(f"{'Service information:':{label}}")
+    return 0
+
+
+# --------------------------------------------------------------------------- record
+class _Recorder:
+    def __init__(self, node: Any, out: Path, use_sim_time: bool) -> None:
+        from mcap.writer import CompressionType, Writer
+
+        self.node = node
+        self.out = out
+        self.path = out / f"{out.name}_0.mcap"
+        self._file = open(self.path, "wb")
+        self._writer = Writer(self._file, compression=CompressionType.ZSTD)
+        self._writer.start(profile="ros2", library="gazelle rosbag2 (mcap)")
+        self._schemas: dict[str, int] = {}
+        self.topics: dict[str, dict[str, Any]] = {}
+        """topic -> {type, channel, count, qos}"""
+        self._subs: list[Any] = []
+        self._clock = node.get_clock() if use_sim_time else None
+        self.first = 2**63 - 1
+        self.last = 0
+        self.count = 0
+
+    def add(self, topic: str, type_name: str) -> None:
+        from ._topic import _qos_for
+
+        cls = get_interface(type_name)
+        schema = self._schemas.get(type_name)
+        if schema is None:
+            schema = self._schemas[type_name] = self._writer.register_schema(
+                name=type_name, encoding="ros2msg", data=full_text(type_name).encode()
+            )
+        qos = _qos_dicts(self.node.get_publishers_info_by_topic(topic))
+        channel = self._writer.register_channel(
+            topic=topic,
+            message_encoding="cdr",
+            schema_id=schema,
+            metadata={"offered_qos_profiles": yaml.safe_dump(qos, sort_keys=False), "topic_type_hash": ""},
+        )
+        entry = {"type": type_name, "channel": channel, "count": 0, "qos": qos}
+        self.topics[topic] = entry
+
+        def on_message(data: bytes, entry: dict[str, Any] = entry) -> None:
+            now = self._clock.now().nanoseconds if self._clock is not None else time.time_ns()
+            entry["count"] += 1
+            self.count += 1
+            self.first = min(self.first, now)
+            self.last = max(self.last, now)
+            self._writer.add_message(
+                channel_id=entry["channel"], log_time=now, publish_time=now, data=data, sequence=entry["count"]
+            )
+
+        self._subs.append(self.node.create_subscription(cls, topic, on_message, _qos_for(self.node, topic), raw=True))
+        print(f"[INFO] [rosbag2_recorder]: Subscribed to topic '{topic}'", flush=True)
+
+    def finish(self) -> None:
+        self._writer.finish()
+        self._file.close()
+        count = self.count
+        start = self.first if count else 0
+        duration = self.last - self.first if count else 0
+        meta = {
+            "rosbag2_bagfile_information": {
+                "version": ROSBAG2_VERSION,
+                "storage_identifier": "mcap",
+                "duration": {"nanoseconds": duration},
+                "starting_time": {"nanoseconds_since_epoch": start},
+                "message_count": count,
+                "topics_with_message_count": [
+                    {
+                        "topic_metadata": {
+                            "name": topic,
+                            "type": e["type"],
+                            "serialization_format": "cdr",
+                            "offered_qos_profiles": e["qos"],
+                            "type_description_hash": "",
+                        },
+                        "message_count": e["count"],
+                    }
+                    for topic, e in self.topics.items()
+                ],
+                "compression_format": "",
+                "compression_mode": "",
+                "relative_file_paths": [self.path.name],
+                "files": [
+                    {
+                        "path": self.path.name,
+                        "starting_time": {"nanoseconds_since_epoch": start},
+                        "duration": {"nanoseconds": duration},
+                        "message_count": count,
+                    }
+                ],
+                "custom_data": {},
+                "ros_distro": "jazzy",
+            }
+        }
+        (self.out / "metadata.yaml").write_text(yaml.safe_dump(meta, sort_keys=False), encoding="utf-8")
+
+
+def _record(args: argparse.Namespace) -> int:
+    import rclpy
+
+    if not (args.all or args.topics or args.regex):
+        raise BagError("no topics given: name topics, or use -a (all) or -e REGEX")
+    try:
+        include = re.compile(args.regex) if args.regex else None
+        exclude = re.compile(args.exclude) if args.exclude else None
+    except re.error as err:
+        raise BagError(f"invalid regular expression: {err}") from None
+    out = Path(args.output or datetime.datetime.now().strftime("rosbag2_%Y_%m_%d-%H_%M_%S"))
+    if out.exists():
+        raise BagError(f"Output folder '{out}' already exists.")
+    wanted = {t if t.startswith("/") else f"/{t}" for t in args.topics}
+
+    def chosen(topic: str) -> bool:
+        if exclude is not None and exclude.search(topic):
+            return False
+        if topic in wanted:
+            return True
+        if include is not None and include.search(topic):
+            return True
+        return args.all and (args.include_hidden_topics or not is_hidden(topic))
+
+    stop = {"now": False}
+
+    def on_signal(_sig: int, _frame: Any) -> None:
+        stop["now"] = True
+
+    signal.signal(signal.SIGINT, on_signal)
+    signal.signal(signal.SIGTERM, on_signal)
+    with cli_node("ros2bag") as node:
+        if args.use_sim_time:
+            from rclpy.parameter import Parameter
+
+            node.set_parameters([Parameter("use_sim_time", Parameter.Type.BOOL, True)])
+        out.mkdir(parents=True)
+        rec = _Recorder(node, out, args.use_sim_time)
+        print("[INFO] [rosbag2_recorder]: Listening for topics...", flush=True)
+        started = time.monotonic()
+        next_scan = 0.0
+        try:
+            while not stop["now"]:
+                now = time.monotonic()
+                if args.max_duration and now - started >= args.max_duration:
+                    break
+                if now >= next_scan:
+                    next_scan = now + DISCOVERY_PERIOD_SEC
+                    for topic, types in node.get_topic_names_and_types():
+                        if topic not in rec.topics and types and chosen(topic):
+                            try:
+                                rec.add(topic, types[0])
+                            except InterfaceError as err:
+                                print(f"[WARN] [rosbag2_recorder]: topic '{topic}' not recorded: {err}", flush=True)
+                                rec.topics[topic] = {"type": types[0], "channel": -1, "count": 0, "qos": []}
+                rclpy.spin_once(node, timeout_sec=0.01)
+        finally:
+            rec.topics = {t: e for t, e in rec.topics.items() if e["channel"] >= 0}
+            rec.finish()
+        print(f"[INFO] [rosbag2_recorder]: Recording stopped: {rec.count} messages in '{out}'", flush=True)
+    return 0
+
+
+# --------------------------------------------------------------------------- play
+def _qos_profile(offered: list[dict[str, Any]]) -> Any:
+    """The QoS to publish with: the first recorded publisher's reliability and durability."""
+    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+
+    qos = QoSProfile(depth=100)
+    if offered:
+        first = offered[0]
+        rel, dur = str(first.get("reliability", "reliable")), str(first.get("durability", "volatile"))
+        qos.reliability = ReliabilityPolicy.BEST_EFFORT if rel in ("best_effort", "2") else ReliabilityPolicy.RELIABLE
+        qos.durability = (
+            DurabilityPolicy.TRANSIENT_LOCAL if dur in ("transient_local", "1") else DurabilityPolicy.VOLATILE
+        )
+    return qos
+
+
+def _offered(meta_qos: Any) -> list[dict[str, Any]]:
+    if isinstance(meta_qos, str):
+        try:
+            meta_qos = yaml.safe_load(meta_qos) if meta_qos.strip() else []
+        except yaml.YAMLError:
+            return []
+    return meta_qos if isinstance(meta_qos, list) else []
+
+
+def _play(args: argparse.Namespace) -> int:
+    from mcap.reader import make_reader
+    from rclpy.duration import Duration
+
+    bag = Path(args.bag_path)
+    meta = _read_metadata(bag)
+    files = _mcap_files(bag, meta)
+    for f in files:
+        _summary(f)
+    if args.rate <= 0:
+        raise BagError("--rate must be positive")
+    recorded = {t["topic_metadata"]["name"]: t["topic_metadata"] for t in meta["topics_with_message_count"]}
+    topics = [t for t in recorded if args.topics is None or t in args.topics]
+    with cli_node("ros2bag_player") as node:
+        pubs: dict[str, Any] = {}
+        for topic in topics:
+            md = recorded[topic]
+            pubs[topic] = node.create_publisher(
+                get_interface(md["type"]), topic, _qos_profile(_offered(md.get("offered_qos_profiles")))
+            )
+        clock_pub = None
+        if args.clock is not None:
+            from rosgraph_msgs.msg import Clock
+
+            clock_pub = node.create_publisher(Clock, "/clock", 10)
+        _wait_for_matches(node, pubs, args.wait)
+        if args.delay > 0:
+            time.sleep(args.delay)
+        while True:
+            for f in files:
+                _play_file(node, f, pubs, clock_pub, args, make_reader)
+            if not args.loop:
+                break
+        deadline = time.monotonic() + 2.0
+        for pub in pubs.values():
+            left = deadline - time.monotonic()
+            if left > 0:
+                pub.wait_for_all_acked(Duration(seconds=left))
+    return 0
+
+
+def _wait_for_matches(node: Any, pubs: dict[str, Any], timeout: float) -> None:
+    """Until every subscriber in the graph on a played topic has matched our publisher (or ``timeout``)."""
+    import rclpy
+
+    deadline = time.monotonic() + timeout
+    settle = time.monotonic() + min(0.5, timeout)
+    while time.monotonic() < deadline:
+        rclpy.spin_once(node, timeout_sec=0.05)
+        pending = [t for t, p in pubs.items() if node.count_subscribers(t) > p.get_subscription_count()]
+        if not pending and time.monotonic() >= settle:
+            return
+
+
+def _play_file(
+    node: Any, path: Path, pubs: dict[str, Any], clock_pub: Any, args: argparse.Namespace, make_reader: Any
+) -> None:
+    from rosgraph_msgs.msg import Clock
+
+    with open(path, "rb") as f:
+        reader = make_reader(f)
+        try:
+            messages = reader.iter_messages(topics=list(pubs), log_time_order=True)
+            first_time: int | None = None
+            wall0 = time.monotonic()
+            next_clock = 0.0
+            for _schema, channel, message in messages:
+                t = message.log_time
+                if first_time is None:
+                    first_time = t
+                offset = (t - first_time) / 1e9
+                if offset < args.start_offset:
+                    continue
+                due = wall0 + (offset - args.start_offset) / args.rate
+                while True:
+                    now = time.monotonic()
+                    if clock_pub is not None and now >= next_clock:
+                        sim_ns = t - int((due - now) * args.rate * 1e9)
+                        clock_pub.publish(Clock(clock=_time_msg(sim_ns)))
+                        next_clock = now + 1.0 / args.clock
+                    if now >= due:
+                        break
+                    time.sleep(min(due - now, 0.01))
+                pubs[channel.topic].publish(bytes(message.data))
+        except BagError:
+            raise
+        except Exception as err:  # a damaged chunk in the middle of a file
+            raise BagError(f"could not read '{path}': {type(err).__name__}: {err}") from None
+
+
+def _time_msg(ns: int) -> Any:
+    from builtin_interfaces.msg import Time
+
+    return Time(sec=ns // 1_000_000_000, nanosec=ns % 1_000_000_000)
