@@ -23,7 +23,7 @@ def test_schema_text_has_every_dependency_once_and_parses_independently(type_nam
     from mcap_ros2._dynamic import generate_dynamic
     from rosbags.typesys import get_types_from_msg
 
-    from gazelle.cli.ros2cli._definitions import full_text
+    from gazelle.ros import message_definition as full_text
 
     ensure_ament_prefix()
     text = full_text(type_name)

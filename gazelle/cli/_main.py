@@ -73,6 +73,14 @@ def sim(
         help="A web origin (http://host:port, or '*') besides the viewer's own whose pages may connect to it "
         "(repeatable); see docs/security.md.",
     ),
+    foxglove: int | None = typer.Option(
+        None,
+        "--foxglove",
+        is_flag=False,
+        flag_value=8765,
+        help="Also serve the Foxglove WebSocket protocol on this port (8765 when given without one), on the "
+        "viewer's interface, to the Foxglove app's origin and --viewer-allow-origin ones.",
+    ),
 ) -> None:
     """Run a simulation server: /clock, /spawn_entity, /delete_entity, every plugin's topics, and the browser viewer."""
     from ._sim import run_sim
@@ -89,8 +97,29 @@ def sim(
             viewer_port=viewer_port,
             viewer_allow_origins=_origins(viewer_allow_origin),
             ros_discovery=_discovery(ros_discovery),
+            foxglove_port=foxglove,
         )
     )
+
+
+@app.command()
+def foxglove(
+    port: int = typer.Option(8765, "--port", help="WebSocket port (foxglove_bridge's 8765 by default)."),
+    host: str = typer.Option("127.0.0.1", "--host", help="Interface to bind (0.0.0.0: every interface; think twice)."),
+    allow_origin: list[str] = typer.Option(
+        [],
+        "--allow-origin",
+        help="A web origin (http(s)://host:port, or '*') besides the Foxglove app's whose pages may connect "
+        "(repeatable).",
+    ),
+) -> None:
+    """Serve the ROS graph's topics over the Foxglove WebSocket protocol, as foxglove_bridge does."""
+    from ..ros import foxglove_main
+    from .ros2cli import ensure_ament_prefix
+
+    ensure_ament_prefix()  # the interface definitions (schemas) are found through it
+
+    raise typer.Exit(foxglove_main(host, port, _origins(allow_origin)))
 
 
 def _discovery(value: str | None) -> str | None:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import logging
 import os
 import signal
+import subprocess
 import sys
 import threading
 from pathlib import Path
@@ -58,6 +59,7 @@ def run_sim(
     viewer_port: int = 8080,
     viewer_allow_origins: tuple[str, ...] = (),
     ros_discovery: str | None = None,
+    foxglove_port: int | None = None,
 ) -> int:
     """Run the server; returns the process exit code."""
     logging.basicConfig(level=logging.INFO, format="[%(levelname)s] [%(name)s]: %(message)s", stream=sys.stderr)
@@ -99,6 +101,13 @@ def run_sim(
         else:
             view.start()
             print(f"gazelle: viewer at {view.url}", flush=True)
+    fox = None
+    if foxglove_port is not None:
+        # its own process: forwarding topics never competes with the simulation for the GIL
+        cmd = [sys.executable, "-m", "gazelle.cli", "foxglove", "--host", viewer_host, "--port", str(foxglove_port)]
+        for origin in viewer_allow_origins:
+            cmd += ["--allow-origin", origin]
+        fox = subprocess.Popen(cmd)
     target = "as fast as possible" if sim.rtf == 0 else f"{sim.rtf:g}"
     print(
         f"gazelle: ready: world '{world.name}' ({len(sim.world.entities)} entities), "
@@ -128,6 +137,12 @@ def run_sim(
     watchdog.start()
     if view is not None:
         view.stop()
+    if fox is not None:
+        fox.send_signal(signal.SIGINT)
+        try:
+            fox.wait(3.0)
+        except subprocess.TimeoutExpired:
+            fox.kill()
     sim.stop()
     bridge.shutdown()
     return rc

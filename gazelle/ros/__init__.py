@@ -3,13 +3,28 @@
 :class:`RosBridge` puts a running :class:`~gazelle.sim.Simulation` on the ROS graph: /clock, the
 gazebo_ros and simulation_interfaces services, and every system's topics (mirrored from the bus).
 ``spawn_main`` is ``gazelle spawn`` (gazebo_ros's spawn_entity.py); ``choose_discovery_range``
-keeps a server on this host unless asked otherwise.
+keeps a server on this host unless asked otherwise. ``message_definition`` is an interface's text with
+its dependencies (rosbag2's and Foxglove's ``ros2msg`` schemas).
 """
 
 from ._bridge import RosBridge
+from ._definitions import InterfaceError
+from ._definitions import full_text as message_definition
 from ._exposure import choose_discovery_range
+from ._foxglove import DEFAULT_PORT as FOXGLOVE_PORT
+from ._foxglove import run as foxglove_main
 from ._spawn import main as spawn_main
 from ._spawner import spawner_main as spawner_main
 from ._spawner import unspawner_main as unspawner_main
 
-__all__ = ["RosBridge", "choose_discovery_range", "spawn_main", "spawner_main", "unspawner_main"]
+__all__ = [
+    "FOXGLOVE_PORT",
+    "InterfaceError",
+    "RosBridge",
+    "message_definition",
+    "choose_discovery_range",
+    "foxglove_main",
+    "spawn_main",
+    "spawner_main",
+    "unspawner_main",
+]

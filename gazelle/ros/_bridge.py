@@ -43,10 +43,11 @@ from std_srvs.srv import Empty
 from ..description import Model, ModelLoadError, Pose, World, load_string, quat_conj, quat_rotate, reply_text
 from ..physics import WORLD_FRAMES, EntityState, ErrorKind, WorldError, pose_out_of_range
 from ..sim import Simulation
-from ..systems import Endpoint, MsgType, Qos, Transform, TransformBatch, UpdateInfo
+from ..systems import Endpoint, MsgType, PluginNode, Qos, Transform, TransformBatch, UpdateInfo
 from ._convert import FROM_ROS, ROS_TYPES, TO_ROS, from_pose_msg, to_pose_msg, to_time
 from ._exposure import ServerRegistry
 from ._outbox import Lane, Outbox
+from ._plugin_nodes import PluginNodes
 from ._replies import guarded_service, with_warnings
 
 
@@ -170,9 +171,11 @@ class _Subscribed:
 
 @dataclass
 class _RosEndpoint:
-    """One rclpy publisher or subscription, shared by every bus endpoint with the same topic."""
+    """One rclpy publisher, shared by every bus endpoint of one node with the same topic."""
 
     handle: Any
+    node: Any
+    """The node it was made on (this one, or a plugin's)."""
     users: int = 0
     lane: Lane | None = None
     """/tf_static: the one lane of the union of every robot's static transforms."""
@@ -193,7 +196,7 @@ class SimulationNode(Node):
         self.sim = sim
         self._cb = ReentrantCallbackGroup()
         self._lock = threading.Lock()
-        self._pubs: dict[tuple[str, str], _RosEndpoint] = {}
+        self._pubs: dict[tuple[str, str, str], _RosEndpoint] = {}
         self._subs: dict[int, Any] = {}
         self._sinks: dict[int, Any] = {}
         """id(publisher endpoint) -> the sink this bridge added to it (other sinks stay)."""
@@ -206,7 +209,9 @@ class SimulationNode(Node):
         """Entity -> the node of its controller manager (see ``_control``)."""
         self._executor: Any = None
         self._pending_nodes: list[Any] = []
-        """Manager nodes made before the executor was attached."""
+        """Manager and plugin nodes made before the executor was attached."""
+        self.plugin_nodes = PluginNodes(sim, self.context, self._add_node, self._remove_node)
+        """gazebo_ros plugins' own nodes (``/differential_drive``)."""
         self._clock_pub = self.create_publisher(Clock, "/clock", CLOCK_QOS)
         clock_pub = self._clock_pub
         self._clock_heard = _Subscribed(clock_pub)
@@ -310,15 +315,18 @@ class SimulationNode(Node):
     def endpoint_added(self, ep: Endpoint) -> None:
         """Mirror a bus endpoint in ROS: a shared rclpy publisher (a sink on the endpoint) or a subscription."""
         ros_type = ROS_TYPES[ep.msg_type]
+        # a gazebo_ros plugin's topics are its own node's (see _plugin_nodes); the rest are this node's
+        owner: Node = self.plugin_nodes.acquire(ep.node) if ep.node else self
         if ep.is_publisher:
-            key = (ep.topic, ep.msg_type.value)
+            key = (ep.node, ep.topic, ep.msg_type.value)
             with self._lock:
                 entry = self._pubs.get(key)
                 if entry is None:
                     entry = _RosEndpoint(
-                        self.create_publisher(
+                        owner.create_publisher(
                             ros_type, ep.topic, qos_profile(ep.qos, ep.depth), event_callbacks=_no_pub_events()
-                        )
+                        ),
+                        owner,
                     )
                     self._pubs[key] = entry
                 entry.users += 1
@@ -345,7 +353,7 @@ class SimulationNode(Node):
             convert_in = FROM_ROS[ep.msg_type]
             callback = ep.callback
             assert callback is not None
-            sub = self.create_subscription(
+            sub = owner.create_subscription(
                 ros_type,
                 ep.topic,
                 lambda msg: callback(convert_in(msg)),
@@ -354,7 +362,7 @@ class SimulationNode(Node):
                 event_callbacks=_no_sub_events(),
             )
             with self._lock:
-                self._subs[id(ep)] = sub
+                self._subs[id(ep)] = (sub, owner)
 
     def _publish_static(self, lane: Lane, ep: Endpoint, batch: TransformBatch) -> None:
         """/tf_static keeps one latched message: it must hold every robot's static transforms."""
@@ -372,20 +380,36 @@ class SimulationNode(Node):
         for node in pending:
             executor.add_node(node)
 
+    def _add_node(self, node: Node) -> None:
+        """Spin another node of this bridge (now, or once the executor is attached)."""
+        with self._lock:
+            executor = self._executor
+            if executor is None:
+                self._pending_nodes.append(node)
+        if executor is not None:
+            executor.add_node(node)
+
+    def _remove_node(self, node: Node) -> None:
+        with self._lock:
+            executor = self._executor
+            if node in self._pending_nodes:
+                self._pending_nodes.remove(node)
+        if executor is not None:
+            executor.remove_node(node)
+
     def component_added(self, owner: str, component: Any) -> None:
-        """A controller manager gets its node; a trajectory controller its action server."""
+        """A gazebo_ros plugin gets its node; a controller manager its node; a trajectory controller its
+        action server."""
         from ..systems.ros2_control import ControllerManager, GripperActionController, JointTrajectoryController
         from ._control import ControllerManagerNode
 
-        if isinstance(component, ControllerManager):
+        if isinstance(component, PluginNode):
+            self.plugin_nodes.declare(component)
+        elif isinstance(component, ControllerManager):
             node = ControllerManagerNode(self.sim, component, self.context)
             with self._lock:
                 self._managers[owner] = node
-                executor = self._executor
-                if executor is None:
-                    self._pending_nodes.append(node)
-            if executor is not None:
-                executor.add_node(node)
+            self._add_node(node)
         elif isinstance(component, (JointTrajectoryController, GripperActionController)):
             with self._lock:
                 node = self._managers.get(owner)
@@ -401,16 +425,14 @@ class SimulationNode(Node):
         """Undo :meth:`component_added`."""
         from ..systems.ros2_control import ControllerManager, GripperActionController, JointTrajectoryController
 
-        if isinstance(component, ControllerManager):
+        if isinstance(component, PluginNode):
+            self.plugin_nodes.undeclare(component)
+        elif isinstance(component, ControllerManager):
             with self._lock:
                 owner = next((o for o, n in self._managers.items() if n.manager is component), None)
                 node = self._managers.pop(owner, None) if owner is not None else None
-                executor = self._executor
-                if node is not None and node in self._pending_nodes:
-                    self._pending_nodes.remove(node)
             if node is not None:
-                if executor is not None:
-                    executor.remove_node(node)
+                self._remove_node(node)
                 node.destroy_node()
         elif isinstance(component, (JointTrajectoryController, GripperActionController)):
             with self._lock:
@@ -434,20 +456,25 @@ class SimulationNode(Node):
             with self._lock:
                 sub = self._subs.pop(id(ep), None)
             if sub is not None:
-                self.destroy_subscription(sub)
+                sub[1].destroy_subscription(sub[0])
+                if ep.node:
+                    self.plugin_nodes.release(ep.node)
             return
         with self._lock:
-            key = (ep.topic, ep.msg_type.value)
+            key = (ep.node, ep.topic, ep.msg_type.value)
             entry = self._pubs.get(key)
             if entry is None:
                 return
             entry.users -= 1
-            if entry.users > 0:
-                return
-            del self._pubs[key]
-        if entry.lane is not None:
-            entry.lane.close()
-        self.destroy_publisher(entry.handle)
+            last = entry.users <= 0
+            if last:
+                del self._pubs[key]
+        if last:
+            if entry.lane is not None:
+                entry.lane.close()
+            entry.node.destroy_publisher(entry.handle)
+        if ep.node:
+            self.plugin_nodes.release(ep.node)
 
     # ------------------------------------------------------------------ spawning
     def resolve_frame(self, frame: str) -> Pose:
@@ -726,6 +753,7 @@ class RosBridge:
         self.executor.shutdown(timeout_sec=2.0)
         for manager_node in self.node.manager_nodes():
             manager_node.destroy_node()
+        self.node.plugin_nodes.destroy_all()
         self.node.destroy_node()
         if self.context.ok():
             rclpy.shutdown(context=self.context)

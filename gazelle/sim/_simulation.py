@@ -28,7 +28,7 @@ from concurrent.futures import TimeoutError as FutureTimeout
 from dataclasses import dataclass, field
 from typing import Any, TypeVar
 
-from ..description import Model, Pose, World
+from ..description import Model, Plugin, Pose, World
 from ..physics import (
     Entity,
     ErrorKind,
@@ -52,6 +52,8 @@ from ..systems import (
     audit_world,
     create_system,
     plan_sensors,
+    plugin_node,
+    plugin_node_name,
     robot_state_config,
 )
 from ..systems.ros2_control import ControllerManager
@@ -413,9 +415,11 @@ class Simulation:
                     continue
                 logger = logging.getLogger(plugin.name or plugin.filename)
                 made.append(system)
-                system.configure(
-                    SystemContext(self.world, entity, plugin, self.bus, logger, world_name=self.world_name)
-                )
+                with self.bus.declaring(plugin_node_name(plugin, entity.namespace)):
+                    system.configure(
+                        SystemContext(self.world, entity, plugin, self.bus, logger, world_name=self.world_name)
+                    )
+                self._announce_node(entity, system, plugin)
             if entity.model.ros2_control and not any(isinstance(s, ControllerManager) for s in made):
                 # as mujoco_ros2_control and the mock hardware do: <ros2_control> alone runs a manager
                 manager = ControllerManager()
@@ -435,20 +439,22 @@ class Simulation:
                 named = plan.plugin.name if plan.plugin is not None else plan.sensor.name
                 logger = logging.getLogger(named or plan.sensor.name)
                 made.append(system)
-                system.configure(
-                    SystemContext(
-                        self.world,
-                        entity,
-                        plan.plugin,
-                        self.bus,
-                        logger,
-                        sensor=plan.sensor,
-                        link=plan.link,
-                        world_name=self.world_name,
-                        spherical_coordinates=self.spherical_coordinates,
-                        magnetic_field=self.magnetic_field,
+                with self.bus.declaring(plugin_node_name(plan.plugin, entity.namespace)):
+                    system.configure(
+                        SystemContext(
+                            self.world,
+                            entity,
+                            plan.plugin,
+                            self.bus,
+                            logger,
+                            sensor=plan.sensor,
+                            link=plan.link,
+                            world_name=self.world_name,
+                            spherical_coordinates=self.spherical_coordinates,
+                            magnetic_field=self.magnetic_field,
+                        )
                     )
-                )
+                self._announce_node(entity, system, plan.plugin)
             if self.robot_state_publisher and (entity.model.joints or entity.model.urdf):
                 logger = logging.getLogger(f"{entity.name}.robot_state_publisher")
                 config, plugin = robot_state_config(entity, logger)
@@ -460,6 +466,12 @@ class Simulation:
             self._undo_systems(entity.name, made)
             raise
         return made
+
+    def _announce_node(self, entity: Entity, system: System, plugin: Plugin | None) -> None:
+        """A gazebo_ros plugin is a ROS node of its own (its parameters: its configuration)."""
+        node = plugin_node(system, plugin, entity.namespace)
+        if node is not None:
+            self.bus.add_component(entity.name, node)
 
     def _undo_systems(self, name: str, systems: list[System]) -> None:
         """Shut down the systems of an entity that never made it into the world, and drop its endpoints."""

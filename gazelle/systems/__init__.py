@@ -20,6 +20,8 @@ from ._base import System as System
 from ._base import SystemContext as SystemContext
 from ._base import SystemManager as SystemManager
 from ._base import UpdateInfo as UpdateInfo
+from ._base import plugin_node as plugin_node
+from ._base import plugin_node_name as plugin_node_name
 from ._bus import Altimeter as Altimeter
 from ._bus import Bus as Bus
 from ._bus import CameraInfo as CameraInfo
@@ -38,6 +40,8 @@ from ._bus import MagneticField as MagneticField
 from ._bus import MsgType as MsgType
 from ._bus import NavSatFix as NavSatFix
 from ._bus import Odometry as Odometry
+from ._bus import ParamValue as ParamValue
+from ._bus import PluginNode as PluginNode
 from ._bus import PointCloud as PointCloud
 from ._bus import Qos as Qos
 from ._bus import Range as Range
@@ -83,6 +87,8 @@ __all__ = [
     "MsgType",
     "NavSatFix",
     "Odometry",
+    "ParamValue",
+    "PluginNode",
     "PHYSICS",
     "PRE_PHYSICS",
     "PidGains",
@@ -110,6 +116,8 @@ __all__ = [
     "SensorPlan",
     "audit_model",
     "plan_sensors",
+    "plugin_node",
+    "plugin_node_name",
     "audit_world",
     "create_system",
     "resolve_topic",

@@ -24,7 +24,7 @@ from typing import NamedTuple
 
 from ..description import DEFAULT_MAGNETIC_FIELD, ConfigElement, Plugin, Sensor, SphericalCoordinates
 from ..physics import Entity, PhysicsWorld
-from ._bus import Bus
+from ._bus import Bus, ParamValue, PluginNode
 
 _log = logging.getLogger("gazelle.systems")
 
@@ -102,6 +102,16 @@ class System:
 
     def shutdown(self) -> None:
         """The entity is being removed."""
+
+    def node_parameters(self) -> dict[str, ParamValue]:
+        """Values this system adds to its plugin node's parameters, beyond the ``<plugin>`` elements
+        (a sensor's ``update_rate``); see :func:`plugin_node`."""
+        return {}
+
+    def parameter_setters(self) -> dict[str, Callable[[ParamValue], str | None]]:
+        """The parameters that can be set at run time (called on the simulation thread; a setter returns
+        None once applied, else why not). The others are read-only."""
+        return {}
 
 
 def _overrides(system: System, phase: str) -> bool:
@@ -306,3 +316,78 @@ class RateGate:
     def reset(self) -> None:
         """Act at the next step (after a reset of sim time)."""
         self._next = 0.0
+
+
+# --------------------------------------------------------------------------- plugin nodes
+def _typed(text: str) -> ParamValue:
+    low = text.lower()
+    if low in ("true", "false"):
+        return low == "true"
+    try:
+        return int(text)
+    except ValueError:
+        pass
+    try:
+        # 15 significant digits: xacro arithmetic writes binary noise (0.3 + 0.04 as 0.33999999999999997),
+        # which `ros2 param get` would print as such
+        return float(f"{float(text):.15g}")
+    except ValueError:
+        return text
+
+
+def plugin_parameters(plugin: Plugin) -> dict[str, ParamValue]:
+    """A ``<plugin>``'s configuration as ROS parameters: each child element with text (not ``<ros>``) by
+    its tag, typed as its text reads (bool, integer, double, else string); a repeated element (the
+    wheel pairs of a multi-wheel diff drive) is an array of them, of strings when the types differ."""
+    values: dict[str, list[ParamValue]] = {}
+    for child in plugin.config.children:
+        if child.tag == "ros" or child.children or not child.text.strip():
+            continue
+        values.setdefault(child.tag, []).append(_typed(child.text.strip()))
+    out: dict[str, ParamValue] = {}
+    for tag, vs in values.items():
+        if len(vs) == 1:
+            out[tag] = vs[0]
+        elif len({type(v) for v in vs}) == 1:
+            out[tag] = vs  # type: ignore[assignment]
+        else:
+            out[tag] = [str(v) for v in vs]
+    return out
+
+
+def is_gazebo_ros_plugin(filename: str) -> bool:
+    """A Gazebo Classic gazebo_ros plugin (``libgazebo_ros_*.so``): in Gazebo it is a ROS node of its own.
+    gazebo_ros2_control is not one of them: its node is the controller manager."""
+    name = filename.strip()
+    return name.startswith("libgazebo_ros_") or name.startswith("gazebo_ros_")
+
+
+def _node_namespace(plugin: Plugin, entity_namespace: str) -> str | None:
+    """A gazebo_ros plugin node's namespace (no slashes around); None when the plugin is no such node."""
+    if not plugin.name or not is_gazebo_ros_plugin(plugin.filename):
+        return None
+    ns, _ = ros_block(plugin.config)
+    return (ns or child_text(plugin.config, "robotNamespace") or entity_namespace).strip("/")
+
+
+def plugin_node_name(plugin: Plugin | None, entity_namespace: str) -> str:
+    """The fully qualified name of a gazebo_ros plugin's node, as Gazebo names it: the plugin's ``name``
+    under its ``<ros><namespace>`` (ROS 1: ``<robotNamespace>``; else the entity's namespace); "" for
+    other plugins (gz-sim systems talk through ros_gz_bridge's node)."""
+    ns = _node_namespace(plugin, entity_namespace) if plugin is not None else None
+    if ns is None:
+        return ""
+    assert plugin is not None
+    return f"/{ns}/{plugin.name}" if ns else f"/{plugin.name}"
+
+
+def plugin_node(system: System, plugin: Plugin | None, entity_namespace: str) -> PluginNode | None:
+    """The node of :func:`plugin_node_name` with the plugin's configuration and the system's own values
+    as its parameters (see :func:`plugin_parameters`); None for other plugins."""
+    ns = _node_namespace(plugin, entity_namespace) if plugin is not None else None
+    if ns is None:
+        return None
+    assert plugin is not None
+    params = plugin_parameters(plugin)
+    params.update(system.node_parameters())
+    return PluginNode(plugin.name, ns, params, system.parameter_setters(), plugin.filename)

@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import enum
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
@@ -366,6 +367,9 @@ class Endpoint:
     """Publishers: the latest payload published (only published while :attr:`wanted`)."""
     _interest: tuple[Callable[[], bool] | None, ...] = field(default=(), repr=False)
     """Per sink: whether it wants payloads now (None: always)."""
+    node: str = ""
+    """The fully qualified ROS node it belongs to (``/differential_drive``): the gazebo_ros plugin that
+    declared it (see :meth:`Bus.declaring`); "" for the simulation's own node."""
 
     def add_sink(self, sink: Callable[[Any], None], wanted: Callable[[], bool] | None = None) -> None:
         """Also send every published payload to ``sink`` (any number of them: the bus fans out).
@@ -398,6 +402,29 @@ class Endpoint:
             sink(payload)
 
 
+ParamValue = bool | int | float | str | list[bool] | list[int] | list[float] | list[str]
+
+
+@dataclass(eq=False)
+class PluginNode:
+    """A gazebo_ros plugin's ROS node, announced with :meth:`Bus.add_component`: its name, and its
+    configuration as parameters (read-only unless ``settable`` has a setter for the name; a setter runs
+    on the simulation thread and returns None when applied, else why not)."""
+
+    name: str
+    namespace: str
+    parameters: dict[str, ParamValue]
+    settable: dict[str, Callable[[ParamValue], str | None]] = field(default_factory=dict)
+    plugin: str = ""
+    """The plugin's file name, as written."""
+
+    @property
+    def fully_qualified_name(self) -> str:
+        """``/<namespace>/<name>``."""
+        ns = self.namespace.strip("/")
+        return f"/{ns}/{self.name}" if ns else f"/{self.name}"
+
+
 class BusListener(Protocol):
     """What listens to the bus (the ROS bridge): told of every endpoint added and removed."""
 
@@ -423,6 +450,19 @@ class Bus:
         self._endpoints: list[Endpoint] = []
         self._listeners: list[BusListener] = []
         self._components: list[tuple[str, Any]] = []
+        self._declaring = threading.local()
+
+    @contextmanager
+    def declaring(self, node: str) -> Iterator[None]:
+        """Endpoints declared on this thread inside the block belong to ROS node ``node`` (fully
+        qualified; "" for the simulation's node): the runtime wraps a gazebo_ros plugin's configure in it,
+        so its topics are its own node's, as in Gazebo."""
+        before = getattr(self._declaring, "node", "")
+        self._declaring.node = node
+        try:
+            yield
+        finally:
+            self._declaring.node = before
 
     def add_listener(self, listener: BusListener) -> None:
         """Attach a listener; it is told about every existing endpoint first."""
@@ -464,6 +504,7 @@ class Bus:
         return self._add(Endpoint(owner, topic, msg_type, False, qos, depth, callback))
 
     def _add(self, ep: Endpoint) -> Endpoint:
+        ep.node = getattr(self._declaring, "node", "")
         with self._lock:
             self._endpoints.append(ep)
             listeners = list(self._listeners)

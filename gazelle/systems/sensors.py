@@ -58,6 +58,7 @@ from ._bus import (
     MagneticField,
     MsgType,
     NavSatFix,
+    ParamValue,
     PointCloud,
     Range,
     Vector3Stamped,
@@ -379,6 +380,21 @@ class _SensorSystem(System):
         self._body: BodyHandle | None = None
         self._gate = RateGate()
         self._rng = np.random.default_rng(seed)
+
+    def node_parameters(self) -> dict[str, ParamValue]:
+        """A gazebo_ros sensor plugin's node shows the sensor's rate as ``update_rate``."""
+        return {"update_rate": float(self.rate_hz)}
+
+    def parameter_setters(self) -> dict[str, Callable[[ParamValue], str | None]]:
+        """``update_rate`` can be changed at run time (as gazebo_ros_camera allows; decided for every sensor)."""
+        return {"update_rate": self._set_rate}
+
+    def _set_rate(self, value: ParamValue) -> str | None:
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not value >= 0:
+            return f"must be a number >= 0 (Hz; 0: every step), got {value!r}"
+        self.rate_hz = float(value)
+        self._gate.reset()
+        return None
 
     def _parse_sensor(
         self, ctx: SystemContext, sensor_type: str, parse: Callable[[Sensor, logging.Logger], T]

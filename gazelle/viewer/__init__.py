@@ -5,13 +5,14 @@ and the core never imports it.
 """
 
 from ._browser import screenshot
-from ._origin import allowed_origins
+from ._origin import OriginPolicy, allowed_origins
 from ._snapshot import record_video, run_record, run_snapshot, video_format
 from ._viewer import DEFAULT_HOST, DEFAULT_PORT, Viewer
 
 __all__ = [
     "DEFAULT_HOST",
     "DEFAULT_PORT",
+    "OriginPolicy",
     "Viewer",
     "allowed_origins",
     "record_video",

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """A plain rclpy node (it never imports gazelle): prints ``ready`` once subscribed to /odom, then one
-JSON line per Odometry received (stamp and position), and exits after ``count`` messages or ``timeout``
-seconds without one.
+JSON line per Odometry received (stamp and position), and exits after ``count`` messages, or ``timeout``
+seconds without one once they started (60 s for the first).
 
 Usage: odom_listener.py COUNT TIMEOUT
 """
@@ -22,7 +22,7 @@ def main() -> int:
     node.create_subscription(Odometry, "/odom", got.append, 1000)
     print("ready", flush=True)
     printed, last = 0, time.monotonic()
-    while printed < count and time.monotonic() - last < timeout:
+    while printed < count and time.monotonic() - last < (timeout if printed else 60.0):
         rclpy.spin_once(node, timeout_sec=0.05)
         while printed < len(got):
             m = got[printed]

@@ -7,6 +7,7 @@ A `gazelle sim` server process, robots spawned with `gazelle spawn`, controllers
 from __future__ import annotations
 
 import math
+import subprocess
 import sys
 import threading
 from pathlib import Path
@@ -199,6 +200,27 @@ def test_r6bot_follows_a_trajectory_holds_and_aborts_on_path_tolerance(sim_facto
     box = run(goal([(0.3, [1.5, -1.0, 1.5, 1.0, 1.0, 1.0])], path_tol=1e-4))
     assert box["accepted"]
     assert box["result"].result.error_code == FollowJointTrajectory.Result.PATH_TOLERANCE_VIOLATED
+
+    # the same action from the command line, as a user types it
+    ros2cli = [str(Path(sys.prefix) / "bin" / "ros2"), "action"]
+    action = "/joint_trajectory_controller/follow_joint_trajectory"
+    listed = subprocess.run([*ros2cli, "list", "-t"], capture_output=True, text=True, timeout=60)
+    assert f"{action} [control_msgs/action/FollowJointTrajectory]" in listed.stdout, listed.stdout + listed.stderr
+    info = subprocess.run([*ros2cli, "info", action], capture_output=True, text=True, timeout=60)
+    assert "Action servers: 1" in info.stdout and "    /controller_manager" in info.stdout, info.stdout
+    goal_yaml = (
+        "{trajectory: {joint_names: [joint_1, joint_2, joint_3, joint_4, joint_5, joint_6], "
+        "points: [{positions: [0.1, -0.1, 0.2, 0.0, 0.1, 0.0], time_from_start: {sec: 1}}]}}"
+    )
+    sent = subprocess.run(
+        [*ros2cli, "send_goal", "-f", action, "control_msgs/action/FollowJointTrajectory", goal_yaml],
+        capture_output=True,
+        text=True,
+        timeout=90,
+    )
+    assert "Goal accepted with ID:" in sent.stdout and "Feedback:" in sent.stdout, sent.stdout + sent.stderr
+    assert "Goal finished with status: SUCCEEDED" in sent.stdout and sent.returncode == 0
+    assert max(abs(a - b) for a, b in zip(position(), [0.1, -0.1, 0.2, 0.0, 0.1, 0.0], strict=True)) < 1e-3
 
     # a goal naming a joint the controller does not have is rejected
     bad = goal([(1.0, [0.0] * 6)])

@@ -1,19 +1,32 @@
-"""The ``ros2`` command for a venv without ROS 2's ros2cli: ``launch``, ``run``, ``pkg``, and the first
+"""The ``ros2`` command for a venv without ROS 2's ros2cli: ``launch``, ``run``, ``pkg`` and the
 introspection verbs: ``topic`` (list, echo, hz, info, type, pub), ``service`` (list, type, find, call),
-``node`` (list, info), ``interface`` (show, list, package) and ``bag`` (record, play, info: MCAP).
+``action`` (list, info, type, send_goal), ``node`` (list, info), ``param`` (list, get, set, describe,
+dump, load), ``interface`` (show, list, package) and ``bag`` (record, play, info: rosbag2's MCAP).
 
 Same arguments and output as ros2cli Jazzy for what it covers; an unknown verb lists the verbs that
-exist. ``gazelle launch`` and ``gazelle run`` are the same commands. ``param`` and ``action`` are not
-here yet.
+exist. ``gazelle launch`` and ``gazelle run`` are the same commands.
 """
 
 from __future__ import annotations
 
-import argparse
+import importlib
 import os
 import sys
 
-VERBS = ("bag", "interface", "launch", "node", "pkg", "run", "service", "topic")
+COMMANDS = {
+    "action": ("_action", "main", "Various action related sub-commands"),
+    "bag": ("_bag", "main", "Various rosbag related sub-commands"),
+    "interface": ("_service", "interface_main", "Show information about ROS interfaces"),
+    "launch": ("_launch", "main", "Run a launch file"),
+    "node": ("_service", "node_main", "Various node related sub-commands"),
+    "param": ("_param", "main", "Various param related sub-commands"),
+    "pkg": ("_pkg", "main", "Various package related sub-commands"),
+    "run": ("_run", "main", "Run a package specific executable"),
+    "service": ("_service", "service_main", "Various service related sub-commands"),
+    "topic": ("_topic", "main", "Various topic related sub-commands"),
+}
+"""verb -> (module, function, help line); a module is imported only when its verb runs."""
+VERBS = tuple(COMMANDS)
 
 
 def ensure_ament_prefix() -> None:
@@ -33,45 +46,19 @@ def main(argv: list[str] | None = None) -> int:
     if not argv or argv[0] in ("-h", "--help"):
         print("usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ...\n")
         print("ros2 is an extensible command-line tool for ROS 2 (gazelle's subset).\n")
-        print(
-            "Commands:\n  bag        Various rosbag related sub-commands\n"
-            "  interface  Show information about ROS interfaces\n  launch     Run a launch file"
-        )
-        print("  node       Various node related sub-commands\n  pkg        Various package related sub-commands")
-        print("  run        Run a package specific executable\n  service    Various service related sub-commands")
-        print("  topic      Various topic related sub-commands\n")
-        print("  Call `ros2 <command> -h` for more detailed usage.")
+        print("Commands:")
+        for verb, (_m, _f, text) in COMMANDS.items():
+            print(f"  {verb:<10} {text}")
+        print("\n  Call `ros2 <command> -h` for more detailed usage.")
         return 0 if argv else 2
     verb, rest = argv[0], argv[1:]
-    if verb == "launch":
-        from ._launch import main as launch_main
-
-        return launch_main(rest)
-    if verb == "run":
-        from ._run import main as run_main
-
-        return run_main(rest)
-    if verb == "pkg":
-        from ._pkg import main as pkg_main
-
-        return pkg_main(rest)
-    if verb == "bag":
-        from ._bag import main as bag_main
-
-        return bag_main(rest)
-    if verb == "topic":
-        from ._topic import main as topic_main
-
-        return topic_main(rest)
-    if verb in ("service", "node", "interface"):
-        from . import _service
-
-        verbs = {"service": _service.service_main, "node": _service.node_main, "interface": _service.interface_main}
-        return verbs[verb](rest)
+    if verb in COMMANDS:
+        module, function, _text = COMMANDS[verb]
+        return getattr(importlib.import_module(f"{__name__}.{module}"), function)(rest)
     print(
         f"usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ...\n"
         f"ros2: error: argument Call `ros2 <command> -h` for more detailed usage.: invalid choice: '{verb}' "
-        f"(choose from {', '.join(repr(v) for v in VERBS)}); param and action are not in gazelle's ros2 yet",
+        f"(choose from {', '.join(repr(v) for v in VERBS)})",
         file=sys.stderr,
     )
     return 2
@@ -81,5 +68,4 @@ def console_main() -> None:
     raise SystemExit(main())
 
 
-__all__ = ["VERBS", "console_main", "ensure_ament_prefix", "main"]
-_ = argparse
+__all__ = ["COMMANDS", "VERBS", "console_main", "ensure_ament_prefix", "main"]

@@ -28,12 +28,13 @@ from typing import Any
 
 import yaml
 
-from ._definitions import full_text
-from ._graph import cli_node, is_hidden
+from ._graph import cli_node, is_hidden, spin_once
 from ._messages import InterfaceError, get_interface
 
 ROSBAG2_VERSION = 9
 """metadata.yaml's layout version (rosbag2 Jazzy's)."""
+RECORD_DEPTH = 1000
+"""The recorder's subscription queue: a burst waits here rather than being dropped."""
 DISCOVERY_PERIOD_SEC = 0.1
 """How often ``record`` looks for new topics (rosbag2's default topic polling interval)."""
 
@@ -225,13 +226,20 @@ class _Recorder:
         self.count = 0
 
     def add(self, topic: str, type_name: str) -> None:
+        from gazelle.ros import InterfaceError as DefinitionError
+        from gazelle.ros import message_definition
+
         from ._topic import _qos_for
 
         cls = get_interface(type_name)
         schema = self._schemas.get(type_name)
         if schema is None:
+            try:
+                text = message_definition(type_name)
+            except DefinitionError as err:
+                raise InterfaceError(str(err)) from None
             schema = self._schemas[type_name] = self._writer.register_schema(
-                name=type_name, encoding="ros2msg", data=full_text(type_name).encode()
+                name=type_name, encoding="ros2msg", data=text.encode()
             )
         qos = _qos_dicts(self.node.get_publishers_info_by_topic(topic))
         channel = self._writer.register_channel(
@@ -253,7 +261,9 @@ class _Recorder:
                 channel_id=entry["channel"], log_time=now, publish_time=now, data=data, sequence=entry["count"]
             )
 
-        self._subs.append(self.node.create_subscription(cls, topic, on_message, _qos_for(self.node, topic), raw=True))
+        qos = _qos_for(self.node, topic)
+        qos.depth = RECORD_DEPTH
+        self._subs.append(self.node.create_subscription(cls, topic, on_message, qos, raw=True))
         print(f"[INFO] [rosbag2_recorder]: Subscribed to topic '{topic}'", flush=True)
 
     def finish(self) -> None:
@@ -301,7 +311,6 @@ class _Recorder:
 
 
 def _record(args: argparse.Namespace) -> int:
-    import rclpy
 
     if not (args.all or args.topics or args.regex):
         raise BagError("no topics given: name topics, or use -a (all) or -e REGEX")
@@ -355,7 +364,7 @@ def _record(args: argparse.Namespace) -> int:
                             except InterfaceError as err:
                                 print(f"[WARN] [rosbag2_recorder]: topic '{topic}' not recorded: {err}", flush=True)
                                 rec.topics[topic] = {"type": types[0], "channel": -1, "count": 0, "qos": []}
-                rclpy.spin_once(node, timeout_sec=0.01)
+                spin_once(node, timeout_sec=0.01)
         finally:
             rec.topics = {t: e for t, e in rec.topics.items() if e["channel"] >= 0}
             rec.finish()
@@ -431,12 +440,11 @@ def _play(args: argparse.Namespace) -> int:
 
 def _wait_for_matches(node: Any, pubs: dict[str, Any], timeout: float) -> None:
     """Until every subscriber in the graph on a played topic has matched our publisher (or ``timeout``)."""
-    import rclpy
 
     deadline = time.monotonic() + timeout
     settle = time.monotonic() + min(0.5, timeout)
     while time.monotonic() < deadline:
-        rclpy.spin_once(node, timeout_sec=0.05)
+        spin_once(node, timeout_sec=0.05)
         pending = [t for t, p in pubs.items() if node.count_subscribers(t) > p.get_subscription_count()]
         if not pending and time.monotonic() >= settle:
             return

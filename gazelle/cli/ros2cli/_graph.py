@@ -13,30 +13,53 @@ DEFAULT_SPIN_TIME = 1.5
 """Seconds to discover the graph before listing (ros2cli's daemon remembers it; we have no daemon)."""
 
 
+_EXECUTORS: dict[int, Any] = {}
+"""id(node) -> the executor that spins it (rclpy.spin_once(node) adds and removes the node each call:
+a few milliseconds, too slow for `ros2 topic echo` at 1 kHz)."""
+
+
 @contextmanager
 def cli_node(name: str = "ros2cli") -> Iterator[Any]:
-    """An initialised rclpy context with a hidden node, shut down on exit."""
+    """An initialised rclpy context with a hidden node and its executor (see :func:`spin_once`), shut
+    down on exit."""
     import rclpy
+    from rclpy.executors import SingleThreadedExecutor
 
     rclpy.init(args=[])
     node = rclpy.create_node(f"_{name}_{os.getpid()}", start_parameter_services=False)
+    executor = SingleThreadedExecutor()
+    executor.add_node(node)
+    _EXECUTORS[id(node)] = executor
     try:
         yield node
     finally:
+        _EXECUTORS.pop(id(node), None)
+        executor.shutdown(timeout_sec=0.5)
         node.destroy_node()
         rclpy.try_shutdown()  # pyright: ignore[reportPrivateImportUsage]
+
+
+def spin_once(node: Any, timeout_sec: float) -> None:
+    """Take one ready callback of ``node`` (waiting at most ``timeout_sec``)."""
+    executor = _EXECUTORS.get(id(node))
+    if executor is None:
+        spin_once(node, timeout_sec=timeout_sec)
+    else:
+        executor.spin_once(timeout_sec=timeout_sec)
 
 
 QUIET_SEC = 2.0
 """Discovery is taken as done when the graph has not changed for this long (after the spin time)."""
 MAX_DISCOVERY_SEC = 8.0
+SETTLE_SEC = 0.5
+"""Quiet time after a named node or topic has appeared: its other endpoints come in the same exchange."""
 
 
-def discover(node: Any, seconds: float = DEFAULT_SPIN_TIME) -> None:
+def discover(node: Any, seconds: float = DEFAULT_SPIN_TIME, quiet: float = QUIET_SEC) -> None:
     """Let discovery run for at least ``seconds``, until another node is seen and the graph (nodes,
-    topics, services) has been still for :data:`QUIET_SEC`; at most :data:`MAX_DISCOVERY_SEC` (spinning
-    so graph events are taken)."""
-    import rclpy
+    topics, services) has been still for ``quiet`` seconds; at most :data:`MAX_DISCOVERY_SEC` (spinning
+    so graph events are taken). A listing waits the full :data:`QUIET_SEC`; a verb about one name that
+    has already appeared waits :data:`SETTLE_SEC` for the rest of its endpoints."""
 
     def snapshot() -> tuple:
         return (
@@ -48,7 +71,7 @@ def discover(node: Any, seconds: float = DEFAULT_SPIN_TIME) -> None:
     start = time.monotonic()
     last, changed = snapshot(), start
     while True:
-        rclpy.spin_once(node, timeout_sec=0.05)
+        spin_once(node, timeout_sec=0.05)
         now = time.monotonic()
         current = snapshot()
         if current != last:
@@ -56,7 +79,7 @@ def discover(node: Any, seconds: float = DEFAULT_SPIN_TIME) -> None:
         others = any(not n.startswith("_") for n, _ in current[0])  # someone besides this tool
         if now - start >= max(seconds, MAX_DISCOVERY_SEC):
             return
-        if now - start >= seconds and others and now - changed >= QUIET_SEC:
+        if now - start >= seconds and others and now - changed >= quiet:
             return
 
 
@@ -67,11 +90,10 @@ def is_hidden(name: str) -> bool:
 
 def wait_until(node: Any, found: Any, timeout: float = MAX_DISCOVERY_SEC) -> Any:
     """Spin until ``found()`` returns something truthy (a name appeared in the graph) or ``timeout``."""
-    import rclpy
 
     deadline = time.monotonic() + timeout
     while True:
         value = found()
         if value or time.monotonic() > deadline:
             return value
-        rclpy.spin_once(node, timeout_sec=0.05)
+        spin_once(node, timeout_sec=0.05)

@@ -9,7 +9,7 @@ import sys
 import time
 from typing import Any
 
-from ._graph import cli_node, discover, is_hidden, wait_until
+from ._graph import SETTLE_SEC, cli_node, discover, is_hidden, wait_until
 from ._messages import InterfaceError, get_interface, parse_values, set_fields, to_yaml
 
 
@@ -97,7 +97,8 @@ def node_main(argv: list[str]) -> int:
     info.add_argument("node_name")
     args = p.parse_args(argv)
     with cli_node("ros2node") as node:
-        discover(node)
+        if args.cmd == "list":
+            discover(node)
         names = sorted(
             f"{ns.rstrip('/')}/{n}"
             for n, ns in node.get_node_names_and_namespaces()
@@ -116,7 +117,7 @@ def node_main(argv: list[str]) -> int:
 
         if target not in names and wait_until(node, lambda: target in node_names()):
             names = node_names()
-        discover(node)  # its endpoints arrive after the node itself
+        discover(node, 0.0, SETTLE_SEC)  # its endpoints arrive after the node itself
 
         if target not in names:
             print(f"Unable to find node '{target}'", file=sys.stderr)

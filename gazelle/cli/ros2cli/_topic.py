@@ -7,7 +7,7 @@ import sys
 import time
 from typing import Any
 
-from ._graph import cli_node, discover, is_hidden, wait_until
+from ._graph import SETTLE_SEC, cli_node, discover, is_hidden, spin_once, wait_until
 from ._messages import InterfaceError, get_interface, parse_values, set_fields, to_csv, to_yaml
 
 
@@ -32,13 +32,8 @@ def _qos_for(node: Any, topic: str) -> Any:
 def _resolve_type(node: Any, topic: str, given: str | None, wait: float = 5.0) -> str | None:
     if given:
         return given
-    deadline = time.monotonic() + wait
-    while time.monotonic() < deadline:
-        types = dict(node.get_topic_names_and_types()).get(topic)
-        if types:
-            return types[0]
-        discover(node, 0.1)
-    return None
+    types = wait_until(node, lambda: dict(node.get_topic_names_and_types()).get(topic), wait)
+    return types[0] if types else None
 
 
 def main(argv: list[str]) -> int:
@@ -106,7 +101,6 @@ def _list(node: Any, args: argparse.Namespace) -> int:
 
 
 def _echo(node: Any, args: argparse.Namespace) -> int:
-    import rclpy
     from rclpy.qos import DurabilityPolicy, ReliabilityPolicy
 
     topic = args.topic_name if args.topic_name.startswith("/") else f"/{args.topic_name}"
@@ -115,7 +109,8 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
         print(f"Could not determine the type for the passed topic {topic}", file=sys.stderr)
         return 1
     cls = get_interface(type_name)
-    discover(node, 0.3)
+    wait_until(node, lambda: node.get_publishers_info_by_topic(topic), 5.0)
+    discover(node, 0.0, SETTLE_SEC)  # every publisher's QoS, to match them all
     qos = _qos_for(node, topic)
     if args.qos_reliability == "reliable":
         qos.reliability = ReliabilityPolicy.RELIABLE
@@ -129,7 +124,7 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
     node.create_subscription(cls, topic, got.append, qos)
     deadline = time.monotonic() + args.timeout if args.timeout else None
     while True:
-        rclpy.spin_once(node, timeout_sec=0.1)
+        spin_once(node, timeout_sec=0.1)
         while got:
             msg = got.pop(0)
             if args.field:
@@ -150,7 +145,6 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
 
 
 def _hz(node: Any, args: argparse.Namespace) -> int:
-    import rclpy
 
     topic = args.topic_name if args.topic_name.startswith("/") else f"/{args.topic_name}"
     type_name = _resolve_type(node, topic, None)
@@ -162,7 +156,7 @@ def _hz(node: Any, args: argparse.Namespace) -> int:
     node.create_subscription(cls, topic, lambda _m: stamps.append(time.monotonic()), _qos_for(node, topic))
     reports, last = 0, time.monotonic()
     while args.count is None or reports < args.count:
-        rclpy.spin_once(node, timeout_sec=0.05)
+        spin_once(node, timeout_sec=0.05)
         if time.monotonic() - last >= 1.0:
             last = time.monotonic()
             window = stamps[-args.window :]
@@ -182,7 +176,7 @@ def _hz(node: Any, args: argparse.Namespace) -> int:
 def _info(node: Any, args: argparse.Namespace) -> int:
     topic = args.topic_name if args.topic_name.startswith("/") else f"/{args.topic_name}"
     types = wait_until(node, lambda: dict(node.get_topic_names_and_types()).get(topic))
-    discover(node, 0.3)  # the topic's other endpoints
+    discover(node, 0.0, SETTLE_SEC)  # the topic's other endpoints
     if not types:
         print(f"Unknown topic '{topic}'", file=sys.stderr)
         return 1
@@ -221,7 +215,6 @@ def _type(node: Any, args: argparse.Namespace) -> int:
 
 
 def _pub(node: Any, args: argparse.Namespace) -> int:
-    import rclpy
     from rclpy.qos import QoSProfile
 
     cls = get_interface(args.message_type)
@@ -232,7 +225,7 @@ def _pub(node: Any, args: argparse.Namespace) -> int:
     wait_for = args.wait_matching_subscriptions if args.wait_matching_subscriptions is not None else (1 if times else 0)
     deadline = time.monotonic() + 5.0
     while pub.get_subscription_count() < wait_for and time.monotonic() < deadline:
-        rclpy.spin_once(node, timeout_sec=0.05)
+        spin_once(node, timeout_sec=0.05)
     print("publisher: beginning loop\n", flush=True)
     count = 0
     period = 1.0 / args.rate if args.rate > 0 else 0.0
@@ -247,11 +240,11 @@ def _pub(node: Any, args: argparse.Namespace) -> int:
             break
         end = time.monotonic() + period
         while time.monotonic() < end:
-            rclpy.spin_once(node, timeout_sec=max(0.0, end - time.monotonic()))
+            spin_once(node, timeout_sec=max(0.0, end - time.monotonic()))
     if args.once or times:
         end = time.monotonic() + 0.5  # let the last message go out before the node goes
         while time.monotonic() < end:
-            rclpy.spin_once(node, timeout_sec=0.05)
+            spin_once(node, timeout_sec=0.05)
     return 0
 
 

@@ -5,10 +5,15 @@ MCAP schema (encoding ``ros2msg``): each dependency after a line of 80 ``=`` and
 
 from __future__ import annotations
 
+import importlib
 import os
 import re
+from typing import Any
 
-from ._messages import InterfaceError
+
+class InterfaceError(ValueError):
+    """A type name that does not name an installed interface; the message says which."""
+
 
 PRIMITIVES = frozenset(
     "bool byte char float32 float64 int8 uint8 int16 uint16 int32 uint32 int64 uint64 string wstring".split()
@@ -32,7 +37,7 @@ def definition_path(type_name: str) -> str:
     pkg, kind, name = parts
     try:
         share = get_package_share_directory(pkg)
-    except (LookupError, ValueError):
+    except (LookupError, ValueError, OSError):  # OSError: AMENT_PREFIX_PATH is not set
         raise InterfaceError(f"Unknown package '{pkg}'") from None
     path = os.path.join(share, kind, f"{name}.{kind}")
     if not os.path.isfile(path):
@@ -88,3 +93,20 @@ def full_text(type_name: str) -> str:
 
     visit(pkg, main)
     return "\n".join(parts) + "\n"
+
+
+def message_class(type_name: str) -> Any:
+    """``pkg/msg/Name``'s Python class (from the installed interface packages).
+
+    Raises:
+        InterfaceError: no such message.
+    """
+    parts = type_name.strip("/").split("/")
+    pkg, name = parts[0], parts[-1]
+    try:
+        cls = getattr(importlib.import_module(f"{pkg}.msg"), name, None)
+    except ImportError:
+        cls = None
+    if cls is None:
+        raise InterfaceError(f"The message type '{type_name}' is not installed")
+    return cls
