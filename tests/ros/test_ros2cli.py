@@ -3,6 +3,7 @@ command: no ROS installation)."""
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -41,7 +42,7 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
     assert "Subscription count: 1" in info and "Node name: differential_drive" in info
 
     pub = start(
-        [ROS2, "topic", "pub", "-r", "20", "/cmd_vel", "geometry_msgs/msg/Twist", "{linear: {x: 0.3}}"], "ros2 pub"
+        [ROS2, "topic", "pub", "-r", "10", "/cmd_vel", "geometry_msgs/msg/Twist", "{linear: {x: 0.3}}"], "ros2 pub"
     )
     try:
         wait_for(lambda: ros_client.entity_state("bot").state.pose.position.x > 0.2, 30, "the robot to drive")
@@ -76,6 +77,17 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
     assert dumped["/differential_drive"]["ros__parameters"]["odometry_frame"] == "odom"
     assert "Read only: true" in ros2("param", "describe", "/differential_drive", "wheel_diameter").stdout
     assert ros2("param", "get", "/nope", "x").stderr.strip() == "Node not found"
+
+    assert ros2("topic", "find", "nav_msgs/msg/Odometry").stdout.split() == ["/odom"]
+    bw = ros2("topic", "bw", "/odom", "--count", "1").stdout
+    assert re.search(r"[\d.]+ K?B/s from \d+ messages\n\tMessage size mean: 724.00 B min: 724.00 B", bw), bw
+    delay = ros2("topic", "delay", "/odom", "--count", "1", "--use-sim-time").stdout
+    assert re.search(r"average delay: -?[\d.]+\n\tmin: ", delay), delay
+    proto = ros2("interface", "proto", "geometry_msgs/msg/Twist").stdout
+    assert yaml.safe_load(proto.strip().strip('"')) == {
+        "linear": {"x": 0.0, "y": 0.0, "z": 0.0},
+        "angular": {"x": 0.0, "y": 0.0, "z": 0.0},
+    }
 
     # /odom at 100 Hz (the plugin's update rate, at real time)
     hz = ros2("topic", "hz", "/odom", "--count", "3").stdout

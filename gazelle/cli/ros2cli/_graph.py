@@ -51,7 +51,7 @@ def spin_once(node: Any, timeout_sec: float) -> None:
 QUIET_SEC = 2.0
 """Discovery is taken as done when the graph has not changed for this long (after the spin time)."""
 MAX_DISCOVERY_SEC = 8.0
-SETTLE_SEC = 0.5
+SETTLE_SEC = 1.0
 """Quiet time after a named node or topic has appeared: its other endpoints come in the same exchange."""
 
 

@@ -9,7 +9,7 @@ import sys
 import time
 from typing import Any
 
-from ._graph import SETTLE_SEC, cli_node, discover, is_hidden, wait_until
+from ._graph import QUIET_SEC, cli_node, discover, is_hidden, wait_until
 from ._messages import InterfaceError, get_interface, parse_values, set_fields, to_yaml
 
 
@@ -117,7 +117,7 @@ def node_main(argv: list[str]) -> int:
 
         if target not in names and wait_until(node, lambda: target in node_names()):
             names = node_names()
-        discover(node, 0.0, SETTLE_SEC)  # its endpoints arrive after the node itself
+        discover(node, 0.0, QUIET_SEC)  # its endpoints arrive after the node itself, services last
 
         if target not in names:
             print(f"Unable to find node '{target}'", file=sys.stderr)
@@ -148,9 +148,21 @@ def interface_main(argv: list[str]) -> int:
     ls.add_argument("-a", "--only-actions", action="store_true")
     pkg = sub.add_parser("package")
     pkg.add_argument("package_name")
+    proto = sub.add_parser("proto", help="Output an interface prototype")
+    proto.add_argument("type")
     args = p.parse_args(argv)
     from ament_index_python.packages import get_package_share_directory, get_packages_with_prefixes
 
+    if args.cmd == "proto":
+        kind = args.type.strip("/").split("/")[1] if args.type.count("/") >= 2 else "msg"
+        try:
+            cls = get_interface(args.type, kind)
+        except InterfaceError as err:
+            print(str(err), file=sys.stderr)
+            return 1
+        prototype = cls.Request() if kind == "srv" else cls.Goal() if kind == "action" else cls()
+        print(f'"{to_yaml(prototype)}"')
+        return 0
     if args.cmd == "show":
         parts = args.type.strip("/").split("/")
         if len(parts) != 3:

@@ -67,6 +67,19 @@ def main(argv: list[str]) -> int:
     info.add_argument("-v", "--verbose", action="store_true")
     typ = sub.add_parser("type", help="Print a topic's type")
     typ.add_argument("topic_name")
+    bw = sub.add_parser("bw", help="Display bandwidth used by topic")
+    bw.add_argument("topic_name")
+    bw.add_argument("--window", "-w", type=int, default=100)
+    bw.add_argument("--count", type=int, default=None, help="(gazelle) stop after this many reports")
+    delay = sub.add_parser("delay", help="Display delay of topic from timestamp in header")
+    delay.add_argument("topic_name")
+    delay.add_argument("--window", "-w", type=int, default=10000)
+    delay.add_argument("--count", type=int, default=None, help="(gazelle) stop after this many reports")
+    delay.add_argument("--use-sim-time", action="store_true", help="(gazelle) compare with /clock's time")
+    find = sub.add_parser("find", help="Output a list of available topics of a given type")
+    find.add_argument("topic_type")
+    find.add_argument("-c", "--count-topics", action="store_true")
+    find.add_argument("--include-hidden-topics", action="store_true")
     pub = sub.add_parser("pub", help="Publish a message to a topic")
     pub.add_argument("topic_name")
     pub.add_argument("message_type")
@@ -79,9 +92,9 @@ def main(argv: list[str]) -> int:
     args = p.parse_args(argv)
     try:
         with cli_node("ros2topic") as node:
-            return {"list": _list, "echo": _echo, "hz": _hz, "info": _info, "type": _type, "pub": _pub}[args.cmd](
-                node, args
-            )
+            verbs = {"list": _list, "echo": _echo, "hz": _hz, "info": _info, "type": _type, "pub": _pub}
+            verbs.update({"bw": _bw, "delay": _delay, "find": _find})
+            return verbs[args.cmd](node, args)
     except InterfaceError as err:
         print(str(err), file=sys.stderr)
         return 1
@@ -145,31 +158,119 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
 
 
 def _hz(node: Any, args: argparse.Namespace) -> int:
+    stamps: list[float] = []
+    if _subscribed(node, args, lambda _m: stamps.append(time.monotonic())) is None:
+        return 1
 
+    def report() -> bool:
+        window = stamps[-args.window :]
+        if len(window) < 2:
+            return False
+        mean, lo, hi, std = _stats([b - a for a, b in zip(window, window[1:], strict=False)])
+        print(f"average rate: {1.0 / mean:.3f}")
+        print(f"\tmin: {lo:.3f}s max: {hi:.3f}s std dev: {std:.5f}s window: {len(window)}", flush=True)
+        return True
+
+    _every_second(node, args.count, report)
+    return 0
+
+
+def _stats(values: list[float]) -> tuple[float, float, float, float]:
+    """(mean, min, max, standard deviation)."""
+    mean = sum(values) / len(values)
+    return mean, min(values), max(values), (sum((v - mean) ** 2 for v in values) / len(values)) ** 0.5
+
+
+def _subscribed(node: Any, args: argparse.Namespace, callback: Any, raw: bool = False) -> str | None:
+    """Subscribe ``callback`` to the topic (its type discovered); the topic's name, None when unknown."""
     topic = args.topic_name if args.topic_name.startswith("/") else f"/{args.topic_name}"
     type_name = _resolve_type(node, topic, None)
     if type_name is None:
         print(f"WARNING: topic [{topic}] does not appear to be published yet", file=sys.stderr)
-        return 1
-    cls = get_interface(type_name)
-    stamps: list[float] = []
-    node.create_subscription(cls, topic, lambda _m: stamps.append(time.monotonic()), _qos_for(node, topic))
+        return None
+    node.create_subscription(get_interface(type_name), topic, callback, _qos_for(node, topic), raw=raw)
+    return topic
+
+
+def _every_second(node: Any, count: int | None, report: Any) -> None:
+    """Spin, calling ``report()`` once a second (``count`` times, or until Ctrl-C); it returns whether it printed."""
     reports, last = 0, time.monotonic()
-    while args.count is None or reports < args.count:
+    while count is None or reports < count:
         spin_once(node, timeout_sec=0.05)
         if time.monotonic() - last >= 1.0:
             last = time.monotonic()
-            window = stamps[-args.window :]
-            if len(window) < 2:
-                continue
-            gaps = [b - a for a, b in zip(window, window[1:], strict=False)]
-            mean = sum(gaps) / len(gaps)
-            std = (sum((g - mean) ** 2 for g in gaps) / len(gaps)) ** 0.5
-            print(f"average rate: {1.0 / mean:.3f}")
-            print(
-                f"\tmin: {min(gaps):.3f}s max: {max(gaps):.3f}s std dev: {std:.5f}s window: {len(window)}", flush=True
-            )
-            reports += 1
+            reports += 1 if report() else 0
+
+
+def _bytes(n: float) -> str:
+    for unit in ("B", "KB", "MB"):
+        if n < 1000 or unit == "MB":
+            return f"{n:.2f} {unit}"
+        n /= 1000
+    return f"{n:.2f} MB"
+
+
+def _bw(node: Any, args: argparse.Namespace) -> int:
+    sizes: list[tuple[float, int]] = []
+    if _subscribed(node, args, lambda data: sizes.append((time.monotonic(), len(data))), raw=True) is None:
+        return 1
+    print(f"Subscribed to [{args.topic_name}]", flush=True)
+
+    def report() -> bool:
+        window = sizes[-args.window :]
+        if len(window) < 2:
+            return False
+        span = window[-1][0] - window[0][0]
+        mean, lo, hi, _ = _stats([float(n) for _, n in window])
+        rate = sum(n for _, n in window) / span if span > 0 else 0.0
+        print(f"{_bytes(rate)}/s from {len(window)} messages")
+        print(f"\tMessage size mean: {_bytes(mean)} min: {_bytes(lo)} max: {_bytes(hi)}", flush=True)
+        return True
+
+    _every_second(node, args.count, report)
+    return 0
+
+
+def _delay(node: Any, args: argparse.Namespace) -> int:
+    if args.use_sim_time:
+        from rclpy.parameter import Parameter
+
+        node.set_parameters([Parameter("use_sim_time", Parameter.Type.BOOL, True)])
+    clock = node.get_clock()
+    delays: list[float] = []
+
+    def on_message(msg: Any) -> None:
+        header = getattr(msg, "header", None)
+        if header is None:
+            return
+        stamp = header.stamp.sec + header.stamp.nanosec * 1e-9
+        delays.append(clock.now().nanoseconds * 1e-9 - stamp)
+
+    if _subscribed(node, args, on_message) is None:
+        return 1
+
+    def report() -> bool:
+        window = delays[-args.window :]
+        if not window:
+            print("msg does not have header" if not delays else "no new messages")
+            return False
+        mean, lo, hi, std = _stats(window)
+        print(f"average delay: {mean:.3f}")
+        print(f"\tmin: {lo:.3f}s max: {hi:.3f}s std dev: {std:.5f}s window: {len(window)}", flush=True)
+        return True
+
+    _every_second(node, args.count, report)
+    return 0
+
+
+def _find(node: Any, args: argparse.Namespace) -> int:
+    discover(node)
+    found = sorted(n for n, types in _topic_types(node, args.include_hidden_topics).items() if args.topic_type in types)
+    if args.count_topics:
+        print(len(found))
+        return 0
+    for name in found:
+        print(name)
     return 0
 
 
