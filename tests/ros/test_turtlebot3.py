@@ -126,6 +126,25 @@ def test_turtlebot3_spawns_drives_and_publishes(case, resources, sim_factory, ro
     assert ("odom", "base_footprint") in obs.edges
     assert "Subscribed to [/cmd_vel]" in sim.output or "subscribing to twist messages on [/cmd_vel]" in sim.output
 
+    if case == "classic_xacro":
+        # the lidar plugin is a node of its own: its rate can be set at run time, its frame cannot
+        from rclpy.parameter import Parameter
+        from rclpy.parameter_client import AsyncParameterClient
+
+        lidar = AsyncParameterClient(node, "/gazebo_ros_lds_lfcd_controller")
+        assert lidar.wait_for_services(timeout_sec=15)
+
+        def answer(future):
+            wait_for(future.done, 10, "a parameter service answer")
+            return future.result()
+
+        assert answer(lidar.get_parameters(["update_rate"])).values[0].double_value == 5.0
+        done = answer(lidar.set_parameters([Parameter("update_rate", value=2.0)])).results[0]
+        assert done.successful, done.reason
+        assert answer(lidar.get_parameters(["update_rate"])).values[0].double_value == 2.0
+        refused = answer(lidar.set_parameters([Parameter("frameName", value="elsewhere")])).results[0]
+        assert not refused.successful and "read-only" in refused.reason
+
 
 def test_ros2_control_diffbot_spawns_with_tf_and_a_controller_manager(resources, sim_factory, ros_client):
     path = DIFFBOT / "ros2_control_demo_example_2/urdf/diffbot.urdf.xacro"
