@@ -36,6 +36,8 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
     first = yaml.safe_load(echo.stdout.split("---")[0])
     assert first["header"]["frame_id"] == "odom" and first["child_frame_id"] == "base_link"
     assert len(first["pose"]["covariance"]) == 36
+    best_effort = ros2("topic", "echo", "/odom", "--once", "--qos-profile", "sensor_data", "--field", "child_frame_id")
+    assert best_effort.stdout.split("---")[0].strip() == "base_link", best_effort.stdout + best_effort.stderr
 
     assert "average rate:" in ros2("topic", "hz", "/clock", "--count", "1").stdout
     info = ros2("topic", "info", "/cmd_vel", "-v").stdout

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import copy
 import sys
 import time
 from typing import Any
@@ -57,7 +58,22 @@ def main(argv: list[str]) -> int:
     echo.add_argument("--timeout", type=float, default=None)
     echo.add_argument("--qos-reliability", choices=["reliable", "best_effort", "system_default"], default=None)
     echo.add_argument("--qos-durability", choices=["transient_local", "volatile", "system_default"], default=None)
-    echo.add_argument("--qos-profile", default=None)
+    echo.add_argument(
+        "--qos-profile",
+        choices=[
+            "system_default",
+            "sensor_data",
+            "services_default",
+            "parameters",
+            "parameter_events",
+            "action_status_default",
+            "default",
+            "best_available",
+        ],
+        default=None,
+        help="QoS preset to start from (default: one that matches every publisher)",
+    )
+    echo.add_argument("--qos-depth", type=int, default=None)
     hz = sub.add_parser("hz", help="Print the average publishing rate to screen")
     hz.add_argument("topic_name")
     hz.add_argument("--window", "-w", type=int, default=10000)
@@ -125,6 +141,12 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
     wait_until(node, lambda: node.get_publishers_info_by_topic(topic), 5.0)
     discover(node, 0.0, SETTLE_SEC)  # every publisher's QoS, to match them all
     qos = _qos_for(node, topic)
+    if args.qos_profile is not None:
+        from rclpy.qos import QoSPresetProfiles
+
+        qos = copy.copy(QoSPresetProfiles.get_from_short_key(args.qos_profile))
+    if args.qos_depth is not None:
+        qos.depth = args.qos_depth
     if args.qos_reliability == "reliable":
         qos.reliability = ReliabilityPolicy.RELIABLE
     elif args.qos_reliability == "best_effort":
