@@ -31,6 +31,7 @@ FORBIDDEN: dict[str, tuple[str, ...]] = {
     "physics": ("gazelle.systems", "gazelle.sim", "gazelle.ros", "gazelle.viewer", "gazelle.cli", "rclpy", "viser"),
     "systems": ("mujoco", "gazelle.sim", "gazelle.ros", "gazelle.viewer", "gazelle.cli", "rclpy", "viser"),
     "sim": ("mujoco", "gazelle.ros", "gazelle.viewer", "gazelle.cli", "rclpy", "viser"),
+    "ros": ("gazelle.viewer", "gazelle.cli"),
     "viewer": ("gazelle.ros", "gazelle.cli", "rclpy"),
     "worlds": (
         "gazelle.physics",

@@ -114,7 +114,7 @@ def foxglove(
     ),
 ) -> None:
     """Serve the ROS graph's topics over the Foxglove WebSocket protocol, as foxglove_bridge does."""
-    from ..ros import foxglove_main
+    from ._foxglove import run as foxglove_main
     from .ros2cli import ensure_ament_prefix
 
     ensure_ament_prefix()  # the interface definitions (schemas) are found through it

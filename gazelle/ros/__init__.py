@@ -8,22 +8,19 @@ its dependencies (rosbag2's and Foxglove's ``ros2msg`` schemas).
 """
 
 from ._bridge import RosBridge
-from ._definitions import InterfaceError
+from ._definitions import InterfaceError, message_class
 from ._definitions import full_text as message_definition
 from ._exposure import choose_discovery_range
-from ._foxglove import DEFAULT_PORT as FOXGLOVE_PORT
-from ._foxglove import run as foxglove_main
 from ._spawn import main as spawn_main
 from ._spawner import spawner_main as spawner_main
 from ._spawner import unspawner_main as unspawner_main
 
 __all__ = [
-    "FOXGLOVE_PORT",
     "InterfaceError",
     "RosBridge",
+    "message_class",
     "message_definition",
     "choose_discovery_range",
-    "foxglove_main",
     "spawn_main",
     "spawner_main",
     "unspawner_main",

@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 import subprocess
 import sys
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
@@ -21,27 +22,109 @@ def ros2(*args: str, timeout: float = 60) -> subprocess.CompletedProcess:
     return subprocess.run([ROS2, *args], capture_output=True, text=True, timeout=timeout)
 
 
+def ros2_many(commands: dict[str, tuple[str, ...]], at_once: int = 8) -> dict[str, subprocess.CompletedProcess]:
+    """Run independent ``ros2`` commands side by side (each mostly waits for discovery), ``at_once`` at a time."""
+    with ThreadPoolExecutor(at_once) as pool:
+        futures = {name: pool.submit(ros2, *args) for name, args in commands.items()}
+        return {name: f.result() for name, f in futures.items()}
+
+
 @pytest.mark.slow
 def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_factory, ros_client):
     sim_factory("--no-viewer")
     spawn = start([*GAZELLE, "spawn", "-entity", "bot", "-file", str(SEED_XACRO)], "spawn")
     assert spawn.wait(60) == 0, spawn.output
 
-    listed = ros2("topic", "list", "-t")
-    assert "/odom [nav_msgs/msg/Odometry]" in listed.stdout and "/clock [rosgraph_msgs/msg/Clock]" in listed.stdout
-    assert "/_gazelle/servers" not in listed.stdout  # hidden unless asked
-
-    echo = ros2("topic", "echo", "/odom", "--once")
-    assert echo.returncode == 0, echo.stderr
-    first = yaml.safe_load(echo.stdout.split("---")[0])
+    r = ros2_many(
+        {
+            "topic list": ("topic", "list", "-t"),
+            "echo": ("topic", "echo", "/odom", "--once"),
+            "echo sensor_data": (
+                "topic",
+                "echo",
+                "/odom",
+                "--once",
+                "--qos-profile",
+                "sensor_data",
+                "--field",
+                "child_frame_id",
+            ),
+            "hz clock": ("topic", "hz", "/clock", "--count", "1"),
+            "info cmd_vel": ("topic", "info", "/cmd_vel", "-v"),
+            "info odom": ("topic", "info", "-v", "/odom"),
+            "find": ("topic", "find", "nav_msgs/msg/Odometry"),
+            "bw": ("topic", "bw", "/odom", "--count", "1"),
+            "delay": ("topic", "delay", "/odom", "--count", "1", "--use-sim-time"),
+            "call": ("service", "call", "/get_model_list", "gazebo_msgs/srv/GetModelList"),
+            "service list": ("service", "list", "-t"),
+            "node list": ("node", "list"),
+            "node info gazelle": ("node", "info", "/gazelle"),
+            "node info drive": ("node", "info", "/differential_drive"),
+            "show srv": ("interface", "show", "gazebo_msgs/srv/SpawnEntity"),
+            "show odom": ("interface", "show", "nav_msgs/msg/Odometry"),
+            "proto": ("interface", "proto", "geometry_msgs/msg/Twist"),
+            "param get": ("param", "get", "/differential_drive", "wheel_separation"),
+            "param set": ("param", "set", "/differential_drive", "wheel_separation", "0.5"),
+            "param dump": ("param", "dump", "/differential_drive"),
+            "param describe": ("param", "describe", "/differential_drive", "wheel_diameter"),
+            "param list": ("param", "list", "/differential_drive"),
+            "param nope": ("param", "get", "/nope", "x"),
+            "bad type": ("topic", "pub", "--once", "/cmd_vel", "geometry_msgs/msg/Twst", "{}"),
+            "bad field": ("topic", "pub", "--once", "/cmd_vel", "geometry_msgs/msg/Twist", "{linear: {w: 1}}"),
+        }
+    )
+    listed = r["topic list"].stdout
+    assert "/odom [nav_msgs/msg/Odometry]" in listed and "/clock [rosgraph_msgs/msg/Clock]" in listed
+    assert "/_gazelle/servers" not in listed  # hidden unless asked
+    assert r["echo"].returncode == 0, r["echo"].stderr
+    first = yaml.safe_load(r["echo"].stdout.split("---")[0])
     assert first["header"]["frame_id"] == "odom" and first["child_frame_id"] == "base_link"
     assert len(first["pose"]["covariance"]) == 36
-    best_effort = ros2("topic", "echo", "/odom", "--once", "--qos-profile", "sensor_data", "--field", "child_frame_id")
+    best_effort = r["echo sensor_data"]
     assert best_effort.stdout.split("---")[0].strip() == "base_link", best_effort.stdout + best_effort.stderr
-
-    assert "average rate:" in ros2("topic", "hz", "/clock", "--count", "1").stdout
-    info = ros2("topic", "info", "/cmd_vel", "-v").stdout
+    assert "average rate:" in r["hz clock"].stdout
+    info = r["info cmd_vel"].stdout
     assert "Subscription count: 1" in info and "Node name: differential_drive" in info
+    assert "Node name: differential_drive" in r["info odom"].stdout
+    assert r["find"].stdout.split() == ["/odom"]
+    bw = r["bw"].stdout
+    assert re.search(r"[\d.]+ K?B/s from \d+ messages\n\tMessage size mean: 724.00 B min: 724.00 B", bw), bw
+    assert re.search(r"average delay: -?[\d.]+\n\tmin: ", r["delay"].stdout), r["delay"].stdout
+
+    call = r["call"]
+    assert call.returncode == 0, call.stderr
+    assert "model_names:" in call.stdout and "- bot" in call.stdout and "success: true" in call.stdout
+    assert "/spawn_entity [gazebo_msgs/srv/SpawnEntity]" in r["service list"].stdout
+    # the diff drive plugin is its own node, named as in Gazebo, its configuration its parameters
+    assert {"/gazelle", "/differential_drive"} <= set(r["node list"].stdout.split())
+    node = r["node info gazelle"].stdout
+    assert "/clock: rosgraph_msgs/msg/Clock" in node and "/spawn_entity: gazebo_msgs/srv/SpawnEntity" in node, node
+    assert "/cmd_vel" not in node  # the diff drive's own node subscribes to it
+    drive_info = r["node info drive"].stdout
+    assert "/cmd_vel: geometry_msgs/msg/Twist" in drive_info and "/odom: nav_msgs/msg/Odometry" in drive_info
+    shown = r["show srv"].stdout
+    assert "string xml" in shown and "---" in shown
+    odom_def = r["show odom"].stdout
+    assert "string child_frame_id" in odom_def and "geometry_msgs/PoseWithCovariance pose" in odom_def
+    assert yaml.safe_load(r["proto"].stdout.strip().strip('"')) == {
+        "linear": {"x": 0.0, "y": 0.0, "z": 0.0},
+        "angular": {"x": 0.0, "y": 0.0, "z": 0.0},
+    }
+    got = r["param get"]
+    assert got.stdout.strip() == "Double value is: 0.34", got.stdout + got.stderr
+    refused = r["param set"]
+    assert refused.returncode == 1
+    assert refused.stderr.strip() == "Setting parameter failed: Trying to set a read-only parameter: wheel_separation."
+    dumped = yaml.safe_load(r["param dump"].stdout)
+    assert dumped["/differential_drive"]["ros__parameters"]["odometry_frame"] == "odom"
+    assert "Read only: true" in r["param describe"].stdout
+    params = set(r["param list"].stdout.split())
+    assert {"wheel_separation", "wheel_diameter", "odometry_frame", "use_sim_time"} <= params, params
+    assert r["param nope"].stderr.strip() == "Node not found"
+    bad_type, bad_field = r["bad type"], r["bad field"]
+    assert bad_type.returncode == 1 and "The passed msg type 'geometry_msgs/msg/Twst' is invalid" in bad_type.stderr
+    assert bad_field.returncode == 1 and "has no field 'linear.w'" in bad_field.stderr
+    assert "Traceback" not in bad_type.stderr + bad_field.stderr
 
     pub = start(
         [ROS2, "topic", "pub", "-r", "10", "/cmd_vel", "geometry_msgs/msg/Twist", "{linear: {x: 0.3}}"], "ros2 pub"
@@ -51,47 +134,7 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
     finally:
         pub.interrupt()
 
-    call = ros2("service", "call", "/get_model_list", "gazebo_msgs/srv/GetModelList")
-    assert call.returncode == 0, call.stderr
-    assert "model_names:" in call.stdout and "- bot" in call.stdout and "success: true" in call.stdout
-    services = ros2("service", "list", "-t").stdout
-    assert "/spawn_entity [gazebo_msgs/srv/SpawnEntity]" in services
-    assert "/gazelle" in ros2("node", "list").stdout.split()
-    node = ros2("node", "info", "/gazelle").stdout
-    assert "/clock: rosgraph_msgs/msg/Clock" in node and "/spawn_entity: gazebo_msgs/srv/SpawnEntity" in node
-    assert "/cmd_vel" not in node  # the diff drive's own node subscribes to it (below)
-    shown = ros2("interface", "show", "gazebo_msgs/srv/SpawnEntity").stdout
-    assert "string xml" in shown and "---" in shown
-    odom_def = ros2("interface", "show", "nav_msgs/msg/Odometry").stdout
-    assert "string child_frame_id" in odom_def and "geometry_msgs/PoseWithCovariance pose" in odom_def
-
-    # the diff drive plugin is its own node, named as in Gazebo, its configuration its parameters
-    assert {"/gazelle", "/differential_drive"} <= set(ros2("node", "list").stdout.split())
-    drive_info = ros2("node", "info", "/differential_drive").stdout
-    assert "/cmd_vel: geometry_msgs/msg/Twist" in drive_info and "/odom: nav_msgs/msg/Odometry" in drive_info
-    assert "Node name: differential_drive" in ros2("topic", "info", "-v", "/odom").stdout
-    got = ros2("param", "get", "/differential_drive", "wheel_separation")
-    assert got.stdout.strip() == "Double value is: 0.34", got.stdout + got.stderr
-    refused = ros2("param", "set", "/differential_drive", "wheel_separation", "0.5")
-    assert refused.returncode == 1
-    assert refused.stderr.strip() == "Setting parameter failed: Trying to set a read-only parameter: wheel_separation."
-    dumped = yaml.safe_load(ros2("param", "dump", "/differential_drive").stdout)
-    assert dumped["/differential_drive"]["ros__parameters"]["odometry_frame"] == "odom"
-    assert "Read only: true" in ros2("param", "describe", "/differential_drive", "wheel_diameter").stdout
-    assert ros2("param", "get", "/nope", "x").stderr.strip() == "Node not found"
-
-    assert ros2("topic", "find", "nav_msgs/msg/Odometry").stdout.split() == ["/odom"]
-    bw = ros2("topic", "bw", "/odom", "--count", "1").stdout
-    assert re.search(r"[\d.]+ K?B/s from \d+ messages\n\tMessage size mean: 724.00 B min: 724.00 B", bw), bw
-    delay = ros2("topic", "delay", "/odom", "--count", "1", "--use-sim-time").stdout
-    assert re.search(r"average delay: -?[\d.]+\n\tmin: ", delay), delay
-    proto = ros2("interface", "proto", "geometry_msgs/msg/Twist").stdout
-    assert yaml.safe_load(proto.strip().strip('"')) == {
-        "linear": {"x": 0.0, "y": 0.0, "z": 0.0},
-        "angular": {"x": 0.0, "y": 0.0, "z": 0.0},
-    }
-
-    # /odom at 100 Hz (the plugin's update rate, at real time)
+    # /odom at 100 Hz (the plugin's update rate, at real time), measured alone
     hz = ros2("topic", "hz", "/odom", "--count", "3").stdout
     rates = [float(line.split(":")[1]) for line in hz.splitlines() if line.strip().startswith("average rate:")]
     assert rates and rates[-1] == pytest.approx(100.0, rel=0.05), hz
@@ -107,9 +150,3 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
     ros2("topic", "echo", "/clock", "--once", "--timeout", "2")  # 2 s of /clock, seen by a second node too
     assert clocks[-1].clock == at_pause, "/clock still advances while paused"
     ros2("service", "call", "/unpause_physics", "std_srvs/srv/Empty")
-
-    bad_type = ros2("topic", "pub", "--once", "/cmd_vel", "geometry_msgs/msg/Twst", "{}")
-    assert bad_type.returncode == 1 and "The passed msg type 'geometry_msgs/msg/Twst' is invalid" in bad_type.stderr
-    bad_field = ros2("topic", "pub", "--once", "/cmd_vel", "geometry_msgs/msg/Twist", "{linear: {w: 1}}")
-    assert bad_field.returncode == 1 and "has no field 'linear.w'" in bad_field.stderr
-    assert "Traceback" not in bad_type.stderr + bad_field.stderr

@@ -7,6 +7,8 @@ the fixtures; this process only uses plain rclpy (no tf2_ros) to drive and obser
 from __future__ import annotations
 
 import math
+import subprocess
+import sys
 import threading
 import time
 from pathlib import Path
@@ -81,7 +83,7 @@ def urdf_links(path: Path) -> set[str]:
 
 
 @pytest.mark.parametrize("case", list(CASES))
-def test_turtlebot3_spawns_drives_and_publishes(case, resources, sim_factory, ros_client):
+def test_turtlebot3_spawns_drives_and_publishes(case, resources, sim_factory, ros_client, tmp_path):
     path = CASES[case]
     sim = sim_factory()
     node = ros_client.node
@@ -144,6 +146,17 @@ def test_turtlebot3_spawns_drives_and_publishes(case, resources, sim_factory, ro
         assert answer(lidar.get_parameters(["update_rate"])).values[0].double_value == 2.0
         refused = answer(lidar.set_parameters([Parameter("frameName", value="elsewhere")])).results[0]
         assert not refused.successful and "read-only" in refused.reason
+        # and as a user does it: a parameters file through `ros2 param load`
+        params = tmp_path / "lidar.yaml"
+        params.write_text("/gazebo_ros_lds_lfcd_controller:\n  ros__parameters:\n    update_rate: 4.0\n")
+        loaded = subprocess.run(
+            [str(Path(sys.prefix) / "bin" / "ros2"), "param", "load", "/gazebo_ros_lds_lfcd_controller", str(params)],
+            capture_output=True,
+            text=True,
+            timeout=60,
+        )
+        assert loaded.stdout.strip() == "Set parameter update_rate successful", loaded.stdout + loaded.stderr
+        assert answer(lidar.get_parameters(["update_rate"])).values[0].double_value == 4.0
 
 
 def test_ros2_control_diffbot_spawns_with_tf_and_a_controller_manager(resources, sim_factory, ros_client):

@@ -13,6 +13,8 @@ import importlib
 import os
 import sys
 
+from ._graph import matching_qos  # the Foxglove bridge subscribes the same way
+
 COMMANDS = {
     "action": ("_action", "main", "Various action related sub-commands"),
     "bag": ("_bag", "main", "Various rosbag related sub-commands"),
@@ -68,4 +70,4 @@ def console_main() -> None:
     raise SystemExit(main())
 
 
-__all__ = ["COMMANDS", "VERBS", "console_main", "ensure_ament_prefix", "main"]
+__all__ = ["COMMANDS", "VERBS", "matching_qos", "console_main", "ensure_ament_prefix", "main"]

@@ -28,7 +28,7 @@ from typing import Any
 
 import yaml
 
-from ._graph import cli_node, is_hidden, spin_once
+from ._graph import cli_node, is_hidden, matching_qos, spin_once
 from ._messages import InterfaceError, get_interface
 
 ROSBAG2_VERSION = 9
@@ -229,8 +229,6 @@ class _Recorder:
         from gazelle.ros import InterfaceError as DefinitionError
         from gazelle.ros import message_definition
 
-        from ._topic import _qos_for
-
         cls = get_interface(type_name)
         schema = self._schemas.get(type_name)
         if schema is None:
@@ -261,7 +259,7 @@ class _Recorder:
                 channel_id=entry["channel"], log_time=now, publish_time=now, data=data, sequence=entry["count"]
             )
 
-        qos = _qos_for(self.node, topic)
+        qos = matching_qos(self.node, topic)
         qos.depth = RECORD_DEPTH
         self._subs.append(self.node.create_subscription(cls, topic, on_message, qos, raw=True))
         print(f"[INFO] [rosbag2_recorder]: Subscribed to topic '{topic}'", flush=True)

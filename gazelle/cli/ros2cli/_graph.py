@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import os
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
 
@@ -55,17 +55,20 @@ SETTLE_SEC = 1.0
 """Quiet time after a named node or topic has appeared: its other endpoints come in the same exchange."""
 
 
-def discover(node: Any, seconds: float = DEFAULT_SPIN_TIME, quiet: float = QUIET_SEC) -> None:
-    """Let discovery run for at least ``seconds``, until another node is seen and the graph (nodes,
-    topics, services) has been still for ``quiet`` seconds; at most :data:`MAX_DISCOVERY_SEC` (spinning
-    so graph events are taken). A listing waits the full :data:`QUIET_SEC`; a verb about one name that
-    has already appeared waits :data:`SETTLE_SEC` for the rest of its endpoints."""
+def discover(
+    node: Any, seconds: float = DEFAULT_SPIN_TIME, quiet: float = QUIET_SEC, watch: Callable[[], Any] | None = None
+) -> None:
+    """Let discovery run for at least ``seconds``, until another node is seen and what is watched (by
+    default the graph's nodes, topics and services; ``watch()`` when given) has been still for ``quiet``
+    seconds; at most :data:`MAX_DISCOVERY_SEC` (spinning so graph events are taken). A listing waits the
+    full :data:`QUIET_SEC`; a verb about one name that has already appeared waits :data:`SETTLE_SEC` for
+    the rest of its endpoints."""
 
     def snapshot() -> tuple:
         return (
             tuple(sorted(node.get_node_names_and_namespaces())),
-            tuple(sorted(n for n, _ in node.get_topic_names_and_types())),
-            tuple(sorted(n for n, _ in node.get_service_names_and_types())),
+            tuple(sorted(n for n, _ in node.get_topic_names_and_types())) if watch is None else watch(),
+            tuple(sorted(n for n, _ in node.get_service_names_and_types())) if watch is None else (),
         )
 
     start = time.monotonic()
@@ -97,3 +100,17 @@ def wait_until(node: Any, found: Any, timeout: float = MAX_DISCOVERY_SEC) -> Any
         if value or time.monotonic() > deadline:
             return value
         spin_once(node, timeout_sec=0.05)
+
+
+def matching_qos(node: Any, topic: str) -> Any:
+    """A subscription QoS that matches the publishers (reliable only when all are, transient local when any is)."""
+    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+
+    infos = node.get_publishers_info_by_topic(topic)
+    reliable = bool(infos) and all(i.qos_profile.reliability == ReliabilityPolicy.RELIABLE for i in infos)
+    latched = any(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for i in infos)
+    return QoSProfile(
+        depth=10,
+        reliability=ReliabilityPolicy.RELIABLE if reliable else ReliabilityPolicy.BEST_EFFORT,
+        durability=DurabilityPolicy.TRANSIENT_LOCAL if latched else DurabilityPolicy.VOLATILE,
+    )

@@ -140,10 +140,11 @@ def _python(value: Any) -> Any:
 
 # --------------------------------------------------------------------------- verbs
 def _list(node: Any, args: argparse.Namespace) -> int:
-    discover(node)
-    names = _node_names(node, args.include_hidden_nodes)
     if args.node_name:
         names = [_find_node(node, args.node_name, args.include_hidden_nodes)]
+    else:
+        discover(node)
+        names = _node_names(node, args.include_hidden_nodes)
     services = {n for n, _ in node.get_service_names_and_types()}
     for target in names:
         if f"{target}/list_parameters" not in services and not args.node_name:

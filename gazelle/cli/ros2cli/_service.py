@@ -117,20 +117,25 @@ def node_main(argv: list[str]) -> int:
 
         if target not in names and wait_until(node, lambda: target in node_names()):
             names = node_names()
-        discover(node, 0.0, QUIET_SEC)  # its endpoints arrive after the node itself, services last
-
         if target not in names:
             print(f"Unable to find node '{target}'", file=sys.stderr)
             return 1
         ns, _, name = target.rpartition("/")
         ns = ns or "/"
-        print(target)
-        for title, getter in (
+        getters = (
             ("Subscribers", node.get_subscriber_names_and_types_by_node),
             ("Publishers", node.get_publisher_names_and_types_by_node),
             ("Service Servers", node.get_service_names_and_types_by_node),
             ("Service Clients", node.get_client_names_and_types_by_node),
-        ):
+        )
+
+        def endpoints() -> tuple:
+            return tuple(tuple(sorted(n for n, _ in get(name, ns))) for _title, get in getters)
+
+        # its endpoints arrive after the node itself (services last): until its own lists are still
+        discover(node, 0.0, QUIET_SEC, watch=endpoints)
+        print(target)
+        for title, getter in getters:
             print(f"  {title}:")
             for topic, types in sorted(getter(name, ns)):
                 print(f"    {topic}: {', '.join(types)}")

@@ -8,26 +8,12 @@ import sys
 import time
 from typing import Any
 
-from ._graph import SETTLE_SEC, cli_node, discover, is_hidden, spin_once, wait_until
+from ._graph import SETTLE_SEC, cli_node, discover, is_hidden, matching_qos, spin_once, wait_until
 from ._messages import InterfaceError, get_interface, parse_values, set_fields, to_csv, to_yaml
 
 
 def _topic_types(node: Any, hidden: bool = False) -> dict[str, list[str]]:
     return {n: t for n, t in node.get_topic_names_and_types() if hidden or not is_hidden(n)}
-
-
-def _qos_for(node: Any, topic: str) -> Any:
-    """A subscription QoS that matches the publishers (reliable only when all are, transient local when any is)."""
-    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
-
-    infos = node.get_publishers_info_by_topic(topic)
-    reliable = bool(infos) and all(i.qos_profile.reliability == ReliabilityPolicy.RELIABLE for i in infos)
-    latched = any(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for i in infos)
-    return QoSProfile(
-        depth=10,
-        reliability=ReliabilityPolicy.RELIABLE if reliable else ReliabilityPolicy.BEST_EFFORT,
-        durability=DurabilityPolicy.TRANSIENT_LOCAL if latched else DurabilityPolicy.VOLATILE,
-    )
 
 
 def _resolve_type(node: Any, topic: str, given: str | None, wait: float = 5.0) -> str | None:
@@ -139,8 +125,9 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
         return 1
     cls = get_interface(type_name)
     wait_until(node, lambda: node.get_publishers_info_by_topic(topic), 5.0)
-    discover(node, 0.0, SETTLE_SEC)  # every publisher's QoS, to match them all
-    qos = _qos_for(node, topic)
+    # every publisher's QoS, to match them all
+    discover(node, 0.0, SETTLE_SEC, watch=lambda: len(node.get_publishers_info_by_topic(topic)))
+    qos = matching_qos(node, topic)
     if args.qos_profile is not None:
         from rclpy.qos import QoSPresetProfiles
 
@@ -210,7 +197,7 @@ def _subscribed(node: Any, args: argparse.Namespace, callback: Any, raw: bool = 
     if type_name is None:
         print(f"WARNING: topic [{topic}] does not appear to be published yet", file=sys.stderr)
         return None
-    node.create_subscription(get_interface(type_name), topic, callback, _qos_for(node, topic), raw=raw)
+    node.create_subscription(get_interface(type_name), topic, callback, matching_qos(node, topic), raw=raw)
     return topic
 
 
@@ -299,7 +286,7 @@ def _find(node: Any, args: argparse.Namespace) -> int:
 def _info(node: Any, args: argparse.Namespace) -> int:
     topic = args.topic_name if args.topic_name.startswith("/") else f"/{args.topic_name}"
     types = wait_until(node, lambda: dict(node.get_topic_names_and_types()).get(topic))
-    discover(node, 0.0, SETTLE_SEC)  # the topic's other endpoints
+    discover(node, 0.0, SETTLE_SEC, watch=lambda: (node.count_publishers(topic), node.count_subscribers(topic)))
     if not types:
         print(f"Unknown topic '{topic}'", file=sys.stderr)
         return 1

@@ -3,7 +3,7 @@
 What the ROS ``foxglove_bridge`` node does, with the foxglove-sdk server:
 
 * every topic on the graph (not hidden) is a Foxglove channel: its type's ``ros2msg`` definition as the
-  schema (see :mod:`._definitions`), ``cdr`` as the encoding;
+  schema (:func:`gazelle.ros.message_definition`), ``cdr`` as the encoding;
 * a topic is subscribed in ROS (a raw subscription: the CDR bytes go out as they came) only while a
   Foxglove client subscribes to its channel, so nothing is taken for nobody;
 * the topics are looked up again every second (new ones are advertised, gone ones withdrawn).
@@ -30,10 +30,11 @@ import rclpy
 from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
-from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
+from ..ros import InterfaceError, message_class
+from ..ros import message_definition as full_text
 from ..viewer import OriginPolicy
-from ._definitions import InterfaceError, full_text, message_class
+from .ros2cli import matching_qos
 
 _log = logging.getLogger("gazelle.foxglove")
 
@@ -139,7 +140,7 @@ class FoxgloveBridge:
             channel.log(data, log_time=time.time_ns())
 
         cls = message_class(self._types[topic])
-        return self.node.create_subscription(cls, topic, forward, _qos_for(self.node, topic), raw=True)
+        return self.node.create_subscription(cls, topic, forward, matching_qos(self.node, topic), raw=True)
 
     def spin(self, stop: threading.Event) -> None:
         """Serve until ``stop`` is set."""
@@ -178,18 +179,6 @@ class _Listener:
 
     def on_unsubscribe(self, client: Any, channel: Any) -> None:
         self.bridge._requests.put(("unsubscribe", channel.topic, client.id))
-
-
-def _qos_for(node: Node, topic: str) -> QoSProfile:
-    """A subscription QoS every publisher of ``topic`` can serve (reliable only if all are)."""
-    infos = node.get_publishers_info_by_topic(topic)
-    reliable = bool(infos) and all(i.qos_profile.reliability == ReliabilityPolicy.RELIABLE for i in infos)
-    latched = any(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for i in infos)
-    return QoSProfile(
-        depth=10,
-        reliability=ReliabilityPolicy.RELIABLE if reliable else ReliabilityPolicy.BEST_EFFORT,
-        durability=DurabilityPolicy.TRANSIENT_LOCAL if latched else DurabilityPolicy.VOLATILE,
-    )
 
 
 class _Proxy:
