@@ -204,9 +204,10 @@ def test_r6bot_follows_a_trajectory_holds_and_aborts_on_path_tolerance(sim_facto
     # the same action from the command line, as a user types it
     ros2cli = [str(Path(sys.prefix) / "bin" / "ros2"), "action"]
     action = "/joint_trajectory_controller/follow_joint_trajectory"
-    listed = subprocess.run([*ros2cli, "list", "-t"], capture_output=True, text=True, timeout=60)
-    assert f"{action} [control_msgs/action/FollowJointTrajectory]" in listed.stdout, listed.stdout + listed.stderr
-    info = subprocess.run([*ros2cli, "info", action], capture_output=True, text=True, timeout=60)
+    lister = subprocess.Popen([*ros2cli, "list", "-t"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    info = subprocess.run([*ros2cli, "info", action], capture_output=True, text=True, timeout=60)  # meanwhile
+    listed, _ = lister.communicate(timeout=60)
+    assert f"{action} [control_msgs/action/FollowJointTrajectory]" in listed, listed
     assert "Action servers: 1" in info.stdout and "    /controller_manager" in info.stdout, info.stdout
     goal_yaml = (
         "{trajectory: {joint_names: [joint_1, joint_2, joint_3, joint_4, joint_5, joint_6], "

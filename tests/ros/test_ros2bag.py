@@ -1,31 +1,52 @@
 """`ros2 bag record | info | play` round trip on a driving robot, checked by an independent reader
-(rosbags) and by a plain rclpy subscriber in a graph without the simulator."""
+(rosbags) and by a plain rclpy subscriber in a graph without the simulator; meanwhile a Foxglove
+client (`gazelle sim --foxglove`) watches the same robot."""
 
 from __future__ import annotations
 
 import json
 import re
+import socket
+import struct
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
+from nav_msgs.msg import Odometry
+from rclpy.serialization import deserialize_message
+from websockets.exceptions import InvalidStatus
+from websockets.sync.client import connect
 
 from .conftest import GAZELLE, SEED_XACRO, start, wait_for
 
 ROS2 = str(Path(sys.prefix) / "bin" / "ros2")
 LISTENER = str(Path(__file__).with_name("odom_listener.py"))
+PROTOCOL = "foxglove.sdk.v1"
+MESSAGE_DATA = 0x01
+"""Foxglove server binary opcode: uint8 op, uint32 subscription id, uint64 receive time (ns), the message."""
 
 
 def ros2(*args: str, timeout: float = 60, cwd: Path | None = None) -> subprocess.CompletedProcess:
     return subprocess.run([ROS2, *args], capture_output=True, text=True, timeout=timeout, cwd=cwd)
 
 
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
 @pytest.mark.slow
-def test_record_info_and_play_round_trip(sim_factory, ros_client, tmp_path):
+def test_record_info_and_play_round_trip_with_a_foxglove_client_watching(sim_factory, ros_client, tmp_path):
+    """One driving robot for both (a simulator started once): `gazelle sim --foxglove` serves a Foxglove
+    client while `ros2 bag record` records."""
     from rosbags.highlevel import AnyReader
 
-    sim = sim_factory("--no-viewer")
+    port = _free_port()
+    sim = sim_factory("--no-viewer", "--foxglove", str(port))
+    sim.wait_line(f"Foxglove bridge at ws://127.0.0.1:{port}", 30)
     spawn = start([*GAZELLE, "spawn", "-entity", "bot", "-file", str(SEED_XACRO)], "spawn")
     assert spawn.wait(60) == 0, spawn.output
     drive = start(
@@ -43,10 +64,18 @@ def test_record_info_and_play_round_trip(sim_factory, ros_client, tmp_path):
     )
     try:
         wait_for(lambda: ros_client.entity_state("bot").state.pose.position.x > 0.05, 30, "the robot to drive")
-        rec = ros2("bag", "record", "-o", "B", "/odom", "/tf", "/clock", "--max-duration", "10", cwd=tmp_path)
+        rec = subprocess.Popen(
+            [ROS2, "bag", "record", "-o", "B", "/odom", "/tf", "/clock", "--max-duration", "10"],
+            cwd=tmp_path,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+        )
+        _foxglove_client_checks(port)  # while it records
+        rec_out, _ = rec.communicate(timeout=60)
     finally:
         drive.interrupt()
-    assert rec.returncode == 0, rec.stdout + rec.stderr
+    assert rec.returncode == 0, rec_out
     bag = tmp_path / "B"
     assert (bag / "metadata.yaml").is_file() and (bag / "B_0.mcap").is_file()
 
@@ -82,3 +111,47 @@ def test_record_info_and_play_round_trip(sim_factory, ros_client, tmp_path):
     assert listener.wait(30) == 0
     got = [json.loads(line) for line in listener.lines if line.startswith("{")]
     assert [(g["stamp"], g["x"], g["y"]) for g in got] == [key(m) for m in recorded]
+
+
+def _foxglove_client_checks(port: int) -> None:
+    """A client speaking the Foxglove WebSocket protocol sees /odom advertised with its schema, subscribes
+    and decodes the CDR it gets; a page from a foreign origin is refused, the Foxglove app's accepted."""
+    url = f"ws://127.0.0.1:{port}"
+    with connect(url, subprotocols=[PROTOCOL], max_size=None) as ws:
+        assert ws.subprotocol == PROTOCOL
+        channels: dict[str, dict] = {}
+        deadline = time.monotonic() + 20
+        while "/odom" not in channels:
+            assert time.monotonic() < deadline, f"/odom never advertised (got {sorted(channels)})"
+            frame = ws.recv(timeout=10)
+            if isinstance(frame, str):
+                op = json.loads(frame)
+                if op["op"] == "advertise":
+                    channels.update({c["topic"]: c for c in op["channels"]})
+        odom = channels["/odom"]
+        assert (odom["encoding"], odom["schemaEncoding"], odom["schemaName"]) == (
+            "cdr",
+            "ros2msg",
+            "nav_msgs/msg/Odometry",
+        )
+        assert "MSG: geometry_msgs/PoseWithCovariance" in odom["schema"]
+        ws.send(json.dumps({"op": "subscribe", "subscriptions": [{"id": 3, "channelId": odom["id"]}]}))
+        decoded: list[Odometry] = []
+        deadline = time.monotonic() + 20
+        while len(decoded) < 5:
+            assert time.monotonic() < deadline, "no /odom messages"
+            frame = ws.recv(timeout=10)
+            if isinstance(frame, bytes) and frame[0] == MESSAGE_DATA:
+                subscription, _received_ns = struct.unpack_from("<IQ", frame, 1)
+                assert subscription == 3
+                decoded.append(deserialize_message(frame[13:], Odometry))
+    assert all(m.header.frame_id == "odom" and m.child_frame_id == "base_link" for m in decoded)
+    stamps = [m.header.stamp.sec + m.header.stamp.nanosec * 1e-9 for m in decoded]
+    assert stamps == sorted(stamps) and stamps[-1] > stamps[0]
+
+    # a web page elsewhere may not connect; the Foxglove web app may
+    with pytest.raises(InvalidStatus) as refused:
+        connect(url, subprotocols=[PROTOCOL], origin="http://evil.example")  # pyright: ignore[reportArgumentType]
+    assert refused.value.response.status_code == 403
+    with connect(url, subprotocols=[PROTOCOL], origin="https://app.foxglove.dev") as ws:  # pyright: ignore[reportArgumentType]
+        assert json.loads(ws.recv(timeout=10))["op"] == "serverInfo"

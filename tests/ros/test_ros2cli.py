@@ -22,7 +22,7 @@ def ros2(*args: str, timeout: float = 60) -> subprocess.CompletedProcess:
     return subprocess.run([ROS2, *args], capture_output=True, text=True, timeout=timeout)
 
 
-def ros2_many(commands: dict[str, tuple[str, ...]], at_once: int = 8) -> dict[str, subprocess.CompletedProcess]:
+def ros2_many(commands: dict[str, tuple[str, ...]], at_once: int = 13) -> dict[str, subprocess.CompletedProcess]:
     """Run independent ``ros2`` commands side by side (each mostly waits for discovery), ``at_once`` at a time."""
     with ThreadPoolExecutor(at_once) as pool:
         futures = {name: pool.submit(ros2, *args) for name, args in commands.items()}
