@@ -119,6 +119,11 @@ def test_three_namespaced_robots_keep_separate_odometry_and_tf(sim_factory, ros_
     assert not {"base_link", "odom", "left_wheel"} & set(frames), f"unprefixed frames published: {frames}"
     for ns in ROBOTS:
         assert {f"{ns}/base_link", f"{ns}/left_wheel", f"{ns}/right_wheel"} <= set(frames)
+    # end of its stdin ends the listener (rclpy's SIGINT handler keeps its stdin loop from seeing a Ctrl-C,
+    # and the teardown then waited 10 s before killing it)
+    assert listener.popen.stdin is not None
+    listener.popen.stdin.close()
+    assert listener.wait(10) == 0
 
 
 def test_robot_state_publisher_is_built_in_and_can_be_turned_off(sim_factory, ros_client):

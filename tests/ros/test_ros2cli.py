@@ -71,6 +71,8 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
             "param nope": ("param", "get", "/nope", "x"),
             "bad type": ("topic", "pub", "--once", "/cmd_vel", "geometry_msgs/msg/Twst", "{}"),
             "bad field": ("topic", "pub", "--once", "/cmd_vel", "geometry_msgs/msg/Twist", "{linear: {w: 1}}"),
+            "unknown topic": ("topic", "echo", "/no_such_topic"),
+            "unknown package": ("interface", "package", "no_such_msgs"),
         }
     )
     listed = r["topic list"].stdout
@@ -124,7 +126,12 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
     bad_type, bad_field = r["bad type"], r["bad field"]
     assert bad_type.returncode == 1 and "The passed msg type 'geometry_msgs/msg/Twst' is invalid" in bad_type.stderr
     assert bad_field.returncode == 1 and "has no field 'linear.w'" in bad_field.stderr
-    assert "Traceback" not in bad_type.stderr + bad_field.stderr
+    unknown_topic, unknown_package = r["unknown topic"], r["unknown package"]
+    assert unknown_topic.returncode == 1
+    assert unknown_topic.stderr.strip() == "Could not determine the type for the passed topic /no_such_topic"
+    assert unknown_package.returncode == 1 and unknown_package.stderr.strip() == "Unknown package 'no_such_msgs'"
+    for bad in (bad_type, bad_field, unknown_topic, unknown_package):
+        assert "Traceback" not in bad.stderr and len(bad.stderr.strip().splitlines()) == 1, bad.stderr
 
     pub = start(
         [ROS2, "topic", "pub", "-r", "10", "/cmd_vel", "geometry_msgs/msg/Twist", "{linear: {x: 0.3}}"], "ros2 pub"

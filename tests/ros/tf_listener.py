@@ -73,7 +73,14 @@ def main():
     rclpy.init()
     node = rclpy.create_node("tf_listener")
     listener = Listener(node)
-    threading.Thread(target=rclpy.spin, args=(node,), daemon=True).start()
+    def spin() -> None:
+        try:
+            rclpy.spin(node)
+        except Exception:  # the context was shut down under it: the end of stdin
+            pass
+
+    spinner = threading.Thread(target=spin, daemon=True)
+    spinner.start()
     print("READY", flush=True)
     for line in sys.stdin:
         words = line.split()
@@ -87,8 +94,9 @@ def main():
         with listener.lock:
             out["__frames__"] = sorted(listener.edges)
         print(json.dumps(out), flush=True)
+    rclpy.shutdown()  # the spinning thread returns first, then the node goes
+    spinner.join(5.0)
     node.destroy_node()
-    rclpy.shutdown()
 
 
 if __name__ == "__main__":
