@@ -73,6 +73,7 @@ def main():
     rclpy.init()
     node = rclpy.create_node("tf_listener")
     listener = Listener(node)
+
     def spin() -> None:
         try:
             rclpy.spin(node)
