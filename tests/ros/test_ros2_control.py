@@ -192,6 +192,11 @@ def test_r6bot_follows_a_trajectory_holds_and_aborts_on_path_tolerance(sim_facto
     q_end = position()
     assert max(abs(a - b) for a, b in zip(q_end, final, strict=True)) < 1e-3
     t_end = _sim_time(joints[-1].header.stamp)
+    # `ros2 action list` and `info` look while the arm holds (they only read the graph)
+    ros2cli = [str(Path(sys.prefix) / "bin" / "ros2"), "action"]
+    action = "/joint_trajectory_controller/follow_joint_trajectory"
+    lister = subprocess.Popen([*ros2cli, "list", "-t"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    informer = subprocess.Popen([*ros2cli, "info", action], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     wait_for(lambda: _sim_time(joints[-1].header.stamp) > t_end + 10.0, 40, "10 s of holding")
     drift = max(abs(a - b) for a, b in zip(position(), q_end, strict=True))
     assert drift < 1e-3, f"drifted {drift:.2e} rad in 10 s"
@@ -201,14 +206,11 @@ def test_r6bot_follows_a_trajectory_holds_and_aborts_on_path_tolerance(sim_facto
     assert box["accepted"]
     assert box["result"].result.error_code == FollowJointTrajectory.Result.PATH_TOLERANCE_VIOLATED
 
-    # the same action from the command line, as a user types it
-    ros2cli = [str(Path(sys.prefix) / "bin" / "ros2"), "action"]
-    action = "/joint_trajectory_controller/follow_joint_trajectory"
-    lister = subprocess.Popen([*ros2cli, "list", "-t"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    info = subprocess.run([*ros2cli, "info", action], capture_output=True, text=True, timeout=60)  # meanwhile
+    # the same action from the command line, as a user types it (listed while the arm held, above)
     listed, _ = lister.communicate(timeout=60)
+    info, _ = informer.communicate(timeout=60)
     assert f"{action} [control_msgs/action/FollowJointTrajectory]" in listed, listed
-    assert "Action servers: 1" in info.stdout and "    /controller_manager" in info.stdout, info.stdout
+    assert "Action servers: 1" in info and "    /controller_manager" in info, info
     goal_yaml = (
         "{trajectory: {joint_names: [joint_1, joint_2, joint_3, joint_4, joint_5, joint_6], "
         "points: [{positions: [0.1, -0.1, 0.2, 0.0, 0.1, 0.0], time_from_start: {sec: 1}}]}}"

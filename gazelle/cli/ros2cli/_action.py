@@ -6,7 +6,7 @@ import argparse
 import sys
 from typing import Any
 
-from ._graph import SETTLE_SEC, cli_node, discover, wait_until
+from ._graph import QUIET_SEC, cli_node, discover, wait_until
 from ._messages import InterfaceError, get_interface, parse_values, set_fields, to_yaml
 
 _STATUS = {1: "ACCEPTED", 2: "EXECUTING", 3: "CANCELING", 4: "SUCCEEDED", 5: "CANCELED", 6: "ABORTED"}
@@ -66,20 +66,26 @@ def _info(node: Any, args: argparse.Namespace) -> int:
     from rclpy.action import graph
 
     name = _absolute(args.action_name)
+
+    def clients_and_servers() -> tuple[list[tuple[str, list[str]]], list[tuple[str, list[str]]]]:
+        clients: list[tuple[str, list[str]]] = []
+        servers: list[tuple[str, list[str]]] = []
+        for node_name, ns in node.get_node_names_and_namespaces():
+            full = f"{ns.rstrip('/')}/{node_name}"
+            for found, kinds in ((clients, "client"), (servers, "server")):
+                by_node = getattr(graph, f"get_action_{kinds}_names_and_types_by_node")(node, node_name, ns)
+                found.extend((full, types) for action, types in by_node if action == name)
+        return sorted(clients), sorted(servers)
+
     wait_until(node, lambda: name in dict(_actions(node)))
-    discover(node, 0.0, SETTLE_SEC)
-    clients: list[tuple[str, list[str]]] = []
-    servers: list[tuple[str, list[str]]] = []
-    for node_name, ns in node.get_node_names_and_namespaces():
-        full = f"{ns.rstrip('/')}/{node_name}"
-        for found, kinds in ((clients, "client"), (servers, "server")):
-            by_node = getattr(graph, f"get_action_{kinds}_names_and_types_by_node")(node, node_name, ns)
-            found.extend((full, types) for action, types in by_node if action == name)
+    # a client alone makes the name appear: until the action's own clients and servers are still
+    discover(node, 0.0, QUIET_SEC, watch=lambda: repr(clients_and_servers()))
+    clients, servers = clients_and_servers()
     print(f"Action: {args.action_name}")
     for title, found in (("Action clients", clients), ("Action servers", servers)):
         print(f"{title}: {len(found)}")
         if not args.count:
-            for full, types in sorted(found):
+            for full, types in found:
                 print(f"    {full} [{', '.join(types)}]" if args.show_types else f"    {full}")
     return 0
 
