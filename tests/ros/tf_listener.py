@@ -12,6 +12,7 @@ import sys
 import threading
 
 import rclpy
+from rclpy.executors import ExternalShutdownException
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from tf2_msgs.msg import TFMessage
 
@@ -77,8 +78,8 @@ def main():
     def spin() -> None:
         try:
             rclpy.spin(node)
-        except Exception:  # the context was shut down under it: the end of stdin
-            pass
+        except ExternalShutdownException:  # the context was shut down under it: the end of stdin
+            return
 
     spinner = threading.Thread(target=spin, daemon=True)
     spinner.start()
