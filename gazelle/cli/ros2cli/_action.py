@@ -6,7 +6,7 @@ import argparse
 import sys
 from typing import Any
 
-from ._graph import QUIET_SEC, cli_node, discover, wait_until
+from ._graph import QUIET_SEC, absolute, cli_node, discover, wait_until
 from ._messages import InterfaceError, get_interface, parse_values, set_fields, to_yaml
 
 _STATUS = {1: "ACCEPTED", 2: "EXECUTING", 3: "CANCELING", 4: "SUCCEEDED", 5: "CANCELED", 6: "ABORTED"}
@@ -47,10 +47,6 @@ def _actions(node: Any) -> list[tuple[str, list[str]]]:
     return get_action_names_and_types(node)
 
 
-def _absolute(name: str) -> str:
-    return name if name.startswith("/") else f"/{name}"
-
-
 def _list(node: Any, args: argparse.Namespace) -> int:
     discover(node)
     actions = sorted(_actions(node))
@@ -65,7 +61,7 @@ def _list(node: Any, args: argparse.Namespace) -> int:
 def _info(node: Any, args: argparse.Namespace) -> int:
     from rclpy.action import graph
 
-    name = _absolute(args.action_name)
+    name = absolute(args.action_name)
 
     def clients_and_servers() -> tuple[list[tuple[str, list[str]]], list[tuple[str, list[str]]]]:
         clients: list[tuple[str, list[str]]] = []
@@ -91,7 +87,7 @@ def _info(node: Any, args: argparse.Namespace) -> int:
 
 
 def _type(node: Any, args: argparse.Namespace) -> int:
-    name = _absolute(args.action_name)
+    name = absolute(args.action_name)
     wait_until(node, lambda: name in dict(_actions(node)))
     types = dict(_actions(node)).get(name)
     if not types:

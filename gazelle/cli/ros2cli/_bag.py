@@ -28,7 +28,7 @@ from typing import Any
 
 import yaml
 
-from ._graph import cli_node, is_hidden, matching_qos, spin_once
+from ._graph import absolute, cli_node, is_hidden, matching_qos, spin_once
 from ._messages import InterfaceError, get_interface
 
 ROSBAG2_VERSION = 9
@@ -320,7 +320,7 @@ def _record(args: argparse.Namespace) -> int:
     out = Path(args.output or datetime.datetime.now().strftime("rosbag2_%Y_%m_%d-%H_%M_%S"))
     if out.exists():
         raise BagError(f"Output folder '{out}' already exists.")
-    wanted = {t if t.startswith("/") else f"/{t}" for t in args.topics}
+    wanted = {absolute(t) for t in args.topics}
 
     def chosen(topic: str) -> bool:
         if exclude is not None and exclude.search(topic):

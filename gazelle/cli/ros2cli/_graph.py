@@ -86,6 +86,11 @@ def discover(
             return
 
 
+def absolute(name: str) -> str:
+    """A name as the command line takes it (``odom``), made absolute (``/odom``)."""
+    return name if name.startswith("/") else f"/{name}"
+
+
 def is_hidden(name: str) -> bool:
     """ROS's hidden names: a path part starting with an underscore."""
     return any(part.startswith("_") for part in name.split("/") if part)

@@ -9,7 +9,7 @@ from typing import Any
 
 import yaml
 
-from ._graph import cli_node, discover, wait_until
+from ._graph import absolute, cli_node, discover, wait_until
 
 SERVICE_TIMEOUT_SEC = 5.0
 
@@ -93,10 +93,6 @@ def main(argv: list[str]) -> int:
 
 
 # --------------------------------------------------------------------------- helpers
-def _absolute(name: str) -> str:
-    return name if name.startswith("/") else f"/{name}"
-
-
 def _node_names(node: Any, hidden: bool) -> list[str]:
     out = []
     for name, ns in node.get_node_names_and_namespaces():
@@ -107,7 +103,7 @@ def _node_names(node: Any, hidden: bool) -> list[str]:
 
 
 def _find_node(node: Any, name: str, hidden: bool) -> str:
-    full = _absolute(name)
+    full = absolute(name)
     if not wait_until(node, lambda: full in _node_names(node, True)):
         raise ParamError("Node not found")
     return full

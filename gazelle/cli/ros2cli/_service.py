@@ -9,7 +9,7 @@ import sys
 import time
 from typing import Any
 
-from ._graph import QUIET_SEC, cli_node, discover, is_hidden, wait_until
+from ._graph import QUIET_SEC, absolute, cli_node, discover, is_hidden, wait_until
 from ._messages import InterfaceError, get_interface, parse_values, set_fields, to_yaml
 
 
@@ -44,7 +44,7 @@ def service_main(argv: list[str]) -> int:
                     print(f"{n} [{', '.join(shown[n])}]" if args.show_types else n)
                 return 0
             if args.cmd == "type":
-                name = args.service_name if args.service_name.startswith("/") else f"/{args.service_name}"
+                name = absolute(args.service_name)
                 wait_until(node, lambda: name in dict(node.get_service_names_and_types()))
                 services = dict(node.get_service_names_and_types())
                 if name not in services:
@@ -110,7 +110,7 @@ def node_main(argv: list[str]) -> int:
                 return 0
             print("\n".join(names))
             return 0
-        target = args.node_name if args.node_name.startswith("/") else f"/{args.node_name}"
+        target = absolute(args.node_name)
 
         def node_names() -> list[str]:
             return [f"{ns.rstrip('/')}/{n}" for n, ns in node.get_node_names_and_namespaces()]

@@ -8,7 +8,7 @@ import sys
 import time
 from typing import Any
 
-from ._graph import SETTLE_SEC, cli_node, discover, is_hidden, matching_qos, spin_once, wait_until
+from ._graph import SETTLE_SEC, absolute, cli_node, discover, is_hidden, matching_qos, spin_once, wait_until
 from ._messages import InterfaceError, get_interface, parse_values, set_fields, to_csv, to_yaml
 
 
@@ -118,7 +118,7 @@ def _list(node: Any, args: argparse.Namespace) -> int:
 def _echo(node: Any, args: argparse.Namespace) -> int:
     from rclpy.qos import DurabilityPolicy, ReliabilityPolicy
 
-    topic = args.topic_name if args.topic_name.startswith("/") else f"/{args.topic_name}"
+    topic = absolute(args.topic_name)
     type_name = _resolve_type(node, topic, args.message_type)
     if type_name is None:
         print(f"Could not determine the type for the passed topic {topic}", file=sys.stderr)
@@ -192,7 +192,7 @@ def _stats(values: list[float]) -> tuple[float, float, float, float]:
 
 def _subscribed(node: Any, args: argparse.Namespace, callback: Any, raw: bool = False) -> str | None:
     """Subscribe ``callback`` to the topic (its type discovered); the topic's name, None when unknown."""
-    topic = args.topic_name if args.topic_name.startswith("/") else f"/{args.topic_name}"
+    topic = absolute(args.topic_name)
     type_name = _resolve_type(node, topic, None)
     if type_name is None:
         print(f"WARNING: topic [{topic}] does not appear to be published yet", file=sys.stderr)
@@ -284,7 +284,7 @@ def _find(node: Any, args: argparse.Namespace) -> int:
 
 
 def _info(node: Any, args: argparse.Namespace) -> int:
-    topic = args.topic_name if args.topic_name.startswith("/") else f"/{args.topic_name}"
+    topic = absolute(args.topic_name)
     types = wait_until(node, lambda: dict(node.get_topic_names_and_types()).get(topic))
     discover(node, 0.0, SETTLE_SEC, watch=lambda: (node.count_publishers(topic), node.count_subscribers(topic)))
     if not types:
@@ -314,7 +314,7 @@ def _endpoint(info: Any, kind: str) -> None:
 
 
 def _type(node: Any, args: argparse.Namespace) -> int:
-    topic = args.topic_name if args.topic_name.startswith("/") else f"/{args.topic_name}"
+    topic = absolute(args.topic_name)
     types = wait_until(node, lambda: dict(node.get_topic_names_and_types()).get(topic))
     if not types:
         print(f"Unknown topic '{topic}'", file=sys.stderr)
