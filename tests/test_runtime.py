@@ -16,7 +16,7 @@ from _paths import SEED_XACRO
 from gazelle.description import Pose, load, load_string
 from gazelle.physics import ActuatorKind, JointHandle
 from gazelle.sim import MAX_CATCH_UP_SEC, Simulation
-from gazelle.systems import MsgType, System, UpdateInfo
+from gazelle.systems import MsgType, System, Twist, UpdateInfo
 from gazelle.systems.diff_drive import DiffDrive
 from gazelle.worlds import default_world
 
@@ -216,3 +216,47 @@ def test_a_stall_longer_than_the_catch_up_is_reported_once_and_pacing_goes_on(ca
     assert len(lines) == 1, lines
     assert "dropped 0." in lines[0] and "real-time factor 1" in lines[0]
     assert 0.7 < rate < 1.3  # paced at real time again from the new anchor, not racing to make up the loss
+
+
+def test_a_message_that_arrives_while_the_simulation_catches_up_acts_at_the_sim_time_it_came() -> None:
+    sim, drive = _seed_sim()
+    sim.rtf = 1.0
+    stalled, stall_at = threading.Event(), []
+
+    def stall(info: UpdateInfo) -> None:
+        if info.sim_time_sec >= 0.3 and not stalled.is_set():
+            stall_at.append((time.monotonic(), info.sim_time_sec))
+            stalled.set()
+            time.sleep(0.4)  # the stall under test (a busy CPU), not a wait for a condition
+
+    applied: list[tuple[float, str]] = []
+
+    def sink(twist: Twist) -> None:
+        applied.append((sim.world.time, threading.current_thread().name))
+        drive._on_cmd(twist)
+
+    sim.add_step_listener(stall, rate_hz=10)
+    sim.start()
+    try:
+        assert stalled.wait(10)
+        time.sleep(0.2)  # the message comes half-way through the stall
+        came = time.monotonic()
+        sim.deliver(sink, Twist((0.2, 0.0, 0.0), (0.0, 0.0, 0.0)))
+        deadline = time.monotonic() + 5
+        while not applied and time.monotonic() < deadline:
+            time.sleep(0.005)
+        assert applied, "the message was never handed over"
+        # level with the wall clock again: the next message is handed over at once, on this thread
+        deadline = time.monotonic() + 5
+        while sim.world.time < stall_at[0][1] + (time.monotonic() - stall_at[0][0]) - 0.05:
+            assert time.monotonic() < deadline, "the simulation did not catch up"
+            time.sleep(0.005)
+        sim.deliver(sink, Twist())
+        assert len(applied) == 2 and applied[1][1] == threading.current_thread().name
+    finally:
+        sim.stop()
+    wall_stall, sim_stall = stall_at[0]
+    due = sim_stall + (came - wall_stall)
+    # before: handed over at once, it acted at the stalled sim time, 0.2 s of driving too early
+    assert applied[0][0] == pytest.approx(due, abs=0.03)
+    assert applied[0][1] == "gazelle-sim"

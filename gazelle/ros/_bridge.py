@@ -48,7 +48,7 @@ from ._convert import FROM_ROS, ROS_TYPES, TO_ROS, from_pose_msg, to_pose_msg, t
 from ._exposure import ServerRegistry
 from ._outbox import Lane, Outbox
 from ._plugin_nodes import PluginNodes
-from ._replies import guarded_service, with_warnings
+from ._replies import guarded_service, resend_lost_replies, with_warnings
 
 
 class SpawnFailure(enum.StrEnum):
@@ -234,7 +234,11 @@ class SimulationNode(Node):
             (GzGetModelState, "/gazebo/get_model_state", self._ros1_get_state),
             (GzSetModelState, "/gazebo/set_model_state", self._ros1_set_state),
         ):
-            self._srv.append(self.create_service(srv_type, name, guarded_service(name, cb), callback_group=self._cb))
+            self._srv.append(
+                resend_lost_replies(
+                    self.create_service(srv_type, name, guarded_service(name, cb), callback_group=self._cb), name
+                )
+            )
         from ._simulation_interfaces import register  # simulation_interfaces services under ~/
 
         register(self)
@@ -353,10 +357,11 @@ class SimulationNode(Node):
             convert_in = FROM_ROS[ep.msg_type]
             callback = ep.callback
             assert callback is not None
+            deliver = self.sim.deliver  # at the sim time the message came, also while catching up
             sub = owner.create_subscription(
                 ros_type,
                 ep.topic,
-                lambda msg: callback(convert_in(msg)),
+                lambda msg: deliver(callback, convert_in(msg)),
                 qos_profile(ep.qos, ep.depth),
                 callback_group=self._cb,
                 event_callbacks=_no_sub_events(),

@@ -10,8 +10,10 @@ from __future__ import annotations
 
 import bisect
 import math
+import re
 import sys
 import threading
+import time
 
 import pytest
 from nav_msgs.msg import Odometry
@@ -39,18 +41,37 @@ def _spawn_from_topic(ros_client, name: str) -> None:
     assert f"Successfully spawned entity [{name}]" in spawn.output
 
 
+def _timing(node_log: str, wall_sim: list[tuple[float, float]], truth: list[tuple[float, float, float]]) -> str:
+    """Where a short or long side's time went: the node's own times against sim time, and when the
+    robot moved (ground truth)."""
+    walls = [w for w, _ in wall_sim]
+    lines = []
+    for m in re.finditer(r"(Starting at|Turning .*? from) t=([0-9.]+)", node_log):
+        t = float(m.group(2))
+        i = min(bisect.bisect_left(walls, t), len(walls) - 1)
+        lines.append(
+            f"node '{m.group(1)}' at {t:.3f}; the next /clock came at wall {walls[i]:.3f}: sim {wall_sim[i][1]:.3f}"
+        )
+    moving = [a[0] for a, b in zip(truth, truth[1:]) if math.hypot(b[1] - a[1], b[2] - a[2]) > 0.1 * (b[0] - a[0]) > 0]
+    if moving:
+        lines.append(f"the robot moved faster than 0.1 m/s from sim {moving[0]:.3f} to {moving[-1]:.3f}")
+    return "\n".join(lines + ["node log:", node_log])
+
+
 @pytest.mark.parametrize("mode", list(MODES))
 def test_seed_robot_drives_a_side_and_turns(mode, sim_factory, ros_client):
     cfg = MODES[mode]
     sim = sim_factory(*cfg["sim_args"])
     node = ros_client.node
     clocks: list[float] = []
+    wall_sim: list[tuple[float, float]] = []
     odoms: list[tuple[float, float, float]] = []
     lock = threading.Lock()
 
     def on_clock(msg: Clock) -> None:
         with lock:
             clocks.append(msg.clock.sec + msg.clock.nanosec * 1e-9)
+            wall_sim.append((time.time(), clocks[-1]))
 
     def on_odom(msg: Odometry) -> None:
         t = msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9
@@ -109,7 +130,7 @@ def test_seed_robot_drives_a_side_and_turns(mode, sim_factory, ros_client):
         math.remainder(yaw_of(end_state.pose.orientation) - yaw_of(start_state.pose.orientation), math.tau)
     )
     print(f"[{mode}] side: {distance:.4f} m, turn: {turn:.2f} deg")
-    assert distance == pytest.approx(1.00, abs=0.03)
+    assert distance == pytest.approx(1.00, abs=0.03), _timing(driver.output, wall_sim, truth)
     assert turn == pytest.approx(90.0, abs=3.0)
 
     # /odom (odometry_source world) agrees with ground truth at the same sim time within 1 mm
