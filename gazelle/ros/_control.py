@@ -51,6 +51,7 @@ from ..systems.ros2_control import (
     goal_tolerances,
 )
 from ._convert import from_duration, from_joint_trajectory_msg, to_trajectory_point_msg
+from ._replies import resend_lost_replies
 
 _LIFECYCLE = {
     UNCONFIGURED: (State.PRIMARY_STATE_UNCONFIGURED, "unconfigured"),
@@ -101,7 +102,9 @@ class ControllerManagerNode(Node):
             (UnloadController, "unload_controller", self._by_name(manager.unload_controller)),
             (SetHardwareComponentState, "set_hardware_component_state", self._set_hw_state),
         ):
-            self.create_service(srv_type, f"~/{name}", self._guard(name, fn), callback_group=self._cb)
+            resend_lost_replies(
+                self.create_service(srv_type, f"~/{name}", self._guard(name, fn), callback_group=self._cb), name
+            )
 
     # ------------------------------------------------------------------ plumbing
     def _guard(self, name: str, fn: Any) -> Any:

@@ -3,6 +3,9 @@
 from __future__ import annotations
 
 import logging
+import threading
+import time
+import warnings
 from typing import Any
 
 from ..description import reply_text
@@ -46,3 +49,80 @@ def with_warnings(warnings: list[str]) -> str:
         return ""
     more = f" (and {len(warnings) - 1} more in the server's log)" if len(warnings) > 1 else ""
     return reply_text(f"; {len(warnings)} warning(s): {warnings[0]}{more}")
+
+
+RESEND_SEC = 10.0
+"""How long a reply the middleware could not deliver is offered again."""
+
+_LOST = "failed to send response (timeout)"
+_sending = threading.local()
+_hook_lock = threading.Lock()
+_hooked = False
+
+
+def _hook_warnings() -> None:
+    """Notice rclpy's "failed to send response (timeout)" on the thread that sends.
+
+    rclpy says so with a RuntimeWarning and nothing else: Fast DDS waits 100 ms for the client's
+    response reader to be discovered and then drops the reply. The filter makes the warning reach
+    the hook every time (not only once per line); every other warning goes on as before.
+    """
+    global _hooked
+    with _hook_lock:
+        if _hooked:
+            return
+        _hooked = True
+        warnings.filterwarnings("always", message=r"failed to send response \(timeout\)", category=RuntimeWarning)
+        shown = warnings.showwarning
+
+        def showwarning(message: Any, category: Any, filename: str, lineno: int, file: Any = None, line: Any = None):
+            if getattr(_sending, "active", False) and str(message).startswith(_LOST):
+                _sending.lost = True
+                return
+            shown(message, category, filename, lineno, file, line)
+
+        warnings.showwarning = showwarning
+
+
+def _send(send: Any, response: Any, header: Any) -> bool:
+    """Send once; False when the middleware dropped the reply for want of a matched reader."""
+    _sending.active, _sending.lost = True, False
+    try:
+        send(response, header)
+    finally:
+        _sending.active = False
+    return not _sending.lost
+
+
+def resend_lost_replies(service: Any, name: str) -> Any:
+    """Make ``service`` offer a reply again until the client's reader is discovered (at most
+    :data:`RESEND_SEC`), on a thread of its own; returns ``service``.
+
+    A client that calls the moment the service appears (``wait_for_service`` only knows the request
+    side) otherwise waits forever: the server handled the request, and the reply went nowhere.
+    Seen as "service /get_entity_state did not answer within 15 s" right after a launch.
+    """
+    _hook_warnings()
+    send = service.send_response
+    log = logging.getLogger("gazelle.ros")
+
+    def resend(response: Any, header: Any) -> None:
+        deadline = time.monotonic() + RESEND_SEC
+        tries = 1
+        while time.monotonic() < deadline:
+            tries += 1
+            try:
+                if _send(send, response, header):  # each try waits up to 100 ms in the middleware
+                    log.debug(f"{name}: reply delivered on try {tries}")
+                    return
+            except Exception:  # the service was destroyed meanwhile: nobody left to answer for
+                return
+            time.sleep(0.05)  # a breath between tries when the middleware answers at once
+        log.warning(f"{name}: a reply was not delivered in {RESEND_SEC:g} s: the client's reader was never discovered")
+
+    def send_response(response: Any, header: Any) -> None:
+        if not _send(send, response, header):
+            threading.Thread(target=resend, args=(response, header), name=f"resend {name}", daemon=True).start()
+
+    service.send_response = send_response  # the executor sends every reply through this attribute
+    return service
