@@ -97,3 +97,41 @@ def test_run_bounded_returns_plain_data_only() -> None:
     assert run_bounded(lambda: {"a": [1, 2.5]}, what="t") == {"a": [1, 2.5]}
     with pytest.raises(BoundExceeded, match="failed: ValueError: nope"):
         run_bounded(lambda: (_ for _ in ()).throw(ValueError("nope")), what="t")
+
+
+class _Finalised:
+    """Garbage (a reference cycle) that says which process finalises it."""
+
+    def __init__(self, path: str) -> None:
+        self.path, self.me = path, self
+
+    def __del__(self) -> None:
+        with open(self.path, "a") as f:
+            f.write(f"{os.getpid()}\n")
+
+
+def _collect(_request: dict) -> object:
+    import gc
+
+    return gc.collect()
+
+
+def test_the_helper_never_collects_the_parents_objects(tmp_path) -> None:
+    import gc
+
+    log = tmp_path / "finalised"
+    log.write_text("")
+    gc.disable()  # keep the parent's garbage alive until the helper is forked
+    try:
+        _Finalised(str(log))
+        worker = BoundedWorker(_collect)
+        try:
+            worker.call({}, what="t")  # the helper runs a full collection
+        finally:
+            worker.close()
+    finally:
+        gc.enable()
+    gc.collect()
+    # finalised once, by the parent; before, the helper finalised its copy too: objects of the
+    # parent's threads (rclpy, DDS) then crashed the helper with a segmentation fault
+    assert log.read_text().split() == [str(os.getpid())]

@@ -20,6 +20,7 @@ Limits (generous for real robots: TurtleBot3, Husky and Panda expand in well und
 
 from __future__ import annotations
 
+import gc
 import json
 import os
 import resource
@@ -152,7 +153,16 @@ class BoundedWorker:
         req_r, req_w = os.pipe()
         rep_r, rep_w = os.pipe()
         cap = _mapped_bytes() + memory
-        pid = os.fork()
+        # Everything the parent has is frozen out of the child's garbage collector: the child is a
+        # copy of a process with threads (rclpy's, DDS's), and collecting their objects in a copy
+        # where those threads do not exist crashed it ("Segmentation fault ... Garbage-collecting").
+        gc.freeze()
+        pid = -1
+        try:
+            pid = os.fork()
+        finally:
+            if pid != 0:
+                gc.unfreeze()
         if pid == 0:
             code = 0
             try:
