@@ -100,6 +100,10 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
     # the diff drive plugin is its own node, named as in Gazebo, its configuration its parameters
     assert {"/gazelle", "/differential_drive"} <= set(r["node list"].stdout.split())
     node = r["node info gazelle"].stdout
+    if "/spawn_entity:" not in node:
+        # 13 ros2 processes discovering at once on 2 cores: once the endpoints of the node's hundreds
+        # came in slower than the 2 s of quiet node info waits for; run alone, as a user would re-run it
+        node = ros2("node", "info", "/gazelle").stdout
     assert "/clock: rosgraph_msgs/msg/Clock" in node and "/spawn_entity: gazebo_msgs/srv/SpawnEntity" in node, node
     assert "/cmd_vel" not in node  # the diff drive's own node subscribes to it
     drive_info = r["node info drive"].stdout
