@@ -254,6 +254,13 @@ class SimulationNode(Node):
         self._model_states_period = 1.0 / MODEL_STATES_RATE_HZ
         self._last_model_states_wall = -math.inf
         sim.add_step_listener(self._on_step_model_states, MODEL_STATES_RATE_HZ)
+        self._scene_publisher: Any = None
+        try:  # the world's collision geometry for move_group (moveit_msgs is built by the set-up)
+            from ._scene_publisher import ScenePublisher
+
+            self._scene_publisher = ScenePublisher(self)
+        except ImportError as err:
+            self.get_logger().debug(f"no /gazelle/planning_scene_world: {err}")
         sim.bus.add_listener(self)  # pyright: ignore[reportArgumentType]
         self.publish_clock(sim.world.time)
 
@@ -683,11 +690,19 @@ class SimulationNode(Node):
         """Detach from the simulation (listeners, sinks), then destroy the node."""
         self.sim.remove_step_listener(self._on_step)
         self.sim.remove_step_listener(self._on_step_model_states)
+        if self._scene_publisher is not None:
+            self._scene_publisher.close()
         self.sim.bus.remove_listener(self)  # pyright: ignore[reportArgumentType]
         for ep in self.sim.bus.endpoints():
             sink = self._sinks.pop(id(ep), None)
             if sink is not None:
                 ep.remove_sink(sink)
+        # the simulate_steps action server holds the node's handle: left alive, a half-destroyed /gazelle
+        # (its action, /rosout and type description only) stayed in the graph as long as the process
+        # lived, and `ros2 node info /gazelle` described it instead of a running server's node
+        interfaces = getattr(self, "simulation_interfaces", None)
+        if interfaces is not None:
+            interfaces.destroy()
         super().destroy_node()
 
 

@@ -276,6 +276,15 @@ class ControllerManagerNode(Node):
         if server is not None:
             server.destroy()
 
+    def destroy_node(self) -> None:
+        """Destroy the controllers' action servers, then the node: an action server left alive holds the
+        node's handle, and the node would stay in the ROS graph with the action's endpoints alone."""
+        with self._lock:
+            servers, self._actions = list(self._actions.values()), {}
+        for server in servers:
+            server.destroy()
+        super().destroy_node()
+
     def _execute_gripper(self, gripper: GripperActionController, handle: Any) -> Any:
         cmd = handle.request.command
         goal = GripperGoal(float(cmd.position), float(cmd.max_effort))

@@ -196,3 +196,28 @@ def test_the_simulation_thread_queues_and_a_publisher_thread_publishes(monkeypat
         assert threads[name] == {"gazelle-publish"}, threads
     # /clock is the exception: it paces use_sim_time nodes, so it goes out at once from the sim thread
     assert threads["Clock"] <= {"gazelle-sim", "MainThread"}, threads
+
+
+def test_a_shut_down_bridge_leaves_no_half_destroyed_node_in_the_graph(ros_client):
+    """After ``RosBridge.shutdown()`` in a process that lives on, /gazelle is gone from the ROS graph.
+    The simulate_steps action server, never destroyed, held the node's handle: a /gazelle with only that
+    action, /rosout and its type description stayed for as long as the process lived, and a later
+    server's ``ros2 node info /gazelle`` (a full CI run) described that one instead: 7 of 83 endpoints."""
+    from gazelle.ros._bridge import RosBridge
+    from gazelle.sim import Simulation
+    from gazelle.worlds import default_world
+
+    node = ros_client.node
+
+    def gazelle_endpoints() -> list[str]:
+        if ("gazelle", "/") not in node.get_node_names_and_namespaces():
+            return []
+        return [n for n, _ in node.get_publisher_names_and_types_by_node("gazelle", "/")]
+
+    bridge = RosBridge(Simulation(default_world()))
+    try:
+        wait_for(lambda: "/clock" in gazelle_endpoints(), 20, "the bridge's /gazelle node and its /clock")
+    finally:
+        bridge.shutdown()
+    # the bridge object is still referenced here, as a caller's would be
+    wait_for(lambda: ("gazelle", "/") not in node.get_node_names_and_namespaces(), 20, "/gazelle to leave the graph")
