@@ -246,13 +246,22 @@ def test_a_message_that_arrives_while_the_simulation_catches_up_acts_at_the_sim_
         while not applied and time.monotonic() < deadline:
             time.sleep(0.005)
         assert applied, "the message was never handed over"
-        # level with the wall clock again: the next message is handed over at once, on this thread
+        # level with the wall clock again: the next message is handed over at once, on this thread (on a
+        # loaded machine the simulation can fall a block behind again just then: that one is queued, and
+        # the test tries again)
         deadline = time.monotonic() + 5
-        while sim.world.time < stall_at[0][1] + (time.monotonic() - stall_at[0][0]) - 0.05:
-            assert time.monotonic() < deadline, "the simulation did not catch up"
-            time.sleep(0.005)
-        sim.deliver(sink, Twist())
-        assert len(applied) == 2 and applied[1][1] == threading.current_thread().name
+        direct = False
+        while not direct:
+            assert time.monotonic() < deadline, f"no message was handed over at once: {applied}"
+            if sim.world.time < stall_at[0][1] + (time.monotonic() - stall_at[0][0]) - 0.05:
+                time.sleep(0.005)
+                continue
+            count = len(applied)
+            sim.deliver(sink, Twist())
+            direct = len(applied) == count + 1 and applied[-1][1] == threading.current_thread().name
+            if not direct:
+                while len(applied) == count and time.monotonic() < deadline:  # it went through the queue
+                    time.sleep(0.005)
     finally:
         sim.stop()
     wall_stall, sim_stall = stall_at[0]

@@ -24,7 +24,8 @@ ROBOTS = {"r1": 0.0, "r2": 1.2, "r3": 2.4}  # namespace -> spawn y
 
 @pytest.mark.slow
 def test_three_namespaced_robots_keep_separate_odometry_and_tf(sim_factory, ros_client):
-    sim = sim_factory()
+    # twice real time, the drivers on sim time (as test_square's simtime case)
+    sim = sim_factory("--rtf", "2")
     for ns, y in ROBOTS.items():
         spawn = start(
             [*GAZELLE, "spawn", "-entity", ns, "-robot_namespace", ns, "-file", str(SEED_XACRO), "-y", str(y)],
@@ -59,6 +60,8 @@ def test_three_namespaced_robots_keep_separate_odometry_and_tf(sim_factory, ros_
                 f"__node:=square_{ns}",
                 "-p",
                 "max_sides:=1",
+                "-p",
+                "use_sim_time:=true",
             ],
             f"driver {ns}",
         )

@@ -127,7 +127,8 @@ def test_diffbot_drives_with_its_own_controllers_yaml_and_the_spawner(sim_factor
 @pytest.mark.slow
 def test_r6bot_follows_a_trajectory_holds_and_aborts_on_path_tolerance(sim_factory, ros_client, monkeypatch):
     monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(R6BOT))  # the server finds the meshes' package
-    sim = sim_factory("--no-viewer")
+    # three times real time: the trajectory, the 10 s hold and the abort are all in sim time
+    sim = sim_factory("--no-viewer", "--rtf", "3")
     spawn = start([*GAZELLE, "spawn", "-entity", "r6bot", "-file", str(R6BOT_URDF)], "spawn")
     assert spawn.wait(120) == 0, spawn.output
     sim.wait_line("controller manager '/controller_manager'", 10)

@@ -24,7 +24,7 @@ from std_msgs.msg import String
 from .conftest import GAZELLE, SEED_XACRO, SQUARE_NODE, start, wait_for, xacro_to_urdf, yaw_of
 
 MODES = {
-    "rtf1": dict(sim_args=(), node_args=()),
+    # (real time with the node on the wall clock is test_demo's: the same node drives the whole square)
     # twice as fast as the wall clock: a node timing itself by the wall clock would drive 2 m. Not as
     # fast as possible (--rtf 0): the node's 10 Hz timer then had 12 ms of wall time per tick, and a
     # busy machine made a tick late enough to drive 1.26 m

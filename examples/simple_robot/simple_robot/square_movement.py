@@ -7,10 +7,13 @@ timing itself with the node's own clock (so ``use_sim_time:=true`` makes it foll
 Changes from the seed, each for a measured reason:
 - the ``max_sides`` parameter (default 0 = run forever, as the seed) stops the node after
   that many forward+turn sides; the demo uses it for one square;
-- the clock starts at the first tick once /cmd_vel has a subscriber (with use_sim_time the
-  clock reads 0 until the first /clock message, and early commands are lost to discovery);
+- the clock starts at the first tick once /cmd_vel has had a subscriber for 0.5 s (with
+  use_sim_time the clock reads 0 until the first /clock message, and early commands are lost
+  to discovery);
 - a switching tick publishes the new state's command (the seed drove every side 0.1 s long).
 """
+
+import time
 
 import rclpy
 from geometry_msgs.msg import Twist
@@ -18,6 +21,7 @@ from rclpy.duration import Duration
 from rclpy.node import Node
 
 TICK_TOLERANCE = 0.01  # seconds: timer ticks jitter by a few milliseconds
+MATCH_SETTLE_SEC = 0.5  # wall seconds between seeing the simulator's subscription and the first command
 
 
 class SquareMovement(Node):
@@ -32,6 +36,7 @@ class SquareMovement(Node):
         # the first /clock message, and the seed's first side would then end at once.
         self.state_start_time = None
         self.last_tick = None
+        self.subscriber_seen = None
         self.get_logger().info('Square movement started')
 
     def timer_callback(self):
@@ -39,7 +44,15 @@ class SquareMovement(Node):
             # Commands published before DDS discovery matches them with the simulator are
             # lost, and the first side would come out short: wait for the subscriber.
             self.get_logger().info('Waiting for a /cmd_vel subscriber', throttle_duration_sec=2.0)
+            self.subscriber_seen = None
             return
+        if self.state_start_time is None:
+            # ...and then a little longer: discovery ends on the two sides at different times, and
+            # the simulator took our first commands 0.28 s after we saw its subscription on a busy
+            # machine (a 0.946 m first side). Wall time, so that it holds with use_sim_time too.
+            seen = self.subscriber_seen = self.subscriber_seen or time.monotonic()
+            if time.monotonic() - seen < MATCH_SETTLE_SEC:
+                return
         current_time = self.get_clock().now()
         if current_time.nanoseconds == 0:
             return  # use_sim_time and no /clock message yet
