@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Build gazelle's own ROS 2 interface packages (interfaces/: tf2_msgs,
-# simulation_interfaces, gazebo_msgs, control_msgs, controller_manager_msgs, ros_gz_interfaces) with the ROS 2 Jazzy rosidl/ament CMake
+# simulation_interfaces, gazebo_msgs, control_msgs, controller_manager_msgs, ros_gz_interfaces,
+# octomap_msgs, object_recognition_msgs, moveit_msgs) with the ROS 2 Jazzy rosidl/ament CMake
 # tooling from the PyPI wheels, and install them into a Python virtualenv.
 #
 #   scripts/build_interfaces.sh VENV_DIR
@@ -27,12 +28,14 @@ SCRIPT_REL="scripts/$(basename "${BASH_SOURCE[0]}")"
 PY="$VENV_DIR/bin/python"
 STAMP="$VENV_DIR/.gazelle_interfaces.sha256"
 BUILD_ROOT="$REPO_ROOT/build/interfaces"
-# Build order: each depends only on wheel packages, none on another.
-PKGS=(tf2_msgs simulation_interfaces gazebo_msgs control_msgs controller_manager_msgs ros_gz_interfaces)
+# Build order: each depends on wheel packages and on packages built before it (installed into the
+# venv, which is the prefix cmake searches): moveit_msgs needs octomap_msgs and object_recognition_msgs.
+PKGS=(tf2_msgs simulation_interfaces gazebo_msgs control_msgs controller_manager_msgs ros_gz_interfaces
+  octomap_msgs object_recognition_msgs moveit_msgs)
 # Wheel packages whose version change must trigger a rebuild.
 DEP_PKGS=(ament_cmake rosidl_default_generators rosidl_generator_py
   rosidl_typesupport_fastrtps_c builtin_interfaces std_msgs geometry_msgs
-  action_msgs service_msgs unique_identifier_msgs trajectory_msgs sensor_msgs lifecycle_msgs)
+  action_msgs service_msgs unique_identifier_msgs trajectory_msgs sensor_msgs lifecycle_msgs shape_msgs)
 
 for tool in cmake make g++ sha256sum; do
   command -v "$tool" >/dev/null || { echo "build_interfaces: '$tool' not found" >&2; exit 1; }
@@ -71,9 +74,13 @@ from control_msgs.action import FollowJointTrajectory
 from control_msgs.msg import DynamicJointState
 from controller_manager_msgs.srv import SwitchController
 from ros_gz_interfaces.msg import Altimeter
+from octomap_msgs.srv import GetOctomap
+from object_recognition_msgs.action import ObjectRecognition
+from moveit_msgs.action import MoveGroup
+from moveit_msgs.srv import GetPositionIK
 for t in (TFMessage, LookupTransform, Result, SpawnEntity, SimulateSteps,
           ModelStates, GzSpawnEntity, FollowJointTrajectory, DynamicJointState,
-          SwitchController, Altimeter):
+          SwitchController, Altimeter, GetOctomap, ObjectRecognition, MoveGroup, GetPositionIK):
     type(t).__import_type_support__()
 EOF
 }
