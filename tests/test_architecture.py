@@ -1,6 +1,6 @@
 """The layers import one way (docs/architecture.md), checked by walking every import with ``ast``.
 
-description <- physics <- systems <- sim <- ros / viewer <- cli. Physics never sees systems, the
+description <- physics <- systems <- sim <- ros / viewer <- cli, and description <- planning <- ros. Physics never sees systems, the
 runtime or ROS; systems never touch MuJoCo or the builder; only ``gazelle.ros`` (and the command
 line, which starts it) imports rclpy; and no package reaches into another package's private modules.
 """
@@ -14,7 +14,7 @@ import pytest
 from _paths import REPO
 
 PACKAGE = REPO / "gazelle"
-LAYERS = ("description", "physics", "systems", "sim", "ros", "viewer", "cli", "worlds")
+LAYERS = ("description", "physics", "systems", "sim", "ros", "viewer", "cli", "worlds", "planning")
 
 FORBIDDEN: dict[str, tuple[str, ...]] = {
     "description": (
@@ -32,6 +32,18 @@ FORBIDDEN: dict[str, tuple[str, ...]] = {
     "systems": ("mujoco", "gazelle.sim", "gazelle.ros", "gazelle.viewer", "gazelle.cli", "rclpy", "viser"),
     "sim": ("mujoco", "gazelle.ros", "gazelle.viewer", "gazelle.cli", "rclpy", "viser"),
     "ros": ("gazelle.viewer", "gazelle.cli"),
+    # arms: kinematics and collisions of the description on roboplan; served by gazelle.ros
+    "planning": (
+        "gazelle.physics",
+        "gazelle.systems",
+        "gazelle.sim",
+        "gazelle.ros",
+        "gazelle.viewer",
+        "gazelle.cli",
+        "mujoco",
+        "rclpy",
+        "viser",
+    ),
     "viewer": ("gazelle.ros", "gazelle.cli", "rclpy"),
     "worlds": (
         "gazelle.physics",

@@ -190,6 +190,31 @@ def spawner(ctx: typer.Context) -> None:
     context_settings={"allow_extra_args": True, "ignore_unknown_options": True, "help_option_names": []},
     add_help_option=False,
 )
+def arm(ctx: typer.Context) -> None:
+    """Move an arm through a running move_group: GROUP x y z roll pitch yaw [--frame F] [--link L] |
+    GROUP --named NAME | GROUP --joints V... [--velocity S] [--plan-only]."""
+    from ..ros import arm_main
+
+    raise typer.Exit(arm_main(list(ctx.args)))
+
+
+@app.command(
+    name="move_group",
+    context_settings={"allow_extra_args": True, "ignore_unknown_options": True, "help_option_names": []},
+    add_help_option=False,
+)
+def move_group(ctx: typer.Context) -> None:
+    """MoveIt's move_group interfaces (MoveGroup and ExecuteTrajectory actions, IK/FK, planning services) for
+    one robot, planned with roboplan ([--urdf F] [--srdf F] [--config MOVEIT_CONFIG_DIR] [--ros-args ...])."""
+    from ..ros import move_group_main
+
+    raise typer.Exit(move_group_main(list(ctx.args)))
+
+
+@app.command(
+    context_settings={"allow_extra_args": True, "ignore_unknown_options": True, "help_option_names": []},
+    add_help_option=False,
+)
 def unspawner(ctx: typer.Context) -> None:
     """Deactivate and unload ros2_control controllers, like ``ros2 run controller_manager unspawner``."""
     from ..ros import unspawner_main

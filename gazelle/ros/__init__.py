@@ -15,13 +15,30 @@ from ._spawn import main as spawn_main
 from ._spawner import spawner_main as spawner_main
 from ._spawner import unspawner_main as unspawner_main
 
+
+def move_group_main(argv: list[str]) -> int:
+    """``gazelle move_group`` (moveit_msgs and the planner load only when it runs)."""
+    from ._move_group import move_group_main as main
+
+    return main(argv)
+
+
+def arm_main(argv: list[str]) -> int:
+    """``gazelle arm``: move an arm through a running move_group."""
+    from ._arm_cli import arm_main as main
+
+    return main(argv)
+
+
 __all__ = [
     "InterfaceError",
+    "arm_main",
     "RosBridge",
     "message_class",
     "message_definition",
     "choose_discovery_range",
     "spawn_main",
+    "move_group_main",
     "spawner_main",
     "unspawner_main",
 ]

@@ -6,10 +6,24 @@ runs the systems' phases around blocks of physics steps. ROS, the viewer and the
 line drive it through its thread-safe methods.
 """
 
+from ._scene import SceneGeometry as SceneGeometry
+from ._scene import SceneLink as SceneLink
+from ._scene import SceneShape as SceneShape
+from ._scene import moved as moved
 from ._simulation import MAX_CATCH_UP_SEC as MAX_CATCH_UP_SEC
 from ._simulation import RtfSample as RtfSample
 from ._simulation import Simulation as Simulation
 from ._simulation import SpawnRequest as SpawnRequest
 from ._simulation import StepListener as StepListener
 
-__all__ = ["MAX_CATCH_UP_SEC", "RtfSample", "Simulation", "SpawnRequest", "StepListener"]
+__all__ = [
+    "MAX_CATCH_UP_SEC",
+    "RtfSample",
+    "SceneGeometry",
+    "SceneLink",
+    "SceneShape",
+    "Simulation",
+    "SpawnRequest",
+    "StepListener",
+    "moved",
+]

@@ -1,0 +1,624 @@
+"""Collision-aware planning for an arm described by URDF + SRDF, on roboplan (pinocchio + coal).
+
+roboplan does the numeric work: the kinematic model and its collision geometry, SRDF groups and
+disabled collision pairs, collision-checked IK with restarts, RRT-Connect, path shortcutting and
+TOPP-RA time parameterisation. This module turns MoveIt-shaped requests into calls on it and its
+failures into MoveIt's error names, so the ROS layer only converts messages.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import os
+import tempfile
+import time
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
+
+from ..description import ModelLoadError, ResourceResolver, Semantics, Severity, load_string
+
+DEFAULT_ACCELERATION = 1.0
+"""rad/s² (m/s²) for a joint whose limits give no acceleration, as MoveIt's time parameterisation assumes."""
+
+
+START_BOUNDS_ERROR = 0.05
+"""How far past a joint limit a measured start state may read and still be planned from (moved onto it)."""
+
+
+class PlanningError(Exception):
+    """A request that cannot be met; ``code`` is the name of a MoveIt error code (``NO_IK_SOLUTION``)."""
+
+    def __init__(self, code: str, message: str) -> None:
+        super().__init__(message)
+        self.code = code
+        self.message = message
+
+
+@dataclass(frozen=True)
+class Trajectory:
+    """A timed joint trajectory of a group: one row per point."""
+
+    joint_names: tuple[str, ...]
+    times: np.ndarray
+    positions: np.ndarray
+    velocities: np.ndarray
+    accelerations: np.ndarray
+
+    @property
+    def duration(self) -> float:
+        return float(self.times[-1]) if len(self.times) else 0.0
+
+
+@dataclass(frozen=True)
+class Shape:
+    """A collision primitive of a scene object: ``box`` (x, y, z sizes), ``sphere`` (radius) or
+    ``cylinder`` (height, radius: shape_msgs' order), at ``pose`` (4x4) in the object's frame."""
+
+    kind: str
+    dimensions: tuple[float, ...]
+    pose: np.ndarray
+
+
+@dataclass(frozen=True)
+class SceneObject:
+    """Geometry the planner keeps clear of: in the world (``link`` empty; ``pose`` in the root link's
+    frame) or attached to a robot link (``pose`` in the link's frame), touching ``touch_links`` freely.
+
+    An attached object is checked against the robot's links, not against world objects: roboplan checks
+    pairs that involve the robot model only."""
+
+    name: str
+    shapes: tuple[Shape, ...]
+    pose: np.ndarray
+    link: str = ""
+    touch_links: tuple[str, ...] = ()
+
+
+def _rp():  # roboplan's modules, imported on first use (they load pinocchio and coal)
+    import importlib
+
+    return tuple(importlib.import_module(f"roboplan.{m}") for m in ("core", "rrt", "simple_ik", "toppra"))
+
+
+def _absolute_meshes(urdf: str, resolve: Callable[[str], str | None]) -> tuple[str, list[str]]:
+    """The URDF with every mesh file name made an absolute path; the ones that could not be resolved."""
+    root = etree.fromstring(urdf.encode(), etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=False))
+    missing = []
+    for mesh in root.iter("mesh"):
+        uri = mesh.get("filename", "")
+        path = resolve(uri)
+        if path is None:
+            missing.append(uri)
+            # a geometry that cannot be loaded is left out of the planner's model, said by the caller
+            holder = mesh.getparent().getparent() if mesh.getparent() is not None else None
+            if holder is not None and holder.getparent() is not None:
+                holder.getparent().remove(holder)
+            continue
+        mesh.set("filename", str(path))
+    return etree.tostring(root, encoding="unicode"), missing
+
+
+def moveit_joint_limits(config: Mapping) -> dict[str, dict[str, float]]:
+    """The ``joint_limits:`` section of MoveIt's joint_limits.yaml: joint -> {max_velocity, max_acceleration}
+    for the limits it switches on."""
+    out: dict[str, dict[str, float]] = {}
+    for joint, spec in (config.get("joint_limits") or {}).items():
+        if not isinstance(spec, Mapping):
+            continue
+        limits = {}
+        for key in ("velocity", "acceleration", "jerk"):
+            if spec.get(f"has_{key}_limits") and f"max_{key}" in spec:
+                limits[f"max_{key}"] = float(spec[f"max_{key}"])
+        out[str(joint)] = limits
+    return out
+
+
+class ArmPlanner:
+    """Planning for one robot: FK, IK, collision checks and timed paths for its SRDF groups.
+
+    Not thread-safe: one request at a time (the ROS node serialises them).
+    """
+
+    def __init__(
+        self,
+        urdf: str,
+        srdf: str,
+        *,
+        srdf_source: str = "robot_description_semantic",
+        resolve_mesh: Callable[[str], str | None] | None = None,
+        joint_limits: Mapping[str, Mapping[str, float]] | None = None,
+        seed: int = 0,
+    ) -> None:
+        core, rrt, simple_ik, toppra = _rp()
+        self._core, self._rrt, self._simple_ik, self._toppra = core, rrt, simple_ik, toppra
+        self.warnings: list[str] = []
+        try:
+            loaded = load_string(srdf, format="srdf", source=srdf_source)
+        except ModelLoadError as err:
+            raise PlanningError("FAILURE", f"the SRDF could not be read: {err.summary()}") from None
+        semantics = loaded.value
+        if not isinstance(semantics, Semantics):
+            raise PlanningError("FAILURE", "the SRDF could not be read: no <robot>")
+        self.warnings.extend(d.format() for d in loaded.diagnostics if d.severity is Severity.WARNING)
+        self.semantics: Semantics = semantics
+        resolver = ResourceResolver()
+
+        def in_roots(uri: str) -> str | None:  # package://, model:// and files inside the resource roots
+            path = resolver.resolve_uri(uri)
+            return str(path) if path is not None and path.is_file() else None
+
+        resolve = resolve_mesh or in_roots
+        urdf, missing = _absolute_meshes(urdf, resolve)
+        self.warnings.extend(
+            f"mesh '{uri}' could not be resolved: its collision geometry is left out" for uri in missing
+        )
+        description = core.loadUrdfSceneDescriptionFromXml(urdf, [])
+        self.scene = core.Scene(semantics.robot_name or "robot", description)
+        self.scene.setRngSeed(seed)
+        robot = etree.fromstring(urdf.encode())
+        self._known_groups = self._import_srdf(srdf, srdf_source, robot)
+        self.joint_names: list[str] = list(self.scene.getJointNames())
+        self._limits(joint_limits or {})
+        self.root_link, self.fixed_links = _root_and_fixed_links(robot)
+        self._current = self.scene.getCurrentJointPositions().copy()
+        self._objects: dict[str, tuple[SceneObject, tuple[str, ...]]] = {}  # name -> (object, geometry names)
+
+    # ------------------------------------------------------------------ model
+    def _import_srdf(self, srdf: str, source: str, robot) -> set[str]:
+        """Groups and disabled pairs into roboplan; a group naming links or joints the URDF lacks is a
+        warning at the group's line in ``source``, naming them."""
+        try:
+            self.scene.importSrdf(srdf)
+        except Exception as err:  # roboplan refuses a group naming an unknown link or joint
+            self.warnings.append(f"the SRDF's groups could not all be used: {err}")
+        links = {str(link.get("name")) for link in robot.iter("link")}
+        joints = {str(joint.get("name")) for joint in robot.iter("joint")}
+        lines = _element_lines(srdf, "group")
+        missing: dict[str, list[str]] = {}
+        for group in self.semantics.groups:
+            named_links = [*group.links, *(end for chain in group.chains for end in (chain.base_link, chain.tip_link))]
+            gaps = [f"link '{n}'" for n in dict.fromkeys(named_links) if n not in links]
+            gaps += [f"joint '{n}'" for n in group.joints if n not in joints]
+            try:
+                self.scene.getJointGroupInfo(group.name)
+            except Exception:
+                gaps = gaps or ["links or joints the robot does not have"]
+            missing[group.name] = gaps
+        subgroups = {g.name: g.subgroups for g in self.semantics.groups}
+        changed = True
+        while changed:  # a group of groups goes with any group it needs (in whatever order the SRDF has them)
+            changed = False
+            for name, subs in subgroups.items():
+                gaps = [f"group '{n}'" for n in subs if missing.get(n, ["?"]) and f"group '{n}'" not in missing[name]]
+                if gaps:
+                    missing[name] += gaps
+                    changed = True
+        for name, gaps in missing.items():
+            if gaps:
+                where = f"{source}:{lines[name]}: " if name in lines else f"{source}: "
+                self.warnings.append(f"{where}SRDF group '{name}' names {', '.join(gaps)}: the group is left out")
+        known = {name for name, gaps in missing.items() if not gaps}
+        ee_lines = _element_lines(srdf, "end_effector")
+        for ee in self.semantics.end_effectors:
+            if ee.group not in known:
+                where = f"{source}:{ee_lines[ee.name]}: " if ee.name in ee_lines else f"{source}: "
+                self.warnings.append(
+                    f"{where}SRDF end effector '{ee.name}' names group '{ee.group}', which does not exist"
+                )
+        return known
+
+    def _limits(self, limits: Mapping[str, Mapping[str, float]]) -> None:
+        """Velocity and acceleration limits: the URDF's, overridden by joint_limits.yaml; an acceleration
+        nobody gives is :data:`DEFAULT_ACCELERATION`."""
+        lines = ["joint_limits:"]
+        for joint in self.joint_names:
+            spec = limits.get(joint, {})
+            lines.append(f"  {joint}:")
+            if "max_velocity" in spec:
+                lines.append(f"    max_velocity: [{float(spec['max_velocity'])!r}]")
+            lines.append(f"    max_acceleration: [{float(spec.get('max_acceleration', DEFAULT_ACCELERATION))!r}]")
+            if "max_jerk" in spec:
+                lines.append(f"    max_jerk: [{float(spec['max_jerk'])!r}]")
+        with tempfile.NamedTemporaryFile("w", suffix=".yaml", delete=False) as f:  # roboplan reads a file
+            f.write("\n".join(lines) + "\n")
+        try:
+            self.scene.importJointLimitsFromConfig(self._core.loadJointLimitsConfig(f.name))
+        finally:
+            os.unlink(f.name)
+
+    @property
+    def groups(self) -> list[str]:
+        return [g.name for g in self.semantics.groups if g.name in self._known_groups]
+
+    def group_joints(self, group: str) -> list[str]:
+        if group not in self._known_groups:
+            known = ", ".join(self.groups) or "none"
+            raise PlanningError("INVALID_GROUP_NAME", f"no planning group '{group}' (the SRDF has: {known})")
+        return list(self.scene.getJointGroupInfo(group).joint_names)
+
+    def tip_link(self, group: str) -> str:
+        """The link a pose goal without a link name moves: the tip of the group's last chain, else its last link."""
+        self.group_joints(group)
+        g = next(g for g in self.semantics.groups if g.name == group)
+        if g.chains:
+            return g.chains[-1].tip_link
+        if g.subgroups:
+            return self.tip_link(g.subgroups[-1])
+        links = list(self.scene.getJointGroupInfo(group).link_names)
+        if g.links:
+            return g.links[-1]
+        if not links:
+            raise PlanningError("INVALID_LINK_NAME", f"group '{group}' has no links to put a pose goal on")
+        return links[-1]
+
+    def named_state(self, group: str, name: str) -> dict[str, float]:
+        """A ``<group_state>`` of the SRDF as joint values."""
+        self.group_joints(group)
+        for state in self.semantics.group_states:
+            if state.group == group and state.name == name:
+                return {joint: values[0] for joint, values in state.joint_values if values}
+        names = sorted(s.name for s in self.semantics.group_states if s.group == group)
+        raise PlanningError(
+            "INVALID_GOAL_CONSTRAINTS",
+            f"group '{group}' has no named state '{name}' (it has: {', '.join(names) or 'none'})",
+        )
+
+    # ------------------------------------------------------------------ state
+    def state(self, positions: Mapping[str, float] | None = None) -> np.ndarray:
+        """A full configuration: the current one with ``positions`` put in (names not in the model are ignored)."""
+        q = self._current.copy()
+        if positions:
+            index = {n: i for i, n in enumerate(self.joint_names)}
+            for name, value in positions.items():
+                if name in index:
+                    q[index[name]] = float(value)
+        return q
+
+    def set_current(self, positions: Mapping[str, float]) -> None:
+        """What the robot's joints read now (from /joint_states).
+
+        A reading a little past a limit (a simulated finger at -0.0001 m, its limit 0) is moved onto the
+        limit, as MoveIt does within its ``start_state_max_bounds_error`` (0.05); further out stays as read.
+        """
+        q = self.state(positions)
+        lo, hi = self._bounds
+        near = (q >= lo - START_BOUNDS_ERROR) & (q <= hi + START_BOUNDS_ERROR)
+        self._current = np.where(near, np.clip(q, lo, hi), q)
+
+    @property
+    def _bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        lo, hi = self.scene.getPositionLimitVectors("")
+        return np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
+
+    def positions(self, q: np.ndarray) -> dict[str, float]:
+        return {n: float(v) for n, v in zip(self.joint_names, q)}
+
+    def fk(self, q: np.ndarray, link: str) -> np.ndarray:
+        """The pose of ``link`` in the root link's frame, as a 4x4 matrix."""
+        try:
+            self.scene.getFrameId(link)
+        except Exception:
+            raise PlanningError("INVALID_LINK_NAME", f"the robot has no link '{link}'") from None
+        return np.array(self.scene.forwardKinematics(np.asarray(q, dtype=float), link))
+
+    def in_collision(self, q: np.ndarray) -> bool:
+        return bool(self.scene.hasCollisions(np.asarray(q, dtype=float)))
+
+    def within_limits(self, q: np.ndarray) -> bool:
+        return bool(self.scene.isValidConfiguration(np.asarray(q, dtype=float)))
+
+    # ------------------------------------------------------------------ world
+    def add_object(self, obj: SceneObject) -> None:
+        """Put ``obj`` in the scene, replacing one of the same name (so an object moves, or is attached
+        or detached, by adding it again)."""
+        self.remove_object(obj.name)
+        core = self._core
+        if obj.link:
+            self.fk(self._current, obj.link)  # INVALID_LINK_NAME for a link the robot lacks
+        frame = obj.link or "universe"
+        names = []
+        for i, shape in enumerate(obj.shapes):
+            name = f"{obj.name}#{i}"
+            tform = np.asfortranarray(np.asarray(obj.pose, dtype=float) @ shape.pose, dtype=float)
+            d = [float(v) for v in shape.dimensions]
+            if shape.kind == "box" and len(d) >= 3:
+                self.scene.addBoxGeometry(name, frame, core.Box(d[0], d[1], d[2]), tform, np.ones(4))
+            elif shape.kind == "sphere" and len(d) >= 1:
+                self.scene.addSphereGeometry(name, frame, core.Sphere(d[0]), tform, np.ones(4))
+            elif shape.kind == "cylinder" and len(d) >= 2:
+                self.scene.addCylinderGeometry(name, frame, core.Cylinder(d[1], d[0]), tform, np.ones(4))
+            else:
+                for added in names:
+                    self.scene.removeGeometry(added)
+                raise PlanningError(
+                    "INVALID_OBJECT_NAME",
+                    f"object '{obj.name}': shape {i} ({shape.kind} {d}) is not one gazelle plans with",
+                )
+            names.append(name)
+        allowed = [(a, b) for k, a in enumerate(names) for b in names[k + 1 :]]
+        if obj.link:
+            allowed += [(n, link) for n in names for link in {obj.link, *obj.touch_links}]
+        else:  # what the robot stands on touches links that no plan moves: not a collision to avoid
+            allowed += [(n, link) for n in names for link in sorted(self.fixed_links)]
+        if not obj.link:  # world objects may touch each other (the board on the table): not the robot's concern
+            others = [g for other, geoms in self._objects.values() if not other.link for g in geoms]
+            if others:
+                self.scene.setCollisions([(a, b) for a in names for b in others], False)
+        for a, b in allowed:
+            try:
+                self.scene.setCollisions(a, b, False)
+            except Exception:  # a link with no collision geometry of its own: nothing to allow
+                pass
+        self._objects[obj.name] = (obj, tuple(names))
+
+    def add_box(self, name: str, size: Sequence[float], pose: np.ndarray) -> None:
+        """A box of the world (``pose`` in the root link's frame) that plans keep clear of."""
+        self.add_object(SceneObject(name, (Shape("box", tuple(size), np.eye(4)),), np.asarray(pose, dtype=float)))
+
+    def remove_object(self, name: str) -> bool:
+        """Take an object out of the scene; False when there is none of that name."""
+        entry = self._objects.pop(name, None)
+        if entry is None:
+            return False
+        for geometry in entry[1]:
+            self.scene.removeGeometry(geometry)
+        return True
+
+    def move_object(self, name: str, pose: np.ndarray) -> None:
+        """Put an object (its shapes unchanged) at ``pose``: cheaper than adding it again."""
+        obj, geometries = self._objects[name]
+        pose = np.asarray(pose, dtype=float)
+        for geometry, shape in zip(geometries, obj.shapes):
+            tform = np.asfortranarray(pose @ shape.pose, dtype=float)
+            self.scene.updateGeometryPlacement(geometry, obj.link or "universe", tform)
+        self._objects[name] = (dataclasses.replace(obj, pose=pose), geometries)
+
+    def has_link(self, link: str) -> bool:
+        try:
+            self.scene.getFrameId(link)
+        except Exception:
+            return False
+        return True
+
+    def objects(self) -> list[SceneObject]:
+        return [obj for obj, _ in self._objects.values()]
+
+    # ------------------------------------------------------------------ queries
+    def ik(
+        self,
+        group: str,
+        link: str,
+        target: np.ndarray,
+        seed: np.ndarray | None = None,
+        *,
+        timeout: float = 0.5,
+        avoid_collisions: bool = True,
+    ) -> np.ndarray:
+        """A full configuration putting ``link`` at ``target`` (4x4, root frame) within 1e-4 m and 1e-3
+        rad, moving only ``group``'s joints, seeded from ``seed`` (else the current state), with restarts.
+
+        Raises:
+            PlanningError: ``NO_IK_SOLUTION``.
+        """
+        joints = self.group_joints(group)
+        self.fk(self._current, link)
+        start_full = self._current.copy() if seed is None else np.asarray(seed, dtype=float)
+        goal = self._core.CartesianConfiguration(self.root_link, link, np.asfortranarray(target, dtype=float))
+        start = self._group_config(group, joints, start_full)
+        idx = self._group_index(joints)
+        deadline = time.monotonic() + float(timeout)
+        failed = PlanningError("NO_IK_SOLUTION", f"no joint values of '{group}' put '{link}' at the goal pose")
+        while True:
+            remaining = deadline - time.monotonic()
+            if remaining <= 0.0:
+                raise failed
+            opts = self._simple_ik.SimpleIkOptions()
+            opts.group_name = group
+            opts.check_collisions = avoid_collisions
+            opts.max_time = remaining
+            opts.max_restarts = 1000
+            opts.max_linear_error_norm = 1e-4
+            opts.max_angular_error_norm = 1e-3
+            solver = self._simple_ik.SimpleIk(self.scene, opts)
+            self.scene.setJointPositions(start_full)  # the joints outside the group stay where they are
+            solution = self._core.JointConfiguration()
+            try:
+                solved = solver.solveIk(goal, start, solution)
+            except RuntimeError as err:  # roboplan: no collision-free restart could be sampled
+                raise PlanningError("NO_IK_SOLUTION", f"{failed.message} ({err})") from None
+            if not solved:
+                raise failed
+            q = self.scene.toFullJointPositions(group, np.asarray(solution.positions, dtype=float))
+            out = start_full.copy()  # the joints outside the group keep their values
+            out[idx] = q[idx]
+            if not avoid_collisions or not self.in_collision(out):
+                return out
+            # roboplan checks its restarts, not the solution it converged to: go on from elsewhere
+            start = self._group_config(group, joints, np.asarray(self.scene.randomPositions(), dtype=float))
+
+    def plan(
+        self,
+        group: str,
+        goal: np.ndarray,
+        start: np.ndarray | None = None,
+        *,
+        velocity_scaling: float = 1.0,
+        acceleration_scaling: float = 1.0,
+        timeout: float = 5.0,
+    ) -> Trajectory:
+        """A collision-free, time-parameterised motion of ``group`` from ``start`` (full configuration; the
+        current state when None) to the full configuration ``goal``.
+
+        Raises:
+            PlanningError: ``START_STATE_IN_COLLISION``, ``GOAL_IN_COLLISION``, ``GOAL_STATE_INVALID`` (outside
+            the joint limits) or ``PLANNING_FAILED``.
+        """
+        joints = self.group_joints(group)
+        q0 = self._current.copy() if start is None else np.asarray(start, dtype=float)
+        q1 = np.asarray(goal, dtype=float)
+        if not self.within_limits(q1):
+            raise PlanningError("GOAL_STATE_INVALID", "the goal lies outside the joints' limits")
+        if self.in_collision(q1):
+            raise PlanningError("GOAL_IN_COLLISION", "the goal state is in collision")
+        if self.in_collision(q0):
+            raise PlanningError("START_STATE_IN_COLLISION", "the start state is in collision")
+        opts = self._rrt.RRTOptions()
+        opts.group_name = group
+        opts.rrt_connect = True
+        opts.max_planning_time = float(timeout)
+        opts.collision_check_step_size = 0.02
+        deadline = time.monotonic() + timeout
+        planner = self._rrt.RRT(self.scene, opts)
+        self.scene.setJointPositions(q0)
+        path = planner.plan(self._group_config(group, joints, q0), self._group_config(group, joints, q1))
+        if path is None or len(path.positions) < 2:
+            if time.monotonic() >= deadline:
+                raise PlanningError("TIMED_OUT", f"no collision-free path found in {timeout:g} s")
+            raise PlanningError("PLANNING_FAILED", "no collision-free path was found")
+        sopts = self._core.PathShortcuttingOptions()
+        sopts.group_name = group
+        path = self._core.PathShortcutter(self.scene, sopts).shortcut(path)
+        return self._timed(group, path, velocity_scaling, acceleration_scaling)
+
+    def _timed(self, group: str, path, velocity_scaling: float, acceleration_scaling: float) -> Trajectory:
+        """TOPP-RA over a joint path of ``group``, within the limits times the scaling factors."""
+        topts = self._toppra.TOPPRAOptions()
+        topts.velocity_scale = _fraction(velocity_scaling)
+        topts.acceleration_scale = _fraction(acceleration_scaling)
+        traj = self._toppra.PathParameterizerTOPPRA(self.scene, group).generate(path, topts)
+        return Trajectory(
+            tuple(traj.joint_names),
+            np.asarray(traj.times, dtype=float),
+            np.asarray(traj.positions, dtype=float),
+            np.asarray(traj.velocities, dtype=float),
+            np.asarray(traj.accelerations, dtype=float),
+        )
+
+    def cartesian_path(
+        self,
+        group: str,
+        link: str,
+        waypoints: Sequence[np.ndarray],
+        start: np.ndarray | None = None,
+        *,
+        max_step: float = 0.01,
+        jump_threshold: float = 0.0,
+        avoid_collisions: bool = True,
+        velocity_scaling: float = 1.0,
+        acceleration_scaling: float = 1.0,
+    ) -> tuple[Trajectory | None, float]:
+        """``link`` along straight lines (orientation slerped) through ``waypoints`` (4x4, root frame)
+        from where it is at ``start``, as MoveIt's compute_cartesian_path: poses every ``max_step`` m,
+        each solved by IK seeded from the previous solution. Stops at the first pose with no solution,
+        a collision on the way, or a joint jump (``jump_threshold`` times the mean step, when > 0).
+
+        Returns the timed trajectory of what was achieved (None if nothing) and the fraction achieved.
+        """
+        joints = self.group_joints(group)
+        self.fk(self._current, link)
+        if not math.isfinite(max_step) or max_step <= 0.0:
+            raise PlanningError("INVALID_MOTION_PLAN", f"max_step must be positive (got {max_step})")
+        q = (self._current if start is None else np.asarray(start, dtype=float)).copy()
+        idx = self._group_index(joints)
+        poses: list[np.ndarray] = []
+        previous = self.fk(q, link)
+        for waypoint in waypoints:
+            target = np.asarray(waypoint, dtype=float)
+            distance = float(np.linalg.norm(target[:3, 3] - previous[:3, 3]))
+            cos = (np.trace(previous[:3, :3].T @ target[:3, :3]) - 1.0) / 2.0
+            angle = math.acos(max(-1.0, min(1.0, cos)))
+            steps = max(1, math.ceil(max(distance / max_step, angle / max(max_step * 10.0, 1e-3))))
+            a, b = np.asfortranarray(previous), np.asfortranarray(target)
+            poses += [np.asarray(self._core.interpolatePose(a, b, k / steps)) for k in range(1, steps + 1)]
+            previous = target
+        opts = self._simple_ik.SimpleIkOptions()
+        opts.group_name = group
+        opts.check_collisions = avoid_collisions
+        opts.max_time = 0.05
+        opts.max_restarts = 0  # continuity: each pose from the last one, never a jump to another branch
+        opts.max_linear_error_norm = 1e-4
+        opts.max_angular_error_norm = 1e-3
+        solver = self._simple_ik.SimpleIk(self.scene, opts)
+        self.scene.setJointPositions(q)
+        path = [q[idx].copy()]
+        for pose in poses:
+            goal = self._core.CartesianConfiguration(self.root_link, link, np.asfortranarray(pose, dtype=float))
+            solution = self._core.JointConfiguration()
+            try:
+                if not solver.solveIk(goal, self._group_config(group, joints, q), solution):
+                    break
+            except RuntimeError:
+                break
+            nxt = q.copy()
+            nxt[idx] = self.scene.toFullJointPositions(group, np.asarray(solution.positions, dtype=float))[idx]
+            if avoid_collisions and self._core.hasCollisionsAlongPath(self.scene, q, nxt, 0.02):
+                break
+            path.append(nxt[idx].copy())
+            q = nxt
+        if jump_threshold > 0.0 and len(path) > 2:
+            steps = np.linalg.norm(np.diff(np.asarray(path), axis=0), axis=1)
+            limit = jump_threshold * float(np.mean(steps))
+            for k, step in enumerate(steps):
+                if step > limit:
+                    path = path[: k + 1]
+                    break
+        fraction = (len(path) - 1) / len(poses) if poses else 1.0
+        if len(path) < 2:
+            return None, fraction
+        joint_path = self._core.JointPath()
+        joint_path.joint_names = list(joints)
+        joint_path.positions = [np.asarray(p, dtype=float) for p in path]
+        return self._timed(group, joint_path, velocity_scaling, acceleration_scaling), fraction
+
+    # ------------------------------------------------------------------ helpers
+    def _group_index(self, joints: Sequence[str]) -> list[int]:
+        index = {n: i for i, n in enumerate(self.joint_names)}
+        return [index[j] for j in joints]
+
+    def _group_config(self, group: str, joints: Sequence[str], q_full: np.ndarray):
+        config = self._core.JointConfiguration()
+        config.joint_names = list(joints)
+        config.positions = np.asarray(q_full, dtype=float)[self._group_index(joints)]
+        return config
+
+
+def _element_lines(srdf: str, tag: str) -> dict[str, int]:
+    """The line of each top-level SRDF element ``<tag name=...>`` (``group``, ``end_effector``)."""
+    try:
+        root = etree.fromstring(srdf.encode())
+    except etree.XMLSyntaxError:
+        return {}
+    return {str(g.get("name")): int(g.sourceline or 0) for g in root.findall(tag) if g.get("name")}
+
+
+def _root_and_fixed_links(robot) -> tuple[str, frozenset[str]]:
+    """The URDF's root link, and the links fixed to it (through fixed joints only): no plan moves them."""
+    links = [str(link.get("name")) for link in robot.iter("link")]
+    children: dict[str, list[tuple[str, str]]] = {}
+    child_links = set()
+    for joint in robot.iter("joint"):
+        parent, child = joint.find("parent"), joint.find("child")
+        if parent is None or child is None:
+            continue
+        children.setdefault(str(parent.get("link")), []).append((str(child.get("link")), str(joint.get("type"))))
+        child_links.add(str(child.get("link")))
+    roots = [link for link in links if link not in child_links]
+    root = roots[0] if roots else (links[0] if links else "")
+    fixed, todo = {root}, [root]
+    while todo:
+        for child, kind in children.get(todo.pop(), []):
+            if kind == "fixed" and child not in fixed:
+                fixed.add(child)
+                todo.append(child)
+    return root, frozenset(fixed)
+
+
+def _fraction(value: float) -> float:
+    """MoveIt's scaling factors: 0 (unset) means 1, and they are clamped to (0, 1]."""
+    if not math.isfinite(value) or value <= 0.0:
+        return 1.0
+    return min(value, 1.0)

@@ -1,0 +1,1025 @@
+"""``move_group``: MoveIt's ROS interfaces served by :class:`gazelle.planning.ArmPlanner`.
+
+A plain rclpy node named ``move_group``, as MoveIt's. It reads ``robot_description`` and
+``robot_description_semantic`` (parameters, as MoveIt's launch files pass them, else the latched
+topics of the same names), ``robot_description_planning`` (joint_limits.yaml) and
+``moveit_simple_controller_manager`` (moveit_controllers.yaml). It serves:
+
+- the ``/move_action`` (MoveGroup) and ``/execute_trajectory`` (ExecuteTrajectory) actions;
+- ``/compute_fk``, ``/compute_ik``, ``/plan_kinematic_path`` and ``/check_state_validity``.
+
+Trajectories are executed by the arm's ``FollowJointTrajectory`` controller that
+moveit_controllers.yaml names (the simulated joint_trajectory_controller).
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import sys
+import threading
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import rclpy
+from action_msgs.msg import GoalStatus
+from builtin_interfaces.msg import Duration as DurationMsg
+from control_msgs.action import FollowJointTrajectory
+from geometry_msgs.msg import Pose, PoseStamped
+from moveit_msgs.action import ExecuteTrajectory, MoveGroup
+from moveit_msgs.msg import (
+    AttachedCollisionObject,
+    CollisionObject,
+    DisplayTrajectory,
+    MoveItErrorCodes,
+    PlanningScene,
+    PlanningSceneWorld,
+    RobotState,
+    RobotTrajectory,
+)
+from moveit_msgs.srv import (
+    ApplyPlanningScene,
+    GetCartesianPath,
+    GetMotionPlan,
+    GetPlanningScene,
+    GetPositionFK,
+    GetPositionIK,
+    GetStateValidity,
+)
+from rclpy.action.client import ActionClient
+from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
+from rclpy.callback_groups import ReentrantCallbackGroup
+from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, ShutdownException, SingleThreadedExecutor
+from rclpy.node import Node
+from rclpy.parameter import Parameter
+from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from sensor_msgs.msg import JointState
+from std_msgs.msg import String
+from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
+
+from ..planning import START_BOUNDS_ERROR, ArmPlanner, PlanningError, SceneObject, Trajectory, moveit_joint_limits
+from ._planning_scene import attached_message, padded, shapes_of, to_message
+from ._planning_scene import matrix as _matrix
+from ._planning_scene import pose as _pose
+from ._replies import resend_lost_replies
+
+_log = logging.getLogger("gazelle.move_group")
+
+SIM_PADDING = 0.01
+"""m the simulation's objects are grown by for planning: the simulated robot collides with the convex
+hulls of its meshes, a little fatter than the meshes the planner checks (an arm planned 5 mm past a
+pillar brushed it)."""
+CURRENT_STATE_WAIT = 2.0
+"""s a request waits for the first /joint_states (MoveIt's planning-scene monitor waits 1 s)."""
+_ENDED = (GoalStatus.STATUS_SUCCEEDED, GoalStatus.STATUS_CANCELED, GoalStatus.STATUS_ABORTED)
+LATCHED = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
+
+
+def _code(name: str) -> MoveItErrorCodes:
+    return MoveItErrorCodes(val=getattr(MoveItErrorCodes, name, MoveItErrorCodes.FAILURE))
+
+
+def _same_shapes(a: tuple[Any, ...], b: tuple[Any, ...]) -> bool:
+    return len(a) == len(b) and all(
+        x.kind == y.kind and x.dimensions == y.dimensions and np.allclose(x.pose, y.pose) for x, y in zip(a, b)
+    )
+
+
+def _failed(response: Any, code: str, message: str) -> Any:
+    """A service response that says why it failed: its error_code, or ``success`` where it has none."""
+    if hasattr(response, "error_code"):
+        response.error_code = _code(code)
+        response.error_code.message = message
+    elif hasattr(response, "success"):
+        response.success = False
+    return response
+
+
+def _duration(t: float) -> DurationMsg:
+    sec = math.floor(t)
+    return DurationMsg(sec=int(sec), nanosec=int(round((t - sec) * 1e9)) % 1_000_000_000)
+
+
+def _seconds(d: DurationMsg) -> float:
+    return d.sec + d.nanosec * 1e-9
+
+
+@dataclass(frozen=True)
+class Controller:
+    """A FollowJointTrajectory controller from moveit_controllers.yaml."""
+
+    name: str
+    action: str
+    joints: tuple[str, ...]
+
+
+class MoveGroupNode(Node):
+    """MoveIt's move_group interfaces for one robot."""
+
+    def __init__(
+        self, *, srdf_source: str = "robot_description_semantic", resolve_mesh: Any = None, **kwargs: Any
+    ) -> None:
+        self._srdf_source = srdf_source  # what SRDF warnings name: the file, when one was given
+        self._resolve_mesh = resolve_mesh  # how mesh URIs are found (None: the resource roots)
+        super().__init__("move_group", automatically_declare_parameters_from_overrides=True, **kwargs)
+        self._lock = threading.Lock()  # one planning request at a time
+        self._ready = threading.Event()
+        self.planner: ArmPlanner | None = None
+        self._latest_joints: dict[str, float] = {}
+        self._warned_no_state = False  # from /joint_states; the planner takes it when it plans
+        self._texts: dict[str, str] = {}
+        self._sim_objects: set[str] = set()  # ids of the objects that came from the simulation
+        self._sim_world: Any = None  # the simulation's geometry heard before the robot was known
+        cb = ReentrantCallbackGroup()
+        self._cb = cb
+        self.create_subscription(JointState, "joint_states", self._on_joint_states, 10, callback_group=cb)
+        urdf = self._param("robot_description")
+        srdf = self._param("robot_description_semantic")
+        if urdf and srdf:
+            self._build(urdf, srdf)
+        else:
+            # as MoveIt's nodes do when the parameters are not given: the latched topics
+            for topic in ("robot_description", "robot_description_semantic"):
+                self.create_subscription(
+                    String,
+                    topic,
+                    lambda msg, t=topic: self._on_text(t, str(getattr(msg, "data", ""))),
+                    LATCHED,
+                    callback_group=cb,
+                )
+            if urdf:
+                self._texts["robot_description"] = urdf
+            if srdf:
+                self._texts["robot_description_semantic"] = srdf
+        for srv_type, name, fn in (
+            (GetPositionFK, "compute_fk", self._compute_fk),
+            (GetPositionIK, "compute_ik", self._compute_ik),
+            (GetMotionPlan, "plan_kinematic_path", self._plan_kinematic_path),
+            (GetStateValidity, "check_state_validity", self._check_state_validity),
+            (GetCartesianPath, "compute_cartesian_path", self._compute_cartesian_path),
+            (GetPlanningScene, "get_planning_scene", self._get_planning_scene),
+            (ApplyPlanningScene, "apply_planning_scene", self._apply_planning_scene),
+        ):
+            resend_lost_replies(self.create_service(srv_type, name, self._guard(name, fn), callback_group=cb), name)
+        for msg_type, topic, fn in (
+            (PlanningScene, "planning_scene", self._on_scene_diff),
+            (CollisionObject, "collision_object", self._on_collision_object),
+            (AttachedCollisionObject, "attached_collision_object", self._on_attached_object),
+        ):
+            self.create_subscription(msg_type, topic, self._scene_topic(topic, fn), 10, callback_group=cb)
+        # the simulation's world (gazelle sim publishes its collision geometry): the table, the board,
+        # the other robots; this robot itself is left out
+        self.create_subscription(
+            PlanningSceneWorld, "/gazelle/planning_scene_world", self._on_sim_world, LATCHED, callback_group=cb
+        )
+        self._display = self.create_publisher(DisplayTrajectory, "display_planned_path", 10)
+        self._move = ActionServer(
+            self,
+            MoveGroup,
+            "move_action",
+            execute_callback=self._execute_move_group,
+            goal_callback=lambda _g: GoalResponse.ACCEPT,
+            cancel_callback=lambda _g: CancelResponse.ACCEPT,
+            callback_group=cb,
+        )
+        self._execute = ActionServer(
+            self,
+            ExecuteTrajectory,
+            "execute_trajectory",
+            execute_callback=self._execute_trajectory,
+            goal_callback=lambda _g: GoalResponse.ACCEPT,
+            cancel_callback=lambda _g: CancelResponse.ACCEPT,
+            callback_group=cb,
+        )
+        self._controllers = self._read_controllers()
+        self._trajectory_clients: dict[str, ActionClient] = {}
+        self._controller_lists: dict[str, Any] = {}  # list_controllers clients by service name
+        # The controllers' FollowJointTrajectory clients live on their own node and single-threaded
+        # executor: on the node's multi-threaded one, busy with /joint_states, their status and result
+        # messages came seconds late or not at all (rclpy's executor is slow and its action client
+        # racy across threads: ros2/rclpy#1123).
+        self._execution_node = rclpy.create_node("move_group_trajectory_execution", context=self.context)
+        self._execution_executor = SingleThreadedExecutor(context=self.context)
+        self._execution_executor.add_node(self._execution_node)
+        threading.Thread(target=self._spin_execution, name="move_group execution", daemon=True).start()
+
+    def _spin_execution(self) -> None:
+        try:
+            self._execution_executor.spin()
+        except (ExternalShutdownException, ShutdownException):
+            pass
+
+    def destroy_node(self) -> None:
+        """Destroy the action servers and clients first: one left alive holds its node's handle, and the
+        node would stay in the graph with that action's endpoints alone."""
+        self._execution_executor.shutdown()
+        for client in self._trajectory_clients.values():
+            client.destroy()
+        self._execution_node.destroy_node()
+        self._move.destroy()
+        self._execute.destroy()
+        super().destroy_node()
+
+    # ------------------------------------------------------------------ set-up
+    def _param(self, name: str) -> str:
+        if not self.has_parameter(name):
+            return ""
+        value = self.get_parameter(name).value
+        return value if isinstance(value, str) else ""
+
+    def _on_text(self, topic: str, text: str) -> None:
+        if self.planner is not None:
+            return
+        self._texts[topic] = text
+        if "robot_description" in self._texts and "robot_description_semantic" in self._texts:
+            self._build(self._texts["robot_description"], self._texts["robot_description_semantic"])
+
+    def _build(self, urdf: str, srdf: str) -> None:
+        limits = {}
+        prefix = "robot_description_planning.joint_limits."
+        grouped: dict[str, dict[str, Any]] = {}
+        for name, param in self._parameters.items():
+            if name.startswith(prefix):
+                joint, _, key = name[len(prefix) :].rpartition(".")
+                grouped.setdefault(joint, {})[key] = param.value
+        if grouped:
+            limits = moveit_joint_limits({"joint_limits": grouped})
+        try:
+            planner = ArmPlanner(
+                urdf, srdf, joint_limits=limits, srdf_source=self._srdf_source, resolve_mesh=self._resolve_mesh
+            )
+        except PlanningError as err:
+            self.get_logger().error(f"cannot plan for this robot: {err.message}")
+            return
+        except Exception as err:  # a URDF roboplan cannot model: say so once and keep serving errors
+            self.get_logger().error(f"cannot plan for this robot: {type(err).__name__}: {err}")
+            return
+        for warning in planner.warnings:
+            self.get_logger().warning(warning)
+        self.planner = planner
+        if self._sim_world is not None:
+            with self._lock:
+                self._take_sim_world(self._sim_world)
+        self._ready.set()
+        self.get_logger().info(
+            f"You can start planning now! (groups: {', '.join(planner.groups)}; planning frame {planner.root_link})"
+        )
+
+    def _read_controllers(self) -> list[Controller]:
+        prefix = "moveit_simple_controller_manager."
+        names = (
+            self.get_parameter(prefix + "controller_names").value
+            if self.has_parameter(prefix + "controller_names")
+            else []
+        )
+        out = []
+        for name in names or []:
+            ns = self._param(f"{prefix}{name}.action_ns") or "follow_joint_trajectory"
+            joints = (
+                self.get_parameter(f"{prefix}{name}.joints").value
+                if self.has_parameter(f"{prefix}{name}.joints")
+                else []
+            )
+            out.append(Controller(name, f"/{name}/{ns}".replace("//", "/"), tuple(joints or ())))
+        return out
+
+    def _on_joint_states(self, msg: JointState) -> None:
+        if self.planner is None or not msg.name:
+            return
+        # no lock and no planner work here: at 100 Hz that starved planning of the GIL and the lock
+        self._latest_joints = {**self._latest_joints, **dict(zip(msg.name, msg.position))}
+
+    # ------------------------------------------------------------------ plumbing
+    def _guard(self, name: str, fn: Any) -> Any:
+        def wrapper(request: Any, response: Any) -> Any:
+            if self.planner is None:
+                return _failed(
+                    response,
+                    "FAILURE",
+                    "move_group has no robot yet (robot_description and robot_description_semantic)",
+                )
+            try:
+                with self._lock:
+                    return fn(request, response)
+            except PlanningError as err:
+                self.get_logger().warning(f"{name}: {err.code}: {err.message}")
+                return _failed(response, err.code, err.message)
+            except Exception as err:
+                self.get_logger().error(f"{name}: {type(err).__name__}: {err}")
+                return _failed(response, "FAILURE", f"{name}: internal error: {type(err).__name__}: {err}")
+
+        return wrapper
+
+    def _start_state(self, state: RobotState) -> np.ndarray:
+        """The request's start state: the current one with what the request gives put in."""
+        assert self.planner is not None
+        deadline = time.monotonic() + CURRENT_STATE_WAIT
+        while not self._latest_joints and time.monotonic() < deadline:
+            time.sleep(0.01)  # as MoveIt waits for a current state (the callback takes no lock)
+        if self._latest_joints:
+            self.planner.set_current(self._latest_joints)
+        elif not self._warned_no_state:
+            self._warned_no_state = True
+            self.get_logger().warning(
+                f"no /joint_states within {CURRENT_STATE_WAIT:g} s: planning from the model's zero positions"
+            )
+        js = state.joint_state
+        return self.planner.state(dict(zip(js.name, js.position)) if js.name else None)
+
+    def _frame(self, frame: str, q: np.ndarray) -> np.ndarray:
+        """The pose of ``frame`` in the planning frame: the root link, the SRDF's virtual joint parent
+        (a fixed virtual joint is the identity, as in MoveIt) or another link of the robot."""
+        assert self.planner is not None
+        virtual = {v.parent_frame for v in self.planner.semantics.virtual_joints if v.type == "fixed"}
+        if not frame or frame == self.planner.root_link or frame in virtual:
+            return np.eye(4)
+        try:
+            return self.planner.fk(q, frame)
+        except PlanningError:
+            raise PlanningError("FRAME_TRANSFORM_FAILURE", f"unknown frame '{frame}'") from None
+
+    # ------------------------------------------------------------------ services
+    def _compute_fk(self, req: GetPositionFK.Request, res: GetPositionFK.Response) -> GetPositionFK.Response:
+        assert self.planner is not None
+        q = self._start_state(req.robot_state)
+        base = np.linalg.inv(self._frame(req.header.frame_id, q))
+        poses = []
+        for link in req.fk_link_names:
+            ps = PoseStamped()
+            ps.header.frame_id = req.header.frame_id or self.planner.root_link
+            ps.pose = _pose(base @ self.planner.fk(q, link))
+            poses.append(ps)
+        res.pose_stamped = poses
+        res.fk_link_names = list(req.fk_link_names)
+        res.error_code = _code("SUCCESS")
+        return res
+
+    def _compute_ik(self, req: GetPositionIK.Request, res: GetPositionIK.Response) -> GetPositionIK.Response:
+        assert self.planner is not None
+        ik = req.ik_request
+        q = self._start_state(ik.robot_state)
+        link = ik.ik_link_name or self.planner.tip_link(ik.group_name)
+        target = self._frame(ik.pose_stamped.header.frame_id, q) @ _matrix(ik.pose_stamped.pose)
+        timeout = _seconds(ik.timeout) or 0.5
+        solution = self.planner.ik(
+            ik.group_name, link, target, q, timeout=timeout, avoid_collisions=ik.avoid_collisions
+        )
+        res.solution.joint_state.name = list(self.planner.joint_names)
+        res.solution.joint_state.position = [float(v) for v in solution]
+        res.error_code = _code("SUCCESS")
+        return res
+
+    def _check_state_validity(self, req: GetStateValidity.Request, res: GetStateValidity.Response) -> Any:
+        assert self.planner is not None
+        q = self._start_state(req.robot_state)
+        res.valid = self.planner.within_limits(q) and not self.planner.in_collision(q)
+        return res
+
+    def _plan_kinematic_path(self, req: GetMotionPlan.Request, res: GetMotionPlan.Response) -> Any:
+        t0 = time.monotonic()
+        try:
+            start, traj = self._plan(req.motion_plan_request)
+        except PlanningError as err:
+            res.motion_plan_response.error_code = _code(err.code)
+            res.motion_plan_response.error_code.message = err.message
+            return res
+        mpr = res.motion_plan_response
+        mpr.group_name = req.motion_plan_request.group_name
+        mpr.trajectory_start = self._robot_state(start)
+        mpr.trajectory = self._robot_trajectory(traj)
+        mpr.planning_time = time.monotonic() - t0
+        mpr.error_code = _code("SUCCESS")
+        return res
+
+    def _compute_cartesian_path(self, req: GetCartesianPath.Request, res: GetCartesianPath.Response) -> Any:
+        planner = self.planner
+        assert planner is not None
+        q = self._start_state(req.start_state)
+        link = req.link_name or planner.tip_link(req.group_name)
+        frame = self._frame(req.header.frame_id, q)
+        traj, fraction = planner.cartesian_path(
+            req.group_name,
+            link,
+            [frame @ _matrix(p) for p in req.waypoints],
+            q,
+            max_step=req.max_step,
+            jump_threshold=req.jump_threshold,
+            avoid_collisions=req.avoid_collisions,
+            velocity_scaling=req.max_velocity_scaling_factor,
+            acceleration_scaling=req.max_acceleration_scaling_factor,
+        )
+        res.start_state = self._robot_state(q)
+        res.fraction = float(fraction)
+        if traj is not None:
+            res.solution = self._robot_trajectory(traj)
+        res.error_code = _code("SUCCESS")  # as MoveIt: a partial path succeeds with its fraction
+        return res
+
+    # ------------------------------------------------------------------ planning scene
+    def _get_planning_scene(self, req: GetPlanningScene.Request, res: GetPlanningScene.Response) -> Any:
+        planner = self.planner
+        assert planner is not None
+        scene = res.scene
+        scene.name = "gazelle"
+        scene.robot_model_name = planner.semantics.robot_name
+        scene.robot_state = self._robot_state(planner.state(self._latest_joints or None))
+        objects = planner.objects()
+        scene.robot_state.attached_collision_objects = [attached_message(o) for o in objects if o.link]
+        scene.world.collision_objects = [to_message(o, planner.root_link) for o in objects if not o.link]
+        scene.is_diff = False
+        return res
+
+    def _apply_planning_scene(self, req: ApplyPlanningScene.Request, res: ApplyPlanningScene.Response) -> Any:
+        self._apply_scene(req.scene)
+        res.success = True
+        return res
+
+    def _scene_topic(self, topic: str, fn: Any) -> Any:
+        """A planning-scene topic's callback: under the planning lock, a bad message logged, not raised."""
+
+        def callback(msg: Any) -> None:
+            if self.planner is None:
+                return
+            try:
+                with self._lock:
+                    fn(msg)
+            except PlanningError as err:
+                self.get_logger().warning(f"/{topic}: {err.code}: {err.message}")
+
+        return callback
+
+    def _on_scene_diff(self, msg: PlanningScene) -> None:
+        self._apply_scene(msg)
+
+    def _on_collision_object(self, msg: CollisionObject) -> None:
+        self._apply_world_object(msg)
+
+    def _on_attached_object(self, msg: AttachedCollisionObject) -> None:
+        self._apply_attached(msg)
+
+    def _on_sim_world(self, msg: PlanningSceneWorld) -> None:
+        """The simulation's collision geometry: every entity link but this robot's, in the planning frame."""
+        if self.planner is None:
+            self._sim_world = msg  # taken when the robot is known
+            return
+        with self._lock:
+            self._take_sim_world(msg)
+
+    def _take_sim_world(self, msg: PlanningSceneWorld) -> None:
+        planner = self.planner
+        assert planner is not None
+        by_entity: dict[str, list[CollisionObject]] = {}
+        for co in msg.collision_objects:
+            entity, _, link = co.id.rpartition("::")
+            by_entity.setdefault(entity, []).append(co)
+        ours = {
+            entity
+            for entity, objects in by_entity.items()
+            if all(planner.has_link(co.id.rpartition("::")[2]) for co in objects)
+        }
+        root_in_world = self._root_in_world([co for e in ours for co in by_entity[e]])
+        world_to_root = np.linalg.inv(root_in_world)
+        names = set()
+        for entity, objects in by_entity.items():
+            if entity in ours:
+                continue
+            for co in objects:
+                at = world_to_root @ _matrix(co.pose)
+                names.add(co.id)
+                existing = self._find(co.id)
+                shapes = tuple(padded(sh, SIM_PADDING) for sh in shapes_of(co, self._warn))
+                if not shapes:
+                    continue
+                if existing is not None and not existing.link and _same_shapes(existing.shapes, shapes):
+                    planner.move_object(co.id, at)
+                else:
+                    planner.add_object(SceneObject(co.id, shapes, at))
+        for stale in self._sim_objects - names:
+            obj = self._find(stale)
+            if obj is not None and not obj.link:
+                planner.remove_object(stale)
+        self._sim_objects = names
+
+    def _root_in_world(self, robot_links: list[CollisionObject]) -> np.ndarray:
+        """Where the planning frame (the robot's root link) is in the simulation's world: from a link of
+        this robot the simulation reports and the current joint values; the identity if none."""
+        planner = self.planner
+        assert planner is not None
+        q = planner.state(self._latest_joints or None)
+        for co in sorted(robot_links, key=lambda c: c.id.rpartition("::")[2] != planner.root_link):
+            link = co.id.rpartition("::")[2]
+            return _matrix(co.pose) @ np.linalg.inv(planner.fk(q, link))
+        return np.eye(4)
+
+    def _apply_scene(self, scene: PlanningScene) -> None:
+        planner = self.planner
+        assert planner is not None
+        if not scene.is_diff:  # a whole scene replaces the objects there are
+            for obj in planner.objects():
+                planner.remove_object(obj.name)
+        for co in scene.world.collision_objects:
+            self._apply_world_object(co)
+        for aco in scene.robot_state.attached_collision_objects:
+            self._apply_attached(aco)
+
+    def _warn(self, text: str) -> None:
+        self.get_logger().warning(text)
+
+    def _find(self, name: str) -> SceneObject | None:
+        assert self.planner is not None
+        return next((o for o in self.planner.objects() if o.name == name), None)
+
+    def _apply_world_object(self, co: CollisionObject) -> None:
+        """A CollisionObject's ADD, REMOVE, APPEND or MOVE on the world's objects."""
+        planner = self.planner
+        assert planner is not None
+        existing = self._find(co.id) if co.id else None
+        if existing is not None and existing.link:
+            existing = None  # an attached object of that name is changed through attached_collision_object
+        if co.operation == CollisionObject.REMOVE:
+            targets = [existing] if co.id else [o for o in planner.objects() if not o.link]
+            for obj in targets:
+                if obj is not None:
+                    planner.remove_object(obj.name)
+            return
+        if not co.id:
+            raise PlanningError("INVALID_OBJECT_NAME", "a collision object needs an id")
+        at = self._frame(co.header.frame_id, planner.state(self._latest_joints or None)) @ _matrix(co.pose)
+        if co.operation == CollisionObject.MOVE:
+            if existing is None:
+                raise PlanningError("INVALID_OBJECT_NAME", f"no collision object '{co.id}' to move")
+            planner.add_object(SceneObject(co.id, existing.shapes, at))
+            return
+        shapes = tuple(shapes_of(co, self._warn))
+        if co.operation == CollisionObject.APPEND and existing is not None:
+            relative = np.linalg.inv(existing.pose) @ at
+            shapes = existing.shapes + tuple(type(sh)(sh.kind, sh.dimensions, relative @ sh.pose) for sh in shapes)
+            at = existing.pose
+        if not shapes:
+            raise PlanningError("INVALID_OBJECT_NAME", f"collision object '{co.id}' has no shape gazelle plans with")
+        planner.add_object(SceneObject(co.id, shapes, at))
+
+    def _apply_attached(self, aco: AttachedCollisionObject) -> None:
+        """Attach an object to a link (a world object of that id, or the message's shapes) or detach it
+        back into the world where it is now."""
+        planner = self.planner
+        assert planner is not None
+        co = aco.object
+        q = planner.state(self._latest_joints or None)
+        if co.operation == CollisionObject.REMOVE:
+            attached = [o for o in planner.objects() if o.link and (o.name == co.id or not co.id)]
+            attached = [o for o in attached if not aco.link_name or o.link == aco.link_name]
+            for obj in attached:
+                world = planner.fk(q, obj.link) @ obj.pose
+                planner.add_object(SceneObject(obj.name, obj.shapes, world))
+            return
+        if not aco.link_name:
+            raise PlanningError("INVALID_LINK_NAME", f"attached object '{co.id}' names no link")
+        link_pose = planner.fk(q, aco.link_name)
+        existing = self._find(co.id)
+        if existing is not None and not co.primitives and not co.meshes:
+            world = existing.pose if not existing.link else planner.fk(q, existing.link) @ existing.pose
+            shapes, at = existing.shapes, np.linalg.inv(link_pose) @ world
+        else:
+            shapes = tuple(shapes_of(co, self._warn))
+            if not shapes:
+                raise PlanningError("INVALID_OBJECT_NAME", f"attached object '{co.id}' has no shape gazelle plans with")
+            frame = self._frame(co.header.frame_id or aco.link_name, q)
+            at = np.linalg.inv(link_pose) @ frame @ _matrix(co.pose)
+        planner.add_object(SceneObject(co.id, shapes, at, aco.link_name, tuple(aco.touch_links)))
+
+    # ------------------------------------------------------------------ planning
+    def _plan(self, request: Any) -> tuple[np.ndarray, Trajectory]:
+        """A MotionPlanRequest's start state and timed trajectory (raises PlanningError)."""
+        planner = self.planner
+        assert planner is not None
+        group = request.group_name
+        joints = planner.group_joints(group)
+        start = self._start_state(request.start_state)
+        if not request.goal_constraints:
+            raise PlanningError("INVALID_GOAL_CONSTRAINTS", "the request has no goal_constraints")
+        goal = self._goal(group, joints, request.goal_constraints[0], start)
+        timeout = request.allowed_planning_time or 5.0
+        traj = planner.plan(
+            group,
+            goal,
+            start,
+            velocity_scaling=request.max_velocity_scaling_factor,
+            acceleration_scaling=request.max_acceleration_scaling_factor,
+            timeout=timeout,
+        )
+        return start, traj
+
+    def _goal(self, group: str, joints: list[str], constraints: Any, start: np.ndarray) -> np.ndarray:
+        """The goal configuration of one Constraints message: joint constraints, or a pose goal."""
+        planner = self.planner
+        assert planner is not None
+        if constraints.joint_constraints:
+            values = {}
+            for jc in constraints.joint_constraints:
+                if jc.joint_name not in planner.joint_names:
+                    raise PlanningError("INVALID_GOAL_CONSTRAINTS", f"unknown joint '{jc.joint_name}' in the goal")
+                values[jc.joint_name] = jc.position
+            missing = [j for j in joints if j not in values]
+            if missing and len(missing) == len(joints):
+                raise PlanningError("INVALID_GOAL_CONSTRAINTS", f"the goal names none of group '{group}'s joints")
+            return planner.state({**planner.positions(start), **values})
+        if constraints.position_constraints:
+            pc = constraints.position_constraints[0]
+            link = pc.link_name or planner.tip_link(group)
+            region = pc.constraint_region
+            if not region.primitive_poses:
+                raise PlanningError("INVALID_GOAL_CONSTRAINTS", "the position constraint has no primitive pose")
+            frame = self._frame(pc.header.frame_id, start)
+            target = frame @ _matrix(region.primitive_poses[0])
+            offset = pc.target_point_offset
+            if constraints.orientation_constraints:
+                oc = constraints.orientation_constraints[0]
+                rotation = self._frame(oc.header.frame_id, start) @ _matrix(Pose(orientation=oc.orientation))
+                target[:3, :3] = rotation[:3, :3]
+                target[:3, 3] -= target[:3, :3] @ np.array([offset.x, offset.y, offset.z])
+                return planner.ik(group, link, target, start)
+            return self._position_only(group, link, target[:3, 3], start)
+        if constraints.orientation_constraints:
+            raise PlanningError(
+                "INVALID_GOAL_CONSTRAINTS", "an orientation constraint alone is not a goal gazelle can plan to"
+            )
+        raise PlanningError("INVALID_GOAL_CONSTRAINTS", "the goal has no joint, position or orientation constraint")
+
+    def _position_only(self, group: str, link: str, position: np.ndarray, start: np.ndarray) -> np.ndarray:
+        """A position goal: the link's current orientation first, then others, until IK finds one."""
+        planner = self.planner
+        assert planner is not None
+        current = planner.fk(start, link)
+        rng = np.random.default_rng(0)
+        rotations = [current[:3, :3]]
+        for _ in range(20):
+            q = rng.normal(size=4)
+            q /= np.linalg.norm(q)
+            rotations.append(_matrix(Pose(orientation=_quat(q)))[:3, :3])
+        for rotation in rotations:
+            target = np.eye(4)
+            target[:3, :3], target[:3, 3] = rotation, position
+            try:
+                return planner.ik(group, link, target, start, timeout=0.1)
+            except PlanningError:
+                continue
+        raise PlanningError("NO_IK_SOLUTION", f"no joint values of '{group}' put '{link}' at the goal position")
+
+    # ------------------------------------------------------------------ messages
+    def _robot_state(self, q: np.ndarray) -> RobotState:
+        assert self.planner is not None
+        state = RobotState()
+        state.joint_state.name = list(self.planner.joint_names)
+        state.joint_state.position = [float(v) for v in q]
+        return state
+
+    def _robot_trajectory(self, traj: Trajectory) -> RobotTrajectory:
+        out = RobotTrajectory()
+        jt = out.joint_trajectory
+        jt.header.frame_id = self.planner.root_link if self.planner else ""
+        jt.joint_names = list(traj.joint_names)
+        jt.points = [
+            JointTrajectoryPoint(
+                positions=[float(v) for v in traj.positions[i]],
+                velocities=[float(v) for v in traj.velocities[i]],
+                accelerations=[float(v) for v in traj.accelerations[i]],
+                time_from_start=_duration(float(t)),
+            )
+            for i, t in enumerate(traj.times)
+        ]
+        return out
+
+    # ------------------------------------------------------------------ actions
+    def _execute_move_group(self, handle: Any) -> MoveGroup.Result:
+        result = MoveGroup.Result()
+        if self.planner is None:
+            result.error_code = _code("FAILURE")
+            result.error_code.message = "move_group has no robot yet (robot_description and robot_description_semantic)"
+            handle.abort()
+            return result
+        goal = handle.request
+        t0 = time.monotonic()
+        handle.publish_feedback(MoveGroup.Feedback(state="PLANNING"))
+        try:
+            with self._lock:
+                start, traj = self._plan(goal.request)
+        except PlanningError as err:
+            result.error_code = _code(err.code)
+            result.error_code.message = err.message
+            self.get_logger().warning(f"planning for '{goal.request.group_name}' failed: {err.code}: {err.message}")
+            handle.abort()
+            return result
+        except Exception as err:
+            self.get_logger().error(f"planning failed: {type(err).__name__}: {err}")
+            result.error_code = _code("FAILURE")
+            result.error_code.message = f"internal error: {type(err).__name__}: {err}"
+            handle.abort()
+            return result
+        result.planning_time = time.monotonic() - t0
+        result.trajectory_start = self._robot_state(start)
+        result.planned_trajectory = self._robot_trajectory(traj)
+        # as MoveIt's move_group: every plan on /display_planned_path (RViz's and Foxglove's trajectory displays)
+        self._display.publish(
+            DisplayTrajectory(
+                model_id=self.planner.semantics.robot_name if self.planner else "",
+                trajectory=[result.planned_trajectory],
+                trajectory_start=result.trajectory_start,
+            )
+        )
+        if goal.planning_options.plan_only:
+            result.error_code = _code("SUCCESS")
+            handle.succeed()
+            return result
+        handle.publish_feedback(MoveGroup.Feedback(state="MONITOR"))
+        code, message = self._run(result.planned_trajectory.joint_trajectory, handle)
+        result.error_code = _code(code)
+        result.error_code.message = message
+        if code == "SUCCESS":
+            result.executed_trajectory = result.planned_trajectory
+            handle.succeed()
+        elif code == "PREEMPTED":
+            handle.canceled()
+        else:
+            handle.abort()
+        return result
+
+    def _execute_trajectory(self, handle: Any) -> ExecuteTrajectory.Result:
+        result = ExecuteTrajectory.Result()
+        trajectory = handle.request.trajectory.joint_trajectory
+        problem = self._check_trajectory(trajectory)
+        if problem is not None:
+            result.error_code = _code("INVALID_MOTION_PLAN")
+            result.error_code.message = problem
+            handle.abort()
+            return result
+        code, message = self._run(trajectory, handle)
+        result.error_code = _code(code)
+        result.error_code.message = message
+        if code == "SUCCESS":
+            handle.succeed()
+        elif code == "PREEMPTED":
+            handle.canceled()
+        else:
+            handle.abort()
+        return result
+
+    def _check_trajectory(self, trajectory: JointTrajectory) -> str | None:
+        """Why a trajectory sent to execute_trajectory cannot run (positions or speeds beyond the limits)."""
+        planner = self.planner
+        if planner is None:
+            return "move_group has no robot yet"
+        if not trajectory.points:
+            return "the trajectory has no points"
+        unknown = [j for j in trajectory.joint_names if j not in planner.joint_names]
+        if unknown:
+            return f"unknown joints {unknown}"
+        lo, hi = planner.scene.getPositionLimitVectors("")
+        vlo, vhi = planner.scene.getVelocityLimitVectors("")
+        index = {n: i for i, n in enumerate(planner.joint_names)}
+        prev = None
+        for k, point in enumerate(trajectory.points):
+            t = _seconds(point.time_from_start)
+            for j, name in enumerate(trajectory.joint_names):
+                i = index[name]
+                p = point.positions[j]
+                # the first point is where the arm is: a reading a little past a limit is allowed there,
+                # as MoveIt allows a start state within start_state_max_bounds_error
+                slack = START_BOUNDS_ERROR if k == 0 else 1e-4
+                if not lo[i] - slack <= p <= hi[i] + slack:
+                    return f"point {k}: {name} = {p:.4f} is outside its limits [{lo[i]:.4f}, {hi[i]:.4f}]"
+                if prev is not None and t > prev[0]:
+                    v = (p - prev[1][j]) / (t - prev[0])
+                    if not vlo[i] * 1.01 <= v <= vhi[i] * 1.01:
+                        return f"point {k}: {name} moves at {v:.3f} rad/s, beyond its velocity limit {vhi[i]:.3f}"
+            prev = (t, list(point.positions))
+        return None
+
+    def _controller_for(self, joints: list[str]) -> Controller | None:
+        for c in self._controllers:
+            if set(joints) <= set(c.joints):
+                return c
+        for c in self._ros2_control_controllers():
+            if set(joints) <= set(c.joints):
+                return c
+        return None
+
+    def _ros2_control_controllers(self) -> list[Controller]:
+        """The active joint_trajectory_controllers of the controller manager, as MoveIt's
+        Ros2ControlManager finds them (moveit_controllers.yaml names no controllers then)."""
+        from controller_manager_msgs.srv import ListControllers
+
+        namespace = (self._param("ros_control_namespace") or "/").rstrip("/")  # MoveIt's parameter
+        name = f"{namespace}/controller_manager/list_controllers"
+        client = self._controller_lists.get(name)
+        if client is None:
+            client = self._controller_lists[name] = self._execution_node.create_client(ListControllers, name)
+        if not client.wait_for_service(timeout_sec=2.0):
+            return []
+        done = threading.Event()
+        box: dict[str, Any] = {}
+
+        def call() -> None:
+            future = client.call_async(ListControllers.Request())
+            future.add_done_callback(lambda f: (box.__setitem__("result", f.result()), done.set()))
+
+        self._execution_executor.create_task(call)
+        if not done.wait(5.0) or box.get("result") is None:
+            return []
+        out = []
+        for c in box["result"].controller:
+            if c.state != "active" or not c.type.endswith("JointTrajectoryController"):
+                continue
+            joints = tuple(dict.fromkeys(i.split("/")[0] for i in c.claimed_interfaces))
+            out.append(Controller(c.name, f"{namespace}/{c.name}/follow_joint_trajectory", joints))
+        return out
+
+    def _run(self, trajectory: JointTrajectory, handle: Any) -> tuple[str, str]:
+        """Send ``trajectory`` to its FollowJointTrajectory controller and wait; cancel it when ``handle`` is."""
+        controller = self._controller_for(list(trajectory.joint_names))
+        if controller is None:
+            return (
+                "CONTROL_FAILED",
+                f"no controller drives {list(trajectory.joint_names)} (moveit_controllers.yaml, or an active "
+                "joint_trajectory_controller of /controller_manager)",
+            )
+        client = self._trajectory_clients.get(controller.action)
+        if client is None:
+            client = self._trajectory_clients[controller.action] = ActionClient(
+                self._execution_node, FollowJointTrajectory, controller.action
+            )
+        if not client.wait_for_server(timeout_sec=5.0):
+            return "CONTROL_FAILED", f"controller action {controller.action} is not available"
+        goal = FollowJointTrajectory.Goal(trajectory=trajectory)
+        done = threading.Event()
+        box: dict[str, Any] = {}
+
+        def on_result(f: Any) -> None:
+            box["result"] = f.result()
+            done.set()
+
+        def on_goal(f: Any) -> None:
+            goal_handle = f.result()
+            box["goal"] = goal_handle
+            if not goal_handle.accepted:
+                done.set()
+                return
+            goal_handle.get_result_async().add_done_callback(on_result)
+
+        def on_feedback(_msg: Any) -> None:
+            box["progress"] = time.monotonic()
+
+        # every call on the client is made on its executor's thread: made from this one, a reply that came
+        # back before rclpy filed the request was dropped and its future never completed (ros2/rclpy#1123)
+        on_thread = self._execution_executor.create_task
+        on_thread(lambda: client.send_goal_async(goal, feedback_callback=on_feedback).add_done_callback(on_goal))
+        points = list(trajectory.points)
+        duration = _seconds(points[-1].time_from_start) if points else 0.0
+        # MoveIt's allowed_execution_duration_scaling (1.2) and allowed_goal_duration_margin (0.5 s), in
+        # wall time; a simulation running slower than real time still reports progress through the
+        # controller's feedback, so the wait goes on while feedback comes, up to four times as long.
+        started = time.monotonic()
+        expected = duration * 1.2 + 0.5
+        cancelled = False
+        while not done.wait(0.02):
+            if handle.is_cancel_requested and not cancelled and "goal" in box:
+                on_thread(box["goal"].cancel_goal_async)
+                cancelled = True
+            now = time.monotonic()
+            handle_ = box.get("goal")
+            silent = now - box.get("progress", started)
+            ended = handle_ is not None and handle_.accepted and handle_.status in _ENDED
+            if handle_ is not None and handle_.accepted and (ended or (now - started > expected and silent > 0.5)):
+                # the controller says the goal ended, or its time is up and its feedback stopped, but no
+                # result came: ask again every 0.5 s (a result response can be lost as a service reply
+                # can; the server keeps results, and answers at once for a goal that is done)
+                asked = box.setdefault("asked", now)
+                if now - asked > 0.5:
+                    box["asked"] = now
+                    on_thread(lambda h=handle_: h.get_result_async().add_done_callback(on_result))
+            quiet = silent > 3.0
+            if now - started > expected and (quiet or now - started > 4 * expected + 5.0):
+                if "goal" in box:
+                    on_thread(box["goal"].cancel_goal_async)
+                return (
+                    "TIMED_OUT",
+                    f"{controller.name} did not finish the {duration:.2f} s trajectory within {now - started:.1f} s",
+                )
+        if cancelled:
+            return "PREEMPTED", "stopped"
+        if "result" not in box:
+            return "CONTROL_FAILED", f"{controller.name} rejected the trajectory"
+        res = box["result"].result
+        if res.error_code != FollowJointTrajectory.Result.SUCCESSFUL:
+            return "CONTROL_FAILED", f"{controller.name}: {res.error_string or res.error_code}"
+        return "SUCCESS", ""
+
+
+def _quat(q: np.ndarray) -> Any:
+    from geometry_msgs.msg import Quaternion
+
+    return Quaternion(x=float(q[0]), y=float(q[1]), z=float(q[2]), w=float(q[3]))
+
+
+def move_group_main(argv: list[str]) -> int:
+    """``gazelle move_group``: the node, with ROS arguments (``--ros-args -p ... --params-file ...``)."""
+    import argparse
+
+    parser = argparse.ArgumentParser(
+        prog="gazelle move_group", description="MoveIt's move_group interfaces for one robot, planned with roboplan."
+    )
+    parser.add_argument("--urdf", help="the robot's URDF or xacro file (else the robot_description parameter or topic)")
+    parser.add_argument("--srdf", help="the robot's SRDF or SRDF xacro file (else robot_description_semantic)")
+    parser.add_argument(
+        "--config", help="a MoveIt config folder: joint_limits.yaml and moveit_controllers.yaml are read"
+    )
+    ros_args = argv[argv.index("--ros-args") :] if "--ros-args" in argv else []
+    args = parser.parse_args(argv[: len(argv) - len(ros_args)] if ros_args else argv)
+    overrides: list[Parameter] = []
+    try:
+        for flag, name in ((args.urdf, "robot_description"), (args.srdf, "robot_description_semantic")):
+            if flag:
+                overrides.append(Parameter(name, value=_read_description(flag)))
+        if args.config:
+            overrides.extend(_config_parameters(Path(args.config)))
+    except (OSError, ValueError) as err:
+        print(f"gazelle move_group: {err}", file=sys.stderr)
+        return 2
+    rclpy.init(args=["move_group", *ros_args])
+    resolve_mesh: Any = None
+    if args.urdf:  # the folder of the file the user named may be read, as for a spawn
+        from ..description import ResourceResolver
+
+        folder = Path(args.urdf).resolve().parent
+        resolver = ResourceResolver().trusting(folder)
+
+        def trusted(uri: str) -> str | None:
+            path = resolver.resolve_uri(uri, folder)
+            return str(path) if path is not None and path.is_file() else None
+
+        resolve_mesh = trusted
+
+    node = MoveGroupNode(
+        parameter_overrides=overrides, srdf_source=args.srdf or "robot_description_semantic", resolve_mesh=resolve_mesh
+    )
+    executor = MultiThreadedExecutor(num_threads=4)
+    executor.add_node(node)
+    try:
+        executor.spin()
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass
+    finally:
+        executor.shutdown()
+        node.destroy_node()
+        rclpy.try_shutdown()  # pyright: ignore[reportPrivateImportUsage]
+    return 0
+
+
+def _read_description(path: str) -> str:
+    """A file the user named: xacro files are expanded (bounded), others read as they are."""
+    from ..description import DiagnosticSink, ResourceResolver, expand_xacro_bounded
+
+    p = Path(path)
+    if not p.is_file():
+        raise ValueError(f"{path}: no such file")
+    text = p.read_text(encoding="utf-8")
+    if p.suffix != ".xacro":
+        return text
+    sink = DiagnosticSink()
+    out = expand_xacro_bounded(text, source=str(p), sink=sink, resolver=ResourceResolver().trusting(p.resolve().parent))
+    if out is None:
+        raise ValueError("; ".join(d.format() for d in sink.items) or f"{path}: xacro failed")
+    return out
+
+
+def _config_parameters(folder: Path) -> list[Parameter]:
+    """joint_limits.yaml as robot_description_planning.*, moveit_controllers.yaml's controllers."""
+    import yaml
+
+    if not folder.is_dir():
+        raise ValueError(f"{folder}: no such folder")
+    out: list[Parameter] = []
+    limits = folder / "joint_limits.yaml"
+    if limits.is_file():
+        data = yaml.safe_load(limits.read_text()) or {}
+        for joint, spec in (data.get("joint_limits") or {}).items():
+            for key, value in (spec or {}).items():
+                out.append(Parameter(f"robot_description_planning.joint_limits.{joint}.{key}", value=value))
+    controllers = folder / "moveit_controllers.yaml"
+    if controllers.is_file():
+        data = yaml.safe_load(controllers.read_text()) or {}
+        mscm = data.get("moveit_simple_controller_manager") or {}
+        names = list(mscm.get("controller_names") or [])
+        out.append(Parameter("moveit_simple_controller_manager.controller_names", value=names))
+        for name in names:
+            spec = mscm.get(name) or {}
+            out.append(
+                Parameter(f"moveit_simple_controller_manager.{name}.action_ns", value=str(spec.get("action_ns", "")))
+            )
+            out.append(
+                Parameter(f"moveit_simple_controller_manager.{name}.joints", value=list(spec.get("joints") or []))
+            )
+    return out

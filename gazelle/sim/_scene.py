@@ -1,0 +1,117 @@
+"""The simulated world's collision geometry, as a motion planner sees obstacles.
+
+Every link of every entity that has collision geometry becomes one :class:`SceneLink`: its world pose
+now, and its shapes in the link's frame, reduced to what planners check (boxes, spheres and
+cylinders): a capsule or a cone as the cylinder around it, an ellipsoid or a mesh as its bounding box.
+Planes (the ground) are left out: an arm standing on the ground would always touch it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..description import (
+    Box,
+    Capsule,
+    Cone,
+    Cylinder,
+    Ellipsoid,
+    Mesh,
+    MeshReadError,
+    Model,
+    Pose,
+    Sphere,
+    load_mesh,
+)
+from ..physics import SEP, PhysicsWorld
+
+
+@dataclass(frozen=True)
+class SceneShape:
+    """``box`` (x, y, z sizes), ``sphere`` (radius) or ``cylinder`` (height, radius), at ``pose`` in its link."""
+
+    kind: str
+    dimensions: tuple[float, ...]
+    pose: Pose
+
+
+@dataclass(frozen=True)
+class SceneLink:
+    """One link's collision shapes and where the link is: ``name`` is ``entity::link``."""
+
+    name: str
+    pose: Pose
+    shapes: tuple[SceneShape, ...]
+
+
+def link_shapes(model: Model) -> dict[str, tuple[SceneShape, ...]]:
+    """Each link's collision shapes (links with none are left out)."""
+    out: dict[str, tuple[SceneShape, ...]] = {}
+    for link in model.links:
+        shapes = [s for s in (_shape(c.geometry, c.pose) for c in link.collisions) if s is not None]
+        if shapes:
+            out[link.name] = tuple(shapes)
+    return out
+
+
+def _shape(geometry: object, pose: Pose) -> SceneShape | None:
+    if isinstance(geometry, Box):
+        return SceneShape("box", tuple(float(v) for v in geometry.size), pose)
+    if isinstance(geometry, Sphere):
+        return SceneShape("sphere", (float(geometry.radius),), pose)
+    if isinstance(geometry, Cylinder | Cone):
+        return SceneShape("cylinder", (float(geometry.length), float(geometry.radius)), pose)
+    if isinstance(geometry, Capsule):
+        return SceneShape("cylinder", (float(geometry.length + 2 * geometry.radius), float(geometry.radius)), pose)
+    if isinstance(geometry, Ellipsoid):
+        return SceneShape("box", tuple(2.0 * float(r) for r in geometry.radii), pose)
+    if isinstance(geometry, Mesh) and geometry.path:
+        try:
+            vertices, _ = load_mesh(geometry.path)
+        except MeshReadError:
+            return None
+        if not len(vertices):
+            return None
+        points = np.asarray(vertices, dtype=float) * np.asarray(geometry.scale, dtype=float)
+        lo, hi = points.min(axis=0), points.max(axis=0)
+        center = Pose(tuple(float(v) for v in (lo + hi) / 2))  # type: ignore[arg-type]
+        return SceneShape("box", tuple(float(max(v, 1e-4)) for v in hi - lo), pose * center)
+    return None  # a plane, or a mesh that could not be found
+
+
+class SceneGeometry:
+    """The world's collision geometry, kept per entity; call :meth:`links` on the simulation thread."""
+
+    def __init__(self) -> None:
+        self._shapes: dict[tuple[str, int], dict[str, tuple[SceneShape, ...]]] = {}
+
+    def links(self, world: PhysicsWorld) -> list[SceneLink]:
+        """Every entity link with collision shapes, at its pose now."""
+        out: list[SceneLink] = []
+        seen = set()
+        for name, entity in list(world.entities.items()):
+            key = (name, id(entity.model))
+            seen.add(key)
+            shapes = self._shapes.get(key)
+            if shapes is None:
+                shapes = self._shapes[key] = link_shapes(entity.model)
+            for link, link_shapes_ in shapes.items():
+                try:
+                    pose = world.body_pose(world.body_id(name, link))
+                except Exception:  # a link without a body of its own
+                    continue
+                out.append(SceneLink(f"{name}{SEP}{link}", pose, link_shapes_))
+        for key in set(self._shapes) - seen:
+            del self._shapes[key]
+        return out
+
+
+def moved(a: Pose, b: Pose, distance: float = 1e-3, angle: float = 0.01) -> bool:
+    """Whether two poses differ by more than ``distance`` metres or ``angle`` radians."""
+    if math.dist(a.position, b.position) > distance:
+        return True
+    dot = abs(sum(x * y for x, y in zip(a.orientation, b.orientation)))
+    return 2.0 * math.acos(min(1.0, dot)) > angle

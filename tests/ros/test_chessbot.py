@@ -1,0 +1,142 @@
+"""The seed's chess robot: two arms at a table with the seed's board, moved by the seed's r2 aliases.
+
+examples/chessbot: the dual-arm Panda macro of dual_arm_panda_moveit_config with its bases 60 cm apart
+on a table, that config's SRDF, ros2_controllers.yaml, joint_limits.yaml and moveit_controllers.yaml
+unchanged (its Ros2ControlManager: move_group finds the arms' controllers from the controller
+manager), the seed's board spawned by examples/chessboard/spawn_chessboard.py, and `r2home` from
+examples/chessbot/r2.bash. The table, the board and the pieces reach move_group's planning scene from
+the simulation.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import subprocess
+import sys
+from collections.abc import Iterator
+from pathlib import Path
+
+import numpy as np
+import pytest
+from _paths import REAL as FIXTURES
+from _paths import REPO
+
+from .conftest import GAZELLE, RosClient, start, wait_for
+
+pytestmark = pytest.mark.slow
+
+PANDA = FIXTURES / "moveit_panda"
+DUAL = PANDA / "dual_arm_panda_moveit_config" / "config"
+CHESSBOT = REPO / "examples" / "chessbot"
+R2_CLI = CHESSBOT / "r2_cli.py"
+
+
+@pytest.fixture(scope="module")
+def chessbot(ros_env) -> Iterator[RosClient]:
+    os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
+    try:
+        # twice real time: the arms move in sim time, and the suite waits less for them
+        sim = start([*GAZELLE, "sim", "--no-viewer", "--rtf", "2"], "gazelle sim")
+        sim.wait_line("gazelle: ready", timeout=60)
+        for name, path in (("table", CHESSBOT / "table.sdf"), ("chessbot", CHESSBOT / "chessbot.urdf.xacro")):
+            spawn = start([*GAZELLE, "spawn", "-entity", name, "-file", str(path)], f"spawn {name}")
+            assert spawn.wait(120) == 0, spawn.output
+        board = start([sys.executable, str(REPO / "examples" / "chessboard" / "spawn_chessboard.py")], "board")
+        assert board.wait(120) == 0, board.output
+        controllers = ["joint_state_broadcaster", "left_arm_controller", "right_arm_controller"]
+        spawner = start([*GAZELLE, "spawner", *controllers, "-p", str(DUAL / "ros2_controllers.yaml")], "spawner")
+        assert spawner.wait(60) == 0, spawner.output
+        move_group = start(
+            [
+                *GAZELLE,
+                "move_group",
+                "--urdf",
+                str(CHESSBOT / "chessbot.urdf.xacro"),
+                "--srdf",
+                str(DUAL / "panda.srdf"),
+                "--config",
+                str(DUAL),
+            ],
+            "move_group",
+        )
+        move_group.wait_line("You can start planning now!", timeout=60)
+        ros = RosClient("chessbot_test")
+        try:
+            yield ros
+        finally:
+            ros.close()
+    finally:
+        os.environ.pop("GAZELLE_RESOURCE_PATH", None)
+
+
+def _pose(ros: RosClient, name: str) -> np.ndarray:
+    p = ros.entity_state(name).state.pose
+    return np.array(
+        [p.position.x, p.position.y, p.position.z, p.orientation.x, p.orientation.y, p.orientation.z, p.orientation.w]
+    )
+
+
+def _pieces(ros: RosClient) -> dict[str, np.ndarray]:
+    names = ["chess_board"] + [f"piece_r{r}_c{c}" for r in (0, 1, 6, 7) for c in range(8)]
+    return {n: _pose(ros, n)[:3] for n in names}
+
+
+def _r2(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, str(R2_CLI), *args], capture_output=True, text=True, timeout=120)
+
+
+def _at(ros: RosClient, link: str, xyz: tuple[float, float, float]) -> float:
+    return float(np.linalg.norm(_pose(ros, f"chessbot::{link}")[:3] - np.array(xyz)))
+
+
+def test_the_table_board_and_pieces_are_in_the_planning_scene_and_the_robot_is_not(chessbot):
+    from moveit_msgs.srv import GetPlanningScene
+
+    def ids() -> list[str]:
+        scene = chessbot.call(GetPlanningScene, "/get_planning_scene", GetPlanningScene.Request()).scene
+        return sorted(o.id for o in scene.world.collision_objects)
+
+    listed = wait_for(lambda: (lambda i: i if len(i) == 34 else None)(ids()), 20, "34 objects in the scene")
+    assert "table::top" in listed and "chess_board::link" in listed
+    assert not [i for i in listed if i.startswith("chessbot::")]
+
+
+def test_r2home_moves_both_arms_to_their_home_poses(chessbot):
+    r2 = subprocess.run(
+        ["bash", "-c", f"shopt -s expand_aliases\nsource {CHESSBOT / 'r2.bash'}\nr2home"],  # as typed, line by line
+        capture_output=True,
+        text=True,
+        timeout=240,
+        env={**os.environ, "PATH": f"{Path(sys.executable).parent}:{os.environ['PATH']}"},  # the venv, activated
+    )
+    assert r2.returncode == 0, r2.stdout + r2.stderr
+    # the aliases' targets (r2.bash): both flanges 1 mm from them in the simulation
+    assert _at(chessbot, "left_panda_link8", (0.05, 1.3, 1.15)) < 1e-3
+    assert _at(chessbot, "right_panda_link8", (0.45, 1.3, 1.15)) < 1e-3
+
+
+def test_the_arms_cross_over_the_board_around_each_other_and_touch_nothing(chessbot):
+    before = _pieces(chessbot)
+    # each hand to the other's side: once the left arm is there, the right arm's straight way in joint
+    # space from home to its goal runs through the left arm (25 of 41 points, checked with the planner)
+    left_goal, right_goal = (0.4, 1.5, 1.1), (0.0, 1.25, 1.1)
+    run = _r2("left", *map(str, left_goal), str(math.pi), "0", "-0.785")
+    assert run.returncode == 0, run.stdout + run.stderr
+    run = _r2("right", *map(str, right_goal), str(math.pi), "0", "-0.785")
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert _at(chessbot, "left_panda_link8", left_goal) < 1e-3
+    assert _at(chessbot, "right_panda_link8", right_goal) < 1e-3
+    after = _pieces(chessbot)
+    moved = {n: float(np.linalg.norm(after[n] - before[n])) for n in before}
+    assert max(moved.values()) < 1e-3, {n: d for n, d in moved.items() if d >= 1e-3}
+
+
+def test_an_unknown_arm_and_an_unreachable_pose_are_refused_and_nothing_moves(chessbot):
+    before = _pose(chessbot, "chessbot::left_panda_link8")
+    run = _r2("middle", "0", "0", "1", "0", "0", "0")
+    assert run.returncode == 1 and "unknown arm: 'middle'" in run.stderr
+    run = _r2("left", "3.0", "1.3", "1.1", str(math.pi), "0", "0")
+    assert run.returncode == 1 and "error -31" in run.stderr, run.stderr  # NO_IK_SOLUTION
+    after = _pose(chessbot, "chessbot::left_panda_link8")
+    assert np.linalg.norm(after[:3] - before[:3]) < 1e-3

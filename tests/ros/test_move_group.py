@@ -1,0 +1,514 @@
+"""gazelle's move_group against a simulated Panda, through MoveIt's own ROS interfaces only.
+
+One simulation for the module: the Panda of moveit_resources_panda_moveit_config (bolted to the
+world by examples/arms/panda_on_table.urdf.xacro), its ros2_controllers.yaml through the spawner,
+and `ros2 run gazelle move_group` with the config's URDF, SRDF, joint_limits.yaml and
+moveit_controllers.yaml, unchanged. Where the arm ends up is read from the simulation
+(/get_entity_state), not from the planner.
+"""
+
+from __future__ import annotations
+
+import math
+import subprocess
+import sys
+import threading
+import xml.etree.ElementTree as ET
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+from _paths import REAL as FIXTURES
+from _paths import REPO
+from builtin_interfaces.msg import Duration
+from moveit_msgs.action import ExecuteTrajectory, MoveGroup
+from moveit_msgs.msg import Constraints, JointConstraint, MoveItErrorCodes
+from moveit_msgs.srv import GetPositionFK, GetPositionIK, GetStateValidity
+from rclpy.action import ActionClient
+from sensor_msgs.msg import JointState
+from trajectory_msgs.msg import JointTrajectoryPoint
+
+from .conftest import GAZELLE, RosClient, start, wait_for
+
+pytestmark = pytest.mark.slow
+
+PANDA = FIXTURES / "moveit_panda"
+CONFIG = PANDA / "moveit_resources_panda_moveit_config" / "config"
+ON_TABLE = REPO / "examples" / "arms" / "panda_on_table.urdf.xacro"
+MOVE_TO_POSE = REPO / "examples" / "arms" / "move_to_pose.py"
+ARM = [f"panda_joint{i}" for i in range(1, 8)]
+IN_SELF_COLLISION = [0.0, 1.0, 0.0, -3.0, 0.0, 1.571, 0.785]  # the hand inside the base
+
+
+class Panda:
+    """The module's simulation, move_group and an observing rclpy node."""
+
+    def __init__(self, ros: RosClient, sim: Any, move_group: Any) -> None:
+        self.ros, self.sim, self.move_group = ros, sim, move_group
+        self._joints: dict[str, float] = {}
+        self.stamp = 0.0  # sim time of the latest /joint_states
+        self._lock = threading.Lock()
+        ros.node.create_subscription(JointState, "/joint_states", self._on_joints, 10)
+        from moveit_msgs.msg import DisplayTrajectory
+
+        self.displayed: list[DisplayTrajectory] = []
+        ros.node.create_subscription(DisplayTrajectory, "/display_planned_path", self.displayed.append, 10)
+        self.move = ActionClient(ros.node, MoveGroup, "/move_action")
+        self.execute = ActionClient(ros.node, ExecuteTrajectory, "/execute_trajectory")
+
+    def _on_joints(self, msg: JointState) -> None:
+        with self._lock:
+            self._joints.update(zip(msg.name, msg.position))
+            self.stamp = msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9
+
+    def joints(self) -> dict[str, float]:
+        wait_for(lambda: all(j in self._joints for j in ARM), 15, "/joint_states of the arm")
+        with self._lock:
+            return dict(self._joints)
+
+    def link_pose(self, link: str) -> np.ndarray:
+        """The link's pose in the world, from the simulation: position and quaternion (x, y, z, w)."""
+        state = self.ros.entity_state(f"panda::{link}")
+        assert state.success, f"no link {link} in the simulation"
+        p, q = state.state.pose.position, state.state.pose.orientation
+        return np.array([p.x, p.y, p.z, q.x, q.y, q.z, q.w])
+
+    def action(self, client: ActionClient, goal: Any, timeout: float = 60.0) -> Any:
+        assert client.wait_for_server(timeout_sec=30), "move_group's action server is not up"
+        done = threading.Event()
+        box: dict[str, Any] = {}
+
+        def on_goal(f: Any) -> None:
+            handle = f.result()
+            box["accepted"] = handle.accepted
+            if not handle.accepted:
+                done.set()
+                return
+            handle.get_result_async().add_done_callback(lambda r: (box.__setitem__("result", r.result()), done.set()))
+
+        # sent from the executor's thread: from this one, a reply that came back before rclpy filed the
+        # request was dropped and the goal never answered (ros2/rclpy#1123)
+        self.ros.executor.create_task(lambda: client.send_goal_async(goal).add_done_callback(on_goal))
+        assert done.wait(timeout), f"no result within {timeout} s; move_group said:\n{self.move_group.output}"
+        assert box["accepted"], "goal rejected"
+        return box["result"].result
+
+    def joint_goal(self, values: dict[str, float], group: str = "panda_arm") -> Any:
+        goal = MoveGroup.Goal()
+        goal.request.group_name = group
+        goal.request.max_velocity_scaling_factor = 1.0
+        goal.request.max_acceleration_scaling_factor = 1.0
+        goal.request.allowed_planning_time = 5.0
+        goal.request.goal_constraints.append(
+            Constraints(
+                joint_constraints=[
+                    JointConstraint(
+                        joint_name=n, position=float(v), tolerance_above=1e-4, tolerance_below=1e-4, weight=1.0
+                    )
+                    for n, v in values.items()
+                ]
+            )
+        )
+        return goal
+
+
+@pytest.fixture(scope="module")
+def panda(ros_env) -> Iterator[Panda]:
+    import os
+
+    os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
+    # twice real time: the arm moves in sim time, and the suite waits less for it
+    sim = start([*GAZELLE, "sim", "--no-viewer", "--rtf", "2"], "gazelle sim")
+    sim.wait_line("gazelle: ready", timeout=60)
+    spawn = start([*GAZELLE, "spawn", "-entity", "panda", "-file", str(ON_TABLE)], "spawn")
+    assert spawn.wait(120) == 0, spawn.output
+    spawner = start(
+        [
+            *GAZELLE,
+            "spawner",
+            "joint_state_broadcaster",
+            "panda_arm_controller",
+            "-p",
+            str(CONFIG / "ros2_controllers.yaml"),
+        ],
+        "spawner",
+    )
+    assert spawner.wait(60) == 0, spawner.output
+    move_group = start(
+        [
+            str(Path(sys.prefix) / "bin" / "ros2"),
+            "run",
+            "gazelle",
+            "move_group",
+            "--urdf",
+            str(CONFIG / "panda.urdf.xacro"),
+            "--srdf",
+            str(CONFIG / "panda.srdf"),
+            "--config",
+            str(CONFIG),
+        ],
+        "move_group",
+    )
+    move_group.wait_line("You can start planning now!", timeout=60)
+    ros = RosClient("move_group_test")
+    try:
+        yield Panda(ros, sim, move_group)
+    finally:
+        ros.close()
+        os.environ.pop("GAZELLE_RESOURCE_PATH", None)
+
+
+def _group_states(group: str) -> dict[str, dict[str, float]]:
+    root = ET.parse(CONFIG / "panda.srdf").getroot()
+    return {
+        gs.get("name"): {j.get("name"): float(j.get("value")) for j in gs.findall("joint")}
+        for gs in root.findall("group_state")
+        if gs.get("group") == group
+    }
+
+
+def test_the_srdf_named_states_ready_and_extended_are_reached_within_a_milliradian(panda):
+    states = _group_states("panda_arm")
+    for name in ("extended", "ready"):
+        # a MoveIt client's set_named_target: the SRDF group_state as joint constraints
+        result = panda.action(panda.move, panda.joint_goal(states[name]))
+        assert result.error_code.val == MoveItErrorCodes.SUCCESS, (name, result.error_code.message)
+        target = states[name]
+
+        def arrived(target: dict[str, float] = target) -> dict[str, float] | None:
+            js = panda.joints()
+            return js if max(abs(js[j] - v) for j, v in target.items()) < 1e-3 else None
+
+        reached = wait_for(arrived, 10, f"the arm at '{name}'")
+        errors = {j: abs(reached[j] - v) for j, v in states[name].items()}
+        assert max(errors.values()) < 1e-3, errors
+    # each plan was shown on /display_planned_path, as MoveIt's move_group shows it
+    shown = wait_for(lambda: len(panda.displayed) >= 2 and panda.displayed, 5, "two /display_planned_path messages")
+    assert shown[-1].model_id == "panda" and shown[-1].trajectory[0].joint_trajectory.joint_names == ARM
+
+
+def _fk(panda: Panda, joints: dict[str, float], links: list[str]) -> list[Any]:
+    req = GetPositionFK.Request()
+    req.header.frame_id = "panda_link0"
+    req.fk_link_names = links
+    req.robot_state.joint_state.name = list(joints)
+    req.robot_state.joint_state.position = [float(v) for v in joints.values()]
+    res = panda.ros.call(GetPositionFK, "/compute_fk", req)
+    assert res.error_code.val == MoveItErrorCodes.SUCCESS, res.error_code.message
+    return [ps.pose for ps in res.pose_stamped]
+
+
+def _reachable_poses(panda: Panda, count: int, seed: int) -> list[tuple[float, ...]]:
+    """Poses of panda_link8 at random collision-free joint values, with the arm clear of the floor."""
+    rng = np.random.default_rng(seed)
+    lo = np.array([-2.8, -1.7, -2.8, -3.0, -2.8, 0.0, -2.8])
+    hi = np.array([2.8, 1.7, 2.8, -0.1, 2.8, 3.7, 2.8])
+    out: list[tuple[float, ...]] = []
+    while len(out) < count:
+        joints = dict(zip(ARM, rng.uniform(lo, hi)))
+        valid = GetStateValidity.Request()
+        valid.group_name = "panda_arm"
+        valid.robot_state.joint_state.name = list(joints)
+        valid.robot_state.joint_state.position = list(joints.values())
+        if not panda.ros.call(GetStateValidity, "/check_state_validity", valid).valid:
+            continue
+        poses = _fk(panda, joints, ["panda_link3", "panda_link5", "panda_link7", "panda_link8"])
+        if min(p.position.z for p in poses) < 0.15:
+            continue
+        p = poses[-1]
+        out.append(
+            (
+                p.position.x,
+                p.position.y,
+                p.position.z,
+                p.orientation.x,
+                p.orientation.y,
+                p.orientation.z,
+                p.orientation.w,
+            )
+        )
+    return out
+
+
+def _angle(q1: np.ndarray, q2: np.ndarray) -> float:
+    return 2 * math.acos(min(1.0, abs(float(np.dot(q1 / np.linalg.norm(q1), q2 / np.linalg.norm(q2))))))
+
+
+def test_a_plain_moveit_client_moves_the_panda_to_pose_goals_within_a_millimetre(panda):
+    """examples/arms/move_to_pose.py is written against MoveIt's MoveGroup action only, as its tutorials are."""
+    for goal in _reachable_poses(panda, 2, seed=7):  # bench/bench_planning.py runs 20
+        run = subprocess.run(
+            [sys.executable, str(MOVE_TO_POSE), "panda_arm", "panda_link8", "panda_link0", *map(str, goal)],
+            capture_output=True,
+            text=True,
+            timeout=90,
+        )
+        assert run.returncode == 0, run.stdout + run.stderr
+
+        # the simulation's link, at rest after the controller's goal: the base is at the world origin
+        def arrived(goal: tuple[float, ...] = goal) -> bool:
+            return bool(np.linalg.norm(panda.link_pose("panda_link8")[:3] - goal[:3]) < 1e-3)
+
+        wait_for(arrived, 10, f"panda_link8 at {goal[:3]}")
+        at = panda.link_pose("panda_link8")
+        assert np.linalg.norm(at[:3] - np.array(goal[:3])) < 1e-3
+        assert _angle(at[3:], np.array(goal[3:])) < 0.01
+
+
+def test_compute_ik_inverts_compute_fk(panda):
+    (goal,) = _reachable_poses(panda, 1, seed=11)
+    req = GetPositionIK.Request()
+    req.ik_request.group_name = "panda_arm"
+    req.ik_request.ik_link_name = "panda_link8"
+    req.ik_request.avoid_collisions = True
+    req.ik_request.pose_stamped.header.frame_id = "panda_link0"
+    pose = req.ik_request.pose_stamped.pose
+    pose.position.x, pose.position.y, pose.position.z = goal[:3]
+    pose.orientation.x, pose.orientation.y, pose.orientation.z, pose.orientation.w = goal[3:]
+    req.ik_request.timeout = Duration(sec=1)
+    res = panda.ros.call(GetPositionIK, "/compute_ik", req)
+    assert res.error_code.val == MoveItErrorCodes.SUCCESS, res.error_code.message
+    solution = dict(zip(res.solution.joint_state.name, res.solution.joint_state.position))
+    (back,) = _fk(panda, solution, ["panda_link8"])
+    assert math.dist((back.position.x, back.position.y, back.position.z), goal[:3]) < 1e-3
+
+
+def _at_rest(panda: Panda) -> dict[str, float]:
+    """The arm's joints once two readings 0.3 s of sim time apart agree within 1e-4 rad."""
+    box: dict[str, Any] = {}
+
+    def settled() -> dict[str, float] | None:
+        now = panda.joints()
+        last = box.get("last")
+        if last is not None and panda.stamp - last[0] >= 0.3:
+            box["last"] = (panda.stamp, now)
+            if max(abs(now[j] - last[1][j]) for j in ARM) < 1e-4:
+                return now
+        elif last is None:
+            box["last"] = (panda.stamp, now)
+        return None
+
+    return wait_for(settled, 15, "the arm at rest")
+
+
+def test_bad_goals_get_moveit_error_codes_with_messages_nothing_moves_and_the_node_stays_up(panda):
+    before = _at_rest(panda)
+
+    unknown_group = panda.joint_goal({"panda_joint1": 0.1}, group="left_arm")
+    result = panda.action(panda.move, unknown_group)
+    assert result.error_code.val == MoveItErrorCodes.INVALID_GROUP_NAME
+    assert "left_arm" in result.error_code.message
+
+    unreachable = MoveGroup.Goal()
+    unreachable.request.group_name = "panda_arm"
+    from moveit_msgs.msg import PositionConstraint
+    from shape_msgs.msg import SolidPrimitive
+
+    pc = PositionConstraint(link_name="panda_link8")
+    pc.header.frame_id = "panda_link0"
+    pc.constraint_region.primitives.append(SolidPrimitive(type=SolidPrimitive.SPHERE, dimensions=[0.001]))
+    far = pc.constraint_region.primitive_poses
+    from geometry_msgs.msg import Pose
+
+    far.append(Pose())
+    far[0].position.x, far[0].position.z, far[0].orientation.w = 2.0, 0.5, 1.0
+    unreachable.request.goal_constraints.append(Constraints(position_constraints=[pc]))
+    result = panda.action(panda.move, unreachable)
+    assert result.error_code.val == MoveItErrorCodes.NO_IK_SOLUTION
+    assert result.error_code.message
+
+    result = panda.action(panda.move, panda.joint_goal(dict(zip(ARM, IN_SELF_COLLISION))))
+    assert result.error_code.val == MoveItErrorCodes.GOAL_IN_COLLISION
+    assert "collision" in result.error_code.message
+
+    # a trajectory that leaves panda_joint4's limits (upper 0.0873 rad) in half a second
+    beyond = ExecuteTrajectory.Goal()
+    jt = beyond.trajectory.joint_trajectory
+    jt.joint_names = ARM
+    start = [before[j] for j in ARM]
+    jt.points.append(JointTrajectoryPoint(positions=start, time_from_start=Duration(sec=0)))
+    jt.points.append(
+        JointTrajectoryPoint(positions=[*start[:3], 1.0, *start[4:]], time_from_start=Duration(nanosec=500_000_000))
+    )
+    result = panda.action(panda.execute, beyond)
+    assert result.error_code.val == MoveItErrorCodes.INVALID_MOTION_PLAN
+    assert "panda_joint4" in result.error_code.message
+
+    after = panda.joints()
+    moved = {j: abs(after[j] - before[j]) for j in ARM}
+    assert max(moved.values()) < 1e-3, moved  # a goal that ran would move a joint by 0.1 rad or more
+    assert panda.move_group.popen.poll() is None
+    _fk(panda, after, ["panda_link8"])  # and still answers
+
+
+def _ready(panda: Panda) -> dict[str, float]:
+    ready = _group_states("panda_arm")["ready"]
+    result = panda.action(panda.move, panda.joint_goal(ready))
+    assert result.error_code.val == MoveItErrorCodes.SUCCESS, result.error_code.message
+    return ready
+
+
+def test_compute_cartesian_path_draws_a_20_cm_line_that_the_arm_follows_within_2_mm(panda):
+    from geometry_msgs.msg import Pose
+    from moveit_msgs.srv import GetCartesianPath
+
+    ready = _ready(panda)
+    (begin,) = _fk(panda, ready, ["panda_link8"])
+    end = Pose(position=type(begin.position)(x=begin.position.x, y=begin.position.y + 0.2, z=begin.position.z))
+    end.orientation = begin.orientation
+    req = GetCartesianPath.Request()
+    req.header.frame_id = "panda_link0"
+    req.group_name = "panda_arm"
+    req.link_name = "panda_link8"
+    req.waypoints = [end]
+    req.max_step = 0.01
+    req.avoid_collisions = True
+    req.start_state.joint_state.name = list(ready)
+    req.start_state.joint_state.position = list(ready.values())
+    res = panda.ros.call(GetCartesianPath, "/compute_cartesian_path", req)
+    assert res.error_code.val == MoveItErrorCodes.SUCCESS, res.error_code.message
+    assert res.fraction == pytest.approx(1.0)
+
+    start = np.array([begin.position.x, begin.position.y, begin.position.z])
+    samples: list[np.ndarray] = []
+    stop = threading.Event()
+
+    def watch() -> None:  # the simulation's flange while the arm moves
+        while not stop.is_set():
+            samples.append(panda.link_pose("panda_link8")[:3])
+
+    watcher = threading.Thread(target=watch, daemon=True)
+    watcher.start()
+    goal = ExecuteTrajectory.Goal(trajectory=res.solution)
+    result = panda.action(panda.execute, goal)
+    stop.set()
+    watcher.join(10)
+    assert result.error_code.val == MoveItErrorCodes.SUCCESS, result.error_code.message
+    assert len(samples) > 10
+    off_line = [float(np.linalg.norm(np.cross(p - start, [0.0, 1.0, 0.0]))) for p in samples]
+    assert max(off_line) < 2e-3, max(off_line)
+    travelled = max(p[1] - start[1] for p in samples)
+    assert travelled == pytest.approx(0.2, abs=2e-3)
+
+
+def test_an_object_applied_to_the_planning_scene_is_listed_planned_around_and_removed(panda):
+    from geometry_msgs.msg import Pose
+    from moveit_msgs.msg import CollisionObject, PlanningScene
+    from moveit_msgs.srv import ApplyPlanningScene, GetPlanningScene, GetStateValidity
+    from shape_msgs.msg import SolidPrimitive
+
+    ready = _ready(panda)
+    (hand,) = _fk(panda, ready, ["panda_link8"])
+    box = CollisionObject(id="crate", operation=CollisionObject.ADD)
+    box.header.frame_id = "panda_link0"
+    box.pose = Pose()
+    box.pose.position.x, box.pose.position.y, box.pose.position.z = hand.position.x, 0.0, hand.position.z - 0.25
+    box.pose.orientation.w = 1.0
+    box.primitives = [SolidPrimitive(type=SolidPrimitive.BOX, dimensions=[0.2, 0.2, 0.2])]
+    box.primitive_poses = [Pose()]
+    box.primitive_poses[0].orientation.w = 1.0
+    scene = PlanningScene(is_diff=True)
+    scene.world.collision_objects = [box]
+    assert panda.ros.call(ApplyPlanningScene, "/apply_planning_scene", ApplyPlanningScene.Request(scene=scene)).success
+
+    listed = panda.ros.call(GetPlanningScene, "/get_planning_scene", GetPlanningScene.Request())
+    assert [o.id for o in listed.scene.world.collision_objects] == ["crate"]
+    assert list(listed.scene.world.collision_objects[0].primitives[0].dimensions) == [0.2, 0.2, 0.2]
+
+    def valid(joints: dict[str, float]) -> bool:
+        req = GetStateValidity.Request(group_name="panda_arm")
+        req.robot_state.joint_state.name = list(joints)
+        req.robot_state.joint_state.position = [float(v) for v in joints.values()]
+        return panda.ros.call(GetStateValidity, "/check_state_validity", req).valid
+
+    reaching_down = {**ready, "panda_joint2": 0.1, "panda_joint4": -2.3}  # the hand in the crate
+    assert valid(ready) and not valid(reaching_down)
+    goal = panda.joint_goal(reaching_down)
+    result = panda.action(panda.move, goal)
+    assert result.error_code.val == MoveItErrorCodes.GOAL_IN_COLLISION
+
+    # across the crate: joint 1 from -1.2 to 1.2 rad at a height where the straight way goes through it
+    left, right = {**reaching_down, "panda_joint1": -1.2}, {**reaching_down, "panda_joint1": 1.2}
+    assert valid(left) and valid(right)
+    goal = panda.joint_goal(right)
+    goal.request.start_state.joint_state.name = list(left)
+    goal.request.start_state.joint_state.position = list(left.values())
+    goal.planning_options.plan_only = True
+    result = panda.action(panda.move, goal)
+    assert result.error_code.val == MoveItErrorCodes.SUCCESS, result.error_code.message
+    points = result.planned_trajectory.joint_trajectory
+    assert len(points.points) > 2
+    for point in points.points[:: max(1, len(points.points) // 25)]:  # some 25 of them, through a service each
+        assert valid(dict(zip(points.joint_names, point.positions)))
+
+    removal = PlanningScene(is_diff=True)
+    removal.world.collision_objects = [CollisionObject(id="crate", operation=CollisionObject.REMOVE)]
+    assert panda.ros.call(
+        ApplyPlanningScene, "/apply_planning_scene", ApplyPlanningScene.Request(scene=removal)
+    ).success
+    listed = panda.ros.call(GetPlanningScene, "/get_planning_scene", GetPlanningScene.Request())
+    assert list(listed.scene.world.collision_objects) == []
+    assert valid(reaching_down)
+
+
+PILLAR = """<sdf version="1.9"><model name="pillar"><link name="link">
+  <inertial><mass>0.5</mass></inertial>
+  <collision name="c"><geometry><box><size>0.08 0.08 0.3</size></box></geometry></collision>
+  <visual name="v"><geometry><box><size>0.08 0.08 0.3</size></box></geometry></visual>
+</link></model></sdf>"""
+
+
+def test_the_simulated_world_is_in_the_planning_scene_and_the_arm_goes_around_it_without_touching(panda):
+    from gazebo_msgs.srv import DeleteEntity, SpawnEntity
+    from moveit_msgs.srv import GetPlanningScene
+
+    ready = _ready(panda)
+    # a free-standing pillar 30 cm tall, 45 cm in front of the arm, where the hand passes when joint 1
+    # swings with the arm low (below): the straight way goes through it; touched, it tips over
+    req = SpawnEntity.Request(name="pillar", xml=PILLAR)
+    req.initial_pose.position.x, req.initial_pose.position.z = 0.45, 0.15
+    assert panda.ros.call(SpawnEntity, "/spawn_entity", req).success
+
+    def scene_ids() -> list[str]:
+        scene = panda.ros.call(GetPlanningScene, "/get_planning_scene", GetPlanningScene.Request()).scene
+        return sorted(o.id for o in scene.world.collision_objects)
+
+    assert wait_for(lambda: scene_ids() == ["pillar::link"], 15, "the pillar in move_group's planning scene")
+    before = panda.ros.entity_state("pillar").state.pose.position
+
+    low = {**ready, "panda_joint2": 0.35, "panda_joint4": -2.1}  # the hand at 47 cm out and 22 cm up
+    left, right = {**low, "panda_joint1": -1.0}, {**low, "panda_joint1": 1.0}
+    result = panda.action(panda.move, panda.joint_goal(left))
+    assert result.error_code.val == MoveItErrorCodes.SUCCESS, result.error_code.message
+    result = panda.action(panda.move, panda.joint_goal(right))
+    assert result.error_code.val == MoveItErrorCodes.SUCCESS, result.error_code.message
+    after = panda.ros.entity_state("pillar").state.pose.position
+    assert math.dist((before.x, before.y, before.z), (after.x, after.y, after.z)) < 1e-3, "the arm touched the pillar"
+    wait_for(lambda: abs(panda.joints()["panda_joint1"] - 1.0) < 1e-3, 10, "joint 1 at 1.0 rad")
+
+    assert panda.ros.call(DeleteEntity, "/delete_entity", DeleteEntity.Request(name="pillar")).success
+    wait_for(lambda: scene_ids() == [], 15, "the pillar gone from the planning scene")
+
+
+def _arm(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([*GAZELLE, "arm", *args], capture_output=True, text=True, timeout=120, cwd=REPO)
+
+
+def test_gazelle_arm_moves_to_a_named_state_plans_to_a_pose_and_refuses_an_unknown_state(panda):
+    run = _arm("panda_arm", "--named", "extended", "--velocity", "1")
+    assert run.returncode == 0, run.stdout + run.stderr
+    extended = _group_states("panda_arm")["extended"]
+    wait_for(lambda: max(abs(panda.joints()[j] - v) for j, v in extended.items()) < 1e-3, 10, "the arm at 'extended'")
+
+    # a pose, planned only (the motions themselves are the MoveGroup goals tested above)
+    run = _arm("panda_arm", "0.45", "-0.1", "0.4", str(math.pi), "0", "0", "--frame", "panda_link0", "--plan-only")
+    assert run.returncode == 0 and "panda_arm: planned in" in run.stdout, run.stdout + run.stderr
+
+    before = panda.joints()
+    run = _arm("panda_arm", "--named", "r2home")  # the other refusals are tested in tests/test_arm_cli.py
+    assert run.returncode == 1
+    assert "no named state 'r2home'" in run.stderr and "ready" in run.stderr and "Traceback" not in run.stderr
+    after = panda.joints()
+    assert max(abs(after[j] - before[j]) for j in ARM) < 1e-3

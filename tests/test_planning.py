@@ -1,0 +1,225 @@
+"""gazelle.planning on the Panda of moveit_resources_panda_moveit_config (its URDF, SRDF and
+joint_limits.yaml unchanged): MoveIt's error names, IK, collision checking and timing."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import yaml
+from _paths import REAL
+
+PANDA = REAL / "moveit_panda"
+CONFIG = PANDA / "moveit_resources_panda_moveit_config" / "config"
+ARM = [f"panda_joint{i}" for i in range(1, 8)]
+READY = dict(zip(ARM, [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785]))
+IN_SELF_COLLISION = dict(zip(ARM, [0.0, 1.0, 0.0, -3.0, 0.0, 1.571, 0.785]))  # the hand inside the base
+
+
+@pytest.fixture(scope="module")
+def planner():
+    pytest.importorskip("roboplan")
+    import os
+
+    from gazelle.planning import ArmPlanner, moveit_joint_limits
+    from gazelle.ros._move_group import _read_description
+
+    os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)  # the meshes are read from the resource roots only
+    try:
+        urdf = _read_description(str(CONFIG / "panda.urdf.xacro"))
+        limits = moveit_joint_limits(yaml.safe_load((CONFIG / "joint_limits.yaml").read_text()))
+        return ArmPlanner(urdf, (CONFIG / "panda.srdf").read_text(), joint_limits=limits, seed=1)
+    finally:
+        os.environ.pop("GAZELLE_RESOURCE_PATH")
+
+
+def test_the_srdf_groups_named_states_and_tip_come_from_the_file(planner):
+    assert planner.groups == ["panda_arm", "hand", "panda_arm_hand"]
+    assert planner.group_joints("panda_arm") == ARM
+    assert planner.tip_link("panda_arm") == "panda_link8"
+    assert planner.named_state("panda_arm", "ready") == pytest.approx(READY)
+    assert planner.root_link == "panda_link0"
+    assert planner.warnings == []
+
+
+def test_srdf_groups_and_end_effectors_naming_what_the_urdf_lacks_are_warnings_at_their_lines():
+    """A config written for another robot (or a misspelled link): the group is left out, with a warning
+    naming the file, the group's line and the missing link and joint; the other groups stay."""
+    pytest.importorskip("roboplan")
+    import os
+
+    from gazelle.planning import ArmPlanner
+    from gazelle.ros._move_group import _read_description
+
+    srdf = (CONFIG / "panda.srdf").read_text()
+    extra = '<group name="gripper2"><link name="no_such_finger"/><joint name="no_such_joint"/></group>'
+    # a group of groups that needs it: left out too
+    both = '<group name="both"><group name="panda_arm"/><group name="gripper2"/></group>'
+    # an end effector naming a group that does not exist (YuMi's and R2's SRDFs have one)
+    ee = '<end_effector name="ghost_hand" parent_link="panda_link8" group="ghost"/>'
+    srdf = srdf.replace("</robot>", f"\n{extra}\n{both}\n{ee}\n</robot>")
+    line = srdf.splitlines().index(extra) + 1
+    os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
+    try:
+        urdf = _read_description(str(CONFIG / "panda.urdf.xacro"))
+        planner = ArmPlanner(urdf, srdf, srdf_source="panda.srdf", seed=1)
+    finally:
+        os.environ.pop("GAZELLE_RESOURCE_PATH")
+    assert planner.groups == ["panda_arm", "hand", "panda_arm_hand"]
+    warning = next(w for w in planner.warnings if "gripper2" in w)
+    assert warning.startswith(f"panda.srdf:{line}: "), warning
+    assert "link 'no_such_finger'" in warning and "joint 'no_such_joint'" in warning, warning
+    warning = next(w for w in planner.warnings if "'both'" in w)
+    assert warning.startswith(f"panda.srdf:{line + 1}: ") and "group 'gripper2'" in warning, warning
+    warning = next(w for w in planner.warnings if "ghost_hand" in w)
+    assert warning.startswith(f"panda.srdf:{line + 2}: ") and "group 'ghost'" in warning, warning
+
+
+def test_unknown_groups_and_named_states_are_moveit_errors_that_name_what_exists(planner):
+    from gazelle.planning import PlanningError
+
+    with pytest.raises(PlanningError) as err:
+        planner.group_joints("left_arm")
+    assert err.value.code == "INVALID_GROUP_NAME"
+    assert "panda_arm" in err.value.message
+    with pytest.raises(PlanningError) as err:
+        planner.named_state("panda_arm", "r2home")
+    assert err.value.code == "INVALID_GOAL_CONSTRAINTS"
+    assert "'r2home'" in err.value.message and "ready" in err.value.message
+
+
+def test_ik_reaches_a_pose_that_fk_gives_and_refuses_one_out_of_reach(planner):
+    from gazelle.planning import PlanningError
+
+    ready = planner.state(READY)
+    target = planner.fk(planner.state({**READY, "panda_joint1": 0.6, "panda_joint4": -1.9}), "panda_link8")
+    q = planner.ik("panda_arm", "panda_link8", target, ready)
+    reached = planner.fk(q, "panda_link8")
+    assert np.linalg.norm(reached[:3, 3] - target[:3, 3]) < 1e-4
+    assert np.allclose(reached[:3, :3], target[:3, :3], atol=2e-3)
+    assert not planner.in_collision(q)
+    far = target.copy()
+    far[:3, 3] = [2.0, 0.0, 0.5]
+    with pytest.raises(PlanningError) as err:
+        planner.ik("panda_arm", "panda_link8", far, ready, timeout=0.1)
+    assert err.value.code == "NO_IK_SOLUTION"
+
+
+def test_self_collision_honours_the_srdfs_disabled_pairs(planner):
+    # at 'ready' adjacent links touch; the SRDF disables those pairs, so the state is free
+    assert not planner.in_collision(planner.state(READY))
+    assert planner.in_collision(planner.state(IN_SELF_COLLISION))
+
+
+def test_a_plan_starts_and_ends_where_asked_and_keeps_to_the_scaled_velocity_limits(planner):
+    from gazelle.planning import PlanningError
+
+    start = planner.state(READY)
+    goal = planner.state({**READY, "panda_joint1": 1.2, "panda_joint2": 0.3})
+    vmax = np.array([2.175, 2.175, 2.175, 2.175, 2.61, 2.61, 2.61])  # joint_limits.yaml
+    full = planner.plan("panda_arm", goal, start)
+    half = planner.plan("panda_arm", goal, start, velocity_scaling=0.5, acceleration_scaling=0.5)
+    for traj in (full, half):
+        assert traj.joint_names == tuple(ARM)
+        assert traj.positions[0] == pytest.approx(start[:7], abs=1e-6)
+        assert traj.positions[-1] == pytest.approx(goal[:7], abs=1e-6)
+    assert np.all(np.abs(full.velocities) <= vmax * 1.01)
+    assert np.all(np.abs(half.velocities) <= 0.5 * vmax * 1.01)
+    assert half.duration > full.duration * 1.3
+    with pytest.raises(PlanningError) as err:
+        planner.plan("panda_arm", planner.state(IN_SELF_COLLISION), start)
+    assert err.value.code == "GOAL_IN_COLLISION"
+
+
+def test_a_box_in_the_world_is_planned_around_and_goals_inside_it_refused(planner):
+    from gazelle.planning import PlanningError
+
+    start = planner.state({**READY, "panda_joint1": -1.2})
+    goal = planner.state({**READY, "panda_joint1": 1.2})
+    wall = np.eye(4)
+    wall[:3, 3] = planner.fk(planner.state(READY), "panda_link8")[:3, 3]  # where the hand passes at 'ready'
+    planner.add_box("wall", [0.1, 0.05, 0.3], wall)
+    assert planner.in_collision(planner.state(READY))
+    try:
+        traj = planner.plan("panda_arm", goal, start)
+        for q in traj.positions:
+            full = planner.state(dict(zip(ARM, q)))
+            assert not planner.in_collision(full)
+        at_wall = planner.state({**READY})
+        with pytest.raises(PlanningError) as err:
+            planner.plan("panda_arm", at_wall, start)
+        assert err.value.code == "GOAL_IN_COLLISION"
+    finally:
+        planner.remove_object("wall")
+    assert not planner.in_collision(planner.state(READY))
+
+
+def test_an_attached_object_moves_with_its_link_and_touches_only_its_touch_links(planner):
+    from gazelle.planning import SceneObject, Shape
+
+    ready = planner.state(READY)
+    tool = np.eye(4)
+    tool[2, 3] = 0.25  # a rod from 15 to 35 cm out of the flange: between the fingers and beyond
+    shapes = (Shape("cylinder", (0.2, 0.01), np.eye(4)),)
+    hand = ("panda_hand", "panda_leftfinger", "panda_rightfinger")
+    bent = planner.state({**READY, "panda_joint6": 0.2})  # the hand turned back: the rod points at the arm
+    assert not planner.in_collision(bent)
+    try:
+        planner.add_object(SceneObject("rod", shapes, tool, link="panda_link8"))
+        assert planner.in_collision(ready)  # with the hand it is held in
+        planner.add_object(SceneObject("rod", shapes, tool, link="panda_link8", touch_links=hand))
+        assert not planner.in_collision(ready)
+        assert planner.in_collision(bent)  # it went with the hand
+        assert [o.name for o in planner.objects()] == ["rod"]
+    finally:
+        assert planner.remove_object("rod")
+    assert planner.objects() == []
+    assert not planner.in_collision(bent)
+
+
+def test_a_cartesian_path_follows_a_straight_line_and_reports_the_fraction_it_reached(planner):
+    start = planner.state(READY)
+    begin = planner.fk(start, "panda_link8")
+    end = begin.copy()
+    end[:3, 3] += [0.0, 0.2, 0.0]  # 20 cm sideways
+    traj, fraction = planner.cartesian_path("panda_arm", "panda_link8", [end], start, max_step=0.01)
+    assert fraction == pytest.approx(1.0)
+    assert traj is not None and traj.duration > 0
+    for positions in traj.positions:  # TOPP-RA's samples between the IK poses stay on the line too
+        at = planner.fk(planner.state(dict(zip(ARM, positions))), "panda_link8")[:3, 3]
+        off_line = np.linalg.norm(np.cross(at - begin[:3, 3], [0.0, 1.0, 0.0]))
+        assert off_line < 2e-3
+    assert planner.fk(planner.state(dict(zip(ARM, traj.positions[-1]))), "panda_link8")[:3, 3] == pytest.approx(
+        end[:3, 3], abs=1e-3
+    )
+    too_far = begin.copy()
+    too_far[:3, 3] += [1.5, 0.0, 0.0]  # out of reach after some 0.5 m
+    traj, fraction = planner.cartesian_path("panda_arm", "panda_link8", [too_far], start, max_step=0.01)
+    assert 0.0 < fraction < 0.6
+
+
+def test_what_the_arm_stands_on_may_touch_its_base_but_not_the_links_that_move(planner):
+    assert planner.root_link == "panda_link0" and planner.fixed_links == {"panda_link0"}
+    table = np.eye(4)
+    table[2, 3] = -0.02  # its top 3 cm into the base's mesh
+    planner.add_box("table", [1.0, 1.0, 0.1], table)
+    try:
+        assert not planner.in_collision(planner.state(READY))
+        reaching_down = planner.state({**READY, "panda_joint2": 1.3, "panda_joint4": -1.5})
+        assert planner.fk(reaching_down, "panda_link8")[2, 3] < 0.0  # the hand through the table
+        assert planner.in_collision(reaching_down)
+    finally:
+        planner.remove_object("table")
+
+
+def test_objects_of_the_world_may_touch_each_other(planner):
+    ready = planner.state(READY)
+    under, over = np.eye(4), np.eye(4)
+    under[:3, 3] = [0.6, 0.0, 0.2]
+    over[:3, 3] = [0.6, 0.0, 0.45]  # resting on the first one
+    planner.add_box("table", [0.4, 0.4, 0.4], under)
+    planner.add_box("board", [0.3, 0.3, 0.1], over)
+    try:
+        assert not planner.in_collision(ready)
+    finally:
+        planner.remove_object("table")
+        planner.remove_object("board")
