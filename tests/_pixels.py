@@ -8,7 +8,7 @@ from typing import Any
 
 import numpy as np
 
-from gazelle.viewer._viewer import CAMERA_FOV_RAD, CAMERA_LOOK_AT, CAMERA_POSITION, TRAIL_RGB
+from gazelle.viewer._viewer import CAMERA_FOV_RAD, CAMERA_LOOK_AT, CAMERA_POSITION, PLAN_RGB, TRAIL_RGB
 
 
 def project(
@@ -45,3 +45,9 @@ def trail_mask(image: bytes | np.ndarray, tol: int = 40) -> np.ndarray:
     """Pixels of the path trail's magenta (``TRAIL_RGB``, lit evenly: it is a screen-space line)."""
     rgb = rgb_of(image) if isinstance(image, bytes) else image.astype(int)
     return np.abs(rgb - np.asarray(TRAIL_RGB)).max(axis=-1) <= tol
+
+
+def plan_mask(image: bytes | np.ndarray, tol: int = 40) -> np.ndarray:
+    """Pixels of the planned path's blue (``PLAN_RGB``, a screen-space line like the trail)."""
+    rgb = rgb_of(image) if isinstance(image, bytes) else image.astype(int)
+    return np.abs(rgb - np.asarray(PLAN_RGB)).max(axis=-1) <= tol

@@ -10,7 +10,7 @@ import enum
 import logging
 import math
 import re
-from collections.abc import Callable, Container
+from collections.abc import Callable, Container, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -905,6 +905,41 @@ class PhysicsWorld:
         x, y, z = self.data.xpos[body_id].tolist()
         w, qx, qy, qz = self.data.xquat[body_id].tolist()
         return Pose((x, y, z), (w, qx, qy, qz))
+
+    def link_poses_along(
+        self, entity: str, link: str, joints: Sequence[str], positions: Sequence[Sequence[float]]
+    ) -> list[Pose]:
+        """World poses of an entity's ``link`` were its ``joints`` (1-dof, description names) at each row
+        of ``positions``, every other joint where it is now: forward kinematics on a scratch copy of the
+        state (a planned path drawn before the arm moves); the simulation is untouched.
+
+        Raises:
+            WorldError: (NOT_FOUND) no such entity, link or movable joint; (INVALID_POSE) a row whose
+                length is not the number of joints.
+        """
+        body = self.body_id(entity, link)
+        e = self.entities[entity]
+        addresses = []
+        for joint in joints:
+            mj = e.built.joints.get(joint)
+            if not mj:
+                raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' has no movable joint '{joint}'")
+            jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, mj[0])
+            if int(self.model.jnt_type[jid]) not in _ONE_DOF:
+                raise WorldError(ErrorKind.NOT_FOUND, f"joint '{joint}' of '{entity}' is not a 1-dof joint")
+            addresses.append(int(self.model.jnt_qposadr[jid]))
+        scratch = mujoco.MjData(self.model)
+        scratch.qpos[:] = self.data.qpos
+        poses = []
+        for row in positions:
+            if len(row) != len(addresses):
+                raise WorldError(ErrorKind.INVALID_POSE, f"{len(row)} positions for {len(addresses)} joints")
+            scratch.qpos[addresses] = row
+            mujoco.mj_kinematics(self.model, scratch)
+            x, y, z = scratch.xpos[body].tolist()
+            w, qx, qy, qz = scratch.xquat[body].tolist()
+            poses.append(Pose((x, y, z), (w, qx, qy, qz)))
+        return poses
 
     def body_velocity(self, body_id: int) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
         """World-frame linear velocity of the body origin and angular velocity."""

@@ -16,6 +16,7 @@ from geometry_msgs.msg import Twist as TwistMsg
 from geometry_msgs.msg import TwistStamped as TwistStampedMsg
 from geometry_msgs.msg import Vector3Stamped as Vector3StampedMsg
 from geometry_msgs.msg import WrenchStamped as WrenchStampedMsg
+from moveit_msgs.msg import DisplayTrajectory as DisplayTrajectoryMsg
 from nav_msgs.msg import Odometry as OdometryMsg
 from ros_gz_interfaces.msg import Altimeter as AltimeterMsg
 from sensor_msgs.msg import CameraInfo as CameraInfoMsg
@@ -39,6 +40,7 @@ from ..systems import (
     Altimeter,
     CameraInfo,
     Contacts,
+    DisplayTrajectory,
     DynamicJointState,
     Float64,
     Float64Array,
@@ -426,6 +428,7 @@ ROS_TYPES = {
     MsgType.JOINT_TRAJECTORY: JointTrajectoryMsg,
     MsgType.TRAJECTORY_CONTROLLER_STATE: JtcStateMsg,
     MsgType.DYNAMIC_JOINT_STATE: DynamicJointStateMsg,
+    MsgType.DISPLAY_TRAJECTORY: DisplayTrajectoryMsg,
 }
 """The rclpy message class for each bus message type."""
 
@@ -461,4 +464,7 @@ FROM_ROS = {
     MsgType.TWIST_STAMPED: from_twist_stamped_msg,
     MsgType.FLOAT64_ARRAY: lambda m: Float64Array(tuple(float(v) for v in m.data)),
     MsgType.JOINT_TRAJECTORY: from_joint_trajectory_msg,
+    MsgType.DISPLAY_TRAJECTORY: lambda m: DisplayTrajectory(
+        str(m.model_id), tuple(from_joint_trajectory_msg(t.joint_trajectory) for t in m.trajectory)
+    ),
 }

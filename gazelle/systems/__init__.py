@@ -27,6 +27,7 @@ from ._bus import Bus as Bus
 from ._bus import CameraInfo as CameraInfo
 from ._bus import ContactPair as ContactPair
 from ._bus import Contacts as Contacts
+from ._bus import DisplayTrajectory as DisplayTrajectory
 from ._bus import DynamicJointState as DynamicJointState
 from ._bus import Endpoint as Endpoint
 from ._bus import Float64 as Float64
@@ -69,6 +70,7 @@ __all__ = [
     "Altimeter",
     "MagneticField",
     "DynamicJointState",
+    "DisplayTrajectory",
     "Float64Array",
     "JointTrajectory",
     "TrajectoryControllerState",

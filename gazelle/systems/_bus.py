@@ -284,6 +284,15 @@ class JointTrajectory:
 
 
 @dataclass(frozen=True, slots=True)
+class DisplayTrajectory:
+    """moveit_msgs/DisplayTrajectory: the joint trajectories a planner made for robot ``model_id``, one
+    after the other (MoveIt's ``display_planned_path``)."""
+
+    model_id: str
+    trajectories: tuple[JointTrajectory, ...]
+
+
+@dataclass(frozen=True, slots=True)
 class TrajectoryControllerState:
     """control_msgs/JointTrajectoryControllerState: reference, feedback and error of each joint."""
 
@@ -333,6 +342,7 @@ class MsgType(enum.Enum):
     JOINT_TRAJECTORY = "trajectory_msgs/msg/JointTrajectory"
     TRAJECTORY_CONTROLLER_STATE = "control_msgs/msg/JointTrajectoryControllerState"
     DYNAMIC_JOINT_STATE = "control_msgs/msg/DynamicJointState"
+    DISPLAY_TRAJECTORY = "moveit_msgs/msg/DisplayTrajectory"
 
 
 class Qos(enum.Enum):

@@ -50,9 +50,9 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import viser
 
-from ..description import Model, Pose, load
+from ..description import JointType, Model, Pose, load
 from ..physics import PerGeneration
-from ..systems import Endpoint, MsgType, Twist
+from ..systems import DisplayTrajectory, Endpoint, MsgType, Twist
 from ..systems.sensors import Camera, Lidar
 from ._geometry import rgba_to_rgb255, to_trimesh
 from ._models import ModelFile, find_models
@@ -92,6 +92,11 @@ CONTACT_RGB = (230, 20, 20)
 CONTACT_MAX = 500
 NO_MODELS = "(no models on the resource paths)"
 LIDAR_RGB = (20, 200, 60)
+PLAN_RGB = (30, 110, 255)
+PLAN_TOPIC = "/display_planned_path"
+"""Where MoveIt's move_group (and gazelle's) publishes each planned motion (moveit_msgs/DisplayTrajectory)."""
+VIEWER_OWNER = "_viewer"
+"""The bus owner of the viewer's own subscriptions."""
 LIDAR_MAX_POINTS = 50_000
 NO_CAMERA = "(none)"
 KEYS_MARKER = "gazelle-keyboard-drive"
@@ -214,6 +219,44 @@ def _safe(name: str) -> str:
     return name.replace("/", "_").replace(" ", "_") or "_"
 
 
+@dataclass(frozen=True)
+class PlannedPath:
+    """What the viewer draws of the latest planned motion: for each tip of the moving chains (an arm's
+    flange or tool centre point), its path in the world and its pose at the end, the goal."""
+
+    entity: str
+    tips: tuple[str, ...]
+    paths: tuple[np.ndarray, ...]
+    """Per tip: N x 3 world positions along the plan."""
+    goals: tuple[Pose, ...]
+    """Per tip: the world pose at the plan's last point."""
+
+
+def plan_tips(model: Model, joints: set[str]) -> list[str]:
+    """The links whose path shows a motion of ``joints``: below each joint with no other moving joint
+    under it, the child link, then down single fixed joints (``link7`` -> ``link8`` -> ``hand`` ->
+    ``hand_tcp``), stopping where a link has no fixed child or several."""
+    children: dict[str, list[tuple[str, str, JointType]]] = {}
+    for j in model.joints:
+        children.setdefault(j.parent, []).append((j.name, j.child, j.type))
+
+    def below(link: str) -> bool:  # a moving joint somewhere under this link
+        return any(name in joints or below(child) for name, child, _ in children.get(link, []))
+
+    tips = []
+    for j in model.joints:
+        if j.name not in joints or below(j.child):
+            continue
+        link = j.child
+        while True:
+            fixed = [child for _, child, kind in children.get(link, []) if kind == JointType.FIXED]
+            if len(fixed) != 1:
+                break
+            link = fixed[0]
+        tips.append(link)
+    return tips
+
+
 class Viewer:
     """A viser server mirroring a simulation; :meth:`start` it, :meth:`stop` it."""
 
@@ -261,6 +304,12 @@ class Viewer:
         self._next_trail = 0.0
         self._contact_handle: Any = None
         self._lidar_handles: dict[str, Any] = {}
+        self._plan_heard: DisplayTrajectory | None = None
+        """The latest planned motion heard on :data:`PLAN_TOPIC`, not yet turned into a path."""
+        self.planned: PlannedPath | None = None
+        """The planned motion drawn (its tips' paths and goals), for tests and the panel."""
+        self._plan_drawn: tuple[PlannedPath | None, bool] = (None, True)
+        self._plan_handles: list[Any] = []
         self._models: list[ModelFile] = []
         self.frames = 0
         """Frames pushed so far (for tests and the bench)."""
@@ -268,6 +317,8 @@ class Viewer:
         """CPU time the viewer thread spent on frames (for the bench)."""
         self._setup_scene()
         self._setup_gui()
+        # MoveIt's planned paths: with a ROS bridge, a subscription of the simulation's node
+        sim.bus.subscribe(VIEWER_OWNER, PLAN_TOPIC, MsgType.DISPLAY_TRAJECTORY, self._hear_plan, depth=1)
 
     # ------------------------------------------------------------------ lifecycle
     @property
@@ -287,6 +338,7 @@ class Viewer:
         self._stop.set()
         if self._thread is not None:
             self._thread.join(5.0)
+        self.sim.bus.remove_owner(VIEWER_OWNER)
         with contextlib.redirect_stdout(io.StringIO()):
             self.server.stop()
 
@@ -420,6 +472,11 @@ class Viewer:
             self._lidar_box = g.add_checkbox(
                 "Lidar points", initial_value=True, hint="Where each lidar's rays hit now (green, noise-free)"
             )
+            self._plan_box = g.add_checkbox(
+                "Planned path",
+                initial_value=True,
+                hint=f"The latest arm motion planned ({PLAN_TOPIC}): the tool's path (blue) and goal (axes)",
+            )
         with g.add_folder("Camera"):
             self._camera_dd = g.add_dropdown(
                 "Camera", options=[NO_CAMERA], initial_value=NO_CAMERA, hint="A camera sensor's image, live"
@@ -443,6 +500,7 @@ class Viewer:
         self._trail_box.on_update(lambda _e: self._redraw_trail(force=True))
         self._contact_box.on_update(lambda _e: self._update_contacts())  # pyright: ignore[reportArgumentType]
         self._lidar_box.on_update(lambda _e: self._update_lidars())  # pyright: ignore[reportArgumentType]
+        self._plan_box.on_update(lambda _e: self._redraw_plan())
         self._keys_box.on_update(
             lambda _e: setattr(self._keys_html, "content", KEYS_HTML if self._keys_box.value else "")
         )
@@ -656,6 +714,82 @@ class Viewer:
                 "/overlays/trail", segs, TRAIL_RGB, thickness=4.0, thickness_units="screen"
             )
 
+    def _hear_plan(self, plan: DisplayTrajectory) -> None:
+        """A planned motion arrived (any thread): kept for the viewer thread, which draws the latest."""
+        self._plan_heard = plan
+
+    def _plan_path(self, plan: DisplayTrajectory) -> PlannedPath | None:
+        """Runs on the sim thread: the tips' paths along ``plan`` (forward kinematics of the robot that
+        has its joints: the entity named ``model_id`` if it does, else the first that does), or None
+        when no entity has them."""
+        w = self.sim.world
+        trajectories = [t for t in plan.trajectories if t.joint_names and t.points]
+        joints = {j for t in trajectories for j in t.joint_names}
+        if not joints:
+            return None
+        candidates = sorted(w.entities.values(), key=lambda e: e.name != plan.model_id)
+        entity = next((e for e in candidates if joints <= {j.name for j in e.model.joints}), None)
+        if entity is None:
+            return None
+        tips = plan_tips(entity.model, joints)
+        paths: list[list[Pose]] = [[] for _ in tips]
+        for t in trajectories:
+            rows = [p.positions for p in t.points if len(p.positions) == len(t.joint_names)]
+            for i, tip in enumerate(tips):
+                paths[i] += w.link_poses_along(entity.name, tip, t.joint_names, rows)
+        kept = [(tip, poses) for tip, poses in zip(tips, paths) if poses]
+        return PlannedPath(
+            entity.name,
+            tuple(tip for tip, _ in kept),
+            tuple(np.array([p.position for p in poses], dtype=np.float32) for _, poses in kept),
+            tuple(poses[-1] for _, poses in kept),
+        )
+
+    def update_plan(self) -> PlannedPath | None:
+        """Turn the latest planned motion heard into paths (on the sim thread) and draw them; a plan whose
+        robot is gone is cleared. Returns what is drawn."""
+        heard, self._plan_heard = self._plan_heard, None
+        if heard is not None:
+            try:
+                self.planned = self.sim.call(lambda: self._plan_path(heard), timeout=5.0)
+            except Exception as err:  # a plan for joints the world cannot pose: nothing to draw
+                _log.warning("viewer: cannot draw the planned path: %s", err)
+                self.planned = None
+        planned = self.planned
+        if planned is not None and self._last is not None and planned.entity not in self._last.entities:
+            self.planned = None
+        self._redraw_plan()
+        return self.planned
+
+    def _redraw_plan(self) -> None:
+        shown = bool(self._plan_box.value)
+        if self._plan_drawn == (self.planned, shown):
+            return
+        self._plan_drawn = (self.planned, shown)
+        for handle in self._plan_handles:
+            handle.remove()
+        self._plan_handles = []
+        if self.planned is None or not shown:
+            return
+        scene = self.server.scene
+        for i, (path, goal) in enumerate(zip(self.planned.paths, self.planned.goals)):
+            if len(path) >= 2:
+                segs = np.stack([path[:-1], path[1:]], axis=1)
+                self._plan_handles.append(
+                    scene.add_line_segments(
+                        f"/overlays/plan/{i}/path", segs, PLAN_RGB, thickness=5.0, thickness_units="screen"
+                    )
+                )
+            self._plan_handles.append(
+                scene.add_frame(
+                    f"/overlays/plan/{i}/goal",
+                    wxyz=goal.orientation,
+                    position=goal.position,
+                    axes_length=0.12,
+                    axes_radius=0.008,
+                )
+            )
+
     def _contacts(self) -> np.ndarray:
         """Runs on the sim thread: the contact points (N x 3)."""
         d = self.sim.world.data
@@ -856,6 +990,8 @@ class Viewer:
                         self._update_contacts()
                     if self._lidar_box.value or self._lidar_handles:
                         self._update_lidars()
+                    if self._plan_heard is not None or self.planned is not None:
+                        self.update_plan()
                     self._update_camera()
                     next_gui = now + gui_period
                 if now >= self._next_trail:

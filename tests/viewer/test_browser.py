@@ -25,7 +25,7 @@ pytest.importorskip("playwright")
 if find_chromium() is None:
     pytest.skip("no system chromium (scripts/setup.sh installs Debian's chromium)", allow_module_level=True)
 
-from _pixels import blue_mask, project
+from _pixels import blue_mask, plan_mask, project
 
 from .conftest import ARTIFACTS, GAZELLE, REPO, SEED_XACRO, wait_for
 
@@ -459,6 +459,89 @@ def test_lidar_overlay_points_appear_where_the_wall_is(page: Any, artifacts: Pat
         viewer.stop()
         sim.stop()
     shutil.copy(out, ARTIFACTS / "lidar_overlay.png")
+
+
+ARM_EYE = (1.2, -1.4, 1.9)
+ARM_TARGET = (0.0, 1.0, 0.5)
+ARM_BASE = (0.0, 1.0, 0.5)
+
+
+def _tool_at(q1: float, q2: float) -> tuple[float, float, float]:
+    """Where the two-link arm's tool is (links 0.5 m and 0.3 m, both joints about z)."""
+    bx, by, bz = ARM_BASE
+    return (bx + 0.5 * math.cos(q1) + 0.3 * math.cos(q1 + q2), by + 0.5 * math.sin(q1) + 0.3 * math.sin(q1 + q2), bz)
+
+
+def test_a_plan_published_on_display_planned_path_is_drawn_where_the_tool_will_go(
+    page: Any, ros_client_mod: Any, artifacts: Path
+) -> None:
+    """A moveit_msgs/DisplayTrajectory published over ROS, as move_group publishes each plan, shows in the
+    browser as a blue line through the places the arm's tool will pass, before the arm moves; the arm
+    stays where it is."""
+    from builtin_interfaces.msg import Duration
+    from moveit_msgs.msg import DisplayTrajectory, RobotTrajectory
+    from PIL import Image
+    from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
+
+    from gazelle.description import load_string
+    from gazelle.ros import RosBridge
+    from gazelle.sim import Simulation
+    from gazelle.viewer import Viewer
+    from gazelle.viewer._browser import wait_rendered
+    from gazelle.worlds import default_world
+
+    from .test_viewer import TWO_LINK_ARM
+
+    urdf = TWO_LINK_ARM.replace('<origin xyz="0 0 1"/>', '<origin xyz="{} {} {}"/>'.format(*ARM_BASE))
+    sim = Simulation(default_world(), rtf=1.0)
+    sim.spawn(load_string(urdf).value, name="arm")
+    sim.start()
+    viewer = Viewer(sim, port=0)
+    bridge = RosBridge(sim)
+    cam = viewer.server.initial_camera
+    cam.position, cam.look_at = ARM_EYE, ARM_TARGET
+    out = artifacts / "planned_path.png"
+    # a quarter turn of the shoulder with the elbow bending: the tool sweeps an arc to (-0.3, 1.5, 0.5)
+    qs = [(a, b) for a, b in zip(np.linspace(0.0, math.pi / 2, 30), np.linspace(0.0, math.pi / 2, 30))]
+    samples = [_tool_at(*q) for q in qs[6:25:3]]  # along the way, away from the arm's own links at rest
+    msg = DisplayTrajectory(model_id="arm2", trajectory=[RobotTrajectory()])
+    jt = JointTrajectory(joint_names=["j1", "j2"])
+    for i, (a, b) in enumerate(qs):
+        jt.points.append(JointTrajectoryPoint(positions=[float(a), float(b)], time_from_start=Duration(sec=i)))
+    msg.trajectory[0].joint_trajectory = jt
+    publisher = ros_client_mod.node.create_publisher(DisplayTrajectory, "/display_planned_path", 10)
+    hits: list[int] = []
+
+    def blue_along_the_path() -> int:
+        page.screenshot(path=str(out))
+        rgb = np.asarray(Image.open(out).convert("RGB")).astype(int)
+        h, w = rgb.shape[:2]
+        mask = plan_mask(rgb)
+        near = 0
+        for p in samples:
+            px, py = project(p, w, h, ARM_EYE, ARM_TARGET)
+            near += bool(mask[int(py) - 5 : int(py) + 6, int(px) - 5 : int(px) + 6].any())
+        hits.append(near)
+        return near
+
+    viewer.start()
+    try:
+        page.goto(viewer.url)
+        wait_rendered(page, 30)
+        assert blue_along_the_path() == 0, "blue along the path before any plan"
+        deadline = time.monotonic() + 30
+        while blue_along_the_path() < len(samples):
+            assert time.monotonic() < deadline, f"the planned path covers {hits[-1]}/{len(samples)} of its places"
+            publisher.publish(msg)  # again until the simulation's node has matched the publisher
+            page.wait_for_timeout(300)
+        tool = sim.call(lambda: sim.world.entity_state("arm", "tool").pose.position)
+        assert math.dist(tool, _tool_at(0.0, 0.0)) < 1e-3, tool  # drawn, not moved
+    finally:
+        ros_client_mod.node.destroy_publisher(publisher)
+        viewer.stop()
+        bridge.shutdown()
+        sim.stop()
+    shutil.copy(out, ARTIFACTS / "planned_path.png")
 
 
 _TRY_WS_JS = """(url) => new Promise((resolve) => {

@@ -359,3 +359,75 @@ def test_lidar_points_land_on_the_wall_and_the_camera_panel_shows_the_camera_ima
     finally:
         viewer.stop()
         sim.stop()
+
+
+TWO_LINK_ARM = """<robot name="arm2">
+  <link name="world"/>
+  <link name="base"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <visual><geometry><box size="0.1 0.1 0.1"/></geometry></visual></link>
+  <link name="link1"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <visual><origin xyz="0.25 0 0"/><geometry><box size="0.5 0.05 0.05"/></geometry></visual></link>
+  <link name="link2"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <visual><origin xyz="0.15 0 0"/><geometry><box size="0.3 0.05 0.05"/></geometry></visual></link>
+  <link name="tool"/>
+  <joint name="fix" type="fixed"><parent link="world"/><child link="base"/><origin xyz="0 0 1"/></joint>
+  <joint name="j1" type="revolute"><parent link="base"/><child link="link1"/><axis xyz="0 0 1"/>
+    <limit lower="-3" upper="3" effort="10" velocity="1"/></joint>
+  <joint name="j2" type="revolute"><parent link="link1"/><child link="link2"/><origin xyz="0.5 0 0"/>
+    <axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="10" velocity="1"/></joint>
+  <joint name="tool_joint" type="fixed"><parent link="link2"/><child link="tool"/><origin xyz="0.3 0 0"/></joint>
+</robot>"""
+
+
+def test_a_planned_arm_motion_is_drawn_as_its_tools_path_and_goal_and_the_arm_does_not_move() -> None:
+    """What move_group publishes on /display_planned_path (moveit_msgs/DisplayTrajectory) is drawn: the
+    path of the tool (the moving chain's last link, down its fixed joints) by forward kinematics of the
+    simulated robot, and the goal as axes at the path's end. Drawing it moves nothing."""
+    from gazelle.description import load_string
+    from gazelle.sim import Simulation
+    from gazelle.systems import DisplayTrajectory, JointTrajectory, MsgType, TrajectoryPoint
+    from gazelle.viewer import Viewer
+    from gazelle.viewer._viewer import PLAN_TOPIC
+    from gazelle.worlds import default_world
+
+    sim = Simulation(default_world(), rtf=0.0)
+    sim.start()
+    viewer = Viewer(sim, port=0)
+    try:
+        sim.spawn(load_string(TWO_LINK_ARM).value, name="arm", pose=Pose())
+        viewer.update()
+        assert viewer.update_plan() is None and not viewer._plan_handles  # nothing planned yet
+        rows = [(0.0, 0.0), (np.pi / 4, 0.0), (np.pi / 2, 0.0), (np.pi / 2, np.pi / 2)]
+        points = tuple(TrajectoryPoint(i * 0.5, r) for i, r in enumerate(rows))
+        plan = DisplayTrajectory("arm2", (JointTrajectory(0.0, ("j1", "j2"), points),))
+        assert sim.bus.inject(PLAN_TOPIC, MsgType.DISPLAY_TRAJECTORY, plan) == 1
+        planned = viewer.update_plan()
+        assert planned is not None and planned.entity == "arm" and planned.tips == ("tool",)
+        expected = [(0.8, 0.0, 1.0), (0.8 / np.sqrt(2), 0.8 / np.sqrt(2), 1.0), (0.0, 0.8, 1.0), (-0.3, 0.5, 1.0)]
+        np.testing.assert_allclose(planned.paths[0], expected, atol=1e-5)
+        goal = planned.goals[0]
+        np.testing.assert_allclose(goal.position, (-0.3, 0.5, 1.0), atol=1e-5)
+        # yaw of pi (j1 + j2): the tool's x axis points along -x
+        assert abs(abs(goal.orientation[3]) - 1.0) < 1e-5, goal.orientation
+        assert len(viewer._plan_handles) == 2  # the path and the goal's axes
+        # the simulated arm did not move
+        arm = sim.call(lambda: sim.world.entity_state("arm", "tool").pose.position)
+        np.testing.assert_allclose(arm, (0.8, 0.0, 1.0), atol=1e-3)
+        viewer._plan_box.value = False
+        viewer.update_plan()
+        assert not viewer._plan_handles
+        viewer._plan_box.value = True
+        viewer.update_plan()
+        assert len(viewer._plan_handles) == 2
+        # a plan for joints no entity has is not drawn, and the older one goes (it is not the latest)
+        other = DisplayTrajectory("ghost", (JointTrajectory(0.0, ("nope",), (TrajectoryPoint(0.0, (1.0,)),)),))
+        sim.bus.inject(PLAN_TOPIC, MsgType.DISPLAY_TRAJECTORY, other)
+        assert viewer.update_plan() is None and not viewer._plan_handles
+        sim.bus.inject(PLAN_TOPIC, MsgType.DISPLAY_TRAJECTORY, plan)
+        assert viewer.update_plan() is not None
+        sim.delete("arm")
+        viewer.update()
+        assert viewer.update_plan() is None and not viewer._plan_handles  # its robot is gone
+    finally:
+        viewer.stop()
+        sim.stop()
