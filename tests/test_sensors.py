@@ -763,3 +763,40 @@ def test_altimeter_and_magnetic_field_convert_to_their_ros_messages():
     assert (alt.header.stamp.sec, alt.header.stamp.nanosec, alt.header.frame_id) == (1, 500_000_000, "alt_frame")
     mag = TO_ROS[MsgType.MAGNETIC_FIELD](MagneticField(2.0, "m", (1e-5, 2e-5, -3e-5)))
     assert (mag.magnetic_field.x, mag.magnetic_field.y, mag.magnetic_field.z) == (1e-5, 2e-5, -3e-5)
+
+
+URDF_BUMPER = """<?xml version="1.0"?>
+<robot name="plate">
+  <link name="world"/>
+  <link name="base">
+    <inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><geometry><box size="1 1 0.02"/></geometry></collision>
+    <collision><origin xyz="0 0 -0.2"/><geometry><box size="0.1 0.1 0.1"/></geometry></collision>
+  </link>
+  <joint name="fix" type="fixed"><parent link="world"/><child link="base"/><origin xyz="0 0 0.01"/></joint>
+  <gazebo reference="base">
+    <sensor name="bumper" type="contact">
+      <update_rate>50</update_rate>
+      <contact><collision>NAME</collision></contact>
+      <plugin name="bumper" filename="libgazebo_ros_bumper.so"/>
+    </sensor>
+  </gazebo>
+</robot>"""
+
+
+@pytest.mark.parametrize("name", ["base_collision", "base_collision_0"])
+def test_a_urdf_bumper_names_the_links_first_collision_as_gazebo_does(name, caplog):
+    """Gazebo names a URDF link's first unnamed collision '<link>_collision' (and the next '<link>_collision_1'):
+    a bumper written for Gazebo watches it here too, and gazelle's own name for it works as well."""
+    from gazelle.systems.sensors import ContactSensor
+
+    sim = Simulation(default_world(), rtf=0)
+    with caplog.at_level(logging.ERROR):
+        plate = _spawn(sim, URDF_BUMPER.replace("NAME", name), "plate")
+    assert not [r.getMessage() for r in caplog.records if "contact sensor" in r.getMessage()]
+    sensor = next(s for s in plate.systems if isinstance(s, ContactSensor))
+    assert sensor.collisions == ("base_collision_0",)
+    got = _record(sim, "/bumper_states")
+    sim.spawn(load_string(BOX_2KG).value, name="box", pose=Pose((0.0, 0.0, 0.3)))
+    sim.step(1500)
+    assert [(s.collision1, s.collision2) for s in got[-1].states] == [("plate::base::base_collision_0", "box::link::c")]

@@ -1078,6 +1078,13 @@ class ContactSensor(_SensorSystem):
         link = next((lk for lk in ctx.entity.model.links if lk.name == ctx.link), None)
         known = {c.name for c in link.collisions} if link is not None else set()
         where = f"{sensor.location}: " if sensor.location else ""
+        # Gazebo names a URDF link's first unnamed <collision> '<link>_collision' (sdformat's URDF
+        # conversion; the later ones '_1', '_2', ... as here): a contact sensor written for Gazebo names it so
+        if link is not None and link.collisions:
+            first = link.collisions[0].name
+            alias = f"{ctx.link}_collision"
+            if first == f"{alias}_0" and alias not in known:
+                names = tuple(first if n == alias else n for n in names)
         missing = [n for n in names if n not in known]
         if not names or missing:
             what = f"its <collision> {', '.join(missing)} is not" if missing else "it names no <collision>"
