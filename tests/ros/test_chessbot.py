@@ -5,7 +5,9 @@ on a table, that config's SRDF, ros2_controllers.yaml, joint_limits.yaml and mov
 unchanged (its Ros2ControlManager: move_group finds the arms' controllers from the controller
 manager), the seed's board spawned by examples/chessboard/spawn_chessboard.py, and `r2home` from
 examples/chessbot/r2.bash. The table, the board and the pieces reach move_group's planning scene from
-the simulation.
+the simulation. The robot spawned is tests/data/chessbot_bumpers.urdf.xacro: the example unchanged, with
+a gazebo_ros bumper on each of its 22 arm links, so the simulation's contacts are checked as a Gazebo
+user checks them.
 """
 
 from __future__ import annotations
@@ -30,16 +32,52 @@ PANDA = FIXTURES / "moveit_panda"
 DUAL = PANDA / "dual_arm_panda_moveit_config" / "config"
 CHESSBOT = REPO / "examples" / "chessbot"
 R2_CLI = CHESSBOT / "r2_cli.py"
+WITH_BUMPERS = REPO / "tests" / "data" / "chessbot_bumpers.urdf.xacro"
+ARM_LINKS = [
+    f"{arm}_panda_{link}"
+    for arm in ("left", "right")
+    for link in (*(f"link{i}" for i in range(8)), "hand", "leftfinger", "rightfinger")
+]
+
+
+class Contacts:
+    """Every contact the arms' bumpers report: (sim time, the bumper's link, the other collision)."""
+
+    def __init__(self, ros: RosClient) -> None:
+        from gazebo_msgs.msg import ContactsState
+
+        self.heard: set[str] = set()
+        self.touches: list[tuple[float, str, str]] = []
+
+        def hear(link: str):
+            def on(msg: ContactsState) -> None:
+                self.heard.add(link)
+                t = msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9
+                self.touches += [(t, link, st.collision2_name) for st in msg.states]
+
+            return on
+
+        for link in ARM_LINKS:
+            ros.node.create_subscription(ContactsState, f"/contacts/{link}", hear(link), 100)
+
+    def forbidden(self) -> list[tuple[float, str, str]]:
+        """Touches of an arm with anything but itself: the other arm, the table, the board, a piece."""
+
+        def arm(name: str) -> str:
+            entity, _, rest = name.partition("::")
+            return rest.split("_", 1)[0] if entity == "chessbot" else entity
+
+        return [(t, link, other) for t, link, other in self.touches if arm(other) != link.split("_", 1)[0]]
 
 
 @pytest.fixture(scope="module")
 def chessbot(ros_env) -> Iterator[RosClient]:
     os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
     try:
-        # twice real time: the arms move in sim time, and the suite waits less for them
-        sim = start([*GAZELLE, "sim", "--no-viewer", "--rtf", "2"], "gazelle sim")
+        # four times real time: the arms move in sim time, and the suite waits less for them
+        sim = start([*GAZELLE, "sim", "--no-viewer", "--rtf", "4"], "gazelle sim")
         sim.wait_line("gazelle: ready", timeout=60)
-        for name, path in (("table", CHESSBOT / "table.sdf"), ("chessbot", CHESSBOT / "chessbot.urdf.xacro")):
+        for name, path in (("table", CHESSBOT / "table.sdf"), ("chessbot", WITH_BUMPERS)):
             spawn = start([*GAZELLE, "spawn", "-entity", name, "-file", str(path)], f"spawn {name}")
             assert spawn.wait(120) == 0, spawn.output
         board = start([sys.executable, str(REPO / "examples" / "chessboard" / "spawn_chessboard.py")], "board")
@@ -63,6 +101,7 @@ def chessbot(ros_env) -> Iterator[RosClient]:
         move_group.wait_line("You can start planning now!", timeout=60)
         ros = RosClient("chessbot_test")
         try:
+            ros.contacts = Contacts(ros)  # type: ignore[attr-defined]
             yield ros
         finally:
             ros.close()
@@ -117,6 +156,9 @@ def test_r2home_moves_both_arms_to_their_home_poses(chessbot):
 
 
 def test_the_arms_cross_over_the_board_around_each_other_and_touch_nothing(chessbot):
+    contacts: Contacts = chessbot.contacts
+    wait_for(lambda: contacts.heard == set(ARM_LINKS), 20, "every arm link's bumper")
+    contacts.touches.clear()
     before = _pieces(chessbot)
     # each hand to the other's side: once the left arm is there, the right arm's straight way in joint
     # space from home to its goal runs through the left arm (25 of 41 points, checked with the planner)
@@ -130,6 +172,8 @@ def test_the_arms_cross_over_the_board_around_each_other_and_touch_nothing(chess
     after = _pieces(chessbot)
     moved = {n: float(np.linalg.norm(after[n] - before[n])) for n in before}
     assert max(moved.values()) < 1e-3, {n: d for n, d in moved.items() if d >= 1e-3}
+    # ...and by the simulation's contacts, all the way: no arm touched the other, the table or the board
+    assert not contacts.forbidden(), contacts.forbidden()[:10]
 
 
 def test_an_unknown_arm_and_an_unreachable_pose_are_refused_and_nothing_moves(chessbot):
@@ -140,3 +184,22 @@ def test_an_unknown_arm_and_an_unreachable_pose_are_refused_and_nothing_moves(ch
     assert run.returncode == 1 and "error -31" in run.stderr, run.stderr  # NO_IK_SOLUTION
     after = _pose(chessbot, "chessbot::left_panda_link8")
     assert np.linalg.norm(after[:3] - before[:3]) < 1e-3
+
+
+def test_the_bumpers_report_a_touch(chessbot):
+    """The contact check above can fail: a box dropped on the left hand is reported by its bumpers."""
+    from gazebo_msgs.srv import SpawnEntity
+
+    contacts: Contacts = chessbot.contacts
+    hand = _pose(chessbot, "chessbot::left_panda_hand")
+    box = (
+        '<sdf version="1.9"><model name="box"><link name="link"><inertial><mass>0.05</mass></inertial>'
+        '<collision name="c"><geometry><box><size>0.04 0.04 0.04</size></box></geometry></collision>'
+        "</link></model></sdf>"
+    )
+    req = SpawnEntity.Request(name="dropped", xml=box)
+    req.initial_pose.position.x, req.initial_pose.position.y = float(hand[0]), float(hand[1])
+    req.initial_pose.position.z = float(hand[2]) + 0.15
+    contacts.touches.clear()
+    assert chessbot.call(SpawnEntity, "/spawn_entity", req).success
+    wait_for(lambda: [c for c in contacts.forbidden() if c[2].startswith("dropped::")], 20, "the box on the hand")

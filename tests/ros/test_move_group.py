@@ -120,7 +120,7 @@ def panda(ros_env) -> Iterator[Panda]:
 
     os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
     # twice real time: the arm moves in sim time, and the suite waits less for it
-    sim = start([*GAZELLE, "sim", "--no-viewer", "--rtf", "2"], "gazelle sim")
+    sim = start([*GAZELLE, "sim", "--no-viewer", "--rtf", "4"], "gazelle sim")
     sim.wait_line("gazelle: ready", timeout=60)
     spawn = start([*GAZELLE, "spawn", "-entity", "panda", "-file", str(ON_TABLE)], "spawn")
     assert spawn.wait(120) == 0, spawn.output
