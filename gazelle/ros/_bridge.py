@@ -33,10 +33,11 @@ from geometry_msgs.msg import Twist
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.context import Context
 from rclpy.event_handler import PublisherEventCallbacks, SubscriptionEventCallbacks
-from rclpy.exceptions import InvalidHandle
+from rclpy.exceptions import InvalidHandle, InvalidTopicNameException
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, ShutdownException
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
+from rclpy.validate_full_topic_name import validate_full_topic_name
 from rosgraph_msgs.msg import Clock
 from std_srvs.srv import Empty
 
@@ -46,6 +47,7 @@ from ..sim import Simulation
 from ..systems import Endpoint, MsgType, PluginNode, Qos, Transform, TransformBatch, UpdateInfo
 from ._convert import FROM_ROS, ROS_TYPES, TO_ROS, from_pose_msg, to_pose_msg, to_time
 from ._exposure import ServerRegistry
+from ._names import gz_topic_on_ros
 from ._outbox import Lane, Outbox
 from ._plugin_nodes import PluginNodes
 from ._replies import guarded_service, resend_lost_replies, with_warnings
@@ -324,18 +326,32 @@ class SimulationNode(Node):
 
     # ------------------------------------------------------------------ bus mirroring
     def endpoint_added(self, ep: Endpoint) -> None:
-        """Mirror a bus endpoint in ROS: a shared rclpy publisher (a sink on the endpoint) or a subscription."""
+        """Mirror a bus endpoint in ROS; a topic name ROS refuses is an error that names it (the entity
+        still spawns, without that topic on ROS)."""
+        topic = gz_topic_on_ros(ep.topic)
+        try:
+            validate_full_topic_name(topic)
+        except InvalidTopicNameException as err:
+            reason = str(err).splitlines()[0].rstrip(": ")
+            logging.getLogger("gazelle.ros").error(
+                f"'{ep.owner}': topic '{ep.topic}' is not a valid ROS name ({reason}); it is not on ROS"
+            )
+            return
+        self._mirror(ep, topic)
+
+    def _mirror(self, ep: Endpoint, topic: str) -> None:
+        """A shared rclpy publisher (a sink on the endpoint) or a subscription for ``ep``, on ROS ``topic``."""
         ros_type = ROS_TYPES[ep.msg_type]
         # a gazebo_ros plugin's topics are its own node's (see _plugin_nodes); the rest are this node's
         owner: Node = self.plugin_nodes.acquire(ep.node) if ep.node else self
         if ep.is_publisher:
-            key = (ep.node, ep.topic, ep.msg_type.value)
+            key = (ep.node, topic, ep.msg_type.value)
             with self._lock:
                 entry = self._pubs.get(key)
                 if entry is None:
                     entry = _RosEndpoint(
                         owner.create_publisher(
-                            ros_type, ep.topic, qos_profile(ep.qos, ep.depth), event_callbacks=_no_pub_events()
+                            ros_type, topic, qos_profile(ep.qos, ep.depth), event_callbacks=_no_pub_events()
                         ),
                         owner,
                     )
@@ -367,7 +383,7 @@ class SimulationNode(Node):
             deliver = self.sim.deliver  # at the sim time the message came, also while catching up
             sub = owner.create_subscription(
                 ros_type,
-                ep.topic,
+                topic,
                 lambda msg: deliver(callback, convert_in(msg)),
                 qos_profile(ep.qos, ep.depth),
                 callback_group=self._cb,
@@ -473,7 +489,7 @@ class SimulationNode(Node):
                     self.plugin_nodes.release(ep.node)
             return
         with self._lock:
-            key = (ep.node, ep.topic, ep.msg_type.value)
+            key = (ep.node, gz_topic_on_ros(ep.topic), ep.msg_type.value)
             entry = self._pubs.get(key)
             if entry is None:
                 return

@@ -18,6 +18,8 @@ import sys
 from dataclasses import dataclass
 from typing import Any
 
+from ._names import gz_topic_on_ros
+
 BRIDGE_DIRECTIONS = ("@", "[", "]")
 
 
@@ -97,7 +99,7 @@ def _bridge_entries(argv: list[str]) -> tuple[list[BridgeEntry], list[str]]:
         for item in data if isinstance(data, list) else []:
             if isinstance(item, dict):
                 ros_name = str(item.get("ros_topic_name") or item.get("topic_name") or "")
-                gz_name = str(item.get("gz_topic_name") or item.get("topic_name") or ros_name)
+                gz_name = gz_topic_on_ros(str(item.get("gz_topic_name") or item.get("topic_name") or ros_name))
                 if ros_name:
                     entries.append(
                         BridgeEntry(

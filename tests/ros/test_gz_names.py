@@ -1,0 +1,66 @@
+"""gz topic names that ROS refuses: gz-sim's JointPositionController listens on
+/model/<m>/joint/<j>/0/cmd_pos, and a ROS token must not start with a digit. The arm spawns, the topic
+is on ROS as .../n0/cmd_pos and moves the joint; a name ROS cannot take at all is an error naming it, and
+the entity still spawns."""
+
+from __future__ import annotations
+
+import logging
+
+import pytest
+from std_msgs.msg import Float64
+from test_systems import ARM
+
+from .conftest import wait_for
+
+pytestmark = pytest.mark.ros
+
+
+def test_gz_names_get_an_n_before_tokens_that_start_with_a_digit():
+    from gazelle.ros._names import gz_topic_on_ros
+
+    assert gz_topic_on_ros("/model/arm/joint/shoulder/0/cmd_pos") == "/model/arm/joint/shoulder/n0/cmd_pos"
+    assert (
+        gz_topic_on_ros("/world/default/model/r/link/l/sensor/s/scan") == "/world/default/model/r/link/l/sensor/s/scan"
+    )
+    assert gz_topic_on_ros("/a/12b/c3") == "/a/n12b/c3"
+
+
+def test_a_gz_position_controller_on_its_default_topic_spawns_and_is_commanded_over_ros(ros_client, caplog):
+    from gazelle.description import load_string
+    from gazelle.ros import RosBridge
+    from gazelle.sim import Simulation
+    from gazelle.worlds import default_world
+
+    plugins = (
+        '<plugin filename="gz-sim-joint-position-controller-system" name="gz::sim::systems::JointPositionController">'
+        "<joint_name>shoulder</joint_name><p_gain>200</p_gain><i_gain>50</i_gain><d_gain>10</d_gain>"
+        "<i_max>10</i_max><i_min>-10</i_min></plugin>"
+        '<plugin filename="gz-sim-joint-controller-system" name="gz::sim::systems::JointController">'
+        "<joint_name>spin</joint_name><topic>/arm/spin cmd</topic></plugin>"
+    )
+    sim = Simulation(default_world(), rtf=1.0)
+    bridge = RosBridge(sim)
+    try:
+        with caplog.at_level(logging.ERROR):
+            sim.spawn(load_string(ARM % plugins).value, name="arm")  # raised InvalidTopicNameException before
+        errors = [r.getMessage() for r in caplog.records if "not a valid ROS name" in r.getMessage()]
+        assert len(errors) == 1 and "'/arm/spin cmd'" in errors[0] and errors[0].startswith("'arm'"), errors
+        sim.start()
+        topic = "/model/arm/joint/shoulder/n0/cmd_pos"
+        wait_for(lambda: ros_client.node.count_subscribers(topic) == 1, 15, f"the simulation subscribed to {topic}")
+        pub = ros_client.node.create_publisher(Float64, topic, 10)
+
+        def shoulder() -> float:
+            qadr, _ = sim.world.joint_address("arm", "shoulder")
+            return float(sim.world.data.qpos[qadr])
+
+        def moved() -> bool:
+            pub.publish(Float64(data=-0.8))
+            return abs(sim.call(shoulder) + 0.8) < 0.01
+
+        wait_for(moved, 20, "the shoulder at -0.8 rad", interval=0.2)
+        ros_client.node.destroy_publisher(pub)
+    finally:
+        sim.stop()
+        bridge.shutdown()
