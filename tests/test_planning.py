@@ -223,3 +223,17 @@ def test_objects_of_the_world_may_touch_each_other(planner):
     finally:
         planner.remove_object("table")
         planner.remove_object("board")
+
+
+def test_a_moveit_configs_kinematics_yaml_becomes_moveits_parameters():
+    """kinematics.yaml, read by --config, as MoveIt's robot_description_kinematics.<group>.* parameters."""
+    pytest.importorskip("rclpy")
+    from gazelle.ros._move_group import _config_parameters
+
+    params = {p.name: p.value for p in _config_parameters(CONFIG)}
+    assert params["robot_description_kinematics.panda_arm.kinematics_solver_timeout"] == 0.05
+    assert (
+        params["robot_description_kinematics.panda_arm.kinematics_solver"]
+        == "kdl_kinematics_plugin/KDLKinematicsPlugin"
+    )
+    assert params["robot_description_planning.joint_limits.panda_joint1.max_velocity"] == pytest.approx(2.175)

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import logging
 import math
+import re
 import sys
 import threading
 import time
@@ -57,7 +58,7 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from sensor_msgs.msg import JointState
-from std_msgs.msg import String
+from std_msgs.msg import Float64, String
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
 from ..planning import START_BOUNDS_ERROR, ArmPlanner, PlanningError, SceneObject, Trajectory, moveit_joint_limits
@@ -75,6 +76,13 @@ pillar brushed it)."""
 CURRENT_STATE_WAIT = 2.0
 """s a request waits for the first /joint_states (MoveIt's planning-scene monitor waits 1 s)."""
 _ENDED = (GoalStatus.STATUS_SUCCEEDED, GoalStatus.STATUS_CANCELED, GoalStatus.STATUS_ABORTED)
+STREAM_RATE_HZ = 100.0
+"""Set-points a second streamed to gz JointPositionController topics (wall time)."""
+STREAM_GOAL_TOLERANCE = 0.01
+"""rad (m): how near each joint must come to the trajectory's end for a streamed execution to succeed."""
+GZ_CMD_POS = re.compile(r"/joint/(?P<joint>[^/]+)/n?\d+/cmd_pos$")
+"""gz-sim JointPositionController's default command topic, ``/model/<model>/joint/<joint>/<index>/cmd_pos``
+(on ROS ``.../n0/cmd_pos``: see ``gazelle.ros._names``)."""
 LATCHED = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
 
 
@@ -196,6 +204,7 @@ class MoveGroupNode(Node):
         )
         self._controllers = self._read_controllers()
         self._trajectory_clients: dict[str, ActionClient] = {}
+        self._position_pubs: dict[str, Any] = {}  # gz JointPositionController command topics
         self._controller_lists: dict[str, Any] = {}  # list_controllers clients by service name
         # The controllers' FollowJointTrajectory clients live on their own node and single-threaded
         # executor: on the node's multi-threaded one, busy with /joint_states, their status and result
@@ -259,6 +268,15 @@ class MoveGroupNode(Node):
             return
         for warning in planner.warnings:
             self.get_logger().warning(warning)
+        solvers = "robot_description_kinematics."
+        for name, param in sorted(self._parameters.items()):
+            if name.startswith(solvers) and name.endswith(".kinematics_solver"):
+                group = name[len(solvers) : -len(".kinematics_solver")]
+                self.get_logger().warning(
+                    f"kinematics.yaml: {group}'s kinematics_solver {param.value} is MoveIt's plugin and is not "
+                    f"loaded; gazelle's IK (roboplan) solves, within kinematics_solver_timeout "
+                    f"({self._ik_timeout(group):g} s) when a request gives no timeout"
+                )
         self.planner = planner
         if self._sim_world is not None:
             with self._lock:
@@ -357,13 +375,23 @@ class MoveGroupNode(Node):
         res.error_code = _code("SUCCESS")
         return res
 
+    def _ik_timeout(self, group: str) -> float:
+        """A group's IK time budget: kinematics.yaml's ``kinematics_solver_timeout`` (MoveIt's default for a
+        request without a timeout), else 0.5 s."""
+        name = f"robot_description_kinematics.{group}.kinematics_solver_timeout"
+        if self.has_parameter(name):
+            value = self.get_parameter(name).value
+            if isinstance(value, (int, float)) and value > 0:
+                return float(value)
+        return 0.5
+
     def _compute_ik(self, req: GetPositionIK.Request, res: GetPositionIK.Response) -> GetPositionIK.Response:
         assert self.planner is not None
         ik = req.ik_request
         q = self._start_state(ik.robot_state)
         link = ik.ik_link_name or self.planner.tip_link(ik.group_name)
         target = self._frame(ik.pose_stamped.header.frame_id, q) @ _matrix(ik.pose_stamped.pose)
-        timeout = _seconds(ik.timeout) or 0.5
+        timeout = _seconds(ik.timeout) or self._ik_timeout(ik.group_name)
         solution = self.planner.ik(
             ik.group_name, link, target, q, timeout=timeout, avoid_collisions=ik.avoid_collisions
         )
@@ -817,7 +845,8 @@ class MoveGroupNode(Node):
         client = self._controller_lists.get(name)
         if client is None:
             client = self._controller_lists[name] = self._execution_node.create_client(ListControllers, name)
-        if not client.wait_for_service(timeout_sec=2.0):
+        listed = any(n == name for n, _ in self._execution_node.get_service_names_and_types())
+        if not client.wait_for_service(timeout_sec=2.0 if listed else 0.3):  # none: gz arms, say
             return []
         done = threading.Event()
         box: dict[str, Any] = {}
@@ -837,14 +866,96 @@ class MoveGroupNode(Node):
             out.append(Controller(c.name, f"{namespace}/{c.name}/follow_joint_trajectory", joints))
         return out
 
+    def _position_topics(self, joints: list[str]) -> dict[str, str] | None:
+        """gz-sim JointPositionController command topics (std_msgs/Float64, the default names
+        ``/model/<model>/joint/<joint>/n0/cmd_pos`` on ROS, with a subscriber) for every one of ``joints``; None
+        unless each joint has exactly one."""
+        found: dict[str, list[str]] = {}
+        for topic, types in self._execution_node.get_topic_names_and_types():
+            m = GZ_CMD_POS.search(topic)
+            if m and "std_msgs/msg/Float64" in types and m.group("joint") in joints:
+                if self._execution_node.count_subscribers(topic) > 0:
+                    found.setdefault(m.group("joint"), []).append(topic)
+        if set(found) != set(joints) or any(len(t) != 1 for t in found.values()):
+            return None
+        return {j: t[0] for j, t in found.items()}
+
+    def _action_served(self, action: str) -> bool:
+        from rclpy.action.graph import get_action_names_and_types
+
+        return any(name == action for name, _ in get_action_names_and_types(self._execution_node))
+
+    def _stream(self, trajectory: JointTrajectory, topics: dict[str, str], handle: Any) -> tuple[str, str]:
+        """Execute ``trajectory`` on gz JointPositionController arms: its positions, interpolated, streamed
+        to each joint's command topic at :data:`STREAM_RATE_HZ` on the wall clock, then the end held until
+        every joint is within :data:`STREAM_GOAL_TOLERANCE` of it (by /joint_states)."""
+        joints = list(trajectory.joint_names)
+        pubs = []
+        for j in joints:
+            pub = self._position_pubs.get(topics[j])
+            if pub is None:
+                pub = self._position_pubs[topics[j]] = self._execution_node.create_publisher(Float64, topics[j], 10)
+            pubs.append(pub)
+        points = [p for p in trajectory.points if len(p.positions) == len(joints)]
+        if not points:
+            return "INVALID_MOTION_PLAN", "the trajectory has no positions"
+        times = np.array([_seconds(p.time_from_start) for p in points])
+        positions = np.array([list(p.positions) for p in points], dtype=float)
+        goal = positions[-1]
+
+        def send(q: np.ndarray) -> None:
+            for pub, v in zip(pubs, q):
+                pub.publish(Float64(data=float(v)))
+
+        def measured() -> np.ndarray | None:
+            latest = self._latest_joints
+            return np.array([latest[j] for j in joints]) if all(j in latest for j in joints) else None
+
+        started = time.monotonic()
+        duration = float(times[-1])
+        period = 1.0 / STREAM_RATE_HZ
+        while True:
+            if handle.is_cancel_requested:
+                now = measured()
+                if now is not None:
+                    send(now)  # stop where the arm is
+                return "PREEMPTED", "stopped"
+            t = time.monotonic() - started
+            send(np.array([np.interp(t, times, positions[:, i]) for i in range(len(joints))]))
+            if t >= duration:
+                break
+            time.sleep(period)
+        # MoveIt's allowed_goal_duration_margin and more: the servos settle after the last set-point
+        deadline = time.monotonic() + 0.2 * duration + 3.0
+        while True:
+            now = measured()
+            error = float(np.max(np.abs(now - goal))) if now is not None else math.inf
+            if error <= STREAM_GOAL_TOLERANCE:
+                return "SUCCESS", ""
+            if handle.is_cancel_requested:
+                if now is not None:
+                    send(now)
+                return "PREEMPTED", "stopped"
+            if time.monotonic() > deadline:
+                what = "no /joint_states for them" if now is None else f"{error:.4f} from the end"
+                return "TIMED_OUT", f"the joints' command topics were streamed, but the arm is {what}"
+            send(goal)
+            time.sleep(period)
+
     def _run(self, trajectory: JointTrajectory, handle: Any) -> tuple[str, str]:
-        """Send ``trajectory`` to its FollowJointTrajectory controller and wait; cancel it when ``handle`` is."""
-        controller = self._controller_for(list(trajectory.joint_names))
+        """Send ``trajectory`` to its FollowJointTrajectory controller and wait; cancel it when ``handle`` is.
+        Without a controller serving its joints, gz-sim JointPositionController arms get it streamed."""
+        joints = list(trajectory.joint_names)
+        controller = self._controller_for(joints)
+        if controller is None or not self._action_served(controller.action):
+            topics = self._position_topics(joints)
+            if topics is not None:
+                return self._stream(trajectory, topics, handle)
         if controller is None:
             return (
                 "CONTROL_FAILED",
-                f"no controller drives {list(trajectory.joint_names)} (moveit_controllers.yaml, or an active "
-                "joint_trajectory_controller of /controller_manager)",
+                f"no controller drives {joints} (moveit_controllers.yaml, an active joint_trajectory_controller "
+                "of /controller_manager, or gz JointPositionController topics .../joint/<joint>/n0/cmd_pos)",
             )
         client = self._trajectory_clients.get(controller.action)
         if client is None:
@@ -934,7 +1045,8 @@ def move_group_main(argv: list[str]) -> int:
     parser.add_argument("--urdf", help="the robot's URDF or xacro file (else the robot_description parameter or topic)")
     parser.add_argument("--srdf", help="the robot's SRDF or SRDF xacro file (else robot_description_semantic)")
     parser.add_argument(
-        "--config", help="a MoveIt config folder: joint_limits.yaml and moveit_controllers.yaml are read"
+        "--config",
+        help="a MoveIt config folder: joint_limits.yaml, kinematics.yaml and moveit_controllers.yaml are read",
     )
     ros_args = argv[argv.index("--ros-args") :] if "--ros-args" in argv else []
     args = parser.parse_args(argv[: len(argv) - len(ros_args)] if ros_args else argv)
@@ -996,12 +1108,20 @@ def _read_description(path: str) -> str:
 
 
 def _config_parameters(folder: Path) -> list[Parameter]:
-    """joint_limits.yaml as robot_description_planning.*, moveit_controllers.yaml's controllers."""
+    """joint_limits.yaml as robot_description_planning.*, kinematics.yaml as robot_description_kinematics.*
+    (MoveIt's parameter names), moveit_controllers.yaml's controllers."""
     import yaml
 
     if not folder.is_dir():
         raise ValueError(f"{folder}: no such folder")
     out: list[Parameter] = []
+    kinematics = folder / "kinematics.yaml"
+    if kinematics.is_file():
+        data = yaml.safe_load(kinematics.read_text()) or {}
+        for group, spec in data.items():
+            for key, value in (spec or {}).items() if isinstance(spec, dict) else ():
+                if isinstance(value, (bool, int, float, str)):
+                    out.append(Parameter(f"robot_description_kinematics.{group}.{key}", value=value))
     limits = folder / "joint_limits.yaml"
     if limits.is_file():
         data = yaml.safe_load(limits.read_text()) or {}

@@ -119,7 +119,7 @@ def panda(ros_env) -> Iterator[Panda]:
     import os
 
     os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
-    # twice real time: the arm moves in sim time, and the suite waits less for it
+    # four times real time: the arm moves in sim time, and the suite waits less for it
     sim = start([*GAZELLE, "sim", "--no-viewer", "--rtf", "4"], "gazelle sim")
     sim.wait_line("gazelle: ready", timeout=60)
     spawn = start([*GAZELLE, "spawn", "-entity", "panda", "-file", str(ON_TABLE)], "spawn")
@@ -273,6 +273,14 @@ def test_compute_ik_inverts_compute_fk(panda):
     solution = dict(zip(res.solution.joint_state.name, res.solution.joint_state.position))
     (back,) = _fk(panda, solution, ["panda_link8"])
     assert math.dist((back.position.x, back.position.y, back.position.z), goal[:3]) < 1e-3
+    # without a timeout in the request, the config's kinematics.yaml gives it (0.05 s), as in MoveIt; its
+    # KDL plugin is named in a warning, since gazelle's own IK solves
+    req.ik_request.timeout = Duration()
+    res = panda.ros.call(GetPositionIK, "/compute_ik", req)
+    assert res.error_code.val == MoveItErrorCodes.SUCCESS, res.error_code.message
+    said = "\n".join(panda.move_group.lines)
+    assert "panda_arm's kinematics_solver kdl_kinematics_plugin/KDLKinematicsPlugin is MoveIt's plugin" in said
+    assert "kinematics_solver_timeout (0.05 s)" in said
 
 
 def _at_rest(panda: Panda) -> dict[str, float]:

@@ -1,0 +1,103 @@
+"""move_group executing on a Panda driven the gz-sim way, without ros2_control: a JointPositionController
+per joint (examples/arms/panda_gz_position.urdf.xacro). The config's moveit_controllers.yaml names a
+FollowJointTrajectory controller that does not exist here, so move_group streams each plan to the
+joints' command topics (/model/panda/joint/<joint>/n0/cmd_pos on ROS) and checks the end by /joint_states."""
+
+from __future__ import annotations
+
+import os
+import sys
+import threading
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from _paths import REPO
+from moveit_msgs.msg import MoveItErrorCodes
+
+from .conftest import GAZELLE, RosClient, start, wait_for
+from .test_move_group import ARM, CONFIG, PANDA, Panda, _group_states
+
+pytestmark = pytest.mark.slow
+
+GZ_PANDA = REPO / "examples" / "arms" / "panda_gz_position.urdf.xacro"
+
+
+@pytest.fixture(scope="module")
+def gz_panda(ros_env) -> Iterator[Panda]:
+    os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
+    try:
+        sim = start([*GAZELLE, "sim", "--no-viewer", "--rtf", "2"], "gazelle sim")
+        sim.wait_line("gazelle: ready", timeout=60)
+        spawn = start([*GAZELLE, "spawn", "-entity", "panda", "-file", str(GZ_PANDA)], "spawn")
+        assert spawn.wait(120) == 0, spawn.output
+        move_group = start(
+            [
+                str(Path(sys.prefix) / "bin" / "ros2"),
+                "run",
+                "gazelle",
+                "move_group",
+                "--urdf",
+                str(CONFIG / "panda.urdf.xacro"),
+                "--srdf",
+                str(CONFIG / "panda.srdf"),
+                "--config",
+                str(CONFIG),
+            ],
+            "move_group",
+        )
+        move_group.wait_line("You can start planning now!", timeout=60)
+        ros = RosClient("move_group_gz_test")
+        try:
+            yield Panda(ros, sim, move_group)
+        finally:
+            ros.close()
+    finally:
+        os.environ.pop("GAZELLE_RESOURCE_PATH", None)
+
+
+def _within(panda: Panda, target: dict[str, float], tol: float) -> dict[str, float] | None:
+    js = panda.joints()
+    return js if max(abs(js[j] - v) for j, v in target.items()) < tol else None
+
+
+def test_named_states_are_reached_through_the_joints_position_controllers(gz_panda):
+    states = _group_states("panda_arm")
+    # the plugins' <initial_position>s: the arm holds 'ready' before anything is sent
+    wait_for(lambda: _within(gz_panda, states["ready"], 0.01), 20, "the arm at its initial 'ready'")
+    for name in ("extended", "ready"):
+        result = gz_panda.action(gz_panda.move, gz_panda.joint_goal(states[name]))
+        assert result.error_code.val == MoveItErrorCodes.SUCCESS, (name, result.error_code.message)
+        # move_group reports success once every joint is within 0.01 rad of the end, by /joint_states
+        assert _within(gz_panda, states[name], 0.01), (name, gz_panda.joints())
+
+
+def test_cancelling_a_streamed_motion_stops_the_arm_short_of_its_goal(gz_panda):
+    states = _group_states("panda_arm")
+    far = {**states["ready"], "panda_joint1": 2.5}
+    goal = gz_panda.joint_goal(far)
+    goal.request.max_velocity_scaling_factor = 0.1  # slow: several seconds of motion
+    goal.request.max_acceleration_scaling_factor = 0.1
+    assert gz_panda.move.wait_for_server(timeout_sec=30)
+    done = threading.Event()
+    box: dict = {}
+
+    def on_goal(f) -> None:
+        box["handle"] = f.result()
+        box["handle"].get_result_async().add_done_callback(
+            lambda r: (box.__setitem__("result", r.result()), done.set())
+        )
+
+    gz_panda.ros.executor.create_task(lambda: gz_panda.move.send_goal_async(goal).add_done_callback(on_goal))
+    wait_for(lambda: gz_panda.joints()["panda_joint1"] > 0.3, 30, "joint 1 on its way")
+    gz_panda.ros.executor.create_task(lambda: box["handle"].cancel_goal_async())
+    assert done.wait(30), "no result after the cancel"
+    assert box["result"].result.error_code.val == MoveItErrorCodes.PREEMPTED, box["result"].result.error_code
+    stopped = gz_panda.joints()["panda_joint1"]
+    assert stopped < 2.0, stopped
+    # it stays where it stopped, a second of sim time later: nothing streams the rest of the plan
+    t0 = gz_panda.stamp
+    wait_for(lambda: gz_panda.stamp > t0 + 1.0, 15, "a second of sim time")
+    held = gz_panda.joints()
+    assert abs(held["panda_joint1"] - stopped) < 0.05, (stopped, held["panda_joint1"])
+    assert set(ARM) <= set(held)
