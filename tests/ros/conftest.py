@@ -7,6 +7,7 @@ timeouts, never bare sleeps.
 
 from __future__ import annotations
 
+import contextlib
 import math
 import os
 import signal
@@ -72,6 +73,10 @@ class Proc:
                 with self._cond:
                     self.lines.append(line.rstrip("\n"))
                     self._cond.notify_all()
+            # reaped before the last notify: a wait_line woken by it sees the exit (poll() was None for a
+            # moment after EOF, and a process that died at once cost the whole timeout)
+            with contextlib.suppress(subprocess.TimeoutExpired):
+                self.popen.wait(5)
             with self._cond:
                 self._cond.notify_all()
 
