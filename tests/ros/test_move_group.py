@@ -114,6 +114,27 @@ class Panda:
         return goal
 
 
+def start_move_group() -> Any:
+    """`ros2 run gazelle move_group` with the Panda config's URDF, SRDF and folder, ready to plan."""
+    move_group = start(
+        [
+            str(Path(sys.prefix) / "bin" / "ros2"),
+            "run",
+            "gazelle",
+            "move_group",
+            "--urdf",
+            str(CONFIG / "panda.urdf.xacro"),
+            "--srdf",
+            str(CONFIG / "panda.srdf"),
+            "--config",
+            str(CONFIG),
+        ],
+        "move_group",
+    )
+    move_group.wait_line("You can start planning now!", timeout=60)
+    return move_group
+
+
 @pytest.fixture(scope="module")
 def panda(ros_env) -> Iterator[Panda]:
     import os
@@ -136,22 +157,7 @@ def panda(ros_env) -> Iterator[Panda]:
         "spawner",
     )
     assert spawner.wait(60) == 0, spawner.output
-    move_group = start(
-        [
-            str(Path(sys.prefix) / "bin" / "ros2"),
-            "run",
-            "gazelle",
-            "move_group",
-            "--urdf",
-            str(CONFIG / "panda.urdf.xacro"),
-            "--srdf",
-            str(CONFIG / "panda.srdf"),
-            "--config",
-            str(CONFIG),
-        ],
-        "move_group",
-    )
-    move_group.wait_line("You can start planning now!", timeout=60)
+    move_group = start_move_group()
     ros = RosClient("move_group_test")
     try:
         yield Panda(ros, sim, move_group)

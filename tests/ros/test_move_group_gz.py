@@ -6,17 +6,15 @@ joints' command topics (/model/panda/joint/<joint>/n0/cmd_pos on ROS) and checks
 from __future__ import annotations
 
 import os
-import sys
 import threading
 from collections.abc import Iterator
-from pathlib import Path
 
 import pytest
 from _paths import REPO
 from moveit_msgs.msg import MoveItErrorCodes
 
 from .conftest import GAZELLE, RosClient, start, wait_for
-from .test_move_group import ARM, CONFIG, PANDA, Panda, _group_states
+from .test_move_group import ARM, PANDA, Panda, _group_states, start_move_group
 
 pytestmark = pytest.mark.slow
 
@@ -31,22 +29,7 @@ def gz_panda(ros_env) -> Iterator[Panda]:
         sim.wait_line("gazelle: ready", timeout=60)
         spawn = start([*GAZELLE, "spawn", "-entity", "panda", "-file", str(GZ_PANDA)], "spawn")
         assert spawn.wait(120) == 0, spawn.output
-        move_group = start(
-            [
-                str(Path(sys.prefix) / "bin" / "ros2"),
-                "run",
-                "gazelle",
-                "move_group",
-                "--urdf",
-                str(CONFIG / "panda.urdf.xacro"),
-                "--srdf",
-                str(CONFIG / "panda.srdf"),
-                "--config",
-                str(CONFIG),
-            ],
-            "move_group",
-        )
-        move_group.wait_line("You can start planning now!", timeout=60)
+        move_group = start_move_group()
         ros = RosClient("move_group_gz_test")
         try:
             yield Panda(ros, sim, move_group)
