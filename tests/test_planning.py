@@ -13,6 +13,8 @@ CONFIG = PANDA / "moveit_resources_panda_moveit_config" / "config"
 ARM = [f"panda_joint{i}" for i in range(1, 8)]
 READY = dict(zip(ARM, [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785]))
 IN_SELF_COLLISION = dict(zip(ARM, [0.0, 1.0, 0.0, -3.0, 0.0, 1.571, 0.785]))  # the hand inside the base
+TIPS = ["left_panda_hand", "right_panda_hand"]
+"""The chess robot's tools: below each arm's joint 7, link8 and the hand, fixed (the fingers slide)."""
 
 
 @pytest.fixture(scope="module")
@@ -237,3 +239,42 @@ def test_a_moveit_configs_kinematics_yaml_becomes_moveits_parameters():
         == "kdl_kinematics_plugin/KDLKinematicsPlugin"
     )
     assert params["robot_description_planning.joint_limits.panda_joint1.max_velocity"] == pytest.approx(2.175)
+
+
+def test_a_group_of_groups_plans_both_arms_at_once_and_the_viewer_draws_both_tools():
+    """R2's `arms` kind of group: a group made of the dual-arm SRDF's two arm groups moves all 14 joints in
+    one collision-free plan, and the viewer's planned path has a tool per arm."""
+    pytest.importorskip("roboplan")
+    import os
+
+    from _paths import REPO
+
+    from gazelle.description import load_string
+    from gazelle.planning import ArmPlanner
+    from gazelle.ros._move_group import _read_description
+    from gazelle.viewer._viewer import plan_tips
+
+    srdf = (PANDA / "dual_arm_panda_moveit_config" / "config" / "panda.srdf").read_text()
+    both = '<group name="arms"><group name="left_panda_arm"/><group name="right_panda_arm"/></group>'
+    os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
+    try:
+        urdf = _read_description(str(REPO / "examples" / "chessbot" / "chessbot.urdf.xacro"))
+        planner = ArmPlanner(urdf, srdf.replace("</robot>", f"{both}</robot>"), seed=3)
+        model = load_string(urdf).value
+    finally:
+        os.environ.pop("GAZELLE_RESOURCE_PATH")
+    assert "arms" in planner.groups, planner.warnings
+    joints = planner.group_joints("arms")
+    assert len(joints) == 14 and {j.split("_")[0] for j in joints} == {"left", "right"}
+    home = {j: v for arm in ("left", "right") for j, v in planner.named_state(f"{arm}_panda_arm", "ready").items()}
+    start = planner.state(home)
+    goal = start.copy()
+    index = {n: i for i, n in enumerate(planner.joint_names)}
+    goal[index["left_panda_joint1"]] += 0.6
+    goal[index["right_panda_joint1"]] -= 0.6
+    trajectory = planner.plan("arms", goal, start)
+    assert set(trajectory.joint_names) == set(joints)
+    end = dict(zip(trajectory.joint_names, trajectory.positions[-1]))
+    assert end["left_panda_joint1"] == pytest.approx(home["left_panda_joint1"] + 0.6, abs=1e-6)
+    assert end["right_panda_joint1"] == pytest.approx(home["right_panda_joint1"] - 0.6, abs=1e-6)
+    assert sorted(plan_tips(model, set(trajectory.joint_names))) == TIPS

@@ -95,6 +95,31 @@ class Panda:
         assert box["accepted"], "goal rejected"
         return box["result"].result
 
+    def cancel_midway(self, far: dict[str, float], joint: str, past: float) -> tuple[Any, float, float]:
+        """Send a slow joint goal toward ``far``, cancel it once ``joint`` has passed ``past``; returns the
+        result, where the joint stopped, and where it is a second of sim time later."""
+        goal = self.joint_goal(far)
+        goal.request.max_velocity_scaling_factor = 0.1  # slow: several seconds of motion
+        goal.request.max_acceleration_scaling_factor = 0.1
+        assert self.move.wait_for_server(timeout_sec=30)
+        done = threading.Event()
+        box: dict[str, Any] = {}
+
+        def on_goal(f: Any) -> None:
+            box["handle"] = f.result()
+            box["handle"].get_result_async().add_done_callback(
+                lambda r: (box.__setitem__("result", r.result()), done.set())
+            )
+
+        self.ros.executor.create_task(lambda: self.move.send_goal_async(goal).add_done_callback(on_goal))
+        wait_for(lambda: self.joints()[joint] > past, 30, f"{joint} on its way")
+        self.ros.executor.create_task(lambda: box["handle"].cancel_goal_async())
+        assert done.wait(30), f"no result after the cancel; move_group said:\n{self.move_group.output}"
+        stopped = self.joints()[joint]
+        t0 = self.stamp
+        wait_for(lambda: self.stamp > t0 + 1.0, 15, "a second of sim time")
+        return box["result"].result, stopped, self.joints()[joint]
+
     def joint_goal(self, values: dict[str, float], group: str = "panda_arm") -> Any:
         goal = MoveGroup.Goal()
         goal.request.group_name = group
@@ -193,6 +218,19 @@ def test_the_srdf_named_states_ready_and_extended_are_reached_within_a_milliradi
     # each plan was shown on /display_planned_path, as MoveIt's move_group shows it
     shown = wait_for(lambda: len(panda.displayed) >= 2 and panda.displayed, 5, "two /display_planned_path messages")
     assert shown[-1].model_id == "panda" and shown[-1].trajectory[0].joint_trajectory.joint_names == ARM
+
+
+def test_stopping_a_motion_cancels_it_on_the_controller_and_the_arm_stays_short_of_its_goal(panda):
+    """A MoveIt client's stop(): cancelling the MoveGroup goal cancels the FollowJointTrajectory goal."""
+    start = panda.joints()
+    result, stopped, held = panda.cancel_midway(
+        {**_group_states("panda_arm")["ready"], "panda_joint1": 2.5}, "panda_joint1", start["panda_joint1"] + 0.3
+    )
+    assert result.error_code.val == MoveItErrorCodes.PREEMPTED, result.error_code
+    assert stopped < 2.0 and abs(held - stopped) < 0.05, (stopped, held)
+    # back to 'ready' for the tests after this one
+    result = panda.action(panda.move, panda.joint_goal(_group_states("panda_arm")["ready"]))
+    assert result.error_code.val == MoveItErrorCodes.SUCCESS, result.error_code.message
 
 
 def _fk(panda: Panda, joints: dict[str, float], links: list[str]) -> list[Any]:
