@@ -178,6 +178,35 @@ def test_an_attached_object_moves_with_its_link_and_touches_only_its_touch_links
     assert not planner.in_collision(bent)
 
 
+def test_an_attached_object_is_kept_clear_of_world_objects(planner):
+    """A box held 30 cm under the flange, where a world box is: the state is in collision and a plan to it
+    is GOAL_IN_COLLISION; detached, the same state is free. (Before, an attached object was checked
+    against the robot only.)"""
+    from gazelle.planning import PlanningError, SceneObject, Shape
+
+    ready = planner.state(READY)
+    flange = planner.fk(ready, "panda_link8")
+    below = flange.copy()
+    below[2, 3] -= 0.3
+    cube = (Shape("box", (0.05, 0.05, 0.05), np.eye(4)),)
+    try:
+        planner.add_object(SceneObject("block", cube, below))
+        assert not planner.in_collision(ready)
+        planner.add_object(SceneObject("held", cube, np.linalg.inv(flange) @ below, link="panda_link8"))
+        assert planner.in_collision(ready)
+        start = planner.state({**READY, "panda_joint1": 0.8})
+        assert not planner.in_collision(start)  # the held box swung away from the block
+        with pytest.raises(PlanningError) as err:
+            planner.plan("panda_arm", ready, start)
+        assert err.value.code == "GOAL_IN_COLLISION"
+        assert planner.remove_object("held")
+        assert not planner.in_collision(ready)
+        assert [o.name for o in planner.objects()] == ["block"]  # the world object stayed through the rebuilds
+    finally:
+        planner.remove_object("held")
+        planner.remove_object("block")
+
+
 def test_a_cartesian_path_follows_a_straight_line_and_reports_the_fraction_it_reached(planner):
     start = planner.state(READY)
     begin = planner.fk(start, "panda_link8")
