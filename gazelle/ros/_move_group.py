@@ -73,7 +73,7 @@ SIM_PADDING = 0.01
 """m the simulation's objects are grown by for planning: the simulated robot collides with the convex
 hulls of its meshes, a little fatter than the meshes the planner checks (an arm planned 5 mm past a
 pillar brushed it)."""
-CURRENT_STATE_WAIT = 2.0
+CURRENT_STATE_WAIT = 5.0
 """s a request waits for the first /joint_states (MoveIt's planning-scene monitor waits 1 s)."""
 _ENDED = (GoalStatus.STATUS_SUCCEEDED, GoalStatus.STATUS_CANCELED, GoalStatus.STATUS_ABORTED)
 STREAM_RATE_HZ = 100.0
@@ -927,10 +927,13 @@ class MoveGroupNode(Node):
             time.sleep(period)
         # MoveIt's allowed_goal_duration_margin and more: the servos settle after the last set-point
         deadline = time.monotonic() + 0.2 * duration + 3.0
+        settled = 0
         while True:
             now = measured()
             error = float(np.max(np.abs(now - goal))) if now is not None else math.inf
-            if error <= STREAM_GOAL_TOLERANCE:
+            # within the tolerance for 0.1 s on end: a servo swinging through the goal is not there yet
+            settled = settled + 1 if error <= STREAM_GOAL_TOLERANCE else 0
+            if settled >= STREAM_RATE_HZ / 10:
                 return "SUCCESS", ""
             if handle.is_cancel_requested:
                 if now is not None:
