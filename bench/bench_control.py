@@ -102,6 +102,26 @@ def rtf_of(kind: str, seconds: float) -> float:
     return best
 
 
+def floor_rtf(seconds: float) -> float:
+    """The fastest any per-step Python cycle can go: the same world stepped one ``mj_step`` at a time with
+    one vector write of the six position targets between steps, and nothing else (no controller logic)."""
+    import mujoco
+    import numpy as np
+
+    sim, _ = make("idle")
+    m, d = sim.world.model, sim.world.data
+    ctrl = np.array(d.ctrl[:6])
+    n = round(seconds / sim.world.timestep)
+    best = 0.0
+    for _ in range(3):
+        t0 = time.perf_counter()
+        for _ in range(n):
+            d.ctrl[:6] = ctrl
+            mujoco.mj_step(m, d)
+        best = max(best, seconds / (time.perf_counter() - t0))
+    return best
+
+
 def main() -> int:
     logging.disable(logging.WARNING)
     os.environ["GAZELLE_RESOURCE_PATH"] = str(R6BOT)
@@ -109,12 +129,15 @@ def main() -> int:
     none = rtf_of("none", seconds)
     idle = rtf_of("idle", seconds)
     jtc = rtf_of("jtc", seconds)
+    floor = floor_rtf(seconds)
     print("r6bot, 1 ms physics steps, best of 3 runs of 5 sim-seconds each")
     print(f"{'case':58s} {'RTF':>8s}")
     print(f"{'no ros2_control (joints limp)':58s} {none:7.1f}x")
     print(f"{'controller manager at 1 kHz, no controller (joints held)':58s} {idle:7.1f}x")
     print(f"{'JTC + joint_state_broadcaster at 1 kHz, following a path':58s} {jtc:7.1f}x")
+    print(f"{'floor: a bare Python loop, one ctrl write + mj_step per step':58s} {floor:7.1f}x")
     print(f"ratio JTC / no ros2_control: {jtc / none:.2f} (goal >= 0.8)")
+    print(f"ratio floor / no ros2_control: {floor / none:.2f} (the best any per-step Python cycle can do)")
     print(f"ratio JTC / manager without controllers: {jtc / idle:.2f}")
     return 0
 
