@@ -16,7 +16,7 @@ from _paths import SEED_XACRO
 from gazelle.description import Pose, load, load_string
 from gazelle.physics import ActuatorKind, JointHandle
 from gazelle.sim import MAX_CATCH_UP_SEC, Simulation
-from gazelle.systems import MsgType, System, Twist, UpdateInfo
+from gazelle.systems import MsgType, RateGate, System, Twist, UpdateInfo
 from gazelle.systems.diff_drive import DiffDrive
 from gazelle.worlds import default_world
 
@@ -87,6 +87,38 @@ def test_a_system_that_declares_no_rate_runs_every_step_and_one_with_a_rate_at_i
     sim.step(1000)
     assert sim.iterations - before == 1000
     assert len(slow2.times) == 10
+
+
+class _GatedTwentyHz(System):
+    """A system whose post_update starts with its RateGate (a sensor's shape), counting every call."""
+
+    def __init__(self) -> None:
+        self.calls = 0
+        self.published: list[float] = []
+        self._gate = RateGate()
+        self.phase_gate = self._gate
+
+    def next_update(self, sim_time_sec: float) -> float:
+        return self._gate.next
+
+    def post_update(self, info: UpdateInfo, world) -> None:
+        self.calls += 1
+        if self._gate.due(info.sim_time_sec, 20.0):
+            self.published.append(round(info.sim_time_sec, 6))
+
+
+def test_a_gated_phase_is_called_only_when_its_gate_is_due_even_beside_an_every_step_system() -> None:
+    """A 20 Hz sensor next to a system that runs every step (gz-sim's diff drive): its post_update is not
+    called on the 49 steps out of 50 where it would return at once, and it still acts at its times."""
+    sim = Simulation(default_world(), rtf=0)
+    fast, gated = _EveryStep(), _GatedTwentyHz()
+    sim.systems.add("x", fast)
+    sim.systems.add("x", gated)
+    sim.step(500)
+    assert len(fast.times) == 500
+    assert gated.published[:4] == [0.001, 0.05, 0.1, 0.15]
+    assert len(gated.published) == 11  # 0.001, then every 50 ms up to 0.5 s
+    assert gated.calls == len(gated.published)  # never called while not due
 
 
 def test_blocks_do_not_change_the_trajectory() -> None:

@@ -228,6 +228,44 @@ def test_an_imu_spinning_about_z_reads_omega_and_the_centripetal_acceleration():
     assert abs(a[1]) < 0.01 and abs(a[2]) < 0.01
 
 
+def test_a_yawed_imu_off_the_axis_reads_in_its_own_frame_and_its_orientation_includes_the_yaw():
+    """The sensor 0.3 m along the body's x and yawed +90° on it: its x axis is the body's y. Spinning at
+    omega about z, it reads omega about its z, the centripetal omega^2 r towards the axis (the body's -x,
+    the sensor's +y), and its orientation is the body's yaw plus 90°."""
+    world = dataclasses.replace(default_world(), gravity=(0.0, 0.0, 0.0))
+    sim = Simulation(world, rtf=0)
+    entity = _spawn(sim, _imu_box(offset=f"0.3 0 0 0 0 {math.pi / 2!r}"), "imu_box", Pose((0.0, 0.0, 1.0)))
+    imu = next(s for s in entity.systems if isinstance(s, ImuSensor))
+    omega = 2.0
+    sim.world.set_entity_state("imu_box", Pose((0.0, 0.0, 1.0)), angular=(0.0, 0.0, omega))
+    sim.step(100)
+    q, w, a = imu.read()
+    assert w[2] == pytest.approx(omega, rel=0.01) and abs(w[0]) < 1e-3 and abs(w[1]) < 1e-3
+    assert a[1] == pytest.approx(omega**2 * 0.3, rel=0.01)
+    assert abs(a[0]) < 0.01 and abs(a[2]) < 0.01
+    body = sim.world.entity_state("imu_box").pose.orientation
+    body_yaw = 2.0 * math.atan2(body[3], body[0])
+    yaw = 2.0 * math.atan2(q[3], q[0])
+    assert abs(q[1]) < 1e-6 and abs(q[2]) < 1e-6
+    assert math.remainder(yaw - body_yaw - math.pi / 2, 2 * math.pi) == pytest.approx(0.0, abs=1e-6)
+
+
+def test_a_yawed_lidar_on_its_link_scans_in_its_own_frame():
+    """A lidar turned +90° on its post faces the world's +y: a wall 2 m along +y is straight ahead of it."""
+    sim = Simulation(default_world(), rtf=0)
+    d = 2.0
+    _spawn(sim, _wall("wall", 0.0, d + 0.1, 20.0, 0.2), "wall")
+    xml = _lidar_model().replace("<pose>0 0 0.5 0 0 0</pose>", f"<pose>0 0 0.5 0 0 {math.pi / 2!r}</pose>")
+    scanner = _spawn(sim, xml, "scanner")
+    scans = _record(sim, "/scan")
+    sim.step(2)
+    ranges = np.frombuffer(scans[-1].ranges, np.float32)
+    angles = -math.pi / 2 + (math.pi / 180) * np.arange(181)
+    hits = np.abs(angles) < math.radians(75)
+    assert np.all(np.abs(ranges[hits] - d / np.cos(angles[hits])) < 1e-3)
+    assert _lidar(scanner).world_points(sim.world)[:, 1].max() == pytest.approx(d, abs=1e-3)
+
+
 def test_imu_noise_per_axis_as_configured():
     noise = (
         "<imu><angular_velocity>"

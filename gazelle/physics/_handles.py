@@ -241,7 +241,11 @@ class BodyHandle:
         """:meth:`PhysicsWorld.joint_wrench` of this link: what its parent exerts on it, about ``point``."""
         return self.world.joint_wrench(self._id.get(self.world), point)
 
-    def imu_reading(self, offset: Pose) -> tuple[tuple[float, float, float, float], np.ndarray, np.ndarray]:
+    def cast_rays_from(self, offset: Pose, directions: np.ndarray, max_range: float) -> tuple[np.ndarray, np.ndarray]:
+        """:meth:`PhysicsWorld.cast_rays_from` a sensor at ``offset`` on this link (never hitting the link)."""
+        return self.world.cast_rays_from(self._id.get(self.world), offset, directions, max_range)
+
+    def imu_reading(self, offset: Pose) -> list[float]:
         """:meth:`PhysicsWorld.imu_reading` of a sensor at ``offset`` in this link's frame."""
         return self.world.imu_reading(self._id.get(self.world), offset)
 

@@ -262,14 +262,15 @@ class PhysicsWorld:
         """Bumped at every recompile: indices cached against an older generation are stale."""
         self._before_compile: list[Callable[[], None]] = []
         self._kinematics_stale = False
-        self._imu_acc, self._imu_vel, self._imu_quat, self._imu_R = (
+        self._imu_acc, self._imu_vel, self._imu_quat, self._imu_R, self._imu_wa = (
             np.empty(6),
             np.empty(6),
             np.empty(4),
             np.empty((3, 3)),
+            np.empty((2, 3)),
         )
-        self._offsets: dict[Pose, tuple[np.ndarray, np.ndarray]] = {}
-        """IMU offsets (in their body) -> (position, rotation matrix)."""
+        self._offsets: dict[Pose, tuple[np.ndarray, np.ndarray, bool, bool]] = {}
+        """Sensor offsets (in their body) -> (position, rotation matrix, at the origin, unrotated)."""
         self._actuator_gains: dict[str, tuple[np.ndarray, np.ndarray]] = {}
         """Actuator name -> its gain and bias parameters as added (see :meth:`set_actuator_enabled`)."""
         self._overlap_steps = 0
@@ -958,14 +959,34 @@ class PhysicsWorld:
         ``mj_multiRay`` call. Returns (distances, geom ids): distance -1 and id -1 where nothing is hit
         within ``max_range``."""
         self._refresh_kinematics()
+        origin, directions = np.ascontiguousarray(origin, dtype=float), np.ascontiguousarray(directions, dtype=float)
+        return self._multi_ray(origin, directions, exclude_body, max_range)
+
+    def cast_rays_from(
+        self, body_id: int, offset: Pose, directions: np.ndarray, max_range: float
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """:meth:`cast_rays` from a sensor at ``offset`` in body ``body_id``'s frame, with the unit
+        ``directions`` (N×3) in the sensor's frame, ignoring that body (a lidar's own housing). The
+        sensor's world pose is composed from MuJoCo's arrays (a lidar scans at its rate, often)."""
+        self._refresh_kinematics()
+        d = self.data
+        p_BS, R_BS, at_origin, unrotated = self._offset(offset)
+        R_WB = d.xmat[body_id].reshape(3, 3)
+        origin = d.xpos[body_id] if at_origin else d.xpos[body_id] + R_WB @ p_BS
+        R_WS = R_WB if unrotated else R_WB @ R_BS
+        return self._multi_ray(np.ascontiguousarray(origin), directions @ R_WS.T, body_id, max_range)
+
+    def _multi_ray(
+        self, origin: np.ndarray, directions: np.ndarray, exclude_body: int, max_range: float
+    ) -> tuple[np.ndarray, np.ndarray]:
         n = len(directions)
         dist = np.empty(n)
         geom = np.empty(n, dtype=np.int32)
         mujoco.mj_multiRay(
             self.model,
             self.data,
-            np.ascontiguousarray(origin, dtype=float),
-            np.ascontiguousarray(directions, dtype=float).reshape(-1),
+            origin,
+            directions.reshape(-1),
             RAY_GEOM_GROUPS,
             True,
             exclude_body,
@@ -977,37 +998,50 @@ class PhysicsWorld:
         )
         return dist, geom
 
-    def imu_reading(
-        self, body_id: int, offset: Pose
-    ) -> tuple[tuple[float, float, float, float], np.ndarray, np.ndarray]:
-        """What an ideal IMU at ``offset`` (a pose in the body frame) reads now: its world orientation
-        (w, x, y, z), its angular velocity and its proper linear acceleration, both in its own frame.
-        At rest the acceleration is +g upwards (0, 0, 9.81), as a real accelerometer reads: MuJoCo's
-        body accelerations (``mj_rnePostConstraint``) start from the gravity as a base acceleration.
-        Only derived fields are computed, so the trajectory is unchanged. (Called at an IMU's rate
-        thousands of times a second faster than real time: it avoids Python objects where it can.)"""
+    def _offset(self, offset: Pose) -> tuple[np.ndarray, np.ndarray, bool, bool]:
+        """A sensor's pose in its body, cached as (position, rotation matrix, at the origin, unrotated)."""
+        cached = self._offsets.get(offset)
+        if cached is None:
+            p = np.asarray(offset.position, dtype=float)
+            R = rotation_matrix(offset.orientation)
+            cached = self._offsets[offset] = (p, R, not p.any(), offset.orientation == (1.0, 0.0, 0.0, 0.0))
+        return cached
+
+    def imu_reading(self, body_id: int, offset: Pose) -> list[float]:
+        """What an ideal IMU at ``offset`` (a pose in the body frame) reads now, as ten floats: its world
+        orientation (w, x, y, z), then its angular velocity and its proper linear acceleration, both in its
+        own frame. At rest the acceleration is +g upwards (0, 0, 9.81), as a real accelerometer reads:
+        MuJoCo's body accelerations (``mj_rnePostConstraint``) start from the gravity as a base
+        acceleration. Only derived fields are computed, so the trajectory is unchanged.
+
+        Called at an IMU's rate, thousands of times a wall second when the world runs faster than real
+        time: a sensor at the body's origin and unrotated in it (the usual case) costs four MuJoCo calls
+        and one 2x3 by 3x3 product."""
         self._refresh_kinematics()
         m, d = self.model, self.data
         mujoco.mj_rnePostConstraint(m, d)
-        acc, vel = self._imu_acc, self._imu_vel
+        acc, vel, wa = self._imu_acc, self._imu_vel, self._imu_wa
         mujoco.mj_objectAcceleration(m, d, mujoco.mjtObj.mjOBJ_XBODY, body_id, acc, 0)
         mujoco.mj_objectVelocity(m, d, mujoco.mjtObj.mjOBJ_XBODY, body_id, vel, 0)
-        cached = self._offsets.get(offset)
-        if cached is None:
-            R = rotation_matrix(offset.orientation)
-            cached = self._offsets[offset] = (np.asarray(offset.position, dtype=float), R)
-        p_BS, R_BS = cached
+        p_BS, R_BS, at_origin, unrotated = self._offset(offset)
         R_WB = d.xmat[body_id].reshape(3, 3)
-        w, a = vel[:3], acc[3:]
-        if p_BS.any():  # a sensor off the body origin also feels alpha x r and the centripetal w x (w x r)
+        wa[0] = vel[:3]
+        if at_origin:
+            wa[1] = acc[3:]
+        else:  # a sensor off the body origin also feels alpha x r and the centripetal w x (w x r)
             r = R_WB @ p_BS
-            a = a + _cross(acc[:3], r) + _cross(w, _cross(w, r))
-        R_WS, q, w_S, a_S = self._imu_R, self._imu_quat, np.empty(3), np.empty(3)
-        mujoco.mju_mulMatMat(R_WS, R_WB, R_BS)
-        mujoco.mju_mat2Quat(q, R_WS.reshape(-1))
-        mujoco.mju_mulMatTVec(w_S, R_WS, w)
-        mujoco.mju_mulMatTVec(a_S, R_WS, np.ascontiguousarray(a))
-        return (float(q[0]), float(q[1]), float(q[2]), float(q[3])), w_S, a_S
+            w = vel[:3]
+            wa[1] = acc[3:] + _cross(acc[:3], r) + _cross(w, _cross(w, r))
+        if unrotated:
+            R_WS = R_WB
+            q = d.xquat[body_id].tolist()
+        else:
+            R_WS, q4 = self._imu_R, self._imu_quat
+            mujoco.mju_mulMatMat(R_WS, R_WB, R_BS)
+            mujoco.mju_mat2Quat(q4, R_WS.reshape(-1))
+            q = q4.tolist()
+        # the rows of wa @ R_WS are (R_WS^T w)^T and (R_WS^T a)^T: both vectors in the sensor's frame
+        return q + (wa @ R_WS).ravel().tolist()
 
     def frame_pose(self, frame: str) -> Pose:
         """World pose of a frame named in a request: a :data:`WORLD_FRAMES` name, an entity (its model

@@ -110,6 +110,7 @@ class P3D(System):
         self.child_frame_id = ""
         self.topic = ""
         self._gate = RateGate()
+        self.phase_gate = self._gate
         self._rng = random.Random(seed)
 
     def configure(self, ctx: SystemContext) -> None:

@@ -116,6 +116,7 @@ class RobotStatePublisher(System):
         self._moving: list[_MovingJoint] = []
         self._tf: Endpoint | None = None
         self._gate = RateGate()
+        self.phase_gate = self._gate
 
     def configure(self, ctx: SystemContext) -> None:
         """Read the configuration, find the joints, advertise the topics (and publish the latched ones)."""
@@ -197,6 +198,7 @@ class JointStatePublisher(System):
         self._pub: Endpoint | None = None
         self._joints: list[str] = []
         self._gate = RateGate()
+        self.phase_gate = self._gate
         self._handles: list[JointHandle] = []
 
     def configure(self, ctx: SystemContext) -> None:

@@ -61,6 +61,7 @@ from ._bus import (
     ParamValue,
     PointCloud,
     Range,
+    Vec3,
     Vector3Stamped,
     WrenchStamped,
     resolve_topic,
@@ -81,6 +82,9 @@ MAX_IMAGE_SIDE = 8192
 
 SENSOR_DEPTH = 5
 """Publisher history of every sensor topic: SensorDataQoS's depth 5, made reliable as gazebo_ros does."""
+
+NOISE_ROWS = 256
+"""An IMU draws its noise for this many readings at once (the same random stream as one draw a reading)."""
 
 
 # --------------------------------------------------------------------------- noise
@@ -379,6 +383,7 @@ class _SensorSystem(System):
         self._pub: Endpoint | None = None
         self._body: BodyHandle | None = None
         self._gate = RateGate()
+        self.phase_gate = self._gate  # post_update does nothing while the gate is not due
         self._rng = np.random.default_rng(seed)
 
     def node_parameters(self) -> dict[str, ParamValue]:
@@ -472,6 +477,7 @@ class Lidar(_SensorSystem):
         super().__init__(seed)
         self.spec = LidarSpec()
         self._dirs = np.zeros((0, 3))
+        self._intensity_cache: tuple[tuple[int, float], bytes] = ((0, 0.0), b"")
 
     def configure(self, ctx: SystemContext) -> None:
         """Parse the sensor's ``<ray>``/``<lidar>`` block and the plugin; declare the output topic."""
@@ -494,18 +500,21 @@ class Lidar(_SensorSystem):
         """Ranges (vertical-major, v rows x h columns) with noise (unless ``noise`` is False: the viewer's
         overlay, which must not draw from the sensor's random stream) and REP 117's ±inf."""
         assert self._body is not None
-        X_WS = self.sensor_pose()
-        R = rotation_matrix(X_WS.orientation)
-        dist, _ = self._body.cast_rays(np.asarray(X_WS.position), self._dirs @ R.T, self.spec.range_max)
         s = self.spec
+        dist, _ = self._body.cast_rays_from(self.offset, self._dirs, s.range_max)
         hit = dist >= 0
-        ranges = np.where(hit, dist, np.inf)
         if noise and s.noise.active:
-            n = int(hit.sum())
-            ranges[hit] += s.noise.mean + (self._rng.normal(0.0, s.noise.stddev, n) if s.noise.stddev > 0 else 0.0)
-        ranges[hit & (ranges < s.range_min)] = -np.inf
-        ranges[hit & (ranges > s.range_max)] = np.inf
+            dist += s.noise.mean + (self._rng.normal(0.0, s.noise.stddev, len(dist)) if s.noise.stddev > 0 else 0.0)
+        ranges = np.where(hit, dist, np.inf)  # a miss is +inf; a hit nearer than range_min is -inf
+        np.copyto(ranges, -np.inf, where=ranges < s.range_min)
+        np.copyto(ranges, np.inf, where=ranges > s.range_max)
         return ranges.reshape(s.vertical.count, s.horizontal.count)
+
+    def _intensities(self, n: int, value: float) -> bytes:
+        """A scan's intensities (every ray the same), made once."""
+        if self._intensity_cache[0] != (n, value):
+            self._intensity_cache = ((n, value), np.full(n, value, np.float32).tobytes())
+        return self._intensity_cache[1]
 
     def world_points(self, world: PhysicsWorld) -> np.ndarray:
         """The noise-free hit points of a scan now, in the world frame (N x 3, float32): the viewer's overlay."""
@@ -535,7 +544,7 @@ class Lidar(_SensorSystem):
                     s.range_min,
                     s.range_max,
                     row.tobytes(),
-                    np.full(len(row), intensity, np.float32).tobytes(),
+                    self._intensities(len(row), intensity),
                     scan_time=1.0 / self.rate_hz if self.rate_hz > 0 else 0.0,
                 )
             )
@@ -617,6 +626,9 @@ class ImuSensor(_SensorSystem):
         self._mean = np.zeros(6)
         self._std = np.zeros(6)
         self._noisy = False
+        self._perturbed = False
+        self._rows: list[list[float]] = []
+        """What the next readings add to the six channels (bias + mean + noise), drawn NOISE_ROWS at a time."""
         self._cov: tuple[tuple[float, ...], tuple[float, ...]] = ((0.0,) * 9, (0.0,) * 9)
 
     def configure(self, ctx: SystemContext) -> None:
@@ -631,6 +643,8 @@ class ImuSensor(_SensorSystem):
         self._mean = np.array([n.mean if n.active else 0.0 for n in channels])
         self._std = np.array([n.stddev if n.active else 0.0 for n in channels])
         self._noisy = bool(self._mean.any() or self._std.any())
+        self._perturbed = self._noisy or bool(self._bias.any())
+        self._rows = []
 
         def cov(ns: tuple[Noise, Noise, Noise]) -> tuple[float, ...]:
             c = [0.0] * 9
@@ -649,18 +663,29 @@ class ImuSensor(_SensorSystem):
         super().reset(info, world)
         self._q0 = None
 
-    def read(self) -> tuple[tuple[float, float, float, float], np.ndarray, np.ndarray]:
+    def read(self) -> tuple[tuple[float, float, float, float], Vec3, Vec3]:
         """(orientation, angular velocity, linear acceleration) with noise, as published."""
         assert self._body is not None
-        q, w, a = self._body.imu_reading(self.offset)
+        r = self._body.imu_reading(self.offset)
+        q = (r[0], r[1], r[2], r[3])
         if self.orientation_reference:
             if self._q0 is None:
                 self._q0 = q
             q = quat_mul(quat_conj(self._q0), q)
-        values = np.concatenate([w, a]) + self._bias
-        if self._noisy:
-            values += self._mean + self._std * self._rng.standard_normal(6)
-        return q, values[:3], values[3:]
+        if not self._perturbed:
+            return q, (r[4], r[5], r[6]), (r[7], r[8], r[9])
+        if not self._rows:
+            self._rows = self._perturbation_rows()
+        n = self._rows.pop()
+        return q, (r[4] + n[0], r[5] + n[1], r[6] + n[2]), (r[7] + n[3], r[8] + n[4], r[9] + n[5])
+
+    def _perturbation_rows(self) -> list[list[float]]:
+        """The next :data:`NOISE_ROWS` readings' additions (bias + mean + stddev x N(0, 1)), in the order
+        :meth:`read` pops them: drawing them together costs what one draw per reading cost."""
+        rows = np.broadcast_to(self._bias + self._mean, (NOISE_ROWS, 6))
+        if self._std.any():
+            rows = rows + self._std * self._rng.standard_normal((NOISE_ROWS, 6))
+        return rows[::-1].tolist()
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         """At the sensor's rate, while listened to: read and publish stamped with this sim time."""
@@ -668,14 +693,13 @@ class ImuSensor(_SensorSystem):
             return
         assert self._pub is not None and self.output is not None
         q, w, a = self.read()
-        wl, al = w.tolist(), a.tolist()
         self._pub.publish(
             Imu(
                 info.sim_time_sec,
                 self.output.frame_id,
                 q,
-                (wl[0], wl[1], wl[2]),
-                (al[0], al[1], al[2]),
+                w,
+                a,
                 angular_velocity_covariance=self._cov[0],
                 linear_acceleration_covariance=self._cov[1],
             )
@@ -744,6 +768,7 @@ class AltimeterSensor(_SensorSystem):
 
     def __init__(self, seed: int | None = None) -> None:
         super().__init__(seed)
+        self.phase_gate = None  # post_update takes the reference height at the first step, due or not
         self._noise = (Noise(), Noise())
         self._bias = (0.0, 0.0)
         self.reference: float | None = None
@@ -1345,6 +1370,7 @@ class ForceTorqueSensor(System):
         self._parent: BodyHandle | None = None
         self._pub: Endpoint | None = None
         self._gate = RateGate()
+        self.phase_gate = self._gate
         self._rng = np.random.default_rng(seed)
 
     @property

@@ -441,8 +441,8 @@ def _sensor_reader(
                 body, offset = world.body(entity.name, link.name), sensor.pose
 
                 def read_imu(body: BodyHandle = body, offset: Pose = offset) -> list[float]:
-                    q, w, a = body.imu_reading(offset)
-                    return [q[1], q[2], q[3], q[0], *w.tolist(), *a.tolist()]
+                    r = body.imu_reading(offset)  # w, x, y, z, then angular velocity and acceleration
+                    return [r[1], r[2], r[3], r[0], *r[4:]]
 
                 return IMU_INTERFACES, read_imu
             if sensor.type in ("force_torque", "forcetorque") and sensor.joint:

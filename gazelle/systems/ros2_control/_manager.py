@@ -112,6 +112,7 @@ class ControllerManager(System):
         self.config = ControlPluginConfig()
         self._extra_files = extra_param_files
         self._gate = RateGate()
+        self.phase_gate = self._gate
         self._ctx: SystemContext | None = None
         self.log = logging.getLogger("controller_manager")
 
