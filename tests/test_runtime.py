@@ -71,13 +71,20 @@ class _TenHz(System):
             self._next = info.sim_time_sec + 0.1
 
 
-def test_a_system_that_declares_no_rate_runs_every_step_and_one_with_a_rate_at_its_times() -> None:
+def _500_steps_beside_an_every_step_system(system: System) -> Simulation:
+    """A world where ``system`` runs beside one that runs every step, after 500 steps (each one a block)."""
     sim = Simulation(default_world(), rtf=0)
-    fast, slow = _EveryStep(), _TenHz()
+    fast = _EveryStep()
     sim.systems.add("x", fast)
-    sim.systems.add("x", slow)
+    sim.systems.add("x", system)
     sim.step(500)
     assert len(fast.times) == 500
+    return sim
+
+
+def test_a_system_that_declares_no_rate_runs_every_step_and_one_with_a_rate_at_its_times() -> None:
+    slow = _TenHz()
+    sim = _500_steps_beside_an_every_step_system(slow)
     assert slow.times[:5] == [0.001, 0.101, 0.201, 0.301, 0.401]
     sim.systems.remove_owner("x")
     slow2 = _TenHz()
@@ -110,12 +117,8 @@ class _GatedTwentyHz(System):
 def test_a_gated_phase_is_called_only_when_its_gate_is_due_even_beside_an_every_step_system() -> None:
     """A 20 Hz sensor next to a system that runs every step (gz-sim's diff drive): its post_update is not
     called on the 49 steps out of 50 where it would return at once, and it still acts at its times."""
-    sim = Simulation(default_world(), rtf=0)
-    fast, gated = _EveryStep(), _GatedTwentyHz()
-    sim.systems.add("x", fast)
-    sim.systems.add("x", gated)
-    sim.step(500)
-    assert len(fast.times) == 500
+    gated = _GatedTwentyHz()
+    _500_steps_beside_an_every_step_system(gated)
     assert gated.published[:4] == [0.001, 0.05, 0.1, 0.15]
     assert len(gated.published) == 11  # 0.001, then every 50 ms up to 0.5 s
     assert gated.calls == len(gated.published)  # never called while not due

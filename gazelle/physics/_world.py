@@ -1015,8 +1015,8 @@ class PhysicsWorld:
         acceleration. Only derived fields are computed, so the trajectory is unchanged.
 
         Called at an IMU's rate, thousands of times a wall second when the world runs faster than real
-        time: a sensor at the body's origin and unrotated in it (the usual case) costs four MuJoCo calls
-        and one 2x3 by 3x3 product."""
+        time: a sensor at the body's origin and unrotated in it (the usual case) costs three MuJoCo calls
+        (after the kinematics are brought up to date) and one 2x3 by 3x3 product."""
         self._refresh_kinematics()
         m, d = self.model, self.data
         mujoco.mj_rnePostConstraint(m, d)
