@@ -270,6 +270,22 @@ def test_a_moveit_configs_kinematics_yaml_becomes_moveits_parameters():
     assert params["robot_description_planning.joint_limits.panda_joint1.max_velocity"] == pytest.approx(2.175)
 
 
+def test_a_moveit_configs_ompl_planning_yaml_becomes_ompl_parameters_that_move_group_names():
+    """ompl_planning.yaml, read by --config, as MoveItConfigsBuilder lays it out (``ompl.*``), so that
+    move_group can say at start that it plans with its own pipeline; keys no parameter can be named after
+    are left out rather than failing the node."""
+    pytest.importorskip("rclpy")
+    from gazelle.ros._move_group import PIPELINE_PARAMETERS, _config_parameters, _flat
+
+    params = {p.name: p.value for p in _config_parameters(CONFIG)}
+    assert params["ompl.planner_configs.RRTConnectkConfigDefault.type"] == "geometric::RRTConnect"
+    assert "default_planning_response_adapters/AddTimeOptimalParameterization" in params["ompl.response_adapters"]
+    assert "RRTConnectkConfigDefault" in params["ompl.panda_arm.planner_configs"]
+    assert {n.split(".", 1)[0] for n in params if n.startswith("ompl.")} <= PIPELINE_PARAMETERS
+    flat = {p.name for p in _flat("ompl", {"good": 1, "bad key": 2, "mixed": [1, "a"], "nested": {"9x": 3}})}
+    assert flat == {"ompl.good"}
+
+
 def test_a_group_of_groups_plans_both_arms_at_once_and_the_viewer_draws_both_tools():
     """R2's `arms` kind of group: a group made of the dual-arm SRDF's two arm groups moves all 14 joints in
     one collision-free plan, and the viewer's planned path has a tool per arm."""

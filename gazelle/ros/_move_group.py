@@ -138,6 +138,7 @@ class MoveGroupNode(Node):
         self.planner: ArmPlanner | None = None
         self._latest_joints: dict[str, float] = {}
         self._warned_no_state = False  # from /joint_states; the planner takes it when it plans
+        self._noted: set[str] = set()  # what of the requests gazelle does not honour, said once each
         self._texts: dict[str, str] = {}
         self._sim_objects: set[str] = set()  # ids of the objects that came from the simulation
         self._sim_world: Any = None  # the simulation's geometry heard before the robot was known
@@ -277,6 +278,14 @@ class MoveGroupNode(Node):
                     f"loaded; gazelle's IK (roboplan) solves, within kinematics_solver_timeout "
                     f"({self._ik_timeout(group):g} s) when a request gives no timeout"
                 )
+        pipeline = sorted(n for n in self._parameters if n.split(".", 1)[0] in PIPELINE_PARAMETERS)
+        if pipeline:
+            shown = ", ".join(pipeline[:3]) + (f" and {len(pipeline) - 3} more" if len(pipeline) > 3 else "")
+            self.get_logger().warning(
+                f"MoveIt's planning pipeline settings are not used ({shown}: ompl_planning.yaml's planner "
+                "configurations and adapters): gazelle plans every request with roboplan's RRT-Connect, "
+                "shortcutting and TOPP-RA time parameterization within the joint limits"
+            )
         self.planner = planner
         if self._sim_world is not None:
             with self._lock:
@@ -630,6 +639,7 @@ class MoveGroupNode(Node):
         if not request.goal_constraints:
             raise PlanningError("INVALID_GOAL_CONSTRAINTS", "the request has no goal_constraints")
         goal = self._goal(group, joints, request.goal_constraints[0], start)
+        self._note_unhonoured(request)
         timeout = request.allowed_planning_time or 5.0
         traj = planner.plan(
             group,
@@ -640,6 +650,26 @@ class MoveGroupNode(Node):
             timeout=timeout,
         )
         return start, traj
+
+    def _note_unhonoured(self, request: Any) -> None:
+        """Say what of a MotionPlanRequest gazelle's planner does not honour, once per kind (the request
+        is planned all the same, as MoveIt plans with what it has)."""
+        notes = []
+        if request.pipeline_id and request.pipeline_id != "ompl":
+            notes.append(f"pipeline_id '{request.pipeline_id}' is not simulated")
+        if request.planner_id and "rrtconnect" not in request.planner_id.lower():
+            notes.append(f"planner_id '{request.planner_id}' is not simulated")
+        path = request.path_constraints
+        if path.joint_constraints or path.position_constraints or path.orientation_constraints:
+            notes.append("path_constraints are not honoured: the path between the start and the goal ignores them")
+        if path.visibility_constraints or request.trajectory_constraints.constraints:
+            notes.append("visibility and trajectory constraints are not honoured")
+        if len(request.goal_constraints) > 1:
+            notes.append(f"only the first of {len(request.goal_constraints)} goal_constraints is planned to")
+        for note in notes:
+            if note not in self._noted:
+                self._noted.add(note)
+                self.get_logger().warning(f"motion plan request: {note}; gazelle plans with RRT-Connect")
 
     def _goal(self, group: str, joints: list[str], constraints: Any, start: np.ndarray) -> np.ndarray:
         """The goal configuration of one Constraints message: joint constraints, or a pose goal."""
@@ -1110,9 +1140,38 @@ def _read_description(path: str) -> str:
     return out
 
 
+PIPELINE_PARAMETERS = frozenset(
+    {"ompl", "planning_pipelines", "planning_plugin", "planning_plugins", "request_adapters", "response_adapters"}
+)
+"""The first name parts of MoveIt's planning pipeline parameters (ompl_planning.yaml under ``ompl.``, and
+the pipeline's own): not used by gazelle's planner, and said so at start."""
+
+
+_PARAMETER_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*)*")
+
+
+def _flat(prefix: str, data: Any) -> list[Parameter]:
+    """A YAML mapping as ROS parameters named ``prefix.key.subkey`` (MoveItConfigsBuilder's layout); values
+    a ROS parameter cannot hold (mixed lists, nulls) are left out."""
+    out: list[Parameter] = []
+    for key, value in data.items() if isinstance(data, dict) else ():
+        name = f"{prefix}.{key}"
+        if not _PARAMETER_NAME.fullmatch(name):
+            continue  # a key no ROS parameter can be named after
+        if isinstance(value, dict):
+            out.extend(_flat(name, value))
+        elif isinstance(value, (bool, int, float, str)):
+            out.append(Parameter(name, value=value))
+        elif isinstance(value, list) and value and len({type(v) for v in value}) == 1:
+            if isinstance(value[0], (bool, int, float, str)):
+                out.append(Parameter(name, value=value))
+    return out
+
+
 def _config_parameters(folder: Path) -> list[Parameter]:
     """joint_limits.yaml as robot_description_planning.*, kinematics.yaml as robot_description_kinematics.*
-    (MoveIt's parameter names), moveit_controllers.yaml's controllers."""
+    (MoveIt's parameter names), moveit_controllers.yaml's controllers, and ompl_planning.yaml as ompl.*
+    (so that move_group says it does not use them)."""
     import yaml
 
     if not folder.is_dir():
@@ -1131,6 +1190,9 @@ def _config_parameters(folder: Path) -> list[Parameter]:
         for joint, spec in (data.get("joint_limits") or {}).items():
             for key, value in (spec or {}).items():
                 out.append(Parameter(f"robot_description_planning.joint_limits.{joint}.{key}", value=value))
+    ompl = folder / "ompl_planning.yaml"
+    if ompl.is_file():
+        out.extend(_flat("ompl", yaml.safe_load(ompl.read_text()) or {}))
     controllers = folder / "moveit_controllers.yaml"
     if controllers.is_file():
         data = yaml.safe_load(controllers.read_text()) or {}
