@@ -242,6 +242,39 @@ def test_what_the_arm_stands_on_may_touch_its_base_but_not_the_links_that_move(p
         planner.remove_object("table")
 
 
+def test_the_ground_is_a_slab_under_the_plane_in_the_simulations_planning_scene():
+    """The sim's geometry for planners has the ground plane as a slab whose top face is the plane: an arm
+    bolted to the ground plans around the floor the simulation stops it at (before, planes were left out
+    and a plan could sweep the hand through the floor: the arm jammed against it, pushed past its limits)."""
+    from gazelle.sim import SceneGeometry, Simulation
+    from gazelle.worlds import default_world
+
+    sim = Simulation(default_world(), rtf=0)
+    links = {link.name: link for link in SceneGeometry().links(sim.world)}
+    (slab,) = links["ground_plane::link"].shapes
+    assert slab.kind == "box" and slab.dimensions[0] >= 10 and slab.dimensions[1] >= 10
+    X = links["ground_plane::link"].pose * slab.pose
+    assert X.position[2] + slab.dimensions[2] / 2 == pytest.approx(0.0, abs=1e-9)  # the top face is z = 0
+    assert slab.dimensions[2] >= 0.1  # thick: no planned step jumps it
+
+
+def test_links_that_only_joints_outside_every_group_move_may_touch_the_world():
+    """A mobile manipulator's wheels stand on the ground: no plan moves them, so touching the ground (or
+    the table under a fixed arm) is not a collision a plan must avoid; the arm's links are checked."""
+    from lxml import etree
+
+    from gazelle.planning._planner import _links_moved_by
+
+    robot = etree.fromstring(
+        b"""<robot name="r"><link name="base"/><link name="wheel"/><link name="l1"/><link name="l2"/>
+        <joint name="w" type="continuous"><parent link="base"/><child link="wheel"/></joint>
+        <joint name="j1" type="revolute"><parent link="base"/><child link="l1"/></joint>
+        <joint name="j2" type="fixed"><parent link="l1"/><child link="l2"/></joint></robot>"""
+    )
+    assert _links_moved_by(robot, {"j1"}) == {"l1", "l2"}
+    assert _links_moved_by(robot, {"w", "j1"}) == {"wheel", "l1", "l2"}
+
+
 def test_objects_of_the_world_may_touch_each_other(planner):
     ready = planner.state(READY)
     under, over = np.eye(4), np.eye(4)

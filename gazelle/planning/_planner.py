@@ -165,7 +165,11 @@ class ArmPlanner:
         self._known_groups = self._import_srdf(srdf, srdf_source, robot)
         self.joint_names: list[str] = list(self.scene.getJointNames())
         self._limits(self._joint_limits)
-        self.root_link, self.fixed_links = _root_and_fixed_links(robot)
+        self.root_link, fixed = _root_and_fixed_links(robot)
+        moved = _links_moved_by(robot, {j for g in self.groups for j in self.group_joints(g)})
+        self.fixed_links = fixed | {str(lk.get("name")) for lk in robot.iter("link")} - moved
+        """Links that no plan moves: the root, what is welded to it, and what only joints outside every
+        group move (a mobile base's wheels). They may touch world objects (the ground they stand on)."""
         self._current = self.scene.getCurrentJointPositions().copy()
         self._objects: dict[str, tuple[SceneObject, tuple[str, ...]]] = {}  # name -> (object, geometry names)
         self._attached_links: list[str] = []
@@ -696,6 +700,28 @@ def _root_and_fixed_links(robot) -> tuple[str, frozenset[str]]:
                 fixed.add(child)
                 todo.append(child)
     return root, frozenset(fixed)
+
+
+def _links_moved_by(robot, joints: set[str]) -> set[str]:
+    """The links that a motion of ``joints`` moves: their child links and everything below them."""
+    children: dict[str, list[tuple[str, str]]] = {}
+    for joint in robot.iter("joint"):
+        parent, child = joint.find("parent"), joint.find("child")
+        if parent is not None and child is not None:
+            children.setdefault(str(parent.get("link")), []).append((str(joint.get("name")), str(child.get("link"))))
+    moved: set[str] = set()
+    todo = [
+        (link, False)
+        for link in {str(lk.get("name")) for lk in robot.iter("link")}
+        - {c for kids in children.values() for _, c in kids}
+    ]
+    while todo:
+        link, moving = todo.pop()
+        if moving:
+            moved.add(link)
+        for name, child in children.get(link, []):
+            todo.append((child, moving or name in joints))
+    return moved
 
 
 def _fraction(value: float) -> float:

@@ -2,8 +2,9 @@
 
 Every link of every entity that has collision geometry becomes one :class:`SceneLink`: its world pose
 now, and its shapes in the link's frame, reduced to what planners check (boxes, spheres and
-cylinders): a capsule or a cone as the cylinder around it, an ellipsoid or a mesh as its bounding box.
-Planes (the ground) are left out: an arm standing on the ground would always touch it.
+cylinders): a capsule or a cone as the cylinder around it, an ellipsoid or a mesh as its bounding box,
+and a plane (the ground) as a slab of :data:`PLANE_THICKNESS` under it, as wide as the plane's
+``<size>``: an arm bolted to the ground must not plan through the floor the simulation stops it at.
 """
 
 from __future__ import annotations
@@ -22,11 +23,15 @@ from ..description import (
     Mesh,
     MeshReadError,
     Model,
+    Plane,
     Pose,
     Sphere,
     load_mesh,
 )
 from ..physics import SEP, PhysicsWorld
+
+PLANE_THICKNESS = 0.5
+"""How deep the slab that stands for a plane is (thick enough that no planned step goes through it)."""
 
 
 @dataclass(frozen=True)
@@ -79,7 +84,20 @@ def _shape(geometry: object, pose: Pose) -> SceneShape | None:
         lo, hi = points.min(axis=0), points.max(axis=0)
         center = Pose(tuple(float(v) for v in (lo + hi) / 2))  # type: ignore[arg-type]
         return SceneShape("box", tuple(float(max(v, 1e-4)) for v in hi - lo), pose * center)
-    return None  # a plane, or a mesh that could not be found
+    if isinstance(geometry, Plane):
+        # the slab's top face is the plane: turn z onto its normal, then go half the thickness down
+        n = np.asarray(geometry.normal, dtype=float)
+        n = n / np.linalg.norm(n) if np.linalg.norm(n) > 0 else np.array([0.0, 0.0, 1.0])
+        axis, cos = np.cross((0.0, 0.0, 1.0), n), float(n[2])
+        if np.linalg.norm(axis) < 1e-9:
+            turn = Pose() if cos > 0 else Pose(orientation=(0.0, 1.0, 0.0, 0.0))
+        else:
+            half = math.acos(max(-1.0, min(1.0, cos))) / 2.0
+            x, y, z = (axis / np.linalg.norm(axis) * math.sin(half)).tolist()
+            turn = Pose(orientation=(math.cos(half), x, y, z))
+        width, depth = (max(float(v), 1.0) for v in geometry.size)
+        return SceneShape("box", (width, depth, PLANE_THICKNESS), pose * turn * Pose((0.0, 0.0, -PLANE_THICKNESS / 2)))
+    return None  # a mesh that could not be found
 
 
 class SceneGeometry:

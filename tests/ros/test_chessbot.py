@@ -136,8 +136,9 @@ def test_the_table_board_and_pieces_are_in_the_planning_scene_and_the_robot_is_n
         scene = chessbot.call(GetPlanningScene, "/get_planning_scene", GetPlanningScene.Request()).scene
         return sorted(o.id for o in scene.world.collision_objects)
 
-    listed = wait_for(lambda: (lambda i: i if len(i) == 34 else None)(ids()), 20, "34 objects in the scene")
-    assert "table::top" in listed and "chess_board::link" in listed
+    # the ground, the table, the board and 32 pieces
+    listed = wait_for(lambda: (lambda i: i if len(i) == 35 else None)(ids()), 20, "35 objects in the scene")
+    assert "table::top" in listed and "chess_board::link" in listed and "ground_plane::link" in listed
     assert not [i for i in listed if i.startswith("chessbot::")]
 
 

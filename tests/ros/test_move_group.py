@@ -567,7 +567,10 @@ def test_the_simulated_world_is_in_the_planning_scene_and_the_arm_goes_around_it
         scene = panda.ros.call(GetPlanningScene, "/get_planning_scene", GetPlanningScene.Request()).scene
         return sorted(o.id for o in scene.world.collision_objects)
 
-    assert wait_for(lambda: scene_ids() == ["pillar::link"], 15, "the pillar in move_group's planning scene")
+    # the ground is there too: the arm is bolted to it
+    assert wait_for(
+        lambda: scene_ids() == ["ground_plane::link", "pillar::link"], 15, "the pillar in move_group's planning scene"
+    )
     before = panda.ros.entity_state("pillar").state.pose.position
 
     low = {**ready, "panda_joint2": 0.35, "panda_joint4": -2.1}  # the hand at 47 cm out and 22 cm up
@@ -581,7 +584,7 @@ def test_the_simulated_world_is_in_the_planning_scene_and_the_arm_goes_around_it
     wait_for(lambda: abs(panda.joints()["panda_joint1"] - 1.0) < 1e-3, 10, "joint 1 at 1.0 rad")
 
     assert panda.ros.call(DeleteEntity, "/delete_entity", DeleteEntity.Request(name="pillar")).success
-    wait_for(lambda: scene_ids() == [], 15, "the pillar gone from the planning scene")
+    wait_for(lambda: scene_ids() == ["ground_plane::link"], 15, "the pillar gone from the planning scene")
 
 
 def _arm(*args: str) -> subprocess.CompletedProcess:
