@@ -241,7 +241,9 @@ def _run(node: Any, args: argparse.Namespace) -> int:
     result = result_future.result().result
     code = result.error_code
     if code.val != MoveItErrorCodes.SUCCESS:
-        names = {getattr(MoveItErrorCodes, k): k for k in dir(MoveItErrorCodes) if k.isupper()}
+        names = {
+            v: k for k in dir(MoveItErrorCodes) if k.isupper() and isinstance(v := getattr(MoveItErrorCodes, k), int)
+        }
         print(f"gazelle arm: {names.get(code.val, code.val)}: {code.message}", file=sys.stderr)
         return 1
     points = result.planned_trajectory.joint_trajectory.points
