@@ -506,8 +506,9 @@ def test_an_object_applied_to_the_planning_scene_is_listed_planned_around_and_re
     assert panda.ros.call(ApplyPlanningScene, "/apply_planning_scene", ApplyPlanningScene.Request(scene=scene)).success
 
     listed = panda.ros.call(GetPlanningScene, "/get_planning_scene", GetPlanningScene.Request())
-    assert [o.id for o in listed.scene.world.collision_objects] == ["crate"]
-    assert list(listed.scene.world.collision_objects[0].primitives[0].dimensions) == [0.2, 0.2, 0.2]
+    objects = {o.id: o for o in listed.scene.world.collision_objects}
+    assert sorted(objects) == ["crate", "ground_plane::link"]  # the simulation's ground is there too
+    assert list(objects["crate"].primitives[0].dimensions) == [0.2, 0.2, 0.2]
 
     def valid(joints: dict[str, float]) -> bool:
         req = GetStateValidity.Request(group_name="panda_arm")
@@ -541,7 +542,7 @@ def test_an_object_applied_to_the_planning_scene_is_listed_planned_around_and_re
         ApplyPlanningScene, "/apply_planning_scene", ApplyPlanningScene.Request(scene=removal)
     ).success
     listed = panda.ros.call(GetPlanningScene, "/get_planning_scene", GetPlanningScene.Request())
-    assert list(listed.scene.world.collision_objects) == []
+    assert [o.id for o in listed.scene.world.collision_objects] == ["ground_plane::link"]
     assert valid(reaching_down)
 
 
