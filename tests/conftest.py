@@ -11,6 +11,27 @@ from _paths import REAL
 """Real public robot/world descriptions (test inputs, read in place; never copied into the repo)."""
 
 
+def pytest_addoption(parser: pytest.Parser) -> None:
+    parser.addoption(
+        "--phase",
+        choices=("all", "serial", "parallel"),
+        default="all",
+        help="serial: only the tests marked serial (load and real-time tests, which ./test.sh runs alone "
+        "first); parallel: all the others (which ./test.sh then runs on two workers); all: both",
+    )
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    phase = config.getoption("--phase")
+    if phase == "all":
+        return
+    keep = [item for item in items if (item.get_closest_marker("serial") is not None) == (phase == "serial")]
+    deselected = [item for item in items if item not in keep]
+    if deselected:
+        config.hook.pytest_deselected(items=deselected)
+        items[:] = keep
+
+
 @pytest.fixture
 def resource_path(monkeypatch: pytest.MonkeyPatch):
     """``resource_path("turtlebot3", ...)``: set GAZELLE_RESOURCE_PATH (folders relative to the real

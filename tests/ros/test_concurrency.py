@@ -12,7 +12,7 @@ from simulation_interfaces.srv import DeleteEntity, GetEntities, GetEntityState,
 
 from .conftest import RosClient
 
-pytestmark = pytest.mark.ros
+pytestmark = [pytest.mark.ros, pytest.mark.serial]  # load tests: run alone (./test.sh)
 
 NS = "/gazelle/"
 THREADS, ROUNDS = 8, 25  # 8 clients x 25 rounds x 4 calls = 800 calls

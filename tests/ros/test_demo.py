@@ -20,6 +20,8 @@ from gazelle.viewer._browser import find_chromium
 
 from .conftest import GAZELLE, REPO
 
+pytestmark = pytest.mark.serial  # real time: run alone (./test.sh)
+
 HAVE_BROWSER = importlib.util.find_spec("playwright") is not None and find_chromium() is not None
 CORNER = re.compile(r"corner (\d)\s+\(([+-]?[\d.]+), ([+-]?[\d.]+)\)")
 """A demo line ``corner 2      (+0.972, +0.998)      (...)``: the corner by ground truth."""

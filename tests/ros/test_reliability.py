@@ -15,7 +15,7 @@ from gazebo_msgs.srv import DeleteEntity, GetModelList, SpawnEntity
 
 from .conftest import SEED_XACRO, wait_for, xacro_to_urdf
 
-pytestmark = pytest.mark.ros
+pytestmark = [pytest.mark.ros, pytest.mark.serial]  # load tests: run alone (./test.sh)
 
 
 def _spawn(ros_client, name: str, xml: str, timeout: float = 30.0) -> SpawnEntity.Response:

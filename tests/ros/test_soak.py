@@ -19,7 +19,7 @@ from simulation_interfaces.srv import DeleteEntity, GetEntityState, SpawnEntity
 
 from .conftest import SEED_XACRO, wait_for, xacro_to_urdf
 
-pytestmark = pytest.mark.ros
+pytestmark = [pytest.mark.ros, pytest.mark.serial]  # load tests: run alone (./test.sh)
 
 NS = "/gazelle/"
 V, W = 0.2, 0.4

@@ -23,6 +23,8 @@ from std_msgs.msg import String
 
 from .conftest import GAZELLE, SEED_XACRO, SQUARE_NODE, start, wait_for, xacro_to_urdf, yaw_of
 
+pytestmark = pytest.mark.serial  # real time: run alone (./test.sh)
+
 MODES = {
     # (real time with the node on the wall clock is test_demo's: the same node drives the whole square)
     # twice as fast as the wall clock: a node timing itself by the wall clock would drive 2 m. Not as

@@ -24,6 +24,9 @@ needs_browser = pytest.mark.skipif(
 )
 
 
+pytestmark = pytest.mark.serial  # real time: run alone (./test.sh)
+
+
 def decode_mp4(path: Path) -> tuple[object, float, list[np.ndarray]]:
     """(the video stream, its duration in seconds, every decoded frame as RGB), checking it is H.264 yuv420p."""
     import av
