@@ -319,6 +319,18 @@ def test_a_moveit_configs_ompl_planning_yaml_becomes_ompl_parameters_that_move_g
     assert flat == {"ompl.good"}
 
 
+def test_a_config_file_that_is_not_yaml_is_an_error_naming_its_file_and_line(tmp_path):
+    """move_group --config: a malformed ompl_planning.yaml (or any of the files it reads) is a one-line
+    error with its file and line, which the command prints and exits 2 on, never a traceback."""
+    pytest.importorskip("rclpy")
+    from gazelle.ros._move_group import _config_parameters
+
+    (tmp_path / "ompl_planning.yaml").write_text("planner_configs:\n  RRT: [unclosed\n")
+    with pytest.raises(ValueError) as err:
+        _config_parameters(tmp_path)
+    assert str(err.value).startswith(f"{tmp_path / 'ompl_planning.yaml'}:3: not valid YAML"), str(err.value)
+
+
 def test_a_group_of_groups_plans_both_arms_at_once_and_the_viewer_draws_both_tools():
     """R2's `arms` kind of group: a group made of the dual-arm SRDF's two arm groups moves all 14 joints in
     one collision-free plan, and the viewer's planned path has a tool per arm."""

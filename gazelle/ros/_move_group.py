@@ -1079,7 +1079,8 @@ def move_group_main(argv: list[str]) -> int:
     parser.add_argument("--srdf", help="the robot's SRDF or SRDF xacro file (else robot_description_semantic)")
     parser.add_argument(
         "--config",
-        help="a MoveIt config folder: joint_limits.yaml, kinematics.yaml and moveit_controllers.yaml are read",
+        help="a MoveIt config folder: joint_limits.yaml, kinematics.yaml, moveit_controllers.yaml and "
+        "ompl_planning.yaml are read (the last only to say that gazelle does not plan with it)",
     )
     ros_args = argv[argv.index("--ros-args") :] if "--ros-args" in argv else []
     args = parser.parse_args(argv[: len(argv) - len(ros_args)] if ros_args else argv)
@@ -1174,28 +1175,36 @@ def _config_parameters(folder: Path) -> list[Parameter]:
     (so that move_group says it does not use them)."""
     import yaml
 
+    from ..systems.ros2_control import yaml_problem
+
+    def load(path: Path) -> Any:
+        try:
+            return yaml.safe_load(path.read_text(encoding="utf-8")) or {}
+        except yaml.YAMLError as err:  # a file:line error for the command line, never a traceback
+            raise ValueError(yaml_problem(err, str(path))) from None
+
     if not folder.is_dir():
         raise ValueError(f"{folder}: no such folder")
     out: list[Parameter] = []
     kinematics = folder / "kinematics.yaml"
     if kinematics.is_file():
-        data = yaml.safe_load(kinematics.read_text()) or {}
+        data = load(kinematics)
         for group, spec in data.items():
             for key, value in (spec or {}).items() if isinstance(spec, dict) else ():
                 if isinstance(value, (bool, int, float, str)):
                     out.append(Parameter(f"robot_description_kinematics.{group}.{key}", value=value))
     limits = folder / "joint_limits.yaml"
     if limits.is_file():
-        data = yaml.safe_load(limits.read_text()) or {}
+        data = load(limits)
         for joint, spec in (data.get("joint_limits") or {}).items():
             for key, value in (spec or {}).items():
                 out.append(Parameter(f"robot_description_planning.joint_limits.{joint}.{key}", value=value))
     ompl = folder / "ompl_planning.yaml"
     if ompl.is_file():
-        out.extend(_flat("ompl", yaml.safe_load(ompl.read_text()) or {}))
+        out.extend(_flat("ompl", load(ompl)))
     controllers = folder / "moveit_controllers.yaml"
     if controllers.is_file():
-        data = yaml.safe_load(controllers.read_text()) or {}
+        data = load(controllers)
         mscm = data.get("moveit_simple_controller_manager") or {}
         names = list(mscm.get("controller_names") or [])
         out.append(Parameter("moveit_simple_controller_manager.controller_names", value=names))

@@ -19,6 +19,7 @@ from ._params import ParamsError as ParamsError
 from ._params import ParamsFile as ParamsFile
 from ._params import load_params as load_params
 from ._params import parse_params as parse_params
+from ._params import yaml_problem as yaml_problem
 from ._trajectory import JointTrajectoryController as JointTrajectoryController
 from ._trajectory import Tolerance as Tolerance
 from ._trajectory import TrajectoryGoal as TrajectoryGoal
@@ -46,4 +47,5 @@ __all__ = [
     "goal_tolerances",
     "load_params",
     "parse_params",
+    "yaml_problem",
 ]

@@ -64,6 +64,14 @@ def _flatten(prefix: str, value: Any, out: Params, where: str) -> None:
         raise ParamsError(f"{where}: parameter '{prefix}' has a value of type {type(value).__name__}")
 
 
+def yaml_problem(err: Exception, path: str) -> str:
+    """A YAML parse error as ``path:line: not valid YAML: problem`` (the line when PyYAML knows it)."""
+    mark = getattr(err, "problem_mark", None)
+    line = f":{mark.line + 1}" if mark is not None else ""
+    problem = getattr(err, "problem", None) or str(err)
+    return f"{path}{line}: not valid YAML: {problem}"
+
+
 def parse_params(text: str, path: str = "<string>") -> ParamsFile:
     """Parse a parameters file's text.
 
@@ -74,10 +82,7 @@ def parse_params(text: str, path: str = "<string>") -> ParamsFile:
     try:
         data = yaml.safe_load(text)
     except yaml.YAMLError as err:
-        mark = getattr(err, "problem_mark", None)
-        line = f":{mark.line + 1}" if mark is not None else ""
-        problem = getattr(err, "problem", None) or str(err)
-        raise ParamsError(f"{path}{line}: not valid YAML: {problem}") from None
+        raise ParamsError(yaml_problem(err, path)) from None
     if data is None:
         return ParamsFile(path, {})
     if not isinstance(data, dict):
