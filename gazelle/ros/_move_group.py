@@ -138,7 +138,7 @@ class MoveGroupNode(Node):
         self.planner: ArmPlanner | None = None
         self._latest_joints: dict[str, float] = {}
         self._warned_no_state = False  # from /joint_states; the planner takes it when it plans
-        self._noted: set[str] = set()  # what of the requests gazelle does not honour, said once each
+        self._noted: set[str] = set()  # the kinds of request parts gazelle does not honour, each said once
         self._texts: dict[str, str] = {}
         self._sim_objects: set[str] = set()  # ids of the objects that came from the simulation
         self._sim_world: Any = None  # the simulation's geometry heard before the robot was known
@@ -654,21 +654,23 @@ class MoveGroupNode(Node):
     def _note_unhonoured(self, request: Any) -> None:
         """Say what of a MotionPlanRequest gazelle's planner does not honour, once per kind (the request
         is planned all the same, as MoveIt plans with what it has)."""
-        notes = []
+        notes: list[tuple[str, str]] = []  # (kind, what is said the first time that kind comes)
         if request.pipeline_id and request.pipeline_id != "ompl":
-            notes.append(f"pipeline_id '{request.pipeline_id}' is not simulated")
+            notes.append(("pipeline", f"pipeline_id '{request.pipeline_id}' is not simulated"))
         if request.planner_id and "rrtconnect" not in request.planner_id.lower():
-            notes.append(f"planner_id '{request.planner_id}' is not simulated")
+            notes.append(("planner", f"planner_id '{request.planner_id}' is not simulated"))
         path = request.path_constraints
         if path.joint_constraints or path.position_constraints or path.orientation_constraints:
-            notes.append("path_constraints are not honoured: the path between the start and the goal ignores them")
+            notes.append(
+                ("path", "path_constraints are not honoured: the path between the start and the goal ignores them")
+            )
         if path.visibility_constraints or request.trajectory_constraints.constraints:
-            notes.append("visibility and trajectory constraints are not honoured")
+            notes.append(("trajectory", "visibility and trajectory constraints are not honoured"))
         if len(request.goal_constraints) > 1:
-            notes.append(f"only the first of {len(request.goal_constraints)} goal_constraints is planned to")
-        for note in notes:
-            if note not in self._noted:
-                self._noted.add(note)
+            notes.append(("goals", f"only the first of {len(request.goal_constraints)} goal_constraints is planned to"))
+        for kind, note in notes:  # once per kind: what a client sends never grows this set or floods the log
+            if kind not in self._noted:
+                self._noted.add(kind)
                 self.get_logger().warning(f"motion plan request: {note}; gazelle plans with RRT-Connect")
 
     def _goal(self, group: str, joints: list[str], constraints: Any, start: np.ndarray) -> np.ndarray:
