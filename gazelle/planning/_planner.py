@@ -165,9 +165,9 @@ class ArmPlanner:
         self._known_groups = self._import_srdf(srdf, srdf_source, robot)
         self.joint_names: list[str] = list(self.scene.getJointNames())
         self._limits(self._joint_limits)
-        self.root_link, fixed = _root_and_fixed_links(robot)
+        self.root_link = _root_link(robot)
         moved = _links_moved_by(robot, {j for g in self.groups for j in self.group_joints(g)})
-        self.fixed_links = fixed | {str(lk.get("name")) for lk in robot.iter("link")} - moved
+        self.fixed_links = frozenset(str(lk.get("name")) for lk in robot.iter("link")) - moved
         """Links that no plan moves: the root, what is welded to it, and what only joints outside every
         group move (a mobile base's wheels). They may touch world objects (the ground they stand on)."""
         self._current = self.scene.getCurrentJointPositions().copy()
@@ -680,47 +680,39 @@ def _element_lines(srdf: str, tag: str) -> dict[str, int]:
     return {str(g.get("name")): int(g.sourceline or 0) for g in root.findall(tag) if g.get("name")}
 
 
-def _root_and_fixed_links(robot) -> tuple[str, frozenset[str]]:
-    """The URDF's root link, and the links fixed to it (through fixed joints only): no plan moves them."""
+def _tree(robot) -> tuple[list[str], dict[str, list[tuple[str, str, str]]], list[str]]:
+    """A URDF's links (in file order), each link's (joint name, joint type, child link)s, and its root links."""
     links = [str(link.get("name")) for link in robot.iter("link")]
-    children: dict[str, list[tuple[str, str]]] = {}
+    children: dict[str, list[tuple[str, str, str]]] = {}
     child_links = set()
     for joint in robot.iter("joint"):
         parent, child = joint.find("parent"), joint.find("child")
         if parent is None or child is None:
             continue
-        children.setdefault(str(parent.get("link")), []).append((str(child.get("link")), str(joint.get("type"))))
+        kids = children.setdefault(str(parent.get("link")), [])
+        kids.append((str(joint.get("name")), str(joint.get("type")), str(child.get("link"))))
         child_links.add(str(child.get("link")))
-    roots = [link for link in links if link not in child_links]
-    root = roots[0] if roots else (links[0] if links else "")
-    fixed, todo = {root}, [root]
-    while todo:
-        for child, kind in children.get(todo.pop(), []):
-            if kind == "fixed" and child not in fixed:
-                fixed.add(child)
-                todo.append(child)
-    return root, frozenset(fixed)
+    return links, children, [link for link in links if link not in child_links]
+
+
+def _root_link(robot) -> str:
+    """The URDF's root link (the first, should it have several)."""
+    links, _, roots = _tree(robot)
+    return roots[0] if roots else (links[0] if links else "")
 
 
 def _links_moved_by(robot, joints: set[str]) -> set[str]:
-    """The links that a motion of ``joints`` moves: their child links and everything below them."""
-    children: dict[str, list[tuple[str, str]]] = {}
-    for joint in robot.iter("joint"):
-        parent, child = joint.find("parent"), joint.find("child")
-        if parent is not None and child is not None:
-            children.setdefault(str(parent.get("link")), []).append((str(joint.get("name")), str(child.get("link"))))
+    """The links that a motion of ``joints`` moves (a fixed joint moves nothing): their child links and
+    everything below them."""
+    _, children, roots = _tree(robot)
     moved: set[str] = set()
-    todo = [
-        (link, False)
-        for link in {str(lk.get("name")) for lk in robot.iter("link")}
-        - {c for kids in children.values() for _, c in kids}
-    ]
+    todo = [(link, False) for link in roots]
     while todo:
         link, moving = todo.pop()
         if moving:
             moved.add(link)
-        for name, child in children.get(link, []):
-            todo.append((child, moving or name in joints))
+        for name, kind, child in children.get(link, []):
+            todo.append((child, moving or (name in joints and kind != "fixed")))
     return moved
 
 

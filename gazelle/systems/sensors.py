@@ -625,7 +625,6 @@ class ImuSensor(_SensorSystem):
         self._bias = np.zeros(6)
         self._mean = np.zeros(6)
         self._std = np.zeros(6)
-        self._noisy = False
         self._perturbed = False
         self._rows: list[list[float]] = []
         """What the next readings add to the six channels (bias + mean + noise), drawn NOISE_ROWS at a time."""
@@ -642,8 +641,7 @@ class ImuSensor(_SensorSystem):
         self._bias = np.array([n.bias(self._rng) for n in channels])
         self._mean = np.array([n.mean if n.active else 0.0 for n in channels])
         self._std = np.array([n.stddev if n.active else 0.0 for n in channels])
-        self._noisy = bool(self._mean.any() or self._std.any())
-        self._perturbed = self._noisy or bool(self._bias.any())
+        self._perturbed = bool(self._bias.any() or self._mean.any() or self._std.any())
         self._rows = []
 
         def cov(ns: tuple[Noise, Noise, Noise]) -> tuple[float, ...]:
