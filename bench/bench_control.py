@@ -9,6 +9,12 @@ listened to), against the same robot with no controllers:
   limp (the issue's baseline);
 * "manager, no controller": the manager running its 1 kHz cycle with nothing loaded (the joints held).
 
+Two floors, the least any per-step Python cycle can cost: a bare loop (one ``ctrl`` write and one
+``mj_step``, outside the runtime), and the manager's own share of a cycle done as barely as it can be
+inside the runtime (a system at 1 kHz that reads the six positions and velocities in one array read
+each, writes the six held targets in one write, and publishes one JointState to a listener; no
+controller logic).
+
 Goal: RTF under JTC at least 0.8 of the no-controller RTF. Every system runs in-process on
 ``sim.step`` (``rtf`` 0).
 """
@@ -122,6 +128,43 @@ def floor_rtf(seconds: float) -> float:
     return best
 
 
+def runtime_floor_rtf(seconds: float) -> float:
+    """The second floor (see the module's docstring): the limp robot plus one bare 1 kHz system."""
+    from gazelle.systems import JointStates, MsgType, RateGate, System
+
+    sim, _ = make("none")
+    world = sim.world
+    group = world.joint_group("r6bot", JOINTS)
+    ep = sim.bus.advertise("r6bot", "/floor/joint_states", MsgType.JOINT_STATE)
+    ep.add_sink(lambda _m: None)
+    # the limp robot has no actuators: the write goes to the six joints' applied forces (zeros, so the
+    # dynamics are the limp robot's), one indexed write as the hardware's write of its servos is
+    dofs, applied = group._ids.get(world)[1], world.data.qfrc_applied
+    zeros = (0.0,) * 6
+
+    class Floor(System):
+        def __init__(self) -> None:
+            self.phase_gate = self.gate = RateGate()
+
+        def pre_update(self, info, world) -> None:
+            t = info.sim_time_sec
+            if not self.gate.due(t, 1000.0):
+                return
+            pos, vel = group.positions().tolist(), group.velocities().tolist()
+            applied[dofs] = zeros
+            ep.publish(JointStates(t, JOINTS, tuple(pos), tuple(vel), zeros))
+
+    sim.systems.add("r6bot", Floor())
+    sim.step(200)
+    n = round(seconds / sim.world.timestep)
+    best = 0.0
+    for _ in range(3):
+        t0 = time.perf_counter()
+        sim.step(n)
+        best = max(best, seconds / (time.perf_counter() - t0))
+    return best
+
+
 def main() -> int:
     logging.disable(logging.WARNING)
     os.environ["GAZELLE_RESOURCE_PATH"] = str(R6BOT)
@@ -130,14 +173,20 @@ def main() -> int:
     idle = rtf_of("idle", seconds)
     jtc = rtf_of("jtc", seconds)
     floor = floor_rtf(seconds)
+    runtime_floor = runtime_floor_rtf(seconds)
     print("r6bot, 1 ms physics steps, best of 3 runs of 5 sim-seconds each")
     print(f"{'case':58s} {'RTF':>8s}")
     print(f"{'no ros2_control (joints limp)':58s} {none:7.1f}x")
     print(f"{'controller manager at 1 kHz, no controller (joints held)':58s} {idle:7.1f}x")
     print(f"{'JTC + joint_state_broadcaster at 1 kHz, following a path':58s} {jtc:7.1f}x")
     print(f"{'floor: a bare Python loop, one ctrl write + mj_step per step':58s} {floor:7.1f}x")
+    print(f"{'floor: no ros2_control + a bare 1 kHz read, write, JointState':58s} {runtime_floor:7.1f}x")
     print(f"ratio JTC / no ros2_control: {jtc / none:.2f} (goal >= 0.8)")
     print(f"ratio floor / no ros2_control: {floor / none:.2f} (the best any per-step Python cycle can do)")
+    print(
+        f"ratio bare 1 kHz cycle in the runtime / no ros2_control: {runtime_floor / none:.2f} "
+        "(the best a per-step Python cycle with joint states at 1 kHz can do)"
+    )
     print(f"ratio JTC / manager without controllers: {jtc / idle:.2f}")
     return 0
 
