@@ -182,10 +182,12 @@ def main() -> int:
     print(f"{'floor: a bare Python loop, one ctrl write + mj_step per step':58s} {floor:7.1f}x")
     print(f"{'floor: no ros2_control + a bare 1 kHz read, write, JointState':58s} {runtime_floor:7.1f}x")
     print(f"ratio JTC / no ros2_control: {jtc / none:.2f} (goal >= 0.8)")
-    print(f"ratio floor / no ros2_control: {floor / none:.2f} (the best any per-step Python cycle can do)")
+    print(
+        f"ratio bare loop / no ros2_control: {floor / none:.2f} (no runtime and no cycle: the held arm's steps alone)"
+    )
     print(
         f"ratio bare 1 kHz cycle in the runtime / no ros2_control: {runtime_floor / none:.2f} "
-        "(the best a per-step Python cycle with joint states at 1 kHz can do)"
+        "(the best a cycle the runtime calls every step, with joint states at 1 kHz, can do)"
     )
     print(f"ratio JTC / manager without controllers: {jtc / idle:.2f}")
     return 0
