@@ -75,6 +75,9 @@ hulls of its meshes, a little fatter than the meshes the planner checks (an arm 
 pillar brushed it)."""
 CURRENT_STATE_WAIT = 5.0
 """s a request waits for the first /joint_states (MoveIt's planning-scene monitor waits 1 s)."""
+CONTROLLER_WAIT = 5.0
+"""s an execution waits for its controller's action server, or its joints' gz command topics, to be
+discovered."""
 _ENDED = (GoalStatus.STATUS_SUCCEEDED, GoalStatus.STATUS_CANCELED, GoalStatus.STATUS_ABORTED)
 STREAM_RATE_HZ = 100.0
 """Set-points a second streamed to gz JointPositionController topics (wall time)."""
@@ -912,6 +915,22 @@ class MoveGroupNode(Node):
             return None
         return {j: t[0] for j, t in found.items()}
 
+    def _wait_for_execution(
+        self, controller: Controller | None, joints: list[str]
+    ) -> tuple[bool, dict[str, str] | None]:
+        """(the controller's action is served, else the joints' gz command topics), waiting up to
+        :data:`CONTROLLER_WAIT` for either to be discovered: right after a robot is spawned, a busy
+        machine's graph may not list them yet (MoveIt's controller manager waits for its action servers
+        likewise). Neither, once the wait is over: (False, None)."""
+        deadline = time.monotonic() + CONTROLLER_WAIT
+        while True:
+            if controller is not None and self._action_served(controller.action):
+                return True, None
+            topics = self._position_topics(joints)
+            if topics is not None or time.monotonic() >= deadline:
+                return False, topics
+            time.sleep(0.1)  # the graph is kept by the middleware's threads
+
     def _action_served(self, action: str) -> bool:
         from rclpy.action.graph import get_action_names_and_types
 
@@ -982,10 +1001,9 @@ class MoveGroupNode(Node):
         Without a controller serving its joints, gz-sim JointPositionController arms get it streamed."""
         joints = list(trajectory.joint_names)
         controller = self._controller_for(joints)
-        if controller is None or not self._action_served(controller.action):
-            topics = self._position_topics(joints)
-            if topics is not None:
-                return self._stream(trajectory, topics, handle)
+        served, topics = self._wait_for_execution(controller, joints)
+        if not served and topics is not None:
+            return self._stream(trajectory, topics, handle)
         if controller is None:
             return (
                 "CONTROL_FAILED",
@@ -997,7 +1015,7 @@ class MoveGroupNode(Node):
             client = self._trajectory_clients[controller.action] = ActionClient(
                 self._execution_node, FollowJointTrajectory, controller.action
             )
-        if not client.wait_for_server(timeout_sec=5.0):
+        if not client.wait_for_server(timeout_sec=5.0 if served else 0.1):  # the graph was waited on above
             return "CONTROL_FAILED", f"controller action {controller.action} is not available"
         goal = FollowJointTrajectory.Goal(trajectory=trajectory)
         done = threading.Event()

@@ -151,13 +151,33 @@ def with_robot_state_options(xml: str, *, enabled: bool, frame_prefix: str | Non
     return xml
 
 
+UNKNOWN_NODE = "_NODE_NAME_UNKNOWN_"
+"""The node name the ROS graph gives a publisher whose node it has not heard of yet."""
+
+NODE_NAME_WAIT_SEC = 5.0
+"""How long the spawner waits for the ROS graph to name the description's publishers."""
+
+
 def _published_by_robot_state_publisher(node: Node, topic: str) -> bool:
-    """Whether a node named robot_state_publisher publishes ``topic`` (the description just read)."""
+    """Whether a node named robot_state_publisher publishes ``topic`` (the description just read).
+
+    The description arrives as soon as its publisher is matched, but the name of the node behind it comes
+    on another discovery message: on a busy machine the graph still lists the publisher as
+    ``_NODE_NAME_UNKNOWN_`` then, and the user's robot_state_publisher was taken for someone else (both
+    it and gazelle's built-in one published the robot's TF). So the answer waits, at most
+    :data:`NODE_NAME_WAIT_SEC`, until every publisher of the topic is named."""
     name = topic if topic.startswith("/") else f"/{topic}"
-    try:
-        return any(p.node_name == "robot_state_publisher" for p in node.get_publishers_info_by_topic(name))
-    except Exception:
-        return False
+    deadline = time.monotonic() + NODE_NAME_WAIT_SEC
+    while True:
+        try:
+            names = [p.node_name for p in node.get_publishers_info_by_topic(name)]
+        except Exception:
+            return False
+        if "robot_state_publisher" in names:
+            return True
+        if UNKNOWN_NODE not in names or time.monotonic() >= deadline:
+            return False
+        time.sleep(0.05)  # the graph is kept by the middleware's own threads: no spinning needed
 
 
 def with_joint_state_publisher(xml: str) -> str:

@@ -1,0 +1,50 @@
+"""`gazelle spawn -topic robot_description` turns gazelle's built-in robot_state_publisher off when the user's
+own publishes the description, even while the ROS graph has not yet named the publisher's node (a busy
+machine: seen as both publishing the robot's TF in a loaded test run)."""
+
+from __future__ import annotations
+
+from types import SimpleNamespace
+
+import pytest
+
+from gazelle.ros import _spawn
+
+UNKNOWN = "_NODE_NAME_UNKNOWN_"  # what rmw_dds_common's graph cache calls a node it has not heard of
+
+
+class _Graph:
+    """A node whose graph names the description's publishers only from the ``known_after``-th query on."""
+
+    def __init__(self, name: str, known_after: int) -> None:
+        self.name, self.known_after, self.queries = name, known_after, 0
+
+    def get_publishers_info_by_topic(self, topic: str) -> list[SimpleNamespace]:
+        assert topic == "/robot_description"
+        self.queries += 1
+        known = self.queries > self.known_after
+        return [SimpleNamespace(node_name=self.name if known else UNKNOWN)]
+
+
+@pytest.fixture
+def bound(monkeypatch) -> None:
+    monkeypatch.setattr(_spawn, "NODE_NAME_WAIT_SEC", 0.2, raising=False)
+
+
+def test_a_publisher_the_graph_names_late_is_still_found_to_be_robot_state_publisher(monkeypatch) -> None:
+    monkeypatch.setattr(_spawn, "NODE_NAME_WAIT_SEC", 5.0, raising=False)
+    graph = _Graph("robot_state_publisher", known_after=3)
+    assert _spawn._published_by_robot_state_publisher(graph, "robot_description")  # type: ignore[arg-type]
+    assert graph.queries == 4
+
+
+def test_another_node_is_answered_at_once() -> None:
+    graph = _Graph("my_description_server", known_after=0)
+    assert not _spawn._published_by_robot_state_publisher(graph, "/robot_description")  # type: ignore[arg-type]
+    assert graph.queries == 1
+
+
+def test_a_publisher_never_named_is_not_waited_for_past_the_bound(bound) -> None:
+    graph = _Graph("robot_state_publisher", known_after=10**9)
+    assert not _spawn._published_by_robot_state_publisher(graph, "robot_description")  # type: ignore[arg-type]
+    assert 2 <= graph.queries < 100  # asked again while waiting, and not past 0.2 s
