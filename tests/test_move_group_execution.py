@@ -17,10 +17,17 @@ TOPICS = {j: f"/model/panda/joint/{j}/n0/cmd_pos" for j in JOINTS}
 
 
 class _Graph:
-    """What the graph shows ``MoveGroupNode`` from the ``after``-th query on: the action, or the topics."""
+    """What the graph shows ``MoveGroupNode`` from the ``after``-th query on: the action, or the topics;
+    the controller (from moveit_controllers.yaml, or from a controller manager's list) from the
+    ``named_after``-th."""
 
-    def __init__(self, action: bool, topics: bool, after: int) -> None:
+    def __init__(self, action: bool, topics: bool, after: int, named_after: int = 0) -> None:
         self.action, self.topics, self.after, self.queries = action, topics, after, 0
+        self.named_after, self.lookups = named_after, 0
+
+    def _controller_for(self, joints: list[str]) -> Controller | None:
+        self.lookups += 1
+        return _controller() if self.lookups > self.named_after else None
 
     def _action_served(self, action: str) -> bool:
         return self.action and self.queries >= self.after
@@ -30,8 +37,9 @@ class _Graph:
         return dict(TOPICS) if self.topics and self.queries > self.after else None
 
 
-def _wait(graph: _Graph, controller: Controller | None) -> tuple[bool, dict[str, str] | None]:
-    return MoveGroupNode._wait_for_execution(graph, controller, JOINTS)  # type: ignore[arg-type]
+def _wait(graph: _Graph) -> tuple[bool, dict[str, str] | None]:
+    _, served, topics = MoveGroupNode._wait_for_execution(graph, JOINTS)  # type: ignore[arg-type]
+    return served, topics
 
 
 def _controller() -> Controller:
@@ -40,20 +48,27 @@ def _controller() -> Controller:
 
 def test_gz_command_topics_discovered_late_are_streamed_to() -> None:
     graph = _Graph(action=False, topics=True, after=3)
-    assert _wait(graph, _controller()) == (False, TOPICS)
+    assert _wait(graph) == (False, TOPICS)
     assert graph.queries == 4
 
 
 def test_an_action_server_discovered_late_is_used() -> None:
     graph = _Graph(action=True, topics=False, after=3)
-    assert _wait(graph, _controller()) == (True, None)
+    assert _wait(graph) == (True, None)
+
+
+def test_a_controller_a_controller_manager_lists_late_is_used() -> None:
+    graph = _Graph(action=True, topics=False, after=0, named_after=2)
+    controller, served, topics = MoveGroupNode._wait_for_execution(graph, JOINTS)  # type: ignore[arg-type]
+    assert (controller, served, topics) == (_controller(), True, None)
+    assert graph.lookups == 3
 
 
 def test_with_neither_the_wait_ends_at_its_bound(monkeypatch) -> None:
     monkeypatch.setattr(_move_group, "CONTROLLER_WAIT", 0.3)
     graph = _Graph(action=False, topics=False, after=0)
     t0 = time.monotonic()
-    assert _wait(graph, None) == (False, None)
+    assert _wait(graph) == (False, None)
     assert 0.3 <= time.monotonic() - t0 < 2.0
     assert graph.queries >= 2
 
@@ -62,6 +77,6 @@ def test_with_neither_the_wait_ends_at_its_bound(monkeypatch) -> None:
 def test_what_is_there_at_once_is_not_waited_for(kind) -> None:
     graph = _Graph(action=kind == "action", topics=kind == "topics", after=0)
     t0 = time.monotonic()
-    served, topics = _wait(graph, _controller())
+    served, topics = _wait(graph)
     assert (served, topics) == ((True, None) if kind == "action" else (False, TOPICS))
     assert time.monotonic() - t0 < 0.05

@@ -915,20 +915,20 @@ class MoveGroupNode(Node):
             return None
         return {j: t[0] for j, t in found.items()}
 
-    def _wait_for_execution(
-        self, controller: Controller | None, joints: list[str]
-    ) -> tuple[bool, dict[str, str] | None]:
-        """(the controller's action is served, else the joints' gz command topics), waiting up to
-        :data:`CONTROLLER_WAIT` for either to be discovered: right after a robot is spawned, a busy
-        machine's graph may not list them yet (MoveIt's controller manager waits for its action servers
-        likewise). Neither, once the wait is over: (False, None)."""
+    def _wait_for_execution(self, joints: list[str]) -> tuple[Controller | None, bool, dict[str, str] | None]:
+        """(the controller of ``joints``, whether its action is served, else the joints' gz command topics),
+        waiting up to :data:`CONTROLLER_WAIT` for a served action or the topics to be discovered: right
+        after a robot is spawned, a busy machine's graph may not list them, nor the controller manager
+        that names the controller, yet (MoveIt's controller managers wait for their action servers
+        likewise). Once the wait is over without either: (the controller or None, False, None)."""
         deadline = time.monotonic() + CONTROLLER_WAIT
         while True:
+            controller = self._controller_for(joints)
             if controller is not None and self._action_served(controller.action):
-                return True, None
+                return controller, True, None
             topics = self._position_topics(joints)
             if topics is not None or time.monotonic() >= deadline:
-                return False, topics
+                return controller, False, topics
             time.sleep(0.1)  # the graph is kept by the middleware's threads
 
     def _action_served(self, action: str) -> bool:
@@ -1000,8 +1000,7 @@ class MoveGroupNode(Node):
         """Send ``trajectory`` to its FollowJointTrajectory controller and wait; cancel it when ``handle`` is.
         Without a controller serving its joints, gz-sim JointPositionController arms get it streamed."""
         joints = list(trajectory.joint_names)
-        controller = self._controller_for(joints)
-        served, topics = self._wait_for_execution(controller, joints)
+        controller, served, topics = self._wait_for_execution(joints)
         if not served and topics is not None:
             return self._stream(trajectory, topics, handle)
         if controller is None:
