@@ -73,10 +73,12 @@ def test_three_namespaced_robots_keep_separate_odometry_and_tf(sim_factory, ros_
         wait_for(lambda ns=ns: abs(ros_client.entity_state(ns).state.twist.angular.z) < 1e-3, 30, f"{ns} at rest")
 
     truth = {ns: ros_client.entity_state(ns).state.pose for ns in ROBOTS}
-    # every robot moved (its own driver reached it) and they did not move together
+    # every robot moved (its own driver reached it) and they did not move together. Each drives 1 m
+    # nominally, timed on sim time at twice real time; how far exactly is test_square's business (it runs
+    # alone): with the other pytest worker busy, a driver's late commands left r2 at 0.88 m once
     for ns, y in ROBOTS.items():
         p = truth[ns].position
-        assert math.hypot(p.x, p.y - y) > 0.9, f"{ns} did not drive: {p}"
+        assert math.hypot(p.x, p.y - y) > 0.5, f"{ns} did not drive: {p}"
 
     with lock:
         got = dict(odom)
