@@ -949,6 +949,31 @@ class _Loader:
         )
 
     # ================================================================== links
+    def shapes(
+        self, link: etree._Element, doc: _Doc, tag: str, link_name: str
+    ) -> list[tuple[etree._Element, str, Geometry]]:
+        """The link's ``<collision>`` or ``<visual>`` elements (``tag``) that have a name, used once in the
+        link, and a geometry, as (element, name, geometry); the others are reported and left out."""
+        out: list[tuple[etree._Element, str, Geometry]] = []
+        seen: set[str] = set()
+        for el in _findall(link, tag):
+            name = self.name(el, doc)
+            if name is None:
+                continue
+            if name in seen:
+                self.sink.error(
+                    ErrorCode.DUPLICATE_NAME,
+                    f"{tag} name '{name}' is used twice in link '{link_name}'",
+                    self.loc(el, doc),
+                )
+                continue
+            seen.add(name)
+            self.check(el, doc, tag)
+            geometry = self.geometry(el, doc)
+            if geometry is not None:
+                out.append((el, name, geometry))
+        return out
+
     def link(self, name: str, element: etree._Element, doc: _Doc, scope: Scope) -> Link | None:
         loc = self.loc(element, doc)
         self.check(element, doc, "link")
@@ -964,60 +989,14 @@ class _Loader:
             X_MR = scope.pose(rel, self.loc(el, doc))
             return pose if X_MR is None else X_LM * X_MR * pose
 
-        collisions: list[Collision] = []
-        seen: set[str] = set()
-        for col_el in _findall(element, "collision"):
-            col_name = self.name(col_el, doc)
-            if col_name is None:
-                continue
-            if col_name in seen:
-                self.sink.error(
-                    ErrorCode.DUPLICATE_NAME,
-                    f"collision name '{col_name}' is used twice in link '{name}'",
-                    self.loc(col_el, doc),
-                )
-                continue
-            seen.add(col_name)
-            self.check(col_el, doc, "collision")
-            geometry = self.geometry(col_el, doc)
-            if geometry is None:
-                continue
-            collisions.append(
-                Collision(
-                    col_name,
-                    local_pose(col_el),
-                    geometry,
-                    self.surface(_find(col_el, "surface"), doc),
-                    self.loc(col_el, doc),
-                )
-            )
-        visuals: list[Visual] = []
-        seen = set()
-        for vis_el in _findall(element, "visual"):
-            vis_name = self.name(vis_el, doc)
-            if vis_name is None:
-                continue
-            if vis_name in seen:
-                self.sink.error(
-                    ErrorCode.DUPLICATE_NAME,
-                    f"visual name '{vis_name}' is used twice in link '{name}'",
-                    self.loc(vis_el, doc),
-                )
-                continue
-            seen.add(vis_name)
-            self.check(vis_el, doc, "visual")
-            geometry = self.geometry(vis_el, doc)
-            if geometry is None:
-                continue
-            visuals.append(
-                Visual(
-                    vis_name,
-                    local_pose(vis_el),
-                    geometry,
-                    self.material(_find(vis_el, "material"), doc),
-                    self.loc(vis_el, doc),
-                )
-            )
+        collisions = [
+            Collision(n, local_pose(el), g, self.surface(_find(el, "surface"), doc), self.loc(el, doc))
+            for el, n, g in self.shapes(element, doc, "collision", name)
+        ]
+        visuals = [
+            Visual(n, local_pose(el), g, self.material(_find(el, "material"), doc), self.loc(el, doc))
+            for el, n, g in self.shapes(element, doc, "visual", name)
+        ]
         sensors: list[Sensor] = []
         for sen_el in _findall(element, "sensor"):
             sensor = self.sensor(sen_el, doc, local_pose(sen_el))
