@@ -50,7 +50,7 @@ from ._exposure import ServerRegistry
 from ._names import gz_topic_on_ros
 from ._outbox import Lane, Outbox
 from ._plugin_nodes import PluginNodes
-from ._replies import guarded_service, resend_lost_replies, with_warnings
+from ._replies import guarded_service, serve, with_warnings
 
 
 class SpawnFailure(enum.StrEnum):
@@ -236,11 +236,7 @@ class SimulationNode(Node):
             (GzGetModelState, "/gazebo/get_model_state", self._ros1_get_state),
             (GzSetModelState, "/gazebo/set_model_state", self._ros1_set_state),
         ):
-            self._srv.append(
-                resend_lost_replies(
-                    self.create_service(srv_type, name, guarded_service(name, cb), callback_group=self._cb), name
-                )
-            )
+            self._srv.append(serve(self, srv_type, name, guarded_service(name, cb), self._cb))
         from ._simulation_interfaces import register  # simulation_interfaces services under ~/
 
         register(self)

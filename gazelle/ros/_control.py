@@ -51,7 +51,7 @@ from ..systems.ros2_control import (
     goal_tolerances,
 )
 from ._convert import from_duration, from_joint_trajectory_msg, to_trajectory_point_msg
-from ._replies import resend_lost_replies
+from ._replies import serve
 
 _LIFECYCLE = {
     UNCONFIGURED: (State.PRIMARY_STATE_UNCONFIGURED, "unconfigured"),
@@ -102,9 +102,7 @@ class ControllerManagerNode(Node):
             (UnloadController, "unload_controller", self._by_name(manager.unload_controller)),
             (SetHardwareComponentState, "set_hardware_component_state", self._set_hw_state),
         ):
-            resend_lost_replies(
-                self.create_service(srv_type, f"~/{name}", self._guard(name, fn), callback_group=self._cb), name
-            )
+            serve(self, srv_type, f"~/{name}", self._guard(name, fn), self._cb)
 
     # ------------------------------------------------------------------ plumbing
     def _guard(self, name: str, fn: Any) -> Any:

@@ -65,7 +65,7 @@ from ..planning import START_BOUNDS_ERROR, ArmPlanner, PlanningError, SceneObjec
 from ._planning_scene import attached_message, padded, shapes_of, to_message
 from ._planning_scene import matrix as _matrix
 from ._planning_scene import pose as _pose
-from ._replies import resend_lost_replies
+from ._replies import serve
 
 _log = logging.getLogger("gazelle.move_group")
 
@@ -175,7 +175,7 @@ class MoveGroupNode(Node):
             (GetPlanningScene, "get_planning_scene", self._get_planning_scene),
             (ApplyPlanningScene, "apply_planning_scene", self._apply_planning_scene),
         ):
-            resend_lost_replies(self.create_service(srv_type, name, self._guard(name, fn), callback_group=cb), name)
+            serve(self, srv_type, name, self._guard(name, fn), cb)
         for msg_type, topic, fn in (
             (PlanningScene, "planning_scene", self._on_scene_diff),
             (CollisionObject, "collision_object", self._on_collision_object),

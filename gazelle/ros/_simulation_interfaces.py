@@ -90,7 +90,7 @@ from ..description import (
 from ..physics import WORLD_FRAMES, Entity, ErrorKind, WorldError, pose_out_of_range
 from ..sim import SpawnRequest
 from ._convert import from_pose_msg, to_pose_msg, to_time
-from ._replies import guarded_service, resend_lost_replies, with_warnings
+from ._replies import guarded_service, serve, with_warnings
 
 if TYPE_CHECKING:
     from ._bridge import SimulationNode
@@ -233,12 +233,7 @@ class SimulationInterfaces:
             (SetEntityState, "set_entity_state", self.set_entity_state),
             (GetEntityInfo, "get_entity_info", self.get_entity_info),
         ):
-            self.services.append(
-                resend_lost_replies(
-                    node.create_service(srv_type, f"~/{name}", guarded_service(name, fn), callback_group=self.cb),
-                    name,
-                )
-            )
+            self.services.append(serve(node, srv_type, f"~/{name}", guarded_service(name, fn), self.cb))
         self.action = ActionServer(
             node,
             SimulateSteps,

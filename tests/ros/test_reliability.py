@@ -221,3 +221,28 @@ def test_a_shut_down_bridge_leaves_no_half_destroyed_node_in_the_graph(ros_clien
         bridge.shutdown()
     # the bridge object is still referenced here, as a caller's would be
     wait_for(lambda: ("gazelle", "/") not in node.get_node_names_and_namespaces(), 20, "/gazelle to leave the graph")
+
+
+RCLPY_OWN = ("parameters", "parameter_types", "parameters_atomically", "get_type_description")
+"""The services rclpy itself gives every node (parameters, type descriptions): not gazelle's."""
+
+
+def test_every_service_the_server_gives_keeps_1000_replies_not_10():
+    """A reply lost on the way is resent on the client's next heartbeat only while the service's writer
+    still holds it: with ROS's default 10, eight clients calling at once lost one ("no reply in 30 s")."""
+    from gazelle.ros._bridge import RosBridge
+    from gazelle.sim import Simulation
+    from gazelle.worlds import default_world
+
+    bridge = RosBridge(Simulation(default_world()))
+    try:
+        served = {
+            s.srv_name: s.qos_profile.depth
+            for node in bridge.executor.get_nodes()
+            for s in node.services
+            if not s.srv_name.endswith(RCLPY_OWN)
+        }
+        assert "/spawn_entity" in served and any(n.endswith("/spawn_entities") for n in served), sorted(served)
+        assert {n: d for n, d in served.items() if d < 1000} == {}
+    finally:
+        bridge.shutdown()
