@@ -263,7 +263,7 @@ def test_links_that_only_joints_outside_every_group_move_may_touch_the_world():
     the table under a fixed arm) is not a collision a plan must avoid; the arm's links are checked."""
     from lxml import etree
 
-    from gazelle.planning._planner import _links_moved_by
+    from gazelle.planning._planner import _tree
 
     robot = etree.fromstring(
         b"""<robot name="r"><link name="base"/><link name="wheel"/><link name="l1"/><link name="l2"/>
@@ -271,8 +271,8 @@ def test_links_that_only_joints_outside_every_group_move_may_touch_the_world():
         <joint name="j1" type="revolute"><parent link="base"/><child link="l1"/></joint>
         <joint name="j2" type="fixed"><parent link="l1"/><child link="l2"/></joint></robot>"""
     )
-    assert _links_moved_by(robot, {"j1"}) == {"l1", "l2"}
-    assert _links_moved_by(robot, {"w", "j1"}) == {"wheel", "l1", "l2"}
+    assert _tree(robot).moved_by({"j1"}) == {"l1", "l2"}
+    assert _tree(robot).moved_by({"w", "j1"}) == {"wheel", "l1", "l2"}
 
 
 def test_objects_of_the_world_may_touch_each_other(planner):

@@ -165,9 +165,10 @@ class ArmPlanner:
         self._known_groups = self._import_srdf(srdf, srdf_source, robot)
         self.joint_names: list[str] = list(self.scene.getJointNames())
         self._limits(self._joint_limits)
-        self.root_link = _root_link(robot)
-        moved = _links_moved_by(robot, {j for g in self.groups for j in self.group_joints(g)})
-        self.fixed_links = frozenset(str(lk.get("name")) for lk in robot.iter("link")) - moved
+        tree = _tree(robot)
+        self.root_link = tree.root
+        moved = tree.moved_by({j for g in self.groups for j in self.group_joints(g)})
+        self.fixed_links = frozenset(tree.links) - moved
         """Links that no plan moves: the root, what is welded to it, and what only joints outside every
         group move (a mobile base's wheels). They may touch world objects (the ground they stand on)."""
         self._current = self.scene.getCurrentJointPositions().copy()
@@ -680,8 +681,38 @@ def _element_lines(srdf: str, tag: str) -> dict[str, int]:
     return {str(g.get("name")): int(g.sourceline or 0) for g in root.findall(tag) if g.get("name")}
 
 
-def _tree(robot) -> tuple[list[str], dict[str, list[tuple[str, str, str]]], list[str]]:
-    """A URDF's links (in file order), each link's (joint name, joint type, child link)s, and its root links."""
+@dataclasses.dataclass(frozen=True)
+class _Tree:
+    """A URDF's kinematic tree, read once."""
+
+    links: list[str]
+    """Every link, in file order."""
+    children: dict[str, list[tuple[str, str, str]]]
+    """Link -> its (joint name, joint type, child link)s."""
+    roots: list[str]
+    """The links that are no joint's child."""
+
+    @property
+    def root(self) -> str:
+        """The root link (the first, should there be several)."""
+        return self.roots[0] if self.roots else (self.links[0] if self.links else "")
+
+    def moved_by(self, joints: set[str]) -> set[str]:
+        """The links that a motion of ``joints`` moves (a fixed joint moves nothing): their child links
+        and everything below them."""
+        moved: set[str] = set()
+        todo = [(link, False) for link in self.roots]
+        while todo:
+            link, moving = todo.pop()
+            if moving:
+                moved.add(link)
+            for name, kind, child in self.children.get(link, []):
+                todo.append((child, moving or (name in joints and kind != "fixed")))
+        return moved
+
+
+def _tree(robot) -> _Tree:
+    """The kinematic tree of a parsed URDF ``<robot>``."""
     links = [str(link.get("name")) for link in robot.iter("link")]
     children: dict[str, list[tuple[str, str, str]]] = {}
     child_links = set()
@@ -692,28 +723,7 @@ def _tree(robot) -> tuple[list[str], dict[str, list[tuple[str, str, str]]], list
         kids = children.setdefault(str(parent.get("link")), [])
         kids.append((str(joint.get("name")), str(joint.get("type")), str(child.get("link"))))
         child_links.add(str(child.get("link")))
-    return links, children, [link for link in links if link not in child_links]
-
-
-def _root_link(robot) -> str:
-    """The URDF's root link (the first, should it have several)."""
-    links, _, roots = _tree(robot)
-    return roots[0] if roots else (links[0] if links else "")
-
-
-def _links_moved_by(robot, joints: set[str]) -> set[str]:
-    """The links that a motion of ``joints`` moves (a fixed joint moves nothing): their child links and
-    everything below them."""
-    _, children, roots = _tree(robot)
-    moved: set[str] = set()
-    todo = [(link, False) for link in roots]
-    while todo:
-        link, moving = todo.pop()
-        if moving:
-            moved.add(link)
-        for name, kind, child in children.get(link, []):
-            todo.append((child, moving or (name in joints and kind != "fixed")))
-    return moved
+    return _Tree(links, children, [link for link in links if link not in child_links])
 
 
 def _fraction(value: float) -> float:
