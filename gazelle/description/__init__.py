@@ -33,6 +33,12 @@ from ._meshes import load_mesh as load_mesh
 from ._model import *  # noqa: F403  (the model dataclasses are the public surface)
 from ._model import LoadResult, Model, World
 from ._resources import ResourceResolver as ResourceResolver
+from ._untrusted import MAX_PARAMS_FILE_BYTES as MAX_PARAMS_FILE_BYTES
+from ._untrusted import MAX_YAML_NODES as MAX_YAML_NODES
+from ._untrusted import UntrustedInputError as UntrustedInputError
+from ._untrusted import read_regular_file as read_regular_file
+from ._untrusted import safe_load_bounded as safe_load_bounded
+from ._untrusted import yaml_problem as yaml_problem
 from ._xacro import expand_bounded as expand_xacro_bounded  # noqa: F401 - public
 
 FORMATS = ("urdf", "xacro", "sdf", "srdf")
@@ -203,7 +209,9 @@ def load_string(
     if not source.startswith("<"):  # the folder of a file (the user's, or one found on the roots) may be read
         resolver = resolver.trusting(Path(source).parent)
     sink = DiagnosticSink(strict=strict)
-    base_dir = str(Path(source).parent) if not source.startswith("<") else os.getcwd()
+    # a string has no folder: a relative path in it resolves against nothing (never the server's working
+    # directory, which would let a peer on the ROS graph read whatever lies beside the server)
+    base_dir = str(Path(source).parent) if not source.startswith("<") else None
     value: Model | World | object | None
     expanded = text
     if fmt in ("urdf", "xacro"):

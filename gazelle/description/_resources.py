@@ -81,13 +81,13 @@ class ResourceResolver:
             return None
         for folder in self.search_paths():
             cand = folder / name
-            if cand.is_dir():
+            if cand.is_dir() and _confined_folder(folder, cand):
                 return cand.resolve()
         env = self.env if self.env is not None else os.environ
         for prefix in _split(env.get("AMENT_PREFIX_PATH")):
             marker = prefix / "share" / "ament_index" / "resource_index" / "packages" / name
             share = prefix / "share" / name
-            if marker.exists() and share.is_dir():
+            if marker.exists() and share.is_dir() and _confined_folder(prefix / "share", share):
                 return share.resolve()
         return None
 
@@ -121,11 +121,24 @@ class ResourceResolver:
         if raw.startswith(("package://", "model://")):
             name = raw.split("://", 1)[1].partition("/")[0]
             if self.find_package(name) is None:
+                if self.confined_out(name) is not None:
+                    return self.refusal(uri)
                 return f"package or model '{name}' not found (is it on GAZELLE_RESOURCE_PATH or the ament index?)"
             return self.refusal(uri)
         if "://" in raw and not raw.startswith("file://"):
             return f"unsupported URI scheme in '{uri}' (nothing is downloaded)"
         return self.refusal(uri) if self.refused(uri, base_dir) else f"no such file: {uri}"
+
+    def confined_out(self, name: str) -> Path | None:
+        """A folder named ``name`` on the search paths that is not used as a package or model because it
+        links out of its root to something that is neither (see :func:`_confined_folder`), or None."""
+        if not name or "/" in name or name in (".", ".."):
+            return None
+        for folder in self.search_paths():
+            cand = folder / name
+            if cand.is_dir() and not _confined_folder(folder, cand):
+                return cand
+        return None
 
     def refused(self, uri: str, base_dir: str | os.PathLike[str] | None = None) -> bool:
         """Whether ``uri`` names an existing file that is not read because it lies outside the allowed folders."""
@@ -133,7 +146,9 @@ class ResourceResolver:
         if raw.startswith(("package://", "model://")):
             name, _, sub = raw.split("://", 1)[1].partition("/")
             root = self.find_package(name)
-            return root is not None and (root / sub).exists() and self.resolve_uri(uri, base_dir) is None
+            if root is None:
+                return self.confined_out(name) is not None
+            return (root / sub).exists() and self.resolve_uri(uri, base_dir) is None
         path = _local_path(raw, base_dir)
         return path is not None and path.exists() and not self.allowed(path)
 
@@ -180,8 +195,31 @@ def _in_package_source(package_root: Path, path: Path) -> bool:
     return path == source or source in path.parents
 
 
+PACKAGE_MARKERS = ("package.xml", "model.config", "model.sdf")
+"""Files that make a folder a ROS package or a Gazebo model."""
+
+
+def _is_package(folder: Path) -> bool:
+    return any((folder / marker).is_file() for marker in PACKAGE_MARKERS)
+
+
+def _confined_folder(root: Path, folder: Path) -> bool:
+    """Whether the package or model folder ``folder`` (an entry of the resource root ``root``) may be read.
+
+    A folder whose real location stays inside the root may. One that is a symbolic link out of it (an
+    ament prefix's ``share/PKG -> /src/PKG``, a models collection of links) may only where it leads to a
+    package or a model (a ``package.xml``, ``model.config`` or ``model.sdf``): a link ``etcmodel -> /etc``
+    in a model folder would otherwise open ``/etc`` to every ``model://etcmodel/...`` in a request."""
+    real, real_root = folder.resolve(), root.resolve()
+    if real == real_root or real_root in real.parents:
+        return True
+    return _is_package(real)
+
+
 def _symlinked_source(root: Path, path: Path) -> Path | None:
-    """The symlink-install source folder of the package under ``root`` that holds ``path``, if any."""
+    """The package under ``root`` that holds ``path`` outside ``root``, if any: the source folder of a
+    package installed with ``--symlink-install`` (its ``package.xml`` links there), or the real folder of a
+    package folder that is itself a link (``share/PKG -> /src/PKG``) and leads to a package or model."""
     try:
         candidates = [root, *(p for p in root.iterdir() if p.is_dir())] if root.is_dir() else []
     except OSError:
@@ -189,4 +227,8 @@ def _symlinked_source(root: Path, path: Path) -> Path | None:
     for pkg in candidates:
         if _in_package_source(pkg, path):
             return pkg
+        if pkg.is_symlink():
+            real = pkg.resolve()
+            if (path == real or real in path.parents) and _is_package(real):
+                return pkg
     return None

@@ -215,7 +215,8 @@ class _Doc:
     """One SDF file being read."""
 
     source: str
-    base_dir: Path
+    base_dir: Path | None
+    """The folder relative URIs resolve against; None for a string, which has none."""
     version: Version
     renamed: bool
     """Whether names were rewritten by :func:`prepare` (configs need decoding)."""
@@ -251,7 +252,7 @@ def parse_sdf(
     source: str,
     sink: DiagnosticSink,
     resolver: ResourceResolver,
-    base_dir: str,
+    base_dir: str | None,
 ) -> Model | World | None:
     """Parse SDF text.
 
@@ -260,7 +261,7 @@ def parse_sdf(
         source: file name used in diagnostics.
         sink: receives every diagnostic.
         resolver: finds ``model://`` and ``package://`` URIs.
-        base_dir: folder relative URIs resolve against.
+        base_dir: folder relative URIs resolve against (None: a string, relative URIs resolve nowhere).
 
     Returns:
         A :class:`World` (for ``<world>`` or a lone ``<light>``) or a :class:`Model`;
@@ -268,7 +269,7 @@ def parse_sdf(
     """
     loader = _Loader(sink, resolver)
     try:
-        return loader.load_text(text, source, Path(base_dir))
+        return loader.load_text(text, source, Path(base_dir) if base_dir is not None else None)
     except RecursionError:
         sink.error(ErrorCode.VALUE_INVALID, "document nests too deeply to be read", SourceLocation(source))
         return None
@@ -280,7 +281,7 @@ class _Loader:
         self.resolver = resolver
 
     # ================================================================== documents
-    def read(self, text: str, source: str, base_dir: Path) -> tuple[etree._Element, _Doc] | None:
+    def read(self, text: str, source: str, base_dir: Path | None) -> tuple[etree._Element, _Doc] | None:
         """Parse text into its root and the document context, checking the version."""
         prepared, renamed = prepare(text)
         root = parse_xml(prepared, source=source, sink=self.sink)
@@ -306,7 +307,7 @@ class _Loader:
             return None
         return root, _Doc(source, base_dir, version, renamed)
 
-    def load_text(self, text: str, source: str, base_dir: Path) -> Model | World | None:
+    def load_text(self, text: str, source: str, base_dir: Path | None) -> Model | World | None:
         got = self.read(text, source, base_dir)
         if got is None:
             return None
@@ -547,7 +548,7 @@ class _Loader:
         if found is not None:
             return found
         here = doc.base_dir
-        if not self.resolver.allowed(here):  # a string's working directory is no model collection
+        if here is None or not self.resolver.allowed(here):  # a string has no folder of its own
             return None
         for cand in (here if here.name == name else None, here.parent / name):
             if cand is not None and cand.is_dir() and name not in ("", ".", ".."):

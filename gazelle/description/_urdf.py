@@ -180,7 +180,7 @@ class _Reader:
     source: str
     sink: DiagnosticSink
     resolver: ResourceResolver
-    base_dir: str
+    base_dir: str | None
 
     # ---- reporting
     def loc(self, element: etree._Element) -> SourceLocation:
@@ -1170,7 +1170,7 @@ def parse_urdf(
     source: str,
     sink: DiagnosticSink,
     resolver: ResourceResolver,
-    base_dir: str,
+    base_dir: str | None,
 ) -> Model | None:
     """Parse URDF text into a :class:`Model`.
 

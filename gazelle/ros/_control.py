@@ -49,6 +49,7 @@ from ..systems.ros2_control import (
     JointTrajectoryController,
     TrajectoryGoal,
     goal_tolerances,
+    params_file_paths,
 )
 from ._convert import from_duration, from_joint_trajectory_msg, to_trajectory_point_msg
 from ._replies import serve
@@ -61,6 +62,9 @@ _LIFECYCLE = {
 }
 _BY_ID = {State.PRIMARY_STATE_UNCONFIGURED: "unconfigured", State.PRIMARY_STATE_INACTIVE: "inactive",
           State.PRIMARY_STATE_ACTIVE: "active", State.PRIMARY_STATE_FINALIZED: "finalized"}  # fmt: skip
+
+PARAMS_FILE_YAML = ".params_file_yaml"
+"""The parameter beside ``<ctrl>.params_file`` in which gazelle's spawner sends the file's text."""
 
 ACTION_MONITOR_SEC = 0.05
 """How often an action's progress is looked at (JTC's default action_monitor_rate, 20 Hz)."""
@@ -88,6 +92,8 @@ class ControllerManagerNode(Node):
         self._cb = ReentrantCallbackGroup()
         self._actions: dict[int, ActionServer] = {}
         self._lock = threading.Lock()
+        self._texts: dict[str, Any] = {}
+        """``<ctrl>.params_file_yaml`` values waiting for their ``<ctrl>.params_file``."""
         self.declare_parameter("update_rate", manager.update_rate)
         self.add_on_set_parameters_callback(self._on_set_parameters)
         for srv_type, name, fn in (
@@ -128,13 +134,37 @@ class ControllerManagerNode(Node):
         for p in params:
             if p.name == "update_rate":
                 return SetParametersResult(successful=False, reason="update_rate is read when the manager starts")
-        values = [(p.name, p.value) for p in params]
+        given = {p.name: p.value for p in params}
+        values = [(n, v) for n, v in given.items() if not n.endswith(PARAMS_FILE_YAML)]
+        for n, v in given.items():  # rclpy sets a request's parameters one at a time: kept for the next
+            if n.endswith(PARAMS_FILE_YAML):
+                if len(self._texts) >= 1000 and n not in self._texts:
+                    return SetParametersResult(successful=False, reason="too many parameters file texts")
+                self._texts[n] = v
+        # a <ctrl>.params_file is read here, on the ROS thread, confined and bounded: a FIFO, a device or a
+        # file outside the resource roots is refused in the reply, and the simulation never waits on it.
+        # gazelle's own clients send the file's text beside it (<ctrl>.params_file_yaml): then nothing is read
+        files = {}
+        try:
+            for name, value in values:
+                if name.endswith(".params_file"):
+                    paths = params_file_paths(value)
+                    texts = params_file_paths(given.get(name + "_yaml", self._texts.pop(name + "_yaml", None)))
+                    for i, raw in enumerate(paths):
+                        text = texts[i] if len(texts) == len(paths) else None
+                        files[raw] = self.manager.read_params_file(raw, f"{name}: ", text)
+        except ControlError as err:
+            self.get_logger().error(str(err))
+            return SetParametersResult(successful=False, reason=str(err))
 
         def apply() -> None:
             for name, value in values:
-                self.manager.set_parameter(name, value)
+                self.manager.set_parameter(name, value, files)
 
-        self.sim.call(apply)
+        try:
+            self.sim.call(apply)
+        except (ControlError, TimeoutError) as err:
+            return SetParametersResult(successful=False, reason=str(err) or "the simulation did not answer in time")
         return SetParametersResult(successful=True)
 
     # ------------------------------------------------------------------ services

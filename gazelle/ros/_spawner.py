@@ -32,6 +32,7 @@ from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
+from ..description import MAX_PARAMS_FILE_BYTES, read_regular_file
 from ..systems.ros2_control import ParamsError, load_params
 from ._convert import to_duration
 
@@ -202,6 +203,8 @@ def _spawn(cli: _Client, args: argparse.Namespace) -> int:
             if args.controller_type:
                 params.append(_string_param(f"{name}.type", args.controller_type))
             for path in args.param_file:
+                # the file's text first: the manager never reads a file a ROS peer names outside its roots
+                params.append(_string_param(f"{name}.params_file_yaml", _text(path)))
                 params.append(_string_param(f"{name}.params_file", path))
                 pf = load_params(path)
                 own = pf.for_node(name, args.namespace)
@@ -274,6 +277,11 @@ def _unspawn(cli: _Client, args: argparse.Namespace) -> int:
     return 0
 
 
+def _text(path: str) -> str:
+    """The text of a parameters file the user named (already read once by :func:`load_params`)."""
+    return read_regular_file(path, MAX_PARAMS_FILE_BYTES, "parameters file")
+
+
 def give_params_files(
     node: Node, executor: SingleThreadedExecutor, manager: str, files: list[str], timeout: float
 ) -> str | None:
@@ -295,7 +303,9 @@ def give_params_files(
         cm = pf.for_node(manager_name, manager_ns)
         names = {k.rsplit("/", 1)[-1] for k in pf.nodes if "*" not in k and k.rsplit("/", 1)[-1] != manager_name}
         names |= {k[: -len(".type")] for k in cm if k.endswith(".type")}
+        text = _text(path)
         for name in sorted(names):
+            params.append(_string_param(f"{name}.params_file_yaml", text))
             params.append(_string_param(f"{name}.params_file", absolute))
             kind = pf.for_node(name, manager_ns).get("type") or cm.get(f"{name}.type")
             if isinstance(kind, str) and kind:

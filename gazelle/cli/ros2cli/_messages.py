@@ -10,6 +10,8 @@ from typing import Any
 
 import yaml
 
+from ...description import UntrustedInputError, safe_load_bounded
+
 
 class InterfaceError(ValueError):
     """A type name that does not name an installed interface, or values that do not fit it."""
@@ -143,8 +145,10 @@ def set_fields(msg: Any, values: Any, where: str = "") -> Any:
 
 
 def parse_values(text: str) -> Any:
-    """The YAML of a ``pub`` / ``call`` argument (``{linear: {x: 0.2}}``)."""
+    """The YAML of a ``pub`` / ``call`` argument (``{linear: {x: 0.2}}``), bounded: its aliases may not
+    expand it past :data:`~gazelle.description.MAX_YAML_NODES` values (30 KB of anchors made a
+    9-million-float JointTrajectory), and a recursive alias is refused, not a traceback."""
     try:
-        return yaml.safe_load(text) if text.strip() else {}
-    except yaml.YAMLError as err:
-        raise InterfaceError(f"the values are not valid YAML: {err}") from None
+        return safe_load_bounded(text, "the values") if text.strip() else {}
+    except UntrustedInputError as err:
+        raise InterfaceError(str(err)) from None

@@ -15,6 +15,8 @@ from ._manager import BEST_EFFORT as BEST_EFFORT
 from ._manager import CONTROLLER_TYPES as CONTROLLER_TYPES
 from ._manager import STRICT as STRICT
 from ._manager import ControllerManager as ControllerManager
+from ._manager import params_file_paths as params_file_paths
+from ._manager import valid_controller_name as valid_controller_name
 from ._params import ParamsError as ParamsError
 from ._params import ParamsFile as ParamsFile
 from ._params import load_params as load_params
@@ -46,6 +48,8 @@ __all__ = [
     "TrajectoryGoal",
     "goal_tolerances",
     "load_params",
+    "params_file_paths",
     "parse_params",
+    "valid_controller_name",
     "yaml_problem",
 ]

@@ -22,7 +22,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from ...description import ResourceResolver
+from ...description import MAX_PARAMS_FILE_BYTES, ResourceResolver
 from ...physics import PhysicsWorld
 from .._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_bool, ros_block
 from ._broadcasters import (
@@ -38,7 +38,7 @@ from ._controller import ACTIVE, FINALIZED, INACTIVE, UNCONFIGURED, Controller, 
 from ._diff_drive import DiffDriveController
 from ._gripper import EffortGripperActionController, GripperActionController
 from ._hardware import ControlError, SimHardware
-from ._params import Params, ParamsError, ParamsFile, load_params
+from ._params import Params, ParamsError, ParamsFile, load_params, parse_params
 from ._trajectory import JointTrajectoryController
 
 CONTROLLER_TYPES: dict[str, type[Controller]] = {
@@ -66,6 +66,27 @@ STRICT, BEST_EFFORT = 2, 1
 """``switch_controller`` strictness (controller_manager_msgs/SwitchController)."""
 
 _FIND = re.compile(r"\$\(find\s+([A-Za-z0-9_]+)\)")
+
+_NODE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+NODE_NAME_MAX = 255
+"""rmw's longest node name (``RMW_NODE_NAME_MAX_NAME_LENGTH``)."""
+
+
+def valid_controller_name(name: str) -> str | None:
+    """Why ``name`` cannot name a controller, or None. ros2_control makes each controller a node of that
+    name (controller_manager.cpp, ``load_controller``: the node is created with the controller's name and
+    rcl refuses an invalid one), so a name follows rmw's node-name rules: letters, digits and ``_``, not
+    starting with a digit, at most 255 characters. The refusal quotes at most 40 characters of it, with
+    control characters escaped, so a hostile name can neither flood nor forge a log line."""
+    if _NODE_NAME.fullmatch(name) and len(name) <= NODE_NAME_MAX:
+        return None
+    shown = repr(name[:40]) + (f"... ({len(name)} characters)" if len(name) > 40 else "")
+    if not name:
+        return "a controller name must not be empty"
+    return (
+        f"controller name {shown} is not a valid node name (letters, digits and '_', not starting with a digit, "
+        f"at most {NODE_NAME_MAX} characters)"
+    )
 
 
 @dataclass(frozen=True)
@@ -111,6 +132,12 @@ class ControllerManager(System):
         """Parameters set on the manager's node at run time (``<ctrl>.type``, ``<ctrl>.params_file``)."""
         self.config = ControlPluginConfig()
         self._extra_files = extra_param_files
+        self._resolver = ResourceResolver()
+        self._base: Path | None = None
+        self._params_files: dict[str, ParamsFile] = {}
+        """Every ``<ctrl>.params_file`` read so far, by the value that named it: read once, where it was
+        set (a parameter set on the ROS thread, a plugin's file at configure), never on the simulation
+        thread when a controller loads."""
         self._gate = RateGate()
         self.phase_gate = self._gate
         self._ctx: SystemContext | None = None
@@ -138,19 +165,18 @@ class ControllerManager(System):
         self.namespace = f"/{ns}" if ns else ""
         self.name = self.config.controller_manager_name
         self.log = logging.getLogger(f"{self.namespace}/{self.name}".lstrip("/"))
-        base = Path(model.source_file).parent if model.source_file else None
-        resolver = ResourceResolver().trusting(base)
+        # a description that arrived as a string (``<spawn_entity:...>``) has no folder: its relative
+        # <parameters> resolve nowhere, never against the server's working directory
+        real_file = bool(model.source_file) and not model.source_file.startswith("<")
+        self._base = Path(model.source_file).parent if real_file else None
+        self._resolver = ResourceResolver().trusting(self._base)
+        where = f"{cfg.location}: " if cfg is not None and cfg.location else ""
         for raw in (*self.config.parameters, *self._extra_files):
-            path = self._resolve(raw, resolver, base)
-            if path is None:
-                where = f"{cfg.location}: " if cfg is not None and cfg.location else ""
-                raise ControlError(
-                    f"{where}parameters file '{raw}' is not in a package or model folder gazelle may read"
-                )
-            try:
-                self.files.append(load_params(path))
-            except ParamsError as err:
-                raise ControlError(str(err)) from None
+            self.files.append(self.read_params_file(raw, where))
+        for key, value in self.manager_params().items():
+            if key.endswith(".params_file"):
+                for raw in params_file_paths(value):
+                    self._params_files.setdefault(raw, self.read_params_file(raw, where))
         for rc in model.ros2_control:
             if not rc.simulated:
                 where = f"{rc.location}: " if rc.location else ""
@@ -181,9 +207,47 @@ class ControllerManager(System):
         if text.startswith(("package://", "model://", "file://")):
             return resolver.resolve_uri(text, base)
         p = Path(text)
-        if not p.is_absolute() and base is not None:
+        if not p.is_absolute():
+            if base is None:
+                return None
             p = base / p
         return p if resolver.allowed(p) else None
+
+    def read_params_file(self, raw: str, where: str = "", text: str | None = None) -> ParamsFile:
+        """Read a parameters file this manager was given (a ``<parameters>`` of its plugin, a
+        ``<ctrl>.params_file``): only from the resource roots and the folder of the robot's own file
+        (:class:`ResourceResolver`, symbolic links resolved), only a regular file, bounded in size and in
+        YAML expansion (:func:`~._params.load_params`). Safe to call from any thread.
+
+        With ``text``, the file's content as the client that named it read it (gazelle's spawner and spawn
+        read the file the user named on their own command line, with their own rights, and send it as
+        ``<ctrl>.params_file_yaml``): parsed with the same bounds, and nothing is read here.
+
+        Raises:
+            ControlError: the file is outside those folders or cannot be used; the message names the file,
+                never its content.
+        """
+        if not isinstance(raw, str) or not raw or len(raw) > 4096 or any(ord(c) < 32 for c in raw):
+            raise ControlError(f"{where}a parameters file must be named by a path of at most 4096 printable characters")
+        if text is not None:
+            if len(text) > MAX_PARAMS_FILE_BYTES:
+                raise ControlError(
+                    f"{where}{raw}: more than the {MAX_PARAMS_FILE_BYTES} bytes a parameters file may have"
+                )
+            try:
+                return parse_params(text, raw)
+            except ParamsError as err:
+                raise ControlError(f"{where}{err}") from None
+        path = self._resolve(raw, self._resolver, self._base)
+        if path is None:
+            raise ControlError(
+                f"{where}parameters file '{raw}' is not in a package or model folder gazelle may read "
+                "(the resource roots, e.g. GAZELLE_RESOURCE_PATH or the ament index, and the robot file's folder)"
+            )
+        try:
+            return load_params(path)
+        except ParamsError as err:
+            raise ControlError(f"{where}{err}") from None
 
     @property
     def node_name(self) -> str:
@@ -203,13 +267,11 @@ class ControllerManager(System):
         out: Params = {}
         for f in self.files:
             out.update(f.for_node(name, self.namespace))
-        own = self.manager_params().get(f"{name}.params_file")
-        files = own if isinstance(own, list) else [own] if isinstance(own, str) and own else []
-        for path in files:
-            try:
-                out.update(load_params(str(path)).for_node(name, self.namespace))
-            except ParamsError as err:
-                raise ControlError(str(err)) from None
+        for raw in params_file_paths(self.manager_params().get(f"{name}.params_file")):
+            loaded = self._params_files.get(raw)
+            if loaded is None:  # set by a path that never went through set_parameter's read
+                raise ControlError(f"parameters file '{raw}' of controller '{name}' was not read when it was set")
+            out.update(loaded.for_node(name, self.namespace))
         return out
 
     def controller_type(self, name: str) -> str | None:
@@ -312,6 +374,9 @@ class ControllerManager(System):
         Raises:
             ControlError: already loaded, no type configured, or a type that does not exist.
         """
+        why = valid_controller_name(name)
+        if why is not None:
+            raise ControlError(why)
         if name in self.controllers:
             raise ControlError(f"a controller named '{name}' is already loaded")
         type_name = self.controller_type(name)
@@ -395,6 +460,10 @@ class ControllerManager(System):
         Raises:
             ControlError: STRICT and a problem (the reason lists them all).
         """
+        for name in (*activate, *deactivate):
+            why = valid_controller_name(name)
+            if why is not None:
+                raise ControlError(why)
         problems: list[str] = []
         for name in deactivate:
             if name not in self.controllers:
@@ -521,12 +590,43 @@ class ControllerManager(System):
     def _get(self, name: str) -> _Loaded:
         loaded = self.controllers.get(name)
         if loaded is None:
+            why = valid_controller_name(name)
+            if why is not None:
+                raise ControlError(why)
             raise ControlError(
                 f"controller '{name}' is not loaded"
                 + (f" (loaded: {', '.join(self.controllers)})" if self.controllers else " (none is loaded)")
             )
         return loaded
 
-    def set_parameter(self, name: str, value: object) -> None:
-        """A parameter set on the manager's node at run time (``<ctrl>.type``, ``<ctrl>.params_file``...)."""
+    def set_parameter(self, name: str, value: object, files: dict[str, ParamsFile] | None = None) -> None:
+        """A parameter set on the manager's node at run time (``<ctrl>.type``, ``<ctrl>.params_file``...).
+
+        From the ROS layer, a ``<ctrl>.params_file`` comes with ``files``, the files it names already read
+        by :meth:`read_params_file` on the ROS thread, confined to the resource roots (the simulation
+        thread never opens a file a ROS peer named). Without ``files`` the caller is the user's own
+        program (the in-process API), whose files are read as named, bounded but not confined.
+
+        Raises:
+            ControlError: a ``params_file`` that cannot be read or parsed."""
+        if name.endswith(".params_file"):
+            for raw in params_file_paths(value):
+                if files is not None and raw in files:
+                    self._params_files[raw] = files[raw]
+                elif files is not None:
+                    raise ControlError(f"parameters file '{raw}' of '{name}' was not read")
+                else:
+                    try:
+                        self._params_files[raw] = load_params(raw)
+                    except ParamsError as err:
+                        raise ControlError(str(err)) from None
         self.overrides[name] = value  # type: ignore[assignment]
+
+
+def params_file_paths(value: object) -> list[str]:
+    """The file names of a ``params_file`` parameter: a string or a list of strings."""
+    if isinstance(value, str):
+        return [value] if value else []
+    if isinstance(value, (list, tuple)):
+        return [str(v) for v in value if v]
+    return []

@@ -12,7 +12,14 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import yaml
+from ...description import (
+    MAX_PARAMS_FILE_BYTES,
+    MAX_YAML_NODES,
+    UntrustedInputError,
+    read_regular_file,
+    safe_load_bounded,
+)
+from ...description import yaml_problem as yaml_problem
 
 ParamValue = bool | int | float | str | list[Any]
 Params = dict[str, ParamValue]
@@ -61,15 +68,7 @@ def _flatten(prefix: str, value: Any, out: Params, where: str) -> None:
     elif value is None:
         return  # "key:" with nothing: rclcpp skips it too
     else:
-        raise ParamsError(f"{where}: parameter '{prefix}' has a value of type {type(value).__name__}")
-
-
-def yaml_problem(err: Exception, path: str) -> str:
-    """A YAML parse error as ``path:line: not valid YAML: problem`` (the line when PyYAML knows it)."""
-    mark = getattr(err, "problem_mark", None)
-    line = f":{mark.line + 1}" if mark is not None else ""
-    problem = getattr(err, "problem", None) or str(err)
-    return f"{path}{line}: not valid YAML: {problem}"
+        raise ParamsError(f"{where}: a parameter has a value of type {type(value).__name__}")
 
 
 def parse_params(text: str, path: str = "<string>") -> ParamsFile:
@@ -80,9 +79,9 @@ def parse_params(text: str, path: str = "<string>") -> ParamsFile:
             ``node: {ros__parameters: {...}}``.
     """
     try:
-        data = yaml.safe_load(text)
-    except yaml.YAMLError as err:
-        raise ParamsError(yaml_problem(err, path)) from None
+        data = safe_load_bounded(text, path, MAX_YAML_NODES)
+    except UntrustedInputError as err:
+        raise ParamsError(str(err)) from None
     if data is None:
         return ParamsFile(path, {})
     if not isinstance(data, dict):
@@ -91,14 +90,15 @@ def parse_params(text: str, path: str = "<string>") -> ParamsFile:
 
     def walk(prefix: str, section: Any) -> None:
         if not isinstance(section, dict):
-            raise ParamsError(f"{path}: '{prefix}' must be a mapping with 'ros__parameters'")
+            # the key is the file's content: not echoed (a refused file must not leak through the log)
+            raise ParamsError(f"{path}: every node's section must be a mapping with 'ros__parameters'")
         for key, value in section.items():
             if key == "ros__parameters":
                 params: Params = {}
                 if value is not None:
                     if not isinstance(value, dict):
-                        raise ParamsError(f"{path}: '{prefix}.ros__parameters' must be a mapping")
-                    _flatten("", value, params, f"{path}: {prefix}")
+                        raise ParamsError(f"{path}: a node's 'ros__parameters' must be a mapping")
+                    _flatten("", value, params, path)
                 nodes[prefix] = {**nodes.get(prefix, {}), **params}
             else:
                 # a namespace level: /ns: {node: {ros__parameters: ...}}
@@ -109,14 +109,16 @@ def parse_params(text: str, path: str = "<string>") -> ParamsFile:
 
 
 def load_params(path: str | Path) -> ParamsFile:
-    """Read and parse a parameters file.
+    """Read and parse a parameters file: a regular file of at most :data:`MAX_PARAMS_FILE_BYTES`, whose
+    YAML expands to at most :data:`MAX_YAML_NODES` values (never a FIFO or a device). Where the file may
+    be read from is the caller's business (:class:`~gazelle.description.ResourceResolver`).
 
     Raises:
-        ParamsError: the file cannot be read or parsed.
+        ParamsError: the file cannot be read or parsed; the message never quotes the file's content.
     """
     p = Path(path)
     try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as err:
-        raise ParamsError(f"{p}: cannot read the parameters file: {err.strerror or err}") from None
+        text = read_regular_file(p, MAX_PARAMS_FILE_BYTES, "parameters file")
+    except UntrustedInputError as err:
+        raise ParamsError(str(err)) from None
     return parse_params(text, str(p))
