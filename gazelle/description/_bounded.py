@@ -157,6 +157,7 @@ class BoundedWorker:
         # copy of a process with threads (rclpy's, DDS's), and collecting their objects in a copy
         # where those threads do not exist crashed it ("Segmentation fault ... Garbage-collecting").
         gc.freeze()
+        parent = os.getpid()
         pid = -1
         try:
             pid = os.fork()
@@ -169,6 +170,8 @@ class BoundedWorker:
                 os.close(req_w)
                 os.close(rep_r)
                 signal.signal(signal.SIGTERM, signal.SIG_DFL)
+                signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
+                _die_with(parent)
                 if cap > memory:
                     resource.setrlimit(resource.RLIMIT_AS, (cap, cap))
                 self._serve(req_r, rep_w)
@@ -186,7 +189,9 @@ class BoundedWorker:
             if request is None:
                 return  # the parent is gone
             try:
-                payload = ("ok", self._handler(json.loads(request)))
+                budget, body = json.loads(request)
+                _limit_cpu(float(budget))
+                payload = ("ok", self._handler(body))
             except MemoryError:
                 payload = ("memory", None)
             except (Exception, SystemExit) as err:
@@ -255,7 +260,7 @@ class BoundedWorker:
                     self._start()
                     self._started_memory = memory
                 try:
-                    _write_message(self._to_child, json.dumps(request).encode())
+                    _write_message(self._to_child, json.dumps([timeout, request]).encode())
                     reply = _read_message(self._from_child, _Budget(self._pid, timeout))
                 except _Timeout as spent:
                     self._stop()
@@ -286,6 +291,39 @@ class BoundedWorker:
 
 class _Timeout(Exception):
     pass
+
+
+PR_SET_PDEATHSIG = 1
+
+
+def _die_with(parent: int) -> None:
+    """In a helper: be killed when the process that forked it ends (Linux's ``PR_SET_PDEATHSIG``), so a
+    server killed while its helper computes leaves no orphan burning CPU. The signal follows the forking
+    *thread*; a helper it kills early is replaced at the next request."""
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+    except (OSError, AttributeError):
+        pass
+    if os.getppid() != parent:  # the parent ended before the request above took effect
+        os._exit(1)
+
+
+def _limit_cpu(budget_sec: float) -> None:
+    """In a helper, before a request: the kernel kills it (``RLIMIT_CPU``) a little after the request's CPU
+    budget, even when the parent is not there to do it."""
+    used = resource.getrusage(resource.RUSAGE_SELF)
+    spent = used.ru_utime + used.ru_stime
+    soft = int(spent + 2 * budget_sec) + 2
+    try:
+        _, hard = resource.getrlimit(resource.RLIMIT_CPU)
+        if hard != resource.RLIM_INFINITY:
+            soft = min(soft, hard)
+        resource.setrlimit(resource.RLIMIT_CPU, (soft, hard))
+    except (ValueError, OSError):
+        pass
 
 
 def _write_message(fd: int, data: bytes) -> None:

@@ -23,9 +23,10 @@ Decisions (also what :func:`features` advertises, nothing more):
   (non-fixed) joint, ``CATEGORY_DYNAMIC_OBJECT`` for the other dynamic models.
   Tags and bounds filters are not supported (``RESULT_FEATURE_UNSUPPORTED``).
 * Name filters are Python regular expressions (the ``regex`` module, ``re`` syntax; POSIX-extended
-  syntax is a subset for the usual cases), matched off the simulation thread within 0.2 s per
-  request: a backtracking bomb is refused, not run for minutes. A bad pattern, or one that runs out
-  of time, is ``RESULT_OPERATION_FAILED``.
+  syntax is a subset for the usual cases) of at most 1,000 characters, compiled and matched in a
+  helper process bounded to 256 MiB and 1 s of CPU, and 0.2 s of matching: a backtracking or
+  compile bomb (``a{4294967294}``) is refused, and the simulation never waits on it. A bad pattern,
+  or one over a bound, is ``RESULT_OPERATION_FAILED``.
 * States (get and set) are in the world frame: ``header.frame_id = "world"``,
   ``header.stamp`` = sim time. SetEntityState also accepts an entity or
   ``entity::link`` frame in ``state.header.frame_id``. Accelerations are ignored.
@@ -75,6 +76,8 @@ from simulation_interfaces.srv import (
 )
 
 from ..description import (
+    BoundedWorker,
+    BoundExceeded,
     ErrorCode,
     JointType,
     Model,
@@ -82,6 +85,7 @@ from ..description import (
     Pose,
     ResourceResolver,
     World,
+    excerpt,
     format_for_path,
     load_string,
     quat_rotate,
@@ -165,25 +169,78 @@ class _Prepared:
 FILTER_TIME_LIMIT_SEC = 0.2
 """The most a request's name filter may spend matching: ``(a+)+$`` against long names would
 otherwise backtrack for minutes, holding the interpreter (and so the simulation)."""
+FILTER_MAX_CHARS = 1000
+"""The longest name filter accepted (a name pattern of a page is a mistake or an attack)."""
+FILTER_MEMORY_BYTES = 256 << 20
+"""What compiling and matching one filter may allocate: ``a{4294967294}``, 13 bytes, compiles into
+gigabytes, and ``(?:(?:a{100}){100}){100}`` into 264 MB."""
+FILTER_CPU_SEC = 1.0
+"""The CPU time compiling and matching one filter may take in its helper process."""
 
 
-def _matching(pattern: Any, names: list[str], source: str) -> list[str]:
-    """The names ``pattern`` finds (all without one), within :data:`FILTER_TIME_LIMIT_SEC` in total."""
-    if pattern is None:
-        return names
+def _filter_request(request: dict) -> dict:
+    """In the filter helper: compile the pattern and match the names (bounded by the helper's limits)."""
+    try:
+        pattern = regex.compile(request["pattern"])
+    except (regex.error, ValueError, OverflowError) as err:
+        return {"invalid": str(err)}
     deadline = time.monotonic() + FILTER_TIME_LIMIT_SEC
     out = []
     try:
-        for name in names:
+        for name in request["names"]:
             if pattern.search(name, timeout=max(deadline - time.monotonic(), 1e-3)):
                 out.append(name)
     except TimeoutError:
+        return {"slow": True}
+    return {"names": out}
+
+
+_FILTER_WORKER = BoundedWorker(_filter_request, memory_bytes=FILTER_MEMORY_BYTES)
+"""One helper process compiles and matches every name filter: the regex module compiles in C holding the
+GIL, so a compile bomb run here would stall the simulation thread; there, it meets a memory limit and a
+CPU budget, and the server's threads only wait on a pipe."""
+
+
+def _check_filter(source: str) -> None:
+    """Refuse a name filter that is too long or holds characters no entity name has, before any helper."""
+    if len(source) > FILTER_MAX_CHARS:
         raise _Refused(
             Result.RESULT_OPERATION_FAILED,
-            f"filters.filter {source!r} took longer than {FILTER_TIME_LIMIT_SEC:g} s to match "
+            f"filters.filter has {len(source)} characters; at most {FILTER_MAX_CHARS} are accepted",
+        )
+    if "\x00" in source:
+        raise _Refused(Result.RESULT_OPERATION_FAILED, "filters.filter must not contain a NUL character")
+
+
+def _matching(source: str | None, names: list[str]) -> list[str]:
+    """The names the pattern ``source`` finds (all without one), compiled and matched in the filter helper:
+    at most :data:`FILTER_MEMORY_BYTES`, :data:`FILTER_CPU_SEC` of CPU and :data:`FILTER_TIME_LIMIT_SEC`
+    of matching."""
+    if not source:
+        return names
+    shown = excerpt(source, 80)
+    try:
+        reply = _FILTER_WORKER.call(
+            {"pattern": source, "names": names},
+            what=f"filters.filter {shown}",
+            timeout_sec=FILTER_CPU_SEC,
+            timeout_hint="the name filter's bound",
+        )
+    except BoundExceeded as err:
+        raise _Refused(Result.RESULT_OPERATION_FAILED, f"{err}; simplify the pattern") from None
+    assert isinstance(reply, dict)
+    if "invalid" in reply:
+        raise _Refused(
+            Result.RESULT_OPERATION_FAILED,
+            f"filters.filter {shown} is not a valid regular expression: {reply['invalid']}",
+        )
+    if reply.get("slow"):
+        raise _Refused(
+            Result.RESULT_OPERATION_FAILED,
+            f"filters.filter {shown} took longer than {FILTER_TIME_LIMIT_SEC:g} s to match "
             "(catastrophic backtracking?); simplify it",
-        ) from None
-    return out
+        )
+    return [str(n) for n in reply["names"]]
 
 
 def category_of(entity: Entity) -> int:
@@ -616,7 +673,7 @@ class SimulationInterfaces:
         return res
 
     # ------------------------------------------------------------------ queries
-    def _compile_filters(self, filters: Any) -> tuple[Any, set[int]]:
+    def _compile_filters(self, filters: Any) -> tuple[str | None, set[int]]:
         if filters.tags.tags:
             raise _Refused(
                 Result.RESULT_FEATURE_UNSUPPORTED, "entity tags are not supported (filters.tags must be empty)"
@@ -625,21 +682,15 @@ class SimulationInterfaces:
             raise _Refused(
                 Result.RESULT_FEATURE_UNSUPPORTED, "bounds filters are not supported (filters.bounds must be empty)"
             )
-        pattern = None
-        if filters.filter:
-            try:
-                pattern = regex.compile(filters.filter)
-            except (regex.error, ValueError) as err:
-                raise _Refused(
-                    Result.RESULT_OPERATION_FAILED,
-                    f"filters.filter {filters.filter!r} is not a valid regular expression: {err}",
-                ) from None
+        pattern = str(filters.filter) or None
+        if pattern is not None:
+            _check_filter(pattern)
         return pattern, {c.category for c in filters.categories}
 
     def _select(self, filters: Any) -> list[str]:
         pattern, cats = self._compile_filters(filters)
         # categories on the sim thread (cheap); the pattern here, off it, and bounded in time
-        return _matching(pattern, self._names_in(cats), filters.filter)
+        return _matching(pattern, self._names_in(cats))
 
     def _names_in(self, cats: set[int]) -> list[str]:
         """The entities of the given categories (all when none), read on the sim thread."""
@@ -687,7 +738,7 @@ class SimulationInterfaces:
             return res
 
         try:
-            wanted = _matching(pattern, self._names_in(cats), req.filters.filter)
+            wanted = _matching(pattern, self._names_in(cats))
         except _Refused as err:
             res.result = _result(err.code, str(err))
             return res
