@@ -470,6 +470,10 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose, *, vis
     """
     if not model.links:
         raise BuildError(f"model '{model.name}' has no links")
+    if len(model.links) > MAX_LINKS:
+        raise BuildError(
+            f"model '{model.name}' has {len(model.links)} links, more than the {MAX_LINKS} a model may have"
+        )
     children: dict[str, list[Joint]] = {}
     child_joint: dict[str, Joint] = {}
     for j in model.joints:
@@ -602,15 +606,94 @@ def _couple_mimic_joints(spec: mujoco.MjSpec, model: Model, entity: str, built: 
         )
 
 
+MAX_LINKS = 1000
+"""The most links one model may have. Real robots have tens (a Panda 11, NASA's Robonaut 2 about 100); a
+description of thousands is an attack or a mistake, and its build costs seconds and hundreds of MB."""
+MAX_SELF_EXCLUDES = 500
+"""The most body-pair excludes one model's self-collision filtering may add to the world. MuJoCo's spec
+deletes an exclude in time proportional to all the world's excludes (500 of 7,140 took 13 s), so a
+model past this uses collision bits instead (see :func:`_exclude_self_collisions`)."""
+SELF_COLLISION_BITS = tuple(1 << b for b in range(16, 32))
+"""contype bits above Gazebo's 16-bit collide_bitmask, one of which a large model's geoms take."""
+
+
+def _weld_groups(model: Model, built: BuiltEntity) -> dict[str, str]:
+    """Link -> the link its body is welded to (itself when it has a joint of its own), or ``""`` for a
+    body welded to the world (a static model's, a kinematic root's, a link fixed to the world).
+
+    MuJoCo never collides two bodies welded together, nor a body with its parent's weld group
+    (``filterparent``), so those pairs need no exclude."""
+    parent_of = {j.child: j for j in model.joints}
+    out: dict[str, str] = {}
+    for name in built.bodies:
+        chain = []
+        cur = name
+        while True:
+            if cur in out:
+                root = out[cur]
+                break
+            chain.append(cur)
+            j = parent_of.get(cur)
+            if j is None:  # a root link: free unless the model is static or the link kinematic
+                link = next((lk for lk in model.links if lk.name == cur), None)
+                root = "" if model.static or (link is not None and link.kinematic) else cur
+                break
+            if j.type is not JointType.FIXED:
+                root = cur
+                break
+            if j.parent in ("world", "") or j.parent not in built.bodies:
+                root = ""
+                break
+            cur = j.parent
+        for c in chain:
+            out[c] = root
+    return out
+
+
 def _exclude_self_collisions(spec: mujoco.MjSpec, model: Model, entity: str, built: BuiltEntity) -> None:
-    """Gazebo's links of one model do not collide with each other unless self_collide is on."""
+    """Gazebo's links of one model do not collide with each other unless self_collide is on.
+
+    Pairs of links welded together need nothing (MuJoCo never collides them); the others get one MuJoCo
+    exclude each, up to :data:`MAX_SELF_EXCLUDES`. A model that would need more (hundreds of moving links)
+    instead gives its collision geoms a contype bit of its own above Gazebo's 16 bits and every other
+    high bit in conaffinity: its geoms then never collide with each other, collide with every other
+    geom as their collide_bitmasks say, and with another such model unless the two drew the same bit
+    (16 bits, chosen from the entity's name: documented in docs/security.md)."""
     if model.self_collide:
         return
     with_geoms = [
         lk.name for lk in model.links if lk.collisions and lk.self_collide is not True and lk.name in built.bodies
     ]
-    for i, a in enumerate(with_geoms):
-        for b in with_geoms[i + 1 :]:
-            spec.add_exclude(
-                name=scoped(entity, f"{a}|{b}#exclude"), bodyname1=built.bodies[a], bodyname2=built.bodies[b]
-            )
+    weld = _weld_groups(model, built)
+    groups: dict[str, list[str]] = {}
+    for name in with_geoms:
+        groups.setdefault(weld.get(name, name), []).append(name)
+    members = list(groups.values())
+    pairs = sum(len(a) * len(b) for i, a in enumerate(members) for b in members[i + 1 :])
+    if pairs <= MAX_SELF_EXCLUDES:
+        for i, group_a in enumerate(members):
+            for group_b in members[i + 1 :]:
+                for a in group_a:
+                    for b in group_b:
+                        spec.add_exclude(
+                            name=scoped(entity, f"{a}|{b}#exclude"),
+                            bodyname1=built.bodies[a],
+                            bodyname2=built.bodies[b],
+                        )
+        return
+    import zlib
+
+    bit = SELF_COLLISION_BITS[zlib.crc32(entity.encode()) % len(SELF_COLLISION_BITS)]
+    high = sum(SELF_COLLISION_BITS)
+    for name in with_geoms:
+        for geom in spec.body(built.bodies[name]).geoms:
+            if geom.contype or geom.conaffinity:
+                mask = int(geom.contype) & 0xFFFF
+                geom.contype = _signed32(bit)
+                geom.conaffinity = _signed32(mask | (high & ~bit))
+
+
+def _signed32(value: int) -> int:
+    """A 32-bit mask as MuJoCo's int field holds it."""
+    value &= 0xFFFFFFFF
+    return value - (1 << 32) if value >= 1 << 31 else value

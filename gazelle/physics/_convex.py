@@ -8,6 +8,13 @@ mesh geom. The parts are cached by a hash of the scaled vertices and faces and t
 memory and in ``$GAZELLE_CACHE_DIR`` (default ``~/.cache/gazelle/convex``), so only the first load
 of a mesh pays for it (TurtleBot3's wall: 0.8 s, 6 parts).
 
+The cache is not trusted: its folder is created owner-only (``0700``) and a folder or entry that another
+user owns, or that others may write, is not used; an entry is read only when it is a regular file of at
+most :data:`MAX_ENTRY_BYTES`, holds the key of the mesh it was computed for, no more than
+:data:`COACD_MAX_PARTS` parts, and parts inside the mesh's bounding box. Anything else is recomputed
+(and replaced), with a warning. "The decomposition failed" is cached with the gazelle version that
+found it, and tried again by the next version.
+
 The decomposition runs in a forked child bounded in time (``GAZELLE_DECOMPOSE_TIMEOUT``, default
 30 s) and memory, off the simulation thread (:func:`prepare`); a mesh it cannot decompose in time,
 or with more than ``GAZELLE_DECOMPOSE_MAX_FACES`` faces (5,000), keeps its convex hull with a
@@ -115,23 +122,103 @@ def _decompose(vertices: np.ndarray, faces: np.ndarray) -> list[list[list[float]
     return [np.asarray(p[0], dtype=float).tolist() for p in parts]
 
 
-def _load_disk(path: Path) -> tuple[np.ndarray, ...] | None:
-    """The cached parts; ``()`` records that the mesh keeps its hull."""
+MAX_ENTRY_BYTES = 16 << 20
+"""The largest cache entry read (64 parts of a few hundred hull vertices are well under 1 MB)."""
+BOUNDS_SLACK = 0.02
+"""How far (a fraction of the mesh's size, plus 1 µm) a cached part may stick out of the mesh's box."""
+
+
+def _gazelle_version() -> str:
     try:
-        with np.load(path) as data:
-            return tuple(data[k] for k in sorted(data.files, key=lambda s: int(s[1:])))
-    except (OSError, ValueError, KeyError):
+        from importlib.metadata import version
+
+        return version("gazelle")
+    except Exception:  # not installed as a distribution (a source tree on sys.path)
+        return "unknown"
+
+
+def _private_dir(folder: Path) -> bool:
+    """Create ``folder`` owner-only, or check that an existing one is this user's and not writable by
+    others; False (after a warning) when it is not, so nothing is read from or written to it."""
+    try:
+        folder.mkdir(mode=0o700, parents=True, exist_ok=True)
+        info = folder.stat()
+    except OSError as err:
+        _log.debug(f"cannot use the convex-decomposition cache {folder}: {err}")
+        return False
+    if info.st_uid != os.getuid() or info.st_mode & 0o022:
+        _log.warning(
+            f"the convex-decomposition cache {folder} belongs to another user or others may write to it; "
+            "it is not used (make it yours with mode 0700, or set GAZELLE_CACHE_DIR)"
+        )
+        return False
+    return True
+
+
+def _load_disk(path: Path, key: str, vertices: np.ndarray) -> tuple[tuple[np.ndarray, ...], str] | None:
+    """The cached parts of the mesh with cache key ``key`` and these (scaled) vertices, and the gazelle
+    version that wrote them; ``()`` records that the mesh keeps its hull. None, after a warning where the
+    entry exists but is refused, when there is no usable entry."""
+    try:
+        info = path.lstat()
+    except OSError:
         return None
+    why = None
+    if not path.is_file() or path.is_symlink():
+        why = "is not a regular file"
+    elif info.st_uid != os.getuid():
+        why = "belongs to another user"
+    elif info.st_size > MAX_ENTRY_BYTES:
+        why = f"has {info.st_size} bytes, more than {MAX_ENTRY_BYTES}"
+    if why is None:
+        try:
+            with np.load(path, allow_pickle=False) as data:
+                names = set(data.files)
+                if "key" not in names or str(data["key"]) != key:
+                    why = "was computed for another mesh"
+                else:
+                    version = str(data["version"]) if "version" in names else ""
+                    count = len([n for n in names if n.startswith("p") and n[1:].isdigit()])
+                    pieces = tuple(np.asarray(data[f"p{i}"], dtype=float) for i in range(count))
+                    why = _implausible(pieces, vertices)
+                    if why is None:
+                        return pieces, version
+        except (OSError, ValueError, KeyError, EOFError) as err:
+            why = f"cannot be read ({type(err).__name__})"
+    _log.warning(f"convex-decomposition cache entry {path} {why}; it is computed again")
+    return None
 
 
-def _save_disk(path: Path, pieces: tuple[np.ndarray, ...]) -> None:
+def _implausible(pieces: tuple[np.ndarray, ...], vertices: np.ndarray) -> str | None:
+    """Why ``pieces`` cannot be a decomposition of a mesh with these vertices, or None."""
+    if len(pieces) > COACD_MAX_PARTS:
+        return f"has {len(pieces)} parts, more than {COACD_MAX_PARTS}"
+    lo, hi = vertices.min(axis=0), vertices.max(axis=0)
+    slack = BOUNDS_SLACK * float(np.linalg.norm(hi - lo)) + 1e-6
+    for piece in pieces:
+        if piece.ndim != 2 or piece.shape[1] != 3 or len(piece) < 4 or not np.all(np.isfinite(piece)):
+            return "holds a part that is not a set of 3-D points"
+        if np.any(piece.min(axis=0) < lo - slack) or np.any(piece.max(axis=0) > hi + slack):
+            return "holds a part outside the mesh's bounding box"
+    return None
+
+
+def _save_disk(path: Path, key: str, pieces: tuple[np.ndarray, ...]) -> None:
+    if not _private_dir(path.parent):
+        return
+    tmp = path.with_suffix(f".{os.getpid()}.{threading.get_ident()}.tmp.npz")
     try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_suffix(f".{os.getpid()}.tmp.npz")
-        np.savez(tmp, **{f"p{i}": p for i, p in enumerate(pieces)})  # pyright: ignore[reportArgumentType]
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
+        with os.fdopen(fd, "wb") as f:
+            arrays = {f"p{i}": p for i, p in enumerate(pieces)}
+            np.savez(f, key=np.asarray(key), version=np.asarray(_gazelle_version()), **arrays)  # pyright: ignore[reportArgumentType]
         os.replace(tmp, path)
     except OSError as err:  # a read-only home: decompose again next time
         _log.debug(f"cannot cache a convex decomposition in {path.parent}: {err}")
+        try:
+            tmp.unlink()
+        except OSError:
+            pass
 
 
 def collision_parts(path: str, scale: tuple[float, float, float]) -> Parts | None:
@@ -164,8 +251,13 @@ def collision_parts(path: str, scale: tuple[float, float, float]) -> Parts | Non
     max_faces = int(float(os.environ.get("GAZELLE_DECOMPOSE_MAX_FACES") or DEFAULT_MAX_FACES))
     if len(faces) > max_faces:
         return _hull(key, path, f"it has {len(faces)} faces, more than GAZELLE_DECOMPOSE_MAX_FACES={max_faces}")
-    disk = cache_dir() / f"{key}.npz"
-    pieces = _load_disk(disk) if disk.is_file() else None
+    folder = cache_dir()
+    disk = folder / f"{key}.npz"
+    usable = _private_dir(folder)
+    entry = _load_disk(disk, key, verts) if usable else None
+    if entry is not None and entry[0] == () and entry[1] != _gazelle_version():
+        entry = None  # failed with another gazelle version: this one tries once more
+    pieces = entry[0] if entry is not None else None
     if pieces == ():
         return _hull(key, path, "its decomposition failed before (cached)")
     if pieces is not None:
@@ -181,11 +273,11 @@ def collision_parts(path: str, scale: tuple[float, float, float]) -> Parts | Non
                 timeout_hint="GAZELLE_DECOMPOSE_TIMEOUT",
             )
         except BoundExceeded as err:
-            _save_disk(disk, ())  # not again on this machine
+            _save_disk(disk, key, ())  # not again on this machine, with this version
             return _hull(key, path, str(err))
         pieces = tuple(np.asarray(p, dtype=float) for p in raw if len(p) >= 4)
         parts = Parts(pieces, time.monotonic() - t0, "computed")
-        _save_disk(disk, pieces)
+        _save_disk(disk, key, pieces)
     with _lock:
         _memory[key] = parts
     return parts
