@@ -5,15 +5,23 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import sys
+
+_PACKAGE_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+"""A ROS package name (REP 144: lower case by rule; upper case is found in the wild, so accepted)."""
 
 
 def _find_launch_file(package: str, name: str) -> str:
     from ament_index_python.packages import PackageNotFoundError, get_package_share_directory
 
+    if not _PACKAGE_NAME.fullmatch(package):
+        raise LookupError(f"'{package}' is neither a launch file nor a package name")
+    if os.sep in name or name in (".", ".."):
+        raise LookupError(f"'{name}' is a path: give the launch file's name in package '{package}'")
     try:
         share = get_package_share_directory(package)
-    except (PackageNotFoundError, LookupError):
+    except (PackageNotFoundError, LookupError, ValueError):
         raise LookupError(f"Package '{package}' not found") from None
     matches = []
     for root, _dirs, files in os.walk(share, followlinks=True):
@@ -51,6 +59,9 @@ def main(argv: list[str]) -> int:
         if not os.path.isfile(path):
             log("ERROR", "launch", f"launch file '{path}' does not exist")
             return 1
+    elif os.path.isdir(positional[0]):
+        log("ERROR", "launch", f"'{positional[0]}' is a folder: name a launch file, or a package and its launch file")
+        return 1
     else:
         if len(positional) < 2:
             p.error("a launch file name is needed after the package name")
