@@ -14,6 +14,13 @@ and clients reach it through a small proxy that applies the viewer's rule (``gaz
 rebinding), and a browser may connect only from the Foxglove app (``https://app.foxglove.dev``) or an
 origin given with ``--allow-origin``. Clients that send no Origin (the desktop app, scripts) are
 accepted. It binds 127.0.0.1 unless told otherwise.
+
+The private port is not a way around the proxy: the server there speaks only TLS (``wss://``), with a
+certificate made for this run in memory, which only the proxy trusts (it pins it). A web page that
+finds the port (a port scan, DNS rebinding) cannot complete the handshake: a plain ``ws://`` gets no
+websocket, and a browser refuses the unknown certificate. (A local program can skip the certificate
+check; but a local program can join the ROS graph itself, which is what discovery limited to the
+machine allows.) Frames from clients are bounded (:data:`MAX_CLIENT_FRAME`).
 """
 
 from __future__ import annotations
@@ -46,6 +53,39 @@ SUBPROTOCOLS = ("foxglove.sdk.v1",)
 """The Foxglove WebSocket protocol's name that foxglove-sdk's server speaks (it refuses the legacy
 ``foxglove.websocket.v1``)."""
 REFRESH_SEC = 1.0
+MAX_CLIENT_FRAME = 16 << 20
+"""The largest frame a client may send (subscriptions, advertisements and published messages are small;
+a 256 MB frame held 430 MB of the proxy's memory)."""
+
+
+def _private_tls() -> tuple[bytes, bytes]:
+    """A self-signed certificate and key for ``127.0.0.1``, made now and never written anywhere."""
+    import datetime
+    import ipaddress
+
+    from cryptography import x509
+    from cryptography.hazmat.primitives import hashes, serialization
+    from cryptography.hazmat.primitives.asymmetric import ec
+    from cryptography.x509.oid import NameOID
+
+    key = ec.generate_private_key(ec.SECP256R1())
+    name = x509.Name([x509.NameAttribute(NameOID.COMMON_NAME, "gazelle foxglove (this run only)")])
+    now = datetime.datetime.now(datetime.UTC)
+    cert = (
+        x509.CertificateBuilder()
+        .subject_name(name)
+        .issuer_name(name)
+        .public_key(key.public_key())
+        .serial_number(x509.random_serial_number())
+        .not_valid_before(now - datetime.timedelta(minutes=5))
+        .not_valid_after(now + datetime.timedelta(days=365))
+        .add_extension(x509.SubjectAlternativeName([x509.IPAddress(ipaddress.ip_address("127.0.0.1"))]), False)
+        .sign(key, hashes.SHA256())
+    )
+    pem_key = key.private_bytes(
+        serialization.Encoding.PEM, serialization.PrivateFormat.PKCS8, serialization.NoEncryption()
+    )
+    return cert.public_bytes(serialization.Encoding.PEM), pem_key
 
 
 def _hidden(name: str) -> bool:
@@ -73,14 +113,17 @@ class FoxgloveBridge:
         self._requests: queue.SimpleQueue[tuple[str, str, int]] = queue.SimpleQueue()
         """(subscribe | unsubscribe, topic, client id), done on the ROS thread."""
         self._warned: set[str] = set()
+        cert, key = _private_tls()
         self._upstream = foxglove.start_server(
             name="gazelle",
             host="127.0.0.1",
             port=0,
+            tls_cert=cert,
+            tls_key=key,
             server_listener=_Listener(self),  # pyright: ignore[reportArgumentType] - a Protocol, by its methods
         )
         self.policy = OriginPolicy(host, tuple(dict.fromkeys((*FOXGLOVE_APP_ORIGINS, *allow_origins))))
-        self._proxy = _Proxy(self.policy, host, port, self._upstream.port)
+        self._proxy = _Proxy(self.policy, host, port, self._upstream.port, cert)
         self.port = self._proxy.port
 
     # ------------------------------------------------------------------ channels
@@ -184,9 +227,13 @@ class _Listener:
 class _Proxy:
     """The public websocket endpoint: checks Host and Origin, then relays frames to foxglove-sdk's server."""
 
-    def __init__(self, policy: OriginPolicy, host: str, port: int, upstream_port: int):
+    def __init__(self, policy: OriginPolicy, host: str, port: int, upstream_port: int, upstream_cert: bytes):
+        import ssl
+
         self.policy = policy
-        self._upstream = f"ws://127.0.0.1:{upstream_port}"
+        self._upstream = f"wss://127.0.0.1:{upstream_port}"
+        # trusts exactly the upstream's certificate of this run
+        self._tls = ssl.create_default_context(ssl.Purpose.SERVER_AUTH, cadata=upstream_cert.decode())
         self._loop = asyncio.new_event_loop()
         self._ready = threading.Event()
         self._error: BaseException | None = None
@@ -218,7 +265,7 @@ class _Proxy:
             port,
             subprotocols=list(SUBPROTOCOLS),  # pyright: ignore[reportArgumentType]
             process_request=self.policy.check,
-            max_size=None,
+            max_size=MAX_CLIENT_FRAME,
             compression=None,
         )
         self.port = self._server.sockets[0].getsockname()[1]
@@ -228,7 +275,9 @@ class _Proxy:
         from websockets.typing import Subprotocol
 
         chosen = Subprotocol(client.subprotocol or SUBPROTOCOLS[0])
-        async with connect(self._upstream, subprotocols=[chosen], max_size=None, compression=None) as upstream:
+        async with connect(
+            self._upstream, subprotocols=[chosen], max_size=None, compression=None, ssl=self._tls
+        ) as upstream:
 
             async def pump(src: Any, dst: Any) -> None:
                 async for frame in src:
@@ -246,9 +295,32 @@ class _Proxy:
         self._thread.join(timeout=2.0)
 
 
+PARENT_PID_VARIABLE = "GAZELLE_FOXGLOVE_PARENT"
+"""Set by ``gazelle sim --foxglove`` to its pid: the bridge then ends with the server, however it ends."""
+
+
+def _exit_with_parent() -> None:
+    """Under ``gazelle sim``: be sent SIGTERM when the server's process ends (``PR_SET_PDEATHSIG``), so a
+    server stopped by its watchdog or killed leaves no bridge holding the port."""
+    import os
+
+    parent = os.environ.get(PARENT_PID_VARIABLE, "")
+    if not parent.isdigit():
+        return
+    try:
+        import ctypes
+
+        ctypes.CDLL(None).prctl(1, signal.SIGTERM, 0, 0, 0)
+    except (OSError, AttributeError):
+        return
+    if os.getppid() != int(parent):  # the server ended before the line above
+        os._exit(0)
+
+
 def run(host: str = "127.0.0.1", port: int = DEFAULT_PORT, allow_origins: tuple[str, ...] = ()) -> int:
     """``gazelle foxglove``: serve until Ctrl-C; returns the exit status."""
     logging.basicConfig(level=logging.INFO, format="[%(levelname)s] [%(name)s]: %(message)s")
+    _exit_with_parent()
     try:
         bridge = FoxgloveBridge(host, port, allow_origins)
     except OSError as err:
