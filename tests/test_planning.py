@@ -368,3 +368,29 @@ def test_a_group_of_groups_plans_both_arms_at_once_and_the_viewer_draws_both_too
     assert end["left_panda_joint1"] == pytest.approx(home["left_panda_joint1"] + 0.6, abs=1e-6)
     assert end["right_panda_joint1"] == pytest.approx(home["right_panda_joint1"] - 0.6, abs=1e-6)
     assert sorted(plan_tips(model, set(trajectory.joint_names))) == TIPS
+
+
+def test_a_small_box_attached_to_the_hand_plans_and_checks_every_time(planner):
+    """Issue 25: any attached object could make every collision check raise inside coal (roboplan's
+    setCollisions changed the pairs, then raised for a link without geometry before rebuilding the
+    collision data), so plan_kinematic_path answered error code 0. Which pair comes last depends on a
+    set's order: several touch-link sets, one of them with panda_link8 (no geometry), cover it."""
+    from gazelle.planning import SceneObject, Shape
+
+    held = np.eye(4)
+    held[2, 3] = 0.2  # 2 cm box 20 cm out of the hand's frame, past the fingertips
+    fingers = ("panda_leftfinger", "panda_rightfinger")
+    ready = planner.state(READY)
+    try:
+        for touch in [(), ("panda_link8",), ("panda_link7", "panda_link8"), ("panda_link8", "panda_link7")]:
+            for name in ("piece", "pawn", "rook"):
+                box = (Shape("box", (0.02, 0.02, 0.02), np.eye(4)),)
+                planner.add_object(SceneObject(name, box, held, "panda_hand", ("panda_hand", *fingers, *touch)))
+                for _ in range(3):
+                    assert not planner.in_collision(ready)
+                planner.remove_object(name)
+        planner.add_object(SceneObject("piece", box, held, "panda_hand", ("panda_hand", *fingers)))
+        traj = planner.plan("panda_arm", planner.state({**READY, "panda_joint1": 0.5}), ready, timeout=5.0)
+        assert len(traj.times) >= 2
+    finally:
+        planner.remove_object("piece")

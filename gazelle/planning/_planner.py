@@ -158,8 +158,10 @@ class ArmPlanner:
             f"mesh '{uri}' could not be resolved: its collision geometry is left out" for uri in missing
         )
         self._urdf, self._srdf, self._seed, self._joint_limits = urdf, srdf, seed, dict(joint_limits or {})
-        description = core.loadUrdfSceneDescriptionFromXml(urdf, [])
-        self.scene = core.Scene(semantics.robot_name or "robot", description)
+        # the scene's description is kept as long as the scene: roboplan's bindings do not say that a
+        # Scene owns the description it was made from, so it is not left to the garbage collector
+        self._description = core.loadUrdfSceneDescriptionFromXml(urdf, [])
+        self.scene = core.Scene(semantics.robot_name or "robot", self._description)
         self.scene.setRngSeed(seed)
         robot = etree.fromstring(urdf.encode())
         self._known_groups = self._import_srdf(srdf, srdf_source, robot)
@@ -374,6 +376,11 @@ class ArmPlanner:
                 self.scene.setCollisions(a, b, False)
             except Exception:  # a link with no collision geometry of its own: nothing to allow
                 pass
+        # roboplan's single-pair setCollisions may change the pairs and then raise before it rebuilds the
+        # collision data (a link without geometry): coal then fails every check ("collisionPairs.size() ==
+        # collisionResults.size()"), which made any attached object end every plan. The batch form
+        # rebuilds the data once, whatever happened above.
+        self.scene.setCollisions([], False)
         return tuple(names)
 
     def add_box(self, name: str, size: Sequence[float], pose: np.ndarray) -> None:
@@ -416,7 +423,9 @@ class ArmPlanner:
             ]
         urdf = self._urdf.replace("</robot>", "".join(links) + "</robot>") if links else self._urdf
         srdf = self._srdf.replace("</robot>", "".join(disabled) + "</robot>") if disabled else self._srdf
-        self.scene = core.Scene(self.semantics.robot_name or "robot", core.loadUrdfSceneDescriptionFromXml(urdf, []))
+        description = core.loadUrdfSceneDescriptionFromXml(urdf, [])
+        self.scene = core.Scene(self.semantics.robot_name or "robot", description)
+        self._description = description  # see __init__
         self.scene.setRngSeed(self._seed)
         try:
             self.scene.importSrdf(srdf)

@@ -62,7 +62,7 @@ from std_msgs.msg import Float64, String
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
 from ..planning import START_BOUNDS_ERROR, ArmPlanner, PlanningError, SceneObject, Trajectory, moveit_joint_limits
-from ._planning_scene import attached_message, padded, shapes_of, to_message
+from ._planning_scene import attached_message, checked_matrix, padded, shapes_of, to_message
 from ._planning_scene import matrix as _matrix
 from ._planning_scene import pose as _pose
 from ._replies import serve
@@ -73,6 +73,8 @@ SIM_PADDING = 0.01
 """m the simulation's objects are grown by for planning: the simulated robot collides with the convex
 hulls of its meshes, a little fatter than the meshes the planner checks (an arm planned 5 mm past a
 pillar brushed it)."""
+SHUTDOWN_DEADLINE_SEC = 3.0
+"""s after SIGINT/SIGTERM by which move_group has ended, however busy (its watchdog process kills it)."""
 CURRENT_STATE_WAIT = 5.0
 """s a request waits for the first /joint_states (MoveIt's planning-scene monitor waits 1 s)."""
 CONTROLLER_WAIT = 5.0
@@ -87,6 +89,10 @@ GZ_CMD_POS = re.compile(r"/joint/(?P<joint>[^/]+)/n?\d+/cmd_pos$")
 """gz-sim JointPositionController's default command topic, ``/model/<model>/joint/<joint>/<index>/cmd_pos``
 (on ROS ``.../n0/cmd_pos``: see ``gazelle.ros._names``)."""
 LATCHED = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
+MAX_SCENE_OBJECTS = 256
+"""The most collision objects one planning-scene request may carry, and a scene may hold besides the
+simulation's own. Adding one costs time in all the others (roboplan rebuilds its collision pairs): 200
+take ~2 s; 3,000 in one request kept move_group deaf for over 15 minutes."""
 
 
 def _code(name: str) -> MoveItErrorCodes:
@@ -100,8 +106,12 @@ def _same_shapes(a: tuple[Any, ...], b: tuple[Any, ...]) -> bool:
 
 
 def _failed(response: Any, code: str, message: str) -> Any:
-    """A service response that says why it failed: its error_code, or ``success`` where it has none."""
-    if hasattr(response, "error_code"):
+    """A service response that says why it failed: its error_code (GetMotionPlan's is in its
+    motion_plan_response: an internal error there answered code 0 with no message), or ``success``."""
+    if hasattr(response, "motion_plan_response"):
+        response.motion_plan_response.error_code = _code(code)
+        response.motion_plan_response.error_code.message = message
+    elif hasattr(response, "error_code"):
         response.error_code = _code(code)
         response.error_code.message = message
     elif hasattr(response, "success"):
@@ -557,6 +567,19 @@ class MoveGroupNode(Node):
     def _apply_scene(self, scene: PlanningScene) -> None:
         planner = self.planner
         assert planner is not None
+        given = len(scene.world.collision_objects) + len(scene.robot_state.attached_collision_objects)
+        if given > MAX_SCENE_OBJECTS:
+            raise PlanningError(
+                "FAILURE", f"the scene has {given} collision objects; at most {MAX_SCENE_OBJECTS} are planned with"
+            )
+        # every object is checked before any is applied: a bad one refuses the request, the scene unchanged
+        for co in [
+            *scene.world.collision_objects,
+            *(aco.object for aco in scene.robot_state.attached_collision_objects),
+        ]:
+            if co.operation != CollisionObject.REMOVE:
+                checked_matrix(co.pose, f"collision object '{co.id[:80]}'")
+                shapes_of(co, lambda _text: None)
         if not scene.is_diff:  # a whole scene replaces the objects there are
             for obj in planner.objects():
                 planner.remove_object(obj.name)
@@ -587,7 +610,14 @@ class MoveGroupNode(Node):
             return
         if not co.id:
             raise PlanningError("INVALID_OBJECT_NAME", "a collision object needs an id")
-        at = self._frame(co.header.frame_id, planner.state(self._latest_joints or None)) @ _matrix(co.pose)
+        if existing is None and co.operation == CollisionObject.ADD:
+            mine = [o for o in planner.objects() if not o.link and o.name not in self._sim_objects]
+            if len(mine) >= MAX_SCENE_OBJECTS:
+                raise PlanningError(
+                    "FAILURE", f"the scene holds {len(mine)} collision objects already; at most {MAX_SCENE_OBJECTS}"
+                )
+        pose = checked_matrix(co.pose, f"collision object '{co.id[:80]}'")
+        at = self._frame(co.header.frame_id, planner.state(self._latest_joints or None)) @ pose
         if co.operation == CollisionObject.MOVE:
             if existing is None:
                 raise PlanningError("INVALID_OBJECT_NAME", f"no collision object '{co.id}' to move")
@@ -628,7 +658,7 @@ class MoveGroupNode(Node):
             if not shapes:
                 raise PlanningError("INVALID_OBJECT_NAME", f"attached object '{co.id}' has no shape gazelle plans with")
             frame = self._frame(co.header.frame_id or aco.link_name, q)
-            at = np.linalg.inv(link_pose) @ frame @ _matrix(co.pose)
+            at = np.linalg.inv(link_pose) @ frame @ checked_matrix(co.pose, f"attached object '{co.id[:80]}'")
         planner.add_object(SceneObject(co.id, shapes, at, aco.link_name, tuple(aco.touch_links)))
 
     # ------------------------------------------------------------------ planning
@@ -1113,6 +1143,14 @@ def move_group_main(argv: list[str]) -> int:
     except (OSError, ValueError) as err:
         print(f"gazelle move_group: {err}", file=sys.stderr)
         return 2
+    # Python handlers first (rclpy's chain to them), so CPython's wakeup fd hears the signal, and a
+    # watchdog that ends the process 3 s after it even while coal or roboplan holds the interpreter
+    import signal
+
+    from ..sim import start_signal_watchdog
+
+    signal.signal(signal.SIGTERM, lambda *_a: None)  # rclpy's own handler shuts the context down
+    start_signal_watchdog(SHUTDOWN_DEADLINE_SEC)
     rclpy.init(args=["move_group", *ros_args])
     resolve_mesh: Any = None
     if args.urdf:  # the folder of the file the user named may be read, as for a spawn

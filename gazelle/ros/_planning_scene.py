@@ -15,7 +15,15 @@ from geometry_msgs.msg import Pose
 from moveit_msgs.msg import AttachedCollisionObject, CollisionObject
 from shape_msgs.msg import SolidPrimitive
 
-from ..planning import SceneObject, Shape
+from ..planning import PlanningError, SceneObject, Shape
+
+MAX_PRIMITIVES = 64
+"""The most primitives (and meshes) one CollisionObject may hold."""
+MAX_MESH_VERTICES = 100_000
+"""The most vertices one mesh of a CollisionObject may have (it is planned with as its bounding box)."""
+MAX_COORDINATE_M = 10_000.0
+"""The farthest a pose may place anything, and the largest a shape may be (10 km): beyond is a mistake."""
+_DIMENSIONS = {"box": 3, "sphere": 1, "cylinder": 2}
 
 _KINDS = {SolidPrimitive.BOX: "box", SolidPrimitive.SPHERE: "sphere", SolidPrimitive.CYLINDER: "cylinder"}
 _TYPES = {kind: t for t, kind in _KINDS.items()}
@@ -61,22 +69,67 @@ def pose(m: np.ndarray) -> Pose:
     return p
 
 
+def checked_matrix(p: Pose, what: str) -> np.ndarray:
+    """:func:`matrix` of a pose that a request gave, refused (``FAILURE``, naming ``what``) when it is not
+    finite or lies farther than :data:`MAX_COORDINATE_M`: a NaN pose accepted into the scene made every
+    later plan fail until it was removed."""
+    values = (p.position.x, p.position.y, p.position.z, p.orientation.x, p.orientation.y, p.orientation.z)
+    values += (p.orientation.w,)
+    if not all(math.isfinite(v) for v in values):
+        raise PlanningError("FAILURE", f"{what}: the pose has a NaN or infinite value")
+    if max(abs(p.position.x), abs(p.position.y), abs(p.position.z)) > MAX_COORDINATE_M:
+        raise PlanningError("FAILURE", f"{what}: the pose is farther than {MAX_COORDINATE_M:g} m")
+    return matrix(p)
+
+
+def _checked_dimensions(kind: str, dims: list[float], what: str) -> tuple[float, ...]:
+    need = _DIMENSIONS[kind]
+    if len(dims) < need:
+        raise PlanningError("FAILURE", f"{what}: a {kind} needs {need} dimension(s), got {len(dims)}")
+    out = tuple(float(v) for v in dims[:need])
+    if not all(math.isfinite(v) and 0.0 < v <= MAX_COORDINATE_M for v in out):
+        raise PlanningError(
+            "FAILURE",
+            f"{what}: a {kind}'s dimensions must be positive, finite and at most "
+            f"{MAX_COORDINATE_M:g} m, got {list(out)}",
+        )
+    return out
+
+
 def shapes_of(co: CollisionObject, warn: Callable[[str], None]) -> list[Shape]:
-    """The primitives (and meshes, as boxes) of a CollisionObject, in the object's frame."""
+    """The primitives (and meshes, as boxes) of a CollisionObject, in the object's frame.
+
+    Raises:
+        PlanningError: ``FAILURE`` for more than :data:`MAX_PRIMITIVES` shapes, a mesh of more than
+            :data:`MAX_MESH_VERTICES`, or a NaN, infinite, non-positive or absurd size or pose.
+    """
     out: list[Shape] = []
+    what = f"collision object '{co.id[:80]}'"
+    if len(co.primitives) + len(co.meshes) > MAX_PRIMITIVES:
+        raise PlanningError(
+            "FAILURE", f"{what} has {len(co.primitives) + len(co.meshes)} shapes, more than {MAX_PRIMITIVES}"
+        )
     poses = list(co.primitive_poses)
     for i, primitive in enumerate(co.primitives):
-        at = matrix(poses[i]) if i < len(poses) else np.eye(4)
+        at = checked_matrix(poses[i], f"{what}: primitive_poses[{i}]") if i < len(poses) else np.eye(4)
         kind = _KINDS.get(primitive.type)
         if kind is None:
             warn(f"collision object '{co.id}': primitive {i} of type {primitive.type} is not planned with")
             continue
-        out.append(Shape(kind, tuple(float(v) for v in primitive.dimensions), at))
+        out.append(Shape(kind, _checked_dimensions(kind, list(primitive.dimensions), f"{what}: primitives[{i}]"), at))
     mesh_poses = list(co.mesh_poses)
     for i, mesh in enumerate(co.meshes):
+        if len(mesh.vertices) > MAX_MESH_VERTICES:
+            raise PlanningError(
+                "FAILURE", f"{what}: meshes[{i}] has {len(mesh.vertices)} vertices, more than {MAX_MESH_VERTICES}"
+            )
         points = np.array([[v.x, v.y, v.z] for v in mesh.vertices], dtype=float)
         if not len(points):
             continue
+        if not np.all(np.isfinite(points)) or np.abs(points).max() > MAX_COORDINATE_M:
+            raise PlanningError("FAILURE", f"{what}: meshes[{i}] has a NaN, infinite or absurd vertex")
+        if i < len(mesh_poses):
+            checked_matrix(mesh_poses[i], f"{what}: mesh_poses[{i}]")
         lo, hi = points.min(axis=0), points.max(axis=0)
         at = (matrix(mesh_poses[i]) if i < len(mesh_poses) else np.eye(4)) @ _translation((lo + hi) / 2)
         out.append(Shape("box", tuple(float(v) for v in np.maximum(hi - lo, 1e-4)), at))

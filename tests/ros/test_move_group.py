@@ -608,3 +608,64 @@ def test_gazelle_arm_moves_to_a_named_state_plans_to_a_pose_and_refuses_an_unkno
     assert "no named state 'r2home'" in run.stderr and "ready" in run.stderr and "Traceback" not in run.stderr
     after = panda.joints()
     assert max(abs(after[j] - before[j]) for j in ARM) < 1e-3
+
+
+def test_bad_and_huge_planning_scenes_are_refused_at_once_and_an_attached_box_still_plans(panda):
+    """Issue 25: NaN and inf objects were accepted (every later plan failed), 3,000 boxes made move_group
+    deaf for 15 minutes, and any attached object made plan_kinematic_path answer code 0 with no message."""
+    import time
+
+    from geometry_msgs.msg import Pose
+    from moveit_msgs.msg import AttachedCollisionObject, CollisionObject, PlanningScene
+    from moveit_msgs.srv import ApplyPlanningScene, GetMotionPlan, GetPlanningScene
+    from shape_msgs.msg import SolidPrimitive
+
+    def box(name: str, size: list[float], x: float = 2.8) -> CollisionObject:
+        co = CollisionObject(id=name, operation=CollisionObject.ADD)
+        co.header.frame_id = "panda_link0"
+        co.pose = Pose()
+        co.pose.position.x = x
+        co.pose.orientation.w = 1.0
+        co.primitives = [SolidPrimitive(type=SolidPrimitive.BOX, dimensions=size)]
+        return co
+
+    def apply(objects: list[CollisionObject]) -> bool:
+        scene = PlanningScene(is_diff=True)
+        scene.world.collision_objects = objects
+        req = ApplyPlanningScene.Request(scene=scene)
+        return panda.ros.call(ApplyPlanningScene, "/apply_planning_scene", req, timeout=30).success
+
+    nan_box = box("nan_box", [float("nan"), 0.1, 0.1])
+    inf_pose = box("inf_pose", [0.1, 0.1, 0.1])
+    inf_pose.pose.position.y = float("inf")
+    assert not apply([nan_box]) and not apply([inf_pose]) and not apply([box("flat", [0.1, 0.0, 0.1])])
+    start = time.monotonic()
+    assert not apply([box(f"b{i}", [0.01, 0.01, 0.01], 2.0 + i * 0.001) for i in range(3000)])
+    assert time.monotonic() - start < 10.0
+    listed = panda.ros.call(GetPlanningScene, "/get_planning_scene", GetPlanningScene.Request())
+    assert [o.id for o in listed.scene.world.collision_objects] == ["ground_plane::link"]  # nothing applied
+
+    ready = _ready(panda)
+    held = AttachedCollisionObject(link_name="panda_hand", touch_links=["panda_leftfinger", "panda_rightfinger"])
+    held.object = box("piece", [0.02, 0.02, 0.02], 0.0)
+    held.object.header.frame_id = "panda_hand"
+    held.object.pose.position.z = 0.2
+    scene = PlanningScene(is_diff=True)
+    scene.robot_state.attached_collision_objects = [held]
+    assert panda.ros.call(ApplyPlanningScene, "/apply_planning_scene", ApplyPlanningScene.Request(scene=scene)).success
+    try:
+        req = GetMotionPlan.Request()
+        mpr = req.motion_plan_request
+        mpr.group_name = "panda_arm"
+        mpr.start_state.joint_state.name = list(ready)
+        mpr.start_state.joint_state.position = list(ready.values())
+        goal = panda.joint_goal({**ready, "panda_joint1": 0.4}).request.goal_constraints
+        mpr.goal_constraints = goal
+        mpr.allowed_planning_time = 5.0
+        res = panda.ros.call(GetMotionPlan, "/plan_kinematic_path", req, timeout=30).motion_plan_response
+        assert res.error_code.val == MoveItErrorCodes.SUCCESS, (res.error_code.val, res.error_code.message)
+        assert len(res.trajectory.joint_trajectory.points) >= 2
+    finally:
+        held.object.operation = CollisionObject.REMOVE
+        scene.robot_state.attached_collision_objects = [held]
+        panda.ros.call(ApplyPlanningScene, "/apply_planning_scene", ApplyPlanningScene.Request(scene=scene))
