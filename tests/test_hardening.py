@@ -256,10 +256,10 @@ def test_sigterm_ends_the_server_while_c_code_holds_the_interpreter(tmp_path: Pa
     script = tmp_path / "hold.py"
     script.write_text(
         "import re, signal, sys, threading\n"
-        "from gazelle.cli._sim import start_signal_watchdog\n"
+        "from gazelle.sim import start_signal_watchdog\n"
         "stop = threading.Event()\n"
         "signal.signal(signal.SIGTERM, lambda *a: stop.set())\n"
-        "start_signal_watchdog()\n"
+        "start_signal_watchdog(3.0)\n"
         "print('holding', flush=True)\n"
         "re.match(r'(a+)+$', 'a' * 60 + 'b')  # C code that never lets go of the GIL\n"
     )

@@ -8,70 +8,15 @@ import signal
 import subprocess
 import sys
 import threading
-import time
 from pathlib import Path
 
 from ..description import Model, ModelLoadError, World, load
+from ..sim import start_signal_watchdog
 from ..worlds import default_world
 
 GIL_SWITCH_INTERVAL_SEC = 0.0002
 SHUTDOWN_DEADLINE_SEC = 2.5
 """SIGINT/SIGTERM end the process within this long, even if a thread is stuck (then with status 1)."""
-
-
-HARD_DEADLINE_SEC = SHUTDOWN_DEADLINE_SEC + 0.5
-"""When even the in-process deadline cannot run (C code holding the GIL), the watchdog process kills the
-server this long after the signal."""
-
-
-def start_signal_watchdog() -> int:
-    """Fork a watchdog process that ends this one :data:`HARD_DEADLINE_SEC` after a SIGINT or SIGTERM,
-    whatever holds the interpreter; returns its pid.
-
-    Python runs a signal handler only when the main thread gets the GIL: a regular-expression compile or
-    a model build in C held it for seconds, and ``threading.Timer`` needs it too. But CPython's C-level
-    handler writes the signal's number to the wakeup fd (:func:`signal.set_wakeup_fd`) at once, GIL or
-    not. The watchdog reads that pipe; it leaves when the pipe closes (this process exited), and dies
-    with this process (``PR_SET_PDEATHSIG``). Call it from the main thread, before other threads start,
-    after installing the Python handlers for SIGINT and SIGTERM."""
-    try:
-        import ctypes
-
-        prctl = ctypes.CDLL(None).prctl  # looked up before the fork: the child only calls it
-    except (OSError, AttributeError):
-        prctl = None
-    read_fd, write_fd = os.pipe()
-    os.set_blocking(write_fd, False)
-    os.set_inheritable(write_fd, False)
-    server = os.getpid()
-    pid = os.fork()
-    if pid == 0:  # the watchdog: only os calls, no threads, no imports
-        try:
-            os.close(write_fd)
-            signal.signal(signal.SIGINT, signal.SIG_IGN)
-            signal.signal(signal.SIGTERM, signal.SIG_DFL)
-            if prctl is not None:
-                prctl(1, signal.SIGKILL, 0, 0, 0)  # PR_SET_PDEATHSIG
-            if os.getppid() != server:
-                os._exit(0)
-            while True:
-                data = os.read(read_fd, 64)
-                if not data:
-                    break  # the server exited
-                if any(b in (signal.SIGINT, signal.SIGTERM) for b in data):
-                    time.sleep(HARD_DEADLINE_SEC)
-                    os.write(
-                        2,
-                        f"gazelle: shutdown did not finish within {HARD_DEADLINE_SEC:g} s (a thread held the "
-                        "interpreter); killing the server\n".encode(),
-                    )
-                    os.kill(server, signal.SIGKILL)
-                    break
-        finally:
-            os._exit(0)
-    os.close(read_fd)
-    signal.set_wakeup_fd(write_fd, warn_on_full_buffer=False)
-    return pid
 
 
 def _force_exit() -> None:
@@ -126,7 +71,9 @@ def run_sim(
 
     signal.signal(signal.SIGINT, on_signal)
     signal.signal(signal.SIGTERM, on_signal)
-    start_signal_watchdog()  # before any thread, and before the world's build, which may be long
+    start_signal_watchdog(
+        SHUTDOWN_DEADLINE_SEC + 0.5
+    )  # before any thread, and before the world's build, which may be long
     try:
         world = load_world(path, args)
     except ModelLoadError as err:

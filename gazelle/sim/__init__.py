@@ -15,6 +15,7 @@ from ._simulation import RtfSample as RtfSample
 from ._simulation import Simulation as Simulation
 from ._simulation import SpawnRequest as SpawnRequest
 from ._simulation import StepListener as StepListener
+from ._watchdog import start_signal_watchdog as start_signal_watchdog
 
 __all__ = [
     "MAX_CATCH_UP_SEC",
