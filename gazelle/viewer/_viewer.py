@@ -763,7 +763,10 @@ class Viewer:
 
     def _redraw_plan(self) -> None:
         shown = bool(self._plan_box.value)
-        if self._plan_drawn == (self.planned, shown):
+        # by identity: a PlannedPath holds numpy arrays, and == between two of other lengths raised
+        # "operands could not be broadcast" on every redraw (issue 27), leaving the old path drawn
+        drawn, was_shown = self._plan_drawn
+        if drawn is self.planned and was_shown == shown:
             return
         self._plan_drawn = (self.planned, shown)
         for handle in self._plan_handles:

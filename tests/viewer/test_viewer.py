@@ -425,6 +425,16 @@ def test_a_planned_arm_motion_is_drawn_as_its_tools_path_and_goal_and_the_arm_do
         assert viewer.update_plan() is None and not viewer._plan_handles
         sim.bus.inject(PLAN_TOPIC, MsgType.DISPLAY_TRAJECTORY, plan)
         assert viewer.update_plan() is not None
+        # issue 27: the next plan of another length replaces the drawn one (comparing the two raised
+        # "operands could not be broadcast" on every redraw, and the old path stayed)
+        longer = DisplayTrajectory(
+            "arm2", (JointTrajectory(0.0, ("j1", "j2"), (*points, TrajectoryPoint(2.0, (0.0, 0.0)))),)
+        )
+        sim.bus.inject(PLAN_TOPIC, MsgType.DISPLAY_TRAJECTORY, longer)
+        redrawn = viewer.update_plan()
+        assert redrawn is not None and len(redrawn.paths[0]) == 5 and len(viewer._plan_handles) == 2
+        sim.bus.inject(PLAN_TOPIC, MsgType.DISPLAY_TRAJECTORY, plan)
+        assert len(viewer.update_plan().paths[0]) == 4  # type: ignore[union-attr]
         sim.delete("arm")
         viewer.update()
         assert viewer.update_plan() is None and not viewer._plan_handles  # its robot is gone
