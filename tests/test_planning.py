@@ -394,3 +394,22 @@ def test_a_small_box_attached_to_the_hand_plans_and_checks_every_time(planner):
         assert len(traj.times) >= 2
     finally:
         planner.remove_object("piece")
+
+
+def test_a_finger_a_hair_past_its_limit_does_not_refuse_an_arm_plan_and_a_bad_goal_names_its_joint(planner):
+    """Issue 27: a pymoveit2 client sent /joint_states' finger at -6.6e-12 m (limit 0) as its start state;
+    6 of 8 joint goals failed with GOAL_STATE_INVALID, naming nothing."""
+    from gazelle.planning import PlanningError
+
+    start = planner.onto_limits(planner.state({**READY, "panda_finger_joint1": -6.6e-12}))
+    finger = planner.joint_names.index("panda_finger_joint1")
+    assert start[finger] == 0.0
+    raw = planner.state({**READY, "panda_finger_joint1": -6.6e-12})
+    goal = raw.copy()
+    goal[planner.joint_names.index("panda_joint1")] = 0.4
+    traj = planner.plan("panda_arm", goal, raw, timeout=5.0)  # the finger is not the arm's business
+    assert len(traj.times) >= 2
+    goal[planner.joint_names.index("panda_joint4")] = 0.5  # above its upper limit, -0.0698
+    with pytest.raises(PlanningError) as info:
+        planner.plan("panda_arm", goal, start, timeout=5.0)
+    assert info.value.code == "GOAL_STATE_INVALID" and "joint 'panda_joint4' at 0.5" in info.value.message

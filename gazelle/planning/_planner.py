@@ -295,10 +295,27 @@ class ArmPlanner:
         A reading a little past a limit (a simulated finger at -0.0001 m, its limit 0) is moved onto the
         limit, as MoveIt does within its ``start_state_max_bounds_error`` (0.05); further out stays as read.
         """
-        q = self.state(positions)
+        self._current = self.onto_limits(self.state(positions))
+
+    def onto_limits(self, q: np.ndarray) -> np.ndarray:
+        """``q`` with every joint within :data:`START_BOUNDS_ERROR` past a limit moved onto it (a request's
+        start state read from /joint_states: a finger at -6.6e-12 m against its limit 0)."""
         lo, hi = self._bounds
+        q = np.asarray(q, dtype=float)
         near = (q >= lo - START_BOUNDS_ERROR) & (q <= hi + START_BOUNDS_ERROR)
-        self._current = np.where(near, np.clip(q, lo, hi), q)
+        return np.where(near, np.clip(q, lo, hi), q)
+
+    def outside_limits(self, q: np.ndarray, joints: Sequence[str] | None = None) -> str | None:
+        """Which of ``joints`` (all when None) lies outside its limits in ``q``, said with its value and
+        limits (for GOAL_STATE_INVALID), or None. MoveIt checks only the planned group's joints
+        (moveit_ros/planning/planning_request_adapter_plugins/src/check_start_state_bounds.cpp takes the
+        group's joint models), so a gripper finger a hair past its limit does not refuse an arm's plan."""
+        lo, hi = self._bounds
+        names = list(joints) if joints is not None else list(self.joint_names)
+        for name, i in zip(names, self._group_index(names)):
+            if not lo[i] - 1e-9 <= q[i] <= hi[i] + 1e-9:
+                return f"joint '{name}' at {q[i]:.6g} is outside its limits [{lo[i]:.6g}, {hi[i]:.6g}]"
+        return None
 
     @property
     def _bounds(self) -> tuple[np.ndarray, np.ndarray]:
@@ -529,10 +546,14 @@ class ArmPlanner:
             the joint limits) or ``PLANNING_FAILED``.
         """
         joints = self.group_joints(group)
-        q0 = self._current.copy() if start is None else np.asarray(start, dtype=float)
-        q1 = np.asarray(goal, dtype=float)
-        if not self.within_limits(q1):
-            raise PlanningError("GOAL_STATE_INVALID", "the goal lies outside the joints' limits")
+        q0 = self.onto_limits(self._current.copy() if start is None else np.asarray(start, dtype=float))
+        q1 = np.asarray(goal, dtype=float).copy()
+        others = np.ones(len(q1), dtype=bool)
+        others[self._group_index(joints)] = False
+        q1[others] = q0[others]  # the joints the group does not move stay as they start (onto their limits)
+        outside = self.outside_limits(q1, joints)
+        if outside is not None:
+            raise PlanningError("GOAL_STATE_INVALID", f"the goal lies outside the joints' limits: {outside}")
         if self.in_collision(q1):
             raise PlanningError("GOAL_IN_COLLISION", "the goal state is in collision")
         if self.in_collision(q0):

@@ -367,7 +367,9 @@ class MoveGroupNode(Node):
                 f"no /joint_states within {CURRENT_STATE_WAIT:g} s: planning from the model's zero positions"
             )
         js = state.joint_state
-        return self.planner.state(dict(zip(js.name, js.position)) if js.name else None)
+        # a start state read from /joint_states may be a hair past a limit: moved onto it, as the current
+        # state is (MoveIt's start_state_max_bounds_error, 0.05)
+        return self.planner.onto_limits(self.planner.state(dict(zip(js.name, js.position)) if js.name else None))
 
     def _frame(self, frame: str, q: np.ndarray) -> np.ndarray:
         """The pose of ``frame`` in the planning frame: the root link, the SRDF's virtual joint parent
