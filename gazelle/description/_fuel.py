@@ -55,6 +55,18 @@ SUN_SDF = """<?xml version="1.0"?>
 
 BUILTIN = {"ground plane": GROUND_PLANE_SDF, "sun": SUN_SDF}
 
+CLASSIC_GROUND_PLANE_SDF = GROUND_PLANE_SDF.replace(
+    "<ambient>0.8 0.8 0.8 1</ambient><diffuse>0.8 0.8 0.8 1</diffuse><specular>0.8 0.8 0.8 1</specular>",
+    "<script><name>Gazebo/Grey</name></script>",
+)
+"""Gazebo Classic's stock ``model://ground_plane`` (osrf/gazebo_models' ground_plane/model.sdf: the same
+static 100 m plane and friction 100/50 as Fuel's, drawn in ``Gazebo/Grey``)."""
+
+CLASSIC_BUILTIN = {"ground_plane": CLASSIC_GROUND_PLANE_SDF, "sun": SUN_SDF}
+"""``model://`` names that Gazebo Classic installs with itself (``/usr/share/gazebo-11/models``), so every
+Classic world includes them and no package ships them: built in, used when no model of that name is on
+the resource paths (``sun`` is the same light as Fuel's)."""
+
 
 @dataclass(frozen=True)
 class FuelModel:

@@ -37,7 +37,7 @@ from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
 
 from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
 from ._fuel import BUILTIN as FUEL_BUILTIN
-from ._fuel import FuelModel, cache_roots, find_cached, parse_fuel_uri
+from ._fuel import CLASSIC_BUILTIN, FuelModel, cache_roots, find_cached, parse_fuel_uri
 from ._inertia import default_inertial, inertia_from_geometries, inertia_problem
 from ._model import (
     DEFAULT_MAGNETIC_FIELD,
@@ -614,11 +614,11 @@ class _Loader:
             return None
         return text, str(path), path.parent
 
-    def fuel_include(self, fuel: FuelModel, uri: str, loc: SourceLocation) -> tuple[str, str, Path] | None:
+    def fuel_include(self, fuel: FuelModel, uri: str, loc: SourceLocation) -> tuple[str, str, Path | None] | None:
         """A Fuel model without the network: built in, or from Gazebo's local Fuel cache (see :mod:`._fuel`)."""
         builtin = FUEL_BUILTIN.get(fuel.name.lower()) if fuel.owner.lower() == "openrobotics" else None
         if builtin is not None:
-            return builtin, f"<builtin:fuel {fuel.label()}>", Path.cwd()
+            return builtin, f"<builtin:fuel {fuel.label()}>", None
         cached = find_cached(fuel, cache_roots())
         if cached is not None:
             self.resolver = self.resolver.trusting(cached)  # the user's own Gazebo cache
@@ -659,7 +659,12 @@ class _Loader:
                 if "://" in uri and not uri.startswith(("model://", "package://", "file://"))
                 else self.resolve(uri, doc)
             )
-            got_file = self.include_file(uri, path, doc, loc)
+            stock = CLASSIC_BUILTIN.get(uri[len("model://") :].strip("/")) if uri.startswith("model://") else None
+            if path is None and stock is not None:
+                # Gazebo Classic installs these with itself; without them a Classic world has no floor
+                got_file = (stock, f"<builtin:{uri}>", None)
+            else:
+                got_file = self.include_file(uri, path, doc, loc)
             if got_file is None:
                 return None
             text, source, base = got_file
