@@ -49,3 +49,73 @@ def test_an_installed_ground_plane_model_is_used_before_the_built_in_one() -> No
     world = load_string(CLASSIC_WORLD, resolver=resolver).value
     (ground,) = world.models
     assert "gazebo_models" in ground.source_file
+
+
+def test_a_missing_or_broken_collision_mesh_is_left_out_and_the_world_loads(tmp_path: Path, caplog) -> None:
+    """turtlebot3_house, articubot's obstacles.world and the Husky playpen died with a 70-line traceback
+    on one missing mesh; Gazebo loads them without that geometry and says so."""
+    broken = tmp_path / "broken.stl"
+    broken.write_bytes(b"not a mesh at all")
+    model = f"""<model name="barrel"><static>true</static><link name="l">
+      <collision name="gone"><geometry><mesh><uri>model://no_such_model/meshes/barrel.dae</uri></mesh></geometry>
+      </collision>
+      <collision name="bad"><geometry><mesh><uri>{broken}</uri></mesh></geometry></collision>
+      <collision name="kept"><geometry><box><size>1 1 1</size></box></geometry></collision>
+    </link></model>"""
+    world = tmp_path / "w.world"
+    world.write_text(
+        f'<sdf version="1.6"><world name="w"><include><uri>model://ground_plane</uri></include>{model}</world></sdf>'
+    )
+    sim = Simulation(load(world).value, rtf=0)
+    try:
+        assert set(sim.world.entities) == {"ground_plane", "barrel"}
+        geoms = [sim.world.model.geom(i).name for i in range(sim.world.model.ngeom)]
+        assert any("kept" in g for g in geoms) and not any("gone" in g or "::bad" in g for g in geoms)
+        text = caplog.text
+        assert "collision 'gone'" in text and "it is left out" in text and "collision 'bad'" in text
+    finally:
+        sim.stop()
+
+
+@pytest.mark.parametrize("enforce", [False, True])
+def test_command_interface_min_max_clamp_only_where_the_manager_enforces_command_limits(
+    enforce: bool, tmp_path
+) -> None:
+    """Husky declares min -1 / max 1 on its wheel velocity interfaces and drives at 1 m/s in Gazebo:
+    gz_ros2_control (gz_system.cpp, write()) and gazebo_ros2_control pass commands on unclamped;
+    ros2_control Jazzy clamps only with the manager's enforce_command_limits (default false)."""
+    from gazelle.systems import Float64Array, MsgType
+    from gazelle.systems.ros2_control import ControllerManager
+    from gazelle.worlds import default_world
+
+    urdf = (REAL / "ros2_control_diffbot" / "_xacro_expanded" / "diffbot.urdf").read_text()
+    urdf = urdf.replace(
+        '<command_interface name="velocity"/>',
+        '<command_interface name="velocity"><param name="min">-1</param><param name="max">1</param></command_interface>',
+    )
+    params = tmp_path / "cm.yaml"
+    params.write_text(
+        f"controller_manager:\n  ros__parameters:\n    enforce_command_limits: {str(enforce).lower()}\n"
+        "wheels:\n  ros__parameters:\n    type: velocity_controllers/JointGroupVelocityController\n"
+        "    joints: [left_wheel_joint, right_wheel_joint]\n"
+    )
+    urdf = urdf.replace(
+        "</robot>",
+        '<gazebo><plugin filename="libgazebo_ros2_control.so" name="gazebo_ros2_control">'
+        f"<parameters>{params}</parameters></plugin></gazebo></robot>",
+    )
+    source = tmp_path / "diffbot.urdf"
+    source.write_text(urdf)
+    sim = Simulation(default_world(), rtf=0)
+    try:
+        entity = sim.spawn(load(source).value, name="diffbot", pose=Pose((0.0, 0.0, 0.05)))
+        (cm,) = [s for s in entity.systems if isinstance(s, ControllerManager)]
+        cm.load_controller("wheels")
+        cm.configure_controller("wheels")
+        cm.switch_controller(["wheels"], [])
+        sim.bus.inject("/wheels/commands", MsgType.FLOAT64_ARRAY, Float64Array((3.0, 3.0)))
+        sim.step(1000)
+        speed = sim.world.joint("diffbot", "left_wheel_joint").velocity
+        assert speed == pytest.approx(1.0 if enforce else 3.0, rel=0.03)
+    finally:
+        sim.stop()

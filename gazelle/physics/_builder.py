@@ -213,12 +213,19 @@ def _add_geom(
         mesh.uservert = list(cone_vertices(g.radius, g.length).ravel())
         kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh_name)
     elif isinstance(g, Mesh):
+        # a collision mesh that cannot be found or read is left out with a warning naming it, and the rest
+        # of the model is built: gz-sim loads a world whose mesh fails to load without that geometry
+        # (gz-sim's MeshManager logs the failure and the collision has no shape); a missing construction
+        # barrel mesh must not kill a whole house world
+        where = f"{col.location}: " if col.location is not None else ""
         if g.path is None:
-            raise BuildError(f"collision '{col.name}': mesh '{g.uri}' could not be resolved")
+            _log.warning(f"{where}collision '{col.name}': mesh '{g.uri}' could not be resolved; it is left out")
+            return
         try:
             parts = collision_parts(g.path, tuple(g.scale))  # type: ignore[arg-type]
         except MeshReadError as err:
-            raise BuildError(str(err)) from err
+            _log.warning(f"{where}collision '{col.name}': {err}; it is left out")
+            return
         if parts is None:  # convex: the mesh itself
             mesh_name = f"{name}__mesh"
             mesh = spec.add_mesh(name=mesh_name)

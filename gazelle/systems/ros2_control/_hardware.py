@@ -12,8 +12,13 @@ runtime's typed handles:
   - ``effort``: a motor, the torque as commanded;
 * only the actuator of the joint's active command mode exerts force; a joint whose interfaces no
   active controller claims holds where it is (``hold_joints``, gz_ros2_control's default);
-* ``<param name="min|max">`` of a command interface clamp the command, ``<limit effort>``
-  clamps the force; ``initial_value`` of a state interface sets the joint at spawn; a
+* ``<param name="min|max">`` of a command interface clamp the command only where the controller
+  manager's ``enforce_command_limits`` is true, ros2_control Jazzy's default being false
+  (controller_manager/src/controller_manager_parameters.yaml); gazebo_ros2_control
+  (gazebo_system.cpp, ``write()``) and gz_ros2_control (gz_system.cpp, ``write()``: the velocity command
+  goes to ``JointVelocityCmd`` as it is) pass commands on unclamped. Husky declares -1..1 rad/s on its
+  wheels and drives at 1 m/s in Gazebo. ``<limit effort>`` clamps the force, as the physics does;
+  ``initial_value`` of a state interface sets the joint at spawn; a
   ``<joint><mimic>`` joint follows its leader's position interface.
 
 URDF ``<limit velocity>`` is not enforced on commands, as ros2_control Jazzy's resource manager
@@ -94,7 +99,14 @@ class SimHardware:
     """
 
     def __init__(
-        self, rc: Ros2Control, world: PhysicsWorld, entity: Entity, log: logging.Logger, *, hold: bool = True
+        self,
+        rc: Ros2Control,
+        world: PhysicsWorld,
+        entity: Entity,
+        log: logging.Logger,
+        *,
+        hold: bool = True,
+        enforce_command_limits: bool = False,
     ) -> None:
         self.name = rc.name
         self.hold_joints = hold
@@ -140,8 +152,8 @@ class SimHardware:
                         f"is not simulated (only {', '.join(JOINT_INTERFACES)}); no controller can claim it"
                     )
                     continue
-                lo, hi = _float(ci.param("min"), -math.inf), _float(ci.param("max"), math.inf)
-                joint.limits[kind] = (lo, hi)
+                if enforce_command_limits:
+                    joint.limits[kind] = (_float(ci.param("min"), -math.inf), _float(ci.param("max"), math.inf))
                 joint.commands[kind] = self._actuator(world, entity, comp.name, kind, j.type is JointType.CONTINUOUS)
                 self.commands[f"{comp.name}/{kind}"] = math.nan
             for si in comp.state_interfaces:
@@ -301,7 +313,8 @@ class SimHardware:
             states.update(zip(keys, (values[i] for i in idx)))
 
     def write(self, sim_time_sec: float) -> None:
-        """Send each joint's command in its active mode (clamped to the interface's min/max); hold the others.
+        """Send each joint's command in its active mode (clamped to the interface's min/max where the manager
+        enforces command limits); hold the others.
 
         The position servos' commands go to MuJoCo in one write (this runs every cycle, up to 1 kHz)."""
         if self.state != "active":

@@ -184,7 +184,17 @@ class ControllerManager(System):
                     f"{where}ros2_control '{rc.name}': hardware plugin '{rc.hardware_plugin or '(none)'}' is a real "
                     "robot's driver; the simulation stands in for it (as gazebo_ros2_control/GazeboSystem)"
                 )
-            self.hardware.append(SimHardware(rc, ctx.world, ctx.entity, self.log, hold=self.config.hold_joints))
+            enforce = self.manager_params().get("enforce_command_limits", False)
+            self.hardware.append(
+                SimHardware(
+                    rc,
+                    ctx.world,
+                    ctx.entity,
+                    self.log,
+                    hold=self.config.hold_joints,
+                    enforce_command_limits=enforce is True,
+                )
+            )
         rate = self.manager_params().get("update_rate", DEFAULT_UPDATE_RATE)
         if not isinstance(rate, (int, float)) or isinstance(rate, bool) or rate <= 0:
             raise ControlError(f"controller_manager: update_rate must be a positive number, got {rate!r}")
