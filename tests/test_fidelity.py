@@ -119,3 +119,25 @@ def test_command_interface_min_max_clamp_only_where_the_manager_enforces_command
         assert speed == pytest.approx(1.0 if enforce else 3.0, rel=0.03)
     finally:
         sim.stop()
+
+
+def test_models_a_package_exports_for_gazebo_are_found(tmp_path: Path) -> None:
+    """turtlebot3_gazebo's package.xml exports ``gazebo_model_path="${prefix}/models"``; gazebo_ros adds
+    it to GAZEBO_MODEL_PATH, so TurtleBot3's world finds model://turtlebot3_world (issue 26)."""
+    prefix = tmp_path / "install"
+    index = prefix / "share" / "ament_index" / "resource_index" / "packages"
+    index.mkdir(parents=True)
+    for name, export in (("my_gazebo", "${prefix}/models"), ("sneaky", "/etc")):
+        (index / name).write_text("")
+        share = prefix / "share" / name
+        (share / "models" / f"{name}_world").mkdir(parents=True)
+        (share / "models" / f"{name}_world" / "model.sdf").write_text(BALL.replace("ball", f"{name}_world"))
+        (share / "package.xml").write_text(
+            f'<package format="3"><name>{name}</name><export><build_type>ament_cmake</build_type>'
+            f'<gazebo_ros gazebo_model_path="{export}"/></export></package>'
+        )
+    resolver = ResourceResolver(env={"AMENT_PREFIX_PATH": str(prefix)})
+    world = '<sdf version="1.6"><world name="w"><include><uri>model://my_gazebo_world</uri></include></world></sdf>'
+    assert [m.name for m in load_string(world, resolver=resolver).value.models] == ["my_gazebo_world"]
+    assert resolver.find_package("passwd") is None  # an export outside its package is not followed
+    assert prefix / "share" / "my_gazebo" / "models" in [p for p in resolver.search_paths()]

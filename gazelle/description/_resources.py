@@ -18,6 +18,7 @@ and, for a package installed by ``colcon build --symlink-install``, the source f
 
 from __future__ import annotations
 
+import functools
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -68,11 +69,13 @@ class ResourceResolver:
         return False
 
     def search_paths(self) -> list[Path]:
-        """Folders whose sub-folders are packages or models, in search order."""
+        """Folders whose sub-folders are packages or models, in search order: the extra folders, the
+        environment's, then the model folders that installed packages export (``gazebo_model_path``)."""
         env = self.env if self.env is not None else os.environ
         paths = list(self.extra_paths)
         for var in SEARCH_PATH_VARIABLES:
             paths.extend(_split(env.get(var)))
+        paths.extend(exported_model_paths(env.get("AMENT_PREFIX_PATH") or ""))
         return paths
 
     def find_package(self, name: str) -> Path | None:
@@ -171,6 +174,65 @@ class ResourceResolver:
         """Whether ``path`` lies in one of :meth:`roots` (spawning by URI reads nothing else)."""
         path = path.resolve()
         return any(path == root or root in path.parents for root in self.roots())
+
+
+@functools.lru_cache(maxsize=8)
+def _exports(prefixes: str, stamp: tuple[float, ...]) -> tuple[Path, ...]:
+    out: list[Path] = []
+    for prefix in _split(prefixes):
+        index = prefix / "share" / "ament_index" / "resource_index" / "packages"
+        try:
+            names = sorted(p.name for p in index.iterdir())
+        except OSError:
+            continue
+        for name in names:
+            share = prefix / "share" / name
+            out.extend(_gazebo_model_paths(share))
+    return tuple(dict.fromkeys(out))
+
+
+def _gazebo_model_paths(share: Path) -> list[Path]:
+    """The ``<export><gazebo_ros gazebo_model_path="${prefix}/models"/>`` folders of the package at ``share``
+    (``${prefix}``: the package's share folder), those inside the package only."""
+    manifest = share / "package.xml"
+    try:
+        if not manifest.is_file() or manifest.stat().st_size > 1 << 20:
+            return []
+        data = manifest.read_bytes()
+        if b"gazebo_model_path" not in data:  # most packages: no XML parse
+            return []
+        from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
+
+        parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, huge_tree=False)
+        root = etree.fromstring(data, parser)
+    except (OSError, ValueError, etree.XMLSyntaxError):
+        return []
+    found = []
+    real_share = share.resolve()
+    for export in root.iterfind("export/gazebo_ros"):
+        raw = export.get("gazebo_model_path")
+        if not raw:
+            continue
+        for part in raw.split(os.pathsep):
+            folder = Path(part.replace("${prefix}", str(share))).resolve()
+            if (folder == real_share or real_share in folder.parents) and folder.is_dir():
+                found.append(folder)
+    return found
+
+
+def exported_model_paths(prefixes: str) -> tuple[Path, ...]:
+    """The model folders the ament index's packages export for Gazebo, as gazebo_ros adds them to
+    ``GAZEBO_MODEL_PATH`` (gazebo_ros/scripts/gazebo_ros_paths.py: every package's
+    ``<export><gazebo_ros gazebo_model_path=...>``, ``${prefix}`` its share folder). TurtleBot3's
+    turtlebot3_gazebo exports its ``models``, where ``model://turtlebot3_world`` lives. Cached until an
+    index folder changes."""
+    stamp = []
+    for prefix in _split(prefixes):
+        try:
+            stamp.append((prefix / "share" / "ament_index" / "resource_index" / "packages").stat().st_mtime)
+        except OSError:
+            stamp.append(0.0)
+    return _exports(prefixes, tuple(stamp))
 
 
 def _local_path(uri: str, base_dir: str | os.PathLike[str] | None) -> Path | None:
