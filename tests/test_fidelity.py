@@ -141,3 +141,20 @@ def test_models_a_package_exports_for_gazebo_are_found(tmp_path: Path) -> None:
     assert [m.name for m in load_string(world, resolver=resolver).value.models] == ["my_gazebo_world"]
     assert resolver.find_package("passwd") is None  # an export outside its package is not followed
     assert prefix / "share" / "my_gazebo" / "models" in [p for p in resolver.search_paths()]
+
+
+def test_a_package_is_found_by_the_name_in_its_package_xml(tmp_path: Path) -> None:
+    """Issue 27: GAZELLE_RESOURCE_PATH=<a moveit_resources clone> did not find
+    moveit_resources_panda_moveit_config, whose folder is panda_moveit_config."""
+    clone = tmp_path / "moveit_resources"
+    pkg = clone / "panda_moveit_config"
+    (pkg / "config").mkdir(parents=True)
+    (pkg / "package.xml").write_text("<package format='3'>\\n  <name>moveit_resources_panda_moveit_config</name>\\n</package>")
+    (pkg / "config" / "panda.srdf").write_text("<robot name='panda'/>")
+    (clone / ".git" / "deep").mkdir(parents=True)
+    (clone / ".git" / "deep" / "package.xml").write_text("<package><name>hidden</name></package>")
+    resolver = ResourceResolver(extra_paths=[clone], env={})
+    assert resolver.find_package("moveit_resources_panda_moveit_config") == pkg.resolve()
+    uri = "package://moveit_resources_panda_moveit_config/config/panda.srdf"
+    assert resolver.resolve_uri(uri) == (pkg / "config" / "panda.srdf").resolve()
+    assert resolver.find_package("hidden") is None

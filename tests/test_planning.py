@@ -413,3 +413,25 @@ def test_a_finger_a_hair_past_its_limit_does_not_refuse_an_arm_plan_and_a_bad_go
     with pytest.raises(PlanningError) as info:
         planner.plan("panda_arm", goal, start, timeout=5.0)
     assert info.value.code == "GOAL_STATE_INVALID" and "joint 'panda_joint4' at 0.5" in info.value.message
+
+
+def test_one_bad_tip_link_leaves_out_its_group_only():
+    """Issue 27: a chain tip the URDF lacks (panda_link9) made roboplan refuse the whole SRDF, and the
+    untouched hand group was reported as naming missing links."""
+    pytest.importorskip("roboplan")
+    import os
+
+    from gazelle.planning import ArmPlanner
+    from gazelle.ros._move_group import _read_description
+
+    srdf = (CONFIG / "panda.srdf").read_text().replace('tip_link="panda_link8"', 'tip_link="panda_link9"')
+    os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
+    try:
+        urdf = _read_description(str(CONFIG / "panda.urdf.xacro"))
+        planner = ArmPlanner(urdf, srdf, srdf_source="panda.srdf", seed=1)
+    finally:
+        os.environ.pop("GAZELLE_RESOURCE_PATH")
+    assert "hand" in planner.groups and "panda_arm" not in planner.groups
+    warnings = " ".join(planner.warnings)
+    assert "SRDF group 'panda_arm' names link 'panda_link9'" in warnings
+    assert "'hand' names" not in warnings

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import functools
 import os
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -82,9 +83,16 @@ class ResourceResolver:
         """The share folder of package (or model) ``name``, or None."""
         if not name or "/" in name or name in (".", ".."):
             return None
-        for folder in self.search_paths():
+        folders = self.search_paths()
+        for folder in folders:
             cand = folder / name
             if cand.is_dir() and _confined_folder(folder, cand):
+                return cand.resolve()
+        # ROS finds a package by the <name> in its package.xml, not its folder's name (a moveit_resources
+        # clone keeps moveit_resources_panda_moveit_config in panda_moveit_config/)
+        for folder in folders:
+            cand = packages_by_name(folder).get(name)
+            if cand is not None and _confined_folder(folder, cand):
                 return cand.resolve()
         env = self.env if self.env is not None else os.environ
         for prefix in _split(env.get("AMENT_PREFIX_PATH")):
@@ -217,6 +225,48 @@ def _gazebo_model_paths(share: Path) -> list[Path]:
             folder = Path(part.replace("${prefix}", str(share))).resolve()
             if (folder == real_share or real_share in folder.parents) and folder.is_dir():
                 found.append(folder)
+    return found
+
+
+PACKAGE_SCAN_DEPTH = 4
+"""How deep below a search-path folder package.xml files are looked for (a source tree's src/repo/pkg)."""
+PACKAGE_SCAN_FOLDERS = 5000
+"""The most folders one scan looks into."""
+_NAME = re.compile(rb"<name>\s*([A-Za-z0-9_]+)\s*</name>")
+
+
+def packages_by_name(folder: Path) -> dict[str, Path]:
+    """Package name -> folder, for every ``package.xml`` below ``folder`` (not below a package, as ROS's
+    crawl stops there; hidden folders skipped; at most :data:`PACKAGE_SCAN_DEPTH` deep and
+    :data:`PACKAGE_SCAN_FOLDERS` folders). Cached until the folder changes."""
+    try:
+        stamp = folder.stat().st_mtime
+    except OSError:
+        return {}
+    return _scan_packages(str(folder), stamp)
+
+
+@functools.lru_cache(maxsize=32)
+def _scan_packages(folder: str, _stamp: float) -> dict[str, Path]:
+    found: dict[str, Path] = {}
+    seen = 0
+    for root, dirs, files in os.walk(folder, followlinks=False):
+        seen += 1
+        depth = root[len(folder) :].count(os.sep)
+        if "package.xml" in files:
+            dirs[:] = []
+            try:
+                with open(os.path.join(root, "package.xml"), "rb") as f:
+                    head = f.read(1 << 16)
+            except OSError:
+                continue
+            m = _NAME.search(head)
+            if m is not None:
+                found.setdefault(m.group(1).decode(), Path(root))
+            continue
+        dirs[:] = [d for d in dirs if not d.startswith(".")] if depth < PACKAGE_SCAN_DEPTH else []
+        if seen >= PACKAGE_SCAN_FOLDERS:
+            break
     return found
 
 

@@ -182,10 +182,6 @@ class ArmPlanner:
     def _import_srdf(self, srdf: str, source: str, robot) -> set[str]:
         """Groups and disabled pairs into roboplan; a group naming links or joints the URDF lacks is a
         warning at the group's line in ``source``, naming them."""
-        try:
-            self.scene.importSrdf(srdf)
-        except Exception as err:  # roboplan refuses a group naming an unknown link or joint
-            self.warnings.append(f"the SRDF's groups could not all be used: {err}")
         links = {str(link.get("name")) for link in robot.iter("link")}
         joints = {str(joint.get("name")) for joint in robot.iter("joint")}
         lines = _element_lines(srdf, "group")
@@ -194,20 +190,37 @@ class ArmPlanner:
             named_links = [*group.links, *(end for chain in group.chains for end in (chain.base_link, chain.tip_link))]
             gaps = [f"link '{n}'" for n in dict.fromkeys(named_links) if n not in links]
             gaps += [f"joint '{n}'" for n in group.joints if n not in joints]
+            missing[group.name] = gaps
+        subgroups = {g.name: g.subgroups for g in self.semantics.groups}
+
+        def spread() -> None:  # a group of groups goes with any group it needs (in whatever order they come)
+            changed = True
+            while changed:
+                changed = False
+                for name, subs in subgroups.items():
+                    gaps = [
+                        f"group '{n}'" for n in subs if missing.get(n, ["?"]) and f"group '{n}'" not in missing[name]
+                    ]
+                    if gaps:
+                        missing[name] += gaps
+                        changed = True
+
+        spread()
+        # roboplan refuses the whole SRDF for one group naming an unknown link (a bad tip dropped every
+        # group, the untouched hand too): it is given the SRDF without the groups already known to be bad
+        bad = {name for name, gaps in missing.items() if gaps}
+        try:
+            self.scene.importSrdf(_without_groups(srdf, bad, links) if bad else srdf)
+        except Exception as err:
+            self.warnings.append(f"the SRDF's groups could not all be used: {err}")
+        for group in self.semantics.groups:
+            if missing[group.name]:
+                continue
             try:
                 self.scene.getJointGroupInfo(group.name)
             except Exception:
-                gaps = gaps or ["links or joints the robot does not have"]
-            missing[group.name] = gaps
-        subgroups = {g.name: g.subgroups for g in self.semantics.groups}
-        changed = True
-        while changed:  # a group of groups goes with any group it needs (in whatever order the SRDF has them)
-            changed = False
-            for name, subs in subgroups.items():
-                gaps = [f"group '{n}'" for n in subs if missing.get(n, ["?"]) and f"group '{n}'" not in missing[name]]
-                if gaps:
-                    missing[name] += gaps
-                    changed = True
+                missing[group.name] = ["links or joints the robot does not have"]
+        spread()
         for name, gaps in missing.items():
             if gaps:
                 where = f"{source}:{lines[name]}: " if name in lines else f"{source}: "
@@ -676,6 +689,23 @@ class ArmPlanner:
         config.joint_names = list(joints)
         config.positions = np.asarray(q_full, dtype=float)[self._group_index(joints)]
         return config
+
+
+def _without_groups(srdf: str, groups: set[str], links: set[str]) -> str:
+    """``srdf`` without the ``<group>`` elements named in ``groups`` and what refers to them (end effectors,
+    group states, passive joints stay), nor ``<disable_collisions>`` naming links the robot lacks."""
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, huge_tree=False)
+    root = etree.fromstring(srdf.encode(), parser)
+    for el in list(root):
+        tag = el.tag if isinstance(el.tag, str) else ""
+        if (
+            (tag == "group" and el.get("name") in groups)
+            or (tag == "group_state" and el.get("group") in groups)
+            or (tag == "end_effector" and (el.get("group") in groups or el.get("parent_group") in groups))
+            or (tag == "disable_collisions" and (el.get("link1") not in links or el.get("link2") not in links))
+        ):
+            root.remove(el)
+    return etree.tostring(root, encoding="unicode")
 
 
 def _urdf_geometry(shape: Shape) -> str | None:
