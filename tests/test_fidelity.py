@@ -149,7 +149,9 @@ def test_a_package_is_found_by_the_name_in_its_package_xml(tmp_path: Path) -> No
     clone = tmp_path / "moveit_resources"
     pkg = clone / "panda_moveit_config"
     (pkg / "config").mkdir(parents=True)
-    (pkg / "package.xml").write_text("<package format='3'>\\n  <name>moveit_resources_panda_moveit_config</name>\\n</package>")
+    (pkg / "package.xml").write_text(
+        "<package format='3'>\\n  <name>moveit_resources_panda_moveit_config</name>\\n</package>"
+    )
     (pkg / "config" / "panda.srdf").write_text("<robot name='panda'/>")
     (clone / ".git" / "deep").mkdir(parents=True)
     (clone / ".git" / "deep" / "package.xml").write_text("<package><name>hidden</name></package>")
