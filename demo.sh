@@ -5,6 +5,10 @@
 # Extra arguments go to `gazelle demo`, e.g. ./demo.sh --rtf 0
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-"$ROOT/scripts/setup.sh"
+# the browser is only for --snapshot and --record
+case " $* " in
+  *" --snapshot "* | *" --record "*) "$ROOT/scripts/setup.sh" ;;
+  *) GAZELLE_SETUP_NO_BROWSER=1 "$ROOT/scripts/setup.sh" ;;
+esac
 cd "$ROOT"
 exec "$ROOT/.venv/bin/gazelle" demo "$@"

@@ -6,7 +6,8 @@
 #
 #   scripts/build_interfaces.sh VENV_DIR
 #
-# Idempotent: a hash over everything under interfaces/, this script and the
+# A build is cached by content outside the clone (~/.cache/gazelle/interfaces, GAZELLE_CACHE_DIR): see
+# restore_from_cache below. Idempotent: a hash over everything under interfaces/, this script and the
 # versions of the wheel packages the build depends on is kept in
 # VENV_DIR/.gazelle_interfaces.sha256. When it matches and the packages import,
 # nothing is rebuilt. Build trees live in <repo>/build/interfaces/<pkg>;
@@ -86,9 +87,94 @@ EOF
 }
 
 HASH="$(compute_hash)"
+
+# The built packages are cached by content outside the clone, so a second clone or a new venv on the
+# same machine installs them in seconds: CACHE/<hash>/files.tar holds every file their `make install`
+# wrote (CMake's install_manifest.txt), relative to the venv; files.sha256 its checksum; prefix the venv
+# it was built in (two kinds of text file name it: rewritten to this venv on the way in). The folder is
+# owner-only; an entry that another user owns, that fails its checksum, or whose packages then do not
+# import, is reported and rebuilt, never trusted.
+CACHE_ROOT="${GAZELLE_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/gazelle}/interfaces"
+ENTRY="$CACHE_ROOT/$HASH-$(uname -m)"
+
+private_dir() {  # create $1 owner-only, or check that an existing one is ours and not writable by others
+  mkdir -p -m 700 "$1" 2>/dev/null || return 1
+  [[ "$(stat -c %u "$1")" == "$(id -u)" ]] || return 1
+  (( (8#$(stat -c %a "$1") & 8#022) == 0 )) || return 1
+}
+
+restore_from_cache() {
+  [[ -d "$ENTRY" ]] || return 1
+  local start=$SECONDS
+  if ! private_dir "$CACHE_ROOT" || [[ "$(stat -c %u "$ENTRY")" != "$(id -u)" ]]; then
+    echo "build_interfaces: cache $CACHE_ROOT belongs to another user or is writable by others; not used" >&2
+    return 1
+  fi
+  if ! [[ -f "$ENTRY/files.tar" && -f "$ENTRY/files.sha256" && -f "$ENTRY/prefix" ]] ||
+      [[ "$(sha256sum "$ENTRY/files.tar" | cut -d' ' -f1)" != "$(cat "$ENTRY/files.sha256")" ]]; then
+    echo "build_interfaces: cached build $ENTRY is incomplete or corrupt; rebuilding" >&2
+    rm -rf "$ENTRY"
+    return 1
+  fi
+  local old_prefix
+  old_prefix="$(cat "$ENTRY/prefix")"
+  if ! tar -xf "$ENTRY/files.tar" -C "$VENV_DIR" --no-same-owner 2>/dev/null; then
+    echo "build_interfaces: cached build $ENTRY does not unpack; rebuilding" >&2
+    rm -rf "$ENTRY"
+    return 1
+  fi
+  if [[ "$old_prefix" != "$VENV_DIR" ]]; then
+    tar -tf "$ENTRY/files.tar" | grep -E '(local_setup\.[a-z]+|Export\.cmake|\.dsv|\.sh)$' |
+      while read -r f; do
+        [[ -f "$VENV_DIR/$f" ]] && sed -i "s|$old_prefix|$VENV_DIR|g" "$VENV_DIR/$f"
+      done
+  fi
+  if ! imports_ok; then
+    echo "build_interfaces: cached build $ENTRY does not import here; rebuilding" >&2
+    rm -rf "$ENTRY"
+    return 1
+  fi
+  echo "interfaces installed from the cache ($ENTRY) in $((SECONDS - start))s"
+}
+
+save_to_cache() {
+  private_dir "$CACHE_ROOT" || { echo "build_interfaces: cannot use the cache $CACHE_ROOT; not saved" >&2; return 0; }
+  local tmp="$CACHE_ROOT/.tmp.$$"
+  rm -rf "$tmp"
+  mkdir -m 700 "$tmp"
+  local pkg
+  for pkg in "${PKGS[@]}"; do  # CMake writes the manifest without a final newline
+    { cat "$BUILD_ROOT/$pkg/install_manifest.txt"; echo; } | sed -n "s|^$VENV_DIR/||p"
+  done | LC_ALL=C sort -u >"$tmp/files.list"
+  if tar -cf "$tmp/files.tar" -C "$VENV_DIR" -T "$tmp/files.list" 2>/dev/null; then
+    sha256sum "$tmp/files.tar" | cut -d' ' -f1 >"$tmp/files.sha256"
+    echo "$VENV_DIR" >"$tmp/prefix"
+    rm -f "$tmp/files.list"
+    rm -rf "$ENTRY"
+    mv "$tmp" "$ENTRY" && echo "cached the interface build in $ENTRY"
+    # keep the three newest builds (each ~100 MB)
+    find "$CACHE_ROOT" -mindepth 1 -maxdepth 1 -type d ! -name '.tmp.*' -printf '%T@ %p\n' |
+      sort -rn | tail -n +4 | cut -d' ' -f2- | while read -r old; do rm -rf "$old"; done
+  else
+    rm -rf "$tmp"
+    echo "build_interfaces: could not cache the build" >&2
+  fi
+}
+
 if [[ -f "$STAMP" && "$(cat "$STAMP")" == "$HASH" ]] && imports_ok; then
   echo "interfaces up to date"
+  # built here before the cache existed: keep it for the next clone
+  if [[ ! -d "$ENTRY" && -f "$BUILD_ROOT/moveit_msgs/install_manifest.txt" ]]; then save_to_cache; fi
   exit 0
+fi
+
+if restore_from_cache; then
+  echo "$HASH" >"$STAMP"
+  exit 0
+fi
+if [[ -n "${GAZELLE_INTERFACES_NO_BUILD:-}" ]]; then  # the cache's own test: never build
+  echo "build_interfaces: no usable cached build at $ENTRY" >&2
+  exit 3
 fi
 
 # Build only against the venv, never against a sourced ROS installation.
@@ -134,3 +220,4 @@ if ! imports_ok; then
   exit 1
 fi
 echo "$HASH" >"$STAMP"
+save_to_cache

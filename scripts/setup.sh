@@ -7,6 +7,10 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 VENV="$ROOT/.venv"
 say() { printf '[setup] %s\n' "$*"; }
+# `./demo.sh` without --snapshot/--record needs no browser: GAZELLE_SETUP_NO_BROWSER=1 skips chromium
+SETUP_START=$SECONDS
+step_start=$SECONDS
+took() { say "$1 took $((SECONDS - step_start)) s"; step_start=$SECONDS; }
 
 # 1. Debian packages: a C/C++ toolchain and CMake build our interface packages.
 missing=()
@@ -14,7 +18,7 @@ command -v cmake >/dev/null || missing+=(cmake)
 command -v g++ >/dev/null || missing+=(g++)
 command -v make >/dev/null || missing+=(make)
 # the viewer's browser tests and `gazelle snapshot` use Debian's chromium (Playwright never downloads one)
-[[ -x /usr/bin/chromium ]] || missing+=(chromium)
+[[ -x /usr/bin/chromium || -n "${GAZELLE_SETUP_NO_BROWSER:-}" ]] || missing+=(chromium)
 # cameras render offscreen with MuJoCo through EGL on Mesa (llvmpipe on a CPU; a GPU driver where present)
 if ! compgen -G "/usr/lib/*/libEGL.so.1" >/dev/null || ! compgen -G "/usr/lib/*/libEGL_mesa.so.0" >/dev/null; then
   missing+=(libegl1 libegl-mesa0 libgl1-mesa-dri)
@@ -24,6 +28,7 @@ if ((${#missing[@]})); then
   say "installing Debian packages: ${missing[*]}"
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
+  took "Debian packages"
 fi
 
 # 2. The virtualenv, with a Python >= 3.11.
@@ -59,11 +64,14 @@ if [[ ! -f "$stamp" || "$(cat "$stamp")" != "$want" ]]; then
   pip_install -r "$ROOT/requirements.txt"
   pip_install --no-deps --no-build-isolation -e "$ROOT"
   echo "$want" > "$stamp"
+  took "the wheels"
 fi
 
 # 4. Our interface packages (tf2_msgs, simulation_interfaces, gazebo_msgs, control_msgs,
 #    controller_manager_msgs), rebuilt only on change.
+step_start=$SECONDS
 "$ROOT/scripts/build_interfaces.sh" "$VENV"
+took "the interface packages"
 
 # 5. The venv is a ROS prefix: gazelle's stand-ins for gazebo_ros, robot_state_publisher,
 #    controller_manager and xacro in its ament index, and AMENT_PREFIX_PATH set by `activate`
@@ -78,3 +86,4 @@ case ":${AMENT_PREFIX_PATH:-}:" in
 esac
 ACTIVATE
 fi
+say "ready in $((SECONDS - SETUP_START)) s"
