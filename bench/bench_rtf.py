@@ -128,7 +128,14 @@ def main() -> int:
         "-n", "--steps", type=int, default=20000, help="steps per in-process measurement (default 20000)"
     )
     parser.add_argument("--seconds", type=float, default=4.0, help="wall seconds per threaded measurement (default 4)")
+    parser.add_argument(
+        "--smoke",
+        action="store_true",
+        help="the same code path at tiny sizes (./test.sh runs it: the bench cannot rot)",
+    )
     opts = parser.parse_args()
+    if opts.smoke:
+        opts.steps, opts.seconds = 300, 0.3
     logging.disable(logging.CRITICAL)
     t_all = time.perf_counter()
     import mujoco
@@ -172,7 +179,7 @@ def main() -> int:
 
     bridge = RosBridge(sim, clock_rate_hz=CLOCK_HZ)
     node = bridge.node
-    clock_pub = node._clock_pub
+    clock_pub = node.clock_publisher
     subs_free = clock_pub.get_subscription_count()
     s, n, w = best_threaded(sim, opts.seconds)
     rows.append(
@@ -185,7 +192,7 @@ def main() -> int:
     with_ros = rows[-1][1]
 
     # --- a plain rclpy process on /odom and /tf (not /clock): every message is built and sent
-    odom_tf = [node._pubs[(t, k)].handle for (t, k) in node._pubs if t in ("/odom", "/tf")]
+    odom_tf = node.ros_publishers("/odom") + node.ros_publishers("/tf")
     box = node.outbox
     p0, d0 = box.published, box.dropped
     rate, note = with_listener("/odom,/tf", odom_tf, sim, opts.seconds)

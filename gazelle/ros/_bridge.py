@@ -263,6 +263,17 @@ class SimulationNode(Node):
         self.publish_clock(sim.world.time)
 
     # ------------------------------------------------------------------ clock
+
+    @property
+    def clock_publisher(self) -> Any:
+        """The rclpy publisher of ``/clock`` (benches and tools count its subscribers)."""
+        return self._clock_pub
+
+    def ros_publishers(self, topic: str) -> list[Any]:
+        """The rclpy publishers this bridge has on ``topic`` (one per message type and QoS)."""
+        with self._lock:
+            return [entry.handle for key, entry in self._pubs.items() if key[0] == topic]
+
     def publish_clock(self, sim_time: float) -> None:
         """Publish ``sim_time`` on /clock, at once, from the calling thread.
 
