@@ -166,7 +166,13 @@ def _parameters(node: Any, names: list[str], timeout: float) -> list[str]:
     rclpy.spin_until_future_complete(node, future, timeout_sec=timeout)
     if not future.done() or future.result() is None:
         raise ArmError("move_group did not say its parameters")
-    return [v.string_value for v in future.result().values]
+    values = [v.string_value for v in future.result().values]
+    if len(values) != len(names):  # a move_group with no robot yet leaves them out
+        raise ArmError(
+            f"move_group has no robot yet (its parameters {', '.join(names)} are not set): give it the robot's "
+            "URDF and SRDF (--urdf/--srdf, or robot_description and robot_description_semantic)"
+        )
+    return values
 
 
 def _run(node: Any, args: argparse.Namespace) -> int:

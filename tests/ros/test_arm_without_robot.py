@@ -1,0 +1,25 @@
+"""Issue 27: `gazelle arm` against a move_group that has no robot yet said `ValueError: not enough values
+to unpack` with a traceback; it is one line naming what is missing, and the exit status says it failed."""
+
+from __future__ import annotations
+
+import subprocess
+
+from .conftest import GAZELLE, start
+
+
+def test_gazelle_arm_against_a_move_group_without_a_robot_is_one_clear_line() -> None:
+    move_group = start([*GAZELLE, "move_group"], "move_group")
+    try:
+        out = subprocess.run(
+            [*GAZELLE, "arm", "panda_arm", "--named", "ready", "--timeout", "20"],
+            capture_output=True,
+            text=True,
+            timeout=120,
+        )
+        text = out.stdout + out.stderr
+        assert out.returncode != 0, text
+        assert "Traceback" not in text and "not enough values" not in text, text
+        assert "move_group has no robot yet" in text, text
+    finally:
+        assert move_group.interrupt() == 0, move_group.output
