@@ -160,3 +160,26 @@ def test_a_package_is_found_by_the_name_in_its_package_xml(tmp_path: Path) -> No
     uri = "package://moveit_resources_panda_moveit_config/config/panda.srdf"
     assert resolver.resolve_uri(uri) == (pkg / "config" / "panda.srdf").resolve()
     assert resolver.find_package("hidden") is None
+
+
+def test_a_joint_whose_limits_are_equal_is_held_there_not_refused() -> None:
+    """gz-sim's nested_model_joint_positions and tracked_vehicle_simple have joints with lower == upper;
+    Gazebo loads them (the joint cannot move), MuJoCo's compiler refused them."""
+    inertial = (
+        '<inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>'
+    )
+    urdf = (
+        f'<robot name="r"><link name="a">{inertial}</link><link name="b">{inertial}'
+        '<collision><origin xyz="0.2 0 0"/><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>'
+        '<joint name="j" type="revolute"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/>'
+        '<limit lower="0.3" upper="0.3" effort="1" velocity="1"/></joint></robot>'
+    )
+    from gazelle.worlds import default_world
+
+    sim = Simulation(default_world(), rtf=0)
+    try:
+        sim.spawn(load_string(urdf).value, name="r", pose=Pose((0.0, 0.0, 2.0)))
+        sim.step(300)
+        assert sim.world.joint("r", "j").position == pytest.approx(0.3, abs=1e-3)
+    finally:
+        sim.stop()

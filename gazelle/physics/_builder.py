@@ -79,6 +79,8 @@ JOINT_ARMATURE = 1e-4
 MAX_TREE_DEPTH = 1000
 """Deepest link tree the builder accepts: MuJoCo's compiler refuses bodies nested deeper than ~1,020
 ("depth limit exceeded in signature computation"); we say so up front, naming the link."""
+EQUAL_LIMITS_SLACK = 1e-6
+"""rad (m) each way around a joint whose lower and upper limits are equal (see ``_add_joint_dofs``)."""
 KINEMATIC_ARMATURE = 1e8
 """Armature of the dofs above a kinematic link (kg·m² or kg): contacts see an immovable obstacle."""
 
@@ -394,7 +396,14 @@ def _add_joint_dofs(spec: mujoco.MjSpec, body: mujoco.MjsBody, joint: Joint, nam
             and limit.upper >= limit.lower
         ):
             j.limited = mujoco.mjtLimited.mjLIMITED_TRUE
-            j.range = [limit.lower, limit.upper]  # pyright: ignore[reportAttributeAccessIssue]
+            lo, hi = limit.lower, limit.upper
+            if hi - lo < 2 * EQUAL_LIMITS_SLACK:
+                # lower == upper: a joint that cannot move, which Gazebo accepts (gz-sim's example worlds
+                # nested_model_joint_positions and tracked_vehicle_simple have them); MuJoCo's compiler
+                # refuses an empty range, so the range is opened by a micro-radian (micrometre) each way
+                mid = (lo + hi) / 2
+                lo, hi = mid - EQUAL_LIMITS_SLACK, mid + EQUAL_LIMITS_SLACK
+            j.range = [lo, hi]  # pyright: ignore[reportAttributeAccessIssue]
         else:
             j.limited = mujoco.mjtLimited.mjLIMITED_FALSE
         if dyn is not None:
