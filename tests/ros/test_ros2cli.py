@@ -39,6 +39,8 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
         {
             "topic list": ("topic", "list", "-t"),
             "echo": ("topic", "echo", "/odom", "--once"),
+            "echo full": ("topic", "echo", "/odom", "--once", "-l", "5", "--full-length"),
+            "echo short": ("topic", "echo", "/odom", "--once", "-l", "5"),
             "echo sensor_data": (
                 "topic",
                 "echo",
@@ -82,6 +84,10 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
     first = yaml.safe_load(r["echo"].stdout.split("---")[0])
     assert first["header"]["frame_id"] == "odom" and first["child_frame_id"] == "base_link"
     assert len(first["pose"]["covariance"]) == 36
+    # --full-length / -f (issue 26: it was rejected) prints arrays whole whatever -l says
+    assert r["echo full"].returncode == 0, r["echo full"].stderr
+    assert len(yaml.safe_load(r["echo full"].stdout.split("---")[0])["pose"]["covariance"]) == 36
+    assert yaml.safe_load(r["echo short"].stdout.split("---")[0])["pose"]["covariance"][-1] == "..."
     best_effort = r["echo sensor_data"]
     assert best_effort.stdout.split("---")[0].strip() == "base_link", best_effort.stdout + best_effort.stderr
     assert "average rate:" in r["hz clock"].stdout

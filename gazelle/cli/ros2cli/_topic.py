@@ -41,6 +41,9 @@ def main(argv: list[str]) -> int:
     echo.add_argument("--csv", action="store_true")
     echo.add_argument("--flow-style", action="store_true")
     echo.add_argument("--truncate-length", "-l", type=int, default=128)
+    echo.add_argument(
+        "--full-length", "-f", action="store_true", help="output arrays, bytes and strings whole (ros2cli's flag)"
+    )
     echo.add_argument("--timeout", type=float, default=None)
     echo.add_argument("--qos-reliability", choices=["reliable", "best_effort", "system_default"], default=None)
     echo.add_argument("--qos-durability", choices=["transient_local", "volatile", "system_default"], default=None)
@@ -155,7 +158,8 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
             if args.csv:
                 print(to_csv(msg) if hasattr(msg, "get_fields_and_field_types") else str(msg))
             elif hasattr(msg, "get_fields_and_field_types"):
-                text = to_yaml(msg, truncate=args.truncate_length, no_arr=args.no_arr, no_str=args.no_str)
+                truncate = None if args.full_length else args.truncate_length
+                text = to_yaml(msg, truncate=truncate, no_arr=args.no_arr, no_str=args.no_str)
                 print(text + "---", flush=True)
             else:
                 print(f"{msg}\n---", flush=True)
