@@ -48,6 +48,71 @@ def repair_cmake_exports(venv: Path) -> None:
             export.write_text(fixed)
 
 
+CONFIGURE_ONLY = (
+    "urdf",
+    "xacro",
+    "gazebo_ros",
+    "gazebo_dev",
+    "gazebo_plugins",
+    "robot_state_publisher",
+    "joint_state_publisher",
+    "controller_manager",
+    "ros_gz_sim",
+    "ros_gz_bridge",
+    "gz_ros2_control",
+    "gazebo_ros2_control",
+)
+"""Packages that description, launch and world packages name in ``find_package`` (and package.xml) but only
+use at run time, which gazelle stands in for: each gets a CMake config that finds nothing to link, so
+``colcon build`` of turtlebot3_description, husky_description or articubot_one configures unchanged."""
+
+STANDIN_CONFIG = """# gazelle's stand-in (scripts/install_ros_packages.py): {pkg} is provided at run time by gazelle;
+# there is nothing to compile or link against. A target that links it gets no flags.
+set({pkg}_FOUND TRUE)
+set({pkg}_VERSION "0.0.0-gazelle")
+set({pkg}_INCLUDE_DIRS "")
+set({pkg}_LIBRARIES "")
+set({pkg}_LIBRARY_DIRS "")
+set({pkg}_DEFINITIONS "")
+set({pkg}_TARGETS "")
+set({pkg}_INTERFACES "")
+"""
+
+LINT_AUTO_CONFIG = """# gazelle's stand-in (scripts/install_ros_packages.py) for ament_lint_auto, which the default
+# `ros2 pkg create` template finds under BUILD_TESTING: the linters are not installed, so
+# ament_lint_auto_find_test_dependencies() registers none, and says so once.
+set(ament_lint_auto_FOUND TRUE)
+set(ament_lint_common_FOUND TRUE)
+macro(ament_lint_auto_find_test_dependencies)
+  message(STATUS "gazelle: ament_lint_auto's linters are not installed; ${PROJECT_NAME}'s lint tests are skipped")
+endmacro()
+"""
+
+
+def install_cmake_standins(venv: Path) -> None:
+    """CMake configs for :data:`CONFIGURE_ONLY` and ament_lint_auto/ament_lint_common, where the venv has
+    no real package of that name (a real one, without gazelle's marker, is left alone)."""
+    configs = {pkg: STANDIN_CONFIG.format(pkg=pkg) for pkg in CONFIGURE_ONLY}
+    configs["ament_lint_auto"] = LINT_AUTO_CONFIG
+    configs["ament_lint_common"] = "set(ament_lint_common_FOUND TRUE)\n"
+    for pkg, text in configs.items():
+        share = venv / "share" / pkg
+        cmake = share / "cmake" / f"{pkg}Config.cmake"
+        if share.exists() and not (share / MARKER).exists():
+            continue  # a real package
+        cmake.parent.mkdir(parents=True, exist_ok=True)
+        (share / MARKER).write_text("installed by gazelle's scripts/install_ros_packages.py\n")
+        cmake.write_text(text)
+        if not (share / "package.xml").exists():
+            (share / "package.xml").write_text(
+                f'<?xml version="1.0"?>\n<package format="3"><name>{pkg}</name><version>0.0.0</version>'
+                "<description>gazelle's stand-in</description><maintainer email='none@example.com'>gazelle"
+                "</maintainer><license>Apache-2.0</license><export><build_type>ament_cmake</build_type></export>"
+                "</package>\n"
+            )
+        # not in the ament index: a launch file looking the package up at run time finds what it found before
+
+
 def install_python_modules(venv: Path) -> None:
     """compat/python/* (gazebo_ros's GazeboRosPaths) into the venv's site-packages, marked as ours."""
     import sysconfig
@@ -98,6 +163,7 @@ def main() -> int:
                 dest.write_text(exe.read_text().replace("@PYTHON@", str(python)))
                 dest.chmod(0o755)
         (index / pkg.name).write_text("")
+    install_cmake_standins(venv)
     install_python_modules(venv)
     repair_cmake_exports(venv)
     # colcon chains workspaces over prefixes with a local_setup file; the venv is one
