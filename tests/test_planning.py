@@ -435,3 +435,23 @@ def test_one_bad_tip_link_leaves_out_its_group_only():
     warnings = " ".join(planner.warnings)
     assert "SRDF group 'panda_arm' names link 'panda_link9'" in warnings
     assert "'hand' names" not in warnings
+
+
+def test_a_state_in_collision_names_the_bodies_that_collide(planner):
+    """Issue 27: check_state_validity's contacts were empty and START/GOAL_IN_COLLISION named no pair."""
+    from gazelle.planning import PlanningError, SceneObject, Shape
+
+    inside = planner.state(IN_SELF_COLLISION)
+    pairs = planner.colliding_pairs(inside)
+    assert ("panda_link1", "panda_hand") in pairs or ("panda_hand", "panda_link1") in pairs, pairs
+    assert planner.colliding_pairs(planner.state(READY)) == []
+    ready = planner.state(READY)
+    hand = planner.fk(ready, "panda_hand")
+    try:
+        planner.add_object(SceneObject("crate", (Shape("box", (0.3, 0.3, 0.3), np.eye(4)),), hand))
+        with pytest.raises(PlanningError) as info:
+            planner.plan("panda_arm", ready, planner.state({**READY, "panda_joint1": 0.5}), timeout=2.0)
+        assert info.value.code in ("START_STATE_IN_COLLISION", "GOAL_IN_COLLISION")
+        assert "with crate" in info.value.message, info.value.message
+    finally:
+        planner.remove_object("crate")

@@ -11,6 +11,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import os
+import re
 import tempfile
 import time
 from collections.abc import Callable, Mapping, Sequence
@@ -23,6 +24,20 @@ from ..description import ModelLoadError, ResourceResolver, Semantics, Severity,
 
 DEFAULT_ACCELERATION = 1.0
 """rad/s² (m/s²) for a joint whose limits give no acceleration, as MoveIt's time parameterisation assumes."""
+
+
+_COLLISION_LINE = re.compile(r"Collision detected between (\S+) and (\S+)")
+"""roboplan's debug line for a colliding pair of geometries."""
+
+
+def _body_of(geometry: str) -> str:
+    """The body a roboplan geometry belongs to: a link's ``<link>_<n>``, an object's ``<name>#<n>``, an
+    attached object's ``__attached_<k>_<n>``."""
+    for sep in ("#", "_"):
+        head, found, tail = geometry.rpartition(sep)
+        if found and tail.isdigit() and head:
+            return head
+    return geometry
 
 
 START_BOUNDS_ERROR = 0.05
@@ -349,6 +364,49 @@ class ArmPlanner:
     def in_collision(self, q: np.ndarray) -> bool:
         return bool(self.scene.hasCollisions(np.asarray(q, dtype=float)))
 
+    def named_pairs(self, q: np.ndarray, shown: int = 3) -> str:
+        """``": a-b, c-d (and N more)"`` naming what collides at ``q``, for an error message."""
+        pairs = self.colliding_pairs(q)
+        if not pairs:
+            return ""
+        more = f" (and {len(pairs) - shown} more)" if len(pairs) > shown else ""
+        return ": " + ", ".join(f"{a} with {b}" for a, b in pairs[:shown]) + more
+
+    def colliding_pairs(self, q: np.ndarray, most: int = 50) -> list[tuple[str, str]]:
+        """The pairs of bodies (links, world objects, attached objects) in collision at ``q``, at most
+        ``most``: what MoveIt's check_state_validity reports as ``contacts`` and its errors name.
+
+        roboplan says which geometries collide only in its debug print to the process's stdout, so the
+        check runs once more with fd 1 sent to a temporary file (a file, not a pipe, which a long report
+        would fill and block), read back and parsed. Call it under the planner's lock."""
+        import ctypes
+
+        libc = ctypes.CDLL(None)
+        with tempfile.TemporaryFile() as out:
+            libc.fflush(None)
+            saved = os.dup(1)
+            try:
+                os.dup2(out.fileno(), 1)
+                self.scene.hasCollisions(np.asarray(q, dtype=float), True)
+                libc.fflush(None)
+            finally:
+                os.dup2(saved, 1)
+                os.close(saved)
+            out.seek(0)
+            text = out.read(1 << 20).decode("utf-8", "replace")
+        held = {
+            link: obj.name for link, obj in zip(self._attached_links, (o for o, _ in self._objects.values() if o.link))
+        }
+        pairs: list[tuple[str, str]] = []
+        for m in _COLLISION_LINE.finditer(text):
+            a, b = _body_of(m.group(1)), _body_of(m.group(2))
+            pair = (held.get(a, a), held.get(b, b))
+            if pair not in pairs:
+                pairs.append(pair)
+            if len(pairs) >= most:
+                break
+        return pairs
+
     def within_limits(self, q: np.ndarray) -> bool:
         return bool(self.scene.isValidConfiguration(np.asarray(q, dtype=float)))
 
@@ -568,9 +626,9 @@ class ArmPlanner:
         if outside is not None:
             raise PlanningError("GOAL_STATE_INVALID", f"the goal lies outside the joints' limits: {outside}")
         if self.in_collision(q1):
-            raise PlanningError("GOAL_IN_COLLISION", "the goal state is in collision")
+            raise PlanningError("GOAL_IN_COLLISION", f"the goal state is in collision{self.named_pairs(q1)}")
         if self.in_collision(q0):
-            raise PlanningError("START_STATE_IN_COLLISION", "the start state is in collision")
+            raise PlanningError("START_STATE_IN_COLLISION", f"the start state is in collision{self.named_pairs(q0)}")
         opts = self._rrt.RRTOptions()
         opts.group_name = group
         opts.rrt_connect = True

@@ -34,6 +34,7 @@ from moveit_msgs.action import ExecuteTrajectory, MoveGroup
 from moveit_msgs.msg import (
     AttachedCollisionObject,
     CollisionObject,
+    ContactInformation,
     DisplayTrajectory,
     MoveItErrorCodes,
     PlanningScene,
@@ -427,8 +428,25 @@ class MoveGroupNode(Node):
     def _check_state_validity(self, req: GetStateValidity.Request, res: GetStateValidity.Response) -> Any:
         assert self.planner is not None
         q = self._start_state(req.robot_state)
-        res.valid = self.planner.within_limits(q) and not self.planner.in_collision(q)
+        colliding = self.planner.in_collision(q)
+        res.valid = self.planner.within_limits(q) and not colliding
+        if colliding:  # as MoveIt: the pairs in contact (gazelle knows the bodies, not the points)
+            res.contacts = [self._contact(a, b) for a, b in self.planner.colliding_pairs(q)]
         return res
+
+    def _contact(self, a: str, b: str) -> ContactInformation:
+        planner = self.planner
+        assert planner is not None
+        attached = {o.name for o in planner.objects() if o.link}
+
+        def kind(body: str) -> int:
+            if planner.has_link(body):
+                return ContactInformation.ROBOT_LINK
+            return ContactInformation.ROBOT_ATTACHED if body in attached else ContactInformation.WORLD_OBJECT
+
+        info = ContactInformation(contact_body_1=a, body_type_1=kind(a), contact_body_2=b, body_type_2=kind(b))
+        info.header.frame_id = planner.root_link
+        return info
 
     def _plan_kinematic_path(self, req: GetMotionPlan.Request, res: GetMotionPlan.Response) -> Any:
         t0 = time.monotonic()

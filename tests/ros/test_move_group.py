@@ -518,6 +518,12 @@ def test_an_object_applied_to_the_planning_scene_is_listed_planned_around_and_re
 
     reaching_down = {**ready, "panda_joint2": 0.1, "panda_joint4": -2.3}  # the hand in the crate
     assert valid(ready) and not valid(reaching_down)
+    # the contacts name the bodies, as MoveIt's do (issue 27: they were empty)
+    req = GetStateValidity.Request(group_name="panda_arm")
+    req.robot_state.joint_state.name = list(reaching_down)
+    req.robot_state.joint_state.position = [float(v) for v in reaching_down.values()]
+    contacts = panda.ros.call(GetStateValidity, "/check_state_validity", req).contacts
+    assert any("crate" in (c.contact_body_1, c.contact_body_2) for c in contacts), contacts
     goal = panda.joint_goal(reaching_down)
     result = panda.action(panda.move, goal)
     assert result.error_code.val == MoveItErrorCodes.GOAL_IN_COLLISION
