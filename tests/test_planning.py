@@ -34,6 +34,21 @@ def planner():
         os.environ.pop("GAZELLE_RESOURCE_PATH")
 
 
+def _panda_with(srdf: str):
+    """An ArmPlanner of MoveIt's Panda URDF with the SRDF text given (its meshes from the resource roots)."""
+    import os
+
+    from gazelle.planning import ArmPlanner
+    from gazelle.ros._move_group import _read_description
+
+    os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
+    try:
+        urdf = _read_description(str(CONFIG / "panda.urdf.xacro"))
+        return ArmPlanner(urdf, srdf, srdf_source="panda.srdf", seed=1)
+    finally:
+        os.environ.pop("GAZELLE_RESOURCE_PATH")
+
+
 def test_the_srdf_groups_named_states_and_tip_come_from_the_file(planner):
     assert planner.groups == ["panda_arm", "hand", "panda_arm_hand"]
     assert planner.group_joints("panda_arm") == ARM
@@ -47,10 +62,6 @@ def test_srdf_groups_and_end_effectors_naming_what_the_urdf_lacks_are_warnings_a
     """A config written for another robot (or a misspelled link): the group is left out, with a warning
     naming the file, the group's line and the missing link and joint; the other groups stay."""
     pytest.importorskip("roboplan")
-    import os
-
-    from gazelle.planning import ArmPlanner
-    from gazelle.ros._move_group import _read_description
 
     srdf = (CONFIG / "panda.srdf").read_text()
     extra = '<group name="gripper2"><link name="no_such_finger"/><joint name="no_such_joint"/></group>'
@@ -60,12 +71,7 @@ def test_srdf_groups_and_end_effectors_naming_what_the_urdf_lacks_are_warnings_a
     ee = '<end_effector name="ghost_hand" parent_link="panda_link8" group="ghost"/>'
     srdf = srdf.replace("</robot>", f"\n{extra}\n{both}\n{ee}\n</robot>")
     line = srdf.splitlines().index(extra) + 1
-    os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
-    try:
-        urdf = _read_description(str(CONFIG / "panda.urdf.xacro"))
-        planner = ArmPlanner(urdf, srdf, srdf_source="panda.srdf", seed=1)
-    finally:
-        os.environ.pop("GAZELLE_RESOURCE_PATH")
+    planner = _panda_with(srdf)
     assert planner.groups == ["panda_arm", "hand", "panda_arm_hand"]
     warning = next(w for w in planner.warnings if "gripper2" in w)
     assert warning.startswith(f"panda.srdf:{line}: "), warning
@@ -419,18 +425,9 @@ def test_one_bad_tip_link_leaves_out_its_group_only():
     """Issue 27: a chain tip the URDF lacks (panda_link9) made roboplan refuse the whole SRDF, and the
     untouched hand group was reported as naming missing links."""
     pytest.importorskip("roboplan")
-    import os
-
-    from gazelle.planning import ArmPlanner
-    from gazelle.ros._move_group import _read_description
 
     srdf = (CONFIG / "panda.srdf").read_text().replace('tip_link="panda_link8"', 'tip_link="panda_link9"')
-    os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
-    try:
-        urdf = _read_description(str(CONFIG / "panda.urdf.xacro"))
-        planner = ArmPlanner(urdf, srdf, srdf_source="panda.srdf", seed=1)
-    finally:
-        os.environ.pop("GAZELLE_RESOURCE_PATH")
+    planner = _panda_with(srdf)
     assert "hand" in planner.groups and "panda_arm" not in planner.groups
     warnings = " ".join(planner.warnings)
     assert "SRDF group 'panda_arm' names link 'panda_link9'" in warnings
