@@ -31,6 +31,12 @@ def _entry(tar_bytes: bytes, prefix: str) -> dict[str, bytes]:
     }
 
 
+def _write(entry: Path, files: dict[str, bytes]) -> None:
+    entry.mkdir(mode=0o700, parents=True, exist_ok=True)
+    for name, content in files.items():
+        (entry / name).write_bytes(content)
+
+
 def test_a_cached_build_installs_and_a_corrupt_one_is_rebuilt_not_used(tmp_path: Path) -> None:
     venv = tmp_path / "venv"
     (venv / "bin").mkdir(parents=True)
@@ -50,9 +56,7 @@ def test_a_cached_build_installs_and_a_corrupt_one_is_rebuilt_not_used(tmp_path:
         info.size = len(data)
         tar.addfile(info, io.BytesIO(data))
     good = _entry(buf.getvalue(), "/old/venv")
-    entry.mkdir(mode=0o700, parents=True)
-    for name, content in good.items():
-        (entry / name).write_bytes(content)
+    _write(entry, good)
     ok = _run(venv, cache)
     assert ok.returncode == 0, ok.stderr
     assert "installed from the cache" in ok.stdout
@@ -60,9 +64,7 @@ def test_a_cached_build_installs_and_a_corrupt_one_is_rebuilt_not_used(tmp_path:
 
     for broken in ({**good, "files.tar": good["files.tar"][:700]}, {**good, "files.sha256": b"0" * 64 + b"\n"}):
         (venv / ".gazelle_interfaces.sha256").unlink(missing_ok=True)
-        entry.mkdir(mode=0o700, exist_ok=True)
-        for name, content in broken.items():
-            (entry / name).write_bytes(content)
+        _write(entry, broken)
         bad = _run(venv, cache)
         assert bad.returncode == 3, bad.stdout
         assert "incomplete or corrupt; rebuilding" in bad.stderr
