@@ -138,7 +138,7 @@ class ControllerManagerNode(Node):
         values = [(n, v) for n, v in given.items() if not n.endswith(PARAMS_FILE_YAML)]
         for n, v in given.items():  # rclpy sets a request's parameters one at a time: kept for the next
             if n.endswith(PARAMS_FILE_YAML):
-                if len(self._texts) >= 1000 and n not in self._texts:
+                if len(self._texts) >= 64 and n not in self._texts:
                     return SetParametersResult(successful=False, reason="too many parameters file texts")
                 self._texts[n] = v
         # a <ctrl>.params_file is read here, on the ROS thread, confined and bounded: a FIFO, a device or a
