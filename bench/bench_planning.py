@@ -35,7 +35,10 @@ os.environ["ROS_DOMAIN_ID"] = str(os.environ.get("GAZELLE_BENCH_DOMAIN_ID") or (
 os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
 
 REPO = Path(__file__).resolve().parent.parent
-PANDA = REPO.parent / "shared" / "fixtures" / "real" / "moveit_panda"
+sys.path.insert(0, str(REPO / "tests"))
+from _paths import REAL  # noqa: E402 - the shared fixtures as the tests find them
+
+PANDA = REAL / "moveit_panda"
 os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
 CONFIG = PANDA / "moveit_resources_panda_moveit_config" / "config"
 ON_TABLE = REPO / "examples" / "arms" / "panda_on_table.urdf.xacro"

@@ -34,7 +34,9 @@ import numpy as np
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
-FIXTURES = Path(os.environ.get("GAZELLE_REAL_FIXTURES", REPO.parent / "shared" / "fixtures" / "real"))
+sys.path.insert(0, str(REPO / "tests"))
+from _paths import REAL as FIXTURES  # noqa: E402 - the shared fixtures as the tests find them
+
 TB3 = FIXTURES / "turtlebot3" / "turtlebot3_gazebo" / "models" / "turtlebot3_burger" / "model.sdf"
 
 

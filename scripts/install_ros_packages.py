@@ -26,12 +26,6 @@ ROOT = Path(__file__).resolve().parents[1]
 MARKER = ".gazelle-compat"
 
 
-WHEEL_PYTHON_INCLUDE = "/opt/python/cp311-cp311/include/python3.11"
-"""Where the machine that built the ROS wheels had Python's headers: their CMake exports name it."""
-WHEEL_NUMPY_INCLUDE = "/opt/python/cp311-cp311/lib/python3.11/site-packages/numpy/_core/include"
-"""And numpy's headers there."""
-
-
 def repair_cmake_exports(venv: Path) -> None:
     """Point the wheels' exported ``*__rosidl_generator_py`` CMake targets at this Python's headers, so
     that ``colcon build`` of a user's interface package (ament_cmake + rosidl) configures; the wheels
@@ -41,11 +35,21 @@ def repair_cmake_exports(venv: Path) -> None:
     code = "import sysconfig, numpy; print(sysconfig.get_paths()['include']); print(numpy.get_include())"
     out = subprocess.run([str(venv / "bin" / "python"), "-c", code], capture_output=True, text=True, check=True)
     include, numpy_include = out.stdout.split()
+    import re
+
+    # whatever folder a file names (the wheel builder's, or another venv's after an earlier repair of a
+    # shared copy), it is pointed at this venv's headers
+    python_dir = re.compile(r"[^\";]*/include/python3\.\d+")
+    numpy_dir = re.compile(r"[^\";]*/numpy/_core/include")
     for export in (venv / "share").glob("*/cmake/*__rosidl_generator_pyExport.cmake"):
         text = export.read_text()
-        fixed = text.replace(WHEEL_PYTHON_INCLUDE, include).replace(WHEEL_NUMPY_INCLUDE, numpy_include)
+        fixed = numpy_dir.sub(numpy_include, python_dir.sub(include, text))
         if fixed != text:
-            export.write_text(fixed)
+            # a new file, never written in place: an installer may have hard-linked the wheel's file to
+            # its cache (uv does), and an in-place write would change every later venv's copy
+            tmp = export.with_name(export.name + ".gazelle-tmp")
+            tmp.write_text(fixed)
+            tmp.replace(export)
 
 
 CONFIGURE_ONLY = (

@@ -67,7 +67,9 @@ if [[ ! -f "$stamp" || "$(cat "$stamp")" != "$want" ]]; then
   if [[ ! -x "$VENV/bin/uv" ]]; then pip_install "uv==$UV_VERSION" || true; fi
   if [[ -x "$VENV/bin/uv" ]]; then
     uv_install() {
-      if ! "$VENV/bin/uv" pip install --python "$VENV/bin/python" "$@" >>"$VENV/pip-install.log" 2>&1; then
+      # copies, not hard links to uv's cache: a file repaired in the venv must not change the cache
+      if ! "$VENV/bin/uv" pip install --link-mode copy --python "$VENV/bin/python" "$@" \
+          >>"$VENV/pip-install.log" 2>&1; then
         tail -n 40 "$VENV/pip-install.log" >&2
         echo "[setup] uv pip install failed (full log: $VENV/pip-install.log)" >&2
         exit 1
