@@ -171,3 +171,19 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
     ros2("topic", "echo", "/clock", "--once", "--timeout", "2")  # 2 s of /clock, seen by a second node too
     assert clocks[-1].clock == at_pause, "/clock still advances while paused"
     ros2("service", "call", "/unpause_physics", "std_srvs/srv/Empty")
+
+
+@pytest.mark.parametrize("sig", ["SIGINT", "SIGTERM"])
+def test_echo_and_record_end_on_a_signal_without_a_traceback(sig: str, tmp_path: Path, ros_client) -> None:
+    """Issue 26: `ros2 topic echo` and `ros2 bag record` printed a traceback on Ctrl-C or SIGTERM."""
+    import signal as signals
+
+    for cmd in ([ROS2, "topic", "echo", "/clock"], [ROS2, "bag", "record", "-o", str(tmp_path / sig), "/clock"]):
+        proc = start(cmd, " ".join(cmd[1:3]))
+        pid = str(proc.popen.pid)
+        # up and spinning: its node (named with its pid) is in the graph
+        wait_for(lambda pid=pid: any(pid in n for n in ros_client.node.get_node_names()), 30, "the verb's node")
+        proc.popen.send_signal(getattr(signals, sig))
+        rc = proc.wait(20)
+        assert "Traceback" not in proc.output, proc.output
+        assert rc in (0, int(signals.SIGINT)), (rc, proc.output)

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import importlib
 import os
+import signal
 import sys
 
 from ._graph import matching_qos  # the Foxglove bridge subscribes the same way
@@ -56,7 +57,15 @@ def main(argv: list[str] | None = None) -> int:
     verb, rest = argv[0], argv[1:]
     if verb in COMMANDS:
         module, function, _text = COMMANDS[verb]
-        return getattr(importlib.import_module(f"{__name__}.{module}"), function)(rest)
+        try:
+            return getattr(importlib.import_module(f"{__name__}.{module}"), function)(rest)
+        except KeyboardInterrupt:  # Ctrl-C: ros2cli's cli.py returns signal.SIGINT, with no traceback
+            return int(signal.SIGINT)
+        except Exception as err:
+            # rclpy's own SIGINT/SIGTERM handler shut the context down under a spinning verb: an orderly end
+            if type(err).__name__ == "ExternalShutdownException":
+                return 0
+            raise
     print(
         f"usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ...\n"
         f"ros2: error: argument Call `ros2 <command> -h` for more detailed usage.: invalid choice: '{verb}' "
