@@ -23,3 +23,12 @@ def test_gazelle_arm_against_a_move_group_without_a_robot_is_one_clear_line() ->
         assert "move_group has no robot yet" in text, text
     finally:
         assert move_group.interrupt() == 0, move_group.output
+
+
+def test_move_group_with_a_malformed_srdf_exits_2_naming_the_file_and_line(tmp_path) -> None:
+    """Issue 27: a malformed SRDF logged an error and move_group kept running, unable to plan."""
+    srdf = tmp_path / "bad.srdf"
+    srdf.write_text('<robot name="x"><group name="a">\n<chain base_link="a" tip_link="b"/>\n</grup></robot>\n')
+    out = subprocess.run([*GAZELLE, "move_group", "--srdf", str(srdf)], capture_output=True, text=True, timeout=60)
+    assert out.returncode == 2, out.stdout + out.stderr
+    assert f"{srdf}:3:" in out.stderr and "Traceback" not in out.stderr, out.stderr
