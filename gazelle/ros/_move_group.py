@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import logging
 import math
+import os
 import re
 import sys
 import threading
@@ -74,6 +75,8 @@ SIM_PADDING = 0.01
 """m the simulation's objects are grown by for planning: the simulated robot collides with the convex
 hulls of its meshes, a little fatter than the meshes the planner checks (an arm planned 5 mm past a
 pillar brushed it)."""
+TWIN_CHECK_SEC = 2.0
+"""s after start when move_group looks for another of its name on the domain (discovery has run)."""
 SHUTDOWN_DEADLINE_SEC = 3.0
 """s after SIGINT/SIGTERM by which move_group has ended, however busy (its watchdog process kills it)."""
 CURRENT_STATE_WAIT = 5.0
@@ -199,6 +202,8 @@ class MoveGroupNode(Node):
             PlanningSceneWorld, "/gazelle/planning_scene_world", self._on_sim_world, LATCHED, callback_group=cb
         )
         self._display = self.create_publisher(DisplayTrajectory, "display_planned_path", 10)
+        # a second move_group on the domain answers every request too: said once, after discovery
+        self._twin_check = self.create_timer(TWIN_CHECK_SEC, self._warn_of_twins, callback_group=cb)
         self._move = ActionServer(
             self,
             MoveGroup,
@@ -248,6 +253,17 @@ class MoveGroupNode(Node):
         super().destroy_node()
 
     # ------------------------------------------------------------------ set-up
+    def _warn_of_twins(self) -> None:
+        self._twin_check.cancel()
+        me = (self.get_name(), self.get_namespace())
+        twins = sum(1 for named in self.get_node_names_and_namespaces() if named == me)
+        if twins > 1:
+            self.get_logger().warning(
+                f"another {self.get_fully_qualified_name()} is running on ROS_DOMAIN_ID "
+                f"{os.environ.get('ROS_DOMAIN_ID', '0')}: both answer every planning request and action "
+                "(stop one, or run them in other domains or namespaces)"
+            )
+
     def _param(self, name: str) -> str:
         if not self.has_parameter(name):
             return ""

@@ -32,3 +32,14 @@ def test_move_group_with_a_malformed_srdf_exits_2_naming_the_file_and_line(tmp_p
     out = subprocess.run([*GAZELLE, "move_group", "--srdf", str(srdf)], capture_output=True, text=True, timeout=60)
     assert out.returncode == 2, out.stdout + out.stderr
     assert f"{srdf}:3:" in out.stderr and "Traceback" not in out.stderr, out.stderr
+
+
+def test_a_second_move_group_on_the_domain_says_so() -> None:
+    """Issue 27: a second move_group on the same domain started silently; both answered every request."""
+    first = start([*GAZELLE, "move_group"], "move_group 1")
+    second = start([*GAZELLE, "move_group"], "move_group 2")
+    try:
+        second.wait_line("another /move_group is running", 30)
+    finally:
+        for proc in (second, first):
+            assert proc.interrupt() == 0, proc.output
