@@ -156,6 +156,7 @@ class BoundedWorker:
         # Everything the parent has is frozen out of the child's garbage collector: the child is a
         # copy of a process with threads (rclpy's, DDS's), and collecting their objects in a copy
         # where those threads do not exist crashed it ("Segmentation fault ... Garbage-collecting").
+        prctl = _prctl()  # looked up before the fork: the child of a process with threads only calls it
         gc.freeze()
         parent = os.getpid()
         pid = -1
@@ -171,7 +172,7 @@ class BoundedWorker:
                 os.close(rep_r)
                 signal.signal(signal.SIGTERM, signal.SIG_DFL)
                 signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
-                _die_with(parent)
+                _die_with(parent, prctl)
                 if cap > memory:
                     resource.setrlimit(resource.RLIMIT_AS, (cap, cap))
                 self._serve(req_r, rep_w)
@@ -296,17 +297,22 @@ class _Timeout(Exception):
 PR_SET_PDEATHSIG = 1
 
 
-def _die_with(parent: int) -> None:
-    """In a helper: be killed when the process that forked it ends (Linux's ``PR_SET_PDEATHSIG``), so a
-    server killed while its helper computes leaves no orphan burning CPU. The signal follows the forking
-    *thread*; a helper it kills early is replaced at the next request."""
+def _prctl() -> Callable[..., int] | None:
+    """libc's ``prctl``, or None where there is none."""
     try:
         import ctypes
 
-        libc = ctypes.CDLL(None, use_errno=True)
-        libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+        return ctypes.CDLL(None, use_errno=True).prctl
     except (OSError, AttributeError):
-        pass
+        return None
+
+
+def _die_with(parent: int, prctl: Callable[..., int] | None) -> None:
+    """In a helper: be killed when the process that forked it ends (Linux's ``PR_SET_PDEATHSIG``), so a
+    server killed while its helper computes leaves no orphan burning CPU. The signal follows the forking
+    *thread*; a helper it kills early is replaced at the next request."""
+    if prctl is not None:
+        prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
     if os.getppid() != parent:  # the parent ended before the request above took effect
         os._exit(1)
 
