@@ -166,15 +166,21 @@ def runtime_floor_rtf(seconds: float) -> float:
 
 
 def main() -> int:
+    import argparse
+
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0] if __doc__ else None)
+    parser.add_argument("--seconds", type=float, default=5.0, help="sim-seconds of each run (default 5)")
+    parser.add_argument("--smoke", action="store_true", help="the same code path at tiny sizes (./test.sh runs it)")
+    opts = parser.parse_args()
     logging.disable(logging.WARNING)
     os.environ["GAZELLE_RESOURCE_PATH"] = str(R6BOT)
-    seconds = 5.0
+    seconds = 0.05 if opts.smoke else opts.seconds
     none = rtf_of("none", seconds)
     idle = rtf_of("idle", seconds)
     jtc = rtf_of("jtc", seconds)
     floor = floor_rtf(seconds)
     runtime_floor = runtime_floor_rtf(seconds)
-    print("r6bot, 1 ms physics steps, best of 3 runs of 5 sim-seconds each")
+    print(f"r6bot, 1 ms physics steps, best of 3 runs of {seconds:g} sim-seconds each")
     print(f"{'case':58s} {'RTF':>8s}")
     print(f"{'no ros2_control (joints limp)':58s} {none:7.1f}x")
     print(f"{'controller manager at 1 kHz, no controller (joints held)':58s} {idle:7.1f}x")
