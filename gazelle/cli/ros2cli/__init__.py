@@ -62,8 +62,9 @@ def main(argv: list[str] | None = None) -> int:
         except KeyboardInterrupt:  # Ctrl-C: ros2cli's cli.py returns signal.SIGINT, with no traceback
             return int(signal.SIGINT)
         except Exception as err:
-            # rclpy's own SIGINT/SIGTERM handler shut the context down under a spinning verb: an orderly end
-            if type(err).__name__ == "ExternalShutdownException":
+            # rclpy's own SIGINT/SIGTERM handler shut the context down under a spinning verb, or while it
+            # was still making its node ("rcl node's context is invalid"): an orderly end
+            if type(err).__name__ == "ExternalShutdownException" or "context is invalid" in str(err):
                 return 0
             raise
     print(

@@ -54,7 +54,9 @@ def main(argv: list[str]) -> int:
     rec.add_argument("-o", "--output", default=None, help="the bag folder (default rosbag2_<date>-<time>)")
     rec.add_argument("-s", "--storage", default="mcap", help="storage identifier (mcap)")
     rec.add_argument("-d", "--max-bag-duration", type=float, default=0.0, help="(not split: one file)")
-    rec.add_argument("--max-duration", type=float, default=0.0, help="stop after this many seconds")
+    rec.add_argument(
+        "--max-duration", type=float, default=0.0, help="stop after this many seconds from the first message"
+    )
     rec.add_argument("--include-hidden-topics", action="store_true")
     rec.add_argument("--use-sim-time", action="store_true", help="stamp messages with /clock's time")
     play = sub.add_parser("play", help="Play back ROS data from a bag")
@@ -415,11 +417,16 @@ def _record(args: argparse.Namespace) -> int:
         rec = _Recorder(node, out, args.use_sim_time)
         print("[INFO] [rosbag2_recorder]: Listening for topics...", flush=True)
         started = time.monotonic()
+        first: float | None = None
+        """When the first message was recorded: --max-duration counts from there, so a busy machine's slow
+        discovery does not eat the recording (it stops after that long without any message, too)."""
         next_scan = 0.0
         try:
             while not stop["now"]:
                 now = time.monotonic()
-                if args.max_duration and now - started >= args.max_duration:
+                if first is None and any(e["count"] for e in rec.topics.values()):
+                    first = now
+                if args.max_duration and now - (started if first is None else first) >= args.max_duration:
                     break
                 if now >= next_scan:
                     next_scan = now + DISCOVERY_PERIOD_SEC
