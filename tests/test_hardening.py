@@ -450,14 +450,17 @@ def test_a_forged_convex_cache_entry_is_not_trusted(tmp_path: Path, monkeypatch,
 
     monkeypatch.setenv("GAZELLE_CACHE_DIR", str(tmp_path / "cache"))
     mesh = tmp_path / "u.stl"
-    u = trimesh.util.concatenate(
-        [
-            trimesh.creation.box((0.1, 0.3, 0.1), trimesh.transformations.translation_matrix((-0.1, 0, 0))),
-            trimesh.creation.box((0.1, 0.3, 0.1), trimesh.transformations.translation_matrix((0.1, 0, 0))),
-            trimesh.creation.box((0.3, 0.1, 0.1), trimesh.transformations.translation_matrix((0, -0.1, 0))),
-        ]
-    )
+    boxes = [
+        trimesh.creation.box((0.1, 0.3, 0.1), trimesh.transformations.translation_matrix((-0.1, 0, 0))),
+        trimesh.creation.box((0.1, 0.3, 0.1), trimesh.transformations.translation_matrix((0.1, 0, 0))),
+        trimesh.creation.box((0.3, 0.1, 0.1), trimesh.transformations.translation_matrix((0, -0.1, 0))),
+    ]
+    u = trimesh.util.concatenate(boxes)
     u.export(mesh)
+    # CoACD itself is not what is tested here (and took ~15 s a run): the decomposition is the U's own
+    # three boxes, computed in the same bounded helper
+    pieces = [np.asarray(b.vertices, dtype=float).tolist() for b in boxes]
+    monkeypatch.setattr(_convex, "_decompose", lambda _v, _f: pieces)
     parts = _convex.collision_parts(str(mesh), (1.0, 1.0, 1.0))
     assert parts is not None and parts.source == "computed"
     folder = _convex.cache_dir()
