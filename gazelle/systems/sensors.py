@@ -206,6 +206,11 @@ class SensorLimitError(SensorConfigError):
     never accepted with the sensor quietly off."""
 
 
+def faster_than_step(rate: float, step_sec: float) -> bool:
+    """Whether ``rate`` (Hz) is faster than physics steps of ``step_sec`` can sample (0: no step known)."""
+    return step_sec > 0 and rate > 1.0 / step_sec * (1 + 1e-9)
+
+
 def checked_rate(rate: float, step_sec: float, where: str, what: str, log: logging.Logger) -> float:
     """A sensor's ``update_rate`` (Hz of sim time; 0 = every step, as SDF says) as it will run.
 
@@ -217,7 +222,7 @@ def checked_rate(rate: float, step_sec: float, where: str, what: str, log: loggi
     """
     if not math.isfinite(rate) or rate < 0:
         raise SensorLimitError(f"{where}{what}: <update_rate> must be a number >= 0 Hz (0: every step), got {rate!r}")
-    if step_sec > 0 and rate > 1.0 / step_sec * (1 + 1e-9):
+    if faster_than_step(rate, step_sec):
         log.warning(
             f"{where}{what}: <update_rate> {rate:g} Hz is faster than the physics step ({1.0 / step_sec:g} Hz); "
             "it runs every step"
@@ -425,7 +430,7 @@ class _SensorSystem(System):
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not value >= 0 or not math.isfinite(value):
             return f"must be a number >= 0 (Hz; 0: every step), got {value!r}"
         step = self._step_sec
-        if step > 0 and value > 1.0 / step * (1 + 1e-9):
+        if faster_than_step(float(value), step):
             return f"{value:g} Hz is faster than the physics step ({1.0 / step:g} Hz)"
         self.rate_hz = float(value)
         self._gate.reset()
