@@ -106,9 +106,10 @@ def test_record_info_and_play_round_trip_with_a_foxglove_client_watching(sim_fac
     assert sim.interrupt() == 0
     listener = start([sys.executable, LISTENER, str(len(recorded)), "10"], "odom listener")
     listener.wait_line("ready", 30)
-    # --delay (rosbag2's own flag): the player starts 2 s after it looked for subscribers, so a loaded
-    # machine's slow discovery of the listener does not lose the first messages (it once lost them all)
-    play = ros2("bag", "play", str(bag), "-r", "10", "--delay", "2", timeout=90)
+    # --delay (rosbag2's own flag): the player starts 5 s after it looked for subscribers, so a loaded
+    # machine's slow discovery does not lose the first messages (with none it once lost them all, with 2 s
+    # the first 163: participant announcements come again only after some seconds)
+    play = ros2("bag", "play", str(bag), "-r", "10", "--delay", "5", timeout=90)
     assert play.returncode == 0, play.stdout + play.stderr
     assert listener.wait(30) == 0
     got = [json.loads(line) for line in listener.lines if line.startswith("{")]
