@@ -14,7 +14,7 @@ import os
 import signal
 import sys
 
-from ._graph import matching_qos  # the Foxglove bridge subscribes the same way
+from ._graph import ShutDown, matching_qos  # the Foxglove bridge subscribes the same way
 
 COMMANDS = {
     "action": ("_action", "main", "Various action related sub-commands"),
@@ -61,10 +61,10 @@ def main(argv: list[str] | None = None) -> int:
             return getattr(importlib.import_module(f"{__name__}.{module}"), function)(rest)
         except KeyboardInterrupt:  # Ctrl-C: ros2cli's cli.py returns signal.SIGINT, with no traceback
             return int(signal.SIGINT)
+        except ShutDown:  # rclpy's own SIGINT/SIGTERM handler shut the context down under the verb
+            return 0
         except Exception as err:
-            # rclpy's own SIGINT/SIGTERM handler shut the context down under a spinning verb, or while it
-            # was still making its node ("rcl node's context is invalid"): an orderly end
-            if type(err).__name__ == "ExternalShutdownException" or "context is invalid" in str(err):
+            if type(err).__name__ == "ExternalShutdownException":
                 return 0
             raise
     print(

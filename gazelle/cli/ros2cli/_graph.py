@@ -13,6 +13,11 @@ DEFAULT_SPIN_TIME = 1.5
 """Seconds to discover the graph before listing (ros2cli's daemon remembers it; we have no daemon)."""
 
 
+class ShutDown(Exception):
+    """The verb's context was shut down under it (rclpy's own SIGINT/SIGTERM handler does that): whatever
+    rcl call was running then fails (a wait set, a node, a subscription), and the verb ends in order."""
+
+
 _EXECUTORS: dict[int, Any] = {}
 """id(node) -> the executor that spins it (rclpy.spin_once(node) adds and removes the node each call:
 a few milliseconds, too slow for `ros2 topic echo` at 1 kHz)."""
@@ -26,12 +31,22 @@ def cli_node(name: str = "ros2cli") -> Iterator[Any]:
     from rclpy.executors import SingleThreadedExecutor
 
     rclpy.init(args=[])
-    node = rclpy.create_node(f"_{name}_{os.getpid()}", start_parameter_services=False)
+    context = rclpy.get_default_context()  # pyright: ignore[reportPrivateImportUsage]
+    try:
+        node = rclpy.create_node(f"_{name}_{os.getpid()}", start_parameter_services=False)
+    except Exception as err:
+        if not context.ok():
+            raise ShutDown from err
+        raise
     executor = SingleThreadedExecutor()
     executor.add_node(node)
     _EXECUTORS[id(node)] = executor
     try:
         yield node
+    except Exception as err:
+        if not context.ok():  # checked before our own shutdown below: the signal came first
+            raise ShutDown from err
+        raise
     finally:
         _EXECUTORS.pop(id(node), None)
         executor.shutdown(timeout_sec=0.5)
