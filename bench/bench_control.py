@@ -139,7 +139,7 @@ def runtime_floor_rtf(seconds: float) -> float:
     ep.add_sink(lambda _m: None)
     # the limp robot has no actuators: the write goes to the six joints' applied forces (zeros, so the
     # dynamics are the limp robot's), one indexed write as the hardware's write of its servos is
-    dofs, applied = group._ids.get(world)[1], world.data.qfrc_applied
+    dofs, applied = group.dof_indices(), world.data.qfrc_applied
     zeros = (0.0,) * 6
 
     class Floor(System):

@@ -55,10 +55,10 @@ def percentile(values: list[float], p: float) -> float:
 def make_planner():
     import yaml
 
+    from gazelle.description import read_description_file
     from gazelle.planning import ArmPlanner, moveit_joint_limits
-    from gazelle.ros._move_group import _read_description
 
-    urdf = _read_description(str(CONFIG / "panda.urdf.xacro"))
+    urdf = read_description_file(str(CONFIG / "panda.urdf.xacro"))
     srdf = (CONFIG / "panda.srdf").read_text()
     limits = moveit_joint_limits(yaml.safe_load((CONFIG / "joint_limits.yaml").read_text()))
     return ArmPlanner(urdf, srdf, joint_limits=limits, seed=1)
@@ -166,7 +166,7 @@ def with_simulation(goals: list) -> None:
     from rclpy.action import ActionClient
     from shape_msgs.msg import SolidPrimitive
 
-    from gazelle.ros._move_group import _pose
+    from gazelle.ros import matrix_to_pose as _pose
 
     procs = []
     try:

@@ -146,6 +146,13 @@ def props(sim, n: int = 20) -> None:
         sim.spawn(load_string(xml).value, name=f"box{i}", pose=Pose((r * math.cos(a), r * math.sin(a), 0.5)))
 
 
+SMOKE = "--smoke" in sys.argv[1:]
+"""./test.sh's mode: every case on the same code path, for a sliver of the time (the figures mean nothing)."""
+SPAN = 0.2 if SMOKE else 5.0
+"""Sim seconds per measured run."""
+REPEATS = 1 if SMOKE else 5
+
+
 def main() -> int:
     logging.disable(logging.WARNING)
     os.environ.setdefault("GAZELLE_RESOURCE_PATH", str(TB3.parents[1]))
@@ -167,10 +174,10 @@ def main() -> int:
     listen(without_s[0])
     floor_heard = listen(floor_s[0])
     best_with, best_without, best_floor = 0.0, 0.0, 0.0
-    for _ in range(5):
-        best_with = max(best_with, rtf_of(with_s[0], 5.0)[0])
-        best_without = max(best_without, rtf_of(without_s[0], 5.0)[0])
-        best_floor = max(best_floor, rtf_of(floor_s[0], 5.0)[0])
+    for _ in range(REPEATS):
+        best_with = max(best_with, rtf_of(with_s[0], SPAN)[0])
+        best_without = max(best_without, rtf_of(without_s[0], SPAN)[0])
+        best_floor = max(best_floor, rtf_of(floor_s[0], SPAN)[0])
     loss = 1.0 - best_with / best_without
     floor_loss = 1.0 - best_floor / best_without
     rows.append(("TurtleBot3 burger, no sensors", f"RTF {best_without:.1f}x", ""))
@@ -198,10 +205,11 @@ def main() -> int:
         d = mujoco.MjData(m)
         d.qpos[:], d.qvel[:], d.ctrl[:] = w.data.qpos, w.data.qvel, w.data.ctrl
         best = math.inf
-        for _ in range(5):
+        steps = 100 if SMOKE else 5000
+        for _ in range(REPEATS):
             t0 = time.perf_counter()
-            mujoco.mj_step(m, d, nstep=5000)
-            best = min(best, (time.perf_counter() - t0) / 5000)
+            mujoco.mj_step(m, d, nstep=steps)
+            best = min(best, (time.perf_counter() - t0) / steps)
         costs.append(best)
     rows.append(
         (
@@ -218,14 +226,14 @@ def main() -> int:
     lidar_xml = lidar_model(1, 360, 10).replace("PointCloud2", "LaserScan")
     lidar = next(s for s in sim.spawn(load_string(lidar_xml).value, name="scan").systems if isinstance(s, Lidar))
     sim.step(1)
-    N = 2000
+    N = 20 if SMOKE else 2000
     t0 = time.perf_counter()
     for _ in range(N):
         lidar.scan(sim.world)
     ours = N * 360 / (time.perf_counter() - t0)
     m, d = sim.world.model, sim.world.data
     X = lidar.sensor_pose()
-    dirs = np.ascontiguousarray(lidar._dirs).reshape(-1)
+    dirs = np.ascontiguousarray(lidar.spec.directions()).reshape(-1)
     geom, dist = np.empty(360, np.int32), np.empty(360)
     pnt, groups = np.asarray(X.position, dtype=float), np.array([0, 0, 1, 1, 0, 0], np.uint8)
     body = sim.world.body_id("scan", "l")
@@ -246,7 +254,7 @@ def main() -> int:
     props(sim)
     sim.spawn(load_string(lidar_model(16, 1800, 10)).value, name="vlp")
     clouds = listen(sim)
-    rtf, wall = rtf_of(sim, 5.0)
+    rtf, wall = rtf_of(sim, SPAN)
     rows.append(
         (
             "16 x 1800 lidar at 10 Hz (PointCloud2)",
@@ -263,7 +271,7 @@ def main() -> int:
     images = listen(sim)
     sim.step(1)  # the first image makes the GL context
     images[0] = 0
-    rtf, wall = rtf_of(sim, 5.0)
+    rtf, wall = rtf_of(sim, SPAN)
     rows.append(
         (
             "640 x 480 RGB camera at 30 Hz",
@@ -272,9 +280,10 @@ def main() -> int:
         )
     )
     t0 = time.perf_counter()
-    for _ in range(30):
+    renders = 3 if SMOKE else 30
+    for _ in range(renders):
         cam.render(sim.world, depth=False)
-    per = (time.perf_counter() - t0) / 30
+    per = (time.perf_counter() - t0) / renders
     rows.append(("  one 640 x 480 render + readback", f"{per * 1000:.1f} ms", f"{1 / per:.0f} images/s at most"))
 
     print(f"sensors on {os.cpu_count()} CPUs, MuJoCo {mujoco.__version__}, GL {os.environ.get('MUJOCO_GL', 'egl')}\n")

@@ -51,7 +51,7 @@ MODES = {
 BROWSER = textwrap.dedent(
     """
     import sys
-    from gazelle.viewer._browser import open_viewer_page
+    from gazelle.viewer import open_viewer_page
     with open_viewer_page(sys.argv[1], max_fps=float(sys.argv[2])) as page:
         page.wait_for_timeout(500)
         print("ready", flush=True)
@@ -63,7 +63,7 @@ BROWSER = textwrap.dedent(
 def make_sim(rtf: float):
     from gazelle.description import load
     from gazelle.sim import Simulation
-    from gazelle.systems._bus import MsgType, Twist
+    from gazelle.systems import MsgType, Twist
     from gazelle.worlds import default_world
 
     sim = Simulation(default_world(), rtf=rtf)
@@ -118,7 +118,7 @@ class Run:
 
 def measure(sim, seconds: float) -> Run:
     """RTF, the sim thread's CPU and the browser's CPU over ``seconds`` of wall time (after a 1 s warm-up)."""
-    tid = sim._thread.native_id
+    tid = sim.thread_id
 
     def sample() -> tuple[float, float, float, float]:
         return (
@@ -203,9 +203,10 @@ def main() -> int:
     ap.add_argument("--scenario", choices=("paced", "flat", "both"), default="both")
     ap.add_argument("--max-fps", type=float, default=0.0, help="cap chromium's frame rate (default 0: uncapped)")
     a = ap.parse_args()
+    t_all = time.perf_counter()
     logging.basicConfig(level=logging.WARNING)
     sys.setswitchinterval(0.0002)  # as `gazelle sim` does
-    from gazelle.viewer._viewer import POSE_RATE_HZ
+    from gazelle.viewer import POSE_RATE_HZ
 
     print(
         f"seed robot driving; viewer poses at {POSE_RATE_HZ:g} Hz; {a.rounds} x {a.seconds:g} s per mode; "
@@ -216,6 +217,7 @@ def main() -> int:
         scenario("seed scenario, paced", 1.0, a)
     if a.scenario in ("flat", "both"):
         scenario("flat out", 0.0, a)
+    print(f"bench took {time.perf_counter() - t_all:.1f} s")
     return 0
 
 

@@ -124,3 +124,53 @@ def test_the_check_finds_each_kind_of_violation(
     monkeypatch.setattr(__import__(__name__), "REPO", tmp_path)
     problems = _violations()
     assert any(expected in p and f"gazelle/{layer}/planted.py:" in p for p in problems), problems
+
+
+BENCH = REPO / "bench"
+
+
+def _bench_violations(folder: Path) -> list[str]:
+    """Private reaches in the bench scripts: an import of a private gazelle module, or an attribute read
+    that starts with one underscore on anything but ``self``/``cls`` (issue 28: bench_rtf.py crashed for a
+    turn because it read ``node._pubs``, whose keys had changed)."""
+    found: list[str] = []
+    for path in sorted(folder.glob("*.py")):
+        tree = ast.parse(path.read_text(), str(path))
+        for node in ast.walk(tree):
+            where = f"bench/{path.name}:{getattr(node, 'lineno', 0)}"
+            mods: list[str] = []
+            if isinstance(node, ast.Import):
+                mods = [a.name for a in node.names]
+            elif isinstance(node, ast.ImportFrom) and node.module:
+                mods = [node.module] + [f"{node.module}.{a.name}" for a in node.names if a.name.startswith("_")]
+            for mod in mods:
+                parts = mod.split(".")
+                if parts[0] == "gazelle" and any(p.startswith("_") and not p.startswith("__") for p in parts[1:]):
+                    found.append(f"{where}: imports {mod}, a private part of gazelle")
+            if (
+                isinstance(node, ast.Attribute)
+                and node.attr.startswith("_")
+                and not node.attr.startswith("__")
+                and not (isinstance(node.value, ast.Name) and node.value.id in ("self", "cls"))
+            ):
+                found.append(f"{where}: reads .{node.attr}, a private attribute")
+    return found
+
+
+def test_benches_use_only_public_surfaces() -> None:
+    problems = _bench_violations(BENCH)
+    assert not problems, "\n".join(problems)
+
+
+@pytest.mark.parametrize(
+    ("source", "expected"),
+    [
+        ("from gazelle.ros._move_group import _pose\n", "imports gazelle.ros._move_group"),
+        ("def f(node):\n    return node._pubs\n", "reads ._pubs"),
+        ("from gazelle.sim import _simulation\n", "imports gazelle.sim._simulation"),
+    ],
+)
+def test_the_bench_check_finds_a_private_reach(tmp_path: Path, source: str, expected: str) -> None:
+    (tmp_path / "bench_planted.py").write_text(source)
+    problems = _bench_violations(tmp_path)
+    assert any(expected in p and "bench/bench_planted.py:" in p for p in problems), problems

@@ -40,6 +40,7 @@ from ._untrusted import read_regular_file as read_regular_file
 from ._untrusted import safe_load_bounded as safe_load_bounded
 from ._untrusted import yaml_problem as yaml_problem
 from ._xacro import expand_bounded as expand_xacro_bounded  # noqa: F401 - public
+from ._xacro import read_description_file as read_description_file
 
 FORMATS = ("urdf", "xacro", "sdf", "srdf")
 _SUFFIXES = {

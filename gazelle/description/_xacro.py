@@ -388,3 +388,23 @@ def expand_bounded(
     ]
     sink.extend(diagnostics)
     return out
+
+
+def read_description_file(path: str) -> str:
+    """A description file a user named on a command line: xacro files are expanded (bounded, resolving
+    relative to the file's own folder), others are read as they are. Raises ValueError with file:line
+    diagnostics when the xacro fails."""
+    from ._diagnostics import DiagnosticSink
+    from ._resources import ResourceResolver
+
+    p = Path(path)
+    if not p.is_file():
+        raise ValueError(f"{path}: no such file")
+    text = p.read_text(encoding="utf-8")
+    if p.suffix != ".xacro":
+        return text
+    sink = DiagnosticSink()
+    out = expand_bounded(text, source=str(p), sink=sink, resolver=ResourceResolver().trusting(p.resolve().parent))
+    if out is None:
+        raise ValueError("; ".join(d.format() for d in sink.items) or f"{path}: xacro failed")
+    return out

@@ -148,6 +148,11 @@ class JointGroup:
         """The actuators' forces on the joints in the last step."""
         return self.world.data.qfrc_actuator[self._ids.get(self.world)[1]]
 
+    def dof_indices(self) -> np.ndarray:
+        """The joints' indices in MuJoCo's velocity-sized arrays (``qvel``, ``qfrc_applied``, ...), in
+        :attr:`names` order, for the current model (they move when another entity is spawned)."""
+        return self._ids.get(self.world)[1]
+
 
 class ActuatorHandle:
     """One actuator on a joint, added by :meth:`PhysicsWorld.add_actuator`; ``command`` sets its input.

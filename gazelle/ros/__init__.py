@@ -11,6 +11,7 @@ from ._bridge import RosBridge
 from ._definitions import InterfaceError, message_class
 from ._definitions import full_text as message_definition
 from ._exposure import choose_discovery_range
+from ._planning_scene import pose as matrix_to_pose
 from ._spawn import main as spawn_main
 from ._spawner import spawner_main as spawner_main
 from ._spawner import unspawner_main as unspawner_main
@@ -37,6 +38,7 @@ __all__ = [
     "message_class",
     "message_definition",
     "choose_discovery_range",
+    "matrix_to_pose",
     "spawn_main",
     "move_group_main",
     "spawner_main",

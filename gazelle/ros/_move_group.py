@@ -63,6 +63,7 @@ from sensor_msgs.msg import JointState
 from std_msgs.msg import Float64, String
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
+from ..description import read_description_file
 from ..planning import START_BOUNDS_ERROR, ArmPlanner, PlanningError, SceneObject, Trajectory, moveit_joint_limits
 from ._planning_scene import attached_message, checked_matrix, padded, shapes_of, to_message
 from ._planning_scene import matrix as _matrix
@@ -1173,7 +1174,7 @@ def move_group_main(argv: list[str]) -> int:
     try:
         for flag, name in ((args.urdf, "robot_description"), (args.srdf, "robot_description_semantic")):
             if flag:
-                text = _read_description(flag)
+                text = read_description_file(flag)
                 if name == "robot_description_semantic":
                     _check_srdf(text, flag)
                 overrides.append(Parameter(name, value=text))
@@ -1233,23 +1234,6 @@ def _check_srdf(text: str, source: str) -> None:
         load_string(text, format="srdf", source=source)
     except ModelLoadError as err:
         raise ValueError(str(err)) from None
-
-
-def _read_description(path: str) -> str:
-    """A file the user named: xacro files are expanded (bounded), others read as they are."""
-    from ..description import DiagnosticSink, ResourceResolver, expand_xacro_bounded
-
-    p = Path(path)
-    if not p.is_file():
-        raise ValueError(f"{path}: no such file")
-    text = p.read_text(encoding="utf-8")
-    if p.suffix != ".xacro":
-        return text
-    sink = DiagnosticSink()
-    out = expand_xacro_bounded(text, source=str(p), sink=sink, resolver=ResourceResolver().trusting(p.resolve().parent))
-    if out is None:
-        raise ValueError("; ".join(d.format() for d in sink.items) or f"{path}: xacro failed")
-    return out
 
 
 PIPELINE_PARAMETERS = frozenset(

@@ -158,6 +158,13 @@ class Simulation:
         """Whether the simulation thread is stepping (or paused but alive)."""
         return self._thread is not None and self._thread.is_alive()
 
+    @property
+    def thread_id(self) -> int | None:
+        """The simulation thread's native (kernel) id while it runs, else None: what a profiler or a
+        CPU meter (``/proc/self/task/<id>/stat``) reads."""
+        thread = self._thread
+        return thread.native_id if thread is not None and thread.is_alive() else None
+
     def start(self) -> None:
         """Start stepping on a background thread."""
         if self.running:

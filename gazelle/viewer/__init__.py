@@ -4,17 +4,19 @@ This layer may import physics, description and systems; it never imports rclpy,
 and the core never imports it.
 """
 
-from ._browser import screenshot
+from ._browser import open_viewer_page, screenshot
 from ._origin import OriginPolicy, allowed_origins
 from ._snapshot import record_video, run_record, run_snapshot, video_format
-from ._viewer import DEFAULT_HOST, DEFAULT_PORT, Viewer
+from ._viewer import DEFAULT_HOST, DEFAULT_PORT, POSE_RATE_HZ, Viewer
 
 __all__ = [
     "DEFAULT_HOST",
     "DEFAULT_PORT",
     "OriginPolicy",
+    "POSE_RATE_HZ",
     "Viewer",
     "allowed_origins",
+    "open_viewer_page",
     "record_video",
     "run_record",
     "run_snapshot",

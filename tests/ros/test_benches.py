@@ -17,6 +17,11 @@ BENCHES = [
     (["bench_spawn.py", "--reps", "1"], "spawn_many"),
     (["bench_planning.py", "--goals", "1", "--ik", "5", "--no-sim"], "plan (IK + RRT-Connect"),
     (["bench_load.py", "-n", "1"], "slowest load"),
+    (["bench_caster.py", "--smoke"], "bench took"),
+    (["bench_introspection.py", "--smoke"], "messages the plain subscriber got that the bag lacks"),
+    (["bench_launch.py", "--smoke"], "best "),
+    (["bench_sensors.py", "--smoke"], "bench took"),
+    (["bench_viewer.py", "--seconds", "0.5", "--rounds", "1", "--scenario", "flat"], "bench took"),
 ]
 
 
