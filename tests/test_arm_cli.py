@@ -19,7 +19,7 @@ ARM = [f"panda_joint{i}" for i in range(1, 8)]
 def panda():
     import os
 
-    from gazelle.ros._move_group import _read_description
+    from gazelle.description import read_description_file as _read_description
 
     os.environ["GAZELLE_RESOURCE_PATH"] = str(REAL / "moveit_panda")
     try:

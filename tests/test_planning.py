@@ -22,8 +22,8 @@ def planner():
     pytest.importorskip("roboplan")
     import os
 
+    from gazelle.description import read_description_file as _read_description
     from gazelle.planning import ArmPlanner, moveit_joint_limits
-    from gazelle.ros._move_group import _read_description
 
     os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)  # the meshes are read from the resource roots only
     try:
@@ -38,8 +38,8 @@ def _panda_with(srdf: str):
     """An ArmPlanner of MoveIt's Panda URDF with the SRDF text given (its meshes from the resource roots)."""
     import os
 
+    from gazelle.description import read_description_file as _read_description
     from gazelle.planning import ArmPlanner
-    from gazelle.ros._move_group import _read_description
 
     os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
     try:
@@ -346,8 +346,8 @@ def test_a_group_of_groups_plans_both_arms_at_once_and_the_viewer_draws_both_too
     from _paths import REPO
 
     from gazelle.description import load_string
+    from gazelle.description import read_description_file as _read_description
     from gazelle.planning import ArmPlanner
-    from gazelle.ros._move_group import _read_description
     from gazelle.viewer._viewer import plan_tips
 
     srdf = (PANDA / "dual_arm_panda_moveit_config" / "config" / "panda.srdf").read_text()
