@@ -14,7 +14,7 @@ import pytest
 from _paths import REPO
 
 PACKAGE = REPO / "gazelle"
-LAYERS = ("description", "physics", "systems", "sim", "ros", "viewer", "cli", "worlds", "planning")
+LAYERS = ("description", "physics", "systems", "sim", "ros", "viewer", "cli", "worlds", "planning", "testing")
 
 FORBIDDEN: dict[str, tuple[str, ...]] = {
     "description": (
@@ -45,6 +45,17 @@ FORBIDDEN: dict[str, tuple[str, ...]] = {
         "viser",
     ),
     "viewer": ("gazelle.ros", "gazelle.cli", "rclpy"),
+    # users' robot tests: gazelle's commands as processes, over ROS; nothing inside the simulation
+    "testing": (
+        "gazelle.physics",
+        "gazelle.systems",
+        "gazelle.sim",
+        "gazelle.ros",
+        "gazelle.viewer",
+        "gazelle.planning",
+        "mujoco",
+        "viser",
+    ),
     "worlds": (
         "gazelle.physics",
         "gazelle.systems",
@@ -88,7 +99,7 @@ def _violations() -> list[str]:
             for bad in FORBIDDEN.get(layer, ()):
                 if mod == bad or mod.startswith(bad + "."):
                     found.append(f"{where}: the {layer} layer imports {mod}")
-            if layer != "ros" and layer != "cli" and (mod == "rclpy" or mod.startswith("rclpy.")):
+            if layer not in ("ros", "cli", "testing") and (mod == "rclpy" or mod.startswith("rclpy.")):
                 found.append(f"{where}: only gazelle.ros imports rclpy, not {layer or 'gazelle'}")
             parts = mod.split(".")
             if len(parts) >= 3 and parts[0] == "gazelle" and parts[1] in LAYERS and parts[1] != layer:

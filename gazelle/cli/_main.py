@@ -52,6 +52,12 @@ def sim(
         100.0, "--clock-rate", help="/clock publish rate in sim-time Hz (0 = every step); default 100."
     ),
     paused: bool = typer.Option(False, "--paused", help="Start paused (unpause with /unpause_physics)."),
+    seed: int | None = typer.Option(
+        None,
+        "--seed",
+        help="Seed of the sensors' and plugins' noise (as gz sim --seed): a run repeats bit for bit. "
+        "Default: fresh entropy, so runs with noise differ.",
+    ),
     arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
     no_viewer: bool = typer.Option(False, "--no-viewer", help="Do not serve the browser viewer."),
     viewer_host: str = typer.Option(
@@ -98,6 +104,7 @@ def sim(
             viewer_allow_origins=_origins(viewer_allow_origin),
             ros_discovery=_discovery(ros_discovery),
             foxglove_port=foxglove,
+            seed=seed,
         )
     )
 

@@ -61,6 +61,7 @@ def run_sim(
     viewer_allow_origins: tuple[str, ...] = (),
     ros_discovery: str | None = None,
     foxglove_port: int | None = None,
+    seed: int | None = None,
 ) -> int:
     """Run the server; returns the process exit code."""
     logging.basicConfig(level=logging.INFO, format="[%(levelname)s] [%(name)s]: %(message)s", stream=sys.stderr)
@@ -87,7 +88,7 @@ def run_sim(
     # 150 ms of sim time between a command and its effect. 0.2 ms keeps it to ~6 ms.
     sys.setswitchinterval(GIL_SWITCH_INTERVAL_SEC)
     discovery = choose_discovery_range(ros_discovery)
-    sim = Simulation(world, rtf=rtf)  # its log lines (plugins, decompositions) go to stderr as they are
+    sim = Simulation(world, rtf=rtf, seed=seed)  # its log lines (plugins, decompositions) go to stderr as they are
     sim.paused = paused
     # rclpy prints our records itself once the bridge is up
     for h in list(logging.getLogger().handlers):

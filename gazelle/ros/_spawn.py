@@ -64,6 +64,14 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("-frame_prefix", default=None, help="prefix of the entity's TF frames (default: NAMESPACE/)")
     for axis in ("x", "y", "z", "R", "P", "Y"):
         p.add_argument(f"-{axis}", type=float, default=0.0, help=f"initial {axis}")
+    p.add_argument(
+        "--arg",
+        dest="xacro_args",
+        action="append",
+        default=[],
+        metavar="NAME:=VALUE",
+        help="a xacro argument for -file (repeatable), as `xacro FILE NAME:=VALUE` and `gazelle sim --arg`",
+    )
     return p
 
 
@@ -118,7 +126,7 @@ def _topic_hint(node: Node, topic: str) -> str:
     return f"{who} publishes {name} (latched) but sent nothing yet; is its description parameter empty?"
 
 
-def _xml_from_file(path: str) -> str:
+def _xml_from_file(path: str, xacro_args: dict[str, str] | None = None) -> str:
     """The entity XML of a file the user named: xacro (by suffix or markup) is expanded here, in the
     user's own process and bounded in time and memory, so the server only ever receives plain XML."""
     from ..description import DiagnosticSink, ModelLoadError, ResourceResolver, expand_xacro_bounded, xacro_markup
@@ -128,7 +136,7 @@ def _xml_from_file(path: str) -> str:
     if not p.name.endswith(".xacro") and xacro_markup(text) is None:
         return text
     sink = DiagnosticSink()
-    out = expand_xacro_bounded(text, source=str(p), args={}, sink=sink, resolver=ResourceResolver())
+    out = expand_xacro_bounded(text, source=str(p), args=xacro_args or {}, sink=sink, resolver=ResourceResolver())
     if out is None:
         raise ModelLoadError(sink.items)
     return out
@@ -229,6 +237,9 @@ def main(argv: list[str]) -> int:
     if args.param:  # ROS 1's parameter server is ROS 2's latched description topic
         args.topic = args.param
     args.params_files = _params_files(ros_args)
+    bad = [a for a in args.xacro_args if ":=" not in a]
+    if bad:
+        return _fail(None, f"--arg takes NAME:=VALUE, got {bad[0]!r}")
     timeout = args.spawn_service_timeout if args.spawn_service_timeout is not None else args.timeout
     if not math.isfinite(timeout) or timeout < 0:
         return _fail(None, f"-timeout must be a non-negative number, got {timeout}")
@@ -236,7 +247,7 @@ def main(argv: list[str]) -> int:
     if args.file:  # before rclpy starts its threads: a xacro file is expanded in a forked child
         print(f"[INFO] [spawn_entity]: Loading entity XML from file {args.file}", file=sys.stderr)
         try:
-            file_xml = _xml_from_file(args.file)
+            file_xml = _xml_from_file(args.file, dict(a.split(":=", 1) for a in args.xacro_args))
         except FileNotFoundError:
             return _fail(None, f"Error: specified file {args.file} does not exist")
         except Exception as err:

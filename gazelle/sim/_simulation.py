@@ -17,6 +17,7 @@ the simulation is stepped in lock-step).
 
 from __future__ import annotations
 
+import hashlib
 import logging
 import math
 import queue
@@ -97,6 +98,7 @@ class Simulation:
         bus: Bus | None = None,
         robot_state_publisher: bool = True,
         visual_geoms: bool = False,
+        seed: int | None = None,
     ):
         """
         Args:
@@ -106,7 +108,11 @@ class Simulation:
             robot_state_publisher: give every robot the built-in robot_state_publisher.
             visual_geoms: put the visuals in the MuJoCo model (see :class:`~gazelle.physics.PhysicsWorld`),
                 for offscreen cameras.
+            seed: the seed of every system's noise (each system draws from its own stream, derived from
+                this seed, its entity's name and its own, so a spawn never shifts another's noise); None,
+                as Gazebo without ``--seed``: fresh entropy, runs with noise differ.
         """
+        self.seed = seed
         if rtf is not None and (not math.isfinite(rtf) or rtf < 0):
             raise ValueError(f"`rtf` must be >= 0, got {rtf!r}")
         self.world = PhysicsWorld(world, visual_geoms=visual_geoms)
@@ -151,6 +157,14 @@ class Simulation:
             _log.warning(problem.format())
         for m in world.models:
             self._add_entity(m, name=m.name, pose=Pose(), namespace="", spawned=False)
+
+    def _seed_noise(self, system: System, entity: str, name: str) -> None:
+        """Seed ``system``'s noise from the simulation's seed and its place (stable across processes and
+        machines: a hash of the names, not Python's salted ``hash``)."""
+        if self.seed is None:
+            return
+        digest = hashlib.sha256(f"{self.seed}\0{entity}\0{name}".encode()).digest()
+        system.seed_noise(int.from_bytes(digest[:8], "little"))
 
     # ------------------------------------------------------------------ threading
     @property
@@ -468,6 +482,7 @@ class Simulation:
                     continue
                 logger = logging.getLogger(plugin.name or plugin.filename)
                 made.append(system)
+                self._seed_noise(system, entity.name, plugin.name or plugin.filename)
                 with self.bus.declaring(plugin_node_name(plugin, entity.namespace)):
                     system.configure(
                         SystemContext(self.world, entity, plugin, self.bus, logger, world_name=self.world_name)
@@ -492,6 +507,7 @@ class Simulation:
                 named = plan.plugin.name if plan.plugin is not None else plan.sensor.name
                 logger = logging.getLogger(named or plan.sensor.name)
                 made.append(system)
+                self._seed_noise(system, entity.name, f"{plan.link}/{plan.sensor.name}/{named}")
                 with self.bus.declaring(plugin_node_name(plan.plugin, entity.namespace)):
                     system.configure(
                         SystemContext(

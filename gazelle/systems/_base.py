@@ -83,6 +83,10 @@ class System:
     def configure(self, ctx: SystemContext) -> None:
         """Read the configuration, check the entity, declare endpoints and actuators."""
 
+    def seed_noise(self, seed: int) -> None:
+        """Draw this system's noise from a stream seeded with ``seed`` (called before :meth:`configure`
+        when the simulation has a seed: a run then repeats bit for bit). Systems without noise ignore it."""
+
     def next_update(self, sim_time_sec: float) -> float:
         """The sim time at which this system next needs a phase call (at or after ``sim_time_sec``).
 

@@ -113,6 +113,9 @@ class P3D(System):
         self.phase_gate = self._gate
         self._rng = random.Random(seed)
 
+    def seed_noise(self, seed: int) -> None:
+        self._rng = random.Random(seed)
+
     def configure(self, ctx: SystemContext) -> None:
         log = ctx.logger
         self.config = c = parse_config(ctx, log)

@@ -418,6 +418,9 @@ class _SensorSystem(System):
         self._rng = np.random.default_rng(seed)
         self._step_sec = 0.0
 
+    def seed_noise(self, seed: int) -> None:
+        self._rng = np.random.default_rng(seed)
+
     def node_parameters(self) -> dict[str, ParamValue]:
         """A gazebo_ros sensor plugin's node shows the sensor's rate as ``update_rate``."""
         return {"update_rate": float(self.rate_hz)}
@@ -1411,6 +1414,9 @@ class ForceTorqueSensor(System):
         self._pub: Endpoint | None = None
         self._gate = RateGate()
         self.phase_gate = self._gate
+        self._rng = np.random.default_rng(seed)
+
+    def seed_noise(self, seed: int) -> None:
         self._rng = np.random.default_rng(seed)
 
     @property

@@ -1,0 +1,325 @@
+"""A `gazelle sim` server owned by a test: started paused on a private domain, stepped by the test in
+sim time, with the robots it spawns, the launch files it runs and an optional MCAP recording, all torn
+down with it."""
+
+from __future__ import annotations
+
+import contextlib
+import math
+import os
+import re
+import signal
+import subprocess
+import sys
+import threading
+import time
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+from ._ros_node import RosTestNode, TestTimeout
+
+__all__ = ["ChildProcess", "Sim", "SimError"]
+
+_READY = re.compile(r"gazelle: ready: .* step ([0-9.eE+-]+) ms")
+STEP_CHUNK_SEC = 0.05
+"""run_until checks its predicate every this much sim time (and the test node catches up in between)."""
+
+
+class SimError(RuntimeError):
+    """The simulation could not do what the test asked (start, spawn, launch): the message says why,
+    with the last lines the process printed."""
+
+
+class ChildProcess:
+    """A process the test started (the server, a spawn, a launch, a recorder), in a process group of its
+    own so that stopping it stops everything it started; its output is kept line by line."""
+
+    def __init__(self, name: str, argv: Sequence[str], env: Mapping[str, str], cwd: Path | None = None) -> None:
+        self.name = name
+        self.argv = list(argv)
+        self.lines: list[str] = []
+        self._cond = threading.Condition()
+        self.popen = subprocess.Popen(
+            self.argv,
+            env=dict(env),
+            cwd=cwd,
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+            errors="replace",
+            start_new_session=True,
+        )
+        threading.Thread(target=self._read, name=f"gazelle-test-{name}", daemon=True).start()
+
+    def _read(self) -> None:
+        assert self.popen.stdout is not None
+        for line in self.popen.stdout:
+            with self._cond:
+                self.lines.append(line.rstrip("\n"))
+                self._cond.notify_all()
+        with contextlib.suppress(subprocess.TimeoutExpired):
+            self.popen.wait(5)
+        with self._cond:
+            self._cond.notify_all()
+
+    @property
+    def output(self) -> str:
+        with self._cond:
+            return "\n".join(self.lines)
+
+    def tail(self, n: int = 20) -> str:
+        with self._cond:
+            return "\n".join(self.lines[-n:])
+
+    def wait_line(self, pattern: re.Pattern[str], timeout: float) -> re.Match[str]:
+        """The first output line matching ``pattern``; SimError if the process ends or time runs out."""
+        deadline = time.monotonic() + timeout
+        seen = 0
+        with self._cond:
+            while True:
+                for line in self.lines[seen:]:
+                    if m := pattern.search(line):
+                        return m
+                seen = len(self.lines)
+                if self.popen.poll() is not None:
+                    raise SimError(f"{self.name} exited with {self.popen.returncode}:\n{self.tail()}")
+                left = deadline - time.monotonic()
+                if left <= 0:
+                    raise SimError(
+                        f"{self.name} did not print {pattern.pattern!r} within {timeout:g} s:\n{self.tail()}"
+                    )
+                self._cond.wait(min(left, 0.1))
+
+    def wait(self, timeout: float) -> int:
+        try:
+            return self.popen.wait(timeout)
+        except subprocess.TimeoutExpired:
+            raise SimError(f"{self.name} did not end within {timeout:g} s:\n{self.tail()}") from None
+
+    def stop(self, timeout: float = 10.0) -> int | None:
+        """SIGINT to its whole group (as Ctrl-C), SIGKILL after ``timeout``; returns the exit status."""
+        if self.popen.poll() is None:
+            with contextlib.suppress(ProcessLookupError):
+                os.killpg(self.popen.pid, signal.SIGINT)
+            try:
+                self.popen.wait(timeout)
+            except subprocess.TimeoutExpired:
+                pass
+        # whatever it started and left behind goes too (the group outlives its leader)
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(self.popen.pid, signal.SIGKILL)
+        with contextlib.suppress(subprocess.TimeoutExpired):
+            self.popen.wait(5)
+        return self.popen.returncode
+
+
+def gazelle_command(*args: str) -> list[str]:
+    return [sys.executable, "-m", "gazelle.cli", *args]
+
+
+class Sim:
+    """The ``gazelle_sim`` fixture: a server started paused, and the test's ROS node (``ros``).
+
+    Time is the test's: nothing moves until ``run_for``/``run_until`` steps the world (as fast as the
+    machine allows, through simulation_interfaces' StepSimulation), and every timeout given in sim
+    seconds means the same on a slow runner as on a fast one. Wall-clock limits only catch a hung
+    server.
+    """
+
+    def __init__(
+        self,
+        *,
+        domain_id: int,
+        world: str | os.PathLike[str] | None = None,
+        seed: int = 0,
+        paused: bool = True,
+        rtf: float | None = None,
+        env: Mapping[str, str] | None = None,
+        start_timeout: float = 60.0,
+    ) -> None:
+        self.domain_id = domain_id
+        self.seed = seed
+        self.paused = paused
+        self.env = {
+            **(env if env is not None else os.environ),
+            "ROS_DOMAIN_ID": str(domain_id),
+            "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST",
+            "RMW_IMPLEMENTATION": "rmw_fastrtps_cpp",
+        }
+        self.env.pop("ROS_LOCALHOST_ONLY", None)
+        self.env.pop("ROS_STATIC_PEERS", None)
+        self.children: list[ChildProcess] = []
+        self.ros: RosTestNode | None = None
+        args = ["sim", *([str(world)] if world is not None else []), "--no-viewer", "--seed", str(seed)]
+        if paused:
+            args.append("--paused")
+        if rtf is not None:
+            args += ["--rtf", f"{rtf:g}"]
+        self.server = self._child("gazelle sim", gazelle_command(*args))
+        try:
+            # the test's node comes up while the server starts: discovery overlaps the server's imports
+            self.ros = RosTestNode(domain_id)
+            m = self.server.wait_line(_READY, start_timeout)
+            self.step_sec = float(m.group(1)) / 1000.0
+            from simulation_interfaces.srv import StepSimulation
+
+            self._step_srv = StepSimulation
+            self._step_client = self.ros.wait_for_service("/gazelle/step_simulation", StepSimulation, timeout=start_timeout)
+        except BaseException:
+            self.close()
+            raise
+
+    # ------------------------------------------------------------------ processes
+    def _child(self, name: str, argv: Sequence[str], cwd: Path | None = None) -> ChildProcess:
+        child = ChildProcess(name, argv, self.env, cwd)
+        self.children.append(child)
+        return child
+
+    def spawn(
+        self,
+        file: str | os.PathLike[str],
+        name: str,
+        *,
+        namespace: str = "",
+        pose: Sequence[float] = (0.0, 0.0, 0.0),
+        yaw: float = 0.0,
+        args: Mapping[str, str] | None = None,
+        timeout: float = 60.0,
+    ) -> None:
+        """Spawn a robot from a file as ``gazelle spawn -file`` does (xacro expanded with ``args``, meshes
+        and <parameters> resolved from the file's package); SimError with the reason if it is refused."""
+        x, y, z = (list(pose) + [0.0, 0.0, 0.0])[:3]
+        argv = ["spawn", "-file", str(file), "-entity", name, "-x", f"{x}", "-y", f"{y}", "-z", f"{z}", "-Y", f"{yaw}"]
+        if namespace:
+            argv += ["-robot_namespace", namespace]
+        for k, v in (args or {}).items():
+            argv += ["--arg", f"{k}:={v}"]
+        child = self._child(f"gazelle spawn {name}", gazelle_command(*argv))
+        if child.wait(timeout) != 0:
+            raise SimError(f"spawning {name} from {file} failed:\n{child.tail()}")
+
+    def launch(
+        self, package_or_path: str | os.PathLike[str], file: str | None = None, **arguments: Any
+    ) -> ChildProcess:
+        """Run a launch file as ``ros2 launch`` does (``launch("my_pkg", "sim.launch.py", use_sim_time="true")``
+        or ``launch(path)``); its processes belong to the test and end with it."""
+        argv = [str(Path(sys.prefix) / "bin" / "ros2"), "launch", str(package_or_path)]
+        if file is not None:
+            argv.append(file)
+        argv += [f"{k}:={v}" for k, v in arguments.items()]
+        return self._child(f"ros2 launch {package_or_path} {file or ''}".strip(), argv)
+
+    def run(self, argv: Sequence[str], name: str | None = None, cwd: Path | None = None) -> ChildProcess:
+        """Start any other process on the simulation's domain (a node of the user's); it ends with the test."""
+        return self._child(name or Path(argv[0]).name, argv, cwd)
+
+    # ------------------------------------------------------------------ time
+    @property
+    def time(self) -> float:
+        """Sim time as the test has heard it on /clock."""
+        assert self.ros is not None
+        return self.ros.sim_time
+
+    def _check_server(self) -> None:
+        if self.server.popen.poll() is not None:
+            raise SimError(f"the simulation server exited with {self.server.popen.returncode}:\n{self.server.tail()}")
+
+    def _step(self, steps: int, wall_timeout: float) -> None:
+        assert self.ros is not None
+        self._check_server()
+        req = self._step_srv.Request()
+        req.steps = steps
+        done = threading.Event()
+        future = self._step_client.call_async(req)
+        future.add_done_callback(lambda _f: done.set())
+        if not done.wait(wall_timeout):
+            self._check_server()
+            raise SimError(f"the simulation did not take {steps} steps within {wall_timeout:g} s of wall time (hung?)")
+        result = future.result().result
+        if result.result != 1:  # simulation_interfaces/Result RESULT_OK
+            raise SimError(f"StepSimulation({steps}) refused: {result.error_message}")
+
+    def run_for(self, seconds: float, wall_timeout: float = 300.0) -> float:
+        """Advance sim time by ``seconds`` (paused server: stepped as fast as possible; running server:
+        waited for), then wait until the test has heard /clock get there. Returns the sim time."""
+        assert self.ros is not None
+        if seconds < 0 or not math.isfinite(seconds):
+            raise ValueError(f"run_for takes a finite time >= 0, got {seconds!r}")
+        start = self.ros.sim_time
+        target = start + seconds
+        if self.paused:
+            steps = round(seconds / self.step_sec)
+            while steps > 0:
+                chunk = min(steps, 100_000)
+                self._step(chunk, wall_timeout)
+                steps -= chunk
+        # /clock is published every 10 ms of sim time (gazelle sim's --clock-rate): the last tick heard
+        heard_target = math.floor(target * 100 + 1e-6) / 100
+        return self.ros.wait_for_sim_time(heard_target, timeout=wall_timeout)
+
+    def run_until(
+        self, predicate: Callable[[], Any], timeout: float, what: str = "the condition", wall_timeout: float = 600.0
+    ) -> Any:
+        """Step the world until ``predicate()`` is truthy, at most ``timeout`` seconds of **sim** time
+        (checked every 50 ms of sim time); returns the predicate's value, or fails the test naming
+        ``what`` and the sim time waited."""
+        assert self.ros is not None
+        start, deadline = self.ros.sim_time, time.monotonic() + wall_timeout
+        while True:
+            value = predicate()
+            if value:
+                return value
+            if self.ros.sim_time - start >= timeout - 1e-9:
+                raise TestTimeout(f"{what}: not within {timeout:g} s of sim time")
+            if time.monotonic() > deadline:
+                raise SimError(f"{what}: {wall_timeout:g} s of wall time passed (the simulation is hung?)")
+            self.run_for(min(STEP_CHUNK_SEC, timeout - (self.ros.sim_time - start)))
+
+    # ------------------------------------------------------------------ recording
+    def record(self, folder: str | os.PathLike[str], topics: Sequence[str]) -> ChildProcess:
+        """Record ``topics`` (and /tf, /tf_static, /clock) into a rosbag2 MCAP folder until the test ends."""
+        names = list(dict.fromkeys([*topics, "/tf", "/tf_static", "/clock"]))
+        argv = [str(Path(sys.prefix) / "bin" / "ros2"), "bag", "record", "-o", str(folder), *names]
+        return self._child("ros2 bag record", argv)
+
+    def wait_for_recorder(self, timeout: float = 30.0) -> None:
+        """Wait until the recorder has subscribed (it hears /clock beside the test's node), so that the
+        first step the test takes is in the bag."""
+        assert self.ros is not None
+        node = self.ros.node
+        try:
+            self.ros.wait_until(lambda: node.count_subscribers("/clock") >= 2, timeout, "the bag recorder on /clock")
+        except AssertionError as err:
+            raise SimError(f"{err}:\n{self.children[-1].tail()}") from None
+
+    def close(self) -> list[str]:
+        """Stop every process (the newest first: a launch before the server it talks to) and the test's
+        node. Returns the names of processes that had to be killed."""
+        killed = []
+        for child in reversed(self.children):
+            running = child.popen.poll() is None
+            child.stop()
+            if running and child.popen.returncode not in (0, -signal.SIGINT, 130, signal.SIGINT):
+                killed.append(child.name)
+        if self.ros is not None:
+            self.ros.close()
+            self.ros = None
+        return killed
+
+    @contextlib.contextmanager
+    def env_applied(self) -> Iterator[None]:
+        """os.environ with this simulation's domain while the block runs (for code under test that
+        creates its own rclpy context from the environment)."""
+        keys = ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE", "RMW_IMPLEMENTATION")
+        saved = {k: os.environ.get(k) for k in keys}
+        os.environ.update({k: self.env[k] for k in keys})
+        try:
+            yield
+        finally:
+            for k, v in saved.items():
+                if v is None:
+                    os.environ.pop(k, None)
+                else:
+                    os.environ[k] = v

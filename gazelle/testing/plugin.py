@@ -1,0 +1,187 @@
+"""gazelle's pytest plugin (entry point ``pytest11``: loaded by every pytest in a venv with gazelle).
+
+Fixtures for a user's own robot tests (see docs/robot_tests.md):
+
+* ``gazelle_sim``: a headless ``gazelle sim`` on a private ROS domain with localhost discovery, started
+  paused; the test moves time with ``run_for``/``run_until``; ``spawn``, ``launch`` and ``run`` start
+  what the test needs, and everything ends with the test, pass or fail.
+* ``ros``: the test's rclpy node on that domain (``gazelle_sim.ros``).
+* ``gazelle_seed``: the seed of this test's run (``--gazelle-seed``, default 0), given to the server.
+
+Configure a test with ``@pytest.mark.gazelle(world=..., record=[...], paused=True, rtf=None)``. A failing
+test keeps an MCAP bag (rosbag2 layout) of the topics it named plus /tf, /tf_static and /clock, and
+the server's output, under ``--gazelle-artifacts-dir`` (default ``gazelle-artifacts/`` in pytest's
+root folder); ``--gazelle-artifacts=all`` keeps them for every test, ``none`` records nothing.
+
+Importing this module imports neither rclpy nor the simulation: a plugin loaded in every pytest run
+must cost nothing where it is not used.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import signal
+import uuid
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+_REPORT = pytest.StashKey[dict[str, pytest.TestReport]]()
+_ARTIFACTS = pytest.StashKey[tuple[Path, int]]()
+TOKEN_VAR = "GAZELLE_TEST_TOKEN"
+"""Set in the environment of everything a test starts, so a process left behind can be found."""
+
+
+def pytest_addoption(parser: pytest.Parser) -> None:
+    group = parser.getgroup("gazelle", "gazelle robot tests")
+    group.addoption("--gazelle-seed", type=int, default=0, help="seed of every gazelle_sim (default 0)")
+    group.addoption(
+        "--gazelle-artifacts",
+        choices=("failed", "all", "none"),
+        default="failed",
+        help="keep the bag and server log of failing tests (default), of all tests, or record nothing",
+    )
+    group.addoption(
+        "--gazelle-artifacts-dir", default=None, help="where artifacts go (default: gazelle-artifacts/ in the rootdir)"
+    )
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    config.addinivalue_line(
+        "markers",
+        "gazelle(world=None, record=(), paused=True, rtf=None, start_timeout=60): configure the gazelle_sim fixture",
+    )
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo[None]) -> Iterator[None]:
+    report = yield
+    item.stash.setdefault(_REPORT, {})[report.when] = report
+    if report.failed and _ARTIFACTS in item.stash:
+        folder, seed = item.stash[_ARTIFACTS]
+        mode = item.config.getoption("--gazelle-artifacts")
+        kept = f"; artifacts (bag, server log): {folder}" if mode != "none" else ""
+        report.sections.append(("gazelle", f"seed {seed} (rerun with --gazelle-seed {seed}){kept}"))
+    return report
+
+
+def _safe(nodeid: str) -> str:
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", nodeid).strip("_")[:150]
+
+
+@pytest.fixture
+def gazelle_seed(request: pytest.FixtureRequest) -> int:
+    marker = request.node.get_closest_marker("gazelle")
+    if marker is not None and "seed" in marker.kwargs:
+        return int(marker.kwargs["seed"])
+    seed = request.config.getoption("--gazelle-seed")
+    return int(seed) if seed is not None else 0
+
+
+def _leaked(token: str) -> list[tuple[int, str]]:
+    """(pid, command line) of live processes carrying ``token`` in their environment, besides this one."""
+    found = []
+    needle = f"{TOKEN_VAR}={token}".encode()
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit() or int(entry) == os.getpid():
+            continue
+        try:
+            with open(f"/proc/{entry}/environ", "rb") as f:
+                if needle not in f.read().split(b"\0"):
+                    continue
+            with open(f"/proc/{entry}/cmdline", "rb") as f:
+                cmd = f.read().replace(b"\0", b" ").decode(errors="replace").strip()
+            with open(f"/proc/{entry}/stat", "rb") as f:
+                if f.read().split(b")")[-1].split()[0] == b"Z":
+                    continue  # a zombie is already dead: its parent has yet to reap it
+        except OSError:
+            continue
+        found.append((int(entry), cmd))
+    return found
+
+
+@pytest.fixture
+def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[Any]:
+    try:
+        from ._domain import reserve_domain
+        from ._sim import Sim
+    except ImportError as err:  # ROS 2's Python packages are not in this environment
+        pytest.fail(f"gazelle_sim needs ROS 2 (rclpy) in this environment: {err}", pytrace=False)
+    marker = request.node.get_closest_marker("gazelle")
+    options: dict[str, Any] = dict(marker.kwargs) if marker is not None else {}
+    record = list(options.pop("record", ()))
+    options.pop("seed", None)
+    unknown = set(options) - {"world", "paused", "rtf", "start_timeout"}
+    if unknown:
+        pytest.fail(f"@pytest.mark.gazelle: unknown option(s) {', '.join(sorted(unknown))}", pytrace=False)
+    world = options.get("world")
+    if world is not None and not Path(world).is_file():
+        pytest.fail(f"@pytest.mark.gazelle(world=...): no such world file: {world}", pytrace=False)
+    config = request.config
+    mode = config.getoption("--gazelle-artifacts")
+    base = Path(config.getoption("--gazelle-artifacts-dir") or Path(config.rootpath) / "gazelle-artifacts")
+    folder = base / _safe(request.node.nodeid)
+    request.node.stash[_ARTIFACTS] = (folder, gazelle_seed)
+    if folder.exists():
+        shutil.rmtree(folder)
+
+    domain = reserve_domain()
+    token = uuid.uuid4().hex
+    env = {**os.environ, TOKEN_VAR: token}
+    sim = None
+    saved = {k: os.environ.get(k) for k in ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE", TOKEN_VAR)}
+    try:
+        try:
+            sim = Sim(
+                domain_id=domain.domain_id,
+                world=world,
+                seed=gazelle_seed,
+                paused=bool(options.get("paused", True)),
+                rtf=options.get("rtf"),
+                env=env,
+                start_timeout=float(options.get("start_timeout", 60.0)),
+            )
+        except Exception as err:
+            pytest.fail(f"gazelle_sim did not start: {err}", pytrace=False)
+        if mode != "none":
+            folder.mkdir(parents=True, exist_ok=True)
+            sim.record(folder / "bag", record)
+            sim.wait_for_recorder()
+        # what the test itself starts (rclpy's default context, a subprocess) is on this domain too
+        os.environ.update({"ROS_DOMAIN_ID": str(domain.domain_id), "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"})
+        os.environ[TOKEN_VAR] = token
+        yield sim
+    finally:
+        for k, v in saved.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
+        if sim is not None:
+            sim.close()
+            if mode != "none" and folder.exists():
+                (folder / "server.log").write_text(sim.server.output + "\n")
+        leaks = _leaked(token)
+        for pid, _cmd in leaks:
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+        domain.release()
+        reports = request.node.stash.get(_REPORT, {})
+        failed = any(r.failed for r in reports.values()) or bool(leaks)  # a leak fails the test: keep them
+        if mode == "failed" and not failed and folder.exists():
+            shutil.rmtree(folder, ignore_errors=True)
+        if leaks:
+            listed = "; ".join(f"pid {pid} ({cmd[:120]})" for pid, cmd in leaks)
+            pytest.fail(f"the test left {len(leaks)} process(es) running (killed now): {listed}", pytrace=False)
+
+
+@pytest.fixture
+def ros(gazelle_sim: Any) -> Any:
+    """The test's rclpy node on the simulation's domain (see gazelle.testing.RosTestNode)."""
+    return gazelle_sim.ros

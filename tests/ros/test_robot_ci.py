@@ -1,0 +1,142 @@
+"""Issue 30: gazelle's pytest plugin runs a user's own robot tests (examples/robot_tests), keeps a bag
+and the server's log of a failing test, names its seed, and leaves no process behind.
+
+Each case runs an inner pytest as a user would (a plain `pytest` in the venv: the plugin comes in
+through its pytest11 entry point), with its own artifacts folder.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import textwrap
+import uuid
+from pathlib import Path
+
+import pytest
+from _paths import REAL, REPO
+
+EXAMPLE = REPO / "examples" / "robot_tests"
+TB3 = REAL / "turtlebot3" / "turtlebot3_gazebo"
+LEAK_MARK = "GAZELLE_ROBOT_CI_CHECK"
+
+pytestmark = pytest.mark.slow
+
+
+def inner_pytest(args: list[str], tmp_path: Path, timeout: float = 300) -> tuple[subprocess.CompletedProcess, str]:
+    mark = uuid.uuid4().hex
+    env = {**os.environ, "TURTLEBOT3_GAZEBO": str(TB3), LEAK_MARK: mark}
+    env.pop("PYTEST_XDIST_WORKER", None)
+    env.pop("PYTEST_ADDOPTS", None)
+    out = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pytest",
+            "-p",
+            "no:cacheprovider",
+            "-p",
+            "no:xdist",
+            "-q",
+            "-rA",
+            "--gazelle-artifacts-dir",
+            str(tmp_path / "artifacts"),
+            *args,
+        ],
+        capture_output=True,
+        text=True,
+        timeout=timeout,
+        env=env,
+        cwd=tmp_path,
+    )
+    return out, mark
+
+
+def survivors(mark: str) -> list[str]:
+    """Processes still alive that the inner run started (they carry its mark in their environment)."""
+    found = []
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/environ", "rb") as f:
+                if f"{LEAK_MARK}={mark}".encode() not in f.read().split(b"\0"):
+                    continue
+            with open(f"/proc/{entry}/stat", "rb") as f:
+                if f.read().split(b")")[-1].split()[0] == b"Z":
+                    continue
+            with open(f"/proc/{entry}/cmdline", "rb") as f:
+                cmd = f.read().replace(b"\0", b" ").decode(errors="replace")
+            found.append(f"{entry}: {cmd}")
+        except OSError:
+            continue
+    return found
+
+
+def test_the_example_packages_robot_tests_pass_with_plain_pytest(tmp_path: Path) -> None:
+    """The seed robot and TurtleBot3 (its real files, in its own world) drive to their goals under a
+    P-controller node of the package's own, within 0.2 m in 60 s of sim time; TurtleBot3's lidar never
+    sees anything nearer than 0.15 m. Passing tests keep no artifacts."""
+    out, mark = inner_pytest([str(EXAMPLE / "test")], tmp_path)
+    assert out.returncode == 0, out.stdout[-4000:] + out.stderr[-2000:]
+    assert "2 passed" in out.stdout, out.stdout[-2000:]
+    assert not (tmp_path / "artifacts").exists() or not any((tmp_path / "artifacts").iterdir())
+    assert survivors(mark) == []
+
+
+FAILING = """
+import pytest
+from nav_msgs.msg import Odometry
+
+ROBOT = {robot!r}
+
+
+@pytest.mark.gazelle(record=["/odom"])
+def test_the_robot_should_fly(gazelle_sim, ros):
+    gazelle_sim.spawn(ROBOT, "simple_robot", pose=(0.0, 0.0, 0.07))
+    odom = ros.subscribe("/odom", Odometry)
+    gazelle_sim.run_for(1.0)
+    odom.wait(1, 10)
+    assert odom.last.pose.pose.position.z > 1.0, "the robot is on the ground"
+
+
+def test_a_world_that_is_not_there(gazelle_sim):
+    pass
+
+
+test_a_world_that_is_not_there = pytest.mark.gazelle(world="/no/such/world.sdf")(test_a_world_that_is_not_there)
+
+
+def test_a_test_that_leaves_a_process(gazelle_sim):
+    import subprocess
+    import sys
+
+    subprocess.Popen([sys.executable, "-c", "import time; time.sleep(600)"])
+"""
+
+
+def test_a_failing_test_keeps_its_bag_and_log_and_bad_input_is_one_line_each(tmp_path: Path) -> None:
+    robot = REPO / "examples" / "simple_robot" / "simple_robot" / "robot.urdf.xacro"
+    (tmp_path / "test_user.py").write_text(textwrap.dedent(FAILING.format(robot=str(robot))))
+    out, mark = inner_pytest(["test_user.py", "--gazelle-seed", "42"], tmp_path)
+    text = out.stdout
+    assert out.returncode == 1, text[-4000:] + out.stderr[-2000:]
+    # the failing test: its assertion, its seed and where its artifacts are
+    assert "the robot is on the ground" in text
+    assert "seed 42 (rerun with --gazelle-seed 42)" in text
+    folder = tmp_path / "artifacts" / "test_user.py_test_the_robot_should_fly"
+    assert f"artifacts (bag, server log): {folder}" in text
+    assert "gazelle: ready" in (folder / "server.log").read_text()
+    bags = list((folder / "bag").glob("*.mcap"))
+    assert bags and (folder / "bag" / "metadata.yaml").is_file(), list((folder / "bag").iterdir())
+    from mcap.reader import make_reader
+
+    with open(bags[0], "rb") as f:
+        topics = {c.topic for _s, c, _m in make_reader(f).iter_messages()}
+    assert {"/odom", "/clock"} <= topics, topics
+    # bad input: one clear line each, never a traceback of the harness
+    assert "no such world file: /no/such/world.sdf" in text
+    assert "the test left 1 process(es) running (killed now)" in text and "time.sleep(600)" in text
+    assert "Traceback" not in text
+    assert survivors(mark) == []
