@@ -166,7 +166,9 @@ class Sim:
             from simulation_interfaces.srv import StepSimulation
 
             self._step_srv = StepSimulation
-            self._step_client = self.ros.wait_for_service("/gazelle/step_simulation", StepSimulation, timeout=start_timeout)
+            self._step_client = self.ros.wait_for_service(
+                "/gazelle/step_simulation", StepSimulation, timeout=start_timeout
+            )
         except BaseException:
             self.close()
             raise

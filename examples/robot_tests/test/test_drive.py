@@ -35,7 +35,17 @@ def distance(odom, x, y):
 
 def start_go_to_goal(gazelle_sim, ros, x, y):
     gazelle_sim.run(
-        [sys.executable, str(GO_TO_GOAL), "--ros-args", "-p", "use_sim_time:=true", "-p", f"goal_x:={x}", "-p", f"goal_y:={y}"],
+        [
+            sys.executable,
+            str(GO_TO_GOAL),
+            "--ros-args",
+            "-p",
+            "use_sim_time:=true",
+            "-p",
+            f"goal_x:={x}",
+            "-p",
+            f"goal_y:={y}",
+        ],
         name="go_to_goal",
     )
     # the node is up once it publishes /cmd_vel and listens to /odom
@@ -62,5 +72,7 @@ def test_turtlebot3_reaches_a_goal_and_its_lidar_never_sees_anything_nearer_than
     start_go_to_goal(gazelle_sim, ros, 1.45, -0.05)
     gazelle_sim.run_until(lambda: distance(odom.last, 1.45, -0.05) < 0.2, timeout=60.0, what="within 0.2 m of the goal")
     assert len(scans) > 10
-    nearest = min(min((r for r in s.ranges if s.range_min <= r <= s.range_max), default=math.inf) for s in scans.messages)
+    nearest = min(
+        min((r for r in s.ranges if s.range_min <= r <= s.range_max), default=math.inf) for s in scans.messages
+    )
     assert nearest > 0.15, f"the lidar saw something {nearest:.3f} m away"
