@@ -129,6 +129,8 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
     if folder.exists():
         shutil.rmtree(folder)
 
+    if mode != "none":
+        folder.mkdir(parents=True, exist_ok=True)
     domain = reserve_domain()
     token = uuid.uuid4().hex
     env = {**os.environ, TOKEN_VAR: token}
@@ -144,13 +146,10 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
                 rtf=options.get("rtf"),
                 env=env,
                 start_timeout=float(options.get("start_timeout", 60.0)),
+                record=(folder / "bag", record) if mode != "none" else None,
             )
         except Exception as err:
             pytest.fail(f"gazelle_sim did not start: {err}", pytrace=False)
-        if mode != "none":
-            folder.mkdir(parents=True, exist_ok=True)
-            sim.record(folder / "bag", record)
-            sim.wait_for_recorder()
         # what the test itself starts (rclpy's default context, a subprocess) is on this domain too
         os.environ.update({"ROS_DOMAIN_ID": str(domain.domain_id), "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"})
         os.environ[TOKEN_VAR] = token

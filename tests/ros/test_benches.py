@@ -21,6 +21,7 @@ BENCHES = [
     (["bench_introspection.py", "--smoke"], "messages the plain subscriber got that the bag lacks"),
     (["bench_launch.py", "--smoke"], "best "),
     (["bench_sensors.py", "--smoke"], "bench took"),
+    (["bench_robot_ci.py", "--smoke"], "bench took"),
     (["bench_viewer.py", "--seconds", "0.5", "--rounds", "1", "--scenario", "flat"], "bench took"),
 ]
 
