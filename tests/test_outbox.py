@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import threading
+import time
 from collections.abc import Callable
 
 from gazelle.ros._outbox import Outbox
@@ -22,9 +23,11 @@ def test_everything_is_published_in_the_order_it_was_queued_across_lanes():
     box.close()
 
 
-def _stuck_publisher() -> tuple[Outbox, threading.Event, threading.Event, list[int], Callable[[int], None]]:
+def _stuck_publisher(
+    lossless: bool = True,
+) -> tuple[Outbox, threading.Event, threading.Event, list[int], Callable[[int], None]]:
     """An outbox and a publish function that blocks until ``release`` is set (``publishing`` says it started)."""
-    box = Outbox()
+    box = Outbox(lossless=lossless)
     release, publishing = threading.Event(), threading.Event()
     got: list[int] = []
 
@@ -36,8 +39,9 @@ def _stuck_publisher() -> tuple[Outbox, threading.Event, threading.Event, list[i
     return box, release, publishing, got, slow
 
 
-def test_a_publisher_thread_that_falls_behind_drops_the_oldest_of_a_lane_and_never_blocks_the_queuer():
-    box, release, publishing, got, slow = _stuck_publisher()
+def test_a_lossy_outbox_behind_drops_the_oldest_of_a_lane_and_never_blocks_the_queuer():
+    """`gazelle sim --drop-when-behind`: the opt-in trade of messages for speed."""
+    box, release, publishing, got, slow = _stuck_publisher(lossless=False)
     lane = box.lane(slow, 3, "/joint_states")
     lane.put(0)
     assert publishing.wait(5)  # 0 is being published; the publisher thread is stuck in it
@@ -88,4 +92,63 @@ def test_a_failing_publish_is_reported_once_per_topic_and_the_thread_goes_on(cap
     assert box.flush(5)
     assert got == [0, 1, 2]
     assert sum("publishing on /gone failed" in r.getMessage() for r in caplog.records) == 1
+    box.close()
+
+
+def test_by_default_a_publisher_thread_behind_makes_the_queuer_wait_and_nothing_is_dropped():
+    """Issue 29: every payload the simulation produces is published, in order; when publishing is slow
+    (1 ms a message here, on purpose) the queuer (the simulation thread) goes at the publisher's pace."""
+    got: list[int] = []
+
+    def slow(p: int) -> None:
+        time.sleep(0.001)
+        got.append(p)
+
+    box = Outbox()
+    lane = box.lane(slow, 5, "/odom")
+    t0 = time.perf_counter()
+    for i in range(300):
+        lane.put(i)
+    queued_in = time.perf_counter() - t0
+    assert box.flush(10)
+    assert got == list(range(300)) and box.dropped == 0
+    assert queued_in >= 0.25, f"300 puts at 1 ms a publish took {queued_in:.3f} s: the queuer did not wait"
+    assert box.waited > 0
+    box.close()
+
+    lossy = Outbox(lossless=False)
+    got.clear()
+    lane = lossy.lane(slow, 5, "/odom")
+    t0 = time.perf_counter()
+    for i in range(300):
+        lane.put(i)
+    assert time.perf_counter() - t0 < 0.1
+    assert lossy.flush(10)
+    assert lossy.dropped > 0 and len(got) == 300 - lossy.dropped and got == sorted(got)
+    lossy.close()
+
+
+def test_state_lanes_keep_their_newest_and_a_stuck_publish_never_freezes_the_queuer(caplog):
+    """/tf_static and /model_states are state: their lanes keep the newest and never wait. A publish that
+    never returns (a dead publisher) holds the queuer for the stall timeout once, then that lane drops,
+    with one warning naming it."""
+    box, release, publishing, got, slow = _stuck_publisher()
+    box.stall_timeout = 0.3
+    state = box.lane(slow, 1, "/model_states", keep_last=True)
+    state.put(0)
+    assert publishing.wait(5)
+    t0 = time.perf_counter()
+    for i in range(1, 50):
+        state.put(i)
+    assert time.perf_counter() - t0 < 0.1
+    messages = box.lane(slow, 2, "/odom")
+    t0 = time.perf_counter()
+    for i in range(100, 110):
+        messages.put(i)
+    held = time.perf_counter() - t0
+    assert 0.25 <= held < 0.6, held  # one stall timeout (0.3 s), then dropping; never frozen
+    assert sum("/odom" in r.message and "stuck" in r.message for r in caplog.records) == 1
+    release.set()
+    assert box.flush(5)
+    assert got[:2] == [0, 49] and got[2:] == [108, 109]
     box.close()

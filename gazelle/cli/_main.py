@@ -59,6 +59,12 @@ def sim(
         "Default: fresh entropy, so runs with noise differ.",
     ),
     arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
+    drop_when_behind: bool = typer.Option(
+        False,
+        "--drop-when-behind",
+        help="When publishing falls behind the simulation, drop the oldest messages (counted on "
+        "/gazelle/dropped_messages) instead of slowing the simulation down (the default: nothing dropped).",
+    ),
     no_viewer: bool = typer.Option(False, "--no-viewer", help="Do not serve the browser viewer."),
     viewer_host: str = typer.Option(
         "127.0.0.1", "--viewer-host", help="Interface the viewer binds to (0.0.0.0: every interface; think twice)."
@@ -105,6 +111,7 @@ def sim(
             ros_discovery=_discovery(ros_discovery),
             foxglove_port=foxglove,
             seed=seed,
+            drop_when_behind=drop_when_behind,
         )
     )
 

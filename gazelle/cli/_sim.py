@@ -62,6 +62,7 @@ def run_sim(
     ros_discovery: str | None = None,
     foxglove_port: int | None = None,
     seed: int | None = None,
+    drop_when_behind: bool = False,
 ) -> int:
     """Run the server; returns the process exit code."""
     logging.basicConfig(level=logging.INFO, format="[%(levelname)s] [%(name)s]: %(message)s", stream=sys.stderr)
@@ -93,7 +94,7 @@ def run_sim(
     # rclpy prints our records itself once the bridge is up
     for h in list(logging.getLogger().handlers):
         logging.getLogger().removeHandler(h)
-    bridge = RosBridge(sim, clock_rate_hz=clock_rate_hz, announce=True)
+    bridge = RosBridge(sim, clock_rate_hz=clock_rate_hz, announce=True, drop_when_behind=drop_when_behind)
     sim.start()
     view = None
     if viewer:
@@ -117,7 +118,8 @@ def run_sim(
     print(
         f"gazelle: ready: world '{world.name}' ({len(sim.world.entities)} entities), "
         f"step {sim.world.timestep * 1000:g} ms, real-time factor {target}, "
-        f"ROS_DOMAIN_ID={os.environ.get('ROS_DOMAIN_ID', '0')}, discovery {discovery}",
+        f"ROS_DOMAIN_ID={os.environ.get('ROS_DOMAIN_ID', '0')}, discovery {discovery}, publishing "
+        + ("drops the oldest when behind (--drop-when-behind)" if drop_when_behind else "lossless"),
         flush=True,
     )
     rc = 0

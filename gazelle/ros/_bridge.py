@@ -193,6 +193,7 @@ class SimulationNode(Node):
         node_name: str = "gazelle",
         clock_rate_hz: float = 100.0,
         context: Context | None = None,
+        drop_when_behind: bool = False,
     ):
         super().__init__(node_name, context=context)
         self.sim = sim
@@ -203,8 +204,23 @@ class SimulationNode(Node):
         self._sinks: dict[int, Any] = {}
         """id(publisher endpoint) -> the sink this bridge added to it (other sinks stay)."""
         self._static: dict[int, tuple[Transform, ...]] = {}
-        self.outbox = Outbox()
+        self.outbox = Outbox(lossless=not drop_when_behind)
         """The publisher thread: the simulation thread only queues payloads (see ``_outbox``)."""
+        if drop_when_behind:  # the opt-in loss is counted where anyone can see it
+            from std_msgs.msg import UInt64
+
+            self._dropped_pub = self.create_publisher(
+                UInt64, "~/dropped_messages", QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+            )
+            self._dropped_reported = -1
+
+            def report_dropped() -> None:
+                if self.outbox.dropped != self._dropped_reported:
+                    self._dropped_reported = self.outbox.dropped
+                    self._dropped_pub.publish(UInt64(data=self._dropped_reported))
+
+            report_dropped()
+            self.create_timer(1.0, report_dropped, callback_group=self._cb)
         self._lanes: dict[int, Lane] = {}
         """id(publisher endpoint) -> its lane in the outbox."""
         self._managers: dict[str, Any] = {}
@@ -247,7 +263,7 @@ class SimulationNode(Node):
         states_pub = self._model_states_pub
         self._model_states_heard = _Subscribed(states_pub)
         self._model_states_lane = self.outbox.lane(
-            lambda states: states_pub.publish(model_states_msg(states)), 1, "/model_states"
+            lambda states: states_pub.publish(model_states_msg(states)), 1, "/model_states", keep_last=True
         )
         self._model_states_period = 1.0 / MODEL_STATES_RATE_HZ
         self._last_model_states_wall = -math.inf
@@ -369,7 +385,9 @@ class SimulationNode(Node):
             if ep.msg_type is MsgType.TF_STATIC:
                 with self._lock:
                     if entry.lane is None:
-                        entry.lane = self.outbox.lane(lambda payload: handle.publish(convert(payload)), 1, ep.topic)
+                        entry.lane = self.outbox.lane(
+                            lambda payload: handle.publish(convert(payload)), 1, ep.topic, keep_last=True
+                        )
                 static_lane = entry.lane
                 sink = lambda payload: self._publish_static(static_lane, ep, payload)
             else:
@@ -733,7 +751,13 @@ class RosBridge:
     """Owns rclpy's context, the node and an executor thread for a simulation."""
 
     def __init__(
-        self, sim: Simulation, *, clock_rate_hz: float = 100.0, args: list[str] | None = None, announce: bool = False
+        self,
+        sim: Simulation,
+        *,
+        clock_rate_hz: float = 100.0,
+        args: list[str] | None = None,
+        announce: bool = False,
+        drop_when_behind: bool = False,
     ):
         """
         Args:
@@ -741,6 +765,8 @@ class RosBridge:
             clock_rate_hz: /clock rate in sim time.
             args: ROS arguments for rclpy.
             announce: take part in the one-server-per-domain check (``gazelle sim`` does).
+            drop_when_behind: when publishing falls behind, drop the oldest messages (counted in
+                ``node.outbox.dropped``) instead of making the simulation wait (see ``_outbox``).
         """
         self.context = Context()
         rclpy.init(args=args, context=self.context)
@@ -749,7 +775,9 @@ class RosBridge:
         root.addHandler(self._handler)
         if root.level > logging.INFO or root.level == logging.NOTSET:
             root.setLevel(logging.INFO)
-        self.node = SimulationNode(sim, clock_rate_hz=clock_rate_hz, context=self.context)
+        self.node = SimulationNode(
+            sim, clock_rate_hz=clock_rate_hz, context=self.context, drop_when_behind=drop_when_behind
+        )
         self.registry = ServerRegistry(self.node) if announce else None
         """Notices another server on the same ROS domain (``registry.conflict``)."""
         self.executor = MultiThreadedExecutor(num_threads=4, context=self.context)

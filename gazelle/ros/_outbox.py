@@ -5,16 +5,27 @@ feeds) and goes back to stepping; one publisher thread converts the payloads to 
 publishes them, in the order they were handed over. MuJoCo releases the GIL while it steps, so the
 conversion runs beside the physics on a second core instead of between its steps.
 
-A lane keeps the last ``depth`` payloads, as a DDS writer with KEEP_LAST history does: when the
-publisher thread falls behind (faster than real time, a slow machine), the oldest payload of that
-lane is dropped, and the simulation never waits and never piles up memory. Payloads are plain
-Python values (the bus's types), so building them on the sim thread and reading them here needs
-no lock on the world.
+Nothing is dropped by default: when the publisher thread falls behind (faster than real time, a slow
+machine) and a lane holds ``depth`` payloads, the simulation thread waits for room (backpressure), as
+Gazebo's simulation does, whose publishers run inside its step: every message the simulation produces
+is handed to DDS, in order, and what a listener receives no longer depends on the machine's load.
+Downstream, DDS's own QoS holds as ROS defines it (a KEEP_LAST reader that cannot keep up loses
+samples in DDS, and a reader that never reads never blocks a KEEP_LAST writer).
+
+``Outbox(lossless=False)`` (``gazelle sim --drop-when-behind``) is the opt-in trade: a full lane drops its
+oldest payload, as a DDS writer with KEEP_LAST history does, the simulation never waits, and
+:attr:`Outbox.dropped` counts what was lost. Lanes of state rather than messages (``keep_last=True``:
+/tf_static, /model_states) always keep only their newest. A publish stuck for ``stall_timeout`` seconds
+(a dead publisher) never freezes the simulation: that lane then drops, with one warning naming it.
+
+Payloads are plain Python values (the bus's types), so building them on the sim thread and reading
+them here needs no lock on the world.
 """
 
 from __future__ import annotations
 
 import logging
+import os
 import threading
 import time
 from collections import deque
@@ -27,18 +38,21 @@ _log = logging.getLogger("gazelle.ros")
 class Lane:
     """One publisher's queue in an :class:`Outbox` (keep-last ``depth``)."""
 
-    __slots__ = ("_box", "_publish", "closed", "depth", "items", "name")
+    __slots__ = ("_box", "_publish", "closed", "depth", "items", "keep_last", "name")
 
-    def __init__(self, box: Outbox, publish: Callable[[Any], None], depth: int, name: str):
+    def __init__(self, box: Outbox, publish: Callable[[Any], None], depth: int, name: str, keep_last: bool = False):
         self._box = box
         self._publish = publish
         self.depth = max(1, depth)
         self.items: deque[Any] = deque()
         self.name = name
+        self.keep_last = keep_last
+        """A lane of state (the newest is all that matters): never waits, keeps its newest ``depth``."""
         self.closed = False
 
     def put(self, payload: Any) -> None:
-        """Queue ``payload`` for publishing (never blocks; drops this lane's oldest when it is full)."""
+        """Queue ``payload`` for publishing. When the lane is full: waits for room (a lossless outbox),
+        or drops the lane's oldest (a lossy outbox, or a keep-last lane)."""
         self._box._put(self, payload)
 
     def close(self, timeout: float = 2.0) -> None:
@@ -50,7 +64,16 @@ class Lane:
 class Outbox:
     """A publisher thread fed by :class:`Lane` objects (see the module docstring)."""
 
-    def __init__(self, name: str = "gazelle-publish"):
+    def __init__(self, name: str = "gazelle-publish", *, lossless: bool = True, stall_timeout: float = 5.0):
+        self.lossless = lossless
+        """Wait for room instead of dropping (the default; see the module docstring)."""
+        self.stall_timeout = stall_timeout
+        self.waited = 0
+        """Puts that had to wait for the publisher thread (lossless): how often it set the pace."""
+        self._stalled: set[str] = set()
+        """Topics already warned about (once each)."""
+        self._stuck = False
+        """The publisher thread let a wait run out: puts drop instead of waiting until it publishes again."""
         self._cv = threading.Condition()
         self._order: deque[Lane] = deque()
         """One entry per queued payload, naming its lane: the publishing order across lanes."""
@@ -62,24 +85,48 @@ class Outbox:
         self.published = 0
         """Payloads published."""
         self._failed: set[str] = set()
+        self._test_delay = float(os.environ.get("GAZELLE_TEST_PUBLISH_DELAY_SEC", "0") or 0)
+        """A test hook: publishing made slow on purpose (seconds added to every publish)."""
         self._thread = threading.Thread(target=self._run, name=name, daemon=True)
         self._thread.start()
 
-    def lane(self, publish: Callable[[Any], None], depth: int, name: str = "") -> Lane:
+    def lane(self, publish: Callable[[Any], None], depth: int, name: str = "", keep_last: bool = False) -> Lane:
         """A new lane whose payloads go to ``publish`` (called on the publisher thread)."""
-        return Lane(self, publish, depth, name)
+        return Lane(self, publish, depth, name, keep_last)
 
     def _put(self, lane: Lane, payload: Any) -> None:
         with self._cv:
             if self._closed or lane.closed:
                 return
-            if len(lane.items) >= lane.depth:
+            full = len(lane.items) >= lane.depth
+            if (
+                full
+                and self.lossless
+                and not lane.keep_last
+                and not self._stuck
+                and threading.current_thread() is not self._thread
+            ):
+                self.waited += 1
+                room = self._cv.wait_for(
+                    lambda: len(lane.items) < lane.depth or self._closed or lane.closed, self.stall_timeout
+                )
+                if self._closed or lane.closed:
+                    return
+                full = not room
+                self._stuck = full
+                if full and lane.name not in self._stalled:
+                    self._stalled.add(lane.name)
+                    _log.warning(
+                        f"publishing on {lane.name or 'a topic'} has been stuck for {self.stall_timeout:g} s: "
+                        "dropping its oldest messages so the simulation goes on"
+                    )
+            if full:
                 lane.items.popleft()  # its entry in _order now stands for the next payload
                 self.dropped += 1
             else:
                 self._order.append(lane)
             lane.items.append(payload)
-            self._cv.notify()
+            self._cv.notify_all()
 
     def _run(self) -> None:
         while True:
@@ -95,9 +142,13 @@ class Outbox:
                     continue  # a closed lane's left-over entry
                 payload = lane.items.popleft()
                 self._current = lane
+                self._cv.notify_all()  # a lane that was full has room: a waiting put goes on
             try:
                 lane._publish(payload)
+                if self._test_delay:
+                    time.sleep(self._test_delay)
                 self.published += 1
+                self._stuck = False  # it moves again: back to waiting for it
                 time.sleep(0)  # hand the GIL to the simulation thread if it waits for it (see the module docstring)
             except Exception as err:  # a publisher destroyed with its entity, a context shut down
                 if lane.name not in self._failed:
@@ -113,6 +164,7 @@ class Outbox:
         with self._cv:
             lane.closed = True
             lane.items.clear()
+            self._cv.notify_all()  # a put waiting for room in this lane goes on (and queues nothing)
             if threading.current_thread() is not self._thread:
                 self._cv.wait_for(lambda: self._current is not lane, timeout)
 

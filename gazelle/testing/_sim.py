@@ -139,6 +139,7 @@ class Sim:
         env: Mapping[str, str] | None = None,
         start_timeout: float = 60.0,
         record: tuple[str | os.PathLike[str], Sequence[str]] | None = None,
+        server_args: Sequence[str] = (),
     ) -> None:
         """``record``: (folder, topics) to record from the first step (see :meth:`record`); the recorder
         starts beside the server, so their start-ups overlap."""
@@ -160,6 +161,7 @@ class Sim:
             args.append("--paused")
         if rtf is not None:
             args += ["--rtf", f"{rtf:g}"]
+        args += list(server_args)
         self.server = self._child("gazelle sim", gazelle_command(*args))
         try:
             m = self.server.wait_line(_READY, start_timeout)

@@ -1,0 +1,67 @@
+"""Issue 29: gazelle drops nothing by default. With publishing made slow on purpose (the outbox's test
+hook: 3 ms a message), every /odom message the simulation produces reaches a plain listener, in order,
+and the simulation goes at the publisher's pace; with `--drop-when-behind` it does not wait, drops,
+and counts what it dropped on /gazelle/dropped_messages."""
+
+from __future__ import annotations
+
+import os
+import time
+
+import pytest
+from _paths import SEED_XACRO
+from nav_msgs.msg import Odometry
+from std_msgs.msg import UInt64
+
+from gazelle.testing import Sim, reserve_domain
+
+pytestmark = pytest.mark.slow
+DELAY = 0.003
+
+
+def drive(server_args: tuple[str, ...]) -> tuple[list[float], float, Sim]:
+    domain = reserve_domain()
+    env = {**os.environ, "GAZELLE_TEST_PUBLISH_DELAY_SEC": str(DELAY)}
+    sim = Sim(domain_id=domain.domain_id, env=env, server_args=server_args)
+    sim.spawn(SEED_XACRO, "simple_robot", pose=(0.0, 0.0, 0.07))
+    odom = sim.ros.subscribe("/odom", Odometry)
+    sim.ros.wait_until(lambda: sim.ros.node.count_publishers("/odom") > 0, 30, "/odom")
+    sim.run_for(0.05)
+    odom.wait(1, 30)
+    t0 = time.perf_counter()
+    sim.run_for(2.0)
+    wall = time.perf_counter() - t0
+    stamps = [m.header.stamp.sec + m.header.stamp.nanosec * 1e-9 for m in odom.messages]
+    return stamps, wall, sim
+
+
+def test_every_message_is_published_in_order_and_the_simulation_waits_for_the_publisher() -> None:
+    stamps, wall, sim = drive(())
+    try:
+        period = 0.01  # the seed robot's diff drive: odometry at 100 Hz
+        assert stamps == sorted(stamps)
+        # (the first message is the drive's publish at the very first step, 1 ms: the gate then keeps
+        # to multiples of its period)
+        steady = stamps[1:]
+        gaps = [b - a for a, b in zip(steady, steady[1:]) if b - a > period * 1.5]
+        assert not gaps, f"{len(gaps)} gaps in /odom: {gaps[:5]}"
+        assert stamps[-1] - stamps[0] >= 2.0 - period
+        # each of the 2 s of sim time published /odom, /tf and /joint_states at 100 Hz (and more): at
+        # 3 ms a message the simulation cannot have stepped faster than ~600 messages take
+        assert wall >= 200 * DELAY, f"2 s of sim in {wall:.2f} s of wall time: it did not wait"
+    finally:
+        sim.close()
+
+
+def test_drop_when_behind_does_not_wait_and_counts_what_it_dropped() -> None:
+    stamps, _wall, sim = drive(("--drop-when-behind",))
+    try:
+        assert "drops the oldest when behind" in sim.server.output
+        assert stamps == sorted(stamps)
+        counts = sim.ros.subscribe("/gazelle/dropped_messages", UInt64, latched=True)
+        sim.ros.wait_until(
+            lambda: counts.last is not None and counts.last.data > 0, 10, "a count above 0 on /gazelle/dropped_messages"
+        )
+        assert len(stamps) < 200, f"{len(stamps)} of 200 odometry messages: nothing was dropped"
+    finally:
+        sim.close()
