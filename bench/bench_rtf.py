@@ -196,9 +196,8 @@ def main() -> int:
     box = node.outbox
     p0, d0 = box.published, box.dropped
     rate, note = with_listener("/odom,/tf", odom_tf, sim, opts.seconds)
-    note += (
-        f"; bridge published {box.published - p0}, dropped {box.dropped - d0}"
-        + (" (lossless: the simulation waited for the publisher)" if box.lossless else " (--drop-when-behind)")
+    note += f"; bridge published {box.published - p0}, dropped {box.dropped - d0}" + (
+        " (lossless: the simulation waited for the publisher)" if box.lossless else " (--drop-when-behind)"
     )
     rows.append(("gazelle + RosBridge, /odom + /tf heard", rate, note))
     heard = rate
