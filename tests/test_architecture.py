@@ -14,7 +14,7 @@ import pytest
 from _paths import REPO
 
 PACKAGE = REPO / "gazelle"
-LAYERS = ("description", "physics", "systems", "sim", "ros", "viewer", "cli", "worlds", "planning", "testing")
+LAYERS = ("description", "physics", "systems", "sim", "ros", "viewer", "cli", "worlds", "planning", "testing", "sweep")
 
 FORBIDDEN: dict[str, tuple[str, ...]] = {
     "description": (
@@ -45,6 +45,8 @@ FORBIDDEN: dict[str, tuple[str, ...]] = {
         "viser",
     ),
     "viewer": ("gazelle.ros", "gazelle.cli", "rclpy"),
+    # many in-process runs of a scenario: the runtime without ROS
+    "sweep": ("gazelle.ros", "gazelle.viewer", "gazelle.cli", "gazelle.testing", "rclpy", "viser"),
     # users' robot tests: gazelle's commands as processes, over ROS; nothing inside the simulation
     "testing": (
         "gazelle.physics",

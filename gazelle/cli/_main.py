@@ -237,6 +237,26 @@ def unspawner(ctx: typer.Context) -> None:
 
 
 @app.command()
+def sweep(
+    scenario: str = typer.Argument(..., help="FILE.py::FUNCTION, a function (sim, params, seed) -> metrics."),
+    param: list[str] = typer.Option(
+        [], "--param", help="NAME=a,b,c or NAME=start:stop:count (repeatable; every combination runs)."
+    ),
+    seeds: str = typer.Option("0", "--seeds", help="START:STOP (STOP excluded), N, or a,b,c."),
+    jobs: int | None = typer.Option(None, "-j", "--jobs", help="Worker processes (default: one per core)."),
+    ray: str | None = typer.Option(
+        None, "--ray", help="Run on Ray: local (a Ray instance of -j CPUs here), auto, or ray://HOST:PORT."
+    ),
+    out: Path | None = typer.Option(None, "--out", help="Results folder (default: out/sweep_FUNCTION)."),
+    resume: bool = typer.Option(False, "--resume", help="Keep the runs already in --out and run the others."),
+) -> None:
+    """Run a scenario over a grid of parameters and seeds; a row per run and an HTML report."""
+    from ._sweep import run_sweep
+
+    raise typer.Exit(run_sweep(scenario, param, seeds, jobs=jobs, ray=ray, out=out, resume=resume))
+
+
+@app.command()
 def check(
     file: Path = typer.Argument(..., help="A URDF, xacro, SDF or SRDF file."),
     arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),

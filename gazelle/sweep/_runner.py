@@ -1,0 +1,239 @@
+"""Running a sweep: one run in a worker, many on a pool of this machine's cores or on Ray, the results
+appended as they come, so an interrupted sweep keeps what it did and ``resume`` skips it."""
+
+from __future__ import annotations
+
+import json
+import math
+import multiprocessing
+import os
+import socket
+import sys
+import tempfile
+import time
+import traceback
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from ._spec import ParamValue, RunSpec, SweepError, grid, load_scenario, scenario_from_file
+
+RESULTS = "runs.jsonl"
+"""One JSON object a line, one line a finished run, appended and flushed as each run ends."""
+TABLE = "runs.parquet"
+REPORT = "report.html"
+
+
+def _metric(value: Any) -> Any:
+    if isinstance(value, bool | int | str) or value is None:
+        return value
+    try:
+        f = float(value)
+    except (TypeError, ValueError):
+        return str(value)
+    return f if math.isfinite(f) else str(f)
+
+
+def run_one(path: str, name: str, spec: RunSpec, source: str | None = None) -> dict[str, Any]:
+    """Run the scenario once, in this process, and return its row. Never raises: a scenario that raises
+    gives a row with status ``error`` and its traceback."""
+    row: dict[str, Any] = {"key": spec.key, "seed": spec.seed}
+    row.update({f"param.{k}": v for k, v in spec.params})
+    row.update(status="error", error="", wall_sec=0.0, sim_sec=0.0, worker=f"{socket.gethostname()}:{os.getpid()}")
+    t0 = time.perf_counter()
+    try:
+        from ..description import load
+        from ..sim import Simulation
+        from ..worlds import default_world
+
+        fn = scenario_from_file(_source_file(source, path) if source is not None else Path(path), name)
+        world_file = getattr(fn, "world", None)
+        world = load(world_file).value if world_file is not None else default_world()
+        sim = Simulation(world, rtf=0, seed=spec.seed)  # type: ignore[arg-type]
+        metrics = fn(sim, spec.as_dict(), spec.seed)
+        if not isinstance(metrics, Mapping):
+            raise TypeError(f"the scenario returned {type(metrics).__name__}, not a dict of metrics")
+        row.update({f"metric.{k}": _metric(v) for k, v in metrics.items()})
+        row["status"] = "passed" if bool(metrics.get("passed", True)) else "failed"
+        row["sim_sec"] = float(sim.world.time)
+    except Exception:
+        row["error"] = traceback.format_exc(limit=-8)
+    row["wall_sec"] = time.perf_counter() - t0
+    return row
+
+
+def _source_file(source: str, origin: str) -> Path:
+    """A scenario shipped as text (to a Ray worker): the file itself where this machine has it unchanged
+    (so paths relative to it hold), else written once, owner-only, and imported from there."""
+    import hashlib
+
+    original = Path(origin)
+    try:
+        if original.is_file() and original.read_text() == source:
+            return original
+    except OSError:
+        pass
+
+    digest = hashlib.sha256((origin + "\0" + source).encode()).hexdigest()[:16]
+    folder = Path(tempfile.gettempdir()) / f"gazelle-scenarios-{os.getuid()}"
+    folder.mkdir(mode=0o700, exist_ok=True)
+    if folder.stat().st_uid != os.getuid() or folder.stat().st_mode & 0o077:
+        raise PermissionError(f"{folder} is not this user's own folder")
+    path = folder / f"{digest}_{Path(origin).name}"
+    if not path.is_file() or path.read_text() != source:
+        tmp = path.with_suffix(".tmp")
+        tmp.write_text(source)
+        tmp.replace(path)
+    return path
+
+
+def _ray_task(source: str, origin: str, name: str, spec: RunSpec) -> dict[str, Any]:
+    return run_one(origin, name, spec, source=source)
+
+
+@dataclass
+class SweepResult:
+    out: Path
+    rows: list[dict[str, Any]] = field(default_factory=list)
+    """Every finished run (from this sweep and, with resume, before it)."""
+    ran: int = 0
+    """Runs done by this call."""
+
+    @property
+    def failures(self) -> list[dict[str, Any]]:
+        return [r for r in self.rows if r["status"] != "passed"]
+
+
+def read_rows(path: Path) -> list[dict[str, Any]]:
+    """The rows of a results file; a torn last line (the sweep was killed mid-write) is ignored."""
+    rows = []
+    if path.is_file():
+        for line in path.read_text().splitlines():
+            try:
+                rows.append(json.loads(line))
+            except json.JSONDecodeError:
+                continue
+    return rows
+
+
+def _pool_runs(path: Path, name: str, todo: Sequence[RunSpec], jobs: int) -> Iterator[dict[str, Any]]:
+    # fork: the workers start with gazelle's runtime and the scenario's module already imported (warm),
+    # and a user's script needs no `if __name__ == "__main__"` guard (spawn and forkserver run it again).
+    # With fork, the pool starts all its workers at the first submit, before anything here starts a thread.
+    from ..sim import Simulation  # noqa: F401 - imported before the fork: every worker has it
+    from ..worlds import default_world  # noqa: F401
+
+    ctx = multiprocessing.get_context("fork")
+    with ProcessPoolExecutor(max_workers=jobs, mp_context=ctx) as pool:
+        pending: set[Future[dict[str, Any]]] = set()
+        queue = list(todo)
+        while queue or pending:
+            while queue and len(pending) < 2 * jobs:  # a few queued ahead, not the whole sweep
+                pending.add(pool.submit(run_one, str(path), name, queue.pop(0)))
+            done, pending = wait(pending, return_when=FIRST_COMPLETED)
+            for f in done:
+                yield f.result()
+
+
+def _ray_runs(path: Path, name: str, todo: Sequence[RunSpec], address: str, jobs: int) -> Iterator[dict[str, Any]]:
+    try:
+        import ray
+    except ImportError as err:
+        raise SweepError(f"--ray needs the ray package: {err}") from None
+    kwargs: dict[str, Any] = {"include_dashboard": False, "log_to_driver": False, "ignore_reinit_error": True}
+    if address == "local":
+        kwargs["num_cpus"] = jobs
+        address_arg = None
+    else:
+        address_arg = address
+    owned = not ray.is_initialized()  # a caller's own Ray session is used as it is, and left running
+    if owned:
+        try:
+            ray.init(address=address_arg, **kwargs)
+        except Exception as err:
+            first = (str(err).splitlines() or [""])[0]
+            raise SweepError(f"--ray {address}: cannot connect: {type(err).__name__}: {first}") from None
+    try:
+        source = path.read_text()
+        task = ray.remote(num_cpus=1)(_ray_task)
+        refs = [task.remote(source, str(path), name, spec) for spec in todo]
+        while refs:
+            done, refs = ray.wait(refs, num_returns=1)
+            yield ray.get(done[0])
+    finally:
+        if owned:
+            ray.shutdown()
+
+
+def sweep(
+    scenario: str,
+    params: Sequence[tuple[str, Sequence[ParamValue]]],
+    seeds: Sequence[int],
+    *,
+    out: str | os.PathLike[str],
+    jobs: int | None = None,
+    ray: str | None = None,
+    resume: bool = False,
+    on_row: Callable[[dict[str, Any], int, int], None] | None = None,
+    report: bool = True,
+) -> SweepResult:
+    """Run ``scenario`` (``file.py::function``) for every combination of ``params`` and every seed.
+
+    ``jobs`` worker processes on this machine (default: one per core), or Ray tasks (``ray``: ``"local"``
+    for a Ray instance of ``jobs`` CPUs on this machine, ``"auto"`` or ``"ray://host:port"`` for a
+    cluster). Rows go to ``out/runs.jsonl`` as runs finish; at the end ``out/runs.parquet`` and the
+    report ``out/report.html``. ``resume`` keeps the rows already in ``out`` and runs only the others.
+    ``on_row(row, done, total)`` is called after each run (progress).
+    """
+    path, name, _fn = load_scenario(scenario)  # bad input fails here, before anything starts
+    specs = grid(params, seeds)
+    jobs = max(1, jobs if jobs is not None else (os.cpu_count() or 1))
+    folder = Path(out)
+    folder.mkdir(parents=True, exist_ok=True)
+    log = folder / RESULTS
+    previous = read_rows(log) if resume else []
+    if resume:  # the whole rows only: a line torn by a kill mid-write is dropped (its run runs again)
+        log.write_text("".join(json.dumps(r, sort_keys=True) + "\n" for r in previous))
+    done_keys = {r.get("key") for r in previous}
+    todo = [s for s in specs if s.key not in done_keys]
+    (folder / "sweep.json").write_text(
+        json.dumps(
+            {
+                "scenario": f"{path}::{name}",
+                "params": {n: list(v) for n, v in params},
+                "seeds": [min(seeds), max(seeds), len(seeds)],
+                "runs": len(specs),
+                "python": sys.version.split()[0],
+            },
+            indent=2,
+        )
+    )
+    result = SweepResult(folder, rows=list(previous))
+    mode = "a" if resume else "w"
+    runs = _ray_runs(path, name, todo, ray, jobs) if ray else _pool_runs(path, name, todo, jobs)
+    with open(log, mode) as f:
+        for row in runs:
+            f.write(json.dumps(row, sort_keys=True) + "\n")
+            f.flush()
+            result.rows.append(row)
+            result.ran += 1
+            if on_row is not None:
+                on_row(row, len(result.rows), len(specs))
+    write_table(result.rows, folder / TABLE)
+    if report:
+        from ._report import write_report
+
+        write_report(result.rows, folder / REPORT, title=f"{path.name}::{name}")
+    return result
+
+
+def write_table(rows: Sequence[Mapping[str, Any]], path: Path) -> None:
+    """The rows as a Parquet table (columns: key, seed, param.*, metric.*, status, error, times)."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    columns = sorted({k for r in rows for k in r})
+    table = pa.Table.from_pylist([{c: r.get(c) for c in columns} for r in rows]) if rows else pa.table({})
+    pq.write_table(table, path)
