@@ -111,6 +111,11 @@ class RosTestNode:
         with self._clock_cond:
             return self._sim_time
 
+    def restart_clock(self) -> None:
+        """The simulation was reset to time 0: forget the newest /clock heard."""
+        with self._clock_cond:
+            self._sim_time = 0.0
+
     def wait_for_sim_time(self, at_least: float, timeout: float = 30.0) -> float:
         """Wait until /clock has reached ``at_least`` (wall-clock ``timeout``); returns it."""
         deadline = time.monotonic() + timeout

@@ -155,6 +155,7 @@ class Sim:
         self.env.pop("ROS_LOCALHOST_ONLY", None)
         self.env.pop("ROS_STATIC_PEERS", None)
         self.children: list[ChildProcess] = []
+        self._kept = 0
         self.ros: RosTestNode | None = None
         args = ["sim", *([str(world)] if world is not None else []), "--no-viewer", "--seed", str(seed)]
         if paused:
@@ -173,6 +174,8 @@ class Sim:
             if record is not None:
                 self.record(*record)
             self.ros = RosTestNode(domain_id)
+            self._kept = len(self.children)
+            """The server and its recorder: what a reset keeps running."""
             from simulation_interfaces.srv import StepSimulation
 
             self._step_srv = StepSimulation
@@ -290,6 +293,23 @@ class Sim:
             if time.monotonic() > deadline:
                 raise SimError(f"{what}: {wall_timeout:g} s of wall time passed (the simulation is hung?)")
             self.run_for(min(STEP_CHUNK_SEC, timeout - (self.ros.sim_time - start)))
+
+    def reset(self, wall_timeout: float = 30.0) -> None:
+        """Back to the start: sim time 0, the world's own models at their initial state, every entity the
+        tests spawned removed (simulation_interfaces' ResetSimulation, SCOPE_ALL), and the processes
+        started since the last reset stopped."""
+        assert self.ros is not None
+        from simulation_interfaces.srv import ResetSimulation
+
+        for child in self.children[self._kept :]:
+            child.stop()
+        del self.children[self._kept :]
+        req = ResetSimulation.Request()
+        req.scope = ResetSimulation.Request.SCOPE_ALL
+        reply = self.ros.call("/gazelle/reset_simulation", ResetSimulation, req, timeout=wall_timeout)
+        if reply.result.result != 1:
+            raise SimError(f"ResetSimulation refused: {reply.result.error_message}")
+        self.ros.restart_clock()
 
     # ------------------------------------------------------------------ recording
     def record(self, folder: str | os.PathLike[str], topics: Sequence[str]) -> ChildProcess:

@@ -7,6 +7,7 @@ Fixtures for a user's own robot tests (see docs/robot_tests.md):
   what the test needs, and everything ends with the test, pass or fail.
 * ``ros``: the test's rclpy node on that domain (``gazelle_sim.ros``).
 * ``gazelle_seed``: the seed of this test's run (``--gazelle-seed``, default 0), given to the server.
+* ``gazelle_shared_sim``: one server for a whole module (``gazelle_sim_module``), reset before each test.
 
 Configure a test with ``@pytest.mark.gazelle(world=..., record=[...], paused=True, rtf=None)``. A failing
 test keeps an MCAP bag (rosbag2 layout) of the topics it named plus /tf, /tf_static and /clock, and
@@ -178,6 +179,55 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
         if leaks:
             listed = "; ".join(f"pid {pid} ({cmd[:120]})" for pid, cmd in leaks)
             pytest.fail(f"the test left {len(leaks)} process(es) running (killed now): {listed}", pytrace=False)
+
+
+@pytest.fixture(scope="module")
+def gazelle_sim_module(request: pytest.FixtureRequest) -> Iterator[Any]:
+    """One server for every test of a module (options from the module's ``pytestmark =
+    pytest.mark.gazelle(...)``); use it through ``gazelle_shared_sim``, which resets it for each test.
+    No failure bag: use ``gazelle_sim`` for tests that should leave one."""
+    try:
+        from ._domain import reserve_domain
+        from ._sim import Sim
+    except ImportError as err:
+        pytest.fail(f"gazelle_sim_module needs ROS 2 (rclpy) in this environment: {err}", pytrace=False)
+    marker = request.node.get_closest_marker("gazelle")
+    options: dict[str, Any] = dict(marker.kwargs) if marker is not None else {}
+    world = options.get("world")
+    if world is not None and not Path(world).is_file():
+        pytest.fail(f"@pytest.mark.gazelle(world=...): no such world file: {world}", pytrace=False)
+    seed = options.get("seed", request.config.getoption("--gazelle-seed"))
+    domain = reserve_domain()
+    sim = None
+    try:
+        try:
+            sim = Sim(domain_id=domain.domain_id, world=world, seed=int(seed or 0), paused=True)
+        except Exception as err:
+            pytest.fail(f"gazelle_sim_module did not start: {err}", pytrace=False)
+        yield sim
+    finally:
+        if sim is not None:
+            sim.close()
+        domain.release()
+
+
+@pytest.fixture
+def gazelle_shared_sim(gazelle_sim_module: Any) -> Iterator[Any]:
+    """The module's server, reset for this test (time 0, spawned entities gone, the last test's
+    processes stopped): a fraction of a second instead of a new server."""
+    sim = gazelle_sim_module
+    sim.reset()
+    keys = ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE")
+    saved = {k: os.environ.get(k) for k in keys}
+    os.environ.update({k: sim.env[k] for k in keys})
+    try:
+        yield sim
+    finally:
+        for k, v in saved.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
 
 
 @pytest.fixture

@@ -140,3 +140,31 @@ def test_a_failing_test_keeps_its_bag_and_log_and_bad_input_is_one_line_each(tmp
     assert "the test left 1 process(es) running (killed now)" in text and "time.sleep(600)" in text
     assert "Traceback" not in text
     assert survivors(mark) == []
+
+
+SHARED = """
+import pytest
+from nav_msgs.msg import Odometry
+
+ROBOT = {robot!r}
+
+
+@pytest.mark.parametrize("run", range(3))
+def test_each_test_starts_from_a_reset_world(gazelle_shared_sim, run):
+    sim = gazelle_shared_sim
+    assert sim.time < 0.05, sim.time  # back at the start
+    sim.spawn(ROBOT, "robot", pose=(0.0, 0.0, 0.07))  # the same name every time: the last one is gone
+    odom = sim.ros.subscribe("/odom", Odometry)
+    sim.run_for(0.5)
+    odom.wait(1, 10)
+    assert 0.45 <= sim.time <= 0.55
+"""
+
+
+def test_a_module_shares_one_server_reset_before_each_test(tmp_path: Path) -> None:
+    robot = REPO / "examples" / "simple_robot" / "simple_robot" / "robot.urdf.xacro"
+    (tmp_path / "test_shared.py").write_text(SHARED.format(robot=str(robot)))
+    out, mark = inner_pytest(["test_shared.py"], tmp_path)
+    assert out.returncode == 0, out.stdout[-4000:] + out.stderr[-2000:]
+    assert "3 passed" in out.stdout
+    assert survivors(mark) == []

@@ -213,3 +213,30 @@ def test_a_context_shut_down_between_two_graph_waits_is_an_orderly_end() -> None
     between two spins of a graph wait (the signal test above hits that window only now and then)."""
     out = subprocess.run([sys.executable, "-c", SHUT_DOWN_UNDER_A_WAIT], capture_output=True, text=True, timeout=60)
     assert out.stdout.strip() == "orderly end", out.stdout + out.stderr
+
+
+SIGNAL_WHILE_SETTING_UP = """
+import os, signal
+import rclpy.executors as executors
+
+made = executors.SingleThreadedExecutor.__init__
+
+
+def init(self, *args, **kwargs):
+    os.kill(os.getpid(), signal.SIGTERM)  # lands while the verb makes its executor
+    made(self, *args, **kwargs)
+
+
+executors.SingleThreadedExecutor.__init__ = init
+from gazelle.cli.ros2cli import main
+
+print("exit", main(["topic", "echo", "/nothing_here"]), flush=True)
+"""
+
+
+def test_a_signal_while_a_verb_sets_up_is_an_orderly_end() -> None:
+    """CI: SIGTERM landed while `ros2 bag record` made its executor; the half-made executor's GuardCondition
+    failed and its __del__ printed a traceback. Signals now wait until the verb is set up."""
+    out = subprocess.run([sys.executable, "-c", SIGNAL_WHILE_SETTING_UP], capture_output=True, text=True, timeout=60)
+    assert "exit 0" in out.stdout, out.stdout + out.stderr
+    assert "Traceback" not in out.stderr, out.stderr

@@ -77,7 +77,12 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def console_main() -> None:
-    raise SystemExit(main())
+    code = main()
+    # The verb has said everything: end without the interpreter's finalisation, where a DDS participant's
+    # threads have held a finished verb's process (as ros2cli's users see with Ctrl-\ now and then)
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os._exit(code if isinstance(code, int) else 1)
 
 
 __all__ = ["COMMANDS", "VERBS", "matching_qos", "console_main", "ensure_ament_prefix", "main"]

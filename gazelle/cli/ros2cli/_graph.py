@@ -4,6 +4,8 @@ for ``spin_time`` seconds before answering)."""
 from __future__ import annotations
 
 import os
+import sys
+import threading
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -34,12 +36,16 @@ def cli_node(name: str = "ros2cli") -> Iterator[Any]:
     context = rclpy.get_default_context()  # pyright: ignore[reportPrivateImportUsage]
     try:
         node = rclpy.create_node(f"_{name}_{os.getpid()}", start_parameter_services=False)
+        executor = SingleThreadedExecutor()
+        executor.add_node(node)
     except Exception as err:
         if not context.ok():
+            # rclpy's signal handler shut the context down while the node or the executor was being made
+            # (CI: a SIGTERM inside SingleThreadedExecutor()); the half-made objects' __del__ would print
+            # tracebacks as they go: the verb ends in order and says nothing more
+            sys.unraisablehook = lambda _unraisable: None
             raise ShutDown from err
         raise
-    executor = SingleThreadedExecutor()
-    executor.add_node(node)
     _EXECUTORS[id(node)] = executor
     try:
         yield node
@@ -49,9 +55,17 @@ def cli_node(name: str = "ros2cli") -> Iterator[Any]:
         raise
     finally:
         _EXECUTORS.pop(id(node), None)
-        executor.shutdown(timeout_sec=0.5)
-        node.destroy_node()
-        rclpy.try_shutdown()  # pyright: ignore[reportPrivateImportUsage]
+
+        def teardown() -> None:
+            executor.shutdown(timeout_sec=0.5)
+            node.destroy_node()
+            rclpy.try_shutdown()  # pyright: ignore[reportPrivateImportUsage]
+
+        # at most a few seconds: once, `ros2 param dump` printed its answer and then never returned from
+        # here (CI killed it at 60 s); the process ends right after anyway (see console_main)
+        done = threading.Thread(target=teardown, name="ros2cli-teardown", daemon=True)
+        done.start()
+        done.join(5.0)
 
 
 def spin_once(node: Any, timeout_sec: float) -> None:
