@@ -285,3 +285,58 @@ def test_a_namespaced_panda_closes_its_gripper_through_the_gripper_action(sim_fa
     result = box["result"].result
     assert result.reached_goal and not result.stalled
     assert result.position == pytest.approx(0.03, abs=0.01)
+
+
+def _ros2_control(*args: str) -> subprocess.CompletedProcess:
+    ros2 = str(Path(sys.prefix) / "bin" / "ros2")
+    return subprocess.run([ros2, "control", *args], capture_output=True, text=True, timeout=60)
+
+
+@pytest.mark.slow
+def test_ros2_control_verbs_list_switch_and_set_the_diffbots_controllers(sim_factory):
+    """Issue 27: `ros2 control list_controllers|list_hardware_interfaces|switch_controllers|...` did not
+    exist; users type them daily. Output as ros2controlcli Jazzy's (no colours when piped)."""
+    sim = sim_factory("--no-viewer")
+    spawn = start(
+        [*GAZELLE, "spawn", "-entity", "diffbot", "-file", str(DIFFBOT_URDF), "-z", "0.05"]
+        + ["--ros-args", "--params-file", str(DIFFBOT_YAML)],
+        "spawn",
+    )
+    assert spawn.wait(60) == 0, spawn.output
+    sim.wait_line("controller manager '/controller_manager'", 10)
+    rc, out = _spawner("joint_state_broadcaster")
+    assert rc == 0, out
+
+    loaded = _ros2_control("load_controller", "diffbot_base_controller", "--set-state", "active")
+    assert loaded.returncode == 0 and "Successfully loaded controller diffbot_base_controller into state active" in (
+        loaded.stdout
+    ), loaded.stdout + loaded.stderr
+    listed = _ros2_control("list_controllers")
+    assert listed.returncode == 0, listed.stderr
+    rows = [line.split() for line in listed.stdout.splitlines()]
+    assert ["joint_state_broadcaster", "joint_state_broadcaster/JointStateBroadcaster", "active"] in rows
+    assert ["diffbot_base_controller", "diff_drive_controller/DiffDriveController", "active"] in rows
+    assert "\033[" not in listed.stdout  # piped: no colour codes
+
+    hw = _ros2_control("list_hardware_interfaces")
+    assert hw.returncode == 0 and hw.stdout.startswith("command interfaces\n"), hw.stdout + hw.stderr
+    assert "\tleft_wheel_joint/velocity [available] [claimed]" in hw.stdout
+    assert "state interfaces" in hw.stdout and "\tleft_wheel_joint/position" in hw.stdout
+
+    switched = _ros2_control("switch_controllers", "--deactivate", "diffbot_base_controller")
+    assert switched.returncode == 0 and "Successfully switched controllers" in switched.stdout, switched.stderr
+    assert ["diffbot_base_controller", "diff_drive_controller/DiffDriveController", "inactive"] in [
+        line.split() for line in _ros2_control("list_controllers").stdout.splitlines()
+    ]
+    assert "[available] [unclaimed]" in _ros2_control("list_hardware_interfaces").stdout
+    again = _ros2_control("set_controller_state", "diffbot_base_controller", "active")
+    assert again.returncode == 0, again.stdout + again.stderr
+    assert ["diffbot_base_controller", "diff_drive_controller/DiffDriveController", "active"] in [
+        line.split() for line in _ros2_control("list_controllers", "-c", "controller_manager").stdout.splitlines()
+    ]
+    # bad input: one line, exit 1, no traceback
+    missing = _ros2_control("list_controllers", "-c", "/nobody_here", "--service-timeout", "1")
+    assert missing.returncode == 1 and "Could not contact service /nobody_here/list_controllers" in missing.stderr
+    unknown = _ros2_control("set_controller_state", "no_such_controller", "active")
+    assert unknown.returncode == 1 and "does not seem to be loaded" in unknown.stderr
+    assert "Traceback" not in missing.stderr + unknown.stderr

@@ -1,7 +1,8 @@
 """The ``ros2`` command for a venv without ROS 2's ros2cli: ``launch``, ``run``, ``pkg`` and the
 introspection verbs: ``topic`` (list, echo, hz, info, type, pub), ``service`` (list, type, find, call),
 ``action`` (list, info, type, send_goal), ``node`` (list, info), ``param`` (list, get, set, describe,
-dump, load), ``interface`` (show, list, package) and ``bag`` (record, play, info: rosbag2's MCAP).
+dump, load), ``interface`` (show, list, package), ``bag`` (record, play, info: rosbag2's MCAP) and
+``control`` (ros2controlcli's verbs over a controller manager's services).
 
 Same arguments and output as ros2cli Jazzy for what it covers; an unknown verb lists the verbs that
 exist. ``gazelle launch`` and ``gazelle run`` are the same commands.
@@ -19,6 +20,7 @@ from ._graph import ShutDown, matching_qos  # the Foxglove bridge subscribes the
 COMMANDS = {
     "action": ("_action", "main", "Various action related sub-commands"),
     "bag": ("_bag", "main", "Various rosbag related sub-commands"),
+    "control": ("_control", "main", "Various control related sub-commands"),
     "interface": ("_service", "interface_main", "Show information about ROS interfaces"),
     "launch": ("_launch", "main", "Run a launch file"),
     "node": ("_service", "node_main", "Various node related sub-commands"),

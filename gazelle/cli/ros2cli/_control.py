@@ -1,0 +1,301 @@
+"""``ros2 control``: ros2controlcli's verbs over a controller manager's services (list_controllers,
+list_controller_types, list_hardware_interfaces, list_hardware_components, load_controller,
+configure_controller, set_controller_state, switch_controllers, unload_controller), with Jazzy's
+arguments and output (ros2_control's ros2controlcli/verb/*.py). Colours only on a terminal."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from typing import Any
+
+from ._graph import cli_node, spin_once
+
+VERBS = (
+    "list_controllers",
+    "list_controller_types",
+    "list_hardware_components",
+    "list_hardware_interfaces",
+    "load_controller",
+    "configure_controller",
+    "set_controller_state",
+    "switch_controllers",
+    "unload_controller",
+)
+
+
+class _Colors:
+    def __init__(self, on: bool) -> None:
+        codes = {"ok_green": "\033[92m", "ok_cyan": "\033[96m", "ok_blue": "\033[94m", "warning": "\033[93m"}
+        codes.update(fail="\033[91m", end="\033[0m")
+        for k, v in codes.items():
+            setattr(self, k, v if on else "")
+
+    ok_green = ok_cyan = ok_blue = warning = fail = end = ""
+
+
+class ControlError(Exception):
+    """One line for the user (no traceback)."""
+
+
+def main(argv: list[str]) -> int:
+    p = argparse.ArgumentParser(prog="ros2 control", description="Various control related sub-commands")
+    sub = p.add_subparsers(
+        dest="cmd", required=True, metavar="Call `ros2 control <command> -h` for more detailed usage."
+    )
+
+    def verb(name: str, text: str) -> argparse.ArgumentParser:
+        v = sub.add_parser(name, help=text, description=text)
+        v.add_argument(
+            "-c", "--controller-manager", default="/controller_manager", help="Name of the controller manager ROS node"
+        )
+        v.add_argument("--spin-time", type=float, default=0.5, help="Spin time in seconds to wait for discovery")
+        v.add_argument("--include-hidden-nodes", action="store_true", help="Consider hidden nodes as well")
+        v.add_argument("--service-timeout", type=float, default=10.0, help="Seconds to wait for the service")
+        return v
+
+    lc = verb("list_controllers", "Output the list of loaded controllers, their type and status")
+    for flag in ("--claimed-interfaces", "--required-state-interfaces", "--required-command-interfaces"):
+        lc.add_argument(flag, action="store_true")
+    lc.add_argument("--verbose", "-v", action="store_true")
+    verb("list_controller_types", "Output the available controller types and their base classes")
+    verb("list_hardware_components", "Output the list of available hardware components").add_argument(
+        "--verbose", "-v", action="store_true"
+    )
+    verb("list_hardware_interfaces", "Output the list of available command and state interfaces").add_argument(
+        "--verbose", "-v", action="store_true"
+    )
+    load = verb("load_controller", "Load a controller in a controller manager")
+    load.add_argument("controller_name")
+    load.add_argument("param_file", nargs="?", default=None)
+    load.add_argument("--set-state", choices=["inactive", "active"])
+    configure = verb("configure_controller", "Configure a controller in a controller manager")
+    configure.add_argument("controller_name")
+    state = verb("set_controller_state", "Adjust the state of the controller")
+    state.add_argument("controller_name")
+    state.add_argument("state", choices=["inactive", "active"])
+    switch = verb("switch_controllers", "Switch controllers in a controller manager")
+    switch.add_argument("--deactivate", nargs="*", default=[])
+    switch.add_argument("--activate", nargs="*", default=[])
+    switch.add_argument("--strict", action="store_true")
+    switch.add_argument("--activate-asap", action="store_true")
+    switch.add_argument("--switch-timeout", type=float, default=5.0)
+    unload = verb("unload_controller", "Unload a controller in a controller manager")
+    unload.add_argument("controller_name")
+    args = p.parse_args(argv)
+    colors = _Colors(sys.stdout.isatty())
+    try:
+        with cli_node("ros2control") as node:
+            return _VERBS[args.cmd](_Manager(node, args), args, colors)
+    except ControlError as err:
+        print(f"{colors.fail}{err}{colors.end}", file=sys.stderr)
+        return 1
+
+
+class _Manager:
+    """Calls to one controller manager's services, each waiting for the service and the reply."""
+
+    def __init__(self, node: Any, args: argparse.Namespace) -> None:
+        self.node = node
+        name = args.controller_manager
+        self.prefix = name if name.startswith("/") else f"/{name}"
+        self.timeout = args.service_timeout
+
+    def call(self, srv_type: Any, service: str, **fields: Any) -> Any:
+        name = f"{self.prefix.rstrip('/')}/{service}"
+        client = self.node.create_client(srv_type, name)
+        if not client.wait_for_service(timeout_sec=self.timeout):
+            raise ControlError(f"Could not contact service {name} (is the controller manager {self.prefix} running?)")
+        request = srv_type.Request()
+        for k, v in fields.items():
+            setattr(request, k, v)
+        future = client.call_async(request)
+        deadline = time.monotonic() + self.timeout
+        while not future.done() and time.monotonic() < deadline:
+            spin_once(self.node, timeout_sec=0.05)
+        if not future.done():
+            raise ControlError(f"{name} did not reply within {self.timeout:g} s")
+        return future.result()
+
+
+def _list_controllers(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
+    from controller_manager_msgs.srv import ListControllers
+
+    controllers = cm.call(ListControllers, "list_controllers").controller
+    if not controllers:
+        print("No controllers are currently loaded!")
+        return 0
+    wn = max(len(x.name) for x in controllers)
+    wt = max(len(x.type) for x in controllers)
+    ws = max(len(x.state) for x in controllers)
+    color = {"active": c.ok_green, "inactive": c.ok_cyan, "unconfigured": c.warning}
+    for x in controllers:
+        col = color.get(x.state, "")
+        print(f"{col}{x.name:<{wn}}{c.end} {x.type:<{wt}}  {col}{x.state:<{ws}}{c.end}")
+        for flag, title, values in (
+            (args.claimed_interfaces, "claimed interfaces", x.claimed_interfaces),
+            (args.required_command_interfaces, "required command interfaces", x.required_command_interfaces),
+            (args.required_state_interfaces, "required state interfaces", x.required_state_interfaces),
+        ):
+            if flag or args.verbose:
+                print(f"\t{title}:")
+                for v in values:
+                    print(f"\t\t{v}")
+    return 0
+
+
+def _list_types(cm: _Manager, _args: argparse.Namespace, _c: _Colors) -> int:
+    from controller_manager_msgs.srv import ListControllerTypes
+
+    res = cm.call(ListControllerTypes, "list_controller_types")
+    width = max((len(t) for t in res.types), default=0)
+    for t, base in zip(res.types, res.base_classes, strict=False):
+        print(f"{t:<{width}}  {base}")
+    return 0
+
+
+def _list_interfaces(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
+    from controller_manager_msgs.srv import ListHardwareInterfaces
+
+    res = cm.call(ListHardwareInterfaces, "list_hardware_interfaces")
+    print("command interfaces")
+    for i in sorted(res.command_interfaces, key=lambda hwi: hwi.name):
+        kind = f" [{i.data_type}]" if args.verbose else ""
+        if i.is_available:
+            col, claimed = (c.ok_blue, "claimed") if i.is_claimed else (c.ok_cyan, "unclaimed")
+            print(f"\t{col}{i.name}{kind} [available] [{claimed}]{c.end}")
+        else:
+            print(f"\t{c.warning}{i.name}{kind} [unavailable] [unclaimed]{c.end}")
+    print("state interfaces")
+    for i in sorted(res.state_interfaces, key=lambda hwi: hwi.name):
+        print(f"\t{i.name}" + (f" [{i.data_type}]" if args.verbose else ""))
+    return 0
+
+
+def _list_components(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
+    from controller_manager_msgs.srv import ListHardwareComponents
+
+    components = cm.call(ListHardwareComponents, "list_hardware_components").component
+    for i, comp in enumerate(components):
+        state = comp.state.label
+        col = c.ok_green if state == "active" else c.warning
+        print(f"Hardware Component {i + 1}\n\tname: {comp.name}\n\ttype: {comp.type}")
+        if hasattr(comp, "plugin_name"):
+            print(f"\tplugin name: {comp.plugin_name}")
+        print(f"\tstate: id={comp.state.id} label={col}{state}{c.end}")
+        print("\tcommand interfaces")
+        for ci in comp.command_interfaces:
+            kind = f" [{ci.data_type}]" if args.verbose else ""
+            print(f"\t\t{ci.name}{kind} [{'available' if ci.is_available else 'unavailable'}]"
+                  f" [{'claimed' if ci.is_claimed else 'unclaimed'}]")  # fmt: skip
+        if args.verbose:
+            print("\tstate interfaces")
+            for si in comp.state_interfaces:
+                print(f"\t\t{si.name} [{si.data_type}]")
+    return 0
+
+
+def _controller_state(cm: _Manager, name: str) -> str | None:
+    from controller_manager_msgs.srv import ListControllers
+
+    for x in cm.call(ListControllers, "list_controllers").controller:
+        if x.name == name:
+            return x.state
+    return None
+
+
+def _switch_call(
+    cm: _Manager, activate: list[str], deactivate: list[str], strict: bool, asap: bool, timeout: float
+) -> bool:
+    from builtin_interfaces.msg import Duration
+    from controller_manager_msgs.srv import SwitchController
+
+    req = {
+        "activate_controllers": activate,
+        "deactivate_controllers": deactivate,
+        "strictness": SwitchController.Request.STRICT if strict else SwitchController.Request.BEST_EFFORT,
+        "activate_asap": asap,
+        "timeout": Duration(sec=int(timeout), nanosec=int((timeout % 1) * 1e9)),
+    }
+    return bool(cm.call(SwitchController, "switch_controller", **req).ok)
+
+
+def _load(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
+    from controller_manager_msgs.srv import ConfigureController, LoadController
+
+    if args.param_file:
+        raise ControlError("loading with a parameter file: set <controller>.params_file on the manager (see README)")
+    if not cm.call(LoadController, "load_controller", name=args.controller_name).ok:
+        raise ControlError(f"Error loading controller {args.controller_name}, check controller_manager logs")
+    if args.set_state:
+        if not cm.call(ConfigureController, "configure_controller", name=args.controller_name).ok:
+            raise ControlError(f"Error configuring controller {args.controller_name}")
+        if args.set_state == "active" and not _switch_call(cm, [args.controller_name], [], True, True, 5.0):
+            raise ControlError(f"Error activating controller {args.controller_name}, check controller_manager logs")
+        print(f"{c.ok_blue}Successfully loaded controller {args.controller_name} into state {args.set_state}{c.end}")
+    else:
+        print(f"{c.ok_blue}Successfully loaded controller {args.controller_name}{c.end}")
+    return 0
+
+
+def _configure(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
+    from controller_manager_msgs.srv import ConfigureController
+
+    if not cm.call(ConfigureController, "configure_controller", name=args.controller_name).ok:
+        raise ControlError(f"Error configuring controller {args.controller_name}, check controller_manager logs")
+    print(f"{c.ok_blue}Successfully configured controller {args.controller_name}{c.end}")
+    return 0
+
+
+def _set_state(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
+    from controller_manager_msgs.srv import ConfigureController
+
+    name, want = args.controller_name, args.state
+    now = _controller_state(cm, name)
+    if now is None:
+        raise ControlError(f"controller {name} does not seem to be loaded")
+    if want == "inactive":
+        if now == "unconfigured":
+            ok = bool(cm.call(ConfigureController, "configure_controller", name=name).ok)
+        elif now == "active":
+            ok = _switch_call(cm, [], [name], True, True, 5.0)
+        else:
+            raise ControlError(f"cannot set {name} from its current state {now} to inactive")
+    else:
+        if now != "inactive":
+            raise ControlError(f"cannot activate {name}: it is {now}, not inactive (configure it first)")
+        ok = _switch_call(cm, [name], [], True, True, 5.0)
+    if not ok:
+        raise ControlError(f"Error setting controller {name} to {want}, check controller_manager logs")
+    print(f"{c.ok_blue}Successfully {'activated' if want == 'active' else 'deactivated'} {name}{c.end}")
+    return 0
+
+
+def _switch(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
+    if not _switch_call(cm, args.activate, args.deactivate, args.strict, args.activate_asap, args.switch_timeout):
+        raise ControlError("Error switching controllers, check controller_manager logs")
+    print(f"{c.ok_blue}Successfully switched controllers{c.end}")
+    return 0
+
+
+def _unload(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
+    from controller_manager_msgs.srv import UnloadController
+
+    if not cm.call(UnloadController, "unload_controller", name=args.controller_name).ok:
+        raise ControlError(f"Error unloading controller {args.controller_name}, check controller_manager logs")
+    print(f"{c.ok_blue}Successfully unloaded controller {args.controller_name}{c.end}")
+    return 0
+
+
+_VERBS = {
+    "list_controllers": _list_controllers,
+    "list_controller_types": _list_types,
+    "list_hardware_components": _list_components,
+    "list_hardware_interfaces": _list_interfaces,
+    "load_controller": _load,
+    "configure_controller": _configure,
+    "set_controller_state": _set_state,
+    "switch_controllers": _switch,
+    "unload_controller": _unload,
+}
