@@ -372,3 +372,21 @@ def test_one_rate_gate_for_every_periodic_publisher() -> None:
     assert all(gate.due(1.0 + k * 0.001, 0.0) for k in range(5))  # rate 0: every step
     gate.reset()
     assert gate.due(0.0, 50.0)  # after a reset of sim time, at once
+
+
+def test_did_you_mean_offers_a_typo_its_plugin_and_another_plugin_nothing():
+    """Issue 26: `gazelle check` suggested 'gz-sim-diff-drive-system' for gz-sim's LiftDrag (the gz-sim
+    names share most of their characters); a typo still gets its plugin."""
+    from gazelle.description import Plugin
+    from gazelle.systems._registry import plugin_problem
+
+    def problem(filename: str, name: str = "p") -> str:
+        text = plugin_problem(Plugin(name=name, filename=filename, config=None))
+        assert text is not None
+        return text
+
+    assert "did you mean" not in problem("gz-sim-lift-drag-system", "gz::sim::systems::LiftDrag")
+    assert "did you mean" not in problem("gz-sim-buoyancy-system", "gz::sim::systems::Buoyancy")
+    assert "did you mean 'gz-sim-diff-drive-system'?" in problem("gz-sim-diff-drive-sytem")
+    assert "did you mean 'libgazebo_ros_diff_drive.so'?" in problem("libgazebo_ros_diff_drve.so")
+    assert "did you mean 'libgazebo_ros_imu_sensor.so'?" in problem("libgazebo_ros_imu_sensr.so")

@@ -401,14 +401,41 @@ def _known_names() -> list[str]:
     return sorted({*_REGISTRY, *_SENSOR_PLUGINS, *GZ_SENSOR_WORLD_SYSTEMS, *_NOT_YET, *BUILT_IN_WORLD_SYSTEMS})
 
 
+_FAMILY_PARTS = ("gz::sim::systems::", "ignition::gazebo::systems::", "ignition-gazebo-", "gz-sim-", "gazebo_ros_")
+
+
+def _core(name: str) -> str:
+    """The part of a plugin name that tells plugins apart: ``gz-sim-lift-drag-system`` -> ``liftdrag``.
+    Compared whole, every gz-sim system looks like every other (they share 15 of ~23 characters), and a
+    LiftDrag was offered the DiffDrive (issue 26)."""
+    from difflib import SequenceMatcher
+
+    core = name.lower()
+    for part in _FAMILY_PARTS:
+        core = core.replace(part, "")
+    core = core.removeprefix("lib").removesuffix(".so")
+    head, dash, last = core.rpartition("-")
+    if dash and SequenceMatcher(None, last, "system").ratio() >= 0.7:  # "-system", or a typo of it
+        core = head
+    return core.replace("-", "").replace("_", "").replace(":", "")
+
+
 def _did_you_mean(plugin: Plugin) -> str:
-    import difflib
+    """A known name close to the plugin's, as a whole (cutoff 0.8) and in the part that tells plugins
+    apart (0.7): a typo gets its plugin, another plugin of the same family does not."""
+    from difflib import SequenceMatcher
 
     names = _known_names()
     for raw in (plugin.filename, plugin.name):
-        close = difflib.get_close_matches(_normalise(raw), names, n=1, cutoff=0.8)
-        if close:
-            return f"; did you mean '{_display(close[0])}'?"
+        key = _normalise(raw)
+        scored = []
+        for name in names:
+            whole = SequenceMatcher(None, key, name).ratio()
+            core = SequenceMatcher(None, _core(key), _core(name)).ratio()
+            if whole >= 0.8 and core >= 0.7:
+                scored.append((whole + core, name))
+        if scored:
+            return f"; did you mean '{_display(max(scored)[1])}'?"
     return ""
 
 
