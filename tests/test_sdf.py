@@ -515,3 +515,23 @@ def test_report_turtlebot3_load_time(capsys):
     per_load_ms = (time.perf_counter() - start) / 20 * 1000
     with capsys.disabled():
         print(f"\nTurtleBot3 burger model.sdf load: {per_load_ms:.2f} ms")
+
+
+def test_collide_without_contact_false_is_read_silently_and_true_collides_with_nothing():
+    """Issue 26: a house world of gz-sim's printed 54 `<collide_without_contact>` warnings for its default
+    (false), one a model file. False is what gazelle does: silent. True (a contact-only shape in gz-sim)
+    has no MuJoCo equivalent: the collision takes part in no contact, said once where it is."""
+
+    def model(flag: str):
+        text = f"""<sdf version="1.9"><model name="m"><link name="l"><collision name="c">
+          <geometry><box><size>1 1 1</size></box></geometry>
+          <surface><contact><collide_without_contact>{flag}</collide_without_contact></contact></surface>
+        </collision></link></model></sdf>"""
+        result = load_string(text, format="sdf", resolver=resolver())
+        return result.value, [d for d in result.diagnostics if "collide_without_contact" in d.message]
+
+    quiet, said = model("false")
+    assert said == [] and quiet.link("l").collisions[0].surface.collide_bitmask is None
+    ghost, said = model("true")
+    assert len(said) == 1 and said[0].location is not None and said[0].location.line == 3
+    assert ghost.link("l").collisions[0].surface.collide_bitmask == 0

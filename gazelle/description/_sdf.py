@@ -143,7 +143,7 @@ _USED: dict[str, frozenset[str]] = {
     "friction_ode": frozenset({"mu", "mu2", "fdir1", "slip1", "slip2"}),
     "torsional": frozenset({"coefficient"}),
     "bullet_friction": frozenset({"friction", "friction2", "rolling_friction"}),
-    "contact": frozenset({"ode", "collide_bitmask"}),
+    "contact": frozenset({"ode", "collide_bitmask", "collide_without_contact"}),
     "contact_ode": frozenset({"kp", "kd", "min_depth", "max_vel", "soft_cfm", "soft_erp"}),
     "bounce": frozenset({"restitution_coefficient"}),
     "joint": frozenset({"parent", "child", "pose", "axis", "axis2", "thread_pitch", "screw_thread_pitch", "sensor"}),
@@ -1228,6 +1228,19 @@ class _Loader:
                     f"<collide_bitmask> must be an integer, got {raw!r}",
                     self.loc(_find(contact, "collide_bitmask"), doc),
                 )  # type: ignore[arg-type]
+        without = _find(contact, "collide_without_contact") if contact is not None else None
+        if without is not None and (without.text or "").strip().lower() in ("1", "true"):
+            # gz-sim: the shape reports contacts but exerts no force. MuJoCo has no such geom: it takes
+            # part in no contact (rays still see it), and contact sensors do not report it either.
+            # The default (false) is what gazelle does anyway: read silently (a house world of gz-sim's
+            # printed 54 warnings, one a model file, for that default)
+            self.sink.warning(
+                ErrorCode.ELEMENT_UNSUPPORTED,
+                "<collide_without_contact> true: this collision takes part in no contact at all (no force, "
+                "and contact sensors do not report it)",
+                self.loc(without, doc),
+            )
+            bitmask = 0
         return Surface(
             mu=mu,
             mu2=mu2,
