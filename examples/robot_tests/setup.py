@@ -16,6 +16,6 @@ setup(
     maintainer_email="user@example.com",
     description="A user's package with robot tests that run on gazelle's pytest fixtures.",
     license="Apache-2.0",
-    tests_require=["pytest"],
+    extras_require={"test": ["pytest"]},
     entry_points={"console_scripts": ["go_to_goal = robot_tests.go_to_goal:main"]},
 )

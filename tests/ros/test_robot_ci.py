@@ -168,3 +168,24 @@ def test_a_module_shares_one_server_reset_before_each_test(tmp_path: Path) -> No
     assert out.returncode == 0, out.stdout[-4000:] + out.stderr[-2000:]
     assert "3 passed" in out.stdout
     assert survivors(mark) == []
+
+
+def test_colcon_test_runs_the_example_packages_tests(tmp_path: Path) -> None:
+    """The same tests through `colcon test` (ament_python: pytest in the package), in a workspace that
+    links the package, as a user's would."""
+    ws = tmp_path / "ws"
+    (ws / "src").mkdir(parents=True)
+    (ws / "src" / "robot_tests").symlink_to(EXAMPLE)
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTEST_XDIST_WORKER", "PYTEST_ADDOPTS")}
+    colcon = str(Path(sys.prefix) / "bin" / "colcon")
+    built = subprocess.run(
+        [colcon, "build", "--symlink-install"], cwd=ws, capture_output=True, text=True, timeout=300, env=env
+    )
+    assert built.returncode == 0, built.stdout[-2000:] + built.stderr[-2000:]
+    tested = subprocess.run(
+        [colcon, "test", "--packages-select", "robot_tests", "--pytest-args", "-k", "seed_robot", "-p", "no:cacheprovider"],
+        cwd=ws, capture_output=True, text=True, timeout=300, env=env,
+    )  # fmt: skip
+    assert tested.returncode == 0, tested.stdout[-2000:] + tested.stderr[-2000:]
+    result = subprocess.run([colcon, "test-result", "--verbose"], cwd=ws, capture_output=True, text=True, timeout=60)
+    assert "1 test, 0 errors, 0 failures" in result.stdout, result.stdout + result.stderr
