@@ -6,10 +6,14 @@ and counts what it dropped on /gazelle/dropped_messages."""
 from __future__ import annotations
 
 import os
+import re
+import sys
 import time
+from pathlib import Path
 
 import pytest
 from _paths import SEED_XACRO
+from geometry_msgs.msg import Vector3
 from nav_msgs.msg import Odometry
 from std_msgs.msg import UInt64
 
@@ -65,3 +69,40 @@ def test_drop_when_behind_does_not_wait_and_counts_what_it_dropped() -> None:
         assert len(stamps) < 200, f"{len(stamps)} of 200 odometry messages: nothing was dropped"
     finally:
         sim.close()
+
+
+def test_a_listener_that_never_reads_never_freezes_the_simulation() -> None:
+    """Nothing dropped must not mean held by the slowest reader: a reliable /odom listener stopped with
+    SIGSTOP for 10 s of driving (DDS's KEEP_LAST writer history takes what it cannot deliver) leaves the
+    simulation stepping and every other listener served."""
+    import signal
+
+    from geometry_msgs.msg import Twist
+
+    listener_py = Path(__file__).resolve().parent / "odom_listener.py"
+    domain = reserve_domain()
+    sim = Sim(domain_id=domain.domain_id)
+    try:
+        sim.spawn(SEED_XACRO, "simple_robot", pose=(0.0, 0.0, 0.07))
+        stopped = sim.run([sys.executable, str(listener_py), "100000", "60"], name="odom_listener")
+        stopped.wait_line(re.compile("ready"), 60)
+        sim.ros.wait_until(lambda: sim.ros.node.count_subscribers("/odom") >= 1, 30, "the listener on /odom")
+        odom = sim.ros.subscribe("/odom", Odometry)
+        drive = sim.ros.publisher("/cmd_vel", Twist)
+        sim.ros.wait_until(lambda: drive.get_subscription_count() > 0, 30, "the drive on /cmd_vel")
+        drive.publish(Twist(linear=Vector3(x=0.3)))
+        os.kill(stopped.popen.pid, signal.SIGSTOP)
+        try:
+            t0 = time.perf_counter()
+            start = sim.time
+            sim.run_for(10.0, wall_timeout=60.0)
+            wall = time.perf_counter() - t0
+        finally:
+            os.kill(stopped.popen.pid, signal.SIGCONT)
+        assert sim.time >= start + 9.99
+        assert wall < 60.0
+        assert len([m for m in odom.messages if m.header.stamp.sec >= start + 1]) >= 800  # the other listener: served
+        assert odom.last.pose.pose.position.x > 1.0  # the robot drove on
+    finally:
+        sim.close()
+        domain.release()
