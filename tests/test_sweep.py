@@ -116,6 +116,8 @@ def test_the_command_line_prints_one_line_for_bad_input(scenario: Path, tmp_path
         ([f"{scenario}::missing"], "has no function 'missing'"),
         ([f"{scenario}::slide", "--param", "mu"], "expected NAME=a,b,c"),
         ([f"{scenario}::slide", "--param", "mu=1", "--ray", "http://x"], "expected local, auto or ray://"),
+        # nothing listens on port 9 here: one line at once (Ray's own client waits 30 s), nothing ran
+        ([f"{scenario}::slide", "--param", "mu=1", "--ray", "ray://127.0.0.1:9"], "cannot connect"),
     ]
     for args, says in cases:
         out = subprocess.run(

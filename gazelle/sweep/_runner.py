@@ -149,6 +149,8 @@ def _ray_runs(path: Path, name: str, todo: Sequence[RunSpec], address: str, jobs
     else:
         address_arg = address
     owned = not ray.is_initialized()  # a caller's own Ray session is used as it is, and left running
+    if owned and address.startswith("ray://"):
+        _probe(address)
     if owned:
         try:
             ray.init(address=address_arg, **kwargs)
@@ -165,6 +167,18 @@ def _ray_runs(path: Path, name: str, todo: Sequence[RunSpec], address: str, jobs
     finally:
         if owned:
             ray.shutdown()
+
+
+def _probe(address: str, timeout: float = 5.0) -> None:
+    """Refuse at once a Ray client address that nothing answers (Ray's own client waits 30 s)."""
+    host, _, port = address.removeprefix("ray://").rpartition(":")
+    try:
+        with socket.create_connection((host.strip("[]") or "127.0.0.1", int(port)), timeout=timeout):
+            pass
+    except ValueError:
+        raise SweepError(f"--ray {address}: expected ray://HOST:PORT") from None
+    except OSError as err:
+        raise SweepError(f"--ray {address}: cannot connect: {err.strerror or err}") from None
 
 
 def sweep(
