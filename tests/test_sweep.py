@@ -36,6 +36,17 @@ def slide(sim, params, seed):
     return {"distance": x, "passed": x < 0.5}
 
 
+def dies(sim, params, seed):
+    """Seed 1's worker is killed under it (as the OOM killer would); seed 3 never ends."""
+    import os, signal, time
+    if seed == 1:
+        os.kill(os.getpid(), signal.SIGKILL)
+    if seed == 3:
+        while True:
+            time.sleep(0.01)
+    return {"passed": True}
+
+
 def boom(sim, params, seed):
     if seed == 1:
         raise RuntimeError("the scenario failed on purpose")
@@ -178,3 +189,12 @@ def test_the_example_sweep_runs_from_the_command_line_and_its_report_shows_plots
     img = Image.open(io.BytesIO(shot)).convert("RGB")
     bar = sum(1 for px in img.getdata() if abs(px[0] - 0x3B) < 12 and abs(px[1] - 0x7D) < 12 and abs(px[2] - 0xD8) < 12)
     assert bar > 2000, f"{bar} pixels of the pass-rate bars' blue: the plot did not draw"
+
+
+def test_a_killed_worker_is_retried_once_then_lost_and_a_hung_run_times_out(scenario: Path, tmp_path: Path) -> None:
+    result = sweep(f"{scenario}::dies", [], [0, 1, 2, 3], out=tmp_path / "dies", jobs=2, timeout=1.0, report=False)
+    by_seed = {r["seed"]: r for r in result.rows}
+    assert sorted(by_seed) == [0, 1, 2, 3], result.rows
+    assert by_seed[1]["status"] == "lost" and "died under it twice" in by_seed[1]["error"]
+    assert by_seed[3]["status"] == "timeout" and "longer than 1 s" in by_seed[3]["error"]
+    assert by_seed[0]["status"] == by_seed[2]["status"] == "passed"

@@ -249,11 +249,14 @@ def sweep(
     ),
     out: Path | None = typer.Option(None, "--out", help="Results folder (default: out/sweep_FUNCTION)."),
     resume: bool = typer.Option(False, "--resume", help="Keep the runs already in --out and run the others."),
+    timeout: float | None = typer.Option(
+        None, "--timeout", help="Seconds of wall time a run may take (then it is stopped and recorded as a timeout)."
+    ),
 ) -> None:
     """Run a scenario over a grid of parameters and seeds; a row per run and an HTML report."""
     from ._sweep import run_sweep
 
-    raise typer.Exit(run_sweep(scenario, param, seeds, jobs=jobs, ray=ray, out=out, resume=resume))
+    raise typer.Exit(run_sweep(scenario, param, seeds, jobs=jobs, ray=ray, out=out, resume=resume, timeout=timeout))
 
 
 @app.command()

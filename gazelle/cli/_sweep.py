@@ -17,6 +17,7 @@ def run_sweep(
     ray: str | None,
     out: Path | None,
     resume: bool,
+    timeout: float | None = None,
 ) -> int:
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 
@@ -52,7 +53,9 @@ def run_sweep(
 
     t0 = time.perf_counter()
     try:
-        result = sweep(scenario, grid, seed_list, out=folder, jobs=jobs, ray=ray, resume=resume, on_row=on_row)
+        result = sweep(
+            scenario, grid, seed_list, out=folder, jobs=jobs, ray=ray, resume=resume, on_row=on_row, timeout=timeout
+        )
     except SweepError as err:
         print(f"gazelle sweep: {err}", file=sys.stderr)
         return 2
@@ -64,8 +67,10 @@ def run_sweep(
     rows = result.rows
     passed = sum(r["status"] == "passed" for r in rows)
     errors = sum(r["status"] == "error" for r in rows)
+    other = sum(r["status"] in ("timeout", "lost") for r in rows)
     print(
         f"{len(rows)} runs ({result.ran} now, in {time.perf_counter() - t0:.1f} s): {passed} passed, "
-        f"{len(rows) - passed - errors} failed, {errors} raised; report: {folder / 'report.html'}"
+        f"{len(rows) - passed - errors - other} failed, {errors} raised, {other} timed out or lost; "
+        f"report: {folder / 'report.html'}"
     )
     return 0 if passed == len(rows) else 1

@@ -36,13 +36,36 @@ def _metric(value: Any) -> Any:
     return f if math.isfinite(f) else str(f)
 
 
-def run_one(path: str, name: str, spec: RunSpec, source: str | None = None) -> dict[str, Any]:
+class _RunTimeout(Exception):
+    pass
+
+
+def _on_alarm(_signum: int, _frame: Any) -> None:
+    raise _RunTimeout
+
+
+def run_one(
+    path: str, name: str, spec: RunSpec, source: str | None = None, timeout: float | None = None
+) -> dict[str, Any]:
     """Run the scenario once, in this process, and return its row. Never raises: a scenario that raises
-    gives a row with status ``error`` and its traceback."""
+    gives a row with status ``error`` and its traceback; one that runs longer than ``timeout`` seconds of
+    wall time is stopped (at its next Python line: a single long MuJoCo call finishes first) and gives
+    status ``timeout``."""
+    import signal
+
     row: dict[str, Any] = {"key": spec.key, "seed": spec.seed}
     row.update({f"param.{k}": v for k, v in spec.params})
     row.update(status="error", error="", wall_sec=0.0, sim_sec=0.0, worker=f"{socket.gethostname()}:{os.getpid()}")
     t0 = time.perf_counter()
+    timer = False
+    previous: Any = None
+    if timeout is not None and timeout > 0:
+        try:
+            previous = signal.signal(signal.SIGALRM, _on_alarm)
+            signal.setitimer(signal.ITIMER_REAL, timeout)
+            timer = True
+        except ValueError:  # not the main thread of its process: no wall-clock limit here
+            pass
     try:
         from ..description import load
         from ..sim import Simulation
@@ -58,9 +81,24 @@ def run_one(path: str, name: str, spec: RunSpec, source: str | None = None) -> d
         row.update({f"metric.{k}": _metric(v) for k, v in metrics.items()})
         row["status"] = "passed" if bool(metrics.get("passed", True)) else "failed"
         row["sim_sec"] = float(sim.world.time)
+    except _RunTimeout:
+        row["status"] = "timeout"
+        row["error"] = f"the run took longer than {timeout:g} s of wall time and was stopped"
     except Exception:
         row["error"] = traceback.format_exc(limit=-8)
+    finally:
+        if timer:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, previous)
     row["wall_sec"] = time.perf_counter() - t0
+    return row
+
+
+def lost_row(spec: RunSpec, why: str) -> dict[str, Any]:
+    """The row of a run whose worker died under it twice."""
+    row: dict[str, Any] = {"key": spec.key, "seed": spec.seed}
+    row.update({f"param.{k}": v for k, v in spec.params})
+    row.update(status="lost", error=why, wall_sec=0.0, sim_sec=0.0, worker="")
     return row
 
 
@@ -89,8 +127,8 @@ def _source_file(source: str, origin: str) -> Path:
     return path
 
 
-def _ray_task(source: str, origin: str, name: str, spec: RunSpec) -> dict[str, Any]:
-    return run_one(origin, name, spec, source=source)
+def _ray_task(source: str, origin: str, name: str, spec: RunSpec, timeout: float | None) -> dict[str, Any]:
+    return run_one(origin, name, spec, source=source, timeout=timeout)
 
 
 @dataclass
@@ -118,28 +156,54 @@ def read_rows(path: Path) -> list[dict[str, Any]]:
     return rows
 
 
-def _pool_runs(path: Path, name: str, todo: Sequence[RunSpec], jobs: int) -> Iterator[dict[str, Any]]:
+def _pool_runs(
+    path: Path, name: str, todo: Sequence[RunSpec], jobs: int, timeout: float | None = None
+) -> Iterator[dict[str, Any]]:
     # fork: the workers start with gazelle's runtime and the scenario's module already imported (warm),
     # and a user's script needs no `if __name__ == "__main__"` guard (spawn and forkserver run it again).
     # With fork, the pool starts all its workers at the first submit, before anything here starts a thread.
+    from concurrent.futures.process import BrokenProcessPool
+
     from ..sim import Simulation  # noqa: F401 - imported before the fork: every worker has it
     from ..worlds import default_world  # noqa: F401
 
     ctx = multiprocessing.get_context("fork")
-    with ProcessPoolExecutor(max_workers=jobs, mp_context=ctx) as pool:
-        pending: set[Future[dict[str, Any]]] = set()
-        queue = list(todo)
-        while queue or pending:
-            while queue and len(pending) < 2 * jobs:  # a few queued ahead, not the whole sweep
-                pending.add(pool.submit(run_one, str(path), name, queue.pop(0)))
-            done, pending = wait(pending, return_when=FIRST_COMPLETED)
-            for f in done:
-                yield f.result()
+    queue = list(todo)
+    while queue:
+        # a worker killed under a run breaks the whole pool, and which run killed it cannot be told: the
+        # runs that were in flight go again one at a time, each in a pool of its own; one that kills
+        # that one too is "lost" (tried twice), the others' rows are as if nothing happened
+        suspects: list[RunSpec] = []
+        with ProcessPoolExecutor(max_workers=jobs, mp_context=ctx) as pool:
+            pending: dict[Future[dict[str, Any]], RunSpec] = {}
+            while (queue or pending) and not suspects:
+                while queue and len(pending) < 2 * jobs:  # a few queued ahead, not the whole sweep
+                    spec = queue.pop(0)
+                    pending[pool.submit(run_one, str(path), name, spec, None, timeout)] = spec
+                done, _ = wait(list(pending), return_when=FIRST_COMPLETED)
+                for f in done:
+                    spec = pending.pop(f)
+                    try:
+                        yield f.result()
+                    except BrokenProcessPool:
+                        suspects.append(spec)
+            if suspects:
+                suspects += list(pending.values())
+                pool.shutdown(wait=True, cancel_futures=True)
+        for spec in suspects:
+            with ProcessPoolExecutor(max_workers=1, mp_context=ctx) as alone:
+                try:
+                    yield alone.submit(run_one, str(path), name, spec, None, timeout).result()
+                except BrokenProcessPool:
+                    yield lost_row(spec, "its worker process died under it twice (killed, or crashed in C)")
 
 
-def _ray_runs(path: Path, name: str, todo: Sequence[RunSpec], address: str, jobs: int) -> Iterator[dict[str, Any]]:
+def _ray_runs(
+    path: Path, name: str, todo: Sequence[RunSpec], address: str, jobs: int, timeout: float | None = None
+) -> Iterator[dict[str, Any]]:
     try:
         import ray
+        from ray.exceptions import RayError
     except ImportError as err:
         raise SweepError(f"--ray needs the ray package: {err}") from None
     kwargs: dict[str, Any] = {"include_dashboard": False, "log_to_driver": False, "ignore_reinit_error": True}
@@ -159,11 +223,15 @@ def _ray_runs(path: Path, name: str, todo: Sequence[RunSpec], address: str, jobs
             raise SweepError(f"--ray {address}: cannot connect: {type(err).__name__}: {first}") from None
     try:
         source = path.read_text()
-        task = ray.remote(num_cpus=1)(_ray_task)
-        refs = [task.remote(source, str(path), name, spec) for spec in todo]
+        task = ray.remote(num_cpus=1, max_retries=1)(_ray_task)  # a dead worker's run goes again once
+        refs = [task.remote(source, str(path), name, spec, timeout) for spec in todo]
+        specs = dict(zip(refs, todo, strict=True))
         while refs:
             done, refs = ray.wait(refs, num_returns=1)
-            yield ray.get(done[0])
+            try:
+                yield ray.get(done[0])
+            except RayError as err:  # its worker died twice
+                yield lost_row(specs[done[0]], f"Ray could not run it: {type(err).__name__}")
     finally:
         if owned:
             ray.shutdown()
@@ -192,6 +260,7 @@ def sweep(
     resume: bool = False,
     on_row: Callable[[dict[str, Any], int, int], None] | None = None,
     report: bool = True,
+    timeout: float | None = None,
 ) -> SweepResult:
     """Run ``scenario`` (``file.py::function``) for every combination of ``params`` and every seed.
 
@@ -199,7 +268,8 @@ def sweep(
     for a Ray instance of ``jobs`` CPUs on this machine, ``"auto"`` or ``"ray://host:port"`` for a
     cluster). Rows go to ``out/runs.jsonl`` as runs finish; at the end ``out/runs.parquet`` and the
     report ``out/report.html``. ``resume`` keeps the rows already in ``out`` and runs only the others.
-    ``on_row(row, done, total)`` is called after each run (progress).
+    ``on_row(row, done, total)`` is called after each run (progress). ``timeout``: seconds of wall time
+    a run may take (status ``timeout``); a run whose worker dies is run once more, then is ``lost``.
     """
     path, name, _fn = load_scenario(scenario)  # bad input fails here, before anything starts
     specs = grid(params, seeds)
@@ -226,7 +296,7 @@ def sweep(
     )
     result = SweepResult(folder, rows=list(previous))
     mode = "a" if resume else "w"
-    runs = _ray_runs(path, name, todo, ray, jobs) if ray else _pool_runs(path, name, todo, jobs)
+    runs = _ray_runs(path, name, todo, ray, jobs, timeout) if ray else _pool_runs(path, name, todo, jobs, timeout)
     with open(log, mode) as f:
         for row in runs:
             f.write(json.dumps(row, sort_keys=True) + "\n")
