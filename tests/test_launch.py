@@ -172,7 +172,10 @@ def test_show_args_lists_the_arguments_of_the_file_and_its_includes(prefix):
         (["launch", "demo_pkg", "main.launch.py", "colour:=red"], "launch argument(s) 'colour' not declared"),
         (["run", "no_such_pkg", "x"], "Package 'no_such_pkg' not found"),
         (["run", "demo_pkg", "no_such_exe"], "No executable found"),
-        (["doctor"], "invalid choice: 'doctor' (choose from 'action', 'bag', 'control', 'interface', 'launch', 'node', 'param'"),
+        (
+            ["doctor"],
+            "invalid choice: 'doctor' (choose from 'action', 'bag', 'control', 'interface', 'launch', 'node', 'param'",
+        ),
     ],
 )
 def test_bad_input_is_a_clear_error_without_a_traceback_of_ours(prefix, args, expected):
