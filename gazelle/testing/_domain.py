@@ -8,9 +8,11 @@ process ends, however it ends, so a killed run never leaves a domain taken.
 
 from __future__ import annotations
 
+import contextlib
 import fcntl
 import os
 import tempfile
+from collections.abc import Iterator, Mapping
 from typing import IO
 
 FIRST, LAST = 10, 100
@@ -47,3 +49,18 @@ def reserve_domain(preferred: int | None = None) -> DomainReservation:
             continue
         return DomainReservation(domain, handle)
     raise RuntimeError(f"no free ROS domain id in {FIRST}..{LAST}: {span} runs hold one each")
+
+
+@contextlib.contextmanager
+def environ_applied(values: Mapping[str, str]) -> Iterator[None]:
+    """``os.environ`` with ``values`` set while the block runs, each key put back as it was (or removed)."""
+    saved = {k: os.environ.get(k) for k in values}
+    os.environ.update(values)
+    try:
+        yield
+    finally:
+        for k, v in saved.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v

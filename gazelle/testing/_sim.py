@@ -13,10 +13,11 @@ import subprocess
 import sys
 import threading
 import time
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
+from ._domain import environ_applied
 from ._ros_node import RosTestNode, TestTimeout
 
 __all__ = ["ChildProcess", "Sim", "SimError"]
@@ -345,18 +346,8 @@ class Sim:
             self.ros = None
         return killed
 
-    @contextlib.contextmanager
-    def env_applied(self) -> Iterator[None]:
+    def env_applied(self) -> contextlib.AbstractContextManager[None]:
         """os.environ with this simulation's domain while the block runs (for code under test that
         creates its own rclpy context from the environment)."""
         keys = ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE", "RMW_IMPLEMENTATION")
-        saved = {k: os.environ.get(k) for k in keys}
-        os.environ.update({k: self.env[k] for k in keys})
-        try:
-            yield
-        finally:
-            for k, v in saved.items():
-                if v is None:
-                    os.environ.pop(k, None)
-                else:
-                    os.environ[k] = v
+        return environ_applied({k: self.env[k] for k in keys})

@@ -74,6 +74,16 @@ def _safe(nodeid: str) -> str:
     return re.sub(r"[^A-Za-z0-9_.-]+", "_", nodeid).strip("_")[:150]
 
 
+def _marker_options(request: pytest.FixtureRequest) -> dict[str, Any]:
+    """The ``gazelle`` marker's options for this test or module, its world file checked."""
+    marker = request.node.get_closest_marker("gazelle")
+    options: dict[str, Any] = dict(marker.kwargs) if marker is not None else {}
+    world = options.get("world")
+    if world is not None and not Path(world).is_file():
+        pytest.fail(f"@pytest.mark.gazelle(world=...): no such world file: {world}", pytrace=False)
+    return options
+
+
 @pytest.fixture
 def gazelle_seed(request: pytest.FixtureRequest) -> int:
     marker = request.node.get_closest_marker("gazelle")
@@ -108,20 +118,17 @@ def _leaked(token: str) -> list[tuple[int, str]]:
 @pytest.fixture
 def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[Any]:
     try:
-        from ._domain import reserve_domain
+        from ._domain import environ_applied, reserve_domain
         from ._sim import Sim
     except ImportError as err:  # ROS 2's Python packages are not in this environment
         pytest.fail(f"gazelle_sim needs ROS 2 (rclpy) in this environment: {err}", pytrace=False)
-    marker = request.node.get_closest_marker("gazelle")
-    options: dict[str, Any] = dict(marker.kwargs) if marker is not None else {}
+    options = _marker_options(request)
     record = list(options.pop("record", ()))
     options.pop("seed", None)
     unknown = set(options) - {"world", "paused", "rtf", "start_timeout"}
     if unknown:
         pytest.fail(f"@pytest.mark.gazelle: unknown option(s) {', '.join(sorted(unknown))}", pytrace=False)
     world = options.get("world")
-    if world is not None and not Path(world).is_file():
-        pytest.fail(f"@pytest.mark.gazelle(world=...): no such world file: {world}", pytrace=False)
     config = request.config
     mode = config.getoption("--gazelle-artifacts")
     base = Path(config.getoption("--gazelle-artifacts-dir") or Path(config.rootpath) / "gazelle-artifacts")
@@ -136,7 +143,6 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
     token = uuid.uuid4().hex
     env = {**os.environ, TOKEN_VAR: token}
     sim = None
-    saved = {k: os.environ.get(k) for k in ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE", TOKEN_VAR)}
     try:
         try:
             sim = Sim(
@@ -152,15 +158,10 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
         except Exception as err:
             pytest.fail(f"gazelle_sim did not start: {err}", pytrace=False)
         # what the test itself starts (rclpy's default context, a subprocess) is on this domain too
-        os.environ.update({"ROS_DOMAIN_ID": str(domain.domain_id), "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"})
-        os.environ[TOKEN_VAR] = token
-        yield sim
+        test_env = {"ROS_DOMAIN_ID": str(domain.domain_id), "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}
+        with environ_applied({**test_env, TOKEN_VAR: token}):
+            yield sim
     finally:
-        for k, v in saved.items():
-            if v is None:
-                os.environ.pop(k, None)
-            else:
-                os.environ[k] = v
         if sim is not None:
             sim.close()
             if mode != "none" and folder.exists():
@@ -191,11 +192,8 @@ def gazelle_sim_module(request: pytest.FixtureRequest) -> Iterator[Any]:
         from ._sim import Sim
     except ImportError as err:
         pytest.fail(f"gazelle_sim_module needs ROS 2 (rclpy) in this environment: {err}", pytrace=False)
-    marker = request.node.get_closest_marker("gazelle")
-    options: dict[str, Any] = dict(marker.kwargs) if marker is not None else {}
+    options = _marker_options(request)
     world = options.get("world")
-    if world is not None and not Path(world).is_file():
-        pytest.fail(f"@pytest.mark.gazelle(world=...): no such world file: {world}", pytrace=False)
     seed = options.get("seed", request.config.getoption("--gazelle-seed"))
     domain = reserve_domain()
     sim = None
@@ -215,19 +213,12 @@ def gazelle_sim_module(request: pytest.FixtureRequest) -> Iterator[Any]:
 def gazelle_shared_sim(gazelle_sim_module: Any) -> Iterator[Any]:
     """The module's server, reset for this test (time 0, spawned entities gone, the last test's
     processes stopped): a fraction of a second instead of a new server."""
+    from ._domain import environ_applied
+
     sim = gazelle_sim_module
     sim.reset()
-    keys = ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE")
-    saved = {k: os.environ.get(k) for k in keys}
-    os.environ.update({k: sim.env[k] for k in keys})
-    try:
+    with environ_applied({k: sim.env[k] for k in ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE")}):
         yield sim
-    finally:
-        for k, v in saved.items():
-            if v is None:
-                os.environ.pop(k, None)
-            else:
-                os.environ[k] = v
 
 
 @pytest.fixture
