@@ -43,10 +43,9 @@ def _spawner(*args: str, timeout: float = 60) -> tuple[int, str]:
     return rc, proc.output
 
 
-@pytest.mark.slow
-def test_diffbot_drives_with_its_own_controllers_yaml_and_the_spawner(sim_factory, ros_client):
-    sim = sim_factory("--no-viewer")
-    # the controllers YAML the way launch files pass it: --ros-args --params-file on the spawn
+def _spawn_diffbot(sim) -> None:
+    """The real diffbot with its controllers YAML, the way launch files pass it (--ros-args --params-file
+    on the spawn), its controller manager up."""
     spawn = start(
         [*GAZELLE, "spawn", "-entity", "diffbot", "-file", str(DIFFBOT_URDF), "-z", "0.05"]
         + ["--ros-args", "--params-file", str(DIFFBOT_YAML)],
@@ -54,6 +53,12 @@ def test_diffbot_drives_with_its_own_controllers_yaml_and_the_spawner(sim_factor
     )
     assert spawn.wait(60) == 0, spawn.output
     sim.wait_line("controller manager '/controller_manager'", 10)
+
+
+@pytest.mark.slow
+def test_diffbot_drives_with_its_own_controllers_yaml_and_the_spawner(sim_factory, ros_client):
+    sim = sim_factory("--no-viewer")
+    _spawn_diffbot(sim)  # the controllers YAML the way launch files pass it: --params-file on the spawn
 
     rc, out = _spawner("joint_state_broadcaster", "diffbot_base_controller")
     assert rc == 0, out
@@ -297,13 +302,7 @@ def test_ros2_control_verbs_list_switch_and_set_the_diffbots_controllers(sim_fac
     """Issue 27: `ros2 control list_controllers|list_hardware_interfaces|switch_controllers|...` did not
     exist; users type them daily. Output as ros2controlcli Jazzy's (no colours when piped)."""
     sim = sim_factory("--no-viewer")
-    spawn = start(
-        [*GAZELLE, "spawn", "-entity", "diffbot", "-file", str(DIFFBOT_URDF), "-z", "0.05"]
-        + ["--ros-args", "--params-file", str(DIFFBOT_YAML)],
-        "spawn",
-    )
-    assert spawn.wait(60) == 0, spawn.output
-    sim.wait_line("controller manager '/controller_manager'", 10)
+    _spawn_diffbot(sim)
     rc, out = _spawner("joint_state_broadcaster")
     assert rc == 0, out
 

@@ -221,16 +221,20 @@ def _switch_call(
     return bool(cm.call(SwitchController, "switch_controller", **req).ok)
 
 
+def _by_name(cm: _Manager, srv_type: Any, service: str, name: str, doing: str) -> None:
+    """Call a manager service that takes a controller's name; a refusal is one line."""
+    if not cm.call(srv_type, service, name=name).ok:
+        raise ControlError(f"Error {doing} controller {name}, check controller_manager logs")
+
+
 def _load(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
     from controller_manager_msgs.srv import ConfigureController, LoadController
 
     if args.param_file:
         raise ControlError("loading with a parameter file: set <controller>.params_file on the manager (see README)")
-    if not cm.call(LoadController, "load_controller", name=args.controller_name).ok:
-        raise ControlError(f"Error loading controller {args.controller_name}, check controller_manager logs")
+    _by_name(cm, LoadController, "load_controller", args.controller_name, "loading")
     if args.set_state:
-        if not cm.call(ConfigureController, "configure_controller", name=args.controller_name).ok:
-            raise ControlError(f"Error configuring controller {args.controller_name}")
+        _by_name(cm, ConfigureController, "configure_controller", args.controller_name, "configuring")
         if args.set_state == "active" and not _switch_call(cm, [args.controller_name], [], True, True, 5.0):
             raise ControlError(f"Error activating controller {args.controller_name}, check controller_manager logs")
         print(f"{c.ok_blue}Successfully loaded controller {args.controller_name} into state {args.set_state}{c.end}")
@@ -242,8 +246,7 @@ def _load(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
 def _configure(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
     from controller_manager_msgs.srv import ConfigureController
 
-    if not cm.call(ConfigureController, "configure_controller", name=args.controller_name).ok:
-        raise ControlError(f"Error configuring controller {args.controller_name}, check controller_manager logs")
+    _by_name(cm, ConfigureController, "configure_controller", args.controller_name, "configuring")
     print(f"{c.ok_blue}Successfully configured controller {args.controller_name}{c.end}")
     return 0
 
@@ -282,8 +285,7 @@ def _switch(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
 def _unload(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
     from controller_manager_msgs.srv import UnloadController
 
-    if not cm.call(UnloadController, "unload_controller", name=args.controller_name).ok:
-        raise ControlError(f"Error unloading controller {args.controller_name}, check controller_manager logs")
+    _by_name(cm, UnloadController, "unload_controller", args.controller_name, "unloading")
     print(f"{c.ok_blue}Successfully unloaded controller {args.controller_name}{c.end}")
     return 0
 
