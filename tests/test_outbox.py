@@ -152,3 +152,24 @@ def test_state_lanes_keep_their_newest_and_a_stuck_publish_never_freezes_the_que
     assert box.flush(5)
     assert got[:2] == [0, 49] and got[2:] == [108, 109]
     box.close()
+
+
+def test_stop_waiting_releases_a_queuer_held_by_a_stuck_publisher_at_once():
+    """Shutting down: a put held by a full lane goes on at once (dropping) instead of after the stall
+    timeout, so a server's stop never waits on its publisher thread."""
+    box, release, publishing, got, slow = _stuck_publisher()
+    lane = box.lane(slow, 1, "/odom")
+    lane.put(0)
+    assert publishing.wait(5)
+    lane.put(1)  # fills the lane
+    queuer = threading.Thread(target=lambda: lane.put(2))
+    queuer.start()
+    queuer.join(0.3)
+    assert queuer.is_alive()  # held: lossless
+    t0 = time.perf_counter()
+    box.stop_waiting()
+    queuer.join(2)
+    assert not queuer.is_alive() and time.perf_counter() - t0 < 1.0
+    release.set()
+    assert box.flush(5)
+    box.close()

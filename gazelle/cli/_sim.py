@@ -150,6 +150,7 @@ def run_sim(
             fox.wait(3.0)
         except subprocess.TimeoutExpired:
             fox.kill()
+    bridge.node.outbox.stop_waiting()  # the simulation thread's last block must not wait on publishing
     sim.stop()
     bridge.shutdown()
     return rc

@@ -108,13 +108,14 @@ class Outbox:
             ):
                 self.waited += 1
                 room = self._cv.wait_for(
-                    lambda: len(lane.items) < lane.depth or self._closed or lane.closed, self.stall_timeout
+                    lambda: len(lane.items) < lane.depth or self._closed or lane.closed or not self.lossless,
+                    self.stall_timeout,
                 )
                 if self._closed or lane.closed:
                     return
-                full = not room
-                self._stuck = full
-                if full and lane.name not in self._stalled:
+                full = len(lane.items) >= lane.depth  # still full: timed out, or stop_waiting() let it go
+                self._stuck = not room
+                if not room and lane.name not in self._stalled:
                     self._stalled.add(lane.name)
                     _log.warning(
                         f"publishing on {lane.name or 'a topic'} has been stuck for {self.stall_timeout:g} s: "
@@ -154,6 +155,14 @@ class Outbox:
                 if lane.name not in self._failed:
                     self._failed.add(lane.name)
                     _log.warning(f"publishing on {lane.name or 'a topic'} failed: {type(err).__name__}: {err}")
+
+    def stop_waiting(self) -> None:
+        """From now on a full lane drops instead of holding the queuer: the server is shutting down, and
+        the simulation thread must not wait on a publisher that is about to go (a ``gazelle sim`` was
+        once killed by its 3 s shutdown deadline; the stop waited on the simulation thread)."""
+        with self._cv:
+            self.lossless = False
+            self._cv.notify_all()
 
     def flush(self, timeout: float = 5.0) -> bool:
         """Wait until everything queued so far is published; False on timeout."""
