@@ -493,3 +493,42 @@ def test_imu_and_force_torque_sensor_components_are_read_from_the_simulated_sens
     # the 2 kg tool hangs on the wrist joint: 19.6 N along z, as the simulated sensor reads it
     assert abs(wrench[-1].force[2]) == pytest.approx(2 * 9.81, rel=0.01)
     assert wrench[-1].frame_id == "tool"
+
+
+# --------------------------------------------------------------------------- Husky: 10 Hz manager, coarse steps
+HUSKY = REPO / "tests" / "data" / "husky_like"
+
+
+@pytest.mark.parametrize("step_sec", [0.001, 0.004, 0.01])
+def test_a_husky_with_its_10_hz_manager_drives_at_its_command_at_1_4_and_10_ms_steps(step_sec):
+    """Issue 26 item 4: Husky's own control.yaml runs its manager at 10 Hz, and its playpen world steps
+    10 ms. The wheels' integral term was updated once per 0.1 s against a 0.05 s integral time, which
+    overshoots every update: the body's speed swung 0.07-0.53 m/s for 0.3 at 10 ms. Its odometry
+    integrated the rolling-mean velocity (ros2_controllers integrates each cycle's displacement), so it
+    lagged 0.165 m behind the robot."""
+    world = default_world()
+    world = dataclasses.replace(world, physics=dataclasses.replace(world.physics, max_step_size_sec=step_sec))
+    sim = Simulation(world, rtf=0)
+    cm = _manager(sim.spawn(load(HUSKY / "husky.urdf").value, name="husky", pose=Pose((0.0, 0.0, 0.14))))
+    _start(cm, HUSKY / "control.yaml", "joint_state_broadcaster", "husky_velocity_controller")
+    odom: list = []
+    for ep in sim.bus.endpoints():
+        if ep.topic == "/husky_velocity_controller/odom":
+            ep.add_sink(odom.append)
+    steps = round(0.1 / step_sec)  # one manager cycle
+
+    def x() -> float:
+        return sim.world.entity_state("husky").pose.position[0]
+
+    sim.step(10 * steps)
+    x_start = x()
+    xs = []
+    for _ in range(60):  # 6 s at 0.3 m/s (Humble's unstamped topic: its YAML says use_stamped_vel: false)
+        assert sim.bus.inject("/husky_velocity_controller/cmd_vel_unstamped", MsgType.TWIST, Twist((0.3, 0, 0))) == 1
+        sim.step(steps)
+        xs.append(x())
+    speeds = [(b - a) / 0.1 for a, b in zip(xs[-21:], xs[-20:])]  # the last 2 s, cycle by cycle
+    assert min(speeds) == pytest.approx(0.3, rel=0.03) and max(speeds) == pytest.approx(0.3, rel=0.03)
+    # the odometry of the last cycle (read at its start, one cycle before the end) agrees with the
+    # ground truth there
+    assert odom[-1].pose.position[0] == pytest.approx(xs[-2] - x_start, abs=0.01)

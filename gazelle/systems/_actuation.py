@@ -112,8 +112,12 @@ class VelocityServo:
         q = self.actuator.joint.position
         if self._last is not None:
             t0, q0 = self._last
-            travel_error = self.target * (sim_time_sec - t0) - (q - q0)  # ∫(target − q̇)dt over the interval
-            integral = self.integral + travel_error / self.integral_time
+            interval = sim_time_sec - t0
+            travel_error = self.target * interval - (q - q0)  # ∫(target − q̇)dt over the interval
+            # An update k·error with k = interval/Ti over 1 overshoots (k = 2 oscillates for good): a
+            # controller manager at 10 Hz (Husky's) updates every 0.1 s against Ti = 0.05 s. The integral
+            # time is at least two intervals, so each update removes at most half the error.
+            integral = self.integral + travel_error / max(self.integral_time, 2.0 * interval)
             self.integral = max(-self.integral_limit, min(self.integral_limit, integral))
         self._last = (sim_time_sec, q)
         self.target = target

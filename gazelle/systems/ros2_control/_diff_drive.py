@@ -169,25 +169,30 @@ class DiffDriveController(Controller):
     def _odometry(
         self, t: float, dt: float, states: dict[str, float], lin: float, ang: float, sep: float, r_l: float, r_r: float
     ) -> None:
+        # As ros2_controllers' odometry.cpp (jazzy, Odometry::update/updateFromVelocity): the pose
+        # integrates this cycle's displacement; only the published twist is the rolling mean of the
+        # last `velocity_rolling_window_size` cycles (integrating the mean lagged the pose by half the
+        # window: 0.5 s at Husky's 10 Hz, 0.165 m short after 2 m).
         if self.open_loop:
             v, w = lin, ang
-        elif self.position_feedback:
-            pl = sum(states[f"{n}/position"] for n in self.left) / len(self.left)
-            pr = sum(states[f"{n}/position"] for n in self.right) / len(self.right)
-            last = self._wheel_pos
-            self._wheel_pos = (pl, pr)
-            if last is None or dt <= 0:
-                return
-            dl, dr = (pl - last[0]) * r_l, (pr - last[1]) * r_r
-            self._v_hist.append((dl + dr) / 2.0 / dt)
-            self._w_hist.append((dr - dl) / sep / dt)
-            v, w = sum(self._v_hist) / len(self._v_hist), sum(self._w_hist) / len(self._w_hist)
+            mean_v, mean_w = v, w
         else:
-            ql = sum(states[f"{n}/velocity"] for n in self.left) / len(self.left) * r_l
-            qr = sum(states[f"{n}/velocity"] for n in self.right) / len(self.right) * r_r
-            self._v_hist.append((ql + qr) / 2.0)
-            self._w_hist.append((qr - ql) / sep)
-            v, w = sum(self._v_hist) / len(self._v_hist), sum(self._w_hist) / len(self._w_hist)
+            if self.position_feedback:
+                pl = sum(states[f"{n}/position"] for n in self.left) / len(self.left)
+                pr = sum(states[f"{n}/position"] for n in self.right) / len(self.right)
+                last = self._wheel_pos
+                self._wheel_pos = (pl, pr)
+                if last is None or dt <= 0:
+                    return
+                dl, dr = (pl - last[0]) * r_l, (pr - last[1]) * r_r
+                v, w = (dl + dr) / 2.0 / dt, (dr - dl) / sep / dt
+            else:
+                ql = sum(states[f"{n}/velocity"] for n in self.left) / len(self.left) * r_l
+                qr = sum(states[f"{n}/velocity"] for n in self.right) / len(self.right) * r_r
+                v, w = (ql + qr) / 2.0, (qr - ql) / sep
+            self._v_hist.append(v)
+            self._w_hist.append(w)
+            mean_v, mean_w = sum(self._v_hist) / len(self._v_hist), sum(self._w_hist) / len(self._w_hist)
         # exact integration along the arc (second-order Runge-Kutta when turning slowly)
         dth = w * dt
         if abs(dth) < 1e-6:
@@ -199,7 +204,7 @@ class DiffDriveController(Controller):
             self.x += r * (math.sin(self.heading + dth) - math.sin(self.heading))
             self.y -= r * (math.cos(self.heading + dth) - math.cos(self.heading))
         self.heading += dth
-        self.v, self.w = v, w
+        self.v, self.w = mean_v, mean_w
 
     def _publish(self, t: float) -> None:
         if self.publish_rate > 0:
