@@ -131,7 +131,9 @@ def _surface_friction(col: Collision) -> list[float]:
         mu = min(mu, s.mu2) if s.mu2 >= 0 else mu
     frictionless = mu == 0.0  # a frictionless caster resists neither sliding nor spinning
     torsional = s.torsional if s.torsional is not None else (0.0 if frictionless else 0.005)
-    rolling = s.rolling if s.rolling is not None else (0.0 if frictionless else 0.0001)
+    # Bullet's <rolling_friction> is not applied (see _NOT_SIMULATED): the rolling slot is MuJoCo's
+    # default, used only by condim 6 geoms, which gazelle does not make
+    rolling = 0.0 if frictionless else 0.0001
     return [max(mu, 0.0), max(torsional, 0.0), max(rolling, 0.0)]
 
 
@@ -249,10 +251,8 @@ def _add_geom(
     if solref is not None:
         kwargs["solref"], kwargs["solimp"] = solref
     surface = col.surface
-    # MuJoCo uses torsional friction from condim 4 and rolling friction from condim 6
-    if surface.rolling:
-        kwargs["condim"] = 6
-    elif surface.torsional:
+    # MuJoCo uses torsional friction from condim 4
+    if surface.torsional:
         kwargs["condim"] = 4
     # Gazebo collides two shapes when (bitmask1 & bitmask2) != 0, default 0xffff; MuJoCo when
     # (contype1 & conaffinity2) | (contype2 & conaffinity1): both fields = the bitmask is the same rule.
@@ -333,12 +333,28 @@ def cone_vertices(radius: float, length: float, segments: int = CONE_SEGMENTS) -
 DEFAULT_COLLIDE_BITMASK = 0xFFFF
 """Gazebo's default ``collide_bitmask``."""
 
-_NOT_SIMULATED = ("fdir1", "slip1", "slip2", "kd", "min_depth", "max_vel", "soft_cfm", "soft_erp", "restitution")
+_NOT_SIMULATED = {
+    "fdir1": "fdir1",
+    "slip1": "slip1",
+    "slip2": "slip2",
+    "kd": "kd",
+    "min_depth": "min_depth",
+    "max_vel": "max_vel",
+    "soft_cfm": "soft_cfm",
+    "soft_erp": "soft_erp",
+    "restitution": "restitution",
+    # Only the Bullet engines read <bullet><rolling_friction>: gz-physics' dartsim plugin (gz-sim's default
+    # engine) warns "DART doesn't support rolling friction setting" and drops it
+    # (dartsim/src/SimulationFeatures.cc), Classic's ODE reads only <ode>. gz-sim's diff_drive.sdf gives its
+    # wheels 0.1, which applied here held vehicle_blue to 0.43 m/s for 0.5.
+    "rolling": "rolling_friction",
+}
+"""Surface fields gazelle does not apply: field name -> the SDF element a warning names."""
 
 
 def unsimulated_surface_parameters(col: Collision) -> list[str]:
-    """The contact parameters a collision sets that MuJoCo cannot honour (see docs/contact_parameters.md)."""
-    return [name for name in _NOT_SIMULATED if getattr(col.surface, name) is not None]
+    """The contact parameters a collision sets that gazelle does not honour (see docs/contact_parameters.md)."""
+    return [element for field, element in _NOT_SIMULATED.items() if getattr(col.surface, field) is not None]
 
 
 def _load_mesh(path: str) -> tuple[np.ndarray, np.ndarray]:

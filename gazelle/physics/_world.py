@@ -438,8 +438,9 @@ class PhysicsWorld:
         names = ", ".join(f"<{p}>" for p in sorted(params))
         source = f" ({entity.model.source_file})" if entity.model.source_file else ""
         _log.warning(
-            f"'{entity.name}'{source}: surface {names} not simulated (MuJoCo has no counterpart; see "
-            f"docs/contact_parameters.md), on {shown}; later spawns of this model are not reported again"
+            f"'{entity.name}'{source}: surface {names} not simulated (no MuJoCo counterpart, or read only by an "
+            f"engine other than Gazebo's defaults; see docs/contact_parameters.md), on {shown}; later spawns of "
+            "this model are not reported again"
         )
 
     def _remove_elements(self, name: str) -> None:
