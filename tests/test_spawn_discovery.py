@@ -48,3 +48,17 @@ def test_a_publisher_never_named_is_not_waited_for_past_the_bound(bound) -> None
     graph = _Graph("robot_state_publisher", known_after=10**9)
     assert not _spawn._published_by_robot_state_publisher(graph, "robot_description")  # type: ignore[arg-type]
     assert 2 <= graph.queries < 100  # asked again while waiting, and not past 0.2 s
+
+
+def test_a_ros2_control_robot_gets_no_second_joint_state_publisher() -> None:
+    """Issue 26 item 9: articubot and Husky (spawned from robot_description beside their robot_state_publisher)
+    got gazelle's joint state publisher beside their joint_state_broadcaster: two /joint_states publishers,
+    one with NaN efforts. In Gazebo the broadcaster is the only one."""
+    plain = "<robot name='r'><link name='a'/></robot>"
+    assert "JointStatePublisher" in _spawn.with_joint_state_publisher(plain)
+    for ros2_control in (
+        "<robot name='r'><link name='a'/><ros2_control name='h' type='system'/></robot>",
+        "<sdf version='1.9'><model name='r'><link name='a'/><plugin filename='gz_ros2_control-system' "
+        "name='gz_ros2_control::GazeboSimROS2ControlPlugin'/></model></sdf>",
+    ):
+        assert _spawn.with_joint_state_publisher(ros2_control) == ros2_control

@@ -44,13 +44,14 @@ from std_srvs.srv import Empty
 from ..description import Model, ModelLoadError, Pose, World, load_string, quat_conj, quat_rotate, reply_text
 from ..physics import WORLD_FRAMES, EntityState, ErrorKind, WorldError, pose_out_of_range
 from ..sim import Simulation
-from ..systems import Endpoint, MsgType, PluginNode, Qos, Transform, TransformBatch, UpdateInfo
+from ..systems import RSP_PLUGIN, Endpoint, MsgType, PluginNode, Qos, Transform, TransformBatch, UpdateInfo
 from ._convert import FROM_ROS, ROS_TYPES, TO_ROS, from_pose_msg, to_pose_msg, to_time
 from ._exposure import ServerRegistry
 from ._names import gz_topic_on_ros
 from ._outbox import Lane, Outbox
 from ._plugin_nodes import PluginNodes
 from ._replies import guarded_service, serve, with_warnings
+from ._spawn import with_joint_state_publisher, with_robot_state_options
 
 
 class SpawnFailure(enum.StrEnum):
@@ -556,6 +557,7 @@ class SimulationNode(Node):
         far = pose_out_of_range(pose, "initial_pose.position")
         if far is not None:
             raise WorldError(ErrorKind.INVALID_POSE, far)
+        xml = self._leave_tf_to_a_running_publisher(xml, namespace)
         try:
             result = load_string(xml, source=source)
         except ModelLoadError as err:
@@ -573,6 +575,30 @@ class SimulationNode(Node):
         X_WF = self.resolve_frame(reference_frame)
         entity = self.sim.spawn(model, name=name or model.name, pose=X_WF * pose, namespace=namespace)
         return entity.name, [d.format() for d in result.diagnostics]
+
+    def _leave_tf_to_a_running_publisher(self, xml: str, namespace: str) -> str:
+        """A spawn's XML with gazelle's built-in robot_state_publisher off when the user runs their own in the
+        robot's namespace (a node named robot_state_publisher publishing ``<ns>/robot_description``), and a
+        joint state publisher for it unless the model has one or ros2_control (whose joint_state_broadcaster
+        publishes them). Gazebo publishes no robot TF of its own: TurtleBot3's turtlebot3_world.launch.py runs
+        robot_state_publisher with the URDF and spawns model.sdf with -file, and gazelle's built-in publisher
+        made /tf_static go out twice. The server's graph decides (a spawner's own is seconds from complete);
+        a model that configures the built-in publisher (-no_robot_state_publisher, -frame_prefix, a -topic
+        spawn) is left as it is."""
+        if RSP_PLUGIN in xml:
+            return xml
+        ns = "/" + namespace.strip("/") if namespace.strip("/") else ""
+        try:
+            publishers = self.get_publishers_info_by_topic(f"{ns}/robot_description")
+        except Exception:  # a namespace that is no valid topic: the spawn says so itself
+            return xml
+        if not any(p.node_name == "robot_state_publisher" for p in publishers):
+            return xml
+        self.get_logger().info(
+            f"a running robot_state_publisher publishes {ns}/robot_description: gazelle's built-in one is off "
+            "for this robot, which publishes joint_states for it (or its ros2_control joint_state_broadcaster)"
+        )
+        return with_robot_state_options(with_joint_state_publisher(xml), enabled=False, frame_prefix=None)
 
     def _gz_spawn(self, req: GzSpawnEntity.Request, res: GzSpawnEntity.Response) -> GzSpawnEntity.Response:
         t0 = time.monotonic()

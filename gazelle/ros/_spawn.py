@@ -188,10 +188,18 @@ def _published_by_robot_state_publisher(node: Node, topic: str) -> bool:
         time.sleep(0.05)  # the graph is kept by the middleware's own threads: no spinning needed
 
 
+def _has_ros2_control(xml: str) -> bool:
+    """Whether a model asks for ros2_control (its joint_state_broadcaster publishes the joint states, as in Gazebo)."""
+    return "<ros2_control" in xml or ("ros2_control" in xml and "<plugin" in xml)
+
+
 def with_joint_state_publisher(xml: str) -> str:
     """Add gz-sim's JointStatePublisher (every joint, on ``joint_states`` under the robot's namespace)
-    to a URDF or SDF that has no joint state publisher plugin."""
+    to a URDF or SDF that has no joint state publisher plugin, and no ros2_control (whose
+    joint_state_broadcaster publishes them: two publishers of /joint_states disagree, one with NaN efforts)."""
     if "joint_state_publisher" in xml or "JointStatePublisher" in xml or "joint-state-publisher" in xml:
+        return xml
+    if _has_ros2_control(xml):
         return xml
     plugin = (
         '<plugin filename="gz-sim-joint-state-publisher-system" name="gz::sim::systems::JointStatePublisher">'

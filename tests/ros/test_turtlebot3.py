@@ -159,6 +159,61 @@ def test_turtlebot3_spawns_drives_and_publishes(case, resources, sim_factory, ro
         assert answer(lidar.get_parameters(["update_rate"])).values[0].double_value == 4.0
 
 
+def test_a_file_spawn_beside_the_users_robot_state_publisher_publishes_each_transform_once(
+    resources, sim_factory, ros_client, tmp_path
+):
+    """Issue 26 item 9: TurtleBot3's turtlebot3_world.launch.py runs robot_state_publisher with the URDF
+    and spawns model.sdf with -file. gazelle's built-in publisher also published the robot's TF: /tf_static
+    went out twice and /tf had three publishers. Gazebo publishes no robot TF of its own; gazelle now asks
+    the graph, and leaves the robot's transforms to the user's publisher."""
+    import yaml
+
+    from gazelle.description import read_description_file
+
+    sim = sim_factory()
+    node = ros_client.node
+    urdf = read_description_file(str(CASES["classic_xacro"]))
+    params = tmp_path / "rsp.yaml"
+    params.write_text(yaml.safe_dump({"robot_state_publisher": {"ros__parameters": {"robot_description": urdf}}}))
+    rsp = start(
+        [
+            str(Path(sys.prefix) / "bin" / "ros2"),
+            "run",
+            "robot_state_publisher",
+            "robot_state_publisher",
+            "--ros-args",
+            "--params-file",
+            str(params),
+        ],
+        "robot_state_publisher",
+    )
+    try:
+        wait_for(
+            lambda: (
+                "robot_state_publisher"
+                in {p.node_name for p in node.get_publishers_info_by_topic("/robot_description")}
+            ),
+            30,
+            "the user's robot_state_publisher",
+        )
+        spawn = start([*GAZELLE, "spawn", "-entity", "burger", "-file", str(CASES["gz_model_sdf"])], "gazelle spawn")
+        assert spawn.wait(90) == 0, spawn.output
+        assert "gazelle's built-in one is off" in sim.output
+        odom: list[Odometry] = []
+        node.create_subscription(Odometry, "/odom", odom.append, 10)
+        wait_for(lambda: odom, 15, "/odom from the spawned robot")
+
+        def publishers(topic: str) -> list[str]:
+            return sorted(p.node_name for p in node.get_publishers_info_by_topic(topic))
+
+        # the robot's own plugins are up (odometry flows), so any built-in publisher would be too
+        assert publishers("/tf_static") == ["robot_state_publisher"]
+        assert len(publishers("/joint_states")) == 1  # model.sdf's joint state publisher plugin
+        assert "robot_state_publisher" in publishers("/tf")
+    finally:
+        rsp.interrupt()
+
+
 def test_ros2_control_diffbot_spawns_with_tf_and_a_controller_manager(resources, sim_factory, ros_client):
     path = DIFFBOT / "ros2_control_demo_example_2/urdf/diffbot.urdf.xacro"
     sim = sim_factory()
