@@ -5,6 +5,7 @@ client (`gazelle sim --foxglove`) watches the same robot."""
 from __future__ import annotations
 
 import json
+import math
 import re
 import socket
 import struct
@@ -96,7 +97,13 @@ def test_record_info_and_play_round_trip_with_a_foxglove_client_watching(sim_fac
         recorded = [reader.deserialize(raw, c.msgtype) for c, _t, raw in reader.messages(connections=odom)]
     assert len(recorded) == counts["/odom"]
     first, last = recorded[0], recorded[-1]
-    assert last.pose.pose.position.x > first.pose.pose.position.x  # it was driving
+    # it was driving (on a circle of 1.5 m radius: x alone can shrink), and the stamps are sim time in order
+    moved = math.hypot(
+        last.pose.pose.position.x - first.pose.pose.position.x, last.pose.pose.position.y - first.pose.pose.position.y
+    )
+    assert moved > 0.05, f"the robot moved {moved:.3f} m while recorded"
+    stamps = [m.header.stamp.sec * 1_000_000_000 + m.header.stamp.nanosec for m in recorded]
+    assert stamps == sorted(stamps) and len(set(stamps)) == len(stamps)
 
     def key(m) -> tuple[int, float, float]:
         s = m.header.stamp
