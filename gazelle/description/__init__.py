@@ -30,6 +30,7 @@ from ._diagnostics import reply_text as reply_text
 from ._inertia import rotation_matrix as rotation_matrix
 from ._meshes import MeshReadError as MeshReadError
 from ._meshes import load_mesh as load_mesh
+from ._meshes import load_trimesh_in_metres as load_trimesh_in_metres
 from ._model import *  # noqa: F403  (the model dataclasses are the public surface)
 from ._model import LoadResult, Model, World
 from ._resources import ResourceResolver as ResourceResolver

@@ -17,17 +17,23 @@ class MeshReadError(Exception):
     """A mesh file could not be read."""
 
 
+def load_trimesh_in_metres(path: str):  # -> trimesh.Trimesh (trimesh is imported lazily)
+    """A mesh file as one ``trimesh.Trimesh`` (textures kept), its vertices converted to metres from the unit
+    the file declares (COLLADA's ``<unit meter="0.0254"/>``: TurtleBot3's arena wall and hexagons), as
+    Gazebo reads them. The physics and the viewer both load through here, so both draw the same size."""
+    import trimesh  # type: ignore[import-not-found]
+
+    mesh = trimesh.load(path, force="mesh", process=False)
+    if getattr(mesh, "units", None) not in (None, "m", "meter", "meters"):
+        mesh.convert_units("meters")  # pyright: ignore[reportAttributeAccessIssue]
+    return mesh
+
+
 @functools.lru_cache(maxsize=256)
 def _load(path: str, mtime_ns: int) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int32]]:
     del mtime_ns  # cache key only
     try:
-        import trimesh  # type: ignore[import-not-found]
-    except ImportError as err:  # pragma: no cover - trimesh is a dependency
-        raise MeshReadError(f"cannot read '{os.path.basename(path)}': trimesh is not installed") from err
-    try:
-        mesh = trimesh.load(path, force="mesh", process=False)
-        if getattr(mesh, "units", None) not in (None, "m", "meter", "meters"):
-            mesh.convert_units("meters")  # pyright: ignore[reportAttributeAccessIssue]
+        mesh = load_trimesh_in_metres(path)
     except Exception as err:
         raise MeshReadError(f"cannot read '{os.path.basename(path)}': {err}") from err
     vertices = np.asarray(mesh.vertices, dtype=np.float64)  # pyright: ignore[reportAttributeAccessIssue]

@@ -9,7 +9,7 @@ from functools import lru_cache
 import numpy as np
 import trimesh
 
-from ..description import Box, Capsule, Cone, Cylinder, Ellipsoid, Mesh, Plane, Sphere
+from ..description import Box, Capsule, Cone, Cylinder, Ellipsoid, Mesh, Plane, Sphere, load_trimesh_in_metres
 
 _log = logging.getLogger("gazelle.viewer")
 
@@ -39,7 +39,7 @@ def rgba_to_rgb255(rgba: tuple[float, float, float, float] | None) -> tuple[int,
 
 @lru_cache(maxsize=256)
 def _load_mesh_file(path: str) -> trimesh.Trimesh:
-    loaded = trimesh.load(path, force="mesh", process=False)
+    loaded = load_trimesh_in_metres(path)  # the unit a COLLADA file declares, as the physics
     if not isinstance(loaded, trimesh.Trimesh) or len(loaded.faces) == 0:
         raise ValueError("no triangles in the file")
     return loaded

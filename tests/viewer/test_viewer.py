@@ -59,6 +59,24 @@ def test_mesh_files_load_with_their_scale(tmp_path, ext: str) -> None:
     np.testing.assert_allclose(tm.vertices.max(0) - tm.vertices.min(0), (0.5, 1.0, 6.0), rtol=1e-6)
 
 
+def test_a_collada_file_in_inches_is_drawn_the_size_the_physics_gives_it() -> None:
+    """Issue 26 item 8: TurtleBot3's arena wall and hexagons are COLLADA files with <unit meter="0.0254"/>.
+    The physics converted them to metres; the viewer drew them 39x too large, off screen."""
+    from _paths import REAL
+
+    from gazelle.description import load_mesh
+
+    wall = REAL / "turtlebot3/turtlebot3_gazebo/models/turtlebot3_world/meshes/wall.dae"
+    assert 'meter="0.0254"' in wall.read_text()
+    tm = to_trimesh(Mesh(uri=str(wall), path=str(wall)))
+    assert tm is not None
+    physics_vertices, _faces = load_mesh(str(wall))
+    np.testing.assert_allclose(tm.vertices.max(0), physics_vertices.max(0), rtol=1e-5)
+    np.testing.assert_allclose(tm.vertices.min(0), physics_vertices.min(0), rtol=1e-5)
+    # 900 inches across (model.sdf scales it by 0.25 to TurtleBot3's 5.7 m arena); unconverted, 900 m
+    np.testing.assert_allclose(tm.vertices.max(0)[0] - tm.vertices.min(0)[0], 900 * 0.0254, rtol=1e-5)
+
+
 def test_unresolved_or_broken_mesh_is_skipped(tmp_path) -> None:
     assert to_trimesh(Mesh(uri="package://nowhere/x.stl", path=None)) is None
     bad = tmp_path / "bad.stl"
