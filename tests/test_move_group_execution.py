@@ -25,9 +25,9 @@ class _Graph:
         self.action, self.topics, self.after, self.queries = action, topics, after, 0
         self.named_after, self.lookups = named_after, 0
 
-    def _controller_for(self, joints: list[str]) -> Controller | None:
+    def _controllers_for(self, joints: list[str]) -> list[Controller]:
         self.lookups += 1
-        return _controller() if self.lookups > self.named_after else None
+        return [_controller()] if self.lookups > self.named_after else []
 
     def _action_served(self, action: str) -> bool:
         return self.action and self.queries >= self.after
@@ -59,8 +59,8 @@ def test_an_action_server_discovered_late_is_used() -> None:
 
 def test_a_controller_a_controller_manager_lists_late_is_used() -> None:
     graph = _Graph(action=True, topics=False, after=0, named_after=2)
-    controller, served, topics = MoveGroupNode._wait_for_execution(graph, JOINTS)  # type: ignore[arg-type]
-    assert (controller, served, topics) == (_controller(), True, None)
+    controllers, served, topics = MoveGroupNode._wait_for_execution(graph, JOINTS)  # type: ignore[arg-type]
+    assert (controllers, served, topics) == ([_controller()], True, None)
     assert graph.lookups == 3
 
 
@@ -80,3 +80,83 @@ def test_what_is_there_at_once_is_not_waited_for(kind) -> None:
     served, topics = _wait(graph)
     assert (served, topics) == ((True, None) if kind == "action" else (False, TOPICS))
     assert time.monotonic() - t0 < 0.05
+
+
+def test_execute_trajectory_reads_the_planners_scene_under_its_lock() -> None:
+    """Issue 27 item 1: execute_trajectory checked the trajectory against roboplan's scene with no lock while
+    the simulation's scene updates rebuilt that scene on another executor thread; YuMi's move_group died of
+    "double free or corruption" 4 runs in 4. Every read of the scene now holds the planner's lock."""
+    import threading
+    from types import SimpleNamespace
+
+    import numpy as np
+    from builtin_interfaces.msg import Duration
+    from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
+
+    lock = threading.Lock()
+    reads: list[bool] = []
+
+    class Scene:
+        def getPositionLimitVectors(self, group: str):
+            reads.append(lock.locked())
+            return np.array([-3.0, -3.0]), np.array([3.0, 3.0])
+
+    planner = SimpleNamespace(joint_names=JOINTS, scene=Scene(), velocity_limits=dict.fromkeys(JOINTS, 2.0))
+    node = SimpleNamespace(_lock=lock, planner=planner)
+    node._check_trajectory_locked = lambda t: MoveGroupNode._check_trajectory_locked(node, t)  # type: ignore[arg-type]
+    trajectory = JointTrajectory(
+        joint_names=JOINTS,
+        points=[
+            JointTrajectoryPoint(positions=[0.0, 0.0], time_from_start=Duration(sec=0)),
+            JointTrajectoryPoint(positions=[0.5, 0.5], time_from_start=Duration(sec=1)),
+        ],
+    )
+    assert MoveGroupNode._check_trajectory(node, trajectory) is None  # type: ignore[arg-type]
+    assert reads and all(reads), "roboplan's scene was read without the planner's lock"
+
+
+def test_a_two_arm_trajectory_goes_to_both_arms_controllers_each_with_its_part() -> None:
+    """A dual arm's group of both arms (YuMi's both_arms, one joint_trajectory_controller an arm): no
+    controller has every joint, so the trajectory is split by controller, as MoveIt's
+    TrajectoryExecutionManager does, and each part keeps every point in time."""
+    from builtin_interfaces.msg import Duration
+    from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
+
+    left = Controller("left_arm_controller", "/left_arm_controller/follow_joint_trajectory", ("l1", "l2"))
+    right = Controller("right_arm_controller", "/right_arm_controller/follow_joint_trajectory", ("r1", "r2"))
+    other = Controller("torso_controller", "/torso_controller/follow_joint_trajectory", ("t1",))
+    assert _move_group._cover({"l1", "l2", "r1", "r2"}, [other, left, right]) == [left, right]
+    assert _move_group._cover({"l1", "x"}, [left, right]) == []  # no controller has x
+    trajectory = JointTrajectory(
+        joint_names=["l1", "r1", "l2", "r2"],
+        points=[
+            JointTrajectoryPoint(positions=[1.0, 2.0, 3.0, 4.0], velocities=[0.1, 0.2, 0.3, 0.4]),
+            JointTrajectoryPoint(positions=[5.0, 6.0, 7.0, 8.0], time_from_start=Duration(sec=2)),
+        ],
+    )
+    part = _move_group._part(trajectory, ["r1", "r2"])
+    assert part.joint_names == ["r1", "r2"]
+    assert [list(p.positions) for p in part.points] == [[2.0, 4.0], [6.0, 8.0]]
+    assert list(part.points[0].velocities) == [0.2, 0.4] and list(part.points[1].velocities) == []
+    assert part.points[1].time_from_start.sec == 2
+
+
+def test_the_execution_nodes_entities_are_made_on_the_thread_that_spins_it() -> None:
+    """Issue 27 item 1, found by the YuMi soak under PYTHONMALLOC=debug: a client made from an action's worker
+    thread while the execution executor waited aborted the process inside rcl ("Fatal Python error:
+    Aborted" in create_client). Entities of the execution node are made on its spinning thread."""
+    import threading
+    from types import SimpleNamespace
+
+    made_on: list[str] = []
+    spinning = threading.Thread(target=lambda: None, name="spinner")
+
+    class Executor:
+        def create_task(self, fn):  # the spinning thread runs the task
+            t = threading.Thread(target=fn, name="spinner")
+            t.start()
+            t.join()
+
+    node = SimpleNamespace(_execution_thread=spinning, _execution_executor=Executor())
+    got = MoveGroupNode._on_execution_thread(node, lambda: made_on.append(threading.current_thread().name) or 7)  # type: ignore[arg-type]
+    assert got == 7 and made_on == ["spinner"]

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import yaml
-from _paths import REAL
+from _paths import REAL, REPO
 
 PANDA = REAL / "moveit_panda"
 CONFIG = PANDA / "moveit_resources_panda_moveit_config" / "config"
@@ -452,3 +452,21 @@ def test_a_state_in_collision_names_the_bodies_that_collide(planner):
         assert "with crate" in info.value.message, info.value.message
     finally:
         planner.remove_object("crate")
+
+
+def test_velocity_limits_come_from_the_urdf_and_joint_limits_yaml_on_a_robot_with_two_mimic_joints():
+    """Issue 27 item 1: roboplan 0.7's Scene.getVelocityLimitVectors("") writes past its vector on a robot with
+    two mimic joints (YuMi's grippers): move_group's execute_trajectory check called it and the process died
+    of "double free or corruption". The planner keeps the limits itself: the URDF's, then joint_limits.yaml's."""
+    from gazelle.planning import ArmPlanner
+
+    yumi = REPO / "tests" / "data" / "yumi_like"
+    planner = ArmPlanner(
+        (yumi / "yumi.urdf").read_text(),
+        (yumi / "yumi.srdf").read_text(),
+        joint_limits={"yumi_joint_1_l": {"max_velocity": 1.5}},
+    )
+    assert len(planner.joint_names) == 16  # 14 arm joints and 2 grippers; their 2 mimic joints are not listed
+    assert planner.velocity_limits["yumi_joint_1_l"] == 1.5  # joint_limits.yaml wins
+    assert planner.velocity_limits["yumi_joint_1_r"] == pytest.approx(3.14159265359)  # the URDF's
+    assert planner.velocity_limits["gripper_l_joint"] == pytest.approx(2.0)

@@ -182,6 +182,19 @@ class ArmPlanner:
         self._known_groups = self._import_srdf(srdf, srdf_source, robot)
         self.joint_names: list[str] = list(self.scene.getJointNames())
         self._limits(self._joint_limits)
+        urdf_velocity = {
+            str(j.get("name")): float(str(limit.get("velocity")))
+            for j in robot.iter("joint")
+            if (limit := j.find("limit")) is not None and limit.get("velocity") is not None
+        }
+        self.velocity_limits: dict[str, float] = {
+            n: float(self._joint_limits.get(n, {}).get("max_velocity", urdf_velocity.get(n, math.inf)))
+            for n in self.joint_names
+        }
+        """rad/s (m/s) each joint may move at: the URDF's, overridden by joint_limits.yaml, as the plans' TOPP-RA
+        takes them. Kept here because roboplan 0.7's ``Scene.getVelocityLimitVectors("")`` (the whole robot)
+        writes past its vector on a robot with two mimic joints: YuMi's grippers corrupted the heap ("double
+        free or corruption", "corrupted size vs. prev_size") and killed move_group on execute_trajectory."""
         tree = _tree(robot)
         self.root_link = tree.root
         moved = tree.moved_by({j for g in self.groups for j in self.group_joints(g)})

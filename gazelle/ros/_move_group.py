@@ -72,10 +72,11 @@ from ._replies import serve
 
 _log = logging.getLogger("gazelle.move_group")
 
-SIM_PADDING = 0.01
-"""m the simulation's objects are grown by for planning: the simulated robot collides with the convex
-hulls of its meshes, a little fatter than the meshes the planner checks (an arm planned 5 mm past a
-pillar brushed it)."""
+OBJECT_PADDING_PARAMETER = "robot_description_planning.default_object_padding"
+"""MoveIt's parameter (m) by which world objects are grown for collision checking; 0 by default, as MoveIt's
+planning_scene_monitor.cpp (configureDefaultPadding). The simulated robot collides with the convex hulls
+of its meshes, a little fatter than the meshes the planner checks: a plan that grazes an object may touch
+it in the simulation (an arm planned 5 mm past a pillar brushed it); 0.01 keeps a centimetre."""
 TWIN_CHECK_SEC = 2.0
 """s after start when move_group looks for another of its name on the domain (discovery has run)."""
 SHUTDOWN_DEADLINE_SEC = 3.0
@@ -160,6 +161,7 @@ class MoveGroupNode(Node):
         self._texts: dict[str, str] = {}
         self._sim_objects: set[str] = set()  # ids of the objects that came from the simulation
         self._sim_world: Any = None  # the simulation's geometry heard before the robot was known
+        self.object_padding = self._object_padding()
         cb = ReentrantCallbackGroup()
         self._cb = cb
         self.create_subscription(JointState, "joint_states", self._on_joint_states, 10, callback_group=cb)
@@ -234,7 +236,33 @@ class MoveGroupNode(Node):
         self._execution_node = rclpy.create_node("move_group_trajectory_execution", context=self.context)
         self._execution_executor = SingleThreadedExecutor(context=self.context)
         self._execution_executor.add_node(self._execution_node)
-        threading.Thread(target=self._spin_execution, name="move_group execution", daemon=True).start()
+        self._execution_thread = threading.Thread(target=self._spin_execution, name="move_group execution", daemon=True)
+        self._execution_thread.start()
+
+    def _on_execution_thread(self, fn: Any, timeout: float = 10.0) -> Any:
+        """``fn()`` run on the thread that spins the execution node, which is where that node's clients and
+        publishers are made. Made from an action's worker thread while that executor waited on the node's
+        entities, rcl aborted the process: YuMi's move_group died on execute_trajectory ("double free or
+        corruption", "Fatal Python error: Aborted" in ``create_client`` under ``PYTHONMALLOC=debug``)."""
+        if threading.current_thread() is self._execution_thread:
+            return fn()
+        done = threading.Event()
+        box: dict[str, Any] = {}
+
+        def task() -> None:
+            try:
+                box["value"] = fn()
+            except BaseException as err:  # handed to the caller
+                box["error"] = err
+            finally:
+                done.set()
+
+        self._execution_executor.create_task(task)
+        if not done.wait(timeout):
+            raise TimeoutError("the execution thread did not run the task")
+        if "error" in box:
+            raise box["error"]
+        return box.get("value")
 
     def _spin_execution(self) -> None:
         try:
@@ -264,6 +292,19 @@ class MoveGroupNode(Node):
                 f"{os.environ.get('ROS_DOMAIN_ID', '0')}: both answer every planning request and action "
                 "(stop one, or run them in other domains or namespaces)"
             )
+
+    def _object_padding(self) -> float:
+        """:data:`OBJECT_PADDING_PARAMETER`, 0 when absent; a value that is no finite non-negative number is
+        named in a warning and taken as 0."""
+        if not self.has_parameter(OBJECT_PADDING_PARAMETER):
+            return 0.0
+        value = self.get_parameter(OBJECT_PADDING_PARAMETER).value
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value < 0:
+            self._warn(f"{OBJECT_PADDING_PARAMETER} must be a non-negative number of metres, got {value!r}: using 0")
+            return 0.0
+        if value:
+            _log.info(f"world objects are padded by {value:g} m for collision checking ({OBJECT_PADDING_PARAMETER})")
+        return float(value)
 
     def _param(self, name: str) -> str:
         if not self.has_parameter(name):
@@ -577,7 +618,8 @@ class MoveGroupNode(Node):
                 at = world_to_root @ _matrix(co.pose)
                 names.add(co.id)
                 existing = self._find(co.id)
-                shapes = tuple(padded(sh, SIM_PADDING) for sh in shapes_of(co, self._warn))
+                pad = self.object_padding
+                shapes = tuple(padded(sh, pad) if pad else sh for sh in shapes_of(co, self._warn))
                 if not shapes:
                     continue
                 if existing is not None and not existing.link and _same_shapes(existing.shapes, shapes):
@@ -660,7 +702,8 @@ class MoveGroupNode(Node):
                 raise PlanningError("INVALID_OBJECT_NAME", f"no collision object '{co.id}' to move")
             planner.add_object(SceneObject(co.id, existing.shapes, at))
             return
-        shapes = tuple(shapes_of(co, self._warn))
+        pad = self.object_padding
+        shapes = tuple(padded(sh, pad) if pad else sh for sh in shapes_of(co, self._warn))
         if co.operation == CollisionObject.APPEND and existing is not None:
             relative = np.linalg.inv(existing.pose) @ at
             shapes = existing.shapes + tuple(type(sh)(sh.kind, sh.dimensions, relative @ sh.pose) for sh in shapes)
@@ -898,7 +941,17 @@ class MoveGroupNode(Node):
         return result
 
     def _check_trajectory(self, trajectory: JointTrajectory) -> str | None:
-        """Why a trajectory sent to execute_trajectory cannot run (positions or speeds beyond the limits)."""
+        """Why a trajectory sent to execute_trajectory cannot run (positions or speeds beyond the limits).
+
+        Under the planner's lock, as every use of roboplan's scene: the simulation's scene updates (a
+        message for every millimetre anything moves, so a stream while an arm executes) add, move and
+        rebuild its pinocchio/coal models on another executor thread. Read without the lock, the limits
+        came from a model being replaced: pymoveit2's execute_trajectory on a YuMi died of "double free
+        or corruption" 4 runs in 4, while the MoveGroup action (which plans under the lock) did not."""
+        with self._lock:
+            return self._check_trajectory_locked(trajectory)
+
+    def _check_trajectory_locked(self, trajectory: JointTrajectory) -> str | None:
         planner = self.planner
         if planner is None:
             return "move_group has no robot yet"
@@ -908,7 +961,7 @@ class MoveGroupNode(Node):
         if unknown:
             return f"unknown joints {unknown}"
         lo, hi = planner.scene.getPositionLimitVectors("")
-        vlo, vhi = planner.scene.getVelocityLimitVectors("")
+        speed = planner.velocity_limits  # not roboplan's getVelocityLimitVectors: see ArmPlanner.velocity_limits
         index = {n: i for i, n in enumerate(planner.joint_names)}
         prev = None
         for k, point in enumerate(trajectory.points):
@@ -923,19 +976,31 @@ class MoveGroupNode(Node):
                     return f"point {k}: {name} = {p:.4f} is outside its limits [{lo[i]:.4f}, {hi[i]:.4f}]"
                 if prev is not None and t > prev[0]:
                     v = (p - prev[1][j]) / (t - prev[0])
-                    if not vlo[i] * 1.01 <= v <= vhi[i] * 1.01:
-                        return f"point {k}: {name} moves at {v:.3f} rad/s, beyond its velocity limit {vhi[i]:.3f}"
+                    if abs(v) > speed[name] * 1.01:
+                        return f"point {k}: {name} moves at {v:.3f} rad/s, beyond its velocity limit {speed[name]:.3f}"
             prev = (t, list(point.positions))
         return None
 
-    def _controller_for(self, joints: list[str]) -> Controller | None:
-        for c in self._controllers:
-            if set(joints) <= set(c.joints):
-                return c
-        for c in self._ros2_control_controllers():
-            if set(joints) <= set(c.joints):
-                return c
-        return None
+    def _controllers_for(self, joints: list[str]) -> list[Controller]:
+        """The controllers that execute a trajectory of ``joints``, as MoveIt's TrajectoryExecutionManager
+        picks them: one that has every joint, else the fewest that together have them (a dual arm's group
+        of both arms, one joint_trajectory_controller an arm), each then given its own joints' part. From
+        moveit_controllers.yaml first, then the controller manager's active ones; [] when none cover them."""
+        wanted = set(joints)
+        listed: list[Controller] | None = None
+        for pool_of in ("yaml", "ros2_control"):
+            if pool_of == "yaml":
+                pool = list(self._controllers)
+            else:
+                listed = self._ros2_control_controllers()
+                pool = listed
+            single = next((c for c in pool if wanted <= set(c.joints)), None)
+            if single is not None:
+                return [single]
+            chosen = _cover(wanted, pool)
+            if chosen:
+                return chosen
+        return _cover(wanted, [*self._controllers, *(listed or [])])
 
     def _ros2_control_controllers(self) -> list[Controller]:
         """The active joint_trajectory_controllers of the controller manager, as MoveIt's
@@ -946,7 +1011,9 @@ class MoveGroupNode(Node):
         name = f"{namespace}/controller_manager/list_controllers"
         client = self._controller_lists.get(name)
         if client is None:
-            client = self._controller_lists[name] = self._execution_node.create_client(ListControllers, name)
+            client = self._controller_lists[name] = self._on_execution_thread(
+                lambda: self._execution_node.create_client(ListControllers, name)
+            )
         listed = any(n == name for n, _ in self._execution_node.get_service_names_and_types())
         if not client.wait_for_service(timeout_sec=2.0 if listed else 0.3):  # none: gz arms, say
             return []
@@ -982,20 +1049,20 @@ class MoveGroupNode(Node):
             return None
         return {j: t[0] for j, t in found.items()}
 
-    def _wait_for_execution(self, joints: list[str]) -> tuple[Controller | None, bool, dict[str, str] | None]:
-        """(the controller of ``joints``, whether its action is served, else the joints' gz command topics),
+    def _wait_for_execution(self, joints: list[str]) -> tuple[list[Controller], bool, dict[str, str] | None]:
+        """(the controllers of ``joints``, whether their actions are served, else the joints' gz command topics),
         waiting up to :data:`CONTROLLER_WAIT` for a served action or the topics to be discovered: right
         after a robot is spawned, a busy machine's graph may not list them, nor the controller manager
         that names the controller, yet (MoveIt's controller managers wait for their action servers
-        likewise). Once the wait is over without either: (the controller or None, False, None)."""
+        likewise). Once the wait is over without either: (the controllers or [], False, None)."""
         deadline = time.monotonic() + CONTROLLER_WAIT
         while True:
-            controller = self._controller_for(joints)
-            if controller is not None and self._action_served(controller.action):
-                return controller, True, None
+            controllers = self._controllers_for(joints)
+            if controllers and all(self._action_served(c.action) for c in controllers):
+                return controllers, True, None
             topics = self._position_topics(joints)
             if topics is not None or time.monotonic() >= deadline:
-                return controller, False, topics
+                return controllers, False, topics
             time.sleep(0.1)  # the graph is kept by the middleware's threads
 
     def _action_served(self, action: str) -> bool:
@@ -1012,7 +1079,9 @@ class MoveGroupNode(Node):
         for j in joints:
             pub = self._position_pubs.get(topics[j])
             if pub is None:
-                pub = self._position_pubs[topics[j]] = self._execution_node.create_publisher(Float64, topics[j], 10)
+                pub = self._position_pubs[topics[j]] = self._on_execution_thread(
+                    lambda t=topics[j]: self._execution_node.create_publisher(Float64, t, 10)
+                )
             pubs.append(pub)
         points = [p for p in trajectory.points if len(p.positions) == len(joints)]
         if not points:
@@ -1067,19 +1136,49 @@ class MoveGroupNode(Node):
         """Send ``trajectory`` to its FollowJointTrajectory controller and wait; cancel it when ``handle`` is.
         Without a controller serving its joints, gz-sim JointPositionController arms get it streamed."""
         joints = list(trajectory.joint_names)
-        controller, served, topics = self._wait_for_execution(joints)
+        controllers, served, topics = self._wait_for_execution(joints)
         if not served and topics is not None:
             return self._stream(trajectory, topics, handle)
-        if controller is None:
+        if not controllers:
             return (
                 "CONTROL_FAILED",
                 f"no controller drives {joints} (moveit_controllers.yaml, an active joint_trajectory_controller "
                 "of /controller_manager, or gz JointPositionController topics .../joint/<joint>/n0/cmd_pos)",
             )
+        if len(controllers) == 1:
+            return self._follow(controllers[0], trajectory, handle, served)
+        # each controller its joints' part, all at once (MoveIt's distributeTrajectory), as one execution
+        parts, given = [], set()
+        for c in controllers:
+            mine = [j for j in joints if j in c.joints and j not in given]
+            given.update(mine)
+            parts.append((c, _part(trajectory, mine)))
+        results: list[tuple[str, str]] = [("CONTROL_FAILED", "not run")] * len(parts)
+
+        def follow(i: int, controller: Controller, part: JointTrajectory) -> None:
+            results[i] = self._follow(controller, part, handle, served)
+
+        threads = [
+            threading.Thread(target=follow, args=(i, c, part), name=f"execute {c.name}", daemon=True)
+            for i, (c, part) in enumerate(parts)
+        ]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        return next((r for r in results if r[0] == "PREEMPTED"), None) or next(
+            (r for r in results if r[0] != "SUCCESS"), ("SUCCESS", "")
+        )
+
+    def _follow(
+        self, controller: Controller, trajectory: JointTrajectory, handle: Any, served: bool
+    ) -> tuple[str, str]:
+        """Send ``trajectory`` to ``controller``'s FollowJointTrajectory action and wait; cancel it when
+        ``handle`` is."""
         client = self._trajectory_clients.get(controller.action)
         if client is None:
-            client = self._trajectory_clients[controller.action] = ActionClient(
-                self._execution_node, FollowJointTrajectory, controller.action
+            client = self._trajectory_clients[controller.action] = self._on_execution_thread(
+                lambda: ActionClient(self._execution_node, FollowJointTrajectory, controller.action)
             )
         if not client.wait_for_server(timeout_sec=5.0 if served else 0.1):  # the graph was waited on above
             return "CONTROL_FAILED", f"controller action {controller.action} is not available"
@@ -1146,6 +1245,34 @@ class MoveGroupNode(Node):
         if res.error_code != FollowJointTrajectory.Result.SUCCESSFUL:
             return "CONTROL_FAILED", f"{controller.name}: {res.error_string or res.error_code}"
         return "SUCCESS", ""
+
+
+def _cover(joints: set[str], controllers: list[Controller]) -> list[Controller]:
+    """The fewest of ``controllers`` (greedy: the one with most of the joints left first) whose joints
+    together are ``joints``; [] when they do not cover them."""
+    left, pool, chosen = set(joints), list(controllers), []
+    while left:
+        best = max(pool, key=lambda c: len(left & set(c.joints)), default=None)
+        if best is None or not left & set(best.joints):
+            return []
+        chosen.append(best)
+        left -= set(best.joints)
+        pool.remove(best)
+    return chosen
+
+
+def _part(trajectory: JointTrajectory, joints: list[str]) -> JointTrajectory:
+    """``trajectory`` for ``joints`` alone (the same points in time, their columns)."""
+    index = [list(trajectory.joint_names).index(j) for j in joints]
+    points = []
+    for p in trajectory.points:
+        q = JointTrajectoryPoint(time_from_start=p.time_from_start)
+        for field in ("positions", "velocities", "accelerations", "effort"):
+            values = list(getattr(p, field))
+            if len(values) == len(trajectory.joint_names):
+                setattr(q, field, [values[i] for i in index])
+        points.append(q)
+    return JointTrajectory(header=trajectory.header, joint_names=list(joints), points=points)
 
 
 def _quat(q: np.ndarray) -> Any:
