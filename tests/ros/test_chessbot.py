@@ -132,14 +132,18 @@ def _at(ros: RosClient, link: str, xyz: tuple[float, float, float]) -> float:
 def test_the_table_board_and_pieces_are_in_the_planning_scene_and_the_robot_is_not(chessbot):
     from moveit_msgs.srv import GetPlanningScene
 
-    def ids() -> list[str]:
+    def objects() -> dict:
         scene = chessbot.call(GetPlanningScene, "/get_planning_scene", GetPlanningScene.Request()).scene
-        return sorted(o.id for o in scene.world.collision_objects)
+        return {o.id: o for o in scene.world.collision_objects}
 
     # the ground, the table, the board and 32 pieces
-    listed = wait_for(lambda: (lambda i: i if len(i) == 35 else None)(ids()), 20, "35 objects in the scene")
+    listed = wait_for(lambda: (lambda o: o if len(o) == 35 else None)(objects()), 20, "35 objects in the scene")
     assert "table::top" in listed and "chess_board::link" in listed and "ground_plane::link" in listed
     assert not [i for i in listed if i.startswith("chessbot::")]
+    # as large as in the simulation: no padding unless the config asks (MoveIt's default_object_padding is 0;
+    # gazelle padded every object by 1 cm a side, and fingers could not reach a 2 cm piece)
+    (top,) = listed["table::top"].primitives
+    assert list(top.dimensions) == pytest.approx([1.2, 1.0, 0.89])
 
 
 def test_r2home_moves_both_arms_to_their_home_poses(chessbot):

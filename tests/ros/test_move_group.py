@@ -143,7 +143,12 @@ class Panda:
         return goal
 
 
-def start_move_group() -> Any:
+OBJECT_PADDING = 0.01
+"""m: this module's move_group pads world objects (MoveIt's default_object_padding): the simulated hand is
+the convex hull of its meshes, and a plan 5 mm past the pillar below brushed it without padding."""
+
+
+def start_move_group(*ros_args: str) -> Any:
     """`ros2 run gazelle move_group` with the Panda config's URDF, SRDF and folder, ready to plan."""
     move_group = start(
         [
@@ -157,6 +162,7 @@ def start_move_group() -> Any:
             str(CONFIG / "panda.srdf"),
             "--config",
             str(CONFIG),
+            *(["--ros-args", *ros_args] if ros_args else []),
         ],
         "move_group",
     )
@@ -186,7 +192,7 @@ def panda(ros_env) -> Iterator[Panda]:
         "spawner",
     )
     assert spawner.wait(60) == 0, spawner.output
-    move_group = start_move_group()
+    move_group = start_move_group("-p", f"robot_description_planning.default_object_padding:={OBJECT_PADDING}")
     ros = RosClient("move_group_test")
     try:
         yield Panda(ros, sim, move_group)
@@ -570,14 +576,20 @@ def test_the_simulated_world_is_in_the_planning_scene_and_the_arm_goes_around_it
     req.initial_pose.position.x, req.initial_pose.position.z = 0.45, 0.15
     assert panda.ros.call(SpawnEntity, "/spawn_entity", req).success
 
+    def scene() -> dict[str, Any]:
+        got = panda.ros.call(GetPlanningScene, "/get_planning_scene", GetPlanningScene.Request()).scene
+        return {o.id: o for o in got.world.collision_objects}
+
     def scene_ids() -> list[str]:
-        scene = panda.ros.call(GetPlanningScene, "/get_planning_scene", GetPlanningScene.Request()).scene
-        return sorted(o.id for o in scene.world.collision_objects)
+        return sorted(scene())
 
     # the ground is there too: the arm is bolted to it
     assert wait_for(
         lambda: scene_ids() == ["ground_plane::link", "pillar::link"], 15, "the pillar in move_group's planning scene"
     )
+    # grown by the padding this module's move_group was given, on every side
+    (box,) = scene()["pillar::link"].primitives
+    assert list(box.dimensions) == pytest.approx([0.08 + 2 * OBJECT_PADDING] * 2 + [0.3 + 2 * OBJECT_PADDING])
     before = panda.ros.entity_state("pillar").state.pose.position
 
     low = {**ready, "panda_joint2": 0.35, "panda_joint4": -2.1}  # the hand at 47 cm out and 22 cm up
