@@ -288,10 +288,20 @@ class _Proxy:
             for task in pending:
                 task.cancel()
 
-    def stop(self) -> None:
+    async def _close(self) -> None:
+        """Close the listening socket and the relays, then stop the loop (a close left to a loop that had
+        stopped printed "Task was destroyed but it is pending" at every shutdown)."""
         if self._server is not None:
-            self._loop.call_soon_threadsafe(self._server.close)
-        self._loop.call_soon_threadsafe(self._loop.stop)
+            self._server.close()
+            try:
+                await asyncio.wait_for(self._server.wait_closed(), 1.0)
+            except (TimeoutError, Exception):
+                pass
+        self._loop.stop()
+
+    def stop(self) -> None:
+        if self._loop.is_running():
+            asyncio.run_coroutine_threadsafe(self._close(), self._loop)
         self._thread.join(timeout=2.0)
 
 

@@ -142,15 +142,21 @@ def run_sim(
     watchdog = threading.Timer(SHUTDOWN_DEADLINE_SEC, _force_exit)
     watchdog.daemon = True
     watchdog.start()
-    if view is not None:
-        view.stop()
+    import time
+
+    t0 = time.monotonic()
+    # the Foxglove process stops on its own meanwhile: asked first, waited for last, with what is left of
+    # the deadline (a loaded run waited 3 s on it here and the watchdog killed the server)
     if fox is not None:
         fox.send_signal(signal.SIGINT)
-        try:
-            fox.wait(3.0)
-        except subprocess.TimeoutExpired:
-            fox.kill()
     bridge.node.outbox.stop_waiting()  # the simulation thread's last block must not wait on publishing
+    if view is not None:
+        view.stop()
     sim.stop()
     bridge.shutdown()
+    if fox is not None:
+        try:  # less a margin for the interpreter's own exit
+            fox.wait(max(0.1, SHUTDOWN_DEADLINE_SEC - 0.5 - (time.monotonic() - t0)))
+        except subprocess.TimeoutExpired:
+            fox.kill()
     return rc
