@@ -74,9 +74,11 @@ _log = logging.getLogger("gazelle.move_group")
 
 OBJECT_PADDING_PARAMETER = "robot_description_planning.default_object_padding"
 """MoveIt's parameter (m) by which world objects are grown for collision checking; 0 by default, as MoveIt's
-planning_scene_monitor.cpp (configureDefaultPadding). The simulated robot collides with the convex hulls
-of its meshes, a little fatter than the meshes the planner checks: a plan that grazes an object may touch
-it in the simulation (an arm planned 5 mm past a pillar brushed it); 0.01 keeps a centimetre."""
+planning_scene_monitor.cpp (configureDefaultPadding). Here it grows the simulation's objects (what
+``gazelle sim`` publishes); objects a client applies are kept as given, as ``get_planning_scene`` reports
+them. The simulated robot collides with the convex hulls of its meshes, a little fatter than the meshes
+the planner checks: a plan that grazes an object may touch it in the simulation (an arm planned 5 mm past
+a pillar brushed it); 0.01 keeps a centimetre."""
 TWIN_CHECK_SEC = 2.0
 """s after start when move_group looks for another of its name on the domain (discovery has run)."""
 SHUTDOWN_DEADLINE_SEC = 3.0
@@ -702,8 +704,7 @@ class MoveGroupNode(Node):
                 raise PlanningError("INVALID_OBJECT_NAME", f"no collision object '{co.id}' to move")
             planner.add_object(SceneObject(co.id, existing.shapes, at))
             return
-        pad = self.object_padding
-        shapes = tuple(padded(sh, pad) if pad else sh for sh in shapes_of(co, self._warn))
+        shapes = tuple(shapes_of(co, self._warn))
         if co.operation == CollisionObject.APPEND and existing is not None:
             relative = np.linalg.inv(existing.pose) @ at
             shapes = existing.shapes + tuple(type(sh)(sh.kind, sh.dimensions, relative @ sh.pose) for sh in shapes)
