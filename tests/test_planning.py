@@ -470,3 +470,27 @@ def test_velocity_limits_come_from_the_urdf_and_joint_limits_yaml_on_a_robot_wit
     assert planner.velocity_limits["yumi_joint_1_l"] == 1.5  # joint_limits.yaml wins
     assert planner.velocity_limits["yumi_joint_1_r"] == pytest.approx(3.14159265359)  # the URDF's
     assert planner.velocity_limits["gripper_l_joint"] == pytest.approx(2.0)
+
+
+def test_a_failed_ik_says_whether_the_pose_is_out_of_reach_or_in_collision(planner):
+    """Issue 27 item 8: a pose inside the table and a pose 2 m away both gave the same NO_IK_SOLUTION. The code
+    stays MoveIt's; the message says which, and names what collides."""
+    from gazelle.planning import PlanningError
+
+    ready = planner.state(READY)
+    target = planner.fk(planner.state({**READY, "panda_joint1": 0.6, "panda_joint4": -1.9}), "panda_link8")
+    far = target.copy()
+    far[:3, 3] = [2.0, 0.0, 0.5]
+    with pytest.raises(PlanningError) as err:
+        planner.ik("panda_arm", "panda_link8", far, ready, timeout=0.1)
+    assert err.value.code == "NO_IK_SOLUTION" and "out of reach" in err.value.message
+    block = np.eye(4)
+    block[:3, 3] = target[:3, 3]  # a block where the flange would be
+    planner.add_box("block", [0.3, 0.3, 0.3], block)
+    try:
+        with pytest.raises(PlanningError) as err:
+            planner.ik("panda_arm", "panda_link8", target, ready, timeout=0.2)
+        assert err.value.code == "NO_IK_SOLUTION"
+        assert "reachable, but in collision" in err.value.message and "block" in err.value.message, err.value.message
+    finally:
+        planner.remove_object("block")

@@ -16,6 +16,7 @@ import tempfile
 import time
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
@@ -24,6 +25,9 @@ from ..description import ModelLoadError, ResourceResolver, Semantics, Severity,
 
 DEFAULT_ACCELERATION = 1.0
 """rad/s² (m/s²) for a joint whose limits give no acceleration, as MoveIt's time parameterisation assumes."""
+
+IK_DIAGNOSIS_SEC = 0.2
+"""s a failed IK spends finding out why: the same IK with collisions ignored (out of reach, or in collision)."""
 
 
 _COLLISION_LINE = re.compile(r"Collision detected between (\S+) and (\S+)")
@@ -581,8 +585,40 @@ class ArmPlanner:
         start_full = self._current.copy() if seed is None else np.asarray(seed, dtype=float)
         goal = self._core.CartesianConfiguration(self.root_link, link, np.asfortranarray(target, dtype=float))
         start = self._group_config(group, joints, start_full)
+        try:
+            return self._ik(group, joints, link, goal, start, start_full, float(timeout), avoid_collisions)
+        except PlanningError as err:
+            if not avoid_collisions or err.code != "NO_IK_SOLUTION":
+                raise
+            why = self._why_no_ik(group, joints, link, goal, start, start_full)
+            raise PlanningError(err.code, f"{err.message}: {why}") from None
+
+    def _why_no_ik(
+        self, group: str, joints: list[str], link: str, goal: Any, start: Any, start_full: np.ndarray
+    ) -> str:
+        """Why a collision-free IK failed, said as a person would: the pose is out of reach, or it is reached
+        only by joint values that collide (naming the pairs), e.g. a goal inside the table. The same code
+        either way (MoveIt says NO_IK_SOLUTION for both); the message tells them apart."""
+        try:
+            q = self._ik(group, joints, link, goal, start, start_full, IK_DIAGNOSIS_SEC, False)
+        except PlanningError:
+            return "it is out of reach (no joint values reach it even with collisions ignored)"
+        pairs = self.named_pairs(q)
+        return f"it is reachable, but in collision there{pairs}" if pairs else "no collision-free solution was found"
+
+    def _ik(
+        self,
+        group: str,
+        joints: list[str],
+        link: str,
+        goal: Any,
+        start: Any,
+        start_full: np.ndarray,
+        timeout: float,
+        avoid_collisions: bool,
+    ) -> np.ndarray:
         idx = self._group_index(joints)
-        deadline = time.monotonic() + float(timeout)
+        deadline = time.monotonic() + timeout
         failed = PlanningError("NO_IK_SOLUTION", f"no joint values of '{group}' put '{link}' at the goal pose")
         while True:
             remaining = deadline - time.monotonic()

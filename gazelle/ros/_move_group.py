@@ -513,6 +513,8 @@ class MoveGroupNode(Node):
         try:
             start, traj = self._plan(req.motion_plan_request)
         except PlanningError as err:
+            group = req.motion_plan_request.group_name
+            self.get_logger().warning(f"plan_kinematic_path for '{group}' failed: {err.code}: {err.message}")
             res.motion_plan_response.error_code = _code(err.code)
             res.motion_plan_response.error_code.message = err.message
             return res
