@@ -165,3 +165,24 @@ def test_a_yumi_plans_and_executes_through_execute_trajectory_and_the_move_actio
         wait_for(lambda t=target: _at(yumi, t), 15, f"execution {i}: the arms at their goal")
         assert yumi.move_group.popen.poll() is None, f"move_group died at execution {i}: {yumi.said()}"
     assert "Fatal Python error" not in yumi.move_group.output and "Debug memory block" not in yumi.move_group.output
+
+
+def test_ctrl_c_ends_move_group_at_once_and_quietly(yumi):
+    """Issue 27 item 10: move_group took seconds to stop on Ctrl-C and printed rclpy's errors; with joint states
+    streaming in, every Ctrl-C still printed "The following exception was never retrieved: cannot use
+    Destroyable because destruction was requested"."""
+    import signal
+    import time
+
+    # after the soak above (run alone, this test meets a move_group younger than its 2 s twin check, whose
+    # timer's task was the one printed)
+    wait_for(lambda: yumi.joints(), 15, "/joint_states streaming")
+    before = len(yumi.move_group.output)
+    t0 = time.monotonic()
+    yumi.move_group.popen.send_signal(signal.SIGINT)
+    rc = yumi.move_group.wait(10)
+    took = time.monotonic() - t0
+    after = yumi.move_group.output[before:]
+    assert rc == 0, after
+    assert took < 1.5, f"{took:.2f} s"
+    assert "never retrieved" not in after and "Traceback" not in after and "Error" not in after, after
