@@ -115,3 +115,32 @@ def test_turtlebot3_world_arena_is_hollow(monkeypatch) -> None:
     q = sim.world.entity_state("burger").pose.orientation
     tilt = math.degrees(math.acos(max(-1.0, min(1.0, 1 - 2 * (q[1] ** 2 + q[2] ** 2)))))
     assert tilt < 2.0
+
+
+def test_a_decomposition_longer_than_the_load_budget_finishes_in_the_background(
+    tmp_path: Path, monkeypatch, caplog
+) -> None:
+    """Issue 26 item 7 / issue 27 item 6: a first launch waited for every decomposition (TurtleBot3's house
+    25-40 s a mesh, NASA R2 over 6 minutes) and spawners gave up at 30 s. A load now waits at most its budget:
+    past it, the mesh collides as its hull this time, the decomposition goes on in the background, and the
+    next load (a spawn in this process, or another process through the disk cache) gets the parts."""
+    monkeypatch.setenv("GAZELLE_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setenv("GAZELLE_DECOMPOSE_LOAD_BUDGET", "0.001")  # no decomposition is that quick
+    _convex._memory.clear()
+    stl = ring_stl(tmp_path / "ring.stl")
+    with caplog.at_level(logging.WARNING):
+        first = _convex.collision_parts(str(stl), (1.0, 1.0, 1.0))
+    assert first is None  # its hull, for now
+    assert "goes on in the background" in caplog.text
+
+    def finished() -> bool:
+        later = _convex.collision_parts(str(stl), (1.0, 1.0, 1.0))
+        return later is not None
+
+    with _convex.background_done:
+        assert _convex.background_done.wait_for(finished, timeout=60), "the background decomposition never ended"
+    again = _convex.collision_parts(str(stl), (1.0, 1.0, 1.0))
+    assert again is not None and len(again.pieces) >= 4
+    _convex._memory.clear()  # another process: the disk cache has the parts
+    from_disk = _convex.collision_parts(str(stl), (1.0, 1.0, 1.0))
+    assert from_disk is not None and from_disk.source == "disk cache" and len(from_disk.pieces) == len(again.pieces)

@@ -78,6 +78,11 @@ class _Budget:
 class BoundExceeded(Exception):
     """The bounded work ran out of time or memory, or its child process died."""
 
+    def __init__(self, message: str, *, timed_out: bool = False) -> None:
+        super().__init__(message)
+        self.timed_out = timed_out
+        """Whether the time limit stopped it (not memory, an error or a death)."""
+
 
 def _env_float(name: str, default: float) -> float:
     try:
@@ -267,7 +272,8 @@ class BoundedWorker:
                     self._stop()
                     how = "of computing" if str(spent) == "cpu" else "and gave no result in time"
                     raise BoundExceeded(
-                        f"{what} took longer than {timeout:g} s {how}; it was stopped ({timeout_hint})"
+                        f"{what} took longer than {timeout:g} s {how}; it was stopped ({timeout_hint})",
+                        timed_out=True,
                     ) from None
                 except OSError:
                     reply = None
