@@ -154,3 +154,20 @@ def test_other_fuel_models_come_from_the_local_cache_or_are_named_in_a_warning(m
     monkeypatch.setenv("GZ_FUEL_CACHE_PATH", str(cache))
     world = load_string(_fuel_world("OpenRobotics/models/Construction Cone")).value
     assert [m.name for m in world.models] == ["Construction Cone"]
+
+
+def test_the_bridge_converts_between_a_stamped_and_an_unstamped_type():
+    """Issue 26 (TurtleBot3's jazzy bridge YAML has cmd_vel as TwistStamped; gazelle's DiffDrive takes Twist):
+    the parameter_bridge stand-in converts between a type and the one that holds it."""
+    from geometry_msgs.msg import Twist, TwistStamped
+    from sensor_msgs.msg import Imu
+
+    from gazelle.ros._gz_compat import converter
+
+    stamped = TwistStamped()
+    stamped.twist.linear.x = 0.2
+    assert converter(TwistStamped, Twist)(stamped).linear.x == 0.2
+    plain = Twist()
+    plain.angular.z = 0.5
+    assert converter(Twist, TwistStamped)(plain).twist.angular.z == 0.5
+    assert converter(Twist, Imu) is None

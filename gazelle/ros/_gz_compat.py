@@ -135,22 +135,26 @@ def bridge_main(argv: list[str]) -> int:
     for p in problems:
         print(f"[ERROR] [ros_gz_bridge]: {p}", file=sys.stderr)
     relays = [e for e in entries if e.ros_name.strip("/") != e.gz_name.strip("/")]
+    typed = [e for e in entries if e not in relays and e.ros_type]
     for e in entries:
         if e not in relays:
             print(
-                f"[INFO] [ros_gz_bridge]: {e.ros_name}: gazelle has it on ROS directly; nothing to bridge",
+                f"[INFO] [ros_gz_bridge]: {e.ros_name}: gazelle has it on ROS directly; nothing to bridge"
+                + (" unless gazelle's type differs from its ros_type_name" if e.ros_type else ""),
                 file=sys.stderr,
             )
     if not entries and not problems:
         print("[INFO] [ros_gz_bridge]: nothing to bridge", file=sys.stderr)
     if problems:
         return 1
-    if not relays:
+    if not relays and not typed:
         return 0
     rclpy.init(args=["--ros-args", *argv[argv.index("--ros-args") + 1 :]] if "--ros-args" in argv else None)
     node = rclpy.create_node("ros_gz_bridge")
     qos = QoSPresetProfiles.SYSTEM_DEFAULT.value
     keep: list[Any] = []
+    if typed:
+        _TypeRelays(node, typed, qos, keep)
     for e in relays:
         try:
             cls = _message_class(e.ros_type)
@@ -171,6 +175,100 @@ def bridge_main(argv: list[str]) -> int:
 
     spin_until_interrupted(node)
     return 0
+
+
+def _type_name(cls: Any) -> str:
+    """``geometry_msgs/Twist`` for the rclpy class (rosidl's field types name nested messages so)."""
+    return f"{cls.__module__.split('.')[0]}/{cls.__name__}"
+
+
+def converter(src: Any, dst: Any) -> Any:
+    """A function from a message of class ``src`` to one of ``dst`` when one holds the other (a TwistStamped's
+    ``twist`` is a Twist): unwrapped, or wrapped with a default header; None for unrelated types."""
+    for field, kind in dst.get_fields_and_field_types().items():
+        if kind == _type_name(src):
+            return lambda msg, field=field: dst(**{field: msg})
+    for field, kind in src.get_fields_and_field_types().items():
+        if kind == _type_name(dst):
+            return lambda msg, field=field: getattr(msg, field)
+    return None
+
+
+class _TypeRelays:
+    """Entries whose ROS name is gazelle's own but whose ``ros_type_name`` is not gazelle's type: TurtleBot3's
+    jazzy bridge YAML has ``cmd_vel`` as ``geometry_msgs/msg/TwistStamped`` (ros_gz_bridge converts it to
+    gz.msgs.Twist), while gazelle's DiffDrive takes ``geometry_msgs/msg/Twist`` on ``/cmd_vel``, so a stamped
+    command reached nothing and the robot never moved. Once the graph shows gazelle's endpoint (the robot
+    may be spawned after the bridge starts), a relay on the same name converts between the two types, in
+    the entry's direction, as the bridge would."""
+
+    def __init__(self, node: Any, entries: list[BridgeEntry], qos: Any, keep: list[Any]) -> None:
+        self.node, self.pending, self.qos, self.keep = node, list(entries), qos, keep
+        self._out: Any = None
+        self.timer = node.create_timer(0.5, self.check)
+        self.check()
+
+    def out_node(self) -> Any:
+        """A node in a context of its own for the converted side: one DDS participant refuses a topic name
+        with two types ("create_subscription() called for existing topic name rt/cmd_vel with incompatible
+        type"), so the two types of one name live in two participants. Publishing needs no spinning."""
+        if self._out is None:
+            import atexit
+
+            import rclpy
+            from rclpy.context import Context
+
+            context = Context()
+            rclpy.init(context=context)
+            self._out = rclpy.create_node("ros_gz_bridge_converted", context=context)
+            atexit.register(lambda: rclpy.try_shutdown(context=context))  # pyright: ignore[reportPrivateImportUsage]
+        return self._out
+
+    def _native(self, name: str, wanted: str, gazelle_subscribes: bool) -> str | None:
+        """The type of the other side's endpoint of ``name`` (another node's, not this bridge's): '' when it is
+        ``wanted``, None while there is none."""
+        infos = (
+            self.node.get_subscriptions_info_by_topic(name)
+            if gazelle_subscribes
+            else self.node.get_publishers_info_by_topic(name)
+        )
+        mine = {self.node.get_name(), "ros_gz_bridge_converted"}
+        kinds = {i.topic_type for i in infos if i.node_name not in mine}
+        if wanted in kinds:
+            return ""  # the same type: nothing to convert
+        return sorted(kinds)[0] if kinds else None
+
+    def check(self) -> None:
+        for e in list(self.pending):
+            name = e.ros_name if e.ros_name.startswith("/") else f"/{e.ros_name}"
+            wanted = e.ros_type if e.ros_type.count("/") == 2 else e.ros_type.replace("/", "/msg/", 1)
+            to_gz = e.direction == "ROS_TO_GZ"
+            native = self._native(name, wanted, to_gz)
+            if native is None:
+                continue
+            self.pending.remove(e)
+            if not native:
+                continue
+            try:
+                ros_cls, gz_cls = _message_class(wanted), _message_class(native)
+            except (ValueError, ImportError, AttributeError) as err:
+                self.node.get_logger().error(f"{name}: cannot bridge: {err}")
+                continue
+            src, dst = (ros_cls, gz_cls) if to_gz else (gz_cls, ros_cls)
+            convert = converter(src, dst)
+            if convert is None:
+                self.node.get_logger().error(
+                    f"{name}: gazelle's {native} and the YAML's {wanted} are not convertible; not bridged"
+                )
+                continue
+            pub = self.out_node().create_publisher(dst, name, self.qos)
+            sub = self.node.create_subscription(src, name, lambda m, pub=pub, c=convert: pub.publish(c(m)), self.qos)
+            self.keep += [pub, sub]
+            self.node.get_logger().info(
+                f"Converting [{name}] {_type_name(src)} -> {_type_name(dst)}: gazelle's type differs from the YAML's"
+            )
+        if not self.pending:
+            self.timer.cancel()
 
 
 def joint_state_publisher_main(argv: list[str] | None = None) -> int:

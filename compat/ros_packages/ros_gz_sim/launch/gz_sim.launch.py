@@ -1,6 +1,7 @@
 """ros_gz_sim's gz_sim.launch.py for gazelle: `gazelle sim` from gz_args (a world file, -r to run,
--s for no GUI: no viewer; gz's empty.sdf is gazelle's default world)."""
+-s for no GUI: no viewer; gz's empty.sdf is gazelle's default world; -g, the GUI alone: gzclient's stand-in)."""
 
+import os
 import shlex
 
 from launch import LaunchDescription
@@ -12,6 +13,14 @@ GAZELLE = "@GAZELLE@"
 def _server(context):
     cfg = context.launch_configurations
     tokens = shlex.split(cfg.get("gz_args", ""))
+    shutdown = cfg.get("on_exit_shutdown", "false").lower() in ("true", "1")
+    if "-g" in tokens:
+        # `gz sim -g`: the GUI alone, joining the server another include started (TurtleBot3's jazzy
+        # launches include this file twice, `-r -s WORLD` and `-g`). gazelle's GUI is the server's browser
+        # viewer, so this is gzclient's stand-in, which says where to look: a second `gazelle sim` here
+        # was a second server on the domain, and the two stopped each other
+        client = os.path.join(os.path.dirname(GAZELLE), "gzclient")
+        return [ExecuteProcess(cmd=[client], name="gazebo", output="screen", on_exit=Shutdown() if shutdown else None)]
     cmd, world, run, ignored = [GAZELLE, "sim"], "", False, []
     skip = False
     for i, tok in enumerate(tokens):
@@ -38,7 +47,6 @@ def _server(context):
     actions = []
     if ignored:
         actions.append(LogInfo(msg=f"gz_args {' '.join(ignored)} have no meaning for gazelle sim"))
-    shutdown = cfg.get("on_exit_shutdown", "false").lower() in ("true", "1")
     actions.append(ExecuteProcess(cmd=cmd, name="gazebo", output="screen", on_exit=Shutdown() if shutdown else None))
     return actions
 
