@@ -44,7 +44,17 @@ from std_srvs.srv import Empty
 from ..description import Model, ModelLoadError, Pose, World, load_string, quat_conj, quat_rotate, reply_text
 from ..physics import WORLD_FRAMES, EntityState, ErrorKind, WorldError, pose_out_of_range
 from ..sim import Simulation
-from ..systems import RSP_PLUGIN, Endpoint, MsgType, PluginNode, Qos, Transform, TransformBatch, UpdateInfo
+from ..systems import (
+    RSP_PLUGIN,
+    Endpoint,
+    MsgType,
+    PluginNode,
+    Qos,
+    RobotStatePublisher,
+    Transform,
+    TransformBatch,
+    UpdateInfo,
+)
 from ._convert import FROM_ROS, ROS_TYPES, TO_ROS, from_pose_msg, to_pose_msg, to_time
 from ._exposure import ServerRegistry
 from ._names import gz_topic_on_ros
@@ -52,6 +62,9 @@ from ._outbox import Lane, Outbox
 from ._plugin_nodes import PluginNodes
 from ._replies import guarded_service, serve, with_warnings
 from ._spawn import with_joint_state_publisher, with_robot_state_options
+
+RSP_WATCH_SEC = 30.0
+"""How long after a spawn the user's robot_state_publisher may still appear and take the robot's TF over."""
 
 
 class SpawnFailure(enum.StrEnum):
@@ -224,6 +237,9 @@ class SimulationNode(Node):
             self.create_timer(1.0, report_dropped, callback_group=self._cb)
         self._lanes: dict[int, Lane] = {}
         """id(publisher endpoint) -> its lane in the outbox."""
+        self._watched: dict[str, tuple[str, float]] = {}
+        """Entity -> (its description topic, until when): see :meth:`_watch_for_user_publishers`."""
+        self.create_timer(0.5, self._watch_for_user_publishers, callback_group=self._cb)
         self._managers: dict[str, Any] = {}
         """Entity -> the node of its controller manager (see ``_control``)."""
         self._executor: Any = None
@@ -499,6 +515,10 @@ class SimulationNode(Node):
         if ep.msg_type is MsgType.TF_STATIC:
             with self._lock:
                 self._static.pop(id(ep), None)
+                entry = self._pubs.get((ep.node, gz_topic_on_ros(ep.topic), ep.msg_type.value))
+                union = TransformBatch(tuple(t for ts in self._static.values() for t in ts))
+            if entry is not None and entry.lane is not None and entry.users > 1:
+                entry.lane.put(union)  # the latched message without what was taken back
         with self._lock:
             sink = self._sinks.pop(id(ep), None)
             lane = self._lanes.pop(id(ep), None)
@@ -557,7 +577,9 @@ class SimulationNode(Node):
         far = pose_out_of_range(pose, "initial_pose.position")
         if far is not None:
             raise WorldError(ErrorKind.INVALID_POSE, far)
+        auto = RSP_PLUGIN not in xml
         xml = self._leave_tf_to_a_running_publisher(xml, namespace)
+        watch = auto and RSP_PLUGIN not in xml  # gazelle publishes its TF: unless the user's shows up soon
         try:
             result = load_string(xml, source=source)
         except ModelLoadError as err:
@@ -574,7 +596,56 @@ class SimulationNode(Node):
             self.get_logger().warning(d.format())
         X_WF = self.resolve_frame(reference_frame)
         entity = self.sim.spawn(model, name=name or model.name, pose=X_WF * pose, namespace=namespace)
+        if watch:
+            ns = "/" + namespace.strip("/") if namespace.strip("/") else ""
+            with self._lock:
+                self._watched[entity.name] = (f"{ns}/robot_description", time.monotonic() + RSP_WATCH_SEC)
         return entity.name, [d.format() for d in result.diagnostics]
+
+    def _watch_for_user_publishers(self) -> None:
+        """A robot spawned while the user's robot_state_publisher was still starting (a launch file starts both
+        at once: TurtleBot3's jazzy turtlebot3_world.launch.py even lists the spawn first) kept gazelle's own
+        publisher beside it. For :data:`RSP_WATCH_SEC` after a spawn, once the graph shows a
+        robot_state_publisher on the robot's description topic, gazelle's stops and takes back its /tf,
+        /tf_static part and description, when the robot publishes joint states for the user's (its joint
+        state publisher plugin, or ros2_control)."""
+        now = time.monotonic()
+        with self._lock:
+            watched = dict(self._watched)
+        for entity_name, (topic, deadline) in watched.items():
+            if now > deadline:
+                with self._lock:
+                    self._watched.pop(entity_name, None)
+                continue
+            try:
+                names = {p.node_name for p in self.get_publishers_info_by_topic(topic)}
+            except Exception:
+                names = set()
+            if "robot_state_publisher" not in names:
+                continue
+            with self._lock:
+                self._watched.pop(entity_name, None)
+
+            def hand_over(entity_name: str = entity_name) -> bool:
+                entity = self.sim.world.entities.get(entity_name)
+                if entity is None:
+                    return False
+                kinds = {type(s).__name__ for s in entity.systems}
+                if not kinds & {"JointStatePublisher", "ControllerManager"}:
+                    return False  # the user's publisher would have no joint states to turn into TF
+                for system in entity.systems:
+                    if isinstance(system, RobotStatePublisher):
+                        system.stop_publishing()
+                return True
+
+            try:
+                if self.sim.call(hand_over):
+                    self.get_logger().info(
+                        f"a robot_state_publisher now publishes {topic}: gazelle's built-in one is off for "
+                        f"'{entity_name}'"
+                    )
+            except (WorldError, TimeoutError):
+                pass
 
     def _leave_tf_to_a_running_publisher(self, xml: str, namespace: str) -> str:
         """A spawn's XML with gazelle's built-in robot_state_publisher off when the user runs their own in the

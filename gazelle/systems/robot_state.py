@@ -13,6 +13,7 @@ from __future__ import annotations
 import logging
 import math
 from dataclasses import dataclass
+from typing import Any
 
 from ..description import JointType, Model, Plugin
 from ..physics import BodyHandle, Entity, JointHandle, PhysicsWorld
@@ -117,10 +118,22 @@ class RobotStatePublisher(System):
         self._tf: Endpoint | None = None
         self._gate = RateGate()
         self.phase_gate = self._gate
+        self._bus: Any = None
+        self._endpoints: list[Endpoint] = []
+
+    def stop_publishing(self) -> None:
+        """Publish nothing more, and take back what was advertised: the user's own robot_state_publisher,
+        started beside this robot, publishes its transforms (see gazelle.ros's bridge), as in Gazebo,
+        which publishes no robot TF of its own."""
+        for ep in self._endpoints:
+            self._bus.remove(ep)
+        self._endpoints.clear()
+        self._tf = None
 
     def configure(self, ctx: SystemContext) -> None:
         """Read the configuration, find the joints, advertise the topics (and publish the latched ones)."""
         c = self.config
+        self._bus = ctx.bus
         model = ctx.entity.model
         self.prefix = entity_frame_prefix(ctx.entity, ctx.logger)
         if not self.prefix and gz_scoped_frames(model):
@@ -144,11 +157,14 @@ class RobotStatePublisher(System):
                 owner, resolve_topic("robot_description", c.namespace), MsgType.STRING, qos=Qos.LATCHED, depth=1
             )
             desc.publish(Text(model.urdf))
+            self._endpoints.append(desc)
         if statics:
             static = ctx.bus.advertise(owner, "/tf_static", MsgType.TF_STATIC, qos=Qos.LATCHED, depth=1)
             static.publish(TransformBatch(tuple(statics)))
+            self._endpoints.append(static)
         if self._moving:
             self._tf = ctx.bus.advertise(owner, "/tf", MsgType.TF, depth=100)
+            self._endpoints.append(self._tf)
         ctx.logger.info(
             f"robot_state_publisher: {len(statics)} fixed and {len(self._moving)} moving joints, "
             f"frame prefix '{self.prefix}'"

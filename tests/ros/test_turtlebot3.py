@@ -214,6 +214,51 @@ def test_a_file_spawn_beside_the_users_robot_state_publisher_publishes_each_tran
         rsp.interrupt()
 
 
+def test_a_robot_state_publisher_started_after_the_spawn_takes_the_robots_tf_over(
+    resources, sim_factory, ros_client, tmp_path
+):
+    """Issue 26 item 9, the other order: a launch file starts the spawn and robot_state_publisher together
+    (TurtleBot3's lists the spawn first), so the server may spawn before its graph shows the user's publisher.
+    Once it does, gazelle's own stops and takes its /tf_static back."""
+    import yaml
+
+    from gazelle.description import read_description_file
+
+    sim = sim_factory()
+    node = ros_client.node
+    spawn = start([*GAZELLE, "spawn", "-entity", "burger", "-file", str(CASES["gz_model_sdf"])], "gazelle spawn")
+    assert spawn.wait(90) == 0, spawn.output
+    wait_for(
+        lambda: "gazelle" in {p.node_name for p in node.get_publishers_info_by_topic("/tf_static")},
+        15,
+        "gazelle's own /tf_static for the robot",
+    )
+    params = tmp_path / "rsp.yaml"
+    urdf = read_description_file(str(CASES["classic_xacro"]))
+    params.write_text(yaml.safe_dump({"robot_state_publisher": {"ros__parameters": {"robot_description": urdf}}}))
+    rsp = start(
+        [
+            str(Path(sys.prefix) / "bin" / "ros2"),
+            "run",
+            "robot_state_publisher",
+            "robot_state_publisher",
+            "--ros-args",
+            "--params-file",
+            str(params),
+        ],
+        "robot_state_publisher",
+    )
+    try:
+        wait_for(
+            lambda: {p.node_name for p in node.get_publishers_info_by_topic("/tf_static")} == {"robot_state_publisher"},
+            20,
+            "/tf_static from the user's robot_state_publisher alone",
+        )
+        sim.wait_line("gazelle's built-in one is off for 'burger'", 10)
+    finally:
+        rsp.interrupt()
+
+
 def test_ros2_control_diffbot_spawns_with_tf_and_a_controller_manager(resources, sim_factory, ros_client):
     path = DIFFBOT / "ros2_control_demo_example_2/urdf/diffbot.urdf.xacro"
     sim = sim_factory()
