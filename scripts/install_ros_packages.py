@@ -132,6 +132,30 @@ def install_python_modules(venv: Path) -> None:
         (dest / MARKER).write_text("installed by gazelle's scripts/install_ros_packages.py\n")
 
 
+XACRO_COMMAND = """#!{python}
+# gazelle's xacro command (scripts/install_ros_packages.py): the xacro wheel's own, whose $(find pkg) also
+# finds the packages on GAZELLE_RESOURCE_PATH by their package.xml name, then the ament index
+import sys
+
+from gazelle.description import xacro_main
+
+sys.exit(xacro_main())
+"""
+
+
+def install_xacro_command(venv: Path) -> None:
+    """The venv's ``xacro`` command: the wheel's entry point, replaced by gazelle's (see XACRO_COMMAND)."""
+    command = venv / "bin" / "xacro"
+    if (
+        command.exists()
+        and "gazelle" not in command.read_text()
+        and "from xacro import main" not in command.read_text()
+    ):
+        return  # someone else's
+    command.write_text(XACRO_COMMAND.format(python=venv / "bin" / "python"))
+    command.chmod(0o755)
+
+
 def main() -> int:
     venv = Path(sys.argv[1]).resolve()
     python = venv / "bin" / "python"
@@ -169,6 +193,7 @@ def main() -> int:
         (index / pkg.name).write_text("")
     install_cmake_standins(venv)
     install_python_modules(venv)
+    install_xacro_command(venv)
     repair_cmake_exports(venv)
     # colcon chains workspaces over prefixes with a local_setup file; the venv is one
     for shell in ("sh", "bash"):

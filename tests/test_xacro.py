@@ -221,3 +221,42 @@ def test_fuzzed_xacro_only_raises_model_load_error() -> None:
     _fuzz(SEED_ROBOT, "xacro", seed=3, rounds=300)
     urdf = (REAL / "turtlebot3/turtlebot3_description/urdf/turtlebot3_burger.urdf").read_text()
     _fuzz(urdf, "xacro", seed=4, rounds=200)
+
+
+def test_the_venvs_xacro_command_finds_packages_on_gazelle_resource_path(tmp_path):
+    """Issue 27 item 12: `xacro robot.urdf.xacro` in the venv found `$(find pkg)` through the ament index only,
+    where `gazelle spawn -file` also reads GAZELLE_RESOURCE_PATH: a moveit_resources clone on it failed with
+    "package not found". The venv's xacro now finds packages there too, by their package.xml name."""
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    pkg = tmp_path / "clones" / "panda_moveit_config"  # the folder's name is not the package's
+    (pkg / "config").mkdir(parents=True)
+    (pkg / "package.xml").write_text(
+        '<?xml version="1.0"?><package format="3"><name>moveit_resources_panda_moveit_config</name>'
+        "<version>1.0.0</version><description>d</description><maintainer email='a@b.c'>a</maintainer>"
+        "<license>BSD</license></package>"
+    )
+    (pkg / "config" / "part.xacro").write_text(
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="from_the_package"/></robot>'
+    )
+    top = tmp_path / "robot.urdf.xacro"
+    top.write_text(
+        '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+        '<xacro:include filename="$(find moveit_resources_panda_moveit_config)/config/part.xacro"/></robot>'
+    )
+    env = {k: v for k, v in os.environ.items() if k != "AMENT_PREFIX_PATH"}
+    env["GAZELLE_RESOURCE_PATH"] = str(tmp_path / "clones")
+    out = subprocess.run(
+        [str(Path(sys.prefix) / "bin" / "xacro"), str(top)], capture_output=True, text=True, env=env, timeout=60
+    )
+    assert out.returncode == 0, out.stderr
+    assert '<link name="from_the_package"/>' in out.stdout
+    # a package that is nowhere gets xacro's own error, not a traceback of gazelle's
+    top.write_text('<robot name="r"><link name="$(find no_such_package)"/></robot>')
+    out = subprocess.run(
+        [str(Path(sys.prefix) / "bin" / "xacro"), str(top)], capture_output=True, text=True, env=env, timeout=60
+    )
+    assert out.returncode != 0 and "no_such_package" in out.stderr and "Traceback" not in out.stderr, out.stderr

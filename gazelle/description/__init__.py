@@ -42,6 +42,7 @@ from ._untrusted import safe_load_bounded as safe_load_bounded
 from ._untrusted import yaml_problem as yaml_problem
 from ._xacro import expand_bounded as expand_xacro_bounded  # noqa: F401 - public
 from ._xacro import read_description_file as read_description_file
+from ._xacro import xacro_main as xacro_main
 
 FORMATS = ("urdf", "xacro", "sdf", "srdf")
 _SUFFIXES = {

@@ -408,3 +408,34 @@ def read_description_file(path: str) -> str:
     if out is None:
         raise ValueError("; ".join(d.format() for d in sink.items) or f"{path}: xacro failed")
     return out
+
+
+def xacro_main() -> int:
+    """The venv's ``xacro`` command (``scripts/install_ros_packages.py`` installs it over the wheel's): xacro's
+    own, whose ``$(find pkg)`` also finds the packages on ``GAZELLE_RESOURCE_PATH`` by their package.xml name,
+    as ``gazelle spawn -file`` does, before the ament index. A launch file's ``Command(['xacro ', file])``
+    and a user's shell then expand the files gazelle loads."""
+    import sys
+
+    resolver = ResourceResolver()
+    ours = _find_with(resolver)
+    ament = xacro_subst._eval_find
+
+    def find(package: str) -> str:
+        try:
+            return ours(package)
+        except _PackageNotFound:
+            pass
+        try:
+            return ament(package)  # xacro's own answer
+        except Exception:
+            raise xacro_subst.SubstitutionException(
+                f"package '{package}' not found on GAZELLE_RESOURCE_PATH (by package.xml name) or in the "
+                "ament index (AMENT_PREFIX_PATH)"
+            ) from None
+
+    xacro_subst._eval_find = find
+    xacro_subst._eval_dict["find"] = find
+    sys.argv[0] = "xacro"
+    xacro.main()
+    return 0
