@@ -10,6 +10,7 @@ moveit_controllers.yaml, unchanged. Where the arm ends up is read from the simul
 from __future__ import annotations
 
 import math
+import os
 import subprocess
 import sys
 import threading
@@ -327,6 +328,79 @@ def test_a_plain_moveit_client_moves_the_panda_to_20_pose_goals_within_a_millime
         at = panda.link_pose("panda_link8")
         assert np.linalg.norm(at[:3] - np.array(goal[:3])) < 1e-3
         assert _angle(at[3:], np.array(goal[3:])) < 0.01
+
+
+PYMOVEIT2_GOALS = int(os.environ.get("GAZELLE_PANDA_GOALS", "6"))
+"""Joint goals and pose goals each in the pymoveit2-style test (issue 27 asks for 50 of each; the suite runs 6)."""
+
+
+def test_pymoveit2_style_goals_with_the_start_state_from_joint_states_never_fail_on_the_hand(panda):
+    """Issue 27 item 2, as pymoveit2 does it: every request's start_state is the latest /joint_states, the
+    uncontrolled hand's fingers included (a finger read -6.6e-12 against its limit 0, and 6 of 8 joint goals
+    failed with GOAL_STATE_INVALID); plan with /plan_kinematic_path, execute with /execute_trajectory.
+    Joint goals and pose goals (position and orientation constraints), each reached in the simulation."""
+    from moveit_msgs.srv import GetMotionPlan
+
+    def start_state(request: Any) -> None:
+        now = panda.joints()
+        request.start_state.joint_state.name = list(now)
+        request.start_state.joint_state.position = [float(v) for v in now.values()]
+
+    poses = _reachable_poses(panda, 2 * PYMOVEIT2_GOALS, seed=23)
+    for i, goal in enumerate(poses):
+        req = GetMotionPlan.Request()
+        mpr = req.motion_plan_request
+        mpr.group_name = "panda_arm"
+        mpr.allowed_planning_time = 5.0
+        mpr.max_velocity_scaling_factor = mpr.max_acceleration_scaling_factor = 1.0
+        start_state(mpr)
+        if i % 2 == 0:  # a joint goal: the IK of the pose, as a client computes it
+            ik = GetPositionIK.Request()
+            ik.ik_request.group_name = "panda_arm"
+            ik.ik_request.ik_link_name = "panda_link8"
+            ik.ik_request.avoid_collisions = True
+            ik.ik_request.pose_stamped.header.frame_id = "panda_link0"
+            p = ik.ik_request.pose_stamped.pose
+            p.position.x, p.position.y, p.position.z = goal[:3]
+            p.orientation.x, p.orientation.y, p.orientation.z, p.orientation.w = goal[3:]
+            solved = panda.ros.call(GetPositionIK, "/compute_ik", ik)
+            assert solved.error_code.val == MoveItErrorCodes.SUCCESS, (i, solved.error_code.message)
+            values = dict(zip(solved.solution.joint_state.name, solved.solution.joint_state.position))
+            mpr.goal_constraints = panda.joint_goal({j: values[j] for j in ARM}).request.goal_constraints
+        else:
+            mpr.goal_constraints = [_pose_constraints(goal)]
+        res = panda.ros.call(GetMotionPlan, "/plan_kinematic_path", req, timeout=30).motion_plan_response
+        assert res.error_code.val == MoveItErrorCodes.SUCCESS, (i, res.error_code.val, res.error_code.message)
+        result = panda.action(panda.execute, ExecuteTrajectory.Goal(trajectory=res.trajectory))
+        assert result.error_code.val == MoveItErrorCodes.SUCCESS, (i, result.error_code.message, panda.said())
+        wait_for(
+            lambda g=goal: bool(np.linalg.norm(panda.link_pose("panda_link8")[:3] - np.array(g[:3])) < 1e-3),
+            10,
+            f"goal {i}: panda_link8 at {goal[:3]}",
+        )
+
+
+def _pose_constraints(goal: tuple[float, ...]) -> Constraints:
+    """A pose goal for panda_link8 in panda_link0, as pymoveit2's move_to_pose builds it: a 1 mm sphere and
+    0.001 rad orientation tolerances."""
+    from geometry_msgs.msg import Pose
+    from moveit_msgs.msg import OrientationConstraint, PositionConstraint
+    from shape_msgs.msg import SolidPrimitive
+
+    position = PositionConstraint(link_name="panda_link8", weight=1.0)
+    position.header.frame_id = "panda_link0"
+    position.constraint_region.primitives = [SolidPrimitive(type=SolidPrimitive.SPHERE, dimensions=[0.001])]
+    target = Pose()
+    target.position.x, target.position.y, target.position.z = goal[:3]
+    target.orientation.w = 1.0
+    position.constraint_region.primitive_poses = [target]
+    orientation = OrientationConstraint(link_name="panda_link8", weight=1.0)
+    orientation.header.frame_id = "panda_link0"
+    o = orientation.orientation
+    o.x, o.y, o.z, o.w = goal[3:]
+    orientation.absolute_x_axis_tolerance = orientation.absolute_y_axis_tolerance = 0.001
+    orientation.absolute_z_axis_tolerance = 0.001
+    return Constraints(position_constraints=[position], orientation_constraints=[orientation])
 
 
 def test_compute_ik_inverts_compute_fk(panda):
