@@ -17,6 +17,8 @@ from ..worlds import default_world
 GIL_SWITCH_INTERVAL_SEC = 0.0002
 SHUTDOWN_DEADLINE_SEC = 2.5
 """SIGINT/SIGTERM end the process within this long, even if a thread is stuck (then with status 1)."""
+FOXGLOVE_STOP_SEC = 0.5
+"""How long a shutdown waits for the Foxglove process to stop by itself before killing it."""
 
 
 def _force_exit() -> None:
@@ -155,8 +157,10 @@ def run_sim(
     sim.stop()
     bridge.shutdown()
     if fox is not None:
-        try:  # less a margin for the interpreter's own exit
-            fox.wait(max(0.1, SHUTDOWN_DEADLINE_SEC - 0.5 - (time.monotonic() - t0)))
+        # it stops in ~0.4 s; one that has not by the time the rest is done is killed: the interpreter's
+        # own exit needs what is left of the deadline (a loaded run was killed by the watchdog at 3 s)
+        try:
+            fox.wait(max(0.1, min(FOXGLOVE_STOP_SEC, SHUTDOWN_DEADLINE_SEC - 1.0 - (time.monotonic() - t0))))
         except subprocess.TimeoutExpired:
             fox.kill()
     return rc

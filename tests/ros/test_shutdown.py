@@ -9,7 +9,11 @@ import socket
 import time
 from pathlib import Path
 
+import pytest
+
 from .conftest import GAZELLE, start, wait_for
+
+pytestmark = pytest.mark.serial  # timed against the server's 3 s deadline: run alone, as the other signal tests
 
 
 def _free_port() -> int:
