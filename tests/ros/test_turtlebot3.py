@@ -159,23 +159,17 @@ def test_turtlebot3_spawns_drives_and_publishes(case, resources, sim_factory, ro
         assert answer(lidar.get_parameters(["update_rate"])).values[0].double_value == 4.0
 
 
-def test_a_file_spawn_beside_the_users_robot_state_publisher_publishes_each_transform_once(
-    resources, sim_factory, ros_client, tmp_path
-):
-    """Issue 26 item 9: TurtleBot3's turtlebot3_world.launch.py runs robot_state_publisher with the URDF
-    and spawns model.sdf with -file. gazelle's built-in publisher also published the robot's TF: /tf_static
-    went out twice and /tf had three publishers. Gazebo publishes no robot TF of its own; gazelle now asks
-    the graph, and leaves the robot's transforms to the user's publisher."""
+def start_users_robot_state_publisher(tmp_path: Path):
+    """`ros2 run robot_state_publisher robot_state_publisher` with TurtleBot3's URDF as its parameter, as the
+    user's launch starts it."""
     import yaml
 
     from gazelle.description import read_description_file
 
-    sim = sim_factory()
-    node = ros_client.node
     urdf = read_description_file(str(CASES["classic_xacro"]))
     params = tmp_path / "rsp.yaml"
     params.write_text(yaml.safe_dump({"robot_state_publisher": {"ros__parameters": {"robot_description": urdf}}}))
-    rsp = start(
+    return start(
         [
             str(Path(sys.prefix) / "bin" / "ros2"),
             "run",
@@ -187,6 +181,18 @@ def test_a_file_spawn_beside_the_users_robot_state_publisher_publishes_each_tran
         ],
         "robot_state_publisher",
     )
+
+
+def test_a_file_spawn_beside_the_users_robot_state_publisher_publishes_each_transform_once(
+    resources, sim_factory, ros_client, tmp_path
+):
+    """Issue 26 item 9: TurtleBot3's turtlebot3_world.launch.py runs robot_state_publisher with the URDF
+    and spawns model.sdf with -file. gazelle's built-in publisher also published the robot's TF: /tf_static
+    went out twice and /tf had three publishers. Gazebo publishes no robot TF of its own; gazelle now asks
+    the graph, and leaves the robot's transforms to the user's publisher."""
+    sim = sim_factory()
+    node = ros_client.node
+    rsp = start_users_robot_state_publisher(tmp_path)
     try:
         wait_for(
             lambda: (
@@ -220,10 +226,6 @@ def test_a_robot_state_publisher_started_after_the_spawn_takes_the_robots_tf_ove
     """Issue 26 item 9, the other order: a launch file starts the spawn and robot_state_publisher together
     (TurtleBot3's lists the spawn first), so the server may spawn before its graph shows the user's publisher.
     Once it does, gazelle's own stops and takes its /tf_static back."""
-    import yaml
-
-    from gazelle.description import read_description_file
-
     sim = sim_factory()
     node = ros_client.node
     spawn = start([*GAZELLE, "spawn", "-entity", "burger", "-file", str(CASES["gz_model_sdf"])], "gazelle spawn")
@@ -233,21 +235,7 @@ def test_a_robot_state_publisher_started_after_the_spawn_takes_the_robots_tf_ove
         15,
         "gazelle's own /tf_static for the robot",
     )
-    params = tmp_path / "rsp.yaml"
-    urdf = read_description_file(str(CASES["classic_xacro"]))
-    params.write_text(yaml.safe_dump({"robot_state_publisher": {"ros__parameters": {"robot_description": urdf}}}))
-    rsp = start(
-        [
-            str(Path(sys.prefix) / "bin" / "ros2"),
-            "run",
-            "robot_state_publisher",
-            "robot_state_publisher",
-            "--ros-args",
-            "--params-file",
-            str(params),
-        ],
-        "robot_state_publisher",
-    )
+    rsp = start_users_robot_state_publisher(tmp_path)
     try:
         wait_for(
             lambda: {p.node_name for p in node.get_publishers_info_by_topic("/tf_static")} == {"robot_state_publisher"},
