@@ -166,7 +166,7 @@ def test_an_attached_object_moves_with_its_link_and_touches_only_its_touch_links
 
     ready = planner.state(READY)
     tool = np.eye(4)
-    tool[2, 3] = 0.25  # a rod from 15 to 35 cm out of the flange: between the fingers and beyond
+    tool[2, 3] = 0.2  # a rod from 10 to 30 cm out of the flange: between the fingertips and beyond
     shapes = (Shape("cylinder", (0.2, 0.01), np.eye(4)),)
     hand = ("panda_hand", "panda_leftfinger", "panda_rightfinger")
     bent = planner.state({**READY, "panda_joint6": 0.2})  # the hand turned back: the rod points at the arm
@@ -211,6 +211,67 @@ def test_an_attached_object_is_kept_clear_of_world_objects(planner):
     finally:
         planner.remove_object("held")
         planner.remove_object("block")
+
+
+HAND = ("panda_hand", "panda_leftfinger", "panda_rightfinger")
+PIECE = (0.02, 0.02, 0.04)
+"""The seed's chess piece, held between the fingers 10.4 cm out of panda_hand."""
+
+
+def _held_piece(at: np.ndarray):
+    from gazelle.planning import SceneObject, Shape
+
+    return SceneObject("piece", (Shape("box", PIECE, np.eye(4)),), at, "panda_hand", HAND)
+
+
+def test_an_object_held_in_the_hand_is_where_the_hand_is_for_the_arms_own_links(planner):
+    """panda_hand is welded 10.7 cm out of link7's joint. The copy of a held object that the arm's own
+    links are checked against was placed in that joint's frame without the hand's offset: a piece held
+    between the fingers sat at link7, and every plan with a grasped piece failed ("left_panda_link7 with
+    piece_r1_c3::link", the chess robot's pick-and-place)."""
+    ready = planner.state(READY)
+    between_fingers = np.eye(4)
+    between_fingers[2, 3] = 0.104
+    try:
+        planner.add_object(_held_piece(between_fingers))
+        assert planner.colliding_pairs(ready) == []
+        # held where link5 is, it does touch link5: the check is live
+        planner.add_object(
+            _held_piece(np.linalg.inv(planner.fk(ready, "panda_hand")) @ planner.fk(ready, "panda_link5"))
+        )
+        assert {frozenset(p) for p in planner.colliding_pairs(ready)} >= {frozenset(("panda_link5", "piece"))}
+    finally:
+        planner.remove_object("piece")
+
+
+def test_a_cartesian_retreat_starts_from_a_state_that_touches(planner):
+    """MoveIt's compute_cartesian_path checks the state of each pose along the line, not the start
+    (moveit_ros/move_group cartesian_path_service_capability.cpp, isStateValid on every IK solution):
+    a grasped piece standing on the board is lifted straight up. gazelle checked the way from the start
+    too, so a lift after a grasp reached 0 % of its path."""
+    from gazelle.planning import SceneObject, Shape
+
+    ready = planner.state(READY)
+    between_fingers = np.eye(4)
+    between_fingers[2, 3] = 0.104
+    piece = planner.fk(ready, "panda_hand") @ between_fingers
+    board = np.eye(4)
+    board[:3, 3] = piece[:3, 3] - [0.0, 0.0, PIECE[2] / 2 + 0.01 - 0.0005]  # its top 0.5 mm into the piece
+    flange = planner.fk(ready, "panda_link8")
+    up, down = flange.copy(), flange.copy()
+    up[2, 3] += 0.05
+    down[2, 3] -= 0.05
+    try:
+        planner.add_object(SceneObject("board", (Shape("box", (0.3, 0.3, 0.02), np.eye(4)),), board))
+        planner.add_object(_held_piece(between_fingers))
+        assert planner.in_collision(ready)  # the piece stands on the board
+        traj, fraction = planner.cartesian_path("panda_arm", "panda_link8", [up], ready, max_step=0.005)
+        assert fraction == pytest.approx(1.0) and traj is not None
+        _, fraction = planner.cartesian_path("panda_arm", "panda_link8", [down], ready, max_step=0.005)
+        assert fraction == 0.0  # into the board: the first pose is in collision
+    finally:
+        planner.remove_object("piece")
+        planner.remove_object("board")
 
 
 def test_a_cartesian_path_follows_a_straight_line_and_reports_the_fraction_it_reached(planner):

@@ -6,6 +6,7 @@ from __future__ import annotations
 import dataclasses
 import math
 
+import numpy as np
 import pytest
 from _paths import REAL, REPO
 
@@ -308,6 +309,138 @@ def test_panda_loads_with_its_moveit_controllers_yaml_and_its_arm_jtc_moves(monk
     sim.step(1000)  # and it settles at the goal
     fingers = [cm.hardware[1].joints[f"panda_finger_joint{i}"].handle.position for i in (1, 2)]
     assert fingers[0] == pytest.approx(0.03, abs=1e-3) and fingers[1] == pytest.approx(fingers[0], abs=1e-3)
+
+
+# --------------------------------------------------------------------------- grasping (issue 27, item 11)
+CHESSBOT = REPO / "examples" / "chessbot"
+CHESSBOARD = REPO / "examples" / "chessboard"
+DUAL = PANDA / "dual_arm_panda_moveit_config" / "config"
+
+
+def test_the_chess_robots_hand_holds_a_1_g_piece_and_lets_it_go_where_it_was_carried(resource_path):
+    """The chess robot's left hand (examples/chessbot/hand_controllers.yaml: the Panda's
+    position_controllers/GripperActionController) closes on a 1 g piece, lifts it 8 cm, carries it 10 cm
+    and opens beside another piece. Before: the fingers, closing with their 20 N effort limit, went
+    through the piece (MuJoCo's default contact is soft relative to a light body's mass) and it was
+    squeezed out; the hand then stayed shut for 1.1 s after the command to open (the servo's integral
+    unwinding; the action stalled), and the step to open threw the finger 7 mm past its goal into the
+    next piece."""
+    from gazelle.description import read_description_file
+    from gazelle.planning import ArmPlanner
+
+    resource_path("moveit_panda")
+    urdf = read_description_file(str(CHESSBOT / "chessbot.urdf.xacro"))
+    planner = ArmPlanner(urdf, (DUAL / "panda.srdf").read_text())
+    sim = Simulation(default_world(), rtf=0)
+    sim.spawn(load(CHESSBOT / "table.sdf").value, name="table")
+    robot = sim.spawn(load(CHESSBOT / "chessbot.urdf.xacro").value, name="chessbot")
+    sim.spawn(load(CHESSBOARD / "chess_board.sdf").value, name="board", pose=Pose((0.25, 1.39, 0.90)))
+    sim.step(1)  # the ros2_control initial values are applied
+    arm = planner.group_joints("left_panda_arm")
+    down = np.diag([1.0, -1.0, -1.0])  # the hand pointing down, its fingers closing along y
+    c = math.cos(math.pi / 4)
+    yaw = np.array([[c, c, 0.0], [-c, c, 0.0], [0.0, 0.0, 1.0]])  # -45° about z
+    grasp_z = 0.91 + 0.012 + 0.0584 + 0.0538  # the fingertips 12 mm above the board
+    seed = None
+
+    def ik(x: float, y: float, z: float) -> dict[str, float]:
+        nonlocal seed
+        target = np.eye(4)
+        target[:3, :3], target[:3, 3] = yaw @ down, (x, y, z)
+        seed = planner.ik("left_panda_arm", "left_panda_link8", target, seed, avoid_collisions=False)
+        return {n: float(seed[planner.joint_names.index(n)]) for n in arm}
+
+    above, at = ik(0.225, 1.265, grasp_z + 0.08), ik(0.225, 1.265, grasp_z)
+    over, put = ik(0.225, 1.365, grasp_z + 0.08), ik(0.225, 1.365, grasp_z + 0.001)
+    for name, value in above.items():
+        sim.world.set_joint_state("chessbot", name, position=value, velocity=0.0)
+    piece = load(CHESSBOARD / "chess_piece.sdf").value
+    for name, xy in (("piece", (0.225, 1.265)), ("behind", (0.225, 1.215)), ("next", (0.225, 1.315))):
+        sim.spawn(piece, name=name, pose=Pose((*xy, 0.92)))
+    cm = _manager(robot)
+    _start(cm, DUAL / "ros2_controllers.yaml", "left_arm_controller")
+    _start(cm, CHESSBOT / "hand_controllers.yaml", "left_hand_controller")
+    jtc, hand = cm.controllers["left_arm_controller"].controller, cm.controllers["left_hand_controller"].controller
+    finger = sim.world.joint("chessbot", "left_panda_finger_joint1")
+
+    def move(goal: dict[str, float]) -> None:
+        q0 = [sim.world.joint("chessbot", n).position for n in arm]
+        points = tuple(
+            TrajectoryPoint(
+                2.0 * s, tuple(a + (goal[n] - a) * (3 * s**2 - 2 * s**3) for a, n in zip(q0, arm, strict=True))
+            )
+            for s in (k / 20 for k in range(21))
+        )
+        g = TrajectoryGoal(JointTrajectory(0.0, tuple(arm), points))
+        jtc.submit(g)  # type: ignore[attr-defined]
+        _run(sim, g)
+        assert g.status == "succeeded", g.error_string
+
+    def grip(position: float) -> GripperGoal:
+        g = GripperGoal(position)
+        hand.submit(g)  # type: ignore[attr-defined]
+        t0 = sim.world.time
+        while not g.done.is_set() and sim.world.time < t0 + 5.0:
+            sim.step(10)
+        return g
+
+    def at_xyz(name: str) -> np.ndarray:
+        return np.array(sim.world.entity_state(name).pose.position)
+
+    assert grip(0.016).status == "succeeded"
+    move(at)
+    start = at_xyz("piece")
+    closed = grip(0.0)
+    assert closed.stalled and closed.status == "succeeded"  # allow_stalling: the piece stopped it
+    assert finger.position > 0.0085  # the piece is 2 cm wide: each finger stops ~1 mm into it at most
+    move(above)
+    assert at_xyz("piece")[2] - start[2] == pytest.approx(0.08, abs=0.01)  # lifted with the hand
+    move(over)
+    move(put)
+    t0, widest = sim.world.time, 0.0
+    opened = GripperGoal(0.016)
+    hand.submit(opened)  # type: ignore[attr-defined]
+    while not opened.done.is_set() and sim.world.time < t0 + 2.0:
+        sim.step(1)
+        widest = max(widest, finger.position)
+    assert opened.status == "succeeded" and not opened.stalled and sim.world.time - t0 < 0.3
+    assert widest < 0.016 + 0.001  # no overshoot into the next piece
+    sim.step(500)
+    placed = at_xyz("piece")
+    assert np.linalg.norm(placed[:2] - (0.225, 1.365)) < 0.005
+    assert abs(placed[2] - start[2]) < 0.001  # standing on the board again (upright)
+    for other, xy in (("behind", (0.225, 1.215)), ("next", (0.225, 1.315))):
+        assert np.linalg.norm(at_xyz(other)[:2] - xy) < 0.001, other
+
+
+@pytest.mark.parametrize("allow_stalling", [True, False])
+def test_a_stalled_gripper_goal_ends_and_the_hand_goes_on_squeezing(allow_stalling: bool):
+    """ros2_controllers' GripperActionController (jazzy, gripper_action_controller_impl.hpp): a stall ends
+    the goal (succeeded with ``stalled`` when ``allow_stalling``, else aborted) and leaves the command at
+    the goal's position. gazelle's aborted goal commanded where the finger had stopped: the hand let go."""
+    import logging
+
+    from gazelle.systems import Bus
+    from gazelle.systems.ros2_control import GripperActionController
+    from gazelle.systems.ros2_control._controller import ControllerContext
+
+    ctx = ControllerContext(
+        Bus(), "r", "", logging.getLogger("test"), ("f/position", "f/velocity"), ("f/position",), ("f",)
+    )
+    hand = GripperActionController("hand", {"joint": "f", "allow_stalling": allow_stalling, "stall_timeout": 0.5}, ctx)
+    hand.on_configure()
+    states, commands = {"f/position": 0.04, "f/velocity": 0.0}, {"f/position": math.nan}
+    hand.on_activate(states, commands)
+    goal = GripperGoal(0.0)
+    hand.submit(goal)
+    t = 0.0
+    while not goal.done.is_set() and t < 2.0:
+        hand.update(t, 0.01, {"f/position": 0.01, "f/velocity": 0.0}, commands)  # a piece stops it at 1 cm
+        t += 0.01
+    assert goal.stalled and goal.status == ("succeeded" if allow_stalling else "aborted")
+    assert 0.5 < t < 0.6
+    hand.update(t, 0.01, {"f/position": 0.01, "f/velocity": 0.0}, commands)
+    assert commands["f/position"] == 0.0  # still closing on the piece
 
 
 # --------------------------------------------------------------------------- bad input

@@ -137,17 +137,37 @@ def _surface_friction(col: Collision) -> list[float]:
     return [max(mu, 0.0), max(torsional, 0.0), max(rolling, 0.0)]
 
 
-def _solref_from_surface(col: Collision, mass_hint: float, timestep: float) -> tuple[list[float], list[float]] | None:
+DEFAULT_KP = 1e4
+"""N/m: the contact stiffness, at the least, of a moving link whose collision gives no ``<kp>``."""
+MUJOCO_DEFAULT_SOLREF = (0.02, 1.0)
+
+
+def _solref_from_surface(
+    col: Collision, mass_hint: float, timestep: float, *, moving: bool = True
+) -> tuple[list[float], list[float]] | None:
     """Map ODE's contact stiffness kp (N/m) to a critically damped MuJoCo contact.
 
     ODE turns kp/kd into ERP/CFM, a heavily damped constraint; a raw spring of
     stiffness kp on a light link would ring faster than the step and launch it. So
     kp sets the time constant ``2·sqrt(m/kp)`` of a critically damped contact
     (never shorter than two steps, MuJoCo's stability limit); kd is ignored.
+
+    Without a kp (SDFormat's default is 1e12, ``sdf/1.9/surface.sdf``: Gazebo's contacts are stiff),
+    a moving link's contact is MuJoCo's default (0.02 s) unless that is softer than
+    :data:`DEFAULT_KP`: MuJoCo's contact stiffness scales with the link's mass, and its default on a
+    link lighter than 1 kg gives way to forces Gazebo's would not. The Panda's fingers, closing with
+    their 20 N effort limit, went 1 cm into a 1 g chess piece and squeezed it out of the hand; with
+    this the piece holds (1 mm into it). Heavier links and static ones keep MuJoCo's default, which
+    the rest of gazelle's physics checks were measured with.
     """
     s = col.surface
     if s.kp is None:
-        return None
+        if not moving:
+            return None
+        timeconst = 2.0 * math.sqrt(max(mass_hint, MIN_MASS) / DEFAULT_KP)
+        if timeconst >= MUJOCO_DEFAULT_SOLREF[0]:
+            return None
+        return [max(2.0 * timestep, timeconst), 1.0], [0.9, 0.95, 0.001, 0.5, 2.0]
     if s.kp <= 0:
         return None
     m = max(mass_hint, MIN_MASS)
@@ -180,6 +200,7 @@ def _add_geom(
     *,
     group: int = 3,
     rgba: tuple[float, float, float, float] | None = None,
+    moving: bool = True,
 ) -> None:
     g = col.geometry
     piece_names: list[str] = []
@@ -247,7 +268,7 @@ def _add_geom(
                 decomposed.append((g.path, len(piece_names), parts.seconds, parts.source))
     else:  # pragma: no cover - the union is closed
         raise BuildError(f"collision '{col.name}': unsupported geometry {type(g).__name__}")
-    solref = _solref_from_surface(col, mass_hint, spec.option.timestep)
+    solref = _solref_from_surface(col, mass_hint, spec.option.timestep, moving=moving)
     if solref is not None:
         kwargs["solref"], kwargs["solimp"] = solref
     surface = col.surface
@@ -574,6 +595,7 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose, *, vis
                 decomposed,
                 group=COLLISION_GROUP if visuals else SHOWN_COLLISION_GROUP,
                 rgba=None if visuals else colour,
+                moving=not model.static,
             )
             for param in unsimulated_surface_parameters(col):
                 ignored.setdefault(param, []).append(f"{link_name}/{col.name}")

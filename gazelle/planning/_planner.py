@@ -200,6 +200,7 @@ class ArmPlanner:
         writes past its vector on a robot with two mimic joints: YuMi's grippers corrupted the heap ("double
         free or corruption", "corrupted size vs. prev_size") and killed move_group on execute_trajectory."""
         tree = _tree(robot)
+        self._tree = tree
         self.root_link = tree.root
         moved = tree.moved_by({j for g in self.groups for j in self.group_joints(g)})
         self.fixed_links = frozenset(tree.links) - moved
@@ -454,10 +455,14 @@ class ArmPlanner:
         copy in the robot model, see :meth:`_rebuild`, is what world objects are checked against)."""
         core = self._core
         frame = obj.link or "universe"
+        # a geometry's placement is in its frame's *joint* frame (Pinocchio's convention): for a link
+        # welded below its moving joint (panda_hand, 0.107 m below panda_link7's joint) the offset goes in
+        # too, or a piece held in the hand sat at link7 and every plan with it collided there
+        placed = self._in_joint_frame(obj.link) @ np.asarray(obj.pose, dtype=float) if obj.link else obj.pose
         names = []
         for i, shape in enumerate(obj.shapes):
             name = f"{obj.name}#{i}"
-            tform = np.asfortranarray(np.asarray(obj.pose, dtype=float) @ shape.pose, dtype=float)
+            tform = np.asfortranarray(np.asarray(placed, dtype=float) @ shape.pose, dtype=float)
             d = [float(v) for v in shape.dimensions]
             if shape.kind == "box":
                 self.scene.addBoxGeometry(name, frame, core.Box(d[0], d[1], d[2]), tform, np.ones(4))
@@ -487,6 +492,18 @@ class ArmPlanner:
         # rebuilds the data once, whatever happened above.
         self.scene.setCollisions([], False)
         return tuple(names)
+
+    def _in_joint_frame(self, link: str) -> np.ndarray:
+        """Where ``link`` is in the frame of the joint that moves it: the frame of the nearest link up the
+        tree (itself included) whose joint is not fixed, or of the root."""
+        parent = {child: (up, kind) for up, kids in self._tree.children.items() for _, kind, child in kids}
+        anchor = link
+        while anchor in parent and parent[anchor][1] == "fixed":
+            anchor = parent[anchor][0]
+        if anchor == link:
+            return np.eye(4)
+        q = self._current
+        return np.linalg.inv(self.fk(q, anchor)) @ self.fk(q, link)
 
     def add_box(self, name: str, size: Sequence[float], pose: np.ndarray) -> None:
         """A box of the world (``pose`` in the root link's frame) that plans keep clear of."""
@@ -767,7 +784,11 @@ class ArmPlanner:
                 break
             nxt = q.copy()
             nxt[idx] = self.scene.toFullJointPositions(group, np.asarray(solution.positions, dtype=float))[idx]
-            if avoid_collisions and self._core.hasCollisionsAlongPath(self.scene, q, nxt, 0.02):
+            # each pose's state is checked, not the start nor the way between two poses: MoveIt's
+            # compute_cartesian_path (moveit_ros/move_group cartesian_path_service_capability.cpp,
+            # isStateValid on every IK solution). So a retreat starts from a state that touches, as a
+            # grasped piece standing on the board does.
+            if avoid_collisions and self.in_collision(nxt):
                 break
             path.append(nxt[idx].copy())
             q = nxt

@@ -622,6 +622,8 @@ class MoveGroupNode(Node):
                 at = world_to_root @ _matrix(co.pose)
                 names.add(co.id)
                 existing = self._find(co.id)
+                if existing is not None and existing.link:
+                    continue  # attached to the robot (a grasp): MoveIt's scene moves it with its link, not from here
                 pad = self.object_padding
                 shapes = tuple(padded(sh, pad) if pad else sh for sh in shapes_of(co, self._warn))
                 if not shapes:

@@ -3,8 +3,9 @@
 examples/chessbot: the dual-arm Panda macro of dual_arm_panda_moveit_config with its bases 60 cm apart
 on a table, that config's SRDF, ros2_controllers.yaml, joint_limits.yaml and moveit_controllers.yaml
 unchanged (its Ros2ControlManager: move_group finds the arms' controllers from the controller
-manager), the seed's board spawned by examples/chessboard/spawn_chessboard.py, and `r2home` from
-examples/chessbot/r2.bash. The table, the board and the pieces reach move_group's planning scene from
+manager), the hands' GripperActionControllers of examples/chessbot/hand_controllers.yaml, the seed's
+board spawned by examples/chessboard/spawn_chessboard.py, `r2home` from examples/chessbot/r2.bash, and
+examples/chessbot/pick_and_place.py. The table, the board and the pieces reach move_group's planning scene from
 the simulation. The robot spawned is tests/data/chessbot_bumpers.urdf.xacro: the example unchanged, with
 a gazebo_ros bumper on each of its 22 arm links, so the simulation's contacts are checked as a Gazebo
 user checks them.
@@ -84,6 +85,9 @@ def chessbot(ros_env) -> Iterator[RosClient]:
         assert board.wait(120) == 0, board.output
         controllers = ["joint_state_broadcaster", "left_arm_controller", "right_arm_controller"]
         spawner = start([*GAZELLE, "spawner", *controllers, "-p", str(DUAL / "ros2_controllers.yaml")], "spawner")
+        assert spawner.wait(60) == 0, spawner.output
+        hands = ["left_hand_controller", "right_hand_controller"]
+        spawner = start([*GAZELLE, "spawner", *hands, "-p", str(CHESSBOT / "hand_controllers.yaml")], "hands")
         assert spawner.wait(60) == 0, spawner.output
         move_group = start(
             [
@@ -189,6 +193,39 @@ def test_an_unknown_arm_and_an_unreachable_pose_are_refused_and_nothing_moves(ch
     assert run.returncode == 1 and "error -31" in run.stderr, run.stderr  # NO_IK_SOLUTION
     after = _pose(chessbot, "chessbot::left_panda_link8")
     assert np.linalg.norm(after[:3] - before[:3]) < 1e-3
+
+
+def test_a_piece_is_picked_and_placed_on_another_square_and_back_upright(chessbot):
+    """Issue 27, item 11: examples/chessbot/pick_and_place.py (a MoveIt client: GripperCommand,
+    MoveGroup, compute_cartesian_path, execute_trajectory, the piece attached in the planning scene)
+    moves piece_r1_c2 to row 3 and back, run by bench/bench_pick_place.py in its small mode on this
+    robot. Each time within 5 mm of the square's centre and upright; no other piece moved."""
+    home = subprocess.run(
+        ["bash", "-c", f"shopt -s expand_aliases\nsource {CHESSBOT / 'r2.bash'}\nr2home"],
+        capture_output=True,
+        text=True,
+        timeout=240,
+        env={**os.environ, "PATH": f"{Path(sys.executable).parent}:{os.environ['PATH']}"},
+    )
+    assert home.returncode == 0, home.stdout + home.stderr
+    before = _pieces(chessbot)
+    bench = subprocess.run(
+        [sys.executable, str(REPO / "bench" / "bench_pick_place.py"), "--running", "--picks", "2"],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert bench.returncode == 0 and "2 of 2 moves done" in bench.stdout, bench.stdout + bench.stderr[-3000:]
+    rows = [line.split() for line in bench.stdout.splitlines() if "->" in line]
+    assert [r[:3] for r in rows] == [["1,2", "->", "3,2"], ["3,2", "->", "1,2"]], bench.stdout
+    for row in rows:  # off mm, tilt °, others mm
+        assert float(row[5]) < 5.0 and float(row[6]) < 2.0 and float(row[7]) < 1.0, bench.stdout
+    after = _pieces(chessbot)
+    moved = {n: float(np.linalg.norm(after[n] - before[n])) for n in before}
+    assert moved.pop("piece_r1_c2") < 0.005  # back on its own square
+    assert max(moved.values()) < 1e-3, {n: d for n, d in moved.items() if d >= 1e-3}
+    p = _pose(chessbot, "piece_r1_c2")
+    assert 1.0 - 2.0 * (p[3] ** 2 + p[4] ** 2) > math.cos(math.radians(2.0))  # upright
 
 
 def test_the_bumpers_report_a_touch(chessbot):

@@ -6,7 +6,7 @@ A goal's position is commanded (the position variant) or reached with a PID on t
 (the effort variant, ``gains.<joint>``), its ``max_effort`` bounding the force. It succeeds when the
 joint is within ``goal_tolerance``; a joint that stops short for ``stall_timeout`` s (slower than
 ``stall_velocity_threshold``) has stalled: success with ``stalled`` when ``allow_stalling``, else
-aborted.
+aborted; either way the goal's position stays commanded (a grasp holds).
 """
 
 from __future__ import annotations
@@ -133,8 +133,11 @@ class GripperActionController(Controller):
             if self._slow_since is None:
                 self._slow_since = t
             elif t - self._slow_since > self.stall_timeout:
+                # the command stays the goal's position, stalled or not, allowed or not: a hand closed on
+                # a piece goes on squeezing it (ros2_controllers jazzy, gripper_action_controller_impl.hpp:
+                # check_for_success ends the goal and leaves the command as it is)
                 goal.stalled = True
-                self._goal, self._target = None, q if not self.allow_stalling else self._target
+                self._goal = None
                 goal.finish("succeeded" if self.allow_stalling else "aborted")
         else:
             self._slow_since = None

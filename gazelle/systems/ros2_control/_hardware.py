@@ -59,6 +59,9 @@ POSITION_BANDWIDTH_HZ = 25.0
 POSITION_INTEGRAL_SEC = 0.2
 """Integral time of a position interface's servo (removes the sag under gravity)."""
 
+STEP_FACTOR = 2.0
+"""A position target moving more than this times the joint's velocity limit is a step (see _drive_position)."""
+
 
 class ControlError(ValueError):
     """A ``<ros2_control>`` block or request that cannot be honoured; the message names it."""
@@ -88,6 +91,8 @@ class _Joint:
     """Interface -> ``joint/interface`` (made once: the cycle runs at up to 1 kHz)."""
     slot: int = -1
     """Index of its position servo in :attr:`SimHardware._servo_values` (-1: none)."""
+    max_speed: float = 0.0
+    """URDF ``<limit velocity>`` (0: none): a position target that moves faster is a new set point."""
 
 
 class SimHardware:
@@ -143,6 +148,8 @@ class SimHardware:
                     "only revolute, continuous and prismatic joints have interfaces"
                 )
             joint = _Joint(comp.name, world.joint(entity.name, comp.name))
+            speed = j.axis.limit.velocity if j.axis is not None else None
+            joint.max_speed = speed if speed and speed > 0 else 0.0
             joint.keys = {k: f"{comp.name}/{k}" for k in JOINT_INTERFACES}
             for ci in comp.command_interfaces:
                 kind = ci.name
@@ -362,8 +369,22 @@ class SimHardware:
         # the target's own speed (the velocity interface when claimed too, else from the last target)
         # is the servo's velocity reference, as a real servo fed a trajectory has one
         velocity = self.commands.get(joint.keys["velocity"], math.nan) if joint.mode == "position" else math.nan
+        last = joint.last_target
+        step = (
+            last is not None
+            and joint.max_speed > 0.0
+            and abs(target - last[0]) > STEP_FACTOR * joint.max_speed * max(sim_time_sec - last[1], self.world.timestep)
+        )
+        if step:
+            # a step to a new set point (a gripper told to open), not a target moving: the integral built
+            # up against the old one (a hand squeezing a piece, up to its effort limit) starts again, and
+            # the step is no velocity to follow. Else the hand stayed shut until the integral unwound
+            # (1.1 s on the Panda's fingers: a GripperCommand to open stalled), and the step's "speed"
+            # (0.66 m/s) threw the finger 7 mm past its goal into the next chess piece.
+            # gz_ros2_control's position servo has no integral to unwind (gz_system.cpp, write()).
+            servo.integral = 0.0
+            velocity = 0.0 if velocity != velocity else velocity
         if velocity != velocity:
-            last = joint.last_target
             if last is not None and sim_time_sec > last[1]:
                 velocity = (target - last[0]) / (sim_time_sec - last[1])
             else:
