@@ -126,7 +126,14 @@ class Observer:
         self.client = self.node.create_client(GetEntityState, "/get_entity_state")
         self.executor = SingleThreadedExecutor()
         self.executor.add_node(self.node)
-        threading.Thread(target=self.executor.spin, daemon=True).start()
+        self._stop = threading.Event()
+
+        def spin() -> None:
+            while not self._stop.is_set():
+                self.executor.spin_once(timeout_sec=0.05)
+
+        self._spinner = threading.Thread(target=spin, daemon=True)
+        self._spinner.start()
         if not self.client.wait_for_service(timeout_sec=30.0):
             raise SystemExit("bench: no /get_entity_state on this ROS domain")
 
@@ -143,6 +150,8 @@ class Observer:
         return (p.position.x, p.position.y, p.position.z), tilt
 
     def close(self) -> None:
+        self._stop.set()  # the spinning thread ends before the node goes (else rclpy aborts the process)
+        self._spinner.join(5.0)
         self.executor.shutdown()
         self.node.destroy_node()
         self.rclpy.shutdown()
