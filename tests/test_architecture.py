@@ -8,6 +8,8 @@ line, which starts it) imports rclpy; and no package reaches into another packag
 from __future__ import annotations
 
 import ast
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -187,3 +189,17 @@ def test_the_bench_check_finds_a_private_reach(tmp_path: Path, source: str, expe
     (tmp_path / "bench_planted.py").write_text(source)
     problems = _bench_violations(tmp_path)
     assert any(expected in p and "bench/bench_planted.py:" in p for p in problems), problems
+
+
+def test_gazelle_arm_does_not_import_the_simulation() -> None:
+    """`gazelle arm` is a client: importing gazelle.ros brought in the bridge, MuJoCo and the runtime
+    (1.1 s of every `gazelle arm` answer, issue 27 item 10)."""
+    code = (
+        "import sys\n"
+        "from gazelle.ros import arm_main\n"
+        "import gazelle.ros._arm_cli\n"
+        "print(sorted(m for m in ('mujoco', 'gazelle.sim', 'gazelle.ros._bridge') if m in sys.modules))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "[]"

@@ -83,7 +83,7 @@ def run_sim(
     except ModelLoadError as err:
         print(str(err), file=sys.stderr)
         return 1
-    from ..ros import RosBridge, choose_discovery_range
+    from ..ros import RosBridge, announce_often, choose_discovery_range
     from ..sim import Simulation
 
     # The sim thread holds the GIL while it steps; ROS callbacks (a cmd_vel arriving) wait
@@ -96,6 +96,7 @@ def run_sim(
     # rclpy prints our records itself once the bridge is up
     for h in list(logging.getLogger().handlers):
         logging.getLogger().removeHandler(h)
+    announce_often()  # before the first DDS participant: later processes find this one at once (see _dds)
     bridge = RosBridge(sim, clock_rate_hz=clock_rate_hz, announce=True, drop_when_behind=drop_when_behind)
     sim.start()
     view = None

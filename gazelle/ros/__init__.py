@@ -7,14 +7,45 @@ keeps a server on this host unless asked otherwise. ``message_definition`` is an
 its dependencies (rosbag2's and Foxglove's ``ros2msg`` schemas).
 """
 
-from ._bridge import RosBridge
-from ._definitions import InterfaceError, message_class
-from ._definitions import full_text as message_definition
-from ._exposure import choose_discovery_range
-from ._planning_scene import pose as matrix_to_pose
-from ._spawn import main as spawn_main
-from ._spawner import spawner_main as spawner_main
-from ._spawner import unspawner_main as unspawner_main
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from ._bridge import RosBridge
+    from ._dds import announce_often
+    from ._definitions import InterfaceError, message_class
+    from ._definitions import full_text as message_definition
+    from ._exposure import choose_discovery_range
+    from ._planning_scene import pose as matrix_to_pose
+    from ._spawn import main as spawn_main
+    from ._spawner import spawner_main as spawner_main
+    from ._spawner import unspawner_main as unspawner_main
+
+_LAZY = {
+    "RosBridge": ("._bridge", "RosBridge"),
+    "announce_often": ("._dds", "announce_often"),
+    "InterfaceError": ("._definitions", "InterfaceError"),
+    "message_class": ("._definitions", "message_class"),
+    "message_definition": ("._definitions", "full_text"),
+    "choose_discovery_range": ("._exposure", "choose_discovery_range"),
+    "matrix_to_pose": ("._planning_scene", "pose"),
+    "spawn_main": ("._spawn", "main"),
+    "spawner_main": ("._spawner", "spawner_main"),
+    "unspawner_main": ("._spawner", "unspawner_main"),
+}
+"""Imported when first used: the bridge brings MuJoCo and the runtime (1.1 s), which a client such as
+``gazelle arm``, ``gazelle spawn`` or ``gazelle spawner`` never needs."""
+
+
+def __getattr__(name: str) -> Any:
+    if name not in _LAZY:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    module, attr = _LAZY[name]
+    value = getattr(importlib.import_module(module, __name__), attr)
+    globals()[name] = value
+    return value
 
 
 def move_group_main(argv: list[str]) -> int:
@@ -33,6 +64,7 @@ def arm_main(argv: list[str]) -> int:
 
 __all__ = [
     "InterfaceError",
+    "announce_often",
     "arm_main",
     "RosBridge",
     "message_class",

@@ -65,6 +65,7 @@ from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
 from ..description import read_description_file
 from ..planning import START_BOUNDS_ERROR, ArmPlanner, PlanningError, SceneObject, Trajectory, moveit_joint_limits
+from ._dds import announce_often
 from ._planning_scene import attached_message, checked_matrix, padded, shapes_of, to_message
 from ._planning_scene import matrix as _matrix
 from ._planning_scene import pose as _pose
@@ -1323,6 +1324,7 @@ def move_group_main(argv: list[str]) -> int:
 
     signal.signal(signal.SIGTERM, lambda *_a: None)  # rclpy's own handler shuts the context down
     start_signal_watchdog(SHUTDOWN_DEADLINE_SEC)
+    announce_often()
     rclpy.init(args=["move_group", *ros_args])
     resolve_mesh: Any = None
     if args.urdf:  # the folder of the file the user named may be read, as for a spawn

@@ -24,6 +24,7 @@ from std_msgs.msg import String
 from tf2_msgs.msg import TFMessage
 
 from ..description import Joint, JointType, Model, ModelLoadError, Pose, load_string
+from ._dds import announce_often
 
 
 def joint_motion(joint: Joint, q: float) -> Pose:
@@ -116,6 +117,7 @@ class RobotStatePublisherNode(Node):
 
 def main(argv: list[str] | None = None) -> int:
     """Run the node until Ctrl-C; returns the exit status."""
+    announce_often()
     rclpy.init(args=sys.argv if argv is None else argv)
     try:
         node = RobotStatePublisherNode()
