@@ -144,3 +144,31 @@ def test_a_decomposition_longer_than_the_load_budget_finishes_in_the_background(
     _convex._memory.clear()  # another process: the disk cache has the parts
     from_disk = _convex.collision_parts(str(stl), (1.0, 1.0, 1.0))
     assert from_disk is not None and from_disk.source == "disk cache" and len(from_disk.pieces) == len(again.pieces)
+
+
+def test_all_of_a_models_meshes_share_one_load_budget(tmp_path: Path, monkeypatch, caplog) -> None:
+    """Issue 27 item 6: the budget was per mesh, so a robot with dozens of meshes (NASA R2) would still have
+    kept its first spawn waiting 2 s a mesh, past the spawn client's 30 s. Two rings in one model, a budget
+    the first one uses up: the second is not tried in the load at all, it goes to the background."""
+    monkeypatch.setenv("GAZELLE_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setenv("GAZELLE_DECOMPOSE_LOAD_BUDGET", "0.2")
+    _convex._memory.clear()
+    rings = [ring_stl(tmp_path / "a.stl"), ring_stl(tmp_path / "b.stl")]
+    mesh = trimesh.load(rings[1])
+    mesh.apply_scale(1.5)  # another mesh (another cache key)
+    mesh.export(rings[1])
+    links = "".join(
+        f'<link name="l{i}"><collision name="c"><geometry><mesh><uri>{stl.name}</uri></mesh></geometry></collision></link>'
+        for i, stl in enumerate(rings)
+    )
+    sdf = tmp_path / "two.sdf"  # the meshes beside it: the file's folder is where they may be read from
+    sdf.write_text(f'<sdf version="1.9"><model name="two"><static>true</static>{links}</model></sdf>')
+    model = load(sdf).value
+    with caplog.at_level(logging.WARNING):
+        _convex.prepare(model)
+    assert "takes more than the 0.2 s a load may spend on it" in caplog.text  # the first: tried, then later
+    assert "the load's time for decompositions" in caplog.text and "is spent" in caplog.text  # the second: not tried
+    with _convex.background_done:  # both finish in the background
+        assert _convex.background_done.wait_for(
+            lambda: all(_convex.collision_parts(str(p), (1.0, 1.0, 1.0)) is not None for p in rings), timeout=120
+        )

@@ -18,9 +18,9 @@ found it, and tried again by the next version.
 The decomposition runs in a forked child bounded in time (``GAZELLE_DECOMPOSE_TIMEOUT``, default
 30 s) and memory, off the simulation thread (:func:`prepare`); a mesh it cannot decompose in time,
 or with more than ``GAZELLE_DECOMPOSE_MAX_FACES`` faces (5,000), keeps its convex hull with a
-warning that says so (and that outcome is cached too). A load waits for it at most
-``GAZELLE_DECOMPOSE_LOAD_BUDGET`` (2 s of CPU): a longer one finishes in a background thread (its
-own bounded child), the mesh colliding as its hull meanwhile, and later loads get the parts.
+warning that says so (and that outcome is cached too). A load (all of one model's meshes) waits for
+them at most ``GAZELLE_DECOMPOSE_LOAD_BUDGET`` (2 s) in all: the rest finish in a background thread
+(its own bounded child), each mesh colliding as its hull meanwhile, and later loads get the parts.
 """
 
 from __future__ import annotations
@@ -271,7 +271,19 @@ def collision_parts(path: str, scale: tuple[float, float, float]) -> Parts | Non
         parts = Parts(pieces, 0.0, "disk cache")
     else:
         timeout = float(os.environ.get("GAZELLE_DECOMPOSE_TIMEOUT") or DEFAULT_TIMEOUT_SEC)
-        budget = min(timeout, float(os.environ.get("GAZELLE_DECOMPOSE_LOAD_BUDGET") or LOAD_BUDGET_SEC))
+        budget = min(timeout, load_budget())
+        left = getattr(_load, "left", None)  # what is left of the load's budget (see prepare)
+        if left is not None and left < budget:
+            budget = max(left, MIN_ATTEMPT_SEC)
+            if left < MIN_ATTEMPT_SEC and usable:
+                _in_background(disk, key, verts, faces, timeout)
+                return _hull(
+                    key,
+                    path,
+                    "the load's time for decompositions (GAZELLE_DECOMPOSE_LOAD_BUDGET, for all of a model's "
+                    "meshes) is spent: it is decomposed in the background, and loads after it has finished use "
+                    "its parts",
+                )
         t0 = time.monotonic()
         try:
             raw = run_bounded(
@@ -281,6 +293,7 @@ def collision_parts(path: str, scale: tuple[float, float, float]) -> Parts | Non
                 timeout_hint="GAZELLE_DECOMPOSE_LOAD_BUDGET" if budget < timeout else "GAZELLE_DECOMPOSE_TIMEOUT",
             )
         except BoundExceeded as err:
+            _spend(time.monotonic() - t0)
             if err.timed_out and budget < timeout and usable:
                 _in_background(disk, key, verts, faces, timeout)
                 return _hull(
@@ -292,6 +305,7 @@ def collision_parts(path: str, scale: tuple[float, float, float]) -> Parts | Non
                 )
             _save_disk(disk, key, ())  # not again on this machine, with this version
             return _hull(key, path, str(err))
+        _spend(time.monotonic() - t0)
         pieces = tuple(np.asarray(p, dtype=float) for p in raw if len(p) >= 4)
         parts = Parts(pieces, time.monotonic() - t0, "computed")
         _save_disk(disk, key, pieces)
@@ -366,17 +380,39 @@ def _welded(vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, np.nda
     return unique, inverse.reshape(-1)[f]
 
 
+def load_budget() -> float:
+    """Seconds a load (all of one model's meshes) may spend decomposing: ``GAZELLE_DECOMPOSE_LOAD_BUDGET``."""
+    return float(os.environ.get("GAZELLE_DECOMPOSE_LOAD_BUDGET") or LOAD_BUDGET_SEC)
+
+
+_load = threading.local()
+"""``left``: the seconds the :func:`prepare` running in this thread has left for decompositions."""
+MIN_ATTEMPT_SEC = 0.05
+"""Less than this left of a load's budget: the next decomposition goes straight to the background."""
+
+
+def _spend(seconds: float) -> None:
+    left = getattr(_load, "left", None)
+    if left is not None:
+        _load.left = left - seconds
+
+
 def prepare(model: Model) -> None:
     """Decompose ``model``'s non-convex collision meshes now, in the calling thread (not the simulation's).
 
     The builder finds the results in the memory cache; a mesh that cannot be read is left for the
-    builder to report.
+    builder to report. All of the model's decompositions share one budget (:func:`load_budget`): NASA
+    R2's dozens of meshes, 2 s each, would still have kept a spawn waiting past its client's 30 s.
     """
-    for link in model.links:
-        for col in link.collisions:
-            g = col.geometry
-            if isinstance(g, Mesh) and g.path is not None:
-                try:
-                    collision_parts(g.path, tuple(g.scale))  # type: ignore[arg-type]
-                except MeshReadError:
-                    pass
+    _load.left = load_budget()
+    try:
+        for link in model.links:
+            for col in link.collisions:
+                g = col.geometry
+                if isinstance(g, Mesh) and g.path is not None:
+                    try:
+                        collision_parts(g.path, tuple(g.scale))  # type: ignore[arg-type]
+                    except MeshReadError:
+                        pass
+    finally:
+        del _load.left
