@@ -191,13 +191,14 @@ def test_the_bench_check_finds_a_private_reach(tmp_path: Path, source: str, expe
     assert any(expected in p and "bench/bench_planted.py:" in p for p in problems), problems
 
 
-def test_gazelle_arm_does_not_import_the_simulation() -> None:
-    """`gazelle arm` is a client: importing gazelle.ros brought in the bridge, MuJoCo and the runtime
-    (1.1 s of every `gazelle arm` answer, issue 27 item 10)."""
+def test_ros_clients_do_not_import_the_simulation() -> None:
+    """`gazelle arm`, `gazelle spawn` and `gazelle spawner` are clients: importing gazelle.ros brought in the
+    bridge, MuJoCo and the runtime (1.1 s of every `gazelle arm` answer, issue 27 item 10), and gazelle.systems
+    (for a plugin's name and the YAML reader) MuJoCo again: 0.3 s of every spawn and spawner the tests run."""
     code = (
         "import sys\n"
-        "from gazelle.ros import arm_main\n"
-        "import gazelle.ros._arm_cli\n"
+        "from gazelle.ros import arm_main, spawn_main, spawner_main\n"
+        "import gazelle.ros._arm_cli, gazelle.ros._spawn, gazelle.ros._spawner\n"
         "print(sorted(m for m in ('mujoco', 'gazelle.sim', 'gazelle.ros._bridge') if m in sys.modules))"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)

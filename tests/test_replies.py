@@ -46,7 +46,8 @@ def test_a_dropped_reply_is_sent_again_until_the_client_reader_is_there(fresh_ho
     assert service.delivered == [("reply", "header")] and service.tries == 4
     # the drops were handled, not printed; other warnings still are
     warnings.warn("something else", RuntimeWarning, stacklevel=2)
-    assert [str(w.message) for w in fresh_hook] == ["something else"]
+    # (a ResourceWarning another test's garbage raises meanwhile is not this test's business)
+    assert [str(w.message) for w in fresh_hook if issubclass(w.category, RuntimeWarning)] == ["something else"]
 
 
 def test_a_reply_delivered_at_once_is_sent_once(fresh_hook) -> None:

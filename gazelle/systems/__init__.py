@@ -7,64 +7,143 @@ through the typed handles of :mod:`gazelle.physics` and to ROS through the :clas
 never import MuJoCo, the runtime or rclpy.
 """
 
-from ._actuation import PidGains as PidGains
-from ._actuation import PositionServo as PositionServo
-from ._actuation import VelocityServo as VelocityServo
-from ._actuation import add_position_servo as add_position_servo
-from ._actuation import add_velocity_servo as add_velocity_servo
-from ._actuation import add_wheel_servo as add_wheel_servo
-from ._base import PHYSICS as PHYSICS
-from ._base import PRE_PHYSICS as PRE_PHYSICS
-from ._base import RateGate as RateGate
-from ._base import System as System
-from ._base import SystemContext as SystemContext
-from ._base import SystemManager as SystemManager
-from ._base import UpdateInfo as UpdateInfo
-from ._base import plugin_node as plugin_node
-from ._base import plugin_node_name as plugin_node_name
-from ._bus import Altimeter as Altimeter
-from ._bus import Bus as Bus
-from ._bus import CameraInfo as CameraInfo
-from ._bus import ContactPair as ContactPair
-from ._bus import Contacts as Contacts
-from ._bus import DisplayTrajectory as DisplayTrajectory
-from ._bus import DynamicJointState as DynamicJointState
-from ._bus import Endpoint as Endpoint
-from ._bus import Float64 as Float64
-from ._bus import Float64Array as Float64Array
-from ._bus import Image as Image
-from ._bus import Imu as Imu
-from ._bus import JointStates as JointStates
-from ._bus import JointTrajectory as JointTrajectory
-from ._bus import LaserScan as LaserScan
-from ._bus import MagneticField as MagneticField
-from ._bus import MsgType as MsgType
-from ._bus import NavSatFix as NavSatFix
-from ._bus import Odometry as Odometry
-from ._bus import ParamValue as ParamValue
-from ._bus import PluginNode as PluginNode
-from ._bus import PointCloud as PointCloud
-from ._bus import Qos as Qos
-from ._bus import Range as Range
-from ._bus import Text as Text
-from ._bus import TrajectoryControllerState as TrajectoryControllerState
-from ._bus import TrajectoryPoint as TrajectoryPoint
-from ._bus import Transform as Transform
-from ._bus import TransformBatch as TransformBatch
-from ._bus import Twist as Twist
-from ._bus import TwistStamped as TwistStamped
-from ._bus import Vector3Stamped as Vector3Stamped
-from ._bus import WrenchStamped as WrenchStamped
-from ._bus import resolve_topic as resolve_topic
-from ._registry import SensorPlan as SensorPlan
-from ._registry import audit_model as audit_model
-from ._registry import audit_world as audit_world
-from ._registry import create_system as create_system
-from ._registry import plan_sensors as plan_sensors
-from ._registry import supported_plugins as supported_plugins
-from .robot_state import RSP_PLUGIN as RSP_PLUGIN
-from .robot_state import RobotStatePublisher as RobotStatePublisher
-from .robot_state import robot_state_config as robot_state_config
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from ._actuation import PidGains as PidGains
+    from ._actuation import PositionServo as PositionServo
+    from ._actuation import VelocityServo as VelocityServo
+    from ._actuation import add_position_servo as add_position_servo
+    from ._actuation import add_velocity_servo as add_velocity_servo
+    from ._actuation import add_wheel_servo as add_wheel_servo
+    from ._base import PHYSICS as PHYSICS
+    from ._base import PRE_PHYSICS as PRE_PHYSICS
+    from ._base import RateGate as RateGate
+    from ._base import System as System
+    from ._base import SystemContext as SystemContext
+    from ._base import SystemManager as SystemManager
+    from ._base import UpdateInfo as UpdateInfo
+    from ._base import plugin_node as plugin_node
+    from ._base import plugin_node_name as plugin_node_name
+    from ._bus import Altimeter as Altimeter
+    from ._bus import Bus as Bus
+    from ._bus import CameraInfo as CameraInfo
+    from ._bus import ContactPair as ContactPair
+    from ._bus import Contacts as Contacts
+    from ._bus import DisplayTrajectory as DisplayTrajectory
+    from ._bus import DynamicJointState as DynamicJointState
+    from ._bus import Endpoint as Endpoint
+    from ._bus import Float64 as Float64
+    from ._bus import Float64Array as Float64Array
+    from ._bus import Image as Image
+    from ._bus import Imu as Imu
+    from ._bus import JointStates as JointStates
+    from ._bus import JointTrajectory as JointTrajectory
+    from ._bus import LaserScan as LaserScan
+    from ._bus import MagneticField as MagneticField
+    from ._bus import MsgType as MsgType
+    from ._bus import NavSatFix as NavSatFix
+    from ._bus import Odometry as Odometry
+    from ._bus import ParamValue as ParamValue
+    from ._bus import PluginNode as PluginNode
+    from ._bus import PointCloud as PointCloud
+    from ._bus import Qos as Qos
+    from ._bus import Range as Range
+    from ._bus import Text as Text
+    from ._bus import TrajectoryControllerState as TrajectoryControllerState
+    from ._bus import TrajectoryPoint as TrajectoryPoint
+    from ._bus import Transform as Transform
+    from ._bus import TransformBatch as TransformBatch
+    from ._bus import Twist as Twist
+    from ._bus import TwistStamped as TwistStamped
+    from ._bus import Vector3Stamped as Vector3Stamped
+    from ._bus import WrenchStamped as WrenchStamped
+    from ._bus import resolve_topic as resolve_topic
+    from ._plugin_names import RSP_PLUGIN as RSP_PLUGIN
+    from ._registry import SensorPlan as SensorPlan
+    from ._registry import audit_model as audit_model
+    from ._registry import audit_world as audit_world
+    from ._registry import create_system as create_system
+    from ._registry import plan_sensors as plan_sensors
+    from ._registry import supported_plugins as supported_plugins
+    from .robot_state import RobotStatePublisher as RobotStatePublisher
+    from .robot_state import robot_state_config as robot_state_config
+
+_LAZY = {
+    "PidGains": ("._actuation", "PidGains"),
+    "PositionServo": ("._actuation", "PositionServo"),
+    "VelocityServo": ("._actuation", "VelocityServo"),
+    "add_position_servo": ("._actuation", "add_position_servo"),
+    "add_velocity_servo": ("._actuation", "add_velocity_servo"),
+    "add_wheel_servo": ("._actuation", "add_wheel_servo"),
+    "PHYSICS": ("._base", "PHYSICS"),
+    "PRE_PHYSICS": ("._base", "PRE_PHYSICS"),
+    "RateGate": ("._base", "RateGate"),
+    "System": ("._base", "System"),
+    "SystemContext": ("._base", "SystemContext"),
+    "SystemManager": ("._base", "SystemManager"),
+    "UpdateInfo": ("._base", "UpdateInfo"),
+    "plugin_node": ("._base", "plugin_node"),
+    "plugin_node_name": ("._base", "plugin_node_name"),
+    "Altimeter": ("._bus", "Altimeter"),
+    "Bus": ("._bus", "Bus"),
+    "CameraInfo": ("._bus", "CameraInfo"),
+    "ContactPair": ("._bus", "ContactPair"),
+    "Contacts": ("._bus", "Contacts"),
+    "DisplayTrajectory": ("._bus", "DisplayTrajectory"),
+    "DynamicJointState": ("._bus", "DynamicJointState"),
+    "Endpoint": ("._bus", "Endpoint"),
+    "Float64": ("._bus", "Float64"),
+    "Float64Array": ("._bus", "Float64Array"),
+    "Image": ("._bus", "Image"),
+    "Imu": ("._bus", "Imu"),
+    "JointStates": ("._bus", "JointStates"),
+    "JointTrajectory": ("._bus", "JointTrajectory"),
+    "LaserScan": ("._bus", "LaserScan"),
+    "MagneticField": ("._bus", "MagneticField"),
+    "MsgType": ("._bus", "MsgType"),
+    "NavSatFix": ("._bus", "NavSatFix"),
+    "Odometry": ("._bus", "Odometry"),
+    "ParamValue": ("._bus", "ParamValue"),
+    "PluginNode": ("._bus", "PluginNode"),
+    "PointCloud": ("._bus", "PointCloud"),
+    "Qos": ("._bus", "Qos"),
+    "Range": ("._bus", "Range"),
+    "Text": ("._bus", "Text"),
+    "TrajectoryControllerState": ("._bus", "TrajectoryControllerState"),
+    "TrajectoryPoint": ("._bus", "TrajectoryPoint"),
+    "Transform": ("._bus", "Transform"),
+    "TransformBatch": ("._bus", "TransformBatch"),
+    "Twist": ("._bus", "Twist"),
+    "TwistStamped": ("._bus", "TwistStamped"),
+    "Vector3Stamped": ("._bus", "Vector3Stamped"),
+    "WrenchStamped": ("._bus", "WrenchStamped"),
+    "resolve_topic": ("._bus", "resolve_topic"),
+    "SensorPlan": ("._registry", "SensorPlan"),
+    "audit_model": ("._registry", "audit_model"),
+    "audit_world": ("._registry", "audit_world"),
+    "create_system": ("._registry", "create_system"),
+    "plan_sensors": ("._registry", "plan_sensors"),
+    "supported_plugins": ("._registry", "supported_plugins"),
+    "RSP_PLUGIN": ("._plugin_names", "RSP_PLUGIN"),
+    "RobotStatePublisher": (".robot_state", "RobotStatePublisher"),
+    "robot_state_config": (".robot_state", "robot_state_config"),
+}
+"""Imported when first used: the actuation and the systems bring MuJoCo (through gazelle.physics), which a
+client such as ``gazelle spawn`` never needs."""
+
+
+def __getattr__(name: str) -> Any:
+    if name not in _LAZY:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    module, attr = _LAZY[name]
+    value = getattr(importlib.import_module(module, __name__), attr)
+    globals()[name] = value
+    return value
+
 
 __all__ = [
     "Altimeter",

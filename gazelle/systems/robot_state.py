@@ -29,9 +29,7 @@ from ._base import (
     ros_block,
 )
 from ._bus import Endpoint, JointStates, MsgType, Qos, Text, Transform, TransformBatch, resolve_topic
-
-RSP_PLUGIN = "gazelle_robot_state_publisher"
-"""File name of the built-in robot_state_publisher, to configure or disable it in a model file."""
+from ._plugin_names import RSP_PLUGIN as RSP_PLUGIN
 
 
 def default_frame_prefix(namespace: str) -> str:

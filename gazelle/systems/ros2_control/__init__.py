@@ -2,30 +2,75 @@
 controllers, with ros2_control Jazzy's names, parameters and lifecycle (no rclpy here: the ROS
 layer serves the manager's services and the controllers' actions)."""
 
-from ._controller import ACTIVE as ACTIVE
-from ._controller import FINALIZED as FINALIZED
-from ._controller import INACTIVE as INACTIVE
-from ._controller import UNCONFIGURED as UNCONFIGURED
-from ._controller import Controller as Controller
-from ._gripper import GripperActionController as GripperActionController
-from ._gripper import GripperGoal as GripperGoal
-from ._hardware import ControlError as ControlError
-from ._hardware import SimHardware as SimHardware
-from ._manager import BEST_EFFORT as BEST_EFFORT
-from ._manager import CONTROLLER_TYPES as CONTROLLER_TYPES
-from ._manager import STRICT as STRICT
-from ._manager import ControllerManager as ControllerManager
-from ._manager import params_file_paths as params_file_paths
-from ._manager import valid_controller_name as valid_controller_name
-from ._params import ParamsError as ParamsError
-from ._params import ParamsFile as ParamsFile
-from ._params import load_params as load_params
-from ._params import parse_params as parse_params
-from ._params import yaml_problem as yaml_problem
-from ._trajectory import JointTrajectoryController as JointTrajectoryController
-from ._trajectory import Tolerance as Tolerance
-from ._trajectory import TrajectoryGoal as TrajectoryGoal
-from ._trajectory import goal_tolerances as goal_tolerances
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from ._controller import ACTIVE as ACTIVE
+    from ._controller import FINALIZED as FINALIZED
+    from ._controller import INACTIVE as INACTIVE
+    from ._controller import UNCONFIGURED as UNCONFIGURED
+    from ._controller import Controller as Controller
+    from ._gripper import GripperActionController as GripperActionController
+    from ._gripper import GripperGoal as GripperGoal
+    from ._hardware import ControlError as ControlError
+    from ._hardware import SimHardware as SimHardware
+    from ._manager import BEST_EFFORT as BEST_EFFORT
+    from ._manager import CONTROLLER_TYPES as CONTROLLER_TYPES
+    from ._manager import STRICT as STRICT
+    from ._manager import ControllerManager as ControllerManager
+    from ._manager import params_file_paths as params_file_paths
+    from ._manager import valid_controller_name as valid_controller_name
+    from ._params import ParamsError as ParamsError
+    from ._params import ParamsFile as ParamsFile
+    from ._params import load_params as load_params
+    from ._params import parse_params as parse_params
+    from ._params import yaml_problem as yaml_problem
+    from ._trajectory import JointTrajectoryController as JointTrajectoryController
+    from ._trajectory import Tolerance as Tolerance
+    from ._trajectory import TrajectoryGoal as TrajectoryGoal
+    from ._trajectory import goal_tolerances as goal_tolerances
+
+_LAZY = {
+    "ACTIVE": ("._controller", "ACTIVE"),
+    "FINALIZED": ("._controller", "FINALIZED"),
+    "INACTIVE": ("._controller", "INACTIVE"),
+    "UNCONFIGURED": ("._controller", "UNCONFIGURED"),
+    "Controller": ("._controller", "Controller"),
+    "GripperActionController": ("._gripper", "GripperActionController"),
+    "GripperGoal": ("._gripper", "GripperGoal"),
+    "ControlError": ("._hardware", "ControlError"),
+    "SimHardware": ("._hardware", "SimHardware"),
+    "BEST_EFFORT": ("._manager", "BEST_EFFORT"),
+    "CONTROLLER_TYPES": ("._manager", "CONTROLLER_TYPES"),
+    "STRICT": ("._manager", "STRICT"),
+    "ControllerManager": ("._manager", "ControllerManager"),
+    "params_file_paths": ("._manager", "params_file_paths"),
+    "valid_controller_name": ("._manager", "valid_controller_name"),
+    "ParamsError": ("._params", "ParamsError"),
+    "ParamsFile": ("._params", "ParamsFile"),
+    "load_params": ("._params", "load_params"),
+    "parse_params": ("._params", "parse_params"),
+    "yaml_problem": ("._params", "yaml_problem"),
+    "JointTrajectoryController": ("._trajectory", "JointTrajectoryController"),
+    "Tolerance": ("._trajectory", "Tolerance"),
+    "TrajectoryGoal": ("._trajectory", "TrajectoryGoal"),
+    "goal_tolerances": ("._trajectory", "goal_tolerances"),
+}
+"""Imported when first used: ``gazelle spawner`` reads parameter files (``load_params``) without the
+hardware, which brings MuJoCo."""
+
+
+def __getattr__(name: str) -> Any:
+    if name not in _LAZY:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    module, attr = _LAZY[name]
+    value = getattr(importlib.import_module(module, __name__), attr)
+    globals()[name] = value
+    return value
+
 
 __all__ = [
     "ACTIVE",
