@@ -51,3 +51,62 @@ def plan_mask(image: bytes | np.ndarray, tol: int = 40) -> np.ndarray:
     """Pixels of the planned path's blue (``PLAN_RGB``, a screen-space line like the trail)."""
     rgb = rgb_of(image) if isinstance(image, bytes) else image.astype(int)
     return np.abs(rgb - np.asarray(PLAN_RGB)).max(axis=-1) <= tol
+
+
+def hex_rgb(color: str) -> np.ndarray:
+    """``#rrggbb`` as an RGB array."""
+    return np.array([int(color[i : i + 2], 16) for i in (1, 3, 5)])
+
+
+def share_near(png: bytes, at: Any, rgb: np.ndarray, half: int = 4, tol: int = 60) -> float:
+    """The share of the pixels within ``half`` of ``at`` (x, y) that have colour ``rgb``."""
+    image = rgb_of(png).astype(int)
+    x, y = int(round(at[0])), int(round(at[1]))
+    patch = image[max(y - half, 0) : y + half + 1, max(x - half, 0) : x + half + 1]
+    return float((np.abs(patch - rgb).sum(axis=2) < tol).mean()) if patch.size else 0.0
+
+
+class ReplayPage:
+    """A replay page (gazelle.viewer.replay_html) opened from disk in headless chromium."""
+
+    def __init__(self, page: Any) -> None:
+        self.page = page
+
+    def frames(self) -> int:
+        return int(self.page.evaluate("() => window.gazelleReplay.frames"))
+
+    def seek(self, i: int) -> None:
+        self.page.evaluate(f"() => window.gazelleReplay.seek({int(i)})")
+
+    def to_screen(self, x: float, y: float) -> tuple[float, float]:
+        sx, sy = self.page.evaluate(f"() => window.gazelleReplay.toScreen({float(x)}, {float(y)})")
+        return float(sx), float(sy)
+
+    def color_of(self, entity: str) -> np.ndarray:
+        return hex_rgb(self.page.evaluate(f"() => window.gazelleReplay.colorOf({entity!r})"))
+
+    def canvas(self) -> bytes:
+        return self.page.locator("#view").screenshot()
+
+
+def open_replay(path: Any) -> Any:
+    """A context manager: a :class:`ReplayPage` of the HTML file at ``path`` (file://, no server)."""
+    import contextlib
+
+    from playwright.sync_api import sync_playwright
+
+    from gazelle.viewer._browser import CHROMIUM_ARGS, VIEWPORT, find_chromium
+
+    @contextlib.contextmanager
+    def opened() -> Any:
+        with sync_playwright() as pw:
+            browser = pw.chromium.launch(executable_path=find_chromium(), headless=True, args=list(CHROMIUM_ARGS))
+            try:
+                page = browser.new_page(viewport=VIEWPORT)  # pyright: ignore[reportArgumentType]
+                page.goto(path.as_uri())
+                page.wait_for_function("() => window.gazelleReplay !== undefined")
+                yield ReplayPage(page)
+            finally:
+                browser.close()
+
+    return opened()

@@ -93,6 +93,16 @@ def sim(
         help="Also serve the Foxglove WebSocket protocol on this port (8765 when given without one), on the "
         "viewer's interface, to the Foxglove app's origin and --viewer-allow-origin ones.",
     ),
+    replay: Path | None = typer.Option(
+        None,
+        "--replay",
+        help="Record where every body is (30 times a sim second) and, at shutdown, write a replay: a page "
+        "that opens from disk in a browser (FILE.html), or its data (FILE.json). gazelle's pytest plugin keeps "
+        "one for each failing test.",
+    ),
+    replay_topic: list[str] = typer.Option(
+        [], "--replay-topic", help="A topic of the simulation's whose values the replay shows (repeatable)."
+    ),
 ) -> None:
     """Run a simulation server: /clock, /spawn_entity, /delete_entity, every plugin's topics, and the browser viewer."""
     from ._sim import run_sim
@@ -112,6 +122,8 @@ def sim(
             foxglove_port=foxglove,
             seed=seed,
             drop_when_behind=drop_when_behind,
+            replay=replay,
+            replay_topics=tuple(replay_topic),
         )
     )
 

@@ -65,6 +65,8 @@ def run_sim(
     foxglove_port: int | None = None,
     seed: int | None = None,
     drop_when_behind: bool = False,
+    replay: Path | None = None,
+    replay_topics: tuple[str, ...] = (),
 ) -> int:
     """Run the server; returns the process exit code."""
     logging.basicConfig(level=logging.INFO, format="[%(levelname)s] [%(name)s]: %(message)s", stream=sys.stderr)
@@ -84,7 +86,7 @@ def run_sim(
         print(str(err), file=sys.stderr)
         return 1
     from ..ros import RosBridge, announce_often, choose_discovery_range
-    from ..sim import Simulation
+    from ..sim import ReplayRecorder, Simulation
 
     # The sim thread holds the GIL while it steps; ROS callbacks (a cmd_vel arriving) wait
     # for the interpreter's switch interval, 5 ms by default: at 30x real time that is
@@ -98,6 +100,10 @@ def run_sim(
         logging.getLogger().removeHandler(h)
     announce_often()  # before the first DDS participant: later processes find this one at once (see _dds)
     bridge = RosBridge(sim, clock_rate_hz=clock_rate_hz, announce=True, drop_when_behind=drop_when_behind)
+    recorder = ReplayRecorder(sim, topics=replay_topics) if replay is not None else None
+    page = None
+    if replay is not None and replay.suffix.lower() in (".html", ".htm"):
+        from ..viewer import replay_html as page  # now: the shutdown has 3 s for everything
     sim.start()
     view = None
     if viewer:
@@ -156,6 +162,14 @@ def run_sim(
     if view is not None:
         view.stop()
     sim.stop()
+    if recorder is not None and replay is not None:
+        try:
+            if page is not None:
+                recorder.write(replay, page(recorder.data(), title=f"gazelle replay: {world.name}"))
+            else:
+                recorder.write(replay)
+        except OSError as err:
+            print(f"gazelle: the replay was not written: {err}", file=sys.stderr)
     bridge.shutdown()
     if fox is not None:
         # it stops in ~0.4 s; one that has not by the time the rest is done is killed: the interpreter's

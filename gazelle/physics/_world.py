@@ -908,6 +908,12 @@ class PhysicsWorld:
         w, qx, qy, qz = self.data.xquat[body_id].tolist()
         return Pose((x, y, z), (w, qx, qy, qz))
 
+    def body_poses(self, body_ids: Sequence[int] | np.ndarray) -> np.ndarray:
+        """World poses of many bodies at once: an (n, 7) array of x, y, z, qw, qx, qy, qz (a copy)."""
+        self._refresh_kinematics()
+        ids = np.asarray(body_ids, dtype=int)
+        return np.concatenate((self.data.xpos[ids], self.data.xquat[ids]), axis=1)
+
     def link_poses_along(
         self, entity: str, link: str, joints: Sequence[str], positions: Sequence[Sequence[float]]
     ) -> list[Pose]:

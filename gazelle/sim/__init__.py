@@ -6,6 +6,7 @@ runs the systems' phases around blocks of physics steps. ROS, the viewer and the
 line drive it through its thread-safe methods.
 """
 
+from ._replay import ReplayRecorder as ReplayRecorder
 from ._scene import SceneGeometry as SceneGeometry
 from ._scene import SceneLink as SceneLink
 from ._scene import SceneShape as SceneShape

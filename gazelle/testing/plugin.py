@@ -10,9 +10,11 @@ Fixtures for a user's own robot tests (see docs/robot_tests.md):
 * ``gazelle_shared_sim``: one server for a whole module (``gazelle_sim_module``), reset before each test.
 
 Configure a test with ``@pytest.mark.gazelle(world=..., record=[...], paused=True, rtf=None)``. A failing
-test keeps an MCAP bag (rosbag2 layout) of the topics it named plus /tf, /tf_static and /clock, and
-the server's output, under ``--gazelle-artifacts-dir`` (default ``gazelle-artifacts/`` in pytest's
-root folder); ``--gazelle-artifacts=all`` keeps them for every test, ``none`` records nothing.
+test keeps an MCAP bag (rosbag2 layout) of the topics it named plus /tf, /tf_static and /clock, a
+replay (``replay.html``: the world from above on a timeline, the named topics' values at the cursor;
+it opens from disk in any browser), and the server's output, under ``--gazelle-artifacts-dir``
+(default ``gazelle-artifacts/`` in pytest's root folder); ``--gazelle-artifacts=all`` keeps them for
+every test, ``none`` records nothing.
 
 Importing this module imports neither rclpy nor the simulation: a plugin loaded in every pytest run
 must cost nothing where it is not used.
@@ -65,7 +67,7 @@ def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo[None]) ->
     if report.failed and _ARTIFACTS in item.stash:
         folder, seed = item.stash[_ARTIFACTS]
         mode = item.config.getoption("--gazelle-artifacts")
-        kept = f"; artifacts (bag, server log): {folder}" if mode != "none" else ""
+        kept = f"; artifacts (bag, replay.html, server log): {folder}" if mode != "none" else ""
         report.sections.append(("gazelle", f"seed {seed} (rerun with --gazelle-seed {seed}){kept}"))
     return report
 
@@ -154,6 +156,13 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
                 env=env,
                 start_timeout=float(options.get("start_timeout", 60.0)),
                 record=(folder / "bag", record) if mode != "none" else None,
+                # the server writes the replay page as it stops: the bodies from above on a timeline, the
+                # recorded topics' values at the cursor (those the simulation publishes)
+                server_args=(
+                    ["--replay", str(folder / "replay.html"), *[a for t in record for a in ("--replay-topic", t)]]
+                    if mode != "none"
+                    else []
+                ),
             )
         except Exception as err:
             pytest.fail(f"gazelle_sim did not start: {err}", pytrace=False)

@@ -6,6 +6,7 @@ and the core never imports it.
 
 from ._browser import open_viewer_page, screenshot
 from ._origin import OriginPolicy, allowed_origins
+from ._replay import replay_html
 from ._snapshot import record_video, run_record, run_snapshot, video_format
 from ._viewer import DEFAULT_HOST, DEFAULT_PORT, POSE_RATE_HZ, Viewer
 
@@ -18,6 +19,7 @@ __all__ = [
     "allowed_origins",
     "open_viewer_page",
     "record_video",
+    "replay_html",
     "run_record",
     "run_snapshot",
     "screenshot",

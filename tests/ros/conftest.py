@@ -212,6 +212,27 @@ class RosClient:
             pytest.fail(f"service {name} did not answer within {timeout} s")
         return future.result()
 
+    def send_goal(self, client: Any, goal: Any, timeout: float = 60.0, said: Callable[[], str] = lambda: "") -> Any:
+        """Send an action goal and wait for its result: (accepted, the GetResult response or None).
+
+        Sent from the executor's thread: from another one, a reply that came back before rclpy filed the
+        request was dropped and the goal never answered (ros2/rclpy#1123). ``said``: what to show when no
+        result comes (a server's output)."""
+        done = threading.Event()
+        box: dict[str, Any] = {}
+
+        def on_goal(f: Any) -> None:
+            handle = f.result()
+            box["accepted"] = handle.accepted
+            if not handle.accepted:
+                done.set()
+                return
+            handle.get_result_async().add_done_callback(lambda r: (box.__setitem__("result", r.result()), done.set()))
+
+        self.executor.create_task(lambda: client.send_goal_async(goal).add_done_callback(on_goal))
+        assert done.wait(timeout), f"no result within {timeout} s; {said()}"
+        return box["accepted"], box.get("result")
+
     def entity_state(self, name: str, reference_frame: str = "") -> Any:
         from gazebo_msgs.srv import GetEntityState
 

@@ -82,23 +82,11 @@ class Panda:
 
     def action(self, client: ActionClient, goal: Any, timeout: float = 60.0) -> Any:
         assert client.wait_for_server(timeout_sec=30), "move_group's action server is not up"
-        done = threading.Event()
-        box: dict[str, Any] = {}
-
-        def on_goal(f: Any) -> None:
-            handle = f.result()
-            box["accepted"] = handle.accepted
-            if not handle.accepted:
-                done.set()
-                return
-            handle.get_result_async().add_done_callback(lambda r: (box.__setitem__("result", r.result()), done.set()))
-
-        # sent from the executor's thread: from this one, a reply that came back before rclpy filed the
-        # request was dropped and the goal never answered (ros2/rclpy#1123)
-        self.ros.executor.create_task(lambda: client.send_goal_async(goal).add_done_callback(on_goal))
-        assert done.wait(timeout), f"no result within {timeout} s; move_group said:\n{self.move_group.output}"
-        assert box["accepted"], "goal rejected"
-        return box["result"].result
+        accepted, result = self.ros.send_goal(
+            client, goal, timeout, lambda: f"move_group said:\n{self.move_group.output}"
+        )
+        assert accepted, "goal rejected"
+        return result.result
 
     def cancel_midway(self, far: dict[str, float], joint: str, past: float) -> tuple[Any, float, float]:
         """Send a slow joint goal toward ``far``, cancel it once ``joint`` has passed ``past``; returns the

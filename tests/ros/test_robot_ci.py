@@ -16,6 +16,9 @@ from pathlib import Path
 
 import pytest
 from _paths import REAL, REPO
+from _pixels import open_replay, share_near
+
+from gazelle.viewer._browser import find_chromium
 
 EXAMPLE = REPO / "examples" / "robot_tests"
 TB3 = REAL / "turtlebot3" / "turtlebot3_gazebo"
@@ -126,8 +129,17 @@ def test_a_failing_test_keeps_its_bag_and_log_and_bad_input_is_one_line_each(tmp
     assert "the robot is on the ground" in text
     assert "seed 42 (rerun with --gazelle-seed 42)" in text
     folder = tmp_path / "artifacts" / "test_user.py_test_the_robot_should_fly"
-    assert f"artifacts (bag, server log): {folder}" in text
+    assert f"artifacts (bag, replay.html, server log): {folder}" in text
     assert "gazelle: ready" in (folder / "server.log").read_text()
+    # the replay: one file, opened from disk, shows the robot where the run left it and the topic it named
+    replay = folder / "replay.html"
+    assert replay.is_file() and replay.stat().st_size < 20_000_000
+    if find_chromium() is not None:
+        with open_replay(replay) as page:
+            page.seek(page.frames() - 1)
+            assert share_near(page.canvas(), page.to_screen(0.0, 0.0), page.color_of("simple_robot")) > 0.9
+            topics = page.page.locator("#topics").inner_text()
+            assert "/odom" in topics and "pose.position" in topics, topics
     bags = list((folder / "bag").glob("*.mcap"))
     assert bags and (folder / "bag" / "metadata.yaml").is_file(), list((folder / "bag").iterdir())
     from mcap.reader import make_reader

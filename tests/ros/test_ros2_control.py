@@ -170,20 +170,8 @@ def test_r6bot_follows_a_trajectory_holds_and_aborts_on_path_tolerance(sim_facto
         return g
 
     def run(g: FollowJointTrajectory.Goal, timeout: float = 30.0):
-        done = threading.Event()
-        box: dict = {}
-
-        def on_goal(f) -> None:
-            handle = f.result()
-            box["accepted"] = handle.accepted
-            if not handle.accepted:
-                done.set()
-                return
-            handle.get_result_async().add_done_callback(lambda r: (box.__setitem__("result", r.result()), done.set()))
-
-        client.send_goal_async(g).add_done_callback(on_goal)
-        assert done.wait(timeout), "no result"
-        return box
+        accepted, result = ros_client.send_goal(client, g, timeout)
+        return {"accepted": accepted, "result": result}
 
     final = [0.2, -0.2, 0.3, 0.1, 0.2, -0.3]
     box = run(goal([(1.0, [0.3, -0.4, 0.5, 0.2, -0.3, 0.4]), (2.0, [0.6, -0.8, 1.0, 0.4, -0.6, 0.8]), (3.0, final)]))
@@ -277,17 +265,9 @@ def test_a_namespaced_panda_closes_its_gripper_through_the_gripper_action(sim_fa
     assert client.wait_for_server(timeout_sec=15)
     goal = GripperCommand.Goal()
     goal.command.position = 0.03
-    done = threading.Event()
-    box: dict = {}
-
-    def on_goal(f) -> None:
-        handle = f.result()
-        assert handle.accepted
-        handle.get_result_async().add_done_callback(lambda r: (box.__setitem__("result", r.result()), done.set()))
-
-    client.send_goal_async(goal).add_done_callback(on_goal)
-    assert done.wait(30), "no gripper result"
-    result = box["result"].result
+    accepted, response = ros_client.send_goal(client, goal, 30.0)
+    assert accepted
+    result = response.result
     assert result.reached_goal and not result.stalled
     assert result.position == pytest.approx(0.03, abs=0.01)
 

@@ -64,21 +64,9 @@ class Yumi:
 
     def action(self, client: ActionClient, goal: Any, timeout: float = 60.0) -> Any:
         assert client.wait_for_server(timeout_sec=30), "move_group's action server is not up"
-        done = threading.Event()
-        box: dict[str, Any] = {}
-
-        def on_goal(f: Any) -> None:
-            handle = f.result()
-            box["accepted"] = handle.accepted
-            if not handle.accepted:
-                done.set()
-                return
-            handle.get_result_async().add_done_callback(lambda r: (box.__setitem__("result", r.result()), done.set()))
-
-        self.ros.executor.create_task(lambda: client.send_goal_async(goal).add_done_callback(on_goal))
-        assert done.wait(timeout), f"no result within {timeout} s; {self.said()}"
-        assert box["accepted"], "goal rejected"
-        return box["result"].result
+        accepted, result = self.ros.send_goal(client, goal, timeout, self.said)
+        assert accepted, "goal rejected"
+        return result.result
 
 
 def _constraints(values: dict[str, float]) -> Constraints:

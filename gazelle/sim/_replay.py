@@ -1,0 +1,198 @@
+"""What a replay shows: every body's collision shapes once, where each body was (sampled in sim time), and
+the values of some topics of the simulation.
+
+:class:`ReplayRecorder` samples the world on the simulation thread (a step listener, :data:`RATE_HZ` frames
+per sim second, every body's pose in one array read: ~10 us a frame, so a run at 50 times real time pays
+1.5 % for it). It is bounded: past :data:`MAX_SAMPLES` link poses it keeps every other frame and samples
+half as often, and past :data:`MAX_TOPIC_SAMPLES` messages a topic does the same, so an hour-long run costs
+what a short one does. :meth:`ReplayRecorder.data` is plain JSON-ready data that
+:func:`gazelle.viewer.replay_html` draws.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import enum
+import json
+import math
+import os
+import threading
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..systems import UpdateInfo
+from ._scene import SceneShape, link_shapes
+
+RATE_HZ = 30.0
+"""Frames per sim second, at first."""
+MAX_SAMPLES = 400_000
+"""Link poses kept (7 numbers each) before the recording thins itself: ~20 MB of JSON at most."""
+MAX_TOPIC_SAMPLES = 2_000
+"""Messages kept per topic before that topic thins itself."""
+MAX_FIELDS = 24
+"""Fields shown of a message."""
+
+
+def _shape(s: SceneShape) -> dict[str, Any]:
+    p = s.pose
+    pose = [round(float(v), 4) for v in p.position] + [round(float(v), 5) for v in p.orientation]
+    return {"kind": s.kind, "size": [round(v, 5) for v in s.dimensions], "pose": pose}
+
+
+def flatten(msg: Any, prefix: str = "", out: dict[str, Any] | None = None, depth: int = 0) -> dict[str, Any]:
+    """A message's fields as ``{"a.b": value}``: numbers rounded, long arrays as their size and range."""
+    out = {} if out is None else out
+    if len(out) >= MAX_FIELDS:
+        return out
+    if dataclasses.is_dataclass(msg) and not isinstance(msg, type):
+        for f in dataclasses.fields(msg):
+            flatten(getattr(msg, f.name), f"{prefix}{f.name}.", out, depth + 1)
+        return out
+    key = prefix[:-1] or "value"
+    if isinstance(msg, enum.Enum):
+        out[key] = msg.name
+    elif isinstance(msg, bool | str):
+        out[key] = msg if not isinstance(msg, str) else msg[:80]
+    elif isinstance(msg, int | float | np.floating | np.integer):
+        v = float(msg)
+        out[key] = round(v, 4) if math.isfinite(v) else str(v)
+    elif isinstance(msg, list | tuple | np.ndarray) and depth < 4 and len(msg):
+        if dataclasses.is_dataclass(msg[0]):
+            flatten(msg[0], f"{prefix}0.", out, depth + 1)
+            out[f"{prefix}count"] = len(msg)
+            return out
+        try:
+            values = np.asarray(msg, dtype=float).ravel()
+        except (TypeError, ValueError):
+            return out  # not numbers
+        if len(values) <= 6:
+            out[key] = [round(float(v), 4) if math.isfinite(v) else str(v) for v in values.tolist()]
+        else:
+            finite = values[np.isfinite(values)]
+            span = f", {finite.min():.3g} .. {finite.max():.3g}" if len(finite) else ""
+            out[key] = f"{len(values)} values{span}"
+    return out
+
+
+class ReplayRecorder:
+    """Samples the world of ``sim`` from now on, and the messages of ``topics`` its systems publish."""
+
+    def __init__(self, sim: Any, rate_hz: float = RATE_HZ, topics: tuple[str, ...] = ()) -> None:
+        self._sim = sim
+        self._lock = threading.Lock()
+        self._shapes: dict[str, list[dict[str, Any]]] = {}
+        self._models: dict[str, int] = {}
+        self._index: tuple[int, tuple[str, ...], np.ndarray] | None = None
+        self._frames: list[tuple[float, tuple[str, ...], np.ndarray]] = []
+        self._samples = 0
+        self._period = 1.0 / rate_hz
+        self._next = -1.0
+        self._topics = {t: [] for t in topics}
+        self._topic_period = {t: self._period for t in topics}  # no more samples than frames
+        self._sinks: list[tuple[Any, Any]] = []
+        self._time = 0.0
+        # at the frame rate: the runtime steps in blocks up to the next frame (a listener of every step
+        # would have it step one at a time, 3 times slower); _next thins further when the recording does
+        sim.add_step_listener(self._on_step, rate_hz)
+        if topics:
+            sim.call(self._attach)
+
+    def close(self) -> None:
+        """Stop sampling (what was recorded stays)."""
+        self._sim.remove_step_listener(self._on_step)
+
+        def detach() -> None:
+            for endpoint, sink in self._sinks:
+                endpoint.remove_sink(sink)
+            self._sinks = []
+
+        self._sim.call(detach)
+
+    # ------------------------------------------------------------------ on the simulation thread
+    def _attach(self) -> None:
+        """Listen to the publishers of the topics asked for (those there are now, and at each new index)."""
+        heard = {id(e) for e, _ in self._sinks}
+        for endpoint in self._sim.bus.endpoints():
+            if endpoint.topic in self._topics and endpoint.is_publisher and id(endpoint) not in heard:
+                sink = self._sink(endpoint.topic)
+                endpoint.add_sink(sink)
+                self._sinks.append((endpoint, sink))
+
+    def _sink(self, topic: str) -> Any:
+        samples = self._topics[topic]
+
+        def on(msg: Any) -> None:
+            t = self._time
+            if samples and t - samples[-1][0] < self._topic_period[topic]:
+                return
+            fields = flatten(msg)
+            with self._lock:
+                samples.append((round(t, 4), fields))
+                if len(samples) > MAX_TOPIC_SAMPLES:
+                    samples[:] = samples[::2]
+                    self._topic_period[topic] *= 2.0
+
+        return on
+
+    def _reindex(self) -> tuple[int, tuple[str, ...], np.ndarray]:
+        world = self._sim.world
+        names, ids = [], []
+        for entity_name, entity in list(world.entities.items()):
+            shapes = link_shapes(entity.model)
+            for link, link_shapes_ in shapes.items():
+                try:
+                    body = world.body_id(entity_name, link)
+                except Exception:  # a link without a body of its own
+                    continue
+                name = f"{entity_name}::{link}"
+                names.append(name)
+                ids.append(body)
+                if name not in self._shapes or self._models.get(name) != id(entity.model):
+                    with self._lock:
+                        self._shapes[name] = [_shape(s) for s in link_shapes_]
+                        self._models[name] = id(entity.model)
+        if self._topics:
+            self._attach()
+        return world.generation, tuple(names), np.asarray(ids, dtype=int)
+
+    def _on_step(self, info: UpdateInfo) -> None:
+        t = self._time = info.sim_time_sec
+        if t < self._next - info.dt_sec:  # the listener comes at step boundaries: a step early is on time
+            return
+        self._next = t + self._period
+        world = self._sim.world
+        if self._index is None or self._index[0] != world.generation:
+            self._index = self._reindex()
+        _, names, ids = self._index
+        poses = world.body_poses(ids) if len(ids) else np.zeros((0, 7))
+        with self._lock:
+            self._frames.append((round(t, 4), names, poses))
+            self._samples += len(names)
+            if self._samples > MAX_SAMPLES:  # thin out: every other frame, and half the rate from now on
+                self._frames = self._frames[::2]
+                self._samples = sum(len(n) for _, n, _ in self._frames)
+                self._period *= 2.0
+
+    # ------------------------------------------------------------------ any thread
+    def data(self) -> dict[str, Any]:
+        """``{"shapes": {link: [shape]}, "frames": [[t, {link: [x, y, z, qw, qx, qy, qz]}]], "topics":
+        {topic: [[t, {field: value}]]}}``, positions rounded to 0.1 mm."""
+        with self._lock:
+            frames = list(self._frames)
+            shapes = dict(self._shapes)
+            topics = {t: [[s[0], dict(s[1])] for s in samples] for t, samples in self._topics.items()}
+        out = []
+        for t, names, poses in frames:
+            rounded = np.concatenate((np.round(poses[:, :3], 4), np.round(poses[:, 3:], 5)), axis=1).tolist()
+            out.append([t, dict(zip(names, rounded))])
+        return {"shapes": shapes, "frames": out, "topics": topics}
+
+    def write(self, path: str | os.PathLike[str], text: str | None = None) -> Path:
+        """Write ``text`` (default: :meth:`data` as JSON) to ``path``, whole or not at all."""
+        out = Path(path)
+        tmp = out.with_name(f".{out.name}.{os.getpid()}.tmp")
+        tmp.write_text(text if text is not None else json.dumps(self.data(), separators=(",", ":")))
+        os.replace(tmp, out)
+        return out

@@ -1,0 +1,102 @@
+"""The replay page (issue 30): a run recorded in sim time, drawn from above in one self-contained HTML file
+that a browser opens from disk; checked by its pixels in headless chromium.
+
+The seed robot drives an arc beside a box for 4 s of sim time; the page, scrubbed to the last frame, shows
+the robot (the first moving body: red) where the simulation ended it, and not where it started; at the
+first frame, the other way round.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+from _paths import BOX, SEED_XACRO
+from _pixels import open_replay, share_near
+
+from gazelle.description import Pose, load, load_string
+from gazelle.sim import ReplayRecorder, Simulation
+from gazelle.systems import MsgType, Twist
+from gazelle.viewer import replay_html
+from gazelle.viewer._browser import find_chromium
+from gazelle.worlds import default_world
+
+RED = np.array([0xE6, 0x19, 0x4B])
+"""The first moving body's colour on the page."""
+
+
+@pytest.fixture(scope="module")
+def run() -> tuple[dict, tuple[float, float], tuple[float, float]]:
+    """The recording of a 4 s drive, and the robot's (x, y) at its start and end by ground truth."""
+    sim = Simulation(default_world(), rtf=0)
+    sim.spawn(load(SEED_XACRO).value, name="robot", pose=Pose((0.0, 0.0, 0.05)))
+    sim.spawn(load_string(BOX).value, name="crate", pose=Pose((0.0, 1.2, 0.1)))
+    recorder = ReplayRecorder(sim)
+    sim.step(1)
+    start = sim.world.entity_state("robot").pose.position[:2]
+    assert sim.bus.inject("/cmd_vel", MsgType.TWIST, Twist((0.5, 0.0, 0.0), (0.0, 0.0, 0.4))) == 1
+    sim.step(4000)
+    end = sim.world.entity_state("robot").pose.position[:2]
+    recorder.close()
+    return recorder.data(), (float(start[0]), float(start[1])), (float(end[0]), float(end[1]))
+
+
+def test_the_recording_has_each_bodys_shapes_once_and_a_frame_every_thirtieth_of_a_second(run) -> None:
+    data, start, end = run
+    assert {"robot::base_link", "crate::link"} <= set(data["shapes"])
+    times = [t for t, _ in data["frames"]]
+    assert len(times) == pytest.approx(4.0 * 30, abs=3) and times == sorted(times)
+    assert np.diff(times).max() == pytest.approx(1 / 30, abs=2e-3)
+    assert np.hypot(end[0] - start[0], end[1] - start[1]) > 1.0  # it did drive
+    last = data["frames"][-1][1]["robot::base_link"]
+    assert last[:2] == pytest.approx(end, abs=0.02)  # the last frame is where the simulation ended it
+
+
+def test_a_long_recording_thins_itself_instead_of_growing(monkeypatch) -> None:
+    from gazelle.sim import _replay
+
+    monkeypatch.setattr(_replay, "MAX_SAMPLES", 300)
+    sim = Simulation(default_world(), rtf=0)
+    sim.spawn(load_string(BOX).value, name="crate", pose=Pose((0.0, 0.0, 1.0)))
+    recorder = ReplayRecorder(sim)
+    sim.step(20_000)  # 20 s: 600 frames at 30 Hz
+    frames = recorder.data()["frames"]
+    assert len(frames) <= 300 and frames[-1][0] > 19.0  # the whole run, fewer frames
+
+
+def test_the_page_is_one_file_with_its_data_and_survives_hostile_names(tmp_path: Path, run) -> None:
+    data, *_ = run
+    topics = {"/odom": [[0.5, {"x": 0.1, "note": "</script><script>alert(1)</script>"}]]}
+    page = replay_html(data, topics, title="<b>a test</b>")
+    assert "<script src" not in page and "http" not in page.split("<script")[1]  # nothing fetched
+    assert "</script><script>alert" not in page  # data cannot end its script element
+    payload = page.split('type="application/json">')[1].split("</script>")[0]
+    assert json.loads(payload)["topics"]["/odom"][0][1]["note"].startswith("</script>")
+    assert len(page.encode()) < 2_000_000
+
+
+@pytest.mark.skipif(find_chromium() is None, reason="no system chromium (scripts/setup.sh installs it)")
+def test_chromium_opens_the_replay_from_disk_and_scrubbing_moves_the_robot(tmp_path: Path, run) -> None:
+    pytest.importorskip("playwright")
+    data, start, end = run
+    path = tmp_path / "replay.html"
+    path.write_text(replay_html(data, {"/odom": [[0.0, {"x": 0.0}], [2.0, {"x": 0.9}]]}, title="drive"))
+    with open_replay(path) as replay:
+        assert replay.frames() > 100
+        assert replay.page.evaluate("() => window.gazelleReplay.moving") == ["robot"]
+        red = replay.color_of("robot")
+        assert list(red) == list(RED)  # the first body met
+        replay.seek(replay.frames() - 1)  # scrubbed to the end
+        at_end = replay.canvas()
+        assert share_near(at_end, replay.to_screen(*end), red) > 0.9, "the robot is not drawn where it ended"
+        assert share_near(at_end, replay.to_screen(*start), red) < 0.5, "the robot is still drawn where it started"
+        assert "0.9" in replay.page.locator("#topics").inner_text()  # the topic's value at the cursor
+        slider = replay.page.locator("#cursor").bounding_box()
+        assert slider is not None
+        replay.page.mouse.click(slider["x"] + 3, slider["y"] + slider["height"] / 2)  # the slider's start, clicked
+        at_start = replay.canvas()
+        assert share_near(at_start, replay.to_screen(*start), red) > 0.9
+        assert share_near(at_start, replay.to_screen(*end), red) < 0.5
+        assert "nothing yet" not in replay.page.locator("#topics").inner_text()
