@@ -33,6 +33,8 @@ MAX_TOPIC_SAMPLES = 2_000
 """Messages kept per topic before that topic thins itself."""
 MAX_FIELDS = 24
 """Fields shown of a message."""
+FLOAT32_FIELDS = ("ranges", "intensities")
+"""Byte fields of the bus's messages that hold float32 arrays (LaserScan's)."""
 
 
 def _shape(s: SceneShape) -> dict[str, Any]:
@@ -51,7 +53,15 @@ def flatten(msg: Any, prefix: str = "", out: dict[str, Any] | None = None, depth
             flatten(getattr(msg, f.name), f"{prefix}{f.name}.", out, depth + 1)
         return out
     key = prefix[:-1] or "value"
-    if isinstance(msg, enum.Enum):
+    if isinstance(msg, bytes | bytearray):
+        if key.rsplit(".", 1)[-1] in FLOAT32_FIELDS and len(msg) % 4 == 0 and msg:
+            values = np.frombuffer(msg, dtype=np.float32)  # a scan's ranges: their count and span
+            finite = values[np.isfinite(values)]
+            span = f", {finite.min():.3g} .. {finite.max():.3g}" if len(finite) else ", none finite"
+            out[key] = f"{len(values)} values{span}"
+        else:
+            out[key] = f"{len(msg)} bytes"
+    elif isinstance(msg, enum.Enum):
         out[key] = msg.name
     elif isinstance(msg, bool | str):
         out[key] = msg if not isinstance(msg, str) else msg[:80]
