@@ -29,7 +29,7 @@ pytestmark = pytest.mark.slow
 
 def inner_pytest(args: list[str], tmp_path: Path, timeout: float = 300) -> tuple[subprocess.CompletedProcess, str]:
     mark = uuid.uuid4().hex
-    env = {**os.environ, "TURTLEBOT3_GAZEBO": str(TB3), LEAK_MARK: mark}
+    env = {**os.environ, "TURTLEBOT3_GAZEBO": str(TB3), "MOVEIT_RESOURCES": str(REAL / "moveit_panda"), LEAK_MARK: mark}
     env.pop("PYTEST_XDIST_WORKER", None)
     env.pop("PYTEST_ADDOPTS", None)
     out = subprocess.run(
@@ -80,10 +80,11 @@ def survivors(mark: str) -> list[str]:
 def test_the_example_packages_robot_tests_pass_with_plain_pytest(tmp_path: Path) -> None:
     """The seed robot and TurtleBot3 (its real files, in its own world) drive to their goals under a
     P-controller node of the package's own, within 0.2 m in 60 s of sim time; TurtleBot3's lidar never
-    sees anything nearer than 0.15 m. Passing tests keep no artifacts."""
+    sees anything nearer than 0.15 m; MoveIt's Panda moves its flange to a pose through a MoveGroup goal
+    and ends where the plan ended. Passing tests keep no artifacts."""
     out, mark = inner_pytest([str(EXAMPLE / "test")], tmp_path)
     assert out.returncode == 0, out.stdout[-4000:] + out.stderr[-2000:]
-    assert "2 passed" in out.stdout, out.stdout[-2000:]
+    assert "3 passed" in out.stdout, out.stdout[-2000:]
     assert not (tmp_path / "artifacts").exists() or not any((tmp_path / "artifacts").iterdir())
     assert survivors(mark) == []
 
