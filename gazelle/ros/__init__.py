@@ -9,8 +9,9 @@ its dependencies (rosbag2's and Foxglove's ``ros2msg`` schemas).
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
+
+from .._lazy import lazy_attributes
 
 if TYPE_CHECKING:
     from ._bridge import RosBridge
@@ -38,14 +39,7 @@ _LAZY = {
 """Imported when first used: the bridge brings MuJoCo and the runtime (1.1 s), which a client such as
 ``gazelle arm``, ``gazelle spawn`` or ``gazelle spawner`` never needs."""
 
-
-def __getattr__(name: str) -> Any:
-    if name not in _LAZY:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    module, attr = _LAZY[name]
-    value = getattr(importlib.import_module(module, __name__), attr)
-    globals()[name] = value
-    return value
+__getattr__ = lazy_attributes(__name__, _LAZY)
 
 
 def move_group_main(argv: list[str]) -> int:

@@ -9,8 +9,9 @@ never import MuJoCo, the runtime or rclpy.
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
+
+from .._lazy import lazy_attributes
 
 if TYPE_CHECKING:
     from ._actuation import PidGains as PidGains
@@ -135,14 +136,7 @@ _LAZY = {
 """Imported when first used: the actuation and the systems bring MuJoCo (through gazelle.physics), which a
 client such as ``gazelle spawn`` never needs."""
 
-
-def __getattr__(name: str) -> Any:
-    if name not in _LAZY:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    module, attr = _LAZY[name]
-    value = getattr(importlib.import_module(module, __name__), attr)
-    globals()[name] = value
-    return value
+__getattr__ = lazy_attributes(__name__, _LAZY)
 
 
 __all__ = [

@@ -6,8 +6,9 @@ and the core never imports it.
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
+
+from .._lazy import lazy_attributes
 
 if TYPE_CHECKING:
     from ._browser import open_viewer_page, screenshot
@@ -17,30 +18,24 @@ if TYPE_CHECKING:
     from ._viewer import DEFAULT_HOST, DEFAULT_PORT, POSE_RATE_HZ, Viewer
 
 _LAZY = {
-    "open_viewer_page": "._browser",
-    "screenshot": "._browser",
-    "OriginPolicy": "._origin",
-    "allowed_origins": "._origin",
-    "replay_html": "._replay",
-    "record_video": "._snapshot",
-    "run_record": "._snapshot",
-    "run_snapshot": "._snapshot",
-    "video_format": "._snapshot",
-    "DEFAULT_HOST": "._viewer",
-    "DEFAULT_PORT": "._viewer",
-    "POSE_RATE_HZ": "._viewer",
-    "Viewer": "._viewer",
+    "open_viewer_page": ("._browser", "open_viewer_page"),
+    "screenshot": ("._browser", "screenshot"),
+    "OriginPolicy": ("._origin", "OriginPolicy"),
+    "allowed_origins": ("._origin", "allowed_origins"),
+    "replay_html": ("._replay", "replay_html"),
+    "record_video": ("._snapshot", "record_video"),
+    "run_record": ("._snapshot", "run_record"),
+    "run_snapshot": ("._snapshot", "run_snapshot"),
+    "video_format": ("._snapshot", "video_format"),
+    "DEFAULT_HOST": ("._viewer", "DEFAULT_HOST"),
+    "DEFAULT_PORT": ("._viewer", "DEFAULT_PORT"),
+    "POSE_RATE_HZ": ("._viewer", "POSE_RATE_HZ"),
+    "Viewer": ("._viewer", "Viewer"),
 }
 """Imported when first used: viser and the renderer cost ~0.3 s, which ``gazelle sim --no-viewer`` (checking
 its --viewer-allow-origin values) and a replay page never need."""
 
-
-def __getattr__(name: str) -> Any:
-    if name not in _LAZY:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(_LAZY[name], __name__), name)
-    globals()[name] = value
-    return value
+__getattr__ = lazy_attributes(__name__, _LAZY)
 
 
 __all__ = [

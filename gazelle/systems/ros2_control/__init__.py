@@ -4,8 +4,9 @@ layer serves the manager's services and the controllers' actions)."""
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
+
+from ..._lazy import lazy_attributes
 
 if TYPE_CHECKING:
     from ._controller import ACTIVE as ACTIVE
@@ -62,14 +63,7 @@ _LAZY = {
 """Imported when first used: ``gazelle spawner`` reads parameter files (``load_params``) without the
 hardware, which brings MuJoCo."""
 
-
-def __getattr__(name: str) -> Any:
-    if name not in _LAZY:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    module, attr = _LAZY[name]
-    value = getattr(importlib.import_module(module, __name__), attr)
-    globals()[name] = value
-    return value
+__getattr__ = lazy_attributes(__name__, _LAZY)
 
 
 __all__ = [
