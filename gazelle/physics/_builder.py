@@ -161,18 +161,15 @@ def _solref_from_surface(
     the rest of gazelle's physics checks were measured with.
     """
     s = col.surface
-    if s.kp is None:
-        if not moving:
-            return None
-        timeconst = 2.0 * math.sqrt(max(mass_hint, MIN_MASS) / DEFAULT_KP)
-        if timeconst >= MUJOCO_DEFAULT_SOLREF[0]:
-            return None
-        return [max(2.0 * timestep, timeconst), 1.0], [0.9, 0.95, 0.001, 0.5, 2.0]
-    if s.kp <= 0:
+    if s.kp is None and not moving:
         return None
-    m = max(mass_hint, MIN_MASS)
-    timeconst = max(2.0 * timestep, 2.0 * math.sqrt(m / s.kp))
-    return [timeconst, 1.0], [0.9, 0.95, 0.001, 0.5, 2.0]
+    kp = DEFAULT_KP if s.kp is None else s.kp
+    if kp <= 0:
+        return None
+    timeconst = 2.0 * math.sqrt(max(mass_hint, MIN_MASS) / kp)
+    if s.kp is None and timeconst >= MUJOCO_DEFAULT_SOLREF[0]:
+        return None  # MuJoCo's default is the stiffer
+    return [max(2.0 * timestep, timeconst), 1.0], [0.9, 0.95, 0.001, 0.5, 2.0]
 
 
 def _primitive(g: object) -> dict | None:

@@ -22,6 +22,7 @@ from typing import Any
 
 import numpy as np
 
+from ..physics import WorldError
 from ..systems import UpdateInfo
 from ._scene import SceneShape, link_shapes
 
@@ -154,7 +155,7 @@ class ReplayRecorder:
             for link, link_shapes_ in shapes.items():
                 try:
                     body = world.body_id(entity_name, link)
-                except Exception:  # a link without a body of its own
+                except WorldError:  # a link without a body of its own
                     continue
                 name = f"{entity_name}::{link}"
                 names.append(name)

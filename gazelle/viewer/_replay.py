@@ -154,7 +154,8 @@ function draw(i) {
     let k = -1;
     while (k + 1 < samples.length && samples[k + 1][0] <= t) k++;
     const text = k < 0 ? "(nothing yet)" : Object.entries(samples[k][1]).map(([f, v]) => `${f}: ${v}`).join("\\n");
-    shown.push(`<h2>${name}</h2><pre>${text.replace(/&/g, "&amp;").replace(/</g, "&lt;")}</pre>`);
+    const esc = (x) => x.replace(/&/g, "&amp;").replace(/</g, "&lt;");
+    shown.push(`<h2>${esc(name)}</h2><pre>${esc(text)}</pre>`);
   }
   if (shown.length) document.getElementById("topics").innerHTML = shown.join("");
 }
