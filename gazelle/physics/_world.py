@@ -7,8 +7,10 @@ owns one and serialises every access through its command queue.
 from __future__ import annotations
 
 import enum
+import hashlib
 import logging
 import math
+import pickle
 import re
 from collections.abc import Callable, Container, Sequence
 from dataclasses import dataclass, field
@@ -557,6 +559,74 @@ class PhysicsWorld:
             n_g, n_b = self.model.actuator_gainprm.shape[1], self.model.actuator_biasprm.shape[1]
             self.model.actuator_gainprm[aid] = gain[:n_g]
             self.model.actuator_biasprm[aid] = bias[:n_b]
+
+    def state_digest(self) -> str:
+        """SHA-256 of the whole physics state (time, positions, velocities, actuator states, controls,
+        warm start: MuJoCo's ``mjSTATE_INTEGRATION``): equal digests, bit-identical worlds."""
+        spec = mujoco.mjtState.mjSTATE_INTEGRATION
+        state = np.empty(mujoco.mj_stateSize(self.model, spec))
+        mujoco.mj_getState(self.model, self.data, state, spec)
+        return hashlib.sha256(state.tobytes()).hexdigest()
+
+    def checkpoint_extras(self) -> dict[str, object]:
+        """Everything of the world a checkpoint keeps: MuJoCo's whole data (state, warm start, contacts,
+        every derived quantity) and model (parameters changed at run time), and the world's own run-time
+        state (see ``gazelle.sim`` checkpoints). Picklable."""
+        return {
+            "data": pickle.dumps(self.data, protocol=pickle.HIGHEST_PROTOCOL),
+            "overlap_steps": self._overlap_steps,
+            "deep": self._deep,
+            "kinematics_stale": self._kinematics_stale,
+            "actuator_gains": {k: (g.copy(), b.copy()) for k, (g, b) in self._actuator_gains.items()},
+            "model": self.model,
+        }
+
+    def restore_checkpoint_extras(self, extras: dict[str, Any]) -> None:
+        """Take back what :meth:`checkpoint_extras` gave, into a world rebuilt with the same entities:
+        the model's parameters as they were at the checkpoint (gains changed at run time, static bodies
+        moved), in the model and in its description (a later recompile keeps them)."""
+        saved: mujoco.MjModel = extras["model"]  # type: ignore[assignment]
+        for name in dir(saved):
+            if name.startswith("_"):
+                continue
+            value = getattr(saved, name, None)
+            if isinstance(value, np.ndarray):
+                live = getattr(self.model, name)
+                if isinstance(live, np.ndarray) and live.shape == value.shape and live.flags.writeable:
+                    live[...] = value
+        for struct in ("opt", "vis", "stat"):
+            src, dst = getattr(saved, struct), getattr(self.model, struct)
+            for field_name in dir(src):
+                if field_name.startswith("_"):
+                    continue
+                try:
+                    setattr(dst, field_name, getattr(src, field_name))
+                except (AttributeError, TypeError):
+                    pass  # read-only or a nested struct
+        data = pickle.loads(extras["data"])  # type: ignore[arg-type]
+        mujoco.mj_copyData(self.data, self.model, data)
+        self._overlap_steps = int(extras["overlap_steps"])  # type: ignore[call-overload]
+        self._deep = bool(extras["deep"])
+        self._kinematics_stale = bool(extras["kinematics_stale"])
+        self._actuator_gains = dict(extras["actuator_gains"])  # type: ignore[call-overload]
+        n_g, n_b = self.model.actuator_gainprm.shape[1], self.model.actuator_biasprm.shape[1]
+        for aid in range(self.model.nu):
+            act = self.spec.actuator(mujoco.mj_id2name(self.model, mujoco.mjtObj.mjOBJ_ACTUATOR, aid))
+            if act is not None:
+                gain, bias = np.array(act.gainprm), np.array(act.biasprm)
+                gain[:n_g], bias[:n_b] = self.model.actuator_gainprm[aid], self.model.actuator_biasprm[aid]
+                act.gainprm, act.biasprm = gain, bias
+
+    def same_structure(self, extras: dict[str, Any]) -> bool:
+        """Whether the model in ``extras`` (:meth:`checkpoint_extras`) has this model's sizes and names:
+        the same world, its parameters aside (so its data can be copied in)."""
+        other = extras.get("model")
+        if not isinstance(other, mujoco.MjModel):
+            return False
+        sizes = [n for n in dir(other) if n.startswith("n") and isinstance(getattr(other, n, None), int)]
+        return all(getattr(other, n) == getattr(self.model, n) for n in sizes) and bytes(other.names) == bytes(
+            self.model.names
+        )
 
     def joint(self, entity: str, joint: str) -> JointHandle:
         """A handle on a 1-dof joint of an entity (by its description name; MuJoCo joint ``joint``).

@@ -16,11 +16,12 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from ._domain import DomainReservation, reserve_domain
+from ._domain import DomainReservation, environ_applied, reserve_domain
 
 if TYPE_CHECKING:
     from ._ros_node import MessageLog, RosTestNode, TestTimeout
     from ._sim import ChildProcess, Sim, SimError
+    from ._world import InProcessWorld, WorldTimeout
 
 _LAZY = {
     "MessageLog": "._ros_node",
@@ -29,6 +30,8 @@ _LAZY = {
     "ChildProcess": "._sim",
     "Sim": "._sim",
     "SimError": "._sim",
+    "InProcessWorld": "._world",
+    "WorldTimeout": "._world",
 }
 
 
@@ -44,10 +47,13 @@ def __getattr__(name: str) -> Any:
 __all__ = [
     "ChildProcess",
     "DomainReservation",
+    "InProcessWorld",
     "MessageLog",
     "RosTestNode",
     "Sim",
     "SimError",
     "TestTimeout",
+    "WorldTimeout",
+    "environ_applied",
     "reserve_domain",
 ]

@@ -278,12 +278,23 @@ class Sim:
         return self.ros.wait_for_sim_time(heard_target, timeout=wall_timeout)
 
     def run_until(
-        self, predicate: Callable[[], Any], timeout: float, what: str = "the condition", wall_timeout: float = 600.0
+        self,
+        predicate: Callable[[], Any],
+        timeout: float,
+        what: str = "the condition",
+        wall_timeout: float = 600.0,
+        step: float = STEP_CHUNK_SEC,
     ) -> Any:
         """Step the world until ``predicate()`` is truthy, at most ``timeout`` seconds of **sim** time
-        (checked every 50 ms of sim time); returns the predicate's value, or fails the test naming
-        ``what`` and the sim time waited."""
+        (checked every ``step`` seconds of sim time, 50 ms by default); returns the predicate's value, or
+        fails the test naming ``what`` and the sim time waited.
+
+        The world is paused between two chunks, and the nodes under test catch up meanwhile: a node
+        timing its commands on sim time acts at most one chunk late, so a smaller ``step`` (0.01) suits
+        a test of open-loop timing (the seed's square), at the cost of more service calls."""
         assert self.ros is not None
+        if not (step > 0 and math.isfinite(step)):
+            raise ValueError(f"run_until's step must be a finite time > 0, got {step!r}")
         start, deadline = self.ros.sim_time, time.monotonic() + wall_timeout
         while True:
             value = predicate()
@@ -293,7 +304,7 @@ class Sim:
                 raise TestTimeout(f"{what}: not within {timeout:g} s of sim time")
             if time.monotonic() > deadline:
                 raise SimError(f"{what}: {wall_timeout:g} s of wall time passed (the simulation is hung?)")
-            self.run_for(min(STEP_CHUNK_SEC, timeout - (self.ros.sim_time - start)))
+            self.run_for(min(step, timeout - (self.ros.sim_time - start)))
 
     def reset(self, wall_timeout: float = 30.0) -> None:
         """Back to the start: sim time 0, the world's own models at their initial state, every entity the

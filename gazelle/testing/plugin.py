@@ -8,6 +8,8 @@ Fixtures for a user's own robot tests (see docs/robot_tests.md):
 * ``ros``: the test's rclpy node on that domain (``gazelle_sim.ros``).
 * ``gazelle_seed``: the seed of this test's run (``--gazelle-seed``, default 0), given to the server.
 * ``gazelle_shared_sim``: one server for a whole module (``gazelle_sim_module``), reset before each test.
+* ``gazelle_world``: a simulation inside the test's process, no ROS: the test steps it, publishes on its
+  bus and reads its states (bit-identical from run to run).
 
 Configure a test with ``@pytest.mark.gazelle(world=..., record=[...], paused=True, rtf=None)``. A failing
 test keeps an MCAP bag (rosbag2 layout) of the topics it named plus /tf, /tf_static and /clock, a
@@ -228,6 +230,23 @@ def gazelle_shared_sim(gazelle_sim_module: Any) -> Iterator[Any]:
     sim.reset()
     with environ_applied({k: sim.env[k] for k in ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE")}):
         yield sim
+
+
+@pytest.fixture
+def gazelle_world(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[Any]:
+    """A simulation in the test's own process: no ROS, no DDS, stepped by the test (see
+    gazelle.testing.InProcessWorld); the marker's ``world`` and the seed apply as to ``gazelle_sim``."""
+    from ._world import InProcessWorld
+
+    options = _marker_options(request)
+    try:
+        world = InProcessWorld(options.get("world"), seed=gazelle_seed)
+    except Exception as err:  # a world that does not load: one line, as for gazelle_sim
+        pytest.fail(f"gazelle_world did not start: {err}", pytrace=False)
+    try:
+        yield world
+    finally:
+        world.close()
 
 
 @pytest.fixture

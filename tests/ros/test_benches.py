@@ -22,6 +22,7 @@ BENCHES = [
     (["bench_launch.py", "--smoke"], "best "),
     (["bench_sensors.py", "--smoke"], "bench took"),
     (["bench_robot_ci.py", "--smoke"], "bench took"),
+    (["bench_robot_ci_agreement.py", "--smoke"], "bench took"),
     (["bench_sweep.py", "--smoke", "--no-ray"], "bench took"),
     (["bench_viewer.py", "--seconds", "0.5", "--rounds", "1", "--scenario", "flat"], "bench took"),
 ]

@@ -61,7 +61,7 @@ def pose_goal(xyz, quat=(1.0, 0.0, 0.0, 0.0)):
 
 @pytest.mark.skipif(not MOVEIT_RESOURCES, reason="set MOVEIT_RESOURCES to a folder with MoveIt's Panda packages")
 @pytest.mark.gazelle(record=["/joint_states"])
-def test_the_panda_moves_its_flange_to_a_pose_through_move_group(gazelle_sim, ros):
+def test_the_panda_moves_its_flange_to_a_pose_through_move_group(gazelle_sim, ros, record_property):
     gazelle_sim.spawn(PANDA, "panda")
     spawner = gazelle_sim.run(
         [str(BIN / "ros2"), "run", "controller_manager", "spawner", "joint_state_broadcaster", "panda_arm_controller"]
@@ -100,4 +100,5 @@ def test_the_panda_moves_its_flange_to_a_pose_through_move_group(gazelle_sim, ro
     trajectory = box["result"].planned_trajectory.joint_trajectory
     reached = dict(zip(joints.last.name, joints.last.position))
     off = max(abs(reached[n] - q) for n, q in zip(trajectory.joint_names, trajectory.points[-1].positions))
+    record_property("joint_error_rad", round(off, 5))
     assert off < math.radians(0.5), f"{math.degrees(off):.2f} degrees from the plan's end"
