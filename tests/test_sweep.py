@@ -161,6 +161,8 @@ def test_the_example_sweep_runs_from_the_command_line_and_its_report_shows_plots
     rows = [json.loads(line) for line in (out / "runs.jsonl").read_text().splitlines()]
     failed = [r for r in rows if r["status"] == "failed"]
     assert failed and all(r["param.wheel_mu"] == 0.05 for r in failed)
+    assert all((out / r["artifact.replay"]).is_file() for r in failed)  # a replay of every failing run
+    assert not any("artifact.replay" in r for r in rows if r["status"] == "passed")  # and only of those
 
     from gazelle.viewer._browser import find_chromium
 
@@ -179,7 +181,14 @@ def test_the_example_sweep_runs_from_the_command_line_and_its_report_shows_plots
             page.wait_for_selector(".plot .main-svg", timeout=30_000)
             assert page.locator(".plot").count() == 2 + 2 * 2  # pass rate by 2 params; 2 metrics x 2 params
             assert page.locator("#failures + table tr").count() == 1 + len(failed)
+            # each failing run's replay is linked, and opens from disk
+            links = page.locator('#failures + table a[href$="replay.html"]')
+            assert links.count() == len(failed)
             shot = page.screenshot()
+            href = links.first.get_attribute("href")
+            assert href is not None and (out / href).is_file()
+            page.goto((out / href).as_uri())
+            page.wait_for_function("window.gazelleReplay !== undefined", timeout=30_000)
         finally:
             browser.close()
     import io

@@ -264,11 +264,18 @@ def sweep(
     timeout: float | None = typer.Option(
         None, "--timeout", help="Seconds of wall time a run may take (then it is stopped and recorded as a timeout)."
     ),
+    start: Path | None = typer.Option(
+        None,
+        "--from",
+        help="A checkpoint (Simulation.checkpoint) every run goes on from, its noise reseeded by the run's seed.",
+    ),
 ) -> None:
     """Run a scenario over a grid of parameters and seeds; a row per run and an HTML report."""
     from ._sweep import run_sweep
 
-    raise typer.Exit(run_sweep(scenario, param, seeds, jobs=jobs, ray=ray, out=out, resume=resume, timeout=timeout))
+    raise typer.Exit(
+        run_sweep(scenario, param, seeds, jobs=jobs, ray=ray, out=out, resume=resume, timeout=timeout, start=start)
+    )
 
 
 @app.command()

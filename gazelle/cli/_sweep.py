@@ -18,6 +18,7 @@ def run_sweep(
     out: Path | None,
     resume: bool,
     timeout: float | None = None,
+    start: Path | None = None,
 ) -> int:
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 
@@ -54,7 +55,16 @@ def run_sweep(
     t0 = time.perf_counter()
     try:
         result = sweep(
-            scenario, grid, seed_list, out=folder, jobs=jobs, ray=ray, resume=resume, on_row=on_row, timeout=timeout
+            scenario,
+            grid,
+            seed_list,
+            out=folder,
+            jobs=jobs,
+            ray=ray,
+            resume=resume,
+            on_row=on_row,
+            timeout=timeout,
+            start=start,
         )
     except SweepError as err:
         print(f"gazelle sweep: {err}", file=sys.stderr)

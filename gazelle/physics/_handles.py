@@ -13,7 +13,7 @@ from __future__ import annotations
 import enum
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Generic, TypeVar
+from typing import TYPE_CHECKING, Any, Generic, TypeVar
 
 import numpy as np
 
@@ -73,6 +73,10 @@ class JointHandle:
 
     __slots__ = ("world", "entity", "name", "_ids")
 
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Saved by what it names (a checkpoint): found again in the world it is loaded into."""
+        return (JointHandle, (self.world, self.entity, self.name))
+
     def __init__(self, world: PhysicsWorld, entity: str, name: str) -> None:
         self.world = world
         self.entity = entity
@@ -123,6 +127,10 @@ class JointGroup:
 
     __slots__ = ("world", "entity", "names", "_ids")
 
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Saved by what it names (a checkpoint): found again in the world it is loaded into."""
+        return (JointGroup, (self.world, self.entity, self.names))
+
     def __init__(self, world: PhysicsWorld, entity: str, names: tuple[str, ...]) -> None:
         self.world = world
         self.entity = entity
@@ -162,6 +170,10 @@ class ActuatorHandle:
     """
 
     __slots__ = ("joint", "kind", "name", "_id")
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Saved by what it names (a checkpoint): found again in the world it is loaded into."""
+        return (ActuatorHandle, (self.joint, self.kind, self.name))
 
     def __init__(self, joint: JointHandle, kind: ActuatorKind, name: str) -> None:
         self.joint = joint
@@ -205,6 +217,10 @@ class ActuatorGroup:
 
     __slots__ = ("world", "actuators", "_ids")
 
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Saved by what it names (a checkpoint): found again in the world it is loaded into."""
+        return (ActuatorGroup, (self.world, self.actuators))
+
     def __init__(self, world: PhysicsWorld, actuators: tuple[ActuatorHandle, ...]) -> None:
         self.world = world
         self.actuators = actuators
@@ -220,6 +236,10 @@ class BodyHandle:
     """One link of an entity: its world pose and velocity (ground truth)."""
 
     __slots__ = ("world", "entity", "link", "_id")
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Saved by what it names (a checkpoint): found again in the world it is loaded into."""
+        return (BodyHandle, (self.world, self.entity, self.link))
 
     def __init__(self, world: PhysicsWorld, entity: str, link: str | None) -> None:
         self.world = world

@@ -6,6 +6,7 @@ runs the systems' phases around blocks of physics steps. ROS, the viewer and the
 line drive it through its thread-safe methods.
 """
 
+from ._checkpoint import CheckpointError as CheckpointError
 from ._replay import ReplayRecorder as ReplayRecorder
 from ._scene import SceneGeometry as SceneGeometry
 from ._scene import SceneLink as SceneLink
@@ -20,6 +21,7 @@ from ._watchdog import start_signal_watchdog as start_signal_watchdog
 
 __all__ = [
     "MAX_CATCH_UP_SEC",
+    "CheckpointError",
     "RtfSample",
     "SceneGeometry",
     "SceneLink",

@@ -20,14 +20,17 @@ from __future__ import annotations
 import hashlib
 import logging
 import math
+import os
 import queue
 import threading
 import time
+import weakref
 from collections import deque
 from collections.abc import Callable
 from concurrent.futures import Future
 from concurrent.futures import TimeoutError as FutureTimeout
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any, TypeVar
 
 from ..description import Model, Plugin, Pose, World
@@ -113,6 +116,8 @@ class Simulation:
                 as Gazebo without ``--seed``: fresh entropy, runs with noise differ.
         """
         self.seed = seed
+        self._noise_places: weakref.WeakKeyDictionary[System, tuple[str, str]] = weakref.WeakKeyDictionary()
+        """Each noisy system's place (entity, name), from which its stream is seeded (see :meth:`reseed`)."""
         if rtf is not None and (not math.isfinite(rtf) or rtf < 0):
             raise ValueError(f"`rtf` must be >= 0, got {rtf!r}")
         self.world = PhysicsWorld(world, visual_geoms=visual_geoms)
@@ -160,10 +165,22 @@ class Simulation:
     def _seed_noise(self, system: System, entity: str, name: str) -> None:
         """Seed ``system``'s noise from the simulation's seed and its place (stable across processes and
         machines: a hash of the names, not Python's salted ``hash``)."""
+        self._noise_places[system] = (entity, name)
         if self.seed is None:
             return
         digest = hashlib.sha256(f"{self.seed}\0{entity}\0{name}".encode()).digest()
         system.seed_noise(int.from_bytes(digest[:8], "little"))
+
+    def reseed(self, seed: int) -> None:
+        """Draw every system's noise from new streams seeded with ``seed`` (as if the run had started with
+        it), from now on: a branch from a checkpoint with another draw of the sensors' noise."""
+
+        def do() -> None:
+            self.seed = seed
+            for system, (entity, name) in list(self._noise_places.items()):
+                self._seed_noise(system, entity, name)
+
+        self.call(do)
 
     # ------------------------------------------------------------------ threading
     @property
@@ -585,9 +602,13 @@ class Simulation:
         for entity, systems in staged:
             self._attach(entity, systems)
 
-    def _add_entity(self, model: Model, *, name: str, pose: Pose, namespace: str, spawned: bool) -> Entity:
-        """Stage the model, configure its systems, commit: the one way an entity comes into the world."""
-        entity = self.world.stage(model, name=name, X_WM=pose * model.pose, namespace=namespace, spawned=spawned)
+    def _add_entity(
+        self, model: Model, *, name: str, pose: Pose, namespace: str, spawned: bool, X_WM: Pose | None = None
+    ) -> Entity:
+        """Stage the model, configure its systems, commit: the one way an entity comes into the world.
+        ``X_WM``, when given, is where its model frame goes (else ``pose`` composed with the file's own)."""
+        placed = X_WM if X_WM is not None else pose * model.pose
+        entity = self.world.stage(model, name=name, X_WM=placed, namespace=namespace, spawned=spawned)
         try:
             systems = self._configure_plugins(entity)
         except Exception as err:
@@ -600,6 +621,42 @@ class Simulation:
             raise
         self._attach(entity, systems)
         return entity
+
+    def add_entity_placed(
+        self, model: Model, name: str, X_WM: Pose, namespace: str = "", *, spawned: bool = True
+    ) -> Entity:
+        """Add a model with its model frame at ``X_WM`` (the file's own pose already composed in), as a
+        checkpoint recorded it (thread-safe)."""
+        prepare_meshes(model)
+        return self.call(
+            lambda: self._add_entity(model, name=name, pose=Pose(), namespace=namespace, spawned=spawned, X_WM=X_WM)
+        )
+
+    # ------------------------------------------------------------------ checkpoints
+    def checkpoint(self, path: str | os.PathLike[str]) -> Path:
+        """Save everything this run needs to go on bit-identically to ``path`` (owner-only): the world and
+        its entities, MuJoCo's whole data, every system's and controller's state, the noise streams (see
+        :mod:`gazelle.sim._checkpoint`). :meth:`from_checkpoint` goes on from it, in any process.
+
+        Raises:
+            CheckpointError: something a system holds cannot be saved (the message names it).
+        """
+        from . import _checkpoint
+
+        return self.call(lambda: _checkpoint.save(self, path))
+
+    @classmethod
+    def from_checkpoint(cls, path: str | os.PathLike[str], world: World | None = None) -> Simulation:
+        """A simulation that goes on from a checkpoint as the saved run did. ``world``, when given, must be
+        the checkpoint's world.
+
+        Raises:
+            CheckpointError: not a checkpoint, made by another gazelle or MuJoCo version, of another world,
+                or its models' files changed so that the world rebuilds differently.
+        """
+        from . import _checkpoint
+
+        return _checkpoint.restore(_checkpoint.read(path), world)
 
     def spawn(self, model: Model, *, name: str | None = None, pose: Pose = Pose(), namespace: str = "") -> Entity:
         """Add a model (thread-safe). ``pose`` is where its model frame goes, composed with the file's own pose.

@@ -16,7 +16,10 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any, cast
+
+if TYPE_CHECKING:
+    from ..description import World
 
 from ._spec import ParamValue, RunSpec, SweepError, grid, load_scenario, scenario_from_file
 
@@ -45,12 +48,21 @@ def _on_alarm(_signum: int, _frame: Any) -> None:
 
 
 def run_one(
-    path: str, name: str, spec: RunSpec, source: str | None = None, timeout: float | None = None
+    path: str,
+    name: str,
+    spec: RunSpec,
+    source: str | None = None,
+    timeout: float | None = None,
+    start: str | None = None,
+    artifacts: str | None = None,
 ) -> dict[str, Any]:
     """Run the scenario once, in this process, and return its row. Never raises: a scenario that raises
     gives a row with status ``error`` and its traceback; one that runs longer than ``timeout`` seconds of
     wall time is stopped (at its next Python line: a single long MuJoCo call finishes first) and gives
-    status ``timeout``."""
+    status ``timeout``. ``start``: a checkpoint the run goes on from (its noise streams reseeded with the
+    run's seed), instead of a fresh world. ``artifacts``: a folder where a run that does not pass leaves
+    its replay (``<key>/replay.html``; a ROS scenario also its bag and server log), named in its row as
+    ``artifact.*`` paths relative to the folder's parent (where the report is)."""
     import signal
 
     row: dict[str, Any] = {"key": spec.key, "seed": spec.seed}
@@ -66,21 +78,16 @@ def run_one(
             timer = True
         except ValueError:  # not the main thread of its process: no wall-clock limit here
             pass
+    folder = Path(artifacts) / spec.key if artifacts is not None else None
+    run: _InProcessRun | _RosRun | None = None
     try:
-        from ..description import load
-        from ..sim import Simulation
-        from ..worlds import default_world
-
         fn = scenario_from_file(_source_file(source, path) if source is not None else Path(path), name)
-        world_file = getattr(fn, "world", None)
-        world = load(world_file).value if world_file is not None else default_world()
-        sim = Simulation(world, rtf=0, seed=spec.seed)  # type: ignore[arg-type]
-        metrics = fn(sim, spec.as_dict(), spec.seed)
+        run = _RosRun(fn, spec, folder) if is_ros_scenario(fn) else _InProcessRun(fn, spec, start)
+        metrics = run.call()
         if not isinstance(metrics, Mapping):
             raise TypeError(f"the scenario returned {type(metrics).__name__}, not a dict of metrics")
         row.update({f"metric.{k}": _metric(v) for k, v in metrics.items()})
         row["status"] = "passed" if bool(metrics.get("passed", True)) else "failed"
-        row["sim_sec"] = float(sim.world.time)
     except _RunTimeout:
         row["status"] = "timeout"
         row["error"] = f"the run took longer than {timeout:g} s of wall time and was stopped"
@@ -90,8 +97,120 @@ def run_one(
         if timer:
             signal.setitimer(signal.ITIMER_REAL, 0)
             signal.signal(signal.SIGALRM, previous)
+        if run is not None:
+            try:
+                row["sim_sec"] = run.sim_sec()
+                kept = run.finish(folder if row["status"] != "passed" else None)
+            except Exception:  # tearing down (a server that would not stop): said in the row, never raised
+                row["error"] += "\n" + traceback.format_exc(limit=-4)
+                kept = {}
+            if artifacts is not None:
+                row.update({f"artifact.{k}": f"{Path(artifacts).name}/{spec.key}/{v}" for k, v in kept.items()})
     row["wall_sec"] = time.perf_counter() - t0
     return row
+
+
+def is_ros_scenario(fn: Callable[..., Any]) -> bool:
+    """A ROS scenario takes the robot-test fixtures' server: ``def name(gazelle_sim, params, seed)``."""
+    import inspect
+
+    try:
+        first = next(iter(inspect.signature(fn).parameters), "")
+    except (TypeError, ValueError):
+        return False
+    return first == "gazelle_sim"
+
+
+class _InProcessRun:
+    """A run on an in-process Simulation (no ROS), fresh or from a checkpoint, its bodies recorded for a
+    replay page kept if the run does not pass."""
+
+    def __init__(self, fn: Callable[..., Any], spec: RunSpec, start: str | None) -> None:
+        from ..description import load
+        from ..sim import ReplayRecorder, Simulation
+        from ..worlds import default_world
+
+        self.fn, self.spec = fn, spec
+        world_file = getattr(fn, "world", None)
+        world = load(world_file).value if world_file is not None else default_world()
+        if start is not None:  # a branch: the checkpoint's world as it was, another draw of its noise
+            given = cast("World", world) if world_file is not None else None
+            self.sim = Simulation.from_checkpoint(start, world=given)
+            self.sim.reseed(spec.seed)
+        else:
+            self.sim = Simulation(world, rtf=0, seed=spec.seed)  # type: ignore[arg-type]
+        self.replay = ReplayRecorder(self.sim)
+
+    def call(self) -> Any:
+        return self.fn(self.sim, self.spec.as_dict(), self.spec.seed)
+
+    def sim_sec(self) -> float:
+        return float(self.sim.world.time)
+
+    def finish(self, keep: Path | None) -> dict[str, str]:
+        self.replay.close()
+        if keep is None:
+            return {}
+        from ..viewer import replay_html
+
+        keep.mkdir(parents=True, exist_ok=True)
+        self.replay.write(keep / "replay.html", replay_html(self.replay.data(), title=f"run {self.spec.key}"))
+        return {"replay": "replay.html"}
+
+
+class _RosRun:
+    """A run on the robot-test fixtures' server (``gazelle sim`` on a ROS domain of its own, localhost
+    discovery, paused: the scenario steps it), recording the scenario's ``record`` topics and a replay."""
+
+    def __init__(self, fn: Callable[..., Any], spec: RunSpec, folder: Path | None) -> None:
+        from ..testing import Sim, environ_applied, reserve_domain
+
+        self.fn, self.spec, self.folder = fn, spec, folder
+        self._environ = environ_applied
+        self.domain = reserve_domain()
+        topics = list(getattr(fn, "record", ()))
+        self.where = Path(tempfile.mkdtemp(prefix=f"gazelle-run-{spec.key}-"))
+        try:
+            self.sim = Sim(
+                domain_id=self.domain.domain_id,
+                world=getattr(fn, "world", None),
+                seed=spec.seed,
+                record=(self.where / "bag", topics),
+                server_args=[
+                    "--replay",
+                    str(self.where / "replay.html"),
+                    *[a for t in topics for a in ("--replay-topic", t)],
+                ],
+            )
+        except BaseException:
+            self.domain.release()
+            raise
+
+    def call(self) -> Any:
+        env = {"ROS_DOMAIN_ID": str(self.domain.domain_id), "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}
+        with self._environ(env):
+            return self.fn(self.sim, self.spec.as_dict(), self.spec.seed)
+
+    def sim_sec(self) -> float:
+        return float(self.sim.time) if self.sim.ros is not None else 0.0
+
+    def finish(self, keep: Path | None) -> dict[str, str]:
+        import shutil
+
+        try:
+            self.sim.close()
+            (self.where / "server.log").write_text(self.sim.server.output + "\n")
+        finally:
+            self.domain.release()
+        kept: dict[str, str] = {}
+        if keep is not None:
+            keep.mkdir(parents=True, exist_ok=True)
+            for item, label in (("replay.html", "replay"), ("bag", "bag"), ("server.log", "log")):
+                if (self.where / item).exists():
+                    shutil.move(str(self.where / item), str(keep / item))
+                    kept[label] = item
+        shutil.rmtree(self.where, ignore_errors=True)
+        return kept
 
 
 def lost_row(spec: RunSpec, why: str) -> dict[str, Any]:
@@ -127,8 +246,38 @@ def _source_file(source: str, origin: str) -> Path:
     return path
 
 
-def _ray_task(source: str, origin: str, name: str, spec: RunSpec, timeout: float | None) -> dict[str, Any]:
-    return run_one(origin, name, spec, source=source, timeout=timeout)
+def _ray_task(
+    source: str,
+    origin: str,
+    name: str,
+    spec: RunSpec,
+    timeout: float | None,
+    start: bytes | None = None,
+    artifacts: str | None = None,
+) -> dict[str, Any]:
+    return run_one(
+        origin, name, spec, source=source, timeout=timeout, start=_checkpoint_file(start), artifacts=artifacts
+    )
+
+
+def _checkpoint_file(blob: bytes | None) -> str | None:
+    """A checkpoint shipped as bytes (to a Ray worker on another machine), written once, owner-only."""
+    if blob is None:
+        return None
+    import hashlib
+
+    folder = Path(tempfile.gettempdir()) / f"gazelle-checkpoints-{os.getuid()}"
+    folder.mkdir(mode=0o700, exist_ok=True)
+    if folder.stat().st_uid != os.getuid() or folder.stat().st_mode & 0o077:
+        raise PermissionError(f"{folder} is not this user's own folder")
+    path = folder / f"{hashlib.sha256(blob).hexdigest()[:24]}.ckpt"
+    if not path.is_file() or hashlib.sha256(path.read_bytes()).digest() != hashlib.sha256(blob).digest():
+        tmp = path.with_name(f"{path.name}.{os.getpid()}.tmp")
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
+        with os.fdopen(fd, "wb") as f:
+            f.write(blob)
+        tmp.replace(path)
+    return str(path)
 
 
 @dataclass
@@ -157,7 +306,13 @@ def read_rows(path: Path) -> list[dict[str, Any]]:
 
 
 def _pool_runs(
-    path: Path, name: str, todo: Sequence[RunSpec], jobs: int, timeout: float | None = None
+    path: Path,
+    name: str,
+    todo: Sequence[RunSpec],
+    jobs: int,
+    timeout: float | None = None,
+    start: str | None = None,
+    artifacts: str | None = None,
 ) -> Iterator[dict[str, Any]]:
     # fork: the workers start with gazelle's runtime and the scenario's module already imported (warm),
     # and a user's script needs no `if __name__ == "__main__"` guard (spawn and forkserver run it again).
@@ -179,7 +334,7 @@ def _pool_runs(
             while (queue or pending) and not suspects:
                 while queue and len(pending) < 2 * jobs:  # a few queued ahead, not the whole sweep
                     spec = queue.pop(0)
-                    pending[pool.submit(run_one, str(path), name, spec, None, timeout)] = spec
+                    pending[pool.submit(run_one, str(path), name, spec, None, timeout, start, artifacts)] = spec
                 done, _ = wait(list(pending), return_when=FIRST_COMPLETED)
                 for f in done:
                     spec = pending.pop(f)
@@ -193,13 +348,20 @@ def _pool_runs(
         for spec in suspects:
             with ProcessPoolExecutor(max_workers=1, mp_context=ctx) as alone:
                 try:
-                    yield alone.submit(run_one, str(path), name, spec, None, timeout).result()
+                    yield alone.submit(run_one, str(path), name, spec, None, timeout, start, artifacts).result()
                 except BrokenProcessPool:
                     yield lost_row(spec, "its worker process died under it twice (killed, or crashed in C)")
 
 
 def _ray_runs(
-    path: Path, name: str, todo: Sequence[RunSpec], address: str, jobs: int, timeout: float | None = None
+    path: Path,
+    name: str,
+    todo: Sequence[RunSpec],
+    address: str,
+    jobs: int,
+    timeout: float | None = None,
+    start: str | None = None,
+    artifacts: str | None = None,
 ) -> Iterator[dict[str, Any]]:
     try:
         import ray
@@ -224,7 +386,11 @@ def _ray_runs(
     try:
         source = path.read_text()
         task = ray.remote(num_cpus=1, max_retries=1)(_ray_task)  # a dead worker's run goes again once
-        refs = [task.remote(source, str(path), name, spec, timeout) for spec in todo]
+        blob = ray.put(Path(start).read_bytes()) if start is not None else None  # once, to every node
+        refs = [
+            task.remote(source, str(path), name, spec, timeout, blob, artifacts)  # pyright: ignore[reportCallIssue]
+            for spec in todo
+        ]
         specs = dict(zip(refs, todo, strict=True))
         while refs:
             done, refs = ray.wait(refs, num_returns=1)
@@ -261,6 +427,7 @@ def sweep(
     on_row: Callable[[dict[str, Any], int, int], None] | None = None,
     report: bool = True,
     timeout: float | None = None,
+    start: str | os.PathLike[str] | None = None,
 ) -> SweepResult:
     """Run ``scenario`` (``file.py::function``) for every combination of ``params`` and every seed.
 
@@ -270,8 +437,19 @@ def sweep(
     report ``out/report.html``. ``resume`` keeps the rows already in ``out`` and runs only the others.
     ``on_row(row, done, total)`` is called after each run (progress). ``timeout``: seconds of wall time
     a run may take (status ``timeout``); a run whose worker dies is run once more, then is ``lost``.
+    ``start``: a checkpoint (``Simulation.checkpoint``) every run goes on from, its noise reseeded with
+    the run's seed: N perturbed continuations of one moment.
     """
     path, name, _fn = load_scenario(scenario)  # bad input fails here, before anything starts
+    begin: str | None = None
+    if start is not None:  # checked here, once: a bad checkpoint is one line, nothing started
+        from ..sim import CheckpointError, Simulation
+
+        begin = str(Path(start).resolve())
+        try:
+            Simulation.from_checkpoint(begin)
+        except CheckpointError as err:
+            raise SweepError(f"--from {start}: {err}") from None
     specs = grid(params, seeds)
     jobs = max(1, jobs if jobs is not None else (os.cpu_count() or 1))
     folder = Path(out)
@@ -289,6 +467,7 @@ def sweep(
                 "params": {n: list(v) for n, v in params},
                 "seeds": [min(seeds), max(seeds), len(seeds)],
                 "runs": len(specs),
+                "from": begin,
                 "python": sys.version.split()[0],
             },
             indent=2,
@@ -296,7 +475,12 @@ def sweep(
     )
     result = SweepResult(folder, rows=list(previous))
     mode = "a" if resume else "w"
-    runs = _ray_runs(path, name, todo, ray, jobs, timeout) if ray else _pool_runs(path, name, todo, jobs, timeout)
+    artifacts = str(folder.resolve() / "artifacts")  # a run that does not pass leaves its replay here
+    runs = (
+        _ray_runs(path, name, todo, ray, jobs, timeout, begin, artifacts)
+        if ray
+        else _pool_runs(path, name, todo, jobs, timeout, begin, artifacts)
+    )
     with open(log, mode) as f:
         for row in runs:
             f.write(json.dumps(row, sort_keys=True) + "\n")

@@ -80,6 +80,10 @@ class System:
     due: the runtime then does not call those phases until the gate is due (a lidar's post_update at
     5 Hz is not called on the 199 steps in between). None: every phase is called at every update."""
 
+    checkpoint_skip: tuple[str, ...] = ()
+    """Attributes a checkpoint leaves out: resources the system makes again or keeps (a renderer's GL
+    context), never state that shapes what it does next."""
+
     def configure(self, ctx: SystemContext) -> None:
         """Read the configuration, check the entity, declare endpoints and actuators."""
 
@@ -161,6 +165,10 @@ class SystemManager:
     def systems(self, owner: str | None = None) -> list[System]:
         """The systems of ``owner`` (all when None), in load order."""
         return [s for o, s in self._systems if owner is None or o == owner]
+
+    def refresh(self) -> None:
+        """Bind the phase calls again (after systems' attributes were replaced, as a checkpoint restores them)."""
+        self._rebuild()
 
     def _rebuild(self) -> None:
         ordered = [s for _, s in sorted(enumerate(self._systems), key=lambda it: (it[1][1].priority, it[0]))]

@@ -960,6 +960,9 @@ class Camera(_SensorSystem):
 
     kind = "camera"
 
+    checkpoint_skip = ("_renderer",)
+    """Its offscreen renderer (a GL context) is made again where a checkpoint is loaded."""
+
     def __init__(self, seed: int | None = None) -> None:
         super().__init__(seed)
         self.spec = CameraSpec()
@@ -1136,6 +1139,10 @@ class ContactSensor(_SensorSystem):
         """``<frame_name>``'s link, when the contacts are reported in a link's frame (None: the world)."""
         self._geoms: PerGeneration[frozenset[int]] | None = None
 
+    def _find_geoms(self, world: PhysicsWorld) -> frozenset[int]:
+        """The collision geoms of the sensor's ``<collision>`` elements in the world's current model."""
+        return frozenset().union(*(world.collision_geoms(self._entity, self.link, n) for n in self._collisions))
+
     def configure(self, ctx: SystemContext) -> None:
         """Read the collisions it watches and the plugin; declare the output topic."""
         sensor = ctx.sensor
@@ -1187,8 +1194,8 @@ class ContactSensor(_SensorSystem):
                     )
                     self.output = dataclasses.replace(self.output, frame_id="world")
         self._pub = ctx.bus.advertise(ctx.entity.name, self.output.topic, MsgType.CONTACTS, depth=SENSOR_DEPTH)
-        entity, link = ctx.entity.name, self.link
-        self._geoms = PerGeneration(lambda w: frozenset().union(*(w.collision_geoms(entity, link, n) for n in names)))
+        self._entity, self._collisions = ctx.entity.name, tuple(names)
+        self._geoms = PerGeneration(self._find_geoms)
         ctx.logger.info(
             f"contact sensor '{sensor.name}' on [{', '.join(names)}] at {self.rate_hz:g} Hz on [{self.output.topic}]"
         )

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import logging
 import math
 import operator
@@ -17,6 +18,10 @@ T = TypeVar("T")
 
 UNCONFIGURED, INACTIVE, ACTIVE, FINALIZED = "unconfigured", "inactive", "active", "finalized"
 """Lifecycle states, as ros2_control names them in ``list_controllers``."""
+
+
+def _ignore(_component: Any) -> None:
+    """The default of a controller context's component hooks: nobody serves it."""
 
 
 @dataclass
@@ -35,9 +40,9 @@ class ControllerContext:
     """Every command interface of the hardware."""
     joint_names: tuple[str, ...]
     """The hardware's joints, in the ``<ros2_control>`` block's order."""
-    add_component: Callable[[Any], None] = lambda _c: None
+    add_component: Callable[[Any], None] = _ignore
     """Announce an interface the ROS layer serves for this controller (an action server)."""
-    remove_component: Callable[[Any], None] = lambda _c: None
+    remove_component: Callable[[Any], None] = _ignore
 
 
 class Controller:
@@ -163,11 +168,28 @@ def finite(values: list[float]) -> bool:
 
 def values_getter(keys: list[str]) -> Callable[[dict[str, float]], tuple[float, ...]]:
     """A function giving the values of ``keys`` in a state or command dict as a tuple (NaN for a ""
-    key): one C-level ``itemgetter`` call when it can, since controllers run at up to 1 kHz."""
+    key): one C-level ``itemgetter`` call when it can, since controllers run at up to 1 kHz. Module
+    functions and partials, never closures, so that a checkpoint can save a controller."""
     if not keys:
-        return lambda _values: ()
+        return _no_values
     if all(keys):
         get = operator.itemgetter(*keys)
-        return get if len(keys) > 1 else lambda values: (get(values),)
-    nan = math.nan
-    return lambda values: tuple(values[k] if k else nan for k in keys)
+        return get if len(keys) > 1 else functools.partial(_one_value, get)
+    return functools.partial(_values_or_nan, tuple(keys))
+
+
+def _no_values(_values: dict[str, float]) -> tuple[float, ...]:
+    return ()
+
+
+def _one_value(get: Callable[[dict[str, float]], float], values: dict[str, float]) -> tuple[float, ...]:
+    return (get(values),)
+
+
+def _values_or_nan(keys: tuple[str, ...], values: dict[str, float]) -> tuple[float, ...]:
+    return tuple(values[k] if k else math.nan for k in keys)
+
+
+def values_or_zero(keys: tuple[str, ...], values: dict[str, float]) -> tuple[float, ...]:
+    """The values of ``keys``, 0.0 for a key missing from ``values`` (bind ``keys`` with a partial)."""
+    return tuple(values.get(k, 0.0) for k in keys)

@@ -16,11 +16,13 @@ from parameters set on the manager's node at run time (``<controller>.type``,
 
 from __future__ import annotations
 
+import functools
 import logging
 import math
 import re
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from ...description import MAX_PARAMS_FILE_BYTES, ResourceResolver
 from ...physics import PhysicsWorld
@@ -411,13 +413,40 @@ class ControllerManager(System):
             tuple(self.all_state_interfaces()),
             tuple(self.all_command_interfaces()),
             tuple(j for hw in self.hardware for j in hw.joints),
-            add_component=lambda c: ctx.bus.add_component(ctx.entity.name, c),
+            add_component=functools.partial(ctx.bus.add_component, ctx.entity.name),
             remove_component=ctx.bus.remove_component,
         )
         controller = cls(name, self.controller_params(name), cctx)
         self.controllers[name] = _Loaded(controller, type_name)
         self.log.info(f"Loaded controller '{name}' ({type_name})")
         return controller
+
+    # ------------------------------------------------------------------ checkpoints
+    def checkpoint_structure(self) -> dict[str, object]:
+        """What a checkpoint rebuilds before it writes the state back: the parameters given at run time
+        and the controllers loaded, with their lifecycle states (see ``gazelle.sim`` checkpoints)."""
+        return {
+            "files": list(self.files),
+            "params_files": dict(self._params_files),
+            "overrides": dict(self.overrides),
+            "controllers": [(name, loaded.controller.state) for name, loaded in self.controllers.items()],
+        }
+
+    def restore_structure(self, structure: dict[str, Any]) -> None:
+        """Load, configure and activate the checkpoint's controllers as the spawner did, in their order."""
+        self.files[:] = structure["files"]
+        self._params_files.update(structure["params_files"])
+        self.overrides.update(structure["overrides"])
+        active = []
+        for name, state in structure["controllers"]:
+            if name not in self.controllers:
+                self.load_controller(name)
+            if state in (INACTIVE, ACTIVE) and self.controllers[name].controller.state == UNCONFIGURED:
+                self.configure_controller(name)
+            if state == ACTIVE:
+                active.append(name)
+        if active:
+            self.switch_controller(active, [])
 
     def configure_controller(self, name: str) -> None:
         """``unconfigured`` → ``inactive`` (reads its parameters again, declares its topics).

@@ -17,13 +17,14 @@
 from __future__ import annotations
 
 import bisect
+import functools
 import math
 import threading
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from .._bus import JointTrajectory, MsgType, TrajectoryControllerState, TrajectoryPoint
-from ._controller import Controller, values_getter
+from ._controller import Controller, values_getter, values_or_zero
 from ._hardware import ControlError
 
 # control_msgs/FollowJointTrajectory result codes
@@ -255,7 +256,7 @@ class JointTrajectoryController(Controller):
         self._hold = [states[f"{j}/position"] for j in self.joints]
         self._integral = [0.0] * len(self.joints)
         if not all(k in states for k in self._vel_keys):
-            self._get_vel = lambda values: tuple(values.get(k, 0.0) for k in self._vel_keys)
+            self._get_vel = functools.partial(values_or_zero, tuple(self._vel_keys))
 
     def on_deactivate(self) -> None:
         traj = self._traj
