@@ -221,3 +221,36 @@ def test_sweep_runs_branch_from_a_checkpoint(tmp_path: Path, seed_robot_sim: Sim
         assert row["metric.dx"] == pytest.approx(float(row["param.v"]), rel=0.1)
     digest = {hashlib.sha256(json.dumps(r["metric.dx"]).encode()).hexdigest() for r in rows if r["param.v"] == 0.1}
     assert len(digest) == 1  # the seed changes nothing here: the same branch, the same result
+    # a checkpoint that is not there: one line, exit 2, nothing run
+    bad = subprocess.run(
+        [sys.executable, "-m", "gazelle.cli", "sweep", f"{scenario}::drive", "--param", "v=0.1"]
+        + ["--from", str(tmp_path / "none.ckpt"), "--out", str(tmp_path / "bad")],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert bad.returncode == 2 and "Traceback" not in bad.stderr, bad.stderr
+    assert bad.stderr.strip().count("\n") == 0 and "--from" in bad.stderr and "none.ckpt" in bad.stderr
+
+
+@pytest.mark.slow
+def test_branches_on_ray_start_from_the_checkpoint_shipped_to_the_workers(
+    tmp_path: Path, seed_robot_sim: Simulation
+) -> None:
+    """On Ray the checkpoint goes to the workers as bytes (a cluster's nodes do not share this disk):
+    the same rows as the process pool's."""
+    from gazelle.sweep import sweep
+
+    ckpt = seed_robot_sim.checkpoint(tmp_path / "r.ckpt")
+    scenario = tmp_path / "branch.py"
+    scenario.write_text(
+        "def drive(sim, params, seed):\n"
+        "    from gazelle.systems import MsgType, Twist\n"
+        "    sim.bus.inject('/cmd_vel', MsgType.TWIST, Twist(linear=(0.2, 0.0, 0.0)))\n"
+        "    sim.step(500)\n"
+        "    return {'t': sim.world.time, 'state': sim.world.state_digest()}\n"
+    )
+    pool = sweep(f"{scenario}::drive", [], [0, 1], out=tmp_path / "pool", jobs=2, start=ckpt, report=False)
+    ray = sweep(f"{scenario}::drive", [], [0, 1], out=tmp_path / "ray", jobs=2, ray="local", start=ckpt, report=False)
+    assert {r["key"]: r["metric.state"] for r in ray.rows} == {r["key"]: r["metric.state"] for r in pool.rows}
+    assert all(r["metric.t"] == pytest.approx(seed_robot_sim.world.time + 0.5) for r in ray.rows)

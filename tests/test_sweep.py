@@ -33,7 +33,7 @@ def slide(sim, params, seed):
     sim.world.set_entity_state("box", sim.world.entity_state("box").pose, (1.0 + seed * 0.1, 0.0, 0.0))
     sim.step(1000)
     x = sim.world.entity_state("box").pose.position[0]
-    return {"distance": x, "passed": x < 0.5}
+    return {"distance": x, "state": sim.world.state_digest(), "passed": x < 0.5}
 
 
 def dies(sim, params, seed):
@@ -77,7 +77,7 @@ def test_parameters_and_seeds_are_read_as_the_command_line_writes_them() -> None
         grid([("a", [1]), ("a", [2])], [0])
 
 
-def test_the_pool_and_a_run_alone_give_bit_identical_metrics(scenario: Path, tmp_path: Path) -> None:
+def test_the_pool_and_a_run_alone_give_bit_identical_final_states(scenario: Path, tmp_path: Path) -> None:
     params = [parse_param("mu=0.1,0.5,1.0")]
     two = sweep(f"{scenario}::slide", params, [0, 1, 2], out=tmp_path / "two", jobs=2, report=False)
     one = sweep(f"{scenario}::slide", params, [0, 1, 2], out=tmp_path / "one", jobs=1, report=False)
@@ -85,8 +85,9 @@ def test_the_pool_and_a_run_alone_give_bit_identical_metrics(scenario: Path, tmp
     by_key = {r["key"]: r for r in one.rows}
     for row in two.rows:
         assert row["metric.distance"] == by_key[row["key"]]["metric.distance"]  # bit for bit (floats equal)
+        assert row["metric.state"] == by_key[row["key"]]["metric.state"]  # the whole physics state's digest
         alone = run_one(str(scenario), "slide", RunSpec((("mu", row["param.mu"]),), row["seed"]))
-        assert alone["metric.distance"] == row["metric.distance"]
+        assert alone["metric.state"] == row["metric.state"]
     # friction makes the difference the report shows: low friction slides further and fails
     slid = {r["param.mu"]: r["metric.distance"] for r in two.rows if r["seed"] == 0}
     assert slid[0.1] > slid[0.5] > slid[1.0]
@@ -140,12 +141,17 @@ def test_the_command_line_prints_one_line_for_bad_input(scenario: Path, tmp_path
 
 @pytest.mark.slow
 def test_the_same_rows_on_a_local_ray_instance(scenario: Path, tmp_path: Path) -> None:
-    """Ray (a local instance of 2 CPUs, the scenario shipped as text) gives the pool's rows bit for bit."""
+    """Ray (a local instance of 2 CPUs, the scenario shipped as text) gives the pool's rows bit for bit, and
+    a run alone the same final state: 10 (parameters, seed) rows."""
     params = [parse_param("mu=0.1,1.0")]
-    pool = sweep(f"{scenario}::slide", params, [0, 1], out=tmp_path / "pool", jobs=2, report=False)
-    on_ray = sweep(f"{scenario}::slide", params, [0, 1], out=tmp_path / "ray", jobs=2, ray="local", report=False)
-    assert on_ray.ran == 4
-    assert {r["key"]: r["metric.distance"] for r in on_ray.rows} == {r["key"]: r["metric.distance"] for r in pool.rows}
+    seeds = [0, 1, 2, 3, 4]
+    pool = sweep(f"{scenario}::slide", params, seeds, out=tmp_path / "pool", jobs=2, report=False)
+    on_ray = sweep(f"{scenario}::slide", params, seeds, out=tmp_path / "ray", jobs=2, ray="local", report=False)
+    assert on_ray.ran == 10
+    assert {r["key"]: r["metric.state"] for r in on_ray.rows} == {r["key"]: r["metric.state"] for r in pool.rows}
+    for row in on_ray.rows[:3]:
+        alone = run_one(str(scenario), "slide", RunSpec((("mu", row["param.mu"]),), row["seed"]))
+        assert alone["metric.state"] == row["metric.state"]
 
 
 @pytest.mark.slow
