@@ -859,3 +859,103 @@ def test_a_seeded_simulation_repeats_its_sensor_noise_and_an_unseeded_one_does_n
     assert first == again
     assert first[0] != other[0] and first[1] != other[1]
     assert run(None)[0] != run(None)[0]
+
+
+@pytest.mark.parametrize(
+    ("scene", "plugin", "expected"),
+    [
+        ("", "", (178, 178, 178)),  # SDFormat's default <background>: 0.7 0.7 0.7
+        ("<scene><background>0 0 1 1</background></scene>", "", (0, 0, 255)),
+        (  # the gz-sim Sensors system's <background_color> wins over the scene's, as in gz-sim
+            "<scene><background>0 0 1 1</background></scene>",
+            '<plugin filename="gz-sim-sensors-system" name="gz::sim::systems::Sensors">'
+            "<render_engine>ogre2</render_engine><background_color>0 1 0</background_color></plugin>",
+            (0, 255, 0),
+        ),
+    ],
+)
+def test_a_camera_sees_the_worlds_background_where_nothing_is_drawn(scene: str, plugin: str, expected) -> None:
+    """Gazebo's cameras draw the world's <scene><background> behind everything (gz-sim RenderUtil.cc,
+    Sensors.cc); gazelle's drew black."""
+    from gazelle.systems.sensors import Camera
+
+    world = load_string(f'<?xml version="1.0"?><sdf version="1.9"><world name="w">{plugin}{scene}</world></sdf>').value
+    sim = Simulation(world, rtf=0)
+    cam = next(s for s in _spawn(sim, _camera_model(), "cam").systems if isinstance(s, Camera))
+    sim.step(1)
+    rgb, depth = cam.render(sim.world, depth=True)
+    assert tuple(int(c) for c in rgb[5, 160]) == expected
+    assert depth is not None and math.isinf(
+        depth[5, 160]
+    )  # and no depth there: nothing is  # the top of the image: the sky, nothing in it
+
+
+TEXTURED_QUAD_DAE = """<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="meter" meter="1"/><up_axis>Z_UP</up_axis></asset>
+  <library_images><image id="img"><init_from>quad.png</init_from></image></library_images>
+  <library_effects><effect id="fx"><profile_COMMON>
+    <newparam sid="surf"><surface type="2D"><init_from>img</init_from></surface></newparam>
+    <newparam sid="samp"><sampler2D><source>surf</source></sampler2D></newparam>
+    <technique sid="common"><lambert><diffuse><texture texture="samp" texcoord="UV0"/></diffuse></lambert></technique>
+  </profile_COMMON></effect></library_effects>
+  <library_materials><material id="mat"><instance_effect url="#fx"/></material></library_materials>
+  <library_geometries><geometry id="quad"><mesh>
+    <source id="pos"><float_array id="pa" count="12">0 -0.5 -0.5 0 0.5 -0.5 0 0.5 0.5 0 -0.5 0.5</float_array>
+      <technique_common><accessor source="#pa" count="4" stride="3">
+        <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+      </accessor></technique_common></source>
+    <source id="uv"><float_array id="ua" count="8">0 0 1 0 1 1 0 1</float_array>
+      <technique_common><accessor source="#ua" count="4" stride="2">
+        <param name="S" type="float"/><param name="T" type="float"/></accessor></technique_common></source>
+    <vertices id="v"><input semantic="POSITION" source="#pos"/></vertices>
+    <triangles material="m" count="4">
+      <input semantic="VERTEX" source="#v" offset="0"/><input semantic="TEXCOORD" source="#uv" offset="1" set="0"/>
+      <p>0 0 1 1 2 2 0 0 2 2 3 3 0 0 2 2 1 1 0 0 3 3 2 2</p></triangles>
+  </mesh></geometry></library_geometries>
+  <library_visual_scenes><visual_scene id="s"><node id="n"><instance_geometry url="#quad">
+    <bind_material><technique_common><instance_material symbol="m" target="#mat">
+      <bind_vertex_input semantic="UV0" input_semantic="TEXCOORD" input_set="0"/>
+    </instance_material></technique_common></bind_material></instance_geometry></node></visual_scene>
+  </library_visual_scenes>
+  <scene><instance_visual_scene url="#s"/></scene>
+</COLLADA>
+"""
+
+
+@pytest.mark.parametrize("material", ["", "<material><diffuse>0 1 0 1</diffuse></material>"])
+def test_a_camera_sees_a_collada_meshs_own_texture_unless_the_visual_gives_a_material(tmp_path, material: str):
+    """A DAE's texture (here: its u < 0.5 half red, the other blue) is drawn in camera images;
+    a visual with a <material> of its own is drawn in that one instead, as gz-sim does (SceneManager.cc)."""
+    from PIL import Image
+
+    from gazelle.systems.sensors import Camera
+
+    image = np.zeros((16, 16, 3), np.uint8)
+    image[:, :8] = (255, 0, 0)
+    image[:, 8:] = (0, 0, 255)
+    Image.fromarray(image).save(tmp_path / "quad.png")
+    (tmp_path / "quad.dae").write_text(TEXTURED_QUAD_DAE)
+    (tmp_path / "model.sdf").write_text(
+        f"""<?xml version="1.0"?><sdf version="1.9"><model name="poster"><static>true</static>
+        <pose>2 0 0.5 0 0 0</pose><link name="l"><visual name="v">
+        <geometry><mesh><uri>{tmp_path / "quad.dae"}</uri></mesh></geometry>{material}</visual></link></model></sdf>"""
+    )
+    sim = Simulation(default_world(), rtf=0)
+    # the poster comes before the camera: the camera's arrival puts the poster's visuals in the model; the
+    # second time round they are in from the start (and its texture's name, freed at delete, is free again)
+    for _ in range(2):
+        poster = load(tmp_path / "model.sdf")
+        assert poster.value is not None, [d.format() for d in poster.diagnostics]
+        sim.spawn(poster.value, name="poster")
+        cam = next(s for s in _spawn(sim, _camera_model(hfov=0.6), "cam").systems if isinstance(s, Camera))
+        sim.step(1)
+        rgb, _ = cam.render(sim.world, depth=False)
+        # the camera looks along +x: the image's right is the world's -y, the quad's u = 0 side (red)
+        left, right = rgb[120, 100].astype(int), rgb[120, 220].astype(int)
+        if material:
+            assert left[1] > 100 and left[0] < 60 and right[1] > 100 and right[2] < 60, (left, right)
+        else:
+            assert left[2] > 100 > left[0] and right[0] > 100 > right[2], (left, right)
+        sim.delete("poster")
+        sim.delete("cam")

@@ -28,8 +28,10 @@ from ._diagnostics import SourceLocation as SourceLocation
 from ._diagnostics import excerpt as excerpt
 from ._diagnostics import reply_text as reply_text
 from ._inertia import rotation_matrix as rotation_matrix
+from ._meshes import MeshLook as MeshLook
 from ._meshes import MeshReadError as MeshReadError
 from ._meshes import load_mesh as load_mesh
+from ._meshes import load_mesh_look as load_mesh_look
 from ._meshes import load_trimesh_in_metres as load_trimesh_in_metres
 from ._model import *  # noqa: F403  (the model dataclasses are the public surface)
 from ._model import LoadResult, Model, World

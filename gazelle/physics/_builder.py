@@ -66,6 +66,7 @@ from ..description import (
     Sphere,
     Visual,
     load_mesh,
+    load_mesh_look,
     quat_rotate,
 )
 from ._convex import collision_parts
@@ -112,6 +113,8 @@ class BuiltEntity:
     """Contact parameters MuJoCo cannot honour -> the ``link/collision`` places that set them."""
     decomposed: tuple[tuple[str, int, float, str], ...] = ()
     """Non-convex collision meshes split into convex parts: (file, parts, seconds, where from)."""
+    visuals: bool = False
+    """Whether its visual shapes are in the model (see :func:`add_visuals`)."""
 
 
 def friction_priority(mu: float) -> int:
@@ -332,10 +335,33 @@ def _add_visual_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, vis: Visual, nam
             mesh.userface = list(np.asarray(faces).ravel())
         mesh.inertia = mujoco.mjtMeshInertia.mjMESH_INERTIA_SHELL  # open visual meshes have no volume
         kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh.name)
+        if isinstance(g, Mesh) and g.path is not None and vis.material is None:
+            _use_mesh_look(spec, mesh, g.path, name, kwargs)
     else:  # pragma: no cover - the union is closed
         return False
     body.add_geom(**kwargs)
     return True
+
+
+def _use_mesh_look(spec: mujoco.MjSpec, mesh: mujoco.MjsMesh, path: str, name: str, kwargs: dict) -> None:
+    """A visual mesh without an SDF/URDF ``<material>`` looks as its file says: its texture (COLLADA,
+    OBJ), else its material's colour. With a ``<material>``, that one is used instead, as gz-sim does
+    (``src/rendering/SceneManager.cc``: the visual's material is set on the geometry; a mesh without
+    one keeps its own submeshes' materials)."""
+    look = load_mesh_look(path)
+    if look.image is not None and look.uv is not None:
+        h, w = look.image.shape[:2]
+        tex = spec.add_texture(name=f"{name}__tex", type=mujoco.mjtTexture.mjTEXTURE_2D, width=w, height=h, nchannel=3)
+        tex.data = look.image.tobytes()
+        material = spec.add_material(name=f"{name}__mat", rgba=[1.0, 1.0, 1.0, 1.0])
+        material.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = tex.name
+        uv = np.array(look.uv, dtype=float)
+        uv[:, 1] = 1.0 - uv[:, 1]  # MuJoCo's images start at their top row, the file's v at the bottom
+        mesh.usertexcoord = list(uv.ravel())
+        kwargs["material"] = material.name
+        kwargs.pop("rgba", None)
+    elif look.rgba is not None:
+        kwargs["rgba"] = list(look.rgba)
 
 
 CONE_SEGMENTS = 32
@@ -511,6 +537,24 @@ def _add_joint_dofs(spec: mujoco.MjSpec, body: mujoco.MjsBody, joint: Joint, nam
     built.joints[joint.name] = names
 
 
+def add_visuals(spec: mujoco.MjSpec, model: Model, built: BuiltEntity) -> None:
+    """Put the visual shapes of an entity built without them into ``spec`` (a camera came into the
+    world: it should see everything as users do, textures included), and hide its collision shapes
+    from cameras, as if it had been built with ``visuals``."""
+    if built.visuals:
+        return
+    for link in model.links:
+        body = spec.body(built.bodies.get(link.name, ""))
+        if body is None:
+            continue
+        for geom in body.geoms:
+            if geom.group == SHOWN_COLLISION_GROUP:
+                geom.group = COLLISION_GROUP
+        for i, vis in enumerate(link.visuals):
+            _add_visual_geom(spec, body, vis, scoped(built.name, f"{link.name}::{vis.name or 'visual'}#v{i}"))
+    built.visuals = True
+
+
 def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose, *, visuals: bool = False) -> BuiltEntity:
     """Add ``model`` to ``spec`` as entity ``entity`` placed at ``X_WM``; with ``visuals``, its visual
     shapes too, as geoms that neither collide nor weigh (group :data:`VISUAL_GROUP`), for cameras.
@@ -536,7 +580,7 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose, *, vis
     ]
     world_joints = children.get("world", [])
 
-    built = BuiltEntity(name=entity, root_body="", free_joint=None)
+    built = BuiltEntity(name=entity, root_body="", free_joint=None, visuals=visuals)
     ignored: dict[str, list[str]] = {}
     decomposed: list[tuple[str, int, float, str]] = []
     total_mass = sum((lk.inertial.mass if lk.inertial else 0.0) for lk in model.links) or 1.0

@@ -119,7 +119,11 @@ class OffscreenRenderer:
             scn.lights[0].specular[:] = 0.0  # Gazebo has no headlight: no glare from one
         scn.enabletransform = 0
         mujoco.mjr_render(self._viewport, scn, ctx)
-        mujoco.mjr_readPixels(self._rgb, self._depth if depth else None, self._viewport, ctx)
+        mujoco.mjr_readPixels(self._rgb, self._depth, self._viewport, ctx)
+        # where nothing was drawn (the depth buffer kept its clear value), the world's background colour
+        # (MuJoCo clears to black; its skybox would be drawn at a finite depth, within some cameras' far
+        # plane and beyond others')
+        self._rgb[self._depth >= 1.0] = self.world.background
         rgb = np.flipud(self._rgb)  # OpenGL's rows go bottom-up
         if not depth:
             return rgb, None

@@ -20,7 +20,16 @@ import mujoco
 import numpy as np
 
 from ..description import Light, Model, Pose, World, excerpt, quat_conj, quat_rotate, rotation_matrix
-from ._builder import JOINT_ARMATURE, SEP, BuildError, BuiltEntity, add_model, friction_priority, scoped
+from ._builder import (
+    JOINT_ARMATURE,
+    SEP,
+    BuildError,
+    BuiltEntity,
+    add_model,
+    add_visuals,
+    friction_priority,
+    scoped,
+)
 from ._convex import cache_dir
 from ._handles import ActuatorGroup, ActuatorHandle, ActuatorKind, BodyHandle, JointGroup, JointHandle
 from ._render import OffscreenRenderer
@@ -259,6 +268,7 @@ class PhysicsWorld:
         self.spec.compiler.degree = False
         for light in world.lights:
             self._add_light(light)
+        self._add_background(world)
         self.entities: dict[str, Entity] = {}
         self.generation = 0
         """Bumped at every recompile: indices cached against an older generation are stale."""
@@ -354,8 +364,14 @@ class PhysicsWorld:
         self, model: Model, name: str, X_WM: Pose, namespace: str, spawned: bool, taken: Container[str]
     ) -> Entity:
         X_WM = _checked_placement(name, X_WM, taken)
+        if has_camera(model) and not self.visual_geoms:
+            # a camera comes into the world: from now on every entity's visuals are in the model, so it
+            # sees the world as users do (its textures, not the collision shapes in a flat colour)
+            self.visual_geoms = True
+            for other in self.entities.values():
+                add_visuals(self.spec, other.model, other.built)
         try:
-            built = add_model(self.spec, model, name, X_WM, visuals=self.visual_geoms or has_camera(model))
+            built = add_model(self.spec, model, name, X_WM, visuals=self.visual_geoms)
         except Exception as err:
             self._remove_elements(name)
             raise build_failed(name, err) from None
@@ -462,6 +478,12 @@ class PhysicsWorld:
         for mesh in list(self.spec.meshes):
             if mesh.name.startswith(prefix):
                 self.spec.delete(mesh)
+        for material in list(self.spec.materials):  # a visual mesh's own texture (see the builder)
+            if material.name.startswith(prefix):
+                self.spec.delete(material)
+        for texture in list(self.spec.textures):
+            if texture.name.startswith(prefix):
+                self.spec.delete(texture)
 
     def remove_entity(self, name: str) -> Entity:
         """Delete an entity; every other entity keeps its state.
@@ -818,6 +840,26 @@ class PhysicsWorld:
                 spin = float(np.linalg.norm(w))
                 if spin > MAX_CORRECTING_SPIN:
                     w *= MAX_CORRECTING_SPIN / spin
+
+    def _add_background(self, world: World) -> None:
+        """What cameras see where nothing is drawn (:attr:`background`): the world's ``<scene>
+        <background>`` (SDFormat's default 0.7 grey), or the gz-sim Sensors system's ``<background_color>``,
+        which wins over it, as gz-sim's sensors render (``src/systems/sensors/Sensors.cc``:
+        ``background_color``, else ``src/rendering/RenderUtil.cc``: ``scene->SetBackgroundColor(
+        scene.Background())``)."""
+        colour = world.scene.background[:3]
+        for plugin in world.plugins:
+            if "sensors" not in (plugin.filename or "").lower() and not plugin.name.endswith("::Sensors"):
+                continue
+            el = plugin.config.find("background_color")
+            try:
+                values = [float(v) for v in (el.text or "").split()] if el is not None else []
+            except ValueError:
+                values = []
+            if len(values) in (3, 4):
+                colour = (values[0], values[1], values[2])
+        self.background = tuple(int(round(255 * min(max(float(c), 0.0), 1.0))) for c in colour)
+        """The cameras' background, 8-bit RGB."""
 
     def _add_light(self, light: Light) -> None:
         """A world light for cameras (its direction is in the light's frame, as SDF gives it)."""

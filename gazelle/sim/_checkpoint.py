@@ -317,7 +317,7 @@ def save(sim: Simulation, path: str | os.PathLike[str]) -> Path:
         "options": {
             "rtf": sim.rtf,
             "robot_state_publisher": sim.robot_state_publisher,
-            "visual_geoms": world.visual_geoms,
+            "visual_geoms": sim.visual_geoms,
             "seed": sim.seed,
         },
         "entities": entities,

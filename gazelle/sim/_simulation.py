@@ -121,6 +121,8 @@ class Simulation:
         if rtf is not None and (not math.isfinite(rtf) or rtf < 0):
             raise ValueError(f"`rtf` must be >= 0, got {rtf!r}")
         self.world = PhysicsWorld(world, visual_geoms=visual_geoms)
+        self.visual_geoms = visual_geoms
+        """As asked (the world turns visuals on by itself once a camera is in it)."""
         self.systems = SystemManager()
         self.bus = bus or Bus()
         physics = world.physics
