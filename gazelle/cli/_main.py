@@ -96,9 +96,9 @@ def sim(
     replay: Path | None = typer.Option(
         None,
         "--replay",
-        help="Record where every body is (30 times a sim second) and, at shutdown, write a replay: a page "
-        "that opens from disk in a browser (FILE.html), or its data (FILE.json). gazelle's pytest plugin keeps "
-        "one for each failing test.",
+        help="Record where every body is (30 times a sim second) and, at shutdown (or at once on SIGUSR1), write "
+        "a replay of the run since the last world reset: a page that opens from disk in a browser (FILE.html), "
+        "or its data (FILE.json). gazelle's pytest plugin keeps one for each failing test.",
     ),
     replay_topic: list[str] = typer.Option(
         [], "--replay-topic", help="A topic of the simulation's whose values the replay shows (repeatable)."

@@ -77,6 +77,9 @@ def run_sim(
 
     signal.signal(signal.SIGINT, on_signal)
     signal.signal(signal.SIGTERM, on_signal)
+    write_replay = threading.Event()
+    # SIGUSR1: write the replay now and go on (a test that failed on a module's shared server wants it)
+    signal.signal(signal.SIGUSR1, lambda _signum, _frame: write_replay.set())
     start_signal_watchdog(
         SHUTDOWN_DEADLINE_SEC + 0.5
     )  # before any thread, and before the world's build, which may be long
@@ -132,7 +135,22 @@ def run_sim(
         flush=True,
     )
     rc = 0
-    while not stop.wait(0.2):
+
+    def save_replay() -> None:
+        assert recorder is not None and replay is not None
+        try:
+            if page is not None:
+                recorder.write(replay, page(recorder.data(), title=f"gazelle replay: {world.name}"))
+            else:
+                recorder.write(replay)
+        except OSError as err:
+            print(f"gazelle: the replay was not written: {err}", file=sys.stderr)
+
+    while not stop.wait(0.1):
+        if write_replay.is_set():
+            write_replay.clear()
+            if recorder is not None:
+                save_replay()
         if not sim.running:
             print("gazelle: simulation thread stopped unexpectedly (its traceback is above); exiting", file=sys.stderr)
             rc = 1
@@ -162,14 +180,8 @@ def run_sim(
     if view is not None:
         view.stop()
     sim.stop()
-    if recorder is not None and replay is not None:
-        try:
-            if page is not None:
-                recorder.write(replay, page(recorder.data(), title=f"gazelle replay: {world.name}"))
-            else:
-                recorder.write(replay)
-        except OSError as err:
-            print(f"gazelle: the replay was not written: {err}", file=sys.stderr)
+    if recorder is not None:
+        save_replay()
     bridge.shutdown()
     if fox is not None:
         # it stops in ~0.4 s; one that has not by the time the rest is done is killed: the interpreter's

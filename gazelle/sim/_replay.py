@@ -98,6 +98,7 @@ class ReplayRecorder:
         self._index: tuple[int, tuple[str, ...], np.ndarray] | None = None
         self._frames: list[tuple[float, tuple[str, ...], np.ndarray]] = []
         self._samples = 0
+        self._rate_hz = rate_hz
         self._period = 1.0 / rate_hz
         self._next = -1.0
         self._topics = {t: [] for t in topics}
@@ -169,7 +170,17 @@ class ReplayRecorder:
         return world.generation, tuple(names), np.asarray(ids, dtype=int)
 
     def _on_step(self, info: UpdateInfo) -> None:
-        t = self._time = info.sim_time_sec
+        t = info.sim_time_sec
+        if t < self._time - 1e-9:  # the world was reset: the replay is of the run since (a test's own)
+            with self._lock:
+                self._frames = []
+                self._samples = 0
+                self._period = 1.0 / self._rate_hz
+                for topic, samples in self._topics.items():
+                    samples.clear()
+                    self._topic_period[topic] = self._period
+            self._next = -1.0
+        self._time = t
         if t < self._next - info.dt_sec:  # the listener comes at step boundaries: a step early is on time
             return
         self._next = t + self._period

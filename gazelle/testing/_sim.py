@@ -141,9 +141,11 @@ class Sim:
         start_timeout: float = 60.0,
         record: tuple[str | os.PathLike[str], Sequence[str]] | None = None,
         server_args: Sequence[str] = (),
+        replay: tuple[str | os.PathLike[str], Sequence[str]] | None = None,
     ) -> None:
         """``record``: (folder, topics) to record from the first step (see :meth:`record`); the recorder
-        starts beside the server, so their start-ups overlap."""
+        starts beside the server, so their start-ups overlap. ``replay``: (file, topics): the server keeps
+        a replay page of the run since the last reset there (written at its end, or by :meth:`save_replay`)."""
         self.domain_id = domain_id
         self.seed = seed
         self.paused = paused
@@ -163,7 +165,12 @@ class Sim:
             args.append("--paused")
         if rtf is not None:
             args += ["--rtf", f"{rtf:g}"]
+        self.replay_path = Path(replay[0]) if replay is not None else None
+        if replay is not None:
+            args += ["--replay", str(replay[0]), *[a for t in replay[1] for a in ("--replay-topic", t)]]
         args += list(server_args)
+        self._recorder: ChildProcess | None = None
+        self._record_topics: list[str] = list(record[1]) if record is not None else []
         self.server = self._child("gazelle sim", gazelle_command(*args))
         try:
             m = self.server.wait_line(_READY, start_timeout)
@@ -173,7 +180,7 @@ class Sim:
             # announcement, 3 s later (measured: the step service found 1.0-3.6 s after "ready" with the
             # node made first, 0.1-0.3 s with it made after)
             if record is not None:
-                self.record(*record)
+                self._recorder = self.record(*record)
             self.ros = RosTestNode(domain_id)
             self._kept = len(self.children)
             """The server and its recorder: what a reset keeps running."""
@@ -329,6 +336,44 @@ class Sim:
         names = list(dict.fromkeys([*topics, "/tf", "/tf_static", "/clock"]))
         argv = [str(Path(sys.prefix) / "bin" / "ros2"), "bag", "record", "-o", str(folder), *names]
         return self._child("ros2 bag record", argv)
+
+    def restart_recording(self, folder: str | os.PathLike[str], timeout: float = 30.0) -> Path | None:
+        """Finish the bag the simulation's recorder has written so far (its folder is returned, complete),
+        and record the same topics on into ``folder``; None when nothing was being recorded."""
+        old = self._recorder
+        if old is None:
+            return None
+        old.stop()
+        done = Path(old.argv[old.argv.index("-o") + 1])
+        new = self.record(folder, self._record_topics)
+        self.children.remove(new)
+        self.children[self.children.index(old)] = new  # kept across resets, as the one before
+        self._recorder = new
+        self.wait_for_recorder(timeout)
+        return done
+
+    def save_replay(self, timeout: float = 10.0) -> Path | None:
+        """Have the server write its replay (the run since the last reset) now, and return the file; None
+        when the server keeps no replay."""
+        path = self.replay_path
+        if path is None:
+            return None
+        self._check_server()
+
+        def written() -> int:
+            try:
+                return path.stat().st_mtime_ns
+            except FileNotFoundError:
+                return 0
+
+        before = written()
+        self.server.popen.send_signal(signal.SIGUSR1)
+        deadline = time.monotonic() + timeout
+        while written() == before:
+            if time.monotonic() > deadline:
+                raise SimError(f"the server did not write its replay to {path} within {timeout:g} s")
+            time.sleep(0.02)  # another process writes it: nothing to wait on but the file
+        return path
 
     def wait_for_recorder(self, timeout: float = 30.0) -> None:
         """Wait until the recorder has subscribed (it hears /clock beside the test's node), so that the

@@ -37,6 +37,8 @@ import pytest
 
 _REPORT = pytest.StashKey[dict[str, pytest.TestReport]]()
 _ARTIFACTS = pytest.StashKey[tuple[Path, int]]()
+_MODULE_BAGS = pytest.StashKey[tuple[Path, list[int]]]()
+"""A module's shared server: the folder of its live recording and how many bags it has handed out."""
 TOKEN_VAR = "GAZELLE_TEST_TOKEN"
 """Set in the environment of everything a test starts, so a process left behind can be found."""
 
@@ -135,8 +137,7 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
     world = options.get("world")
     config = request.config
     mode = config.getoption("--gazelle-artifacts")
-    base = Path(config.getoption("--gazelle-artifacts-dir") or Path(config.rootpath) / "gazelle-artifacts")
-    folder = base / _safe(request.node.nodeid)
+    folder = _artifacts_base(config) / _safe(request.node.nodeid)
     request.node.stash[_ARTIFACTS] = (folder, gazelle_seed)
     if folder.exists():
         shutil.rmtree(folder)
@@ -160,11 +161,7 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
                 record=(folder / "bag", record) if mode != "none" else None,
                 # the server writes the replay page as it stops: the bodies from above on a timeline, the
                 # recorded topics' values at the cursor (those the simulation publishes)
-                server_args=(
-                    ["--replay", str(folder / "replay.html"), *[a for t in record for a in ("--replay-topic", t)]]
-                    if mode != "none"
-                    else []
-                ),
+                replay=(folder / "replay.html", record) if mode != "none" else None,
             )
         except Exception as err:
             pytest.fail(f"gazelle_sim did not start: {err}", pytrace=False)
@@ -193,11 +190,16 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
             pytest.fail(f"the test left {len(leaks)} process(es) running (killed now): {listed}", pytrace=False)
 
 
+def _artifacts_base(config: pytest.Config) -> Path:
+    return Path(config.getoption("--gazelle-artifacts-dir") or Path(config.rootpath) / "gazelle-artifacts")
+
+
 @pytest.fixture(scope="module")
 def gazelle_sim_module(request: pytest.FixtureRequest) -> Iterator[Any]:
     """One server for every test of a module (options from the module's ``pytestmark =
     pytest.mark.gazelle(...)``); use it through ``gazelle_shared_sim``, which resets it for each test.
-    No failure bag: use ``gazelle_sim`` for tests that should leave one."""
+    Unless ``--gazelle-artifacts=none``, the module's bag is recorded and its server keeps a replay of
+    the run since the last reset: a failing test gets both (see ``gazelle_shared_sim``)."""
     try:
         from ._domain import reserve_domain
         from ._sim import Sim
@@ -205,31 +207,77 @@ def gazelle_sim_module(request: pytest.FixtureRequest) -> Iterator[Any]:
         pytest.fail(f"gazelle_sim_module needs ROS 2 (rclpy) in this environment: {err}", pytrace=False)
     options = _marker_options(request)
     world = options.get("world")
+    record = list(options.get("record", ()))
     seed = options.get("seed", request.config.getoption("--gazelle-seed"))
+    mode = request.config.getoption("--gazelle-artifacts")
+    live = _artifacts_base(request.config) / (_safe(request.node.nodeid) + "__module")
+    if live.exists():
+        shutil.rmtree(live)
+    if mode != "none":
+        live.mkdir(parents=True)
     domain = reserve_domain()
     sim = None
     try:
         try:
-            sim = Sim(domain_id=domain.domain_id, world=world, seed=int(seed or 0), paused=True)
+            sim = Sim(
+                domain_id=domain.domain_id,
+                world=world,
+                seed=int(seed or 0),
+                paused=True,
+                record=(live / "bag0", record) if mode != "none" else None,
+                replay=(live / "replay.html", record) if mode != "none" else None,
+            )
         except Exception as err:
             pytest.fail(f"gazelle_sim_module did not start: {err}", pytrace=False)
+        request.node.stash[_MODULE_BAGS] = (live, [0])
         yield sim
     finally:
         if sim is not None:
             sim.close()
         domain.release()
+        shutil.rmtree(live, ignore_errors=True)  # what a failing test needed was moved out of it
 
 
 @pytest.fixture
-def gazelle_shared_sim(gazelle_sim_module: Any) -> Iterator[Any]:
+def gazelle_shared_sim(request: pytest.FixtureRequest, gazelle_sim_module: Any) -> Iterator[Any]:
     """The module's server, reset for this test (time 0, spawned entities gone, the last test's
-    processes stopped): a fraction of a second instead of a new server."""
+    processes stopped): a fraction of a second instead of a new server. A failing test gets the replay
+    of its own run (the server's, since the reset before it), the module's bag since its start or its
+    last failure (this test's part is its end) and the server's log, under its artifacts folder."""
     from ._domain import environ_applied
 
     sim = gazelle_sim_module
+    mode = request.config.getoption("--gazelle-artifacts")
+    folder = _artifacts_base(request.config) / _safe(request.node.nodeid)
+    request.node.stash[_ARTIFACTS] = (folder, sim.seed)
     sim.reset()
-    with environ_applied({k: sim.env[k] for k in ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE")}):
-        yield sim
+    try:
+        with environ_applied({k: sim.env[k] for k in ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE")}):
+            yield sim
+    finally:
+        reports = request.node.stash.get(_REPORT, {})
+        module = request.node.getparent(pytest.Module)
+        bags = module.stash.get(_MODULE_BAGS, None) if module is not None else None
+        if bags is not None and mode != "none" and (mode == "all" or any(r.failed for r in reports.values())):
+            _keep_shared_artifacts(sim, folder, *bags)
+
+
+def _keep_shared_artifacts(sim: Any, folder: Path, live: Path, handed_out: list[int]) -> None:
+    """Move a shared server's replay, bag so far and log into a test's artifacts folder (the recording
+    goes on in a new bag for the module's next tests)."""
+    if folder.exists():
+        shutil.rmtree(folder)
+    folder.mkdir(parents=True)
+    try:
+        replay = sim.save_replay()
+        if replay is not None:
+            shutil.copyfile(replay, folder / "replay.html")
+        handed_out[0] += 1
+        bag = sim.restart_recording(live / f"bag{handed_out[0]}")
+        if bag is not None and bag.exists():
+            shutil.move(str(bag), str(folder / "bag"))
+    finally:
+        (folder / "server.log").write_text(sim.server.output + "\n")
 
 
 @pytest.fixture

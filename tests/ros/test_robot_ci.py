@@ -7,6 +7,7 @@ through its pytest11 entry point), with its own artifacts folder.
 
 from __future__ import annotations
 
+import json
 import os
 import subprocess
 import sys
@@ -161,9 +162,10 @@ import pytest
 from nav_msgs.msg import Odometry
 
 ROBOT = {robot!r}
+pytestmark = pytest.mark.gazelle(record=["/odom"])
 
 
-@pytest.mark.parametrize("run", range(3))
+@pytest.mark.parametrize("run", range(4))
 def test_each_test_starts_from_a_reset_world(gazelle_shared_sim, run):
     sim = gazelle_shared_sim
     assert sim.time < 0.05, sim.time  # back at the start
@@ -172,15 +174,36 @@ def test_each_test_starts_from_a_reset_world(gazelle_shared_sim, run):
     sim.run_for(0.5)
     odom.wait(1, 10)
     assert 0.45 <= sim.time <= 0.55
+    assert run != 1, "the second test fails on purpose"
 """
 
 
-def test_a_module_shares_one_server_reset_before_each_test(tmp_path: Path) -> None:
+def test_a_module_shares_one_server_reset_before_each_test_and_a_failing_one_keeps_its_artifacts(
+    tmp_path: Path,
+) -> None:
     robot = REPO / "examples" / "simple_robot" / "simple_robot" / "robot.urdf.xacro"
     (tmp_path / "test_shared.py").write_text(SHARED.format(robot=str(robot)))
     out, mark = inner_pytest(["test_shared.py"], tmp_path)
-    assert out.returncode == 0, out.stdout[-4000:] + out.stderr[-2000:]
-    assert "3 passed" in out.stdout
+    assert out.returncode == 1, out.stdout[-4000:] + out.stderr[-2000:]
+    assert "1 failed, 3 passed" in out.stdout  # the tests after the failing one ran on, recorded anew
+    folders = [f for f in (tmp_path / "artifacts").iterdir() if f.is_dir()]
+    assert [f.name for f in folders] == ["test_shared.py_test_each_test_starts_from_a_reset_world_1"], folders
+    kept = folders[0]
+    assert f"artifacts (bag, replay.html, server log): {kept}" in out.stdout
+    # its replay: its own run only (the server's since the reset before it), half a second of the robot
+    text = (kept / "replay.html").read_text()
+    data = json.loads(text.split('<script id="data" type="application/json">', 1)[1].split("</script>", 1)[0])
+    times = [f[0] for f in data["frames"]]
+    assert times and times[0] < 0.05 and 0.4 < times[-1] <= 0.55, times[:3] + times[-3:]
+    assert times == sorted(times)  # not the test before it too (its run started at 0 as well)
+    assert any(name.startswith("robot::") for name in data["frames"][-1][1])
+    # the module's bag up to the failure: /odom of the two tests so far, readable
+    from mcap_ros2.reader import read_ros2_messages
+
+    (bag,) = list((kept / "bag").glob("*.mcap"))
+    odom = [m for m in read_ros2_messages(str(bag)) if m.channel.topic == "/odom"]
+    assert len(odom) > 10
+    assert "gazelle: ready" in (kept / "server.log").read_text()
     assert survivors(mark) == []
 
 
