@@ -24,6 +24,7 @@ import copy
 import logging
 import os
 import re
+import sys
 import time
 from pathlib import Path
 
@@ -129,6 +130,55 @@ def rss_child(n: int) -> int:
     return 0
 
 
+def rss_child_arms(n: int) -> int:
+    """In a fresh process: RSS of a session (Simulation + RosBridge) holding ``n`` namespaced r6bot arms
+    (ros2_control_demos' example 7), each with its joint_state_broadcaster and joint_trajectory_controller
+    active; prints ``imports total`` in MiB."""
+    import mujoco  # noqa: F401
+    import rclpy  # noqa: F401
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+    from _paths import REAL, REPO
+
+    from gazelle.description import Pose, load
+    from gazelle.ros import RosBridge
+    from gazelle.sim import Simulation
+    from gazelle.systems.ros2_control import ControllerManager, load_params
+    from gazelle.worlds import default_world
+
+    os.environ["GAZELLE_RESOURCE_PATH"] = str(REAL / "ros2_control_r6bot")
+    imports = _rss_mib()
+    sim = Simulation(default_world(), rtf=0)
+    model = load(REAL / "ros2_control_r6bot" / "_xacro_expanded" / "r6bot.urdf").value
+    params = load_params(REPO / "tests" / "data" / "ros2_control" / "r6bot_jtc.yaml")
+    for i in range(n):
+        entity = sim.spawn(model, name=f"arm{i}", namespace=f"arm{i}", pose=Pose((1.5 * i, 0.0, 0.0)))
+        cm = next(s for s in entity.systems if isinstance(s, ControllerManager))
+        cm.files.append(params)
+        for c in ("joint_state_broadcaster", "joint_trajectory_controller"):
+            cm.load_controller(c)
+            cm.configure_controller(c)
+        cm.switch_controller(["joint_state_broadcaster", "joint_trajectory_controller"], [])
+    bridge = RosBridge(sim, clock_rate_hz=100.0)
+    sim.step(100)
+    print(f"{imports:.0f} {_rss_mib():.0f} {sim.world.model.nmesh}", flush=True)
+    bridge.shutdown()
+    return 0
+
+
+def rss_table_arms(n: int) -> None:
+    import subprocess
+
+    out = subprocess.run(
+        [sys.executable, __file__, "--rss-child-arms", str(n)], capture_output=True, text=True, check=True
+    ).stdout.split()
+    imports, total, meshes = float(out[0]), float(out[1]), int(out[2])
+    print(
+        f"  {n} r6bot arm{'s' if n > 1 else ''} (JTC + JSB each) {total:>6.0f} MiB  ({meshes} meshes in the model: "
+        f"one copy of each however many arms; imports {imports:.0f} MiB)"
+    )
+
+
 def rss_table(counts: list[int]) -> None:
     """RSS of a gazelle session (in a fresh process per count) and what dominates it."""
     import subprocess
@@ -148,6 +198,8 @@ def main() -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--counts", default="1,10,100", help="robot counts (default 1,10,100)")
     p.add_argument("--rss-child", type=int, default=-1, help=argparse.SUPPRESS)
+    p.add_argument("--rss-child-arms", type=int, default=-1, help=argparse.SUPPRESS)
+    p.add_argument("--arms", type=int, default=20, help="r6bot arms in the memory table (default 20; 0: none)")
     p.add_argument("--no-rss", action="store_true", help="skip the memory table")
     p.add_argument("--seconds", type=float, default=5.0, help="wall seconds of the ROS measurement (default 5)")
     p.add_argument("--steps", type=int, default=0, help="steps of the in-process measurements (default: ~3 s worth)")
@@ -155,6 +207,8 @@ def main() -> int:
     logging.disable(logging.CRITICAL)
     if opts.rss_child >= 0:
         return rss_child(opts.rss_child)
+    if opts.rss_child_arms >= 0:
+        return rss_child_arms(opts.rss_child_arms)
     t_all = time.perf_counter()
     from gazelle.ros import RosBridge
 
@@ -185,6 +239,9 @@ def main() -> int:
     print("RTF = steps/s x dt. 'gazelle + ROS' runs the sim thread at rtf=0 with RosBridge up (no subscribers).")
     if not opts.no_rss:
         rss_table([0, 1, 100])
+    if opts.arms:
+        print("\nmemory of arms (RSS of a fresh process: Simulation + RosBridge):")
+        rss_table_arms(opts.arms)
     print(f"bench took {time.perf_counter() - t_all:.1f} s")
     return 0
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 import pytest
-from _paths import BOX, SEED_XACRO
+from _paths import BOX, REAL, SEED_XACRO
 
 from gazelle.description import Pose, load, load_string
 from gazelle.sim import Simulation, SpawnRequest
@@ -161,3 +161,27 @@ def test_batch_spawn_keeps_the_others(batch: bool) -> None:
     sim.step(CHUNK)
     ref.step(CHUNK)
     assert_same(snapshot(ref), snapshot(sim), "after the spawn")
+
+
+def test_robots_with_the_same_meshes_share_one_copy_which_goes_with_the_last_of_them(monkeypatch) -> None:
+    """Issue 29: every arm copied its 88,755 mesh vertices (20 r6bot arms: 140 meshes, 762 MiB); a mesh is
+    now in the model once however many robots use it, and leaves it with the last one."""
+    monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(REAL / "ros2_control_r6bot"))
+    model = load(REAL / "ros2_control_r6bot" / "_xacro_expanded" / "r6bot.urdf").value
+    sim = Simulation(default_world(), rtf=0)
+    base = sim.world.model.nmesh
+    sim.spawn(model, name="a0")
+    one = sim.world.model.nmesh - base
+    assert one > 0
+    for i in (1, 2):
+        sim.spawn(model, name=f"a{i}", pose=Pose((1.5 * i, 0.0, 0.0)))
+    assert sim.world.model.nmesh - base == one  # not 3 copies
+    sim.step(100)
+    sim.delete("a0")
+    sim.delete("a1")
+    assert sim.world.model.nmesh - base == one  # a2 still uses them
+    sim.step(10)
+    sim.delete("a2")
+    assert sim.world.model.nmesh == base  # gone with the last arm
+    sim.spawn(model, name="again")
+    assert sim.world.model.nmesh - base == one

@@ -41,6 +41,7 @@ same robot still feel the kinematic link's inertia but not its weight.
 
 from __future__ import annotations
 
+import hashlib
 import logging
 import math
 from dataclasses import dataclass, field
@@ -59,6 +60,7 @@ from ..description import (
     JointType,
     Link,
     Mesh,
+    MeshLook,
     MeshReadError,
     Model,
     Plane,
@@ -233,10 +235,8 @@ def _add_geom(
                 mujoco.mju_mulQuat(qq, np.asarray(col.pose.orientation, dtype=float), np.asarray(q))
                 kwargs["quat"] = list(qq)
     elif isinstance(g, Cone):
-        mesh_name = f"{name}__cone"
-        mesh = spec.add_mesh(name=mesh_name)
-        mesh.uservert = list(cone_vertices(g.radius, g.length).ravel())
-        kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh_name)
+        mesh = _shared_mesh(spec, "collision", cone_vertices(g.radius, g.length))
+        kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh.name)
     elif isinstance(g, Mesh):
         # a collision mesh that cannot be found or read is left out with a warning naming it, and the rest
         # of the model is built: gz-sim loads a world whose mesh fails to load without that geometry
@@ -252,18 +252,13 @@ def _add_geom(
             _log.warning(f"{where}collision '{col.name}': {err}; it is left out")
             return
         if parts is None:  # convex: the mesh itself
-            mesh_name = f"{name}__mesh"
-            mesh = spec.add_mesh(name=mesh_name)
             vertices, faces = _load_mesh(g.path)
-            mesh.uservert = list((vertices * np.asarray(g.scale)).ravel())
-            mesh.userface = list(faces.ravel())
-            kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh_name)
+            mesh = _shared_mesh(spec, "collision", vertices * np.asarray(g.scale), faces)
+            kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh.name)
         else:  # not convex: one geom per convex part (see _convex)
             kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH)
-            for i, piece in enumerate(parts.pieces):
-                mesh = spec.add_mesh(name=f"{name}__part{i}")
-                mesh.uservert = list(np.asarray(piece, dtype=float).ravel())
-                piece_names.append(mesh.name)
+            for piece in parts.pieces:
+                piece_names.append(_shared_mesh(spec, "collision", np.asarray(piece, dtype=float)).name)
             if decomposed is not None:
                 decomposed.append((g.path, len(piece_names), parts.seconds, parts.source))
     else:  # pragma: no cover - the union is closed
@@ -329,35 +324,65 @@ def _add_visual_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, vis: Visual, nam
                 _log.warning(f"visual '{vis.name}': {err}; it is not in the physics model (cameras will not see it)")
                 return False
             scale = tuple(g.scale)
-        mesh = spec.add_mesh(name=f"{name}__vmesh")
-        mesh.uservert = list((np.asarray(vertices, dtype=float) * np.asarray(scale)).ravel())
-        if faces is not None:
-            mesh.userface = list(np.asarray(faces).ravel())
-        mesh.inertia = mujoco.mjtMeshInertia.mjMESH_INERTIA_SHELL  # open visual meshes have no volume
+        look = load_mesh_look(g.path) if isinstance(g, Mesh) and g.path is not None and vis.material is None else None
+        texcoord = None
+        if look is not None and look.image is not None and look.uv is not None:
+            texcoord = np.array(look.uv, dtype=float)
+            texcoord[:, 1] = 1.0 - texcoord[:, 1]  # MuJoCo's images start at their top row, the file's v at the bottom
+        mesh = _shared_mesh(spec, "visual", np.asarray(vertices, dtype=float) * np.asarray(scale), faces, texcoord)
         kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh.name)
-        if isinstance(g, Mesh) and g.path is not None and vis.material is None:
-            _use_mesh_look(spec, mesh, g.path, name, kwargs)
+        if look is not None:
+            _use_mesh_look(spec, look, name, kwargs)
     else:  # pragma: no cover - the union is closed
         return False
     body.add_geom(**kwargs)
     return True
 
 
-def _use_mesh_look(spec: mujoco.MjSpec, mesh: mujoco.MjsMesh, path: str, name: str, kwargs: dict) -> None:
-    """A visual mesh without an SDF/URDF ``<material>`` looks as its file says: its texture (COLLADA,
-    OBJ), else its material's colour. With a ``<material>``, that one is used instead, as gz-sim does
-    (``src/rendering/SceneManager.cc``: the visual's material is set on the geometry; a mesh without
-    one keeps its own submeshes' materials)."""
-    look = load_mesh_look(path)
+SHARED_MESH = "mesh" + SEP
+"""Meshes are named by their content, so every entity with the same mesh uses one copy (20 arms, one set
+of arm meshes); a mesh leaves the model with the last geom that uses it (see PhysicsWorld)."""
+
+
+def _shared_mesh(
+    spec: mujoco.MjSpec,
+    kind: str,
+    vertices: np.ndarray,
+    faces: np.ndarray | None = None,
+    texcoord: np.ndarray | None = None,
+) -> mujoco.MjsMesh:
+    """The spec's mesh with these vertices (and faces, texture coordinates), added if it is not there yet.
+    ``kind`` ("collision", "visual") keeps meshes MuJoCo processes differently apart."""
+    verts = np.ascontiguousarray(vertices, dtype=float)
+    digest = hashlib.sha256(kind.encode())
+    digest.update(verts.tobytes())
+    for extra in (faces, texcoord):
+        digest.update(b"|" + (np.ascontiguousarray(extra).tobytes() if extra is not None else b""))
+    name = f"{SHARED_MESH}{digest.hexdigest()[:24]}"
+    mesh = spec.mesh(name)
+    if mesh is None:
+        mesh = spec.add_mesh(name=name)
+        mesh.uservert = list(verts.ravel())
+        if faces is not None:
+            mesh.userface = list(np.asarray(faces).ravel())
+        if texcoord is not None:
+            mesh.usertexcoord = list(np.asarray(texcoord, dtype=float).ravel())
+        if kind == "visual":
+            mesh.inertia = mujoco.mjtMeshInertia.mjMESH_INERTIA_SHELL  # open visual meshes have no volume
+    return mesh
+
+
+def _use_mesh_look(spec: mujoco.MjSpec, look: MeshLook, name: str, kwargs: dict) -> None:
+    """A visual mesh without an SDF/URDF ``<material>`` looks as its file says (``look``): its texture
+    (COLLADA, OBJ; the mesh carries the texture coordinates), else its material's colour. With a
+    ``<material>``, that one is used instead, as gz-sim does (``src/rendering/SceneManager.cc``: the
+    visual's material is set on the geometry; a mesh without one keeps its own submeshes' materials)."""
     if look.image is not None and look.uv is not None:
         h, w = look.image.shape[:2]
         tex = spec.add_texture(name=f"{name}__tex", type=mujoco.mjtTexture.mjTEXTURE_2D, width=w, height=h, nchannel=3)
         tex.data = look.image.tobytes()
         material = spec.add_material(name=f"{name}__mat", rgba=[1.0, 1.0, 1.0, 1.0])
         material.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = tex.name
-        uv = np.array(look.uv, dtype=float)
-        uv[:, 1] = 1.0 - uv[:, 1]  # MuJoCo's images start at their top row, the file's v at the bottom
-        mesh.usertexcoord = list(uv.ravel())
         kwargs["material"] = material.name
         kwargs.pop("rgba", None)
     elif look.rgba is not None:

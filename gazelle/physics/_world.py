@@ -23,6 +23,7 @@ from ..description import Light, Model, Pose, World, excerpt, quat_conj, quat_ro
 from ._builder import (
     JOINT_ARMATURE,
     SEP,
+    SHARED_MESH,
     BuildError,
     BuiltEntity,
     add_model,
@@ -476,7 +477,12 @@ class PhysicsWorld:
             if body.name.startswith(prefix):
                 self.spec.delete(body)
         for mesh in list(self.spec.meshes):
-            if mesh.name.startswith(prefix):
+            if mesh.name.startswith(prefix) and not mesh.name.startswith(SHARED_MESH):
+                self.spec.delete(mesh)
+        # a mesh shared by content goes with the last geom that used it (see the builder's _shared_mesh)
+        used = {g.meshname for g in self.spec.geoms if g.meshname}
+        for mesh in list(self.spec.meshes):
+            if mesh.name.startswith(SHARED_MESH) and mesh.name not in used:
                 self.spec.delete(mesh)
         for material in list(self.spec.materials):  # a visual mesh's own texture (see the builder)
             if material.name.startswith(prefix):

@@ -13,7 +13,10 @@ from _paths import REPO
 BENCHES = [
     (["bench_rtf.py", "--smoke"], "ratios vs raw Python-loop mj_step"),
     (["bench_control.py", "--smoke"], "ratio JTC / manager without controllers"),
-    (["bench_multi_robot.py", "--counts", "1", "--seconds", "0.5", "--steps", "200", "--no-rss"], "bench took"),
+    (
+        ["bench_multi_robot.py", "--counts", "1", "--seconds", "0.5", "--steps", "200", "--no-rss", "--arms", "2"],
+        "bench took",
+    ),
     (["bench_spawn.py", "--reps", "1"], "spawn_many"),
     (["bench_planning.py", "--goals", "1", "--ik", "5", "--no-sim"], "plan (IK + RRT-Connect"),
     (["bench_load.py", "-n", "1"], "slowest load"),
