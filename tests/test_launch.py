@@ -350,17 +350,25 @@ def test_respawn_restarts_a_process_and_xacro_runs_with_ros2_run(prefix, tmp_pat
         prefix / "share" / "demo_pkg" / "launch" / "respawn.launch.py",
         f"""
         from launch import LaunchDescription
-        from launch.actions import ExecuteProcess, Shutdown, TimerAction
+        from launch.actions import ExecuteProcess, RegisterEventHandler, Shutdown, TimerAction
+        from launch.event_handlers import OnProcessExit
 
         COUNT = {str(counter)!r}
         CODE = "import os; p = COUNT; n = int(open(p).read()) + 1 if os.path.exists(p) else 1; open(p, 'w').write(str(n))"
 
 
         def generate_launch_description():
+            flaky = ExecuteProcess(cmd=["python3", "-c", CODE.replace("COUNT", repr(COUNT))], name="flaky",
+                                   respawn=True, respawn_delay=0.2)
+            # enough once it has run three times (counted, not timed: a busy machine starts it slowly)
+            enough = OnProcessExit(
+                target_action=flaky,
+                on_exit=lambda event, context: [Shutdown(reason="enough")] if int(open(COUNT).read()) >= 3 else [],
+            )
             return LaunchDescription([
-                ExecuteProcess(cmd=["python3", "-c", CODE.replace("COUNT", repr(COUNT))], name="flaky",
-                               respawn=True, respawn_delay=0.2),
-                TimerAction(period=2.0, actions=[Shutdown(reason="enough")]),
+                flaky,
+                RegisterEventHandler(enough),
+                TimerAction(period=60.0, actions=[Shutdown(reason="too long")]),
             ])
         """,
     )

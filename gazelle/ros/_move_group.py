@@ -52,6 +52,7 @@ from moveit_msgs.srv import (
     GetPositionIK,
     GetStateValidity,
 )
+from rclpy._rclpy_pybind11 import RCLError
 from rclpy.action.client import ActionClient
 from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
 from rclpy.callback_groups import ReentrantCallbackGroup
@@ -1348,6 +1349,11 @@ def move_group_main(argv: list[str]) -> int:
         executor.spin()
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
+    except RCLError:
+        # the signal's shutdown of the context landed while the executor was making its next wait set
+        # ("the given context is not valid"): the same orderly end; any other rcl error is a real one
+        if rclpy.ok():
+            raise
     finally:
         executor.shutdown()
         node.destroy_node()

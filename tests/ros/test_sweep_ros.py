@@ -35,7 +35,10 @@ def drive(gazelle_sim, params, seed):
     cmd.publish(twist)
     gazelle_sim.run_until(lambda: odom.last is not None and odom.last.twist.twist.linear.x > 0.5 * twist.linear.x,
                           timeout=5.0, what="moving")
-    gazelle_sim.run_for(2.0)
+    end = gazelle_sim.run_for(2.0)
+    # the odometry of that moment (on a busy machine /odom can be heard after /clock)
+    stamp = lambda m: m.header.stamp.sec + 1e-9 * m.header.stamp.nanosec
+    ros.wait_until(lambda: stamp(odom.last) >= end - 0.011, 30, "/odom at the end")
     x = odom.last.pose.pose.position.x
     # every run drove alone: no other run's robot, no other run's command on this domain
     publishers = ros.node.count_publishers("/cmd_vel")
