@@ -1352,7 +1352,7 @@ def move_group_main(argv: list[str]) -> int:
     except RCLError:
         # the signal's shutdown of the context landed while the executor was making its next wait set
         # ("the given context is not valid"): the same orderly end; any other rcl error is a real one
-        if rclpy.ok():
+        if node.context.ok():
             raise
     finally:
         executor.shutdown()
