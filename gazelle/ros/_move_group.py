@@ -1346,14 +1346,7 @@ def move_group_main(argv: list[str]) -> int:
     executor = MultiThreadedExecutor(num_threads=4)
     executor.add_node(node)
     try:
-        executor.spin()
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
-    except RCLError:
-        # the signal's shutdown of the context landed while the executor was making its next wait set
-        # ("the given context is not valid"): the same orderly end; any other rcl error is a real one
-        if node.context.ok():
-            raise
+        spin_until_shutdown(executor, node)
     finally:
         executor.shutdown()
         node.destroy_node()
@@ -1364,6 +1357,20 @@ def move_group_main(argv: list[str]) -> int:
     sys.stdout.flush()
     sys.stderr.flush()
     os._exit(0)
+
+
+def spin_until_shutdown(executor: Any, node: Node) -> None:
+    """Spin until Ctrl-C (or SIGTERM) shuts the node's context down, however the shutdown lands: as an
+    interrupt, as rclpy's ExternalShutdownException, or as the RCLError "the given context is not valid"
+    when it came while the executor was making its next wait set (seen under load). Any other rcl error,
+    with the context still up, is a real one and is raised."""
+    try:
+        executor.spin()
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass
+    except RCLError:
+        if node.context.ok():
+            raise
 
 
 def _check_srdf(text: str, source: str) -> None:

@@ -174,3 +174,34 @@ def test_ctrl_c_ends_move_group_at_once_and_quietly(yumi):
     assert rc == 0, after
     assert took < 1.5, f"{took:.2f} s"
     assert "never retrieved" not in after and "Traceback" not in after and "Error" not in after, after
+
+
+def test_a_shutdown_that_lands_while_the_executor_makes_its_wait_set_ends_move_group_quietly() -> None:
+    """The Ctrl-C test failed once under a CPU hog: rclpy's signal handler shut the context down while the
+    executor was making its next wait set, and rcl raised "the given context is not valid", printed with
+    its traceback. That is an orderly end; an rcl error with the context still up is not."""
+    import rclpy
+    from rclpy._rclpy_pybind11 import RCLError
+
+    from gazelle.ros._move_group import spin_until_shutdown
+
+    context = rclpy.Context()
+    rclpy.init(context=context, domain_id=int(os.environ.get("ROS_DOMAIN_ID", "0")))
+    node = rclpy.create_node("spin_probe", context=context)
+
+    class ShutDownMidSpin:
+        def spin(self) -> None:
+            context.try_shutdown()  # what the signal handler does, between two waits
+            raise RCLError("failed to initialize wait set: the given context is not valid")
+
+    class BrokenRcl:
+        def spin(self) -> None:
+            raise RCLError("something else went wrong")
+
+    try:
+        with pytest.raises(RCLError, match="something else"):
+            spin_until_shutdown(BrokenRcl(), node)  # the context is up: a real error
+        spin_until_shutdown(ShutDownMidSpin(), node)  # returns: the end Ctrl-C asked for
+    finally:
+        node.destroy_node()
+        context.try_shutdown()
