@@ -55,15 +55,19 @@ def render() -> str:
     from gazelle.systems import _registry
     from gazelle.systems.robot_state import RSP_PLUGIN, RobotStateConfig
 
-    by_factory: dict = defaultdict(list)
+    by_class: dict = defaultdict(list)
+    made: dict = {}
     for name, factory in _registry._REGISTRY.items():
-        by_factory[factory].append(name)
-    for name, (factory, _types) in _registry._SENSOR_PLUGINS.items():
-        by_factory[factory].append(name)
-    sections: list[tuple[str, list[str], type, type]] = []
-    for factory, names in by_factory.items():
         system = factory()
-        sections.append((type(system).__name__, names, type(system), type(system.config)))
+        made.setdefault(type(system), system)
+        by_class[type(system)].append(name)
+    for name, (factory, _types) in _registry._sensor_tables()[0].items():
+        system = factory()
+        made.setdefault(type(system), system)
+        by_class[type(system)].append(name)
+    sections: list[tuple[str, list[str], type, type]] = []
+    for cls, names in by_class.items():
+        sections.append((cls.__name__, names, cls, type(made[cls].config)))
     from gazelle.systems.robot_state import RobotStatePublisher
 
     sections.append(("RobotStatePublisher (built in)", [RSP_PLUGIN], RobotStatePublisher, RobotStateConfig))

@@ -390,3 +390,25 @@ def test_did_you_mean_offers_a_typo_its_plugin_and_another_plugin_nothing():
     assert "did you mean 'gz-sim-diff-drive-system'?" in problem("gz-sim-diff-drive-sytem")
     assert "did you mean 'libgazebo_ros_diff_drive.so'?" in problem("libgazebo_ros_diff_drve.so")
     assert "did you mean 'libgazebo_ros_imu_sensor.so'?" in problem("libgazebo_ros_imu_sensr.so")
+
+
+def test_every_sensor_kind_declares_what_runs_it_and_the_registry_is_derived_from_that() -> None:
+    """Issue 32: a sensor's SDF types, its gazebo_ros plugins and its gz-sim world system are declared on
+    its class (one place); the registry's tables come from those declarations. Before, they were spelled
+    in three tables, and a sensor without an entry in a fourth was silently a lidar."""
+    from gazelle.systems import _registry
+    from gazelle.systems.sensors import OUTPUT_MESSAGES, SENSOR_SYSTEMS, Camera, GpsSensor, ImuSensor, Lidar
+
+    assert len(SENSOR_SYSTEMS) == 8
+    for cls in SENSOR_SYSTEMS:
+        assert cls.sdf_types and cls.sdf_types <= _registry.SDF_SENSOR_TYPES, cls
+        assert cls.gz_system, cls
+        kind = getattr(cls, "output_kind", None)
+        assert kind is None or kind in OUTPUT_MESSAGES, cls  # every output is one sensor_output knows
+    plugins, world = _registry._sensor_tables()
+    assert plugins["gazebo_ros_ray_sensor"] == (Lidar, Lidar.sdf_types)
+    assert plugins["gazebo_ros_depth_camera"][0] is Camera and "camera" not in plugins["gazebo_ros_depth_camera"][1]
+    for spelling in ("gz-sim-imu-system", "gz::sim::systems::Imu", "ignition::gazebo::systems::Imu"):
+        assert world[spelling] == {"imu": ImuSensor}
+    assert world["gz-sim-navsat-system"] == {"gps": GpsSensor, "navsat": GpsSensor}
+    assert world["gz-sim-sensors-system"]["gpu_lidar"] is Lidar and world["gz-sim-sensors-system"]["rgbd"] is Camera

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import logging
 import re
 from collections.abc import Callable
@@ -65,46 +66,10 @@ def _joint_commands() -> System:
     return JointCommands()
 
 
-def _lidar() -> System:
-    from .sensors import Lidar
-
-    return Lidar()
-
-
 def _imu() -> System:
     from .sensors import ImuSensor
 
     return ImuSensor()
-
-
-def _camera() -> System:
-    from .sensors import Camera
-
-    return Camera()
-
-
-def _contact() -> System:
-    from .sensors import ContactSensor
-
-    return ContactSensor()
-
-
-def _gps() -> System:
-    from .sensors import GpsSensor
-
-    return GpsSensor()
-
-
-def _altimeter() -> System:
-    from .sensors import AltimeterSensor
-
-    return AltimeterSensor()
-
-
-def _magnetometer() -> System:
-    from .sensors import Magnetometer
-
-    return Magnetometer()
 
 
 def _force_torque() -> System:
@@ -157,49 +122,35 @@ _REGISTRY: dict[str, Callable[[], System]] = {
     "ign_ros2_control::IgnitionROS2ControlPlugin": _controller_manager,
 }
 
-_SENSOR_PLUGINS: dict[str, tuple[Callable[[], System], frozenset[str]]] = {
-    "gazebo_ros_ray_sensor": (_lidar, frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"})),
-    "gazebo_ros_laser": (_lidar, frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"})),
-    "gazebo_ros_gpu_laser": (_lidar, frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"})),
-    "gazebo_ros_imu_sensor": (_imu, frozenset({"imu"})),
-    "gazebo_ros_camera": (_camera, frozenset({"camera", "depth", "depth_camera", "rgbd_camera", "rgbd"})),
-    "gazebo_ros_depth_camera": (_camera, frozenset({"depth", "depth_camera", "rgbd_camera", "rgbd"})),
-    "gazebo_ros_openni_kinect": (_camera, frozenset({"depth", "depth_camera", "rgbd_camera", "rgbd"})),
-    "gazebo_ros_bumper": (_contact, frozenset({"contact"})),
-    "gazebo_ros_gps_sensor": (_gps, frozenset({"gps", "navsat"})),
-}
-"""gazebo_ros plugins that sit inside a ``<sensor>``: the system and the sensor types they take."""
 
-_LIDARS = ("ray", "gpu_ray", "lidar", "gpu_lidar")
-_CAMERAS = ("camera", "depth", "depth_camera", "rgbd_camera", "rgbd")
-GZ_SENSOR_WORLD_SYSTEMS: dict[str, dict[str, Callable[[], System]]] = {
-    **{
-        n: {**dict.fromkeys(_LIDARS, _lidar), **dict.fromkeys(_CAMERAS, _camera)}
-        for n in ("gz-sim-sensors-system", "gz::sim::systems::Sensors", "ignition-gazebo-sensors-system")
-    },
-    **{n: {"imu": _imu} for n in ("gz-sim-imu-system", "gz::sim::systems::Imu", "ignition-gazebo-imu-system")},
-    **{
-        n: {"contact": _contact}
-        for n in ("gz-sim-contact-system", "gz::sim::systems::Contact", "ignition-gazebo-contact-system")
-    },
-    **{
-        n: {"gps": _gps, "navsat": _gps}
-        for n in ("gz-sim-navsat-system", "gz::sim::systems::NavSat", "ignition-gazebo-navsat-system")
-    },
-    **{
-        n: {"altimeter": _altimeter}
-        for n in ("gz-sim-altimeter-system", "gz::sim::systems::Altimeter", "ignition-gazebo-altimeter-system")
-    },
-    **{
-        n: {"magnetometer": _magnetometer}
-        for n in ("gz-sim-magnetometer-system", "gz::sim::systems::Magnetometer", "ignition-gazebo-magnetometer-system")
-    },
-    **{
-        n: {"force_torque": _force_torque}
-        for n in ("gz-sim-forcetorque-system", "gz::sim::systems::ForceTorque", "ignition-gazebo-forcetorque-system")
-    },
-}
-"""gz-sim world systems that run the sensors of a type that have no gazebo_ros plugin."""
+def _gz_spellings(name: str) -> tuple[str, ...]:
+    """Every way a world names gz-sim's system ``name`` (``Imu``): gz and Ignition, file and class."""
+    kebab = name.lower()
+    return (
+        f"gz-sim-{kebab}-system",
+        f"gz::sim::systems::{name}",
+        f"ignition-gazebo-{kebab}-system",
+        f"ignition::gazebo::systems::{name}",
+    )
+
+
+@functools.cache
+def _sensor_tables() -> tuple[
+    dict[str, tuple[Callable[[], System], frozenset[str]]], dict[str, dict[str, Callable[[], System]]]
+]:
+    """From every sensor class's declaration (``systems.sensors.SENSOR_SYSTEMS``): the gazebo_ros plugins
+    that sit inside a ``<sensor>`` (the system and the sensor types each takes), and the gz-sim world
+    systems that run the sensors of a type that have no gazebo_ros plugin (imported on first use)."""
+    from .sensors import SENSOR_SYSTEMS
+
+    plugins: dict[str, tuple[Callable[[], System], frozenset[str]]] = {}
+    world: dict[str, dict[str, Callable[[], System]]] = {}
+    for cls in SENSOR_SYSTEMS:
+        for plugin, types in cls.classic_plugins.items():
+            plugins[plugin] = (cls, types if types is not None else cls.sdf_types)
+        for spelling in _gz_spellings(cls.gz_system) if cls.gz_system else ():
+            world.setdefault(spelling, {}).update(dict.fromkeys(sorted(cls.sdf_types), cls))
+    return plugins, world
 
 
 SDF_SENSOR_TYPES = frozenset(
@@ -272,10 +223,11 @@ def plan_sensors(
     ``world_plugins`` (None: not known, e.g. ``gazelle check`` of a model file; then no warning is
     given for that case).
     """
+    sensor_plugins, gz_world_systems = _sensor_tables()
     gz_types: dict[str, Callable[[], System]] = {}
     for wp in world_plugins or ():
         for key in (_normalise(wp.filename), _normalise(wp.name)):
-            gz_types.update(GZ_SENSOR_WORLD_SYSTEMS.get(key, {}))
+            gz_types.update(gz_world_systems.get(key, {}))
     plans: list[SensorPlan] = []
     out: list[Diagnostic] = []
     # a model with gazebo_ros plugins is a Gazebo Classic model: its sensors publish through their own
@@ -295,10 +247,10 @@ def plan_sensors(
             for plugin in sensor.plugins:
                 key = (
                     _normalise(plugin.filename)
-                    if _normalise(plugin.filename) in _SENSOR_PLUGINS
+                    if _normalise(plugin.filename) in sensor_plugins
                     else _normalise(plugin.name)
                 )
-                entry = _SENSOR_PLUGINS.get(key)
+                entry = sensor_plugins.get(key)
                 if entry is None:
                     problem = plugin_problem(plugin)
                     warn(
@@ -331,12 +283,10 @@ def plan_sensors(
                 )
             elif make_gz is not None:
                 plans.append(SensorPlan(link.name, sensor, None, make_gz))
-            elif any(sensor.type in types for types in GZ_SENSOR_WORLD_SYSTEMS.values()):
+            elif any(sensor.type in types for types in gz_world_systems.values()):
                 if world_plugins is not None:
                     system = next(
-                        n
-                        for n, types in GZ_SENSOR_WORLD_SYSTEMS.items()
-                        if sensor.type in types and n.startswith("gz-sim")
+                        n for n, types in gz_world_systems.items() if sensor.type in types and n.startswith("gz-sim")
                     )
                     warn(
                         f"{label} publishes nothing: it has no gazebo_ros plugin and the world has no '{system}'",
@@ -398,7 +348,8 @@ classic services)."""
 
 
 def _known_names() -> list[str]:
-    return sorted({*_REGISTRY, *_SENSOR_PLUGINS, *GZ_SENSOR_WORLD_SYSTEMS, *_NOT_YET, *BUILT_IN_WORLD_SYSTEMS})
+    sensor_plugins, gz_world_systems = _sensor_tables()
+    return sorted({*_REGISTRY, *sensor_plugins, *gz_world_systems, *_NOT_YET, *BUILT_IN_WORLD_SYSTEMS})
 
 
 _FAMILY_PARTS = ("gz::sim::systems::", "ignition::gazebo::systems::", "ignition-gazebo-", "gz-sim-", "gazebo_ros_")
@@ -452,9 +403,10 @@ def plugin_problem(plugin: Plugin, *, world: bool = False) -> str | None:
     if key_f in BUILT_IN_WORLD_SYSTEMS or key_n in BUILT_IN_WORLD_SYSTEMS:
         return None
     label = f"{'world ' if world else ''}plugin '{plugin.name}' ({plugin.filename})"
-    if world and {key_f, key_n} & set(GZ_SENSOR_WORLD_SYSTEMS):
+    sensor_plugins, gz_world_systems = _sensor_tables()
+    if world and {key_f, key_n} & set(gz_world_systems):
         return None
-    if {key_f, key_n} & set(_SENSOR_PLUGINS):
+    if {key_f, key_n} & set(sensor_plugins):
         return f"{label} is ignored: a sensor plugin works only inside the <sensor> it publishes"
     why = _NOT_YET.get(key_f) or _NOT_YET.get(key_n)
     if why is not None:

@@ -31,7 +31,7 @@ import logging
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TypeVar
+from typing import ClassVar, Protocol, TypeVar, cast
 
 import numpy as np
 
@@ -70,10 +70,41 @@ from ._bus import (
 T = TypeVar("T")
 
 LIDAR_TYPES = frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"})
+"""``<sensor type>`` values cast as rays (Gazebo's ``gpu_*`` variants see visuals; here all see collisions)."""
 CAMERA_TYPES = frozenset({"camera", "depth", "depth_camera", "rgbd_camera", "rgbd"})
 DEPTH_TYPES = frozenset({"depth", "depth_camera", "rgbd_camera", "rgbd"})
-"""``<sensor type>`` values cast as rays (Gazebo's ``gpu_*`` variants see visuals; here all see collisions)."""
-IMU_TYPES = frozenset({"imu"})
+
+
+class SensorClass(Protocol):
+    """A sensor system's class, as :func:`sensor_system` registers it."""
+
+    sdf_types: frozenset[str]
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]]
+    gz_system: str
+
+    def __call__(self) -> System: ...
+
+
+SENSOR_SYSTEMS: list[SensorClass] = []
+"""Every sensor kind gazelle simulates, each declaring what runs it (see :func:`sensor_system`); the plugin
+registry derives its tables from these declarations."""
+
+S = TypeVar("S", bound=type)
+
+
+def sensor_system(cls: S) -> S:
+    """Register a sensor class. It declares, as class attributes:
+
+    * ``sdf_types``: the ``<sensor type>`` values it simulates;
+    * ``classic_plugins``: the gazebo_ros plugins (file names without ``lib``/``.so``) that publish it from
+      inside its ``<sensor>``, each with the sensor types it takes (None: all of ``sdf_types``);
+    * ``gz_system``: the gz-sim world system that runs it when a model has no gazebo_ros plugin, by its
+      class name (``Sensors``, ``Imu``, ...): ``gz-sim-<name>-system``, ``gz::sim::systems::<Name>`` and
+      the Ignition spellings all name it.
+    """
+    SENSOR_SYSTEMS.append(cast(SensorClass, cls))
+    return cls
+
 
 MAX_RAYS = 1_048_576
 """The most rays one lidar scan may cast: twice a 128 x 4096 automotive lidar (524,288). A scan of
@@ -350,6 +381,18 @@ def parse_plugin_config(ctx: SystemContext) -> SensorPluginConfig:
     )
 
 
+OUTPUT_MESSAGES = {
+    "scan": MsgType.LASER_SCAN,
+    "imu": MsgType.IMU,
+    "image": MsgType.IMAGE,
+    "magnetometer": MsgType.MAGNETIC_FIELD,
+    "altimeter": MsgType.ALTIMETER,
+    "contact": MsgType.CONTACTS,
+    "navsat": MsgType.NAV_SAT_FIX,
+}
+"""A sensor's ``output_kind`` (its gz-sim topic's suffix) -> the message it publishes by default."""
+
+
 def sensor_output(ctx: SystemContext, link: str, sensor: Sensor | None, kind: str, c: SensorPluginConfig) -> Output:
     """Resolve the topic, frame and message type of a sensor (``kind``: ``scan``, ``imu`` or ``image``), from its
     gazebo_ros plugin's parameters ``c`` or, without a plugin, as gz-sim names it."""
@@ -357,12 +400,7 @@ def sensor_output(ctx: SystemContext, link: str, sensor: Sensor | None, kind: st
 
     log = ctx.logger
     prefix = entity_frame_prefix(ctx.entity, log)
-    default_type = {
-        "imu": MsgType.IMU,
-        "image": MsgType.IMAGE,
-        "magnetometer": MsgType.MAGNETIC_FIELD,
-        "altimeter": MsgType.ALTIMETER,
-    }.get(kind, MsgType.LASER_SCAN)
+    default_type = OUTPUT_MESSAGES[kind]
     if ctx.plugin is None:  # gz-sim: <topic> and <frame_id>
         assert sensor is not None
         cfg = sensor.config
@@ -402,6 +440,12 @@ class _SensorSystem(System):
     """What the lidar and the IMU share: the link, the pose on it, the rate gate and the publisher."""
 
     kind = ""
+    """How log lines name it."""
+    output_kind = "scan"
+    """Its output as :func:`sensor_output` resolves it: the gz-sim topic's suffix and the default message."""
+    sdf_types: frozenset[str] = frozenset()
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {}
+    gz_system = ""
 
     def __init__(self, seed: int | None = None) -> None:
         self.sensor: Sensor | None = None
@@ -485,10 +529,7 @@ class _SensorSystem(System):
             log.error(f"{self.kind} sensor: link '{link}' does not exist in '{ctx.entity.name}'; it does nothing")
             return False
         self.link = link or ""
-        kind = {"IMU": "imu", "camera": "image", "magnetometer": "magnetometer", "altimeter": "altimeter"}.get(
-            self.kind, "scan"
-        )
-        self.output = sensor_output(ctx, self.link, self.sensor, kind, c)
+        self.output = sensor_output(ctx, self.link, self.sensor, self.output_kind, c)
         self._body = ctx.world.body(ctx.entity.name, self.link)
         if advertise:
             self._pub = ctx.bus.advertise(ctx.entity.name, self.output.topic, self.output.msg_type, depth=SENSOR_DEPTH)
@@ -513,8 +554,18 @@ class _SensorSystem(System):
         return self._body.pose * self.offset
 
 
+@sensor_system
 class Lidar(_SensorSystem):
     """A ray / lidar sensor: LaserScan, PointCloud2 or Range (see the module docstring)."""
+
+    sdf_types = LIDAR_TYPES
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {
+        "gazebo_ros_ray_sensor": None,
+        "gazebo_ros_laser": None,
+        "gazebo_ros_gpu_laser": None,
+    }
+    gz_system = "Sensors"
+    output_kind = "scan"
 
     kind = "lidar"
 
@@ -657,8 +708,14 @@ def parse_imu_noise(sensor: Sensor | None, plugin_cfg: ConfigElement | None, log
     return ImuNoise()
 
 
+@sensor_system
 class ImuSensor(_SensorSystem):
     """An IMU: orientation, angular velocity and proper linear acceleration (sensor_msgs/Imu)."""
+
+    sdf_types = frozenset({"imu"})
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {"gazebo_ros_imu_sensor": None}
+    gz_system = "Imu"
+    output_kind = "imu"
 
     kind = "IMU"
 
@@ -750,10 +807,16 @@ class ImuSensor(_SensorSystem):
 
 
 # --------------------------------------------------------------------------- magnetometer
+@sensor_system
 class Magnetometer(_SensorSystem):
     """gz-sim's magnetometer (``gz-sim-magnetometer-system``): the world's ``<magnetic_field>`` in the
     sensor's frame, with ``<magnetometer><x|y|z><noise>``, as sensor_msgs/MagneticField on ``<topic>``
     (else gz's ``.../sensor/<s>/magnetometer``), which ros_gz_bridge maps to ROS under the same name."""
+
+    sdf_types = frozenset({"magnetometer"})
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {}
+    gz_system = "Magnetometer"
+    output_kind = "magnetometer"
 
     kind = "magnetometer"
 
@@ -801,11 +864,17 @@ class Magnetometer(_SensorSystem):
 
 
 # --------------------------------------------------------------------------- altimeter
+@sensor_system
 class AltimeterSensor(_SensorSystem):
     """gz-sim's altimeter (``gz-sim-altimeter-system``): the sensor's height above where it started
     (``vertical_reference``) and its vertical velocity, with ``<altimeter><vertical_position|
     vertical_velocity><noise>``, as ros_gz_interfaces/Altimeter on ``<topic>`` (else gz's
     ``.../sensor/<s>/altimeter``)."""
+
+    sdf_types = frozenset({"altimeter"})
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {}
+    gz_system = "Altimeter"
+    output_kind = "altimeter"
 
     kind = "altimeter"
 
@@ -954,9 +1023,19 @@ OPTICAL = np.array([[0.0, -1.0, 0.0], [0.0, 0.0, -1.0], [1.0, 0.0, 0.0]])
 """Rotation from a link frame (x forward, z up) to the optical frame (z forward, x right, y down)."""
 
 
+@sensor_system
 class Camera(_SensorSystem):
     """A camera or depth camera: Image, CameraInfo, depth Image (32FC1) and PointCloud2 (see the module
     docstring). It renders only while someone subscribes."""
+
+    sdf_types = CAMERA_TYPES
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {
+        "gazebo_ros_camera": None,
+        "gazebo_ros_depth_camera": DEPTH_TYPES,
+        "gazebo_ros_openni_kinect": DEPTH_TYPES,
+    }
+    gz_system = "Sensors"
+    output_kind = "image"
 
     kind = "camera"
 
@@ -1124,11 +1203,17 @@ class Camera(_SensorSystem):
 
 
 # --------------------------------------------------------------------------- contact
+@sensor_system
 class ContactSensor(_SensorSystem):
     """A contact sensor (``<sensor type="contact">`` with ``<contact><collision>``): every contact of its
     collisions as gazebo_msgs/ContactsState, forces on the sensor's collision. gazebo_ros_bumper
     publishes ``bumper_states`` in ``<frame_name>`` (default ``world``); gz-sim's contact system on
     ``<contact><topic>``/``<topic>``, else ``/world/<w>/model/<m>/link/<l>/sensor/<s>/contact``."""
+
+    sdf_types = frozenset({"contact"})
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {"gazebo_ros_bumper": None}
+    gz_system = "Contact"
+    output_kind = "contact"
 
     kind = "contact"
 
@@ -1298,9 +1383,15 @@ def parse_gps_noise(sensor: Sensor, log: logging.Logger) -> GpsNoise:
     )
 
 
+@sensor_system
 class GpsSensor(_SensorSystem):
     """A GPS (``gps``/``navsat``): NavSatFix from the world's ``<spherical_coordinates>`` and, with
     gazebo_ros_gps_sensor, the ENU velocity on ``~/vel``."""
+
+    sdf_types = frozenset({"gps", "navsat"})
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {"gazebo_ros_gps_sensor": None}
+    gz_system = "NavSat"
+    output_kind = "navsat"
 
     kind = "GPS"
 
@@ -1397,6 +1488,7 @@ class ForceTorqueConfig:
     """The plugin's topic (ROS 1: ``<topicName>``); gz-sim: ``<topic>``."""
 
 
+@sensor_system
 class ForceTorqueSensor(System):
     """The wrench through a joint (geometry_msgs/WrenchStamped), at the joint's origin.
 
@@ -1408,6 +1500,10 @@ class ForceTorqueSensor(System):
       ``<jointName>``), ``<update_rate>``, ``<gaussian_noise>``; the wrench on the child link in its
       frame, on ``wrench`` (ROS 1: ``<topicName>``) under ``<ros><namespace>``.
     """
+
+    sdf_types = frozenset({"force_torque"})
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {}
+    gz_system = "ForceTorque"
 
     def __init__(self, seed: int | None = None) -> None:
         self.config = ForceTorqueConfig()
