@@ -1,0 +1,423 @@
+"""What every sensor shares: noise, rates, the output's topic, frame and message (gazebo_ros and gz-sim
+naming), the base class with its rate gate, and the registration of sensor kinds (:func:`sensor_system`)."""
+
+from __future__ import annotations
+
+import logging
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import ClassVar, Protocol, TypeVar, cast
+
+import numpy as np
+
+from ...description import (
+    ConfigElement,
+    Pose,
+    Sensor,
+)
+from ...physics import BodyHandle, PhysicsWorld
+from .._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
+from .._bus import (
+    Endpoint,
+    MsgType,
+    ParamValue,
+    resolve_topic,
+)
+
+T = TypeVar("T")
+
+
+class SensorClass(Protocol):
+    """A sensor system's class, as :func:`sensor_system` registers it."""
+
+    sdf_types: frozenset[str]
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]]
+    gz_system: str
+
+    def __call__(self) -> System: ...
+
+
+SENSOR_SYSTEMS: list[SensorClass] = []
+"""Every sensor kind gazelle simulates, each declaring what runs it (see :func:`sensor_system`); the plugin
+registry derives its tables from these declarations."""
+
+S = TypeVar("S", bound=type)
+
+
+def sensor_system(cls: S) -> S:
+    """Register a sensor class. It declares, as class attributes:
+
+    * ``sdf_types``: the ``<sensor type>`` values it simulates;
+    * ``classic_plugins``: the gazebo_ros plugins (file names without ``lib``/``.so``) that publish it from
+      inside its ``<sensor>``, each with the sensor types it takes (None: all of ``sdf_types``);
+    * ``gz_system``: the gz-sim world system that runs it when a model has no gazebo_ros plugin, by its
+      class name (``Sensors``, ``Imu``, ...): ``gz-sim-<name>-system``, ``gz::sim::systems::<Name>`` and
+      the Ignition spellings all name it.
+    """
+    SENSOR_SYSTEMS.append(cast(SensorClass, cls))
+    return cls
+
+
+SENSOR_DEPTH = 5
+"""Publisher history of every sensor topic: SensorDataQoS's depth 5, made reliable as gazebo_ros does."""
+
+NOISE_ROWS = 256
+"""An IMU draws its noise for this many readings at once (the same random stream as one draw a reading)."""
+
+
+# --------------------------------------------------------------------------- noise
+@dataclass(frozen=True)
+class Noise:
+    """``<noise>``: Gaussian with ``mean`` and ``stddev``, plus a bias drawn once from
+    N(``bias_mean``, ``bias_stddev``). ``type`` none means exact readings."""
+
+    type: str = "none"
+    mean: float = 0.0
+    stddev: float = 0.0
+    bias_mean: float = 0.0
+    bias_stddev: float = 0.0
+
+    @property
+    def active(self) -> bool:
+        """Whether readings are changed at all."""
+        return self.type != "none" and (self.mean, self.stddev, self.bias_mean, self.bias_stddev) != (0, 0, 0, 0)
+
+    def bias(self, rng: np.random.Generator) -> float:
+        """The constant bias of one sensor channel: |N(bias_mean, bias_stddev)| with a random sign."""
+        if not self.active or (self.bias_mean == 0 and self.bias_stddev == 0):
+            return 0.0
+        b = rng.normal(self.bias_mean, self.bias_stddev) if self.bias_stddev > 0 else self.bias_mean
+        return float(b if rng.random() < 0.5 else -b)
+
+
+SIMULATED_NOISE = frozenset({"none", "gaussian"})
+
+
+def parse_noise(el: ConfigElement | None, log: logging.Logger, what: str) -> Noise:
+    """A ``<noise>`` element, its type as an attribute (IMU channels) or a ``<type>`` child (rays)."""
+    if el is None:
+        return Noise()
+    kind = (el.attr("type") or child_text(el, "type") or "none").strip().lower()
+    where = f"{el.location}: " if el.location else ""
+    if kind == "gaussian_quantized":
+        log.warning(f"{where}{what}: noise type 'gaussian_quantized' is simulated as 'gaussian' (no quantization)")
+        kind = "gaussian"
+    elif kind not in SIMULATED_NOISE:
+        log.warning(f"{where}{what}: noise type '{kind}' is not simulated; readings are exact")
+        return Noise()
+    for tag in ("dynamic_bias_stddev", "dynamic_bias_correlation_time", "precision"):
+        if el.find(tag) is not None:
+            log.warning(f"{where}{what}: <{tag}> is not simulated")
+    return Noise(
+        kind,
+        parse_float(el, "mean", 0.0, log),
+        parse_float(el, "stddev", 0.0, log),
+        parse_float(el, "bias_mean", 0.0, log),
+        parse_float(el, "bias_stddev", 0.0, log),
+    )
+
+
+class SensorConfigError(ValueError):
+    """A sensor's configuration that cannot be simulated (the message names the file:line)."""
+
+
+class SensorLimitError(SensorConfigError):
+    """A sensor past one of gazelle's bounds (rays, image size, rate): the spawn is refused with the reason,
+    never accepted with the sensor quietly off."""
+
+
+def faster_than_step(rate: float, step_sec: float) -> bool:
+    """Whether ``rate`` (Hz) is faster than physics steps of ``step_sec`` can sample (0: no step known)."""
+    return step_sec > 0 and rate > 1.0 / step_sec * (1 + 1e-9)
+
+
+def checked_rate(rate: float, step_sec: float, where: str, what: str, log: logging.Logger) -> float:
+    """A sensor's ``update_rate`` (Hz of sim time; 0 = every step, as SDF says) as it will run.
+
+    A rate faster than the physics steps cannot be met: it is every step, and is bounded to the step
+    rate with a warning naming it.
+
+    Raises:
+        SensorLimitError: a negative, NaN or infinite rate.
+    """
+    if not math.isfinite(rate) or rate < 0:
+        raise SensorLimitError(f"{where}{what}: <update_rate> must be a number >= 0 Hz (0: every step), got {rate!r}")
+    if faster_than_step(rate, step_sec):
+        log.warning(
+            f"{where}{what}: <update_rate> {rate:g} Hz is faster than the physics step ({1.0 / step_sec:g} Hz); "
+            "it runs every step"
+        )
+        return 1.0 / step_sec
+    return rate
+
+
+# --------------------------------------------------------------------------- where a sensor publishes
+@dataclass(frozen=True)
+class Output:
+    """Where and how a sensor publishes: the ROS topic, the frame_id and (rays) the message type."""
+
+    topic: str
+    frame_id: str
+    msg_type: MsgType
+    radiation_type: int = 1
+    min_intensity: float = -math.inf
+
+
+_OUTPUT_TYPES = {
+    "sensor_msgs/laserscan": MsgType.LASER_SCAN,
+    "sensor_msgs/msg/laserscan": MsgType.LASER_SCAN,
+    "sensor_msgs/pointcloud2": MsgType.POINT_CLOUD2,
+    "sensor_msgs/msg/pointcloud2": MsgType.POINT_CLOUD2,
+    "sensor_msgs/range": MsgType.RANGE,
+    "sensor_msgs/msg/range": MsgType.RANGE,
+}
+
+
+def gz_scoped_topic(ctx: SystemContext, link: str, sensor: Sensor, suffix: str) -> str:
+    """gz-sim's topic for a sensor without ``<topic>``."""
+    return f"/world/{ctx.world_name}/model/{ctx.entity.name}/link/{link}/sensor/{sensor.name}/{suffix}"
+
+
+@dataclass(frozen=True)
+class SensorPluginConfig:
+    """Parameters of ``libgazebo_ros_ray_sensor.so`` and ``libgazebo_ros_imu_sensor.so`` (inside a
+    ``<sensor>``), and of ROS 1's ``libgazebo_ros_laser.so`` and ``libgazebo_ros_imu.so``. Without any
+    of them (a gz-sim model), the sensor's own ``<topic>`` and ``<frame_id>``/``<gz_frame_id>`` apply."""
+
+    output_type: str = ""
+    """Ray sensors: ``sensor_msgs/PointCloud2`` (the default; ROS 1's laser plugin: LaserScan),
+    ``sensor_msgs/LaserScan`` or ``sensor_msgs/Range``."""
+    frame_name: str = ""
+    """``<frame_name>`` (ROS 1: ``<frameName>``): the header's frame_id; default the sensor's link."""
+    radiation_type: str = "infrared"
+    """Range output: ``infrared`` or ``ultrasound``."""
+    min_intensity: float = -math.inf
+    """Intensities below it are raised to it (gazelle's rays have intensity 0: no laser_retro yet)."""
+    initial_orientation_as_reference: bool = False
+    """IMU: report orientation relative to the first reading instead of the world."""
+    topic: str = "~/out"
+    """``~/out`` in ROS 2 (rename it with ``<ros><remapping>~/out:=scan``); ROS 1: ``<topicName>``."""
+    body_name: str = ""
+    """ROS 1's IMU model plugin: ``<bodyName>``, the link it measures."""
+    update_rate: float = 0.0
+    """ROS 1's IMU model plugin: ``<updateRate>``, Hz of sim time (0: every step). Sensors use ``<update_rate>``."""
+    gaussian_noise: float = 0.0
+    """ROS 1's IMU model plugin: ``<gaussianNoise>``, standard deviation of every channel."""
+    camera_name: str = ""
+    """Cameras: ``<camera_name>``, the first part of their topics; default the sensor's name."""
+    namespace: str = ""
+    """``<ros><namespace>`` (ROS 1: ``<robotNamespace>``); default the entity's namespace."""
+    remappings: tuple[tuple[str, str], ...] = ()
+    """``<ros><remapping>from:=to``."""
+
+
+def parse_plugin_config(ctx: SystemContext) -> SensorPluginConfig:
+    """The plugin's parameters (ROS 2 and ROS 1 names); defaults without a plugin."""
+    cfg = ctx.plugin.config if ctx.plugin is not None else None
+    if cfg is None:
+        return SensorPluginConfig(namespace=ctx.entity.namespace)
+    log = ctx.logger
+    ns, remaps = ros_block(cfg)
+    raw_type = child_text(cfg, "output_type")
+    if raw_type is None and "laser" in ctx.plugin.filename.lower():  # type: ignore[union-attr]
+        raw_type = "sensor_msgs/LaserScan"  # ROS 1's gazebo_ros_laser publishes LaserScan
+    return SensorPluginConfig(
+        output_type=raw_type or "sensor_msgs/PointCloud2",
+        frame_name=child_text(cfg, "frame_name") or child_text(cfg, "frameName") or "",
+        radiation_type=(child_text(cfg, "radiation_type") or "infrared").strip().lower(),
+        min_intensity=parse_float(cfg, "min_intensity", -math.inf, log),
+        initial_orientation_as_reference=parse_bool(cfg, "initial_orientation_as_reference", False, log),
+        topic=child_text(cfg, "topicName") or "~/out",
+        body_name=child_text(cfg, "bodyName") or child_text(cfg, "body_name") or "",
+        update_rate=parse_float(cfg, "updateRate", 0.0, log),
+        gaussian_noise=parse_float(cfg, "gaussianNoise", 0.0, log),
+        camera_name=child_text(cfg, "camera_name") or child_text(cfg, "cameraName") or "",
+        namespace=ns or child_text(cfg, "robotNamespace") or ctx.entity.namespace,
+        remappings=tuple(remaps.items()),
+    )
+
+
+OUTPUT_MESSAGES = {
+    "scan": MsgType.LASER_SCAN,
+    "imu": MsgType.IMU,
+    "image": MsgType.IMAGE,
+    "magnetometer": MsgType.MAGNETIC_FIELD,
+    "altimeter": MsgType.ALTIMETER,
+    "contact": MsgType.CONTACTS,
+    "navsat": MsgType.NAV_SAT_FIX,
+}
+"""A sensor's ``output_kind`` (its gz-sim topic's suffix) -> the message it publishes by default."""
+
+
+def sensor_output(ctx: SystemContext, link: str, sensor: Sensor | None, kind: str, c: SensorPluginConfig) -> Output:
+    """Resolve the topic, frame and message type of a sensor (``kind``: ``scan``, ``imu`` or ``image``), from its
+    gazebo_ros plugin's parameters ``c`` or, without a plugin, as gz-sim names it."""
+    from ..robot_state import entity_frame_prefix
+
+    log = ctx.logger
+    prefix = entity_frame_prefix(ctx.entity, log)
+    default_type = OUTPUT_MESSAGES[kind]
+    if ctx.plugin is None:  # gz-sim: <topic> and <frame_id>
+        assert sensor is not None
+        cfg = sensor.config
+        suffix = "depth_image" if kind == "image" and sensor.type in ("depth", "depth_camera") else kind
+        topic = sensor.topic or gz_scoped_topic(ctx, link, sensor, suffix)
+        frame = child_text(cfg, "frame_id") or child_text(cfg, "gz_frame_id")
+        frame = prefix + frame if frame else f"{ctx.entity.name}::{link}::{sensor.name}"
+        return Output(resolve_topic(topic, ctx.entity.namespace), frame, default_type)
+    if kind == "image":  # gazebo_ros_camera: <camera_name>/image_raw in the plugin's namespace
+        name = c.camera_name or (sensor.name if sensor is not None else "camera")
+        topic = resolve_topic(f"{name}/image_raw", c.namespace, dict(c.remappings))
+    else:
+        topic = resolve_topic(c.topic, c.namespace, dict(c.remappings), node=ctx.plugin.name)
+    msg_type = default_type
+    if kind == "scan":
+        found = _OUTPUT_TYPES.get(c.output_type.strip().lower())
+        if found is None:
+            el = ctx.plugin.config.find("output_type")
+            where = f"{el.location}: " if el is not None and el.location else ""
+            log.warning(
+                f"{where}<output_type> '{c.output_type}' is not one gazelle publishes (LaserScan, PointCloud2, "
+                "Range); publishing sensor_msgs/PointCloud2"
+            )
+            found = MsgType.POINT_CLOUD2
+        msg_type = found
+    return Output(
+        topic,
+        prefix + (c.frame_name or link),
+        msg_type,
+        radiation_type=0 if c.radiation_type == "ultrasound" else 1,
+        min_intensity=c.min_intensity,
+    )
+
+
+# --------------------------------------------------------------------------- systems
+class _SensorSystem(System):
+    """What the lidar and the IMU share: the link, the pose on it, the rate gate and the publisher."""
+
+    kind = ""
+    """How log lines name it."""
+    output_kind = "scan"
+    """Its output as :func:`sensor_output` resolves it: the gz-sim topic's suffix and the default message."""
+    sdf_types: frozenset[str] = frozenset()
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {}
+    gz_system = ""
+
+    def __init__(self, seed: int | None = None) -> None:
+        self.sensor: Sensor | None = None
+        self.link = ""
+        self.offset = Pose()
+        """X_LS: the sensor in its link's frame."""
+        self.rate_hz = 0.0
+        self.output: Output | None = None
+        self.config = SensorPluginConfig()
+        self._pub: Endpoint | None = None
+        self._body: BodyHandle | None = None
+        self._gate = RateGate()
+        self.phase_gate = self._gate  # post_update does nothing while the gate is not due
+        self._rng = np.random.default_rng(seed)
+        self._step_sec = 0.0
+
+    def seed_noise(self, seed: int) -> None:
+        self._rng = np.random.default_rng(seed)
+
+    def node_parameters(self) -> dict[str, ParamValue]:
+        """A gazebo_ros sensor plugin's node shows the sensor's rate as ``update_rate``."""
+        return {"update_rate": float(self.rate_hz)}
+
+    def parameter_setters(self) -> dict[str, Callable[[ParamValue], str | None]]:
+        """``update_rate`` can be changed at run time (as gazebo_ros_camera allows; decided for every sensor)."""
+        return {"update_rate": self._set_rate}
+
+    def _set_rate(self, value: ParamValue) -> str | None:
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not value >= 0 or not math.isfinite(value):
+            return f"must be a number >= 0 (Hz; 0: every step), got {value!r}"
+        step = self._step_sec
+        if faster_than_step(float(value), step):
+            return f"{value:g} Hz is faster than the physics step ({1.0 / step:g} Hz)"
+        self.rate_hz = float(value)
+        self._gate.reset()
+        return None
+
+    def _parse_sensor(
+        self, ctx: SystemContext, sensor_type: str, parse: Callable[[Sensor, logging.Logger], T]
+    ) -> T | None:
+        """``parse(sensor, logger)`` of the ``<sensor>`` this plugin sits in; None, after an error that
+        names why and where, when there is no sensor or its configuration cannot be simulated."""
+        if ctx.sensor is None:
+            where = f"{ctx.plugin.location}: " if ctx.plugin and ctx.plugin.location else ""
+            ctx.logger.error(
+                f"{where}a {self.kind} plugin must be inside a <sensor type='{sensor_type}'>; it does nothing"
+            )
+            return None
+        try:
+            return parse(ctx.sensor, ctx.logger)
+        except SensorLimitError:
+            raise  # past a bound: the spawn is refused with the reason
+        except SensorConfigError as err:
+            ctx.logger.error(f"{err}; the sensor does nothing")
+            return None
+
+    def _configure_common(self, ctx: SystemContext, *, advertise: bool = True) -> bool:
+        """Read link, pose, rate and output (and declare the output topic unless ``advertise`` is False);
+        False (after an error naming why) when it cannot run."""
+        log = ctx.logger
+        self.sensor, link = ctx.sensor, ctx.link
+        self.config = c = parse_plugin_config(ctx)
+        if self.sensor is None:
+            if not c.body_name:
+                where = f"{ctx.plugin.location}: " if ctx.plugin and ctx.plugin.location else ""
+                log.error(
+                    f"{where}a {self.kind} plugin must be inside a <sensor> or name a <bodyName>; it does nothing"
+                )
+                return False
+            link = c.body_name
+            where = f"{ctx.plugin.location}: " if ctx.plugin and ctx.plugin.location else ""
+            self.rate_hz = checked_rate(c.update_rate, ctx.world.timestep, where, f"{self.kind} plugin", log)
+        else:
+            self.offset = self.sensor.pose
+            where = f"{self.sensor.location}: " if self.sensor.location else ""
+            self.rate_hz = checked_rate(
+                self.sensor.update_rate_hz, ctx.world.timestep, where, f"sensor '{self.sensor.name}'", log
+            )
+        self._step_sec = ctx.world.timestep
+        if link not in {lk.name for lk in ctx.entity.model.links}:
+            log.error(f"{self.kind} sensor: link '{link}' does not exist in '{ctx.entity.name}'; it does nothing")
+            return False
+        self.link = link or ""
+        self.output = sensor_output(ctx, self.link, self.sensor, self.output_kind, c)
+        self._body = ctx.world.body(ctx.entity.name, self.link)
+        if advertise:
+            self._pub = ctx.bus.advertise(ctx.entity.name, self.output.topic, self.output.msg_type, depth=SENSOR_DEPTH)
+        return True
+
+    def next_update(self, sim_time_sec: float) -> float:
+        """The next scan time (never, when the sensor could not be configured)."""
+        return self._gate.next if self._pub is not None else math.inf
+
+    def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """Measure again at the next step after a world reset."""
+        self._gate.reset()
+
+    def _due(self, info: UpdateInfo) -> bool:
+        if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.rate_hz):
+            return False
+        return self._pub.wanted
+
+    def sensor_pose(self) -> Pose:
+        """X_WS: the sensor's world pose now."""
+        assert self._body is not None
+        return self._body.pose * self.offset
+
+
+# --------------------------------------------------------------------------- GPS
+
+
+def xyz_noise(el: ConfigElement | None, log: logging.Logger, what: str) -> tuple[Noise, Noise, Noise]:
+    """``<x>``, ``<y>``, ``<z>`` each with a ``<noise type>`` (SDF 1.5+)."""
+    out = []
+    for ax in "xyz":
+        a = el.find(ax) if el is not None else None
+        out.append(parse_noise(a.find("noise") if a is not None else None, log, f"{what} {ax}"))
+    return out[0], out[1], out[2]

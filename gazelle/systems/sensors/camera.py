@@ -1,0 +1,314 @@
+"""Cameras and depth cameras: colour and metric depth rendered offscreen (MuJoCo over EGL), with
+camera_info from the field of view, and points for depth sensors."""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+
+from ...description import (
+    Sensor,
+)
+from ...physics import OffscreenRenderer, PhysicsWorld, RenderError
+from .._base import SystemContext, UpdateInfo, child_text, parse_float
+from .._bus import (
+    CameraInfo,
+    Endpoint,
+    Image,
+    MsgType,
+    PointCloud,
+    resolve_topic,
+)
+from ._common import (
+    SENSOR_DEPTH,
+    Noise,
+    SensorConfigError,
+    SensorLimitError,
+    _SensorSystem,
+    gz_scoped_topic,
+    parse_noise,
+    sensor_system,
+)
+
+CAMERA_TYPES = frozenset({"camera", "depth", "depth_camera", "rgbd_camera", "rgbd"})
+DEPTH_TYPES = frozenset({"depth", "depth_camera", "rgbd_camera", "rgbd"})
+MAX_IMAGE_SIDE = 4096
+"""The widest and tallest camera image (4K; 8192 x 8192 fills a 256 MB buffer a frame)."""
+
+
+# --------------------------------------------------------------------------- cameras
+@dataclass(frozen=True)
+class CameraSpec:
+    """A ``<camera>`` block: image size and format, field of view, clip planes, distortion, noise."""
+
+    width: int = 320
+    height: int = 240
+    format: str = "R8G8B8"
+    horizontal_fov: float = 1.047
+    near: float = 0.1
+    far: float = 100.0
+    distortion: tuple[float, float, float, float, float] = (0.0, 0.0, 0.0, 0.0, 0.0)
+    """k1, k2, p1, p2, k3 (ROS's plumb_bob order); published in CameraInfo, not applied to the image."""
+    noise: Noise = Noise()
+
+    def k(self) -> tuple[float, ...]:
+        """The intrinsic matrix: square pixels, f = (width / 2) / tan(hfov / 2), principal point at the
+        image centre (pixel centres at half-integers, as the renderer draws them)."""
+        f = (self.width / 2.0) / math.tan(self.horizontal_fov / 2.0)
+        return (f, 0.0, self.width / 2.0, 0.0, f, self.height / 2.0, 0.0, 0.0, 1.0)
+
+
+_ENCODINGS = {
+    "R8G8B8": "rgb8",
+    "RGB_INT8": "rgb8",
+    "B8G8R8": "bgr8",
+    "BGR_INT8": "bgr8",
+    "L8": "mono8",
+    "L_INT8": "mono8",
+}
+
+
+def parse_camera(sensor: Sensor, log: logging.Logger) -> CameraSpec:
+    """The ``<camera>`` block of a camera sensor.
+
+    Raises:
+        SensorConfigError: an image of zero size, a field of view outside (0, pi), or clip planes out of order.
+    """
+    cam = sensor.config.find("camera") if sensor.config is not None else None
+    where = f"{sensor.location}: " if sensor.location else ""
+    if cam is None:
+        log.warning(f"{where}sensor '{sensor.name}' ({sensor.type}) has no <camera> block; using SDF's defaults")
+        return CameraSpec()
+    image, clip, dist = cam.find("image"), cam.find("clip"), cam.find("distortion")
+    width = int(parse_float(image, "width", 320, log))
+    height = int(parse_float(image, "height", 240, log))
+    fmt = (child_text(image, "format") or "R8G8B8").strip()
+    hfov = parse_float(cam, "horizontal_fov", 1.047, log)
+    near, far = parse_float(clip, "near", 0.1, log), parse_float(clip, "far", 100.0, log)
+    if width < 1 or height < 1:
+        raise SensorConfigError(f"{where}sensor '{sensor.name}': a camera of {width}x{height} pixels cannot render")
+    if width > MAX_IMAGE_SIDE or height > MAX_IMAGE_SIDE:
+        raise SensorLimitError(
+            f"{where}sensor '{sensor.name}': a camera of {width}x{height} pixels is larger than "
+            f"{MAX_IMAGE_SIDE}x{MAX_IMAGE_SIDE}, the largest image gazelle renders"
+        )
+    if not 0.0 < hfov < math.pi:
+        raise SensorConfigError(f"{where}sensor '{sensor.name}': <horizontal_fov> must be in (0, pi), got {hfov}")
+    if not 0.0 < near < far:
+        raise SensorConfigError(f"{where}sensor '{sensor.name}': <clip> needs 0 < near < far, got {near} .. {far}")
+    if fmt not in _ENCODINGS:
+        log.warning(f"{where}sensor '{sensor.name}': image format '{fmt}' is not rendered; publishing rgb8 (R8G8B8)")
+        fmt = "R8G8B8"
+    coeffs = tuple(parse_float(dist, t, 0.0, log) for t in ("k1", "k2", "p1", "p2", "k3"))
+    if dist is not None and any(coeffs):
+        log.warning(
+            f"{where}sensor '{sensor.name}': <distortion> is published in CameraInfo but not applied to the image"
+        )
+    return CameraSpec(
+        width,
+        height,
+        fmt,
+        hfov,
+        near,
+        far,
+        coeffs,  # type: ignore[arg-type]
+        parse_noise(cam.find("noise"), log, f"sensor '{sensor.name}'"),
+    )
+
+
+@dataclass(frozen=True)
+class CameraTopics:
+    """Where a camera publishes (an empty name: not published)."""
+
+    image: str
+    info: str
+    depth: str = ""
+    depth_info: str = ""
+    points: str = ""
+
+
+OPTICAL = np.array([[0.0, -1.0, 0.0], [0.0, 0.0, -1.0], [1.0, 0.0, 0.0]])
+"""Rotation from a link frame (x forward, z up) to the optical frame (z forward, x right, y down)."""
+
+
+@sensor_system
+class Camera(_SensorSystem):
+    """A camera or depth camera: Image, CameraInfo, depth Image (32FC1) and PointCloud2 (see the module
+    docstring). It renders only while someone subscribes."""
+
+    sdf_types = CAMERA_TYPES
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {
+        "gazebo_ros_camera": None,
+        "gazebo_ros_depth_camera": DEPTH_TYPES,
+        "gazebo_ros_openni_kinect": DEPTH_TYPES,
+    }
+    gz_system = "Sensors"
+    output_kind = "image"
+
+    kind = "camera"
+
+    checkpoint_skip = ("_renderer",)
+    """Its offscreen renderer (a GL context) is made again where a checkpoint is loaded."""
+
+    def __init__(self, seed: int | None = None) -> None:
+        super().__init__(seed)
+        self.spec = CameraSpec()
+        self.topics = CameraTopics("", "")
+        self.depth = False
+        self._eps: dict[str, Endpoint] = {}
+        self._renderer: OffscreenRenderer | None = None
+        self._failed = False
+
+    def configure(self, ctx: SystemContext) -> None:
+        """Parse the ``<camera>`` block and the plugin; declare the image, info, depth and points topics."""
+        spec = self._parse_sensor(ctx, "camera", parse_camera)
+        if spec is None or ctx.sensor is None:
+            return
+        self.spec = spec
+        if not self._configure_common(ctx):
+            return
+        assert self.output is not None and self._pub is not None
+        self.depth = ctx.sensor.type in DEPTH_TYPES
+        self.topics = self._topics(ctx)
+        # _configure_common advertised the image topic (output.topic); the others go beside it
+        self._eps = {"image": self._pub}
+        for key, msg_type in (
+            ("info", MsgType.CAMERA_INFO),
+            ("depth", MsgType.IMAGE),
+            ("depth_info", MsgType.CAMERA_INFO),
+            ("points", MsgType.POINT_CLOUD2),
+        ):
+            topic = getattr(self.topics, key)
+            if topic:
+                self._eps[key] = ctx.bus.advertise(ctx.entity.name, topic, msg_type, depth=SENSOR_DEPTH)
+        s = self.spec
+        ctx.logger.info(
+            f"{ctx.sensor.type} '{ctx.sensor.name}': {s.width}x{s.height} at {self.rate_hz:g} Hz on "
+            f"[{self.topics.image}]"
+            + (f" and [{self.topics.depth}]" if self.depth else "")
+            + f" in frame [{self.output.frame_id}]"
+        )
+
+    def _topics(self, ctx: SystemContext) -> CameraTopics:
+        assert self.output is not None and self.sensor is not None
+        image = self.output.topic
+        parent = image.rsplit("/", 1)[0]
+        if ctx.plugin is not None:  # gazebo_ros: <camera_name>/image_raw etc. under the node's namespace
+            return CameraTopics(
+                image,
+                f"{parent}/camera_info",
+                f"{parent}/depth/image_raw" if self.depth else "",
+                f"{parent}/depth/camera_info" if self.depth else "",
+                f"{parent}/points" if self.depth else "",
+            )
+        if self.sensor.type in ("rgbd_camera", "rgbd"):  # gz: <topic>/image, /depth_image, /points, /camera_info
+            base = resolve_topic(
+                self.sensor.topic or gz_scoped_topic(ctx, self.link, self.sensor, ""), ctx.entity.namespace
+            ).rstrip("/")
+            return CameraTopics(
+                f"{base}/image", f"{base}/camera_info", f"{base}/depth_image", f"{base}/camera_info", f"{base}/points"
+            )
+        if self.depth:  # gz depth_camera: <topic> is the depth image
+            return CameraTopics("", f"{parent}/camera_info", image, f"{parent}/camera_info", f"{image}/points")
+        return CameraTopics(image, f"{parent}/camera_info")
+
+    def _wanted(self) -> dict[str, bool]:
+        return {k: ep.wanted for k, ep in self._eps.items()}
+
+    def info(self, stamp: float) -> CameraInfo:
+        """CameraInfo of this camera (K and P from ``horizontal_fov`` and the image size)."""
+        s = self.spec
+        k = s.k()
+        p = (k[0], 0.0, k[2], 0.0, 0.0, k[4], k[5], 0.0, 0.0, 0.0, 1.0, 0.0)
+        assert self.output is not None
+        return CameraInfo(
+            stamp,
+            self.output.frame_id,
+            s.height,
+            s.width,
+            "plumb_bob",
+            s.distortion,
+            k,
+            (1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0),
+            p,
+        )
+
+    def render(self, world: PhysicsWorld, depth: bool) -> tuple[np.ndarray, np.ndarray | None] | None:
+        """Colour (H x W x 3 uint8) and depth (metres, -inf nearer than near, +inf where nothing is
+        within far) as this camera sees the world now; None when no GL context could be made."""
+        if self._failed:
+            return None
+        s = self.spec
+        try:
+            if self._renderer is None:
+                self._renderer = world.offscreen_renderer(s.width, s.height)
+            rgb, d = self._renderer.render(self.sensor_pose(), s.horizontal_fov, s.near, s.far, depth=depth)
+        except RenderError as err:
+            self._failed = True
+            logging.getLogger("gazelle.sensors").error(f"camera '{self.sensor.name if self.sensor else ''}': {err}")
+            return None
+        if d is not None:
+            d = d.copy()
+            d[d >= s.far * (1 - 1e-4)] = np.inf
+        return rgb.copy(), d
+
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """At the camera's rate, while anyone subscribes: render and publish stamped with this sim time."""
+        if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.rate_hz):
+            return
+        want = self._wanted()
+        if not any(want.values()):
+            return
+        t, s = info.sim_time_sec, self.spec
+        assert self.output is not None
+        frame = self.output.frame_id
+        need_depth = self.depth and (want.get("depth", False) or want.get("points", False))
+        need_image = want.get("image", False) and bool(self.topics.image)
+        out = self.render(world, need_depth) if (need_image or need_depth) else None
+        ci = self.info(t)
+        for key in ("info", "depth_info"):
+            if want.get(key):
+                self._eps[key].publish(ci)
+        if out is None:
+            return
+        rgb, d = out
+        if need_image:
+            img = rgb
+            if s.noise.active:
+                noisy = rgb.astype(np.float32) + 255.0 * self._rng.normal(s.noise.mean, s.noise.stddev, rgb.shape)
+                img = np.clip(noisy, 0, 255).astype(np.uint8)
+            enc = _ENCODINGS[s.format]
+            if enc == "bgr8":
+                img = img[..., ::-1]
+            elif enc == "mono8":
+                img = (img.astype(np.float32) @ np.array([0.299, 0.587, 0.114], np.float32)).astype(np.uint8)
+            data = np.ascontiguousarray(img)
+            channels = 1 if data.ndim == 2 else 3
+            self._eps["image"].publish(Image(t, frame, s.height, s.width, enc, s.width * channels, data.tobytes()))
+        if d is None:
+            return
+        if want.get("depth"):
+            self._eps["depth"].publish(
+                Image(t, frame, s.height, s.width, "32FC1", s.width * 4, d.astype("<f4").tobytes())
+            )
+        if want.get("points"):
+            k = s.k()
+            v, u = np.mgrid[0 : s.height, 0 : s.width]
+            ok = np.isfinite(d)
+            z = d[ok]
+            x = (u[ok] + 0.5 - k[2]) / k[0] * z
+            y = (v[ok] + 0.5 - k[5]) / k[4] * z
+            cloud = np.empty((len(z), 4), np.float32)
+            cloud[:, 0], cloud[:, 1], cloud[:, 2] = x, y, z
+            cloud[:, 3] = rgb[ok] @ np.array([1.0 / 3, 1.0 / 3, 1.0 / 3]) / 255.0
+            self._eps["points"].publish(PointCloud(t, frame, len(z), 1, cloud.astype("<f4").tobytes()))
+
+    def shutdown(self) -> None:
+        """Free the GL context (on the simulation thread, where it was made)."""
+        if self._renderer is not None:
+            self._renderer.close()
+            self._renderer = None

@@ -1,0 +1,175 @@
+"""GPS / NavSat: the position as latitude, longitude and altitude from the world's spherical coordinates,
+with noise (sensor_msgs/NavSatFix), and gazebo_ros's velocity (geometry_msgs/Vector3Stamped)."""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+
+from ...description import (
+    Sensor,
+    SphericalCoordinates,
+)
+from ...physics import PhysicsWorld
+from .._base import SystemContext, UpdateInfo
+from .._bus import (
+    Endpoint,
+    MsgType,
+    NavSatFix,
+    Vector3Stamped,
+    resolve_topic,
+)
+from ._common import (
+    SENSOR_DEPTH,
+    Noise,
+    _SensorSystem,
+    gz_scoped_topic,
+    parse_noise,
+    sensor_system,
+)
+
+WGS84_A = 6378137.0
+"""WGS84 equatorial radius (m)."""
+WGS84_E2 = 6.69437999014e-3
+"""WGS84 first eccentricity squared."""
+
+
+def enu_to_geodetic(east: float, north: float, up: float, origin: SphericalCoordinates) -> tuple[float, float, float]:
+    """(latitude deg, longitude deg, altitude m) of a point ``east``/``north``/``up`` metres from the
+    origin, on the WGS84 ellipsoid's local radii of curvature (exact to centimetres over kilometres)."""
+    lat0 = math.radians(origin.latitude_deg)
+    s2 = math.sin(lat0) ** 2
+    meridian = WGS84_A * (1 - WGS84_E2) / (1 - WGS84_E2 * s2) ** 1.5
+    prime = WGS84_A / math.sqrt(1 - WGS84_E2 * s2)
+    lat = origin.latitude_deg + math.degrees(north / (meridian + origin.elevation))
+    lon = origin.longitude_deg + math.degrees(east / ((prime + origin.elevation) * math.cos(lat0)))
+    return lat, lon, origin.elevation + up
+
+
+def world_to_enu(v: tuple[float, float, float], heading_deg: float) -> tuple[float, float, float]:
+    """A world-frame vector in East, North, Up: the world frame is ENU turned by ``heading`` about the
+    downward vertical (North to East positive), as SDF's ``<heading_deg>`` says."""
+    h = math.radians(heading_deg)
+    x, y, z = v
+    return (x * math.cos(h) + y * math.sin(h), -x * math.sin(h) + y * math.cos(h), z)
+
+
+@dataclass(frozen=True)
+class GpsNoise:
+    """``<gps>``/``<navsat>`` noise: position horizontal and vertical, velocity horizontal and vertical."""
+
+    position_horizontal: Noise = Noise()
+    position_vertical: Noise = Noise()
+    velocity_horizontal: Noise = Noise()
+    velocity_vertical: Noise = Noise()
+
+
+def parse_gps_noise(sensor: Sensor, log: logging.Logger) -> GpsNoise:
+    """SDF's ``<gps>`` (or ``<navsat>``) ``<position_sensing>``/``<velocity_sensing>`` noise."""
+    block = None
+    if sensor.config is not None:
+        block = sensor.config.find("navsat") or sensor.config.find("gps")
+    if block is None:
+        return GpsNoise()
+
+    def one(kind: str, axis: str) -> Noise:
+        el = block.find(kind)
+        ax = el.find(axis) if el is not None else None
+        return parse_noise(ax.find("noise") if ax is not None else None, log, f"GPS {kind} {axis}")
+
+    return GpsNoise(
+        one("position_sensing", "horizontal"),
+        one("position_sensing", "vertical"),
+        one("velocity_sensing", "horizontal"),
+        one("velocity_sensing", "vertical"),
+    )
+
+
+@sensor_system
+class GpsSensor(_SensorSystem):
+    """A GPS (``gps``/``navsat``): NavSatFix from the world's ``<spherical_coordinates>`` and, with
+    gazebo_ros_gps_sensor, the ENU velocity on ``~/vel``."""
+
+    sdf_types = frozenset({"gps", "navsat"})
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {"gazebo_ros_gps_sensor": None}
+    gz_system = "NavSat"
+    output_kind = "navsat"
+
+    kind = "GPS"
+
+    def __init__(self, seed: int | None = None) -> None:
+        super().__init__(seed)
+        self.origin = SphericalCoordinates()
+        self.noise = GpsNoise()
+        self._vel: Endpoint | None = None
+
+    def configure(self, ctx: SystemContext) -> None:
+        """Read the world's spherical coordinates and the noise; declare ``~/out`` and ``~/vel``."""
+        if self._parse_sensor(ctx, "gps", lambda _s, _log: True) is None or ctx.sensor is None:
+            return
+        if not self._configure_common(ctx, advertise=False):
+            return
+        assert self.output is not None
+        if ctx.plugin is None:  # gz navsat: <topic> or .../navsat
+            topic = ctx.sensor.topic or gz_scoped_topic(ctx, self.link, ctx.sensor, "navsat")
+            self.output = dataclasses.replace(self.output, topic=resolve_topic(topic, ctx.entity.namespace))
+        self._pub = ctx.bus.advertise(ctx.entity.name, self.output.topic, MsgType.NAV_SAT_FIX, depth=SENSOR_DEPTH)
+        if ctx.plugin is not None:
+            c = self.config
+            vel = resolve_topic("~/vel", c.namespace, dict(c.remappings), node=ctx.plugin.name)
+            self._vel = ctx.bus.advertise(ctx.entity.name, vel, MsgType.VECTOR3_STAMPED, depth=SENSOR_DEPTH)
+        if ctx.spherical_coordinates is None:
+            where = f"{ctx.sensor.location}: " if ctx.sensor.location else ""
+            ctx.logger.warning(
+                f"{where}GPS '{ctx.sensor.name}': the world has no <spherical_coordinates>; its origin is 0° N 0° E"
+            )
+        self.origin = ctx.spherical_coordinates or SphericalCoordinates()
+        self.noise = parse_gps_noise(ctx.sensor, ctx.logger)
+        ctx.logger.info(f"GPS '{ctx.sensor.name}' at {self.rate_hz:g} Hz on [{self.output.topic}]")
+
+    def read(self, world: PhysicsWorld) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
+        """((latitude, longitude, altitude), ENU velocity) of the sensor now, with noise."""
+        assert self._body is not None
+        X_WB = self._body.pose
+        X = X_WB * self.offset
+        h = self.origin.heading_deg
+        e, n, u = world_to_enu(X.position, h)
+        lin, ang = self._body.velocity
+        r = np.asarray(X.position) - np.asarray(X_WB.position)
+        v = np.asarray(lin) + np.cross(np.asarray(ang), r)  # the sensor point's velocity
+        ve, vn, vu = world_to_enu((float(v[0]), float(v[1]), float(v[2])), h)
+        nz = self.noise
+
+        def noisy(value: float, noise: Noise) -> float:
+            if not noise.active:
+                return value
+            return value + noise.mean + (float(self._rng.normal(0.0, noise.stddev)) if noise.stddev > 0 else 0.0)
+
+        e, n = noisy(e, nz.position_horizontal), noisy(n, nz.position_horizontal)
+        u = noisy(u, nz.position_vertical)
+        ve, vn = noisy(ve, nz.velocity_horizontal), noisy(vn, nz.velocity_horizontal)
+        vu = noisy(vu, nz.velocity_vertical)
+        return enu_to_geodetic(e, n, u, self.origin), (ve, vn, vu)
+
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """At the sensor's rate, while listened to: publish the fix (and the velocity) stamped with this sim time."""
+        if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.rate_hz):
+            return
+        want_fix = self._pub.wanted
+        want_vel = self._vel is not None and self._vel.wanted
+        if not (want_fix or want_vel):
+            return
+        assert self.output is not None
+        (lat, lon, alt), vel = self.read(world)
+        t, frame = info.sim_time_sec, self.output.frame_id
+        if want_fix:
+            sh, sv = self.noise.position_horizontal.stddev, self.noise.position_vertical.stddev
+            cov = (sh * sh, 0.0, 0.0, 0.0, sh * sh, 0.0, 0.0, 0.0, sv * sv)
+            self._pub.publish(NavSatFix(t, frame, lat, lon, alt, cov, 2 if any(cov) else 0))
+        if want_vel and self._vel is not None:
+            self._vel.publish(Vector3Stamped(t, frame, vel))
