@@ -645,10 +645,10 @@ def test_an_unknown_sensor_type_is_named_with_a_did_you_mean_and_an_unsimulated_
         )
     ]
     gz = """<?xml version="1.0"?><sdf version="1.9"><model name="m"><link name="l">
-      <sensor name="baro" type="air_pressure"><update_rate>10</update_rate></sensor></link></model></sdf>"""
+      <sensor name="baro" type="air_speed"><update_rate>10</update_rate></sensor></link></model></sdf>"""
     plans, problems = plan_sensors(load_string(gz).value, default_world().plugins)
     assert plans == [] and [p.message for p in problems] == [
-        "sensor 'baro' (air_pressure) on link 'l' is not simulated yet"
+        "sensor 'baro' (air_speed) on link 'l' is not simulated yet"
     ]
 
 
@@ -959,3 +959,56 @@ def test_a_camera_sees_a_collada_meshs_own_texture_unless_the_visual_gives_a_mat
             assert left[2] > 100 > left[0] and right[0] > 100 > right[2], (left, right)
         sim.delete("poster")
         sim.delete("cam")
+
+
+AIR_PRESSURE_WORLD = """<?xml version="1.0"?><sdf version="1.9"><world name="w">
+  <plugin filename="gz-sim-air-pressure-system" name="gz::sim::systems::AirPressure"/>
+  <model name="baro"><static>true</static><pose>0 0 {z} 0 0 0</pose><link name="l">
+    <sensor name="p" type="air_pressure"><update_rate>100</update_rate><topic>baro</topic>
+      <air_pressure><reference_altitude>{ref}</reference_altitude>
+        <pressure><noise type="gaussian"><mean>0</mean><stddev>{sd}</stddev></noise></pressure></air_pressure>
+    </sensor></link></model></world></sdf>"""
+
+
+@pytest.mark.parametrize(("z", "ref"), [(0.5, 0.0), (2.0, 1000.0), (0.0, 8000.0)])
+def test_an_air_pressure_sensor_reads_the_standard_atmosphere_at_its_height(z: float, ref: float) -> None:
+    """Issue 32's new sensor kind (one module and one import line): SDF's air_pressure, as gz-sensors
+    computes it (US standard atmosphere's troposphere on the geopotential height of reference_altitude +
+    the sensor's z), published as sensor_msgs/FluidPressure on its <topic>."""
+    world = load_string(AIR_PRESSURE_WORLD.format(z=z, ref=ref, sd=0)).value
+    sim = Simulation(world, rtf=0)
+    readings = _record(sim, "/baro")
+    sim.step(50)
+    assert readings, "nothing published"
+    # the barometric formula, written out here: p0 (1 - L h / T0)^(g M / (R L)), h geopotential
+    h = ref + z
+    h_geo = 6356766.0 * h / (6356766.0 + h)
+    expected = 101325.0 * (1 - 0.0065 * h_geo / 288.15) ** (9.80665 * 28.9644 / (8314.32 * 0.0065))
+    last = readings[-1]
+    assert last.fluid_pressure == pytest.approx(expected, rel=1e-12)
+    assert last.variance == 0.0 and last.frame_id == "baro::l::p"
+    if ref == 0.0:
+        assert last.fluid_pressure == pytest.approx(101319.0, abs=1.0)  # 0.5 m above sea level
+    if ref == 1000.0:
+        assert last.fluid_pressure == pytest.approx(89851.0, abs=10.0)  # the tables' 89,875 Pa at 1 km, 2 m lower
+
+
+def test_air_pressure_noise_and_its_variance_as_gz_sensors_reports_it_and_the_ros_message() -> None:
+    from gazelle.ros._convert import to_ros
+    from gazelle.systems.sensors.air_pressure import FLUID_PRESSURE, pressure_at
+
+    world = load_string(AIR_PRESSURE_WORLD.format(z=1.0, ref=0.0, sd=4.0)).value
+    sim = Simulation(world, rtf=0, seed=1)
+    readings = _record(sim, "/baro")
+    sim.step(3000)
+    values = np.array([r.fluid_pressure for r in readings])
+    assert len(values) >= 290
+    assert abs(values.std() - 4.0) < 0.5  # Gaussian, stddev 4 Pa
+    assert abs(values.mean() - pressure_at(1.0)) < 2.0  # around the true value (bias 0 here)
+    assert readings[-1].variance == pytest.approx(2.0)  # gz-sensors: sqrt(stddev), not stddev squared
+    # the message the ROS bridge publishes: a declared message, converted field by field
+    msg = to_ros(FLUID_PRESSURE)(readings[-1])
+    assert type(msg).__name__ == "FluidPressure" and type(msg).__module__.startswith("sensor_msgs.msg")
+    assert msg.fluid_pressure == readings[-1].fluid_pressure and msg.variance == pytest.approx(2.0)
+    assert msg.header.frame_id == "baro::l::p"
+    assert msg.header.stamp.sec + 1e-9 * msg.header.stamp.nanosec == pytest.approx(readings[-1].stamp_sec)

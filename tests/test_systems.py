@@ -399,16 +399,18 @@ def test_every_sensor_kind_declares_what_runs_it_and_the_registry_is_derived_fro
     from gazelle.systems import _registry
     from gazelle.systems.sensors import OUTPUT_MESSAGES, SENSOR_SYSTEMS, Camera, GpsSensor, ImuSensor, Lidar
 
-    assert len(SENSOR_SYSTEMS) == 8
+    assert len(SENSOR_SYSTEMS) == 9
     for cls in SENSOR_SYSTEMS:
         assert cls.sdf_types and cls.sdf_types <= _registry.SDF_SENSOR_TYPES, cls
         assert cls.gz_system, cls
         kind = getattr(cls, "output_kind", None)
-        assert kind is None or kind in OUTPUT_MESSAGES, cls  # every output is one sensor_output knows
+        # every output is a message sensor_output knows, or one the sensor's own module declares
+        assert kind is None or kind in OUTPUT_MESSAGES or getattr(cls, "output_message", None) is not None, cls
     plugins, world = _registry._sensor_tables()
     assert plugins["gazebo_ros_ray_sensor"] == (Lidar, Lidar.sdf_types)
     assert plugins["gazebo_ros_depth_camera"][0] is Camera and "camera" not in plugins["gazebo_ros_depth_camera"][1]
     for spelling in ("gz-sim-imu-system", "gz::sim::systems::Imu", "ignition::gazebo::systems::Imu"):
         assert world[spelling] == {"imu": ImuSensor}
     assert world["gz-sim-navsat-system"] == {"gps": GpsSensor, "navsat": GpsSensor}
+    assert set(world["gz-sim-air-pressure-system"]) == {"air_pressure"}  # its file's spelling, declared
     assert world["gz-sim-sensors-system"]["gpu_lidar"] is Lidar and world["gz-sim-sensors-system"]["rgbd"] is Camera

@@ -55,7 +55,7 @@ from ..systems import (
     TransformBatch,
     UpdateInfo,
 )
-from ._convert import FROM_ROS, ROS_TYPES, TO_ROS, from_pose_msg, to_pose_msg, to_time
+from ._convert import FROM_ROS, from_pose_msg, ros_type, to_pose_msg, to_ros, to_time
 from ._exposure import ServerRegistry
 from ._names import gz_topic_on_ros
 from ._outbox import Lane, Outbox
@@ -381,7 +381,7 @@ class SimulationNode(Node):
 
     def _mirror(self, ep: Endpoint, topic: str) -> None:
         """A shared rclpy publisher (a sink on the endpoint) or a subscription for ``ep``, on ROS ``topic``."""
-        ros_type = ROS_TYPES[ep.msg_type]
+        msg_class = ros_type(ep.msg_type)
         # a gazebo_ros plugin's topics are its own node's (see _plugin_nodes); the rest are this node's
         owner: Node = self.plugin_nodes.acquire(ep.node) if ep.node else self
         if ep.is_publisher:
@@ -391,13 +391,13 @@ class SimulationNode(Node):
                 if entry is None:
                     entry = _RosEndpoint(
                         owner.create_publisher(
-                            ros_type, topic, qos_profile(ep.qos, ep.depth), event_callbacks=_no_pub_events()
+                            msg_class, topic, qos_profile(ep.qos, ep.depth), event_callbacks=_no_pub_events()
                         ),
                         owner,
                     )
                     self._pubs[key] = entry
                 entry.users += 1
-            convert = TO_ROS[ep.msg_type]
+            convert = to_ros(ep.msg_type)
             handle = entry.handle
             if ep.msg_type is MsgType.TF_STATIC:
                 with self._lock:
@@ -419,12 +419,17 @@ class SimulationNode(Node):
             wanted = None if ep.qos is Qos.LATCHED else _Subscribed(handle)
             ep.add_sink(sink, wanted)
         else:
+            if not isinstance(ep.msg_type, MsgType):  # a declared message is something a system publishes
+                logging.getLogger("gazelle.ros").error(
+                    f"'{ep.owner}': {ep.topic} ({ep.msg_type.value}) is not one gazelle subscribes to; not on ROS"
+                )
+                return
             convert_in = FROM_ROS[ep.msg_type]
             callback = ep.callback
             assert callback is not None
             deliver = self.sim.deliver  # at the sim time the message came, also while catching up
             sub = owner.create_subscription(
-                ros_type,
+                msg_class,
                 topic,
                 lambda msg: deliver(callback, convert_in(msg)),
                 qos_profile(ep.qos, ep.depth),

@@ -2,8 +2,12 @@
 
 from __future__ import annotations
 
+import dataclasses
+import importlib
 import math
 from array import array
+from collections.abc import Callable
+from typing import Any
 
 from builtin_interfaces.msg import Duration, Time
 from control_msgs.msg import DynamicJointState as DynamicJointStateMsg
@@ -40,6 +44,7 @@ from ..systems import (
     Altimeter,
     CameraInfo,
     Contacts,
+    DeclaredMessage,
     DisplayTrajectory,
     DynamicJointState,
     Float64,
@@ -468,3 +473,36 @@ FROM_ROS = {
         str(m.model_id), tuple(from_joint_trajectory_msg(t.joint_trajectory) for t in m.trajectory)
     ),
 }
+
+
+def ros_type(kind: MsgType | DeclaredMessage) -> Any:
+    """The rclpy message class of an endpoint's kind: MsgType's from the table above, a declared one's
+    imported by its name (``sensor_msgs/msg/FluidPressure``)."""
+    found = ROS_TYPES.get(kind) if isinstance(kind, MsgType) else None
+    if found is not None:
+        return found
+    package, _msg, name = kind.value.partition("/msg/")
+    return getattr(importlib.import_module(f"{package}.msg"), name)
+
+
+def to_ros(kind: MsgType | DeclaredMessage) -> Callable[[Any], Any]:
+    """The payload-to-message conversion of an endpoint's kind: MsgType's from the table above; a declared
+    one's generic: the payload dataclass's fields set by name, ``stamp_sec``/``frame_id`` as the header."""
+    found = TO_ROS.get(kind) if isinstance(kind, MsgType) else None
+    if found is not None:
+        return found
+    cls = ros_type(kind)
+
+    def convert(payload: Any) -> Any:
+        msg = cls()
+        for f in dataclasses.fields(payload):
+            value = getattr(payload, f.name)
+            if f.name == "stamp_sec":
+                msg.header.stamp = to_time(value)
+            elif f.name == "frame_id":
+                msg.header.frame_id = value
+            else:
+                setattr(msg, f.name, value)
+        return msg
+
+    return convert

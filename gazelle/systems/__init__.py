@@ -34,6 +34,7 @@ if TYPE_CHECKING:
     from ._bus import CameraInfo as CameraInfo
     from ._bus import ContactPair as ContactPair
     from ._bus import Contacts as Contacts
+    from ._bus import DeclaredMessage as DeclaredMessage
     from ._bus import DisplayTrajectory as DisplayTrajectory
     from ._bus import DynamicJointState as DynamicJointState
     from ._bus import Endpoint as Endpoint
@@ -45,6 +46,7 @@ if TYPE_CHECKING:
     from ._bus import JointTrajectory as JointTrajectory
     from ._bus import LaserScan as LaserScan
     from ._bus import MagneticField as MagneticField
+    from ._bus import MessageKind as MessageKind
     from ._bus import MsgType as MsgType
     from ._bus import NavSatFix as NavSatFix
     from ._bus import Odometry as Odometry
@@ -105,6 +107,8 @@ _LAZY = {
     "JointTrajectory": ("._bus", "JointTrajectory"),
     "LaserScan": ("._bus", "LaserScan"),
     "MagneticField": ("._bus", "MagneticField"),
+    "DeclaredMessage": ("._bus", "DeclaredMessage"),
+    "MessageKind": ("._bus", "MessageKind"),
     "MsgType": ("._bus", "MsgType"),
     "NavSatFix": ("._bus", "NavSatFix"),
     "Odometry": ("._bus", "Odometry"),
@@ -159,6 +163,8 @@ __all__ = [
     "Imu",
     "JointStates",
     "LaserScan",
+    "DeclaredMessage",
+    "MessageKind",
     "MsgType",
     "NavSatFix",
     "Odometry",

@@ -357,6 +357,22 @@ class Qos(enum.Enum):
 
 
 # --------------------------------------------------------------------------- endpoints
+@dataclass(frozen=True)
+class DeclaredMessage:
+    """A message type declared by the system that publishes it, beside :class:`MsgType`'s (a new sensor
+    kind's, in its own module). The ROS layer publishes it as ``value`` (``pkg/msg/Name``) by a generic
+    conversion: the payload is a dataclass whose fields are the ROS message's own, ``stamp_sec`` and
+    ``frame_id`` going into its ``header``."""
+
+    name: str
+    value: str
+    """The ROS type, ``sensor_msgs/msg/FluidPressure``."""
+
+
+MessageKind = MsgType | DeclaredMessage
+"""What an endpoint carries: one of :class:`MsgType`'s, or a :class:`DeclaredMessage`."""
+
+
 @dataclass(eq=False)
 class Endpoint:
     """One publisher or subscription declared by a system."""
@@ -365,7 +381,7 @@ class Endpoint:
     """Entity name (endpoints are removed with their entity)."""
     topic: str
     """Fully resolved topic name, e.g. ``/cmd_vel`` or ``/r1/odom``."""
-    msg_type: MsgType
+    msg_type: MessageKind
     is_publisher: bool
     qos: Qos = Qos.DEFAULT
     depth: int = 10
@@ -495,7 +511,7 @@ class Bus:
                 self._listeners.remove(listener)
 
     def advertise(
-        self, owner: str, topic: str, msg_type: MsgType, *, qos: Qos = Qos.DEFAULT, depth: int = 10
+        self, owner: str, topic: str, msg_type: MessageKind, *, qos: Qos = Qos.DEFAULT, depth: int = 10
     ) -> Endpoint:
         """Declare a publisher."""
         return self._add(Endpoint(owner, topic, msg_type, True, qos, depth))

@@ -123,9 +123,10 @@ _REGISTRY: dict[str, Callable[[], System]] = {
 }
 
 
-def _gz_spellings(name: str) -> tuple[str, ...]:
-    """Every way a world names gz-sim's system ``name`` (``Imu``): gz and Ignition, file and class."""
-    kebab = name.lower()
+def _gz_spellings(name: str, file: str = "") -> tuple[str, ...]:
+    """Every way a world names gz-sim's system ``name`` (``Imu``): gz and Ignition, file (``file``, else the
+    lower-case name) and class."""
+    kebab = file or name.lower()
     return (
         f"gz-sim-{kebab}-system",
         f"gz::sim::systems::{name}",
@@ -148,7 +149,7 @@ def _sensor_tables() -> tuple[
     for cls in SENSOR_SYSTEMS:
         for plugin, types in cls.classic_plugins.items():
             plugins[plugin] = (cls, types if types is not None else cls.sdf_types)
-        for spelling in _gz_spellings(cls.gz_system) if cls.gz_system else ():
+        for spelling in _gz_spellings(cls.gz_system, cls.gz_file) if cls.gz_system else ():
             world.setdefault(spelling, {}).update(dict.fromkeys(sorted(cls.sdf_types), cls))
     return plugins, world
 

@@ -64,3 +64,31 @@ def test_a_gz_position_controller_on_its_default_topic_spawns_and_is_commanded_o
     finally:
         sim.stop()
         bridge.shutdown()
+
+
+def test_a_gz_air_pressure_sensor_is_heard_over_ros_as_sensor_msgs_fluid_pressure(tmp_path) -> None:
+    """The new sensor kind's own declared message goes through the ROS bridge's generic conversion:
+    a real `gazelle sim` and a plain subscriber."""
+    from sensor_msgs.msg import FluidPressure
+
+    from gazelle.testing import Sim, reserve_domain
+
+    world = tmp_path / "baro.sdf"
+    world.write_text(
+        '<?xml version="1.0"?><sdf version="1.9"><world name="w">'
+        '<plugin filename="gz-sim-air-pressure-system" name="gz::sim::systems::AirPressure"/>'
+        '<model name="baro"><static>true</static><pose>0 0 1 0 0 0</pose><link name="l">'
+        '<sensor name="p" type="air_pressure"><update_rate>10</update_rate><topic>baro</topic></sensor>'
+        "</link></model></world></sdf>"
+    )
+    domain = reserve_domain()
+    sim = Sim(domain_id=domain.domain_id, world=world)
+    try:
+        heard = sim.ros.subscribe("/baro", FluidPressure)
+        sim.run_for(1.0)
+        heard.wait(5, 30)
+        assert heard.last.header.frame_id == "baro::l::p"
+        assert heard.last.fluid_pressure == pytest.approx(101313.0, abs=1.0)  # 1 m above sea level
+    finally:
+        sim.close()
+        domain.release()

@@ -30,6 +30,7 @@ applied as configured; any other noise type is warned about with its file:line a
 """
 
 from ._common import OUTPUT_MESSAGES, SENSOR_SYSTEMS, Noise, SensorClass, parse_noise, sensor_system
+from .air_pressure import AirPressureSensor as AirPressureSensor
 from .altimeter import AltimeterSensor
 from .camera import CAMERA_TYPES, DEPTH_TYPES, MAX_IMAGE_SIDE, Camera
 from .contact import ContactSensor

@@ -20,6 +20,7 @@ from ...physics import BodyHandle, PhysicsWorld
 from .._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
 from .._bus import (
     Endpoint,
+    MessageKind,
     MsgType,
     ParamValue,
     resolve_topic,
@@ -34,6 +35,7 @@ class SensorClass(Protocol):
     sdf_types: frozenset[str]
     classic_plugins: ClassVar[dict[str, frozenset[str] | None]]
     gz_system: str
+    gz_file: str
 
     def __call__(self) -> System: ...
 
@@ -53,7 +55,9 @@ def sensor_system(cls: S) -> S:
       inside its ``<sensor>``, each with the sensor types it takes (None: all of ``sdf_types``);
     * ``gz_system``: the gz-sim world system that runs it when a model has no gazebo_ros plugin, by its
       class name (``Sensors``, ``Imu``, ...): ``gz-sim-<name>-system``, ``gz::sim::systems::<Name>`` and
-      the Ignition spellings all name it.
+      the Ignition spellings all name it (``gz_file``: the file's part, where it is not the lower-case
+      name: ``air-pressure``);
+    * ``output_kind`` (the gz-sim topic's suffix) and, for a message of its own, ``output_message``.
     """
     SENSOR_SYSTEMS.append(cast(SensorClass, cls))
     return cls
@@ -159,7 +163,7 @@ class Output:
 
     topic: str
     frame_id: str
-    msg_type: MsgType
+    msg_type: MessageKind
     radiation_type: int = 1
     min_intensity: float = -math.inf
 
@@ -250,14 +254,21 @@ OUTPUT_MESSAGES = {
 """A sensor's ``output_kind`` (its gz-sim topic's suffix) -> the message it publishes by default."""
 
 
-def sensor_output(ctx: SystemContext, link: str, sensor: Sensor | None, kind: str, c: SensorPluginConfig) -> Output:
+def sensor_output(
+    ctx: SystemContext,
+    link: str,
+    sensor: Sensor | None,
+    kind: str,
+    c: SensorPluginConfig,
+    message: MessageKind | None = None,
+) -> Output:
     """Resolve the topic, frame and message type of a sensor (``kind``: ``scan``, ``imu`` or ``image``), from its
     gazebo_ros plugin's parameters ``c`` or, without a plugin, as gz-sim names it."""
     from ..robot_state import entity_frame_prefix
 
     log = ctx.logger
     prefix = entity_frame_prefix(ctx.entity, log)
-    default_type = OUTPUT_MESSAGES[kind]
+    default_type = message if message is not None else OUTPUT_MESSAGES[kind]
     if ctx.plugin is None:  # gz-sim: <topic> and <frame_id>
         assert sensor is not None
         cfg = sensor.config
@@ -303,6 +314,10 @@ class _SensorSystem(System):
     sdf_types: frozenset[str] = frozenset()
     classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {}
     gz_system = ""
+    gz_file = ""
+    output_message: ClassVar[MessageKind | None] = None
+    """The message it publishes, when not its ``output_kind``'s in :data:`OUTPUT_MESSAGES` (a
+    :class:`DeclaredMessage` of its own module)."""
 
     def __init__(self, seed: int | None = None) -> None:
         self.sensor: Sensor | None = None
@@ -386,7 +401,7 @@ class _SensorSystem(System):
             log.error(f"{self.kind} sensor: link '{link}' does not exist in '{ctx.entity.name}'; it does nothing")
             return False
         self.link = link or ""
-        self.output = sensor_output(ctx, self.link, self.sensor, self.output_kind, c)
+        self.output = sensor_output(ctx, self.link, self.sensor, self.output_kind, c, self.output_message)
         self._body = ctx.world.body(ctx.entity.name, self.link)
         if advertise:
             self._pub = ctx.bus.advertise(ctx.entity.name, self.output.topic, self.output.msg_type, depth=SENSOR_DEPTH)

@@ -65,6 +65,7 @@ class ForceTorqueSensor(System):
     sdf_types = frozenset({"force_torque"})
     classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {}
     gz_system = "ForceTorque"
+    gz_file = ""
 
     def __init__(self, seed: int | None = None) -> None:
         self.config = ForceTorqueConfig()
