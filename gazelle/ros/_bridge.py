@@ -475,7 +475,7 @@ class SimulationNode(Node):
     def component_added(self, owner: str, component: Any) -> None:
         """A gazebo_ros plugin gets its node; a controller manager its node; a trajectory controller its
         action server."""
-        from ..systems.ros2_control import ControllerManager, GripperActionController, JointTrajectoryController
+        from ..systems.ros2_control import ControllerManager
         from ._control import ControllerManagerNode
 
         if isinstance(component, PluginNode):
@@ -485,7 +485,7 @@ class SimulationNode(Node):
             with self._lock:
                 self._managers[owner] = node
             self._add_node(node)
-        elif isinstance(component, (JointTrajectoryController, GripperActionController)):
+        elif getattr(component, "action_type", ""):  # a controller that serves an action (JTC, gripper)
             with self._lock:
                 node = self._managers.get(owner)
             if node is not None:
@@ -498,7 +498,7 @@ class SimulationNode(Node):
 
     def component_removed(self, component: Any) -> None:
         """Undo :meth:`component_added`."""
-        from ..systems.ros2_control import ControllerManager, GripperActionController, JointTrajectoryController
+        from ..systems.ros2_control import ControllerManager
 
         if isinstance(component, PluginNode):
             self.plugin_nodes.undeclare(component)
@@ -509,7 +509,7 @@ class SimulationNode(Node):
             if node is not None:
                 self._remove_node(node)
                 node.destroy_node()
-        elif isinstance(component, (JointTrajectoryController, GripperActionController)):
+        elif getattr(component, "action_type", ""):
             with self._lock:
                 nodes = list(self._managers.values())
             for node in nodes:

@@ -270,9 +270,11 @@ class ControllerManagerNode(Node):
         return res
 
     # ------------------------------------------------------------------ controllers' actions
-    def add_controller_action(self, controller: JointTrajectoryController | GripperActionController) -> None:
-        """Serve a controller's action: ``follow_joint_trajectory`` of a JTC, ``gripper_cmd`` of a gripper."""
-        if isinstance(controller, JointTrajectoryController):
+    def add_controller_action(self, controller: Any) -> None:
+        """Serve a controller's action, by the type it declares (``Controller.action_type``):
+        ``follow_joint_trajectory`` of a JTC, ``gripper_cmd`` of a gripper. A type gazelle does not serve
+        is an error naming it (a new controller's action needs its server here)."""
+        if controller.action_type == "control_msgs/action/FollowJointTrajectory":
             jtc = controller
             server = ActionServer(
                 self,
@@ -283,7 +285,7 @@ class ControllerManagerNode(Node):
                 cancel_callback=lambda _handle: CancelResponse.ACCEPT,
                 callback_group=self._cb,
             )
-        else:
+        elif controller.action_type == "control_msgs/action/GripperCommand":
             gripper = controller
             server = ActionServer(
                 self,
@@ -294,6 +296,9 @@ class ControllerManagerNode(Node):
                 cancel_callback=lambda _handle: CancelResponse.ACCEPT,
                 callback_group=self._cb,
             )
+        else:
+            self._log.error(f"controller '{controller.name}': its action {controller.action_type} is not served")
+            return
         with self._lock:
             self._actions[id(controller)] = server
 

@@ -50,6 +50,9 @@ class Controller:
     :meth:`update` with the hardware's state values and the command values to write."""
 
     type_name: ClassVar[str] = ""
+    action_type: ClassVar[str] = ""
+    """The action the controller serves on ``action_name`` (``control_msgs/action/FollowJointTrajectory``),
+    announced with ``ctx.add_component``; the ROS layer serves it by this type. "" for none."""
     """``package/Class`` as in the controller YAML."""
 
     def __init__(self, name: str, params: Params, ctx: ControllerContext) -> None:

@@ -44,6 +44,7 @@ class GripperActionController(Controller):
     """See the module docstring."""
 
     type_name = "position_controllers/GripperActionController"
+    action_type = "control_msgs/action/GripperCommand"
     interface = "position"
 
     def on_configure(self) -> None:

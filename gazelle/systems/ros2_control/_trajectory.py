@@ -132,6 +132,7 @@ class JointTrajectoryController(Controller):
     """See the module docstring."""
 
     type_name = "joint_trajectory_controller/JointTrajectoryController"
+    action_type = "control_msgs/action/FollowJointTrajectory"
 
     def on_configure(self) -> None:
         self.joints = self.string_list("joints")
