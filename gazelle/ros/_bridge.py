@@ -47,6 +47,7 @@ from ..sim import Simulation
 from ..systems import (
     RSP_PLUGIN,
     Endpoint,
+    JointStatePublisher,
     MsgType,
     PluginNode,
     Qos,
@@ -632,11 +633,12 @@ class SimulationNode(Node):
                 self._watched.pop(entity_name, None)
 
             def hand_over(entity_name: str = entity_name) -> bool:
+                from ..systems.ros2_control import ControllerManager
+
                 entity = self.sim.world.entities.get(entity_name)
                 if entity is None:
                     return False
-                kinds = {type(s).__name__ for s in entity.systems}
-                if not kinds & {"JointStatePublisher", "ControllerManager"}:
+                if not any(isinstance(s, (JointStatePublisher, ControllerManager)) for s in entity.systems):
                     return False  # the user's publisher would have no joint states to turn into TF
                 for system in entity.systems:
                     if isinstance(system, RobotStatePublisher):

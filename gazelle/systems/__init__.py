@@ -72,6 +72,7 @@ if TYPE_CHECKING:
     from ._registry import create_system as create_system
     from ._registry import plan_sensors as plan_sensors
     from ._registry import supported_plugins as supported_plugins
+    from .robot_state import JointStatePublisher as JointStatePublisher
     from .robot_state import RobotStatePublisher as RobotStatePublisher
     from .robot_state import robot_state_config as robot_state_config
 
@@ -134,6 +135,7 @@ _LAZY = {
     "plan_sensors": ("._registry", "plan_sensors"),
     "supported_plugins": ("._registry", "supported_plugins"),
     "RSP_PLUGIN": ("._plugin_names", "RSP_PLUGIN"),
+    "JointStatePublisher": (".robot_state", "JointStatePublisher"),
     "RobotStatePublisher": (".robot_state", "RobotStatePublisher"),
     "robot_state_config": (".robot_state", "robot_state_config"),
 }
@@ -179,6 +181,7 @@ __all__ = [
     "RSP_PLUGIN",
     "Range",
     "RateGate",
+    "JointStatePublisher",
     "RobotStatePublisher",
     "System",
     "SystemContext",
