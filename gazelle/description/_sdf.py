@@ -32,6 +32,7 @@ import math
 import re
 from dataclasses import dataclass, field, replace
 from pathlib import Path
+from typing import overload
 
 from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
 
@@ -42,6 +43,7 @@ from ._inertia import default_inertial, inertia_from_geometries, inertia_problem
 from ._model import (
     DEFAULT_MAGNETIC_FIELD,
     IDENTITY,
+    RGBA,
     Box,
     Capsule,
     Collision,
@@ -72,6 +74,7 @@ from ._model import (
     Sphere,
     SphericalCoordinates,
     Surface,
+    Vec3,
     Visual,
     World,
     quat_conj,
@@ -430,7 +433,7 @@ class _Loader:
 
     def vector(
         self, element: etree._Element | None, tag: str, count: int, default: tuple[float, ...] | None, doc: _Doc
-    ):
+    ) -> tuple[float, ...] | None:
         """``count`` numbers from a child; default when absent; error + default when malformed."""
         if element is None:
             return default
@@ -446,6 +449,15 @@ class _Loader:
             )
             return default
         return values
+
+    @overload
+    def vec3(self, element: etree._Element | None, tag: str, default: Vec3, doc: _Doc) -> Vec3: ...
+    @overload
+    def vec3(self, element: etree._Element | None, tag: str, default: None, doc: _Doc) -> Vec3 | None: ...
+    def vec3(self, element: etree._Element | None, tag: str, default: Vec3 | None, doc: _Doc) -> Vec3 | None:
+        """Three numbers from a child (a vector, a size, a scale); :meth:`vector`'s rules."""
+        v = self.vector(element, tag, 3, default, doc)
+        return None if v is None else (v[0], v[1], v[2])
 
     def flag(self, element: etree._Element | None, tag: str, default: bool, doc: _Doc) -> bool:
         if element is None:
@@ -463,7 +475,7 @@ class _Loader:
             return default
         return value
 
-    def color(self, element: etree._Element | None, tag: str, doc: _Doc):
+    def color(self, element: etree._Element | None, tag: str, doc: _Doc) -> RGBA | None:
         """An RGBA colour (RGB accepted, alpha 1); None when absent or malformed."""
         if element is None:
             return None
@@ -478,7 +490,7 @@ class _Loader:
                 self.loc(child, doc),
             )
             return None
-        return tuple(values) if len(values) == 4 else (*values, 1.0)
+        return (values[0], values[1], values[2], values[3] if len(values) == 4 else 1.0)
 
     def pose(self, element: etree._Element | None, doc: _Doc) -> tuple[Pose, str | None]:
         """The ``<pose>`` child of ``element`` and its ``relative_to`` (None = the default)."""
@@ -507,10 +519,9 @@ class _Loader:
                     ErrorCode.VALUE_INVALID, f"<pose> must be 6 numbers 'x y z roll pitch yaw', got {text!r}", loc
                 )
                 return IDENTITY, relative_to
-            rpy = values[3:]
-            if degrees:
-                rpy = tuple(math.radians(v) for v in rpy)
-            return Pose.from_xyz_rpy(values[:3], rpy), relative_to  # type: ignore[arg-type]
+            scale = math.pi / 180.0 if degrees else 1.0
+            rpy = (values[3] * scale, values[4] * scale, values[5] * scale)
+            return Pose.from_xyz_rpy((values[0], values[1], values[2]), rpy), relative_to
         if fmt == "quat_xyzw":
             values = parse_floats(text, 7)
             if values is None:
@@ -523,7 +534,8 @@ class _Loader:
             if not norm > 1e-9:
                 self.sink.error(ErrorCode.VALUE_INVALID, "<pose> quaternion has zero length", loc)
                 return IDENTITY, relative_to
-            return Pose(values[:3], (qw / norm, qx / norm, qy / norm, qz / norm)), relative_to  # type: ignore[arg-type]
+            xyz = (values[0], values[1], values[2])
+            return Pose(xyz, (qw / norm, qx / norm, qy / norm, qz / norm)), relative_to
         self.sink.error(
             ErrorCode.ATTRIBUTE_INVALID,
             f"pose rotation_format must be 'euler_rpy' or 'quat_xyzw', got {fmt!r}",
@@ -1083,12 +1095,12 @@ class _Loader:
         for key, default in (("ixx", 1.0), ("ixy", 0.0), ("ixz", 0.0), ("iyy", 1.0), ("iyz", 0.0), ("izz", 1.0)):
             child = _find(inertia_el, key)
             value = default if child is None else parse_float(child.text)
-            if value is None:
+            if value is None and child is not None:
                 self.sink.warning(
                     ErrorCode.INERTIA_INVALID,
-                    f"link '{link}': <{key}> must be a number, got {(child.text or '').strip()!r}; "  # type: ignore[union-attr]
+                    f"link '{link}': <{key}> must be a number, got {(child.text or '').strip()!r}; "
                     "deriving the inertia from the collision geometry",
-                    self.loc(child, doc),  # type: ignore[arg-type]
+                    self.loc(child, doc),
                 )
                 return derive_inertial(shapes, mass)
             values[key] = value
@@ -1127,8 +1139,8 @@ class _Loader:
             return False
 
         if kind == "box":
-            size = self.vector(shape, "size", 3, (1.0, 1.0, 1.0), doc)
-            return Box(size) if positive(*size) else None  # pyright: ignore[reportArgumentType, reportOptionalIterable]
+            size = self.vec3(shape, "size", (1.0, 1.0, 1.0), doc)
+            return Box(size) if positive(*size) else None
         if kind in ("cylinder", "capsule"):
             default_r = 1.0 if kind == "cylinder" else 0.5
             radius = self.number(shape, "radius", default_r, doc)
@@ -1144,16 +1156,16 @@ class _Loader:
             radius = self.number(shape, "radius", 1.0, doc)
             return Sphere(radius) if positive(radius) else None
         if kind == "ellipsoid":
-            radii = self.vector(shape, "radii", 3, (1.0, 1.0, 1.0), doc)
-            return Ellipsoid(radii) if positive(*radii) else None  # pyright: ignore[reportArgumentType, reportOptionalIterable]
+            radii = self.vec3(shape, "radii", (1.0, 1.0, 1.0), doc)
+            return Ellipsoid(radii) if positive(*radii) else None
         if kind == "plane":
-            normal = self.vector(shape, "normal", 3, (0.0, 0.0, 1.0), doc)
-            size = self.vector(shape, "size", 2, Plane().size, doc)
-            n = math.sqrt(sum(v * v for v in normal))  # pyright: ignore[reportOptionalIterable]
+            normal = self.vec3(shape, "normal", (0.0, 0.0, 1.0), doc)
+            size = self.vector(shape, "size", 2, Plane().size, doc) or Plane().size
+            n = math.sqrt(sum(v * v for v in normal))
             if n < 1e-12:
                 self.sink.error(ErrorCode.GEOMETRY_INVALID, "<plane> normal has zero length", loc)
                 return None
-            return Plane(tuple(v / n for v in normal), size)  # type: ignore[arg-type]
+            return Plane((normal[0] / n, normal[1] / n, normal[2] / n), (size[0], size[1]))
         if kind == "mesh":
             for child in child_elements(shape):
                 if _tag(child) not in ("uri", "scale") and ":" not in _tag(child):
@@ -1162,7 +1174,7 @@ class _Loader:
             if not uri:
                 self.sink.error(ErrorCode.ELEMENT_MISSING, "<mesh> has no <uri>", loc)
                 return None
-            scale = self.vector(shape, "scale", 3, (1.0, 1.0, 1.0), doc)
+            scale = self.vec3(shape, "scale", (1.0, 1.0, 1.0), doc)
             path = (
                 self.resolve(uri, doc)
                 if ("://" not in uri or uri.startswith(("model://", "package://", "file://")))
@@ -1171,11 +1183,11 @@ class _Loader:
             if path is None or not path.is_file():
                 why = f": {self.resolver.unresolved_reason(uri, doc.base_dir)}" if path is None else ""
                 self.sink.warning(ErrorCode.MESH_NOT_FOUND, f"mesh '{uri}' not found{why}", loc)
-                return Mesh(uri, None, scale)  # pyright: ignore[reportArgumentType]
+                return Mesh(uri, None, scale)
             if not self.resolver.allowed(path):
                 self.sink.warning(ErrorCode.URI_UNRESOLVED, f"mesh {self.resolver.refusal(uri)}", loc)
-                return Mesh(uri, None, scale)  # pyright: ignore[reportArgumentType]
-            return Mesh(uri, str(path), scale)  # pyright: ignore[reportArgumentType]
+                return Mesh(uri, None, scale)
+            return Mesh(uri, str(path), scale)
         if kind == "empty":
             return None
         self.sink.warning(
@@ -1227,7 +1239,7 @@ class _Loader:
                     ErrorCode.VALUE_INVALID,
                     f"<collide_bitmask> must be an integer, got {raw!r}",
                     self.loc(_find(contact, "collide_bitmask"), doc),
-                )  # type: ignore[arg-type]
+                )
         without = _find(contact, "collide_without_contact") if contact is not None else None
         if without is not None and (without.text or "").strip().lower() in ("1", "true"):
             # gz-sim: the shape reports contacts but exerts no force. MuJoCo has no such geom: it takes
@@ -1244,7 +1256,7 @@ class _Loader:
         return Surface(
             mu=mu,
             mu2=mu2,
-            fdir1=self.vector(ode, "fdir1", 3, None, doc),  # pyright: ignore[reportArgumentType]
+            fdir1=self.vec3(ode, "fdir1", None, doc),
             slip1=self.opt_number(ode, "slip1", doc),
             slip2=self.opt_number(ode, "slip2", doc),
             torsional=self.opt_number(torsional, "coefficient", doc),
@@ -1275,10 +1287,10 @@ class _Loader:
                 texture = self.text(workflow, "albedo_map") or texture
         return Material(
             name=name,
-            diffuse=self.color(element, "diffuse", doc),  # pyright: ignore[reportArgumentType]
-            ambient=self.color(element, "ambient", doc),  # pyright: ignore[reportArgumentType]
-            specular=self.color(element, "specular", doc),  # pyright: ignore[reportArgumentType]
-            emissive=self.color(element, "emissive", doc),  # pyright: ignore[reportArgumentType]
+            diffuse=self.color(element, "diffuse", doc),
+            ambient=self.color(element, "ambient", doc),
+            specular=self.color(element, "specular", doc),
+            emissive=self.color(element, "emissive", doc),
             texture=texture,
         )
 
@@ -1342,7 +1354,7 @@ class _Loader:
             if not ref:
                 self.sink.error(ErrorCode.ELEMENT_MISSING, f"joint '{name}' has no <{role}>", loc)
                 return
-            where = self.loc(el, doc)  # type: ignore[arg-type]
+            where = self.loc(el, doc)
             if ref == "world" or ref in scope.nodes or ("::" in ref and ref.partition("::")[0] in scope.nested):
                 body = scope.body(ref, where)
             else:
@@ -1419,7 +1431,7 @@ class _Loader:
         self.check(element, doc, "axis")
         xyz_el = _find(element, "xyz")
         loc = self.loc(xyz_el if xyz_el is not None else element, doc)
-        xyz = self.vector(element, "xyz", 3, (0.0, 0.0, 1.0), doc)
+        xyz = self.vec3(element, "xyz", (0.0, 0.0, 1.0), doc)
         expressed_in = None
         if doc.version <= (1, 4):
             expressed_in = "__model__"
@@ -1432,13 +1444,13 @@ class _Loader:
         if expressed_in is not None and expressed_in != joint:
             X_MF = scope.pose(expressed_in, loc)
             if X_MF is not None:
-                xyz = quat_rotate(quat_conj(X_MJ.orientation), quat_rotate(X_MF.orientation, xyz))  # pyright: ignore[reportArgumentType]
-        norm = math.sqrt(sum(v * v for v in xyz))  # pyright: ignore[reportOptionalIterable]
+                xyz = quat_rotate(quat_conj(X_MJ.orientation), quat_rotate(X_MF.orientation, xyz))
+        norm = math.sqrt(sum(v * v for v in xyz))
         if norm < 1e-12:
             self.sink.error(ErrorCode.JOINT_AXIS_INVALID, f"joint '{joint}': axis xyz has zero length", loc)
             norm = 1.0
             xyz = (0.0, 0.0, 1.0)
-        xyz = tuple(v / norm for v in xyz)  # pyright: ignore[reportOptionalIterable]
+        xyz = (xyz[0] / norm, xyz[1] / norm, xyz[2] / norm)
         limit_el = _find(element, "limit")
         limit = JointLimit()
         if limit_el is not None:
@@ -1480,7 +1492,7 @@ class _Loader:
                 mimic = Mimic(
                     leader, self.number(mimic_el, "multiplier", 1.0, doc), self.number(mimic_el, "offset", 0.0, doc)
                 )
-        return JointAxis(xyz, limit, dynamics), mimic  # type: ignore[arg-type]
+        return JointAxis(xyz, limit, dynamics), mimic
 
     # ================================================================== worlds
     def light(self, element: etree._Element, doc: _Doc, scope: Scope | None) -> Light | None:
@@ -1512,9 +1524,9 @@ class _Loader:
             name=name,
             type=kind,
             pose=pose,
-            diffuse=self.color(element, "diffuse", doc) or default.diffuse,  # pyright: ignore[reportArgumentType]
-            specular=self.color(element, "specular", doc) or default.specular,  # pyright: ignore[reportArgumentType]
-            direction=self.vector(element, "direction", 3, default.direction, doc),  # pyright: ignore[reportArgumentType]
+            diffuse=self.color(element, "diffuse", doc) or default.diffuse,
+            specular=self.color(element, "specular", doc) or default.specular,
+            direction=self.vec3(element, "direction", default.direction, doc),
             cast_shadows=self.flag(element, "cast_shadows", False, doc),
             attenuation_range=self.opt_number(attenuation, "range", doc),
             location=loc,
@@ -1533,14 +1545,14 @@ class _Loader:
             self.check(physics_el, doc, "physics")
         gravity = (0.0, 0.0, -9.8)
         if _find(element, "gravity") is not None:
-            gravity = self.vector(element, "gravity", 3, gravity, doc)
+            gravity = self.vec3(element, "gravity", gravity, doc)
         elif physics_el is not None:
-            gravity = self.vector(physics_el, "gravity", 3, gravity, doc)
+            gravity = self.vec3(physics_el, "gravity", gravity, doc)
         magnetic = DEFAULT_MAGNETIC_FIELD
         if _find(element, "magnetic_field") is not None:
-            magnetic = self.vector(element, "magnetic_field", 3, magnetic, doc)
+            magnetic = self.vec3(element, "magnetic_field", magnetic, doc)
         elif physics_el is not None and _find(physics_el, "magnetic_field") is not None:
-            magnetic = self.vector(physics_el, "magnetic_field", 3, magnetic, doc)
+            magnetic = self.vec3(physics_el, "magnetic_field", magnetic, doc)
         spherical = None
         sph_el = _find(element, "spherical_coordinates")
         if sph_el is not None:
@@ -1589,8 +1601,8 @@ class _Loader:
         if scene_el is not None:
             self.check(scene_el, doc, "scene")
             scene = Scene(
-                ambient=self.color(scene_el, "ambient", doc) or scene.ambient,  # pyright: ignore[reportArgumentType]
-                background=self.color(scene_el, "background", doc) or scene.background,  # pyright: ignore[reportArgumentType]
+                ambient=self.color(scene_el, "ambient", doc) or scene.ambient,
+                background=self.color(scene_el, "background", doc) or scene.background,
                 shadows=self.flag(scene_el, "shadows", scene.shadows, doc),
                 grid=self.flag(scene_el, "grid", scene.grid, doc),
             )
@@ -1678,7 +1690,7 @@ class _Loader:
             return None
         return World(
             name=name,
-            gravity=gravity,  # type: ignore[arg-type]
+            gravity=gravity,
             physics=physics,
             scene=scene,
             models=tuple(models),
@@ -1687,7 +1699,7 @@ class _Loader:
             source_file=doc.source,
             location=loc,
             spherical_coordinates=spherical,
-            magnetic_field=magnetic,  # type: ignore[arg-type]
+            magnetic_field=magnetic,
         )
 
 
