@@ -52,6 +52,7 @@ from ._model import (
     Sensor,
     Sphere,
     Surface,
+    Vec3,
     Visual,
 )
 from ._resources import ResourceResolver
@@ -237,6 +238,11 @@ class _Reader:
             )
         return values
 
+    def floats3(self, element: etree._Element, attr: str, default: Vec3 | None) -> Vec3 | None:
+        """Three floats (a vector, a size, a scale): :meth:`floats`' rules, typed."""
+        v = self.floats(element, attr, 3, default)
+        return None if v is None else (v[0], v[1], v[2])
+
     def number(self, element: etree._Element, attr: str, default: float | None = None) -> float | None:
         """One float from attribute ``attr`` (``default`` if absent; None after an error if invalid)."""
         values = self.floats(element, attr, 1, None if default is None else (default,))
@@ -267,9 +273,9 @@ class _Reader:
         origin = parent.find("origin")
         if origin is None:
             return Pose()
-        xyz = self.floats(origin, "xyz", 3, (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0)
-        rpy = self.floats(origin, "rpy", 3, (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0)
-        return Pose.from_xyz_rpy(xyz, rpy)  # type: ignore[arg-type]
+        xyz = self.floats3(origin, "xyz", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0)
+        rpy = self.floats3(origin, "rpy", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0)
+        return Pose.from_xyz_rpy(xyz, rpy)
 
     # ---- geometry
     def geometry(self, parent: etree._Element, what: str) -> Geometry | None:
@@ -300,13 +306,13 @@ class _Reader:
         if element.get("size") is None:
             self.error(ErrorCode.ATTRIBUTE_MISSING, f"{what} has no 'size' attribute", element)
             return None
-        size = self.floats(element, "size", 3, None)
+        size = self.floats3(element, "size", None)
         if size is None:
             return None
         if min(size) <= 0:
             self.error(ErrorCode.GEOMETRY_INVALID, f"{what} size must be > 0, got {element.get('size')!r}", element)
             return None
-        return Box(size)  # type: ignore[arg-type]
+        return Box(size)
 
     def sphere(self, element: etree._Element, what: str) -> Geometry | None:
         """A ``<sphere radius>``."""
@@ -327,7 +333,7 @@ class _Reader:
         if uri is None or not uri.strip():
             self.error(ErrorCode.ATTRIBUTE_MISSING, f"{what} has no 'filename' attribute", element)
             return None
-        scale = self.floats(element, "scale", 3, (1.0, 1.0, 1.0))
+        scale = self.floats3(element, "scale", (1.0, 1.0, 1.0))
         if scale is None:
             return None
         if 0.0 in scale:
@@ -335,7 +341,7 @@ class _Reader:
                 ErrorCode.GEOMETRY_INVALID, f"{what} scale must not be zero, got {element.get('scale')!r}", element
             )
             return None
-        return Mesh(uri, self.mesh_path(element, uri), scale)  # type: ignore[arg-type]
+        return Mesh(uri, self.mesh_path(element, uri), scale)
 
     def mesh_path(self, element: etree._Element, uri: str) -> str | None:
         """The absolute file of a mesh URI, or None after a URI_UNRESOLVED / MESH_NOT_FOUND warning."""
@@ -369,9 +375,10 @@ class _Reader:
             if name:
                 self.warn(ErrorCode.MATERIAL_UNDEFINED, f"material '{name}' is not defined", element)
             return Material(name=name)
-        diffuse = None if color_el is None else self.floats(color_el, "rgba", 4, None)
+        rgba = None if color_el is None else self.floats(color_el, "rgba", 4, None)
+        diffuse = None if rgba is None else (rgba[0], rgba[1], rgba[2], rgba[3])
         texture = None if texture_el is None else texture_el.get("filename")
-        return Material(name=name, diffuse=diffuse, texture=texture)  # type: ignore[arg-type]
+        return Material(name=name, diffuse=diffuse, texture=texture)
 
     # ---- links
     def link(self, element: etree._Element, materials: dict[str, Material]) -> _LinkDraft | None:
@@ -501,9 +508,9 @@ class _Reader:
         if jtype not in _AXIS_JOINTS:
             return None
         axis_el = element.find("axis")
-        xyz: tuple[float, ...] | None = (1.0, 0.0, 0.0)
+        xyz: Vec3 | None = (1.0, 0.0, 0.0)
         if axis_el is not None:
-            xyz = self.floats(axis_el, "xyz", 3, (1.0, 0.0, 0.0))
+            xyz = self.floats3(axis_el, "xyz", (1.0, 0.0, 0.0))
             if xyz is None:
                 return None
         norm = math.sqrt(sum(v * v for v in xyz))
@@ -515,7 +522,7 @@ class _Reader:
             )
             return None
         return JointAxis(
-            tuple(v / norm for v in xyz),  # type: ignore[arg-type]
+            (xyz[0] / norm, xyz[1] / norm, xyz[2] / norm),
             limit=self.limit(element, joint, jtype),
             dynamics=self.optional(element, "dynamics", self.dynamics) or JointDynamics(),  # pyright: ignore[reportArgumentType]
         )
@@ -595,7 +602,7 @@ class _Reader:
                     ErrorCode.VALUE_INVALID, f"sensor '{name}' <pose> needs 6 numbers, got {pose_el.text!r}", pose_el
                 )
             else:
-                pose = Pose.from_xyz_rpy(values[:3], values[3:])  # type: ignore[arg-type]
+                pose = Pose.from_xyz_rpy((values[0], values[1], values[2]), (values[3], values[4], values[5]))
         rate = self.text_value(element, "update_rate", parse_float)
         always_on = self.text_value(element, "always_on", parse_bool)
         plugins = [p for p in (self.plugin(el) for el in element.findall("plugin")) if p is not None]
