@@ -57,6 +57,18 @@ def test_concurrent_spawn_and_delete_get_a_reply_each_and_leak_nothing(sim_facto
     def worker(k: int) -> None:
         client = RosClient(f"load_client_{k}")
         try:
+            # a new client's first request can be answered before the server's reply writer has found the
+            # client's reader (DDS discovery: the reply is lost, as with any ROS service); an empty request,
+            # refused at once, is asked until one answer comes, so the load below starts matched both ways
+            spawn = client.client(SpawnEntity, "/spawn_entity")
+            for _attempt in range(15):
+                warm = threading.Event()
+                spawn.call_async(SpawnEntity.Request()).add_done_callback(lambda _f, warm=warm: warm.set())
+                if warm.wait(2.0):
+                    break
+            else:
+                errors.append(f"client {k}: no answer to 15 empty spawn requests")
+                return
             for i in range(25):
                 name = f"b{k}_{i}"
                 req = SpawnEntity.Request(name=name, xml=box)
