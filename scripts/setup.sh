@@ -102,6 +102,11 @@ if [[ ! -f "$bytecode" || "$(cat "$bytecode")" != "$want" ]]; then
 fi
 "$VENV/bin/python" -m compileall -q -j 0 "$ROOT/gazelle" "$ROOT/launch" "$ROOT/launch_ros" >/dev/null 2>&1 || true
 
+# 3c. gazelle's compiled per-step loop (gazelle/physics/_native: ros2_control's servo cycles inside MuJoCo's
+#     steps), built once per source and MuJoCo version into the owner-only cache; without a compiler the
+#     same cycles run in Python.
+"$VENV/bin/python" -c 'from gazelle.physics import _native; _native.main()' || true
+
 # 4. Our interface packages (tf2_msgs, simulation_interfaces, gazebo_msgs, control_msgs,
 #    controller_manager_msgs), rebuilt only on change.
 step_start=$SECONDS

@@ -19,6 +19,7 @@ from ._handles import JointHandle as JointHandle
 from ._handles import PerGeneration as PerGeneration
 from ._render import OffscreenRenderer as OffscreenRenderer
 from ._render import RenderError as RenderError
+from ._servo_plan import ServoPlan as ServoPlan
 from ._world import MAX_COORDINATE_M as MAX_COORDINATE_M
 from ._world import WORLD_FRAMES as WORLD_FRAMES
 from ._world import ContactPoint as ContactPoint
@@ -51,6 +52,7 @@ __all__ = [
     "PhysicsWorld",
     "RenderError",
     "SEP",
+    "ServoPlan",
     "StagedRequest",
     "WORLD_FRAMES",
     "WorldError",

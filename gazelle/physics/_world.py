@@ -34,6 +34,7 @@ from ._builder import (
 from ._convex import cache_dir
 from ._handles import ActuatorGroup, ActuatorHandle, ActuatorKind, BodyHandle, JointGroup, JointHandle
 from ._render import OffscreenRenderer
+from ._servo_plan import ServoPlan, run_plans
 
 _log = logging.getLogger("gazelle.physics")
 MAX_COORDINATE_M = 1.0e5
@@ -294,6 +295,8 @@ class PhysicsWorld:
         """(model source, unsimulated parameters) -> how many entities had them (reported at the first)."""
         self._held: tuple[np.ndarray, np.ndarray] | None | bool = False
         """(qpos addresses, dof addresses) of the hinge/slide dofs above kinematic links; False = not indexed yet."""
+        self._servo_plans: list[ServoPlan] = []
+        """Planned servo cycles the steps run (see :meth:`add_servo_plan`)."""
         self.model: mujoco.MjModel = self.spec.compile()
         self._timestep = float(self.model.opt.timestep)
         self.data = mujoco.MjData(self.model)
@@ -503,6 +506,7 @@ class PhysicsWorld:
         self._remove_elements(name)
         self._recompile()
         del self.entities[name]
+        self._servo_plans = [p for p in self._servo_plans if p.entity != name]
         self._forward()
         return entity
 
@@ -745,38 +749,69 @@ class PhysicsWorld:
             self._held = (np.array(qadr), np.array(dadr)) if qadr else None
         return self._held  # type: ignore[return-value]
 
-    def step(self, n: int = 1) -> None:
-        """Take ``n`` physics steps with the actuators' commands held.
+    def step(self, n: int = 1) -> int:
+        """Take ``n`` physics steps with the actuators' commands held; returns the steps taken.
 
         The steps run inside MuJoCo (``mj_step(m, d, nstep)``), bit-identical to ``n`` single steps.
         Two things need Python between steps, and only while they apply: kinematic joints (held
         exactly, every step) and the overlap watch after something was placed (every
         :data:`OVERLAP_CHECK_EVERY` steps, every step while something is deep in).
+
+        Live servo plans (:meth:`add_servo_plan`) run their cycles in the same loop, one per step, and
+        bound it: fewer than ``n`` steps are taken when a plan has fewer cycles left, or stops after
+        a cycle that left its path tolerance.
         """
+        plans = [p for p in self._servo_plans if p.remaining > 0] if self._servo_plans else []
+        if plans:
+            n = min(n, min(p.remaining for p in plans))
         if not self._overlap_steps and self._held_dofs() is None:  # the usual case: one MuJoCo call
             self._kinematics_stale = True
-            self._steps(n)
-            return
-        while n > 0:
+            return self._steps(n, plans)
+        taken = 0
+        while taken < n:
             if self._held_dofs() is not None:
                 k = 1
             elif self._overlap_steps:
                 # stop exactly where single steps would have checked (see _step_block)
-                k = 1 if self._deep else min(n, self._overlap_steps % OVERLAP_CHECK_EVERY or OVERLAP_CHECK_EVERY)
+                k = (
+                    1
+                    if self._deep
+                    else min(n - taken, self._overlap_steps % OVERLAP_CHECK_EVERY or OVERLAP_CHECK_EVERY)
+                )
             else:
-                k = n
-            self._step_block(k)
-            n -= k
+                k = n - taken
+            done = self._step_block(k, plans)
+            taken += done
+            if done < k:
+                break
+        return taken
 
-    def _step_block(self, k: int) -> None:
+    def add_servo_plan(self, plan: ServoPlan) -> None:
+        """Let the steps run ``plan``'s cycles (until it is removed; a plan with no cycles left is skipped)."""
+        if plan not in self._servo_plans:
+            self._servo_plans.append(plan)
+
+    def remove_servo_plan(self, plan: ServoPlan) -> None:
+        """Stop running ``plan`` (unknown plans are ignored)."""
+        if plan in self._servo_plans:
+            self._servo_plans.remove(plan)
+
+    @staticmethod
+    def servo_plans_available() -> bool:
+        """Whether the compiled servo loop is there (see :mod:`gazelle.physics._native`)."""
+        from . import _native
+
+        return _native.available()
+
+    def _step_block(self, k: int, plans: list[ServoPlan]) -> int:
         held = self._held_dofs()
         if held is None:
-            self._steps(k)
+            k = self._steps(k, plans)
         else:
             # kinematic joints: no force moves them; they keep their own velocity exactly
             qadr, dadr = held
             q0, v0 = self.data.qpos[qadr], self.data.qvel[dadr]
-            self._steps(1)
+            k = self._steps(1, plans)
             self.data.qvel[dadr] = v0
             self.data.qpos[qadr] = q0 + v0 * self.model.opt.timestep
         # mj_step computes kinematics *before* it integrates, so xpos/xquat/cvel now describe
@@ -790,13 +825,17 @@ class PhysicsWorld:
                 self._deep = bool(d.ncon) and float(d.contact.dist[: d.ncon].min()) < -DEEP_PENETRATION_M
                 if self._deep:
                     self._limit_correcting_velocity()
+        return k
 
-    def _steps(self, k: int) -> None:
-        """``k`` steps in one MuJoCo call; after an arena growth (see :meth:`_guarded`) only the rest."""
+    def _steps(self, k: int, plans: list[ServoPlan] | None = None) -> int:
+        """``k`` steps in one MuJoCo call (with ``plans``' cycles, which may stop it sooner: the steps
+        taken are returned); after an arena growth (see :meth:`_guarded`) only the rest."""
+        if plans:
+            return self._planned_steps(k, plans)
         t0 = self.data.time
         try:
             mujoco.mj_step(self.model, self.data, nstep=k)
-            return
+            return k
         except mujoco.FatalError as err:
             if "memory" not in str(err).lower() and "stack" not in str(err).lower():
                 raise
@@ -810,6 +849,26 @@ class PhysicsWorld:
                 mujoco.mj_step(m, d, nstep=left)
 
         self._grow_arena(rest, reason)
+        return k
+
+    def _planned_steps(self, k: int, plans: list[ServoPlan]) -> int:
+        """``k`` steps running ``plans``' servo cycles in compiled code (see :mod:`._servo_plan`)."""
+        taken, error = run_plans(self, plans, k)
+        if error is None:
+            return taken
+        if "memory" not in error.lower() and "stack" not in error.lower():
+            raise mujoco.FatalError(error)
+        total = [taken]
+
+        def rest(m: mujoco.MjModel, d: mujoco.MjData) -> None:
+            # the interrupted cycle runs again: its integral step is zero the second time (no time passed)
+            more, again = run_plans(self, plans, k - total[0])
+            total[0] += more
+            if again is not None:
+                raise mujoco.FatalError(again)
+
+        self._grow_arena(rest, error.splitlines()[0])
+        return total[0]
 
     def _watch_overlaps(self) -> None:
         """Something was placed (spawn, set-state, reset): watch for deep overlaps for a while."""

@@ -15,6 +15,7 @@ from .._lazy import lazy_attributes
 
 if TYPE_CHECKING:
     from ._bridge import RosBridge
+    from ._cdr import serialized_joint_states
     from ._dds import announce_often
     from ._definitions import InterfaceError, message_class
     from ._definitions import full_text as message_definition
@@ -26,6 +27,7 @@ if TYPE_CHECKING:
 
 _LAZY = {
     "RosBridge": ("._bridge", "RosBridge"),
+    "serialized_joint_states": ("._cdr", "serialized_joint_states"),
     "announce_often": ("._dds", "announce_often"),
     "InterfaceError": ("._definitions", "InterfaceError"),
     "message_class": ("._definitions", "message_class"),
@@ -61,6 +63,7 @@ __all__ = [
     "announce_often",
     "arm_main",
     "RosBridge",
+    "serialized_joint_states",
     "message_class",
     "message_definition",
     "choose_discovery_range",

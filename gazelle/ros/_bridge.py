@@ -10,11 +10,13 @@ physics step and a slow request never blocks the others.
 from __future__ import annotations
 
 import enum
+import functools
 import logging
 import math
 import threading
 import time
 import traceback
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -48,7 +50,9 @@ from ..systems import (
     RSP_PLUGIN,
     Endpoint,
     JointStatePublisher,
+    JointStatesBlock,
     MsgType,
+    PayloadBlock,
     PluginNode,
     Qos,
     RobotStatePublisher,
@@ -56,6 +60,7 @@ from ..systems import (
     TransformBatch,
     UpdateInfo,
 )
+from ._cdr import serialized_joint_states
 from ._convert import FROM_ROS, from_pose_msg, ros_type, to_pose_msg, to_ros, to_time
 from ._exposure import ServerRegistry
 from ._names import gz_topic_on_ros
@@ -409,7 +414,7 @@ class SimulationNode(Node):
                 static_lane = entry.lane
                 sink = lambda payload: self._publish_static(static_lane, ep, payload)
             else:
-                lane = self.outbox.lane(lambda payload: handle.publish(convert(payload)), ep.depth, ep.topic)
+                lane = self.outbox.lane(functools.partial(_publish_converted, handle, convert), ep.depth, ep.topic)
                 sink = lane.put
                 with self._lock:
                     self._lanes[id(ep)] = lane
@@ -418,7 +423,9 @@ class SimulationNode(Node):
             # latched topics always publish (late joiners get the last one); the others only while
             # someone in ROS subscribes, so nothing is built for nobody
             wanted = None if ep.qos is Qos.LATCHED else _Subscribed(handle)
-            ep.add_sink(sink, wanted)
+            # a block of payloads (a planned block's joint states) goes to the lane whole: its messages
+            # are built on the publisher thread
+            ep.add_sink(sink, wanted, blocks=ep.msg_type is not MsgType.TF_STATIC)
         else:
             if not isinstance(ep.msg_type, MsgType):  # a declared message is something a system publishes
                 logging.getLogger("gazelle.ros").error(
@@ -933,3 +940,18 @@ class RosBridge:
         if self.context.ok():
             rclpy.shutdown(context=self.context)
         self._thread.join(timeout=2.0)
+
+
+def _publish_converted(handle: Any, convert: Callable[[Any], Any], payload: Any) -> None:
+    """Publish one payload, or each of a :class:`PayloadBlock`'s in order (on the publisher thread): a
+    block of joint states as bytes serialized from a template (:mod:`._cdr`), the others as messages."""
+    if isinstance(payload, PayloadBlock):
+        raw = serialized_joint_states(payload) if isinstance(payload, JointStatesBlock) else None
+        if raw is not None:
+            for one in raw:
+                handle.publish(one)
+            return
+        for one in payload:
+            handle.publish(convert(one))
+    else:
+        handle.publish(convert(payload))

@@ -19,7 +19,9 @@ oldest payload, as a DDS writer with KEEP_LAST history does, the simulation neve
 (a dead publisher) never freezes the simulation: that lane then drops, with one warning naming it.
 
 Payloads are plain Python values (the bus's types), so building them on the sim thread and reading
-them here needs no lock on the world.
+them here needs no lock on the world. A :class:`~gazelle.systems.PayloadBlock` (the joint states of a
+block of cycles run inside MuJoCo) is one item of its lane and counts as the messages it holds; its
+messages are built here, off the simulation thread.
 """
 
 from __future__ import annotations
@@ -31,6 +33,8 @@ import time
 from collections import deque
 from collections.abc import Callable
 from typing import Any
+
+from ..systems import PayloadBlock
 
 _log = logging.getLogger("gazelle.ros")
 
@@ -122,8 +126,8 @@ class Outbox:
                         "dropping its oldest messages so the simulation goes on"
                     )
             if full:
-                lane.items.popleft()  # its entry in _order now stands for the next payload
-                self.dropped += 1
+                gone = lane.items.popleft()  # its entry in _order now stands for the next payload
+                self.dropped += len(gone) if isinstance(gone, PayloadBlock) else 1
             else:
                 self._order.append(lane)
             lane.items.append(payload)
@@ -148,7 +152,7 @@ class Outbox:
                 lane._publish(payload)
                 if self._test_delay:
                     time.sleep(self._test_delay)
-                self.published += 1
+                self.published += len(payload) if isinstance(payload, PayloadBlock) else 1
                 self._stuck = False  # it moves again: back to waiting for it
                 time.sleep(0)  # hand the GIL to the simulation thread if it waits for it (see the module docstring)
             except Exception as err:  # a publisher destroyed with its entity, a context shut down

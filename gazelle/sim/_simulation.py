@@ -387,7 +387,9 @@ class Simulation:
         self._check_divergence()
         k = self._steps_until_due(min(limit, self.max_block_steps))
         try:
-            w.step(k)
+            # fewer steps when a servo plan ends sooner (a JTC goal left its path tolerance: its
+            # controller manager is due at once)
+            k = w.step(k)
         except PhysicsOverload as err:
             # never a dead simulation thread: pause, say why once, and keep serving requests
             self.paused = True

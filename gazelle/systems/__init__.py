@@ -43,6 +43,7 @@ if TYPE_CHECKING:
     from ._bus import Image as Image
     from ._bus import Imu as Imu
     from ._bus import JointStates as JointStates
+    from ._bus import JointStatesBlock as JointStatesBlock
     from ._bus import JointTrajectory as JointTrajectory
     from ._bus import LaserScan as LaserScan
     from ._bus import MagneticField as MagneticField
@@ -51,6 +52,7 @@ if TYPE_CHECKING:
     from ._bus import NavSatFix as NavSatFix
     from ._bus import Odometry as Odometry
     from ._bus import ParamValue as ParamValue
+    from ._bus import PayloadBlock as PayloadBlock
     from ._bus import PluginNode as PluginNode
     from ._bus import PointCloud as PointCloud
     from ._bus import Qos as Qos
@@ -105,6 +107,8 @@ _LAZY = {
     "Image": ("._bus", "Image"),
     "Imu": ("._bus", "Imu"),
     "JointStates": ("._bus", "JointStates"),
+    "JointStatesBlock": ("._bus", "JointStatesBlock"),
+    "PayloadBlock": ("._bus", "PayloadBlock"),
     "JointTrajectory": ("._bus", "JointTrajectory"),
     "LaserScan": ("._bus", "LaserScan"),
     "MagneticField": ("._bus", "MagneticField"),
@@ -164,6 +168,7 @@ __all__ = [
     "Image",
     "Imu",
     "JointStates",
+    "JointStatesBlock",
     "LaserScan",
     "DeclaredMessage",
     "MessageKind",
@@ -171,6 +176,7 @@ __all__ = [
     "NavSatFix",
     "Odometry",
     "ParamValue",
+    "PayloadBlock",
     "PluginNode",
     "PHYSICS",
     "PRE_PHYSICS",

@@ -70,6 +70,59 @@ class JointStates:
     efforts: tuple[float, ...] = ()
 
 
+class PayloadBlock:
+    """Consecutive payloads of one publisher handed over at once (one per cycle of a block of steps run
+    inside MuJoCo, see ``gazelle.physics.ServoPlan``): a sequence of the bus's messages. Sinks that take
+    blocks (the ROS bridge's publisher lanes) get it whole and build the messages off the simulation
+    thread; the others get each message in order (:meth:`Endpoint.publish_block`)."""
+
+    __slots__ = ()
+
+    def __len__(self) -> int:
+        raise NotImplementedError
+
+    def __iter__(self) -> Iterator[Any]:
+        raise NotImplementedError
+
+    def last(self) -> Any:
+        """The block's last payload."""
+        raise NotImplementedError
+
+
+class JointStatesBlock(PayloadBlock):
+    """sensor_msgs/JointState of consecutive cycles, as arrays (rows: cycles; columns: ``names``)."""
+
+    __slots__ = ("efforts", "names", "positions", "stamps", "velocities")
+
+    def __init__(
+        self, stamps: list[float], names: tuple[str, ...], positions: Any, velocities: Any, efforts: Any
+    ) -> None:
+        self.stamps = stamps
+        self.names = names
+        self.positions = positions
+        self.velocities = velocities
+        self.efforts = efforts
+
+    def __len__(self) -> int:
+        return len(self.stamps)
+
+    def __iter__(self) -> Iterator[JointStates]:
+        names = self.names
+        for t, p, v, e in zip(
+            self.stamps, self.positions.tolist(), self.velocities.tolist(), self.efforts.tolist(), strict=True
+        ):
+            yield JointStates(t, names, tuple(p), tuple(v), tuple(e))
+
+    def last(self) -> JointStates:
+        return JointStates(
+            self.stamps[-1],
+            self.names,
+            tuple(self.positions[-1].tolist()),
+            tuple(self.velocities[-1].tolist()),
+            tuple(self.efforts[-1].tolist()),
+        )
+
+
 @dataclass(frozen=True, slots=True)
 class Text:
     """std_msgs/String."""
@@ -393,23 +446,31 @@ class Endpoint:
     """Publishers: the latest payload published (only published while :attr:`wanted`)."""
     _interest: tuple[Callable[[], bool] | None, ...] = field(default=(), repr=False)
     """Per sink: whether it wants payloads now (None: always)."""
+    _takes_blocks: tuple[bool, ...] = field(default=(), repr=False)
+    """Per sink: whether it takes a :class:`PayloadBlock` whole."""
     node: str = ""
     """The fully qualified ROS node it belongs to (``/differential_drive``): the gazebo_ros plugin that
     declared it (see :meth:`Bus.declaring`); "" for the simulation's own node."""
 
-    def add_sink(self, sink: Callable[[Any], None], wanted: Callable[[], bool] | None = None) -> None:
+    def add_sink(
+        self, sink: Callable[[Any], None], wanted: Callable[[], bool] | None = None, *, blocks: bool = False
+    ) -> None:
         """Also send every published payload to ``sink`` (any number of them: the bus fans out).
 
         ``wanted`` says whether the sink wants payloads at the moment (the ROS bridge: whether
-        anyone subscribes in ROS); without it, the sink always does.
+        anyone subscribes in ROS); without it, the sink always does. ``blocks``: the sink takes a
+        :class:`PayloadBlock` whole (else it gets the block's payloads one by one).
         """
         # new tuples: publish() and wanted iterate without a lock
         self.sinks, self._interest = (*self.sinks, sink), (*self._interest, wanted)
+        self._takes_blocks = (*self._takes_blocks, blocks)
 
     def remove_sink(self, sink: Callable[[Any], None]) -> None:
         """Stop sending payloads to ``sink``."""
-        keep = [(s, w) for s, w in zip(self.sinks, self._interest) if s != sink]  # == so that bound methods match
-        self.sinks, self._interest = tuple(s for s, _ in keep), tuple(w for _, w in keep)
+        # == so that bound methods match
+        keep = [x for x in zip(self.sinks, self._interest, self._takes_blocks, strict=True) if x[0] != sink]
+        self.sinks, self._interest = tuple(x[0] for x in keep), tuple(x[1] for x in keep)
+        self._takes_blocks = tuple(x[2] for x in keep)
 
     @property
     def wanted(self) -> bool:
@@ -426,6 +487,19 @@ class Endpoint:
         self.last = payload
         for sink in self.sinks:
             sink(payload)
+
+    def publish_block(self, block: PayloadBlock) -> None:
+        """Send consecutive payloads at once: whole to the sinks that take blocks, one by one (in order)
+        to the others."""
+        if not len(block):
+            return
+        self.last = block.last()
+        for sink, whole in zip(self.sinks, self._takes_blocks, strict=True):
+            if whole:
+                sink(block)
+            else:
+                for payload in block:
+                    sink(payload)
 
 
 ParamValue = bool | int | float | str | list[bool] | list[int] | list[float] | list[str]

@@ -12,7 +12,7 @@ from _paths import REPO
 
 BENCHES = [
     (["bench_rtf.py", "--smoke"], "ratios vs raw Python-loop mj_step"),
-    (["bench_control.py", "--smoke"], "ratio JTC / manager without controllers"),
+    (["bench_control.py", "--smoke"], "ratio JTC + JSB / limp, cycles in blocks"),
     (
         ["bench_multi_robot.py", "--counts", "1", "--seconds", "0.5", "--steps", "200", "--no-rss", "--arms", "2"],
         "bench took",

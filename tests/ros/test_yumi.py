@@ -171,7 +171,7 @@ def test_ctrl_c_ends_move_group_at_once_and_quietly(yumi):
     rc = yumi.move_group.wait(10)
     took = time.monotonic() - t0
     after = yumi.move_group.output[before:]
-    assert rc == 0, after
+    assert rc == 0, f"exit status {rc}; its output after Ctrl-C: {after!r}"
     assert took < 1.5, f"{took:.2f} s"
     assert "never retrieved" not in after and "Traceback" not in after and "Error" not in after, after
 

@@ -3,8 +3,11 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
-from .._bus import DynamicJointState, Float64Array, Imu, JointStates, MsgType, Qos, WrenchStamped
+import numpy as np
+
+from .._bus import DynamicJointState, Float64Array, Imu, JointStates, JointStatesBlock, MsgType, Qos, WrenchStamped
 from ._controller import Controller, values_getter
 from ._hardware import FT_INTERFACES, IMU_INTERFACES, ControlError
 
@@ -63,6 +66,9 @@ class JointStateBroadcaster(Controller):
         self._djs_keys = [[f"{n}/{i}" for i in ifaces] for n, ifaces in self._groups]
         # per JointState field: one C-level lookup of its values (the cycle runs at up to 1 kHz)
         self._getters = [values_getter(col) for col in self._columns]
+        self._block_columns: tuple[dict[str, int], list[list[Any]]] | None = None
+        """For a planned block: per JointState field, each column's (kind, joint index) in the records, or its
+        state key (made once per record layout)."""
 
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
         if self._js.wanted:
@@ -82,6 +88,45 @@ class JointStateBroadcaster(Controller):
                     ),
                 )
             )
+
+    def block_ready(self) -> bool:
+        """Whether its cycles can be part of a planned block (see ``ControllerManager._plan_block``): no
+        ``dynamic_joint_states`` listener (its sensor interfaces are not recorded per cycle)."""
+        return not self._djs.wanted
+
+    def publish_block(
+        self, times: np.ndarray, records: np.ndarray, column: dict[str, int], states: dict[str, float]
+    ) -> None:
+        """Publish the ``joint_states`` of the cycles at ``times`` of a planned block, one message per cycle as
+        :meth:`update` would, handed over as one :class:`JointStatesBlock`: ``records`` holds each cycle's
+        joint positions, velocities and efforts (rows: cycles; ``column``: a joint's index), other
+        interfaces are as in ``states``."""
+        if not self._js.wanted:
+            return
+        if self._block_columns is None or self._block_columns[0] is not column:
+            kinds = {"position": 0, "velocity": 1, "effort": 2}
+            plan = []
+            for keys in self._columns:
+                cols = []
+                for key in keys:
+                    joint, _, iface = key.rpartition("/")
+                    cols.append((kinds[iface], column[joint]) if key and iface in kinds and joint in column else key)
+                plan.append(cols)
+            self._block_columns = (column, plan)
+        n, extra = len(times), len(self._extra)
+        fields = []
+        for cols in self._block_columns[1]:
+            if all(isinstance(c, tuple) for c in cols) and len({c[0] for c in cols}) == 1 and not extra:
+                values = records[:, cols[0][0], [c[1] for c in cols]] if cols else np.empty((n, 0))  # type: ignore[index]
+            else:
+                values = np.zeros((n, len(cols) + extra))
+                for i, c in enumerate(cols):
+                    if isinstance(c, tuple):
+                        values[:, i] = records[:, c[0], c[1]]
+                    else:
+                        values[:, i] = states[c] if c else math.nan
+            fields.append(values)
+        self._js.publish_block(JointStatesBlock(times.tolist(), self._js_joints + tuple(self._extra), *fields))
 
 
 class ForwardCommandController(Controller):

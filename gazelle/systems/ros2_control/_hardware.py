@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ...description import JointType, Pose, Ros2Control, rotation_matrix
-from ...physics import ActuatorHandle, ActuatorKind, BodyHandle, Entity, JointHandle, PhysicsWorld
+from ...physics import ActuatorHandle, ActuatorKind, BodyHandle, Entity, JointHandle, PhysicsWorld, ServoPlan
 from .._actuation import (
     PidGains,
     PositionServo,
@@ -189,6 +189,12 @@ class SimHardware:
         self._servos = world.actuator_group(tuple(j.commands["position"] for j in servos))
         """The position servos' actuators, set in one write each cycle."""
         self._servo_values: list[float] = [0.0] * len(servos)
+        self._servo_joints = servos
+        self._joint_index = {name: i for i, name in enumerate(names)}
+        self._plan: ServoPlan | None = None
+        """The planned block of cycles (see :meth:`plan_block`), made at the first."""
+        self._plan_gains: tuple[PidGains, ...] = ()
+        """The servos' gains the plan holds."""
         self._joint_list = list(self.joints.values())
         self._read_plan: list[tuple[str, list[int], list[str], bool]] = []
         """Per interface kind read: (kind, joint indices, state keys, whether every joint has it)."""
@@ -359,6 +365,178 @@ class SimHardware:
                 joint.commands["effort"].command(value)
         if servo_values:
             self._servos.command(servo_values)
+
+    # ------------------------------------------------------------------ planned blocks of cycles
+    def block_ready(self) -> bool:
+        """Whether the next cycles can run as a planned block (:meth:`plan_block`): the component is active
+        and every joint is a position servo, in position mode or held (``hold_joints``), and no mimic."""
+        if self.state != "active" or not self._joint_list:
+            return False
+        for joint in self._joint_list:
+            if joint.position is None or joint.mimic is not None or joint.mode not in (None, "position"):
+                return False
+            if joint.mode is None and not self.hold_joints:
+                return False
+        return True
+
+    def plan_block(
+        self,
+        times: np.ndarray,
+        targets: dict[str, np.ndarray],
+        velocities: dict[str, np.ndarray],
+        tolerances: dict[str, tuple[float, float, np.ndarray]] | None = None,
+    ) -> int:
+        """Plan the cycles at ``times`` (see :meth:`block_ready`): each position-mode joint's commanded
+        ``targets`` (and ``velocities`` where a controller writes the velocity interface too), the others
+        held, as :meth:`write` would command them cycle after cycle (the same arithmetic, vectorised).
+        ``tolerances``: per joint, the path tolerance (position, velocity) and the velocity the check
+        compares with. Returns how many cycles were planned: fewer than asked before a target that jumps
+        (a new set point, which :meth:`_drive_position` handles in Python), 0 when none can be."""
+        m = len(times)
+        joints = self._servo_joints
+        moving = [j for j in joints if j.mode == "position"]
+        if any(j.name not in targets for j in moving):
+            return 0
+        target = np.empty((m, len(joints)))
+        for j in joints:
+            if j.mode is None:
+                target[:, j.slot] = j.hold
+        velref = np.zeros_like(target)
+        if moving:
+            cols = [j.slot for j in moving]
+            value = np.column_stack([targets[j.name] for j in moving])
+            if not np.isfinite(value).all():
+                return 0  # nothing commanded on some cycle: the Python cycle holds the joint
+            lo = np.array([j.limits.get("position", _UNLIMITED)[0] for j in moving])
+            hi = np.array([j.limits.get("position", _UNLIMITED)[1] for j in moving])
+            value = np.where(value < lo, lo, np.where(value > hi, hi, value))
+            target[:, cols] = value
+            # each cycle's last target is the cycle before's; the first's is the joint's last one
+            step = times[1:] - times[:-1]
+            diff = value[1:] - value[:-1]
+            first = np.array([v - j.last_target[0] if j.last_target else math.nan for v, j in zip(value[0], moving)])
+            first_dt = np.array([times[0] - j.last_target[1] if j.last_target else math.nan for j in moving])
+            speed = np.array([j.max_speed for j in moving])
+            if (speed > 0.0).any():
+                dt = self.world.timestep
+                limit = STEP_FACTOR * speed
+                jumps = np.abs(diff) > limit * np.maximum(step, dt)[:, None]
+                with np.errstate(invalid="ignore"):
+                    jump0 = np.abs(first) > limit * np.maximum(first_dt, dt)
+                rows = np.flatnonzero((jumps & (speed > 0.0)).any(axis=1))
+                if (jump0 & (speed > 0.0)).any():
+                    return 0
+                if len(rows):
+                    m = int(rows[0]) + 1  # the cycles before the jump
+            with np.errstate(invalid="ignore", divide="ignore"):
+                fd = np.empty_like(value)
+                fd[1:] = diff / step[:, None]
+                fd[0] = np.where(first_dt > 0.0, first / first_dt, 0.0)
+            for k, j in enumerate(moving):
+                given = velocities.get(j.name)
+                if given is not None:
+                    velref[:, j.slot] = given
+                    continue
+                stale = self.commands.get(j.keys["velocity"], math.nan)
+                velref[:, j.slot] = stale if stale == stale else fd[:, k]
+        checked = tolerances is not None
+        desv = tol_p = tol_v = None
+        if tolerances is not None:
+            desv = np.zeros_like(target)
+            tol_p, tol_v = np.zeros(len(joints)), np.zeros(len(joints))
+            for j in joints:
+                if j.name in tolerances:
+                    tol_p[j.slot], tol_v[j.slot], desv[:, j.slot] = tolerances[j.name]
+        for j in joints:
+            if j.enabled != "position":
+                self._enable_only(j, "position")
+        plan = self._block_plan()
+        gains = tuple(j.position.gains for j in joints)  # type: ignore[union-attr]
+        if gains != self._plan_gains:
+            plan.kp[:] = [g.p_gain if g.p_gain > 1e-9 else 1e-9 for g in gains]
+            plan.ki[:] = [g.i_gain for g in gains]
+            plan.kd[:] = [g.d_gain for g in gains]
+            plan.offset[:] = [g.cmd_offset for g in gains]
+            plan.imin[:] = [g.i_min for g in gains]
+            plan.imax[:] = [g.i_max for g in gains]
+            self._plan_gains = gains
+        for j in joints:
+            servo = j.position
+            assert servo is not None
+            plan.integral[j.slot] = servo.integral
+            plan.last[j.slot] = servo._last if servo._last is not None else math.nan
+        plan.load(
+            target[:m],
+            velref[:m],
+            desv=desv[:m] if desv is not None else None,
+            tol_p=tol_p if checked else None,
+            tol_v=tol_v if checked else None,
+        )
+        self.world.add_servo_plan(plan)
+        return m
+
+    def _block_plan(self) -> ServoPlan:
+        if self._plan is None:
+            names = tuple(j.name for j in self._servo_joints)
+            n = len(names)
+            zeros = np.zeros(n)
+            self._plan = ServoPlan(
+                self._servos,
+                self.world.joint_group(self.entity, names),
+                self._group,
+                {"kp": np.ones(n), "ki": zeros, "kd": zeros, "offset": zeros, "imin": zeros, "imax": zeros},
+            )
+        return self._plan
+
+    @property
+    def joint_names(self) -> tuple[str, ...]:
+        """The joints, in the order a block's records hold them."""
+        return self._group.names
+
+    @property
+    def joint_index(self) -> dict[str, int]:
+        """Joint name -> its column in a block's records (the same dict every time)."""
+        return self._joint_index
+
+    @property
+    def block(self) -> ServoPlan | None:
+        """The planned block (its cycles taken so far: ``cursor``; records, times), if one was planned."""
+        return self._plan
+
+    def finish_block(self) -> int:
+        """Take back the state of the cycles the world ran from the plan, as if :meth:`read` and
+        :meth:`write` had run each: the servos' integrals and times, the joints' last targets, and the
+        states of the last cycle. Returns the cycles taken (0: none since the last call)."""
+        plan = self._plan
+        if plan is None or plan.cursor == 0:
+            return 0
+        n = plan.cursor
+        t_last = float(plan.times[n - 1])
+        for joint in self._servo_joints:
+            servo = joint.position
+            assert servo is not None
+            servo.integral = float(plan.integral[joint.slot])
+            last = float(plan.last[joint.slot])
+            servo._last = None if math.isnan(last) else last
+            if joint.mode == "position":
+                value = float(plan.target[n - 1, joint.slot])
+                joint.last_target = (value, t_last)
+                joint.hold = value
+            else:
+                joint.last_target = None
+        self._servo_values = plan.commands.tolist()
+        rows = plan.records[n - 1]
+        kinds = {"position": 0, "velocity": 1, "effort": 2}
+        for kind, idx, keys, _every in self._read_plan:
+            self.states.update(zip(keys, rows[kinds[kind], idx].tolist()))
+        plan.steps = plan.cursor = 0
+        return n
+
+    def drop_block(self) -> None:
+        """Forget the plan (the entity goes, or the world was reset)."""
+        if self._plan is not None:
+            self.world.remove_servo_plan(self._plan)
+            self._plan = None
 
     def _drive_position(self, joint: _Joint, target: float, sim_time_sec: float) -> float:
         """The position servo's command for ``target`` (its actuator switched on)."""

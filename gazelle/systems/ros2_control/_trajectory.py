@@ -23,6 +23,8 @@ import threading
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from .._bus import JointTrajectory, MsgType, TrajectoryControllerState, TrajectoryPoint
 from ._controller import Controller, values_getter, values_or_zero
 from ._hardware import ControlError
@@ -75,6 +77,18 @@ class TrajectoryGoal:
         self.done.set()
 
 
+@dataclass(frozen=True)
+class TrajectoryBlock:
+    """The references of a planned block of cycles (rows: cycles; columns: the controller's joints)."""
+
+    times: np.ndarray
+    des_p: np.ndarray
+    des_v: np.ndarray
+    des_a: np.ndarray
+    tolerances: dict[str, tuple[float, float, np.ndarray]] | None
+    """Per joint with a path tolerance: (position, velocity, the velocity reference per cycle)."""
+
+
 @dataclass
 class _Segmented:
     """A trajectory in the controller's joint order, times absolute (sim seconds)."""
@@ -104,28 +118,84 @@ class _Segmented:
         v0, v1 = self.vel[k], self.vel[k + 1]
         if self.acc is None:
             out_p, out_v, out_a = [], [], []
+            T2, s3 = T * T, s * s * s
             for a, b, va, vb in zip(p0, p1, v0, v1, strict=True):
-                c2 = (3 * (b - a) - (2 * va + vb) * T) / T**2
-                c3 = (2 * (a - b) + (va + vb) * T) / T**3
-                out_p.append(a + va * s + c2 * s * s + c3 * s**3)
+                c2 = (3 * (b - a) - (2 * va + vb) * T) / T2
+                c3 = (2 * (a - b) + (va + vb) * T) / (T2 * T)
+                out_p.append(a + va * s + c2 * s * s + c3 * s3)
                 out_v.append(va + 2 * c2 * s + 3 * c3 * s * s)
                 out_a.append(2 * c2 + 6 * c3 * s)
             return out_p, out_v, out_a
         a0s, a1s = self.acc[k], self.acc[k + 1]
         out_p, out_v, out_a = [], [], []
+        T3 = T * T * T
+        T4, s2 = T3 * T, s * s
+        T5, s3 = T4 * T, s2 * s
+        s4 = s3 * s
+        s5 = s4 * s
         for a, b, va, vb, aa, ab in zip(p0, p1, v0, v1, a0s, a1s, strict=True):
             # quintic with position, velocity and acceleration at both ends
             c0, c1, c2 = a, va, aa / 2.0
             h = b - a - va * T - aa * T * T / 2.0
             dv = vb - va - aa * T
             da = ab - aa
-            c3 = (10 * h - 4 * dv * T + da * T * T / 2.0) / T**3
-            c4 = (-15 * h + 7 * dv * T - da * T * T) / T**4
-            c5 = (6 * h - 3 * dv * T + da * T * T / 2.0) / T**5
-            out_p.append(c0 + c1 * s + c2 * s**2 + c3 * s**3 + c4 * s**4 + c5 * s**5)
-            out_v.append(c1 + 2 * c2 * s + 3 * c3 * s**2 + 4 * c4 * s**3 + 5 * c5 * s**4)
-            out_a.append(2 * c2 + 6 * c3 * s + 12 * c4 * s**2 + 20 * c5 * s**3)
+            c3 = (10 * h - 4 * dv * T + da * T * T / 2.0) / T3
+            c4 = (-15 * h + 7 * dv * T - da * T * T) / T4
+            c5 = (6 * h - 3 * dv * T + da * T * T / 2.0) / T5
+            out_p.append(c0 + c1 * s + c2 * s2 + c3 * s3 + c4 * s4 + c5 * s5)
+            out_v.append(c1 + 2 * c2 * s + 3 * c3 * s2 + 4 * c4 * s3 + 5 * c5 * s4)
+            out_a.append(2 * c2 + 6 * c3 * s + 12 * c4 * s2 + 20 * c5 * s3)
         return out_p, out_v, out_a
+
+    def sample_many(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """:meth:`sample` at each of the times ``t`` at once (rows), with the same arithmetic in the same
+        order, so each row is bit-identical to :meth:`sample` at that time."""
+        times = np.asarray(self.times)
+        P = np.asarray(self.pos, dtype=np.float64)
+        m = len(t)
+        n = P.shape[1]
+        zeros = np.zeros((m, n))
+        if len(times) < 2:
+            return np.repeat(P[:1], m, axis=0), zeros, zeros.copy()
+        k = np.clip(np.searchsorted(times, t, side="right") - 1, 0, len(times) - 2)
+        t0 = times[k][:, None]
+        T, s = times[k + 1][:, None] - t0, t[:, None] - t0
+        p0, p1 = P[k], P[k + 1]
+        if self.vel is None:
+            v = (p1 - p0) / T
+            pos, vel, acc = p0 + v * s, v, zeros.copy()
+        else:
+            V = np.asarray(self.vel, dtype=np.float64)
+            va, vb = V[k], V[k + 1]
+            if self.acc is None:
+                T2, s3 = T * T, s * s * s
+                c2 = (3 * (p1 - p0) - (2 * va + vb) * T) / T2
+                c3 = (2 * (p0 - p1) + (va + vb) * T) / (T2 * T)
+                pos = p0 + va * s + c2 * s * s + c3 * s3
+                vel = va + 2 * c2 * s + 3 * c3 * s * s
+                acc = 2 * c2 + 6 * c3 * s
+            else:
+                A = np.asarray(self.acc, dtype=np.float64)
+                aa, ab = A[k], A[k + 1]
+                T3 = T * T * T
+                T4, s2 = T3 * T, s * s
+                T5, s3 = T4 * T, s2 * s
+                s4 = s3 * s
+                s5 = s4 * s
+                c0, c1, c2 = p0, va, aa / 2.0
+                h = p1 - p0 - va * T - aa * T * T / 2.0
+                dv = vb - va - aa * T
+                da = ab - aa
+                c3 = (10 * h - 4 * dv * T + da * T * T / 2.0) / T3
+                c4 = (-15 * h + 7 * dv * T - da * T * T) / T4
+                c5 = (6 * h - 3 * dv * T + da * T * T / 2.0) / T5
+                pos = c0 + c1 * s + c2 * s2 + c3 * s3 + c4 * s4 + c5 * s5
+                vel = c1 + 2 * c2 * s + 3 * c3 * s2 + 4 * c4 * s3 + 5 * c5 * s4
+                acc = 2 * c2 + 6 * c3 * s + 12 * c4 * s2 + 20 * c5 * s3
+        for rows, row in ((t <= times[0], P[0]), (t >= times[-1], P[-1])):
+            if rows.any():
+                pos[rows], vel[rows], acc[rows] = row, 0.0, 0.0
+        return pos, vel, acc
 
 
 class JointTrajectoryController(Controller):
@@ -299,10 +369,8 @@ class JointTrajectoryController(Controller):
         if goal is not None:
             goal.status = "executing"
 
-    def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
-        joints = self.joints
-        actual = list(self._get_pos(states))
-        actual_v = self._get_vel(states)
+    def _intake(self, t: float, actual: list[float]) -> _Segmented | None:
+        """Start a trajectory that came in since the last cycle; stop one canceled from outside."""
         if self._incoming is not None:  # (a plain read first: no lock taken on the usual cycle)
             with self._lock:
                 incoming, self._incoming = self._incoming, None
@@ -313,6 +381,13 @@ class JointTrajectoryController(Controller):
             # canceled (or ended) from outside: hold where the joints are
             self._traj, self._hold = None, list(actual)
             traj = None
+        return traj
+
+    def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
+        joints = self.joints
+        actual = list(self._get_pos(states))
+        actual_v = self._get_vel(states)
+        traj = self._intake(t, actual)
         if traj is not None:
             des_p, des_v, des_a = traj.sample(t)
         else:
@@ -328,6 +403,66 @@ class JointTrajectoryController(Controller):
         if self._state_pub.wanted:
             self._state_pub.publish(self._state(t, des_p, des_v, des_a, actual, actual_v, err_p, err_v, commands))
         self._last = (t, des_p, des_v, des_a, actual, actual_v, err_p, err_v, commands)
+
+    # ------------------------------------------------------------------ planned blocks of cycles
+    def plan_block(self, times: np.ndarray, states: dict[str, float]) -> TrajectoryBlock | None:
+        """The cycles at ``times`` planned at once (the first is now): the trajectory's samples, which
+        :meth:`update` would command cycle after cycle, and the goal's path tolerances. None when the
+        next cycle must run in Python: other command interfaces than position (+ velocity), a
+        ``~/controller_state`` listener, or a goal past its trajectory's end (its goal check runs each
+        cycle). A goal's block ends before its trajectory's end."""
+        if self.cmd_kinds[0] != "position" or self._state_pub.wanted:
+            return None
+        traj = self._intake(float(times[0]), list(self._get_pos(states)))
+        m = len(times)
+        if traj is None:
+            if self._hold is None:
+                return None
+            hold = np.asarray(self._hold, dtype=np.float64)
+            des_p = np.repeat(hold[None, :], m, axis=0)
+            zeros = np.zeros_like(des_p)
+            return TrajectoryBlock(times, des_p, zeros, zeros.copy(), None)
+        if traj.goal is not None:
+            m = int(np.searchsorted(times, traj.times[-1], side="left"))
+            if m == 0:
+                return None
+            times = times[:m]
+        des_p, des_v, des_a = traj.sample_many(times)
+        tolerances = None
+        if traj.goal is not None and traj.path_tolerance is not None:
+            tolerances = {
+                j: (tol.position, tol.velocity, des_v[:, k])
+                for k, (j, tol) in enumerate(zip(self.joints, traj.path_tolerance, strict=True))
+            }
+        return TrajectoryBlock(times, des_p, des_v, des_a, tolerances)
+
+    def interrupted(self) -> bool:
+        """Whether a planned block must end for this controller: a new trajectory came in, or the running
+        goal was canceled (read from the simulation thread between blocks; set from the ROS thread)."""
+        if self._incoming is not None:
+            return True
+        traj = self._traj
+        return traj is not None and traj.goal is not None and traj.goal.done.is_set()
+
+    def finish_block(
+        self, block: TrajectoryBlock, n: int, actual: np.ndarray, actual_v: np.ndarray, commands: dict[str, float]
+    ) -> None:
+        """Take back the first ``n`` cycles of ``block`` as the world ran them (``actual``, ``actual_v``:
+        the joints' state at each, rows), as if :meth:`update` had run each: the last commands, the last
+        state, a topic trajectory run out; a path tolerance left on the last cycle aborts the goal."""
+        k = n - 1
+        t = float(block.times[k])
+        des_p, des_v, des_a = block.des_p[k].tolist(), block.des_v[k].tolist(), block.des_a[k].tolist()
+        act, act_v = actual[k].tolist(), tuple(actual_v[k].tolist())
+        err_p = [d - a for d, a in zip(des_p, act, strict=True)]
+        err_v = [d - a for d, a in zip(des_v, act_v, strict=True)]
+        self._write(commands, des_p, des_v, err_p, err_v, 0.0)
+        traj = self._traj
+        if traj is not None and traj.goal is not None and t < traj.times[-1]:
+            self._check(traj, t, err_p, err_v, act)
+        elif traj is not None and traj.goal is None and t >= traj.times[-1]:
+            self._traj = None
+        self._last = (t, des_p, des_v, des_a, act, act_v, err_p, err_v, commands)
 
     @property
     def last_state(self) -> TrajectoryControllerState | None:
