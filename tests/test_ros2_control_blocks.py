@@ -67,6 +67,15 @@ def _arm(blocks: bool):
 def _points(kind: str):
     from gazelle.systems import TrajectoryPoint
 
+    if kind == "jumps":
+        # a segment faster than twice the joints' velocity limit (2.5 rad/s): each of its targets is a new
+        # set point, which the hardware handles in Python (the blocks end before it), then slow ones again
+        return (
+            TrajectoryPoint(0.05, (0.4,) * 6),
+            TrajectoryPoint(0.3, (0.3,) * 6),
+            TrajectoryPoint(0.31, (-0.2,) * 6),
+            TrajectoryPoint(0.9, (0.0,) * 6),
+        )
     out = []
     for k in range(1, 9):
         t = 0.15 * k
@@ -97,12 +106,12 @@ def _run(blocks: bool, kind: str, path_tolerance: float = 0.0, steps: int = 1600
     return heard, goal, cm
 
 
-@pytest.mark.parametrize("kind", ["linear", "cubic", "quintic"])
+@pytest.mark.parametrize("kind", ["linear", "cubic", "quintic", "jumps"])
 def test_blocks_track_a_goal_as_the_python_cycle_does_cycle_for_cycle(kind):
     ref, ref_goal, ref_cm = _run(False, kind)
     got, goal, cm = _run(True, kind)
     assert ref_cm.block_cycles == 0
-    assert cm.block_cycles > 1300, "the blocks were not used"  # (not while the goal waits to stand still)
+    assert cm.block_cycles > 1000, "the blocks were not used"  # (not while the goal waits to stand still)
     assert len(got) == len(ref) == 1737  # one /joint_states per 1 ms cycle
     assert [m.stamp_sec for m in got] == [m.stamp_sec for m in ref]
     pos = np.array([m.positions for m in got])
@@ -237,3 +246,25 @@ def test_joint_states_serialized_from_a_template_read_back_as_the_converted_mess
     # arrays that do not match the names are not templated: the messages are built one by one
     odd = JointStatesBlock([0.0], ("a", "b"), np.zeros((1, 2)), np.zeros((1, 2)), np.zeros((1, 0)))
     assert serialized_joint_states(odd) is None
+
+
+def test_an_endpoint_removed_with_block_sinks_can_still_lose_its_sinks():
+    """The bridge removes its sinks after the bus cleared a removed endpoint's (a deleted entity): the
+    per-sink block flags are cleared with them (a delete_entity once failed with "zip() argument 3 is
+    longer than arguments 1-2")."""
+    from gazelle.systems import Bus, JointStatesBlock, MsgType
+
+    bus = Bus()
+    ep = bus.advertise("r1", "/r1/joint_states", MsgType.JOINT_STATE)
+    got: list = []
+    ep.add_sink(got.append, blocks=True)
+    ep.add_sink(got.append)
+    ep.publish_block(JointStatesBlock([0.0, 0.001], ("a",), np.zeros((2, 1)), np.ones((2, 1)), np.zeros((2, 1))))
+    assert len(got) == 3 and isinstance(got[0], JointStatesBlock) and got[2].velocities == (1.0,)
+    bus.remove_owner("r1")
+    ep.remove_sink(got.append)
+    ep2 = bus.advertise("r2", "/r2/joint_states", MsgType.JOINT_STATE)
+    ep2.add_sink(got.append, blocks=True)
+    bus.remove(ep2)
+    ep2.remove_sink(got.append)
+    assert ep.sinks == () and ep2.sinks == ()

@@ -75,8 +75,7 @@ class ServoPlan:
         self.times = np.zeros(0)
         self._ids = PerGeneration(self._resolve)
         self._struct: _native.ServoGroupStruct | None = None
-        self._struct_key: tuple[int, int] | None = None
-        self._loads = 0
+        self._struct_key: tuple[int, ...] | None = None
 
     def _resolve(self, world: object) -> tuple[np.ndarray, ...]:
         act = self.actuators._ids.get(self.world).astype(np.int32)
@@ -106,7 +105,6 @@ class ServoPlan:
         self.records = np.zeros((m, 3, self.nrec))
         self.times = np.zeros(m)
         self.steps, self.cursor, self.violated = m, 0, -1
-        self._loads += 1
 
     @property
     def remaining(self) -> int:
@@ -115,7 +113,11 @@ class ServoPlan:
 
     def struct(self) -> _native.ServoGroupStruct:
         """The C view of this plan (pointers into its arrays), made once per load and model generation."""
-        key = (self._loads, self.world.generation)
+        # keyed by where the arrays are: a checkpoint's restore may replace them under a live plan
+        key = (
+            self.world.generation,
+            *(a.__array_interface__["data"][0] if a is not None else 0 for a in self._arrays()),
+        )
         if self._struct is None or self._struct_key != key:
             act, sq, sd, rq, rd = self._ids.get(self.world)
             self._keep = (act, sq, sd, rq, rd)  # the addresses below point into these
@@ -150,6 +152,26 @@ class ServoPlan:
             self._struct_key = key
         self._struct.cursor = self.cursor
         return self._struct
+
+    def _arrays(self) -> tuple[np.ndarray | None, ...]:
+        return (
+            self.target,
+            self.velref,
+            self.kp,
+            self.ki,
+            self.kd,
+            self.offset,
+            self.imin,
+            self.imax,
+            self.integral,
+            self.last,
+            self.tol_p,
+            self.tol_v,
+            self.desv,
+            self.records,
+            self.times,
+            self.commands,
+        )
 
     def __getstate__(self) -> dict[str, object]:
         """Pickled (a checkpoint) without its C view and index cache, which are made again."""

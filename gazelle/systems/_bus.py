@@ -619,7 +619,7 @@ class Bus:
             self._endpoints = [ep for ep in self._endpoints if ep.owner != owner]
             listeners = list(self._listeners)
         for ep in gone:
-            ep.sinks, ep._interest = (), ()
+            ep.sinks, ep._interest, ep._takes_blocks = (), (), ()
             for listener in listeners:
                 listener.endpoint_removed(ep)
         with self._lock:
@@ -666,7 +666,7 @@ class Bus:
                 return
             self._endpoints.remove(endpoint)
             listeners = list(self._listeners)
-        endpoint.sinks, endpoint._interest = (), ()
+        endpoint.sinks, endpoint._interest, endpoint._takes_blocks = (), (), ()
         for listener in listeners:
             listener.endpoint_removed(endpoint)
 

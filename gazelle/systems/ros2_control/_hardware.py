@@ -403,42 +403,12 @@ class SimHardware:
                 target[:, j.slot] = j.hold
         velref = np.zeros_like(target)
         if moving:
+            planned = self._moving_targets(times, moving, targets, velocities)
+            if planned is None:
+                return 0
+            value, refs, m = planned
             cols = [j.slot for j in moving]
-            value = np.column_stack([targets[j.name] for j in moving])
-            if not np.isfinite(value).all():
-                return 0  # nothing commanded on some cycle: the Python cycle holds the joint
-            lo = np.array([j.limits.get("position", _UNLIMITED)[0] for j in moving])
-            hi = np.array([j.limits.get("position", _UNLIMITED)[1] for j in moving])
-            value = np.where(value < lo, lo, np.where(value > hi, hi, value))
-            target[:, cols] = value
-            # each cycle's last target is the cycle before's; the first's is the joint's last one
-            step = times[1:] - times[:-1]
-            diff = value[1:] - value[:-1]
-            first = np.array([v - j.last_target[0] if j.last_target else math.nan for v, j in zip(value[0], moving)])
-            first_dt = np.array([times[0] - j.last_target[1] if j.last_target else math.nan for j in moving])
-            speed = np.array([j.max_speed for j in moving])
-            if (speed > 0.0).any():
-                dt = self.world.timestep
-                limit = STEP_FACTOR * speed
-                jumps = np.abs(diff) > limit * np.maximum(step, dt)[:, None]
-                with np.errstate(invalid="ignore"):
-                    jump0 = np.abs(first) > limit * np.maximum(first_dt, dt)
-                rows = np.flatnonzero((jumps & (speed > 0.0)).any(axis=1))
-                if (jump0 & (speed > 0.0)).any():
-                    return 0
-                if len(rows):
-                    m = int(rows[0]) + 1  # the cycles before the jump
-            with np.errstate(invalid="ignore", divide="ignore"):
-                fd = np.empty_like(value)
-                fd[1:] = diff / step[:, None]
-                fd[0] = np.where(first_dt > 0.0, first / first_dt, 0.0)
-            for k, j in enumerate(moving):
-                given = velocities.get(j.name)
-                if given is not None:
-                    velref[:, j.slot] = given
-                    continue
-                stale = self.commands.get(j.keys["velocity"], math.nan)
-                velref[:, j.slot] = stale if stale == stale else fd[:, k]
+            target[:, cols], velref[:, cols] = value, refs
         checked = tolerances is not None
         desv = tol_p = tol_v = None
         if tolerances is not None:
@@ -474,6 +444,46 @@ class SimHardware:
         )
         self.world.add_servo_plan(plan)
         return m
+
+    def _moving_targets(
+        self, times: np.ndarray, moving: list[_Joint], targets: dict[str, np.ndarray], velocities: dict[str, np.ndarray]
+    ) -> tuple[np.ndarray, np.ndarray, int] | None:
+        """The position-mode joints' targets (clamped as :meth:`write` clamps them) and velocity references
+        per cycle (columns: ``moving``), and the cycles before the first target that jumps (see
+        :meth:`_drive_position`); None when a target is not finite or the first one jumps."""
+        value = np.column_stack([targets[j.name] for j in moving])
+        if not np.isfinite(value).all():
+            return None  # nothing commanded on some cycle: the Python cycle holds the joint
+        lo = np.array([j.limits.get("position", _UNLIMITED)[0] for j in moving])
+        hi = np.array([j.limits.get("position", _UNLIMITED)[1] for j in moving])
+        value = np.where(value < lo, lo, np.where(value > hi, hi, value))
+        m = len(times)
+        # each cycle's last target is the cycle before's; the first's is the joint's last one
+        step = times[1:] - times[:-1]
+        diff = value[1:] - value[:-1]
+        first = np.array([v - j.last_target[0] if j.last_target else math.nan for v, j in zip(value[0], moving)])
+        first_dt = np.array([times[0] - j.last_target[1] if j.last_target else math.nan for j in moving])
+        speed = np.array([j.max_speed for j in moving])
+        if (speed > 0.0).any():
+            dt = self.world.timestep
+            limit = STEP_FACTOR * speed
+            jumps = (np.abs(diff) > limit * np.maximum(step, dt)[:, None]) & (speed > 0.0)
+            with np.errstate(invalid="ignore"):
+                if ((np.abs(first) > limit * np.maximum(first_dt, dt)) & (speed > 0.0)).any():
+                    return None
+            rows = np.flatnonzero(jumps.any(axis=1))
+            if len(rows):
+                m = int(rows[0]) + 1  # the cycles before the jump
+        with np.errstate(invalid="ignore", divide="ignore"):
+            fd = np.empty_like(value)
+            fd[1:] = diff / step[:, None]
+            fd[0] = np.where(first_dt > 0.0, first / first_dt, 0.0)
+        refs = np.empty_like(value)
+        for k, j in enumerate(moving):
+            given = velocities.get(j.name)
+            stale = self.commands.get(j.keys["velocity"], math.nan)
+            refs[:, k] = given if given is not None else (stale if stale == stale else fd[:, k])
+        return value, refs, m
 
     def _block_plan(self) -> ServoPlan:
         if self._plan is None:

@@ -24,11 +24,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from ...description import MAX_PARAMS_FILE_BYTES, ResourceResolver
 from ...physics import PhysicsWorld
 from .._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_bool, ros_block
+from ._blocks import PlannedBlocks
 from ._broadcasters import (
     ForceTorqueSensorBroadcaster,
     ForwardCommandController,
@@ -43,7 +42,7 @@ from ._diff_drive import DiffDriveController
 from ._gripper import EffortGripperActionController, GripperActionController
 from ._hardware import ControlError, SimHardware
 from ._params import Params, ParamsError, ParamsFile, load_params, parse_params
-from ._trajectory import JointTrajectoryController, TrajectoryBlock
+from ._trajectory import JointTrajectoryController
 
 CONTROLLER_TYPES: dict[str, type[Controller]] = {
     c.type_name: c
@@ -65,11 +64,6 @@ CONTROLLER_TYPES: dict[str, type[Controller]] = {
 
 DEFAULT_UPDATE_RATE = 100
 """ros2_control's default ``update_rate`` (Hz)."""
-
-BLOCK_CYCLES = 100
-"""The most cycles planned at once (see :meth:`ControllerManager._plan_block`). A block is cut short where
-something must act sooner: a new trajectory or a cancel is seen at the next boundary of the runtime's blocks
-(at most ``gazelle.sim.MAX_BLOCK_SEC``, 10 ms, later), a service call at once."""
 
 STRICT, BEST_EFFORT = 2, 1
 """``switch_controller`` strictness (controller_manager_msgs/SwitchController)."""
@@ -127,16 +121,6 @@ class _Loaded:
     last_update: float = -math.inf
 
 
-@dataclass
-class _Block:
-    """A planned block of cycles running: its controllers, with a trajectory controller's references and
-    each controller's cycle count at the block's start, and the cycles already handed to the broadcasters."""
-
-    members: list[tuple[_Loaded, TrajectoryBlock | None, int]]
-    t0: float
-    published: int = 0
-
-
 class ControllerManager(System):
     """See the module docstring."""
 
@@ -161,12 +145,8 @@ class ControllerManager(System):
         # no phase gate: pre_update is asked at every block boundary, as a planned block ends when the world
         # says so (a goal's path tolerance left), not at a time known in advance
         self.phase_gate = None
-        self._block: _Block | None = None
-        """The planned block running, if any."""
-        self.blocks_allowed = True
-        """Whether cycles may run as planned blocks (False: every cycle in Python, as a reference)."""
-        self.block_cycles = 0
-        """Cycles run in planned blocks so far (the benches and tests read it)."""
+        self.blocks = PlannedBlocks(self)
+        """The cycles run as planned blocks inside MuJoCo's steps (see ``_blocks.py``)."""
         self._ctx: SystemContext | None = None
         self.log = logging.getLogger("controller_manager")
 
@@ -322,7 +302,7 @@ class ControllerManager(System):
     # ------------------------------------------------------------------ the loop
     def next_update(self, sim_time_sec: float) -> float:
         """The next cycle (none while a planned block runs: the world's steps run its cycles)."""
-        if self._block is not None and self.hardware[0].block is not None and self.hardware[0].block.remaining:
+        if self.blocks.running:
             return math.inf
         return self._gate.next
 
@@ -338,10 +318,9 @@ class ControllerManager(System):
         world's steps run (see :meth:`_plan_block`)."""
         if info.paused:
             return
-        if self._block is not None:
-            plan = self.hardware[0].block
-            if plan is not None and plan.remaining and not self._block_interrupted():
-                self._publish_block_so_far()
+        if self.blocks.active:
+            if self.blocks.running and not self.blocks.interrupted():
+                self.blocks.publish_so_far()
                 return
             self.settle()
         if not self._gate.due(info.sim_time_sec, self.update_rate):
@@ -351,7 +330,7 @@ class ControllerManager(System):
         t = info.sim_time_sec
         for hw in self.hardware:
             hw.read()
-        if self.blocks_allowed and self._plan_block(t, world):
+        if self.blocks.allowed and self.blocks.plan(t, world):
             return
         states, commands = self._merged()
         for name, loaded in list(self.controllers.items()):
@@ -374,145 +353,23 @@ class ControllerManager(System):
         for hw in self.hardware:
             hw.write(t)
 
-    # ------------------------------------------------------------------ planned blocks of cycles
-    def _block_members(self, world: PhysicsWorld) -> list[_Loaded] | None:
-        """The active controllers, when the next cycles can be planned as a block: one hardware component
-        whose joints are all position servos (:meth:`SimHardware.block_ready`), a cycle every step, and only
-        trajectory controllers (every cycle) and joint state broadcasters active."""
-        if len(self.hardware) != 1 or not self.hardware[0].block_ready():
-            return None
-        if 1.0 / self.update_rate > world.timestep * (1.0 + 1e-9) or not world.servo_plans_available():
-            return None
-        members = []
-        for loaded in self.controllers.values():
-            c = loaded.controller
-            if c.state != ACTIVE:
-                continue
-            if isinstance(c, JointTrajectoryController):
-                if c.update_rate and c.update_rate < self.update_rate:
-                    return None
-            elif not isinstance(c, JointStateBroadcaster) or not c.block_ready():
-                return None
-            members.append(loaded)
-        return members
-
-    def _plan_block(self, t: float, world: PhysicsWorld) -> bool:
-        """Plan the cycles from ``t`` on (at most :data:`BLOCK_CYCLES`) as one block the world's steps run in
-        compiled code, instead of a Python cycle per step; False when the cycle at ``t`` must run in Python.
-
-        Each cycle of a block commands what a Python cycle would (the trajectory controllers' samples, the
-        hardware's servo law: bit-identical, see ``tests/test_ros2_control_blocks.py``); the cycles' states are
-        recorded, the broadcasters publish one message per cycle, stamped with its time, at each boundary of
-        the runtime's blocks (as one :class:`~gazelle.systems.PayloadBlock`: the messages are built where they
-        are published, off the simulation thread), and when the block ends (:meth:`settle`) the trajectory
-        controllers take back their state."""
-        members = self._block_members(world)
-        if members is None:
-            return False
-        hw = self.hardware[0]
-        times = np.full(BLOCK_CYCLES, world.timestep)
-        times[0] = t
-        times = np.add.accumulate(times)  # the times MuJoCo's steps reach (time += timestep, one by one)
-        states, _commands = self._merged()
-        chosen: list[tuple[_Loaded, TrajectoryBlock | None, int]] = []
-        targets: dict[str, np.ndarray] = {}
-        velocities: dict[str, np.ndarray] = {}
-        tolerances: dict[str, tuple[float, float, np.ndarray]] = {}
-        m = len(times)
-        for loaded in members:
-            c = loaded.controller
-            blk = None
-            if isinstance(c, JointTrajectoryController):
-                blk = c.plan_block(times, states)
-                if blk is None:
-                    return False
-                m = min(m, len(blk.times))
-                for k, j in enumerate(c.joints):
-                    targets[j] = blk.des_p[:, k]
-                    if c.cmd_kinds[1:2] == ("velocity",):
-                        velocities[j] = blk.des_v[:, k]
-                if blk.tolerances:
-                    tolerances.update(blk.tolerances)
-            chosen.append((loaded, blk, loaded.cycle))
-        if m < len(times):
-            targets = {j: v[:m] for j, v in targets.items()}
-            velocities = {j: v[:m] for j, v in velocities.items()}
-            tolerances = {j: (p, v, ref[:m]) for j, (p, v, ref) in tolerances.items()}
-        n = hw.plan_block(times[:m], targets, velocities, tolerances or None)
-        if n == 0:
-            return False
-        self._block = _Block(chosen, t)
-        return True
-
-    def _block_interrupted(self) -> bool:
-        """Whether a trajectory controller of the running block has a new trajectory or a canceled goal."""
-        assert self._block is not None
-        for loaded, blk, _first in self._block.members:
-            if blk is not None and isinstance(loaded.controller, JointTrajectoryController):
-                if loaded.controller.interrupted():
-                    return True
-        return False
-
-    def _publish_block_so_far(self) -> None:
-        """Hand the broadcasters the cycles the world ran since the last hand-over."""
-        block = self._block
-        plan = self.hardware[0].block
-        if block is None or plan is None or plan.cursor <= block.published:
-            return
-        self._publish(block, plan.cursor)
-
-    def _publish(self, block: _Block, upto: int) -> None:
-        hw = self.hardware[0]
-        plan = hw.block
-        assert plan is not None
-        start = block.published
-        block.published = upto
-        for loaded, _blk, first in block.members:
-            c = loaded.controller
-            if not isinstance(c, JointStateBroadcaster):
-                continue
-            every = 1
-            if c.update_rate and c.update_rate < self.update_rate:
-                every = max(1, round(self.update_rate / c.update_rate))
-            runs = [i for i in range(start, upto) if (first + i) % every == 0]
-            if runs:
-                rows = slice(runs[0], runs[-1] + 1) if every == 1 else runs
-                c.publish_block(plan.times[rows], plan.records[rows], hw.joint_index, hw.states)
-                loaded.last_update = float(plan.times[runs[-1]])
-
     def settle(self) -> None:
-        """End the planned block at the cycles the world has run so far (all of them, or fewer when a
-        service call, a new trajectory, a reset or a checkpoint comes between): the broadcasters publish the
-        cycles not yet published, the hardware and the controllers take back their state as if each cycle
-        had run in Python, and the next cycle is due at once. Nothing happens when no block runs."""
-        block = self._block
-        if block is None:
-            return
-        hw = self.hardware[0]
-        plan = hw.block
-        n = plan.cursor if plan is not None else 0
-        if plan is not None and n > block.published:
-            self._publish(block, n)
-        self._block = None
-        n = hw.finish_block()
-        if plan is None or n == 0:
-            if plan is not None:
-                plan.steps = plan.cursor = 0
-            self._gate._next = block.t0  # the first cycle did not run: due again
-            return
-        self.block_cycles += n
-        times = plan.times[:n]
-        records = plan.records[:n]
-        column = hw.joint_index
-        _states, commands = self._merged()
-        for loaded, blk, _first in block.members:
-            c = loaded.controller
-            loaded.cycle += n
-            if isinstance(c, JointTrajectoryController) and blk is not None:
-                idx = [column[j] for j in c.joints]
-                c.finish_block(blk, n, records[:, 0, idx], records[:, 1, idx], commands)
-                loaded.last_update = float(times[-1])
-        self._gate.due(float(times[-1]), self.update_rate)
+        """End a planned block of cycles at the cycles run so far (see :meth:`PlannedBlocks.settle`)."""
+        self.blocks.settle()
+
+    @property
+    def blocks_allowed(self) -> bool:
+        """Whether cycles may run as planned blocks (False: every cycle in Python, as a reference)."""
+        return self.blocks.allowed
+
+    @blocks_allowed.setter
+    def blocks_allowed(self, value: bool) -> None:
+        self.blocks.allowed = value
+
+    @property
+    def block_cycles(self) -> int:
+        """Cycles run in planned blocks so far (the benches and tests read it)."""
+        return self.blocks.cycles
 
     def _merged(self) -> tuple[dict[str, float], dict[str, float]]:
         if len(self.hardware) == 1:
