@@ -52,16 +52,12 @@ def fmt_default(f: dataclasses.Field) -> str:
 
 
 def render() -> str:
-    from gazelle.systems import _registry
+    from gazelle.systems import plugin_factories
     from gazelle.systems.robot_state import RSP_PLUGIN, RobotStateConfig
 
     by_class: dict = defaultdict(list)
     made: dict = {}
-    for name, factory in _registry._REGISTRY.items():
-        system = factory()
-        made.setdefault(type(system), system)
-        by_class[type(system)].append(name)
-    for name, (factory, _types) in _registry._sensor_tables()[0].items():
+    for name, factory in plugin_factories().items():
         system = factory()
         made.setdefault(type(system), system)
         by_class[type(system)].append(name)

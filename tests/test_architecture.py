@@ -16,66 +16,49 @@ import pytest
 from _paths import REPO
 
 PACKAGE = REPO / "gazelle"
-LAYERS = ("description", "physics", "systems", "sim", "ros", "viewer", "cli", "worlds", "planning", "testing", "sweep")
 
-FORBIDDEN: dict[str, tuple[str, ...]] = {
-    "description": (
-        "gazelle.physics",
-        "gazelle.systems",
-        "gazelle.sim",
-        "gazelle.ros",
-        "gazelle.viewer",
-        "gazelle.cli",
-        "mujoco",
-        "rclpy",
-        "viser",
-    ),
-    "physics": ("gazelle.systems", "gazelle.sim", "gazelle.ros", "gazelle.viewer", "gazelle.cli", "rclpy", "viser"),
-    "systems": ("mujoco", "gazelle.sim", "gazelle.ros", "gazelle.viewer", "gazelle.cli", "rclpy", "viser"),
-    "sim": ("mujoco", "gazelle.ros", "gazelle.viewer", "gazelle.cli", "rclpy", "viser"),
-    "ros": ("gazelle.viewer", "gazelle.cli"),
+ALLOWED: dict[str, tuple[str, ...]] = {
+    "": (),  # gazelle/__init__.py and gazelle/_lazy.py
+    "description": (),
+    "physics": ("description",),
+    "systems": ("description", "physics"),
+    "sim": ("description", "physics", "systems"),
     # arms: kinematics and collisions of the description on roboplan; served by gazelle.ros
-    "planning": (
-        "gazelle.physics",
-        "gazelle.systems",
-        "gazelle.sim",
-        "gazelle.ros",
-        "gazelle.viewer",
-        "gazelle.cli",
-        "mujoco",
-        "rclpy",
-        "viser",
-    ),
-    "viewer": ("gazelle.ros", "gazelle.cli", "rclpy"),
-    # many in-process runs of a scenario: the runtime without ROS
-    # (ROS scenarios run on the robot-test fixtures' server)
-    # (and the viewer's self-contained replay page for runs that fail)
-    "sweep": ("gazelle.ros", "gazelle.cli", "rclpy", "viser"),
+    "planning": ("description",),
+    "worlds": ("description",),
+    "ros": ("description", "physics", "systems", "sim", "planning"),
+    "viewer": ("description", "physics", "systems", "sim"),
     # users' robot tests: gazelle's commands as processes, over ROS; in-process, the runtime's public API
-    "testing": (
-        "gazelle.physics",
-        "gazelle.ros",
-        "gazelle.viewer",
-        "gazelle.planning",
-        "mujoco",
-        "viser",
-    ),
-    "worlds": (
-        "gazelle.physics",
-        "gazelle.systems",
-        "gazelle.sim",
-        "gazelle.ros",
-        "gazelle.viewer",
-        "gazelle.cli",
-        "rclpy",
-    ),
+    "testing": ("description", "systems", "sim", "worlds"),
+    # many in-process runs of a scenario: the runtime without ROS (ROS scenarios run on the robot-test
+    # fixtures' server), and the viewer's self-contained replay page for runs that fail
+    "sweep": ("description", "sim", "testing", "viewer", "worlds"),
+    "cli": ("description", "physics", "systems", "sim", "planning", "worlds", "ros", "viewer", "testing", "sweep"),
 }
-"""Layer -> module prefixes it must not import (directly or inside a function)."""
+"""Every folder of the gazelle package -> the gazelle packages it may import (an allow-list: a new folder,
+or a new arrow between two, fails until it is declared here and in docs/architecture.md). Every folder may
+import ``gazelle._lazy`` (the lazy-attribute helper)."""
+
+LAYERS = tuple(k for k in ALLOWED if k)
+
+THIRD_PARTY: dict[str, tuple[str, ...]] = {
+    "mujoco": ("physics",),
+    "rclpy": ("ros", "cli", "testing"),
+    "viser": ("viewer",),
+    "ray": ("sweep",),
+    "foxglove": ("cli",),
+    "launch": ("cli",),
+    "launch_ros": ("cli",),
+}
+"""Libraries that only some folders may import (directly or inside a function)."""
+
+OTHER_FOLDERS = ("compat", "scripts", "launch", "launch_ros", "bench")
+"""Importable folders beside the package: they may use only gazelle's public surfaces."""
 
 
-def _imports(path: Path) -> list[tuple[int, str]]:
-    """(line, absolute module name) of every import in a file of the gazelle package."""
-    rel = path.relative_to(REPO).with_suffix("")
+def _imports(path: Path, root: Path | None = None) -> list[tuple[int, str]]:
+    """(line, absolute module name) of every import in a file under ``root`` (the repository)."""
+    rel = path.relative_to(root or REPO).with_suffix("")
     package = list(rel.parts[:-1]) if rel.name != "__init__" else list(rel.parts[:-1])
     out: list[tuple[int, str]] = []
     for node in ast.walk(ast.parse(path.read_text(), str(path))):
@@ -98,17 +81,34 @@ def _violations() -> list[str]:
     for path in sorted(PACKAGE.rglob("*.py")):
         rel = path.relative_to(PACKAGE)
         layer = rel.parts[0] if len(rel.parts) > 1 else ""
+        if layer not in ALLOWED:
+            found.append(f"gazelle/{rel}: the folder gazelle/{layer} is not declared in ALLOWED")
+            continue
         for line, mod in _imports(path):
             where = f"gazelle/{rel}:{line}"
-            for bad in FORBIDDEN.get(layer, ()):
-                if mod == bad or mod.startswith(bad + "."):
-                    found.append(f"{where}: the {layer} layer imports {mod}")
-            if layer not in ("ros", "cli", "testing") and (mod == "rclpy" or mod.startswith("rclpy.")):
-                found.append(f"{where}: only gazelle.ros imports rclpy, not {layer or 'gazelle'}")
             parts = mod.split(".")
-            if len(parts) >= 3 and parts[0] == "gazelle" and parts[1] in LAYERS and parts[1] != layer:
-                if any(p.startswith("_") and p != "__init__" for p in parts[2:]):
-                    found.append(f"{where}: imports {mod}, a private module of gazelle.{parts[1]} (use its __init__)")
+            if parts[0] in THIRD_PARTY and layer not in THIRD_PARTY[parts[0]]:
+                found.append(
+                    f"{where}: the {layer or 'top'} layer imports {mod} (only {', '.join(THIRD_PARTY[parts[0]])} may)"
+                )
+            if parts[0] != "gazelle" or len(parts) < 2 or parts[1] in ("_lazy", layer):
+                continue
+            if parts[1] not in ALLOWED[layer]:
+                found.append(f"{where}: the {layer or 'top'} layer imports gazelle.{parts[1]}, which it may not")
+            elif any(p.startswith("_") and p != "__init__" for p in parts[2:]):
+                found.append(f"{where}: imports {mod}, a private module of gazelle.{parts[1]} (use its __init__)")
+    return found
+
+
+def _other_violations(root: Path, folders: tuple[str, ...]) -> list[str]:
+    """Imports of a private gazelle module from the folders beside the package."""
+    found: list[str] = []
+    for folder in folders:
+        for path in sorted((root / folder).rglob("*.py")):
+            for line, mod in _imports(path, root):
+                parts = mod.split(".")
+                if parts[0] == "gazelle" and any(p.startswith("_") and not p.startswith("__") for p in parts[1:]):
+                    found.append(f"{path.relative_to(root)}:{line}: imports {mod}, a private part of gazelle")
     return found
 
 
@@ -117,15 +117,32 @@ def test_layers_import_one_way_and_only_public_surfaces() -> None:
     assert not problems, "\n".join(problems)
 
 
+def test_every_folder_of_the_package_is_declared_and_documented() -> None:
+    folders = {p.name for p in PACKAGE.iterdir() if p.is_dir() and (p / "__init__.py").exists()}
+    assert folders == set(LAYERS), (
+        f"declare in ALLOWED: {sorted(folders - set(LAYERS))}; gone: {sorted(set(LAYERS) - folders)}"
+    )
+    doc = (REPO / "docs" / "architecture.md").read_text()
+    assert not [f for f in folders if f"gazelle/{f}/" not in doc], "docs/architecture.md names every folder"
+
+
+def test_the_folders_beside_the_package_use_only_public_surfaces() -> None:
+    problems = _other_violations(REPO, OTHER_FOLDERS)
+    assert not problems, "\n".join(problems)
+
+
 @pytest.mark.parametrize(
     ("layer", "source", "expected"),
     [
-        ("physics", "from ..systems import System\n", "the physics layer imports gazelle.systems"),
+        ("physics", "from ..systems import System\n", "the physics layer imports gazelle.systems, which it may not"),
         ("physics", "def f():\n    from ..sim import Simulation\n", "the physics layer imports gazelle.sim"),
-        ("systems", "import mujoco\n", "the systems layer imports mujoco"),
+        ("systems", "import mujoco\n", "the systems layer imports mujoco (only physics may)"),
         ("systems", "from ..physics._builder import scoped\n", "private module of gazelle.physics"),
         ("viewer", "from ..systems._base import RateGate\n", "private module of gazelle.systems"),
         ("sim", "import rclpy\n", "the sim layer imports rclpy"),
+        ("description", "from ..planning import Planner\n", "the description layer imports gazelle.planning"),
+        ("worlds", "import viser\n", "the worlds layer imports viser"),
+        ("newfolder", "x = 1\n", "the folder gazelle/newfolder is not declared"),
     ],
 )
 def test_the_check_finds_each_kind_of_violation(
@@ -138,7 +155,16 @@ def test_the_check_finds_each_kind_of_violation(
     monkeypatch.setattr(__import__(__name__), "PACKAGE", fake)
     monkeypatch.setattr(__import__(__name__), "REPO", tmp_path)
     problems = _violations()
-    assert any(expected in p and f"gazelle/{layer}/planted.py:" in p for p in problems), problems
+    assert any(expected in p and f"gazelle/{layer}/planted.py" in p for p in problems), problems
+
+
+def test_the_check_finds_a_private_reach_beside_the_package(tmp_path: Path) -> None:
+    (tmp_path / "scripts").mkdir()
+    (tmp_path / "scripts" / "tool.py").write_text("from gazelle.systems import _registry\n")
+    (tmp_path / "compat").mkdir()
+    (tmp_path / "compat" / "ok.py").write_text("from gazelle.ros import spawn_main\n")
+    problems = _other_violations(tmp_path, ("scripts", "compat"))
+    assert problems == ["scripts/tool.py:1: imports gazelle.systems._registry, a private part of gazelle"], problems
 
 
 BENCH = REPO / "bench"

@@ -73,6 +73,7 @@ if TYPE_CHECKING:
     from ._registry import audit_world as audit_world
     from ._registry import create_system as create_system
     from ._registry import plan_sensors as plan_sensors
+    from ._registry import plugin_factories as plugin_factories
     from ._registry import supported_plugins as supported_plugins
     from .robot_state import JointStatePublisher as JointStatePublisher
     from .robot_state import RobotStatePublisher as RobotStatePublisher
@@ -136,6 +137,7 @@ _LAZY = {
     "audit_model": ("._registry", "audit_model"),
     "audit_world": ("._registry", "audit_world"),
     "create_system": ("._registry", "create_system"),
+    "plugin_factories": ("._registry", "plugin_factories"),
     "plan_sensors": ("._registry", "plan_sensors"),
     "supported_plugins": ("._registry", "supported_plugins"),
     "RSP_PLUGIN": ("._plugin_names", "RSP_PLUGIN"),
@@ -206,6 +208,7 @@ __all__ = [
     "SensorPlan",
     "audit_model",
     "plan_sensors",
+    "plugin_factories",
     "plugin_node",
     "plugin_node_name",
     "audit_world",

@@ -303,6 +303,14 @@ def supported_plugins() -> list[str]:
     return sorted(_REGISTRY)
 
 
+def plugin_factories() -> dict[str, Callable[[], System]]:
+    """Every plugin name gazelle runs -> a factory of its system: the model and world plugins, then the
+    gazebo_ros plugins that sit inside a ``<sensor>`` (the plugin reference, scripts/gen_plugin_docs.py)."""
+    out = dict(_REGISTRY)
+    out.update({name: factory for name, (factory, _types) in _sensor_tables()[0].items()})
+    return out
+
+
 def create_system(plugin: Plugin) -> System | None:
     """A new system for ``plugin``, or None if unsupported (:func:`audit_model` says why)."""
     factory = _REGISTRY.get(_normalise(plugin.filename)) or _REGISTRY.get(_normalise(plugin.name))
