@@ -28,6 +28,7 @@ GO_TO_GOAL = Path(__file__).resolve().parents[1] / "robot_tests" / "robot_tests"
 GOAL = (-0.55, -0.55)
 """In the world: the middle of four pillars."""
 
+
 def burger_with_lidar_noise(stddev: float) -> Path:
     """TurtleBot3 burger's model.sdf with Gaussian noise of ``stddev`` metres on its lidar's ranges."""
     text = (TURTLEBOT3 / "models" / "turtlebot3_burger" / "model.sdf").read_text()
@@ -70,9 +71,15 @@ def reach_goal(gazelle_sim, params, seed):
     except AssertionError:
         reached = False
     when = gazelle_sim.time - t0
-    if reached:  # until the controller stops it, 10 ms at a time
+    if reached:  # until the controller stops it, 10 ms at a time (turning in place towards the goal is not stopped)
         gazelle_sim.run_until(
-            lambda: len(odom.messages) > 10 and all(abs(m.twist.twist.linear.x) < 1e-3 for m in odom.messages[-10:]),
+            lambda: (
+                len(odom.messages) > 10
+                and all(
+                    abs(m.twist.twist.linear.x) < 1e-3 and abs(m.twist.twist.angular.z) < 1e-3
+                    for m in odom.messages[-10:]
+                )
+            ),
             timeout=20.0,
             what="the robot to stop",
             step=0.01,

@@ -16,11 +16,15 @@ from __future__ import annotations
 
 import ctypes
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from . import _native
 from ._handles import ActuatorGroup, JointGroup, PerGeneration
+
+if TYPE_CHECKING:
+    from ._world import PhysicsWorld
 
 
 def _f64(values: object, n: int) -> np.ndarray:
@@ -77,7 +81,7 @@ class ServoPlan:
         self._struct: _native.ServoGroupStruct | None = None
         self._struct_key: tuple[int, ...] | None = None
 
-    def _resolve(self, world: object) -> tuple[np.ndarray, ...]:
+    def _resolve(self, world: PhysicsWorld) -> tuple[np.ndarray, ...]:
         act = self.actuators._ids.get(self.world).astype(np.int32)
         sq, sd = (a.astype(np.int32) for a in self.servo_joints._ids.get(self.world))
         rq, rd = (a.astype(np.int32) for a in self.recorded._ids.get(self.world))
@@ -187,16 +191,16 @@ class ServoPlan:
         self._struct_key = None
 
 
-def run_plans(world: object, plans: list[ServoPlan], nstep: int) -> tuple[int, str | None]:
-    """Take up to ``nstep`` steps of ``world`` (a PhysicsWorld) running ``plans``' cycles; the steps
-    taken and, after a MuJoCo error, its message (the steps before it are taken)."""
+def run_plans(world: PhysicsWorld, plans: list[ServoPlan], nstep: int) -> tuple[int, str | None]:
+    """Take up to ``nstep`` steps of ``world`` running ``plans``' cycles; the steps taken and, after a
+    MuJoCo error, its message (the steps before it are taken)."""
     if len(plans) == 1:
         structs = ctypes.pointer(plans[0].struct())
         n = 1
     else:
         structs = (_native.ServoGroupStruct * len(plans))(*(p.struct() for p in plans))  # copies
         n = len(plans)
-    taken = _native.run_servo_groups(world.model, world.data, nstep, structs, n)  # type: ignore[attr-defined]
+    taken = _native.run_servo_groups(world.model, world.data, nstep, structs, n)
     error = None
     if taken < 0:
         taken = -taken - 1

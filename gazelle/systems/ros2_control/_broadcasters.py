@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-from typing import Any
 
 import numpy as np
 
@@ -66,7 +65,7 @@ class JointStateBroadcaster(Controller):
         self._djs_keys = [[f"{n}/{i}" for i in ifaces] for n, ifaces in self._groups]
         # per JointState field: one C-level lookup of its values (the cycle runs at up to 1 kHz)
         self._getters = [values_getter(col) for col in self._columns]
-        self._block_columns: tuple[dict[str, int], list[list[Any]]] | None = None
+        self._block_columns: tuple[dict[str, int], list[list[tuple[int, int] | str]]] | None = None
         """For a planned block: per JointState field, each column's (kind, joint index) in the records, or its
         state key (made once per record layout)."""
 
@@ -105,9 +104,9 @@ class JointStateBroadcaster(Controller):
             return
         if self._block_columns is None or self._block_columns[0] is not column:
             kinds = {"position": 0, "velocity": 1, "effort": 2}
-            plan = []
+            plan: list[list[tuple[int, int] | str]] = []
             for keys in self._columns:
-                cols = []
+                cols: list[tuple[int, int] | str] = []
                 for key in keys:
                     joint, _, iface = key.rpartition("/")
                     cols.append((kinds[iface], column[joint]) if key and iface in kinds and joint in column else key)
@@ -116,8 +115,10 @@ class JointStateBroadcaster(Controller):
         n, extra = len(times), len(self._extra)
         fields = []
         for cols in self._block_columns[1]:
-            if all(isinstance(c, tuple) for c in cols) and len({c[0] for c in cols}) == 1 and not extra:
-                values = records[:, cols[0][0], [c[1] for c in cols]] if cols else np.empty((n, 0))  # type: ignore[index]
+            recorded = [c for c in cols if isinstance(c, tuple)]
+            if len(recorded) == len(cols) and len({c[0] for c in recorded}) <= 1 and not extra:
+                kind = recorded[0][0] if recorded else 0
+                values = records[:, kind, [c[1] for c in recorded]]  # one gather: every column recorded
             else:
                 values = np.zeros((n, len(cols) + extra))
                 for i, c in enumerate(cols):

@@ -421,7 +421,7 @@ class SimHardware:
             if j.enabled != "position":
                 self._enable_only(j, "position")
         plan = self._block_plan()
-        gains = tuple(j.position.gains for j in joints)  # type: ignore[union-attr]
+        gains = tuple(j.position.gains for j in joints if j.position is not None)
         if gains != self._plan_gains:
             plan.kp[:] = [g.p_gain if g.p_gain > 1e-9 else 1e-9 for g in gains]
             plan.ki[:] = [g.i_gain for g in gains]
