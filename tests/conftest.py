@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import os
 from pathlib import Path
 
@@ -34,28 +33,6 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
     if deselected:
         config.hook.pytest_deselected(items=deselected)
         items[:] = keep
-    if phase == "parallel":
-        _longest_files_first(items)
-
-
-FILE_SECONDS = Path(__file__).with_name("file_seconds.json")
-"""Seconds each test file took in a run (scripts/test_file_seconds.py writes it)."""
-
-
-def _longest_files_first(items: list[pytest.Item]) -> None:
-    """Order the files longest first (their tests keep their order): two workers taking whole files then
-    finish together, instead of one running a long file that came last while the other idles."""
-    try:
-        seconds: dict[str, float] = json.loads(FILE_SECONDS.read_text())
-    except (OSError, ValueError):
-        return
-    root = Path(__file__).resolve().parent.parent
-    groups: dict[str, list[pytest.Item]] = {}
-    for item in items:
-        groups.setdefault(Path(str(item.path)).resolve().relative_to(root).as_posix(), []).append(item)
-    unknown = 5.0  # a file not measured yet: about a typical file's
-    order = sorted(groups, key=lambda f: -seconds.get(f, unknown))  # (stable: equal weights keep their order)
-    items[:] = [item for f in order for item in groups[f]]
 
 
 @pytest.fixture

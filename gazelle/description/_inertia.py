@@ -179,7 +179,8 @@ def mesh_properties(mesh: Mesh) -> UnitProperties:
     except OSError as err:
         raise MeshReadError(f"cannot read '{mesh.path}': {err.strerror}") from None
     try:
-        return _mesh_props_cached(mesh.path, mtime, tuple(float(s) for s in mesh.scale))  # type: ignore[arg-type]
+        sx, sy, sz = mesh.scale
+        return _mesh_props_cached(mesh.path, mtime, (float(sx), float(sy), float(sz)))
     except OSError as err:
         raise MeshReadError(f"cannot read '{mesh.path}': {err.strerror}") from None
     except (ValueError, struct.error, np.linalg.LinAlgError) as err:
@@ -279,7 +280,10 @@ def inertia_from_geometries(
     for props, pose in parts:
         r = rotation_matrix(pose.orientation)
         centers.append(np.asarray(pose.position) + r @ np.asarray(props.center))
-    com = sum(p.volume * c for (p, _), c in zip(parts, centers, strict=True)) / total_volume
+    com = np.zeros(3)
+    for (p, _), c in zip(parts, centers, strict=True):
+        com = com + p.volume * c  # (in order, as the volumes add up)
+    com = com / total_volume
     tensor = np.zeros((3, 3))
     for (props, pose), c in zip(parts, centers, strict=True):
         r = rotation_matrix(pose.orientation)
@@ -287,7 +291,7 @@ def inertia_from_geometries(
         tensor += rho * (r @ props.inertia @ r.T + props.volume * (float(d @ d) * np.eye(3) - np.outer(d, d)))
     inertial = Inertial(
         mass=float(total_mass),
-        pose=Pose((float(com[0]), float(com[1]), float(com[2]))),  # pyright: ignore[reportIndexIssue]
+        pose=Pose((float(com[0]), float(com[1]), float(com[2]))),
         ixx=float(tensor[0, 0]),
         ixy=float(tensor[0, 1]),
         ixz=float(tensor[0, 2]),
@@ -328,11 +332,11 @@ def inertia_problem(
         return "inertia is zero"
     moments = np.linalg.eigvalsh(tensor)
     if moments[0] <= 0:
-        return f"inertia is not positive-definite (principal moments {_fmt(moments)})"  # pyright: ignore[reportArgumentType]
+        return f"inertia is not positive-definite (principal moments {_fmt(moments)})"
     if moments[0] + moments[1] < moments[2] * (1 - rtol):
-        return f"principal moments {_fmt(moments)} violate the triangle inequality"  # pyright: ignore[reportArgumentType]
+        return f"principal moments {_fmt(moments)} violate the triangle inequality"
     return None
 
 
-def _fmt(values: npt.NDArray[np.float64]) -> str:
+def _fmt(values: npt.NDArray[np.floating] | Sequence[float]) -> str:
     return ", ".join(f"{v:.6g}" for v in values)

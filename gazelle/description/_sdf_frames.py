@@ -77,8 +77,8 @@ class Scope:
         cached = self._poses.get(name)
         if cached is _FAILED:
             return None
-        if cached is not None:
-            return cached  # type: ignore[return-value]
+        if isinstance(cached, Pose):
+            return cached
         node = self.nodes.get(name)
         if node is not None:
             if name in _stack:
@@ -90,7 +90,7 @@ class Scope:
             result: object = _FAILED if base is None else base * node.pose * node.post
             if name not in self._poses:
                 self._poses[name] = result
-            return None if result is _FAILED else result  # type: ignore[return-value]
+            return result if isinstance(result, Pose) else None
         head, sep, rest = name.partition("::")
         if sep and head in self.nested and rest in self.nested[head].poses:
             base = self.pose(head, location, _stack)
@@ -109,8 +109,8 @@ class Scope:
         cached = self._bodies.get(name)
         if cached is _FAILED:
             return None
-        if cached is not None:
-            return cached  # type: ignore[return-value]
+        if isinstance(cached, str):
+            return cached
         node = self.nodes.get(name)
         result: object
         if node is not None:
@@ -138,7 +138,7 @@ class Scope:
                 result = _FAILED
         if name not in self._bodies:
             self._bodies[name] = result
-        return None if result is _FAILED else result  # type: ignore[return-value]
+        return result if isinstance(result, str) else None
 
     def export(self) -> ScopeFrames:
         """Every frame name of this scope resolved, for the parent scope.

@@ -18,6 +18,7 @@ import os
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
+from typing import TypeVar
 
 from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
 
@@ -121,6 +122,9 @@ _GAZEBO_COLORS: dict[str, tuple[float, float, float, float]] = {
     "Gazebo/Turquoise": (0.0, 1.0, 1.0, 1.0),
     "Gazebo/Wood": (0.5, 0.3, 0.1, 1.0),
 }
+
+
+T = TypeVar("T")
 
 
 # --------------------------------------------------------------------------- drafts
@@ -453,11 +457,12 @@ class _Reader:
                 (ErrorCode.INERTIA_INVALID, "<inertia> has a value that is not a number", self.loc(inertia_el))
             )
             return draft
-        problem = _inertia.inertia_problem(*values)  # type: ignore[arg-type]
+        ixx, ixy, ixz, iyy, iyz, izz = (v for v in values if v is not None)
+        problem = _inertia.inertia_problem(ixx, ixy, ixz, iyy, iyz, izz)
         if problem is not None:
             draft.problems.append((ErrorCode.INERTIA_INVALID, problem, self.loc(inertia_el)))
         else:
-            draft.tensor = tuple(values)  # type: ignore[assignment]
+            draft.tensor = (ixx, ixy, ixz, iyy, iyz, izz)
         return draft
 
     # ---- joints
@@ -488,9 +493,9 @@ class _Reader:
             child=child,
             origin=self.pose(element),
             axis=axis,
-            mimic=self.optional(element, "mimic", self.mimic),  # pyright: ignore[reportArgumentType]
-            safety_controller=self.optional(element, "safety_controller", self.safety_controller),  # pyright: ignore[reportArgumentType]
-            calibration=self.optional(element, "calibration", self.calibration),  # pyright: ignore[reportArgumentType]
+            mimic=self.optional(element, "mimic", self.mimic),
+            safety_controller=self.optional(element, "safety_controller", self.safety_controller),
+            calibration=self.optional(element, "calibration", self.calibration),
             location=self.loc(element),
         )
 
@@ -524,7 +529,7 @@ class _Reader:
         return JointAxis(
             (xyz[0] / norm, xyz[1] / norm, xyz[2] / norm),
             limit=self.limit(element, joint, jtype),
-            dynamics=self.optional(element, "dynamics", self.dynamics) or JointDynamics(),  # pyright: ignore[reportArgumentType]
+            dynamics=self.optional(element, "dynamics", self.dynamics) or JointDynamics(),
         )
 
     def limit(self, element: etree._Element, joint: str, jtype: JointType) -> JointLimit:
@@ -544,7 +549,7 @@ class _Reader:
                 v.setdefault(bound, 0.0)  # the URDF default
         return JointLimit(v.get("lower"), v.get("upper"), v.get("effort"), v.get("velocity"))
 
-    def optional(self, element: etree._Element, tag: str, read: Callable[[etree._Element], object]) -> object:
+    def optional(self, element: etree._Element, tag: str, read: Callable[[etree._Element], T]) -> T | None:
         """``read(child)`` for the ``tag`` child of ``element``, or None when absent."""
         child = element.find(tag)
         return None if child is None else read(child)

@@ -247,7 +247,7 @@ def _add_geom(
             _log.warning(f"{where}collision '{col.name}': mesh '{g.uri}' could not be resolved; it is left out")
             return
         try:
-            parts = collision_parts(g.path, tuple(g.scale))  # type: ignore[arg-type]
+            parts = collision_parts(g.path, g.scale)
         except MeshReadError as err:
             _log.warning(f"{where}collision '{col.name}': {err}; it is left out")
             return
@@ -443,19 +443,14 @@ def _set_inertial(body: mujoco.MjsBody, link: Link) -> None:
         return
     body.explicitinertial = True
     body.mass = max(inertial.mass, MIN_MASS)
-    body.ipos = list(inertial.pose.position)  # pyright: ignore[reportAttributeAccessIssue]
-    body.iquat = list(inertial.pose.orientation)  # pyright: ignore[reportAttributeAccessIssue]
+    body.ipos = np.array(inertial.pose.position, dtype=np.float64)
+    body.iquat = np.array(inertial.pose.orientation, dtype=np.float64)
     # an isotropic 1e-6 of the trace absorbs the rounding the loader tolerates (A + B >= C within rtol 1e-6,
     # e.g. TurtleBot3's thin-disk wheels, A + B == C), which MuJoCo's exact check would reject
     eps = 1e-6 * (inertial.ixx + inertial.iyy + inertial.izz)
-    body.fullinertia = [  # pyright: ignore[reportAttributeAccessIssue]
-        inertial.ixx + eps,
-        inertial.iyy + eps,
-        inertial.izz + eps,
-        inertial.ixy,
-        inertial.ixz,
-        inertial.iyz,
-    ]
+    body.fullinertia = np.array(
+        [inertial.ixx + eps, inertial.iyy + eps, inertial.izz + eps, inertial.ixy, inertial.ixz, inertial.iyz]
+    )
 
 
 def _joint_frame_in_child(joint: Joint) -> Pose:
@@ -488,14 +483,14 @@ def _add_joint_dofs(spec: mujoco.MjSpec, body: mujoco.MjsBody, joint: Joint, nam
                 # refuses an empty range, so the range is opened by a micro-radian (micrometre) each way
                 mid = (lo + hi) / 2
                 lo, hi = mid - EQUAL_LIMITS_SLACK, mid + EQUAL_LIMITS_SLACK
-            j.range = [lo, hi]  # pyright: ignore[reportAttributeAccessIssue]
+            j.range = np.array([lo, hi], dtype=np.float64)
         else:
             j.limited = mujoco.mjtLimited.mjLIMITED_FALSE
         if dyn is not None:
-            j.damping = [dyn.damping, 0.0, 0.0]  # MuJoCo 4: polynomial coefficients  # pyright: ignore[reportAttributeAccessIssue]
+            j.damping = np.array([dyn.damping, 0.0, 0.0])  # MuJoCo 4: polynomial coefficients
             j.frictionloss = dyn.friction
             if dyn.spring_stiffness:
-                j.stiffness = [dyn.spring_stiffness, 0.0, 0.0]  # pyright: ignore[reportAttributeAccessIssue]
+                j.stiffness = np.array([dyn.spring_stiffness, 0.0, 0.0])
                 j.springref = dyn.spring_reference
         if (
             limit is not None
@@ -508,7 +503,7 @@ def _add_joint_dofs(spec: mujoco.MjSpec, body: mujoco.MjsBody, joint: Joint, nam
             )
         ):
             j.actfrclimited = mujoco.mjtLimited.mjLIMITED_TRUE
-            j.actfrcrange = [-limit.effort, limit.effort]  # pyright: ignore[reportAttributeAccessIssue]
+            j.actfrcrange = np.array([-limit.effort, limit.effort], dtype=np.float64)
         j.armature = JOINT_ARMATURE
         names.append(jname)
         return j
@@ -642,9 +637,9 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose, *, vis
                 for jname in built.joints[joint.name]:
                     mj = spec.joint(jname)
                     mj.armature = KINEMATIC_ARMATURE
-                    mj.damping = [0.0, 0.0, 0.0]  # pyright: ignore[reportAttributeAccessIssue]
+                    mj.damping = np.zeros(3)
                     mj.frictionloss = 0.0
-                    mj.stiffness = [0.0, 0.0, 0.0]  # pyright: ignore[reportAttributeAccessIssue]
+                    mj.stiffness = np.zeros(3)
                     built.kinematic_joints.append(jname)
         mass_hint = link.inertial.mass if link.inertial else total_mass
         colour = next(

@@ -411,7 +411,7 @@ def prepare(model: Model) -> None:
                 g = col.geometry
                 if isinstance(g, Mesh) and g.path is not None:
                     try:
-                        collision_parts(g.path, tuple(g.scale))  # type: ignore[arg-type]
+                        collision_parts(g.path, g.scale)
                     except MeshReadError:
                         pass
     finally:

@@ -116,7 +116,8 @@ def _checked_placement(name: str, X_WM: Pose, taken: Container[str]) -> Pose:
     qn = math.sqrt(sum(v * v for v in X_WM.orientation))
     if qn < 1e-9:
         raise WorldError(ErrorKind.INVALID_POSE, f"orientation of '{name}' is a zero quaternion")
-    return Pose(X_WM.position, tuple(v / qn for v in X_WM.orientation))  # type: ignore[arg-type]
+    w, x, y, z = X_WM.orientation
+    return Pose(X_WM.position, (w / qn, x / qn, y / qn, z / qn))
 
 
 def pose_out_of_range(pose: Pose, field_name: str) -> str | None:
@@ -238,6 +239,11 @@ class ContactPoint:
     depth: float
 
 
+def _vec3(v: Sequence[float] | np.ndarray) -> tuple[float, float, float]:
+    """Three floats of a MuJoCo vector, as a typed 3-tuple."""
+    return (float(v[0]), float(v[1]), float(v[2]))
+
+
 def _gazebo_collision_name(geom_name: str) -> str:
     """``entity::link::collision#i`` (MuJoCo) -> ``entity::link::collision`` (Gazebo)."""
     return geom_name.rsplit("#", 1)[0] if "#" in geom_name else geom_name
@@ -262,7 +268,7 @@ class PhysicsWorld:
         opt = self.spec.option
         opt.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
         opt.timestep = timestep_sec or world.physics.max_step_size_sec
-        opt.gravity = list(world.gravity)  # pyright: ignore[reportAttributeAccessIssue]
+        opt.gravity = np.array(world.gravity, dtype=np.float64)
         opt.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
         # a diverging state is found, reported and repaired per entity (recover_divergence),
         # never silently reset for the whole world as MuJoCo would
@@ -542,7 +548,7 @@ class PhysicsWorld:
             act.set_to_motor()
         if force_limit is not None and (math.isfinite(force_limit[0]) or math.isfinite(force_limit[1])):
             act.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
-            act.forcerange = [max(force_limit[0], -1e30), min(force_limit[1], 1e30)]  # pyright: ignore[reportAttributeAccessIssue]
+            act.forcerange = np.array([max(force_limit[0], -1e30), min(force_limit[1], 1e30)])
         return ActuatorHandle(JointHandle(self, entity.name, joint), kind, name)
 
     def joint_group(self, entity: str, joints: tuple[str, ...]) -> JointGroup:
@@ -987,10 +993,10 @@ class PhysicsWorld:
                 ContactPoint(
                     _gazebo_collision_name(mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_GEOM, mine) or str(mine)),
                     _gazebo_collision_name(mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_GEOM, other) or str(other)),
-                    tuple(float(v) for v in c.pos),  # type: ignore[arg-type]
-                    tuple(float(v) for v in normal),  # type: ignore[arg-type]
-                    tuple(float(v) for v in sign * force_w),  # type: ignore[arg-type]
-                    tuple(float(v) for v in sign * torque_w),  # type: ignore[arg-type]
+                    _vec3(c.pos),
+                    _vec3(normal),
+                    _vec3(sign * force_w),
+                    _vec3(sign * torque_w),
                     float(-c.dist),
                 )
             )
@@ -1276,11 +1282,12 @@ class PhysicsWorld:
         jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, e.built.free_joint)
         a, v = self.model.jnt_qposadr[jid], self.model.jnt_dofadr[jid]
         self.data.qpos[a : a + 3] = pose.position
-        q = [x / qn for x in pose.orientation]
+        w, x, y, z = pose.orientation
+        q = (w / qn, x / qn, y / qn, z / qn)
         self.data.qpos[a + 3 : a + 7] = q
         self.data.qvel[v : v + 3] = linear
         # free joint angular velocity is in the body frame
-        self.data.qvel[v + 3 : v + 6] = quat_rotate(quat_conj(tuple(q)), angular)  # type: ignore[arg-type]
+        self.data.qvel[v + 3 : v + 6] = quat_rotate(quat_conj(q), angular)
         self._watch_overlaps()
         self._forward()
 

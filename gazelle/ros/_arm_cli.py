@@ -140,6 +140,7 @@ def arm_main(argv: list[str]) -> int:
         parser.error("give one of: x y z roll pitch yaw | --named NAME | --joints ...")
 
     import rclpy
+    from rclpy.utilities import try_shutdown
 
     rclpy.init(args=["gazelle_arm", *ros_args])
     node = rclpy.create_node("gazelle_arm")
@@ -153,7 +154,7 @@ def arm_main(argv: list[str]) -> int:
         return 1
     finally:
         node.destroy_node()
-        rclpy.try_shutdown()  # pyright: ignore[reportPrivateImportUsage]
+        try_shutdown()
 
 
 def _served(client: Any, timeout: float) -> bool:

@@ -217,11 +217,12 @@ class _TypeRelays:
 
             import rclpy
             from rclpy.context import Context
+            from rclpy.utilities import try_shutdown
 
             context = Context()
             rclpy.init(context=context)
             self._out = rclpy.create_node("ros_gz_bridge_converted", context=context)
-            atexit.register(lambda: rclpy.try_shutdown(context=context))  # pyright: ignore[reportPrivateImportUsage]
+            atexit.register(lambda: try_shutdown(context=context))
         return self._out
 
     def _native(self, name: str, wanted: str, gazelle_subscribes: bool) -> str | None:

@@ -60,6 +60,7 @@ from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, Sh
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from rclpy.utilities import try_shutdown
 from sensor_msgs.msg import JointState
 from std_msgs.msg import Float64, String
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
@@ -1350,7 +1351,7 @@ def move_group_main(argv: list[str]) -> int:
     finally:
         executor.shutdown()
         node.destroy_node()
-        rclpy.try_shutdown()  # pyright: ignore[reportPrivateImportUsage]
+        try_shutdown()
     # The end, without the interpreter's teardown: callbacks the executor had handed to its threads when the
     # signal came end in "cannot use Destroyable" inside rclpy tasks, which the garbage collector then
     # printed at exit ("The following exception was never retrieved"), after every Ctrl-C

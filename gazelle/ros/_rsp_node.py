@@ -19,6 +19,7 @@ from geometry_msgs.msg import TransformStamped
 from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from rclpy.utilities import try_shutdown
 from sensor_msgs.msg import JointState
 from std_msgs.msg import String
 from tf2_msgs.msg import TFMessage
@@ -123,7 +124,7 @@ def main(argv: list[str] | None = None) -> int:
         node = RobotStatePublisherNode()
     except RuntimeError as err:
         print(f"[ERROR] [robot_state_publisher]: {err}", file=sys.stderr)
-        rclpy.try_shutdown()  # pyright: ignore[reportPrivateImportUsage]
+        try_shutdown()
         return 1
     spin_until_interrupted(node)
     return 0
@@ -137,4 +138,4 @@ def spin_until_interrupted(node: Node) -> None:
         pass
     finally:
         node.destroy_node()
-        rclpy.try_shutdown()  # pyright: ignore[reportPrivateImportUsage]
+        try_shutdown()

@@ -17,6 +17,7 @@ from __future__ import annotations
 import logging
 import math
 import random
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from ..description import ConfigElement, Pose, quat_conj, quat_from_rpy, quat_mul, quat_rotate
@@ -161,14 +162,11 @@ class P3D(System):
             frame = world.entity_state(self._entity, self._frame_link)
             qi = quat_conj(frame.pose.orientation)
             pose = frame.pose.inverse() * pose
-            lin = quat_rotate(qi, tuple(a - b for a, b in zip(lin, frame.linear_velocity)))  # type: ignore[arg-type]
-            ang = quat_rotate(qi, tuple(a - b for a, b in zip(ang, frame.angular_velocity)))  # type: ignore[arg-type]
+            lin = quat_rotate(qi, _sub(lin, frame.linear_velocity))
+            ang = quat_rotate(qi, _sub(ang, frame.angular_velocity))
         o = self._offset
-        pose = Pose(
-            tuple(p + d for p, d in zip(pose.position, o.position)),  # type: ignore[arg-type]
-            quat_mul(o.orientation, pose.orientation),
-        )
-        return pose, Twist(tuple(lin), tuple(ang))  # type: ignore[arg-type]
+        pose = Pose(_add(pose.position, o.position), quat_mul(o.orientation, pose.orientation))
+        return pose, Twist(lin, ang)
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.config.update_rate):
@@ -179,14 +177,30 @@ class P3D(System):
         gn = self.config.gaussian_noise
         if gn > 0:
             g = self._rng.gauss
-            pose = Pose(tuple(p + g(0.0, gn) for p in pose.position), pose.orientation)  # type: ignore[arg-type]
-            twist = Twist(
-                tuple(v + g(0.0, gn) for v in twist.linear),  # type: ignore[arg-type]
-                tuple(v + g(0.0, gn) for v in twist.angular),  # type: ignore[arg-type]
-            )
+            # (drawn in the order x, y, z of the position, then of each velocity)
+            pose = Pose(_noisy(pose.position, g, gn), pose.orientation)
+            twist = Twist(_noisy(twist.linear, g, gn), _noisy(twist.angular, g, gn))
         cov = [0.0] * 36
         for i in (0, 7, 14, 21, 28, 35):
             cov[i] = gn * gn
         self._pub.publish(
             Odometry(info.sim_time_sec, self.frame_id, self.child_frame_id, pose, twist, tuple(cov), tuple(cov))
         )
+
+
+Vec3 = tuple[float, float, float]
+
+
+def _add(a: Vec3, b: Vec3) -> Vec3:
+    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+
+
+def _sub(a: Vec3, b: Vec3) -> Vec3:
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def _noisy(v: Vec3, gauss: Callable[[float, float], float], stddev: float) -> Vec3:
+    """``v`` plus Gaussian noise on each component, drawn in the order x, y, z."""
+    x = v[0] + gauss(0.0, stddev)
+    y = v[1] + gauss(0.0, stddev)
+    return (x, y, v[2] + gauss(0.0, stddev))

@@ -82,7 +82,7 @@ class _GifWriter:
         from PIL import Image
 
         h = round(img.height * self.width / img.width)
-        small = img.resize((self.width, h), Image.BILINEAR)  # pyright: ignore[reportAttributeAccessIssue]
+        small = img.resize((self.width, h), Image.Resampling.BILINEAR)
         self.frames.append(small.quantize(colors=128, method=Image.Quantize.MEDIANCUT))
         self.stamps.append(stamp)
 
@@ -150,13 +150,15 @@ class _Mp4Writer:
         from PIL import Image
 
         if self.width:
-            img = img.resize((self.width, round(img.height * self.width / img.width)), Image.BILINEAR)  # pyright: ignore[reportAttributeAccessIssue]
+            img = img.resize((self.width, round(img.height * self.width / img.width)), Image.Resampling.BILINEAR)
         if img.width % 2 or img.height % 2:  # yuv420p halves the chroma planes: even sizes only
             img = img.crop((0, 0, img.width - img.width % 2, img.height - img.height % 2))
         if self.container is None:
             self._open(img.width, img.height, stamp)
         elif (img.width, img.height) != (self.stream.width, self.stream.height):
-            img = img.resize((self.stream.width, self.stream.height), Image.BILINEAR)  # the window was resized  # pyright: ignore[reportAttributeAccessIssue]
+            img = img.resize(
+                (self.stream.width, self.stream.height), Image.Resampling.BILINEAR
+            )  # the window was resized
         pts = self._pts(stamp)
         if self.pending is not None:
             pts = max(pts, self.pending.pts + 1)

@@ -31,9 +31,10 @@ def cli_node(name: str = "ros2cli") -> Iterator[Any]:
     down on exit."""
     import rclpy
     from rclpy.executors import SingleThreadedExecutor
+    from rclpy.utilities import get_default_context, try_shutdown
 
     rclpy.init(args=[])
-    context = rclpy.get_default_context()  # pyright: ignore[reportPrivateImportUsage]
+    context = get_default_context()
     try:
         node = rclpy.create_node(f"_{name}_{os.getpid()}", start_parameter_services=False)
         executor = SingleThreadedExecutor()
@@ -59,7 +60,7 @@ def cli_node(name: str = "ros2cli") -> Iterator[Any]:
         def teardown() -> None:
             executor.shutdown(timeout_sec=0.5)
             node.destroy_node()
-            rclpy.try_shutdown()  # pyright: ignore[reportPrivateImportUsage]
+            try_shutdown()
 
         # at most a few seconds: once, `ros2 param dump` printed its answer and then never returned from
         # here (CI killed it at 60 s); the process ends right after anyway (see console_main)
