@@ -45,15 +45,18 @@ os.environ.setdefault("ROS_DOMAIN_ID", str(os.getpid() % 100 + 1))
 os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
 
 LISTENER = """
-import select, sys
+import select, sys, time
 import rclpy
 from rclpy.qos import QoSProfile, ReliabilityPolicy
 from sensor_msgs.msg import JointState
 rclpy.init()
 node = rclpy.create_node("bench_joint_states_listener")
 n = [0]
-node.create_subscription(JointState, "/joint_states", lambda m: n.__setitem__(0, n[0] + 1),
-                         QoSProfile(depth=1000, reliability=ReliabilityPolicy.RELIABLE))
+sub = node.create_subscription(JointState, "/joint_states", lambda m: n.__setitem__(0, n[0] + 1),
+                               QoSProfile(depth=1000, reliability=ReliabilityPolicy.RELIABLE))
+deadline = time.monotonic() + 30.0
+while sub.get_publisher_count() < 1 and time.monotonic() < deadline:  # matched with the simulation's
+    rclpy.spin_once(node, timeout_sec=0.05)
 print("ready", flush=True)
 while not select.select([sys.stdin], [], [], 0)[0]:  # until the parent closes our stdin
     rclpy.spin_once(node, timeout_sec=0.05)
@@ -267,11 +270,7 @@ def ros_rtf(kind: str, seconds: float) -> tuple[float, str]:
         )
         try:
             assert proc.stdout is not None
-            proc.stdout.readline()  # "ready"
-            pubs = bridge.node.ros_publishers("/joint_states")
-            deadline = time.monotonic() + 10.0
-            while not all(p.get_subscription_count() for p in pubs) and time.monotonic() < deadline:
-                time.sleep(0.05)
+            proc.stdout.readline()  # "ready": it has matched the simulation's publisher
             box = bridge.node.outbox
             jtc.submit(TrajectoryGoal(trajectory(0.0)))
             p0 = box.published
@@ -292,12 +291,97 @@ def ros_rtf(kind: str, seconds: float) -> tuple[float, str]:
         bridge.shutdown()
 
 
+ARMS_LISTENER = """
+import select, sys, time
+import rclpy
+from rclpy.qos import QoSProfile, ReliabilityPolicy
+from sensor_msgs.msg import JointState
+rclpy.init()
+node = rclpy.create_node("bench_arms_listener")
+n = [0]
+subs = [node.create_subscription(JointState, f"/r{i}/joint_states", lambda m: n.__setitem__(0, n[0] + 1),
+                                 QoSProfile(depth=1000, reliability=ReliabilityPolicy.RELIABLE))
+        for i in range(int(sys.argv[1]))]
+deadline = time.monotonic() + 30.0
+while min(s.get_publisher_count() for s in subs) < 1 and time.monotonic() < deadline:
+    rclpy.spin_once(node, timeout_sec=0.05)
+print("ready", sum(1 for s in subs if s.get_publisher_count()), flush=True)
+while not select.select([sys.stdin], [], [], 0)[0]:
+    rclpy.spin_once(node, timeout_sec=0.05)
+for _ in range(100):
+    rclpy.spin_once(node, timeout_sec=0.01)
+print(n[0], flush=True)
+"""
+
+
+def arms_at_real_time(count: int, seconds: float, blocks: bool = True) -> tuple[float, str]:
+    """``count`` namespaced r6bots (``/rN``), each under JTC + JSB at 1 kHz following a path, on ROS at
+    ``--rtf 1`` for ``seconds`` of wall time, a plain rclpy process listening to every /rN/joint_states:
+    the RTF held, the server's CPU, and how many joint states were published and heard."""
+    import resource
+    import subprocess
+
+    from gazelle.description import Pose, load
+    from gazelle.ros import RosBridge
+    from gazelle.sim import Simulation
+    from gazelle.systems.ros2_control import ControllerManager, TrajectoryGoal, parse_params
+    from gazelle.worlds import default_world
+
+    model = load(URDF).value
+    sim = Simulation(default_world(), rtf=0)
+    managers, controllers = [], []
+    for i in range(count):
+        entity = sim.spawn(model, name=f"r{i}", namespace=f"r{i}", pose=Pose((2.0 * i, 0.0, 0.0)))
+        cm = next(s for s in entity.systems if isinstance(s, ControllerManager))
+        cm.blocks_allowed = blocks
+        cm.files.append(parse_params(YAML))
+        cm.update_rate = 1000
+        for name in ("jsb", "jtc"):
+            cm.load_controller(name)
+            cm.configure_controller(name)
+        cm.switch_controller(["jsb", "jtc"], [])
+        managers.append(cm)
+        controllers.append(cm.controllers["jtc"].controller)
+    sim.step(200)
+    sim.rtf = 1.0
+    bridge = RosBridge(sim, clock_rate_hz=100.0)
+    proc = subprocess.Popen(
+        [sys.executable, "-c", ARMS_LISTENER, str(count)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True
+    )
+    try:
+        assert proc.stdout is not None
+        matched = int(proc.stdout.readline().split()[1])  # "ready N": N topics matched
+        for jtc in controllers:
+            jtc.submit(TrajectoryGoal(trajectory(0.0)))
+        box = bridge.node.outbox
+        s0 = sim.world.time
+        c0 = sum(cm.block_cycles for cm in managers)
+        ru0 = resource.getrusage(resource.RUSAGE_SELF)
+        sim_s, wall_s = run_threaded(sim, seconds)
+        ru1 = resource.getrusage(resource.RUSAGE_SELF)
+        box.flush(20.0)
+        cpu = (ru1.ru_utime + ru1.ru_stime - ru0.ru_utime - ru0.ru_stime) / wall_s
+        out, _ = proc.communicate(timeout=60)
+        heard = int(out.strip().splitlines()[-1])
+        produced = round((sim.world.time - s0) / sim.world.timestep) * count  # one JointState per arm per cycle
+        cycles = sum(cm.block_cycles for cm in managers) - c0
+        return sim_s / wall_s, (
+            f"RTF {sim_s / wall_s:.3f}; server {cpu * 100:.0f} % of a core; {produced} joint states produced, {heard} heard by one rclpy "
+            f"process ({matched}/{count} topics matched), none dropped: {box.dropped}; {cycles} cycles in blocks"
+        )
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+        bridge.shutdown()
+
+
 def main() -> int:
     import argparse
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0] if __doc__ else None)
     parser.add_argument("--seconds", type=float, default=5.0, help="sim-seconds of each run (default 5)")
     parser.add_argument("--smoke", action="store_true", help="the same code path at tiny sizes (./test.sh runs it)")
+    parser.add_argument("--arms", type=int, default=10, help="r6bots at --rtf 1 in the last row (default 10)")
     opts = parser.parse_args()
     logging.disable(logging.WARNING)
     os.environ["GAZELLE_RESOURCE_PATH"] = str(R6BOT)
@@ -312,6 +396,8 @@ def main() -> int:
     wall = 0.3 if opts.smoke else 3.0
     ros_none, ros_none_note = ros_rtf("none", wall)
     ros_jtc, ros_jtc_note = ros_rtf("jtc", wall)
+    arms = 2 if opts.smoke else opts.arms
+    arms_rtf, arms_note = arms_at_real_time(arms, 0.5 if opts.smoke else 5.0)
     rows = [
         ("no ros2_control (joints limp)", none, ""),
         ("controller manager at 1 kHz, no controller (joints held)", idle, "cycles in blocks"),
@@ -322,6 +408,7 @@ def main() -> int:
         ("floor: limp + a bare 1 kHz Python read, write, JointState", runtime_floor, ""),
         ("over ROS: limp, nobody subscribed", ros_none, ros_none_note),
         ("over ROS: JTC + JSB, /joint_states heard", ros_jtc, ros_jtc_note),
+        (f"over ROS at --rtf 1: {arms} arms, JTC + JSB, all heard", arms_rtf, arms_note),
     ]
     print(f"r6bot, 1 ms physics steps, best of 3 runs of {seconds:g} sim-seconds each (over ROS: {wall:g} wall s)")
     print(f"{'case':58s} {'RTF':>8s}  note")
