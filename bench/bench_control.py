@@ -366,7 +366,8 @@ def arms_at_real_time(count: int, seconds: float, blocks: bool = True) -> tuple[
         produced = round((sim.world.time - s0) / sim.world.timestep) * count  # one JointState per arm per cycle
         cycles = sum(cm.block_cycles for cm in managers) - c0
         return sim_s / wall_s, (
-            f"RTF {sim_s / wall_s:.3f}; server {cpu * 100:.0f} % of a core; {produced} joint states produced, {heard} heard by one rclpy "
+            f"RTF {sim_s / wall_s:.3f}; server {cpu * 100:.0f} % of a core; "
+            f"{produced} joint states produced, {heard} heard by one rclpy "
             f"process ({matched}/{count} topics matched), none dropped: {box.dropped}; {cycles} cycles in blocks"
         )
     finally:
