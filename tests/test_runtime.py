@@ -333,3 +333,23 @@ def test_a_worlds_models_are_compiled_into_mujoco_once_and_step_as_one_at_a_time
     for name in ("b0", "b17", "b39"):
         a, b = batch.world.entity_state(name).pose, one_by_one.world.entity_state(name).pose
         assert np.allclose(a.position, b.position, atol=1e-9) and np.allclose(a.orientation, b.orientation, atol=1e-9)
+
+
+def test_the_in_process_world_names_a_file_of_the_wrong_kind(tmp_path) -> None:
+    """gazelle_world(world=...) given a robot file, or spawn() given a world file, says so by file instead of
+    failing inside the runtime (an AttributeError on the model, before)."""
+    from gazelle.testing import InProcessWorld
+
+    robot = tmp_path / "bot.urdf"
+    robot.write_text(
+        '<robot name="bot"><link name="base"><inertial><mass value="1"/>'
+        '<inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial></link></robot>'
+    )
+    world_file = tmp_path / "empty.sdf"
+    world_file.write_text('<sdf version="1.9"><world name="w"></world></sdf>')
+    with pytest.raises(ValueError, match=r"bot\.urdf: not a world \(it describes a model\)"):
+        InProcessWorld(robot)
+    world = InProcessWorld(world_file)
+    with pytest.raises(ValueError, match=r"empty\.sdf: not a robot or model \(it describes a world\)"):
+        world.spawn(world_file, "w2")
+    assert world.spawn(robot, "bot").name == "bot"

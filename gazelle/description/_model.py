@@ -86,7 +86,7 @@ class Pose:
     @staticmethod
     def from_xyz_rpy(xyz: Vec3 = (0.0, 0.0, 0.0), rpy: Vec3 = (0.0, 0.0, 0.0)) -> Pose:
         """Pose from a translation and fixed-axis roll/pitch/yaw in radians."""
-        return Pose(tuple(float(v) for v in xyz), quat_from_rpy(*rpy))  # type: ignore[arg-type]
+        return Pose((float(xyz[0]), float(xyz[1]), float(xyz[2])), quat_from_rpy(*rpy))
 
     def __mul__(self, other: Pose) -> Pose:
         """Compose: ``X_AB * X_BC = X_AC``."""

@@ -82,7 +82,8 @@ def _shape(geometry: object, pose: Pose) -> SceneShape | None:
             return None
         points = np.asarray(vertices, dtype=float) * np.asarray(geometry.scale, dtype=float)
         lo, hi = points.min(axis=0), points.max(axis=0)
-        center = Pose(tuple(float(v) for v in (lo + hi) / 2))  # type: ignore[arg-type]
+        mid = (lo + hi) / 2
+        center = Pose((float(mid[0]), float(mid[1]), float(mid[2])))
         return SceneShape("box", tuple(float(max(v, 1e-4)) for v in hi - lo), pose * center)
     if isinstance(geometry, Plane):
         # the slab's top face is the plane: turn z onto its normal, then go half the thickness down

@@ -16,10 +16,10 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from ..description import World
+    pass
 
 from ._spec import ParamValue, RunSpec, SweepError, grid, load_scenario, scenario_from_file
 
@@ -128,7 +128,7 @@ class _InProcessRun:
     replay page kept if the run does not pass."""
 
     def __init__(self, fn: Callable[..., Any], spec: RunSpec, start: str | None) -> None:
-        from ..description import load
+        from ..description import World, load
         from ..sim import ReplayRecorder, Simulation
         from ..worlds import default_world
 
@@ -136,11 +136,13 @@ class _InProcessRun:
         world_file = getattr(fn, "world", None)
         world = load(world_file).value if world_file is not None else default_world()
         if start is not None:  # a branch: the checkpoint's world as it was, another draw of its noise
-            given = cast("World", world) if world_file is not None else None
+            given = world if world_file is not None and isinstance(world, World) else None
             self.sim = Simulation.from_checkpoint(start, world=given)
             self.sim.reseed(spec.seed)
         else:
-            self.sim = Simulation(world, rtf=0, seed=spec.seed)  # type: ignore[arg-type]
+            if not isinstance(world, World):
+                raise ValueError(f"{world_file}: not a world (it describes a {type(world).__name__.lower()})")
+            self.sim = Simulation(world, rtf=0, seed=spec.seed)
         # 10 poses a sim second: enough to see what went wrong, 2-3 % of a run's time (30 Hz: 7 %)
         self.replay = ReplayRecorder(self.sim, rate_hz=REPLAY_RATE_HZ)
 

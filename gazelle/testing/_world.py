@@ -47,12 +47,14 @@ class InProcessWorld:
     """
 
     def __init__(self, world: str | os.PathLike[str] | None = None, *, seed: int = 0) -> None:
-        from ..description import load
+        from ..description import World, load
         from ..sim import Simulation
         from ..worlds import default_world
 
         description = load(world).value if world is not None else default_world()
-        self.sim = Simulation(description, rtf=0, seed=seed)  # type: ignore[arg-type]
+        if not isinstance(description, World):
+            raise ValueError(f"{world}: not a world (it describes a {type(description).__name__.lower()})")
+        self.sim = Simulation(description, rtf=0, seed=seed)
         self.seed = seed
 
     # ------------------------------------------------------------------ building
@@ -67,12 +69,14 @@ class InProcessWorld:
         args: Mapping[str, str] | None = None,
     ) -> Any:
         """Spawn a robot or model file (URDF, xacro with ``args``, SDF) as ``name``; returns its entity."""
-        from ..description import Pose, load
+        from ..description import Model, Pose, load
 
         model = load(Path(file), args=dict(args or {})).value
+        if not isinstance(model, Model):
+            raise ValueError(f"{file}: not a robot or model (it describes a {type(model).__name__.lower()})")
         x, y, z = (float(v) for v in pose)
         orientation = (math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2))
-        return self.sim.spawn(model, name=name, pose=Pose((x, y, z), orientation), namespace=namespace)  # type: ignore[arg-type]
+        return self.sim.spawn(model, name=name, pose=Pose((x, y, z), orientation), namespace=namespace)
 
     # ------------------------------------------------------------------ topics
     def publish(self, topic: str, payload: Any) -> int:
@@ -132,7 +136,8 @@ class InProcessWorld:
         from ..description import quat_to_rpy
 
         p = self.sim.world.entity_state(name, link).pose
-        return (*(float(v) for v in p.position), float(quat_to_rpy(p.orientation)[2]))  # type: ignore[return-value]
+        x, y, z = p.position
+        return (float(x), float(y), float(z), float(quat_to_rpy(p.orientation)[2]))
 
     def state_digest(self) -> str:
         """SHA-256 of the whole physics state (time, positions, velocities, actuator states, warm start):

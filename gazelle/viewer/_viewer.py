@@ -582,7 +582,7 @@ class Viewer:
         entity, k = base, 2
         while entity in taken:
             entity, k = f"{base}_{k}", k + 1
-        pose = Pose.from_xyz_rpy(tuple(float(v) for v in xyz), (0.0, 0.0, float(yaw)))  # type: ignore[arg-type]
+        pose = Pose.from_xyz_rpy((float(xyz[0]), float(xyz[1]), float(xyz[2])), (0.0, 0.0, float(yaw)))
         return self.sim.spawn(model, name=entity, pose=pose).name
 
     def _spawn_selected(self) -> None:
@@ -591,11 +591,12 @@ class Viewer:
         if mf is None:
             self._spawn_text.value = "no model selected"
             return
+        x, y, z = self._spawn_xyz.value
         try:
             name = self.spawn_model(
                 str(mf.path),
                 name=self._spawn_name.value,
-                xyz=tuple(self._spawn_xyz.value),  # type: ignore[arg-type]
+                xyz=(float(x), float(y), float(z)),
                 yaw=math.radians(float(self._spawn_yaw.value)),
             )
         except Exception as err:
