@@ -263,4 +263,4 @@ def load_string(
 
         urdf = re.sub(rf'\s{LOCATION_ATTRIBUTE}="[^"]*"', "", expanded if fmt == "xacro" else text)
         value = dataclasses.replace(value, urdf=urdf)
-    return LoadResult(value, tuple(sink.items))  # type: ignore[arg-type]
+    return LoadResult(value, tuple(sink.items))

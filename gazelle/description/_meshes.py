@@ -22,7 +22,7 @@ def load_trimesh_in_metres(path: str):  # -> trimesh.Trimesh (trimesh is importe
     """A mesh file as one ``trimesh.Trimesh`` (textures kept), its vertices converted to metres from the unit
     the file declares (COLLADA's ``<unit meter="0.0254"/>``: TurtleBot3's arena wall and hexagons), as
     Gazebo reads them. The physics and the viewer both load through here, so both draw the same size."""
-    import trimesh  # type: ignore[import-not-found]
+    import trimesh
 
     mesh = trimesh.load(path, force="mesh", process=False)
     if getattr(mesh, "units", None) not in (None, "m", "meter", "meters"):

@@ -112,22 +112,24 @@ class _Reader:
                 if state is not None:
                     states.append((state, child))
             elif tag == "end_effector":
-                names = [self.attr(child, a) for a in ("name", "parent_link", "group")]
-                if None not in names:
+                name, parent_link, group = (self.attr(child, a) for a in ("name", "parent_link", "group"))
+                if name is not None and parent_link is not None and group is not None:
                     parent_group = (child.get("parent_group") or "").strip() or None
-                    effectors.append((EndEffector(names[0], names[1], names[2], parent_group), child))  # type: ignore[arg-type]
+                    effectors.append((EndEffector(name, parent_link, group, parent_group), child))
             elif tag == "virtual_joint":
-                vj = [self.attr(child, a) for a in ("name", "type", "parent_frame", "child_link")]
-                if None in vj:
+                vj_name, vj_type, frame, child_link = (
+                    self.attr(child, a) for a in ("name", "type", "parent_frame", "child_link")
+                )
+                if vj_name is None or vj_type is None or frame is None or child_link is None:
                     continue
-                if vj[1] not in _VIRTUAL_JOINT_TYPES:
+                if vj_type not in _VIRTUAL_JOINT_TYPES:
                     self.sink.error(
                         ErrorCode.JOINT_TYPE_INVALID,
-                        f"virtual_joint '{vj[0]}' has unknown type '{vj[1]}' (expected fixed, floating or planar)",
+                        f"virtual_joint '{vj_name}' has unknown type '{vj_type}' (expected fixed, floating or planar)",
                         self.loc(child),
                     )
                     continue
-                virtual_joints.append(VirtualJoint(*vj))  # type: ignore[arg-type]
+                virtual_joints.append(VirtualJoint(vj_name, vj_type, frame, child_link))
             elif tag == "passive_joint":
                 name = self.attr(child, "name")
                 if name is not None:
@@ -218,7 +220,7 @@ class _Reader:
                     self.loc(child),
                 )
                 continue
-            values.append((joint, numbers))  # type: ignore[arg-type]
+            values.append((joint, tuple(v for v in numbers if v is not None)))
         if name is None or group is None:
             return None
         return GroupState(name, group, tuple(values))

@@ -345,7 +345,7 @@ def _worker() -> Any:
 
     global _WORKER
     if _WORKER is None:
-        _WORKER = BoundedWorker(_expand_request)  # type: ignore[arg-type]
+        _WORKER = BoundedWorker(_expand_request)
     return _WORKER
 
 

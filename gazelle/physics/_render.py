@@ -38,7 +38,7 @@ def _gl_context(width: int, height: int):
             if name == "egl":
                 from mujoco.egl import GLContext
             else:
-                from mujoco.osmesa import GLContext  # type: ignore[no-redef]
+                from mujoco.osmesa import GLContext
             return GLContext(width, height)
         except Exception as err:  # a missing library raises ImportError, OSError or a GL error
             errors.append(f"{name}: {type(err).__name__}: {err}")

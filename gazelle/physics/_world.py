@@ -623,7 +623,7 @@ class PhysicsWorld:
         """Take back what :meth:`checkpoint_extras` gave, into a world rebuilt with the same entities:
         the model's parameters as they were at the checkpoint (gains changed at run time, static bodies
         moved), in the model and in its description (a later recompile keeps them)."""
-        saved: mujoco.MjModel = extras["model"]  # type: ignore[assignment]
+        saved: mujoco.MjModel = extras["model"]
         for name in dir(saved):
             if name.startswith("_"):
                 continue
@@ -641,12 +641,12 @@ class PhysicsWorld:
                     setattr(dst, field_name, getattr(src, field_name))
                 except (AttributeError, TypeError):
                     pass  # read-only or a nested struct
-        data = pickle.loads(extras["data"])  # type: ignore[arg-type]
+        data = pickle.loads(extras["data"])
         mujoco.mj_copyData(self.data, self.model, data)
-        self._overlap_steps = int(extras["overlap_steps"])  # type: ignore[call-overload]
+        self._overlap_steps = int(extras["overlap_steps"])
         self._deep = bool(extras["deep"])
         self._kinematics_stale = bool(extras["kinematics_stale"])
-        self._actuator_gains = dict(extras["actuator_gains"])  # type: ignore[call-overload]
+        self._actuator_gains = dict(extras["actuator_gains"])
         n_g, n_b = self.model.actuator_gainprm.shape[1], self.model.actuator_biasprm.shape[1]
         for aid in range(self.model.nu):
             act = self.spec.actuator(mujoco.mj_id2name(self.model, mujoco.mjtObj.mjOBJ_ACTUATOR, aid))

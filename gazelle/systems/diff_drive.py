@@ -464,7 +464,7 @@ def joint_axis_in_root(model: Model, joint_name: str) -> tuple[float, float, flo
         X_PC = up.origin * up.child_offset
         v = quat_rotate(X_PC.orientation, v)
         link = up.parent
-    return v  # type: ignore[return-value]
+    return v
 
 
 def wheel_direction_hint(model: Model, left: tuple[str, ...], right: tuple[str, ...]) -> str | None:

@@ -117,13 +117,13 @@ def guarded(policy: OriginPolicy) -> Iterator[None]:
     """Within this block, a websockets server started (by viser) checks every request with ``policy``."""
     global _pending
     with _LOCK:
-        ws_server.serve = _serve  # type: ignore[assignment]
+        ws_server.serve = _serve
         _pending = policy
         try:
             yield
         finally:
             _pending = None
-            ws_server.serve = _original_serve  # type: ignore[assignment]
+            ws_server.serve = _original_serve
 
 
 def allowed_origins(values: Sequence[str]) -> tuple[str, ...]:

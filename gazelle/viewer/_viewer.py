@@ -866,7 +866,7 @@ class Viewer:
         if tuple(self._camera_dd.options) != tuple(options):
             self._camera_dd.options = options  # pyright: ignore[reportAttributeAccessIssue]
             if key not in options:
-                self._camera_dd.value = NO_CAMERA  # pyright: ignore[reportAttributeAccessIssue]
+                self._camera_dd.value = NO_CAMERA
         if image is not None:
             self._camera_img.image = image
         return image

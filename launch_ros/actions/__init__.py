@@ -25,7 +25,7 @@ def _ros_state(context: LaunchContext) -> dict[str, Any]:
     state = context.launch_configurations.get(key)
     if state is None or not isinstance(state, dict):
         state = {"namespace": "", "params": [], "remaps": []}
-    return state  # type: ignore[return-value]
+    return state
 
 
 def _set_ros_state(context: LaunchContext, state: dict[str, Any]) -> None:

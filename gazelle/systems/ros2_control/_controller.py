@@ -82,7 +82,7 @@ class Controller:
             bool: isinstance(value, bool),
             str: isinstance(value, str),
             list: isinstance(value, list),
-        }.get(want, isinstance(value, want))  # type: ignore[arg-type]
+        }.get(want, isinstance(value, want))
         if not ok:
             raise ControlError(f"controller '{self.name}': parameter '{key}' is {value!r}, expected {_type_name(want)}")
         return float(value) if want is float else value  # type: ignore[return-value]
