@@ -209,7 +209,7 @@ def _gazebo_model_paths(share: Path) -> list[Path]:
         data = manifest.read_bytes()
         if b"gazebo_model_path" not in data:  # most packages: no XML parse
             return []
-        from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
+        from lxml import etree
 
         parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, huge_tree=False)
         root = etree.fromstring(data, parser)

@@ -34,7 +34,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import overload
 
-from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
+from lxml import etree
 
 from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
 from ._fuel import BUILTIN as FUEL_BUILTIN
@@ -1230,7 +1230,8 @@ class _Loader:
         if mu2 is None:
             mu2 = self.opt_number(bullet, "friction2", doc)
         bitmask = None
-        if contact is not None and _find(contact, "collide_bitmask") is not None:
+        bitmask_el = _find(contact, "collide_bitmask") if contact is not None else None
+        if contact is not None and bitmask_el is not None:
             raw = self.text(contact, "collide_bitmask") or ""
             try:
                 bitmask = int(raw, 0)
@@ -1238,7 +1239,7 @@ class _Loader:
                 self.sink.error(
                     ErrorCode.VALUE_INVALID,
                     f"<collide_bitmask> must be an integer, got {raw!r}",
-                    self.loc(_find(contact, "collide_bitmask"), doc),
+                    self.loc(bitmask_el, doc),
                 )
         without = _find(contact, "collide_without_contact") if contact is not None else None
         if without is not None and (without.text or "").strip().lower() in ("1", "true"):
@@ -1351,7 +1352,7 @@ class _Loader:
         for role, code in (("parent", ErrorCode.JOINT_PARENT_INVALID), ("child", ErrorCode.JOINT_CHILD_INVALID)):
             el = _find(element, role)
             ref = (el.text or "").strip() if el is not None else ""
-            if not ref:
+            if el is None or not ref:
                 self.sink.error(ErrorCode.ELEMENT_MISSING, f"joint '{name}' has no <{role}>", loc)
                 return
             where = self.loc(el, doc)

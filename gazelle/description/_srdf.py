@@ -14,7 +14,7 @@ reads top-level ones, but the author's intent is plain).
 
 from __future__ import annotations
 
-from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
+from lxml import etree
 
 from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
 from ._model import (

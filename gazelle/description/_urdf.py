@@ -20,7 +20,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TypeVar
 
-from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
+from lxml import etree
 
 from . import _inertia
 from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
@@ -949,7 +949,8 @@ def _check_attributes(root: etree._Element, reader: _Reader) -> None:
         tag = local_name(element)
         known = _ATTRIBUTES.get(tag)
         if known is not None:
-            for attr in element.attrib:
+            for raw in element.attrib:
+                attr = str(raw)
                 if attr != LOCATION_ATTRIBUTE and not attr.startswith("{") and attr not in known:
                     found.setdefault((tag, attr), []).append(element)
         walked = _WALKED.get(tag, frozenset())

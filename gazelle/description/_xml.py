@@ -19,7 +19,7 @@ import math
 import re
 from urllib.parse import quote, unquote
 
-from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
+from lxml import etree
 
 from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
 from ._model import ConfigElement

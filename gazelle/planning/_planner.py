@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
+from lxml import etree
 
 from ..description import ModelLoadError, ResourceResolver, Semantics, Severity, load_string
 
@@ -114,9 +114,11 @@ def _absolute_meshes(urdf: str, resolve: Callable[[str], str | None]) -> tuple[s
         if path is None:
             missing.append(uri)
             # a geometry that cannot be loaded is left out of the planner's model, said by the caller
-            holder = mesh.getparent().getparent() if mesh.getparent() is not None else None
-            if holder is not None and holder.getparent() is not None:
-                holder.getparent().remove(holder)
+            shape = mesh.getparent()
+            holder = shape.getparent() if shape is not None else None
+            owner = holder.getparent() if holder is not None else None
+            if holder is not None and owner is not None:
+                owner.remove(holder)
             continue
         mesh.set("filename", str(path))
     return etree.tostring(root, encoding="unicode"), missing

@@ -54,25 +54,29 @@ def semantics(srdf: str) -> Semantics:
 
 def group_joints(sem: Semantics, urdf: str, group: str) -> list[str]:
     """The movable joints of an SRDF group, in chain order (chains are walked in the URDF)."""
-    from lxml import etree  # pyright: ignore[reportAttributeAccessIssue]
+    from lxml import etree
 
     g = _group(sem, group)
     joints: list[str] = list(g.joints)
     if g.chains:
         root = etree.fromstring(urdf.encode())
-        by_child = {  # the robot's joints (not the <joint>s of <ros2_control> or <transmission>)
-            j.find("child").get("link"): j
-            for j in root.findall("joint")
-            if j.find("child") is not None and j.find("parent") is not None
-        }
+        # the robot's joints (not the <joint>s of <ros2_control> or <transmission>): child link -> (name,
+        # type, parent link)
+        by_child: dict[str, tuple[str, str, str]] = {}
+        for j in root.findall("joint"):
+            child, parent = j.find("child"), j.find("parent")
+            child_link = child.get("link") if child is not None else None
+            parent_link = parent.get("link") if parent is not None else None
+            if child_link and parent_link:
+                by_child[child_link] = (j.get("name") or "", j.get("type") or "", parent_link)
         for chain in g.chains:
             walk: list[str] = []
             link = chain.tip_link
             while link != chain.base_link and link in by_child:
-                joint = by_child[link]
-                if joint.get("type") not in ("fixed", "floating", "planar"):
-                    walk.append(joint.get("name"))
-                link = joint.find("parent").get("link")
+                joint_name, joint_type, parent_link = by_child[link]
+                if joint_type not in ("fixed", "floating", "planar") and joint_name:
+                    walk.append(joint_name)
+                link = parent_link
             joints += reversed(walk)
     for sub in g.subgroups:
         joints += group_joints(sem, urdf, sub)
