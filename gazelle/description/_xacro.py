@@ -314,7 +314,8 @@ def expand(
             return None
         if not _keeps_locations(doc):
             _strip_locations(doc)
-        return doc.documentElement.toxml()  # pyright: ignore[reportOptionalMemberAccess]
+        root = doc.documentElement
+        return root.toxml() if root is not None else None
 
 
 def _expand_request(request: dict) -> tuple[str | None, list[tuple[str, str, str, str | None, int | None]]]:

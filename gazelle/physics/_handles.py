@@ -41,10 +41,11 @@ class PerGeneration(Generic[T]):
 
     def get(self, world: PhysicsWorld) -> T:
         """The value for the world's current model, computed at most once per recompile."""
-        if self._generation != world.generation:
-            self._value = self._compute(world)
+        value = self._value
+        if self._generation != world.generation or value is None:
+            value = self._value = self._compute(world)
             self._generation = world.generation
-        return self._value  # type: ignore[return-value]
+        return value
 
 
 class ActuatorKind(enum.Enum):

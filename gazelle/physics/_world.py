@@ -753,7 +753,7 @@ class PhysicsWorld:
                         qadr.append(int(self.model.jnt_qposadr[jid]))
                         dadr.append(int(self.model.jnt_dofadr[jid]))
             self._held = (np.array(qadr), np.array(dadr)) if qadr else None
-        return self._held  # type: ignore[return-value]
+        return self._held if isinstance(self._held, tuple) else None
 
     def step(self, n: int = 1) -> int:
         """Take ``n`` physics steps with the actuators' commands held; returns the steps taken.

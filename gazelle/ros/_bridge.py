@@ -37,6 +37,7 @@ from rclpy.context import Context
 from rclpy.event_handler import PublisherEventCallbacks, SubscriptionEventCallbacks
 from rclpy.exceptions import InvalidHandle, InvalidTopicNameException
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, ShutdownException
+from rclpy.logging import get_logger
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 from rclpy.validate_full_topic_name import validate_full_topic_name
@@ -120,13 +121,15 @@ MODEL_STATES_QOS = QoSProfile(depth=1, history=HistoryPolicy.KEEP_LAST, reliabil
 def model_states_msg(states: list[tuple[str, EntityState]]) -> ModelStates:
     """gazebo_msgs/ModelStates of entity names and world states (see ``SimulationNode.entity_states``)."""
     msg = ModelStates()
-    for name, st in states:
-        msg.name.append(name)  # pyright: ignore[reportAttributeAccessIssue]
-        msg.pose.append(to_pose_msg(st.pose))  # pyright: ignore[reportAttributeAccessIssue]
+    twists = []
+    for _name, st in states:
         twist = Twist()
         twist.linear.x, twist.linear.y, twist.linear.z = st.linear_velocity
         twist.angular.x, twist.angular.y, twist.angular.z = st.angular_velocity
-        msg.twist.append(twist)  # pyright: ignore[reportAttributeAccessIssue]
+        twists.append(twist)
+    msg.name = [name for name, _st in states]
+    msg.pose = [to_pose_msg(st.pose) for _name, st in states]
+    msg.twist = twists
     return msg
 
 
@@ -144,7 +147,7 @@ class _RosLogHandler(logging.Handler):
     def emit(self, record: logging.LogRecord) -> None:
         """Forward one Python log record to the rclpy logger of the same name."""
         try:
-            logger = rclpy.logging.get_logger(record.name)  # pyright: ignore[reportAttributeAccessIssue]
+            logger = get_logger(record.name)
             level = self._LEVELS.get(record.levelno, "info")
             text = record.getMessage()
             if record.exc_info:
@@ -205,6 +208,9 @@ class _RosEndpoint:
 
 class SimulationNode(Node):
     """The simulation's ROS 2 node."""
+
+    simulation_interfaces: Any = None
+    """The simulation_interfaces services and action (``_simulation_interfaces.register`` sets it)."""
 
     def __init__(
         self,
@@ -298,7 +304,7 @@ class SimulationNode(Node):
             self._scene_publisher = ScenePublisher(self)
         except ImportError as err:
             self.get_logger().debug(f"no /gazelle/planning_scene_world: {err}")
-        sim.bus.add_listener(self)  # pyright: ignore[reportArgumentType]
+        sim.bus.add_listener(self)
         self.publish_clock(sim.world.time)
 
     # ------------------------------------------------------------------ clock
@@ -844,7 +850,7 @@ class SimulationNode(Node):
         self.sim.remove_step_listener(self._on_step_model_states)
         if self._scene_publisher is not None:
             self._scene_publisher.close()
-        self.sim.bus.remove_listener(self)  # pyright: ignore[reportArgumentType]
+        self.sim.bus.remove_listener(self)
         for ep in self.sim.bus.endpoints():
             sink = self._sinks.pop(id(ep), None)
             if sink is not None:
@@ -852,7 +858,7 @@ class SimulationNode(Node):
         # the simulate_steps action server holds the node's handle: left alive, a half-destroyed /gazelle
         # (its action, /rosout and type description only) stayed in the graph as long as the process
         # lived, and `ros2 node info /gazelle` described it instead of a running server's node
-        interfaces = getattr(self, "simulation_interfaces", None)
+        interfaces = self.simulation_interfaces
         if interfaces is not None:
             interfaces.destroy()
         super().destroy_node()

@@ -246,6 +246,7 @@ def to_contacts_msg(c: Contacts) -> ContactsState:
     msg = ContactsState()
     msg.header.stamp = to_time(c.stamp_sec)
     msg.header.frame_id = c.frame_id
+    states = []
     for pair in c.states:
         st = ContactState()
         st.info = f"{len(pair.depths)} contact point(s) of {pair.collision1} with {pair.collision2}"
@@ -258,7 +259,8 @@ def to_contacts_msg(c: Contacts) -> ContactsState:
         st.contact_positions = [_vec(p) for p in pair.positions]
         st.contact_normals = [_vec(n) for n in pair.normals]
         st.depths = [float(d) for d in pair.depths]
-        msg.states.append(st)  # pyright: ignore[reportAttributeAccessIssue]
+        states.append(st)
+    msg.states = states
     return msg
 
 

@@ -272,8 +272,12 @@ class SimulationInterfaces:
         self.sim = node.sim
         self.resolver = resolver or ResourceResolver(extra_paths=builtin_resource_paths())
         self.cb = ReentrantCallbackGroup()
+
         # a diverged entity is reported on /rosout (the sim thread calls this once per divergence)
-        self.sim.divergence_listeners.append(lambda _name, reason: node.get_logger().error(reason))  # pyright: ignore[reportArgumentType]
+        def report(_name: str, reason: str) -> None:
+            node.get_logger().error(reason)
+
+        self.sim.divergence_listeners.append(report)
         self.services = []
         for srv_type, name, fn in (
             (GetSimulatorFeatures, "get_simulator_features", self.get_simulator_features),
@@ -830,5 +834,5 @@ class SimulationInterfaces:
 def register(node: SimulationNode) -> SimulationInterfaces:
     """Advertise the simulation_interfaces services and action on ``node`` (under ``~/``)."""
     si = SimulationInterfaces(node)
-    node.simulation_interfaces = si  # type: ignore[attr-defined]
+    node.simulation_interfaces = si
     return si

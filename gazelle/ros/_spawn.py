@@ -86,7 +86,11 @@ def _fail(node: Node | None, message: str) -> int:
 def _read_topic(node: Node, executor: SingleThreadedExecutor, topic: str, timeout: float) -> str | None:
     got: list[str] = []
     qos = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
-    sub = node.create_subscription(String, topic, lambda m: got.append(m.data), qos)  # pyright: ignore[reportAttributeAccessIssue]
+
+    def keep(msg: String) -> None:
+        got.append(msg.data)
+
+    sub = node.create_subscription(String, topic, keep, qos)
     deadline = time.monotonic() + timeout
     while not got and time.monotonic() < deadline and executor.context.ok():
         executor.spin_once(timeout_sec=0.1)

@@ -528,11 +528,11 @@ class PluginNode:
 class BusListener(Protocol):
     """What listens to the bus (the ROS bridge): told of every endpoint added and removed."""
 
-    def endpoint_added(self, endpoint: Endpoint) -> None:
-        """A system declared ``endpoint`` (called on the declaring thread)."""
+    def endpoint_added(self, ep: Endpoint, /) -> None:
+        """A system declared endpoint ``ep`` (called on the declaring thread)."""
 
-    def endpoint_removed(self, endpoint: Endpoint) -> None:
-        """``endpoint`` went away with its entity."""
+    def endpoint_removed(self, ep: Endpoint, /) -> None:
+        """Endpoint ``ep`` went away with its entity."""
 
     def component_added(self, owner: str, component: Any) -> None:
         """A system announced something the ROS layer serves for it (a controller manager's node, an
