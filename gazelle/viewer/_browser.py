@@ -13,7 +13,10 @@ import tempfile
 import time
 from collections.abc import Iterator
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from playwright.sync_api import ViewportSize
 
 CHROMIUM_CANDIDATES = ("/usr/bin/chromium", "/usr/bin/chromium-browser")
 CHROMIUM_ARGS = (
@@ -26,7 +29,7 @@ CHROMIUM_ARGS = (
     "--disable-component-update",
     "--disable-sync",
 )
-VIEWPORT = {"width": 1280, "height": 800}
+VIEWPORT: ViewportSize = {"width": 1280, "height": 800}
 # runs before the page's own scripts (Playwright init script), so the render loop picks it up
 _RAF_CAP_JS = """(() => { const fps = %s; if (!(fps > 0)) return;
   const raf = window.requestAnimationFrame.bind(window);
@@ -85,7 +88,7 @@ def open_viewer_page(url: str, *, timeout_sec: float = 30.0, max_fps: float = 0.
             executable_path=exe,
             headless=True,
             args=list(CHROMIUM_ARGS),
-            viewport=VIEWPORT,  # pyright: ignore[reportArgumentType]
+            viewport=VIEWPORT,
         )
         try:
             page = ctx.pages[0] if ctx.pages else ctx.new_page()

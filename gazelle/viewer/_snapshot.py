@@ -249,8 +249,8 @@ def drive_first_robot(sim: Simulation, linear: float, angular: float) -> str | N
         return None
     owner = eps[0].owner
     for ep in eps:
-        if ep.owner == owner:
-            ep.callback(Twist((linear, 0.0, 0.0), (0.0, 0.0, angular)))  # pyright: ignore[reportOptionalCall]
+        if ep.owner == owner and ep.callback is not None:
+            ep.callback(Twist((linear, 0.0, 0.0), (0.0, 0.0, angular)))
     return owner
 
 
@@ -271,7 +271,7 @@ def run_record(
     sim = viewer = None
     try:
         url = attach
-        on_start = None  # pyright: ignore[reportAssignmentType]
+        on_start: Callable[[], None] | None = None
         if url is None:
             assert world is not None
             sim = Simulation(world, rtf=1.0)
@@ -282,9 +282,11 @@ def run_record(
             if drive is not None:
                 the_sim = sim
 
-                def on_start() -> None:  # drive once the browser shows the scene, so the video sees it start
+                def start_driving() -> None:  # drive once the browser shows the scene, so the video sees it start
                     who = drive_first_robot(the_sim, *drive)
                     print(f"gazelle: driving {who}" if who else "gazelle: no diff-drive robot to drive", flush=True)
+
+                on_start = start_driving
 
         path, n = record_video(url, out, seconds=seconds, fps=fps, on_start=on_start, panel=panel)
     except BrowserUnavailable as err:

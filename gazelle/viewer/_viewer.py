@@ -39,11 +39,13 @@ panel's rate while one is chosen.
 from __future__ import annotations
 
 import contextlib
+import functools
 import io
 import logging
 import math
 import threading
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -427,8 +429,9 @@ class Viewer:
             self._real_text = g.add_text("Real time", initial_value="0.0 s", disabled=True)
             self._rtf_text = g.add_text("RTF", initial_value="-", disabled=True)
         with g.add_folder("Entities"):
+            entity_options: list[str] = [NO_SELECTION]  # (str, not a literal: the options change)
             self._entity_dd = g.add_dropdown(
-                "Entity", options=[NO_SELECTION], initial_value=NO_SELECTION, hint="Or click an entity in the 3D view"
+                "Entity", options=entity_options, initial_value=NO_SELECTION, hint="Or click an entity in the 3D view"
             )
             self._pose_text = g.add_text("Pose", initial_value="", disabled=True)
             self._delete_btn = g.add_button("Delete entity", color="red")
@@ -446,7 +449,8 @@ class Viewer:
             )
             self._keys_html = g.add_html("")
         with g.add_folder("Spawn"):
-            self._model_dd = g.add_dropdown("Model", options=[NO_MODELS], initial_value=NO_MODELS)
+            model_options: list[str] = [NO_MODELS]
+            self._model_dd = g.add_dropdown("Model", options=model_options, initial_value=NO_MODELS)
             self._spawn_name = g.add_text("Name", initial_value="", hint="empty: the model's own name")
             self._spawn_xyz = g.add_vector3("Position", initial_value=(0.0, 0.0, 0.0), step=0.1)
             self._spawn_yaw = g.add_number("Yaw (deg)", initial_value=0.0, step=15.0)
@@ -478,8 +482,9 @@ class Viewer:
                 hint=f"The latest arm motion planned ({PLAN_TOPIC}): the tool's path (blue) and goal (axes)",
             )
         with g.add_folder("Camera"):
+            camera_options: list[str] = [NO_CAMERA]
             self._camera_dd = g.add_dropdown(
-                "Camera", options=[NO_CAMERA], initial_value=NO_CAMERA, hint="A camera sensor's image, live"
+                "Camera", options=camera_options, initial_value=NO_CAMERA, hint="A camera sensor's image, live"
             )
             self._camera_img = g.add_image(np.zeros((48, 64, 3), dtype=np.uint8), label="Image", format="jpeg")
 
@@ -494,18 +499,18 @@ class Viewer:
             (self._right, 0.0, -ANGULAR_STEP),
             (self._stop_btn, 0.0, 0.0),
         ):
-            btn.on_click(lambda _e, lin=lin, ang=ang: self.drive(lin, ang))  # pyright: ignore[reportArgumentType]
+            btn.on_click(functools.partial(self._drive_button, lin, ang))
         self._tf_box.on_update(lambda _e: self._set_overlays())
         self._col_box.on_update(lambda _e: self._set_overlays())
         self._trail_box.on_update(lambda _e: self._redraw_trail(force=True))
-        self._contact_box.on_update(lambda _e: self._update_contacts())  # pyright: ignore[reportArgumentType]
-        self._lidar_box.on_update(lambda _e: self._update_lidars())  # pyright: ignore[reportArgumentType]
+        self._contact_box.on_update(self._on_gui_event(self._update_contacts))
+        self._lidar_box.on_update(self._on_gui_event(self._update_lidars))
         self._plan_box.on_update(lambda _e: self._redraw_plan())
         self._keys_box.on_update(
             lambda _e: setattr(self._keys_html, "content", KEYS_HTML if self._keys_box.value else "")
         )
         self._spawn_btn.on_click(lambda _e: self._spawn_selected())
-        self._rescan_btn.on_click(lambda _e: self.rescan_models())  # pyright: ignore[reportArgumentType]
+        self._rescan_btn.on_click(self._on_gui_event(self.rescan_models))
         self.rescan_models()
 
     def _toggle_pause(self) -> None:
@@ -532,6 +537,18 @@ class Viewer:
             self.sim.delete(name)
         except Exception as err:
             _log.warning(f"viewer: cannot delete '{name}': {err}")
+
+    @staticmethod
+    def _on_gui_event(action: Callable[[], object]) -> Callable[[object], None]:
+        """A GUI callback that runs ``action`` (whatever it returns) for any event."""
+
+        def run(_event: object) -> None:
+            action()
+
+        return run
+
+    def _drive_button(self, linear: float, angular: float, _event: object) -> None:
+        self.drive(linear, angular)
 
     def drive(self, linear_x: float, angular_z: float, entity: str | None = None) -> int:
         """Publish a Twist to the cmd_vel subscriptions of ``entity`` (default: the selected one).
@@ -562,8 +579,8 @@ class Viewer:
         self._models = find_models()
         labels = [m.label for m in self._models] or [NO_MODELS]
         current = self._model_dd.value
-        self._model_dd.options = labels  # pyright: ignore[reportAttributeAccessIssue]
-        self._model_dd.value = current if current in labels else labels[0]  # pyright: ignore[reportAttributeAccessIssue]
+        self._model_dd.options = labels
+        self._model_dd.value = current if current in labels else labels[0]
         return self._models
 
     def spawn_model(
@@ -864,7 +881,7 @@ class Viewer:
         names, image = self.sim.call(lambda: self._camera_image(key), timeout=5.0)
         options = [NO_CAMERA, *names]
         if tuple(self._camera_dd.options) != tuple(options):
-            self._camera_dd.options = options  # pyright: ignore[reportAttributeAccessIssue]
+            self._camera_dd.options = options
             if key not in options:
                 self._camera_dd.value = NO_CAMERA
         if image is not None:
@@ -940,7 +957,7 @@ class Viewer:
         if tuple(self._entity_dd.options) != tuple(names):
             with self._lock:  # against a click selecting meanwhile (select() runs on viser's threads)
                 current = self._entity_dd.value
-                self._entity_dd.options = names  # pyright: ignore[reportAttributeAccessIssue]
+                self._entity_dd.options = names
                 self._entity_dd.value = current if current in names else NO_SELECTION
         self._last = snap
         self.frames += 1
