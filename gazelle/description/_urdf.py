@@ -18,7 +18,7 @@ import os
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import TypeVar
+from typing import Protocol, TypeVar
 
 from lxml import etree
 
@@ -125,6 +125,14 @@ _GAZEBO_COLORS: dict[str, tuple[float, float, float, float]] = {
 
 
 T = TypeVar("T")
+
+
+class _Named(Protocol):
+    @property
+    def name(self) -> str: ...
+
+
+D = TypeVar("D", bound=_Named)
 
 
 # --------------------------------------------------------------------------- drafts
@@ -368,7 +376,7 @@ class _Reader:
         return str(path)
 
     # ---- materials
-    def material(self, element: etree._Element, named: dict[str, Material]) -> Material | None:
+    def material(self, element: etree._Element, named: dict[str, Material]) -> Material:
         """A ``<material>`` element: inline colour/texture, or a reference to a named one."""
         name = element.get("name", "")
         color_el, texture_el = element.find("color"), element.find("texture")
@@ -615,7 +623,7 @@ class _Reader:
             name=name,
             type=stype,
             pose=pose,
-            update_rate_hz=rate if rate is not None else 0.0,  # pyright: ignore[reportArgumentType]
+            update_rate_hz=rate if rate is not None else 0.0,
             always_on=bool(always_on),
             topic=(element.findtext("topic") or "").strip(),
             config=to_config(element, self.source),
@@ -623,7 +631,7 @@ class _Reader:
             location=self.loc(element),
         )
 
-    def text_value(self, parent: etree._Element, tag: str, parse: Callable[[str | None], object]) -> object:
+    def text_value(self, parent: etree._Element, tag: str, parse: Callable[[str | None], T | None]) -> T | None:
         """The parsed text of child ``tag`` (VALUE_INVALID error when unparsable; None when absent)."""
         el = parent.find(tag)
         if el is None:
@@ -719,9 +727,9 @@ class _Reader:
         for child in child_elements(root):
             tag = local_name(child)
             if tag == "link":
-                self.add_unique(doc.links, self.link(child, doc.materials), "link", child)  # pyright: ignore[reportArgumentType]
+                self.add_unique(doc.links, self.link(child, doc.materials), "link", child)
             elif tag == "joint":
-                self.add_unique(doc.joints, self.joint(child), "joint", child)  # pyright: ignore[reportArgumentType]
+                self.add_unique(doc.joints, self.joint(child), "joint", child)
             elif tag == "gazebo":
                 gazebo_blocks.append(child)  # after all links and joints are known
             elif tag == "transmission":
@@ -839,14 +847,14 @@ class _Reader:
                         ErrorCode.DUPLICATE_NAME, f"material '{name}' is defined more than once; the first is used", el
                     )
                 continue
-            named[name] = self.material(el, named)  # pyright: ignore[reportArgumentType]
+            named[name] = self.material(el, named)
         return named
 
-    def add_unique(self, table: dict[str, object], item: object, what: str, element: etree._Element) -> None:
+    def add_unique(self, table: dict[str, D], item: D | None, what: str, element: etree._Element) -> None:
         """Add a named link/joint draft, reporting a DUPLICATE_NAME error for a repeat."""
         if item is None:
             return
-        name: str = item.name  # type: ignore[attr-defined]
+        name = item.name
         if name in table:
             first = getattr(table[name], "location", None)
             where = f" (first at {first})" if first is not None else ""

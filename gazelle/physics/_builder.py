@@ -546,8 +546,8 @@ def _add_joint_dofs(spec: mujoco.MjSpec, body: mujoco.MjsBody, joint: Joint, nam
         add(mujoco.mjtJoint.mjJNT_SLIDE, name + "#y", list(b), False)
         add(mujoco.mjtJoint.mjJNT_HINGE, name, list(n), False)
     elif t is JointType.FLOATING:
-        for i, ax in enumerate(([1, 0, 0], [0, 1, 0], [0, 0, 1])):
-            add(mujoco.mjtJoint.mjJNT_SLIDE, f"{name}#t{i}", ax, False)  # pyright: ignore[reportArgumentType]
+        for i, ax in enumerate(([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0])):
+            add(mujoco.mjtJoint.mjJNT_SLIDE, f"{name}#t{i}", ax, False)
         j = body.add_joint(name=name, type=mujoco.mjtJoint.mjJNT_BALL, pos=pos)
         names.append(j.name)
     elif t is JointType.FIXED:

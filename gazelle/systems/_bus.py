@@ -688,7 +688,8 @@ class Bus:
                 if not ep.is_publisher and ep.topic == topic and ep.msg_type == msg_type and ep.callback is not None
             ]
         for ep in targets:
-            ep.callback(payload)  # type: ignore[misc]
+            if ep.callback is not None:
+                ep.callback(payload)
         return len(targets)
 
 

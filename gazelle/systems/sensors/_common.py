@@ -224,7 +224,7 @@ def parse_plugin_config(ctx: SystemContext) -> SensorPluginConfig:
     log = ctx.logger
     ns, remaps = ros_block(cfg)
     raw_type = child_text(cfg, "output_type")
-    if raw_type is None and "laser" in ctx.plugin.filename.lower():  # type: ignore[union-attr]
+    if raw_type is None and ctx.plugin is not None and "laser" in ctx.plugin.filename.lower():
         raw_type = "sensor_msgs/LaserScan"  # ROS 1's gazebo_ros_laser publishes LaserScan
     return SensorPluginConfig(
         output_type=raw_type or "sensor_msgs/PointCloud2",

@@ -103,7 +103,8 @@ def parse_camera(sensor: Sensor, log: logging.Logger) -> CameraSpec:
     if fmt not in _ENCODINGS:
         log.warning(f"{where}sensor '{sensor.name}': image format '{fmt}' is not rendered; publishing rgb8 (R8G8B8)")
         fmt = "R8G8B8"
-    coeffs = tuple(parse_float(dist, t, 0.0, log) for t in ("k1", "k2", "p1", "p2", "k3"))
+    k1, k2, p1, p2, k3 = (parse_float(dist, t, 0.0, log) for t in ("k1", "k2", "p1", "p2", "k3"))
+    coeffs = (k1, k2, p1, p2, k3)
     if dist is not None and any(coeffs):
         log.warning(
             f"{where}sensor '{sensor.name}': <distortion> is published in CameraInfo but not applied to the image"
@@ -115,7 +116,7 @@ def parse_camera(sensor: Sensor, log: logging.Logger) -> CameraSpec:
         hfov,
         near,
         far,
-        coeffs,  # type: ignore[arg-type]
+        coeffs,
         parse_noise(cam.find("noise"), log, f"sensor '{sensor.name}'"),
     )
 
