@@ -195,7 +195,7 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
         print("2. robot_description <- xacro examples/simple_robot/simple_robot/robot.urdf.xacro", flush=True)
         qos = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
         pub = node.create_publisher(String, "robot_description", qos)
-        pub.publish(String(data=xacro.process_file(str(EXAMPLE / "robot.urdf.xacro")).toxml()))  # pyright: ignore[reportAttributeAccessIssue]
+        pub.publish(String(data=xacro.process_file(str(EXAMPLE / "robot.urdf.xacro")).toxml()))  # pyright: ignore[reportAttributeAccessIssue] - xacro.process_file returns a minidom Document, typed as None-able
         print("3. gazelle spawn -entity simple_robot -topic robot_description", flush=True)
         spawn = _Child("spawn", [*gazelle, "spawn", "-entity", "simple_robot", "-topic", "robot_description"], env)
         children.append(spawn)

@@ -263,7 +263,7 @@ class _Proxy:
             self._relay,
             host,
             port,
-            subprotocols=list(SUBPROTOCOLS),  # pyright: ignore[reportArgumentType]
+            subprotocols=list(SUBPROTOCOLS),  # pyright: ignore[reportArgumentType] - foxglove's binding declares a list of its own type for the subprotocols
             process_request=self.policy.check,
             max_size=MAX_CLIENT_FRAME,
             compression=None,

@@ -129,7 +129,7 @@ def run_bounded(
     """
     worker = BoundedWorker(lambda _request: fn(), memory_bytes=memory_bytes)
     try:
-        return worker.call({}, what=what, timeout_sec=timeout_sec, timeout_hint=timeout_hint)  # type: ignore[return-value]
+        return worker.call({}, what=what, timeout_sec=timeout_sec, timeout_hint=timeout_hint)  # type: ignore[return-value] - the worker returns what fn returned, typed Any across the process boundary
     finally:
         worker.close()
 
@@ -285,8 +285,10 @@ class BoundedWorker:
                         f"{what}: its helper process {how} without a result "
                         f"(memory limit {memory >> 20} MiB, GAZELLE_XACRO_MEMORY_MB)"
                     )
+        if reply is None:  # (each attempt that gets none raises above)
+            raise BoundExceeded(f"{what}: its helper process sent no result")
         try:
-            kind, value = json.loads(reply)  # pyright: ignore[reportArgumentType]
+            kind, value = json.loads(reply)
         except ValueError:
             raise BoundExceeded(f"{what} sent back a malformed result") from None
         if kind == "ok":

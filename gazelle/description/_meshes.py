@@ -26,7 +26,7 @@ def load_trimesh_in_metres(path: str):  # -> trimesh.Trimesh (trimesh is importe
 
     mesh = trimesh.load(path, force="mesh", process=False)
     if getattr(mesh, "units", None) not in (None, "m", "meter", "meters"):
-        mesh.convert_units("meters")  # pyright: ignore[reportAttributeAccessIssue]
+        mesh.convert_units("meters")  # pyright: ignore[reportAttributeAccessIssue] - trimesh.load returns Scene | Trimesh; a Trimesh here (force='mesh')
     return mesh
 
 
@@ -37,8 +37,8 @@ def _load(path: str, mtime_ns: int) -> tuple[npt.NDArray[np.float64], npt.NDArra
         mesh = load_trimesh_in_metres(path)
     except Exception as err:
         raise MeshReadError(f"cannot read '{os.path.basename(path)}': {err}") from err
-    vertices = np.asarray(mesh.vertices, dtype=np.float64)  # pyright: ignore[reportAttributeAccessIssue]
-    faces = np.asarray(mesh.faces, dtype=np.int32)  # pyright: ignore[reportAttributeAccessIssue]
+    vertices = np.asarray(mesh.vertices, dtype=np.float64)  # pyright: ignore[reportAttributeAccessIssue] - trimesh.load returns Scene | Trimesh; a Trimesh here (force='mesh')
+    faces = np.asarray(mesh.faces, dtype=np.int32)  # pyright: ignore[reportAttributeAccessIssue] - trimesh.load returns Scene | Trimesh; a Trimesh here (force='mesh')
     if len(vertices) == 0 or len(faces) == 0:
         raise MeshReadError(f"'{os.path.basename(path)}' has no triangles")
     vertices.setflags(write=False)
@@ -93,7 +93,7 @@ def _look(path: str, mtime_ns: int) -> MeshLook:
         c = np.asarray(colour, dtype=float)
         c = c / 255.0 if c.max() > 1.0 else c
         rgba = (float(c[0]), float(c[1]), float(c[2]), float(c[3]) if len(c) > 3 else 1.0)
-    if image is None or uv is None or len(uv) != len(mesh.vertices):  # pyright: ignore[reportAttributeAccessIssue]
+    if image is None or uv is None or len(uv) != len(mesh.vertices):  # pyright: ignore[reportAttributeAccessIssue] - trimesh.load returns Scene | Trimesh; a Trimesh here (force='mesh')
         return MeshLook(rgba=rgba)
     img = image.convert("RGB")
     if max(img.size) > MAX_TEXTURE_PX:

@@ -86,10 +86,10 @@ class _LineBuilder(expatbuilder.ExpatBuilderNS):
     def start_element_handler(self, name: str, attributes: list[str]) -> None:
         super().start_element_handler(name, attributes)
         node = self.curNode
-        line = int(self._parser.CurrentLineNumber)  # pyright: ignore[reportAttributeAccessIssue]
+        line = int(self._parser.CurrentLineNumber)  # pyright: ignore[reportAttributeAccessIssue] - expat's parser object, which minidom's stubs do not declare
         node.setUserData(_USER_DATA_KEY, (self._file, line), _COPY_ON_CLONE)
-        if not node.tagName.startswith("xacro:"):  # xacro checks its own tags' attributes  # pyright: ignore[reportAttributeAccessIssue]
-            node.setAttribute(LOCATION_ATTRIBUTE, encode_location(self._file, line))  # pyright: ignore[reportAttributeAccessIssue]
+        if not node.tagName.startswith("xacro:"):  # xacro checks its own tags' attributes  # pyright: ignore[reportAttributeAccessIssue] - minidom's stubs type nodes as Node, not Element
+            node.setAttribute(LOCATION_ATTRIBUTE, encode_location(self._file, line))  # pyright: ignore[reportAttributeAccessIssue] - minidom's stubs type nodes as Node, not Element
 
 
 def _parse_located(data: str | bytes, file: str) -> xml.dom.minidom.Document:
@@ -145,7 +145,7 @@ class _Tracker:
             except Exception as err:  # re-raised; only annotated with the innermost location
                 if getattr(err, "gazelle_location", None) is None:
                     with contextlib.suppress(AttributeError):
-                        err.gazelle_location = self.location()  # type: ignore[attr-defined]
+                        err.gazelle_location = self.location()  # type: ignore[attr-defined] - the location rides on whatever exception xacro raised, which declares no such field
                 raise
             self.stack.pop()
             self.last = self.stack[-1] if self.stack else None

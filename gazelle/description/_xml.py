@@ -181,10 +181,13 @@ def parse_floats(text: str | None, count: int | None = None) -> tuple[float, ...
     parts = text.split()
     if count is not None and len(parts) != count:
         return None
-    values = tuple(parse_float(p) for p in parts)
-    if any(v is None for v in values):
-        return None
-    return values  # type: ignore[return-value]
+    values: list[float] = []
+    for part in parts:
+        v = parse_float(part)
+        if v is None:
+            return None
+        values.append(v)
+    return tuple(values)
 
 
 def parse_bool(text: str | None) -> bool | None:

@@ -121,7 +121,7 @@ def _decompose(vertices: np.ndarray, faces: np.ndarray) -> list[list[list[float]
 
     coacd.set_log_level("error")
     parts = coacd.run_coacd(
-        coacd.Mesh(np.asarray(vertices, dtype=float), np.asarray(faces, dtype=np.int64)),  # pyright: ignore[reportArgumentType]
+        coacd.Mesh(np.asarray(vertices, dtype=float), np.asarray(faces, dtype=np.int64)),  # pyright: ignore[reportArgumentType] - coacd's binding declares list types; it takes numpy arrays
         threshold=COACD_THRESHOLD,
         max_convex_hull=COACD_MAX_PARTS,
         seed=0,
@@ -218,7 +218,7 @@ def _save_disk(path: Path, key: str, pieces: tuple[np.ndarray, ...]) -> None:
         fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
         with os.fdopen(fd, "wb") as f:
             arrays = {f"p{i}": p for i, p in enumerate(pieces)}
-            np.savez(f, key=np.asarray(key), version=np.asarray(_gazelle_version()), **arrays)  # pyright: ignore[reportArgumentType]
+            np.savez(f, key=np.asarray(key), version=np.asarray(_gazelle_version()), **arrays)  # pyright: ignore[reportArgumentType] - numpy's stub types **kwds of savez narrower than the arrays it takes
         os.replace(tmp, path)
     except OSError as err:  # a read-only home: decompose again next time
         _log.debug(f"cannot cache a convex decomposition in {path.parent}: {err}")

@@ -393,7 +393,7 @@ def _ray_runs(
         task = ray.remote(num_cpus=1, max_retries=1)(_ray_task)  # a dead worker's run goes again once
         blob = ray.put(Path(start).read_bytes()) if start is not None else None  # once, to every node
         refs = [
-            task.remote(source, str(path), name, spec, timeout, blob, artifacts)  # pyright: ignore[reportCallIssue]
+            task.remote(source, str(path), name, spec, timeout, blob, artifacts)  # pyright: ignore[reportCallIssue] - ray's remote functions are typed by a decorator pyright cannot follow
             for spec in todo
         ]
         specs = dict(zip(refs, todo, strict=True))

@@ -372,7 +372,7 @@ def plugin_parameters(plugin: Plugin) -> dict[str, ParamValue]:
         if len(vs) == 1:
             out[tag] = vs[0]
         elif len({type(v) for v in vs}) == 1:
-            out[tag] = vs  # type: ignore[assignment]
+            out[tag] = vs  # type: ignore[assignment] - a list of one element type, which ParamValue's union of list types cannot name generically
         else:
             out[tag] = [str(v) for v in vs]
     return out

@@ -29,7 +29,7 @@ def _ros_state(context: LaunchContext) -> dict[str, Any]:
 
 
 def _set_ros_state(context: LaunchContext, state: dict[str, Any]) -> None:
-    context.launch_configurations["__gazelle_launch_ros__"] = state  # type: ignore[assignment]
+    context.launch_configurations["__gazelle_launch_ros__"] = state  # type: ignore[assignment] - launch's configurations are typed str -> str; this key holds our state
 
 
 class PushRosNamespace(Action):

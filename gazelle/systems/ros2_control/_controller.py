@@ -85,7 +85,7 @@ class Controller:
         }.get(want, isinstance(value, want))
         if not ok:
             raise ControlError(f"controller '{self.name}': parameter '{key}' is {value!r}, expected {_type_name(want)}")
-        return float(value) if want is float else value  # type: ignore[return-value]
+        return float(value) if want is float else value  # type: ignore[return-value] - the value was checked against the default's type just above
 
     def float_list(self, key: str, default: list[float]) -> list[float]:
         """A list of numbers."""

@@ -702,7 +702,7 @@ class ControllerManager(System):
                         self._params_files[raw] = load_params(raw)
                     except ParamsError as err:
                         raise ControlError(str(err)) from None
-        self.overrides[name] = value  # type: ignore[assignment]
+        self.overrides[name] = value  # type: ignore[assignment] - a parameter set at run time is any YAML value; ParamValue is the declared subset
 
 
 def params_file_paths(value: object) -> list[str]:
