@@ -171,3 +171,18 @@ def test_the_bridge_converts_between_a_stamped_and_an_unstamped_type():
     plain.angular.z = 0.5
     assert converter(Twist, TwistStamped)(plain).twist.angular.z == 0.5
     assert converter(Twist, Imu) is None
+
+
+def test_a_cached_fuel_model_without_a_model_is_a_clear_error(monkeypatch, tmp_path: Path) -> None:
+    """A Fuel cache entry whose model.sdf holds no <model> is named in an error; it raised NameError ('path'
+    is only set for file includes) from inside the loader."""
+    from gazelle.description import ModelLoadError
+
+    cache = tmp_path / "cache"
+    model_dir = cache / "fuel.gazebosim.org" / "someone" / "models" / "empty thing" / "1"
+    model_dir.mkdir(parents=True)
+    (model_dir / "model.sdf").write_text('<sdf version="1.6"><world name="not_a_model"/></sdf>')
+    monkeypatch.setenv("HOME", str(tmp_path / "home"))
+    monkeypatch.setenv("GZ_FUEL_CACHE_PATH", str(cache))
+    with pytest.raises(ModelLoadError, match=r"holds no <model>"):
+        load_string(_fuel_world("someone/models/Empty Thing"))

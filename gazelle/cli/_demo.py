@@ -236,11 +236,10 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
         if rtf != 1.0:
             node_cmd += ["-p", "use_sim_time:=true"]
         recorder = None
+        stop_rec, rec_ready = threading.Event(), threading.Event()
+        rec_result: list[object] = []
         if record and url:
             from ..viewer import record_video
-
-            stop_rec, rec_ready = threading.Event(), threading.Event()
-            rec_result: list[object] = []
 
             def rec() -> None:
                 try:

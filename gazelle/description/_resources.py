@@ -202,6 +202,8 @@ def _exports(prefixes: str, stamp: tuple[float, ...]) -> tuple[Path, ...]:
 def _gazebo_model_paths(share: Path) -> list[Path]:
     """The ``<export><gazebo_ros gazebo_model_path="${prefix}/models"/>`` folders of the package at ``share``
     (``${prefix}``: the package's share folder), those inside the package only."""
+    from lxml import etree
+
     manifest = share / "package.xml"
     try:
         if not manifest.is_file() or manifest.stat().st_size > 1 << 20:
@@ -209,8 +211,6 @@ def _gazebo_model_paths(share: Path) -> list[Path]:
         data = manifest.read_bytes()
         if b"gazebo_model_path" not in data:  # most packages: no XML parse
             return []
-        from lxml import etree
-
         parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, huge_tree=False)
         root = etree.fromstring(data, parser)
     except (OSError, ValueError, etree.XMLSyntaxError):

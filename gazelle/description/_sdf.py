@@ -705,7 +705,7 @@ class _Loader:
                 location=loc,
             )
         if model_el is None:
-            self.sink.error(ErrorCode.ELEMENT_MISSING, f"included file {path} holds no <model>", loc)
+            self.sink.error(ErrorCode.ELEMENT_MISSING, f"included file {source} holds no <model>", loc)
             return None
         built = self.model(model_el, inner_doc, depth + 1)
         if built is None:
