@@ -38,7 +38,7 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 sys.path.insert(0, str(REPO / "tests"))
 
-from _paths import REAL  # noqa: E402
+from _r6bot import JOINTS, R6BOT, URDF, manager_of  # noqa: E402
 
 # a private ROS graph on this host only, before anything imports rclpy
 os.environ.setdefault("ROS_DOMAIN_ID", str(os.getpid() % 100 + 1))
@@ -63,24 +63,6 @@ while not select.select([sys.stdin], [], [], 0)[0]:  # until the parent closes o
 for _ in range(100):  # what is still in flight
     rclpy.spin_once(node, timeout_sec=0.01)
 print(n[0], flush=True)
-"""
-
-R6BOT = REAL / "ros2_control_r6bot"
-URDF = R6BOT / "_xacro_expanded" / "r6bot.urdf"
-JOINTS = tuple(f"joint_{i}" for i in range(1, 7))
-YAML = """
-controller_manager:
-  ros__parameters:
-    update_rate: 1000
-jsb:
-  ros__parameters:
-    type: joint_state_broadcaster/JointStateBroadcaster
-jtc:
-  ros__parameters:
-    type: joint_trajectory_controller/JointTrajectoryController
-    joints: [joint_1, joint_2, joint_3, joint_4, joint_5, joint_6]
-    command_interfaces: [position]
-    state_interfaces: [position, velocity]
 """
 
 
@@ -128,7 +110,6 @@ def make(kind: str, sink: str = "message", blocks: bool = True):
     ``blocks``: the manager may run its cycles in blocks (else every cycle in Python, as before issue 29)."""
     from gazelle.description import load
     from gazelle.sim import Simulation
-    from gazelle.systems.ros2_control import ControllerManager, parse_params
     from gazelle.worlds import default_world
 
     model = load(URDF).value
@@ -138,15 +119,8 @@ def make(kind: str, sink: str = "message", blocks: bool = True):
     entity = sim.spawn(model, name="r6bot")
     if kind == "none":
         return sim, None
-    cm = next(s for s in entity.systems if isinstance(s, ControllerManager))
-    cm.blocks_allowed = blocks
-    cm.files.append(parse_params(YAML))
-    cm.update_rate = 1000
+    cm = manager_of(entity, blocks=blocks, controllers=("jsb", "jtc") if kind == "jtc" else ())
     if kind == "jtc":
-        for name in ("jsb", "jtc"):
-            cm.load_controller(name)
-            cm.configure_controller(name)
-        cm.switch_controller(["jsb", "jtc"], [])
         for ep in sim.bus.endpoints():
             if ep.topic != "/joint_states":
                 continue
@@ -324,7 +298,7 @@ def arms_at_real_time(count: int, seconds: float, blocks: bool = True) -> tuple[
     from gazelle.description import Pose, load
     from gazelle.ros import RosBridge
     from gazelle.sim import Simulation
-    from gazelle.systems.ros2_control import ControllerManager, TrajectoryGoal, parse_params
+    from gazelle.systems.ros2_control import TrajectoryGoal
     from gazelle.worlds import default_world
 
     model = load(URDF).value
@@ -332,14 +306,7 @@ def arms_at_real_time(count: int, seconds: float, blocks: bool = True) -> tuple[
     managers, controllers = [], []
     for i in range(count):
         entity = sim.spawn(model, name=f"r{i}", namespace=f"r{i}", pose=Pose((2.0 * i, 0.0, 0.0)))
-        cm = next(s for s in entity.systems if isinstance(s, ControllerManager))
-        cm.blocks_allowed = blocks
-        cm.files.append(parse_params(YAML))
-        cm.update_rate = 1000
-        for name in ("jsb", "jtc"):
-            cm.load_controller(name)
-            cm.configure_controller(name)
-        cm.switch_controller(["jsb", "jtc"], [])
+        cm = manager_of(entity, blocks=blocks)
         managers.append(cm)
         controllers.append(cm.controllers["jtc"].controller)
     sim.step(200)

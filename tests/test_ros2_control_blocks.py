@@ -15,25 +15,7 @@ import math
 
 import numpy as np
 import pytest
-from _paths import REAL
-
-R6BOT = REAL / "ros2_control_r6bot"
-URDF = R6BOT / "_xacro_expanded" / "r6bot.urdf"
-JOINTS = tuple(f"joint_{i}" for i in range(1, 7))
-YAML = """
-controller_manager:
-  ros__parameters:
-    update_rate: 1000
-jsb:
-  ros__parameters:
-    type: joint_state_broadcaster/JointStateBroadcaster
-jtc:
-  ros__parameters:
-    type: joint_trajectory_controller/JointTrajectoryController
-    joints: [joint_1, joint_2, joint_3, joint_4, joint_5, joint_6]
-    command_interfaces: [position]
-    state_interfaces: [position, velocity]
-"""
+from _r6bot import JOINTS, R6BOT, URDF, arm
 
 
 @pytest.fixture(autouse=True)
@@ -42,21 +24,7 @@ def _r6bot_resources(monkeypatch):
 
 
 def _arm(blocks: bool):
-    from gazelle.description import load
-    from gazelle.sim import Simulation
-    from gazelle.systems.ros2_control import ControllerManager, parse_params
-    from gazelle.worlds import default_world
-
-    sim = Simulation(default_world(), rtf=0)
-    entity = sim.spawn(load(URDF).value, name="r6bot")
-    cm = next(s for s in entity.systems if isinstance(s, ControllerManager))
-    cm.blocks_allowed = blocks
-    cm.files.append(parse_params(YAML))
-    cm.update_rate = 1000
-    for name in ("jsb", "jtc"):
-        cm.load_controller(name)
-        cm.configure_controller(name)
-    cm.switch_controller(["jsb", "jtc"], [])
+    sim, cm = arm(blocks=blocks)
     heard: list = []
     for ep in sim.bus.endpoints():
         if ep.topic == "/joint_states":

@@ -22,6 +22,7 @@ import math
 import threading
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -117,35 +118,14 @@ class _Segmented:
             return [a + vi * s for a, vi in zip(p0, v, strict=True)], v, [0.0] * n
         v0, v1 = self.vel[k], self.vel[k + 1]
         if self.acc is None:
-            out_p, out_v, out_a = [], [], []
-            T2, s3 = T * T, s * s * s
-            for a, b, va, vb in zip(p0, p1, v0, v1, strict=True):
-                c2 = (3 * (b - a) - (2 * va + vb) * T) / T2
-                c3 = (2 * (a - b) + (va + vb) * T) / (T2 * T)
-                out_p.append(a + va * s + c2 * s * s + c3 * s3)
-                out_v.append(va + 2 * c2 * s + 3 * c3 * s * s)
-                out_a.append(2 * c2 + 6 * c3 * s)
-            return out_p, out_v, out_a
-        a0s, a1s = self.acc[k], self.acc[k + 1]
-        out_p, out_v, out_a = [], [], []
-        T3 = T * T * T
-        T4, s2 = T3 * T, s * s
-        T5, s3 = T4 * T, s2 * s
-        s4 = s3 * s
-        s5 = s4 * s
-        for a, b, va, vb, aa, ab in zip(p0, p1, v0, v1, a0s, a1s, strict=True):
-            # quintic with position, velocity and acceleration at both ends
-            c0, c1, c2 = a, va, aa / 2.0
-            h = b - a - va * T - aa * T * T / 2.0
-            dv = vb - va - aa * T
-            da = ab - aa
-            c3 = (10 * h - 4 * dv * T + da * T * T / 2.0) / T3
-            c4 = (-15 * h + 7 * dv * T - da * T * T) / T4
-            c5 = (6 * h - 3 * dv * T + da * T * T / 2.0) / T5
-            out_p.append(c0 + c1 * s + c2 * s2 + c3 * s3 + c4 * s4 + c5 * s5)
-            out_v.append(c1 + 2 * c2 * s + 3 * c3 * s2 + 4 * c4 * s3 + 5 * c5 * s4)
-            out_a.append(2 * c2 + 6 * c3 * s + 12 * c4 * s2 + 20 * c5 * s3)
-        return out_p, out_v, out_a
+            rows = [_cubic(a, b, va, vb, T, s) for a, b, va, vb in zip(p0, p1, v0, v1, strict=True)]
+        else:
+            a0s, a1s = self.acc[k], self.acc[k + 1]
+            rows = [
+                _quintic(a, b, va, vb, aa, ab, T, s)
+                for a, b, va, vb, aa, ab in zip(p0, p1, v0, v1, a0s, a1s, strict=True)
+            ]
+        return [r[0] for r in rows], [r[1] for r in rows], [r[2] for r in rows]
 
     def sample_many(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """:meth:`sample` at each of the times ``t`` at once (rows), with the same arithmetic in the same
@@ -166,36 +146,46 @@ class _Segmented:
             pos, vel, acc = p0 + v * s, v, zeros.copy()
         else:
             V = np.asarray(self.vel, dtype=np.float64)
-            va, vb = V[k], V[k + 1]
             if self.acc is None:
-                T2, s3 = T * T, s * s * s
-                c2 = (3 * (p1 - p0) - (2 * va + vb) * T) / T2
-                c3 = (2 * (p0 - p1) + (va + vb) * T) / (T2 * T)
-                pos = p0 + va * s + c2 * s * s + c3 * s3
-                vel = va + 2 * c2 * s + 3 * c3 * s * s
-                acc = 2 * c2 + 6 * c3 * s
+                pos, vel, acc = _cubic(p0, P[k + 1], V[k], V[k + 1], T, s)
             else:
                 A = np.asarray(self.acc, dtype=np.float64)
-                aa, ab = A[k], A[k + 1]
-                T3 = T * T * T
-                T4, s2 = T3 * T, s * s
-                T5, s3 = T4 * T, s2 * s
-                s4 = s3 * s
-                s5 = s4 * s
-                c0, c1, c2 = p0, va, aa / 2.0
-                h = p1 - p0 - va * T - aa * T * T / 2.0
-                dv = vb - va - aa * T
-                da = ab - aa
-                c3 = (10 * h - 4 * dv * T + da * T * T / 2.0) / T3
-                c4 = (-15 * h + 7 * dv * T - da * T * T) / T4
-                c5 = (6 * h - 3 * dv * T + da * T * T / 2.0) / T5
-                pos = c0 + c1 * s + c2 * s2 + c3 * s3 + c4 * s4 + c5 * s5
-                vel = c1 + 2 * c2 * s + 3 * c3 * s2 + 4 * c4 * s3 + 5 * c5 * s4
-                acc = 2 * c2 + 6 * c3 * s + 12 * c4 * s2 + 20 * c5 * s3
+                pos, vel, acc = _quintic(p0, P[k + 1], V[k], V[k + 1], A[k], A[k + 1], T, s)
         for rows, row in ((t <= times[0], P[0]), (t >= times[-1], P[-1])):
             if rows.any():
                 pos[rows], vel[rows], acc[rows] = row, 0.0, 0.0
         return pos, vel, acc
+
+
+def _cubic(a: Any, b: Any, va: Any, vb: Any, T: Any, s: Any) -> tuple[Any, Any, Any]:
+    """Position, velocity and acceleration at ``s`` into a segment of length ``T`` of the cubic with positions
+    ``a``, ``b`` and velocities ``va``, ``vb`` at its ends. Floats (one joint) or numpy arrays (every joint at
+    every cycle of a planned block): the same operations in the same order, so the same roundings."""
+    T2, s3 = T * T, s * s * s
+    c2 = (3 * (b - a) - (2 * va + vb) * T) / T2
+    c3 = (2 * (a - b) + (va + vb) * T) / (T2 * T)
+    return a + va * s + c2 * s * s + c3 * s3, va + 2 * c2 * s + 3 * c3 * s * s, 2 * c2 + 6 * c3 * s
+
+
+def _quintic(a: Any, b: Any, va: Any, vb: Any, aa: Any, ab: Any, T: Any, s: Any) -> tuple[Any, Any, Any]:
+    """As :func:`_cubic`, the quintic with position, velocity and acceleration given at both ends."""
+    T3 = T * T * T
+    T4, s2 = T3 * T, s * s
+    T5, s3 = T4 * T, s2 * s
+    s4 = s3 * s
+    s5 = s4 * s
+    c0, c1, c2 = a, va, aa / 2.0
+    h = b - a - va * T - aa * T * T / 2.0
+    dv = vb - va - aa * T
+    da = ab - aa
+    c3 = (10 * h - 4 * dv * T + da * T * T / 2.0) / T3
+    c4 = (-15 * h + 7 * dv * T - da * T * T) / T4
+    c5 = (6 * h - 3 * dv * T + da * T * T / 2.0) / T5
+    return (
+        c0 + c1 * s + c2 * s2 + c3 * s3 + c4 * s4 + c5 * s5,
+        c1 + 2 * c2 * s + 3 * c3 * s2 + 4 * c4 * s3 + 5 * c5 * s4,
+        2 * c2 + 6 * c3 * s + 12 * c4 * s2 + 20 * c5 * s3,
+    )
 
 
 class JointTrajectoryController(Controller):
