@@ -504,19 +504,6 @@ def test_fuzz_only_model_load_error_escapes():
     assert runs > 100
 
 
-@needs_real
-def test_report_turtlebot3_load_time(capsys):
-    res = resolver(TB3 / "models")
-    path = TB3 / "models/turtlebot3_burger/model.sdf"
-    load(path, resolver=res)
-    start = time.perf_counter()
-    for _ in range(20):
-        load(path, resolver=res)
-    per_load_ms = (time.perf_counter() - start) / 20 * 1000
-    with capsys.disabled():
-        print(f"\nTurtleBot3 burger model.sdf load: {per_load_ms:.2f} ms")
-
-
 def test_collide_without_contact_false_is_read_silently_and_true_collides_with_nothing():
     """Issue 26: a house world of gz-sim's printed 54 `<collide_without_contact>` warnings for its default
     (false), one a model file. False is what gazelle does: silent. True (a contact-only shape in gz-sim)

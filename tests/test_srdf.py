@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import time
 from pathlib import Path
 
 import pytest
@@ -125,15 +124,3 @@ def test_invalid_srdf(name, line, code, message):
     with pytest.raises(ModelLoadError) as info:
         load(DATA / name)
     assert [d.format() for d in info.value.diagnostics] == [f"{DATA / name}:{line}: error: [{code}] {message}"]
-
-
-@needs_real
-def test_report_panda_srdf_load_time(capsys):
-    path = REAL / "moveit_panda/moveit_resources_panda_moveit_config/config/panda.srdf"
-    load(path)
-    start = time.perf_counter()
-    for _ in range(50):
-        load(path)
-    per_load_ms = (time.perf_counter() - start) / 50 * 1000
-    with capsys.disabled():
-        print(f"\nPanda panda.srdf load: {per_load_ms:.2f} ms")
