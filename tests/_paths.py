@@ -8,6 +8,8 @@ from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
 SEED_XACRO = REPO / "examples" / "simple_robot" / "simple_robot" / "robot.urdf.xacro"
+ARTIFACTS = REPO / "out" / "viewer"
+"""Where the viewer tests keep what a person would look at (snapshots, videos) for a failing run."""
 BOX = (
     '<?xml version="1.0"?><sdf version="1.9"><model name="box"><link name="link">'
     "<inertial><mass>1.0</mass><inertia><ixx>0.0067</ixx><iyy>0.0067</iyy><izz>0.0067</izz></inertia></inertial>"

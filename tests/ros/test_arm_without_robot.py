@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import subprocess
 
-from .conftest import GAZELLE, start
+from ._harness import GAZELLE, start
 
 
 def test_gazelle_arm_against_a_move_group_without_a_robot_is_one_clear_line() -> None:

@@ -8,7 +8,7 @@ import pytest
 from gazebo_msgs.srv import DeleteEntity, GetModelList, SpawnEntity
 from rosgraph_msgs.msg import Clock
 
-from .conftest import GAZELLE, REPO, SEED_XACRO, start, wait_for, xacro_to_urdf
+from ._harness import GAZELLE, REPO, SEED_XACRO, start, wait_for, xacro_to_urdf
 
 MISSING_PARENT = """<?xml version="1.0"?>
 <robot name="broken">

@@ -22,7 +22,7 @@ import pytest
 from nav_msgs.msg import Odometry
 from tf2_msgs.msg import TFMessage
 
-from .conftest import REPO, Proc, wait_for
+from ._harness import REPO, Proc, wait_for
 
 VENV_ACTIVATE = Path(sys.prefix) / "bin" / "activate"
 

@@ -20,7 +20,7 @@ from rosgraph_msgs.msg import Clock
 from simulation_interfaces.msg import EntityFilters, Result
 from simulation_interfaces.srv import GetEntitiesStates
 
-from .conftest import REPO, start, wait_for
+from ._harness import REPO, start, wait_for
 
 EXAMPLE = REPO / "examples" / "chessboard"
 SCRIPTS = {"classic": EXAMPLE / "spawn_chessboard.py", "batch": EXAMPLE / "spawn_chessboard_batch.py"}

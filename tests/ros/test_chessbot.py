@@ -25,7 +25,7 @@ import pytest
 from _paths import REAL as FIXTURES
 from _paths import REPO
 
-from .conftest import GAZELLE, RosClient, start, wait_for
+from ._harness import GAZELLE, RosClient, start, wait_for
 
 pytestmark = pytest.mark.slow
 

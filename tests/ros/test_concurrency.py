@@ -10,7 +10,7 @@ from geometry_msgs.msg import PoseStamped
 from simulation_interfaces.msg import Result
 from simulation_interfaces.srv import DeleteEntity, GetEntities, GetEntityState, SpawnEntity
 
-from .conftest import RosClient
+from ._harness import RosClient
 
 pytestmark = [pytest.mark.ros, pytest.mark.serial]  # load tests: run alone (./test.sh)
 

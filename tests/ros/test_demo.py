@@ -18,7 +18,7 @@ from _pixels import project, rgb_of, trail_mask
 
 from gazelle.viewer._browser import find_chromium
 
-from .conftest import GAZELLE, REPO
+from ._harness import GAZELLE, REPO
 
 pytestmark = pytest.mark.serial  # real time: run alone (./test.sh)
 

@@ -8,7 +8,7 @@ import sys
 
 import pytest
 
-from .conftest import GAZELLE, start
+from ._harness import GAZELLE, start
 
 pytestmark = pytest.mark.ros
 

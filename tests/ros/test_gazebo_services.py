@@ -11,7 +11,7 @@ from gazebo_msgs.srv import DeleteEntity, GetEntityState, GetModelList, SetEntit
 from rosgraph_msgs.msg import Clock
 from std_srvs.srv import Empty
 
-from .conftest import wait_for
+from ._harness import wait_for
 
 BOX = """<sdf version="1.9"><model name="box"><link name="body">
   <inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>

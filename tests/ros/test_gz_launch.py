@@ -15,8 +15,8 @@ import pytest
 from gazebo_msgs.srv import GetModelState
 from sensor_msgs.msg import JointState, LaserScan
 
-from .conftest import GAZELLE as GAZELLE_CMD
-from .conftest import REPO, SEED_XACRO, start, wait_for, xacro_to_urdf
+from ._harness import GAZELLE as GAZELLE_CMD
+from ._harness import REPO, SEED_XACRO, start, wait_for, xacro_to_urdf
 from .test_turtlebot3 import TB3
 
 ROS2 = str(Path(sys.prefix) / "bin" / "ros2")

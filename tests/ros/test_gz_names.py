@@ -11,7 +11,7 @@ import pytest
 from std_msgs.msg import Float64
 from test_systems import ARM
 
-from .conftest import wait_for
+from ._harness import wait_for
 
 pytestmark = pytest.mark.ros
 

@@ -9,7 +9,7 @@ from pathlib import Path
 
 from gazelle.cli._gzserver import gzserver_args
 
-from .conftest import start
+from ._harness import start
 
 
 def test_gzserver_options_map_to_gazelle_sim(monkeypatch) -> None:

@@ -20,7 +20,7 @@ from simulation_interfaces.srv import GetEntities
 from websockets.exceptions import ConnectionClosed, InvalidMessage
 from websockets.sync.client import connect
 
-from .conftest import GAZELLE, start
+from ._harness import GAZELLE, start
 
 DIFFBOT_URDF = REAL / "ros2_control_diffbot" / "_xacro_expanded" / "diffbot.urdf"
 PROTOCOL = "foxglove.sdk.v1"

@@ -31,7 +31,7 @@ from rclpy.action import ActionClient
 from sensor_msgs.msg import JointState
 from trajectory_msgs.msg import JointTrajectoryPoint
 
-from .conftest import GAZELLE, RosClient, start, wait_for
+from ._harness import GAZELLE, RosClient, start, wait_for
 
 pytestmark = pytest.mark.slow
 

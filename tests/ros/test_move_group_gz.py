@@ -12,7 +12,7 @@ import pytest
 from _paths import REPO
 from moveit_msgs.msg import MoveItErrorCodes
 
-from .conftest import GAZELLE, RosClient, start, wait_for
+from ._harness import GAZELLE, RosClient, start, wait_for
 from .test_move_group import PANDA, Panda, _group_states, start_move_group
 
 pytestmark = pytest.mark.slow

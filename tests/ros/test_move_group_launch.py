@@ -16,7 +16,7 @@ from builtin_interfaces.msg import Duration
 from moveit_msgs.msg import MoveItErrorCodes
 from moveit_msgs.srv import GetMotionPlan, GetPositionIK
 
-from .conftest import RosClient, start
+from ._harness import RosClient, start
 
 pytestmark = pytest.mark.slow
 

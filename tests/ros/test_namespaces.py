@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 from nav_msgs.msg import Odometry
 
-from .conftest import GAZELLE, SEED_XACRO, SQUARE_NODE, start, wait_for, yaw_of
+from ._harness import GAZELLE, SEED_XACRO, SQUARE_NODE, start, wait_for, yaw_of
 
 LISTENER = Path(__file__).with_name("tf_listener.py")
 ROBOTS = {"r1": 0.0, "r2": 1.2, "r3": 2.4}  # namespace -> spawn y

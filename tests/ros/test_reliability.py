@@ -13,7 +13,7 @@ import time
 import pytest
 from gazebo_msgs.srv import DeleteEntity, GetModelList, SpawnEntity
 
-from .conftest import SEED_XACRO, wait_for, xacro_to_urdf
+from ._harness import SEED_XACRO, wait_for, xacro_to_urdf
 
 pytestmark = [pytest.mark.ros, pytest.mark.serial]  # load tests: run alone (./test.sh)
 
@@ -48,7 +48,7 @@ def test_concurrent_spawn_and_delete_get_a_reply_each_and_leak_nothing(sim_facto
         '<sdf version="1.9"><model name="b"><link name="l"><inertial><mass>1</mass></inertial>'
         '<collision name="c"><geometry><box><size>0.1 0.1 0.1</size></box></geometry></collision></link></model></sdf>'
     )
-    from .conftest import RosClient
+    from ._harness import RosClient
 
     errors: list[str] = []
     alive: dict[str, bool] = {}
@@ -139,7 +139,7 @@ def test_a_signal_stops_a_busy_server_within_3_s(ros_client, signum):
 
     from test_failed_spawns import chain
 
-    from .conftest import GAZELLE, start
+    from ._harness import GAZELLE, start
 
     proc = start([*GAZELLE, "sim", "--no-viewer", "--rtf", "0"], "gazelle sim")
     proc.wait_line("gazelle: ready", timeout=60)

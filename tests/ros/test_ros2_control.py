@@ -23,7 +23,7 @@ from rclpy.action import ActionClient
 from sensor_msgs.msg import JointState
 from trajectory_msgs.msg import JointTrajectoryPoint
 
-from .conftest import GAZELLE, start, wait_for
+from ._harness import GAZELLE, start, wait_for
 
 DIFFBOT = FIXTURES / "ros2_control_diffbot"
 DIFFBOT_URDF = DIFFBOT / "_xacro_expanded" / "diffbot.urdf"

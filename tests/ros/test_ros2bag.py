@@ -20,7 +20,7 @@ from rclpy.serialization import deserialize_message
 from websockets.exceptions import InvalidStatus
 from websockets.sync.client import connect
 
-from .conftest import GAZELLE, SEED_XACRO, start, wait_for
+from ._harness import GAZELLE, SEED_XACRO, start, wait_for
 
 ROS2 = str(Path(sys.prefix) / "bin" / "ros2")
 LISTENER = str(Path(__file__).with_name("odom_listener.py"))

@@ -13,7 +13,7 @@ import pytest
 import yaml
 from rosgraph_msgs.msg import Clock
 
-from .conftest import GAZELLE, SEED_XACRO, start, wait_for
+from ._harness import GAZELLE, SEED_XACRO, start, wait_for
 
 ROS2 = str(Path(sys.prefix) / "bin" / "ros2")
 

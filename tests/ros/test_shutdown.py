@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from .conftest import GAZELLE, start, wait_for
+from ._harness import GAZELLE, start, wait_for
 
 pytestmark = pytest.mark.serial  # timed against the server's 3 s deadline: run alone, as the other signal tests
 

@@ -36,7 +36,7 @@ from simulation_interfaces.srv import (
     StepSimulation,
 )
 
-from .conftest import GAZELLE, SEED_XACRO, Proc, RosClient, start, wait_for, xacro_to_urdf
+from ._harness import GAZELLE, SEED_XACRO, Proc, RosClient, start, wait_for, xacro_to_urdf
 
 pytestmark = pytest.mark.ros
 

@@ -17,7 +17,7 @@ from geometry_msgs.msg import PoseStamped, Twist
 from simulation_interfaces.msg import Result
 from simulation_interfaces.srv import DeleteEntity, GetEntityState, SpawnEntity
 
-from .conftest import SEED_XACRO, wait_for, xacro_to_urdf
+from ._harness import SEED_XACRO, wait_for, xacro_to_urdf
 
 pytestmark = [pytest.mark.ros, pytest.mark.serial]  # load tests: run alone (./test.sh)
 

@@ -21,7 +21,7 @@ from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from rosgraph_msgs.msg import Clock
 from std_msgs.msg import String
 
-from .conftest import GAZELLE, SEED_XACRO, SQUARE_NODE, start, wait_for, xacro_to_urdf, yaw_of
+from ._harness import GAZELLE, SEED_XACRO, SQUARE_NODE, start, wait_for, xacro_to_urdf, yaw_of
 
 pytestmark = pytest.mark.serial  # real time: run alone (./test.sh)
 

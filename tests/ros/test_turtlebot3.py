@@ -20,7 +20,7 @@ from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from sensor_msgs.msg import JointState
 from tf2_msgs.msg import TFMessage
 
-from .conftest import GAZELLE, REPO, start, wait_for
+from ._harness import GAZELLE, REPO, start, wait_for
 
 FIXTURES = Path("/work/shared/fixtures/real")
 if not FIXTURES.is_dir():  # pragma: no cover

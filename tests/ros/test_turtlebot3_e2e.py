@@ -25,7 +25,7 @@ from geometry_msgs.msg import TwistStamped
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import LaserScan
 
-from .conftest import wait_for
+from ._harness import wait_for
 from .test_blog_workspace import shell
 from .test_turtlebot3 import TB3
 

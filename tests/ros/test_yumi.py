@@ -25,7 +25,7 @@ from moveit_msgs.srv import GetMotionPlan
 from rclpy.action import ActionClient
 from sensor_msgs.msg import JointState
 
-from .conftest import GAZELLE, RosClient, start, wait_for
+from ._harness import GAZELLE, RosClient, start, wait_for
 
 YUMI = REPO / "tests" / "data" / "yumi_like"
 SOAK = int(os.environ.get("GAZELLE_YUMI_SOAK", "20"))

@@ -8,9 +8,9 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from ros.conftest import GAZELLE, REPO, SEED_XACRO, Proc, RosClient, ros_env, start, wait_for  # noqa: F401
-
-ARTIFACTS = REPO / "out" / "viewer"
+from _paths import ARTIFACTS
+from ros._harness import GAZELLE, Proc, RosClient, start
+from ros.conftest import ros_env  # noqa: F401 - the fixture, for this folder's tests
 
 
 @pytest.fixture(scope="module")

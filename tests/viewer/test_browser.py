@@ -25,9 +25,9 @@ pytest.importorskip("playwright")
 if find_chromium() is None:
     pytest.skip("no system chromium (scripts/setup.sh installs Debian's chromium)", allow_module_level=True)
 
+from _paths import ARTIFACTS, REPO, SEED_XACRO
 from _pixels import blue_mask, plan_mask, project
-
-from .conftest import ARTIFACTS, GAZELLE, REPO, SEED_XACRO, wait_for
+from ros._harness import GAZELLE, wait_for
 
 ROBOT = "simple_robot"
 ROBOT_CENTRE = (0.0, 0.0, 0.07)

@@ -11,12 +11,12 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _paths import ARTIFACTS, REPO, SEED_XACRO
 from _pixels import blue_mask
+from ros._harness import GAZELLE
 
 from gazelle.viewer._browser import find_chromium
 from gazelle.viewer._snapshot import video_format
-
-from .conftest import ARTIFACTS, GAZELLE, REPO, SEED_XACRO
 
 needs_browser = pytest.mark.skipif(
     importlib.util.find_spec("playwright") is None or find_chromium() is None,

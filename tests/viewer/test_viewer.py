@@ -8,11 +8,10 @@ import sys
 import numpy as np
 import pytest
 import trimesh
+from _paths import REPO, SEED_XACRO
 
 from gazelle.description import Box, Capsule, Cylinder, Ellipsoid, Mesh, Plane, Pose, Sphere, load
 from gazelle.viewer._geometry import to_trimesh
-
-from .conftest import REPO, SEED_XACRO
 
 
 def test_layers_viewer_never_imports_rclpy_and_core_never_imports_viewer() -> None:
