@@ -144,18 +144,19 @@ def _gazelle_version() -> str:
         return "unknown"
 
 
-def _private_dir(folder: Path) -> bool:
+def _private_dir(folder: Path, what: str = "the convex-decomposition cache") -> bool:
     """Create ``folder`` owner-only, or check that an existing one is this user's and not writable by
-    others; False (after a warning) when it is not, so nothing is read from or written to it."""
+    others; False (after a warning naming ``what`` it holds) when it is not, so nothing is read from or
+    written to it."""
     try:
         folder.mkdir(mode=0o700, parents=True, exist_ok=True)
         info = folder.stat()
     except OSError as err:
-        _log.debug(f"cannot use the convex-decomposition cache {folder}: {err}")
+        _log.debug(f"cannot use {what} {folder}: {err}")
         return False
     if info.st_uid != os.getuid() or info.st_mode & 0o022:
         _log.warning(
-            f"the convex-decomposition cache {folder} belongs to another user or others may write to it; "
+            f"{what} {folder} belongs to another user or others may write to it; "
             "it is not used (make it yours with mode 0700, or set GAZELLE_CACHE_DIR)"
         )
         return False

@@ -100,7 +100,7 @@ def build(quiet: bool = False) -> Path | None:
     target = library_path()
     if target.is_file() and not target.is_symlink():
         return target
-    if not _private_dir(target.parent):
+    if not _private_dir(target.parent, "the compiled servo loop's cache"):
         return None
     lib = _mujoco_library()
     cc = os.environ.get("CC") or shutil.which("cc") or shutil.which("gcc")
