@@ -133,8 +133,8 @@ def test_a_dead_ros_thread_is_reported_with_its_traceback(monkeypatch, caplog):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("signum", ["SIGINT", "SIGTERM"])
-def test_a_signal_stops_a_busy_server_within_3_s(ros_client, signum):
-    """A 999-link chain makes every step cost ~80 ms and a request in flight; the server still stops in 3 s."""
+def test_a_signal_stops_a_busy_server_within_its_deadline(ros_client, signum):
+    """A 999-link chain makes every step cost ~80 ms and a request in flight; the server still stops within its 4.5 s deadline (5 s for the watchdog)."""
     import signal
 
     from test_failed_spawns import chain
@@ -149,7 +149,7 @@ def test_a_signal_stops_a_busy_server_within_3_s(ros_client, signum):
     t0 = time.monotonic()
     proc.popen.send_signal(getattr(signal, signum))
     rc = proc.wait(30)
-    assert time.monotonic() - t0 < 3.0, proc.output
+    assert time.monotonic() - t0 < 5.0, proc.output
     assert rc in (0, 1), proc.output
 
 

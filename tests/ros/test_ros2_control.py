@@ -21,6 +21,8 @@ from geometry_msgs.msg import TwistStamped
 from nav_msgs.msg import Odometry
 from rclpy.action import ActionClient
 from sensor_msgs.msg import JointState
+from simulation_interfaces.msg import SimulationState
+from simulation_interfaces.srv import SetSimulationState, StepSimulation
 from trajectory_msgs.msg import JointTrajectoryPoint
 
 from ._harness import GAZELLE, start, wait_for
@@ -93,6 +95,16 @@ def test_diffbot_drives_with_its_own_controllers_yaml_and_the_spawner(sim_factor
     assert set(joints[-1].name) == {"left_wheel_joint", "right_wheel_joint"}
 
     pub = ros_client.node.create_publisher(TwistStamped, "/diffbot_base_controller/cmd_vel", 10)
+    wait_for(lambda: pub.get_subscription_count() > 0, 15, "the controller on /diffbot_base_controller/cmd_vel")
+    # Sim time driven by the test: the world paused, then stepped 50 ms at a time with a fresh command
+    # before each step (the controller's cmd_vel_timeout is 0.5 s of sim time), so a busy machine cannot
+    # starve the controller of commands as a wall-clock publisher did (0.95 m under a CPU hog).
+    paused = ros_client.call(
+        SetSimulationState,
+        "/gazelle/set_simulation_state",
+        SetSimulationState.Request(state=SimulationState(state=SimulationState.STATE_PAUSED)),
+    )
+    assert paused.result.result == 1, paused.result.error_message  # simulation_interfaces/Result RESULT_OK
     start_state = ros_client.entity_state("diffbot")
     t0 = _sim_time(start_state.header.stamp)
     with lock:
@@ -104,21 +116,18 @@ def test_diffbot_drives_with_its_own_controllers_yaml_and_the_spawner(sim_factor
         with lock:
             return _sim_time(odom[-1].header.stamp)
 
-    # 0.2 m/s for 5 s of sim time, then stop
-    stop = threading.Event()
+    def drive_for(seconds: float, twist: TwistStamped) -> None:
+        for _ in range(round(seconds / 0.05)):
+            pub.publish(twist)
+            done = ros_client.call(StepSimulation, "/gazelle/step_simulation", StepSimulation.Request(steps=50))
+            assert done.result.result == 1, done.result.error_message
 
-    def drive() -> None:
-        while not stop.is_set() and sim_now() < t0 + 5.0:
-            pub.publish(cmd)
-            stop.wait(0.02)
-        pub.publish(TwistStamped())
-
-    driver = threading.Thread(target=drive, daemon=True)
-    driver.start()
-    driver.join(30)
-    stop.set()
-    wait_for(lambda: sim_now() > t0 + 6.5, 20, "the robot to stop")
+    drive_for(5.0, cmd)  # 0.2 m/s for 5 s of sim time, then stop
+    drive_for(1.5, TwistStamped())
+    # the last odometry of the stepped time heard (published at 50 Hz)
+    wait_for(lambda: sim_now() >= t0 + 6.5 - 0.021, 20, "the odometry of the robot stopped")
     end = ros_client.entity_state("diffbot")
+    assert _sim_time(end.header.stamp) == pytest.approx(t0 + 6.5, abs=1e-6)  # 1 ms steps: 6.5 s stepped
     moved = math.hypot(
         end.state.pose.position.x - start_state.state.pose.position.x,
         end.state.pose.position.y - start_state.state.pose.position.y,
