@@ -1,0 +1,638 @@
+"""The SDF loader's parts of a model: links (inertials, shapes, surfaces, materials, sensors), joints
+with their axes, and lights."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+from lxml import etree
+
+from ._diagnostics import ErrorCode
+from ._inertia import default_inertial, inertia_from_geometries, inertia_problem
+from ._model import (
+    IDENTITY,
+    Box,
+    Capsule,
+    Collision,
+    Cone,
+    Cylinder,
+    Ellipsoid,
+    Geometry,
+    Inertial,
+    Joint,
+    JointAxis,
+    JointDynamics,
+    JointLimit,
+    JointType,
+    Light,
+    Link,
+    Material,
+    Mesh,
+    Mimic,
+    Plane,
+    Pose,
+    Sensor,
+    Sphere,
+    Surface,
+    Visual,
+    quat_conj,
+    quat_rotate,
+)
+from ._sdf_frames import Scope
+from ._sdf_reader import (
+    _AXIS_JOINTS,
+    _JOINT_TYPES,
+    _UNLIMITED,
+    _Built,
+    _Doc,
+    _find,
+    _findall,
+    _Reader,
+    _tag,
+)
+from ._xml import (
+    child_elements,
+    parse_bool,
+    parse_float,
+)
+
+
+class _Parts(_Reader):
+    """Links, joints and lights: the elements a model and a world are made of."""
+
+    # ================================================================== links
+    def shapes(
+        self, link: etree._Element, doc: _Doc, tag: str, link_name: str
+    ) -> list[tuple[etree._Element, str, Geometry]]:
+        """The link's ``<collision>`` or ``<visual>`` elements (``tag``) that have a name, used once in the
+        link, and a geometry, as (element, name, geometry); the others are reported and left out."""
+        out: list[tuple[etree._Element, str, Geometry]] = []
+        seen: set[str] = set()
+        for el in _findall(link, tag):
+            name = self.name(el, doc)
+            if name is None:
+                continue
+            if name in seen:
+                self.sink.error(
+                    ErrorCode.DUPLICATE_NAME,
+                    f"{tag} name '{name}' is used twice in link '{link_name}'",
+                    self.loc(el, doc),
+                )
+                continue
+            seen.add(name)
+            self.check(el, doc, tag)
+            geometry = self.geometry(el, doc)
+            if geometry is not None:
+                out.append((el, name, geometry))
+        return out
+
+    def link(self, name: str, element: etree._Element, doc: _Doc, scope: Scope) -> Link | None:
+        loc = self.loc(element, doc)
+        self.check(element, doc, "link")
+        X_ML = scope.pose(name, loc)
+        if X_ML is None:
+            return None
+        X_LM = X_ML.inverse()
+
+        def local_pose(el: etree._Element) -> Pose:
+            pose, rel = self.pose(el, doc)
+            if rel is None or rel == name:
+                return pose
+            X_MR = scope.pose(rel, self.loc(el, doc))
+            return pose if X_MR is None else X_LM * X_MR * pose
+
+        collisions = [
+            Collision(n, local_pose(el), g, self.surface(_find(el, "surface"), doc), self.loc(el, doc))
+            for el, n, g in self.shapes(element, doc, "collision", name)
+        ]
+        visuals = [
+            Visual(n, local_pose(el), g, self.material(_find(el, "material"), doc), self.loc(el, doc))
+            for el, n, g in self.shapes(element, doc, "visual", name)
+        ]
+        sensors: list[Sensor] = []
+        for sen_el in _findall(element, "sensor"):
+            sensor = self.sensor(sen_el, doc, local_pose(sen_el))
+            if sensor is not None:
+                sensors.append(sensor)
+        inertial = self.inertial(
+            name, _find(element, "inertial"), doc, [(c.pose, c.geometry) for c in collisions], local_pose
+        )
+        self_collide = None
+        if _find(element, "self_collide") is not None:
+            self_collide = self.flag(element, "self_collide", False, doc)
+        return Link(
+            name=name,
+            inertial=inertial,
+            visuals=tuple(visuals),
+            collisions=tuple(collisions),
+            sensors=tuple(sensors),
+            gravity=self.flag(element, "gravity", True, doc),
+            kinematic=self.flag(element, "kinematic", False, doc),
+            self_collide=self_collide,
+            pose=X_ML,
+            location=loc,
+        )
+
+    def inertial(self, link: str, element: etree._Element | None, doc: _Doc, shapes, local_pose) -> Inertial:
+        """Mass properties: as written when valid, else derived from the collision shapes.
+
+        No ``<inertial>`` means SDF's default (1 kg, unit inertia), as in Gazebo. A nested
+        ``<inertial>`` (a common slip) is reported and its values used as the author meant.
+        """
+        if element is None:
+            return Inertial(mass=1.0, ixx=1.0, iyy=1.0, izz=1.0)
+        self.check(element, doc, "inertial")
+        loc = self.loc(element, doc)
+        inner = _find(element, "inertial")
+        source_el = element
+        if inner is not None:
+            self.sink.warning(
+                ErrorCode.INERTIAL_NESTED,
+                f"link '{link}': <inertial> nested inside <inertial>; using its values as the outer inertial's",
+                self.loc(inner, doc),
+            )
+            source_el = inner
+        pose_el = element if _find(element, "pose") is not None else source_el
+        pose = local_pose(pose_el)
+        auto = parse_bool(element.get("auto") or "false") is True
+        mass_el = element if _find(element, "mass") is not None else source_el
+        mass_child = _find(mass_el, "mass")
+        mass: float | None = 1.0
+        if mass_child is not None:
+            mass = parse_float(mass_child.text)
+            if mass is None or mass <= 0:
+                self.sink.warning(
+                    ErrorCode.MASS_INVALID,
+                    f"link '{link}': mass must be a positive number, got {(mass_child.text or '').strip()!r}; "
+                    "deriving mass and inertia from the collision geometry",
+                    self.loc(mass_child, doc),
+                )
+                mass = None
+        elif auto:
+            mass = None
+        if mass is None:
+            return derive_inertial(shapes, None)
+        if auto:
+            return derive_inertial(shapes, mass)
+        inertia_el = _find(source_el, "inertia")
+        if inertia_el is None and inner is not None:
+            inertia_el = inner  # the components sit directly in the nested <inertial>
+        if inertia_el is None:
+            self.sink.warning(
+                ErrorCode.INERTIA_MISSING,
+                f"link '{link}': <inertial> has no <inertia>; "
+                f"deriving it from the collision geometry and mass {mass:g} kg",
+                loc,
+            )
+            return derive_inertial(shapes, mass)
+        values = {}
+        for key, default in (("ixx", 1.0), ("ixy", 0.0), ("ixz", 0.0), ("iyy", 1.0), ("iyz", 0.0), ("izz", 1.0)):
+            child = _find(inertia_el, key)
+            value = default if child is None else parse_float(child.text)
+            if value is None and child is not None:
+                self.sink.warning(
+                    ErrorCode.INERTIA_INVALID,
+                    f"link '{link}': <{key}> must be a number, got {(child.text or '').strip()!r}; "
+                    "deriving the inertia from the collision geometry",
+                    self.loc(child, doc),
+                )
+                return derive_inertial(shapes, mass)
+            values[key] = value
+        problem = inertia_problem(**values)
+        if problem is not None:
+            self.sink.warning(
+                ErrorCode.INERTIA_INVALID,
+                f"link '{link}': {problem}; deriving it from the collision geometry",
+                self.loc(inertia_el, doc),
+            )
+            return derive_inertial(shapes, mass)
+        return Inertial(mass=mass, pose=pose, **values)
+
+    def geometry(self, owner: etree._Element, doc: _Doc) -> Geometry | None:
+        element = _find(owner, "geometry")
+        owner_loc = self.loc(owner, doc)
+        if element is None:
+            self.sink.error(
+                ErrorCode.ELEMENT_MISSING, f"<{_tag(owner)}> '{owner.get('name')}' has no <geometry>", owner_loc
+            )
+            return None
+        shapes = [c for c in child_elements(element) if ":" not in _tag(c)]
+        if not shapes:
+            self.sink.error(ErrorCode.ELEMENT_MISSING, "<geometry> is empty", self.loc(element, doc))
+            return None
+        shape = shapes[0]
+        kind = _tag(shape)
+        loc = self.loc(shape, doc)
+        for extra in shapes[1:]:
+            self.warn_extra(extra, doc, "a <geometry> holds one shape")
+
+        def positive(*values: float) -> bool:
+            if all(v > 0 for v in values):
+                return True
+            self.sink.error(ErrorCode.GEOMETRY_INVALID, f"<{kind}> dimensions must be positive, got {values}", loc)
+            return False
+
+        if kind == "box":
+            size = self.vec3(shape, "size", (1.0, 1.0, 1.0), doc)
+            return Box(size) if positive(*size) else None
+        if kind in ("cylinder", "capsule"):
+            default_r = 1.0 if kind == "cylinder" else 0.5
+            radius = self.number(shape, "radius", default_r, doc)
+            length = self.number(shape, "length", 1.0, doc)
+            if not positive(radius, length):
+                return None
+            return Cylinder(radius, length) if kind == "cylinder" else Capsule(radius, length)
+        if kind == "cone":  # SDF 1.11
+            radius = self.number(shape, "radius", 1.0, doc)
+            length = self.number(shape, "length", 1.0, doc)
+            return Cone(radius, length) if positive(radius, length) else None
+        if kind == "sphere":
+            radius = self.number(shape, "radius", 1.0, doc)
+            return Sphere(radius) if positive(radius) else None
+        if kind == "ellipsoid":
+            radii = self.vec3(shape, "radii", (1.0, 1.0, 1.0), doc)
+            return Ellipsoid(radii) if positive(*radii) else None
+        if kind == "plane":
+            normal = self.vec3(shape, "normal", (0.0, 0.0, 1.0), doc)
+            size = self.vector(shape, "size", 2, Plane().size, doc) or Plane().size
+            n = math.sqrt(sum(v * v for v in normal))
+            if n < 1e-12:
+                self.sink.error(ErrorCode.GEOMETRY_INVALID, "<plane> normal has zero length", loc)
+                return None
+            return Plane((normal[0] / n, normal[1] / n, normal[2] / n), (size[0], size[1]))
+        if kind == "mesh":
+            for child in child_elements(shape):
+                if _tag(child) not in ("uri", "scale") and ":" not in _tag(child):
+                    self.unsupported(child, doc, "mesh")
+            uri = self.text(shape, "uri")
+            if not uri:
+                self.sink.error(ErrorCode.ELEMENT_MISSING, "<mesh> has no <uri>", loc)
+                return None
+            scale = self.vec3(shape, "scale", (1.0, 1.0, 1.0), doc)
+            path = (
+                self.resolve(uri, doc)
+                if ("://" not in uri or uri.startswith(("model://", "package://", "file://")))
+                else None
+            )
+            if path is None or not path.is_file():
+                why = f": {self.resolver.unresolved_reason(uri, doc.base_dir)}" if path is None else ""
+                self.sink.warning(ErrorCode.MESH_NOT_FOUND, f"mesh '{uri}' not found{why}", loc)
+                return Mesh(uri, None, scale)
+            if not self.resolver.allowed(path):
+                self.sink.warning(ErrorCode.URI_UNRESOLVED, f"mesh {self.resolver.refusal(uri)}", loc)
+                return Mesh(uri, None, scale)
+            return Mesh(uri, str(path), scale)
+        if kind == "empty":
+            return None
+        self.sink.warning(
+            ErrorCode.ELEMENT_UNSUPPORTED,
+            f"geometry <{kind}> is not supported; the shape is skipped, so as a <collision> it collides with "
+            "nothing (supported: box, cylinder, sphere, capsule, cone, ellipsoid, plane, mesh)",
+            loc,
+        )
+        return None
+
+    def surface(self, element: etree._Element | None, doc: _Doc) -> Surface:
+        if element is None:
+            return Surface()
+        self.check(element, doc, "surface")
+        friction = _find(element, "friction")
+        ode = bullet = torsional = None
+        if friction is not None:
+            self.check(friction, doc, "friction")
+            ode, bullet, torsional = _find(friction, "ode"), _find(friction, "bullet"), _find(friction, "torsional")
+            if ode is not None:
+                self.check(ode, doc, "friction_ode", "ode")
+            if bullet is not None:
+                self.check(bullet, doc, "bullet_friction", "bullet")
+            if torsional is not None:
+                self.check(torsional, doc, "torsional")
+        contact = _find(element, "contact")
+        contact_ode = None
+        if contact is not None:
+            self.check(contact, doc, "contact")
+            contact_ode = _find(contact, "ode")
+            if contact_ode is not None:
+                self.check(contact_ode, doc, "contact_ode", "ode")
+        bounce = _find(element, "bounce")
+        if bounce is not None:
+            self.check(bounce, doc, "bounce")
+        mu = self.opt_number(ode, "mu", doc)
+        mu2 = self.opt_number(ode, "mu2", doc)
+        if mu is None:
+            mu = self.opt_number(bullet, "friction", doc)
+        if mu2 is None:
+            mu2 = self.opt_number(bullet, "friction2", doc)
+        bitmask = None
+        bitmask_el = _find(contact, "collide_bitmask") if contact is not None else None
+        if contact is not None and bitmask_el is not None:
+            raw = self.text(contact, "collide_bitmask") or ""
+            try:
+                bitmask = int(raw, 0)
+            except ValueError:
+                self.sink.error(
+                    ErrorCode.VALUE_INVALID,
+                    f"<collide_bitmask> must be an integer, got {raw!r}",
+                    self.loc(bitmask_el, doc),
+                )
+        without = _find(contact, "collide_without_contact") if contact is not None else None
+        if without is not None and (without.text or "").strip().lower() in ("1", "true"):
+            # gz-sim: the shape reports contacts but exerts no force. MuJoCo has no such geom: it takes
+            # part in no contact (rays still see it), and contact sensors do not report it either.
+            # The default (false) is what gazelle does anyway: read silently (a house world of gz-sim's
+            # printed 54 warnings, one a model file, for that default)
+            self.sink.warning(
+                ErrorCode.ELEMENT_UNSUPPORTED,
+                "<collide_without_contact> true: this collision takes part in no contact at all (no force, "
+                "and contact sensors do not report it)",
+                self.loc(without, doc),
+            )
+            bitmask = 0
+        return Surface(
+            mu=mu,
+            mu2=mu2,
+            fdir1=self.vec3(ode, "fdir1", None, doc),
+            slip1=self.opt_number(ode, "slip1", doc),
+            slip2=self.opt_number(ode, "slip2", doc),
+            torsional=self.opt_number(torsional, "coefficient", doc),
+            rolling=self.opt_number(bullet, "rolling_friction", doc),
+            kp=self.opt_number(contact_ode, "kp", doc),
+            kd=self.opt_number(contact_ode, "kd", doc),
+            min_depth=self.opt_number(contact_ode, "min_depth", doc),
+            max_vel=self.opt_number(contact_ode, "max_vel", doc),
+            soft_cfm=self.opt_number(contact_ode, "soft_cfm", doc),
+            soft_erp=self.opt_number(contact_ode, "soft_erp", doc),
+            restitution=self.opt_number(bounce, "restitution_coefficient", doc),
+            collide_bitmask=bitmask,
+        )
+
+    def material(self, element: etree._Element | None, doc: _Doc) -> Material | None:
+        if element is None:
+            return None
+        self.check(element, doc, "material")
+        script = _find(element, "script")
+        name = ""
+        if script is not None:
+            self.check(script, doc, "script")
+            name = self.text(script, "name") or ""
+        texture = None
+        pbr = _find(element, "pbr")
+        if pbr is not None:
+            for workflow in child_elements(pbr):
+                texture = self.text(workflow, "albedo_map") or texture
+        return Material(
+            name=name,
+            diffuse=self.color(element, "diffuse", doc),
+            ambient=self.color(element, "ambient", doc),
+            specular=self.color(element, "specular", doc),
+            emissive=self.color(element, "emissive", doc),
+            texture=texture,
+        )
+
+    def sensor(self, element: etree._Element, doc: _Doc, pose: Pose) -> Sensor | None:
+        name = self.name(element, doc)
+        loc = self.loc(element, doc)
+        kind = (element.get("type") or "").strip()
+        if not kind:
+            self.sink.error(
+                ErrorCode.ATTRIBUTE_MISSING, f"<sensor> '{name}' is missing the required 'type' attribute", loc
+            )
+            return None
+        if name is None:
+            return None
+        plugins = tuple(p for p in (self.plugin(e, doc) for e in _findall(element, "plugin")) if p is not None)
+        return Sensor(
+            name=name,
+            type=kind,
+            pose=pose,
+            update_rate_hz=self.number(element, "update_rate", 0.0, doc),
+            always_on=self.flag(element, "always_on", False, doc),
+            topic=self.text(element, "topic") or "",
+            config=self.config(element, doc),
+            plugins=plugins,
+            location=loc,
+        )
+
+    # ================================================================== joints
+    def joint(self, name: str, element: etree._Element, doc: _Doc, scope: Scope, built: _Built) -> None:
+        loc = self.loc(element, doc)
+        self.check(element, doc, "joint")
+        raw_type = (element.get("type") or "").strip()
+        if not raw_type:
+            self.sink.error(
+                ErrorCode.ATTRIBUTE_MISSING, f"joint '{name}' is missing the required 'type' attribute", loc
+            )
+            return
+        if raw_type == "gearbox":
+            self.sink.warning(
+                ErrorCode.JOINT_TYPE_INVALID, f"joint '{name}': type 'gearbox' is not supported; joint skipped", loc
+            )
+            return
+        jtype = _JOINT_TYPES.get(raw_type)
+        if jtype is None:
+            self.sink.error(
+                ErrorCode.JOINT_TYPE_INVALID,
+                f"joint '{name}' has unknown type '{raw_type}' (expected one of {', '.join(sorted(_JOINT_TYPES))})",
+                loc,
+            )
+            return
+        if raw_type == "revolute2":
+            self.sink.warning(
+                ErrorCode.JOINT_TYPE_INVALID,
+                f"joint '{name}': type 'revolute2' is not supported; loaded as 'universal'",
+                loc,
+            )
+        ends = []
+        for role, code in (("parent", ErrorCode.JOINT_PARENT_INVALID), ("child", ErrorCode.JOINT_CHILD_INVALID)):
+            el = _find(element, role)
+            ref = (el.text or "").strip() if el is not None else ""
+            if el is None or not ref:
+                self.sink.error(ErrorCode.ELEMENT_MISSING, f"joint '{name}' has no <{role}>", loc)
+                return
+            where = self.loc(el, doc)
+            if ref == "world" or ref in scope.nodes or ("::" in ref and ref.partition("::")[0] in scope.nested):
+                body = scope.body(ref, where)
+            else:
+                body = None
+                self.sink.error(code, f"joint '{name}' has unknown {role} '{ref}'", where)
+            if body is None:
+                return
+            if role == "child" and body == "world":
+                self.sink.error(code, f"joint '{name}': the child cannot be 'world'", where)
+                return
+            ends.append(body)
+        parent, child = ends
+        if parent == child:
+            self.sink.error(
+                ErrorCode.JOINT_CHILD_INVALID, f"joint '{name}': parent and child are the same link '{child}'", loc
+            )
+            return
+        X_MJ = scope.pose(name, loc)
+        X_MC = scope.pose(child, loc)
+        X_MP = IDENTITY if parent == "world" else scope.pose(parent, loc)
+        if X_MJ is None or X_MC is None or X_MP is None:
+            return
+        axes = []
+        for axis_tag in ("axis", "axis2"):
+            axis_el = _find(element, axis_tag)
+            if (
+                axis_el is None
+                or jtype not in _AXIS_JOINTS
+                or (axis_tag == "axis2" and jtype is not JointType.UNIVERSAL)
+            ):
+                axes.append(None)
+                continue
+            axes.append(self.axis(name, axis_el, doc, scope, X_MJ))
+        if jtype in _AXIS_JOINTS and _find(element, "axis") is None:
+            self.sink.warning(ErrorCode.ELEMENT_MISSING, f"joint '{name}' ({raw_type}) has no <axis>; using 0 0 1", loc)
+            axes[0] = (JointAxis((0.0, 0.0, 1.0)), None)
+        if jtype is JointType.UNIVERSAL and axes[1] is None:
+            axes[1] = (JointAxis((0.0, 1.0, 0.0)), None)
+        pitch = None
+        if jtype is JointType.SCREW:
+            if _find(element, "screw_thread_pitch") is not None:
+                pitch = self.number(element, "screw_thread_pitch", 1.0, doc)
+            else:
+                thread_pitch = self.number(element, "thread_pitch", 1.0, doc)
+                pitch = -2 * math.pi / thread_pitch if thread_pitch != 0 else None
+        mimic = None
+        for entry in axes:
+            if entry is not None and entry[1] is not None:
+                mimic = entry[1]
+        joint = Joint(
+            name=name,
+            type=jtype,
+            parent=parent,
+            child=child,
+            origin=X_MJ if parent == "world" else X_MP.inverse() * X_MJ,
+            child_offset=X_MJ.inverse() * X_MC,
+            axis=axes[0][0] if axes[0] else None,
+            axis2=axes[1][0] if axes[1] else None,
+            screw_thread_pitch=pitch,
+            mimic=mimic,
+            location=loc,
+        )
+        if parent == "world":
+            built.world_joints[name] = X_MJ
+        built.joints.append(joint)
+        for sen_el in _findall(element, "sensor"):  # force_torque: kept with the child link
+            pose, _rel = self.pose(sen_el, doc)  # in the joint frame
+            sensor = self.sensor(sen_el, doc, pose)
+            if sensor is not None:
+                built.joint_sensors.setdefault(child, []).append(replace(sensor, joint=name))
+
+    def axis(self, joint: str, element: etree._Element, doc: _Doc, scope: Scope, X_MJ: Pose):
+        """An axis in the joint frame, plus its mimic (1.11), converting older frame conventions."""
+        self.check(element, doc, "axis")
+        xyz_el = _find(element, "xyz")
+        loc = self.loc(xyz_el if xyz_el is not None else element, doc)
+        xyz = self.vec3(element, "xyz", (0.0, 0.0, 1.0), doc)
+        expressed_in = None
+        if doc.version <= (1, 4):
+            expressed_in = "__model__"
+        elif _find(element, "use_parent_model_frame") is not None and self.flag(
+            element, "use_parent_model_frame", False, doc
+        ):
+            expressed_in = "__model__"
+        if xyz_el is not None and doc.version >= (1, 7):
+            expressed_in = (xyz_el.get("expressed_in") or "").strip() or expressed_in
+        if expressed_in is not None and expressed_in != joint:
+            X_MF = scope.pose(expressed_in, loc)
+            if X_MF is not None:
+                xyz = quat_rotate(quat_conj(X_MJ.orientation), quat_rotate(X_MF.orientation, xyz))
+        norm = math.sqrt(sum(v * v for v in xyz))
+        if norm < 1e-12:
+            self.sink.error(ErrorCode.JOINT_AXIS_INVALID, f"joint '{joint}': axis xyz has zero length", loc)
+            norm = 1.0
+            xyz = (0.0, 0.0, 1.0)
+        xyz = (xyz[0] / norm, xyz[1] / norm, xyz[2] / norm)
+        limit_el = _find(element, "limit")
+        limit = JointLimit()
+        if limit_el is not None:
+            self.check(limit_el, doc, "limit")
+            lower = self.number(limit_el, "lower", -1e16, doc)
+            upper = self.number(limit_el, "upper", 1e16, doc)
+            effort = self.number(limit_el, "effort", -1.0, doc)
+            velocity = self.number(limit_el, "velocity", -1.0, doc)
+            if lower > upper:
+                self.sink.error(
+                    ErrorCode.VALUE_INVALID,
+                    f"joint '{joint}': limit lower {lower:g} > upper {upper:g}",
+                    self.loc(limit_el, doc),
+                )
+            limit = JointLimit(
+                lower=lower if lower > -_UNLIMITED else None,
+                upper=upper if upper < _UNLIMITED else None,
+                effort=effort if effort >= 0 else None,
+                velocity=velocity if velocity >= 0 else None,
+            )
+        dyn_el = _find(element, "dynamics")
+        dynamics = JointDynamics(
+            damping=self.number(dyn_el, "damping", 0.0, doc),
+            friction=self.number(dyn_el, "friction", 0.0, doc),
+            spring_stiffness=self.number(dyn_el, "spring_stiffness", 0.0, doc),
+            spring_reference=self.number(dyn_el, "spring_reference", 0.0, doc),
+        )
+        mimic = None
+        mimic_el = _find(element, "mimic")
+        if mimic_el is not None:
+            leader = (mimic_el.get("joint") or "").strip()
+            if not leader:
+                self.sink.error(
+                    ErrorCode.ATTRIBUTE_MISSING,
+                    "<mimic> is missing the required 'joint' attribute",
+                    self.loc(mimic_el, doc),
+                )
+            else:
+                mimic = Mimic(
+                    leader, self.number(mimic_el, "multiplier", 1.0, doc), self.number(mimic_el, "offset", 0.0, doc)
+                )
+        return JointAxis(xyz, limit, dynamics), mimic
+
+    # ================================================================== worlds
+    def light(self, element: etree._Element, doc: _Doc, scope: Scope | None) -> Light | None:
+        name = self.name(element, doc)
+        loc = self.loc(element, doc)
+        if name is None:
+            return None
+        self.check(element, doc, "light")
+        kind = (element.get("type") or "point").strip()
+        if kind not in ("directional", "point", "spot"):
+            self.sink.error(
+                ErrorCode.ATTRIBUTE_INVALID,
+                f"light '{name}' type must be directional, point or spot, got {kind!r}",
+                loc,
+            )
+            return None
+        pose, rel = self.pose(element, doc)
+        if rel not in (None, "world"):
+            if scope is None:
+                self.sink.error(ErrorCode.FRAME_INVALID, f"light '{name}': unknown frame '{rel}'", loc)
+            else:
+                base = scope.pose(rel, loc)
+                pose = pose if base is None else base * pose
+        attenuation = _find(element, "attenuation")
+        if attenuation is not None:
+            self.check(attenuation, doc, "attenuation")
+        default = Light(name)
+        return Light(
+            name=name,
+            type=kind,
+            pose=pose,
+            diffuse=self.color(element, "diffuse", doc) or default.diffuse,
+            specular=self.color(element, "specular", doc) or default.specular,
+            direction=self.vec3(element, "direction", default.direction, doc),
+            cast_shadows=self.flag(element, "cast_shadows", False, doc),
+            attenuation_range=self.opt_number(attenuation, "range", doc),
+            location=loc,
+        )
+
+
+def derive_inertial(shapes: list[tuple[Pose, Geometry]], mass: float | None) -> Inertial:
+    """Inertia from the collision shapes (mass None: from their volume at water density).
+
+    Same rules as the URDF loader (``_inertia``); no shape with a volume gives its placeholder.
+    """
+    derived = inertia_from_geometries([(g, p) for p, g in shapes], mass)
+    return derived.inertial if derived is not None else default_inertial(mass)

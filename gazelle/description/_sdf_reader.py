@@ -1,0 +1,472 @@
+"""The SDF loader's reading layer: the document context, the model being built, and the readers of
+values (numbers, vectors, poses, colours, flags), names, plugins and URIs, each reporting a bad value
+at its file:line. :mod:`._sdf_parts` reads links, shapes, joints and lights on top of it, and
+:mod:`._sdf` models, includes and worlds."""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import overload
+
+from lxml import etree
+
+from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
+from ._model import (
+    IDENTITY,
+    RGBA,
+    ConfigElement,
+    Frame,
+    Joint,
+    JointType,
+    Link,
+    Plugin,
+    Pose,
+    Sensor,
+    Vec3,
+)
+from ._resources import ResourceResolver
+from ._sdf_frames import ScopeFrames
+from ._sdf_text import decode_config, decode_name, prepare
+from ._xml import (
+    child_elements,
+    element_location,
+    local_name,
+    parse_bool,
+    parse_float,
+    parse_floats,
+    parse_xml,
+    to_config,
+)
+
+Version = tuple[int, int]
+
+MIN_VERSION: Version = (1, 2)
+"""Oldest SDF version read (1.0 used a different structure that libsdformat no longer reads)."""
+MAX_VERSION: Version = (1, 11)
+"""Newest SDF version read; newer files are an error (their semantics may differ)."""
+MAX_NESTING = 32
+"""Deepest chain of nested models and includes (guards include cycles)."""
+
+IGNORED: dict[str, frozenset[str]] = {
+    # Elements that have no effect in gazelle (rendering details, solver settings of other
+    # engines, bookkeeping): skipped without a warning. Keyed by the parent element.
+    "model": frozenset({"allow_auto_disable", "enable_wind"}),
+    "link": frozenset({"enable_wind", "must_be_base_link", "visual_groups"}),
+    "collision": frozenset({"laser_retro", "max_contacts", "density", "auto_inertia_params"}),
+    "visual": frozenset({"cast_shadows", "transparency", "laser_retro", "meta", "visibility_flags"}),
+    "material": frozenset({"lighting", "shader", "double_sided", "render_order"}),
+    "script": frozenset({"uri"}),
+    "inertial": frozenset(),
+    "surface": frozenset(),
+    "friction": frozenset(),
+    "friction_ode": frozenset(),
+    "torsional": frozenset({"use_patch_radius", "patch_radius", "surface_radius", "ode"}),
+    "bullet_friction": frozenset({"fdir1"}),
+    "contact": frozenset({"bullet", "collide_without_contact_bitmask", "poissons_ratio", "elastic_modulus"}),
+    "contact_ode": frozenset(),
+    "bounce": frozenset({"threshold"}),
+    "joint": frozenset({"physics", "gearbox_ratio", "gearbox_reference_body"}),
+    "axis": frozenset({"initial_position"}),
+    "limit": frozenset({"stiffness", "dissipation"}),
+    "world": frozenset(),
+    "physics": frozenset({"ode", "bullet", "dart", "simbody", "max_contacts", "magnetic_field"}),
+    "scene": frozenset({"sky", "fog", "origin_visual"}),
+    "light": frozenset({"spot", "intensity", "visualize", "light_on"}),
+    "attenuation": frozenset({"constant", "linear", "quadratic"}),
+    "include": frozenset(),
+}
+"""Known elements skipped on purpose, per parent; see the module docstring."""
+
+_USED: dict[str, frozenset[str]] = {
+    "model": frozenset({"static", "self_collide", "pose", "link", "joint", "frame", "model", "include", "plugin"}),
+    "link": frozenset({"pose", "inertial", "collision", "visual", "sensor", "gravity", "kinematic", "self_collide"}),
+    "collision": frozenset({"pose", "geometry", "surface"}),
+    "visual": frozenset({"pose", "geometry", "material"}),
+    "material": frozenset({"ambient", "diffuse", "specular", "emissive", "script", "pbr"}),
+    "script": frozenset({"name"}),
+    "inertial": frozenset({"mass", "pose", "inertia", "inertial"}),
+    "surface": frozenset({"friction", "contact", "bounce"}),
+    "friction": frozenset({"ode", "torsional", "bullet"}),
+    "friction_ode": frozenset({"mu", "mu2", "fdir1", "slip1", "slip2"}),
+    "torsional": frozenset({"coefficient"}),
+    "bullet_friction": frozenset({"friction", "friction2", "rolling_friction"}),
+    "contact": frozenset({"ode", "collide_bitmask", "collide_without_contact"}),
+    "contact_ode": frozenset({"kp", "kd", "min_depth", "max_vel", "soft_cfm", "soft_erp"}),
+    "bounce": frozenset({"restitution_coefficient"}),
+    "joint": frozenset({"parent", "child", "pose", "axis", "axis2", "thread_pitch", "screw_thread_pitch", "sensor"}),
+    "axis": frozenset({"xyz", "limit", "dynamics", "use_parent_model_frame", "mimic"}),
+    "limit": frozenset({"lower", "upper", "effort", "velocity"}),
+    "world": frozenset(
+        {
+            "gravity",
+            "physics",
+            "scene",
+            "light",
+            "model",
+            "include",
+            "plugin",
+            "frame",
+            "spherical_coordinates",
+            "magnetic_field",
+        }
+    ),
+    "spherical_coordinates": frozenset(
+        {"surface_model", "world_frame_orientation", "latitude_deg", "longitude_deg", "elevation", "heading_deg"}
+    ),
+    "physics": frozenset({"max_step_size", "real_time_factor", "real_time_update_rate", "gravity", "update_rate"}),
+    "scene": frozenset({"ambient", "background", "shadows", "grid"}),
+    "light": frozenset({"pose", "diffuse", "specular", "direction", "cast_shadows", "attenuation"}),
+    "attenuation": frozenset({"range"}),
+    "include": frozenset({"uri", "name", "pose", "static", "placement_frame", "plugin"}),
+}
+
+_JOINT_TYPES = {
+    "revolute": JointType.REVOLUTE,
+    "continuous": JointType.CONTINUOUS,
+    "prismatic": JointType.PRISMATIC,
+    "fixed": JointType.FIXED,
+    "ball": JointType.BALL,
+    "universal": JointType.UNIVERSAL,
+    "screw": JointType.SCREW,
+    "revolute2": JointType.UNIVERSAL,
+}
+_AXIS_JOINTS = {JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC, JointType.SCREW, JointType.UNIVERSAL}
+_UNLIMITED = 1e15
+"""|limit| at or beyond this (SDF's default is ±1e16) means no limit."""
+_VERSION_RE = re.compile(r"^\s*(\d+)\.(\d+)\s*$")
+
+
+def _tag(element: etree._Element) -> str:
+    return decode_name(local_name(element))
+
+
+def _find(element: etree._Element, tag: str) -> etree._Element | None:
+    for child in child_elements(element):
+        if _tag(child) == tag:
+            return child
+    return None
+
+
+def _findall(element: etree._Element, tag: str) -> list[etree._Element]:
+    return [c for c in child_elements(element) if _tag(c) == tag]
+
+
+def parse_version(text: str | None) -> Version | None:
+    """``"1.8"`` → ``(1, 8)``; None if it is not ``major.minor``."""
+    m = _VERSION_RE.match(text or "")
+    return (int(m.group(1)), int(m.group(2))) if m else None
+
+
+@dataclass
+class _Doc:
+    """One SDF file being read."""
+
+    source: str
+    base_dir: Path | None
+    """The folder relative URIs resolve against; None for a string, which has none."""
+    version: Version
+    renamed: bool
+    """Whether names were rewritten by :func:`prepare` (configs need decoding)."""
+
+
+@dataclass
+class _Built:
+    """A parsed model before it is placed: everything in its own model frame."""
+
+    name: str
+    static: bool
+    self_collide: bool
+    pose: Pose
+    relative_to: str | None
+    placement_frame: str | None
+    canonical: str | None
+    links: list[Link] = field(default_factory=list)
+    joints: list[Joint] = field(default_factory=list)
+    world_joints: dict[str, Pose] = field(default_factory=dict)
+    """X_MJ of joints whose parent is ``world`` (their origin needs the model's world pose)."""
+    frames: list[Frame] = field(default_factory=list)
+    plugins: list[Plugin] = field(default_factory=list)
+    joint_sensors: dict[str, list[Sensor]] = field(default_factory=dict)
+    """Child link name -> the sensors of joints above it (force_torque)."""
+    exported: ScopeFrames = field(default_factory=ScopeFrames)
+    doc: _Doc | None = None
+    location: SourceLocation | None = None
+
+
+class _Reader:
+    """Reads SDF values into the description model, reporting problems into ``sink``."""
+
+    def __init__(self, sink: DiagnosticSink, resolver: ResourceResolver) -> None:
+        self.sink = sink
+        self.resolver = resolver
+
+    # ================================================================== documents
+    def read(self, text: str, source: str, base_dir: Path | None) -> tuple[etree._Element, _Doc] | None:
+        """Parse text into its root and the document context, checking the version."""
+        prepared, renamed = prepare(text)
+        root = parse_xml(prepared, source=source, sink=self.sink)
+        if root is None:
+            return None
+        tag = _tag(root)
+        loc = element_location(root, source)
+        if tag not in ("sdf", "gazebo"):
+            self.sink.error(ErrorCode.ROOT_ELEMENT_INVALID, f"root element must be <sdf>, got <{tag}>", loc)
+            return None
+        raw = root.get("version")
+        if raw is None:
+            self.sink.error(ErrorCode.ATTRIBUTE_MISSING, f"<{tag}> has no 'version' attribute", loc)
+            return None
+        version = parse_version(raw)
+        if version is None or not (MIN_VERSION <= version <= MAX_VERSION):
+            self.sink.error(
+                ErrorCode.SDF_VERSION_UNSUPPORTED,
+                f"SDF version '{raw}' is not supported (supported: "
+                f"{MIN_VERSION[0]}.{MIN_VERSION[1]} to {MAX_VERSION[0]}.{MAX_VERSION[1]})",
+                loc,
+            )
+            return None
+        return root, _Doc(source, base_dir, version, renamed)
+
+    def warn_extra(self, element: etree._Element, doc: _Doc, why: str) -> None:
+        self.sink.warning(ErrorCode.ELEMENT_UNSUPPORTED, f"<{_tag(element)}> ignored: {why}", self.loc(element, doc))
+
+    # ================================================================== small helpers
+    def loc(self, element: etree._Element, doc: _Doc) -> SourceLocation:
+        return element_location(element, doc.source)
+
+    def config(self, element: etree._Element, doc: _Doc) -> ConfigElement:
+        cfg = to_config(element, doc.source)
+        return decode_config(cfg) if doc.renamed else cfg
+
+    def unsupported(self, element: etree._Element, doc: _Doc, parent: str) -> None:
+        self.sink.warning(
+            ErrorCode.ELEMENT_UNSUPPORTED,
+            f"<{_tag(element)}> in <{parent}> is not supported and is ignored",
+            self.loc(element, doc),
+        )
+
+    def check(self, element: etree._Element, doc: _Doc, kind: str, parent: str | None = None) -> None:
+        """Warn about every child of ``element`` that is neither used nor ignored on purpose."""
+        used = _USED.get(kind, frozenset())
+        ignored = IGNORED.get(kind, frozenset())
+        for child in child_elements(element):
+            tag = _tag(child)
+            if tag in used or tag in ignored or ":" in tag:
+                continue
+            self.unsupported(child, doc, parent or kind)
+
+    def name(self, element: etree._Element, doc: _Doc) -> str | None:
+        value = element.get("name")
+        if value is None or not value.strip():
+            self.sink.error(
+                ErrorCode.ATTRIBUTE_MISSING,
+                f"<{_tag(element)}> is missing the required 'name' attribute",
+                self.loc(element, doc),
+            )
+            return None
+        return value.strip()
+
+    def text(self, element: etree._Element, tag: str) -> str | None:
+        child = _find(element, tag)
+        return None if child is None else (child.text or "").strip()
+
+    def number(self, element: etree._Element | None, tag: str, default: float, doc: _Doc) -> float:
+        """A finite number child; the default when absent; an error (and the default) when malformed."""
+        if element is None:
+            return default
+        child = _find(element, tag)
+        if child is None:
+            return default
+        value = parse_float(child.text)
+        if value is None:
+            self.sink.error(
+                ErrorCode.VALUE_INVALID,
+                f"<{tag}> must be a number, got {(child.text or '').strip()!r}",
+                self.loc(child, doc),
+            )
+            return default
+        return value
+
+    def opt_number(self, element: etree._Element | None, tag: str, doc: _Doc) -> float | None:
+        if element is None or _find(element, tag) is None:
+            return None
+        value = self.number(element, tag, math.nan, doc)
+        return None if math.isnan(value) else value
+
+    def vector(
+        self, element: etree._Element | None, tag: str, count: int, default: tuple[float, ...] | None, doc: _Doc
+    ) -> tuple[float, ...] | None:
+        """``count`` numbers from a child; default when absent; error + default when malformed."""
+        if element is None:
+            return default
+        child = _find(element, tag)
+        if child is None:
+            return default
+        values = parse_floats(child.text, count)
+        if values is None:
+            self.sink.error(
+                ErrorCode.VALUE_INVALID,
+                f"<{tag}> must be {count} numbers, got {(child.text or '').strip()!r}",
+                self.loc(child, doc),
+            )
+            return default
+        return values
+
+    @overload
+    def vec3(self, element: etree._Element | None, tag: str, default: Vec3, doc: _Doc) -> Vec3: ...
+    @overload
+    def vec3(self, element: etree._Element | None, tag: str, default: None, doc: _Doc) -> Vec3 | None: ...
+    def vec3(self, element: etree._Element | None, tag: str, default: Vec3 | None, doc: _Doc) -> Vec3 | None:
+        """Three numbers from a child (a vector, a size, a scale); :meth:`vector`'s rules."""
+        v = self.vector(element, tag, 3, default, doc)
+        return None if v is None else (v[0], v[1], v[2])
+
+    def flag(self, element: etree._Element | None, tag: str, default: bool, doc: _Doc) -> bool:
+        if element is None:
+            return default
+        child = _find(element, tag)
+        if child is None:
+            return default
+        value = parse_bool(child.text)
+        if value is None:
+            self.sink.error(
+                ErrorCode.VALUE_INVALID,
+                f"<{tag}> must be true/false/1/0, got {(child.text or '').strip()!r}",
+                self.loc(child, doc),
+            )
+            return default
+        return value
+
+    def color(self, element: etree._Element | None, tag: str, doc: _Doc) -> RGBA | None:
+        """An RGBA colour (RGB accepted, alpha 1); None when absent or malformed."""
+        if element is None:
+            return None
+        child = _find(element, tag)
+        if child is None:
+            return None
+        values = parse_floats(child.text)
+        if values is None or len(values) not in (3, 4):
+            self.sink.error(
+                ErrorCode.VALUE_INVALID,
+                f"<{tag}> must be 3 or 4 numbers (RGBA), got {(child.text or '').strip()!r}",
+                self.loc(child, doc),
+            )
+            return None
+        return (values[0], values[1], values[2], values[3] if len(values) == 4 else 1.0)
+
+    def pose(self, element: etree._Element | None, doc: _Doc) -> tuple[Pose, str | None]:
+        """The ``<pose>`` child of ``element`` and its ``relative_to`` (None = the default)."""
+        child = None if element is None else _find(element, "pose")
+        if child is None:
+            return IDENTITY, None
+        relative_to = child.get("relative_to")
+        if relative_to is None and (1, 5) <= doc.version < (1, 7):
+            relative_to = child.get("frame")
+        relative_to = (relative_to or "").strip() or None
+        text = (child.text or "").strip()
+        if not text:
+            return IDENTITY, relative_to
+        fmt = (child.get("rotation_format") or "euler_rpy").strip()
+        degrees = parse_bool(child.get("degrees") or "false")
+        loc = self.loc(child, doc)
+        if degrees is None:
+            self.sink.error(
+                ErrorCode.ATTRIBUTE_INVALID, f"pose 'degrees' must be true/false, got {child.get('degrees')!r}", loc
+            )
+            degrees = False
+        if fmt == "euler_rpy":
+            values = parse_floats(text, 6)
+            if values is None:
+                self.sink.error(
+                    ErrorCode.VALUE_INVALID, f"<pose> must be 6 numbers 'x y z roll pitch yaw', got {text!r}", loc
+                )
+                return IDENTITY, relative_to
+            scale = math.pi / 180.0 if degrees else 1.0
+            rpy = (values[3] * scale, values[4] * scale, values[5] * scale)
+            return Pose.from_xyz_rpy((values[0], values[1], values[2]), rpy), relative_to
+        if fmt == "quat_xyzw":
+            values = parse_floats(text, 7)
+            if values is None:
+                self.sink.error(
+                    ErrorCode.VALUE_INVALID, f"<pose> must be 7 numbers 'x y z qx qy qz qw', got {text!r}", loc
+                )
+                return IDENTITY, relative_to
+            qx, qy, qz, qw = values[3:]
+            norm = math.sqrt(qx * qx + qy * qy + qz * qz + qw * qw)
+            if not norm > 1e-9:
+                self.sink.error(ErrorCode.VALUE_INVALID, "<pose> quaternion has zero length", loc)
+                return IDENTITY, relative_to
+            xyz = (values[0], values[1], values[2])
+            return Pose(xyz, (qw / norm, qx / norm, qy / norm, qz / norm)), relative_to
+        self.sink.error(
+            ErrorCode.ATTRIBUTE_INVALID,
+            f"pose rotation_format must be 'euler_rpy' or 'quat_xyzw', got {fmt!r}",
+            loc,
+        )
+        return IDENTITY, relative_to
+
+    def plugin(self, element: etree._Element, doc: _Doc) -> Plugin | None:
+        loc = self.loc(element, doc)
+        filename = (element.get("filename") or "").strip()
+        if not filename:
+            self.sink.error(ErrorCode.ATTRIBUTE_MISSING, "<plugin> is missing the required 'filename' attribute", loc)
+            return None
+        return Plugin(
+            name=(element.get("name") or "").strip(), filename=filename, config=self.config(element, doc), location=loc
+        )
+
+    # ================================================================== URIs and includes
+    def find_model_dir(self, name: str, doc: _Doc) -> Path | None:
+        """Folder of model ``name``: the resolver first, then the folder of the current file."""
+        found = self.resolver.find_package(name)
+        if found is not None:
+            return found
+        here = doc.base_dir
+        if here is None or not self.resolver.allowed(here):  # a string has no folder of its own
+            return None
+        for cand in (here if here.name == name else None, here.parent / name):
+            if cand is not None and cand.is_dir() and name not in ("", ".", ".."):
+                # a sibling of a model the user pointed at (models/a includes model://b): its files may be read
+                self.resolver = self.resolver.trusting(cand)
+                return cand.resolve()
+        return None
+
+    def resolve(self, uri: str, doc: _Doc) -> Path | None:
+        """A ``model://``, ``package://``, ``file://`` URI or path as a file system path (may not exist)."""
+        uri = uri.strip()
+        if uri.startswith("model://"):
+            name, _, sub = uri[len("model://") :].partition("/")
+            root = self.find_model_dir(name, doc)
+            if root is None:
+                return None
+            path = (root / sub).resolve()
+            return path if path == root or root in path.parents else None
+        try:
+            return self.resolver.resolve_uri(uri, base_dir=doc.base_dir)
+        except (OSError, ValueError):
+            return None
+
+    def pick_sdf(self, folder: Path, loc: SourceLocation) -> Path | None:
+        """The SDF file of a model folder: the highest ``model.config`` version we support."""
+        config = folder / "model.config"
+        candidates: list[tuple[Version, int, Path]] = []
+        if config.is_file():
+            try:
+                root = etree.fromstring(config.read_bytes(), etree.XMLParser(resolve_entities=False, no_network=True))
+            except (etree.XMLSyntaxError, OSError, ValueError):
+                root = None
+                self.sink.warning(ErrorCode.URI_UNRESOLVED, f"cannot read {config}; trying model.sdf", loc)
+            if root is not None:
+                for i, entry in enumerate(root.iter("sdf")):
+                    version = parse_version(entry.get("version"))
+                    file = (entry.text or "").strip()
+                    if version is not None and file and version <= MAX_VERSION:
+                        candidates.append((version, -i, folder / file))
+        for _, _, path in sorted(candidates, reverse=True):
+            if path.is_file():
+                return path
+        fallback = folder / "model.sdf"
+        return fallback if fallback.is_file() else None
