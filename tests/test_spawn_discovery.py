@@ -62,3 +62,35 @@ def test_a_ros2_control_robot_gets_no_second_joint_state_publisher() -> None:
         "name='gz_ros2_control::GazeboSimROS2ControlPlugin'/></model></sdf>",
     ):
         assert _spawn.with_joint_state_publisher(ros2_control) == ros2_control
+
+
+class _VolatileGraph(_Graph):
+    """The same, for a volatile publisher (its namespace, too, unknown until named)."""
+
+    def get_publishers_info_by_topic(self, topic: str) -> list[SimpleNamespace]:
+        (named,) = super().get_publishers_info_by_topic(topic)
+        known = named.node_name != UNKNOWN
+        return [
+            SimpleNamespace(
+                node_name=named.node_name,
+                node_namespace="/" if known else "_NODE_NAMESPACE_UNKNOWN_",
+                qos_profile=SimpleNamespace(durability=None),  # not TRANSIENT_LOCAL
+            )
+        ]
+
+
+def test_the_hint_for_a_silent_topic_names_a_publisher_the_graph_names_late(monkeypatch) -> None:
+    """A hog run's spawn said ``_NODE_NAMESPACE_UNKNOWN_/_NODE_NAME_UNKNOWN_ publishes /robot_description``:
+    the hint now waits for the graph to name the node."""
+    monkeypatch.setattr(_spawn, "NODE_NAME_WAIT_SEC", 5.0)
+    graph = _VolatileGraph("test_client", known_after=3)
+    hint = _spawn._topic_hint(graph, "robot_description")  # type: ignore[arg-type]
+    assert hint.startswith("/test_client publishes /robot_description but not latched"), hint
+    assert graph.queries == 4
+
+
+def test_the_hint_says_so_when_the_publisher_is_never_named(monkeypatch) -> None:
+    monkeypatch.setattr(_spawn, "NODE_NAME_WAIT_SEC", 0.2)
+    hint = _spawn._topic_hint(_VolatileGraph("test_client", known_after=10**6), "robot_description")  # type: ignore[arg-type]
+    assert hint.startswith("a node not yet named publishes /robot_description but not latched"), hint
+    assert "UNKNOWN" not in hint

@@ -98,29 +98,52 @@ def _read_topic(node: Node, executor: SingleThreadedExecutor, topic: str, timeou
     return got[0] if got else None
 
 
+UNKNOWN_NODE = "_NODE_NAME_UNKNOWN_"
+"""The node name the ROS graph gives a publisher whose node it has not heard of yet."""
+
+NODE_NAME_WAIT_SEC = 5.0
+"""How long the spawner waits for the ROS graph to name the description's publishers."""
+
+
 GRAPH_SETTLE_SEC = 2.0
 """How long the hint for a silent description topic waits for the graph to show its publishers."""
 
 
 def _topic_hint(node: Node, topic: str) -> str:
-    """What the graph says about a description topic that delivered nothing: who publishes it, or what to do."""
+    """What the graph says about a description topic that delivered nothing: who publishes it, or what to do.
+
+    A publisher's endpoint and the name of its node come on different discovery messages: on a loaded
+    machine the graph listed the publisher as ``_NODE_NAMESPACE_UNKNOWN_/_NODE_NAME_UNKNOWN_`` and the
+    hint named that. So it waits, at most :data:`NODE_NAME_WAIT_SEC`, for the publishers to be named."""
     name = topic if topic.startswith("/") else f"/{topic}"
     pubs: list = []
-    deadline = time.monotonic() + GRAPH_SETTLE_SEC
+    start = time.monotonic()
     while True:  # on a loaded machine discovery may lag behind the wait: give the graph a moment
         try:
             pubs = node.get_publishers_info_by_topic(name)
         except Exception:
             pubs = []
-        if pubs or time.monotonic() > deadline:
+        waited = time.monotonic() - start
+        if pubs and (all(p.node_name != UNKNOWN_NODE for p in pubs) or waited > NODE_NAME_WAIT_SEC):
             break
-        time.sleep(0.05)
+        if not pubs and waited > GRAPH_SETTLE_SEC:
+            break
+        time.sleep(0.05)  # the graph is kept by the middleware's own threads: no spinning needed
     if not pubs:
         return (
             f"no node publishes {name}. Start robot_state_publisher with your robot_description, or spawn the "
             "file directly: gazelle spawn -entity NAME -file robot.urdf.xacro"
         )
-    who = ", ".join(sorted({f"{p.node_namespace.rstrip('/')}/{p.node_name}" for p in pubs}))
+    who = ", ".join(
+        sorted(
+            {
+                f"{p.node_namespace.rstrip('/')}/{p.node_name}"
+                if p.node_name != UNKNOWN_NODE
+                else "a node not yet named"
+                for p in pubs
+            }
+        )
+    )
     latched = any(p.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for p in pubs)
     if not latched:
         return (
@@ -161,13 +184,6 @@ def with_robot_state_options(xml: str, *, enabled: bool, frame_prefix: str | Non
         i = xml.rindex("</model>")  # the outermost model closes last
         return xml[:i] + plugin + xml[i:]
     return xml
-
-
-UNKNOWN_NODE = "_NODE_NAME_UNKNOWN_"
-"""The node name the ROS graph gives a publisher whose node it has not heard of yet."""
-
-NODE_NAME_WAIT_SEC = 5.0
-"""How long the spawner waits for the ROS graph to name the description's publishers."""
 
 
 def _published_by_robot_state_publisher(node: Node, topic: str) -> bool:
