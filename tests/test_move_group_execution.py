@@ -9,7 +9,7 @@ import time
 
 import pytest
 
-from gazelle.ros import _move_group
+from gazelle.ros import _move_group_execution
 from gazelle.ros._move_group import Controller, MoveGroupNode
 
 JOINTS = ["panda_joint1", "panda_joint2"]
@@ -65,7 +65,7 @@ def test_a_controller_a_controller_manager_lists_late_is_used() -> None:
 
 
 def test_with_neither_the_wait_ends_at_its_bound(monkeypatch) -> None:
-    monkeypatch.setattr(_move_group, "CONTROLLER_WAIT", 0.3)
+    monkeypatch.setattr(_move_group_execution, "CONTROLLER_WAIT", 0.3)
     graph = _Graph(action=False, topics=False, after=0)
     t0 = time.monotonic()
     assert _wait(graph) == (False, None)
@@ -125,8 +125,8 @@ def test_a_two_arm_trajectory_goes_to_both_arms_controllers_each_with_its_part()
     left = Controller("left_arm_controller", "/left_arm_controller/follow_joint_trajectory", ("l1", "l2"))
     right = Controller("right_arm_controller", "/right_arm_controller/follow_joint_trajectory", ("r1", "r2"))
     other = Controller("torso_controller", "/torso_controller/follow_joint_trajectory", ("t1",))
-    assert _move_group._cover({"l1", "l2", "r1", "r2"}, [other, left, right]) == [left, right]
-    assert _move_group._cover({"l1", "x"}, [left, right]) == []  # no controller has x
+    assert _move_group_execution._cover({"l1", "l2", "r1", "r2"}, [other, left, right]) == [left, right]
+    assert _move_group_execution._cover({"l1", "x"}, [left, right]) == []  # no controller has x
     trajectory = JointTrajectory(
         joint_names=["l1", "r1", "l2", "r2"],
         points=[
@@ -134,7 +134,7 @@ def test_a_two_arm_trajectory_goes_to_both_arms_controllers_each_with_its_part()
             JointTrajectoryPoint(positions=[5.0, 6.0, 7.0, 8.0], time_from_start=Duration(sec=2)),
         ],
     )
-    part = _move_group._part(trajectory, ["r1", "r2"])
+    part = _move_group_execution._part(trajectory, ["r1", "r2"])
     assert part.joint_names == ["r1", "r2"]
     assert [list(p.positions) for p in part.points] == [[2.0, 4.0], [6.0, 8.0]]
     assert list(part.points[0].velocities) == [0.2, 0.4] and list(part.points[1].velocities) == []

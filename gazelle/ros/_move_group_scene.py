@@ -1,0 +1,224 @@
+"""move_group's planning scene: get/apply_planning_scene, the scene topics, the simulation's world and
+attached objects, kept in the planner."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from moveit_msgs.msg import (
+    AttachedCollisionObject,
+    CollisionObject,
+    PlanningScene,
+    PlanningSceneWorld,
+)
+from moveit_msgs.srv import (
+    ApplyPlanningScene,
+    GetPlanningScene,
+)
+
+from ..planning import PlanningError, SceneObject
+from ._move_group_base import (
+    MAX_SCENE_OBJECTS,
+    _MoveGroupBase,
+    _same_shapes,
+)
+from ._planning_scene import attached_message, checked_matrix, padded, shapes_of, to_message
+from ._planning_scene import matrix as _matrix
+
+
+class _Scene(_MoveGroupBase):
+    """The planning scene services and topics."""
+
+    # ------------------------------------------------------------------ planning scene
+    def _get_planning_scene(self, req: GetPlanningScene.Request, res: GetPlanningScene.Response) -> Any:
+        planner = self.planner
+        assert planner is not None
+        scene = res.scene
+        scene.name = "gazelle"
+        scene.robot_model_name = planner.semantics.robot_name
+        scene.robot_state = self._robot_state(planner.state(self._latest_joints or None))
+        objects = planner.objects()
+        scene.robot_state.attached_collision_objects = [attached_message(o) for o in objects if o.link]
+        scene.world.collision_objects = [to_message(o, planner.root_link) for o in objects if not o.link]
+        scene.is_diff = False
+        return res
+
+    def _apply_planning_scene(self, req: ApplyPlanningScene.Request, res: ApplyPlanningScene.Response) -> Any:
+        self._apply_scene(req.scene)
+        res.success = True
+        return res
+
+    def _scene_topic(self, topic: str, fn: Any) -> Any:
+        """A planning-scene topic's callback: under the planning lock, a bad message logged, not raised."""
+
+        def callback(msg: Any) -> None:
+            if self.planner is None:
+                return
+            try:
+                with self._lock:
+                    fn(msg)
+            except PlanningError as err:
+                self.get_logger().warning(f"/{topic}: {err.code}: {err.message}")
+
+        return callback
+
+    def _on_scene_diff(self, msg: PlanningScene) -> None:
+        self._apply_scene(msg)
+
+    def _on_collision_object(self, msg: CollisionObject) -> None:
+        self._apply_world_object(msg)
+
+    def _on_attached_object(self, msg: AttachedCollisionObject) -> None:
+        self._apply_attached(msg)
+
+    def _on_sim_world(self, msg: PlanningSceneWorld) -> None:
+        """The simulation's collision geometry: every entity link but this robot's, in the planning frame."""
+        if self.planner is None:
+            self._sim_world = msg  # taken when the robot is known
+            return
+        with self._lock:
+            self._take_sim_world(msg)
+
+    def _take_sim_world(self, msg: PlanningSceneWorld) -> None:
+        planner = self.planner
+        assert planner is not None
+        by_entity: dict[str, list[CollisionObject]] = {}
+        for co in msg.collision_objects:
+            entity, _, link = co.id.rpartition("::")
+            by_entity.setdefault(entity, []).append(co)
+        ours = {
+            entity
+            for entity, objects in by_entity.items()
+            if all(planner.has_link(co.id.rpartition("::")[2]) for co in objects)
+        }
+        root_in_world = self._root_in_world([co for e in ours for co in by_entity[e]])
+        world_to_root = np.linalg.inv(root_in_world)
+        names = set()
+        for entity, objects in by_entity.items():
+            if entity in ours:
+                continue
+            for co in objects:
+                at = world_to_root @ _matrix(co.pose)
+                names.add(co.id)
+                existing = self._find(co.id)
+                if existing is not None and existing.link:
+                    continue  # attached to the robot (a grasp): MoveIt's scene moves it with its link, not from here
+                pad = self.object_padding
+                shapes = tuple(padded(sh, pad) if pad else sh for sh in shapes_of(co, self._warn))
+                if not shapes:
+                    continue
+                if existing is not None and not existing.link and _same_shapes(existing.shapes, shapes):
+                    planner.move_object(co.id, at)
+                else:
+                    planner.add_object(SceneObject(co.id, shapes, at))
+        for stale in self._sim_objects - names:
+            obj = self._find(stale)
+            if obj is not None and not obj.link:
+                planner.remove_object(stale)
+        self._sim_objects = names
+
+    def _root_in_world(self, robot_links: list[CollisionObject]) -> np.ndarray:
+        """Where the planning frame (the robot's root link) is in the simulation's world: from a link of
+        this robot the simulation reports and the current joint values; the identity if none."""
+        planner = self.planner
+        assert planner is not None
+        q = planner.state(self._latest_joints or None)
+        for co in sorted(robot_links, key=lambda c: c.id.rpartition("::")[2] != planner.root_link):
+            link = co.id.rpartition("::")[2]
+            return _matrix(co.pose) @ np.linalg.inv(planner.fk(q, link))
+        return np.eye(4)
+
+    def _apply_scene(self, scene: PlanningScene) -> None:
+        planner = self.planner
+        assert planner is not None
+        given = len(scene.world.collision_objects) + len(scene.robot_state.attached_collision_objects)
+        if given > MAX_SCENE_OBJECTS:
+            raise PlanningError(
+                "FAILURE", f"the scene has {given} collision objects; at most {MAX_SCENE_OBJECTS} are planned with"
+            )
+        # every object is checked before any is applied: a bad one refuses the request, the scene unchanged
+        for co in [
+            *scene.world.collision_objects,
+            *(aco.object for aco in scene.robot_state.attached_collision_objects),
+        ]:
+            if co.operation != CollisionObject.REMOVE:
+                checked_matrix(co.pose, f"collision object '{co.id[:80]}'")
+                shapes_of(co, lambda _text: None)
+        if not scene.is_diff:  # a whole scene replaces the objects there are
+            for obj in planner.objects():
+                planner.remove_object(obj.name)
+        for co in scene.world.collision_objects:
+            self._apply_world_object(co)
+        for aco in scene.robot_state.attached_collision_objects:
+            self._apply_attached(aco)
+
+    def _find(self, name: str) -> SceneObject | None:
+        assert self.planner is not None
+        return next((o for o in self.planner.objects() if o.name == name), None)
+
+    def _apply_world_object(self, co: CollisionObject) -> None:
+        """A CollisionObject's ADD, REMOVE, APPEND or MOVE on the world's objects."""
+        planner = self.planner
+        assert planner is not None
+        existing = self._find(co.id) if co.id else None
+        if existing is not None and existing.link:
+            existing = None  # an attached object of that name is changed through attached_collision_object
+        if co.operation == CollisionObject.REMOVE:
+            targets = [existing] if co.id else [o for o in planner.objects() if not o.link]
+            for obj in targets:
+                if obj is not None:
+                    planner.remove_object(obj.name)
+            return
+        if not co.id:
+            raise PlanningError("INVALID_OBJECT_NAME", "a collision object needs an id")
+        if existing is None and co.operation == CollisionObject.ADD:
+            mine = [o for o in planner.objects() if not o.link and o.name not in self._sim_objects]
+            if len(mine) >= MAX_SCENE_OBJECTS:
+                raise PlanningError(
+                    "FAILURE", f"the scene holds {len(mine)} collision objects already; at most {MAX_SCENE_OBJECTS}"
+                )
+        pose = checked_matrix(co.pose, f"collision object '{co.id[:80]}'")
+        at = self._frame(co.header.frame_id, planner.state(self._latest_joints or None)) @ pose
+        if co.operation == CollisionObject.MOVE:
+            if existing is None:
+                raise PlanningError("INVALID_OBJECT_NAME", f"no collision object '{co.id}' to move")
+            planner.add_object(SceneObject(co.id, existing.shapes, at))
+            return
+        shapes = tuple(shapes_of(co, self._warn))
+        if co.operation == CollisionObject.APPEND and existing is not None:
+            relative = np.linalg.inv(existing.pose) @ at
+            shapes = existing.shapes + tuple(type(sh)(sh.kind, sh.dimensions, relative @ sh.pose) for sh in shapes)
+            at = existing.pose
+        if not shapes:
+            raise PlanningError("INVALID_OBJECT_NAME", f"collision object '{co.id}' has no shape gazelle plans with")
+        planner.add_object(SceneObject(co.id, shapes, at))
+
+    def _apply_attached(self, aco: AttachedCollisionObject) -> None:
+        """Attach an object to a link (a world object of that id, or the message's shapes) or detach it
+        back into the world where it is now."""
+        planner = self.planner
+        assert planner is not None
+        co = aco.object
+        q = planner.state(self._latest_joints or None)
+        if co.operation == CollisionObject.REMOVE:
+            attached = [o for o in planner.objects() if o.link and (o.name == co.id or not co.id)]
+            attached = [o for o in attached if not aco.link_name or o.link == aco.link_name]
+            for obj in attached:
+                world = planner.fk(q, obj.link) @ obj.pose
+                planner.add_object(SceneObject(obj.name, obj.shapes, world))
+            return
+        if not aco.link_name:
+            raise PlanningError("INVALID_LINK_NAME", f"attached object '{co.id}' names no link")
+        link_pose = planner.fk(q, aco.link_name)
+        existing = self._find(co.id)
+        if existing is not None and not co.primitives and not co.meshes:
+            world = existing.pose if not existing.link else planner.fk(q, existing.link) @ existing.pose
+            shapes, at = existing.shapes, np.linalg.inv(link_pose) @ world
+        else:
+            shapes = tuple(shapes_of(co, self._warn))
+            if not shapes:
+                raise PlanningError("INVALID_OBJECT_NAME", f"attached object '{co.id}' has no shape gazelle plans with")
+            frame = self._frame(co.header.frame_id or aco.link_name, q)
+            at = np.linalg.inv(link_pose) @ frame @ checked_matrix(co.pose, f"attached object '{co.id[:80]}'")
+        planner.add_object(SceneObject(co.id, shapes, at, aco.link_name, tuple(aco.touch_links)))
