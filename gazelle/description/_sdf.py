@@ -49,6 +49,7 @@ from ._model import (
     Pose,
     Scene,
     SphericalCoordinates,
+    Vec3,
     World,
 )
 from ._resources import ResourceResolver
@@ -331,54 +332,13 @@ class _Loader(_Parts):
                 child_name = self.name(child, doc)
                 if child_name is None or not register(child_name, tag, child):
                     continue
-                child_pose, child_rel = self.pose(child, doc)
-                child_loc = self.loc(child, doc)
-                if tag == "link":
-                    link_els.append((child_name, child))
-                    scope.nodes[child_name] = FrameNode(
-                        child_name, "link", child_pose, child_rel or "__model__", location=child_loc
-                    )
-                elif tag == "joint":
-                    joint_els.append((child_name, child))
-                    child_ref = self.text(child, "child") or ""
-                    scope.nodes[child_name] = FrameNode(
-                        child_name,
-                        "joint",
-                        child_pose,
-                        child_rel or child_ref or "__model__",
-                        attached_to=child_ref,
-                        location=child_loc,
-                    )
-                else:
-                    frame_els.append((child_name, child))
-                    attached = (child.get("attached_to") or "").strip() or None
-                    scope.nodes[child_name] = FrameNode(
-                        child_name,
-                        "frame",
-                        child_pose,
-                        child_rel or attached or "__model__",
-                        attached_to=attached,
-                        location=child_loc,
-                    )
+                {"link": link_els, "joint": joint_els, "frame": frame_els}[tag].append((child_name, child))
+                scope.nodes[child_name] = self.frame_node(tag, child_name, child, doc)
             elif tag in ("model", "include"):
-                sub = (
-                    self.model(child, doc, depth + 1)
-                    if tag == "model"
-                    else self.include(child, doc, depth, allow_light=False)
-                )
+                sub = self.model(child, doc, depth + 1) if tag == "model" else self.include(child, doc, depth, False)
                 if not isinstance(sub, _Built) or not register(sub.name, "model", child):
                     continue
-                post = IDENTITY
-                if sub.placement_frame is not None:
-                    inner = sub.exported.poses.get(sub.placement_frame)
-                    if inner is None:
-                        self.sink.error(
-                            ErrorCode.FRAME_INVALID,
-                            f"placement_frame '{sub.placement_frame}' is not a frame of model '{sub.name}'",
-                            sub.location,
-                        )
-                    else:
-                        post = inner.inverse()
+                post = self.placement(sub)
                 nested.append(sub)
                 scope.nested[sub.name] = sub.exported
                 scope.nodes[sub.name] = FrameNode(
@@ -386,6 +346,64 @@ class _Loader(_Parts):
                 )
 
         # -- canonical link
+        built.canonical = self.canonical_link(element, scope, link_els, nested, name, loc)
+        scope.canonical = built.canonical
+        if built.canonical is None:
+            self.sink.error(ErrorCode.LINK_MISSING, f"model '{name}' has no link", loc)
+            return None
+
+        # -- pass 2: links, joints, frames; then the nested models flattened into this one
+        self.model_parts(element, doc, scope, built, link_els, joint_els, frame_els)
+        self.flatten_nested(built, nested, scope)
+        built.exported = scope.export()
+        return built
+
+    def placement(self, sub: _Built) -> Pose:
+        """X_PM⁻¹ for a model placed by its ``placement_frame`` (identity without one, or a bad one: reported)."""
+        if sub.placement_frame is None:
+            return IDENTITY
+        inner = sub.exported.poses.get(sub.placement_frame)
+        if inner is None:
+            self.sink.error(
+                ErrorCode.FRAME_INVALID,
+                f"placement_frame '{sub.placement_frame}' is not a frame of model '{sub.name}'",
+                sub.location,
+            )
+            return IDENTITY
+        return inner.inverse()
+
+    def frame_node(self, tag: str, name: str, child: etree._Element, doc: _Doc) -> FrameNode:
+        """The frame-graph node of a model's ``<link>``, ``<joint>`` (attached to its child) or ``<frame>``."""
+        child_pose, child_rel = self.pose(child, doc)
+        child_loc = self.loc(child, doc)
+        if tag == "link":
+            return FrameNode(name, "link", child_pose, child_rel or "__model__", location=child_loc)
+        if tag == "joint":
+            child_ref = self.text(child, "child") or ""
+            return FrameNode(
+                name,
+                "joint",
+                child_pose,
+                child_rel or child_ref or "__model__",
+                attached_to=child_ref,
+                location=child_loc,
+            )
+        attached = (child.get("attached_to") or "").strip() or None
+        return FrameNode(
+            name, "frame", child_pose, child_rel or attached or "__model__", attached_to=attached, location=child_loc
+        )
+
+    def canonical_link(
+        self,
+        element: etree._Element,
+        scope: Scope,
+        link_els: list[tuple[str, etree._Element]],
+        nested: list[_Built],
+        name: str,
+        loc: SourceLocation,
+    ) -> str | None:
+        """The model's canonical link: ``canonical_link`` if it names one, else its first link, else the
+        first nested model's (scoped)."""
         canonical_attr = (element.get("canonical_link") or "").strip() or None
         if canonical_attr is not None:
             body = scope.body(canonical_attr, loc) if canonical_attr in scope.nodes or "::" in canonical_attr else None
@@ -398,21 +416,25 @@ class _Loader(_Parts):
                     ErrorCode.FRAME_INVALID, f"canonical_link '{canonical_attr}' is not a link of model '{name}'", loc
                 )
             else:
-                built.canonical = body
-        if built.canonical is None:
-            if link_els:
-                built.canonical = link_els[0][0]
-            else:
-                for sub in nested:
-                    if sub.canonical is not None:
-                        built.canonical = f"{sub.name}::{sub.canonical}"
-                        break
-        scope.canonical = built.canonical
-        if built.canonical is None:
-            self.sink.error(ErrorCode.LINK_MISSING, f"model '{name}' has no link", loc)
-            return None
+                return body
+        if link_els:
+            return link_els[0][0]
+        for sub in nested:
+            if sub.canonical is not None:
+                return f"{sub.name}::{sub.canonical}"
+        return None
 
-        # -- pass 2: links, joints, frames
+    def model_parts(
+        self,
+        element: etree._Element,
+        doc: _Doc,
+        scope: Scope,
+        built: _Built,
+        link_els: list[tuple[str, etree._Element]],
+        joint_els: list[tuple[str, etree._Element]],
+        frame_els: list[tuple[str, etree._Element]],
+    ) -> None:
+        """A model's links, joints, frames (in the frame of the body they are attached to) and plugins."""
         for link_name, link_el in link_els:
             link = self.link(link_name, link_el, doc, scope)
             if link is not None:
@@ -432,7 +454,8 @@ class _Loader(_Parts):
             if plugin is not None:
                 built.plugins.append(plugin)
 
-        # -- flatten nested models into this one
+    def flatten_nested(self, built: _Built, nested: list[_Built], scope: Scope) -> None:
+        """Nested models into ``built``; a static one inside a non-static model is welded to the world."""
         for sub in nested:
             X_MS = scope.pose(sub.name, sub.location)
             if X_MS is None:
@@ -449,8 +472,6 @@ class _Loader(_Parts):
                     )
                 )
                 built.world_joints[f"{sub.name}::__static_weld__"] = X_MS * _link_pose(sub, sub.canonical)
-        built.exported = scope.export()
-        return built
 
     def flatten(self, parent: _Built, sub: _Built, X_PS: Pose) -> None:
         """Move ``sub``'s content into ``parent`` with ``sub::`` names, given X_PS."""
@@ -522,6 +543,31 @@ class _Loader(_Parts):
         name = self.name(element, doc)
         loc = self.loc(element, doc)
         self.check(element, doc, "world")
+        physics_el = self.physics_element(element, doc)
+        gravity, magnetic = self.world_fields(element, physics_el, doc)
+        spherical = self.spherical_coordinates(element, doc)
+        physics = self.physics(physics_el, doc)
+        scene = self.scene(element, doc)
+        models, lights = self.world_contents(element, doc, name)
+        plugins = tuple(p for p in (self.plugin(e, doc) for e in _findall(element, "plugin")) if p is not None)
+        if name is None:
+            return None
+        return World(
+            name=name,
+            gravity=gravity,
+            physics=physics,
+            scene=scene,
+            models=tuple(models),
+            lights=tuple(lights),
+            plugins=plugins,
+            source_file=doc.source,
+            location=loc,
+            spherical_coordinates=spherical,
+            magnetic_field=magnetic,
+        )
+
+    def physics_element(self, element: etree._Element, doc: _Doc) -> etree._Element | None:
+        """The world's ``<physics>``: the one marked default, else the first (checked)."""
         physics_els = _findall(element, "physics")
         physics_el = next(
             (p for p in physics_els if parse_bool(p.get("default") or "") is True),
@@ -529,6 +575,10 @@ class _Loader(_Parts):
         )
         if physics_el is not None:
             self.check(physics_el, doc, "physics")
+        return physics_el
+
+    def world_fields(self, element: etree._Element, physics_el: etree._Element | None, doc: _Doc) -> tuple[Vec3, Vec3]:
+        """Gravity and the magnetic field: the world's own elements, else the ones SDF ≤ 1.5 kept in ``<physics>``."""
         gravity = (0.0, 0.0, -9.8)
         if _find(element, "gravity") is not None:
             gravity = self.vec3(element, "gravity", gravity, doc)
@@ -539,6 +589,9 @@ class _Loader(_Parts):
             magnetic = self.vec3(element, "magnetic_field", magnetic, doc)
         elif physics_el is not None and _find(physics_el, "magnetic_field") is not None:
             magnetic = self.vec3(physics_el, "magnetic_field", magnetic, doc)
+        return gravity, magnetic
+
+    def spherical_coordinates(self, element: etree._Element, doc: _Doc) -> SphericalCoordinates | None:
         spherical = None
         sph_el = _find(element, "spherical_coordinates")
         if sph_el is not None:
@@ -558,6 +611,10 @@ class _Loader(_Parts):
                 surface_model=(self.text(sph_el, "surface_model") or "EARTH_WGS84").strip(),
                 world_frame_orientation=orientation,
             )
+        return spherical
+
+    def physics(self, physics_el: etree._Element | None, doc: _Doc) -> PhysicsSettings:
+        """Step size and real-time settings (SDF ≤ 1.3 called the rate ``update_rate``); bad values reported."""
         default_physics = PhysicsSettings()
         step = self.number(physics_el, "max_step_size", default_physics.max_step_size_sec, doc)
         rate_tag = (
@@ -582,6 +639,9 @@ class _Loader(_Parts):
                     "real_time_factor and real_time_update_rate must be >= 0",
                     self.loc(physics_el, doc),
                 )
+        return physics
+
+    def scene(self, element: etree._Element, doc: _Doc) -> Scene:
         scene_el = _find(element, "scene")
         scene = Scene()
         if scene_el is not None:
@@ -592,6 +652,10 @@ class _Loader(_Parts):
                 shadows=self.flag(scene_el, "shadows", scene.shadows, doc),
                 grid=self.flag(scene_el, "grid", scene.grid, doc),
             )
+        return scene
+
+    def world_contents(self, element: etree._Element, doc: _Doc, name: str | None) -> tuple[list[Model], list[Light]]:
+        """The world's models (and includes) placed through its frame graph, and its lights."""
         scope = Scope("world", self.sink, canonical="world")
         builts: list[_Built] = []
         light_items: list[etree._Element | Light] = []
@@ -607,27 +671,7 @@ class _Loader(_Parts):
                 light_items.append(child)
                 continue
             elif tag == "frame":
-                frame_name = self.name(child, doc)
-                if frame_name is None:
-                    continue
-                if frame_name in names:
-                    self.sink.error(
-                        ErrorCode.DUPLICATE_NAME,
-                        f"name '{frame_name}' is used twice in world '{name}'",
-                        self.loc(child, doc),
-                    )
-                    continue
-                names.add(frame_name)
-                fpose, frel = self.pose(child, doc)
-                attached = (child.get("attached_to") or "").strip() or None
-                scope.nodes[frame_name] = FrameNode(
-                    frame_name,
-                    "frame",
-                    fpose,
-                    frel or attached or "world",
-                    attached_to=attached,
-                    location=self.loc(child, doc),
-                )
+                self.world_frame(child, doc, scope, names, name)
                 continue
             else:
                 continue
@@ -642,17 +686,7 @@ class _Loader(_Parts):
                     )
                     continue
                 names.add(sub.name)
-                post = IDENTITY
-                if sub.placement_frame is not None:
-                    inner = sub.exported.poses.get(sub.placement_frame)
-                    if inner is None:
-                        self.sink.error(
-                            ErrorCode.FRAME_INVALID,
-                            f"placement_frame '{sub.placement_frame}' is not a frame of model '{sub.name}'",
-                            sub.location,
-                        )
-                    else:
-                        post = inner.inverse()
+                post = self.placement(sub)
                 builts.append(sub)
                 scope.nested[sub.name] = sub.exported
                 scope.nodes[sub.name] = FrameNode(
@@ -671,21 +705,30 @@ class _Loader(_Parts):
             light = item if isinstance(item, Light) else self.light(item, doc, scope)
             if light is not None:
                 lights.append(light)
-        plugins = tuple(p for p in (self.plugin(e, doc) for e in _findall(element, "plugin")) if p is not None)
-        if name is None:
-            return None
-        return World(
-            name=name,
-            gravity=gravity,
-            physics=physics,
-            scene=scene,
-            models=tuple(models),
-            lights=tuple(lights),
-            plugins=plugins,
-            source_file=doc.source,
-            location=loc,
-            spherical_coordinates=spherical,
-            magnetic_field=magnetic,
+        return models, lights
+
+    def world_frame(self, child: etree._Element, doc: _Doc, scope: Scope, names: set[str], world: str | None) -> None:
+        """A world's ``<frame>`` into its frame graph (a name used twice is an error)."""
+        frame_name = self.name(child, doc)
+        if frame_name is None:
+            return
+        if frame_name in names:
+            self.sink.error(
+                ErrorCode.DUPLICATE_NAME,
+                f"name '{frame_name}' is used twice in world '{world}'",
+                self.loc(child, doc),
+            )
+            return
+        names.add(frame_name)
+        fpose, frel = self.pose(child, doc)
+        attached = (child.get("attached_to") or "").strip() or None
+        scope.nodes[frame_name] = FrameNode(
+            frame_name,
+            "frame",
+            fpose,
+            frel or attached or "world",
+            attached_to=attached,
+            location=self.loc(child, doc),
         )
 
 
