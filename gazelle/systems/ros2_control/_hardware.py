@@ -36,7 +36,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ...description import JointType, Pose, Ros2Control, rotation_matrix
+from ...description import ControlComponent, JointType, Pose, Ros2Control, rotation_matrix
 from ...physics import ActuatorHandle, ActuatorKind, BodyHandle, Entity, JointHandle, PhysicsWorld, ServoPlan
 from .._actuation import (
     PidGains,
@@ -123,7 +123,6 @@ class SimHardware:
         """Lifecycle state of the component (``set_hardware_component_state``)."""
         self.world = world
         self._log = log
-        model = entity.model
         self.states: dict[str, float] = {}
         """``joint/interface`` -> value read this cycle."""
         self.commands: dict[str, float] = {}
@@ -136,51 +135,7 @@ class SimHardware:
         self.sensors: dict[str, tuple[str, ...]] = {}
         where = f"{rc.location}: " if rc.location else ""
         for comp in rc.joints:
-            try:
-                j = model.joint(comp.name)
-            except KeyError:
-                raise ControlError(
-                    f"{where}ros2_control '{rc.name}': joint '{comp.name}' is not in the robot description"
-                ) from None
-            if j.type in (JointType.FIXED, JointType.FLOATING, JointType.PLANAR, JointType.BALL):
-                raise ControlError(
-                    f"{where}ros2_control '{rc.name}': joint '{comp.name}' is {j.type.value}; "
-                    "only revolute, continuous and prismatic joints have interfaces"
-                )
-            joint = _Joint(comp.name, world.joint(entity.name, comp.name))
-            speed = j.axis.limit.velocity if j.axis is not None else None
-            joint.max_speed = speed if speed and speed > 0 else 0.0
-            joint.keys = {k: f"{comp.name}/{k}" for k in JOINT_INTERFACES}
-            for ci in comp.command_interfaces:
-                kind = ci.name
-                if kind not in JOINT_INTERFACES:
-                    self._warn(
-                        f"{where}ros2_control '{rc.name}': command interface '{kind}' of joint '{comp.name}' "
-                        f"is not simulated (only {', '.join(JOINT_INTERFACES)}); no controller can claim it"
-                    )
-                    continue
-                if enforce_command_limits:
-                    joint.limits[kind] = (_float(ci.param("min"), -math.inf), _float(ci.param("max"), math.inf))
-                joint.commands[kind] = self._actuator(world, entity, comp.name, kind, j.type is JointType.CONTINUOUS)
-                self.commands[f"{comp.name}/{kind}"] = math.nan
-            for si in comp.state_interfaces:
-                if si.name not in JOINT_INTERFACES:
-                    self._warn(
-                        f"{where}ros2_control '{rc.name}': state interface '{si.name}' of joint '{comp.name}' "
-                        f"is not simulated (only {', '.join(JOINT_INTERFACES)})"
-                    )
-                    continue
-                self.states[f"{comp.name}/{si.name}"] = 0.0
-                init = si.param("initial_value")
-                if si.name == "position" and init is not None:
-                    joint.initial = _float(init, 0.0)
-            if j.mimic is not None:
-                joint.mimic = (j.mimic.joint, j.mimic.multiplier, j.mimic.offset)
-            joint.velocity = self._velocity_servos.get(comp.name)
-            if "position" in joint.commands:
-                act = joint.commands["position"]
-                joint.position = PositionServo(act, self._position_gains(world, model, comp.name))
-            self.joints[comp.name] = joint
+            self._add_joint(rc, comp, world, entity, where, enforce_command_limits)
         names = tuple(self.joints)
         self._group = world.joint_group(entity.name, names)
         servos = [j for j in self.joints.values() if j.position is not None]
@@ -202,6 +157,78 @@ class SimHardware:
             idx = [i for i, n in enumerate(names) if f"{n}/{kind}" in self.states]
             if idx:
                 self._read_plan.append((kind, idx, [f"{names[i]}/{kind}" for i in idx], len(idx) == len(names)))
+        self._wheel_casters(rc, world, entity)
+        self._sensor_readers: list[tuple[list[int], Callable[[], list[float]], list[str]]] = []
+        """Per wired sensor component: (indices into its reading, the reading function, the state keys)."""
+        self._wire_sensors(rc, world, entity, where)
+        if rc.gpios:
+            self._warn(
+                f"{where}ros2_control '{rc.name}': gpio components ({', '.join(c.name for c in rc.gpios)}) "
+                "are not simulated"
+            )
+
+    def _add_joint(
+        self,
+        rc: Ros2Control,
+        comp: ControlComponent,
+        world: PhysicsWorld,
+        entity: Entity,
+        where: str,
+        enforce_command_limits: bool,
+    ) -> None:
+        """One ``<joint>`` of the ros2_control block: its command interfaces become actuators (a position
+        one a :class:`PositionServo`), its state interfaces keys of :attr:`states`; what is not simulated
+        is a warning naming it."""
+        model = entity.model
+        try:
+            j = model.joint(comp.name)
+        except KeyError:
+            raise ControlError(
+                f"{where}ros2_control '{rc.name}': joint '{comp.name}' is not in the robot description"
+            ) from None
+        if j.type in (JointType.FIXED, JointType.FLOATING, JointType.PLANAR, JointType.BALL):
+            raise ControlError(
+                f"{where}ros2_control '{rc.name}': joint '{comp.name}' is {j.type.value}; "
+                "only revolute, continuous and prismatic joints have interfaces"
+            )
+        joint = _Joint(comp.name, world.joint(entity.name, comp.name))
+        speed = j.axis.limit.velocity if j.axis is not None else None
+        joint.max_speed = speed if speed and speed > 0 else 0.0
+        joint.keys = {k: f"{comp.name}/{k}" for k in JOINT_INTERFACES}
+        for ci in comp.command_interfaces:
+            kind = ci.name
+            if kind not in JOINT_INTERFACES:
+                self._warn(
+                    f"{where}ros2_control '{rc.name}': command interface '{kind}' of joint '{comp.name}' "
+                    f"is not simulated (only {', '.join(JOINT_INTERFACES)}); no controller can claim it"
+                )
+                continue
+            if enforce_command_limits:
+                joint.limits[kind] = (_float(ci.param("min"), -math.inf), _float(ci.param("max"), math.inf))
+            joint.commands[kind] = self._actuator(world, entity, comp.name, kind, j.type is JointType.CONTINUOUS)
+            self.commands[f"{comp.name}/{kind}"] = math.nan
+        for si in comp.state_interfaces:
+            if si.name not in JOINT_INTERFACES:
+                self._warn(
+                    f"{where}ros2_control '{rc.name}': state interface '{si.name}' of joint '{comp.name}' "
+                    f"is not simulated (only {', '.join(JOINT_INTERFACES)})"
+                )
+                continue
+            self.states[f"{comp.name}/{si.name}"] = 0.0
+            init = si.param("initial_value")
+            if si.name == "position" and init is not None:
+                joint.initial = _float(init, 0.0)
+        if j.mimic is not None:
+            joint.mimic = (j.mimic.joint, j.mimic.multiplier, j.mimic.offset)
+        joint.velocity = self._velocity_servos.get(comp.name)
+        if "position" in joint.commands:
+            act = joint.commands["position"]
+            joint.position = PositionServo(act, self._position_gains(world, model, comp.name))
+        self.joints[comp.name] = joint
+
+    def _wheel_casters(self, rc: Ros2Control, world: PhysicsWorld, entity: Entity) -> None:
+        """With two or more velocity-driven wheels, the spheres level with them roll as frictionless casters."""
+        model, log = entity.model, self._log
         wheels = list(self._velocity_servos_wheels)
         if len(wheels) >= 2:
             casters = ball_casters(model, wheels)
@@ -212,8 +239,10 @@ class SimHardware:
                     f"ros2_control '{rc.name}': {', '.join(casters)} roll as ball casters (frictionless spheres "
                     f"level with the wheels {', '.join(wheels)})"
                 )
-        self._sensor_readers: list[tuple[list[int], Callable[[], list[float]], list[str]]] = []
-        """Per wired sensor component: (indices into its reading, the reading function, the state keys)."""
+
+    def _wire_sensors(self, rc: Ros2Control, world: PhysicsWorld, entity: Entity, where: str) -> None:
+        """The ``<sensor>`` components: their state interfaces read from the robot's sensor of the same
+        name (imu, force_torque); one without such a sensor stays NaN, with a warning."""
         unwired = []
         for comp in rc.sensors:
             names = tuple(f"{comp.name}/{si.name}" for si in comp.state_interfaces)
@@ -231,11 +260,6 @@ class SimHardware:
             self._warn(
                 f"{where}ros2_control '{rc.name}': sensor component(s) {', '.join(unwired)} have no <sensor> of "
                 "the same name and type imu or force_torque in the robot: their state interfaces stay NaN"
-            )
-        if rc.gpios:
-            self._warn(
-                f"{where}ros2_control '{rc.name}': gpio components ({', '.join(c.name for c in rc.gpios)}) "
-                "are not simulated"
             )
 
     def _warn(self, text: str) -> None:
