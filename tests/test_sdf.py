@@ -522,3 +522,39 @@ def test_collide_without_contact_false_is_read_silently_and_true_collides_with_n
     ghost, said = model("true")
     assert len(said) == 1 and said[0].location is not None and said[0].location.line == 3
     assert ghost.link("l").collisions[0].surface.collide_bitmask == 0
+
+
+def _placed(frame: str) -> str:
+    return f"""<sdf version="1.8"><world name="w">
+  <model name="m" placement_frame="{frame}"><pose>1 0 0 0 0 0</pose>
+    <link name="base"><pose>0 0 0.5 0 0 0</pose><inertial><mass>1</mass></inertial></link>
+    <frame name="f" attached_to="base"><pose>0 0 0.2 0 0 0</pose></frame>
+  </model>
+  <model name="outer"><pose>0 2 0 0 0 0</pose><link name="l"><inertial><mass>1</mass></inertial></link>
+    <model name="inner" placement_frame="{frame}"><pose>0 0 1 0 0 0</pose>
+      <link name="base"><pose>0 0 0.5 0 0 0</pose><inertial><mass>1</mass></inertial></link>
+      <frame name="f" attached_to="base"><pose>0 0 0.2 0 0 0</pose></frame>
+    </model></model></world></sdf>"""
+
+
+def test_placement_frame_puts_the_named_frame_at_the_pose_and_a_frame_the_model_lacks_is_an_error() -> None:
+    """sdformat's placement_frame: the model's <pose> is where that frame goes, for a model in a world and
+    for a nested one (the world's, the nested and the top-level model's code share one reading of it)."""
+    world = load_string(_placed("f"), source="w.sdf").value
+    assert isinstance(world, World)
+    m, outer = world.models
+    assert close(m.pose.position, (1.0, 0.0, -0.7))  # f = base (0.5) + 0.2 lands at z = 0
+    inner_base = next(lk for lk in outer.links if lk.name == "inner::base")
+    assert close(inner_base.pose.position, (0.0, 0.0, 0.8))  # inner's f at z = 1 in outer's frame
+    with pytest.raises(ModelLoadError) as info:
+        load_string(_placed("nope"), source="w.sdf")
+    text = str(info.value)
+    assert "w.sdf:2: error: [FRAME_INVALID] placement_frame 'nope' is not a frame of model 'm'" in text
+    assert "w.sdf:7: error: [FRAME_INVALID] placement_frame 'nope' is not a frame of model 'inner'" in text
+
+    # a file whose root is the model: the same reading
+    root = _placed("f").split("\n")
+    model_only = '<sdf version="1.8">' + "\n".join(root[1:5]).replace("</model>", "") + "</model></sdf>"
+    assert close(load_string(model_only, source="m.sdf").value.pose.position, (1.0, 0.0, -0.7))
+    with pytest.raises(ModelLoadError, match=r"m.sdf:1: error: \[FRAME_INVALID\] placement_frame 'nope'"):
+        load_string(model_only.replace('placement_frame="f"', 'placement_frame="nope"'), source="m.sdf")

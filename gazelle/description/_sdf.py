@@ -135,15 +135,10 @@ class _Loader(_Parts):
                 return None
             pose = built.pose
             if built.placement_frame is not None:
-                inner = built.exported.poses.get(built.placement_frame)
-                if inner is None:
-                    self.sink.error(
-                        ErrorCode.FRAME_INVALID,
-                        f"placement_frame '{built.placement_frame}' is not a frame of model '{built.name}'",
-                        built.location,
-                    )
+                inverse = self.placement(built)
+                if inverse is None:
                     return None
-                pose = pose * inner.inverse()
+                pose = pose * inverse
             return self.finish_model(built, pose)
         if lights:
             for extra in lights[1:]:
@@ -338,7 +333,7 @@ class _Loader(_Parts):
                 sub = self.model(child, doc, depth + 1) if tag == "model" else self.include(child, doc, depth, False)
                 if not isinstance(sub, _Built) or not register(sub.name, "model", child):
                     continue
-                post = self.placement(sub)
+                post = self.placement(sub) or IDENTITY  # a bad placement_frame: reported, placed as if none
                 nested.append(sub)
                 scope.nested[sub.name] = sub.exported
                 scope.nodes[sub.name] = FrameNode(
@@ -358,8 +353,9 @@ class _Loader(_Parts):
         built.exported = scope.export()
         return built
 
-    def placement(self, sub: _Built) -> Pose:
-        """X_PM⁻¹ for a model placed by its ``placement_frame`` (identity without one, or a bad one: reported)."""
+    def placement(self, sub: _Built) -> Pose | None:
+        """X_PM⁻¹ for a model placed by its ``placement_frame`` (identity without one); None, reported, when
+        the frame is not one of the model's."""
         if sub.placement_frame is None:
             return IDENTITY
         inner = sub.exported.poses.get(sub.placement_frame)
@@ -369,7 +365,7 @@ class _Loader(_Parts):
                 f"placement_frame '{sub.placement_frame}' is not a frame of model '{sub.name}'",
                 sub.location,
             )
-            return IDENTITY
+            return None
         return inner.inverse()
 
     def frame_node(self, tag: str, name: str, child: etree._Element, doc: _Doc) -> FrameNode:
@@ -686,7 +682,7 @@ class _Loader(_Parts):
                     )
                     continue
                 names.add(sub.name)
-                post = self.placement(sub)
+                post = self.placement(sub) or IDENTITY  # a bad placement_frame: reported, placed as if none
                 builts.append(sub)
                 scope.nested[sub.name] = sub.exported
                 scope.nodes[sub.name] = FrameNode(

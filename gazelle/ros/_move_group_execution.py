@@ -83,11 +83,7 @@ class _Execution(_Planning):
         result.error_code.message = message
         if code == "SUCCESS":
             result.executed_trajectory = result.planned_trajectory
-            handle.succeed()
-        elif code == "PREEMPTED":
-            handle.canceled()
-        else:
-            handle.abort()
+        _end_goal(handle, code)
         return result
 
     def _execute_trajectory(self, handle: Any) -> ExecuteTrajectory.Result:
@@ -102,12 +98,7 @@ class _Execution(_Planning):
         code, message = self._run(trajectory, handle)
         result.error_code = _code(code)
         result.error_code.message = message
-        if code == "SUCCESS":
-            handle.succeed()
-        elif code == "PREEMPTED":
-            handle.canceled()
-        else:
-            handle.abort()
+        _end_goal(handle, code)
         return result
 
     def _check_trajectory(self, trajectory: JointTrajectory) -> str | None:
@@ -415,6 +406,16 @@ class _Execution(_Planning):
         if res.error_code != FollowJointTrajectory.Result.SUCCESSFUL:
             return "CONTROL_FAILED", f"{controller.name}: {res.error_string or res.error_code}"
         return "SUCCESS", ""
+
+
+def _end_goal(handle: Any, code: str) -> None:
+    """End an action goal as its MoveItErrorCodes name says: succeeded, canceled (preempted) or aborted."""
+    if code == "SUCCESS":
+        handle.succeed()
+    elif code == "PREEMPTED":
+        handle.canceled()
+    else:
+        handle.abort()
 
 
 def _cover(joints: set[str], controllers: list[Controller]) -> list[Controller]:
