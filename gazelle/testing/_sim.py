@@ -32,6 +32,22 @@ class SimError(RuntimeError):
     with the last lines the process printed."""
 
 
+def collect_lines(popen: subprocess.Popen[str], lines: list[str], cond: threading.Condition) -> None:
+    """Append each line ``popen`` prints to ``lines`` (under ``cond``, waking its waiters) until it ends.
+
+    The process is reaped before the last wake-up, so a waiter woken by it sees the exit (``poll()`` was
+    None for a moment after EOF, and a process that died at once cost a waiter its whole timeout)."""
+    assert popen.stdout is not None
+    for line in popen.stdout:
+        with cond:
+            lines.append(line.rstrip("\n"))
+            cond.notify_all()
+    with contextlib.suppress(subprocess.TimeoutExpired):
+        popen.wait(5)
+    with cond:
+        cond.notify_all()
+
+
 class ChildProcess:
     """A process the test started (the server, a spawn, a launch, a recorder), in a process group of its
     own so that stopping it stops everything it started; its output is kept line by line."""
@@ -55,15 +71,7 @@ class ChildProcess:
         threading.Thread(target=self._read, name=f"gazelle-test-{name}", daemon=True).start()
 
     def _read(self) -> None:
-        assert self.popen.stdout is not None
-        for line in self.popen.stdout:
-            with self._cond:
-                self.lines.append(line.rstrip("\n"))
-                self._cond.notify_all()
-        with contextlib.suppress(subprocess.TimeoutExpired):
-            self.popen.wait(5)
-        with self._cond:
-            self._cond.notify_all()
+        collect_lines(self.popen, self.lines, self._cond)
 
     @property
     def output(self) -> str:

@@ -5,7 +5,6 @@ fixtures that use them are in conftest.py; test modules import these from here.
 
 from __future__ import annotations
 
-import contextlib
 import math
 import os
 import signal
@@ -21,6 +20,8 @@ from typing import Any
 import pytest
 import rclpy
 from _paths import REPO, SEED_XACRO  # noqa: F401 - the ros and viewer tests import them from here
+
+from gazelle.testing._sim import collect_lines
 
 SQUARE_NODE = REPO / "examples" / "simple_robot" / "simple_robot" / "square_movement.py"
 GAZELLE = [sys.executable, "-m", "gazelle.cli"]
@@ -48,20 +49,7 @@ class Proc:
     _cond: threading.Condition = field(default_factory=threading.Condition)
 
     def start_reader(self) -> None:
-        def read() -> None:
-            assert self.popen.stdout is not None
-            for line in self.popen.stdout:
-                with self._cond:
-                    self.lines.append(line.rstrip("\n"))
-                    self._cond.notify_all()
-            # reaped before the last notify: a wait_line woken by it sees the exit (poll() was None for a
-            # moment after EOF, and a process that died at once cost the whole timeout)
-            with contextlib.suppress(subprocess.TimeoutExpired):
-                self.popen.wait(5)
-            with self._cond:
-                self._cond.notify_all()
-
-        threading.Thread(target=read, daemon=True).start()
+        threading.Thread(target=collect_lines, args=(self.popen, self.lines, self._cond), daemon=True).start()
 
     def wait_line(self, needle: str, timeout: float) -> str:
         deadline = time.monotonic() + timeout
