@@ -109,26 +109,33 @@ GRAPH_SETTLE_SEC = 2.0
 """How long the hint for a silent description topic waits for the graph to show its publishers."""
 
 
-def _topic_hint(node: Node, topic: str) -> str:
-    """What the graph says about a description topic that delivered nothing: who publishes it, or what to do.
+def _named_publishers(node: Node, topic: str, *, appear_within: float) -> list:
+    """The publishers of ``topic`` as the graph lists them, once it has named their nodes.
 
     A publisher's endpoint and the name of its node come on different discovery messages: on a loaded
-    machine the graph listed the publisher as ``_NODE_NAMESPACE_UNKNOWN_/_NODE_NAME_UNKNOWN_`` and the
-    hint named that. So it waits, at most :data:`NODE_NAME_WAIT_SEC`, for the publishers to be named."""
-    name = topic if topic.startswith("/") else f"/{topic}"
-    pubs: list = []
+    machine the graph lists it as ``_NODE_NAME_UNKNOWN_`` for a while. This waits, at most
+    :data:`NODE_NAME_WAIT_SEC`, until every publisher is named, and at most ``appear_within`` seconds for a
+    first one to appear (0: answer at once when there is none). [] when the graph cannot be read."""
     start = time.monotonic()
-    while True:  # on a loaded machine discovery may lag behind the wait: give the graph a moment
+    while True:
         try:
-            pubs = node.get_publishers_info_by_topic(name)
-        except Exception:
-            pubs = []
+            pubs = node.get_publishers_info_by_topic(topic)
+        except Exception:  # a graph that cannot be read has no publishers to name
+            return []
         waited = time.monotonic() - start
-        if pubs and (all(p.node_name != UNKNOWN_NODE for p in pubs) or waited > NODE_NAME_WAIT_SEC):
-            break
-        if not pubs and waited > GRAPH_SETTLE_SEC:
-            break
+        if pubs and (all(p.node_name != UNKNOWN_NODE for p in pubs) or waited >= NODE_NAME_WAIT_SEC):
+            return pubs
+        if not pubs and waited >= appear_within:
+            return []
         time.sleep(0.05)  # the graph is kept by the middleware's own threads: no spinning needed
+
+
+def _topic_hint(node: Node, topic: str) -> str:
+    """What the graph says about a description topic that delivered nothing: who publishes it, or what to do
+    (a loaded run's hint named ``_NODE_NAMESPACE_UNKNOWN_/_NODE_NAME_UNKNOWN_``: it now waits for the names)."""
+    name = topic if topic.startswith("/") else f"/{topic}"
+    # on a loaded machine discovery may lag behind the wait: give the graph a moment to show them
+    pubs = _named_publishers(node, name, appear_within=GRAPH_SETTLE_SEC)
     if not pubs:
         return (
             f"no node publishes {name}. Start robot_state_publisher with your robot_description, or spawn the "
@@ -195,17 +202,7 @@ def _published_by_robot_state_publisher(node: Node, topic: str) -> bool:
     it and gazelle's built-in one published the robot's TF). So the answer waits, at most
     :data:`NODE_NAME_WAIT_SEC`, until every publisher of the topic is named."""
     name = topic if topic.startswith("/") else f"/{topic}"
-    deadline = time.monotonic() + NODE_NAME_WAIT_SEC
-    while True:
-        try:
-            names = [p.node_name for p in node.get_publishers_info_by_topic(name)]
-        except Exception:
-            return False
-        if "robot_state_publisher" in names:
-            return True
-        if UNKNOWN_NODE not in names or time.monotonic() >= deadline:
-            return False
-        time.sleep(0.05)  # the graph is kept by the middleware's own threads: no spinning needed
+    return any(p.node_name == "robot_state_publisher" for p in _named_publishers(node, name, appear_within=0.0))
 
 
 def _has_ros2_control(xml: str) -> bool:
