@@ -19,6 +19,7 @@ from typing import Any
 
 from ._domain import environ_applied
 from ._ros_node import RosTestNode, TestTimeout
+from ._settle import Settler
 
 __all__ = ["ChildProcess", "Sim", "SimError"]
 
@@ -150,11 +151,16 @@ class Sim:
         record: tuple[str | os.PathLike[str], Sequence[str]] | None = None,
         server_args: Sequence[str] = (),
         replay: tuple[str | os.PathLike[str], Sequence[str]] | None = None,
+        settle_timeout: float = 10.0,
     ) -> None:
         """``record``: (folder, topics) to record from the first step (see :meth:`record`); the recorder
         starts beside the server, so their start-ups overlap. ``replay``: (file, topics): the server keeps
-        a replay page of the run since the last reset there (written at its end, or by :meth:`save_replay`)."""
+        a replay page of the run since the last reset there (written at its end, or by :meth:`save_replay`).
+        ``settle_timeout``: after each chunk of stepped time, wait up to this many wall seconds until the
+        processes the test started (:meth:`run`, :meth:`launch`) are idle (lockstep, see ``_settle``); 0
+        steps without waiting for them."""
         self.domain_id = domain_id
+        self._settler = Settler(settle_timeout)
         self.seed = seed
         self.paused = paused
         self.env = {
@@ -290,7 +296,25 @@ class Sim:
                 steps -= chunk
         # /clock is published every 10 ms of sim time (gazelle sim's --clock-rate): the last tick heard
         heard_target = math.floor(target * 100 + 1e-6) / 100
-        return self.ros.wait_for_sim_time(heard_target, timeout=wall_timeout)
+        now = self.ros.wait_for_sim_time(heard_target, timeout=wall_timeout)
+        if self.paused:
+            self._settle()
+        return now
+
+    def _settle(self) -> None:
+        """Lockstep: wait until the nodes the test started have taken the time just stepped (their timers
+        run, their replies sent), so that a node the machine delays does not fall behind the world."""
+        nodes = [c.popen.pid for c in self.children[self._kept :] if c.popen.poll() is None]
+        busy = self._settler.wait(nodes)
+        if busy:
+            import warnings
+
+            names = ", ".join(sorted({f"{name} (pid {pid})" for pid, name in busy}))
+            warnings.warn(
+                f"gazelle: {names} stayed busy for {self._settler.timeout:g} s of wall time after a step; "
+                "the world steps on without waiting for that process from now on",
+                stacklevel=3,
+            )
 
     def run_until(
         self,
@@ -304,9 +328,10 @@ class Sim:
         (checked every ``step`` seconds of sim time, 50 ms by default); returns the predicate's value, or
         fails the test naming ``what`` and the sim time waited.
 
-        The world is paused between two chunks, and the nodes under test catch up meanwhile: a node
-        timing its commands on sim time acts at most one chunk late, so a smaller ``step`` (0.01) suits
-        a test of open-loop timing (the seed's square), at the cost of more service calls."""
+        The world is paused between two chunks until the processes the test started are idle (see
+        ``settle_timeout``): a node timing its commands on sim time acts within the chunk its time falls
+        in however busy the machine is, so a smaller ``step`` (0.01) suits a test of open-loop timing (the
+        seed's square), at the cost of more service calls."""
         assert self.ros is not None
         if not (step > 0 and math.isfinite(step)):
             raise ValueError(f"run_until's step must be a finite time > 0, got {step!r}")

@@ -11,7 +11,9 @@ Fixtures for a user's own robot tests (see docs/robot_tests.md):
 * ``gazelle_world``: a simulation inside the test's process, no ROS: the test steps it, publishes on its
   bus and reads its states (bit-identical from run to run).
 
-Configure a test with ``@pytest.mark.gazelle(world=..., record=[...], paused=True, rtf=None)``. A failing
+Configure a test with ``@pytest.mark.gazelle(world=..., record=[...], paused=True, rtf=None, lockstep=True)``
+(``lockstep``: after each chunk of stepped time, wait until the processes the test started are idle, so
+a starved node never falls behind the world in sim time). A failing
 test keeps an MCAP bag (rosbag2 layout) of the topics it named plus /tf, /tf_static and /clock, a
 replay (``replay.html``: the world from above on a timeline, the named topics' values at the cursor;
 it opens from disk in any browser), and the server's output, under ``--gazelle-artifacts-dir``
@@ -131,7 +133,7 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
     options = _marker_options(request)
     record = list(options.pop("record", ()))
     options.pop("seed", None)
-    unknown = set(options) - {"world", "paused", "rtf", "start_timeout"}
+    unknown = set(options) - {"world", "paused", "rtf", "start_timeout", "lockstep"}
     if unknown:
         pytest.fail(f"@pytest.mark.gazelle: unknown option(s) {', '.join(sorted(unknown))}", pytrace=False)
     world = options.get("world")
@@ -158,6 +160,7 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
                 rtf=options.get("rtf"),
                 env=env,
                 start_timeout=float(options.get("start_timeout", 60.0)),
+                settle_timeout=_settle_timeout(options),
                 record=(folder / "bag", record) if mode != "none" else None,
                 # the server writes the replay page as it stops: the bodies from above on a timeline, the
                 # recorded topics' values at the cursor (those the simulation publishes)
@@ -188,6 +191,12 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
         if leaks:
             listed = "; ".join(f"pid {pid} ({cmd[:120]})" for pid, cmd in leaks)
             pytest.fail(f"the test left {len(leaks)} process(es) running (killed now): {listed}", pytrace=False)
+
+
+def _settle_timeout(options: dict[str, Any]) -> float:
+    """``lockstep`` (default True): after each chunk of stepped time the world waits, up to 10 s of wall
+    time, until the processes the test started are idle; ``lockstep=False`` steps on regardless."""
+    return 10.0 if options.get("lockstep", True) else 0.0
 
 
 def _artifacts_base(config: pytest.Config) -> Path:
@@ -224,6 +233,7 @@ def gazelle_sim_module(request: pytest.FixtureRequest) -> Iterator[Any]:
                 world=world,
                 seed=int(seed or 0),
                 paused=True,
+                settle_timeout=_settle_timeout(options),
                 record=(live / "bag0", record) if mode != "none" else None,
                 replay=(live / "replay.html", record) if mode != "none" else None,
             )

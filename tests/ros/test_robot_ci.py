@@ -91,6 +91,75 @@ def test_the_example_packages_robot_tests_pass_with_plain_pytest(tmp_path: Path)
     assert survivors(mark) == []
 
 
+SLOW_NODE = """
+import time
+
+import rclpy
+from rclpy.node import Node
+from rclpy.parameter import Parameter
+from std_msgs.msg import Float64
+
+
+class SlowTicker(Node):
+    \"\"\"A 10 Hz timer on sim time that takes 50 ms of CPU per tick, then says the time it read.\"\"\"
+
+    def __init__(self):
+        super().__init__("slow_ticker", parameter_overrides=[Parameter("use_sim_time", value=True)])
+        self.pub = self.create_publisher(Float64, "/ticks", 100)
+        self.create_timer(0.1, self.tick)
+
+    def tick(self):
+        now = self.get_clock().now().nanoseconds / 1e9
+        if now == 0.0:
+            return  # no /clock yet
+        end = time.process_time() + 0.05
+        while time.process_time() < end:
+            pass
+        self.pub.publish(Float64(data=now))
+
+
+rclpy.init()
+rclpy.spin(SlowTicker())
+"""
+
+LOCKSTEP = """
+import sys
+
+from std_msgs.msg import Float64
+
+NODE = {node!r}
+
+
+def test_a_slow_node_ticks_every_tenth_of_a_second_of_sim_time(gazelle_sim, ros):
+    ticks = ros.subscribe("/ticks", Float64)
+    gazelle_sim.run([sys.executable, NODE], name="slow_ticker")
+    ros.wait_until(lambda: ros.node.count_publishers("/ticks") > 0, 60, "the slow_ticker node")
+    # start-up: the node's /clock subscription is matched some time after its publisher was seen (the
+    # world steps on meanwhile: nothing waits for discovery), and its timer's first period is measured
+    # from whichever clock it had; from its third tick on it runs on the clock the test steps
+    gazelle_sim.run_until(lambda: len(ticks) >= 3, timeout=10.0, what="3 ticks", step=0.01)
+    first = len(ticks)
+    gazelle_sim.run_until(lambda: len(ticks) >= first + 30, timeout=10.0, what="30 more ticks", step=0.01)
+    times = [m.data for m in ticks.messages[first - 1 :]]
+    gaps = [round(b - a, 4) for a, b in zip(times, times[1:])]
+    assert len(gaps) >= 30 and all(abs(g - 0.1) < 0.011 for g in gaps), gaps
+"""
+
+
+def test_lockstep_a_node_slower_than_the_stepping_still_ticks_on_time(tmp_path: Path) -> None:
+    """A node that takes 50 ms of CPU for each tick of its 10 Hz sim-time timer, while the test steps
+    10 ms chunks in a few ms each: with lockstep the world waits for it after each chunk, and it reads
+    the time of every tick (gaps of 0.1 s within a chunk); without (``lockstep=False``, the behaviour
+    before) it fell behind, ticks skipped and its gaps grew to 0.2-0.5 s."""
+    node = tmp_path / "slow_ticker.py"
+    node.write_text(SLOW_NODE)
+    (tmp_path / "test_lockstep.py").write_text(LOCKSTEP.format(node=str(node)))
+    out, mark = inner_pytest(["test_lockstep.py", "--gazelle-artifacts=none"], tmp_path)
+    assert out.returncode == 0, out.stdout[-4000:] + out.stderr[-2000:]
+    assert "1 passed" in out.stdout and "stayed busy" not in out.stdout, out.stdout[-2000:]
+    assert survivors(mark) == []
+
+
 FAILING = """
 import pytest
 from nav_msgs.msg import Odometry
