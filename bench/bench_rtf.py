@@ -65,7 +65,11 @@ SUBSCRIBER = textwrap.dedent(
 
 
 def with_listener(topics: str, pubs: list, sim, seconds: float) -> tuple[float, str]:
-    """Run the sim thread for ``seconds`` while a plain rclpy process subscribes to ``topics``."""
+    """Run the sim thread for ``seconds`` while a plain rclpy process subscribes to ``topics``, once every
+    publisher in ``pubs`` has matched it (none given is an error: the runs would start before discovery,
+    and a run then timed up to 3 s with nobody matched, publishing nothing)."""
+    if not pubs:
+        raise RuntimeError(f"no publishers on {topics} to wait for")
     proc = subprocess.Popen(
         [sys.executable, "-c", SUBSCRIBER, topics],
         stdin=subprocess.PIPE,

@@ -61,7 +61,7 @@ from ..systems import (
     TransformBatch,
     UpdateInfo,
 )
-from ._cdr import serialized_joint_states
+from ._cdr import raw_serializer, serialize_clock, serialized_joint_states
 from ._convert import FROM_ROS, from_pose_msg, ros_type, to_pose_msg, to_ros, to_time
 from ._exposure import ServerRegistry
 from ._names import gz_topic_on_ros
@@ -317,7 +317,7 @@ class SimulationNode(Node):
     def ros_publishers(self, topic: str) -> list[Any]:
         """The rclpy publishers this bridge has on ``topic`` (one per message type and QoS)."""
         with self._lock:
-            return [entry.handle for key, entry in self._pubs.items() if key[0] == topic]
+            return [entry.handle for key, entry in self._pubs.items() if key[1] == topic]  # (node, topic, type)
 
     def publish_clock(self, sim_time: float) -> None:
         """Publish ``sim_time`` on /clock, at once, from the calling thread.
@@ -327,9 +327,8 @@ class SimulationNode(Node):
         :meth:`_on_step`). Queued behind /odom and /tf, it reached a node late and the seed's
         square node turned 131° instead of 90° (a fresh-clone run, 10× real time, 2 cores).
         """
-        msg = Clock()
-        msg.clock = to_time(sim_time)
-        self._clock_pub.publish(msg)
+        data = serialize_clock(sim_time)  # 12 bytes from a template: this runs on the simulation thread
+        self._clock_pub.publish(data if data is not None else Clock(clock=to_time(sim_time)))
 
     def _on_step(self, info: UpdateInfo) -> None:
         """A /clock period of sim time went by (the runtime calls this at the clock rate, and after a reset)."""
@@ -420,7 +419,8 @@ class SimulationNode(Node):
                 static_lane = entry.lane
                 sink = lambda payload: self._publish_static(static_lane, ep, payload)
             else:
-                lane = self.outbox.lane(functools.partial(_publish_converted, handle, convert), ep.depth, ep.topic)
+                publish = functools.partial(_publish_converted, handle, convert, raw_serializer(ep.msg_type))
+                lane = self.outbox.lane(publish, ep.depth, ep.topic)
                 sink = lane.put
                 with self._lock:
                     self._lanes[id(ep)] = lane
@@ -948,16 +948,21 @@ class RosBridge:
         self._thread.join(timeout=2.0)
 
 
-def _publish_converted(handle: Any, convert: Callable[[Any], Any], payload: Any) -> None:
-    """Publish one payload, or each of a :class:`PayloadBlock`'s in order (on the publisher thread): a
-    block of joint states as bytes serialized from a template (:mod:`._cdr`), the others as messages."""
+def _publish_converted(
+    handle: Any, convert: Callable[[Any], Any], raw: Callable[[Any], bytes | None] | None, payload: Any
+) -> None:
+    """Publish one payload, or each of a :class:`PayloadBlock`'s in order (on the publisher thread): as
+    bytes serialized from a template where its kind has one (:mod:`._cdr`: a block of joint states,
+    Odometry, TF, Imu, JointState), the others as messages built by ``convert``."""
     if isinstance(payload, PayloadBlock):
-        raw = serialized_joint_states(payload) if isinstance(payload, JointStatesBlock) else None
-        if raw is not None:
-            for one in raw:
+        block = serialized_joint_states(payload) if isinstance(payload, JointStatesBlock) else None
+        if block is not None:
+            for one in block:
                 handle.publish(one)
             return
         for one in payload:
-            handle.publish(convert(one))
-    else:
-        handle.publish(convert(payload))
+            data = raw(one) if raw is not None else None
+            handle.publish(data if data is not None else convert(one))
+        return
+    data = raw(payload) if raw is not None else None
+    handle.publish(data if data is not None else convert(payload))

@@ -184,10 +184,12 @@ def test_the_simulation_thread_queues_and_a_publisher_thread_publishes(monkeypat
     from gazelle.worlds import default_world
 
     threads: dict[str, set[str]] = {}
+    kinds: dict[str, set[str]] = {}
     real_publish = Publisher.publish
 
     def spy(self, msg):
-        threads.setdefault(type(msg).__name__, set()).add(threading.current_thread().name)
+        threads.setdefault(self.topic_name, set()).add(threading.current_thread().name)
+        kinds.setdefault(self.topic_name, set()).add(type(msg).__name__)
         return real_publish(self, msg)
 
     monkeypatch.setattr(Publisher, "publish", spy)
@@ -200,15 +202,20 @@ def test_the_simulation_thread_queues_and_a_publisher_thread_publishes(monkeypat
     bridge = RosBridge(sim)
     try:
         sim.spawn(load_string(xacro_to_urdf(SEED_XACRO)).value, name="simple_robot", pose=Pose((0, 0, 0.07)))
+        # the bench counts these publishers' subscribers (it matched nothing when this named none)
+        assert bridge.node.ros_publishers("/odom") and len(bridge.node.ros_publishers("/tf")) == 2  # drive, RSP
         sim.start()
         wait_for(lambda: all(got.get(t, 0) >= 5 for t in ("/clock", "/odom", "/tf", "/model_states")), 30, "messages")
     finally:
         sim.stop()
         bridge.shutdown()
-    for name in ("Odometry", "TFMessage", "ModelStates"):
-        assert threads[name] == {"gazelle-publish"}, threads
+    for topic in ("/odom", "/tf", "/model_states"):
+        assert threads[topic] == {"gazelle-publish"}, threads
     # /clock is the exception: it paces use_sim_time nodes, so it goes out at once from the sim thread
-    assert threads["Clock"] <= {"gazelle-sim", "MainThread"}, threads
+    assert threads["/clock"] <= {"gazelle-sim", "MainThread"}, threads
+    # fixed layouts go out as bytes from a template (gazelle/ros/_cdr.py), the others as messages
+    assert kinds["/odom"] == kinds["/tf"] == kinds["/clock"] == {"bytes"}, kinds
+    assert kinds["/model_states"] == {"ModelStates"}, kinds
 
 
 def test_a_shut_down_bridge_leaves_no_half_destroyed_node_in_the_graph(ros_client):
