@@ -158,6 +158,163 @@ def _viewer_url(sim: _Child) -> str | None:
     return None
 
 
+class _GroundTruth:
+    """/odom heard, and the robot's pose asked of /get_entity_state every 20 ms (a thread of its own)."""
+
+    def __init__(self, node: Any) -> None:
+        from gazebo_msgs.srv import GetEntityState
+        from nav_msgs.msg import Odometry
+
+        self.truth: list[Sample] = []
+        self.odom: list[Sample] = []
+        self._lock = threading.Lock()
+        self._done = threading.Event()
+        self._request = GetEntityState.Request(name="simple_robot")
+        node.create_subscription(Odometry, "/odom", self._on_odom, 100)
+        self.client = node.create_client(GetEntityState, "/get_entity_state")
+        self._thread = threading.Thread(target=self._sample, daemon=True)
+
+    def _on_odom(self, msg: Any) -> None:
+        with self._lock:
+            self.odom.append(Sample.of(msg.header.stamp, msg.pose.pose))
+
+    def _sample(self) -> None:
+        while not self._done.is_set():
+            fut = self.client.call_async(self._request)
+            ev = threading.Event()
+            fut.add_done_callback(lambda _f, ev=ev: ev.set())
+            r = fut.result() if ev.wait(5) else None
+            if r is not None and r.success:
+                with self._lock:
+                    self.truth.append(Sample.of(r.header.stamp, r.state.pose))
+            self._done.wait(0.02)
+
+    def start(self) -> None:
+        self._thread.start()
+
+    def stop(self) -> tuple[list[Sample], list[Sample]]:
+        """Stop sampling; (ground truth, /odom), each in time order."""
+        self._done.set()
+        self._thread.join(10)
+        with self._lock:
+            return sorted(self.truth, key=lambda s: s.t), sorted(self.odom, key=lambda s: s.t)
+
+
+class _Recorder:
+    """``--record``: the viewer recorded to ``square.mp4`` while the square drives (a thread of its own)."""
+
+    def __init__(self, url: str, out: Path) -> None:
+        self.url, self.out = url, out
+        self.stop_rec, self.ready = threading.Event(), threading.Event()
+        self.result: list[object] = []
+        self._thread = threading.Thread(target=self._record, daemon=True)
+
+    def _record(self) -> None:
+        from ..viewer import record_video
+
+        try:
+            self.result.append(
+                record_video(
+                    self.url,
+                    self.out / "square.mp4",
+                    seconds=600,
+                    fps=2.0,
+                    stop=self.stop_rec,
+                    settle_sec=0.5,
+                    panel=False,
+                    on_start=self.ready.set,
+                )
+            )
+        except Exception as err:
+            self.result.append(err)
+        finally:
+            self.ready.set()
+
+    def start(self) -> None:
+        self._thread.start()
+        # the browser takes a few seconds to start: the square waits for it (at --rtf 0 it is over in ~4 s)
+        self.ready.wait(60)
+
+    def finish(self) -> None:
+        self.stop_rec.set()
+        self._thread.join(60)
+        r = self.result[0] if self.result else "no result"
+        print(
+            f"   video: {r[0].resolve()} ({r[1]} frames)" if isinstance(r, tuple) else f"   video failed: {r}",
+            flush=True,
+        )
+
+
+def _report(out: Path, truth_s: list[Sample], odom_s: list[Sample], url: str | None, snapshot: bool) -> bool:
+    """Step 5: the corners by ground truth and by /odom, the path image, the snapshot; True if the robot
+    drove four corners."""
+    corner_idx = find_corners(truth_s)
+    print("5. corners (x, y in metres)", flush=True)
+    print(f"   {'':8}{'ground truth':>22}{'/odom':>22}{'difference':>14}")
+    corners: list[Sample] = []
+    worst = 0.0
+    for k, i in enumerate(corner_idx, 1):
+        g = truth_s[i]
+        o = interpolate(odom_s, g.t)
+        corners.append(g)
+        diff = math.hypot(o.x - g.x, o.y - g.y) if o else float("nan")
+        worst = max(worst, diff) if o else worst
+        ostr = f"({o.x:+.3f}, {o.y:+.3f})" if o else "n/a"
+        print(f"   corner {k}{f'({g.x:+.3f}, {g.y:+.3f})':>22}{ostr:>22}{diff * 1000:>11.2f} mm")
+    svg = out / "square.svg"
+    write_svg(svg, truth_s, odom_s, corners)
+    print(f"   path image: {svg.resolve()}")
+    if snapshot and url:
+        from ..viewer import screenshot
+
+        try:
+            png = screenshot(url, out / "viewer.png", settle_sec=1.0, panel=False)
+            print(f"   viewer snapshot: {png.resolve()}", flush=True)
+        except Exception as err:
+            print(f"   viewer snapshot failed: {type(err).__name__}: {err}", flush=True)
+    if len(corners) != 4:
+        print(f"gazelle demo: expected 4 corners, found {len(corners)}", file=sys.stderr)
+        return False
+    sides = [math.hypot(b.x - a.x, b.y - a.y) for a, b in zip(corners, corners[1:])]
+    print(
+        "   sides between corners: "
+        + ", ".join(f"{s:.3f} m" for s in sides)
+        + f"; worst /odom error {worst * 1000:.2f} mm"
+    )
+    return True
+
+
+def _publish_description(node: Any) -> None:
+    """Step 2: the seed robot's xacro expanded, latched on robot_description (as robot_state_publisher)."""
+    import xacro
+    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+    from std_msgs.msg import String
+
+    print("2. robot_description <- xacro examples/simple_robot/simple_robot/robot.urdf.xacro", flush=True)
+    qos = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
+    pub = node.create_publisher(String, "robot_description", qos)
+    pub.publish(String(data=xacro.process_file(str(EXAMPLE / "robot.urdf.xacro")).toxml()))  # pyright: ignore[reportAttributeAccessIssue] - xacro.process_file returns a minidom Document, typed as None-able
+
+
+def _drive(env: dict[str, str], rtf: float, children: list[_Child], recorder: _Recorder | None) -> bool:
+    """Step 4: the seed's square_movement node drives one square (recorded if asked); True if it ended well."""
+    print("4. square_movement.py (the seed's node, plain rclpy): one square", flush=True)
+    node_cmd = [sys.executable, str(EXAMPLE / "square_movement.py"), "--ros-args", "-p", "max_sides:=4"]
+    if rtf != 1.0:
+        node_cmd += ["-p", "use_sim_time:=true"]
+    if recorder is not None:
+        recorder.start()
+    square = _Child("square_movement", node_cmd, env)
+    children.append(square)
+    square_rc = square.proc.wait(300)
+    if recorder is not None:
+        recorder.finish()
+    if square_rc != 0:
+        print("gazelle demo: square_movement failed", file=sys.stderr)
+        return False
+    return True
+
+
 def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: bool = False) -> int:
     """Run the demo; returns the exit code (0 = the robot drove a square)."""
     env = os.environ.copy()
@@ -165,13 +322,8 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
     os.environ.update({k: env[k] for k in ("ROS_AUTOMATIC_DISCOVERY_RANGE",)})
     out.mkdir(parents=True, exist_ok=True)
     import rclpy
-    import xacro
-    from gazebo_msgs.srv import GetEntityState
-    from nav_msgs.msg import Odometry
     from rclpy.context import Context
     from rclpy.executors import SingleThreadedExecutor
-    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
-    from std_msgs.msg import String
 
     gazelle = [sys.executable, "-m", "gazelle.cli"]
     print(f"gazelle demo: ROS_DOMAIN_ID={env.get('ROS_DOMAIN_ID', '0')}, real-time factor {rtf:g}", flush=True)
@@ -192,133 +344,23 @@ def run_demo(out: Path, *, rtf: float = 1.0, snapshot: bool = False, record: boo
         url = _viewer_url(sim)
         if url:
             print(f"   watch it in a browser: {url} (the magenta line is the robot's path)", flush=True)
-        print("2. robot_description <- xacro examples/simple_robot/simple_robot/robot.urdf.xacro", flush=True)
-        qos = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
-        pub = node.create_publisher(String, "robot_description", qos)
-        pub.publish(String(data=xacro.process_file(str(EXAMPLE / "robot.urdf.xacro")).toxml()))  # pyright: ignore[reportAttributeAccessIssue] - xacro.process_file returns a minidom Document, typed as None-able
+        _publish_description(node)
         print("3. gazelle spawn -entity simple_robot -topic robot_description", flush=True)
         spawn = _Child("spawn", [*gazelle, "spawn", "-entity", "simple_robot", "-topic", "robot_description"], env)
         children.append(spawn)
         if spawn.proc.wait(90) != 0:
             print("gazelle demo: spawning failed", file=sys.stderr)
             return 1
-
-        truth: list[Sample] = []
-        odom: list[Sample] = []
-        lock = threading.Lock()
-
-        def on_odom(msg: Odometry) -> None:
-            with lock:
-                odom.append(Sample.of(msg.header.stamp, msg.pose.pose))
-
-        node.create_subscription(Odometry, "/odom", on_odom, 100)
-        client = node.create_client(GetEntityState, "/get_entity_state")
-        if not client.wait_for_service(timeout_sec=30):
+        watch = _GroundTruth(node)
+        if not watch.client.wait_for_service(timeout_sec=30):
             print("gazelle demo: /get_entity_state is not available", file=sys.stderr)
             return 1
-        done = threading.Event()
-
-        def sample_truth() -> None:
-            while not done.is_set():
-                fut = client.call_async(GetEntityState.Request(name="simple_robot"))
-                ev = threading.Event()
-                fut.add_done_callback(lambda _f, ev=ev: ev.set())
-                r = fut.result() if ev.wait(5) else None
-                if r is not None and r.success:
-                    with lock:
-                        truth.append(Sample.of(r.header.stamp, r.state.pose))
-                done.wait(0.02)
-
-        sampler = threading.Thread(target=sample_truth, daemon=True)
-        sampler.start()
-        print("4. square_movement.py (the seed's node, plain rclpy): one square", flush=True)
-        node_cmd = [sys.executable, str(EXAMPLE / "square_movement.py"), "--ros-args", "-p", "max_sides:=4"]
-        if rtf != 1.0:
-            node_cmd += ["-p", "use_sim_time:=true"]
-        recorder = None
-        stop_rec, rec_ready = threading.Event(), threading.Event()
-        rec_result: list[object] = []
-        if record and url:
-            from ..viewer import record_video
-
-            def rec() -> None:
-                try:
-                    rec_result.append(
-                        record_video(
-                            url,
-                            out / "square.mp4",
-                            seconds=600,
-                            fps=2.0,
-                            stop=stop_rec,
-                            settle_sec=0.5,
-                            panel=False,
-                            on_start=rec_ready.set,
-                        )
-                    )
-                except Exception as err:
-                    rec_result.append(err)
-                finally:
-                    rec_ready.set()
-
-            recorder = threading.Thread(target=rec, daemon=True)
-            recorder.start()
-            # the browser takes a few seconds to start: the square waits for it (at --rtf 0 it is over in ~4 s)
-            rec_ready.wait(60)
-        square = _Child("square_movement", node_cmd, env)
-        children.append(square)
-        square_rc = square.proc.wait(300)
-        if recorder is not None:
-            stop_rec.set()
-            recorder.join(60)
-            r = rec_result[0] if rec_result else "no result"
-            print(
-                f"   video: {r[0].resolve()} ({r[1]} frames)" if isinstance(r, tuple) else f"   video failed: {r}",
-                flush=True,
-            )
-        if square_rc != 0:
-            print("gazelle demo: square_movement failed", file=sys.stderr)
+        watch.start()
+        if not _drive(env, rtf, children, _Recorder(url, out) if record and url else None):
             return 1
         time.sleep(0.5 if rtf == 1.0 else 0.1)  # a last few samples of the robot at rest
-        done.set()
-        sampler.join(10)
-
-        with lock:
-            truth_s, odom_s = sorted(truth, key=lambda s: s.t), sorted(odom, key=lambda s: s.t)
-        corner_idx = find_corners(truth_s)
-        print("5. corners (x, y in metres)", flush=True)
-        print(f"   {'':8}{'ground truth':>22}{'/odom':>22}{'difference':>14}")
-        corners: list[Sample] = []
-        worst = 0.0
-        for k, i in enumerate(corner_idx, 1):
-            g = truth_s[i]
-            o = interpolate(odom_s, g.t)
-            corners.append(g)
-            diff = math.hypot(o.x - g.x, o.y - g.y) if o else float("nan")
-            worst = max(worst, diff) if o else worst
-            ostr = f"({o.x:+.3f}, {o.y:+.3f})" if o else "n/a"
-            print(f"   corner {k}{f'({g.x:+.3f}, {g.y:+.3f})':>22}{ostr:>22}{diff * 1000:>11.2f} mm")
-        svg = out / "square.svg"
-        write_svg(svg, truth_s, odom_s, corners)
-        print(f"   path image: {svg.resolve()}")
-        if snapshot and url:
-            from ..viewer import screenshot
-
-            try:
-                png = screenshot(url, out / "viewer.png", settle_sec=1.0, panel=False)
-                print(f"   viewer snapshot: {png.resolve()}", flush=True)
-            except Exception as err:
-                print(f"   viewer snapshot failed: {type(err).__name__}: {err}", flush=True)
-        ok = len(corners) == 4
-        if ok:
-            sides = [math.hypot(b.x - a.x, b.y - a.y) for a, b in zip(corners, corners[1:])]
-            print(
-                "   sides between corners: "
-                + ", ".join(f"{s:.3f} m" for s in sides)
-                + f"; worst /odom error {worst * 1000:.2f} mm"
-            )
-        else:
-            print(f"gazelle demo: expected 4 corners, found {len(corners)}", file=sys.stderr)
-        return 0 if ok else 1
+        truth_s, odom_s = watch.stop()
+        return 0 if _report(out, truth_s, odom_s, url, snapshot) else 1
     finally:
         for c in reversed(children):
             c.stop()
