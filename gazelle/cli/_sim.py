@@ -9,6 +9,7 @@ import subprocess
 import sys
 import threading
 from pathlib import Path
+from typing import Any
 
 from ..description import Model, ModelLoadError, World, load
 from ..sim import start_signal_watchdog
@@ -75,16 +76,7 @@ def run_sim(
 ) -> int:
     """Run the server; returns the process exit code."""
     logging.basicConfig(level=logging.INFO, format="[%(levelname)s] [%(name)s]: %(message)s", stream=sys.stderr)
-    stop = threading.Event()
-
-    def on_signal(signum: int, _frame: object) -> None:
-        stop.set()
-
-    signal.signal(signal.SIGINT, on_signal)
-    signal.signal(signal.SIGTERM, on_signal)
-    write_replay = threading.Event()
-    # SIGUSR1: write the replay now and go on (a test that failed on a module's shared server wants it)
-    signal.signal(signal.SIGUSR1, lambda _signum, _frame: write_replay.set())
+    stop, write_replay = _install_signal_handlers()
     start_signal_watchdog(
         SHUTDOWN_DEADLINE_SEC + 0.5
     )  # before any thread, and before the world's build, which may be long
@@ -108,29 +100,10 @@ def run_sim(
         logging.getLogger().removeHandler(h)
     announce_often()  # before the first DDS participant: later processes find this one at once (see _dds)
     bridge = RosBridge(sim, clock_rate_hz=clock_rate_hz, announce=True, drop_when_behind=drop_when_behind)
-    recorder = ReplayRecorder(sim, topics=replay_topics) if replay is not None else None
-    page = None
-    if replay is not None and replay.suffix.lower() in (".html", ".htm"):
-        from ..viewer import replay_html as page  # now: the shutdown has 3 s for everything
+    replays = _Replays(ReplayRecorder(sim, topics=replay_topics), replay, world.name) if replay is not None else None
     sim.start()
-    view = None
-    if viewer:
-        from ..viewer import Viewer
-
-        try:
-            view = Viewer(sim, host=viewer_host, port=viewer_port, allow_origins=viewer_allow_origins)
-        except OSError as err:
-            print(f"gazelle: viewer not started: {err}", file=sys.stderr)
-        else:
-            view.start()
-            print(f"gazelle: viewer at {view.url}", flush=True)
-    fox = None
-    if foxglove_port is not None:
-        # its own process: forwarding topics never competes with the simulation for the GIL
-        cmd = [sys.executable, "-m", "gazelle.cli", "foxglove", "--host", viewer_host, "--port", str(foxglove_port)]
-        for origin in viewer_allow_origins:
-            cmd += ["--allow-origin", origin]
-        fox = subprocess.Popen(cmd, env={**os.environ, "GAZELLE_FOXGLOVE_PARENT": str(os.getpid())})
+    view = _start_viewer(sim, viewer_host, viewer_port, viewer_allow_origins) if viewer else None
+    fox = _start_foxglove(viewer_host, foxglove_port, viewer_allow_origins) if foxglove_port is not None else None
     target = "as fast as possible" if sim.rtf == 0 else f"{sim.rtf:g}"
     print(
         f"gazelle: ready: world '{world.name}' ({len(sim.world.entities)} entities), "
@@ -139,43 +112,101 @@ def run_sim(
         + ("drops the oldest when behind (--drop-when-behind)" if drop_when_behind else "lossless"),
         flush=True,
     )
-    rc = 0
+    rc = _serve(stop, write_replay, sim, bridge, replays)
+    print("gazelle: shutting down", flush=True)
+    _shut_down(sim, bridge, view, fox, replays)
+    return rc
 
-    def save_replay() -> None:
-        assert recorder is not None and replay is not None
+
+def _install_signal_handlers() -> tuple[threading.Event, threading.Event]:
+    """SIGINT and SIGTERM set the first event (stop), SIGUSR1 the second (write the replay now and go
+    on: a test that failed on a module's shared server wants it)."""
+    stop, write_replay = threading.Event(), threading.Event()
+
+    def on_signal(signum: int, _frame: object) -> None:
+        stop.set()
+
+    signal.signal(signal.SIGINT, on_signal)
+    signal.signal(signal.SIGTERM, on_signal)
+    signal.signal(signal.SIGUSR1, lambda _signum, _frame: write_replay.set())
+    return stop, write_replay
+
+
+class _Replays:
+    """``--replay FILE``: the recorder and where (and as what) its replay is written."""
+
+    def __init__(self, recorder: Any, path: Path, world_name: str) -> None:
+        self.recorder, self.path, self.world_name = recorder, path, world_name
+        self.page = None
+        if path.suffix.lower() in (".html", ".htm"):
+            from ..viewer import replay_html  # now: the shutdown has 3 s for everything
+
+            self.page = replay_html
+
+    def save(self) -> None:
         try:
-            if page is not None:
-                recorder.write(replay, page(recorder.data(), title=f"gazelle replay: {world.name}"))
+            if self.page is not None:
+                data = self.page(self.recorder.data(), title=f"gazelle replay: {self.world_name}")
+                self.recorder.write(self.path, data)
             else:
-                recorder.write(replay)
+                self.recorder.write(self.path)
         except OSError as err:
             print(f"gazelle: the replay was not written: {err}", file=sys.stderr)
 
+
+def _start_viewer(sim: Any, host: str, port: int, allow_origins: tuple[str, ...]) -> Any:
+    """The browser viewer, started; None (said on stderr) if its port cannot be had."""
+    from ..viewer import Viewer
+
+    try:
+        view = Viewer(sim, host=host, port=port, allow_origins=allow_origins)
+    except OSError as err:
+        print(f"gazelle: viewer not started: {err}", file=sys.stderr)
+        return None
+    view.start()
+    print(f"gazelle: viewer at {view.url}", flush=True)
+    return view
+
+
+def _start_foxglove(host: str, port: int, allow_origins: tuple[str, ...]) -> subprocess.Popen[bytes]:
+    """The Foxglove bridge in a process of its own: forwarding topics never competes with the simulation
+    for the GIL."""
+    cmd = [sys.executable, "-m", "gazelle.cli", "foxglove", "--host", host, "--port", str(port)]
+    for origin in allow_origins:
+        cmd += ["--allow-origin", origin]
+    return subprocess.Popen(cmd, env={**os.environ, "GAZELLE_FOXGLOVE_PARENT": str(os.getpid())})
+
+
+def _serve(
+    stop: threading.Event, write_replay: threading.Event, sim: Any, bridge: Any, replays: _Replays | None
+) -> int:
+    """Until a signal asks to stop (0) or a part of the server died (1, said on stderr): never a deaf
+    server that looks alive."""
     while not stop.wait(0.1):
         if write_replay.is_set():
             write_replay.clear()
-            if recorder is not None:
-                save_replay()
+            if replays is not None:
+                replays.save()
         if not sim.running:
             print("gazelle: simulation thread stopped unexpectedly (its traceback is above); exiting", file=sys.stderr)
-            rc = 1
-            break
+            return 1
         if not bridge.alive:
             print(f"gazelle: ROS executor thread stopped ({bridge.failure!r}); exiting", file=sys.stderr)
-            rc = 1
-            break
+            return 1
         if bridge.registry is not None and bridge.registry.conflict is not None:
             print(f"gazelle: {bridge.registry.conflict}; exiting", file=sys.stderr)
-            rc = 1
-            break
-    print("gazelle: shutting down", flush=True)
-    # the user asked to stop: whatever a thread is in the middle of, the process ends within
-    # SHUTDOWN_DEADLINE_SEC (an orderly shutdown takes ~0.3 s)
+            return 1
+    return 0
+
+
+def _shut_down(sim: Any, bridge: Any, view: Any, fox: subprocess.Popen[bytes] | None, replays: _Replays | None) -> None:
+    """The user asked to stop: whatever a thread is in the middle of, the process ends within
+    SHUTDOWN_DEADLINE_SEC (an orderly shutdown takes ~0.3 s)."""
+    import time
+
     watchdog = threading.Timer(SHUTDOWN_DEADLINE_SEC, _force_exit)
     watchdog.daemon = True
     watchdog.start()
-    import time
-
     t0 = time.monotonic()
     # the Foxglove process stops on its own meanwhile: asked first, waited for last, with what is left of
     # the deadline (a loaded run waited 3 s on it here and the watchdog killed the server)
@@ -185,8 +216,8 @@ def run_sim(
     if view is not None:
         view.stop()
     sim.stop()
-    if recorder is not None:
-        save_replay()
+    if replays is not None:
+        replays.save()
     bridge.shutdown()
     if fox is not None:
         # it stops in ~0.4 s; one that has not by the time the rest is done is killed: the interpreter's
@@ -195,4 +226,3 @@ def run_sim(
             fox.wait(max(0.1, min(FOXGLOVE_STOP_SEC, SHUTDOWN_DEADLINE_SEC - 1.0 - (time.monotonic() - t0))))
         except subprocess.TimeoutExpired:
             fox.kill()
-    return rc
