@@ -44,6 +44,7 @@ from __future__ import annotations
 import hashlib
 import logging
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import mujoco
@@ -588,112 +589,137 @@ def add_model(spec: mujoco.MjSpec, model: Model, entity: str, X_WM: Pose, *, vis
         raise BuildError(
             f"model '{model.name}' has {len(model.links)} links, more than the {MAX_LINKS} a model may have"
         )
-    children: dict[str, list[Joint]] = {}
-    child_joint: dict[str, Joint] = {}
-    for j in model.joints:
-        children.setdefault(j.parent, []).append(j)
-        child_joint[j.child] = j
-    links = {lk.name: lk for lk in model.links}
-    # a link named "world" with joints from it is the world frame itself (r6bot, dual-arm Panda): not a body
-    roots = [
-        lk.name for lk in model.links if lk.name not in child_joint and not (lk.name == "world" and "world" in children)
-    ]
-    world_joints = children.get("world", [])
+    tree = _ModelTree(spec, model, entity, visuals)
+    tree.add_roots(X_WM)
+    tree.add_world_joints(X_WM)
+    built = tree.built
+    built.unsimulated = {param: tuple(where) for param, where in tree.ignored.items()}
+    built.decomposed = tuple(tree.decomposed)
+    _exclude_self_collisions(spec, model, entity, built)
+    _couple_mimic_joints(spec, model, entity, built)
+    return built
 
-    built = BuiltEntity(name=entity, root_body="", free_joint=None, visuals=visuals)
-    ignored: dict[str, list[str]] = {}
-    decomposed: list[tuple[str, int, float, str]] = []
-    total_mass = sum((lk.inertial.mass if lk.inertial else 0.0) for lk in model.links) or 1.0
 
-    def add_subtree(parent_body: mujoco.MjsBody, link_name: str, X_PC: Pose, joint: Joint | None) -> None:
+class _ModelTree:
+    """One model's links added to a spec as a tree of bodies (see :func:`add_model`)."""
+
+    def __init__(self, spec: mujoco.MjSpec, model: Model, entity: str, visuals: bool) -> None:
+        self.spec, self.model, self.entity, self.visuals = spec, model, entity, visuals
+        self.children: dict[str, list[Joint]] = {}
+        self.child_joint: dict[str, Joint] = {}
+        for j in model.joints:
+            self.children.setdefault(j.parent, []).append(j)
+            self.child_joint[j.child] = j
+        self.links = {lk.name: lk for lk in model.links}
+        self.built = BuiltEntity(name=entity, root_body="", free_joint=None, visuals=visuals)
+        self.ignored: dict[str, list[str]] = {}
+        """Surface parameters MuJoCo does not simulate -> the collisions that set them (warned about)."""
+        self.decomposed: list[tuple[str, int, float, str]] = []
+        self.total_mass = sum((lk.inertial.mass if lk.inertial else 0.0) for lk in model.links) or 1.0
+
+    def add_roots(self, X_WM: Pose) -> None:
+        """Each root link and its subtree; a root link of a non-static model gets a free joint (SDF: its
+        link pose in the model frame). A link named "world" with joints from it is the world frame itself
+        (r6bot, dual-arm Panda): not a body."""
+        built, entity = self.built, self.entity
+        roots = [
+            lk.name
+            for lk in self.model.links
+            if lk.name not in self.child_joint and not (lk.name == "world" and "world" in self.children)
+        ]
+        for r in roots:
+            link = self.links[r]
+            X_MR = link.pose or Pose()
+            self.add_subtree(self.spec.worldbody, r, X_WM * X_MR, None)
+            body = self.spec.body(scoped(entity, r))
+            if not built.root_body:
+                built.root_body = body.name
+            if not self.model.static and not link.kinematic:
+                fj = body.add_freejoint(name=scoped(entity, f"{r}#free"))
+                if built.free_joint is None:
+                    built.free_joint = fj.name
+
+    def add_world_joints(self, X_WM: Pose) -> None:
+        """The subtrees hanging from the world by a joint (a fixed or moving base)."""
+        for j in self.children.get("world", []):
+            if self.links.get(j.child) is None:
+                raise BuildError(f"joint '{j.name}': unknown child link '{j.child}'")
+            # the SDF loader gives a joint to the world its origin in the world frame of the model's own
+            # pose (``model.pose``): re-express it in the model frame, so it follows the spawn pose and the
+            # model pose is not applied twice (URDF: ``model.pose`` is the identity, origin in the model frame)
+            X_WJ = X_WM * self.model.pose.inverse() * j.origin
+            self.add_subtree(self.spec.worldbody, j.child, X_WJ * j.child_offset, j)
+            if not self.built.root_body:
+                self.built.root_body = scoped(self.entity, j.child)
+
+    def add_subtree(self, parent_body: mujoco.MjsBody, link_name: str, X_PC: Pose, joint: Joint | None) -> None:
         # iterative (an explicit stack), so a 5,000-link chain is no RecursionError
         stack: list[tuple[mujoco.MjsBody, str, Pose, Joint | None, int]] = [(parent_body, link_name, X_PC, joint, 1)]
         while stack:
             parent, name, X, jnt, depth = stack.pop()
             if depth > MAX_TREE_DEPTH:
                 raise BuildError(
-                    f"model '{model.name}': the link tree is deeper than {MAX_TREE_DEPTH} links (at link '{name}'); "
-                    "MuJoCo nests bodies at most ~1,000 deep"
+                    f"model '{self.model.name}': the link tree is deeper than {MAX_TREE_DEPTH} links (at link "
+                    f"'{name}'); MuJoCo nests bodies at most ~1,000 deep"
                 )
-            body = _add_link_body(parent, links[name], X, jnt)
+            body = self._add_link_body(parent, self.links[name], X, jnt)
             stack.extend(
-                (body, j.child, j.origin * j.child_offset, j, depth + 1) for j in reversed(children.get(name, []))
+                (body, j.child, j.origin * j.child_offset, j, depth + 1) for j in reversed(self.children.get(name, []))
             )
 
-    def _add_link_body(parent_body: mujoco.MjsBody, link: Link, X_PC: Pose, joint: Joint | None) -> mujoco.MjsBody:
+    def _add_link_body(
+        self, parent_body: mujoco.MjsBody, link: Link, X_PC: Pose, joint: Joint | None
+    ) -> mujoco.MjsBody:
+        spec, entity, built = self.spec, self.entity, self.built
         link_name = link.name
         body = parent_body.add_body(
             name=scoped(entity, link_name), pos=list(X_PC.position), quat=list(X_PC.orientation)
         )
-        if link.kinematic:
-            body.gravcomp = 1.0
-        elif not link.gravity:
+        if link.kinematic or not link.gravity:
             body.gravcomp = 1.0
         built.bodies[link_name] = body.name
         _set_inertial(body, link)
         if joint is not None:
             _add_joint_dofs(spec, body, joint, scoped(entity, joint.name), built)
             if link.kinematic:
-                for jname in built.joints[joint.name]:
-                    mj = spec.joint(jname)
-                    mj.armature = KINEMATIC_ARMATURE
-                    mj.damping = np.zeros(3)
-                    mj.frictionloss = 0.0
-                    mj.stiffness = np.zeros(3)
-                    built.kinematic_joints.append(jname)
-        mass_hint = link.inertial.mass if link.inertial else total_mass
+                self._make_kinematic(built.joints[joint.name])
+        self._add_collisions(body, link)
+        for i, vis in enumerate(link.visuals if self.visuals else ()):
+            _add_visual_geom(spec, body, vis, scoped(entity, f"{link_name}::{vis.name or 'visual'}#v{i}"))
+        return body
+
+    def _make_kinematic(self, joint_names: Sequence[str]) -> None:
+        """A kinematic link's joints: moved by commands only (a heavy armature, no damping, friction or
+        spring)."""
+        for jname in joint_names:
+            mj = self.spec.joint(jname)
+            mj.armature = KINEMATIC_ARMATURE
+            mj.damping = np.zeros(3)
+            mj.frictionloss = 0.0
+            mj.stiffness = np.zeros(3)
+            self.built.kinematic_joints.append(jname)
+
+    def _add_collisions(self, body: mujoco.MjsBody, link: Link) -> None:
+        visuals = self.visuals
+        mass_hint = link.inertial.mass if link.inertial else self.total_mass
         colour = next(
             (v.material.diffuse for v in link.visuals if v.material is not None and v.material.diffuse is not None),
             None,
         )
         for i, col in enumerate(link.collisions):
             _add_geom(
-                spec,
+                self.spec,
                 body,
                 col,
-                scoped(entity, f"{link_name}::{col.name or 'collision'}#{i}"),
+                scoped(self.entity, f"{link.name}::{col.name or 'collision'}#{i}"),
                 mass_hint,
-                decomposed,
+                self.decomposed,
                 group=COLLISION_GROUP if visuals else SHOWN_COLLISION_GROUP,
                 rgba=None if visuals else colour,
-                moving=not model.static,
+                moving=not self.model.static,
             )
             for param in unsimulated_surface_parameters(col):
-                ignored.setdefault(param, []).append(f"{link_name}/{col.name}")
-        for i, vis in enumerate(link.visuals if visuals else ()):
-            _add_visual_geom(spec, body, vis, scoped(entity, f"{link_name}::{vis.name or 'visual'}#v{i}"))
-        return body
-
-    world = spec.worldbody
-    X_WR = X_WM
-    for r in roots:
-        # a root link of a non-static model gets a free joint (SDF: its link pose in the model frame)
-        link = links[r]
-        X_MR = link.pose or Pose()
-        add_subtree(world, r, X_WR * X_MR, None)
-        body = spec.body(scoped(entity, r))
-        if not built.root_body:
-            built.root_body = body.name
-        if not model.static and not link.kinematic:
-            fj = body.add_freejoint(name=scoped(entity, f"{r}#free"))
-            if built.free_joint is None:
-                built.free_joint = fj.name
-    for j in world_joints:
-        child = links.get(j.child)
-        if child is None:
-            raise BuildError(f"joint '{j.name}': unknown child link '{j.child}'")
-        # the SDF loader gives a joint to the world its origin in the world frame of the model's own
-        # pose (``model.pose``): re-express it in the model frame, so it follows the spawn pose and the
-        # model pose is not applied twice (URDF: ``model.pose`` is the identity, origin in the model frame)
-        X_WJ = X_WM * model.pose.inverse() * j.origin
-        add_subtree(world, j.child, X_WJ * j.child_offset, j)
-        if not built.root_body:
-            built.root_body = scoped(entity, j.child)
-    built.unsimulated = {param: tuple(where) for param, where in ignored.items()}
-    built.decomposed = tuple(decomposed)
-    _exclude_self_collisions(spec, model, entity, built)
-    _couple_mimic_joints(spec, model, entity, built)
-    return built
+                self.ignored.setdefault(param, []).append(f"{link.name}/{col.name}")
 
 
 MIMIC_TIME_CONSTANT_SEC = 0.005
