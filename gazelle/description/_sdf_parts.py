@@ -8,7 +8,7 @@ from dataclasses import replace
 
 from lxml import etree
 
-from ._diagnostics import ErrorCode
+from ._diagnostics import ErrorCode, SourceLocation
 from ._inertia import default_inertial, inertia_from_geometries, inertia_problem
 from ._model import (
     IDENTITY,
@@ -418,17 +418,57 @@ class _Parts(_Reader):
     def joint(self, name: str, element: etree._Element, doc: _Doc, scope: Scope, built: _Built) -> None:
         loc = self.loc(element, doc)
         self.check(element, doc, "joint")
+        typed = self._joint_type(name, element, loc)
+        ends = self._joint_ends(name, element, doc, scope, loc) if typed is not None else None
+        if typed is None or ends is None:
+            return
+        raw_type, jtype = typed
+        parent, child = ends
+        X_MJ = scope.pose(name, loc)
+        X_MC = scope.pose(child, loc)
+        X_MP = IDENTITY if parent == "world" else scope.pose(parent, loc)
+        if X_MJ is None or X_MC is None or X_MP is None:
+            return
+        axes = self._joint_axes(name, element, doc, scope, (raw_type, jtype), X_MJ, loc)
+        mimic = None
+        for entry in axes:
+            if entry is not None and entry[1] is not None:
+                mimic = entry[1]
+        joint = Joint(
+            name=name,
+            type=jtype,
+            parent=parent,
+            child=child,
+            origin=X_MJ if parent == "world" else X_MP.inverse() * X_MJ,
+            child_offset=X_MJ.inverse() * X_MC,
+            axis=axes[0][0] if axes[0] else None,
+            axis2=axes[1][0] if axes[1] else None,
+            screw_thread_pitch=self._screw_pitch(element, doc) if jtype is JointType.SCREW else None,
+            mimic=mimic,
+            location=loc,
+        )
+        if parent == "world":
+            built.world_joints[name] = X_MJ
+        built.joints.append(joint)
+        for sen_el in _findall(element, "sensor"):  # force_torque: kept with the child link
+            pose, _rel = self.pose(sen_el, doc)  # in the joint frame
+            sensor = self.sensor(sen_el, doc, pose)
+            if sensor is not None:
+                built.joint_sensors.setdefault(child, []).append(replace(sensor, joint=name))
+
+    def _joint_type(self, name: str, element: etree._Element, loc: SourceLocation) -> tuple[str, JointType] | None:
+        """(the SDF type as written, its JointType); None (an error or warning said why) if skipped."""
         raw_type = (element.get("type") or "").strip()
         if not raw_type:
             self.sink.error(
                 ErrorCode.ATTRIBUTE_MISSING, f"joint '{name}' is missing the required 'type' attribute", loc
             )
-            return
+            return None
         if raw_type == "gearbox":
             self.sink.warning(
                 ErrorCode.JOINT_TYPE_INVALID, f"joint '{name}': type 'gearbox' is not supported; joint skipped", loc
             )
-            return
+            return None
         jtype = _JOINT_TYPES.get(raw_type)
         if jtype is None:
             self.sink.error(
@@ -436,20 +476,26 @@ class _Parts(_Reader):
                 f"joint '{name}' has unknown type '{raw_type}' (expected one of {', '.join(sorted(_JOINT_TYPES))})",
                 loc,
             )
-            return
+            return None
         if raw_type == "revolute2":
             self.sink.warning(
                 ErrorCode.JOINT_TYPE_INVALID,
                 f"joint '{name}': type 'revolute2' is not supported; loaded as 'universal'",
                 loc,
             )
+        return raw_type, jtype
+
+    def _joint_ends(
+        self, name: str, element: etree._Element, doc: _Doc, scope: Scope, loc: SourceLocation
+    ) -> tuple[str, str] | None:
+        """(parent, child) as bodies of the scope; None (an error said why) if either is missing or wrong."""
         ends = []
         for role, code in (("parent", ErrorCode.JOINT_PARENT_INVALID), ("child", ErrorCode.JOINT_CHILD_INVALID)):
             el = _find(element, role)
             ref = (el.text or "").strip() if el is not None else ""
             if el is None or not ref:
                 self.sink.error(ErrorCode.ELEMENT_MISSING, f"joint '{name}' has no <{role}>", loc)
-                return
+                return None
             where = self.loc(el, doc)
             if ref == "world" or ref in scope.nodes or ("::" in ref and ref.partition("::")[0] in scope.nested):
                 body = scope.body(ref, where)
@@ -457,23 +503,33 @@ class _Parts(_Reader):
                 body = None
                 self.sink.error(code, f"joint '{name}' has unknown {role} '{ref}'", where)
             if body is None:
-                return
+                return None
             if role == "child" and body == "world":
                 self.sink.error(code, f"joint '{name}': the child cannot be 'world'", where)
-                return
+                return None
             ends.append(body)
         parent, child = ends
         if parent == child:
             self.sink.error(
                 ErrorCode.JOINT_CHILD_INVALID, f"joint '{name}': parent and child are the same link '{child}'", loc
             )
-            return
-        X_MJ = scope.pose(name, loc)
-        X_MC = scope.pose(child, loc)
-        X_MP = IDENTITY if parent == "world" else scope.pose(parent, loc)
-        if X_MJ is None or X_MC is None or X_MP is None:
-            return
-        axes = []
+            return None
+        return parent, child
+
+    def _joint_axes(
+        self,
+        name: str,
+        element: etree._Element,
+        doc: _Doc,
+        scope: Scope,
+        typed: tuple[str, JointType],
+        X_MJ: Pose,
+        loc: SourceLocation,
+    ) -> list[tuple[JointAxis, Mimic | None] | None]:
+        """[<axis>, <axis2>], each (JointAxis, mimic) or None where the type has no such axis; a missing
+        <axis> is 0 0 1 (with a warning), a universal joint's missing <axis2> 0 1 0."""
+        raw_type, jtype = typed
+        axes: list[tuple[JointAxis, Mimic | None] | None] = []
         for axis_tag in ("axis", "axis2"):
             axis_el = _find(element, axis_tag)
             if (
@@ -489,40 +545,19 @@ class _Parts(_Reader):
             axes[0] = (JointAxis((0.0, 0.0, 1.0)), None)
         if jtype is JointType.UNIVERSAL and axes[1] is None:
             axes[1] = (JointAxis((0.0, 1.0, 0.0)), None)
-        pitch = None
-        if jtype is JointType.SCREW:
-            if _find(element, "screw_thread_pitch") is not None:
-                pitch = self.number(element, "screw_thread_pitch", 1.0, doc)
-            else:
-                thread_pitch = self.number(element, "thread_pitch", 1.0, doc)
-                pitch = -2 * math.pi / thread_pitch if thread_pitch != 0 else None
-        mimic = None
-        for entry in axes:
-            if entry is not None and entry[1] is not None:
-                mimic = entry[1]
-        joint = Joint(
-            name=name,
-            type=jtype,
-            parent=parent,
-            child=child,
-            origin=X_MJ if parent == "world" else X_MP.inverse() * X_MJ,
-            child_offset=X_MJ.inverse() * X_MC,
-            axis=axes[0][0] if axes[0] else None,
-            axis2=axes[1][0] if axes[1] else None,
-            screw_thread_pitch=pitch,
-            mimic=mimic,
-            location=loc,
-        )
-        if parent == "world":
-            built.world_joints[name] = X_MJ
-        built.joints.append(joint)
-        for sen_el in _findall(element, "sensor"):  # force_torque: kept with the child link
-            pose, _rel = self.pose(sen_el, doc)  # in the joint frame
-            sensor = self.sensor(sen_el, doc, pose)
-            if sensor is not None:
-                built.joint_sensors.setdefault(child, []).append(replace(sensor, joint=name))
+        return axes
 
-    def axis(self, joint: str, element: etree._Element, doc: _Doc, scope: Scope, X_MJ: Pose):
+    def _screw_pitch(self, element: etree._Element, doc: _Doc) -> float | None:
+        """A screw joint's pitch in MuJoCo's sense: SDF 1.10's <screw_thread_pitch>, or the older
+        <thread_pitch> (radians per metre, the other sign) converted."""
+        if _find(element, "screw_thread_pitch") is not None:
+            return self.number(element, "screw_thread_pitch", 1.0, doc)
+        thread_pitch = self.number(element, "thread_pitch", 1.0, doc)
+        return -2 * math.pi / thread_pitch if thread_pitch != 0 else None
+
+    def axis(
+        self, joint: str, element: etree._Element, doc: _Doc, scope: Scope, X_MJ: Pose
+    ) -> tuple[JointAxis, Mimic | None]:
         """An axis in the joint frame, plus its mimic (1.11), converting older frame conventions."""
         self.check(element, doc, "axis")
         xyz_el = _find(element, "xyz")
