@@ -34,7 +34,7 @@ from ._meshes import load_mesh as load_mesh
 from ._meshes import load_mesh_look as load_mesh_look
 from ._meshes import load_trimesh_in_metres as load_trimesh_in_metres
 from ._model import *  # noqa: F403  (the model dataclasses are the public surface)
-from ._model import LoadResult, Model, World
+from ._model import LoadResult, Model, Semantics, World
 from ._resources import ResourceResolver as ResourceResolver
 from ._untrusted import MAX_PARAMS_FILE_BYTES as MAX_PARAMS_FILE_BYTES
 from ._untrusted import MAX_YAML_NODES as MAX_YAML_NODES
@@ -192,23 +192,7 @@ def load_string(
     Raises:
         ModelLoadError: with every diagnostic, when there is any error.
     """
-    fmt = detect_format(text) if format == "auto" else format
-    if fmt == "urdf" and detect_format(text) == "xacro":
-        fmt = "xacro"  # a ".urdf" that is really xacro (TurtleBot3's main branch ships one)
-    if fmt is None or fmt not in FORMATS:
-        name = source or "<string>"
-        raise ModelLoadError(
-            [
-                Diagnostic(
-                    ErrorCode.UNKNOWN_FORMAT,
-                    Severity.ERROR,
-                    f"cannot tell the description format (got {format!r}); expected one of "
-                    + ", ".join(FORMATS)
-                    + " (a <robot> or <sdf> root element)",
-                    SourceLocation(name),
-                )
-            ]
-        )
+    fmt = _resolved_format(text, format, source)
     source = source or f"<string>.{fmt}"
     resolver = resolver or ResourceResolver()
     if not source.startswith("<"):  # the folder of a file (the user's, or one found on the roots) may be read
@@ -217,44 +201,25 @@ def load_string(
     # a string has no folder: a relative path in it resolves against nothing (never the server's working
     # directory, which would let a peer on the ROS graph read whatever lies beside the server)
     base_dir = str(Path(source).parent) if not source.startswith("<") else None
-    value: Model | World | object | None
     expanded = text
-    if fmt in ("urdf", "xacro"):
-        from . import _urdf, _xacro
-
-        if fmt == "xacro" and not expand_xacro:
-            markup = xacro_markup(text)
-            if markup is None:
-                fmt = "urdf"  # a .xacro name, or an xmlns:xacro declaration, but nothing to expand
-            else:
-                sink.error(ErrorCode.XACRO_NOT_ALLOWED, XACRO_REFUSED.format(what=repr(markup)), SourceLocation(source))
-                raise ModelLoadError(sink.items)
-        if fmt == "xacro":
-            expanded = _xacro.expand_bounded(text, source=source, args=dict(args or {}), sink=sink, resolver=resolver)
-            if expanded is None:
-                sink.raise_if_errors()
-                raise ModelLoadError(sink.items)
-            inner = detect_format(expanded) or "urdf"
-            if inner == "srdf":
-                from . import _srdf
-
-                value = _srdf.parse_srdf(expanded, source=source, sink=sink)
-            elif inner == "sdf":
-                from . import _sdf
-
-                value = _sdf.parse_sdf(expanded, source=source, sink=sink, resolver=resolver, base_dir=base_dir)
-            else:
-                value = _urdf.parse_urdf(expanded, source=source, sink=sink, resolver=resolver, base_dir=base_dir)
+    if fmt == "xacro" and not expand_xacro:
+        markup = xacro_markup(text)
+        if markup is None:
+            fmt = "urdf"  # a .xacro name, or an xmlns:xacro declaration, but nothing to expand
         else:
-            value = _urdf.parse_urdf(text, source=source, sink=sink, resolver=resolver, base_dir=base_dir)
-    elif fmt == "srdf":
-        from . import _srdf
+            sink.error(ErrorCode.XACRO_NOT_ALLOWED, XACRO_REFUSED.format(what=repr(markup)), SourceLocation(source))
+            raise ModelLoadError(sink.items)
+    if fmt == "xacro":
+        from . import _xacro
 
-        value = _srdf.parse_srdf(text, source=source, sink=sink)
+        found = _xacro.expand_bounded(text, source=source, args=dict(args or {}), sink=sink, resolver=resolver)
+        if found is None:
+            sink.raise_if_errors()
+            raise ModelLoadError(sink.items)
+        expanded = found
+        value = _parse_as(detect_format(expanded) or "urdf", expanded, source, sink, resolver, base_dir)
     else:
-        from . import _sdf
-
-        value = _sdf.parse_sdf(text, source=source, sink=sink, resolver=resolver, base_dir=base_dir)
+        value = _parse_as(fmt, text, source, sink, resolver, base_dir)
     sink.raise_if_errors()
     if value is None:
         raise ModelLoadError(sink.items)
@@ -264,3 +229,42 @@ def load_string(
         urdf = re.sub(rf'\s{LOCATION_ATTRIBUTE}="[^"]*"', "", expanded if fmt == "xacro" else text)
         value = dataclasses.replace(value, urdf=urdf)
     return LoadResult(value, tuple(sink.items))
+
+
+def _resolved_format(text: str, format: str, source: str | None) -> str:
+    """The format to read ``text`` as: ``format``, or detected from its root element for ``auto``; a
+    ".urdf" that is really xacro is xacro (TurtleBot3's main branch ships one). ModelLoadError if none."""
+    fmt = detect_format(text) if format == "auto" else format
+    if fmt == "urdf" and detect_format(text) == "xacro":
+        fmt = "xacro"
+    if fmt is None or fmt not in FORMATS:
+        raise ModelLoadError(
+            [
+                Diagnostic(
+                    ErrorCode.UNKNOWN_FORMAT,
+                    Severity.ERROR,
+                    f"cannot tell the description format (got {format!r}); expected one of "
+                    + ", ".join(FORMATS)
+                    + " (a <robot> or <sdf> root element)",
+                    SourceLocation(source or "<string>"),
+                )
+            ]
+        )
+    return fmt
+
+
+def _parse_as(
+    fmt: str, text: str, source: str, sink: DiagnosticSink, resolver: ResourceResolver, base_dir: str | None
+) -> Model | World | Semantics | None:
+    """Parse xacro-free ``text`` as URDF, SRDF or SDF (diagnostics into ``sink``)."""
+    if fmt == "srdf":
+        from . import _srdf
+
+        return _srdf.parse_srdf(text, source=source, sink=sink)
+    if fmt == "sdf":
+        from . import _sdf
+
+        return _sdf.parse_sdf(text, source=source, sink=sink, resolver=resolver, base_dir=base_dir)
+    from . import _urdf
+
+    return _urdf.parse_urdf(text, source=source, sink=sink, resolver=resolver, base_dir=base_dir)
