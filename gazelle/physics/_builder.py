@@ -58,6 +58,8 @@ from ..description import (
     Cylinder,
     Ellipsoid,
     Joint,
+    JointAxis,
+    JointLimit,
     JointType,
     Link,
     Mesh,
@@ -458,56 +460,76 @@ def _joint_frame_in_child(joint: Joint) -> Pose:
     return joint.child_offset.inverse()
 
 
+def _set_range(j: mujoco.MjsJoint, limit: JointLimit | None, limited: bool) -> None:
+    """A joint's position limits, if it has them (and both, in order)."""
+    if not (
+        limited
+        and limit is not None
+        and limit.lower is not None
+        and limit.upper is not None
+        and limit.upper >= limit.lower
+    ):
+        j.limited = mujoco.mjtLimited.mjLIMITED_FALSE
+        return
+    j.limited = mujoco.mjtLimited.mjLIMITED_TRUE
+    lo, hi = limit.lower, limit.upper
+    if hi - lo < 2 * EQUAL_LIMITS_SLACK:
+        # lower == upper: a joint that cannot move, which Gazebo accepts (gz-sim's example worlds
+        # nested_model_joint_positions and tracked_vehicle_simple have them); MuJoCo's compiler
+        # refuses an empty range, so the range is opened by a micro-radian (micrometre) each way
+        mid = (lo + hi) / 2
+        lo, hi = mid - EQUAL_LIMITS_SLACK, mid + EQUAL_LIMITS_SLACK
+    j.range = np.array([lo, hi], dtype=np.float64)
+
+
+def _add_dof(
+    body: mujoco.MjsBody,
+    kind: mujoco.mjtJoint,
+    jname: str,
+    pos: list[float],
+    jaxis: list[float],
+    limited: bool,
+    axis: JointAxis | None,
+) -> mujoco.MjsJoint:
+    """One MuJoCo joint of a description's joint: its limits, damping, friction, spring and effort limit."""
+    limit = axis.limit if axis is not None else None
+    dyn = axis.dynamics if axis is not None else None
+    j = body.add_joint(name=jname, type=kind, pos=pos, axis=jaxis)
+    _set_range(j, limit, limited)
+    if dyn is not None:
+        j.damping = np.array([dyn.damping, 0.0, 0.0])  # MuJoCo 4: polynomial coefficients
+        j.frictionloss = dyn.friction
+        if dyn.spring_stiffness:
+            j.stiffness = np.array([dyn.spring_stiffness, 0.0, 0.0])
+            j.springref = dyn.spring_reference
+    one_dof = kind in (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE)
+    if limit is not None and limit.effort is not None and limit.effort > 0 and one_dof:
+        j.actfrclimited = mujoco.mjtLimited.mjLIMITED_TRUE
+        j.actfrcrange = np.array([-limit.effort, limit.effort], dtype=np.float64)
+    j.armature = JOINT_ARMATURE
+    return j
+
+
+def _plane_axes(normal: list[float]) -> tuple[list[float], list[float], list[float]]:
+    """A planar joint's two directions in the plane and its normal (unit vectors, right-handed)."""
+    n = np.asarray(normal, dtype=float)
+    n = n / (np.linalg.norm(n) or 1.0)
+    a = np.cross(n, [1.0, 0.0, 0.0])
+    if np.linalg.norm(a) < 1e-6:
+        a = np.cross(n, [0.0, 1.0, 0.0])
+    a = a / np.linalg.norm(a)
+    return list(a), list(np.cross(n, a)), list(n)
+
+
 def _add_joint_dofs(spec: mujoco.MjSpec, body: mujoco.MjsBody, joint: Joint, name: str, built: BuiltEntity) -> None:
     X_CJ = _joint_frame_in_child(joint)
     pos = list(X_CJ.position)
     axis_j = joint.axis.xyz if joint.axis is not None else (1.0, 0.0, 0.0)
     axis = list(quat_rotate(X_CJ.orientation, axis_j))
     names: list[str] = []
-    limit = joint.axis.limit if joint.axis is not None else None
-    dyn = joint.axis.dynamics if joint.axis is not None else None
 
-    def add(kind: mujoco.mjtJoint, jname: str, jaxis: list[float], limited: bool) -> mujoco.MjsJoint:
-        j = body.add_joint(name=jname, type=kind, pos=pos, axis=jaxis)
-        if (
-            limited
-            and limit is not None
-            and limit.lower is not None
-            and limit.upper is not None
-            and limit.upper >= limit.lower
-        ):
-            j.limited = mujoco.mjtLimited.mjLIMITED_TRUE
-            lo, hi = limit.lower, limit.upper
-            if hi - lo < 2 * EQUAL_LIMITS_SLACK:
-                # lower == upper: a joint that cannot move, which Gazebo accepts (gz-sim's example worlds
-                # nested_model_joint_positions and tracked_vehicle_simple have them); MuJoCo's compiler
-                # refuses an empty range, so the range is opened by a micro-radian (micrometre) each way
-                mid = (lo + hi) / 2
-                lo, hi = mid - EQUAL_LIMITS_SLACK, mid + EQUAL_LIMITS_SLACK
-            j.range = np.array([lo, hi], dtype=np.float64)
-        else:
-            j.limited = mujoco.mjtLimited.mjLIMITED_FALSE
-        if dyn is not None:
-            j.damping = np.array([dyn.damping, 0.0, 0.0])  # MuJoCo 4: polynomial coefficients
-            j.frictionloss = dyn.friction
-            if dyn.spring_stiffness:
-                j.stiffness = np.array([dyn.spring_stiffness, 0.0, 0.0])
-                j.springref = dyn.spring_reference
-        if (
-            limit is not None
-            and limit.effort is not None
-            and limit.effort > 0
-            and kind
-            in (
-                mujoco.mjtJoint.mjJNT_HINGE,
-                mujoco.mjtJoint.mjJNT_SLIDE,
-            )
-        ):
-            j.actfrclimited = mujoco.mjtLimited.mjLIMITED_TRUE
-            j.actfrcrange = np.array([-limit.effort, limit.effort], dtype=np.float64)
-        j.armature = JOINT_ARMATURE
-        names.append(jname)
-        return j
+    def add(kind: mujoco.mjtJoint, jname: str, jaxis: list[float], limited: bool) -> None:
+        names.append(_add_dof(body, kind, jname, pos, jaxis, limited, joint.axis).name)
 
     t = joint.type
     if t in (JointType.REVOLUTE, JointType.CONTINUOUS):
@@ -536,16 +558,10 @@ def _add_joint_dofs(spec: mujoco.MjSpec, body: mujoco.MjsBody, joint: Joint, nam
         built.equalities.append(name + "#screw")
     elif t is JointType.PLANAR:
         # plane normal = axis; translate in two orthogonal directions, rotate about the normal
-        n = np.asarray(axis, dtype=float)
-        n = n / (np.linalg.norm(n) or 1.0)
-        a = np.cross(n, [1.0, 0.0, 0.0])
-        if np.linalg.norm(a) < 1e-6:
-            a = np.cross(n, [0.0, 1.0, 0.0])
-        a = a / np.linalg.norm(a)
-        b = np.cross(n, a)
-        add(mujoco.mjtJoint.mjJNT_SLIDE, name + "#x", list(a), False)
-        add(mujoco.mjtJoint.mjJNT_SLIDE, name + "#y", list(b), False)
-        add(mujoco.mjtJoint.mjJNT_HINGE, name, list(n), False)
+        a, b, n = _plane_axes(axis)
+        add(mujoco.mjtJoint.mjJNT_SLIDE, name + "#x", a, False)
+        add(mujoco.mjtJoint.mjJNT_SLIDE, name + "#y", b, False)
+        add(mujoco.mjtJoint.mjJNT_HINGE, name, n, False)
     elif t is JointType.FLOATING:
         for i, ax in enumerate(([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0])):
             add(mujoco.mjtJoint.mjJNT_SLIDE, f"{name}#t{i}", ax, False)
