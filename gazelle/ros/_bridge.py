@@ -233,20 +233,7 @@ class SimulationNode(Node):
         self.outbox = Outbox(lossless=not drop_when_behind)
         """The publisher thread: the simulation thread only queues payloads (see ``_outbox``)."""
         if drop_when_behind:  # the opt-in loss is counted where anyone can see it
-            from std_msgs.msg import UInt64
-
-            self._dropped_pub = self.create_publisher(
-                UInt64, "~/dropped_messages", QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
-            )
-            self._dropped_reported = -1
-
-            def report_dropped() -> None:
-                if self.outbox.dropped != self._dropped_reported:
-                    self._dropped_reported = self.outbox.dropped
-                    self._dropped_pub.publish(UInt64(data=self._dropped_reported))
-
-            report_dropped()
-            self.create_timer(1.0, report_dropped, callback_group=self._cb)
+            self._count_dropped()
         self._lanes: dict[int, Lane] = {}
         """id(publisher endpoint) -> its lane in the outbox."""
         self._watched: dict[str, tuple[str, float]] = {}
@@ -263,7 +250,57 @@ class SimulationNode(Node):
         clock_pub = self._clock_pub
         self._clock_heard = _Subscribed(clock_pub)
         self._last_clock_wall = -math.inf
-        self._srv = []
+        self._srv = self._serve_gazebo_services()
+        from ._simulation_interfaces import register  # simulation_interfaces services under ~/
+
+        register(self)
+        # /clock at its rate (held back while listened to: see _on_step); the runtime steps inside
+        # MuJoCo between two clock periods
+        sim.add_step_listener(self._on_step, clock_rate_hz)
+        self._publish_model_states()
+        self._scene_publisher: Any = None
+        try:  # the world's collision geometry for move_group (moveit_msgs is built by the set-up)
+            from ._scene_publisher import ScenePublisher
+
+            self._scene_publisher = ScenePublisher(self)
+        except ImportError as err:
+            self.get_logger().debug(f"no /gazelle/planning_scene_world: {err}")
+        sim.bus.add_listener(self)
+        self.publish_clock(sim.world.time)
+
+    def _count_dropped(self) -> None:
+        """``--drop-when-behind``: what the outbox dropped, on ``~/dropped_messages`` (latched, each second
+        it changed)."""
+        from std_msgs.msg import UInt64
+
+        self._dropped_pub = self.create_publisher(
+            UInt64, "~/dropped_messages", QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        )
+        self._dropped_reported = -1
+
+        def report_dropped() -> None:
+            if self.outbox.dropped != self._dropped_reported:
+                self._dropped_reported = self.outbox.dropped
+                self._dropped_pub.publish(UInt64(data=self._dropped_reported))
+
+        report_dropped()
+        self.create_timer(1.0, report_dropped, callback_group=self._cb)
+
+    def _publish_model_states(self) -> None:
+        """/model_states (gazebo_ros's), at MODEL_STATES_RATE_HZ of sim time, through a keep-last lane."""
+        self._model_states_pub = self.create_publisher(ModelStates, "/model_states", MODEL_STATES_QOS)
+        states_pub = self._model_states_pub
+        self._model_states_heard = _Subscribed(states_pub)
+        self._model_states_lane = self.outbox.lane(
+            lambda states: states_pub.publish(model_states_msg(states)), 1, "/model_states", keep_last=True
+        )
+        self._model_states_period = 1.0 / MODEL_STATES_RATE_HZ
+        self._last_model_states_wall = -math.inf
+        self.sim.add_step_listener(self._on_step_model_states, MODEL_STATES_RATE_HZ)
+
+    def _serve_gazebo_services(self) -> list[Any]:
+        """gazebo_ros's services (ROS 2 names, and ROS 1's that the seed's chessboard spawner calls)."""
+        served = []
         for srv_type, name, cb in (
             (GzSpawnEntity, "/spawn_entity", self._gz_spawn),
             (GzDeleteEntity, "/delete_entity", self._gz_delete),
@@ -281,31 +318,8 @@ class SimulationNode(Node):
             (GzGetModelState, "/gazebo/get_model_state", self._ros1_get_state),
             (GzSetModelState, "/gazebo/set_model_state", self._ros1_set_state),
         ):
-            self._srv.append(serve(self, srv_type, name, guarded_service(name, cb), self._cb))
-        from ._simulation_interfaces import register  # simulation_interfaces services under ~/
-
-        register(self)
-        # /clock at its rate (held back while listened to: see _on_step); the runtime steps inside
-        # MuJoCo between two clock periods
-        sim.add_step_listener(self._on_step, clock_rate_hz)
-        self._model_states_pub = self.create_publisher(ModelStates, "/model_states", MODEL_STATES_QOS)
-        states_pub = self._model_states_pub
-        self._model_states_heard = _Subscribed(states_pub)
-        self._model_states_lane = self.outbox.lane(
-            lambda states: states_pub.publish(model_states_msg(states)), 1, "/model_states", keep_last=True
-        )
-        self._model_states_period = 1.0 / MODEL_STATES_RATE_HZ
-        self._last_model_states_wall = -math.inf
-        sim.add_step_listener(self._on_step_model_states, MODEL_STATES_RATE_HZ)
-        self._scene_publisher: Any = None
-        try:  # the world's collision geometry for move_group (moveit_msgs is built by the set-up)
-            from ._scene_publisher import ScenePublisher
-
-            self._scene_publisher = ScenePublisher(self)
-        except ImportError as err:
-            self.get_logger().debug(f"no /gazelle/planning_scene_world: {err}")
-        sim.bus.add_listener(self)
-        self.publish_clock(sim.world.time)
+            served.append(serve(self, srv_type, name, guarded_service(name, cb), self._cb))
+        return served
 
     # ------------------------------------------------------------------ clock
 
