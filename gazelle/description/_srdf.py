@@ -112,24 +112,13 @@ class _Reader:
                 if state is not None:
                     states.append((state, child))
             elif tag == "end_effector":
-                name, parent_link, group = (self.attr(child, a) for a in ("name", "parent_link", "group"))
-                if name is not None and parent_link is not None and group is not None:
-                    parent_group = (child.get("parent_group") or "").strip() or None
-                    effectors.append((EndEffector(name, parent_link, group, parent_group), child))
+                effector = self.end_effector(child)
+                if effector is not None:
+                    effectors.append((effector, child))
             elif tag == "virtual_joint":
-                vj_name, vj_type, frame, child_link = (
-                    self.attr(child, a) for a in ("name", "type", "parent_frame", "child_link")
-                )
-                if vj_name is None or vj_type is None or frame is None or child_link is None:
-                    continue
-                if vj_type not in _VIRTUAL_JOINT_TYPES:
-                    self.sink.error(
-                        ErrorCode.JOINT_TYPE_INVALID,
-                        f"virtual_joint '{vj_name}' has unknown type '{vj_type}' (expected fixed, floating or planar)",
-                        self.loc(child),
-                    )
-                    continue
-                virtual_joints.append(VirtualJoint(vj_name, vj_type, frame, child_link))
+                vj = self.virtual_joint(child)
+                if vj is not None:
+                    virtual_joints.append(vj)
             elif tag == "passive_joint":
                 name = self.attr(child, "name")
                 if name is not None:
@@ -140,7 +129,48 @@ class _Reader:
                     disabled.append(DisabledCollision(link1, link2, (child.get("reason") or "").strip()))
             elif tag not in IGNORED:
                 self.unsupported(child, "robot")
-        # references between SRDF elements
+        self.check_references(group_els, subgroup_refs, states, effectors)
+        return Semantics(
+            robot_name=robot_name,
+            groups=tuple(groups),
+            group_states=tuple(s for s, _ in states),
+            end_effectors=tuple(e for e, _ in effectors),
+            virtual_joints=tuple(virtual_joints),
+            passive_joints=tuple(dict.fromkeys(passive)),
+            disabled_collisions=tuple(disabled),
+        )
+
+    def end_effector(self, element: etree._Element) -> EndEffector | None:
+        name, parent_link, group = (self.attr(element, a) for a in ("name", "parent_link", "group"))
+        if name is None or parent_link is None or group is None:
+            return None  # self.attr said which is missing
+        parent_group = (element.get("parent_group") or "").strip() or None
+        return EndEffector(name, parent_link, group, parent_group)
+
+    def virtual_joint(self, element: etree._Element) -> VirtualJoint | None:
+        vj_name, vj_type, frame, child_link = (
+            self.attr(element, a) for a in ("name", "type", "parent_frame", "child_link")
+        )
+        if vj_name is None or vj_type is None or frame is None or child_link is None:
+            return None
+        if vj_type not in _VIRTUAL_JOINT_TYPES:
+            self.sink.error(
+                ErrorCode.JOINT_TYPE_INVALID,
+                f"virtual_joint '{vj_name}' has unknown type '{vj_type}' (expected fixed, floating or planar)",
+                self.loc(element),
+            )
+            return None
+        return VirtualJoint(vj_name, vj_type, frame, child_link)
+
+    def check_references(
+        self,
+        group_els: dict[str, etree._Element],
+        subgroup_refs: list[tuple[str, etree._Element]],
+        states: list[tuple[GroupState, etree._Element]],
+        effectors: list[tuple[EndEffector, etree._Element]],
+    ) -> None:
+        """References between SRDF elements: a subgroup, a group state's group, an end effector's groups
+        that are not defined are warned about, and the semantics load."""
         for ref, element in subgroup_refs:
             if ref not in group_els:
                 self.sink.warning(
@@ -161,15 +191,6 @@ class _Reader:
                         f"end_effector '{effector.name}' {role} '{ref}' is not a defined group",
                         self.loc(element),
                     )
-        return Semantics(
-            robot_name=robot_name,
-            groups=tuple(groups),
-            group_states=tuple(s for s, _ in states),
-            end_effectors=tuple(e for e, _ in effectors),
-            virtual_joints=tuple(virtual_joints),
-            passive_joints=tuple(dict.fromkeys(passive)),
-            disabled_collisions=tuple(disabled),
-        )
 
     def group(self, element: etree._Element, passive: list[str], subgroup_refs: list) -> Group | None:
         name = self.attr(element, "name")
