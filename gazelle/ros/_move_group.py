@@ -90,24 +90,46 @@ class MoveGroupNode(_Execution):
         cb = ReentrantCallbackGroup()
         self._cb = cb
         self.create_subscription(JointState, "joint_states", self._on_joint_states, 10, callback_group=cb)
+        self._take_descriptions()
+        self._serve_interfaces()
+        self._controllers = self._read_controllers()
+        self._trajectory_clients = {}
+        self._position_pubs = {}  # gz JointPositionController command topics
+        self._controller_lists = {}  # list_controllers clients by service name
+        # The controllers' FollowJointTrajectory clients live on their own node and single-threaded
+        # executor: on the node's multi-threaded one, busy with /joint_states, their status and result
+        # messages came seconds late or not at all (rclpy's executor is slow and its action client
+        # racy across threads: ros2/rclpy#1123).
+        self._execution_node = rclpy.create_node("move_group_trajectory_execution", context=self.context)
+        self._execution_executor = SingleThreadedExecutor(context=self.context)
+        self._execution_executor.add_node(self._execution_node)
+        self._execution_thread = threading.Thread(target=self._spin_execution, name="move_group execution", daemon=True)
+        self._execution_thread.start()
+
+    def _take_descriptions(self) -> None:
+        """The robot from the robot_description(_semantic) parameters, or, as MoveIt's nodes do when they
+        are not given, from the latched topics of those names."""
         urdf = self._param("robot_description")
         srdf = self._param("robot_description_semantic")
         if urdf and srdf:
             self._build(urdf, srdf)
-        else:
-            # as MoveIt's nodes do when the parameters are not given: the latched topics
-            for topic in ("robot_description", "robot_description_semantic"):
-                self.create_subscription(
-                    String,
-                    topic,
-                    lambda msg, t=topic: self._on_text(t, str(getattr(msg, "data", ""))),
-                    LATCHED,
-                    callback_group=cb,
-                )
-            if urdf:
-                self._texts["robot_description"] = urdf
-            if srdf:
-                self._texts["robot_description_semantic"] = srdf
+            return
+        for topic in ("robot_description", "robot_description_semantic"):
+            self.create_subscription(
+                String,
+                topic,
+                lambda msg, t=topic: self._on_text(t, str(getattr(msg, "data", ""))),
+                LATCHED,
+                callback_group=self._cb,
+            )
+        if urdf:
+            self._texts["robot_description"] = urdf
+        if srdf:
+            self._texts["robot_description_semantic"] = srdf
+
+    def _serve_interfaces(self) -> None:
+        """move_group's services, planning-scene topics, display topic and actions, under its names."""
+        cb = self._cb
         for srv_type, name, fn in (
             (GetPositionFK, "compute_fk", self._compute_fk),
             (GetPositionIK, "compute_ik", self._compute_ik),
@@ -150,19 +172,6 @@ class MoveGroupNode(_Execution):
             cancel_callback=lambda _g: CancelResponse.ACCEPT,
             callback_group=cb,
         )
-        self._controllers = self._read_controllers()
-        self._trajectory_clients = {}
-        self._position_pubs = {}  # gz JointPositionController command topics
-        self._controller_lists = {}  # list_controllers clients by service name
-        # The controllers' FollowJointTrajectory clients live on their own node and single-threaded
-        # executor: on the node's multi-threaded one, busy with /joint_states, their status and result
-        # messages came seconds late or not at all (rclpy's executor is slow and its action client
-        # racy across threads: ros2/rclpy#1123).
-        self._execution_node = rclpy.create_node("move_group_trajectory_execution", context=self.context)
-        self._execution_executor = SingleThreadedExecutor(context=self.context)
-        self._execution_executor.add_node(self._execution_node)
-        self._execution_thread = threading.Thread(target=self._spin_execution, name="move_group execution", daemon=True)
-        self._execution_thread.start()
 
     def destroy_node(self) -> None:
         """Destroy the action servers and clients first: one left alive holds its node's handle, and the
