@@ -7,6 +7,7 @@ import argparse
 import os
 import re
 import sys
+from typing import Any
 
 _PACKAGE_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 """A ROS package name (REP 144: lower case by rule; upper case is found in the wild, so accepted)."""
@@ -90,11 +91,7 @@ def run_launch_file(
     show_args: bool = False,
     print_description: bool = False,
 ) -> int:
-    import traceback
-
-    from launch import LaunchDescription, LaunchService
-    from launch.actions import IncludeLaunchDescription
-    from launch.launch_description_sources import AnyLaunchDescriptionSource, InvalidLaunchFileError
+    from launch import LaunchService
     from launch.logging import log
 
     if path.endswith((".xml", ".yaml", ".yml")):
@@ -104,48 +101,20 @@ def run_launch_file(
             f"'{path}': XML and YAML launch files are not supported by gazelle's launch yet; use a .launch.py",
         )
         return 1
-    source = AnyLaunchDescriptionSource(os.path.abspath(path))
-    try:
-        from launch.launch_context import LaunchContext
-
-        ld = source.get_launch_description(LaunchContext())
-    except InvalidLaunchFileError as err:
-        log("ERROR", "launch", str(err))
+    ld = _load_description(path, debug)
+    if ld is None:
         return 1
-    except Exception as err:
-        # the user's launch file raised: show its traceback (the user's frames), not ours
-        from launch.launch_service import _user_traceback
+    file_locals = {
+        "current_launch_file_path": os.path.abspath(path),
+        "current_launch_file_directory": os.path.dirname(os.path.abspath(path)),
+    }
+    from launch.launch_context import LaunchContext
 
-        log("ERROR", "launch", f"Caught exception when trying to load file of format [py]: {err}")
-        tb = _user_traceback(err)
-        sys.stderr.write(tb if tb else "".join(traceback.format_exception(err)))
-        if debug:
-            traceback.print_exception(err)
-        return 1
-    if ld is None or not isinstance(ld, LaunchDescription):
-        log("ERROR", "launch", f"generate_launch_description() of '{path}' did not return a LaunchDescription")
-        return 1
-    from launch.launch_context import LaunchContext as _Context
-
-    walk_context = _Context()
-    walk_context.extend_locals(
-        {
-            "current_launch_file_path": os.path.abspath(path),
-            "current_launch_file_directory": os.path.dirname(os.path.abspath(path)),
-        }
-    )
+    walk_context = LaunchContext()
+    walk_context.extend_locals(file_locals)
     declared = ld.get_launch_arguments(context=walk_context)
     if show_args:
-        print("Arguments (pass arguments as '<name>:=<value>'):\n")
-        if not declared:
-            print("  No arguments.")
-        for d in declared:
-            print(f"    '{d.name}':")
-            print(f"        {d.description}")
-            if d.choices is not None:
-                print(f"        Valid choices are: {d.choices}")
-            default = d.default_text()
-            print(f"        (default: '{default}')\n" if default is not None else "")
+        _show_arguments(declared)
         return 0
     if print_description:
         for e in ld.entities:
@@ -166,12 +135,51 @@ def run_launch_file(
     service = LaunchService(argv=[f"{k}:={v}" for k, v in launch_args], debug=debug)
     for k, v in launch_args:
         service.context.launch_configurations[k] = v
-    service.context.extend_locals(
-        {
-            "current_launch_file_path": os.path.abspath(path),
-            "current_launch_file_directory": os.path.dirname(os.path.abspath(path)),
-        }
-    )
+    service.context.extend_locals(file_locals)
     service.include_launch_description(ld)
-    _ = IncludeLaunchDescription
     return service.run()
+
+
+def _load_description(path: str, debug: bool) -> Any:
+    """The file's LaunchDescription; None after saying why (a bad file, or the user's own traceback:
+    their frames, not ours)."""
+    import traceback
+
+    from launch import LaunchDescription
+    from launch.launch_context import LaunchContext
+    from launch.launch_description_sources import AnyLaunchDescriptionSource, InvalidLaunchFileError
+    from launch.logging import log
+
+    source = AnyLaunchDescriptionSource(os.path.abspath(path))
+    try:
+        ld = source.get_launch_description(LaunchContext())
+    except InvalidLaunchFileError as err:
+        log("ERROR", "launch", str(err))
+        return None
+    except Exception as err:
+        from launch.launch_service import _user_traceback
+
+        log("ERROR", "launch", f"Caught exception when trying to load file of format [py]: {err}")
+        tb = _user_traceback(err)
+        sys.stderr.write(tb if tb else "".join(traceback.format_exception(err)))
+        if debug:
+            traceback.print_exception(err)
+        return None
+    if ld is None or not isinstance(ld, LaunchDescription):
+        log("ERROR", "launch", f"generate_launch_description() of '{path}' did not return a LaunchDescription")
+        return None
+    return ld
+
+
+def _show_arguments(declared: list[Any]) -> None:
+    """``ros2 launch --show-args``: each declared argument, its description, choices and default."""
+    print("Arguments (pass arguments as '<name>:=<value>'):\n")
+    if not declared:
+        print("  No arguments.")
+    for d in declared:
+        print(f"    '{d.name}':")
+        print(f"        {d.description}")
+        if d.choices is not None:
+            print(f"        Valid choices are: {d.choices}")
+        default = d.default_text()
+        print(f"        (default: '{default}')\n" if default is not None else "")
