@@ -420,7 +420,18 @@ class Viewer:
 
     # ------------------------------------------------------------------ gui
     def _setup_gui(self) -> None:
+        """The panel: a folder each for the simulation, entities, driving, spawning, overlays and cameras,
+        then what each control does."""
         g = self.server.gui
+        self._gui_simulation(g)
+        self._gui_entities(g)
+        self._gui_drive(g)
+        self._gui_spawn(g)
+        self._gui_overlays(g)
+        self._gui_camera(g)
+        self._wire_gui()
+
+    def _gui_simulation(self, g: viser.GuiApi) -> None:
         with g.add_folder("Simulation"):
             self._play = g.add_button("Pause", hint="Pause or resume physics")
             self._step_btn = g.add_button("Step", hint="One physics step (while paused)")
@@ -428,6 +439,8 @@ class Viewer:
             self._time_text = g.add_text("Sim time", initial_value="0.000 s", disabled=True)
             self._real_text = g.add_text("Real time", initial_value="0.0 s", disabled=True)
             self._rtf_text = g.add_text("RTF", initial_value="-", disabled=True)
+
+    def _gui_entities(self, g: viser.GuiApi) -> None:
         with g.add_folder("Entities"):
             entity_options: list[str] = [NO_SELECTION]  # (str, not a literal: the options change)
             self._entity_dd = g.add_dropdown(
@@ -435,6 +448,8 @@ class Viewer:
             )
             self._pose_text = g.add_text("Pose", initial_value="", disabled=True)
             self._delete_btn = g.add_button("Delete entity", color="red")
+
+    def _gui_drive(self, g: viser.GuiApi) -> None:
         with g.add_folder("Drive"):
             self._drive_text = g.add_text("cmd_vel", initial_value="select a diff-drive robot", disabled=True)
             self._fwd = g.add_button("Forward")
@@ -448,6 +463,8 @@ class Viewer:
                 hint="WASD / arrow keys press the buttons above (instead of moving the camera)",
             )
             self._keys_html = g.add_html("")
+
+    def _gui_spawn(self, g: viser.GuiApi) -> None:
         with g.add_folder("Spawn"):
             model_options: list[str] = [NO_MODELS]
             self._model_dd = g.add_dropdown("Model", options=model_options, initial_value=NO_MODELS)
@@ -457,6 +474,8 @@ class Viewer:
             self._spawn_btn = g.add_button("Spawn")
             self._rescan_btn = g.add_button("Rescan resource paths")
             self._spawn_text = g.add_text("Spawn result", initial_value="", disabled=True)
+
+    def _gui_overlays(self, g: viser.GuiApi) -> None:
         with g.add_folder("Overlays"):
             self._tf_box = g.add_checkbox("TF frames", initial_value=False)
             self._col_box = g.add_checkbox("Collision geometry", initial_value=False)
@@ -481,6 +500,8 @@ class Viewer:
                 initial_value=True,
                 hint=f"The latest arm motion planned ({PLAN_TOPIC}): the tool's path (blue) and goal (axes)",
             )
+
+    def _gui_camera(self, g: viser.GuiApi) -> None:
         with g.add_folder("Camera"):
             camera_options: list[str] = [NO_CAMERA]
             self._camera_dd = g.add_dropdown(
@@ -488,6 +509,7 @@ class Viewer:
             )
             self._camera_img = g.add_image(np.zeros((48, 64, 3), dtype=np.uint8), label="Image", format="jpeg")
 
+    def _wire_gui(self) -> None:
         self._play.on_click(lambda _e: self._toggle_pause())
         self._step_btn.on_click(lambda _e: self._step())
         self._reset_btn.on_click(lambda _e: self.sim.reset(time_=True, state=True, spawned=False))
