@@ -254,35 +254,9 @@ class _Parts(_Reader):
             radii = self.vec3(shape, "radii", (1.0, 1.0, 1.0), doc)
             return Ellipsoid(radii) if positive(*radii) else None
         if kind == "plane":
-            normal = self.vec3(shape, "normal", (0.0, 0.0, 1.0), doc)
-            size = self.vector(shape, "size", 2, Plane().size, doc) or Plane().size
-            n = math.sqrt(sum(v * v for v in normal))
-            if n < 1e-12:
-                self.sink.error(ErrorCode.GEOMETRY_INVALID, "<plane> normal has zero length", loc)
-                return None
-            return Plane((normal[0] / n, normal[1] / n, normal[2] / n), (size[0], size[1]))
+            return self.plane(shape, doc, loc)
         if kind == "mesh":
-            for child in child_elements(shape):
-                if _tag(child) not in ("uri", "scale") and ":" not in _tag(child):
-                    self.unsupported(child, doc, "mesh")
-            uri = self.text(shape, "uri")
-            if not uri:
-                self.sink.error(ErrorCode.ELEMENT_MISSING, "<mesh> has no <uri>", loc)
-                return None
-            scale = self.vec3(shape, "scale", (1.0, 1.0, 1.0), doc)
-            path = (
-                self.resolve(uri, doc)
-                if ("://" not in uri or uri.startswith(("model://", "package://", "file://")))
-                else None
-            )
-            if path is None or not path.is_file():
-                why = f": {self.resolver.unresolved_reason(uri, doc.base_dir)}" if path is None else ""
-                self.sink.warning(ErrorCode.MESH_NOT_FOUND, f"mesh '{uri}' not found{why}", loc)
-                return Mesh(uri, None, scale)
-            if not self.resolver.allowed(path):
-                self.sink.warning(ErrorCode.URI_UNRESOLVED, f"mesh {self.resolver.refusal(uri)}", loc)
-                return Mesh(uri, None, scale)
-            return Mesh(uri, str(path), scale)
+            return self.mesh(shape, doc, loc)
         if kind == "empty":
             return None
         self.sink.warning(
@@ -292,6 +266,42 @@ class _Parts(_Reader):
             loc,
         )
         return None
+
+    def plane(self, shape: etree._Element, doc: _Doc, loc: SourceLocation) -> Plane | None:
+        """<plane>: its normal made a unit vector (an error if it has no length) and its size."""
+        normal = self.vec3(shape, "normal", (0.0, 0.0, 1.0), doc)
+        size = self.vector(shape, "size", 2, Plane().size, doc) or Plane().size
+        n = math.sqrt(sum(v * v for v in normal))
+        if n < 1e-12:
+            self.sink.error(ErrorCode.GEOMETRY_INVALID, "<plane> normal has zero length", loc)
+            return None
+        return Plane((normal[0] / n, normal[1] / n, normal[2] / n), (size[0], size[1]))
+
+    def mesh(self, shape: etree._Element, doc: _Doc, loc: SourceLocation) -> Mesh | None:
+        """<mesh>: its file found on the resource roots (a mesh not found, or outside them, is kept without
+        a path, with a warning: the shape is then left out where it is built), its scale; <submesh> and
+        the other children are warned about."""
+        for child in child_elements(shape):
+            if _tag(child) not in ("uri", "scale") and ":" not in _tag(child):
+                self.unsupported(child, doc, "mesh")
+        uri = self.text(shape, "uri")
+        if not uri:
+            self.sink.error(ErrorCode.ELEMENT_MISSING, "<mesh> has no <uri>", loc)
+            return None
+        scale = self.vec3(shape, "scale", (1.0, 1.0, 1.0), doc)
+        path = (
+            self.resolve(uri, doc)
+            if ("://" not in uri or uri.startswith(("model://", "package://", "file://")))
+            else None
+        )
+        if path is None or not path.is_file():
+            why = f": {self.resolver.unresolved_reason(uri, doc.base_dir)}" if path is None else ""
+            self.sink.warning(ErrorCode.MESH_NOT_FOUND, f"mesh '{uri}' not found{why}", loc)
+            return Mesh(uri, None, scale)
+        if not self.resolver.allowed(path):
+            self.sink.warning(ErrorCode.URI_UNRESOLVED, f"mesh {self.resolver.refusal(uri)}", loc)
+            return Mesh(uri, None, scale)
+        return Mesh(uri, str(path), scale)
 
     def surface(self, element: etree._Element | None, doc: _Doc) -> Surface:
         if element is None:

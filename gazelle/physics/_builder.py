@@ -46,6 +46,7 @@ import logging
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -195,6 +196,74 @@ def _primitive(g: object) -> dict | None:
     return None
 
 
+def _plane_quat(g: Plane, pose: Pose) -> list[float] | None:
+    """A plane geom's orientation when its normal is not +z (MuJoCo's planes face +z): the collision's
+    own rotation times the one taking +z to the normal; None for a +z (or zero) normal."""
+    n = np.asarray(g.normal, dtype=float)
+    if not (np.linalg.norm(n) > 0 and not np.allclose(n / np.linalg.norm(n), [0, 0, 1])):
+        return None
+    z = np.array([0.0, 0.0, 1.0])
+    n = n / np.linalg.norm(n)
+    axis = np.cross(z, n)
+    ang = math.atan2(np.linalg.norm(axis), float(np.dot(z, n)))
+    if np.linalg.norm(axis) <= 1e-12:
+        return None
+    axis = axis / np.linalg.norm(axis)
+    q = [math.cos(ang / 2), *(axis * math.sin(ang / 2))]
+    qq = np.zeros(4)
+    mujoco.mju_mulQuat(qq, np.asarray(pose.orientation, dtype=float), np.asarray(q))
+    return list(qq)
+
+
+def _mesh_shape(
+    spec: mujoco.MjSpec,
+    col: Collision,
+    g: Mesh,
+    piece_names: list[str],
+    decomposed: list[tuple[str, int, float, str]] | None,
+) -> dict[str, Any] | None:
+    """A collision mesh's geom fields: the mesh itself if convex, else its convex parts' meshes appended
+    to ``piece_names`` (one geom each). None, with a warning naming it, for a mesh that cannot be found
+    or read: gz-sim loads a world whose mesh fails to load without that geometry (gz-sim's MeshManager
+    logs the failure and the collision has no shape); a missing construction barrel mesh must not kill a
+    whole house world."""
+    where = f"{col.location}: " if col.location is not None else ""
+    if g.path is None:
+        _log.warning(f"{where}collision '{col.name}': mesh '{g.uri}' could not be resolved; it is left out")
+        return None
+    try:
+        parts = collision_parts(g.path, g.scale)
+    except MeshReadError as err:
+        _log.warning(f"{where}collision '{col.name}': {err}; it is left out")
+        return None
+    if parts is None:  # convex: the mesh itself
+        vertices, faces = _load_mesh(g.path)
+        mesh = _shared_mesh(spec, "collision", vertices * np.asarray(g.scale), faces)
+        return {"type": mujoco.mjtGeom.mjGEOM_MESH, "meshname": mesh.name}
+    for piece in parts.pieces:  # not convex: one geom per convex part (see _convex)
+        piece_names.append(_shared_mesh(spec, "collision", np.asarray(piece, dtype=float)).name)
+    if decomposed is not None:
+        decomposed.append((g.path, len(piece_names), parts.seconds, parts.source))
+    return {"type": mujoco.mjtGeom.mjGEOM_MESH}
+
+
+def _contact_settings(col: Collision, mass_hint: float, timestep: float, moving: bool) -> dict[str, Any]:
+    """A collision's contact fields: stiffness from its surface, torsional friction, collide bitmask."""
+    settings: dict[str, Any] = {}
+    solref = _solref_from_surface(col, mass_hint, timestep, moving=moving)
+    if solref is not None:
+        settings["solref"], settings["solimp"] = solref
+    surface = col.surface
+    # MuJoCo uses torsional friction from condim 4
+    if surface.torsional:
+        settings["condim"] = 4
+    # Gazebo collides two shapes when (bitmask1 & bitmask2) != 0, default 0xffff; MuJoCo when
+    # (contype1 & conaffinity2) | (contype2 & conaffinity1): both fields = the bitmask is the same rule.
+    mask = surface.collide_bitmask if surface.collide_bitmask is not None else DEFAULT_COLLIDE_BITMASK
+    settings["contype"] = settings["conaffinity"] = int(mask) & 0xFFFFFFFF
+    return settings
+
+
 def _add_geom(
     spec: mujoco.MjSpec,
     body: mujoco.MjsBody,
@@ -225,58 +294,20 @@ def _add_geom(
         kwargs.update(primitive)
     elif isinstance(g, Plane):
         kwargs.update(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[g.size[0] / 2, g.size[1] / 2, 1.0])
-        n = np.asarray(g.normal, dtype=float)
-        if np.linalg.norm(n) > 0 and not np.allclose(n / np.linalg.norm(n), [0, 0, 1]):
-            z = np.array([0.0, 0.0, 1.0])
-            n = n / np.linalg.norm(n)
-            axis = np.cross(z, n)
-            ang = math.atan2(np.linalg.norm(axis), float(np.dot(z, n)))
-            if np.linalg.norm(axis) > 1e-12:
-                axis = axis / np.linalg.norm(axis)
-                q = [math.cos(ang / 2), *(axis * math.sin(ang / 2))]
-                qq = np.zeros(4)
-                mujoco.mju_mulQuat(qq, np.asarray(col.pose.orientation, dtype=float), np.asarray(q))
-                kwargs["quat"] = list(qq)
+        quat = _plane_quat(g, col.pose)
+        if quat is not None:
+            kwargs["quat"] = quat
     elif isinstance(g, Cone):
         mesh = _shared_mesh(spec, "collision", cone_vertices(g.radius, g.length))
         kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh.name)
     elif isinstance(g, Mesh):
-        # a collision mesh that cannot be found or read is left out with a warning naming it, and the rest
-        # of the model is built: gz-sim loads a world whose mesh fails to load without that geometry
-        # (gz-sim's MeshManager logs the failure and the collision has no shape); a missing construction
-        # barrel mesh must not kill a whole house world
-        where = f"{col.location}: " if col.location is not None else ""
-        if g.path is None:
-            _log.warning(f"{where}collision '{col.name}': mesh '{g.uri}' could not be resolved; it is left out")
+        shape = _mesh_shape(spec, col, g, piece_names, decomposed)
+        if shape is None:
             return
-        try:
-            parts = collision_parts(g.path, g.scale)
-        except MeshReadError as err:
-            _log.warning(f"{where}collision '{col.name}': {err}; it is left out")
-            return
-        if parts is None:  # convex: the mesh itself
-            vertices, faces = _load_mesh(g.path)
-            mesh = _shared_mesh(spec, "collision", vertices * np.asarray(g.scale), faces)
-            kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh.name)
-        else:  # not convex: one geom per convex part (see _convex)
-            kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH)
-            for piece in parts.pieces:
-                piece_names.append(_shared_mesh(spec, "collision", np.asarray(piece, dtype=float)).name)
-            if decomposed is not None:
-                decomposed.append((g.path, len(piece_names), parts.seconds, parts.source))
+        kwargs.update(shape)
     else:  # pragma: no cover - the union is closed
         raise BuildError(f"collision '{col.name}': unsupported geometry {type(g).__name__}")
-    solref = _solref_from_surface(col, mass_hint, spec.option.timestep, moving=moving)
-    if solref is not None:
-        kwargs["solref"], kwargs["solimp"] = solref
-    surface = col.surface
-    # MuJoCo uses torsional friction from condim 4
-    if surface.torsional:
-        kwargs["condim"] = 4
-    # Gazebo collides two shapes when (bitmask1 & bitmask2) != 0, default 0xffff; MuJoCo when
-    # (contype1 & conaffinity2) | (contype2 & conaffinity1): both fields = the bitmask is the same rule.
-    mask = surface.collide_bitmask if surface.collide_bitmask is not None else DEFAULT_COLLIDE_BITMASK
-    kwargs["contype"] = kwargs["conaffinity"] = int(mask) & 0xFFFFFFFF
+    kwargs.update(_contact_settings(col, mass_hint, spec.option.timestep, moving))
     if piece_names:
         for i, mesh_name in enumerate(piece_names):
             body.add_geom(**{**kwargs, "name": f"{name}/{i}", "meshname": mesh_name})

@@ -271,47 +271,57 @@ def collision_parts(path: str, scale: tuple[float, float, float]) -> Parts | Non
     if pieces is not None:
         parts = Parts(pieces, 0.0, "disk cache")
     else:
-        timeout = float(os.environ.get("GAZELLE_DECOMPOSE_TIMEOUT") or DEFAULT_TIMEOUT_SEC)
-        budget = min(timeout, load_budget())
-        left = getattr(_load, "left", None)  # what is left of the load's budget (see prepare)
-        if left is not None and left < budget:
-            budget = max(left, MIN_ATTEMPT_SEC)
-            if left < MIN_ATTEMPT_SEC and usable:
-                _in_background(disk, key, verts, faces, timeout)
-                return _hull(
-                    key,
-                    path,
-                    "the load's time for decompositions (GAZELLE_DECOMPOSE_LOAD_BUDGET, for all of a model's "
-                    "meshes) is spent: it is decomposed in the background, and loads after it has finished use "
-                    "its parts",
-                )
-        t0 = time.monotonic()
-        try:
-            raw = run_bounded(
-                lambda: _decompose(verts, faces),
-                what="its convex decomposition",
-                timeout_sec=budget,
-                timeout_hint="GAZELLE_DECOMPOSE_LOAD_BUDGET" if budget < timeout else "GAZELLE_DECOMPOSE_TIMEOUT",
-            )
-        except BoundExceeded as err:
-            _spend(time.monotonic() - t0)
-            if err.timed_out and budget < timeout and usable:
-                _in_background(disk, key, verts, faces, timeout)
-                return _hull(
-                    key,
-                    path,
-                    f"its decomposition takes more than the {budget:g} s a load may spend on it "
-                    "(GAZELLE_DECOMPOSE_LOAD_BUDGET): it goes on in the background, and loads after it has "
-                    "finished use its parts",
-                )
-            _save_disk(disk, key, ())  # not again on this machine, with this version
-            return _hull(key, path, str(err))
-        _spend(time.monotonic() - t0)
-        pieces = tuple(np.asarray(p, dtype=float) for p in raw if len(p) >= 4)
-        parts = Parts(pieces, time.monotonic() - t0, "computed")
-        _save_disk(disk, key, pieces)
+        parts = _decompose_now(key, path, disk, verts, faces, usable)
+        if parts is None:
+            return None  # its convex hull (_hull said why)
     with _lock:
         _memory[key] = parts
+    return parts
+
+
+def _decompose_now(key: str, path: str, disk: Path, verts: np.ndarray, faces: np.ndarray, usable: bool) -> Parts | None:
+    """Decompose within the load's time budget and cache the parts on disk; None where the mesh collides
+    as its convex hull instead (a decomposition that failed or ran out of time: with time, it goes on in
+    the background and a later load uses its parts)."""
+    timeout = float(os.environ.get("GAZELLE_DECOMPOSE_TIMEOUT") or DEFAULT_TIMEOUT_SEC)
+    budget = min(timeout, load_budget())
+    left = getattr(_load, "left", None)  # what is left of the load's budget (see prepare)
+    if left is not None and left < budget:
+        budget = max(left, MIN_ATTEMPT_SEC)
+        if left < MIN_ATTEMPT_SEC and usable:
+            _in_background(disk, key, verts, faces, timeout)
+            return _hull(
+                key,
+                path,
+                "the load's time for decompositions (GAZELLE_DECOMPOSE_LOAD_BUDGET, for all of a model's "
+                "meshes) is spent: it is decomposed in the background, and loads after it has finished use "
+                "its parts",
+            )
+    t0 = time.monotonic()
+    try:
+        raw = run_bounded(
+            lambda: _decompose(verts, faces),
+            what="its convex decomposition",
+            timeout_sec=budget,
+            timeout_hint="GAZELLE_DECOMPOSE_LOAD_BUDGET" if budget < timeout else "GAZELLE_DECOMPOSE_TIMEOUT",
+        )
+    except BoundExceeded as err:
+        _spend(time.monotonic() - t0)
+        if err.timed_out and budget < timeout and usable:
+            _in_background(disk, key, verts, faces, timeout)
+            return _hull(
+                key,
+                path,
+                f"its decomposition takes more than the {budget:g} s a load may spend on it "
+                "(GAZELLE_DECOMPOSE_LOAD_BUDGET): it goes on in the background, and loads after it has "
+                "finished use its parts",
+            )
+        _save_disk(disk, key, ())  # not again on this machine, with this version
+        return _hull(key, path, str(err))
+    _spend(time.monotonic() - t0)
+    pieces = tuple(np.asarray(p, dtype=float) for p in raw if len(p) >= 4)
+    parts = Parts(pieces, time.monotonic() - t0, "computed")
+    _save_disk(disk, key, pieces)
     return parts
 
 

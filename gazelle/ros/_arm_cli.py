@@ -192,58 +192,65 @@ def _parameters(node: Any, names: list[str], timeout: float) -> list[str]:
     return values
 
 
+def _joint_goal(values: dict[str, float]) -> Any:
+    """moveit_msgs/Constraints: each joint at its value, within TOLERANCE_RAD."""
+    from moveit_msgs.msg import Constraints, JointConstraint
+
+    constraints = Constraints()
+    constraints.joint_constraints = [
+        JointConstraint(
+            joint_name=n, position=float(v), tolerance_above=TOLERANCE_RAD, tolerance_below=TOLERANCE_RAD, weight=1.0
+        )
+        for n, v in values.items()
+    ]
+    return constraints
+
+
+def _pose_goal(link: str, frame: str, pose: tuple[float, float, float, float, float, float]) -> Any:
+    """moveit_msgs/Constraints: ``link`` within TOLERANCE_M of (x, y, z) and TOLERANCE_RAD of (roll, pitch,
+    yaw) in ``frame`` (a sphere region, absolute axis tolerances)."""
+    from geometry_msgs.msg import Pose
+    from moveit_msgs.msg import Constraints, OrientationConstraint, PositionConstraint
+    from shape_msgs.msg import SolidPrimitive
+
+    x, y, z, roll, pitch, yaw = pose
+    position = PositionConstraint(link_name=link, weight=1.0)
+    position.header.frame_id = frame
+    position.constraint_region.primitives = [SolidPrimitive(type=SolidPrimitive.SPHERE, dimensions=[TOLERANCE_M])]
+    target = Pose()
+    target.position.x, target.position.y, target.position.z = x, y, z
+    target.orientation.w = 1.0
+    position.constraint_region.primitive_poses = [target]
+    orientation = OrientationConstraint(link_name=link, weight=1.0)
+    orientation.header.frame_id = frame
+    q = quaternion(roll, pitch, yaw)
+    orientation.orientation.x, orientation.orientation.y, orientation.orientation.z, orientation.orientation.w = q
+    orientation.absolute_x_axis_tolerance = TOLERANCE_RAD
+    orientation.absolute_y_axis_tolerance = TOLERANCE_RAD
+    orientation.absolute_z_axis_tolerance = TOLERANCE_RAD
+    constraints = Constraints()
+    constraints.position_constraints = [position]
+    constraints.orientation_constraints = [orientation]
+    return constraints
+
+
 def _run(node: Any, args: argparse.Namespace) -> int:
     import rclpy
-    from geometry_msgs.msg import Pose
     from moveit_msgs.action import MoveGroup
-    from moveit_msgs.msg import (
-        Constraints,
-        JointConstraint,
-        MoveItErrorCodes,
-        OrientationConstraint,
-        PositionConstraint,
-    )
+    from moveit_msgs.msg import MoveItErrorCodes
     from rclpy.action.client import ActionClient
-    from shape_msgs.msg import SolidPrimitive
 
     srdf, urdf = _parameters(node, ["robot_description_semantic", "robot_description"], args.timeout)
     if not srdf:
         raise ArmError("move_group has no robot_description_semantic parameter")
     sem = semantics(srdf)
-    constraints = Constraints()
     if args.named or args.joints:
         values = (
             named_state(sem, args.group, args.named) if args.named else joint_values(sem, urdf, args.group, args.joints)
         )
-        constraints.joint_constraints = [
-            JointConstraint(
-                joint_name=n,
-                position=float(v),
-                tolerance_above=TOLERANCE_RAD,
-                tolerance_below=TOLERANCE_RAD,
-                weight=1.0,
-            )
-            for n, v in values.items()
-        ]
+        constraints = _joint_goal(values)
     else:
-        link = args.link or tip_link(sem, args.group)
-        x, y, z, roll, pitch, yaw = args.pose
-        position = PositionConstraint(link_name=link, weight=1.0)
-        position.header.frame_id = args.frame
-        position.constraint_region.primitives = [SolidPrimitive(type=SolidPrimitive.SPHERE, dimensions=[TOLERANCE_M])]
-        target = Pose()
-        target.position.x, target.position.y, target.position.z = x, y, z
-        target.orientation.w = 1.0
-        position.constraint_region.primitive_poses = [target]
-        orientation = OrientationConstraint(link_name=link, weight=1.0)
-        orientation.header.frame_id = args.frame
-        q = quaternion(roll, pitch, yaw)
-        orientation.orientation.x, orientation.orientation.y, orientation.orientation.z, orientation.orientation.w = q
-        orientation.absolute_x_axis_tolerance = TOLERANCE_RAD
-        orientation.absolute_y_axis_tolerance = TOLERANCE_RAD
-        orientation.absolute_z_axis_tolerance = TOLERANCE_RAD
-        constraints.position_constraints = [position]
-        constraints.orientation_constraints = [orientation]
+        constraints = _pose_goal(args.link or tip_link(sem, args.group), args.frame, tuple(args.pose))
     goal = MoveGroup.Goal()
     goal.request.group_name = args.group
     goal.request.allowed_planning_time = 5.0

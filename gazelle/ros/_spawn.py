@@ -293,34 +293,55 @@ def main(argv: list[str]) -> int:
             rclpy.shutdown(context=context)
 
 
+def _entity_xml(node: Node, executor: SingleThreadedExecutor, args: argparse.Namespace, timeout: float) -> str | None:
+    """The entity's XML from -topic, -string, -database or stdin (whichever was given); None after
+    saying why (a topic that published nothing in time, with who publishes it)."""
+    log = node.get_logger()
+    if args.topic:
+        log.info(f"Loading entity published on topic {args.topic}")
+        log.info(f"Waiting for entity xml on {args.topic}")
+        got = _read_topic(node, executor, args.topic, timeout)
+        if got is None:
+            _fail(
+                node,
+                f"Timed out after {timeout:g} s waiting for entity xml on topic {args.topic}: "
+                + _topic_hint(node, args.topic),
+            )
+        return got
+    if args.string is not None:
+        return args.string
+    if args.database:
+        return (
+            '<sdf version="1.6"><world name="default"><include>'
+            f"<uri>model://{args.database}</uri></include></world></sdf>"
+        )
+    log.info("Loading entity XML from stdin")
+    return sys.stdin.read()
+
+
+def _give_params_files(node: Node, executor: SingleThreadedExecutor, args: argparse.Namespace, timeout: float) -> bool:
+    """``--ros-args --params-file``: the files given to the robot's controller manager; True if that failed
+    (said why)."""
+    from ._spawner import give_params_files
+
+    robot_ns = args.robot_namespace.strip("/")
+    manager = f"/{robot_ns}/controller_manager" if robot_ns else "/controller_manager"
+    why = give_params_files(node, executor, manager, args.params_files, max(timeout, 1.0))
+    if why is not None:
+        _fail(node, f"--params-file: {why}")
+        return True
+    node.get_logger().info(f"Gave {', '.join(args.params_files)} to {manager}")
+    return False
+
+
 def _run(
     node: Node, executor: SingleThreadedExecutor, args: argparse.Namespace, timeout: float, file_xml: str | None
 ) -> int:
     log = node.get_logger()
     log.info("Spawn Entity started")
-    if file_xml is not None:
-        xml = file_xml
-    elif args.topic:
-        log.info(f"Loading entity published on topic {args.topic}")
-        log.info(f"Waiting for entity xml on {args.topic}")
-        got = _read_topic(node, executor, args.topic, timeout)
-        if got is None:
-            return _fail(
-                node,
-                f"Timed out after {timeout:g} s waiting for entity xml on topic {args.topic}: "
-                + _topic_hint(node, args.topic),
-            )
-        xml = got
-    elif args.string is not None:
-        xml = args.string
-    elif args.database:
-        xml = (
-            '<sdf version="1.6"><world name="default"><include>'
-            f"<uri>model://{args.database}</uri></include></world></sdf>"
-        )
-    else:
-        log.info("Loading entity XML from stdin")
-        xml = sys.stdin.read()
+    xml = file_xml if file_xml is not None else _entity_xml(node, executor, args, timeout)
+    if xml is None:
+        return 1
     if not xml.strip():
         return _fail(node, "Error: entity XML is empty")
 
@@ -360,15 +381,8 @@ def _run(
     if not res.success:
         return _fail(node, f"Spawn service failed: {res.status_message}")
     log.info(f"Spawn status: {res.status_message}")
-    if args.params_files:
-        from ._spawner import give_params_files
-
-        robot_ns = args.robot_namespace.strip("/")
-        manager = f"/{robot_ns}/controller_manager" if robot_ns else "/controller_manager"
-        why = give_params_files(node, executor, manager, args.params_files, max(timeout, 1.0))
-        if why is not None:
-            return _fail(node, f"--params-file: {why}")
-        log.info(f"Gave {', '.join(args.params_files)} to {manager}")
+    if args.params_files and _give_params_files(node, executor, args, timeout):
+        return 1
     if args.unpause:
         unpause = node.create_client(Empty, f"{ns}/unpause_physics")
         if unpause.wait_for_service(timeout_sec=timeout):

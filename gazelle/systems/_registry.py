@@ -214,6 +214,37 @@ class SensorPlan:
     make: Callable[[], System]
 
 
+def _plugin_plans(
+    link: str,
+    sensor: Sensor,
+    label: str,
+    sensor_plugins: dict[str, tuple[Callable[[], System], frozenset[str]]],
+    warn: Callable[[str, Any], None],
+) -> list[SensorPlan]:
+    """A sensor's plans through the gazebo_ros plugins inside it: one per plugin that publishes its type;
+    a warning for each other plugin (unknown, or of another sensor type)."""
+    plans = []
+    for plugin in sensor.plugins:
+        key = _normalise(plugin.filename) if _normalise(plugin.filename) in sensor_plugins else _normalise(plugin.name)
+        entry = sensor_plugins.get(key)
+        if entry is None:
+            problem = plugin_problem(plugin)
+            warn(f"{label}: {problem or f'plugin {plugin.filename} does not publish a sensor'}", plugin.location)
+            continue
+        make, types = entry
+        if sensor.type not in types:
+            if sensor.type not in SDF_SENSOR_TYPES:
+                warn(_sensor_type_problem(label, sensor.type), sensor.location)
+            else:
+                warn(
+                    f"{label}: plugin '{plugin.filename}' does not publish a {sensor.type} sensor; it is ignored",
+                    plugin.location,
+                )
+            continue
+        plans.append(SensorPlan(link, sensor, plugin, make))
+    return plans
+
+
 def plan_sensors(
     model: Model, world_plugins: tuple[Plugin, ...] | None = None
 ) -> tuple[list[SensorPlan], list[Diagnostic]]:
@@ -244,37 +275,9 @@ def plan_sensors(
     for link in model.links:
         for sensor in link.sensors:
             label = f"sensor '{sensor.name}' ({sensor.type}) on link '{link.name}'"
-            ran = False
-            for plugin in sensor.plugins:
-                key = (
-                    _normalise(plugin.filename)
-                    if _normalise(plugin.filename) in sensor_plugins
-                    else _normalise(plugin.name)
-                )
-                entry = sensor_plugins.get(key)
-                if entry is None:
-                    problem = plugin_problem(plugin)
-                    warn(
-                        f"{label}: {problem or f'plugin {plugin.filename} does not publish a sensor'}", plugin.location
-                    )
-                    continue
-                make, types = entry
-                if sensor.type not in types:
-                    if sensor.type not in SDF_SENSOR_TYPES:
-                        warn(_sensor_type_problem(label, sensor.type), sensor.location)
-                    else:
-                        warn(
-                            f"{label}: plugin '{plugin.filename}' does not publish a {sensor.type} sensor; "
-                            "it is ignored",
-                            plugin.location,
-                        )
-                    continue
-                plans.append(SensorPlan(link.name, sensor, plugin, make))
-                ran = True
-            if ran:
+            if sensor.plugins:  # through its own plugins; each one that does not publish it is warned about
+                plans.extend(_plugin_plans(link.name, sensor, label, sensor_plugins, warn))
                 continue
-            if sensor.plugins:
-                continue  # each plugin was warned about above
             make_gz = gz_types.get(sensor.type)
             if classic:
                 warn(

@@ -26,11 +26,38 @@ def _resolve_type(node: Any, topic: str, given: str | None, wait: float = 5.0) -
 def main(argv: list[str]) -> int:
     p = argparse.ArgumentParser(prog="ros2 topic", description="Various topic related sub-commands")
     sub = p.add_subparsers(dest="cmd", required=True)
+    _add_listing_verbs(sub)
+    _add_echo(sub)
+    _add_rate_verbs(sub)
+    _add_pub(sub)
+    args = p.parse_args(argv)
+    try:
+        with cli_node("ros2topic") as node:
+            verbs = {"list": _list, "echo": _echo, "hz": _hz, "info": _info, "type": _type, "pub": _pub}
+            verbs.update({"bw": _bw, "delay": _delay, "find": _find})
+            return verbs[args.cmd](node, args)
+    except InterfaceError as err:
+        print(str(err), file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        return 0
+
+
+def _add_listing_verbs(sub: Any) -> None:
+    """``list`` and ``find``, with ros2cli's options."""
     ls = sub.add_parser("list", help="Output a list of available topics")
     ls.add_argument("-t", "--show-types", action="store_true")
     ls.add_argument("-c", "--count-topics", action="store_true")
     ls.add_argument("--include-hidden-topics", action="store_true")
     ls.add_argument("--spin-time", type=float, default=1.5)
+    find = sub.add_parser("find", help="Output a list of available topics of a given type")
+    find.add_argument("topic_type")
+    find.add_argument("-c", "--count-topics", action="store_true")
+    find.add_argument("--include-hidden-topics", action="store_true")
+
+
+def _add_echo(sub: Any) -> None:
+    """``echo``, with ros2cli's options (QoS chosen to match every publisher unless given)."""
     echo = sub.add_parser("echo", help="Output messages from a topic")
     echo.add_argument("topic_name")
     echo.add_argument("message_type", nargs="?")
@@ -63,6 +90,10 @@ def main(argv: list[str]) -> int:
         help="QoS preset to start from (default: one that matches every publisher)",
     )
     echo.add_argument("--qos-depth", type=int, default=None)
+
+
+def _add_rate_verbs(sub: Any) -> None:
+    """``hz``, ``info``, ``type``, ``bw`` and ``delay``; ``--count`` (gazelle's) ends them after that many reports."""
     hz = sub.add_parser("hz", help="Print the average publishing rate to screen")
     hz.add_argument("topic_name")
     hz.add_argument("--window", "-w", type=int, default=10000)
@@ -81,10 +112,10 @@ def main(argv: list[str]) -> int:
     delay.add_argument("--window", "-w", type=int, default=10000)
     delay.add_argument("--count", type=int, default=None, help="(gazelle) stop after this many reports")
     delay.add_argument("--use-sim-time", action="store_true", help="(gazelle) compare with /clock's time")
-    find = sub.add_parser("find", help="Output a list of available topics of a given type")
-    find.add_argument("topic_type")
-    find.add_argument("-c", "--count-topics", action="store_true")
-    find.add_argument("--include-hidden-topics", action="store_true")
+
+
+def _add_pub(sub: Any) -> None:
+    """``pub``, with ros2cli's options."""
     pub = sub.add_parser("pub", help="Publish a message to a topic")
     pub.add_argument("topic_name")
     pub.add_argument("message_type")
@@ -94,17 +125,6 @@ def main(argv: list[str]) -> int:
     pub.add_argument("-t", "--times", type=int, default=0)
     pub.add_argument("-w", "--wait-matching-subscriptions", type=int, default=None)
     pub.add_argument("-p", "--print", type=int, default=1)
-    args = p.parse_args(argv)
-    try:
-        with cli_node("ros2topic") as node:
-            verbs = {"list": _list, "echo": _echo, "hz": _hz, "info": _info, "type": _type, "pub": _pub}
-            verbs.update({"bw": _bw, "delay": _delay, "find": _find})
-            return verbs[args.cmd](node, args)
-    except InterfaceError as err:
-        print(str(err), file=sys.stderr)
-        return 1
-    except KeyboardInterrupt:
-        return 0
 
 
 def _list(node: Any, args: argparse.Namespace) -> int:
