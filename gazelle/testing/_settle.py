@@ -48,29 +48,51 @@ def group_members(groups: Iterable[int]) -> dict[int, int]:
     return found
 
 
-def busy_threads(pids: Iterable[int]) -> list[tuple[int, str]]:
-    """(pid, thread name) of each thread of these processes that is running or runnable (``R``) or in an
-    uninterruptible wait (``D``: a short disk or page wait it comes back from runnable)."""
-    busy = []
+def thread_stats(pids: Iterable[int]) -> list[tuple[int, str]]:
+    """(pid, path of its stat file) for each thread of these processes now."""
+    found = []
     for pid in pids:
         try:
-            tasks = list(os.scandir(_PROC / str(pid) / "task"))
-        except OSError:
+            found += [(pid, f"{task.path}/stat") for task in os.scandir(_PROC / str(pid) / "task")]
+        except OSError:  # the process ended
             continue
-        for task in tasks:
-            fields = _stat_fields(Path(task.path) / "stat")
-            if fields and fields[0] in ("R", "D"):
-                try:
-                    name = (Path(task.path) / "comm").read_text().strip()
-                except OSError:
-                    name = task.name
-                busy.append((pid, name))
+    return found
+
+
+def _state(stat_path: str) -> bytes:
+    """A thread's state letter (b"" if it ended): the first field after the command name."""
+    try:
+        fd = os.open(stat_path, os.O_RDONLY)
+    except OSError:
+        return b""
+    try:
+        raw = os.read(fd, 512)
+    except OSError:
+        return b""
+    finally:
+        os.close(fd)
+    at = raw.rfind(b")")
+    return raw[at + 2 : at + 3] if at >= 0 else b""
+
+
+def busy_threads(threads: Iterable[tuple[int, str]]) -> list[tuple[int, str]]:
+    """(pid, thread name) of each of these threads (see :func:`thread_stats`) that is running or runnable
+    (``R``) or in an uninterruptible wait (``D``: a short disk or page wait it comes back from runnable).
+    Raw reads: a poll of a few processes' threads takes tens of microseconds."""
+    busy = []
+    for pid, stat_path in threads:
+        if _state(stat_path) in (b"R", b"D"):
+            try:
+                name = Path(stat_path).with_name("comm").read_text().strip()
+            except OSError:
+                name = stat_path
+            busy.append((pid, name))
     return busy
 
 
 class Settler:
-    """Waits until the processes in some process groups are idle; the group's members are looked up again
-    at most once a second (nodes a launch file starts appear late)."""
+    """Waits until the processes in some process groups are idle; the groups' members and their threads are
+    looked up again at most once a second (nodes a launch file starts appear late)."""
 
     POLL_SEC = 0.0005
     QUIET_POLLS = 2
@@ -82,6 +104,7 @@ class Settler:
         self.ignored: set[int] = set()
         self._groups: tuple[int, ...] = ()
         self._members: dict[int, int] = {}
+        self._threads: list[tuple[int, str]] = []
         self._looked = -1e9
 
     def wait(self, groups: Iterable[int]) -> list[tuple[int, str]]:
@@ -94,9 +117,10 @@ class Settler:
         now = time.monotonic()
         if groups != self._groups or now - self._looked > 1.0:
             self._groups, self._members, self._looked = groups, group_members(groups), now
+            self._threads = thread_stats(self._members)
         deadline, quiet = now + self.timeout, 0
         while True:
-            busy = busy_threads(self._members)
+            busy = busy_threads(self._threads)
             quiet = 0 if busy else quiet + 1
             if quiet >= self.QUIET_POLLS:
                 return []
