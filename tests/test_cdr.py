@@ -24,7 +24,8 @@ from gazelle.systems import Imu, JointStates, MsgType, Odometry, Transform, Tran
 floats = st.floats(allow_nan=True, allow_infinity=True, width=64)
 finite = st.floats(allow_nan=False, allow_infinity=False, width=64)
 stamps = st.one_of(st.floats(min_value=-5.0, max_value=2.0**31 - 2), st.just(0.0), st.just(0.9999999999))
-names = st.text(st.characters(blacklist_characters="\x00"), min_size=0, max_size=12)  # C strings: no NUL
+# ROS strings are UTF-8 C strings: no NUL, no lone surrogate (neither path can encode one)
+names = st.text(st.characters(blacklist_characters="\x00", blacklist_categories=("Cs",)), min_size=0, max_size=12)
 vec3 = st.tuples(floats, floats, floats)
 quat = st.tuples(floats, floats, floats, floats)
 poses = st.builds(Pose, vec3, quat)

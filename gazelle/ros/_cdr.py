@@ -44,6 +44,14 @@ _SEC, _NSEC = 0x2B3C4D5E, 0x1A2B3C4D
 """Sentinel stamp of the prototype (found again in its bytes)."""
 
 
+def _find(raw: bytes, pattern: bytes) -> int:
+    """Where ``pattern`` (a sentinel) is in a prototype's bytes; ValueError unless exactly once."""
+    at = raw.find(pattern)
+    if at < 0 or raw.find(pattern, at + 1) >= 0:
+        raise ValueError("a message prototype's layout is not as expected")
+    return at
+
+
 class JointStateTemplate:
     """sensor_msgs/JointState for one tuple of joint names, serialized from a template (see the module)."""
 
@@ -58,16 +66,9 @@ class JointStateTemplate:
         raw = serialize_message(proto)
         self.template = np.frombuffer(raw, dtype=np.uint8).copy()
         stamp = np.array([_SEC, _NSEC], dtype="<u4").tobytes()
-        self._stamp = self._find(raw, stamp)
-        self._arrays = [self._find(raw, s.astype("<f8").tobytes()) for s in sentinels] if n else [0, 0, 0]
+        self._stamp = _find(raw, stamp)
+        self._arrays = [_find(raw, s.astype("<f8").tobytes()) for s in sentinels] if n else [0, 0, 0]
         self.n = n
-
-    @staticmethod
-    def _find(raw: bytes, pattern: bytes) -> int:
-        at = raw.find(pattern)
-        if at < 0 or raw.find(pattern, at + 1) >= 0:
-            raise ValueError("the JointState prototype's layout is not as expected")
-        return at
 
     def serialize(self, block: JointStatesBlock) -> list[bytes]:
         """The block's messages, serialized (as rclpy's serializer would write them, padding aside)."""
@@ -141,15 +142,8 @@ class Template:
 
     def __init__(self, raw: bytes, stamps: Sequence[tuple[int, int]], runs: Sequence[list[float]]) -> None:
         self.template = bytes(raw)
-        self.stamps = [self._find(raw, struct.pack("<II", s, ns)) for s, ns in stamps]
-        self.runs = [(self._find(raw, struct.pack(f"<{len(r)}d", *r)), struct.Struct(f"<{len(r)}d")) for r in runs]
-
-    @staticmethod
-    def _find(raw: bytes, pattern: bytes) -> int:
-        at = raw.find(pattern)
-        if at < 0 or raw.find(pattern, at + 1) >= 0:
-            raise ValueError("a message prototype's layout is not as expected")
-        return at
+        self.stamps = [_find(raw, struct.pack("<II", s, ns)) for s, ns in stamps]
+        self.runs = [(_find(raw, struct.pack(f"<{len(r)}d", *r)), struct.Struct(f"<{len(r)}d")) for r in runs]
 
     def fill(self, stamps: Sequence[tuple[int, int]], runs: Sequence[Sequence[float]]) -> bytes:
         """The message with these stamps and runs (in the order the template was made with)."""
