@@ -177,6 +177,10 @@ class MoveGroupNode(_Execution):
         """Destroy the action servers and clients first: one left alive holds its node's handle, and the
         node would stay in the graph with that action's endpoints alone."""
         self._execution_executor.shutdown()
+        # its thread leaves its wait once the executor is shut down: wait for that before destroying what
+        # the wait set may hold (a Ctrl-C once ended in a segmentation fault in destroy_node while that
+        # thread was still in rcl_wait; a fresh clone's test_ctrl_c_ends_move_group_at_once_and_quietly)
+        self._execution_thread.join(timeout=2.0)
         for client in self._trajectory_clients.values():
             client.destroy()
         self._execution_node.destroy_node()
