@@ -22,7 +22,6 @@ writer's bytes deserialize to the message the converter builds, for random paylo
 
 from __future__ import annotations
 
-import math
 import struct
 from collections.abc import Callable, Sequence
 from functools import lru_cache
@@ -39,9 +38,12 @@ from sensor_msgs.msg import JointState as JointStateMsg
 from tf2_msgs.msg import TFMessage
 
 from ..systems import Imu, JointStates, JointStatesBlock, MsgType, Odometry, TransformBatch
+from ._convert import split_seconds
 
 _SEC, _NSEC = 0x2B3C4D5E, 0x1A2B3C4D
 """Sentinel stamp of the prototype (found again in its bytes)."""
+_MAX_SEC = 2**31 - 1
+"""builtin_interfaces/Time's seconds are an int32: a stamp from here on has no template."""
 
 
 def _find(raw: bytes, pattern: bytes) -> int:
@@ -99,26 +101,16 @@ def serialized_joint_states(block: JointStatesBlock) -> list[bytes] | None:
     n = len(block.names)
     if any(getattr(a, "shape", (0, -1))[1:] != (n,) for a in (block.positions, block.velocities, block.efforts)):
         return None
-    if block.stamps and not (0 <= block.stamps[0] and block.stamps[-1] < 2**31 - 1):  # (NaN fails too)
+    if block.stamps and not (0 <= block.stamps[0] and block.stamps[-1] < _MAX_SEC):  # (NaN fails too)
         return None
     return joint_state_template(block.names).serialize(block)
 
 
 # ----------------------------------------------------------------------------- one message at a time
-_MAX_SEC = 2**31 - 1
-
-
 def stamp_parts(sec: float) -> tuple[int, int] | None:
-    """(sec, nanosec) of builtin_interfaces/Time for ``sec`` seconds, rounded as ``_convert.to_time``
-    rounds (a negative time is 0); None where Time cannot hold it (NaN, past 2**31 - 1 seconds)."""
-    if not sec < _MAX_SEC:  # NaN too
-        return None
-    sec = max(sec, 0.0)
-    s = math.floor(sec)
-    ns = round((sec - s) * 1e9)
-    if ns >= 1_000_000_000:
-        s, ns = s + 1, ns - 1_000_000_000
-    return s, ns
+    """(sec, nanosec) of builtin_interfaces/Time for ``sec`` seconds, as ``_convert.to_time`` makes them;
+    None where Time cannot hold it (NaN, past 2**31 - 1 seconds)."""
+    return split_seconds(sec) if sec < _MAX_SEC else None  # (NaN fails the comparison)
 
 
 def _sentinel_run(key: int, n: int) -> list[float]:

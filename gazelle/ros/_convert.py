@@ -71,13 +71,20 @@ from ..systems import (
 )
 
 
-def to_time(sec: float) -> Time:
-    """builtin_interfaces/Time from seconds (non-negative)."""
+def split_seconds(sec: float) -> tuple[int, int]:
+    """(sec, nanosec) of builtin_interfaces/Time for ``sec`` seconds, nanoseconds rounded (a negative time
+    is 0). ``ros/_cdr.py`` writes template stamps with it too, so both paths round alike."""
     sec = max(sec, 0.0)
     s = int(math.floor(sec))
     ns = int(round((sec - s) * 1e9))
     if ns >= 1_000_000_000:
         s, ns = s + 1, ns - 1_000_000_000
+    return s, ns
+
+
+def to_time(sec: float) -> Time:
+    """builtin_interfaces/Time from seconds (non-negative)."""
+    s, ns = split_seconds(sec)
     return Time(sec=s, nanosec=ns)
 
 
