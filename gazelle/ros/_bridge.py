@@ -968,15 +968,12 @@ def _publish_converted(
     """Publish one payload, or each of a :class:`PayloadBlock`'s in order (on the publisher thread): as
     bytes serialized from a template where its kind has one (:mod:`._cdr`: a block of joint states,
     Odometry, TF, Imu, JointState), the others as messages built by ``convert``."""
-    if isinstance(payload, PayloadBlock):
-        block = serialized_joint_states(payload) if isinstance(payload, JointStatesBlock) else None
+    if isinstance(payload, JointStatesBlock):
+        block = serialized_joint_states(payload)
         if block is not None:
             for one in block:
                 handle.publish(one)
             return
-        for one in payload:
-            data = raw(one) if raw is not None else None
-            handle.publish(data if data is not None else convert(one))
-        return
-    data = raw(payload) if raw is not None else None
-    handle.publish(data if data is not None else convert(payload))
+    for one in payload if isinstance(payload, PayloadBlock) else (payload,):
+        data = raw(one) if raw is not None else None
+        handle.publish(data if data is not None else convert(one))

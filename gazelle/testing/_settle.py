@@ -23,13 +23,21 @@ from pathlib import Path
 _PROC = Path("/proc")
 
 
-def _stat_fields(path: Path) -> list[str] | None:
-    """The fields of a ``/proc/.../stat`` file after the command name (state first), or None if gone."""
+def _stat_fields(stat_path: str) -> list[bytes] | None:
+    """The fields of a ``/proc/.../stat`` file after the command name (state first, process group third),
+    or None if the process or thread has ended. Raw reads: a poll of a few processes' threads takes tens
+    of microseconds."""
     try:
-        text = path.read_text()
-    except OSError:  # the process or thread ended meanwhile
+        fd = os.open(stat_path, os.O_RDONLY)
+    except OSError:
         return None
-    return text[text.rfind(")") + 2 :].split()
+    try:
+        raw = os.read(fd, 1024)
+    except OSError:
+        return None
+    finally:
+        os.close(fd)
+    return raw[raw.rfind(b")") + 2 :].split()
 
 
 def group_members(groups: Iterable[int]) -> dict[int, int]:
@@ -42,7 +50,7 @@ def group_members(groups: Iterable[int]) -> dict[int, int]:
     for entry in os.scandir(_PROC):
         if not entry.name.isdigit():
             continue
-        fields = _stat_fields(Path(entry.path) / "stat")
+        fields = _stat_fields(f"{entry.path}/stat")
         if fields is not None and len(fields) > 2 and int(fields[2]) in wanted:
             found[int(entry.name)] = int(fields[2])
     return found
@@ -59,29 +67,13 @@ def thread_stats(pids: Iterable[int]) -> list[tuple[int, str]]:
     return found
 
 
-def _state(stat_path: str) -> bytes:
-    """A thread's state letter (b"" if it ended): the first field after the command name."""
-    try:
-        fd = os.open(stat_path, os.O_RDONLY)
-    except OSError:
-        return b""
-    try:
-        raw = os.read(fd, 512)
-    except OSError:
-        return b""
-    finally:
-        os.close(fd)
-    at = raw.rfind(b")")
-    return raw[at + 2 : at + 3] if at >= 0 else b""
-
-
 def busy_threads(threads: Iterable[tuple[int, str]]) -> list[tuple[int, str]]:
     """(pid, thread name) of each of these threads (see :func:`thread_stats`) that is running or runnable
-    (``R``) or in an uninterruptible wait (``D``: a short disk or page wait it comes back from runnable).
-    Raw reads: a poll of a few processes' threads takes tens of microseconds."""
+    (``R``) or in an uninterruptible wait (``D``: a short disk or page wait it comes back from runnable)."""
     busy = []
     for pid, stat_path in threads:
-        if _state(stat_path) in (b"R", b"D"):
+        fields = _stat_fields(stat_path)
+        if fields and fields[0] in (b"R", b"D"):
             try:
                 name = Path(stat_path).with_name("comm").read_text().strip()
             except OSError:
