@@ -40,11 +40,9 @@ from moveit_msgs.srv import (
     GetPositionIK,
     GetStateValidity,
 )
-from rclpy._rclpy_pybind11 import RCLError
 from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
 from rclpy.callback_groups import ReentrantCallbackGroup
-from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, SingleThreadedExecutor
-from rclpy.node import Node
+from rclpy.executors import MultiThreadedExecutor, SingleThreadedExecutor
 from rclpy.parameter import Parameter
 from rclpy.utilities import try_shutdown
 from sensor_msgs.msg import JointState
@@ -64,8 +62,9 @@ from ._move_group_base import (
 )
 from ._move_group_execution import _Execution
 from ._replies import serve
+from ._signals import spin_until_shutdown
 
-__all__ = ["PIPELINE_PARAMETERS", "Controller", "MoveGroupNode", "move_group_main", "spin_until_shutdown"]
+__all__ = ["PIPELINE_PARAMETERS", "Controller", "MoveGroupNode", "move_group_main"]
 
 
 class MoveGroupNode(_Execution):
@@ -383,20 +382,6 @@ def move_group_main(argv: list[str]) -> int:
     sys.stdout.flush()
     sys.stderr.flush()
     os._exit(0)
-
-
-def spin_until_shutdown(executor: Any, node: Node) -> None:
-    """Spin until Ctrl-C (or SIGTERM) shuts the node's context down, however the shutdown lands: as an
-    interrupt, as rclpy's ExternalShutdownException, or as the RCLError "the given context is not valid"
-    when it came while the executor was making its next wait set (seen under load). Any other rcl error,
-    with the context still up, is a real one and is raised."""
-    try:
-        executor.spin()
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
-    except RCLError:
-        if node.context.ok():
-            raise
 
 
 def _check_srdf(text: str, source: str) -> None:

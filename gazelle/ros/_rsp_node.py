@@ -26,6 +26,7 @@ from tf2_msgs.msg import TFMessage
 
 from ..description import Joint, JointType, Model, ModelLoadError, Pose, load_string
 from ._dds import announce_often
+from ._signals import await_signal_shutdown
 
 
 def joint_motion(joint: Joint, q: float) -> Pose:
@@ -135,7 +136,7 @@ def spin_until_interrupted(node: Node) -> None:
     try:
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):
-        pass
+        await_signal_shutdown(node.context)  # before the global executor and the node go
     finally:
         node.destroy_node()
         try_shutdown()

@@ -183,7 +183,7 @@ def test_a_shutdown_that_lands_while_the_executor_makes_its_wait_set_ends_move_g
     import rclpy
     from rclpy._rclpy_pybind11 import RCLError
 
-    from gazelle.ros._move_group import spin_until_shutdown
+    from gazelle.ros._signals import spin_until_shutdown
 
     context = rclpy.Context()
     rclpy.init(context=context, domain_id=int(os.environ.get("ROS_DOMAIN_ID", "0")))

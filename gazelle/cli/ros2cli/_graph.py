@@ -50,6 +50,11 @@ def cli_node(name: str = "ros2cli") -> Iterator[Any]:
     _EXECUTORS[id(node)] = executor
     try:
         yield node
+    except KeyboardInterrupt:
+        from ...ros import await_signal_shutdown
+
+        await_signal_shutdown(context)  # rclpy's signal thread triggers the executor's guard condition first
+        raise
     except Exception as err:
         if not context.ok():  # checked before our own shutdown below: the signal came first
             raise ShutDown from err

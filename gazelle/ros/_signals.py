@@ -1,0 +1,55 @@
+"""Ending a node on Ctrl-C (or SIGTERM) without racing rclpy's own signal thread.
+
+rclpy (Jazzy, ``src/rclpy/signal_handler.cpp``) handles SIGINT and SIGTERM on a thread of its own: it
+triggers the SIGINT guard condition of every executor, walking their global list without a lock, and then
+shuts every context down. Python's KeyboardInterrupt can reach the main thread first (in 23 of 30 Ctrl-Cs of
+a node with a busy timer, the context was still up when it did). Shutting an executor down then frees its
+guard condition while the signal thread may still be about to trigger it: a segmentation fault, in 2 to 5 of
+100 Ctrl-Cs of such a node and once in CI's move_group. Once the context is down, that thread has triggered
+every guard condition; so after a signal, wait for that before shutting executors down or destroying nodes.
+"""
+
+from __future__ import annotations
+
+import time
+from typing import Any
+
+from rclpy._rclpy_pybind11 import RCLError
+from rclpy.context import Context
+from rclpy.executors import ExternalShutdownException
+from rclpy.node import Node
+from rclpy.signals import SignalHandlerOptions, get_current_signal_handlers_options
+
+SIGNAL_SHUTDOWN_WAIT_SEC = 2.0
+"""How long to wait for rclpy's signal thread after a signal (it takes microseconds on an idle machine;
+the processes' own watchdogs end them 3 s after the signal whatever happens)."""
+
+
+def await_signal_shutdown(context: Context, timeout: float = SIGNAL_SHUTDOWN_WAIT_SEC) -> bool:
+    """After a SIGINT or SIGTERM, wait until rclpy's signal thread has shut ``context`` down; True once it
+    has (or when rclpy handles no signal in this process: ``rclpy.init`` installs its handlers only for the
+    default context), False after ``timeout`` seconds. Call it only when a signal came: otherwise nothing
+    shuts the context down and it waits the whole timeout."""
+    if get_current_signal_handlers_options() == SignalHandlerOptions.NO:
+        return True  # no signal thread to race with
+    deadline = time.monotonic() + timeout
+    while context.ok():
+        if time.monotonic() >= deadline:
+            return False
+        time.sleep(0.001)
+    return True
+
+
+def spin_until_shutdown(executor: Any, node: Node) -> None:
+    """Spin until Ctrl-C (or SIGTERM) shuts the node's context down, however the shutdown lands: as an
+    interrupt, as rclpy's ExternalShutdownException, or as the RCLError "the given context is not valid"
+    when it came while the executor was making its next wait set (seen under load). Any other rcl error,
+    with the context still up, is a real one and is raised. On return the context is down, so the caller
+    may shut the executor down and destroy the node."""
+    try:
+        executor.spin()
+    except (KeyboardInterrupt, ExternalShutdownException):
+        await_signal_shutdown(node.context)
+    except RCLError:
+        if node.context.ok():
+            raise
