@@ -177,8 +177,8 @@ class MoveGroupNode(_Execution):
         node would stay in the graph with that action's endpoints alone."""
         self._execution_executor.shutdown()
         # its thread leaves its wait once the executor is shut down: wait for that before destroying what
-        # the wait set may hold (a Ctrl-C once ended in a segmentation fault in destroy_node while that
-        # thread was still in rcl_wait; a fresh clone's test_ctrl_c_ends_move_group_at_once_and_quietly)
+        # the wait set may hold (the segmentation faults seen on Ctrl-C were another race, with rclpy's
+        # signal thread: see _signals.py)
         self._execution_thread.join(timeout=2.0)
         for client in self._trajectory_clients.values():
             client.destroy()
