@@ -116,3 +116,25 @@ def test_a_listener_that_never_reads_never_freezes_the_simulation() -> None:
     finally:
         sim.close()
         domain.release()
+
+
+def test_the_tests_node_hears_clock_reliably() -> None:
+    """The test above hung beside CPU hogs in 1 run of 8 to 12: the paused server had stepped to 10 s and
+    sent its ticks, but the test's best-effort /clock reader had lost them from 3.13 s on (its reliable
+    /odom reader heard up to 10 s), and a paused server sends no later tick. gazelle.testing's node reads
+    /clock reliably, so the writer's newest tick comes again after a loss."""
+    from rclpy.qos import ReliabilityPolicy
+
+    from gazelle.testing import RosTestNode
+
+    domain = reserve_domain()
+    ros = RosTestNode(domain.domain_id)
+    try:
+        mine = [
+            info for info in ros.node.get_subscriptions_info_by_topic("/clock") if info.node_name == ros.node.get_name()
+        ]
+        assert mine, "the test's node does not read /clock"
+        assert all(info.qos_profile.reliability == ReliabilityPolicy.RELIABLE for info in mine), mine
+    finally:
+        ros.close()
+        domain.release()
