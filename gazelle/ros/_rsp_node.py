@@ -16,7 +16,8 @@ import time
 
 import rclpy
 from geometry_msgs.msg import TransformStamped
-from rclpy.executors import ExternalShutdownException
+from rclpy._rclpy_pybind11 import RCLError
+from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from rclpy.utilities import try_shutdown
@@ -26,7 +27,7 @@ from tf2_msgs.msg import TFMessage
 
 from ..description import Joint, JointType, Model, ModelLoadError, Pose, load_string
 from ._dds import announce_often
-from ._signals import await_signal_shutdown
+from ._signals import await_signal_shutdown, spin_until_shutdown
 
 
 def joint_motion(joint: Joint, q: float) -> Pose:
@@ -132,11 +133,22 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def spin_until_interrupted(node: Node) -> None:
-    """Spin ``node`` until Ctrl-C (or an external shutdown), then destroy it and shut rclpy down."""
+    """Spin ``node`` until Ctrl-C (or an external shutdown), then destroy it and shut rclpy down. The signal
+    may come at any point, even before the executor exists: rclpy's signal thread has then shut the context
+    down, and rclpy refuses to make the executor (an RCLError, the end that was asked for)."""
+    executor: SingleThreadedExecutor | None = None
     try:
-        rclpy.spin(node)
-    except (KeyboardInterrupt, ExternalShutdownException):
-        await_signal_shutdown(node.context)  # before the global executor and the node go
+        executor = SingleThreadedExecutor(context=node.context)
+        executor.add_node(node)
+        spin_until_shutdown(executor, node)
+    except KeyboardInterrupt:
+        await_signal_shutdown(node.context)
+    except RCLError:
+        if node.context.ok():
+            raise
+        sys.unraisablehook = lambda _unraisable: None  # the half-made executor's __del__ complains as it goes
     finally:
+        if executor is not None:
+            executor.shutdown()
         node.destroy_node()
         try_shutdown()

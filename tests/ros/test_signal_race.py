@@ -36,17 +36,22 @@ CHILD = textwrap.dedent(
     rclpy.init()
     node = rclpy.create_node("signal_race_probe")
     node.create_timer(0.0005, lambda: None)  # the main thread is often out of its wait when the signal comes
+    said = []
+
+    def say_spinning():  # from inside the spin: a signal before it is another case (see the second test)
+        if not said:
+            said.append(print("spinning", flush=True))
+
+    node.create_timer(0.01, say_spinning)
     if sys.argv[1] == "move_group":
         from gazelle.ros._signals import spin_until_shutdown
         executor = MultiThreadedExecutor(num_threads=2)
         executor.add_node(node)
-        print("spinning", flush=True)
         spin_until_shutdown(executor, node)
         executor.shutdown()
         node.destroy_node()
     else:
         from gazelle.ros._rsp_node import spin_until_interrupted
-        print("spinning", flush=True)
         spin_until_interrupted(node)
     print("context up at:", context_up_at, flush=True)
     sys.stdout.flush()
@@ -65,3 +70,32 @@ def test_after_ctrl_c_nothing_is_shut_down_before_rclpys_signal_thread_is_done(h
         line = proc.wait_line("context up at:", 5)
         assert "True" not in line, f"shut down or destroyed while rclpy's signal thread could still run: {line}"
         assert "False" in line, line  # the shutdowns did happen
+
+
+def test_a_ctrl_c_before_the_spin_starts_ends_robot_state_publisher_quietly() -> None:
+    """The signal came between ``rclpy.init`` and the spin (a CI run under a CPU hog): rclpy's signal thread
+    had shut the context down, rclpy.spin could not make its executor and the node died with an RCLError
+    traceback (exit 1). The end that was asked for is exit 0, without a traceback."""
+    child = textwrap.dedent(
+        """
+        import os, signal
+        import rclpy
+        from gazelle.ros._rsp_node import spin_until_interrupted
+        from gazelle.ros._signals import await_signal_shutdown
+
+        rclpy.init()
+        node = rclpy.create_node("signal_before_spin")
+        try:
+            os.kill(os.getpid(), signal.SIGINT)  # Python raises it at the next bytecode
+            while True:
+                pass
+        except KeyboardInterrupt:
+            await_signal_shutdown(node.context)  # the context is down now, as in that CI run
+        spin_until_interrupted(node)
+        print("ended", flush=True)
+        """
+    )
+    proc = start([sys.executable, "-c", child], "signal before spin")
+    assert proc.wait(30) == 0, proc.output
+    proc.wait_line("ended", 5)
+    assert "Traceback" not in proc.output, proc.output
