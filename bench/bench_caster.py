@@ -68,7 +68,7 @@ def run(text: str, drop: float) -> dict[str, float]:
     urdf = expand_xacro_bounded(text, source=str(ROBOT), sink=sink, resolver=ResourceResolver().trusting(ROBOT.parent))
     if urdf is None:
         raise ModelLoadError(sink.items)
-    model = load_string(urdf, format="urdf", source=str(ROBOT)).value
+    model = load_string(urdf, format="urdf", source=str(ROBOT)).model
     sim = Simulation(default_world(), rtf=0)
     z0 = 0.05 + drop  # wheel radius + drop: the wheels just touch the ground
     entity = sim.spawn(model, name="robot", pose=Pose((0.0, 0.0, z0)))

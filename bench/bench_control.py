@@ -301,7 +301,7 @@ def arms_at_real_time(count: int, seconds: float, blocks: bool = True) -> tuple[
     from gazelle.systems.ros2_control import TrajectoryGoal
     from gazelle.worlds import default_world
 
-    model = load(URDF).value
+    model = load(URDF).model
     sim = Simulation(default_world(), rtf=0)
     managers, controllers = [], []
     for i in range(count):

@@ -59,7 +59,7 @@ def make_sim(n: int):
     from gazelle.systems.diff_drive import DiffDrive
     from gazelle.worlds import default_world
 
-    model = load_string(robot_urdf()).value
+    model = load_string(robot_urdf()).model
     sim = Simulation(default_world(), rtf=0)
     side = max(1, int(n**0.5 + 0.999))
     for i in range(n):
@@ -149,7 +149,7 @@ def rss_child_arms(n: int) -> int:
     os.environ["GAZELLE_RESOURCE_PATH"] = str(REAL / "ros2_control_r6bot")
     imports = _rss_mib()
     sim = Simulation(default_world(), rtf=0)
-    model = load(REAL / "ros2_control_r6bot" / "_xacro_expanded" / "r6bot.urdf").value
+    model = load(REAL / "ros2_control_r6bot" / "_xacro_expanded" / "r6bot.urdf").model
     params = load_params(REPO / "tests" / "data" / "ros2_control" / "r6bot_jtc.yaml")
     for i in range(n):
         entity = sim.spawn(model, name=f"arm{i}", namespace=f"arm{i}", pose=Pose((1.5 * i, 0.0, 0.0)))

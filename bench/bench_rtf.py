@@ -103,7 +103,7 @@ def make_sim():
     from gazelle.systems.diff_drive import DiffDrive
     from gazelle.worlds import default_world
 
-    model = load(ROBOT).value
+    model = load(ROBOT).model
     sim = Simulation(default_world(), rtf=0)
     entity = sim.spawn(model, name="simple_robot", pose=Pose((0.0, 0.0, 0.07)))
     drive = next(s for s in entity.systems if isinstance(s, DiffDrive))

@@ -224,7 +224,7 @@ def main() -> int:
     sim = Simulation(default_world(), rtf=0)
     props(sim)
     lidar_xml = lidar_model(1, 360, 10).replace("PointCloud2", "LaserScan")
-    lidar = next(s for s in sim.spawn(load_string(lidar_xml).value, name="scan").systems if isinstance(s, Lidar))
+    lidar = next(s for s in sim.spawn(load_string(lidar_xml).model, name="scan").systems if isinstance(s, Lidar))
     sim.step(1)
     N = 20 if SMOKE else 2000
     t0 = time.perf_counter()
@@ -252,7 +252,7 @@ def main() -> int:
     # 3. a 16 x 1800 3-D lidar at 10 Hz, point clouds built
     sim = Simulation(default_world(), rtf=0)
     props(sim)
-    sim.spawn(load_string(lidar_model(16, 1800, 10)).value, name="vlp")
+    sim.spawn(load_string(lidar_model(16, 1800, 10)).model, name="vlp")
     clouds = listen(sim)
     rtf, wall = rtf_of(sim, SPAN)
     rows.append(
@@ -266,7 +266,7 @@ def main() -> int:
     # 4. a 640 x 480 RGB camera at 30 Hz
     sim = Simulation(default_world(), rtf=0)
     props(sim)
-    entity = sim.spawn(load_string(camera_model(640, 480, 30)).value, name="cam")
+    entity = sim.spawn(load_string(camera_model(640, 480, 30)).model, name="cam")
     cam = next(s for s in entity.systems if isinstance(s, Camera))
     images = listen(sim)
     sim.step(1)  # the first image makes the GL context

@@ -171,7 +171,7 @@ def in_process() -> dict[str, float]:
     for _ in range(20):
         piece = load_string(piece_xml).value
     out["parse a piece SDF"] = (time.perf_counter() - t0) / 20 * 1000
-    board = load_string(board_xml).value
+    board = load_string(board_xml).model
     sim = Simulation(default_world(), rtf=0)
     per = []
     for name, (x, y, z) in zip(NAMES, poses()):

@@ -67,7 +67,7 @@ def make_sim(rtf: float):
     from gazelle.worlds import default_world
 
     sim = Simulation(default_world(), rtf=rtf)
-    sim.spawn(load(ROBOT).value, name="simple_robot")
+    sim.spawn(load(ROBOT).model, name="simple_robot")
     for ep in sim.bus.endpoints():
         if (
             ep.owner == "simple_robot"

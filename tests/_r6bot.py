@@ -51,5 +51,5 @@ def arm(*, blocks: bool = True, controllers: tuple[str, ...] = ("jsb", "jtc")) -
     from gazelle.worlds import default_world
 
     sim = Simulation(default_world(), rtf=0)
-    entity = sim.spawn(load(URDF).value, name="r6bot")
+    entity = sim.spawn(load(URDF).model, name="r6bot")
     return sim, manager_of(entity, blocks=blocks, controllers=controllers)

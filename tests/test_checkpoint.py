@@ -121,7 +121,7 @@ def test_a_run_loaded_from_its_checkpoint_in_a_fresh_process_goes_on_bit_identic
 @pytest.fixture
 def seed_robot_sim() -> Simulation:
     sim = Simulation(default_world(), rtf=0, seed=3)
-    sim.spawn(load(REPO / "examples" / "simple_robot" / "simple_robot" / "robot.urdf.xacro").value, name="robot")
+    sim.spawn(load(REPO / "examples" / "simple_robot" / "simple_robot" / "robot.urdf.xacro").model, name="robot")
     sim.step(100)
     return sim
 

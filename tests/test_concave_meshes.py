@@ -61,12 +61,12 @@ def test_a_concave_ring_holds_a_ball_inside(tmp_path: Path, monkeypatch, caplog)
     monkeypatch.setenv("GAZELLE_CACHE_DIR", str(tmp_path / "cache"))
     stl = ring_stl(tmp_path / "ring.stl")
     assert not _convex.is_convex(*_convex._welded(*trimesh_arrays(stl)))
-    ring = load_string(ring_model(stl), source=str(tmp_path / "ring.sdf")).value
+    ring = load_string(ring_model(stl), source=str(tmp_path / "ring.sdf")).model
     sim = Simulation(default_world(), rtf=0.0)
     with caplog.at_level(logging.INFO, logger="gazelle.physics"):
         sim.spawn(ring, name="ring")
     assert any("is not convex: it collides as" in r.getMessage() for r in caplog.records)
-    sim.spawn(load_string(BALL).value, name="ball", pose=Pose((0.1, 0.1, 0.6)))
+    sim.spawn(load_string(BALL).model, name="ball", pose=Pose((0.1, 0.1, 0.6)))
     sim.step(2000)
     x, y, z = sim.world.entity_state("ball").pose.position
     assert z == pytest.approx(0.05, abs=0.005), (
@@ -101,14 +101,14 @@ def test_turtlebot3_world_arena_is_hollow(monkeypatch) -> None:
     burger at the official spawn pose (-2, -0.5) stands upright (it ended tipped 84°)."""
     tb3 = REAL / "turtlebot3" / "turtlebot3_gazebo"
     monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(tb3 / "models"))
-    sim = Simulation(load(tb3 / "worlds" / "turtlebot3_world.world").value, rtf=0.0)
+    sim = Simulation(load(tb3 / "worlds" / "turtlebot3_world.world").world, rtf=0.0)
     sim.spawn(
-        load(tb3 / "models" / "turtlebot3_burger" / "model.sdf").value, name="burger", pose=Pose((-2.0, -0.5, 0.01))
+        load(tb3 / "models" / "turtlebot3_burger" / "model.sdf").model, name="burger", pose=Pose((-2.0, -0.5, 0.01))
     )
     box = load_string(
         '<sdf version="1.9"><model name="b"><link name="l"><inertial><mass>1</mass></inertial><collision name="c">'
         "<geometry><box><size>0.1 0.1 0.1</size></box></geometry></collision></link></model></sdf>"
-    ).value
+    ).model
     sim.spawn(box, name="box", pose=Pose((0.5, 0.5, 1.0)))
     sim.step(3000)
     assert sim.world.entity_state("box").pose.position[2] == pytest.approx(0.05, abs=0.005)
@@ -163,7 +163,7 @@ def test_all_of_a_models_meshes_share_one_load_budget(tmp_path: Path, monkeypatc
     )
     sdf = tmp_path / "two.sdf"  # the meshes beside it: the file's folder is where they may be read from
     sdf.write_text(f'<sdf version="1.9"><model name="two"><static>true</static>{links}</model></sdf>')
-    model = load(sdf).value
+    model = load(sdf).model
     with caplog.at_level(logging.WARNING):
         _convex.prepare(model)
     assert "takes more than the 0.2 s a load may spend on it" in caplog.text  # the first: tried, then later

@@ -13,8 +13,8 @@ from gazelle.worlds import default_world
 
 def run() -> list[np.ndarray]:
     """Spawn a robot, drive it through a command sequence, spawn and delete boxes on the way."""
-    robot = load(SEED_XACRO).value
-    box = load_string(BOX).value
+    robot = load(SEED_XACRO).model
+    box = load_string(BOX).model
     sim = Simulation(default_world(), rtf=0)
     entity = sim.spawn(robot, name="robot", pose=Pose((0.0, 0.0, 0.05)))
     drive = next(s for s in entity.systems if isinstance(s, DiffDrive))
@@ -48,7 +48,7 @@ def test_two_runs_are_bit_identical() -> None:
 
 def test_querying_state_does_not_change_the_trajectory() -> None:
     """Reading poses (which refreshes derived kinematics) between steps leaves the trajectory bit-identical."""
-    box = load_string(BOX).value
+    box = load_string(BOX).model
 
     def go(query: bool) -> np.ndarray:
         sim = Simulation(default_world(), rtf=0)

@@ -60,8 +60,8 @@ def fingerprint(sim: Simulation) -> tuple:
 def busy_sim() -> Simulation:
     """A world with a driving robot and a falling box, stepped a little."""
     sim = Simulation(default_world(), rtf=0.0)
-    sim.spawn(load(SEED_XACRO).value, name="robot", pose=Pose((0.0, 0.0, 0.05)))
-    sim.spawn(load_string(BOX).value, name="box", pose=Pose((2.0, 0.0, 1.0)))
+    sim.spawn(load(SEED_XACRO).model, name="robot", pose=Pose((0.0, 0.0, 0.05)))
+    sim.spawn(load_string(BOX).model, name="box", pose=Pose((2.0, 0.0, 1.0)))
     sim.step(50)
     return sim
 
@@ -71,7 +71,7 @@ def assert_next_spawn_works(sim: Simulation, name: str) -> None:
     sim.step(20)
     again = fingerprint(sim)
     assert before[:6] == again[:6]
-    e = sim.spawn(load_string(BOX).value, name=name, pose=Pose((-2.0, 0.0, 0.5)))
+    e = sim.spawn(load_string(BOX).model, name=name, pose=Pose((-2.0, 0.0, 0.5)))
     assert e.name == name
     sim.step(5)
 
@@ -79,7 +79,7 @@ def assert_next_spawn_works(sim: Simulation, name: str) -> None:
 @pytest.mark.parametrize("joint_type", ["fixed", "revolute"])
 @pytest.mark.parametrize("n", [985, 5000])
 def test_long_chains_fail_clearly_or_spawn_and_the_world_is_untouched(busy_sim: Simulation, n: int, joint_type: str):
-    model = load_string(chain(n, joint_type)).value
+    model = load_string(chain(n, joint_type)).model
     before = fingerprint(busy_sim)
     if n <= 1000:
         busy_sim.spawn(model, name="c")
@@ -100,7 +100,7 @@ def test_a_plugin_that_raises_in_configure_leaves_no_debris(busy_sim: Simulation
         ctx.world.add_actuator(ctx.entity, "base_left_wheel_joint", ActuatorKind.VELOCITY, kv=1.0)
         raise KeyError("surprise")
 
-    robot = load(SEED_XACRO).value
+    robot = load(SEED_XACRO).model
     before = fingerprint(busy_sim)
     monkeypatch.setattr(DiffDrive, "configure", broken)
     with pytest.raises(WorldError) as info:
@@ -124,7 +124,7 @@ def test_a_wheel_on_a_fixed_joint_is_named_as_fixed(busy_sim: Simulation, caplog
     )
     assert 'type="fixed"' in urdf
     with caplog.at_level(logging.ERROR):
-        busy_sim.spawn(load_string(urdf).value, name="dd", pose=Pose((0.0, 3.0, 0.05)))
+        busy_sim.spawn(load_string(urdf).model, name="dd", pose=Pose((0.0, 3.0, 0.05)))
     text = "\n".join(r.getMessage() for r in caplog.records)
     assert "Joint [base_right_wheel_joint] is fixed" in text, text
     from gazelle.physics._world import _no_joint_message
@@ -134,8 +134,8 @@ def test_a_wheel_on_a_fixed_joint_is_named_as_fixed(busy_sim: Simulation, caplog
 
 
 def test_a_failed_batch_member_leaves_the_others_and_the_world_intact(busy_sim: Simulation) -> None:
-    deep = load_string(chain(1200, "fixed")).value
-    box = load_string(BOX).value
+    deep = load_string(chain(1200, "fixed")).model
+    box = load_string(BOX).model
     before_names = tuple(busy_sim.world.entities)
     out = busy_sim.spawn_many([SpawnRequest(box, "b1", Pose((3.0, 3.0, 0.5))), SpawnRequest(deep, "deep", Pose())])
     assert not isinstance(out[0], WorldError) and isinstance(out[1], WorldError)
@@ -149,7 +149,7 @@ def test_a_failed_batch_member_leaves_the_others_and_the_world_intact(busy_sim: 
 def test_absurd_poses_are_refused_with_the_field_named(busy_sim: Simulation, pose: Pose, field: str) -> None:
     before = fingerprint(busy_sim)
     with pytest.raises(WorldError) as info:
-        busy_sim.spawn(load_string(BOX).value, name="far", pose=pose)
+        busy_sim.spawn(load_string(BOX).model, name="far", pose=pose)
     assert field in str(info.value) and "out of range" in str(info.value)
     with pytest.raises(WorldError) as info:
         busy_sim.world.set_entity_state("box", pose)
@@ -174,7 +174,7 @@ def test_unsimulated_contact_parameters_are_reported_once_per_model_file(caplog)
     from _paths import REPO
 
     sim = Simulation(default_world(), rtf=0.0)
-    piece = load(REPO / "examples" / "chessboard" / "chess_piece.sdf").value
+    piece = load(REPO / "examples" / "chessboard" / "chess_piece.sdf").model
     with caplog.at_level(logging.WARNING, logger="gazelle.physics"):
         for i in range(32):
             sim.spawn(piece, name=f"p{i}", pose=Pose((0.1 * i, 0.0, 0.1)))
@@ -199,7 +199,7 @@ def test_a_body_spawned_into_the_ground_rises_gently_and_rests() -> None:
         f"<geometry><box><size>1.5 1 0.3</size></box></geometry></collision></link>{wheels}{joints}</model></sdf>"
     )
     sim = Simulation(default_world(), rtf=0.0)
-    sim.spawn(load_string(vehicle).value, name="v", pose=Pose((0.0, 0.0, 0.3)))  # wheel bottoms at -0.2
+    sim.spawn(load_string(vehicle).model, name="v", pose=Pose((0.0, 0.0, 0.3)))  # wheel bottoms at -0.2
     top = fastest = 0.0
     for _ in range(4000):
         sim.step()
@@ -218,7 +218,7 @@ def test_when_contacts_outgrow_mujocos_arena_it_grows_and_the_world_keeps_steppi
     sim = Simulation(default_world(), rtf=0.0)
     sim.world.spec.memory = 1 << 20  # 1 MiB
     sim.world._recompile()
-    box = load_string(BOX).value
+    box = load_string(BOX).model
     with caplog.at_level(logging.WARNING, logger="gazelle.physics"):
         for i in range(40):
             sim.spawn(box, name=f"b{i}", pose=Pose((0.0, 0.0, 0.1)))
@@ -235,7 +235,7 @@ def test_past_the_arena_cap_the_simulation_pauses_and_says_why(monkeypatch, capl
     sim = Simulation(default_world(), rtf=0.0)
     sim.world.spec.memory = 1 << 20
     sim.world._recompile()
-    box = load_string(BOX).value
+    box = load_string(BOX).model
     refused = 0
     for i in range(40):
         try:

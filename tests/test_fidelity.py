@@ -30,13 +30,13 @@ def test_classic_stock_ground_plane_and_sun_are_built_in(monkeypatch, tmp_path: 
     world_file = tmp_path / "empty.world"
     world_file.write_text(CLASSIC_WORLD)
     result = load(world_file)
-    world = result.value
+    world = result.world
     assert [m.name for m in world.models] == ["ground_plane"]
     assert [light.name for light in world.lights] == ["sun"]
     assert not [d for d in result.diagnostics if "ground_plane" in d.message or "sun" in d.message]
     sim = Simulation(world, rtf=0)
     try:
-        sim.spawn(load_string(BALL).value, name="ball", pose=Pose((0.0, 0.0, 0.5)))
+        sim.spawn(load_string(BALL).model, name="ball", pose=Pose((0.0, 0.0, 0.5)))
         sim.step(2000)
         z = sim.world.entity_state("ball").pose.position[2]
         assert z == pytest.approx(0.1, abs=0.01)
@@ -66,7 +66,7 @@ def test_a_missing_or_broken_collision_mesh_is_left_out_and_the_world_loads(tmp_
     world.write_text(
         f'<sdf version="1.6"><world name="w"><include><uri>model://ground_plane</uri></include>{model}</world></sdf>'
     )
-    sim = Simulation(load(world).value, rtf=0)
+    sim = Simulation(load(world).world, rtf=0)
     try:
         assert set(sim.world.entities) == {"ground_plane", "barrel"}
         geoms = [sim.world.model.geom(i).name for i in range(sim.world.model.ngeom)]
@@ -108,7 +108,7 @@ def test_command_interface_min_max_clamp_only_where_the_manager_enforces_command
     source.write_text(urdf)
     sim = Simulation(default_world(), rtf=0)
     try:
-        entity = sim.spawn(load(source).value, name="diffbot", pose=Pose((0.0, 0.0, 0.05)))
+        entity = sim.spawn(load(source).model, name="diffbot", pose=Pose((0.0, 0.0, 0.05)))
         (cm,) = [s for s in entity.systems if isinstance(s, ControllerManager)]
         cm.load_controller("wheels")
         cm.configure_controller("wheels")
@@ -178,7 +178,7 @@ def test_a_joint_whose_limits_are_equal_is_held_there_not_refused() -> None:
 
     sim = Simulation(default_world(), rtf=0)
     try:
-        sim.spawn(load_string(urdf).value, name="r", pose=Pose((0.0, 0.0, 2.0)))
+        sim.spawn(load_string(urdf).model, name="r", pose=Pose((0.0, 0.0, 2.0)))
         sim.step(300)
         assert sim.world.joint("r", "j").position == pytest.approx(0.3, abs=1e-3)
     finally:

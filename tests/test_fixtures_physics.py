@@ -133,7 +133,7 @@ def test_fixture_stands_under_gravity(resource_path, resource_dir: str, rel: str
 def test_fixed_arm_base_stays_put(resource_path) -> None:
     """r6bot is fixed to the world by its URDF 'world' link: its base must not move at all."""
     resource_path("ros2_control_r6bot")
-    model = load(REAL / "ros2_control_r6bot/ros2_control_demo_example_7/urdf/r6bot.urdf.xacro").value
+    model = load(REAL / "ros2_control_r6bot/ros2_control_demo_example_7/urdf/r6bot.urdf.xacro").model
     sim = Simulation(default_world(), rtf=0)
     entity = sim.spawn(model, name="r6bot", pose=Pose((1.0, 2.0, 0.0)))
     assert entity.built.free_joint is None

@@ -83,7 +83,7 @@ def test_names_with_spaces_load_and_simulate() -> None:
         '<link name="link"><inertial><mass>1</mass></inertial><collision name="c"><geometry><box><size>0.2 0.2 0.2</size>'
         "</box></geometry></collision></link></model></world></sdf>"
     )
-    sim = Simulation(load_string(world).value, rtf=0.0)
+    sim = Simulation(load_string(world).world, rtf=0.0)
     sim.step(10)
     assert "Construction Cone" in sim.world.entities
     sim.spawn(sim.world.entities["Construction Cone"].model, name="Construction Cone_0", pose=Pose((3.0, 0.0, 0.5)))
@@ -97,7 +97,7 @@ def test_a_cone_collides_and_rests_on_its_base() -> None:
         '<sdf version="1.11"><model name="cone"><link name="l"><inertial><mass>1</mass><inertia><ixx>0.01</ixx>'
         '<iyy>0.01</iyy><izz>0.01</izz></inertia></inertial><collision name="c"><geometry><cone><radius>0.2</radius>'
         "<length>0.4</length></cone></geometry></collision></link></model></sdf>"
-    ).value
+    ).model
     assert model.links[0].collisions[0].geometry == Cone(0.2, 0.4)
     sim = Simulation(default_world(), rtf=0.0)
     sim.spawn(model, name="cone", pose=Pose((0.0, 0.0, 1.0)))
@@ -123,7 +123,7 @@ def _fuel_world(*names: str) -> str:
 def test_fuel_ground_plane_and_sun_are_built_in(monkeypatch, tmp_path: Path) -> None:
     monkeypatch.setenv("HOME", str(tmp_path))  # no local Fuel cache
     monkeypatch.delenv("GZ_FUEL_CACHE_PATH", raising=False)
-    world = load_string(_fuel_world("OpenRobotics/models/Ground Plane", "OpenRobotics/models/Sun")).value
+    world = load_string(_fuel_world("OpenRobotics/models/Ground Plane", "OpenRobotics/models/Sun")).world
     assert [m.name for m in world.models] == ["ground_plane"] and [lt.name for lt in world.lights] == ["sun"]
     sim = Simulation(world, rtf=0.0)
     sim.spawn(

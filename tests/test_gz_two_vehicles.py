@@ -77,7 +77,7 @@ def _yaw(q) -> float:
 
 
 def test_each_vehicles_frames_are_scoped_by_its_model() -> None:
-    sim = Simulation(load_string(world()).value, rtf=0.0)
+    sim = Simulation(load_string(world()).world, rtf=0.0)
     for ep in sim.bus.endpoints():  # listen, as the ROS bridge or a recorder does (nothing is built for nobody)
         if ep.topic == "/tf":
             ep.add_sink(lambda _payload: None)
@@ -96,7 +96,7 @@ def test_each_vehicles_frames_are_scoped_by_its_model() -> None:
 def _turn(limits: str, seconds: float) -> tuple[float, float, float, float]:
     """Turn vehicle_blue in place at 1 rad/s: (truth yaw, odom yaw) over the whole turn, in degrees, and
     the same over its last second."""
-    sim = Simulation(load_string(world(limits)).value, rtf=0.0)
+    sim = Simulation(load_string(world(limits)).world, rtf=0.0)
     eps = _endpoints(sim)
     cmd, odom = eps[("/model/vehicle_blue/cmd_vel", False)], eps[("/model/vehicle_blue/odometry", True)]
     odom.add_sink(lambda _payload: None)  # listen to the odometry (nothing is built for nobody)
@@ -138,7 +138,7 @@ def test_the_examples_wheel_surface_drives_at_the_speed_its_odometry_reports(cap
     its odometry said 0.50. gz-sim's default engine (DART) ignores it, with a warning
     (gz-physics dartsim/src/SimulationFeatures.cc); so does gazelle, and the spawn's warning names it."""
     with caplog.at_level("WARNING"):
-        sim = Simulation(load_string(world(wheel_surface=WHEEL_SURFACE)).value, rtf=0.0)
+        sim = Simulation(load_string(world(wheel_surface=WHEEL_SURFACE)).world, rtf=0.0)
     assert "<rolling_friction>" in caplog.text
     eps = _endpoints(sim)
     cmd, odom = eps[("/model/vehicle_blue/cmd_vel", False)], eps[("/model/vehicle_blue/odometry", True)]

@@ -53,7 +53,7 @@ def _manager(entity) -> ControllerManager:
 @pytest.fixture
 def diffbot():
     sim = Simulation(default_world(), rtf=0)
-    model = load(DIFFBOT_URDF).value
+    model = load(DIFFBOT_URDF).model
     entity = sim.spawn(model, name="diffbot")
     yield sim, _manager(entity)
     sim.stop()
@@ -127,7 +127,7 @@ def test_parameters_in_a_string_description_resolve_against_no_folder(tmp_path: 
     )
     sim = Simulation(default_world(), rtf=0)
     try:
-        model = load_string(text, source="<spawn_entity:diffbot>").value
+        model = load_string(text, source="<spawn_entity:diffbot>").model
         with pytest.raises(Exception) as info:
             sim.spawn(model, name="d")
         assert "c.yaml" in str(info.value) and "not in a package or model folder" in str(info.value)
@@ -212,14 +212,14 @@ def test_a_wide_fixed_tree_spawns_and_deletes_in_moments_and_a_wider_one_is_refu
         from gazelle.description import Pose
 
         start = time.monotonic()
-        sim.spawn(load_string(_wide(999)).value, name="w", pose=Pose((0.0, 0.0, 1.0)))
+        sim.spawn(load_string(_wide(999)).model, name="w", pose=Pose((0.0, 0.0, 1.0)))
         spawned = time.monotonic() - start
         start = time.monotonic()
         sim.delete("w")
         deleted = time.monotonic() - start
         assert spawned < 20.0 and deleted < 5.0, (spawned, deleted)
         with pytest.raises(Exception, match="1001 links, more than the 1000 a model may have"):
-            sim.spawn(load_string(_wide(1000)).value, name="w2", pose=Pose((0.0, 0.0, 1.0)))
+            sim.spawn(load_string(_wide(1000)).model, name="w2", pose=Pose((0.0, 0.0, 1.0)))
         assert set(sim.world.entities) == set(before)
         sim.step(10)  # still usable
     finally:
@@ -231,7 +231,7 @@ def test_many_moving_links_use_collision_bits_not_quadratic_excludes_and_never_s
 
     sim = Simulation(default_world(), rtf=0)
     try:
-        sim.spawn(load_string(_wide(120, fixed=False)).value, name="w", pose=Pose((0.0, 0.0, 0.5)))
+        sim.spawn(load_string(_wide(120, fixed=False)).model, name="w", pose=Pose((0.0, 0.0, 0.5)))
         m = sim.world.model
         assert m.nexclude < 600
         sim.step(200)
@@ -384,7 +384,7 @@ def test_an_over_limit_sensor_refuses_the_spawn_with_the_reason(sensor: str, why
     try:
         before = sim.world.data.qpos.copy()
         with pytest.raises(Exception, match=why):
-            sim.spawn(load_string(_sensor_robot(sensor)).value, name="s", pose=Pose((0.0, 0.0, 0.1)))
+            sim.spawn(load_string(_sensor_robot(sensor)).model, name="s", pose=Pose((0.0, 0.0, 0.1)))
         assert "s" not in sim.world.entities
         assert np.array_equal(before, sim.world.data.qpos)
     finally:
@@ -397,7 +397,7 @@ def test_a_sensor_faster_than_the_physics_runs_every_step_with_a_warning(caplog)
     sim = Simulation(default_world(), rtf=0)
     try:
         entity = sim.spawn(
-            load_string(_sensor_robot(LIDAR.format(rate="1e9", h=10, v=1))).value, name="s", pose=Pose((0, 0, 0.1))
+            load_string(_sensor_robot(LIDAR.format(rate="1e9", h=10, v=1))).model, name="s", pose=Pose((0, 0, 0.1))
         )
         (lidar,) = [s for s in entity.systems if getattr(s, "kind", "") == "lidar"]
         assert lidar.rate_hz == pytest.approx(1.0 / sim.world.timestep)

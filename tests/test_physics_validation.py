@@ -336,7 +336,7 @@ def circle_fit(xy: np.ndarray) -> tuple[np.ndarray, float]:
 
 
 def seed_robot_sim() -> tuple[Simulation, DiffDrive]:
-    robot = load(SEED_XACRO).value
+    robot = load(SEED_XACRO).model
     sim = Simulation(default_world(), rtf=0)
     entity = sim.spawn(robot, name="robot", pose=Pose((0.0, 0.0, 0.05)))
     drive = next(s for s in entity.systems if isinstance(s, DiffDrive))

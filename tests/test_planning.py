@@ -417,7 +417,7 @@ def test_a_group_of_groups_plans_both_arms_at_once_and_the_viewer_draws_both_too
     try:
         urdf = _read_description(str(REPO / "examples" / "chessbot" / "chessbot.urdf.xacro"))
         planner = ArmPlanner(urdf, srdf.replace("</robot>", f"{both}</robot>"), seed=3)
-        model = load_string(urdf).value
+        model = load_string(urdf).model
     finally:
         os.environ.pop("GAZELLE_RESOURCE_PATH")
     assert "arms" in planner.groups, planner.warnings

@@ -19,7 +19,7 @@ def _nodes(sim: Simulation) -> dict[str, PluginNode]:
 
 def test_the_diff_drive_is_its_node_with_its_configuration_read_only():
     sim = Simulation(default_world(), rtf=0)
-    model = load(SEED_XACRO).value
+    model = load(SEED_XACRO).model
     sim.spawn(model, name="bot")
     sim.spawn(model, name="bot2", namespace="r2")
     nodes = _nodes(sim)

@@ -56,7 +56,7 @@ def _start(cm: ControllerManager, yaml_path, *names: str) -> None:
 
 
 def _diffbot(sim: Simulation, name: str = "diffbot", namespace: str = "", y: float = 0.0):
-    model = load(DIFFBOT_URDF).value
+    model = load(DIFFBOT_URDF).model
     return sim.spawn(model, name=name, pose=Pose((0.0, y, 0.05)), namespace=namespace)
 
 
@@ -192,7 +192,7 @@ def test_a_forward_command_controller_drives_the_wheels_and_switches_with_the_di
 def r6bot(monkeypatch):
     monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(R6BOT))
     sim = Simulation(default_world(), rtf=0)
-    entity = sim.spawn(load(R6BOT_URDF).value, name="r6bot")
+    entity = sim.spawn(load(R6BOT_URDF).model, name="r6bot")
     cm = _manager(entity)
     cm.files.append(load_params(R6BOT_YAML))
     for n in ("joint_state_broadcaster", "joint_trajectory_controller"):
@@ -332,9 +332,9 @@ def test_the_chess_robots_hand_holds_a_1_g_piece_and_lets_it_go_where_it_was_car
     urdf = read_description_file(str(CHESSBOT / "chessbot.urdf.xacro"))
     planner = ArmPlanner(urdf, (DUAL / "panda.srdf").read_text())
     sim = Simulation(default_world(), rtf=0)
-    sim.spawn(load(CHESSBOT / "table.sdf").value, name="table")
-    robot = sim.spawn(load(CHESSBOT / "chessbot.urdf.xacro").value, name="chessbot")
-    sim.spawn(load(CHESSBOARD / "chess_board.sdf").value, name="board", pose=Pose((0.25, 1.39, 0.90)))
+    sim.spawn(load(CHESSBOT / "table.sdf").model, name="table")
+    robot = sim.spawn(load(CHESSBOT / "chessbot.urdf.xacro").model, name="chessbot")
+    sim.spawn(load(CHESSBOARD / "chess_board.sdf").model, name="board", pose=Pose((0.25, 1.39, 0.90)))
     sim.step(1)  # the ros2_control initial values are applied
     arm = planner.group_joints("left_panda_arm")
     down = np.diag([1.0, -1.0, -1.0])  # the hand pointing down, its fingers closing along y
@@ -359,7 +359,7 @@ def test_the_chess_robots_hand_holds_a_1_g_piece_and_lets_it_go_where_it_was_car
     over, put = ik(0.225, 1.365, grasp_z + 0.08), ik(0.225, 1.365, grasp_z + 0.001)
     for name, value in above.items():
         sim.world.set_joint_state("chessbot", name, position=value, velocity=0.0)
-    piece = load(CHESSBOARD / "chess_piece.sdf").value
+    piece = load(CHESSBOARD / "chess_piece.sdf").model
     for name, xy in (("piece", (0.225, 1.265)), ("behind", (0.225, 1.215)), ("next", (0.225, 1.315))):
         sim.spawn(piece, name=name, pose=Pose((*xy, 0.92)))
     cm = _manager(robot)
@@ -481,7 +481,7 @@ def test_a_ros2_control_joint_missing_from_the_urdf_fails_the_spawn_and_the_worl
       <ros2_control name="hw" type="system"><hardware><plugin>mock_components/GenericSystem</plugin></hardware>
       <joint name="ghost"><command_interface name="position"/><state_interface name="position"/></joint>
       </ros2_control></robot>"""
-    model = load_string(urdf).value
+    model = load_string(urdf).model
     sim = Simulation(default_world(), rtf=0)
     # the description already dropped the joint with a warning (file:line); the manager runs with none
     entity = sim.spawn(model, name="r")
@@ -497,7 +497,7 @@ def test_bad_parameter_files_in_the_plugin_tag_fail_the_spawn_with_the_reason(tm
         f'<gazebo><plugin filename="libgazebo_ros2_control.so" name="gazebo_ros2_control">'
         f"<parameters>{bad}</parameters></plugin></gazebo></robot>",
     )
-    model = load_string(urdf, source=str(tmp_path / "robot.urdf")).value
+    model = load_string(urdf, source=str(tmp_path / "robot.urdf")).model
     sim = Simulation(default_world(), rtf=0)
     with pytest.raises(Exception, match=r"c\.yaml:\d+: not valid YAML"):
         sim.spawn(model, name="diffbot")
@@ -518,7 +518,7 @@ def test_the_plugin_tag_names_the_manager_and_its_parameters(tmp_path):
         f"<parameters>{cfg}</parameters><controller_manager_name>my_cm</controller_manager_name>"
         "<ros><namespace>bot</namespace></ros></plugin></gazebo></robot>",
     )
-    model = load_string(urdf, source=str(tmp_path / "robot.urdf")).value
+    model = load_string(urdf, source=str(tmp_path / "robot.urdf")).model
     sim = Simulation(default_world(), rtf=0)
     cm = _manager(sim.spawn(model, name="diffbot", pose=Pose((0, 0, 0.05))))
     assert (cm.node_name, cm.update_rate) == ("/bot/my_cm", 50)
@@ -547,7 +547,7 @@ def test_a_urdf_mimic_joint_follows_its_leader():
         <limit lower="-1" upper="1" effort="10" velocity="1"/><mimic joint="j1" multiplier="-2" offset="0.01"/></joint>
     </robot>"""
     sim = Simulation(default_world(), rtf=0)
-    sim.spawn(load_string(urdf).value, name="g")
+    sim.spawn(load_string(urdf).model, name="g")
     sim.world.set_joint_state("g", "j1", position=0.02)
     sim.step(300)
     j1, j2 = sim.world.joint("g", "j1").position, sim.world.joint("g", "j2").position
@@ -606,7 +606,7 @@ SENSOR_BOT = """<robot name="s">
 
 def test_imu_and_force_torque_sensor_components_are_read_from_the_simulated_sensors():
     sim = Simulation(default_world(), rtf=0)
-    cm = _manager(sim.spawn(load_string(SENSOR_BOT).value, name="s"))
+    cm = _manager(sim.spawn(load_string(SENSOR_BOT).model, name="s"))
     cm.files.append(
         parse_params(
             "imu_broadcaster:\n  ros__parameters:\n    type: imu_sensor_broadcaster/IMUSensorBroadcaster\n"
@@ -647,7 +647,7 @@ def test_a_husky_with_its_10_hz_manager_drives_at_its_command_at_1_4_and_10_ms_s
     world = default_world()
     world = dataclasses.replace(world, physics=dataclasses.replace(world.physics, max_step_size_sec=step_sec))
     sim = Simulation(world, rtf=0)
-    cm = _manager(sim.spawn(load(HUSKY / "husky.urdf").value, name="husky", pose=Pose((0.0, 0.0, 0.14))))
+    cm = _manager(sim.spawn(load(HUSKY / "husky.urdf").model, name="husky", pose=Pose((0.0, 0.0, 0.14))))
     _start(cm, HUSKY / "control.yaml", "joint_state_broadcaster", "husky_velocity_controller")
     odom: list = []
     for ep in sim.bus.endpoints():

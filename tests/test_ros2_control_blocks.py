@@ -177,7 +177,7 @@ def test_models_without_ros2_control_are_untouched():
     from gazelle.sim import Simulation
     from gazelle.worlds import default_world
 
-    model = dataclasses.replace(load(URDF).value, ros2_control=())
+    model = dataclasses.replace(load(URDF).model, ros2_control=())
     sim = Simulation(default_world(), rtf=0)
     sim.spawn(model, name="r6bot")
     sim.step(50)

@@ -83,7 +83,7 @@ def test_spawn_runs_a_controller_manager_and_names_the_real_driver_it_stands_in_
     from gazelle.systems.ros2_control import ControllerManager
     from gazelle.worlds import default_world
 
-    model = load(DIFFBOT).value
+    model = load(DIFFBOT).model
     assert not [p for p in audit_model(model) if "ros2_control" in p.format()]  # simulated: nothing to warn of
     sim = Simulation(default_world(), rtf=0)
     with caplog.at_level(logging.INFO):

@@ -24,7 +24,7 @@ from gazelle.worlds import default_world
 
 def _seed_sim(**kw) -> tuple[Simulation, DiffDrive]:
     sim = Simulation(default_world(), rtf=0, **kw)
-    entity = sim.spawn(load(SEED_XACRO).value, name="robot", pose=Pose((0.0, 0.0, 0.07)))
+    entity = sim.spawn(load(SEED_XACRO).model, name="robot", pose=Pose((0.0, 0.0, 0.07)))
     return sim, next(s for s in entity.systems if isinstance(s, DiffDrive))
 
 
@@ -148,7 +148,7 @@ def test_joint_and_actuator_handles_read_and_command_through_recompiles() -> Non
     v = wheel.joint.velocity
     assert v == pytest.approx(0.4 / drive._wheels[0].radius, rel=0.02)
     # a spawn renumbers MuJoCo's arrays: the handle still reads this wheel
-    sim.spawn(load_string(VISUAL).value, name="other", pose=Pose((5.0, 0.0, 0.5)))
+    sim.spawn(load_string(VISUAL).model, name="other", pose=Pose((5.0, 0.0, 0.5)))
     sim.step(1)
     qadr, dadr = sim.world.joint_address("robot", wheel.joint.name)
     assert wheel.joint.position == sim.world.data.qpos[qadr]
@@ -197,7 +197,7 @@ def test_visuals_go_into_the_mujoco_model_as_massless_non_colliding_geoms() -> N
     runs = {}
     for visuals in (False, True):
         sim = Simulation(default_world(), rtf=0, visual_geoms=visuals)
-        sim.spawn(load_string(VISUAL).value, name="lamp", pose=Pose((0.0, 0.0, 0.5)))
+        sim.spawn(load_string(VISUAL).model, name="lamp", pose=Pose((0.0, 0.0, 0.5)))
         sim.step(2000)
         m = sim.world.model
         groups = [int(g) for g in m.geom_group]
@@ -322,7 +322,7 @@ def test_a_worlds_models_are_compiled_into_mujoco_once_and_step_as_one_at_a_time
         "</box></geometry></collision></link></model>"
         for i in range(40)
     )
-    world = load_string(f"<sdf version='1.9'><world name='w'>{boxes}</world></sdf>").value
+    world = load_string(f"<sdf version='1.9'><world name='w'>{boxes}</world></sdf>").world
     batch = Simulation(world, rtf=0)
     assert batch.world.generation == 1 and len(batch.world.entities) == 40
     one_by_one = Simulation(dataclasses.replace(world, models=()), rtf=0)

@@ -73,7 +73,7 @@ def _wall(name: str, x: float, y: float, sx: float, sy: float) -> str:
 def _spawn(sim: Simulation, xml: str, name: str, pose: Pose = Pose()):
     result = load_string(xml)
     assert not [d for d in result.diagnostics if d.severity.name == "ERROR"], [d.format() for d in result.diagnostics]
-    return sim.spawn(result.value, name=name, pose=pose)
+    return sim.spawn(result.model, name=name, pose=pose)
 
 
 def _lidar(entity) -> Lidar:
@@ -302,7 +302,7 @@ def test_unsimulated_noise_and_bad_lidar_configuration_are_named_with_file_and_l
 
 def test_turtlebot3_burger_sensors_run_from_all_three_of_its_files():
     # ROS 2 Classic SDF (gazebo_ros plugins with ~/out remappings)
-    classic = load(TB3 / "turtlebot3_gazebo/models/turtlebot3_burger/model-1_4.sdf").value
+    classic = load(TB3 / "turtlebot3_gazebo/models/turtlebot3_burger/model-1_4.sdf").model
     plans, problems = plan_sensors(classic, ())
     assert sorted((p.sensor.name, p.plugin.filename if p.plugin else None) for p in plans) == [
         ("hls_lfcd_lds", "libgazebo_ros_ray_sensor.so"),
@@ -310,7 +310,7 @@ def test_turtlebot3_burger_sensors_run_from_all_three_of_its_files():
     ]
     assert problems == []
     # gz-sim SDF: sensors run by the world's gz-sim systems (present in the default world)
-    gz = load(TB3 / "turtlebot3_gazebo/models/turtlebot3_burger/model.sdf").value
+    gz = load(TB3 / "turtlebot3_gazebo/models/turtlebot3_burger/model.sdf").model
     plans, problems = plan_sensors(gz, default_world().plugins)
     assert sorted(p.sensor.name for p in plans) == ["hls_lfcd_lds", "tb3_imu"] and problems == []
     plans, problems = plan_sensors(gz, ())  # a world file without them: named, as gz-sim would not run them
@@ -322,7 +322,7 @@ def test_turtlebot3_burger_sensors_run_from_all_three_of_its_files():
         ("turtlebot3_gazebo/models/turtlebot3_burger/model.sdf", "base_scan", "/imu"),
     ):
         sim = Simulation(default_world(), rtf=0)
-        entity = sim.spawn(load(TB3 / path).value, name="burger", pose=Pose((0.0, 0.0, 0.01)))
+        entity = sim.spawn(load(TB3 / path).model, name="burger", pose=Pose((0.0, 0.0, 0.01)))
         lidar = _lidar(entity)
         imu = next(s for s in entity.systems if isinstance(s, ImuSensor))
         assert lidar.output is not None and imu.output is not None
@@ -350,9 +350,9 @@ def _ray_circle(origin: np.ndarray, dirs: np.ndarray, centre: tuple[float, float
 
 def test_turtlebot3_in_its_world_sees_the_pillars_at_the_distances_the_geometry_gives(resource_path):
     resource_path("turtlebot3/turtlebot3_gazebo/models")
-    world = load(TB3 / "turtlebot3_gazebo/worlds/turtlebot3_world.world").value
+    world = load(TB3 / "turtlebot3_gazebo/worlds/turtlebot3_world.world").world
     sim = Simulation(world, rtf=0)
-    burger = load(TB3 / "turtlebot3_gazebo/models/turtlebot3_burger/model.sdf").value
+    burger = load(TB3 / "turtlebot3_gazebo/models/turtlebot3_burger/model.sdf").model
     entity = sim.spawn(burger, name="burger", pose=Pose((-2.0, -0.5, 0.01)))  # turtlebot3_world.launch.py's pose
     lidar = _lidar(entity)
     lidar.spec = dataclasses.replace(lidar.spec, noise=dataclasses.replace(lidar.spec.noise, type="none"))
@@ -492,7 +492,7 @@ def test_a_box_dropped_on_a_bumper_plate_gives_contacts_naming_both_collisions_a
     got = _record(sim, "/plate/bumper_states")
     sim.step(100)
     assert got and all(msg.states == () for msg in got)  # nothing on it yet
-    box = load_string(BOX_2KG).value
+    box = load_string(BOX_2KG).model
     sim.spawn(box, name="box", pose=Pose((0.0, 0.0, 0.3)))
     sim.step(1500)  # falls and comes to rest
     msg: Contacts = got[-1]
@@ -618,7 +618,7 @@ def test_namespaced_robots_get_namespaced_sensor_topics_and_prefixed_frames():
     from gazelle.systems.sensors import Camera, ImuSensor
 
     sim = Simulation(default_world(), rtf=0)
-    bot = load(REPO / "examples/sensor_bot/sensor_bot.urdf").value
+    bot = load(REPO / "examples/sensor_bot/sensor_bot.urdf").model
     for i, ns in enumerate(("r1", "r2")):
         entity = sim.spawn(bot, name=f"bot_{ns}", pose=Pose((0.0, 2.0 * i, 0.07)), namespace=ns)
         lidar = _lidar(entity)
@@ -636,7 +636,7 @@ def test_namespaced_robots_get_namespaced_sensor_topics_and_prefixed_frames():
 
 def test_an_unknown_sensor_type_is_named_with_a_did_you_mean_and_an_unsimulated_one_as_not_yet():
     xml = _lidar_model().replace('type="ray"', 'type="lidarr"')
-    _plans, problems = plan_sensors(load_string(xml).value, default_world().plugins)
+    _plans, problems = plan_sensors(load_string(xml).model, default_world().plugins)
     assert [(p.message, p.location.line if p.location else None) for p in problems] == [
         (
             "sensor 'laser' (lidarr) on link 'base': 'lidarr' is not an SDF sensor type, so nothing runs it; "
@@ -646,7 +646,7 @@ def test_an_unknown_sensor_type_is_named_with_a_did_you_mean_and_an_unsimulated_
     ]
     gz = """<?xml version="1.0"?><sdf version="1.9"><model name="m"><link name="l">
       <sensor name="baro" type="air_speed"><update_rate>10</update_rate></sensor></link></model></sdf>"""
-    plans, problems = plan_sensors(load_string(gz).value, default_world().plugins)
+    plans, problems = plan_sensors(load_string(gz).model, default_world().plugins)
     assert plans == [] and [p.message for p in problems] == [
         "sensor 'baro' (air_speed) on link 'l' is not simulated yet"
     ]
@@ -656,7 +656,7 @@ def test_a_camera_keeps_rendering_across_recompiles_and_a_deleted_one_frees_its_
     from gazelle.systems.sensors import Camera
 
     sim = Simulation(default_world(), rtf=0)
-    bot = load(REPO / "examples/sensor_bot/sensor_bot.urdf").value
+    bot = load(REPO / "examples/sensor_bot/sensor_bot.urdf").model
     cam = next(s for s in sim.spawn(bot, name="bot", pose=Pose((0.0, 0.0, 0.07))).systems if isinstance(s, Camera))
     first = cam.render(sim.world, depth=True)
     assert first is not None and np.isinf(first[1][0, 160])  # the sky
@@ -714,7 +714,7 @@ def _magnetometer_readings(yaw: float, noise: str = "", steps: int = 400) -> lis
     from gazelle.worlds import default_world
 
     sim = Simulation(default_world(), rtf=0)
-    sim.spawn(load_string(MAG_BOT.format(yaw=yaw, noise=noise)).value, name="mag")
+    sim.spawn(load_string(MAG_BOT.format(yaw=yaw, noise=noise)).model, name="mag")
     got: list = []
     (ep,) = [e for e in sim.bus.endpoints() if e.msg_type is MsgType.MAGNETIC_FIELD]
     assert ep.topic == "/mag"
@@ -749,10 +749,10 @@ def test_a_world_magnetic_field_is_read_and_reaches_the_magnetometer():
     world = load_string(
         '<sdf version="1.9"><world name="w"><magnetic_field>2e-5 0 -3e-5</magnetic_field>'
         '<plugin filename="gz-sim-magnetometer-system" name="gz::sim::systems::Magnetometer"/></world></sdf>'
-    ).value
+    ).world
     assert world.magnetic_field == (2e-5, 0.0, -3e-5)
     sim = Simulation(world, rtf=0)
-    sim.spawn(load_string(MAG_BOT.format(yaw=0.0, noise="")).value, name="mag")
+    sim.spawn(load_string(MAG_BOT.format(yaw=0.0, noise="")).model, name="mag")
     got: list = []
     next(e for e in sim.bus.endpoints() if e.msg_type is MsgType.MAGNETIC_FIELD).add_sink(got.append)
     sim.step(100)
@@ -775,7 +775,7 @@ def test_an_altimeter_reads_height_above_where_it_started_and_vertical_velocity(
     from gazelle.worlds import default_world
 
     sim = Simulation(default_world(), rtf=0)
-    sim.spawn(load_string(ALT_BOX).value, name="alt")
+    sim.spawn(load_string(ALT_BOX).model, name="alt")
     got: list = []
     (ep,) = [e for e in sim.bus.endpoints() if e.msg_type is MsgType.ALTIMETER]
     assert ep.topic == "/altimeter"
@@ -834,7 +834,7 @@ def test_a_urdf_bumper_names_the_links_first_collision_as_gazebo_does(name, capl
     sensor = next(s for s in plate.systems if isinstance(s, ContactSensor))
     assert sensor.collisions == ("base_collision_0",)
     got = _record(sim, "/bumper_states")
-    sim.spawn(load_string(BOX_2KG).value, name="box", pose=Pose((0.0, 0.0, 0.3)))
+    sim.spawn(load_string(BOX_2KG).model, name="box", pose=Pose((0.0, 0.0, 0.3)))
     sim.step(1500)
     assert [(s.collision1, s.collision2) for s in got[-1].states] == [("plate::base::base_collision_0", "box::link::c")]
 
@@ -844,7 +844,7 @@ def test_a_seeded_simulation_repeats_its_sensor_noise_and_an_unseeded_one_does_n
     the pytest plugin's --gazelle-seed) gives every noisy system its own stream from the seed and its
     names, so two runs with one seed publish the same noisy scans and IMU readings; without a seed (as
     Gazebo without --seed) the noise differs from run to run."""
-    model = load(TB3 / "turtlebot3_gazebo/models/turtlebot3_burger/model.sdf").value
+    model = load(TB3 / "turtlebot3_gazebo/models/turtlebot3_burger/model.sdf").model
 
     def run(seed):
         sim = Simulation(default_world(), rtf=0, seed=seed)
@@ -879,7 +879,7 @@ def test_a_camera_sees_the_worlds_background_where_nothing_is_drawn(scene: str, 
     Sensors.cc); gazelle's drew black."""
     from gazelle.systems.sensors import Camera
 
-    world = load_string(f'<?xml version="1.0"?><sdf version="1.9"><world name="w">{plugin}{scene}</world></sdf>').value
+    world = load_string(f'<?xml version="1.0"?><sdf version="1.9"><world name="w">{plugin}{scene}</world></sdf>').world
     sim = Simulation(world, rtf=0)
     cam = next(s for s in _spawn(sim, _camera_model(), "cam").systems if isinstance(s, Camera))
     sim.step(1)
@@ -947,7 +947,7 @@ def test_a_camera_sees_a_collada_meshs_own_texture_unless_the_visual_gives_a_mat
     for _ in range(2):
         poster = load(tmp_path / "model.sdf")
         assert poster.value is not None, [d.format() for d in poster.diagnostics]
-        sim.spawn(poster.value, name="poster")
+        sim.spawn(poster.model, name="poster")
         cam = next(s for s in _spawn(sim, _camera_model(hfov=0.6), "cam").systems if isinstance(s, Camera))
         sim.step(1)
         rgb, _ = cam.render(sim.world, depth=False)
@@ -975,7 +975,7 @@ def test_an_air_pressure_sensor_reads_the_standard_atmosphere_at_its_height(z: f
     """Issue 32's new sensor kind (one module and one import line): SDF's air_pressure, as gz-sensors
     computes it (US standard atmosphere's troposphere on the geopotential height of reference_altitude +
     the sensor's z), published as sensor_msgs/FluidPressure on its <topic>."""
-    world = load_string(AIR_PRESSURE_WORLD.format(z=z, ref=ref, sd=0)).value
+    world = load_string(AIR_PRESSURE_WORLD.format(z=z, ref=ref, sd=0)).world
     sim = Simulation(world, rtf=0)
     readings = _record(sim, "/baro")
     sim.step(50)
@@ -997,7 +997,7 @@ def test_air_pressure_noise_and_its_variance_as_gz_sensors_reports_it_and_the_ro
     from gazelle.ros._convert import to_ros
     from gazelle.systems.sensors.air_pressure import FLUID_PRESSURE, pressure_at
 
-    world = load_string(AIR_PRESSURE_WORLD.format(z=1.0, ref=0.0, sd=4.0)).value
+    world = load_string(AIR_PRESSURE_WORLD.format(z=1.0, ref=0.0, sd=4.0)).world
     sim = Simulation(world, rtf=0, seed=1)
     readings = _record(sim, "/baro")
     sim.step(3000)

@@ -92,9 +92,9 @@ def make_sim() -> tuple[Simulation, dict]:
     sim = Simulation(default_world(), rtf=0)
     robot = sim.spawn(models["robot"], name="robot", pose=Pose((0.0, 0.0, 0.05)))
     next(s for s in robot.systems if isinstance(s, DiffDrive)).command(0.3, 0.5)
-    sim.spawn(load_string(ICE_BOX).value, name="slider", pose=Pose((2.0, -2.0, 0.1)))
+    sim.spawn(load_string(ICE_BOX).model, name="slider", pose=Pose((2.0, -2.0, 0.1)))
     sim.world.set_entity_state("slider", Pose((2.0, -2.0, 0.1)), linear=(1.5, 0.5, 0.0))  # slides for ~3 s (μ = 0.05)
-    sim.spawn(load_string(BALL).value, name="faller", pose=Pose((-3.0, 0.0, 500.0)))  # free fall all along
+    sim.spawn(load_string(BALL).model, name="faller", pose=Pose((-3.0, 0.0, 500.0)))  # free fall all along
     sim.spawn(models["pendulum"], name="pendulum", pose=Pose((0.0, 3.0, 2.0)))
     sim.world.set_joint_state("pendulum", "hinge", position=0.8)
     sim.step(200)  # the robot is on its wheels and driving
@@ -167,7 +167,7 @@ def test_robots_with_the_same_meshes_share_one_copy_which_goes_with_the_last_of_
     """Issue 29: every arm copied its 88,755 mesh vertices (20 r6bot arms: 140 meshes, 762 MiB); a mesh is
     now in the model once however many robots use it, and leaves it with the last one."""
     monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(REAL / "ros2_control_r6bot"))
-    model = load(REAL / "ros2_control_r6bot" / "_xacro_expanded" / "r6bot.urdf").value
+    model = load(REAL / "ros2_control_r6bot" / "_xacro_expanded" / "r6bot.urdf").model
     sim = Simulation(default_world(), rtf=0)
     base = sim.world.model.nmesh
     sim.spawn(model, name="a0")

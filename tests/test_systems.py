@@ -48,7 +48,7 @@ def seed_geometry() -> tuple[float, float]:
 
 def spawn(text: str, *, name: str = "robot", namespace: str = "", z: float = 0.05, source: str | None = None):
     sim = Simulation(default_world(), rtf=0)
-    model = load_string(text, source=source).value
+    model = load_string(text, source=source).model
     entity = sim.spawn(model, name=name, pose=Pose((0.0, 0.0, z)), namespace=namespace)
     return sim, entity
 
@@ -96,7 +96,7 @@ class Kick(System):
 
 def test_pre_update_acts_in_the_same_step_and_post_update_sees_the_post_step_state() -> None:
     sim = Simulation(default_world(), rtf=0)
-    sim.spawn(load_string(BOX).value, name="box", pose=Pose((0.0, 0.0, 2.0)))
+    sim.spawn(load_string(BOX).model, name="box", pose=Pose((0.0, 0.0, 2.0)))
     kick = Kick("box", step=5)
     sim.systems.add("box", kick)
     sim.step(10)
@@ -119,7 +119,7 @@ def test_unknown_plugin_warns_with_name_file_and_line(tmp_path, caplog) -> None:
     path.write_text(urdf)
     line = next(i for i, ln in enumerate(urdf.splitlines(), 1) if "libgazebo_ros_mystery" in ln)
     with caplog.at_level(logging.WARNING):
-        Simulation(default_world(), rtf=0).spawn(load(path).value, name="r", pose=Pose((0, 0, 0.05)))
+        Simulation(default_world(), rtf=0).spawn(load(path).model, name="r", pose=Pose((0, 0, 0.05)))
     msgs = [r.getMessage() for r in caplog.records if "mystery" in r.getMessage()]
     assert msgs, caplog.text
     assert "libgazebo_ros_mystery.so" in msgs[0] and f"{path}:{line}" in msgs[0]
@@ -128,7 +128,7 @@ def test_unknown_plugin_warns_with_name_file_and_line(tmp_path, caplog) -> None:
 # --------------------------------------------------------------------------- classic diff drive, ROS 1 names
 def test_classic_diff_drive_reads_the_ros1_names_of_turtlebot3(caplog, monkeypatch) -> None:
     monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(TB3))
-    model = load(TB3 / "turtlebot3_description/urdf/turtlebot3_burger.urdf.xacro").value
+    model = load(TB3 / "turtlebot3_description/urdf/turtlebot3_burger.urdf.xacro").model
     sim = Simulation(default_world(), rtf=0)
     with caplog.at_level(logging.WARNING):
         entity = sim.spawn(model, name="tb3", pose=Pose((0, 0, 0.01)))
@@ -332,7 +332,7 @@ def test_a_system_that_raises_is_disabled_and_the_world_goes_on(caplog):
             raise RuntimeError("plugin bug")
 
     sim = Simulation(default_world(), rtf=0)
-    robot = load("examples/simple_robot/simple_robot/robot.urdf.xacro").value
+    robot = load("examples/simple_robot/simple_robot/robot.urdf.xacro").model
     e = sim.spawn(robot, pose=Pose((0.0, 0.0, 0.08)))
     sim.systems.add(e.name, Broken())
     e.systems[0].command(0.2, 0.0)

@@ -11,6 +11,7 @@ from __future__ import annotations
 import enum
 import math
 from dataclasses import dataclass, field
+from typing import TypeVar
 
 from ._diagnostics import Diagnostic, SourceLocation
 
@@ -723,9 +724,44 @@ class World:
     """``<magnetic_field>`` in tesla, world frame (magnetometers read it); SDF's default otherwise."""
 
 
+_Loaded = TypeVar("_Loaded", Model, World, Semantics)
+
+
 @dataclass(frozen=True, slots=True)
 class LoadResult:
     """What a loader returns: the description plus every diagnostic (warnings included)."""
 
     value: Model | World | Semantics
     diagnostics: tuple[Diagnostic, ...] = field(default=())
+
+    @property
+    def model(self) -> Model:
+        """The value as a robot or object model (a URDF, xacro or SDF ``<model>``).
+
+        Raises:
+            TypeError: the description is a world or an SRDF.
+        """
+        return self._as(Model, "a robot or object model")
+
+    @property
+    def world(self) -> World:
+        """The value as an SDF world.
+
+        Raises:
+            TypeError: the description is a model or an SRDF.
+        """
+        return self._as(World, "an SDF world")
+
+    @property
+    def semantics(self) -> Semantics:
+        """The value as an SRDF's semantics.
+
+        Raises:
+            TypeError: the description is a model or a world.
+        """
+        return self._as(Semantics, "an SRDF")
+
+    def _as(self, kind: type[_Loaded], wanted: str) -> _Loaded:
+        if not isinstance(self.value, kind):
+            raise TypeError(f"expected {wanted}, but the description is a {type(self.value).__name__}")
+        return self.value

@@ -43,7 +43,7 @@ def test_a_gz_position_controller_on_its_default_topic_spawns_and_is_commanded_o
     bridge = RosBridge(sim)
     try:
         with caplog.at_level(logging.ERROR):
-            sim.spawn(load_string(ARM % plugins).value, name="arm")  # raised InvalidTopicNameException before
+            sim.spawn(load_string(ARM % plugins).model, name="arm")  # raised InvalidTopicNameException before
         errors = [r.getMessage() for r in caplog.records if "not a valid ROS name" in r.getMessage()]
         assert len(errors) == 1 and "'/arm/spin cmd'" in errors[0] and errors[0].startswith("'arm'"), errors
         sim.start()

@@ -201,7 +201,7 @@ def test_the_simulation_thread_queues_and_a_publisher_thread_publishes(monkeypat
     sim = Simulation(default_world(), rtf=1.0)
     bridge = RosBridge(sim)
     try:
-        sim.spawn(load_string(xacro_to_urdf(SEED_XACRO)).value, name="simple_robot", pose=Pose((0, 0, 0.07)))
+        sim.spawn(load_string(xacro_to_urdf(SEED_XACRO)).model, name="simple_robot", pose=Pose((0, 0, 0.07)))
         # the bench counts these publishers' subscribers (it matched nothing when this named none)
         assert bridge.node.ros_publishers("/odom") and len(bridge.node.ros_publishers("/tf")) == 2  # drive, RSP
         sim.start()

@@ -338,8 +338,8 @@ def test_chessboard_world_renders_33_entities(page: Any, artifacts: Path) -> Non
     bx, by, bz = CHESS_TARGET
     sim = Simulation(default_world(), rtf=1.0)
     sim.start()
-    sim.spawn(load(here / "chess_board.sdf").value, name="chess_board", pose=Pose((bx, by, bz)))
-    piece = load(here / "chess_piece.sdf").value
+    sim.spawn(load(here / "chess_board.sdf").model, name="chess_board", pose=Pose((bx, by, bz)))
+    piece = load(here / "chess_piece.sdf").model
     for row in (0, 1, 6, 7):
         for col in range(8):
             sim.spawn(
@@ -420,8 +420,8 @@ def test_lidar_overlay_points_appear_where_the_wall_is(page: Any, artifacts: Pat
       <visual name="v"><geometry><box><size>0.2 2 0.5</size></box></geometry><material><diffuse>0.6 0.6 0.6 1</diffuse></material></visual>
       </link></model></sdf>"""
     sim = Simulation(default_world(), rtf=1.0)
-    sim.spawn(load_string(wall).value, name="wall")
-    sim.spawn(load(REPO / "examples/sensor_bot/sensor_bot.urdf").value, name="bot", pose=Pose((0.0, 0.0, 0.07)))
+    sim.spawn(load_string(wall).model, name="wall")
+    sim.spawn(load(REPO / "examples/sensor_bot/sensor_bot.urdf").model, name="bot", pose=Pose((0.0, 0.0, 0.07)))
     sim.start()
     viewer = Viewer(sim, port=0)
     cam = viewer.server.initial_camera
@@ -494,7 +494,7 @@ def test_a_plan_published_on_display_planned_path_is_drawn_where_the_tool_will_g
 
     urdf = TWO_LINK_ARM.replace('<origin xyz="0 0 1"/>', '<origin xyz="{} {} {}"/>'.format(*ARM_BASE))
     sim = Simulation(default_world(), rtf=1.0)
-    sim.spawn(load_string(urdf).value, name="arm")
+    sim.spawn(load_string(urdf).model, name="arm")
     sim.start()
     viewer = Viewer(sim, port=0)
     bridge = RosBridge(sim)

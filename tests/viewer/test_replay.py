@@ -31,8 +31,8 @@ RED = np.array([0xE6, 0x19, 0x4B])
 def run() -> tuple[dict, tuple[float, float], tuple[float, float]]:
     """The recording of a 4 s drive, and the robot's (x, y) at its start and end by ground truth."""
     sim = Simulation(default_world(), rtf=0)
-    sim.spawn(load(SEED_XACRO).value, name="robot", pose=Pose((0.0, 0.0, 0.05)))
-    sim.spawn(load_string(BOX).value, name="crate", pose=Pose((0.0, 1.2, 0.1)))
+    sim.spawn(load(SEED_XACRO).model, name="robot", pose=Pose((0.0, 0.0, 0.05)))
+    sim.spawn(load_string(BOX).model, name="crate", pose=Pose((0.0, 1.2, 0.1)))
     recorder = ReplayRecorder(sim)
     sim.step(1)
     start = sim.world.entity_state("robot").pose.position[:2]
@@ -59,7 +59,7 @@ def test_a_long_recording_thins_itself_instead_of_growing(monkeypatch) -> None:
 
     monkeypatch.setattr(_replay, "MAX_SAMPLES", 300)
     sim = Simulation(default_world(), rtf=0)
-    sim.spawn(load_string(BOX).value, name="crate", pose=Pose((0.0, 0.0, 1.0)))
+    sim.spawn(load_string(BOX).model, name="crate", pose=Pose((0.0, 0.0, 1.0)))
     recorder = ReplayRecorder(sim)
     sim.step(20_000)  # 20 s: 600 frames at 30 Hz
     frames = recorder.data()["frames"]
@@ -109,9 +109,9 @@ def test_a_60_s_turtlebot3_world_run_makes_a_page_under_20_mb(resource_path) -> 
 
     resource_path("turtlebot3/turtlebot3_gazebo/models", "turtlebot3")
     tb3 = REAL / "turtlebot3" / "turtlebot3_gazebo"
-    sim = Simulation(load(tb3 / "worlds" / "turtlebot3_world.world").value, rtf=0)
+    sim = Simulation(load(tb3 / "worlds" / "turtlebot3_world.world").world, rtf=0)
     sim.spawn(
-        load(tb3 / "models" / "turtlebot3_burger" / "model.sdf").value, name="burger", pose=Pose((-2.0, -0.5, 0.01))
+        load(tb3 / "models" / "turtlebot3_burger" / "model.sdf").model, name="burger", pose=Pose((-2.0, -0.5, 0.01))
     )
     recorder = ReplayRecorder(sim, topics=("/odom", "/scan"))
     assert sim.bus.inject("/cmd_vel", MsgType.TWIST, Twist((0.15, 0.0, 0.0), (0.0, 0.0, 0.1))) == 1

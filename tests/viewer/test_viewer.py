@@ -95,7 +95,7 @@ def test_scene_follows_spawn_and_delete_and_drive_reaches_the_diff_drive() -> No
         assert viewer.server.get_host() == "127.0.0.1"
         viewer.update()
         before = set(viewer._nodes)
-        sim.spawn(load(SEED_XACRO).value, name="r1", pose=Pose((1.0, 0.0, 0.0)))
+        sim.spawn(load(SEED_XACRO).model, name="r1", pose=Pose((1.0, 0.0, 0.0)))
         snap = viewer.update()
         assert snap is not None and set(viewer._nodes) == before | {"r1"}
         assert set(viewer._nodes["r1"].links) == {"base_link", "left_wheel", "right_wheel"}
@@ -146,9 +146,9 @@ def test_clicking_an_entity_selects_it_but_not_the_ground_plane_or_collision_ove
     sim.start()
     viewer = Viewer(sim, port=0)  # no thread: frames are pulled by hand
     try:
-        sim.spawn(load(SEED_XACRO).value, name="r1", pose=Pose((1.0, 0.0, 0.0)))
-        sim.spawn(load(here / "chess_board.sdf").value, name="board", pose=Pose((0.0, 2.0, 0.0)))  # static, spawned
-        sim.spawn(load(here / "chess_piece.sdf").value, name="piece", pose=Pose((0.0, 2.0, 0.05)))
+        sim.spawn(load(SEED_XACRO).model, name="r1", pose=Pose((1.0, 0.0, 0.0)))
+        sim.spawn(load(here / "chess_board.sdf").model, name="board", pose=Pose((0.0, 2.0, 0.0)))  # static, spawned
+        sim.spawn(load(here / "chess_piece.sdf").model, name="piece", pose=Pose((0.0, 2.0, 0.05)))
         viewer.update()
         nodes = viewer._nodes
         assert viewer._entity_dd.value == NO_SELECTION
@@ -219,7 +219,7 @@ def test_trail_contacts_and_spawn_from_the_resource_paths(monkeypatch) -> None:
         assert "chessboard/chess_board.sdf" in viewer._model_dd.options
         viewer.sample_trail()
         assert viewer.trail == [] and viewer.trail_target() is None
-        sim.spawn(load(SEED_XACRO).value, name="r1")
+        sim.spawn(load(SEED_XACRO).model, name="r1")
         assert viewer.trail_target() == "r1"  # no selection: the first diff-drive robot
         viewer.drive(0.5, 0.0, "r1")
         t_end = sim.call(lambda: sim.world.time) + 2.0
@@ -292,7 +292,7 @@ def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_
             sim.call(lambda: setattr(sim, "paused", True))
             viewer.sample_trail()
 
-        sim.spawn(load(tmp_path / "enc.urdf").value, name="r1", pose=Pose((1.0, 2.0, 0.05)))
+        sim.spawn(load(tmp_path / "enc.urdf").model, name="r1", pose=Pose((1.0, 2.0, 0.05)))
         drive(0.5)  # at rest on the ground; the trail (and its odom frame) starts here
         x0, y0 = truth_xy()
         viewer.drive(0.5, 0.0, "r1")
@@ -315,7 +315,7 @@ def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_
         assert viewer.trail[-1][:2] == pytest.approx(truth_xy(), abs=0.006)  # within a trail step (5 mm)
         sim.call(lambda: setattr(sim, "paused", False))
 
-        sim.spawn(load_string(BOX).value, name="box", pose=Pose((-1.0, 0.0, 0.2)))
+        sim.spawn(load_string(BOX).model, name="box", pose=Pose((-1.0, 0.0, 0.2)))
         viewer._trail_source.value = "odom"
         viewer.update()  # the scene and the Entities dropdown catch up with the spawn
         assert viewer.select("box")
@@ -353,8 +353,8 @@ def test_lidar_points_land_on_the_wall_and_the_camera_panel_shows_the_camera_ima
       <visual name="v"><geometry><box><size>0.2 6 1</size></box></geometry><material><diffuse>1 0 0 1</diffuse></material></visual>
       </link></model></sdf>"""
     sim = Simulation(default_world(), rtf=0.0)
-    sim.spawn(load_string(wall).value, name="wall")
-    sim.spawn(load(REPO / "examples/sensor_bot/sensor_bot.urdf").value, name="bot", pose=Pose((0.0, 0.0, 0.07)))
+    sim.spawn(load_string(wall).model, name="wall")
+    sim.spawn(load(REPO / "examples/sensor_bot/sensor_bot.urdf").model, name="bot", pose=Pose((0.0, 0.0, 0.07)))
     sim.step(200)
     viewer = Viewer(sim, port=0)  # no thread: the panel is updated by hand
     sim.start()
@@ -411,7 +411,7 @@ def test_a_planned_arm_motion_is_drawn_as_its_tools_path_and_goal_and_the_arm_do
     sim.start()
     viewer = Viewer(sim, port=0)
     try:
-        sim.spawn(load_string(TWO_LINK_ARM).value, name="arm", pose=Pose())
+        sim.spawn(load_string(TWO_LINK_ARM).model, name="arm", pose=Pose())
         viewer.update()
         assert viewer.update_plan() is None and not viewer._plan_handles  # nothing planned yet
         rows = [(0.0, 0.0), (np.pi / 4, 0.0), (np.pi / 2, 0.0), (np.pi / 2, np.pi / 2)]
