@@ -41,7 +41,7 @@ def robot_urdf() -> str:
     """The seed URDF with the drive at 50 Hz and a 50 Hz joint state publisher block."""
     from gazelle.description import load
 
-    urdf = load(ROBOT).value.urdf
+    urdf = load(ROBOT).model.urdf
     assert urdf
     urdf = urdf.replace("<publish_odom>", f"<update_rate>{RATE_HZ}</update_rate><publish_odom>", 1)
     joints = re.findall(r'<joint name="([^"]+)" type="continuous"', urdf)

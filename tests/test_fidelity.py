@@ -46,7 +46,7 @@ def test_classic_stock_ground_plane_and_sun_are_built_in(monkeypatch, tmp_path: 
 
 def test_an_installed_ground_plane_model_is_used_before_the_built_in_one() -> None:
     resolver = ResourceResolver(extra_paths=[REAL / "gazebo_models" / "models"], env={})
-    world = load_string(CLASSIC_WORLD, resolver=resolver).value
+    world = load_string(CLASSIC_WORLD, resolver=resolver).world
     (ground,) = world.models
     assert "gazebo_models" in ground.source_file
 
@@ -138,7 +138,7 @@ def test_models_a_package_exports_for_gazebo_are_found(tmp_path: Path) -> None:
         )
     resolver = ResourceResolver(env={"AMENT_PREFIX_PATH": str(prefix)})
     world = '<sdf version="1.6"><world name="w"><include><uri>model://my_gazebo_world</uri></include></world></sdf>'
-    assert [m.name for m in load_string(world, resolver=resolver).value.models] == ["my_gazebo_world"]
+    assert [m.name for m in load_string(world, resolver=resolver).world.models] == ["my_gazebo_world"]
     assert resolver.find_package("passwd") is None  # an export outside its package is not followed
     assert prefix / "share" / "my_gazebo" / "models" in [p for p in resolver.search_paths()]
 

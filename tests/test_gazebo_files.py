@@ -24,7 +24,7 @@ def test_gazebo_extension_values_may_be_attributes() -> None:
         "</robot>"
     )
     result = load_string(urdf)
-    surface = result.value.links[0].collisions[0].surface
+    surface = result.model.links[0].collisions[0].surface
     assert (surface.mu, surface.mu2, surface.kp) == (0.3, 0.2, 1e6)
     assert result.diagnostics == ()
 
@@ -65,16 +65,16 @@ def test_comments_with_double_hyphens_are_accepted_with_a_warning(tmp_path: Path
         warnings = [d for d in result.diagnostics if "'--'" in d.message]
         assert [d.location.line for d in warnings] == [3]
     else:
-        assert result.value.links[0].name == "a"
+        assert result.model.links[0].name == "a"
 
 
 def test_the_root_element_tells_the_format_when_the_suffix_does_not(tmp_path: Path) -> None:
     f = tmp_path / "r2.urdf.xml"
     f.write_text('<robot name="r2"><link name="body"/></robot>')
-    assert load(f).value.name == "r2"
+    assert load(f).model.name == "r2"
     g = tmp_path / "world.xml"
     g.write_text('<sdf version="1.9"><world name="w"/></sdf>')
-    assert load(g).value.name == "w"
+    assert load(g).world.name == "w"
 
 
 def test_names_with_spaces_load_and_simulate() -> None:
@@ -152,7 +152,7 @@ def test_other_fuel_models_come_from_the_local_cache_or_are_named_in_a_warning(m
         '<sdf version="1.6"><model name="Construction Cone"><static>true</static><link name="link"/></model></sdf>'
     )
     monkeypatch.setenv("GZ_FUEL_CACHE_PATH", str(cache))
-    world = load_string(_fuel_world("OpenRobotics/models/Construction Cone")).value
+    world = load_string(_fuel_world("OpenRobotics/models/Construction Cone")).world
     assert [m.name for m in world.models] == ["Construction Cone"]
 
 

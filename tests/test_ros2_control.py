@@ -269,7 +269,7 @@ def test_r6bot_refuses_goals_it_cannot_run(r6bot):
 def test_panda_loads_with_its_moveit_controllers_yaml_and_its_arm_jtc_moves(monkeypatch):
     monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(PANDA))
     sim = Simulation(default_world(), rtf=0)
-    model = load(PANDA_XACRO).value
+    model = load(PANDA_XACRO).model
     # bolted to the world as MoveIt's virtual_joint says (its URDF alone is a free-standing arm that
     # topples, as in Gazebo without a world joint)
     bolt = Joint("virtual_joint", JointType.FIXED, "world", "panda_link0")

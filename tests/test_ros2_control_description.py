@@ -17,7 +17,7 @@ PANDA = REAL / "moveit_panda" / "_xacro_expanded" / "panda_moveit_config.urdf"
 
 
 def test_the_diffbot_block_keeps_its_hardware_and_interfaces():
-    model = load(DIFFBOT).value
+    model = load(DIFFBOT).model
     (rc,) = model.ros2_control
     assert (rc.name, rc.type, rc.hardware_plugin) == (
         "DiffBot",
@@ -38,7 +38,7 @@ def test_the_diffbot_block_keeps_its_hardware_and_interfaces():
 
 def test_r6bot_limits_and_initial_values_come_through_xacro(resource_path):
     resource_path("ros2_control_r6bot")
-    (rc,) = load(R6BOT).value.ros2_control
+    (rc,) = load(R6BOT).model.ros2_control
     assert [j.name for j in rc.joints] == [f"joint_{i}" for i in range(1, 7)]
     j1 = rc.joints[0]
     pos, vel = j1.command_interfaces
@@ -49,7 +49,7 @@ def test_r6bot_limits_and_initial_values_come_through_xacro(resource_path):
 
 
 def test_pandas_mock_hardware_is_a_simulated_system():
-    blocks = load(PANDA).value.ros2_control
+    blocks = load(PANDA).model.ros2_control
     assert [(rc.name, rc.hardware_plugin, rc.simulated) for rc in blocks] == [
         ("PandaFakeSystem", "mock_components/GenericSystem", True),
         ("PandaHandFakeSystem", "mock_components/GenericSystem", True),
@@ -74,7 +74,7 @@ def test_a_joint_the_robot_lacks_is_named_with_its_line_and_left_out():
     bad = [d for d in result.diagnostics if d.code is ErrorCode.CONTROL_JOINT_INVALID]
     assert len(bad) == 1 and bad[0].location is not None and bad[0].location.line == 8
     assert "joint 'nope' is not a joint of the robot (it has j)" in bad[0].message
-    (rc,) = result.value.ros2_control
+    (rc,) = result.model.ros2_control
     assert rc.simulated and [j.name for j in rc.joints] == ["j"]
 
 

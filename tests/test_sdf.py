@@ -124,7 +124,7 @@ def test_turtlebot3_burger_structure():
 
 @needs_real
 def test_turtlebot3_burger_sdf14_counts_and_sensor_plugins():
-    model = load(TB3 / "models/turtlebot3_burger/model-1_4.sdf", resolver=resolver(TB3 / "models")).value
+    model = load(TB3 / "models/turtlebot3_burger/model-1_4.sdf", resolver=resolver(TB3 / "models")).model
     assert (len(model.links), len(model.joints)) == (7, 6)
     assert [p.filename for p in model.link("base_scan").sensors[0].plugins] == ["libgazebo_ros_ray_sensor.so"]
     # SDF 1.4: the axis is in the model frame (libsdformat adds use_parent_model_frame);
@@ -152,17 +152,17 @@ def test_turtlebot3_world_includes_nested_model():
 @needs_real
 def test_gazebo_models_contents():
     res = resolver(GZM)
-    ground = load(GZM / "ground_plane/model.sdf", resolver=res).value
+    ground = load(GZM / "ground_plane/model.sdf", resolver=res).model
     assert ground.static and isinstance(ground.links[0].collisions[0].geometry, Plane)
     assert ground.links[0].collisions[0].surface.mu == 100 and ground.links[0].collisions[0].surface.mu2 == 50
     assert ground.links[0].visuals[0].material.name == "Gazebo/Grey"
-    table = load(GZM / "table/model.sdf", resolver=res).value
+    table = load(GZM / "table/model.sdf", resolver=res).model
     assert len(table.links[0].collisions) == 5
-    can = load(GZM / "coke_can/model.sdf", resolver=res).value
+    can = load(GZM / "coke_can/model.sdf", resolver=res).model
     mesh = can.links[0].collisions[0].geometry
     assert isinstance(mesh, Mesh) and mesh.path is not None and mesh.path.endswith("coke_can.dae")
     assert math.isclose(can.links[0].inertial.mass, 0.39) and close(can.links[0].inertial.pose.position, (0, 0, 0.06))
-    sun = load(GZM / "sun/model-1_2.sdf", resolver=res).value  # <gazebo version="1.2"> root
+    sun = load(GZM / "sun/model-1_2.sdf", resolver=res).world  # <gazebo version="1.2"> root
     assert isinstance(sun, World) and sun.lights[0].type == "directional" and sun.lights[0].cast_shadows
 
 
@@ -180,13 +180,13 @@ def test_model_config_picks_highest_supported_version(tmp_path):
     (folder / "future.sdf").write_text(f'<sdf version="1.12">{body.format("future")}</sdf>')
     world = '<sdf version="1.9"><world name="w"><include><uri>model://widget</uri></include></world></sdf>'
     result = load_string(world, format="sdf", resolver=resolver(tmp_path))
-    assert [m.name for m in result.value.models] == ["current"] and not result.diagnostics
+    assert [m.name for m in result.world.models] == ["current"] and not result.diagnostics
 
 
 @needs_real
 def test_world_include_overrides():
     result = load(DATA / "world_include.sdf", resolver=resolver(GZM))
-    world = result.value
+    world = result.world
     assert world.name == "kitchen" and world.gravity == (0, 0, -9.81)
     assert (
         world.physics.max_step_size_sec,
@@ -221,7 +221,7 @@ def test_world_include_overrides():
 # --------------------------------------------------------------------------- chess seed
 def test_chess_board():
     result = load(DATA / "chess_board.sdf", resolver=resolver())
-    board = result.value
+    board = result.model
     assert not result.diagnostics and board.static and board.name == "box"
     collision = board.links[0].collisions[0]
     assert isinstance(collision.geometry, Box) and collision.geometry.size == (0.5, 0.5, 0.02)
@@ -235,10 +235,10 @@ def test_chess_piece_nested_inertial_uses_intended_values():
         f"{DATA / 'chess_piece.sdf'}:7: warning: [INERTIAL_NESTED] link 'link': <inertial> nested inside "
         "<inertial>; using its values as the outer inertial's"
     )
-    inertial = result.value.links[0].inertial
+    inertial = result.model.links[0].inertial
     assert inertial.mass == 0.001 and not inertial.derived
     assert (inertial.ixx, inertial.iyy, inertial.izz, inertial.iyz) == (1.667e-7, 1.667e-8, 1.667e-7, 0.0)
-    assert result.value.links[0].collisions[0].surface.mu == 0.4
+    assert result.model.links[0].collisions[0].surface.mu == 0.4
 
 
 # --------------------------------------------------------------------------- quirks and semantics
@@ -252,13 +252,13 @@ def test_comment_before_xml_declaration_keeps_line_numbers():
 
 def test_comment_before_xml_declaration_loads():
     text = "<!-- c -->\n\n<?xml version='1.0' encoding='UTF-8'?>\n<sdf version='1.7'><model name='m'><link name='l'/></model></sdf>"
-    assert load_string(text, format="sdf", resolver=resolver()).value.name == "m"
+    assert load_string(text, format="sdf", resolver=resolver()).model.name == "m"
 
 
 def test_namespaced_tags_are_kept_in_plugin_config():
     result = load(DATA / "gz_namespaced.sdf", resolver=resolver())
     assert not result.diagnostics
-    config = result.value.plugins[0].config
+    config = result.model.plugins[0].config
     assert config.find("gz::system_priority").text == "-10"
     legacy = config.find("ignition:legacy")
     assert legacy.attr("ignition:flag") == "1" and legacy.location.line == 7
@@ -267,18 +267,18 @@ def test_namespaced_tags_are_kept_in_plugin_config():
 def test_sdf14_axis_is_in_model_frame():
     # child link yawed by 90°; the joint frame is the child frame; axis 1 0 0 is in the
     # model frame in SDF 1.4, i.e. -y of the joint frame
-    joint = load(DATA / "axis_sdf14.sdf", resolver=resolver()).value.joint("j")
+    joint = load(DATA / "axis_sdf14.sdf", resolver=resolver()).model.joint("j")
     assert close(joint.axis.xyz, (0, -1, 0))
     assert close(joint.origin.position, (0, 0, 1)) and close(joint.child_offset.position, (0, 0, 0))
 
 
 def test_sdf16_axis_is_in_joint_frame():
-    joint = load(DATA / "axis_sdf16.sdf", resolver=resolver()).value.joint("j")
+    joint = load(DATA / "axis_sdf16.sdf", resolver=resolver()).model.joint("j")
     assert close(joint.axis.xyz, (1, 0, 0))
 
 
 def test_relative_to_degrees_quaternion_and_expressed_in():
-    model = load(DATA / "relative_to_degrees.sdf", resolver=resolver()).value
+    model = load(DATA / "relative_to_degrees.sdf", resolver=resolver()).model
     arm = model.link("arm")
     # mount: x=1 yawed 90°; arm 0.5 above the mount
     assert close(arm.pose.position, (1, 0, 0.5)) and close(arm.pose.rpy, (0, 0, math.pi / 2))
@@ -301,7 +301,7 @@ def test_relative_to_degrees_quaternion_and_expressed_in():
 
 
 def test_nested_model_is_flattened_with_scoped_names():
-    model = load(DATA / "nested_model.sdf", resolver=resolver()).value
+    model = load(DATA / "nested_model.sdf", resolver=resolver()).model
     assert [lk.name for lk in model.links] == ["base", "gripper::palm", "gripper::finger"]
     assert close(model.pose.position, (0, 0, 0.1))
     assert close(model.link("gripper::palm").pose.position, (1, 0, 0.5))
@@ -330,7 +330,7 @@ def test_world_parent_and_shapes():
       <link name="nut"/>
       <joint name="s" type="screw"><parent>l</parent><child>nut</child><axis><xyz>0 0 1</xyz></axis>
         <screw_thread_pitch>0.01</screw_thread_pitch></joint></model></sdf>"""
-    model = load_string(text, format="sdf", resolver=resolver()).value
+    model = load_string(text, format="sdf", resolver=resolver()).model
     pin = model.joint("pin")
     assert pin.parent == "world" and close(pin.origin.position, (0, 0, 2))
     col = model.link("l").collisions[0]
@@ -354,7 +354,7 @@ def test_inertia_problems_are_warned_and_derived():
         ("INERTIA_MISSING", 18),
         ("INERTIA_INVALID", 26),
     ]
-    model = result.value
+    model = result.model
     box = model.link("not_pd").inertial
     assert box.derived and box.mass == 2 and math.isclose(box.ixx, 2 * (0.04 + 0.09) / 12)
     sphere = model.link("zero_mass").inertial
@@ -371,7 +371,7 @@ def test_mesh_not_found_warns_with_line():
         diag.format()
         == f"{DATA / 'mesh_missing.sdf'}:7: warning: [MESH_NOT_FOUND] mesh 'meshes/QQQmissing.stl' not found"
     )
-    mesh = result.value.links[0].visuals[0].geometry
+    mesh = result.model.links[0].visuals[0].geometry
     assert mesh.path is None and mesh.scale == (2, 2, 2)
 
 
@@ -382,7 +382,7 @@ def test_unsupported_elements_warn():
         for line in (4, 5, 7, 8, 9)  # line 6's <spherical_coordinates> is read
     ]
     assert "<gui> in <world>" in result.diagnostics[0].message
-    assert result.value.spherical_coordinates is not None
+    assert result.world.spherical_coordinates is not None
 
 
 def test_spherical_coordinates_are_read_for_gps_sensors():
@@ -396,7 +396,7 @@ def test_spherical_coordinates_are_read_for_gps_sensors():
     ).value
     sc = world.spherical_coordinates
     assert (sc.latitude_deg, sc.longitude_deg, sc.elevation, sc.heading_deg) == (-22.986687, -43.202501, 12.5, 15.0)
-    assert load_string('<sdf version="1.9"><world name="w"/></sdf>', format="sdf").value.spherical_coordinates is None
+    assert load_string('<sdf version="1.9"><world name="w"/></sdf>', format="sdf").world.spherical_coordinates is None
 
 
 def test_lone_light_is_a_world():

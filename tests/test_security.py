@@ -73,7 +73,7 @@ def test_the_power_bomb_in_a_string_is_answered_at_once() -> None:
 
 def test_a_plain_urdf_that_only_declares_the_xacro_namespace_loads() -> None:
     # xacro's own output keeps xmlns:xacro on <robot>: that is no markup and must still spawn
-    model = load_string(_robot("")).value
+    model = load_string(_robot("")).model
     assert model.name == "x"
 
 
@@ -113,7 +113,7 @@ def test_a_users_own_xacro_file_still_expands(tmp_path: Path) -> None:
             '</visual></link><joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint>'
         )
     )
-    model = load(f).value
+    model = load(f).model
     assert sorted(lk.name for lk in model.links) == ["a", "b"]
     assert model.link("b").visuals[0].geometry.size == (0.5, 1.0, 1.0)
     # ... unless the caller says the file came from a remote request (the viewer's spawn panel)
@@ -162,7 +162,7 @@ def _world(include_uri: str) -> str:
 
 def test_model_uris_do_not_follow_symlinks_out_of_the_resource_paths(roots) -> None:
     resolver, root, secret = roots
-    ok = load_string(_world("model://good"), resolver=resolver).value
+    ok = load_string(_world("model://good"), resolver=resolver).world
     assert [m.name for m in ok.models] == ["good"]
     for uri in ("model://evil", "model://linked_dir/secret.sdf", str(secret), f"file://{secret}"):
         with pytest.raises(ModelLoadError) as info:
@@ -191,7 +191,7 @@ def test_includes_in_a_users_world_file_are_confined_like_spawn_by_uri(roots, tm
     )
     # the folder of the user's own file may be read
     world.write_text('<sdf version="1.9"><world name="w"><include><uri>local.sdf</uri></include></world></sdf>')
-    assert [m.name for m in load(world, resolver=resolver).value.models] == ["local"]
+    assert [m.name for m in load(world, resolver=resolver).world.models] == ["local"]
 
 
 def test_a_spawn_string_reads_no_file_outside_the_resource_paths(roots) -> None:
@@ -201,7 +201,7 @@ def test_a_spawn_string_reads_no_file_outside_the_resource_paths(roots) -> None:
         '<collision><geometry><mesh filename="/etc/passwd"/></geometry></collision></link></robot>'
     )
     result = load_string(urdf, resolver=resolver)
-    link = result.value.links[0]
+    link = result.model.links[0]
     assert link.visuals[0].geometry.path is None
     messages = " ".join(d.message for d in result.diagnostics)
     assert "outside the folders files may be read from" in messages and "root:" not in messages

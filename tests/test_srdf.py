@@ -58,7 +58,7 @@ def test_real_srdf(rel, groups, states, effectors, disabled, warnings):
 
 @needs_real
 def test_panda_details_and_nested_passive_joint():
-    sem = load(REAL / "moveit_panda/moveit_resources_panda_moveit_config/config/panda.srdf").value
+    sem = load(REAL / "moveit_panda/moveit_resources_panda_moveit_config/config/panda.srdf").semantics
     assert sem.robot_name == "panda"
     arm, hand, both = sem.groups
     assert arm.chains == (Chain("panda_link0", "panda_link8"),)
@@ -86,7 +86,7 @@ def test_references_unknown_elements_and_multi_dof_values():
     ]
     assert result.value.passive_joints == ("finger_mimic", "caster")
     text = '<robot name="r"><group name="g"><joint name="base"/></group><group_state name="s" group="g"><joint name="base" value="1 2 0.5"/></group_state></robot>'
-    assert load_string(text, format="srdf").value.group_states[0].joint_values == (("base", (1.0, 2.0, 0.5)),)
+    assert load_string(text, format="srdf").semantics.group_states[0].joint_values == (("base", (1.0, 2.0, 0.5)),)
 
 
 INVALID = [

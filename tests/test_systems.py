@@ -26,7 +26,7 @@ TB3 = REAL / "turtlebot3"
 
 def seed_urdf(plugin_xml: str) -> str:
     """The seed robot's URDF with its classic diff drive replaced by ``plugin_xml`` (in a ``<gazebo>`` block)."""
-    urdf = load(SEED_XACRO).value.urdf
+    urdf = load(SEED_XACRO).model.urdf
     assert urdf
     out, n = re.subn(
         r"<gazebo>\s*<plugin[^>]*libgazebo_ros_diff_drive.*?</gazebo>",
@@ -40,7 +40,7 @@ def seed_urdf(plugin_xml: str) -> str:
 
 def seed_geometry() -> tuple[float, float]:
     """(wheel separation, wheel radius) of the seed robot, from its classic plugin block."""
-    urdf = load(SEED_XACRO).value.urdf
+    urdf = load(SEED_XACRO).model.urdf
     sep = float(re.search(r"<wheel_separation>([^<]+)<", urdf).group(1))
     diam = float(re.search(r"<wheel_diameter>([^<]+)<", urdf).group(1))
     return sep, diam / 2.0
@@ -288,7 +288,7 @@ def test_p3d_publishes_ground_truth_with_offsets() -> None:
         "<body_name>base_link</body_name><frame_name>world</frame_name><update_rate>50</update_rate>"
         "<xyz_offsets>1 2 3</xyz_offsets></plugin>"
     )
-    urdf = load(SEED_XACRO).value.urdf.replace("</robot>", f"<gazebo>{plugin}</gazebo></robot>")
+    urdf = load(SEED_XACRO).model.urdf.replace("</robot>", f"<gazebo>{plugin}</gazebo></robot>")
     sim, entity = spawn(urdf)
     p3d = system(entity, P3D)
     assert p3d.topic == "/gt/odom" and (p3d.frame_id, p3d.child_frame_id) == ("world", "base_link")
@@ -346,7 +346,7 @@ def test_a_system_that_raises_is_disabled_and_the_world_goes_on(caplog):
 def test_the_bus_fans_out_and_takes_injection() -> None:
     """Any number of listeners per publisher (a recorder and an echo beside the bridge), and anything
     can publish into the simulation as the ROS bridge does (the viewer's drive buttons, bag playback)."""
-    sim, entity = spawn(load(SEED_XACRO).value.urdf)
+    sim, entity = spawn(load(SEED_XACRO).model.urdf)
     odom = next(e for e in sim.bus.endpoints() if e.topic == "/odom" and e.is_publisher)
     first, second = [], []
     odom.add_sink(first.append)

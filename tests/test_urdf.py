@@ -146,7 +146,7 @@ def test_gazebo_extension_applied_to_link(features: LoadResult) -> None:
 
 def test_mesh_inertia_is_derived_from_an_stl(features: LoadResult) -> None:
     # in a robot with some mass, a massless link fixed to another merges into it (sdformat's reduction)
-    assert features.value.link("l_mesh").inertial is None
+    assert features.model.link("l_mesh").inertial is None
     # in a robot with no mass at all (Gazebo would model none of it), inertia comes from the collisions
     urdf = (DATA / "features.urdf").read_text()
     alone = '<robot name="m"><link name="l_mesh"><collision><geometry><mesh filename="file://meshes/cube.stl"/></geometry></collision></link></robot>'

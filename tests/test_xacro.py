@@ -125,7 +125,7 @@ def test_real_robot_loads_through_xacro(
 def test_ros2_control_location_points_into_included_file(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(REAL / "ros2_control_diffbot"))
     result = load(REAL / "ros2_control_diffbot/ros2_control_demo_example_2/urdf/diffbot.urdf.xacro")
-    (rc,) = result.value.ros2_control
+    (rc,) = result.model.ros2_control
     assert rc.location is not None and rc.location.line == 6
     assert str(rc.location.file).endswith("diffbot.ros2_control.xacro")
 

@@ -79,7 +79,7 @@ def spawn_file(path: Path, name: str, *extra: str) -> None:
 def urdf_links(path: Path) -> set[str]:
     from gazelle.description import load
 
-    return {lk.name for lk in load(path).value.links}
+    return {lk.name for lk in load(path).model.links}
 
 
 @pytest.mark.parametrize("case", list(CASES))
