@@ -27,7 +27,7 @@ from tf2_msgs.msg import TFMessage
 
 from ..description import Joint, JointType, Model, ModelLoadError, Pose, load_string
 from ._dds import announce_often
-from ._signals import await_signal_shutdown, spin_until_shutdown
+from ._signals import await_signal_shutdown, silence_half_made_objects, spin_until_shutdown
 
 
 def joint_motion(joint: Joint, q: float) -> Pose:
@@ -146,7 +146,7 @@ def spin_until_interrupted(node: Node) -> None:
     except RCLError:
         if node.context.ok():
             raise
-        sys.unraisablehook = lambda _unraisable: None  # the half-made executor's __del__ complains as it goes
+        silence_half_made_objects()  # the executor rclpy refused
     finally:
         if executor is not None:
             executor.shutdown()

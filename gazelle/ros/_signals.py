@@ -11,6 +11,7 @@ every guard condition; so after a signal, wait for that before shutting executor
 
 from __future__ import annotations
 
+import sys
 import time
 from typing import Any
 
@@ -38,6 +39,12 @@ def await_signal_shutdown(context: Context, timeout: float = SIGNAL_SHUTDOWN_WAI
             return False
         time.sleep(0.001)
     return True
+
+
+def silence_half_made_objects() -> None:
+    """The process ends after a signal that came while rclpy objects were being made (rclpy refused them on
+    the shut context): their ``__del__`` would print tracebacks as they go. Say nothing more."""
+    sys.unraisablehook = lambda _unraisable: None
 
 
 def spin_until_shutdown(executor: Any, node: Node) -> None:

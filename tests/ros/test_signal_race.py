@@ -82,8 +82,9 @@ def test_a_ctrl_c_before_the_spin_starts_ends_robot_state_publisher_quietly() ->
         import rclpy
         from gazelle.ros._rsp_node import spin_until_interrupted
 
-        # as a process started from a terminal: a child of pytest-xdist's workers starts with SIGINT ignored,
-        # and Python then installs no handler of its own (no KeyboardInterrupt, the loop below never ended)
+        # as a process started from a terminal: a suite started in the background (a shell's `&`) hands its
+        # children SIGINT ignored, and Python then installs no handler of its own (no KeyboardInterrupt: the
+        # loop below never ended)
         signal.signal(signal.SIGINT, signal.default_int_handler)
         rclpy.init()
         node = rclpy.create_node("signal_before_spin")

@@ -4,7 +4,6 @@ for ``spin_time`` seconds before answering)."""
 from __future__ import annotations
 
 import os
-import sys
 import threading
 import time
 from collections.abc import Callable, Iterator
@@ -42,9 +41,10 @@ def cli_node(name: str = "ros2cli") -> Iterator[Any]:
     except Exception as err:
         if not context.ok():
             # rclpy's signal handler shut the context down while the node or the executor was being made
-            # (CI: a SIGTERM inside SingleThreadedExecutor()); the half-made objects' __del__ would print
-            # tracebacks as they go: the verb ends in order and says nothing more
-            sys.unraisablehook = lambda _unraisable: None
+            # (CI: a SIGTERM inside SingleThreadedExecutor()): the verb ends in order and says nothing more
+            from ...ros._signals import silence_half_made_objects
+
+            silence_half_made_objects()
             raise ShutDown from err
         raise
     _EXECUTORS[id(node)] = executor
