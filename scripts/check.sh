@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Static checks, run by ./test.sh before the tests: ruff (lint + format) and pyright (basic) on gazelle/.
+# Static checks, run by ./test.sh before the tests: ruff (lint + format), pyright (basic) on gazelle/ and the layer rules.
 # MuJoCo ships no type stubs: pybind11-stubgen writes them to build/typings (pyright's stubPath) first.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -14,3 +14,5 @@ if [ ! -e "$stamp" ]; then
   touch "$stamp"
 fi
 "$PY/pyright" --warnings
+# The layer rules (one-way imports, public surfaces only) are static too: a private import once reached CI unseen
+"$PY/python" -m pytest -q -p no:cacheprovider tests/test_architecture.py

@@ -21,7 +21,7 @@ if TYPE_CHECKING:
     from ._definitions import full_text as message_definition
     from ._exposure import choose_discovery_range
     from ._planning_scene import pose as matrix_to_pose
-    from ._signals import await_signal_shutdown
+    from ._signals import await_signal_shutdown, silence_half_made_objects
     from ._spawn import main as spawn_main
     from ._spawner import spawner_main as spawner_main
     from ._spawner import unspawner_main as unspawner_main
@@ -36,6 +36,7 @@ _LAZY = {
     "choose_discovery_range": ("._exposure", "choose_discovery_range"),
     "matrix_to_pose": ("._planning_scene", "pose"),
     "await_signal_shutdown": ("._signals", "await_signal_shutdown"),
+    "silence_half_made_objects": ("._signals", "silence_half_made_objects"),
     "spawn_main": ("._spawn", "main"),
     "spawner_main": ("._spawner", "spawner_main"),
     "unspawner_main": ("._spawner", "unspawner_main"),
@@ -65,6 +66,7 @@ __all__ = [
     "announce_often",
     "arm_main",
     "await_signal_shutdown",
+    "silence_half_made_objects",
     "RosBridge",
     "serialized_joint_states",
     "message_class",

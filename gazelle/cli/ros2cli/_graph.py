@@ -42,7 +42,7 @@ def cli_node(name: str = "ros2cli") -> Iterator[Any]:
         if not context.ok():
             # rclpy's signal handler shut the context down while the node or the executor was being made
             # (CI: a SIGTERM inside SingleThreadedExecutor()): the verb ends in order and says nothing more
-            from ...ros._signals import silence_half_made_objects
+            from ...ros import silence_half_made_objects
 
             silence_half_made_objects()
             raise ShutDown from err
