@@ -15,12 +15,11 @@ from typing import IO
 _held: tuple[int, IO[str]] | None = None
 
 
-def reserved_domain_id() -> int:
-    """This process's domain id (reserved on first call)."""
-    global _held
-    if _held is not None:
-        return _held[0]
-    start = 10 + os.getpid() % 91
+_spare: list[tuple[int, IO[str]]] = []
+
+
+def _reserve(skip: int = 0) -> tuple[int, IO[str]]:
+    start = 10 + (os.getpid() + skip) % 91
     for k in range(91):
         domain = 10 + (start - 10 + k) % 91
         handle = open(f"/tmp/gazelle-ros-domain-{domain}.lock", "a+")
@@ -29,6 +28,23 @@ def reserved_domain_id() -> int:
         except OSError:
             handle.close()
             continue
-        _held = (domain, handle)
-        return domain
+        return domain, handle
     raise RuntimeError("no free ROS domain id in 10..100 (91 test runs at once?)")
+
+
+def reserved_domain_id() -> int:
+    """This process's domain id (reserved on first call)."""
+    global _held
+    if _held is None:
+        _held = _reserve()
+    return _held[0]
+
+
+def empty_domain_id() -> int:
+    """A second domain, reserved like the first for this process's lifetime, in which nothing of this
+    process runs: for a test that needs no server to answer (a fixed number such as 99 was once the
+    other xdist worker's reserved domain, whose server answered the spawn meant to time out)."""
+    reserved_domain_id()
+    if not _spare:
+        _spare.append(_reserve(skip=45))
+    return _spare[0][0]

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import os
 import time
 
 import pytest
+from _ros_domain import empty_domain_id
 from gazebo_msgs.srv import DeleteEntity, GetModelList, SpawnEntity
 from rosgraph_msgs.msg import Clock
 
@@ -106,7 +108,7 @@ def test_spawn_times_out_cleanly_without_a_server(tmp_path):
             "2",
         ],
         "gazelle spawn",
-        env={**__import__("os").environ, "ROS_DOMAIN_ID": "99"},
+        env={**os.environ, "ROS_DOMAIN_ID": str(empty_domain_id())},
     )
     assert proc.wait(30) == 1
     assert "unavailable" in proc.output
