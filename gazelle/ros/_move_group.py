@@ -45,12 +45,12 @@ from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import MultiThreadedExecutor, SingleThreadedExecutor
 from rclpy.parameter import Parameter
 from rclpy.utilities import try_shutdown
-from sensor_msgs.msg import JointState
 from std_msgs.msg import String
 
 from ..description import read_description_file
 from ..planning import ArmPlanner, PlanningError, moveit_joint_limits
 from ._dds import announce_often
+from ._joint_state_monitor import JointStateMonitor
 from ._move_group_base import (
     LATCHED,
     OBJECT_PADDING_PARAMETER,
@@ -79,7 +79,6 @@ class MoveGroupNode(_Execution):
         self._lock = threading.Lock()  # one planning request at a time
         self._ready = threading.Event()
         self.planner = None
-        self._latest_joints = {}
         self._warned_no_state = False  # from /joint_states; the planner takes it when it plans
         self._noted = set()  # the kinds of request parts gazelle does not honour, each said once
         self._texts = {}
@@ -88,7 +87,7 @@ class MoveGroupNode(_Execution):
         self.object_padding = self._object_padding()
         cb = ReentrantCallbackGroup()
         self._cb = cb
-        self.create_subscription(JointState, "joint_states", self._on_joint_states, 10, callback_group=cb)
+        self._joint_states = JointStateMonitor(self, "joint_states")
         self._take_descriptions()
         self._serve_interfaces()
         self._controllers = self._read_controllers()
@@ -183,6 +182,7 @@ class MoveGroupNode(_Execution):
         for client in self._trajectory_clients.values():
             client.destroy()
         self._execution_node.destroy_node()
+        self._joint_states.destroy()
         self._move.destroy()
         self._execute.destroy()
         super().destroy_node()
@@ -284,12 +284,6 @@ class MoveGroupNode(_Execution):
             )
             out.append(Controller(name, f"/{name}/{ns}".replace("//", "/"), tuple(joints or ())))
         return out
-
-    def _on_joint_states(self, msg: JointState) -> None:
-        if self.planner is None or not msg.name:
-            return
-        # no lock and no planner work here: at 100 Hz that starved planning of the GIL and the lock
-        self._latest_joints = {**self._latest_joints, **dict(zip(msg.name, msg.position))}
 
     # ------------------------------------------------------------------ plumbing
     def _guard(self, name: str, fn: Any) -> Any:

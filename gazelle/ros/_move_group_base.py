@@ -28,6 +28,7 @@ from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from trajectory_msgs.msg import JointTrajectoryPoint
 
 from ..planning import ArmPlanner, PlanningError, Trajectory
+from ._joint_state_monitor import JointStateMonitor
 
 _log = logging.getLogger("gazelle.move_group")
 
@@ -118,7 +119,8 @@ class _MoveGroupBase(Node):
     """One planning request at a time."""
     _ready: threading.Event
     planner: ArmPlanner | None
-    _latest_joints: dict[str, float]
+    _joint_states: JointStateMonitor
+    """The current state's source: /joint_states, taken without an executor (see its module)."""
     _warned_no_state: bool
     _noted: set[str]
     _texts: dict[str, str]
@@ -133,6 +135,11 @@ class _MoveGroupBase(Node):
     _execution_node: Node
     _execution_executor: SingleThreadedExecutor
     _execution_thread: threading.Thread
+
+    @property
+    def _latest_joints(self) -> dict[str, float]:
+        """Every joint's latest position heard on /joint_states (MoveIt's current state)."""
+        return self._joint_states.positions()
 
     def _on_execution_thread(self, fn: Any, timeout: float = 10.0) -> Any:
         """``fn()`` run on the thread that spins the execution node, which is where that node's clients and
