@@ -14,10 +14,11 @@ from __future__ import annotations
 
 import threading
 
-import rclpy
 from rclpy.node import Node
 from rclpy.qos import QoSProfile
 from sensor_msgs.msg import JointState
+
+from ._side_node import side_node
 
 
 class JointStateMonitor:
@@ -26,14 +27,7 @@ class JointStateMonitor:
 
     def __init__(self, owner: Node, topic: str = "joint_states", *, depth: int = 1000, poll_sec: float = 0.01):
         resolved = owner.resolve_topic_name(topic)
-        # global arguments left out: a `-r __node:=name` given to move_group would name this node the same
-        self._node = rclpy.create_node(
-            f"{owner.get_name()}_joint_state_monitor",
-            namespace=owner.get_namespace(),
-            context=owner.context,
-            use_global_arguments=False,
-            start_parameter_services=False,
-        )
+        self._node = side_node(owner, "joint_state_monitor")
         self._sub = self._node.create_subscription(JointState, resolved, _never_called, QoSProfile(depth=depth))
         self.topic = resolved
         self._lock = threading.Lock()

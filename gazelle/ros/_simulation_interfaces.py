@@ -49,7 +49,6 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-import rclpy
 import regex
 from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
 from rclpy.callback_groups import ReentrantCallbackGroup
@@ -100,6 +99,7 @@ from ..physics import WORLD_FRAMES, Entity, ErrorKind, WorldError, pose_out_of_r
 from ..sim import SpawnRequest
 from ._convert import from_pose_msg, to_pose_msg, to_time
 from ._replies import guarded_service, serve, with_warnings
+from ._side_node import side_node
 
 if TYPE_CHECKING:
     from ._bridge import SimulationNode
@@ -280,14 +280,7 @@ class _SteppingService:
 
     def __init__(self, node: SimulationNode, handler: Any) -> None:
         self.name = node.resolve_service_name("~/step_simulation")
-        # global arguments left out: a `-r __node:=name` would give this node the simulation node's name
-        self.node = rclpy.create_node(
-            f"{node.get_name()}_stepping",
-            namespace=node.get_namespace(),
-            context=node.context,
-            use_global_arguments=False,
-            start_parameter_services=False,
-        )
+        self.node = side_node(node, "stepping")
         self.service = serve(self.node, StepSimulation, self.name, handler, None)
         self.executor = SingleThreadedExecutor(context=node.context)
         self.executor.add_node(self.node)
