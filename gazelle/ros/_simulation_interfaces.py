@@ -40,10 +40,8 @@ Decisions (also what :func:`features` advertises, nothing more):
 
 from __future__ import annotations
 
-import logging
 import math
 import re
-import threading
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -52,8 +50,6 @@ from typing import TYPE_CHECKING, Any
 import regex
 from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
 from rclpy.callback_groups import ReentrantCallbackGroup
-from rclpy.exceptions import InvalidHandle
-from rclpy.executors import ExternalShutdownException, ShutdownException, SingleThreadedExecutor
 from simulation_interfaces.action import SimulateSteps
 from simulation_interfaces.msg import (
     EntityCategory,
@@ -99,7 +95,7 @@ from ..physics import WORLD_FRAMES, Entity, ErrorKind, WorldError, pose_out_of_r
 from ..sim import SpawnRequest
 from ._convert import from_pose_msg, to_pose_msg, to_time
 from ._replies import guarded_service, serve, with_warnings
-from ._side_node import side_node
+from ._stepping import SteppingService
 
 if TYPE_CHECKING:
     from ._bridge import SimulationNode
@@ -269,48 +265,6 @@ def _finite(*values: float) -> bool:
     return all(math.isfinite(v) for v in values)
 
 
-class _SteppingService:
-    """StepSimulation on a node and a single-threaded executor of its own, under the simulation node's name
-    (``~/step_simulation``).
-
-    A test in lockstep (gazelle.testing) steps 10 ms of sim time a call. On the simulation node, whose
-    MultiThreadedExecutor builds its wait set in Python from every service, subscription and plugin node
-    of the server each time it wakes, a call took ~7 ms; rclpy measured alone: 1.2 ms a call to a node
-    with one service, 5.4 ms with 50 services and 50 subscriptions beside it."""
-
-    def __init__(self, node: SimulationNode, handler: Any) -> None:
-        self.name = node.resolve_service_name("~/step_simulation")
-        self.node = side_node(node, "stepping")
-        self.service = serve(self.node, StepSimulation, self.name, handler, None)
-        self.executor = SingleThreadedExecutor(context=node.context)
-        self.executor.add_node(self.node)
-        self._stopping = threading.Event()
-        self._thread = threading.Thread(target=self._spin, name="step_simulation", daemon=True)
-        self._thread.start()
-
-    def _spin(self) -> None:
-        log = logging.getLogger("gazelle.ros")
-        while not self._stopping.is_set() and self.node.context.ok():
-            try:
-                self.executor.spin_once(timeout_sec=0.1)
-            except InvalidHandle:
-                continue  # destroyed while waited on: the next wait set is built without it
-            except (ShutdownException, ExternalShutdownException):
-                return
-            except Exception:  # the handler's own errors are replies (guarded_service): this is rclpy's
-                if self._stopping.is_set() or not self.node.context.ok():
-                    return
-                log.exception("the step_simulation executor failed; it goes on serving")
-
-    def destroy(self) -> None:
-        """Stop the executor, wait for its thread (it may hold the service in its wait set), then the node."""
-        self._stopping.set()
-        self.executor.shutdown(timeout_sec=2.0)
-        self._thread.join(timeout=2.0)
-        self.node.destroy_service(self.service)
-        self.node.destroy_node()
-
-
 class SimulationInterfaces:
     """The services and action, bound to one :class:`SimulationNode`."""
 
@@ -341,7 +295,7 @@ class SimulationInterfaces:
             (GetEntityInfo, "get_entity_info", self.get_entity_info),
         ):
             self.services.append(serve(node, srv_type, f"~/{name}", guarded_service(name, fn), self.cb))
-        self._stepping = _SteppingService(node, guarded_service("step_simulation", self.step_simulation))
+        self._stepping = SteppingService(node, guarded_service("step_simulation", self.step_simulation))
         self.action = ActionServer(
             node,
             SimulateSteps,
