@@ -1,6 +1,9 @@
 """The latest position of every joint heard on a JointState topic, read without an executor.
 
-MoveIt's CurrentStateMonitor merges every /joint_states message into the robot's current state. Here each
+MoveIt's CurrentStateMonitor merges every /joint_states message into the robot's current state, joint by
+joint by name (moveit2 moveit_ros/planning/planning_scene_monitor/src/current_state_monitor.cpp,
+``jointStateCallback``; it also drops a message whose name and position counts differ, with an error,
+where this merge pairs them up to the shorter: not matched yet). Here each
 message through rclpy's executor cost move_group more than the planning did: at 8x real time the
 simulation's joint_state_broadcaster sends 800 messages a second, and rclpy's MultiThreadedExecutor
 spent ~0.7 of a core building wait sets for them (py-spy: `_wait_for_ready_callbacks`, not the callback).
