@@ -2,8 +2,8 @@
 
 MoveIt's CurrentStateMonitor merges every /joint_states message into the robot's current state, joint by
 joint by name (moveit2 moveit_ros/planning/planning_scene_monitor/src/current_state_monitor.cpp,
-``jointStateCallback``; it also drops a message whose name and position counts differ, with an error,
-where this merge pairs them up to the shorter: not matched yet). Here each
+``jointStateCallback``), and drops a message whose name and position counts differ with an error
+logged at most once a second of steady time: so does this monitor, counting them in ``invalid``. Here each
 message through rclpy's executor cost move_group more than the planning did: at 8x real time the
 simulation's joint_state_broadcaster sends 800 messages a second, and rclpy's MultiThreadedExecutor
 spent ~0.7 of a core building wait sets for them (py-spy: `_wait_for_ready_callbacks`, not the callback).
@@ -17,6 +17,8 @@ from __future__ import annotations
 
 import threading
 
+from rclpy.clock import Clock
+from rclpy.clock_type import ClockType
 from rclpy.node import Node
 from rclpy.qos import QoSProfile
 from sensor_msgs.msg import JointState
@@ -33,7 +35,10 @@ class JointStateMonitor:
         self._node = side_node(owner, "joint_state_monitor")
         self._sub = self._node.create_subscription(JointState, resolved, _never_called, QoSProfile(depth=depth))
         self.topic = resolved
+        self._logger = owner.get_logger()
         self._lock = threading.Lock()
+        self.invalid = 0
+        """Messages dropped because their name and position counts differ."""
         self._positions: dict[str, float] = {}
         self._poll_sec = poll_sec
         self._stop = threading.Event()
@@ -57,12 +62,23 @@ class JointStateMonitor:
                     if taken is None:
                         break
                     msg = taken[0]
-                    if msg.name:
+                    if len(msg.name) != len(msg.position):
+                        self._drop_invalid(len(msg.name), len(msg.position))
+                    elif msg.name:
                         if merged is None:
                             merged = dict(self._positions)
                         merged.update(zip(msg.name, msg.position))
             if merged is not None:
                 self._positions = merged
+
+    def _drop_invalid(self, names: int, positions: int) -> None:
+        self.invalid += 1
+        self._logger.error(
+            f"State monitor received an invalid joint state on {self.topic} ({names} joint names, "
+            f"{positions} positions); dropped",
+            throttle_duration_sec=1.0,
+            throttle_time_source_type=_STEADY,
+        )
 
     def _poll(self) -> None:
         while not self._stop.wait(self._poll_sec):
@@ -79,6 +95,9 @@ class JointStateMonitor:
         self._thread.join(timeout=2.0)
         with self._lock:
             self._node.destroy_node()
+
+
+_STEADY = Clock(clock_type=ClockType.STEADY_TIME)
 
 
 def _never_called(_msg: JointState) -> None:

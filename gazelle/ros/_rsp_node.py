@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 import sys
 import time
+from typing import Any
 
 import rclpy
 from geometry_msgs.msg import TransformStamped
@@ -55,8 +56,9 @@ def _tf(stamp, parent: str, child: str, pose: Pose) -> TransformStamped:
 
 
 class RobotStatePublisherNode(Node):
-    def __init__(self) -> None:
-        super().__init__("robot_state_publisher")
+    def __init__(self, **node_kwargs: Any) -> None:
+        """``node_kwargs`` go to rclpy's Node (a context, parameter overrides: for a node made in-process)."""
+        super().__init__("robot_state_publisher", **node_kwargs)
         self.declare_parameter("robot_description", "")
         self.declare_parameter("publish_frequency", 20.0)
         self.declare_parameter("frame_prefix", "")
@@ -98,6 +100,17 @@ class RobotStatePublisherNode(Node):
         self.create_subscription(JointState, "joint_states", self._on_joint_states, 10)
 
     def _on_joint_states(self, msg: JointState) -> None:
+        # a message whose names and positions differ in count is ignored with a log line, before anything
+        # else (robot_state_publisher 3.3.3, Jazzy's: src/robot_state_publisher.cpp, callbackJointState)
+        if len(msg.name) != len(msg.position):
+            if not msg.position:
+                self.get_logger().warning(
+                    f'Robot state publisher ignored a JointState message about joint(s) "{next(iter(msg.name))}"(,...) '
+                    "whose position member was empty."
+                )
+            else:
+                self.get_logger().error("Robot state publisher ignored an invalid JointState message")
+            return
         now = time.monotonic()
         if now - self._last < self._period * 0.999:
             return
