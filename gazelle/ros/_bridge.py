@@ -35,8 +35,8 @@ from geometry_msgs.msg import Twist
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.context import Context
 from rclpy.event_handler import PublisherEventCallbacks, SubscriptionEventCallbacks
-from rclpy.exceptions import InvalidHandle, InvalidTopicNameException
-from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, ShutdownException
+from rclpy.exceptions import InvalidTopicNameException
+from rclpy.executors import MultiThreadedExecutor
 from rclpy.logging import get_logger
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
@@ -68,6 +68,7 @@ from ._names import gz_topic_on_ros
 from ._outbox import Lane, Outbox
 from ._plugin_nodes import PluginNodes
 from ._replies import guarded_service, serve, with_warnings
+from ._signals import spin_until_stopped
 from ._spawn import with_joint_state_publisher, with_robot_state_options
 
 RSP_WATCH_SEC = 30.0
@@ -914,38 +915,31 @@ class RosBridge:
         self.executor = MultiThreadedExecutor(num_threads=4, context=self.context)
         self.executor.add_node(self.node)
         self.node.attach_executor(self.executor)
-        self.failure: BaseException | None = None
-        """What ended the executor thread, if it died (the server then exits non-zero)."""
+        self._failure: BaseException | None = None
         self._stopping = threading.Event()
         self._thread = threading.Thread(target=self._spin, name="gazelle-ros", daemon=True)
         self._thread.start()
 
     @property
     def alive(self) -> bool:
-        """Whether the executor thread is serving (False after a crash or shutdown)."""
-        return self._thread.is_alive()
+        """Whether the executor threads are serving: the bridge's own and StepSimulation's (False after a
+        crash of either, or shutdown)."""
+        interfaces = self.node.simulation_interfaces
+        return self._thread.is_alive() and (interfaces is None or interfaces.stepping.alive)
+
+    @property
+    def failure(self) -> BaseException | None:
+        """What ended an executor thread, if one died (the server then exits non-zero)."""
+        interfaces = self.node.simulation_interfaces
+        return self._failure or (interfaces.stepping.failure if interfaces is not None else None)
 
     def _spin(self) -> None:
-        """Serve callbacks until shutdown. An entity destroyed while the executor built its wait set
-        (InvalidHandle) only costs that wait; anything else is logged with its traceback and kept in
-        :attr:`failure`, and the server's main loop then stops the process with a non-zero status."""
-        log = logging.getLogger("gazelle.ros")
-        invalid = 0
-        while not self._stopping.is_set() and self.context.ok():
-            try:
-                self.executor.spin_once(timeout_sec=0.1)
-            except InvalidHandle:
-                invalid += 1  # the next wait set is built without the destroyed entity
-                if invalid == 1:
-                    log.debug("an entity was destroyed while the executor waited on it; retrying")
-            except (ShutdownException, ExternalShutdownException):
-                return
-            except BaseException as err:
-                if self._stopping.is_set() or not self.context.ok():
-                    return
-                self.failure = err
-                log.critical("ROS executor thread crashed; the server stops", exc_info=err)
-                return
+        """Serve callbacks until shutdown (:func:`spin_until_stopped`); a crash is logged with its traceback
+        and kept in :attr:`failure`, and the server's main loop then stops the process with a non-zero status."""
+        err = spin_until_stopped(self.executor, self.context, self._stopping)
+        if err is not None:
+            self._failure = err
+            logging.getLogger("gazelle.ros").critical("ROS executor thread crashed; the server stops", exc_info=err)
 
     def shutdown(self) -> None:
         """Stop spinning, destroy the node and the bridge's own rclpy context."""

@@ -11,13 +11,16 @@ every guard condition; so after a signal, wait for that before shutting executor
 
 from __future__ import annotations
 
+import logging
 import sys
+import threading
 import time
 from typing import Any
 
 from rclpy._rclpy_pybind11 import RCLError
 from rclpy.context import Context
-from rclpy.executors import ExternalShutdownException
+from rclpy.exceptions import InvalidHandle
+from rclpy.executors import ExternalShutdownException, ShutdownException
 from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions, get_current_signal_handlers_options
 
@@ -60,3 +63,28 @@ def spin_until_shutdown(executor: Any, node: Node) -> None:
     except RCLError:
         if node.context.ok():
             raise
+
+
+def spin_until_stopped(executor: Any, context: Context, stopping: threading.Event) -> BaseException | None:
+    """Serve ``executor``'s callbacks on this thread until ``stopping`` is set or ``context`` shuts down;
+    the loop of the server's executor threads. An entity destroyed while the executor built its wait set
+    (InvalidHandle) only costs that wait. Anything else raised with the context up and ``stopping`` unset
+    ends the loop and is returned, with its traceback logged, for the owner to report (the server then
+    stops: never a half-deaf server); ``None`` after a normal stop."""
+    invalid = 0
+    while not stopping.is_set() and context.ok():
+        try:
+            executor.spin_once(timeout_sec=0.1)
+        except InvalidHandle:
+            invalid += 1  # the next wait set is built without the destroyed entity
+            if invalid == 1:
+                logging.getLogger("gazelle.ros").debug(
+                    "an entity was destroyed while the executor waited on it; retrying"
+                )
+        except (ShutdownException, ExternalShutdownException):
+            return None
+        except BaseException as err:
+            if stopping.is_set() or not context.ok():
+                return None
+            return err
+    return None

@@ -295,7 +295,7 @@ class SimulationInterfaces:
             (GetEntityInfo, "get_entity_info", self.get_entity_info),
         ):
             self.services.append(serve(node, srv_type, f"~/{name}", guarded_service(name, fn), self.cb))
-        self._stepping = SteppingService(node, guarded_service("step_simulation", self.step_simulation))
+        self.stepping = SteppingService(node, guarded_service("step_simulation", self.step_simulation))
         self.action = ActionServer(
             node,
             SimulateSteps,
@@ -311,7 +311,7 @@ class SimulationInterfaces:
         self.action.destroy()
         for s in self.services:
             self.node.destroy_service(s)
-        self._stepping.destroy()
+        self.stepping.destroy()
 
     # ------------------------------------------------------------------ features and state
     def get_simulator_features(self, req: Any, res: GetSimulatorFeatures.Response) -> Any:

@@ -7,13 +7,13 @@ import threading
 from collections.abc import Callable
 from typing import Any
 
-from rclpy.exceptions import InvalidHandle
-from rclpy.executors import ExternalShutdownException, ShutdownException, SingleThreadedExecutor
+from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from simulation_interfaces.srv import StepSimulation
 
 from ._replies import serve
 from ._side_node import side_node
+from ._signals import spin_until_stopped
 
 
 class SteppingService:
@@ -31,23 +31,24 @@ class SteppingService:
         self.service = serve(self.node, StepSimulation, self.name, handler, None)
         self.executor = SingleThreadedExecutor(context=node.context)
         self.executor.add_node(self.node)
+        self.failure: BaseException | None = None
+        """What ended the thread, if it died (the bridge then reports itself not alive)."""
         self._stopping = threading.Event()
         self._thread = threading.Thread(target=self._spin, name="step_simulation", daemon=True)
         self._thread.start()
 
+    @property
+    def alive(self) -> bool:
+        """Whether the thread serves StepSimulation (False after a crash or :meth:`destroy`)."""
+        return self._thread.is_alive()
+
     def _spin(self) -> None:
-        log = logging.getLogger("gazelle.ros")
-        while not self._stopping.is_set() and self.node.context.ok():
-            try:
-                self.executor.spin_once(timeout_sec=0.1)
-            except InvalidHandle:
-                continue  # destroyed while waited on: the next wait set is built without it
-            except (ShutdownException, ExternalShutdownException):
-                return
-            except Exception:  # the handler's own errors are replies (guarded_service): this is rclpy's
-                if self._stopping.is_set() or not self.node.context.ok():
-                    return
-                log.exception("the step_simulation executor failed; it goes on serving")
+        err = spin_until_stopped(self.executor, self.node.context, self._stopping)
+        if err is not None:  # the handler's own errors are replies (guarded_service): this is rclpy's
+            self.failure = err
+            logging.getLogger("gazelle.ros").critical(
+                "StepSimulation executor thread crashed; the server stops", exc_info=err
+            )
 
     def destroy(self) -> None:
         """Stop the executor, wait for its thread (it may hold the service in its wait set), then the node."""

@@ -131,6 +131,30 @@ def test_a_dead_ros_thread_is_reported_with_its_traceback(monkeypatch, caplog):
         bridge.shutdown()
 
 
+def test_a_dead_step_simulation_thread_makes_the_bridge_report_itself_dead(monkeypatch, caplog):
+    """StepSimulation has an executor thread of its own (ros/_stepping.py): its crash counts as the bridge's,
+    so the server exits instead of staying up without lockstep."""
+    from rclpy.executors import SingleThreadedExecutor
+
+    from gazelle.ros._bridge import RosBridge
+    from gazelle.sim import Simulation
+    from gazelle.worlds import default_world
+
+    def broken(self, timeout_sec=None):
+        raise RuntimeError("boom in the stepping executor")
+
+    monkeypatch.setattr(SingleThreadedExecutor, "spin_once", broken)
+    sim = Simulation(default_world())
+    bridge = RosBridge(sim)
+    try:
+        wait_for(lambda: not bridge.alive, 10, "the bridge to report the stepping thread dead")
+        assert isinstance(bridge.failure, RuntimeError)
+        assert "stepping" in str(bridge.failure)
+        assert any("StepSimulation executor thread crashed" in r.getMessage() and r.exc_info for r in caplog.records)
+    finally:
+        bridge.shutdown()
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("signum", ["SIGINT", "SIGTERM"])
 def test_a_signal_stops_a_busy_server_within_its_deadline(ros_client, signum):
