@@ -127,7 +127,7 @@ def test_a_wheel_on_a_fixed_joint_is_named_as_fixed(busy_sim: Simulation, caplog
         busy_sim.spawn(load_string(urdf).model, name="dd", pose=Pose((0.0, 3.0, 0.05)))
     text = "\n".join(r.getMessage() for r in caplog.records)
     assert "Joint [base_right_wheel_joint] is fixed" in text, text
-    from gazelle.physics._world import _no_joint_message
+    from gazelle.physics._entities import no_joint_message as _no_joint_message
 
     assert "is fixed" in _no_joint_message(busy_sim.world.entities["dd"], "base_right_wheel_joint")
     assert "movable joints: base_left_wheel_joint" in _no_joint_message(busy_sim.world.entities["dd"], "r")

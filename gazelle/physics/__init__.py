@@ -10,6 +10,16 @@ This package imports nothing from the systems, the runtime or ROS.
 from ._builder import SEP as SEP
 from ._builder import BuildError as BuildError
 from ._convex import prepare as prepare_meshes
+from ._entities import MAX_COORDINATE_M as MAX_COORDINATE_M
+from ._entities import WORLD_FRAMES as WORLD_FRAMES
+from ._entities import Entity as Entity
+from ._entities import EntityState as EntityState
+from ._entities import ErrorKind as ErrorKind
+from ._entities import PhysicsOverload as PhysicsOverload
+from ._entities import StagedRequest as StagedRequest
+from ._entities import WorldError as WorldError
+from ._entities import build_failed as build_failed
+from ._entities import pose_out_of_range as pose_out_of_range
 from ._handles import ActuatorGroup as ActuatorGroup
 from ._handles import ActuatorHandle as ActuatorHandle
 from ._handles import ActuatorKind as ActuatorKind
@@ -17,21 +27,11 @@ from ._handles import BodyHandle as BodyHandle
 from ._handles import JointGroup as JointGroup
 from ._handles import JointHandle as JointHandle
 from ._handles import PerGeneration as PerGeneration
+from ._queries import ContactPoint as ContactPoint
 from ._render import OffscreenRenderer as OffscreenRenderer
 from ._render import RenderError as RenderError
 from ._servo_plan import ServoPlan as ServoPlan
-from ._world import MAX_COORDINATE_M as MAX_COORDINATE_M
-from ._world import WORLD_FRAMES as WORLD_FRAMES
-from ._world import ContactPoint as ContactPoint
-from ._world import Entity as Entity
-from ._world import EntityState as EntityState
-from ._world import ErrorKind as ErrorKind
-from ._world import PhysicsOverload as PhysicsOverload
 from ._world import PhysicsWorld as PhysicsWorld
-from ._world import StagedRequest as StagedRequest
-from ._world import WorldError as WorldError
-from ._world import build_failed as build_failed
-from ._world import pose_out_of_range as pose_out_of_range
 
 __all__ = [
     "ContactPoint",

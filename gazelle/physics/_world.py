@@ -1,50 +1,57 @@
 """The simulated world: a MuJoCo model and data built from description objects.
 
-``PhysicsWorld`` is not thread-safe by itself; :class:`gazelle.physics.Simulation`
-owns one and serialises every access through its command queue.
+``PhysicsWorld`` is not thread-safe by itself; :class:`gazelle.sim.Simulation` owns one and serialises
+every access through its command queue. Its parts, each a layer of the class:
+
+* ``_queries.py`` (:class:`WorldQueries`): what it answers without changing anything: poses, rays, IMU,
+  the wrench through a joint, contacts;
+* ``_state.py`` (:class:`WorldState`): what writes the state outside the steps: set-state, resets, the
+  repair of a diverged state, checkpoints;
+* here: building (spawn in two steps, remove, actuators, contact tweaks) and stepping (blocks of steps,
+  servo plans, deep overlaps).
+
+The entities, the errors and the rules of a name and a pose are in ``_entities.py``.
 """
 
 from __future__ import annotations
 
-import enum
-import hashlib
 import logging
 import math
-import pickle
-import re
-from collections.abc import Callable, Container, Sequence
-from dataclasses import dataclass, field
+from collections.abc import Callable, Container
 from typing import Any
 
 import mujoco
 import numpy as np
 
-from ..description import Light, Model, Pose, World, excerpt, quat_conj, quat_rotate, rotation_matrix
+from ..description import Light, Model, Pose, World, rotation_matrix
 from ._builder import (
     JOINT_ARMATURE,
     SEP,
     SHARED_MESH,
-    BuildError,
-    BuiltEntity,
     add_model,
     add_visuals,
     friction_priority,
     scoped,
 )
 from ._convex import cache_dir
+from ._entities import (
+    Entity,
+    ErrorKind,
+    PhysicsOverload,
+    StagedRequest,
+    WorldError,
+    build_failed,
+    has_camera,
+)
+from ._entities import checked_placement as _checked_placement
+from ._entities import no_joint_message as _no_joint_message
 from ._handles import ActuatorGroup, ActuatorHandle, ActuatorKind, BodyHandle, JointGroup, JointHandle
+from ._queries import ONE_DOF_JOINTS
 from ._render import OffscreenRenderer
 from ._servo_plan import ServoPlan, run_plans
+from ._state import WorldState
 
 _log = logging.getLogger("gazelle.physics")
-MAX_COORDINATE_M = 1.0e5
-"""Farthest a spawn or set-state may place anything from the origin (100 km): beyond, float64
-positions lose the millimetres contacts need, and such a pose is a mistake or an attack."""
-
-WORLD_FRAMES = frozenset({"", "world", "/world", "map", "/map"})
-"""Frame names that mean the world frame in requests and plugin configuration (gazebo_ros accepts
-'' and world; map and the slashed spellings are what ROS users write)."""
-
 DEEP_PENETRATION_M = 0.01
 """A contact deeper than this is a start-up overlap (or a teleport), not a resting contact (~0.3 mm)."""
 MAX_CORRECTING_VEL = 0.5
@@ -58,198 +65,11 @@ MAX_CORRECTING_SPIN = 2.0
 """rad/s: the fastest such a body may spin while it is pushed out (uneven overlaps flipped it over)."""
 
 _ACTUATOR_SUFFIX = {ActuatorKind.POSITION: "pos", ActuatorKind.VELOCITY: "vel", ActuatorKind.EFFORT: "eff"}
-_ONE_DOF = (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
-ENTITY_NAME_RE = re.compile(r"^(?!\s)[^\x00-\x1f\x7f]{1,256}(?<!\s)$")
-"""Entity names as Gazebo takes them: any printable text up to 256 characters without leading or
-trailing white space ("Construction Cone" comes from every GUI-saved world); ``::`` is refused
-separately, as it separates an entity from its links."""
-NAME_RULE = "printable characters, at most 256, no leading or trailing space, no '::'"
-
-
-class ErrorKind(enum.StrEnum):
-    """Why a request on the world failed; the bridge maps each to the services' result codes."""
-
-    NAME_NOT_UNIQUE = "name_not_unique"
-    NAME_INVALID = "name_invalid"
-    NOT_FOUND = "not_found"
-    INVALID_POSE = "invalid_pose"
-    BUILD_FAILED = "build_failed"
-    INCORRECT_STATE = "incorrect_state"
-    DIVERGED = "diverged"
-    OVERLOAD = "overload"
-
-
-class WorldError(Exception):
-    """A request on the world failed; :attr:`kind` says how."""
-
-    def __init__(self, kind: ErrorKind, message: str):
-        super().__init__(message)
-        self.kind = kind
-
-
-class PhysicsOverload(WorldError):
-    """MuJoCo cannot step the world within its memory bounds (see :meth:`PhysicsWorld._guarded`)."""
-
-    def __init__(self, message: str):
-        super().__init__(ErrorKind.OVERLOAD, message)
-
-
 MAX_ARENA_BYTES = 1 << 30
 """The most MuJoCo arena (contacts, constraints, solver scratch) the world may grow to: 1 GiB."""
 
 
-def _checked_placement(name: str, X_WM: Pose, taken: Container[str]) -> Pose:
-    """``X_WM`` with a unit quaternion, once the name is free and valid and the pose usable.
-
-    Raises:
-        WorldError: a taken or invalid name, a non-finite, absurd or zero-quaternion pose.
-    """
-    if name in taken:
-        raise WorldError(ErrorKind.NAME_NOT_UNIQUE, f"entity '{name}' already exists")
-    if not name or SEP in name or not ENTITY_NAME_RE.match(name):
-        raise WorldError(ErrorKind.NAME_INVALID, f"invalid entity name {excerpt(name)}: use {NAME_RULE}")
-    if not all(math.isfinite(v) for v in (*X_WM.position, *X_WM.orientation)):
-        raise WorldError(ErrorKind.INVALID_POSE, f"pose of '{name}' is not finite: {X_WM}")
-    far = pose_out_of_range(X_WM, "position")
-    if far is not None:
-        raise WorldError(ErrorKind.INVALID_POSE, f"pose of '{name}': {far}")
-    qn = math.sqrt(sum(v * v for v in X_WM.orientation))
-    if qn < 1e-9:
-        raise WorldError(ErrorKind.INVALID_POSE, f"orientation of '{name}' is a zero quaternion")
-    w, x, y, z = X_WM.orientation
-    return Pose(X_WM.position, (w / qn, x / qn, y / qn, z / qn))
-
-
-def pose_out_of_range(pose: Pose, field_name: str) -> str | None:
-    """Why a pose is absurd (a coordinate beyond :data:`MAX_COORDINATE_M`), naming the field, or None."""
-    for axis, v in zip("xyz", pose.position):
-        if abs(v) > MAX_COORDINATE_M:
-            return f"{field_name}.{axis} = {v:g} m is out of range (at most {MAX_COORDINATE_M:g} m from the origin)"
-    return None
-
-
-_MASSLESS = re.compile(r"mass and inertia of moving bodies must be larger than mjMINVAL Element name '([^']*)'")
-"""MuJoCo's compile error for a moving body without mass; users get it in their own terms."""
-
-
-def build_failed(name: str, err: Exception) -> WorldError:
-    """The :class:`WorldError` (``BUILD_FAILED``) for an entity whose build (or a plugin's configure) raised."""
-    return WorldError(ErrorKind.BUILD_FAILED, f"cannot build '{name}': {_describe(err)}")
-
-
-def _describe(err: Exception) -> str:
-    """A one-line reason for a failed build: our own errors as they are, others with their type."""
-    if isinstance(err, (BuildError, WorldError)):
-        return str(err)
-    text = " ".join(str(err).split())
-    massless = _MASSLESS.search(text)
-    if massless is not None:
-        entity, _, link = massless.group(1).partition(SEP)
-        return (
-            f"link '{link}' moves (it has a joint, or is the free root) but neither it nor any link fixed to it has "
-            "mass or inertia; give it an <inertial> with mass > 0 (Gazebo would not model it)"
-        )
-    if isinstance(err, (ValueError, mujoco.FatalError)):
-        return text
-    return f"{type(err).__name__}: {text}" if text else type(err).__name__
-
-
-def _no_joint_message(entity: Entity, joint: str) -> str:
-    """Why ``joint`` cannot be actuated: missing, or fixed (and then no MuJoCo joint exists)."""
-    for j in entity.model.joints:
-        if j.name == joint:
-            return f"joint '{joint}' of entity '{entity.name}' is {j.type.value}: it has no degree of freedom to drive"
-    movable = sorted(j.name for j in entity.model.joints if j.type.value != "fixed")
-    return f"entity '{entity.name}' has no joint '{joint}' (movable joints: {', '.join(movable) or 'none'})"
-
-
-@dataclass
-class Entity:
-    """A model living in the world."""
-
-    name: str
-    model: Model
-    namespace: str
-    X_WM: Pose
-    """Where it was placed at spawn time."""
-    built: BuiltEntity
-    spawned: bool
-    """True if added at run time (removed by a SCOPE_SPAWNED reset)."""
-    generation_added: int = 0
-    systems: list[Any] = field(default_factory=list)
-    """What the runtime attached to this entity (its plugins' systems); physics never looks inside."""
-
-    @property
-    def static(self) -> bool:
-        """Whether the model is static (it never moves)."""
-        return self.model.static
-
-
-@dataclass(frozen=True, slots=True)
-class StagedRequest:
-    """One model to add in a batch (:meth:`PhysicsWorld.stage_many`)."""
-
-    model: Model
-    name: str
-    X_WM: Pose
-    """Where the model frame goes in the world."""
-    namespace: str = ""
-    spawned: bool = True
-
-
-@dataclass(frozen=True)
-class EntityState:
-    """Ground-truth state of an entity's model frame, in the world frame."""
-
-    pose: Pose
-    linear_velocity: tuple[float, float, float]
-    angular_velocity: tuple[float, float, float]
-
-
-RAY_GEOM_GROUPS = np.array([0, 0, 1, 1, 0, 0], dtype=np.uint8)
-"""Geom groups rays hit: the collision geoms (groups 2 and 3), as Gazebo's ``ray`` sensor sees collisions."""
-
-
-CAMERA_SENSOR_TYPES = frozenset({"camera", "depth", "depth_camera", "rgbd_camera", "rgbd", "multicamera"})
-
-
-def has_camera(model: Model) -> bool:
-    """Whether a model carries a camera: its visuals then go into the MuJoCo model, so it renders what users see."""
-    return any(s.type in CAMERA_SENSOR_TYPES for lk in model.links for s in lk.sensors)
-
-
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """a x b for 3-vectors (np.cross costs ~10 µs a call)."""
-    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
-
-
-@dataclass(frozen=True)
-class ContactPoint:
-    """One MuJoCo contact, seen from the side of ``collision1``: the force and torque that
-    ``collision2`` exerts on ``collision1`` (world frame, at the contact point), the normal pointing
-    from ``collision2`` into ``collision1``, and the penetration depth (positive when overlapping)."""
-
-    collision1: str
-    collision2: str
-    """Gazebo-style scoped names: ``model::link::collision``."""
-    position: tuple[float, float, float]
-    normal: tuple[float, float, float]
-    force: tuple[float, float, float]
-    torque: tuple[float, float, float]
-    depth: float
-
-
-def _vec3(v: Sequence[float] | np.ndarray) -> tuple[float, float, float]:
-    """Three floats of a MuJoCo vector, as a typed 3-tuple."""
-    return (float(v[0]), float(v[1]), float(v[2]))
-
-
-def _gazebo_collision_name(geom_name: str) -> str:
-    """``entity::link::collision#i`` (MuJoCo) -> ``entity::link::collision`` (Gazebo)."""
-    return geom_name.rsplit("#", 1)[0] if "#" in geom_name else geom_name
-
-
-class PhysicsWorld:
+class PhysicsWorld(WorldState):
     """MuJoCo model + data, with spawn and delete while running."""
 
     def __init__(self, world: World, *, timestep_sec: float | None = None, visual_geoms: bool = False):
@@ -598,74 +418,6 @@ class PhysicsWorld:
             self.model.actuator_gainprm[aid] = gain[:n_g]
             self.model.actuator_biasprm[aid] = bias[:n_b]
 
-    def state_digest(self) -> str:
-        """SHA-256 of the whole physics state (time, positions, velocities, actuator states, controls,
-        warm start: MuJoCo's ``mjSTATE_INTEGRATION``): equal digests, bit-identical worlds."""
-        spec = mujoco.mjtState.mjSTATE_INTEGRATION
-        state = np.empty(mujoco.mj_stateSize(self.model, spec))
-        mujoco.mj_getState(self.model, self.data, state, spec)
-        return hashlib.sha256(state.tobytes()).hexdigest()
-
-    def checkpoint_extras(self) -> dict[str, object]:
-        """Everything of the world a checkpoint keeps: MuJoCo's whole data (state, warm start, contacts,
-        every derived quantity) and model (parameters changed at run time), and the world's own run-time
-        state (see ``gazelle.sim`` checkpoints). Picklable."""
-        return {
-            "data": pickle.dumps(self.data, protocol=pickle.HIGHEST_PROTOCOL),
-            "overlap_steps": self._overlap_steps,
-            "deep": self._deep,
-            "kinematics_stale": self._kinematics_stale,
-            "actuator_gains": {k: (g.copy(), b.copy()) for k, (g, b) in self._actuator_gains.items()},
-            "model": self.model,
-        }
-
-    def restore_checkpoint_extras(self, extras: dict[str, Any]) -> None:
-        """Take back what :meth:`checkpoint_extras` gave, into a world rebuilt with the same entities:
-        the model's parameters as they were at the checkpoint (gains changed at run time, static bodies
-        moved), in the model and in its description (a later recompile keeps them)."""
-        saved: mujoco.MjModel = extras["model"]
-        for name in dir(saved):
-            if name.startswith("_"):
-                continue
-            value = getattr(saved, name, None)
-            if isinstance(value, np.ndarray):
-                live = getattr(self.model, name)
-                if isinstance(live, np.ndarray) and live.shape == value.shape and live.flags.writeable:
-                    live[...] = value
-        for struct in ("opt", "vis", "stat"):
-            src, dst = getattr(saved, struct), getattr(self.model, struct)
-            for field_name in dir(src):
-                if field_name.startswith("_"):
-                    continue
-                try:
-                    setattr(dst, field_name, getattr(src, field_name))
-                except (AttributeError, TypeError):
-                    pass  # read-only or a nested struct
-        data = pickle.loads(extras["data"])
-        mujoco.mj_copyData(self.data, self.model, data)
-        self._overlap_steps = int(extras["overlap_steps"])
-        self._deep = bool(extras["deep"])
-        self._kinematics_stale = bool(extras["kinematics_stale"])
-        self._actuator_gains = dict(extras["actuator_gains"])
-        n_g, n_b = self.model.actuator_gainprm.shape[1], self.model.actuator_biasprm.shape[1]
-        for aid in range(self.model.nu):
-            act = self.spec.actuator(mujoco.mj_id2name(self.model, mujoco.mjtObj.mjOBJ_ACTUATOR, aid))
-            if act is not None:
-                gain, bias = np.array(act.gainprm), np.array(act.biasprm)
-                gain[:n_g], bias[:n_b] = self.model.actuator_gainprm[aid], self.model.actuator_biasprm[aid]
-                act.gainprm, act.biasprm = gain, bias
-
-    def same_structure(self, extras: dict[str, Any]) -> bool:
-        """Whether the model in ``extras`` (:meth:`checkpoint_extras`) has this model's sizes and names:
-        the same world, its parameters aside (so its data can be copied in)."""
-        other = extras.get("model")
-        if not isinstance(other, mujoco.MjModel):
-            return False
-        sizes = [n for n in dir(other) if n.startswith("n") and isinstance(getattr(other, n, None), int)]
-        return all(getattr(other, n) == getattr(self.model, n) for n in sizes) and bytes(other.names) == bytes(
-            self.model.names
-        )
-
     def joint(self, entity: str, joint: str) -> JointHandle:
         """A handle on a 1-dof joint of an entity (by its description name; MuJoCo joint ``joint``).
 
@@ -749,7 +501,7 @@ class PhysicsWorld:
             for e in self.entities.values():
                 for mj in e.built.kinematic_joints:
                     jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, mj)
-                    if jid >= 0 and int(self.model.jnt_type[jid]) in _ONE_DOF:
+                    if jid >= 0 and int(self.model.jnt_type[jid]) in ONE_DOF_JOINTS:
                         qadr.append(int(self.model.jnt_qposadr[jid]))
                         dadr.append(int(self.model.jnt_dofadr[jid]))
             self._held = (np.array(qadr), np.array(dadr)) if qadr else None
@@ -948,400 +700,9 @@ class PhysicsWorld:
             castshadow=bool(light.cast_shadows),
         )
 
-    def joint_wrench(self, body_id: int, point: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(force, torque) that the parent exerts on body ``body_id`` through the joint above it, in the
-        world frame, the torque about ``point`` (world). From MuJoCo's ``cfrc_int`` (after
-        ``mj_rnePostConstraint``: derived fields only, the trajectory is unchanged), so gravity and
-        motion of the child's whole subtree are in it, as a force-torque sensor at the joint reads."""
-        self._refresh_kinematics()
-        m, d = self.model, self.data
-        mujoco.mj_rnePostConstraint(m, d)
-        bid = body_id
-        torque_c, force = np.array(d.cfrc_int[bid, :3]), np.array(d.cfrc_int[bid, 3:])
-        c = d.subtree_com[int(m.body_rootid[bid])]  # cfrc_int is about its tree's centre of mass
-        return force, torque_c + np.cross(c - point, force)
-
-    def collision_geoms(self, entity: str, link: str, collision: str | None = None) -> frozenset[int]:
-        """MuJoCo ids of a link's collision geoms (every convex part of a decomposed mesh), or of its
-        collision named ``collision`` (valid until the next recompile)."""
-        prefix = scoped(entity, f"{link}{SEP}{collision}#") if collision else scoped(entity, f"{link}{SEP}")
-        m = self.model
-        out = set()
-        for i in range(m.ngeom):
-            name = mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_GEOM, i) or ""
-            if name.startswith(prefix) and "#v" not in name[len(prefix) - 1 :]:
-                out.add(i)
-        return frozenset(out)
-
-    def contacts_of(self, geoms: frozenset[int]) -> list[ContactPoint]:
-        """The current contacts that involve any of ``geoms``, each seen from that geom's side."""
-        m, d = self.model, self.data
-        out: list[ContactPoint] = []
-        f6 = np.zeros(6)
-        for i in range(int(d.ncon)):
-            c = d.contact[i]
-            g1, g2 = int(c.geom1), int(c.geom2)
-            if g1 not in geoms and g2 not in geoms:
-                continue
-            mujoco.mj_contactForce(m, d, i, f6)
-            frame = np.asarray(c.frame, dtype=float).reshape(3, 3)  # rows: normal (geom1 -> geom2), tangents
-            force_w = frame.T @ f6[:3]  # MuJoCo: the force geom1 exerts on geom2, in the contact frame
-            torque_w = frame.T @ f6[3:]
-            mine, other, sign = (g1, g2, -1.0) if g1 in geoms else (g2, g1, 1.0)
-            normal = sign * frame[0]  # MuJoCo's normal points from geom1 to geom2: turned to point into mine
-            out.append(
-                ContactPoint(
-                    _gazebo_collision_name(mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_GEOM, mine) or str(mine)),
-                    _gazebo_collision_name(mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_GEOM, other) or str(other)),
-                    _vec3(c.pos),
-                    _vec3(normal),
-                    _vec3(sign * force_w),
-                    _vec3(sign * torque_w),
-                    float(-c.dist),
-                )
-            )
-        return out
-
     def offscreen_renderer(self, width: int, height: int) -> OffscreenRenderer:
         """A renderer of this world's images (create and use it on the simulation thread)."""
         return OffscreenRenderer(self, width, height)
-
-    def refresh_kinematics(self) -> None:
-        """Bring body poses up to the current state (cheap when already current); for renderers."""
-        self._refresh_kinematics()
-
-    def _refresh_kinematics(self) -> None:
-        """Bring body poses and velocities up to the current qpos/qvel (derived fields only:
-        the next mj_step recomputes them anyway, so trajectories are unchanged)."""
-        if self._kinematics_stale:
-            mujoco.mj_kinematics(self.model, self.data)
-            mujoco.mj_comPos(self.model, self.data)
-            mujoco.mj_comVel(self.model, self.data)
-            self._kinematics_stale = False
-
-    def recover_divergence(self) -> list[str] | None:
-        """Find a diverged state (NaN, inf or runaway velocity) and repair it.
-
-        Returns None when the state is sound (the usual case, ~0.6 µs); else the names of the
-        entities that diverged (``["<world>"]`` when none can be blamed), after putting each back
-        at its spawn pose, at rest, and zeroing every non-finite value.
-        """
-        d = self.data
-        cache = self._state_views
-        if cache[0] is not d:  # a recompile made a new MjData; `d.qpos` builds a new array object per access
-            cache = self._state_views = (d, d.qpos, d.qvel)
-        _, qpos, qvel = cache
-        # fast path: a NaN/inf makes these dot products non-finite (NaN < x is False),
-        # a |qvel| >= 1e4 makes the first >= 1e8
-        if qvel.dot(qvel) < 1e8 and math.isfinite(qpos.dot(qpos)):
-            return None
-        if np.all(np.isfinite(d.qpos)) and np.all(np.isfinite(d.qvel)) and np.all(np.abs(d.qvel) < 1e4):
-            return None
-        names = self.diverged_entities() or ["<world>"]
-        for name in names:
-            e = self.entities.get(name)
-            if e is None:
-                continue
-            d.qpos[~np.isfinite(d.qpos)] = 0.0
-            d.qvel[~np.isfinite(d.qvel)] = 0.0
-            if e.built.free_joint:
-                self.set_entity_state(name, self._spawn_root_pose(e))
-        d.qacc[:] = 0.0
-        d.qacc_warmstart[:] = 0.0
-        d.qvel[~np.isfinite(d.qvel)] = 0.0
-        mujoco.mj_forward(self.model, d)
-        return names
-
-    def diverged_entities(self) -> list[str]:
-        """Entities whose state holds NaN/inf or absurd velocities (|qvel| > 1e4)."""
-        nq = {int(mujoco.mjtJoint.mjJNT_FREE): (7, 6), int(mujoco.mjtJoint.mjJNT_BALL): (4, 3)}
-        bad: list[str] = []
-        for e in self.entities.values():
-            names = [mj for jn in e.built.joints.values() for mj in jn]
-            if e.built.free_joint:
-                names.append(e.built.free_joint)
-            for mj in names:
-                jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, mj)
-                if jid < 0:
-                    continue
-                a, v = self.model.jnt_qposadr[jid], self.model.jnt_dofadr[jid]
-                na, nv = nq.get(int(self.model.jnt_type[jid]), (1, 1))
-                qvel = np.abs(self.data.qvel[v : v + nv])
-                # written so that NaN fails the test (NaN <= x is False)
-                if not (np.all(np.isfinite(self.data.qpos[a : a + na])) and np.all(qvel <= 1e4)):
-                    bad.append(e.name)
-                    break
-        return sorted(set(bad))
-
-    # ------------------------------------------------------------------ queries
-    def body_id(self, entity: str, link: str | None = None) -> int:
-        """MuJoCo id of an entity's root body, or of one of its links' bodies (valid until the next recompile)."""
-        e = self.entities.get(entity)
-        if e is None:
-            raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' does not exist")
-        body = e.built.root_body if link is None else e.built.bodies.get(link)
-        if body is None:
-            raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' has no link '{link}'")
-        return mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_BODY, body)
-
-    def body_pose(self, body_id: int) -> Pose:
-        """World pose of a body by id (kinematics refreshed first if stale)."""
-        self._refresh_kinematics()
-        x, y, z = self.data.xpos[body_id].tolist()
-        w, qx, qy, qz = self.data.xquat[body_id].tolist()
-        return Pose((x, y, z), (w, qx, qy, qz))
-
-    def body_poses(self, body_ids: Sequence[int] | np.ndarray) -> np.ndarray:
-        """World poses of many bodies at once: an (n, 7) array of x, y, z, qw, qx, qy, qz (a copy)."""
-        self._refresh_kinematics()
-        ids = np.asarray(body_ids, dtype=int)
-        return np.concatenate((self.data.xpos[ids], self.data.xquat[ids]), axis=1)
-
-    def link_poses_along(
-        self, entity: str, link: str, joints: Sequence[str], positions: Sequence[Sequence[float]]
-    ) -> list[Pose]:
-        """World poses of an entity's ``link`` were its ``joints`` (1-dof, description names) at each row
-        of ``positions``, every other joint where it is now: forward kinematics on a scratch copy of the
-        state (a planned path drawn before the arm moves); the simulation is untouched.
-
-        Raises:
-            WorldError: (NOT_FOUND) no such entity, link or movable joint; (INVALID_POSE) a row whose
-                length is not the number of joints.
-        """
-        body = self.body_id(entity, link)
-        e = self.entities[entity]
-        addresses = []
-        for joint in joints:
-            mj = e.built.joints.get(joint)
-            if not mj:
-                raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' has no movable joint '{joint}'")
-            jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, mj[0])
-            if int(self.model.jnt_type[jid]) not in _ONE_DOF:
-                raise WorldError(ErrorKind.NOT_FOUND, f"joint '{joint}' of '{entity}' is not a 1-dof joint")
-            addresses.append(int(self.model.jnt_qposadr[jid]))
-        scratch = mujoco.MjData(self.model)
-        scratch.qpos[:] = self.data.qpos
-        poses = []
-        for row in positions:
-            if len(row) != len(addresses):
-                raise WorldError(ErrorKind.INVALID_POSE, f"{len(row)} positions for {len(addresses)} joints")
-            scratch.qpos[addresses] = row
-            mujoco.mj_kinematics(self.model, scratch)
-            x, y, z = scratch.xpos[body].tolist()
-            w, qx, qy, qz = scratch.xquat[body].tolist()
-            poses.append(Pose((x, y, z), (w, qx, qy, qz)))
-        return poses
-
-    def body_velocity(self, body_id: int) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
-        """World-frame linear velocity of the body origin and angular velocity."""
-        self._refresh_kinematics()
-        vel = np.zeros(6)
-        mujoco.mj_objectVelocity(self.model, self.data, mujoco.mjtObj.mjOBJ_BODY, body_id, vel, 0)
-        ang = vel[:3]
-        lin = vel[3:]
-        return (float(lin[0]), float(lin[1]), float(lin[2])), (float(ang[0]), float(ang[1]), float(ang[2]))
-
-    def cast_rays(
-        self, origin: np.ndarray, directions: np.ndarray, exclude_body: int, max_range: float
-    ) -> tuple[np.ndarray, np.ndarray]:
-        """Cast rays from ``origin`` along the unit ``directions`` (N×3, world frame) against collision
-        geoms (what Gazebo's ``ray`` sensor sees), ignoring the body ``exclude_body``, in one
-        ``mj_multiRay`` call. Returns (distances, geom ids): distance -1 and id -1 where nothing is hit
-        within ``max_range``."""
-        self._refresh_kinematics()
-        origin, directions = np.ascontiguousarray(origin, dtype=float), np.ascontiguousarray(directions, dtype=float)
-        return self._multi_ray(origin, directions, exclude_body, max_range)
-
-    def cast_rays_from(
-        self, body_id: int, offset: Pose, directions: np.ndarray, max_range: float
-    ) -> tuple[np.ndarray, np.ndarray]:
-        """:meth:`cast_rays` from a sensor at ``offset`` in body ``body_id``'s frame, with the unit
-        ``directions`` (N×3) in the sensor's frame, ignoring that body (a lidar's own housing). The
-        sensor's world pose is composed from MuJoCo's arrays (a lidar scans at its rate, often)."""
-        self._refresh_kinematics()
-        d = self.data
-        p_BS, R_BS, at_origin, unrotated = self._offset(offset)
-        R_WB = d.xmat[body_id].reshape(3, 3)
-        origin = d.xpos[body_id] if at_origin else d.xpos[body_id] + R_WB @ p_BS
-        R_WS = R_WB if unrotated else R_WB @ R_BS
-        return self._multi_ray(np.ascontiguousarray(origin), directions @ R_WS.T, body_id, max_range)
-
-    def _multi_ray(
-        self, origin: np.ndarray, directions: np.ndarray, exclude_body: int, max_range: float
-    ) -> tuple[np.ndarray, np.ndarray]:
-        n = len(directions)
-        dist = np.empty(n)
-        geom = np.empty(n, dtype=np.int32)
-        mujoco.mj_multiRay(
-            self.model,
-            self.data,
-            origin,
-            directions.reshape(-1),
-            RAY_GEOM_GROUPS,
-            True,
-            exclude_body,
-            geom,
-            dist,
-            None,
-            n,
-            max_range,
-        )
-        return dist, geom
-
-    def _offset(self, offset: Pose) -> tuple[np.ndarray, np.ndarray, bool, bool]:
-        """A sensor's pose in its body, cached as (position, rotation matrix, at the origin, unrotated)."""
-        cached = self._offsets.get(offset)
-        if cached is None:
-            p = np.asarray(offset.position, dtype=float)
-            R = rotation_matrix(offset.orientation)
-            cached = self._offsets[offset] = (p, R, not p.any(), offset.orientation == (1.0, 0.0, 0.0, 0.0))
-        return cached
-
-    def imu_reading(self, body_id: int, offset: Pose) -> list[float]:
-        """What an ideal IMU at ``offset`` (a pose in the body frame) reads now, as ten floats: its world
-        orientation (w, x, y, z), then its angular velocity and its proper linear acceleration, both in its
-        own frame. At rest the acceleration is +g upwards (0, 0, 9.81), as a real accelerometer reads:
-        MuJoCo's body accelerations (``mj_rnePostConstraint``) start from the gravity as a base
-        acceleration. Only derived fields are computed, so the trajectory is unchanged.
-
-        Called at an IMU's rate, thousands of times a wall second when the world runs faster than real
-        time: a sensor at the body's origin and unrotated in it (the usual case) costs three MuJoCo calls
-        (after the kinematics are brought up to date) and one 2x3 by 3x3 product."""
-        self._refresh_kinematics()
-        m, d = self.model, self.data
-        mujoco.mj_rnePostConstraint(m, d)
-        acc, vel, wa = self._imu_acc, self._imu_vel, self._imu_wa
-        mujoco.mj_objectAcceleration(m, d, mujoco.mjtObj.mjOBJ_XBODY, body_id, acc, 0)
-        mujoco.mj_objectVelocity(m, d, mujoco.mjtObj.mjOBJ_XBODY, body_id, vel, 0)
-        p_BS, R_BS, at_origin, unrotated = self._offset(offset)
-        R_WB = d.xmat[body_id].reshape(3, 3)
-        wa[0] = vel[:3]
-        if at_origin:
-            wa[1] = acc[3:]
-        else:  # a sensor off the body origin also feels alpha x r and the centripetal w x (w x r)
-            r = R_WB @ p_BS
-            w = vel[:3]
-            wa[1] = acc[3:] + _cross(acc[:3], r) + _cross(w, _cross(w, r))
-        if unrotated:
-            R_WS = R_WB
-            q = d.xquat[body_id].tolist()
-        else:
-            R_WS, q4 = self._imu_R, self._imu_quat
-            mujoco.mju_mulMatMat(R_WS, R_WB, R_BS)
-            mujoco.mju_mat2Quat(q4, R_WS.reshape(-1))
-            q = q4.tolist()
-        # the rows of wa @ R_WS are (R_WS^T w)^T and (R_WS^T a)^T: both vectors in the sensor's frame
-        return q + (wa @ R_WS).ravel().tolist()
-
-    def frame_pose(self, frame: str) -> Pose:
-        """World pose of a frame named in a request: a :data:`WORLD_FRAMES` name, an entity (its model
-        frame), or ``entity::link``.
-
-        Raises:
-            WorldError: (NOT_FOUND) no such entity or link.
-        """
-        if frame in WORLD_FRAMES:
-            return Pose()
-        entity, _, link = frame.partition(SEP)
-        return self.entity_state(entity, link or None).pose
-
-    def entity_state(self, entity: str, link: str | None = None) -> EntityState:
-        """World pose and twist of an entity's model frame (its root link), or of one of its links."""
-        bid = self.body_id(entity, link)
-        lin, ang = self.body_velocity(bid)
-        return EntityState(self.body_pose(bid), lin, ang)
-
-    def set_entity_state(
-        self,
-        entity: str,
-        pose: Pose,
-        linear: tuple[float, float, float] = (0.0, 0.0, 0.0),
-        angular: tuple[float, float, float] = (0.0, 0.0, 0.0),
-    ) -> None:
-        """Teleport an entity's free root and set its twist (world frame)."""
-        e = self.entities.get(entity)
-        if e is None:
-            raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' does not exist")
-        vals = (*pose.position, *pose.orientation, *linear, *angular)
-        if not all(math.isfinite(v) for v in vals):
-            raise WorldError(ErrorKind.INVALID_POSE, f"state for '{entity}' is not finite")
-        far = pose_out_of_range(pose, "pose.position")
-        if far is not None:
-            raise WorldError(ErrorKind.INVALID_POSE, f"state for '{entity}': {far}")
-        qn = math.sqrt(sum(v * v for v in pose.orientation))
-        if qn < 1e-9:
-            raise WorldError(ErrorKind.INVALID_POSE, "orientation is a zero quaternion")
-        if e.built.free_joint is None:
-            if any(linear) or any(angular):
-                raise WorldError(ErrorKind.INCORRECT_STATE, f"entity '{entity}' is static; it cannot have a twist")
-            bid = self.body_id(entity)
-            self.model.body_pos[bid] = pose.position
-            self.model.body_quat[bid] = [v / qn for v in pose.orientation]
-            self._forward()
-            return
-        jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, e.built.free_joint)
-        a, v = self.model.jnt_qposadr[jid], self.model.jnt_dofadr[jid]
-        self.data.qpos[a : a + 3] = pose.position
-        w, x, y, z = pose.orientation
-        q = (w / qn, x / qn, y / qn, z / qn)
-        self.data.qpos[a + 3 : a + 7] = q
-        self.data.qvel[v : v + 3] = linear
-        # free joint angular velocity is in the body frame
-        self.data.qvel[v + 3 : v + 6] = quat_rotate(quat_conj(q), angular)
-        self._watch_overlaps()
-        self._forward()
-
-    def joint_address(self, entity: str, mj_joint: str) -> tuple[int, int]:
-        """(qposadr, dofadr) of a MuJoCo joint of an entity."""
-        jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, scoped(entity, mj_joint))
-        if jid < 0:
-            raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' has no joint '{mj_joint}'")
-        return int(self.model.jnt_qposadr[jid]), int(self.model.jnt_dofadr[jid])
-
-    def set_joint_state(
-        self, entity: str, joint: str, position: float | None = None, velocity: float | None = None
-    ) -> None:
-        """Set the position and/or velocity of a 1-dof (hinge or slide) joint of an entity, by its
-        description name; the way to move a kinematic joint, which no force moves."""
-        e = self.entities.get(entity)
-        if e is None:
-            raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' does not exist")
-        mj = e.built.joints.get(joint)
-        if not mj:
-            raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' has no movable joint '{joint}'")
-        if any(v is not None and not math.isfinite(v) for v in (position, velocity)):
-            raise WorldError(ErrorKind.INVALID_POSE, f"state for joint '{joint}' of '{entity}' is not finite")
-        jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, mj[0])
-        if int(self.model.jnt_type[jid]) not in _ONE_DOF:
-            raise WorldError(ErrorKind.INCORRECT_STATE, f"joint '{joint}' of '{entity}' is not a 1-dof joint")
-        if position is not None:
-            self.data.qpos[self.model.jnt_qposadr[jid]] = position
-        if velocity is not None:
-            self.data.qvel[self.model.jnt_dofadr[jid]] = velocity
-        self._forward()
-        self._kinematics_stale = False
-
-    def actuator_id(self, name: str) -> int:
-        """MuJoCo id of an actuator by its name (-1 when absent)."""
-        return mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_ACTUATOR, name)
-
-    def reset_time(self) -> None:
-        """Set sim time to zero (the state is kept)."""
-        self.data.time = 0.0
-
-    def reset_state(self) -> None:
-        """Put every entity back where it was spawned, at rest."""
-        mujoco.mj_resetData(self.model, self.data)
-        for e in self.entities.values():
-            if e.built.free_joint:
-                self.set_entity_state(e.name, self._spawn_root_pose(e))
-        self._watch_overlaps()
-        self._forward()
-
-    def _spawn_root_pose(self, e: Entity) -> Pose:
-        root = e.model.root_link
-        link = e.model.link(root)
-        return e.X_WM * (link.pose or Pose())
 
     def stage_many(self, items: list[StagedRequest]) -> list[Entity | WorldError]:
         """:meth:`stage` several models; each that fails its own checks gets its error in its slot."""
