@@ -8,7 +8,8 @@ from typing import Any
 
 import numpy as np
 
-from gazelle.viewer._viewer import CAMERA_FOV_RAD, CAMERA_LOOK_AT, CAMERA_POSITION, PLAN_RGB, TRAIL_RGB
+from gazelle.viewer._overlays import PLAN_RGB, TRAIL_RGB
+from gazelle.viewer._viewer import CAMERA_FOV_RAD, CAMERA_LOOK_AT, CAMERA_POSITION
 
 
 def project(

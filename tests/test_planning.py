@@ -409,7 +409,7 @@ def test_a_group_of_groups_plans_both_arms_at_once_and_the_viewer_draws_both_too
     from gazelle.description import load_string
     from gazelle.description import read_description_file as _read_description
     from gazelle.planning import ArmPlanner
-    from gazelle.viewer._viewer import plan_tips
+    from gazelle.viewer._overlays import plan_tips
 
     srdf = (PANDA / "dual_arm_panda_moveit_config" / "config" / "panda.srdf").read_text()
     both = '<group name="arms"><group name="left_panda_arm"/><group name="right_panda_arm"/></group>'

@@ -138,7 +138,7 @@ def _click(handle) -> None:
 def test_clicking_an_entity_selects_it_but_not_the_ground_plane_or_collision_overlays() -> None:
     from gazelle.sim import Simulation
     from gazelle.viewer import Viewer
-    from gazelle.viewer._viewer import NO_SELECTION
+    from gazelle.viewer._overlays import NO_SELECTION
     from gazelle.worlds import default_world
 
     here = REPO / "examples" / "chessboard"
@@ -263,7 +263,7 @@ def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_
     from gazelle.description import load_string
     from gazelle.sim import Simulation
     from gazelle.viewer import Viewer
-    from gazelle.viewer._viewer import TRAIL_TRUTH
+    from gazelle.viewer._overlays import TRAIL_TRUTH
     from gazelle.worlds import default_world
 
     urdf = xacro.process_file(str(SEED_XACRO)).toxml()
@@ -404,7 +404,7 @@ def test_a_planned_arm_motion_is_drawn_as_its_tools_path_and_goal_and_the_arm_do
     from gazelle.sim import Simulation
     from gazelle.systems import DisplayTrajectory, JointTrajectory, MsgType, TrajectoryPoint
     from gazelle.viewer import Viewer
-    from gazelle.viewer._viewer import PLAN_TOPIC
+    from gazelle.viewer._overlays import PLAN_TOPIC
     from gazelle.worlds import default_world
 
     sim = Simulation(default_world(), rtf=0.0)
