@@ -1,7 +1,8 @@
 """The ROS 2 side of a running simulation: /clock, services, and every system's topics.
 
 The node is called ``gazelle``. The classic gazebo_ros services live at the root
-(``/spawn_entity``, ``/delete_entity``, ...) as gazebo_ros had them.
+(``/spawn_entity``, ``/delete_entity``, ...) as gazebo_ros had them (``_gazebo_services.py``, a layer of
+the node, with spawning from XML); simulation_interfaces' under ``~/`` (``_simulation_interfaces.py``).
 Service callbacks run on a multi-threaded executor and hand the world work to
 the simulation thread (:meth:`Simulation.call`), so a request never races a
 physics step and a slow request never blocks the others.
@@ -9,7 +10,6 @@ physics step and a slow request never blocks the others.
 
 from __future__ import annotations
 
-import enum
 import functools
 import logging
 import math
@@ -22,15 +22,6 @@ from typing import Any
 
 import rclpy
 from gazebo_msgs.msg import ModelStates
-from gazebo_msgs.srv import DeleteEntity as GzDeleteEntity
-from gazebo_msgs.srv import DeleteModel as GzDeleteModel
-from gazebo_msgs.srv import GetEntityState as GzGetEntityState
-from gazebo_msgs.srv import GetModelList as GzGetModelList
-from gazebo_msgs.srv import GetModelState as GzGetModelState
-from gazebo_msgs.srv import SetEntityState as GzSetEntityState
-from gazebo_msgs.srv import SetModelState as GzSetModelState
-from gazebo_msgs.srv import SpawnEntity as GzSpawnEntity
-from gazebo_msgs.srv import SpawnModel as GzSpawnModel
 from geometry_msgs.msg import Twist
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.context import Context
@@ -42,53 +33,28 @@ from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 from rclpy.validate_full_topic_name import validate_full_topic_name
 from rosgraph_msgs.msg import Clock
-from std_srvs.srv import Empty
 
-from ..description import Model, ModelLoadError, Pose, World, load_string, quat_conj, quat_rotate, reply_text
-from ..physics import WORLD_FRAMES, EntityState, ErrorKind, WorldError, pose_out_of_range
+from ..physics import EntityState, WorldError
 from ..sim import Simulation
 from ..systems import (
-    RSP_PLUGIN,
     Endpoint,
-    JointStatePublisher,
     JointStatesBlock,
     MsgType,
     PayloadBlock,
     PluginNode,
     Qos,
-    RobotStatePublisher,
     Transform,
     TransformBatch,
     UpdateInfo,
 )
 from ._cdr import raw_serializer, serialize_clock, serialized_joint_states
-from ._convert import FROM_ROS, from_pose_msg, ros_type, to_pose_msg, to_ros, to_time
+from ._convert import FROM_ROS, ros_type, to_pose_msg, to_ros, to_time
 from ._exposure import ServerRegistry
+from ._gazebo_services import GazeboServices
 from ._names import gz_topic_on_ros
 from ._outbox import Lane, Outbox
 from ._plugin_nodes import PluginNodes
-from ._replies import guarded_service, serve, with_warnings
 from ._signals import spin_until_stopped
-from ._spawn import with_joint_state_publisher, with_robot_state_options
-
-RSP_WATCH_SEC = 30.0
-"""How long after a spawn the user's robot_state_publisher may still appear and take the robot's TF over."""
-
-
-class SpawnFailure(enum.StrEnum):
-    """Why a spawn request was refused before it reached the world."""
-
-    PARSE = "parse"
-    NO_MODEL = "no_model"
-    FRAME = "frame"
-
-
-class SpawnFailed(Exception):
-    """A spawn request was refused; ``kind`` says why (maps to result codes)."""
-
-    def __init__(self, kind: SpawnFailure, message: str):
-        super().__init__(message)
-        self.kind = kind
 
 
 def qos_profile(qos: Qos, depth: int) -> QoSProfile:
@@ -207,7 +173,7 @@ class _RosEndpoint:
     """/tf_static: the one lane of the union of every robot's static transforms."""
 
 
-class SimulationNode(Node):
+class SimulationNode(GazeboServices):
     """The simulation's ROS 2 node."""
 
     simulation_interfaces: Any = None
@@ -298,29 +264,6 @@ class SimulationNode(Node):
         self._model_states_period = 1.0 / MODEL_STATES_RATE_HZ
         self._last_model_states_wall = -math.inf
         self.sim.add_step_listener(self._on_step_model_states, MODEL_STATES_RATE_HZ)
-
-    def _serve_gazebo_services(self) -> list[Any]:
-        """gazebo_ros's services (ROS 2 names, and ROS 1's that the seed's chessboard spawner calls)."""
-        served = []
-        for srv_type, name, cb in (
-            (GzSpawnEntity, "/spawn_entity", self._gz_spawn),
-            (GzDeleteEntity, "/delete_entity", self._gz_delete),
-            (GzGetEntityState, "/get_entity_state", self._gz_get_state),
-            (GzSetEntityState, "/set_entity_state", self._gz_set_state),
-            (GzGetModelList, "/get_model_list", self._gz_model_list),
-            (Empty, "/pause_physics", self._pause),
-            (Empty, "/unpause_physics", self._unpause),
-            (Empty, "/reset_simulation", self._reset_simulation),
-            (Empty, "/reset_world", self._reset_world),
-            # ROS 1 gazebo_ros's names (the seed's chessboard spawner calls /gazebo/spawn_sdf_model)
-            (GzSpawnModel, "/gazebo/spawn_sdf_model", self._ros1_spawn),
-            (GzSpawnModel, "/gazebo/spawn_urdf_model", self._ros1_spawn),
-            (GzDeleteModel, "/gazebo/delete_model", self._ros1_delete),
-            (GzGetModelState, "/gazebo/get_model_state", self._ros1_get_state),
-            (GzSetModelState, "/gazebo/set_model_state", self._ros1_set_state),
-        ):
-            served.append(serve(self, srv_type, name, guarded_service(name, cb), self._cb))
-        return served
 
     # ------------------------------------------------------------------ clock
 
@@ -583,281 +526,6 @@ class SimulationNode(Node):
             entry.node.destroy_publisher(entry.handle)
         if ep.node:
             self.plugin_nodes.release(ep.node)
-
-    # ------------------------------------------------------------------ spawning
-    def resolve_frame(self, frame: str) -> Pose:
-        """World pose of a reference frame: '' / world / map, an entity, or ``entity::link``."""
-        if frame in WORLD_FRAMES:
-            return Pose()
-        try:
-            return self.sim.call(lambda: self.sim.world.frame_pose(frame))
-        except WorldError:
-            raise SpawnFailed(
-                SpawnFailure.FRAME, f"reference_frame '{frame}' not found: no such entity or link"
-            ) from None
-
-    def spawn_xml(
-        self, xml: str, *, name: str, namespace: str, pose: Pose, reference_frame: str, source: str
-    ) -> tuple[str, list[str]]:
-        """Parse and spawn; returns the entity name and the description's warnings.
-
-        Raises:
-            SpawnFailed: the XML is bad or holds no model, or the frame is unknown.
-            WorldError: the world refused (duplicate name, NaN pose, build failure).
-        """
-        for v in (*pose.position, *pose.orientation):
-            if not math.isfinite(v):
-                raise WorldError(ErrorKind.INVALID_POSE, f"initial_pose is not finite: {pose}")
-        far = pose_out_of_range(pose, "initial_pose.position")
-        if far is not None:
-            raise WorldError(ErrorKind.INVALID_POSE, far)
-        auto = RSP_PLUGIN not in xml
-        xml = self._leave_tf_to_a_running_publisher(xml, namespace)
-        watch = auto and RSP_PLUGIN not in xml  # gazelle publishes its TF: unless the user's shows up soon
-        try:
-            result = load_string(xml, source=source)
-        except ModelLoadError as err:
-            raise SpawnFailed(SpawnFailure.PARSE, err.summary()) from None
-        value = result.value
-        model: Model | None
-        if isinstance(value, Model):
-            model = value
-        elif isinstance(value, World) and value.models:
-            model = value.models[0]
-        else:
-            raise SpawnFailed(SpawnFailure.NO_MODEL, f"{source}: no <model> or <robot> to spawn")
-        for d in result.diagnostics:
-            self.get_logger().warning(d.format())
-        X_WF = self.resolve_frame(reference_frame)
-        entity = self.sim.spawn(model, name=name or model.name, pose=X_WF * pose, namespace=namespace)
-        if watch:
-            ns = "/" + namespace.strip("/") if namespace.strip("/") else ""
-            with self._lock:
-                self._watched[entity.name] = (f"{ns}/robot_description", time.monotonic() + RSP_WATCH_SEC)
-        return entity.name, [d.format() for d in result.diagnostics]
-
-    def _watch_for_user_publishers(self) -> None:
-        """A robot spawned while the user's robot_state_publisher was still starting (a launch file starts both
-        at once: TurtleBot3's jazzy turtlebot3_world.launch.py even lists the spawn first) kept gazelle's own
-        publisher beside it. For :data:`RSP_WATCH_SEC` after a spawn, once the graph shows a
-        robot_state_publisher on the robot's description topic, gazelle's stops and takes back its /tf,
-        /tf_static part and description, when the robot publishes joint states for the user's (its joint
-        state publisher plugin, or ros2_control)."""
-        now = time.monotonic()
-        with self._lock:
-            watched = dict(self._watched)
-        for entity_name, (topic, deadline) in watched.items():
-            if now > deadline:
-                with self._lock:
-                    self._watched.pop(entity_name, None)
-                continue
-            try:
-                names = {p.node_name for p in self.get_publishers_info_by_topic(topic)}
-            except Exception:
-                names = set()
-            if "robot_state_publisher" not in names:
-                continue
-            with self._lock:
-                self._watched.pop(entity_name, None)
-
-            def hand_over(entity_name: str = entity_name) -> bool:
-                from ..systems.ros2_control import ControllerManager
-
-                entity = self.sim.world.entities.get(entity_name)
-                if entity is None:
-                    return False
-                if not any(isinstance(s, (JointStatePublisher, ControllerManager)) for s in entity.systems):
-                    return False  # the user's publisher would have no joint states to turn into TF
-                for system in entity.systems:
-                    if isinstance(system, RobotStatePublisher):
-                        system.stop_publishing()
-                return True
-
-            try:
-                if self.sim.call(hand_over):
-                    self.get_logger().info(
-                        f"a robot_state_publisher now publishes {topic}: gazelle's built-in one is off for "
-                        f"'{entity_name}'"
-                    )
-            except (WorldError, TimeoutError):
-                pass
-
-    def _leave_tf_to_a_running_publisher(self, xml: str, namespace: str) -> str:
-        """A spawn's XML with gazelle's built-in robot_state_publisher off when the user runs their own in the
-        robot's namespace (a node named robot_state_publisher publishing ``<ns>/robot_description``), and a
-        joint state publisher for it unless the model has one or ros2_control (whose joint_state_broadcaster
-        publishes them). Gazebo publishes no robot TF of its own: TurtleBot3's turtlebot3_world.launch.py runs
-        robot_state_publisher with the URDF and spawns model.sdf with -file, and gazelle's built-in publisher
-        made /tf_static go out twice. The server's graph decides (a spawner's own is seconds from complete);
-        a model that configures the built-in publisher (-no_robot_state_publisher, -frame_prefix, a -topic
-        spawn) is left as it is."""
-        if RSP_PLUGIN in xml:
-            return xml
-        ns = "/" + namespace.strip("/") if namespace.strip("/") else ""
-        try:
-            publishers = self.get_publishers_info_by_topic(f"{ns}/robot_description")
-        except Exception:  # a namespace that is no valid topic: the spawn says so itself
-            return xml
-        if not any(p.node_name == "robot_state_publisher" for p in publishers):
-            return xml
-        self.get_logger().info(
-            f"a running robot_state_publisher publishes {ns}/robot_description: gazelle's built-in one is off "
-            "for this robot, which publishes joint_states for it (or its ros2_control joint_state_broadcaster)"
-        )
-        return with_robot_state_options(with_joint_state_publisher(xml), enabled=False, frame_prefix=None)
-
-    def _gz_spawn(self, req: GzSpawnEntity.Request, res: GzSpawnEntity.Response) -> GzSpawnEntity.Response:
-        t0 = time.monotonic()
-        label = req.name or "entity"
-        try:
-            name, warnings = self.spawn_xml(
-                req.xml,
-                name=req.name,
-                namespace=req.robot_namespace,
-                pose=from_pose_msg(req.initial_pose),
-                reference_frame=req.reference_frame,
-                source=f"<spawn_entity:{label}>",
-            )
-        except (SpawnFailed, WorldError, TimeoutError) as err:
-            res.success = False
-            res.status_message = reply_text(f"SpawnEntity: Failure - {err}")
-            self.get_logger().error(res.status_message)
-            return res
-        res.success = True
-        res.status_message = f"SpawnEntity: Successfully spawned entity [{name}]" + with_warnings(warnings)
-        self.get_logger().info(f"{res.status_message} in {1000 * (time.monotonic() - t0):.1f} ms")
-        return res
-
-    def _gz_delete(self, req: GzDeleteEntity.Request, res: GzDeleteEntity.Response) -> GzDeleteEntity.Response:
-        try:
-            self.sim.delete(req.name)
-        except (WorldError, TimeoutError) as err:
-            res.success = False
-            res.status_message = reply_text(f"DeleteEntity: Failure - {err}")
-            return res
-        res.success = True
-        res.status_message = f"Successfully deleted entity [{req.name}]"
-        return res
-
-    def _gz_get_state(self, req: GzGetEntityState.Request, res: GzGetEntityState.Response) -> GzGetEntityState.Response:
-        entity, _, link = req.name.partition("::")
-        frame = req.reference_frame
-
-        def query() -> tuple[Any, Pose, float]:
-            st = self.sim.world.entity_state(entity, link or None)
-            return st, self.sim.world.frame_pose(frame), self.sim.world.time
-
-        try:
-            st, X_WF, t = self.sim.call(query)
-        except (WorldError, TimeoutError) as err:
-            res.success = False
-            self.get_logger().error(f"GetEntityState: {err}")
-            return res
-        X_FE = X_WF.inverse() * st.pose
-        q_inv = quat_conj(X_WF.orientation)
-        lin = quat_rotate(q_inv, st.linear_velocity)
-        ang = quat_rotate(q_inv, st.angular_velocity)
-        res.header.stamp = to_time(t)
-        res.header.frame_id = frame
-        res.state.name = req.name
-        res.state.pose = to_pose_msg(X_FE)
-        res.state.twist.linear.x, res.state.twist.linear.y, res.state.twist.linear.z = lin
-        res.state.twist.angular.x, res.state.twist.angular.y, res.state.twist.angular.z = ang
-        res.state.reference_frame = frame
-        res.success = True
-        return res
-
-    def _gz_set_state(self, req: GzSetEntityState.Request, res: GzSetEntityState.Response) -> GzSetEntityState.Response:
-        s = req.state
-        entity, _, _link = s.name.partition("::")
-        try:
-            X_WF = self.resolve_frame(s.reference_frame)
-            pose = X_WF * from_pose_msg(s.pose)
-            lin = quat_rotate(X_WF.orientation, (s.twist.linear.x, s.twist.linear.y, s.twist.linear.z))
-            ang = quat_rotate(X_WF.orientation, (s.twist.angular.x, s.twist.angular.y, s.twist.angular.z))
-            self.sim.call(lambda: self.sim.world.set_entity_state(entity, pose, lin, ang))
-        except (SpawnFailed, WorldError, TimeoutError) as err:
-            self.get_logger().error(f"SetEntityState: {err}")
-            res.success = False
-            return res
-        res.success = True
-        return res
-
-    # ------------------------------------------------------------------ ROS 1 names
-    def _ros1_spawn(self, req: GzSpawnModel.Request, res: GzSpawnModel.Response) -> GzSpawnModel.Response:
-        """/gazebo/spawn_sdf_model and /gazebo/spawn_urdf_model: SpawnEntity under ROS 1's names."""
-        inner = GzSpawnEntity.Request(
-            name=req.model_name,
-            xml=req.model_xml,
-            robot_namespace=req.robot_namespace,
-            initial_pose=req.initial_pose,
-            reference_frame=req.reference_frame,
-        )
-        out = self._gz_spawn(inner, GzSpawnEntity.Response())
-        res.success = out.success
-        res.status_message = out.status_message.replace("SpawnEntity:", "SpawnModel:", 1)
-        return res
-
-    def _ros1_delete(self, req: GzDeleteModel.Request, res: GzDeleteModel.Response) -> GzDeleteModel.Response:
-        """/gazebo/delete_model."""
-        out = self._gz_delete(GzDeleteEntity.Request(name=req.model_name), GzDeleteEntity.Response())
-        res.success = out.success
-        res.status_message = out.status_message.replace("DeleteEntity:", "DeleteModel:", 1)
-        return res
-
-    def _ros1_get_state(self, req: GzGetModelState.Request, res: GzGetModelState.Response) -> GzGetModelState.Response:
-        """/gazebo/get_model_state: the entity's pose and twist relative to ``relative_entity_name``."""
-        out = self._gz_get_state(
-            GzGetEntityState.Request(name=req.model_name, reference_frame=req.relative_entity_name),
-            GzGetEntityState.Response(),
-        )
-        res.success = out.success
-        res.header = out.header
-        res.pose = out.state.pose
-        res.twist = out.state.twist
-        where = f"model [{req.model_name}] or frame [{req.relative_entity_name}]"
-        res.status_message = "GetModelState: got properties" if out.success else f"GetModelState: no {where}"
-        return res
-
-    def _ros1_set_state(self, req: GzSetModelState.Request, res: GzSetModelState.Response) -> GzSetModelState.Response:
-        """/gazebo/set_model_state."""
-        m = req.model_state
-        inner = GzSetEntityState.Request()
-        inner.state.name = m.model_name
-        inner.state.pose = m.pose
-        inner.state.twist = m.twist
-        inner.state.reference_frame = m.reference_frame
-        out = self._gz_set_state(inner, GzSetEntityState.Response())
-        res.success = out.success
-        res.status_message = (
-            "SetModelState: set model state done"
-            if out.success
-            else (f"SetModelState: could not set the state of [{m.model_name}] (see the server's log)")
-        )
-        return res
-
-    def _gz_model_list(self, req: GzGetModelList.Request, res: GzGetModelList.Response) -> GzGetModelList.Response:
-        names, t = self.sim.call(lambda: (list(self.sim.world.entities), self.sim.world.time))
-        res.header.stamp = to_time(t)
-        res.model_names = names
-        res.success = True
-        return res
-
-    def _pause(self, req: Empty.Request, res: Empty.Response) -> Empty.Response:
-        self.sim.call(lambda: setattr(self.sim, "paused", True))
-        return res
-
-    def _unpause(self, req: Empty.Request, res: Empty.Response) -> Empty.Response:
-        self.sim.call(lambda: setattr(self.sim, "paused", False))
-        return res
-
-    def _reset_simulation(self, req: Empty.Request, res: Empty.Response) -> Empty.Response:
-        self.sim.reset(time_=True, state=True, spawned=False)
-        return res
-
-    def _reset_world(self, req: Empty.Request, res: Empty.Response) -> Empty.Response:
-        self.sim.reset(time_=False, state=True, spawned=False)
-        return res
 
     def destroy_node(self) -> None:
         """Detach from the simulation (listeners, sinks), then destroy the node."""
