@@ -330,7 +330,7 @@ def test_links_that_only_joints_outside_every_group_move_may_touch_the_world():
     the table under a fixed arm) is not a collision a plan must avoid; the arm's links are checked."""
     from lxml import etree
 
-    from gazelle.planning._planner import _tree
+    from gazelle.planning._robot_scene import _tree
 
     robot = etree.fromstring(
         b"""<robot name="r"><link name="base"/><link name="wheel"/><link name="l1"/><link name="l2"/>
