@@ -505,6 +505,31 @@ def test_a_box_dropped_on_a_bumper_plate_gives_contacts_naming_both_collisions_a
     assert all(abs(p[2] - 0.02) < 0.002 for p in pair.positions) and all(0 <= d < 1e-3 for d in pair.depths)
 
 
+def test_contacts_of_a_few_geoms_among_many_are_exactly_those_involving_them():
+    """contacts_of finds a link's contacts among all of the world's in numpy (a chess set at rest has ~130 and a
+    bumper on every arm link asks for each): the same contacts as MuJoCo's list read one by one, in its order,
+    each seen from the asked geom's side."""
+    sim = Simulation(default_world(), rtf=0)
+    for k in range(12):
+        sim.spawn(load_string(BOX_2KG).model, name=f"box{k}", pose=Pose(((k % 4) * 0.3, (k // 4) * 0.3, 0.2)))
+    sim.step(600)
+    world = sim.world
+    mine = world.collision_geoms("box5", "link") | world.collision_geoms("box7", "link")
+    d = world.data
+    expected = []
+    for i in range(int(d.ncon)):  # MuJoCo's list, read one by one
+        g1, g2 = int(d.contact[i].geom1), int(d.contact[i].geom2)
+        if g1 in mine or g2 in mine:
+            expected.append(g1 if g1 in mine else g2)
+    assert int(d.ncon) > 4 * len(expected) > 0  # most contacts are other boxes'
+    got = world.contacts_of(mine)
+    assert [p.collision1 for p in got] == [
+        "box5::link::c" if world.collision_geoms("box5", "link") >= {g} else "box7::link::c" for g in expected
+    ]
+    assert all(p.normal[2] == pytest.approx(1.0, abs=1e-6) for p in got)  # from the ground into the box
+    assert world.contacts_of(frozenset()) == []
+
+
 def test_a_gz_contact_sensor_publishes_on_its_topic_with_the_world_contact_system():
     from gazelle.systems.sensors import ContactSensor
 
