@@ -163,7 +163,7 @@ def test_a_package_folder_linking_to_etc_is_no_package_but_a_linked_package_is(t
 
 # --------------------------------------------------------------------------- 3. name filters
 def test_regex_bombs_in_a_name_filter_are_refused_without_holding_this_process() -> None:
-    from gazelle.ros._simulation_interfaces import _matching, _Refused
+    from gazelle.ros._entity_queries import _matching, _Refused
 
     names = [f"box_{i}" for i in range(50)] + ["aaaa"]
     assert _matching("^box_1[0-9]$", names) == [f"box_{i}" for i in range(10, 20)]
@@ -179,7 +179,7 @@ def test_regex_bombs_in_a_name_filter_are_refused_without_holding_this_process()
     with pytest.raises(_Refused, match="not a valid regular expression"):
         _matching("(", names)
     with pytest.raises(_Refused, match="characters"):
-        from gazelle.ros._simulation_interfaces import _check_filter
+        from gazelle.ros._entity_queries import _check_filter
 
         _check_filter("a" * 5000)
 

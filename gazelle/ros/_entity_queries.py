@@ -1,0 +1,319 @@
+"""simulation_interfaces' entity queries and set-state (:class:`EntityQueries`, a part of
+:class:`~._simulation_interfaces.SimulationInterfaces`): GetEntities, GetEntityState, GetEntitiesStates,
+SetEntityState and GetEntityInfo, with the name filters (Python regular expressions matched in a bounded helper
+process) and the entity categories; see ``_simulation_interfaces.py`` for the decisions."""
+
+from __future__ import annotations
+
+import math
+import time
+from typing import TYPE_CHECKING, Any
+
+import regex
+from simulation_interfaces.msg import (
+    EntityCategory,
+    EntityState,
+    Result,
+)
+from simulation_interfaces.srv import (
+    GetEntities,
+    GetEntitiesStates,
+    GetEntityInfo,
+    GetEntityState,
+    SetEntityState,
+)
+
+from ..description import (
+    BoundedWorker,
+    BoundExceeded,
+    JointType,
+    Pose,
+    excerpt,
+    quat_rotate,
+    reply_text,
+)
+from ..physics import WORLD_FRAMES, Entity, ErrorKind, WorldError
+from ._convert import from_pose_msg, to_pose_msg, to_time
+
+if TYPE_CHECKING:
+    from ..sim import Simulation
+
+
+def _result(code: int, message: str = "") -> Result:
+    return Result(result=code, error_message=reply_text(message))
+
+
+OK = Result.RESULT_OK
+
+
+class _Refused(Exception):
+    """A request failed with a result code."""
+
+    def __init__(self, code: int, message: str):
+        super().__init__(message)
+        self.code = code
+
+
+FILTER_TIME_LIMIT_SEC = 0.2
+"""The most a request's name filter may spend matching: ``(a+)+$`` against long names would
+otherwise backtrack for minutes, holding the interpreter (and so the simulation)."""
+FILTER_MAX_CHARS = 1000
+"""The longest name filter accepted (a name pattern of a page is a mistake or an attack)."""
+FILTER_MEMORY_BYTES = 256 << 20
+"""What compiling and matching one filter may allocate: ``a{4294967294}``, 13 bytes, compiles into
+gigabytes, and ``(?:(?:a{100}){100}){100}`` into 264 MB."""
+FILTER_CPU_SEC = 1.0
+"""The CPU time compiling and matching one filter may take in its helper process."""
+
+
+def _filter_request(request: dict) -> dict:
+    """In the filter helper: compile the pattern and match the names (bounded by the helper's limits)."""
+    try:
+        pattern = regex.compile(request["pattern"])
+    except (regex.error, ValueError, OverflowError) as err:
+        return {"invalid": str(err)}
+    deadline = time.monotonic() + FILTER_TIME_LIMIT_SEC
+    out = []
+    try:
+        for name in request["names"]:
+            if pattern.search(name, timeout=max(deadline - time.monotonic(), 1e-3)):
+                out.append(name)
+    except TimeoutError:
+        return {"slow": True}
+    return {"names": out}
+
+
+_FILTER_WORKER = BoundedWorker(_filter_request, memory_bytes=FILTER_MEMORY_BYTES)
+"""One helper process compiles and matches every name filter: the regex module compiles in C holding the
+GIL, so a compile bomb run here would stall the simulation thread; there, it meets a memory limit and a
+CPU budget, and the server's threads only wait on a pipe."""
+
+
+def _check_filter(source: str) -> None:
+    """Refuse a name filter that is too long or holds characters no entity name has, before any helper."""
+    if len(source) > FILTER_MAX_CHARS:
+        raise _Refused(
+            Result.RESULT_OPERATION_FAILED,
+            f"filters.filter has {len(source)} characters; at most {FILTER_MAX_CHARS} are accepted",
+        )
+    if "\x00" in source:
+        raise _Refused(Result.RESULT_OPERATION_FAILED, "filters.filter must not contain a NUL character")
+
+
+def _matching(source: str | None, names: list[str]) -> list[str]:
+    """The names the pattern ``source`` finds (all without one), compiled and matched in the filter helper:
+    at most :data:`FILTER_MEMORY_BYTES`, :data:`FILTER_CPU_SEC` of CPU and :data:`FILTER_TIME_LIMIT_SEC`
+    of matching."""
+    if not source:
+        return names
+    shown = excerpt(source, 80)
+    try:
+        reply = _FILTER_WORKER.call(
+            {"pattern": source, "names": names},
+            what=f"filters.filter {shown}",
+            timeout_sec=FILTER_CPU_SEC,
+            timeout_hint="the name filter's bound",
+        )
+    except BoundExceeded as err:
+        raise _Refused(Result.RESULT_OPERATION_FAILED, f"{err}; simplify the pattern") from None
+    assert isinstance(reply, dict)
+    if "invalid" in reply:
+        raise _Refused(
+            Result.RESULT_OPERATION_FAILED,
+            f"filters.filter {shown} is not a valid regular expression: {reply['invalid']}",
+        )
+    if reply.get("slow"):
+        raise _Refused(
+            Result.RESULT_OPERATION_FAILED,
+            f"filters.filter {shown} took longer than {FILTER_TIME_LIMIT_SEC:g} s to match "
+            "(catastrophic backtracking?); simplify it",
+        )
+    return [str(n) for n in reply["names"]]
+
+
+def category_of(entity: Entity) -> int:
+    """The EntityCategory of an entity (see the module docstring)."""
+    if entity.static or entity.built.free_joint is None:
+        return EntityCategory.CATEGORY_STATIC_OBJECT
+    m = entity.model
+    if m.plugins or any(j.type is not JointType.FIXED for j in m.joints):
+        return EntityCategory.CATEGORY_ROBOT
+    return EntityCategory.CATEGORY_DYNAMIC_OBJECT
+
+
+_CATEGORY_NAMES = {
+    EntityCategory.CATEGORY_STATIC_OBJECT: "static object",
+    EntityCategory.CATEGORY_ROBOT: "robot",
+    EntityCategory.CATEGORY_DYNAMIC_OBJECT: "dynamic object",
+}
+
+
+def _finite(*values: float) -> bool:
+    return all(math.isfinite(v) for v in values)
+
+
+class EntityQueries:
+    """The entity queries of :class:`~._simulation_interfaces.SimulationInterfaces` (which builds ``sim``)."""
+
+    sim: Simulation
+
+    def _frame_pose(self, frame: str, field_name: str) -> Pose:
+        try:
+            return self.sim.call(lambda: self.sim.world.frame_pose(frame))
+        except WorldError:
+            raise _Refused(
+                Result.RESULT_OPERATION_FAILED, f"{field_name} '{frame}' not found: no such entity or entity::link"
+            ) from None
+
+    def _compile_filters(self, filters: Any) -> tuple[str | None, set[int]]:
+        if filters.tags.tags:
+            raise _Refused(
+                Result.RESULT_FEATURE_UNSUPPORTED, "entity tags are not supported (filters.tags must be empty)"
+            )
+        if filters.bounds.type != 0 or filters.bounds.points:
+            raise _Refused(
+                Result.RESULT_FEATURE_UNSUPPORTED, "bounds filters are not supported (filters.bounds must be empty)"
+            )
+        pattern = str(filters.filter) or None
+        if pattern is not None:
+            _check_filter(pattern)
+        return pattern, {c.category for c in filters.categories}
+
+    def _select(self, filters: Any) -> list[str]:
+        pattern, cats = self._compile_filters(filters)
+        # categories on the sim thread (cheap); the pattern here, off it, and bounded in time
+        return _matching(pattern, self._names_in(cats))
+
+    def _names_in(self, cats: set[int]) -> list[str]:
+        """The entities of the given categories (all when none), read on the sim thread."""
+        return self.sim.call(
+            lambda: [name for name, e in self.sim.world.entities.items() if not cats or category_of(e) in cats]
+        )
+
+    def get_entities(self, req: GetEntities.Request, res: GetEntities.Response) -> Any:
+        """GetEntities: names, filtered by a bounded regular expression and by category."""
+        try:
+            res.entities = self._select(req.filters)
+        except _Refused as err:
+            res.result = _result(err.code, str(err))
+            return res
+        res.result = _result(OK)
+        return res
+
+    def _state_msg(self, name: str) -> EntityState:
+        """World-frame state of an entity (call on the sim thread)."""
+        st = self.sim.world.entity_state(name)
+        msg = EntityState()
+        msg.header.frame_id = "world"
+        msg.header.stamp = to_time(self.sim.world.time)
+        msg.pose = to_pose_msg(st.pose)
+        msg.twist.linear.x, msg.twist.linear.y, msg.twist.linear.z = (float(v) for v in st.linear_velocity)
+        msg.twist.angular.x, msg.twist.angular.y, msg.twist.angular.z = (float(v) for v in st.angular_velocity)
+        return msg
+
+    def get_entity_state(self, req: GetEntityState.Request, res: GetEntityState.Response) -> Any:
+        """GetEntityState: an entity's pose and twist in a reference frame."""
+        try:
+            res.state = self.sim.call(lambda: self._state_msg(req.entity))
+        except WorldError as err:
+            res.result = _result(Result.RESULT_NOT_FOUND, str(err))
+            return res
+        res.result = _result(OK)
+        return res
+
+    def get_entities_states(self, req: GetEntitiesStates.Request, res: GetEntitiesStates.Response) -> Any:
+        """GetEntitiesStates: the states of the filtered entities, in one sim-thread call."""
+        try:
+            pattern, cats = self._compile_filters(req.filters)
+        except _Refused as err:
+            res.result = _result(err.code, str(err))
+            return res
+
+        try:
+            wanted = _matching(pattern, self._names_in(cats))
+        except _Refused as err:
+            res.result = _result(err.code, str(err))
+            return res
+
+        def do() -> tuple[list[str], list[EntityState]]:
+            names = [n for n in wanted if n in self.sim.world.entities]
+            return names, [self._state_msg(n) for n in names]
+
+        res.entities, res.states = self.sim.call(do)
+        res.result = _result(OK)
+        return res
+
+    def set_entity_state(self, req: SetEntityState.Request, res: SetEntityState.Response) -> Any:
+        """SetEntityState: teleport an entity and set its twist."""
+        s = req.state
+        p, tw = s.pose, s.twist
+        vals = (
+            p.position.x,
+            p.position.y,
+            p.position.z,
+            p.orientation.x,
+            p.orientation.y,
+            p.orientation.z,
+            p.orientation.w,
+        )
+        if not _finite(*vals):
+            res.result = _result(SetEntityState.Response.INVALID_POSE, "state.pose is not finite (NaN or inf)")
+            return res
+        if not _finite(tw.linear.x, tw.linear.y, tw.linear.z, tw.angular.x, tw.angular.y, tw.angular.z):
+            res.result = _result(Result.RESULT_OPERATION_FAILED, "state.twist is not finite (NaN or inf)")
+            return res
+        try:
+            frame = s.header.frame_id
+            X_WF = Pose() if frame in WORLD_FRAMES else self._frame_pose(frame, "state.header.frame_id")
+            pose = X_WF * from_pose_msg(p)
+            lin = quat_rotate(X_WF.orientation, (tw.linear.x, tw.linear.y, tw.linear.z))
+            ang = quat_rotate(X_WF.orientation, (tw.angular.x, tw.angular.y, tw.angular.z))
+            self.sim.call(lambda: self.sim.world.set_entity_state(req.entity, pose, lin, ang))
+        except _Refused as err:
+            res.result = _result(err.code, str(err))
+            return res
+        except WorldError as err:
+            code = {
+                ErrorKind.NOT_FOUND: Result.RESULT_NOT_FOUND,
+                ErrorKind.INVALID_POSE: SetEntityState.Response.INVALID_POSE,
+            }.get(err.kind, Result.RESULT_OPERATION_FAILED)
+            res.result = _result(code, str(err))
+            return res
+        except TimeoutError as err:
+            res.result = _result(Result.RESULT_OPERATION_FAILED, str(err))
+            return res
+        res.result = _result(OK)
+        return res
+
+    def get_entity_info(self, req: GetEntityInfo.Request, res: GetEntityInfo.Response) -> Any:
+        """GetEntityInfo: an entity's category and description."""
+
+        def do() -> tuple[int, str]:
+            e = self.sim.world.entities.get(req.entity)
+            if e is None:
+                raise WorldError(ErrorKind.NOT_FOUND, f"entity '{req.entity}' does not exist")
+            cat = category_of(e)
+            m = e.model
+            parts = [
+                f"{_CATEGORY_NAMES[cat]} '{e.name}'",
+                f"model '{m.name}' ({m.source_format or 'unknown format'}"
+                + (f", {m.source_file}" if m.source_file and not m.source_file.startswith("<") else "")
+                + ")",
+                f"{len(m.links)} links, {len(m.joints)} joints, {len(m.plugins)} plugins",
+            ]
+            if e.namespace:
+                parts.append(f"namespace '/{e.namespace}'")
+            parts.append("spawned" if e.spawned else "from the world file")
+            if e.name in self.sim.diverged:
+                parts.append(f"DIVERGED: {self.sim.diverged[e.name]}")
+            return cat, "; ".join(parts)
+
+        try:
+            cat, desc = self.sim.call(do)
+        except WorldError as err:
+            res.result = _result(Result.RESULT_NOT_FOUND, str(err))
+            return res
+        res.info.category.category = cat
+        res.info.description = desc
+        res.result = _result(OK)
+        return res
