@@ -293,7 +293,7 @@ def test_physics_refuses_to_spawn_a_fragment(monkeypatch: pytest.MonkeyPatch) ->
     mujoco = pytest.importorskip("mujoco")
     from gazelle.description import Pose
     from gazelle.physics import BuildError
-    from gazelle.physics._builder import add_model
+    from gazelle.physics._bodies import add_model
 
     model = load_fixture(monkeypatch, "moveit_panda/moveit_resources_panda_moveit_config/config/hand.xacro").value
     assert isinstance(model, Model)

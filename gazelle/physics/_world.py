@@ -24,12 +24,11 @@ import mujoco
 import numpy as np
 
 from ..description import Light, Model, Pose, World, rotation_matrix
+from ._bodies import add_model, add_visuals
 from ._builder import (
     JOINT_ARMATURE,
     SEP,
     SHARED_MESH,
-    add_model,
-    add_visuals,
     friction_priority,
     scoped,
 )
