@@ -213,3 +213,26 @@ def test_check_tells_what_spawn_would_tell(tmp_path: Path) -> None:
     assert "a positive cmd_vel drives this robot backwards" in proc.stderr
     proc = check(SEED)
     assert proc.returncode == 0 and "0 errors, 0 warnings" in proc.stdout, proc.stderr
+
+
+@pytest.mark.parametrize(
+    ("argv", "port", "origins"),
+    [
+        (["sim", "--foxglove"], 8765, None),
+        (["sim", "--foxglove", "--paused"], 8765, None),
+        (["sim", "--foxglove", "9000", "--viewer-allow-origin", "http://a:1"], 9000, ["http://a:1"]),
+        (["sim"], None, None),
+    ],
+)
+def test_sim_options_parse_as_the_help_says(argv: list[str], port: int | None, origins: list[str] | None) -> None:
+    """`--foxglove` alone serves on 8765, as its help says (typer 0.29 reads no optional option values: the
+    bare flag was refused); the options declared once as Annotated types keep their names."""
+    from typer.main import get_group
+
+    from gazelle.cli._main import _bare_foxglove, app
+
+    command = get_group(app).commands["sim"]
+    ctx = command.make_context("sim", _bare_foxglove(argv)[1:])
+    assert ctx.params["foxglove"] == port
+    assert list(ctx.params["viewer_allow_origin"] or []) == (origins or [])
+    assert _bare_foxglove(["sim", "--", "--foxglove"]) == ["sim", "--", "--foxglove"]  # after --: not an option

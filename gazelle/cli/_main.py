@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
+from typing import Annotated
 
 import typer
 
@@ -36,35 +37,85 @@ def _parse_args(values: list[str]) -> dict[str, str]:
     return out
 
 
-@app.command()
-def sim(
-    world: Path | None = typer.Argument(
-        None, help="World file (.sdf/.world) or a model (.urdf/.xacro/.sdf); default: the embedded empty world."
+# `gazelle sim`'s options with long help, declared once here so that the command reads as its parameters
+SimWorld = Annotated[
+    Path | None,
+    typer.Argument(
+        help="World file (.sdf/.world) or a model (.urdf/.xacro/.sdf); default: the embedded empty world."
     ),
-    rtf: float | None = typer.Option(
-        None,
+]
+SimRtf = Annotated[
+    float | None,
+    typer.Option(
         "--rtf",
         help="Real-time factor (default: the world's, 1.0); 0 = as fast as possible. While /clock has "
         "subscribers, the clock keeps its resolution: at most 1000 /clock messages per wall second, "
         "so at most 10x real time at the default --clock-rate 100.",
     ),
-    clock_rate: float = typer.Option(
-        100.0, "--clock-rate", help="/clock publish rate in sim-time Hz (0 = every step); default 100."
-    ),
-    paused: bool = typer.Option(False, "--paused", help="Start paused (unpause with /unpause_physics)."),
-    seed: int | None = typer.Option(
-        None,
+]
+SimSeed = Annotated[
+    int | None,
+    typer.Option(
         "--seed",
         help="Seed of the sensors' and plugins' noise (as gz sim --seed): a run repeats bit for bit. "
         "Default: fresh entropy, so runs with noise differ.",
     ),
-    arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
-    drop_when_behind: bool = typer.Option(
-        False,
+]
+SimDropWhenBehind = Annotated[
+    bool,
+    typer.Option(
         "--drop-when-behind",
         help="When publishing falls behind the simulation, drop the oldest messages (counted on "
         "/gazelle/dropped_messages) instead of slowing the simulation down (the default: nothing dropped).",
     ),
+]
+SimRosDiscovery = Annotated[
+    str | None,
+    typer.Option(
+        "--ros-discovery",
+        help="ROS discovery range of the server: localhost (default unless ROS_AUTOMATIC_DISCOVERY_RANGE, "
+        "ROS_LOCALHOST_ONLY or ROS_STATIC_PEERS is set), subnet (anyone on the network can call its services), "
+        "or off.",
+    ),
+]
+SimAllowOrigin = Annotated[
+    list[str] | None,
+    typer.Option(
+        "--viewer-allow-origin",
+        help="A web origin (http://host:port, or '*') besides the viewer's own whose pages may connect to it "
+        "(repeatable); see docs/security.md.",
+    ),
+]
+SimFoxglove = Annotated[
+    int | None,
+    typer.Option(
+        "--foxglove",
+        help="Also serve the Foxglove WebSocket protocol on this port (8765 when given without one), on the "
+        "viewer's interface, to the Foxglove app's origin and --viewer-allow-origin ones.",
+    ),
+]
+SimReplay = Annotated[
+    Path | None,
+    typer.Option(
+        "--replay",
+        help="Record where every body is (30 times a sim second) and, at shutdown (or at once on SIGUSR1), write "
+        "a replay of the run since the last world reset: a page that opens from disk in a browser (FILE.html), "
+        "or its data (FILE.json). gazelle's pytest plugin keeps one for each failing test.",
+    ),
+]
+
+
+@app.command()
+def sim(
+    world: SimWorld = None,
+    rtf: SimRtf = None,
+    clock_rate: float = typer.Option(
+        100.0, "--clock-rate", help="/clock publish rate in sim-time Hz (0 = every step); default 100."
+    ),
+    paused: bool = typer.Option(False, "--paused", help="Start paused (unpause with /unpause_physics)."),
+    seed: SimSeed = None,
+    arg: list[str] = typer.Option([], "--arg", help="xacro argument NAME:=VALUE (repeatable)."),
+    drop_when_behind: SimDropWhenBehind = False,
     no_viewer: bool = typer.Option(False, "--no-viewer", help="Do not serve the browser viewer."),
     viewer_host: str = typer.Option(
         "127.0.0.1", "--viewer-host", help="Interface the viewer binds to (0.0.0.0: every interface; think twice)."
@@ -72,34 +123,10 @@ def sim(
     viewer_port: int = typer.Option(
         8080, "--viewer-port", help="Viewer port; the next free one if taken; 0 = any free port."
     ),
-    ros_discovery: str | None = typer.Option(
-        None,
-        "--ros-discovery",
-        help="ROS discovery range of the server: localhost (default unless ROS_AUTOMATIC_DISCOVERY_RANGE, "
-        "ROS_LOCALHOST_ONLY or ROS_STATIC_PEERS is set), subnet (anyone on the network can call its services), "
-        "or off.",
-    ),
-    viewer_allow_origin: list[str] = typer.Option(
-        [],
-        "--viewer-allow-origin",
-        help="A web origin (http://host:port, or '*') besides the viewer's own whose pages may connect to it "
-        "(repeatable); see docs/security.md.",
-    ),
-    foxglove: int | None = typer.Option(
-        None,
-        "--foxglove",
-        is_flag=False,
-        flag_value=8765,
-        help="Also serve the Foxglove WebSocket protocol on this port (8765 when given without one), on the "
-        "viewer's interface, to the Foxglove app's origin and --viewer-allow-origin ones.",
-    ),
-    replay: Path | None = typer.Option(
-        None,
-        "--replay",
-        help="Record where every body is (30 times a sim second) and, at shutdown (or at once on SIGUSR1), write "
-        "a replay of the run since the last world reset: a page that opens from disk in a browser (FILE.html), "
-        "or its data (FILE.json). gazelle's pytest plugin keeps one for each failing test.",
-    ),
+    ros_discovery: SimRosDiscovery = None,
+    viewer_allow_origin: SimAllowOrigin = None,
+    foxglove: SimFoxglove = None,
+    replay: SimReplay = None,
     replay_topic: list[str] = typer.Option(
         [], "--replay-topic", help="A topic of the simulation's whose values the replay shows (repeatable)."
     ),
@@ -117,7 +144,7 @@ def sim(
             viewer=not no_viewer,
             viewer_host=viewer_host,
             viewer_port=viewer_port,
-            viewer_allow_origins=_origins(viewer_allow_origin),
+            viewer_allow_origins=_origins(viewer_allow_origin or []),
             ros_discovery=_discovery(ros_discovery),
             foxglove_port=foxglove,
             seed=seed,
@@ -373,6 +400,23 @@ def record_video(
     raise typer.Exit(run_record(loaded, out, attach=attach, seconds=seconds, fps=fps, drive=twist, panel=panel))
 
 
+FOXGLOVE_DEFAULT_PORT = 8765
+"""The Foxglove WebSocket port of a bare ``--foxglove`` (the Foxglove app's default)."""
+
+
+def _bare_foxglove(args: list[str]) -> list[str]:
+    """``--foxglove`` with no port (last, or followed by another option) given its default port: typer 0.29
+    reads no optional option values (click's ``flag_value``), so it refused the bare flag its help offers."""
+    out = list(args)
+    for i, a in enumerate(out):
+        if a == "--":
+            break
+        if a == "--foxglove" and (i + 1 == len(out) or out[i + 1].startswith("-")):
+            out.insert(i + 1, str(FOXGLOVE_DEFAULT_PORT))
+            break
+    return out
+
+
 def main(argv: list[str] | None = None) -> None:
     """Entry point of the ``gazelle`` console script."""
-    app(args=argv if argv is not None else sys.argv[1:], prog_name="gazelle")
+    app(args=_bare_foxglove(argv if argv is not None else sys.argv[1:]), prog_name="gazelle")
