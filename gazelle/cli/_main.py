@@ -40,9 +40,7 @@ def _parse_args(values: list[str]) -> dict[str, str]:
 # `gazelle sim`'s options with long help, declared once here so that the command reads as its parameters
 SimWorld = Annotated[
     Path | None,
-    typer.Argument(
-        help="World file (.sdf/.world) or a model (.urdf/.xacro/.sdf); default: the embedded empty world."
-    ),
+    typer.Argument(help="World file (.sdf/.world) or a model (.urdf/.xacro/.sdf); default: the embedded empty world."),
 ]
 SimRtf = Annotated[
     float | None,
