@@ -109,48 +109,34 @@ def test_concurrent_spawn_and_delete_get_a_reply_each_and_leak_nothing(sim_facto
     assert got == expected
 
 
-def test_a_dead_ros_thread_is_reported_with_its_traceback(monkeypatch, caplog):
-    """If the executor thread dies anyway, the bridge records why and the server loop sees it (never a deaf server)."""
-    from rclpy.executors import MultiThreadedExecutor
+@pytest.mark.parametrize(
+    ("executor", "logged"),
+    [
+        # the bridge's own executor thread
+        ("MultiThreadedExecutor", "ROS executor thread crashed"),
+        # StepSimulation's (ros/_stepping.py): its crash counts as the bridge's, so the server exits instead
+        # of staying up without lockstep
+        ("SingleThreadedExecutor", "StepSimulation executor thread crashed"),
+    ],
+)
+def test_a_dead_ros_thread_is_reported_with_its_traceback(monkeypatch, caplog, executor: str, logged: str):
+    """If an executor thread dies anyway, the bridge records why and the server loop sees it (never a deaf server)."""
+    from rclpy import executors
 
     from gazelle.ros._bridge import RosBridge
     from gazelle.sim import Simulation
     from gazelle.worlds import default_world
 
     def broken(self, timeout_sec=None):
-        raise RuntimeError("boom in the executor")
+        raise RuntimeError(f"boom in the {executor}")
 
-    monkeypatch.setattr(MultiThreadedExecutor, "spin_once", broken)
+    monkeypatch.setattr(getattr(executors, executor), "spin_once", broken)
     sim = Simulation(default_world())
     bridge = RosBridge(sim)
     try:
-        wait_for(lambda: not bridge.alive, 10, "the ROS thread to stop")
-        assert isinstance(bridge.failure, RuntimeError)
-        assert any("ROS executor thread crashed" in r.getMessage() and r.exc_info for r in caplog.records)
-    finally:
-        bridge.shutdown()
-
-
-def test_a_dead_step_simulation_thread_makes_the_bridge_report_itself_dead(monkeypatch, caplog):
-    """StepSimulation has an executor thread of its own (ros/_stepping.py): its crash counts as the bridge's,
-    so the server exits instead of staying up without lockstep."""
-    from rclpy.executors import SingleThreadedExecutor
-
-    from gazelle.ros._bridge import RosBridge
-    from gazelle.sim import Simulation
-    from gazelle.worlds import default_world
-
-    def broken(self, timeout_sec=None):
-        raise RuntimeError("boom in the stepping executor")
-
-    monkeypatch.setattr(SingleThreadedExecutor, "spin_once", broken)
-    sim = Simulation(default_world())
-    bridge = RosBridge(sim)
-    try:
-        wait_for(lambda: not bridge.alive, 10, "the bridge to report the stepping thread dead")
-        assert isinstance(bridge.failure, RuntimeError)
-        assert "stepping" in str(bridge.failure)
-        assert any("StepSimulation executor thread crashed" in r.getMessage() and r.exc_info for r in caplog.records)
+        wait_for(lambda: not bridge.alive, 10, "the bridge to report the dead thread")
+        assert isinstance(bridge.failure, RuntimeError) and executor in str(bridge.failure)
+        assert any(logged in r.getMessage() and r.exc_info for r in caplog.records)
     finally:
         bridge.shutdown()
 
