@@ -192,9 +192,18 @@ class _MoveGroupBase(Node):
                 f"no /joint_states within {CURRENT_STATE_WAIT:g} s: planning from the model's zero positions"
             )
         js = state.joint_state
+        given = dict(zip(js.name, js.position)) if js.name else None
+        if len(js.name) != len(js.position):
+            # MoveIt's robotStateMsgToRobotState refuses such a joint state with this error and the scene keeps
+            # its current state (moveit_core/robot_state/src/conversions.cpp, jointStateToRobotStateImpl;
+            # planning_scene.cpp's setCurrentState ignores the result): the current state, not a guess
+            self.get_logger().error(
+                f"Different number of names and positions in JointState message: {len(js.name)}, {len(js.position)}"
+            )
+            given = None
         # a start state read from /joint_states may be a hair past a limit: moved onto it, as the current
         # state is (MoveIt's start_state_max_bounds_error, 0.05)
-        return self.planner.onto_limits(self.planner.state(dict(zip(js.name, js.position)) if js.name else None))
+        return self.planner.onto_limits(self.planner.state(given))
 
     def _frame(self, frame: str, q: np.ndarray) -> np.ndarray:
         """The pose of ``frame`` in the planning frame: the root link, the SRDF's virtual joint parent

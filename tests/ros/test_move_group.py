@@ -394,6 +394,29 @@ def _pose_constraints(goal: tuple[float, ...]) -> Constraints:
     return Constraints(position_constraints=[position], orientation_constraints=[orientation])
 
 
+def test_a_start_state_whose_names_and_positions_differ_in_count_plans_from_the_current_state(panda):
+    """MoveIt refuses such a joint state with an error and its scene keeps the current state
+    (moveit_core conversions.cpp, jointStateToRobotStateImpl); pairing them up would start the plan with
+    panda_joint1 at the one position given."""
+    from moveit_msgs.srv import GetMotionPlan
+
+    now = _at_rest(panda)
+    req = GetMotionPlan.Request()
+    mpr = req.motion_plan_request
+    mpr.group_name = "panda_arm"
+    mpr.allowed_planning_time = 5.0
+    mpr.start_state.joint_state.name = list(ARM)
+    mpr.start_state.joint_state.position = [now["panda_joint1"] + 0.5]  # seven names, one position
+    mpr.goal_constraints = panda.joint_goal(
+        {**{j: now[j] for j in ARM}, "panda_joint2": now["panda_joint2"] + 0.2}
+    ).request.goal_constraints
+    res = panda.ros.call(GetMotionPlan, "/plan_kinematic_path", req, timeout=30).motion_plan_response
+    assert res.error_code.val == MoveItErrorCodes.SUCCESS, (res.error_code.val, res.error_code.message)
+    first = dict(zip(res.trajectory.joint_trajectory.joint_names, res.trajectory.joint_trajectory.points[0].positions))
+    assert max(abs(first[j] - now[j]) for j in ARM) < 1e-3, first
+    panda.move_group.wait_line("Different number of names and positions in JointState message: 7, 1", timeout=5)
+
+
 def test_compute_ik_inverts_compute_fk(panda):
     (goal,) = _reachable_poses(panda, 1, seed=11)
     req = GetPositionIK.Request()
