@@ -92,13 +92,18 @@ fi
 #     numpy's, rclpy's and gazelle's modules from source at each start: 1.35 s to import what `gazelle sim`
 #     needs, 0.52 s compiled; a fresh clone's suite took 3 minutes longer than a used working tree's.
 #     gazelle's own sources are checked every time (compileall skips what is up to date).
+#     The compiled files are kept by content outside the clone (scripts/bytecode.sh): a second clone
+#     unpacks them in seconds.
 bytecode="$VENV/.gazelle_bytecode.sha256"
 if [[ ! -f "$bytecode" || "$(cat "$bytecode")" != "$want" ]]; then
   step_start=$SECONDS
   site="$("$VENV/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')"
-  "$VENV/bin/python" -m compileall -q -j 0 "$site" >/dev/null 2>&1 || true
+  if [[ "$("$ROOT/scripts/bytecode.sh" "$VENV/bin/python" "$site" "$want")" == cached ]]; then
+    took "the wheels' bytecode from the cache"
+  else
+    took "compiling the wheels' bytecode"
+  fi
   echo "$want" > "$bytecode"
-  took "compiling the wheels' bytecode"
 fi
 "$VENV/bin/python" -m compileall -q -j 0 "$ROOT/gazelle" "$ROOT/launch" "$ROOT/launch_ros" >/dev/null 2>&1 || true
 

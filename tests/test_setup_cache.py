@@ -69,3 +69,79 @@ def test_a_cached_build_installs_and_a_corrupt_one_is_rebuilt_not_used(tmp_path:
         assert bad.returncode == 3, bad.stdout
         assert "incomplete or corrupt; rebuilding" in bad.stderr
         assert not entry.exists()  # not trusted again
+
+
+BYTECODE = REPO / "scripts" / "bytecode.sh"
+
+
+def _bytecode(site: Path, cache: Path, key: str = "k1") -> subprocess.CompletedProcess:
+    env = {**os.environ, "GAZELLE_CACHE_DIR": str(cache)}
+    return subprocess.run(
+        ["bash", str(BYTECODE), sys.executable, str(site), key], capture_output=True, text=True, env=env, timeout=120
+    )
+
+
+def _pyc_matches(source: Path) -> bool:
+    """Whether the compiled file beside ``source`` was compiled from it as it is now (the header Python checks)."""
+    import importlib.util
+
+    pyc = Path(importlib.util.cache_from_source(str(source)))
+    if not pyc.is_file():
+        return False
+    header = pyc.read_bytes()[:16]
+    st = source.stat()
+    return (
+        header[:4] == importlib.util.MAGIC_NUMBER
+        and int.from_bytes(header[8:12], "little") == int(st.st_mtime) & 0xFFFFFFFF
+        and int.from_bytes(header[12:16], "little") == st.st_size & 0xFFFFFFFF
+    )
+
+
+def test_the_wheels_bytecode_is_cached_reused_and_a_corrupt_or_stale_entry_is_not_trusted(tmp_path: Path) -> None:
+    """Issue 28: a second clone unpacks the wheels' bytecode instead of compiling 12,000 files; a corrupt entry
+    is reported and rebuilt, and a compiled file that no longer matches its source is compiled again."""
+    site = tmp_path / "site"
+    (site / "pkg").mkdir(parents=True)
+    mod = site / "pkg" / "mod.py"
+    mod.write_text("VALUE = 1\n")
+    cache = tmp_path / "cache"
+
+    first = _bytecode(site, cache)
+    assert first.returncode == 0 and first.stdout.strip() == "compiled", first.stderr
+    (entry,) = (cache / "bytecode").iterdir()
+    assert (entry / "pyc.tar").is_file() and (cache / "bytecode").stat().st_mode & 0o077 == 0
+    assert _pyc_matches(mod)
+
+    for pyc in site.rglob("*.pyc"):  # a new clone: the same sources, no bytecode yet
+        pyc.unlink()
+    again = _bytecode(site, cache)
+    assert again.returncode == 0 and again.stdout.strip() == "cached", again.stderr
+    assert _pyc_matches(mod)
+
+    tar = (entry / "pyc.tar").read_bytes()
+    for broken in ({"pyc.tar": tar[: len(tar) // 2]}, {"pyc.sha256": b"0" * 64 + b"\n"}):
+        for name, content in broken.items():
+            (entry / name).write_bytes(content)
+        for pyc in site.rglob("*.pyc"):
+            pyc.unlink()
+        bad = _bytecode(site, cache)
+        assert bad.returncode == 0 and bad.stdout.strip() == "compiled", bad.stdout
+        assert "incomplete or corrupt; compiling" in bad.stderr
+        assert (
+            _pyc_matches(mod)
+            and hashlib.sha256((entry / "pyc.tar").read_bytes()).hexdigest()
+            == (entry / "pyc.sha256").read_text().strip()
+        )  # rebuilt, whole
+
+    for pyc in site.rglob("*.pyc"):
+        pyc.unlink()
+    mod.write_text("VALUE = 22\n")  # the source changed since the entry was made (uv unpacked it again)
+    stale = _bytecode(site, cache)
+    assert stale.stdout.strip() == "cached" and _pyc_matches(mod)  # compiled again from the source as it is
+
+    (cache / "bytecode").chmod(0o777)  # another user could have put anything there
+    try:
+        foreign = _bytecode(site, cache)
+        assert "writable by others; not used" in foreign.stderr and foreign.stdout.strip() == "compiled"
+    finally:
+        (cache / "bytecode").chmod(0o700)
