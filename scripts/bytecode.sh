@@ -43,11 +43,13 @@ if [[ -d "$ENTRY" ]]; then
     rm -rf "$ENTRY"
   fi
 fi
-"$PY" -m compileall -q -j 0 "$SITE" >/dev/null 2>&1 || true
 if [[ -n "$restored" ]]; then
+  # one process: compileall's -j pool spends 17 s on 12,000 files that are up to date, one process 2 s
+  "$PY" -m compileall -q "$SITE" >/dev/null 2>&1 || true
   echo "cached"
   exit 0
 fi
+"$PY" -m compileall -q -j 0 "$SITE" >/dev/null 2>&1 || true
 echo "compiled"
 private_dir "$ROOT" || { echo "bytecode: cannot use the cache $ROOT; not saved" >&2; exit 0; }
 tmp="$ROOT/.tmp.$$"
