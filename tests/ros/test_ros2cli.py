@@ -240,3 +240,13 @@ def test_a_signal_while_a_verb_sets_up_is_an_orderly_end() -> None:
     out = subprocess.run([sys.executable, "-c", SIGNAL_WHILE_SETTING_UP], capture_output=True, text=True, timeout=60)
     assert "exit 0" in out.stdout, out.stdout + out.stderr
     assert "Traceback" not in out.stderr, out.stderr
+
+
+def test_a_reader_that_goes_away_ends_a_verb_quietly() -> None:
+    """`ros2 interface list | head -2`: the reader closes the pipe; the verb ends as a Unix tool does (the
+    status of a SIGPIPE, 141), with no BrokenPipeError traceback."""
+    ros2 = subprocess.Popen([ROS2, "interface", "list"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    assert ros2.stdout is not None and ros2.stderr is not None
+    ros2.stdout.close()  # the reader goes away before the first line (after one, the rest may fit the pipe)
+    assert ros2.wait(60) == 141
+    assert "Traceback" not in ros2.stderr.read().decode()

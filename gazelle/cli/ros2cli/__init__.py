@@ -21,9 +21,9 @@ COMMANDS = {
     "action": ("_action", "main", "Various action related sub-commands"),
     "bag": ("_bag", "main", "Various rosbag related sub-commands"),
     "control": ("_control", "main", "Various control related sub-commands"),
-    "interface": ("_service", "interface_main", "Show information about ROS interfaces"),
+    "interface": ("_interface", "main", "Show information about ROS interfaces"),
     "launch": ("_launch", "main", "Run a launch file"),
-    "node": ("_service", "node_main", "Various node related sub-commands"),
+    "node": ("_node", "main", "Various node related sub-commands"),
     "param": ("_param", "main", "Various param related sub-commands"),
     "pkg": ("_pkg", "main", "Various package related sub-commands"),
     "run": ("_run", "main", "Run a package specific executable"),
@@ -65,6 +65,9 @@ def main(argv: list[str] | None = None) -> int:
             return int(signal.SIGINT)
         except ShutDown:  # rclpy's own SIGINT/SIGTERM handler shut the context down under the verb
             return 0
+        except BrokenPipeError:  # `ros2 interface list | head`: the reader has gone, as any Unix tool's would
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # nothing more to say, and no traceback
+            return 128 + int(signal.SIGPIPE)
         except Exception as err:
             if type(err).__name__ == "ExternalShutdownException":
                 return 0
