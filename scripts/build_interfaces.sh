@@ -1,21 +1,24 @@
 #!/usr/bin/env bash
-# Build gazelle's own ROS 2 interface packages (interfaces/: tf2_msgs,
-# simulation_interfaces, gazebo_msgs, control_msgs, controller_manager_msgs, ros_gz_interfaces,
-# octomap_msgs, object_recognition_msgs, moveit_msgs) with the ROS 2 Jazzy rosidl/ament CMake
+# Build gazelle's own ROS 2 interface packages (interfaces/) with the ROS 2 Jazzy rosidl/ament CMake
 # tooling from the PyPI wheels, and install them into a Python virtualenv.
 #
-#   scripts/build_interfaces.sh VENV_DIR
+#   scripts/build_interfaces.sh VENV_DIR [first|all]
 #
-# A build is cached by content outside the clone (~/.cache/gazelle/interfaces, GAZELLE_CACHE_DIR): see
-# restore_from_cache below. Idempotent: a hash over everything under interfaces/, this script and the
-# versions of the wheel packages the build depends on is kept in
-# VENV_DIR/.gazelle_interfaces.sha256. When it matches and the packages import,
-# nothing is rebuilt. Build trees live in <repo>/build/interfaces/<pkg>;
-# cmake/make output goes to <build dir>/build.log.
+# Two tiers. The first is what any world needs: tf2_msgs, simulation_interfaces, gazebo_msgs and
+# ros_gz_interfaces. The second is ros2_control's and MoveIt's: control_msgs, controller_manager_msgs,
+# octomap_msgs, object_recognition_msgs and moveit_msgs (gazelle imports them only when a robot needs
+# them: gazelle/ros/_convert.py ARM_PACKAGES). `first` builds the first tier only (./demo.sh starts the demo
+# after it and builds the second after the demo); `all` (the default) both, scheduled together.
+#
+# Each tier is cached by content outside the clone (~/.cache/gazelle/interfaces, scripts/_cache.sh; see
+# restore_tier below) under a hash over everything under interfaces/, this script, Python's version and the
+# versions of the wheel packages the build depends on; VENV_DIR/.gazelle_interfaces.<tier>.sha256 holds the
+# hash a tier was installed with. When it matches and the tier's packages import, nothing is done.
+# Build trees live in <repo>/build/interfaces/<pkg>; cmake/ninja output goes to <build dir>/build.log.
 set -euo pipefail
 
-if [[ $# -ne 1 ]]; then
-  echo "usage: $0 VENV_DIR" >&2
+if [[ $# -lt 1 || $# -gt 2 || ! "${2:-all}" =~ ^(first|all)$ ]]; then
+  echo "usage: $0 VENV_DIR [first|all]" >&2
   exit 2
 fi
 if [[ ! -x "$1/bin/python" ]]; then
@@ -24,16 +27,30 @@ if [[ ! -x "$1/bin/python" ]]; then
 fi
 
 VENV_DIR="$(cd "$1" && pwd)"
+WANT="${2:-all}"
 REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 SCRIPT_REL="scripts/$(basename "${BASH_SOURCE[0]}")"
+# shellcheck source=scripts/_cache.sh
+source "$REPO_ROOT/scripts/_cache.sh"
 PY="$VENV_DIR/bin/python"
-STAMP="$VENV_DIR/.gazelle_interfaces.sha256"
 BUILD_ROOT="$REPO_ROOT/build/interfaces"
-# Build order: each depends on wheel packages and on packages built before it (installed into the
-# venv, which is the prefix cmake searches): moveit_msgs needs octomap_msgs and object_recognition_msgs.
-# moveit_msgs' two go first, so that the largest package builds beside the others, not after them.
-PKGS=(octomap_msgs object_recognition_msgs tf2_msgs simulation_interfaces gazebo_msgs control_msgs
-  controller_manager_msgs ros_gz_interfaces moveit_msgs)
+# Each package depends on wheel packages and on packages built before it (installed into the venv, which is
+# the prefix cmake searches): moveit_msgs needs octomap_msgs and object_recognition_msgs.
+declare -A TIER_PKGS=(
+  [first]="tf2_msgs simulation_interfaces gazebo_msgs ros_gz_interfaces"
+  [second]="octomap_msgs object_recognition_msgs control_msgs controller_manager_msgs moveit_msgs"
+)
+# What proves a tier installed: these import and load their C type support (a msg, srv and action of each
+# package where it has them).
+declare -A TIER_PROBES=(
+  [first]="tf2_msgs.msg.TFMessage tf2_msgs.action.LookupTransform simulation_interfaces.msg.Result
+    simulation_interfaces.srv.SpawnEntity simulation_interfaces.action.SimulateSteps gazebo_msgs.msg.ModelStates
+    gazebo_msgs.srv.SpawnEntity ros_gz_interfaces.msg.Altimeter"
+  [second]="control_msgs.action.FollowJointTrajectory control_msgs.msg.DynamicJointState
+    controller_manager_msgs.srv.SwitchController octomap_msgs.srv.GetOctomap
+    object_recognition_msgs.action.ObjectRecognition moveit_msgs.action.MoveGroup moveit_msgs.srv.GetPositionIK"
+)
+if [[ "$WANT" == first ]]; then TIERS=(first); else TIERS=(first second); fi
 # Wheel packages whose version change must trigger a rebuild.
 DEP_PKGS=(ament_cmake rosidl_default_generators rosidl_generator_py
   rosidl_typesupport_fastrtps_c builtin_interfaces std_msgs geometry_msgs
@@ -48,7 +65,7 @@ compute_hash() {
     (cd "$REPO_ROOT" &&
       find interfaces -type f ! -name '*.pyc' ! -path '*/__pycache__/*' -print0 |
       LC_ALL=C sort -z | xargs -0 sha256sum &&
-      sha256sum "$SCRIPT_REL")
+      sha256sum "$SCRIPT_REL" scripts/_cache.sh)
     "$PY" -c 'import sys; print("python", sys.version.split()[0])'
     local d xml
     for d in "${DEP_PKGS[@]}"; do
@@ -62,119 +79,84 @@ compute_hash() {
   } | sha256sum | cut -d' ' -f1
 }
 
-# Import every package and load its C type support (msg, srv and action).
-imports_ok() {
-  "$PY" - <<'EOF' >/dev/null 2>&1
-from tf2_msgs.msg import TFMessage
-from tf2_msgs.action import LookupTransform
-from simulation_interfaces.msg import Result
-from simulation_interfaces.srv import SpawnEntity
-from simulation_interfaces.action import SimulateSteps
-from gazebo_msgs.msg import ModelStates
-from gazebo_msgs.srv import SpawnEntity as GzSpawnEntity
-from control_msgs.action import FollowJointTrajectory
-from control_msgs.msg import DynamicJointState
-from controller_manager_msgs.srv import SwitchController
-from ros_gz_interfaces.msg import Altimeter
-from octomap_msgs.srv import GetOctomap
-from object_recognition_msgs.action import ObjectRecognition
-from moveit_msgs.action import MoveGroup
-from moveit_msgs.srv import GetPositionIK
-for t in (TFMessage, LookupTransform, Result, SpawnEntity, SimulateSteps,
-          ModelStates, GzSpawnEntity, FollowJointTrajectory, DynamicJointState,
-          SwitchController, Altimeter, GetOctomap, ObjectRecognition, MoveGroup, GetPositionIK):
-    type(t).__import_type_support__()
-EOF
+imports_ok() {  # imports_ok TIER
+  # shellcheck disable=SC2086  # the probes are words
+  "$PY" -c '
+import importlib, sys
+for name in sys.argv[1:]:
+    module, _, cls = name.rpartition(".")
+    type(getattr(importlib.import_module(module), cls)).__import_type_support__()
+' ${TIER_PROBES[$1]} >/dev/null 2>&1
 }
 
 HASH="$(compute_hash)"
 
-# The built packages are cached by content outside the clone, so a second clone or a new venv on the
-# same machine installs them in seconds: CACHE/<hash>/files.tar holds every file their `make install`
-# wrote (CMake's install_manifest.txt), relative to the venv; files.sha256 its checksum; prefix the venv
-# it was built in (two kinds of text file name it: rewritten to this venv on the way in). The folder is
-# owner-only; an entry that another user owns, that fails its checksum, or whose packages then do not
-# import, is reported and rebuilt, never trusted.
-CACHE_ROOT="${GAZELLE_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/gazelle}/interfaces"
-ENTRY="$CACHE_ROOT/$HASH-$(uname -m)"
+# Each tier's built packages are cached by content outside the clone, so a second clone or a new venv on the
+# same machine installs them in seconds: CACHE/<hash>-<tier>-<machine>/files.tar holds every file the tier's
+# `cmake --install` wrote (CMake's install_manifest.txt), relative to the venv; files.sha256 its checksum;
+# prefix the venv it was built in (two kinds of text file name it: rewritten to this venv on the way in). An
+# entry that is not ours, fails its checksum or does not unpack (scripts/_cache.sh), or whose packages then
+# do not import, is reported and rebuilt, never trusted.
+CACHE_ROOT="$CACHE_HOME/interfaces"
+entry_of() { echo "$CACHE_ROOT/$HASH-$1-$(uname -m)"; }
+stamp_of() { echo "$VENV_DIR/.gazelle_interfaces.$1.sha256"; }
 
-private_dir() {  # create $1 owner-only, or check that an existing one is ours and not writable by others
-  mkdir -p -m 700 "$1" 2>/dev/null || return 1
-  [[ "$(stat -c %u "$1")" == "$(id -u)" ]] || return 1
-  (( (8#$(stat -c %a "$1") & 8#022) == 0 )) || return 1
-}
-
-restore_from_cache() {
-  [[ -d "$ENTRY" ]] || return 1
-  local start=$SECONDS
-  if ! private_dir "$CACHE_ROOT" || [[ "$(stat -c %u "$ENTRY")" != "$(id -u)" ]]; then
-    echo "build_interfaces: cache $CACHE_ROOT belongs to another user or is writable by others; not used" >&2
+restore_tier() {  # restore_tier TIER
+  local tier="$1" entry start=$SECONDS old_prefix
+  entry="$(entry_of "$tier")"
+  cache_usable build_interfaces "$CACHE_ROOT" "$entry" rebuilding || return 1
+  if [[ ! -f "$entry/prefix" ]]; then
+    echo "build_interfaces: cached entry $entry is incomplete or corrupt; rebuilding" >&2
+    rm -rf "$entry"
     return 1
   fi
-  if ! [[ -f "$ENTRY/files.tar" && -f "$ENTRY/files.sha256" && -f "$ENTRY/prefix" ]] ||
-      [[ "$(sha256sum "$ENTRY/files.tar" | cut -d' ' -f1)" != "$(cat "$ENTRY/files.sha256")" ]]; then
-    echo "build_interfaces: cached build $ENTRY is incomplete or corrupt; rebuilding" >&2
-    rm -rf "$ENTRY"
-    return 1
-  fi
-  local old_prefix
-  old_prefix="$(cat "$ENTRY/prefix")"
-  if ! tar -xf "$ENTRY/files.tar" -C "$VENV_DIR" --no-same-owner 2>/dev/null; then
-    echo "build_interfaces: cached build $ENTRY does not unpack; rebuilding" >&2
-    rm -rf "$ENTRY"
-    return 1
-  fi
+  old_prefix="$(cat "$entry/prefix")"
+  cache_unpack build_interfaces "$entry" "$VENV_DIR" rebuilding || return 1
   if [[ "$old_prefix" != "$VENV_DIR" ]]; then
-    tar -tf "$ENTRY/files.tar" | grep -E '(local_setup\.[a-z]+|Export\.cmake|\.dsv|\.sh)$' |
+    tar -tf "$entry/files.tar" | grep -E '(local_setup\.[a-z]+|Export\.cmake|\.dsv|\.sh)$' |
       while read -r f; do
         [[ -f "$VENV_DIR/$f" ]] && sed -i "s|$old_prefix|$VENV_DIR|g" "$VENV_DIR/$f"
       done
   fi
-  if ! imports_ok; then
-    echo "build_interfaces: cached build $ENTRY does not import here; rebuilding" >&2
-    rm -rf "$ENTRY"
+  if ! imports_ok "$tier"; then
+    echo "build_interfaces: cached entry $entry does not import here; rebuilding" >&2
+    rm -rf "$entry"
     return 1
   fi
-  echo "interfaces installed from the cache ($ENTRY) in $((SECONDS - start))s"
+  echo "interfaces: the $tier tier installed from the cache ($entry) in $((SECONDS - start))s"
 }
 
-save_to_cache() {
-  private_dir "$CACHE_ROOT" || { echo "build_interfaces: cannot use the cache $CACHE_ROOT; not saved" >&2; return 0; }
-  local tmp="$CACHE_ROOT/.tmp.$$"
-  rm -rf "$tmp"
-  mkdir -m 700 "$tmp"
-  local pkg
-  for pkg in "${PKGS[@]}"; do  # CMake writes the manifest without a final newline
+save_tier() {  # save_tier TIER
+  local tier="$1" tmp pkg
+  tmp="$(cache_new "$CACHE_ROOT")" || { echo "build_interfaces: cannot use the cache $CACHE_ROOT; not saved" >&2; return 0; }
+  for pkg in ${TIER_PKGS[$tier]}; do  # CMake writes the manifest without a final newline
     { cat "$BUILD_ROOT/$pkg/install_manifest.txt"; echo; } | sed -n "s|^$VENV_DIR/||p"
   done | LC_ALL=C sort -u >"$tmp/files.list"
   if tar -cf "$tmp/files.tar" -C "$VENV_DIR" -T "$tmp/files.list" 2>/dev/null; then
-    sha256sum "$tmp/files.tar" | cut -d' ' -f1 >"$tmp/files.sha256"
     echo "$VENV_DIR" >"$tmp/prefix"
     rm -f "$tmp/files.list"
-    rm -rf "$ENTRY"
-    mv "$tmp" "$ENTRY" && echo "cached the interface build in $ENTRY"
-    # keep the three newest builds (each ~100 MB)
-    find "$CACHE_ROOT" -mindepth 1 -maxdepth 1 -type d ! -name '.tmp.*' -printf '%T@ %p\n' |
-      sort -rn | tail -n +4 | cut -d' ' -f2- | while read -r old; do rm -rf "$old"; done
+    cache_commit "$CACHE_ROOT" "$tmp" "$(entry_of "$tier")" 6  # three builds of each tier (~50 MB each)
+    echo "interfaces: cached the $tier tier in $(entry_of "$tier")"
   else
     rm -rf "$tmp"
-    echo "build_interfaces: could not cache the build" >&2
+    echo "build_interfaces: could not cache the $tier tier" >&2
   fi
 }
 
-if [[ -f "$STAMP" && "$(cat "$STAMP")" == "$HASH" ]] && imports_ok; then
-  echo "interfaces up to date"
-  # built here before the cache existed: keep it for the next clone
-  if [[ ! -d "$ENTRY" && -f "$BUILD_ROOT/moveit_msgs/install_manifest.txt" ]]; then save_to_cache; fi
-  exit 0
-fi
-
-if restore_from_cache; then
-  echo "$HASH" >"$STAMP"
-  exit 0
-fi
+BUILD_TIERS=()
+for tier in "${TIERS[@]}"; do
+  stamp="$(stamp_of "$tier")"
+  if [[ -f "$stamp" && "$(cat "$stamp")" == "$HASH" ]] && imports_ok "$tier"; then
+    echo "interfaces: the $tier tier is up to date"
+  elif restore_tier "$tier"; then
+    echo "$HASH" >"$stamp"
+  else
+    BUILD_TIERS+=("$tier")
+  fi
+done
+((${#BUILD_TIERS[@]})) || exit 0
 if [[ -n "${GAZELLE_INTERFACES_NO_BUILD:-}" ]]; then  # the cache's own test: never build
-  echo "build_interfaces: no usable cached build at $ENTRY" >&2
+  for tier in "${BUILD_TIERS[@]}"; do echo "build_interfaces: no usable cached build at $(entry_of "$tier")" >&2; done
   exit 3
 fi
 
@@ -184,7 +166,12 @@ export AMENT_PREFIX_PATH="$VENV_DIR"
 export CMAKE_PREFIX_PATH="$VENV_DIR"
 unset COLCON_PREFIX_PATH PYTHONPATH || true
 
-rm -f "$STAMP"
+PKGS=()
+for tier in "${BUILD_TIERS[@]}"; do
+  rm -f "$(stamp_of "$tier")"
+  # shellcheck disable=SC2206  # package names are words
+  PKGS+=(${TIER_PKGS[$tier]})
+done
 mkdir -p "$BUILD_ROOT"
 
 # Ninja (the pinned wheel in the venv) when there is one, else make. These are message structs and
@@ -220,16 +207,22 @@ build_pkg() {
   echo "built $pkg in $((SECONDS - start))s"
 }
 
-# Two packages at a time (a package's code generators are single-threaded Python, so a second build
-# fills the cores they leave idle); moveit_msgs starts once the two it depends on are installed.
+# Two packages at a time (a package's code generators are single-threaded Python, so a second build fills
+# the cores they leave idle). moveit_msgs, the largest, starts once the two it depends on are installed;
+# they go first, so that it builds beside the others, not after them.
 declare -A PID_OF=() DONE=()
 LAST="moveit_msgs"
 QUEUE=()
-for pkg in "${PKGS[@]}"; do [[ "$pkg" == "$LAST" ]] || QUEUE+=("$pkg"); done
+for pkg in octomap_msgs object_recognition_msgs "${PKGS[@]}"; do
+  if [[ "$pkg" != "$LAST" && " ${PKGS[*]} " == *" $pkg "* && " ${QUEUE[*]} " != *" $pkg "* ]]; then
+    QUEUE+=("$pkg")
+  fi
+done
+[[ " ${PKGS[*]} " == *" $LAST "* ]] || DONE[$LAST]=1  # not asked for
 running=0
 build_started=$SECONDS
 while ((${#QUEUE[@]} || running)) || [[ -z "${DONE[$LAST]:-}${PID_OF[$LAST]:-}" ]]; do
-  if [[ -z "${PID_OF[$LAST]:-}" && -n "${DONE[octomap_msgs]:-}" && -n "${DONE[object_recognition_msgs]:-}" ]]; then
+  if [[ -z "${PID_OF[$LAST]:-}${DONE[$LAST]:-}" && -n "${DONE[octomap_msgs]:-}" && -n "${DONE[object_recognition_msgs]:-}" ]]; then
     next="$LAST"
   elif ((${#QUEUE[@]})) && ((running < 2)); then
     next="${QUEUE[0]}"; QUEUE=("${QUEUE[@]:1}")
@@ -258,11 +251,13 @@ while ((${#QUEUE[@]} || running)) || [[ -z "${DONE[$LAST]:-}${PID_OF[$LAST]:-}" 
     fi
   done
 done
-echo "built ${#PKGS[@]} interface packages in $((SECONDS - build_started))s"
+echo "built ${#PKGS[@]} interface packages (tiers: ${BUILD_TIERS[*]}) in $((SECONDS - build_started))s"
 
-if ! imports_ok; then
-  echo "build_interfaces: packages built but do not import with $PY" >&2
-  exit 1
-fi
-echo "$HASH" >"$STAMP"
-save_to_cache
+for tier in "${BUILD_TIERS[@]}"; do
+  if ! imports_ok "$tier"; then
+    echo "build_interfaces: the $tier tier's packages built but do not import with $PY" >&2
+    exit 1
+  fi
+  echo "$HASH" >"$(stamp_of "$tier")"
+  save_tier "$tier"
+done

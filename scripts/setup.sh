@@ -7,7 +7,8 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 VENV="$ROOT/.venv"
 say() { printf '[setup] %s\n' "$*"; }
-# `./demo.sh` without --snapshot/--record needs no browser: GAZELLE_SETUP_NO_BROWSER=1 skips chromium
+# `./demo.sh` without --snapshot/--record needs no browser: GAZELLE_SETUP_NO_BROWSER=1 skips chromium;
+# GAZELLE_SETUP_INTERFACES=first builds only the first tier of interface packages (step 4), what the demo needs
 UV_VERSION=0.13.9
 SETUP_START=$SECONDS
 step_start=$SECONDS
@@ -112,10 +113,10 @@ fi
 #     same cycles run in Python.
 "$VENV/bin/python" -c 'from gazelle.physics import _native; _native.main()' || true
 
-# 4. Our interface packages (tf2_msgs, simulation_interfaces, gazebo_msgs, control_msgs,
-#    controller_manager_msgs), rebuilt only on change.
+# 4. Our interface packages, rebuilt only on change: the first tier (tf2_msgs, simulation_interfaces,
+#    gazebo_msgs, ros_gz_interfaces), then ros2_control's and MoveIt's (scripts/build_interfaces.sh).
 step_start=$SECONDS
-"$ROOT/scripts/build_interfaces.sh" "$VENV"
+"$ROOT/scripts/build_interfaces.sh" "$VENV" "${GAZELLE_SETUP_INTERFACES:-all}"
 took "the interface packages"
 
 # 5. The venv is a ROS prefix: gazelle's stand-ins for gazebo_ros, robot_state_publisher,

@@ -18,9 +18,9 @@ from _paths import REPO
 SCRIPT = REPO / "scripts" / "build_interfaces.sh"
 
 
-def _run(venv: Path, cache: Path) -> subprocess.CompletedProcess:
+def _run(venv: Path, cache: Path, *tier: str) -> subprocess.CompletedProcess:
     env = {**os.environ, "GAZELLE_CACHE_DIR": str(cache), "GAZELLE_INTERFACES_NO_BUILD": "1"}
-    return subprocess.run(["bash", str(SCRIPT), str(venv)], capture_output=True, text=True, env=env, timeout=300)
+    return subprocess.run(["bash", str(SCRIPT), str(venv), *tier], capture_output=True, text=True, env=env, timeout=300)
 
 
 def _entry(tar_bytes: bytes, prefix: str) -> dict[str, bytes]:
@@ -37,6 +37,17 @@ def _write(entry: Path, files: dict[str, bytes]) -> None:
         (entry / name).write_bytes(content)
 
 
+def _fake_tier(package: str, prefix: str) -> dict[str, bytes]:
+    """A cache entry of one file that names the venv it was built in."""
+    buf = io.BytesIO()
+    with tarfile.open(fileobj=buf, mode="w") as tar:
+        data = f"export PREFIX={prefix}/share/{package}\n".encode()
+        info = tarfile.TarInfo(f"share/{package}/local_setup.sh")
+        info.size = len(data)
+        tar.addfile(info, io.BytesIO(data))
+    return _entry(buf.getvalue(), prefix)
+
+
 def test_a_cached_build_installs_and_a_corrupt_one_is_rebuilt_not_used(tmp_path: Path) -> None:
     venv = tmp_path / "venv"
     (venv / "bin").mkdir(parents=True)
@@ -46,29 +57,38 @@ def test_a_cached_build_installs_and_a_corrupt_one_is_rebuilt_not_used(tmp_path:
     cache = tmp_path / "cache"
     first = _run(venv, cache)
     assert first.returncode == 3, first.stderr
-    entry = Path(re.search(r"no usable cached build at (\S+)", first.stderr).group(1))  # type: ignore[union-attr]
-    assert entry.parent == cache / "interfaces"
+    # one entry per tier: what any world needs, then ros2_control's and MoveIt's
+    entries = [Path(p) for p in re.findall(r"no usable cached build at (\S+)", first.stderr)]
+    assert [e.name.split("-")[1] for e in entries] == ["first", "second"], first.stderr
+    assert all(e.parent == cache / "interfaces" for e in entries)
+    only_first = _run(venv, cache, "first")
+    assert only_first.returncode == 3 and only_first.stderr.count("no usable cached build") == 1, only_first.stderr
 
-    buf = io.BytesIO()
-    with tarfile.open(fileobj=buf, mode="w") as tar:
-        data = b"export PREFIX=/old/venv/share/fake_msgs\n"
-        info = tarfile.TarInfo("share/fake_msgs/local_setup.sh")
-        info.size = len(data)
-        tar.addfile(info, io.BytesIO(data))
-    good = _entry(buf.getvalue(), "/old/venv")
-    _write(entry, good)
-    ok = _run(venv, cache)
+    good = {e: _fake_tier(f"fake_{i}_msgs", "/old/venv") for i, e in enumerate(entries)}
+    _write(entries[0], good[entries[0]])
+    ok = _run(venv, cache, "first")  # the demo's set-up: the first tier alone
     assert ok.returncode == 0, ok.stderr
-    assert "installed from the cache" in ok.stdout
-    assert (venv / "share" / "fake_msgs" / "local_setup.sh").read_text() == f"export PREFIX={venv}/share/fake_msgs\n"
+    assert "the first tier installed from the cache" in ok.stdout and "second" not in ok.stdout + ok.stderr
+    assert (
+        venv / "share" / "fake_0_msgs" / "local_setup.sh"
+    ).read_text() == f"export PREFIX={venv}/share/fake_0_msgs\n"
+    _write(entries[1], good[entries[1]])
+    both = _run(venv, cache)
+    assert both.returncode == 0, both.stderr
+    assert "the first tier is up to date" in both.stdout and "the second tier installed from the cache" in both.stdout
 
-    for broken in ({**good, "files.tar": good["files.tar"][:700]}, {**good, "files.sha256": b"0" * 64 + b"\n"}):
-        (venv / ".gazelle_interfaces.sha256").unlink(missing_ok=True)
+    entry = entries[0]
+    for broken in (
+        {**good[entry], "files.tar": good[entry]["files.tar"][:700]},
+        {**good[entry], "files.sha256": b"0" * 64 + b"\n"},
+    ):
+        (venv / ".gazelle_interfaces.first.sha256").unlink(missing_ok=True)
         _write(entry, broken)
         bad = _run(venv, cache)
         assert bad.returncode == 3, bad.stdout
         assert "incomplete or corrupt; rebuilding" in bad.stderr
         assert not entry.exists()  # not trusted again
+        assert "the second tier is up to date" in bad.stdout  # the other tier is not touched
 
 
 BYTECODE = REPO / "scripts" / "bytecode.sh"
@@ -109,7 +129,7 @@ def test_the_wheels_bytecode_is_cached_reused_and_a_corrupt_or_stale_entry_is_no
     first = _bytecode(site, cache)
     assert first.returncode == 0 and first.stdout.strip() == "compiled", first.stderr
     (entry,) = (cache / "bytecode").iterdir()
-    assert (entry / "pyc.tar").is_file() and (cache / "bytecode").stat().st_mode & 0o077 == 0
+    assert (entry / "files.tar").is_file() and (cache / "bytecode").stat().st_mode & 0o077 == 0
     assert _pyc_matches(mod)
 
     for pyc in site.rglob("*.pyc"):  # a new clone: the same sources, no bytecode yet
@@ -118,8 +138,8 @@ def test_the_wheels_bytecode_is_cached_reused_and_a_corrupt_or_stale_entry_is_no
     assert again.returncode == 0 and again.stdout.strip() == "cached", again.stderr
     assert _pyc_matches(mod)
 
-    tar = (entry / "pyc.tar").read_bytes()
-    for broken in ({"pyc.tar": tar[: len(tar) // 2]}, {"pyc.sha256": b"0" * 64 + b"\n"}):
+    tar = (entry / "files.tar").read_bytes()
+    for broken in ({"files.tar": tar[: len(tar) // 2]}, {"files.sha256": b"0" * 64 + b"\n"}):
         for name, content in broken.items():
             (entry / name).write_bytes(content)
         for pyc in site.rglob("*.pyc"):
@@ -129,8 +149,8 @@ def test_the_wheels_bytecode_is_cached_reused_and_a_corrupt_or_stale_entry_is_no
         assert "incomplete or corrupt; compiling" in bad.stderr
         assert (
             _pyc_matches(mod)
-            and hashlib.sha256((entry / "pyc.tar").read_bytes()).hexdigest()
-            == (entry / "pyc.sha256").read_text().strip()
+            and hashlib.sha256((entry / "files.tar").read_bytes()).hexdigest()
+            == (entry / "files.sha256").read_text().strip()
         )  # rebuilt, whole
 
     for pyc in site.rglob("*.pyc"):

@@ -48,7 +48,7 @@ from ..systems import (
     UpdateInfo,
 )
 from ._cdr import raw_serializer, serialize_clock, serialized_joint_states
-from ._convert import FROM_ROS, ros_type, to_pose_msg, to_ros, to_time
+from ._convert import FROM_ROS, InterfaceMissing, ros_type, second_tier, to_pose_msg, to_ros, to_time
 from ._exposure import ServerRegistry
 from ._gazebo_services import GazeboServices
 from ._names import gz_topic_on_ros
@@ -350,7 +350,11 @@ class SimulationNode(GazeboServices):
 
     def _mirror(self, ep: Endpoint, topic: str) -> None:
         """A shared rclpy publisher (a sink on the endpoint) or a subscription for ``ep``, on ROS ``topic``."""
-        msg_class = ros_type(ep.msg_type)
+        try:
+            msg_class = ros_type(ep.msg_type)
+        except InterfaceMissing as missing:  # a tier the set-up has not built yet: that topic is not on ROS
+            logging.getLogger("gazelle.ros").warning(f"'{ep.owner}': {ep.topic} is not on ROS: {missing}")
+            return
         # a gazebo_ros plugin's topics are its own node's (see _plugin_nodes); the rest are this node's
         owner: Node = self.plugin_nodes.acquire(ep.node) if ep.node else self
         if ep.is_publisher:
@@ -448,11 +452,12 @@ class SimulationNode(GazeboServices):
         """A gazebo_ros plugin gets its node; a controller manager its node; a trajectory controller its
         action server."""
         from ..systems.ros2_control import ControllerManager
-        from ._control import ControllerManagerNode
 
         if isinstance(component, PluginNode):
             self.plugin_nodes.declare(component)
         elif isinstance(component, ControllerManager):
+            with second_tier():
+                from ._control import ControllerManagerNode
             node = ControllerManagerNode(self.sim, component, self.context)
             with self._lock:
                 self._managers[owner] = node

@@ -6,13 +6,11 @@ import dataclasses
 import importlib
 import math
 from array import array
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from typing import Any
 
 from builtin_interfaces.msg import Duration, Time
-from control_msgs.msg import DynamicJointState as DynamicJointStateMsg
-from control_msgs.msg import InterfaceValue
-from control_msgs.msg import JointTrajectoryControllerState as JtcStateMsg
 from gazebo_msgs.msg import ContactsState, ContactState
 from geometry_msgs.msg import Point, Quaternion, TransformStamped, Vector3, Wrench
 from geometry_msgs.msg import Pose as PoseMsg
@@ -20,7 +18,6 @@ from geometry_msgs.msg import Twist as TwistMsg
 from geometry_msgs.msg import TwistStamped as TwistStampedMsg
 from geometry_msgs.msg import Vector3Stamped as Vector3StampedMsg
 from geometry_msgs.msg import WrenchStamped as WrenchStampedMsg
-from moveit_msgs.msg import DisplayTrajectory as DisplayTrajectoryMsg
 from nav_msgs.msg import Odometry as OdometryMsg
 from ros_gz_interfaces.msg import Altimeter as AltimeterMsg
 from sensor_msgs.msg import CameraInfo as CameraInfoMsg
@@ -391,9 +388,9 @@ def to_joint_trajectory_msg(t: JointTrajectory) -> JointTrajectoryMsg:
     return msg
 
 
-def to_jtc_state_msg(s: TrajectoryControllerState) -> JtcStateMsg:
+def to_jtc_state_msg(s: TrajectoryControllerState) -> Any:
     """Bus payload -> control_msgs/JointTrajectoryControllerState."""
-    msg = JtcStateMsg(
+    msg = ros_type(MsgType.TRAJECTORY_CONTROLLER_STATE)(
         joint_names=list(s.joint_names),
         reference=to_trajectory_point_msg(s.reference),
         feedback=to_trajectory_point_msg(s.feedback),
@@ -404,12 +401,13 @@ def to_jtc_state_msg(s: TrajectoryControllerState) -> JtcStateMsg:
     return msg
 
 
-def to_dynamic_joint_state_msg(s: DynamicJointState) -> DynamicJointStateMsg:
+def to_dynamic_joint_state_msg(s: DynamicJointState) -> Any:
     """Bus payload -> control_msgs/DynamicJointState."""
-    msg = DynamicJointStateMsg(
+    interface_value = interface_class("control_msgs/msg/InterfaceValue")
+    msg = ros_type(MsgType.DYNAMIC_JOINT_STATE)(
         joint_names=list(s.joint_names),
         interface_values=[
-            InterfaceValue(interface_names=list(names), values=[float(v) for v in values])
+            interface_value(interface_names=list(names), values=[float(v) for v in values])
             for names, values in s.interface_values
         ],
     )
@@ -440,11 +438,18 @@ ROS_TYPES = {
     MsgType.ALTIMETER: AltimeterMsg,
     MsgType.FLOAT64_ARRAY: Float64MultiArray,
     MsgType.JOINT_TRAJECTORY: JointTrajectoryMsg,
-    MsgType.TRAJECTORY_CONTROLLER_STATE: JtcStateMsg,
-    MsgType.DYNAMIC_JOINT_STATE: DynamicJointStateMsg,
-    MsgType.DISPLAY_TRAJECTORY: DisplayTrajectoryMsg,
 }
-"""The rclpy message class for each bus message type."""
+"""The rclpy message class for each bus message type whose package is always there (on PyPI, or built by
+the set-up's first tier: see ``ARM_TYPES``)."""
+
+ARM_TYPES = {
+    MsgType.TRAJECTORY_CONTROLLER_STATE: "control_msgs/msg/JointTrajectoryControllerState",
+    MsgType.DYNAMIC_JOINT_STATE: "control_msgs/msg/DynamicJointState",
+    MsgType.DISPLAY_TRAJECTORY: "moveit_msgs/msg/DisplayTrajectory",
+}
+"""Bus message types of ros2_control and MoveIt, imported when first used: their packages are the set-up's
+second tier (``scripts/build_interfaces.sh``), which ``./demo.sh`` builds after the demo, so a world
+without arms runs before they exist."""
 
 TO_ROS = {
     MsgType.ODOMETRY: to_odometry_msg,
@@ -485,13 +490,58 @@ FROM_ROS = {
 
 
 def ros_type(kind: MsgType | DeclaredMessage) -> Any:
-    """The rclpy message class of an endpoint's kind: MsgType's from the table above, a declared one's
+    """The rclpy message class of an endpoint's kind: MsgType's from the tables above, a declared one's
     imported by its name (``sensor_msgs/msg/FluidPressure``)."""
-    found = ROS_TYPES.get(kind) if isinstance(kind, MsgType) else None
-    if found is not None:
-        return found
-    package, _msg, name = kind.value.partition("/msg/")
-    return getattr(importlib.import_module(f"{package}.msg"), name)
+    if isinstance(kind, MsgType):
+        found = ROS_TYPES.get(kind)
+        if found is not None:
+            return found
+        return interface_class(ARM_TYPES[kind])
+    return interface_class(kind.value)
+
+
+def interface_class(full_name: str) -> Any:
+    """The rclpy class of ``pkg/msg/Name`` (or ``srv``, ``action``), imported now; a package the set-up has
+    not built yet is an :class:`InterfaceMissing` that says how to build it."""
+    package, kind, name = full_name.split("/")
+    try:
+        module = importlib.import_module(f"{package}.{kind}")
+    except ModuleNotFoundError as e:
+        if e.name is not None and e.name.split(".")[0] == package:
+            raise InterfaceMissing(package) from None
+        raise
+    return getattr(module, name)
+
+
+ARM_PACKAGES = frozenset(
+    {"control_msgs", "controller_manager_msgs", "moveit_msgs", "octomap_msgs", "object_recognition_msgs"}
+)
+"""The set-up's second tier (``scripts/build_interfaces.sh``): the interfaces of ros2_control and MoveIt."""
+
+
+@contextmanager
+def second_tier() -> Iterator[None]:
+    """Imports inside it of a second-tier package that is not built yet raise :class:`InterfaceMissing`
+    (gazelle's modules that import control_msgs or moveit_msgs are loaded when a robot needs them)."""
+    try:
+        yield
+    except ModuleNotFoundError as e:
+        package = (e.name or "").split(".")[0]
+        if package in ARM_PACKAGES:
+            raise InterfaceMissing(package) from None
+        raise
+
+
+class InterfaceMissing(ImportError):
+    """An interface package gazelle builds (control_msgs, moveit_msgs, ...) is not in this venv yet."""
+
+    def __init__(self, package: str) -> None:
+        super().__init__(
+            f"{package} is not built in this venv yet (the set-up builds the ros2_control and MoveIt interfaces "
+            "after the demo): run scripts/setup.sh",
+            name=package,
+        )
+        self.package = package
 
 
 def to_ros(kind: MsgType | DeclaredMessage) -> Callable[[Any], Any]:
