@@ -21,7 +21,7 @@ status=0
 stamp() { cat "$ROOT/.venv/.gazelle_interfaces.$1.sha256" 2>/dev/null || true; }
 if [[ "$(stamp second)" != "$(stamp first)" ]]; then  # both tiers are stamped with the same content hash
   echo "[setup] the demo is done; now building ros2_control's and MoveIt's interface packages (control_msgs,"
-  echo "[setup] moveit_msgs, ...: about 3 minutes on 2 cores, once; Ctrl-C skips, scripts/setup.sh builds them later)"
+  echo "[setup] moveit_msgs, ...: about 4 minutes on 2 cores, once; Ctrl-C skips, scripts/setup.sh builds them later)"
   start=$SECONDS
   "$ROOT/scripts/build_interfaces.sh" "$ROOT/.venv" all || status=$((status ? status : $?))
   echo "[setup] ros2_control's and MoveIt's interfaces took $((SECONDS - start)) s"

@@ -353,7 +353,9 @@ class SimulationNode(GazeboServices):
         try:
             msg_class = ros_type(ep.msg_type)
         except InterfaceMissing as missing:  # a tier the set-up has not built yet: that topic is not on ROS
-            logging.getLogger("gazelle.ros").warning(f"'{ep.owner}': {ep.topic} is not on ROS: {missing}")
+            # a warning for a topic of the user's; gazelle's own (the viewer's planned path) is only told
+            level = logging.INFO if ep.owner.startswith("_") else logging.WARNING
+            logging.getLogger("gazelle.ros").log(level, f"'{ep.owner}': {ep.topic} is not on ROS: {missing}")
             return
         # a gazebo_ros plugin's topics are its own node's (see _plugin_nodes); the rest are this node's
         owner: Node = self.plugin_nodes.acquire(ep.node) if ep.node else self
