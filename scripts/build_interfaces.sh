@@ -7,8 +7,9 @@
 # Two tiers. The first is what any world needs: tf2_msgs, simulation_interfaces, gazebo_msgs and
 # ros_gz_interfaces. The second is ros2_control's and MoveIt's: control_msgs, controller_manager_msgs,
 # octomap_msgs, object_recognition_msgs and moveit_msgs (gazelle imports them only when a robot needs
-# them: gazelle/ros/_convert.py ARM_PACKAGES). `first` builds the first tier only (./demo.sh starts the demo
-# after it and builds the second after the demo); `all` (the default) both, scheduled together.
+# them: gazelle/ros/_convert.py ARM_PACKAGES). `first` builds the first tier only, and takes the second
+# from the cache when it is there (./demo.sh starts the demo after it and builds the second after the demo);
+# `all` (the default) both, scheduled together.
 #
 # Each tier is cached by content outside the clone (~/.cache/gazelle/interfaces, scripts/_cache.sh; see
 # restore_tier below) under a hash over everything under interfaces/, this script, Python's version and the
@@ -154,6 +155,11 @@ for tier in "${TIERS[@]}"; do
     BUILD_TIERS+=("$tier")
   fi
 done
+# `first` takes the second tier too when the cache has it (seconds), never building it
+if [[ "$WANT" == first && ! ( -f "$(stamp_of second)" && "$(cat "$(stamp_of second)")" == "$HASH" ) ]] &&
+    [[ -d "$(entry_of second)" ]] && restore_tier second; then
+  echo "$HASH" >"$(stamp_of second)"
+fi
 ((${#BUILD_TIERS[@]})) || exit 0
 if [[ -n "${GAZELLE_INTERFACES_NO_BUILD:-}" ]]; then  # the cache's own test: never build
   for tier in "${BUILD_TIERS[@]}"; do echo "build_interfaces: no usable cached build at $(entry_of "$tier")" >&2; done

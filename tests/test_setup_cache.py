@@ -76,6 +76,18 @@ def test_a_cached_build_installs_and_a_corrupt_one_is_rebuilt_not_used(tmp_path:
     both = _run(venv, cache)
     assert both.returncode == 0, both.stderr
     assert "the first tier is up to date" in both.stdout and "the second tier installed from the cache" in both.stdout
+    again = _run(venv, cache, "first")  # nothing to do
+    assert again.returncode == 0 and "installed" not in again.stdout, again.stdout
+    other = tmp_path / "other_venv"  # a second clone's demo takes the second tier too when it is cached
+    (other / "bin").mkdir(parents=True)
+    (other / "bin" / "python").write_bytes(python.read_bytes())
+    (other / "bin" / "python").chmod(0o755)
+    second_clone = _run(other, cache, "first")
+    assert second_clone.returncode == 0, second_clone.stderr
+    assert "the second tier installed from the cache" in second_clone.stdout, second_clone.stdout
+    assert (other / ".gazelle_interfaces.second.sha256").read_text() == (
+        venv / ".gazelle_interfaces.second.sha256"
+    ).read_text()
 
     entry = entries[0]
     for broken in (
