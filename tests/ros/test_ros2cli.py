@@ -101,7 +101,9 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
 
     call = r["call"]
     assert call.returncode == 0, call.stderr
-    assert "model_names:" in call.stdout and "- bot" in call.stdout and "success: true" in call.stdout
+    # Jazzy's ros2cli prints the response's repr (ros2service/verb/call.py)
+    assert "response:\ngazebo_msgs.srv.GetModelList_Response(" in call.stdout, call.stdout
+    assert "model_names=['ground_plane', 'bot']" in call.stdout and "success=True" in call.stdout, call.stdout
     assert "/spawn_entity [gazebo_msgs/srv/SpawnEntity]" in r["service list"].stdout
     # the diff drive plugin is its own node, named as in Gazebo, its configuration its parameters
     nodes = r["node list"].stdout.split()
@@ -250,3 +252,75 @@ def test_a_reader_that_goes_away_ends_a_verb_quietly() -> None:
     ros2.stdout.close()  # the reader goes away before the first line (after one, the rest may fit the pipe)
     assert ros2.wait(60) == 141
     assert "Traceback" not in ros2.stderr.read().decode()
+
+
+def test_topic_pub_waits_for_its_subscriber_and_stamps_header_auto_as_ros2cli(ros_client) -> None:
+    """ros2cli Jazzy's `ros2 topic pub` (ros2topic/verb/pub.py, rosidl_runtime_py/set_message.py): `--once`
+    waits for a matching subscription however long it takes (gazelle's gave up after 5 s and published to
+    nobody), `--max-wait-time-secs` bounds that wait, and `header: auto` is stamped with the node's clock at
+    each publish (`-s`: /clock's time, which this test drives). Before: `header: auto` did not fit the field,
+    and the two flags were unknown."""
+    import os
+
+    from builtin_interfaces.msg import Time
+    from geometry_msgs.msg import TwistStamped
+
+    topic = f"/stamped_{os.getpid()}"
+    timed_out = ros2("topic", "pub", "--once", "--max-wait-time-secs", "1", topic, "geometry_msgs/msg/TwistStamped")
+    assert timed_out.returncode == 1, timed_out.stdout + timed_out.stderr
+    assert "Timed out waiting for subscribers: Expected 1 subcribers but only got 0" in timed_out.stderr
+    assert "Waiting for at least 1 matching subscription(s)..." in timed_out.stdout
+
+    values = "{header: auto, twist: {linear: {x: 0.25}}}"
+    pub = start([ROS2, "topic", "pub", "--once", "-s", topic, "geometry_msgs/msg/TwistStamped", values], "ros2 pub")
+    pub.wait_line("Waiting for at least 1 matching subscription(s)...", 30)
+    clock = ros_client.node.create_publisher(Clock, "/clock", 10)
+    ticks_after_match: list[int] = []
+
+    def tick() -> bool:  # the simulated time stands at 42.5 s; the verb's clock hears it a few times
+        clock.publish(Clock(clock=Time(sec=42, nanosec=500_000_000)))
+        if clock.get_subscription_count() > 0:
+            ticks_after_match.append(1)
+        return len(ticks_after_match) >= 25
+
+    wait_for(tick, 30, "the verb's clock to hear /clock")
+    got: list[TwistStamped] = []
+    ros_client.node.create_subscription(TwistStamped, topic, got.append, 10)
+    wait_for(lambda: got, 30, "the message, published once the subscription matched")
+    assert pub.wait(30) == 0, pub.output
+    assert got[0].twist.linear.x == 0.25
+    assert (got[0].header.stamp.sec, got[0].header.stamp.nanosec) == (42, 500_000_000)
+    assert len(got) == 1 and "publishing #1: geometry_msgs.msg.TwistStamped(" in pub.output
+
+
+def test_service_call_waits_for_its_service_and_prints_as_ros2cli(ros_client) -> None:
+    """ros2cli Jazzy's `ros2 service call` (ros2service/verb/call.py) waits for the service however long it
+    takes, saying "waiting for service to become available..." (gazelle's gave up after 10 s), and prints
+    the request and the response as their reprs (gazelle's printed YAML)."""
+    import os
+
+    from std_srvs.srv import SetBool
+
+    name = f"/switch_{os.getpid()}"
+    call = start([ROS2, "service", "call", name, "std_srvs/srv/SetBool", "{data: true}"], "ros2 service call")
+    call.wait_line("waiting for service to become available...", 30)
+    asked: list = []
+
+    def answer(request, response):
+        asked.append(request.data)
+        response.success, response.message = True, "switched"
+        return response
+
+    ros_client.node.create_service(SetBool, name, answer)
+    assert call.wait(30) == 0, call.output
+    assert asked == [True]
+    assert "requester: making request: std_srvs.srv.SetBool_Request(data=True)" in call.output, call.output
+    assert "response:\nstd_srvs.srv.SetBool_Response(success=True, message='switched')" in call.output, call.output
+    piped = subprocess.run(  # the values from standard input (ros2cli's --stdin)
+        [ROS2, "service", "call", name, "std_srvs/srv/SetBool", "--stdin"],
+        input="data: false\n",
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert piped.returncode == 0 and asked == [True, False], piped.stdout + piped.stderr

@@ -28,8 +28,10 @@ def main(argv: list[str]) -> int:
     goal = sub.add_parser("send_goal", help="Send an action goal")
     goal.add_argument("action_name")
     goal.add_argument("action_type")
-    goal.add_argument("goal", nargs="?", default="{}")
-    goal.add_argument("-f", "--feedback", action="store_true")
+    source = goal.add_mutually_exclusive_group()
+    source.add_argument("goal", nargs="?", default="{}", help="the goal's fields in YAML")
+    source.add_argument("--stdin", action="store_true", help="read the goal from standard input")
+    goal.add_argument("-f", "--feedback", action="store_true", help="echo the goal's feedback")
     args = p.parse_args(argv)
     try:
         with cli_node("ros2action") as node:
@@ -98,11 +100,14 @@ def _type(node: Any, args: argparse.Namespace) -> int:
 
 
 def _send_goal(node: Any, args: argparse.Namespace) -> int:
+    """As ros2cli Jazzy's ``send_goal()`` (ros2action/verb/send_goal.py): wait for the server however long it
+    takes, send the goal, print its feedback with ``-f``, and its result and final status; Ctrl-C while it
+    runs cancels it."""
     import rclpy
     from rclpy.action.client import ActionClient
 
     cls = get_interface(args.action_type, "action")
-    goal = set_fields(cls.Goal(), parse_values(args.goal))
+    goal = set_fields(cls.Goal(), parse_values(sys.stdin.read() if args.stdin else args.goal))
     client = ActionClient(node, cls, args.action_name)
     print("Waiting for an action server to become available...", flush=True)
     client.wait_for_server()

@@ -25,17 +25,23 @@ a few milliseconds, too slow for `ros2 topic echo` at 1 kHz)."""
 
 
 @contextmanager
-def cli_node(name: str = "ros2cli") -> Iterator[Any]:
+def cli_node(name: str = "ros2cli", *, node_name: str | None = None, use_sim_time: bool = False) -> Iterator[Any]:
     """An initialised rclpy context with a hidden node and its executor (see :func:`spin_once`), shut
-    down on exit."""
+    down on exit. ``node_name`` names the node exactly (``ros2 topic pub -n``); ``use_sim_time`` (ros2cli's
+    ``-s``) makes its clock follow /clock."""
     import rclpy
     from rclpy.executors import SingleThreadedExecutor
+    from rclpy.parameter import Parameter
     from rclpy.utilities import get_default_context, try_shutdown
 
     rclpy.init(args=[])
     context = get_default_context()
     try:
-        node = rclpy.create_node(f"_{name}_{os.getpid()}", start_parameter_services=False)
+        node = rclpy.create_node(
+            node_name or f"_{name}_{os.getpid()}",
+            start_parameter_services=False,
+            parameter_overrides=[Parameter("use_sim_time", value=True)] if use_sim_time else [],
+        )
         executor = SingleThreadedExecutor()
         executor.add_node(node)
     except Exception as err:

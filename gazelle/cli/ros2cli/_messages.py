@@ -4,8 +4,10 @@ conventions: fields in definition order, nested mappings, arrays as block lists,
 from __future__ import annotations
 
 import array
+import functools
 import importlib
 from collections import OrderedDict
+from collections.abc import Callable
 from typing import Any
 
 import yaml
@@ -106,8 +108,20 @@ def to_csv(msg: Any) -> str:
     return ",".join(values)
 
 
-def set_fields(msg: Any, values: Any, where: str = "") -> Any:
+StampSetter = Callable[[Any], None]
+"""Sets one ``builtin_interfaces/Time`` field of a message being published to the time it is given."""
+
+
+def set_fields(msg: Any, values: Any, where: str = "", stamps: list[StampSetter] | None = None) -> Any:
     """Fill ``msg`` from a mapping parsed from YAML (nested, lists; absent fields keep their defaults).
+
+    ``stamps``: given (``ros2 topic pub`` gives it), a ``std_msgs/Header`` field whose value is ``auto``
+    keeps its defaults and the setter of its ``stamp`` is appended, and so is the setter of a
+    ``builtin_interfaces/Time`` field whose value is ``now``: the caller stamps every message it publishes
+    with its clock's time, as rosidl_runtime_py's ``set_message_fields(..., expand_header_auto=True,
+    expand_time_now=True)`` does for ros2cli (rosidl_runtime_py/set_message.py, Jazzy). Without
+    ``stamps`` (``service call``, ``action send_goal``, as upstream) ``auto`` and ``now`` are values like
+    any other, and do not fit.
 
     Raises:
         InterfaceError: a field the type does not have, or a value of the wrong kind (the field named).
@@ -124,15 +138,17 @@ def set_fields(msg: Any, values: Any, where: str = "") -> Any:
             )
         current = getattr(msg, key)
         path = f"{where}{key}."
+        if stamps is not None and _expand_stamp(msg, key, current, value, stamps):
+            continue
         try:
             if hasattr(current, "get_fields_and_field_types"):
-                set_fields(current, value, path)
+                set_fields(current, value, path, stamps)
             elif isinstance(current, (list, tuple)) or type(current).__name__ in ("ndarray", "array"):
                 ftype = fields[key]
                 inner = ftype.split("<", 1)[1].rstrip(">") if "<" in ftype else ftype.split("[", 1)[0]
                 if "/" in inner and isinstance(value, list):
                     cls = get_interface(inner)
-                    setattr(msg, key, [set_fields(cls(), v, path) for v in value])
+                    setattr(msg, key, [set_fields(cls(), v, path, stamps) for v in value])
                 else:
                     setattr(msg, key, value)
             elif isinstance(current, float) and isinstance(value, int) and not isinstance(value, bool):
@@ -142,6 +158,18 @@ def set_fields(msg: Any, values: Any, where: str = "") -> Any:
         except (AssertionError, TypeError, ValueError) as err:
             raise InterfaceError(f"field '{where + key}': {value!r} does not fit ({err})") from None
     return msg
+
+
+def _expand_stamp(msg: Any, key: str, current: Any, value: Any, stamps: list[StampSetter]) -> bool:
+    """``header: auto`` or ``<time field>: now`` (see :func:`set_fields`): its setter appended; whether it was one."""
+    kind = type_name_of(type(current)) if hasattr(current, "get_fields_and_field_types") else ""
+    if kind == "std_msgs/msg/Header" and value == "auto":
+        stamps.append(functools.partial(setattr, current, "stamp"))
+        return True
+    if kind == "builtin_interfaces/msg/Time" and value == "now":
+        stamps.append(functools.partial(setattr, msg, key))
+        return True
+    return False
 
 
 def parse_values(text: str) -> Any:

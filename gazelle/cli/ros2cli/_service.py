@@ -7,8 +7,8 @@ import sys
 import time
 from typing import Any
 
-from ._graph import absolute, cli_node, discover, is_hidden, wait_until
-from ._messages import InterfaceError, get_interface, parse_values, set_fields, to_yaml
+from ._graph import absolute, cli_node, discover, is_hidden, spin_once, wait_until
+from ._messages import InterfaceError, get_interface, parse_values, set_fields
 
 
 def service_main(argv: list[str]) -> int:
@@ -25,8 +25,10 @@ def service_main(argv: list[str]) -> int:
     call = sub.add_parser("call")
     call.add_argument("service_name")
     call.add_argument("service_type")
-    call.add_argument("values", nargs="?", default="{}")
-    call.add_argument("-r", "--rate", type=float, default=None)
+    source = call.add_mutually_exclusive_group()
+    source.add_argument("values", nargs="?", default="{}", help="the request's fields in YAML")
+    source.add_argument("--stdin", action="store_true", help="read the YAML values from standard input")
+    call.add_argument("-r", "--rate", type=float, default=None, help="repeat the call at this rate in Hz")
     args = p.parse_args(argv)
     try:
         with cli_node("ros2service") as node:
@@ -59,27 +61,31 @@ def service_main(argv: list[str]) -> int:
 
 
 def _call(node: Any, args: argparse.Namespace) -> int:
-    import rclpy
-
-    cls = get_interface(args.service_type, "srv")
-    request = set_fields(cls.Request(), parse_values(args.values))
-    client = node.create_client(cls, args.service_name)
-    if not client.wait_for_service(timeout_sec=10.0):
-        print(
-            f"waiting for service to become available... ({args.service_name} did not appear in 10 s)", file=sys.stderr
-        )
+    """Call as ros2cli Jazzy's ``requester()`` (ros2service/verb/call.py): wait for the service however long
+    it takes (saying so once), print the request and the response as their reprs (Jazzy prints
+    ``response:`` and ``std_srvs.srv.SetBool_Response(success=True, message='')``, not YAML), wait for the
+    answer however long it takes, and with ``--rate`` call again each period until Ctrl-C."""
+    if args.rate is not None and args.rate <= 0:
+        print("rate must be greater than zero", file=sys.stderr)
         return 1
+    cls = get_interface(args.service_type, "srv")
+    if not (hasattr(cls, "Request") and hasattr(cls, "Response")):
+        print("The passed type is not a service", file=sys.stderr)
+        return 1
+    request = set_fields(cls.Request(), parse_values(sys.stdin.read() if args.stdin else args.values))
+    client = node.create_client(cls, args.service_name)
+    if not client.service_is_ready():
+        print("waiting for service to become available...", flush=True)
+        while not client.wait_for_service(timeout_sec=1.0):
+            pass
+    period = 1.0 / args.rate if args.rate else None
     while True:
-        print(
-            f"requester: making request: {type(request).__module__.split('.')[0]}.srv.{request.__class__.__name__}()\n"
-        )
+        print(f"requester: making request: {request!r}\n", flush=True)
+        last_call = time.monotonic()
         future = client.call_async(request)
-        rclpy.spin_until_future_complete(node, future, timeout_sec=30.0)
-        if not future.done():
-            print("the service did not answer in 30 s", file=sys.stderr)
-            return 1
-        print("response:")
-        print(f"{to_yaml(future.result())}", flush=True)
-        if not args.rate:
+        while not future.done():
+            spin_once(node, timeout_sec=0.1)
+        print(f"response:\n{future.result()!r}\n", flush=True)
+        if period is None:
             return 0
-        time.sleep(1.0 / args.rate)
+        time.sleep(max(0.0, last_call + period - time.monotonic()))

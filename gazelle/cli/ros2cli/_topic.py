@@ -8,8 +8,30 @@ import sys
 import time
 from typing import Any
 
-from ._graph import SETTLE_SEC, absolute, cli_node, discover, is_hidden, matching_qos, spin_once, wait_until
-from ._messages import InterfaceError, get_interface, parse_values, set_fields, to_csv, to_yaml
+from ._graph import (
+    DEFAULT_SPIN_TIME,
+    SETTLE_SEC,
+    absolute,
+    cli_node,
+    discover,
+    is_hidden,
+    matching_qos,
+    spin_once,
+    wait_until,
+)
+from ._messages import InterfaceError, StampSetter, get_interface, parse_values, set_fields, to_csv, to_yaml
+
+_QOS_PRESETS = [
+    "system_default",
+    "sensor_data",
+    "services_default",
+    "parameters",
+    "parameter_events",
+    "action_status_default",
+    "default",
+    "best_available",
+]
+"""rclpy's ``QoSPresetProfiles`` short keys, which ros2cli's ``--qos-profile`` offers."""
 
 
 def _topic_types(node: Any, hidden: bool = False) -> dict[str, list[str]]:
@@ -32,7 +54,8 @@ def main(argv: list[str]) -> int:
     _add_pub(sub)
     args = p.parse_args(argv)
     try:
-        with cli_node("ros2topic") as node:
+        named = {"node_name": getattr(args, "node_name", None), "use_sim_time": getattr(args, "use_sim_time", False)}
+        with cli_node("ros2topic", **named) as node:
             verbs = {"list": _list, "echo": _echo, "hz": _hz, "info": _info, "type": _type, "pub": _pub}
             verbs.update({"bw": _bw, "delay": _delay, "find": _find})
             return verbs[args.cmd](node, args)
@@ -76,16 +99,7 @@ def _add_echo(sub: Any) -> None:
     echo.add_argument("--qos-durability", choices=["transient_local", "volatile", "system_default"], default=None)
     echo.add_argument(
         "--qos-profile",
-        choices=[
-            "system_default",
-            "sensor_data",
-            "services_default",
-            "parameters",
-            "parameter_events",
-            "action_status_default",
-            "default",
-            "best_available",
-        ],
+        choices=_QOS_PRESETS,
         default=None,
         help="QoS preset to start from (default: one that matches every publisher)",
     )
@@ -115,16 +129,49 @@ def _add_rate_verbs(sub: Any) -> None:
 
 
 def _add_pub(sub: Any) -> None:
-    """``pub``, with ros2cli's options."""
+    """``pub``, with ros2cli Jazzy's options (ros2topic/verb/pub.py and the direct node's ``-s``/``--spin-time``)."""
     pub = sub.add_parser("pub", help="Publish a message to a topic")
     pub.add_argument("topic_name")
     pub.add_argument("message_type")
-    pub.add_argument("values", nargs="?", default="{}")
-    pub.add_argument("-1", "--once", action="store_true")
-    pub.add_argument("-r", "--rate", type=float, default=1.0)
-    pub.add_argument("-t", "--times", type=int, default=0)
-    pub.add_argument("-w", "--wait-matching-subscriptions", type=int, default=None)
-    pub.add_argument("-p", "--print", type=int, default=1)
+    source = pub.add_mutually_exclusive_group()
+    source.add_argument("values", nargs="?", default="{}", help="the message's fields in YAML")
+    source.add_argument("--stdin", action="store_true", help="read the YAML values from standard input")
+    pub.add_argument("-r", "--rate", type=_positive_float, default=1.0, help="publishing rate in Hz (default: 1)")
+    pub.add_argument("-p", "--print", type=int, default=1, help="only print every N-th published message")
+    count = pub.add_mutually_exclusive_group()
+    count.add_argument("-1", "--once", action="store_true", help="publish one message and exit")
+    count.add_argument("-t", "--times", type=_nonnegative_int, default=0, help="publish this many times and exit")
+    pub.add_argument(
+        "-w",
+        "--wait-matching-subscriptions",
+        type=_nonnegative_int,
+        default=None,
+        help="wait for this many matching subscriptions (default: 1 with --once/--times, else 0)",
+    )
+    pub.add_argument("--max-wait-time-secs", type=_positive_float, default=None, help="give up waiting after this")
+    pub.add_argument("--keep-alive", type=_positive_float, default=0.1, help="seconds to stay after the last message")
+    pub.add_argument("-n", "--node-name", default=None, help="name of the publishing node")
+    pub.add_argument("--qos-profile", choices=_QOS_PRESETS, default="default")
+    pub.add_argument("--qos-depth", type=int, default=None)
+    pub.add_argument("--qos-history", choices=["keep_last", "keep_all", "system_default"], default=None)
+    pub.add_argument("--qos-reliability", choices=["reliable", "best_effort", "system_default"], default=None)
+    pub.add_argument("--qos-durability", choices=["transient_local", "volatile", "system_default"], default=None)
+    pub.add_argument("--spin-time", type=float, default=DEFAULT_SPIN_TIME)
+    pub.add_argument("-s", "--use-sim-time", action="store_true", help="stamp `auto`/`now` with /clock's time")
+
+
+def _positive_float(text: str) -> float:
+    value = float(text)
+    if value <= 0:
+        raise argparse.ArgumentTypeError(f"{text} is not a positive float")
+    return value
+
+
+def _nonnegative_int(text: str) -> int:
+    value = int(text)
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"{text} is not a non-negative integer")
+    return value
 
 
 def _list(node: Any, args: argparse.Namespace) -> int:
@@ -349,21 +396,40 @@ def _type(node: Any, args: argparse.Namespace) -> int:
 
 
 def _pub(node: Any, args: argparse.Namespace) -> int:
-    from rclpy.qos import QoSProfile
+    """Publish as ros2cli Jazzy's ``publisher()`` (ros2topic/verb/pub.py): wait for the matching
+    subscriptions asked for (1 with ``--once``/``--times``, however long it takes unless
+    ``--max-wait-time-secs``), publish the first message at once and the others every ``1 / rate`` seconds,
+    each with its ``header: auto``/``now`` stamps set to the node's clock (wall time, or /clock's with
+    ``-s``), then stay ``--keep-alive`` seconds so that the last message reaches the wire."""
+    from rclpy.qos import QoSPresetProfiles
 
     cls = get_interface(args.message_type)
-    msg = set_fields(cls(), parse_values(args.values))
-    topic = args.topic_name
-    pub = node.create_publisher(cls, topic, QoSProfile(depth=10))
+    values = parse_values(sys.stdin.read() if args.stdin else args.values)
+    if not isinstance(values, dict):
+        print("The passed value needs to be a dictionary in YAML format", file=sys.stderr)
+        return 1
+    stamps: list[StampSetter] = []
+    msg = set_fields(cls(), values, stamps=stamps)
     times = 1 if args.once else args.times
-    wait_for = args.wait_matching_subscriptions if args.wait_matching_subscriptions is not None else (1 if times else 0)
-    deadline = time.monotonic() + 5.0
-    while pub.get_subscription_count() < wait_for and time.monotonic() < deadline:
-        spin_once(node, timeout_sec=0.05)
-    print("publisher: beginning loop\n", flush=True)
+    wait_for = args.wait_matching_subscriptions if args.wait_matching_subscriptions is not None else int(times != 0)
+    if wait_for == 0 and args.max_wait_time_secs is not None:
+        print(
+            "--max-wait-time-secs option is only effective with --wait-matching-subscriptions, --once or --times",
+            file=sys.stderr,
+        )
+        return 1
+    qos = _configured(copy.copy(QoSPresetProfiles.get_from_short_key(args.qos_profile)), args)
+    pub = node.create_publisher(cls, args.topic_name, qos)
+    if not _wait_for_subscriptions(node, pub, wait_for, args.max_wait_time_secs):
+        return 1
+    print("publisher: beginning loop", flush=True)
     count = 0
-    period = 1.0 / args.rate if args.rate > 0 else 0.0
+    period = 1.0 / args.rate
+    next_at = time.monotonic()
     while times == 0 or count < times:
+        now = node.get_clock().now().to_msg()
+        for set_stamp in stamps:
+            set_stamp(now)
         pub.publish(msg)
         count += 1
         if args.print and count % args.print == 0:
@@ -372,14 +438,52 @@ def _pub(node: Any, args: argparse.Namespace) -> int:
             )
         if times and count >= times:
             break
-        end = time.monotonic() + period
-        while time.monotonic() < end:
-            spin_once(node, timeout_sec=max(0.0, end - time.monotonic()))
-    if args.once or times:
-        end = time.monotonic() + 0.5  # let the last message go out before the node goes
-        while time.monotonic() < end:
-            spin_once(node, timeout_sec=0.05)
+        next_at += period  # a timer's pace, not a sleep after each publish
+        while time.monotonic() < next_at:
+            spin_once(node, timeout_sec=max(0.0, next_at - time.monotonic()))
+    end = time.monotonic() + args.keep_alive  # the last message reaches the wire before the node goes
+    while time.monotonic() < end:
+        spin_once(node, timeout_sec=max(0.0, end - time.monotonic()))
     return 0
+
+
+def _configured(qos: Any, args: argparse.Namespace) -> Any:
+    """``qos`` with the ``--qos-*`` overrides, as ros2topic's ``profile_configure_short_keys`` (a transient
+    local profile of depth 0 gets depth 1)."""
+    from rclpy.qos import DurabilityPolicy, HistoryPolicy, ReliabilityPolicy
+
+    if args.qos_history:
+        qos.history = HistoryPolicy.get_from_short_key(args.qos_history)
+    if args.qos_durability:
+        qos.durability = DurabilityPolicy.get_from_short_key(args.qos_durability)
+    if args.qos_reliability:
+        qos.reliability = ReliabilityPolicy.get_from_short_key(args.qos_reliability)
+    if args.qos_depth is not None and args.qos_depth >= 0:
+        qos.depth = args.qos_depth
+    elif qos.durability == DurabilityPolicy.TRANSIENT_LOCAL and qos.depth == 0:
+        qos.depth = 1
+    return qos
+
+
+def _wait_for_subscriptions(node: Any, pub: Any, wanted: int, max_wait: float | None) -> bool:
+    """Spin until ``pub`` matches ``wanted`` subscriptions, saying so once a second as ros2cli does; False
+    (with ros2cli's message) when ``max_wait`` seconds pass first."""
+    start = last_said = time.monotonic()
+    said = False
+    while pub.get_subscription_count() < wanted:
+        now = time.monotonic()
+        if not said or now - last_said >= 1.0:
+            print(f"Waiting for at least {wanted} matching subscription(s)...", flush=True)
+            said, last_said = True, now
+        if max_wait is not None and now - start >= max_wait:
+            print(
+                f"Timed out waiting for subscribers: Expected {wanted} subcribers but only got "
+                f"{pub.get_subscription_count()} subscribers",
+                file=sys.stderr,
+            )
+            return False
+        spin_once(node, timeout_sec=0.1)
+    return True
 
 
 def _short(msg: Any) -> str:
