@@ -324,3 +324,19 @@ def test_service_call_waits_for_its_service_and_prints_as_ros2cli(ros_client) ->
         timeout=60,
     )
     assert piped.returncode == 0 and asked == [True, False], piped.stdout + piped.stderr
+
+
+def test_param_load_lets_the_nodes_own_section_win_over_the_wildcard(ros_client, tmp_path: Path) -> None:
+    """rclpy's parameter_dict_from_yaml_file (Jazzy) reads the `/**` section first and the node's own after
+    it, so the node's value wins; gazelle's `ros2 param load` read them the other way round."""
+    ros_client.node.declare_parameter("gain", 0.0)
+    params = tmp_path / "gains.yaml"
+    params.write_text(
+        "/**:\n  ros__parameters:\n    gain: 1.0\n    wild_only: 3\n"
+        f"{ros_client.node.get_fully_qualified_name()}:\n  ros__parameters:\n    gain: 2.0\n"
+    )
+    ros_client.node.declare_parameter("wild_only", 0)
+    loaded = ros2("param", "load", ros_client.node.get_fully_qualified_name(), str(params))
+    assert loaded.returncode == 0, loaded.stdout + loaded.stderr
+    assert ros_client.node.get_parameter("gain").value == 2.0
+    assert ros_client.node.get_parameter("wild_only").value == 3

@@ -240,12 +240,18 @@ def _load(node: Any, args: argparse.Namespace) -> int:
         raise ParamError(f"could not read '{args.parameter_file}': {err.strerror}") from None
     except yaml.YAMLError as err:
         raise ParamError(f"{args.parameter_file}: not valid YAML ({err})") from None
-    keys = [target, target.lstrip("/")] + ([] if args.no_use_wildcard else ["/**"])
+    # the wildcard's section first, then the node's own, which wins where both set a parameter, as rclpy's
+    # parameter_dict_from_yaml_file orders them (rclpy/parameter.py, Jazzy). Upstream's `ros2 param load`
+    # then sets every section of the file on the node, other nodes' too; gazelle takes the node's alone.
+    keys = ([] if args.no_use_wildcard else ["/**"]) + [target.lstrip("/"), target]
     section: dict[str, Any] = {}
     for key in keys:
         entry = data.get(key) if isinstance(data, dict) else None
-        if isinstance(entry, dict) and isinstance(entry.get("ros__parameters"), dict):
-            section.update(entry["ros__parameters"])
+        if entry is None:
+            continue
+        if not (isinstance(entry, dict) and isinstance(entry.get("ros__parameters"), dict)):
+            raise ParamError(f"YAML file is not a valid ROS parameter file for node {key}")
+        section.update(entry["ros__parameters"])
     if not section:
         raise ParamError(f"Param file does not contain parameters for {target}")
     flat: dict[str, Any] = {}
