@@ -150,6 +150,9 @@ class MoveGroupNode(_Execution):
             PlanningSceneWorld, "/gazelle/planning_scene_world", self._on_sim_world, LATCHED, callback_group=cb
         )
         self._display = self.create_publisher(DisplayTrajectory, "display_planned_path", 10)
+        # MoveIt's trajectory execution manager listens here for "stop" (pymoveit2's cancel_execution
+        # publishes it): trajectory_execution_manager.cpp, EXECUTION_EVENT_TOPIC, with rclcpp's ServicesQoS
+        self.create_subscription(String, "trajectory_execution_event", self._on_execution_event, 10, callback_group=cb)
         # a second move_group on the domain answers every request too: said once, after discovery
         self._twin_check = self.create_timer(TWIN_CHECK_SEC, self._warn_of_twins, callback_group=cb)
         self._move = ActionServer(

@@ -36,6 +36,20 @@ from ._move_group_planning import _Planning
 class _Execution(_Planning):
     """The actions and the controllers they run on."""
 
+    _stops = 0
+    """How many "stop" events /trajectory_execution_event has brought: an execution that began before the
+    latest one stops as a cancelled goal does."""
+
+    def _on_execution_event(self, msg: Any) -> None:
+        """MoveIt's ``TrajectoryExecutionManager::receiveEvent``/``processEvent``
+        (trajectory_execution_manager.cpp, Jazzy): "stop" stops every execution in progress (its goal ends
+        with PREEMPTED); any other event is a warning."""
+        self.get_logger().info(f"Received event '{msg.data}'")
+        if msg.data == "stop":
+            self._stops += 1
+        else:
+            self.get_logger().warning(f"Unknown event type: '{msg.data}'")
+
     # ------------------------------------------------------------------ actions
     def _execute_move_group(self, handle: Any) -> MoveGroup.Result:
         result = MoveGroup.Result()
@@ -83,7 +97,9 @@ class _Execution(_Planning):
         result.error_code.message = message
         if code == "SUCCESS":
             result.executed_trajectory = result.planned_trajectory
-        _end_goal(handle, code)
+        # move_action_capability.cpp: a preempted execution is a canceled goal (an aborted one when it was
+        # stopped by the execution event, not cancelled: an executing goal cannot become canceled)
+        _end_goal(handle, code, preempted="canceled" if handle.is_cancel_requested else "abort")
         return result
 
     def _execute_trajectory(self, handle: Any) -> ExecuteTrajectory.Result:
@@ -98,7 +114,9 @@ class _Execution(_Planning):
         code, message = self._run(trajectory, handle)
         result.error_code = _code(code)
         result.error_code.message = message
-        _end_goal(handle, code)
+        # execute_trajectory_action_capability.cpp (Jazzy): anything but success is aborted, a cancelled or
+        # stopped execution too (with PREEMPTED)
+        _end_goal(handle, code, preempted="abort")
         return result
 
     def _check_trajectory(self, trajectory: JointTrajectory) -> str | None:
@@ -294,8 +312,11 @@ class _Execution(_Planning):
             time.sleep(period)
 
     def _run(self, trajectory: JointTrajectory, handle: Any) -> tuple[str, str]:
-        """Send ``trajectory`` to its FollowJointTrajectory controller and wait; cancel it when ``handle`` is.
-        Without a controller serving its joints, gz-sim JointPositionController arms get it streamed."""
+        """Send ``trajectory`` to its FollowJointTrajectory controller and wait; cancel it when ``handle`` is,
+        or when a "stop" event comes. Without a controller serving its joints, gz-sim JointPositionController
+        arms get it streamed."""
+        stops = self._stops
+        handle = _Stoppable(handle, lambda: self._stops != stops)
         joints = list(trajectory.joint_names)
         controllers, served, topics = self._wait_for_execution(joints)
         if not served and topics is not None:
@@ -408,11 +429,25 @@ class _Execution(_Planning):
         return "SUCCESS", ""
 
 
-def _end_goal(handle: Any, code: str) -> None:
-    """End an action goal as its MoveItErrorCodes name says: succeeded, canceled (preempted) or aborted."""
+class _Stoppable:
+    """An action goal's handle as the execution loops see it: cancel requested when the client asked, or
+    when ``stopped()`` (a "stop" on /trajectory_execution_event since the execution began)."""
+
+    def __init__(self, handle: Any, stopped: Any) -> None:
+        self._handle = handle
+        self._stopped = stopped
+
+    @property
+    def is_cancel_requested(self) -> bool:
+        return bool(self._handle.is_cancel_requested or self._stopped())
+
+
+def _end_goal(handle: Any, code: str, preempted: str) -> None:
+    """End an action goal as its MoveItErrorCodes name says: succeeded, aborted, or for PREEMPTED as the
+    action's capability ends it (``preempted``: "canceled" or "abort")."""
     if code == "SUCCESS":
         handle.succeed()
-    elif code == "PREEMPTED":
+    elif code == "PREEMPTED" and preempted == "canceled":
         handle.canceled()
     else:
         handle.abort()

@@ -23,12 +23,14 @@ import numpy as np
 import pytest
 from _paths import REAL as FIXTURES
 from _paths import REPO
+from action_msgs.msg import GoalStatus
 from builtin_interfaces.msg import Duration
 from moveit_msgs.action import ExecuteTrajectory, MoveGroup
 from moveit_msgs.msg import Constraints, JointConstraint, MoveItErrorCodes
 from moveit_msgs.srv import GetPositionFK, GetPositionIK, GetStateValidity
 from rclpy.action import ActionClient
 from sensor_msgs.msg import JointState
+from std_msgs.msg import String
 from trajectory_msgs.msg import JointTrajectoryPoint
 
 from ._harness import GAZELLE, RosClient, start, wait_for
@@ -88,9 +90,13 @@ class Panda:
         assert accepted, "goal rejected"
         return result.result
 
-    def cancel_midway(self, far: dict[str, float], joint: str, past: float) -> tuple[Any, float, float]:
-        """Send a slow joint goal toward ``far``, cancel it once ``joint`` has passed ``past``; returns the
-        result, where the joint stopped, and where it is a second of sim time later."""
+    def cancel_midway(
+        self, far: dict[str, float], joint: str, past: float, how: str = "cancel"
+    ) -> tuple[Any, float, float]:
+        """Send a slow joint goal toward ``far``, stop it once ``joint`` has passed ``past`` (``how``: "cancel"
+        the goal, or publish "stop" on /trajectory_execution_event as pymoveit2's cancel_execution does);
+        returns the result response (its ``status`` and ``result``), where the joint stopped, and where it
+        is a second of sim time later."""
         goal = self.joint_goal(far)
         goal.request.max_velocity_scaling_factor = 0.1  # slow: several seconds of motion
         goal.request.max_acceleration_scaling_factor = 0.1
@@ -106,12 +112,17 @@ class Panda:
 
         self.ros.executor.create_task(lambda: self.move.send_goal_async(goal).add_done_callback(on_goal))
         wait_for(lambda: self.joints()[joint] > past, 30, f"{joint} on its way")
-        self.ros.executor.create_task(lambda: box["handle"].cancel_goal_async())
-        assert done.wait(30), f"no result after the cancel; move_group said:\n{self.move_group.output}"
+        if how == "cancel":
+            self.ros.executor.create_task(lambda: box["handle"].cancel_goal_async())
+        else:
+            events = self.ros.node.create_publisher(String, "/trajectory_execution_event", 10)
+            wait_for(lambda: events.get_subscription_count() > 0, 10, "move_group on /trajectory_execution_event")
+            events.publish(String(data=how))
+        assert done.wait(30), f"no result after the {how}; move_group said:\n{self.move_group.output}"
         stopped = self.joints()[joint]
         t0 = self.stamp
         wait_for(lambda: self.stamp > t0 + 1.0, 15, "a second of sim time")
-        return box["result"].result, stopped, self.joints()[joint]
+        return box["result"], stopped, self.joints()[joint]
 
     def joint_goal(self, values: dict[str, float], group: str = "panda_arm") -> Any:
         goal = MoveGroup.Goal()
@@ -222,12 +233,33 @@ def test_the_srdf_named_states_ready_and_extended_are_reached_within_a_milliradi
 def test_stopping_a_motion_cancels_it_on_the_controller_and_the_arm_stays_short_of_its_goal(panda):
     """A MoveIt client's stop(): cancelling the MoveGroup goal cancels the FollowJointTrajectory goal."""
     start = panda.joints()
-    result, stopped, held = panda.cancel_midway(
+    response, stopped, held = panda.cancel_midway(
         {**_group_states("panda_arm")["ready"], "panda_joint1": 2.5}, "panda_joint1", start["panda_joint1"] + 0.3
     )
-    assert result.error_code.val == MoveItErrorCodes.PREEMPTED, result.error_code
+    assert response.result.error_code.val == MoveItErrorCodes.PREEMPTED, response.result.error_code
+    assert response.status == GoalStatus.STATUS_CANCELED  # move_action_capability.cpp: goal->canceled
     assert stopped < 2.0 and abs(held - stopped) < 0.05, (stopped, held)
     # back to 'ready' for the tests after this one
+    result = panda.action(panda.move, panda.joint_goal(_group_states("panda_arm")["ready"]))
+    assert result.error_code.val == MoveItErrorCodes.SUCCESS, result.error_code.message
+
+
+def test_a_stop_on_the_execution_event_topic_stops_the_motion_as_moveit_does(panda):
+    """pymoveit2's cancel_execution publishes "stop" on /trajectory_execution_event; MoveIt's trajectory
+    execution manager (trajectory_execution_manager.cpp, receiveEvent) stops every execution and the goal
+    ends PREEMPTED. gazelle's move_group did not listen: the arm went on to its goal."""
+    start = panda.joints()
+    response, stopped, held = panda.cancel_midway(
+        {**_group_states("panda_arm")["ready"], "panda_joint1": 2.5},
+        "panda_joint1",
+        start["panda_joint1"] + 0.3,
+        how="stop",
+    )
+    assert response.result.error_code.val == MoveItErrorCodes.PREEMPTED, response.result.error_code
+    # not cancelled by the client, so not canceled: an executing goal can only succeed or abort
+    assert response.status == GoalStatus.STATUS_ABORTED
+    assert stopped < 2.0 and abs(held - stopped) < 0.05, (stopped, held)
+    assert "Received event 'stop'" in panda.said()
     result = panda.action(panda.move, panda.joint_goal(_group_states("panda_arm")["ready"]))
     assert result.error_code.val == MoveItErrorCodes.SUCCESS, result.error_code.message
 
