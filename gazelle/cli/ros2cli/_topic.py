@@ -111,6 +111,10 @@ def _add_rate_verbs(sub: Any) -> None:
     hz = sub.add_parser("hz", help="Print the average publishing rate to screen")
     hz.add_argument("topic_name")
     hz.add_argument("--window", "-w", type=int, default=10000)
+    hz.add_argument("--filter", dest="filter_expr", default=None, help="only count messages `m` for which it is true")
+    hz.add_argument("--wall-time", action="store_true", help="measure in wall time even with -s")
+    hz.add_argument("-s", "--use-sim-time", action="store_true", help="measure in /clock's time")
+    hz.add_argument("--spin-time", type=float, default=DEFAULT_SPIN_TIME)
     hz.add_argument("--count", type=int, default=None, help="(gazelle) stop after this many reports")
     info = sub.add_parser("info", help="Print information about a topic")
     info.add_argument("topic_name")
@@ -238,21 +242,79 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
 
 
 def _hz(node: Any, args: argparse.Namespace) -> int:
-    stamps: list[float] = []
-    if _subscribed(node, args, lambda _m: stamps.append(time.monotonic())) is None:
-        return 1
+    """As ros2cli Jazzy's ``ROSTopicHz`` (ros2topic/verb/hz.py): each message is timed by the node's clock
+    when it arrives (ROS time, /clock's with ``-s``, the system's with ``--wall-time``); a report is due
+    once the latest message came a second of that clock after the last report, so with ``-s`` it reports
+    per second of simulated time and measures the rate in it, whatever the machine's load. A clock at
+    zero (no /clock yet) is skipped, and a clock that went back starts the count again."""
+    from rclpy.clock import Clock, ClockType
+
+    clock = Clock(clock_type=ClockType.SYSTEM_TIME) if args.wall_time else node.get_clock()
+    keep = _filter(args.filter_expr)
+    state = {"t0": -1, "tn": 0, "printed": 0}
+    intervals: list[int] = []
+
+    def on_message(msg: Any) -> None:
+        if keep is not None and not keep(msg):
+            return
+        now = clock.now().nanoseconds
+        if now == 0:  # no /clock yet (or it was reset)
+            if intervals:
+                print("time has reset, resetting counters", flush=True)
+                intervals.clear()
+            return
+        if state["t0"] < 0 or state["t0"] > now:
+            state["t0"] = state["tn"] = now
+            intervals.clear()
+        else:
+            intervals.append(now - state["tn"])
+            state["tn"] = now
+        if len(intervals) > args.window:
+            intervals.pop(0)
 
     def report() -> bool:
-        window = stamps[-args.window :]
-        if len(window) < 2:
+        if not intervals:
             return False
-        mean, lo, hi, std = _stats([b - a for a, b in zip(window, window[1:], strict=False)])
-        print(f"average rate: {1.0 / mean:.3f}")
-        print(f"\tmin: {lo:.3f}s max: {hi:.3f}s std dev: {std:.5f}s window: {len(window)}", flush=True)
+        if state["printed"] == 0:
+            state["printed"] = state["tn"]
+            return False
+        if state["tn"] < state["printed"] + 1_000_000_000:
+            return False
+        mean, lo, hi, std = _stats([float(v) for v in intervals])
+        state["printed"] = state["tn"]
+        print(f"average rate: {1e9 / mean if mean > 0 else 0.0:.3f}")
+        print(
+            f"\tmin: {lo * 1e-9:.3f}s max: {hi * 1e-9:.3f}s std dev: {std * 1e-9:.5f}s window: {len(intervals)}",
+            flush=True,
+        )
         return True
 
-    _every_second(node, args.count, report)
+    if _subscribed(node, args, on_message) is None:
+        return 1
+    reports = 0
+    while args.count is None or reports < args.count:
+        spin_once(node, timeout_sec=0.05)
+        reports += 1 if report() else 0
     return 0
+
+
+def _filter(expr: str | None) -> Any:
+    """ros2cli's ``--filter EXPR``: a function of the message ``m``, evaluated as Python as upstream does
+    (``eval(expr)`` with ``m`` in scope: the expression is the user's own, typed on their command line)."""
+    if expr is None:
+        return None
+    try:
+        code = compile(expr, "<--filter>", "eval")
+    except SyntaxError as err:
+        raise InterfaceError(f"--filter '{expr}' is not a Python expression: {err.msg}") from None
+
+    def keep(m: Any) -> bool:
+        try:
+            return bool(eval(code, {}, {"m": m}))
+        except Exception as err:  # the expression's own failure, said once: the verb ends
+            raise InterfaceError(f"--filter '{expr}' failed on a message: {type(err).__name__}: {err}") from None
+
+    return keep
 
 
 def _stats(values: list[float]) -> tuple[float, float, float, float]:
