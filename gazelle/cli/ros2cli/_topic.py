@@ -8,6 +8,8 @@ import sys
 import time
 from typing import Any
 
+import yaml
+
 from ._graph import (
     DEFAULT_SPIN_TIME,
     SETTLE_SEC,
@@ -95,6 +97,13 @@ def _add_echo(sub: Any) -> None:
         "--full-length", "-f", action="store_true", help="output arrays, bytes and strings whole (ros2cli's flag)"
     )
     echo.add_argument("--timeout", type=float, default=None)
+    echo.add_argument("--no-lost-messages", action="store_true", help="don't report when a message is lost")
+    echo.add_argument("--raw", action="store_true", help="echo the serialized bytes")
+    echo.add_argument("--filter", dest="filter_expr", default=None, help="only messages `m` for which it is true")
+    echo.add_argument("--include-message-info", "-i", action="store_true", help="show each message's info")
+    echo.add_argument("-s", "--use-sim-time", action="store_true")
+    echo.add_argument("--spin-time", type=float, default=DEFAULT_SPIN_TIME)
+    echo.add_argument("--qos-history", choices=["keep_last", "keep_all", "system_default"], default=None)
     echo.add_argument("--qos-reliability", choices=["reliable", "best_effort", "system_default"], default=None)
     echo.add_argument("--qos-durability", choices=["transient_local", "volatile", "system_default"], default=None)
     echo.add_argument(
@@ -190,7 +199,11 @@ def _list(node: Any, args: argparse.Namespace) -> int:
 
 
 def _echo(node: Any, args: argparse.Namespace) -> int:
-    from rclpy.qos import DurabilityPolicy, ReliabilityPolicy
+    """As ros2cli Jazzy's ``EchoVerb`` (ros2topic/verb/echo.py): a QoS that matches every publisher unless
+    ``--qos-*`` says otherwise; each message (or its ``--field``) that passes ``--filter`` printed as YAML,
+    CSV or its serialized bytes (``--raw``), with its message info first for ``-i``; "A message was
+    lost!!!" when DDS reports one, unless ``--no-lost-messages``."""
+    from rclpy.event_handler import SubscriptionEventCallbacks
 
     topic = absolute(args.topic_name)
     type_name = _resolve_type(node, topic, args.message_type)
@@ -198,6 +211,35 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
         print(f"Could not determine the type for the passed topic {topic}", file=sys.stderr)
         return 1
     cls = get_interface(type_name)
+    keep = _filter(args.filter_expr)
+    qos = _echo_qos(node, topic, args)
+    got: list[tuple[Any, Any]] = []
+    lost = None if args.no_lost_messages else SubscriptionEventCallbacks(message_lost=_said_lost)
+    node.create_subscription(
+        cls, topic, lambda msg, info: got.append((msg, info)), qos, event_callbacks=lost, raw=args.raw
+    )
+    deadline = time.monotonic() + args.timeout if args.timeout else None
+    while True:
+        spin_once(node, timeout_sec=0.1)
+        while got:
+            msg, info = got.pop(0)
+            if args.field and not args.raw:
+                for part in args.field.split("."):
+                    msg = getattr(msg, part)
+            if keep is not None and not keep(msg):
+                continue
+            _print_echoed(msg, info, args)
+            if args.once:
+                return 0
+        if deadline is not None and time.monotonic() > deadline:
+            print(f"Timeout after {args.timeout} seconds", file=sys.stderr) if args.once else None
+            return 0 if not args.once else 1
+
+
+def _echo_qos(node: Any, topic: str, args: argparse.Namespace) -> Any:
+    """The subscription's QoS: one matching every publisher, a preset's, and the ``--qos-*`` overrides."""
+    from rclpy.qos import DurabilityPolicy, ReliabilityPolicy
+
     wait_until(node, lambda: node.get_publishers_info_by_topic(topic), 5.0)
     # every publisher's QoS, to match them all
     discover(node, 0.0, SETTLE_SEC, watch=lambda: len(node.get_publishers_info_by_topic(topic)))
@@ -208,6 +250,10 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
         qos = copy.copy(QoSPresetProfiles.get_from_short_key(args.qos_profile))
     if args.qos_depth is not None:
         qos.depth = args.qos_depth
+    if args.qos_history is not None:
+        from rclpy.qos import HistoryPolicy
+
+        qos.history = HistoryPolicy.get_from_short_key(args.qos_history)
     if args.qos_reliability == "reliable":
         qos.reliability = ReliabilityPolicy.RELIABLE
     elif args.qos_reliability == "best_effort":
@@ -216,29 +262,36 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
         qos.durability = DurabilityPolicy.TRANSIENT_LOCAL
     elif args.qos_durability == "volatile":
         qos.durability = DurabilityPolicy.VOLATILE
-    got: list[Any] = []
-    node.create_subscription(cls, topic, got.append, qos)
-    deadline = time.monotonic() + args.timeout if args.timeout else None
-    while True:
-        spin_once(node, timeout_sec=0.1)
-        while got:
-            msg = got.pop(0)
-            if args.field:
-                for part in args.field.split("."):
-                    msg = getattr(msg, part)
-            if args.csv:
-                print(to_csv(msg) if hasattr(msg, "get_fields_and_field_types") else str(msg))
-            elif hasattr(msg, "get_fields_and_field_types"):
-                truncate = None if args.full_length else args.truncate_length
-                text = to_yaml(msg, truncate=truncate, no_arr=args.no_arr, no_str=args.no_str)
-                print(text + "---", flush=True)
-            else:
-                print(f"{msg}\n---", flush=True)
-            if args.once:
-                return 0
-        if deadline is not None and time.monotonic() > deadline:
-            print(f"Timeout after {args.timeout} seconds", file=sys.stderr) if args.once else None
-            return 0 if not args.once else 1
+    return qos
+
+
+def _print_echoed(msg: Any, info: Any, args: argparse.Namespace) -> None:
+    """One echoed message as ros2cli prints it (``_subscriber_callback``)."""
+    is_message = hasattr(msg, "get_fields_and_field_types")
+    if not is_message and args.raw:
+        if args.include_message_info:
+            print(f"---Got new message, message info:---\n{info}\n---Message data:---")
+        print(msg, end="\n---\n", flush=True)
+    elif args.csv:
+        text = to_csv(msg) if is_message else str(msg)
+        print(f"{','.join(str(v) for v in info.values())},{text}" if args.include_message_info else text, flush=True)
+    else:
+        if args.include_message_info:
+            print(yaml.safe_dump(dict(info)), end="---\n")
+        if is_message:
+            truncate = None if args.full_length else args.truncate_length
+            print(to_yaml(msg, truncate=truncate, no_arr=args.no_arr, no_str=args.no_str) + "---", flush=True)
+        else:
+            print(f"{msg}\n---", flush=True)
+
+
+def _said_lost(status: Any) -> None:
+    """ros2cli's ``_message_lost_event_callback``."""
+    print(
+        f"A message was lost!!!\n\ttotal count change:{status.total_count_change}\n\ttotal count: {status.total_count}",
+        end="---\n",
+        flush=True,
+    )
 
 
 def _hz(node: Any, args: argparse.Namespace) -> int:
