@@ -134,6 +134,11 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
         node = ros2("node", "info", "/gazelle").stdout
     assert "/clock: rosgraph_msgs/msg/Clock" in node and "/spawn_entity: gazebo_msgs/srv/SpawnEntity" in node, node
     assert "/cmd_vel" not in node  # the diff drive's own node subscribes to it
+    # ros2node Jazzy's info: the node's actions in sections of their own, their hidden topics and services
+    # (/simulate_steps/_action/...) left out unless --include-hidden
+    actions = node.split("  Action Servers:\n", 1)[-1]
+    assert "/gazelle/simulate_steps: simulation_interfaces/action/SimulateSteps" in actions, node
+    assert "_action" not in node and "  Action Clients:\n" in node, node
     drive_info = r["node info drive"].stdout
     assert "/cmd_vel: geometry_msgs/msg/Twist" in drive_info and "/odom: nav_msgs/msg/Odometry" in drive_info
     shown = r["show srv"].stdout
@@ -359,3 +364,23 @@ def test_param_load_lets_the_nodes_own_section_win_over_the_wildcard(ros_client,
     assert loaded.returncode == 0, loaded.stdout + loaded.stderr
     assert ros_client.node.get_parameter("gain").value == 2.0
     assert ros_client.node.get_parameter("wild_only").value == 3
+
+
+def test_interface_show_expands_nested_types_and_packages_lists_them_as_jazzy() -> None:
+    """ros2interface Jazzy's show (verb/show.py) prints each message field's own definition a tab further
+    in, the top level's comments unless --no-comments; `packages` lists the packages with interfaces.
+    gazelle printed the file alone and had no `packages`."""
+    shown = ros2("interface", "show", "geometry_msgs/msg/PoseStamped")
+    assert shown.returncode == 0, shown.stderr
+    assert shown.stdout.startswith("# A Pose with reference coordinate frame and timestamp\n\nstd_msgs/Header header\n")
+    assert "\tbuiltin_interfaces/Time stamp\n\t\tint32 sec\n\t\tuint32 nanosec\n\tstring frame_id\n" in shown.stdout
+    assert "\tQuaternion orientation\n\t\tfloat64 x 0\n" in shown.stdout
+    bare = ros2("interface", "show", "--no-comments", "std_srvs/srv/SetBool").stdout
+    assert bare == "bool data\n---\nbool success\nstring message\n", bare
+    piped = subprocess.run(
+        [ROS2, "interface", "show", "-"], input="std_srvs/srv/Trigger\n", capture_output=True, text=True, timeout=60
+    )
+    assert piped.returncode == 0 and "string message" in piped.stdout, piped.stderr
+    packages = ros2("interface", "packages").stdout.split()
+    assert {"geometry_msgs", "moveit_msgs", "std_srvs"} <= set(packages) and packages == sorted(packages)
+    assert "geometry_msgs" not in ros2("interface", "packages", "-a").stdout.split()

@@ -1,11 +1,14 @@
 """The ``ros2`` command for a venv without ROS 2's ros2cli: ``launch``, ``run``, ``pkg`` and the
-introspection verbs: ``topic`` (list, echo, hz, info, type, pub), ``service`` (list, type, find, call),
-``action`` (list, info, type, send_goal), ``node`` (list, info), ``param`` (list, get, set, describe,
-dump, load), ``interface`` (show, list, package), ``bag`` (record, play, info: rosbag2's MCAP) and
-``control`` (ros2controlcli's verbs over a controller manager's services).
+introspection verbs: ``topic`` (list, echo, hz, bw, delay, info, type, find, pub), ``service`` (list,
+type, find, call), ``action`` (list, info, type, send_goal), ``node`` (list, info), ``param`` (list, get,
+set, describe, dump, load), ``interface`` (show, list, package, packages, proto), ``bag`` (record, play,
+info: rosbag2's MCAP) and ``control`` (ros2controlcli's verbs over a controller manager's services).
 
-Same arguments and output as ros2cli Jazzy for what it covers; an unknown verb lists the verbs that
-exist. ``gazelle launch`` and ``gazelle run`` are the same commands.
+Same arguments and output as ros2cli Jazzy for what it covers (each verb's module names the upstream file
+it follows); an unknown verb lists the verbs that exist. Where gazelle differs it says so in the verb's
+docstring: no daemon (each verb discovers the graph itself, for ``--spin-time``), and a few waits that
+upstream leaves unbounded are bounded where a wedged peer would otherwise hang a script (parameter
+services, 5 s). ``gazelle launch`` and ``gazelle run`` are the same commands.
 """
 
 from __future__ import annotations

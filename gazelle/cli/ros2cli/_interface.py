@@ -1,4 +1,5 @@
-"""``ros2 interface show | list | package``, with ros2cli Jazzy's arguments and output."""
+"""``ros2 interface show | list | package | packages | proto``, with ros2cli Jazzy's arguments and output
+(ros2interface/verb/*.py)."""
 
 from __future__ import annotations
 
@@ -12,18 +13,25 @@ from ._messages import InterfaceError, get_interface, to_yaml
 def main(argv: list[str]) -> int:
     p = argparse.ArgumentParser(prog="ros2 interface", description="Show information about ROS interfaces")
     sub = p.add_subparsers(dest="cmd", required=True)
-    show = sub.add_parser("show")
-    show.add_argument("type")
-    ls = sub.add_parser("list")
+    show = sub.add_parser("show", help="Output the interface definition")
+    comments = show.add_mutually_exclusive_group()
+    comments.add_argument("--all-comments", action="store_true", help="Show all comments, nested ones too")
+    comments.add_argument("--no-comments", action="store_true", help="Show no comments or whitespace")
+    show.add_argument("type", help="e.g. nav_msgs/msg/Odometry; '-' reads it from stdin")
+    ls = sub.add_parser("list", help="List all interface types available")
     ls.add_argument("-m", "--only-msgs", action="store_true")
     ls.add_argument("-s", "--only-srvs", action="store_true")
     ls.add_argument("-a", "--only-actions", action="store_true")
-    pkg = sub.add_parser("package")
+    pkg = sub.add_parser("package", help="Output a list of available interface types within one package")
     pkg.add_argument("package_name")
+    pkgs = sub.add_parser("packages", help="Output a list of packages that provide interfaces")
+    pkgs.add_argument("-m", "--only-msgs", action="store_true")
+    pkgs.add_argument("-s", "--only-srvs", action="store_true")
+    pkgs.add_argument("-a", "--only-actions", action="store_true")
     proto = sub.add_parser("proto", help="Output an interface prototype")
     proto.add_argument("type")
     args = p.parse_args(argv)
-    from ament_index_python.packages import get_package_share_directory, get_packages_with_prefixes
+    from ament_index_python.packages import get_packages_with_prefixes
 
     if args.cmd == "proto":
         kind = args.type.strip("/").split("/")[1] if args.type.count("/") >= 2 else "msg"
@@ -36,23 +44,23 @@ def main(argv: list[str]) -> int:
         print(f'"{to_yaml(prototype)}"')
         return 0
     if args.cmd == "show":
-        parts = args.type.strip("/").split("/")
-        if len(parts) != 3:
-            print(f"Invalid name '{args.type}'. Expected pkg/msg|srv|action/Name", file=sys.stderr)
-            return 1
-        pkg_name, kind, name = parts
+        name = sys.stdin.readline().strip() if args.type == "-" else args.type
         try:
-            path = os.path.join(get_package_share_directory(pkg_name), kind, f"{name}.{kind}")
-        except (LookupError, ValueError):
-            print(f"Unknown package '{pkg_name}'", file=sys.stderr)
+            _show(name.strip("/"), not args.no_comments, args.all_comments, 0)
+        except LookupError as err:
+            print(str(err), file=sys.stderr)
             return 1
-        if not os.path.isfile(path):
-            print(f"Could not find the interface '{args.type}'", file=sys.stderr)
-            return 1
-        with open(path, encoding="utf-8") as f:
-            print(f.read().rstrip("\n"))
         return 0
     packages = get_packages_with_prefixes()
+    if args.cmd == "packages":
+        wanted = [
+            k for k, on in (("msg", args.only_msgs), ("srv", args.only_srvs), ("action", args.only_actions)) if on
+        ]
+        for name in sorted(packages):
+            kinds = wanted[:1] or ["msg", "srv", "action"]  # ros2interface: the first flag given wins
+            if any(_definitions(packages[name], name, k) for k in kinds):
+                print(name)
+        return 0
     names = [args.package_name] if args.cmd == "package" else sorted(packages)
     if args.cmd == "package" and args.package_name not in packages:
         print(f"Unknown package '{args.package_name}'", file=sys.stderr)
@@ -83,3 +91,59 @@ def main(argv: list[str]) -> int:
             for f in found:
                 print(f"    {f}")
     return 0
+
+
+def _definitions(prefix: str, package: str, kind: str) -> list[str]:
+    """The names of ``package``'s interfaces of ``kind`` (msg, srv, action) under its install prefix."""
+    folder = os.path.join(prefix, "share", package, kind)
+    if not os.path.isdir(folder):
+        return []
+    return sorted(f.rsplit(".", 1)[0] for f in os.listdir(folder) if f.endswith(f".{kind}"))
+
+
+def _show(identifier: str, comments: bool, nested_comments: bool, indent: int) -> None:
+    """ros2interface Jazzy's ``_show_interface`` (verb/show.py): the definition's lines, each field of a
+    message type followed by that type's definition one tab further in; comments (whole lines and trailing
+    ones) and blank lines shown at the top level unless ``--no-comments``, in nested ones only with
+    ``--all-comments``. Lines are read with rosidl_adapter's parser, as upstream reads them."""
+    from ament_index_python.packages import get_package_share_directory
+    from rosidl_adapter.parser import (
+        ACTION_REQUEST_RESPONSE_SEPARATOR,
+        SERVICE_REQUEST_RESPONSE_SEPARATOR,
+        parse_message_string,
+    )
+
+    parts = identifier.split("/")
+    if len(parts) != 3:
+        raise LookupError(f"Invalid name '{identifier}'. Expected three parts separated by '/'")
+    package, kind, name = parts
+    try:
+        path = os.path.join(get_package_share_directory(package), kind, f"{name}.{kind}")
+    except (LookupError, ValueError):
+        raise LookupError(f"Unknown package '{package}'") from None
+    if not os.path.isfile(path):
+        raise LookupError(f"Could not find the interface '{identifier}'")
+    with open(path, encoding="utf-8") as f:
+        lines = [line.rstrip() for line in f]
+    tabs = "\t" * indent
+    for text in lines:
+        spec = None
+        if text not in (SERVICE_REQUEST_RESPONSE_SEPARATOR, ACTION_REQUEST_RESPONSE_SEPARATOR):
+            spec = parse_message_string(pkg_name=package, msg_name=name, message_string=text)
+        field = spec.fields[0] if spec is not None and spec.fields else None
+        constant = spec.constants[0] if spec is not None and spec.constants else None
+        shown = text
+        if not comments:
+            if not text or (spec is not None and spec.annotations.get("comment")):
+                shown = ""
+            else:
+                trailing = (field or constant).annotations.get("comment") if (field or constant) else None
+                if trailing:  # cut at the '#' before it (ros2interface's tests expect no '#' left)
+                    shown = text[: text.rfind("#", 0, text.find(trailing[0]))].strip()
+            if not shown:
+                continue
+        print(f"{tabs}{shown}" if shown else "")
+        if field is not None and "/" in str(field.type):
+            nested = str(field.type)
+            nested = nested[: nested.find("[")] if field.type.is_array else nested
+            _show(nested.replace("/", "/msg/"), nested_comments, nested_comments, indent + 1)
