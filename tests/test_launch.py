@@ -384,3 +384,44 @@ def test_respawn_restarts_a_process_and_xacro_runs_with_ros2_run(prefix, tmp_pat
     expanded = ros2(["run", "xacro", "xacro", str(xacro_file)], prefix)
     assert expanded.returncode == 0, expanded.stderr
     assert '<box size="0.5 1 1"/>' in expanded.stdout
+
+
+def test_launch_prefix_goes_before_the_executables_its_filter_matches(prefix):
+    """ros2launch Jazzy's --launch-prefix and --launch-prefix-filter (launch/descriptions/executable.py: the
+    'launch-prefix' configuration before every executable whose file name the filter matches); gazelle took
+    the option and dropped it."""
+    write(
+        prefix / "share" / "demo_pkg" / "launch" / "two.launch.py",
+        """
+        from launch import LaunchDescription
+        from launch.actions import ExecuteProcess
+        from launch_ros.actions import Node
+
+
+        def generate_launch_description():
+            return LaunchDescription([
+                Node(package="demo_pkg", executable="echo_args", name="node", output="screen"),
+                ExecuteProcess(cmd=["python3", "-c", "import os; print('PLAIN ' + os.environ.get('GREETING', '-'))"],
+                               output="screen"),
+            ])
+        """,
+    )
+    every = ros2(["launch", "demo_pkg", "two.launch.py", "--launch-prefix", "env GREETING=hello"], prefix)
+    text = every.stdout + every.stderr
+    assert every.returncode == 0 and "ENV hello" in text and "PLAIN hello" in text, text
+    filtered = ros2(
+        [
+            "launch",
+            "demo_pkg",
+            "two.launch.py",
+            "--launch-prefix",
+            "env GREETING=hi",
+            "--launch-prefix-filter",
+            "echo_",
+        ],
+        prefix,
+    )
+    text = filtered.stdout + filtered.stderr
+    assert filtered.returncode == 0 and "ENV hi" in text and "PLAIN -" in text, text
+    alone = ros2(["launch", "demo_pkg", "two.launch.py", "--launch-prefix-filter", "echo_"], prefix)
+    assert alone.returncode == 2 and "--launch-prefix must be specified" in alone.stderr, alone.stderr

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 import shlex
 from typing import Any
 
@@ -72,14 +73,28 @@ class ExecuteProcess(Action):
             )
         return env
 
+    def _prefixed(self, context: LaunchContext, cmd: list[str]) -> list[str]:
+        """``cmd`` behind its prefix: the one given, else the ``launch-prefix`` launch configuration (what
+        ``ros2 launch --launch-prefix`` sets) when ``launch-prefix-filter`` (a regex, empty by default)
+        matches the executable's file name, as launch's ``Executable`` does (launch/descriptions/executable.py,
+        Jazzy); a prefix given to the action applies whatever the filter."""
+        if self.prefix is not None:
+            return shlex.split(perform_substitutions(context, self.prefix)) + cmd
+        configured = context.launch_configurations.get("launch-prefix", "")
+        if not configured or not cmd:
+            return cmd
+        pattern = context.launch_configurations.get("launch-prefix-filter", "")
+        if re.match(pattern, os.path.basename(cmd[0])) is None:
+            return cmd
+        return shlex.split(configured) + cmd
+
     def _command(self, context: LaunchContext) -> list[str]:
         """The command line (a Node builds its own)."""
         return [perform_substitutions(context, c) for c in self.cmd]
 
     def execute(self, context: LaunchContext) -> None:
         cmd = self._command(context)
-        if self.prefix is not None:
-            cmd = shlex.split(perform_substitutions(context, self.prefix)) + cmd
+        cmd = self._prefixed(context, cmd)
         if not cmd or not cmd[0]:
             raise RuntimeError("ExecuteProcess: the command is empty")
         base = perform_substitutions(context, self.name) if self.name is not None else os.path.basename(cmd[0])

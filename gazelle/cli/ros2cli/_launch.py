@@ -13,7 +13,13 @@ _PACKAGE_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 """A ROS package name (REP 144: lower case by rule; upper case is found in the wild, so accepted)."""
 
 
+PREFIX_ARGUMENTS = frozenset({"launch-prefix", "launch-prefix-filter"})
+"""Launch arguments every launch takes, declared or not: every process's ``ExecuteProcess`` reads them."""
+
+
 def _find_launch_file(package: str, name: str) -> str:
+    """The launch file ``name`` in ``package``'s share folder, as ros2launch's ``get_share_file_path_from_package``
+    finds it (searched below it; two files of that name are an error naming both)."""
     from ament_index_python.packages import PackageNotFoundError, get_package_share_directory
 
     if not _PACKAGE_NAME.fullmatch(package):
@@ -45,7 +51,16 @@ def main(argv: list[str]) -> int:
     p.add_argument("-d", "--debug", action="store_true", help="Put the launch system in debug mode")
     p.add_argument("-p", "--print", "--print-description", dest="print_description", action="store_true")
     p.add_argument("-s", "--show-args", "--show-arguments", dest="show_args", action="store_true")
-    p.add_argument("--launch-prefix", default=None)
+    p.add_argument(
+        "--launch-prefix",
+        default=None,
+        help="Prefix command, which should go before all executables (e.g. --launch-prefix 'xterm -e gdb --args')",
+    )
+    p.add_argument(
+        "--launch-prefix-filter",
+        default=None,
+        help="Regex pattern for filtering which executables the --launch-prefix is applied to",
+    )
     p.add_argument("package_name", help="Name of the ROS package which contains the launch file (or a path)")
     p.add_argument("launch_file_name", nargs="?", help="Name of the launch file")
     p.add_argument("launch_arguments", nargs="*", help="Arguments to the launch file; '<name>:=<value>'")
@@ -78,6 +93,13 @@ def main(argv: list[str]) -> int:
             p.error(f"malformed launch argument '{a}', expected format '<name>:=<value>'")
         k, v = a.split(":=", 1)
         launch_args.append((k, v))
+    # ros2launch's api.py: the options become the launch-prefix(-filter) launch arguments, after the user's
+    if args.launch_prefix is None and args.launch_prefix_filter is not None:
+        p.error("--launch-prefix must be specified if --launch-prefix-filter is provided")
+    if args.launch_prefix:
+        launch_args.append(("launch-prefix", args.launch_prefix))
+    if args.launch_prefix_filter:
+        launch_args.append(("launch-prefix-filter", args.launch_prefix_filter))
     return run_launch_file(
         path, launch_args, debug=args.debug, show_args=args.show_args, print_description=args.print_description
     )
@@ -120,7 +142,7 @@ def run_launch_file(
         for e in ld.entities:
             print(type(e).__name__)
         return 0
-    names = {d.name for d in declared}
+    names = {d.name for d in declared} | PREFIX_ARGUMENTS
     unknown = [k for k, _ in launch_args if k not in names]
     if unknown:
         log(
