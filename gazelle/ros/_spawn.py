@@ -62,6 +62,17 @@ def build_parser() -> argparse.ArgumentParser:
         "or joint /tf for this entity",
     )
     p.add_argument("-frame_prefix", default=None, help="prefix of the entity's TF frames (default: NAMESPACE/)")
+    p.add_argument(
+        "-package_to_model",
+        action="store_true",
+        help='convert urdf <mesh filename="package://..." to <mesh filename="model://..."',
+    )
+    p.add_argument(
+        "-b",
+        dest="bond",
+        action="store_true",
+        help="bond to the simulator and delete the entity when this program is interrupted",
+    )
     for axis in ("x", "y", "z", "R", "P", "Y"):
         p.add_argument(f"-{axis}", type=float, default=0.0, help=f"initial {axis}")
     p.add_argument(
@@ -344,6 +355,10 @@ def _run(
         return 1
     if not xml.strip():
         return _fail(node, "Error: entity XML is empty")
+    if args.package_to_model:
+        xml = _package_to_model(xml)
+        if xml is None:
+            return _fail(node, "Invalid XML: the entity does not parse")
 
     if args.topic and not args.no_robot_state_publisher and _published_by_robot_state_publisher(node, args.topic):
         # one publisher per transform: the user's robot_state_publisher publishes this robot's TF, so
@@ -388,4 +403,67 @@ def _run(
         if unpause.wait_for_service(timeout_sec=timeout):
             f2 = unpause.call_async(Empty.Request())
             executor.spin_until_future_complete(f2, timeout_sec=timeout)
+    if args.bond:
+        return _bond(node, executor, args, timeout)
     return 0
+
+
+def _package_to_model(xml: str) -> str | None:
+    """spawn_entity.py's ``-package_to_model``: every ``<mesh filename="package://...">`` made ``model://...``
+    (the XML parsed and written again, as upstream does); None when the XML does not parse."""
+    from urllib.parse import urlsplit
+    from xml.etree import ElementTree
+
+    try:
+        root = ElementTree.fromstring(xml)
+    except ElementTree.ParseError:
+        return None
+    for mesh in root.iterfind(".//mesh"):
+        filename = mesh.get("filename")
+        if filename is not None and urlsplit(filename).scheme == "package":
+            mesh.set("filename", "model" + filename[len("package") :])
+    return ElementTree.tostring(root, encoding="unicode")
+
+
+def _bond(node: Node, executor: SingleThreadedExecutor, args: argparse.Namespace, timeout: float) -> int:
+    """spawn_entity.py's ``-b``: stay until interrupted (Ctrl-C, SIGTERM), then delete the entity. rclpy's
+    signal handler has shut this context down by then, so the deletion goes through a context of its own
+    (upstream's own call fails there: its TODO, ros2/rclpy#244)."""
+    import signal
+
+    node.get_logger().info(f"Waiting for shutdown to delete entity [{args.entity}]")
+    stop = []
+    signal.signal(signal.SIGTERM, lambda *_: stop.append(True))  # a launch's SIGTERM, as its Ctrl-C
+    try:
+        while node.context.ok() and not stop:
+            executor.spin_once(timeout_sec=0.2)
+    except KeyboardInterrupt:
+        pass
+    except Exception:
+        if node.context.ok():
+            raise
+    print(f"[INFO] [spawn_entity]: Deleting entity [{args.entity}]", file=sys.stderr, flush=True)
+    from gazebo_msgs.srv import DeleteEntity
+    from rclpy.signals import SignalHandlerOptions
+
+    context = Context()
+    rclpy.init(args=[], context=context, signal_handler_options=SignalHandlerOptions.NO)
+    deleter = rclpy.create_node("spawn_entity_bond", context=context)
+    local = SingleThreadedExecutor(context=context)
+    local.add_node(deleter)
+    try:
+        service = f"{args.gazebo_namespace.rstrip('/')}/delete_entity"
+        client = deleter.create_client(DeleteEntity, service)
+        if not client.wait_for_service(timeout_sec=max(timeout, 1.0)):
+            return _fail(deleter, f"Service {service} unavailable. Was gazelle sim started?")
+        future = client.call_async(DeleteEntity.Request(name=args.entity))
+        local.spin_until_future_complete(future, timeout_sec=max(timeout, 1.0))
+        res = future.result() if future.done() else None
+        if res is None:
+            return _fail(deleter, f"Service {service} did not answer within {max(timeout, 1.0):g} s")
+        deleter.get_logger().info(f"Deleting status: {res.status_message}")
+        return 0 if res.success else 1
+    finally:
+        local.shutdown()
+        deleter.destroy_node()
+        rclpy.shutdown(context=context)

@@ -128,3 +128,39 @@ def test_pause_unpause_and_resets(world):
     wait_for(lambda: latest() < before, 10, "/clock to restart from zero")
     names = client.call(GetModelList, "/get_model_list", GetModelList.Request()).model_names
     assert "faller" in names  # spawned entities stay, as in gazebo_ros
+
+
+@pytest.mark.parametrize("sig", ["SIGINT", "SIGTERM"])
+def test_a_bonded_spawn_deletes_its_entity_when_interrupted(world, sig):
+    """gazebo_ros's spawn_entity.py ``-b``: it stays, and deletes the entity when interrupted (gazelle's
+    refused the flag); ``-package_to_model`` is taken too (the XML parsed and written again)."""
+    import signal
+
+    from ._harness import GAZELLE, start
+
+    client, _ = world
+
+    def names() -> list[str]:
+        return list(client.call(GetModelList, "/get_model_list", GetModelList.Request()).model_names)
+
+    proc = start([*GAZELLE, "spawn", "-entity", "bonded", "-string", BOX, "-b", "-package_to_model"], "spawn -b")
+    proc.wait_line("Waiting for shutdown to delete entity [bonded]", 60)
+    assert "bonded" in names()
+    proc.popen.send_signal(getattr(signal, sig))
+    assert proc.wait(30) == 0, proc.output
+    assert "bonded" not in names() and "Deleting status:" in proc.output, proc.output
+    assert "Traceback" not in proc.output, proc.output
+
+
+def test_package_to_model_rewrites_package_mesh_uris_only():
+    """spawn_entity.py's -package_to_model: ``package://`` mesh filenames become ``model://``; others stay."""
+    from gazelle.ros._spawn import _package_to_model
+
+    urdf = (
+        '<robot name="r"><link name="a"><visual><geometry><mesh filename="package://arm/meshes/a.dae"/>'
+        '</geometry></visual><collision><geometry><mesh filename="file:///m/b.stl"/></geometry></collision>'
+        "</link></robot>"
+    )
+    out = _package_to_model(urdf)
+    assert out is not None and 'filename="model://arm/meshes/a.dae"' in out and 'filename="file:///m/b.stl"' in out
+    assert _package_to_model("<robot") is None
