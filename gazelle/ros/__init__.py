@@ -23,6 +23,7 @@ if TYPE_CHECKING:
     from ._planning_scene import pose as matrix_to_pose
     from ._signals import await_signal_shutdown, silence_half_made_objects
     from ._spawn import main as spawn_main
+    from ._spawner import controller_file_params
     from ._spawner import spawner_main as spawner_main
     from ._spawner import unspawner_main as unspawner_main
 
@@ -39,6 +40,7 @@ _LAZY = {
     "silence_half_made_objects": ("._signals", "silence_half_made_objects"),
     "spawn_main": ("._spawn", "main"),
     "spawner_main": ("._spawner", "spawner_main"),
+    "controller_file_params": ("._spawner", "controller_file_params"),
     "unspawner_main": ("._spawner", "unspawner_main"),
 }
 """Imported when first used: the bridge brings MuJoCo and the runtime (1.1 s), which a client such as
@@ -77,4 +79,5 @@ __all__ = [
     "move_group_main",
     "spawner_main",
     "unspawner_main",
+    "controller_file_params",
 ]

@@ -68,6 +68,10 @@ def build_parser(prog: str, unspawner: bool = False) -> argparse.ArgumentParser:
 
 
 class _Client:
+    """One controller manager's services, called from the spawner's node, and the manager's ERROR lines on
+    /rosout, so that a refusal can be reported with the manager's own reason (as the real spawner's user
+    reads it in the manager's log)."""
+
     def __init__(self, node: Node, executor: SingleThreadedExecutor, manager: str, timeout: float) -> None:
         self.node, self.executor, self.manager, self.timeout = node, executor, manager, timeout
         self.errors: list[str] = []
@@ -108,14 +112,18 @@ class _Client:
 
 
 def _error(text: str) -> None:
+    """An error line as the controller_manager spawner prints it (red on a terminal)."""
     print(f"[ERROR] [spawner]: {text}", file=sys.stderr)
 
 
 def _info(text: str) -> None:
+    """An info line as the spawner prints it."""
     print(f"[INFO] [spawner]: {text}", file=sys.stderr)
 
 
 def _manager_name(args: argparse.Namespace) -> str:
+    """The manager's full name: ``-c`` (relative names under ``--namespace``), else
+    ``<namespace>/controller_manager``."""
     name = args.controller_manager
     ns = getattr(args, "namespace", "") or ""
     if not name.startswith("/"):
@@ -124,6 +132,8 @@ def _manager_name(args: argparse.Namespace) -> str:
 
 
 def _wait_for_manager(cli: _Client, timeout: float) -> bool:
+    """Wait for the manager's list_controllers service (``--controller-manager-timeout``); False after
+    saying it never came."""
     client = cli.node.create_client(ListControllers, f"{cli.manager}/list_controllers")
     try:
         return client.wait_for_service(timeout_sec=timeout)
@@ -132,10 +142,12 @@ def _wait_for_manager(cli: _Client, timeout: float) -> bool:
 
 
 def _string_param(name: str, value: str) -> Parameter:
+    """An rcl_interfaces Parameter of type string."""
     return Parameter(name=name, value=ParameterValue(type=ParameterType.PARAMETER_STRING, string_value=value))
 
 
 def _set_params(cli: _Client, params: list[Parameter]) -> str | None:
+    """Set parameters on the manager in one call; the first refusal's reason, or None."""
     res = cli.call(SetParameters, "set_parameters", SetParameters.Request(parameters=params))
     for r in res.results:
         if not r.successful:
@@ -156,6 +168,8 @@ def unspawner_main(argv: list[str]) -> int:
 
 
 def _with_node(name: str, body: Any, manager: str, timeout: float) -> int:
+    """Run a spawner body with a node and executor of its own, shut down after; Ctrl-C or a service that
+    never answers is one error line and status 1, never a traceback."""
     context = Context()
     rclpy.init(args=[], context=context)
     node = rclpy.create_node(f"{name}_{int(time.time() * 1000) % 100000}", context=context)
@@ -186,6 +200,9 @@ def _controller_states(cli: _Client, manager_timeout: float) -> dict[str, str] |
 
 
 def _spawn(cli: _Client, args: argparse.Namespace) -> int:
+    """``spawner NAME...`` as controller_manager's spawner.py (Jazzy): load what is not loaded (with
+    ``-p`` files' parameters and type first), configure, activate (one by one, or all at once with
+    ``--activate-as-group``), ``--inactive`` stops at configured, ``--load-only`` at loaded."""
     loaded = _controller_states(cli, args.controller_manager_timeout)
     if loaded is None:
         return 1
@@ -203,18 +220,9 @@ def _spawn(cli: _Client, args: argparse.Namespace) -> int:
             if args.controller_type:
                 params.append(_string_param(f"{name}.type", args.controller_type))
             for path in args.param_file:
-                # the file's text first: the manager never reads a file a ROS peer names outside its roots
-                params.append(_string_param(f"{name}.params_file_yaml", _text(path)))
-                params.append(_string_param(f"{name}.params_file", path))
-                pf = load_params(path)
-                own = pf.for_node(name, args.namespace)
-                # the type as the controller's own 'type', or in the file's controller_manager section
-                # (the layout of ros2_control_demos' files, usually given to the manager itself)
-                manager_node = cli.manager.rstrip("/").rpartition("/")
-                cm_params = pf.for_node(manager_node[2], manager_node[0])
-                kind = own.get("type") or cm_params.get(f"{name}.type")
-                if not args.controller_type and isinstance(kind, str) and kind:
-                    params.append(_string_param(f"{name}.type", kind))
+                params += controller_file_params(
+                    cli.manager, name, path, args.namespace, typed=not args.controller_type
+                )
             if params:
                 why = _set_params(cli, params)
                 if why is not None:
@@ -251,6 +259,7 @@ def _spawn(cli: _Client, args: argparse.Namespace) -> int:
 
 
 def _switch(cli: _Client, activate: list[str], deactivate: list[str], timeout: float) -> bool:
+    """One strict switch_controller request, activating as soon as possible."""
     req = SwitchController.Request(
         activate_controllers=activate, deactivate_controllers=deactivate, strictness=STRICT, activate_asap=True
     )
@@ -259,6 +268,7 @@ def _switch(cli: _Client, activate: list[str], deactivate: list[str], timeout: f
 
 
 def _unspawn(cli: _Client, args: argparse.Namespace) -> int:
+    """``unspawner NAME...``: deactivate the active ones in one switch, then unload each."""
     states = _controller_states(cli, args.service_call_timeout)
     if states is None:
         return 1
@@ -275,6 +285,24 @@ def _unspawn(cli: _Client, args: argparse.Namespace) -> int:
             return 1
         _info(f"Deactivated and unloaded {name}" if name in active else f"Unloaded {name}")
     return 0
+
+
+def controller_file_params(
+    manager: str, name: str, path: str, namespace: str = "", typed: bool = True
+) -> list[Parameter]:
+    """The parameters that give controller ``name`` the parameters file ``path`` on ``manager``, as
+    controller_manager's ``set_controller_parameters_from_param_files`` sets them (Jazzy,
+    controller_manager_services.py): ``<name>.params_file`` and, when ``typed``, ``<name>.type`` from the
+    controller's own section or the file's controller_manager section (ros2_control_demos' layout). The
+    file's text goes first as ``<name>.params_file_yaml``: the manager never reads a file a ROS peer names
+    outside its roots. Raises :class:`ParamsError` for a file that does not read or parse."""
+    pf = load_params(path)
+    params = [_string_param(f"{name}.params_file_yaml", _text(path)), _string_param(f"{name}.params_file", path)]
+    manager_ns, _, manager_name = manager.rstrip("/").rpartition("/")
+    kind = pf.for_node(name, namespace).get("type") or pf.for_node(manager_name, manager_ns).get(f"{name}.type")
+    if typed and isinstance(kind, str) and kind:
+        params.append(_string_param(f"{name}.type", kind))
+    return params
 
 
 def _text(path: str) -> str:

@@ -296,7 +296,7 @@ def _ros2_control(*args: str) -> subprocess.CompletedProcess:
 
 
 @pytest.mark.slow
-def test_ros2_control_verbs_list_switch_and_set_the_diffbots_controllers(sim_factory):
+def test_ros2_control_verbs_list_switch_and_set_the_diffbots_controllers(sim_factory, tmp_path):
     """Issue 27: `ros2 control list_controllers|list_hardware_interfaces|switch_controllers|...` did not
     exist; users type them daily. Output as ros2controlcli Jazzy's (no colours when piped)."""
     sim = sim_factory("--no-viewer")
@@ -314,6 +314,27 @@ def test_ros2_control_verbs_list_switch_and_set_the_diffbots_controllers(sim_fac
     assert ["joint_state_broadcaster", "joint_state_broadcaster/JointStateBroadcaster", "active"] in rows
     assert ["diffbot_base_controller", "diff_drive_controller/DiffDriveController", "active"] in rows
     assert "\033[" not in listed.stdout  # piped: no colour codes
+
+    # ros2controlcli Jazzy's load_controller NAME PARAM_FILE (gazelle refused the file: its parameters go to
+    # the manager as <name>.params_file and its type) and a controller already loaded (a warning, exit 0)
+    params = tmp_path / "jsb2.yaml"
+    params.write_text("jsb2:\n  ros__parameters:\n    type: joint_state_broadcaster/JointStateBroadcaster\n")
+    with_file = _ros2_control("load_controller", "jsb2", str(params), "--set-state", "inactive")
+    assert with_file.returncode == 0, with_file.stdout + with_file.stderr
+    assert "Successfully loaded controller jsb2 into state inactive" in with_file.stdout
+    assert ["jsb2", "joint_state_broadcaster/JointStateBroadcaster", "inactive"] in [
+        line.split() for line in _ros2_control("list_controllers").stdout.splitlines()
+    ]
+    cleaned = _ros2_control("set_controller_state", "jsb2", "unconfigured")  # Jazzy's cleanup (refused before)
+    assert cleaned.returncode == 0 and "successfully cleaned up jsb2" in cleaned.stdout, cleaned.stdout + cleaned.stderr
+    assert ["jsb2", "joint_state_broadcaster/JointStateBroadcaster", "unconfigured"] in [
+        line.split() for line in _ros2_control("list_controllers").stdout.splitlines()
+    ]
+    twice = _ros2_control("load_controller", "diffbot_base_controller")
+    assert twice.returncode == 0, twice.stdout + twice.stderr
+    assert "Controller : diffbot_base_controller already loaded, skipping load_controller!" in twice.stdout
+    no_file = _ros2_control("load_controller", "jsb3", str(tmp_path / "missing.yaml"))
+    assert no_file.returncode == 1 and "does not exist, Aborting!" in no_file.stderr, no_file.stdout + no_file.stderr
 
     hw = _ros2_control("list_hardware_interfaces")
     assert hw.returncode == 0 and hw.stdout.startswith("command interfaces\n"), hw.stdout + hw.stderr

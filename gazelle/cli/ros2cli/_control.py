@@ -26,6 +26,8 @@ VERBS = (
 
 
 class _Colors:
+    """ros2controlcli's ``bcolors``: ANSI colours on a terminal, none when piped (what scripts parse)."""
+
     def __init__(self, on: bool) -> None:
         codes = {"ok_green": "\033[92m", "ok_cyan": "\033[96m", "ok_blue": "\033[94m", "warning": "\033[93m"}
         codes.update(fail="\033[91m", end="\033[0m")
@@ -40,6 +42,8 @@ class ControlError(Exception):
 
 
 def main(argv: list[str]) -> int:
+    """``ros2 control VERB ...``: ros2controlcli's verbs with Jazzy's arguments (``-c`` the manager,
+    ``--service-timeout``); a failure is one line on stderr and status 1."""
     p = argparse.ArgumentParser(prog="ros2 control", description="Various control related sub-commands")
     sub = p.add_subparsers(
         dest="cmd", required=True, metavar="Call `ros2 control <command> -h` for more detailed usage."
@@ -74,7 +78,7 @@ def main(argv: list[str]) -> int:
     configure.add_argument("controller_name")
     state = verb("set_controller_state", "Adjust the state of the controller")
     state.add_argument("controller_name")
-    state.add_argument("state", choices=["inactive", "active"])
+    state.add_argument("state", choices=["unconfigured", "inactive", "active"])
     switch = verb("switch_controllers", "Switch controllers in a controller manager")
     switch.add_argument("--deactivate", nargs="*", default=[])
     switch.add_argument("--activate", nargs="*", default=[])
@@ -120,6 +124,8 @@ class _Manager:
 
 
 def _list_controllers(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
+    """``list_controllers``: name, type and state in aligned columns (coloured by state on a terminal), and
+    the interfaces each claims or requires with their flags or ``-v``, as ros2controlcli prints them."""
     from controller_manager_msgs.srv import ListControllers
 
     controllers = cm.call(ListControllers, "list_controllers").controller
@@ -146,6 +152,7 @@ def _list_controllers(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int
 
 
 def _list_types(cm: _Manager, _args: argparse.Namespace, _c: _Colors) -> int:
+    """``list_controller_types``: each type gazelle's manager can load and its base class."""
     from controller_manager_msgs.srv import ListControllerTypes
 
     res = cm.call(ListControllerTypes, "list_controller_types")
@@ -156,6 +163,8 @@ def _list_types(cm: _Manager, _args: argparse.Namespace, _c: _Colors) -> int:
 
 
 def _list_interfaces(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
+    """``list_hardware_interfaces``: command interfaces sorted by name with [available]/[claimed], then
+    state interfaces; ``-v`` adds data types."""
     from controller_manager_msgs.srv import ListHardwareInterfaces
 
     res = cm.call(ListHardwareInterfaces, "list_hardware_interfaces")
@@ -174,6 +183,8 @@ def _list_interfaces(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
 
 
 def _list_components(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
+    """``list_hardware_components``: each hardware component's name, type, plugin, lifecycle state and
+    interfaces, numbered from 1 as upstream."""
     from controller_manager_msgs.srv import ListHardwareComponents
 
     components = cm.call(ListHardwareComponents, "list_hardware_components").component
@@ -197,6 +208,7 @@ def _list_components(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
 
 
 def _controller_state(cm: _Manager, name: str) -> str | None:
+    """The named controller's state from ``list_controllers``, or None when it is not loaded."""
     from controller_manager_msgs.srv import ListControllers
 
     for x in cm.call(ListControllers, "list_controllers").controller:
@@ -208,6 +220,8 @@ def _controller_state(cm: _Manager, name: str) -> str | None:
 def _switch_call(
     cm: _Manager, activate: list[str], deactivate: list[str], strict: bool, asap: bool, timeout: float
 ) -> bool:
+    """One ``switch_controller`` request (strict or best effort, ``activate_asap``, the timeout as a
+    Duration); whether the manager said ok."""
     from builtin_interfaces.msg import Duration
     from controller_manager_msgs.srv import SwitchController
 
@@ -228,22 +242,54 @@ def _by_name(cm: _Manager, srv_type: Any, service: str, name: str, doing: str) -
 
 
 def _load(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
+    """``load_controller NAME [PARAM_FILE] [--set-state S]`` as ros2controlcli Jazzy's
+    (verb/load_controller.py): a controller already loaded is a warning and not loaded again; the file's
+    parameters are given to the manager first (``<name>.params_file`` and its ``type``, as
+    controller_manager's ``set_controller_parameters_from_param_files``); ``--set-state`` then
+    configures it and, for ``active``, activates it (strict, as soon as possible)."""
     from controller_manager_msgs.srv import ConfigureController, LoadController
 
-    if args.param_file:
-        raise ControlError("loading with a parameter file: set <controller>.params_file on the manager (see README)")
-    _by_name(cm, LoadController, "load_controller", args.controller_name, "loading")
-    if args.set_state:
-        _by_name(cm, ConfigureController, "configure_controller", args.controller_name, "configuring")
-        if args.set_state == "active" and not _switch_call(cm, [args.controller_name], [], True, True, 5.0):
-            raise ControlError(f"Error activating controller {args.controller_name}, check controller_manager logs")
-        print(f"{c.ok_blue}Successfully loaded controller {args.controller_name} into state {args.set_state}{c.end}")
+    name = args.controller_name
+    if _controller_state(cm, name) is not None:
+        print(f"{c.warning}Controller : {name} already loaded, skipping load_controller!{c.end}")
     else:
-        print(f"{c.ok_blue}Successfully loaded controller {args.controller_name}{c.end}")
+        if args.param_file:
+            _give_param_file(cm, name, args.param_file)
+        if not cm.call(LoadController, "load_controller", name=name).ok:
+            raise ControlError(f"Failed loading controller {name} check controller_manager logs")
+        print(f"{c.ok_blue}Successfully loaded controller {name}{c.end}")
+    if args.set_state:
+        if not cm.call(ConfigureController, "configure_controller", name=name).ok:
+            raise ControlError(f"Error configuring controller : {name}")
+        if args.set_state == "active" and not _switch_call(cm, [name], [], True, True, 5.0):
+            raise ControlError(f"Error activating controller : {name}, check controller_manager logs")
+        print(f"{c.ok_blue}Successfully loaded controller {name} into state {args.set_state}{c.end}")
     return 0
 
 
+def _give_param_file(cm: _Manager, name: str, param_file: str) -> None:
+    """Set controller ``name``'s parameters file (made absolute, as upstream) on the manager."""
+    from pathlib import Path
+
+    from rcl_interfaces.srv import SetParameters
+
+    from ...ros import controller_file_params
+    from ...systems.ros2_control import ParamsError
+
+    path = Path(param_file)
+    if not path.exists():
+        raise ControlError(f"Controller parameter file : {param_file} does not exist, Aborting!")
+    try:
+        params = controller_file_params(cm.prefix, name, str(path.absolute()))
+    except ParamsError as err:
+        raise ControlError(str(err)) from None
+    for result in cm.call(SetParameters, "set_parameters", parameters=params).results:
+        if not result.successful:
+            raise ControlError(f"Could not set the parameters of {name} on {cm.prefix}: {result.reason}")
+
+
 def _configure(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
+    """``configure_controller NAME``: unconfigured -> inactive."""
     from controller_manager_msgs.srv import ConfigureController
 
     _by_name(cm, ConfigureController, "configure_controller", args.controller_name, "configuring")
@@ -252,30 +298,43 @@ def _configure(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
 
 
 def _set_state(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
-    from controller_manager_msgs.srv import ConfigureController
+    """``set_controller_state NAME unconfigured|inactive|active`` with ros2controlcli Jazzy's transitions
+    and messages (verb/set_controller_state.py): inactive -> unconfigured cleans up, unconfigured ->
+    inactive configures, active -> inactive deactivates, inactive -> active activates; anything else is
+    refused naming the current state."""
+    from controller_manager_msgs.srv import CleanupController, ConfigureController
 
     name, want = args.controller_name, args.state
     now = _controller_state(cm, name)
     if now is None:
         raise ControlError(f"controller {name} does not seem to be loaded")
-    if want == "inactive":
-        if now == "unconfigured":
-            ok = bool(cm.call(ConfigureController, "configure_controller", name=name).ok)
-        elif now == "active":
-            ok = _switch_call(cm, [], [name], True, True, 5.0)
-        else:
-            raise ControlError(f"cannot set {name} from its current state {now} to inactive")
-    else:
+    if want == "unconfigured":
         if now != "inactive":
-            raise ControlError(f"cannot activate {name}: it is {now}, not inactive (configure it first)")
-        ok = _switch_call(cm, [name], [], True, True, 5.0)
-    if not ok:
-        raise ControlError(f"Error setting controller {name} to {want}, check controller_manager logs")
-    print(f"{c.ok_blue}Successfully {'activated' if want == 'active' else 'deactivated'} {name}{c.end}")
+            raise ControlError(f"cannot cleanup {name} from its current state {now}")
+        if not cm.call(CleanupController, "cleanup_controller", name=name).ok:
+            raise ControlError("Error cleaning up controller, check controller_manager logs")
+        print(f"{c.ok_blue}successfully cleaned up {name}{c.end}")
+    elif want == "inactive" and now == "unconfigured":
+        if not cm.call(ConfigureController, "configure_controller", name=name).ok:
+            raise ControlError("Error configuring controller, check controller_manager logs")
+        print(f"{c.ok_blue}Successfully configured {name}{c.end}")
+    elif want == "inactive" and now == "active":
+        if not _switch_call(cm, [], [name], True, True, 5.0):
+            raise ControlError("Error stopping controller, check controller_manager logs")
+        print(f"{c.ok_blue}Successfully deactivated {name}{c.end}")
+    elif want == "inactive":
+        raise ControlError(f"cannot put {name} in 'inactive' state from its current state {now}")
+    elif now != "inactive":
+        raise ControlError(f"cannot activate {name} from its current state {now}")
+    elif not _switch_call(cm, [name], [], True, True, 5.0):
+        raise ControlError("Error activating controller, check controller_manager logs")
+    else:
+        print(f"{c.ok_blue}Successfully activated {name}{c.end}")
     return 0
 
 
 def _switch(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
+    """``switch_controllers --activate ... --deactivate ...``: one request, strict when asked."""
     if not _switch_call(cm, args.activate, args.deactivate, args.strict, args.activate_asap, args.switch_timeout):
         raise ControlError("Error switching controllers, check controller_manager logs")
     print(f"{c.ok_blue}Successfully switched controllers{c.end}")
@@ -283,6 +342,7 @@ def _switch(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
 
 
 def _unload(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
+    """``unload_controller NAME``: the manager refuses an active one, as ros2_control does."""
     from controller_manager_msgs.srv import UnloadController
 
     _by_name(cm, UnloadController, "unload_controller", args.controller_name, "unloading")
