@@ -137,7 +137,8 @@ def _show(identifier: str, comments: bool, nested_comments: bool, indent: int) -
             if not text or (spec is not None and spec.annotations.get("comment")):
                 shown = ""
             else:
-                trailing = (field or constant).annotations.get("comment") if (field or constant) else None
+                element = field or constant
+                trailing = element.annotations.get("comment") if element is not None else None
                 if trailing:  # cut at the '#' before it (ros2interface's tests expect no '#' left)
                     shown = text[: text.rfind("#", 0, text.find(trailing[0]))].strip()
             if not shown:

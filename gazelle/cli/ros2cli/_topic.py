@@ -37,10 +37,12 @@ _QOS_PRESETS = [
 
 
 def _topic_types(node: Any, hidden: bool = False) -> dict[str, list[str]]:
+    """Topic name -> its type names, from the graph as discovered so far (hidden ones when asked)."""
     return {n: t for n, t in node.get_topic_names_and_types() if hidden or not is_hidden(n)}
 
 
 def _resolve_type(node: Any, topic: str, given: str | None, wait: float = 5.0) -> str | None:
+    """The topic's type: the one given, else the first the graph names within ``wait`` seconds (None)."""
     if given:
         return given
     types = wait_until(node, lambda: dict(node.get_topic_names_and_types()).get(topic), wait)
@@ -48,6 +50,8 @@ def _resolve_type(node: Any, topic: str, given: str | None, wait: float = 5.0) -
 
 
 def main(argv: list[str]) -> int:
+    """``ros2 topic VERB ...``: ros2topic's verbs with Jazzy's arguments; exit status 1 with one line on
+    stderr for a type or value that does not fit, 0 on Ctrl-C."""
     p = argparse.ArgumentParser(prog="ros2 topic", description="Various topic related sub-commands")
     sub = p.add_subparsers(dest="cmd", required=True)
     _add_listing_verbs(sub)
@@ -174,6 +178,7 @@ def _add_pub(sub: Any) -> None:
 
 
 def _positive_float(text: str) -> float:
+    """argparse type of ros2cli's ``positive_float``."""
     value = float(text)
     if value <= 0:
         raise argparse.ArgumentTypeError(f"{text} is not a positive float")
@@ -181,6 +186,7 @@ def _positive_float(text: str) -> float:
 
 
 def _nonnegative_int(text: str) -> int:
+    """argparse type of ros2cli's ``nonnegative_int``."""
     value = int(text)
     if value < 0:
         raise argparse.ArgumentTypeError(f"{text} is not a non-negative integer")
@@ -188,6 +194,8 @@ def _nonnegative_int(text: str) -> int:
 
 
 def _list(node: Any, args: argparse.Namespace) -> int:
+    """``list``: discover for ``--spin-time`` (ros2cli's direct node; there is no daemon), then the names,
+    sorted, with ``[types]`` for ``-t``."""
     discover(node, args.spin_time)
     topics = _topic_types(node, args.include_hidden_topics)
     if args.count_topics:
@@ -300,7 +308,8 @@ def _hz(node: Any, args: argparse.Namespace) -> int:
     once the latest message came a second of that clock after the last report, so with ``-s`` it reports
     per second of simulated time and measures the rate in it, whatever the machine's load. A clock at
     zero (no /clock yet) is skipped, and a clock that went back starts the count again."""
-    from rclpy.clock import Clock, ClockType
+    from rclpy.clock import Clock
+    from rclpy.clock_type import ClockType
 
     clock = Clock(clock_type=ClockType.SYSTEM_TIME) if args.wall_time else node.get_clock()
     keep = _filter(args.filter_expr)
@@ -398,6 +407,7 @@ def _every_second(node: Any, count: int | None, report: Any) -> None:
 
 
 def _bytes(n: float) -> str:
+    """A byte count as ros2topic bw prints it (B, KB, MB by thousands)."""
     for unit in ("B", "KB", "MB"):
         if n < 1000 or unit == "MB":
             return f"{n:.2f} {unit}"
@@ -406,6 +416,8 @@ def _bytes(n: float) -> str:
 
 
 def _bw(node: Any, args: argparse.Namespace) -> int:
+    """``bw``: the serialized sizes of the messages (a raw subscription: nothing is deserialized), their
+    rate over the window and their mean/min/max, once a second of wall time, as ros2topic's ROSTopicBandwidth."""
     sizes: list[tuple[float, int]] = []
     if _subscribed(node, args, lambda data: sizes.append((time.monotonic(), len(data))), raw=True) is None:
         return 1
@@ -427,6 +439,8 @@ def _bw(node: Any, args: argparse.Namespace) -> int:
 
 
 def _delay(node: Any, args: argparse.Namespace) -> int:
+    """``delay``: now minus each message's ``header.stamp`` (messages without a header are counted and said),
+    once a second; ``--use-sim-time`` compares with /clock's time, which a simulation's stamps are in."""
     if args.use_sim_time:
         from rclpy.parameter import Parameter
 
@@ -459,6 +473,7 @@ def _delay(node: Any, args: argparse.Namespace) -> int:
 
 
 def _find(node: Any, args: argparse.Namespace) -> int:
+    """``find TYPE``: the topics of that type, sorted."""
     discover(node)
     found = sorted(n for n, types in _topic_types(node, args.include_hidden_topics).items() if args.topic_type in types)
     if args.count_topics:
@@ -470,6 +485,8 @@ def _find(node: Any, args: argparse.Namespace) -> int:
 
 
 def _info(node: Any, args: argparse.Namespace) -> int:
+    """``info [-v]``: the type, publisher and subscription counts, and with ``-v`` each endpoint's node and
+    QoS, after the graph has settled (a new topic's endpoints arrive in several discovery messages)."""
     topic = absolute(args.topic_name)
     types = wait_until(node, lambda: dict(node.get_topic_names_and_types()).get(topic))
     discover(node, 0.0, SETTLE_SEC, watch=lambda: (node.count_publishers(topic), node.count_subscribers(topic)))
@@ -488,6 +505,7 @@ def _info(node: Any, args: argparse.Namespace) -> int:
 
 
 def _endpoint(info: Any, kind: str) -> None:
+    """One endpoint block of ``info -v``, in ros2topic's layout."""
     q = info.qos_profile
     print(f"Node name: {info.node_name}")
     print(f"Node namespace: {info.node_namespace}")
@@ -500,6 +518,7 @@ def _endpoint(info: Any, kind: str) -> None:
 
 
 def _type(node: Any, args: argparse.Namespace) -> int:
+    """``type``: the topic's type names, one a line; "Unknown topic" with status 1."""
     topic = absolute(args.topic_name)
     types = wait_until(node, lambda: dict(node.get_topic_names_and_types()).get(topic))
     if not types:
@@ -602,4 +621,5 @@ def _wait_for_subscriptions(node: Any, pub: Any, wanted: int, max_wait: float | 
 
 
 def _short(msg: Any) -> str:
+    """The fields of a message as ``name=repr`` pairs, as rclpy's message repr writes them."""
     return ", ".join(f"{k}={getattr(msg, k)!r}" for k in msg.get_fields_and_field_types())
