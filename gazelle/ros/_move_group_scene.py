@@ -32,6 +32,9 @@ class _Scene(_MoveGroupBase):
 
     # ------------------------------------------------------------------ planning scene
     def _get_planning_scene(self, req: GetPlanningScene.Request, res: GetPlanningScene.Response) -> Any:
+        """``get_planning_scene`` (get_planning_scene_service_capability.cpp): the robot's current state with its
+        attached objects and the world's collision objects (the simulation's own included), as a whole scene;
+        gazelle fills every component whatever ``components`` asks (a superset of what MoveIt returns)."""
         planner = self.planner
         assert planner is not None
         scene = res.scene
@@ -45,6 +48,8 @@ class _Scene(_MoveGroupBase):
         return res
 
     def _apply_planning_scene(self, req: ApplyPlanningScene.Request, res: ApplyPlanningScene.Response) -> Any:
+        """``apply_planning_scene`` (apply_planning_scene_service_capability.cpp): a diff or a whole scene, checked
+        whole before any of it is applied (a bad one changes nothing and is refused with why)."""
         self._apply_scene(req.scene)
         res.success = True
         return res
@@ -64,12 +69,17 @@ class _Scene(_MoveGroupBase):
         return callback
 
     def _on_scene_diff(self, msg: PlanningScene) -> None:
+        """``/planning_scene``: a diff or a whole scene, as the service applies it."""
         self._apply_scene(msg)
 
     def _on_collision_object(self, msg: CollisionObject) -> None:
+        """``/collision_object``: ADD, APPEND, MOVE or REMOVE one world object, as MoveIt's
+        processCollisionObjectMsg."""
         self._apply_world_object(msg)
 
     def _on_attached_object(self, msg: AttachedCollisionObject) -> None:
+        """``/attached_collision_object``: attach an object to a link (with its touch_links) or detach it, as
+        MoveIt's processAttachedCollisionObjectMsg."""
         self._apply_attached(msg)
 
     def _on_sim_world(self, msg: PlanningSceneWorld) -> None:
@@ -81,6 +91,9 @@ class _Scene(_MoveGroupBase):
             self._take_sim_world(msg)
 
     def _take_sim_world(self, msg: PlanningSceneWorld) -> None:
+        """Replace the simulation's objects in the scene with ``msg``'s (each link of each other entity a
+        collision object ``entity::link``), placed in the planning frame by this robot's own pose in the
+        simulation; this robot's own links are left out."""
         planner = self.planner
         assert planner is not None
         by_entity: dict[str, list[CollisionObject]] = {}
@@ -130,6 +143,8 @@ class _Scene(_MoveGroupBase):
         return np.eye(4)
 
     def _apply_scene(self, scene: PlanningScene) -> None:
+        """Apply a PlanningScene: the bounds and every object checked first, then (for a whole scene) the
+        objects there were removed, then its world objects and attached objects applied in order."""
         planner = self.planner
         assert planner is not None
         given = len(scene.world.collision_objects) + len(scene.robot_state.attached_collision_objects)
@@ -145,6 +160,7 @@ class _Scene(_MoveGroupBase):
             if co.operation != CollisionObject.REMOVE:
                 checked_matrix(co.pose, f"collision object '{co.id[:80]}'")
                 shapes_of(co, lambda _text: None)
+        self._note_scene_parts(scene)
         if not scene.is_diff:  # a whole scene replaces the objects there are
             for obj in planner.objects():
                 planner.remove_object(obj.name)
@@ -153,7 +169,28 @@ class _Scene(_MoveGroupBase):
         for aco in scene.robot_state.attached_collision_objects:
             self._apply_attached(aco)
 
+    def _note_scene_parts(self, scene: PlanningScene) -> None:
+        """Say, once per kind, what of a PlanningScene gazelle does not apply (MoveIt's planning_scene.cpp
+        setPlanningSceneDiffMsg applies them all): nothing a client sends is dropped without a word."""
+        notes = []
+        if scene.allowed_collision_matrix.entry_names or scene.allowed_collision_matrix.default_entry_names:
+            notes.append(
+                ("acm", "allowed_collision_matrix is not applied: planning keeps checking the pairs it allows "
+                 "(the SRDF's disabled pairs and an attached object's touch_links are what gazelle allows)")
+            )  # fmt: skip
+        if scene.link_padding or scene.link_scale:
+            notes.append(("padding", "link_padding and link_scale are not applied"))
+        if scene.fixed_frame_transforms:
+            notes.append(("frames", "fixed_frame_transforms are not applied"))
+        if scene.world.octomap.octomap.data:
+            notes.append(("octomap", "the world's octomap is not applied"))
+        for kind, note in notes:
+            if f"scene-{kind}" not in self._noted:
+                self._noted.add(f"scene-{kind}")
+                self.get_logger().warning(f"planning scene: {note}")
+
     def _find(self, name: str) -> SceneObject | None:
+        """The scene object of that name, or None."""
         assert self.planner is not None
         return next((o for o in self.planner.objects() if o.name == name), None)
 
