@@ -28,6 +28,8 @@ def _load_world_or_exit(world: Path | None, arg: list[str]):
 
 
 def _parse_args(values: list[str]) -> dict[str, str]:
+    """xacro arguments given as ``NAME:=VALUE`` (ros2 launch's spelling) as a mapping; anything else is
+    typer's usage error naming it."""
     out: dict[str, str] = {}
     for v in values:
         if ":=" not in v:
@@ -174,12 +176,16 @@ def foxglove(
 
 
 def _discovery(value: str | None) -> str | None:
+    """``--ros-discovery``: ROS_AUTOMATIC_DISCOVERY_RANGE's values (localhost, subnet, off), any case;
+    None leaves the environment's (and LOCALHOST when it says nothing: see ros/_exposure.py)."""
     if value is not None and value.lower() not in ("localhost", "subnet", "off"):
         raise typer.BadParameter(f"--ros-discovery is localhost, subnet or off, got {value!r}")
     return value.lower() if value is not None else None
 
 
 def _origins(values: list[str]) -> tuple[str, ...]:
+    """``--viewer-allow-origin``: the browser origins the viewer accepts besides its own (``http(s)://HOST[:PORT]``
+    or ``*``; anything else is a usage error)."""
     from ..viewer import allowed_origins
 
     try:

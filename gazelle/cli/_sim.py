@@ -28,6 +28,8 @@ FOXGLOVE_STOP_SEC = 0.5
 
 
 def _force_exit() -> None:
+    """The last resort of a shutdown that overran its deadline (a wedged rclpy or viewer thread): say so and
+    end the process at once, status 1, so a launch or CI job never hangs on the server."""
     print(
         f"gazelle: shutdown did not finish within {SHUTDOWN_DEADLINE_SEC:g} s; exiting now", file=sys.stderr, flush=True
     )
@@ -124,6 +126,7 @@ def _install_signal_handlers() -> tuple[threading.Event, threading.Event]:
     stop, write_replay = threading.Event(), threading.Event()
 
     def on_signal(signum: int, _frame: object) -> None:
+        """SIGINT or SIGTERM: the server loop ends in order (bridge, viewer, replay) from the main thread."""
         stop.set()
 
     signal.signal(signal.SIGINT, on_signal)
@@ -144,6 +147,8 @@ class _Replays:
             self.page = replay_html
 
     def save(self) -> None:
+        """Write the replay (an HTML page when the path ends in .html, else the recorder's own file); a
+        failure to write is said, never a traceback during shutdown."""
         try:
             if self.page is not None:
                 data = self.page(self.recorder.data(), title=f"gazelle replay: {self.world_name}")

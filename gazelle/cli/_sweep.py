@@ -20,6 +20,10 @@ def run_sweep(
     timeout: float | None = None,
     start: Path | None = None,
 ) -> int:
+    """Run ``scenario`` (``tests/x.py::test_y``) over the ``--param`` grid and ``--seeds`` (on every core, or on
+    Ray: ``local``, ``auto`` or ``ray://HOST:PORT``), with a progress bar, rows and report in ``out``
+    (``out/sweep_<test>`` by default); ``--resume`` keeps the rows already there. Exit status: 0 when every run
+    passed, 1 when one did not, 2 for bad arguments, 130 when interrupted (the finished runs are kept)."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 
     from ..sweep import SweepError, parse_param, parse_seeds, sweep
@@ -45,6 +49,7 @@ def run_sweep(
     task: dict[str, Any] = {}
 
     def on_row(row: dict[str, Any], done: int, total: int) -> None:
+        """Each finished run: the bar moves and counts the runs that did not pass."""
         if row["status"] != "passed":
             failures[0] += 1
         if "id" not in task:

@@ -212,6 +212,9 @@ class GazeboServices(Node):
         return with_robot_state_options(with_joint_state_publisher(xml), enabled=False, frame_prefix=None)
 
     def _gz_spawn(self, req: GzSpawnEntity.Request, res: GzSpawnEntity.Response) -> GzSpawnEntity.Response:
+        """gazebo_ros's ``/spawn_entity`` (gazebo_ros_factory.cpp): the XML (URDF, SDF or xacro output) spawned
+        as ``name`` at ``initial_pose`` in ``reference_frame``, its plugins under ``robot_namespace``; Gazebo's
+        "SpawnEntity: Successfully spawned entity [name]" or a one-line failure, the world unchanged."""
         t0 = time.monotonic()
         label = req.name or "entity"
         try:
@@ -234,6 +237,8 @@ class GazeboServices(Node):
         return res
 
     def _gz_delete(self, req: GzDeleteEntity.Request, res: GzDeleteEntity.Response) -> GzDeleteEntity.Response:
+        """gazebo_ros's ``/delete_entity``: the entity and its plugins, topics and nodes go; the others stay
+        bit-identical."""
         try:
             self.sim.delete(req.name)
         except (WorldError, TimeoutError) as err:
@@ -245,6 +250,9 @@ class GazeboServices(Node):
         return res
 
     def _gz_get_state(self, req: GzGetEntityState.Request, res: GzGetEntityState.Response) -> GzGetEntityState.Response:
+        """gazebo_ros's ``/get_entity_state`` (gazebo_ros_state.cpp): ``model`` or ``model::link``, its pose and
+        twist in ``reference_frame`` (an entity or link name; empty or ``world`` is the world), stamped with
+        the simulation time."""
         entity, _, link = req.name.partition("::")
         frame = req.reference_frame
 
@@ -273,6 +281,8 @@ class GazeboServices(Node):
         return res
 
     def _gz_set_state(self, req: GzSetEntityState.Request, res: GzSetEntityState.Response) -> GzSetEntityState.Response:
+        """gazebo_ros's ``/set_entity_state`` (gazebo_ros_state.cpp): pose and twist given in
+        ``reference_frame``, applied on the simulation thread between steps."""
         s = req.state
         entity, _, _link = s.name.partition("::")
         try:
@@ -342,6 +352,8 @@ class GazeboServices(Node):
         return res
 
     def _gz_model_list(self, req: GzGetModelList.Request, res: GzGetModelList.Response) -> GzGetModelList.Response:
+        """gazebo_msgs' ``/get_model_list``: the entities' names, the world's own models included, at the
+        simulation time."""
         names, t = self.sim.call(lambda: (list(self.sim.world.entities), self.sim.world.time))
         res.header.stamp = to_time(t)
         res.model_names = names
@@ -349,17 +361,23 @@ class GazeboServices(Node):
         return res
 
     def _pause(self, req: Empty.Request, res: Empty.Response) -> Empty.Response:
+        """gazebo_ros_init.cpp's ``/pause_physics``: steps stop, /clock stops, services keep answering."""
         self.sim.call(lambda: setattr(self.sim, "paused", True))
         return res
 
     def _unpause(self, req: Empty.Request, res: Empty.Response) -> Empty.Response:
+        """gazebo_ros_init.cpp's ``/unpause_physics``."""
         self.sim.call(lambda: setattr(self.sim, "paused", False))
         return res
 
     def _reset_simulation(self, req: Empty.Request, res: Empty.Response) -> Empty.Response:
+        """gazebo_ros_init.cpp's ``/reset_simulation`` (world->Reset()): time to zero and every entity back to
+        where it started; spawned entities stay."""
         self.sim.reset(time_=True, state=True, spawned=False)
         return res
 
     def _reset_world(self, req: Empty.Request, res: Empty.Response) -> Empty.Response:
+        """gazebo_ros_init.cpp's ``/reset_world`` (world->ResetEntities): every entity back to where it started,
+        the time goes on."""
         self.sim.reset(time_=False, state=True, spawned=False)
         return res

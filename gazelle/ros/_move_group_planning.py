@@ -35,6 +35,8 @@ class _Planning(_Scene):
 
     # ------------------------------------------------------------------ services
     def _compute_fk(self, req: GetPositionFK.Request, res: GetPositionFK.Response) -> GetPositionFK.Response:
+        """``compute_fk`` (MoveIt's kinematics_service_capability.cpp): each named link's pose at the request's
+        robot state (the current state where it gives none), in the request's frame, else the robot's root."""
         assert self.planner is not None
         q = self._start_state(req.robot_state)
         base = np.linalg.inv(self._frame(req.header.frame_id, q))
@@ -60,6 +62,10 @@ class _Planning(_Scene):
         return 0.5
 
     def _compute_ik(self, req: GetPositionIK.Request, res: GetPositionIK.Response) -> GetPositionIK.Response:
+        """``compute_ik`` (kinematics_service_capability.cpp): a joint solution for ``ik_link_name`` (the group's
+        tip by default) at the pose, seeded from the request's robot state, within its timeout (kinematics.yaml's
+        ``kinematics_solver_timeout`` where it gives none), collision-free when ``avoid_collisions``; the full
+        robot state is returned, as MoveIt fills it."""
         assert self.planner is not None
         ik = req.ik_request
         q = self._start_state(ik.robot_state)
@@ -75,6 +81,9 @@ class _Planning(_Scene):
         return res
 
     def _check_state_validity(self, req: GetStateValidity.Request, res: GetStateValidity.Response) -> Any:
+        """``check_state_validity`` (state_validation_service_capability.cpp): valid when within the joint limits
+        and free of collisions; the colliding pairs as contacts (their bodies and kinds; gazelle has no contact
+        points to give)."""
         assert self.planner is not None
         q = self._start_state(req.robot_state)
         colliding = self.planner.in_collision(q)
@@ -84,6 +93,8 @@ class _Planning(_Scene):
         return res
 
     def _contact(self, a: str, b: str) -> ContactInformation:
+        """A ContactInformation for two colliding bodies, typed as MoveIt types them (a robot link, an object
+        attached to the robot, a world object)."""
         planner = self.planner
         assert planner is not None
         attached = {o.name for o in planner.objects() if o.link}
@@ -98,6 +109,8 @@ class _Planning(_Scene):
         return info
 
     def _plan_kinematic_path(self, req: GetMotionPlan.Request, res: GetMotionPlan.Response) -> Any:
+        """``plan_kinematic_path`` (plan_service_capability.cpp): plan without executing; a failure is the
+        response's error code and message (MoveIt's MoveItErrorCodes), never an exception to the client."""
         t0 = time.monotonic()
         try:
             start, traj = self._plan(req.motion_plan_request)
@@ -116,6 +129,10 @@ class _Planning(_Scene):
         return res
 
     def _compute_cartesian_path(self, req: GetCartesianPath.Request, res: GetCartesianPath.Response) -> Any:
+        """``compute_cartesian_path`` (cartesian_path_service_capability.cpp): the link's straight-line path
+        through the waypoints in ``max_step`` steps, cut where IK fails, a joint jumps (``jump_threshold``) or a
+        collision begins; ``fraction`` says how much was achieved, and a partial path still answers SUCCESS, as
+        MoveIt does."""
         planner = self.planner
         assert planner is not None
         q = self._start_state(req.start_state)

@@ -14,6 +14,7 @@ _STATUS = {1: "ACCEPTED", 2: "EXECUTING", 3: "CANCELING", 4: "SUCCEEDED", 5: "CA
 
 
 def main(argv: list[str]) -> int:
+    """``ros2 action list|info|type|send_goal``: ros2action's verbs with Jazzy's arguments and output."""
     p = argparse.ArgumentParser(prog="ros2 action", description="Various action related sub-commands")
     sub = p.add_subparsers(dest="cmd", required=True)
     ls = sub.add_parser("list", help="Output a list of action names")
@@ -44,12 +45,14 @@ def main(argv: list[str]) -> int:
 
 
 def _actions(node: Any) -> list[tuple[str, list[str]]]:
+    """(name, types) of every action in the graph, as rclpy's action graph finds them."""
     from rclpy.action.graph import get_action_names_and_types
 
     return get_action_names_and_types(node)
 
 
 def _list(node: Any, args: argparse.Namespace) -> int:
+    """``list [-t] [-c]``: the actions, sorted, after discovery."""
     discover(node)
     actions = sorted(_actions(node))
     if args.count_actions:
@@ -61,6 +64,7 @@ def _list(node: Any, args: argparse.Namespace) -> int:
 
 
 def _info(node: Any, args: argparse.Namespace) -> int:
+    """``info NAME [-t] [-c]``: the nodes serving and calling the action, once the graph has settled."""
     from rclpy.action import graph
 
     name = absolute(args.action_name)
@@ -89,6 +93,7 @@ def _info(node: Any, args: argparse.Namespace) -> int:
 
 
 def _type(node: Any, args: argparse.Namespace) -> int:
+    """``type NAME``: the action's type; "Unknown action" with status 1."""
     name = absolute(args.action_name)
     wait_until(node, lambda: name in dict(_actions(node)))
     types = dict(_actions(node)).get(name)

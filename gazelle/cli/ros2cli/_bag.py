@@ -44,6 +44,8 @@ class BagError(Exception):
 
 
 def main(argv: list[str]) -> int:
+    """``ros2 bag record|play|info``: rosbag2's verbs with Jazzy's arguments; a bag that is not there or
+    not readable is one line on stderr and status 1 (:class:`BagError`)."""
     p = argparse.ArgumentParser(prog="ros2 bag", description="Various rosbag related sub-commands")
     sub = p.add_subparsers(dest="cmd", required=True)
     rec = sub.add_parser("record", help="Record ROS data to a bag")
@@ -116,6 +118,8 @@ def _qos_dicts(infos: list[Any]) -> list[dict[str, Any]]:
 
 
 def _read_metadata(bag: Path) -> dict[str, Any]:
+    """The ``rosbag2_bagfile_information`` of a bag folder's metadata.yaml, checked for the keys ``info``
+    and ``play`` read; only the mcap storage is supported."""
     if not bag.exists():
         raise BagError(f"bag '{bag}' does not exist")
     meta_path = bag / "metadata.yaml"
@@ -138,6 +142,8 @@ def _read_metadata(bag: Path) -> dict[str, Any]:
 
 
 def _mcap_files(bag: Path, meta: dict[str, Any]) -> list[Path]:
+    """The bag's MCAP files as metadata.yaml lists them, inside the bag folder whatever path they name
+    (a metadata.yaml can not point play at a file elsewhere)."""
     files = [bag / Path(p).name for p in meta["relative_file_paths"]]
     missing = [str(f) for f in files if not f.is_file()]
     if missing:
@@ -229,6 +235,8 @@ def _decompressed_size(chunk: Any, stop_at: int) -> int:
 
 # --------------------------------------------------------------------------- info
 def _stamp(ns: int) -> str:
+    """A time as ``ros2 bag info`` prints it: local date and time with nanoseconds, then seconds since the
+    epoch."""
     t = datetime.datetime.fromtimestamp(ns / 1e9)
     return (
         f"{t.strftime('%b %d %Y %H:%M:%S')}.{ns % 1_000_000_000:09d} ({ns // 1_000_000_000}.{ns % 1_000_000_000:09d})"
@@ -236,6 +244,7 @@ def _stamp(ns: int) -> str:
 
 
 def _size(n: float) -> str:
+    """A byte count as ``ros2 bag info`` prints it (binary units, one decimal)."""
     for unit in ("B", "KiB", "MiB", "GiB"):
         if n < 1024 or unit == "GiB":
             return f"{n:.1f} {unit}" if unit != "B" else f"{int(n)} B"
@@ -244,6 +253,8 @@ def _size(n: float) -> str:
 
 
 def _info(bag: Path) -> int:
+    """``info BAG``: rosbag2's layout of files, size, duration, start/end, counts and per-topic lines; every
+    MCAP file is opened first, so a damaged one is reported instead of described from metadata.yaml."""
     meta = _read_metadata(bag)
     files = _mcap_files(bag, meta)
     for f in files:
@@ -277,6 +288,9 @@ def _info(bag: Path) -> int:
 
 # --------------------------------------------------------------------------- record
 class _Recorder:
+    """One bag being written: a channel per topic (its ``ros2msg`` schema and its publishers' offered QoS
+    as rosbag2 stores it), the CDR bytes of each message as received, metadata.yaml written at the end."""
+
     def __init__(self, node: Any, out: Path, use_sim_time: bool) -> None:
         from mcap.writer import CompressionType, Writer
 
@@ -379,7 +393,9 @@ class _Recorder:
 
 
 def _record(args: argparse.Namespace) -> int:
-
+    """``record``: the topics named, matched by ``-e`` or all of them (``-a``), minus ``-x``, including topics
+    that appear later; stops on Ctrl-C/SIGTERM or ``--max-duration`` seconds after the first message, then
+    writes metadata.yaml."""
     if not (args.all or args.topics or args.regex):
         raise BagError("no topics given: name topics, or use -a (all) or -e REGEX")
     try:
@@ -462,6 +478,8 @@ def _qos_profile(offered: list[dict[str, Any]]) -> Any:
 
 
 def _offered(meta_qos: Any) -> list[dict[str, Any]]:
+    """The recorded ``offered_qos_profiles`` as a list (rosbag2 writes it as a YAML string in
+    metadata.yaml, as a list in the MCAP channel)."""
     if isinstance(meta_qos, str):
         try:
             meta_qos = yaml.safe_load(meta_qos) if meta_qos.strip() else []
@@ -471,6 +489,9 @@ def _offered(meta_qos: Any) -> list[dict[str, Any]]:
 
 
 def _play(args: argparse.Namespace) -> int:
+    """``play BAG``: each topic published with its recorded type and QoS, messages in log-time order at
+    ``-r`` times their recorded pace from ``--start-offset``, ``-l`` again and again, ``--clock`` publishing
+    /clock from the bag's time."""
     from mcap.reader import make_reader
     from rclpy.duration import Duration
 
@@ -527,6 +548,8 @@ def _wait_for_matches(node: Any, pubs: dict[str, Any], timeout: float) -> None:
 def _play_file(
     node: Any, path: Path, pubs: dict[str, Any], clock_pub: Any, args: argparse.Namespace, make_reader: Any
 ) -> None:
+    """Publish one MCAP file's messages on their due wall times (and /clock, when asked, at its rate from
+    the bag's time); a damaged chunk met midway is a :class:`BagError`."""
     from rosgraph_msgs.msg import Clock
 
     with open(path, "rb") as f:
@@ -561,6 +584,7 @@ def _play_file(
 
 
 def _time_msg(ns: int) -> Any:
+    """builtin_interfaces/Time of nanoseconds since the epoch."""
     from builtin_interfaces.msg import Time
 
     return Time(sec=ns // 1_000_000_000, nanosec=ns % 1_000_000_000)

@@ -43,6 +43,8 @@ class ParamError(Exception):
 
 
 def main(argv: list[str]) -> int:
+    """``ros2 param VERB ...``: ros2param's verbs and arguments (Jazzy); the exit status is 1 with one line on
+    stderr for a node, service or file that is not there, as upstream."""
     p = argparse.ArgumentParser(prog="ros2 param", description="Various param related sub-commands")
     sub = p.add_subparsers(dest="cmd", required=True)
     ls = sub.add_parser("list", help="Output a list of available parameters")
@@ -94,6 +96,7 @@ def main(argv: list[str]) -> int:
 
 # --------------------------------------------------------------------------- helpers
 def _node_names(node: Any, hidden: bool) -> list[str]:
+    """The graph's nodes as full names; hidden ones (a name part starting with ``_``) only when asked."""
     out = []
     for name, ns in node.get_node_names_and_namespaces():
         full = f"{ns.rstrip('/')}/{name}"
@@ -103,6 +106,8 @@ def _node_names(node: Any, hidden: bool) -> list[str]:
 
 
 def _find_node(node: Any, name: str, hidden: bool) -> str:
+    """The full name of the node the user named, once discovery has seen it; "Node not found" otherwise
+    (ros2param's message)."""
     full = absolute(name)
     if not wait_until(node, lambda: full in _node_names(node, True)):
         raise ParamError("Node not found")
@@ -110,6 +115,8 @@ def _find_node(node: Any, name: str, hidden: bool) -> str:
 
 
 def _client(node: Any, target: str) -> Any:
+    """An rclpy parameter client for ``target``, its services ready; an error naming the node when they never
+    appear (a node started with ``start_parameter_services=False``)."""
     from rclpy.parameter_client import AsyncParameterClient
 
     client = AsyncParameterClient(node, target)
@@ -119,6 +126,8 @@ def _client(node: Any, target: str) -> Any:
 
 
 def _result(node: Any, future: Any, what: str) -> Any:
+    """Spin until a parameter service's answer; an error naming the node after
+    :data:`SERVICE_TIMEOUT_SEC` (upstream waits forever; a wedged node must not hang a script)."""
     import rclpy
 
     rclpy.spin_until_future_complete(node, future, timeout_sec=SERVICE_TIMEOUT_SEC)
@@ -128,6 +137,7 @@ def _result(node: Any, future: Any, what: str) -> Any:
 
 
 def _python(value: Any) -> Any:
+    """A ParameterValue as the Python value ros2param prints (arrays as lists)."""
     from rclpy.parameter import parameter_value_to_python
 
     v = parameter_value_to_python(value)
@@ -136,6 +146,8 @@ def _python(value: Any) -> Any:
 
 # --------------------------------------------------------------------------- verbs
 def _list(node: Any, args: argparse.Namespace) -> int:
+    """``list [NODE]``: each node's parameter names, sorted, under a ``/node:`` line when no node is named;
+    ``--param-type`` adds each one's type as ``describe`` names it."""
     if args.node_name:
         names = [_find_node(node, args.node_name, args.include_hidden_nodes)]
     else:
@@ -160,6 +172,8 @@ def _list(node: Any, args: argparse.Namespace) -> int:
 
 
 def _get(node: Any, args: argparse.Namespace) -> int:
+    """``get NODE NAME``: ros2param's ``Double value is: 0.34`` (the label by type), ``--hide-type`` the value
+    alone, "Parameter not set." for an undeclared one."""
     target = _find_node(node, args.node_name, args.include_hidden_nodes)
     got = _result(node, _client(node, target).get_parameters([args.parameter_name]), target)
     if not got.values:
@@ -174,6 +188,9 @@ def _get(node: Any, args: argparse.Namespace) -> int:
 
 
 def _set(node: Any, args: argparse.Namespace) -> int:
+    """``set NODE NAME VALUE [NAME VALUE ...]``: each value parsed as YAML (``0.5`` a double, ``true`` a bool,
+    ``[1, 2]`` an array), as ros2param's ``get_parameter_value``; one result line each, a refusal on stderr
+    with the node's reason and status 1."""
     from rcl_interfaces.msg import Parameter
     from rclpy.parameter import get_parameter_value
 
@@ -192,6 +209,8 @@ def _set(node: Any, args: argparse.Namespace) -> int:
 
 
 def _describe(node: Any, args: argparse.Namespace) -> int:
+    """``describe NODE NAME...``: type, description and constraints (read only, ranges) as ros2param
+    prints them."""
     target = _find_node(node, args.node_name, args.include_hidden_nodes)
     described = _result(node, _client(node, target).describe_parameters(args.parameter_names), target)
     for d in described.descriptors:
@@ -214,6 +233,8 @@ def _describe(node: Any, args: argparse.Namespace) -> int:
 
 
 def _dump(node: Any, args: argparse.Namespace) -> int:
+    """``dump NODE``: every parameter as a parameters file (``/node: ros__parameters: ...``, dotted names
+    nested), which ``load`` and ``--params-file`` read back."""
     target = _find_node(node, args.node_name, args.include_hidden_nodes)
     client = _client(node, target)
     names = sorted(_result(node, client.list_parameters(), target).result.names)
@@ -230,6 +251,8 @@ def _dump(node: Any, args: argparse.Namespace) -> int:
 
 
 def _load(node: Any, args: argparse.Namespace) -> int:
+    """``load NODE FILE``: the file's sections for this node (``/**`` first, the node's own over it) set in
+    one call; one line per parameter, refusals on stderr."""
     from rclpy.parameter import Parameter
 
     target = _find_node(node, args.node_name, args.include_hidden_nodes)
@@ -257,6 +280,7 @@ def _load(node: Any, args: argparse.Namespace) -> int:
     flat: dict[str, Any] = {}
 
     def walk(prefix: str, value: Any) -> None:
+        """Flatten nested mappings into dotted parameter names."""
         if isinstance(value, dict):
             for k, v in value.items():
                 walk(f"{prefix}{k}.", v)

@@ -8,6 +8,8 @@ import sys
 
 
 def main(argv: list[str]) -> int:
+    """``ros2 pkg list|prefix|executables``: packages from the ament index (the venv is a prefix; a sourced
+    workspace comes first), executables from ``lib/PKG`` and colcon's isolated ``bin/``."""
     p = argparse.ArgumentParser(prog="ros2 pkg", description="Various package related sub-commands")
     sub = p.add_subparsers(dest="cmd", required=True)
     sub.add_parser("list", help="Output a list of available packages")

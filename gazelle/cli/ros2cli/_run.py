@@ -9,6 +9,8 @@ import sys
 
 
 def main(argv: list[str]) -> int:
+    """``ros2 run``: find the executable as launch_ros does and replace this process with it (``--prefix``
+    goes before it, split as a shell would), so its signals and exit status are the program's own."""
     p = argparse.ArgumentParser(prog="ros2 run", description="Run a package specific executable")
     p.add_argument("--prefix", default=None, help="Prefix command, which should go before the executable")
     p.add_argument("package_name", help="Name of the ROS package")

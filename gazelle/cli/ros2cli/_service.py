@@ -12,6 +12,7 @@ from ._messages import InterfaceError, get_interface, parse_values, set_fields
 
 
 def service_main(argv: list[str]) -> int:
+    """``ros2 service list|type|find|call``: ros2service's verbs with Jazzy's arguments and output."""
     p = argparse.ArgumentParser(prog="ros2 service", description="Various service related sub-commands")
     sub = p.add_subparsers(dest="cmd", required=True)
     ls = sub.add_parser("list")
