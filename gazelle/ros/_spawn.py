@@ -433,7 +433,11 @@ def _bond(node: Node, executor: SingleThreadedExecutor, args: argparse.Namespace
 
     node.get_logger().info(f"Waiting for shutdown to delete entity [{args.entity}]")
     stop = []
-    signal.signal(signal.SIGTERM, lambda *_: stop.append(True))  # a launch's SIGTERM, as its Ctrl-C
+    # Ctrl-C and a launch's SIGTERM end the wait between two spins, whenever they come (rclpy's own handler
+    # left it racy: a SIGINT that landed inside a spin was seen neither as KeyboardInterrupt nor as a shut
+    # down context, and the process hung)
+    for signum in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(signum, lambda *_: stop.append(True))
     try:
         while node.context.ok() and not stop:
             executor.spin_once(timeout_sec=0.2)

@@ -59,8 +59,8 @@ def test_named_states_are_reached_through_the_joints_position_controllers(gz_pan
 
 def test_cancelling_a_streamed_motion_stops_the_arm_short_of_its_goal(gz_panda):
     far = {**_group_states("panda_arm")["ready"], "panda_joint1": 2.5}
-    result, stopped, held = gz_panda.cancel_midway(far, "panda_joint1", 0.3)
-    assert result.error_code.val == MoveItErrorCodes.PREEMPTED, result.error_code
+    response, stopped, held = gz_panda.cancel_midway(far, "panda_joint1", 0.3)
+    assert response.result.error_code.val == MoveItErrorCodes.PREEMPTED, response.result.error_code
     assert stopped < 2.0, stopped
     # it stays where it stopped, a second of sim time later: nothing streams the rest of the plan
     assert abs(held - stopped) < 0.05, (stopped, held)
