@@ -3,6 +3,8 @@ joint_limits.yaml unchanged): MoveIt's error names, IK, collision checking and t
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 import yaml
@@ -555,3 +557,61 @@ def test_a_failed_ik_says_whether_the_pose_is_out_of_reach_or_in_collision(plann
         assert "reachable, but in collision" in err.value.message and "block" in err.value.message, err.value.message
     finally:
         planner.remove_object("block")
+
+
+def test_the_collision_matrix_round_trips_moveits_message_layout():
+    """The matrix as MoveIt's AllowedCollisionMatrix message lays it out (entry_names, entry_values rows);
+    a malformed one is refused with why."""
+    from gazelle.planning import CollisionMatrix
+
+    acm = CollisionMatrix.initial(["a", "b", "c"], [("a", "b"), ("a", "zz")])
+    assert acm.rows() == [[False, True, False], [True, False, False], [False, False, False]]
+    again = CollisionMatrix.from_rows(acm.names + ["box"], [r + [True] for r in acm.rows()] + [[True] * 4])
+    assert again.is_allowed("a", "b") and again.is_allowed("box", "c") and not again.is_allowed("b", "c")
+    assert dict(again.pairs_with("box")) == {"a": True, "b": True, "c": True}
+    for names, rows, why in (
+        (["a", "b"], [[False, True]], "2 entry_names but 1 entry_values"),
+        (["a", "b"], [[False], [True, False]], "entry_values[0] has 1 values for 2 entry_names"),
+    ):
+        with pytest.raises(ValueError, match=re.escape(why)):
+            CollisionMatrix.from_rows(names, rows)
+
+
+def test_a_replaced_collision_matrix_allows_and_forbids_pairs_and_outlives_an_attach(planner):
+    """MoveIt's semantics (planning_scene.cpp setPlanningSceneDiffMsg): a new matrix replaces the old, its
+    allowed pairs are not checked, the rest among its names are, the SRDF's pairs included; a rebuild of the
+    scene (an attach) keeps it."""
+    from gazelle.planning import CollisionMatrix, SceneObject, Shape
+
+    q = planner.state(READY)
+    flange = planner.fk(q, "panda_link8")
+    block = np.eye(4)
+    block[:3, 3] = flange[:3, 3]
+    initial = planner.acm
+    planner.add_box("acm_block", [0.2, 0.2, 0.2], block)
+    try:
+        assert planner.in_collision(q)
+
+        def with_block(allow: bool, srdf: bool = True) -> CollisionMatrix:
+            names = [*initial.names, "acm_block"]
+            rows = [[*r, allow] for r in initial.rows()] + [[allow] * len(initial.names) + [False]]
+            if not srdf:  # every robot pair checked: the links that touch by design now collide
+                rows = [[False] * len(names) for _ in names]
+            return CollisionMatrix.from_rows(names, rows)
+
+        planner.set_allowed_collision_matrix(with_block(True))
+        assert not planner.in_collision(q)
+        held = SceneObject("acm_held", (Shape("box", (0.02, 0.02, 0.02), np.eye(4)),), np.eye(4), link="panda_hand")
+        planner.add_object(held)  # rebuilds the robot model: the matrix is applied again
+        pairs = planner.colliding_pairs(q)  # the held piece is in the block: not in the matrix, so checked
+        assert pairs and all("acm_held" in pair for pair in pairs), pairs
+        planner.remove_object("acm_held")
+        planner.set_allowed_collision_matrix(with_block(False))
+        assert planner.in_collision(q) and "acm_block" in planner.named_pairs(q)
+        planner.remove_object("acm_block")
+        planner.set_allowed_collision_matrix(with_block(False, srdf=False))
+        assert planner.in_collision(q)  # panda_link0 touches panda_link1: the SRDF's pair is checked again
+    finally:
+        planner.remove_object("acm_block")
+        planner.set_allowed_collision_matrix(initial)
+    assert not planner.in_collision(q)

@@ -3,6 +3,7 @@
 Core layer: no rclpy. ``gazelle.ros._move_group`` serves it with MoveIt's ROS interfaces.
 """
 
+from ._collision_matrix import CollisionMatrix as CollisionMatrix
 from ._planner import ArmPlanner as ArmPlanner
 from ._planner import Trajectory as Trajectory
 from ._robot_scene import DEFAULT_ACCELERATION as DEFAULT_ACCELERATION

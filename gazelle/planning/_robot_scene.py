@@ -17,6 +17,7 @@ import numpy as np
 from lxml import etree
 
 from ..description import ModelLoadError, ResourceResolver, Semantics, Severity, load_string
+from ._collision_matrix import CollisionMatrix
 
 DEFAULT_ACCELERATION = 1.0
 """rad/s² (m/s²) for a joint whose limits give no acceleration, as MoveIt's time parameterisation assumes."""
@@ -188,6 +189,17 @@ class RobotScene:
         self._objects: dict[str, tuple[SceneObject, tuple[str, ...]]] = {}  # name -> (object, geometry names)
         self._attached_links: list[str] = []
         """The links the attached objects are in the robot model (see :meth:`_rebuild`)."""
+        collision_links = [str(link.get("name")) for link in robot.iter("link") if link.find("collision") is not None]
+        self._collision_links = frozenset(collision_links)
+        disabled = [(d.link1, d.link2) for d in semantics.disabled_collisions]
+        self.acm = CollisionMatrix.initial(collision_links, disabled)
+        """MoveIt's allowed collision matrix (see :mod:`._collision_matrix`); roboplan already holds the
+        initial one (the SRDF's pairs), so it is applied only once a client has set one."""
+        self._srdf_allowed = frozenset(self.acm.allowed)
+        self._acm_set = False
+        self._acm_applied: set[frozenset[str]] = set()
+        """Pairs whose checking the matrix has changed in roboplan from the SRDF's (link pairs either way,
+        object pairs allowed), to put back when a later matrix says otherwise."""
 
     # ------------------------------------------------------------------ model
     def _import_srdf(self, srdf: str, source: str, robot) -> set[str]:
@@ -429,6 +441,80 @@ class RobotScene:
             self._rebuild()
         else:
             self._objects[obj.name] = (obj, self._add_geometries(obj))
+            self._apply_acm({obj.name})
+
+    # ------------------------------------------------------------------ allowed collision matrix
+    def set_allowed_collision_matrix(self, matrix: CollisionMatrix) -> None:
+        """Replace the allowed collision matrix, as MoveIt's ``setPlanningSceneDiffMsg`` does: the pairs it
+        allows are not checked from now on, the other pairs among its names are (the SRDF's too, when the
+        matrix forbids them); an object it names that comes later gets its entries then."""
+        self.acm = matrix
+        self._acm_set = True
+        self._apply_acm()
+
+    def _apply_acm(self, only: set[str] | None = None) -> None:
+        """Put the matrix's pairs into roboplan (those involving ``only``'s names, or all): link pairs as
+        the matrix says; an object pair allowed, or checked again when an earlier matrix allowed it and
+        gazelle does not allow it on its own (an attached object with its link and touch_links, a world
+        object with the links no plan moves and with other world objects)."""
+        if not self._acm_set:
+            return
+        allow: list[tuple[str, str]] = []
+        check: list[tuple[str, str]] = []
+        names = self.acm.names
+        for i, a in enumerate(names):
+            for b in names[i + 1 :]:
+                if only is not None and a not in only and b not in only:
+                    continue
+                key = frozenset((a, b))
+                allowed = key in self.acm.allowed
+                if a in self._collision_links and b in self._collision_links:
+                    # only what differs from the SRDF's: roboplan never pairs links on one joint, and a pair
+                    # set to be checked would be added
+                    changed = allowed != (key in self._srdf_allowed)
+                    if changed or key in self._acm_applied:
+                        (allow if allowed else check).append((a, b))
+                        if changed:
+                            self._acm_applied.add(key)
+                        else:
+                            self._acm_applied.discard(key)
+                    continue
+                pairs = [(x, y) for x in self._bodies(a) for y in self._bodies(b)]
+                if not pairs:
+                    continue
+                if allowed:
+                    allow += pairs
+                    self._acm_applied.add(key)
+                elif key in self._acm_applied:
+                    self._acm_applied.discard(key)
+                    check += [(x, y) for x, y in pairs if not self._allowed_anyway(a, b)]
+        for pairs, enabled in ((allow, False), (check, True)):
+            if pairs:
+                try:
+                    self.scene.setCollisions(pairs, enabled)
+                except Exception:  # see _add_geometries: the data is rebuilt below whatever happened
+                    pass
+        self.scene.setCollisions([], False)
+
+    def _bodies(self, name: str) -> list[str]:
+        """roboplan's bodies of a matrix name: a link with collision geometry itself, an object its
+        geometries; nothing for a name the scene does not have (yet)."""
+        if name in self._collision_links:
+            return [name]
+        entry = self._objects.get(name)
+        return list(entry[1]) if entry is not None else []
+
+    def _allowed_anyway(self, a: str, b: str) -> bool:
+        """Whether gazelle allows the pair whatever the matrix says (see :meth:`_add_geometries`)."""
+        objects = {n: o for n, (o, _g) in self._objects.items()}
+        for obj_name, other in ((a, b), (b, a)):
+            obj = objects.get(obj_name)
+            if obj is None:
+                continue
+            if obj.link:
+                return other in {obj.link, *obj.touch_links}
+            return other in self.fixed_links or (other in objects and not objects[other].link)
+        return False
 
     def _add_geometries(self, obj: SceneObject) -> tuple[str, ...]:
         """Add ``obj``'s shapes as scene geometry: a world object's in the world, free to touch the links
@@ -539,6 +625,8 @@ class RobotScene:
         objects, self._objects = self._objects, {}
         for name, (obj, _) in objects.items():
             self._objects[name] = (obj, self._add_geometries(obj))
+        self._acm_applied.clear()  # a new roboplan scene: the SRDF's pairs again, then the matrix
+        self._apply_acm()
 
     def move_object(self, name: str, pose: np.ndarray) -> None:
         """Put an object (its shapes unchanged) at ``pose``: cheaper than adding it again."""

@@ -7,6 +7,7 @@ from typing import Any
 
 import numpy as np
 from moveit_msgs.msg import (
+    AllowedCollisionEntry,
     AttachedCollisionObject,
     CollisionObject,
     PlanningScene,
@@ -17,7 +18,7 @@ from moveit_msgs.srv import (
     GetPlanningScene,
 )
 
-from ..planning import PlanningError, SceneObject
+from ..planning import CollisionMatrix, PlanningError, SceneObject
 from ._move_group_base import (
     MAX_SCENE_OBJECTS,
     _MoveGroupBase,
@@ -44,6 +45,9 @@ class _Scene(_MoveGroupBase):
         objects = planner.objects()
         scene.robot_state.attached_collision_objects = [attached_message(o) for o in objects if o.link]
         scene.world.collision_objects = [to_message(o, planner.root_link) for o in objects if not o.link]
+        acm = planner.acm
+        scene.allowed_collision_matrix.entry_names = list(acm.names)
+        scene.allowed_collision_matrix.entry_values = [AllowedCollisionEntry(enabled=row) for row in acm.rows()]
         scene.is_diff = False
         return res
 
@@ -160,6 +164,17 @@ class _Scene(_MoveGroupBase):
             if co.operation != CollisionObject.REMOVE:
                 checked_matrix(co.pose, f"collision object '{co.id[:80]}'")
                 shapes_of(co, lambda _text: None)
+        acm_msg = scene.allowed_collision_matrix
+        acm = None
+        if acm_msg.entry_names:
+            if len(acm_msg.entry_names) > MAX_SCENE_OBJECTS + len(planner.acm.names):
+                raise PlanningError("FAILURE", f"allowed_collision_matrix names {len(acm_msg.entry_names)} entries")
+            try:
+                acm = CollisionMatrix.from_rows(
+                    [str(n) for n in acm_msg.entry_names], [list(e.enabled) for e in acm_msg.entry_values]
+                )
+            except ValueError as err:
+                raise PlanningError("FAILURE", f"allowed_collision_matrix: {err}") from None
         self._note_scene_parts(scene)
         if not scene.is_diff:  # a whole scene replaces the objects there are
             for obj in planner.objects():
@@ -168,16 +183,15 @@ class _Scene(_MoveGroupBase):
             self._apply_world_object(co)
         for aco in scene.robot_state.attached_collision_objects:
             self._apply_attached(aco)
+        if acm is not None:  # MoveIt replaces its matrix with the message's (setPlanningSceneDiffMsg)
+            planner.set_allowed_collision_matrix(acm)
 
     def _note_scene_parts(self, scene: PlanningScene) -> None:
         """Say, once per kind, what of a PlanningScene gazelle does not apply (MoveIt's planning_scene.cpp
         setPlanningSceneDiffMsg applies them all): nothing a client sends is dropped without a word."""
         notes = []
-        if scene.allowed_collision_matrix.entry_names or scene.allowed_collision_matrix.default_entry_names:
-            notes.append(
-                ("acm", "allowed_collision_matrix is not applied: planning keeps checking the pairs it allows "
-                 "(the SRDF's disabled pairs and an attached object's touch_links are what gazelle allows)")
-            )  # fmt: skip
+        if scene.allowed_collision_matrix.default_entry_names:
+            notes.append(("acm", "the allowed_collision_matrix's default entries are not applied (its entries are)"))
         if scene.link_padding or scene.link_scale:
             notes.append(("padding", "link_padding and link_scale are not applied"))
         if scene.fixed_frame_transforms:

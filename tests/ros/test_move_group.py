@@ -610,22 +610,29 @@ def test_compute_cartesian_path_draws_a_20_cm_line_that_the_arm_follows_within_2
     assert travelled == pytest.approx(0.2, abs=2e-3)
 
 
-def test_an_object_applied_to_the_planning_scene_is_listed_planned_around_and_removed(panda):
+def _crate_below_hand(panda: Panda, ready: dict[str, float], name: str) -> Any:
+    """A 0.2 m box 0.25 m below the flange at ``ready``, to ADD: the hand is in it when the arm reaches down."""
     from geometry_msgs.msg import Pose
-    from moveit_msgs.msg import CollisionObject, PlanningScene
-    from moveit_msgs.srv import ApplyPlanningScene, GetPlanningScene, GetStateValidity
+    from moveit_msgs.msg import CollisionObject
     from shape_msgs.msg import SolidPrimitive
 
-    ready = _ready(panda)
     (hand,) = _fk(panda, ready, ["panda_link8"])
-    box = CollisionObject(id="crate", operation=CollisionObject.ADD)
+    box = CollisionObject(id=name, operation=CollisionObject.ADD)
     box.header.frame_id = "panda_link0"
-    box.pose = Pose()
-    box.pose.position.x, box.pose.position.y, box.pose.position.z = hand.position.x, 0.0, hand.position.z - 0.25
+    box.pose.position.x, box.pose.position.z = hand.position.x, hand.position.z - 0.25
     box.pose.orientation.w = 1.0
     box.primitives = [SolidPrimitive(type=SolidPrimitive.BOX, dimensions=[0.2, 0.2, 0.2])]
     box.primitive_poses = [Pose()]
     box.primitive_poses[0].orientation.w = 1.0
+    return box
+
+
+def test_an_object_applied_to_the_planning_scene_is_listed_planned_around_and_removed(panda):
+    from moveit_msgs.msg import CollisionObject, PlanningScene
+    from moveit_msgs.srv import ApplyPlanningScene, GetPlanningScene, GetStateValidity
+
+    ready = _ready(panda)
+    box = _crate_below_hand(panda, ready, "crate")
     scene = PlanningScene(is_diff=True)
     scene.world.collision_objects = [box]
     assert panda.ros.call(ApplyPlanningScene, "/apply_planning_scene", ApplyPlanningScene.Request(scene=scene)).success
@@ -852,24 +859,79 @@ def test_joint_states_reach_move_group_outside_its_executor(panda):
     assert "/joint_states" not in subscribers("move_group")
 
 
-def test_scene_parts_gazelle_does_not_apply_are_said_once(panda):
-    """pymoveit2's allow_collisions sends an allowed_collision_matrix; MoveIt applies it (planning_scene.cpp,
-    setPlanningSceneDiffMsg). gazelle does not yet: it says so once, by name, instead of dropping it unsaid."""
-    from moveit_msgs.msg import AllowedCollisionEntry, PlanningScene
-    from moveit_msgs.srv import ApplyPlanningScene
+def test_the_allowed_collision_matrix_is_read_and_replaced_as_pymoveit2_allows_collisions(panda):
+    """MoveIt's allowed collision matrix (planning_scene.cpp, collision_matrix.cpp): get_planning_scene gives the
+    robot's links with the SRDF's pairs allowed; apply_planning_scene replaces it with the message's.
+    pymoveit2's allow_collisions(id, allow) reads it, adds a row and a column for the object and applies it.
+    gazelle dropped the matrix unsaid: the hand in a crate stayed in collision."""
+    from moveit_msgs.msg import AllowedCollisionEntry, CollisionObject, PlanningScene
+    from moveit_msgs.srv import ApplyPlanningScene, GetPlanningScene, GetStateValidity
 
+    def matrix() -> Any:
+        return panda.ros.call(
+            GetPlanningScene, "/get_planning_scene", GetPlanningScene.Request()
+        ).scene.allowed_collision_matrix
+
+    def apply(scene: Any) -> None:
+        assert panda.ros.call(
+            ApplyPlanningScene, "/apply_planning_scene", ApplyPlanningScene.Request(scene=scene)
+        ).success
+
+    def allow_collisions(name: str, allow: bool) -> None:  # pymoveit2's MoveIt2.allow_collisions, step by step
+        acm = matrix()
+        j = acm.entry_names.index(name) if name in acm.entry_names else None
+        if j is None:
+            acm.entry_names.append(name)
+        for i in range(len(acm.entry_values)):
+            if j is None:
+                acm.entry_values[i].enabled.append(allow)
+            elif i != j:
+                acm.entry_values[i].enabled[j] = allow
+        entry = AllowedCollisionEntry(enabled=[allow] * len(acm.entry_names))
+        if j is None:
+            acm.entry_values.append(entry)
+        else:
+            acm.entry_values[j] = entry
+        scene = PlanningScene(is_diff=True)
+        scene.allowed_collision_matrix = acm
+        apply(scene)
+
+    acm = matrix()
+    names = list(acm.entry_names)
+    assert "panda_link0" in names and "panda_hand" in names
+    rows = [list(e.enabled) for e in acm.entry_values]
+    assert rows[names.index("panda_link0")][names.index("panda_link1")]  # the SRDF's Adjacent pair
+    assert not rows[names.index("panda_link0")][names.index("panda_hand")]
+
+    ready = _ready(panda)
+    crate = _crate_below_hand(panda, ready, "acm_crate")
     scene = PlanningScene(is_diff=True)
-    scene.allowed_collision_matrix.entry_names = ["panda_link0", "box"]
-    scene.allowed_collision_matrix.entry_values = [
-        AllowedCollisionEntry(enabled=[False, True]),
-        AllowedCollisionEntry(enabled=[True, False]),
-    ]
-    for _ in range(2):
-        req = ApplyPlanningScene.Request(scene=scene)
-        assert panda.ros.call(ApplyPlanningScene, "/apply_planning_scene", req).success
-    said = wait_for(
-        lambda: "allowed_collision_matrix is not applied" in panda.move_group.output and panda.move_group.output,
-        10,
-        "move_group to say the matrix is not applied",
-    )
-    assert said.count("allowed_collision_matrix is not applied") == 1
+    scene.world.collision_objects = [crate]
+    apply(scene)
+    reaching_down = {**ready, "panda_joint2": 0.1, "panda_joint4": -2.3}  # the hand in the crate
+
+    def valid() -> bool:
+        req = GetStateValidity.Request(group_name="panda_arm")
+        req.robot_state.joint_state.name = list(reaching_down)
+        req.robot_state.joint_state.position = [float(v) for v in reaching_down.values()]
+        return panda.ros.call(GetStateValidity, "/check_state_validity", req).valid
+
+    try:
+        assert not valid()
+        allow_collisions("acm_crate", True)
+        assert valid(), panda.said()
+        assert "acm_crate" in matrix().entry_names
+        allow_collisions("acm_crate", False)
+        assert not valid()
+        bad = PlanningScene(is_diff=True)
+        bad.allowed_collision_matrix.entry_names = ["panda_hand", "acm_crate"]
+        bad.allowed_collision_matrix.entry_values = [AllowedCollisionEntry(enabled=[True])]
+        refused = panda.ros.call(ApplyPlanningScene, "/apply_planning_scene", ApplyPlanningScene.Request(scene=bad))
+        assert not refused.success and not valid()  # refused whole, the matrix unchanged
+    finally:
+        removal = PlanningScene(is_diff=True)
+        removal.world.collision_objects = [CollisionObject(id="acm_crate", operation=CollisionObject.REMOVE)]
+        apply(removal)
+        initial = PlanningScene(is_diff=True)  # the SRDF's matrix back for the tests after this one
+        initial.allowed_collision_matrix = acm
+        apply(initial)
