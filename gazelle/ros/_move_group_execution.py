@@ -52,6 +52,9 @@ class _Execution(_Planning):
 
     # ------------------------------------------------------------------ actions
     def _execute_move_group(self, handle: Any) -> MoveGroup.Result:
+        """The ``move_action`` goal (move_action_capability.cpp): plan the request (feedback PLANNING), show the
+        plan on /display_planned_path, and unless ``plan_only`` execute it (feedback MONITOR); the result carries
+        the start state, the planned trajectory and, on success, the executed one."""
         result = MoveGroup.Result()
         if self.planner is None:
             result.error_code = _code("FAILURE")
@@ -103,6 +106,9 @@ class _Execution(_Planning):
         return result
 
     def _execute_trajectory(self, handle: Any) -> ExecuteTrajectory.Result:
+        """The ``execute_trajectory`` goal (execute_trajectory_action_capability.cpp): a trajectory beyond the
+        limits is refused (INVALID_MOTION_PLAN) before anything moves; otherwise it runs on its controllers and
+        anything but success ends the goal aborted, as MoveIt ends it."""
         result = ExecuteTrajectory.Result()
         trajectory = handle.request.trajectory.joint_trajectory
         problem = self._check_trajectory(trajectory)
@@ -245,6 +251,7 @@ class _Execution(_Planning):
             time.sleep(0.1)  # the graph is kept by the middleware's threads
 
     def _action_served(self, action: str) -> bool:
+        """Whether an action server of that name is in the graph now."""
         from rclpy.action.graph import get_action_names_and_types
 
         return any(name == action for name, _ in get_action_names_and_types(self._execution_node))
