@@ -79,12 +79,16 @@ def run_sweep(
         return 130
     finally:
         progress.stop()
-    rows = result.rows
+    return _summary(result.rows, result.ran, time.perf_counter() - t0, folder)
+
+
+def _summary(rows: list[dict[str, Any]], ran: int, seconds: float, folder: Path) -> int:
+    """The closing line (runs by status, where the report is) and the exit status: 0 when all passed."""
     passed = sum(r["status"] == "passed" for r in rows)
     errors = sum(r["status"] == "error" for r in rows)
     other = sum(r["status"] in ("timeout", "lost") for r in rows)
     print(
-        f"{len(rows)} runs ({result.ran} now, in {time.perf_counter() - t0:.1f} s): {passed} passed, "
+        f"{len(rows)} runs ({ran} now, in {seconds:.1f} s): {passed} passed, "
         f"{len(rows) - passed - errors - other} failed, {errors} raised, {other} timed out or lost; "
         f"report: {folder / 'report.html'}"
     )

@@ -61,6 +61,12 @@ def main(argv: list[str]) -> int:
             if any(_definitions(packages[name], name, k) for k in kinds):
                 print(name)
         return 0
+    return _list(args, packages)
+
+
+def _list(args: argparse.Namespace, packages: dict[str, str]) -> int:
+    """``list`` (every package's interfaces under Messages/Services/Actions, ``-m``/``-s``/``-a`` one kind)
+    and ``package NAME`` (its interfaces, one a line), as ros2interface prints them."""
     names = [args.package_name] if args.cmd == "package" else sorted(packages)
     if args.cmd == "package" and args.package_name not in packages:
         print(f"Unknown package '{args.package_name}'", file=sys.stderr)
@@ -76,13 +82,7 @@ def main(argv: list[str]) -> int:
     ] or ["msg", "srv", "action"]
     titles = {"msg": "Messages", "srv": "Services", "action": "Actions"}
     for kind in kinds:
-        found = []
-        for name in names:
-            folder = os.path.join(packages[name], "share", name, kind)
-            if os.path.isdir(folder):
-                found += [
-                    f"{name}/{kind}/{f.rsplit('.', 1)[0]}" for f in sorted(os.listdir(folder)) if f.endswith(f".{kind}")
-                ]
+        found = [f"{name}/{kind}/{d}" for name in names for d in _definitions(packages[name], name, kind)]
         if args.cmd == "package":
             print("\n".join(found)) if found else None
             continue
