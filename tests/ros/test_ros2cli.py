@@ -181,10 +181,13 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
     # /odom at 100 Hz (the plugin's update rate), measured in simulated time (-s, as ros2cli's hz measures
     # with its node's clock), so a loaded machine does not change it (on the wall clock a busy CI machine
     # saw 92 and 115 Hz); --filter as ros2cli's (a Python expression of the message `m`)
-    # (the last 100 intervals: the first messages can come before the verb's clock has heard /clock)
+    # (the last 100 intervals: the first messages can come before the verb's clock has heard /clock). Each
+    # message is timed when it arrives, by the latest /clock heard, so a loaded machine that delivers /odom
+    # late against /clock still moves one window (81 Hz once, beside a CPU hog, between two of 100.000):
+    # the median of three
     hz = ros2("topic", "hz", "-s", "/odom", "-w", "100", "--count", "3", "--filter", "m.header.frame_id == 'odom'")
     rates = [float(line.split(":")[1]) for line in hz.stdout.splitlines() if line.startswith("average rate:")]
-    assert len(rates) == 3 and rates[-1] == pytest.approx(100.0, rel=0.03), hz.stdout + hz.stderr
+    assert len(rates) == 3 and sorted(rates)[1] == pytest.approx(100.0, rel=0.03), hz.stdout + hz.stderr
 
     # pausing from the command line stops /clock
     clocks: list = []
