@@ -426,18 +426,19 @@ def _package_to_model(xml: str) -> str | None:
 
 
 def _bond(node: Node, executor: SingleThreadedExecutor, args: argparse.Namespace, timeout: float) -> int:
-    """spawn_entity.py's ``-b``: stay until interrupted (Ctrl-C, SIGTERM), then delete the entity. rclpy's
-    signal handler has shut this context down by then, so the deletion goes through a context of its own
-    (upstream's own call fails there: its TODO, ros2/rclpy#244)."""
+    """spawn_entity.py's ``-b``: stay until interrupted (Ctrl-C, SIGTERM), then delete the entity, through a
+    context of its own (a signal may have shut the first down: upstream's own call fails there, its TODO
+    on ros2/rclpy#244)."""
     import signal
 
-    node.get_logger().info(f"Waiting for shutdown to delete entity [{args.entity}]")
     stop = []
     # Ctrl-C and a launch's SIGTERM end the wait between two spins, whenever they come (rclpy's own handler
     # left it racy: a SIGINT that landed inside a spin was seen neither as KeyboardInterrupt nor as a shut
     # down context, and the process hung)
     for signum in (signal.SIGINT, signal.SIGTERM):
         signal.signal(signum, lambda *_: stop.append(True))
+    # said once the handlers are in: a signal sent when this line shows never meets the default action
+    node.get_logger().info(f"Waiting for shutdown to delete entity [{args.entity}]")
     try:
         while node.context.ok() and not stop:
             executor.spin_once(timeout_sec=0.2)
