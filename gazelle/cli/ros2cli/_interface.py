@@ -18,16 +18,16 @@ def main(argv: list[str]) -> int:
     comments.add_argument("--all-comments", action="store_true", help="Show all comments, nested ones too")
     comments.add_argument("--no-comments", action="store_true", help="Show no comments or whitespace")
     show.add_argument("type", help="e.g. nav_msgs/msg/Odometry; '-' reads it from stdin")
-    ls = sub.add_parser("list", help="List all interface types available")
-    ls.add_argument("-m", "--only-msgs", action="store_true")
-    ls.add_argument("-s", "--only-srvs", action="store_true")
-    ls.add_argument("-a", "--only-actions", action="store_true")
+    for name, text in (
+        ("list", "List all interface types available"),
+        ("packages", "Output a list of packages that provide interfaces"),
+    ):
+        by_kind = sub.add_parser(name, help=text)
+        by_kind.add_argument("-m", "--only-msgs", action="store_true")
+        by_kind.add_argument("-s", "--only-srvs", action="store_true")
+        by_kind.add_argument("-a", "--only-actions", action="store_true")
     pkg = sub.add_parser("package", help="Output a list of available interface types within one package")
     pkg.add_argument("package_name")
-    pkgs = sub.add_parser("packages", help="Output a list of packages that provide interfaces")
-    pkgs.add_argument("-m", "--only-msgs", action="store_true")
-    pkgs.add_argument("-s", "--only-srvs", action="store_true")
-    pkgs.add_argument("-a", "--only-actions", action="store_true")
     proto = sub.add_parser("proto", help="Output an interface prototype")
     proto.add_argument("type")
     args = p.parse_args(argv)
