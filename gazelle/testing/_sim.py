@@ -211,8 +211,10 @@ class Sim:
             raise
 
     # ------------------------------------------------------------------ processes
-    def _child(self, name: str, argv: Sequence[str], cwd: Path | None = None) -> ChildProcess:
-        child = ChildProcess(name, argv, self.env, cwd)
+    def _child(
+        self, name: str, argv: Sequence[str], cwd: Path | None = None, env: Mapping[str, str] | None = None
+    ) -> ChildProcess:
+        child = ChildProcess(name, argv, {**self.env, **(env or {})}, cwd)
         self.children.append(child)
         return child
 
@@ -250,9 +252,16 @@ class Sim:
         argv += [f"{k}:={v}" for k, v in arguments.items()]
         return self._child(f"ros2 launch {package_or_path} {file or ''}".strip(), argv)
 
-    def run(self, argv: Sequence[str], name: str | None = None, cwd: Path | None = None) -> ChildProcess:
-        """Start any other process on the simulation's domain (a node of the user's); it ends with the test."""
-        return self._child(name or Path(argv[0]).name, argv, cwd)
+    def run(
+        self,
+        argv: Sequence[str],
+        name: str | None = None,
+        cwd: Path | None = None,
+        env: Mapping[str, str] | None = None,
+    ) -> ChildProcess:
+        """Start any other process on the simulation's domain (a node of the user's); it ends with the test.
+        ``env`` adds to (or overrides) the simulation's environment for this process only."""
+        return self._child(name or Path(argv[0]).name, argv, cwd, env)
 
     # ------------------------------------------------------------------ time
     @property
