@@ -230,7 +230,12 @@ class ArmPlanner(RobotScene):
         opts = self._simple_ik.SimpleIkOptions()
         opts.group_name = group
         opts.check_collisions = avoid_collisions
-        opts.max_time = 0.05
+        # Each pose is solved from the last in at most max_iters iterations (roboplan's default, 100): the
+        # same work and the same answer on any machine. The wall-clock budget is only a guard: at 50 ms a
+        # loaded machine took it from the solver between two iterations, and the chess robot's lift
+        # answered 0 % beside a CPU hog (tests/test_planning.py stalls the planner's process to show it).
+        opts.max_iters = 100
+        opts.max_time = 2.0
         opts.max_restarts = 0  # continuity: each pose from the last one, never a jump to another branch
         opts.max_linear_error_norm = 1e-4
         opts.max_angular_error_norm = 1e-3
