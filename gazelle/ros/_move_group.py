@@ -35,10 +35,13 @@ from moveit_msgs.srv import (
     ApplyPlanningScene,
     GetCartesianPath,
     GetMotionPlan,
+    GetPlannerParams,
     GetPlanningScene,
     GetPositionFK,
     GetPositionIK,
     GetStateValidity,
+    QueryPlannerInterfaces,
+    SetPlannerParams,
 )
 from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
 from rclpy.callback_groups import ReentrantCallbackGroup
@@ -61,13 +64,14 @@ from ._move_group_base import (
     _log,
 )
 from ._move_group_execution import _Execution
+from ._move_group_planners import _PlannerQueries
 from ._replies import serve
 from ._signals import spin_until_shutdown
 
 __all__ = ["PIPELINE_PARAMETERS", "Controller", "MoveGroupNode", "move_group_main"]
 
 
-class MoveGroupNode(_Execution):
+class MoveGroupNode(_Execution, _PlannerQueries):
     """MoveIt's move_group interfaces for one robot."""
 
     def __init__(
@@ -136,6 +140,9 @@ class MoveGroupNode(_Execution):
             (GetCartesianPath, "compute_cartesian_path", self._compute_cartesian_path),
             (GetPlanningScene, "get_planning_scene", self._get_planning_scene),
             (ApplyPlanningScene, "apply_planning_scene", self._apply_planning_scene),
+            (QueryPlannerInterfaces, "query_planner_interface", self._query_planner_interface),
+            (GetPlannerParams, "get_planner_params", self._get_planner_params),
+            (SetPlannerParams, "set_planner_params", self._set_planner_params),
         ):
             serve(self, srv_type, name, self._guard(name, fn), cb)
         for msg_type, topic, fn in (

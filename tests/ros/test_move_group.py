@@ -935,3 +935,53 @@ def test_the_allowed_collision_matrix_is_read_and_replaced_as_pymoveit2_allows_c
         initial = PlanningScene(is_diff=True)  # the SRDF's matrix back for the tests after this one
         initial.allowed_collision_matrix = acm
         apply(initial)
+
+
+def test_planner_interfaces_and_their_parameters_are_queried_and_set_as_moveit_serves_them(panda):
+    """query_planner_interface, get_planner_params and set_planner_params (MoveIt's
+    query_planners_service_capability.cpp, which RViz's planner list and MoveGroupInterface call): the
+    pipeline ompl with ompl_planning.yaml's configurations as MoveIt's OMPL interface names them, their
+    parameters as rclcpp's strings, an unknown pipeline answered empty, and a configuration set, merged,
+    replaced and said once not to change the planner."""
+    from moveit_msgs.msg import PlannerParams
+    from moveit_msgs.srv import GetPlannerParams, QueryPlannerInterfaces, SetPlannerParams
+
+    res = panda.ros.call(QueryPlannerInterfaces, "/query_planner_interface", QueryPlannerInterfaces.Request())
+    assert [(p.name, p.pipeline_id) for p in res.planner_interfaces] == [("OMPL", "ompl")]
+    ids = list(res.planner_interfaces[0].planner_ids)
+    assert ids == sorted(ids)
+    # a default per group (hand, panda_arm, panda_arm_hand), then the group[planner] configurations
+    assert {"hand", "panda_arm", "panda_arm_hand"} <= set(ids)
+    assert "panda_arm[RRTConnectkConfigDefault]" in ids and "panda_arm_hand[PRMkConfigDefault]" in ids
+    assert len([i for i in ids if i.startswith("panda_arm[")]) == 25  # the yaml lists 25 for panda_arm
+
+    def get(config: str, group: str = "", pipeline: str = "") -> dict[str, str]:
+        req = GetPlannerParams.Request(pipeline_id=pipeline, planner_config=config, group=group)
+        out = panda.ros.call(GetPlannerParams, "/get_planner_params", req).params
+        return dict(zip(out.keys, out.values))
+
+    # ompl_planning.yaml: RRTConnectkConfigDefault: {type: geometric::RRTConnect, range: 0.0}
+    assert get("panda_arm[RRTConnectkConfigDefault]") == {"range": "0.000000", "type": "geometric::RRTConnect"}
+    assert get("panda_arm") == {"type": "geometric::RRTConnect"}  # the group's default configuration
+    assert get("panda_arm[RRTConnectkConfigDefault]", pipeline="chomp") == {}
+    assert get("no such config") == {}
+
+    def put(config: str, group: str, values: dict[str, str], replace: bool = False) -> None:
+        params = PlannerParams(keys=list(values), values=list(values.values()))
+        req = SetPlannerParams.Request(planner_config=config, group=group, params=params, replace=replace)
+        panda.ros.call(SetPlannerParams, "/set_planner_params", req)
+
+    put("RRTConnectkConfigDefault", "panda_arm", {"range": "0.5"})
+    assert get("panda_arm[RRTConnectkConfigDefault]") == {"range": "0.5", "type": "geometric::RRTConnect"}
+    put("RRTConnectkConfigDefault", "panda_arm", {"goal_bias": "0.1"}, replace=True)
+    assert get("panda_arm[RRTConnectkConfigDefault]") == {"goal_bias": "0.1"}
+    # a configuration and its group's: the configuration's own values win (std::map::insert)
+    put("MyConfig", "", {"type": "geometric::RRT", "range": "1.0"})
+    put("MyConfig", "panda_arm", {"range": "2.0", "extra": "x"})
+    assert get("MyConfig", group="panda_arm") == {"type": "geometric::RRT", "range": "1.0", "extra": "x"}
+    bad = SetPlannerParams.Request(planner_config="Bad", params=PlannerParams(keys=["a", "b"], values=["1"]))
+    panda.ros.call(SetPlannerParams, "/set_planner_params", bad)
+    assert get("Bad") == {}
+    panda.move_group.wait_line("Number of parameter names does not match the number of parameters", timeout=10)
+    said = [line for line in panda.move_group.lines if "gazelle's planner does not read planner configurations" in line]
+    assert len(said) == 1, said
