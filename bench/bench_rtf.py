@@ -13,7 +13,9 @@ Run: ``.venv/bin/python bench/bench_rtf.py [-n STEPS] [--seconds S]``. One run p
   with one on /clock (the bridge then holds the sim back to keep /clock's resolution: at most one
   clock period per ms of wall time).
 
-The raw loop and ``sim.step(N)`` are measured three times, alternating; the best of each counts.
+The raw loop and ``sim.step(N)`` are measured three times, alternating; the best of each counts. The rows
+with a listener process also print the CPU the bench's process and the listener's took while the sim ran
+(in cores): on a 2-core machine they add up to about 2, the machine's ceiling for that row.
 
 RTF = steps/s x timestep. Figures depend on the machine and its load; nothing here asserts timing.
 """
@@ -64,6 +66,16 @@ SUBSCRIBER = textwrap.dedent(
 )
 
 
+def cpu_seconds(pid: int) -> float:
+    """User + system CPU seconds of process ``pid`` so far (all its threads), from /proc; 0 elsewhere."""
+    try:
+        with open(f"/proc/{pid}/stat", encoding="ascii") as f:
+            fields = f.read().rsplit(")", 1)[1].split()
+    except OSError:
+        return 0.0
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
 def with_listener(topics: str, pubs: list, sim, seconds: float) -> tuple[float, str]:
     """Run the sim thread for ``seconds`` while a plain rclpy process subscribes to ``topics``, once every
     publisher in ``pubs`` has matched it (none given is an error: the runs would start before discovery,
@@ -85,8 +97,10 @@ def with_listener(topics: str, pubs: list, sim, seconds: float) -> tuple[float, 
         while not all(p.get_subscription_count() for p in pubs) and time.monotonic() < deadline:
             time.sleep(0.05)
         if all(p.get_subscription_count() for p in pubs):
+            mine, theirs = cpu_seconds(os.getpid()), cpu_seconds(proc.pid)
             s, n, w = run_threaded(sim, seconds)
-            rate, note = n / w, f"{s:.1f} sim s in {w:.1f} wall s"
+            mine, theirs = cpu_seconds(os.getpid()) - mine, cpu_seconds(proc.pid) - theirs
+            rate, note = n / w, f"{s:.1f} sim s in {w:.1f} wall s; CPU: bench {mine / w:.2f}, listener {theirs / w:.2f} cores"
         else:
             rate, note = float("nan"), "subscriber never matched (discovery?)"
         out, _ = proc.communicate(timeout=10)  # closes its stdin: it prints its count and exits
