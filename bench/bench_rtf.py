@@ -100,7 +100,8 @@ def with_listener(topics: str, pubs: list, sim, seconds: float) -> tuple[float, 
             mine, theirs = cpu_seconds(os.getpid()), cpu_seconds(proc.pid)
             s, n, w = run_threaded(sim, seconds)
             mine, theirs = cpu_seconds(os.getpid()) - mine, cpu_seconds(proc.pid) - theirs
-            rate, note = n / w, f"{s:.1f} sim s in {w:.1f} wall s; CPU: bench {mine / w:.2f}, listener {theirs / w:.2f} cores"
+            cpu = f"CPU: bench {mine / w:.2f}, listener {theirs / w:.2f} cores"
+            rate, note = n / w, f"{s:.1f} sim s in {w:.1f} wall s; {cpu}"
         else:
             rate, note = float("nan"), "subscriber never matched (discovery?)"
         out, _ = proc.communicate(timeout=10)  # closes its stdin: it prints its count and exits
