@@ -83,8 +83,10 @@ def cli_node(name: str = "ros2cli", *, node_name: str | None = None, use_sim_tim
 def spin_once(node: Any, timeout_sec: float) -> None:
     """Take one ready callback of ``node`` (waiting at most ``timeout_sec``)."""
     executor = _EXECUTORS.get(id(node))
-    if executor is None:
-        spin_once(node, timeout_sec=timeout_sec)
+    if executor is None:  # a node not made by cli_node: rclpy's global executor
+        import rclpy
+
+        rclpy.spin_once(node, timeout_sec=timeout_sec)
     else:
         executor.spin_once(timeout_sec=timeout_sec)
 

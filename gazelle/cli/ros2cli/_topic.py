@@ -52,13 +52,7 @@ def _resolve_type(node: Any, topic: str, given: str | None, wait: float = 5.0) -
 def main(argv: list[str]) -> int:
     """``ros2 topic VERB ...``: ros2topic's verbs with Jazzy's arguments; exit status 1 with one line on
     stderr for a type or value that does not fit, 0 on Ctrl-C."""
-    p = argparse.ArgumentParser(prog="ros2 topic", description="Various topic related sub-commands")
-    sub = p.add_subparsers(dest="cmd", required=True)
-    _add_listing_verbs(sub)
-    _add_echo(sub)
-    _add_rate_verbs(sub)
-    _add_pub(sub)
-    args = p.parse_args(argv)
+    args = parser().parse_args(argv)
     try:
         named = {"node_name": getattr(args, "node_name", None), "use_sim_time": getattr(args, "use_sim_time", False)}
         with cli_node("ros2topic", **named) as node:
@@ -70,6 +64,17 @@ def main(argv: list[str]) -> int:
         return 1
     except KeyboardInterrupt:
         return 0
+
+
+def parser() -> argparse.ArgumentParser:
+    """``ros2 topic``'s command line: every verb with its options."""
+    p = argparse.ArgumentParser(prog="ros2 topic", description="Various topic related sub-commands")
+    sub = p.add_subparsers(dest="cmd", required=True)
+    _add_listing_verbs(sub)
+    _add_echo(sub)
+    _add_rate_verbs(sub)
+    _add_pub(sub)
+    return p
 
 
 def _add_listing_verbs(sub: Any) -> None:
@@ -107,16 +112,7 @@ def _add_echo(sub: Any) -> None:
     echo.add_argument("--include-message-info", "-i", action="store_true", help="show each message's info")
     echo.add_argument("-s", "--use-sim-time", action="store_true")
     echo.add_argument("--spin-time", type=float, default=DEFAULT_SPIN_TIME)
-    echo.add_argument("--qos-history", choices=["keep_last", "keep_all", "system_default"], default=None)
-    echo.add_argument("--qos-reliability", choices=["reliable", "best_effort", "system_default"], default=None)
-    echo.add_argument("--qos-durability", choices=["transient_local", "volatile", "system_default"], default=None)
-    echo.add_argument(
-        "--qos-profile",
-        choices=_QOS_PRESETS,
-        default=None,
-        help="QoS preset to start from (default: one that matches every publisher)",
-    )
-    echo.add_argument("--qos-depth", type=int, default=None)
+    _add_qos_arguments(echo, "subscribe", "sensor_data")
 
 
 def _add_rate_verbs(sub: Any) -> None:
@@ -168,13 +164,28 @@ def _add_pub(sub: Any) -> None:
     pub.add_argument("--max-wait-time-secs", type=_positive_float, default=None, help="give up waiting after this")
     pub.add_argument("--keep-alive", type=_positive_float, default=0.1, help="seconds to stay after the last message")
     pub.add_argument("-n", "--node-name", default=None, help="name of the publishing node")
-    pub.add_argument("--qos-profile", choices=_QOS_PRESETS, default="default")
-    pub.add_argument("--qos-depth", type=int, default=None)
-    pub.add_argument("--qos-history", choices=["keep_last", "keep_all", "system_default"], default=None)
-    pub.add_argument("--qos-reliability", choices=["reliable", "best_effort", "system_default"], default=None)
-    pub.add_argument("--qos-durability", choices=["transient_local", "volatile", "system_default"], default=None)
+    _add_qos_arguments(pub, "publish", "default")
     pub.add_argument("--spin-time", type=float, default=DEFAULT_SPIN_TIME)
     pub.add_argument("-s", "--use-sim-time", action="store_true", help="stamp `auto`/`now` with /clock's time")
+
+
+def _add_qos_arguments(parser: Any, direction: str, preset: str) -> None:
+    """The ``--qos-*`` options of ``echo`` and ``pub`` (ros2topic/api ``add_qos_arguments``, jazzy): a preset
+    (``--qos-profile``, echo's ``sensor_data``, pub's ``default``) and the overrides of its parts."""
+    parser.add_argument(
+        "--qos-profile",
+        choices=_QOS_PRESETS,
+        default=preset,
+        help=f"QoS preset to {direction} with (default: {preset})",
+    )
+    parser.add_argument("--qos-depth", type=int, default=None, help="queue size (overrides the preset's)")
+    # rclpy's policies' short_keys() (Jazzy), spelled out: the command line is parsed before rclpy is imported
+    parser.add_argument("--qos-history", choices=["system_default", "keep_last", "keep_all", "unknown"], default=None)
+    ends = ["unknown", "best_available"]
+    parser.add_argument("--qos-reliability", choices=["system_default", "reliable", "best_effort", *ends])
+    parser.add_argument("--qos-durability", choices=["system_default", "transient_local", "volatile", *ends])
+    parser.add_argument("--qos-liveliness", choices=["system_default", "automatic", "manual_by_topic", *ends])
+    parser.add_argument("--qos-liveliness-lease-duration-seconds", type=float, default=None)
 
 
 def _positive_float(text: str) -> float:
@@ -245,30 +256,48 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
 
 
 def _echo_qos(node: Any, topic: str, args: argparse.Namespace) -> Any:
-    """The subscription's QoS: one matching every publisher, a preset's, and the ``--qos-*`` overrides."""
-    from rclpy.qos import DurabilityPolicy, ReliabilityPolicy
+    """The subscription's QoS as ros2topic's echo chooses it (verb/echo.py ``choose_qos``, jazzy): with any
+    ``--qos-*`` override, the preset with the overrides; else the preset made reliable only when every
+    publisher is, and transient local only when every publisher is (each said when only some are, as
+    upstream: a transient local reader would not match a volatile writer)."""
+    from rclpy.qos import DurabilityPolicy, QoSPresetProfiles, ReliabilityPolicy
 
     wait_until(node, lambda: node.get_publishers_info_by_topic(topic), 5.0)
     # every publisher's QoS, to match them all
     discover(node, 0.0, SETTLE_SEC, watch=lambda: len(node.get_publishers_info_by_topic(topic)))
-    qos = matching_qos(node, topic)
-    if args.qos_profile is not None:
-        from rclpy.qos import QoSPresetProfiles
-
-        qos = copy.copy(QoSPresetProfiles.get_from_short_key(args.qos_profile))
-    if args.qos_depth is not None:
-        qos.depth = args.qos_depth
-    if args.qos_history is not None:
-        from rclpy.qos import HistoryPolicy
-
-        qos.history = HistoryPolicy.get_from_short_key(args.qos_history)
-    if args.qos_reliability == "reliable":
+    qos = copy.copy(QoSPresetProfiles.get_from_short_key(args.qos_profile))
+    overrides = (
+        args.qos_reliability,
+        args.qos_durability,
+        args.qos_depth,
+        args.qos_history,
+        args.qos_liveliness,
+        args.qos_liveliness_lease_duration_seconds,
+    )
+    if any(v is not None for v in overrides):
+        return _configured(qos, args)
+    infos = node.get_publishers_info_by_topic(topic)
+    if not infos:
+        return qos
+    reliable = sum(i.qos_profile.reliability == ReliabilityPolicy.RELIABLE for i in infos)
+    latched = sum(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for i in infos)
+    if reliable == len(infos):
         qos.reliability = ReliabilityPolicy.RELIABLE
-    elif args.qos_reliability == "best_effort":
+    else:
+        if reliable:
+            print(
+                "Some, but not all, publishers are offering QoSReliabilityPolicy.RELIABLE. Falling back to "
+                "QoSReliabilityPolicy.BEST_EFFORT as it will connect to all publishers"
+            )
         qos.reliability = ReliabilityPolicy.BEST_EFFORT
-    if args.qos_durability == "transient_local":
+    if latched == len(infos):
         qos.durability = DurabilityPolicy.TRANSIENT_LOCAL
-    elif args.qos_durability == "volatile":
+    else:
+        if latched:
+            print(
+                "Some, but not all, publishers are offering QoSDurabilityPolicy.TRANSIENT_LOCAL. Falling back to "
+                "QoSDurabilityPolicy.VOLATILE as it will connect to all publishers"
+            )
         qos.durability = DurabilityPolicy.VOLATILE
     return qos
 
@@ -582,9 +611,10 @@ def _pub(node: Any, args: argparse.Namespace) -> int:
 
 
 def _configured(qos: Any, args: argparse.Namespace) -> Any:
-    """``qos`` with the ``--qos-*`` overrides, as ros2topic's ``profile_configure_short_keys`` (a transient
-    local profile of depth 0 gets depth 1)."""
-    from rclpy.qos import DurabilityPolicy, HistoryPolicy, ReliabilityPolicy
+    """``qos`` with the ``--qos-*`` overrides, as ros2topic's ``profile_configure_short_keys`` (jazzy): a
+    depth of 0 or less keeps the preset's, and a transient local profile of depth 0 gets depth 1."""
+    from rclpy.duration import Duration
+    from rclpy.qos import DurabilityPolicy, HistoryPolicy, LivelinessPolicy, ReliabilityPolicy
 
     if args.qos_history:
         qos.history = HistoryPolicy.get_from_short_key(args.qos_history)
@@ -592,7 +622,12 @@ def _configured(qos: Any, args: argparse.Namespace) -> Any:
         qos.durability = DurabilityPolicy.get_from_short_key(args.qos_durability)
     if args.qos_reliability:
         qos.reliability = ReliabilityPolicy.get_from_short_key(args.qos_reliability)
-    if args.qos_depth is not None and args.qos_depth >= 0:
+    if args.qos_liveliness:
+        qos.liveliness = LivelinessPolicy.get_from_short_key(args.qos_liveliness)
+    lease = args.qos_liveliness_lease_duration_seconds
+    if lease and lease >= 0:
+        qos.liveliness_lease_duration = Duration(seconds=lease)
+    if args.qos_depth and args.qos_depth >= 0:
         qos.depth = args.qos_depth
     elif qos.durability == DurabilityPolicy.TRANSIENT_LOCAL and qos.depth == 0:
         qos.depth = 1
