@@ -64,3 +64,16 @@ def test_an_override_takes_the_preset_as_it_is_with_liveliness_and_the_depth_rul
     args.qos_durability = "transient_local"
     qos = _configured(copy.copy(QoSPresetProfiles.get_from_short_key(args.qos_profile)), args)
     assert (qos.durability, qos.depth) == (DurabilityPolicy.TRANSIENT_LOCAL, 1)
+
+
+def test_the_recorder_and_foxglove_match_every_publisher_of_a_mixed_topic(node) -> None:
+    """``matching_qos`` (ros2 bag record, hz, the Foxglove bridge) by rosbag2's rule (rosbag2_transport
+    qos.cpp, ``adapt_request_to_offers``): transient local only when every publisher offers it."""
+    from gazelle.cli.ros2cli import matching_qos
+
+    _pub(node, "/mixed_rec", DurabilityPolicy.TRANSIENT_LOCAL)
+    _pub(node, "/mixed_rec", DurabilityPolicy.VOLATILE)
+    qos = matching_qos(node, "/mixed_rec")
+    assert (qos.durability, qos.reliability) == (DurabilityPolicy.VOLATILE, ReliabilityPolicy.RELIABLE)
+    _pub(node, "/all_latched", DurabilityPolicy.TRANSIENT_LOCAL)
+    assert matching_qos(node, "/all_latched").durability == DurabilityPolicy.TRANSIENT_LOCAL

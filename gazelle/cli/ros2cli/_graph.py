@@ -151,12 +151,16 @@ def wait_until(node: Any, found: Any, timeout: float = MAX_DISCOVERY_SEC) -> Any
 
 
 def matching_qos(node: Any, topic: str) -> Any:
-    """A subscription QoS that matches the publishers (reliable only when all are, transient local when any is)."""
+    """A subscription QoS that matches every publisher: reliable only when all are, transient local only
+    when all are (a transient local reader does not match a volatile writer). rosbag2's recorder adapts
+    its request to the offers by the same rule (rosbag2_transport qos.cpp, ``adapt_request_to_offers``),
+    as ros2topic's echo does (verb/echo.py ``choose_qos``); gazelle asked for transient local when any
+    publisher offered it, and so missed the volatile ones."""
     from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
     infos = node.get_publishers_info_by_topic(topic)
     reliable = bool(infos) and all(i.qos_profile.reliability == ReliabilityPolicy.RELIABLE for i in infos)
-    latched = any(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for i in infos)
+    latched = bool(infos) and all(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for i in infos)
     return QoSProfile(
         depth=10,
         reliability=ReliabilityPolicy.RELIABLE if reliable else ReliabilityPolicy.BEST_EFFORT,
