@@ -77,3 +77,9 @@ def test_the_recorder_and_foxglove_match_every_publisher_of_a_mixed_topic(node) 
     assert (qos.durability, qos.reliability) == (DurabilityPolicy.VOLATILE, ReliabilityPolicy.RELIABLE)
     _pub(node, "/all_latched", DurabilityPolicy.TRANSIENT_LOCAL)
     assert matching_qos(node, "/all_latched").durability == DurabilityPolicy.TRANSIENT_LOCAL
+    # ros2 bag record says so, as rosbag2 does
+    from gazelle.cli.ros2cli._bag import _mixed_offers
+
+    (said,) = _mixed_offers(node, "/mixed_rec")
+    assert 'publishers on topic "/mixed_rec" are offering RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL' in said
+    assert _mixed_offers(node, "/all_latched") == []

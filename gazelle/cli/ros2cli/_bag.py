@@ -39,6 +39,31 @@ DISCOVERY_PERIOD_SEC = 0.1
 """How often ``record`` looks for new topics (rosbag2's default topic polling interval)."""
 
 
+def _mixed_offers(node: Any, topic: str) -> list[str]:
+    """rosbag2's warnings when only some of a topic's publishers offer reliable or transient local
+    (rosbag2_transport qos.cpp, ``adapt_request_to_offers``): the recorder then asks for best effort or
+    volatile, to match them all."""
+    from rclpy.qos import DurabilityPolicy, ReliabilityPolicy
+
+    infos = node.get_publishers_info_by_topic(topic)
+    reliable = sum(i.qos_profile.reliability == ReliabilityPolicy.RELIABLE for i in infos)
+    latched = sum(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for i in infos)
+    out = []
+    if 0 < reliable < len(infos):
+        out.append(
+            f'Some, but not all, publishers on topic "{topic}" are offering RMW_QOS_POLICY_RELIABILITY_RELIABLE. '
+            "Falling back to RMW_QOS_POLICY_RELIABILITY_BEST_EFFORT as it will connect to all publishers. "
+            "Some messages from Reliable publishers could be dropped."
+        )
+    if 0 < latched < len(infos):
+        out.append(
+            f'Some, but not all, publishers on topic "{topic}" are offering RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL. '
+            "Falling back to RMW_QOS_POLICY_DURABILITY_VOLATILE as it will connect to all publishers. "
+            "Previously-published latched messages will not be retrieved."
+        )
+    return out
+
+
 class BagError(Exception):
     """What makes a bag command fail; the message is the one line printed."""
 
@@ -343,6 +368,8 @@ class _Recorder:
                 channel_id=entry["channel"], log_time=now, publish_time=now, data=data, sequence=entry["count"]
             )
 
+        for warning in _mixed_offers(self.node, topic):
+            print(f"[WARN] [rosbag2_transport]: {warning}", flush=True)
         qos = matching_qos(self.node, topic)
         qos.depth = RECORD_DEPTH
         self._subs.append(self.node.create_subscription(cls, topic, on_message, qos, raw=True))
