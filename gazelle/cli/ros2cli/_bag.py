@@ -28,7 +28,7 @@ from typing import Any
 
 import yaml
 
-from ._graph import absolute, cli_node, is_hidden, matching_qos, spin_once
+from ._graph import absolute, cli_node, is_hidden, matching_qos, offers, spin_once
 from ._messages import InterfaceError, get_interface
 
 ROSBAG2_VERSION = 9
@@ -43,19 +43,15 @@ def _mixed_offers(node: Any, topic: str) -> list[str]:
     """rosbag2's warnings when only some of a topic's publishers offer reliable or transient local
     (rosbag2_transport qos.cpp, ``adapt_request_to_offers``): the recorder then asks for best effort or
     volatile, to match them all."""
-    from rclpy.qos import DurabilityPolicy, ReliabilityPolicy
-
-    infos = node.get_publishers_info_by_topic(topic)
-    reliable = sum(i.qos_profile.reliability == ReliabilityPolicy.RELIABLE for i in infos)
-    latched = sum(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for i in infos)
+    count, reliable, latched = offers(node, topic)
     out = []
-    if 0 < reliable < len(infos):
+    if 0 < reliable < count:
         out.append(
             f'Some, but not all, publishers on topic "{topic}" are offering RMW_QOS_POLICY_RELIABILITY_RELIABLE. '
             "Falling back to RMW_QOS_POLICY_RELIABILITY_BEST_EFFORT as it will connect to all publishers. "
             "Some messages from Reliable publishers could be dropped."
         )
-    if 0 < latched < len(infos):
+    if 0 < latched < count:
         out.append(
             f'Some, but not all, publishers on topic "{topic}" are offering RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL. '
             "Falling back to RMW_QOS_POLICY_DURABILITY_VOLATILE as it will connect to all publishers. "

@@ -150,6 +150,17 @@ def wait_until(node: Any, found: Any, timeout: float = MAX_DISCOVERY_SEC) -> Any
         spin_once(node, timeout_sec=0.05)
 
 
+def offers(node: Any, topic: str) -> tuple[int, int, int]:
+    """(publishers, how many offer reliable, how many offer transient local) of ``topic`` as discovered:
+    what ros2topic's echo, rosbag2's recorder and :func:`matching_qos` adapt a reader to."""
+    from rclpy.qos import DurabilityPolicy, ReliabilityPolicy
+
+    infos = node.get_publishers_info_by_topic(topic)
+    reliable = sum(i.qos_profile.reliability == ReliabilityPolicy.RELIABLE for i in infos)
+    latched = sum(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for i in infos)
+    return len(infos), reliable, latched
+
+
 def matching_qos(node: Any, topic: str) -> Any:
     """A subscription QoS that matches every publisher: reliable only when all are, transient local only
     when all are (a transient local reader does not match a volatile writer). rosbag2's recorder adapts
@@ -158,11 +169,9 @@ def matching_qos(node: Any, topic: str) -> Any:
     publisher offered it, and so missed the volatile ones."""
     from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
-    infos = node.get_publishers_info_by_topic(topic)
-    reliable = bool(infos) and all(i.qos_profile.reliability == ReliabilityPolicy.RELIABLE for i in infos)
-    latched = bool(infos) and all(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for i in infos)
+    count, reliable, latched = offers(node, topic)
     return QoSProfile(
         depth=10,
-        reliability=ReliabilityPolicy.RELIABLE if reliable else ReliabilityPolicy.BEST_EFFORT,
-        durability=DurabilityPolicy.TRANSIENT_LOCAL if latched else DurabilityPolicy.VOLATILE,
+        reliability=ReliabilityPolicy.RELIABLE if count and reliable == count else ReliabilityPolicy.BEST_EFFORT,
+        durability=DurabilityPolicy.TRANSIENT_LOCAL if count and latched == count else DurabilityPolicy.VOLATILE,
     )

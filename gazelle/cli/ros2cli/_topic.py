@@ -18,6 +18,7 @@ from ._graph import (
     discover,
     is_hidden,
     matching_qos,
+    offers,
     spin_once,
     wait_until,
 )
@@ -276,12 +277,10 @@ def _echo_qos(node: Any, topic: str, args: argparse.Namespace) -> Any:
     )
     if any(v is not None for v in overrides):
         return _configured(qos, args)
-    infos = node.get_publishers_info_by_topic(topic)
-    if not infos:
+    count, reliable, latched = offers(node, topic)
+    if not count:
         return qos
-    reliable = sum(i.qos_profile.reliability == ReliabilityPolicy.RELIABLE for i in infos)
-    latched = sum(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for i in infos)
-    if reliable == len(infos):
+    if reliable == count:
         qos.reliability = ReliabilityPolicy.RELIABLE
     else:
         if reliable:
@@ -290,7 +289,7 @@ def _echo_qos(node: Any, topic: str, args: argparse.Namespace) -> Any:
                 "QoSReliabilityPolicy.BEST_EFFORT as it will connect to all publishers"
             )
         qos.reliability = ReliabilityPolicy.BEST_EFFORT
-    if latched == len(infos):
+    if latched == count:
         qos.durability = DurabilityPolicy.TRANSIENT_LOCAL
     else:
         if latched:
