@@ -685,3 +685,32 @@ def test_a_cartesian_path_is_the_same_on_a_machine_that_stalls_the_planner():
         proc.wait(10)
     assert [fraction for fraction, _ in runs] == [1.0] * 6, runs
     assert all(end == runs[0][1] for _, end in runs), runs
+
+
+def test_a_matrix_that_no_longer_names_an_object_has_its_collisions_checked_again(planner):
+    """MoveIt replaces the whole matrix (planning_scene.cpp setPlanningSceneDiffMsg): an object the new
+    matrix does not name has no entry, so its pairs are not allowed (collision_matrix.cpp
+    getAllowedCollision: no entry and no default); gazelle kept the old matrix's allowance for it. And
+    MoveIt reads a message's pairs from the upper triangle only (the AllowedCollisionMatrix constructor
+    reads entry_values[i].enabled[j] for j > i)."""
+    from gazelle.planning import CollisionMatrix
+
+    q = planner.state(READY)
+    block = np.eye(4)
+    block[:3, 3] = planner.fk(q, "panda_link8")[:3, 3]
+    initial = planner.acm
+    planner.add_box("acm_gone", [0.2, 0.2, 0.2], block)
+    try:
+        names = [*initial.names, "acm_gone"]
+        rows = [[*r, True] for r in initial.rows()] + [[True] * len(initial.names) + [False]]
+        planner.set_allowed_collision_matrix(CollisionMatrix.from_rows(names, rows))
+        assert not planner.in_collision(q)
+        planner.set_allowed_collision_matrix(CollisionMatrix.from_rows(initial.names, initial.rows()))
+        assert planner.in_collision(q) and "acm_gone" in planner.named_pairs(q)
+    finally:
+        planner.remove_object("acm_gone")
+        planner.set_allowed_collision_matrix(initial)
+    lower_only = CollisionMatrix.from_rows(["a", "b"], [[False, False], [True, False]])
+    assert not lower_only.is_allowed("a", "b")
+    upper_only = CollisionMatrix.from_rows(["a", "b"], [[False, True], [False, False]])
+    assert upper_only.is_allowed("a", "b")

@@ -44,13 +44,14 @@ class CollisionMatrix:
     def from_rows(cls, names: Sequence[str], rows: Sequence[Sequence[bool]]) -> CollisionMatrix:
         """The matrix of an ``AllowedCollisionMatrix`` message; a row count or length that does not match the
         names is a ValueError naming it (MoveIt's AllowedCollisionMatrix constructor refuses it too). A pair
-        counts as allowed when either of its two cells says so, as MoveIt sets both from each row."""
+        is read from the upper triangle, row i's cell j for j > i, as that constructor reads it
+        (collision_matrix.cpp); the lower triangle is not read."""
         if len(rows) != len(names):
             raise ValueError(f"{len(names)} entry_names but {len(rows)} entry_values")
         for i, row in enumerate(rows):
             if len(row) != len(names):
                 raise ValueError(f"entry_values[{i}] has {len(row)} values for {len(names)} entry_names")
-        allowed = {frozenset((a, b)) for i, a in enumerate(names) for j, b in enumerate(names) if i != j and rows[i][j]}
+        allowed = {frozenset((a, b)) for i, a in enumerate(names) for j, b in enumerate(names) if i < j and rows[i][j]}
         return cls(list(dict.fromkeys(names)), allowed)
 
     def pairs_with(self, name: str) -> list[tuple[str, bool]]:

@@ -462,6 +462,19 @@ class RobotScene:
         allow: list[tuple[str, str]] = []
         check: list[tuple[str, str]] = []
         names = self.acm.names
+        named = set(names)
+        for key in [k for k in self._acm_applied if not k <= named]:
+            # a pair an earlier matrix set that this one does not name: MoveIt's replaced matrix has no
+            # entry for it (collision_matrix.cpp getAllowedCollision), so it is checked again; a pair of
+            # links goes back to what the SRDF says
+            a, b = sorted(key)
+            if only is not None and a not in only and b not in only:
+                continue
+            self._acm_applied.discard(key)
+            if a in self._collision_links and b in self._collision_links:
+                (allow if key in self._srdf_allowed else check).append((a, b))
+            elif not self._allowed_anyway(a, b):
+                check += [(x, y) for x in self._bodies(a) for y in self._bodies(b)]
         for i, a in enumerate(names):
             for b in names[i + 1 :]:
                 if only is not None and a not in only and b not in only:
