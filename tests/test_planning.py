@@ -714,3 +714,40 @@ def test_a_matrix_that_no_longer_names_an_object_has_its_collisions_checked_agai
     assert not lower_only.is_allowed("a", "b")
     upper_only = CollisionMatrix.from_rows(["a", "b"], [[False, True], [False, False]])
     assert upper_only.is_allowed("a", "b")
+
+
+def test_default_entries_decide_the_pairs_the_entries_do_not(planner):
+    """MoveIt's default entries (collision_matrix.cpp ``getAllowedCollision``/``getDefaultEntry``): a pair
+    with no entry takes its names' defaults (one default decides; with two, allowed only when both say
+    ALWAYS; none: not allowed). An object with a default ALWAYS and no entries may touch everything; the
+    message written back lists it and its default, as MoveIt's ``getMessage`` does."""
+    from gazelle.planning import CollisionMatrix
+
+    m = CollisionMatrix.from_rows(
+        ["a", "b"], [[False, False], [False, False]], ["box", "a", "wall"], [True, False, False]
+    )
+    assert not m.is_allowed("a", "b")  # an entry decides, whatever the defaults
+    assert not m.is_allowed("box", "a") and not m.is_allowed("box", "wall")  # both defaults: NEVER wins
+    assert m.is_allowed("box", "b") and m.is_allowed("box", "anything")  # one default: ALWAYS
+    assert not m.is_allowed("b", "anything")  # no entry, no default
+    assert m.message_names() == ["a", "b", "box", "wall"] and m.rows()[2] == [False, True, True, False]
+    with pytest.raises(ValueError, match="2 default_entry_names but 1 default_entry_values"):
+        CollisionMatrix.from_rows([], [], ["x", "y"], [True])
+
+    q = planner.state(READY)
+    block = np.eye(4)
+    block[:3, 3] = planner.fk(q, "panda_link8")[:3, 3]
+    initial = planner.acm
+    planner.add_box("acm_default", [0.2, 0.2, 0.2], block)
+    try:
+        assert planner.in_collision(q)
+        rows = initial.rows()
+        planner.set_allowed_collision_matrix(CollisionMatrix.from_rows(initial.names, rows, ["acm_default"], [True]))
+        assert not planner.in_collision(q)
+        assert planner.acm.defaults == {"acm_default": True} and "acm_default" in planner.acm.message_names()
+        planner.set_allowed_collision_matrix(CollisionMatrix.from_rows(initial.names, rows, ["acm_default"], [False]))
+        assert planner.in_collision(q) and "acm_default" in planner.named_pairs(q)
+    finally:
+        planner.remove_object("acm_default")
+        planner.set_allowed_collision_matrix(initial)
+    assert not planner.in_collision(q)

@@ -463,7 +463,7 @@ class RobotScene:
         check: list[tuple[str, str]] = []
         names = self.acm.names
         named = set(names)
-        for key in [k for k in self._acm_applied if not k <= named]:
+        for key in [k for k in self._acm_applied if not k <= named and not k & set(self.acm.defaults)]:
             # a pair an earlier matrix set that this one does not name: MoveIt's replaced matrix has no
             # entry for it (collision_matrix.cpp getAllowedCollision), so it is checked again; a pair of
             # links goes back to what the SRDF says
@@ -477,30 +477,18 @@ class RobotScene:
                 check += [(x, y) for x in self._bodies(a) for y in self._bodies(b)]
         for i, a in enumerate(names):
             for b in names[i + 1 :]:
-                if only is not None and a not in only and b not in only:
-                    continue
-                key = frozenset((a, b))
-                allowed = key in self.acm.allowed
-                if a in self._collision_links and b in self._collision_links:
-                    # only what differs from the SRDF's: roboplan never pairs links on one joint, and a pair
-                    # set to be checked would be added
-                    changed = allowed != (key in self._srdf_allowed)
-                    if changed or key in self._acm_applied:
-                        (allow if allowed else check).append((a, b))
-                        if changed:
-                            self._acm_applied.add(key)
-                        else:
-                            self._acm_applied.discard(key)
-                    continue
-                pairs = [(x, y) for x in self._bodies(a) for y in self._bodies(b)]
-                if not pairs:
-                    continue
-                if allowed:
-                    allow += pairs
-                    self._acm_applied.add(key)
-                elif key in self._acm_applied:
-                    self._acm_applied.discard(key)
-                    check += [(x, y) for x, y in pairs if not self._allowed_anyway(a, b)]
+                if only is None or a in only or b in only:
+                    self._acm_pair(a, b, allow, check)
+        defaults = self.acm.defaults
+        if defaults:
+            # a default entry decides its name's pairs with everything the entries do not name together
+            universe = list(dict.fromkeys([*names, *defaults, *self._collision_links, *self._objects]))
+            for i, a in enumerate(universe):
+                for b in universe[i + 1 :]:
+                    if (a in named and b in named) or (a not in defaults and b not in defaults):
+                        continue
+                    if only is None or a in only or b in only:
+                        self._acm_pair(a, b, allow, check)
         for pairs, enabled in ((allow, False), (check, True)):
             if pairs:
                 try:
@@ -508,6 +496,32 @@ class RobotScene:
                 except Exception:  # see _add_geometries: the data is rebuilt below whatever happened
                     pass
         self.scene.setCollisions([], False)
+
+    def _acm_pair(self, a: str, b: str, allow: list[tuple[str, str]], check: list[tuple[str, str]]) -> None:
+        """Add the roboplan pairs of matrix names ``a`` and ``b`` to ``allow`` or ``check`` as the matrix says
+        (see :meth:`_apply_acm`), keeping :attr:`_acm_applied` up to date."""
+        key = frozenset((a, b))
+        allowed = self.acm.is_allowed(a, b)
+        if a in self._collision_links and b in self._collision_links:
+            # only what differs from the SRDF's: roboplan never pairs links on one joint, and a pair set to
+            # be checked would be added
+            changed = allowed != (key in self._srdf_allowed)
+            if changed or key in self._acm_applied:
+                (allow if allowed else check).append((a, b))
+                if changed:
+                    self._acm_applied.add(key)
+                else:
+                    self._acm_applied.discard(key)
+            return
+        pairs = [(x, y) for x in self._bodies(a) for y in self._bodies(b)]
+        if not pairs:
+            return
+        if allowed:
+            allow += pairs
+            self._acm_applied.add(key)
+        elif key in self._acm_applied:
+            self._acm_applied.discard(key)
+            check += [(x, y) for x, y in pairs if not self._allowed_anyway(a, b)]
 
     def _bodies(self, name: str) -> list[str]:
         """roboplan's bodies of a matrix name: a link with collision geometry itself, an object its

@@ -46,8 +46,10 @@ class _Scene(_MoveGroupBase):
         scene.robot_state.attached_collision_objects = [attached_message(o) for o in objects if o.link]
         scene.world.collision_objects = [to_message(o, planner.root_link) for o in objects if not o.link]
         acm = planner.acm
-        scene.allowed_collision_matrix.entry_names = list(acm.names)
+        scene.allowed_collision_matrix.entry_names = acm.message_names()
         scene.allowed_collision_matrix.entry_values = [AllowedCollisionEntry(enabled=row) for row in acm.rows()]
+        scene.allowed_collision_matrix.default_entry_names = list(acm.defaults)
+        scene.allowed_collision_matrix.default_entry_values = list(acm.defaults.values())
         scene.is_diff = False
         return res
 
@@ -166,12 +168,20 @@ class _Scene(_MoveGroupBase):
                 shapes_of(co, lambda _text: None)
         acm_msg = scene.allowed_collision_matrix
         acm = None
-        if acm_msg.entry_names:
-            if len(acm_msg.entry_names) > MAX_SCENE_OBJECTS + len(planner.acm.names):
-                raise PlanningError("FAILURE", f"allowed_collision_matrix names {len(acm_msg.entry_names)} entries")
+        if acm_msg.entry_names or acm_msg.default_entry_names:
+            most = MAX_SCENE_OBJECTS + len(planner.acm.names)
+            if len(acm_msg.entry_names) > most or len(acm_msg.default_entry_names) > most:
+                raise PlanningError(
+                    "FAILURE",
+                    f"allowed_collision_matrix names {len(acm_msg.entry_names)} entries and "
+                    f"{len(acm_msg.default_entry_names)} default entries",
+                )
             try:
                 acm = CollisionMatrix.from_rows(
-                    [str(n) for n in acm_msg.entry_names], [list(e.enabled) for e in acm_msg.entry_values]
+                    [str(n) for n in acm_msg.entry_names],
+                    [list(e.enabled) for e in acm_msg.entry_values],
+                    [str(n) for n in acm_msg.default_entry_names],
+                    [bool(v) for v in acm_msg.default_entry_values],
                 )
             except ValueError as err:
                 raise PlanningError("FAILURE", f"allowed_collision_matrix: {err}") from None
@@ -190,8 +200,6 @@ class _Scene(_MoveGroupBase):
         """Say, once per kind, what of a PlanningScene gazelle does not apply (MoveIt's planning_scene.cpp
         setPlanningSceneDiffMsg applies them all): nothing a client sends is dropped without a word."""
         notes = []
-        if scene.allowed_collision_matrix.default_entry_names:
-            notes.append(("acm", "the allowed_collision_matrix's default entries are not applied (its entries are)"))
         if scene.link_padding or scene.link_scale:
             notes.append(("padding", "link_padding and link_scale are not applied"))
         if scene.fixed_frame_transforms:
