@@ -216,17 +216,7 @@ class ArmPlanner(RobotScene):
             raise PlanningError("INVALID_MOTION_PLAN", f"max_step must be positive (got {max_step})")
         q = (self._current if start is None else np.asarray(start, dtype=float)).copy()
         idx = self._group_index(joints)
-        poses: list[np.ndarray] = []
-        previous = self.fk(q, link)
-        for waypoint in waypoints:
-            target = np.asarray(waypoint, dtype=float)
-            distance = float(np.linalg.norm(target[:3, 3] - previous[:3, 3]))
-            cos = (np.trace(previous[:3, :3].T @ target[:3, :3]) - 1.0) / 2.0
-            angle = math.acos(max(-1.0, min(1.0, cos)))
-            steps = max(1, math.ceil(max(distance / max_step, angle / max(max_step * 10.0, 1e-3))))
-            a, b = np.asfortranarray(previous), np.asfortranarray(target)
-            poses += [np.asarray(self._core.interpolatePose(a, b, k / steps)) for k in range(1, steps + 1)]
-            previous = target
+        poses = self._line_poses(self.fk(q, link), waypoints, max_step)
         opts = self._simple_ik.SimpleIkOptions()
         opts.group_name = group
         opts.check_collisions = avoid_collisions
@@ -276,6 +266,22 @@ class ArmPlanner(RobotScene):
         return self._timed(group, joint_path, velocity_scaling, acceleration_scaling), fraction
 
     # ------------------------------------------------------------------ helpers
+    def _line_poses(self, start: np.ndarray, waypoints: Sequence[np.ndarray], max_step: float) -> list[np.ndarray]:
+        """The poses along straight lines from ``start`` through ``waypoints``: one every ``max_step`` m
+        (and every ``10 x max_step`` rad of rotation, slerped), each waypoint the last pose of its line."""
+        poses: list[np.ndarray] = []
+        previous = start
+        for waypoint in waypoints:
+            target = np.asarray(waypoint, dtype=float)
+            distance = float(np.linalg.norm(target[:3, 3] - previous[:3, 3]))
+            cos = (np.trace(previous[:3, :3].T @ target[:3, :3]) - 1.0) / 2.0
+            angle = math.acos(max(-1.0, min(1.0, cos)))
+            steps = max(1, math.ceil(max(distance / max_step, angle / max(max_step * 10.0, 1e-3))))
+            a, b = np.asfortranarray(previous), np.asfortranarray(target)
+            poses += [np.asarray(self._core.interpolatePose(a, b, k / steps)) for k in range(1, steps + 1)]
+            previous = target
+        return poses
+
     def _group_config(self, group: str, joints: Sequence[str], q_full: np.ndarray):
         config = self._core.JointConfiguration()
         config.joint_names = list(joints)
