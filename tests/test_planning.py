@@ -687,6 +687,16 @@ def test_a_cartesian_path_is_the_same_on_a_machine_that_stalls_the_planner():
     assert all(end == runs[0][1] for _, end in runs), runs
 
 
+def _box_at_flange(planner, name: str):
+    """A 20 cm box where the flange is at READY: (that state, the matrix before)."""
+    q = planner.state(READY)
+    block = np.eye(4)
+    block[:3, 3] = planner.fk(q, "panda_link8")[:3, 3]
+    initial = planner.acm
+    planner.add_box(name, [0.2, 0.2, 0.2], block)
+    return q, initial
+
+
 def test_a_matrix_that_no_longer_names_an_object_has_its_collisions_checked_again(planner):
     """MoveIt replaces the whole matrix (planning_scene.cpp setPlanningSceneDiffMsg): an object the new
     matrix does not name has no entry, so its pairs are not allowed (collision_matrix.cpp
@@ -695,11 +705,7 @@ def test_a_matrix_that_no_longer_names_an_object_has_its_collisions_checked_agai
     reads entry_values[i].enabled[j] for j > i)."""
     from gazelle.planning import CollisionMatrix
 
-    q = planner.state(READY)
-    block = np.eye(4)
-    block[:3, 3] = planner.fk(q, "panda_link8")[:3, 3]
-    initial = planner.acm
-    planner.add_box("acm_gone", [0.2, 0.2, 0.2], block)
+    q, initial = _box_at_flange(planner, "acm_gone")
     try:
         names = [*initial.names, "acm_gone"]
         rows = [[*r, True] for r in initial.rows()] + [[True] * len(initial.names) + [False]]
@@ -734,11 +740,7 @@ def test_default_entries_decide_the_pairs_the_entries_do_not(planner):
     with pytest.raises(ValueError, match="2 default_entry_names but 1 default_entry_values"):
         CollisionMatrix.from_rows([], [], ["x", "y"], [True])
 
-    q = planner.state(READY)
-    block = np.eye(4)
-    block[:3, 3] = planner.fk(q, "panda_link8")[:3, 3]
-    initial = planner.acm
-    planner.add_box("acm_default", [0.2, 0.2, 0.2], block)
+    q, initial = _box_at_flange(planner, "acm_default")
     try:
         assert planner.in_collision(q)
         rows = initial.rows()
