@@ -38,10 +38,11 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 sys.path.insert(0, str(REPO / "tests"))
 
+# a private ROS graph on this host only, before anything imports rclpy
+from _domain import private_ros_domain  # noqa: E402
 from _r6bot import JOINTS, R6BOT, URDF, manager_of  # noqa: E402
 
-# a private ROS graph on this host only, before anything imports rclpy
-os.environ.setdefault("ROS_DOMAIN_ID", str(os.getpid() % 100 + 1))
+private_ros_domain()
 os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
 
 LISTENER = """

@@ -73,7 +73,9 @@ def main() -> int:
     if "--smoke" in sys.argv[1:]:  # ./test.sh: the same processes for 1 s at 100 Hz
         SECONDS, RATE_HZ = 1.0, 100.0
     env = dict(os.environ)
-    env.setdefault("ROS_DOMAIN_ID", str(60 + os.getpid() % 30))
+    from _domain import private_ros_domain
+
+    env["ROS_DOMAIN_ID"] = str(private_ros_domain())
     env["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
     with tempfile.TemporaryDirectory() as tmp:
         bag = Path(tmp) / "tf_bag"

@@ -20,11 +20,12 @@ sys.path.insert(0, str(REPO / "tests"))
 
 def main() -> int:
     import rclpy
+    from _domain import private_ros_domain
     from nav_msgs.msg import Odometry
 
     from tests.ros.test_blog_workspace import VENV_ACTIVATE, write_blog_workspace
 
-    os.environ.setdefault("ROS_DOMAIN_ID", "77")
+    private_ros_domain()
     os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
     env = {k: v for k, v in os.environ.items() if k not in ("AMENT_PREFIX_PATH", "PYTHONPATH")}
     with tempfile.TemporaryDirectory() as tmp:

@@ -28,7 +28,9 @@ import sys
 import time
 from pathlib import Path
 
-os.environ["ROS_DOMAIN_ID"] = str(os.environ.get("GAZELLE_BENCH_DOMAIN_ID") or (os.getpid() % 100 + 1))
+from _domain import private_ros_domain
+
+private_ros_domain()
 os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
 
 REPO = Path(__file__).resolve().parent.parent

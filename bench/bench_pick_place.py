@@ -165,8 +165,9 @@ def main() -> int:
     ap.add_argument("--running", action="store_true", help="use the simulation and move_group on this ROS domain")
     args = ap.parse_args()
     if not args.running:
-        os.environ["ROS_DOMAIN_ID"] = str(os.environ.get("GAZELLE_BENCH_DOMAIN_ID") or (os.getpid() % 100 + 1))
-        os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
+        from _domain import private_ros_domain
+
+        private_ros_domain()
         os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
     t_bench = time.monotonic()
     stack = None if args.running else Stack(args.rtf)

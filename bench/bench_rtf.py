@@ -33,8 +33,9 @@ import time
 from pathlib import Path
 
 # a private ROS graph on this host only, before anything imports rclpy
-os.environ["ROS_DOMAIN_ID"] = str(os.environ.get("GAZELLE_BENCH_DOMAIN_ID") or (os.getpid() % 100 + 1))
-os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
+from _domain import private_ros_domain
+
+private_ros_domain()
 
 REPO = Path(__file__).resolve().parent.parent
 ROBOT = REPO / "examples/simple_robot/simple_robot/robot.urdf.xacro"

@@ -19,7 +19,6 @@ Figures depend on the machine and its load; nothing here asserts timing.
 from __future__ import annotations
 
 import argparse
-import os
 import re
 import statistics
 import subprocess
@@ -29,8 +28,9 @@ import time
 from pathlib import Path
 
 # a private ROS graph on this host only, before anything imports rclpy
-os.environ["ROS_DOMAIN_ID"] = str(os.environ.get("GAZELLE_BENCH_DOMAIN_ID") or (os.getpid() % 100 + 101))
-os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
+from _domain import private_ros_domain
+
+private_ros_domain()
 
 REPO = Path(__file__).resolve().parent.parent
 EXAMPLE = REPO / "examples" / "chessboard"
