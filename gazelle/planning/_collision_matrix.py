@@ -29,6 +29,11 @@ class CollisionMatrix:
     allowed: set[frozenset[str]] = field(default_factory=set)
     defaults: dict[str, bool] = field(default_factory=dict)
     """``default_entry_names`` -> ``default_entry_values``: MoveIt's ``setDefaultEntry`` (ALWAYS or NEVER)."""
+    named: frozenset[str] = field(init=False, repr=False, compare=False)
+    """:attr:`names` as a set, made once (every pair's lookup asks it; the names never change)."""
+
+    def __post_init__(self) -> None:
+        self.named = frozenset(self.names)
 
     @classmethod
     def initial(cls, links: Sequence[str], disabled: Iterable[tuple[str, str]]) -> CollisionMatrix:
@@ -39,7 +44,7 @@ class CollisionMatrix:
     def message_names(self) -> list[str]:
         """``entry_names`` of the message MoveIt writes (collision_matrix.cpp ``getMessage``): the names
         with entries, then those with only a default entry."""
-        return [*self.names, *(d for d in self.defaults if d not in set(self.names))]
+        return [*self.names, *(d for d in self.defaults if d not in self.named)]
 
     def rows(self) -> list[list[bool]]:
         """``entry_values`` for :meth:`message_names`: row i, column j says whether the two may collide,
@@ -50,8 +55,7 @@ class CollisionMatrix:
     def is_allowed(self, a: str, b: str) -> bool:
         """MoveIt's ``getAllowedCollision``: the pair's entry, else the default entries (one name's
         default decides; with both, allowed only when both say ALWAYS), else not allowed."""
-        named = set(self.names)
-        if a != b and a in named and b in named:
+        if a != b and a in self.named and b in self.named:
             return frozenset((a, b)) in self.allowed
         da, db = self.defaults.get(a), self.defaults.get(b)
         if da is None and db is None:

@@ -462,8 +462,9 @@ class RobotScene:
         allow: list[tuple[str, str]] = []
         check: list[tuple[str, str]] = []
         names = self.acm.names
-        named = set(names)
-        for key in [k for k in self._acm_applied if not k <= named and not k & set(self.acm.defaults)]:
+        named = self.acm.named
+        defaulted = set(self.acm.defaults)
+        for key in [k for k in self._acm_applied if not k <= named and not k & defaulted]:
             # a pair an earlier matrix set that this one does not name: MoveIt's replaced matrix has no
             # entry for it (collision_matrix.cpp getAllowedCollision), so it is checked again; a pair of
             # links goes back to what the SRDF says
