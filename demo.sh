@@ -24,6 +24,7 @@ if [[ "$(stamp second)" != "$(stamp first)" ]]; then  # both tiers are stamped w
   echo "[setup] moveit_msgs, ...: about 4 minutes on 2 cores, once; Ctrl-C skips, scripts/setup.sh builds them later)"
   start=$SECONDS
   "$ROOT/scripts/build_interfaces.sh" "$ROOT/.venv" all || status=$((status ? status : $?))
+  "$ROOT/scripts/interface_bytecode.sh" "$ROOT/.venv" || true
   echo "[setup] ros2_control's and MoveIt's interfaces took $((SECONDS - start)) s"
 fi
 exit "$status"

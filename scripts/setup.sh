@@ -117,6 +117,7 @@ fi
 #    gazebo_msgs, ros_gz_interfaces), then ros2_control's and MoveIt's (scripts/build_interfaces.sh).
 step_start=$SECONDS
 "$ROOT/scripts/build_interfaces.sh" "$VENV" "${GAZELLE_SETUP_INTERFACES:-all}"
+"$ROOT/scripts/interface_bytecode.sh" "$VENV"  # installed after 3b: their bytecode too
 took "the interface packages"
 
 # 5. The venv is a ROS prefix: gazelle's stand-ins for gazebo_ros, robot_state_publisher,

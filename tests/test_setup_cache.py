@@ -177,3 +177,52 @@ def test_the_wheels_bytecode_is_cached_reused_and_a_corrupt_or_stale_entry_is_no
         assert "writable by others; not used" in foreign.stderr and foreign.stdout.strip() == "compiled"
     finally:
         (cache / "bytecode").chmod(0o700)
+
+
+def test_the_installed_interface_packages_have_current_bytecode() -> None:
+    """Every module of the interface packages the set-up installed (after it compiled the wheels') has
+    bytecode compiled from it as it is now: where PYTHONDONTWRITEBYTECODE is set, Python never writes it,
+    and every server and ``ros2`` command compiled ~180 of these modules at its start (1.2 s of CPU against
+    0.3 s to import moveit_msgs, gazebo_msgs, simulation_interfaces and control_msgs)."""
+    import sysconfig
+
+    site = Path(sysconfig.get_paths()["purelib"])
+    packages = [site / p.name for p in (REPO / "interfaces").iterdir() if (site / p.name).is_dir()]
+    assert packages, f"no interface package is installed in {site}"
+    sources = [py for package in packages for py in package.rglob("*.py")]
+    stale = [str(py.relative_to(site)) for py in sources if not _pyc_matches(py)]
+    assert not stale, f"{len(stale)} of {len(sources)} modules without current bytecode, e.g. {stale[:3]}"
+
+
+def test_the_interface_bytecode_script_compiles_what_is_missing_or_stale(tmp_path: Path) -> None:
+    """scripts/interface_bytecode.sh compiles an interface package's module that has no bytecode, and again
+    once its source changed (a venv of its own, with a stand-in tf2_msgs); other packages are left alone."""
+    import venv
+
+    venv.create(tmp_path / "venv", with_pip=False)
+    site = Path(
+        subprocess.run(
+            [
+                str(tmp_path / "venv" / "bin" / "python"),
+                "-c",
+                "import sysconfig; print(sysconfig.get_paths()['purelib'])",
+            ],
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout.strip()
+    )
+    (site / "tf2_msgs" / "msg").mkdir(parents=True)
+    mod = site / "tf2_msgs" / "msg" / "_tf_message.py"
+    mod.write_text("VALUE = 1\n")
+    (site / "not_ours").mkdir()
+    other = site / "not_ours" / "m.py"
+    other.write_text("VALUE = 2\n")
+    script = [str(REPO / "scripts" / "interface_bytecode.sh"), str(tmp_path / "venv")]
+    subprocess.run(script, check=True, timeout=120)
+    assert _pyc_matches(mod) and not _pyc_matches(other)
+    mod.write_text("VALUE = 11\n")
+    os.utime(mod, (1_000_000_000, 1_000_000_000))  # the source changed (a cached tier unpacked again)
+    assert not _pyc_matches(mod)
+    subprocess.run(script, check=True, timeout=120)
+    assert _pyc_matches(mod)

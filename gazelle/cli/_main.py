@@ -186,6 +186,8 @@ def _discovery(value: str | None) -> str | None:
 def _origins(values: list[str]) -> tuple[str, ...]:
     """``--viewer-allow-origin``: the browser origins the viewer accepts besides its own (``http(s)://HOST[:PORT]``
     or ``*``; anything else is a usage error)."""
+    if not values:  # the usual case, without importing the viewer (websockets: 0.1 s of every start)
+        return ()
     from ..viewer import allowed_origins
 
     try:

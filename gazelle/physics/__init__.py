@@ -7,6 +7,19 @@ an entity's systems add actuators in between. Systems read and command the world
 This package imports nothing from the systems, the runtime or ROS.
 """
 
+import os as _os
+
+# ``import mujoco`` picks an OpenGL backend for ``mujoco.Renderer`` and imports it (glfw unless
+# MUJOCO_GL says otherwise: 0.1-0.3 s of every process's start, a third of MuJoCo's import). gazelle
+# renders through mujoco.egl / mujoco.osmesa itself (_render.py), so unless the user chose a backend the
+# import is told to skip it; the variable is put back as it was, for the processes gazelle starts.
+if "MUJOCO_GL" not in _os.environ:
+    _os.environ["MUJOCO_GL"] = "disable"
+    try:
+        import mujoco as _mujoco  # noqa: F401
+    finally:
+        del _os.environ["MUJOCO_GL"]
+
 from ._builder import SEP as SEP
 from ._builder import BuildError as BuildError
 from ._convex import prepare as prepare_meshes
