@@ -6,6 +6,9 @@ local only when every publisher offers it (a transient local reader does not mat
 from __future__ import annotations
 
 import copy
+import os
+import re
+import sys
 
 import pytest
 
@@ -83,3 +86,97 @@ def test_the_recorder_and_foxglove_match_every_publisher_of_a_mixed_topic(node) 
     (said,) = _mixed_offers(node, "/mixed_rec")
     assert 'publishers on topic "/mixed_rec" are offering RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL' in said
     assert _mixed_offers(node, "/all_latched") == []
+
+
+OVERRIDES = """
+/tf_static:
+  history: keep_last
+  depth: 1
+  reliability: reliable
+  durability: transient_local
+  deadline: {sec: 1, nsec: 5}
+/scan:
+  depth: 7
+  reliability: best_effort
+"""
+
+
+def test_bag_qos_overrides_are_read_as_ros2bag_reads_them(tmp_path) -> None:
+    """``--qos-profile-overrides-path`` (ros2bag/api ``convert_yaml_to_qos_profile``): short keys, ``{sec,
+    nsec}`` durations, rclpy's QoSProfile rules; each mistake is one line naming the file and topic."""
+    import io
+
+    from rclpy.qos import HistoryPolicy
+
+    from gazelle.cli.ros2cli._bag import BagError, qos_overrides
+
+    got = qos_overrides(io.StringIO(OVERRIDES))
+    tf = got["/tf_static"]
+    assert (tf.history, tf.depth, tf.durability) == (HistoryPolicy.KEEP_LAST, 1, DurabilityPolicy.TRANSIENT_LOCAL)
+    assert tf.deadline.nanoseconds == 1_000_000_005
+    assert (got["/scan"].depth, got["/scan"].reliability) == (7, ReliabilityPolicy.BEST_EFFORT)
+    assert qos_overrides(io.StringIO("")) == {}
+    bad = {
+        "/a: {depth: 1, speed: 3}": "Unexpected key `speed` for QoS profile.",
+        "/a: {depth: -1}": "`depth` may not be a negative value.",
+        "/a: {depth: 1, deadline: {sec: 1}}": "must include both seconds (sec) and nanoseconds (nsec)",
+        "/a: {reliability: reliable}": "History and/or depth settings are required",
+        "/a: {depth: 1, durability: sometimes}": "`sometimes` is not a durability policy (one of",
+        "- /a": "expected a mapping of topic names to QoS profiles",
+    }
+    for text, said in bad.items():
+        f = io.StringIO(text)
+        f.name = "qos.yaml"
+        with pytest.raises(BagError, match=re.escape(said)) as err:
+            qos_overrides(f)
+        assert str(err.value).startswith("qos.yaml:") and "\n" not in str(err.value)
+
+
+def test_the_recorder_and_the_player_take_an_override_as_it_is_and_say_so(node, tmp_path, capsys, monkeypatch) -> None:
+    """rosbag2_transport: the recorder subscribes with the override instead of adapting to the offers (and
+    does not warn of mixed offers then); the player publishes with it; without one, the player offers
+    what all recorded publishers offered, or, when they differed, rosbag2's default (reliable, volatile),
+    said once."""
+    import io
+
+    from gazelle.cli.ros2cli._bag import _qos_dicts, _qos_profile, _Recorder, qos_overrides
+
+    prefix = [p for p in os.environ.get("AMENT_PREFIX_PATH", "").split(os.pathsep) if p]
+    monkeypatch.setenv("AMENT_PREFIX_PATH", os.pathsep.join([*prefix, sys.prefix]))  # as `ros2` puts it
+    overrides = qos_overrides(io.StringIO("/mixed_bag: {depth: 3, durability: transient_local}\n"))
+    _pub(node, "/mixed_bag", DurabilityPolicy.TRANSIENT_LOCAL)
+    _pub(node, "/mixed_bag", DurabilityPolicy.VOLATILE)
+    rec = _Recorder(node, tmp_path, False, overrides)
+    try:
+        rec.add("/mixed_bag", "std_msgs/msg/String")
+        sub = rec._subs[-1].qos_profile
+        assert (sub.depth, sub.durability) == (3, DurabilityPolicy.TRANSIENT_LOCAL)
+        said = capsys.readouterr().out
+        assert "Overriding subscription profile for /mixed_bag" in said and "Some, but not all" not in said
+        rec.overrides = {}
+        rec.add("/mixed_bag_2", "std_msgs/msg/String")  # no publisher: adapted, volatile
+        assert rec._subs[-1].qos_profile.durability == DurabilityPolicy.VOLATILE
+    finally:
+        rec.finish()
+
+    offered = _qos_dicts(node.get_publishers_info_by_topic("/mixed_bag"))
+    assert _qos_profile("/mixed_bag", offered, overrides).durability == DurabilityPolicy.TRANSIENT_LOCAL
+    assert "Overriding QoS profile for topic /mixed_bag" in capsys.readouterr().out
+    mixed = _qos_profile("/mixed_bag", offered, {})
+    assert (mixed.durability, mixed.reliability) == (DurabilityPolicy.VOLATILE, ReliabilityPolicy.RELIABLE)
+    assert "Not all original publishers on topic /mixed_bag offered the same QoS profiles" in capsys.readouterr().out
+    _pub(node, "/latched_bag", DurabilityPolicy.TRANSIENT_LOCAL)
+    _pub(node, "/latched_bag", DurabilityPolicy.TRANSIENT_LOCAL)
+    same = _qos_profile("/latched_bag", _qos_dicts(node.get_publishers_info_by_topic("/latched_bag")), {})
+    assert same.durability == DurabilityPolicy.TRANSIENT_LOCAL
+    assert "Not all" not in capsys.readouterr().out
+
+
+def test_a_bad_overrides_file_is_one_line_and_status_1(tmp_path, capsys) -> None:
+    from gazelle.cli.ros2cli._bag import main
+
+    bad = tmp_path / "qos.yaml"
+    bad.write_text("/odom: {depth: 1, colour: blue}\n")
+    assert main(["play", str(tmp_path / "no_bag"), "--qos-profile-overrides-path", str(bad)]) == 1
+    err = capsys.readouterr().err.strip()
+    assert err == f"[ERROR] [ros2bag]: {bad}: topic /odom: Unexpected key `colour` for QoS profile.", err

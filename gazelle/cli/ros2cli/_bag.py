@@ -8,8 +8,13 @@ recording). rosbag2 itself, ``rosbags`` and Foxglove read it.
 
 Decisions where rosbag2 leaves a choice:
 
-* ``record`` subscribes with a QoS compatible with every publisher (reliable only if all are, transient
-  local if any is) and stamps each message with its receive time (``--use-sim-time``: /clock's);
+* ``record`` subscribes with a QoS compatible with every publisher (reliable and transient local each only
+  if all publishers offer it, as rosbag2) and stamps each message with its receive time
+  (``--use-sim-time``: /clock's);
+* ``--qos-profile-overrides-path`` (record and play) takes rosbag2's YAML, ``TOPIC: {history, depth,
+  reliability, durability, deadline: {sec, nsec}, lifespan, liveliness, liveliness_lease_duration,
+  avoid_ros_namespace_conventions}``, read as ros2bag's ``convert_yaml_to_qos_profile`` does: the profile
+  replaces the adapted one for that topic;
 * ``play`` waits, before the first message, until the subscribers already in the graph have matched its
   publishers (at most ``--wait`` seconds, 2 by default), so a listener started first misses nothing,
   and at the end until reliable subscribers acknowledged everything (at most 2 s).
@@ -64,6 +69,78 @@ class BagError(Exception):
     """What makes a bag command fail; the message is the one line printed."""
 
 
+OVERRIDES_HELP = "Path to a yaml file defining overrides of the QoS profile for specific topics."
+_DURATION_KEYS = ("deadline", "lifespan", "liveliness_lease_duration")
+_VALUE_KEYS = ("depth", "avoid_ros_namespace_conventions")
+
+
+def qos_overrides(file: Any) -> dict[str, Any]:
+    """``--qos-profile-overrides-path``: topic -> rclpy QoSProfile, read as ros2bag/api/__init__.py's
+    ``convert_yaml_to_qos_profile`` does (policies by their short keys, durations as ``{sec, nsec}``, no
+    negative value, no other key, rclpy's own rule that history or depth is given). What rosbag2 would
+    stop on with a traceback (not a mapping, an unknown policy value) is a :class:`BagError` here too."""
+    from rclpy.duration import Duration
+    from rclpy.qos import (
+        InvalidQoSProfileException,
+        QoSDurabilityPolicy,
+        QoSHistoryPolicy,
+        QoSLivelinessPolicy,
+        QoSProfile,
+        QoSReliabilityPolicy,
+    )
+
+    policies = {
+        "history": QoSHistoryPolicy,
+        "reliability": QoSReliabilityPolicy,
+        "durability": QoSDurabilityPolicy,
+        "liveliness": QoSLivelinessPolicy,
+    }
+    name = getattr(file, "name", "the QoS overrides file")
+    try:
+        loaded = yaml.safe_load(file)
+    except yaml.YAMLError as err:
+        raise BagError(f"{name}: not YAML: {err}") from None
+    if loaded is None:
+        return {}
+    if not isinstance(loaded, dict) or not all(isinstance(v, dict) for v in loaded.values()):
+        raise BagError(f"{name}: expected a mapping of topic names to QoS profiles")
+    out = {}
+    for topic, profile in loaded.items():
+        fields: dict[str, Any] = {}
+        try:
+            for key, value in profile.items():
+                if key in _DURATION_KEYS:
+                    fields[key] = _duration(value, Duration)
+                elif key in policies:
+                    try:
+                        fields[key] = policies[key].get_from_short_key(str(value))
+                    except KeyError:
+                        keys = ", ".join(policies[key].short_keys())
+                        raise ValueError(f"`{value}` is not a {key} policy (one of {keys})") from None
+                elif key in _VALUE_KEYS:
+                    if not isinstance(value, (int, bool)) or value < 0:
+                        raise ValueError(f"`{key}` may not be a negative value.")
+                    fields[key] = value
+                else:
+                    raise ValueError(f"Unexpected key `{key}` for QoS profile.")
+            out[str(topic)] = QoSProfile(**fields)
+        except (InvalidQoSProfileException, ValueError) as err:
+            raise BagError(f"{name}: topic {topic}: {err}") from None
+    return out
+
+
+def _duration(value: Any, duration: Any) -> Any:
+    """A ``{sec, nsec}`` YAML duration as rclpy's Duration (ros2bag's ``dict_to_duration``: empty is 0)."""
+    if not value:
+        return duration()
+    if not isinstance(value, dict) or "sec" not in value or "nsec" not in value:
+        raise ValueError("Time overrides must include both seconds (sec) and nanoseconds (nsec).")
+    d = duration(seconds=value["sec"], nanoseconds=value["nsec"])
+    if d < duration(seconds=0):
+        raise ValueError("Time duration may not be a negative value.")
+    return d
+
+
 def main(argv: list[str]) -> int:
     """``ros2 bag record|play|info``: rosbag2's verbs with Jazzy's arguments; a bag that is not there or
     not readable is one line on stderr and status 1 (:class:`BagError`)."""
@@ -82,6 +159,7 @@ def main(argv: list[str]) -> int:
     )
     rec.add_argument("--include-hidden-topics", action="store_true")
     rec.add_argument("--use-sim-time", action="store_true", help="stamp messages with /clock's time")
+    rec.add_argument("--qos-profile-overrides-path", type=argparse.FileType("r"), help=OVERRIDES_HELP)
     play = sub.add_parser("play", help="Play back ROS data from a bag")
     play.add_argument("bag_path")
     play.add_argument("-r", "--rate", type=float, default=1.0)
@@ -92,6 +170,7 @@ def main(argv: list[str]) -> int:
     play.add_argument("--delay", type=float, default=0.0, help="seconds to wait before playing")
     play.add_argument("--wait", type=float, default=2.0, help="(gazelle) at most this long for subscribers to match")
     play.add_argument("-s", "--storage", default="mcap")
+    play.add_argument("--qos-profile-overrides-path", type=argparse.FileType("r"), help=OVERRIDES_HELP)
     info = sub.add_parser("info", help="Print information about a bag to the screen")
     info.add_argument("bag_path")
     info.add_argument("-s", "--storage", default="mcap")
@@ -312,10 +391,12 @@ class _Recorder:
     """One bag being written: a channel per topic (its ``ros2msg`` schema and its publishers' offered QoS
     as rosbag2 stores it), the CDR bytes of each message as received, metadata.yaml written at the end."""
 
-    def __init__(self, node: Any, out: Path, use_sim_time: bool) -> None:
+    def __init__(self, node: Any, out: Path, use_sim_time: bool, overrides: dict[str, Any] | None = None) -> None:
         from mcap.writer import CompressionType, Writer
 
         self.node = node
+        self.overrides = overrides or {}
+        """--qos-profile-overrides-path: topic -> the subscription's QoS, used as it is"""
         self.out = out
         self.path = out / f"{out.name}_0.mcap"
         self._file = open(self.path, "wb")
@@ -364,10 +445,14 @@ class _Recorder:
                 channel_id=entry["channel"], log_time=now, publish_time=now, data=data, sequence=entry["count"]
             )
 
-        for warning in _mixed_offers(self.node, topic):
-            print(f"[WARN] [rosbag2_transport]: {warning}", flush=True)
-        qos = matching_qos(self.node, topic)
-        qos.depth = RECORD_DEPTH
+        if topic in self.overrides:  # rosbag2_transport recorder.cpp, subscription_qos_for_topic
+            print(f"[INFO] [rosbag2_recorder]: Overriding subscription profile for {topic}", flush=True)
+            qos = self.overrides[topic]
+        else:
+            for warning in _mixed_offers(self.node, topic):
+                print(f"[WARN] [rosbag2_transport]: {warning}", flush=True)
+            qos = matching_qos(self.node, topic)
+            qos.depth = RECORD_DEPTH
         self._subs.append(self.node.create_subscription(cls, topic, on_message, qos, raw=True))
         print(f"[INFO] [rosbag2_recorder]: Subscribed to topic '{topic}'", flush=True)
 
@@ -430,6 +515,7 @@ def _record(args: argparse.Namespace) -> int:
     if out.exists():
         raise BagError(f"Output folder '{out}' already exists.")
     wanted = {absolute(t) for t in args.topics}
+    overrides = qos_overrides(args.qos_profile_overrides_path) if args.qos_profile_overrides_path else {}
 
     def chosen(topic: str) -> bool:
         if exclude is not None and exclude.search(topic):
@@ -453,7 +539,7 @@ def _record(args: argparse.Namespace) -> int:
 
             node.set_parameters([Parameter("use_sim_time", Parameter.Type.BOOL, True)])
         out.mkdir(parents=True)
-        rec = _Recorder(node, out, args.use_sim_time)
+        rec = _Recorder(node, out, args.use_sim_time, overrides)
         print("[INFO] [rosbag2_recorder]: Listening for topics...", flush=True)
         started = time.monotonic()
         first: float | None = None
@@ -485,18 +571,36 @@ def _record(args: argparse.Namespace) -> int:
 
 
 # --------------------------------------------------------------------------- play
-def _qos_profile(offered: list[dict[str, Any]]) -> Any:
-    """The QoS to publish with: the first recorded publisher's reliability and durability."""
+_SAME_OFFER_KEYS = ("reliability", "durability", "deadline", "liveliness", "liveliness_lease_duration")
+"""What rosbag2 compares to call recorded offers the same (qos.cpp ``all_profiles_effectively_same``:
+history, depth and lifespan excluded)."""
+
+
+def _qos_profile(topic: str, offered: list[dict[str, Any]], overrides: dict[str, Any]) -> Any:
+    """The QoS to publish a topic with, as rosbag2_transport player.cpp's ``publisher_qos_for_topic``
+    chooses it: an override as it is; else the recorded publishers' reliability and durability when they
+    all offered the same (``adapt_offer_to_recorded_offers``); else, said once, rosbag2's default offer
+    (reliable, volatile). The depth is gazelle's 100, not rosbag2's 10: a played burst waits in it."""
     from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
+    if topic in overrides:
+        print(f"[INFO] [rosbag2_player]: Overriding QoS profile for topic {topic}", flush=True)
+        return overrides[topic]
     qos = QoSProfile(depth=100)
-    if offered:
-        first = offered[0]
-        rel, dur = str(first.get("reliability", "reliable")), str(first.get("durability", "volatile"))
-        qos.reliability = ReliabilityPolicy.BEST_EFFORT if rel in ("best_effort", "2") else ReliabilityPolicy.RELIABLE
-        qos.durability = (
-            DurabilityPolicy.TRANSIENT_LOCAL if dur in ("transient_local", "1") else DurabilityPolicy.VOLATILE
+    if not offered:
+        return qos
+    first = offered[0]
+    if any(o.get(k) != first.get(k) for o in offered[1:] for k in _SAME_OFFER_KEYS):
+        print(
+            f"[WARN] [rosbag2_storage]: Not all original publishers on topic {topic} offered the same QoS "
+            "profiles. Rosbag2 cannot yet choose an adapted profile to offer for this mixed case. Falling back "
+            "to the rosbag2_storage default publisher offer.",
+            flush=True,
         )
+        return qos
+    rel, dur = str(first.get("reliability", "reliable")), str(first.get("durability", "volatile"))
+    qos.reliability = ReliabilityPolicy.BEST_EFFORT if rel in ("best_effort", "2") else ReliabilityPolicy.RELIABLE
+    qos.durability = DurabilityPolicy.TRANSIENT_LOCAL if dur in ("transient_local", "1") else DurabilityPolicy.VOLATILE
     return qos
 
 
@@ -518,6 +622,7 @@ def _play(args: argparse.Namespace) -> int:
     from mcap.reader import make_reader
     from rclpy.duration import Duration
 
+    overrides = qos_overrides(args.qos_profile_overrides_path) if args.qos_profile_overrides_path else {}
     bag = Path(args.bag_path)
     meta = _read_metadata(bag)
     files = _mcap_files(bag, meta)
@@ -532,9 +637,8 @@ def _play(args: argparse.Namespace) -> int:
         pubs: dict[str, Any] = {}
         for topic in topics:
             md = recorded[topic]
-            pubs[topic] = node.create_publisher(
-                get_interface(md["type"]), topic, _qos_profile(_offered(md.get("offered_qos_profiles")))
-            )
+            qos = _qos_profile(topic, _offered(md.get("offered_qos_profiles")), overrides)
+            pubs[topic] = node.create_publisher(get_interface(md["type"]), topic, qos)
         clock_pub = None
         if args.clock is not None:
             from rosgraph_msgs.msg import Clock
