@@ -753,3 +753,79 @@ def test_default_entries_decide_the_pairs_the_entries_do_not(planner):
         planner.remove_object("acm_default")
         planner.set_allowed_collision_matrix(initial)
     assert not planner.in_collision(q)
+
+
+def test_a_groups_urdf_is_built_as_moveits_get_urdf_builds_it(planner):
+    """get_group_urdf_capability.cpp: the group's links sorted, then its joints sorted, each followed by an
+    empty parent link when that link is not in yet; the group's joints as MoveIt's JointModelGroup has them
+    (a chain's joints, fixed ones too; a named link's parent joint; a subgroup's joints)."""
+    from lxml import etree
+
+    from gazelle.planning import GroupUrdfError, group_urdf
+
+    urdf = planner._urdf
+    arm = etree.fromstring(group_urdf(urdf, planner.semantics, "panda_arm").encode())
+    assert arm.tag == "robot" and arm.get("name") == "panda_arm"
+    order = [(e.tag, e.get("name")) for e in arm]
+    links = [("link", f"panda_link{i}") for i in range(1, 9)]
+    joints = [("joint", f"panda_joint{i}") for i in range(1, 9)]
+    assert order == [*links, joints[0], ("link", "panda_link0"), *joints[1:]]
+    assert arm.find("link[@name='panda_link0']").getchildren() == []  # the stub
+    assert arm.find("link[@name='panda_link1']").find("collision") is not None  # copied whole
+    assert arm.find("joint[@name='panda_joint8']").get("type") == "fixed"
+
+    hand = etree.fromstring(group_urdf(urdf, planner.semantics, "hand").encode())
+    assert [(e.tag, e.get("name")) for e in hand] == [
+        ("link", "panda_hand"),
+        ("link", "panda_leftfinger"),
+        ("link", "panda_rightfinger"),
+        ("joint", "panda_finger_joint1"),
+        ("joint", "panda_finger_joint2"),
+        ("joint", "panda_hand_joint"),
+        ("link", "panda_link8"),
+    ]
+    both = etree.fromstring(group_urdf(urdf, planner.semantics, "panda_arm_hand").encode())
+    assert {e.get("name") for e in both.iter("joint")} == {f"panda_joint{i}" for i in range(1, 9)} | {
+        "panda_finger_joint1",
+        "panda_finger_joint2",
+        "panda_hand_joint",
+    }
+    with pytest.raises(GroupUrdfError, match="Cannot create URDF because planning group 'legs' does not exist"):
+        group_urdf(urdf, planner.semantics, "legs")
+
+
+def test_servo_turns_commands_into_joint_steps_as_moveit_servo_does(planner):
+    """moveit_servo's command.cpp and servo.cpp on MoveIt's Panda: speed_units capped at scale.linear, a jog of
+    a joint outside the group or with a velocity short is INVALID, a step past a joint limit less its margin
+    halts every joint (JOINT_BOUND), and a twist at the stretched-out singularity is an emergency stop."""
+    from gazelle.planning import ServoCore, ServoKinematics, ServoSettings
+    from gazelle.planning import servo as sv
+
+    k = ServoKinematics(planner, "panda_arm")
+    assert (k.planning_frame, k.ee_frame) == ("panda_link0", "panda_link8")
+    assert np.allclose(
+        k.jacobian(np.array(list(READY.values()))), k.numeric_jacobian(np.array(list(READY.values()))), atol=1e-6
+    )
+    core = ServoCore(k, ServoSettings(command_in_type="speed_units", scale_linear=0.2))
+    q = np.array(list(READY.values()))
+    status, delta, _ = core.twist(q, np.array([0.0, 0.0, 1.0, 0.0, 0.0, 0.0]))  # 1 m/s asked, 0.2 allowed
+    assert status == sv.NO_WARNING
+    dx = k.jacobian(q) @ delta
+    assert dx[2] == pytest.approx(0.2 * 0.01, rel=1e-3) and np.abs(dx[[0, 1, 3, 4, 5]]).max() < 1e-6
+    # about the end effector's own axes: its z is the base's -z at READY (pointing down)
+    moved = core.twist_in_planning_frame(q, "panda_link8", [0.0, 0.0, 0.1, 0.0, 0.0, 0.0])
+    assert moved is not None and moved[2] == pytest.approx(-0.1, abs=1e-3)
+    assert core.twist_in_planning_frame(q, "nowhere", [0.0] * 6) is None
+
+    assert core.joint_jog(["panda_finger_joint1"], [0.1])[0] == sv.INVALID
+    assert "Received 2 joints with 1 commands" in core.joint_jog(["panda_joint1", "panda_joint2"], [0.1])[2]
+    near = q.copy()
+    near[0] = k.upper[0] - 0.05  # within the 0.1 margin of joint 1's upper limit
+    status, delta, _ = core.joint_jog(["panda_joint1"], [1.0])
+    step = core.next_state(near, status, delta, sv.JOINT_JOG)
+    assert step.status == sv.JOINT_BOUND and np.array_equal(step.positions, near) and not step.velocities.any()
+    assert "panda_joint1" in step.warning
+
+    stretched = np.array([0.0, 0.0, 0.0, -0.07, 0.0, 0.0, 0.0])  # the arm straight up: elbow almost straight
+    status, delta, _ = core.twist(stretched, np.array([0.0, 0.0, 0.05, 0.0, 0.0, 0.0]))
+    assert status == sv.HALT_FOR_SINGULARITY and not delta.any()

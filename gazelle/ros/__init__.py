@@ -56,6 +56,14 @@ def move_group_main(argv: list[str]) -> int:
     return main(argv)
 
 
+def servo_main(argv: list[str]) -> int:
+    """MoveIt Servo's ``servo_node`` (compat/ros_packages/moveit_servo): moveit_msgs and the planner load when
+    it runs."""
+    from ._servo_node import servo_main as main
+
+    return main(argv)
+
+
 def arm_main(argv: list[str]) -> int:
     """``gazelle arm``: move an arm through a running move_group."""
     from ._arm_cli import arm_main as main
@@ -77,6 +85,7 @@ __all__ = [
     "matrix_to_pose",
     "spawn_main",
     "move_group_main",
+    "servo_main",
     "spawner_main",
     "unspawner_main",
     "controller_file_params",

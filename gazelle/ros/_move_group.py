@@ -6,7 +6,8 @@ topics of the same names), ``robot_description_planning`` (joint_limits.yaml) an
 ``moveit_simple_controller_manager`` (moveit_controllers.yaml). It serves:
 
 - the ``/move_action`` (MoveGroup) and ``/execute_trajectory`` (ExecuteTrajectory) actions;
-- ``/compute_fk``, ``/compute_ik``, ``/plan_kinematic_path`` and ``/check_state_validity``.
+- ``/compute_fk``, ``/compute_ik``, ``/plan_kinematic_path`` and ``/check_state_validity``;
+- ``/get_urdf`` and ``/clear_octomap`` (``_move_group_model.py``).
 
 Trajectories are executed by the arm's ``FollowJointTrajectory`` controller that
 moveit_controllers.yaml names (the simulated joint_trajectory_controller).
@@ -34,6 +35,7 @@ from moveit_msgs.msg import (
 from moveit_msgs.srv import (
     ApplyPlanningScene,
     GetCartesianPath,
+    GetGroupUrdf,
     GetMotionPlan,
     GetPlannerParams,
     GetPlanningScene,
@@ -49,6 +51,7 @@ from rclpy.executors import MultiThreadedExecutor, SingleThreadedExecutor
 from rclpy.parameter import Parameter
 from rclpy.utilities import try_shutdown
 from std_msgs.msg import String
+from std_srvs.srv import Empty
 
 from ..description import read_description_file
 from ..planning import ArmPlanner, PlanningError, moveit_joint_limits
@@ -64,6 +67,7 @@ from ._move_group_base import (
     _log,
 )
 from ._move_group_execution import _Execution
+from ._move_group_model import _ModelServices
 from ._move_group_planners import _PlannerQueries
 from ._replies import serve
 from ._signals import spin_until_shutdown
@@ -71,7 +75,7 @@ from ._signals import spin_until_shutdown
 __all__ = ["PIPELINE_PARAMETERS", "Controller", "MoveGroupNode", "move_group_main"]
 
 
-class MoveGroupNode(_Execution, _PlannerQueries):
+class MoveGroupNode(_Execution, _PlannerQueries, _ModelServices):
     """MoveIt's move_group interfaces for one robot."""
 
     def __init__(
@@ -143,8 +147,10 @@ class MoveGroupNode(_Execution, _PlannerQueries):
             (QueryPlannerInterfaces, "query_planner_interface", self._query_planner_interface),
             (GetPlannerParams, "get_planner_params", self._get_planner_params),
             (SetPlannerParams, "set_planner_params", self._set_planner_params),
+            (GetGroupUrdf, "get_urdf", self._get_urdf),
         ):
             serve(self, srv_type, name, self._guard(name, fn), cb)
+        serve(self, Empty, "clear_octomap", self._clear_octomap, cb)  # needs no robot
         for msg_type, topic, fn in (
             (PlanningScene, "planning_scene", self._on_scene_diff),
             (CollisionObject, "collision_object", self._on_collision_object),
@@ -269,6 +275,7 @@ class MoveGroupNode(_Execution, _PlannerQueries):
                 "shortcutting and TOPP-RA time parameterization within the joint limits"
             )
         self.planner = planner
+        self._urdf_text = urdf
         if self._sim_world is not None:
             with self._lock:
                 self._take_sim_world(self._sim_world)

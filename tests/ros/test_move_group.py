@@ -985,3 +985,22 @@ def test_planner_interfaces_and_their_parameters_are_queried_and_set_as_moveit_s
     panda.move_group.wait_line("Number of parameter names does not match the number of parameters", timeout=10)
     said = [line for line in panda.move_group.lines if "gazelle's planner does not read planner configurations" in line]
     assert len(said) == 1, said
+
+
+def test_a_groups_urdf_and_clear_octomap_are_served_as_moveits_default_capabilities(panda):
+    """get_urdf (get_group_urdf_capability.cpp) answers a group's URDF or MoveIt's FAILURE naming the group;
+    clear_octomap (std_srvs/Empty, RViz's button) answers with MoveIt's two log lines."""
+    from lxml import etree
+    from moveit_msgs.msg import MoveItErrorCodes
+    from moveit_msgs.srv import GetGroupUrdf
+    from std_srvs.srv import Empty
+
+    res = panda.ros.call(GetGroupUrdf, "/get_urdf", GetGroupUrdf.Request(group_name="hand"))
+    assert (res.error_code.val, res.error_code.source) == (MoveItErrorCodes.SUCCESS, "GetUrdfService")
+    robot = etree.fromstring(res.urdf_string.encode())
+    assert robot.get("name") == "hand" and robot.find("joint[@name='panda_finger_joint1']") is not None
+    bad = panda.ros.call(GetGroupUrdf, "/get_urdf", GetGroupUrdf.Request(group_name="tail"))
+    assert bad.error_code.val == MoveItErrorCodes.FAILURE and bad.urdf_string == ""
+    assert bad.error_code.message == "Cannot create URDF because planning group 'tail' does not exist"
+    panda.ros.call(Empty, "/clear_octomap", Empty.Request())
+    panda.move_group.wait_line("Octomap cleared.", timeout=10)

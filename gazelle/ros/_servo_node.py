@@ -1,0 +1,456 @@
+"""MoveIt Servo's ``servo_node`` (moveit_servo, Jazzy: src/servo_node.cpp), served by
+:class:`gazelle.planning.ServoCore`.
+
+A plain rclpy node named ``servo_node``. Its parameters are servo_parameters.yaml's under ``moveit_servo.``
+(as launch files pass them: ``{"moveit_servo": servo_params}``), with the robot in ``robot_description``
+and ``robot_description_semantic``. As MoveIt's node it:
+
+* reads ``~/delta_joint_cmds`` (control_msgs/JointJog), ``~/delta_twist_cmds`` (TwistStamped) and
+  ``~/pose_target_cmds`` (PoseStamped) (the ``*_command_in_topic`` parameters), the robot's state from
+  ``joint_topic``; acts on the command of the type ``~/switch_command_type`` chose (JOINT_JOG at start),
+  and warns "Command type has not been set, cannot accept input" for another;
+* every ``publish_period`` of the node's clock (sim time under ``use_sim_time``; MoveIt's loop is a
+  WallRate, the same at a real-time factor of 1, so a command means the same motion at any pace; a cycle
+  after a longer step of the clock covers that time, up to 10 periods) turns the latest command into the move group's
+  next joint state and publishes it on ``command_out_topic`` as ``trajectory_msgs/JointTrajectory`` (the
+  sliding window of ``max_expected_latency``: common.cpp ``updateSlidingWindow`` and
+  ``composeTrajectoryMessage``) or ``std_msgs/Float64MultiArray``; a command older than
+  ``incoming_command_timeout`` (its header stamp, by the node's clock) halts;
+* publishes a moveit_msgs/ServoStatus on ``~/status`` each cycle; ``~/pause_servo`` (std_srvs/SetBool)
+  pauses and resumes.
+
+Where gazelle differs, said once at start: no collision checking (``check_collisions``), no smoothing plugin
+(``use_smoothing``), no ``active_subgroup``; the Jacobian's pseudo-inverse stands in for an IK plugin.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import threading
+from collections import deque
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import rclpy
+from control_msgs.msg import JointJog
+from geometry_msgs.msg import PoseStamped, TwistStamped
+from moveit_msgs.msg import ServoStatus
+from moveit_msgs.srv import ServoCommandType
+from rclpy.duration import Duration
+from rclpy.node import Node
+from rclpy.parameter import Parameter
+from rclpy.time import Time
+from sensor_msgs.msg import JointState
+from std_msgs.msg import Float64MultiArray
+from std_srvs.srv import SetBool
+from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
+
+from ..planning import PlanningError, RobotScene, ServoCore, ServoKinematics, ServoSettings
+from ..planning import servo as core
+
+PREFIX = "moveit_servo."
+MIN_POINTS_FOR_TRAJ_MSG = 3
+"""moveit_servo utils/common.hpp: a trajectory is published once the window holds this many states."""
+STOPPED_VELOCITY_EPS = 1e-4
+"""servo.cpp: a halting robot has stopped when every velocity is below this."""
+MAX_CYCLE_PERIODS = 10
+"""A cycle covers at most this many periods of clock time (a clock that jumped, a node that was stopped)."""
+OUT_TYPES = ("trajectory_msgs/JointTrajectory", "std_msgs/Float64MultiArray")
+
+
+@dataclass
+class _State:
+    """moveit_servo's KinematicState: the group's positions and velocities, stamped (ns, node clock)."""
+
+    positions: np.ndarray
+    velocities: np.ndarray
+    stamp_ns: int = 0
+
+
+class ServoNode(Node):
+    """servo_node (see the module docstring)."""
+
+    def __init__(self, parameter_overrides: list[Parameter] | None = None) -> None:
+        super().__init__(
+            "servo_node",
+            parameter_overrides=parameter_overrides or [],
+            automatically_declare_parameters_from_overrides=True,
+        )
+        self._lock = threading.Lock()
+        self.settings, self.p = self._read_parameters()
+        self.kinematics = self._robot()
+        self.core = ServoCore(self.kinematics, self.settings)
+        self.command_type = core.JOINT_JOG
+        self.paused = False
+        self._joints: dict[str, float] = {}
+        self._latest: dict[int, Any] = {}
+        self._new: dict[int, bool] = {core.JOINT_JOG: False, core.TWIST: False, core.POSE: False}
+        self._window: deque[_State] = deque()
+        self._last_commanded: _State | None = None
+        self._waiting_said = False
+        self._last_cycle_ns: int | None = None
+        self._status = ServoStatus(code=core.NO_WARNING, message=core.STATUS_MESSAGES[core.NO_WARNING])
+        self.create_subscription(JointState, self.p["joint_topic"], self._on_joints, 10)
+        for kind, msg_type, topic in (
+            (core.JOINT_JOG, JointJog, "joint_command_in_topic"),
+            (core.TWIST, TwistStamped, "cartesian_command_in_topic"),
+            (core.POSE, PoseStamped, "pose_command_in_topic"),
+        ):
+            self.create_subscription(msg_type, self.p[topic], lambda m, k=kind: self._on_command(k, m), 10)
+        out_type = self.p["command_out_type"]
+        self._out = self.create_publisher(
+            JointTrajectory if out_type == OUT_TYPES[0] else Float64MultiArray, self.p["command_out_topic"], 10
+        )
+        self._status_pub = self.create_publisher(ServoStatus, self.p["status_topic"], 10)
+        self.create_service(ServoCommandType, "~/switch_command_type", self._switch_command_type)
+        self.create_service(SetBool, "~/pause_servo", self._pause_servo)
+        self._say_differences()
+        # on the node's clock: sim time under use_sim_time (MoveIt's loop is a WallRate, which a simulation
+        # running faster or slower than real time would make command more or less motion per sim second)
+        self.create_timer(self.settings.publish_period, self._cycle)
+        self.get_logger().info("Servo initialized successfully")
+
+    # ------------------------------------------------------------------ set-up
+    def _get(self, name: str, default: Any) -> Any:
+        full = PREFIX + name
+        if not self.has_parameter(full):
+            return default
+        value = self.get_parameter(full).value
+        return default if value is None else value
+
+    def _read_parameters(self) -> tuple[ServoSettings, dict[str, Any]]:
+        s = ServoSettings()
+        for name in (
+            "publish_period",
+            "command_in_type",
+            "apply_twist_commands_about_ee_frame",
+            "lower_singularity_threshold",
+            "hard_stop_singularity_threshold",
+            "leaving_singularity_threshold_multiplier",
+            "singularity_step_scale",
+            "halt_all_joints_in_joint_mode",
+            "halt_all_joints_in_cartesian_mode",
+            "override_velocity_scaling_factor",
+        ):
+            setattr(s, name, type(getattr(s, name))(self._get(name, getattr(s, name))))
+        s.scale_linear = float(self._get("scale.linear", s.scale_linear))
+        s.scale_rotational = float(self._get("scale.rotational", s.scale_rotational))
+        s.scale_joint = float(self._get("scale.joint", s.scale_joint))
+        s.joint_limit_margins = [float(m) for m in self._get("joint_limit_margins", s.joint_limit_margins)]
+        p = {
+            "move_group_name": str(self._get("move_group_name", "")),
+            "joint_topic": str(self._get("joint_topic", "/joint_states")),
+            "joint_command_in_topic": str(self._get("joint_command_in_topic", "~/delta_joint_cmds")),
+            "cartesian_command_in_topic": str(self._get("cartesian_command_in_topic", "~/delta_twist_cmds")),
+            "pose_command_in_topic": str(self._get("pose_command_in_topic", "~/pose_target_cmds")),
+            "command_out_topic": str(self._get("command_out_topic", "/panda_arm_controller/joint_trajectory")),
+            "command_out_type": str(self._get("command_out_type", OUT_TYPES[0])),
+            "status_topic": str(self._get("status_topic", "~/status")),
+            "incoming_command_timeout": float(self._get("incoming_command_timeout", 0.1)),
+            "max_expected_latency": float(self._get("max_expected_latency", 0.1)),
+            "publish_joint_positions": bool(self._get("publish_joint_positions", True)),
+            "publish_joint_velocities": bool(self._get("publish_joint_velocities", True)),
+            "publish_joint_accelerations": bool(self._get("publish_joint_accelerations", False)),
+        }
+        problems = []  # servo_parameters.yaml's validations, as generate_parameter_library enforces them
+        if not p["move_group_name"]:
+            problems.append("moveit_servo.move_group_name is not set")
+        if s.command_in_type not in ("unitless", "speed_units"):
+            problems.append(f"moveit_servo.command_in_type '{s.command_in_type}' is not unitless or speed_units")
+        if p["command_out_type"] not in OUT_TYPES:
+            problems.append(f"moveit_servo.command_out_type '{p['command_out_type']}' is not one of {OUT_TYPES}")
+        if not (s.publish_period > 0 and math.isfinite(s.publish_period)):
+            problems.append(f"moveit_servo.publish_period must be > 0, got {s.publish_period}")
+        if s.hard_stop_singularity_threshold <= s.lower_singularity_threshold:
+            problems.append("moveit_servo.hard_stop_singularity_threshold must be above lower_singularity_threshold")
+        if problems:
+            raise ValueError("; ".join(problems))
+        return s, p
+
+    def _robot(self) -> ServoKinematics:
+        urdf = self.get_parameter("robot_description").value if self.has_parameter("robot_description") else ""
+        srdf = (
+            self.get_parameter("robot_description_semantic").value
+            if self.has_parameter("robot_description_semantic")
+            else ""
+        )
+        if not urdf or not srdf:
+            raise ValueError("servo_node needs the robot_description and robot_description_semantic parameters")
+        scene = RobotScene(str(urdf), str(srdf), resolve_mesh=lambda _uri: None)
+        return ServoKinematics(scene, self.p["move_group_name"])
+
+    def _say_differences(self) -> None:
+        log = self.get_logger()
+        if bool(self._get("check_collisions", True)):
+            log.warning("moveit_servo.check_collisions: gazelle's servo_node does not check collisions")
+        if bool(self._get("use_smoothing", True)):
+            log.warning(
+                f"moveit_servo.use_smoothing: the smoothing plugin "
+                f"{self._get('smoothing_filter_plugin_name', 'online_signal_smoothing::ButterworthFilterPlugin')} "
+                "is MoveIt's and is not loaded"
+            )
+        if str(self._get("active_subgroup", "")):
+            log.warning("moveit_servo.active_subgroup is not supported: the whole move group is servoed")
+
+    # ------------------------------------------------------------------ inputs
+    def _on_joints(self, msg: JointState) -> None:
+        with self._lock:
+            for name, value in zip(msg.name, msg.position):
+                self._joints[name] = float(value)
+
+    def _on_command(self, kind: int, msg: Any) -> None:
+        with self._lock:
+            self._latest[kind] = msg
+            self._new[kind] = True
+
+    def _switch_command_type(self, req: ServoCommandType.Request, res: ServoCommandType.Response) -> Any:
+        if core.JOINT_JOG <= req.command_type <= core.POSE:
+            self.command_type = int(req.command_type)
+        else:
+            self.get_logger().warning(f"Unknown command type {req.command_type} requested")
+        res.success = req.command_type == self.command_type
+        return res
+
+    def _pause_servo(self, req: SetBool.Request, res: SetBool.Response) -> Any:
+        if self.paused == req.data:
+            res.success, res.message = True, "Requested pause state is already active."
+            self.get_logger().info(res.message)
+            return res
+        with self._lock:
+            self.paused = bool(req.data)
+            if not self.paused:
+                self._window.clear()
+                self._last_commanded = None
+        res.success = True
+        res.message = "Servoing disabled" if self.paused else "Servoing enabled"
+        return res
+
+    # ------------------------------------------------------------------ the loop
+    def _current(self) -> np.ndarray | None:
+        names = self.kinematics.joint_names
+        if not all(n in self._joints for n in names):
+            return None
+        return np.array([self._joints[n] for n in names])
+
+    def _cycle(self) -> None:
+        with self._lock:
+            measured = self._current()
+            if measured is None:
+                if not self._waiting_said:
+                    self.get_logger().info("Waiting to receive robot state update.")
+                    self._waiting_said = True
+                return
+            if self.paused:
+                return
+            now = self.get_clock().now().nanoseconds
+            use_trajectory = self.p["command_out_type"] == OUT_TYPES[0]
+            if use_trajectory and self._window and self._window[-1].stamp_ns > now:
+                current = _State(self._window[-1].positions.copy(), self._window[-1].velocities.copy())
+            else:
+                self._window.clear()
+                current = _State(measured, np.zeros(len(measured)))
+            # the time since the last cycle, when the clock moved further than a period (sim time stepped in
+            # chunks: the timer then fires once per chunk), so a command means the same motion per sim second
+            period = self.settings.publish_period
+            if self._last_cycle_ns is not None:
+                elapsed = (now - self._last_cycle_ns) / 1e9
+                period = min(max(period, elapsed), MAX_CYCLE_PERIODS * period)
+            self._last_cycle_ns = now
+            self.core.period = period
+            step = self._next(current, now)
+            if step is not None and step.status not in (core.INVALID, 5):  # 5: HALT_FOR_COLLISION
+                state = _State(step.positions, step.velocities)
+                if use_trajectory:
+                    self._slide(state, now)
+                    msg = self._trajectory()
+                    if msg is not None:
+                        self._out.publish(msg)
+                else:
+                    self._out.publish(self._multi_array(state))
+                self._last_commanded = state
+            else:
+                state = _State(measured, np.zeros(len(measured)))
+                self._last_commanded = state
+                self._slide(state, now)
+            code = step.status if step is not None else core.NO_WARNING
+            self._status_pub.publish(ServoStatus(code=code, message=core.STATUS_MESSAGES[code]))
+
+    def _stale(self, msg: Any, now_ns: int) -> bool:
+        stamp = Time.from_msg(msg.header.stamp).nanoseconds
+        return now_ns - stamp >= self.p["incoming_command_timeout"] * 1e9
+
+    def _next(self, current: _State, now_ns: int) -> core.ServoStep | None:
+        """servo_node.cpp's dispatch: the expected type's new command, else a warning for another type."""
+        kind = self.command_type
+        if not self._new[kind]:
+            if any(self._new.values()):
+                for k in self._new:
+                    self._new[k] = False
+                self.get_logger().warning("Command type has not been set, cannot accept input")
+            return None
+        for k in self._new:  # the other types that arrived meanwhile are rejected
+            if k != kind:
+                self._new[k] = False
+        msg = self._latest[kind]
+        if self._stale(msg, now_ns):
+            return self._halt()
+        q = current.positions
+        if kind == core.JOINT_JOG:
+            if list(msg.displacements):
+                self.get_logger().warning("Joint jog command displacements field is not yet supported, ignoring.")
+            status, delta, warning = self.core.joint_jog(list(msg.joint_names), list(msg.velocities))
+        elif kind == core.TWIST:
+            t = msg.twist
+            twist = [t.linear.x, t.linear.y, t.linear.z, t.angular.x, t.angular.y, t.angular.z]
+            moved = self.core.twist_in_planning_frame(q, msg.header.frame_id, twist, self._joints)
+            if moved is None:
+                status, delta, warning = (
+                    core.INVALID,
+                    np.zeros(len(q)),
+                    "Could not transform twist command to planning frame.",
+                )
+            else:
+                status, delta, warning = self.core.twist(q, moved, self._joints)
+        else:
+            status, delta, warning = self._pose_delta(q, msg)
+        step = self.core.next_state(q, status, delta, kind, warning)
+        if step.warning:
+            self.get_logger().warning(step.warning)
+        if step.status == core.INVALID:
+            self._new[kind] = False  # stop trying this message
+        return step
+
+    def _pose_delta(self, q: np.ndarray, msg: PoseStamped) -> tuple[int, np.ndarray, str]:
+        frame = self.kinematics.planning_frame
+        if msg.header.frame_id != frame:
+            return core.INVALID, np.zeros(len(q)), f"Command frame is: {msg.header.frame_id} expected: {frame}"
+        p, o = msg.pose.position, msg.pose.orientation
+        values = [p.x, p.y, p.z, o.x, o.y, o.z, o.w]
+        if not all(math.isfinite(v) for v in values) or abs(math.sqrt(o.x**2 + o.y**2 + o.z**2 + o.w**2) - 1) > 1e-3:
+            return core.INVALID, np.zeros(len(q)), "Invalid pose command."
+        target = np.eye(4)
+        target[:3, :3] = _rotation(o.x, o.y, o.z, o.w)
+        target[:3, 3] = [p.x, p.y, p.z]
+        return self.core.pose(q, target, self._joints)
+
+    def _halt(self) -> core.ServoStep | None:
+        """servo.cpp smoothHalt: the last commanded positions with no velocity, until the robot has stopped."""
+        last = self._last_commanded
+        if last is None or bool(np.all(np.abs(last.velocities) < STOPPED_VELOCITY_EPS)):
+            for k in self._new:
+                self._new[k] = False
+            return None
+        return core.ServoStep(core.NO_WARNING, last.positions.copy(), np.zeros(len(last.positions)))
+
+    # ------------------------------------------------------------------ outputs
+    def _slide(self, state: _State, now_ns: int) -> None:
+        """common.cpp updateSlidingWindow."""
+        latency = int(self.p["max_expected_latency"] * 1e9)
+        state.stamp_ns = now_ns + latency
+        w = self._window
+        while w and w[0].stamp_ns < now_ns - latency:
+            w.popleft()
+        while w and w[-1].stamp_ns == state.stamp_ns:
+            w.pop()
+        if len(w) >= 2:
+            last, before = w[-1], w[-2]
+            direction_1 = np.sign(before.positions - last.positions)
+            direction_2 = np.sign(state.positions - last.positions)
+            changed = np.round(direction_1 - direction_2) == 0.0
+            dt1 = (state.stamp_ns - last.stamp_ns) / 1e9
+            dt2 = (last.stamp_ns - before.stamp_ns) / 1e9
+            for i in range(len(state.positions)):
+                if changed[i] or dt1 <= 0 or dt2 <= 0:
+                    last.velocities[i] = 0.0
+                else:
+                    v1 = (state.positions[i] - last.positions[i]) / dt1
+                    v2 = (last.positions[i] - before.positions[i]) / dt2
+                    last.velocities[i] = v1 if abs(v1) < abs(v2) else v2
+                state.velocities[i] = last.velocities[i]
+        w.append(state)
+
+    def _trajectory(self) -> JointTrajectory | None:
+        """common.cpp composeTrajectoryMessage: every state of the window but the newest."""
+        w = self._window
+        if len(w) < MIN_POINTS_FOR_TRAJ_MSG:
+            return None
+        msg = JointTrajectory(joint_names=list(self.kinematics.joint_names))
+        start = w[0].stamp_ns
+        msg.header.stamp = Time(nanoseconds=start).to_msg()
+        points: list[JointTrajectoryPoint] = []
+        for state in list(w)[:-1]:
+            point = JointTrajectoryPoint()
+            if self.p["publish_joint_positions"]:
+                point.positions = [float(v) for v in state.positions]
+            if self.p["publish_joint_velocities"]:
+                point.velocities = [float(v) for v in state.velocities]
+            if self.p["publish_joint_accelerations"]:
+                point.accelerations = [0.0] * len(state.positions)
+            point.time_from_start = Duration(nanoseconds=state.stamp_ns - start).to_msg()
+            points.append(point)
+        msg.points = points
+        return msg
+
+    def _multi_array(self, state: _State) -> Float64MultiArray:
+        """common.cpp composeMultiArrayMessage: positions, else velocities."""
+        if self.p["publish_joint_positions"]:
+            return Float64MultiArray(data=[float(v) for v in state.positions])
+        if self.p["publish_joint_velocities"]:
+            return Float64MultiArray(data=[float(v) for v in state.velocities])
+        return Float64MultiArray(data=[0.0] * len(state.positions))
+
+
+def _rotation(x: float, y: float, z: float, w: float) -> np.ndarray:
+    return np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+            [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+            [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
+        ]
+    )
+
+
+def servo_main(argv: list[str]) -> int:
+    """``servo_node``: MoveIt Servo's node, with ROS arguments (``--ros-args -p ... --params-file ...``);
+    ``--urdf``/``--srdf`` name the robot's files when no launch file passes them as parameters."""
+    import argparse
+
+    from rclpy.executors import SingleThreadedExecutor
+    from rclpy.utilities import try_shutdown
+
+    from ..description import read_description_file
+    from ._signals import spin_until_shutdown
+
+    parser = argparse.ArgumentParser(prog="servo_node", description="MoveIt Servo's servo_node (gazelle).")
+    parser.add_argument("--urdf", help="the robot's URDF or xacro file (else the robot_description parameter)")
+    parser.add_argument("--srdf", help="the robot's SRDF file (else robot_description_semantic)")
+    ros_args = argv[argv.index("--ros-args") :] if "--ros-args" in argv else []
+    args = parser.parse_args(argv[: len(argv) - len(ros_args)] if ros_args else argv)
+    overrides = []
+    try:
+        for flag, name in ((args.urdf, "robot_description"), (args.srdf, "robot_description_semantic")):
+            if flag:
+                overrides.append(Parameter(name, value=read_description_file(flag)))
+    except (OSError, ValueError) as err:
+        print(f"servo_node: {err}", file=sys.stderr)
+        return 2
+    rclpy.init(args=["servo_node", *ros_args])
+    try:
+        node = ServoNode(overrides)
+    except (ValueError, PlanningError) as err:
+        print(
+            f"[ERROR] [servo_node]: {getattr(err, 'message', err)}; Got invalid parameters, exiting.", file=sys.stderr
+        )
+        try_shutdown()
+        return 1
+    executor = SingleThreadedExecutor()
+    executor.add_node(node)
+    try:
+        spin_until_shutdown(executor, node)
+    finally:
+        executor.shutdown()
+        node.destroy_node()
+        try_shutdown()
+    return 0
