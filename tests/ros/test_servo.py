@@ -190,3 +190,18 @@ def test_a_twist_moves_the_flange_along_it_a_jog_turns_a_joint_and_old_or_paused
     output = node.output
     assert "does not check collisions" in output and "AccelerationLimitedPlugin is MoveIt's and is not loaded" in output
     assert "Could not transform twist command to planning frame." in output
+
+
+def test_bad_parameters_are_one_line_and_status_1(panda_resources) -> None:
+    import subprocess
+
+    robot = ["--urdf", str(CONFIG / "panda.urdf.xacro"), "--srdf", str(CONFIG / "panda.srdf")]
+    for extra, said in (
+        ([], "moveit_servo.move_group_name is not set"),
+        (["--ros-args", "-p", "moveit_servo.move_group_name:=legs"], "no planning group 'legs'"),
+    ):
+        out = subprocess.run(
+            [ROS2, "run", "moveit_servo", "servo_node", *robot, *extra], capture_output=True, text=True, timeout=120
+        )
+        assert out.returncode == 1 and said in out.stderr and "Traceback" not in out.stderr, out.stderr
+        assert out.stderr.strip().count("\n") == 0, out.stderr
