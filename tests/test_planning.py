@@ -829,3 +829,24 @@ def test_servo_turns_commands_into_joint_steps_as_moveit_servo_does(planner):
     stretched = np.array([0.0, 0.0, 0.0, -0.07, 0.0, 0.0, 0.0])  # the arm straight up: elbow almost straight
     status, delta, _ = core.twist(stretched, np.array([0.0, 0.0, 0.05, 0.0, 0.0, 0.0]))
     assert status == sv.HALT_FOR_SINGULARITY and not delta.any()
+
+
+def test_servo_approaches_a_pose_target_at_the_capped_speeds(planner):
+    """command.cpp jointDeltaFromPose: the error to the target, capped at scale.linear and scale.rotational
+    per second; a target within reach of one cycle is reached in it."""
+    from gazelle.planning import ServoCore, ServoKinematics, ServoSettings
+    from gazelle.planning import servo as sv
+
+    k = ServoKinematics(planner, "panda_arm")
+    core = ServoCore(k, ServoSettings(scale_linear=0.2, scale_rotational=0.8))
+    q = np.array(list(READY.values()))
+    here = k.pose(q, k.ee_frame)
+    far = here.copy()
+    far[0, 3] += 0.10  # 10 cm ahead: 0.2 m/s allows 2 mm in a 10 ms cycle
+    status, delta, _ = core.pose(q, far)
+    step = k.pose(q + delta, k.ee_frame)[:3, 3] - here[:3, 3]
+    assert status == sv.NO_WARNING and step[0] == pytest.approx(0.002, rel=0.02) and abs(step[1]) < 1e-4
+    near = here.copy()
+    near[1, 3] += 0.001  # 1 mm: within one cycle's reach
+    status, delta, _ = core.pose(q, near)
+    assert np.linalg.norm(k.pose(q + delta, k.ee_frame)[:3, 3] - near[:3, 3]) < 1e-5
