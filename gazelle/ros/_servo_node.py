@@ -417,11 +417,10 @@ def servo_main(argv: list[str]) -> int:
     ``--urdf``/``--srdf`` name the robot's files when no launch file passes them as parameters."""
     import argparse
 
-    from rclpy.executors import SingleThreadedExecutor
     from rclpy.utilities import try_shutdown
 
     from ..description import read_description_file
-    from ._signals import spin_until_shutdown
+    from ._rsp_node import spin_until_interrupted
 
     parser = argparse.ArgumentParser(prog="servo_node", description="MoveIt Servo's servo_node (gazelle).")
     parser.add_argument("--urdf", help="the robot's URDF or xacro file (else the robot_description parameter)")
@@ -445,12 +444,5 @@ def servo_main(argv: list[str]) -> int:
         )
         try_shutdown()
         return 1
-    executor = SingleThreadedExecutor()
-    executor.add_node(node)
-    try:
-        spin_until_shutdown(executor, node)
-    finally:
-        executor.shutdown()
-        node.destroy_node()
-        try_shutdown()
+    spin_until_interrupted(node)  # then the node is destroyed and rclpy shut down
     return 0
