@@ -120,6 +120,7 @@ def test_bag_qos_overrides_are_read_as_ros2bag_reads_them(tmp_path) -> None:
         "/a: {depth: 1, speed: 3}": "Unexpected key `speed` for QoS profile.",
         "/a: {depth: -1}": "`depth` may not be a negative value.",
         "/a: {depth: 1, deadline: {sec: 1}}": "must include both seconds (sec) and nanoseconds (nsec)",
+        "/a: {depth: 1, lifespan: {sec: one, nsec: 0}}": "sec and nsec must be whole numbers, got 'one' and 0",
         "/a: {reliability: reliable}": "History and/or depth settings are required",
         "/a: {depth: 1, durability: sometimes}": "`sometimes` is not a durability policy (one of",
         "- /a": "expected a mapping of topic names to QoS profiles",

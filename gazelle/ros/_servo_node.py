@@ -72,9 +72,10 @@ class _State:
 class ServoNode(Node):
     """servo_node (see the module docstring)."""
 
-    def __init__(self, parameter_overrides: list[Parameter] | None = None) -> None:
+    def __init__(self, parameter_overrides: list[Parameter] | None = None, context: Any = None) -> None:
         super().__init__(
             "servo_node",
+            context=context,
             parameter_overrides=parameter_overrides or [],
             automatically_declare_parameters_from_overrides=True,
         )
@@ -245,6 +246,10 @@ class ServoNode(Node):
             if self.paused:
                 return
             now = self.get_clock().now().nanoseconds
+            if self._last_cycle_ns is not None and now < self._last_cycle_ns:
+                # the clock went back (a simulation reset): the window's states belong to the old time line
+                self._window.clear()
+                self._last_commanded = self._last_cycle_ns = None
             use_trajectory = self.p["command_out_type"] == OUT_TYPES[0]
             if use_trajectory and self._window and self._window[-1].stamp_ns > now:
                 current = _State(self._window[-1].positions.copy(), self._window[-1].velocities.copy())

@@ -207,3 +207,59 @@ def test_bad_parameters_are_one_line_and_status_1(panda_resources) -> None:
         )
         assert out.returncode == 1 and said in out.stderr and "Traceback" not in out.stderr, out.stderr
         assert out.stderr.strip().count("\n") == 0, out.stderr
+
+
+def test_a_clock_that_goes_back_clears_the_window_and_starts_from_the_measured_state(panda_resources) -> None:
+    """A simulation reset sends sim time back: the sliding window's states, stamped on the old time line,
+    would otherwise stand for the robot's state for as long as that line was ahead (in-process: the node's
+    clock set by hand, its output caught)."""
+    import rclpy
+    from geometry_msgs.msg import TwistStamped
+    from rclpy.parameter import Parameter
+    from rclpy.time import Time
+    from sensor_msgs.msg import JointState
+
+    from gazelle.description import read_description_file
+    from gazelle.ros._servo_node import ServoNode
+
+    context = rclpy.Context()
+    rclpy.init(context=context, domain_id=0)
+    try:
+        overrides = [
+            Parameter("robot_description", value=read_description_file(str(CONFIG / "panda.urdf.xacro"))),
+            Parameter("robot_description_semantic", value=(CONFIG / "panda.srdf").read_text()),
+            Parameter("use_sim_time", value=True),
+            Parameter("moveit_servo.move_group_name", value="panda_arm"),
+            Parameter("moveit_servo.command_in_type", value="speed_units"),
+        ]
+        node = ServoNode(overrides, context=context)
+        sent = []
+        node._out.publish = sent.append  # the trajectories, caught
+        ready = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785]
+        node._on_joints(JointState(name=[f"panda_joint{i}" for i in range(1, 8)], position=ready))
+        node.command_type = 1
+        clock = node.get_clock()
+
+        def cycle_at(seconds: float) -> None:
+            clock.set_ros_time_override(Time(seconds=seconds, clock_type=clock.clock_type))
+            twist = TwistStamped()
+            twist.header.frame_id = "panda_link0"
+            twist.header.stamp = clock.now().to_msg()
+            twist.twist.linear.z = 0.05
+            node._on_command(1, twist)
+            node._cycle()
+
+        def commanded() -> float:  # how far the newest commanded state is from the measured one (rad)
+            assert node._last_commanded is not None
+            return float(abs(node._last_commanded.positions - ready).max())
+
+        for k in range(20):
+            cycle_at(100.0 + 0.01 * k)
+        assert sent and commanded() > 0.02  # 20 cycles of commands integrated on the window's states
+        for k in range(3):
+            cycle_at(0.01 * k)  # reset: the clock is back at 0
+        # integrated again from the measured (unchanged) state: three cycles' worth, not 23
+        assert commanded() < 0.008, commanded()
+        node.destroy_node()
+    finally:
+        rclpy.shutdown(context=context)

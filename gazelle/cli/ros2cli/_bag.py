@@ -135,6 +135,8 @@ def _duration(value: Any, duration: Any) -> Any:
         return duration()
     if not isinstance(value, dict) or "sec" not in value or "nsec" not in value:
         raise ValueError("Time overrides must include both seconds (sec) and nanoseconds (nsec).")
+    if not all(isinstance(value[k], int) and not isinstance(value[k], bool) for k in ("sec", "nsec")):
+        raise ValueError(f"sec and nsec must be whole numbers, got {value['sec']!r} and {value['nsec']!r}")
     d = duration(seconds=value["sec"], nanoseconds=value["nsec"])
     if d < duration(seconds=0):
         raise ValueError("Time duration may not be a negative value.")
