@@ -49,6 +49,7 @@ from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
 from ..planning import PlanningError, RobotScene, ServoCore, ServoKinematics, ServoSettings
 from ..planning import servo as core
+from ._planning_scene import matrix as pose_matrix
 
 PREFIX = "moveit_servo."
 MIN_POINTS_FOR_TRAJ_MSG = 3
@@ -335,10 +336,7 @@ class ServoNode(Node):
         values = [p.x, p.y, p.z, o.x, o.y, o.z, o.w]
         if not all(math.isfinite(v) for v in values) or abs(math.sqrt(o.x**2 + o.y**2 + o.z**2 + o.w**2) - 1) > 1e-3:
             return core.INVALID, np.zeros(len(q)), "Invalid pose command."
-        target = np.eye(4)
-        target[:3, :3] = _rotation(o.x, o.y, o.z, o.w)
-        target[:3, 3] = [p.x, p.y, p.z]
-        return self.core.pose(q, target, self._joints)
+        return self.core.pose(q, pose_matrix(msg.pose), self._joints)
 
     def _halt(self) -> core.ServoStep | None:
         """servo.cpp smoothHalt: the last commanded positions with no velocity, until the robot has stopped."""
@@ -405,16 +403,6 @@ class ServoNode(Node):
         if self.p["publish_joint_velocities"]:
             return Float64MultiArray(data=[float(v) for v in state.velocities])
         return Float64MultiArray(data=[0.0] * len(state.positions))
-
-
-def _rotation(x: float, y: float, z: float, w: float) -> np.ndarray:
-    return np.array(
-        [
-            [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-            [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-            [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
-        ]
-    )
 
 
 def servo_main(argv: list[str]) -> int:
