@@ -818,6 +818,8 @@ def test_servo_turns_commands_into_joint_steps_as_moveit_servo_does(planner):
     assert core.twist_in_planning_frame(q, "nowhere", [0.0] * 6) is None
 
     assert core.joint_jog(["panda_finger_joint1"], [0.1])[0] == sv.INVALID
+    assert core.joint_jog(["panda_joint1"], [float("nan")])[0] == sv.INVALID  # a value off the wire
+    assert core.twist(q, np.array([float("inf"), 0.0, 0.0, 0.0, 0.0, 0.0]))[0] == sv.INVALID
     assert "Received 2 joints with 1 commands" in core.joint_jog(["panda_joint1", "panda_joint2"], [0.1])[2]
     near = q.copy()
     near[0] = k.upper[0] - 0.05  # within the 0.1 margin of joint 1's upper limit
