@@ -23,7 +23,7 @@ def main() -> int:
     from _domain import private_ros_domain
     from nav_msgs.msg import Odometry
 
-    from tests.ros.test_blog_workspace import VENV_ACTIVATE, write_blog_workspace
+    from tests.integration.test_blog_workspace import VENV_ACTIVATE, write_blog_workspace
 
     private_ros_domain()
     os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"

@@ -6,7 +6,7 @@ Starts, in a private ROS domain, what a user starts: ``gazelle sim``, the table,
 (examples/chessbot), the seed's board and pieces, the arms' controllers (dual_arm_panda_moveit_config's
 ros2_controllers.yaml) and the hands' (examples/chessbot/hand_controllers.yaml), and ``gazelle
 move_group``. With ``--running`` it uses the simulation and move_group already on this ROS domain
-instead (the suite runs it so on tests/ros/test_chessbot.py's robot: ``--running --picks 1``).
+instead (the suite runs it so on tests/integration/test_chessbot.py's robot: ``--running --picks 1``).
 
 Then it runs examples/chessbot/pick_and_place.py ``--picks`` times, moving a piece from row 1 to row 3
 and back, column by column, and prints for each move: the program's wall time, the simulated time it

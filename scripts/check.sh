@@ -15,4 +15,4 @@ if [ ! -e "$stamp" ]; then
 fi
 "$PY/pyright" --warnings
 # The layer rules (one-way imports, public surfaces only) are static too: a private import once reached CI unseen
-"$PY/python" -m pytest -q -p no:cacheprovider tests/test_architecture.py
+"$PY/python" -m pytest -q -p no:cacheprovider tests/project/test_architecture.py

@@ -1,7 +1,7 @@
 """Generate docs/plugins.md from the config dataclasses of every registered system.
 
 Run: ``.venv/bin/python scripts/gen_plugin_docs.py`` (writes the file) or ``--check``
-(exits 1 if the file is stale; tests/test_systems.py runs this).
+(exits 1 if the file is stale; tests/systems/test_systems.py runs this).
 """
 
 from __future__ import annotations

@@ -7,6 +7,8 @@ import os
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
+TEST_DATA = REPO / "tests" / "data"
+"""The suite's own small inputs (URDF, SDF, SRDF, YAML) that no real fixture covers."""
 SEED_XACRO = REPO / "examples" / "simple_robot" / "simple_robot" / "robot.urdf.xacro"
 ARTIFACTS = REPO / "out" / "viewer"
 """Where the viewer tests keep what a person would look at (snapshots, videos) for a failing run."""

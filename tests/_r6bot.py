@@ -6,6 +6,7 @@ from __future__ import annotations
 from typing import Any
 
 from _paths import REAL
+from _sim import new_simulation
 
 R6BOT = REAL / "ros2_control_r6bot"
 URDF = R6BOT / "_xacro_expanded" / "r6bot.urdf"
@@ -47,9 +48,7 @@ def manager_of(entity: Any, *, blocks: bool = True, controllers: tuple[str, ...]
 def arm(*, blocks: bool = True, controllers: tuple[str, ...] = ("jsb", "jtc")) -> tuple[Any, Any]:
     """A world (``rtf`` 0) with one r6bot named "r6bot" and its manager (see :func:`manager_of`)."""
     from gazelle.description import load
-    from gazelle.sim import Simulation
-    from gazelle.worlds import default_world
 
-    sim = Simulation(default_world(), rtf=0)
+    sim = new_simulation()
     entity = sim.spawn(load(URDF).model, name="r6bot")
     return sim, manager_of(entity, blocks=blocks, controllers=controllers)

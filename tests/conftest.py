@@ -1,4 +1,5 @@
-"""Shared fixtures for the non-ROS tests."""
+"""Fixtures and options for the whole suite: ``--phase`` (the serial and parallel runs of ./test.sh),
+``resource_path``, ``make_sim``, and the per-file time summary (the ROS fixtures are in tests/integration/)."""
 
 from __future__ import annotations
 
@@ -8,8 +9,7 @@ from pathlib import Path
 
 import pytest
 from _paths import REAL
-
-"""Real public robot/world descriptions (test inputs, read in place; never copied into the repo)."""
+from _sim import new_simulation
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
@@ -49,6 +49,24 @@ def resource_path(monkeypatch: pytest.MonkeyPatch):
         return value
 
     return set_path
+
+
+@pytest.fixture
+def make_sim():
+    """``make_sim(world=None, **kwargs)``: a Simulation of ``world`` (the embedded default world when None)
+    stepped by the test (``rtf=0`` unless given); see ``tests/_sim.py``. One the test started and left
+    running (it failed before its ``stop()``) is stopped at teardown, so its thread does not outlive it."""
+    made = []
+
+    def make(world=None, **kwargs):
+        sim = new_simulation(world, **kwargs)
+        made.append(sim)
+        return sim
+
+    yield make
+    for sim in made:
+        if sim.running:
+            sim.stop()
 
 
 _FILE_SECONDS: defaultdict[str, float] = defaultdict(float)

@@ -7,7 +7,7 @@ inside its step loop (:func:`gazelle.physics._native.run_servo_groups`: a servo 
 ``mj_step``, per step, in compiled code), so a 1 kHz controller costs Python once per block of steps
 instead of once per step. The cycle is the one :class:`gazelle.systems._actuation.PositionServo`
 computes (same formula, same rounding): a block and the Python cycles it replaces give bit-identical
-states, which ``tests/test_ros2_control_blocks.py`` holds.
+states, which ``tests/systems/test_ros2_control_blocks.py`` holds.
 
 The systems build plans (they know the controllers); this module knows only servos and joints.
 """

@@ -223,7 +223,7 @@ class ArmPlanner(RobotScene):
         # Each pose is solved from the last in at most max_iters iterations (roboplan's default, 100): the
         # same work and the same answer on any machine. The wall-clock budget is only a guard: at 50 ms a
         # loaded machine took it from the solver between two iterations, and the chess robot's lift
-        # answered 0 % beside a CPU hog (tests/test_planning.py stalls the planner's process to show it).
+        # answered 0 % beside a CPU hog (tests/planning/test_planning.py stalls the planner's process to show it).
         opts.max_iters = 100
         opts.max_time = 2.0
         opts.max_restarts = 0  # continuity: each pose from the last one, never a jump to another branch

@@ -8,9 +8,14 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from _harness import (
+    GAZELLE,
+    Proc,
+    RosClient,
+    ros_env,  # noqa: F401 - the fixture, for this folder's tests
+    start,
+)
 from _paths import ARTIFACTS
-from ros._harness import GAZELLE, Proc, RosClient, start
-from ros.conftest import ros_env  # noqa: F401 - the fixture, for this folder's tests
 
 
 @pytest.fixture(scope="module")

@@ -25,9 +25,9 @@ pytest.importorskip("playwright")
 if find_chromium() is None:
     pytest.skip("no system chromium (scripts/setup.sh installs Debian's chromium)", allow_module_level=True)
 
+from _harness import GAZELLE, wait_for
 from _paths import ARTIFACTS, REPO, SEED_XACRO
 from _pixels import blue_mask, plan_mask, project
-from ros._harness import GAZELLE, wait_for
 
 ROBOT = "simple_robot"
 ROBOT_CENTRE = (0.0, 0.0, 0.07)
@@ -324,19 +324,17 @@ CHESS_EYE = (0.25, 0.85, 1.75)
 CHESS_TARGET = (0.25, 1.39, 0.90)
 
 
-def test_chessboard_world_renders_33_entities(page: Any, artifacts: Path) -> None:
+def test_chessboard_world_renders_33_entities(page: Any, artifacts: Path, make_sim) -> None:
     """The board and 32 pieces (the grid of examples/chessboard/spawn_chessboard.py), seen from above."""
     from PIL import Image
 
     from gazelle.description import Pose, load
-    from gazelle.sim import Simulation
     from gazelle.viewer import Viewer
     from gazelle.viewer._browser import wait_rendered
-    from gazelle.worlds import default_world
 
     here = REPO / "examples" / "chessboard"
     bx, by, bz = CHESS_TARGET
-    sim = Simulation(default_world(), rtf=1.0)
+    sim = make_sim(rtf=1.0)
     sim.start()
     sim.spawn(load(here / "chess_board.sdf").model, name="chess_board", pose=Pose((bx, by, bz)))
     piece = load(here / "chess_piece.sdf").model
@@ -403,23 +401,21 @@ LIDAR_EYE = (0.6, -2.6, 3.2)
 LIDAR_TARGET = (1.4, 0.0, 0.0)
 
 
-def test_lidar_overlay_points_appear_where_the_wall_is(page: Any, artifacts: Path) -> None:
+def test_lidar_overlay_points_appear_where_the_wall_is(page: Any, artifacts: Path, make_sim) -> None:
     """examples/sensor_bot's lidar facing a wall 2 m ahead: green overlay points along the wall's face
     in the browser's pixels, and none over the empty floor between robot and wall."""
     from PIL import Image
 
     from gazelle.description import Pose, load, load_string
-    from gazelle.sim import Simulation
     from gazelle.viewer import Viewer
     from gazelle.viewer._browser import wait_rendered
-    from gazelle.worlds import default_world
 
     wall = """<?xml version="1.0"?><sdf version="1.9"><model name="wall"><static>true</static>
       <pose>2.1 0 0.25 0 0 0</pose><link name="l">
       <collision name="c"><geometry><box><size>0.2 2 0.5</size></box></geometry></collision>
       <visual name="v"><geometry><box><size>0.2 2 0.5</size></box></geometry><material><diffuse>0.6 0.6 0.6 1</diffuse></material></visual>
       </link></model></sdf>"""
-    sim = Simulation(default_world(), rtf=1.0)
+    sim = make_sim(rtf=1.0)
     sim.spawn(load_string(wall).model, name="wall")
     sim.spawn(load(REPO / "examples/sensor_bot/sensor_bot.urdf").model, name="bot", pose=Pose((0.0, 0.0, 0.07)))
     sim.start()
@@ -473,7 +469,7 @@ def _tool_at(q1: float, q2: float) -> tuple[float, float, float]:
 
 
 def test_a_plan_published_on_display_planned_path_is_drawn_where_the_tool_will_go(
-    page: Any, ros_client_mod: Any, artifacts: Path
+    page: Any, ros_client_mod: Any, artifacts: Path, make_sim
 ) -> None:
     """A moveit_msgs/DisplayTrajectory published over ROS, as move_group publishes each plan, shows in the
     browser as a blue line through the places the arm's tool will pass, before the arm moves; the arm
@@ -485,15 +481,13 @@ def test_a_plan_published_on_display_planned_path_is_drawn_where_the_tool_will_g
 
     from gazelle.description import load_string
     from gazelle.ros import RosBridge
-    from gazelle.sim import Simulation
     from gazelle.viewer import Viewer
     from gazelle.viewer._browser import wait_rendered
-    from gazelle.worlds import default_world
 
     from .test_viewer import TWO_LINK_ARM
 
     urdf = TWO_LINK_ARM.replace('<origin xyz="0 0 1"/>', '<origin xyz="{} {} {}"/>'.format(*ARM_BASE))
-    sim = Simulation(default_world(), rtf=1.0)
+    sim = make_sim(rtf=1.0)
     sim.spawn(load_string(urdf).model, name="arm")
     sim.start()
     viewer = Viewer(sim, port=0)

@@ -11,9 +11,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _harness import GAZELLE
 from _paths import ARTIFACTS, REPO, SEED_XACRO
 from _pixels import blue_mask
-from ros._harness import GAZELLE
 
 from gazelle.viewer._browser import find_chromium
 from gazelle.viewer._snapshot import video_format
@@ -124,9 +124,8 @@ def test_record_video_writes_an_animated_gif_of_the_robot_driving(tmp_path: Path
 
 
 @needs_browser
-def test_a_recording_stopped_early_is_a_valid_mp4(tmp_path: Path) -> None:
+def test_a_recording_stopped_early_is_a_valid_mp4(tmp_path: Path, make_sim) -> None:
     from gazelle.cli._sim import load_world
-    from gazelle.sim import Simulation
     from gazelle.viewer import Viewer
     from gazelle.viewer._snapshot import record_video
 
@@ -140,7 +139,7 @@ def test_a_recording_stopped_early_is_a_valid_mp4(tmp_path: Path) -> None:
             self.calls += 1
             return self.calls > self.frames
 
-    sim = Simulation(load_world(None, {}), rtf=1.0)
+    sim = make_sim(load_world(None, {}), rtf=1.0)
     sim.start()
     viewer = Viewer(sim, port=0)
     viewer.start()

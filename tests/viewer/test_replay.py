@@ -15,13 +15,13 @@ import numpy as np
 import pytest
 from _paths import BOX, SEED_XACRO
 from _pixels import open_replay, share_near
+from _sim import new_simulation
 
 from gazelle.description import Pose, load, load_string
-from gazelle.sim import ReplayRecorder, Simulation
+from gazelle.sim import ReplayRecorder
 from gazelle.systems import MsgType, Twist
 from gazelle.viewer import replay_html
 from gazelle.viewer._browser import find_chromium
-from gazelle.worlds import default_world
 
 RED = np.array([0xE6, 0x19, 0x4B])
 """The first moving body's colour on the page."""
@@ -30,7 +30,7 @@ RED = np.array([0xE6, 0x19, 0x4B])
 @pytest.fixture(scope="module")
 def run() -> tuple[dict, tuple[float, float], tuple[float, float]]:
     """The recording of a 4 s drive, and the robot's (x, y) at its start and end by ground truth."""
-    sim = Simulation(default_world(), rtf=0)
+    sim = new_simulation()
     sim.spawn(load(SEED_XACRO).model, name="robot", pose=Pose((0.0, 0.0, 0.05)))
     sim.spawn(load_string(BOX).model, name="crate", pose=Pose((0.0, 1.2, 0.1)))
     recorder = ReplayRecorder(sim)
@@ -54,11 +54,11 @@ def test_the_recording_has_each_bodys_shapes_once_and_a_frame_every_thirtieth_of
     assert last[:2] == pytest.approx(end, abs=0.02)  # the last frame is where the simulation ended it
 
 
-def test_a_long_recording_thins_itself_instead_of_growing(monkeypatch) -> None:
+def test_a_long_recording_thins_itself_instead_of_growing(monkeypatch, make_sim) -> None:
     from gazelle.sim import _replay
 
     monkeypatch.setattr(_replay, "MAX_SAMPLES", 300)
-    sim = Simulation(default_world(), rtf=0)
+    sim = make_sim()
     sim.spawn(load_string(BOX).model, name="crate", pose=Pose((0.0, 0.0, 1.0)))
     recorder = ReplayRecorder(sim)
     sim.step(20_000)  # 20 s: 600 frames at 30 Hz
@@ -102,14 +102,14 @@ def test_chromium_opens_the_replay_from_disk_and_scrubbing_moves_the_robot(tmp_p
         assert "nothing yet" not in replay.page.locator("#topics").inner_text()
 
 
-def test_a_60_s_turtlebot3_world_run_makes_a_page_under_20_mb(resource_path) -> None:
+def test_a_60_s_turtlebot3_world_run_makes_a_page_under_20_mb(resource_path, make_sim) -> None:
     """The issue's size bound: TurtleBot3 in its world for 60 s of sim time, /odom and /scan at the
     cursor (measured 1.4 MB: 1,801 frames)."""
     from _paths import REAL
 
     resource_path("turtlebot3/turtlebot3_gazebo/models", "turtlebot3")
     tb3 = REAL / "turtlebot3" / "turtlebot3_gazebo"
-    sim = Simulation(load(tb3 / "worlds" / "turtlebot3_world.world").world, rtf=0)
+    sim = make_sim(load(tb3 / "worlds" / "turtlebot3_world.world").world)
     sim.spawn(
         load(tb3 / "models" / "turtlebot3_burger" / "model.sdf").model, name="burger", pose=Pose((-2.0, -0.5, 0.01))
     )

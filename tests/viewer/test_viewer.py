@@ -83,12 +83,10 @@ def test_unresolved_or_broken_mesh_is_skipped(tmp_path) -> None:
     assert to_trimesh(Mesh(uri=str(bad), path=str(bad))) is None
 
 
-def test_scene_follows_spawn_and_delete_and_drive_reaches_the_diff_drive() -> None:
-    from gazelle.sim import Simulation
+def test_scene_follows_spawn_and_delete_and_drive_reaches_the_diff_drive(make_sim) -> None:
     from gazelle.viewer import Viewer
-    from gazelle.worlds import default_world
 
-    sim = Simulation(default_world(), rtf=0.0)
+    sim = make_sim()
     sim.start()
     viewer = Viewer(sim, port=0)  # no thread: frames are pulled by hand
     try:
@@ -135,14 +133,12 @@ def _click(handle) -> None:
         entry.callback(event)
 
 
-def test_clicking_an_entity_selects_it_but_not_the_ground_plane_or_collision_overlays() -> None:
-    from gazelle.sim import Simulation
+def test_clicking_an_entity_selects_it_but_not_the_ground_plane_or_collision_overlays(make_sim) -> None:
     from gazelle.viewer import Viewer
     from gazelle.viewer._overlays import NO_SELECTION
-    from gazelle.worlds import default_world
 
     here = REPO / "examples" / "chessboard"
-    sim = Simulation(default_world(), rtf=0.0)
+    sim = make_sim()
     sim.start()
     viewer = Viewer(sim, port=0)  # no thread: frames are pulled by hand
     try:
@@ -204,13 +200,11 @@ def test_find_models_lists_model_folders_and_description_files(tmp_path) -> None
     assert labels == {"my_box/model.sdf", "robots/r.urdf"}
 
 
-def test_trail_contacts_and_spawn_from_the_resource_paths(monkeypatch) -> None:
-    from gazelle.sim import Simulation
+def test_trail_contacts_and_spawn_from_the_resource_paths(monkeypatch, make_sim) -> None:
     from gazelle.viewer import Viewer
-    from gazelle.worlds import default_world
 
     monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(REPO / "examples"))
-    sim = Simulation(default_world(), rtf=0.0)
+    sim = make_sim()
     sim.start()
     viewer = Viewer(sim, port=0)
     try:
@@ -253,7 +247,7 @@ def test_trail_contacts_and_spawn_from_the_resource_paths(monkeypatch) -> None:
         sim.stop()
 
 
-def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_path) -> None:
+def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_path, make_sim) -> None:
     """A robot whose encoder odometry over-reports distance by 10 % (its plugin's wheels are 10 % too big)."""
     import re
 
@@ -261,10 +255,8 @@ def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_
     from _paths import BOX
 
     from gazelle.description import load_string
-    from gazelle.sim import Simulation
     from gazelle.viewer import Viewer
     from gazelle.viewer._overlays import TRAIL_TRUTH
-    from gazelle.worlds import default_world
 
     urdf = xacro.process_file(str(SEED_XACRO)).toxml()
     urdf, n = re.subn(
@@ -274,7 +266,7 @@ def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_
     )
     assert n == 1
     (tmp_path / "enc.urdf").write_text(urdf)
-    sim = Simulation(default_world(), rtf=0.0)
+    sim = make_sim()
     sim.start()
     viewer = Viewer(sim, port=0)
     try:
@@ -342,17 +334,15 @@ def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_
         sim.stop()
 
 
-def test_lidar_points_land_on_the_wall_and_the_camera_panel_shows_the_camera_image() -> None:
+def test_lidar_points_land_on_the_wall_and_the_camera_panel_shows_the_camera_image(make_sim) -> None:
     from gazelle.description import load_string
-    from gazelle.sim import Simulation
     from gazelle.viewer import Viewer
-    from gazelle.worlds import default_world
 
     wall = """<?xml version="1.0"?><sdf version="1.9"><model name="wall"><static>true</static><pose>2.1 0 0.5 0 0 0</pose>
       <link name="l"><collision name="c"><geometry><box><size>0.2 6 1</size></box></geometry></collision>
       <visual name="v"><geometry><box><size>0.2 6 1</size></box></geometry><material><diffuse>1 0 0 1</diffuse></material></visual>
       </link></model></sdf>"""
-    sim = Simulation(default_world(), rtf=0.0)
+    sim = make_sim()
     sim.spawn(load_string(wall).model, name="wall")
     sim.spawn(load(REPO / "examples/sensor_bot/sensor_bot.urdf").model, name="bot", pose=Pose((0.0, 0.0, 0.07)))
     sim.step(200)
@@ -396,18 +386,16 @@ TWO_LINK_ARM = """<robot name="arm2">
 </robot>"""
 
 
-def test_a_planned_arm_motion_is_drawn_as_its_tools_path_and_goal_and_the_arm_does_not_move() -> None:
+def test_a_planned_arm_motion_is_drawn_as_its_tools_path_and_goal_and_the_arm_does_not_move(make_sim) -> None:
     """What move_group publishes on /display_planned_path (moveit_msgs/DisplayTrajectory) is drawn: the
     path of the tool (the moving chain's last link, down its fixed joints) by forward kinematics of the
     simulated robot, and the goal as axes at the path's end. Drawing it moves nothing."""
     from gazelle.description import load_string
-    from gazelle.sim import Simulation
     from gazelle.systems import DisplayTrajectory, JointTrajectory, MsgType, TrajectoryPoint
     from gazelle.viewer import Viewer
     from gazelle.viewer._overlays import PLAN_TOPIC
-    from gazelle.worlds import default_world
 
-    sim = Simulation(default_world(), rtf=0.0)
+    sim = make_sim()
     sim.start()
     viewer = Viewer(sim, port=0)
     try:

@@ -4,7 +4,7 @@ When a controller manager cycles at every physics step and only controllers that
 are active (joint_trajectory_controller on position, or position + velocity, interfaces; the
 joint_state_broadcaster), :class:`PlannedBlocks` plans up to :data:`BLOCK_CYCLES` cycles at once and the
 world's steps run them in compiled code (``gazelle.physics.ServoPlan``). Each planned cycle commands what
-the manager's Python cycle would (``tests/test_ros2_control_blocks.py`` holds them bit-identical); the
+the manager's Python cycle would (``tests/systems/test_ros2_control_blocks.py`` holds them bit-identical); the
 joint states recorded at each cycle are published as blocks of messages; the controllers and the hardware
 take back their state when the block ends (:meth:`PlannedBlocks.settle`). docs/architecture.md follows one
 goal through it.
@@ -91,7 +91,7 @@ class PlannedBlocks:
         compiled code, instead of a Python cycle per step; False when the cycle at ``t`` must run in Python.
 
         Each cycle of a block commands what a Python cycle would (the trajectory controllers' samples, the
-        hardware's servo law: bit-identical, see ``tests/test_ros2_control_blocks.py``); the cycles' states are
+        hardware's servo law: bit-identical, see ``tests/systems/test_ros2_control_blocks.py``); the cycles' states are
         recorded, the broadcasters publish one message per cycle, stamped with its time, at each boundary of
         the runtime's blocks (as one :class:`~gazelle.systems.PayloadBlock`: the messages are built where they
         are published, off the simulation thread), and when the block ends (:meth:`settle`) the trajectory

@@ -1,0 +1,214 @@
+"""Helpers of the integration tests (real `gazelle sim` processes, real DDS): starting and watching
+processes, waiting for conditions with timeouts (never bare sleeps), and a plain rclpy client. The
+fixtures that use them are in tests/integration/conftest.py (and tests/viewer/conftest.py); the session's
+``ros_env`` fixture (a ROS domain of its own, discovery on localhost) is here, for both to import.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import pytest
+import rclpy
+from _paths import REPO, SEED_XACRO  # noqa: F401 - the ros and viewer tests import them from here
+from _ros_domain import reserved_domain_id
+
+from gazelle.testing._sim import collect_lines
+
+SQUARE_NODE = REPO / "examples" / "simple_robot" / "simple_robot" / "square_movement.py"
+GAZELLE = [sys.executable, "-m", "gazelle.cli"]
+
+
+def wait_for(predicate: Callable[[], Any], timeout: float, what: str, interval: float = 0.02) -> Any:
+    """Poll ``predicate`` until it returns something truthy; fail the test after ``timeout`` s."""
+    deadline = time.monotonic() + timeout
+    while True:
+        value = predicate()
+        if value:
+            return value
+        if time.monotonic() > deadline:
+            pytest.fail(f"timed out after {timeout:g} s waiting for {what}")
+        time.sleep(interval)
+
+
+@dataclass
+class Proc:
+    """A child process whose output is collected line by line."""
+
+    popen: subprocess.Popen
+    name: str
+    lines: list[str] = field(default_factory=list)
+    _cond: threading.Condition = field(default_factory=threading.Condition)
+
+    def start_reader(self) -> None:
+        threading.Thread(target=collect_lines, args=(self.popen, self.lines, self._cond), daemon=True).start()
+
+    def wait_line(self, needle: str, timeout: float) -> str:
+        deadline = time.monotonic() + timeout
+        with self._cond:
+            while True:
+                for line in self.lines:
+                    if needle in line:
+                        return line
+                if self.popen.poll() is not None:
+                    self._cond.wait(0.2)
+                    if not any(needle in ln for ln in self.lines):
+                        pytest.fail(
+                            f"{self.name} exited ({self.popen.returncode}) before printing {needle!r}:\n" + self.output
+                        )
+                remaining = deadline - time.monotonic()
+                if remaining <= 0:
+                    pytest.fail(f"{self.name} did not print {needle!r} within {timeout:g} s:\n" + self.output)
+                self._cond.wait(remaining)
+
+    @property
+    def output(self) -> str:
+        with self._cond:
+            return "\n".join(self.lines[-80:])
+
+    def wait(self, timeout: float) -> int:
+        try:
+            return self.popen.wait(timeout)
+        except subprocess.TimeoutExpired:
+            self.popen.kill()
+            pytest.fail(f"{self.name} did not exit within {timeout:g} s:\n" + self.output)
+
+    def interrupt(self, timeout: float = 15.0) -> int:
+        if self.popen.poll() is None:
+            self.popen.send_signal(signal.SIGINT)
+        return self.wait(timeout)
+
+
+def start(cmd: list[str], name: str, env: dict[str, str] | None = None, *, stdin: bool = False) -> Proc:
+    p = subprocess.Popen(
+        cmd,
+        stdin=subprocess.PIPE if stdin else subprocess.DEVNULL,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        cwd=REPO,
+        env=env or os.environ.copy(),
+    )
+    proc = Proc(p, name)
+    proc.start_reader()
+    _STARTED.append(proc)
+    return proc
+
+
+_STARTED: list[Proc] = []
+
+
+class RosClient:
+    """A plain rclpy node in the test process for observing and calling the simulation."""
+
+    def __init__(self, name: str = "test_client"):
+        # rclpy's MultiThreadedExecutor is slow enough (Jazzy) that a node taking /clock and /odom
+        # at 100 Hz each plus service replies falls behind and drops most of them; one thread keeps up.
+        from rclpy.executors import SingleThreadedExecutor
+
+        self.context = rclpy.Context()
+        rclpy.init(context=self.context)
+        self.node = rclpy.create_node(name, context=self.context)
+        self.executor = SingleThreadedExecutor(context=self.context)
+        self.executor.add_node(self.node)
+        self._lock = threading.Lock()
+        self._clients: dict[tuple[Any, str], Any] = {}
+        self._thread = threading.Thread(target=self._spin, daemon=True)
+        self._thread.start()
+
+    def _spin(self) -> None:
+        try:
+            self.executor.spin()
+        except Exception:
+            pass
+
+    def client(self, srv_type: Any, name: str, timeout: float = 15.0) -> Any:
+        """A service client, created once per (type, name) and ready to call."""
+        key = (srv_type, name)
+        with self._lock:
+            client = self._clients.get(key)
+            if client is None:
+                client = self._clients[key] = self.node.create_client(srv_type, name)
+        if not client.service_is_ready() and not client.wait_for_service(timeout_sec=timeout):
+            pytest.fail(f"service {name} not available within {timeout} s")
+        return client
+
+    def call(self, srv_type: Any, name: str, request: Any, timeout: float = 15.0) -> Any:
+        future = self.client(srv_type, name, timeout).call_async(request)
+        done = threading.Event()
+        future.add_done_callback(lambda _f: done.set())
+        if not done.wait(timeout):
+            pytest.fail(f"service {name} did not answer within {timeout} s")
+        return future.result()
+
+    def send_goal(self, client: Any, goal: Any, timeout: float = 60.0, said: Callable[[], str] = lambda: "") -> Any:
+        """Send an action goal and wait for its result: (accepted, the GetResult response or None).
+
+        Sent from the executor's thread: from another one, a reply that came back before rclpy filed the
+        request was dropped and the goal never answered (ros2/rclpy#1123). ``said``: what to show when no
+        result comes (a server's output)."""
+        done = threading.Event()
+        box: dict[str, Any] = {}
+
+        def on_goal(f: Any) -> None:
+            handle = f.result()
+            box["accepted"] = handle.accepted
+            if not handle.accepted:
+                done.set()
+                return
+            handle.get_result_async().add_done_callback(lambda r: (box.__setitem__("result", r.result()), done.set()))
+
+        self.executor.create_task(lambda: client.send_goal_async(goal).add_done_callback(on_goal))
+        assert done.wait(timeout), f"no result within {timeout} s; {said()}"
+        return box["accepted"], box.get("result")
+
+    def entity_state(self, name: str, reference_frame: str = "") -> Any:
+        from gazebo_msgs.srv import GetEntityState
+
+        res = self.call(
+            GetEntityState, "/get_entity_state", GetEntityState.Request(name=name, reference_frame=reference_frame)
+        )
+        assert res.success, f"get_entity_state({name!r}) failed"
+        return res
+
+    def close(self) -> None:
+        self.executor.shutdown(timeout_sec=2.0)
+        self._thread.join(5.0)  # a thread left inside rclpy at interpreter exit aborts the process
+        self.node.destroy_node()
+        if self.context.ok():
+            rclpy.shutdown(context=self.context)
+
+
+def yaw_of(q: Any) -> float:
+    return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
+
+
+def xacro_to_urdf(path: Path) -> str:
+    import xacro
+
+    return xacro.process_file(str(path)).toxml()
+
+
+@pytest.fixture(scope="session", autouse=True)
+def ros_env() -> Iterator[dict[str, str]]:
+    """A unique ROS_DOMAIN_ID for this test run, discovery limited to localhost."""
+    saved = {k: os.environ.get(k) for k in ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE", "RMW_IMPLEMENTATION")}
+    os.environ["ROS_DOMAIN_ID"] = str(reserved_domain_id())
+    os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
+    os.environ["RMW_IMPLEMENTATION"] = "rmw_fastrtps_cpp"
+    yield dict(os.environ)
+    for k, v in saved.items():
+        if v is None:
+            os.environ.pop(k, None)
+        else:
+            os.environ[k] = v

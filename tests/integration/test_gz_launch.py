@@ -1,0 +1,170 @@
+"""Gazebo-style launch files run unchanged with `ros2 launch`: a gz-sim one in the style of TurtleBot3's
+(ros_gz_sim's gz_sim.launch.py, create, ros_gz_bridge's parameter_bridge with the robot's YAML), the ROS 1
+spawn_model command line, and joint_state_publisher."""
+
+from __future__ import annotations
+
+import os
+import signal
+import sys
+import textwrap
+import threading
+from pathlib import Path
+
+import pytest
+from _harness import GAZELLE as GAZELLE_CMD
+from _harness import REPO, SEED_XACRO, start, wait_for, xacro_to_urdf
+from gazebo_msgs.srv import GetModelState
+from sensor_msgs.msg import JointState, LaserScan
+
+from .test_turtlebot3 import TB3
+
+ROS2 = str(Path(sys.prefix) / "bin" / "ros2")
+
+GZ_LAUNCH = """
+import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+TB3 = {tb3!r}
+
+
+def generate_launch_description():
+    x_pose = LaunchConfiguration("x_pose", default="-2.0")
+    y_pose = LaunchConfiguration("y_pose", default="-0.5")
+    gzserver = IncludeLaunchDescription(
+        PythonLaunchDescriptionSource(
+            os.path.join(get_package_share_directory("ros_gz_sim"), "launch", "gz_sim.launch.py")
+        ),
+        launch_arguments={{"gz_args": ["-r -s -v2 ", "empty.sdf"], "on_exit_shutdown": "true"}}.items(),
+    )
+    spawn = Node(
+        package="ros_gz_sim",
+        executable="create",
+        arguments=["-name", "burger", "-file", os.path.join(TB3, "turtlebot3_gazebo/models/turtlebot3_burger/model.sdf"),
+                   "-x", x_pose, "-y", y_pose, "-z", "0.01"],
+        output="screen",
+    )
+    bridge = Node(
+        package="ros_gz_bridge",
+        executable="parameter_bridge",
+        arguments=["--ros-args", "-p",
+                   "config_file:=" + os.path.join(TB3, "turtlebot3_gazebo/params/turtlebot3_burger_bridge.yaml")],
+        output="screen",
+    )
+    return LaunchDescription([
+        DeclareLaunchArgument("x_pose", default_value="-2.0", description="x"),
+        DeclareLaunchArgument("y_pose", default_value="-0.5", description="y"),
+        gzserver, spawn, bridge,
+    ])
+"""
+
+
+@pytest.mark.slow
+def test_a_gz_sim_launch_file_runs_turtlebot3_with_its_bridge_yaml(tmp_path, ros_client, monkeypatch):
+    monkeypatch.setenv("GAZELLE_RESOURCE_PATH", f"{TB3}:{TB3 / 'turtlebot3_gazebo/models'}")
+    launch_file = tmp_path / "tb3_gz.launch.py"
+    launch_file.write_text(textwrap.dedent(GZ_LAUNCH.format(tb3=str(TB3))))
+    scans: list[LaserScan] = []
+    ros_client.node.create_subscription(LaserScan, "/scan", scans.append, 10)
+    proc = start([ROS2, "launch", str(launch_file), "x_pose:=-1.0"], "ros2 launch")
+    try:
+        proc.wait_line("Successfully spawned entity [burger]", 90)
+        wait_for(lambda: scans, 30, "/scan from the burger's lidar")
+        proc.wait_line("scan: gazelle has it on ROS directly; nothing to bridge", 30)
+        assert "[gazebo-1]" in proc.output
+        st = ros_client.entity_state("burger")
+        assert st.state.pose.position.x == pytest.approx(-1.0, abs=0.05)  # the launch argument reached create
+    finally:
+        os.kill(proc.popen.pid, signal.SIGINT)
+        rc = proc.wait(20)
+    assert rc == 0, proc.output
+
+
+def test_ros1_spawn_model_command_line_and_joint_state_publisher(sim_factory, ros_client, tmp_path):
+    sim_factory("--no-viewer")
+    board = REPO / "examples" / "chessboard" / "chess_board.sdf"
+    spawn = start(
+        [ROS2, "run", "gazebo_ros", "spawn_model", "-file", str(board), "-sdf", "-model", "box"], "spawn_model"
+    )
+    assert spawn.wait(60) == 0, spawn.output
+    res = ros_client.call(GetModelState, "/gazebo/get_model_state", GetModelState.Request(model_name="box"))
+    assert res.success, res.status_message
+
+    urdf = xacro_to_urdf(SEED_XACRO)
+    got: list[JointState] = []
+    lock = threading.Lock()
+
+    def keep(m: JointState) -> None:
+        with lock:
+            got.append(m)
+
+    ros_client.node.create_subscription(JointState, "/jsp_test/joint_states", keep, 10)
+    import yaml
+
+    params = tmp_path / "jsp.yaml"  # as a launch file passes robot_description: in a parameters file
+    params.write_text(yaml.safe_dump({"/**": {"ros__parameters": {"robot_description": urdf}}}))
+    jsp = start(
+        [ROS2, "run", "joint_state_publisher", "joint_state_publisher", "--ros-args", "-r", "__ns:=/jsp_test"]
+        + ["--params-file", str(params)],
+        "joint_state_publisher",
+    )
+    try:
+        wait_for(lambda: got, 20, "/jsp_test/joint_states")
+        with lock:
+            msg = got[-1]
+        assert set(msg.name) == {"base_left_wheel_joint", "base_right_wheel_joint"}
+        assert list(msg.position) == [0.0, 0.0]
+    finally:
+        jsp.interrupt()
+
+
+def test_parameter_bridge_relays_a_renamed_topic_in_its_direction(sim_factory, ros_client, tmp_path):
+    """A bridge YAML that renames: gz's `model/diff/odometry` becomes ROS `odom_renamed`, and ROS
+    `cmd_vel_renamed` feeds gz's `cmd_vel`; gazelle publishes the gz names, the bridge relays."""
+    from geometry_msgs.msg import Twist
+    from nav_msgs.msg import Odometry
+
+    sim_factory("--no-viewer")
+    spawn = start([*GAZELLE_CMD, "spawn", "-entity", "bot", "-file", str(SEED_XACRO)], "spawn")
+    assert spawn.wait(60) == 0, spawn.output
+    config = tmp_path / "bridge.yaml"
+    config.write_text(
+        textwrap.dedent(
+            """
+            - ros_topic_name: "odom_renamed"
+              gz_topic_name: "odom"
+              ros_type_name: "nav_msgs/msg/Odometry"
+              gz_type_name: "gz.msgs.Odometry"
+              direction: GZ_TO_ROS
+            - ros_topic_name: "cmd_vel_renamed"
+              gz_topic_name: "cmd_vel"
+              ros_type_name: "geometry_msgs/msg/Twist"
+              gz_type_name: "gz.msgs.Twist"
+              direction: ROS_TO_GZ
+            """
+        )
+    )
+    bridge = start(
+        [ROS2, "run", "ros_gz_bridge", "parameter_bridge", "--ros-args", "-p", f"config_file:={config}"], "bridge"
+    )
+    try:
+        bridge.wait_line("Creating relay [cmd_vel_renamed] -> [cmd_vel]", 20)
+        odom: list[Odometry] = []
+        ros_client.node.create_subscription(Odometry, "/odom_renamed", odom.append, 10)
+        wait_for(lambda: odom, 20, "/odom_renamed relayed from gazelle's /odom")
+        pub = ros_client.node.create_publisher(Twist, "/cmd_vel_renamed", 10)
+        cmd = Twist()
+        cmd.linear.x = 0.3
+
+        def moved() -> bool:
+            pub.publish(cmd)
+            return odom[-1].pose.pose.position.x > 0.1
+
+        wait_for(moved, 30, "the robot to drive on /cmd_vel_renamed", interval=0.1)
+    finally:
+        bridge.interrupt()

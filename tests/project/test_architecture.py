@@ -1,0 +1,269 @@
+"""The layers import one way (docs/architecture.md), checked by walking every import with ``ast``.
+
+description <- physics <- systems <- sim <- ros / viewer <- cli, and description <- planning <- ros. Physics never sees systems, the
+runtime or ROS; systems never touch MuJoCo or the builder; only ``gazelle.ros`` (and the command
+line, which starts it) imports rclpy; and no package reaches into another package's private modules.
+"""
+
+from __future__ import annotations
+
+import ast
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from _paths import REPO
+
+PACKAGE = REPO / "gazelle"
+
+ALLOWED: dict[str, tuple[str, ...]] = {
+    "": (),  # gazelle/__init__.py and gazelle/_lazy.py
+    "description": (),
+    "physics": ("description",),
+    "systems": ("description", "physics"),
+    "sim": ("description", "physics", "systems"),
+    # arms: kinematics and collisions of the description on roboplan; served by gazelle.ros
+    "planning": ("description",),
+    "worlds": ("description",),
+    "ros": ("description", "physics", "systems", "sim", "planning"),
+    "viewer": ("description", "physics", "systems", "sim"),
+    # users' robot tests: gazelle's commands as processes, over ROS; in-process, the runtime's public API
+    "testing": ("description", "systems", "sim", "worlds"),
+    # many in-process runs of a scenario: the runtime without ROS (ROS scenarios run on the robot-test
+    # fixtures' server), and the viewer's self-contained replay page for runs that fail
+    "sweep": ("description", "sim", "testing", "viewer", "worlds"),
+    "cli": ("description", "physics", "systems", "sim", "planning", "worlds", "ros", "viewer", "testing", "sweep"),
+}
+"""Every folder of the gazelle package -> the gazelle packages it may import (an allow-list: a new folder,
+or a new arrow between two, fails until it is declared here and in docs/architecture.md). Every folder may
+import ``gazelle._lazy`` (the lazy-attribute helper)."""
+
+LAYERS = tuple(k for k in ALLOWED if k)
+
+THIRD_PARTY: dict[str, tuple[str, ...]] = {
+    "mujoco": ("physics",),
+    "rclpy": ("ros", "cli", "testing"),
+    "viser": ("viewer",),
+    "ray": ("sweep",),
+    "foxglove": ("cli",),
+    "launch": ("cli",),
+    "launch_ros": ("cli",),
+}
+"""Libraries that only some folders may import (directly or inside a function)."""
+
+OTHER_FOLDERS = ("compat", "scripts", "launch", "launch_ros", "bench")
+"""Importable folders beside the package: they may use only gazelle's public surfaces."""
+
+
+def _imports(path: Path, root: Path | None = None) -> list[tuple[int, str]]:
+    """(line, absolute module name) of every import in a file under ``root`` (the repository)."""
+    rel = path.relative_to(root or REPO).with_suffix("")
+    package = list(rel.parts[:-1]) if rel.name != "__init__" else list(rel.parts[:-1])
+    out: list[tuple[int, str]] = []
+    for node in ast.walk(ast.parse(path.read_text(), str(path))):
+        if isinstance(node, ast.Import):
+            out += [(node.lineno, a.name) for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package[: len(package) - node.level + 1]
+                mod = ".".join(base + ([node.module] if node.module else []))
+            else:
+                mod = node.module or ""
+            out.append((node.lineno, mod))
+            # `from . import _x` / `from ..physics import _world` name modules too
+            out += [(node.lineno, f"{mod}.{a.name}") for a in node.names if a.name.startswith("_")]
+    return out
+
+
+def _violations() -> list[str]:
+    found: list[str] = []
+    for path in sorted(PACKAGE.rglob("*.py")):
+        rel = path.relative_to(PACKAGE)
+        layer = rel.parts[0] if len(rel.parts) > 1 else ""
+        if layer not in ALLOWED:
+            found.append(f"gazelle/{rel}: the folder gazelle/{layer} is not declared in ALLOWED")
+            continue
+        for line, mod in _imports(path):
+            where = f"gazelle/{rel}:{line}"
+            parts = mod.split(".")
+            if parts[0] in THIRD_PARTY and layer not in THIRD_PARTY[parts[0]]:
+                found.append(
+                    f"{where}: the {layer or 'top'} layer imports {mod} (only {', '.join(THIRD_PARTY[parts[0]])} may)"
+                )
+            if parts[0] != "gazelle" or len(parts) < 2 or parts[1] in ("_lazy", layer):
+                continue
+            if parts[1] not in ALLOWED[layer]:
+                found.append(f"{where}: the {layer or 'top'} layer imports gazelle.{parts[1]}, which it may not")
+            elif any(p.startswith("_") and p != "__init__" for p in parts[2:]):
+                found.append(f"{where}: imports {mod}, a private module of gazelle.{parts[1]} (use its __init__)")
+    return found
+
+
+def _other_violations(root: Path, folders: tuple[str, ...]) -> list[str]:
+    """Imports of a private gazelle module from the folders beside the package."""
+    found: list[str] = []
+    for folder in folders:
+        for path in sorted((root / folder).rglob("*.py")):
+            for line, mod in _imports(path, root):
+                parts = mod.split(".")
+                if parts[0] == "gazelle" and any(p.startswith("_") and not p.startswith("__") for p in parts[1:]):
+                    found.append(f"{path.relative_to(root)}:{line}: imports {mod}, a private part of gazelle")
+    return found
+
+
+def test_layers_import_one_way_and_only_public_surfaces() -> None:
+    problems = _violations()
+    assert not problems, "\n".join(problems)
+
+
+def test_every_folder_of_the_package_is_declared_and_documented() -> None:
+    folders = {p.name for p in PACKAGE.iterdir() if p.is_dir() and (p / "__init__.py").exists()}
+    assert folders == set(LAYERS), (
+        f"declare in ALLOWED: {sorted(folders - set(LAYERS))}; gone: {sorted(set(LAYERS) - folders)}"
+    )
+    doc = (REPO / "docs" / "architecture.md").read_text()
+    assert not [f for f in folders if f"gazelle/{f}/" not in doc], "docs/architecture.md names every folder"
+
+
+TEST_FOLDERS = ("integration", "project")
+"""Test folders that are not named for a package: tests that start real processes (servers, ``ros2``,
+move_group) over real DDS, and checks of the repository itself (layering, set-up cache, interfaces)."""
+
+
+def _misplaced_tests(tests: Path) -> list[str]:
+    """Test modules outside ``tests/<package>/`` (in-process tests of one gazelle package, named as it is),
+    ``tests/integration/`` and ``tests/project/``; and test folders without an ``__init__.py`` (their
+    modules would be imported by their bare names, so two ``test_ros2_control.py`` would collide)."""
+    allowed = set(LAYERS) | set(TEST_FOLDERS)
+    found = []
+    for path in sorted(tests.rglob("test_*.py")):
+        rel = path.relative_to(tests)
+        if len(rel.parts) != 2 or rel.parts[0] not in allowed:
+            found.append(f"tests/{rel}: put it in tests/<package>/ (one of {sorted(allowed)})")
+        elif not (path.parent / "__init__.py").exists():
+            found.append(f"tests/{rel.parts[0]}/ has no __init__.py")
+    return found
+
+
+def test_tests_are_laid_out_by_what_they_test() -> None:
+    problems = _misplaced_tests(REPO / "tests")
+    assert not problems, "\n".join(problems)
+
+
+def test_the_layout_check_finds_a_misplaced_test(tmp_path: Path) -> None:
+    for rel in ("test_top.py", "helpers/test_x.py", "sim/test_ok.py", "sim/__init__.py", "ros/test_y.py"):
+        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / rel).write_text("")
+    problems = _misplaced_tests(tmp_path)
+    assert [p.split(":")[0] for p in problems] == [
+        "tests/helpers/test_x.py",
+        "tests/ros/ has no __init__.py",
+        "tests/test_top.py",
+    ]
+
+
+def test_the_folders_beside_the_package_use_only_public_surfaces() -> None:
+    problems = _other_violations(REPO, OTHER_FOLDERS)
+    assert not problems, "\n".join(problems)
+
+
+@pytest.mark.parametrize(
+    ("layer", "source", "expected"),
+    [
+        ("physics", "from ..systems import System\n", "the physics layer imports gazelle.systems, which it may not"),
+        ("physics", "def f():\n    from ..sim import Simulation\n", "the physics layer imports gazelle.sim"),
+        ("systems", "import mujoco\n", "the systems layer imports mujoco (only physics may)"),
+        ("systems", "from ..physics._builder import scoped\n", "private module of gazelle.physics"),
+        ("viewer", "from ..systems._base import RateGate\n", "private module of gazelle.systems"),
+        ("sim", "import rclpy\n", "the sim layer imports rclpy"),
+        ("description", "from ..planning import Planner\n", "the description layer imports gazelle.planning"),
+        ("worlds", "import viser\n", "the worlds layer imports viser"),
+        ("newfolder", "x = 1\n", "the folder gazelle/newfolder is not declared"),
+    ],
+)
+def test_the_check_finds_each_kind_of_violation(
+    tmp_path: Path, monkeypatch, layer: str, source: str, expected: str
+) -> None:
+    """The walk itself can fail: a planted import of each forbidden kind is reported, with its file and line."""
+    fake = tmp_path / "gazelle"
+    (fake / layer).mkdir(parents=True)
+    (fake / layer / "planted.py").write_text(source)
+    monkeypatch.setattr(sys.modules[__name__], "PACKAGE", fake)
+    monkeypatch.setattr(sys.modules[__name__], "REPO", tmp_path)
+    problems = _violations()
+    assert any(expected in p and f"gazelle/{layer}/planted.py" in p for p in problems), problems
+
+
+def test_the_check_finds_a_private_reach_beside_the_package(tmp_path: Path) -> None:
+    (tmp_path / "scripts").mkdir()
+    (tmp_path / "scripts" / "tool.py").write_text("from gazelle.systems import _registry\n")
+    (tmp_path / "compat").mkdir()
+    (tmp_path / "compat" / "ok.py").write_text("from gazelle.ros import spawn_main\n")
+    problems = _other_violations(tmp_path, ("scripts", "compat"))
+    assert problems == ["scripts/tool.py:1: imports gazelle.systems._registry, a private part of gazelle"], problems
+
+
+BENCH = REPO / "bench"
+
+
+def _bench_violations(folder: Path) -> list[str]:
+    """Private reaches in the bench scripts: an import of a private gazelle module, or an attribute read
+    that starts with one underscore on anything but ``self``/``cls`` (issue 28: bench_rtf.py crashed for a
+    turn because it read ``node._pubs``, whose keys had changed)."""
+    found: list[str] = []
+    for path in sorted(folder.glob("*.py")):
+        tree = ast.parse(path.read_text(), str(path))
+        for node in ast.walk(tree):
+            where = f"bench/{path.name}:{getattr(node, 'lineno', 0)}"
+            mods: list[str] = []
+            if isinstance(node, ast.Import):
+                mods = [a.name for a in node.names]
+            elif isinstance(node, ast.ImportFrom) and node.module:
+                mods = [node.module] + [f"{node.module}.{a.name}" for a in node.names if a.name.startswith("_")]
+            for mod in mods:
+                parts = mod.split(".")
+                if parts[0] == "gazelle" and any(p.startswith("_") and not p.startswith("__") for p in parts[1:]):
+                    found.append(f"{where}: imports {mod}, a private part of gazelle")
+            if (
+                isinstance(node, ast.Attribute)
+                and node.attr.startswith("_")
+                and not node.attr.startswith("__")
+                and not (isinstance(node.value, ast.Name) and node.value.id in ("self", "cls"))
+            ):
+                found.append(f"{where}: reads .{node.attr}, a private attribute")
+    return found
+
+
+def test_benches_use_only_public_surfaces() -> None:
+    problems = _bench_violations(BENCH)
+    assert not problems, "\n".join(problems)
+
+
+@pytest.mark.parametrize(
+    ("source", "expected"),
+    [
+        ("from gazelle.ros._move_group import _pose\n", "imports gazelle.ros._move_group"),
+        ("def f(node):\n    return node._pubs\n", "reads ._pubs"),
+        ("from gazelle.sim import _simulation\n", "imports gazelle.sim._simulation"),
+    ],
+)
+def test_the_bench_check_finds_a_private_reach(tmp_path: Path, source: str, expected: str) -> None:
+    (tmp_path / "bench_planted.py").write_text(source)
+    problems = _bench_violations(tmp_path)
+    assert any(expected in p and "bench/bench_planted.py:" in p for p in problems), problems
+
+
+def test_ros_clients_do_not_import_the_simulation() -> None:
+    """`gazelle arm`, `gazelle spawn` and `gazelle spawner` are clients: importing gazelle.ros brought in the
+    bridge, MuJoCo and the runtime (1.1 s of every `gazelle arm` answer, issue 27 item 10), and gazelle.systems
+    (for a plugin's name and the YAML reader) MuJoCo again: 0.3 s of every spawn and spawner the tests run."""
+    code = (
+        "import sys\n"
+        "from gazelle.ros import arm_main, spawn_main, spawner_main\n"
+        "import gazelle.ros._arm_cli, gazelle.ros._spawn, gazelle.ros._spawner\n"
+        "print(sorted(m for m in ('mujoco', 'gazelle.sim', 'gazelle.ros._bridge') if m in sys.modules))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "[]"

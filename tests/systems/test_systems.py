@@ -1,0 +1,413 @@
+"""Systems in-process (no ROS): the phase and priority contract, and each system configured from a plugin block."""
+
+from __future__ import annotations
+
+import logging
+import math
+import re
+import subprocess
+import sys
+
+import pytest
+from _paths import BOX, REAL, REPO, SEED_XACRO
+from _sim import new_simulation
+
+from gazelle.description import Pose, load, load_string
+from gazelle.systems import System, UpdateInfo
+from gazelle.systems._bus import MsgType, Twist
+from gazelle.systems.diff_drive import ODOM_WORLD, DiffDrive
+from gazelle.systems.gz_diff_drive import GzDiffDrive, SpeedLimiter, SpeedLimits
+from gazelle.systems.joint_controllers import JointCommands, JointController, JointPositionController
+from gazelle.systems.pose_publisher import P3D
+
+TB3 = REAL / "turtlebot3"
+
+
+def seed_urdf(plugin_xml: str) -> str:
+    """The seed robot's URDF with its classic diff drive replaced by ``plugin_xml`` (in a ``<gazebo>`` block)."""
+    urdf = load(SEED_XACRO).model.urdf
+    assert urdf
+    out, n = re.subn(
+        r"<gazebo>\s*<plugin[^>]*libgazebo_ros_diff_drive.*?</gazebo>",
+        f"<gazebo>{plugin_xml}</gazebo>",
+        urdf,
+        flags=re.S,
+    )
+    assert n == 1
+    return out
+
+
+def seed_geometry() -> tuple[float, float]:
+    """(wheel separation, wheel radius) of the seed robot, from its classic plugin block."""
+    urdf = load(SEED_XACRO).model.urdf
+    sep = float(re.search(r"<wheel_separation>([^<]+)<", urdf).group(1))
+    diam = float(re.search(r"<wheel_diameter>([^<]+)<", urdf).group(1))
+    return sep, diam / 2.0
+
+
+def spawn(text: str, *, name: str = "robot", namespace: str = "", z: float = 0.05, source: str | None = None):
+    sim = new_simulation()
+    model = load_string(text, source=source).model
+    entity = sim.spawn(model, name=name, pose=Pose((0.0, 0.0, z)), namespace=namespace)
+    return sim, entity
+
+
+def system(entity, cls):
+    return next(s for s in entity.systems if isinstance(s, cls))
+
+
+# --------------------------------------------------------------------------- phases and priorities
+class Recorder(System):
+    def __init__(self, tag: str, log: list, priority: int = 0) -> None:
+        self.tag, self.log, self.priority = tag, log, priority
+
+    def pre_update(self, info: UpdateInfo, world) -> None:
+        self.log.append(("pre", self.tag))
+
+    def post_update(self, info: UpdateInfo, world) -> None:
+        self.log.append(("post", self.tag))
+
+
+def test_priorities_order_systems_in_every_phase(make_sim) -> None:
+    sim = make_sim()
+    log: list = []
+    for tag, prio in (("c", 10), ("a", -10), ("b", 0), ("b2", 0)):
+        sim.systems.add("x", Recorder(tag, log, prio))
+    sim.step()
+    assert log == [("pre", t) for t in ("a", "b", "b2", "c")] + [("post", t) for t in ("a", "b", "b2", "c")]
+
+
+class Kick(System):
+    """Pushes a free box up with a large force on one chosen step only, and records what post_update sees."""
+
+    def __init__(self, entity: str, step: int) -> None:
+        self.entity, self.step = entity, step
+        self.seen: list[tuple[int, float, float, float]] = []  # iteration, sim time, vz, z
+
+    def pre_update(self, info: UpdateInfo, world) -> None:
+        bid = world.body_id(self.entity)
+        world.data.xfrc_applied[bid, 2] = 1000.0 if info.iterations == self.step else 0.0
+
+    def post_update(self, info: UpdateInfo, world) -> None:
+        st = world.entity_state(self.entity)
+        self.seen.append((info.iterations, info.sim_time_sec, st.linear_velocity[2], st.pose.position[2]))
+
+
+def test_pre_update_acts_in_the_same_step_and_post_update_sees_the_post_step_state(make_sim) -> None:
+    sim = make_sim()
+    sim.spawn(load_string(BOX).model, name="box", pose=Pose((0.0, 0.0, 2.0)))
+    kick = Kick("box", step=5)
+    sim.systems.add("box", kick)
+    sim.step(10)
+    dt = sim.world.timestep
+    by_iter = {it: (t, vz, z) for it, t, vz, z in kick.seen}
+    # post_update of step k runs after the k-th mj_step: iterations = k + 1, time = (k + 1) dt
+    assert by_iter[6][0] == pytest.approx(6 * dt)
+    # falling freely until the kick, which shows in the very step it was commanded
+    assert by_iter[5][1] < 0
+    assert by_iter[6][1] == pytest.approx(by_iter[5][1] + (1000.0 - 9.8) * dt, rel=1e-3)
+    # post_update saw exactly the state left after the step (what a caller sees after sim.step)
+    assert kick.seen[-1][2] == pytest.approx(sim.world.entity_state("box").linear_velocity[2], abs=0)
+    assert kick.seen[-1][3] == pytest.approx(float(sim.world.data.qpos[2]), abs=1e-12)
+
+
+# --------------------------------------------------------------------------- unknown plugins
+def test_unknown_plugin_warns_with_name_file_and_line(tmp_path, caplog, make_sim) -> None:
+    urdf = seed_urdf('<plugin name="mystery" filename="libgazebo_ros_mystery.so"><x>1</x></plugin>')
+    path = tmp_path / "robot.urdf"
+    path.write_text(urdf)
+    line = next(i for i, ln in enumerate(urdf.splitlines(), 1) if "libgazebo_ros_mystery" in ln)
+    with caplog.at_level(logging.WARNING):
+        make_sim().spawn(load(path).model, name="r", pose=Pose((0, 0, 0.05)))
+    msgs = [r.getMessage() for r in caplog.records if "mystery" in r.getMessage()]
+    assert msgs, caplog.text
+    assert "libgazebo_ros_mystery.so" in msgs[0] and f"{path}:{line}" in msgs[0]
+
+
+# --------------------------------------------------------------------------- classic diff drive, ROS 1 names
+def test_classic_diff_drive_reads_the_ros1_names_of_turtlebot3(caplog, monkeypatch, make_sim) -> None:
+    monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(TB3))
+    model = load(TB3 / "turtlebot3_description/urdf/turtlebot3_burger.urdf.xacro").model
+    sim = make_sim()
+    with caplog.at_level(logging.WARNING):
+        entity = sim.spawn(model, name="tb3", pose=Pose((0, 0, 0.01)))
+    c = system(entity, DiffDrive).config
+    assert (c.left_joints, c.right_joints) == (("wheel_left_joint",), ("wheel_right_joint",))
+    assert (c.wheel_separation, c.wheel_diameter) == ((0.16,), (0.066,))
+    assert (c.max_wheel_torque, c.max_wheel_acceleration, c.update_rate) == (10.0, 1.0, 30.0)
+    assert (c.command_topic, c.odometry_topic, c.odometry_frame, c.robot_base_frame) == (
+        "cmd_vel",
+        "odom",
+        "odom",
+        "base_footprint",
+    )
+    assert c.odometry_source == ODOM_WORLD and c.publish_odom and c.publish_odom_tf and not c.publish_wheel_tf
+    assert c.publish_wheel_joint_state and not c.legacy_mode
+    assert "is not a parameter" not in caplog.text
+    topics = {(e.topic, e.msg_type) for e in sim.bus.endpoints()}
+    assert {("/cmd_vel", MsgType.TWIST), ("/odom", MsgType.ODOMETRY), ("/joint_states", MsgType.JOINT_STATE)} <= topics
+    drive = system(entity, DiffDrive)
+    sim.step(300)
+    x0 = sim.world.entity_state("tb3").pose.position[0]
+    drive.command(0.2, 0.0)
+    sim.step(2000)
+    assert sim.world.entity_state("tb3").pose.position[0] - x0 == pytest.approx(0.4 - 0.2 * 0.2 / 2, rel=0.1)
+
+
+def test_classic_diff_drive_warns_about_unknown_parameters_by_name(caplog) -> None:
+    urdf = seed_urdf(
+        '<plugin name="dd" filename="libgazebo_ros_diff_drive.so"><leftJoint>base_left_wheel_joint</leftJoint>'
+        "<rightJoint>base_right_wheel_joint</rightJoint><legacyMode>false</legacyMode><wheelBogus>3</wheelBogus></plugin>"
+    )
+    with caplog.at_level(logging.WARNING):
+        _, entity = spawn(urdf)
+    assert "<wheelBogus> is not a parameter of gazebo_ros_diff_drive" in caplog.text
+    assert system(entity, DiffDrive).config.left_joints == ("base_left_wheel_joint",)
+
+
+# --------------------------------------------------------------------------- gz-sim DiffDrive
+def gz_plugin(extra: str = "") -> str:
+    sep, r = seed_geometry()
+    return (
+        '<plugin filename="gz-sim-diff-drive-system" name="gz::sim::systems::DiffDrive">'
+        "<left_joint>base_left_wheel_joint</left_joint><right_joint>base_right_wheel_joint</right_joint>"
+        f"<wheel_separation>{sep}</wheel_separation><wheel_radius>{r}</wheel_radius>{extra}</plugin>"
+    )
+
+
+def test_gz_diff_drive_moves_the_seed_robot_with_gz_defaults() -> None:
+    sim, entity = spawn(seed_urdf(gz_plugin()))
+    drive = system(entity, GzDiffDrive)
+    assert drive.cmd_topic == "/model/robot/cmd_vel"
+    assert (drive.frame_id, drive.child_frame_id) == ("robot/odom", "robot/base_link")
+    topics = {e.topic for e in sim.bus.endpoints()}
+    assert {"/model/robot/cmd_vel", "/model/robot/odometry", "/tf"} <= topics
+    sim.step(300)
+    p0 = sim.world.entity_state("robot").pose
+    drive.command(0.3, 0.0)
+    sim.step(2000)
+    p1 = sim.world.entity_state("robot").pose
+    assert p1.position[0] - p0.position[0] == pytest.approx(0.6, rel=0.05)
+    assert abs(p1.position[1] - p0.position[1]) < 0.01
+    # encoder odometry follows ground truth while the wheels roll without slipping
+    odom = drive._odom
+    assert odom is not None and odom.x == pytest.approx(p1.position[0] - p0.position[0], rel=0.03)
+    assert odom.linear == pytest.approx(0.3, rel=0.03)
+    drive.command(0.0, 1.0)
+    sim.step(1000)
+    yaw = sim.world.entity_state("robot").pose.rpy[2] - p1.rpy[2]
+    assert yaw == pytest.approx(1.0, rel=0.1)
+    assert odom.heading == pytest.approx(yaw, rel=0.08)  # turning in place scrubs: encoders overestimate
+
+
+def test_gz_diff_drive_limiters() -> None:
+    extra = "<max_linear_acceleration>0.5</max_linear_acceleration><max_velocity>0.2</max_velocity>"
+    sim, entity = spawn(seed_urdf(gz_plugin(extra)))
+    drive = system(entity, GzDiffDrive)
+    assert drive.config.linear.max_acceleration == 0.5 and math.isinf(drive.config.angular.max_acceleration)
+    assert drive.config.linear.max_velocity == drive.config.angular.max_velocity == 0.2
+    drive.command(1.0, 1.0)
+    steps = round(0.1 / sim.world.timestep)
+    sim.step(steps)
+    lin, ang = drive.limited_command
+    assert lin == pytest.approx(0.05, rel=1e-6)  # 0.5 m/s² for 0.1 s
+    assert ang == pytest.approx(0.2)  # no angular acceleration limit, velocity capped
+    sim.step(steps * 10)
+    assert drive.limited_command[0] == pytest.approx(0.2)
+    # jerk, as gz::math::SpeedLimiter
+    jerk = SpeedLimiter(SpeedLimits(max_jerk=10.0))
+    assert jerk.limit(1.0, 0.0, 0.0, 0.1) == pytest.approx(0.1)  # da <= 10 * 0.1²
+
+
+def test_gz_diff_drive_relative_topic_and_frames_go_under_the_namespace() -> None:
+    extra = "<topic>cmd_vel</topic><odom_topic>odom</odom_topic><frame_id>odom</frame_id><child_frame_id>base_link</child_frame_id>"
+    sim, entity = spawn(seed_urdf(gz_plugin(extra)), name="r1", namespace="r1")
+    drive = system(entity, GzDiffDrive)
+    assert drive.cmd_topic == "/r1/cmd_vel"
+    assert (drive.frame_id, drive.child_frame_id) == ("r1/odom", "r1/base_link")
+    assert "/r1/odom" in {e.topic for e in sim.bus.endpoints()}
+
+
+# --------------------------------------------------------------------------- joint controllers
+ARM = """<?xml version="1.0"?><sdf version="1.9"><model name="arm">
+<link name="base"><inertial><mass>5</mass><inertia><ixx>0.1</ixx><iyy>0.1</iyy><izz>0.1</izz></inertia></inertial></link>
+<joint name="fix" type="fixed"><parent>world</parent><child>base</child></joint>
+<link name="upper"><pose>0.25 0 0.5 0 0 0</pose>
+  <inertial><mass>1</mass><inertia><ixx>0.001</ixx><iyy>0.02</iyy><izz>0.02</izz></inertia></inertial>
+  <collision name="c"><geometry><box><size>0.5 0.05 0.05</size></box></geometry></collision></link>
+<joint name="shoulder" type="revolute"><parent>base</parent><child>upper</child><pose>-0.25 0 0 0 0 0</pose>
+  <axis><xyz>0 1 0</xyz><limit><lower>-3</lower><upper>3</upper><effort>50</effort><velocity>3</velocity></limit></axis></joint>
+<link name="wheel"><pose>0 0 0.1 0 0 0</pose>
+  <inertial><mass>0.5</mass><inertia><ixx>0.001</ixx><iyy>0.001</iyy><izz>0.001</izz></inertia></inertial></link>
+<joint name="spin" type="continuous"><parent>base</parent><child>wheel</child><axis><xyz>0 0 1</xyz><limit><effort>5</effort></limit></axis></joint>
+%s
+</model></sdf>"""
+
+
+def test_gz_joint_position_controller_reaches_a_target_against_gravity() -> None:
+    plugin = (
+        '<plugin filename="gz-sim-joint-position-controller-system" name="gz::sim::systems::JointPositionController">'
+        "<joint_name>shoulder</joint_name><p_gain>200</p_gain><i_gain>50</i_gain><d_gain>10</d_gain>"
+        "<i_max>10</i_max><i_min>-10</i_min></plugin>"
+    )
+    sim, entity = spawn(ARM % plugin, name="arm", z=0.0)
+    ctl = system(entity, JointPositionController)
+    assert ctl.topic == "/model/arm/joint/shoulder/0/cmd_pos"
+    ctl.command(-0.8)
+    sim.step(4000)
+    qadr, _ = sim.world.joint_address("arm", "shoulder")
+    assert float(sim.world.data.qpos[qadr]) == pytest.approx(-0.8, abs=2e-3)
+
+
+def test_gz_joint_velocity_controller_and_classic_command_topics() -> None:
+    plugins = (
+        '<plugin filename="gz-sim-joint-controller-system" name="gz::sim::systems::JointController">'
+        "<joint_name>spin</joint_name></plugin>"
+        '<plugin filename="gazelle_joint_commands" name="cmds"><joint_name>shoulder</joint_name>'
+        "<ros><namespace>arm1</namespace></ros></plugin>"
+    )
+    sim, entity = spawn(ARM % plugins, name="arm", z=0.0)
+    vel = system(entity, JointController)
+    cmds = system(entity, JointCommands)
+    assert vel.topic == "/model/arm/joint/spin/cmd_vel"
+    assert cmds.topics == {"shoulder": "/arm1/shoulder/cmd_pos"}
+    vel.command(2.0)
+    cmds.command("shoulder", 0.5)
+    sim.step(2000)
+    _, dspin = sim.world.joint_address("arm", "spin")
+    qsh, _ = sim.world.joint_address("arm", "shoulder")
+    assert float(sim.world.data.qvel[dspin]) == pytest.approx(2.0, rel=1e-3)
+    assert float(sim.world.data.qpos[qsh]) == pytest.approx(0.5, abs=0.05)  # P-D servo, no integral: a small sag
+
+
+# --------------------------------------------------------------------------- p3d
+def test_p3d_publishes_ground_truth_with_offsets() -> None:
+    plugin = (
+        '<plugin name="truth" filename="libgazebo_ros_p3d.so"><ros><namespace>gt</namespace></ros>'
+        "<body_name>base_link</body_name><frame_name>world</frame_name><update_rate>50</update_rate>"
+        "<xyz_offsets>1 2 3</xyz_offsets></plugin>"
+    )
+    urdf = load(SEED_XACRO).model.urdf.replace("</robot>", f"<gazebo>{plugin}</gazebo></robot>")
+    sim, entity = spawn(urdf)
+    p3d = system(entity, P3D)
+    assert p3d.topic == "/gt/odom" and (p3d.frame_id, p3d.child_frame_id) == ("world", "base_link")
+    got = []
+    ep = next(e for e in sim.bus.endpoints() if e.topic == "/gt/odom")
+    ep.add_sink(got.append)
+    system(entity, DiffDrive).command(0.2, 0.0)
+    sim.step(1000)
+    assert len(got) == pytest.approx(50, abs=1)
+    truth = sim.world.entity_state("robot", "base_link")
+    last = got[-1]
+    assert last.stamp_sec == pytest.approx(sim.world.time, abs=0.021)
+    sim.step(0)
+    pose, twist = p3d.measure(sim.world)
+    assert [a - b for a, b in zip(pose.position, truth.pose.position)] == pytest.approx([1, 2, 3], abs=1e-9)
+    assert twist.linear[0] == pytest.approx(0.2, rel=0.05)
+
+
+# --------------------------------------------------------------------------- docs
+def test_plugin_docs_are_up_to_date() -> None:
+    out = subprocess.run(
+        [sys.executable, str(REPO / "scripts" / "gen_plugin_docs.py"), "--check"],
+        capture_output=True,
+        text=True,
+        cwd=REPO,
+    )
+    assert out.returncode == 0, out.stdout + out.stderr
+
+
+def test_a_system_that_raises_is_disabled_and_the_world_goes_on(caplog, make_sim):
+    from gazelle.description import Pose, load
+    from gazelle.systems import System
+
+    class Broken(System):
+        calls = 0
+
+        def pre_update(self, info, world):
+            Broken.calls += 1
+            raise RuntimeError("plugin bug")
+
+    sim = make_sim()
+    robot = load("examples/simple_robot/simple_robot/robot.urdf.xacro").model
+    e = sim.spawn(robot, pose=Pose((0.0, 0.0, 0.08)))
+    sim.systems.add(e.name, Broken())
+    e.systems[0].command(0.2, 0.0)
+    with caplog.at_level("ERROR"):
+        sim.step(500)
+    assert Broken.calls == 1
+    assert "system Broken of entity 'simple_robot' raised in pre_update: RuntimeError: plugin bug" in caplog.text
+    assert sim.world.entity_state("simple_robot").pose.position[0] > 0.05  # the diff drive still drives
+
+
+def test_the_bus_fans_out_and_takes_injection() -> None:
+    """Any number of listeners per publisher (a recorder and an echo beside the bridge), and anything
+    can publish into the simulation as the ROS bridge does (the viewer's drive buttons, bag playback)."""
+    sim, entity = spawn(load(SEED_XACRO).model.urdf)
+    odom = next(e for e in sim.bus.endpoints() if e.topic == "/odom" and e.is_publisher)
+    first, second = [], []
+    odom.add_sink(first.append)
+    odom.add_sink(second.append)
+    delivered = sim.bus.inject("/cmd_vel", MsgType.TWIST, Twist((0.2, 0.0, 0.0), (0.0, 0.0, 0.0)))
+    assert delivered == 1
+    sim.step(1000)
+    assert len(first) == len(second) > 0 and first[-1] is second[-1]
+    assert first[-1].pose.position[0] > 0.15  # the injected command drove it
+    odom.remove_sink(second.append)
+    n = len(second)
+    sim.step(100)
+    assert len(second) == n and len(first) > n
+    assert sim.bus.inject("/nobody", MsgType.TWIST, Twist((0.0, 0.0, 0.0), (0.0, 0.0, 0.0))) == 0
+
+
+def test_one_rate_gate_for_every_periodic_publisher() -> None:
+    from gazelle.systems import RateGate
+
+    gate = RateGate()
+    due = [k for k in range(1000) if gate.due(k * 0.001, 50.0)]
+    assert len(due) == 50 and due[:3] == [0, 20, 40]  # 50 Hz of sim time, first at the first step
+    assert all(gate.due(1.0 + k * 0.001, 0.0) for k in range(5))  # rate 0: every step
+    gate.reset()
+    assert gate.due(0.0, 50.0)  # after a reset of sim time, at once
+
+
+def test_did_you_mean_offers_a_typo_its_plugin_and_another_plugin_nothing():
+    """Issue 26: `gazelle check` suggested 'gz-sim-diff-drive-system' for gz-sim's LiftDrag (the gz-sim
+    names share most of their characters); a typo still gets its plugin."""
+    from gazelle.description import Plugin
+    from gazelle.systems._registry import plugin_problem
+
+    def problem(filename: str, name: str = "p") -> str:
+        text = plugin_problem(Plugin(name=name, filename=filename, config=None))
+        assert text is not None
+        return text
+
+    assert "did you mean" not in problem("gz-sim-lift-drag-system", "gz::sim::systems::LiftDrag")
+    assert "did you mean" not in problem("gz-sim-buoyancy-system", "gz::sim::systems::Buoyancy")
+    assert "did you mean 'gz-sim-diff-drive-system'?" in problem("gz-sim-diff-drive-sytem")
+    assert "did you mean 'libgazebo_ros_diff_drive.so'?" in problem("libgazebo_ros_diff_drve.so")
+    assert "did you mean 'libgazebo_ros_imu_sensor.so'?" in problem("libgazebo_ros_imu_sensr.so")
+
+
+def test_every_sensor_kind_declares_what_runs_it_and_the_registry_is_derived_from_that() -> None:
+    """Issue 32: a sensor's SDF types, its gazebo_ros plugins and its gz-sim world system are declared on
+    its class (one place); the registry's tables come from those declarations. Before, they were spelled
+    in three tables, and a sensor without an entry in a fourth was silently a lidar."""
+    from gazelle.systems import _registry
+    from gazelle.systems.sensors import OUTPUT_MESSAGES, SENSOR_SYSTEMS, Camera, GpsSensor, ImuSensor, Lidar
+
+    assert len(SENSOR_SYSTEMS) == 9
+    for cls in SENSOR_SYSTEMS:
+        assert cls.sdf_types and cls.sdf_types <= _registry.SDF_SENSOR_TYPES, cls
+        assert cls.gz_system, cls
+        kind = getattr(cls, "output_kind", None)
+        # every output is a message sensor_output knows, or one the sensor's own module declares
+        assert kind is None or kind in OUTPUT_MESSAGES or getattr(cls, "output_message", None) is not None, cls
+    plugins, world = _registry._sensor_tables()
+    assert plugins["gazebo_ros_ray_sensor"] == (Lidar, Lidar.sdf_types)
+    assert plugins["gazebo_ros_depth_camera"][0] is Camera and "camera" not in plugins["gazebo_ros_depth_camera"][1]
+    for spelling in ("gz-sim-imu-system", "gz::sim::systems::Imu", "ignition::gazebo::systems::Imu"):
+        assert world[spelling] == {"imu": ImuSensor}
+    assert world["gz-sim-navsat-system"] == {"gps": GpsSensor, "navsat": GpsSensor}
+    assert set(world["gz-sim-air-pressure-system"]) == {"air_pressure"}  # its file's spelling, declared
+    assert world["gz-sim-sensors-system"]["gpu_lidar"] is Lidar and world["gz-sim-sensors-system"]["rgbd"] is Camera
