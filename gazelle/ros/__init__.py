@@ -16,16 +16,16 @@ from .._lazy import lazy_attributes
 if TYPE_CHECKING:
     from ._bridge import RosBridge
     from ._cdr import serialized_joint_states
+    from ._controller_spawner import controller_file_params
+    from ._controller_spawner import spawner_main as spawner_main
+    from ._controller_spawner import unspawner_main as unspawner_main
     from ._dds import announce_often
     from ._definitions import InterfaceError, message_class
     from ._definitions import full_text as message_definition
     from ._exposure import choose_discovery_range
     from ._planning_scene import pose as matrix_to_pose
     from ._signals import await_signal_shutdown, silence_half_made_objects
-    from ._spawn import main as spawn_main
-    from ._spawner import controller_file_params
-    from ._spawner import spawner_main as spawner_main
-    from ._spawner import unspawner_main as unspawner_main
+    from ._spawn_entity import main as spawn_main
 
 _LAZY = {
     "RosBridge": ("._bridge", "RosBridge"),
@@ -38,10 +38,10 @@ _LAZY = {
     "matrix_to_pose": ("._planning_scene", "pose"),
     "await_signal_shutdown": ("._signals", "await_signal_shutdown"),
     "silence_half_made_objects": ("._signals", "silence_half_made_objects"),
-    "spawn_main": ("._spawn", "main"),
-    "spawner_main": ("._spawner", "spawner_main"),
-    "controller_file_params": ("._spawner", "controller_file_params"),
-    "unspawner_main": ("._spawner", "unspawner_main"),
+    "spawn_main": ("._spawn_entity", "main"),
+    "spawner_main": ("._controller_spawner", "spawner_main"),
+    "controller_file_params": ("._controller_spawner", "controller_file_params"),
+    "unspawner_main": ("._controller_spawner", "unspawner_main"),
 }
 """Imported when first used: the bridge brings MuJoCo and the runtime (1.1 s), which a client such as
 ``gazelle arm``, ``gazelle spawn`` or ``gazelle spawner`` never needs."""

@@ -35,7 +35,7 @@ from ..systems import (
 )
 from ._convert import from_pose_msg, to_pose_msg, to_time
 from ._replies import guarded_service, serve, with_warnings
-from ._spawn import with_joint_state_publisher, with_robot_state_options
+from ._spawn_entity import with_joint_state_publisher, with_robot_state_options
 
 RSP_WATCH_SEC = 30.0
 """How long after a spawn the user's robot_state_publisher may still appear and take the robot's TF over."""

@@ -27,7 +27,7 @@ def create_main(argv: list[str]) -> int:
     """``create``: ros_gz_sim's arguments, run as ``gazelle spawn``."""
     import argparse
 
-    from ._spawn import main as spawn_main
+    from ._spawn_entity import main as spawn_main
 
     p = argparse.ArgumentParser(prog="create", description="Spawn an entity (ros_gz_sim's create)")
     src = p.add_mutually_exclusive_group(required=True)

@@ -5,6 +5,23 @@ configures while its entity is staged in the physics world, and then runs its ph
 physics steps, at the rate it declares (:meth:`System.next_update`). Systems talk to the world
 through the typed handles of :mod:`gazelle.physics` and to ROS through the :class:`Bus`; they
 never import MuJoCo, the runtime or rclpy.
+
+Where things are (docs/extending.md has the checklists):
+
+* ``_base.py``: :class:`System` and its phases, :class:`SystemContext` (what a system may touch while it
+  configures), :class:`RateGate`; the names a plugin answers to are declared on the class
+  (``plugin_files``, ``gz_plugin``).
+* ``_registry.py``: which system runs a ``<plugin>`` or a ``<sensor>`` (derived from the declarations:
+  ``PLUGIN_SYSTEMS`` lists the plugin classes, ``sensors.SENSOR_SYSTEMS`` the sensor classes), and the
+  warning for each one that does not run.
+* ``_bus.py``: the topics between systems and the ROS bridge, and the message payloads (plain dataclasses;
+  ``gazelle.ros`` converts them).
+* One module per model or world plugin: ``diff_drive.py`` (gazebo_ros's), ``gz_diff_drive.py`` (gz-sim's),
+  ``joint_controllers.py`` (gz-sim's joint position and velocity controllers, gazelle's per-joint command
+  topics), ``pose_publisher.py`` (gazebo_ros's P3D), ``robot_state.py`` (robot_state_publisher and the
+  joint state publishers).
+* ``sensors/``: one module per sensor kind; ``ros2_control/``: the controller manager, the simulated
+  hardware and one module per family of controllers.
 """
 
 from __future__ import annotations

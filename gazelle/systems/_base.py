@@ -20,7 +20,7 @@ import logging
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import NamedTuple
+from typing import ClassVar, NamedTuple
 
 from ..description import DEFAULT_MAGNETIC_FIELD, ConfigElement, Plugin, Sensor, SphericalCoordinates
 from ..physics import Entity, PhysicsWorld
@@ -66,13 +66,24 @@ class SystemContext:
     world_name: str = "default"
     """The world's name (gz-sim's default sensor topics contain it)."""
     spherical_coordinates: SphericalCoordinates | None = None
+    """Where the world's origin is on the Earth (GPS sensors)."""
     magnetic_field: tuple[float, float, float] = DEFAULT_MAGNETIC_FIELD
     """The world's magnetic field (tesla, world frame): what magnetometers read."""
-    """Where the world's origin is on the Earth (GPS sensors)."""
 
 
 class System:
     """Base class; override only the phases you need (trivial ones are skipped)."""
+
+    plugin_files: ClassVar[tuple[str, ...]] = ()
+    """The ``<plugin filename>`` values of a model or world (without ``lib`` and ``.so``; a ``name`` matches
+    too) that run this system, for plugins that are not gz-sim systems: gazebo_ros's, ros2_control's,
+    gazelle's own. A class that declares a name and is listed in ``_registry.PLUGIN_SYSTEMS`` is run for it."""
+    gz_plugin: ClassVar[str] = ""
+    """The gz-sim system this one is, by its class name (``DiffDrive``): gz-sim's and Ignition's file and
+    class spellings all select it (``gz-sim-diff-drive-system``, ``gz::sim::systems::DiffDrive``,
+    ``ignition-gazebo-diff-drive-system``, ``ignition::gazebo::systems::DiffDrive``)."""
+    gz_plugin_file: ClassVar[str] = ""
+    """The file's part of :attr:`gz_plugin`'s names where it is not the class name in kebab case."""
 
     priority: int = DEFAULT_PRIORITY
     phase_gate: RateGate | None = None

@@ -1,4 +1,8 @@
-"""Maps plugin file names and class names to system implementations."""
+"""Which system runs a ``<plugin>`` or a ``<sensor>``, and a warning naming each one that does not run.
+
+Nothing here is a table kept by hand: the plugin names come from the systems' declarations
+(:data:`PLUGIN_SYSTEMS`, and the sensor classes' ``sdf_types`` / ``classic_plugins`` / ``gz_system``).
+The rest is what to say about the others: not simulated yet, built in, or a likely typo of a known name."""
 
 from __future__ import annotations
 
@@ -24,103 +28,65 @@ def _normalise(filename: str) -> str:
     return name
 
 
-def _diff_drive() -> System:
-    from .diff_drive import DiffDrive
-
-    return DiffDrive()
-
-
-def _classic_joint_states() -> System:
-    from .robot_state import JointStatePublisher
-
-    return JointStatePublisher(all_by_default=False)
-
-
-def _gz_joint_states() -> System:
-    from .robot_state import JointStatePublisher
-
-    return JointStatePublisher(all_by_default=True)
-
-
-def _gz_diff_drive() -> System:
-    from .gz_diff_drive import GzDiffDrive
-
-    return GzDiffDrive()
+PLUGIN_SYSTEMS = (
+    "diff_drive:DiffDrive",
+    "robot_state:JointStatePublisher",
+    "robot_state:GzJointStatePublisher",
+    "gz_diff_drive:GzDiffDrive",
+    "joint_controllers:JointPositionController",
+    "joint_controllers:JointController",
+    "joint_controllers:JointCommands",
+    "pose_publisher:P3D",
+    "sensors:ForceTorqueSensor",
+    "sensors:ImuSensor",
+    "ros2_control:ControllerManager",
+)
+"""The systems a model's or world's ``<plugin>`` can run (``module:Class`` under gazelle.systems, imported on
+first use): each declares the names it answers to (:attr:`System.plugin_files`, :attr:`System.gz_plugin`).
+A new plugin is its class plus one line here; the sensors that sit inside a ``<sensor>`` are declared in
+``systems.sensors.SENSOR_SYSTEMS`` instead."""
 
 
-def _gz_joint_position() -> System:
-    from .joint_controllers import JointPositionController
-
-    return JointPositionController()
-
-
-def _gz_joint_velocity() -> System:
-    from .joint_controllers import JointController
-
-    return JointController()
+def _kebab(name: str) -> str:
+    """``JointPositionController`` -> ``joint-position-controller`` (gz-sim's file names)."""
+    return re.sub(r"(?<!^)(?=[A-Z])", "-", name).lower()
 
 
-def _joint_commands() -> System:
-    from .joint_controllers import JointCommands
-
-    return JointCommands()
-
-
-def _imu() -> System:
-    from .sensors import ImuSensor
-
-    return ImuSensor()
+def plugin_names(cls: type[System]) -> tuple[str, ...]:
+    """Every plugin name that runs ``cls``: its :attr:`~System.plugin_files`, then the gz-sim and Ignition
+    spellings of its :attr:`~System.gz_plugin`. Declared on the class itself: a subclass (gz-sim's joint
+    state publisher of gazebo_ros's) answers to its own names, not its base's."""
+    own = vars(cls)
+    gz_plugin, gz_file = own.get("gz_plugin", ""), own.get("gz_plugin_file", "")
+    gz = _gz_spellings(gz_plugin, gz_file or _kebab(gz_plugin)) if gz_plugin else ()
+    return (*own.get("plugin_files", ()), *gz)
 
 
-def _force_torque() -> System:
-    from .sensors import ForceTorqueSensor
+def plugin_table(entries: tuple[str, ...] = PLUGIN_SYSTEMS) -> dict[str, type[System]]:
+    """Plugin name -> system class, from the declarations of ``entries``.
 
-    return ForceTorqueSensor()
+    Raises:
+        ValueError: an entry that declares no name, or two that declare the same one.
+    """
+    import importlib
+
+    out: dict[str, type[System]] = {}
+    for entry in entries:
+        module, _, cls_name = entry.partition(":")
+        cls = getattr(importlib.import_module(f"{__package__}.{module}"), cls_name)
+        names = plugin_names(cls)
+        if not names:
+            raise ValueError(f"{entry} declares no plugin name (plugin_files or gz_plugin)")
+        for name in names:
+            if name in out:
+                raise ValueError(f"plugin name '{name}' is declared by {out[name].__name__} and {cls.__name__}")
+            out[name] = cls
+    return out
 
 
-def _controller_manager() -> System:
-    from .ros2_control import ControllerManager
-
-    return ControllerManager()
-
-
-def _p3d() -> System:
-    from .pose_publisher import P3D
-
-    return P3D()
-
-
-_REGISTRY: dict[str, Callable[[], System]] = {
-    "gazebo_ros_diff_drive": _diff_drive,
-    "gazebo_ros_joint_state_publisher": _classic_joint_states,
-    "gz-sim-joint-state-publisher-system": _gz_joint_states,
-    "gz::sim::systems::JointStatePublisher": _gz_joint_states,
-    "ignition-gazebo-joint-state-publisher-system": _gz_joint_states,
-    "ignition::gazebo::systems::JointStatePublisher": _gz_joint_states,
-    "gz-sim-diff-drive-system": _gz_diff_drive,
-    "gz::sim::systems::DiffDrive": _gz_diff_drive,
-    "ignition-gazebo-diff-drive-system": _gz_diff_drive,
-    "ignition::gazebo::systems::DiffDrive": _gz_diff_drive,
-    "gz-sim-joint-position-controller-system": _gz_joint_position,
-    "gz::sim::systems::JointPositionController": _gz_joint_position,
-    "ignition-gazebo-joint-position-controller-system": _gz_joint_position,
-    "ignition::gazebo::systems::JointPositionController": _gz_joint_position,
-    "gz-sim-joint-controller-system": _gz_joint_velocity,
-    "gz::sim::systems::JointController": _gz_joint_velocity,
-    "ignition-gazebo-joint-controller-system": _gz_joint_velocity,
-    "ignition::gazebo::systems::JointController": _gz_joint_velocity,
-    "gazelle_joint_commands": _joint_commands,
-    "gazebo_ros_p3d": _p3d,
-    "gazebo_ros_ft_sensor": _force_torque,  # a model plugin naming a <joint_name>
-    "gazebo_ros_imu": _imu,  # ROS 1's IMU model plugin (<bodyName>), as in TurtleBot3's noetic xacro
-    # ros2_control's simulator plugins: the controller manager (a robot with <ros2_control> and no such
-    # tag gets one too, see Simulation)
-    "gazebo_ros2_control": _controller_manager,
-    "gz_ros2_control-system": _controller_manager,
-    "gz_ros2_control::GazeboSimROS2ControlPlugin": _controller_manager,
-    "ign_ros2_control-system": _controller_manager,
-    "ign_ros2_control::IgnitionROS2ControlPlugin": _controller_manager,
-}
+@functools.cache
+def _registry() -> dict[str, type[System]]:
+    return plugin_table()
 
 
 def _gz_spellings(name: str, file: str = "") -> tuple[str, ...]:
@@ -303,32 +269,29 @@ def plan_sensors(
 
 def supported_plugins() -> list[str]:
     """Plugin file names (normalised) with an implementation."""
-    return sorted(_REGISTRY)
+    return sorted(_registry())
 
 
 def plugin_factories() -> dict[str, Callable[[], System]]:
     """Every plugin name gazelle runs -> a factory of its system: the model and world plugins, then the
     gazebo_ros plugins that sit inside a ``<sensor>`` (the plugin reference, scripts/gen_plugin_docs.py)."""
-    out = dict(_REGISTRY)
+    out: dict[str, Callable[[], System]] = dict(_registry())
     out.update({name: factory for name, (factory, _types) in _sensor_tables()[0].items()})
     return out
 
 
 def create_system(plugin: Plugin) -> System | None:
     """A new system for ``plugin``, or None if unsupported (:func:`audit_model` says why)."""
-    factory = _REGISTRY.get(_normalise(plugin.filename)) or _REGISTRY.get(_normalise(plugin.name))
-    return factory() if factory is not None else None
+    registry = _registry()
+    cls = registry.get(_normalise(plugin.filename)) or registry.get(_normalise(plugin.name))
+    return cls() if cls is not None else None
 
 
-_CONTROL_PLUGINS = frozenset(
-    {
-        "gazebo_ros2_control",
-        "gz_ros2_control-system",
-        "gz_ros2_control::GazeboSimROS2ControlPlugin",
-        "ign_ros2_control-system",
-        "ign_ros2_control::IgnitionROS2ControlPlugin",
-    }
-)
+def _control_plugins() -> frozenset[str]:
+    """The names of ros2_control's simulator plugins (the controller manager's declaration)."""
+    from .ros2_control import ControllerManager
+
+    return frozenset(plugin_names(ControllerManager))
 
 
 # Plugins gazelle knows but does not simulate yet, and what to say about them.
@@ -361,7 +324,7 @@ classic services)."""
 
 def _known_names() -> list[str]:
     sensor_plugins, gz_world_systems = _sensor_tables()
-    return sorted({*_REGISTRY, *sensor_plugins, *gz_world_systems, *_NOT_YET, *BUILT_IN_WORLD_SYSTEMS})
+    return sorted({*_registry(), *sensor_plugins, *gz_world_systems, *_NOT_YET, *BUILT_IN_WORLD_SYSTEMS})
 
 
 _FAMILY_PARTS = ("gz::sim::systems::", "ignition::gazebo::systems::", "ignition-gazebo-", "gz-sim-", "gazebo_ros_")
@@ -410,7 +373,8 @@ def _display(name: str) -> str:
 def plugin_problem(plugin: Plugin, *, world: bool = False) -> str | None:
     """Why ``plugin`` will not run (unsupported, not yet, a likely typo), or None when it runs or is built in."""
     key_f, key_n = _normalise(plugin.filename), _normalise(plugin.name)
-    if key_f in _REGISTRY or key_n in _REGISTRY or key_f == RSP_PLUGIN:
+    registry = _registry()
+    if key_f in registry or key_n in registry or key_f == RSP_PLUGIN:
         return None  # (the built-in robot_state_publisher's options are read by the runtime)
     if key_f in BUILT_IN_WORLD_SYSTEMS or key_n in BUILT_IN_WORLD_SYSTEMS:
         return None
@@ -435,12 +399,9 @@ def audit_model(model: Model, world_plugins: tuple[Plugin, ...] | None = None) -
         if problem is not None:
             out.append(Diagnostic(ErrorCode.PLUGIN_UNSUPPORTED, Severity.WARNING, problem, plugin.location))
     out.extend(plan_sensors(model, world_plugins)[1])
-    if not model.ros2_control and any(
-        _normalise(p.filename) in _CONTROL_PLUGINS or p.name in _CONTROL_PLUGINS for p in model.plugins
-    ):
-        plugin = next(
-            p for p in model.plugins if _normalise(p.filename) in _CONTROL_PLUGINS or p.name in _CONTROL_PLUGINS
-        )
+    control = _control_plugins()
+    if not model.ros2_control and any(_normalise(p.filename) in control or p.name in control for p in model.plugins):
+        plugin = next(p for p in model.plugins if _normalise(p.filename) in control or p.name in control)
         out.append(
             Diagnostic(
                 ErrorCode.ELEMENT_UNSUPPORTED,

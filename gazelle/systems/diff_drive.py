@@ -216,6 +216,8 @@ class _Wheel:
 class DiffDrive(System):
     """The classic gazebo_ros differential drive."""
 
+    plugin_files = ("gazebo_ros_diff_drive",)
+
     def __init__(self) -> None:
         self.config = DiffDriveConfig()
         self.log = logging.getLogger("diff_drive")

@@ -201,6 +201,8 @@ def parse_config(ctx: SystemContext, log: logging.Logger) -> GzDiffDriveConfig:
 class GzDiffDrive(System):
     """gz-sim's DiffDrive: limiters every step, encoder odometry, ``/model/<model>/…`` topics."""
 
+    gz_plugin = "DiffDrive"
+
     def __init__(self) -> None:
         self.config = GzDiffDriveConfig()
         self.log = logging.getLogger("DiffDrive")

@@ -218,6 +218,8 @@ class JointPositionControllerConfig:
 class JointPositionController(_ServoGroup):
     """gz-sim JointPositionController (``gz-sim-joint-position-controller-system``)."""
 
+    gz_plugin = "JointPositionController"
+
     def __init__(self) -> None:
         super().__init__()
         self.config = JointPositionControllerConfig()
@@ -290,6 +292,8 @@ class JointControllerConfig:
 class JointController(_ServoGroup):
     """gz-sim JointController (``gz-sim-joint-controller-system``): joint velocity from std_msgs/Float64."""
 
+    gz_plugin = "JointController"
+
     def __init__(self) -> None:
         super().__init__()
         self.config = JointControllerConfig()
@@ -352,6 +356,8 @@ class JointCommandsConfig:
 
 class JointCommands(_Controlled):
     """Classic-style position or velocity command topics, one per joint, effort-limited by ``<limit><effort>``."""
+
+    plugin_files = ("gazelle_joint_commands",)
 
     def __init__(self) -> None:
         super().__init__()

@@ -102,6 +102,8 @@ def parse_config(ctx: SystemContext, log: logging.Logger) -> P3dConfig:
 class P3D(System):
     """Publishes a link's ground-truth pose and twist as nav_msgs/Odometry."""
 
+    plugin_files = ("gazebo_ros_p3d",)
+
     def __init__(self, seed: int | None = None) -> None:
         self.config = P3dConfig()
         self._pub: Endpoint | None = None

@@ -204,9 +204,12 @@ class JointStateConfig:
 
 
 class JointStatePublisher(System):
-    """Publishes sensor_msgs/JointState (name, position, velocity; effort empty) in sim time."""
+    """Publishes sensor_msgs/JointState (name, position, velocity; effort empty) in sim time: gazebo_ros's
+    plugin, which publishes only the ``<joint_name>`` joints it is given."""
 
-    def __init__(self, *, all_by_default: bool) -> None:
+    plugin_files = ("gazebo_ros_joint_state_publisher",)
+
+    def __init__(self, *, all_by_default: bool = False) -> None:
         self.all_by_default = all_by_default
         self.config = JointStateConfig()
         self._pub: Endpoint | None = None
@@ -269,3 +272,12 @@ class JointStatePublisher(System):
                 tuple(j.velocity for j in self._handles),
             )
         )
+
+
+class GzJointStatePublisher(JointStatePublisher):
+    """gz-sim's JointStatePublisher: without ``<joint_name>`` it publishes every joint of the model that moves."""
+
+    gz_plugin = "JointStatePublisher"
+
+    def __init__(self) -> None:
+        super().__init__(all_by_default=True)

@@ -153,7 +153,7 @@ def test_a_bonded_spawn_deletes_its_entity_when_interrupted(world, sig):
 
 def test_package_to_model_rewrites_package_mesh_uris_only():
     """spawn_entity.py's -package_to_model: ``package://`` mesh filenames become ``model://``; others stay."""
-    from gazelle.ros._spawn import _package_to_model
+    from gazelle.ros._spawn_entity import _package_to_model
 
     urdf = (
         '<robot name="r"><link name="a"><visual><geometry><mesh filename="package://arm/meshes/a.dae"/>'

@@ -261,7 +261,7 @@ def test_ros_clients_do_not_import_the_simulation() -> None:
     code = (
         "import sys\n"
         "from gazelle.ros import arm_main, spawn_main, spawner_main\n"
-        "import gazelle.ros._arm_cli, gazelle.ros._spawn, gazelle.ros._spawner\n"
+        "import gazelle.ros._arm_cli, gazelle.ros._spawn_entity, gazelle.ros._controller_spawner\n"
         "print(sorted(m for m in ('mujoco', 'gazelle.sim', 'gazelle.ros._bridge') if m in sys.modules))"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)

@@ -8,7 +8,7 @@ from types import SimpleNamespace
 
 import pytest
 
-from gazelle.ros import _spawn
+from gazelle.ros import _spawn_entity as _spawn
 
 UNKNOWN = "_NODE_NAME_UNKNOWN_"  # what rmw_dds_common's graph cache calls a node it has not heard of
 

@@ -306,6 +306,99 @@ def test_p3d_publishes_ground_truth_with_offsets() -> None:
     assert twist.linear[0] == pytest.approx(0.2, rel=0.05)
 
 
+# --------------------------------------------------------------------------- plugin declarations
+# the 28 names the hand-kept table held before the systems declared them (issue 32)
+KNOWN_PLUGIN_NAMES = {
+    "gazebo_ros_diff_drive": "DiffDrive",
+    "gazebo_ros_joint_state_publisher": "JointStatePublisher",
+    **dict.fromkeys(
+        (
+            "gz-sim-joint-state-publisher-system",
+            "gz::sim::systems::JointStatePublisher",
+            "ignition-gazebo-joint-state-publisher-system",
+            "ignition::gazebo::systems::JointStatePublisher",
+        ),
+        "GzJointStatePublisher",
+    ),
+    **dict.fromkeys(
+        (
+            "gz-sim-diff-drive-system",
+            "gz::sim::systems::DiffDrive",
+            "ignition-gazebo-diff-drive-system",
+            "ignition::gazebo::systems::DiffDrive",
+        ),
+        "GzDiffDrive",
+    ),
+    **dict.fromkeys(
+        (
+            "gz-sim-joint-position-controller-system",
+            "gz::sim::systems::JointPositionController",
+            "ignition-gazebo-joint-position-controller-system",
+            "ignition::gazebo::systems::JointPositionController",
+        ),
+        "JointPositionController",
+    ),
+    **dict.fromkeys(
+        (
+            "gz-sim-joint-controller-system",
+            "gz::sim::systems::JointController",
+            "ignition-gazebo-joint-controller-system",
+            "ignition::gazebo::systems::JointController",
+        ),
+        "JointController",
+    ),
+    "gazelle_joint_commands": "JointCommands",
+    "gazebo_ros_p3d": "P3D",
+    "gazebo_ros_ft_sensor": "ForceTorqueSensor",
+    "gazebo_ros_imu": "ImuSensor",
+    **dict.fromkeys(
+        (
+            "gazebo_ros2_control",
+            "gz_ros2_control-system",
+            "gz_ros2_control::GazeboSimROS2ControlPlugin",
+            "ign_ros2_control-system",
+            "ign_ros2_control::IgnitionROS2ControlPlugin",
+        ),
+        "ControllerManager",
+    ),
+}
+
+
+def test_the_plugin_table_is_derived_from_the_systems_declarations() -> None:
+    from gazelle.systems._registry import plugin_table
+
+    assert {name: cls.__name__ for name, cls in plugin_table().items()} == KNOWN_PLUGIN_NAMES
+
+
+def test_a_gz_system_declared_by_its_class_name_answers_to_every_gz_and_ignition_spelling() -> None:
+    from gazelle.systems._registry import plugin_names
+
+    class LiftDrag(System):
+        gz_plugin = "LiftDrag"
+
+    class Classic(System):
+        plugin_files = ("gazebo_ros_thing",)
+        gz_plugin = "NavSat"
+        gz_plugin_file = "navsat"
+
+    assert plugin_names(LiftDrag) == (
+        "gz-sim-lift-drag-system",
+        "gz::sim::systems::LiftDrag",
+        "ignition-gazebo-lift-drag-system",
+        "ignition::gazebo::systems::LiftDrag",
+    )
+    assert plugin_names(Classic)[:2] == ("gazebo_ros_thing", "gz-sim-navsat-system")
+
+
+def test_a_plugin_declared_twice_or_a_listed_system_without_a_name_is_refused() -> None:
+    from gazelle.systems._registry import plugin_table
+
+    with pytest.raises(ValueError, match="'gazebo_ros_diff_drive' is declared by DiffDrive and DiffDrive"):
+        plugin_table(("diff_drive:DiffDrive", "diff_drive:DiffDrive"))
+    with pytest.raises(ValueError, match="robot_state:RobotStatePublisher declares no plugin name"):
+        plugin_table(("robot_state:RobotStatePublisher",))
+
+
 # --------------------------------------------------------------------------- docs
 def test_plugin_docs_are_up_to_date() -> None:
     out = subprocess.run(

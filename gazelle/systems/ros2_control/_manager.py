@@ -124,6 +124,16 @@ class _Loaded:
 class ControllerManager(System):
     """See the module docstring."""
 
+    # gazebo_ros2_control (Classic), gz_ros2_control and its Ignition-era name, by file and by class; a robot
+    # with a <ros2_control> block and none of these gets one too (see Simulation)
+    plugin_files = (
+        "gazebo_ros2_control",
+        "gz_ros2_control-system",
+        "gz_ros2_control::GazeboSimROS2ControlPlugin",
+        "ign_ros2_control-system",
+        "ign_ros2_control::IgnitionROS2ControlPlugin",
+    )
+
     def __init__(self, extra_param_files: tuple[str, ...] = ()) -> None:
         self.name = "controller_manager"
         self.namespace = ""

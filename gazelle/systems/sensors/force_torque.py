@@ -66,6 +66,7 @@ class ForceTorqueSensor(System):
     classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {}
     gz_system = "ForceTorque"
     gz_file = ""
+    plugin_files = ("gazebo_ros_ft_sensor",)  # a model plugin naming a <joint_name>
 
     def __init__(self, seed: int | None = None) -> None:
         self.config = ForceTorqueConfig()

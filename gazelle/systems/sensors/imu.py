@@ -78,6 +78,7 @@ class ImuSensor(_SensorSystem):
     sdf_types = frozenset({"imu"})
     classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {"gazebo_ros_imu_sensor": None}
     gz_system = "Imu"
+    plugin_files = ("gazebo_ros_imu",)  # ROS 1's IMU model plugin (<bodyName>), as in TurtleBot3's noetic xacro
     output_kind = "imu"
 
     kind = "IMU"

@@ -333,7 +333,7 @@ def _entity_xml(node: Node, executor: SingleThreadedExecutor, args: argparse.Nam
 def _give_params_files(node: Node, executor: SingleThreadedExecutor, args: argparse.Namespace, timeout: float) -> bool:
     """``--ros-args --params-file``: the files given to the robot's controller manager; True if that failed
     (said why)."""
-    from ._spawner import give_params_files
+    from ._controller_spawner import give_params_files
 
     robot_ns = args.robot_namespace.strip("/")
     manager = f"/{robot_ns}/controller_manager" if robot_ns else "/controller_manager"
