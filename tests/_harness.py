@@ -20,6 +20,7 @@ from typing import Any
 
 import pytest
 import rclpy
+import rclpy.context
 from _paths import REPO, SEED_XACRO  # noqa: F401 - the ros and viewer tests import them from here
 from _ros_domain import reserved_domain_id
 
@@ -116,7 +117,7 @@ class RosClient:
         # at 100 Hz each plus service replies falls behind and drops most of them; one thread keeps up.
         from rclpy.executors import SingleThreadedExecutor
 
-        self.context = rclpy.Context()
+        self.context = rclpy.context.Context()
         rclpy.init(context=self.context)
         self.node = rclpy.create_node(name, context=self.context)
         self.executor = SingleThreadedExecutor(context=self.context)
@@ -194,9 +195,13 @@ def yaw_of(q: Any) -> float:
 
 
 def xacro_to_urdf(path: Path) -> str:
+    from xml.dom.minidom import Document
+
     import xacro
 
-    return xacro.process_file(str(path)).toxml()
+    document = xacro.process_file(str(path))
+    assert isinstance(document, Document)  # (xacro's annotation says a file)
+    return document.toxml()
 
 
 @pytest.fixture(scope="session", autouse=True)

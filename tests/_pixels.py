@@ -103,7 +103,7 @@ def open_replay(path: Any) -> Any:
         with sync_playwright() as pw:
             browser = pw.chromium.launch(executable_path=find_chromium(), headless=True, args=list(CHROMIUM_ARGS))
             try:
-                page = browser.new_page(viewport=VIEWPORT)  # pyright: ignore[reportArgumentType]
+                page = browser.new_page(viewport=VIEWPORT)
                 page.goto(path.as_uri())
                 page.wait_for_function("() => window.gazelleReplay !== undefined")
                 yield ReplayPage(page)

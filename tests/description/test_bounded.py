@@ -75,6 +75,7 @@ def test_a_helper_that_dies_is_replaced_and_the_request_retried(tmp_path) -> Non
     worker = BoundedWorker(_handler)
     try:
         pid = worker.call({"kind": "pid"}, what="t")
+        assert isinstance(pid, int)
         os.kill(pid, signal.SIGKILL)  # killed between two requests
         assert worker.call({"kind": "echo", "value": 1}, what="t") == 1
         assert worker.call({"kind": "die-once", "marker": str(tmp_path / "m")}, what="t") == "survived"

@@ -61,7 +61,7 @@ def test_comments_with_double_hyphens_are_accepted_with_a_warning(tmp_path: Path
     result = load(f)
     if suffix == ".sdf":
         warnings = [d for d in result.diagnostics if "'--'" in d.message]
-        assert [d.location.line for d in warnings] == [3]
+        assert [d.location and d.location.line for d in warnings] == [3]
     else:
         assert result.model.links[0].name == "a"
 

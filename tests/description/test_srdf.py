@@ -82,7 +82,7 @@ def test_references_unknown_elements_and_multi_dof_values():
         f"{DATA / 'references_and_unknown.srdf'}:8: warning: [SRDF_REFERENCE_INVALID] group_state 'home' refers to unknown group 'QQQleg'",
         f"{DATA / 'references_and_unknown.srdf'}:11: warning: [SRDF_REFERENCE_INVALID] end_effector 'ee' group 'QQQgripper' is not a defined group",
     ]
-    assert result.value.passive_joints == ("finger_mimic", "caster")
+    assert result.semantics.passive_joints == ("finger_mimic", "caster")
     text = '<robot name="r"><group name="g"><joint name="base"/></group><group_state name="s" group="g"><joint name="base" value="1 2 0.5"/></group_state></robot>'
     assert load_string(text, format="srdf").semantics.group_states[0].joint_values == (("base", (1.0, 2.0, 0.5)),)
 

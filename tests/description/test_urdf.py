@@ -183,7 +183,8 @@ def test_massless_links_follow_sdformat(make_sim) -> None:
     model = result.model
     assert sorted(lk.name for lk in model.links) == ["base_footprint", "base_link", "laser_frame"]
     assert sorted(j.name for j in model.joints) == ["fp", "laser"]
-    assert model.link("base_link").inertial.mass == 2.0  # never made up from the collision volume
+    inertial = model.link("base_link").inertial
+    assert inertial is not None and inertial.mass == 2.0  # never made up from the collision volume
     [warning] = [d for d in result.diagnostics if d.code.value == "INERTIA_MISSING"]
     assert "link 'arm'" in warning.message and "'shoulder'" in warning.message and "hand" in warning.message
     # and it simulates: the merged root carries the mass

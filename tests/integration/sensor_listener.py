@@ -11,6 +11,7 @@ import json
 import sys
 
 import rclpy
+import rclpy.utilities
 from gazebo_msgs.msg import ContactsState
 from geometry_msgs.msg import Vector3Stamped, WrenchStamped
 from rclpy.qos import qos_profile_sensor_data
@@ -93,7 +94,7 @@ def main() -> None:
         # SensorDataQoS (best effort) matches the simulator's reliable writers, as RViz and SLAM do
         node.create_subscription(TYPES[kind], topic, cb, qos_profile_sensor_data)
     print(json.dumps({"ready": True}), flush=True)
-    while rclpy.ok() and any(n < count for n in got.values()):
+    while rclpy.utilities.ok() and any(n < count for n in got.values()):
         rclpy.spin_once(node, timeout_sec=0.5)
     node.destroy_node()
     rclpy.shutdown()

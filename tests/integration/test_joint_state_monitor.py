@@ -5,6 +5,8 @@ dropped there and by robot_state_publisher, as MoveIt and robot_state_publisher 
 
 from __future__ import annotations
 
+from typing import cast
+
 import pytest
 from _harness import RosClient, wait_for
 
@@ -94,7 +96,7 @@ def test_robot_state_publisher_ignores_a_message_whose_names_and_positions_diffe
     ros.executor.add_node(rsp)
     heard: list[list[str]] = []
     tf = ros.node.create_subscription(
-        TFMessage, "/tf", lambda m: heard.append([t.child_frame_id for t in m.transforms]), 10
+        TFMessage, "/tf", lambda m: heard.append([t.child_frame_id for t in cast(TFMessage, m).transforms]), 10
     )
     try:
         pub = ros.node.create_publisher(JointState, "/joint_states", 10)

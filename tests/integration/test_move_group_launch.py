@@ -63,7 +63,7 @@ def test_a_moveit_style_launch_file_starts_move_group_with_the_configs_parameter
     from moveit_msgs.msg import Constraints, JointConstraint
 
     goal = [*READY[:3], -1.8, *READY[4:]]
-    mp.goal_constraints.append(
+    mp.goal_constraints = [
         Constraints(
             joint_constraints=[
                 JointConstraint(
@@ -72,7 +72,7 @@ def test_a_moveit_style_launch_file_starts_move_group_with_the_configs_parameter
                 for i, v in enumerate(goal)
             ]
         )
-    )
+    ]
     res = ros.call(GetMotionPlan, "/plan_kinematic_path", req, timeout=30).motion_plan_response
     assert res.error_code.val == MoveItErrorCodes.SUCCESS, res.error_code.message
     points = res.trajectory.joint_trajectory.points

@@ -20,7 +20,7 @@ from control_msgs.action import FollowJointTrajectory
 from controller_manager_msgs.srv import ListControllers, ListHardwareInterfaces, SwitchController
 from geometry_msgs.msg import TwistStamped
 from nav_msgs.msg import Odometry
-from rclpy.action import ActionClient
+from rclpy.action.client import ActionClient
 from sensor_msgs.msg import JointState
 from simulation_interfaces.msg import SimulationState
 from simulation_interfaces.srv import SetSimulationState, StepSimulation
@@ -166,11 +166,13 @@ def test_r6bot_follows_a_trajectory_holds_and_aborts_on_path_tolerance(sim_facto
     def goal(points: list[tuple[float, list[float]]], path_tol: float = 0.0) -> FollowJointTrajectory.Goal:
         g = FollowJointTrajectory.Goal()
         g.trajectory.joint_names = names
+        trajectory_points = []
         for t, q in points:
             p = JointTrajectoryPoint(positions=q)
             p.time_from_start.sec = int(t)
             p.time_from_start.nanosec = int((t - int(t)) * 1e9)
-            g.trajectory.points.append(p)
+            trajectory_points.append(p)
+        g.trajectory.points = trajectory_points
         if path_tol:
             from control_msgs.msg import JointTolerance
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 import sys
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -214,7 +215,9 @@ def test_a_clock_that_goes_back_clears_the_window_and_starts_from_the_measured_s
     would otherwise stand for the robot's state for as long as that line was ahead (in-process: the node's
     clock set by hand, its output caught)."""
     import rclpy
+    import rclpy.context
     from geometry_msgs.msg import TwistStamped
+    from rclpy.clock import ROSClock
     from rclpy.parameter import Parameter
     from rclpy.time import Time
     from sensor_msgs.msg import JointState
@@ -222,7 +225,7 @@ def test_a_clock_that_goes_back_clears_the_window_and_starts_from_the_measured_s
     from gazelle.description import read_description_file
     from gazelle.ros._servo_node import ServoNode
 
-    context = rclpy.Context()
+    context = rclpy.context.Context()
     rclpy.init(context=context, domain_id=0)
     try:
         overrides = [
@@ -234,11 +237,16 @@ def test_a_clock_that_goes_back_clears_the_window_and_starts_from_the_measured_s
         ]
         node = ServoNode(overrides, context=context)
         sent = []
-        node._out.publish = sent.append  # the trajectories, caught
+
+        def caught(msg: Any) -> None:  # the trajectories, caught instead of published
+            sent.append(msg)
+
+        node._out.publish = caught
         ready = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785]
         node._on_joints(JointState(name=[f"panda_joint{i}" for i in range(1, 8)], position=ready))
         node.command_type = 1
         clock = node.get_clock()
+        assert isinstance(clock, ROSClock)  # use_sim_time: a clock whose time can be set
 
         def cycle_at(seconds: float) -> None:
             clock.set_ros_time_override(Time(seconds=seconds, clock_type=clock.clock_type))

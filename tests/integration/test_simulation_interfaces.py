@@ -17,7 +17,7 @@ import pytest
 from _harness import GAZELLE, SEED_XACRO, Proc, RosClient, start, wait_for, xacro_to_urdf
 from action_msgs.msg import GoalStatus
 from geometry_msgs.msg import PoseStamped
-from rclpy.action import ActionClient
+from rclpy.action.client import ActionClient
 from simulation_interfaces.action import SimulateSteps
 from simulation_interfaces.msg import EntityCategory, Result, SimulationState, SimulatorFeatures
 from simulation_interfaces.msg import SpawnEntity as SpawnEntityMsg

@@ -23,7 +23,7 @@ from _paths import REPO
 from moveit_msgs.action import ExecuteTrajectory, MoveGroup
 from moveit_msgs.msg import Constraints, JointConstraint, MoveItErrorCodes
 from moveit_msgs.srv import GetMotionPlan
-from rclpy.action import ActionClient
+from rclpy.action.client import ActionClient
 from sensor_msgs.msg import JointState
 
 YUMI = REPO / "tests" / "data" / "yumi_like"
@@ -180,11 +180,12 @@ def test_a_shutdown_that_lands_while_the_executor_makes_its_wait_set_ends_move_g
     executor was making its next wait set, and rcl raised "the given context is not valid", printed with
     its traceback. That is an orderly end; an rcl error with the context still up is not."""
     import rclpy
+    import rclpy.context
     from rclpy._rclpy_pybind11 import RCLError
 
     from gazelle.ros._signals import spin_until_shutdown
 
-    context = rclpy.Context()
+    context = rclpy.context.Context()
     rclpy.init(context=context, domain_id=int(os.environ.get("ROS_DOMAIN_ID", "0")))
     node = rclpy.create_node("spin_probe", context=context)
 

@@ -99,6 +99,7 @@ def test_decompositions_are_cached_on_disk(tmp_path: Path, monkeypatch) -> None:
 
 def trimesh_arrays(path: Path) -> tuple[np.ndarray, np.ndarray]:
     m = trimesh.load(path, force="mesh", process=False)
+    assert isinstance(m, trimesh.Trimesh)
     return np.asarray(m.vertices), np.asarray(m.faces)
 
 

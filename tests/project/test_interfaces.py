@@ -23,6 +23,7 @@ from _ros_domain import reserved_domain_id
 DOMAIN_ID = reserved_domain_id()
 
 import rclpy  # noqa: E402
+import rclpy.context  # noqa: E402
 from _paths import REPO  # noqa: E402
 from rclpy.executors import SingleThreadedExecutor  # noqa: E402
 from rclpy.serialization import deserialize_message, serialize_message  # noqa: E402
@@ -207,7 +208,7 @@ def test_spawn_entity_service_round_trip():
     from simulation_interfaces.msg import Result
     from simulation_interfaces.srv import SpawnEntity
 
-    context = rclpy.Context()
+    context = rclpy.context.Context()
     rclpy.init(context=context, domain_id=DOMAIN_ID)
     executor = SingleThreadedExecutor(context=context)
     node = None
@@ -237,6 +238,7 @@ def test_spawn_entity_service_round_trip():
         executor.spin_until_future_complete(future, timeout_sec=10.0)
         assert future.done(), "no response within 10 s"
         response = future.result()
+        assert response is not None
         assert response.result.result == Result.RESULT_OK
         assert response.entity_name == "box_1"
         assert len(seen) == 1

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 import struct
+from typing import Any
 
 import pytest
 from hypothesis import given, settings
@@ -31,15 +32,16 @@ quat = st.tuples(floats, floats, floats, floats)
 poses = st.builds(Pose, vec3, quat)
 
 
-def canon(value: object) -> object:
+def canon(value: Any) -> object:
     """A message as nested tuples, each float64 as its 8 bytes (so NaN equals NaN, and -0.0 is not 0.0)."""
     if hasattr(value, "get_fields_and_field_types"):
-        return tuple((f, canon(getattr(value, f))) for f in value.get_fields_and_field_types())  # type: ignore[attr-defined]
+        return tuple((f, canon(getattr(value, f))) for f in value.get_fields_and_field_types())
     if isinstance(value, float):
         return struct.pack("<d", value)
-    if isinstance(value, (list, tuple)) or hasattr(value, "tolist"):
-        items = value.tolist() if hasattr(value, "tolist") else value  # type: ignore[union-attr]
-        return tuple(canon(v) for v in items)
+    if hasattr(value, "tolist"):  # an array.array or numpy array field
+        return tuple(canon(v) for v in value.tolist())
+    if isinstance(value, (list, tuple)):
+        return tuple(canon(v) for v in value)
     return value
 
 

@@ -137,8 +137,9 @@ def test_a_two_arm_trajectory_goes_to_both_arms_controllers_each_with_its_part()
     part = _move_group_execution._part(trajectory, ["r1", "r2"])
     assert part.joint_names == ["r1", "r2"]
     assert [list(p.positions) for p in part.points] == [[2.0, 4.0], [6.0, 8.0]]
-    assert list(part.points[0].velocities) == [0.2, 0.4] and list(part.points[1].velocities) == []
-    assert part.points[1].time_from_start.sec == 2
+    first, second = list(part.points)
+    assert list(first.velocities) == [0.2, 0.4] and list(second.velocities) == []
+    assert second.time_from_start.sec == 2
 
 
 def test_the_execution_nodes_entities_are_made_on_the_thread_that_spins_it() -> None:

@@ -131,7 +131,7 @@ def test_a_checkpoint_of_another_world_version_or_no_checkpoint_at_all_is_one_cl
     tmp_path: Path, seed_robot_sim: Simulation
 ) -> None:
     path = seed_robot_sim.checkpoint(tmp_path / "a.ckpt")
-    other = load(REAL / "turtlebot3" / "turtlebot3_gazebo" / "worlds" / "empty_world.world").value
+    other = load(REAL / "turtlebot3" / "turtlebot3_gazebo" / "worlds" / "empty_world.world").world
     with pytest.raises(CheckpointError, match="not of the one given"):
         Simulation.from_checkpoint(path, world=other)
     # the same world, given: fine

@@ -113,14 +113,16 @@ def test_a_plugin_that_raises_in_configure_leaves_no_debris(busy_sim: Simulation
 
 
 def test_a_wheel_on_a_fixed_joint_is_named_as_fixed(busy_sim: Simulation, caplog) -> None:
+    from xml.dom.minidom import Document
+
     import xacro
 
     from gazelle.description import SourceLocation  # noqa: F401 - the model is real xacro output
 
-    urdf = (
-        xacro.process_file(str(SEED_XACRO))
-        .toxml()
-        .replace('name="base_right_wheel_joint" type="continuous"', 'name="base_right_wheel_joint" type="fixed"')
+    document = xacro.process_file(str(SEED_XACRO))
+    assert isinstance(document, Document)  # (xacro's annotation says a file)
+    urdf = document.toxml().replace(
+        'name="base_right_wheel_joint" type="continuous"', 'name="base_right_wheel_joint" type="fixed"'
     )
     assert 'type="fixed"' in urdf
     with caplog.at_level(logging.ERROR):
@@ -201,6 +203,7 @@ def test_a_body_spawned_into_the_ground_rises_gently_and_rests(make_sim) -> None
     sim = make_sim()
     sim.spawn(load_string(vehicle).model, name="v", pose=Pose((0.0, 0.0, 0.3)))  # wheel bottoms at -0.2
     top = fastest = 0.0
+    st = sim.world.entity_state("v")
     for _ in range(4000):
         sim.step()
         st = sim.world.entity_state("v")

@@ -89,7 +89,7 @@ def assert_same(a: dict[str, dict[str, np.ndarray]], b: dict[str, dict[str, np.n
 
 def busy_world() -> tuple[Simulation, dict]:
     """A world in motion: the seed robot driving, a box sliding, a ball falling, a pendulum swinging."""
-    models = {"robot": load(SEED_XACRO).value, "box": load_string(BOX).value, "pendulum": load_string(PENDULUM).value}
+    models = {"robot": load(SEED_XACRO).model, "box": load_string(BOX).model, "pendulum": load_string(PENDULUM).model}
     sim = new_simulation()
     robot = sim.spawn(models["robot"], name="robot", pose=Pose((0.0, 0.0, 0.05)))
     next(s for s in robot.systems if isinstance(s, DiffDrive)).command(0.3, 0.5)

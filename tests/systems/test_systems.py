@@ -40,8 +40,10 @@ def seed_urdf(plugin_xml: str) -> str:
 def seed_geometry() -> tuple[float, float]:
     """(wheel separation, wheel radius) of the seed robot, from its classic plugin block."""
     urdf = load(SEED_XACRO).model.urdf
-    sep = float(re.search(r"<wheel_separation>([^<]+)<", urdf).group(1))
-    diam = float(re.search(r"<wheel_diameter>([^<]+)<", urdf).group(1))
+    sep_match = re.search(r"<wheel_separation>([^<]+)<", urdf)
+    diam_match = re.search(r"<wheel_diameter>([^<]+)<", urdf)
+    assert sep_match is not None and diam_match is not None
+    sep, diam = float(sep_match.group(1)), float(diam_match.group(1))
     return sep, diam / 2.0
 
 
@@ -467,11 +469,11 @@ def test_one_rate_gate_for_every_periodic_publisher() -> None:
 def test_did_you_mean_offers_a_typo_its_plugin_and_another_plugin_nothing():
     """Issue 26: `gazelle check` suggested 'gz-sim-diff-drive-system' for gz-sim's LiftDrag (the gz-sim
     names share most of their characters); a typo still gets its plugin."""
-    from gazelle.description import Plugin
+    from gazelle.description import ConfigElement, Plugin
     from gazelle.systems._registry import plugin_problem
 
     def problem(filename: str, name: str = "p") -> str:
-        text = plugin_problem(Plugin(name=name, filename=filename, config=None))
+        text = plugin_problem(Plugin(name=name, filename=filename, config=ConfigElement("plugin")))
         assert text is not None
         return text
 

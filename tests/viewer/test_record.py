@@ -36,6 +36,7 @@ def decode_mp4(path: Path) -> tuple[object, float, list[np.ndarray]]:
         assert stream.codec_context.name == "h264"
         assert stream.codec_context.pix_fmt == "yuv420p"
         assert stream.width % 2 == 0 and stream.height % 2 == 0
+        assert stream.duration is not None and stream.time_base is not None
         duration = float(stream.duration * stream.time_base)
         frames = [f.to_ndarray(format="rgb24").astype(int) for f in container.decode(stream)]
     assert len(frames) == stream.frames
