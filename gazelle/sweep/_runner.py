@@ -194,7 +194,7 @@ class _RosRun:
             return self.fn(self.sim, self.spec.as_dict(), self.spec.seed)
 
     def sim_sec(self) -> float:
-        return float(self.sim.time) if self.sim.ros is not None else 0.0
+        return float(self.sim.time) if self.sim.is_open else 0.0
 
     def finish(self, keep: Path | None) -> dict[str, str]:
         import shutil

@@ -173,7 +173,7 @@ class Sim:
         self.env.pop("ROS_STATIC_PEERS", None)
         self.children: list[ChildProcess] = []
         self._kept = 0
-        self.ros: RosTestNode | None = None
+        self._ros: RosTestNode | None = None
         args = ["sim", *([str(world)] if world is not None else []), "--no-viewer", "--seed", str(seed)]
         if paused:
             args.append("--paused")
@@ -195,7 +195,7 @@ class Sim:
             # node made first, 0.1-0.3 s with it made after)
             if record is not None:
                 self._recorder = self.record(*record)
-            self.ros = RosTestNode(domain_id)
+            self._ros = RosTestNode(domain_id)
             self._kept = len(self.children)
             """The server and its recorder: what a reset keeps running."""
             from simulation_interfaces.srv import StepSimulation
@@ -209,6 +209,22 @@ class Sim:
         except BaseException:
             self.close()
             raise
+
+    @property
+    def ros(self) -> RosTestNode:
+        """The test's own ROS node on this simulation's domain (subscribe, publish, call, wait).
+
+        Raises:
+            SimError: the simulation is closed (or never started).
+        """
+        if self._ros is None:
+            raise SimError("this simulation is closed: its ROS node is gone")
+        return self._ros
+
+    @property
+    def is_open(self) -> bool:
+        """Whether the simulation's ROS node is there (False once :meth:`close` ran)."""
+        return self._ros is not None
 
     # ------------------------------------------------------------------ processes
     def _child(
@@ -267,7 +283,6 @@ class Sim:
     @property
     def time(self) -> float:
         """Sim time as the test has heard it on /clock."""
-        assert self.ros is not None
         return self.ros.sim_time
 
     def _check_server(self) -> None:
@@ -275,7 +290,6 @@ class Sim:
             raise SimError(f"the simulation server exited with {self.server.popen.returncode}:\n{self.server.tail()}")
 
     def _step(self, steps: int, wall_timeout: float) -> None:
-        assert self.ros is not None
         self._check_server()
         req = self._step_srv.Request()
         req.steps = steps
@@ -292,7 +306,6 @@ class Sim:
     def run_for(self, seconds: float, wall_timeout: float = 300.0) -> float:
         """Advance sim time by ``seconds`` (paused server: stepped as fast as possible; running server:
         waited for), then wait until the test has heard /clock get there. Returns the sim time."""
-        assert self.ros is not None
         if seconds < 0 or not math.isfinite(seconds):
             raise ValueError(f"run_for takes a finite time >= 0, got {seconds!r}")
         start = self.ros.sim_time
@@ -341,7 +354,6 @@ class Sim:
         ``settle_timeout``): a node timing its commands on sim time acts within the chunk its time falls
         in however busy the machine is, so a smaller ``step`` (0.01) suits a test of open-loop timing (the
         seed's square), at the cost of more service calls."""
-        assert self.ros is not None
         if not (step > 0 and math.isfinite(step)):
             raise ValueError(f"run_until's step must be a finite time > 0, got {step!r}")
         start, deadline = self.ros.sim_time, time.monotonic() + wall_timeout
@@ -359,7 +371,6 @@ class Sim:
         """Back to the start: sim time 0, the world's own models at their initial state, every entity the
         tests spawned removed (simulation_interfaces' ResetSimulation, SCOPE_ALL), and the processes
         started since the last reset stopped."""
-        assert self.ros is not None
         from simulation_interfaces.srv import ResetSimulation
 
         for child in self.children[self._kept :]:
@@ -420,7 +431,6 @@ class Sim:
     def wait_for_recorder(self, timeout: float = 30.0) -> None:
         """Wait until the recorder has subscribed (it hears /clock beside the test's node), so that the
         first step the test takes is in the bag."""
-        assert self.ros is not None
         node = self.ros.node
         try:
             self.ros.wait_until(lambda: node.count_subscribers("/clock") >= 2, timeout, "the bag recorder on /clock")
@@ -439,9 +449,9 @@ class Sim:
             child.stop()
             if child.popen.returncode not in (0, -signal.SIGINT, 130, signal.SIGINT):
                 killed.append(child.name)
-        if self.ros is not None:
-            self.ros.close()
-            self.ros = None
+        if self._ros is not None:
+            self._ros.close()
+            self._ros = None
         return killed
 
     def env_applied(self) -> contextlib.AbstractContextManager[None]:

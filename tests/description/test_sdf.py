@@ -13,8 +13,13 @@ from _paths import REAL, TEST_DATA
 from gazelle.description import (
     Box,
     Capsule,
+    ConfigElement,
     Cylinder,
+    Inertial,
+    Joint,
+    JointAxis,
     JointType,
+    Link,
     Mesh,
     Model,
     ModelLoadError,
@@ -30,6 +35,25 @@ DATA = TEST_DATA / "sdf"
 TB3 = REAL / "turtlebot3" / "turtlebot3_gazebo"
 GZM = REAL / "gazebo_models" / "models"
 needs_real = pytest.mark.skipif(not REAL.is_dir(), reason="shared real fixtures not available")
+
+
+def inertial_of(link: Link) -> Inertial:
+    """The link's mass properties (every loaded link has them: SDF's default when none are written)."""
+    assert link.inertial is not None
+    return link.inertial
+
+
+def axis_of(joint: Joint) -> JointAxis:
+    """The joint's axis (a joint type that has one)."""
+    assert joint.axis is not None
+    return joint.axis
+
+
+def child(config: ConfigElement, tag: str) -> ConfigElement:
+    """The first ``<tag>`` child of a plugin's or sensor's block, which the test knows is there."""
+    found = config.find(tag)
+    assert found is not None, f"no <{tag}> in <{config.tag}>"
+    return found
 
 
 def resolver(*paths: Path) -> ResourceResolver:
@@ -95,17 +119,22 @@ def test_turtlebot3_burger_structure():
     assert model.joint("caster_back_joint").type is JointType.BALL
     wheel = model.joint("wheel_left_joint")
     assert wheel.type is JointType.REVOLUTE and wheel.axis is not None
-    assert close(wheel.axis.xyz, (0, 0, 1)) and wheel.axis.limit.effort == 20 and wheel.axis.limit.lower is None
+    assert (
+        close(axis_of(wheel).xyz, (0, 0, 1))
+        and axis_of(wheel).limit.effort == 20
+        and axis_of(wheel).limit.lower is None
+    )
     # joint pose is relative to the child link (at the model origin): X_PC = origin * child_offset
     x_pc = wheel.origin * wheel.child_offset
     assert close(x_pc.position, (0, 0, 0)) and close(x_pc.orientation, (1, 0, 0, 0))
     assert close(wheel.origin.position, (0, 0.08, 0.023))
     base = model.link("base_link")
-    assert base.inertial is not None and math.isclose(base.inertial.mass, 0.82573504)
-    assert isinstance(base.visuals[0].geometry, Mesh) and base.visuals[0].geometry.path is not None
-    assert base.visuals[0].geometry.scale == (0.001, 0.001, 0.001)
+    assert base.inertial is not None and math.isclose(inertial_of(base).mass, 0.82573504)
+    geometry = base.visuals[0].geometry
+    assert isinstance(geometry, Mesh) and geometry.path is not None
+    assert geometry.scale == (0.001, 0.001, 0.001)
     # no <inertial>: SDF's default (1 kg, unit inertia), as in Gazebo
-    assert model.link("base_footprint").inertial.mass == 1.0
+    assert inertial_of(model.link("base_footprint")).mass == 1.0
     imu = model.link("imu_link").sensors[0]
     assert (imu.type, imu.update_rate_hz, imu.topic, imu.always_on) == ("imu", 200.0, "imu", True)
     lidar = model.link("base_scan").sensors[0]
@@ -114,11 +143,11 @@ def test_turtlebot3_burger_structure():
     surface = model.link("wheel_left_link").collisions[0].surface
     assert (surface.mu, surface.mu2, surface.kp, surface.kd, surface.soft_erp) == (1e5, 1e5, 1e5, 1.0, 0.2)
     assert surface.fdir1 == (0.0, 0.0, 0.0) and surface.min_depth == 0.001
-    assert model.link("caster_back_link").pose is not None
-    assert close(model.link("caster_back_link").pose.position, (-0.081, 0, -0.004))
+    caster = model.link("caster_back_link")
+    assert caster.pose is not None and close(caster.pose.position, (-0.081, 0, -0.004))
     drive = model.plugins[0]
     assert drive.name == "gz::sim::systems::DiffDrive" and drive.filename == "gz-sim-diff-drive-system"
-    assert drive.config.find("wheel_radius").text == "0.033"
+    assert child(drive.config, "wheel_radius").text == "0.033"
     assert [c.text for c in model.plugins[1].config.findall("joint_name")] == ["wheel_left_joint", "wheel_right_joint"]
 
 
@@ -129,7 +158,7 @@ def test_turtlebot3_burger_sdf14_counts_and_sensor_plugins():
     assert [p.filename for p in model.link("base_scan").sensors[0].plugins] == ["libgazebo_ros_ray_sensor.so"]
     # SDF 1.4: the axis is in the model frame (libsdformat adds use_parent_model_frame);
     # the joint frame is rolled by -1.57 rad, so model z is joint -y.
-    axis = model.joint("wheel_left_joint").axis
+    axis = axis_of(model.joint("wheel_left_joint"))
     assert close(axis.xyz, (0, -math.sin(1.57), math.cos(1.57)))
 
 
@@ -145,7 +174,7 @@ def test_turtlebot3_world_includes_nested_model():
     assert model.static and [lk.name for lk in model.links] == ["ros_symbol::symbol"]
     assert len(model.links[0].collisions) == 15
     assert world.physics.max_step_size_sec == 0.001 and world.physics.real_time_update_rate_hz == 1000
-    assert len(world.plugins) == 5 and world.plugins[3].config.find("render_engine").text == "ogre2"
+    assert len(world.plugins) == 5 and child(world.plugins[3].config, "render_engine").text == "ogre2"
     assert [d for d in result.diagnostics if d.code.value == "URI_UNRESOLVED"] == []
 
 
@@ -155,13 +184,16 @@ def test_gazebo_models_contents():
     ground = load(GZM / "ground_plane/model.sdf", resolver=res).model
     assert ground.static and isinstance(ground.links[0].collisions[0].geometry, Plane)
     assert ground.links[0].collisions[0].surface.mu == 100 and ground.links[0].collisions[0].surface.mu2 == 50
-    assert ground.links[0].visuals[0].material.name == "Gazebo/Grey"
+    material = ground.links[0].visuals[0].material
+    assert material is not None and material.name == "Gazebo/Grey"
     table = load(GZM / "table/model.sdf", resolver=res).model
     assert len(table.links[0].collisions) == 5
     can = load(GZM / "coke_can/model.sdf", resolver=res).model
     mesh = can.links[0].collisions[0].geometry
     assert isinstance(mesh, Mesh) and mesh.path is not None and mesh.path.endswith("coke_can.dae")
-    assert math.isclose(can.links[0].inertial.mass, 0.39) and close(can.links[0].inertial.pose.position, (0, 0, 0.06))
+    assert math.isclose(inertial_of(can.links[0]).mass, 0.39) and close(
+        inertial_of(can.links[0]).pose.position, (0, 0, 0.06)
+    )
     sun = load(GZM / "sun/model-1_2.sdf", resolver=res).world  # <gazebo version="1.2"> root
     assert isinstance(sun, World) and sun.lights[0].type == "directional" and sun.lights[0].cast_shadows
 
@@ -235,7 +267,7 @@ def test_chess_piece_nested_inertial_uses_intended_values():
         f"{DATA / 'chess_piece.sdf'}:7: warning: [INERTIAL_NESTED] link 'link': <inertial> nested inside "
         "<inertial>; using its values as the outer inertial's"
     )
-    inertial = result.model.links[0].inertial
+    inertial = inertial_of(result.model.links[0])
     assert inertial.mass == 0.001 and not inertial.derived
     assert (inertial.ixx, inertial.iyy, inertial.izz, inertial.iyz) == (1.667e-7, 1.667e-8, 1.667e-7, 0.0)
     assert result.model.links[0].collisions[0].surface.mu == 0.4
@@ -259,40 +291,45 @@ def test_namespaced_tags_are_kept_in_plugin_config():
     result = load(DATA / "gz_namespaced.sdf", resolver=resolver())
     assert not result.diagnostics
     config = result.model.plugins[0].config
-    assert config.find("gz::system_priority").text == "-10"
-    legacy = config.find("ignition:legacy")
-    assert legacy.attr("ignition:flag") == "1" and legacy.location.line == 7
+    assert child(config, "gz::system_priority").text == "-10"
+    legacy = child(config, "ignition:legacy")
+    assert legacy.attr("ignition:flag") == "1" and legacy.location is not None and legacy.location.line == 7
 
 
 def test_sdf14_axis_is_in_model_frame():
     # child link yawed by 90°; the joint frame is the child frame; axis 1 0 0 is in the
     # model frame in SDF 1.4, i.e. -y of the joint frame
     joint = load(DATA / "axis_sdf14.sdf", resolver=resolver()).model.joint("j")
-    assert close(joint.axis.xyz, (0, -1, 0))
+    assert close(axis_of(joint).xyz, (0, -1, 0))
     assert close(joint.origin.position, (0, 0, 1)) and close(joint.child_offset.position, (0, 0, 0))
 
 
 def test_sdf16_axis_is_in_joint_frame():
     joint = load(DATA / "axis_sdf16.sdf", resolver=resolver()).model.joint("j")
-    assert close(joint.axis.xyz, (1, 0, 0))
+    assert close(axis_of(joint).xyz, (1, 0, 0))
 
 
 def test_relative_to_degrees_quaternion_and_expressed_in():
     model = load(DATA / "relative_to_degrees.sdf", resolver=resolver()).model
     arm = model.link("arm")
     # mount: x=1 yawed 90°; arm 0.5 above the mount
-    assert close(arm.pose.position, (1, 0, 0.5)) and close(arm.pose.rpy, (0, 0, math.pi / 2))
+    assert arm.pose is not None and close(arm.pose.position, (1, 0, 0.5)) and close(arm.pose.rpy, (0, 0, math.pi / 2))
     joint = model.joint("j")
     assert close(joint.origin.position, (1, 0, 0)) and close(joint.origin.rpy, (0, 0, 0))
     assert close((joint.origin * joint.child_offset).position, (1, 0, 0.5))
-    assert close(joint.axis.xyz, (0, 1, 0))  # joint frame is aligned with the model frame
-    assert (joint.axis.limit.lower, joint.axis.limit.upper, joint.axis.limit.effort, joint.axis.limit.velocity) == (
+    assert close(axis_of(joint).xyz, (0, 1, 0))  # joint frame is aligned with the model frame
+    assert (
+        axis_of(joint).limit.lower,
+        axis_of(joint).limit.upper,
+        axis_of(joint).limit.effort,
+        axis_of(joint).limit.velocity,
+    ) == (
         -1,
         1,
         5,
         2,
     )
-    assert (joint.axis.dynamics.damping, joint.axis.dynamics.friction) == (0.1, 0.2)
+    assert (axis_of(joint).dynamics.damping, axis_of(joint).dynamics.friction) == (0.1, 0.2)
     frames = {f.name: f for f in model.frames}
     assert frames["mount"].attached_to == "base" and close(frames["mount"].pose.rpy, (0, 0, math.pi / 2))
     # no attached_to: attached to the model frame, i.e. the canonical link; pose given relative_to arm
@@ -304,8 +341,9 @@ def test_nested_model_is_flattened_with_scoped_names():
     model = load(DATA / "nested_model.sdf", resolver=resolver()).model
     assert [lk.name for lk in model.links] == ["base", "gripper::palm", "gripper::finger"]
     assert close(model.pose.position, (0, 0, 0.1))
-    assert close(model.link("gripper::palm").pose.position, (1, 0, 0.5))
-    assert close(model.link("gripper::finger").pose.position, (1, 0, 0))
+    palm, finger = model.link("gripper::palm").pose, model.link("gripper::finger").pose
+    assert palm is not None and close(palm.position, (1, 0, 0.5))
+    assert finger is not None and close(finger.position, (1, 0, 0))
     slide = model.joint("gripper::slide")
     assert (slide.parent, slide.child, slide.type) == ("gripper::palm", "gripper::finger", JointType.PRISMATIC)
     assert close((slide.origin * slide.child_offset).position, (0, 0, -0.5))
@@ -340,6 +378,7 @@ def test_world_parent_and_shapes():
     vis = model.link("l").visuals[0]
     assert (
         isinstance(vis.geometry, Cylinder)
+        and vis.material is not None
         and vis.material.diffuse == (1, 0, 0, 1)
         and vis.material.texture == "tex.png"
     )
@@ -348,20 +387,20 @@ def test_world_parent_and_shapes():
 
 def test_inertia_problems_are_warned_and_derived():
     result = load(DATA / "inertia_problems.sdf", resolver=resolver())
-    assert [(d.code.value, d.location.line) for d in result.diagnostics] == [
+    assert [(d.code.value, d.location and d.location.line) for d in result.diagnostics] == [
         ("INERTIA_INVALID", 7),
         ("MASS_INVALID", 13),
         ("INERTIA_MISSING", 18),
         ("INERTIA_INVALID", 26),
     ]
     model = result.model
-    box = model.link("not_pd").inertial
+    box = inertial_of(model.link("not_pd"))
     assert box.derived and box.mass == 2 and math.isclose(box.ixx, 2 * (0.04 + 0.09) / 12)
-    sphere = model.link("zero_mass").inertial
+    sphere = inertial_of(model.link("zero_mass"))
     assert sphere.derived and math.isclose(sphere.mass, 1000 * 4 / 3 * math.pi * 0.001)
-    cyl = model.link("no_inertia").inertial
+    cyl = inertial_of(model.link("no_inertia"))
     assert cyl.derived and math.isclose(cyl.izz, 3 * 0.01 / 2)
-    assert model.link("malformed").inertial.derived  # no collision: a water-density sphere
+    assert inertial_of(model.link("malformed")).derived  # no collision: a water-density sphere
 
 
 def test_mesh_not_found_warns_with_line():
@@ -372,12 +411,12 @@ def test_mesh_not_found_warns_with_line():
         == f"{DATA / 'mesh_missing.sdf'}:7: warning: [MESH_NOT_FOUND] mesh 'meshes/QQQmissing.stl' not found"
     )
     mesh = result.model.links[0].visuals[0].geometry
-    assert mesh.path is None and mesh.scale == (2, 2, 2)
+    assert isinstance(mesh, Mesh) and mesh.path is None and mesh.scale == (2, 2, 2)
 
 
 def test_unsupported_elements_warn():
     result = load(DATA / "unsupported_elements.sdf", resolver=resolver())
-    assert [(d.code.value, d.location.line) for d in result.diagnostics] == [
+    assert [(d.code.value, d.location and d.location.line) for d in result.diagnostics] == [
         ("ELEMENT_UNSUPPORTED", line)
         for line in (4, 5, 7, 8, 9)  # line 6's <spherical_coordinates> is read
     ]
@@ -393,8 +432,9 @@ def test_spherical_coordinates_are_read_for_gps_sensors():
         <elevation>12.5</elevation><heading_deg>15</heading_deg></spherical_coordinates></world></sdf>""",
         format="sdf",
         resolver=resolver(),
-    ).value
+    ).world
     sc = world.spherical_coordinates
+    assert sc is not None
     assert (sc.latitude_deg, sc.longitude_deg, sc.elevation, sc.heading_deg) == (-22.986687, -43.202501, 12.5, 15.0)
     assert load_string('<sdf version="1.9"><world name="w"/></sdf>', format="sdf").world.spherical_coordinates is None
 
@@ -446,7 +486,7 @@ INVALID = [
 def test_invalid_sdf(name, line, code, message):
     err = load_error(name)
     assert [d.format() for d in err.diagnostics] == [f"{DATA / name}:{line}: error: [{code}] {message}"]
-    assert err.first.code.value == code
+    assert err.first is not None and err.first.code.value == code
 
 
 # --------------------------------------------------------------------------- robustness
@@ -515,7 +555,7 @@ def test_collide_without_contact_false_is_read_silently_and_true_collides_with_n
           <surface><contact><collide_without_contact>{flag}</collide_without_contact></contact></surface>
         </collision></link></model></sdf>"""
         result = load_string(text, format="sdf", resolver=resolver())
-        return result.value, [d for d in result.diagnostics if "collide_without_contact" in d.message]
+        return result.model, [d for d in result.diagnostics if "collide_without_contact" in d.message]
 
     quiet, said = model("false")
     assert said == [] and quiet.link("l").collisions[0].surface.collide_bitmask is None
@@ -545,7 +585,9 @@ def test_placement_frame_puts_the_named_frame_at_the_pose_and_a_frame_the_model_
     m, outer = world.models
     assert close(m.pose.position, (1.0, 0.0, -0.7))  # f = base (0.5) + 0.2 lands at z = 0
     inner_base = next(lk for lk in outer.links if lk.name == "inner::base")
-    assert close(inner_base.pose.position, (0.0, 0.0, 0.8))  # inner's f at z = 1 in outer's frame
+    assert inner_base.pose is not None and close(
+        inner_base.pose.position, (0.0, 0.0, 0.8)
+    )  # inner's f at z = 1 in outer's frame
     with pytest.raises(ModelLoadError) as info:
         load_string(_placed("nope"), source="w.sdf")
     text = str(info.value)
@@ -555,6 +597,6 @@ def test_placement_frame_puts_the_named_frame_at_the_pose_and_a_frame_the_model_
     # a file whose root is the model: the same reading
     root = _placed("f").split("\n")
     model_only = '<sdf version="1.8">' + "\n".join(root[1:5]).replace("</model>", "") + "</model></sdf>"
-    assert close(load_string(model_only, source="m.sdf").value.pose.position, (1.0, 0.0, -0.7))
+    assert close(load_string(model_only, source="m.sdf").model.pose.position, (1.0, 0.0, -0.7))
     with pytest.raises(ModelLoadError, match=r"m.sdf:1: error: \[FRAME_INVALID\] placement_frame 'nope'"):
         load_string(model_only.replace('placement_frame="f"', 'placement_frame="nope"'), source="m.sdf")

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from gazelle.description import ErrorCode, ModelLoadError, load, load_string
+from gazelle.description import Box, ErrorCode, Mesh, ModelLoadError, load, load_string
 
 RCE_EXPR = (
     "${python.vars(python.type(()).mro()[-1])['__getattribute__'](xacro.load_yaml, '__globals__')"
@@ -115,7 +115,8 @@ def test_a_users_own_xacro_file_still_expands(tmp_path: Path) -> None:
     )
     model = load(f).model
     assert sorted(lk.name for lk in model.links) == ["a", "b"]
-    assert model.link("b").visuals[0].geometry.size == (0.5, 1.0, 1.0)
+    box = model.link("b").visuals[0].geometry
+    assert isinstance(box, Box) and box.size == (0.5, 1.0, 1.0)
     # ... unless the caller says the file came from a remote request (the viewer's spawn panel)
     with pytest.raises(ModelLoadError) as info:
         load(f, expand_xacro=False)
@@ -202,6 +203,7 @@ def test_a_spawn_string_reads_no_file_outside_the_resource_paths(roots) -> None:
     )
     result = load_string(urdf, resolver=resolver)
     link = result.model.links[0]
-    assert link.visuals[0].geometry.path is None
+    mesh = link.visuals[0].geometry
+    assert isinstance(mesh, Mesh) and mesh.path is None
     messages = " ".join(d.message for d in result.diagnostics)
     assert "outside the folders files may be read from" in messages and "root:" not in messages

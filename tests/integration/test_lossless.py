@@ -17,7 +17,7 @@ from geometry_msgs.msg import Vector3
 from nav_msgs.msg import Odometry
 from std_msgs.msg import UInt64
 
-from gazelle.testing import Sim, reserve_domain
+from gazelle.testing import Sim, SimError, reserve_domain
 
 pytestmark = pytest.mark.slow
 DELAY = 0.003
@@ -61,6 +61,10 @@ def test_every_message_is_published_in_order_and_the_simulation_waits_for_the_pu
         assert wall >= 200 * DELAY, f"2 s of sim in {wall:.2f} s of wall time: it did not wait"
     finally:
         sim.close()
+    # closed: its ROS node is gone, and saying so is one clear error (``ros`` is typed as always there)
+    assert not sim.is_open
+    with pytest.raises(SimError, match="this simulation is closed"):
+        sim.ros.subscribe("/odom", Odometry)
 
 
 def test_drop_when_behind_does_not_wait_and_counts_what_it_dropped() -> None:

@@ -129,7 +129,7 @@ class Panda:
         goal.request.max_velocity_scaling_factor = 1.0
         goal.request.max_acceleration_scaling_factor = 1.0
         goal.request.allowed_planning_time = 5.0
-        goal.request.goal_constraints.append(
+        goal.request.goal_constraints = [
             Constraints(
                 joint_constraints=[
                     JointConstraint(
@@ -138,7 +138,7 @@ class Panda:
                     for n, v in values.items()
                 ]
             )
-        )
+        ]
         return goal
 
 
@@ -203,7 +203,7 @@ def panda(ros_env) -> Iterator[Panda]:
 def _group_states(group: str) -> dict[str, dict[str, float]]:
     root = ET.parse(CONFIG / "panda.srdf").getroot()
     return {
-        gs.get("name"): {j.get("name"): float(j.get("value")) for j in gs.findall("joint")}
+        gs.get("name", ""): {j.get("name", ""): float(j.get("value", "nan")) for j in gs.findall("joint")}
         for gs in root.findall("group_state")
         if gs.get("group") == group
     }
@@ -506,13 +506,13 @@ def test_bad_goals_get_moveit_error_codes_with_messages_nothing_moves_and_the_no
 
     pc = PositionConstraint(link_name="panda_link8")
     pc.header.frame_id = "panda_link0"
-    pc.constraint_region.primitives.append(SolidPrimitive(type=SolidPrimitive.SPHERE, dimensions=[0.001]))
-    far = pc.constraint_region.primitive_poses
+    pc.constraint_region.primitives = [SolidPrimitive(type=SolidPrimitive.SPHERE, dimensions=[0.001])]
     from geometry_msgs.msg import Pose
 
-    far.append(Pose())
-    far[0].position.x, far[0].position.z, far[0].orientation.w = 2.0, 0.5, 1.0
-    unreachable.request.goal_constraints.append(Constraints(position_constraints=[pc]))
+    far = Pose()
+    far.position.x, far.position.z, far.orientation.w = 2.0, 0.5, 1.0
+    pc.constraint_region.primitive_poses = [far]
+    unreachable.request.goal_constraints = [Constraints(position_constraints=[pc])]
     result = panda.action(panda.move, unreachable)
     assert result.error_code.val == MoveItErrorCodes.NO_IK_SOLUTION
     assert result.error_code.message
@@ -526,10 +526,10 @@ def test_bad_goals_get_moveit_error_codes_with_messages_nothing_moves_and_the_no
     jt = beyond.trajectory.joint_trajectory
     jt.joint_names = ARM
     start = [before[j] for j in ARM]
-    jt.points.append(JointTrajectoryPoint(positions=start, time_from_start=Duration(sec=0)))
-    jt.points.append(
-        JointTrajectoryPoint(positions=[*start[:3], 1.0, *start[4:]], time_from_start=Duration(nanosec=500_000_000))
-    )
+    jt.points = [
+        JointTrajectoryPoint(positions=start, time_from_start=Duration(sec=0)),
+        JointTrajectoryPoint(positions=[*start[:3], 1.0, *start[4:]], time_from_start=Duration(nanosec=500_000_000)),
+    ]
     result = panda.action(panda.execute, beyond)
     assert result.error_code.val == MoveItErrorCodes.INVALID_MOTION_PLAN
     assert "panda_joint4" in result.error_code.message

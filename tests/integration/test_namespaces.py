@@ -12,6 +12,7 @@ import math
 import sys
 import threading
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 from _harness import GAZELLE, SEED_XACRO, SQUARE_NODE, start, wait_for, yaw_of
@@ -98,6 +99,7 @@ def test_three_namespaced_robots_keep_separate_odometry_and_tf(sim_factory, ros_
         )
         return json.loads(line)
 
+    frames: list[str] = []
     for ns in ROBOTS:
         ans = wait_for(
             lambda ns=ns: (
@@ -110,11 +112,7 @@ def test_three_namespaced_robots_keep_separate_odometry_and_tf(sim_factory, ros_
         t = truth[ns]
         assert math.dist((x, y, z), (t.position.x, t.position.y, t.position.z)) < 1e-3, (ns, ans, t)
 
-        class Q:
-            pass
-
-        q = Q()
-        q.w, q.x, q.y, q.z = qw, qx, qy, qz
+        q = SimpleNamespace(w=qw, x=qx, y=qy, z=qz)
         assert abs(math.remainder(yaw_of(q) - yaw_of(t.orientation), math.tau)) < 1e-3
         # wheels hang off this robot's own base_link, 0.17 m to each side of it
         lw, rw = ans[f"{ns}/left_wheel"], ans[f"{ns}/right_wheel"]

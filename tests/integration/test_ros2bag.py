@@ -13,6 +13,7 @@ import subprocess
 import sys
 import time
 from pathlib import Path
+from typing import Any
 
 import pytest
 from _harness import GAZELLE, SEED_XACRO, start, wait_for
@@ -20,6 +21,7 @@ from nav_msgs.msg import Odometry
 from rclpy.serialization import deserialize_message
 from websockets.exceptions import InvalidStatus
 from websockets.sync.client import connect
+from websockets.typing import Subprotocol
 
 ROS2 = str(Path(sys.prefix) / "bin" / "ros2")
 LISTENER = str(Path(__file__).with_name("odom_listener.py"))
@@ -93,7 +95,7 @@ def test_record_info_and_play_round_trip_with_a_foxglove_client_watching(sim_fac
     with AnyReader([bag]) as reader:
         assert {c.topic: c.msgcount for c in reader.connections} == counts
         odom = [c for c in reader.connections if c.topic == "/odom"]
-        recorded = [reader.deserialize(raw, c.msgtype) for c, _t, raw in reader.messages(connections=odom)]
+        recorded: list[Any] = [reader.deserialize(raw, c.msgtype) for c, _t, raw in reader.messages(connections=odom)]
     assert len(recorded) == counts["/odom"]
     first, last = recorded[0], recorded[-1]
     # it was driving (on a circle of 1.5 m radius: x alone can shrink), and the stamps are sim time in order
@@ -126,7 +128,7 @@ def _foxglove_client_checks(port: int) -> None:
     """A client speaking the Foxglove WebSocket protocol sees /odom advertised with its schema, subscribes
     and decodes the CDR it gets; a page from a foreign origin is refused, the Foxglove app's accepted."""
     url = f"ws://127.0.0.1:{port}"
-    with connect(url, subprotocols=[PROTOCOL], max_size=None) as ws:
+    with connect(url, subprotocols=[Subprotocol(PROTOCOL)], max_size=None) as ws:
         assert ws.subprotocol == PROTOCOL
         channels: dict[str, dict] = {}
         deadline = time.monotonic() + 20

@@ -12,6 +12,7 @@ import sys
 import threading
 import time
 from pathlib import Path
+from typing import Any
 
 import pytest
 from _harness import GAZELLE, REPO, start, wait_for
@@ -135,7 +136,7 @@ def test_turtlebot3_spawns_drives_and_publishes(case, resources, sim_factory, ro
         lidar = AsyncParameterClient(node, "/gazebo_ros_lds_lfcd_controller")
         assert lidar.wait_for_services(timeout_sec=15)
 
-        def answer(future):
+        def answer(future: Any) -> Any:
             wait_for(future.done, 10, "a parameter service answer")
             return future.result()
 

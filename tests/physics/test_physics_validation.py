@@ -9,13 +9,14 @@ from __future__ import annotations
 
 import math
 import time
+from typing import Any
 
 import numpy as np
 import pytest
 from _paths import SEED_XACRO
 from _sim import new_simulation
 
-from gazelle.description import Pose, load, load_string
+from gazelle.description import Pose, World, load, load_string
 from gazelle.physics._builder import JOINT_ARMATURE
 from gazelle.sim import Simulation
 from gazelle.systems.diff_drive import DiffDrive
@@ -34,8 +35,8 @@ def world_sdf(
     )
 
 
-def make_world(models: str, **kw):  # type: ignore[no-untyped-def]
-    return load_string(world_sdf(models, **kw)).value
+def make_world(models: str, **kw: Any) -> World:
+    return load_string(world_sdf(models, **kw)).world
 
 
 def ball(name: str = "ball", z: float = 10.0, x: float = 0.0) -> str:

@@ -380,8 +380,10 @@ def test_a_moveit_configs_ompl_planning_yaml_becomes_ompl_parameters_that_move_g
 
     params = {p.name: p.value for p in _config_parameters(CONFIG)}
     assert params["ompl.planner_configs.RRTConnectkConfigDefault.type"] == "geometric::RRTConnect"
-    assert "default_planning_response_adapters/AddTimeOptimalParameterization" in params["ompl.response_adapters"]
-    assert "RRTConnectkConfigDefault" in params["ompl.panda_arm.planner_configs"]
+    adapters, configs = params["ompl.response_adapters"], params["ompl.panda_arm.planner_configs"]
+    assert isinstance(adapters, list) and isinstance(configs, list)
+    assert "default_planning_response_adapters/AddTimeOptimalParameterization" in adapters
+    assert "RRTConnectkConfigDefault" in configs
     assert {n.split(".", 1)[0] for n in params if n.startswith("ompl.")} <= PIPELINE_PARAMETERS
     flat = {p.name for p in _flat("ompl", {"good": 1, "bad key": 2, "mixed": [1, "a"], "nested": {"9x": 3}})}
     assert flat == {"ompl.good"}
@@ -769,9 +771,13 @@ def test_a_groups_urdf_is_built_as_moveits_get_urdf_builds_it(planner):
     links = [("link", f"panda_link{i}") for i in range(1, 9)]
     joints = [("joint", f"panda_joint{i}") for i in range(1, 9)]
     assert order == [*links, joints[0], ("link", "panda_link0"), *joints[1:]]
-    assert arm.find("link[@name='panda_link0']").getchildren() == []  # the stub
-    assert arm.find("link[@name='panda_link1']").find("collision") is not None  # copied whole
-    assert arm.find("joint[@name='panda_joint8']").get("type") == "fixed"
+    stub, link1, joint8 = (
+        arm.find(path)
+        for path in ("link[@name='panda_link0']", "link[@name='panda_link1']", "joint[@name='panda_joint8']")
+    )
+    assert stub is not None and len(stub) == 0  # the stub
+    assert link1 is not None and link1.find("collision") is not None  # copied whole
+    assert joint8 is not None and joint8.get("type") == "fixed"
 
     hand = etree.fromstring(group_urdf(urdf, planner.semantics, "hand").encode())
     assert [(e.tag, e.get("name")) for e in hand] == [

@@ -10,6 +10,7 @@ import subprocess
 import sys
 import time
 from pathlib import Path
+from typing import Any, cast
 
 import numpy as np
 import pytest
@@ -156,7 +157,8 @@ def test_a_package_folder_linking_to_etc_is_no_package_but_a_linked_package_is(t
         "</geometry></collision></link></robot>"
     )
     result = load_string(urdf, resolver=resolver)
-    assert result.value.links[0].collisions == () or result.value.links[0].collisions[0].geometry.path is None
+    collisions = result.model.links[0].collisions
+    assert collisions == () or getattr(collisions[0].geometry, "path", None) is None
     assert "root:" not in " ".join(d.message for d in result.diagnostics)
 
 
@@ -274,7 +276,7 @@ def test_sigterm_ends_the_server_while_c_code_holds_the_interpreter(tmp_path: Pa
         proc.kill()
         pytest.fail("the process outlived SIGTERM by 10 s")
     assert time.monotonic() - start < 6.0
-    assert "shutdown did not finish" in proc.stderr.read()
+    assert proc.stderr is not None and "shutdown did not finish" in proc.stderr.read()
 
 
 def test_a_bounded_helper_dies_with_its_parent(tmp_path: Path) -> None:
@@ -472,7 +474,7 @@ def test_a_forged_convex_cache_entry_is_not_trusted(tmp_path: Path, monkeypatch,
         {"key": np.asarray("0" * 64), "p0": slab[:4] * 0.001},  # another mesh's entry
         {"key": np.asarray(key), **{f"p{i}": slab * 0.001 for i in range(100)}},  # too many parts
     ):
-        np.savez(entry, **forged)
+        np.savez(entry, **cast(dict[str, Any], forged))
         _convex._memory.clear()
         _convex._keys.clear()
         caplog.clear()
@@ -483,12 +485,14 @@ def test_a_forged_convex_cache_entry_is_not_trusted(tmp_path: Path, monkeypatch,
     entry.write_bytes(b"x" * (_convex.MAX_ENTRY_BYTES + 1))
     _convex._memory.clear()
     _convex._keys.clear()
-    assert _convex.collision_parts(str(mesh), (1.0, 1.0, 1.0)).source == "computed"
+    parts = _convex.collision_parts(str(mesh), (1.0, 1.0, 1.0))
+    assert parts is not None and parts.source == "computed"
     folder.chmod(0o777)
     _convex._memory.clear()
     _convex._keys.clear()
     caplog.clear()
-    assert _convex.collision_parts(str(mesh), (1.0, 1.0, 1.0)).source == "computed"
+    parts = _convex.collision_parts(str(mesh), (1.0, 1.0, 1.0))
+    assert parts is not None and parts.source == "computed"
     assert "others may write" in caplog.text
 
 

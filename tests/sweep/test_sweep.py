@@ -7,6 +7,7 @@ import json
 import subprocess
 import sys
 from pathlib import Path
+from typing import cast
 
 import pytest
 from _paths import REPO
@@ -202,7 +203,8 @@ def test_the_example_sweep_runs_from_the_command_line_and_its_report_shows_plots
     from PIL import Image
 
     img = Image.open(io.BytesIO(shot)).convert("RGB")
-    bar = sum(1 for px in img.getdata() if abs(px[0] - 0x3B) < 12 and abs(px[1] - 0x7D) < 12 and abs(px[2] - 0xD8) < 12)
+    pixels = cast("list[tuple[int, int, int]]", list(img.get_flattened_data()))
+    bar = sum(1 for r, g, b in pixels if abs(r - 0x3B) < 12 and abs(g - 0x7D) < 12 and abs(b - 0xD8) < 12)
     assert bar > 2000, f"{bar} pixels of the pass-rate bars' blue: the plot did not draw"
 
 

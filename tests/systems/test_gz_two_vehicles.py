@@ -19,7 +19,7 @@ from _sim import new_simulation
 
 from gazelle.description import load_string
 from gazelle.sim import Simulation
-from gazelle.systems._bus import Twist
+from gazelle.systems._bus import Endpoint, Twist
 
 
 def _inertial(m: float, ixx: float, iyy: float, izz: float) -> str:
@@ -69,7 +69,7 @@ def world(limits: str = "", wheel_surface: str = "") -> str:
     )
 
 
-def _endpoints(sim: Simulation) -> dict[tuple[str, bool], object]:
+def _endpoints(sim: Simulation) -> dict[tuple[str, bool], Endpoint]:
     return {(e.topic, e.is_publisher): e for e in sim.bus.endpoints() if e.owner == "vehicle_blue"}
 
 
@@ -100,6 +100,8 @@ def _turn(limits: str, seconds: float) -> tuple[float, float, float, float]:
     sim = new_simulation(load_string(world(limits)).world)
     eps = _endpoints(sim)
     cmd, odom = eps[("/model/vehicle_blue/cmd_vel", False)], eps[("/model/vehicle_blue/odometry", True)]
+    deliver = cmd.callback
+    assert deliver is not None
     odom.add_sink(lambda _payload: None)  # listen to the odometry (nothing is built for nobody)
     sim.step(1000)
     marks = []
@@ -110,7 +112,7 @@ def _turn(limits: str, seconds: float) -> tuple[float, float, float, float]:
                 (_yaw(sim.world.entity_state("vehicle_blue").pose.orientation), _yaw(odom.last.pose.orientation))
             )
         if i % 100 == 0:
-            cmd.callback(Twist(linear=(0.0, 0.0, 0.0), angular=(0.0, 0.0, 1.0)))
+            deliver(Twist(linear=(0.0, 0.0, 0.0), angular=(0.0, 0.0, 1.0)))
         if i < steps:
             sim.step()
 
@@ -143,10 +145,12 @@ def test_the_examples_wheel_surface_drives_at_the_speed_its_odometry_reports(cap
     assert "<rolling_friction>" in caplog.text
     eps = _endpoints(sim)
     cmd, odom = eps[("/model/vehicle_blue/cmd_vel", False)], eps[("/model/vehicle_blue/odometry", True)]
+    deliver = cmd.callback
+    assert deliver is not None
     odom.add_sink(lambda _payload: None)
     track: list[tuple[float, float]] = []
     for _ in range(100):  # 10 s of the command in the file's header
-        cmd.callback(Twist(linear=(0.5, 0.0, 0.0), angular=(0.0, 0.0, 0.05)))
+        deliver(Twist(linear=(0.5, 0.0, 0.0), angular=(0.0, 0.0, 0.05)))
         sim.step(100)
         track.append(sim.world.entity_state("vehicle_blue").pose.position[:2])
     last = track[-40:]  # the last 4 s, up to speed

@@ -18,6 +18,7 @@ from gazelle.systems.ros2_control import (
     ControlError,
     ControllerManager,
     GripperGoal,
+    JointTrajectoryController,
     ParamsError,
     TrajectoryGoal,
     goal_tolerances,
@@ -138,7 +139,9 @@ def test_the_diffbot_holds_still_after_cmd_vel_timeout(make_sim):
     cm = _manager(_diffbot(sim))
     _start(cm, DIFFBOT_YAML, "diffbot_base_controller")
     sim.step(200)
-    sim.bus.inject("/diffbot_base_controller/cmd_vel", MsgType.TWIST_STAMPED, TwistStamped(0.0, "", Twist((0.2,))))
+    sim.bus.inject(
+        "/diffbot_base_controller/cmd_vel", MsgType.TWIST_STAMPED, TwistStamped(0.0, "", Twist((0.2, 0.0, 0.0)))
+    )
     sim.step(2000)  # one command, then 0.5 s cmd_vel_timeout: it stops by itself
     x1 = sim.world.entity_state("diffbot").pose.position[0]
     sim.step(1000)
@@ -160,7 +163,9 @@ def test_two_namespaced_robots_each_have_their_own_manager_and_topics(make_sim):
         if ep.topic == "/r2/diffbot_base_controller/odom":
             ep.add_sink(odom2.append)
     for _ in range(50):
-        sim.bus.inject("/r1/diffbot_base_controller/cmd_vel", MsgType.TWIST_STAMPED, TwistStamped(0, "", Twist((0.2,))))
+        sim.bus.inject(
+            "/r1/diffbot_base_controller/cmd_vel", MsgType.TWIST_STAMPED, TwistStamped(0, "", Twist((0.2, 0.0, 0.0)))
+        )
         sim.step(20)
     assert sim.world.entity_state("r1").pose.position[0] > 0.1
     assert abs(sim.world.entity_state("r2").pose.position[0]) < 1e-3
@@ -286,6 +291,7 @@ def test_panda_loads_with_its_moveit_controllers_yaml_and_its_arm_jtc_moves(monk
     # initial_value from initial_positions.yaml: panda_joint4 starts at -2.356 (not 0)
     assert cm.hardware[0].joints["panda_joint4"].handle.position == pytest.approx(-2.356, abs=0.01)
     jtc = cm.controllers["panda_arm_controller"].controller
+    assert isinstance(jtc, JointTrajectoryController)
     names = tuple(f"panda_joint{i}" for i in range(1, 8))
     target = (0.3, -0.6, 0.2, -2.2, 0.1, 1.7, 0.9)
     goal = TrajectoryGoal(JointTrajectory(0.0, names, (TrajectoryPoint(2.0, target),)))
@@ -565,7 +571,7 @@ def test_humble_style_unstamped_cmd_vel_and_a_hardware_component_switched_off(ma
     assert topics.get("/diffbot_base_controller/cmd_vel_unstamped") is MsgType.TWIST
     assert "/diffbot_base_controller/cmd_vel" not in topics
     for _ in range(50):
-        sim.bus.inject("/diffbot_base_controller/cmd_vel_unstamped", MsgType.TWIST, Twist((0.2,)))
+        sim.bus.inject("/diffbot_base_controller/cmd_vel_unstamped", MsgType.TWIST, Twist((0.2, 0.0, 0.0)))
         sim.step(20)
     assert sim.world.entity_state("diffbot").pose.position[0] > 0.1
     # the hardware component made inactive: its controller is deactivated and the wheels hold

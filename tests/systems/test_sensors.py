@@ -422,7 +422,9 @@ def test_a_camera_sees_a_red_plate_where_its_pose_and_camera_info_project_it_and
     # the plate's centre (2.99 m ahead, 0.4 m left, 0.1 m up from the camera) through K
     u, v = 160 - f * 0.4 / 2.99, 120 - f * 0.1 / 2.99
     assert abs(xs.mean() + 0.5 - u) <= 1.0 and abs(ys.mean() + 0.5 - v) <= 1.0
-    _rgb, depth = cam.render(sim.world, depth=True)
+    frame = cam.render(sim.world, depth=True)
+    assert frame is not None
+    _rgb, depth = frame
     assert depth is not None
     assert abs(depth[120, 160] - 5.9) < 1e-3  # the wall straight ahead
     assert abs(depth[int(v), int(u)] - 2.99) < 1e-3  # the plate, perpendicular to the axis
@@ -685,11 +687,13 @@ def test_a_camera_keeps_rendering_across_recompiles_and_a_deleted_one_frees_its_
     bot = load(REPO / "examples/sensor_bot/sensor_bot.urdf").model
     cam = next(s for s in sim.spawn(bot, name="bot", pose=Pose((0.0, 0.0, 0.07))).systems if isinstance(s, Camera))
     first = cam.render(sim.world, depth=True)
-    assert first is not None and np.isinf(first[1][0, 160])  # the sky
+    assert first is not None and first[1] is not None and np.isinf(first[1][0, 160])  # the sky
     # a wall spawned in front recompiles the model: the renderer follows the new model
     _spawn(sim, _box("wall", (2.1, 0.0, 1.0), (0.2, 6.0, 2.0), "1 0 0 1"), "wall")
     again = cam.render(sim.world, depth=True)
-    assert again is not None and abs(again[1][120, 160] - (2.0 - 0.17)) < 0.01  # the wall, from the camera at x 0.17
+    assert (
+        again is not None and again[1] is not None and abs(again[1][120, 160] - (2.0 - 0.17)) < 0.01
+    )  # the wall, from the camera at x 0.17
     renderer = cam._renderer
     assert renderer is not None and renderer._gl is not None
     sim.delete("bot")
@@ -906,7 +910,9 @@ def test_a_camera_sees_the_worlds_background_where_nothing_is_drawn(
     sim = make_sim(world)
     cam = next(s for s in _spawn(sim, _camera_model(), "cam").systems if isinstance(s, Camera))
     sim.step(1)
-    rgb, depth = cam.render(sim.world, depth=True)
+    frame = cam.render(sim.world, depth=True)
+    assert frame is not None
+    rgb, depth = frame
     assert tuple(int(c) for c in rgb[5, 160]) == expected
     assert depth is not None and math.isinf(
         depth[5, 160]
@@ -971,11 +977,14 @@ def test_a_camera_sees_a_collada_meshs_own_texture_unless_the_visual_gives_a_mat
     # second time round they are in from the start (and its texture's name, freed at delete, is free again)
     for _ in range(2):
         poster = load(tmp_path / "model.sdf")
-        assert poster.value is not None, [d.format() for d in poster.diagnostics]
+        said = [d.format() for d in poster.diagnostics]
+        assert poster.value is not None, said
         sim.spawn(poster.model, name="poster")
         cam = next(s for s in _spawn(sim, _camera_model(hfov=0.6), "cam").systems if isinstance(s, Camera))
         sim.step(1)
-        rgb, _ = cam.render(sim.world, depth=False)
+        frame = cam.render(sim.world, depth=False)
+        assert frame is not None
+        rgb, _ = frame
         # the camera looks along +x: the image's right is the world's -y, the quad's u = 0 side (red)
         left, right = rgb[120, 100].astype(int), rgb[120, 220].astype(int)
         if material:

@@ -500,9 +500,11 @@ def test_a_plan_published_on_display_planned_path_is_drawn_where_the_tool_will_g
     samples = [_tool_at(*q) for q in qs[6:25:3]]  # along the way, away from the arm's own links at rest
     msg = DisplayTrajectory(model_id="arm2", trajectory=[RobotTrajectory()])
     jt = JointTrajectory(joint_names=["j1", "j2"])
-    for i, (a, b) in enumerate(qs):
-        jt.points.append(JointTrajectoryPoint(positions=[float(a), float(b)], time_from_start=Duration(sec=i)))
-    msg.trajectory[0].joint_trajectory = jt
+    jt.points = [
+        JointTrajectoryPoint(positions=[float(a), float(b)], time_from_start=Duration(sec=i))
+        for i, (a, b) in enumerate(qs)
+    ]
+    msg.trajectory = [RobotTrajectory(joint_trajectory=jt)]
     publisher = ros_client_mod.node.create_publisher(DisplayTrajectory, "/display_planned_path", 10)
     hits: list[int] = []
 
@@ -565,7 +567,7 @@ def test_foreign_pages_cannot_open_the_viewer_websocket(page: Any, viewer_sim) -
             self.end_headers()
             self.wfile.write(body)
 
-        def log_message(self, *args: Any) -> None:
+        def log_message(self, format: str, *args: Any) -> None:
             pass
 
     other = http.server.ThreadingHTTPServer(("127.0.0.1", 0), Page)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import subprocess
 import sys
+from typing import Any, cast
 
 import numpy as np
 import pytest
@@ -119,7 +120,7 @@ def _click(handle) -> None:
     from viser._scene_handles import SceneNodePointerEvent
 
     event = SceneNodePointerEvent(
-        client=None,
+        client=cast(Any, None),  # no client: the callbacks under test do not read it
         client_id=0,
         event="click",
         target=handle,
@@ -164,7 +165,9 @@ def test_clicking_an_entity_selects_it_but_not_the_ground_plane_or_collision_ove
         _click(nodes["r1"].visuals[0])  # clicking the selection again keeps it selected
         assert viewer._entity_dd.value == "r1"
         # what follows the dropdown follows the click: pose text, drive target, trail
-        viewer._update_gui(viewer.update())
+        snap = viewer.update()
+        assert snap is not None
+        viewer._update_gui(snap)
         assert viewer._pose_text.value.startswith("x 1.0")
         assert viewer.drive(0.0, 0.0) == 1 and viewer._drive_text.value.startswith("r1:")
         # a static model that was spawned (the chess board) is selectable, and so is each piece
@@ -250,6 +253,7 @@ def test_trail_contacts_and_spawn_from_the_resource_paths(monkeypatch, make_sim)
 def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_path, make_sim) -> None:
     """A robot whose encoder odometry over-reports distance by 10 % (its plugin's wheels are 10 % too big)."""
     import re
+    from xml.dom.minidom import Document
 
     import xacro
     from _paths import BOX
@@ -258,7 +262,9 @@ def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_
     from gazelle.viewer import Viewer
     from gazelle.viewer._overlays import TRAIL_TRUTH
 
-    urdf = xacro.process_file(str(SEED_XACRO)).toxml()
+    document = xacro.process_file(str(SEED_XACRO))
+    assert isinstance(document, Document)  # (xacro's annotation says a file)
+    urdf = document.toxml()
     urdf, n = re.subn(
         r"<wheel_diameter>([\d.]+)</wheel_diameter>",
         lambda m: f"<wheel_diameter>{float(m.group(1)) * 1.1}</wheel_diameter><odometry_source>0</odometry_source>",
@@ -278,7 +284,8 @@ def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_
                 viewer.sample_trail()
 
         def truth_xy() -> tuple[float, float]:
-            return tuple(sim.call(lambda: sim.world.entity_state("r1").pose.position)[:2])  # type: ignore[return-value]
+            x, y, _z = sim.call(lambda: sim.world.entity_state("r1").pose.position)
+            return (x, y)
 
         def pause_and_sample() -> None:  # the trail's last point and the truth at the same instant
             sim.call(lambda: setattr(sim, "paused", True))
