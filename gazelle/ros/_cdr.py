@@ -16,7 +16,7 @@ numpy in one vectorised write, :class:`Template` one message with ``struct.pack_
 
 :func:`raw_serializer` gives the bridge's publisher lanes such a writer for Odometry, TF, Imu and
 JointState; a payload a template cannot take (a stamp beyond builtin_interfaces/Time's 32-bit seconds,
-a NaN stamp) gets None, and the lane builds the message as before. tests/integration/test_cdr.py checks that every
+a NaN stamp) gets None, and the lane builds the message as before. tests/ros/test_cdr.py checks that every
 writer's bytes deserialize to the message the converter builds, for random payloads.
 """
 

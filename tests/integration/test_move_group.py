@@ -746,7 +746,7 @@ def test_gazelle_arm_moves_to_a_named_state_plans_to_a_pose_and_refuses_an_unkno
     assert run.returncode == 0 and "panda_arm: planned in" in run.stdout, run.stdout + run.stderr
 
     before = panda.joints()
-    run = _arm("panda_arm", "--named", "r2home")  # the other refusals are tested in tests/integration/test_arm_cli.py
+    run = _arm("panda_arm", "--named", "r2home")  # the other refusals are tested in tests/ros/test_arm_cli.py
     assert run.returncode == 1
     assert "no named state 'r2home'" in run.stderr and "ready" in run.stderr and "Traceback" not in run.stderr
     after = panda.joints()
