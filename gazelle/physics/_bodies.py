@@ -179,15 +179,17 @@ def _add_joint_dofs(spec: mujoco.MjSpec, body: mujoco.MjsBody, joint: Joint, nam
     elif t is JointType.SCREW:
         add(mujoco.mjtJoint.mjJNT_HINGE, name, axis, False)
         add(mujoco.mjtJoint.mjJNT_SLIDE, name + "#slide", axis, False)
-        pitch = joint.screw_thread_pitch or 1.0
-        eq = spec.add_equality(
+        # SDF 1.10's <screw_thread_pitch>: metres along the axis per revolution (sdformat's joint.sdf; the
+        # description converts the older <thread_pitch>, -2π/pitch rad/m), so the slide moves pitch/2π per
+        # radian: a joint equality slide = pitch/2π · angle (MuJoCo's polynomial data, 12 numbers)
+        pitch = joint.screw_thread_pitch if joint.screw_thread_pitch is not None else 1.0
+        spec.add_equality(
             name=name + "#screw",
             type=mujoco.mjtEq.mjEQ_JOINT,
             name1=name + "#slide",
             name2=name,
-            data=[0, 1.0 / (2 * math.pi * pitch) if pitch else 0, 0, 0, 0] + [0] * 6,
+            data=[0.0, pitch / (2 * math.pi), 0.0, 0.0, 0.0] + [0.0] * 7,
         )
-        del eq
         built.equalities.append(name + "#screw")
     elif t is JointType.PLANAR:
         # plane normal = axis; translate in two orthogonal directions, rotate about the normal

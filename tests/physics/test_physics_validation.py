@@ -252,6 +252,30 @@ def test_revolute_joint_stops_at_its_limit(make_sim) -> None:
     assert qs.max() < 0.4 + 0.01
 
 
+@pytest.mark.parametrize("pitch", [0.01, 0.25])
+def test_a_screw_joint_advances_its_thread_pitch_per_revolution(pitch: float, make_sim) -> None:
+    """SDF 1.10's ``<screw_thread_pitch>`` is metres along the axis per revolution (sdformat's
+    ``joint.sdf``; the older ``<thread_pitch>`` is -2π/pitch rad/m): a nut spun on a fixed bolt, with no
+    gravity, has moved pitch·θ/2π when it has turned θ."""
+    nut = (
+        '<model name="screw"><link name="bolt"/><joint name="pin" type="fixed"><parent>world</parent>'
+        '<child>bolt</child></joint><link name="nut"><inertial><mass>1</mass><inertia><ixx>0.01</ixx>'
+        "<iyy>0.01</iyy><izz>0.01</izz></inertia></inertial></link>"
+        '<joint name="s" type="screw"><parent>bolt</parent><child>nut</child><axis><xyz>0 0 1</xyz></axis>'
+        f"<screw_thread_pitch>{pitch}</screw_thread_pitch></joint></model>"
+    )
+    sim = make_sim(make_world(nut, gravity="0 0 0"))
+    turn, turn_dof = sim.world.joint_address("screw", "s")
+    slide, slide_dof = sim.world.joint_address("screw", "s#slide")
+    sim.world.data.qvel[turn_dof] = 2.0  # rad/s
+    sim.world.data.qvel[slide_dof] = 2.0 * pitch / (2 * math.pi)  # already on the thread
+    for _ in range(500):
+        sim.step()
+    theta, z = float(sim.world.data.qpos[turn]), float(sim.world.data.qpos[slide])
+    assert theta > 0.5
+    assert z == pytest.approx(pitch * theta / (2 * math.pi), rel=0.02, abs=1e-6)
+
+
 # ---------------------------------------------------------------------- static and kinematic
 def test_static_model_does_not_move_under_gravity_or_impact(make_sim) -> None:
     slab = (
