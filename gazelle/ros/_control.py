@@ -44,6 +44,7 @@ from ..systems.ros2_control import (
     UNCONFIGURED,
     ControlError,
     ControllerManager,
+    GoalState,
     GripperActionController,
     GripperGoal,
     JointTrajectoryController,
@@ -345,9 +346,9 @@ class ControllerManagerNode(Node):
             fb = feedback()
             if fb is not None:
                 handle.publish_feedback(fb)
-        if goal.status == "succeeded":
+        if goal.status is GoalState.SUCCEEDED:
             handle.succeed()
-        elif goal.status == "canceled" and handle.is_cancel_requested:
+        elif goal.status is GoalState.CANCELED and handle.is_cancel_requested:
             handle.canceled()
         else:
             handle.abort()

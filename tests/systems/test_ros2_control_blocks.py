@@ -93,11 +93,11 @@ def test_blocks_track_a_goal_as_the_python_cycle_does_cycle_for_cycle(kind):
 
 
 def test_a_path_tolerance_aborts_at_the_same_cycle_with_the_same_message():
-    from gazelle.systems.ros2_control._trajectory import PATH_TOLERANCE_VIOLATED
+    from gazelle.systems.ros2_control import TrajectoryResult
 
     ref, ref_goal, _ = _run(False, "cubic", path_tolerance=2e-4, steps=600)
     got, goal, cm = _run(True, "cubic", path_tolerance=2e-4, steps=600)
-    assert ref_goal.error_code == PATH_TOLERANCE_VIOLATED
+    assert ref_goal.error_code == TrajectoryResult.PATH_TOLERANCE_VIOLATED
     assert (goal.status, goal.error_code, goal.error_string) == (
         ref_goal.status,
         ref_goal.error_code,

@@ -8,12 +8,15 @@ from typing import TYPE_CHECKING
 
 from ..._lazy import lazy_attributes
 
+# Imported when first used: ``gazelle spawner`` reads parameter files (``load_params``) without the hardware,
+# which brings MuJoCo.
 if TYPE_CHECKING:
     from ._controller import ACTIVE as ACTIVE
     from ._controller import FINALIZED as FINALIZED
     from ._controller import INACTIVE as INACTIVE
     from ._controller import UNCONFIGURED as UNCONFIGURED
     from ._controller import Controller as Controller
+    from ._controller import GoalState as GoalState
     from ._gripper import GripperActionController as GripperActionController
     from ._gripper import GripperGoal as GripperGoal
     from ._hardware import ControlError as ControlError
@@ -32,41 +35,15 @@ if TYPE_CHECKING:
     from ._trajectory import JointTrajectoryController as JointTrajectoryController
     from ._trajectory import Tolerance as Tolerance
     from ._trajectory import TrajectoryGoal as TrajectoryGoal
+    from ._trajectory import TrajectoryResult as TrajectoryResult
     from ._trajectory import goal_tolerances as goal_tolerances
 
-_LAZY = {
-    "ACTIVE": ("._controller", "ACTIVE"),
-    "FINALIZED": ("._controller", "FINALIZED"),
-    "INACTIVE": ("._controller", "INACTIVE"),
-    "UNCONFIGURED": ("._controller", "UNCONFIGURED"),
-    "Controller": ("._controller", "Controller"),
-    "GripperActionController": ("._gripper", "GripperActionController"),
-    "GripperGoal": ("._gripper", "GripperGoal"),
-    "ControlError": ("._hardware", "ControlError"),
-    "SimHardware": ("._hardware", "SimHardware"),
-    "BEST_EFFORT": ("._manager", "BEST_EFFORT"),
-    "CONTROLLER_TYPES": ("._manager", "CONTROLLER_TYPES"),
-    "STRICT": ("._manager", "STRICT"),
-    "ControllerManager": ("._manager", "ControllerManager"),
-    "params_file_paths": ("._manager", "params_file_paths"),
-    "valid_controller_name": ("._manager", "valid_controller_name"),
-    "ParamsError": ("._params", "ParamsError"),
-    "ParamsFile": ("._params", "ParamsFile"),
-    "load_params": ("._params", "load_params"),
-    "parse_params": ("._params", "parse_params"),
-    "yaml_problem": ("._params", "yaml_problem"),
-    "JointTrajectoryController": ("._trajectory", "JointTrajectoryController"),
-    "Tolerance": ("._trajectory", "Tolerance"),
-    "TrajectoryGoal": ("._trajectory", "TrajectoryGoal"),
-    "goal_tolerances": ("._trajectory", "goal_tolerances"),
-}
-"""Imported when first used: ``gazelle spawner`` reads parameter files (``load_params``) without the
-hardware, which brings MuJoCo."""
-
-__getattr__ = lazy_attributes(__name__, _LAZY)
+__getattr__ = lazy_attributes(__name__, __file__)
 
 
 __all__ = [
+    "GoalState",
+    "TrajectoryResult",
     "ACTIVE",
     "BEST_EFFORT",
     "CONTROLLER_TYPES",

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import enum
 import functools
 import logging
 import math
@@ -17,6 +18,21 @@ from ._params import Params
 T = TypeVar("T")
 
 UNCONFIGURED, INACTIVE, ACTIVE, FINALIZED = "unconfigured", "inactive", "active", "finalized"
+
+
+class GoalState(enum.StrEnum):
+    """Where an action goal that a controller runs stands. The controller moves it from PENDING to
+    EXECUTING when the goal starts to act, and ends it in one of the other three; the ROS layer answers
+    the action client with the matching action_msgs/GoalStatus (succeed, abort or canceled). A string
+    enum: it reads as its name in logs and in a checkpoint."""
+
+    PENDING = "pending"
+    EXECUTING = "executing"
+    SUCCEEDED = "succeeded"
+    ABORTED = "aborted"
+    CANCELED = "canceled"
+
+
 """Lifecycle states, as ros2_control names them in ``list_controllers``."""
 
 

@@ -15,7 +15,7 @@ import math
 import threading
 from dataclasses import dataclass, field
 
-from ._controller import Controller
+from ._controller import Controller, GoalState
 from ._hardware import ControlError
 
 
@@ -25,15 +25,15 @@ class GripperGoal:
 
     position: float
     max_effort: float = 0.0
-    status: str = "pending"
-    """pending, executing, succeeded, aborted, canceled."""
+    status: GoalState = GoalState.PENDING
+    """Where the goal stands; set on the simulation thread, read by the ROS layer."""
     stalled: bool = False
     reached_goal: bool = False
     feedback: tuple[float, float] = (math.nan, math.nan)
     """(position, effort) of the joint at the last cycle."""
     done: threading.Event = field(default_factory=threading.Event)
 
-    def finish(self, status: str) -> None:
+    def finish(self, status: GoalState) -> None:
         """End the goal (once)."""
         if not self.done.is_set():
             self.status = status
@@ -79,11 +79,11 @@ class GripperActionController(Controller):
         with self._lock:
             old, self._incoming = self._incoming, goal
         if old is not None:
-            old.finish("aborted")
+            old.finish(GoalState.ABORTED)
 
     def cancel(self, goal: GripperGoal) -> None:
         """Stop ``goal``: the gripper holds where it is."""
-        goal.finish("canceled")
+        goal.finish(GoalState.CANCELED)
 
     def on_activate(self, states: dict[str, float], commands: dict[str, float]) -> None:
         self._target = states[f"{self.joint}/position"]
@@ -93,7 +93,7 @@ class GripperActionController(Controller):
 
     def on_deactivate(self) -> None:
         if self._goal is not None:
-            self._goal.finish("aborted")
+            self._goal.finish(GoalState.ABORTED)
         self._goal = None
 
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
@@ -102,9 +102,9 @@ class GripperActionController(Controller):
             incoming, self._incoming = self._incoming, None
         if incoming is not None:
             if self._goal is not None and self._goal is not incoming:
-                self._goal.finish("aborted")
+                self._goal.finish(GoalState.ABORTED)
             self._goal, self._target, self._slow_since = incoming, incoming.position, None
-            incoming.status = "executing"
+            incoming.status = GoalState.EXECUTING
         goal = self._goal
         if goal is not None and goal.done.is_set():
             self._goal, self._target, goal = None, q, None
@@ -128,7 +128,7 @@ class GripperActionController(Controller):
         if abs(err) < self.goal_tolerance:
             goal.reached_goal = True
             self._goal = None
-            goal.finish("succeeded")
+            goal.finish(GoalState.SUCCEEDED)
             return
         if abs(v) < self.stall_velocity:
             if self._slow_since is None:
@@ -139,7 +139,7 @@ class GripperActionController(Controller):
                 # check_for_success ends the goal and leaves the command as it is)
                 goal.stalled = True
                 self._goal = None
-                goal.finish("succeeded" if self.allow_stalling else "aborted")
+                goal.finish(GoalState.SUCCEEDED if self.allow_stalling else GoalState.ABORTED)
         else:
             self._slow_since = None
 

@@ -26,7 +26,8 @@ from typing import Any
 
 from ...description import MAX_PARAMS_FILE_BYTES, ResourceResolver
 from ...physics import PhysicsWorld
-from .._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_bool, ros_block
+from .._base import RateGate, System, SystemContext, UpdateInfo
+from .._plugin_config import child_text, parse_bool, ros_block
 from ._blocks import PlannedBlocks
 from ._broadcasters import (
     ForceTorqueSensorBroadcaster,

@@ -17,6 +17,7 @@
 from __future__ import annotations
 
 import bisect
+import enum
 import functools
 import math
 import threading
@@ -27,12 +28,20 @@ from typing import Any
 import numpy as np
 
 from .._bus import JointTrajectory, MsgType, TrajectoryControllerState, TrajectoryPoint
-from ._controller import Controller, values_getter, values_or_zero
+from ._controller import Controller, GoalState, values_getter, values_or_zero
 from ._hardware import ControlError
 
-# control_msgs/FollowJointTrajectory result codes
-SUCCESSFUL, INVALID_GOAL, INVALID_JOINTS, OLD_HEADER_TIMESTAMP = 0, -1, -2, -3
-PATH_TOLERANCE_VIOLATED, GOAL_TOLERANCE_VIOLATED = -4, -5
+
+class TrajectoryResult(enum.IntEnum):
+    """control_msgs/FollowJointTrajectory's result codes (``FollowJointTrajectory.Result``'s constants)."""
+
+    SUCCESSFUL = 0
+    INVALID_GOAL = -1
+    INVALID_JOINTS = -2
+    OLD_HEADER_TIMESTAMP = -3
+    PATH_TOLERANCE_VIOLATED = -4
+    GOAL_TOLERANCE_VIOLATED = -5
+
 
 _ALLOWED_COMMANDS = (
     ("position",),
@@ -63,14 +72,14 @@ class TrajectoryGoal:
     path_tolerance: dict[str, Tolerance] = field(default_factory=dict)
     goal_tolerance: dict[str, Tolerance] = field(default_factory=dict)
     goal_time_tolerance: float = 0.0
-    status: str = "pending"
-    """pending, executing, succeeded, aborted, canceled."""
-    error_code: int = SUCCESSFUL
+    status: GoalState = GoalState.PENDING
+    """Where the goal stands; set on the simulation thread, read by the ROS layer."""
+    error_code: TrajectoryResult = TrajectoryResult.SUCCESSFUL
     error_string: str = ""
     feedback: TrajectoryControllerState | None = None
     done: threading.Event = field(default_factory=threading.Event)
 
-    def finish(self, status: str, code: int, text: str) -> None:
+    def finish(self, status: GoalState, code: TrajectoryResult, text: str) -> None:
         """End the goal (once)."""
         if self.done.is_set():
             return
@@ -258,34 +267,43 @@ class JointTrajectoryController(Controller):
         return [f"{j}/{k}" for k in self.state_kinds for j in self.joints]
 
     # ------------------------------------------------------------------ goals (from the ROS thread)
-    def validate(self, traj: JointTrajectory, now: float | None = None) -> tuple[int, str] | None:
+    def validate(self, traj: JointTrajectory, now: float | None = None) -> tuple[TrajectoryResult, str] | None:
         """Why a trajectory is refused (code, reason), or None when it is acceptable."""
         if self.state != "active":
-            return INVALID_GOAL, f"controller '{self.name}' is not active"
+            return TrajectoryResult.INVALID_GOAL, f"controller '{self.name}' is not active"
         unknown = [j for j in traj.joint_names if j not in self.joints]
         if unknown:
-            return INVALID_JOINTS, f"joints {unknown} are not controlled by '{self.name}' (it has {self.joints})"
+            return (
+                TrajectoryResult.INVALID_JOINTS,
+                f"joints {unknown} are not controlled by '{self.name}' (it has {self.joints})",
+            )
         if len(set(traj.joint_names)) != len(traj.joint_names):
-            return INVALID_JOINTS, "a joint is named twice"
+            return TrajectoryResult.INVALID_JOINTS, "a joint is named twice"
         if not self.allow_partial and traj.points and set(traj.joint_names) != set(self.joints):
             missing = [j for j in self.joints if j not in traj.joint_names]
-            return INVALID_JOINTS, f"joints {missing} are missing and allow_partial_joints_goal is false"
+            return (
+                TrajectoryResult.INVALID_JOINTS,
+                f"joints {missing} are missing and allow_partial_joints_goal is false",
+            )
         n = len(traj.joint_names)
         last = -math.inf
         for i, p in enumerate(traj.points):
             if len(p.positions) != n and not (not p.positions and self.cmd_kinds in (("velocity",), ("effort",))):
-                return INVALID_GOAL, f"point {i} has {len(p.positions)} positions for {n} joints"
+                return TrajectoryResult.INVALID_GOAL, f"point {i} has {len(p.positions)} positions for {n} joints"
             for label, values in (("velocities", p.velocities), ("accelerations", p.accelerations)):
                 if values and len(values) != n:
-                    return INVALID_GOAL, f"point {i} has {len(values)} {label} for {n} joints"
+                    return TrajectoryResult.INVALID_GOAL, f"point {i} has {len(values)} {label} for {n} joints"
             if not all(math.isfinite(v) for v in (*p.positions, *p.velocities, *p.accelerations)):
-                return INVALID_GOAL, f"point {i} has a value that is not finite"
+                return TrajectoryResult.INVALID_GOAL, f"point {i} has a value that is not finite"
             if p.time_from_start_sec <= last:
-                return INVALID_GOAL, f"point {i}: time_from_start must increase strictly"
+                return TrajectoryResult.INVALID_GOAL, f"point {i}: time_from_start must increase strictly"
             last = p.time_from_start_sec
         if now is not None and traj.stamp_sec > 0 and traj.points:
             if traj.stamp_sec + traj.points[-1].time_from_start_sec < now:
-                return OLD_HEADER_TIMESTAMP, "the trajectory ended before it arrived (header stamp in the past)"
+                return (
+                    TrajectoryResult.OLD_HEADER_TIMESTAMP,
+                    "the trajectory ended before it arrived (header stamp in the past)",
+                )
         return None
 
     def submit(self, goal: TrajectoryGoal) -> None:
@@ -302,11 +320,13 @@ class JointTrajectoryController(Controller):
             old = self._incoming
             self._incoming = (traj, goal)
         if old is not None and old[1] is not None:
-            old[1].finish("aborted", SUCCESSFUL, "replaced by a newer trajectory before it started")
+            old[1].finish(
+                GoalState.ABORTED, TrajectoryResult.SUCCESSFUL, "replaced by a newer trajectory before it started"
+            )
 
     def cancel(self, goal: TrajectoryGoal) -> None:
         """Stop ``goal`` (the joints hold where they are)."""
-        goal.finish("canceled", SUCCESSFUL, "canceled")
+        goal.finish(GoalState.CANCELED, TrajectoryResult.SUCCESSFUL, "canceled")
 
     # ------------------------------------------------------------------ the cycle
     def on_activate(self, states: dict[str, float], commands: dict[str, float]) -> None:
@@ -322,18 +342,20 @@ class JointTrajectoryController(Controller):
     def on_deactivate(self) -> None:
         traj = self._traj
         if traj is not None and traj.goal is not None:
-            traj.goal.finish("aborted", INVALID_GOAL, f"controller '{self.name}' was deactivated")
+            traj.goal.finish(
+                GoalState.ABORTED, TrajectoryResult.INVALID_GOAL, f"controller '{self.name}' was deactivated"
+            )
         self._traj = None
 
     def _start(self, traj: JointTrajectory, goal: TrajectoryGoal | None, t: float, actual: list[float]) -> None:
         old = self._traj
         if old is not None and old.goal is not None and old.goal is not goal:
-            old.goal.finish("aborted", SUCCESSFUL, "preempted by a newer trajectory")
+            old.goal.finish(GoalState.ABORTED, TrajectoryResult.SUCCESSFUL, "preempted by a newer trajectory")
         if not traj.points:
             self._traj = None
             self._hold = list(actual)
             if goal is not None:
-                goal.finish("succeeded", SUCCESSFUL, "empty trajectory: holding")
+                goal.finish(GoalState.SUCCEEDED, TrajectoryResult.SUCCESSFUL, "empty trajectory: holding")
             return
         start = traj.stamp_sec if traj.stamp_sec > 0 else t
         index = {j: i for i, j in enumerate(traj.joint_names)}
@@ -357,7 +379,7 @@ class JointTrajectoryController(Controller):
         self._traj = _Segmented(times, pos, vel if have_vel else None, acc if have_acc else None, goal, path_tol)
         self._hold = pos[-1]
         if goal is not None:
-            goal.status = "executing"
+            goal.status = GoalState.EXECUTING
 
     def _intake(self, t: float, actual: list[float]) -> _Segmented | None:
         """Start a trajectory that came in since the last cycle; stop one canceled from outside."""
@@ -512,8 +534,8 @@ class JointTrajectoryController(Controller):
                     j = self.joints[k]
                     self._traj, self._hold = None, list(actual)
                     goal.finish(
-                        "aborted",
-                        PATH_TOLERANCE_VIOLATED,
+                        GoalState.ABORTED,
+                        TrajectoryResult.PATH_TOLERANCE_VIOLATED,
                         f"joint '{j}' left the path tolerance: position error {err_p[k]:.4g} "
                         f"(tolerance {tol.position:g}), velocity error {err_v[k]:.4g} (tolerance {tol.velocity:g})",
                     )
@@ -526,14 +548,14 @@ class JointTrajectoryController(Controller):
         ]
         if not outside:
             self._traj = None
-            goal.finish("succeeded", SUCCESSFUL, "")
+            goal.finish(GoalState.SUCCEEDED, TrajectoryResult.SUCCESSFUL, "")
             return
         allowed = goal.goal_time_tolerance if goal.goal_time_tolerance > 0 else self.goal_time
         if allowed > 0 and t > end + allowed:
             self._traj, self._hold = None, list(actual)
             goal.finish(
-                "aborted",
-                GOAL_TOLERANCE_VIOLATED,
+                GoalState.ABORTED,
+                TrajectoryResult.GOAL_TOLERANCE_VIOLATED,
                 f"joints {outside} were not within the goal tolerance {allowed:g} s after the trajectory's end",
             )
 
