@@ -51,6 +51,12 @@ def fmt_default(f: dataclasses.Field) -> str:
     return repr(v) if isinstance(v, str) else str(v)
 
 
+def row(name: str, default: str, doc: str) -> str:
+    """A table row, with the pipes in its cells escaped."""
+    cells = (default.replace("|", "\\|"), doc.replace("|", "\\|"))
+    return f"| `{name}` | {cells[0]} | {cells[1]} |"
+
+
 def render() -> str:
     from gazelle.systems import plugin_factories
     from gazelle.systems.robot_state import RSP_PLUGIN, RobotStateConfig
@@ -93,9 +99,18 @@ def render() -> str:
         lines.append("| Field | Default | Description |")
         lines.append("|---|---|---|")
         for f in dataclasses.fields(ccls):
-            d = docs.get(f.name, "").replace("|", "\\|")
-            default = fmt_default(f).replace("|", "\\|")
-            lines.append(f"| `{f.name}` | {default} | {d} |")
+            d = docs.get(f.name, "")
+            nested = f.default if dataclasses.is_dataclass(f.default) else None
+            if nested is None or not field_docs(type(nested)):  # a plain value, or a group shown on one row
+                lines.append(row(f.name, fmt_default(f), d))
+                continue
+            # a group of parameters (a PID's gains): one row for the group, one per parameter in it
+            lines.append(row(f.name, "(below)", d))
+            sub_docs = field_docs(type(nested))
+            for sf in dataclasses.fields(nested):
+                value = getattr(nested, sf.name)
+                shown = "unbounded" if value in (float("inf"), float("-inf")) else str(value)
+                lines.append(row(f"{f.name}.{sf.name}", shown, sub_docs.get(sf.name, "")))
         lines.append("")
     return "\n".join(lines)
 

@@ -13,6 +13,8 @@ from typing import TYPE_CHECKING
 
 from .._lazy import lazy_attributes
 
+# Imported when first used: the bridge brings MuJoCo and the runtime (1.1 s), which a client such as ``gazelle
+# arm``, ``gazelle spawn`` or ``gazelle spawner`` never needs.
 if TYPE_CHECKING:
     from ._bridge import RosBridge
     from ._cdr import serialized_joint_states
@@ -27,26 +29,7 @@ if TYPE_CHECKING:
     from ._signals import await_signal_shutdown, silence_half_made_objects
     from ._spawn_entity import main as spawn_main
 
-_LAZY = {
-    "RosBridge": ("._bridge", "RosBridge"),
-    "serialized_joint_states": ("._cdr", "serialized_joint_states"),
-    "announce_often": ("._dds", "announce_often"),
-    "InterfaceError": ("._definitions", "InterfaceError"),
-    "message_class": ("._definitions", "message_class"),
-    "message_definition": ("._definitions", "full_text"),
-    "choose_discovery_range": ("._exposure", "choose_discovery_range"),
-    "matrix_to_pose": ("._planning_scene", "pose"),
-    "await_signal_shutdown": ("._signals", "await_signal_shutdown"),
-    "silence_half_made_objects": ("._signals", "silence_half_made_objects"),
-    "spawn_main": ("._spawn_entity", "main"),
-    "spawner_main": ("._controller_spawner", "spawner_main"),
-    "controller_file_params": ("._controller_spawner", "controller_file_params"),
-    "unspawner_main": ("._controller_spawner", "unspawner_main"),
-}
-"""Imported when first used: the bridge brings MuJoCo and the runtime (1.1 s), which a client such as
-``gazelle arm``, ``gazelle spawn`` or ``gazelle spawner`` never needs."""
-
-__getattr__ = lazy_attributes(__name__, _LAZY)
+__getattr__ = lazy_attributes(__name__, __file__)
 
 
 def move_group_main(argv: list[str]) -> int:

@@ -30,6 +30,8 @@ from typing import TYPE_CHECKING
 
 from .._lazy import lazy_attributes
 
+# Imported when first used: the actuation and the systems bring MuJoCo (through gazelle.physics), which a
+# client such as ``gazelle spawn`` never needs.
 if TYPE_CHECKING:
     from ._actuation import PidGains as PidGains
     from ._actuation import PositionServo as PositionServo
@@ -44,8 +46,6 @@ if TYPE_CHECKING:
     from ._base import SystemContext as SystemContext
     from ._base import SystemManager as SystemManager
     from ._base import UpdateInfo as UpdateInfo
-    from ._base import plugin_node as plugin_node
-    from ._base import plugin_node_name as plugin_node_name
     from ._bus import Altimeter as Altimeter
     from ._bus import Bus as Bus
     from ._bus import CameraInfo as CameraInfo
@@ -84,6 +84,8 @@ if TYPE_CHECKING:
     from ._bus import Vector3Stamped as Vector3Stamped
     from ._bus import WrenchStamped as WrenchStamped
     from ._bus import resolve_topic as resolve_topic
+    from ._plugin_config import plugin_node as plugin_node
+    from ._plugin_config import plugin_node_name as plugin_node_name
     from ._plugin_names import RSP_PLUGIN as RSP_PLUGIN
     from ._registry import SensorPlan as SensorPlan
     from ._registry import audit_model as audit_model
@@ -96,76 +98,7 @@ if TYPE_CHECKING:
     from .robot_state import RobotStatePublisher as RobotStatePublisher
     from .robot_state import robot_state_config as robot_state_config
 
-_LAZY = {
-    "PidGains": ("._actuation", "PidGains"),
-    "PositionServo": ("._actuation", "PositionServo"),
-    "VelocityServo": ("._actuation", "VelocityServo"),
-    "add_position_servo": ("._actuation", "add_position_servo"),
-    "add_velocity_servo": ("._actuation", "add_velocity_servo"),
-    "add_wheel_servo": ("._actuation", "add_wheel_servo"),
-    "PHYSICS": ("._base", "PHYSICS"),
-    "PRE_PHYSICS": ("._base", "PRE_PHYSICS"),
-    "RateGate": ("._base", "RateGate"),
-    "System": ("._base", "System"),
-    "SystemContext": ("._base", "SystemContext"),
-    "SystemManager": ("._base", "SystemManager"),
-    "UpdateInfo": ("._base", "UpdateInfo"),
-    "plugin_node": ("._base", "plugin_node"),
-    "plugin_node_name": ("._base", "plugin_node_name"),
-    "Altimeter": ("._bus", "Altimeter"),
-    "Bus": ("._bus", "Bus"),
-    "CameraInfo": ("._bus", "CameraInfo"),
-    "ContactPair": ("._bus", "ContactPair"),
-    "Contacts": ("._bus", "Contacts"),
-    "DisplayTrajectory": ("._bus", "DisplayTrajectory"),
-    "DynamicJointState": ("._bus", "DynamicJointState"),
-    "Endpoint": ("._bus", "Endpoint"),
-    "Float64": ("._bus", "Float64"),
-    "Float64Array": ("._bus", "Float64Array"),
-    "Image": ("._bus", "Image"),
-    "Imu": ("._bus", "Imu"),
-    "JointStates": ("._bus", "JointStates"),
-    "JointStatesBlock": ("._bus", "JointStatesBlock"),
-    "PayloadBlock": ("._bus", "PayloadBlock"),
-    "JointTrajectory": ("._bus", "JointTrajectory"),
-    "LaserScan": ("._bus", "LaserScan"),
-    "MagneticField": ("._bus", "MagneticField"),
-    "DeclaredMessage": ("._bus", "DeclaredMessage"),
-    "MessageKind": ("._bus", "MessageKind"),
-    "MsgType": ("._bus", "MsgType"),
-    "NavSatFix": ("._bus", "NavSatFix"),
-    "Odometry": ("._bus", "Odometry"),
-    "ParamValue": ("._bus", "ParamValue"),
-    "PluginNode": ("._bus", "PluginNode"),
-    "PointCloud": ("._bus", "PointCloud"),
-    "Qos": ("._bus", "Qos"),
-    "Range": ("._bus", "Range"),
-    "Text": ("._bus", "Text"),
-    "TrajectoryControllerState": ("._bus", "TrajectoryControllerState"),
-    "TrajectoryPoint": ("._bus", "TrajectoryPoint"),
-    "Transform": ("._bus", "Transform"),
-    "TransformBatch": ("._bus", "TransformBatch"),
-    "Twist": ("._bus", "Twist"),
-    "TwistStamped": ("._bus", "TwistStamped"),
-    "Vector3Stamped": ("._bus", "Vector3Stamped"),
-    "WrenchStamped": ("._bus", "WrenchStamped"),
-    "resolve_topic": ("._bus", "resolve_topic"),
-    "SensorPlan": ("._registry", "SensorPlan"),
-    "audit_model": ("._registry", "audit_model"),
-    "audit_world": ("._registry", "audit_world"),
-    "create_system": ("._registry", "create_system"),
-    "plugin_factories": ("._registry", "plugin_factories"),
-    "plan_sensors": ("._registry", "plan_sensors"),
-    "supported_plugins": ("._registry", "supported_plugins"),
-    "RSP_PLUGIN": ("._plugin_names", "RSP_PLUGIN"),
-    "JointStatePublisher": (".robot_state", "JointStatePublisher"),
-    "RobotStatePublisher": (".robot_state", "RobotStatePublisher"),
-    "robot_state_config": (".robot_state", "robot_state_config"),
-}
-"""Imported when first used: the actuation and the systems bring MuJoCo (through gazelle.physics), which a
-client such as ``gazelle spawn`` never needs."""
-
-__getattr__ = lazy_attributes(__name__, _LAZY)
+__getattr__ = lazy_attributes(__name__, __file__)
 
 
 __all__ = [

@@ -135,13 +135,22 @@ class PidGains:
     """A joint PID as gz-sim's controllers take it (``<p_gain>``, ``<i_gain>``, ... ``<cmd_offset>``)."""
 
     p_gain: float = 1.0
+    """``<p_gain>``: force per unit of position error (N·m/rad or N/m); a position servo's MuJoCo kp."""
     i_gain: float = 0.1
+    """``<i_gain>``: force per unit of integrated position error (N·m/(rad·s)); the integral force, bounded
+    by ``i_min`` and ``i_max``, shifts the position servo's command (see :class:`PositionServo`)."""
     d_gain: float = 0.01
+    """``<d_gain>``: force per unit of velocity (N·m·s/rad); MuJoCo's kv, integrated implicitly."""
     i_max: float = 1.0
+    """``<i_max>``: upper bound of the integral force."""
     i_min: float = -1.0
+    """``<i_min>``: lower bound of the integral force."""
     cmd_max: float = 1000.0
+    """``<cmd_max>``: upper bound of the force (the joint's ``<limit><effort>`` bounds it too)."""
     cmd_min: float = -1000.0
+    """``<cmd_min>``: lower bound of the force."""
     cmd_offset: float = 0.0
+    """``<cmd_offset>``: a constant force added to the command."""
 
 
 class PositionServo:

@@ -23,18 +23,9 @@ from dataclasses import dataclass
 from ..description import ConfigElement, JointType
 from ..physics import PhysicsWorld
 from ._actuation import PidGains, PositionServo, VelocityServo, add_position_servo, add_velocity_servo
-from ._base import (
-    RateGate,
-    System,
-    SystemContext,
-    UpdateInfo,
-    all_texts,
-    child_text,
-    parse_bool,
-    parse_float,
-    ros_block,
-)
+from ._base import RateGate, System, SystemContext, UpdateInfo
 from ._bus import Float64, MsgType, resolve_topic
+from ._plugin_config import all_texts, child_text, parse_bool, parse_float, ros_block
 
 _MOVABLE = (JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC)
 
@@ -193,22 +184,10 @@ class JointPositionControllerConfig:
     Relative names go under the namespace."""
     sub_topic: str = ""
     """``<sub_topic>``: ``/model/<model>/<sub_topic>`` instead of the default topic."""
-    p_gain: float = 1.0
-    """``<p_gain>``, N·m/rad (N/m); the position servo's kp."""
-    i_gain: float = 0.1
-    """``<i_gain>``."""
-    d_gain: float = 0.01
-    """``<d_gain>``; the position servo's kv (integrated implicitly)."""
-    i_max: float = 1.0
-    """``<i_max>``: upper bound of the integral force."""
-    i_min: float = -1.0
-    """``<i_min>``."""
-    cmd_max: float = 1000.0
-    """``<cmd_max>``: force bound (also bounded by the joint's ``<limit><effort>``)."""
-    cmd_min: float = -1000.0
-    """``<cmd_min>``."""
-    cmd_offset: float = 0.0
-    """``<cmd_offset>``: constant force added."""
+    gains: PidGains = PidGains()
+    """``<p_gain>`` ... ``<cmd_offset>``: the position servo's PID (gz-sim 8's defaults). ``p_gain`` is MuJoCo's
+    kp (N·m/rad or N/m), ``d_gain`` its kv (integrated implicitly), ``cmd_max``/``cmd_min`` bound the force (and
+    so does the joint's ``<limit><effort>``)."""
     use_velocity_commands: bool = False
     """``<use_velocity_commands>``: a velocity servo at (target − q)/dt, clamped to the joint's velocity limit."""
     initial_position: float = 0.0
@@ -229,7 +208,7 @@ class JointPositionController(_ServoGroup):
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         names = all_texts(cfg, "joint_name")
-        g = _pid(cfg, log, PidGains())
+        g = _pid(cfg, log, JointPositionControllerConfig.gains)
         self.config = c = JointPositionControllerConfig(
             joint_names=names,
             joint_index=int(parse_float(cfg, "joint_index", 0, log)),
@@ -237,7 +216,7 @@ class JointPositionController(_ServoGroup):
             sub_topic=child_text(cfg, "sub_topic") or "",
             use_velocity_commands=parse_bool(cfg, "use_velocity_commands", False, log),
             initial_position=parse_float(cfg, "initial_position", 0.0, log),
-            **{k: getattr(g, k) for k in PidGains.__dataclass_fields__},
+            gains=g,
         )
         if names and c.joint_index != 0:
             log.warning(f"<joint_index> {c.joint_index}: only axis 0 is supported; using 0")
@@ -275,18 +254,9 @@ class JointControllerConfig:
     """``<initial_velocity>``."""
     use_force_commands: bool = False
     """``<use_force_commands>``: a PI velocity loop with the gains below instead of gz's velocity command."""
-    p_gain: float = 1.0
-    """``<p_gain>`` (force mode): the velocity servo's kv."""
-    i_gain: float = 0.0
-    """``<i_gain>`` (force mode)."""
-    d_gain: float = 0.0
-    """``<d_gain>`` (force mode; not used)."""
-    i_max: float = 1.0
-    i_min: float = -1.0
-    cmd_max: float = 1000.0
-    """``<cmd_max>`` (force mode): force bound (also bounded by ``<limit><effort>``)."""
-    cmd_min: float = -1000.0
-    cmd_offset: float = 0.0
+    gains: PidGains = PidGains(p_gain=1.0, i_gain=0.0, d_gain=0.0)
+    """``<p_gain>`` ... ``<cmd_offset>``, read in force mode only: ``p_gain`` is the velocity servo's kv and
+    ``cmd_max``/``cmd_min`` bound its force (so does ``<limit><effort>``); ``i_gain`` and ``d_gain`` are not used."""
 
 
 class JointController(_ServoGroup):
@@ -303,22 +273,22 @@ class JointController(_ServoGroup):
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         names = all_texts(cfg, "joint_name")
-        g = _pid(cfg, log, PidGains(p_gain=1.0, i_gain=0.0, d_gain=0.0))
+        g = _pid(cfg, log, JointControllerConfig.gains)
         self.config = c = JointControllerConfig(
             joint_names=names,
             topic=child_text(cfg, "topic") or "",
             sub_topic=child_text(cfg, "sub_topic") or "",
             initial_velocity=parse_float(cfg, "initial_velocity", 0.0, log),
             use_force_commands=parse_bool(cfg, "use_force_commands", False, log),
-            **{k: getattr(g, k) for k in PidGains.__dataclass_fields__},
+            gains=g,
         )
         joints = self._joints(ctx, names, "JointController")
         if not joints:
             return
         for jn in joints:
             if c.use_force_commands:
-                limit = max(abs(c.cmd_min), abs(c.cmd_max))
-                servo = add_velocity_servo(ctx.world, ctx.entity, jn, kv=max(c.p_gain, 1e-9), force_limit=limit)
+                limit = max(abs(g.cmd_min), abs(g.cmd_max))
+                servo = add_velocity_servo(ctx.world, ctx.entity, jn, kv=max(g.p_gain, 1e-9), force_limit=limit)
             else:
                 servo = add_velocity_servo(ctx.world, ctx.entity, jn)
             self._commands.append(_Command(jn, servo, c.initial_velocity))
@@ -341,14 +311,9 @@ class JointCommandsConfig:
     """``<joint_name>`` (repeatable). Default: every revolute, continuous and prismatic joint."""
     mode: str = "position"
     """``<mode>``: ``position`` or ``velocity``."""
-    p_gain: float = 100.0
-    """``<p_gain>`` (position mode), N·m/rad: the position servo's kp."""
-    i_gain: float = 0.0
-    """``<i_gain>`` (position mode)."""
-    d_gain: float = 10.0
-    """``<d_gain>`` (position mode): the servo's kv."""
-    i_max: float = 1.0
-    i_min: float = -1.0
+    gains: PidGains = PidGains(p_gain=100.0, i_gain=0.0, d_gain=10.0, cmd_max=math.inf, cmd_min=-math.inf)
+    """``<p_gain>``, ``<i_gain>``, ``<d_gain>``, ``<i_max>``, ``<i_min>`` (position mode): the position servo's kp
+    (N·m/rad), integral and kv; the force is bounded by the joint's ``<limit><effort>`` alone."""
     namespace: str = ""
     """``<ros><namespace>``; default the entity's namespace."""
     remappings: tuple[tuple[str, str], ...] = ()
@@ -380,20 +345,8 @@ class JointCommands(_Controlled):
         if mode not in ("position", "velocity"):
             log.warning(f"<mode> must be position or velocity, got {mode!r}; using position")
             mode = "position"
-        g = _pid(
-            cfg, log, PidGains(p_gain=d.p_gain, i_gain=d.i_gain, d_gain=d.d_gain, cmd_max=math.inf, cmd_min=-math.inf)
-        )
-        self.config = c = JointCommandsConfig(
-            names,
-            mode,
-            g.p_gain,
-            g.i_gain,
-            g.d_gain,
-            g.i_max,
-            g.i_min,
-            ns or ctx.entity.namespace,
-            tuple(remaps.items()),
-        )
+        g = _pid(cfg, log, d.gains)
+        self.config = c = JointCommandsConfig(names, mode, g, ns or ctx.entity.namespace, tuple(remaps.items()))
         for jn in names:
             if not _check_joint(ctx, jn, log):
                 continue

@@ -22,8 +22,9 @@ from dataclasses import dataclass
 
 from ..description import ConfigElement, Pose, quat_conj, quat_from_rpy, quat_mul, quat_rotate
 from ..physics import WORLD_FRAMES, PhysicsWorld
-from ._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_float, ros_block
+from ._base import RateGate, System, SystemContext, UpdateInfo
 from ._bus import Endpoint, MsgType, Odometry, Twist, resolve_topic
+from ._plugin_config import child_text, parse_float, ros_block
 
 ROS1_NAMES = {
     "bodyName": "body_name",

@@ -17,18 +17,9 @@ from typing import Any
 
 from ..description import JointType, Model, Plugin
 from ..physics import BodyHandle, Entity, JointHandle, PhysicsWorld
-from ._base import (
-    RateGate,
-    System,
-    SystemContext,
-    UpdateInfo,
-    all_texts,
-    child_text,
-    parse_bool,
-    parse_float,
-    ros_block,
-)
+from ._base import RateGate, System, SystemContext, UpdateInfo
 from ._bus import Endpoint, JointStates, MsgType, Qos, Text, Transform, TransformBatch, resolve_topic
+from ._plugin_config import all_texts, child_text, parse_bool, parse_float, ros_block
 from ._plugin_names import RSP_PLUGIN as RSP_PLUGIN
 
 

@@ -10,6 +10,8 @@ from typing import TYPE_CHECKING
 
 from .._lazy import lazy_attributes
 
+# Imported when first used: viser and the renderer cost ~0.3 s, which ``gazelle sim --no-viewer`` (checking
+# its --viewer-allow-origin values) and a replay page never need.
 if TYPE_CHECKING:
     from ._browser import open_viewer_page, screenshot
     from ._origin import OriginPolicy, allowed_origins
@@ -17,25 +19,7 @@ if TYPE_CHECKING:
     from ._snapshot import record_video, run_record, run_snapshot, video_format
     from ._viewer import DEFAULT_HOST, DEFAULT_PORT, POSE_RATE_HZ, Viewer
 
-_LAZY = {
-    "open_viewer_page": ("._browser", "open_viewer_page"),
-    "screenshot": ("._browser", "screenshot"),
-    "OriginPolicy": ("._origin", "OriginPolicy"),
-    "allowed_origins": ("._origin", "allowed_origins"),
-    "replay_html": ("._replay", "replay_html"),
-    "record_video": ("._snapshot", "record_video"),
-    "run_record": ("._snapshot", "run_record"),
-    "run_snapshot": ("._snapshot", "run_snapshot"),
-    "video_format": ("._snapshot", "video_format"),
-    "DEFAULT_HOST": ("._viewer", "DEFAULT_HOST"),
-    "DEFAULT_PORT": ("._viewer", "DEFAULT_PORT"),
-    "POSE_RATE_HZ": ("._viewer", "POSE_RATE_HZ"),
-    "Viewer": ("._viewer", "Viewer"),
-}
-"""Imported when first used: viser and the renderer cost ~0.3 s, which ``gazelle sim --no-viewer`` (checking
-its --viewer-allow-origin values) and a replay page never need."""
-
-__getattr__ = lazy_attributes(__name__, _LAZY)
+__getattr__ = lazy_attributes(__name__, __file__)
 
 
 __all__ = [

@@ -17,7 +17,7 @@ from ...description import (
     Sensor,
 )
 from ...physics import BodyHandle, PhysicsWorld
-from .._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_bool, parse_float, ros_block
+from .._base import RateGate, System, SystemContext, UpdateInfo
 from .._bus import (
     Endpoint,
     MessageKind,
@@ -25,6 +25,7 @@ from .._bus import (
     ParamValue,
     resolve_topic,
 )
+from .._plugin_config import child_text, parse_bool, parse_float, ros_block
 
 T = TypeVar("T")
 

@@ -11,13 +11,14 @@ from ...description import (
     rotation_matrix,
 )
 from ...physics import BodyHandle, PerGeneration, PhysicsWorld
-from .._base import SystemContext, UpdateInfo, child_text
+from .._base import SystemContext, UpdateInfo
 from .._bus import (
     ContactPair,
     Contacts,
     MsgType,
     resolve_topic,
 )
+from .._plugin_config import child_text
 from ._common import (
     SENSOR_DEPTH,
     _SensorSystem,

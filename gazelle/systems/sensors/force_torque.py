@@ -15,13 +15,14 @@ from ...description import (
     rotation_matrix,
 )
 from ...physics import BodyHandle, PhysicsWorld
-from .._base import RateGate, System, SystemContext, UpdateInfo, child_text, parse_float, ros_block
+from .._base import RateGate, System, SystemContext, UpdateInfo
 from .._bus import (
     Endpoint,
     MsgType,
     WrenchStamped,
     resolve_topic,
 )
+from .._plugin_config import child_text, parse_float, ros_block
 from ._common import (
     SENSOR_DEPTH,
     checked_rate,

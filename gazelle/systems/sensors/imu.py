@@ -16,11 +16,12 @@ from ...description import (
     quat_mul,
 )
 from ...physics import PhysicsWorld
-from .._base import SystemContext, UpdateInfo, child_text, parse_float
+from .._base import SystemContext, UpdateInfo
 from .._bus import (
     Imu,
     Vec3,
 )
+from .._plugin_config import child_text, parse_float
 from ._common import (
     NOISE_ROWS,
     Noise,

@@ -17,13 +17,14 @@ from ...description import (
     rotation_matrix,
 )
 from ...physics import PhysicsWorld
-from .._base import SystemContext, UpdateInfo, parse_float
+from .._base import SystemContext, UpdateInfo
 from .._bus import (
     LaserScan,
     MsgType,
     PointCloud,
     Range,
 )
+from .._plugin_config import parse_float
 from ._common import (
     Noise,
     SensorConfigError,
