@@ -24,6 +24,7 @@ import rclpy.context
 from _paths import REPO, SEED_XACRO  # noqa: F401 - the ros and viewer tests import them from here
 from _ros_domain import reserved_domain_id
 
+from gazelle.testing._ros_node import poll_until
 from gazelle.testing._sim import collect_lines
 
 SQUARE_NODE = REPO / "examples" / "simple_robot" / "simple_robot" / "square_movement.py"
@@ -32,14 +33,7 @@ GAZELLE = [sys.executable, "-m", "gazelle.cli"]
 
 def wait_for(predicate: Callable[[], Any], timeout: float, what: str, interval: float = 0.02) -> Any:
     """Poll ``predicate`` until it returns something truthy; fail the test after ``timeout`` s."""
-    deadline = time.monotonic() + timeout
-    while True:
-        value = predicate()
-        if value:
-            return value
-        if time.monotonic() > deadline:
-            pytest.fail(f"timed out after {timeout:g} s waiting for {what}")
-        time.sleep(interval)
+    return poll_until(predicate, timeout, f"waiting for {what}", lambda: time.sleep(interval))
 
 
 @dataclass
@@ -107,6 +101,38 @@ def start(cmd: list[str], name: str, env: dict[str, str] | None = None, *, stdin
 
 
 _STARTED: list[Proc] = []
+
+
+def start_sim(rtf: float, *extra: str) -> Proc:
+    """``gazelle sim --no-viewer --rtf <rtf>`` on the default world, once it says it is ready. A test of an arm
+    runs it faster than real time: the arm moves in sim time, and the suite waits less for it."""
+    sim = start([*GAZELLE, "sim", "--no-viewer", "--rtf", f"{rtf:g}", *extra], "gazelle sim")
+    sim.wait_line("gazelle: ready", timeout=60)
+    return sim
+
+
+def spawn_file(entity: str, path: Path) -> None:
+    """``gazelle spawn -entity <entity> -file <path>``, which must succeed."""
+    spawn = start([*GAZELLE, "spawn", "-entity", entity, "-file", str(path)], f"spawn {entity}")
+    assert spawn.wait(120) == 0, spawn.output
+
+
+def start_move_group(
+    urdf: Path, srdf: Path, config: Path, *ros_args: str, env: dict[str, str] | None = None, via_ros2: bool = True
+) -> Proc:
+    """``ros2 run gazelle move_group --urdf --srdf --config`` (``gazelle move_group`` when not ``via_ros2``),
+    once it says MoveIt's "You can start planning now!"; ``ros_args`` go after ``--ros-args``."""
+    head = [str(Path(sys.prefix) / "bin" / "ros2"), "run", "gazelle"] if via_ros2 else list(GAZELLE)
+    cmd = [*head, "move_group", "--urdf", str(urdf), "--srdf", str(srdf), "--config", str(config)]
+    move_group = start([*cmd, *(["--ros-args", *ros_args] if ros_args else [])], "move_group", env)
+    move_group.wait_line("You can start planning now!", timeout=120)
+    return move_group
+
+
+def run_spawner(params_file: Path, *controllers: str) -> None:
+    """``gazelle spawner <controllers> -p <params_file>`` (controller_manager's spawner), which must succeed."""
+    spawner = start([*GAZELLE, "spawner", *controllers, "-p", str(params_file)], "spawner")
+    assert spawner.wait(60) == 0, spawner.output
 
 
 class RosClient:

@@ -13,7 +13,6 @@ original file and line (see :mod:`._xml`), so diagnostics point into the xacro s
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 from lxml import etree
@@ -41,12 +40,10 @@ from ._urdf_checks import (
     is_fragment,
     report_fragment,
 )
-from ._urdf_elements import D, ElementReader, LinkDraft, T, UrdfDocument, gazebo_value
+from ._urdf_elements import D, ElementReader, LinkDraft, UrdfDocument, gazebo_value
 from ._xml import (
     child_elements,
     local_name,
-    parse_bool,
-    parse_float,
     parse_floats,
     parse_xml,
     to_config,
@@ -108,8 +105,8 @@ class _Reader(ElementReader):
                 )
             else:
                 pose = Pose.from_xyz_rpy((values[0], values[1], values[2]), (values[3], values[4], values[5]))
-        rate = self.text_value(element, "update_rate", parse_float)
-        always_on = self.text_value(element, "always_on", parse_bool)
+        rate = self.gazebo_float(element, "update_rate")
+        always_on = self.gazebo_flag(element, "always_on")
         plugins = [p for p in (self.plugin(el) for el in element.findall("plugin")) if p is not None]
         return Sensor(
             name=name,
@@ -122,17 +119,6 @@ class _Reader(ElementReader):
             plugins=tuple(plugins),
             location=self.loc(element),
         )
-
-    def text_value(self, parent: etree._Element, tag: str, parse: Callable[[str | None], T | None]) -> T | None:
-        """The parsed text of child ``tag`` (VALUE_INVALID error when unparsable; None when absent)."""
-        el = parent.find(tag)
-        if el is None:
-            return None
-        text = gazebo_value(el)
-        value = parse(text)
-        if value is None:
-            self.error(ErrorCode.VALUE_INVALID, f"<{tag}> has an invalid value {text!r}", el)
-        return value
 
     def gazebo(self, element: etree._Element, doc: UrdfDocument) -> None:
         """A ``<gazebo>`` block: kept whole, and its known tags applied."""
@@ -167,7 +153,7 @@ class _Reader(ElementReader):
                 if plugin is not None:
                     doc.plugins.append(plugin)
             elif tag in _MODEL_FLAGS:
-                value = self.text_value(element, tag, parse_bool)
+                value = self.gazebo_flag(element, tag)
                 if value is not None:
                     doc.model_flags[_MODEL_FLAGS[tag]] = bool(value)
             else:
@@ -187,7 +173,7 @@ class _Reader(ElementReader):
                     link.surface[field_name] = values if count > 1 else values[0]
             elif tag in _LINK_FLAGS:
                 field_name, inverted = _LINK_FLAGS[tag]
-                flag = self.text_value(element, tag, parse_bool)
+                flag = self.gazebo_flag(element, tag)
                 if flag is not None:
                     link.flags[field_name] = bool(flag) != inverted
             elif tag == "material":

@@ -42,13 +42,7 @@ from ._model import (
     Visual,
 )
 from ._resources import ResourceResolver
-from ._xml import (
-    child_elements,
-    element_location,
-    local_name,
-    parse_float,
-    parse_floats,
-)
+from ._xml import child_elements, element_location, local_name, parse_bool, parse_float, parse_floats
 
 URDF_JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "planar")
 """Joint types a URDF may use."""
@@ -528,6 +522,26 @@ class ElementReader:
     def calibration(self, element: etree._Element) -> Calibration:
         """``<calibration rising falling>`` (kept; not simulated)."""
         return Calibration(**self.numbers(element, ("rising", "falling")))
+
+    def gazebo_float(self, parent: etree._Element, tag: str) -> float | None:
+        """The number in ``<gazebo>``'s child ``tag`` (None when absent; a VALUE_INVALID error when it is
+        not a number)."""
+        return self._gazebo_text(parent, tag, parse_float)
+
+    def gazebo_flag(self, parent: etree._Element, tag: str) -> bool | None:
+        """The ``true``/``false``/``1``/``0`` in ``<gazebo>``'s child ``tag`` (None when absent; a
+        VALUE_INVALID error for anything else)."""
+        return self._gazebo_text(parent, tag, parse_bool)
+
+    def _gazebo_text(self, parent: etree._Element, tag: str, parse: Callable[[str | None], T | None]) -> T | None:
+        el = parent.find(tag)
+        if el is None:
+            return None
+        text = gazebo_value(el)
+        value = parse(text)
+        if value is None:
+            self.error(ErrorCode.VALUE_INVALID, f"<{tag}> has an invalid value {text!r}", el)
+        return value
 
 
 def _is_file(path: Path) -> bool:

@@ -279,14 +279,10 @@ def _run(text: str, source: str, args: Mapping[str, str], tracker: _Tracker) -> 
 
 
 def expand(
-    text: str,
-    *,
-    source: str,
-    args: Mapping[str, str] | None = None,
-    sink: DiagnosticSink,
-    resolver: ResourceResolver,
+    text: str, source: str, args: Mapping[str, str], sink: DiagnosticSink, resolver: ResourceResolver
 ) -> str | None:
-    """Expand xacro text to plain XML.
+    """Expand xacro text to plain XML, in this process (:func:`expand_bounded` is the one to call: this is
+    its worker's side, and the tests').
 
     Args:
         text: the xacro document.
@@ -303,7 +299,7 @@ def expand(
     tracker = _Tracker(sink, source)
     with _LOCK, _patched(resolver, tracker):
         try:
-            doc = _run(text, source, args or {}, tracker)
+            doc = _run(text, source, args, tracker)
         except _IncludedXmlError as err:
             where = SourceLocation(err.location_file or source, err.line)
             sink.error(ErrorCode.XML_PARSE_ERROR, str(err), where)

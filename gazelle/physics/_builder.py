@@ -20,19 +20,16 @@ from typing import Any
 import mujoco
 import numpy as np
 
+from .. import description as desc
 from ..description import (
-    Box,
-    Capsule,
     Collision,
     Cone,
-    Cylinder,
-    Ellipsoid,
+    Geometry,
     Mesh,
     MeshLook,
     MeshReadError,
     Plane,
     Pose,
-    Sphere,
     Visual,
     load_mesh,
     load_mesh_look,
@@ -143,18 +140,22 @@ def _solref_from_surface(
     return [max(2.0 * timestep, timeconst), 1.0], [0.9, 0.95, 0.001, 0.5, 2.0]
 
 
-def _primitive(g: object) -> dict | None:
-    """MuJoCo ``type`` and ``size`` of a box, cylinder, sphere, capsule or ellipsoid (half sizes); None for others."""
-    if isinstance(g, Box):
-        return {"type": mujoco.mjtGeom.mjGEOM_BOX, "size": [g.size[0] / 2, g.size[1] / 2, g.size[2] / 2]}
-    if isinstance(g, Cylinder):
-        return {"type": mujoco.mjtGeom.mjGEOM_CYLINDER, "size": [g.radius, g.length / 2, 0]}
-    if isinstance(g, Sphere):
-        return {"type": mujoco.mjtGeom.mjGEOM_SPHERE, "size": [g.radius, 0, 0]}
-    if isinstance(g, Capsule):
-        return {"type": mujoco.mjtGeom.mjGEOM_CAPSULE, "size": [g.radius, g.length / 2, 0]}
-    if isinstance(g, Ellipsoid):
-        return {"type": mujoco.mjtGeom.mjGEOM_ELLIPSOID, "size": list(g.radii)}
+def _primitive(g: Geometry) -> dict | None:
+    """MuJoCo ``type`` and ``size`` of a box, cylinder, sphere, capsule or ellipsoid; None for the shapes
+    MuJoCo builds from a mesh (cone, mesh) or a plane. MuJoCo's sizes are half sizes: a box's half extents,
+    a cylinder's and a capsule's half length (the capsule's without its caps, as SDF's ``<length>``)."""
+    G = mujoco.mjtGeom
+    match g:
+        case desc.Box(size=size):
+            return {"type": G.mjGEOM_BOX, "size": [size[0] / 2, size[1] / 2, size[2] / 2]}
+        case desc.Cylinder(radius=r, length=length):
+            return {"type": G.mjGEOM_CYLINDER, "size": [r, length / 2, 0]}
+        case desc.Sphere(radius=r):
+            return {"type": G.mjGEOM_SPHERE, "size": [r, 0, 0]}
+        case desc.Capsule(radius=r, length=length):
+            return {"type": G.mjGEOM_CAPSULE, "size": [r, length / 2, 0]}
+        case desc.Ellipsoid(radii=radii):
+            return {"type": G.mjGEOM_ELLIPSOID, "size": list(radii)}
     return None
 
 
@@ -226,6 +227,15 @@ def _contact_settings(col: Collision, mass_hint: float, timestep: float, moving:
     return settings
 
 
+def _placed_geom(name: str, pose: Pose, rgba: tuple[float, ...] | None, **fields: Any) -> dict[str, Any]:
+    """The MuJoCo fields of a geom named ``name`` at ``pose`` in its body, in colour ``rgba`` (None: MuJoCo's
+    default), with ``fields`` added (its group, contact settings, ...): the shape is the caller's to add."""
+    kwargs: dict[str, Any] = {"name": name, "pos": list(pose.position), "quat": list(pose.orientation), **fields}
+    if rgba is not None:
+        kwargs["rgba"] = list(rgba)
+    return kwargs
+
+
 def add_geom(
     spec: mujoco.MjSpec,
     body: mujoco.MjsBody,
@@ -241,16 +251,8 @@ def add_geom(
     g = col.geometry
     piece_names: list[str] = []
     """MuJoCo meshes of a non-convex mesh's convex parts (one geom each); empty otherwise."""
-    kwargs: dict = {
-        "name": name,
-        "pos": list(col.pose.position),
-        "quat": list(col.pose.orientation),
-        "friction": (friction := _surface_friction(col)),
-        "priority": friction_priority(friction[0]),
-        "group": group,
-    }
-    if rgba is not None:
-        kwargs["rgba"] = list(rgba)
+    friction = _surface_friction(col)
+    kwargs = _placed_geom(name, col.pose, rgba, friction=friction, priority=friction_priority(friction[0]), group=group)
     primitive = _primitive(g)
     if primitive is not None:
         kwargs.update(primitive)
@@ -291,18 +293,9 @@ def add_visual_geom(spec: mujoco.MjSpec, body: mujoco.MjsBody, vis: Visual, name
     users see (collision shapes are often simpler). Returns False when its mesh cannot be read
     (the description already warned about a missing one)."""
     g = vis.geometry
-    kwargs: dict = {
-        "name": name,
-        "pos": list(vis.pose.position),
-        "quat": list(vis.pose.orientation),
-        "group": VISUAL_GROUP,
-        "contype": 0,
-        "conaffinity": 0,
-        "density": 0.0,
-    }
     rgba = vis.material.diffuse if vis.material is not None and vis.material.diffuse is not None else None
-    if rgba is not None:
-        kwargs["rgba"] = list(rgba)
+    # never in a contact (contype = conaffinity = 0) and no mass (density 0): the look only
+    kwargs = _placed_geom(name, vis.pose, rgba, group=VISUAL_GROUP, contype=0, conaffinity=0, density=0.0)
     primitive = _primitive(g)
     if primitive is not None:
         kwargs.update(primitive)

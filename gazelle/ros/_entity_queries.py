@@ -7,7 +7,8 @@ from __future__ import annotations
 
 import math
 import time
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable, Mapping
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import regex
 from simulation_interfaces.msg import (
@@ -52,6 +53,26 @@ class _Refused(Exception):
     def __init__(self, code: int, message: str):
         super().__init__(message)
         self.code = code
+
+
+_T = TypeVar("_T")
+
+
+def _attempt(fn: Callable[[], _T], codes: Mapping[ErrorKind, int] | None = None) -> tuple[Result, _T | None]:
+    """Run ``fn`` and say how it went as a simulation_interfaces Result, with its value when it succeeded
+    (None otherwise). A refusal answers with its own code; a WorldError by its kind through ``codes``
+    (a missing entity is RESULT_NOT_FOUND unless ``codes`` says otherwise, any other kind
+    RESULT_OPERATION_FAILED); a simulation that did not answer in time, RESULT_OPERATION_FAILED."""
+    try:
+        value = fn()
+    except _Refused as err:
+        return _result(err.code, str(err)), None
+    except WorldError as err:
+        table = {ErrorKind.NOT_FOUND: Result.RESULT_NOT_FOUND, **(codes or {})}
+        return _result(table.get(err.kind, Result.RESULT_OPERATION_FAILED), str(err)), None
+    except TimeoutError as err:
+        return _result(Result.RESULT_OPERATION_FAILED, f"the simulation did not answer: {err}"), None
+    return _result(OK), value
 
 
 FILTER_TIME_LIMIT_SEC = 0.2
@@ -192,12 +213,8 @@ class EntityQueries:
 
     def get_entities(self, req: GetEntities.Request, res: GetEntities.Response) -> Any:
         """GetEntities: names, filtered by a bounded regular expression and by category."""
-        try:
-            res.entities = self._select(req.filters)
-        except _Refused as err:
-            res.result = _result(err.code, str(err))
-            return res
-        res.result = _result(OK)
+        res.result, found = _attempt(lambda: self._select(req.filters))
+        res.entities = found or []
         return res
 
     def _state_msg(self, name: str) -> EntityState:
@@ -213,12 +230,9 @@ class EntityQueries:
 
     def get_entity_state(self, req: GetEntityState.Request, res: GetEntityState.Response) -> Any:
         """GetEntityState: an entity's pose and twist in a reference frame."""
-        try:
-            res.state = self.sim.call(lambda: self._state_msg(req.entity))
-        except WorldError as err:
-            res.result = _result(Result.RESULT_NOT_FOUND, str(err))
-            return res
-        res.result = _result(OK)
+        res.result, state = _attempt(lambda: self.sim.call(lambda: self._state_msg(req.entity)))
+        if state is not None:
+            res.state = state
         return res
 
     def get_entities_states(self, req: GetEntitiesStates.Request, res: GetEntitiesStates.Response) -> Any:
@@ -247,42 +261,24 @@ class EntityQueries:
         """SetEntityState: teleport an entity and set its twist."""
         s = req.state
         p, tw = s.pose, s.twist
-        vals = (
-            p.position.x,
-            p.position.y,
-            p.position.z,
-            p.orientation.x,
-            p.orientation.y,
-            p.orientation.z,
-            p.orientation.w,
-        )
-        if not _finite(*vals):
+        requested = from_pose_msg(p)
+        if not _finite(*requested.position, *requested.orientation):
             res.result = _result(SetEntityState.Response.INVALID_POSE, "state.pose is not finite (NaN or inf)")
             return res
         if not _finite(tw.linear.x, tw.linear.y, tw.linear.z, tw.angular.x, tw.angular.y, tw.angular.z):
             res.result = _result(Result.RESULT_OPERATION_FAILED, "state.twist is not finite (NaN or inf)")
             return res
-        try:
+
+        def teleport() -> None:
+            # the request's pose and twist are in state.header.frame_id: the world's, or an entity's or link's
             frame = s.header.frame_id
             X_WF = Pose() if frame in WORLD_FRAMES else self._frame_pose(frame, "state.header.frame_id")
-            pose = X_WF * from_pose_msg(p)
+            pose = X_WF * requested
             lin = quat_rotate(X_WF.orientation, (tw.linear.x, tw.linear.y, tw.linear.z))
             ang = quat_rotate(X_WF.orientation, (tw.angular.x, tw.angular.y, tw.angular.z))
             self.sim.call(lambda: self.sim.world.set_entity_state(req.entity, pose, lin, ang))
-        except _Refused as err:
-            res.result = _result(err.code, str(err))
-            return res
-        except WorldError as err:
-            code = {
-                ErrorKind.NOT_FOUND: Result.RESULT_NOT_FOUND,
-                ErrorKind.INVALID_POSE: SetEntityState.Response.INVALID_POSE,
-            }.get(err.kind, Result.RESULT_OPERATION_FAILED)
-            res.result = _result(code, str(err))
-            return res
-        except TimeoutError as err:
-            res.result = _result(Result.RESULT_OPERATION_FAILED, str(err))
-            return res
-        res.result = _result(OK)
+
+        res.result, _ = _attempt(teleport, {ErrorKind.INVALID_POSE: SetEntityState.Response.INVALID_POSE})
         return res
 
     def get_entity_info(self, req: GetEntityInfo.Request, res: GetEntityInfo.Response) -> Any:
@@ -308,12 +304,7 @@ class EntityQueries:
                 parts.append(f"DIVERGED: {self.sim.diverged[e.name]}")
             return cat, "; ".join(parts)
 
-        try:
-            cat, desc = self.sim.call(do)
-        except WorldError as err:
-            res.result = _result(Result.RESULT_NOT_FOUND, str(err))
-            return res
-        res.info.category.category = cat
-        res.info.description = desc
-        res.result = _result(OK)
+        res.result, found = _attempt(lambda: self.sim.call(do))
+        if found is not None:
+            res.info.category.category, res.info.description = found
         return res

@@ -86,7 +86,7 @@ from ..description import (
 from ..physics import WORLD_FRAMES, Entity, ErrorKind, WorldError, pose_out_of_range
 from ..sim import SpawnRequest
 from ._convert import from_pose_msg
-from ._entity_queries import OK, EntityQueries, _finite, _Refused, _result
+from ._entity_queries import OK, EntityQueries, _attempt, _finite, _Refused, _result
 from ._replies import guarded_service, serve, with_warnings
 from ._stepping import SteppingService
 
@@ -543,16 +543,7 @@ class SimulationInterfaces(EntityQueries):
 
     def delete_entity(self, req: DeleteEntity.Request, res: DeleteEntity.Response) -> Any:
         """DeleteEntity: remove one entity and its systems."""
-        try:
-            self.sim.delete(req.entity)
-        except WorldError as err:
-            code = Result.RESULT_NOT_FOUND if err.kind == ErrorKind.NOT_FOUND else Result.RESULT_OPERATION_FAILED
-            res.result = _result(code, str(err))
-            return res
-        except TimeoutError as err:
-            res.result = _result(Result.RESULT_OPERATION_FAILED, str(err))
-            return res
-        res.result = _result(OK)
+        res.result, _ = _attempt(lambda: self.sim.delete(req.entity))
         return res
 
 

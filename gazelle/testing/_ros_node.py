@@ -27,6 +27,20 @@ class TestTimeout(AssertionError):
     __test__ = False  # not a test class for pytest's collector
 
 
+def poll_until(predicate: Callable[[], Any], timeout: float, what: str, pause: Callable[[], object]) -> Any:
+    """``predicate()``'s first truthy value, calling ``pause()`` between tries (a sleep, or a wait on a
+    condition that new data wakes); :class:`TestTimeout` naming ``what`` once ``timeout`` wall-clock seconds
+    have passed with no such value."""
+    deadline = time.monotonic() + timeout
+    while True:
+        value = predicate()
+        if value:
+            return value
+        if time.monotonic() > deadline:
+            raise TestTimeout(f"{what} within {timeout:g} s")
+        pause()
+
+
 class MessageLog:
     """The messages one subscription received, in order, with the sim time (from /clock) at which each
     arrived at the test."""
@@ -170,15 +184,12 @@ class RosTestNode:
 
     def wait_until(self, predicate: Callable[[], Any], timeout: float = 10.0, what: str = "the condition") -> Any:
         """Wait (wall clock) until ``predicate()`` is truthy; for sim-time waits use ``Sim.run_until``."""
-        deadline = time.monotonic() + timeout
-        while True:
-            value = predicate()
-            if value:
-                return value
-            if time.monotonic() > deadline:
-                raise TestTimeout(f"{what} within {timeout:g} s")
-            with self._clock_cond:
+
+        def pause() -> None:
+            with self._clock_cond:  # a /clock message wakes it early: new data may have come with it
                 self._clock_cond.wait(0.02)
+
+        return poll_until(predicate, timeout, what, pause)
 
     def close(self) -> None:
         if self.context.ok():

@@ -136,7 +136,6 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
     unknown = set(options) - {"world", "paused", "rtf", "start_timeout", "lockstep"}
     if unknown:
         pytest.fail(f"@pytest.mark.gazelle: unknown option(s) {', '.join(sorted(unknown))}", pytrace=False)
-    world = options.get("world")
     config = request.config
     mode = config.getoption("--gazelle-artifacts")
     folder = _artifacts_base(config) / _safe(request.node.nodeid)
@@ -151,23 +150,18 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
     env = {**os.environ, TOKEN_VAR: token}
     sim = None
     try:
-        try:
-            sim = Sim(
-                domain_id=domain.domain_id,
-                world=world,
-                seed=gazelle_seed,
-                paused=bool(options.get("paused", True)),
-                rtf=options.get("rtf"),
-                env=env,
-                start_timeout=float(options.get("start_timeout", 60.0)),
-                settle_timeout=_settle_timeout(options),
-                record=(folder / "bag", record) if mode != "none" else None,
-                # the server writes the replay page as it stops: the bodies from above on a timeline, the
-                # recorded topics' values at the cursor (those the simulation publishes)
-                replay=(folder / "replay.html", record) if mode != "none" else None,
-            )
-        except Exception as err:
-            pytest.fail(f"gazelle_sim did not start: {err}", pytrace=False)
+        sim = _start_sim(
+            Sim,
+            "gazelle_sim",
+            domain.domain_id,
+            options,
+            (folder / "bag", record) if mode != "none" else None,
+            seed=gazelle_seed,
+            paused=bool(options.get("paused", True)),
+            rtf=options.get("rtf"),
+            env=env,
+            start_timeout=float(options.get("start_timeout", 60.0)),
+        )
         # what the test itself starts (rclpy's default context, a subprocess) is on this domain too
         test_env = {"ROS_DOMAIN_ID": str(domain.domain_id), "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}
         with environ_applied({**test_env, TOKEN_VAR: token}):
@@ -193,6 +187,31 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
             pytest.fail(f"the test left {len(leaks)} process(es) running (killed now): {listed}", pytrace=False)
 
 
+def _start_sim(
+    sim_class: Any,
+    fixture: str,
+    domain_id: int,
+    options: dict[str, Any],
+    bag: tuple[Path, list[str]] | None,
+    **kwargs: Any,
+) -> Any:
+    """A started ``gazelle sim`` for ``fixture`` (the test fails, naming it, when the server does not start):
+    on ``options``' world and lockstep, recording ``bag`` (folder, topics; None: nothing) with a replay page
+    beside it, which the server writes as it stops (the bodies from above on a timeline, the recorded
+    topics' values at the cursor)."""
+    try:
+        return sim_class(
+            domain_id=domain_id,
+            world=options.get("world"),
+            settle_timeout=_settle_timeout(options),
+            record=bag,
+            replay=(bag[0].parent / "replay.html", bag[1]) if bag is not None else None,
+            **kwargs,
+        )
+    except Exception as err:
+        pytest.fail(f"{fixture} did not start: {err}", pytrace=False)
+
+
 def _settle_timeout(options: dict[str, Any]) -> float:
     """``lockstep`` (default True): after each chunk of stepped time the world waits, up to 10 s of wall
     time, until the processes the test started are idle; ``lockstep=False`` steps on regardless."""
@@ -215,7 +234,6 @@ def gazelle_sim_module(request: pytest.FixtureRequest) -> Iterator[Any]:
     except ImportError as err:
         pytest.fail(f"gazelle_sim_module needs ROS 2 (rclpy) in this environment: {err}", pytrace=False)
     options = _marker_options(request)
-    world = options.get("world")
     record = list(options.get("record", ()))
     seed = options.get("seed", request.config.getoption("--gazelle-seed"))
     mode = request.config.getoption("--gazelle-artifacts")
@@ -227,18 +245,8 @@ def gazelle_sim_module(request: pytest.FixtureRequest) -> Iterator[Any]:
     domain = reserve_domain()
     sim = None
     try:
-        try:
-            sim = Sim(
-                domain_id=domain.domain_id,
-                world=world,
-                seed=int(seed or 0),
-                paused=True,
-                settle_timeout=_settle_timeout(options),
-                record=(live / "bag0", record) if mode != "none" else None,
-                replay=(live / "replay.html", record) if mode != "none" else None,
-            )
-        except Exception as err:
-            pytest.fail(f"gazelle_sim_module did not start: {err}", pytrace=False)
+        bag = (live / "bag0", record) if mode != "none" else None
+        sim = _start_sim(Sim, "gazelle_sim_module", domain.domain_id, options, bag, seed=int(seed or 0), paused=True)
         request.node.stash[_MODULE_BAGS] = (live, [0])
         yield sim
     finally:

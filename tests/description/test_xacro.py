@@ -210,8 +210,8 @@ def test_xacro_globals_are_restored() -> None:
 
     before = (xacro_subst._eval_find, xacro_subst._eval_dict["find"], xacro.parse, xacro.eval_all, xacro.warning)
     bad = XACRO / "macro_error.urdf.xacro"
-    assert expand(bad.read_text(), source=str(bad), sink=DiagnosticSink(), resolver=ResourceResolver()) is None
-    assert expand(SEED_ROBOT, source="<seed>.xacro", sink=DiagnosticSink(), resolver=ResourceResolver()) is not None
+    assert expand(bad.read_text(), source=str(bad), args={}, sink=DiagnosticSink(), resolver=ResourceResolver()) is None
+    assert expand(SEED_ROBOT, "<seed>.xacro", {}, sink=DiagnosticSink(), resolver=ResourceResolver()) is not None
     after = (xacro_subst._eval_find, xacro_subst._eval_dict["find"], xacro.parse, xacro.eval_all, xacro.warning)
     assert before == after
     assert xacro.substitution_args_context.get("arg") == {}

@@ -22,7 +22,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from _harness import GAZELLE, RosClient, start, wait_for
+from _harness import RosClient, run_spawner, spawn_file, start, start_move_group, start_sim, wait_for
 from _paths import REAL as FIXTURES
 from _paths import REPO
 
@@ -74,34 +74,16 @@ class Contacts:
 def chessbot(ros_env) -> Iterator[RosClient]:
     os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
     try:
-        # four times real time: the arms move in sim time, and the suite waits less for them
-        sim = start([*GAZELLE, "sim", "--no-viewer", "--rtf", "4"], "gazelle sim")
-        sim.wait_line("gazelle: ready", timeout=60)
-        for name, path in (("table", CHESSBOT / "table.sdf"), ("chessbot", WITH_BUMPERS)):
-            spawn = start([*GAZELLE, "spawn", "-entity", name, "-file", str(path)], f"spawn {name}")
-            assert spawn.wait(120) == 0, spawn.output
+        start_sim(4)  # four times real time
+        spawn_file("table", CHESSBOT / "table.sdf")
+        spawn_file("chessbot", WITH_BUMPERS)
         board = start([sys.executable, str(REPO / "examples" / "chessboard" / "spawn_chessboard.py")], "board")
         assert board.wait(120) == 0, board.output
-        controllers = ["joint_state_broadcaster", "left_arm_controller", "right_arm_controller"]
-        spawner = start([*GAZELLE, "spawner", *controllers, "-p", str(DUAL / "ros2_controllers.yaml")], "spawner")
-        assert spawner.wait(60) == 0, spawner.output
-        hands = ["left_hand_controller", "right_hand_controller"]
-        spawner = start([*GAZELLE, "spawner", *hands, "-p", str(CHESSBOT / "hand_controllers.yaml")], "hands")
-        assert spawner.wait(60) == 0, spawner.output
-        move_group = start(
-            [
-                *GAZELLE,
-                "move_group",
-                "--urdf",
-                str(CHESSBOT / "chessbot.urdf.xacro"),
-                "--srdf",
-                str(DUAL / "panda.srdf"),
-                "--config",
-                str(DUAL),
-            ],
-            "move_group",
-        )
-        move_group.wait_line("You can start planning now!", timeout=60)
+        arms = ("joint_state_broadcaster", "left_arm_controller", "right_arm_controller")
+        run_spawner(DUAL / "ros2_controllers.yaml", *arms)
+        run_spawner(CHESSBOT / "hand_controllers.yaml", "left_hand_controller", "right_hand_controller")
+        urdf = CHESSBOT / "chessbot.urdf.xacro"
+        start_move_group(urdf, DUAL / "panda.srdf", DUAL, via_ros2=False)
         ros = RosClient("chessbot_test")
         try:
             ros.contacts = Contacts(ros)  # type: ignore[attr-defined]

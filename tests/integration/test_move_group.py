@@ -16,12 +16,11 @@ import sys
 import threading
 import xml.etree.ElementTree as ET
 from collections.abc import Iterator
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pytest
-from _harness import GAZELLE, RosClient, start, wait_for
+from _harness import GAZELLE, Proc, RosClient, run_spawner, spawn_file, start_move_group, start_sim, wait_for
 from _paths import REAL as FIXTURES
 from _paths import REPO
 from action_msgs.msg import GoalStatus
@@ -147,26 +146,9 @@ OBJECT_PADDING = 0.01
 the convex hull of its meshes, and a plan 5 mm past the pillar below brushed it without padding."""
 
 
-def start_move_group(*ros_args: str) -> Any:
+def start_panda_move_group(*ros_args: str) -> Proc:
     """`ros2 run gazelle move_group` with the Panda config's URDF, SRDF and folder, ready to plan."""
-    move_group = start(
-        [
-            str(Path(sys.prefix) / "bin" / "ros2"),
-            "run",
-            "gazelle",
-            "move_group",
-            "--urdf",
-            str(CONFIG / "panda.urdf.xacro"),
-            "--srdf",
-            str(CONFIG / "panda.srdf"),
-            "--config",
-            str(CONFIG),
-            *(["--ros-args", *ros_args] if ros_args else []),
-        ],
-        "move_group",
-    )
-    move_group.wait_line("You can start planning now!", timeout=60)
-    return move_group
+    return start_move_group(CONFIG / "panda.urdf.xacro", CONFIG / "panda.srdf", CONFIG, *ros_args)
 
 
 @pytest.fixture(scope="module")
@@ -174,24 +156,10 @@ def panda(ros_env) -> Iterator[Panda]:
     import os
 
     os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
-    # eight times real time (as fast as it goes, nearly): the arm moves in sim time, the suite waits less
-    sim = start([*GAZELLE, "sim", "--no-viewer", "--rtf", "8"], "gazelle sim")
-    sim.wait_line("gazelle: ready", timeout=60)
-    spawn = start([*GAZELLE, "spawn", "-entity", "panda", "-file", str(ON_TABLE)], "spawn")
-    assert spawn.wait(120) == 0, spawn.output
-    spawner = start(
-        [
-            *GAZELLE,
-            "spawner",
-            "joint_state_broadcaster",
-            "panda_arm_controller",
-            "-p",
-            str(CONFIG / "ros2_controllers.yaml"),
-        ],
-        "spawner",
-    )
-    assert spawner.wait(60) == 0, spawner.output
-    move_group = start_move_group("-p", f"robot_description_planning.default_object_padding:={OBJECT_PADDING}")
+    sim = start_sim(8)  # eight times real time: as fast as it goes, nearly
+    spawn_file("panda", ON_TABLE)
+    run_spawner(CONFIG / "ros2_controllers.yaml", "joint_state_broadcaster", "panda_arm_controller")
+    move_group = start_panda_move_group("-p", f"robot_description_planning.default_object_padding:={OBJECT_PADDING}")
     ros = RosClient("move_group_test")
     try:
         yield Panda(ros, sim, move_group)
@@ -291,18 +259,8 @@ def _reachable_poses(panda: Panda, count: int, seed: int) -> list[tuple[float, .
         poses = _fk(panda, joints, ["panda_link3", "panda_link5", "panda_link7", "panda_link8"])
         if min(p.position.z for p in poses) < 0.15:
             continue
-        p = poses[-1]
-        out.append(
-            (
-                p.position.x,
-                p.position.y,
-                p.position.z,
-                p.orientation.x,
-                p.orientation.y,
-                p.orientation.z,
-                p.orientation.w,
-            )
-        )
+        p, q = poses[-1].position, poses[-1].orientation
+        out.append((p.x, p.y, p.z, q.x, q.y, q.z, q.w))
     return out
 
 

@@ -9,11 +9,11 @@ import os
 from collections.abc import Iterator
 
 import pytest
-from _harness import GAZELLE, RosClient, start, wait_for
+from _harness import RosClient, spawn_file, start_sim, wait_for
 from _paths import REPO
 from moveit_msgs.msg import MoveItErrorCodes
 
-from .test_move_group import PANDA, Panda, _group_states, start_move_group
+from .test_move_group import PANDA, Panda, _group_states, start_panda_move_group
 
 pytestmark = pytest.mark.slow
 
@@ -24,11 +24,9 @@ GZ_PANDA = REPO / "examples" / "arms" / "panda_gz_position.urdf.xacro"
 def gz_panda(ros_env) -> Iterator[Panda]:
     os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)
     try:
-        sim = start([*GAZELLE, "sim", "--no-viewer", "--rtf", "2"], "gazelle sim")
-        sim.wait_line("gazelle: ready", timeout=60)
-        spawn = start([*GAZELLE, "spawn", "-entity", "panda", "-file", str(GZ_PANDA)], "spawn")
-        assert spawn.wait(120) == 0, spawn.output
-        move_group = start_move_group()
+        sim = start_sim(2)
+        spawn_file("panda", GZ_PANDA)
+        move_group = start_panda_move_group()
         ros = RosClient("move_group_gz_test")
         try:
             yield Panda(ros, sim, move_group)

@@ -10,15 +10,13 @@ library is caught and printed rather than passing unseen. ``GAZELLE_YUMI_SOAK`` 
 from __future__ import annotations
 
 import os
-import sys
 import threading
 import xml.etree.ElementTree as ET
 from collections.abc import Iterator
-from pathlib import Path
 from typing import Any
 
 import pytest
-from _harness import GAZELLE, RosClient, start, wait_for
+from _harness import RosClient, run_spawner, spawn_file, start_move_group, start_sim, wait_for
 from _paths import REPO
 from moveit_msgs.action import ExecuteTrajectory, MoveGroup
 from moveit_msgs.msg import Constraints, JointConstraint, MoveItErrorCodes
@@ -79,41 +77,12 @@ def _constraints(values: dict[str, float]) -> Constraints:
 
 @pytest.fixture(scope="module")
 def yumi(ros_env) -> Iterator[Yumi]:
-    sim = start([*GAZELLE, "sim", "--no-viewer", "--rtf", "8"], "gazelle sim")
-    sim.wait_line("gazelle: ready", timeout=60)
-    spawn = start([*GAZELLE, "spawn", "-entity", "yumi", "-file", str(YUMI / "yumi.urdf")], "spawn")
-    assert spawn.wait(120) == 0, spawn.output
-    spawner = start(
-        [
-            *GAZELLE,
-            "spawner",
-            "joint_state_broadcaster",
-            "left_arm_controller",
-            "right_arm_controller",
-            "-p",
-            str(YUMI / "ros2_controllers.yaml"),
-        ],
-        "spawner",
-    )
-    assert spawner.wait(60) == 0, spawner.output
+    sim = start_sim(8)
+    spawn_file("yumi", YUMI / "yumi.urdf")
+    arms = ("joint_state_broadcaster", "left_arm_controller", "right_arm_controller")
+    run_spawner(YUMI / "ros2_controllers.yaml", *arms)
     env = {**os.environ, "PYTHONMALLOC": "debug", "PYTHONFAULTHANDLER": "1"}
-    move_group = start(
-        [
-            str(Path(sys.prefix) / "bin" / "ros2"),
-            "run",
-            "gazelle",
-            "move_group",
-            "--urdf",
-            str(YUMI / "yumi.urdf"),
-            "--srdf",
-            str(YUMI / "yumi.srdf"),
-            "--config",
-            str(YUMI),
-        ],
-        "move_group",
-        env,
-    )
-    move_group.wait_line("You can start planning now!", timeout=120)
+    move_group = start_move_group(YUMI / "yumi.urdf", YUMI / "yumi.srdf", YUMI, env=env)
     ros = RosClient("yumi_test")
     try:
         yield Yumi(ros, sim, move_group)
