@@ -118,6 +118,7 @@ class Box:
     """A box; ``size`` holds full edge lengths (x, y, z) in metres."""
 
     size: Vec3
+    """Full edge lengths along the geometry frame's x, y, z, metres (MuJoCo's box size is half of it)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -125,7 +126,9 @@ class Cylinder:
     """A cylinder along its local z axis."""
 
     radius: float
+    """Metres."""
     length: float
+    """Metres, along local z, centred on the geometry frame."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -133,6 +136,7 @@ class Sphere:
     """A sphere."""
 
     radius: float
+    """Metres, centred on the geometry frame."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -140,7 +144,9 @@ class Capsule:
     """A capsule along local z; ``length`` excludes the two hemispherical caps (SDF)."""
 
     radius: float
+    """Metres: the cylinder's and the caps' radius."""
     length: float
+    """Metres between the two caps' centres (SDF's <length>; the capsule is length + 2·radius long)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -148,7 +154,9 @@ class Cone:
     """A solid cone along local z (SDF 1.11): base of ``radius`` at z = -length/2, apex at +length/2."""
 
     radius: float
+    """Metres: the base's radius."""
     length: float
+    """Metres from base to apex, centred on the geometry frame."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -156,6 +164,7 @@ class Ellipsoid:
     """An ellipsoid with semi-axes ``radii``."""
 
     radii: Vec3
+    """Semi-axes along local x, y, z, metres."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -163,7 +172,10 @@ class Plane:
     """An infinite plane (rendered with ``size``) with a normal in the local frame."""
 
     normal: Vec3 = (0.0, 0.0, 1.0)
+    """The plane's normal in the geometry frame (SDF's <normal>); MuJoCo's planes face +z, so the builder rotates
+    others."""
     size: tuple[float, float] = (100.0, 100.0)
+    """Width and length in metres, for drawing only: the plane collides everywhere."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -175,6 +187,7 @@ class Mesh:
     path: str | None
     """Absolute resolved file path, or None when it could not be resolved (a diagnostic says so)."""
     scale: Vec3 = (1.0, 1.0, 1.0)
+    """Scale per axis applied to the file's vertices (URDF's scale attribute, SDF's <scale>)."""
 
 
 Geometry = Box | Cylinder | Sphere | Capsule | Cone | Ellipsoid | Plane | Mesh
@@ -190,8 +203,11 @@ class Material:
     diffuse: RGBA | None = None
     """Base colour, RGBA 0..1; None when unspecified."""
     ambient: RGBA | None = None
+    """RGBA 0..1, as written (the viewer and cameras draw the diffuse colour)."""
     specular: RGBA | None = None
+    """RGBA 0..1, as written."""
     emissive: RGBA | None = None
+    """RGBA 0..1, as written."""
     texture: str | None = None
     """Texture file name or URI, kept as given."""
 
@@ -205,22 +221,32 @@ class Surface:
     mu2: float | None = None
     """Friction in the second direction (SDF ode/mu2, URDF gazebo mu2)."""
     fdir1: Vec3 | None = None
+    """First friction direction (ODE); not simulated: MuJoCo's friction is isotropic here, a warning names it."""
     slip1: float | None = None
+    """ODE's force-dependent slip in the first direction; not simulated (warned about)."""
     slip2: float | None = None
+    """ODE's slip in the second direction; not simulated (warned about)."""
     torsional: float | None = None
     """Torsional friction coefficient."""
     rolling: float | None = None
-    """Rolling friction coefficient (MuJoCo extension)."""
+    """Bullet's <rolling_friction>; not simulated (warned about), as gz-sim's default engine (DART) drops it."""
     kp: float | None = None
     """Contact stiffness (N/m)."""
     kd: float | None = None
     """Contact damping (N·s/m)."""
     min_depth: float | None = None
+    """ODE's <min_depth> (metres of penetration before a contact pushes); not simulated (warned about)."""
     max_vel: float | None = None
+    """ODE's <max_vel> (the most a contact may push apart, m/s); not simulated (warned about)."""
     soft_cfm: float | None = None
+    """ODE's constraint force mixing; not simulated (warned about): MuJoCo's softness comes from kp."""
     soft_erp: float | None = None
+    """ODE's error reduction parameter; not simulated (warned about)."""
     restitution: float | None = None
+    """<bounce><restitution_coefficient>; not simulated (warned about): MuJoCo contacts do not bounce."""
     collide_bitmask: int | None = None
+    """Gazebo's 16-bit <collide_bitmask>: two collisions touch only when their masks share a bit (MuJoCo's
+    contype/conaffinity); None is Gazebo's 0xffff."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -228,11 +254,15 @@ class Collision:
     """A collision shape attached to a link."""
 
     name: str
+    """The collision's name, unique within its link (URDF collisions without one are numbered)."""
     pose: Pose
     """X_LG: pose of the geometry in the link frame."""
     geometry: Geometry
+    """Its shape, in the collision's own frame."""
     surface: Surface = Surface()
+    """Friction, contact stiffness and bitmask (URDF <gazebo reference> tags land here too)."""
     location: SourceLocation | None = None
+    """Where it is written (file:line), for diagnostics."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -240,11 +270,15 @@ class Visual:
     """A visual shape attached to a link."""
 
     name: str
+    """The visual's name, unique within its link."""
     pose: Pose
     """X_LG: pose of the geometry in the link frame."""
     geometry: Geometry
+    """Its shape, in the visual's own frame."""
     material: Material | None = None
+    """Its colour and texture; None: a mesh file's own colours and texture, when it has them."""
     location: SourceLocation | None = None
+    """Where it is written (file:line), for diagnostics."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -256,11 +290,17 @@ class Inertial:
     pose: Pose = IDENTITY
     """X_LI: centre of mass and principal-axis orientation in the link frame."""
     ixx: float = 0.0
+    """Moment of inertia about the inertial frame's x axis, kg·m²."""
     ixy: float = 0.0
+    """Product of inertia, kg·m² (URDF's sign convention: the tensor's off-diagonal element)."""
     ixz: float = 0.0
+    """Product of inertia, kg·m²."""
     iyy: float = 0.0
+    """Moment of inertia about y, kg·m²."""
     iyz: float = 0.0
+    """Product of inertia, kg·m²."""
     izz: float = 0.0
+    """Moment of inertia about z, kg·m²."""
     derived: bool = False
     """True when gazelle derived the inertia from geometry (a diagnostic says why)."""
 
@@ -274,10 +314,15 @@ class ConfigElement:
     """
 
     tag: str
+    """The element's name, without a namespace prefix."""
     attributes: tuple[tuple[str, str], ...] = ()
+    """(name, value) pairs in document order."""
     text: str = ""
+    """The element's own text (not its children's), unstripped."""
     children: tuple[ConfigElement, ...] = ()
+    """The child elements in document order."""
     location: SourceLocation | None = None
+    """Where the element is written (file:line)."""
 
     def attr(self, name: str, default: str | None = None) -> str | None:
         """Attribute value or ``default``."""
@@ -303,10 +348,13 @@ class Plugin:
     """A ``<plugin>`` block, kept with its raw configuration for the systems to read."""
 
     name: str
+    """The plugin's name attribute (a gazebo_ros plugin's node name)."""
     filename: str
+    """The filename attribute as written (libgazebo_ros_diff_drive.so, gz-sim-diff-drive-system, ...)."""
     config: ConfigElement
     """The whole ``<plugin>`` element."""
     location: SourceLocation | None = None
+    """Where the <plugin> is written (file:line)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -314,15 +362,23 @@ class Sensor:
     """A ``<sensor>`` block (camera, ray/lidar, imu, ...)."""
 
     name: str
+    """The sensor's name, unique within its link."""
     type: str
+    """SDF's type attribute (camera, depth, gpu_lidar, imu, ...): which sensor system runs it."""
     pose: Pose
     """Pose in the link frame."""
     update_rate_hz: float = 0.0
+    """<update_rate> in Hz of sim time; 0 means every step."""
     always_on: bool = False
+    """<always_on>: kept as written (gazelle's sensors run while their topics are listened to)."""
     topic: str = ""
+    """<topic> (gz-sim); empty: the plugin's or gz-sim's default name."""
     config: ConfigElement | None = None
+    """The whole <sensor> element, for the sensor system to read its own block (<camera>, <ray>, <imu>, ...)."""
     plugins: tuple[Plugin, ...] = ()
+    """The <plugin>s inside the sensor (gazebo_ros_camera, gazebo_ros_ray_sensor, ...)."""
     location: SourceLocation | None = None
+    """Where the <sensor> is written (file:line)."""
     joint: str = ""
     """For a sensor on a joint (force_torque): the joint's name. The sensor is kept with the joint's
     child link, and ``pose`` is then in the joint's frame."""
@@ -334,17 +390,26 @@ class Link:
     """A rigid body."""
 
     name: str
+    """The link's name, unique in its model; scoped as model::link in the physics world."""
     inertial: Inertial | None = None
     """None means massless (only valid for links welded to a parent by a fixed joint)."""
     visuals: tuple[Visual, ...] = ()
+    """What cameras and the viewer draw."""
     collisions: tuple[Collision, ...] = ()
+    """What touches (and, without an <inertial>, what the mass is derived from)."""
     sensors: tuple[Sensor, ...] = ()
+    """Sensors attached to this link."""
     gravity: bool = True
+    """<gravity> (SDF) / <gazebo><turnGravityOff> (URDF, inverted): False cancels gravity on this link (MuJoCo's
+    gravcomp)."""
     kinematic: bool = False
+    """<kinematic>: moved only by set-state requests, an immovable obstacle to contacts."""
     self_collide: bool | None = None
+    """<self_collide> of this link; None: the model's setting."""
     pose: Pose | None = None
     """X_ML: link pose in the model frame as the file gives it (SDF). URDF leaves None; the tree gives it."""
     location: SourceLocation | None = None
+    """Where the <link> is written (file:line)."""
 
 
 class JointType(enum.Enum):
@@ -366,10 +431,15 @@ class JointLimit:
     """A joint's range and limits (URDF ``<limit>``, SDF ``<axis><limit>``); None: unlimited."""
 
     lower: float | None = None
+    """Lower position limit, rad or m."""
     upper: float | None = None
+    """Upper position limit, rad or m."""
     effort: float | None = None
-    """Max force/torque; None = unlimited."""
+    """Max force/torque, N·m or N; None = unlimited. The physics bounds the joint's actuator force to it
+    (MuJoCo's actfrcrange), as Gazebo bounds the joint's force."""
     velocity: float | None = None
+    """Max speed, rad/s or m/s; None = unlimited. Not enforced on ros2_control commands (ros2_control Jazzy
+    does not either); gz-sim's JointPositionController clamps its velocity mode to it."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -377,9 +447,13 @@ class JointDynamics:
     """A joint's damping, friction and spring (URDF ``<dynamics>``, SDF ``<axis><dynamics>``)."""
 
     damping: float = 0.0
+    """Viscous damping, N·m·s/rad or N·s/m (MuJoCo's joint damping, integrated implicitly)."""
     friction: float = 0.0
+    """Dry (Coulomb) friction, N·m or N (MuJoCo's frictionloss)."""
     spring_stiffness: float = 0.0
+    """SDF <spring_stiffness>, N·m/rad or N/m, pulling toward spring_reference."""
     spring_reference: float = 0.0
+    """SDF <spring_reference>: the spring's rest position, rad or m."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -388,7 +462,9 @@ class JointAxis:
 
     xyz: Vec3 = (1.0, 0.0, 0.0)
     limit: JointLimit = JointLimit()
+    """Its range, effort and velocity limits."""
     dynamics: JointDynamics = JointDynamics()
+    """Its damping, friction and spring."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -396,8 +472,11 @@ class Mimic:
     """URDF ``<mimic>``: this joint follows ``joint`` as ``multiplier * q + offset``."""
 
     joint: str
+    """The leading joint's name."""
     multiplier: float = 1.0
+    """Gain on the leader's position."""
     offset: float = 0.0
+    """Added to the scaled position, rad or m."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -405,9 +484,13 @@ class SafetyController:
     """URDF ``<safety_controller>`` (kept for controllers that read it; not simulated)."""
 
     soft_lower_limit: float = 0.0
+    """rad or m, as written."""
     soft_upper_limit: float = 0.0
+    """rad or m, as written."""
     k_position: float = 0.0
+    """As written."""
     k_velocity: float = 0.0
+    """As written."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -415,7 +498,9 @@ class Calibration:
     """URDF ``<calibration>`` (kept as given; not simulated)."""
 
     rising: float | None = None
+    """rad or m, as written."""
     falling: float | None = None
+    """rad or m, as written."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -427,22 +512,32 @@ class Joint:
     """
 
     name: str
+    """The joint's name, unique in its model."""
     type: JointType
+    """Its kind (revolute, prismatic, fixed, ...)."""
     parent: str
     """Parent link name, or ``"world"``."""
     child: str
+    """Child link name."""
     origin: Pose = IDENTITY
     """X_PJ: the joint frame in the parent link frame (URDF ``<origin>``)."""
     child_offset: Pose = IDENTITY
     """X_JC: the child link frame in the joint frame (identity for URDF; SDF may differ)."""
     axis: JointAxis | None = None
+    """The (first) axis; None for fixed, floating and ball joints."""
     axis2: JointAxis | None = None
     """Second axis (universal joints)."""
     screw_thread_pitch: float | None = None
+    """SDF 1.10's <screw_thread_pitch>: metres along the axis per revolution (an older <thread_pitch>, -2π/pitch
+    rad/m, is converted to it)."""
     mimic: Mimic | None = None
+    """URDF <mimic>: a MuJoCo joint equality keeps this joint at the leader's scaled position."""
     safety_controller: SafetyController | None = None
+    """Kept as written, not simulated."""
     calibration: Calibration | None = None
+    """Kept as written, not simulated."""
     location: SourceLocation | None = None
+    """Where the <joint> is written (file:line)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -450,10 +545,13 @@ class Frame:
     """A named frame attached to a link (SDF ``<frame>``)."""
 
     name: str
+    """The frame's name, unique among the model's frames, links and joints."""
     attached_to: str
+    """The link or frame it moves with."""
     pose: Pose
     """Pose in the attached-to frame."""
     location: SourceLocation | None = None
+    """Where the <frame> is written (file:line)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -461,8 +559,11 @@ class GazeboExtension:
     """A URDF ``<gazebo>`` block (kept whole; its known tags are also applied to links)."""
 
     reference: str | None
+    """The link or joint the block applies to; None for the whole robot."""
     config: ConfigElement
+    """The whole <gazebo> element."""
     location: SourceLocation | None = None
+    """Where the block is written (file:line)."""
 
 
 # --------------------------------------------------------------------------- semantics (SRDF)
@@ -471,7 +572,9 @@ class Chain:
     """SRDF ``<chain base_link tip_link>`` inside a group."""
 
     base_link: str
+    """The chain's first link."""
     tip_link: str
+    """The chain's last link (usually the tool flange)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -479,10 +582,15 @@ class Group:
     """SRDF ``<group>``: the joints, links, chains and subgroups a planner moves together."""
 
     name: str
+    """The group's name (panda_arm, hand, ...), as a MoveIt client names it."""
     links: tuple[str, ...] = ()
+    """Links listed directly."""
     joints: tuple[str, ...] = ()
+    """Joints listed directly."""
     chains: tuple[Chain, ...] = ()
+    """Chains: every joint between each base and tip."""
     subgroups: tuple[str, ...] = ()
+    """Other groups this one contains, by name."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -490,8 +598,11 @@ class GroupState:
     """SRDF ``<group_state>``: a named joint configuration of a group (``home``, ``ready``)."""
 
     name: str
+    """The state's name (home, ready, open, ...)."""
     group: str
+    """The group it positions."""
     joint_values: tuple[tuple[str, tuple[float, ...]], ...] = ()
+    """(joint, values) pairs: one value per degree of freedom, rad or m."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -499,9 +610,13 @@ class EndEffector:
     """SRDF ``<end_effector>``: a group attached to a parent link (and parent group)."""
 
     name: str
+    """The end effector's name."""
     parent_link: str
+    """The link the end effector is attached to."""
     group: str
+    """The group that forms the end effector (the hand)."""
     parent_group: str | None = None
+    """The group the parent link belongs to (the arm), when given."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -509,9 +624,13 @@ class VirtualJoint:
     """SRDF ``<virtual_joint>``: how the robot's root attaches to the world frame."""
 
     name: str
+    """The virtual joint's name."""
     type: str
+    """fixed, floating or planar."""
     parent_frame: str
+    """The fixed frame it attaches to (world, odom)."""
     child_link: str
+    """The robot's root link."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -519,8 +638,11 @@ class DisabledCollision:
     """SRDF ``<disable_collisions>``: a link pair a planner never checks, and why."""
 
     link1: str
+    """First link of the pair."""
     link2: str
+    """Second link of the pair."""
     reason: str = ""
+    """Adjacent, Never, Default, ... as the MoveIt Setup Assistant wrote it."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -528,12 +650,19 @@ class Semantics:
     """The content of an SRDF."""
 
     robot_name: str
+    """The SRDF's <robot name>, which must match the URDF's."""
     groups: tuple[Group, ...] = ()
+    """Planning groups."""
     group_states: tuple[GroupState, ...] = ()
+    """Named joint configurations."""
     end_effectors: tuple[EndEffector, ...] = ()
+    """End effectors."""
     virtual_joints: tuple[VirtualJoint, ...] = ()
+    """How the root attaches to the world."""
     passive_joints: tuple[str, ...] = ()
+    """Joints a planner does not move."""
     disabled_collisions: tuple[DisabledCollision, ...] = ()
+    """Link pairs never checked for collision."""
 
 
 # --------------------------------------------------------------------------- ros2_control
@@ -555,8 +684,11 @@ class ControlInterface:
     ``<param>`` s (``min``, ``max``, ``initial_value``, ``data_type``...) as written."""
 
     name: str
+    """position, velocity, effort, or a custom name."""
     params: tuple[tuple[str, str], ...] = ()
+    """(name, value) pairs of its <param>s, as written."""
     location: SourceLocation | None = None
+    """Where the interface is written (file:line)."""
 
     def param(self, name: str) -> str | None:
         """A ``<param name=...>`` value as written, or None."""
@@ -568,10 +700,15 @@ class ControlComponent:
     """A ``<joint>``, ``<sensor>`` or ``<gpio>`` of a ``<ros2_control>`` block."""
 
     name: str
+    """The joint's (or sensor's, gpio's) name."""
     command_interfaces: tuple[ControlInterface, ...] = ()
+    """What controllers may write."""
     state_interfaces: tuple[ControlInterface, ...] = ()
+    """What controllers may read."""
     params: tuple[tuple[str, str], ...] = ()
+    """(name, value) pairs of the component's <param>s, as written."""
     location: SourceLocation | None = None
+    """Where the component is written (file:line)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -579,15 +716,21 @@ class Ros2Control:
     """A URDF ``<ros2_control name type>`` block: its hardware and what it exposes to controllers."""
 
     name: str
+    """The block's name attribute."""
     type: str
     """``system``, ``actuator`` or ``sensor``."""
     hardware_plugin: str = ""
     """``<hardware><plugin>``; see :data:`SIMULATED_HARDWARE` and :attr:`simulated`."""
     hardware_params: tuple[tuple[str, str], ...] = ()
+    """(name, value) pairs of <hardware><param>s, as written."""
     joints: tuple[ControlComponent, ...] = ()
+    """The joints it exposes."""
     sensors: tuple[ControlComponent, ...] = ()
+    """Its sensors (force/torque, IMU) with their state interfaces."""
     gpios: tuple[ControlComponent, ...] = ()
+    """Its GPIOs."""
     location: SourceLocation | None = None
+    """Where the block is written (file:line)."""
 
     @property
     def simulated(self) -> bool:
@@ -601,24 +744,33 @@ class Model:
     """A robot or object: a tree (or forest) of links and joints with its plugins."""
 
     name: str
+    """The model's name; the spawned entity's name may differ (-entity)."""
     links: tuple[Link, ...]
+    """Every link, the root first when the file orders it so."""
     joints: tuple[Joint, ...] = ()
+    """Every joint between them (and to world)."""
     frames: tuple[Frame, ...] = ()
+    """SDF <frame>s."""
     plugins: tuple[Plugin, ...] = ()
     """Model-level plugins (URDF robot-level ``<gazebo><plugin>``, SDF ``<model><plugin>``)."""
     gazebo: tuple[GazeboExtension, ...] = ()
     """URDF ``<gazebo>`` blocks as written."""
     static: bool = False
+    """<static>: welded to the world, never moved by physics."""
     pose: Pose = IDENTITY
     """X_WM: where the file places the model (SDF ``<pose>``; identity for URDF)."""
     canonical_link: str | None = None
     """The link whose frame is the model frame; defaults to the root link."""
     self_collide: bool = False
+    """<self_collide> of the whole model: its links collide with each other (Gazebo's default is False)."""
     semantics: Semantics | None = None
+    """Its SRDF, when one was loaded with it."""
     source_format: str = ""
     """"urdf", "sdf", ... for messages."""
     source_file: str = ""
+    """The file it was read from; <string> for a description that arrived as a string."""
     location: SourceLocation | None = None
+    """Where the <robot>/<model> is written (file:line)."""
     transmissions: tuple[ConfigElement, ...] = ()
     """URDF ``<transmission>`` blocks as written (kept, not simulated)."""
     ros2_control: tuple[Ros2Control, ...] = ()
@@ -655,15 +807,23 @@ class Light:
     """A world ``<light>``: directional, point or spot, with its colours and direction."""
 
     name: str
+    """The light's name."""
     type: str = "directional"
     """"directional", "point" or "spot"."""
     pose: Pose = IDENTITY
+    """Where the light is, in the world (point and spot lights)."""
     diffuse: RGBA = (0.8, 0.8, 0.8, 1.0)
+    """RGBA 0..1."""
     specular: RGBA = (0.2, 0.2, 0.2, 1.0)
+    """RGBA 0..1."""
     direction: Vec3 = (0.0, 0.0, -1.0)
+    """Where a directional or spot light points, in the light's frame."""
     cast_shadows: bool = False
+    """<cast_shadows>: whether cameras draw its shadows."""
     attenuation_range: float | None = None
+    """<attenuation><range>, metres; None: unlimited."""
     location: SourceLocation | None = None
+    """Where the <light> is written (file:line)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -671,7 +831,9 @@ class PhysicsSettings:
     """A world's ``<physics>``: step size and real-time factor (the engine is always MuJoCo)."""
 
     max_step_size_sec: float = 0.001
+    """<max_step_size>: MuJoCo's timestep, seconds of sim time per step."""
     real_time_factor: float = 1.0
+    """<real_time_factor>: the pace the runtime keeps (1 = real time); --rtf overrides it."""
     real_time_update_rate_hz: float = 1000.0
     """0 = as fast as possible."""
 
@@ -681,9 +843,13 @@ class Scene:
     """A world's ``<scene>``: ambient and background colours, shadows, grid."""
 
     ambient: RGBA = (0.4, 0.4, 0.4, 1.0)
+    """RGBA 0..1."""
     background: RGBA = (0.7, 0.7, 0.7, 1.0)
+    """RGBA 0..1: the sky cameras and the viewer see."""
     shadows: bool = True
+    """Whether cameras draw shadows."""
     grid: bool = True
+    """Whether the viewer draws a ground grid."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -691,14 +857,18 @@ class SphericalCoordinates:
     """``<spherical_coordinates>``: where the world's origin is on the Earth (GPS sensors read it)."""
 
     latitude_deg: float = 0.0
+    """Latitude of the world origin, degrees North."""
     longitude_deg: float = 0.0
+    """Longitude of the world origin, degrees East."""
     elevation: float = 0.0
     """Metres above the WGS84 ellipsoid."""
     heading_deg: float = 0.0
     """Rotation of the world frame from ``world_frame_orientation`` about the downward vertical
     (North to East positive), as SDF defines it."""
     surface_model: str = "EARTH_WGS84"
+    """Only EARTH_WGS84 is read; others are warned about."""
     world_frame_orientation: str = "ENU"
+    """ENU (x East, y North, z up), as gz-sim requires."""
 
 
 DEFAULT_MAGNETIC_FIELD: Vec3 = (5.5645e-6, 22.8758e-6, -42.3884e-6)
@@ -710,14 +880,23 @@ class World:
     """A world: settings, models and lights."""
 
     name: str = "default"
+    """The <world name>."""
     gravity: Vec3 = (0.0, 0.0, -9.8)
+    """m/s² in the world frame (SDF's default points down -z)."""
     physics: PhysicsSettings = PhysicsSettings()
+    """Step size and pace."""
     scene: Scene = Scene()
+    """Colours, shadows, grid."""
     models: tuple[Model, ...] = ()
+    """The models the world file places (<include>s resolved)."""
     lights: tuple[Light, ...] = ()
+    """Its lights."""
     plugins: tuple[Plugin, ...] = ()
+    """World-level <plugin>s (gz-sim systems, gazebo_ros_state, ...)."""
     source_file: str = ""
+    """The file it was read from."""
     location: SourceLocation | None = None
+    """Where the <world> is written (file:line)."""
     spherical_coordinates: SphericalCoordinates | None = None
     """None: the world does not say (GPS sensors then place its origin at 0° N, 0° E, as gz-sim does)."""
     magnetic_field: Vec3 = DEFAULT_MAGNETIC_FIELD

@@ -26,7 +26,9 @@ class Twist:
     """geometry_msgs/Twist."""
 
     linear: Vec3 = (0.0, 0.0, 0.0)
+    """m/s along x, y, z of the frame the message names (a cmd_vel's: the robot's base)."""
     angular: Vec3 = (0.0, 0.0, 0.0)
+    """rad/s about x, y, z."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -36,10 +38,15 @@ class Odometry:
     stamp_sec: float
     frame_id: str
     child_frame_id: str
+    """The body frame the twist is expressed in (base_footprint, base_link)."""
     pose: Pose
+    """X_frame_child: the body in the odometry frame, metres and a wxyz quaternion."""
     twist: Twist
+    """The body's velocity, in child_frame_id (REP 105), not in the odometry frame."""
     pose_covariance: tuple[float, ...] = (0.0,) * 36
+    """Row-major 6x6 over (x, y, z, roll, pitch, yaw), as nav_msgs/Odometry."""
     twist_covariance: tuple[float, ...] = (0.0,) * 36
+    """Row-major 6x6 over (vx, vy, vz, wx, wy, wz)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -48,8 +55,11 @@ class Transform:
 
     stamp_sec: float
     parent: str
+    """The frame the child is placed in (tf's header.frame_id)."""
     child: str
+    """tf's child_frame_id."""
     pose: Pose
+    """X_parent_child."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -57,6 +67,7 @@ class TransformBatch:
     """tf2_msgs/TFMessage."""
 
     transforms: tuple[Transform, ...]
+    """One tf2_msgs/TFMessage's transforms, published together."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -65,9 +76,13 @@ class JointStates:
 
     stamp_sec: float
     names: tuple[str, ...]
+    """Joint names, in the order of the values below."""
     positions: tuple[float, ...]
+    """rad or m."""
     velocities: tuple[float, ...]
+    """rad/s or m/s."""
     efforts: tuple[float, ...] = ()
+    """N·m or N: the actuator force on each joint (empty: not measured)."""
 
 
 class PayloadBlock:
@@ -145,14 +160,21 @@ class LaserScan:
     stamp_sec: float
     frame_id: str
     angle_min: float
+    """Angle of the first ray, radians about the sensor's z (0 is its x axis)."""
     angle_max: float
+    """Angle of the last ray."""
     angle_increment: float
+    """Radians between neighbouring rays."""
     range_min: float
+    """Metres; nearer readings are -inf."""
     range_max: float
+    """Metres; readings beyond it (and misses) are +inf."""
     ranges: bytes
     intensities: bytes
     time_increment: float = 0.0
+    """Seconds between rays: 0, all rays of a scan are cast at one instant."""
     scan_time: float = 0.0
+    """Seconds between scans (1 / the update rate)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -163,7 +185,9 @@ class PointCloud:
     stamp_sec: float
     frame_id: str
     width: int
+    """Points per row (all points when height is 1)."""
     height: int
+    """Rows: 1 for an unorganised cloud, the image's height for a depth camera's organised one."""
     data: bytes
 
 
@@ -175,9 +199,13 @@ class Range:
     frame_id: str
     radiation_type: int
     field_of_view: float
+    """The cone's full angle, radians."""
     min_range: float
+    """Metres; a nearer reading is -inf."""
     max_range: float
+    """Metres; nothing within it reads +inf."""
     range: float
+    """The nearest hit within the cone, metres."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -189,10 +217,15 @@ class Imu:
     orientation: tuple[float, float, float, float]
     """(w, x, y, z)."""
     angular_velocity: Vec3
+    """rad/s about the sensor frame's axes."""
     linear_acceleration: Vec3
+    """m/s², proper acceleration in the sensor frame: +9.8 up along z at rest on flat ground."""
     orientation_covariance: tuple[float, ...] = (0.0,) * 9
+    """Row-major 3x3 about the x, y, z axes, rad²."""
     angular_velocity_covariance: tuple[float, ...] = (0.0,) * 9
+    """Row-major 3x3, (rad/s)²: the noise's variance on the diagonal."""
     linear_acceleration_covariance: tuple[float, ...] = (0.0,) * 9
+    """Row-major 3x3, (m/s²)²."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -202,10 +235,15 @@ class Image:
     stamp_sec: float
     frame_id: str
     height: int
+    """Rows, pixels."""
     width: int
+    """Columns, pixels."""
     encoding: str
+    """rgb8, bgr8, mono8 or 32FC1 (depth in metres)."""
     step: int
+    """Bytes per row: width times the bytes per pixel."""
     data: bytes
+    """The rows, top first, bytes as the encoding says (32FC1 little-endian)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -217,10 +255,15 @@ class CameraInfo:
     height: int
     width: int
     distortion_model: str
+    """plumb_bob: d holds k1, k2, p1, p2, k3."""
     d: tuple[float, ...]
+    """Distortion coefficients (published, not applied to the image)."""
     k: tuple[float, ...]
+    """Row-major 3x3 intrinsics: fx, 0, cx, 0, fy, cy, 0, 0, 1 (pixels)."""
     r: tuple[float, ...]
+    """Row-major 3x3 rectification: the identity for a monocular camera."""
     p: tuple[float, ...]
+    """Row-major 3x4 projection: K with a zero fourth column (no stereo baseline)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -228,12 +271,19 @@ class ContactPair:
     """gazebo_msgs/ContactState: the contacts between two collisions, forces on ``collision1``."""
 
     collision1: str
+    """Scoped collision name (model::link::collision) the forces act on."""
     collision2: str
+    """The other collision's scoped name."""
     positions: tuple[Vec3, ...]
+    """Contact points, world frame, metres."""
     normals: tuple[Vec3, ...]
+    """Unit normals, world frame, pointing from collision2 into collision1."""
     forces: tuple[Vec3, ...]
+    """Force on collision1 at each point, newtons, world frame."""
     torques: tuple[Vec3, ...]
+    """Torque on collision1 at each point, N·m, world frame."""
     depths: tuple[float, ...]
+    """Penetration at each point, metres (positive: overlapping)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -243,6 +293,7 @@ class Contacts:
     stamp_sec: float
     frame_id: str
     states: tuple[ContactPair, ...]
+    """One entry per pair of collisions in contact."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -252,9 +303,13 @@ class NavSatFix:
     stamp_sec: float
     frame_id: str
     latitude: float
+    """Degrees North (WGS84)."""
     longitude: float
+    """Degrees East."""
     altitude: float
+    """Metres above the WGS84 ellipsoid."""
     position_covariance: tuple[float, ...] = (0.0,) * 9
+    """Row-major 3x3 in East, North, Up, m²."""
     covariance_type: int = 0
     """0 unknown, 1 approximated, 2 diagonal known, 3 known."""
 
@@ -266,6 +321,7 @@ class Vector3Stamped:
     stamp_sec: float
     frame_id: str
     vector: Vec3
+    """In frame_id; units as the topic says (a GPS velocity: m/s East, North, Up)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -275,7 +331,9 @@ class WrenchStamped:
     stamp_sec: float
     frame_id: str
     force: Vec3
+    """Newtons, in frame_id."""
     torque: Vec3
+    """N·m, in frame_id."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -285,7 +343,9 @@ class MagneticField:
     stamp_sec: float
     frame_id: str
     field: Vec3
+    """Tesla along the sensor's x, y, z."""
     covariance: tuple[float, ...] = (0.0,) * 9
+    """Row-major 3x3, tesla²."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -296,8 +356,11 @@ class Altimeter:
     stamp_sec: float
     frame_id: str
     vertical_position: float
+    """Metres above vertical_reference."""
     vertical_velocity: float
+    """m/s, up positive."""
     vertical_reference: float
+    """The world z (metres) the altitude is measured from: the sensor's at its start."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -307,6 +370,7 @@ class TwistStamped:
     stamp_sec: float
     frame_id: str
     twist: Twist
+    """In frame_id (a controller's cmd_vel: the robot's base frame)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -314,6 +378,7 @@ class Float64Array:
     """std_msgs/Float64MultiArray (forward command controllers' ``~/commands``); the layout is not used."""
 
     data: tuple[float, ...]
+    """std_msgs/Float64MultiArray's data (no layout: a flat vector, one value per joint)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -321,10 +386,15 @@ class TrajectoryPoint:
     """trajectory_msgs/JointTrajectoryPoint (empty tuples where the message has no values)."""
 
     time_from_start_sec: float
+    """When the point is to be reached, seconds after the trajectory's start."""
     positions: tuple[float, ...] = ()
+    """One per joint, rad or m (empty: not given)."""
     velocities: tuple[float, ...] = ()
+    """rad/s or m/s (empty: not given)."""
     accelerations: tuple[float, ...] = ()
+    """rad/s² or m/s² (empty: not given)."""
     effort: tuple[float, ...] = ()
+    """N·m or N (empty: not given)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -332,8 +402,11 @@ class JointTrajectory:
     """trajectory_msgs/JointTrajectory (``stamp_sec`` 0: start now)."""
 
     stamp_sec: float
+    """When the trajectory starts, sim time; 0 means on arrival."""
     joint_names: tuple[str, ...]
+    """The joints the points' values are for, in order."""
     points: tuple[TrajectoryPoint, ...]
+    """Waypoints in time order."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -342,7 +415,9 @@ class DisplayTrajectory:
     after the other (MoveIt's ``display_planned_path``)."""
 
     model_id: str
+    """The robot's name (MoveIt's DisplayTrajectory.model_id)."""
     trajectories: tuple[JointTrajectory, ...]
+    """The planned path, one segment per trajectory."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -351,10 +426,15 @@ class TrajectoryControllerState:
 
     stamp_sec: float
     joint_names: tuple[str, ...]
+    """The controller's joints, in order."""
     reference: TrajectoryPoint
+    """Where the trajectory says the joints should be now."""
     feedback: TrajectoryPoint
+    """Where they are."""
     error: TrajectoryPoint
+    """reference minus feedback."""
     output: TrajectoryPoint
+    """What the controller commanded this cycle."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -363,6 +443,7 @@ class DynamicJointState:
 
     stamp_sec: float
     joint_names: tuple[str, ...]
+    """Joints (and sensors, gpios) of the hardware, in order."""
     interface_values: tuple[tuple[tuple[str, ...], tuple[float, ...]], ...]
     """Per joint: (interface names, values)."""
 

@@ -1,5 +1,28 @@
 """Cameras and depth cameras: colour and metric depth rendered offscreen (MuJoCo over EGL), with
-camera_info from the field of view, and points for depth sensors."""
+camera_info from the field of view, and points for depth sensors.
+
+What a ROS user gets, and where it comes from:
+
+* **Frames.** Images, depth and points are stamped with the sensor's frame as the plugin names it
+  (gazebo_ros: ``<frame_name>``, else the link; gz-sim: ``<gz_frame_id>``/``<frame_id>``, else
+  ``model::link::sensor``), and the pixels follow ROS's optical convention (REP 103, camera_info):
+  z forward, x right, y down (:data:`OPTICAL`). A URDF that adds its own ``*_optical_frame`` link and
+  names it in ``<frame_name>`` gets that frame, as in Gazebo.
+* **Units.** Depth is 32FC1 in metres (REP 118): ``+inf`` where nothing is within ``<clip><far>``,
+  ``-inf`` nearer than ``<near>``. Points are metres in the same optical frame, with an ``rgb``-less
+  ``intensity`` (the mean of the colour channels, 0..1).
+* **Intrinsics.** Square pixels from ``<horizontal_fov>`` and the image size, principal point at the
+  centre (:meth:`CameraSpec.k`), as gz-sensors computes them when no ``<lens><intrinsics>`` are given.
+  ``<distortion>`` is published in CameraInfo, not applied to the image (gazelle warns).
+* **Noise.** ``<noise type="gaussian">`` as gz-sensors' image noise: mean and stddev are in units of
+  the full channel range (0..1), so a stddev of 0.007 moves a channel by about 1.8 of 255.
+* **Cost.** Rendering is the most expensive thing a sensor does: a camera renders only at its rate and
+  only while a topic of it has a subscriber, and renders depth only when depth or points are wanted.
+
+Topic names: gazebo_ros's ``<camera_name>/image_raw``, ``camera_info``, ``depth/image_raw``, ``points``
+under the plugin node's namespace; gz-sim's ``<topic>`` with ``camera_info`` beside it, and an RGBD
+camera's ``<topic>/image``, ``/depth_image``, ``/points`` (see :meth:`Camera._topics`).
+"""
 
 from __future__ import annotations
 
@@ -14,7 +37,7 @@ from ...description import (
     Sensor,
 )
 from ...physics import OffscreenRenderer, PhysicsWorld, RenderError
-from .._base import SystemContext, UpdateInfo, child_text, parse_float
+from .._base import SystemContext, UpdateInfo
 from .._bus import (
     CameraInfo,
     Endpoint,
@@ -23,6 +46,7 @@ from .._bus import (
     PointCloud,
     resolve_topic,
 )
+from .._plugin_config import child_text, parse_float
 from ._common import (
     SENSOR_DEPTH,
     Noise,
@@ -36,6 +60,7 @@ from ._common import (
 
 CAMERA_TYPES = frozenset({"camera", "depth", "depth_camera", "rgbd_camera", "rgbd"})
 DEPTH_TYPES = frozenset({"depth", "depth_camera", "rgbd_camera", "rgbd"})
+# a depth camera in gazebo_ros is a camera with a depth plugin; gz-sim spells it depth_camera or rgbd_camera
 MAX_IMAGE_SIDE = 4096
 """The widest and tallest camera image (4K; 8192 x 8192 fills a 256 MB buffer a frame)."""
 
@@ -46,14 +71,21 @@ class CameraSpec:
     """A ``<camera>`` block: image size and format, field of view, clip planes, distortion, noise."""
 
     width: int = 320
+    """``<image><width>``, pixels (SDF's default)."""
     height: int = 240
+    """``<image><height>``, pixels."""
     format: str = "R8G8B8"
+    """``<image><format>``: R8G8B8 (rgb8), B8G8R8 (bgr8) or L8 (mono8); others are published as rgb8."""
     horizontal_fov: float = 1.047
+    """``<horizontal_fov>``, radians (60°); the vertical one follows from the aspect ratio."""
     near: float = 0.1
+    """``<clip><near>``, metres: nearer is not drawn (depth ``-inf``)."""
     far: float = 100.0
+    """``<clip><far>``, metres: farther is not drawn (depth ``+inf``)."""
     distortion: tuple[float, float, float, float, float] = (0.0, 0.0, 0.0, 0.0, 0.0)
     """k1, k2, p1, p2, k3 (ROS's plumb_bob order); published in CameraInfo, not applied to the image."""
     noise: Noise = Noise()
+    """``<noise>``: Gaussian, in units of the full channel range (see the module docstring)."""
 
     def k(self) -> tuple[float, ...]:
         """The intrinsic matrix: square pixels, f = (width / 2) / tan(hfov / 2), principal point at the
@@ -62,6 +94,7 @@ class CameraSpec:
         return (f, 0.0, self.width / 2.0, 0.0, f, self.height / 2.0, 0.0, 0.0, 1.0)
 
 
+# SDF <image><format> -> sensor_msgs/Image encoding (gz-sim 8 spells both the old and the new names)
 _ENCODINGS = {
     "R8G8B8": "rgb8",
     "RGB_INT8": "rgb8",
@@ -195,6 +228,9 @@ class Camera(_SensorSystem):
         )
 
     def _topics(self, ctx: SystemContext) -> CameraTopics:
+        """Where each stream goes, by who configured the camera: a gazebo_ros plugin (its node's names), an
+        RGBD camera of gz-sim (one ``<topic>`` prefix), a gz-sim depth camera (``<topic>`` is the depth
+        image) or a plain camera (``<topic>`` is the image, ``camera_info`` beside it)."""
         assert self.output is not None and self.sensor is not None
         image = self.output.topic
         parent = image.rsplit("/", 1)[0]
@@ -224,6 +260,7 @@ class Camera(_SensorSystem):
         """CameraInfo of this camera (K and P from ``horizontal_fov`` and the image size)."""
         s = self.spec
         k = s.k()
+        # a monocular camera: P is K with a zero fourth column (no baseline), R the identity (not rectified)
         p = (k[0], 0.0, k[2], 0.0, 0.0, k[4], k[5], 0.0, 0.0, 0.0, 1.0, 0.0)
         assert self.output is not None
         return CameraInfo(
@@ -253,6 +290,7 @@ class Camera(_SensorSystem):
             logging.getLogger("gazelle.sensors").error(f"camera '{self.sensor.name if self.sensor else ''}': {err}")
             return None
         if d is not None:
+            # the depth buffer reads `far` (to float precision) where nothing was drawn: REP 118's +inf
             d = d.copy()
             d[d >= s.far * (1 - 1e-4)] = np.inf
         return rgb.copy(), d
@@ -267,6 +305,7 @@ class Camera(_SensorSystem):
         t, s = info.sim_time_sec, self.spec
         assert self.output is not None
         frame = self.output.frame_id
+        # render only what a subscriber will get: depth costs a second read of the GL buffer
         need_depth = self.depth and (want.get("depth", False) or want.get("points", False))
         need_image = want.get("image", False) and bool(self.topics.image)
         out = self.render(world, need_depth) if (need_image or need_depth) else None
@@ -279,13 +318,13 @@ class Camera(_SensorSystem):
         rgb, d = out
         if need_image:
             img = rgb
-            if s.noise.active:
+            if s.noise.active:  # per pixel and channel, in units of the full range (gz-sensors' ImageGaussianNoise)
                 noisy = rgb.astype(np.float32) + 255.0 * self._rng.normal(s.noise.mean, s.noise.stddev, rgb.shape)
                 img = np.clip(noisy, 0, 255).astype(np.uint8)
             enc = _ENCODINGS[s.format]
             if enc == "bgr8":
                 img = img[..., ::-1]
-            elif enc == "mono8":
+            elif enc == "mono8":  # luma with ITU-R BT.601 weights, as OpenCV's RGB2GRAY
                 img = (img.astype(np.float32) @ np.array([0.299, 0.587, 0.114], np.float32)).astype(np.uint8)
             data = np.ascontiguousarray(img)
             channels = 1 if data.ndim == 2 else 3
@@ -297,6 +336,8 @@ class Camera(_SensorSystem):
                 Image(t, frame, s.height, s.width, "32FC1", s.width * 4, d.astype("<f4").tobytes())
             )
         if want.get("points"):
+            # back-project each finite depth pixel through K: x right, y down, z forward (the optical frame);
+            # +0.5 because a pixel's centre is at half-integers, as k() assumes
             k = s.k()
             v, u = np.mgrid[0 : s.height, 0 : s.width]
             ok = np.isfinite(d)
