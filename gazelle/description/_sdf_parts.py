@@ -1,5 +1,18 @@
 """The SDF loader's parts of a model: links (inertials, shapes, surfaces, materials, sensors), joints
-with their axes, and lights."""
+with their axes, and lights.
+
+Poses. SDF places every link, joint, collision, visual and sensor by a ``<pose relative_to=...>``
+(SDF 1.7+; before it, links in the model frame and the rest in their link's). The model's frame
+graph (:class:`~._sdf_frames.Scope`) resolves each to the model frame first (``X_M*``); this module
+then expresses what the typed model keeps in the frame it is kept in: a collision's pose in its link
+(``X_LG``), a joint's origin in its parent link (``X_PJ``) and its child's frame in the joint
+(``X_JC``, identity in URDF, not in SDF, where a joint's frame is placed in its child by default).
+
+Defaults. An element left out takes SDFormat's default (its ``sdf/1.x/*.sdf`` description files), as
+Gazebo does: a link without ``<inertial>`` weighs 1 kg with unit inertia; a box is 1 m, a cylinder
+of radius 1 and length 1, a capsule of radius 0.5. A value that cannot be read is an error or a
+warning naming file:line, never a silent default.
+"""
 
 from __future__ import annotations
 
@@ -88,6 +101,8 @@ class _Parts(_Reader):
         return out
 
     def link(self, name: str, element: etree._Element, doc: _Doc, scope: Scope) -> Link | None:
+        """A ``<link>`` with its shapes, sensors and mass, every pose in the link's frame; None when its
+        own pose cannot be resolved (the frame graph reported why)."""
         loc = self.loc(element, doc)
         self.check(element, doc, "link")
         X_ML = scope.pose(name, loc)
@@ -96,6 +111,7 @@ class _Parts(_Reader):
         X_LM = X_ML.inverse()
 
         def local_pose(el: etree._Element) -> Pose:
+            # a child's <pose> is in its link unless relative_to names another frame: X_LR * X_RG
             pose, rel = self.pose(el, doc)
             if rel is None or rel == name:
                 return pose
@@ -118,7 +134,7 @@ class _Parts(_Reader):
         inertial = self.inertial(
             name, _find(element, "inertial"), doc, [(c.pose, c.geometry) for c in collisions], local_pose
         )
-        self_collide = None
+        self_collide = None  # unset: the model's <self_collide> decides (gz-sim's rule)
         if _find(element, "self_collide") is not None:
             self_collide = self.flag(element, "self_collide", False, doc)
         return Link(
@@ -140,7 +156,7 @@ class _Parts(_Reader):
         No ``<inertial>`` means SDF's default (1 kg, unit inertia), as in Gazebo. A nested
         ``<inertial>`` (a common slip) is reported and its values used as the author meant.
         """
-        if element is None:
+        if element is None:  # sdf/1.x/inertial.sdf: <mass> 1, <inertia> the identity
             return Inertial(mass=1.0, ixx=1.0, iyy=1.0, izz=1.0)
         self.check(element, doc, "inertial")
         loc = self.loc(element, doc)
@@ -155,6 +171,8 @@ class _Parts(_Reader):
             source_el = inner
         pose_el = element if _find(element, "pose") is not None else source_el
         pose = local_pose(pose_el)
+        # SDF 1.11's <inertial auto="true">: mass and inertia from the collisions (with <density>, 1000 kg/m³
+        # by default), or the inertia alone when a <mass> is given
         auto = parse_bool(element.get("auto") or "false") is True
         mass_el = element if _find(element, "mass") is not None else source_el
         mass_child = _find(mass_el, "mass")
@@ -199,6 +217,8 @@ class _Parts(_Reader):
                 )
                 return derive_inertial(shapes, mass)
             values[key] = value
+        # a tensor that is not positive definite, or breaks the triangle inequality, would make MuJoCo
+        # refuse the model or the body spin off: derive one instead, and say so
         problem = inertia_problem(**values)
         if problem is not None:
             self.sink.warning(
@@ -210,6 +230,9 @@ class _Parts(_Reader):
         return Inertial(mass=mass, pose=pose, **values)
 
     def geometry(self, owner: etree._Element, doc: _Doc) -> Geometry | None:
+        """The one shape in ``owner``'s ``<geometry>``, with SDFormat's default dimensions for those left out;
+        None (reported) when it is missing, empty, of non-positive size or of an unsupported kind
+        (heightmap, polyline), and silently for ``<empty/>``."""
         element = _find(owner, "geometry")
         owner_loc = self.loc(owner, doc)
         if element is None:
@@ -217,7 +240,7 @@ class _Parts(_Reader):
                 ErrorCode.ELEMENT_MISSING, f"<{_tag(owner)}> '{owner.get('name')}' has no <geometry>", owner_loc
             )
             return None
-        shapes = [c for c in child_elements(element) if ":" not in _tag(c)]
+        shapes = [c for c in child_elements(element) if ":" not in _tag(c)]  # a prefixed tag is a custom element
         if not shapes:
             self.sink.error(ErrorCode.ELEMENT_MISSING, "<geometry> is empty", self.loc(element, doc))
             return None
@@ -237,7 +260,7 @@ class _Parts(_Reader):
             size = self.vec3(shape, "size", (1.0, 1.0, 1.0), doc)
             return Box(size) if positive(*size) else None
         if kind in ("cylinder", "capsule"):
-            default_r = 1.0 if kind == "cylinder" else 0.5
+            default_r = 1.0 if kind == "cylinder" else 0.5  # sdf/1.9/cylinder.sdf and capsule.sdf
             radius = self.number(shape, "radius", default_r, doc)
             length = self.number(shape, "length", 1.0, doc)
             if not positive(radius, length):
@@ -289,6 +312,8 @@ class _Parts(_Reader):
             self.sink.error(ErrorCode.ELEMENT_MISSING, "<mesh> has no <uri>", loc)
             return None
         scale = self.vec3(shape, "scale", (1.0, 1.0, 1.0), doc)
+        # model://, package://, file:// and plain paths are files on the resource roots; other schemes
+        # (https:// to Fuel) were fetched, or not, by the include that brought the model in
         path = (
             self.resolve(uri, doc)
             if ("://" not in uri or uri.startswith(("model://", "package://", "file://")))
@@ -304,6 +329,9 @@ class _Parts(_Reader):
         return Mesh(uri, str(path), scale)
 
     def surface(self, element: etree._Element | None, doc: _Doc) -> Surface:
+        """``<surface>``: friction (ODE's ``<mu>``/``<mu2>``, else Bullet's ``<friction>``/``<friction2>``),
+        torsional friction, ODE's contact stiffness and the collide bitmask, with every other parameter
+        kept so the physics can name what it does not simulate."""
         if element is None:
             return Surface()
         self.check(element, doc, "surface")
@@ -334,12 +362,12 @@ class _Parts(_Reader):
             mu = self.opt_number(bullet, "friction", doc)
         if mu2 is None:
             mu2 = self.opt_number(bullet, "friction2", doc)
-        bitmask = None
+        bitmask = None  # None: Gazebo's default mask, 0xffff
         bitmask_el = _find(contact, "collide_bitmask") if contact is not None else None
         if contact is not None and bitmask_el is not None:
             raw = self.text(contact, "collide_bitmask") or ""
             try:
-                bitmask = int(raw, 0)
+                bitmask = int(raw, 0)  # Gazebo's files write it in hex (0x01) as often as in decimal
             except ValueError:
                 self.sink.error(
                     ErrorCode.VALUE_INVALID,
@@ -378,6 +406,8 @@ class _Parts(_Reader):
         )
 
     def material(self, element: etree._Element | None, doc: _Doc) -> Material | None:
+        """``<material>``: its colours, an OGRE ``<script><name>`` (Gazebo Classic's Gazebo/Grey and the like,
+        kept by name) and a PBR albedo map as the texture, from whichever workflow (metal, specular) has one."""
         if element is None:
             return None
         self.check(element, doc, "material")
@@ -401,6 +431,8 @@ class _Parts(_Reader):
         )
 
     def sensor(self, element: etree._Element, doc: _Doc, pose: Pose) -> Sensor | None:
+        """A ``<sensor>`` at ``pose`` (in its link), kept whole for its sensor system to read its own block;
+        None when it has no type or name (reported)."""
         name = self.name(element, doc)
         loc = self.loc(element, doc)
         kind = (element.get("type") or "").strip()
@@ -426,6 +458,8 @@ class _Parts(_Reader):
 
     # ================================================================== joints
     def joint(self, name: str, element: etree._Element, doc: _Doc, scope: Scope, built: _Built) -> None:
+        """Add a ``<joint>`` to ``built``: its type, its parent and child (``world`` allowed as a parent), its
+        frame (by default at the child's frame, SDF's rule) and its axes converted to the joint frame."""
         loc = self.loc(element, doc)
         self.check(element, doc, "joint")
         typed = self._joint_type(name, element, loc)
@@ -449,6 +483,7 @@ class _Parts(_Reader):
             type=jtype,
             parent=parent,
             child=child,
+            # X_PJ = X_PM · X_MJ, and the child's frame in the joint's, X_JC = X_JM · X_MC
             origin=X_MJ if parent == "world" else X_MP.inverse() * X_MJ,
             child_offset=X_MJ.inverse() * X_MC,
             axis=axes[0][0] if axes[0] else None,

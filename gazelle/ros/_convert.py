@@ -1,4 +1,21 @@
-"""Conversions between gazelle's dataclasses and ROS messages."""
+"""Conversions between gazelle's dataclasses and ROS messages.
+
+The systems publish plain frozen dataclasses on the bus (``gazelle.systems._bus``); this module is the only
+place that knows their ROS message types. The tables at the end say, per bus message type, which rclpy
+class carries it (:data:`ROS_TYPES`, :data:`ARM_TYPES`) and how to convert each way (:data:`TO_ROS`, and
+the ``from_*`` functions for what the ROS side receives). A sensor declared by its own module
+(:class:`~gazelle.systems.DeclaredMessage`) needs no entry here: its payload's fields are the message's.
+
+Conventions the conversions keep:
+
+* Quaternions are ``wxyz`` in gazelle (MuJoCo's order) and ``xyzw`` in geometry_msgs: the fields are
+  named, so only the unpacking order changes, never the rotation.
+* Times are seconds of sim time as a float; a stamp is split into ``sec``/``nanosec`` with the nanoseconds
+  rounded (:func:`split_seconds`), the same way the serialized-message path rounds them, so a message
+  reads the same stamp whichever path published it.
+* Array payloads (scans, images, clouds) travel as ``bytes``, which go into the message's array fields
+  without a Python loop: the simulation thread hands bytes over and the publisher thread converts.
+"""
 
 from __future__ import annotations
 

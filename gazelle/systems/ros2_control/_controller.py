@@ -1,4 +1,27 @@
-"""What every ros2_control controller shares: its lifecycle, parameters, interfaces and topics."""
+"""What every ros2_control controller shares: its lifecycle, parameters, interfaces and topics.
+
+The lifecycle is ros2_control Jazzy's, driven by the controller manager (``_manager.py``) as
+``ros2 control`` and the spawner ask:
+
+* **load**: the controller is made with its parameters (the YAML's ``<name>.ros__parameters``); state
+  ``unconfigured``.
+* **configure** (:meth:`Controller.configure`): parameters are read and checked, topics declared; a bad
+  parameter raises :class:`~._hardware.ControlError` naming the controller and the parameter, and the
+  controller stays unconfigured, as a failed ``on_configure`` leaves it in ros2_control. State
+  ``inactive``.
+* **activate** (:meth:`Controller.on_activate`): the manager gives it the command interfaces it claims
+  (:meth:`Controller.command_interfaces`), which no other active controller may hold, and it takes the
+  hardware's current values (a trajectory controller holds where the joints are). State ``active``.
+* **update** (:meth:`Controller.update`) every cycle while active, on the simulation thread, at the
+  manager's ``update_rate`` (with a lower ``update_rate`` of its own: every ``round(manager's / own)``
+  cycles): read ``states``, write the claimed entries of ``commands``. Cycles run in sim time:
+  ``period`` is the sim seconds since the controller's last one.
+* **deactivate** releases the interfaces (the hardware holds its last command); **cleanup** drops the
+  topics and goes back to unconfigured.
+
+A controller never touches MuJoCo or rclpy: it reads and writes interface values by name
+(``joint/interface``), and talks through the bus (``~/`` topics are its node's).
+"""
 
 from __future__ import annotations
 
@@ -66,10 +89,10 @@ class Controller:
     :meth:`update` with the hardware's state values and the command values to write."""
 
     type_name: ClassVar[str] = ""
+    """``package/Class`` as in the controller YAML."""
     action_type: ClassVar[str] = ""
     """The action the controller serves on ``action_name`` (``control_msgs/action/FollowJointTrajectory``),
     announced with ``ctx.add_component``; the ROS layer serves it by this type. "" for none."""
-    """``package/Class`` as in the controller YAML."""
 
     def __init__(self, name: str, params: Params, ctx: ControllerContext) -> None:
         self.name = name

@@ -1,4 +1,22 @@
-"""``diff_drive_controller/DiffDriveController`` with ros2_controllers Jazzy's parameters and topics."""
+"""``diff_drive_controller/DiffDriveController`` with ros2_controllers Jazzy's parameters and topics.
+
+Each control cycle (the controller manager's ``update_rate``, in sim time):
+
+1. The latest ``~/cmd_vel`` (geometry_msgs/TwistStamped; ``~/cmd_vel_unstamped`` with
+   ``use_stamped_vel: false``) is the command until ``cmd_vel_timeout`` seconds after it arrived; then
+   the robot is commanded to stop. Only ``linear.x`` (m/s) and ``angular.z`` (rad/s) are read.
+2. :class:`SpeedLimiter` bounds each by its ``linear.x.*`` / ``angular.z.*`` velocity, acceleration
+   and jerk limits (a limit left out is not applied).
+3. The wheels get ``(v ∓ ω·s/2) / r`` rad/s on their velocity command interfaces, with ``s`` the
+   wheel separation and ``r`` each side's radius (times their multipliers): every wheel of a side
+   gets the same command.
+4. Odometry integrates the wheels' measured travel (their position interfaces, or velocity ones with
+   ``position_feedback: false``; the commanded twist with ``open_loop``) along an arc, and publishes
+   ``~/odom`` and, with ``enable_odom_tf``, odom -> base on ``/tf`` at ``publish_rate``.
+
+Frames get the controller's ``tf_frame_prefix`` (its namespace by default, as in Jazzy), so two robots
+in two namespaces publish ``robot1/odom`` and ``robot2/odom``.
+"""
 
 from __future__ import annotations
 
@@ -44,7 +62,9 @@ class SpeedLimiter:
         return x
 
     def limit(self, v: float, v0: float, v1: float, dt: float) -> float:
-        """``v`` limited, given the last two outputs ``v0`` (previous) and ``v1`` (before it)."""
+        """``v`` limited, given the last two outputs ``v0`` (previous) and ``v1`` (before it): first to the
+        velocity bounds, then the change from ``v0`` to what the acceleration allows in ``dt``, then the
+        change of that change to what the jerk allows (the order ros2_controllers' SpeedLimiter uses)."""
         v = self._clamp(v, self.min_v, self.max_v)
         if dt > 0:
             dv = self._clamp(v - v0, self.min_a * dt, self.max_a * dt)
@@ -62,6 +82,9 @@ class DiffDriveController(Controller):
     type_name = "diff_drive_controller/DiffDriveController"
 
     def on_configure(self) -> None:
+        """Read the parameters (Jazzy's names and defaults) and declare the topics; a missing wheel list, a
+        non-positive separation or radius, or a covariance of the wrong length fails the configure with a
+        message naming the parameter, as the controller manager reports it."""
         self.left = self.string_list("left_wheel_names")
         self.right = self.string_list("right_wheel_names")
         if not self.left or not self.right:
@@ -156,6 +179,7 @@ class DiffDriveController(Controller):
         self._prev = [(lin, ang), (v0, w0)]
         sep = self.separation * self.sep_mult
         r_l, r_r = self.radius * self.left_mult, self.radius * self.right_mult
+        # each side's rim speed is v ∓ ω·s/2 (left slower when turning left, ω > 0); over its radius, rad/s
         vl, vr = (lin - ang * sep / 2.0) / r_l, (lin + ang * sep / 2.0) / r_r
         for w in self.left:
             commands[f"{w}/velocity"] = vl
@@ -212,8 +236,9 @@ class DiffDriveController(Controller):
                 return
             period = 1.0 / self.publish_rate
             self._next_publish = (math.floor(t / period + 1e-6) + 1) * period
-        pose = Pose((self.x, self.y, 0.0), quat_from_rpy(0.0, 0.0, self.heading))
+        pose = Pose((self.x, self.y, 0.0), quat_from_rpy(0.0, 0.0, self.heading))  # planar: z, roll, pitch 0
         if self._odom.wanted:
+            # the parameters give the diagonals of the 6x6 covariances; row-major, so element i·6 + i
             pc, tc = [0.0] * 36, [0.0] * 36
             for i in range(6):
                 pc[7 * i], tc[7 * i] = self.pose_cov[i], self.twist_cov[i]

@@ -1,5 +1,24 @@
 """What every sensor shares: noise, rates, the output's topic, frame and message (gazebo_ros and gz-sim
-naming), the base class with its rate gate, and the registration of sensor kinds (:func:`sensor_system`)."""
+naming), the base class with its rate gate, and the registration of sensor kinds (:func:`sensor_system`).
+
+A sensor's life, whichever kind it is:
+
+* **Chosen.** ``systems/_registry.py`` plans one system per ``<sensor>``: a gazebo_ros plugin inside it
+  (``classic_plugins``) makes it publish as that plugin does; else a gz-sim world system that simulates
+  the kind (``gz_system``: ``Sensors``, ``Imu``, ...) makes it publish on gz-sim's topic; else it is warned
+  about and not simulated. The tables come from the classes' declarations (:func:`sensor_system`).
+* **Configured** (:meth:`_SensorSystem._configure_common`): its link, its pose on the link, its rate
+  (:func:`checked_rate`), where it publishes (:func:`sensor_output`: topic, frame_id, message type) and
+  its noise (:func:`parse_noise`). A block that cannot be simulated raises :class:`SensorConfigError`,
+  which the runtime reports with file:line and leaves the sensor out; the rest of the model runs.
+* **Run** in ``post_update``, after the physics step, at its rate in sim time (a :class:`RateGate`, so
+  sensors of one rate fall on the same steps and the world steps inside MuJoCo between them), only
+  while its topic has a subscriber, and never while paused.
+
+Noise follows gz-sensors' Gaussian model: a per-reading N(mean, stddev) plus a bias drawn once per
+channel. Each sensor has its own random stream, seeded from the run's ``--seed``, its entity's name and
+its own, so a run with a seed repeats bit for bit and a spawn does not change another sensor's noise.
+"""
 
 from __future__ import annotations
 
@@ -78,10 +97,16 @@ class Noise:
     N(``bias_mean``, ``bias_stddev``). ``type`` none means exact readings."""
 
     type: str = "none"
+    """``<noise type>``: none or gaussian (gaussian_quantized runs as gaussian; other types are warned about and
+    their readings are exact)."""
     mean: float = 0.0
+    """Added to every reading, in the reading's unit (m for a range, rad/s for a gyro, ...)."""
     stddev: float = 0.0
+    """Standard deviation of each reading's N(0, stddev²) term, in the reading's unit."""
     bias_mean: float = 0.0
+    """Mean magnitude of the constant bias (its sign is drawn; see :meth:`bias`)."""
     bias_stddev: float = 0.0
+    """Spread of the bias drawn once per channel and run."""
 
     @property
     def active(self) -> bool:
