@@ -49,6 +49,7 @@ from ..systems.ros2_control import (
     GripperGoal,
     JointTrajectoryController,
     TrajectoryGoal,
+    TrajectoryResult,
     goal_tolerances,
     params_file_paths,
 )
@@ -72,6 +73,7 @@ ACTION_MONITOR_SEC = 0.05
 
 
 def _state(label: str) -> State:
+    """lifecycle_msgs/State of a controller or hardware state label (an unknown label keeps its text, id UNKNOWN)."""
     sid, text = _LIFECYCLE.get(label, (State.PRIMARY_STATE_UNKNOWN, label))
     return State(id=sid, label=text)
 
@@ -113,6 +115,10 @@ class ControllerManagerNode(Node):
 
     # ------------------------------------------------------------------ plumbing
     def _guard(self, name: str, fn: Any) -> Any:
+        """``fn`` as a service callback that never raises: a ControlError (a refusal the user caused), a timeout of
+        the simulation thread or an internal error is logged on this node's logger and answered ``ok: false``, as
+        ros2_control answers a refused request; the server keeps serving."""
+
         def wrapper(req: Any, res: Any) -> Any:
             # refusals go to this node's logger: on the console and on /rosout as the manager's own
             # lines, where the spawner finds the reason to print
@@ -132,6 +138,10 @@ class ControllerManagerNode(Node):
         return wrapper
 
     def _on_set_parameters(self, params: list[Any]) -> SetParametersResult:
+        """Parameters set on the manager node (``ros2 param set``, the spawner's ``<ctrl>.type`` and
+        ``<ctrl>.params_file``): ``update_rate`` is refused (the manager reads it once, as ros2_control does); a
+        parameters file is read here, on the ROS thread, and the values are applied on the simulation thread in
+        one call, so a controller sees a consistent set."""
         for p in params:
             if p.name == "update_rate":
                 return SetParametersResult(successful=False, reason="update_rate is read when the manager starts")
@@ -170,6 +180,9 @@ class ControllerManagerNode(Node):
 
     # ------------------------------------------------------------------ services
     def _list_controllers(self, req: Any, res: Any) -> Any:
+        """ListControllers: each loaded controller's state, type, update rate and interfaces (claimed ones, and
+        those it requires once configured), read in one simulation-thread call so the answer is one moment's."""
+
         def query() -> list[ControllerState]:
             claimed = self.manager.claimed()
             out = []
@@ -196,11 +209,14 @@ class ControllerManagerNode(Node):
         return res
 
     def _list_types(self, req: Any, res: Any) -> Any:
+        """ListControllerTypes: the controller types gazelle simulates (every one a ControllerInterface)."""
         res.types = sorted(CONTROLLER_TYPES)
         res.base_classes = ["controller_interface::ControllerInterface"] * len(res.types)
         return res
 
     def _list_interfaces(self, req: Any, res: Any) -> Any:
+        """ListHardwareInterfaces: every command interface (claimed or not) and every state interface, all doubles."""
+
         def query() -> tuple[list[HardwareInterface], list[HardwareInterface]]:
             claimed = self.manager.claimed()
             cmds = [
@@ -217,6 +233,9 @@ class ControllerManagerNode(Node):
         return res
 
     def _list_components(self, req: Any, res: Any) -> Any:
+        """ListHardwareComponents: each ``<ros2_control>`` block's hardware with its lifecycle state and interfaces;
+        ``rw_rate`` is the manager's rate, at which the simulated hardware is read and written."""
+
         def query() -> list[HardwareComponentState]:
             claimed = self.manager.claimed()
             return [
@@ -254,6 +273,9 @@ class ControllerManagerNode(Node):
         return serve
 
     def _switch(self, req: Any, res: Any) -> Any:
+        """SwitchController: activate and deactivate in one switch. STRICT (2) refuses the whole switch on a
+        problem; BEST_EFFORT (1) does what it can and says what it could not in ``message``. AUTO and FORCE_AUTO
+        (Jazzy's 3 and 4, which would also switch the controllers a chain needs) are read as STRICT."""
         activate, deactivate = list(req.activate_controllers), list(req.deactivate_controllers)
         strictness = req.strictness if req.strictness in (1, 2) else 2  # AUTO / FORCE_AUTO: as strict
         problems = self.sim.call(lambda: self.manager.switch_controller(activate, deactivate, strictness))
@@ -264,6 +286,8 @@ class ControllerManagerNode(Node):
         return res
 
     def _set_hw_state(self, req: Any, res: Any) -> Any:
+        """SetHardwareComponentState: move a hardware component to a lifecycle state, by id or by label; the reply
+        carries the state it reached."""
         target = _BY_ID.get(req.target_state.id) or req.target_state.label
         state = self.sim.call(lambda: self.manager.set_hardware_component_state(req.name, target))
         res.ok = True
@@ -320,6 +344,8 @@ class ControllerManagerNode(Node):
         super().destroy_node()
 
     def _execute_gripper(self, gripper: GripperActionController, handle: Any) -> Any:
+        """GripperCommand's execute callback: submit the goal to the gripper controller, feed back the finger's
+        position, effort and whether it stalled, and end as the goal ended."""
         cmd = handle.request.command
         goal = GripperGoal(float(cmd.position), float(cmd.max_effort))
         self.sim.call(lambda: gripper.submit(goal))
@@ -354,17 +380,24 @@ class ControllerManagerNode(Node):
             handle.abort()
 
     def _accept(self, jtc: JointTrajectoryController, goal: Any) -> GoalResponse:
+        """FollowJointTrajectory's goal callback: the trajectory is checked on the simulation thread (the controller
+        is active, its joints are the controller's, its points are well formed and not all in the past) and
+        refused with the reason in the log, as the JTC refuses it."""
         traj = from_joint_trajectory_msg(goal.trajectory)
         try:
             why = self.sim.call(lambda: jtc.validate(traj, self.sim.world.time))
         except TimeoutError:
-            why = (-1, "the simulation did not answer in time")
+            why = (TrajectoryResult.INVALID_GOAL, "the simulation did not answer in time")
         if why is not None:
             self._log.error(f"{jtc.name}: goal rejected: {why[1]}")
             return GoalResponse.REJECT
         return GoalResponse.ACCEPT
 
     def _execute(self, jtc: JointTrajectoryController, handle: Any) -> Any:
+        """FollowJointTrajectory's execute callback: the goal with its path and goal tolerances (the controller's
+        own where the request gives none) is submitted; feedback is the controller's last state at the monitor
+        rate; the result carries the controller's error code and text (PATH_TOLERANCE_VIOLATED,
+        GOAL_TOLERANCE_VIOLATED, ...)."""
         req = handle.request
         traj = from_joint_trajectory_msg(req.trajectory)
         path = [(t.name, t.position, t.velocity, t.acceleration) for t in req.path_tolerance]

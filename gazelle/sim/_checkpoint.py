@@ -55,6 +55,8 @@ def _new(cls: type) -> Any:
 
 
 def _event(is_set: bool) -> threading.Event:
+    """A threading.Event in the state it was saved in (events are saved as their flag: the threads waiting on one
+    belong to the process that saved it)."""
     event = threading.Event()
     if is_set:
         event.set()
@@ -69,6 +71,8 @@ class CheckpointError(RuntimeError):
 
 
 def _versions() -> dict[str, str]:
+    """The versions a checkpoint was written with (gazelle, MuJoCo, Python), compared when it is loaded: another
+    MuJoCo may integrate differently, so its checkpoint is refused rather than silently diverging."""
     from importlib.metadata import PackageNotFoundError, version
 
     try:
@@ -83,6 +87,9 @@ class _Pickler(pickle.Pickler):
     """Pickles a system's state; what belongs to the world is written as a reference (persistent id)."""
 
     def __init__(self, file: io.BytesIO, sim: Simulation) -> None:
+        """A pickler that writes the world's own objects as references. Endpoints are named by (owner, topic,
+        direction, type) and their index among equal ones, which the rebuilt world's bus reproduces in the same
+        order."""
         super().__init__(file, protocol=pickle.HIGHEST_PROTOCOL)
         self.sim = sim
         self._entities = {id(e): e.name for e in sim.world.entities.values()}
@@ -111,6 +118,9 @@ class _Pickler(pickle.Pickler):
         return NotImplemented
 
     def persistent_id(self, obj: Any) -> Any:
+        """The reference a world object is saved as (None: pickle the object itself): the physics world, the bus,
+        the simulation, an entity or its model by the entity's name, an endpoint by its key. A system that holds
+        an entity or endpoint the world no longer has cannot be saved: a CheckpointError names it."""
         if obj is self.sim.world:
             return ("world",)
         if obj is self.sim.bus:
@@ -134,6 +144,8 @@ class _Pickler(pickle.Pickler):
 
 class _Unpickler(pickle.Unpickler):
     def __init__(self, file: io.BytesIO, sim: Simulation) -> None:
+        """An unpickler that resolves references against the rebuilt world ``sim``, whose endpoints are keyed as
+        :class:`_Pickler` keyed the saved ones."""
         super().__init__(file)
         self.sim = sim
         self._endpoints: dict[tuple[Any, ...], Endpoint] = {}
@@ -145,6 +157,8 @@ class _Unpickler(pickle.Unpickler):
             self._endpoints[(*key, k)] = ep
 
     def persistent_load(self, pid: Any) -> Any:
+        """The rebuilt world's object for a saved reference; a reference the rebuilt world lacks (another world, a
+        spawn that failed) is a CheckpointError naming it."""
         kind = pid[0]
         if kind == "world":
             return self.sim.world
@@ -168,6 +182,9 @@ class _Unpickler(pickle.Unpickler):
 
 
 def _dumps(obj: Any, sim: Simulation, what: str) -> bytes:
+    """``obj`` pickled with the world's objects as references. A value that cannot be pickled (a GL context, a
+    socket, a lambda) is a CheckpointError naming the attribute path that holds it (``Camera._renderer: ...``),
+    found by :func:`_culprit`."""
     buf = io.BytesIO()
     try:
         _Pickler(buf, sim).dump(obj)
@@ -205,6 +222,7 @@ def _culprit(obj: Any, sim: Simulation, path: str, depth: int) -> str | None:
 
 
 def _loads(data: bytes, sim: Simulation) -> Any:
+    """The object graph of :func:`_dumps`' bytes, with references resolved in ``sim``'s rebuilt world."""
     return _Unpickler(io.BytesIO(data), sim).load()
 
 
@@ -213,6 +231,8 @@ _VALUES = (type(None), bool, int, float, complex, str, bytes, enum.Enum, np.gene
 
 
 def _is_value(obj: Any) -> bool:
+    """Whether ``obj`` is taken as it was saved rather than merged into the live object: immutable values, functions
+    and classes, and frozen dataclasses (bus payloads, configs)."""
     if isinstance(obj, _VALUES):
         return True
     if dataclasses.is_dataclass(obj) and getattr(type(obj), "__dataclass_params__").frozen:  # noqa: B009
@@ -221,6 +241,7 @@ def _is_value(obj: Any) -> bool:
 
 
 def _slots(obj: Any) -> list[str]:
+    """The ``__slots__`` attribute names of ``obj``'s class and its bases (their values are not in ``__dict__``)."""
     names: list[str] = []
     for cls in type(obj).__mro__:
         s = cls.__dict__.get("__slots__", ())
@@ -237,6 +258,11 @@ class _Merge:
         self._keep: list[Any] = []  # restored objects stay alive while the memo holds their ids
 
     def __call__(self, live: Any, new: Any) -> Any:
+        """``new``'s values written into ``live``, returning the object that stays: the live one where both have the
+        same type (its identity is what the bus's callbacks and the runtime's phase lists hold), ``new`` itself
+        for a value. Arrays of the same shape are filled in place (a view of one sees the values); dicts and
+        lists are merged item by item; an object's attributes (``__dict__`` and slots) one by one. A bound method
+        is re-bound to the live owner."""
         if new is live:  # a reference to the world's own objects, resolved when loading
             return live
         if id(new) in self.memo:
@@ -387,6 +413,10 @@ def restore(payload: dict[str, Any], world: Any = None) -> Simulation:
         )
 
     def apply() -> None:
+        """On the simulation thread: each entity's systems must be those the checkpoint has, in the same order; what
+        a system grows at run time is rebuilt first (a manager's controllers), then every saved attribute is
+        merged into the live system; then the runtime's counters, whether it was paused, and the model's
+        parameters as they were at the checkpoint (gains changed at run time, static bodies moved)."""
         merge = _Merge()
         for name, saved in payload["systems"].items():
             live = sim.world.entities[name].systems

@@ -266,6 +266,9 @@ class Viewer(ViewerOverlays):
 
     # ------------------------------------------------------------------ scene
     def _setup_scene(self) -> None:
+        """The scene every client gets first: z up as in ROS, default lights without shadows (and no HDRI
+        environment, which viser would fetch from a CDN: the viewer works offline), a 20 m ground grid of 0.5 m
+        cells, the world axes and the initial camera looking at the origin."""
         s = self.server.scene
         s.set_up_direction("+z")
         # no HDRI: it would be fetched from a CDN, and gazelle works offline
@@ -280,6 +283,10 @@ class Viewer(ViewerOverlays):
         cam.fov = CAMERA_FOV_RAD
 
     def _add_entity(self, name: str, view: EntityView) -> None:
+        """Add an entity's scene nodes: a frame per link (its TF axes shown when the overlay is on), its visuals as
+        meshes in their link frames, and its collisions as wireframes hidden unless the overlay is on. Clicking a
+        visual of a selectable entity selects it. Each frame's pose is then updated from the simulation's
+        snapshots."""
         s = self.server.scene
         root_name = f"/entities/{safe_name(name)}"
         nodes = _EntityNodes((name, view.generation), s.add_frame(root_name, show_axes=False))
@@ -309,6 +316,9 @@ class Viewer(ViewerOverlays):
         self._nodes[name] = nodes
 
     def _add_geometry(self, name: str, geometry: object, pose: Any, rgba: Any, *, collision: bool = False) -> Any:
+        """A visual or collision shape as a viser mesh at ``pose`` in its link frame; None for a shape with no mesh
+        (an unresolved mesh file, an infinite plane drawn by the grid). A mesh file drawn without a material
+        keeps its own colours and textures (viser's trimesh path); a transparent colour keeps its alpha."""
         tm = to_trimesh(geometry)
         if tm is None:
             return None
@@ -352,6 +362,8 @@ class Viewer(ViewerOverlays):
         self._wire_gui()
 
     def _gui_simulation(self, g: viser.GuiApi) -> None:
+        """Play/pause, step, reset, and the clocks: sim time, wall time since the viewer started, and the real-time
+        factor."""
         with g.add_folder("Simulation"):
             self._play = g.add_button("Pause", hint="Pause or resume physics")
             self._step_btn = g.add_button("Step", hint="One physics step (while paused)")
@@ -361,6 +373,8 @@ class Viewer(ViewerOverlays):
             self._rtf_text = g.add_text("RTF", initial_value="-", disabled=True)
 
     def _gui_entities(self, g: viser.GuiApi) -> None:
+        """The entity list (also selected by clicking in the 3D view), the selected entity's pose, and its delete
+        button."""
         with g.add_folder("Entities"):
             entity_options: list[str] = [NO_SELECTION]  # (str, not a literal: the options change)
             self._entity_dd = g.add_dropdown(
@@ -370,6 +384,8 @@ class Viewer(ViewerOverlays):
             self._delete_btn = g.add_button("Delete entity", color="red")
 
     def _gui_drive(self, g: viser.GuiApi) -> None:
+        """Buttons that publish Twist commands to the selected diff-drive robot's cmd_vel topic, and the keyboard
+        switch (WASD/arrows press the buttons instead of moving the camera)."""
         with g.add_folder("Drive"):
             self._drive_text = g.add_text("cmd_vel", initial_value="select a diff-drive robot", disabled=True)
             self._fwd = g.add_button("Forward")
@@ -385,6 +401,8 @@ class Viewer(ViewerOverlays):
             self._keys_html = g.add_html("")
 
     def _gui_spawn(self, g: viser.GuiApi) -> None:
+        """Spawn a model found on the resource paths (GAZELLE_RESOURCE_PATH, GZ_SIM_RESOURCE_PATH,
+        GAZEBO_MODEL_PATH, ROS_PACKAGE_PATH, ...) at a position and yaw, under a name of the user's or the model's own."""
         with g.add_folder("Spawn"):
             model_options: list[str] = [NO_MODELS]
             self._model_dd = g.add_dropdown("Model", options=model_options, initial_value=NO_MODELS)
@@ -396,6 +414,9 @@ class Viewer(ViewerOverlays):
             self._spawn_text = g.add_text("Spawn result", initial_value="", disabled=True)
 
     def _gui_overlays(self, g: viser.GuiApi) -> None:
+        """What is drawn over the scene: TF frames, collision shapes, the selected robot's path trail (from its
+        odometry or from ground truth), MuJoCo contact points, where each lidar's rays hit, and the latest
+        planned arm path."""
         with g.add_folder("Overlays"):
             self._tf_box = g.add_checkbox("TF frames", initial_value=False)
             self._col_box = g.add_checkbox("Collision geometry", initial_value=False)
@@ -422,6 +443,8 @@ class Viewer(ViewerOverlays):
             )
 
     def _gui_camera(self, g: viser.GuiApi) -> None:
+        """A camera sensor's live image, rendered for the panel (directly, not through its ROS topic) at the
+        panel's rate while one is chosen."""
         with g.add_folder("Camera"):
             camera_options: list[str] = [NO_CAMERA]
             self._camera_dd = g.add_dropdown(
@@ -430,6 +453,9 @@ class Viewer(ViewerOverlays):
             self._camera_img = g.add_image(np.zeros((48, 64, 3), dtype=np.uint8), label="Image", format="jpeg")
 
     def _wire_gui(self) -> None:
+        """Connect the panel's widgets to what they do. Callbacks run on viser's event-loop thread: anything that
+        touches the world goes through ``Simulation.call`` (spawn, delete, step) or takes the snapshot the frame
+        loop made."""
         self._play.on_click(lambda _e: self._toggle_pause())
         self._step_btn.on_click(lambda _e: self._step())
         self._reset_btn.on_click(lambda _e: self.sim.reset(time_=True, state=True, spawned=False))
@@ -465,6 +491,8 @@ class Viewer(ViewerOverlays):
         return self.sim.paused, self.sim.world.time
 
     def _step(self) -> None:
+        """One physics step, only while paused (a step while running would be lost in the running clock)."""
+
         def do() -> None:
             if self.sim.paused:
                 self.sim.step(1)
@@ -472,6 +500,8 @@ class Viewer(ViewerOverlays):
         self.sim.call(do)
 
     def _delete_selected(self) -> None:
+        """Delete the selected entity; a failure (it was deleted meanwhile, the simulation is busy) is a warning in
+        the log, never an error in the viewer."""
         name = self._entity_dd.value
         if name == NO_SELECTION:
             return
@@ -545,6 +575,8 @@ class Viewer(ViewerOverlays):
         return self.sim.spawn(model, name=entity, pose=pose).name
 
     def _spawn_selected(self) -> None:
+        """Spawn the chosen model with the panel's name, position and yaw; the result (its name, or why it failed)
+        is shown under the button."""
         label = self._model_dd.value
         mf = next((m for m in self._models if m.label == label), None)
         if mf is None:
@@ -631,6 +663,8 @@ class Viewer(ViewerOverlays):
         return snap
 
     def _update_gui(self, snap: Snapshot) -> None:
+        """Refresh the panel from a snapshot: the clocks, the play/pause label, and the selected entity's pose (its
+        root link's position and yaw, the way a 2D robot is read)."""
         self._time_text.value = f"{snap.time:.3f} s"
         self._real_text.value = f"{time.monotonic() - self._wall0:.1f} s"
         self._rtf_text.value = "paused" if snap.paused else f"{snap.rtf:.2f}"
@@ -649,6 +683,10 @@ class Viewer(ViewerOverlays):
             self._pose_text.value = ""
 
     def _loop(self) -> None:
+        """The viewer thread: at ``rate_hz`` while a browser is connected, push the newest poses (one snapshot of
+        the world per frame), and at the panel's slower rate the GUI, overlays and camera image; with no browser
+        connected, only the path trail is sampled, so an unwatched viewer costs the simulation next to nothing. A
+        frame that fails is logged and the loop goes on: the viewer never stops the simulation."""
         gui_period = 1.0 / GUI_RATE_HZ
         next_gui = 0.0
         next_frame = time.monotonic()

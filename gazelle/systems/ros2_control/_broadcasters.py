@@ -22,6 +22,10 @@ class JointStateBroadcaster(Controller):
     type_name = "joint_state_broadcaster/JointStateBroadcaster"
 
     def on_configure(self) -> None:
+        """Read ``joints``/``interfaces`` (both or neither, as the real one insists),
+        ``map_interface_to_joint_state`` (which interface fills JointState's position, velocity, effort),
+        ``extra_joints`` (published at zero) and ``use_local_topics`` (``~/joint_states`` instead of
+        ``/joint_states``); declare both topics."""
         self._joints = self.string_list("joints")
         self._interfaces = self.string_list("interfaces")
         if bool(self._joints) != bool(self._interfaces):
@@ -42,6 +46,9 @@ class JointStateBroadcaster(Controller):
         return [f"{j}/{i}" for j in self._joints for i in self._interfaces]
 
     def on_activate(self, states: dict[str, float], commands: dict[str, float]) -> None:
+        """Lay out the messages once: the joints in the hardware's order, grouped by name prefix; per JointState
+        field, the state key of each joint (a joint without that interface gets no value there); per joint, its
+        interfaces for DynamicJointState. The cycle then reads the values with one lookup per field."""
         wanted = set(self.state_interfaces() or states)
         names: list[str] = []
         groups: dict[str, list[str]] = {}
@@ -70,6 +77,7 @@ class JointStateBroadcaster(Controller):
         state key (made once per record layout)."""
 
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
+        """Publish JointState and DynamicJointState for this cycle, each only while it has a subscriber."""
         if self._js.wanted:
             pos, vel, eff = (get(states) for get in self._getters)
             if self._extra:
@@ -138,6 +146,8 @@ class ForwardCommandController(Controller):
     fixed_interface = ""
 
     def on_configure(self) -> None:
+        """Read ``joints`` and ``interface_name`` (fixed by the class for the JointGroup* controllers) and subscribe
+        to ``~/commands`` (std_msgs/Float64MultiArray, one value per joint)."""
         self._joints = self.string_list("joints")
         if not self._joints:
             raise ControlError(f"controller '{self.name}': 'joints' is empty")
@@ -149,6 +159,8 @@ class ForwardCommandController(Controller):
         self.subscribe("~/commands", MsgType.FLOAT64_ARRAY, self._on_commands)
 
     def _on_commands(self, msg: Float64Array) -> None:
+        """Keep the latest command for the next cycle; one with the wrong number of values is refused with a log
+        line and the previous command stays, as in ros2_controllers."""
         if len(msg.data) != len(self._joints):
             self.log.error(
                 f"{self.name}: command size ({len(msg.data)}) does not match the number of joints "
@@ -164,6 +176,7 @@ class ForwardCommandController(Controller):
         self._latest, self._fresh = None, False  # commands from before activation are not replayed
 
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
+        """Write the command that arrived since the last cycle; between commands the hardware holds the last one."""
         if self._fresh and self._latest is not None:
             for key, value in zip(self.command_interfaces(), self._latest, strict=True):
                 commands[key] = value
@@ -198,6 +211,8 @@ class ImuSensorBroadcaster(Controller):
     type_name = "imu_sensor_broadcaster/IMUSensorBroadcaster"
 
     def on_configure(self) -> None:
+        """Read ``sensor_name``, ``frame_id`` and the three ``static_covariance_*`` (9 values each) and declare
+        ``~/imu`` with the sensor QoS."""
         self.sensor = self.param("sensor_name", "", str)
         self.frame_id = self.param("frame_id", "", str)
         if not self.sensor or not self.frame_id:
@@ -216,6 +231,8 @@ class ImuSensorBroadcaster(Controller):
         return list(self._keys)
 
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
+        """Publish the IMU's ten state interfaces (orientation x, y, z, w; angular velocity; linear acceleration) as
+        sensor_msgs/Imu in ``frame_id``."""
         if not self._pub.wanted:
             return
         v = [states[k] for k in self._keys]
@@ -240,6 +257,8 @@ class ForceTorqueSensorBroadcaster(Controller):
     type_name = "force_torque_sensor_broadcaster/ForceTorqueSensorBroadcaster"
 
     def on_configure(self) -> None:
+        """Read ``sensor_name`` (its six ``force.x`` ... ``torque.z`` interfaces) or ``interface_names.*`` one by
+        one, and ``frame_id``; declare ``~/wrench``."""
         self.sensor = self.param("sensor_name", "", str)
         self.frame_id = self.param("frame_id", "", str)
         names = [self.param(f"interface_names.{i}", "", str) for i in FT_INTERFACES]
@@ -256,6 +275,7 @@ class ForceTorqueSensorBroadcaster(Controller):
         return [k for k in self._keys if k]
 
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
+        """Publish the wrench (an interface not given reads NaN) in ``frame_id``."""
         if not self._pub.wanted:
             return
         v = [states[k] if k else math.nan for k in self._keys]

@@ -112,6 +112,10 @@ class _Segmented:
     """Per joint (controller order), what the goal's path must keep to; None: nothing to check."""
 
     def sample(self, t: float) -> tuple[list[float], list[float], list[float]]:
+        """The desired (positions, velocities, accelerations) at sim time ``t``: before the first point, its
+        position at rest; after the last, the last position at rest; between two points, the segment's
+        polynomial: linear with positions only, cubic with velocities, quintic with accelerations
+        (ros2_controllers' spline interpolation)."""
         times = self.times
         n = len(self.pos[0])
         if t <= times[0]:
@@ -204,6 +208,11 @@ class JointTrajectoryController(Controller):
     action_type = "control_msgs/action/FollowJointTrajectory"
 
     def on_configure(self) -> None:
+        """Read Jazzy's parameters: ``joints``, the command interface combination (refused unless it is one the real
+        controller accepts), the state interfaces (position required), ``allow_partial_joints_goal``,
+        ``open_loop_control``, the ``constraints`` and, for velocity or effort commands, the per-joint PID
+        ``gains``; declare ``~/joint_trajectory``, ``~/controller_state`` and the ``~/follow_joint_trajectory``
+        action (served by the ROS layer)."""
         self.joints = self.string_list("joints")
         if not self.joints:
             raise ControlError(f"controller '{self.name}': 'joints' is empty")
@@ -311,6 +320,9 @@ class JointTrajectoryController(Controller):
         self._queue(goal.trajectory, goal)
 
     def _queue(self, traj: JointTrajectory, goal: TrajectoryGoal | None) -> None:
+        """Hand a trajectory to the next cycle (from the topic: checked here, and refused with a log line as the
+        real one does; from the action: already checked). A trajectory still waiting is replaced, and its goal
+        aborted."""
         if goal is None:
             why = self.validate(traj)
             if why is not None:
@@ -330,6 +342,8 @@ class JointTrajectoryController(Controller):
 
     # ------------------------------------------------------------------ the cycle
     def on_activate(self, states: dict[str, float], commands: dict[str, float]) -> None:
+        """Going active: hold the joints where they are (no jump), with a fresh integral; without velocity state
+        interfaces the velocity error reads zero velocities."""
         missing = [s for s in self.state_interfaces() or [] if s not in states]
         if missing:
             raise ControlError(f"controller '{self.name}': the hardware has no state interface {', '.join(missing)}")
@@ -340,6 +354,8 @@ class JointTrajectoryController(Controller):
             self._get_vel = functools.partial(values_or_zero, tuple(self._vel_keys))
 
     def on_deactivate(self) -> None:
+        """Going inactive aborts the goal in progress (INVALID_GOAL, naming the controller) and drops the
+        trajectory."""
         traj = self._traj
         if traj is not None and traj.goal is not None:
             traj.goal.finish(
@@ -348,6 +364,10 @@ class JointTrajectoryController(Controller):
         self._traj = None
 
     def _start(self, traj: JointTrajectory, goal: TrajectoryGoal | None, t: float, actual: list[float]) -> None:
+        """Start ``traj`` at cycle time ``t``: its first segment runs from the joints' actual positions (``actual``)
+        to its first point; times are absolute (the header stamp, or now when it is 0), and points already past
+        are dropped. A joint the trajectory leaves out (a partial goal) keeps the position it was held at. An
+        empty trajectory stops the one running and holds where the joints are."""
         old = self._traj
         if old is not None and old.goal is not None and old.goal is not goal:
             old.goal.finish(GoalState.ABORTED, TrajectoryResult.SUCCESSFUL, "preempted by a newer trajectory")
@@ -396,6 +416,9 @@ class JointTrajectoryController(Controller):
         return traj
 
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
+        """One cycle: the desired state from the running trajectory (or the hold position), the errors against the
+        measured state, the commands written, the goal checked against its tolerances, and ``~/controller_state``
+        published while it has a subscriber."""
         joints = self.joints
         actual = list(self._get_pos(states))
         actual_v = self._get_vel(states)
@@ -494,6 +517,8 @@ class JointTrajectoryController(Controller):
         err_v: list[float],
         commands: dict[str, float],
     ) -> TrajectoryControllerState:
+        """control_msgs/JointTrajectoryControllerState of this cycle: reference (desired), feedback (measured),
+        error, and output (what was commanded; NaN for a joint not commanded)."""
         return TrajectoryControllerState(
             t,
             tuple(self.joints),
@@ -512,6 +537,9 @@ class JointTrajectoryController(Controller):
         err_v: list[float],
         period: float,
     ) -> None:
+        """The commands of one cycle: with position interfaces, the desired positions (and velocities, when
+        claimed), which the simulated hardware's servos follow; with velocity or effort interfaces,
+        ``ff_velocity_scale·v_desired + p·e + i·∫e + d·ė`` per joint, as the real controller's PID."""
         kinds = self.cmd_kinds
         if kinds[0] == "position":
             commands.update(zip(self._out_keys, des_p))
@@ -525,6 +553,10 @@ class JointTrajectoryController(Controller):
             commands[self._out_keys[k]] = u
 
     def _check(self, traj: _Segmented, t: float, err_p: list[float], err_v: list[float], actual: list[float]) -> None:
+        """The goal's tolerances at cycle time ``t``: before the end, the path tolerance (a violation aborts with
+        PATH_TOLERANCE_VIOLATED and holds where the joints are); after it, success once every joint is within its
+        goal tolerance, or GOAL_TOLERANCE_VIOLATED once ``goal_time`` (the goal's, else the controller's) has
+        passed with some joint outside (0: wait for ever, as Jazzy does)."""
         goal = traj.goal
         assert goal is not None
         end = traj.times[-1]
@@ -561,6 +593,7 @@ class JointTrajectoryController(Controller):
 
 
 def _violates(tol: Tolerance, err_p: float, err_v: float) -> bool:
+    """Whether an error breaks a tolerance (a tolerance of 0 is not checked)."""
     return (tol.position > 0 and abs(err_p) > tol.position) or (tol.velocity > 0 and abs(err_v) > tol.velocity)
 
 
