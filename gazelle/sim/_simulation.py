@@ -273,6 +273,8 @@ class Simulation:
         self._deliver_due(math.inf)
 
     def _drain(self) -> None:
+        """Run every request queued by other threads (``call``), on this thread, before the next step: a request
+        sees the world between two steps, never in the middle of one."""
         while not self._queue.empty():  # cheap check first: this runs before every step
             try:
                 fn, fut = self._queue.get_nowait()
@@ -282,6 +284,8 @@ class Simulation:
 
     @staticmethod
     def _run_item(fn: Callable[[], Any], fut: Future) -> None:
+        """Run one queued request and hand its result or exception to the caller's future (a cancelled future is
+        skipped: its caller gave up waiting)."""
         if not fut.set_running_or_notify_cancel():
             return
         try:
@@ -303,6 +307,11 @@ class Simulation:
             self._run_item(fn, fut)
 
     def _loop(self) -> None:
+        """The simulation thread: requests first, then a block of steps, then pacing. With a real-time factor, sim
+        time is kept on a line anchored at the last (re)start: a thread ahead of it sleeps; one behind by less
+        than :data:`MAX_CATCH_UP_SEC` steps without sleeping until it is back on the line; one further behind (a
+        suspended laptop, a debugger) re-anchors and reports the lag, rather than racing for seconds. While
+        paused it only serves requests."""
         try:
             while not self._stop.is_set():
                 self._drain()
@@ -344,6 +353,8 @@ class Simulation:
         self.call(do)
 
     def _info(self, paused: bool = False, dt: float | None = None) -> UpdateInfo:
+        """The UpdateInfo the systems get for the step about to run: sim time, wall time since start, the step (or
+        ``dt``), the iteration count and whether paused."""
         w = self.world
         return UpdateInfo(
             float(w.data.time),
@@ -414,6 +425,8 @@ class Simulation:
         return k
 
     def _record_rtf(self) -> None:
+        """Add a sample to the 2 s window the real-time factor is measured over (at most one every 10 ms of wall
+        time: a block of many steps adds one sample, not one per step)."""
         now = time.monotonic()
         win = self._rtf_window
         sample = (now, float(self.world.data.time), self.iterations)
@@ -433,6 +446,9 @@ class Simulation:
         return RtfSample((win[-1][1] - win[0][1]) / dw, (win[-1][2] - win[0][2]) / dw)
 
     def _check_divergence(self) -> None:
+        """After a block: an entity whose state went NaN or ran away is put back at its spawn pose, at rest,
+        by the physics world, and the rest of the world runs on. The first time an entity diverges the
+        listeners hear of it (the ROS layer logs it on /rosout); GetEntityInfo reports it from then on."""
         diverged = self.world.recover_divergence()
         if diverged is None:
             return
@@ -681,6 +697,8 @@ class Simulation:
         """
 
         def do() -> None:
+            """On the simulation thread: the entity's systems, then its topics, then its bodies, so no system runs
+            on an entity that is gone."""
             if name not in self.world.entities:
                 raise WorldError(ErrorKind.NOT_FOUND, f"entity '{name}' does not exist")
             self.systems.remove_owner(name)
@@ -695,6 +713,9 @@ class Simulation:
         """Reset sim time, entity states and/or remove the spawned entities (thread-safe)."""
 
         def do() -> None:
+            """On the simulation thread: spawned entities removed (``spawned``), the physics state back to the start
+            with the clock kept (``state``), the clock back to zero (``time_``), and every system told to reset,
+            as Gazebo's reset world / reset time / reset all."""
             t = self.world.time
             if spawned:
                 for e in [e for e in self.world.entities.values() if e.spawned]:
@@ -725,6 +746,10 @@ class Simulation:
         return self.call(lambda: self._spawn_many(requests), timeout=timeout)
 
     def _spawn_many(self, requests: list[SpawnRequest]) -> list[Entity | WorldError]:
+        """Add several models with one MuJoCo recompile (SpawnEntities): names made unique where renaming is
+        allowed, each staged and its plugins configured, then all committed together. A model whose plugins fail
+        to configure is left out alone; if the combined build fails, each is added on its own, so one bad model
+        never takes the others with it. Returns, per request, the entity or the error."""
         taken = set(self.world.entities)
         names: list[str] = []
         for r in requests:

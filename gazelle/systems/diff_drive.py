@@ -148,6 +148,8 @@ def parse_config(ctx: SystemContext, log: logging.Logger) -> DiffDriveConfig:
         pairs = 1
 
     def floats(tag: str, default: float) -> tuple[float, ...]:
+        """Every ``<tag>`` (one per wheel pair), numbers only (a bad one is warned about with its file:line); as
+        many as there are pairs, the rest ignored with the classic plugin's warning, missing ones ``default``."""
         vals: list[float] = []
         for el in cfg.findall(tag):
             try:
@@ -220,6 +222,7 @@ class DiffDrive(System):
     plugin_files = ("gazebo_ros_diff_drive",)
 
     def __init__(self) -> None:
+        """An unconfigured gazebo_ros diff drive (see :meth:`configure`)."""
         self.config = DiffDriveConfig()
         self.log = logging.getLogger("diff_drive")
         self._wheels: list[_Wheel] = []
@@ -244,6 +247,10 @@ class DiffDrive(System):
 
     # ------------------------------------------------------------------ configure
     def configure(self, ctx: SystemContext) -> None:
+        """Read the plugin block (gazebo_ros2's names and defaults, and ROS 1's), check that every wheel joint
+        exists and turns, put a velocity servo on each (bounded by ``<max_wheel_torque>``), and declare the
+        command topic, odometry, wheel joint states and TF as the block asks. Frames get the entity's frame
+        prefix, so robots in two namespaces publish ``r1/odom`` and ``r2/odom``."""
         self.log = ctx.logger
         self.config = c = parse_config(ctx, self.log)
         self._entity = ctx.entity.name
@@ -326,6 +333,8 @@ class DiffDrive(System):
         return self._last_update + period if self._ok and math.isfinite(self._last_update) else sim_time_sec
 
     def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """After a world reset: no command, the update timer and the encoder odometry back to their start, the
+        servos' integrals cleared."""
         self._cmd = Twist()
         self._last_update = -math.inf
         self._due = False
@@ -337,6 +346,9 @@ class DiffDrive(System):
             w.servo.reset()
 
     def pre_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """At ``<update_rate>``: each wheel's rim speed ``v ± ω·s/2`` (the pair's separation), ramped toward its
+        target by ``<max_wheel_acceleration>`` when one is given (as the classic plugin, which skips ramps under
+        0.01 m/s), then over the wheel's radius to the servo."""
         if not self._ok or info.paused:
             return
         c = self.config
@@ -358,6 +370,10 @@ class DiffDrive(System):
             w.servo.update(w.instructed / w.radius, info.sim_time_sec)
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """After the steps that followed an update: the wheel joint states, then odometry and TF
+        (``<odometry_source>`` 1, world: the base link's true pose; 0, encoder: integrated from the wheels),
+        while anyone listens. The pose covariance is the classic plugin's: ``<covariance_x>``, ``_y``, ``_yaw``
+        and 1e12 (unknown) for z, roll and pitch."""
         if not self._ok or info.paused or not self._due:
             return  # odometry goes out after the steps that followed a command update
         self._due = False
@@ -411,6 +427,8 @@ class DiffDrive(System):
                 tf_pub.publish(TransformBatch(tuple(tfs)))
 
     def _odometry(self, world: PhysicsWorld) -> tuple[Pose, Twist]:
+        """The odometry's pose and twist: from the encoders, or the base link's world pose with its velocity turned
+        into the base frame (forward and sideways speed, yaw rate)."""
         if self.config.odometry_source == ODOM_ENCODER:
             x, y, th = self._enc_pose
             return Pose((x, y, 0.0), quat_from_rpy(0.0, 0.0, th)), Twist(
@@ -447,6 +465,8 @@ class DiffDrive(System):
         self._enc_twist = (math.hypot(dx, dy) / dt if dt > 0 else 0.0, dth / dt if dt > 0 else 0.0)
 
     def _wheel_transforms(self, stamp: float, world: PhysicsWorld) -> list[Transform]:
+        """The wheels' transforms (parent link -> wheel link) as ``<publish_wheel_tf>`` asks: the two links' true
+        poses in the world, taken relative."""
         out: list[Transform] = []
         for parent, child, parent_frame, child_frame in self._wheel_links:
             out.append(Transform(stamp, parent_frame, child_frame, parent.pose.inverse() * child.pose))

@@ -75,6 +75,8 @@ class DiffDriveOdometry:
     """gz::math::DiffDriveOdometry: pose from wheel angle increments, velocities as a rolling mean."""
 
     def __init__(self, separation: float, left_radius: float, right_radius: float, window: int = 10) -> None:
+        """Odometry of a differential drive with wheels ``separation`` metres apart and these radii (metres); the
+        published speeds are the means over the last ``window`` updates, as gz-math's DiffDriveOdometry."""
         self.separation = separation
         self.left_radius = left_radius
         self.right_radius = right_radius
@@ -83,6 +85,7 @@ class DiffDriveOdometry:
         self.reset()
 
     def reset(self) -> None:
+        """Back to the origin; the next update only records where the wheels are (gz-math's Init)."""
         self.x = self.y = self.heading = 0.0
         self.linear = self.angular = 0.0
         self._lin.clear()
@@ -92,6 +95,10 @@ class DiffDriveOdometry:
         self._time = 0.0
 
     def update(self, left_pos: float, right_pos: float, time_sec: float) -> None:
+        """Integrate the wheels' travel since the last update (their angles in radians, at sim time ``time_sec``):
+        the pose along the arc the travel describes (second-order Runge-Kutta when nearly straight), and the
+        speeds as travel over time, averaged over the window. Updates closer than 0.1 ms are skipped (gz-math's
+        guard against dividing by a vanishing dt)."""
         if self._left_old is None:  # Init(): remember where the wheels are
             self._left_old, self._right_old, self._time = left_pos, right_pos, time_sec
             return
@@ -164,6 +171,9 @@ KNOWN_TAGS = {
 
 
 def _limits(cfg: ConfigElement, which: str, log: logging.Logger) -> SpeedLimits:
+    """The speed limits of one axis (``linear`` or ``angular``): gz-sim 8 reads ``<min_velocity>`` etc. for both
+    axes, then ``<min_linear_velocity>``/``<min_angular_velocity>`` etc. override them per axis; unset limits are
+    infinite."""
     vals: dict[str, float] = {}
     for m in ("min", "max"):
         for q in ("velocity", "acceleration", "jerk"):
@@ -205,6 +215,7 @@ class GzDiffDrive(System):
     gz_plugin = "DiffDrive"
 
     def __init__(self) -> None:
+        """An unconfigured DiffDrive (see :meth:`configure`)."""
         self.config = GzDiffDriveConfig()
         self.log = logging.getLogger("DiffDrive")
         self._cmd = Twist()
@@ -223,6 +234,11 @@ class GzDiffDrive(System):
         self._ok = False
 
     def configure(self, ctx: SystemContext) -> None:
+        """Read the plugin block (gz-sim 8's names and defaults), check the wheel joints (a missing one is an error
+        naming the model's joints, and the plugin stays off, as gz-sim's does), put a velocity servo on each
+        wheel joint (bounded by its ``<limit><effort>``), and declare the command, odometry and TF topics:
+        ``/model/<model>/cmd_vel`` and ``/model/<model>/odometry`` unless given, and the odometry frames
+        ``<model>/odom`` -> ``<model>/<canonical link>`` by default."""
         self.log = log = ctx.logger
         self.config = c = parse_config(ctx, log)
         entity = ctx.entity
@@ -283,6 +299,7 @@ class GzDiffDrive(System):
         return self._last0
 
     def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """After a world reset: no command, limits' history cleared, servos and odometry back to their start."""
         self._cmd = Twist()
         self._last0 = self._last1 = (0.0, 0.0)
         for servo, _ in self._wheels:
@@ -292,6 +309,8 @@ class GzDiffDrive(System):
             self._odom.reset()
 
     def pre_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """Before each step: the command, limited in velocity, acceleration and jerk, as wheel speeds: ``(v ± ω·s/2)
+        / r`` (right +, left -)."""
         if not self._ok or info.paused:
             return
         c = self.config
@@ -302,6 +321,8 @@ class GzDiffDrive(System):
             servo.update((lin + side * ang * c.wheel_separation / 2.0) / c.wheel_radius, info.sim_time_sec)
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """After each step: the odometry integrates the wheels' angles; at ``<odom_publish_frequency>`` it is
+        published with its transform, while anyone listens."""
         if not self._ok or info.paused or self._odom is None:
             return
         right = next(servo for servo, side in self._wheels if side == 1)

@@ -402,7 +402,8 @@ class Viewer(ViewerOverlays):
 
     def _gui_spawn(self, g: viser.GuiApi) -> None:
         """Spawn a model found on the resource paths (GAZELLE_RESOURCE_PATH, GZ_SIM_RESOURCE_PATH,
-        GAZEBO_MODEL_PATH, ROS_PACKAGE_PATH, ...) at a position and yaw, under a name of the user's or the model's own."""
+        GAZEBO_MODEL_PATH, ROS_PACKAGE_PATH, ...) at a position and yaw, under a name of the user's or the
+        model's own."""
         with g.add_folder("Spawn"):
             model_options: list[str] = [NO_MODELS]
             self._model_dd = g.add_dropdown("Model", options=model_options, initial_value=NO_MODELS)

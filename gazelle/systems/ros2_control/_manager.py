@@ -136,6 +136,8 @@ class ControllerManager(System):
     )
 
     def __init__(self, extra_param_files: tuple[str, ...] = ()) -> None:
+        """A manager with ros2_control's defaults (``/controller_manager`` at 100 Hz, no hardware yet);
+        :meth:`configure` reads the plugin block and the robot's ``<ros2_control>`` hardware."""
         self.name = "controller_manager"
         self.namespace = ""
         self.update_rate = DEFAULT_UPDATE_RATE
@@ -225,6 +227,9 @@ class ControllerManager(System):
 
     @staticmethod
     def _resolve(raw: str, resolver: ResourceResolver, base: Path | None) -> Path | None:
+        """The file a ``<parameters>`` entry names: ``$(find pkg)`` and package://, model://, file:// URIs through
+        the resource roots, a relative path against the description's folder; None when it cannot be found or
+        lies outside the roots (the caller reports it)."""
         text = raw
         m = _FIND.search(text)
         if m is not None:
@@ -383,6 +388,8 @@ class ControllerManager(System):
         return self.blocks.cycles
 
     def _merged(self) -> tuple[dict[str, float], dict[str, float]]:
+        """The state and command values of every hardware block as one mapping each (the one block's own dicts when
+        there is only one: no copy on the usual robot)."""
         if len(self.hardware) == 1:
             return self.hardware[0].states, self.hardware[0].commands
         states: dict[str, float] = {}
@@ -393,6 +400,8 @@ class ControllerManager(System):
         return states, commands
 
     def _split(self, commands: dict[str, float]) -> None:
+        """Write the merged command values back into each hardware block's commands (nothing to do with one block:
+        the controllers wrote into its own dict)."""
         if len(self.hardware) == 1:
             return
         for hw in self.hardware:
@@ -527,6 +536,8 @@ class ControllerManager(System):
         self.log.info(f"Configured controller '{name}'")
 
     def _check_interfaces(self, c: Controller) -> None:
+        """Refuse a controller whose command or state interfaces the hardware does not have, naming them and what
+        the hardware offers (ros2_control refuses it at activation the same way)."""
         commands, states = set(self.all_command_interfaces()), set(self.all_state_interfaces())
         missing_c = [i for i in c.command_interfaces() if i not in commands]
         missing_s = [i for i in (c.state_interfaces() or []) if i not in states]
@@ -602,6 +613,9 @@ class ControllerManager(System):
         return problems
 
     def _activate(self, name: str) -> None:
+        """Activate a controller: the hardware started and read, its command interfaces claimed (the joints' command
+        modes follow the claims), then the controller's ``on_activate`` with the current values; a failure there
+        gives the claims back and the controller stays inactive."""
         loaded = self.controllers[name]
         c = loaded.controller
         for hw in self.hardware:
@@ -624,6 +638,8 @@ class ControllerManager(System):
         self.log.info(f"Activated controller '{name}'")
 
     def _deactivate(self, name: str) -> None:
+        """Deactivate a controller and release its command interfaces: the joints it commanded hold their last
+        command."""
         c = self.controllers[name].controller
         c.on_deactivate()
         c.state = INACTIVE
@@ -681,6 +697,7 @@ class ControllerManager(System):
         return hw.state
 
     def _get(self, name: str) -> _Loaded:
+        """A loaded controller by name; an invalid name or one not loaded is a ControlError listing what is loaded."""
         loaded = self.controllers.get(name)
         if loaded is None:
             why = valid_controller_name(name)
