@@ -74,6 +74,11 @@ class ServoNode(Node):
     """servo_node (see the module docstring)."""
 
     def __init__(self, parameter_overrides: list[Parameter] | None = None, context: Any = None) -> None:
+        """MoveIt Servo's ``servo_node`` (Jazzy): the ``moveit_servo.*`` parameters read and checked as its
+        parameter library does, the robot from ``robot_description`` and ``robot_description_semantic``, the
+        three command topics (JointJog, TwistStamped, PoseStamped), the output (a JointTrajectory or a
+        Float64MultiArray), ``~/status``, and the ``~/switch_command_type`` and ``~/pause_servo`` services. What
+        gazelle's servo does not do (collision checking, smoothing plugins, subgroups) is said once, at start."""
         super().__init__(
             "servo_node",
             context=context,
@@ -116,6 +121,7 @@ class ServoNode(Node):
 
     # ------------------------------------------------------------------ set-up
     def _get(self, name: str, default: Any) -> Any:
+        """The parameter ``moveit_servo.<name>``, or ``default`` when it is not set (or set to nothing)."""
         full = PREFIX + name
         if not self.has_parameter(full):
             return default
@@ -123,6 +129,9 @@ class ServoNode(Node):
         return default if value is None else value
 
     def _read_parameters(self) -> tuple[ServoSettings, dict[str, Any]]:
+        """The servo settings (the cycle, input scaling, singularity thresholds, joint limit margins) and the node's
+        topics and timeouts, with MoveIt's defaults; the checks MoveIt's ``servo_parameters.yaml`` declares are
+        enforced, and every violation is named in one ValueError."""
         s = ServoSettings()
         for name in (
             "publish_period",
@@ -172,6 +181,8 @@ class ServoNode(Node):
         return s, p
 
     def _robot(self) -> ServoKinematics:
+        """The kinematics of the move group being servoed, from the URDF and SRDF parameters (as MoveIt's servo_node
+        takes them; no meshes: only the kinematics are needed)."""
         urdf = self.get_parameter("robot_description").value if self.has_parameter("robot_description") else ""
         srdf = (
             self.get_parameter("robot_description_semantic").value
@@ -184,6 +195,8 @@ class ServoNode(Node):
         return ServoKinematics(scene, self.p["move_group_name"])
 
     def _say_differences(self) -> None:
+        """Warn, once at start, of the parameters whose MoveIt behaviour gazelle does not have, so a user's config
+        is never silently half-applied."""
         log = self.get_logger()
         if bool(self._get("check_collisions", True)):
             log.warning("moveit_servo.check_collisions: gazelle's servo_node does not check collisions")
@@ -208,6 +221,8 @@ class ServoNode(Node):
             self._new[kind] = True
 
     def _switch_command_type(self, req: ServoCommandType.Request, res: ServoCommandType.Response) -> Any:
+        """``~/switch_command_type``: joint jog (0), twist (1) or pose (2); another value is refused with a warning
+        and the type stays."""
         if core.JOINT_JOG <= req.command_type <= core.POSE:
             self.command_type = int(req.command_type)
         else:
@@ -216,6 +231,8 @@ class ServoNode(Node):
         return res
 
     def _pause_servo(self, req: SetBool.Request, res: SetBool.Response) -> Any:
+        """``~/pause_servo``: pause or resume; resuming starts from the measured state (the commands sent before the
+        pause are forgotten)."""
         if self.paused == req.data:
             res.success, res.message = True, "Requested pause state is already active."
             self.get_logger().info(res.message)
@@ -231,12 +248,19 @@ class ServoNode(Node):
 
     # ------------------------------------------------------------------ the loop
     def _current(self) -> np.ndarray | None:
+        """The move group's joint positions from the latest ``/joint_states``, in the group's order; None until
+        every joint has been heard."""
         names = self.kinematics.joint_names
         if not all(n in self._joints for n in names):
             return None
         return np.array([self._joints[n] for n in names])
 
     def _cycle(self) -> None:
+        """One servo cycle on the node's clock (sim time under ``use_sim_time``): from the state last commanded
+        (while its trajectory is still ahead) or the measured one, the newest command becomes the next joint
+        step, scaled by the time since the last cycle; it is published as a one-point trajectory (or
+        positions/velocities), and the status code goes on ``~/status``. An invalid or stale command halts at the
+        measured state."""
         with self._lock:
             measured = self._current()
             if measured is None:
@@ -329,6 +353,8 @@ class ServoNode(Node):
         return step
 
     def _pose_delta(self, q: np.ndarray, msg: PoseStamped) -> tuple[int, np.ndarray, str]:
+        """A pose command's joint step: the pose must be in the planning frame, finite and a unit quaternion
+        (MoveIt's checks), else the step is INVALID with MoveIt's message."""
         frame = self.kinematics.planning_frame
         if msg.header.frame_id != frame:
             return core.INVALID, np.zeros(len(q)), f"Command frame is: {msg.header.frame_id} expected: {frame}"

@@ -456,6 +456,20 @@ def test_a_stalled_gripper_goal_ends_and_the_hand_goes_on_squeezing(allow_stalli
 
 
 # --------------------------------------------------------------------------- bad input
+def test_a_ros2_control_initial_value_that_is_not_a_number_is_a_warning_naming_it(make_sim, caplog):
+    """Nothing a user gave is dropped silently: an ``initial_value`` that is not a number was read as 0."""
+    text = DIFFBOT_URDF.read_text().replace(
+        '<state_interface name="position"/>',
+        '<state_interface name="position"><param name="initial_value">half</param></state_interface>',
+        1,
+    )
+    sim = make_sim()
+    with caplog.at_level("WARNING"):
+        sim.spawn(load_string(text, format="urdf").model, name="diffbot", pose=Pose((0.0, 0.0, 0.05)))
+    said = [r.getMessage() for r in caplog.records if "initial_value" in r.getMessage()]
+    assert said and "initial_value of joint 'left_wheel_joint' must be a number, got 'half'; using 0" in said[0], said
+
+
 def test_unknown_types_missing_interfaces_and_unloaded_controllers_are_clear_errors(make_sim):
     sim = make_sim()
     cm = _manager(_diffbot(sim))

@@ -113,6 +113,12 @@ class SimHardware:
         hold: bool = True,
         enforce_command_limits: bool = False,
     ) -> None:
+        """The simulated hardware of one ``<ros2_control>`` block on ``entity``: for each ``<joint>``, an actuator
+        per command interface (a position servo, a velocity servo or an effort motor, each bounded by the joint's
+        effort limit) and its state interfaces; its sensors wired to the physics world's readings; its GPIOs
+        warned about. ``hold``: joints no controller commands hold where they are (gz_ros2_control's
+        ``hold_joints``, true by default), else they are left free. ``enforce_command_limits`` clamps commands to
+        the interfaces' ``min``/``max``."""
         self.name = rc.name
         self.hold_joints = hold
         """Joints that no controller commands hold where they are (gz_ros2_control's ``hold_joints``);
@@ -204,7 +210,11 @@ class SimHardware:
                 )
                 continue
             if enforce_command_limits:
-                joint.limits[kind] = (_float(ci.param("min"), -math.inf), _float(ci.param("max"), math.inf))
+                what = f"{where}ros2_control '{rc.name}': <param> of command interface '{kind}' of joint '{comp.name}'"
+                joint.limits[kind] = (
+                    self._number(ci.param("min"), -math.inf, f"{what} 'min'"),
+                    self._number(ci.param("max"), math.inf, f"{what} 'max'"),
+                )
             joint.commands[kind] = self._actuator(world, entity, comp.name, kind, j.type is JointType.CONTINUOUS)
             self.commands[f"{comp.name}/{kind}"] = math.nan
         for si in comp.state_interfaces:
@@ -217,7 +227,9 @@ class SimHardware:
             self.states[f"{comp.name}/{si.name}"] = 0.0
             init = si.param("initial_value")
             if si.name == "position" and init is not None:
-                joint.initial = _float(init, 0.0)
+                joint.initial = self._number(
+                    init, 0.0, f"{where}ros2_control '{rc.name}': initial_value of joint '{comp.name}'"
+                )
         if j.mimic is not None:
             joint.mimic = (j.mimic.joint, j.mimic.multiplier, j.mimic.offset)
         joint.velocity = self._velocity_servos.get(comp.name)
@@ -265,7 +277,22 @@ class SimHardware:
     def _warn(self, text: str) -> None:
         self._log.warning(text)
 
+    def _number(self, text: str | None, default: float, what: str) -> float:
+        """A ``<param>``'s number; ``default`` when absent or empty, and, with a warning naming ``what``, when
+        it is not a number (the robot still loads)."""
+        if text is None or not text.strip():
+            return default
+        try:
+            return float(text)
+        except ValueError:
+            self._warn(f"{what} must be a number, got {text!r}; using {default:g}")
+            return default
+
     def _actuator(self, world: PhysicsWorld, entity: Entity, joint: str, kind: str, wheel: bool) -> ActuatorHandle:
+        """The actuator behind one command interface of ``joint``: ``position``, a MuJoCo position servo with the
+        plugin's gains (``kp`` stiffness, ``kv`` damping, integrated implicitly); ``velocity``, a velocity servo
+        (a wheel's has no position limit to respect); ``effort``, a motor whose force is the command. Each is
+        bounded by the joint's ``<limit effort>``."""
         model = entity.model
         if kind == "position":
             gains = self._position_gains(world, model, joint)
@@ -510,6 +537,8 @@ class SimHardware:
         return value, refs, m
 
     def _block_plan(self) -> ServoPlan:
+        """The servo plan of a planned block of cycles, made once: the position servos' actuators and the joints
+        they read, with unit gains the plan scales (see ``physics/_servo_plan.py``)."""
         if self._plan is None:
             names = tuple(j.name for j in self._servo_joints)
             n = len(names)
@@ -606,6 +635,9 @@ class SimHardware:
         return servo.control(target, sim_time_sec, velocity, self.states.get(joint.keys["position"]))
 
     def _hold(self, joint: _Joint, sim_time_sec: float) -> None:
+        """A joint no controller commands this cycle: with ``hold``, kept at the position it had when its last
+        controller let go (a position servo, else a velocity servo at zero, else zero effort); without, its
+        actuators are off and it moves freely."""
         joint.last_target = None
         if not self.hold_joints:
             if joint.enabled is not None:
@@ -627,6 +659,8 @@ class SimHardware:
             joint.commands["effort"].command(0.0)
 
     def _enable_only(self, joint: _Joint, kind: str) -> None:
+        """Turn on the actuator of one command interface of a joint and off its others (a joint has one actuator per
+        command interface, and only the claimed one may act)."""
         if joint.enabled == kind:
             return
         for k, act in joint.commands.items():
@@ -634,6 +668,8 @@ class SimHardware:
         joint.enabled = kind
 
     def _set_mode(self, joint: _Joint, mode: str | None) -> None:
+        """A joint's command interface changed hands: on release it holds where it is now; on claim that interface's
+        actuator acts; the servos' integrals restart either way."""
         joint.mode = mode
         if mode is None:
             joint.hold = joint.handle.position
@@ -714,12 +750,3 @@ def _gains_for(inertia: float, timestep: float, base: PidGains) -> PidGains:
     omega = min(2.0 * math.pi * POSITION_BANDWIDTH_HZ, 0.2 / timestep)
     kp = inertia * omega * omega
     return dataclasses.replace(base, p_gain=kp, i_gain=kp / POSITION_INTEGRAL_SEC, d_gain=2.0 * math.sqrt(kp * inertia))
-
-
-def _float(text: str | None, default: float) -> float:
-    if text is None or not text.strip():
-        return default
-    try:
-        return float(text)
-    except ValueError:
-        return default
