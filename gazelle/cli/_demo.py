@@ -43,6 +43,7 @@ class _Child:
     """A child process whose output is echoed with a prefix and kept."""
 
     def __init__(self, name: str, cmd: list[str], env: dict[str, str]):
+        """Start a child process of the demo (``gazelle sim``, a spawn, a driver) with its output read on a thread."""
         self.name = name
         self.lines: list[str] = []
         self.proc = subprocess.Popen(
@@ -52,6 +53,7 @@ class _Child:
         threading.Thread(target=self._read, daemon=True).start()
 
     def _read(self) -> None:
+        """Echo the child's output, prefixed with its name, and keep it for :meth:`wait_for_line`."""
         assert self.proc.stdout is not None
         for line in self.proc.stdout:
             line = line.rstrip("\n")
@@ -59,6 +61,8 @@ class _Child:
             print(f"  [{self.name}] {line}", flush=True)
 
     def wait_for_line(self, needle: str, timeout: float) -> bool:
+        """Whether the child printed a line containing ``needle`` within ``timeout`` seconds (checked once more when
+        it exits early)."""
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             if any(needle in ln for ln in self.lines):
@@ -69,6 +73,7 @@ class _Child:
         return False
 
     def stop(self, timeout: float = 10.0) -> int:
+        """Stop the child as Ctrl-C would (SIGINT), killing it if it does not end within ``timeout``; its exit code."""
         if self.proc.poll() is None:
             self.proc.send_signal(signal.SIGINT)
             try:
@@ -162,6 +167,8 @@ class _GroundTruth:
     """/odom heard, and the robot's pose asked of /get_entity_state every 20 ms (a thread of its own)."""
 
     def __init__(self, node: Any) -> None:
+        """Sample the robot's true pose (gazebo_msgs GetEntityState) beside its odometry (``/odom``), to print how
+        far they drift apart over the square."""
         from gazebo_msgs.srv import GetEntityState
         from nav_msgs.msg import Odometry
 
@@ -179,6 +186,7 @@ class _GroundTruth:
             self.odom.append(Sample.of(msg.header.stamp, msg.pose.pose))
 
     def _sample(self) -> None:
+        """Ask for the true pose about 50 times a second until stopped (a reply that takes over 5 s is skipped)."""
         while not self._done.is_set():
             fut = self.client.call_async(self._request)
             ev = threading.Event()
@@ -204,12 +212,15 @@ class _Recorder:
     """``--record``: the viewer recorded to ``square.mp4`` while the square drives (a thread of its own)."""
 
     def __init__(self, url: str, out: Path) -> None:
+        """Record the viewer's page to ``out/square.mp4`` on a thread while the robot drives."""
         self.url, self.out = url, out
         self.stop_rec, self.ready = threading.Event(), threading.Event()
         self.result: list[object] = []
         self._thread = threading.Thread(target=self._record, daemon=True)
 
     def _record(self) -> None:
+        """The recording thread: a headless browser on the viewer's page, two frames a second, until asked to stop;
+        what it made (or the error) is kept for :meth:`finish`."""
         from ..viewer import record_video
 
         try:
@@ -236,6 +247,7 @@ class _Recorder:
         self.ready.wait(60)
 
     def finish(self) -> None:
+        """Stop recording and say where the video is (or why there is none)."""
         self.stop_rec.set()
         self._thread.join(60)
         r = self.result[0] if self.result else "no result"

@@ -55,6 +55,9 @@ class _Budget:
     """One request's allowance: ``cpu_sec`` of the helper's CPU time and a wall-clock cap."""
 
     def __init__(self, pid: int, cpu_sec: float) -> None:
+        """Start the allowance of one request to helper ``pid``: its CPU time now is the zero, and the wall-clock
+        cap is :data:`WALL_FACTOR` times the CPU budget (at least :data:`MIN_WALL_SEC`); without /proc to read
+        the helper's CPU time, the budget is wall time."""
         self.pid = pid
         self.cpu_sec = cpu_sec
         start = time.monotonic()
@@ -85,6 +88,8 @@ class BoundExceeded(Exception):
 
 
 def _env_float(name: str, default: float) -> float:
+    """A positive number from the environment variable ``name``, else ``default`` (unset, not a number, or not
+    positive: a limit of 0 would refuse every file)."""
     try:
         value = float(os.environ.get(name, default))
     except ValueError:
@@ -145,6 +150,8 @@ class BoundedWorker:
     """
 
     def __init__(self, handler: Callable[[dict], object], *, memory_bytes: int | None = None) -> None:
+        """A helper process that runs ``handler`` on each request's JSON body, started at the first request;
+        ``memory_bytes`` above what the parent maps (None: ``GAZELLE_XACRO_MEMORY_MB``)."""
         self._handler = handler
         self._memory = memory_bytes
         self._lock = threading.Lock()
@@ -154,6 +161,9 @@ class BoundedWorker:
         self._started_memory = -1
 
     def _start(self) -> None:
+        """Fork the helper: it gets the request and reply pipes, dies with the parent, ignores Ctrl-C (the parent's
+        to handle), and runs under an address-space limit of the parent's size plus the allowance. A fork copies
+        every module already imported, so the helper is ready at once."""
         memory = limits()[1] if self._memory is None else self._memory
         req_r, req_w = os.pipe()
         rep_r, rep_w = os.pipe()
@@ -190,6 +200,9 @@ class BoundedWorker:
         self._pid, self._to_child, self._from_child = pid, req_w, rep_r
 
     def _serve(self, req_r: int, rep_w: int) -> None:
+        """The helper's loop: read a request (its CPU budget and body), set the kernel's CPU limit for it, run the
+        handler, and answer ``ok`` with the result, ``memory`` when it ran out, or ``error`` with the exception's
+        type and text. It ends when the parent closes the pipe."""
         while True:
             request = _read_message(req_r, None)
             if request is None:
@@ -233,6 +246,8 @@ class BoundedWorker:
         return how
 
     def _alive(self) -> bool:
+        """Whether the helper is still running (a helper killed for its budget, or by the kernel, is replaced at the
+        next request)."""
         if not self._pid:
             return False
         try:
@@ -341,6 +356,7 @@ def _limit_cpu(budget_sec: float) -> None:
 
 
 def _write_message(fd: int, data: bytes) -> None:
+    """Write a length-prefixed message (8 bytes little-endian, then the data), all of it."""
     view = memoryview(len(data).to_bytes(8, "little") + data)
     while view:
         n = os.write(fd, view)
@@ -348,6 +364,8 @@ def _write_message(fd: int, data: bytes) -> None:
 
 
 def _read_exact(fd: int, n: int, budget: _Budget | None) -> bytes | None:
+    """Read exactly ``n`` bytes, waiting at most as the budget allows between chunks (:class:`_Timeout` once it
+    is spent); None when the other end closed."""
     chunks: list[bytes] = []
     while n > 0:
         if budget is not None:
