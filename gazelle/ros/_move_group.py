@@ -81,6 +81,10 @@ class MoveGroupNode(_Execution, _PlannerQueries, _ModelServices):
     def __init__(
         self, *, srdf_source: str = "robot_description_semantic", resolve_mesh: Any = None, **kwargs: Any
     ) -> None:
+        """The ``move_group`` node: it takes the robot from ``robot_description`` and ``robot_description_semantic``
+        (parameters, or the latched topics), serves MoveIt's planning, kinematics and scene interfaces, and
+        executes trajectories through the controllers ``moveit_simple_controller_manager`` lists. ``srdf_source``
+        is what SRDF warnings name; ``resolve_mesh`` finds mesh URIs (None: the resource roots)."""
         self._srdf_source = srdf_source  # what SRDF warnings name: the file, when one was given
         self._resolve_mesh = resolve_mesh  # how mesh URIs are found (None: the resource roots)
         super().__init__("move_group", automatically_declare_parameters_from_overrides=True, **kwargs)
@@ -205,6 +209,8 @@ class MoveGroupNode(_Execution, _PlannerQueries, _ModelServices):
 
     # ------------------------------------------------------------------ set-up
     def _warn_of_twins(self) -> None:
+        """Once, shortly after start: warn when another node of this name runs on the domain, since both would
+        answer every request and action (a leftover move_group from an earlier launch)."""
         self._twin_check.cancel()
         me = (self.get_name(), self.get_namespace())
         twins = sum(1 for named in self.get_node_names_and_namespaces() if named == me)
@@ -229,6 +235,8 @@ class MoveGroupNode(_Execution, _PlannerQueries, _ModelServices):
         return float(value)
 
     def _on_text(self, topic: str, text: str) -> None:
+        """A robot description heard on its latched topic: the planner is built once both the URDF and the SRDF have
+        arrived (parameters given at start win)."""
         if self.planner is not None:
             return
         self._texts[topic] = text
@@ -236,6 +244,10 @@ class MoveGroupNode(_Execution, _PlannerQueries, _ModelServices):
             self._build(self._texts["robot_description"], self._texts["robot_description_semantic"])
 
     def _build(self, urdf: str, srdf: str) -> None:
+        """Build the planner for the robot, with the joint limits of ``robot_description_planning``, and say once
+        what of the user's MoveIt configuration is not used (kinematics solver plugins, the OMPL pipeline); a
+        robot the planner cannot model is an error in the log, and the node keeps answering with that error. Ends
+        with MoveIt's "You can start planning now!"."""
         limits = {}
         prefix = "robot_description_planning.joint_limits."
         grouped: dict[str, dict[str, Any]] = {}
@@ -285,6 +297,9 @@ class MoveGroupNode(_Execution, _PlannerQueries, _ModelServices):
         )
 
     def _read_controllers(self) -> list[Controller]:
+        """The controllers MoveIt's simple controller manager would use:
+        ``moveit_simple_controller_manager.controller_names`` with each one's ``action_ns`` (default
+        ``follow_joint_trajectory``) and ``joints``."""
         prefix = "moveit_simple_controller_manager."
         names = (
             self.get_parameter(prefix + "controller_names").value
@@ -304,6 +319,10 @@ class MoveGroupNode(_Execution, _PlannerQueries, _ModelServices):
 
     # ------------------------------------------------------------------ plumbing
     def _guard(self, name: str, fn: Any) -> Any:
+        """``fn`` as a service callback that answers every request: with no robot yet, a FAILURE saying what is
+        missing; a PlanningError as its MoveIt error code and message; anything else as FAILURE naming the error.
+        One request is served at a time (the planner is not re-entrant)."""
+
         def wrapper(request: Any, response: Any) -> Any:
             if self.planner is None:
                 return _failed(
@@ -447,6 +466,8 @@ def _config_parameters(folder: Path) -> list[Parameter]:
     from ..systems.ros2_control import yaml_problem
 
     def load(path: Path) -> Any:
+        """A YAML file of the MoveIt config; a syntax error is a ValueError naming file:line (for the command line),
+        never a traceback."""
         try:
             return yaml.safe_load(path.read_text(encoding="utf-8")) or {}
         except yaml.YAMLError as err:  # a file:line error for the command line, never a traceback

@@ -29,6 +29,8 @@ REPLAY_RATE_HZ = 10.0
 
 
 def _metric(value: Any) -> Any:
+    """A value a run returned, as the results table keeps it: numbers as floats (NaN and infinities as their text,
+    which Arrow and JSON keep), strings, booleans and None as they are, anything else as its text."""
     if isinstance(value, bool | int | str) or value is None:
         return value
     try:
@@ -125,6 +127,10 @@ class _InProcessRun:
     replay page kept if the run does not pass."""
 
     def __init__(self, fn: Callable[..., Any], spec: RunSpec, start: str | None) -> None:
+        """A run of a scenario function in this process: its world (the function's ``world`` file, else the default
+        world) in a Simulation without pacing (``rtf=0``) seeded with the run's seed, or, for a branch, the
+        checkpoint's world as it was with a fresh draw of its noise; a replay of the bodies' poses is recorded as
+        it runs."""
         from ..description import World, load
         from ..sim import ReplayRecorder, Simulation
         from ..worlds import default_world
@@ -150,6 +156,7 @@ class _InProcessRun:
         return float(self.sim.world.time)
 
     def finish(self, keep: Path | None) -> dict[str, str]:
+        """Stop recording; with ``keep`` (a failing or kept run), write its replay page there and say so."""
         self.replay.close()
         if keep is None:
             return {}
@@ -165,6 +172,9 @@ class _RosRun:
     discovery, paused: the scenario steps it), recording the scenario's ``record`` topics and a replay."""
 
     def __init__(self, fn: Callable[..., Any], spec: RunSpec, folder: Path | None) -> None:
+        """A run that needs ROS: a ``gazelle sim`` server on a domain of its own (so parallel runs never hear each
+        other), seeded with the run's seed, recording the function's ``record`` topics to a bag and its replay
+        beside it, in a temporary folder."""
         from ..testing import Sim, environ_applied, reserve_domain
 
         self.fn, self.spec, self.folder = fn, spec, folder
@@ -197,6 +207,8 @@ class _RosRun:
         return float(self.sim.time) if self.sim.is_open else 0.0
 
     def finish(self, keep: Path | None) -> dict[str, str]:
+        """Stop the server and free its domain; with ``keep``, move the replay, the bag and the server's log there.
+        The temporary folder goes either way."""
         import shutil
 
         try:
@@ -257,6 +269,8 @@ def _ray_task(
     start: bytes | None = None,
     artifacts: str | None = None,
 ) -> dict[str, Any]:
+    """One run on a Ray worker: the scenario's source travels with the task (the worker need not have the file), and
+    a branch's checkpoint as bytes, written to a file there."""
     return run_one(
         origin, name, spec, source=source, timeout=timeout, start=_checkpoint_file(start), artifacts=artifacts
     )
@@ -316,6 +330,10 @@ def _pool_runs(
     start: str | None = None,
     artifacts: str | None = None,
 ) -> Iterator[dict[str, Any]]:
+    """The runs on this machine's cores, ``jobs`` at a time, in forked worker processes (warm: gazelle and the
+    scenario already imported). A worker that dies under a run (killed, or a crash in C) breaks the pool without
+    saying which run did it: the runs in flight then go again one at a time, and one that kills its worker a
+    second time is reported as lost while the others' rows stand."""
     # fork: the workers start with gazelle's runtime and the scenario's module already imported (warm),
     # and a user's script needs no `if __name__ == "__main__"` guard (spawn and forkserver run it again).
     # With fork, the pool starts all its workers at the first submit, before anything here starts a thread.
@@ -365,6 +383,9 @@ def _ray_runs(
     start: str | None = None,
     artifacts: str | None = None,
 ) -> Iterator[dict[str, Any]]:
+    """The runs on a Ray cluster (``address``: ``local`` for a Ray of this machine's ``jobs`` cores, else the
+    cluster's address), one CPU each, a dead worker's run retried once and then reported as lost. A Ray session
+    the caller already has is used and left running; one started here is shut down at the end."""
     try:
         import ray
         from ray.exceptions import RayError
