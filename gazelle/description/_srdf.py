@@ -62,6 +62,8 @@ class _Reader:
         return element_location(element, self.source)
 
     def attr(self, element: etree._Element, name: str) -> str | None:
+        """A required attribute's stripped value; an error naming the element and the attribute (and None) when it
+        is missing or empty."""
         value = (element.get(name) or "").strip()
         if not value:
             self.sink.error(
@@ -73,6 +75,8 @@ class _Reader:
         return value
 
     def unsupported(self, element: etree._Element, parent: str) -> None:
+        """Warn of an element the SRDF reader does not read, with its file:line: nothing a user wrote is dropped
+        silently."""
         self.sink.warning(
             ErrorCode.ELEMENT_UNSUPPORTED,
             f"<{local_name(element)}> in <{parent}> is not supported and is ignored",
@@ -80,6 +84,9 @@ class _Reader:
         )
 
     def robot(self, root: etree._Element) -> Semantics | None:
+        """The SRDF's ``<robot>``: its groups (a name defined twice is an error), group states, end effectors,
+        virtual joints, passive joints and disabled collision pairs; then every reference between them is checked
+        (a subgroup, a state's group, an end effector's groups must exist)."""
         if local_name(root) != "robot":
             self.sink.error(
                 ErrorCode.ROOT_ELEMENT_INVALID,
@@ -141,6 +148,7 @@ class _Reader:
         )
 
     def end_effector(self, element: etree._Element) -> EndEffector | None:
+        """``<end_effector name parent_link group [parent_group]>``; None when a required attribute is missing."""
         name, parent_link, group = (self.attr(element, a) for a in ("name", "parent_link", "group"))
         if name is None or parent_link is None or group is None:
             return None  # self.attr said which is missing
@@ -148,6 +156,8 @@ class _Reader:
         return EndEffector(name, parent_link, group, parent_group)
 
     def virtual_joint(self, element: etree._Element) -> VirtualJoint | None:
+        """``<virtual_joint name type parent_frame child_link>`` with type fixed, floating or planar (another is an
+        error)."""
         vj_name, vj_type, frame, child_link = (
             self.attr(element, a) for a in ("name", "type", "parent_frame", "child_link")
         )
@@ -193,6 +203,8 @@ class _Reader:
                     )
 
     def group(self, element: etree._Element, passive: list[str], subgroup_refs: list) -> Group | None:
+        """``<group>``: its links, joints, chains, subgroups (checked once every group is read) and passive joints
+        listed inside it."""
         name = self.attr(element, "name")
         links: list[str] = []
         joints: list[str] = []
@@ -224,6 +236,9 @@ class _Reader:
         return Group(name, tuple(links), tuple(joints), tuple(chains), tuple(subgroups))
 
     def group_state(self, element: etree._Element) -> GroupState | None:
+        """``<group_state name group>``: each ``<joint name value>``, where ``value`` holds one number per degree of
+        freedom (a planar or floating joint has several); a value that is not numbers is an error naming the
+        joint."""
         name, group = self.attr(element, "name"), self.attr(element, "group")
         values: list[tuple[str, tuple[float, ...]]] = []
         for child in child_elements(element):

@@ -50,6 +50,7 @@ class _PackageNotFound(Exception):
     """``$(find pkg)`` named a package the resolver does not know."""
 
     def __init__(self, package: str):
+        """A ``$(find package)`` that no resource root holds, naming where gazelle looked."""
         super().__init__(
             f"package '{package}' not found (searched GAZELLE_RESOURCE_PATH, GZ_SIM_RESOURCE_PATH, "
             "GAZEBO_MODEL_PATH, ROS_PACKAGE_PATH and the ament index)"
@@ -84,6 +85,9 @@ class _LineBuilder(expatbuilder.ExpatBuilderNS):
         self._file = file
 
     def start_element_handler(self, name: str, attributes: list[str]) -> None:
+        """As minidom builds each element, note its file and line (copied with the node when xacro clones it into a
+        macro's expansion), and write them as a location attribute the URDF parser reads back, so a diagnostic of
+        the expanded URDF names the line in the user's xacro file."""
         super().start_element_handler(name, attributes)
         node = self.curNode
         line = int(self._parser.CurrentLineNumber)  # pyright: ignore[reportAttributeAccessIssue] - expat's parser object, which minidom's stubs do not declare
@@ -138,6 +142,8 @@ class _Tracker:
 
         @functools.wraps(fn)
         def wrapper(node: Any, *args: Any, **kwargs: Any) -> Any:
+            """Run one of xacro's element handlers with its node on the stack: an exception leaving it is stamped
+            with the innermost element's location (once), which the error then names."""
             self.stack.append(node)
             self.last = node
             try:
@@ -170,6 +176,9 @@ class _Tracker:
 
 
 def _find_with(resolver: ResourceResolver) -> Callable[[str], str]:
+    """xacro's ``$(find pkg)`` through gazelle's resource roots (raising :class:`_PackageNotFound` for a package
+    none holds)."""
+
     def find(package: str) -> str:
         path = resolver.find_package(package)
         if path is None:
@@ -338,6 +347,7 @@ _WORKER: Any = None
 
 
 def _worker() -> Any:
+    """The one bounded helper process of this process (see :mod:`._bounded`), started at the first expansion."""
     from ._bounded import BoundedWorker
 
     global _WORKER
@@ -419,6 +429,8 @@ def xacro_main() -> int:
     ament = xacro_subst._eval_find
 
     def find(package: str) -> str:
+        """``$(find pkg)`` for the ``xacro`` command: gazelle's resource roots first (a package found by its
+        package.xml name), then the ament index as xacro itself looks; neither: xacro's own error, naming both."""
         try:
             return ours(package)
         except _PackageNotFound:
