@@ -96,6 +96,10 @@ class FoxgloveBridge:
     """Topics of the ROS graph as Foxglove channels, served behind the origin-checking proxy."""
 
     def __init__(self, host: str = "127.0.0.1", port: int = DEFAULT_PORT, allow_origins: tuple[str, ...] = ()):
+        """A Foxglove WebSocket server on ``host:port`` for the ROS graph of this process's domain: foxglove-sdk's
+        server runs on a private loopback port with a certificate made for this run, behind :class:`_Proxy`,
+        which refuses foreign origins (the Foxglove app's and ``allow_origins`` are let in). Channels are the
+        graph's topics; a topic is subscribed to in ROS only while a client subscribes to its channel."""
         import foxglove
 
         self.context = Context()
@@ -155,6 +159,7 @@ class FoxgloveBridge:
             self._close(topic)
 
     def _close(self, topic: str) -> None:
+        """A topic left the graph: its channel, its ROS subscription and its clients go."""
         channel = self._channels.pop(topic, None)
         if channel is not None:
             channel.close()
@@ -165,6 +170,8 @@ class FoxgloveBridge:
 
     # ------------------------------------------------------------------ subscriptions (ROS thread)
     def _apply(self, action: str, topic: str, client: int) -> None:
+        """A client's subscribe or unsubscribe, on the ROS thread: the topic is subscribed to in ROS while at least
+        one client wants it, and no longer."""
         clients = self._subscribers.setdefault(topic, set())
         if action == "subscribe":
             clients.add(client)
@@ -228,6 +235,9 @@ class _Proxy:
     """The public websocket endpoint: checks Host and Origin, then relays frames to foxglove-sdk's server."""
 
     def __init__(self, policy: OriginPolicy, host: str, port: int, upstream_port: int, upstream_cert: bytes):
+        """The public side of the Foxglove server: a WebSocket server on ``host:port`` that checks each connection's
+        Origin and Host (see :class:`OriginPolicy`) and relays an accepted one to the upstream server over TLS,
+        trusting only the upstream's certificate of this run."""
         import ssl
 
         self.policy = policy
@@ -246,6 +256,8 @@ class _Proxy:
             raise self._error
 
     def _run(self, host: str, port: int) -> None:
+        """The proxy's thread: start the server (an error, such as a port in use, is handed to the constructor) and
+        serve until closed."""
         asyncio.set_event_loop(self._loop)
         try:
             self._loop.run_until_complete(self._start(host, port))
@@ -257,6 +269,8 @@ class _Proxy:
         self._loop.run_forever()
 
     async def _start(self, host: str, port: int) -> None:
+        """Listen on ``host:port`` for Foxglove's subprotocols, with the origin check on the opening request and a
+        bound on a client's frame size."""
         from websockets.asyncio.server import serve
 
         self._server = await serve(
@@ -271,6 +285,7 @@ class _Proxy:
         self.port = self._server.sockets[0].getsockname()[1]
 
     async def _relay(self, client: Any) -> None:
+        """Relay one accepted client to the upstream server, frames both ways, until either side closes."""
         from websockets.asyncio.client import connect
         from websockets.typing import Subprotocol
 

@@ -85,8 +85,8 @@ class _Reader:
 
     def robot(self, root: etree._Element) -> Semantics | None:
         """The SRDF's ``<robot>``: its groups (a name defined twice is an error), group states, end effectors,
-        virtual joints, passive joints and disabled collision pairs; then every reference between them is checked
-        (a subgroup, a state's group, an end effector's groups must exist)."""
+        virtual joints, passive joints and disabled collision pairs; then the references between them are checked
+        (a subgroup, a state's group or an end effector's group that is not defined is a warning)."""
         if local_name(root) != "robot":
             self.sink.error(
                 ErrorCode.ROOT_ELEMENT_INVALID,

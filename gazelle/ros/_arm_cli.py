@@ -43,6 +43,8 @@ def quaternion(roll: float, pitch: float, yaw: float) -> tuple[float, float, flo
 
 
 def semantics(srdf: str) -> Semantics:
+    """The SRDF move_group serves (its ``robot_description_semantic``), read as gazelle reads any SRDF; one that
+    cannot be read is an ArmError with the loader's summary."""
     try:
         value = load_string(srdf, format="srdf", source="robot_description_semantic").value
     except ModelLoadError as err:
@@ -84,6 +86,7 @@ def group_joints(sem: Semantics, urdf: str, group: str) -> list[str]:
 
 
 def _group(sem: Semantics, name: str) -> Any:
+    """The SRDF's planning group ``name``; an ArmError listing the groups when there is none."""
     for g in sem.groups:
         if g.name == name:
             return g
@@ -91,6 +94,8 @@ def _group(sem: Semantics, name: str) -> Any:
 
 
 def tip_link(sem: Semantics, group: str) -> str:
+    """The link a pose goal moves for ``group``, as MoveIt picks it: its last chain's tip, else its last subgroup's
+    tip, else its last link ("" when it has none)."""
     g = _group(sem, group)
     if g.chains:
         return g.chains[-1].tip_link
@@ -102,6 +107,8 @@ def tip_link(sem: Semantics, group: str) -> str:
 
 
 def named_state(sem: Semantics, group: str, name: str) -> dict[str, float]:
+    """The joint values of the group's SRDF ``group_state`` ``name`` (MoveIt's set_named_target); an ArmError
+    listing the group's states when there is none."""
     _group(sem, group)
     for state in sem.group_states:
         if state.group == group and state.name == name:
@@ -125,6 +132,9 @@ def joint_values(sem: Semantics, urdf: str, group: str, items: list[str]) -> dic
 
 
 def arm_main(argv: list[str]) -> int:
+    """``gazelle arm GROUP (x y z roll pitch yaw | --named NAME | --joints ...)``: plan (and, unless
+    ``--plan-only``, execute) one motion through move_group's MoveGroup action, as a MoveIt client would; an
+    error is one line on stderr and exit code 1, never a traceback."""
     parser = argparse.ArgumentParser(
         prog="gazelle arm", description="Move an arm through move_group: a pose, a named state or joint values."
     )
@@ -173,6 +183,8 @@ def _served(client: Any, timeout: float) -> bool:
 
 
 def _parameters(node: Any, names: list[str], timeout: float) -> list[str]:
+    """move_group's parameters ``names`` as strings (its URDF and SRDF); an ArmError when no move_group answers
+    within ``timeout`` or it has no robot yet."""
     import rclpy
     from rcl_interfaces.srv import GetParameters
 
@@ -235,6 +247,9 @@ def _pose_goal(link: str, frame: str, pose: tuple[float, float, float, float, fl
 
 
 def _run(node: Any, args: argparse.Namespace) -> int:
+    """Build the MoveGroup goal (joint constraints for a named state or joint values, position and orientation
+    constraints for a pose), send it, and print the plan's duration and planning time, or MoveIt's error code and
+    message."""
     import rclpy
     from moveit_msgs.action import MoveGroup
     from moveit_msgs.msg import MoveItErrorCodes

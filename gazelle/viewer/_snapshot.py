@@ -79,6 +79,7 @@ class _GifWriter:
         self.stamps: list[float] = []
 
     def add(self, img: Any, stamp: float) -> None:
+        """Add a screenshot taken at wall time ``stamp``, scaled to the GIF's width and reduced to 128 colours."""
         from PIL import Image
 
         h = round(img.height * self.width / img.width)
@@ -87,6 +88,8 @@ class _GifWriter:
         self.stamps.append(stamp)
 
     def close(self, end: float) -> int:
+        """Write the GIF, each frame lasting as long as it really did until the next (at least 20 ms, what browsers
+        show), looping; the number of frames."""
         if not self.frames:
             return 0
         # each frame lasts as long as it really did: screenshots can fall behind ``fps`` on a busy machine
@@ -108,6 +111,8 @@ class _Mp4Writer:
     TIME_BASE = Fraction(1, 1000)
 
     def __init__(self, out: Path, fps: float, width: int | None) -> None:
+        """An H.264 MP4 writer whose frames keep their real timing (``fps`` is nominal: a screenshot that came late
+        lasts longer), at ``width`` pixels (None: the page's)."""
         self.out, self.fps, self.width = out, fps, width
         self.container: Any = None
         self.stream: Any = None
@@ -117,6 +122,7 @@ class _Mp4Writer:
         self.count = 0
 
     def _open(self, w: int, h: int, stamp: float) -> None:
+        """Open the file at the first frame, which fixes the video's size (H.264's yuv420p needs even sides)."""
         import av
 
         # +faststart: the index goes first, so a browser plays the file while it downloads;
@@ -133,6 +139,7 @@ class _Mp4Writer:
         return round((stamp - self.t0) * 1000)
 
     def _mux(self, packets: Any) -> None:
+        """Write encoded packets, each with its frame's real duration."""
         for packet in packets:
             # libx264 does not carry a frame's duration to its packet, and the muxer would give the
             # last frame 1/fps: each packet gets its frame's real duration
@@ -140,12 +147,15 @@ class _Mp4Writer:
             self.container.mux(packet)
 
     def _flush_pending(self, next_pts: int) -> None:
+        """Encode the held frame now that the next frame's time (``next_pts``) says how long it lasts."""
         frame, self.pending = self.pending, None
         self.durations[frame.pts] = max(1, next_pts - frame.pts)
         self._mux(self.stream.encode(frame))
         self.count += 1
 
     def add(self, img: Any, stamp: float) -> None:
+        """Add a screenshot taken at wall time ``stamp``: scaled (and cropped to even sides), resized to the video's
+        size if the window changed, and held until the next frame gives it a duration."""
         import av
         from PIL import Image
 
