@@ -88,8 +88,8 @@ class _GifWriter:
         self.stamps.append(stamp)
 
     def close(self, end: float) -> int:
-        """Write the GIF, each frame lasting as long as it really did until the next (at least 20 ms, what browsers
-        show), looping; the number of frames."""
+        """Write the GIF, each frame lasting as long as it really did until the next (at least 20 ms), looping;
+        the number of frames."""
         if not self.frames:
             return 0
         # each frame lasts as long as it really did: screenshots can fall behind ``fps`` on a busy machine
