@@ -105,6 +105,10 @@ class _Loader(_Parts):
     """Documents, models (nested and included) and worlds."""
 
     def load_text(self, text: str, source: str, base_dir: Path | None) -> Model | World | None:
+        """An SDF document's content: its first ``<world>`` (a world file), else its first ``<model>`` placed by its
+        pose (and ``placement_frame``), else a lone ``<light>`` as a world holding it. What else the ``<sdf>``
+        holds is warned about; a second world or model is warned about and left out, as gz-sim loads only the
+        first."""
         got = self.read(text, source, base_dir)
         if got is None:
             return None
@@ -301,6 +305,9 @@ class _Loader(_Parts):
         kinds: dict[str, str] = {}
 
         def register(node_name: str, kind: str, el: etree._Element) -> bool:
+            """Claim ``node_name`` in the model's frame graph for a link, joint, frame or nested model: a reserved
+            name (``world``, ``__model__``, ``__*__``) is an error, and so is a name used twice (by any two kinds
+            from SDF 1.7 on; before it, only by two of one kind). False when refused."""
             if node_name in ("__model__", "world") or (node_name.startswith("__") and node_name.endswith("__")):
                 self.sink.error(ErrorCode.VALUE_INVALID, f"'{node_name}' is a reserved name", self.loc(el, doc))
                 return False
@@ -536,6 +543,8 @@ class _Loader(_Parts):
         )
 
     def world(self, element: etree._Element, doc: _Doc) -> World | None:
+        """A ``<world>``: gravity and the magnetic field, ``<spherical_coordinates>``, ``<physics>`` (step size and
+        pace), ``<scene>``, its models (``<include>`` resolved) and lights, and its plugins."""
         name = self.name(element, doc)
         loc = self.loc(element, doc)
         self.check(element, doc, "world")
@@ -588,6 +597,8 @@ class _Loader(_Parts):
         return gravity, magnetic
 
     def spherical_coordinates(self, element: etree._Element, doc: _Doc) -> SphericalCoordinates | None:
+        """``<spherical_coordinates>``, which GPS sensors read; None when the world has none. Only an ENU world
+        frame is simulated (another orientation is a warning)."""
         spherical = None
         sph_el = _find(element, "spherical_coordinates")
         if sph_el is not None:
@@ -638,6 +649,7 @@ class _Loader(_Parts):
         return physics
 
     def scene(self, element: etree._Element, doc: _Doc) -> Scene:
+        """``<scene>``: ambient and background colours, shadows, grid; SDF's defaults for what it leaves out."""
         scene_el = _find(element, "scene")
         scene = Scene()
         if scene_el is not None:
@@ -729,6 +741,7 @@ class _Loader(_Parts):
 
 
 def _link_pose(built: _Built, link_name: str) -> Pose:
+    """The pose of link ``link_name`` in the model frame (the identity when it has none or is not there)."""
     for link in built.links:
         if link.name == link_name:
             return link.pose or IDENTITY

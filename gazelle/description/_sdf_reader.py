@@ -144,6 +144,7 @@ def _tag(element: etree._Element) -> str:
 
 
 def _find(element: etree._Element, tag: str) -> etree._Element | None:
+    """The first child element of ``element`` with local name ``tag`` (namespaces ignored), or None."""
     for child in child_elements(element):
         if _tag(child) == tag:
             return child
@@ -242,6 +243,7 @@ class _Reader:
         return decode_config(cfg) if doc.renamed else cfg
 
     def unsupported(self, element: etree._Element, doc: _Doc, parent: str) -> None:
+        """Warn of an element gazelle does not read, with its file:line: nothing a user wrote is dropped silently."""
         self.sink.warning(
             ErrorCode.ELEMENT_UNSUPPORTED,
             f"<{_tag(element)}> in <{parent}> is not supported and is ignored",
@@ -259,6 +261,7 @@ class _Reader:
             self.unsupported(child, doc, parent or kind)
 
     def name(self, element: etree._Element, doc: _Doc) -> str | None:
+        """The element's required ``name``, stripped; an error (and None) when it is missing or empty."""
         value = element.get("name")
         if value is None or not value.strip():
             self.sink.error(
@@ -291,6 +294,7 @@ class _Reader:
         return value
 
     def opt_number(self, element: etree._Element | None, tag: str, doc: _Doc) -> float | None:
+        """The number in child ``tag``; None when the child is absent or not a number (the latter reported)."""
         if element is None or _find(element, tag) is None:
             return None
         value = self.number(element, tag, math.nan, doc)
@@ -325,6 +329,8 @@ class _Reader:
         return None if v is None else (v[0], v[1], v[2])
 
     def flag(self, element: etree._Element | None, tag: str, default: bool, doc: _Doc) -> bool:
+        """The boolean in child ``tag`` (true/false/1/0); ``default`` when absent, and with an error naming the text
+        when it is neither."""
         if element is None:
             return default
         child = _find(element, tag)
@@ -409,6 +415,7 @@ class _Reader:
         return IDENTITY, relative_to
 
     def plugin(self, element: etree._Element, doc: _Doc) -> Plugin | None:
+        """A ``<plugin>`` kept whole for the systems: its ``name``, ``filename`` (required) and its configuration."""
         loc = self.loc(element, doc)
         filename = (element.get("filename") or "").strip()
         if not filename:

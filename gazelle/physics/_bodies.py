@@ -74,6 +74,9 @@ _log = logging.getLogger("gazelle.physics")
 
 
 def _set_inertial(body: mujoco.MjsBody, link: Link) -> None:
+    """A link's mass, centre of mass and full inertia tensor on its MuJoCo body, explicitly (MuJoCo does not derive
+    them from the geoms); a mass below :data:`MIN_MASS` is raised to it, since MuJoCo refuses a massless moving
+    body."""
     inertial = link.inertial
     if inertial is None:
         return
@@ -155,6 +158,10 @@ def _plane_axes(normal: list[float]) -> tuple[list[float], list[float], list[flo
 
 
 def _add_joint_dofs(spec: mujoco.MjSpec, body: mujoco.MjsBody, joint: Joint, name: str, built: BuiltEntity) -> None:
+    """A joint's degrees of freedom on its child body, at the joint frame's origin: a hinge (revolute: limited,
+    continuous: not), a slide, a ball, two hinges (universal), a hinge and a slide coupled by the thread pitch
+    (screw), two slides and a hinge (planar), three slides and a ball (floating); nothing for fixed. Their MuJoCo
+    names are recorded in ``built.joints`` under the joint's name."""
     X_CJ = _joint_frame_in_child(joint)
     pos = list(X_CJ.position)
     axis_j = joint.axis.xyz if joint.axis is not None else (1.0, 0.0, 0.0)
@@ -255,6 +262,8 @@ class _ModelTree:
     """One model's links added to a spec as a tree of bodies (see :func:`add_model`)."""
 
     def __init__(self, spec: mujoco.MjSpec, model: Model, entity: str, visuals: bool) -> None:
+        """The pieces of one model's MuJoCo bodies: the joint tree by parent, its links by name, and what the build
+        records (bodies, joints, the surface parameters it could not apply, the meshes it decomposed)."""
         self.spec, self.model, self.entity, self.visuals = spec, model, entity, visuals
         self.children: dict[str, list[Joint]] = {}
         self.child_joint: dict[str, Joint] = {}
@@ -304,6 +313,9 @@ class _ModelTree:
                 self.built.root_body = scoped(self.entity, j.child)
 
     def add_subtree(self, parent_body: mujoco.MjsBody, link_name: str, X_PC: Pose, joint: Joint | None) -> None:
+        """Add the link ``link_name`` at ``X_PC`` in ``parent_body`` (through ``joint``), then every link below it,
+        depth-first. Iterative, so a 5,000-link chain is no RecursionError; a tree deeper than
+        :data:`MAX_TREE_DEPTH` is a BuildError naming the link."""
         # iterative (an explicit stack), so a 5,000-link chain is no RecursionError
         stack: list[tuple[mujoco.MjsBody, str, Pose, Joint | None, int]] = [(parent_body, link_name, X_PC, joint, 1)]
         while stack:
@@ -321,6 +333,9 @@ class _ModelTree:
     def _add_link_body(
         self, parent_body: mujoco.MjsBody, link: Link, X_PC: Pose, joint: Joint | None
     ) -> mujoco.MjsBody:
+        """One link as a MuJoCo body: its pose in the parent, its inertia, the degrees of freedom of the joint above
+        it, its collisions and (when visuals are built) its visuals. A kinematic link, or one without gravity, is
+        gravity-compensated."""
         spec, entity, built = self.spec, self.entity, self.built
         link_name = link.name
         body = parent_body.add_body(
@@ -351,6 +366,9 @@ class _ModelTree:
             self.built.kinematic_joints.append(jname)
 
     def _add_collisions(self, body: mujoco.MjsBody, link: Link) -> None:
+        """A link's collisions as geoms: in a group cameras do not draw when the model has visuals, or drawn in the
+        link's first visual colour when it has none; every surface parameter MuJoCo cannot apply is collected for
+        one warning."""
         visuals = self.visuals
         mass_hint = link.inertial.mass if link.inertial else self.total_mass
         colour = next(
