@@ -112,6 +112,7 @@ class JointStatesBlock(PayloadBlock):
     def __init__(
         self, stamps: list[float], names: tuple[str, ...], positions: Any, velocities: Any, efforts: Any
     ) -> None:
+        """The joint states of a block of cycles: one stamp per cycle and arrays of cycles x joints."""
         self.stamps = stamps
         self.names = names
         self.positions = positions
@@ -122,6 +123,7 @@ class JointStatesBlock(PayloadBlock):
         return len(self.stamps)
 
     def __iter__(self) -> Iterator[JointStates]:
+        """The block as one JointStates payload per cycle, in time order."""
         names = self.names
         for t, p, v, e in zip(
             self.stamps, self.positions.tolist(), self.velocities.tolist(), self.efforts.tolist(), strict=True
@@ -129,6 +131,7 @@ class JointStatesBlock(PayloadBlock):
             yield JointStates(t, names, tuple(p), tuple(v), tuple(e))
 
     def last(self) -> JointStates:
+        """The last cycle's JointStates (what a latched reader or the viewer wants)."""
         return JointStates(
             self.stamps[-1],
             self.names,
@@ -627,6 +630,7 @@ class Bus:
     """Registry of endpoints with listeners (the ROS bridge)."""
 
     def __init__(self) -> None:
+        """An empty bus: no endpoints, no listeners (the ROS bridge registers one when it attaches)."""
         self._lock = threading.Lock()
         self._endpoints: list[Endpoint] = []
         self._listeners: list[BusListener] = []
@@ -685,6 +689,8 @@ class Bus:
         return self._add(Endpoint(owner, topic, msg_type, False, qos, depth, callback))
 
     def _add(self, ep: Endpoint) -> Endpoint:
+        """Add an endpoint (under the plugin node being declared, if any) and tell the listeners, outside the lock,
+        so a listener may call back into the bus."""
         ep.node = getattr(self._declaring, "node", "")
         with self._lock:
             self._endpoints.append(ep)

@@ -46,12 +46,14 @@ class MessageLog:
     arrived at the test."""
 
     def __init__(self, topic: str) -> None:
+        """Every message heard on ``topic`` since the subscription began, with the sim time at which it was heard."""
         self.topic = topic
         self.messages: list[Any] = []
         self.sim_times: list[float] = []
         self._cond = threading.Condition()
 
     def _add(self, msg: Any, sim_time: float) -> None:
+        """Keep a message (on the node's thread) and wake whoever waits for one."""
         with self._cond:
             self.messages.append(msg)
             self.sim_times.append(sim_time)
@@ -80,6 +82,8 @@ class MessageLog:
 
 
 def qos_for(reliable: bool = True, latched: bool = False, depth: int = 1000) -> QoSProfile:
+    """A QoS profile: reliable or best effort, latched (transient local) or volatile, of ``depth`` (deep by default:
+    a test's log must not drop messages while the test is busy)."""
     return QoSProfile(
         depth=depth,
         reliability=ReliabilityPolicy.RELIABLE if reliable else ReliabilityPolicy.BEST_EFFORT,
@@ -94,6 +98,8 @@ class RosTestNode:
     """
 
     def __init__(self, domain_id: int, name: str = "gazelle_test") -> None:
+        """A node of the test's own on ``domain_id``, in an rclpy context of its own (not the default one a user's
+        code may also init), spun on a thread, following /clock for the simulation's time."""
         self.context = Context()
         rclpy.init(context=self.context, domain_id=domain_id)
         self.node = rclpy.create_node(name, context=self.context, start_parameter_services=False)
@@ -110,6 +116,8 @@ class RosTestNode:
         self._thread.start()
 
     def _spin(self) -> None:
+        """The node's thread: spin until the context ends (an exception raised because close() shut the context is
+        the end, not an error)."""
         try:
             while self.context.ok():
                 self._executor.spin_once(timeout_sec=0.05)
@@ -192,6 +200,7 @@ class RosTestNode:
         return poll_until(predicate, timeout, what, pause)
 
     def close(self) -> None:
+        """Stop spinning, destroy the node and end its context."""
         if self.context.ok():
             self._executor.shutdown(timeout_sec=1.0)
             self.node.destroy_node()

@@ -345,6 +345,9 @@ def _hz(node: Any, args: argparse.Namespace) -> int:
     intervals: list[int] = []
 
     def on_message(msg: Any) -> None:
+        """Note a message's arrival on the node's clock (sim time when the graph has /clock, as ros2 topic hz with
+        use_sim_time): the interval since the last one joins the window. A clock that went back (a reset) starts
+        the counts again, as ros2cli's does."""
         if keep is not None and not keep(msg):
             return
         now = clock.now().nanoseconds
@@ -363,6 +366,8 @@ def _hz(node: Any, args: argparse.Namespace) -> int:
             intervals.pop(0)
 
     def report() -> bool:
+        """Print the rate over the window once a second of the clock has passed since the last report (ros2cli's
+        format: average rate, then min, max, std dev and window); False when there is nothing new to say."""
         if not intervals:
             return False
         if state["printed"] == 0:
@@ -399,6 +404,9 @@ def _filter(expr: str | None) -> Any:
         raise InterfaceError(f"--filter '{expr}' is not a Python expression: {err.msg}") from None
 
     def keep(m: Any) -> bool:
+        """Whether a message passes the user's ``--filter`` expression (``m`` is the message), as ros2cli evaluates
+        it; an expression that fails on a message ends the verb with its error, once, not a traceback per
+        message."""
         try:
             return bool(eval(code, {}, {"m": m}))
         except Exception as err:  # the expression's own failure, said once: the verb ends
@@ -452,6 +460,8 @@ def _bw(node: Any, args: argparse.Namespace) -> int:
     print(f"Subscribed to [{args.topic_name}]", flush=True)
 
     def report() -> bool:
+        """Print the bandwidth over the last ``--window`` messages (bytes over the time they span) and their sizes,
+        in ros2cli's format."""
         window = sizes[-args.window :]
         if len(window) < 2:
             return False
@@ -477,6 +487,7 @@ def _delay(node: Any, args: argparse.Namespace) -> int:
     delays: list[float] = []
 
     def on_message(msg: Any) -> None:
+        """A message's delay: the clock now minus its header stamp (a message without a header is not counted)."""
         header = getattr(msg, "header", None)
         if header is None:
             return
@@ -487,6 +498,8 @@ def _delay(node: Any, args: argparse.Namespace) -> int:
         return 1
 
     def report() -> bool:
+        """Print the mean, min, max and std dev of the delays in the window, in ros2cli's format (or why there is
+        nothing to report)."""
         window = delays[-args.window :]
         if not window:
             print("msg does not have header" if not delays else "no new messages")
