@@ -79,6 +79,8 @@ class JointHandle:
         return (JointHandle, (self.world, self.entity, self.name))
 
     def __init__(self, world: PhysicsWorld, entity: str, name: str) -> None:
+        """A handle on joint ``name`` of ``entity``; its MuJoCo ids are looked up again whenever the model is
+        recompiled (a spawn, a delete)."""
         self.world = world
         self.entity = entity
         """The entity's name."""
@@ -133,12 +135,14 @@ class JointGroup:
         return (JointGroup, (self.world, self.entity, self.names))
 
     def __init__(self, world: PhysicsWorld, entity: str, names: tuple[str, ...]) -> None:
+        """A handle on several joints of one entity, read or written with one indexed array operation."""
         self.world = world
         self.entity = entity
         self.names = names
         self._ids = PerGeneration(self._resolve)
 
     def _resolve(self, world: PhysicsWorld) -> tuple[np.ndarray, np.ndarray]:
+        """The joints' position and velocity addresses in the compiled model."""
         addresses = [world.joint_address(self.entity, n) for n in self.names]
         return (
             np.array([a[0] for a in addresses], dtype=np.intp),
@@ -177,6 +181,8 @@ class ActuatorHandle:
         return (ActuatorHandle, (self.joint, self.kind, self.name))
 
     def __init__(self, joint: JointHandle, kind: ActuatorKind, name: str) -> None:
+        """A handle on the actuator of kind ``kind`` that drives ``joint``, found by its MuJoCo name in each
+        compiled model."""
         self.joint = joint
         self.kind = kind
         self.name = name
@@ -243,6 +249,8 @@ class BodyHandle:
         return (BodyHandle, (self.world, self.entity, self.link))
 
     def __init__(self, world: PhysicsWorld, entity: str, link: str | None) -> None:
+        """A handle on a link's body (or, with ``link`` None, the entity's root), found again in each compiled
+        model."""
         self.world = world
         self.entity = entity
         self.link = link

@@ -192,6 +192,9 @@ class PhysicsWorld(WorldState):
     def _stage(
         self, model: Model, name: str, X_WM: Pose, namespace: str, spawned: bool, taken: Container[str]
     ) -> Entity:
+        """Add ``model``'s bodies, joints and geoms to the spec under ``name`` at ``X_WM`` (checked: a finite pose,
+        a free name) without compiling. The first camera to come into the world turns on visual geoms for every
+        entity, so cameras see what users see; a model that fails to build leaves nothing of itself in the spec."""
         X_WM = _checked_placement(name, X_WM, taken)
         if has_camera(model) and not self.visual_geoms:
             # a camera comes into the world: from now on every entity's visuals are in the model, so it
@@ -291,6 +294,9 @@ class PhysicsWorld(WorldState):
         )
 
     def _remove_elements(self, name: str) -> None:
+        """Delete every spec element of entity ``name`` (by its name prefix): actuators, equalities, contact
+        exclusions, bodies, its own meshes, materials and textures; a mesh shared by content goes when no geom
+        uses it any more."""
         prefix = name + SEP
         for act in list(self.spec.actuators):
             if act.name.startswith(prefix):
@@ -494,6 +500,8 @@ class PhysicsWorld(WorldState):
         return self._timestep
 
     def _held_dofs(self) -> tuple[np.ndarray, np.ndarray] | None:
+        """The position and velocity addresses of the kinematic links' one-degree-of-freedom joints, found once per
+        compiled model; None when there are none."""
         if self._held is False:
             qadr: list[int] = []
             dadr: list[int] = []
@@ -561,6 +569,10 @@ class PhysicsWorld(WorldState):
         return _native.available()
 
     def _step_block(self, k: int, plans: list[ServoPlan]) -> int:
+        """Step ``k`` times (fewer when a servo plan ends the block early) and return how many were taken. With
+        kinematic joints, one step at a time, each joint then put where its own velocity takes it (no force moves
+        it). After something was placed, deep penetrations are watched for a while and the velocity correcting
+        them bounded, so an overlapping spawn is pushed apart, not launched."""
         held = self._held_dofs()
         if held is None:
             k = self._steps(k, plans)
@@ -618,6 +630,9 @@ class PhysicsWorld(WorldState):
         total = [taken]
 
         def rest(m: mujoco.MjModel, d: mujoco.MjData) -> None:
+            """MuJoCo's control callback between the steps of a planned block: the servo plans run the cycles that
+            fall due (a cycle that was interrupted runs again with a zero integral step); a plan that must stop
+            the block raises, which ends the steps there."""
             # the interrupted cycle runs again: its integral step is zero the second time (no time passed)
             more, again = run_plans(self, plans, k - total[0])
             total[0] += more

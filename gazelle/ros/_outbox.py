@@ -45,6 +45,8 @@ class Lane:
     __slots__ = ("_box", "_publish", "closed", "depth", "items", "keep_last", "name")
 
     def __init__(self, box: Outbox, publish: Callable[[Any], None], depth: int, name: str, keep_last: bool = False):
+        """One topic's queue in the outbox: ``depth`` payloads wait for the publisher thread; ``publish`` hands one
+        to rclpy."""
         self._box = box
         self._publish = publish
         self.depth = max(1, depth)
@@ -69,6 +71,8 @@ class Outbox:
     """A publisher thread fed by :class:`Lane` objects (see the module docstring)."""
 
     def __init__(self, name: str = "gazelle-publish", *, lossless: bool = True, stall_timeout: float = 5.0):
+        """The publisher thread between the simulation and rclpy (see the module docstring): lossless by default, a
+        put waits up to ``stall_timeout`` seconds for room before it drops and says so."""
         self.lossless = lossless
         """Wait for room instead of dropping (the default; see the module docstring)."""
         self.stall_timeout = stall_timeout
@@ -99,6 +103,9 @@ class Outbox:
         return Lane(self, publish, depth, name, keep_last)
 
     def _put(self, lane: Lane, payload: Any) -> None:
+        """Queue a payload on its lane. When the lane is full: lossless, wait for the publisher thread to make room
+        (never on that thread itself, and not for a state lane, whose newest value is all that matters); lossy,
+        or after a wait that ran out, drop the oldest payload and count it."""
         with self._cv:
             if self._closed or lane.closed:
                 return
@@ -134,6 +141,9 @@ class Outbox:
             self._cv.notify_all()
 
     def _run(self) -> None:
+        """The publisher thread: payloads are published one at a time in the order they were put, across lanes. A
+        publish that fails (a publisher destroyed with its entity, a context shut down) is warned about once per
+        topic and the thread goes on."""
         while True:
             with self._cv:
                 self._current = None

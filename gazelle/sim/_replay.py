@@ -91,6 +91,9 @@ class ReplayRecorder:
     """Samples the world of ``sim`` from now on, and the messages of ``topics`` its systems publish."""
 
     def __init__(self, sim: Any, rate_hz: float = RATE_HZ, topics: tuple[str, ...] = ()) -> None:
+        """Record the bodies' poses of ``sim`` at ``rate_hz`` of sim time for a replay page, and the fields of
+        ``topics``' messages at no more than that rate. The recording is bounded: past :data:`MAX_SAMPLES` it
+        keeps every other frame and halves its rate, so an hour-long run still makes a page a browser opens."""
         self._sim = sim
         self._lock = threading.Lock()
         self._shapes: dict[str, list[dict[str, Any]]] = {}
@@ -133,6 +136,8 @@ class ReplayRecorder:
                 self._sinks.append((endpoint, sink))
 
     def _sink(self, topic: str) -> Any:
+        """A bus sink for ``topic``: a message's flattened fields at most once a frame period, thinned like the
+        frames when there are too many."""
         samples = self._topics[topic]
 
         def on(msg: Any) -> None:
@@ -149,6 +154,8 @@ class ReplayRecorder:
         return on
 
     def _reindex(self) -> tuple[int, tuple[str, ...], np.ndarray]:
+        """The bodies to record after the world changed (a spawn, a delete): every link with a body of its own,
+        named ``entity::link``, with its shapes (kept once per model, for the page to draw)."""
         world = self._sim.world
         names, ids = [], []
         for entity_name, entity in list(world.entities.items()):
@@ -170,6 +177,8 @@ class ReplayRecorder:
         return world.generation, tuple(names), np.asarray(ids, dtype=int)
 
     def _on_step(self, info: UpdateInfo) -> None:
+        """At each frame time, the poses of every recorded body in one read. A clock that went back (a world reset)
+        starts the recording again: the replay is of the run since."""
         t = info.sim_time_sec
         if t < self._time - 1e-9:  # the world was reset: the replay is of the run since (a test's own)
             with self._lock:
