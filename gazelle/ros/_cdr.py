@@ -58,6 +58,10 @@ class JointStateTemplate:
     """sensor_msgs/JointState for one tuple of joint names, serialized from a template (see the module)."""
 
     def __init__(self, names: tuple[str, ...]) -> None:
+        """A serialized sensor_msgs/JointState for these joint names with the stamp and the three arrays at known
+        byte offsets: a message is built by writing numbers into a copy of the template, not by rclpy's per-field
+        conversion. The offsets are found by serializing sentinel values (distinct doubles no real state takes)
+        and searching for their bytes."""
         n = len(names)
         self.names = names
         proto = JointStateMsg()
@@ -169,6 +173,8 @@ def odometry_template(frame_id: str, child_frame_id: str) -> Template | None:
 
 
 def serialize_odometry(o: Odometry) -> bytes | None:
+    """nav_msgs/Odometry as CDR bytes from a template (None when it cannot be: a stamp out of range, a covariance of
+    the wrong length, or a prototype whose bytes were not as expected; the message is then built as an object)."""
     stamp = stamp_parts(o.stamp_sec)
     if stamp is None or len(o.pose_covariance) != 36 or len(o.twist_covariance) != 36:
         return None
@@ -206,6 +212,8 @@ def imu_template(frame_id: str) -> Template | None:
 
 
 def serialize_imu(i: Imu) -> bytes | None:
+    """sensor_msgs/Imu as CDR bytes from a template (None when it cannot be), the orientation reordered from wxyz to
+    the message's xyzw."""
     stamp = stamp_parts(i.stamp_sec)
     covs = (i.orientation_covariance, i.angular_velocity_covariance, i.linear_acceleration_covariance)
     if stamp is None or any(len(c) != 9 for c in covs):
@@ -237,6 +245,8 @@ def tf_template(frames: tuple[tuple[str, str], ...]) -> Template | None:
 
 
 def serialize_tf(batch: TransformBatch) -> bytes | None:
+    """tf2_msgs/TFMessage as CDR bytes from a template for this list of (parent, child) frames (None when it cannot
+    be)."""
     stamps = []
     for t in batch.transforms:
         stamp = stamp_parts(t.stamp_sec)
@@ -265,6 +275,8 @@ def joint_states_template(names: tuple[str, ...], lengths: tuple[int, int, int])
 
 
 def serialize_joint_states(j: JointStates) -> bytes | None:
+    """sensor_msgs/JointState as CDR bytes from the template of these names (an empty velocity or effort array is
+    left empty; None when it cannot be)."""
     stamp = stamp_parts(j.stamp_sec)
     if stamp is None:
         return None

@@ -82,6 +82,9 @@ class ControllerManagerNode(Node):
     """The ROS face of one controller manager (see the module docstring)."""
 
     def __init__(self, sim: Simulation, manager: ControllerManager, context: Any) -> None:
+        """The node named as the manager (in its namespace) with the ten controller_manager services the spawner and
+        ``ros2 control`` call, each guarded so that a refusal answers ``ok: false``; ``update_rate`` is declared
+        as the manager read it."""
         super().__init__(
             manager.name,
             namespace=manager.namespace or "/",

@@ -167,12 +167,14 @@ class _MoveGroupBase(Node):
         return box.get("value")
 
     def _spin_execution(self) -> None:
+        """The execution node's thread: spin until rclpy shuts down."""
         try:
             self._execution_executor.spin()
         except (ExternalShutdownException, ShutdownException):
             pass
 
     def _param(self, name: str) -> str:
+        """A string parameter of the node, or "" when it is not set."""
         if not self.has_parameter(name):
             return ""
         value = self.get_parameter(name).value

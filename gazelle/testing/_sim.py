@@ -54,6 +54,8 @@ class ChildProcess:
     own so that stopping it stops everything it started; its output is kept line by line."""
 
     def __init__(self, name: str, argv: Sequence[str], env: Mapping[str, str], cwd: Path | None = None) -> None:
+        """A process the test harness started, in a session of its own (stopped with its children), its output read
+        on a thread and kept."""
         self.name = name
         self.argv = list(argv)
         self.lines: list[str] = []
@@ -103,6 +105,7 @@ class ChildProcess:
                 self._cond.wait(min(left, 0.1))
 
     def wait(self, timeout: float) -> int:
+        """Its exit code; a SimError with the end of its output when it has not ended within ``timeout``."""
         try:
             return self.popen.wait(timeout)
         except subprocess.TimeoutExpired:
@@ -230,6 +233,8 @@ class Sim:
     def _child(
         self, name: str, argv: Sequence[str], cwd: Path | None = None, env: Mapping[str, str] | None = None
     ) -> ChildProcess:
+        """Start a process in the simulation's environment (its domain and the test's token), kept so that close()
+        stops it."""
         child = ChildProcess(name, argv, {**self.env, **(env or {})}, cwd)
         self.children.append(child)
         return child

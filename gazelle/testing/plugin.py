@@ -46,6 +46,8 @@ TOKEN_VAR = "GAZELLE_TEST_TOKEN"
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
+    """The plugin's command-line options: the seed of every simulation, which tests keep their artifacts (bag,
+    replay page, server log), and where."""
     group = parser.getgroup("gazelle", "gazelle robot tests")
     group.addoption("--gazelle-seed", type=int, default=0, help="seed of every gazelle_sim (default 0)")
     group.addoption(
@@ -60,6 +62,7 @@ def pytest_addoption(parser: pytest.Parser) -> None:
 
 
 def pytest_configure(config: pytest.Config) -> None:
+    """Declare the ``gazelle`` marker, so ``--strict-markers`` accepts it."""
     config.addinivalue_line(
         "markers",
         "gazelle(world=None, record=(), paused=True, rtf=None, start_timeout=60): configure the gazelle_sim fixture",
@@ -68,6 +71,8 @@ def pytest_configure(config: pytest.Config) -> None:
 
 @pytest.hookimpl(wrapper=True)
 def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo[None]) -> Iterator[None]:
+    """Keep each phase's report for the fixtures (they keep a failing test's artifacts), and add to a failing test's
+    report its seed (how to run it again the same way) and where its artifacts are."""
     report = yield
     item.stash.setdefault(_REPORT, {})[report.when] = report
     if report.failed and _ARTIFACTS in item.stash:
@@ -94,6 +99,7 @@ def _marker_options(request: pytest.FixtureRequest) -> dict[str, Any]:
 
 @pytest.fixture
 def gazelle_seed(request: pytest.FixtureRequest) -> int:
+    """The seed of this test's simulation: the marker's ``seed``, else ``--gazelle-seed``, else 0."""
     marker = request.node.get_closest_marker("gazelle")
     if marker is not None and "seed" in marker.kwargs:
         return int(marker.kwargs["seed"])
@@ -125,6 +131,10 @@ def _leaked(token: str) -> list[tuple[int, str]]:
 
 @pytest.fixture
 def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[Any]:
+    """A ``gazelle sim`` server of the test's own, on a ROS domain no other test uses, started paused (the test
+    drives sim time), with the marker's world and options. What the test starts (rclpy's default context,
+    subprocesses) runs on that domain. At the end the server stops, a process the test left running fails the
+    test (and is killed), and a failing test keeps its bag, replay page and server log."""
     try:
         from ._domain import environ_applied, reserve_domain
         from ._sim import Sim

@@ -394,6 +394,9 @@ class _Recorder:
     as rosbag2 stores it), the CDR bytes of each message as received, metadata.yaml written at the end."""
 
     def __init__(self, node: Any, out: Path, use_sim_time: bool, overrides: dict[str, Any] | None = None) -> None:
+        """An MCAP bag in ``out`` as rosbag2 writes one (``<name>_0.mcap`` with ZSTD chunks and the ros2 profile,
+        and ``metadata.yaml`` at the end), stamping messages with the node's clock (sim time under
+        ``use_sim_time``) or the wall clock."""
         from mcap.writer import CompressionType, Writer
 
         self.node = node
@@ -414,6 +417,9 @@ class _Recorder:
         self.count = 0
 
     def add(self, topic: str, type_name: str) -> None:
+        """Record ``topic``: its message definition as the schema (the full text with its dependencies, as rosbag2
+        stores it), a channel with the publishers' offered QoS, and a raw subscription whose QoS matches the
+        publishers' (rosbag2_transport's rule) unless the overrides file names one."""
         from gazelle.ros import InterfaceError as DefinitionError
         from gazelle.ros import message_definition
 
@@ -459,6 +465,8 @@ class _Recorder:
         print(f"[INFO] [rosbag2_recorder]: Subscribed to topic '{topic}'", flush=True)
 
     def finish(self) -> None:
+        """Close the MCAP file and write rosbag2's ``metadata.yaml`` (version, duration, start, counts per topic
+        with their QoS), so ``ros2 bag info`` and rosbag2's reader open the bag."""
         self._writer.finish()
         self._file.close()
         count = self.count

@@ -34,6 +34,10 @@ class SpeedLimiter:
     not given (NaN) is not applied; a ``min_*`` not given is ``-max_*``."""
 
     def __init__(self, prefix: str, controller: Controller) -> None:
+        """The limits of one axis (``linear.x`` or ``angular.z``) from the controller's parameters:
+        ``max_velocity``, ``max_acceleration``, ``max_jerk`` and their ``min_*`` (each group switched off by its
+        ``has_*_limits``, true by default in Jazzy); a min above its max is a configure error."""
+
         def get(name: str) -> float:
             return controller.param(f"{prefix}.{name}", math.nan, float)
 
@@ -55,6 +59,7 @@ class SpeedLimiter:
 
     @staticmethod
     def _clamp(x: float, lo: float, hi: float) -> float:
+        """``x`` within [lo, hi], a NaN bound not applied."""
         if not math.isnan(lo):
             x = max(x, lo)
         if not math.isnan(hi):
@@ -133,6 +138,8 @@ class DiffDriveController(Controller):
         self._reset_state()
 
     def _reset_state(self) -> None:
+        """Odometry at the origin, no command, the limiter's history and the velocity windows empty, publishing due
+        at once."""
         self.x = self.y = self.heading = 0.0
         self.v = self.w = 0.0
         self._last_cmd: tuple[Twist, float] | None = None
@@ -157,6 +164,8 @@ class DiffDriveController(Controller):
         return [f"{w}/{kind}" for w in (*self.left, *self.right)]
 
     def on_activate(self, states: dict[str, float], commands: dict[str, float]) -> None:
+        """Going active needs every wheel's feedback state interface; the odometry starts again at the origin and no
+        old command is kept."""
         missing = [s for s in self.state_interfaces() or [] if s not in states]
         if missing:
             raise ControlError(f"controller '{self.name}': the hardware has no state interface {', '.join(missing)}")
@@ -164,6 +173,9 @@ class DiffDriveController(Controller):
         self._cmd = None
 
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
+        """One cycle (see the module docstring): the command while it is fresh (else stop), limited, as wheel
+        speeds; then odometry, the limited command on ``~/cmd_vel_out`` when asked, and ``~/odom`` and TF at
+        their rate."""
         cmd = self._cmd
         if cmd is not None:
             self._cmd = None
@@ -193,6 +205,9 @@ class DiffDriveController(Controller):
     def _odometry(
         self, t: float, dt: float, states: dict[str, float], lin: float, ang: float, sep: float, r_l: float, r_r: float
     ) -> None:
+        """Integrate this cycle's motion into the pose: from the wheels' positions (the travel since the last
+        cycle), their velocities, or the command itself (``open_loop``). The twist published is the mean over the
+        rolling window; the pose integrates each cycle's own motion along its arc."""
         # As ros2_controllers' odometry.cpp (jazzy, Odometry::update/updateFromVelocity): the pose
         # integrates this cycle's displacement; only the published twist is the rolling mean of the
         # last `velocity_rolling_window_size` cycles (integrating the mean lagged the pose by half the
@@ -231,6 +246,8 @@ class DiffDriveController(Controller):
         self.v, self.w = mean_v, mean_w
 
     def _publish(self, t: float) -> None:
+        """At ``publish_rate`` (every cycle when 0): ``~/odom`` with the covariance diagonals, and odom -> base on
+        ``/tf``, each while it has a subscriber."""
         if self.publish_rate > 0:
             if t + 1e-9 < self._next_publish:
                 return
