@@ -76,6 +76,8 @@ def _diag(x: float, y: float, z: float) -> Matrix3:
 
 
 def _box_props(size: Sequence[float], center: Sequence[float] = (0.0, 0.0, 0.0), note: str = "") -> UnitProperties:
+    """A box of edge lengths ``size`` at unit density: volume xyz and the solid box's tensor, (y² + z²)/12 and so on
+    times the volume, about ``center``."""
     x, y, z = (float(s) for s in size)
     v = x * y * z
     inertia = _diag(v * (y * y + z * z) / 12, v * (x * x + z * z) / 12, v * (x * x + y * y) / 12)
@@ -96,6 +98,9 @@ def _cone_props(radius: float, length: float) -> UnitProperties:
 
 
 def _capsule_props(radius: float, length: float) -> UnitProperties:
+    """A capsule (a cylinder of ``length`` with two hemispherical caps of ``radius``) at unit density: the
+    cylinder's and the caps' volumes and moments, the caps' moved to their centres of mass at length/2 + 3r/8
+    from the middle (parallel-axis theorem)."""
     v_cyl = math.pi * radius**2 * length
     v_caps = 4.0 / 3.0 * math.pi * radius**3
     axial = v_cyl * radius**2 / 2 + v_caps * 2 * radius**2 / 5
@@ -106,6 +111,8 @@ def _capsule_props(radius: float, length: float) -> UnitProperties:
 
 
 def _ellipsoid_props(a: float, b: float, c: float) -> UnitProperties:
+    """A solid ellipsoid of semi-axes a, b, c at unit density: volume 4/3·π·abc, moments (b² + c²)/5 and so on times
+    the volume."""
     v = 4.0 / 3.0 * math.pi * a * b * c
     return UnitProperties(
         v, (0.0, 0.0, 0.0), _diag(v * (b * b + c * c) / 5, v * (a * a + c * c) / 5, v * (a * a + b * b) / 5)
@@ -132,6 +139,8 @@ def _read_stl(path: str) -> npt.NDArray[np.float64]:
 
 
 def _read_with_trimesh(path: str) -> npt.NDArray[np.float64]:
+    """A mesh file's triangles (n x 3 x 3 vertices) for the mass-properties integration; an unreadable file is a
+    MeshReadError naming why."""
     try:
         vertices, faces = load_mesh(path)
     except _MeshFileError as err:

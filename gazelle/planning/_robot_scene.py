@@ -132,6 +132,11 @@ class RobotScene:
         joint_limits: Mapping[str, Mapping[str, float]] | None = None,
         seed: int = 0,
     ) -> None:
+        """A planning scene for the robot of ``urdf`` and ``srdf`` in roboplan: the SRDF's groups, states and
+        disabled collision pairs, the URDF's collision meshes (resolved through ``resolve_mesh``, else the
+        resource roots; a mesh not found leaves its geometry out, with a warning), ``joint_limits`` (MoveIt's
+        joint_limits.yaml, over the URDF's), and an allowed collision matrix as MoveIt keeps it. Random draws
+        (RRT, IK restarts) come from ``seed``: a plan repeats."""
         core, rrt, simple_ik, toppra = _rp()
         self._core, self._rrt, self._simple_ik, self._toppra = core, rrt, simple_ik, toppra
         self.warnings: list[str] = []
@@ -282,6 +287,8 @@ class RobotScene:
         return [g.name for g in self.semantics.groups if g.name in self._known_groups]
 
     def group_joints(self, group: str) -> list[str]:
+        """The joints a planning group moves, in roboplan's order; INVALID_GROUP_NAME (MoveIt's code) listing the
+        groups when there is no such group."""
         if group not in self._known_groups:
             known = ", ".join(self.groups) or "none"
             raise PlanningError("INVALID_GROUP_NAME", f"no planning group '{group}' (the SRDF has: {known})")
@@ -669,6 +676,7 @@ class RobotScene:
         self._objects[name] = (dataclasses.replace(obj, pose=pose), geometries)
 
     def has_link(self, link: str) -> bool:
+        """Whether the robot model has a frame (link) of that name."""
         try:
             self.scene.getFrameId(link)
         except Exception:

@@ -83,6 +83,9 @@ class ServoKinematics:
     """The move group's kinematics for servoing: frames, Jacobian and limits of its active joints."""
 
     def __init__(self, scene: RobotScene, group: str) -> None:
+        """The kinematics MoveIt Servo uses for ``group``: its joints, the planning frame (the base of its chain,
+        else the robot's root), the end-effector frame (the group's tip), and the joints' position and velocity
+        limits."""
         self.scene = scene
         self.group = group
         self.joint_names = scene.group_joints(group)  # PlanningError for an unknown group
@@ -120,6 +123,9 @@ class ServoKinematics:
         return self._world_jacobian(q, others) if self._analytic else self.numeric_jacobian(q, others)
 
     def _world_jacobian(self, q: np.ndarray, others: Mapping[str, float] | None) -> np.ndarray:
+        """The group's Jacobian at ``q`` as Servo uses it: rows are the tip's linear and angular velocity expressed
+        in the planning frame, the linear part of the tip's origin (not of the world origin, as the frame
+        Jacobian gives it)."""
         qf = self.full(q, others)
         world = np.asarray(self.scene.scene.computeFrameJacobian(qf, self.ee_frame, False))[:, self._index]
         tip = self.scene.fk(qf, self.ee_frame)[:3, 3]
@@ -157,6 +163,8 @@ class ServoCore:
     """getNextJointState for one move group (see the module docstring)."""
 
     def __init__(self, kinematics: ServoKinematics, settings: ServoSettings) -> None:
+        """The servo loop's arithmetic (MoveIt Servo's, without ROS): the kinematics, the settings, the cycle period
+        and each joint's limit margin (one margin for all joints when one is given)."""
         self.k = kinematics
         self.s = settings
         self.period = settings.publish_period
@@ -168,6 +176,9 @@ class ServoCore:
 
     # ------------------------------------------------------------------ commands to joint deltas
     def joint_jog(self, names: Sequence[str], velocities: Sequence[float]) -> tuple[int, np.ndarray, str]:
+        """A JointJog command as this cycle's joint step: velocities by joint name (names not in the group, a count
+        mismatch or non-finite values are INVALID with MoveIt's messages) times the period, and times
+        ``scale.joint`` for unitless commands."""
         n = len(self.k.joint_names)
         if len(names) != len(velocities):
             return (

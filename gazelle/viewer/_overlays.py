@@ -242,6 +242,8 @@ class ViewerOverlays:
         return list(self._trail)
 
     def _redraw_trail(self, *, force: bool = False) -> None:
+        """Draw the path trail as line segments just above the ground, only when it changed (a new point, or the
+        overlay switched)."""
         pts = self._trail if self._trail_box.value else []
         key = (len(pts), pts[-1] if pts else None)
         if not force and key == self._trail_drawn:
@@ -306,6 +308,8 @@ class ViewerOverlays:
         return self.planned
 
     def _redraw_plan(self) -> None:
+        """Draw the latest planned arm motion: each tool path as blue segments and its goal as axes; only when the
+        plan or the switch changed."""
         shown = bool(self._plan_box.value)
         # by identity: a PlannedPath holds numpy arrays, and == between two of other lengths raised
         # "operands could not be broadcast" on every redraw (issue 27), leaving the old path drawn
@@ -344,6 +348,8 @@ class ViewerOverlays:
         return np.array(d.contact.pos[:n], dtype=np.float32).reshape(n, 3)
 
     def _update_contacts(self) -> np.ndarray | None:
+        """Draw the world's contact points (read on the simulation thread) as red dots while the overlay is on; the
+        points drawn."""
         pts = self.sim.call(self._contacts, timeout=5.0) if self._contact_box.value else None
         if self._contact_handle is not None:
             self._contact_handle.remove()
@@ -415,6 +421,7 @@ class ViewerOverlays:
         return image
 
     def _set_overlays(self) -> None:
+        """Show or hide every entity's link frames and collision shapes as the two switches say, in one update."""
         tf, col = bool(self._tf_box.value), bool(self._col_box.value)
         with self.server.atomic():
             for nodes in self._nodes.values():
