@@ -109,6 +109,8 @@ def is_convex(vertices: np.ndarray, faces: np.ndarray) -> bool:
 
 
 def _key(vertices: np.ndarray, faces: np.ndarray) -> str:
+    """The cache key of a mesh's decomposition: a hash of the decomposition settings' version and the mesh's exact
+    vertices and faces (the same mesh under another file name hits the cache)."""
     h = hashlib.sha256(SETTINGS_VERSION.encode())
     h.update(np.ascontiguousarray(vertices, dtype=np.float64).tobytes())
     h.update(np.ascontiguousarray(faces, dtype=np.int64).tobytes())
@@ -136,6 +138,7 @@ BOUNDS_SLACK = 0.02
 
 
 def _gazelle_version() -> str:
+    """The installed gazelle's version, stored with each cached decomposition ("unknown" for a source tree)."""
     try:
         from importlib.metadata import version
 
@@ -212,6 +215,8 @@ def _implausible(pieces: tuple[np.ndarray, ...], vertices: np.ndarray) -> str | 
 
 
 def _save_disk(path: Path, key: str, pieces: tuple[np.ndarray, ...]) -> None:
+    """Store a decomposition in the owner-only cache folder, atomically (written to a temporary file, then renamed);
+    a folder that is not the user's own, or a read-only home, means no cache, never a failure."""
     if not _private_dir(path.parent):
         return
     tmp = path.with_suffix(f".{os.getpid()}.{threading.get_ident()}.tmp.npz")
@@ -343,6 +348,9 @@ def _in_background(disk: Path, key: str, verts: np.ndarray, faces: np.ndarray, t
 
 
 def _background_loop() -> None:
+    """The background decomposer: meshes queued while the world ran on their convex hulls are decomposed one at a
+    time (bounded in time and memory), and the parts are cached for the next run; the thread ends after a second
+    with nothing queued."""
     while True:
         try:
             disk, key, verts, faces, timeout = _background.get(timeout=1.0)

@@ -47,6 +47,10 @@ class ServoPlan:
         recorded: JointGroup,
         gains: dict[str, np.ndarray],
     ) -> None:
+        """A planned block's servo state for one group of position actuators: per servo, the PID gains, integral and
+        last time; per cycle, the targets, velocity references and path tolerances the controller planned; and
+        what it records per cycle of the ``recorded`` joints (positions, velocities, forces before each step) for
+        the controller to publish afterwards."""
         self.world = actuators.world
         self.entity = servo_joints.entity
         self.actuators = actuators
@@ -82,6 +86,7 @@ class ServoPlan:
         self._struct_key: tuple[int, ...] | None = None
 
     def _resolve(self, world: PhysicsWorld) -> tuple[np.ndarray, ...]:
+        """The actuators' and joints' addresses in the compiled model, as the native loop takes them."""
         act = self.actuators._ids.get(self.world).astype(np.int32)
         sq, sd = (a.astype(np.int32) for a in self.servo_joints._ids.get(self.world))
         rq, rd = (a.astype(np.int32) for a in self.recorded._ids.get(self.world))
@@ -158,6 +163,7 @@ class ServoPlan:
         return self._struct
 
     def _arrays(self) -> tuple[np.ndarray | None, ...]:
+        """The arrays the native servo loop reads and writes, in the order its struct holds them."""
         return (
             self.target,
             self.velref,
@@ -185,6 +191,8 @@ class ServoPlan:
         return state
 
     def __setstate__(self, state: dict[str, object]) -> None:
+        """Restore a plan from a checkpoint: the addresses and the native struct are made again in the rebuilt
+        world."""
         self.__dict__.update(state)
         self._ids = PerGeneration(self._resolve)
         self._struct = None

@@ -148,12 +148,15 @@ class _Subscribed:
     __slots__ = ("_handle", "_refresh", "_until", "_value")
 
     def __init__(self, handle: Any, refresh_sec: float = 0.02):
+        """Whether an rclpy publisher has subscribers, asked again at most every ``refresh_sec`` (the count is a
+        graph query, too slow to ask every step)."""
         self._handle = handle
         self._refresh = refresh_sec
         self._until = -math.inf
         self._value = False
 
     def __call__(self) -> bool:
+        """The publisher's subscriber count is above zero (as of the last refresh)."""
         now = time.monotonic()
         if now >= self._until:
             self._value = self._handle.get_subscription_count() > 0
@@ -188,6 +191,11 @@ class SimulationNode(GazeboServices):
         context: Context | None = None,
         drop_when_behind: bool = False,
     ):
+        """The ``/gazelle`` node that puts ``sim`` on the ROS graph: /clock at ``clock_rate_hz`` of sim time, the
+        gazebo_ros and simulation_interfaces services, a publisher or subscription for every bus endpoint (added
+        as systems declare them), the plugin nodes and controller managers, and the world's geometry for
+        move_group. Publishing goes through the outbox's thread; with ``drop_when_behind`` a full queue drops its
+        oldest message (counted on /gazelle/dropped_messages) instead of pacing the simulation."""
         super().__init__(node_name, context=context)
         self.sim = sim
         self._cb = ReentrantCallbackGroup()
@@ -443,6 +451,7 @@ class SimulationNode(GazeboServices):
             executor.add_node(node)
 
     def _remove_node(self, node: Node) -> None:
+        """Take a plugin or manager node off the executor (its entity was deleted)."""
         with self._lock:
             executor = self._executor
             if node in self._pending_nodes:

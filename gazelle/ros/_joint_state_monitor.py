@@ -31,6 +31,9 @@ class JointStateMonitor:
     its namespace and remappings)."""
 
     def __init__(self, owner: Node, topic: str = "joint_states", *, depth: int = 1000, poll_sec: float = 0.01):
+        """Follow ``topic`` (``/joint_states``) on a side node of ``owner`` without an executor: a thread takes
+        every waiting message at ``poll_sec`` intervals and merges them into the latest position per joint
+        (robots publish their joints in several messages)."""
         resolved = owner.resolve_topic_name(topic)
         self._node = side_node(owner, "joint_state_monitor")
         self._sub = self._node.create_subscription(JointState, resolved, _never_called, QoSProfile(depth=depth))
@@ -52,6 +55,8 @@ class JointStateMonitor:
         return self._positions
 
     def _take_all(self) -> None:
+        """Take every message waiting on the subscription and merge their positions in; a message whose name and
+        position counts differ is dropped and counted, as MoveIt's state monitor does."""
         with self._lock:
             if self._stop.is_set():
                 return
@@ -72,6 +77,7 @@ class JointStateMonitor:
                 self._positions = merged
 
     def _drop_invalid(self, names: int, positions: int) -> None:
+        """Count an invalid message and say so, at most once a second (MoveIt's words)."""
         self.invalid += 1
         self._logger.error(
             f"State monitor received an invalid joint state on {self.topic} ({names} joint names, "
@@ -81,6 +87,7 @@ class JointStateMonitor:
         )
 
     def _poll(self) -> None:
+        """The monitor's thread: take what arrived, until stopped."""
         while not self._stop.wait(self._poll_sec):
             try:
                 self._take_all()

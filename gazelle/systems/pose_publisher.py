@@ -63,6 +63,8 @@ class P3dConfig:
 
 
 def _vec3(cfg: ConfigElement, tag: str, log: logging.Logger) -> tuple[float, float, float]:
+    """``<tag>`` as three numbers (``<xyz_offsets>``, ``<rpy_offsets>``); 0 0 0 when absent, and with a warning
+    naming the text when it is not three numbers."""
     raw = child_text(cfg, tag)
     if not raw:
         return (0.0, 0.0, 0.0)
@@ -106,6 +108,7 @@ class P3D(System):
     plugin_files = ("gazebo_ros_p3d",)
 
     def __init__(self, seed: int | None = None) -> None:
+        """An unconfigured gazebo_ros_p3d (see :meth:`configure`); ``seed`` seeds its Gaussian noise."""
         self.config = P3dConfig()
         self._pub: Endpoint | None = None
         self._entity = ""
@@ -121,6 +124,9 @@ class P3D(System):
         self._rng = random.Random(seed)
 
     def configure(self, ctx: SystemContext) -> None:
+        """Read the plugin block: ``<body_name>`` (required; a link of the model), ``<frame_name>`` (world, or
+        another link the pose is expressed in; an unknown one falls back to world with a warning, as the plugin
+        does), the offsets, the rate and the noise; advertise the Odometry topic."""
         log = ctx.logger
         self.config = c = parse_config(ctx, log)
         model = ctx.entity.model
@@ -172,6 +178,9 @@ class P3D(System):
         return pose, Twist(lin, ang)
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """At ``<update_rate>``, while anyone listens: the body's ground-truth pose and twist (with the offsets, in
+        the reference frame), Gaussian noise of ``<gaussian_noise>`` stddev on position and velocities (not on
+        the orientation, as gazebo_ros_p3d), and its variance on the covariance diagonals."""
         if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.config.update_rate):
             return
         if not self._pub.wanted:
