@@ -37,6 +37,7 @@ def _model_counts(model: Model) -> tuple[int, int, int, int]:
 
 
 def _semantics_summary(sem: Semantics) -> str:
+    """What an SRDF holds, counted (``gazelle check``'s one line for it)."""
     return ", ".join(
         [
             _plural(len(sem.groups), "group"),
@@ -77,6 +78,7 @@ def summarize(value: object) -> str:
 
 
 def _tally(diagnostics: Iterable[Diagnostic]) -> tuple[int, int]:
+    """(errors, warnings) among ``diagnostics``."""
     errors = warnings = 0
     for d in diagnostics:
         if d.severity is Severity.ERROR:
@@ -99,12 +101,16 @@ class _PluginLogs(logging.Handler):
     """Collects what plugins log while they are configured, as diagnostics at the plugin's file:line."""
 
     def __init__(self, locations: dict[str, SourceLocation | None], strict: bool) -> None:
+        """Collect the warnings and errors the plugins' loggers print while ``gazelle check`` configures them, each
+        located at its plugin's file:line (``strict``: as errors)."""
         super().__init__(logging.WARNING)
         self.locations = locations
         self.strict = strict
         self.found: list[Diagnostic] = []
 
     def emit(self, record: logging.LogRecord) -> None:
+        """A plugin's log line as a diagnostic at the plugin's location (the simulation's own lines are left out:
+        the audit reports the same, located)."""
         if record.name not in self.locations:
             return  # the simulation's own lines (the audit below says the same, located)
         error = record.levelno >= logging.ERROR or self.strict

@@ -179,6 +179,8 @@ class EntityQueries:
     sim: Simulation
 
     def _frame_pose(self, frame: str, field_name: str) -> Pose:
+        """The world pose of a request's reference frame (an entity, or ``entity::link``); RESULT_OPERATION_FAILED
+        naming the request field when there is no such frame."""
         try:
             return self.sim.call(lambda: self.sim.world.frame_pose(frame))
         except WorldError:
@@ -187,6 +189,8 @@ class EntityQueries:
             ) from None
 
     def _compile_filters(self, filters: Any) -> tuple[str | None, set[int]]:
+        """A request's EntityFilters as (name pattern, categories): tags and bounds are refused as unsupported
+        features (gazelle has neither), and the pattern is checked before it runs (see :func:`_check_filter`)."""
         if filters.tags.tags:
             raise _Refused(
                 Result.RESULT_FEATURE_UNSUPPORTED, "entity tags are not supported (filters.tags must be empty)"

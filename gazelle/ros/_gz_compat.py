@@ -203,6 +203,8 @@ class _TypeRelays:
     the entry's direction, as the bridge would."""
 
     def __init__(self, node: Any, entries: list[BridgeEntry], qos: Any, keep: list[Any]) -> None:
+        """Relays for ros_gz_bridge YAML entries whose ROS type differs from the one gazelle publishes (the YAML's
+        ``ros_type_name`` is what the user's nodes expect); checked every 0.5 s until every topic has appeared."""
         self.node, self.pending, self.qos, self.keep = node, list(entries), qos, keep
         self._out: Any = None
         self.timer = node.create_timer(0.5, self.check)
@@ -240,6 +242,9 @@ class _TypeRelays:
         return sorted(kinds)[0] if kinds else None
 
     def check(self) -> None:
+        """For each entry not yet settled: once gazelle's topic exists, nothing to do when its type is the YAML's;
+        else a relay that converts field by field (between compatible types), or an error naming both types when
+        they cannot be converted."""
         for e in list(self.pending):
             name = e.ros_name if e.ros_name.startswith("/") else f"/{e.ros_name}"
             wanted = e.ros_type if e.ros_type.count("/") == 2 else e.ros_type.replace("/", "/msg/", 1)

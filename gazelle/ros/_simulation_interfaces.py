@@ -149,6 +149,9 @@ class SimulationInterfaces(EntityQueries):
     """The services and action, bound to one :class:`SimulationNode`."""
 
     def __init__(self, node: SimulationNode, resolver: ResourceResolver | None = None):
+        """The simulation_interfaces (ROS 2's standard simulator API) services under the node's ``~/``, each guarded
+        so that bad input gets a result code and a message, never a dead server; StepSimulation on a service of
+        its own; the SimulateSteps action; and a diverged entity reported on /rosout."""
         self.node = node
         self.sim = node.sim
         self.resolver = resolver or ResourceResolver(extra_paths=builtin_resource_paths())
@@ -332,6 +335,9 @@ class SimulationInterfaces(EntityQueries):
         return res
 
     def _simulate_steps(self, goal_handle: Any) -> Any:
+        """SimulateSteps: the requested steps in chunks, feedback at most every :data:`FEEDBACK_PERIOD_SEC` and at
+        the end; a cancel ends it after the chunk in progress; a simulation that is not paused (someone pressed
+        play) or fails aborts it with the steps done so far."""
         steps = goal_handle.request.steps
         result = SimulateSteps.Result()
         try:

@@ -29,6 +29,7 @@ class _Colors:
     """ros2controlcli's ``bcolors``: ANSI colours on a terminal, none when piped (what scripts parse)."""
 
     def __init__(self, on: bool) -> None:
+        """ros2controlcli's terminal colours, or empty strings when output is not a terminal."""
         codes = {"ok_green": "\033[92m", "ok_cyan": "\033[96m", "ok_blue": "\033[94m", "warning": "\033[93m"}
         codes.update(fail="\033[91m", end="\033[0m")
         for k, v in codes.items():
@@ -101,12 +102,16 @@ class _Manager:
     """Calls to one controller manager's services, each waiting for the service and the reply."""
 
     def __init__(self, node: Any, args: argparse.Namespace) -> None:
+        """The controller manager a ``ros2 control`` verb talks to (``-c``, default ``/controller_manager``), with
+        the verb's service timeout."""
         self.node = node
         name = args.controller_manager
         self.prefix = name if name.startswith("/") else f"/{name}"
         self.timeout = args.service_timeout
 
     def call(self, srv_type: Any, service: str, **fields: Any) -> Any:
+        """Call one of the manager's services with ``fields`` set on the request; a manager that is not there, or
+        does not reply within the timeout, is a ControlError in ros2controlcli's words."""
         name = f"{self.prefix.rstrip('/')}/{service}"
         client = self.node.create_client(srv_type, name)
         if not client.wait_for_service(timeout_sec=self.timeout):
