@@ -87,6 +87,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _fail(node: Node | None, message: str) -> int:
+    """Say an error as spawn_entity.py does (on the node's logger, else on stderr) and return exit code 1."""
     if node is not None:
         node.get_logger().error(message)
     else:
@@ -95,6 +96,7 @@ def _fail(node: Node | None, message: str) -> int:
 
 
 def _read_topic(node: Node, executor: SingleThreadedExecutor, topic: str, timeout: float) -> str | None:
+    """The latched string on ``topic`` (a robot_description), or None when none arrives within ``timeout``."""
     got: list[str] = []
     qos = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
 
@@ -348,6 +350,10 @@ def _give_params_files(node: Node, executor: SingleThreadedExecutor, args: argpa
 def _run(
     node: Node, executor: SingleThreadedExecutor, args: argparse.Namespace, timeout: float, file_xml: str | None
 ) -> int:
+    """spawn_entity.py's work: the entity's XML (a file, a topic, a parameter, or stdin), adapted as asked
+    (``-package_to_model``, gazelle's robot_state_publisher off when the user runs their own), sent to
+    ``<gazebo_namespace>/spawn_entity`` with the requested pose; then the controllers' parameter files,
+    ``-unpause`` and ``-bond`` as the original does. The exit code is the script's."""
     log = node.get_logger()
     log.info("Spawn Entity started")
     xml = file_xml if file_xml is not None else _entity_xml(node, executor, args, timeout)

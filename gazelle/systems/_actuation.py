@@ -98,6 +98,8 @@ class VelocityServo:
     def __init__(
         self, actuator: ActuatorHandle, integral_limit: float, integral_time: float = INTEGRAL_TIME_SEC
     ) -> None:
+        """A velocity servo on ``actuator``, its integral bounded by ``integral_limit`` (rad/s or m/s) and built up
+        over ``integral_time``."""
         self.actuator = actuator
         self.integral_limit = integral_limit
         self.integral_time = integral_time
@@ -163,6 +165,7 @@ class PositionServo:
     __slots__ = ("actuator", "gains", "integral", "_last")
 
     def __init__(self, actuator: ActuatorHandle, gains: PidGains) -> None:
+        """A position servo on ``actuator`` with ``gains``; no integral yet."""
         self.actuator = actuator
         self.gains = gains
         self.integral = 0.0

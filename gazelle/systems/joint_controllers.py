@@ -35,6 +35,8 @@ between updates the servos run inside MuJoCo. (``use_velocity_commands`` runs ev
 
 
 def _check_joint(ctx: SystemContext, joint: str, log: logging.Logger) -> bool:
+    """Whether ``joint`` exists and moves (revolute, continuous or prismatic); else an error naming it, and that
+    joint is left out."""
     try:
         j = ctx.entity.model.joint(joint)
     except KeyError:
@@ -56,6 +58,7 @@ class _Command:
     """Whether the control law needs Python every physics step."""
 
     def __init__(self, joint: str, servo: PositionServo | VelocityServo, target: float) -> None:
+        """A joint's servo and its target, starting at ``target`` (restored on a world reset)."""
         self.joint = joint
         self.servo = servo
         self.target = target
@@ -325,6 +328,7 @@ class JointCommands(_Controlled):
     plugin_files = ("gazelle_joint_commands",)
 
     def __init__(self) -> None:
+        """An unconfigured JointCommands (see :meth:`configure`)."""
         super().__init__()
         self.config = JointCommandsConfig()
         self.servos: dict[str, _Command] = {}

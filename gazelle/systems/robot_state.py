@@ -101,6 +101,7 @@ class RobotStatePublisher(System):
     """What robot_state_publisher does, from the simulated state instead of /joint_states."""
 
     def __init__(self, config: RobotStateConfig | None = None) -> None:
+        """An unconfigured robot_state_publisher (see :meth:`configure`)."""
         self.config = config or RobotStateConfig()
         self.prefix = ""
         self._moving: list[_MovingJoint] = []
@@ -201,6 +202,8 @@ class JointStatePublisher(System):
     plugin_files = ("gazebo_ros_joint_state_publisher",)
 
     def __init__(self, *, all_by_default: bool = False) -> None:
+        """An unconfigured joint state publisher; ``all_by_default``: with no ``<joint_name>``, every joint that
+        moves (gz-sim's JointStatePublisher); else no ``<joint_name>`` is gazebo_ros's error."""
         self.all_by_default = all_by_default
         self.config = JointStateConfig()
         self._pub: Endpoint | None = None

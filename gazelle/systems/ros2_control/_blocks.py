@@ -46,6 +46,7 @@ class PlannedBlocks:
     """One controller manager's planned blocks of cycles (see the module docstring)."""
 
     def __init__(self, cm: ControllerManager) -> None:
+        """The planned blocks of one controller manager; none runs yet."""
         self.cm = cm
         self.block: _Block | None = None
         """The planned block running, if any."""
@@ -152,6 +153,8 @@ class PlannedBlocks:
         self._publish(block, plan.cursor)
 
     def _publish(self, block: _Block, upto: int) -> None:
+        """Publish the joint state broadcasters' messages of a block's cycles ``[block.published, upto)``, from the
+        states the plan recorded before each step, at each broadcaster's own rate."""
         hw = self.cm.hardware[0]
         plan = hw.block
         assert plan is not None

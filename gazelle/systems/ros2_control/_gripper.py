@@ -48,6 +48,9 @@ class GripperActionController(Controller):
     interface = "position"
 
     def on_configure(self) -> None:
+        """Read Jazzy's parameters (``joint``, ``goal_tolerance``, ``max_effort``, ``allow_stalling``,
+        ``stall_velocity_threshold``, ``stall_timeout``, and ``gains.<joint>`` for the effort variant) and
+        announce the ``~/gripper_cmd`` action."""
         self.joint = self.param("joint", "", str)
         if not self.joint:
             raise ControlError(f"controller '{self.name}': 'joint' is not set")
@@ -86,6 +89,7 @@ class GripperActionController(Controller):
         goal.finish(GoalState.CANCELED)
 
     def on_activate(self, states: dict[str, float], commands: dict[str, float]) -> None:
+        """Going active: hold the finger where it is, with no goal and a fresh integral."""
         self._target = states[f"{self.joint}/position"]
         self._goal = None
         self._integral = 0.0
@@ -97,6 +101,9 @@ class GripperActionController(Controller):
         self._goal = None
 
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
+        """One cycle: take a new goal (aborting the one it replaces), command its position (or the PID's effort,
+        bounded by the goal's ``max_effort``), feed back position and effort, and end the goal when the finger is
+        within ``goal_tolerance`` or has stalled (see the module docstring)."""
         q, v = states[f"{self.joint}/position"], states[f"{self.joint}/velocity"]
         with self._lock:
             incoming, self._incoming = self._incoming, None

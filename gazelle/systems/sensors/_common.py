@@ -346,6 +346,7 @@ class _SensorSystem(System):
     :class:`DeclaredMessage` of its own module)."""
 
     def __init__(self, seed: int | None = None) -> None:
+        """An unconfigured sensor: no link yet, a rate gate and its own random stream (``seed``)."""
         self.sensor: Sensor | None = None
         self.link = ""
         self.offset = Pose()
@@ -372,6 +373,8 @@ class _SensorSystem(System):
         return {"update_rate": self._set_rate}
 
     def _set_rate(self, value: ParamValue) -> str | None:
+        """``ros2 param set <plugin node> update_rate``: a number of Hz >= 0 no faster than the physics step,
+        applied from the next step; the refusal's reason otherwise."""
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not value >= 0 or not math.isfinite(value):
             return f"must be a number >= 0 (Hz; 0: every step), got {value!r}"
         step = self._step_sec

@@ -90,6 +90,8 @@ class LidarSpec:
 
 
 def _axis(el: ConfigElement | None, log: logging.Logger, default: ScanAxis) -> ScanAxis:
+    """One ``<scan>`` axis (``<horizontal>`` or ``<vertical>``), its values read with warnings, ``default`` where
+    the block says nothing."""
     if el is None:
         return default
     return ScanAxis(
@@ -149,6 +151,7 @@ class Lidar(_SensorSystem):
     kind = "lidar"
 
     def __init__(self, seed: int | None = None) -> None:
+        """An unconfigured lidar (see :meth:`configure`); ``seed`` seeds its range noise."""
         super().__init__(seed)
         self.spec = LidarSpec()
         self._dirs = np.zeros((0, 3))
