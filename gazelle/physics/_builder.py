@@ -93,6 +93,10 @@ def friction_priority(mu: float) -> int:
 
 
 def _surface_friction(col: Collision) -> list[float]:
+    """MuJoCo's friction triple (sliding, torsional, rolling) of a collision: sliding is ODE's ``<mu>`` (1 by
+    default, as SDF's), or the smaller of ``<mu>`` and ``<mu2>`` when both are given, since MuJoCo's sliding
+    friction is isotropic; torsional is ``<torsional><coefficient>`` (a small default keeps a wheel from spinning
+    in place on a point contact); a frictionless surface gets none of the three."""
     s = col.surface
     mu = s.mu if s.mu is not None else 1.0
     if s.mu2 is not None:
@@ -248,6 +252,10 @@ def add_geom(
     rgba: tuple[float, float, float, float] | None = None,
     moving: bool = True,
 ) -> None:
+    """Add a collision as geoms of ``body``: a primitive as itself, a plane rotated to its normal, a cone as a mesh,
+    a mesh as its convex hull or, when it is far from convex, its convex parts (one geom each, decomposed or read
+    from the cache); with its friction, contact stiffness (from ``<kp>`` and ``mass_hint``) and collide bitmask.
+    A mesh that cannot be read adds nothing (the description warned)."""
     g = col.geometry
     piece_names: list[str] = []
     """MuJoCo meshes of a non-convex mesh's convex parts (one geom each); empty otherwise."""

@@ -51,6 +51,8 @@ class OffscreenRenderer:
     """Renders colour (uint8 H x W x 3) and depth (float32 metres, H x W) images of a world."""
 
     def __init__(self, world, width: int, height: int) -> None:
+        """A renderer of ``width`` x ``height`` images of ``world`` (visual geoms, and the collision shapes of
+        entities without visuals); the GL context is made at the first render, on the thread that renders."""
         if width < 1 or height < 1:
             raise ValueError(f"image size must be positive, got {width}x{height}")
         self.world = world
@@ -69,6 +71,8 @@ class OffscreenRenderer:
         self._depth = np.empty((height, width), dtype=np.float32)
 
     def _ensure(self) -> None:
+        """A current GL context, and MuJoCo's scene and rendering context for the world's current model (made again
+        after a recompile: a spawn or a delete), with shadows off."""
         if self._gl is None:
             self._gl = _gl_context(self.width, self.height)
         self._gl.make_current()

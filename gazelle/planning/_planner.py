@@ -97,6 +97,10 @@ class ArmPlanner(RobotScene):
         timeout: float,
         avoid_collisions: bool,
     ) -> np.ndarray:
+        """Joint values of ``group`` that put ``link`` at ``goal`` (roboplan's SimpleIk with restarts, within
+        ``timeout``), the joints outside the group kept at ``start_full``. With ``avoid_collisions``, a solution
+        in collision is not returned: the search goes on from a random start until the time runs out
+        (NO_IK_SOLUTION, MoveIt's code)."""
         idx = self._group_index(joints)
         deadline = time.monotonic() + timeout
         failed = PlanningError("NO_IK_SOLUTION", f"no joint values of '{group}' put '{link}' at the goal pose")
@@ -283,6 +287,7 @@ class ArmPlanner(RobotScene):
         return poses
 
     def _group_config(self, group: str, joints: Sequence[str], q_full: np.ndarray):
+        """A roboplan JointConfiguration of ``joints``, their values taken from a full-robot vector."""
         config = self._core.JointConfiguration()
         config.joint_names = list(joints)
         config.positions = np.asarray(q_full, dtype=float)[self._group_index(joints)]

@@ -73,6 +73,8 @@ class _Client:
     reads it in the manager's log)."""
 
     def __init__(self, node: Node, executor: SingleThreadedExecutor, manager: str, timeout: float) -> None:
+        """The spawner's client of one controller manager, listening on /rosout for the manager's ERROR lines so a
+        refusal can say why, as ros2_control's spawner prints it."""
         self.node, self.executor, self.manager, self.timeout = node, executor, manager, timeout
         self.errors: list[str] = []
         """The manager's ERROR lines on /rosout (why it refused a request)."""
@@ -98,6 +100,8 @@ class _Client:
         return f"the reason is in {self.manager}'s log"
 
     def call(self, srv_type: Any, name: str, request: Any) -> Any:
+        """Call the manager's service ``name``; a manager that is not there or does not answer within the timeout is
+        a RuntimeError naming the service."""
         client = self.node.create_client(srv_type, f"{self.manager}/{name}")
         try:
             if not client.wait_for_service(timeout_sec=self.timeout):

@@ -65,6 +65,8 @@ class ServerRegistry:
     """Announces this server and notices others on the same domain (see the module docstring)."""
 
     def __init__(self, node: Any) -> None:
+        """Announce this server on the domain (latched: start time, host, pid) and listen for others: two ``gazelle
+        sim`` on one domain would both answer every spawn."""
         self.me = ServerId(time.time(), socket.gethostname(), os.getpid())
         self.conflict: str | None = None
         """Set when an older server serves this domain: why this one must stop."""
@@ -79,6 +81,8 @@ class ServerRegistry:
         )
 
     def _on_announce(self, msg: String) -> None:
+        """Another server's announcement: the older one keeps the domain; this one, if it is the newer, records why
+        it must stop (and says so); else it warns that the newer one was told to stop."""
         try:
             data = json.loads(msg.data)
             other = ServerId(float(data["started"]), str(data["host"]), int(data["pid"]))

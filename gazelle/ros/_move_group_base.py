@@ -224,6 +224,7 @@ class _MoveGroupBase(Node):
 
     # ------------------------------------------------------------------ messages
     def _robot_state(self, q: np.ndarray) -> RobotState:
+        """moveit_msgs/RobotState of the planner's joints at ``q``."""
         assert self.planner is not None
         state = RobotState()
         state.joint_state.name = list(self.planner.joint_names)
@@ -231,6 +232,8 @@ class _MoveGroupBase(Node):
         return state
 
     def _robot_trajectory(self, traj: Trajectory) -> RobotTrajectory:
+        """A planned trajectory as moveit_msgs/RobotTrajectory: its joint names and timed points, in the planning
+        frame."""
         out = RobotTrajectory()
         jt = out.joint_trajectory
         jt.header.frame_id = self.planner.root_link if self.planner else ""

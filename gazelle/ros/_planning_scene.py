@@ -83,6 +83,8 @@ def checked_matrix(p: Pose, what: str) -> np.ndarray:
 
 
 def _checked_dimensions(kind: str, dims: list[float], what: str) -> tuple[float, ...]:
+    """A shape's dimensions as MoveIt's SolidPrimitive gives them (box 3, sphere 1, cylinder 2), each
+    positive, finite and no larger than :data:`MAX_COORDINATE_M`; a PlanningError naming the object otherwise."""
     need = _DIMENSIONS[kind]
     if len(dims) < need:
         raise PlanningError("FAILURE", f"{what}: a {kind} needs {need} dimension(s), got {len(dims)}")
@@ -170,6 +172,8 @@ def to_message(obj: SceneObject, frame: str) -> CollisionObject:
 
 
 def attached_message(obj: SceneObject) -> AttachedCollisionObject:
+    """An object attached to the robot as moveit_msgs/AttachedCollisionObject: the link, its shapes in that link's
+    frame, and the links it may touch."""
     aco = AttachedCollisionObject()
     aco.link_name = obj.link
     aco.object = to_message(obj, obj.link)

@@ -28,6 +28,8 @@ class PluginNodes:
     """The plugin nodes of one bridge, reference-counted by fully qualified name."""
 
     def __init__(self, sim: Simulation, context: Context, add: Callable[[Node], None], remove: Callable[[Node], None]):
+        """The ROS nodes of gazebo_ros plugins (``/differential_drive``, a camera's node), made and removed as the
+        bus declares them; ``add``/``remove`` put them on and take them off the bridge's executor."""
         self.sim = sim
         self.context = context
         self._add, self._remove = add, remove
@@ -82,6 +84,8 @@ class PluginNodes:
             node.add_on_set_parameters_callback(lambda params: self._set(plugin, params))
 
     def _set(self, plugin: PluginNode, params: list[Any]) -> SetParametersResult:
+        """``ros2 param set`` on a plugin node: each settable parameter is applied on the simulation thread by the
+        system's setter; the first refusal (its reason) fails the whole request, as rclpy's callbacks do."""
         for p in params:
             setter = plugin.settable.get(p.name)
             if setter is None:

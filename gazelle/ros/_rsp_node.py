@@ -45,6 +45,7 @@ def joint_motion(joint: Joint, q: float) -> Pose:
 
 
 def _tf(stamp, parent: str, child: str, pose: Pose) -> TransformStamped:
+    """A TransformStamped of ``child`` in ``parent`` at ``pose`` (wxyz reordered into the message's x, y, z, w)."""
     t = TransformStamped()
     t.header.stamp = stamp
     t.header.frame_id = parent
@@ -100,6 +101,10 @@ class RobotStatePublisherNode(Node):
         self.create_subscription(JointState, "joint_states", self._on_joint_states, 10)
 
     def _on_joint_states(self, msg: JointState) -> None:
+        """robot_state_publisher's joint state callback (Jazzy's, 3.3.3): an invalid message is refused with its log
+        line; at most ``publish_frequency`` times a second, each moving joint's transform at its position,
+        stamped with the message's stamp (now when it has none, or with ``ignore_timestamp``). Unknown joints and
+        non-finite positions are skipped."""
         # a message whose names and positions differ in count is ignored with a log line, before anything
         # else (robot_state_publisher 3.3.3, Jazzy's: src/robot_state_publisher.cpp, callbackJointState)
         if len(msg.name) != len(msg.position):

@@ -26,6 +26,8 @@ class SteppingService:
     with one service, 5.4 ms with 50 services and 50 subscriptions beside it."""
 
     def __init__(self, node: Node, handler: Callable[[Any, Any], Any]) -> None:
+        """StepSimulation on a side node with an executor and thread of its own: a request blocks its thread while
+        the world steps, so the node's other services keep answering meanwhile."""
         self.name = node.resolve_service_name("~/step_simulation")
         self.node = side_node(node, "stepping")
         self.service = serve(self.node, StepSimulation, self.name, handler, None)
@@ -43,6 +45,8 @@ class SteppingService:
         return self._thread.is_alive()
 
     def _spin(self) -> None:
+        """The service's thread; if rclpy's executor itself dies (a handler's errors are replies), the failure is
+        kept and the bridge reports itself not alive."""
         err = spin_until_stopped(self.executor, self.node.context, self._stopping)
         if err is not None:  # the handler's own errors are replies (guarded_service): this is rclpy's
             self.failure = err
