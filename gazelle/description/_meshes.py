@@ -32,6 +32,8 @@ def load_trimesh_in_metres(path: str):  # -> trimesh.Trimesh (trimesh is importe
 
 @functools.lru_cache(maxsize=256)
 def _load(path: str, mtime_ns: int) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int32]]:
+    """A mesh file's vertices (metres, whatever the file's unit) and triangles, read once per file version
+    (``mtime_ns``) and kept read-only; an unreadable or empty mesh is a MeshReadError naming the file."""
     del mtime_ns  # cache key only
     try:
         mesh = load_trimesh_in_metres(path)
@@ -76,6 +78,9 @@ class MeshLook:
 
 @functools.lru_cache(maxsize=64)
 def _look(path: str, mtime_ns: int) -> MeshLook:
+    """What a mesh file says about its own appearance: its material's base colour, or its texture image with the
+    vertices' UV coordinates (images shrunk to :data:`MAX_TEXTURE_PX`); an empty look when the file has neither
+    or cannot be read."""
     del mtime_ns  # cache key only
     try:
         mesh = load_trimesh_in_metres(path)

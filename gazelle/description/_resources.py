@@ -186,6 +186,9 @@ class ResourceResolver:
 
 @functools.lru_cache(maxsize=8)
 def _exports(prefixes: str, stamp: tuple[float, ...]) -> tuple[Path, ...]:
+    """The Gazebo model folders that the ament packages under ``prefixes`` export (their package.xml's
+    ``<export><gazebo_ros gazebo_model_path=...>``), in index order, each once; ``stamp`` (the index folders'
+    times) invalidates the cache."""
     out: list[Path] = []
     for prefix in _split(prefixes):
         index = prefix / "share" / "ament_index" / "resource_index" / "packages"
@@ -248,6 +251,9 @@ def packages_by_name(folder: Path) -> dict[str, Path]:
 
 @functools.lru_cache(maxsize=32)
 def _scan_packages(folder: str, _stamp: float) -> dict[str, Path]:
+    """The ROS packages under ``folder`` by their package.xml name (not their folder's), as colcon and ``$(find)``
+    know them: a walk that stops descending at a package, skips hidden folders, and is bounded in depth and
+    folders so a resource path pointed at a home folder stays quick; ``_stamp`` invalidates the cache."""
     found: dict[str, Path] = {}
     seen = 0
     for root, dirs, files in os.walk(folder, followlinks=False):

@@ -49,6 +49,8 @@ class Scope:
     """Resolves frame names of one model or world scope."""
 
     def __init__(self, root: str, sink: DiagnosticSink, canonical: str | None = None) -> None:
+        """An SDF frame graph's scope (a model's ``__model__`` or the ``world``), its frames added as the loader
+        reads them and resolved on demand."""
         self.root = root
         """``__model__`` or ``world``: the scope's own frame."""
         self.sink = sink
@@ -62,6 +64,8 @@ class Scope:
         self._reported: set[tuple[str, str]] = set()
 
     def _error(self, code: ErrorCode, message: str, location: SourceLocation | None) -> None:
+        """Report a frame-graph problem once (the poses and attached links of one name fail for the same reason),
+        and not at all while a probe resolves quietly."""
         # Each problem once: poses and attached links of one name fail for the same reason.
         key = (code.value, message)
         if self._quiet or key in self._reported:

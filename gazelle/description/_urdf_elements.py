@@ -534,6 +534,8 @@ class ElementReader:
         return self._gazebo_text(parent, tag, parse_bool)
 
     def _gazebo_text(self, parent: etree._Element, tag: str, parse: Callable[[str | None], T | None]) -> T | None:
+        """The parsed text of a ``<gazebo>`` block's child ``tag`` (None when absent; a VALUE_INVALID error naming
+        the text when ``parse`` refuses it)."""
         el = parent.find(tag)
         if el is None:
             return None
@@ -545,6 +547,7 @@ class ElementReader:
 
 
 def _is_file(path: Path) -> bool:
+    """Whether ``path`` is a regular file (False for a path the OS refuses to look at: too long, a NUL byte)."""
     try:
         return path.is_file()
     except (OSError, ValueError):

@@ -46,6 +46,8 @@ def _find_launch_file(package: str, name: str) -> str:
 
 
 def main(argv: list[str]) -> int:
+    """``ros2 launch <package> <file> [name:=value ...]`` (or a launch file's path), with ros2launch's options: the
+    launch file found in the package's share folder, its arguments checked against those it declares, then run."""
     p = argparse.ArgumentParser(prog="ros2 launch", description="Run a launch file")
     p.add_argument("-n", "--noninteractive", action="store_true")
     p.add_argument("-d", "--debug", action="store_true", help="Put the launch system in debug mode")
@@ -113,6 +115,10 @@ def run_launch_file(
     show_args: bool = False,
     print_description: bool = False,
 ) -> int:
+    """Run a Python launch file as ros2launch does: its declared arguments shown (``--show-args``) or its entities
+    printed (``--print``), else a launch argument it does not declare is an error listing those it does, and the
+    launch service runs it with the arguments and ``current_launch_file_path``/``_directory`` set. XML and YAML
+    launch files are refused with a clear error (not supported yet)."""
     from launch import LaunchService
     from launch.logging import log
 
