@@ -92,6 +92,8 @@ class Settler:
     node's reader a few microseconds after the test's own, so one idle look could come before its wake-up."""
 
     def __init__(self, timeout: float) -> None:
+        """A settler that waits, after each chunk of stepped time, at most ``timeout`` seconds of wall time for the
+        processes of the groups it is given to go idle (0: it does not wait)."""
         self.timeout = timeout
         self.ignored: set[int] = set()
         self._groups: tuple[int, ...] = ()

@@ -295,6 +295,8 @@ class Sim:
             raise SimError(f"the simulation server exited with {self.server.popen.returncode}:\n{self.server.tail()}")
 
     def _step(self, steps: int, wall_timeout: float) -> None:
+        """Step the server by ``steps`` through StepSimulation, waiting at most ``wall_timeout`` seconds of wall
+        time; a server that died, hung or refused (it was not paused) is a SimError saying which."""
         self._check_server()
         req = self._step_srv.Request()
         req.steps = steps

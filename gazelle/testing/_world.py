@@ -47,6 +47,8 @@ class InProcessWorld:
     """
 
     def __init__(self, world: str | os.PathLike[str] | None = None, *, seed: int = 0) -> None:
+        """A world without ROS for a unit-level robot test: ``world`` (a file; None: the default world) in a
+        Simulation that does not pace itself, its noise seeded with ``seed``."""
         from ..description import World, load
         from ..sim import Simulation
         from ..worlds import default_world

@@ -39,6 +39,8 @@ def rgba_to_rgb255(rgba: tuple[float, float, float, float] | None) -> tuple[int,
 
 @lru_cache(maxsize=256)
 def _load_mesh_file(path: str) -> trimesh.Trimesh:
+    """A mesh file as one trimesh mesh in metres (a COLLADA file's own unit applied, as the physics reads it); a
+    file without triangles is a ValueError."""
     loaded = load_trimesh_in_metres(path)  # the unit a COLLADA file declares, as the physics
     if not isinstance(loaded, trimesh.Trimesh) or len(loaded.faces) == 0:
         raise ValueError("no triangles in the file")

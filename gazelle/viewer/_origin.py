@@ -99,6 +99,8 @@ _original_serve = ws_server.serve
 
 
 def _serve(*args: Any, process_request: Any = None, **kwargs: Any) -> Any:
+    """viser's call of ``websockets.serve``, with the viewer's origin check put in front of viser's own request
+    handling while the viewer being started has a policy (``_pending``): a refused handshake never reaches viser."""
     policy = _pending
     if policy is None:
         return _original_serve(*args, process_request=process_request, **kwargs)
