@@ -44,7 +44,7 @@ def _config_sdf(folder: Path) -> Path | None:
 
 def _files_in(folder: Path) -> list[Path]:
     """The model files of one folder of a resource path: a Gazebo model folder's SDF (from its model.config), else
-    its URDF, xacro and SDF files."""
+    its URDF and SDF files."""
     if (folder / "model.config").is_file():
         sdf = _config_sdf(folder)
         return [sdf] if sdf is not None else []
