@@ -585,6 +585,7 @@ class _Parts(_Reader):
                 axes.append(None)
                 continue
             axes.append(self.axis(name, axis_el, doc, scope, X_MJ))
+        # SDF's default axis is z, but a joint that moves without an <axis> is usually a slip: said, not silent
         if jtype in _AXIS_JOINTS and _find(element, "axis") is None:
             self.sink.warning(ErrorCode.ELEMENT_MISSING, f"joint '{name}' ({raw_type}) has no <axis>; using 0 0 1", loc)
             axes[0] = (JointAxis((0.0, 0.0, 1.0)), None)
@@ -608,6 +609,10 @@ class _Parts(_Reader):
         xyz_el = _find(element, "xyz")
         loc = self.loc(xyz_el if xyz_el is not None else element, doc)
         xyz = self.vec3(element, "xyz", (0.0, 0.0, 1.0), doc)
+        # Which frame <xyz> is in changed with the versions (sdformat's "specify_pose" and "pose frame
+        # semantics" proposals): up to 1.4 the model frame; 1.5 and 1.6 the joint frame unless
+        # <use_parent_model_frame>; from 1.7 the joint frame unless <xyz expressed_in="...">. Whatever the
+        # file says, the typed model keeps the axis in the joint frame.
         expressed_in = None
         if doc.version <= (1, 4):
             expressed_in = "__model__"
@@ -626,11 +631,12 @@ class _Parts(_Reader):
             self.sink.error(ErrorCode.JOINT_AXIS_INVALID, f"joint '{joint}': axis xyz has zero length", loc)
             norm = 1.0
             xyz = (0.0, 0.0, 1.0)
-        xyz = (xyz[0] / norm, xyz[1] / norm, xyz[2] / norm)
+        xyz = (xyz[0] / norm, xyz[1] / norm, xyz[2] / norm)  # SDF allows any length: the direction is what counts
         limit_el = _find(element, "limit")
         limit = JointLimit()
         if limit_el is not None:
             self.check(limit_el, doc, "limit")
+            # SDF's defaults: ±1e16 (no limit) for the range, -1 (no limit) for effort and velocity
             lower = self.number(limit_el, "lower", -1e16, doc)
             upper = self.number(limit_el, "upper", 1e16, doc)
             effort = self.number(limit_el, "effort", -1.0, doc)
@@ -654,7 +660,7 @@ class _Parts(_Reader):
             spring_stiffness=self.number(dyn_el, "spring_stiffness", 0.0, doc),
             spring_reference=self.number(dyn_el, "spring_reference", 0.0, doc),
         )
-        mimic = None
+        mimic = None  # SDF 1.11's <axis><mimic joint=...>: the same coupling as URDF's <mimic>
         mimic_el = _find(element, "mimic")
         if mimic_el is not None:
             leader = (mimic_el.get("joint") or "").strip()
@@ -672,6 +678,9 @@ class _Parts(_Reader):
 
     # ================================================================== worlds
     def light(self, element: etree._Element, doc: _Doc, scope: Scope | None) -> Light | None:
+        """A ``<light>`` (directional, point or spot; SDF's default is point) placed in the world: its pose
+        resolved through ``scope`` when it is relative to a model's frame; its colours, direction, shadows and
+        attenuation range. Camera sensors light the scene with it (the browser viewer has lights of its own)."""
         name = self.name(element, doc)
         loc = self.loc(element, doc)
         if name is None:

@@ -53,26 +53,38 @@ MAX_NESTING = 32
 IGNORED: dict[str, frozenset[str]] = {
     # Elements that have no effect in gazelle (rendering details, solver settings of other
     # engines, bookkeeping): skipped without a warning. Keyed by the parent element.
+    #
+    # ODE's bookkeeping: bodies never sleep in MuJoCo, and no wind system runs
     "model": frozenset({"allow_auto_disable", "enable_wind"}),
     "link": frozenset({"enable_wind", "must_be_base_link", "visual_groups"}),
+    # laser_retro is a lidar's intensity hint (gazelle's rays report a constant intensity); max_contacts caps
+    # ODE's contact points (MuJoCo makes its own); density and auto_inertia_params only tune SDF 1.11's
+    # automatic inertia, which gazelle derives at its own default density
     "collision": frozenset({"laser_retro", "max_contacts", "density", "auto_inertia_params"}),
+    # how a visual is drawn, not what it is: cameras and the viewer draw the geometry and its colour
     "visual": frozenset({"cast_shadows", "transparency", "laser_retro", "meta", "visibility_flags"}),
     "material": frozenset({"lighting", "shader", "double_sided", "render_order"}),
-    "script": frozenset({"uri"}),
+    "script": frozenset({"uri"}),  # the OGRE material file: the material is kept by its <name>
     "inertial": frozenset(),
     "surface": frozenset(),
     "friction": frozenset(),
     "friction_ode": frozenset(),
+    # the contact patch of ODE's torsional friction: MuJoCo's torsional friction has its own patch model
     "torsional": frozenset({"use_patch_radius", "patch_radius", "surface_radius", "ode"}),
     "bullet_friction": frozenset({"fdir1"}),
+    # other engines' contact models (Bullet's, DART's elastic ones)
     "contact": frozenset({"bullet", "collide_without_contact_bitmask", "poissons_ratio", "elastic_modulus"}),
     "contact_ode": frozenset(),
-    "bounce": frozenset({"threshold"}),
+    "bounce": frozenset({"threshold"}),  # restitution itself is warned about: MuJoCo contacts do not bounce
+    # per-engine joint settings, and the gearbox joint (which is refused where it is declared)
     "joint": frozenset({"physics", "gearbox_ratio", "gearbox_reference_body"}),
     "axis": frozenset({"initial_position"}),
+    # the stiffness and damping of a joint's stop: MuJoCo's limit constraint has its own
     "limit": frozenset({"stiffness", "dissipation"}),
     "world": frozenset(),
+    # the other engines' solver blocks: the engine is always MuJoCo; magnetic_field is read at the world level
     "physics": frozenset({"ode", "bullet", "dart", "simbody", "max_contacts", "magnetic_field"}),
+    # rendering extras the viewer and cameras do not draw
     "scene": frozenset({"sky", "fog", "origin_visual"}),
     "light": frozenset({"spot", "intensity", "visualize", "light_on"}),
     "attenuation": frozenset({"constant", "linear", "quadratic"}),
@@ -81,6 +93,8 @@ IGNORED: dict[str, frozenset[str]] = {
 """Known elements skipped on purpose, per parent; see the module docstring."""
 
 _USED: dict[str, frozenset[str]] = {
+    # What gazelle reads, per parent: an element in neither table is warned about with its file:line
+    # (ELEMENT_UNSUPPORTED), so nothing a user wrote is dropped silently
     "model": frozenset({"static", "self_collide", "pose", "link", "joint", "frame", "model", "include", "plugin"}),
     "link": frozenset({"pose", "inertial", "collision", "visual", "sensor", "gravity", "kinematic", "self_collide"}),
     "collision": frozenset({"pose", "geometry", "surface"}),
@@ -131,7 +145,7 @@ _JOINT_TYPES = {
     "ball": JointType.BALL,
     "universal": JointType.UNIVERSAL,
     "screw": JointType.SCREW,
-    "revolute2": JointType.UNIVERSAL,
+    "revolute2": JointType.UNIVERSAL,  # two hinges on two axes: loaded as a universal joint, with a warning
 }
 _AXIS_JOINTS = {JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC, JointType.SCREW, JointType.UNIVERSAL}
 _UNLIMITED = 1e15
@@ -166,9 +180,12 @@ class _Doc:
     """One SDF file being read."""
 
     source: str
+    """The file's path, or a synthetic name (``<string>``) for a description that arrived as text."""
     base_dir: Path | None
     """The folder relative URIs resolve against; None for a string, which has none."""
     version: Version
+    """The file's ``<sdf version>``: what changes with it (pose frames before 1.7, axis frames before 1.5, name
+    scoping) is read the way that version defines it."""
     renamed: bool
     """Whether names were rewritten by :func:`prepare` (configs need decoding)."""
 
@@ -178,23 +195,37 @@ class _Built:
     """A parsed model before it is placed: everything in its own model frame."""
 
     name: str
+    """The model's name (an ``<include><name>`` overrides the file's)."""
     static: bool
+    """``<static>``: welded to the world."""
     self_collide: bool
+    """``<self_collide>``: its links collide with one another."""
     pose: Pose
+    """The model's ``<pose>``, in ``relative_to``'s frame."""
     relative_to: str | None
+    """The frame the pose is in (None: the parent's frame, the world at the top level)."""
     placement_frame: str | None
+    """``<placement_frame>``: the frame of the model that ``pose`` places (SDF 1.8), instead of the model frame."""
     canonical: str | None
+    """``<canonical_link>``, else the first link: the link the model frame is attached to."""
     links: list[Link] = field(default_factory=list)
+    """Every link, nested models' included (their names scoped ``child::link``)."""
     joints: list[Joint] = field(default_factory=list)
+    """Every joint, nested models' included."""
     world_joints: dict[str, Pose] = field(default_factory=dict)
     """X_MJ of joints whose parent is ``world`` (their origin needs the model's world pose)."""
     frames: list[Frame] = field(default_factory=list)
+    """Every ``<frame>``."""
     plugins: list[Plugin] = field(default_factory=list)
+    """The model's plugins (an include's too)."""
     joint_sensors: dict[str, list[Sensor]] = field(default_factory=dict)
     """Child link name -> the sensors of joints above it (force_torque)."""
     exported: ScopeFrames = field(default_factory=ScopeFrames)
+    """The frames a parent scope may refer to (``child::link``, ``child::frame``) when this model is nested."""
     doc: _Doc | None = None
+    """The document the model was read from."""
     location: SourceLocation | None = None
+    """Where the ``<model>`` is written (file:line)."""
 
 
 class _Reader:
@@ -213,7 +244,7 @@ class _Reader:
             return None
         tag = _tag(root)
         loc = element_location(root, source)
-        if tag not in ("sdf", "gazebo"):
+        if tag not in ("sdf", "gazebo"):  # <gazebo version="1.2">: Gazebo 1.x's worlds, read as SDF 1.2
             self.sink.error(ErrorCode.ROOT_ELEMENT_INVALID, f"root element must be <sdf>, got <{tag}>", loc)
             return None
         raw = root.get("version")
@@ -232,13 +263,17 @@ class _Reader:
         return root, _Doc(source, base_dir, version, renamed)
 
     def warn_extra(self, element: etree._Element, doc: _Doc, why: str) -> None:
+        """Warn that ``element`` is left out, and why (a second ``<world>``, a second shape in one ``<geometry>``)."""
         self.sink.warning(ErrorCode.ELEMENT_UNSUPPORTED, f"<{_tag(element)}> ignored: {why}", self.loc(element, doc))
 
     # ================================================================== small helpers
     def loc(self, element: etree._Element, doc: _Doc) -> SourceLocation:
+        """Where ``element`` is written (file:line), for a diagnostic."""
         return element_location(element, doc.source)
 
     def config(self, element: etree._Element, doc: _Doc) -> ConfigElement:
+        """``element`` as a read-only configuration tree for a plugin or sensor to read, with names restored where
+        :func:`prepare` rewrote them."""
         cfg = to_config(element, doc.source)
         return decode_config(cfg) if doc.renamed else cfg
 
@@ -273,6 +308,7 @@ class _Reader:
         return value.strip()
 
     def text(self, element: etree._Element, tag: str) -> str | None:
+        """The stripped text of child ``tag``; None when it is absent."""
         child = _find(element, tag)
         return None if child is None else (child.text or "").strip()
 
@@ -361,7 +397,7 @@ class _Reader:
                 self.loc(child, doc),
             )
             return None
-        return (values[0], values[1], values[2], values[3] if len(values) == 4 else 1.0)
+        return (values[0], values[1], values[2], values[3] if len(values) == 4 else 1.0)  # RGB: opaque
 
     def pose(self, element: etree._Element | None, doc: _Doc) -> tuple[Pose, str | None]:
         """The ``<pose>`` child of ``element`` and its ``relative_to`` (None = the default)."""
@@ -370,11 +406,15 @@ class _Reader:
             return IDENTITY, None
         relative_to = child.get("relative_to")
         if relative_to is None and (1, 5) <= doc.version < (1, 7):
+            # SDF 1.5 and 1.6 spelled it <pose frame="...">; 1.7 renamed it relative_to and gave it the frame
+            # graph's semantics, which the frame attribute's few users meant anyway
             relative_to = child.get("frame")
         relative_to = (relative_to or "").strip() or None
         text = (child.text or "").strip()
         if not text:
             return IDENTITY, relative_to
+        # SDF 1.9: rotation_format="euler_rpy" (the default: x y z roll pitch yaw, fixed axes, radians unless
+        # degrees="true") or "quat_xyzw" (x y z qx qy qz qw, normalised here as libsdformat does)
         fmt = (child.get("rotation_format") or "euler_rpy").strip()
         degrees = parse_bool(child.get("degrees") or "false")
         loc = self.loc(child, doc)
@@ -400,7 +440,7 @@ class _Reader:
                     ErrorCode.VALUE_INVALID, f"<pose> must be 7 numbers 'x y z qx qy qz qw', got {text!r}", loc
                 )
                 return IDENTITY, relative_to
-            qx, qy, qz, qw = values[3:]
+            qx, qy, qz, qw = values[3:]  # the file's order is xyzw; gazelle's quaternions are wxyz
             norm = math.sqrt(qx * qx + qy * qy + qz * qz + qw * qw)
             if not norm > 1e-9:
                 self.sink.error(ErrorCode.VALUE_INVALID, "<pose> quaternion has zero length", loc)
@@ -449,6 +489,8 @@ class _Reader:
             root = self.find_model_dir(name, doc)
             if root is None:
                 return None
+            # model://name/sub: the model's folder is found by name on the resource roots (Gazebo's
+            # GZ_SIM_RESOURCE_PATH search); the rest may not climb out of it (model://a/../../etc)
             path = (root / sub).resolve()
             return path if path == root or root in path.parents else None
         try:

@@ -25,7 +25,11 @@ from ._xml import (
     local_name,
 )
 
-# Colours of the common Gazebo classic material scripts (diffuse RGBA).
+# Colours of the common Gazebo classic material scripts (diffuse RGBA), as Gazebo classic's
+# media/materials/scripts/gazebo.material gives them (Gazebo/Wood, a texture there, as a wood colour).
+# A URDF's <gazebo reference><material>Gazebo/Red</material> is how most ROS 1-era robots are coloured
+# in Gazebo (their URDF <material> is for RViz): without this table they would all be grey. A script
+# name not listed keeps the visual's own colour.
 _GAZEBO_COLORS: dict[str, tuple[float, float, float, float]] = {
     "Gazebo/Black": (0.0, 0.0, 0.0, 1.0),
     "Gazebo/FlatBlack": (0.1, 0.1, 0.1, 1.0),
@@ -176,6 +180,7 @@ def check_structure(doc: UrdfDocument, reader: ElementReader) -> None:
                 joint.location,
             )
     roots = [draft for name, draft in doc.links.items() if name not in parent_of]
+    # one tree, as urdfdom requires: a second root would be a second robot that nothing holds together
     if len(roots) > 1:
         names = ", ".join(f"'{r.name}'" for r in roots)
         reader.sink.error(
@@ -210,6 +215,8 @@ def _check_loops(doc: UrdfDocument, parent_of: dict[str, Joint], reader: Element
 
 # --------------------------------------------------------------------------- massless links (sdformat's rule)
 def has_mass(draft: LinkDraft) -> bool:
+    """Whether the link's ``<inertial>`` gives it a positive mass (as written: a mass that failed to parse
+    is None)."""
     raw = draft.inertial
     return raw is not None and raw.mass is not None and raw.mass > 0
 
@@ -229,6 +236,7 @@ def drop_massless_links(doc: UrdfDocument, reader: ElementReader) -> None:
         children.setdefault(j.parent, []).append(j)
         parent_of[j.child] = j
     lumped: dict[str, bool] = {}
+    """Link -> whether it, or anything welded below it by fixed joints, has mass (what sdformat lumps)."""
     order: list[str] = []
     stack = [name for name in doc.links if name not in parent_of]
     while stack:  # a pre-order walk, iterative (5,000-link chains)
@@ -244,6 +252,7 @@ def drop_massless_links(doc: UrdfDocument, reader: ElementReader) -> None:
         if name in dropped:
             continue
         up = parent_of.get(name)
+        # a link fixed to a kept parent becomes part of it (sdformat merges it), with or without mass
         merged = up is not None and up.type is JointType.FIXED and up.parent not in dropped
         if merged or lumped[name]:
             continue
@@ -293,6 +302,8 @@ def finish_link(draft: LinkDraft, movable_by: str | None, reader: ElementReader,
 
 
 def _apply_gazebo_material(visual: Visual, script: str | None) -> Visual:
+    """``visual`` with its link's ``<gazebo><material>`` script applied: the script's name, and its colour when
+    :data:`_GAZEBO_COLORS` knows it (else the visual's own). Gazebo draws the script, not the URDF colour."""
     if script is None:
         return visual
     diffuse = _GAZEBO_COLORS.get(script) or (visual.material.diffuse if visual.material else None)
