@@ -211,6 +211,9 @@ class _Loader(_Parts):
                 ErrorCode.URI_UNRESOLVED, f"includes nest deeper than {MAX_NESTING} (a cycle?) at '{uri}'", loc
             )
             return None
+        # three kinds of URI: a Fuel model (https://fuel.gazebosim.org/...), read from what is built in or
+        # from Gazebo's own download cache, never fetched; model://, package://, file:// and paths, found on
+        # the resource roots; anything else (http:// to elsewhere) is not read
         fuel = parse_fuel_uri(uri)
         if fuel is not None:
             got = self.fuel_include(fuel, uri, loc)
@@ -232,7 +235,7 @@ class _Loader(_Parts):
             if got_file is None:
                 return None
             text, source, base = got_file
-        got = self.read(text, source, base)
+        got = self.read(text, source, base)  # the included file has its own version and folder
         if got is None:
             return None
         root, inner_doc = got
@@ -241,7 +244,7 @@ class _Loader(_Parts):
         pose, relative_to = self.pose(element, doc)
         has_pose = _find(element, "pose") is not None
         name = self.text(element, "name")
-        if model_el is None and light_el is not None:
+        if model_el is None and light_el is not None:  # the "sun" of Gazebo's model database is a light
             light = self.light(light_el, inner_doc, None)
             if light is None:
                 return None
@@ -262,6 +265,8 @@ class _Loader(_Parts):
         built = self.model(model_el, inner_doc, depth + 1)
         if built is None:
             return None
+        # the <include>'s own children override the included model's (sdformat's rule): its name, its pose
+        # (in the including file's frames), <static>, <placement_frame>; its <plugin>s are added to the model's
         if name:
             built.name = name
         if has_pose:
@@ -323,7 +328,9 @@ class _Loader(_Parts):
                 kinds[node_name] = kind
             return previous is None
 
-        # -- pass 1: names, frame nodes, nested models
+        # -- pass 1: names, frame nodes, nested models. Two passes because SDF's frame graph is declarative: a
+        # pose may be relative_to a frame written further down the file, so every frame is known before any
+        # pose is resolved
         link_els: list[tuple[str, etree._Element]] = []
         joint_els: list[tuple[str, etree._Element]] = []
         frame_els: list[tuple[str, etree._Element]] = []
@@ -377,6 +384,8 @@ class _Loader(_Parts):
 
     def frame_node(self, tag: str, name: str, child: etree._Element, doc: _Doc) -> FrameNode:
         """The frame-graph node of a model's ``<link>``, ``<joint>`` (attached to its child) or ``<frame>``."""
+        # what a pose is relative to when it does not say (SDF 1.7's defaults): a link's, the model frame; a
+        # joint's, its child link; a frame's, what it is attached to (else the model frame)
         child_pose, child_rel = self.pose(child, doc)
         child_loc = self.loc(child, doc)
         if tag == "link":
@@ -464,6 +473,8 @@ class _Loader(_Parts):
             if X_MS is None:
                 continue
             self.flatten(built, sub, X_MS)
+            # a static model nested in a moving one (a sensor mount, a fixed fixture) stays where it is:
+            # welded to the world at its placed pose, as gz-sim keeps a nested static model static
             if sub.static and not built.static and sub.canonical is not None:
                 built.joints.append(
                     Joint(
@@ -483,6 +494,8 @@ class _Loader(_Parts):
         def scoped(n: str) -> str:
             return n if n == "world" else prefix + n
 
+        # links move into the parent's frame; joints' origins and offsets are relative to their own links, so
+        # they keep them; a joint to the world is kept with its pose for the model's world pose, known last
         for link in sub.links:
             parent.links.append(replace(link, name=prefix + link.name, pose=X_PS * (link.pose or IDENTITY)))
         for joint in sub.joints:
@@ -513,6 +526,8 @@ class _Loader(_Parts):
         """The final :class:`Model` once its world pose is known."""
         joints = []
         for joint in built.joints:
+            # a joint to the world holds its child where the file places it: its origin in the world frame is
+            # the model's world pose times the joint's pose in the model
             X_MJ = built.world_joints.get(joint.name)
             if X_MJ is not None and joint.parent == "world":
                 joint = replace(joint, origin=X_WM * X_MJ)
@@ -524,7 +539,7 @@ class _Loader(_Parts):
             return None
         return Model(
             name=built.name,
-            links=tuple(
+            links=tuple(  # a joint's force_torque sensors live on the joint's child link
                 replace(lk, sensors=(*lk.sensors, *built.joint_sensors[lk.name]))
                 if lk.name in built.joint_sensors
                 else lk
@@ -573,7 +588,7 @@ class _Loader(_Parts):
 
     def physics_element(self, element: etree._Element, doc: _Doc) -> etree._Element | None:
         """The world's ``<physics>``: the one marked default, else the first (checked)."""
-        physics_els = _findall(element, "physics")
+        physics_els = _findall(element, "physics")  # one per engine profile; gz-sim runs the default one
         physics_el = next(
             (p for p in physics_els if parse_bool(p.get("default") or "") is True),
             physics_els[0] if physics_els else None,
@@ -584,7 +599,7 @@ class _Loader(_Parts):
 
     def world_fields(self, element: etree._Element, physics_el: etree._Element | None, doc: _Doc) -> tuple[Vec3, Vec3]:
         """Gravity and the magnetic field: the world's own elements, else the ones SDF ≤ 1.5 kept in ``<physics>``."""
-        gravity = (0.0, 0.0, -9.8)
+        gravity = (0.0, 0.0, -9.8)  # SDF's default (world.sdf), not 9.81
         if _find(element, "gravity") is not None:
             gravity = self.vec3(element, "gravity", gravity, doc)
         elif physics_el is not None:
@@ -708,6 +723,7 @@ class _Loader(_Parts):
             model = self.finish_model(sub, X_WM)
             if model is not None:
                 models.append(model)
+        # lights last: a light's pose may be relative_to a model's frame, known only once the models are placed
         lights = []
         for item in light_items:
             light = item if isinstance(item, Light) else self.light(item, doc, scope)
