@@ -83,10 +83,10 @@ class ContactSensor(_SensorSystem):
         self.collisions = names
         gz_topic = child_text(block, "topic")
         assert self.output is not None
-        if ctx.plugin is None:
+        if ctx.plugin is None:  # gz-sim: <topic> (of the sensor, else of its <contact>), else the scoped default
             topic = sensor.topic or gz_topic or gz_scoped_topic(ctx, self.link, sensor, "contact")
             self.output = dataclasses.replace(self.output, topic=resolve_topic(topic, ctx.entity.namespace))
-        else:
+        else:  # gazebo_ros_bumper: bumper_states under its node's namespace (remappable), in <frame_name>
             c = self.config
             self.output = dataclasses.replace(
                 self.output,
@@ -113,13 +113,17 @@ class ContactSensor(_SensorSystem):
     def read(self, world: PhysicsWorld) -> tuple[ContactPair, ...]:
         """The current contacts of the watched collisions, grouped by pair, in the output frame."""
         assert self._geoms is not None
+        # every MuJoCo contact touching a watched geom, seen from its side: the force the other body exerts on
+        # it (MuJoCo's contact force turned into the world frame), the normal pointing into it
         points = world.contacts_of(self._geoms.get(world))
+        # gazebo_ros_bumper reports in <frame_name>'s frame: points relative to its origin, vectors rotated
+        # (gz-sim's contact sensor and a bumper without <frame_name> report in the world frame)
         R = None
         origin = np.zeros(3)
         if self._frame is not None:
             X = self._frame.pose
             R, origin = rotation_matrix(X.orientation).T, np.asarray(X.position)
-        pairs: dict[tuple[str, str], list] = {}
+        pairs: dict[tuple[str, str], list] = {}  # one ContactState per pair of collisions, as Gazebo groups them
         for p in points:
             pos, n, f, t = (np.asarray(v) for v in (p.position, p.normal, p.force, p.torque))
             if R is not None:

@@ -64,16 +64,20 @@ class GpsNoise:
     """``<gps>``/``<navsat>`` noise: position horizontal and vertical, velocity horizontal and vertical."""
 
     position_horizontal: Noise = Noise()
+    """Metres, on East and North each (one draw per axis)."""
     position_vertical: Noise = Noise()
+    """Metres, on Up."""
     velocity_horizontal: Noise = Noise()
+    """m/s, on the East and North velocity each."""
     velocity_vertical: Noise = Noise()
+    """m/s, on the Up velocity."""
 
 
 def parse_gps_noise(sensor: Sensor, log: logging.Logger) -> GpsNoise:
     """SDF's ``<gps>`` (or ``<navsat>``) ``<position_sensing>``/``<velocity_sensing>`` noise."""
     block = None
     if sensor.config is not None:
-        block = sensor.config.find("navsat") or sensor.config.find("gps")
+        block = sensor.config.find("navsat") or sensor.config.find("gps")  # gz-sim's name, then Classic's
     if block is None:
         return GpsNoise()
 
@@ -123,7 +127,7 @@ class GpsSensor(_SensorSystem):
             c = self.config
             vel = resolve_topic("~/vel", c.namespace, dict(c.remappings), node=ctx.plugin.name)
             self._vel = ctx.bus.advertise(ctx.entity.name, vel, MsgType.VECTOR3_STAMPED, depth=SENSOR_DEPTH)
-        if ctx.spherical_coordinates is None:
+        if ctx.spherical_coordinates is None:  # gz-sim too puts the origin at 0° N 0° E then, silently
             where = f"{ctx.sensor.location}: " if ctx.sensor.location else ""
             ctx.logger.warning(
                 f"{where}GPS '{ctx.sensor.name}': the world has no <spherical_coordinates>; its origin is 0° N 0° E"
@@ -137,6 +141,8 @@ class GpsSensor(_SensorSystem):
         assert self._body is not None
         X_WB = self._body.pose
         X = X_WB * self.offset
+        # the noise is drawn in metres on the local ENU plane, then the point is turned into latitude, longitude
+        # and altitude, as gz-sensors' NavSat does: a stddev of 1 m is 1 m whatever the latitude
         h = self.origin.heading_deg
         e, n, u = world_to_enu(X.position, h)
         lin, ang = self._body.velocity
@@ -168,6 +174,8 @@ class GpsSensor(_SensorSystem):
         (lat, lon, alt), vel = self.read(world)
         t, frame = info.sim_time_sec, self.output.frame_id
         if want_fix:
+            # the fix's covariance is the noise's variance on the diagonal (East, North, Up), marked
+            # COVARIANCE_TYPE_DIAGONAL_KNOWN (2); without noise, UNKNOWN (0), as gazebo_ros_gps_sensor
             sh, sv = self.noise.position_horizontal.stddev, self.noise.position_vertical.stddev
             cov = (sh * sh, 0.0, 0.0, 0.0, sh * sh, 0.0, 0.0, 0.0, sv * sv)
             self._pub.publish(NavSatFix(t, frame, lat, lon, alt, cov, 2 if any(cov) else 0))

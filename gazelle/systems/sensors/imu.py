@@ -104,6 +104,8 @@ class ImuSensor(_SensorSystem):
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         self.noise = parse_imu_noise(ctx.sensor, cfg, ctx.logger)
         self.orientation_reference = self.config.initial_orientation_as_reference
+        # six channels: angular velocity x, y, z (rad/s), then linear acceleration x, y, z (m/s²); each gets a
+        # bias drawn once for the run, then N(mean, stddev) per reading (gz-sensors' Gaussian noise model)
         channels = (*self.noise.rate, *self.noise.accel)
         self._bias = np.array([n.bias(self._rng) for n in channels])
         self._mean = np.array([n.mean if n.active else 0.0 for n in channels])
@@ -112,6 +114,7 @@ class ImuSensor(_SensorSystem):
         self._rows = []
 
         def cov(ns: tuple[Noise, Noise, Noise]) -> tuple[float, ...]:
+            """The message's 3x3 covariance, row-major: each axis's variance on the diagonal (0, 4, 8)."""
             c = [0.0] * 9
             for i, n in enumerate(ns):
                 c[4 * i] = n.stddev**2 if n.active else 0.0
@@ -131,8 +134,10 @@ class ImuSensor(_SensorSystem):
     def read(self) -> tuple[tuple[float, float, float, float], Vec3, Vec3]:
         """(orientation, angular velocity, linear acceleration) with noise, as published."""
         assert self._body is not None
-        r = self._body.imu_reading(self.offset)
+        r = self._body.imu_reading(self.offset)  # ideal: orientation, then gyro and accelerometer in the sensor frame
         q = (r[0], r[1], r[2], r[3])
+        # <initial_orientation_as_reference>: the orientation relative to the first reading (so a robot that
+        # starts turned reads identity), instead of relative to the world's axes
         if self.orientation_reference:
             if self._q0 is None:
                 self._q0 = q

@@ -49,9 +49,13 @@ class ScanAxis:
     """One axis of ``<scan>``: ``samples`` x ``resolution`` rays from ``min_angle`` to ``max_angle``."""
 
     samples: int = 1
+    """``<samples>``: rays on this axis before ``resolution``."""
     resolution: float = 1.0
+    """``<resolution>``: multiplies ``samples`` (SDF's way of asking for more or fewer readings)."""
     min_angle: float = 0.0
+    """``<min_angle>``, radians."""
     max_angle: float = 0.0
+    """``<max_angle>``, radians (the last ray's angle: both ends are cast)."""
 
     @property
     def count(self) -> int:
@@ -75,10 +79,15 @@ class LidarSpec:
     """A lidar's ``<ray>``/``<lidar>`` block."""
 
     horizontal: ScanAxis = ScanAxis(640, 1.0, 0.0, 0.0)
+    """``<scan><horizontal>``: angles about the sensor's z axis, 0 straight ahead (x), positive to the left."""
     vertical: ScanAxis = ScanAxis()
+    """``<scan><vertical>``: elevation angles, positive up; one row (a 2D scanner) by default."""
     range_min: float = 0.0
+    """``<range><min>``, metres: a hit nearer reads -inf."""
     range_max: float = 10.0
+    """``<range><max>``, metres: rays end there; nothing within it reads +inf."""
     noise: Noise = Noise()
+    """``<noise>``: Gaussian on each range, metres (hits only: a miss stays +inf)."""
 
     def directions(self) -> np.ndarray:
         """Unit ray directions in the sensor frame, vertical-major (row v, column h): x forward, z up."""
@@ -210,7 +219,9 @@ class Lidar(_SensorSystem):
         ranges = self.scan(world)
         s, out, t = self.spec, self.output, info.sim_time_sec
         intensity = max(0.0, out.min_intensity)
+        # the message the plugin's <output_type> asks for (gazebo_ros_ray_sensor; gz-sim: LaserScan for a lidar)
         if out.msg_type is MsgType.LASER_SCAN:
+            # a LaserScan is one plane: of a multi-row lidar, its middle row
             row = ranges[s.vertical.count // 2].astype(np.float32)
             self._pub.publish(
                 LaserScan(
@@ -227,11 +238,14 @@ class Lidar(_SensorSystem):
                 )
             )
         elif out.msg_type is MsgType.RANGE:
+            # a Range (sonar, IR): the nearest hit of every ray in the cone; -inf when something is nearer than
+            # range_min and nothing is in range, +inf when nothing is within range_max (REP 117)
             valid = ranges[np.isfinite(ranges)]
             r = float(valid.min()) if valid.size else (-math.inf if np.any(ranges < 0) else math.inf)
             fov = max(s.horizontal.max_angle - s.horizontal.min_angle, s.vertical.max_angle - s.vertical.min_angle)
             self._pub.publish(Range(t, out.frame_id, out.radiation_type, fov, s.range_min, s.range_max, r))
         else:
+            # a PointCloud2 of the hits only (an unorganised cloud), in the sensor frame: x forward, z up
             flat = ranges.reshape(-1)
             ok = np.isfinite(flat)
             pts = self._dirs[ok] * flat[ok, None]
