@@ -34,8 +34,11 @@ from ._meshes import load_mesh as load_mesh
 from ._meshes import load_mesh_look as load_mesh_look
 from ._meshes import load_trimesh_in_metres as load_trimesh_in_metres
 from ._model import *  # noqa: F403  (the model dataclasses are the public surface)
-from ._model import LoadResult, Model, Semantics, World
+from ._model import LoadResult, Model, World
+from ._pose import *  # noqa: F403  (poses and rotations: part of the model's public surface)
 from ._resources import ResourceResolver as ResourceResolver
+from ._semantic_model import *  # noqa: F403  (SRDF semantics and ros2_control blocks: part of the model)
+from ._semantic_model import Semantics
 from ._untrusted import MAX_PARAMS_FILE_BYTES as MAX_PARAMS_FILE_BYTES
 from ._untrusted import MAX_YAML_NODES as MAX_YAML_NODES
 from ._untrusted import UntrustedInputError as UntrustedInputError

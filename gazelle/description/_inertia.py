@@ -23,20 +23,8 @@ import numpy.typing as npt
 
 from ._meshes import MeshReadError as _MeshFileError
 from ._meshes import load_mesh
-from ._model import (
-    IDENTITY,
-    Box,
-    Capsule,
-    Cone,
-    Cylinder,
-    Ellipsoid,
-    Geometry,
-    Inertial,
-    Mesh,
-    Pose,
-    Quat,
-    Sphere,
-)
+from ._model import Box, Capsule, Cone, Cylinder, Ellipsoid, Geometry, Inertial, Mesh, Sphere
+from ._pose import IDENTITY, Pose, Quat
 
 DEFAULT_DENSITY = 1000.0
 """kg/m^3 (water), used when a mass must be derived from volume."""

@@ -38,7 +38,6 @@ from ._fuel import BUILTIN as FUEL_BUILTIN
 from ._fuel import CLASSIC_BUILTIN, FuelModel, cache_roots, find_cached, parse_fuel_uri
 from ._model import (
     DEFAULT_MAGNETIC_FIELD,
-    IDENTITY,
     Frame,
     Joint,
     JointType,
@@ -46,12 +45,11 @@ from ._model import (
     Mimic,
     Model,
     PhysicsSettings,
-    Pose,
     Scene,
     SphericalCoordinates,
-    Vec3,
     World,
 )
+from ._pose import IDENTITY, Pose, Vec3
 from ._resources import ResourceResolver
 from ._sdf_frames import FrameNode, Scope
 from ._sdf_parts import _Parts
@@ -241,36 +239,32 @@ class _Loader(_Parts):
         root, inner_doc = got
         model_el = _find(root, "model")
         light_el = _find(root, "light") if allow_light else None
-        pose, relative_to = self.pose(element, doc)
-        has_pose = _find(element, "pose") is not None
-        name = self.text(element, "name")
         if model_el is None and light_el is not None:  # the "sun" of Gazebo's model database is a light
             light = self.light(light_el, inner_doc, None)
             if light is None:
                 return None
-            return Light(
-                name=name or light.name,
-                type=light.type,
-                pose=pose if has_pose else light.pose,
-                diffuse=light.diffuse,
-                specular=light.specular,
-                direction=light.direction,
-                cast_shadows=light.cast_shadows,
-                attenuation_range=light.attenuation_range,
-                location=loc,
-            )
+            name = self.text(element, "name")
+            pose = self.pose(element, doc)[0] if _find(element, "pose") is not None else light.pose
+            return replace(light, name=name or light.name, pose=pose, location=loc)
         if model_el is None:
             self.sink.error(ErrorCode.ELEMENT_MISSING, f"included file {source} holds no <model>", loc)
             return None
         built = self.model(model_el, inner_doc, depth + 1)
         if built is None:
             return None
-        # the <include>'s own children override the included model's (sdformat's rule): its name, its pose
-        # (in the including file's frames), <static>, <placement_frame>; its <plugin>s are added to the model's
+        self.include_overrides(built, element, doc)
+        built.location = loc
+        return built
+
+    def include_overrides(self, built: _Built, element: etree._Element, doc: _Doc) -> None:
+        """The ``<include>``'s own children override the included model's (sdformat's rule): its ``<name>``, its
+        ``<pose>`` (in the including file's frames), ``<static>``, ``<placement_frame>``; its ``<plugin>`` s are
+        added to the model's."""
+        name = self.text(element, "name")
         if name:
             built.name = name
-        if has_pose:
-            built.pose, built.relative_to = pose, relative_to
+        if _find(element, "pose") is not None:
+            built.pose, built.relative_to = self.pose(element, doc)
         if _find(element, "static") is not None:
             built.static = self.flag(element, "static", built.static, doc)
         placement = self.text(element, "placement_frame")
@@ -280,8 +274,6 @@ class _Loader(_Parts):
             plugin = self.plugin(plugin_el, doc)
             if plugin is not None:
                 built.plugins.append(plugin)
-        built.location = loc
-        return built
 
     # ================================================================== models
     def model(self, element: etree._Element, doc: _Doc, depth: int) -> _Built | None:
@@ -309,25 +301,6 @@ class _Loader(_Parts):
         scope = Scope("__model__", self.sink)
         kinds: dict[str, str] = {}
 
-        def register(node_name: str, kind: str, el: etree._Element) -> bool:
-            """Claim ``node_name`` in the model's frame graph for a link, joint, frame or nested model: a reserved
-            name (``world``, ``__model__``, ``__*__``) is an error, and so is a name used twice (by any two kinds
-            from SDF 1.7 on; before it, only by two of one kind). False when refused."""
-            if node_name in ("__model__", "world") or (node_name.startswith("__") and node_name.endswith("__")):
-                self.sink.error(ErrorCode.VALUE_INVALID, f"'{node_name}' is a reserved name", self.loc(el, doc))
-                return False
-            previous = kinds.get(node_name)
-            if previous is not None and (previous == kind or doc.version >= (1, 7)):
-                self.sink.error(
-                    ErrorCode.DUPLICATE_NAME,
-                    f"{kind} name '{node_name}' is already used by a {previous} in model '{name}'",
-                    self.loc(el, doc),
-                )
-                return False
-            if previous is None:
-                kinds[node_name] = kind
-            return previous is None
-
         # -- pass 1: names, frame nodes, nested models. Two passes because SDF's frame graph is declarative: a
         # pose may be relative_to a frame written further down the file, so every frame is known before any
         # pose is resolved
@@ -339,13 +312,13 @@ class _Loader(_Parts):
             tag = _tag(child)
             if tag in ("link", "joint", "frame"):
                 child_name = self.name(child, doc)
-                if child_name is None or not register(child_name, tag, child):
+                if child_name is None or not self.register(kinds, child_name, tag, child, doc, name):
                     continue
                 {"link": link_els, "joint": joint_els, "frame": frame_els}[tag].append((child_name, child))
                 scope.nodes[child_name] = self.frame_node(tag, child_name, child, doc)
             elif tag in ("model", "include"):
                 sub = self.model(child, doc, depth + 1) if tag == "model" else self.include(child, doc, depth, False)
-                if not isinstance(sub, _Built) or not register(sub.name, "model", child):
+                if not isinstance(sub, _Built) or not self.register(kinds, sub.name, "model", child, doc, name):
                     continue
                 post = self.placement(sub) or IDENTITY  # a bad placement_frame: reported, placed as if none
                 nested.append(sub)
@@ -366,6 +339,27 @@ class _Loader(_Parts):
         self.flatten_nested(built, nested, scope)
         built.exported = scope.export()
         return built
+
+    def register(
+        self, kinds: dict[str, str], node_name: str, kind: str, el: etree._Element, doc: _Doc, model: str
+    ) -> bool:
+        """Claim ``node_name`` in model ``model``'s frame graph (``kinds``: name -> kind so far) for a link, joint,
+        frame or nested model: a reserved name (``world``, ``__model__``, ``__*__``) is an error, and so is a name
+        used twice (by any two kinds from SDF 1.7 on; before it, only by two of one kind). False when refused."""
+        if node_name in ("__model__", "world") or (node_name.startswith("__") and node_name.endswith("__")):
+            self.sink.error(ErrorCode.VALUE_INVALID, f"'{node_name}' is a reserved name", self.loc(el, doc))
+            return False
+        previous = kinds.get(node_name)
+        if previous is not None and (previous == kind or doc.version >= (1, 7)):
+            self.sink.error(
+                ErrorCode.DUPLICATE_NAME,
+                f"{kind} name '{node_name}' is already used by a {previous} in model '{model}'",
+                self.loc(el, doc),
+            )
+            return False
+        if previous is None:
+            kinds[node_name] = kind
+        return previous is None
 
     def placement(self, sub: _Built) -> Pose | None:
         """X_PM⁻¹ for a model placed by its ``placement_frame`` (identity without one); None, reported, when

@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
-from ._model import IDENTITY, Pose
+from ._pose import IDENTITY, Pose
 
 _FAILED = object()
 

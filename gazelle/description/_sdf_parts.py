@@ -24,7 +24,6 @@ from lxml import etree
 from ._diagnostics import ErrorCode, SourceLocation
 from ._inertia import default_inertial, inertia_from_geometries, inertia_problem
 from ._model import (
-    IDENTITY,
     Box,
     Capsule,
     Collision,
@@ -44,14 +43,12 @@ from ._model import (
     Mesh,
     Mimic,
     Plane,
-    Pose,
     Sensor,
     Sphere,
     Surface,
     Visual,
-    quat_conj,
-    quat_rotate,
 )
+from ._pose import IDENTITY, Pose, quat_conj, quat_rotate
 from ._sdf_frames import Scope
 from ._sdf_reader import (
     _AXIS_JOINTS,

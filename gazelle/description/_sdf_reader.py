@@ -14,19 +14,8 @@ from typing import overload
 from lxml import etree
 
 from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
-from ._model import (
-    IDENTITY,
-    RGBA,
-    ConfigElement,
-    Frame,
-    Joint,
-    JointType,
-    Link,
-    Plugin,
-    Pose,
-    Sensor,
-    Vec3,
-)
+from ._model import ConfigElement, Frame, Joint, JointType, Link, Plugin, Sensor
+from ._pose import IDENTITY, RGBA, Pose, Vec3
 from ._resources import ResourceResolver
 from ._sdf_frames import ScopeFrames
 from ._sdf_text import decode_config, decode_name, prepare

@@ -17,16 +17,8 @@ from __future__ import annotations
 from lxml import etree
 
 from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
-from ._model import (
-    Chain,
-    DisabledCollision,
-    EndEffector,
-    Group,
-    GroupState,
-    Semantics,
-    VirtualJoint,
-)
 from ._sdf_text import prepare
+from ._semantic_model import Chain, DisabledCollision, EndEffector, Group, GroupState, Semantics, VirtualJoint
 from ._xml import child_elements, element_location, local_name, parse_float, parse_xml
 
 IGNORED = frozenset({"disable_default_collisions", "enable_collisions", "link_sphere_approximation", "sphere"})

@@ -18,19 +18,10 @@ from dataclasses import dataclass, replace
 from lxml import etree
 
 from ._diagnostics import DiagnosticSink, ErrorCode
-from ._model import (
-    ControlComponent,
-    ControlInterface,
-    GazeboExtension,
-    JointType,
-    Material,
-    Model,
-    Plugin,
-    Pose,
-    Ros2Control,
-    Sensor,
-)
+from ._model import GazeboExtension, JointType, Material, Model, Plugin, Sensor
+from ._pose import Pose
 from ._resources import ResourceResolver
+from ._semantic_model import ControlComponent, ControlInterface, Ros2Control
 from ._urdf_checks import (
     check_attributes,
     check_structure,

@@ -33,14 +33,13 @@ from ._model import (
     Mesh,
     Mimic,
     Plugin,
-    Pose,
     SafetyController,
     Sensor,
     Sphere,
     Surface,
-    Vec3,
     Visual,
 )
+from ._pose import Pose, Vec3
 from ._resources import ResourceResolver
 from ._xml import child_elements, element_location, local_name, parse_bool, parse_float, parse_floats
 

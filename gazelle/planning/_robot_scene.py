@@ -170,15 +170,7 @@ class RobotScene:
         self._known_groups = self._import_srdf(srdf, srdf_source, robot)
         self.joint_names: list[str] = list(self.scene.getJointNames())
         self._limits(self._joint_limits)
-        urdf_velocity = {
-            str(j.get("name")): float(str(limit.get("velocity")))
-            for j in robot.iter("joint")
-            if (limit := j.find("limit")) is not None and limit.get("velocity") is not None
-        }
-        self.velocity_limits: dict[str, float] = {
-            n: float(self._joint_limits.get(n, {}).get("max_velocity", urdf_velocity.get(n, math.inf)))
-            for n in self.joint_names
-        }
+        self.velocity_limits: dict[str, float] = _velocity_limits(robot, self.joint_names, self._joint_limits)
         """rad/s (m/s) each joint may move at: the URDF's, overridden by joint_limits.yaml, as the plans' TOPP-RA
         takes them. Kept here because roboplan 0.7's ``Scene.getVelocityLimitVectors("")`` (the whole robot)
         writes past its vector on a robot with two mimic joints: YuMi's grippers corrupted the heap ("double
@@ -780,3 +772,16 @@ def _tree(robot) -> _Tree:
         kids.append((str(joint.get("name")), str(joint.get("type")), str(child.get("link"))))
         child_links.add(str(child.get("link")))
     return _Tree(links, children, [link for link in links if link not in child_links])
+
+
+def _velocity_limits(
+    robot: etree._Element, joint_names: list[str], joint_limits: Mapping[str, Mapping[str, float]]
+) -> dict[str, float]:
+    """Each joint's speed limit (rad/s or m/s): joint_limits.yaml's ``max_velocity``, else the URDF's
+    ``<limit velocity>``, else none (infinity)."""
+    urdf_velocity = {
+        str(j.get("name")): float(str(limit.get("velocity")))
+        for j in robot.iter("joint")
+        if (limit := j.find("limit")) is not None and limit.get("velocity") is not None
+    }
+    return {n: float(joint_limits.get(n, {}).get("max_velocity", urdf_velocity.get(n, math.inf))) for n in joint_names}

@@ -1,6 +1,6 @@
 """Conversions between gazelle's dataclasses and ROS messages.
 
-The systems publish plain frozen dataclasses on the bus (``gazelle.systems._bus``); this module is the only
+The systems publish plain frozen dataclasses on the bus (``gazelle.systems._payloads``); this module is the only
 place that knows their ROS message types. The tables at the end say, per bus message type, which rclpy
 class carries it (:data:`ROS_TYPES`, :data:`ARM_TYPES`) and how to convert each way (:data:`TO_ROS`, and
 the ``from_*`` functions for what the ROS side receives). A sensor declared by its own module

@@ -8,15 +8,15 @@ line drive it through its thread-safe methods.
 
 from ._checkpoint import CheckpointError as CheckpointError
 from ._replay import ReplayRecorder as ReplayRecorder
+from ._runtime_types import RtfSample as RtfSample
+from ._runtime_types import SpawnRequest as SpawnRequest
+from ._runtime_types import StepListener as StepListener
 from ._scene import SceneGeometry as SceneGeometry
 from ._scene import SceneLink as SceneLink
 from ._scene import SceneShape as SceneShape
 from ._scene import moved as moved
 from ._simulation import MAX_CATCH_UP_SEC as MAX_CATCH_UP_SEC
-from ._simulation import RtfSample as RtfSample
 from ._simulation import Simulation as Simulation
-from ._simulation import SpawnRequest as SpawnRequest
-from ._simulation import StepListener as StepListener
 from ._watchdog import start_signal_watchdog as start_signal_watchdog
 
 __all__ = [

@@ -29,7 +29,6 @@ from collections import deque
 from collections.abc import Callable
 from concurrent.futures import Future
 from concurrent.futures import TimeoutError as FutureTimeout
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, TypeVar
 
@@ -47,7 +46,6 @@ from ..physics import (
 from ..systems import (
     RSP_PLUGIN,
     Bus,
-    RateGate,
     RobotStatePublisher,
     System,
     SystemContext,
@@ -62,6 +60,7 @@ from ..systems import (
     robot_state_config,
 )
 from ..systems.ros2_control import ControllerManager
+from ._runtime_types import RtfSample, SpawnRequest, StepListener
 
 T = TypeVar("T")
 
@@ -80,14 +79,6 @@ def _shutdown_system(system: System) -> None:
         system.shutdown()
     except Exception:
         _log.exception(f"{type(system).__name__}.shutdown raised after a failed spawn")
-
-
-@dataclass(frozen=True)
-class RtfSample:
-    """Real-time factor measured over the last window."""
-
-    rtf: float
-    steps_per_sec: float
 
 
 class Simulation:
@@ -797,26 +788,3 @@ class Simulation:
         for e, systems in ready:
             self._attach(e, systems)
         return out
-
-
-@dataclass(frozen=True, slots=True)
-class SpawnRequest:
-    """One model to add with :meth:`Simulation.spawn_many`."""
-
-    model: Model
-    name: str = ""
-    """The entity's name; empty means the model's own."""
-    pose: Pose = Pose()
-    """Where the model frame goes (composed with the file's own pose)."""
-    namespace: str = ""
-    allow_renaming: bool = False
-    """A taken name becomes ``name_1``, ``name_2``, ... instead of failing."""
-
-
-@dataclass(eq=False)
-class StepListener:
-    """A function called after the steps, at most ``rate_hz`` times per second of sim time (0: every step)."""
-
-    fn: Callable[[UpdateInfo], None]
-    rate_hz: float = 0.0
-    gate: RateGate = field(default_factory=RateGate)

@@ -14,8 +14,10 @@ Where things are (docs/extending.md has the checklists):
 * ``_registry.py``: which system runs a ``<plugin>`` or a ``<sensor>`` (derived from the declarations:
   ``PLUGIN_SYSTEMS`` lists the plugin classes, ``sensors.SENSOR_SYSTEMS`` the sensor classes), and the
   warning for each one that does not run.
-* ``_bus.py``: the topics between systems and the ROS bridge, and the message payloads (plain dataclasses;
-  ``gazelle.ros`` converts them).
+* ``_bus.py``: the topics between systems and the ROS bridge (endpoints, QoS, the message types);
+  ``_payloads.py``: the message payloads (plain dataclasses; ``gazelle.ros`` converts them).
+* ``_plugin_config.py``: reading a ``<plugin>`` block (texts, numbers, flags, the ``<ros>`` block) and a
+  gazebo_ros plugin's node.
 * One module per model or world plugin: ``diff_drive.py`` (gazebo_ros's), ``gz_diff_drive.py`` (gz-sim's),
   ``joint_controllers.py`` (gz-sim's joint position and velocity controllers, gazelle's per-joint command
   topics), ``pose_publisher.py`` (gazebo_ros's P3D), ``robot_state.py`` (robot_state_publisher and the
@@ -46,44 +48,44 @@ if TYPE_CHECKING:
     from ._base import SystemContext as SystemContext
     from ._base import SystemManager as SystemManager
     from ._base import UpdateInfo as UpdateInfo
-    from ._bus import Altimeter as Altimeter
     from ._bus import Bus as Bus
-    from ._bus import CameraInfo as CameraInfo
-    from ._bus import ContactPair as ContactPair
-    from ._bus import Contacts as Contacts
     from ._bus import DeclaredMessage as DeclaredMessage
-    from ._bus import DisplayTrajectory as DisplayTrajectory
-    from ._bus import DynamicJointState as DynamicJointState
     from ._bus import Endpoint as Endpoint
-    from ._bus import Float64 as Float64
-    from ._bus import Float64Array as Float64Array
-    from ._bus import Image as Image
-    from ._bus import Imu as Imu
-    from ._bus import JointStates as JointStates
-    from ._bus import JointStatesBlock as JointStatesBlock
-    from ._bus import JointTrajectory as JointTrajectory
-    from ._bus import LaserScan as LaserScan
-    from ._bus import MagneticField as MagneticField
     from ._bus import MessageKind as MessageKind
     from ._bus import MsgType as MsgType
-    from ._bus import NavSatFix as NavSatFix
-    from ._bus import Odometry as Odometry
     from ._bus import ParamValue as ParamValue
-    from ._bus import PayloadBlock as PayloadBlock
     from ._bus import PluginNode as PluginNode
-    from ._bus import PointCloud as PointCloud
     from ._bus import Qos as Qos
-    from ._bus import Range as Range
-    from ._bus import Text as Text
-    from ._bus import TrajectoryControllerState as TrajectoryControllerState
-    from ._bus import TrajectoryPoint as TrajectoryPoint
-    from ._bus import Transform as Transform
-    from ._bus import TransformBatch as TransformBatch
-    from ._bus import Twist as Twist
-    from ._bus import TwistStamped as TwistStamped
-    from ._bus import Vector3Stamped as Vector3Stamped
-    from ._bus import WrenchStamped as WrenchStamped
     from ._bus import resolve_topic as resolve_topic
+    from ._payloads import Altimeter as Altimeter
+    from ._payloads import CameraInfo as CameraInfo
+    from ._payloads import ContactPair as ContactPair
+    from ._payloads import Contacts as Contacts
+    from ._payloads import DisplayTrajectory as DisplayTrajectory
+    from ._payloads import DynamicJointState as DynamicJointState
+    from ._payloads import Float64 as Float64
+    from ._payloads import Float64Array as Float64Array
+    from ._payloads import Image as Image
+    from ._payloads import Imu as Imu
+    from ._payloads import JointStates as JointStates
+    from ._payloads import JointStatesBlock as JointStatesBlock
+    from ._payloads import JointTrajectory as JointTrajectory
+    from ._payloads import LaserScan as LaserScan
+    from ._payloads import MagneticField as MagneticField
+    from ._payloads import NavSatFix as NavSatFix
+    from ._payloads import Odometry as Odometry
+    from ._payloads import PayloadBlock as PayloadBlock
+    from ._payloads import PointCloud as PointCloud
+    from ._payloads import Range as Range
+    from ._payloads import Text as Text
+    from ._payloads import TrajectoryControllerState as TrajectoryControllerState
+    from ._payloads import TrajectoryPoint as TrajectoryPoint
+    from ._payloads import Transform as Transform
+    from ._payloads import TransformBatch as TransformBatch
+    from ._payloads import Twist as Twist
+    from ._payloads import TwistStamped as TwistStamped
+    from ._payloads import Vector3Stamped as Vector3Stamped
+    from ._payloads import WrenchStamped as WrenchStamped
     from ._plugin_config import plugin_node as plugin_node
     from ._plugin_config import plugin_node_name as plugin_node_name
     from ._plugin_names import RSP_PLUGIN as RSP_PLUGIN

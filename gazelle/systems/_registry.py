@@ -15,12 +15,12 @@ from typing import Any
 
 from ..description import Diagnostic, ErrorCode, Model, Plugin, Sensor, Severity, World
 from ._base import System
-from .robot_state import RSP_PLUGIN
+from ._plugin_names import RSP_PLUGIN
 
 _log = logging.getLogger("gazelle.systems")
 
 
-def _normalise(filename: str) -> str:
+def normalised(filename: str) -> str:
     """``libgazebo_ros_diff_drive.so`` -> ``gazebo_ros_diff_drive``; keeps gz names."""
     name = filename.strip()
     name = re.sub(r"^lib", "", name)
@@ -191,7 +191,7 @@ def _plugin_plans(
     a warning for each other plugin (unknown, or of another sensor type)."""
     plans = []
     for plugin in sensor.plugins:
-        key = _normalise(plugin.filename) if _normalise(plugin.filename) in sensor_plugins else _normalise(plugin.name)
+        key = normalised(plugin.filename) if normalised(plugin.filename) in sensor_plugins else normalised(plugin.name)
         entry = sensor_plugins.get(key)
         if entry is None:
             problem = plugin_problem(plugin)
@@ -224,14 +224,14 @@ def plan_sensors(
     sensor_plugins, gz_world_systems = _sensor_tables()
     gz_types: dict[str, Callable[[], System]] = {}
     for wp in world_plugins or ():
-        for key in (_normalise(wp.filename), _normalise(wp.name)):
+        for key in (normalised(wp.filename), normalised(wp.name)):
             gz_types.update(gz_world_systems.get(key, {}))
     plans: list[SensorPlan] = []
     out: list[Diagnostic] = []
     # a model with gazebo_ros plugins is a Gazebo Classic model: its sensors publish through their own
     # plugins only (gz-sim's world systems would add a second, gz-named topic Classic never had)
     classic = any(
-        _normalise(p.filename).startswith("gazebo_ros")
+        normalised(p.filename).startswith("gazebo_ros")
         for p in (*model.plugins, *(q for lk in model.links for sn in lk.sensors for q in sn.plugins))
     )
 
@@ -283,7 +283,7 @@ def plugin_factories() -> dict[str, Callable[[], System]]:
 def create_system(plugin: Plugin) -> System | None:
     """A new system for ``plugin``, or None if unsupported (:func:`audit_model` says why)."""
     registry = _registry()
-    cls = registry.get(_normalise(plugin.filename)) or registry.get(_normalise(plugin.name))
+    cls = registry.get(normalised(plugin.filename)) or registry.get(normalised(plugin.name))
     return cls() if cls is not None else None
 
 
@@ -353,7 +353,7 @@ def _did_you_mean(plugin: Plugin) -> str:
 
     names = _known_names()
     for raw in (plugin.filename, plugin.name):
-        key = _normalise(raw)
+        key = normalised(raw)
         scored = []
         for name in names:
             whole = SequenceMatcher(None, key, name).ratio()
@@ -372,7 +372,7 @@ def _display(name: str) -> str:
 
 def plugin_problem(plugin: Plugin, *, world: bool = False) -> str | None:
     """Why ``plugin`` will not run (unsupported, not yet, a likely typo), or None when it runs or is built in."""
-    key_f, key_n = _normalise(plugin.filename), _normalise(plugin.name)
+    key_f, key_n = normalised(plugin.filename), normalised(plugin.name)
     registry = _registry()
     if key_f in registry or key_n in registry or key_f == RSP_PLUGIN:
         return None  # (the built-in robot_state_publisher's options are read by the runtime)
@@ -400,8 +400,8 @@ def audit_model(model: Model, world_plugins: tuple[Plugin, ...] | None = None) -
             out.append(Diagnostic(ErrorCode.PLUGIN_UNSUPPORTED, Severity.WARNING, problem, plugin.location))
     out.extend(plan_sensors(model, world_plugins)[1])
     control = _control_plugins()
-    if not model.ros2_control and any(_normalise(p.filename) in control or p.name in control for p in model.plugins):
-        plugin = next(p for p in model.plugins if _normalise(p.filename) in control or p.name in control)
+    if not model.ros2_control and any(normalised(p.filename) in control or p.name in control for p in model.plugins):
+        plugin = next(p for p in model.plugins if normalised(p.filename) in control or p.name in control)
         out.append(
             Diagnostic(
                 ErrorCode.ELEMENT_UNSUPPORTED,

@@ -20,7 +20,8 @@ from ..description import ConfigElement, Model, Pose, quat_from_rpy, quat_rotate
 from ..physics import BodyHandle, PhysicsWorld
 from ._actuation import VelocityServo, add_wheel_servo
 from ._base import System, SystemContext, UpdateInfo
-from ._bus import Endpoint, JointStates, MsgType, Odometry, Transform, TransformBatch, Twist, resolve_topic
+from ._bus import Endpoint, MsgType, resolve_topic
+from ._payloads import JointStates, Odometry, Transform, TransformBatch, Twist
 from ._plugin_config import all_texts, child_text, parse_bool, parse_float, ros_block
 
 ODOM_ENCODER = 0

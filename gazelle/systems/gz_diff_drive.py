@@ -29,7 +29,8 @@ from ..description import ConfigElement, Pose, quat_from_rpy
 from ..physics import PhysicsWorld
 from ._actuation import VelocityServo, add_wheel_servo
 from ._base import RateGate, System, SystemContext, UpdateInfo
-from ._bus import Endpoint, MsgType, Odometry, Transform, TransformBatch, Twist, resolve_topic
+from ._bus import Endpoint, MsgType, resolve_topic
+from ._payloads import Odometry, Transform, TransformBatch, Twist
 from ._plugin_config import all_texts, child_text, parse_float
 from .diff_drive import joints_listing, wheel_direction_hint
 

@@ -24,7 +24,8 @@ from ..description import ConfigElement, JointType
 from ..physics import PhysicsWorld
 from ._actuation import PidGains, PositionServo, VelocityServo, add_position_servo, add_velocity_servo
 from ._base import RateGate, System, SystemContext, UpdateInfo
-from ._bus import Float64, MsgType, resolve_topic
+from ._bus import MsgType, resolve_topic
+from ._payloads import Float64
 from ._plugin_config import all_texts, child_text, parse_bool, parse_float, ros_block
 
 _MOVABLE = (JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC)

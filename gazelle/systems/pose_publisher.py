@@ -23,7 +23,8 @@ from dataclasses import dataclass
 from ..description import ConfigElement, Pose, quat_conj, quat_from_rpy, quat_mul, quat_rotate
 from ..physics import WORLD_FRAMES, PhysicsWorld
 from ._base import RateGate, System, SystemContext, UpdateInfo
-from ._bus import Endpoint, MsgType, Odometry, Twist, resolve_topic
+from ._bus import Endpoint, MsgType, resolve_topic
+from ._payloads import Odometry, Twist
 from ._plugin_config import child_text, parse_float, ros_block
 
 ROS1_NAMES = {

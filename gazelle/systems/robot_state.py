@@ -18,7 +18,8 @@ from typing import Any
 from ..description import JointType, Model, Plugin
 from ..physics import BodyHandle, Entity, JointHandle, PhysicsWorld
 from ._base import RateGate, System, SystemContext, UpdateInfo
-from ._bus import Endpoint, JointStates, MsgType, Qos, Text, Transform, TransformBatch, resolve_topic
+from ._bus import Endpoint, MsgType, Qos, resolve_topic
+from ._payloads import JointStates, Text, Transform, TransformBatch
 from ._plugin_config import all_texts, child_text, parse_bool, parse_float, ros_block
 from ._plugin_names import RSP_PLUGIN as RSP_PLUGIN
 
@@ -62,22 +63,15 @@ def robot_state_config(entity: Entity, log: logging.Logger) -> tuple[RobotStateC
     )
 
 
-GZ_DIFF_DRIVES = frozenset(
-    {
-        "gz-sim-diff-drive-system",
-        "gz::sim::systems::DiffDrive",
-        "ignition-gazebo-diff-drive-system",
-        "ignition::gazebo::systems::DiffDrive",
-        "libignition-gazebo-diff-drive-system.so",
-        "libgz-sim-diff-drive-system.so",
-    }
-)
-
-
 def gz_scoped_frames(model: Model) -> bool:
-    """Whether a gz-sim DiffDrive of ``model`` uses its default, model-scoped frames (no ``<child_frame_id>``)."""
+    """Whether a gz-sim DiffDrive of ``model`` uses its default, model-scoped frames (no ``<child_frame_id>``).
+    The plugin's names are the DiffDrive class's own declaration (every gz and Ignition spelling)."""
+    from ._registry import normalised, plugin_names
+    from .gz_diff_drive import GzDiffDrive
+
+    names = frozenset(plugin_names(GzDiffDrive))
     for p in model.plugins:
-        if p.filename.strip() in GZ_DIFF_DRIVES or p.name.strip() in GZ_DIFF_DRIVES:
+        if normalised(p.filename) in names or p.name.strip() in names:
             if p.config is None or p.config.find("child_frame_id") is None:
                 return True
     return False

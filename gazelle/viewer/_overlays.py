@@ -52,7 +52,7 @@ class _TrailSample:
     odom_topic: str | None
     """The entity's odometry topic (a diff drive's ``odom``), if it has one."""
     odom: Any
-    """The latest message on it (``systems._bus.Odometry``), if any yet."""
+    """The latest message on it (``systems._payloads.Odometry``), if any yet."""
 
 
 def _odom_frame_in_world(truth: Pose, odom: Any, now: float) -> tuple[float, float, float]:

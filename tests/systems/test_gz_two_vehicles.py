@@ -19,7 +19,8 @@ from _sim import new_simulation
 
 from gazelle.description import load_string
 from gazelle.sim import Simulation
-from gazelle.systems._bus import Endpoint, Twist
+from gazelle.systems._bus import Endpoint
+from gazelle.systems._payloads import Twist
 
 
 def _inertial(m: float, ixx: float, iyy: float, izz: float) -> str:

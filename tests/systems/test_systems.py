@@ -14,7 +14,8 @@ from _sim import new_simulation
 
 from gazelle.description import Pose, load, load_string
 from gazelle.systems import System, UpdateInfo
-from gazelle.systems._bus import MsgType, Twist
+from gazelle.systems._bus import MsgType
+from gazelle.systems._payloads import Twist
 from gazelle.systems.diff_drive import ODOM_WORLD, DiffDrive
 from gazelle.systems.gz_diff_drive import GzDiffDrive, SpeedLimiter, SpeedLimits
 from gazelle.systems.joint_controllers import JointCommands, JointController, JointPositionController

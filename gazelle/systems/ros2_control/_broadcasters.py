@@ -6,7 +6,8 @@ import math
 
 import numpy as np
 
-from .._bus import DynamicJointState, Float64Array, Imu, JointStates, JointStatesBlock, MsgType, Qos, WrenchStamped
+from .._bus import MsgType, Qos
+from .._payloads import DynamicJointState, Float64Array, Imu, JointStates, JointStatesBlock, WrenchStamped
 from ._controller import Controller, values_getter
 from ._hardware import FT_INTERFACES, IMU_INTERFACES, ControlError
 

@@ -24,7 +24,8 @@ import math
 from collections import deque
 
 from ...description import Pose, quat_from_rpy
-from .._bus import MsgType, Odometry, Transform, TransformBatch, Twist, TwistStamped
+from .._bus import MsgType
+from .._payloads import Odometry, Transform, TransformBatch, Twist, TwistStamped
 from ._controller import Controller
 from ._hardware import ControlError
 

@@ -27,7 +27,8 @@ from typing import Any
 
 import numpy as np
 
-from .._bus import JointTrajectory, MsgType, TrajectoryControllerState, TrajectoryPoint
+from .._bus import MsgType
+from .._payloads import JointTrajectory, TrajectoryControllerState, TrajectoryPoint
 from ._controller import Controller, GoalState, values_getter, values_or_zero
 from ._hardware import ControlError
 

@@ -6,9 +6,7 @@ from typing import ClassVar
 
 from ...physics import PhysicsWorld
 from .._base import SystemContext, UpdateInfo
-from .._bus import (
-    Altimeter,
-)
+from .._payloads import Altimeter
 from ._common import (
     Noise,
     _SensorSystem,

@@ -38,14 +38,8 @@ from ...description import (
 )
 from ...physics import OffscreenRenderer, PhysicsWorld, RenderError
 from .._base import SystemContext, UpdateInfo
-from .._bus import (
-    CameraInfo,
-    Endpoint,
-    Image,
-    MsgType,
-    PointCloud,
-    resolve_topic,
-)
+from .._bus import Endpoint, MsgType, resolve_topic
+from .._payloads import CameraInfo, Image, PointCloud
 from .._plugin_config import child_text, parse_float
 from ._common import (
     SENSOR_DEPTH,

@@ -12,12 +12,8 @@ from ...description import (
 )
 from ...physics import BodyHandle, PerGeneration, PhysicsWorld
 from .._base import SystemContext, UpdateInfo
-from .._bus import (
-    ContactPair,
-    Contacts,
-    MsgType,
-    resolve_topic,
-)
+from .._bus import MsgType, resolve_topic
+from .._payloads import ContactPair, Contacts
 from .._plugin_config import child_text
 from ._common import (
     SENSOR_DEPTH,

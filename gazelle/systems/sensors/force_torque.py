@@ -16,12 +16,8 @@ from ...description import (
 )
 from ...physics import BodyHandle, PhysicsWorld
 from .._base import RateGate, System, SystemContext, UpdateInfo
-from .._bus import (
-    Endpoint,
-    MsgType,
-    WrenchStamped,
-    resolve_topic,
-)
+from .._bus import Endpoint, MsgType, resolve_topic
+from .._payloads import WrenchStamped
 from .._plugin_config import child_text, parse_float, ros_block
 from ._common import (
     SENSOR_DEPTH,
@@ -108,6 +104,8 @@ class ForceTorqueSensor(System):
         cfg = plugin.config if plugin is not None else None
         ns, remaps = ros_block(cfg)
         ns = ns or child_text(cfg, "robotNamespace") or ctx.entity.namespace
+        # gazebo_ros_ft_sensor reports the wrench on the child link (the parent's action on it), in the child's
+        # frame; its ROS 1 spellings are read too
         return ForceTorqueConfig(
             joint_name=child_text(cfg, "joint_name") or child_text(cfg, "jointName") or "",
             measure_direction="parent_to_child",
@@ -134,7 +132,7 @@ class ForceTorqueSensor(System):
         from ..robot_state import entity_frame_prefix
 
         prefix = entity_frame_prefix(ctx.entity, log)
-        if ctx.sensor is not None:
+        if ctx.sensor is not None:  # frame_id: the frame the wrench is in (gz-sim's scoped name for the sensor frame)
             self.offset = ctx.sensor.pose
             frame_link = {"child": joint.child, "parent": joint.parent}.get(c.frame)
             self.frame_id = (
@@ -159,8 +157,10 @@ class ForceTorqueSensor(System):
         c = self.config
         X_WC = self._child.pose
         X_WJ = X_WC * self._X_CJ
+        # what the parent exerts on the child through the joint, about the joint's origin, world frame (from
+        # MuJoCo's constraint forces: what the physics really transmits, not a model of it)
         f, t = self._child.joint_wrench(np.asarray(X_WJ.position))
-        if c.measure_direction != "parent_to_child":
+        if c.measure_direction != "parent_to_child":  # child_to_parent, gz-sim's default: Newton's third law
             f, t = -f, -t
         if c.frame == "parent":
             R = rotation_matrix(self._parent.pose.orientation)
@@ -168,8 +168,8 @@ class ForceTorqueSensor(System):
             R = rotation_matrix((X_WJ * self.offset).orientation)
         else:
             R = rotation_matrix(X_WC.orientation)
-        f, t = R.T @ f, R.T @ t
-        if c.gaussian_noise > 0:
+        f, t = R.T @ f, R.T @ t  # world -> the output frame
+        if c.gaussian_noise > 0:  # gazebo_ros_ft_sensor: one stddev on all six components
             f = f + self._rng.normal(0.0, c.gaussian_noise, 3)
             t = t + self._rng.normal(0.0, c.gaussian_noise, 3)
         return f, t

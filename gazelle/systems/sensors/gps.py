@@ -17,13 +17,8 @@ from ...description import (
 )
 from ...physics import PhysicsWorld
 from .._base import SystemContext, UpdateInfo
-from .._bus import (
-    Endpoint,
-    MsgType,
-    NavSatFix,
-    Vector3Stamped,
-    resolve_topic,
-)
+from .._bus import Endpoint, MsgType, resolve_topic
+from .._payloads import NavSatFix, Vector3Stamped
 from ._common import (
     SENSOR_DEPTH,
     Noise,

@@ -17,10 +17,7 @@ from ...description import (
 )
 from ...physics import PhysicsWorld
 from .._base import SystemContext, UpdateInfo
-from .._bus import (
-    Imu,
-    Vec3,
-)
+from .._payloads import Imu, Vec3
 from .._plugin_config import child_text, parse_float
 from ._common import (
     NOISE_ROWS,

@@ -18,12 +18,8 @@ from ...description import (
 )
 from ...physics import PhysicsWorld
 from .._base import SystemContext, UpdateInfo
-from .._bus import (
-    LaserScan,
-    MsgType,
-    PointCloud,
-    Range,
-)
+from .._bus import MsgType
+from .._payloads import LaserScan, PointCloud, Range
 from .._plugin_config import parse_float
 from ._common import (
     Noise,

@@ -11,9 +11,7 @@ from ...description import (
 )
 from ...physics import PhysicsWorld
 from .._base import SystemContext, UpdateInfo
-from .._bus import (
-    MagneticField,
-)
+from .._payloads import MagneticField
 from ._common import (
     Noise,
     _SensorSystem,
