@@ -32,7 +32,7 @@ from controller_manager_msgs.srv import (
 )
 from lifecycle_msgs.msg import State
 from rcl_interfaces.msg import SetParametersResult
-from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
+from rclpy.action.server import ActionServer, GoalResponse
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.node import Node
 
@@ -54,7 +54,7 @@ from ..systems.ros2_control import (
     params_file_paths,
 )
 from ._convert import from_duration, from_joint_trajectory_msg, to_trajectory_point_msg
-from ._replies import serve
+from ._replies import serve, serve_action
 
 _LIFECYCLE = {
     UNCONFIGURED: (State.PRIMARY_STATE_UNCONFIGURED, "unconfigured"),
@@ -304,25 +304,23 @@ class ControllerManagerNode(Node):
         is an error naming it (a new controller's action needs its server here)."""
         if controller.action_type == "control_msgs/action/FollowJointTrajectory":
             jtc = controller
-            server = ActionServer(
+            server = serve_action(
                 self,
                 FollowJointTrajectory,
                 jtc.action_name,
-                execute_callback=lambda handle: self._execute(jtc, handle),
-                goal_callback=lambda goal: self._accept(jtc, goal),
-                cancel_callback=lambda _handle: CancelResponse.ACCEPT,
-                callback_group=self._cb,
+                lambda handle: self._execute(jtc, handle),
+                self._cb,
+                accept=lambda goal: self._accept(jtc, goal),
             )
         elif controller.action_type == "control_msgs/action/GripperCommand":
             gripper = controller
-            server = ActionServer(
+            server = serve_action(
                 self,
                 GripperCommand,
                 gripper.action_name,
-                execute_callback=lambda handle: self._execute_gripper(gripper, handle),
-                goal_callback=lambda _goal: GoalResponse.ACCEPT if gripper.state == ACTIVE else GoalResponse.REJECT,
-                cancel_callback=lambda _handle: CancelResponse.ACCEPT,
-                callback_group=self._cb,
+                lambda handle: self._execute_gripper(gripper, handle),
+                self._cb,
+                accept=lambda _goal: GoalResponse.ACCEPT if gripper.state == ACTIVE else GoalResponse.REJECT,
             )
         else:
             self._log.error(f"controller '{controller.name}': its action {controller.action_type} is not served")

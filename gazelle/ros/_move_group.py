@@ -45,7 +45,6 @@ from moveit_msgs.srv import (
     QueryPlannerInterfaces,
     SetPlannerParams,
 )
-from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import MultiThreadedExecutor, SingleThreadedExecutor
 from rclpy.parameter import Parameter
@@ -69,7 +68,7 @@ from ._move_group_base import (
 from ._move_group_execution import _Execution
 from ._move_group_model import _ModelServices
 from ._move_group_planners import _PlannerQueries
-from ._replies import serve
+from ._replies import serve, serve_action
 from ._signals import spin_until_shutdown
 
 __all__ = ["PIPELINE_PARAMETERS", "Controller", "MoveGroupNode", "move_group_main"]
@@ -172,24 +171,8 @@ class MoveGroupNode(_Execution, _PlannerQueries, _ModelServices):
         self.create_subscription(String, "trajectory_execution_event", self._on_execution_event, 10, callback_group=cb)
         # a second move_group on the domain answers every request too: said once, after discovery
         self._twin_check = self.create_timer(TWIN_CHECK_SEC, self._warn_of_twins, callback_group=cb)
-        self._move = ActionServer(
-            self,
-            MoveGroup,
-            "move_action",
-            execute_callback=self._execute_move_group,
-            goal_callback=lambda _g: GoalResponse.ACCEPT,
-            cancel_callback=lambda _g: CancelResponse.ACCEPT,
-            callback_group=cb,
-        )
-        self._execute = ActionServer(
-            self,
-            ExecuteTrajectory,
-            "execute_trajectory",
-            execute_callback=self._execute_trajectory,
-            goal_callback=lambda _g: GoalResponse.ACCEPT,
-            cancel_callback=lambda _g: CancelResponse.ACCEPT,
-            callback_group=cb,
-        )
+        self._move = serve_action(self, MoveGroup, "move_action", self._execute_move_group, cb)
+        self._execute = serve_action(self, ExecuteTrajectory, "execute_trajectory", self._execute_trajectory, cb)
 
     def destroy_node(self) -> None:
         """Destroy the action servers and clients first: one left alive holds its node's handle, and the

@@ -75,6 +75,23 @@ def serve(node: Any, srv_type: Any, name: str, callback: Any, callback_group: An
     return resend_lost_replies(service, name)
 
 
+def serve_action(node: Any, action_type: Any, name: str, execute: Any, callback_group: Any, accept: Any = None) -> Any:
+    """An rclpy ActionServer for ``action_type`` on ``name``: ``execute`` runs an accepted goal, ``accept(goal)``
+    says whether a goal is taken (None: every goal, as MoveIt's and simulation_interfaces' servers do), and a
+    cancel request is always accepted (the execute callback decides how the goal ends)."""
+    from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
+
+    return ActionServer(
+        node,
+        action_type,
+        name,
+        execute_callback=execute,
+        goal_callback=accept if accept is not None else (lambda _goal: GoalResponse.ACCEPT),
+        cancel_callback=lambda _handle: CancelResponse.ACCEPT,
+        callback_group=callback_group,
+    )
+
+
 RESEND_SEC = 10.0
 """How long a reply the middleware could not deliver is offered again."""
 

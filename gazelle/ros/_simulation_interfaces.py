@@ -48,7 +48,6 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
 from rclpy.callback_groups import ReentrantCallbackGroup
 from simulation_interfaces.action import SimulateSteps
 from simulation_interfaces.msg import (
@@ -87,7 +86,7 @@ from ..physics import WORLD_FRAMES, Entity, ErrorKind, WorldError, pose_out_of_r
 from ..sim import SpawnRequest
 from ._convert import from_pose_msg
 from ._entity_queries import OK, EntityQueries, _attempt, _finite, _Refused, _result
-from ._replies import guarded_service, serve, with_warnings
+from ._replies import guarded_service, serve, serve_action, with_warnings
 from ._stepping import SteppingService
 
 if TYPE_CHECKING:
@@ -179,15 +178,7 @@ class SimulationInterfaces(EntityQueries):
         ):
             self.services.append(serve(node, srv_type, f"~/{name}", guarded_service(name, fn), self.cb))
         self.stepping = SteppingService(node, guarded_service("step_simulation", self.step_simulation))
-        self.action = ActionServer(
-            node,
-            SimulateSteps,
-            "~/simulate_steps",
-            execute_callback=self._simulate_steps,
-            goal_callback=lambda goal: GoalResponse.ACCEPT,
-            cancel_callback=lambda handle: CancelResponse.ACCEPT,
-            callback_group=self.cb,
-        )
+        self.action = serve_action(node, SimulateSteps, "~/simulate_steps", self._simulate_steps, self.cb)
 
     def destroy(self) -> None:
         """Stop the action server and the services (the node is being destroyed)."""

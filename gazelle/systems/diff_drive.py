@@ -61,8 +61,11 @@ class DiffDriveConfig:
     publish_wheel_tf: bool = False
     """``<publish_wheel_tf>``, default false."""
     covariance_x: float = 0.00001
+    """``<covariance_x>``, m²: the odometry's x variance (pose and twist covariance diagonals)."""
     covariance_y: float = 0.00001
+    """``<covariance_y>``, m²."""
     covariance_yaw: float = 0.001
+    """``<covariance_yaw>``, rad²."""
     command_topic: str = "cmd_vel"
     """``<commandTopic>`` (ROS 1 name; the ROS 2 plugin fixes it to ``cmd_vel``, use a remapping)."""
     odometry_topic: str = "odom"
