@@ -45,9 +45,13 @@ CONVEXITY_TOLERANCE = 1e-4
 COACD_THRESHOLD = 0.05
 """CoACD's concavity threshold: the largest allowed concavity, as a fraction of the mesh's size."""
 COACD_MAX_PARTS = 64
+"""The most parts a mesh becomes: each is a geom MuJoCo tests for contact, so a cap keeps a detailed
+wall from costing hundreds of collision pairs (and bounds what a cache entry may hold)."""
 SETTINGS_VERSION = "coacd-1.0.14/t0.05/max64/v1"
 """Part of the cache key: changing the settings recomputes the parts."""
 DEFAULT_TIMEOUT_SEC = 30.0
+"""The most one decomposition may take (``GAZELLE_DECOMPOSE_TIMEOUT``), in its bounded child, even in the
+background; past it the mesh keeps its hull, and that outcome is cached."""
 LOAD_BUDGET_SEC = 2.0
 """What a load waits for a decomposition not cached yet (``GAZELLE_DECOMPOSE_LOAD_BUDGET``): one that takes
 longer finishes in the background, and the mesh collides as its hull until the next load (a first launch
@@ -63,6 +67,7 @@ class Parts:
     """The convex pieces a collision mesh collides as (vertices in the mesh frame, scaled)."""
 
     pieces: tuple[np.ndarray, ...]
+    """Each part's points (n x 3, metres, scaled): MuJoCo makes the convex hull of each."""
     seconds: float
     """Time spent decomposing (0 when it came from a cache)."""
     source: str
@@ -157,6 +162,7 @@ def _private_dir(folder: Path, what: str = "the convex-decomposition cache") -> 
     except OSError as err:
         _log.debug(f"cannot use {what} {folder}: {err}")
         return False
+    # a cache another user can write is a way to hand this process geometry (or a pickle, were it one): refused
     if info.st_uid != os.getuid() or info.st_mode & 0o022:
         _log.warning(
             f"{what} {folder} belongs to another user or others may write to it; "
@@ -183,7 +189,7 @@ def _load_disk(path: Path, key: str, vertices: np.ndarray) -> tuple[tuple[np.nda
         why = f"has {info.st_size} bytes, more than {MAX_ENTRY_BYTES}"
     if why is None:
         try:
-            with np.load(path, allow_pickle=False) as data:
+            with np.load(path, allow_pickle=False) as data:  # plain arrays only: no pickle is ever loaded
                 names = set(data.files)
                 if "key" not in names or str(data["key"]) != key:
                     why = "was computed for another mesh"
@@ -249,6 +255,9 @@ def collision_parts(path: str, scale: tuple[float, float, float]) -> Parts | Non
         if key is not None and key in _memory:
             cached = _memory[key]
             return None if cached is None else Parts(cached.pieces, 0.0, "memory")
+    # welded first (mesh files repeat vertices per face; merged, a closed mesh is manifold and CoACD skips
+    # its slow remeshing), scaled (the parts are in the geom's units), then hashed: the key is the geometry,
+    # not the file
     verts, faces = _welded(*load_mesh(path))
     verts = verts * np.asarray(scale, dtype=float)
     key = _key(verts, faces)
@@ -257,11 +266,12 @@ def collision_parts(path: str, scale: tuple[float, float, float]) -> Parts | Non
         if key in _memory:
             cached = _memory[key]
             return None if cached is None else Parts(cached.pieces, 0.0, "memory")
-    if is_convex(verts, faces):
+    if is_convex(verts, faces):  # most collision meshes: MuJoCo's hull is then the mesh itself
         with _lock:
             _memory[key] = None
         return None
     max_faces = int(float(os.environ.get("GAZELLE_DECOMPOSE_MAX_FACES") or DEFAULT_MAX_FACES))
+    # a visual-grade mesh used for collision (100k faces) would take CoACD minutes: its hull, said
     if len(faces) > max_faces:
         return _hull(key, path, f"it has {len(faces)} faces, more than GAZELLE_DECOMPOSE_MAX_FACES={max_faces}")
     folder = cache_dir()
@@ -324,7 +334,7 @@ def _decompose_now(key: str, path: str, disk: Path, verts: np.ndarray, faces: np
         _save_disk(disk, key, ())  # not again on this machine, with this version
         return _hull(key, path, str(err))
     _spend(time.monotonic() - t0)
-    pieces = tuple(np.asarray(p, dtype=float) for p in raw if len(p) >= 4)
+    pieces = tuple(np.asarray(p, dtype=float) for p in raw if len(p) >= 4)  # fewer than 4 points: no volume
     parts = Parts(pieces, time.monotonic() - t0, "computed")
     _save_disk(disk, key, pieces)
     return parts

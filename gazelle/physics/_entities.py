@@ -35,13 +35,22 @@ class ErrorKind(enum.StrEnum):
     """Why a request on the world failed; the bridge maps each to the services' result codes."""
 
     NAME_NOT_UNIQUE = "name_not_unique"
+    """A spawn under a name an entity already has (simulation_interfaces' SpawnEntity: NAME_NOT_UNIQUE)."""
     NAME_INVALID = "name_invalid"
+    """A name that is empty, unprintable, too long or holds ``::`` (NAME_INVALID)."""
     NOT_FOUND = "not_found"
+    """No entity (or joint, link, frame) of that name (RESULT_NOT_FOUND)."""
     INVALID_POSE = "invalid_pose"
+    """A pose that is not finite, too far, or has a zero quaternion (SpawnEntity's INVALID_POSE)."""
     BUILD_FAILED = "build_failed"
+    """The model could not be compiled into the world, or a plugin failed to configure (the reason is the reply's
+    message)."""
     INCORRECT_STATE = "incorrect_state"
+    """A request the entity cannot take in its state: a twist for a static entity."""
     DIVERGED = "diverged"
+    """The physics state went NaN or ran away."""
     OVERLOAD = "overload"
+    """MuJoCo ran out of its memory bounds (too many contacts or constraints)."""
 
 
 class WorldError(Exception):
@@ -77,7 +86,7 @@ def checked_placement(name: str, X_WM: Pose, taken: Container[str]) -> Pose:
     qn = math.sqrt(sum(v * v for v in X_WM.orientation))
     if qn < 1e-9:
         raise WorldError(ErrorKind.INVALID_POSE, f"orientation of '{name}' is a zero quaternion")
-    w, x, y, z = X_WM.orientation
+    w, x, y, z = X_WM.orientation  # normalised: a user's 0 0 0.7071 0.7071 is a rotation, only rounded
     return Pose(X_WM.position, (w / qn, x / qn, y / qn, z / qn))
 
 

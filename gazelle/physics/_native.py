@@ -46,11 +46,15 @@ _tried = False
 class ServoGroupStruct(ctypes.Structure):
     """``gz_servo_group`` of the C source (the field order is the source's)."""
 
+    # pointers are numpy arrays' data (ServoPlan keeps the arrays alive while the struct is used); sizes
+    # per field are in the C source's comments. The order here must be the C struct's, field for field.
     _fields_ = [
+        # the servos: their actuators and joints
         ("nservo", ctypes.c_int),
         ("act", ctypes.c_void_p),
         ("qadr", ctypes.c_void_p),
         ("dadr", ctypes.c_void_p),
+        # per planned cycle: the targets and velocity references; per servo: the PID and its state
         ("target", ctypes.c_void_p),
         ("velref", ctypes.c_void_p),
         ("kp", ctypes.c_void_p),
@@ -61,9 +65,11 @@ class ServoGroupStruct(ctypes.Structure):
         ("imax", ctypes.c_void_p),
         ("integral", ctypes.c_void_p),
         ("last", ctypes.c_void_p),
+        # the path check (NULL: none) and what it compares with
         ("tol_p", ctypes.c_void_p),
         ("tol_v", ctypes.c_void_p),
         ("desv", ctypes.c_void_p),
+        # what each cycle records for the controllers (the joints' state before the step) and the output
         ("nrec", ctypes.c_int),
         ("rec_qadr", ctypes.c_void_p),
         ("rec_dadr", ctypes.c_void_p),
@@ -76,10 +82,13 @@ class ServoGroupStruct(ctypes.Structure):
 
 
 def _mujoco_dir() -> Path:
+    """The installed mujoco package's folder (its headers and shared library are inside the wheel)."""
     return Path(mujoco.__file__).resolve().parent
 
 
 def _mujoco_library() -> Path | None:
+    """The MuJoCo shared library the Python bindings load, which the loop must link against (one MuJoCo
+    in the process, not two)."""
     found = sorted(_mujoco_dir().glob("libmujoco.so*"))
     return found[0] if found else None
 

@@ -35,13 +35,19 @@ class ContactPoint:
     from ``collision2`` into ``collision1``, and the penetration depth (positive when overlapping)."""
 
     collision1: str
+    """The watched side's collision (the forces act on it), scoped ``model::link::collision``."""
     collision2: str
-    """Gazebo-style scoped names: ``model::link::collision``."""
+    """The other side's collision, scoped the same way (Gazebo's naming)."""
     position: tuple[float, float, float]
+    """The contact point, world frame, metres."""
     normal: tuple[float, float, float]
+    """Unit normal, world frame, pointing from ``collision2`` into ``collision1``."""
     force: tuple[float, float, float]
+    """Force on ``collision1``, newtons, world frame."""
     torque: tuple[float, float, float]
+    """Torque on ``collision1`` about the contact point, N·m, world frame."""
     depth: float
+    """Penetration, metres (positive: overlapping)."""
 
 
 def _vec3(v: Sequence[float] | np.ndarray) -> tuple[float, float, float]:

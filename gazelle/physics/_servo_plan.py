@@ -28,6 +28,8 @@ if TYPE_CHECKING:
 
 
 def _f64(values: object, n: int) -> np.ndarray:
+    """``values`` as a fresh contiguous float64 vector of ``n`` (the native loop reads raw pointers: the
+    plan must own arrays of exactly this type and layout)."""
     return np.array(values, dtype=np.float64).reshape(n)  # a copy: the plan owns its arrays
 
 
@@ -104,6 +106,8 @@ class ServoPlan:
         """Plan ``len(target)`` cycles: per cycle, each servo's target and velocity reference (rows);
         with ``tol_p``/``tol_v`` (per servo, 0: unchecked) the block stops after the first cycle whose
         state is farther than that from (``target``, ``desv``)."""
+        # rows are cycles, columns the servos in the actuator group's order; C-contiguous float64, as the
+        # native loop indexes them (row k at k * nservo)
         m = len(target)
         self.target = np.ascontiguousarray(target, dtype=np.float64).reshape(m, self.nservo)
         self.velref = np.ascontiguousarray(velref, dtype=np.float64).reshape(m, self.nservo)
@@ -111,7 +115,7 @@ class ServoPlan:
         self.desv = np.ascontiguousarray(desv, dtype=np.float64).reshape(m, self.nservo) if checked else None
         self.tol_p = _f64(tol_p, self.nservo) if checked else None
         self.tol_v = _f64(tol_v, self.nservo) if checked else None
-        self.records = np.zeros((m, 3, self.nrec))
+        self.records = np.zeros((m, 3, self.nrec))  # per cycle: positions, velocities, actuator forces
         self.times = np.zeros(m)
         self.steps, self.cursor, self.violated = m, 0, -1
 

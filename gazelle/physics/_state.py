@@ -59,6 +59,8 @@ class WorldState(WorldQueries):
         the model's parameters as they were at the checkpoint (gains changed at run time, static bodies
         moved), in the model and in its description (a later recompile keeps them)."""
         saved: mujoco.MjModel = extras["model"]
+        # every parameter array of the saved model over the rebuilt one's (same sizes: same_structure said so),
+        # then the option, visual and statistic structs field by field; the sizes and names stay the rebuilt's
         for name in dir(saved):
             if name.startswith("_"):
                 continue
@@ -76,12 +78,16 @@ class WorldState(WorldQueries):
                     setattr(dst, field_name, getattr(src, field_name))
                 except (AttributeError, TypeError):
                     pass  # read-only or a nested struct
+        # MjData whole: the state, the warm start and every derived quantity, so the next step is the one the
+        # saved run would have taken (bit for bit)
         data = pickle.loads(extras["data"])
         mujoco.mj_copyData(self.data, self.model, data)
         self._overlap_steps = int(extras["overlap_steps"])
         self._deep = bool(extras["deep"])
         self._kinematics_stale = bool(extras["kinematics_stale"])
         self._actuator_gains = dict(extras["actuator_gains"])
+        # the gains written into the model at run time go into the spec too: the next recompile (a spawn) builds
+        # the model from the spec, and would otherwise put the spawn-time gains back
         n_g, n_b = self.model.actuator_gainprm.shape[1], self.model.actuator_biasprm.shape[1]
         for aid in range(self.model.nu):
             act = self.spec.actuator(mujoco.mj_id2name(self.model, mujoco.mjtObj.mjOBJ_ACTUATOR, aid))
@@ -119,6 +125,8 @@ class WorldState(WorldQueries):
             return None
         if np.all(np.isfinite(d.qpos)) and np.all(np.isfinite(d.qvel)) and np.all(np.abs(d.qvel) < 1e4):
             return None
+        # repair: non-finite values zeroed, each diverged free-floating entity back at its spawn pose at rest,
+        # the accelerations and MuJoCo's warm start cleared (they would carry the blow-up into the next step)
         names = self.diverged_entities() or ["<world>"]
         for name in names:
             e = self.entities.get(name)
@@ -176,6 +184,8 @@ class WorldState(WorldQueries):
         if qn < 1e-9:
             raise WorldError(ErrorKind.INVALID_POSE, "orientation is a zero quaternion")
         if e.built.free_joint is None:
+            # a static or welded entity has no degrees of freedom to set: its root body is moved in the model
+            # itself (body_pos/body_quat), and it cannot move, so a twist is refused
             if any(linear) or any(angular):
                 raise WorldError(ErrorKind.INCORRECT_STATE, f"entity '{entity}' is static; it cannot have a twist")
             bid = self.body_id(entity)
@@ -185,6 +195,8 @@ class WorldState(WorldQueries):
             return
         jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, e.built.free_joint)
         a, v = self.model.jnt_qposadr[jid], self.model.jnt_dofadr[jid]
+        # a free joint's qpos is position then a unit quaternion (wxyz), its qvel linear velocity in the world
+        # frame then angular velocity in the body frame
         self.data.qpos[a : a + 3] = pose.position
         w, x, y, z = pose.orientation
         q = (w / qn, x / qn, y / qn, z / qn)
@@ -243,6 +255,8 @@ class WorldState(WorldQueries):
         self._forward()
 
     def _spawn_root_pose(self, e: Entity) -> Pose:
+        """Where the entity's root link was placed when it was added: its model's world pose times the
+        link's pose in the model (SDF gives one; URDF's root is at the model frame)."""
         root = e.model.root_link
         link = e.model.link(root)
         return e.X_WM * (link.pose or Pose())
