@@ -78,10 +78,16 @@ class InertialDraft:
     """An ``<inertial>`` as written, with what is wrong with it."""
 
     element: etree._Element
+    """The ``<inertial>`` element, for diagnostics."""
     pose: Pose
+    """``<origin>``: the centre of mass and the inertia's axes in the link frame."""
     mass: float | None
+    """``<mass value>``, kg; None when missing or not a number (a problem says which)."""
     tensor: tuple[float, float, float, float, float, float] | None
+    """``<inertia>``'s ixx, ixy, ixz, iyy, iyz, izz (kg·m²); None when unreadable."""
     problems: list[tuple[ErrorCode, str, SourceLocation]] = field(default_factory=list)
+    """What is wrong with it (no mass, a tensor that is not physical, ...), each with its location: the finishing
+    pass derives an inertia and warns with these."""
 
 
 @dataclass
@@ -89,15 +95,27 @@ class LinkDraft:
     """A link while the document is being read (mutable until :func:`._urdf_checks.finish_link`)."""
 
     name: str
+    """The link's name."""
     element: etree._Element
+    """The ``<link>`` element."""
     location: SourceLocation
+    """Where the link is written (file:line), the xacro file's when it came from one."""
     visuals: list[Visual] = field(default_factory=list)
+    """Its visuals, in document order."""
     collisions: list[Collision] = field(default_factory=list)
+    """Its collisions, in document order (unnamed ones are numbered)."""
     inertial: InertialDraft | None = None
+    """Its ``<inertial>`` as written; None: none (see ``_urdf_checks.drop_massless_links``)."""
     sensors: list[Sensor] = field(default_factory=list)
+    """Sensors from ``<gazebo reference=link><sensor>`` blocks."""
     surface: dict[str, object] = field(default_factory=dict)
+    """Surface fields from ``<gazebo reference=link>`` (mu1, mu2, kp, kd, ...), applied to every collision of the
+    link."""
     flags: dict[str, bool] = field(default_factory=dict)
+    """Link flags from ``<gazebo reference=link>`` (gravity, kinematic, self_collide)."""
     gazebo_material: str | None = None
+    """``<gazebo reference=link><material>``: a Gazebo classic material script name (Gazebo/Red), which Gazebo draws
+    instead of the URDF colour."""
 
 
 @dataclass
@@ -105,14 +123,23 @@ class UrdfDocument:
     """Everything read from the ``<robot>`` element."""
 
     name: str
+    """``<robot name>``."""
     links: dict[str, LinkDraft] = field(default_factory=dict)
+    """Links by name, in document order."""
     joints: dict[str, Joint] = field(default_factory=dict)
+    """Joints by name, in document order."""
     materials: dict[str, Material] = field(default_factory=dict)
+    """Top-level named ``<material>``s, which a visual may name without defining."""
     plugins: list[Plugin] = field(default_factory=list)
+    """``<gazebo><plugin>``s of the whole robot (no reference)."""
     gazebo: list[GazeboExtension] = field(default_factory=list)
+    """Every ``<gazebo>`` block, kept whole."""
     transmissions: list[ConfigElement] = field(default_factory=list)
+    """``<transmission>`` blocks, kept as written (ROS 1's ros_control; not simulated)."""
     ros2_control: list[etree._Element] = field(default_factory=list)
+    """``<ros2_control>`` blocks, read after the links and joints (they name them)."""
     model_flags: dict[str, bool] = field(default_factory=dict)
+    """Robot-wide flags from ``<gazebo>`` without a reference (static, self_collide)."""
 
 
 # --------------------------------------------------------------------------- reader
@@ -128,9 +155,13 @@ class ElementReader:
     """Reads URDF elements, reporting problems with their source location."""
 
     source: str
+    """The document's name in diagnostics (its file, or ``<string>``)."""
     sink: DiagnosticSink
+    """Where every problem goes."""
     resolver: ResourceResolver
+    """Finds ``package://`` and ``model://`` URIs on the resource roots."""
     base_dir: str | None
+    """The folder relative mesh paths resolve against (None for a string)."""
 
     # ---- reporting
     def loc(self, element: etree._Element) -> SourceLocation:
@@ -222,6 +253,8 @@ class ElementReader:
         origin = parent.find("origin")
         if origin is None:
             return Pose()
+        # URDF's rpy: fixed-axis roll, then pitch, then yaw (R = Rz·Ry·Rx), radians; a bad value is reported
+        # by floats3 and read as zero
         xyz = self.floats3(origin, "xyz", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0)
         rpy = self.floats3(origin, "rpy", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0)
         return Pose.from_xyz_rpy(xyz, rpy)
@@ -285,7 +318,7 @@ class ElementReader:
         scale = self.floats3(element, "scale", (1.0, 1.0, 1.0))
         if scale is None:
             return None
-        if 0.0 in scale:
+        if 0.0 in scale:  # a negative scale mirrors the mesh (allowed); a zero one flattens it to nothing
             self.error(
                 ErrorCode.GEOMETRY_INVALID, f"{what} scale must not be zero, got {element.get('scale')!r}", element
             )
@@ -294,6 +327,8 @@ class ElementReader:
 
     def mesh_path(self, element: etree._Element, uri: str) -> str | None:
         """The absolute file of a mesh URI, or None after a URI_UNRESOLVED / MESH_NOT_FOUND warning."""
+        # a relative mesh path is relative to the file that wrote it: a xacro include's own folder, which the
+        # element's location names, else the document's
         loc = self.loc(element)
         base = os.path.dirname(loc.file) if loc.file != self.source and not loc.file.startswith("<") else self.base_dir
         try:
@@ -318,6 +353,8 @@ class ElementReader:
         name = element.get("name", "")
         color_el, texture_el = element.find("color"), element.find("texture")
         self.check_children(element, f"material '{name}'")
+        # a <material name="blue"/> with no colour refers to a robot-level <material> of that name (urdfdom's
+        # rule); one defined nowhere is warned about and draws in the default colour
         if color_el is None and texture_el is None:
             if name in named:
                 return named[name]
@@ -345,7 +382,7 @@ class ElementReader:
             collision = self.collision(el, name, i)
             if collision is not None:
                 draft.collisions.append(collision)
-        inertials = element.findall("inertial")
+        inertials = element.findall("inertial")  # URDF allows one; a second is a slip, said and left out
         if len(inertials) > 1:
             self.warn(
                 ErrorCode.ELEMENT_UNSUPPORTED,
@@ -359,6 +396,8 @@ class ElementReader:
     def shape_header(self, element: etree._Element, link: str, index: int) -> tuple[str, str, Pose, Geometry | None]:
         """Name, description, pose and geometry shared by ``<visual>`` and ``<collision>``."""
         kind = local_name(element)
+        # an unnamed shape is named by its link, kind and place: names must be unique for Gazebo's scoped
+        # collision names (contact sensors, ``model::link::collision``), and URDF does not require one
         name = element.get("name") or f"{link}_{kind}_{index}"
         what = f"{kind} '{name}' of link '{link}'"
         self.check_children(element, what)
@@ -431,6 +470,7 @@ class ElementReader:
         axis = self.axis(element, name, jtype)
         if parent is None or child is None or (jtype in _AXIS_JOINTS and axis is None):
             return None
+        # in URDF the child link's frame is the joint frame: origin is X_PJ and the child offset stays the identity
         return Joint(
             name=name,
             type=jtype,
@@ -457,6 +497,7 @@ class ElementReader:
         """The normalised axis with limit and dynamics (None for fixed/floating, or after an error)."""
         if jtype not in _AXIS_JOINTS:
             return None
+        # URDF's default axis is x (1 0 0), in the joint frame (the joint's <origin>), unlike SDF's z
         axis_el = element.find("axis")
         xyz: Vec3 | None = (1.0, 0.0, 0.0)
         if axis_el is not None:
@@ -471,7 +512,7 @@ class ElementReader:
                 axis_el if axis_el is not None else element,
             )
             return None
-        return JointAxis(
+        return JointAxis(  # urdfdom normalises the axis too: "0 0 2" is the z axis
             (xyz[0] / norm, xyz[1] / norm, xyz[2] / norm),
             limit=self.limit(element, joint, jtype),
             dynamics=self.optional(element, "dynamics", self.dynamics) or JointDynamics(),
@@ -501,6 +542,7 @@ class ElementReader:
 
     def dynamics(self, element: etree._Element) -> JointDynamics:
         """``<dynamics damping friction>``."""
+        # urdfdom's defaults: no damping, no friction; URDF has no spring (SDF's <spring_stiffness> does)
         v = self.numbers(element, ("damping", "friction"))
         return JointDynamics(damping=v.get("damping", 0.0), friction=v.get("friction", 0.0))
 
