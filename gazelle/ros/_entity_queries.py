@@ -241,24 +241,19 @@ class EntityQueries:
 
     def get_entities_states(self, req: GetEntitiesStates.Request, res: GetEntitiesStates.Response) -> Any:
         """GetEntitiesStates: the states of the filtered entities, in one sim-thread call."""
-        try:
-            pattern, cats = self._compile_filters(req.filters)
-        except _Refused as err:
-            res.result = _result(err.code, str(err))
-            return res
 
-        try:
-            wanted = _matching(pattern, self._names_in(cats))
-        except _Refused as err:
-            res.result = _result(err.code, str(err))
-            return res
+        def states() -> tuple[list[str], list[EntityState]]:
+            wanted = self._select(req.filters)  # the names matched off the sim thread, bounded in time
 
-        def do() -> tuple[list[str], list[EntityState]]:
-            names = [n for n in wanted if n in self.sim.world.entities]
-            return names, [self._state_msg(n) for n in names]
+            def do() -> tuple[list[str], list[EntityState]]:
+                names = [n for n in wanted if n in self.sim.world.entities]  # one deleted meanwhile is left out
+                return names, [self._state_msg(n) for n in names]
 
-        res.entities, res.states = self.sim.call(do)
-        res.result = _result(OK)
+            return self.sim.call(do)
+
+        res.result, found = _attempt(states)
+        if found is not None:
+            res.entities, res.states = found
         return res
 
     def set_entity_state(self, req: SetEntityState.Request, res: SetEntityState.Response) -> Any:

@@ -8,6 +8,7 @@ import time
 import warnings
 from typing import Any
 
+from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 
 from ..description import reply_text
@@ -79,8 +80,6 @@ def serve_action(node: Any, action_type: Any, name: str, execute: Any, callback_
     """An rclpy ActionServer for ``action_type`` on ``name``: ``execute`` runs an accepted goal, ``accept(goal)``
     says whether a goal is taken (None: every goal, as MoveIt's and simulation_interfaces' servers do), and a
     cancel request is always accepted (the execute callback decides how the goal ends)."""
-    from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
-
     return ActionServer(
         node,
         action_type,
