@@ -280,10 +280,15 @@ def plugin_factories() -> dict[str, Callable[[], System]]:
     return out
 
 
+def system_class(plugin: Plugin) -> type[System] | None:
+    """The system class that runs a model or world ``<plugin>`` (by its file name, else its name), or None."""
+    registry = _registry()
+    return registry.get(normalised(plugin.filename)) or registry.get(normalised(plugin.name))
+
+
 def create_system(plugin: Plugin) -> System | None:
     """A new system for ``plugin``, or None if unsupported (:func:`audit_model` says why)."""
-    registry = _registry()
-    cls = registry.get(normalised(plugin.filename)) or registry.get(normalised(plugin.name))
+    cls = system_class(plugin)
     return cls() if cls is not None else None
 
 

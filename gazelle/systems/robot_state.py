@@ -65,16 +65,11 @@ def robot_state_config(entity: Entity, log: logging.Logger) -> tuple[RobotStateC
 
 def gz_scoped_frames(model: Model) -> bool:
     """Whether a gz-sim DiffDrive of ``model`` uses its default, model-scoped frames (no ``<child_frame_id>``).
-    The plugin's names are the DiffDrive class's own declaration (every gz and Ignition spelling)."""
-    from ._registry import normalised, plugin_names
+    A plugin is a DiffDrive when the registry runs it as one (every gz and Ignition spelling)."""
+    from ._registry import system_class
     from .gz_diff_drive import GzDiffDrive
 
-    names = frozenset(plugin_names(GzDiffDrive))
-    for p in model.plugins:
-        if normalised(p.filename) in names or p.name.strip() in names:
-            if p.config is None or p.config.find("child_frame_id") is None:
-                return True
-    return False
+    return any(system_class(p) is GzDiffDrive and p.config.find("child_frame_id") is None for p in model.plugins)
 
 
 def entity_frame_prefix(entity: Entity, log: logging.Logger) -> str:
