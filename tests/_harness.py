@@ -154,10 +154,13 @@ class RosClient:
         self._thread.start()
 
     def _spin(self) -> None:
+        from rclpy.executors import ExternalShutdownException, ShutdownException
+
         try:
             self.executor.spin()
-        except Exception:
-            pass
+        except (ExternalShutdownException, ShutdownException):
+            pass  # close() (or the end of the session) shut the context down under the spin
+        # anything else a callback raised ends the thread loudly (pytest reports an unhandled thread exception)
 
     def client(self, srv_type: Any, name: str, timeout: float = 15.0) -> Any:
         """A service client, created once per (type, name) and ready to call."""
