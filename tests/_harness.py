@@ -150,16 +150,21 @@ class RosClient:
         self.executor.add_node(self.node)
         self._lock = threading.Lock()
         self._clients: dict[tuple[Any, str], Any] = {}
+        self._closing = False
         self._thread = threading.Thread(target=self._spin, daemon=True)
         self._thread.start()
 
     def _spin(self) -> None:
+        from rclpy._rclpy_pybind11 import InvalidHandle
         from rclpy.executors import ExternalShutdownException, ShutdownException
 
         try:
             self.executor.spin()
         except (ExternalShutdownException, ShutdownException):
             pass  # close() (or the end of the session) shut the context down under the spin
+        except InvalidHandle:
+            if not self._closing:  # close() destroying the executor's guard condition mid-spin is its end
+                raise
         # anything else a callback raised ends the thread loudly (pytest reports an unhandled thread exception)
 
     def client(self, srv_type: Any, name: str, timeout: float = 15.0) -> Any:
@@ -212,6 +217,7 @@ class RosClient:
         return res
 
     def close(self) -> None:
+        self._closing = True
         self.executor.shutdown(timeout_sec=2.0)
         self._thread.join(5.0)  # a thread left inside rclpy at interpreter exit aborts the process
         self.node.destroy_node()
