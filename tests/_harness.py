@@ -44,9 +44,11 @@ class Proc:
     name: str
     lines: list[str] = field(default_factory=list)
     _cond: threading.Condition = field(default_factory=threading.Condition)
+    _reader: threading.Thread | None = None
 
     def start_reader(self) -> None:
-        threading.Thread(target=collect_lines, args=(self.popen, self.lines, self._cond), daemon=True).start()
+        self._reader = threading.Thread(target=collect_lines, args=(self.popen, self.lines, self._cond), daemon=True)
+        self._reader.start()
 
     def wait_line(self, needle: str, timeout: float) -> str:
         deadline = time.monotonic() + timeout
@@ -75,13 +77,40 @@ class Proc:
         try:
             return self.popen.wait(timeout)
         except subprocess.TimeoutExpired:
-            self.popen.kill()
+            dump_stacks_and_kill(self.popen)
+            if self._reader is not None:
+                self._reader.join(5.0)  # it has read the dumped stacks when it ends at the pipe's end
             pytest.fail(f"{self.name} did not exit within {timeout:g} s:\n" + self.output)
 
     def interrupt(self, timeout: float = 15.0) -> int:
         if self.popen.poll() is None:
             self.popen.send_signal(signal.SIGINT)
         return self.wait(timeout)
+
+
+def dump_stacks_and_kill(popen: subprocess.Popen) -> None:
+    """End a child that hung: SIGABRT first, on which a Python child (``PYTHONFAULTHANDLER``, set by
+    ``ros_env``) prints every thread's stack to its stderr, so the failure says where it hung; then SIGKILL."""
+    if popen.poll() is None:
+        popen.send_signal(signal.SIGABRT)
+        try:
+            popen.wait(5.0)
+        except subprocess.TimeoutExpired:
+            popen.kill()
+            popen.wait(5.0)
+
+
+def run_or_dump(cmd: list[str], timeout: float, cwd: Path | None = None) -> subprocess.CompletedProcess:
+    """``subprocess.run(cmd, capture_output=True, text=True)``; a command that does not end within
+    ``timeout`` s fails the test with its output and its threads' stacks (see :func:`dump_stacks_and_kill`)."""
+    with subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=cwd) as p:
+        try:
+            out, err = p.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            dump_stacks_and_kill(p)
+            out, err = p.communicate()
+            pytest.fail(f"{' '.join(cmd)} did not end within {timeout:g} s:\n{out}\n{err}")
+    return subprocess.CompletedProcess(cmd, p.returncode, out, err)
 
 
 def start(cmd: list[str], name: str, env: dict[str, str] | None = None, *, stdin: bool = False) -> Proc:
@@ -155,16 +184,16 @@ class RosClient:
         self._thread.start()
 
     def _spin(self) -> None:
-        from rclpy._rclpy_pybind11 import InvalidHandle
+        """Spin until close() asks it to stop. close() shuts the executor down only after this thread has
+        ended: rclpy's Executor.shutdown destroys the guard condition and drops the callback generator under
+        a spinning thread, which then raises whatever it meets (InvalidHandle, TypeError), not a shutdown."""
         from rclpy.executors import ExternalShutdownException, ShutdownException
 
         try:
-            self.executor.spin()
+            while not self._closing:
+                self.executor.spin_once(timeout_sec=0.1)
         except (ExternalShutdownException, ShutdownException):
-            pass  # close() (or the end of the session) shut the context down under the spin
-        except InvalidHandle:
-            if not self._closing:  # close() destroying the executor's guard condition mid-spin is its end
-                raise
+            pass  # the end of the session shut the context down under the spin
         # anything else a callback raised ends the thread loudly (pytest reports an unhandled thread exception)
 
     def client(self, srv_type: Any, name: str, timeout: float = 15.0) -> Any:
@@ -218,8 +247,8 @@ class RosClient:
 
     def close(self) -> None:
         self._closing = True
-        self.executor.shutdown(timeout_sec=2.0)
         self._thread.join(5.0)  # a thread left inside rclpy at interpreter exit aborts the process
+        self.executor.shutdown(timeout_sec=2.0)
         self.node.destroy_node()
         if self.context.ok():
             rclpy.shutdown(context=self.context)
@@ -242,10 +271,14 @@ def xacro_to_urdf(path: Path) -> str:
 @pytest.fixture(scope="session", autouse=True)
 def ros_env() -> Iterator[dict[str, str]]:
     """A unique ROS_DOMAIN_ID for this test run, discovery limited to localhost."""
-    saved = {k: os.environ.get(k) for k in ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE", "RMW_IMPLEMENTATION")}
+    saved = {
+        k: os.environ.get(k)
+        for k in ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE", "RMW_IMPLEMENTATION", "PYTHONFAULTHANDLER")
+    }
     os.environ["ROS_DOMAIN_ID"] = str(reserved_domain_id())
     os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
     os.environ["RMW_IMPLEMENTATION"] = "rmw_fastrtps_cpp"
+    os.environ["PYTHONFAULTHANDLER"] = "1"  # a child that hangs prints its stacks on SIGABRT (dump_stacks_and_kill)
     yield dict(os.environ)
     for k, v in saved.items():
         if v is None:

@@ -13,7 +13,7 @@ import threading
 from pathlib import Path
 
 import pytest
-from _harness import GAZELLE, start, wait_for
+from _harness import GAZELLE, run_or_dump, start, wait_for
 from _paths import REAL as FIXTURES
 from _paths import REPO
 from control_msgs.action import FollowJointTrajectory
@@ -293,7 +293,7 @@ def test_a_namespaced_panda_closes_its_gripper_through_the_gripper_action(sim_fa
 
 def _ros2_control(*args: str) -> subprocess.CompletedProcess:
     ros2 = str(Path(sys.prefix) / "bin" / "ros2")
-    return subprocess.run([ros2, "control", *args], capture_output=True, text=True, timeout=60)
+    return run_or_dump([ros2, "control", *args], 60)
 
 
 @pytest.mark.slow

@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from _harness import GAZELLE, SEED_XACRO, start, wait_for
+from _harness import GAZELLE, SEED_XACRO, run_or_dump, start, wait_for
 from nav_msgs.msg import Odometry
 from rclpy.serialization import deserialize_message
 from websockets.exceptions import InvalidStatus
@@ -31,7 +31,7 @@ MESSAGE_DATA = 0x01
 
 
 def ros2(*args: str, timeout: float = 60, cwd: Path | None = None) -> subprocess.CompletedProcess:
-    return subprocess.run([ROS2, *args], capture_output=True, text=True, timeout=timeout, cwd=cwd)
+    return run_or_dump([ROS2, *args], timeout, cwd)
 
 
 def _free_port() -> int:

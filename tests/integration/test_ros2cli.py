@@ -11,14 +11,14 @@ from pathlib import Path
 
 import pytest
 import yaml
-from _harness import GAZELLE, SEED_XACRO, start, wait_for
+from _harness import GAZELLE, SEED_XACRO, run_or_dump, start, wait_for
 from rosgraph_msgs.msg import Clock
 
 ROS2 = str(Path(sys.prefix) / "bin" / "ros2")
 
 
 def ros2(*args: str, timeout: float = 60) -> subprocess.CompletedProcess:
-    return subprocess.run([ROS2, *args], capture_output=True, text=True, timeout=timeout)
+    return run_or_dump([ROS2, *args], timeout)
 
 
 def ros2_many(commands: dict[str, tuple[str, ...]], at_once: int = 13) -> dict[str, subprocess.CompletedProcess]:
