@@ -1046,3 +1046,126 @@ def test_air_pressure_noise_and_its_variance_as_gz_sensors_reports_it_and_the_ro
     assert msg.fluid_pressure == readings[-1].fluid_pressure and msg.variance == pytest.approx(2.0)
     assert msg.header.frame_id == "baro::l::p"
     assert msg.header.stamp.sec + 1e-9 * msg.header.stamp.nanosec == pytest.approx(readings[-1].stamp_sec)
+
+
+def _gz_imu_box(imu: str = "", topic: str = "imu") -> str:
+    """The IMU box with no gazebo_ros plugin: gz-sim's Imu system runs it (on ``<topic>``)."""
+    return f"""<?xml version="1.0"?>
+<sdf version="1.9"><model name="imu_box">
+  <link name="body">
+    <inertial><mass>1.0</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.02</izz></inertia></inertial>
+    <collision name="c"><geometry><box><size>0.4 0.4 0.1</size></box></geometry></collision>
+    <sensor name="imu" type="imu"><update_rate>100</update_rate><topic>{topic}</topic>{imu}</sensor>
+  </link>
+</model></sdf>"""
+
+
+def _yaw(q) -> float:
+    return 2.0 * math.atan2(q[3], q[0])
+
+
+def _turned_imu(make_sim, xml: str, spawn_yaw: float, turn: float):
+    """Spawn ``xml`` floating (no gravity) at ``spawn_yaw``, step, turn it by ``turn`` about z, step again:
+    the IMU system and its message after the turn."""
+    from gazelle.description import quat_from_rpy
+
+    world = dataclasses.replace(default_world(), gravity=(0.0, 0.0, 0.0))
+    sim = make_sim(world)
+    pose = Pose((0.0, 0.0, 1.0), quat_from_rpy(0.0, 0.0, spawn_yaw))
+    sim.step(10)  # the world runs a while before the spawn: the reference is the spawn pose, not the world's start
+    entity = _spawn(sim, xml, "imu_box", pose)
+    imu = next(s for s in entity.systems if isinstance(s, ImuSensor))
+    got = _record(sim, "/imu")
+    sim.step(20)
+    first: Imu = got[-1]
+    sim.world.set_entity_state("imu_box", Pose((0.0, 0.0, 1.0), quat_from_rpy(0.0, 0.0, spawn_yaw + turn)))
+    sim.step(20)
+    return imu, first, got[-1]
+
+
+def test_a_gz_sim_imu_reports_its_orientation_relative_to_where_it_was_spawned(make_sim):
+    """gz-sim's Imu system (gz-sim8 src/systems/imu/Imu.cc AddSensor) sets the sensor's orientation reference
+    to its world orientation when it is created: without <orientation_reference_frame>, a robot spawned
+    facing +y reads the identity, and a turn of 30° reads 30°."""
+    _imu, first, turned = _turned_imu(make_sim, _gz_imu_box(), math.pi / 2, math.radians(30))
+    assert np.allclose(first.orientation, (1.0, 0.0, 0.0, 0.0), atol=1e-6)
+    assert _yaw(turned.orientation) == pytest.approx(math.radians(30), abs=1e-6)
+
+
+@pytest.mark.parametrize(
+    ("frame", "reference_rpy"),
+    [
+        ("<localization>ENU</localization>", (0.0, 0.0, 0.0)),
+        # gz-sensors ImuSensor.cc SetWorldFrameOrientation's table: ENU -> NED is rpy (pi, 0, pi/2), NWU (0, 0, pi/2)
+        ("<localization>NED</localization>", (math.pi, 0.0, math.pi / 2)),
+        ("<localization>NWU</localization>", (0.0, 0.0, math.pi / 2)),
+        (
+            "<localization>CUSTOM</localization><custom_rpy parent_frame='world'>0.1 0.2 0.3</custom_rpy>",
+            (0.1, 0.2, 0.3),
+        ),
+    ],
+)
+def test_a_gz_sim_imu_with_an_orientation_reference_frame_reports_against_it(make_sim, frame, reference_rpy):
+    """With <orientation_reference_frame> (and heading 0), the reference is the world's ENU frame turned by the
+    named frame's rotation: the orientation is reference⁻¹ · the sensor's world orientation."""
+    from gazelle.description import quat_conj, quat_from_rpy, quat_mul
+
+    xml = _gz_imu_box(f"<imu><orientation_reference_frame>{frame}</orientation_reference_frame></imu>")
+    spawn_yaw, turn = math.pi / 2, math.radians(30)
+    _imu, _first, turned = _turned_imu(make_sim, xml, spawn_yaw, turn)
+    expected = quat_mul(quat_conj(quat_from_rpy(*reference_rpy)), quat_from_rpy(0.0, 0.0, spawn_yaw + turn))
+    dot = abs(sum(a * b for a, b in zip(turned.orientation, expected)))
+    assert dot == pytest.approx(1.0, abs=1e-9), (turned.orientation, expected)
+
+
+def test_a_gz_sim_imu_reference_gz_does_not_simulate_is_named_and_the_spawn_pose_stays_the_reference(caplog, make_sim):
+    """gz-sensors warns about a CUSTOM frame whose parent is not 'world' and takes GRAV_UP/GRAV_DOWN as no
+    frame: both keep the spawn pose as the reference; gazelle names them instead of dropping them silently."""
+    for frame, said in (
+        ("<localization>CUSTOM</localization><custom_rpy parent_frame='base'>0 0 1</custom_rpy>", "parent_frame"),
+        ("<localization>GRAV_UP</localization>", "GRAV_UP"),
+    ):
+        caplog.clear()
+        xml = _gz_imu_box(f"<imu><orientation_reference_frame>{frame}</orientation_reference_frame></imu>")
+        with caplog.at_level(logging.WARNING):
+            _imu, first, turned = _turned_imu(make_sim, xml, math.pi / 2, math.radians(30))
+        assert any(
+            said in r.getMessage() and "orientation_reference_frame" in r.getMessage() for r in caplog.records
+        ), [r.getMessage() for r in caplog.records]
+        assert np.allclose(first.orientation, (1.0, 0.0, 0.0, 0.0), atol=1e-6)
+        assert _yaw(turned.orientation) == pytest.approx(math.radians(30), abs=1e-6)
+
+
+def test_a_gz_sim_imu_with_orientation_disabled_sends_no_orientation(make_sim):
+    """<enable_orientation>false</enable_orientation>: gz-sensors leaves the message's orientation unset, which
+    arrives in ROS as four zeros (ros_gz_bridge copies the unset quaternion's fields)."""
+    xml = _gz_imu_box("<imu><enable_orientation>false</enable_orientation></imu>")
+    _imu, first, turned = _turned_imu(make_sim, xml, math.pi / 2, math.radians(30))
+    assert first.orientation == (0.0, 0.0, 0.0, 0.0) and turned.orientation == (0.0, 0.0, 0.0, 0.0)
+
+
+def test_a_gazebo_ros_imu_reports_against_the_world_unless_asked_for_its_initial_orientation(caplog, make_sim):
+    """gazebo_ros_imu_sensor.cpp (ros2 branch): the world is the reference (REP 145) unless
+    <initial_orientation_as_reference> is true (ROS 1's spelling: <initialOrientationAsReference>)."""
+    world_ref = _imu_box(offset="0 0 0 0 0 0").replace("<frame_name>", "<topic>unused</topic><frame_name>")
+    for option, expected_first in (
+        ("", math.pi / 2),
+        ("<initial_orientation_as_reference>true</initial_orientation_as_reference>", 0.0),
+        ("<initialOrientationAsReference>true</initialOrientationAsReference>", 0.0),
+    ):
+        xml = world_ref.replace("<frame_name>", option + "<frame_name>").replace("~/out:=imu", "~/out:=/imu")
+        xml = xml.replace("<ros><namespace>/demo</namespace>", "<ros>")
+        _imu, first, turned = _turned_imu(make_sim, xml, math.pi / 2, math.radians(30))
+        assert _yaw(first.orientation) == pytest.approx(expected_first, abs=1e-6), option
+        assert _yaw(turned.orientation) == pytest.approx(expected_first + math.radians(30), abs=1e-6), option
+
+
+def test_a_gazebo_ros_imu_names_the_gz_reference_elements_it_does_not_apply(caplog, make_sim):
+    extra = "<imu><enable_orientation>false</enable_orientation><orientation_reference_frame>"
+    extra += "<localization>NED</localization></orientation_reference_frame></imu>"
+    with caplog.at_level(logging.WARNING):
+        entity = _spawn(make_sim(), _imu_box(extra), "imu_box", Pose((0.0, 0.0, 0.05)))
+    said = " ".join(r.getMessage() for r in caplog.records)
+    assert "<orientation_reference_frame> is not applied" in said and "<enable_orientation> is not applied" in said
+    imu = next(s for s in entity.systems if isinstance(s, ImuSensor))
+    assert imu.reference.fixed == (1.0, 0.0, 0.0, 0.0) and imu.reference.enabled

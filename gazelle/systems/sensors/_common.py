@@ -225,7 +225,8 @@ class SensorPluginConfig:
     min_intensity: float = -math.inf
     """Intensities below it are raised to it (gazelle's rays have intensity 0: no laser_retro yet)."""
     initial_orientation_as_reference: bool = False
-    """IMU: report orientation relative to the first reading instead of the world."""
+    """IMU (``<initial_orientation_as_reference>``, ROS 1: ``<initialOrientationAsReference>``): report the
+    orientation relative to the sensor's spawn orientation instead of the world (REP 145's reference)."""
     topic: str = "~/out"
     """``~/out`` in ROS 2 (rename it with ``<ros><remapping>~/out:=scan``); ROS 1: ``<topicName>``."""
     body_name: str = ""
@@ -257,7 +258,14 @@ def parse_plugin_config(ctx: SystemContext) -> SensorPluginConfig:
         frame_name=child_text(cfg, "frame_name") or child_text(cfg, "frameName") or "",
         radiation_type=(child_text(cfg, "radiation_type") or "infrared").strip().lower(),
         min_intensity=parse_float(cfg, "min_intensity", -math.inf, log),
-        initial_orientation_as_reference=parse_bool(cfg, "initial_orientation_as_reference", False, log),
+        initial_orientation_as_reference=parse_bool(
+            cfg,
+            "initial_orientation_as_reference"
+            if cfg.find("initialOrientationAsReference") is None
+            else "initialOrientationAsReference",  # ROS 1's gazebo_ros_imu_sensor spelling
+            False,
+            log,
+        ),
         topic=child_text(cfg, "topicName") or "~/out",
         body_name=child_text(cfg, "bodyName") or child_text(cfg, "body_name") or "",
         update_rate=parse_float(cfg, "updateRate", 0.0, log),

@@ -1,9 +1,24 @@
 """IMUs: orientation, angular velocity in the sensor frame and proper linear acceleration (+g upwards at
-rest), with Gaussian noise and biases as gz-sensors draws them (sensor_msgs/Imu)."""
+rest), with Gaussian noise and biases as gz-sensors draws them (sensor_msgs/Imu).
+
+The orientation is reported against a reference frame, which differs between the two Gazebos:
+
+* **gz-sim** (no gazebo_ros plugin; gz-sim8 ``src/systems/imu/Imu.cc`` ``AddSensor`` with gz-sensors
+  ``src/ImuSensor.cc``): the sensor's own world orientation when it was created (its spawn pose), so a
+  robot spawned facing +y reads the identity. ``<imu><orientation_reference_frame>`` with
+  ``<localization>`` ENU, NED or NWU makes it the world's ENU frame (turned by the world's
+  ``<heading_deg>``) times that frame's rotation; CUSTOM with ``<custom_rpy parent_frame="world">`` the
+  world's times ``custom_rpy``. ``<enable_orientation>false`` leaves the orientation unset (four zeros
+  once bridged).
+* **gazebo_ros_imu_sensor** (Classic, ros2 branch ``gazebo_plugins/src/gazebo_ros_imu_sensor.cpp``): the
+  world (REP 145), unless ``<initial_orientation_as_reference>`` is true (ROS 1:
+  ``<initialOrientationAsReference>``), which takes the spawn orientation as gz-sim does.
+"""
 
 from __future__ import annotations
 
 import logging
+import math
 from dataclasses import dataclass
 from typing import ClassVar
 
@@ -11,14 +26,16 @@ import numpy as np
 
 from ...description import (
     ConfigElement,
+    Quat,
     Sensor,
     quat_conj,
+    quat_from_rpy,
     quat_mul,
 )
 from ...physics import PhysicsWorld
 from .._base import SystemContext, UpdateInfo
 from .._payloads import Imu, Vec3
-from .._plugin_config import child_text, parse_float
+from .._plugin_config import child_text, parse_bool, parse_float
 from ._common import (
     NOISE_ROWS,
     Noise,
@@ -69,6 +86,79 @@ def parse_imu_noise(sensor: Sensor | None, plugin_cfg: ConfigElement | None, log
     return ImuNoise()
 
 
+_NAMED_FRAMES: dict[str, Quat] = {
+    "ENU": (1.0, 0.0, 0.0, 0.0),
+    "NED": quat_from_rpy(math.pi, 0.0, math.pi / 2),
+    "NWU": quat_from_rpy(0.0, 0.0, math.pi / 2),
+}
+"""gz-sensors ImuSensor.cc ``SetWorldFrameOrientation``: each named frame's rotation from the world's ENU
+frame (gz-sim hands the world over as ENU)."""
+
+
+@dataclass(frozen=True)
+class OrientationReference:
+    """What an IMU's orientation is reported against: a fixed frame in the world (``fixed``), or, when
+    ``fixed`` is None, the sensor's own orientation at the first step it runs (its spawn pose)."""
+
+    fixed: Quat | None = None
+    """The reference's world orientation (wxyz); None: the spawn orientation."""
+    enabled: bool = True
+    """False: no orientation is reported (``<enable_orientation>false``: four zeros)."""
+
+
+def gz_orientation_reference(sensor: Sensor | None, heading_deg: float, log: logging.Logger) -> OrientationReference:
+    """gz-sim's reference for an IMU run by its Imu system (see the module's docstring); a reference
+    gz-sensors does not apply either (CUSTOM on another parent, GRAV_UP, GRAV_DOWN, a misspelling) is named
+    in a warning, and the spawn orientation stays the reference, as in gz-sim."""
+    imu = _imu_block(sensor)
+    enabled = parse_bool(imu, "enable_orientation", True, log)
+    frame = imu.find("orientation_reference_frame") if imu is not None else None
+    if frame is None:
+        return OrientationReference(None, enabled)
+    where = f"{frame.location}: " if frame.location else ""
+    heading = quat_from_rpy(0.0, 0.0, math.radians(heading_deg))  # Imu.cc: the world's heading offset, about z
+    localization = (child_text(frame, "localization") or "CUSTOM").strip()  # sdf/1.11/imu.sdf's default
+    if localization in _NAMED_FRAMES:
+        return OrientationReference(quat_mul(heading, _NAMED_FRAMES[localization]), enabled)
+    if localization == "CUSTOM":
+        rpy = frame.find("custom_rpy")
+        parent = rpy.attr("parent_frame", "") if rpy is not None else ""
+        if rpy is not None and parent == "world":
+            values = parse_vec3(rpy.text, (0.0, 0.0, 0.0))
+            if values is not None:
+                return OrientationReference(quat_mul(heading, quat_from_rpy(*values)), enabled)
+            log.warning(f"{where}IMU <custom_rpy> must be three numbers, got {rpy.text.strip()!r} (rpy is 0 0 0)")
+            return OrientationReference(heading, enabled)
+        log.warning(
+            f"{where}IMU <orientation_reference_frame> CUSTOM with <custom_rpy parent_frame={parent!r}>: "
+            "gz-sensors takes only parent_frame 'world'; the orientation is relative to the sensor's spawn pose"
+        )
+        return OrientationReference(None, enabled)
+    log.warning(
+        f"{where}IMU <orientation_reference_frame> <localization> {localization!r} is not one gz-sensors applies "
+        "(ENU, NED, NWU, CUSTOM); the orientation is relative to the sensor's spawn pose"
+    )
+    return OrientationReference(None, enabled)
+
+
+def _imu_block(sensor: Sensor | None) -> ConfigElement | None:
+    """The ``<imu>`` element of a ``<sensor>``, if any."""
+    config = sensor.config if sensor is not None else None
+    return config.find("imu") if config is not None else None
+
+
+def parse_vec3(text: str, default: tuple[float, float, float]) -> tuple[float, float, float] | None:
+    """Three numbers separated by spaces; ``default`` for an empty text; None when not three numbers."""
+    parts = text.split()
+    if not parts:
+        return default
+    try:
+        x, y, z = (float(v) for v in parts)
+    except ValueError:
+        return None
+    return x, y, z
+
+
 @sensor_system
 class ImuSensor(_SensorSystem):
     """An IMU: orientation, angular velocity and proper linear acceleration (sensor_msgs/Imu)."""
@@ -84,8 +174,10 @@ class ImuSensor(_SensorSystem):
     def __init__(self, seed: int | None = None) -> None:
         super().__init__(seed)
         self.noise = ImuNoise()
-        self.orientation_reference = False
-        self._q0: tuple[float, float, float, float] | None = None
+        self.reference = OrientationReference(fixed=(1.0, 0.0, 0.0, 0.0))
+        """What the orientation is reported against (gazebo_ros's default: the world)."""
+        self._q0: Quat | None = None
+        """The reference's world orientation once known (the spawn orientation is taken at the first step)."""
         self._bias = np.zeros(6)
         self._mean = np.zeros(6)
         self._std = np.zeros(6)
@@ -100,7 +192,22 @@ class ImuSensor(_SensorSystem):
             return
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         self.noise = parse_imu_noise(ctx.sensor, cfg, ctx.logger)
-        self.orientation_reference = self.config.initial_orientation_as_reference
+        heading = ctx.spherical_coordinates.heading_deg if ctx.spherical_coordinates is not None else 0.0
+        if ctx.plugin is None:  # run by gz-sim's Imu system
+            self.reference = gz_orientation_reference(ctx.sensor, heading, ctx.logger)
+        else:
+            if self.config.initial_orientation_as_reference:
+                self.reference = OrientationReference(None)
+            imu = _imu_block(ctx.sensor)
+            for tag in ("orientation_reference_frame", "enable_orientation"):
+                el = imu.find(tag) if imu is not None else None
+                if el is not None:  # gazebo_ros_imu_sensor sets the reference itself (the world, or the spawn pose)
+                    ctx.logger.warning(
+                        f"{f'{el.location}: ' if el.location else ''}IMU <{tag}> is not applied under "
+                        f"{ctx.plugin.filename}: the orientation is against the world (REP 145), or the spawn "
+                        "orientation with <initial_orientation_as_reference>"
+                    )
+        self._q0 = self.reference.fixed
         # six channels: angular velocity x, y, z (rad/s), then linear acceleration x, y, z (m/s²); each gets a
         # bias drawn once for the run, then N(mean, stddev) per reading (gz-sensors' Gaussian noise model)
         channels = (*self.noise.rate, *self.noise.accel)
@@ -123,22 +230,17 @@ class ImuSensor(_SensorSystem):
             f"IMU on [{self.link}] at {self.rate_hz:g} Hz on [{self.output.topic}] in frame [{self.output.frame_id}]"
         )
 
-    def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
-        """Measure again at the next step; a reference orientation is taken again."""
-        super().reset(info, world)
-        self._q0 = None
-
-    def read(self) -> tuple[tuple[float, float, float, float], Vec3, Vec3]:
+    def read(self) -> tuple[Quat, Vec3, Vec3]:
         """(orientation, angular velocity, linear acceleration) with noise, as published."""
         assert self._body is not None
         r = self._body.imu_reading(self.offset)  # ideal: orientation, then gyro and accelerometer in the sensor frame
         q = (r[0], r[1], r[2], r[3])
-        # <initial_orientation_as_reference>: the orientation relative to the first reading (so a robot that
-        # starts turned reads identity), instead of relative to the world's axes
-        if self.orientation_reference:
-            if self._q0 is None:
-                self._q0 = q
-            q = quat_mul(quat_conj(self._q0), q)
+        if self._q0 is None:  # the first reading before the first step (a test's direct read)
+            self._q0 = q
+        if not self.reference.enabled:
+            q = (0.0, 0.0, 0.0, 0.0)
+        elif self._q0 != (1.0, 0.0, 0.0, 0.0):
+            q = quat_mul(quat_conj(self._q0), q)  # gz-sensors: reference⁻¹ · the sensor's world orientation
         if not self._perturbed:
             return q, (r[4], r[5], r[6]), (r[7], r[8], r[9])
         if not self._rows:
@@ -155,7 +257,13 @@ class ImuSensor(_SensorSystem):
         return rows[::-1].tolist()
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
-        """At the sensor's rate, while listened to: read and publish stamped with this sim time."""
+        """At the sensor's rate, while listened to: read and publish stamped with this sim time. At its first
+        step it takes its spawn orientation as the reference when that is the reference (listened to or
+        not: gz-sim takes it when the sensor is created); a world reset keeps it (gz-sim's Imu system has no
+        reset)."""
+        if self._q0 is None and self._body is not None:
+            r = self._body.imu_reading(self.offset)
+            self._q0 = (r[0], r[1], r[2], r[3])
         if not self._due(info):
             return
         assert self._pub is not None and self.output is not None
