@@ -291,7 +291,7 @@ def to_nav_sat_fix_msg(f: NavSatFix) -> NavSatFixMsg:
     msg.header.stamp = to_time(f.stamp_sec)
     msg.header.frame_id = f.frame_id
     msg.status.status = NavSatStatus.STATUS_FIX
-    msg.status.service = NavSatStatus.SERVICE_GPS
+    msg.status.service = f.service
     msg.latitude, msg.longitude, msg.altitude = f.latitude, f.longitude, f.altitude
     msg.position_covariance = array("d", f.position_covariance)
     msg.position_covariance_type = f.covariance_type

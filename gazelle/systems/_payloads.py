@@ -295,7 +295,7 @@ class Contacts:
 
 @dataclass(frozen=True, slots=True)
 class NavSatFix:
-    """sensor_msgs/NavSatFix (status FIX, service GPS)."""
+    """sensor_msgs/NavSatFix, status FIX."""
 
     stamp_sec: float
     frame_id: str
@@ -309,6 +309,8 @@ class NavSatFix:
     """Row-major 3x3 in East, North, Up, m²."""
     covariance_type: int = 0
     """0 unknown, 1 approximated, 2 diagonal known, 3 known."""
+    service: int = 1
+    """NavSatStatus's service bits: 1 GPS (gazebo_ros_gps_sensor), 0 none (ros_gz_bridge leaves it unset)."""
 
 
 @dataclass(frozen=True, slots=True)

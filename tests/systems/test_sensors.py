@@ -1169,3 +1169,27 @@ def test_a_gazebo_ros_imu_names_the_gz_reference_elements_it_does_not_apply(capl
     assert "<orientation_reference_frame> is not applied" in said and "<enable_orientation> is not applied" in said
     imu = next(s for s in entity.systems if isinstance(s, ImuSensor))
     assert imu.reference.fixed == (1.0, 0.0, 0.0, 0.0) and imu.reference.enabled
+
+
+def test_a_gps_fix_carries_the_covariance_and_service_each_gazebo_sends(make_sim):
+    """gazebo_ros_gps_sensor.cpp: the noise's variances on the diagonal (0 without noise), always
+    COVARIANCE_TYPE_DIAGONAL_KNOWN, service GPS. gz-sim's NavSat through ros_gz_bridge (convert/sensor_msgs.cpp):
+    gz's NavSat message has no covariance, so COVARIANCE_TYPE_UNKNOWN, zeros, and no service."""
+    from gazelle.systems import NavSatFix
+
+    noise = """<gps><position_sensing><horizontal><noise type="gaussian"><stddev>2</stddev></noise></horizontal>
+      <vertical><noise type="gaussian"><stddev>3</stddev></noise></vertical></position_sensing></gps>"""
+    plugin = '<plugin name="gps" filename="libgazebo_ros_gps_sensor.so"><ros><remapping>~/out:=fix</remapping></ros></plugin>'
+    cases = (
+        (plugin, "", (0.0,) * 9, 2, 1),
+        (plugin, noise, (4.0, 0, 0, 0, 4.0, 0, 0, 0, 9.0), 2, 1),
+        ("<topic>fix</topic>", noise, (0.0,) * 9, 0, 0),
+    )
+    for inner, extra, covariance, kind, service in cases:
+        sim = make_sim()
+        xml = _gps_box().replace(plugin, inner + extra)
+        _spawn(sim, xml, "rover")
+        fixes = _record(sim, "/fix")
+        sim.step(1)
+        fix: NavSatFix = fixes[-1]
+        assert (fix.position_covariance, fix.covariance_type, fix.service) == (covariance, kind, service), inner

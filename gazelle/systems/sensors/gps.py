@@ -106,6 +106,8 @@ class GpsSensor(_SensorSystem):
         self.origin = SphericalCoordinates()
         self.noise = GpsNoise()
         self._vel: Endpoint | None = None
+        self._covariance: tuple[tuple[float, ...], int, int] = ((0.0,) * 9, 0, 0)
+        """The fix's (position_covariance, covariance_type, service), as the Gazebo that runs it sends them."""
 
     def configure(self, ctx: SystemContext) -> None:
         """Read the world's spherical coordinates and the noise; declare ``~/out`` and ``~/vel``."""
@@ -129,6 +131,17 @@ class GpsSensor(_SensorSystem):
             )
         self.origin = ctx.spherical_coordinates or SphericalCoordinates()
         self.noise = parse_gps_noise(ctx.sensor, ctx.logger)
+        if ctx.plugin is not None:
+            # gazebo_ros_gps_sensor.cpp: each noise's variance on the diagonal (East, North, Up; 0 without
+            # noise: gazebo_ros NoiseVariance), always COVARIANCE_TYPE_DIAGONAL_KNOWN, service GPS
+            sh, sv = (
+                n.stddev**2 if n.active else 0.0 for n in (self.noise.position_horizontal, self.noise.position_vertical)
+            )
+            self._covariance = ((sh, 0.0, 0.0, 0.0, sh, 0.0, 0.0, 0.0, sv), 2, 1)
+        else:
+            # gz-sim's NavSat message has no covariance: ros_gz_bridge (convert/sensor_msgs.cpp) sends
+            # COVARIANCE_TYPE_UNKNOWN with zeros, and sets no service
+            self._covariance = ((0.0,) * 9, 0, 0)
         ctx.logger.info(f"GPS '{ctx.sensor.name}' at {self.rate_hz:g} Hz on [{self.output.topic}]")
 
     def read(self, world: PhysicsWorld) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
@@ -169,10 +182,6 @@ class GpsSensor(_SensorSystem):
         (lat, lon, alt), vel = self.read(world)
         t, frame = info.sim_time_sec, self.output.frame_id
         if want_fix:
-            # the fix's covariance is the noise's variance on the diagonal (East, North, Up), marked
-            # COVARIANCE_TYPE_DIAGONAL_KNOWN (2); without noise, UNKNOWN (0), as gazebo_ros_gps_sensor
-            sh, sv = self.noise.position_horizontal.stddev, self.noise.position_vertical.stddev
-            cov = (sh * sh, 0.0, 0.0, 0.0, sh * sh, 0.0, 0.0, 0.0, sv * sv)
-            self._pub.publish(NavSatFix(t, frame, lat, lon, alt, cov, 2 if any(cov) else 0))
+            self._pub.publish(NavSatFix(t, frame, lat, lon, alt, *self._covariance))
         if want_vel and self._vel is not None:
             self._vel.publish(Vector3Stamped(t, frame, vel))
