@@ -46,7 +46,7 @@ declare -A TIER_PKGS=(
 declare -A TIER_PROBES=(
   [first]="tf2_msgs.msg.TFMessage tf2_msgs.action.LookupTransform simulation_interfaces.msg.Result
     simulation_interfaces.srv.SpawnEntity simulation_interfaces.action.SimulateSteps gazebo_msgs.msg.ModelStates
-    gazebo_msgs.srv.SpawnEntity ros_gz_interfaces.msg.Altimeter"
+    gazebo_msgs.srv.SpawnEntity ros_gz_interfaces.msg.Altimeter ros_gz_interfaces.msg.Contacts"
   [second]="control_msgs.action.FollowJointTrajectory control_msgs.msg.DynamicJointState
     controller_manager_msgs.srv.SwitchController octomap_msgs.srv.GetOctomap
     object_recognition_msgs.action.ObjectRecognition moveit_msgs.action.MoveGroup moveit_msgs.srv.GetPositionIK"

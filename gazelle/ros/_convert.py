@@ -37,6 +37,10 @@ from geometry_msgs.msg import Vector3Stamped as Vector3StampedMsg
 from geometry_msgs.msg import WrenchStamped as WrenchStampedMsg
 from nav_msgs.msg import Odometry as OdometryMsg
 from ros_gz_interfaces.msg import Altimeter as AltimeterMsg
+from ros_gz_interfaces.msg import Contact as GzContact
+from ros_gz_interfaces.msg import Contacts as GzContacts
+from ros_gz_interfaces.msg import Entity as GzEntity
+from ros_gz_interfaces.msg import JointWrench as GzJointWrench
 from sensor_msgs.msg import CameraInfo as CameraInfoMsg
 from sensor_msgs.msg import Image as ImageMsg
 from sensor_msgs.msg import Imu as ImuMsg
@@ -285,6 +289,34 @@ def to_contacts_msg(c: Contacts) -> ContactsState:
     return msg
 
 
+def to_gz_contacts_msg(c: Contacts) -> GzContacts:
+    """ros_gz_interfaces/Contacts, as ros_gz_bridge (convert/sensor_msgs.cpp) makes it of gz-sim's contact
+    sensor message (gz-sim8 Physics.cc fills it): one Contact per pair of collisions, named (gazelle has no
+    entity numbers: ids 0, type unset as in gz's), each point's position, normal, depth and the wrench
+    pair, force on collision1 and its opposite on collision2 (gz sends no torque: zero)."""
+    msg = GzContacts()
+    msg.header.stamp = to_time(c.stamp_sec)
+    msg.header.frame_id = c.frame_id
+    contacts = []
+    for pair in c.states:
+        contact = GzContact()
+        contact.collision1 = GzEntity(name=pair.collision1)
+        contact.collision2 = GzEntity(name=pair.collision2)
+        contact.positions = [_vec(p) for p in pair.positions]
+        contact.normals = [_vec(n) for n in pair.normals]
+        contact.depths = [float(d) for d in pair.depths]
+        wrenches = []
+        for f in pair.forces:
+            w = GzJointWrench()
+            w.body_1_wrench.force = _vec(f)
+            w.body_2_wrench.force = _vec([-v for v in f])
+            wrenches.append(w)
+        contact.wrenches = wrenches
+        contacts.append(contact)
+    msg.contacts = contacts
+    return msg
+
+
 def to_nav_sat_fix_msg(f: NavSatFix) -> NavSatFixMsg:
     """sensor_msgs/NavSatFix with a fix from the GPS service."""
     msg = NavSatFixMsg()
@@ -447,6 +479,7 @@ ROS_TYPES = {
     MsgType.IMAGE: ImageMsg,
     MsgType.CAMERA_INFO: CameraInfoMsg,
     MsgType.CONTACTS: ContactsState,
+    MsgType.GZ_CONTACTS: GzContacts,
     MsgType.NAV_SAT_FIX: NavSatFixMsg,
     MsgType.VECTOR3_STAMPED: Vector3StampedMsg,
     MsgType.WRENCH_STAMPED: WrenchStampedMsg,
@@ -483,6 +516,7 @@ TO_ROS = {
     MsgType.IMAGE: to_image_msg,
     MsgType.CAMERA_INFO: to_camera_info_msg,
     MsgType.CONTACTS: to_contacts_msg,
+    MsgType.GZ_CONTACTS: to_gz_contacts_msg,
     MsgType.NAV_SAT_FIX: to_nav_sat_fix_msg,
     MsgType.VECTOR3_STAMPED: to_vector3_stamped_msg,
     MsgType.WRENCH_STAMPED: to_wrench_stamped_msg,

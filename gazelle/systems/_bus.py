@@ -36,6 +36,7 @@ class MsgType(enum.Enum):
     IMAGE = "sensor_msgs/msg/Image"
     CAMERA_INFO = "sensor_msgs/msg/CameraInfo"
     CONTACTS = "gazebo_msgs/msg/ContactsState"
+    GZ_CONTACTS = "ros_gz_interfaces/msg/Contacts"
     NAV_SAT_FIX = "sensor_msgs/msg/NavSatFix"
     VECTOR3_STAMPED = "geometry_msgs/msg/Vector3Stamped"
     WRENCH_STAMPED = "geometry_msgs/msg/WrenchStamped"

@@ -533,13 +533,53 @@ def test_contacts_of_a_few_geoms_among_many_are_exactly_those_involving_them(mak
     assert world.contacts_of(frozenset()) == []
 
 
-def test_a_gz_contact_sensor_publishes_on_its_topic_with_the_world_contact_system(make_sim):
+def test_a_gz_contact_sensor_publishes_ros_gz_contacts_on_its_contact_topic_only_while_touched(make_sim):
+    """gz-sim's Contact system (gz-sim8 src/systems/contact/Contact.cc): <contact><topic>, every step that has
+    contacts and none without; ros_gz_bridge makes ros_gz_interfaces/Contacts of it (one Contact per pair,
+    named, each point's wrench pair: the force on collision1 and its opposite)."""
+    from gazelle.ros._convert import to_ros
+    from gazelle.systems import MsgType
     from gazelle.systems.sensors import ContactSensor
 
     sim = make_sim()  # the default world runs gz-sim's contact system
     plate = _spawn(sim, _bumper_plate(plugin=False), "plate", Pose((0.0, 0.0, 0.01)))
     sensor = next(s for s in plate.systems if isinstance(s, ContactSensor))
-    assert sensor.output is not None and sensor.output.topic == "/bumps"
+    assert sensor.output is not None
+    assert (sensor.output.topic, sensor.output.frame_id, sensor.output.msg_type) == ("/bumps", "", MsgType.GZ_CONTACTS)
+    got = _record(sim, "/bumps")
+    sim.step(100)
+    assert got == []  # nothing touches it: nothing is sent
+    sim.spawn(load_string(BOX_2KG).model, name="box", pose=Pose((0.0, 0.0, 0.3)))
+    sim.step(1500)
+    first = got[0].stamp_sec
+    assert len(got) == round((1.6 - first) / 0.001) + 1  # every step since the box landed (the rate is not read)
+    msg = to_ros(MsgType.GZ_CONTACTS)(got[-1])
+    assert type(msg).__name__ == "Contacts" and type(msg).__module__.startswith("ros_gz_interfaces")
+    assert [(c.collision1.name, c.collision2.name) for c in msg.contacts] == [
+        ("plate::base::plate_collision", "box::link::c")
+    ]
+    contact = msg.contacts[0]
+    assert len(contact.positions) == len(contact.normals) == len(contact.depths) == len(contact.wrenches) > 0
+    total = [sum(getattr(w.body_1_wrench.force, a) for w in contact.wrenches) for a in "xyz"]
+    assert total == pytest.approx([0.0, 0.0, -2.0 * 9.8], abs=0.05)
+    assert all(w.body_2_wrench.force.z == -w.body_1_wrench.force.z for w in contact.wrenches)
+
+
+def test_a_gz_contact_sensor_names_the_topic_and_rate_gz_sim_does_not_read(caplog, make_sim):
+    from gazelle.systems.sensors import ContactSensor
+
+    xml = (
+        _bumper_plate(plugin=False)
+        .replace("<topic>bumps</topic>", "")
+        .replace("<update_rate>50</update_rate>", "<update_rate>50</update_rate><topic>mine</topic>")
+    )
+    with caplog.at_level(logging.WARNING):
+        plate = _spawn(make_sim(), xml, "plate", Pose((0.0, 0.0, 0.01)))
+    sensor = next(s for s in plate.systems if isinstance(s, ContactSensor))
+    assert sensor.output is not None
+    assert sensor.output.topic == "/world/default/model/plate/link/base/sensor/bumper/contact"
+    said = " ".join(r.getMessage() for r in caplog.records)
+    assert "not the sensor's <topic> 'mine'" in said and "does not read <update_rate> (50 Hz)" in said
 
 
 def test_a_contact_sensor_naming_a_collision_its_link_lacks_is_an_error_with_file_and_line(caplog, make_sim):

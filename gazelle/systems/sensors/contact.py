@@ -1,4 +1,5 @@
-"""Contact sensors and gazebo_ros's bumper: the contacts of a link's collisions (gazebo_msgs/ContactsState)."""
+"""Contact sensors and gazebo_ros's bumper: the contacts of a link's collisions, as gazebo_msgs/ContactsState
+(gazebo_ros_bumper) or ros_gz_interfaces/Contacts (gz-sim's Contact system, as ros_gz_bridge sends it)."""
 
 from __future__ import annotations
 
@@ -8,6 +9,7 @@ from typing import ClassVar
 import numpy as np
 
 from ...description import (
+    Sensor,
     rotation_matrix,
 )
 from ...physics import BodyHandle, PerGeneration, PhysicsWorld
@@ -27,9 +29,10 @@ from ._common import (
 @sensor_system
 class ContactSensor(_SensorSystem):
     """A contact sensor (``<sensor type="contact">`` with ``<contact><collision>``): every contact of its
-    collisions as gazebo_msgs/ContactsState, forces on the sensor's collision. gazebo_ros_bumper
-    publishes ``bumper_states`` in ``<frame_name>`` (default ``world``); gz-sim's contact system on
-    ``<contact><topic>``/``<topic>``, else ``/world/<w>/model/<m>/link/<l>/sensor/<s>/contact``."""
+    collisions, forces on the sensor's collision. gazebo_ros_bumper publishes gazebo_msgs/ContactsState on
+    ``bumper_states`` in ``<frame_name>`` (default ``world``) at the sensor's rate; gz-sim's contact system
+    ros_gz_interfaces/Contacts on ``<contact><topic>``, else ``/world/<w>/model/<m>/link/<l>/sensor/<s>/contact``,
+    at every step with contacts (see :meth:`_configure_gz`)."""
 
     sdf_types = frozenset({"contact"})
     classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {"gazebo_ros_bumper": None}
@@ -44,6 +47,8 @@ class ContactSensor(_SensorSystem):
         self._frame: BodyHandle | None = None
         """``<frame_name>``'s link, when the contacts are reported in a link's frame (None: the world)."""
         self._geoms: PerGeneration[frozenset[int]] | None = None
+        self._only_contacts = False
+        """Publish only while there are contacts (gz-sim); gazebo_ros_bumper publishes every update."""
 
     def _find_geoms(self, world: PhysicsWorld) -> frozenset[int]:
         """The collision geoms of the sensor's ``<collision>`` elements in the world's current model."""
@@ -79,9 +84,8 @@ class ContactSensor(_SensorSystem):
         self.collisions = names
         gz_topic = child_text(block, "topic")
         assert self.output is not None
-        if ctx.plugin is None:  # gz-sim: <topic> (of the sensor, else of its <contact>), else the scoped default
-            topic = sensor.topic or gz_topic or gz_scoped_topic(ctx, self.link, sensor, "contact")
-            self.output = dataclasses.replace(self.output, topic=resolve_topic(topic, ctx.entity.namespace))
+        if ctx.plugin is None:
+            self._configure_gz(ctx, sensor, gz_topic)
         else:  # gazebo_ros_bumper: bumper_states under its node's namespace (remappable), in <frame_name>
             c = self.config
             self.output = dataclasses.replace(
@@ -99,11 +103,35 @@ class ContactSensor(_SensorSystem):
                         "contacts are reported in the world frame"
                     )
                     self.output = dataclasses.replace(self.output, frame_id="world")
-        self._pub = ctx.bus.advertise(ctx.entity.name, self.output.topic, MsgType.CONTACTS, depth=SENSOR_DEPTH)
+        self._pub = ctx.bus.advertise(ctx.entity.name, self.output.topic, self.output.msg_type, depth=SENSOR_DEPTH)
         self._entity, self._collisions = ctx.entity.name, tuple(names)
         self._geoms = PerGeneration(self._find_geoms)
         ctx.logger.info(
             f"contact sensor '{sensor.name}' on [{', '.join(names)}] at {self.rate_hz:g} Hz on [{self.output.topic}]"
+        )
+
+    def _configure_gz(self, ctx: SystemContext, sensor: Sensor, gz_topic: str | None) -> None:
+        """gz-sim's Contact system (gz-sim8 ``src/systems/contact/Contact.cc``): it publishes on
+        ``<contact><topic>``, else ``/world/<w>/model/<m>/link/<l>/sensor/<s>/contact`` (the sensor's own
+        ``<topic>`` is not read), at every step that has contacts (``<update_rate>`` is not read either),
+        as ros_gz_interfaces/Contacts once bridged, with no frame_id. What it does not read is named."""
+        assert self.output is not None
+        where = f"{sensor.location}: " if sensor.location else ""
+        if sensor.topic and not gz_topic:
+            ctx.logger.warning(
+                f"{where}contact sensor '{sensor.name}': gz-sim's Contact system publishes on <contact><topic>, "
+                f"not the sensor's <topic> '{sensor.topic}'; it publishes on its default topic"
+            )
+        if self.rate_hz > 0:
+            ctx.logger.warning(
+                f"{where}contact sensor '{sensor.name}': gz-sim's Contact system does not read <update_rate> "
+                f"({self.rate_hz:g} Hz): it publishes at every step that has contacts"
+            )
+        self.rate_hz = 0.0
+        self._only_contacts = True
+        topic = gz_topic or gz_scoped_topic(ctx, self.link, sensor, "contact")
+        self.output = dataclasses.replace(
+            self.output, topic=resolve_topic(topic, ctx.entity.namespace), frame_id="", msg_type=MsgType.GZ_CONTACTS
         )
 
     def read(self, world: PhysicsWorld) -> tuple[ContactPair, ...]:
@@ -147,4 +175,6 @@ class ContactSensor(_SensorSystem):
         if not self._due(info):
             return
         assert self._pub is not None and self.output is not None
-        self._pub.publish(Contacts(info.sim_time_sec, self.output.frame_id, self.read(world)))
+        pairs = self.read(world)
+        if pairs or not self._only_contacts:  # gz-sim's Contact system sends nothing while nothing touches
+            self._pub.publish(Contacts(info.sim_time_sec, self.output.frame_id, pairs))
