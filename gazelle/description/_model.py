@@ -568,7 +568,10 @@ class PhysicsSettings:
     real_time_factor: float = 1.0
     """<real_time_factor>: the pace the runtime keeps (1 = real time); --rtf overrides it."""
     real_time_update_rate_hz: float = 1000.0
-    """0 = as fast as possible."""
+    """<real_time_update_rate>: steps per wall second asked for. Gazebo Classic paces by it (a pace of
+    rate x max_step_size, 0 as fast as possible); gz-sim by <real_time_factor>. gazelle paces by the factor,
+    as gz-sim does, and takes a rate of 0 to mean as fast as possible, as Classic does (worlds written for
+    Classic set the two consistently: 1000 x 0.001 = 1)."""
 
 
 @dataclass(frozen=True, slots=True)

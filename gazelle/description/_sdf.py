@@ -593,12 +593,12 @@ class _Loader(_Parts):
 
     def world_fields(self, element: etree._Element, physics_el: etree._Element | None, doc: _Doc) -> tuple[Vec3, Vec3]:
         """Gravity and the magnetic field: the world's own elements, else the ones SDF ≤ 1.5 kept in ``<physics>``."""
-        gravity = (0.0, 0.0, -9.8)  # SDF's default (world.sdf), not 9.81
+        gravity = (0.0, 0.0, -9.8)  # SDF's default (world.sdf), not 9.81: m/s², world frame
         if _find(element, "gravity") is not None:
             gravity = self.vec3(element, "gravity", gravity, doc)
         elif physics_el is not None:
             gravity = self.vec3(physics_el, "gravity", gravity, doc)
-        magnetic = DEFAULT_MAGNETIC_FIELD
+        magnetic = DEFAULT_MAGNETIC_FIELD  # tesla, world frame: what magnetometers read before their noise
         if _find(element, "magnetic_field") is not None:
             magnetic = self.vec3(element, "magnetic_field", magnetic, doc)
         elif physics_el is not None and _find(physics_el, "magnetic_field") is not None:
@@ -631,6 +631,8 @@ class _Loader(_Parts):
 
     def physics(self, physics_el: etree._Element | None, doc: _Doc) -> PhysicsSettings:
         """Step size and real-time settings (SDF ≤ 1.3 called the rate ``update_rate``); bad values reported."""
+        # only these three are read: the engine is always MuJoCo, so the engine blocks (<ode>, <bullet>,
+        # <dart>, <simbody>: solver iterations, ERP/CFM) are skipped on purpose (_sdf_reader.IGNORED)
         default_physics = PhysicsSettings()
         step = self.number(physics_el, "max_step_size", default_physics.max_step_size_sec, doc)
         rate_tag = (
@@ -673,6 +675,9 @@ class _Loader(_Parts):
 
     def world_contents(self, element: etree._Element, doc: _Doc, name: str | None) -> tuple[list[Model], list[Light]]:
         """The world's models (and includes) placed through its frame graph, and its lights."""
+        # the world is a frame graph of its own (SDF 1.7+): a model's <pose relative_to> may name another
+        # model or a world <frame>, so every model is read first and placed once the whole graph is known;
+        # model names must be unique in a world (sdformat's rule; the second is an error, not a rename)
         scope = Scope("world", self.sink, canonical="world")
         builts: list[_Built] = []
         light_items: list[etree._Element | Light] = []

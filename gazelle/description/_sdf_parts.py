@@ -490,6 +490,8 @@ class _Parts(_Reader):
             location=loc,
         )
         if parent == "world":
+            # a joint to the world pins (fixed) or guides the model in the world: kept by its pose in the model
+            # frame, so the spawn can place it where the model is placed
             built.world_joints[name] = X_MJ
         built.joints.append(joint)
         for sen_el in _findall(element, "sensor"):  # force_torque: kept with the child link
@@ -507,6 +509,8 @@ class _Parts(_Reader):
             )
             return None
         if raw_type == "gearbox":
+            # a gearbox couples two other joints' angles through a reference body: not built (skipped, and
+            # said), so the two joints move independently
             self.sink.warning(
                 ErrorCode.JOINT_TYPE_INVALID, f"joint '{name}': type 'gearbox' is not supported; joint skipped", loc
             )
@@ -520,6 +524,8 @@ class _Parts(_Reader):
             )
             return None
         if raw_type == "revolute2":
+            # revolute2 is two hinges in series like universal (axis on the parent, axis2 on the child); the
+            # difference is in how ODE solved it, so it runs as a universal joint and the file is told
             self.sink.warning(
                 ErrorCode.JOINT_TYPE_INVALID,
                 f"joint '{name}': type 'revolute2' is not supported; loaded as 'universal'",
@@ -539,6 +545,8 @@ class _Parts(_Reader):
                 self.sink.error(ErrorCode.ELEMENT_MISSING, f"joint '{name}' has no <{role}>", loc)
                 return None
             where = self.loc(el, doc)
+            # a parent or child may be a link, a frame (resolved to the link it is attached to: SDF 1.7's
+            # frame semantics), a nested model's link written model::link, or (parent only) the world
             if ref == "world" or ref in scope.nodes or ("::" in ref and ref.partition("::")[0] in scope.nested):
                 body = scope.body(ref, where)
             else:
@@ -591,8 +599,10 @@ class _Parts(_Reader):
         return axes
 
     def _screw_pitch(self, element: etree._Element, doc: _Doc) -> float | None:
-        """A screw joint's pitch in MuJoCo's sense: SDF 1.10's <screw_thread_pitch>, or the older
-        <thread_pitch> (radians per metre, the other sign) converted."""
+        """A screw joint's pitch in metres along the axis per revolution: SDF 1.10's <screw_thread_pitch>
+        (sdformat's joint.sdf, default 1), or the older <thread_pitch> converted. That one is in radians per
+        metre with the other sign (Gazebo Classic's ODE screw: a positive thread_pitch advanced along -axis),
+        so m/rev = -2π / thread_pitch; a zero one (no coupling) is None."""
         if _find(element, "screw_thread_pitch") is not None:
             return self.number(element, "screw_thread_pitch", 1.0, doc)
         thread_pitch = self.number(element, "thread_pitch", 1.0, doc)
@@ -644,12 +654,17 @@ class _Parts(_Reader):
                     f"joint '{joint}': limit lower {lower:g} > upper {upper:g}",
                     self.loc(limit_el, doc),
                 )
+            # the ±1e16 and negative defaults mean "no limit": kept as None, so the physics adds no range and
+            # the controllers no clamp (URDF's continuous joints arrive the same way)
             limit = JointLimit(
                 lower=lower if lower > -_UNLIMITED else None,
                 upper=upper if upper < _UNLIMITED else None,
                 effort=effort if effort >= 0 else None,
                 velocity=velocity if velocity >= 0 else None,
             )
+        # <dynamics>: viscous damping (N·m·s/rad or N·s/m), Coulomb friction (N·m or N) and a spring about
+        # spring_reference, all 0 by default; the physics gives them to MuJoCo's damping, frictionloss and
+        # stiffness/springref of the joint, which is what gz-sim's engines apply
         dyn_el = _find(element, "dynamics")
         dynamics = JointDynamics(
             damping=self.number(dyn_el, "damping", 0.0, doc),

@@ -9,6 +9,29 @@ Entry point: :func:`parse_urdf`. The loader reads the document in three passes:
 
 Fixed joints are kept as they are (no lumping). Elements expanded by xacro carry their
 original file and line (see :mod:`._xml`), so diagnostics point into the xacro sources.
+
+Where this differs from Gazebo's own URDF reading (sdformat's ``src/parser_urdf.cc``, which both Gazebo
+Classic and gz-sim use):
+
+* **No fixed-joint lumping.** sdformat merges every link hanging on a fixed joint into its parent (unless
+  the joint has ``<disableFixedJointLumping>``/``<preserveFixedJoint>``): the child's mass is added to the
+  parent's, its shapes and sensors move onto the parent, and the child link no longer exists in the
+  simulation. gazelle keeps every link as its own welded body, so a link's name, its frame and what is on
+  it stay where the URDF put them (the physics welds them, which costs no accuracy). One visible effect: a
+  gazebo_ros sensor without ``<frame_name>`` reports in its own URDF link's frame here, where Classic
+  reports the lumped parent's name for data still measured at the sensor (a long-standing Classic pitfall
+  that robots work around by setting ``<frame_name>``; with it, both agree).
+* **Massless links.** sdformat leaves out a link that has no mass after lumping and is reached by a moving
+  joint (or is the root), with everything below it; gazelle leaves out the same links
+  (``drop_massless_links``, a warning naming each), though the links it keeps stay unlumped. A
+  description where no link has mass at all (kinematics-only files such as moveit_resources' Panda), of
+  which Gazebo would simulate nothing, gets each link's inertia from its collisions instead.
+* **``<gazebo>`` blocks.** The tags sdformat converts (``mu1``, ``mu2``, ``kp``, ``kd``, ``fdir1``,
+  ``maxVel``, ``minDepth``, ``selfCollide``, ``turnGravityOff``) are applied from the tables below, as are
+  the SDF elements sdformat copies into the link verbatim (``gravity``, ``kinematic``, ``material``,
+  ``sensor``, ``plugin``). The rest (``dampingFactor``, ``maxContacts``, ``laserRetro``, the joint tags
+  ``stopCfm``/``stopErp``/``springStiffness``/...) are kept in :attr:`Model.gazebo` and named in a
+  warning: nothing a user wrote is dropped silently.
 """
 
 from __future__ import annotations
@@ -41,6 +64,8 @@ from ._xml import (
 )
 
 # <gazebo reference="link"> tags applied to every collision's Surface: tag -> (field, vector length).
+# sdformat writes them into each of the link's collisions as <surface><friction><ode><mu>/<mu2>/<fdir1>
+# and <surface><contact><ode><kp>/<kd>/<max_vel>/<min_depth>: the same Surface fields an SDF collision fills.
 _SURFACE_TAGS: dict[str, tuple[str, int]] = {
     "mu1": ("mu", 1),
     "mu2": ("mu2", 1),
@@ -51,13 +76,16 @@ _SURFACE_TAGS: dict[str, tuple[str, int]] = {
     "fdir1": ("fdir1", 3),
 }
 # <gazebo reference="link"> boolean tags applied to the Link: tag -> (field, inverted).
+# turnGravityOff is sdformat's own (true means <gravity>false); the other three are SDF link elements that
+# sdformat copies into the link as written.
 _LINK_FLAGS: dict[str, tuple[str, bool]] = {
     "selfCollide": ("self_collide", False),
     "gravity": ("gravity", False),
     "turnGravityOff": ("gravity", True),
     "kinematic": ("kinematic", False),
 }
-# <gazebo> (no reference) boolean tags applied to the Model.
+# <gazebo> (no reference) boolean tags applied to the Model: <static> (sdformat's own: the whole robot is
+# fixed in the world) and <self_collide> (SDF's model element, the default for links that do not say).
 _MODEL_FLAGS: dict[str, str] = {"static": "static", "self_collide": "self_collide"}
 
 
@@ -120,6 +148,9 @@ class _Reader(ElementReader):
         elif reference in doc.links:
             self.apply_link_gazebo(element, doc.links[reference], doc)
         elif reference in doc.joints:
+            # a joint's <gazebo> block holds sdformat's joint tags (stopCfm, stopErp, springStiffness,
+            # provideFeedback, preserveFixedJoint, ...), none of which changes the physics here (no ODE
+            # constraint mixing; fixed joints are never lumped), and sensors attached to the joint
             joint = doc.joints[reference]
             for child in child_elements(element):
                 if local_name(child) == "sensor" and joint is not None and joint.child in doc.links:
@@ -168,6 +199,8 @@ class _Reader(ElementReader):
                 if flag is not None:
                     link.flags[field_name] = bool(flag) != inverted
             elif tag == "material":
+                # Classic's OGRE material script (Gazebo/Red, ...): Gazebo draws the script, not the URDF's
+                # colour, so it recolours the link's visuals (finish_link; a script not known keeps them)
                 link.gazebo_material = (child.text or "").strip() or None
             elif tag == "sensor":
                 sensor = self.sensor(child)
@@ -202,6 +235,8 @@ class _Reader(ElementReader):
             elif tag == "gazebo":
                 gazebo_blocks.append(child)  # after all links and joints are known
             elif tag == "transmission":
+                # ROS 1's gazebo_ros_control read transmissions; ros2_control reads <ros2_control> instead, so
+                # they are kept (a converter could use them) and named, not run
                 doc.transmissions.append(to_config(child, self.source))
                 self.warn(
                     ErrorCode.ELEMENT_UNSUPPORTED,
@@ -241,6 +276,9 @@ class _Reader(ElementReader):
         for child in child_elements(element):
             tag = local_name(child)
             if tag == "hardware":
+                # the hardware plugin decides who runs the block: gz_ros2_control/GazeboSimSystem and
+                # gazebo_ros2_control/GazeboSystem (and mock_components/GenericSystem) are simulated by
+                # systems/ros2_control; the name is kept as written and judged there
                 plugin_el = child.find("plugin")
                 if plugin_el is None:
                     plugin_el = child.find("classType")  # before Humble

@@ -50,8 +50,8 @@ from ..systems.ros2_control import (
     JointTrajectoryController,
     TrajectoryGoal,
     TrajectoryResult,
-    goal_tolerances,
     params_file_paths,
+    segment_tolerances,
 )
 from ._convert import from_duration, from_joint_trajectory_msg, to_trajectory_point_msg
 from ._replies import serve, serve_action
@@ -403,12 +403,8 @@ class ControllerManagerNode(Node):
         traj = from_joint_trajectory_msg(req.trajectory)
         path = [(t.name, t.position, t.velocity, t.acceleration) for t in req.path_tolerance]
         goal_tol = [(t.name, t.position, t.velocity, t.acceleration) for t in req.goal_tolerance]
-        goal = TrajectoryGoal(
-            traj,
-            goal_tolerances(jtc, path, path=True),
-            goal_tolerances(jtc, goal_tol, path=False),
-            from_duration(req.goal_time_tolerance),
-        )
+        tolerances = segment_tolerances(jtc, path, goal_tol, from_duration(req.goal_time_tolerance))
+        goal = TrajectoryGoal(traj, tolerances.path, tolerances.goal, tolerances.goal_time)
         result = FollowJointTrajectory.Result()
         try:
             self.sim.call(lambda: jtc.submit(goal))

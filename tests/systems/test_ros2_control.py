@@ -21,9 +21,9 @@ from gazelle.systems.ros2_control import (
     JointTrajectoryController,
     ParamsError,
     TrajectoryGoal,
-    goal_tolerances,
     load_params,
     parse_params,
+    segment_tolerances,
 )
 from gazelle.worlds import default_world
 
@@ -249,7 +249,7 @@ def test_r6bot_aborts_a_goal_that_leaves_its_path_tolerance(r6bot):
     jtc = cm.controllers["joint_trajectory_controller"].controller
     sim.step(100)
     goal = TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, (TrajectoryPoint(0.3, (1.5, -1.0, 1.5, 1.0, 1.0, 1.0)),)))
-    goal.path_tolerance = goal_tolerances(jtc, [(j, 1e-4, 0.0, 0.0) for j in R6_JOINTS], path=True)
+    goal.path_tolerance = segment_tolerances(jtc, [(j, 1e-4, 0.0, 0.0) for j in R6_JOINTS], [], 0.0).path
     jtc.submit(goal)
     _run(sim, goal)
     assert goal.status == "aborted" and goal.error_code == -4  # PATH_TOLERANCE_VIOLATED
@@ -257,6 +257,34 @@ def test_r6bot_aborts_a_goal_that_leaves_its_path_tolerance(r6bot):
     q = _positions(cm)
     sim.step(1000)
     assert max(abs(a - b) for a, b in zip(_positions(cm), q, strict=True)) < 1e-3
+
+
+def test_a_goals_tolerances_override_the_controllers_as_jazzys_trajectory_controller_resolves_them(r6bot, caplog):
+    """tolerances.hpp get_segment_tolerances (ros2_controllers jazzy): per JointTolerance value, > 0 replaces
+    the controller's, 0 keeps it, -1 erases it (not checked); goal_time_tolerance the same (-1: wait for ever).
+    A joint the controller does not have, or another negative value, discards all of the goal's tolerances
+    for the controller's own, with an error."""
+    import logging
+
+    _sim, cm = r6bot
+    jtc = cm.controllers["joint_trajectory_controller"].controller
+    j0, j1 = R6_JOINTS[0], R6_JOINTS[1]
+    default = segment_tolerances(jtc, [], [], 0.0)
+    assert default.path == jtc.path_tol and default.goal == jtc.goal_tol and default.goal_time == jtc.goal_time
+    got = segment_tolerances(jtc, [(j0, 0.2, 0.0, 0.0), (j1, -1.0, 0.0, 0.0)], [(j0, 0.0, -1.0, 0.0)], -1.0)
+    assert got.path[j0].position == 0.2 and got.path[j1].position == 0.0
+    assert got.goal[j0].position == jtc.goal_tol[j0].position and got.goal[j0].velocity == 0.0
+    assert got.goal_time == 0.0
+    assert segment_tolerances(jtc, [], [], 2.5).goal_time == 2.5
+    for path, goal, goal_time, said in (
+        ([("no_such_joint", 0.1, 0.0, 0.0), (j0, 0.2, 0.0, 0.0)], [], 0.0, "goal.path_tolerance does not exist"),
+        ([(j0, 0.2, 0.0, 0.0)], [(j1, -0.5, 0.0, 0.0)], 0.0, "invalid position tolerance"),
+        ([(j0, 0.2, 0.0, 0.0)], [], -3.0, "illegal goal_time_tolerance"),
+    ):
+        caplog.clear()
+        with caplog.at_level(logging.ERROR):
+            assert segment_tolerances(jtc, path, goal, goal_time) == default
+        assert any(said in r.getMessage() and "Using default tolerances" in r.getMessage() for r in caplog.records)
 
 
 def test_r6bot_refuses_goals_it_cannot_run(r6bot):

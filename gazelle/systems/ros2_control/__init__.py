@@ -33,10 +33,11 @@ if TYPE_CHECKING:
     from ._params import parse_params as parse_params
     from ._params import yaml_problem as yaml_problem
     from ._trajectory import JointTrajectoryController as JointTrajectoryController
+    from ._trajectory import SegmentTolerances as SegmentTolerances
     from ._trajectory import Tolerance as Tolerance
     from ._trajectory import TrajectoryGoal as TrajectoryGoal
     from ._trajectory import TrajectoryResult as TrajectoryResult
-    from ._trajectory import goal_tolerances as goal_tolerances
+    from ._trajectory import segment_tolerances as segment_tolerances
 
 __getattr__ = lazy_attributes(__name__, __file__)
 
@@ -62,7 +63,8 @@ __all__ = [
     "SimHardware",
     "Tolerance",
     "TrajectoryGoal",
-    "goal_tolerances",
+    "SegmentTolerances",
+    "segment_tolerances",
     "load_params",
     "params_file_paths",
     "parse_params",

@@ -72,7 +72,8 @@ class TrajectoryGoal:
     trajectory: JointTrajectory
     path_tolerance: dict[str, Tolerance] = field(default_factory=dict)
     goal_tolerance: dict[str, Tolerance] = field(default_factory=dict)
-    goal_time_tolerance: float = 0.0
+    goal_time_tolerance: float | None = None
+    """Seconds after the end to meet the goal tolerances (0: no limit); None: the controller's ``goal_time``."""
     status: GoalState = GoalState.PENDING
     """Where the goal stands; set on the simulation thread, read by the ROS layer."""
     error_code: TrajectoryResult = TrajectoryResult.SUCCESSFUL
@@ -583,7 +584,7 @@ class JointTrajectoryController(Controller):
             self._traj = None
             goal.finish(GoalState.SUCCEEDED, TrajectoryResult.SUCCESSFUL, "")
             return
-        allowed = goal.goal_time_tolerance if goal.goal_time_tolerance > 0 else self.goal_time
+        allowed = self.goal_time if goal.goal_time_tolerance is None else goal.goal_time_tolerance
         if allowed > 0 and t > end + allowed:
             self._traj, self._hold = None, list(actual)
             goal.finish(
@@ -598,20 +599,74 @@ def _violates(tol: Tolerance, err_p: float, err_v: float) -> bool:
     return (tol.position > 0 and abs(err_p) > tol.position) or (tol.velocity > 0 and abs(err_v) > tol.velocity)
 
 
-def goal_tolerances(
-    controller: JointTrajectoryController, given: list[tuple[str, float, float, float]], path: bool
-) -> dict[str, Tolerance]:
-    """A goal's JointTolerance list applied over the controller's defaults: a value > 0 replaces the
-    default, 0 keeps it, -1 removes the check."""
-    defaults = controller.path_tol if path else controller.goal_tol
-    out = dict(defaults)
-    for name, p, v, a in given:
-        if name not in defaults:
-            continue
-        d = defaults[name]
+@dataclass(frozen=True)
+class SegmentTolerances:
+    """What a goal is held to (tolerances.hpp ``SegmentTolerances``): per joint its path and goal tolerances,
+    and the time after the trajectory's end within which the goal tolerances must be met (0: no limit)."""
 
-        def pick(value: float, default: float) -> float:
-            return 0.0 if value < 0 else (value if value > 0 else default)
+    path: dict[str, Tolerance]
+    goal: dict[str, Tolerance]
+    goal_time: float
+    """Seconds after the last point's time (0: wait for ever, as Jazzy does)."""
 
-        out[name] = Tolerance(pick(p, d.position), pick(v, d.velocity), pick(a, d.acceleration))
+
+_ERASE = -1.0
+"""control_msgs/JointTolerance: -1 erases a default (the joint moves without that check)."""
+
+
+def resolve_tolerance(default: float, given: float) -> float:
+    """One tolerance of a goal over the controller's (control_msgs/JointTolerance; tolerances.hpp
+    ``resolve_tolerance_source``): > 0 replaces it, 0 keeps it, -1 erases it (0: not checked).
+
+    Raises:
+        ValueError: any other negative value.
+    """
+    if given > 0.0:
+        return given
+    if abs(given - _ERASE) < 1.1920929e-07:  # within a float's epsilon of -1, as upstream compares
+        return 0.0
+    if given < 0.0:
+        raise ValueError(given)
+    return default
+
+
+def segment_tolerances(
+    controller: JointTrajectoryController,
+    path: Sequence[tuple[str, float, float, float]],
+    goal: Sequence[tuple[str, float, float, float]],
+    goal_time: float,
+) -> SegmentTolerances:
+    """A FollowJointTrajectory goal's ``path_tolerance``, ``goal_tolerance`` ((joint, position, velocity,
+    acceleration) each) and ``goal_time_tolerance`` over the controller's ``constraints``, as ros2_controllers
+    jazzy's ``get_segment_tolerances`` resolves them: a joint the controller does not have, or an illegal
+    value, discards all of the goal's tolerances for the controller's own, with upstream's error."""
+    defaults = SegmentTolerances(dict(controller.path_tol), dict(controller.goal_tol), controller.goal_time)
+    log = controller.log
+    try:
+        resolved_time = resolve_tolerance(defaults.goal_time, goal_time)
+    except ValueError:
+        log.error(f"Specified illegal goal_time_tolerance: {goal_time:f}. Using default tolerances")
+        return defaults
+    out = SegmentTolerances(dict(defaults.path), dict(defaults.goal), resolved_time)
+    for which, given, table in (("path_tolerance", path, out.path), ("goal_tolerance", goal, out.goal)):
+        for name, *values in given:
+            if name not in table:
+                log.error(f"joint '{name}' specified in goal.{which} does not exist. Using default tolerances.")
+                return defaults
+            before = table[name]
+            resolved = []
+            for interface, value, old in zip(
+                ("position", "velocity", "acceleration"),
+                values,
+                (before.position, before.velocity, before.acceleration),
+            ):
+                try:
+                    resolved.append(resolve_tolerance(old, value))
+                except ValueError:
+                    log.error(
+                        f"joint '{name}' specified in goal.{which} has a invalid {interface} tolerance. "
+                        "Using default tolerances."
+                    )
+                    return defaults
+            table[name] = Tolerance(*resolved)
     return out
