@@ -299,6 +299,75 @@ def test_r6bot_refuses_goals_it_cannot_run(r6bot):
     assert code == -1 and "increase" in why
 
 
+def test_the_trajectory_controller_refuses_what_jazzys_validate_trajectory_msg_refuses(r6bot, caplog):
+    """joint_trajectory_controller.cpp validate_trajectory_msg (jazzy): no points; a last point still moving
+    (allow_nonzero_velocity_at_trajectory_end defaults to false); efforts for a controller without the effort
+    command interface; points without positions unless allow_integration_in_goal_trajectories."""
+    import logging
+
+    _sim, cm = r6bot
+    jtc = cm.controllers["joint_trajectory_controller"].controller
+    assert jtc.validate(JointTrajectory(0.0, R6_JOINTS, ())) == (-1, "Empty trajectory received.")
+    moving = (TrajectoryPoint(1.0, (0.1,) * 6, velocities=(0.0, 0.0, 0.5, 0.0, 0.0, 0.0)),)
+    code, why = jtc.validate(JointTrajectory(0.0, R6_JOINTS, moving))
+    assert code == -1 and why.startswith(f"Velocity of last trajectory point of joint {R6_JOINTS[2]} is not zero")
+    efforts = (TrajectoryPoint(1.0, (0.1,) * 6, effort=(1.0,) * 6),)
+    code, why = jtc.validate(JointTrajectory(0.0, R6_JOINTS, efforts))
+    assert code == -1 and "effort fields are only supported" in why
+    velocities_only = (TrajectoryPoint(1.0, (), velocities=(0.0,) * 6),)
+    code, why = jtc.validate(JointTrajectory(0.0, R6_JOINTS, velocities_only))
+    assert code == -1 and "0 positions for 6 joints" in why
+    # the parameters that allow them (set as a user's YAML would, then configured again)
+    cm.switch_controller([], ["joint_trajectory_controller"])
+    cm.files[0].nodes["joint_trajectory_controller"].update(
+        {"allow_nonzero_velocity_at_trajectory_end": True, "allow_integration_in_goal_trajectories": True}
+    )
+    with caplog.at_level(logging.WARNING):
+        cm.configure_controller("joint_trajectory_controller")
+    cm.switch_controller(["joint_trajectory_controller"], [])
+    assert jtc.validate(JointTrajectory(0.0, R6_JOINTS, moving)) is None
+    code, why = jtc.validate(JointTrajectory(0.0, R6_JOINTS, velocities_only))  # a position controller
+    assert code == -1 and "integrates positions only for velocity or effort" in why
+    assert not [r for r in caplog.records if "not read" in r.getMessage()]
+
+
+def test_a_new_goal_preempts_the_running_one_as_jazzys_preempt_active_goal_does(r6bot):
+    """joint_trajectory_controller.cpp preempt_active_goal (jazzy): the running goal is aborted with
+    INVALID_GOAL and "Current goal preempted by new incoming action."; the new one runs to its end."""
+    sim, cm = r6bot
+    jtc = cm.controllers["joint_trajectory_controller"].controller
+    sim.step(100)
+    first = TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, (TrajectoryPoint(2.0, (0.5,) * 6),)))
+    jtc.submit(first)
+    sim.step(300)
+    second = TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, (TrajectoryPoint(1.0, (0.1,) * 6),)))
+    jtc.submit(second)
+    _run(sim, second)
+    assert (first.status, first.error_code, first.error_string) == (
+        "aborted",
+        -1,
+        "Current goal preempted by new incoming action.",
+    )
+    assert second.status == "succeeded", second.error_string
+
+
+def test_a_controller_parameter_gazelle_does_not_read_is_named(r6bot, caplog):
+    import logging
+
+    _sim, cm = r6bot
+    cm.switch_controller([], ["joint_trajectory_controller"])
+    cm.files[0].nodes["joint_trajectory_controller"].update(
+        {"cmd_timeout": 0.5, "state_publish_rate": 50.0, "use_sim_time": True}
+    )
+    with caplog.at_level(logging.WARNING):
+        cm.configure_controller("joint_trajectory_controller")
+    said = [r.getMessage() for r in caplog.records if "not read" in r.getMessage()]
+    assert said == [
+        "controller 'joint_trajectory_controller': parameter(s) cmd_timeout, state_publish_rate are not read by "
+        "gazelle's joint_trajectory_controller/JointTrajectoryController: they have no effect"
+    ]
+
+
 # --------------------------------------------------------------------------- Panda
 def test_panda_loads_with_its_moveit_controllers_yaml_and_its_arm_jtc_moves(monkeypatch, make_sim):
     monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(PANDA))

@@ -103,6 +103,8 @@ class Controller:
         self.update_rate = 0
         """Hz; 0: every cycle of the manager."""
         self._endpoints: list[Endpoint] = []
+        self._read: set[str] = set()
+        """The parameters :meth:`param` was asked for since the last configure (the rest are reported)."""
 
     # ------------------------------------------------------------------ parameters
     def param(self, key: str, default: T, kind: type | tuple[type, ...] | None = None) -> T:
@@ -111,6 +113,7 @@ class Controller:
         Raises:
             ControlError: a value of the wrong type, naming the controller and the parameter.
         """
+        self._read.add(key)
         if key not in self.params:
             return default
         value = self.params[key]
@@ -165,12 +168,20 @@ class Controller:
 
     # ------------------------------------------------------------------ the lifecycle
     def configure(self) -> None:
-        """Read the parameters and declare topics (raises :class:`ControlError` on bad ones)."""
+        """Read the parameters and declare topics (raises :class:`ControlError` on bad ones). A parameter the
+        controller did not read is named in one warning: it has no effect here, and the user should know."""
+        self._read.clear()
         rate = self.param("update_rate", 0, int)
         if rate < 0:
             raise ControlError(f"controller '{self.name}': update_rate must not be negative")
         self.update_rate = rate
         self.on_configure()
+        unread = sorted(k for k in self.params if k not in self._read and k not in MANAGER_READ_PARAMETERS)
+        if unread:
+            self.log.warning(
+                f"controller '{self.name}': parameter(s) {', '.join(unread)} are not read by gazelle's "
+                f"{self.type_name or type(self).__name__}: they have no effect"
+            )
 
     def on_configure(self) -> None:
         """Subclasses: read parameters, declare topics."""
@@ -195,6 +206,12 @@ class Controller:
 
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
         """One cycle: read ``states``, write the claimed entries of ``commands``."""
+
+
+MANAGER_READ_PARAMETERS = frozenset({"type", "params_file", "use_sim_time", "fallback_controllers", "is_async"})
+"""A controller's parameters that are not the controller's to read: its type and parameter files (the
+controller manager's), ``use_sim_time`` (every node's: the simulation's clock is the one it runs on), and
+ros2_control's scheduling options (gazelle runs every controller in the simulation's step, in order)."""
 
 
 def _type_name(t: type | tuple[type, ...]) -> str:

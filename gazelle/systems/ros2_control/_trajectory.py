@@ -44,6 +44,9 @@ class TrajectoryResult(enum.IntEnum):
     GOAL_TOLERANCE_VIOLATED = -5
 
 
+_FLOAT_EPSILON = 1.1920929e-07
+"""std::numeric_limits<float>::epsilon(), the JTC's "not zero" threshold for the last point's velocities."""
+
 _ALLOWED_COMMANDS = (
     ("position",),
     ("position", "velocity"),
@@ -230,6 +233,8 @@ class JointTrajectoryController(Controller):
             raise ControlError(f"controller '{self.name}': state_interfaces must include 'position'")
         self.allow_partial = self.param("allow_partial_joints_goal", False, bool)
         self.open_loop = self.param("open_loop_control", False, bool)
+        self.allow_nonzero_end_velocity = self.param("allow_nonzero_velocity_at_trajectory_end", False, bool)
+        self.allow_integration = self.param("allow_integration_in_goal_trajectories", False, bool)
         self.stopped_velocity = self.param("constraints.stopped_velocity_tolerance", 0.01, float)
         self.goal_time = self.param("constraints.goal_time", 0.0, float)
         self.path_tol = {j: Tolerance(self.param(f"constraints.{j}.trajectory", 0.0, float)) for j in self.joints}
@@ -290,17 +295,32 @@ class JointTrajectoryController(Controller):
             )
         if len(set(traj.joint_names)) != len(traj.joint_names):
             return TrajectoryResult.INVALID_JOINTS, "a joint is named twice"
-        if not self.allow_partial and traj.points and set(traj.joint_names) != set(self.joints):
+        # the checks of jazzy's validate_trajectory_msg (joint_trajectory_controller.cpp), with its texts where
+        # it has one; the action's goal callback rejects with them and the topic logs them
+        if not traj.joint_names:
+            return TrajectoryResult.INVALID_JOINTS, "Empty joint names on incoming trajectory."
+        if not traj.points:
+            return TrajectoryResult.INVALID_GOAL, "Empty trajectory received."
+        if not self.allow_partial and set(traj.joint_names) != set(self.joints):
             missing = [j for j in self.joints if j not in traj.joint_names]
             return (
                 TrajectoryResult.INVALID_JOINTS,
                 f"joints {missing} are missing and allow_partial_joints_goal is false",
             )
         n = len(traj.joint_names)
+        if not self.allow_nonzero_end_velocity:  # Jazzy's default: a trajectory must end at rest
+            for name, v in zip(traj.joint_names, traj.points[-1].velocities):
+                if abs(v) > _FLOAT_EPSILON:
+                    return (
+                        TrajectoryResult.INVALID_GOAL,
+                        f"Velocity of last trajectory point of joint {name} is not zero: {v:.15f} "
+                        "(allow_nonzero_velocity_at_trajectory_end is false)",
+                    )
         last = -math.inf
         for i, p in enumerate(traj.points):
-            if len(p.positions) != n and not (not p.positions and self.cmd_kinds in (("velocity",), ("effort",))):
-                return TrajectoryResult.INVALID_GOAL, f"point {i} has {len(p.positions)} positions for {n} joints"
+            why = self._point_fields(i, p, n)
+            if why is not None:
+                return TrajectoryResult.INVALID_GOAL, why
             for label, values in (("velocities", p.velocities), ("accelerations", p.accelerations)):
                 if values and len(values) != n:
                     return TrajectoryResult.INVALID_GOAL, f"point {i} has {len(values)} {label} for {n} joints"
@@ -315,6 +335,25 @@ class JointTrajectoryController(Controller):
                     TrajectoryResult.OLD_HEADER_TIMESTAMP,
                     "the trajectory ended before it arrived (header stamp in the past)",
                 )
+        return None
+
+    def _point_fields(self, i: int, p: TrajectoryPoint, n: int) -> str | None:
+        """Why point ``i``'s fields are refused (None: they are fine). Positions are required for every joint
+        unless ``allow_integration_in_goal_trajectories`` (then a point needs one of positions, velocities or
+        accelerations; gazelle integrates no positions, so only a velocity or effort controller may leave them
+        out); efforts only for an effort controller (jazzy's rule)."""
+        if "effort" not in self.cmd_kinds and p.effort:
+            return (
+                "Trajectories with effort fields are only supported for controllers using the 'effort' command "
+                "interface."
+            )
+        if not p.positions and self.allow_integration:
+            if not (p.velocities or p.accelerations):
+                return "The given trajectory has no position, velocity, or acceleration points."
+            if self.cmd_kinds not in (("velocity",), ("effort",)):
+                return f"point {i} has no positions: gazelle integrates positions only for velocity or effort commands"
+        elif len(p.positions) != n:
+            return f"point {i} has {len(p.positions)} positions for {n} joints"
         return None
 
     def submit(self, goal: TrajectoryGoal) -> None:
@@ -334,9 +373,7 @@ class JointTrajectoryController(Controller):
             old = self._incoming
             self._incoming = (traj, goal)
         if old is not None and old[1] is not None:
-            old[1].finish(
-                GoalState.ABORTED, TrajectoryResult.SUCCESSFUL, "replaced by a newer trajectory before it started"
-            )
+            old[1].finish(GoalState.ABORTED, TrajectoryResult.INVALID_GOAL, _preempted_by(goal))
 
     def cancel(self, goal: TrajectoryGoal) -> None:
         """Stop ``goal`` (the joints hold where they are)."""
@@ -372,7 +409,7 @@ class JointTrajectoryController(Controller):
         empty trajectory stops the one running and holds where the joints are."""
         old = self._traj
         if old is not None and old.goal is not None and old.goal is not goal:
-            old.goal.finish(GoalState.ABORTED, TrajectoryResult.SUCCESSFUL, "preempted by a newer trajectory")
+            old.goal.finish(GoalState.ABORTED, TrajectoryResult.INVALID_GOAL, _preempted_by(goal))
         if not traj.points:
             self._traj = None
             self._hold = list(actual)
@@ -592,6 +629,16 @@ class JointTrajectoryController(Controller):
                 TrajectoryResult.GOAL_TOLERANCE_VIOLATED,
                 f"joints {outside} were not within the goal tolerance {allowed:g} s after the trajectory's end",
             )
+
+
+def _preempted_by(goal: TrajectoryGoal | None) -> str:
+    """Why a goal ended when a newer trajectory replaced it. A new goal aborts it as jazzy's
+    ``preempt_active_goal`` does (ABORTED, INVALID_GOAL, its text); a trajectory on ``~/joint_trajectory``
+    replaces the motion too, and here ends the goal the same way (upstream leaves the goal open, to be judged
+    against a trajectory it never sent)."""
+    if goal is not None:
+        return "Current goal preempted by new incoming action."
+    return "Current goal preempted by a trajectory on ~/joint_trajectory."
 
 
 def _violates(tol: Tolerance, err_p: float, err_v: float) -> bool:
