@@ -414,7 +414,8 @@ def test_a_camera_sees_a_red_plate_where_its_pose_and_camera_info_project_it_and
     image, info = images[-1], infos[-1]
     assert (image.width, image.height, image.encoding, image.frame_id) == (320, 240, "rgb8", "camera_link")
     f = 160 / math.tan(0.6)
-    assert info.k == pytest.approx((f, 0, 160, 0, f, 120, 0, 0, 1)) and info.p[0] == pytest.approx(f)
+    # gazebo_ros_camera's CameraInfo: the principal point at ((w + 1) / 2, (h + 1) / 2) (see the next test)
+    assert info.k == pytest.approx((f, 0, 160.5, 0, f, 120.5, 0, 0, 1)) and info.p[0] == pytest.approx(f)
     rgb = np.frombuffer(image.data, np.uint8).reshape(240, 320, 3)
     red = (rgb[..., 0] > 100) & (rgb[..., 1] < 60) & (rgb[..., 2] < 60)
     assert red.sum() > 100
@@ -429,6 +430,81 @@ def test_a_camera_sees_a_red_plate_where_its_pose_and_camera_info_project_it_and
     assert abs(depth[120, 160] - 5.9) < 1e-3  # the wall straight ahead
     assert abs(depth[int(v), int(u)] - 2.99) < 1e-3  # the plate, perpendicular to the axis
     assert math.isinf(depth[0, 160]) and depth[0, 160] > 0  # the sky: nothing within 50 m
+
+
+def test_camera_info_is_what_each_gazebo_publishes_and_classics_plugin_parameters_set_it(caplog, make_sim):
+    """gazebo_ros_camera.cpp (ros2 branch): cx, cy default to (w + 1) / 2, (h + 1) / 2; <focal_length> (warned
+    when it disagrees with the field of view), <cx>, <cy>, <hack_baseline> (P's Tx = -f · baseline),
+    <rectification_matrix>, <P_fx>.. <Ty> set the message. gz-sensors (no <lens><intrinsics>): the centre at
+    (w / 2, h / 2) from the projection, and <camera_info_topic> names its topic."""
+    from gazelle.systems.sensors import Camera
+
+    f = 160 / math.tan(0.6)
+    sim = make_sim()
+    params = (
+        "<cx>150</cx><cy>100</cy><focal_length>250</focal_length><hack_baseline>0.07</hack_baseline>"
+        "<rectification_matrix>0 1 0 1 0 0 0 0 1</rectification_matrix><P_cy>90</P_cy><Ty>0.5</Ty>"
+    )
+    xml = _camera_model().replace("</ros></plugin>", f"</ros>{params}</plugin>")
+    with caplog.at_level(logging.WARNING):
+        cam = next(s for s in _spawn(sim, xml, "cam").systems if isinstance(s, Camera))
+    info = cam.info(0.0)
+    assert info.k == pytest.approx((250, 0, 150, 0, 250, 100, 0, 0, 1))
+    assert info.r == pytest.approx((0, 1, 0, 1, 0, 0, 0, 0, 1))
+    assert info.p == pytest.approx((250, 0, 150, -250 * 0.07, 0, 250, 90, 0.5, 0, 0, 1, 0))
+    assert any("<focal_length> [250" in r.getMessage() and f"[{f:f}]" in r.getMessage() for r in caplog.records)
+    gz = (
+        _camera_model()
+        .replace(
+            '<plugin name="front_camera" filename="libgazebo_ros_camera.so"><ros><namespace>/bot</namespace></ros></plugin>',
+            "<topic>cam/image</topic>",
+        )
+        .replace("<horizontal_fov>", "<camera_info_topic>/cam/info</camera_info_topic><horizontal_fov>")
+    )
+    cam = next(s for s in _spawn(sim, gz, "gzcam").systems if isinstance(s, Camera))
+    assert (cam.topics.image, cam.topics.info) == ("/cam/image", "/cam/info")
+    assert cam.info(0.0).k == pytest.approx((f, 0, 160, 0, f, 120, 0, 0, 1))
+
+
+def test_camera_elements_gazelle_does_not_render_are_named(caplog, make_sim):
+    """What would change the image in Gazebo but not here is warned about, not dropped: <lens><intrinsics>
+    (gz renders with them), a triggered camera (it publishes at its rate here), and the like."""
+    sim = make_sim()
+    extra = "<lens><intrinsics><fx>300</fx><fy>300</fy><cx>160</cx><cy>120</cy></intrinsics></lens>"
+    extra += "<triggered>true</triggered><visibility_mask>3</visibility_mask>"
+    gz = _camera_model().replace("<horizontal_fov>", extra + "<horizontal_fov>")
+    with caplog.at_level(logging.WARNING):
+        _spawn(sim, gz, "cam")
+    said = " ".join(r.getMessage() for r in caplog.records)
+    for name in ("<lens>", "<triggered>", "<visibility_mask>"):
+        assert f"{name}" in said and "not simulated" in said, (name, said)
+    classic = _camera_model().replace("</ros></plugin>", "</ros><triggered>true</triggered></plugin>")
+    caplog.clear()
+    with caplog.at_level(logging.WARNING):
+        _spawn(sim, classic, "cam2")
+    assert any("<triggered>" in r.getMessage() and "image_trigger" in r.getMessage() for r in caplog.records)
+
+
+def test_a_gazebo_ros_depth_camera_reads_minus_inf_nearer_than_its_min_depth(make_sim):
+    """gazebo_ros_camera.cpp OnNewDepthFrame: depth <= <min_depth> (0.4 m by default) is -inf, >= <max_depth>
+    (+inf by default) +inf, in the depth image and the points."""
+    from gazelle.systems.sensors import Camera
+
+    sim = make_sim()
+    _spawn(sim, _box("wall", (0.4, 0.0, 1.0), (0.2, 20.0, 4.0), "0.5 0.5 0.5 1"), "wall")  # face at x = 0.3
+    for params, expected in (
+        ("", -math.inf),
+        ("<min_depth>0.1</min_depth>", 0.3),
+        ("<max_depth>0.25</max_depth><min_depth>0.1</min_depth>", math.inf),
+    ):
+        xml = _camera_model("depth", width=64, height=48).replace("</ros></plugin>", f"</ros>{params}</plugin>")
+        name = f"cam{len(params)}"
+        cam = next(s for s in _spawn(sim, xml, name).systems if isinstance(s, Camera))
+        depths = _record(sim, cam.topics.depth)
+        sim.step(1)
+        d = np.frombuffer(depths[-1].data, "<f4").reshape(48, 64)
+        assert d[24, 32] == pytest.approx(expected, abs=1e-3), params
+        sim.delete(name)
 
 
 def test_a_depth_camera_publishes_32fc1_and_a_cloud_in_the_optical_frame(make_sim):

@@ -34,6 +34,7 @@ from typing import ClassVar
 import numpy as np
 
 from ...description import (
+    ConfigElement,
     Sensor,
 )
 from ...physics import OffscreenRenderer, PhysicsWorld, RenderError
@@ -130,6 +131,7 @@ def parse_camera(sensor: Sensor, log: logging.Logger) -> CameraSpec:
     if fmt not in _ENCODINGS:
         log.warning(f"{where}sensor '{sensor.name}': image format '{fmt}' is not rendered; publishing rgb8 (R8G8B8)")
         fmt = "R8G8B8"
+    _warn_unrendered(cam, sensor, log)
     k1, k2, p1, p2, k3 = (parse_float(dist, t, 0.0, log) for t in ("k1", "k2", "p1", "p2", "k3"))
     coeffs = (k1, k2, p1, p2, k3)
     if dist is not None and any(coeffs):
@@ -145,6 +147,95 @@ def parse_camera(sensor: Sensor, log: logging.Logger) -> CameraSpec:
         far,
         coeffs,
         parse_noise(cam.find("noise"), log, f"sensor '{sensor.name}'"),
+    )
+
+
+_CAMERA_READ = frozenset({"image", "clip", "horizontal_fov", "distortion", "noise", "camera_info_topic"})
+"""The ``<camera>`` children gazelle reads; ``optical_frame_id`` (deprecated in gz-sensors, which uses the
+sensor's frame) and ``save`` (writes frames to disk) change nothing a subscriber gets."""
+_CAMERA_QUIET = frozenset({"optical_frame_id", "save"})
+
+
+def _warn_unrendered(cam: ConfigElement, sensor: Sensor, log: logging.Logger) -> None:
+    """Name the ``<camera>`` elements that change what Gazebo publishes but are not simulated here:
+    ``<lens>`` (gz-sensors renders with its intrinsics or projection; here the image and CameraInfo follow
+    ``<horizontal_fov>``), ``<triggered>`` (gz publishes only when triggered; here at the rate), the masks,
+    segmentation and bounding-box kinds, a ``<pose>`` of the camera in its sensor, ``<depth_camera>``'s own
+    clip planes."""
+    where = f"{sensor.location}: " if sensor.location else ""
+    for child in cam.children:
+        tag = child.tag
+        if tag in _CAMERA_READ or tag in _CAMERA_QUIET or ":" in tag:
+            continue
+        if tag == "triggered" and child.text.strip().lower() not in ("1", "true"):
+            continue
+        log.warning(
+            f"{f'{child.location}: ' if child.location else where}sensor '{sensor.name}': <{tag}> in <camera> "
+            "is not simulated (the image and CameraInfo follow <horizontal_fov>, <image> and <clip>, at the "
+            "sensor's rate)"
+        )
+
+
+@dataclass(frozen=True)
+class ClassicInfo:
+    """What gazebo_ros_camera publishes as CameraInfo (gazebo_plugins/src/gazebo_ros_camera.cpp, ros2 branch):
+    its own intrinsics, from the plugin's parameters over the field of view, and its depth limits."""
+
+    k: tuple[float, ...]
+    r: tuple[float, ...]
+    p: tuple[float, ...]
+    min_depth: float = 0.4
+    """``<min_depth>``, metres: depth at or nearer than it reads -inf (points too)."""
+    max_depth: float = math.inf
+    """``<max_depth>``, metres: depth at or beyond it reads +inf."""
+
+
+def classic_info(cfg: ConfigElement, spec: CameraSpec, log: logging.Logger) -> ClassicInfo:
+    """gazebo_ros_camera's CameraInfo: the principal point at ((w + 1) / 2, (h + 1) / 2) unless ``<cx>``/``<cy>``;
+    ``<focal_length>`` (0: width / (2 tan(hfov / 2)), which it warns about when they differ); R from
+    ``<rectification_matrix>``; P from ``<P_fx>``, ``<P_cx>``, ``<Tx>`` (-f · ``<hack_baseline>``), ``<P_fy>``,
+    ``<P_cy>``, ``<Ty>``. The image itself is rendered from the field of view, as Classic's is."""
+    w, h = spec.width, spec.height
+    cx = parse_float(cfg, "cx", (w + 1.0) / 2.0, log)
+    cy = parse_float(cfg, "cy", (h + 1.0) / 2.0, log)
+    computed = w / (2.0 * math.tan(spec.horizontal_fov / 2.0))
+    f = parse_float(cfg, "focal_length", 0.0, log)
+    if f == 0:
+        f = computed
+    elif abs(f - computed) > 1e-6:
+        el = cfg.find("focal_length")
+        where = f"{el.location}: " if el is not None and el.location else ""
+        log.warning(
+            f"{where}The <focal_length> [{f:f}] you have provided is inconsistent with specified <image_width> "
+            f"[{w}] and HFOV [{spec.horizontal_fov:f}]. Please double check to see that focal_length = width / "
+            f"(2.0 * tan(HFOV/2.0)). The expected focal_length value is [{computed:f}], please update your camera "
+            "model description accordingly."
+        )
+    baseline = parse_float(cfg, "hack_baseline", 0.0, log)
+    r = (1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)
+    raw = child_text(cfg, "rectification_matrix")
+    if raw:
+        try:
+            values = tuple(float(v) for v in raw.split())
+        except ValueError:
+            values = ()
+        if len(values) == 9:
+            r = values
+        else:
+            el = cfg.find("rectification_matrix")
+            where = f"{el.location}: " if el is not None and el.location else ""
+            log.warning(f"{where}<rectification_matrix> needs 9 numbers, got {raw!r}; using the identity")
+
+    def number(tag: str, default: float) -> float:
+        return parse_float(cfg, tag, default, log)
+
+    p = (
+        number("P_fx", f), 0.0, number("P_cx", cx), number("Tx", -f * baseline),
+        0.0, number("P_fy", f), number("P_cy", cy), number("Ty", 0.0),
+        0.0, 0.0, 1.0, 0.0,
+    )  # fmt: skip
+    return ClassicInfo(
+        (f, 0.0, cx, 0.0, f, cy, 0.0, 0.0, 1.0), r, p, number("min_depth", 0.4), number("max_depth", math.inf)
     )
 
 
@@ -190,6 +281,8 @@ class Camera(_SensorSystem):
         self._eps: dict[str, Endpoint] = {}
         self._renderer: OffscreenRenderer | None = None
         self._failed = False
+        self.classic: ClassicInfo | None = None
+        """gazebo_ros_camera's own CameraInfo and depth limits (None: gz-sim's, from the rendered projection)."""
 
     def configure(self, ctx: SystemContext) -> None:
         """Parse the ``<camera>`` block and the plugin; declare the image, info, depth and points topics."""
@@ -201,6 +294,15 @@ class Camera(_SensorSystem):
             return
         assert self.output is not None and self._pub is not None
         self.depth = ctx.sensor.type in DEPTH_TYPES
+        if ctx.plugin is not None:
+            self.classic = classic_info(ctx.plugin.config, spec, ctx.logger)
+            trigger = ctx.plugin.config.find("triggered")
+            if trigger is not None and trigger.text.strip().lower() in ("1", "true"):
+                ctx.logger.warning(
+                    f"{f'{trigger.location}: ' if trigger.location else ''}<triggered> camera: gazebo_ros_camera "
+                    "publishes a frame per message on <camera_name>/image_trigger; here it is not simulated and "
+                    "the camera publishes at its rate"
+                )
         self.topics = self._topics(ctx)
         # _configure_common advertised the image topic (output.topic); the others go beside it
         self._eps = {"image": self._pub}
@@ -243,9 +345,12 @@ class Camera(_SensorSystem):
             return CameraTopics(
                 f"{base}/image", f"{base}/camera_info", f"{base}/depth_image", f"{base}/camera_info", f"{base}/points"
             )
+        cam = self.sensor.config.find("camera") if self.sensor.config is not None else None
+        given = child_text(cam, "camera_info_topic")  # gz-sensors CameraSensor.cc: <camera_info_topic> names it
+        info = resolve_topic(given, ctx.entity.namespace) if given else f"{parent}/camera_info"
         if self.depth:  # gz depth_camera: <topic> is the depth image
-            return CameraTopics("", f"{parent}/camera_info", image, f"{parent}/camera_info", f"{image}/points")
-        return CameraTopics(image, f"{parent}/camera_info")
+            return CameraTopics("", info, image, info, f"{image}/points")
+        return CameraTopics(image, info)
 
     def _wanted(self) -> dict[str, bool]:
         return {k: ep.wanted for k, ep in self._eps.items()}
@@ -253,21 +358,15 @@ class Camera(_SensorSystem):
     def info(self, stamp: float) -> CameraInfo:
         """CameraInfo of this camera (K and P from ``horizontal_fov`` and the image size)."""
         s = self.spec
-        k = s.k()
-        # a monocular camera: P is K with a zero fourth column (no baseline), R the identity (not rectified)
-        p = (k[0], 0.0, k[2], 0.0, 0.0, k[4], k[5], 0.0, 0.0, 0.0, 1.0, 0.0)
         assert self.output is not None
-        return CameraInfo(
-            stamp,
-            self.output.frame_id,
-            s.height,
-            s.width,
-            "plumb_bob",
-            s.distortion,
-            k,
-            (1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0),
-            p,
-        )
+        if self.classic is not None:  # gazebo_ros_camera's own numbers (see classic_info)
+            k, r, p = self.classic.k, self.classic.r, self.classic.p
+        else:
+            k = s.k()
+            # a monocular camera: P is K with a zero fourth column (no baseline), R the identity (not rectified)
+            r = (1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)
+            p = (k[0], 0.0, k[2], 0.0, 0.0, k[4], k[5], 0.0, 0.0, 0.0, 1.0, 0.0)
+        return CameraInfo(stamp, self.output.frame_id, s.height, s.width, "plumb_bob", s.distortion, k, r, p)
 
     def render(self, world: PhysicsWorld, depth: bool) -> tuple[np.ndarray, np.ndarray | None] | None:
         """Colour (H x W x 3 uint8) and depth (metres, -inf nearer than near, +inf where nothing is
@@ -287,6 +386,9 @@ class Camera(_SensorSystem):
             # the depth buffer reads `far` (to float precision) where nothing was drawn: REP 118's +inf
             d = d.copy()
             d[d >= s.far * (1 - 1e-4)] = np.inf
+            if self.classic is not None:  # gazebo_ros_camera OnNewDepthFrame: its own valid range
+                d[d <= self.classic.min_depth] = -np.inf
+                d[d >= self.classic.max_depth] = np.inf
         return rgb.copy(), d
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
