@@ -20,6 +20,7 @@ Conventions the conversions keep:
 from __future__ import annotations
 
 import dataclasses
+import functools
 import importlib
 import math
 from array import array
@@ -61,6 +62,7 @@ from ..description import Pose
 from ..systems import (
     Altimeter,
     CameraInfo,
+    CloudLayout,
     Contacts,
     DeclaredMessage,
     DisplayTrajectory,
@@ -191,23 +193,25 @@ def to_laser_scan_msg(s: LaserScan) -> LaserScanMsg:
     return msg
 
 
-_CLOUD_FIELDS = [
-    PointField(name=n, offset=4 * i, datatype=PointField.FLOAT32, count=1) for i, n in enumerate("xyz")
-] + [PointField(name="intensity", offset=12, datatype=PointField.FLOAT32, count=1)]
+@functools.cache
+def _cloud_fields(layout: CloudLayout) -> list[PointField]:
+    """The PointFields of a layout (float32 each), made once per layout."""
+    return [PointField(name=n, offset=o, datatype=PointField.FLOAT32, count=1) for n, o in layout.fields]
 
 
 def to_point_cloud_msg(c: PointCloud) -> PointCloud2:
-    """sensor_msgs/PointCloud2 with float32 x, y, z, intensity (gazebo_ros_ray_sensor's layout)."""
+    """sensor_msgs/PointCloud2 of the payload's float32 fields (x, y, z, intensity for rays; x, y, z, rgb for
+    depth cameras, in each Gazebo's layout)."""
     msg = PointCloud2()
     msg.header.stamp = to_time(c.stamp_sec)
     msg.header.frame_id = c.frame_id
     msg.height, msg.width = c.height, c.width
-    msg.fields = _CLOUD_FIELDS
+    msg.fields = _cloud_fields(c.layout)
     msg.is_bigendian = False
-    msg.point_step = 16
-    msg.row_step = 16 * c.width
+    msg.point_step = c.layout.point_step
+    msg.row_step = c.layout.point_step * c.width
     msg.data = c.data
-    msg.is_dense = False
+    msg.is_dense = c.is_dense
     return msg
 
 

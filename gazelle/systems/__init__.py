@@ -59,6 +59,7 @@ if TYPE_CHECKING:
     from ._bus import resolve_topic as resolve_topic
     from ._payloads import Altimeter as Altimeter
     from ._payloads import CameraInfo as CameraInfo
+    from ._payloads import CloudLayout as CloudLayout
     from ._payloads import ContactPair as ContactPair
     from ._payloads import Contacts as Contacts
     from ._payloads import DisplayTrajectory as DisplayTrajectory
@@ -135,6 +136,7 @@ __all__ = [
     "PHYSICS",
     "PRE_PHYSICS",
     "PidGains",
+    "CloudLayout",
     "PointCloud",
     "PositionServo",
     "Qos",

@@ -175,9 +175,25 @@ class LaserScan:
 
 
 @dataclass(frozen=True, slots=True)
+class CloudLayout:
+    """The float32 fields of a PointCloud2's points, by name and byte offset, and the bytes per point."""
+
+    fields: tuple[tuple[str, int], ...]
+    point_step: int
+
+
+XYZI = CloudLayout((("x", 0), ("y", 4), ("z", 8), ("intensity", 12)), 16)
+"""x, y, z, intensity in 16 bytes: gazebo_ros_ray_sensor's and gz-sim's lidar clouds."""
+XYZ_RGB_PADDED = CloudLayout((("x", 0), ("y", 4), ("z", 8), ("rgb", 16)), 32)
+"""x, y, z, then rgb at byte 16 of 32 (PCL's PointXYZRGB): gazebo_ros_camera's depth cloud."""
+XYZ_RGB = CloudLayout((("x", 0), ("y", 4), ("z", 8), ("rgb", 12)), 16)
+"""x, y, z, rgb packed in 16 bytes (gz-msgs InitPointCloudPacked, not memory-aligned): gz-sim's depth cloud."""
+
+
+@dataclass(frozen=True, slots=True)
 class PointCloud:
-    """sensor_msgs/PointCloud2 with float32 fields x, y, z, intensity (16-byte points, unorganised
-    when ``height`` is 1), ``data`` little-endian bytes."""
+    """sensor_msgs/PointCloud2 of float32 fields (``layout``; unorganised when ``height`` is 1), ``data``
+    little-endian bytes."""
 
     stamp_sec: float
     frame_id: str
@@ -186,6 +202,9 @@ class PointCloud:
     height: int
     """Rows: 1 for an unorganised cloud, the image's height for a depth camera's organised one."""
     data: bytes
+    layout: CloudLayout = XYZI
+    is_dense: bool = False
+    """True only when every point is finite (an organised cloud with ±inf points is not dense)."""
 
 
 @dataclass(frozen=True, slots=True)

@@ -420,7 +420,7 @@ def test_a_waffle_style_robot_publishes_camera_images_and_info_scan_and_imu(sim_
         assert 0 < img["stamp"] < 1e5
     f = 160 / math.tan(1.085595 / 2)
     for info in by["/camera/camera_info"]:
-        assert info["k"] == pytest.approx([f, 0, 160, 0, f, 120, 0, 0, 1])
+        assert info["k"] == pytest.approx([f, 0, 160.5, 0, f, 120.5, 0, 0, 1])  # gazebo_ros_camera's (w + 1) / 2
     assert all(s["n"] == 360 for s in by["/scan"])
     assert all(m["accel"][2] == pytest.approx(9.8, abs=0.05) for m in by["/imu"])
 

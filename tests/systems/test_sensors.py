@@ -507,11 +507,14 @@ def test_a_gazebo_ros_depth_camera_reads_minus_inf_nearer_than_its_min_depth(mak
         sim.delete(name)
 
 
-def test_a_depth_camera_publishes_32fc1_and_a_cloud_in_the_optical_frame(make_sim):
+def test_a_depth_camera_publishes_32fc1_and_an_organised_cloud_as_gazebo_ros_camera_does(make_sim):
+    """gazebo_ros_camera.cpp OnNewDepthFrame: an organised cloud (one point per pixel, row by row) in the optical
+    frame (x right, y down, z the depth), fields x, y, z and rgb at byte 16 of 32 (PCL's PointXYZRGB, the
+    image's r, g, b bytes copied there as Classic copies them), ±inf outside the valid depths, not dense."""
     from gazelle.systems.sensors import Camera
 
     sim = make_sim()
-    _spawn(sim, _box("wall", (3.1, 0.0, 1.0), (0.2, 20.0, 4.0), "0.5 0.5 0.5 1"), "wall")  # face at x = 3
+    _spawn(sim, _box("wall", (3.1, 0.0, 0.5), (0.2, 20.0, 1.0), "1 0 0 1"), "wall")  # face at x = 3, red, 1 m tall
     cam = next(
         s for s in _spawn(sim, _camera_model("depth", width=64, height=48), "cam").systems if isinstance(s, Camera)
     )
@@ -521,11 +524,45 @@ def test_a_depth_camera_publishes_32fc1_and_a_cloud_in_the_optical_frame(make_si
     d = np.frombuffer(depths[-1].data, "<f4").reshape(48, 64)
     assert depths[-1].encoding == "32FC1"
     assert np.nanmax(np.abs(d[20:28, :] - 3.0)) < 1e-3  # the wall fills the middle rows, 3 m along the axis
-    pts = np.frombuffer(clouds[-1].data, "<f4").reshape(-1, 4)
-    on_wall = np.abs(pts[:, 2] - 3.0) < 1e-3  # optical frame: z forward
-    assert on_wall.sum() > 500
-    # x right, y down: a point left of centre in the image has negative x
-    assert pts[on_wall, 0].min() < -1.0 and pts[on_wall, 0].max() > 1.0
+    cloud = clouds[-1]
+    assert (cloud.width, cloud.height, cloud.layout.point_step, cloud.is_dense) == (64, 48, 32, False)
+    assert dict(cloud.layout.fields) == {"x": 0, "y": 4, "z": 8, "rgb": 16}
+    raw = np.frombuffer(cloud.data, np.uint8).reshape(48, 64, 32)
+    xyz = raw[..., :12].copy().view("<f4").reshape(48, 64, 3)
+    assert np.allclose(xyz[20:28, :, 2], d[20:28, :], atol=1e-6)  # z is the depth
+    fl = 64 / (2 * math.tan(0.6))
+    i = np.arange(64)
+    assert np.allclose(xyz[24, :, 0], d[24, :] * np.tan(np.arctan2(i - 31.5, fl)), atol=1e-4)  # x right
+    assert xyz[20, 32, 1] < 0 < xyz[27, 32, 1]  # y down
+    assert np.all(np.isinf(xyz[0, :, :])) and xyz[0, 0, 2] > 0  # the sky above the wall: +inf points
+    assert raw[24, 32, 16] > 100 and raw[24, 32, 17] < 60 and raw[24, 32, 18] < 60  # r, g, b bytes
+
+
+def test_a_gz_depth_camera_cloud_is_organised_in_its_x_forward_frame(make_sim):
+    """gz-sensors PointCloudUtil::FillMsg (DepthCameraSensor): organised, x the depth, y to the left and z up
+    (the sensor frame, not the optical one), fields x, y, z, rgb at 0, 4, 8, 12 in 16 bytes (gz-msgs
+    InitPointCloudPacked, not memory-aligned), the colour's bytes b, g, r."""
+    from gazelle.systems.sensors import Camera
+
+    sim = make_sim()
+    _spawn(sim, _box("wall", (3.1, 0.0, 1.0), (0.2, 20.0, 4.0), "0 0 1 1"), "wall")  # blue
+    gz = _camera_model("depth_camera", width=64, height=48).replace(
+        '<plugin name="front_camera" filename="libgazebo_ros_camera.so"><ros><namespace>/bot</namespace></ros></plugin>',
+        "<topic>depth</topic>",
+    )
+    cam = next(s for s in _spawn(sim, gz, "cam").systems if isinstance(s, Camera))
+    assert cam.topics.points == "/depth/points"
+    clouds = _record(sim, "/depth/points")
+    sim.step(1)
+    cloud = clouds[-1]
+    assert (cloud.width, cloud.height, cloud.layout.point_step) == (64, 48, 16)
+    assert dict(cloud.layout.fields) == {"x": 0, "y": 4, "z": 8, "rgb": 12}
+    raw = np.frombuffer(cloud.data, np.uint8).reshape(48, 64, 16)
+    xyz = raw[..., :12].copy().view("<f4").reshape(48, 64, 3)
+    assert np.allclose(xyz[20:28, :, 0], 3.0, atol=1e-3)  # x forward: the depth
+    assert xyz[24, 0, 1] > 1.0 and xyz[24, 63, 1] < -1.0  # the image's left is +y
+    assert xyz[20, 32, 2] > 0 > xyz[27, 32, 2]  # up is +z
+    assert raw[24, 32, 12] > 100 and raw[24, 32, 13] < 60 and raw[24, 32, 14] < 60  # b, g, r bytes
 
 
 def test_a_camera_of_zero_pixels_is_an_error_naming_file_and_line(caplog, make_sim):

@@ -40,7 +40,7 @@ from ...description import (
 from ...physics import OffscreenRenderer, PhysicsWorld, RenderError
 from .._base import SystemContext, UpdateInfo
 from .._bus import Endpoint, MsgType, resolve_topic
-from .._payloads import CameraInfo, Image, PointCloud
+from .._payloads import XYZ_RGB, XYZ_RGB_PADDED, CameraInfo, Image, PointCloud
 from .._plugin_config import child_text, parse_float
 from ._common import (
     SENSOR_DEPTH,
@@ -432,18 +432,37 @@ class Camera(_SensorSystem):
                 Image(t, frame, s.height, s.width, "32FC1", s.width * 4, d.astype("<f4").tobytes())
             )
         if want.get("points"):
-            # back-project each finite depth pixel through K: x right, y down, z forward (the optical frame);
-            # +0.5 because a pixel's centre is at half-integers, as k() assumes
-            k = s.k()
-            v, u = np.mgrid[0 : s.height, 0 : s.width]
-            ok = np.isfinite(d)
-            z = d[ok]
-            x = (u[ok] + 0.5 - k[2]) / k[0] * z
-            y = (v[ok] + 0.5 - k[5]) / k[4] * z
-            cloud = np.empty((len(z), 4), np.float32)
-            cloud[:, 0], cloud[:, 1], cloud[:, 2] = x, y, z
-            cloud[:, 3] = rgb[ok] @ np.array([1.0 / 3, 1.0 / 3, 1.0 / 3]) / 255.0
-            self._eps["points"].publish(PointCloud(t, frame, len(z), 1, cloud.astype("<f4").tobytes()))
+            self._eps["points"].publish(self.cloud(t, frame, rgb, d))
+
+    def cloud(self, t: float, frame: str, rgb: np.ndarray, d: np.ndarray) -> PointCloud:
+        """The depth image as the organised cloud (one point per pixel, row by row) each Gazebo publishes:
+
+        * gazebo_ros_camera (``OnNewDepthFrame``): in the optical frame, x = z·tan(right angle),
+          y = z·tan(down angle), z the depth, the angles about the centre ((w - 1) / 2, (h - 1) / 2) through
+          f = w / (2 tan(hfov / 2)); an invalid depth makes every coordinate ±inf; rgb at byte 16 of 32 holds the
+          image's r, g, b bytes in that order (as Classic copies them).
+        * gz-sensors (``PointCloudUtil::FillMsg``): in the sensor frame, x the depth, y = x·tan(left angle),
+          z = x·tan(up angle); rgb at byte 12 of 16 holds b, g, r (little-endian packing)."""
+        s = self.spec
+        h, w = d.shape
+        f = w / (2.0 * math.tan(s.horizontal_fov / 2.0))
+        right = np.tan(np.arctan2(np.arange(w) - 0.5 * (w - 1), f))[None, :]
+        down = np.tan(np.arctan2(np.arange(h) - 0.5 * (h - 1), f))[:, None]
+        colour = rgb if rgb.ndim == 3 else np.repeat(rgb[..., None], 3, axis=2)
+        with np.errstate(invalid="ignore"):  # inf x tan(0) is nan, as in Gazebo's own arithmetic
+            if self.classic is not None:
+                layout, xyz = XYZ_RGB_PADDED, np.stack([d * right, d * down, d], axis=-1)
+                invalid = ~np.isfinite(d)
+                xyz[invalid] = d[invalid][:, None]  # every coordinate of an invalid point is its ±inf
+                bytes_rgb = colour
+            else:
+                layout, xyz = XYZ_RGB, np.stack([d, -d * right, -d * down], axis=-1)
+                bytes_rgb = colour[..., ::-1]
+        points = np.zeros((h, w, layout.point_step), np.uint8)
+        points[..., :12] = xyz.astype("<f4").view(np.uint8).reshape(h, w, 12)
+        offset = dict(layout.fields)["rgb"]
+        points[..., offset : offset + 3] = bytes_rgb
+        return PointCloud(t, frame, w, h, points.tobytes(), layout, bool(np.isfinite(d).all()))
 
     def shutdown(self) -> None:
         """Free the GL context (on the simulation thread, where it was made)."""
