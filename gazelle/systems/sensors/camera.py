@@ -9,11 +9,15 @@ What a ROS user gets, and where it comes from:
   z forward, x right, y down (:data:`OPTICAL`). A URDF that adds its own ``*_optical_frame`` link and
   names it in ``<frame_name>`` gets that frame, as in Gazebo.
 * **Units.** Depth is 32FC1 in metres (REP 118): ``+inf`` where nothing is within ``<clip><far>``,
-  ``-inf`` nearer than ``<near>``. Points are metres in the same optical frame, with an ``rgb``-less
-  ``intensity`` (the mean of the colour channels, 0..1).
-* **Intrinsics.** Square pixels from ``<horizontal_fov>`` and the image size, principal point at the
-  centre (:meth:`CameraSpec.k`), as gz-sensors computes them when no ``<lens><intrinsics>`` are given.
-  ``<distortion>`` is published in CameraInfo, not applied to the image (gazelle warns).
+  ``-inf`` nearer than ``<near>`` (gazebo_ros_camera: nearer than its ``<min_depth>``, 0.4 m by default).
+  Points are an organised cloud (a point per pixel) in metres with the pixel's colour (``rgb``), laid out
+  as each Gazebo lays them out: gazebo_ros_camera's in the optical frame, gz-sim's in the sensor's
+  x-forward frame (:meth:`Camera.cloud`).
+* **Intrinsics.** Square pixels from ``<horizontal_fov>`` and the image size. gz-sim's CameraInfo puts the
+  principal point at the centre, (w / 2, h / 2) (:meth:`CameraSpec.k`, as gz-sensors derives it from the
+  projection when no ``<lens><intrinsics>`` are given); gazebo_ros_camera's at ((w + 1) / 2, (h + 1) / 2)
+  unless its ``<cx>``/``<cy>`` say otherwise (:func:`classic_info`). ``<distortion>`` is published in
+  CameraInfo, not applied to the image (gazelle warns).
 * **Noise.** ``<noise type="gaussian">`` as gz-sensors' image noise: mean and stddev are in units of
   the full channel range (0..1), so a stddev of 0.007 moves a channel by about 1.8 of 255.
 * **Cost.** Rendering is the most expensive thing a sensor does: a camera renders only at its rate and
