@@ -1346,3 +1346,10 @@ def test_a_gps_fix_carries_the_covariance_and_service_each_gazebo_sends(make_sim
         sim.step(1)
         fix: NavSatFix = fixes[-1]
         assert (fix.position_covariance, fix.covariance_type, fix.service) == (covariance, kind, service), inner
+
+
+def test_a_gazebo_ros_ft_sensor_in_link_mode_says_it_is_not_simulated(caplog, make_sim):
+    plugin = '<plugin name="ft" filename="libgazebo_ros_ft_sensor.so"><body_name>bob</body_name></plugin>'
+    with caplog.at_level(logging.ERROR):
+        _spawn(make_sim(), _arm(plugin=plugin), "arm")
+    assert any("<body_name>" in r.getMessage() and "not simulated" in r.getMessage() for r in caplog.records)

@@ -123,6 +123,15 @@ class ForceTorqueSensor(System):
         )
         self.config = c
         joint = next((j for j in ctx.entity.model.joints if j.name == c.joint_name), None)
+        cfg = ctx.plugin.config if ctx.plugin is not None else None
+        if not c.joint_name and child_text(cfg, "body_name") is not None:
+            # gazebo_ros_ft_sensor's link mode reports Link::WorldForce/WorldTorque, the force other plugins
+            # applied to the link this step, in world axes: not simulated here, and said instead of dropped
+            log.error(
+                f"{where}force-torque sensor: <body_name> (gazebo_ros_ft_sensor's link mode: the force applied to "
+                "a link) is not simulated; name the joint it hangs on in <joint_name> instead. It does nothing"
+            )
+            return
         if joint is None:
             log.error(f"{where}force-torque sensor: '{ctx.entity.name}' has no joint '{c.joint_name}'; it does nothing")
             return
