@@ -156,11 +156,16 @@ def to_transform_msg(t: Transform) -> TransformStamped:
     return msg
 
 
+def _stamped(msg: Any, payload: Any) -> Any:
+    """``msg`` with its header from the payload's ``stamp_sec`` (sim time) and ``frame_id``."""
+    msg.header.stamp = to_time(payload.stamp_sec)
+    msg.header.frame_id = payload.frame_id
+    return msg
+
+
 def to_odometry_msg(o: Odometry) -> OdometryMsg:
     """A bus Odometry -> nav_msgs/Odometry."""
-    msg = OdometryMsg()
-    msg.header.stamp = to_time(o.stamp_sec)
-    msg.header.frame_id = o.frame_id
+    msg = _stamped(OdometryMsg(), o)
     msg.child_frame_id = o.child_frame_id
     msg.pose.pose = to_pose_msg(o.pose)
     msg.pose.covariance = [float(v) for v in o.pose_covariance]
@@ -182,9 +187,7 @@ def to_joint_state_msg(j: JointStates) -> JointStateMsg:
 
 def to_laser_scan_msg(s: LaserScan) -> LaserScanMsg:
     """sensor_msgs/LaserScan (the float32 bytes go into the array fields without a Python loop)."""
-    msg = LaserScanMsg()
-    msg.header.stamp = to_time(s.stamp_sec)
-    msg.header.frame_id = s.frame_id
+    msg = _stamped(LaserScanMsg(), s)
     msg.angle_min, msg.angle_max, msg.angle_increment = s.angle_min, s.angle_max, s.angle_increment
     msg.time_increment, msg.scan_time = s.time_increment, s.scan_time
     msg.range_min, msg.range_max = s.range_min, s.range_max
@@ -202,9 +205,7 @@ def _cloud_fields(layout: CloudLayout) -> list[PointField]:
 def to_point_cloud_msg(c: PointCloud) -> PointCloud2:
     """sensor_msgs/PointCloud2 of the payload's float32 fields (x, y, z, intensity for rays; x, y, z, rgb for
     depth cameras, in each Gazebo's layout)."""
-    msg = PointCloud2()
-    msg.header.stamp = to_time(c.stamp_sec)
-    msg.header.frame_id = c.frame_id
+    msg = _stamped(PointCloud2(), c)
     msg.height, msg.width = c.height, c.width
     msg.fields = _cloud_fields(c.layout)
     msg.is_bigendian = False
@@ -217,9 +218,7 @@ def to_point_cloud_msg(c: PointCloud) -> PointCloud2:
 
 def to_range_msg(r: Range) -> RangeMsg:
     """sensor_msgs/Range."""
-    msg = RangeMsg()
-    msg.header.stamp = to_time(r.stamp_sec)
-    msg.header.frame_id = r.frame_id
+    msg = _stamped(RangeMsg(), r)
     msg.radiation_type = r.radiation_type
     msg.field_of_view, msg.min_range, msg.max_range, msg.range = r.field_of_view, r.min_range, r.max_range, r.range
     return msg
@@ -227,9 +226,7 @@ def to_range_msg(r: Range) -> RangeMsg:
 
 def to_imu_msg(i: Imu) -> ImuMsg:
     """sensor_msgs/Imu."""
-    msg = ImuMsg()
-    msg.header.stamp = to_time(i.stamp_sec)
-    msg.header.frame_id = i.frame_id
+    msg = _stamped(ImuMsg(), i)
     q = msg.orientation
     q.w, q.x, q.y, q.z = (float(v) for v in i.orientation)
     av, la = msg.angular_velocity, msg.linear_acceleration
@@ -243,9 +240,7 @@ def to_imu_msg(i: Imu) -> ImuMsg:
 
 def to_image_msg(i: Image) -> ImageMsg:
     """sensor_msgs/Image."""
-    msg = ImageMsg()
-    msg.header.stamp = to_time(i.stamp_sec)
-    msg.header.frame_id = i.frame_id
+    msg = _stamped(ImageMsg(), i)
     msg.height, msg.width, msg.encoding, msg.step = i.height, i.width, i.encoding, i.step
     msg.is_bigendian = 0
     msg.data = i.data
@@ -254,9 +249,7 @@ def to_image_msg(i: Image) -> ImageMsg:
 
 def to_camera_info_msg(c: CameraInfo) -> CameraInfoMsg:
     """sensor_msgs/CameraInfo."""
-    msg = CameraInfoMsg()
-    msg.header.stamp = to_time(c.stamp_sec)
-    msg.header.frame_id = c.frame_id
+    msg = _stamped(CameraInfoMsg(), c)
     msg.height, msg.width = c.height, c.width
     msg.distortion_model = c.distortion_model
     msg.d = array("d", c.d)
@@ -272,9 +265,7 @@ def _vec(v) -> Vector3:
 
 def to_contacts_msg(c: Contacts) -> ContactsState:
     """gazebo_msgs/ContactsState (one ContactState per pair of collisions in contact)."""
-    msg = ContactsState()
-    msg.header.stamp = to_time(c.stamp_sec)
-    msg.header.frame_id = c.frame_id
+    msg = _stamped(ContactsState(), c)
     states = []
     for pair in c.states:
         st = ContactState()
@@ -298,9 +289,7 @@ def to_gz_contacts_msg(c: Contacts) -> GzContacts:
     sensor message (gz-sim8 Physics.cc fills it): one Contact per pair of collisions, named (gazelle has no
     entity numbers: ids 0, type unset as in gz's), each point's position, normal, depth and the wrench
     pair, force on collision1 and its opposite on collision2 (gz sends no torque: zero)."""
-    msg = GzContacts()
-    msg.header.stamp = to_time(c.stamp_sec)
-    msg.header.frame_id = c.frame_id
+    msg = _stamped(GzContacts(), c)
     contacts = []
     for pair in c.states:
         contact = GzContact()
@@ -323,9 +312,7 @@ def to_gz_contacts_msg(c: Contacts) -> GzContacts:
 
 def to_nav_sat_fix_msg(f: NavSatFix) -> NavSatFixMsg:
     """sensor_msgs/NavSatFix with a fix from the GPS service."""
-    msg = NavSatFixMsg()
-    msg.header.stamp = to_time(f.stamp_sec)
-    msg.header.frame_id = f.frame_id
+    msg = _stamped(NavSatFixMsg(), f)
     msg.status.status = NavSatStatus.STATUS_FIX
     msg.status.service = f.service
     msg.latitude, msg.longitude, msg.altitude = f.latitude, f.longitude, f.altitude
@@ -336,18 +323,14 @@ def to_nav_sat_fix_msg(f: NavSatFix) -> NavSatFixMsg:
 
 def to_vector3_stamped_msg(v: Vector3Stamped) -> Vector3StampedMsg:
     """geometry_msgs/Vector3Stamped."""
-    msg = Vector3StampedMsg()
-    msg.header.stamp = to_time(v.stamp_sec)
-    msg.header.frame_id = v.frame_id
+    msg = _stamped(Vector3StampedMsg(), v)
     msg.vector = _vec(v.vector)
     return msg
 
 
 def to_wrench_stamped_msg(w: WrenchStamped) -> WrenchStampedMsg:
     """geometry_msgs/WrenchStamped."""
-    msg = WrenchStampedMsg()
-    msg.header.stamp = to_time(w.stamp_sec)
-    msg.header.frame_id = w.frame_id
+    msg = _stamped(WrenchStampedMsg(), w)
     msg.wrench = Wrench(force=_vec(w.force), torque=_vec(w.torque))
     return msg
 
@@ -398,9 +381,7 @@ def from_twist_stamped_msg(m: TwistStampedMsg) -> TwistStamped:
 
 def to_twist_stamped_msg(t: TwistStamped) -> TwistStampedMsg:
     """Bus payload -> geometry_msgs/TwistStamped."""
-    msg = TwistStampedMsg()
-    msg.header.stamp = to_time(t.stamp_sec)
-    msg.header.frame_id = t.frame_id
+    msg = _stamped(TwistStampedMsg(), t)
     msg.twist = to_twist_msg(t.twist)
     return msg
 

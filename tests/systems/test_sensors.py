@@ -179,7 +179,11 @@ def test_pointcloud2_and_range_outputs(make_sim):
     assert rng.range == pytest.approx(2.0 / math.cos(0.0), abs=1e-3)
 
 
-def _imu_box(extra: str = "", offset: str = "0.3 0 0 0 0 0") -> str:
+def _imu_box(extra: str = "", offset: str = "0.3 0 0 0 0 0", plugin: bool = True) -> str:
+    ros = """<plugin name="imu_plugin" filename="libgazebo_ros_imu_sensor.so">
+        <ros><namespace>/demo</namespace><remapping>~/out:=imu</remapping></ros>
+        <frame_name>imu_link</frame_name>
+      </plugin>"""
     return f"""<?xml version="1.0"?>
 <sdf version="1.9"><model name="imu_box">
   <link name="body">
@@ -189,10 +193,7 @@ def _imu_box(extra: str = "", offset: str = "0.3 0 0 0 0 0") -> str:
       <pose>{offset}</pose>
       <update_rate>100</update_rate>
       {extra}
-      <plugin name="imu_plugin" filename="libgazebo_ros_imu_sensor.so">
-        <ros><namespace>/demo</namespace><remapping>~/out:=imu</remapping></ros>
-        <frame_name>imu_link</frame_name>
-      </plugin>
+      {ros if plugin else ""}
     </sensor>
   </link>
 </model></sdf>"""
@@ -1203,14 +1204,7 @@ def test_air_pressure_noise_and_its_variance_as_gz_sensors_reports_it_and_the_ro
 
 def _gz_imu_box(imu: str = "", topic: str = "imu") -> str:
     """The IMU box with no gazebo_ros plugin: gz-sim's Imu system runs it (on ``<topic>``)."""
-    return f"""<?xml version="1.0"?>
-<sdf version="1.9"><model name="imu_box">
-  <link name="body">
-    <inertial><mass>1.0</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.02</izz></inertia></inertial>
-    <collision name="c"><geometry><box><size>0.4 0.4 0.1</size></box></geometry></collision>
-    <sensor name="imu" type="imu"><update_rate>100</update_rate><topic>{topic}</topic>{imu}</sensor>
-  </link>
-</model></sdf>"""
+    return _imu_box(f"<topic>{topic}</topic>{imu}", offset="0 0 0 0 0 0", plugin=False)
 
 
 def _yaw(q) -> float:
