@@ -80,6 +80,19 @@ def servo(panda_resources, gazelle_sim, ros, tmp_path):
     from moveit_msgs.srv import ServoCommandType
 
     ros.wait_for_service("/servo_node/switch_command_type", ServoCommandType, timeout=60)
+    # the servo's trajectories go out on a volatile topic, and a drive is over in 1-2 s of wall time: one that
+    # starts before the server's controller has discovered the servo's publisher loses its first commands
+    # (the likeliest cause of one run's 15 mm rise for 50, not reproduced). The test's node sees both ends once
+    # their announcements have gone round, which the server's take too
+    out = SERVO["command_out_topic"]
+    ros.wait_until(
+        lambda: (
+            any(i.node_name == "servo_node" for i in ros.node.get_publishers_info_by_topic(out))
+            and ros.node.count_subscribers(out) >= 1
+        ),
+        timeout=30,
+        what=f"the servo's publisher and the controller's subscriber on {out}",
+    )
     scene = RobotScene(
         read_description_file(str(CONFIG / "panda.urdf.xacro")),
         (CONFIG / "panda.srdf").read_text(),
