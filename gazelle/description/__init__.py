@@ -48,6 +48,7 @@ from ._untrusted import yaml_problem as yaml_problem
 from ._xacro import expand_bounded as expand_xacro_bounded  # noqa: F401 - public
 from ._xacro import read_description_file as read_description_file
 from ._xacro import xacro_main as xacro_main
+from ._xml import parse_floats as parse_floats
 
 FORMATS = ("urdf", "xacro", "sdf", "srdf")
 _SUFFIXES = {

@@ -670,7 +670,7 @@ def resolve_tolerance(default: float, given: float) -> float:
     """
     if given > 0.0:
         return given
-    if abs(given - _ERASE) < 1.1920929e-07:  # within a float's epsilon of -1, as upstream compares
+    if abs(given - _ERASE) < _FLOAT_EPSILON:  # within a float's epsilon of -1, as upstream compares
         return 0.0
     if given < 0.0:
         raise ValueError(given)

@@ -40,6 +40,7 @@ import numpy as np
 from ...description import (
     ConfigElement,
     Sensor,
+    parse_floats,
 )
 from ...physics import OffscreenRenderer, PhysicsWorld, RenderError
 from .._base import SystemContext, UpdateInfo
@@ -219,11 +220,8 @@ def classic_info(cfg: ConfigElement, spec: CameraSpec, log: logging.Logger) -> C
     r = (1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)
     raw = child_text(cfg, "rectification_matrix")
     if raw:
-        try:
-            values = tuple(float(v) for v in raw.split())
-        except ValueError:
-            values = ()
-        if len(values) == 9:
+        values = parse_floats(raw, 9)
+        if values is not None:
             r = values
         else:
             el = cfg.find("rectification_matrix")

@@ -28,6 +28,7 @@ from ...description import (
     ConfigElement,
     Quat,
     Sensor,
+    parse_floats,
     quat_conj,
     quat_from_rpy,
     quat_mul,
@@ -124,7 +125,7 @@ def gz_orientation_reference(sensor: Sensor | None, heading_deg: float, log: log
         rpy = frame.find("custom_rpy")
         parent = rpy.attr("parent_frame", "") if rpy is not None else ""
         if rpy is not None and parent == "world":
-            values = parse_vec3(rpy.text, (0.0, 0.0, 0.0))
+            values = parse_floats(rpy.text, 3) if rpy.text.strip() else (0.0, 0.0, 0.0)  # sdf: "0 0 0" by default
             if values is not None:
                 return OrientationReference(quat_mul(heading, quat_from_rpy(*values)), enabled)
             log.warning(f"{where}IMU <custom_rpy> must be three numbers, got {rpy.text.strip()!r} (rpy is 0 0 0)")
@@ -145,18 +146,6 @@ def _imu_block(sensor: Sensor | None) -> ConfigElement | None:
     """The ``<imu>`` element of a ``<sensor>``, if any."""
     config = sensor.config if sensor is not None else None
     return config.find("imu") if config is not None else None
-
-
-def parse_vec3(text: str, default: tuple[float, float, float]) -> tuple[float, float, float] | None:
-    """Three numbers separated by spaces; ``default`` for an empty text; None when not three numbers."""
-    parts = text.split()
-    if not parts:
-        return default
-    try:
-        x, y, z = (float(v) for v in parts)
-    except ValueError:
-        return None
-    return x, y, z
 
 
 @sensor_system
