@@ -121,6 +121,21 @@ def _switch(ros, kind: int) -> None:
     ).success
 
 
+def _drive_report(sent, status, said: int, began: float) -> str:
+    """What the servo published during a drive that began at sim time ``began``: how many trajectories the
+    test heard and at which sim times (the largest gap between two), and the status codes it said."""
+    times = [t - began for t in sent.sim_times]
+    gaps = np.diff(times) if len(times) > 1 else np.array([0.0])
+    codes = [s.code for s in status.messages[said:]]
+    counts = {c: codes.count(c) for c in sorted(set(codes))}
+    first = f"{times[0]:.3f}" if times else "-"
+    last = f"{times[-1]:.3f}" if times else "-"
+    return (
+        f"{len(times)} trajectories heard (first at +{first} s, last at +{last} s, largest gap "
+        f"{float(gaps.max()):.3f} s); status codes {counts}"
+    )
+
+
 def _drive(gazelle_sim, ros, pub, make, seconds: float) -> None:
     """Publish ``make()`` stamped now before each 20 ms chunk of sim time, for ``seconds``."""
     end = ros.sim_time + seconds
@@ -161,12 +176,20 @@ def test_a_twist_moves_the_flange_along_it_a_jog_turns_a_joint_and_old_or_paused
 
     _switch(ros, 1)  # TWIST
     start = flange()
+    # what the servo sent and said during the drive, to explain a failure (the flake above)
+    from trajectory_msgs.msg import JointTrajectory
+
+    sent = ros.subscribe(SERVO["command_out_topic"], JointTrajectory)
+    said = len(status)
+    began = ros.sim_time
     _drive(gazelle_sim, ros, twists, up, 1.0)
     gazelle_sim.run_for(0.3)  # the trajectory's last points (max_expected_latency ahead) play out
     moved = flange() - start
     # 1 s of commands, and the last one acts until it is older than incoming_command_timeout (0.1 s)
     # (and the trajectory the controller got a chunk late on a busy machine: up to 0.2 s more in all)
-    assert 0.045 < moved[2] < 0.06, f"the flange rose {moved[2] * 1000:.1f} mm for 1 s at 50 mm/s"
+    assert 0.045 < moved[2] < 0.06, f"the flange rose {moved[2] * 1000:.1f} mm for 1 s at 50 mm/s; " + _drive_report(
+        sent, status, said, began
+    )
     assert math.hypot(moved[0], moved[1]) < 0.002, f"drifted {moved[:2] * 1000} mm sideways"
 
     # the same twist published once, then nothing: older than incoming_command_timeout (0.1 s), it halts
