@@ -46,11 +46,19 @@ def parse_srdf(text: str, *, source: str, sink: DiagnosticSink) -> Semantics | N
 
 
 class _Reader:
+    """One pass over an SRDF's elements. Every problem goes to the sink with its file:line, and the reader goes
+    on: an element that cannot be read (a missing name, an unknown virtual joint type) is reported and left
+    out, and the rest of the file still loads, so one typo in a 300-line SRDF is one message, not a robot
+    without semantics. Names are checked against each other only at the end (:meth:`check_references`),
+    since SRDF lets a group name a subgroup defined further down."""
+
     def __init__(self, source: str, sink: DiagnosticSink) -> None:
+        """Read elements of the file ``source`` (the name its diagnostics carry), reporting to ``sink``."""
         self.source = source
         self.sink = sink
 
     def loc(self, element: etree._Element) -> SourceLocation:
+        """Where ``element`` is: the file and its line (for the diagnostics)."""
         return element_location(element, self.source)
 
     def attr(self, element: etree._Element, name: str) -> str | None:

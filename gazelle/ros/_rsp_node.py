@@ -2,17 +2,30 @@
 robot_state_publisher robot_state_publisher --ros-args -p robot_description:=...``.
 
 Reads the ``robot_description`` parameter (URDF text: data, never xacro-expanded) and ``joint_states``;
-publishes ``robot_description`` (latched), ``/tf_static`` for fixed joints and ``/tf`` for moving ones
-from each JointState (stamped with it, or now with ``ignore_timestamp``), at most ``publish_frequency``
-times a second, every frame prefixed with ``frame_prefix``. Floating joints are skipped and planar
-ones are fixed, as robot_state_publisher does.
+publishes ``robot_description`` (latched), ``/tf_static`` for fixed joints and ``/tf`` for moving ones,
+every frame prefixed with ``frame_prefix``. What it does is robot_state_publisher 3.3.3's (Jazzy;
+``src/robot_state_publisher.cpp``), read from its source:
+
+* the tree is every joint of the URDF, a ``world`` link's joints included (a fixed ``world`` ->
+  ``base_link`` joint is a static transform, as KDL makes it); floating joints are skipped and planar
+  ones are fixed (``addChildren``: KDL has no planar joint);
+* mimic joints that a JointState does not name get ``multiplier * leader + offset`` from their leader
+  (``callbackJointState``'s mimic map);
+* a JointState is published when its stamp is at least ``1000 / publish_frequency`` whole milliseconds
+  past the oldest last publication of its joints, on the message's stamp, not the wall clock: a joint
+  state stamped 0 is never due unless ``ignore_timestamp``, which publishes every message; the transforms
+  always carry the message's stamp;
+* when the node's clock goes back (a bag played again, a simulation reset) the publication times are
+  forgotten, with the same warning.
+
+One difference: a position that is not finite is skipped (upstream would send a NaN transform, which
+tf2 refuses with an error for every lookup of that frame).
 """
 
 from __future__ import annotations
 
 import math
 import sys
-import time
 from typing import Any
 
 import rclpy
@@ -57,6 +70,8 @@ def _tf(stamp, parent: str, child: str, pose: Pose) -> TransformStamped:
 
 
 class RobotStatePublisherNode(Node):
+    """robot_state_publisher (see the module docstring)."""
+
     def __init__(self, **node_kwargs: Any) -> None:
         """``node_kwargs`` go to rclpy's Node (a context, parameter overrides: for a node made in-process)."""
         super().__init__("robot_state_publisher", **node_kwargs)
@@ -75,7 +90,9 @@ class RobotStatePublisherNode(Node):
             raise RuntimeError("robot_description is not a robot (URDF)")
         model = loaded
         prefix = str(self.get_parameter("frame_prefix").value)
-        self._period = 1.0 / max(float(self.get_parameter("publish_frequency").value or 20.0), 1e-6)
+        frequency = float(self.get_parameter("publish_frequency").value or 20.0)
+        # robot_state_publisher.cpp: std::chrono::milliseconds(static_cast<uint64_t>(1000.0 / publish_freq))
+        self._interval_ns = int(1000.0 / max(frequency, 1e-6)) * 1_000_000
         self._ignore_stamp = bool(self.get_parameter("ignore_timestamp").value)
         latched = QoSProfile(
             depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE
@@ -86,27 +103,27 @@ class RobotStatePublisherNode(Node):
         self._tf = self.create_publisher(TFMessage, "/tf", 100)
         for link in model.links:
             self.get_logger().info(f"got segment {link.name}")
-        statics, self._moving = [], {}
+        statics: list[TransformStamped] = []
+        self._moving: dict[str, tuple[Joint, str, str]] = {}
         now = self.get_clock().now().to_msg()
         for j in model.joints:
-            if j.parent == "world" or j.type is JointType.FLOATING:
-                continue
+            if j.type is JointType.FLOATING:
+                continue  # "Floating joint is not supported; skipping segment"
             if j.type in (JointType.FIXED, JointType.PLANAR):
                 statics.append(_tf(now, prefix + j.parent, prefix + j.child, j.origin * j.child_offset))
             else:
                 self._moving[j.name] = (j, prefix + j.parent, prefix + j.child)
+        self._mimic = {j.name: j.mimic for j in model.joints if j.mimic is not None and j.name in self._moving}
         if statics:
             self._static.publish(TFMessage(transforms=statics))
-        self._last = -math.inf
+        self._last_published: dict[str, int] = {}  # joint -> stamp (ns) of its last publication
+        self._last_callback_ns = 0
         self.create_subscription(JointState, "joint_states", self._on_joint_states, 10)
 
     def _on_joint_states(self, msg: JointState) -> None:
-        """robot_state_publisher's joint state callback (Jazzy's, 3.3.3): an invalid message is refused with its log
-        line; at most ``publish_frequency`` times a second, each moving joint's transform at its position,
-        stamped with the message's stamp (now when it has none, or with ``ignore_timestamp``). Unknown joints and
-        non-finite positions are skipped."""
-        # a message whose names and positions differ in count is ignored with a log line, before anything
-        # else (robot_state_publisher 3.3.3, Jazzy's: src/robot_state_publisher.cpp, callbackJointState)
+        """robot_state_publisher's ``callbackJointState`` (3.3.3): an invalid message is refused with its log
+        line; the message is published when due by its stamp (see the module docstring), every moving joint's
+        transform at its position, mimic joints from their leaders, stamped with the message's stamp."""
         if len(msg.name) != len(msg.position):
             if not msg.position:
                 self.get_logger().warning(
@@ -116,24 +133,31 @@ class RobotStatePublisherNode(Node):
             else:
                 self.get_logger().error("Robot state publisher ignored an invalid JointState message")
             return
-        now = time.monotonic()
-        if now - self._last < self._period * 0.999:
+        now = self.get_clock().now().nanoseconds
+        if self._last_callback_ns > now:
+            self.get_logger().warning("Moved backwards in time, re-publishing joint transforms!")
+            self._last_published.clear()
+        self._last_callback_ns = now
+        # the least recently published of the message's joints (0 for one never published)
+        last = min([now, *(self._last_published.get(n, 0) for n in msg.name)])
+        stamp_ns = msg.header.stamp.sec * 1_000_000_000 + msg.header.stamp.nanosec
+        if not self._ignore_stamp and stamp_ns < last + self._interval_ns:
             return
-        self._last = now
-        stamp = (
-            self.get_clock().now().to_msg()
-            if self._ignore_stamp or (msg.header.stamp.sec == 0 and msg.header.stamp.nanosec == 0)
-            else msg.header.stamp
-        )
+        positions = dict(zip(msg.name, msg.position))
+        for name, mimic in self._mimic.items():
+            if mimic.joint in positions and name not in positions:  # std::map::insert keeps a given value
+                positions[name] = positions[mimic.joint] * mimic.multiplier + mimic.offset
         out = []
-        for name, q in zip(msg.name, msg.position):
+        for name, q in sorted(positions.items()):  # publishTransforms walks a std::map: by joint name
             entry = self._moving.get(name)
             if entry is None or not math.isfinite(q):
                 continue
             joint, parent, child = entry
-            out.append(_tf(stamp, parent, child, joint_motion(joint, float(q))))
+            out.append(_tf(msg.header.stamp, parent, child, joint_motion(joint, float(q))))
         if out:
             self._tf.publish(TFMessage(transforms=out))
+        for name in msg.name:
+            self._last_published[name] = stamp_ns
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -45,6 +45,8 @@ if TYPE_CHECKING:
     from ._simulation import Simulation
 
 MAGIC = "gazelle-checkpoint"
+"""The first key of every checkpoint: a pickle of something else is refused with "not a gazelle checkpoint"
+rather than half-read."""
 _RLOCK = type(threading.RLock())
 _LOCK_TYPES = (type(threading.Lock()), _RLOCK)
 
@@ -64,6 +66,8 @@ def _event(is_set: bool) -> threading.Event:
 
 
 FORMAT = 1
+"""The layout of the payload dict; raised when a key is added, removed or changes meaning, so an old
+checkpoint is refused by name instead of failing with a KeyError mid-restore."""
 
 
 class CheckpointError(RuntimeError):
@@ -286,6 +290,9 @@ class _Merge:
                 live[key] = self(live[key], value) if key in live else value
             return live
         if isinstance(new, list):
+            # item by item while the live list is no longer than the saved one (then the saved tail is
+            # appended); a live list that grew past the saved one holds items the checkpoint never had,
+            # so it takes the saved list whole
             live[:] = [self(a, b) for a, b in zip(live, new)] + new[len(live) :] if len(live) <= len(new) else new
             return live
         if isinstance(new, tuple):
@@ -329,7 +336,11 @@ def _systems_blob(sim: Simulation, entity: Entity) -> dict[str, Any]:
 
 def save(sim: Simulation, path: str | os.PathLike[str]) -> Path:
     """Write ``sim``'s checkpoint to ``path`` (owner-only); call on the simulation thread or while it is
-    not running."""
+    not running.
+
+    Owner-only because a checkpoint is a pickle: whoever can write one can run code in the process that
+    loads it, so no other user may replace it; it is written beside the target and renamed over it, so a
+    reader sees the old file or the new one, never half of one."""
     world = sim.world
     entities = [
         {"name": e.name, "model": e.model, "X_WM": e.X_WM, "namespace": e.namespace, "spawned": e.spawned}

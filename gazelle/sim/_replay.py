@@ -39,13 +39,22 @@ FLOAT32_FIELDS = ("ranges", "intensities")
 
 
 def _shape(s: SceneShape) -> dict[str, Any]:
+    """A shape as the replay page reads it: kind, sizes and pose in its link (x, y, z, qw, qx, qy, qz).
+    Positions are rounded to 0.1 mm and quaternions to 1e-5 (~2e-5 rad), finer than a browser's pixel at
+    any zoom a page is looked at, and a third of the JSON of full floats."""
     p = s.pose
     pose = [round(float(v), 4) for v in p.position] + [round(float(v), 5) for v in p.orientation]
     return {"kind": s.kind, "size": [round(v, 5) for v in s.dimensions], "pose": pose}
 
 
 def flatten(msg: Any, prefix: str = "", out: dict[str, Any] | None = None, depth: int = 0) -> dict[str, Any]:
-    """A message's fields as ``{"a.b": value}``: numbers rounded, long arrays as their size and range."""
+    """A message's fields as ``{"a.b": value}``: numbers rounded, long arrays as their size and range.
+
+    Works on the bus's payload dataclasses (the simulation's own messages, before any ROS conversion), so
+    a replay needs no rclpy. It stops at :data:`MAX_FIELDS` fields and four levels of nesting; a list of
+    dataclasses (a scan's contacts, a trajectory's points) shows its first element and its count. Non-finite
+    numbers are kept as text (``inf``, ``nan``): JSON has no such numbers, and a lidar's "no return" must
+    still show."""
     out = {} if out is None else out
     if len(out) >= MAX_FIELDS:
         return out
@@ -221,7 +230,11 @@ class ReplayRecorder:
         return {"shapes": shapes, "frames": out, "topics": topics}
 
     def write(self, path: str | os.PathLike[str], text: str | None = None) -> Path:
-        """Write ``text`` (default: :meth:`data` as JSON) to ``path``, whole or not at all."""
+        """Write ``text`` (default: :meth:`data` as JSON) to ``path``, whole or not at all.
+
+        Written beside the target and renamed over it (``os.replace`` is atomic on one file system), so a
+        run killed mid-write (a test's timeout, Ctrl-C) leaves the previous replay or none, never a page
+        that fails to parse."""
         out = Path(path)
         tmp = out.with_name(f".{out.name}.{os.getpid()}.tmp")
         tmp.write_text(text if text is not None else json.dumps(self.data(), separators=(",", ":")))

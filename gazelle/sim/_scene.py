@@ -28,7 +28,7 @@ from ..description import (
     Sphere,
     load_mesh,
 )
-from ..physics import SEP, PhysicsWorld
+from ..physics import SEP, PhysicsWorld, WorldError
 
 PLANE_THICKNESS = 0.5
 """How deep the slab that stands for a plane is (thick enough that no planned step goes through it)."""
@@ -36,7 +36,11 @@ PLANE_THICKNESS = 0.5
 
 @dataclass(frozen=True)
 class SceneShape:
-    """``box`` (x, y, z sizes), ``sphere`` (radius) or ``cylinder`` (height, radius), at ``pose`` in its link."""
+    """``box`` (x, y, z sizes), ``sphere`` (radius) or ``cylinder`` (height, radius), at ``pose`` in its link.
+
+    Metres; a box's sizes are full edge lengths and a cylinder's axis is its local z, as in
+    shape_msgs/SolidPrimitive, whose dimension order (BOX_X.., CYLINDER_HEIGHT, CYLINDER_RADIUS) the
+    ``dimensions`` keep so the planning-scene publisher copies them as they are."""
 
     kind: str
     dimensions: tuple[float, ...]
@@ -53,7 +57,11 @@ class SceneLink:
 
 
 def link_shapes(model: Model) -> dict[str, tuple[SceneShape, ...]]:
-    """Each link's collision shapes (links with none are left out)."""
+    """Each link's collision shapes (links with none are left out).
+
+    The description's collisions, not MuJoCo's geoms: a mesh is bounded from its own vertices rather than
+    from the convex parts the physics built, so the planner's box does not depend on how a mesh was
+    decomposed (and needs no physics handle)."""
     out: dict[str, tuple[SceneShape, ...]] = {}
     for link in model.links:
         shapes = [s for s in (_shape(c.geometry, c.pose) for c in link.collisions) if s is not None]
@@ -63,17 +71,22 @@ def link_shapes(model: Model) -> dict[str, tuple[SceneShape, ...]]:
 
 
 def _shape(geometry: object, pose: Pose) -> SceneShape | None:
+    """The planner's shape for one collision geometry at ``pose`` in its link, always one that contains
+    the real one (a planner may be cautious, never blind): None for a mesh that cannot be read, which the
+    description's loader has already warned about."""
     if isinstance(geometry, Box):
         return SceneShape("box", tuple(float(v) for v in geometry.size), pose)
     if isinstance(geometry, Sphere):
         return SceneShape("sphere", (float(geometry.radius),), pose)
-    if isinstance(geometry, Cylinder | Cone):
+    if isinstance(geometry, Cylinder | Cone):  # a cone inside the cylinder of its base and height
         return SceneShape("cylinder", (float(geometry.length), float(geometry.radius)), pose)
-    if isinstance(geometry, Capsule):
+    if isinstance(geometry, Capsule):  # the cylinder that holds both hemispherical caps
         return SceneShape("cylinder", (float(geometry.length + 2 * geometry.radius), float(geometry.radius)), pose)
     if isinstance(geometry, Ellipsoid):
         return SceneShape("box", tuple(2.0 * float(r) for r in geometry.radii), pose)
     if isinstance(geometry, Mesh) and geometry.path:
+        # the axis-aligned box of the scaled vertices, centred where they are (a mesh's origin is often
+        # at one end, not the middle); a flat mesh keeps a 0.1 mm thickness so the box is not degenerate
         try:
             vertices, _ = load_mesh(geometry.path)
         except MeshReadError:
@@ -102,7 +115,12 @@ def _shape(geometry: object, pose: Pose) -> SceneShape | None:
 
 
 class SceneGeometry:
-    """The world's collision geometry, kept per entity; call :meth:`links` on the simulation thread."""
+    """The world's collision geometry, kept per entity; call :meth:`links` on the simulation thread.
+
+    Shapes are worked out once per entity (reading a mesh is slow); only poses are read each time. The
+    cache is keyed by the entity's name *and* its model object, so an entity deleted and spawned again
+    under the same name with another description gets its new shapes, and entries of entities that are
+    gone are dropped at the next call."""
 
     def __init__(self) -> None:
         self._shapes: dict[tuple[str, int], dict[str, tuple[SceneShape, ...]]] = {}
@@ -120,8 +138,8 @@ class SceneGeometry:
             for link, link_shapes_ in shapes.items():
                 try:
                     pose = world.body_pose(world.body_id(name, link))
-                except Exception:  # a link without a body of its own
-                    continue
+                except WorldError:  # a link the builder made no body of (joined to nothing): it is not
+                    continue  # in the world, so there is nothing there to plan around
                 out.append(SceneLink(f"{name}{SEP}{link}", pose, link_shapes_))
         for key in set(self._shapes) - seen:
             del self._shapes[key]
@@ -129,7 +147,12 @@ class SceneGeometry:
 
 
 def moved(a: Pose, b: Pose, distance: float = 1e-3, angle: float = 0.01) -> bool:
-    """Whether two poses differ by more than ``distance`` metres or ``angle`` radians."""
+    """Whether two poses differ by more than ``distance`` metres or ``angle`` radians.
+
+    The planning-scene publisher resends the world only when something moved this much: a settling
+    object jitters by micrometres every step, and resending a whole PlanningSceneWorld for that would
+    make move_group rebuild its collision world for nothing. The angle is the rotation between the two
+    (``2 acos |q_a . q_b|``, either sign of a quaternion being the same rotation)."""
     if math.dist(a.position, b.position) > distance:
         return True
     dot = abs(sum(x * y for x, y in zip(a.orientation, b.orientation)))

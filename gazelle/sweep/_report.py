@@ -13,10 +13,22 @@ from typing import Any
 
 
 def _numeric(v: Any) -> bool:
+    """Whether ``v`` can be plotted as a number: a finite int or float, not a bool (Python's ``True`` is an
+    int, and a metric that says pass/fail is not a value to draw on an axis)."""
     return isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(float(v))
 
 
 def write_report(rows: Sequence[Mapping[str, Any]], path: Path, title: str = "sweep") -> None:
+    """Write the report of ``rows`` (the results table's rows: ``status``, ``seed``, ``param.*``, ``metric.*``,
+    ``artifact.*``, ``error``, ``wall_sec``) to ``path``.
+
+    The page has, in order: a one-line summary (``#summary``), one bar chart of the pass rate per value of
+    each parameter, one scatter per (numeric metric, parameter) coloured by status with the seed on hover, and
+    a table of the runs that did not pass (``#failures``), each with its parameters, links to its artifacts
+    (its replay) and the last line of its error. Plotly's script goes into the first figure only and every
+    other figure reuses it, so the page opens from disk with no network and stays a few MB however many
+    figures it has. At most 500 failing runs are listed: past that the charts say more than the rows.
+    Every value that came from a run is HTML-escaped."""
     import plotly.graph_objects as go
     import plotly.io as pio
 

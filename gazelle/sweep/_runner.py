@@ -23,7 +23,10 @@ from ._spec import ParamValue, RunSpec, SweepError, grid, load_scenario, scenari
 RESULTS = "runs.jsonl"
 """One JSON object a line, one line a finished run, appended and flushed as each run ends."""
 TABLE = "runs.parquet"
+"""The same rows as :data:`RESULTS`, as one Arrow table written when the sweep ends (pandas / polars read it
+with the parameters and metrics as typed columns)."""
 REPORT = "report.html"
+"""The sweep's self-contained HTML report (:func:`~gazelle.sweep._report.write_report`)."""
 REPLAY_RATE_HZ = 10.0
 """Body poses a sim second in the replay of an in-process run that does not pass."""
 
@@ -298,6 +301,9 @@ def _checkpoint_file(blob: bytes | None) -> str | None:
 
 @dataclass
 class SweepResult:
+    """What a sweep left in its output folder ``out`` (results, table, report, replays of the failures), and
+    its rows in memory."""
+
     out: Path
     rows: list[dict[str, Any]] = field(default_factory=list)
     """Every finished run (from this sweep and, with resume, before it)."""
@@ -306,6 +312,8 @@ class SweepResult:
 
     @property
     def failures(self) -> list[dict[str, Any]]:
+        """The rows of runs that did not pass: ``failed`` (its ``passed`` metric was false), ``error`` (it
+        raised), ``timeout`` or ``lost`` (its worker died twice)."""
         return [r for r in self.rows if r["status"] != "passed"]
 
 

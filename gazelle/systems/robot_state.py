@@ -15,7 +15,7 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-from ..description import JointType, Model, Plugin
+from ..description import JointType, Model, Plugin, Pose
 from ..physics import BodyHandle, Entity, JointHandle, PhysicsWorld
 from ._base import RateGate, System, SystemContext, UpdateInfo
 from ._bus import Endpoint, MsgType, Qos, resolve_topic
@@ -80,10 +80,18 @@ def entity_frame_prefix(entity: Entity, log: logging.Logger) -> str:
 
 @dataclass
 class _MovingJoint:
-    parent: BodyHandle
+    """A moving joint's transform, read from the simulated bodies: the child's pose in the parent's. A joint
+    whose parent is the URDF's ``world`` link has no parent body (that link is MuJoCo's world, where the
+    entity was placed): its parent frame is the entity's placement ``X_WM``."""
+
+    parent: BodyHandle | Entity
     child: BodyHandle
     parent_frame: str
     child_frame: str
+
+    def parent_pose(self) -> Pose:
+        """The parent frame's world pose now."""
+        return self.parent.X_WM if isinstance(self.parent, Entity) else self.parent.pose
 
 
 class RobotStatePublisher(System):
@@ -121,16 +129,18 @@ class RobotStatePublisher(System):
             self.prefix = f"{ctx.entity.name}/"
         owner = ctx.entity.name
         statics: list[Transform] = []
+        # robot_state_publisher 3.3.3 (src/robot_state_publisher.cpp, addChildren) publishes every joint of the
+        # URDF's KDL tree, those of a `world` link included (a fixed world -> base joint is a static transform
+        # at its origin, wherever the robot was spawned); it skips floating joints and makes planar ones fixed
         for j in model.joints:
-            if j.parent == "world" or j.type is JointType.FLOATING:
-                continue  # robot_state_publisher skips floating joints
+            if j.type is JointType.FLOATING:
+                continue
             parent, child = self.prefix + j.parent, self.prefix + j.child
-            if j.type in (JointType.FIXED, JointType.PLANAR):  # RSP: planar becomes fixed (KDL)
+            if j.type in (JointType.FIXED, JointType.PLANAR):
                 statics.append(Transform(0.0, parent, child, j.origin * j.child_offset))
             else:
-                self._moving.append(
-                    _MovingJoint(ctx.world.body(owner, j.parent), ctx.world.body(owner, j.child), parent, child)
-                )
+                parent_of = ctx.entity if j.parent == "world" else ctx.world.body(owner, j.parent)
+                self._moving.append(_MovingJoint(parent_of, ctx.world.body(owner, j.child), parent, child))
         if model.urdf:
             desc = ctx.bus.advertise(
                 owner, resolve_topic("robot_description", c.namespace), MsgType.STRING, qos=Qos.LATCHED, depth=1
@@ -165,7 +175,7 @@ class RobotStatePublisher(System):
             return  # nobody listens: nothing to build
         out = []
         for m in self._moving:
-            X_WP, X_WC = m.parent.pose, m.child.pose
+            X_WP, X_WC = m.parent_pose(), m.child.pose
             out.append(Transform(info.sim_time_sec, m.parent_frame, m.child_frame, X_WP.inverse() * X_WC))
         self._tf.publish(TransformBatch(tuple(out)))
 

@@ -507,3 +507,39 @@ def test_every_sensor_kind_declares_what_runs_it_and_the_registry_is_derived_fro
     assert world["gz-sim-navsat-system"] == {"gps": GpsSensor, "navsat": GpsSensor}
     assert set(world["gz-sim-air-pressure-system"]) == {"air_pressure"}  # its file's spelling, declared
     assert world["gz-sim-sensors-system"]["gpu_lidar"] is Lidar and world["gz-sim-sensors-system"]["rgbd"] is Camera
+
+
+# --------------------------------------------------------------------------- built-in robot_state_publisher
+_TURNTABLE = """<robot name="turntable">
+  <link name="world"/>
+  <link name="base"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="plate"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="to_world" type="fixed"><parent link="world"/><child link="base"/><origin xyz="0.5 0 0.1"/></joint>
+  <joint name="spin" type="continuous"><parent link="world"/><child link="plate"/><origin xyz="0 1 0"/>
+    <axis xyz="0 0 1"/></joint>
+</robot>"""
+
+
+def test_the_built_in_robot_state_publisher_publishes_the_joints_of_a_world_link_as_robot_state_publisher_does() -> (
+    None
+):
+    """robot_state_publisher 3.3.3 (addChildren) publishes every joint of the URDF's tree, a ``world`` link's
+    too, in the URDF's frame: world -> base at the joint's origin (not where the robot was spawned), and a
+    moving joint from world at its position."""
+    sim = new_simulation()
+    entity = sim.spawn(load_string(_TURNTABLE).model, name="tt", pose=Pose((3.0, 0.0, 0.0)))
+    static = next(e for e in sim.bus.endpoints() if e.topic == "/tf_static" and e.owner == "tt")
+    fixed = {t.child: t for t in static.last.transforms}
+    assert set(fixed) == {"base"} and fixed["base"].parent == "world"
+    assert fixed["base"].pose.position == pytest.approx((0.5, 0.0, 0.1))
+    sim.world.set_joint_state("tt", "spin", position=0.4)
+    tf = next(e for e in sim.bus.endpoints() if e.topic == "/tf" and e.owner == "tt")
+    got = []
+    tf.add_sink(got.append)
+    sim.step(100)
+    (plate,) = [t for t in got[-1].transforms if t.child == "plate"]
+    assert plate.parent == "world" and plate.pose.position == pytest.approx((0.0, 1.0, 0.0), abs=1e-6)
+    w, _x, _y, z = plate.pose.orientation
+    assert 2 * math.atan2(z, w) == pytest.approx(sim.world.joint("tt", "spin").position, abs=1e-6)
+    assert sim.world.joint("tt", "spin").position == pytest.approx(0.4, abs=1e-3)
+    assert entity.X_WM.position == pytest.approx((3.0, 0.0, 0.0))

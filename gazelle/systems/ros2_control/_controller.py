@@ -95,6 +95,10 @@ class Controller:
     announced with ``ctx.add_component``; the ROS layer serves it by this type. "" for none."""
 
     def __init__(self, name: str, params: Params, ctx: ControllerContext) -> None:
+        """A controller named ``name`` (its node's name: topics go under ``/<name>/``), with its parameters
+        from the YAML (``<name>: ros__parameters:`` flattened to dotted keys) and what the manager lends it.
+        It starts UNCONFIGURED, as ros2_control's lifecycle does: nothing is read or advertised until
+        ``configure``."""
         self.name = name
         self.params = params
         self.ctx = ctx

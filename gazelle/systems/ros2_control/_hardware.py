@@ -69,12 +69,22 @@ class ControlError(ValueError):
 
 @dataclass
 class _Joint:
+    """One ``<joint>`` of a ``<ros2_control>`` block: the simulated joint, the MuJoCo actuator behind each of
+    its command interfaces, and the servo state that turns a position or velocity command into force.
+    Units are the joint's: radians (revolute) or metres (prismatic), per second for velocities, N·m or N
+    for efforts."""
+
     name: str
     handle: JointHandle
     commands: dict[str, ActuatorHandle] = field(default_factory=dict)
+    """Command interface (``position``, ``velocity``, ``effort``) -> its actuator."""
     limits: dict[str, tuple[float, float]] = field(default_factory=dict)
+    """Command interface -> (min, max) of its ``<param name="min|max">``, kept only when the manager's
+    ``enforce_command_limits`` is true (then a command outside is clamped; see the module docstring)."""
     position: PositionServo | None = None
+    """The PID that holds a position command (None: the joint has no position command interface)."""
     velocity: VelocityServo | None = None
+    """The PID that tracks a velocity command (None: no velocity command interface)."""
     mode: str | None = None
     """The command interface in force (None: holding)."""
     hold: float = 0.0

@@ -58,6 +58,9 @@ class ParamsFile:
 
 
 def _flatten(prefix: str, value: Any, out: Params, where: str) -> None:
+    """``value`` under ``prefix`` as ROS 2 names parameters: nested mappings become dotted names
+    (``gains: {joint1: {p: 10}}`` -> ``gains.joint1.p``), scalars and lists are kept as they are. Anything
+    else YAML can hold (a date, a set) is a ParamsError: a ROS parameter has no such type."""
     if isinstance(value, dict):
         for k, v in value.items():
             _flatten(f"{prefix}.{k}" if prefix else str(k), v, out, where)
@@ -89,6 +92,9 @@ def parse_params(text: str, path: str = "<string>") -> ParamsFile:
     nodes: dict[str, Params] = {}
 
     def walk(prefix: str, section: Any) -> None:
+        """One level of the file: ``ros__parameters`` is a node's parameters (merged with any given
+        before for the same node, the later value winning); any other key is a namespace level, so
+        ``/ns: {node: {ros__parameters: ...}}`` is the node ``/ns/node``."""
         if not isinstance(section, dict):
             # the key is the file's content: not echoed (a refused file must not leak through the log)
             raise ParamsError(f"{path}: every node's section must be a mapping with 'ros__parameters'")
