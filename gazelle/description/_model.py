@@ -388,10 +388,11 @@ class Mimic:
 class SafetyController:
     """URDF ``<safety_controller>`` (kept for controllers that read it; not simulated)."""
 
-    soft_lower_limit: float = 0.0
-    """rad or m, as written."""
-    soft_upper_limit: float = 0.0
-    """rad or m, as written."""
+    soft_lower_limit: float | None = None
+    """rad or m, as written; None when not written (urdfdom reads 0 then; joint_state_publisher, which
+    narrows its range to the soft limits, applies only a written one)."""
+    soft_upper_limit: float | None = None
+    """rad or m, as written; None when not written."""
     k_position: float = 0.0
     """As written."""
     k_velocity: float = 0.0

@@ -7,9 +7,7 @@
   line says so); an entry that renames (``gz_topic_name: lidar``, ``ros_topic_name: scan``) is
   relayed between the two names, in its direction. Arguments as the bridge's:
   ``/topic@ros_type@gz_type`` (``[`` gz to ROS, ``]`` ROS to gz) and the ``config_file`` YAML.
-* ``joint_state_publisher``: ``joint_states`` with every movable joint of ``robot_description`` (the
-  parameter, else the latched topic) at zero, or the middle of its limits when zero is outside them;
-  mimic joints follow; ``rate`` (10 Hz).
+* ``joint_state_publisher``: joint_state_publisher's node (:mod:`gazelle.ros._joint_state_publisher`).
 """
 
 from __future__ import annotations
@@ -278,58 +276,7 @@ class _TypeRelays:
 
 
 def joint_state_publisher_main(argv: list[str] | None = None) -> int:
-    """``joint_state_publisher``: defaults for the movable joints, until Ctrl-C."""
-    import math
+    """``joint_state_publisher`` (see :mod:`gazelle.ros._joint_state_publisher`)."""
+    from ._joint_state_publisher import main
 
-    import rclpy
-    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
-    from sensor_msgs.msg import JointState
-    from std_msgs.msg import String
-
-    from ..description import JointType, Model, ModelLoadError, load_string
-    from ._rsp_node import spin_until_interrupted
-
-    rclpy.init(args=sys.argv if argv is None else argv)
-    node = rclpy.create_node("joint_state_publisher")
-    rate = float(node.declare_parameter("rate", 10.0).value or 10.0)
-    text = str(node.declare_parameter("robot_description", "").value or "")
-    state: dict[str, Any] = {"names": [], "positions": []}
-
-    def use(description: str) -> None:
-        try:
-            model = load_string(description, format="urdf", source="robot_description").value
-        except ModelLoadError as err:
-            node.get_logger().error(f"robot_description is not a URDF: {err}")
-            return
-        if not isinstance(model, Model):
-            return
-        values: dict[str, float] = {}
-        for j in model.joints:
-            if j.type in (JointType.FIXED, JointType.FLOATING, JointType.PLANAR) or j.mimic is not None:
-                continue
-            lim = j.axis.limit if j.axis is not None else None
-            lo = lim.lower if lim is not None and lim.lower is not None else -math.inf
-            hi = lim.upper if lim is not None and lim.upper is not None else math.inf
-            values[j.name] = 0.0 if lo <= 0.0 <= hi or not (math.isfinite(lo) and math.isfinite(hi)) else (lo + hi) / 2
-        for j in model.joints:
-            if j.mimic is not None and j.mimic.joint in values:
-                values[j.name] = j.mimic.multiplier * values[j.mimic.joint] + j.mimic.offset
-        state["names"], state["positions"] = list(values), list(values.values())
-
-    if text:
-        use(text)
-    else:
-        qos = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
-        node.create_subscription(String, "robot_description", lambda m: use(str(getattr(m, "data", ""))), qos)
-    pub = node.create_publisher(JointState, "joint_states", 10)
-
-    def tick() -> None:
-        if not state["names"]:
-            return
-        msg = JointState(name=state["names"], position=state["positions"])
-        msg.header.stamp = node.get_clock().now().to_msg()
-        pub.publish(msg)
-
-    node.create_timer(1.0 / max(rate, 1e-3), tick)
-    spin_until_interrupted(node)
-    return 0
+    return main(argv)
