@@ -8,7 +8,10 @@ Conventions: SI units and radians; quaternions are ``wxyz`` (MuJoCo's order);
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import enum
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import TypeVar
 
@@ -211,6 +214,48 @@ class Inertial:
 
 
 # --------------------------------------------------------------------------- generic config trees
+class ReadLog:
+    """The child tags a piece of code looked up in configuration trees (see :func:`config_reads`), and the
+    aliases under which a tag counts as read (a ROS 1 name read under its ROS 2 one)."""
+
+    def __init__(self) -> None:
+        self.tags: set[str] = set()
+        self.aliases: dict[str, str] = {}
+        """Tag as written -> the tag the reader looks up instead."""
+
+    def read(self, tag: str) -> bool:
+        """Whether ``tag`` (or the name it stands for) was looked up; an alias to "" is a tag the reader
+        accepts on purpose with no effect (ROS 1's ``rosDebugLevel``)."""
+        if tag in self.tags:
+            return True
+        alias = self.aliases.get(tag)
+        return alias is not None and (alias == "" or alias in self.tags)
+
+
+_READS: contextvars.ContextVar[ReadLog | None] = contextvars.ContextVar("gazelle_config_reads", default=None)
+
+
+@contextlib.contextmanager
+def config_reads() -> Iterator[ReadLog]:
+    """Record, inside the block, every tag looked up with :meth:`ConfigElement.find` / ``findall`` (on any
+    element): what a system's ``configure`` read of its ``<plugin>``, so that a parameter it never looked at
+    is named in a warning instead of being dropped silently. Reads on other threads are not recorded."""
+    log = ReadLog()
+    token = _READS.set(log)
+    try:
+        yield log
+    finally:
+        _READS.reset(token)
+
+
+def alias_tags(names: dict[str, str]) -> None:
+    """In the active :func:`config_reads` block, count each key of ``names`` as read when its value is (a
+    reader that maps ROS 1 tags onto ROS 2 ones before looking them up), or always when its value is ""."""
+    log = _READS.get()
+    if log is not None:
+        log.aliases.update(names)
+
+
 @dataclass(frozen=True, slots=True)
 class ConfigElement:
     """A read-only copy of an XML element (plugin configuration, sensor blocks, extensions).
@@ -238,6 +283,9 @@ class ConfigElement:
 
     def find(self, tag: str) -> ConfigElement | None:
         """First direct child with this tag."""
+        log = _READS.get()
+        if log is not None:
+            log.tags.add(tag)
         for c in self.children:
             if c.tag == tag:
                 return c
@@ -245,6 +293,9 @@ class ConfigElement:
 
     def findall(self, tag: str) -> tuple[ConfigElement, ...]:
         """All direct children with this tag."""
+        log = _READS.get()
+        if log is not None:
+            log.tags.add(tag)
         return tuple(c for c in self.children if c.tag == tag)
 
 

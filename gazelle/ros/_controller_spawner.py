@@ -63,7 +63,12 @@ def build_parser(prog: str, unspawner: bool = False) -> argparse.ArgumentParser:
             "--controller-manager-timeout", type=float, default=10.0, help="time to wait for the controller manager"
         )
         p.add_argument("--activate-as-group", action="store_true", help="activate all controllers in one switch")
-        p.add_argument("--controller-ros-args", default=None, help="ROS arguments for the controllers (unused)")
+        p.add_argument(
+            "--controller-ros-args",
+            action="append",
+            default=None,
+            help="--ros-args for the controllers' nodes, e.g. '-r ~/cmd_vel:=/cmd_vel' (repeatable)",
+        )
     return p
 
 
@@ -221,6 +226,16 @@ def _spawn(cli: _Client, args: argparse.Namespace) -> int:
             _info(f"Controller already loaded, skipping load_controller: {name}")
         else:
             params: list[Parameter] = []
+            if args.controller_ros_args:
+                # spawner.py (Jazzy): the controller's node arguments, split on spaces, as
+                # <name>.node_options_args on the manager, which gives them to the controller's node
+                words = [w for arg in args.controller_ros_args for w in arg.split()]
+                params.append(
+                    Parameter(
+                        name=f"{name}.node_options_args",
+                        value=ParameterValue(type=ParameterType.PARAMETER_STRING_ARRAY, string_array_value=words),
+                    )
+                )
             if args.controller_type:
                 params.append(_string_param(f"{name}.type", args.controller_type))
             for path in args.param_file:

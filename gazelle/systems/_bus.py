@@ -348,6 +348,24 @@ class Bus:
         return len(targets)
 
 
+def remap_name(name: str, namespace: str, node: str, rules: tuple[tuple[str, str], ...]) -> str:
+    """A node's topic (or action, or service) name as rcl resolves it with remapping ``rules``: the name and
+    each rule's *from* are expanded for the node (``~`` is the node's own name, a relative name goes under
+    its namespace) and compared whole; the first rule that matches gives its *to*, expanded the same way.
+    So ``diffdrive_controller/odom:=odom`` in namespace ``r1`` turns the controller's ``~/odom`` into
+    ``/r1/odom``. A rule ``node:from:=to`` applies to that node only."""
+    resolved = resolve_topic(name, namespace, node=node)
+    for src, dst in rules:
+        target, sep, rest = src.partition(":")
+        if not sep or "/" in target or "~" in target:  # no node name before the rule
+            target, rest = "", src
+        if target and target != node:
+            continue
+        if resolve_topic(rest, namespace, node=node) == resolved:
+            return resolve_topic(dst, namespace, node=node)
+    return resolved
+
+
 def resolve_topic(name: str, namespace: str = "", remaps: dict[str, str] | None = None, node: str = "") -> str:
     """Resolve a topic name the way rclcpp does for a node called ``node`` in ``namespace``.
 

@@ -76,6 +76,40 @@ def ros_block(cfg: ConfigElement | None) -> tuple[str, dict[str, str]]:
     return ns, remaps
 
 
+def ros_remaps(cfg: ConfigElement | None) -> tuple[tuple[str, str], ...]:
+    """The ``<ros><remapping>from:=to`` rules of a plugin in the order written (rcl takes the first rule that
+    matches a name, so order matters where :func:`ros_block`'s dict would let a later rule win)."""
+    ros = cfg.find("ros") if cfg is not None else None
+    rules = []
+    for r in ros.findall("remapping") if ros is not None else ():
+        src, sep, dst = r.text.strip().partition(":=")
+        if sep and src.strip() and dst.strip():
+            rules.append((src.strip(), dst.strip()))
+    return tuple(rules)
+
+
+def remap_arguments(args: list[str]) -> tuple[tuple[tuple[str, str], ...], list[str]]:
+    """The remapping rules of node arguments (``--ros-args -r from:=to --remap a:=b``), and the arguments
+    that are not remappings (``--ros-args`` itself is neither)."""
+    rules: list[tuple[str, str]] = []
+    others: list[str] = []
+    i = 0
+    while i < len(args):
+        arg = args[i]
+        if arg in ("-r", "--remap") and i + 1 < len(args):
+            src, sep, dst = args[i + 1].partition(":=")
+            if sep and src and dst:
+                rules.append((src, dst))
+            else:
+                others += [arg, args[i + 1]]
+            i += 2
+            continue
+        if arg not in ("--ros-args", "--"):
+            others.append(arg)
+        i += 1
+    return tuple(rules), others
+
+
 # --------------------------------------------------------------------------- plugin nodes
 def _typed(text: str) -> ParamValue:
     low = text.lower()

@@ -16,7 +16,7 @@ import logging
 import math
 from dataclasses import dataclass
 
-from ..description import ConfigElement, Model, Pose, quat_from_rpy, quat_rotate
+from ..description import ConfigElement, Model, Pose, alias_tags, quat_from_rpy, quat_rotate
 from ..physics import BodyHandle, PhysicsWorld
 from ._actuation import VelocityServo, add_wheel_servo
 from ._base import System, SystemContext, UpdateInfo
@@ -103,22 +103,17 @@ ROS1_NAMES = {
 }
 """ROS 1 (``gazebo_ros_diff_drive`` for Gazebo 7-11) camelCase names -> the ROS 2 names used here."""
 
-KNOWN_TAGS = {
-    "left_joint", "right_joint", "num_wheel_pairs", "wheel_separation", "wheel_diameter", "max_wheel_torque",
-    "max_wheel_acceleration", "update_rate", "odometry_frame", "robot_base_frame", "odometry_source",
-    "publish_odom", "publish_odom_tf", "publish_wheel_tf", "covariance_x", "covariance_y", "covariance_yaw", "ros",
-}  # fmt: skip
-
 
 def _translate_ros1(cfg: ConfigElement, log: logging.Logger) -> tuple[ConfigElement, bool]:
-    """Rename ROS 1 camelCase children to the ROS 2 names; warn about unknown children by name.
+    """Rename ROS 1 camelCase children to the ROS 2 names (each counts as read when its ROS 2 name is; a child
+    nothing reads is named by the runtime, see ``description.config_reads``).
 
     Returns the (possibly rewritten) element and whether any ROS 1 name was used.
     """
+    alias_tags(ROS1_NAMES)
     children: list[ConfigElement] = []
     ros1 = False
     for c in cfg.children:
-        where = f"{c.location}: " if c.location else ""
         if c.tag in ROS1_NAMES:
             ros1 = True
             new = ROS1_NAMES[c.tag]
@@ -129,9 +124,7 @@ def _translate_ros1(cfg: ConfigElement, log: logging.Logger) -> tuple[ConfigElem
                 children.append(ConfigElement(new, c.attributes, c.text, c.children, c.location))
             children.append(c)
         else:
-            if c.tag not in KNOWN_TAGS:
-                log.warning(f"{where}<{c.tag}> is not a parameter of gazebo_ros_diff_drive; it is ignored")
-            children.append(c)
+            children.append(c)  # a child nothing reads is named by the runtime (``config_reads``)
     return ConfigElement(cfg.tag, cfg.attributes, cfg.text, tuple(children), cfg.location), ros1
 
 

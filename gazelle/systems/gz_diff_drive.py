@@ -160,17 +160,6 @@ class GzDiffDriveConfig:
     """The entity's namespace (relative topics resolve under it)."""
 
 
-KNOWN_TAGS = {
-    "left_joint", "right_joint", "wheel_separation", "wheel_radius", "odom_publish_frequency", "topic",
-    "odom_topic", "tf_topic", "frame_id", "child_frame_id",
-} | {
-    f"{m}_{kind}{q}"
-    for m in ("min", "max")
-    for kind in ("", "linear_", "angular_")
-    for q in ("velocity", "acceleration", "jerk")
-}  # fmt: skip
-
-
 def _limits(cfg: ConfigElement, which: str, log: logging.Logger) -> SpeedLimits:
     """The speed limits of one axis (``linear`` or ``angular``): gz-sim 8 reads ``<min_velocity>`` etc. for both
     axes, then ``<min_linear_velocity>``/``<min_angular_velocity>`` etc. override them per axis; unset limits are
@@ -189,10 +178,6 @@ def parse_config(ctx: SystemContext, log: logging.Logger) -> GzDiffDriveConfig:
     cfg = ctx.plugin.config if ctx.plugin is not None else None
     if cfg is None:
         return GzDiffDriveConfig(namespace=ctx.entity.namespace)
-    for c in cfg.children:
-        if c.tag not in KNOWN_TAGS:
-            where = f"{c.location}: " if c.location else ""
-            log.warning(f"{where}<{c.tag}> is not a parameter of gz-sim DiffDrive; it is ignored")
     return GzDiffDriveConfig(
         left_joints=all_texts(cfg, "left_joint"),
         right_joints=all_texts(cfg, "right_joint"),

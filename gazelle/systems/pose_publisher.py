@@ -20,7 +20,7 @@ import random
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from ..description import ConfigElement, Pose, quat_conj, quat_from_rpy, quat_mul, quat_rotate
+from ..description import ConfigElement, Pose, alias_tags, quat_conj, quat_from_rpy, quat_mul, quat_rotate
 from ..physics import WORLD_FRAMES, PhysicsWorld
 from ._base import RateGate, System, SystemContext, UpdateInfo
 from ._bus import Endpoint, MsgType, resolve_topic
@@ -84,6 +84,7 @@ def parse_config(ctx: SystemContext, log: logging.Logger) -> P3dConfig:
     cfg = ctx.plugin.config if ctx.plugin is not None else None
     if cfg is None:
         return P3dConfig(namespace=ctx.entity.namespace)
+    alias_tags(ROS1_NAMES)  # a ROS 1 name counts as read when its ROS 2 name is
     kids = []
     for c in cfg.children:
         tag = ROS1_NAMES.get(c.tag, c.tag)

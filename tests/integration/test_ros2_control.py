@@ -138,6 +138,20 @@ def test_diffbot_drives_with_its_own_controllers_yaml_and_the_spawner(sim_factor
 
 
 @pytest.mark.slow
+def test_the_spawners_controller_ros_args_remap_the_controllers_topics(sim_factory, ros_client):
+    """``spawner --controller-ros-args "-r ~/cmd_vel:=/cmd_vel"`` (ros2_control Jazzy): the controller's node
+    takes the remapping, so it listens on /cmd_vel and publishes ~/odom where it was."""
+    sim = sim_factory("--no-viewer")
+    _spawn_diffbot(sim)
+    rc, out = _spawner("diffbot_base_controller", "--controller-ros-args", "-r ~/cmd_vel:=/cmd_vel")
+    assert rc == 0, out
+    pub = ros_client.node.create_publisher(TwistStamped, "/cmd_vel", 10)
+    wait_for(lambda: pub.get_subscription_count() > 0, 15, "the controller on /cmd_vel")
+    assert ros_client.node.count_publishers("/diffbot_base_controller/odom") >= 1
+    wait_for(lambda: ros_client.node.count_subscribers("/diffbot_base_controller/cmd_vel") == 0, 5, "no old name")
+
+
+@pytest.mark.slow
 def test_r6bot_follows_a_trajectory_holds_and_aborts_on_path_tolerance(sim_factory, ros_client, monkeypatch):
     monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(R6BOT))  # the server finds the meshes' package
     # three times real time: the trajectory, the 10 s hold and the abort are all in sim time

@@ -4,6 +4,7 @@ controllers, on real robots' files (ros2_control_demos' diffbot and r6bot, MoveI
 from __future__ import annotations
 
 import dataclasses
+import logging
 import math
 
 import numpy as np
@@ -788,3 +789,48 @@ def test_a_husky_with_its_10_hz_manager_drives_at_its_command_at_1_4_and_10_ms_s
     # the odometry of the last cycle (read at its start, one cycle before the end) agrees with the
     # ground truth there
     assert odom[-1].pose.position[0] == pytest.approx(xs[-2] - x_start, abs=0.01)
+
+
+def test_remapping_rules_resolve_as_rcl_resolves_them() -> None:
+    from gazelle.systems._bus import remap_name
+    from gazelle.systems._plugin_config import remap_arguments
+
+    rules = (("diffbot_base_controller/odom", "odom"), ("/r1/diffbot_base_controller/cmd_vel", "/cmd_vel"))
+    assert remap_name("~/odom", "r1", "diffbot_base_controller", rules) == "/r1/odom"  # both sides expanded
+    assert remap_name("~/cmd_vel", "/r1", "diffbot_base_controller", rules) == "/cmd_vel"
+    assert remap_name("~/odom", "r1", "other", rules) == "/r1/other/odom"  # another node's name: no match
+    first = (("~/odom", "/a"), ("~/odom", "/b"), ("diffbot_base_controller:~/odom", "/c"))
+    assert remap_name("~/odom", "", "diffbot_base_controller", first) == "/a"  # the first rule that matches
+    assert remap_name("~/odom", "", "x", (("diffbot_base_controller:~/odom", "/c"),)) == "/x/odom"  # node-only
+    assert remap_arguments(["--ros-args", "-r", "~/cmd_vel:=/cmd_vel", "--remap", "a:=b", "-p", "x:=1"]) == (
+        (("~/cmd_vel", "/cmd_vel"), ("a", "b")),
+        ["-p", "x:=1"],
+    )
+
+
+def test_the_plugins_remappings_and_the_spawners_controller_ros_args_reach_the_controllers_topics(
+    tmp_path, make_sim, caplog
+):
+    """gz_ros2_control passes ``<ros><remapping>`` to the manager's node and ros2_control Jazzy hands the
+    manager's arguments on to each controller (with a deprecation warning); ``spawner --controller-ros-args``
+    sets ``<name>.node_options_args``, applied after them."""
+    urdf = DIFFBOT_URDF.read_text().replace(
+        "</robot>",
+        '<gazebo><plugin filename="gz_ros2_control-system" name="gz_ros2_control::GazeboSimROS2ControlPlugin">'
+        "<ros><namespace>r1</namespace>"
+        "<remapping>diffbot_base_controller/odom:=odom</remapping></ros></plugin></gazebo></robot>",
+    )
+    model = load_string(urdf, source=str(tmp_path / "robot.urdf")).model
+    sim = make_sim()
+    cm = _manager(sim.spawn(model, name="diffbot", pose=Pose((0, 0, 0.05))))
+    cm.set_parameter("diffbot_base_controller.node_options_args", ["--ros-args", "-r", "~/cmd_vel:=/cmd_vel"])
+    with caplog.at_level(logging.WARNING):
+        _start(cm, DIFFBOT_YAML, "diffbot_base_controller")
+    topics = {ep.topic for ep in sim.bus.endpoints()}
+    assert {"/r1/odom", "/cmd_vel"} <= topics
+    assert not {"/r1/diffbot_base_controller/odom", "/r1/diffbot_base_controller/cmd_vel"} & topics
+    assert "remapping arguments to the controller_manager node is deprecated" in caplog.text
+    for _ in range(25):
+        sim.bus.inject("/cmd_vel", MsgType.TWIST_STAMPED, TwistStamped(0, "", Twist((0.2, 0.0, 0.0))))
+        sim.step(20)
+    assert sim.world.entity_state("diffbot").pose.position[0] > 0.05  # it drives from the remapped topic

@@ -164,7 +164,7 @@ def test_classic_diff_drive_warns_about_unknown_parameters_by_name(caplog) -> No
     )
     with caplog.at_level(logging.WARNING):
         _, entity = spawn(urdf)
-    assert "<wheelBogus> is not a parameter of gazebo_ros_diff_drive" in caplog.text
+    assert "<wheelBogus> is not read by libgazebo_ros_diff_drive.so; it is ignored" in caplog.text
     assert system(entity, DiffDrive).config.left_joints == ("base_left_wheel_joint",)
 
 
@@ -543,3 +543,27 @@ def test_the_built_in_robot_state_publisher_publishes_the_joints_of_a_world_link
     assert 2 * math.atan2(z, w) == pytest.approx(sim.world.joint("tt", "spin").position, abs=1e-6)
     assert sim.world.joint("tt", "spin").position == pytest.approx(0.4, abs=1e-3)
     assert entity.X_WM.position == pytest.approx((3.0, 0.0, 0.0))
+
+
+def test_a_plugin_parameter_no_system_reads_is_named_with_its_line(caplog) -> None:
+    """Nothing a user gave is dropped silently: every child of a ``<plugin>`` its system's configure never
+    looked up is a warning naming it and its file:line (a typo, a parameter gazelle does not simulate such
+    as gz_ros2_control's position_proportional_gain); ROS 1 names a system maps count as read."""
+    diffbot = (REAL / "ros2_control_diffbot" / "_xacro_expanded" / "diffbot.urdf").read_text()
+    urdf = diffbot.replace(
+        "</robot>",
+        '<gazebo><plugin filename="gz_ros2_control-system" name="gz_ros2_control::GazeboSimROS2ControlPlugin">'
+        "<position_proportional_gain>0.5</position_proportional_gain><hold_joint>false</hold_joint>"
+        "<hold_joints>true</hold_joints></plugin>"
+        '<plugin filename="libgazebo_ros_p3d.so" name="truth"><bodyName>base_link</bodyName>'
+        "<topicName>truth</topicName><updateRate>10</updateRate></plugin></gazebo></robot>",
+    )
+    with caplog.at_level(logging.WARNING):
+        spawn(urdf, source="/robots/diffbot.urdf")
+    unread = sorted(r.getMessage() for r in caplog.records if "is not read by" in r.getMessage())
+    line = diffbot.rstrip("\n").count("\n") + 1  # the plugins are on the file's last line
+    assert unread == [
+        f"/robots/diffbot.urdf:{line}: <hold_joint> is not read by gz_ros2_control-system; it is ignored",
+        f"/robots/diffbot.urdf:{line}: <position_proportional_gain> is not read by gz_ros2_control-system; "
+        "it is ignored",
+    ]

@@ -34,7 +34,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, ClassVar, TypeVar
 
-from .._bus import Bus, Endpoint, MsgType, Qos, resolve_topic
+from .._bus import Bus, Endpoint, MsgType, Qos, remap_name, resolve_topic
 from ._hardware import ControlError
 from ._params import Params
 
@@ -82,6 +82,9 @@ class ControllerContext:
     add_component: Callable[[Any], None] = _ignore
     """Announce an interface the ROS layer serves for this controller (an action server)."""
     remove_component: Callable[[Any], None] = _ignore
+    remaps: tuple[tuple[str, str], ...] = ()
+    """Remapping rules of the controller's node (``from``, ``to``), first match wins: the manager's own
+    (``<ros><remapping>``), then the spawner's ``--controller-ros-args``, as ros2_control Jazzy gives them."""
 
 
 class Controller:
@@ -149,7 +152,10 @@ class Controller:
 
     # ------------------------------------------------------------------ topics
     def topic(self, name: str) -> str:
-        """A topic name resolved for the controller's node (``~/cmd_vel`` is ``<ns>/<name>/cmd_vel``)."""
+        """A topic or action name resolved for the controller's node (``~/cmd_vel`` is ``<ns>/<name>/cmd_vel``),
+        after the node's remapping rules (:func:`~gazelle.systems._bus.remap_name`)."""
+        if self.ctx.remaps:
+            return remap_name(name, self.ctx.namespace, self.name, self.ctx.remaps)
         return resolve_topic(name, self.ctx.namespace, node=self.name)
 
     def advertise(self, name: str, msg_type: MsgType, qos: Qos = Qos.DEFAULT, depth: int = 10) -> Endpoint:

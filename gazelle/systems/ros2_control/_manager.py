@@ -27,7 +27,7 @@ from typing import Any
 from ...description import MAX_PARAMS_FILE_BYTES, ResourceResolver
 from ...physics import PhysicsWorld
 from .._base import RateGate, System, SystemContext, UpdateInfo
-from .._plugin_config import child_text, parse_bool, ros_block
+from .._plugin_config import child_text, parse_bool, remap_arguments, ros_block, ros_remaps
 from ._blocks import PlannedBlocks
 from ._broadcasters import (
     ForceTorqueSensorBroadcaster,
@@ -112,6 +112,9 @@ class ControlPluginConfig:
     """``<robot_param>`` (not needed, see above)."""
     robot_param_node: str = "robot_state_publisher"
     """``<robot_param_node>`` (not needed, see above)."""
+    remappings: tuple[tuple[str, str], ...] = ()
+    """``<ros><remapping>from:=to`` (repeatable): the rules of every controller's node, as gz_ros2_control and
+    gazebo_ros2_control pass them to the manager and ros2_control Jazzy hands them on (first match wins)."""
 
 
 @dataclass
@@ -145,6 +148,8 @@ class ControllerManager(System):
         self.controllers: dict[str, _Loaded] = {}
         self.files: list[ParamsFile] = []
         self.overrides: Params = {}
+        self.remaps: tuple[tuple[str, str], ...] = ()
+        """The plugin's ``<ros><remapping>`` rules, in order (handed on to every controller's node)."""
         """Parameters set on the manager's node at run time (``<ctrl>.type``, ``<ctrl>.params_file``)."""
         self.config = ControlPluginConfig()
         self._extra_files = extra_param_files
@@ -169,7 +174,11 @@ class ControllerManager(System):
         self._ctx = ctx
         model = ctx.entity.model
         cfg = ctx.plugin.config if ctx.plugin is not None else None
-        ns, _remaps = ros_block(cfg)
+        ns, _ = ros_block(cfg)
+        # gz_ros2_control / gazebo_ros2_control pass <ros><remapping> to the manager's node as arguments, and
+        # ros2_control Jazzy hands the manager's arguments on to every controller's node (controller_manager.cpp,
+        # determine_controller_node_options): a remapped controller topic is remapped here the same way
+        self.remaps = ros_remaps(cfg)
         ns = (ns or ctx.entity.namespace).strip("/")
         self.config = ControlPluginConfig(
             parameters=tuple(el.text.strip() for el in cfg.findall("parameters") if el.text.strip())
@@ -181,6 +190,7 @@ class ControllerManager(System):
             hold_joints=parse_bool(cfg, "hold_joints", True, self.log),
             robot_param=child_text(cfg, "robot_param") or "robot_description",
             robot_param_node=child_text(cfg, "robot_param_node") or "robot_state_publisher",
+            remappings=self.remaps,
         )
         self.namespace = f"/{ns}" if ns else ""
         self.name = self.config.controller_manager_name
@@ -464,6 +474,7 @@ class ControllerManager(System):
             )
         assert self._ctx is not None
         ctx = self._ctx
+        remaps = self._controller_remaps(name)
         cctx = ControllerContext(
             ctx.bus,
             ctx.entity.name,
@@ -474,6 +485,7 @@ class ControllerManager(System):
             tuple(j for hw in self.hardware for j in hw.joints),
             add_component=functools.partial(ctx.bus.add_component, ctx.entity.name),
             remove_component=ctx.bus.remove_component,
+            remaps=remaps,
         )
         controller = cls(name, self.controller_params(name), cctx)
         self.controllers[name] = _Loaded(controller, type_name)
@@ -708,6 +720,30 @@ class ControllerManager(System):
                 + (f" (loaded: {', '.join(self.controllers)})" if self.controllers else " (none is loaded)")
             )
         return loaded
+
+    def _controller_remaps(self, name: str) -> tuple[tuple[str, str], ...]:
+        """The remapping rules of controller ``name``'s node: the manager's (with ros2_control Jazzy's warning
+        that passing them on is deprecated), then the ``<name>.node_options_args`` the spawner's
+        ``--controller-ros-args`` set; any other node argument there is named in a warning, not applied."""
+        if self.remaps:
+            # controller_manager.cpp's words, logged at each load as it does
+            self.log.warning(
+                "The use of remapping arguments to the controller_manager node is deprecated. Please use the "
+                "'--controller-ros-args' argument of the spawner to pass remapping arguments to the "
+                "controller node."
+            )
+        args = self.manager_params().get(f"{name}.node_options_args")
+        if args is None:
+            return self.remaps
+        if not isinstance(args, list) or not all(isinstance(a, str) for a in args):
+            raise ControlError(f"'{name}.node_options_args' must be a list of strings, got {args!r}")
+        rules, others = remap_arguments(args)
+        if others:
+            self.log.warning(
+                f"controller '{name}': node arguments {' '.join(others)} are not applied "
+                "(gazelle applies remappings, -r from:=to)"
+            )
+        return self.remaps + rules
 
     def set_parameter(self, name: str, value: object, files: dict[str, ParamsFile] | None = None) -> None:
         """A parameter set on the manager's node at run time (``<ctrl>.type``, ``<ctrl>.params_file``...).
