@@ -72,13 +72,25 @@ def make_sim():
 _FILE_SECONDS: defaultdict[str, float] = defaultdict(float)
 
 
+_RERUNS: list[tuple[str, str]] = []
+"""(test, the end of its failure) of each try that failed and was run again (``@pytest.mark.flaky``)."""
+
+
 def pytest_runtest_logreport(report: pytest.TestReport) -> None:
-    """Adds each phase's time (set-up, call, teardown) to its file's total (also from xdist's workers)."""
+    """Adds each phase's time (set-up, call, teardown) to its file's total (also from xdist's workers), and
+    keeps the failure of a try that is run again: pytest-rerunfailures shows only that there was one."""
     _FILE_SECONDS[report.nodeid.split("::", 1)[0]] += report.duration
+    if report.outcome == "rerun":
+        _RERUNS.append((report.nodeid, "\n".join(report.longreprtext.splitlines()[-6:])))
 
 
 def pytest_terminal_summary(terminalreporter, exitstatus: int, config: pytest.Config) -> None:
-    """The files that took longest in all: where the suite's minutes go, in every CI log."""
+    """The failures of tries that were run again, and the files that took longest in all: where the suite's
+    minutes go, in every CI log."""
+    if _RERUNS:
+        terminalreporter.write_sep("=", f"{len(_RERUNS)} failed tr(ies) run again")
+        for nodeid, text in _RERUNS:
+            terminalreporter.write_line(f"{nodeid}:\n{text}")
     if not _FILE_SECONDS:
         return
     total = sum(_FILE_SECONDS.values())

@@ -57,7 +57,7 @@ def _find(raw: bytes, pattern: bytes) -> int:
 class JointStateTemplate:
     """sensor_msgs/JointState for one tuple of joint names, serialized from a template (see the module)."""
 
-    def __init__(self, names: tuple[str, ...]) -> None:
+    def __init__(self, names: tuple[str, ...], frame_id: str = "") -> None:
         """A serialized sensor_msgs/JointState for these joint names with the stamp and the three arrays at known
         byte offsets: a message is built by writing numbers into a copy of the template, not by rclpy's per-field
         conversion. The offsets are found by serializing sentinel values (distinct doubles no real state takes)
@@ -66,6 +66,7 @@ class JointStateTemplate:
         self.names = names
         proto = JointStateMsg()
         proto.header.stamp = Time(sec=_SEC, nanosec=_NSEC)
+        proto.header.frame_id = frame_id
         proto.name = list(names)
         sentinels = [np.array([1.0e300 / (k + 2) / (j + 3) for j in range(n)]) for k in range(3)]
         proto.position, proto.velocity, proto.effort = (s.tolist() for s in sentinels)
@@ -94,9 +95,9 @@ class JointStateTemplate:
 
 
 @lru_cache(maxsize=64)
-def joint_state_template(names: tuple[str, ...]) -> JointStateTemplate:
-    """The template for ``names`` (made once)."""
-    return JointStateTemplate(names)
+def joint_state_template(names: tuple[str, ...], frame_id: str = "") -> JointStateTemplate:
+    """The template for ``names`` and ``frame_id`` (made once)."""
+    return JointStateTemplate(names, frame_id)
 
 
 def serialized_joint_states(block: JointStatesBlock) -> list[bytes] | None:
@@ -107,7 +108,7 @@ def serialized_joint_states(block: JointStatesBlock) -> list[bytes] | None:
         return None
     if block.stamps and not (0 <= block.stamps[0] and block.stamps[-1] < _MAX_SEC):  # (NaN fails too)
         return None
-    return joint_state_template(block.names).serialize(block)
+    return joint_state_template(block.names, block.frame_id).serialize(block)
 
 
 # ----------------------------------------------------------------------------- one message at a time
@@ -264,10 +265,11 @@ def serialize_tf(batch: TransformBatch) -> bytes | None:
 
 
 @lru_cache(maxsize=256)
-def joint_states_template(names: tuple[str, ...], lengths: tuple[int, int, int]) -> Template | None:
-    """sensor_msgs/JointState for these names and array lengths (position, velocity, effort)."""
+def joint_states_template(names: tuple[str, ...], lengths: tuple[int, int, int], frame_id: str = "") -> Template | None:
+    """sensor_msgs/JointState for these names, array lengths (position, velocity, effort) and frame."""
     msg = JointStateMsg()
     msg.header.stamp = Time(sec=_SEC, nanosec=_NSEC)
+    msg.header.frame_id = frame_id
     msg.name = list(names)
     runs = [_sentinel_run(4000 + k, n) for k, n in enumerate(lengths)]
     msg.position, msg.velocity, msg.effort = runs
@@ -281,7 +283,7 @@ def serialize_joint_states(j: JointStates) -> bytes | None:
     if stamp is None:
         return None
     arrays = (j.positions, j.velocities, j.efforts)
-    template = joint_states_template(tuple(j.names), (len(arrays[0]), len(arrays[1]), len(arrays[2])))
+    template = joint_states_template(tuple(j.names), (len(arrays[0]), len(arrays[1]), len(arrays[2])), j.frame_id)
     return None if template is None else template.fill([stamp], [a for a in arrays if len(a)])
 
 

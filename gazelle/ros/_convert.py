@@ -178,6 +178,7 @@ def to_joint_state_msg(j: JointStates) -> JointStateMsg:
     """Bus JointStates -> sensor_msgs/JointState."""
     msg = JointStateMsg()
     msg.header.stamp = to_time(j.stamp_sec)
+    msg.header.frame_id = j.frame_id
     msg.name = list(j.names)
     msg.position = [float(v) for v in j.positions]
     msg.velocity = [float(v) for v in j.velocities]
@@ -446,6 +447,7 @@ def to_dynamic_joint_state_msg(s: DynamicJointState) -> Any:
         ],
     )
     msg.header.stamp = to_time(s.stamp_sec)
+    msg.header.frame_id = s.frame_id
     return msg
 
 

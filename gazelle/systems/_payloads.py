@@ -77,6 +77,8 @@ class JointStates:
     """rad/s or m/s."""
     efforts: tuple[float, ...] = ()
     """N·m or N: the actuator force on each joint (empty: not measured)."""
+    frame_id: str = ""
+    """The header's frame (joint_state_broadcaster's ``frame_id``, ``base_link`` by default; "" elsewhere)."""
 
 
 class PayloadBlock:
@@ -101,10 +103,16 @@ class PayloadBlock:
 class JointStatesBlock(PayloadBlock):
     """sensor_msgs/JointState of consecutive cycles, as arrays (rows: cycles; columns: ``names``)."""
 
-    __slots__ = ("efforts", "names", "positions", "stamps", "velocities")
+    __slots__ = ("efforts", "frame_id", "names", "positions", "stamps", "velocities")
 
     def __init__(
-        self, stamps: list[float], names: tuple[str, ...], positions: Any, velocities: Any, efforts: Any
+        self,
+        stamps: list[float],
+        names: tuple[str, ...],
+        positions: Any,
+        velocities: Any,
+        efforts: Any,
+        frame_id: str = "",
     ) -> None:
         """The joint states of a block of cycles: one stamp per cycle and arrays of cycles x joints."""
         self.stamps = stamps
@@ -112,6 +120,7 @@ class JointStatesBlock(PayloadBlock):
         self.positions = positions
         self.velocities = velocities
         self.efforts = efforts
+        self.frame_id = frame_id
 
     def __len__(self) -> int:
         return len(self.stamps)
@@ -122,7 +131,7 @@ class JointStatesBlock(PayloadBlock):
         for t, p, v, e in zip(
             self.stamps, self.positions.tolist(), self.velocities.tolist(), self.efforts.tolist(), strict=True
         ):
-            yield JointStates(t, names, tuple(p), tuple(v), tuple(e))
+            yield JointStates(t, names, tuple(p), tuple(v), tuple(e), self.frame_id)
 
     def last(self) -> JointStates:
         """The last cycle's JointStates (what a latched reader or the viewer wants)."""
@@ -132,6 +141,7 @@ class JointStatesBlock(PayloadBlock):
             tuple(self.positions[-1].tolist()),
             tuple(self.velocities[-1].tolist()),
             tuple(self.efforts[-1].tolist()),
+            self.frame_id,
         )
 
 
@@ -464,3 +474,5 @@ class DynamicJointState:
     """Joints (and sensors, gpios) of the hardware, in order."""
     interface_values: tuple[tuple[tuple[str, ...], tuple[float, ...]], ...]
     """Per joint: (interface names, values)."""
+    frame_id: str = ""
+    """The header's frame (joint_state_broadcaster's ``frame_id``)."""

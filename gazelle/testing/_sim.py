@@ -444,6 +444,11 @@ class Sim:
         except AssertionError as err:
             raise SimError(f"{err}:\n{self.children[-1].tail()}") from None
 
+    def process_groups(self) -> frozenset[int]:
+        """The process groups of every process the harness started (each child leads one: it and what it
+        started are stopped together)."""
+        return frozenset(c.popen.pid for c in self.children)
+
     def close(self) -> list[str]:
         """Stop every process (the newest first: a launch before the server it talks to) and the test's
         node. Returns the names of processes that had to be killed."""

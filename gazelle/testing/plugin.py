@@ -30,6 +30,7 @@ import os
 import re
 import shutil
 import signal
+import time
 import uuid
 from collections.abc import Iterator
 from pathlib import Path
@@ -107,8 +108,28 @@ def gazelle_seed(request: pytest.FixtureRequest) -> int:
     return int(seed) if seed is not None else 0
 
 
-def _leaked(token: str) -> list[tuple[int, str]]:
-    """(pid, command line) of live processes carrying ``token`` in their environment, besides this one."""
+def _leaked(token: str, spare: frozenset[int] = frozenset()) -> list[tuple[int, str]]:
+    """(pid, command line) of live processes carrying ``token`` in their environment, besides this one.
+
+    A process in one of the ``spare`` process groups (the harness's own children, which :meth:`Sim.close`
+    has just SIGKILLed with their groups) is waited for instead, up to :data:`REAP_TIMEOUT`: SIGKILL always
+    ends a process, but on a loaded machine the kernel can take seconds to tear a large one down, and such
+    a process was not left running by the test."""
+    deadline = time.monotonic() + REAP_TIMEOUT
+    while True:
+        found = _carrying(token)
+        dying = [pid for pid, _cmd, group in found if group in spare]
+        if not dying or time.monotonic() > deadline:
+            return [(pid, cmd) for pid, cmd, _group in found]
+        time.sleep(0.05)  # another process's end: nothing to wait on but /proc
+
+
+REAP_TIMEOUT = 30.0
+"""Seconds a SIGKILLed harness process may take to disappear before it counts as left running."""
+
+
+def _carrying(token: str) -> list[tuple[int, str, int]]:
+    """(pid, command line, process group) of live processes carrying ``token`` in their environment."""
     found = []
     needle = f"{TOKEN_VAR}={token}".encode()
     for entry in os.listdir("/proc"):
@@ -121,11 +142,12 @@ def _leaked(token: str) -> list[tuple[int, str]]:
             with open(f"/proc/{entry}/cmdline", "rb") as f:
                 cmd = f.read().replace(b"\0", b" ").decode(errors="replace").strip()
             with open(f"/proc/{entry}/stat", "rb") as f:
-                if f.read().split(b")")[-1].split()[0] == b"Z":
-                    continue  # a zombie is already dead: its parent has yet to reap it
+                fields = f.read().split(b")")[-1].split()
+            if fields[0] == b"Z":
+                continue  # a zombie is already dead: its parent has yet to reap it
         except OSError:
             continue
-        found.append((int(entry), cmd))
+        found.append((int(entry), cmd, int(fields[2])))
     return found
 
 
@@ -177,11 +199,13 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
         with environ_applied({**test_env, TOKEN_VAR: token}):
             yield sim
     finally:
+        own: frozenset[int] = frozenset()
         if sim is not None:
+            own = sim.process_groups()
             sim.close()
             if mode != "none" and folder.exists():
                 (folder / "server.log").write_text(sim.server.output + "\n")
-        leaks = _leaked(token)
+        leaks = _leaked(token, own)
         for pid, _cmd in leaks:
             try:
                 os.kill(pid, signal.SIGKILL)

@@ -92,6 +92,7 @@ def test_diffbot_drives_with_its_own_controllers_yaml_and_the_spawner(sim_factor
     ros_client.node.create_subscription(JointState, "/joint_states", keep(joints), 10)
     wait_for(lambda: odom and joints, 15, "/diffbot_base_controller/odom and /joint_states")
     assert set(joints[-1].name) == {"left_wheel_joint", "right_wheel_joint"}
+    assert joints[-1].header.frame_id == "base_link"  # joint_state_broadcaster's frame_id (Jazzy's default)
 
     pub = ros_client.node.create_publisher(TwistStamped, "/diffbot_base_controller/cmd_vel", 10)
     wait_for(lambda: pub.get_subscription_count() > 0, 15, "the controller on /diffbot_base_controller/cmd_vel")

@@ -834,3 +834,54 @@ def test_the_plugins_remappings_and_the_spawners_controller_ros_args_reach_the_c
         sim.bus.inject("/cmd_vel", MsgType.TWIST_STAMPED, TwistStamped(0, "", Twist((0.2, 0.0, 0.0))))
         sim.step(20)
     assert sim.world.entity_state("diffbot").pose.position[0] > 0.05  # it drives from the remapped topic
+
+
+_TWO_JOINT_ARM = """<robot name="arm">
+  <link name="world"/><joint name="bolt" type="fixed"><parent link="world"/><child link="base"/></joint>
+  <link name="base"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="l1"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="l2"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="zeta" type="revolute"><parent link="base"/><child link="l1"/><axis xyz="0 0 1"/>
+    <limit lower="-3" upper="3" effort="10" velocity="1"/></joint>
+  <joint name="alpha" type="revolute"><parent link="l1"/><child link="l2"/><axis xyz="0 0 1"/>
+    <limit lower="-3" upper="3" effort="10" velocity="1"/></joint>
+  <ros2_control name="arm" type="system"><hardware><plugin>mock_components/GenericSystem</plugin></hardware>
+    <joint name="zeta"><command_interface name="position"/><state_interface name="position"/></joint>
+    <joint name="alpha"><command_interface name="position"/><state_interface name="position"/>
+      <state_interface name="velocity"/></joint>
+  </ros2_control>
+</robot>"""
+
+
+def test_joint_state_broadcaster_frames_orders_and_filters_as_jazzys(tmp_path, make_sim, caplog):
+    """ros2_controllers Jazzy's joint_state_broadcaster.cpp: header.frame_id is ``frame_id`` (``base_link``
+    by default) on both messages; with ``use_urdf_to_filter`` the joints are the URDF's moving ones by name
+    (its joint map), a missing interface is NaN; without it, the hardware's order; ``frame_id: ""`` is warned;
+    ``publish_dynamic_joint_states: false`` advertises no dynamic_joint_states."""
+    config = tmp_path / "c.yaml"
+    config.write_text(
+        "controller_manager:\n  ros__parameters:\n"
+        "    jsb: {type: joint_state_broadcaster/JointStateBroadcaster}\n"
+        "    raw: {type: joint_state_broadcaster/JointStateBroadcaster}\n"
+        "raw:\n  ros__parameters:\n    use_urdf_to_filter: false\n    frame_id: ''\n"
+        "    publish_dynamic_joint_states: false\n    use_local_topics: true\n"
+    )
+    sim = make_sim()
+    cm = _manager(sim.spawn(load_string(_TWO_JOINT_ARM).model, name="arm", pose=Pose((0, 0, 0.1))))
+    cm.files.append(load_params(config))
+    with caplog.at_level(logging.WARNING):
+        for name in ("jsb", "raw"):
+            cm.load_controller(name)
+            cm.configure_controller(name)
+        cm.switch_controller(["jsb", "raw"], [])
+    assert "Frame ID is not set." in caplog.text
+    heard: dict[str, list] = {}
+    for ep in sim.bus.endpoints():
+        if ep.topic in ("/joint_states", "/raw/joint_states", "/dynamic_joint_states"):
+            ep.add_sink(heard.setdefault(ep.topic, []).append)
+    assert not [ep for ep in sim.bus.endpoints() if ep.topic == "/raw/dynamic_joint_states"]
+    sim.step(50)
+    js, raw, djs = heard["/joint_states"][-1], heard["/raw/joint_states"][-1], heard["/dynamic_joint_states"][-1]
+    assert (js.names, js.frame_id, djs.frame_id) == (("alpha", "zeta"), "base_link", "base_link")
+    assert math.isnan(js.velocities[1]) and not math.isnan(js.velocities[0])  # zeta has no velocity interface
+    assert (raw.names, raw.frame_id) == (("zeta", "alpha"), "")

@@ -18,7 +18,13 @@ class JointStateBroadcaster(Controller):
     """``joint_state_broadcaster/JointStateBroadcaster``: ``joint_states`` (sensor_msgs/JointState) of every
     joint with a position, velocity or effort state interface, and ``dynamic_joint_states`` with every
     interface. Parameters: ``joints`` and ``interfaces`` (empty: all), ``use_local_topics``,
-    ``map_interface_to_joint_state.{position,velocity,effort}``, ``extra_joints``."""
+    ``map_interface_to_joint_state.{position,velocity,effort}``, ``extra_joints``, ``frame_id``,
+    ``use_urdf_to_filter``, ``publish_dynamic_joint_states``.
+
+    As ros2_controllers Jazzy's (``joint_state_broadcaster.cpp``): both messages carry ``frame_id``
+    (``base_link`` by default; empty is warned "Frame ID is not set."); with ``use_urdf_to_filter`` (true)
+    and no ``joints`` list, ``joint_states`` holds the URDF's moving joints that have a state interface, in
+    the order of the URDF model's joint map, which is by name; a value a joint has no interface for is NaN."""
 
     type_name = "joint_state_broadcaster/JointStateBroadcaster"
 
@@ -36,10 +42,18 @@ class JointStateBroadcaster(Controller):
             )
         self._map = {f: self.param(f"map_interface_to_joint_state.{f}", f, str) for f in _JOINT_STATE_FIELDS}
         self._extra = self.string_list("extra_joints")
+        self._frame_id = self.param("frame_id", "base_link", str)
+        if not self._frame_id:
+            self.log.warning("Frame ID is not set.")
+        self._urdf_filter = self.param("use_urdf_to_filter", True, bool)
         local = self.param("use_local_topics", False, bool)
         prefix = "~/" if local else ""
         self._js = self.advertise(f"{prefix}joint_states", MsgType.JOINT_STATE)
-        self._djs = self.advertise(f"{prefix}dynamic_joint_states", MsgType.DYNAMIC_JOINT_STATE)
+        self._djs = (
+            self.advertise(f"{prefix}dynamic_joint_states", MsgType.DYNAMIC_JOINT_STATE)
+            if self.param("publish_dynamic_joint_states", True, bool)
+            else None
+        )
 
     def state_interfaces(self) -> list[str] | None:
         if not self._joints:
@@ -64,6 +78,11 @@ class JointStateBroadcaster(Controller):
         self._groups = [(n, tuple(groups[n])) for n in names]
         mapped = {v: k for k, v in self._map.items()}
         self._js_joints = tuple(n for n, ifaces in self._groups if any(i in mapped for i in ifaces))
+        urdf = self.ctx.description_joints
+        if self._urdf_filter and not self._joints and urdf is not None:
+            # init_joint_data: the URDF model's moving joints (urdf::Model::joints_, a std::map: by name)
+            # that have a joint_states interface; a hardware "joint" the URDF lacks is left out
+            self._js_joints = tuple(sorted(n for n in self._js_joints if n in set(urdf)))
         have = dict(self._groups)
         # per JointState field: the state keys in joint order ("" where a joint lacks that interface)
         self._columns = [
@@ -84,8 +103,8 @@ class JointStateBroadcaster(Controller):
             if self._extra:
                 zeros = (0.0,) * len(self._extra)
                 pos, vel, eff = pos + zeros, vel + zeros, eff + zeros
-            self._js.publish(JointStates(t, self._js_joints + tuple(self._extra), pos, vel, eff))
-        if self._djs.wanted:
+            self._js.publish(JointStates(t, self._js_joints + tuple(self._extra), pos, vel, eff, self._frame_id))
+        if self._djs is not None and self._djs.wanted:
             self._djs.publish(
                 DynamicJointState(
                     t,
@@ -94,13 +113,14 @@ class JointStateBroadcaster(Controller):
                         (ifaces, tuple(states[k] for k in keys))
                         for (_, ifaces), keys in zip(self._groups, self._djs_keys, strict=True)
                     ),
+                    self._frame_id,
                 )
             )
 
     def block_ready(self) -> bool:
         """Whether its cycles can be part of a planned block (see ``ControllerManager._plan_block``): no
         ``dynamic_joint_states`` listener (its sensor interfaces are not recorded per cycle)."""
-        return not self._djs.wanted
+        return self._djs is None or not self._djs.wanted
 
     def publish_block(
         self, times: np.ndarray, records: np.ndarray, column: dict[str, int], states: dict[str, float]
@@ -136,7 +156,9 @@ class JointStateBroadcaster(Controller):
                     else:
                         values[:, i] = states[c] if c else math.nan
             fields.append(values)
-        self._js.publish_block(JointStatesBlock(times.tolist(), self._js_joints + tuple(self._extra), *fields))
+        pos, vel, eff = fields
+        names = self._js_joints + tuple(self._extra)
+        self._js.publish_block(JointStatesBlock(times.tolist(), names, pos, vel, eff, self._frame_id))
 
 
 class ForwardCommandController(Controller):

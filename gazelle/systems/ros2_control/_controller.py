@@ -82,6 +82,9 @@ class ControllerContext:
     add_component: Callable[[Any], None] = _ignore
     """Announce an interface the ROS layer serves for this controller (an action server)."""
     remove_component: Callable[[Any], None] = _ignore
+    description_joints: tuple[str, ...] | None = None
+    """The moving (non-fixed) joints of the robot's URDF, the ``robot_description`` a controller gets; None when
+    the robot came from SDF (no URDF to parse, as a controller whose description fails to load)."""
     remaps: tuple[tuple[str, str], ...] = ()
     """Remapping rules of the controller's node (``from``, ``to``), first match wins: the manager's own
     (``<ros><remapping>``), then the spawner's ``--controller-ros-args``, as ros2_control Jazzy gives them."""

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ...description import MAX_PARAMS_FILE_BYTES, ResourceResolver
+from ...description import MAX_PARAMS_FILE_BYTES, JointType, ResourceResolver
 from ...physics import PhysicsWorld
 from .._base import RateGate, System, SystemContext, UpdateInfo
 from .._plugin_config import child_text, parse_bool, remap_arguments, ros_block, ros_remaps
@@ -486,6 +486,9 @@ class ControllerManager(System):
             add_component=functools.partial(ctx.bus.add_component, ctx.entity.name),
             remove_component=ctx.bus.remove_component,
             remaps=remaps,
+            description_joints=tuple(j.name for j in ctx.entity.model.joints if j.type is not JointType.FIXED)
+            if ctx.entity.model.urdf
+            else None,
         )
         controller = cls(name, self.controller_params(name), cctx)
         self.controllers[name] = _Loaded(controller, type_name)
