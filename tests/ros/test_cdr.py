@@ -98,7 +98,8 @@ def test_joint_states_from_their_template_are_what_rclpy_serializes(stamp, joint
     arrays = [
         tuple(data.draw(st.lists(floats, min_size=k, max_size=k))) for k in (n, n, data.draw(st.sampled_from([0, n])))
     ]
-    same_bytes(MsgType.JOINT_STATE, JointStates(stamp, tuple(joints), *arrays))
+    frame = data.draw(st.sampled_from(["", "base_link", "r1/base_footprint"]))  # joint_state_broadcaster's frame_id
+    same_bytes(MsgType.JOINT_STATE, JointStates(stamp, tuple(joints), arrays[0], arrays[1], arrays[2], frame))
 
 
 def test_what_a_template_cannot_hold_is_built_as_a_message() -> None:

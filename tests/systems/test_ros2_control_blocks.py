@@ -196,7 +196,8 @@ def test_joint_states_serialized_from_a_template_read_back_as_the_converted_mess
     for names in (JOINTS, ("a",), ("left_wheel_joint", "right_wheel_joint", "a_much_longer_joint_name_x")):
         n = len(names)
         stamps = [0.0, 0.001, 1.9999999999, 12.345, 86400.5]
-        block = JointStatesBlock(stamps, names, *(rng.normal(size=(len(stamps), n)) for _ in range(3)))
+        pos, vel, eff = (rng.normal(size=(len(stamps), n)) for _ in range(3))
+        block = JointStatesBlock(stamps, names, pos, vel, eff, "base_link")
         block.efforts[1, 0] = math.nan
         raw = serialized_joint_states(block)
         assert raw is not None and len(raw) == len(stamps)
@@ -206,7 +207,7 @@ def test_joint_states_serialized_from_a_template_read_back_as_the_converted_mess
                 want.header.stamp.sec,
                 want.header.stamp.nanosec,
             )
-            assert list(got.name) == list(want.name) and got.header.frame_id == ""
+            assert list(got.name) == list(want.name) and got.header.frame_id == want.header.frame_id == "base_link"
             for field in ("position", "velocity", "effort"):
                 np.testing.assert_array_equal(np.array(getattr(got, field)), np.array(getattr(want, field)))
     # arrays that do not match the names are not templated: the messages are built one by one
