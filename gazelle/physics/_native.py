@@ -151,6 +151,9 @@ def build(quiet: bool = False) -> Path | None:
 
 
 def _load() -> ctypes.CDLL | None:
+    """The native servo library, built on first use and loaded once per process (None: not available, and
+    the Python path runs instead). ``GAZELLE_NO_NATIVE`` turns it off. A library file that another user owns
+    or others may write is refused with a warning: loading it would run their code in this process."""
     global _lib, _tried
     with _lock:
         if _tried:

@@ -244,6 +244,11 @@ class WorldQueries:
     def _multi_ray(
         self, origin: np.ndarray, directions: np.ndarray, exclude_body: int, max_range: float
     ) -> tuple[np.ndarray, np.ndarray]:
+        """One ``mj_multiRay`` call for every direction (world frame, unit vectors) from ``origin``: the
+        distance to the first hit (-1 for none within ``max_range``) and the geom hit (-1 for none). Only the
+        geom groups of :data:`RAY_GEOM_GROUPS` are seen (collision shapes, not visuals), static geoms
+        included; ``exclude_body`` (the sensor's own body) is not, so a sensor does not see the link it is
+        mounted in."""
         n = len(directions)
         dist = np.empty(n)
         geom = np.empty(n, dtype=np.int32)

@@ -33,7 +33,9 @@ def group_joints_and_links(robot: etree._Element, semantics: Semantics, group: s
             parent_joint[str(child.get("link"))] = (str(joint.get("name")), str(parent.get("link")))
     by_name = {g.name: g for g in semantics.groups}
 
-    def up(link: str) -> list[tuple[str, str]]:  # (link, its parent joint) from link to the root
+    def up(link: str) -> list[tuple[str, str]]:
+        """(link, the joint above it) from ``link`` up to the root, whose joint is "" (a loop in a malformed
+        tree ends the walk instead of looping)."""
         out, seen = [], set()
         while link in parent_joint and link not in seen:
             seen.add(link)
@@ -43,6 +45,10 @@ def group_joints_and_links(robot: etree._Element, semantics: Semantics, group: s
         return out
 
     def joints_of(name: str, visiting: frozenset[str] = frozenset()) -> set[str]:
+        """The joints of group ``name`` as MoveIt's JointModelGroup takes them from the SRDF: each chain's
+        joints from its base link down to its tip (through their common ancestor when the base is not above
+        the tip), the listed joints, the joints above the listed links, and its subgroups' joints (a cycle of
+        subgroups is cut where it comes back)."""
         g = by_name[name]
         found: set[str] = set()
         for chain in g.chains:

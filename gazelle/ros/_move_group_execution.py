@@ -137,6 +137,9 @@ class _Execution(_Planning):
             return self._check_trajectory_locked(trajectory)
 
     def _check_trajectory_locked(self, trajectory: JointTrajectory) -> str | None:
+        """Why ``trajectory`` cannot be executed (None: it can): no robot, no points, a joint the robot lacks,
+        a position outside its limits (the first point may be off by the start-state tolerance), or a speed
+        between two points more than 1 % over the joint's velocity limit."""
         planner = self.planner
         if planner is None:
             return "move_group has no robot yet"

@@ -31,6 +31,8 @@ class _ModelServices(_MoveGroupBase):
     """The robot_description the planner was built from (MoveIt's RDFLoader URDF string)."""
 
     def _get_urdf(self, req: GetGroupUrdf.Request, res: GetGroupUrdf.Response) -> Any:
+        """``get_urdf`` (moveit_msgs/GetGroupUrdf): the URDF of one planning group's links and joints, with
+        the error code's source ``GetUrdfService`` as MoveIt sets it; an unknown group is FAILURE with why."""
         assert self.planner is not None
         res.error_code.source = "GetUrdfService"
         try:

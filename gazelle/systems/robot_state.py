@@ -186,11 +186,13 @@ class JointStateConfig:
     """``libgazebo_ros_joint_state_publisher.so`` / gz-sim ``JointStatePublisher`` parameters."""
 
     joint_names: tuple[str, ...] = ()
-    """``<joint_name>`` (repeatable). Classic: required. gz-sim: default all joints."""
+    """``<joint_name>`` (repeatable). Classic: required. gz-sim: default every joint of the model."""
     update_rate: float = 100.0
-    """``<update_rate>``, Hz of sim time; default 100 (classic) / every step's 50 Hz cap (gz)."""
+    """``<update_rate>``, Hz of sim time; default 100. (gz-sim's default, 0, publishes at every physics step;
+    gazelle keeps 100 Hz then, as a publisher of every step would take Python into every step.)"""
     topic: str = "joint_states"
-    """``<topic>`` (gz-sim); classic publishes ``joint_states`` under ``<ros><namespace>``."""
+    """gz-sim's ``<topic>``, else ``/world/<world>/model/<model>/joint_state``; classic publishes
+    ``joint_states`` under ``<ros><namespace>`` (remappable) and has no ``<topic>``."""
     namespace: str = ""
 
 
@@ -200,10 +202,8 @@ class JointStatePublisher(System):
 
     plugin_files = ("gazebo_ros_joint_state_publisher",)
 
-    def __init__(self, *, all_by_default: bool = False) -> None:
-        """An unconfigured joint state publisher; ``all_by_default``: with no ``<joint_name>``, every joint that
-        moves (gz-sim's JointStatePublisher); else no ``<joint_name>`` is gazebo_ros's error."""
-        self.all_by_default = all_by_default
+    def __init__(self) -> None:
+        """An unconfigured joint state publisher (no ``<joint_name>`` is gazebo_ros's error)."""
         self.config = JointStateConfig()
         self._pub: Endpoint | None = None
         self._joints: list[str] = []
@@ -219,12 +219,12 @@ class JointStatePublisher(System):
         names = all_texts(cfg, "joint_name")
         ns, remaps = ros_block(cfg)
         rate = parse_float(cfg, "update_rate", 100.0, log)
-        if cfg is not None and cfg.find("update_rate") is None and not self.all_by_default:
+        if cfg is not None and cfg.find("update_rate") is None:
             log.info(f"Missing <update_rate>, defaults to {rate:f}")
-        topic = child_text(cfg, "topic") or "joint_states"
+        topic = "joint_states"
         self.config = JointStateConfig(names, rate, topic, ns or ctx.entity.namespace)
         movable = [j.name for j in model.joints if j.type not in (JointType.FIXED, JointType.FLOATING)]
-        wanted = list(names) if names else (movable if self.all_by_default else [])
+        wanted = list(names)
         if not wanted:
             log.error("Plugin missing <joint_name>s")
             return
@@ -268,9 +268,58 @@ class JointStatePublisher(System):
 
 
 class GzJointStatePublisher(JointStatePublisher):
-    """gz-sim's JointStatePublisher: without ``<joint_name>`` it publishes every joint of the model that moves."""
+    """gz-sim's JointStatePublisher (gz-sim8 ``src/systems/joint_state_publisher/JointStatePublisher.cc``), as
+    ros_gz_bridge turns its gz.msgs.Model into sensor_msgs/JointState (``convert/sensor_msgs.cpp``): the
+    ``<joint_name>`` joints, else every joint of the model (fixed ones too, at zero: they have no position),
+    in the model's order; a name the model lacks is an error and left out. Each joint has a position,
+    a velocity and an effort, the effort 0: gz-sim8's physics never fills the JointForce component the
+    publisher reads. On ``<topic>``, else ``/world/<world>/model/<model>/joint_state``."""
 
     gz_plugin = "JointStatePublisher"
 
     def __init__(self) -> None:
-        super().__init__(all_by_default=True)
+        """An unconfigured gz-sim joint state publisher."""
+        super().__init__()
+        self._moving: list[JointHandle | None] = []
+        """Per published joint: its handle, or None for a joint without one degree of freedom (zeros)."""
+
+    def configure(self, ctx: SystemContext) -> None:
+        """Read ``<joint_name>``, ``<topic>`` and ``<update_rate>``; find the joints; advertise the topic."""
+        log = ctx.logger
+        cfg = ctx.plugin.config if ctx.plugin is not None else None
+        model: Model = ctx.entity.model
+        names = all_texts(cfg, "joint_name")
+        ns, remaps = ros_block(cfg)
+        rate = parse_float(cfg, "update_rate", 100.0, log)
+        topic = child_text(cfg, "topic") or f"/world/{ctx.world_name}/model/{ctx.entity.name}/joint_state"
+        self.config = JointStateConfig(names, rate, topic, ns or ctx.entity.namespace)
+        joints = {j.name: j for j in model.joints}
+        for name in names or tuple(joints):
+            if name not in joints:
+                log.error(f"Joint with name[{name}] not found. The JointStatePublisher will not publish this joint.")
+                continue
+            self._joints.append(name)
+        one_dof = (JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC)
+        self._moving = [
+            ctx.world.joint(ctx.entity.name, n) if joints[n].type in one_dof else None for n in self._joints
+        ]
+        self._pub = ctx.bus.advertise(
+            ctx.entity.name, resolve_topic(topic, self.config.namespace, remaps), MsgType.JOINT_STATE, depth=1000
+        )
+
+    def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """Publish, when due and wanted, from the simulated state (zeros for joints without one degree of
+        freedom, and for every effort)."""
+        if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.config.update_rate):
+            return
+        if not self._pub.wanted:
+            return
+        self._pub.publish(
+            JointStates(
+                info.sim_time_sec,
+                tuple(self._joints),
+                tuple(h.position if h is not None else 0.0 for h in self._moving),
+                tuple(h.velocity if h is not None else 0.0 for h in self._moving),
+                (0.0,) * len(self._moving),
+            )
+        )

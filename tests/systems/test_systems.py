@@ -567,3 +567,34 @@ def test_a_plugin_parameter_no_system_reads_is_named_with_its_line(caplog) -> No
         f"/robots/diffbot.urdf:{line}: <position_proportional_gain> is not read by gz_ros2_control-system; "
         "it is ignored",
     ]
+
+
+def test_gz_sims_joint_state_publisher_publishes_every_joint_as_ros_gz_bridge_delivers_it(caplog) -> None:
+    """gz-sim8's JointStatePublisher through ros_gz_bridge: without <joint_name> every joint of the model
+    (the fixed one too, at zero), each with an effort of 0 (gz-sim's physics never fills JointForce), on
+    /world/<world>/model/<model>/joint_state; a named joint the model lacks is an error and left out."""
+    plugin = '<plugin filename="gz-sim-joint-state-publisher-system" name="gz::sim::systems::JointStatePublisher">'
+    urdf = _TURNTABLE.replace("</robot>", f"<gazebo>{plugin}</plugin></gazebo></robot>")
+    sim = new_simulation()
+    sim.spawn(load_string(urdf).model, name="tt", pose=Pose((0.0, 0.0, 0.0)))
+    sim.world.set_joint_state("tt", "spin", position=0.4)
+    (ep,) = [e for e in sim.bus.endpoints() if e.topic == "/world/default/model/tt/joint_state"]
+    got = []
+    ep.add_sink(got.append)
+    sim.step(20)
+    last = got[-1]
+    assert last.names == ("to_world", "spin")
+    assert last.positions[0] == 0.0 and last.positions[1] == pytest.approx(0.4, abs=1e-3)
+    assert last.efforts == (0.0, 0.0)
+    named = urdf.replace(
+        f"{plugin}</plugin>", f"{plugin}<joint_name>nope</joint_name><joint_name>spin</joint_name></plugin>"
+    )
+    with caplog.at_level(logging.ERROR):
+        sim2 = new_simulation()
+        sim2.spawn(load_string(named).model, name="tt", pose=Pose((0.0, 0.0, 0.0)))
+    assert "Joint with name[nope] not found." in caplog.text
+    (ep2,) = [e for e in sim2.bus.endpoints() if e.topic == "/world/default/model/tt/joint_state"]
+    got2 = []
+    ep2.add_sink(got2.append)
+    sim2.step(20)
+    assert got2[-1].names == ("spin",)

@@ -11,6 +11,10 @@ from ._messages import InterfaceError, get_interface, to_yaml
 
 
 def main(argv: list[str]) -> int:
+    """``ros2 interface <verb>``: 0 on success, 1 (with ros2cli's message on stderr) for a type that does not
+    exist. ``show`` prints the definition with its comments (nested ones with ``--all-comments``, none with
+    ``--no-comments``), ``proto`` a YAML prototype (a service's request, an action's goal, as ros2cli does),
+    ``list``/``packages``/``package`` what the ament index of this venv holds."""
     p = argparse.ArgumentParser(prog="ros2 interface", description="Show information about ROS interfaces")
     sub = p.add_subparsers(dest="cmd", required=True)
     show = sub.add_parser("show", help="Output the interface definition")
