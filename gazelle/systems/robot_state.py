@@ -211,18 +211,23 @@ class JointStatePublisher(System):
         self.phase_gate = self._gate
         self._handles: list[JointHandle] = []
 
+    def _read_config(self, ctx: SystemContext, topic: str) -> dict[str, str]:
+        """:attr:`config` from the plugin's ``<joint_name>``s, ``<update_rate>`` and ``<ros>``, publishing on
+        ``topic``; returns the ``<ros>`` remappings."""
+        cfg = ctx.plugin.config if ctx.plugin is not None else None
+        ns, remaps = ros_block(cfg)
+        rate = parse_float(cfg, "update_rate", 100.0, ctx.logger)
+        self.config = JointStateConfig(all_texts(cfg, "joint_name"), rate, topic, ns or ctx.entity.namespace)
+        return remaps
+
     def configure(self, ctx: SystemContext) -> None:
         """Read the configuration, find the joints, advertise the topics (and publish the latched ones)."""
         log = ctx.logger
-        cfg = ctx.plugin.config if ctx.plugin is not None else None
         model: Model = ctx.entity.model
-        names = all_texts(cfg, "joint_name")
-        ns, remaps = ros_block(cfg)
-        rate = parse_float(cfg, "update_rate", 100.0, log)
-        if cfg is not None and cfg.find("update_rate") is None:
-            log.info(f"Missing <update_rate>, defaults to {rate:f}")
-        topic = "joint_states"
-        self.config = JointStateConfig(names, rate, topic, ns or ctx.entity.namespace)
+        remaps = self._read_config(ctx, "joint_states")
+        names, topic = self.config.joint_names, self.config.topic
+        if ctx.plugin is not None and ctx.plugin.config.find("update_rate") is None:
+            log.info(f"Missing <update_rate>, defaults to {self.config.update_rate:f}")
         movable = [j.name for j in model.joints if j.type not in (JointType.FIXED, JointType.FLOATING)]
         wanted = list(names)
         if not wanted:
@@ -288,11 +293,9 @@ class GzJointStatePublisher(JointStatePublisher):
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         model: Model = ctx.entity.model
-        names = all_texts(cfg, "joint_name")
-        ns, remaps = ros_block(cfg)
-        rate = parse_float(cfg, "update_rate", 100.0, log)
         topic = child_text(cfg, "topic") or f"/world/{ctx.world_name}/model/{ctx.entity.name}/joint_state"
-        self.config = JointStateConfig(names, rate, topic, ns or ctx.entity.namespace)
+        remaps = self._read_config(ctx, topic)
+        names = self.config.joint_names
         joints = {j.name: j for j in model.joints}
         for name in names or tuple(joints):
             if name not in joints:

@@ -6,6 +6,8 @@ stamped 0 is not due, and ``ignore_timestamp`` publishes every message with its 
 
 from __future__ import annotations
 
+import contextlib
+from collections.abc import Iterator
 from typing import Any, cast
 
 import pytest
@@ -21,6 +23,22 @@ _ARM = """<robot name="arm">
   <joint name="j2" type="revolute"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/>
     <mimic joint="j1" multiplier="2" offset="0.1"/><limit lower="-3" upper="3" effort="1" velocity="1"/></joint>
 </robot>"""
+
+
+@contextlib.contextmanager
+def _node(name: str, **params: Any) -> Iterator[tuple[list[Any], list[Any], Any]]:
+    """robot_state_publisher with ``params`` in a test client's context: what the client hears on /tf and
+    /tf_static, and a /joint_states publisher; all destroyed at the end."""
+    ros = RosClient(name)
+    try:
+        rsp, tf, static, pub = _start(ros, **params)
+        try:
+            yield tf, static, pub
+        finally:
+            ros.executor.remove_node(rsp)
+            rsp.destroy_node()
+    finally:
+        ros.close()
 
 
 def _start(ros: RosClient, **params: Any) -> tuple[Any, list[Any], list[Any], Any]:
@@ -63,9 +81,7 @@ def _stamp(m: Any) -> float:
 def test_a_world_link_is_a_static_transform_and_mimic_joints_follow_their_leader() -> None:
     import math
 
-    ros = RosClient("rsp_world_mimic_test")
-    rsp, tf, static, pub = _start(ros)
-    try:
+    with _node("rsp_world_mimic_test") as (tf, static, pub):
         wait_for(lambda: static, 10, "/tf_static")
         fixed = {t.child_frame_id: t for t in static[-1].transforms}
         assert set(fixed) == {"base"} and fixed["base"].header.frame_id == "world"
@@ -77,16 +93,10 @@ def test_a_world_link_is_a_static_transform_and_mimic_joints_follow_their_leader
         assert [t.child_frame_id for t in moved] == ["a", "b"]  # by joint name, j2 from its leader j1
         yaw = [2 * math.atan2(t.transform.rotation.z, t.transform.rotation.w) for t in moved]
         assert yaw == pytest.approx([0.3, 2 * 0.3 + 0.1])
-    finally:
-        ros.executor.remove_node(rsp)
-        rsp.destroy_node()
-        ros.close()
 
 
 def test_states_are_published_by_their_stamp_and_one_stamped_zero_is_never_due() -> None:
-    ros = RosClient("rsp_stamp_test")
-    rsp, tf, _static, pub = _start(ros, publish_frequency=10.0)  # every 100 ms of stamps
-    try:
+    with _node("rsp_stamp_test", publish_frequency=10.0) as (tf, _static, pub):  # every 100 ms of stamps
         # published in a burst of wall time: which go out depends on their stamps only
         for sec in (1.0, 1.05, 0.0, 1.1, 1.15, 1.3):
             pub.publish(_state(sec, 0.1))
@@ -94,21 +104,11 @@ def test_states_are_published_by_their_stamp_and_one_stamped_zero_is_never_due()
         # here, every earlier state has been published or dropped
         wait_for(lambda: tf and _stamp(tf[-1]) == 1.3, 10, "the transforms of the state stamped 1.3 s")
         assert [_stamp(m) for m in tf] == [1.0, 1.1, 1.3]
-    finally:
-        ros.executor.remove_node(rsp)
-        rsp.destroy_node()
-        ros.close()
 
 
 def test_ignore_timestamp_publishes_every_state_with_its_own_stamp() -> None:
-    ros = RosClient("rsp_ignore_stamp_test")
-    rsp, tf, _static, pub = _start(ros, ignore_timestamp=True)
-    try:
+    with _node("rsp_ignore_stamp_test", ignore_timestamp=True) as (tf, _static, pub):
         for sec in (2.0, 2.001, 0.0):
             pub.publish(_state(sec, 0.1))
         wait_for(lambda: len(tf) >= 3, 10, "three /tf messages")
         assert [_stamp(m) for m in tf] == [2.0, 2.001, 0.0]
-    finally:
-        ros.executor.remove_node(rsp)
-        rsp.destroy_node()
-        ros.close()
