@@ -32,7 +32,7 @@ from concurrent.futures import TimeoutError as FutureTimeout
 from pathlib import Path
 from typing import Any, TypeVar
 
-from ..description import Model, Plugin, Pose, ReadLog, World, config_reads
+from ..description import Model, Plugin, Pose, World, config_reads
 from ..physics import (
     Entity,
     ErrorKind,
@@ -58,6 +58,7 @@ from ..systems import (
     plugin_node,
     plugin_node_name,
     robot_state_config,
+    unread_parameters,
 )
 from ..systems.ros2_control import ControllerManager
 from ._runtime_types import RtfSample, SpawnRequest, StepListener
@@ -71,18 +72,6 @@ MAX_CATCH_UP_SEC = 1.0
 MAX_BLOCK_SEC = 0.01
 """The longest block of steps (sim time) taken without returning to Python, when nothing is due sooner."""
 _log = logging.getLogger("gazelle")
-
-
-def _warn_unread(plugin: Plugin | None, reads: ReadLog, logger: logging.Logger) -> None:
-    """Name each parameter of ``plugin`` (a child element of the ``<plugin>``) its system's ``configure`` never
-    looked up: a typo, a ROS 1 name gazelle does not map, or a parameter gazelle does not simulate. Said as
-    a warning with its file:line, never dropped silently."""
-    if plugin is None:
-        return
-    for child in plugin.config.children:
-        if not reads.read(child.tag):
-            where = f"{child.location}: " if child.location else ""
-            logger.warning(f"{where}<{child.tag}> is not read by {plugin.filename}; it is ignored")
 
 
 def _shutdown_system(system: System) -> None:
@@ -526,7 +515,8 @@ class Simulation:
                     system.configure(
                         SystemContext(self.world, entity, plugin, self.bus, logger, world_name=self.world_name)
                     )
-                _warn_unread(plugin, reads, logger)
+                for problem in unread_parameters(plugin, reads):
+                    logger.warning(problem)
                 self._announce_node(entity, system, plugin)
             if entity.model.ros2_control and not any(isinstance(s, ControllerManager) for s in made):
                 # as mujoco_ros2_control and the mock hardware do: <ros2_control> alone runs a manager
@@ -563,7 +553,8 @@ class Simulation:
                             magnetic_field=self.magnetic_field,
                         )
                     )
-                _warn_unread(plan.plugin, reads, logger)
+                for problem in unread_parameters(plan.plugin, reads):
+                    logger.warning(problem)
                 self._announce_node(entity, system, plan.plugin)
             if self.robot_state_publisher and (entity.model.joints or entity.model.urdf):
                 logger = logging.getLogger(f"{entity.name}.robot_state_publisher")

@@ -18,24 +18,16 @@ def _numeric(v: Any) -> bool:
     return isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(float(v))
 
 
-def write_report(rows: Sequence[Mapping[str, Any]], path: Path, title: str = "sweep") -> None:
-    """Write the report of ``rows`` (the results table's rows: ``status``, ``seed``, ``param.*``, ``metric.*``,
-    ``artifact.*``, ``error``, ``wall_sec``) to ``path``.
-
-    The page has, in order: a one-line summary (``#summary``), one bar chart of the pass rate per value of
-    each parameter, one scatter per (numeric metric, parameter) coloured by status with the seed on hover, and
-    a table of the runs that did not pass (``#failures``), each with its parameters, links to its artifacts
-    (its replay) and the last line of its error. Plotly's script goes into the first figure only and every
-    other figure reuses it, so the page opens from disk with no network and stays a few MB however many
-    figures it has. At most 500 failing runs are listed: past that the charts say more than the rows.
-    Every value that came from a run is HTML-escaped."""
+def _figures(rows: Sequence[Mapping[str, Any]]) -> list[str]:
+    """The report's charts as HTML fragments: a bar chart of the pass rate per value of each parameter, then a
+    scatter per (numeric metric, parameter) coloured by status with the seed on hover. Plotly's script goes
+    into the first fragment only; the others use it."""
     import plotly.graph_objects as go
     import plotly.io as pio
 
     params = sorted({k[6:] for r in rows for k in r if k.startswith("param.")})
     metrics = sorted({k[7:] for r in rows for k in r if k.startswith("metric.") and k != "metric.passed"})
     metrics = [m for m in metrics if any(_numeric(r.get(f"metric.{m}")) for r in rows)]
-    passed = sum(r["status"] == "passed" for r in rows)
     figures: list[str] = []
     first = True
 
@@ -73,6 +65,22 @@ def write_report(rows: Sequence[Mapping[str, Any]], path: Path, title: str = "sw
                     )
             fig.update_layout(title=f"{m} against {p}", xaxis_title=p, yaxis_title=m)
             add(fig)
+    return figures
+
+
+def write_report(rows: Sequence[Mapping[str, Any]], path: Path, title: str = "sweep") -> None:
+    """Write the report of ``rows`` (the results table's rows: ``status``, ``seed``, ``param.*``, ``metric.*``,
+    ``artifact.*``, ``error``, ``wall_sec``) to ``path``.
+
+    The page has, in order: a one-line summary (``#summary``), one bar chart of the pass rate per value of
+    each parameter, one scatter per (numeric metric, parameter) coloured by status with the seed on hover, and
+    a table of the runs that did not pass (``#failures``), each with its parameters, links to its artifacts
+    (its replay) and the last line of its error. Plotly's script goes into the first figure only and every
+    other figure reuses it, so the page opens from disk with no network and stays a few MB however many
+    figures it has. At most 500 failing runs are listed: past that the charts say more than the rows.
+    Every value that came from a run is HTML-escaped."""
+    passed = sum(r["status"] == "passed" for r in rows)
+    figures = _figures(rows)
     failing = [r for r in rows if r["status"] != "passed"]
     failing_rows = "\n".join(
         "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td><pre>{}</pre></td></tr>".format(

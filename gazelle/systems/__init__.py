@@ -89,6 +89,7 @@ if TYPE_CHECKING:
     from ._payloads import WrenchStamped as WrenchStamped
     from ._plugin_config import plugin_node as plugin_node
     from ._plugin_config import plugin_node_name as plugin_node_name
+    from ._plugin_config import unread_parameters as unread_parameters
     from ._plugin_names import RSP_PLUGIN as RSP_PLUGIN
     from ._registry import SensorPlan as SensorPlan
     from ._registry import audit_model as audit_model
@@ -165,6 +166,7 @@ __all__ = [
     "plugin_factories",
     "plugin_node",
     "plugin_node_name",
+    "unread_parameters",
     "audit_world",
     "create_system",
     "resolve_topic",

@@ -11,7 +11,7 @@ from __future__ import annotations
 import logging
 from typing import TYPE_CHECKING
 
-from ..description import ConfigElement, Plugin
+from ..description import ConfigElement, Plugin, ReadLog
 from ._bus import ParamValue, PluginNode
 
 if TYPE_CHECKING:
@@ -108,6 +108,19 @@ def remap_arguments(args: list[str]) -> tuple[tuple[tuple[str, str], ...], list[
             others.append(arg)
         i += 1
     return tuple(rules), others
+
+
+def unread_parameters(plugin: Plugin | None, reads: ReadLog) -> list[str]:
+    """A warning for each parameter of ``plugin`` (a child element of the ``<plugin>``) that its system's
+    ``configure`` never looked up (``reads``, from ``description.config_reads``): a typo, a ROS 1 name
+    gazelle does not map, or a parameter gazelle does not simulate, each with its file:line."""
+    if plugin is None:
+        return []
+    unread = [child for child in plugin.config.children if not reads.read(child.tag)]
+    return [
+        f"{f'{c.location}: ' if c.location else ''}<{c.tag}> is not read by {plugin.filename}; it is ignored"
+        for c in unread
+    ]
 
 
 # --------------------------------------------------------------------------- plugin nodes

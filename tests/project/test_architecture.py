@@ -267,3 +267,51 @@ def test_ros_clients_do_not_import_the_simulation() -> None:
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip() == "[]"
+
+
+MAX_FUNCTION_LINES = 80
+MAX_FILE_LINES = 800
+MAX_SUPPRESSIONS = 20
+
+
+def _house_problems(package: Path) -> list[str]:
+    """What breaks the house's limits (issue 32): a function over :data:`MAX_FUNCTION_LINES` lines, a module
+    over :data:`MAX_FILE_LINES`, more than :data:`MAX_SUPPRESSIONS` type-checker suppressions in all, or one
+    without its reason after it."""
+    problems, suppressions = [], 0
+    for path in sorted(package.rglob("*.py")):
+        text = path.read_text()
+        rel = path.relative_to(package.parent)
+        if (n := len(text.splitlines())) > MAX_FILE_LINES:
+            problems.append(f"{rel}: {n} lines (at most {MAX_FILE_LINES}: split it where a reader looks for a seam)")
+        for node in ast.walk(ast.parse(text)):
+            if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef):
+                if (n := node.end_lineno - node.lineno + 1) > MAX_FUNCTION_LINES:  # type: ignore[operator] - end_lineno is set for parsed code
+                    problems.append(f"{rel}:{node.lineno} {node.name}() has {n} lines (at most {MAX_FUNCTION_LINES})")
+        for i, line in enumerate(text.splitlines(), 1):
+            for marker in ("# type: ignore", "# pyright: ignore"):
+                if marker in line:
+                    suppressions += 1
+                    after = line.split(marker, 1)[1].split("]", 1)[-1].strip(" -")
+                    if not after:
+                        problems.append(f"{rel}:{i}: a suppression without its reason after it")
+    if suppressions > MAX_SUPPRESSIONS:
+        problems.append(f"{suppressions} type-checker suppressions (at most {MAX_SUPPRESSIONS}): fix the types")
+    return problems
+
+
+def test_the_house_keeps_its_limits() -> None:
+    problems = _house_problems(REPO / "gazelle")
+    assert not problems, "\n".join(problems)
+
+
+def test_the_house_check_finds_a_long_function_a_big_file_and_a_bare_suppression(tmp_path: Path) -> None:
+    pkg = tmp_path / "pkg"
+    pkg.mkdir()
+    (pkg / "long.py").write_text("def f():\n" + "    x = 1\n" * 80)
+    (pkg / "big.py").write_text("x = 1\n" * 801)
+    (pkg / "bare.py").write_text(
+        "x: int = 'a'  # type: ignore[assignment]\ny: int = 'b'  # type: ignore[assignment] - why\n"
+    )
+    problems = _house_problems(pkg)
+    assert [p.split(":")[0].split(" ")[0] for p in problems] == ["pkg/bare.py", "pkg/big.py", "pkg/long.py"]
