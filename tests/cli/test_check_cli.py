@@ -140,14 +140,16 @@ def test_turtlebot3_xacro_with_resource_path() -> None:
     assert proc.stdout.splitlines() == [
         "model turtlebot3_burger: 7 links, 6 joints, 2 sensors, 3 plugins",
         # check tells what spawn would: the lidar runs through libgazebo_ros_laser.so and the IMU through the
-        # libgazebo_ros_imu.so model plugin; the plugin-less <sensor type="imu"> publishes nothing, as in Classic
-        "0 errors, 1 warning",
+        # libgazebo_ros_imu.so model plugin; the plugin-less <sensor type="imu"> publishes nothing, as in Classic;
+        # and that ROS 1 plugin's <alwaysOn> and <serviceName> (its calibration service) are not read
+        "0 errors, 3 warnings",
     ]
+    assert proc.stderr.count("is not read by libgazebo_ros_imu.so; it is ignored") == 2, proc.stderr
     assert (
         "turtlebot3_burger.gazebo.xacro:43: warning: [ELEMENT_UNSUPPORTED] sensor 'imu' (imu) on link 'imu_link' "
         "publishes nothing: it has no gazebo_ros plugin" in proc.stderr
     )
-    assert "lds_lfcd_sensor" not in proc.stderr and "imu_plugin" not in proc.stderr
+    assert "lds_lfcd_sensor" not in proc.stderr and "is not supported" not in proc.stderr  # both plugins run
     # without the resource path, $(find turtlebot3_description) cannot resolve: a clean error
     proc = check(path)
     assert proc.returncode == 1
