@@ -409,7 +409,12 @@ class _Loader(_Parts):
         loc: SourceLocation,
     ) -> str | None:
         """The model's canonical link: ``canonical_link`` if it names one, else its first link, else the
-        first nested model's (scoped)."""
+        first nested model's (scoped).
+
+        It matters beyond naming: the model frame is attached to it (SDF 1.7's rule), so the pose gz-sim and
+        gazelle report for a model is its canonical link's carried along, and gz-sim's DiffDrive names its
+        ``child_frame_id`` after it (``<model>/<canonical link>``). A ``canonical_link`` that names a frame
+        that is not a link is an error, as sdformat makes it."""
         canonical_attr = (element.get("canonical_link") or "").strip() or None
         if canonical_attr is not None:
             body = scope.body(canonical_attr, loc) if canonical_attr in scope.nodes or "::" in canonical_attr else None
@@ -482,7 +487,12 @@ class _Loader(_Parts):
                 built.world_joints[f"{sub.name}::__static_weld__"] = X_MS * _link_pose(sub, sub.canonical)
 
     def flatten(self, parent: _Built, sub: _Built, X_PS: Pose) -> None:
-        """Move ``sub``'s content into ``parent`` with ``sub::`` names, given X_PS."""
+        """Move ``sub``'s content into ``parent`` with ``sub::`` names, given X_PS.
+
+        A nested model becomes part of one flat model, its links, joints and frames scoped as gz-sim scopes
+        them (``gripper::finger``), so a plugin or a sensor topic that names ``gripper::finger`` finds it; its
+        plugins run on the flat model. Links are re-expressed in the parent's frame; joints keep their
+        origins, which are relative to their own links."""
         prefix = f"{sub.name}::"
 
         def scoped(n: str) -> str:

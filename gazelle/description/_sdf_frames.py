@@ -75,7 +75,15 @@ class Scope:
 
     # ------------------------------------------------------------------ poses
     def pose(self, name: str, location: SourceLocation | None, _stack: tuple[str, ...] = ()) -> Pose | None:
-        """X_SF: frame ``name`` in the scope frame, or None after reporting why not."""
+        """X_SF: frame ``name`` in the scope frame, or None after reporting why not.
+
+        SDF's pose graph (sdformat's ``resolveRelativeToGraph``): each element's ``<pose relative_to>`` names the
+        frame it is placed in, up to the scope's root (the model frame, or the world). A name is resolved
+        once and cached, a failure too, so an error is reported once however many frames lean on it; a cycle
+        (``A relative_to B relative_to A``) is a FRAME_CYCLE naming the loop. ``child::frame`` reaches into a
+        nested model's already resolved frames. ``node.post`` is applied after the ``<pose>``: a nested model
+        placed by its ``placement_frame`` (``<include><placement_frame>``) is posed by that frame, not by its
+        own model frame."""
         if name == self.root:
             return IDENTITY
         cached = self._poses.get(name)
@@ -105,7 +113,13 @@ class Scope:
 
     # ------------------------------------------------------------------ attached links
     def body(self, name: str, location: SourceLocation | None, _stack: tuple[str, ...] = ()) -> str | None:
-        """The link frame ``name`` is attached to (scoped name; ``world`` for the world frame)."""
+        """The link frame ``name`` is attached to (scoped name; ``world`` for the world frame).
+
+        SDF's attachment graph, which is not the pose graph: a ``<frame attached_to>`` moves with the link it
+        is attached to wherever its pose is expressed (a sensor frame placed relative to the model but
+        attached to the arm's wrist). The model frame is attached to the canonical link; a nested model's
+        frame to its own canonical link, scoped (``gripper::base``); a joint's frame to its child link.
+        Cycles and unknown names are reported once, as in :meth:`pose`."""
         if name == self.root:
             return self.canonical if self.root == "__model__" else "world"
         if name == "world" and self.root == "__model__":
