@@ -341,7 +341,12 @@ class ControllerManager(System):
 
     def pre_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         """read → update → write, at ``update_rate``; or a block of cycles planned at once, which the
-        world's steps run (see :meth:`_plan_block`)."""
+        world's steps run (see :meth:`_plan_block`).
+
+        As ros2_control's loop: every hardware is read, then each active controller updates in load order
+        (one slower than the manager runs every ``update_rate / its rate`` cycles, given the time since its
+        own last update as its period), then every hardware is written. A controller that raises is
+        deactivated with its error and the robot holds (ros2_control would take the process down)."""
         if info.paused:
             return
         if self.blocks.active:

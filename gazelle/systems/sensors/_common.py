@@ -297,7 +297,14 @@ def sensor_output(
     message: MessageKind | None = None,
 ) -> Output:
     """Resolve the topic, frame and message type of a sensor (``kind``: ``scan``, ``imu`` or ``image``), from its
-    gazebo_ros plugin's parameters ``c`` or, without a plugin, as gz-sim names it."""
+    gazebo_ros plugin's parameters ``c`` or, without a plugin, as gz-sim names it.
+
+    gz-sim: the sensor's ``<topic>``, else its scoped name ``/world/<w>/model/<m>/link/<l>/sensor/<s>/<kind>``
+    (``depth_image`` for a depth camera), in ``<frame_id>`` (``<gz_frame_id>`` in older files), else
+    gz's scoped frame ``<model>::<link>::<sensor>``, which no TF tree has: a user who wants TF names one.
+    gazebo_ros: the plugin's topic under its node's namespace and remappings (a camera's
+    ``<camera_name>/image_raw``), in ``<frame_name>``, else the link; ``<output_type>`` picks a ray sensor's
+    message. Frames get the robot's frame prefix (its namespace) as the robot's TF does."""
     from ..robot_state import entity_frame_prefix
 
     log = ctx.logger
