@@ -65,25 +65,20 @@ def ros_block(cfg: ConfigElement | None) -> tuple[str, dict[str, str]]:
     ros = cfg.find("ros") if cfg is not None else None
     if ros is None:
         return "", {}
-    ns = child_text(ros, "namespace") or ""
-    remaps: dict[str, str] = {}
-    for r in ros.findall("remapping"):
-        text = r.text.strip()
-        sep = ":=" if ":=" in text else "="  # ROS 2 spells from:=to; ROS 1-era files from=to
-        if sep in text:
-            src, dst = text.split(sep, 1)
-            remaps[src.strip()] = dst.strip()
-    return ns, remaps
+    return child_text(ros, "namespace") or "", dict(ros_remaps(cfg))
 
 
 def ros_remaps(cfg: ConfigElement | None) -> tuple[tuple[str, str], ...]:
     """The ``<ros><remapping>from:=to`` rules of a plugin in the order written (rcl takes the first rule that
-    matches a name, so order matters where :func:`ros_block`'s dict would let a later rule win)."""
+    matches a name, so order matters where :func:`ros_block`'s dict would let a later rule win). ROS 2 spells
+    a rule ``from:=to``; ROS 1-era files ``from=to``."""
     ros = cfg.find("ros") if cfg is not None else None
     rules = []
     for r in ros.findall("remapping") if ros is not None else ():
-        src, sep, dst = r.text.strip().partition(":=")
-        if sep and src.strip() and dst.strip():
+        text = r.text.strip()
+        sep = ":=" if ":=" in text else "="
+        if sep in text:
+            src, dst = text.split(sep, 1)
             rules.append((src.strip(), dst.strip()))
     return tuple(rules)
 

@@ -148,9 +148,9 @@ class ControllerManager(System):
         self.controllers: dict[str, _Loaded] = {}
         self.files: list[ParamsFile] = []
         self.overrides: Params = {}
+        """Parameters set on the manager's node at run time (``<ctrl>.type``, ``<ctrl>.params_file``)."""
         self.remaps: tuple[tuple[str, str], ...] = ()
         """The plugin's ``<ros><remapping>`` rules, in order (handed on to every controller's node)."""
-        """Parameters set on the manager's node at run time (``<ctrl>.type``, ``<ctrl>.params_file``)."""
         self.config = ControlPluginConfig()
         self._extra_files = extra_param_files
         self._resolver = ResourceResolver()
