@@ -176,9 +176,7 @@ def to_odometry_msg(o: Odometry) -> OdometryMsg:
 
 def to_joint_state_msg(j: JointStates) -> JointStateMsg:
     """Bus JointStates -> sensor_msgs/JointState."""
-    msg = JointStateMsg()
-    msg.header.stamp = to_time(j.stamp_sec)
-    msg.header.frame_id = j.frame_id
+    msg = _stamped(JointStateMsg(), j)
     msg.name = list(j.names)
     msg.position = [float(v) for v in j.positions]
     msg.velocity = [float(v) for v in j.velocities]
@@ -446,9 +444,7 @@ def to_dynamic_joint_state_msg(s: DynamicJointState) -> Any:
             for names, values in s.interface_values
         ],
     )
-    msg.header.stamp = to_time(s.stamp_sec)
-    msg.header.frame_id = s.frame_id
-    return msg
+    return _stamped(msg, s)
 
 
 ROS_TYPES = {

@@ -38,6 +38,8 @@ from typing import Any
 
 import pytest
 
+from ._settle import _stat_fields
+
 _REPORT = pytest.StashKey[dict[str, pytest.TestReport]]()
 _ARTIFACTS = pytest.StashKey[tuple[Path, int]]()
 _MODULE_BAGS = pytest.StashKey[tuple[Path, list[int]]]()
@@ -141,12 +143,11 @@ def _carrying(token: str) -> list[tuple[int, str, int]]:
                     continue
             with open(f"/proc/{entry}/cmdline", "rb") as f:
                 cmd = f.read().replace(b"\0", b" ").decode(errors="replace").strip()
-            with open(f"/proc/{entry}/stat", "rb") as f:
-                fields = f.read().split(b")")[-1].split()
-            if fields[0] == b"Z":
-                continue  # a zombie is already dead: its parent has yet to reap it
         except OSError:
             continue
+        fields = _stat_fields(f"/proc/{entry}/stat")
+        if fields is None or fields[0] == b"Z":
+            continue  # ended, or a zombie: already dead, its parent has yet to reap it
         found.append((int(entry), cmd, int(fields[2])))
     return found
 

@@ -82,7 +82,8 @@ class JointStateBroadcaster(Controller):
         if self._urdf_filter and not self._joints and urdf is not None:
             # init_joint_data: the URDF model's moving joints (urdf::Model::joints_, a std::map: by name)
             # that have a joint_states interface; a hardware "joint" the URDF lacks is left out
-            self._js_joints = tuple(sorted(n for n in self._js_joints if n in set(urdf)))
+            in_urdf = set(urdf)
+            self._js_joints = tuple(sorted(n for n in self._js_joints if n in in_urdf))
         have = dict(self._groups)
         # per JointState field: the state keys in joint order ("" where a joint lacks that interface)
         self._columns = [

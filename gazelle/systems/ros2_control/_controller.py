@@ -34,7 +34,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, ClassVar, TypeVar
 
-from .._bus import Bus, Endpoint, MsgType, Qos, remap_name, resolve_topic
+from .._bus import Bus, Endpoint, MsgType, Qos, remap_name
 from ._hardware import ControlError
 from ._params import Params
 
@@ -157,9 +157,7 @@ class Controller:
     def topic(self, name: str) -> str:
         """A topic or action name resolved for the controller's node (``~/cmd_vel`` is ``<ns>/<name>/cmd_vel``),
         after the node's remapping rules (:func:`~gazelle.systems._bus.remap_name`)."""
-        if self.ctx.remaps:
-            return remap_name(name, self.ctx.namespace, self.name, self.ctx.remaps)
-        return resolve_topic(name, self.ctx.namespace, node=self.name)
+        return remap_name(name, self.ctx.namespace, self.name, self.ctx.remaps)
 
     def advertise(self, name: str, msg_type: MsgType, qos: Qos = Qos.DEFAULT, depth: int = 10) -> Endpoint:
         """A publisher of the controller's, removed at cleanup."""
