@@ -9,6 +9,7 @@ never imports rclpy: with no bridge attached, publishing costs a list lookup.
 from __future__ import annotations
 
 import enum
+import re
 import threading
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -348,6 +349,34 @@ class Bus:
         return len(targets)
 
 
+NODE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+"""A node name as rmw validates it: letters, digits and ``_``, not starting with a digit."""
+_TOPIC_NAME = re.compile(r"(/[A-Za-z_][A-Za-z0-9_]*)+")
+"""A fully qualified topic name as rcl validates it: ``/``-separated tokens of letters, digits and ``_``,
+none empty or starting with a digit."""
+
+
+def remap_problem(src: str, dst: str, namespace: str, node: str) -> str | None:
+    """The part of the rule ``src:=dst`` that rcl would refuse for ``node`` in ``namespace`` (an invalid node
+    name before ``:`` in ``src``, or a side that is not a valid ROS name once expanded), or None."""
+    target, name = rule_node(src)
+    if target and NODE_NAME.fullmatch(target) is None:
+        return target
+    for side in (name, dst):
+        if _TOPIC_NAME.fullmatch(resolve_topic(side, namespace, node=node)) is None:
+            return side
+    return None
+
+
+def rule_node(src: str) -> tuple[str, str]:
+    """A remapping rule's *from* side split into the node it is for ("" for every node) and the name:
+    ``talker:chatter`` -> (``talker``, ``chatter``); ``~/out`` and ``/a/b`` name no node."""
+    target, sep, rest = src.partition(":")
+    if not sep or "/" in target or "~" in target:
+        return "", src
+    return target, rest
+
+
 def remap_name(name: str, namespace: str, node: str, rules: tuple[tuple[str, str], ...]) -> str:
     """A node's topic (or action, or service) name as rcl resolves it with remapping ``rules``: the name and
     each rule's *from* are expanded for the node (``~`` is the node's own name, a relative name goes under
@@ -356,9 +385,7 @@ def remap_name(name: str, namespace: str, node: str, rules: tuple[tuple[str, str
     ``/r1/odom``. A rule ``node:from:=to`` applies to that node only."""
     resolved = resolve_topic(name, namespace, node=node)
     for src, dst in rules:
-        target, sep, rest = src.partition(":")
-        if not sep or "/" in target or "~" in target:  # no node name before the rule
-            target, rest = "", src
+        target, rest = rule_node(src)
         if target and target != node:
             continue
         if resolve_topic(rest, namespace, node=node) == resolved:

@@ -885,3 +885,32 @@ def test_joint_state_broadcaster_frames_orders_and_filters_as_jazzys(tmp_path, m
     assert (js.names, js.frame_id, djs.frame_id) == (("alpha", "zeta"), "base_link", "base_link")
     assert math.isnan(js.velocities[1]) and not math.isnan(js.velocities[0])  # zeta has no velocity interface
     assert (raw.names, raw.frame_id) == (("zeta", "alpha"), "")
+
+
+def test_remapping_rules_a_ros_peer_sets_that_rcl_would_refuse_refuse_the_load_and_the_manager_goes_on(make_sim):
+    """``<name>.node_options_args`` is a parameter any ROS peer can set: a value that is not a list of strings,
+    or a rule whose names are not ROS names (as rcl refuses them, and the node is not made), refuses that
+    controller's load with the reason, quoted and bounded; the manager loads the next one as before."""
+    from gazelle.description import ConfigElement
+    from gazelle.systems._plugin_config import ros_remaps
+
+    sim = make_sim()
+    cm = _manager(_diffbot(sim))
+    cm.files.append(load_params(DIFFBOT_YAML))
+    cm.set_parameter("diffbot_base_controller.type", "diff_drive_controller/DiffDriveController")
+    for args, why in (
+        (5, "must be a list of strings"),
+        (["-r", "~/cmd_vel:=/bad name!" + "x" * 500], "not a valid ROS name"),
+        (["-r", "1node:~/cmd_vel:=/cmd_vel"], "not a valid ROS name"),
+        (["-r", "~/odom:=/a//b"], "not a valid ROS name"),
+    ):
+        cm.set_parameter("diffbot_base_controller.node_options_args", args)
+        with pytest.raises(ControlError, match=why) as err:
+            cm.load_controller("diffbot_base_controller")
+        assert len(str(err.value)) < 300 and "diffbot_base_controller" not in cm.controllers
+    cm.set_parameter("diffbot_base_controller.node_options_args", ["-r", "~/cmd_vel:=/cmd_vel"])
+    cm.load_controller("diffbot_base_controller")
+    assert cm.controllers["diffbot_base_controller"].controller.topic("~/cmd_vel") == "/cmd_vel"
+    # the ROS 1-era spelling of a plugin's rule, read as every gazebo_ros plugin reads it
+    ros = ConfigElement("ros", children=(ConfigElement("remapping", text="a/odom=odom"),))
+    assert ros_remaps(ConfigElement("plugin", children=(ros,))) == (("a/odom", "odom"),)

@@ -27,6 +27,8 @@ from typing import Any
 from ...description import MAX_PARAMS_FILE_BYTES, JointType, ResourceResolver
 from ...physics import PhysicsWorld
 from .._base import RateGate, System, SystemContext, UpdateInfo
+from .._bus import NODE_NAME as _NODE_NAME
+from .._bus import remap_problem
 from .._plugin_config import child_text, parse_bool, remap_arguments, ros_block, ros_remaps
 from ._blocks import PlannedBlocks
 from ._broadcasters import (
@@ -71,7 +73,6 @@ STRICT, BEST_EFFORT = 2, 1
 
 _FIND = re.compile(r"\$\(find\s+([A-Za-z0-9_]+)\)")
 
-_NODE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 NODE_NAME_MAX = 255
 """rmw's longest node name (``RMW_NODE_NAME_MAX_NAME_LENGTH``)."""
 
@@ -748,9 +749,16 @@ class ControllerManager(System):
         rules, others = remap_arguments(args)
         if others:
             self.log.warning(
-                f"controller '{name}': node arguments {' '.join(others)} are not applied "
+                f"controller '{name}': node arguments {' '.join(others)[:200]} are not applied "
                 "(gazelle applies remappings, -r from:=to)"
             )
+        for src, dst in (*self.remaps, *rules):
+            # rcl refuses a rule whose names are not valid ROS names, and the node is not made (a ROS peer sets
+            # node_options_args: what comes back to it is quoted, bounded and escaped)
+            bad = remap_problem(src, dst, self.namespace, name)
+            if bad is not None:
+                shown = repr(f"{src}:={dst}"[:80])
+                raise ControlError(f"controller '{name}': remapping {shown} names {bad[:40]!r}, not a valid ROS name")
         return self.remaps + rules
 
     def set_parameter(self, name: str, value: object, files: dict[str, ParamsFile] | None = None) -> None:
