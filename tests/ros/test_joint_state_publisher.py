@@ -152,3 +152,54 @@ def test_the_node_takes_source_list_values_and_a_description_file(tmp_path) -> N
         ros.executor.remove_node(node)
         node.destroy_node()
         ros.close()
+
+
+def test_a_bad_description_on_the_topic_is_refused_and_the_node_goes_on(tmp_path) -> None:
+    """robot_description arrives from any ROS peer: text that is not a robot (garbage, xacro, which is never
+    expanded, a joint without limits) is refused with a warning and the node publishes the robot it had; the
+    next good description, published after them on the same latched topic, is taken."""
+    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+    from sensor_msgs.msg import JointState
+    from std_msgs.msg import String
+
+    path = tmp_path / "arm.urdf"
+    path.write_text(ARM)
+    ros = RosClient("jsp_bad_description_test")
+    node = JointStatePublisherNode(str(path), context=ros.context)
+    ros.executor.add_node(node)
+    heard: list[Any] = []
+    sub = ros.node.create_subscription(JointState, "/joint_states", lambda m: heard.append(cast(JointState, m)), 10)
+    latched = QoSProfile(depth=10, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
+    desc = ros.node.create_publisher(String, "/robot_description", latched)
+    xacro = (
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro" name="x">'
+        '<xacro:property name="p" value="${__import__(\'os\').getpid()}"/></robot>'
+    )
+    bare = '<robot name="r"><link name="a"/><link name="b"/>' + _joint("j", "revolute", "a", "b") + "</robot>"
+    good = (
+        '<robot name="g"><link name="a"/><link name="b"/>'
+        + _joint("k", "revolute", "a", "b", _LIMIT.format(lo=-1, hi=1))
+        + "</robot>"
+    )
+    taken: list[bool] = []  # per description the node read: whether it became the node's robot
+    configure = node._configure
+
+    def spy(text: str) -> None:
+        before = node._robot
+        configure(text)
+        taken.append(node._robot is not before)
+
+    node._configure = spy  # the subscription calls it by name
+    try:
+        wait_for(lambda: heard, 10, "/joint_states of the arm")
+        wait_for(lambda: desc.get_subscription_count() == 1, 10, "the node's robot_description subscription")
+        for i, text in enumerate(("<<<not xml", xacro, bare, good)):  # one at a time: the node reads depth 1
+            desc.publish(String(data=text))
+            wait_for(lambda i=i: len(taken) > i, 10, f"the node to read description {i}")
+        wait_for(lambda: list(heard[-1].name) == ["k"], 10, "the good description's joints")
+        assert taken == [False, False, False, True]  # the three refused, in order, then the good one
+    finally:
+        ros.node.destroy_subscription(sub)
+        ros.executor.remove_node(node)
+        node.destroy_node()
+        ros.close()
