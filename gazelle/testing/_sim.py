@@ -310,31 +310,51 @@ class Sim:
         if result.result != 1:  # simulation_interfaces/Result RESULT_OK
             raise SimError(f"StepSimulation({steps}) refused: {result.error_message}")
 
-    def run_for(self, seconds: float, wall_timeout: float = 300.0) -> float:
+    def run_for(self, seconds: float, wall_timeout: float = 300.0, step: float = STEP_CHUNK_SEC) -> float:
         """Advance sim time by ``seconds`` (paused server: stepped as fast as possible; running server:
-        waited for), then wait until the test has heard /clock get there. Returns the sim time."""
+        waited for), then wait until the test has heard /clock get there. Returns the sim time.
+
+        With processes the test started and lockstep on (``settle_timeout`` > 0), a paused world moves a
+        ``step`` of sim time at a time (50 ms by default) and waits for those processes after each, as
+        :meth:`run_until` does: one long step would let the world run ahead of a node for its whole length
+        (a servo node's last commands then reached the arm after the test had read where it stopped).
+        ``wall_timeout`` bounds each step call."""
         if seconds < 0 or not math.isfinite(seconds):
             raise ValueError(f"run_for takes a finite time >= 0, got {seconds!r}")
-        start = self.ros.sim_time
-        target = start + seconds
-        if self.paused:
-            steps = round(seconds / self.step_sec)
-            while steps > 0:
-                chunk = min(steps, 100_000)
-                self._step(chunk, wall_timeout)
-                steps -= chunk
-        # /clock is published every 10 ms of sim time (gazelle sim's --clock-rate): the last tick heard
-        heard_target = math.floor(target * 100 + 1e-6) / 100
-        now = self.ros.wait_for_sim_time(heard_target, timeout=wall_timeout)
-        if self.paused:
+        if not (step > 0 and math.isfinite(step)):
+            raise ValueError(f"run_for's step must be a finite time > 0, got {step!r}")
+        target = self.ros.sim_time + seconds
+        if not self.paused:
+            return self._heard(target, wall_timeout)
+        steps = round(seconds / self.step_sec)
+        # without anything to wait for, one call (at most 100,000 steps) is the fastest way there
+        chunk = max(1, round(step / self.step_sec)) if self._lockstep_nodes() else 100_000
+        now = self.ros.sim_time
+        while steps > 0:
+            n = min(steps, chunk)
+            self._step(n, wall_timeout)
+            steps -= n
+            now = self._heard(target - steps * self.step_sec, wall_timeout)
             self._settle()
         return now
+
+    def _heard(self, target: float, wall_timeout: float) -> float:
+        """Wait until the test has heard /clock reach ``target`` (to the 10 ms tick at or before it: gazelle
+        sim publishes /clock every 10 ms of sim time, its --clock-rate); returns the sim time heard."""
+        return self.ros.wait_for_sim_time(math.floor(target * 100 + 1e-6) / 100, timeout=wall_timeout)
+
+    def _lockstep_nodes(self) -> list[int]:
+        """The pids of the running processes the test started since the last reset (each leads a process group
+        holding all it started), when lockstep is on; else none."""
+        if self._settler.timeout <= 0:
+            return []
+        children = self.children[self._kept :]
+        return [c.popen.pid for c in children if c.popen.poll() is None and c.popen.pid not in self._settler.ignored]
 
     def _settle(self) -> None:
         """Lockstep: wait until the nodes the test started have taken the time just stepped (their timers
         run, their replies sent), so that a node the machine delays does not fall behind the world."""
-        nodes = [c.popen.pid for c in self.children[self._kept :] if c.popen.poll() is None]
-        busy = self._settler.wait(nodes)
+        busy = self._settler.wait(self._lockstep_nodes())
         if busy:
             import warnings
 

@@ -143,6 +143,19 @@ def test_a_slow_node_ticks_every_tenth_of_a_second_of_sim_time(gazelle_sim, ros)
     times = [m.data for m in ticks.messages[first - 1 :]]
     gaps = [round(b - a, 4) for a, b in zip(times, times[1:])]
     assert len(gaps) >= 30 and all(abs(g - 0.1) < 0.011 for g in gaps), gaps
+
+
+def test_one_long_run_for_waits_for_the_slow_node_too(gazelle_sim, ros):
+    ticks = ros.subscribe("/ticks", Float64)
+    gazelle_sim.run([sys.executable, NODE], name="slow_ticker")
+    ros.wait_until(lambda: ros.node.count_publishers("/ticks") > 0, 60, "the slow_ticker node")
+    gazelle_sim.run_until(lambda: len(ticks) >= 3, timeout=10.0, what="3 ticks", step=0.01)
+    first = len(ticks)
+    gazelle_sim.run_for(3.0)  # one call: stepped 50 ms at a time, waiting for the node after each
+    times = [m.data for m in ticks.messages[first - 1 :]]
+    gaps = [round(b - a, 4) for a, b in zip(times, times[1:])]
+    # a tick reads the newest /clock it has heard: at most one 50 ms chunk after its time
+    assert len(gaps) >= 29 and all(abs(g - 0.1) < 0.051 for g in gaps), gaps
 """
 
 
@@ -150,13 +163,14 @@ def test_lockstep_a_node_slower_than_the_stepping_still_ticks_on_time(tmp_path: 
     """A node that takes 50 ms of CPU for each tick of its 10 Hz sim-time timer, while the test steps
     10 ms chunks in a few ms each: with lockstep the world waits for it after each chunk, and it reads
     the time of every tick (gaps of 0.1 s within a chunk); without (``lockstep=False``, the behaviour
-    before) it fell behind, ticks skipped and its gaps grew to 0.2-0.5 s."""
+    before) it fell behind, ticks skipped and its gaps grew to 0.2-0.5 s. One ``run_for(3.0)`` keeps it in
+    step too (it was one step call, during which nothing waited: ticks skipped)."""
     node = tmp_path / "slow_ticker.py"
     node.write_text(SLOW_NODE)
     (tmp_path / "test_lockstep.py").write_text(LOCKSTEP.format(node=str(node)))
     out, mark = inner_pytest(["test_lockstep.py", "--gazelle-artifacts=none"], tmp_path)
     assert out.returncode == 0, out.stdout[-4000:] + out.stderr[-2000:]
-    assert "1 passed" in out.stdout and "stayed busy" not in out.stdout, out.stdout[-2000:]
+    assert "2 passed" in out.stdout and "stayed busy" not in out.stdout, out.stdout[-2000:]
     assert survivors(mark) == []
 
 

@@ -146,13 +146,12 @@ def _drive(gazelle_sim, ros, pub, make, seconds: float) -> None:
         gazelle_sim.run_for(0.02)
 
 
-# KNOWN FLAKY, NOT UNDERSTOOD: twice in about ten idle fresh clones the flange rose 15.1 and 25.5 mm for 50
-# (never alone); waiting for discovery did not stop it. Beside a CPU hog (stop 49, fresh clone of 3fcf52a) the
-# paused check failed once instead: panda_joint1 moved 6.1 mrad after pause_servo, 0.2 rad/s for ~30 ms, as if
-# the servo node's last jog trajectory were still ahead of the controller. Both fit a servo node whose clock
-# lags the stepped world. One rerun keeps CI meaningful for the rest while it is investigated: a second
-# failure in a row still fails, and the suite prints the first try's failure.
-@pytest.mark.flaky(reruns=1)
+# Was flaky (first tries failed in 3 of 4 fresh clones of stop 49, the paused check reading 6-8 mrad of
+# motion): `run_for(0.3)` was one step call, and the world ran its 0.3 s ahead of the servo node, whose last
+# trajectories then reached the controller after the test had read the arm (measured: trajectories up to
+# 0.51 s of sim time behind the world). run_for now steps in lockstep chunks as run_until does (at most
+# 0.04 s behind, measured beside two CPU hogs). Twice, long ago and before the discovery wait, the flange
+# rose 15.1 and 25.5 mm for 50 in idle runs; the drive report in the message would say why if it comes back.
 def test_a_twist_moves_the_flange_along_it_a_jog_turns_a_joint_and_old_or_paused_commands_do_nothing(
     servo, gazelle_sim, ros
 ) -> None:
