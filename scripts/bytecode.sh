@@ -9,8 +9,8 @@
 # per KEY, Python and machine, the three newest kept, and a second clone unpacks them in seconds instead of
 # compiling 12,000 files (34-54 s on a 2-core machine). An entry that is not ours, fails its checksum or does
 # not unpack is reported and rebuilt, never used. compileall runs after an unpacked entry anyway and
-# recompiles whatever does not match its source (a file uv unpacked again since), so nothing stale is
-# imported.
+# recompiles whatever does not match its source (a file uv unpacked again since; drop_stale_bytecode.py
+# first removes what compileall's mtime-only check would keep), so nothing stale is imported.
 # Prints "cached" when the entry was used, "compiled" otherwise.
 set -euo pipefail
 if [[ $# -ne 3 ]]; then
@@ -27,6 +27,9 @@ ROOT="$CACHE_HOME/bytecode"
 ENTRY="$ROOT/$KEY-$TAG-$(uname -m)"
 
 if cache_usable bytecode "$ROOT" "$ENTRY" compiling && cache_unpack bytecode "$ENTRY" "$SITE" compiling; then
+  # compileall checks a compiled file's source mtime alone (import: mtime and size): drop the ones whose
+  # source changed since, even within the same second, so that it compiles them again
+  "$PY" "$(dirname "${BASH_SOURCE[0]}")/drop_stale_bytecode.py" "$SITE" >/dev/null 2>&1 || true
   # one process: compileall's -j pool spends 17 s on 12,000 files that are up to date, one process 2 s
   "$PY" -m compileall -q "$SITE" >/dev/null 2>&1 || true
   echo "cached"

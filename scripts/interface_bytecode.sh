@@ -18,4 +18,7 @@ for pkg in "$ROOT"/interfaces/*/; do
   pkg="$(basename "$pkg")"
   if [[ -d "$site/$pkg" ]]; then dirs+=("$site/$pkg"); fi
 done
-if ((${#dirs[@]})); then "$PY" -m compileall -q "${dirs[@]}" >/dev/null 2>&1 || true; fi
+if ((${#dirs[@]})); then
+  "$PY" "$ROOT/scripts/drop_stale_bytecode.py" "${dirs[@]}" >/dev/null 2>&1 || true  # see that script
+  "$PY" -m compileall -q "${dirs[@]}" >/dev/null 2>&1 || true
+fi

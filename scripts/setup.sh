@@ -106,7 +106,9 @@ if [[ ! -f "$bytecode" || "$(cat "$bytecode")" != "$want" ]]; then
   fi
   echo "$want" > "$bytecode"
 fi
-"$VENV/bin/python" -m compileall -q -j 0 "$ROOT/gazelle" "$ROOT/launch" "$ROOT/launch_ros" "$ROOT/compat/python" >/dev/null 2>&1 || true
+own=("$ROOT/gazelle" "$ROOT/launch" "$ROOT/launch_ros" "$ROOT/compat/python")
+"$VENV/bin/python" "$ROOT/scripts/drop_stale_bytecode.py" "${own[@]}" >/dev/null 2>&1 || true
+"$VENV/bin/python" -m compileall -q -j 0 "${own[@]}" >/dev/null 2>&1 || true
 
 # 3c. gazelle's compiled per-step loop (gazelle/physics/_native: ros2_control's servo cycles inside MuJoCo's
 #     steps), built once per source and MuJoCo version into the owner-only cache; without a compiler the

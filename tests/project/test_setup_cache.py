@@ -167,7 +167,9 @@ def test_the_wheels_bytecode_is_cached_reused_and_a_corrupt_or_stale_entry_is_no
 
     for pyc in site.rglob("*.pyc"):
         pyc.unlink()
-    mod.write_text("VALUE = 22\n")  # the source changed since the entry was made (uv unpacked it again)
+    was = mod.stat()
+    mod.write_text("VALUE = 22\n")  # the source changed since the entry was made (uv unpacked it again),
+    os.utime(mod, ns=(was.st_atime_ns, was.st_mtime_ns))  # within the same second: only its size tells
     stale = _bytecode(site, cache)
     assert stale.stdout.strip() == "cached" and _pyc_matches(mod)  # compiled again from the source as it is
 
@@ -196,7 +198,8 @@ def test_the_installed_interface_packages_have_current_bytecode() -> None:
 
 def test_the_interface_bytecode_script_compiles_what_is_missing_or_stale(tmp_path: Path) -> None:
     """scripts/interface_bytecode.sh compiles an interface package's module that has no bytecode, and again
-    once its source changed (a venv of its own, with a stand-in tf2_msgs); other packages are left alone."""
+    once its source changed, even within the same second (a venv of its own, with a stand-in tf2_msgs);
+    other packages are left alone."""
     import venv
 
     venv.create(tmp_path / "venv", with_pip=False)
@@ -224,5 +227,10 @@ def test_the_interface_bytecode_script_compiles_what_is_missing_or_stale(tmp_pat
     mod.write_text("VALUE = 11\n")
     os.utime(mod, (1_000_000_000, 1_000_000_000))  # the source changed (a cached tier unpacked again)
     assert not _pyc_matches(mod)
+    subprocess.run(script, check=True, timeout=120)
+    assert _pyc_matches(mod)
+    was = mod.stat()
+    mod.write_text("VALUE = 111\n")  # changed again within the second it was compiled from: the size tells
+    os.utime(mod, ns=(was.st_atime_ns, was.st_mtime_ns))
     subprocess.run(script, check=True, timeout=120)
     assert _pyc_matches(mod)
