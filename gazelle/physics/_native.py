@@ -68,6 +68,7 @@ class ServoGroupStruct(ctypes.Structure):
         # the path check (NULL: none) and what it compares with
         ("tol_p", ctypes.c_void_p),
         ("tol_v", ctypes.c_void_p),
+        ("desp", ctypes.c_void_p),
         ("desv", ctypes.c_void_p),
         # what each cycle records for the controllers (the joints' state before the step) and the output
         ("nrec", ctypes.c_int),

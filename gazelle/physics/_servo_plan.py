@@ -77,6 +77,7 @@ class ServoPlan:
         self.nrec = nrec
         self.target = np.zeros((0, n))
         self.velref = np.zeros((0, n))
+        self.desp: np.ndarray | None = None
         self.desv: np.ndarray | None = None
         self.tol_p: np.ndarray | None = None
         self.tol_v: np.ndarray | None = None
@@ -99,13 +100,15 @@ class ServoPlan:
         target: np.ndarray,
         velref: np.ndarray,
         *,
+        desp: np.ndarray | None = None,
         desv: np.ndarray | None = None,
         tol_p: np.ndarray | None = None,
         tol_v: np.ndarray | None = None,
     ) -> None:
         """Plan ``len(target)`` cycles: per cycle, each servo's target and velocity reference (rows);
         with ``tol_p``/``tol_v`` (per servo, 0: unchecked) the block stops after the first cycle whose
-        state is farther than that from (``target``, ``desv``)."""
+        state is farther than that from (``desp``, ``desv``); ``desp`` None: the targets (a trajectory
+        controller commands the next cycle's set point and checks the path against this cycle's)."""
         # rows are cycles, columns the servos in the actuator group's order; C-contiguous float64, as the
         # native loop indexes them (row k at k * nservo)
         m = len(target)
@@ -113,6 +116,11 @@ class ServoPlan:
         self.velref = np.ascontiguousarray(velref, dtype=np.float64).reshape(m, self.nservo)
         checked = tol_p is not None and tol_v is not None and desv is not None
         self.desv = np.ascontiguousarray(desv, dtype=np.float64).reshape(m, self.nservo) if checked else None
+        self.desp = (
+            np.ascontiguousarray(desp, dtype=np.float64).reshape(m, self.nservo)
+            if checked and desp is not None
+            else None
+        )
         self.tol_p = _f64(tol_p, self.nservo) if checked else None
         self.tol_v = _f64(tol_v, self.nservo) if checked else None
         self.records = np.zeros((m, 3, self.nrec))  # per cycle: positions, velocities, actuator forces
@@ -152,6 +160,7 @@ class ServoPlan:
                 p(self.last),
                 p(self.tol_p),
                 p(self.tol_v),
+                p(self.desp),
                 p(self.desv),
                 self.nrec,
                 p(rq),
@@ -181,6 +190,7 @@ class ServoPlan:
             self.last,
             self.tol_p,
             self.tol_v,
+            self.desp,
             self.desv,
             self.records,
             self.times,
@@ -197,6 +207,7 @@ class ServoPlan:
     def __setstate__(self, state: dict[str, object]) -> None:
         """Restore a plan from a checkpoint: the addresses and the native struct are made again in the rebuilt
         world."""
+        self.desp = None  # a plan pickled before the path check had a position reference of its own
         self.__dict__.update(state)
         self._ids = PerGeneration(self._resolve)
         self._struct = None

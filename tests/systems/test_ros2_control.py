@@ -245,6 +245,25 @@ def test_r6bot_follows_three_waypoints_then_holds_under_gravity(r6bot):
     assert max(abs(a - b) for a, b in zip(_positions(cm), q_end, strict=True)) < 1e-3
 
 
+def test_the_trajectory_controller_commands_the_next_cycles_set_point_and_measures_errors_at_this_one(r6bot):
+    """ros2_controllers 4.17+ (Jazzy's joint_trajectory_controller.cpp, ``update()``): the command is the
+    trajectory sampled one update period ahead (``command_next_`` at ``traj_time_ + update_period_``), the
+    reference and its errors are at the cycle's time (``state_desired_``). At the r6bot's 100 Hz a 0.5 rad/s
+    segment's command leads its reference by 5 mrad (gazelle commanded the reference itself before)."""
+    sim, cm = r6bot
+    jtc = cm.controllers["joint_trajectory_controller"].controller
+    sim.step(100)
+    target = tuple(q + 0.5 for q in _positions(cm))
+    jtc.submit(TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, (TrajectoryPoint(1.0, target),))))
+    sim.step(500)  # mid-segment
+    state = jtc.last_state
+    assert state is not None
+    lead = [o - r for o, r in zip(state.output.positions, state.reference.positions, strict=True)]
+    assert all(abs(d - 0.5 * 0.01) < 1e-5 for d in lead), lead
+    error = [r - f for r, f in zip(state.reference.positions, state.feedback.positions, strict=True)]
+    assert error == pytest.approx(state.error.positions, abs=1e-12)
+
+
 def test_r6bot_aborts_a_goal_that_leaves_its_path_tolerance(r6bot):
     sim, cm = r6bot
     jtc = cm.controllers["joint_trajectory_controller"].controller

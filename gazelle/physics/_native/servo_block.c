@@ -37,6 +37,7 @@ typedef struct {
   double* last;           /* [nservo] time of the servo's last cycle, in and out (NaN: none yet) */
   const double* tol_p;    /* [nservo] path tolerances (0: not checked); NULL: no check */
   const double* tol_v;
+  const double* desp;     /* [nstep * nservo] the position the path check compares with (NULL: target) */
   const double* desv;     /* [nstep * nservo] the velocity the path check compares with */
   int nrec;               /* joints recorded each cycle */
   const int* rec_qadr;    /* [nrec] */
@@ -90,7 +91,8 @@ static int gz_cycle(const mjData* d, gz_servo_group* g) {
     d->ctrl[g->act[j]] = c;
     g->ctrl_out[j] = c;
     if (g->tol_p) {
-      const double ep = target - q;
+      /* a trajectory controller commands the next cycle's set point but checks the path at this one's */
+      const double ep = (g->desp ? g->desp[(size_t)k * g->nservo + j] : target) - q;
       const double ev = g->desv[(size_t)k * g->nservo + j] - d->qvel[g->dadr[j]];
       if ((g->tol_p[j] > 0.0 && fabs(ep) > g->tol_p[j]) || (g->tol_v[j] > 0.0 && fabs(ev) > g->tol_v[j])) left = 1;
     }

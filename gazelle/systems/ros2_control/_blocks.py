@@ -108,7 +108,7 @@ class PlannedBlocks:
         chosen: list[tuple[Any, TrajectoryBlock | None, int]] = []
         targets: dict[str, np.ndarray] = {}
         velocities: dict[str, np.ndarray] = {}
-        tolerances: dict[str, tuple[float, float, np.ndarray]] = {}
+        tolerances: dict[str, tuple[float, float, np.ndarray, np.ndarray]] = {}
         m = len(times)
         for loaded in members:
             c = loaded.controller
@@ -119,16 +119,16 @@ class PlannedBlocks:
                     return False
                 m = min(m, len(blk.times))
                 for k, j in enumerate(c.joints):
-                    targets[j] = blk.des_p[:, k]
+                    targets[j] = blk.cmd_p[:, k]  # the next cycle's set point, as Jazzy's JTC commands
                     if c.cmd_kinds[1:2] == ("velocity",):
-                        velocities[j] = blk.des_v[:, k]
+                        velocities[j] = blk.cmd_v[:, k]
                 if blk.tolerances:
                     tolerances.update(blk.tolerances)
             chosen.append((loaded, blk, loaded.cycle))
         if m < len(times):
             targets = {j: v[:m] for j, v in targets.items()}
             velocities = {j: v[:m] for j, v in velocities.items()}
-            tolerances = {j: (p, v, ref[:m]) for j, (p, v, ref) in tolerances.items()}
+            tolerances = {j: (p, v, rp[:m], rv[:m]) for j, (p, v, rp, rv) in tolerances.items()}
         n = hw.plan_block(times[:m], targets, velocities, tolerances or None)
         if n == 0:
             return False

@@ -85,6 +85,9 @@ class ControllerContext:
     description_joints: tuple[str, ...] | None = None
     """The moving (non-fixed) joints of the robot's URDF, the ``robot_description`` a controller gets; None when
     the robot came from SDF (no URDF to parse, as a controller whose description fails to load)."""
+    manager_rate: int = 100
+    """The controller manager's ``update_rate`` (Hz): a controller without an ``update_rate`` of its own
+    updates at it (ros2_control's ``get_update_rate()``)."""
     remaps: tuple[tuple[str, str], ...] = ()
     """Remapping rules of the controller's node (``from``, ``to``), first match wins: the manager's own
     (``<ros><remapping>``), then the spawner's ``--controller-ros-args``, as ros2_control Jazzy gives them."""

@@ -445,13 +445,14 @@ class SimHardware:
         times: np.ndarray,
         targets: dict[str, np.ndarray],
         velocities: dict[str, np.ndarray],
-        tolerances: dict[str, tuple[float, float, np.ndarray]] | None = None,
+        tolerances: dict[str, tuple[float, float, np.ndarray, np.ndarray]] | None = None,
     ) -> int:
         """Plan the cycles at ``times`` (see :meth:`block_ready`): each position-mode joint's commanded
         ``targets`` (and ``velocities`` where a controller writes the velocity interface too), the others
         held, as :meth:`write` would command them cycle after cycle (the same arithmetic, vectorised).
-        ``tolerances``: per joint, the path tolerance (position, velocity) and the velocity the check
-        compares with. Returns how many cycles were planned: fewer than asked before a target that jumps
+        ``tolerances``: per joint, the path tolerance (position, velocity) and the position and velocity the
+        check compares with per cycle (a trajectory controller's reference at the cycle, where its target is
+        the next cycle's). Returns how many cycles were planned: fewer than asked before a target that jumps
         (a new set point, which :meth:`_drive_position` handles in Python), 0 when none can be."""
         m = len(times)
         joints = self._servo_joints
@@ -471,13 +472,13 @@ class SimHardware:
             cols = [j.slot for j in moving]
             target[:, cols], velref[:, cols] = value, refs
         checked = tolerances is not None
-        desv = tol_p = tol_v = None
+        desp = desv = tol_p = tol_v = None
         if tolerances is not None:
-            desv = np.zeros_like(target)
+            desp, desv = np.zeros_like(target), np.zeros_like(target)
             tol_p, tol_v = np.zeros(len(joints)), np.zeros(len(joints))
             for j in joints:
                 if j.name in tolerances:
-                    tol_p[j.slot], tol_v[j.slot], desv[:, j.slot] = tolerances[j.name]
+                    tol_p[j.slot], tol_v[j.slot], desp[:, j.slot], desv[:, j.slot] = tolerances[j.name]
         for j in joints:
             if j.enabled != "position":
                 self._enable_only(j, "position")
@@ -499,6 +500,7 @@ class SimHardware:
         plan.load(
             target[:m],
             velref[:m],
+            desp=desp[:m] if desp is not None else None,
             desv=desv[:m] if desv is not None else None,
             tol_p=tol_p if checked else None,
             tol_v=tol_v if checked else None,

@@ -492,6 +492,7 @@ class ControllerManager(System):
             add_component=functools.partial(ctx.bus.add_component, ctx.entity.name),
             remove_component=ctx.bus.remove_component,
             remaps=remaps,
+            manager_rate=self.update_rate,
             description_joints=tuple(j.name for j in ctx.entity.model.joints if j.type is not JointType.FIXED)
             if ctx.entity.model.urdf
             else None,

@@ -5,6 +5,10 @@
 * The first segment starts from the joints' state when the trajectory starts. Between points it
   interpolates as ``interpolation_method: splines`` does: linear with positions only, cubic with
   velocities, quintic with accelerations. After the last point it holds the last positions.
+* Each cycle at time ``t`` commands the trajectory's sample at ``t + 1/update_rate`` (the set point the
+  joints should have reached by the next cycle) and measures its errors, path and goal tolerances against
+  the sample at ``t``, as Jazzy's controller does since ros2_controllers 4.17 (``update()``:
+  ``command_next_`` sampled at ``traj_time_ + update_period_``, ``state_desired_`` at ``traj_time_``).
 * Command interfaces ``position`` (+ ``velocity``, + ``acceleration``), ``velocity`` or ``effort``;
   the last two close the loop with ``gains.<joint>.{p,i,d,ff_velocity_scale}``.
 * ``constraints``: ``stopped_velocity_tolerance``, ``goal_time``, ``<joint>.trajectory`` (path) and
@@ -100,8 +104,12 @@ class TrajectoryBlock:
     des_p: np.ndarray
     des_v: np.ndarray
     des_a: np.ndarray
-    tolerances: dict[str, tuple[float, float, np.ndarray]] | None
-    """Per joint with a path tolerance: (position, velocity, the velocity reference per cycle)."""
+    cmd_p: np.ndarray
+    """The positions commanded at each cycle: the samples one controller period later."""
+    cmd_v: np.ndarray
+    """The velocities commanded with them (where the velocity interface is claimed too)."""
+    tolerances: dict[str, tuple[float, float, np.ndarray, np.ndarray]] | None
+    """Per joint with a path tolerance: (position, velocity, the position and velocity reference per cycle)."""
 
 
 @dataclass
@@ -255,6 +263,9 @@ class JointTrajectoryController(Controller):
                 f"{self.name}: {cmd[0]} command interface without gains.<joint>.p: only the feed-forward "
                 "velocity is commanded"
             )
+        rate = self.update_rate or self.ctx.manager_rate
+        # ros2_controllers' update_period_: rclcpp::Duration(0, uint32(1e9 / rate)), whole nanoseconds
+        self._lead = int(1.0e9 / rate) / 1.0e9
         self._integral = [0.0] * len(self.joints)
         self._traj: _Segmented | None = None
         self._incoming: tuple[JointTrajectory, TrajectoryGoal | None] | None = None
@@ -464,12 +475,14 @@ class JointTrajectoryController(Controller):
         traj = self._intake(t, actual)
         if traj is not None:
             des_p, des_v, des_a = traj.sample(t)
+            cmd_p, cmd_v, _cmd_a = traj.sample(t + self._lead)  # where the joints should be next cycle
         else:
             hold = self._hold if self._hold is not None else actual
             des_p, des_v, des_a = list(hold), [0.0] * len(joints), [0.0] * len(joints)
+            cmd_p, cmd_v = des_p, des_v
         err_p = [d - a for d, a in zip(des_p, actual, strict=True)]
         err_v = [d - a for d, a in zip(des_v, actual_v, strict=True)]
-        self._write(commands, des_p, des_v, err_p, err_v, period)
+        self._write(commands, cmd_p, cmd_v, err_p, err_v, period)
         if traj is not None and traj.goal is not None:
             self._check(traj, t, err_p, err_v, actual)
         elif traj is not None and t >= traj.times[-1]:
@@ -495,20 +508,21 @@ class JointTrajectoryController(Controller):
             hold = np.asarray(self._hold, dtype=np.float64)
             des_p = np.repeat(hold[None, :], m, axis=0)
             zeros = np.zeros_like(des_p)
-            return TrajectoryBlock(times, des_p, zeros, zeros.copy(), None)
+            return TrajectoryBlock(times, des_p, zeros, zeros.copy(), des_p, zeros, None)
         if traj.goal is not None:
             m = int(np.searchsorted(times, traj.times[-1], side="left"))
             if m == 0:
                 return None
             times = times[:m]
         des_p, des_v, des_a = traj.sample_many(times)
+        cmd_p, cmd_v, _cmd_a = traj.sample_many(times + self._lead)  # as update(): the next cycle's set point
         tolerances = None
         if traj.goal is not None and traj.path_tolerance is not None:
             tolerances = {
-                j: (tol.position, tol.velocity, des_v[:, k])
+                j: (tol.position, tol.velocity, des_p[:, k], des_v[:, k])
                 for k, (j, tol) in enumerate(zip(self.joints, traj.path_tolerance, strict=True))
             }
-        return TrajectoryBlock(times, des_p, des_v, des_a, tolerances)
+        return TrajectoryBlock(times, des_p, des_v, des_a, cmd_p, cmd_v, tolerances)
 
     def interrupted(self) -> bool:
         """Whether a planned block must end for this controller: a new trajectory came in, or the running
@@ -530,7 +544,7 @@ class JointTrajectoryController(Controller):
         act, act_v = actual[k].tolist(), tuple(actual_v[k].tolist())
         err_p = [d - a for d, a in zip(des_p, act, strict=True)]
         err_v = [d - a for d, a in zip(des_v, act_v, strict=True)]
-        self._write(commands, des_p, des_v, err_p, err_v, 0.0)
+        self._write(commands, block.cmd_p[k].tolist(), block.cmd_v[k].tolist(), err_p, err_v, 0.0)
         traj = self._traj
         if traj is not None and traj.goal is not None and t < traj.times[-1]:
             self._check(traj, t, err_p, err_v, act)
@@ -576,9 +590,10 @@ class JointTrajectoryController(Controller):
         err_v: list[float],
         period: float,
     ) -> None:
-        """The commands of one cycle: with position interfaces, the desired positions (and velocities, when
+        """The commands of one cycle from the set point ``des_p``, ``des_v`` (the next cycle's sample) and the
+        errors at this one: with position interfaces, the set point's positions (and velocities, when
         claimed), which the simulated hardware's servos follow; with velocity or effort interfaces,
-        ``ff_velocity_scale·v_desired + p·e + i·∫e + d·ė`` per joint, as the real controller's PID."""
+        ``ff_velocity_scale·v_next + p·e + i·∫e + d·ė`` per joint, as the real controller's PID."""
         kinds = self.cmd_kinds
         if kinds[0] == "position":
             commands.update(zip(self._out_keys, des_p))
