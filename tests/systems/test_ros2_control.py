@@ -264,6 +264,25 @@ def test_the_trajectory_controller_commands_the_next_cycles_set_point_and_measur
     assert error == pytest.approx(state.error.positions, abs=1e-12)
 
 
+def test_a_position_only_trajectory_controller_has_no_velocity_errors_as_jazzys(r6bot):
+    """Jazzy's compute_error_for_joint computes velocity errors only with a velocity or effort command
+    interface: the r6bot's position-only controller reports them as 0, and a velocity path tolerance of
+    1e-6 rad/s (which any motion leaves) never aborts its goal (gazelle aborted it at once before)."""
+    sim, cm = r6bot
+    jtc = cm.controllers["joint_trajectory_controller"].controller
+    sim.step(100)
+    target = tuple(q + 0.3 for q in _positions(cm))
+    goal = TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, (TrajectoryPoint(1.0, target),)))
+    goal.path_tolerance = segment_tolerances(jtc, [(j, 0.0, 1e-6, 0.0) for j in R6_JOINTS], [], 0.0).path
+    jtc.submit(goal)
+    sim.step(500)
+    state = jtc.last_state
+    assert state is not None and state.error.velocities == (0.0,) * 6
+    assert any(abs(v) > 0.1 for v in state.feedback.velocities)  # moving, at 0.3 rad/s
+    _run(sim, goal)
+    assert goal.status == "succeeded", goal.error_string
+
+
 def test_r6bot_aborts_a_goal_that_leaves_its_path_tolerance(r6bot):
     sim, cm = r6bot
     jtc = cm.controllers["joint_trajectory_controller"].controller

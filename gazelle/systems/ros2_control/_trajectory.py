@@ -278,6 +278,12 @@ class JointTrajectoryController(Controller):
         self._get_pos = values_getter(self._pos_keys)
         self._get_vel = values_getter(self._vel_keys)
         self._write_velocity = self.cmd_kinds[0] == "position" and "velocity" in self.cmd_kinds
+        # compute_error_for_joint (Jazzy): velocity errors only with a velocity state interface and a velocity
+        # or effort command interface; otherwise they stay 0, so a position-only controller's velocity
+        # tolerances (stopped_velocity_tolerance among them) never fail
+        self._velocity_error = "velocity" in self.state_kinds and (
+            "velocity" in self.cmd_kinds or "effort" in self.cmd_kinds
+        )
         self.subscribe("~/joint_trajectory", MsgType.JOINT_TRAJECTORY, lambda m: self._queue(m, None))
         self._state_pub = self.advertise("~/controller_state", MsgType.TRAJECTORY_CONTROLLER_STATE)
         self.action_name = self.topic("~/follow_joint_trajectory")
@@ -481,7 +487,7 @@ class JointTrajectoryController(Controller):
             des_p, des_v, des_a = list(hold), [0.0] * len(joints), [0.0] * len(joints)
             cmd_p, cmd_v = des_p, des_v
         err_p = [d - a for d, a in zip(des_p, actual, strict=True)]
-        err_v = [d - a for d, a in zip(des_v, actual_v, strict=True)]
+        err_v = self._velocity_errors(des_v, actual_v)
         self._write(commands, cmd_p, cmd_v, err_p, err_v, period)
         if traj is not None and traj.goal is not None:
             self._check(traj, t, err_p, err_v, actual)
@@ -519,7 +525,7 @@ class JointTrajectoryController(Controller):
         tolerances = None
         if traj.goal is not None and traj.path_tolerance is not None:
             tolerances = {
-                j: (tol.position, tol.velocity, des_p[:, k], des_v[:, k])
+                j: (tol.position, tol.velocity if self._velocity_error else 0.0, des_p[:, k], des_v[:, k])
                 for k, (j, tol) in enumerate(zip(self.joints, traj.path_tolerance, strict=True))
             }
         return TrajectoryBlock(times, des_p, des_v, des_a, cmd_p, cmd_v, tolerances)
@@ -543,7 +549,7 @@ class JointTrajectoryController(Controller):
         des_p, des_v, des_a = block.des_p[k].tolist(), block.des_v[k].tolist(), block.des_a[k].tolist()
         act, act_v = actual[k].tolist(), tuple(actual_v[k].tolist())
         err_p = [d - a for d, a in zip(des_p, act, strict=True)]
-        err_v = [d - a for d, a in zip(des_v, act_v, strict=True)]
+        err_v = self._velocity_errors(des_v, act_v)
         self._write(commands, block.cmd_p[k].tolist(), block.cmd_v[k].tolist(), err_p, err_v, 0.0)
         traj = self._traj
         if traj is not None and traj.goal is not None and t < traj.times[-1]:
@@ -605,6 +611,13 @@ class JointTrajectoryController(Controller):
             self._integral[k] += err_p[k] * period
             u = ff * des_v[k] + p * err_p[k] + i * self._integral[k] + d * err_v[k]
             commands[self._out_keys[k]] = u
+
+    def _velocity_errors(self, des_v: Sequence[float], actual_v: Sequence[float]) -> list[float]:
+        """Desired minus measured velocities, or zeros where Jazzy's controller does not compute them (see
+        ``_velocity_error``)."""
+        if not self._velocity_error:
+            return [0.0] * len(des_v)
+        return [d - a for d, a in zip(des_v, actual_v, strict=True)]
 
     def _check(self, traj: _Segmented, t: float, err_p: list[float], err_v: list[float], actual: list[float]) -> None:
         """The goal's tolerances at cycle time ``t``: before the end, the path tolerance (a violation aborts with
