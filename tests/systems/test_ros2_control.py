@@ -237,6 +237,7 @@ def test_r6bot_follows_three_waypoints_then_holds_under_gravity(r6bot):
         if jtc.last_state is not None:
             worst = max(worst, *(abs(e) for e in jtc.last_state.error.positions))
     assert goal.status == "succeeded", goal.error_string
+    assert goal.error_string == "Goal successfully reached!"  # Jazzy's
     assert sim.world.time < 0.3 + 3.0 + 1.0  # within its goal_time of 1 s
     q_end = _positions(cm)
     assert max(abs(a - b) for a, b in zip(q_end, final, strict=True)) < 1e-3
@@ -283,7 +284,8 @@ def test_a_position_only_trajectory_controller_has_no_velocity_errors_as_jazzys(
     assert goal.status == "succeeded", goal.error_string
 
 
-def test_r6bot_aborts_a_goal_that_leaves_its_path_tolerance(r6bot):
+def test_r6bot_aborts_a_goal_that_leaves_its_path_tolerance(r6bot, caplog):
+    """With Jazzy's result string and log lines (joint_trajectory_controller.cpp ``update()``, tolerances.hpp)."""
     sim, cm = r6bot
     jtc = cm.controllers["joint_trajectory_controller"].controller
     sim.step(100)
@@ -292,6 +294,10 @@ def test_r6bot_aborts_a_goal_that_leaves_its_path_tolerance(r6bot):
     jtc.submit(goal)
     _run(sim, goal)
     assert goal.status == "aborted" and goal.error_code == -4  # PATH_TOLERANCE_VIOLATED
+    assert goal.error_string == "Aborted due to path tolerance violation"
+    assert "State tolerances failed for joint 0 (joint_1):" in caplog.text
+    assert "Position Error: " in caplog.text and "Position Tolerance: 0.000100" in caplog.text
+    assert "Aborted due to state tolerance violation" in caplog.text
     sim.step(1000)  # it was moving fast: it comes to rest and holds there
     q = _positions(cm)
     sim.step(1000)
@@ -324,6 +330,26 @@ def test_a_goals_tolerances_override_the_controllers_as_jazzys_trajectory_contro
         with caplog.at_level(logging.ERROR):
             assert segment_tolerances(jtc, path, goal, goal_time) == default
         assert any(said in r.getMessage() and "Using default tolerances" in r.getMessage() for r in caplog.records)
+
+
+def test_a_goal_outside_its_goal_tolerance_after_goal_time_aborts_with_jazzys_string(r6bot, caplog):
+    """A goal tolerance of 1e-9 rad no servo meets, and a goal_time_tolerance of 0.1 s: aborted
+    GOAL_TOLERANCE_VIOLATED as Jazzy's update() words it, the seconds past the end in std::to_string's six
+    decimals, each joint outside logged as check_state_tolerance_per_joint does."""
+    sim, cm = r6bot
+    jtc = cm.controllers["joint_trajectory_controller"].controller
+    sim.step(100)
+    target = tuple(q + 0.2 for q in _positions(cm))
+    goal = TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, (TrajectoryPoint(0.5, target),)))
+    tolerances = segment_tolerances(jtc, [], [(j, 1e-9, 0.0, 0.0) for j in R6_JOINTS], 0.1)
+    goal.goal_tolerance, goal.goal_time_tolerance = tolerances.goal, tolerances.goal_time
+    jtc.submit(goal)
+    _run(sim, goal)
+    assert (goal.status, goal.error_code) == ("aborted", -5)  # GOAL_TOLERANCE_VIOLATED
+    seconds = float(goal.error_string.removeprefix("Aborted due to goal_time_tolerance exceeding by ").split()[0])
+    assert goal.error_string == f"Aborted due to goal_time_tolerance exceeding by {seconds:f} seconds"
+    assert 0.1 <= seconds <= 0.11  # the first 10 ms cycle past 0.1 s (0.1 and a rounding)
+    assert "Position Tolerance: 0.000000" in caplog.text  # %f of 1e-9, as upstream prints it
 
 
 def test_r6bot_refuses_goals_it_cannot_run(r6bot):

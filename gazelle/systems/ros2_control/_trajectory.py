@@ -623,40 +623,52 @@ class JointTrajectoryController(Controller):
         """The goal's tolerances at cycle time ``t``: before the end, the path tolerance (a violation aborts with
         PATH_TOLERANCE_VIOLATED and holds where the joints are); after it, success once every joint is within its
         goal tolerance, or GOAL_TOLERANCE_VIOLATED once ``goal_time`` (the goal's, else the controller's) has
-        passed with some joint outside (0: wait for ever, as Jazzy does)."""
+        passed with some joint outside (0: wait for ever, as Jazzy does). The result strings and log lines are
+        Jazzy's (``update()``; the per-joint lines are tolerances.hpp's ``check_state_tolerance_per_joint``)."""
         goal = traj.goal
         assert goal is not None
         end = traj.times[-1]
         if t < end:
-            for k, tol in enumerate(traj.path_tolerance or ()):
-                if _violates(tol, err_p[k], err_v[k]):
-                    j = self.joints[k]
-                    self._traj, self._hold = None, list(actual)
-                    goal.finish(
-                        GoalState.ABORTED,
-                        TrajectoryResult.PATH_TOLERANCE_VIOLATED,
-                        f"joint '{j}' left the path tolerance: position error {err_p[k]:.4g} "
-                        f"(tolerance {tol.position:g}), velocity error {err_v[k]:.4g} (tolerance {tol.velocity:g})",
-                    )
-                    return
+            left = [k for k, tol in enumerate(traj.path_tolerance or ()) if _violates(tol, err_p[k], err_v[k])]
+            if left:
+                assert traj.path_tolerance is not None
+                self._log_tolerance_failures(left, traj.path_tolerance, err_p, err_v)
+                self.log.warning("Aborted due to state tolerance violation")
+                self._traj, self._hold = None, list(actual)
+                goal.finish(
+                    GoalState.ABORTED,
+                    TrajectoryResult.PATH_TOLERANCE_VIOLATED,
+                    "Aborted due to path tolerance violation",
+                )
             return
-        outside = [
-            j
-            for k, j in enumerate(self.joints)
-            if _violates(goal.goal_tolerance.get(j, self.goal_tol[j]), err_p[k], err_v[k])
-        ]
+        tolerances = [goal.goal_tolerance.get(j, self.goal_tol[j]) for j in self.joints]
+        outside = [k for k, tol in enumerate(tolerances) if _violates(tol, err_p[k], err_v[k])]
         if not outside:
             self._traj = None
-            goal.finish(GoalState.SUCCEEDED, TrajectoryResult.SUCCESSFUL, "")
+            self.log.info("Goal reached, success!")
+            goal.finish(GoalState.SUCCEEDED, TrajectoryResult.SUCCESSFUL, "Goal successfully reached!")
             return
         allowed = self.goal_time if goal.goal_time_tolerance is None else goal.goal_time_tolerance
-        if allowed > 0 and t > end + allowed:
+        if allowed > 0 and t - end > allowed:
+            self._log_tolerance_failures(outside, tolerances, err_p, err_v)
+            # std::to_string(double): six decimals
+            text = f"Aborted due to goal_time_tolerance exceeding by {t - end:f} seconds"
+            self.log.warning(text)
             self._traj, self._hold = None, list(actual)
-            goal.finish(
-                GoalState.ABORTED,
-                TrajectoryResult.GOAL_TOLERANCE_VIOLATED,
-                f"joints {outside} were not within the goal tolerance {allowed:g} s after the trajectory's end",
-            )
+            goal.finish(GoalState.ABORTED, TrajectoryResult.GOAL_TOLERANCE_VIOLATED, text)
+
+    def _log_tolerance_failures(
+        self, joints: list[int], tolerances: Sequence[Tolerance], err_p: list[float], err_v: list[float]
+    ) -> None:
+        """check_state_tolerance_per_joint's lines (show_errors): the joint's index, then each error over its
+        tolerance; gazelle adds the joint's name, which upstream's index leaves to the reader."""
+        for k in joints:
+            tol = tolerances[k]
+            self.log.error(f"State tolerances failed for joint {k} ({self.joints[k]}):")
+            if tol.position > 0 and abs(err_p[k]) > tol.position:
+                self.log.error(f"Position Error: {err_p[k]:f}, Position Tolerance: {tol.position:f}")
+            if tol.velocity > 0 and abs(err_v[k]) > tol.velocity:
+                self.log.error(f"Velocity Error: {err_v[k]:f}, Velocity Tolerance: {tol.velocity:f}")
 
 
 def _preempted_by(goal: TrajectoryGoal | None) -> str:
