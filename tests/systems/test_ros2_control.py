@@ -195,18 +195,22 @@ def test_a_forward_command_controller_drives_the_wheels_and_switches_with_the_di
 
 
 # --------------------------------------------------------------------------- r6bot and JTC
-@pytest.fixture
-def r6bot(monkeypatch):
-    monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(R6BOT))
+def _r6bot(yaml_path) -> tuple[Simulation, ControllerManager]:
     sim = new_simulation()
     entity = sim.spawn(load(R6BOT_URDF).model, name="r6bot")
     cm = _manager(entity)
-    cm.files.append(load_params(R6BOT_YAML))
+    cm.files.append(load_params(yaml_path))
     for n in ("joint_state_broadcaster", "joint_trajectory_controller"):
         cm.load_controller(n)
         cm.configure_controller(n)
     cm.switch_controller(["joint_state_broadcaster", "joint_trajectory_controller"], [])
     return sim, cm
+
+
+@pytest.fixture
+def r6bot(monkeypatch):
+    monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(R6BOT))
+    return _r6bot(R6BOT_YAML)
 
 
 def _positions(cm: ControllerManager) -> list[float]:
@@ -282,6 +286,57 @@ def test_a_position_only_trajectory_controller_has_no_velocity_errors_as_jazzys(
     assert any(abs(v) > 0.1 for v in state.feedback.velocities)  # moving, at 0.3 rad/s
     _run(sim, goal)
     assert goal.status == "succeeded", goal.error_string
+
+
+def test_a_trajectory_whose_first_point_is_past_is_sampled_between_its_own_points(r6bot):
+    """Jazzy's Trajectory::sample: once the sample time is past the first point (a header stamp in the past,
+    as MoveIt Servo's trajectories have), the reference is interpolated between the trajectory's own points;
+    the measured state only starts a first segment while the first point is ahead. Stamped 0.5 s back with
+    points at 0 s (+0.2 rad) and 1 s (+0.4 rad), the first cycle's reference is +0.3 rad (gazelle ran a
+    segment from the measured state to the next point ahead, so the reference started where the arm was)."""
+    sim, cm = r6bot
+    jtc = cm.controllers["joint_trajectory_controller"].controller
+    sim.step(1000)  # (a stamp must be > 0: 0 means "now")
+    q0 = _positions(cm)
+    points = (TrajectoryPoint(0.0, tuple(q + 0.2 for q in q0)), TrajectoryPoint(1.0, tuple(q + 0.4 for q in q0)))
+    jtc.submit(TrajectoryGoal(JointTrajectory(sim.world.time - 0.5, R6_JOINTS, points)))
+    sim.step(10)  # one 100 Hz cycle
+    state = jtc.last_state
+    assert state is not None
+    into = state.stamp_sec - (sim.world.time - 0.01 - 0.5)  # how far into the trajectory that cycle was
+    want = [q + 0.2 + 0.2 * into for q in q0]
+    assert state.reference.positions == pytest.approx(want, abs=1e-6)
+
+
+@pytest.mark.parametrize("from_desired", [False, True])
+def test_interpolate_from_desired_state_starts_a_new_trajectory_from_the_last_command(
+    from_desired, tmp_path, monkeypatch
+):
+    """Jazzy's ``interpolate_from_desired_state`` (and the deprecated ``open_loop_control``): a new
+    trajectory's first segment starts from the state last commanded instead of the measured one. Replacing
+    a trajectory while the arm moves at 0.3 rad/s: the first cycle's reference is the measured position
+    without it (error 0), and where the arm was commanded to be with it (ahead of it by the servo's lag,
+    ~0.1 mrad); gazelle read the parameter and did nothing with it."""
+    yaml_path = tmp_path / "r6bot.yaml"
+    extra = "    interpolate_from_desired_state: true\n" if from_desired else ""
+    yaml_path.write_text(R6BOT_YAML.read_text().replace("    joints: [joint_1", extra + "    joints: [joint_1", 1))
+    monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(R6BOT))
+    sim, cm = _r6bot(yaml_path)
+    jtc = cm.controllers["joint_trajectory_controller"].controller
+    assert isinstance(jtc, JointTrajectoryController) and jtc.from_desired is from_desired
+    sim.step(100)
+    q0 = _positions(cm)
+    jtc.submit(TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, (TrajectoryPoint(1.0, tuple(q + 0.3 for q in q0)),))))
+    sim.step(500)
+    q1 = _positions(cm)
+    jtc.submit(TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, (TrajectoryPoint(1.0, tuple(q + 0.3 for q in q1)),))))
+    sim.step(10)  # the new trajectory's first cycle
+    state = jtc.last_state
+    assert state is not None
+    if from_desired:
+        assert min(state.error.positions) > 5e-5, state.error.positions  # ~0.1 mrad: the servo's lag
+    else:
+        assert max(abs(e) for e in state.error.positions) < 1e-12, state.error.positions
 
 
 def test_r6bot_aborts_a_goal_that_leaves_its_path_tolerance(r6bot, caplog):

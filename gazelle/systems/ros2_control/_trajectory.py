@@ -241,6 +241,13 @@ class JointTrajectoryController(Controller):
             raise ControlError(f"controller '{self.name}': state_interfaces must include 'position'")
         self.allow_partial = self.param("allow_partial_joints_goal", False, bool)
         self.open_loop = self.param("open_loop_control", False, bool)
+        if self.open_loop:
+            self.log.warning(  # Jazzy's on_configure
+                "[deprecated] 'open_loop_control' parameter is deprecated. Instead, set the feedback gains "
+                "to zero and use 'interpolate_from_desired_state' parameter"
+            )
+        # a new trajectory's first segment starts from the last commanded state instead of the measured one
+        self.from_desired = self.param("interpolate_from_desired_state", False, bool) or self.open_loop
         self.allow_nonzero_end_velocity = self.param("allow_nonzero_velocity_at_trajectory_end", False, bool)
         self.allow_integration = self.param("allow_integration_in_goal_trajectories", False, bool)
         self.stopped_velocity = self.param("constraints.stopped_velocity_tolerance", 0.01, float)
@@ -272,6 +279,8 @@ class JointTrajectoryController(Controller):
         self._lock = threading.Lock()
         self._hold: list[float] | None = None
         self._last: tuple | None = None
+        self._commanded: tuple[float, list[float], list[float]] | None = None
+        """(cycle time, positions, velocities) last commanded: Jazzy's last_commanded_time_/_state_."""
         self._pos_keys = [f"{j}/position" for j in self.joints]
         self._vel_keys = [f"{j}/velocity" for j in self.joints]
         self._out_keys = [f"{j}/{self.cmd_kinds[0]}" for j in self.joints]
@@ -404,6 +413,7 @@ class JointTrajectoryController(Controller):
         if missing:
             raise ControlError(f"controller '{self.name}': the hardware has no state interface {', '.join(missing)}")
         self._traj = None
+        self._commanded = None
         self._hold = [states[f"{j}/position"] for j in self.joints]
         self._integral = [0.0] * len(self.joints)
         if not all(k in states for k in self._vel_keys):
@@ -419,11 +429,23 @@ class JointTrajectoryController(Controller):
             )
         self._traj = None
 
-    def _start(self, traj: JointTrajectory, goal: TrajectoryGoal | None, t: float, actual: list[float]) -> None:
-        """Start ``traj`` at cycle time ``t``: its first segment runs from the joints' actual positions (``actual``)
-        to its first point; times are absolute (the header stamp, or now when it is 0), and points already past
-        are dropped. A joint the trajectory leaves out (a partial goal) keeps the position it was held at. An
-        empty trajectory stops the one running and holds where the joints are."""
+    def _start(
+        self,
+        traj: JointTrajectory,
+        goal: TrajectoryGoal | None,
+        t: float,
+        actual: list[float],
+        actual_v: Sequence[float],
+    ) -> None:
+        """Start ``traj`` at cycle time ``t``, as Jazzy's Trajectory does (trajectory.cpp
+        ``set_point_before_trajectory_msg`` and ``sample``): times are absolute (the header stamp, or now when
+        it is 0); while the first point is ahead, a first segment runs to it from the state before the
+        trajectory: the joints' measured positions and velocities at ``t``, or, with
+        ``interpolate_from_desired_state`` (or the deprecated ``open_loop_control``), the state last commanded
+        and its cycle's time. A trajectory whose first point is already past (a stamp in the past: MoveIt
+        Servo's trajectories start ``max_expected_latency`` back) is sampled between its own points, the
+        measured state unused. A joint the trajectory leaves out (a partial goal) keeps the position it was
+        held at. An empty trajectory stops the one running and holds where the joints are."""
         old = self._traj
         if old is not None and old.goal is not None and old.goal is not goal:
             old.goal.finish(GoalState.ABORTED, TrajectoryResult.INVALID_GOAL, _preempted_by(goal))
@@ -436,14 +458,21 @@ class JointTrajectoryController(Controller):
         start = traj.stamp_sec if traj.stamp_sec > 0 else t
         index = {j: i for i, j in enumerate(traj.joint_names)}
         base = self._hold if self._hold is not None else actual
-        times, pos, vel, acc = [t], [list(actual)], [[0.0] * len(self.joints)], [[0.0] * len(self.joints)]
+        n = len(self.joints)
+        if self.from_desired and self._commanded is not None:
+            before_t, before_p, before_v = self._commanded
+        else:
+            before_t, before_p, before_v = t, list(actual), list(actual_v)
+        times: list[float] = []
+        pos: list[list[float]] = []
+        vel: list[list[float]] = []
+        acc: list[list[float]] = []
+        if start + traj.points[0].time_from_start_sec > before_t:
+            times, pos, vel, acc = [before_t], [list(before_p)], [list(before_v)], [[0.0] * n]
         have_vel = all(p.velocities for p in traj.points)
         have_acc = have_vel and all(p.accelerations for p in traj.points)
         for p in traj.points:
-            tt = start + p.time_from_start_sec
-            if tt <= times[-1]:
-                continue  # points already past (a stamp in the past)
-            times.append(tt)
+            times.append(start + p.time_from_start_sec)  # strictly increasing: validate() saw to it
             pos.append([p.positions[index[j]] if j in index else base[k] for k, j in enumerate(self.joints)])
             vel.append([p.velocities[index[j]] if j in index and have_vel else 0.0 for j in self.joints])
             acc.append([p.accelerations[index[j]] if j in index and have_acc else 0.0 for j in self.joints])
@@ -457,13 +486,13 @@ class JointTrajectoryController(Controller):
         if goal is not None:
             goal.status = GoalState.EXECUTING
 
-    def _intake(self, t: float, actual: list[float]) -> _Segmented | None:
+    def _intake(self, t: float, actual: list[float], actual_v: Sequence[float]) -> _Segmented | None:
         """Start a trajectory that came in since the last cycle; stop one canceled from outside."""
         if self._incoming is not None:  # (a plain read first: no lock taken on the usual cycle)
             with self._lock:
                 incoming, self._incoming = self._incoming, None
             if incoming is not None:
-                self._start(incoming[0], incoming[1], t, actual)
+                self._start(incoming[0], incoming[1], t, actual, actual_v)
         traj = self._traj
         if traj is not None and traj.goal is not None and traj.goal.done.is_set():
             # canceled (or ended) from outside: hold where the joints are
@@ -478,7 +507,7 @@ class JointTrajectoryController(Controller):
         joints = self.joints
         actual = list(self._get_pos(states))
         actual_v = self._get_vel(states)
-        traj = self._intake(t, actual)
+        traj = self._intake(t, actual, actual_v)
         if traj is not None:
             des_p, des_v, des_a = traj.sample(t)
             cmd_p, cmd_v, _cmd_a = traj.sample(t + self._lead)  # where the joints should be next cycle
@@ -489,6 +518,7 @@ class JointTrajectoryController(Controller):
         err_p = [d - a for d, a in zip(des_p, actual, strict=True)]
         err_v = self._velocity_errors(des_v, actual_v)
         self._write(commands, cmd_p, cmd_v, err_p, err_v, period)
+        self._commanded = (t, list(cmd_p), list(cmd_v))
         if traj is not None and traj.goal is not None:
             self._check(traj, t, err_p, err_v, actual)
         elif traj is not None and t >= traj.times[-1]:
@@ -506,7 +536,7 @@ class JointTrajectoryController(Controller):
         cycle). A goal's block ends before its trajectory's end."""
         if self.cmd_kinds[0] != "position" or self._state_pub.wanted:
             return None
-        traj = self._intake(float(times[0]), list(self._get_pos(states)))
+        traj = self._intake(float(times[0]), list(self._get_pos(states)), self._get_vel(states))
         m = len(times)
         if traj is None:
             if self._hold is None:
@@ -550,7 +580,9 @@ class JointTrajectoryController(Controller):
         act, act_v = actual[k].tolist(), tuple(actual_v[k].tolist())
         err_p = [d - a for d, a in zip(des_p, act, strict=True)]
         err_v = self._velocity_errors(des_v, act_v)
-        self._write(commands, block.cmd_p[k].tolist(), block.cmd_v[k].tolist(), err_p, err_v, 0.0)
+        cmd_p, cmd_v = block.cmd_p[k].tolist(), block.cmd_v[k].tolist()
+        self._write(commands, cmd_p, cmd_v, err_p, err_v, 0.0)
+        self._commanded = (t, cmd_p, cmd_v)
         traj = self._traj
         if traj is not None and traj.goal is not None and t < traj.times[-1]:
             self._check(traj, t, err_p, err_v, act)
