@@ -329,7 +329,8 @@ def test_interpolate_from_desired_state_starts_a_new_trajectory_from_the_last_co
     jtc.submit(TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, (TrajectoryPoint(1.0, tuple(q + 0.3 for q in q0)),))))
     sim.step(500)
     q1 = _positions(cm)
-    jtc.submit(TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, (TrajectoryPoint(1.0, tuple(q + 0.3 for q in q1)),))))
+    stop = TrajectoryPoint(1.0, tuple(q + 0.3 for q in q1), (0.0,) * 6)  # with velocities: a cubic
+    jtc.submit(TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, (stop,))))
     sim.step(10)  # the new trajectory's first cycle
     state = jtc.last_state
     assert state is not None
@@ -337,6 +338,9 @@ def test_interpolate_from_desired_state_starts_a_new_trajectory_from_the_last_co
         assert min(state.error.positions) > 5e-5, state.error.positions  # ~0.1 mrad: the servo's lag
     else:
         assert max(abs(e) for e in state.error.positions) < 1e-12, state.error.positions
+        # the segment starts at the measured velocity (about 0.3 rad/s), not at rest
+        assert state.reference.velocities == pytest.approx(state.feedback.velocities, abs=1e-12)
+        assert min(state.feedback.velocities) > 0.1  # (0.18-0.25 rad/s measured: the servo oscillates)
 
 
 def test_r6bot_aborts_a_goal_that_leaves_its_path_tolerance(r6bot, caplog):

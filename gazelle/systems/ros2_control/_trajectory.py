@@ -126,12 +126,12 @@ class _Segmented:
 
     def sample(self, t: float) -> tuple[list[float], list[float], list[float]]:
         """The desired (positions, velocities, accelerations) at sim time ``t``: before the first point, its
-        position at rest; after the last, the last position at rest; between two points, the segment's
+        position at rest (at it, the first segment's start: the state before the trajectory, moving as it was); after the last, the last position at rest; between two points, the segment's
         polynomial: linear with positions only, cubic with velocities, quintic with accelerations
         (ros2_controllers' spline interpolation)."""
         times = self.times
         n = len(self.pos[0])
-        if t <= times[0]:
+        if t < times[0]:
             return list(self.pos[0]), [0.0] * n, [0.0] * n
         if t >= times[-1]:
             return list(self.pos[-1]), [0.0] * n, [0.0] * n
@@ -177,7 +177,7 @@ class _Segmented:
             else:
                 A = np.asarray(self.acc, dtype=np.float64)
                 pos, vel, acc = _quintic(p0, P[k + 1], V[k], V[k + 1], A[k], A[k + 1], T, s)
-        for rows, row in ((t <= times[0], P[0]), (t >= times[-1], P[-1])):
+        for rows, row in ((t < times[0], P[0]), (t >= times[-1], P[-1])):
             if rows.any():
                 pos[rows], vel[rows], acc[rows] = row, 0.0, 0.0
         return pos, vel, acc
