@@ -126,9 +126,10 @@ class _Segmented:
 
     def sample(self, t: float) -> tuple[list[float], list[float], list[float]]:
         """The desired (positions, velocities, accelerations) at sim time ``t``: before the first point, its
-        position at rest (at it, the first segment's start: the state before the trajectory, moving as it was); after the last, the last position at rest; between two points, the segment's
-        polynomial: linear with positions only, cubic with velocities, quintic with accelerations
-        (ros2_controllers' spline interpolation)."""
+        position at rest (at it, the first segment's start: the state before the trajectory, moving as it
+        was); after the last, the last position at rest; between two points, the segment's polynomial:
+        linear with positions only, cubic with velocities, quintic with accelerations (ros2_controllers'
+        spline interpolation)."""
         times = self.times
         n = len(self.pos[0])
         if t < times[0]:
