@@ -2,6 +2,18 @@
 
 It has its own rclpy context, so a test (or the code it tests) may use rclpy's default context as it
 likes; helpers wait for conditions with timeouts and never sleep a fixed time.
+
+Two clocks are in play, and each wait says which it counts: **wall-clock** timeouts (``wait``,
+``wait_for_message``, ``call``, ``wait_until``) only bound how long a test may hang on a machine that is
+slow or a graph that never answers; **sim time** (``sim_time``, the newest ``/clock`` heard) is what a
+test's assertions should be about, and what ``gazelle_sim.run_for``/``run_until`` move. A typical test::
+
+    def test_the_robot_drives(gazelle_sim, ros):
+        odom = ros.subscribe("/odom", Odometry)
+        cmd = ros.publisher("/cmd_vel", TwistStamped)
+        cmd.publish(forward)
+        gazelle_sim.run_for(2.0)            # sim seconds, in lockstep with the nodes started
+        assert odom.last.pose.pose.position.x > 0.5
 """
 
 from __future__ import annotations
@@ -43,7 +55,12 @@ def poll_until(predicate: Callable[[], Any], timeout: float, what: str, pause: C
 
 class MessageLog:
     """The messages one subscription received, in order, with the sim time (from /clock) at which each
-    arrived at the test."""
+    arrived at the test.
+
+    ``messages`` and ``sim_times`` are parallel lists, appended on the node's thread; ``len(log)``, ``last``
+    and :meth:`wait` take the log's lock, so they are safe to call while messages keep coming. The arrival
+    time is when the test heard the message, not its header stamp: a message published at sim time t
+    arrives at t or one /clock tick (10 ms) later."""
 
     def __init__(self, topic: str) -> None:
         """Every message heard on ``topic`` since the subscription began, with the sim time at which it was heard."""
@@ -70,7 +87,21 @@ class MessageLog:
             return self.messages[-1] if self.messages else None
 
     def wait(self, count: int = 1, timeout: float = 10.0) -> Any:
-        """Wait (wall-clock ``timeout``) until ``count`` messages have arrived; returns the newest."""
+        """Wait until ``count`` messages in all have arrived (counted since the subscription began, not since
+        this call).
+
+        Args:
+            count: how many messages the log must hold.
+            timeout: wall-clock seconds; sim time does not move while this waits, so a message the
+                simulation has still to produce must be stepped for first (``run_until(lambda: len(log) >=
+                n, ...)`` does both).
+
+        Returns:
+            The newest message.
+
+        Raises:
+            TestTimeout: fewer than ``count`` within ``timeout``, naming the topic and how many came.
+        """
         deadline = time.monotonic() + timeout
         with self._cond:
             while len(self.messages) < count:
@@ -99,7 +130,12 @@ class RosTestNode:
 
     def __init__(self, domain_id: int, name: str = "gazelle_test") -> None:
         """A node of the test's own on ``domain_id``, in an rclpy context of its own (not the default one a user's
-        code may also init), spun on a thread, following /clock for the simulation's time."""
+        code may also init), spun on a thread, following /clock for the simulation's time.
+
+        Args:
+            domain_id: the ROS domain of the test's simulation (each test run has one of its own).
+            name: the node's name in the graph (what ``ros2 node list`` shows).
+        """
         self.context = Context()
         rclpy.init(context=self.context, domain_id=domain_id)
         self.node = rclpy.create_node(name, context=self.context, start_parameter_services=False)
@@ -143,7 +179,19 @@ class RosTestNode:
             self._sim_time = 0.0
 
     def wait_for_sim_time(self, at_least: float, timeout: float = 30.0) -> float:
-        """Wait until /clock has reached ``at_least`` (wall-clock ``timeout``); returns it."""
+        """Wait until the /clock the test hears has reached ``at_least`` (it does not step the world: use
+        ``gazelle_sim.run_for`` for that; this waits for a running server, or for the last tick of a step).
+
+        Args:
+            at_least: sim seconds.
+            timeout: wall-clock seconds.
+
+        Returns:
+            The sim time heard.
+
+        Raises:
+            TestTimeout: /clock did not get there in time (the message says where it was).
+        """
         deadline = time.monotonic() + timeout
         with self._clock_cond:
             while self._sim_time < at_least - 1e-9:
@@ -157,29 +205,67 @@ class RosTestNode:
 
     # ------------------------------------------------------------------ topics
     def subscribe(self, topic: str, msg_type: Any, *, reliable: bool = True, latched: bool = False) -> MessageLog:
-        """Keep every message of ``topic`` from now on (depth 1000; best effort matches any publisher,
-        reliable only reliable ones: pass ``reliable=False`` for sensor data published best effort)."""
+        """Keep every message of ``topic`` from now on.
+
+        Args:
+            topic: the topic's full name (the test node is in the root namespace).
+            msg_type: the message class, e.g. ``nav_msgs.msg.Odometry``.
+            reliable: a reliable reader matches only reliable writers, a best-effort one every writer (DDS's
+                request-offered rule): pass False for a best-effort publisher (ros2_control's
+                imu_sensor_broadcaster, many drivers' sensor data); gazelle's own sensors publish reliably.
+            latched: transient local, to get what a latched publisher (``/robot_description``, a map) sent
+                before the test subscribed.
+
+        Returns:
+            A :class:`MessageLog` of depth 1000: a busy test does not lose messages while it is not looking.
+        """
         log = MessageLog(topic)
         self.node.create_subscription(msg_type, topic, lambda m: log._add(m, self.sim_time), qos_for(reliable, latched))
         return log
 
     def wait_for_message(self, topic: str, msg_type: Any, timeout: float = 10.0, **qos: bool) -> Any:
-        """The first message on ``topic`` (from now), within wall-clock ``timeout``."""
+        """The first message on ``topic`` published from now on (or the last one latched, with
+        ``latched=True``), within wall-clock ``timeout``; ``qos`` as :meth:`subscribe`'s. It waits without
+        stepping: for a message the simulation still has to produce, subscribe and ``run_until`` instead.
+
+        Raises:
+            TestTimeout: none came in time.
+        """
         return self.subscribe(topic, msg_type, **qos).wait(1, timeout)
 
     def publisher(self, topic: str, msg_type: Any, *, latched: bool = False) -> Any:
+        """An rclpy publisher on ``topic``: reliable, depth 10, transient local with ``latched`` (what the
+        simulation's subscriptions accept, like ``ros2 topic pub``'s default). Publish before a step: the
+        lockstep after each chunk has the receiving node take it within that chunk."""
         return self.node.create_publisher(msg_type, topic, qos_for(True, latched, depth=10))
 
     # ------------------------------------------------------------------ services
     def wait_for_service(self, name: str, srv_type: Any, timeout: float = 10.0) -> Any:
-        """A client of ``name`` once the service is there (wall-clock ``timeout``)."""
+        """A client of ``name`` once a server of it has been discovered.
+
+        Raises:
+            TestTimeout: no server within wall-clock ``timeout`` (a node that never started, or a name
+                spelled another way: ``ros2 service list`` in the failure's log shows what there was).
+        """
         client = self.node.create_client(srv_type, name)
         if not client.wait_for_service(timeout_sec=timeout):
             raise TestTimeout(f"service {name} did not appear within {timeout:g} s")
         return client
 
     def call(self, name: str, srv_type: Any, request: Any = None, timeout: float = 30.0) -> Any:
-        """Call a service and return its response (wall-clock ``timeout`` for the service and the reply)."""
+        """Call a service and return its response.
+
+        Args:
+            name: the service's full name.
+            srv_type: the service class, e.g. ``std_srvs.srv.SetBool``.
+            request: the request (None: a default-constructed one).
+            timeout: wall-clock seconds for the server to appear, and again for its reply. A server that
+                answers only as sim time passes (a paused world's node waiting on its clock) never replies
+                while the test waits here: call it with ``call_async`` on :attr:`node` and step meanwhile.
+
+        Raises:
+            TestTimeout: no server, or no reply, in time.
+        """
         client = self.wait_for_service(name, srv_type, timeout)
         future = client.call_async(request if request is not None else srv_type.Request())
         done = threading.Event()
@@ -191,7 +277,16 @@ class RosTestNode:
         return result
 
     def wait_until(self, predicate: Callable[[], Any], timeout: float = 10.0, what: str = "the condition") -> Any:
-        """Wait (wall clock) until ``predicate()`` is truthy; for sim-time waits use ``Sim.run_until``."""
+        """Wait (wall clock) until ``predicate()`` is truthy, without stepping the world: for things that
+        happen in wall time (discovery, a process starting). For what happens in sim time use
+        ``gazelle_sim.run_until``, which steps while it waits.
+
+        Returns:
+            The predicate's first truthy value.
+
+        Raises:
+            TestTimeout: still false after ``timeout`` wall seconds, naming ``what``.
+        """
 
         def pause() -> None:
             with self._clock_cond:  # a /clock message wakes it early: new data may have come with it

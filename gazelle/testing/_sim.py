@@ -129,7 +129,28 @@ class ChildProcess:
 
 
 def gazelle_command(*args: str) -> list[str]:
+    """The argv of a ``gazelle`` command run by this Python (the test's venv, whatever is on PATH)."""
     return [sys.executable, "-m", "gazelle.cli", *args]
+
+
+def _server_args(
+    world: str | os.PathLike[str] | None,
+    seed: int,
+    paused: bool,
+    rtf: float | None,
+    replay: tuple[str | os.PathLike[str], Sequence[str]] | None,
+    extra: Sequence[str],
+) -> list[str]:
+    """``gazelle sim``'s arguments for a test's server (see :class:`Sim`): headless, seeded, and paused
+    unless the test runs the world in real time."""
+    args = ["sim", *([str(world)] if world is not None else []), "--no-viewer", "--seed", str(seed)]
+    if paused:
+        args.append("--paused")
+    if rtf is not None:
+        args += ["--rtf", f"{rtf:g}"]
+    if replay is not None:
+        args += ["--replay", str(replay[0]), *[a for t in replay[1] for a in ("--replay-topic", t)]]
+    return args + list(extra)
 
 
 class Sim:
@@ -139,6 +160,29 @@ class Sim:
     machine allows, through simulation_interfaces' StepSimulation), and every timeout given in sim
     seconds means the same on a slow runner as on a fast one. Wall-clock limits only catch a hung
     server.
+
+    Args:
+        domain_id: the ROS domain of this simulation alone (the plugin reserves one per test).
+        world: an SDF world file (None: the embedded default world: ground plane and sun).
+        seed: the seed of every random draw in the server (sensor noise), so a failure can be run again
+            bit for bit with ``--gazelle-seed``.
+        paused: start paused, the test stepping the world (the plugin's default); False runs the world
+            on its own at ``rtf``, and :meth:`run_for` then waits instead of stepping.
+        rtf: real-time factor of a running server (None: the server's default, 1).
+        env: the environment for the server and every process started (None: this process's); the
+            domain, localhost-only discovery and Fast DDS are set over it.
+        start_timeout: wall seconds for the server to say it is ready and its services to appear.
+        record: (folder, topics) to record from the first step (see :meth:`record`); the recorder
+            starts beside the server, so their start-ups overlap.
+        server_args: more ``gazelle sim`` arguments.
+        replay: (file, topics): the server keeps a replay page of the run since the last reset there
+            (written at its end, or by :meth:`save_replay`).
+        settle_timeout: after each chunk of stepped time, wait up to this many wall seconds until the
+            processes the test started (:meth:`run`, :meth:`launch`) are idle (lockstep, see
+            ``_settle``); 0 steps without waiting for them.
+
+    Raises:
+        SimError: the server did not start (its output's end is in the message).
     """
 
     def __init__(
@@ -156,12 +200,8 @@ class Sim:
         replay: tuple[str | os.PathLike[str], Sequence[str]] | None = None,
         settle_timeout: float = 10.0,
     ) -> None:
-        """``record``: (folder, topics) to record from the first step (see :meth:`record`); the recorder
-        starts beside the server, so their start-ups overlap. ``replay``: (file, topics): the server keeps
-        a replay page of the run since the last reset there (written at its end, or by :meth:`save_replay`).
-        ``settle_timeout``: after each chunk of stepped time, wait up to this many wall seconds until the
-        processes the test started (:meth:`run`, :meth:`launch`) are idle (lockstep, see ``_settle``); 0
-        steps without waiting for them."""
+        """Start a ``gazelle sim`` server (headless) on ``domain_id`` and the test's node, and return once the
+        server's StepSimulation service is reachable (the arguments: see the class docstring)."""
         self.domain_id = domain_id
         self._settler = Settler(settle_timeout)
         self.seed = seed
@@ -177,17 +217,10 @@ class Sim:
         self.children: list[ChildProcess] = []
         self._kept = 0
         self._ros: RosTestNode | None = None
-        args = ["sim", *([str(world)] if world is not None else []), "--no-viewer", "--seed", str(seed)]
-        if paused:
-            args.append("--paused")
-        if rtf is not None:
-            args += ["--rtf", f"{rtf:g}"]
         self.replay_path = Path(replay[0]) if replay is not None else None
-        if replay is not None:
-            args += ["--replay", str(replay[0]), *[a for t in replay[1] for a in ("--replay-topic", t)]]
-        args += list(server_args)
         self._recorder: ChildProcess | None = None
         self._record_topics: list[str] = list(record[1]) if record is not None else []
+        args = _server_args(world, seed, paused, rtf, replay, server_args)
         self.server = self._child("gazelle sim", gazelle_command(*args))
         try:
             m = self.server.wait_line(_READY, start_timeout)
@@ -250,8 +283,23 @@ class Sim:
         args: Mapping[str, str] | None = None,
         timeout: float = 60.0,
     ) -> None:
-        """Spawn a robot from a file as ``gazelle spawn -file`` does (xacro expanded with ``args``, meshes
-        and <parameters> resolved from the file's package); SimError with the reason if it is refused."""
+        """Spawn a robot from a file as ``gazelle spawn -file`` (and gazebo_ros's ``spawn_entity.py``) does, and
+        return once the server has it.
+
+        Args:
+            file: a URDF, xacro or SDF file; meshes and ros2_control ``<parameters>`` are resolved from the
+                file's package (``package://``, ``$(find ...)``), as a launch file's would be.
+            name: the entity's name, unique in the world.
+            namespace: the robot's ROS namespace (its topics, its controller manager), as ``-robot_namespace``.
+            pose: (x, y, z) in metres, in the world frame.
+            yaw: rotation about z in radians.
+            args: xacro arguments (``{"use_gazebo": "true"}`` is ``--arg use_gazebo:=true``).
+            timeout: wall seconds for the spawn to be done.
+
+        Raises:
+            SimError: the spawn was refused or failed; the message holds the server's reason (file:line
+                for a bad description), and the world is as it was.
+        """
         x, y, z = (list(pose) + [0.0, 0.0, 0.0])[:3]
         argv = ["spawn", "-file", str(file), "-entity", name, "-x", f"{x}", "-y", f"{y}", "-z", f"{z}", "-Y", f"{yaw}"]
         if namespace:
@@ -266,7 +314,18 @@ class Sim:
         self, package_or_path: str | os.PathLike[str], file: str | None = None, **arguments: Any
     ) -> ChildProcess:
         """Run a launch file as ``ros2 launch`` does (``launch("my_pkg", "sim.launch.py", use_sim_time="true")``
-        or ``launch(path)``); its processes belong to the test and end with it."""
+        or ``launch(path)``); its processes belong to the test and end with it.
+
+        Args:
+            package_or_path: a package on the workspace's ``AMENT_PREFIX_PATH`` (a colcon build sourced
+                before pytest), or a launch file's path.
+            file: the launch file's name in the package (None with a path).
+            arguments: launch arguments, ``name:=value`` each.
+
+        Returns:
+            The ``ros2 launch`` process (its output: ``.tail()``; it is in lockstep with every step, and the
+            nodes it starts are, as their process group's members).
+        """
         argv = [str(Path(sys.prefix) / "bin" / "ros2"), "launch", str(package_or_path)]
         if file is not None:
             argv.append(file)
@@ -281,7 +340,18 @@ class Sim:
         env: Mapping[str, str] | None = None,
     ) -> ChildProcess:
         """Start any other process on the simulation's domain (a node of the user's); it ends with the test.
-        ``env`` adds to (or overrides) the simulation's environment for this process only."""
+
+        Args:
+            argv: the command, e.g. ``[sys.executable, "my_node.py"]`` or ``["ros2", "run", "pkg", "node"]``;
+                a node should run with ``use_sim_time:=true`` to follow the world the test steps.
+            name: how the harness names it in its messages (None: the program's name).
+            cwd: its working directory (None: the test's).
+            env: added to (or overriding) the simulation's environment, for this process only.
+
+        Returns:
+            The process, in a process group of its own: stopped (SIGINT, then SIGKILL) at the test's end
+            with all it started, and waited for after every chunk of stepped time (lockstep).
+        """
         return self._child(name or Path(argv[0]).name, argv, cwd, env)
 
     # ------------------------------------------------------------------ time
@@ -318,7 +388,20 @@ class Sim:
         ``step`` of sim time at a time (50 ms by default) and waits for those processes after each, as
         :meth:`run_until` does: one long step would let the world run ahead of a node for its whole length
         (a servo node's last commands then reached the arm after the test had read where it stopped).
-        ``wall_timeout`` bounds each step call."""
+
+        Args:
+            seconds: sim seconds, rounded to whole physics steps (the world's ``<max_step_size>``).
+            wall_timeout: wall seconds each step call may take before the server counts as hung.
+            step: sim seconds per lockstep chunk; a node that times its own commands on sim time wants
+                0.01, at the cost of more service calls.
+
+        Returns:
+            The sim time heard on /clock at the end (to its 10 ms tick).
+
+        Raises:
+            SimError: the server died, hung or refused to step (its output's end is in the message).
+            ValueError: ``seconds`` or ``step`` is negative or not finite.
+        """
         if seconds < 0 or not math.isfinite(seconds):
             raise ValueError(f"run_for takes a finite time >= 0, got {seconds!r}")
         if not (step > 0 and math.isfinite(step)):
@@ -380,7 +463,25 @@ class Sim:
         The world is paused between two chunks until the processes the test started are idle (see
         ``settle_timeout``): a node timing its commands on sim time acts within the chunk its time falls
         in however busy the machine is, so a smaller ``step`` (0.01) suits a test of open-loop timing (the
-        seed's square), at the cost of more service calls."""
+        seed's square), at the cost of more service calls.
+
+        Args:
+            predicate: called before each chunk, on the test's thread; it reads what the test's node heard
+                (``log.last``, ``len(log)``), never blocking.
+            timeout: sim seconds: the same bound on any machine, which is what makes the test's verdict
+                repeatable.
+            what: what is waited for, for the failure's message ("the robot at the goal").
+            wall_timeout: wall seconds before the simulation counts as hung (a different failure).
+            step: sim seconds per chunk.
+
+        Returns:
+            The predicate's first truthy value.
+
+        Raises:
+            TestTimeout: ``timeout`` sim seconds passed with the predicate false (an AssertionError: the
+                test fails, naming ``what``).
+            SimError: ``wall_timeout`` passed, or the server died.
+        """
         if not (step > 0 and math.isfinite(step)):
             raise ValueError(f"run_until's step must be a finite time > 0, got {step!r}")
         start, deadline = self.ros.sim_time, time.monotonic() + wall_timeout
@@ -397,7 +498,13 @@ class Sim:
     def reset(self, wall_timeout: float = 30.0) -> None:
         """Back to the start: sim time 0, the world's own models at their initial state, every entity the
         tests spawned removed (simulation_interfaces' ResetSimulation, SCOPE_ALL), and the processes
-        started since the last reset stopped."""
+        started since the last reset stopped (the server and its recorder go on: a reset is much cheaper
+        than a new server: the plugin's ``gazelle_shared_sim`` shares one per module this way).
+
+        Raises:
+            SimError: the server refused the reset (its reason is in the message).
+            TestTimeout: it did not answer within ``wall_timeout`` seconds.
+        """
         from simulation_interfaces.srv import ResetSimulation
 
         for child in self.children[self._kept :]:
@@ -412,7 +519,13 @@ class Sim:
 
     # ------------------------------------------------------------------ recording
     def record(self, folder: str | os.PathLike[str], topics: Sequence[str]) -> ChildProcess:
-        """Record ``topics`` (and /tf, /tf_static, /clock) into a rosbag2 MCAP folder until the test ends."""
+        """Record ``topics`` (and /tf, /tf_static, /clock) into a rosbag2 MCAP folder until the test ends, with
+        ``ros2 bag record`` (gazelle's, writing what rosbag2's MCAP storage writes: ``ros2 bag play``,
+        Foxglove and the ``rosbags`` library read it).
+
+        Returns:
+            The recorder's process; :meth:`wait_for_recorder` waits until it hears the graph.
+        """
         names = list(dict.fromkeys([*topics, "/tf", "/tf_static", "/clock"]))
         argv = [str(Path(sys.prefix) / "bin" / "ros2"), "bag", "record", "-o", str(folder), *names]
         return self._child("ros2 bag record", argv)

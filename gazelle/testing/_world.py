@@ -70,7 +70,25 @@ class InProcessWorld:
         namespace: str = "",
         args: Mapping[str, str] | None = None,
     ) -> Any:
-        """Spawn a robot or model file (URDF, xacro with ``args``, SDF) as ``name``; returns its entity."""
+        """Spawn a robot or model file as ``name``, its plugins and ros2_control running in the world as they
+        would under ``gazelle sim`` (minus the ROS graph).
+
+        Args:
+            file: a URDF, xacro or SDF model file (package:// and model:// resolved from
+                ``GAZELLE_RESOURCE_PATH`` and the file's package).
+            name: the entity's name, unique in the world.
+            pose: (x, y, z) of its root in the world, metres.
+            yaw: rotation about z, radians.
+            namespace: its topics' namespace, as a ROS spawn's ``-robot_namespace``.
+            args: xacro arguments.
+
+        Returns:
+            The physics world's entity (its ``systems``: plugins, a controller manager).
+
+        Raises:
+            gazelle.description.ModelLoadError: the file is missing or bad; the message names file:line.
+            ValueError: the file is a world, not a robot or model.
+        """
         from ..description import Model, Pose, load
 
         model = load(Path(file), args=dict(args or {})).value
@@ -94,7 +112,14 @@ class InProcessWorld:
         return taken
 
     def subscribe(self, topic: str) -> TopicLog:
-        """A log of every payload the simulation publishes on ``topic`` from now on."""
+        """A log of every payload the simulation publishes on ``topic`` from now on: the
+        :mod:`gazelle.systems` payloads (``Odometry``, ``JointStates``...) the ROS bridge would convert,
+        without a conversion.
+
+        Raises:
+            ValueError: nothing in the simulation publishes ``topic`` (a misspelt topic fails here, not as a
+                log that stays empty).
+        """
         endpoints = [ep for ep in self.sim.bus.endpoints() if ep.is_publisher and ep.topic == topic]
         if not endpoints:
             raise ValueError(f"nothing in the simulation publishes {topic}")
@@ -110,7 +135,8 @@ class InProcessWorld:
         return float(self.sim.world.time)
 
     def run_for(self, seconds: float) -> float:
-        """Step ``seconds`` of sim time (as fast as the machine allows); returns the sim time."""
+        """Step ``seconds`` of sim time (whole physics steps, as fast as the machine allows) on the test's
+        thread; returns the sim time. Nothing runs between the calls: the world is the test's alone."""
         if seconds < 0 or not math.isfinite(seconds):
             raise ValueError(f"run_for takes a finite time >= 0, got {seconds!r}")
         steps = round(seconds / self.sim.world.timestep)
@@ -122,7 +148,10 @@ class InProcessWorld:
         self, predicate: Callable[[], Any], timeout: float, what: str = "the condition", step: float = 0.01
     ) -> Any:
         """Step until ``predicate()`` is truthy (checked every ``step`` s of sim time), at most ``timeout``
-        seconds of sim time; returns its value or raises :class:`WorldTimeout` naming ``what``."""
+        seconds of sim time; returns its value or raises :class:`WorldTimeout` naming ``what``.
+
+        The check's granularity is ``step``: the time at which a condition first held is known to within it
+        (0.01 s by default; the physics steps at the world's ``max_step_size`` regardless)."""
         end = self.time + timeout
         while True:
             value = predicate()
@@ -134,7 +163,8 @@ class InProcessWorld:
 
     # ------------------------------------------------------------------ state
     def pose(self, name: str, link: str | None = None) -> tuple[float, float, float, float]:
-        """(x, y, z, yaw) of an entity (its root link, or ``link``) in the world."""
+        """(x, y, z, yaw) of an entity (its root link, or ``link``) in the world frame: metres, and radians
+        about z (from the orientation's roll-pitch-yaw, so a tipped robot's yaw is its heading's projection)."""
         from ..description import quat_to_rpy
 
         p = self.sim.world.entity_state(name, link).pose
