@@ -32,36 +32,20 @@ from concurrent.futures import TimeoutError as FutureTimeout
 from pathlib import Path
 from typing import Any, TypeVar
 
-from ..description import Model, Plugin, Pose, World, config_reads
+from ..description import World
 from ..physics import (
-    Entity,
-    ErrorKind,
     PhysicsOverload,
     PhysicsWorld,
-    StagedRequest,
-    WorldError,
-    build_failed,
-    prepare_meshes,
 )
 from ..systems import (
-    RSP_PLUGIN,
     Bus,
-    RobotStatePublisher,
     System,
-    SystemContext,
     SystemManager,
     UpdateInfo,
-    audit_model,
     audit_world,
-    create_system,
-    plan_sensors,
-    plugin_node,
-    plugin_node_name,
-    robot_state_config,
-    unread_parameters,
 )
-from ..systems.ros2_control import ControllerManager
-from ._runtime_types import RtfSample, SpawnRequest, StepListener
+from ._runtime_types import RtfSample, StepListener
+from ._spawning import SpawningMixin
 
 T = TypeVar("T")
 
@@ -74,16 +58,9 @@ MAX_BLOCK_SEC = 0.01
 _log = logging.getLogger("gazelle")
 
 
-def _shutdown_system(system: System) -> None:
-    """Shut down a system whose entity never made it into the world (its spawn failed)."""
-    try:
-        system.shutdown()
-    except Exception:
-        _log.exception(f"{type(system).__name__}.shutdown raised after a failed spawn")
-
-
-class Simulation:
-    """A world plus systems, stepped on its own thread (or by hand, in lock-step)."""
+class Simulation(SpawningMixin):
+    """A world plus systems, stepped on its own thread (or by hand, in lock-step); its entities are added and
+    removed by :class:`~._spawning.SpawningMixin`'s methods (``spawn``, ``spawn_many``, ``delete``)."""
 
     def __init__(
         self,
@@ -331,7 +308,18 @@ class Simulation:
     # ------------------------------------------------------------------ stepping
     def add_step_listener(self, fn: Callable[[UpdateInfo], None], rate_hz: float = 0.0) -> StepListener:
         """Call ``fn`` on the sim thread after the steps, at most ``rate_hz`` times per sim second
-        (every step when 0). A listener that raises is logged and removed. Thread-safe."""
+        (every step when 0). A listener that raises is logged and removed. Thread-safe.
+
+        Args:
+            fn: takes the block's :class:`UpdateInfo` (sim time, steps, paused). It runs on the simulation
+                thread between blocks of steps, so it should hand data over and return (the ROS bridge
+                publishes from here through its outbox): the world waits while it runs.
+            rate_hz: the most calls per sim second; 0 calls it after every block. Listeners are due on
+                sim time, so the rate is the same at any real-time factor.
+
+        Returns:
+            The listener (``remove_step_listener(fn)`` removes it).
+        """
         listener = StepListener(fn, rate_hz)
         self.call(lambda: self.step_listeners.append(listener))
         return listener
@@ -490,164 +478,6 @@ class Simulation:
             count, last = 0, now
         self._divergence_log[name] = (count, last)
 
-    # ------------------------------------------------------------------ entities
-    def _configure_plugins(self, entity: Entity) -> list[System]:
-        """Create and configure (while the entity is staged) a system for each supported plugin of
-        ``entity``, and the built-in robot_state_publisher for anything with joints or a URDF.
-
-        Raises whatever a plugin's ``configure`` raises, after shutting down the systems made so far.
-        """
-        made: list[System] = []
-        try:
-            # unsupported plugins and sensors: named, never dropped silently
-            for problem in audit_model(entity.model, self.world_plugins):
-                _log.warning(f"'{entity.name}': {problem.format()}")
-            for plugin in entity.model.plugins:
-                if plugin.filename == RSP_PLUGIN:
-                    continue  # configures the built-in one below
-                system = create_system(plugin)
-                if system is None or (isinstance(system, ControllerManager) and not entity.model.ros2_control):
-                    continue
-                logger = logging.getLogger(plugin.name or plugin.filename)
-                made.append(system)
-                self._seed_noise(system, entity.name, plugin.name or plugin.filename)
-                with self.bus.declaring(plugin_node_name(plugin, entity.namespace)), config_reads() as reads:
-                    system.configure(
-                        SystemContext(self.world, entity, plugin, self.bus, logger, world_name=self.world_name)
-                    )
-                for problem in unread_parameters(plugin, reads):
-                    logger.warning(problem)
-                self._announce_node(entity, system, plugin)
-            if entity.model.ros2_control and not any(isinstance(s, ControllerManager) for s in made):
-                # as mujoco_ros2_control and the mock hardware do: <ros2_control> alone runs a manager
-                manager = ControllerManager()
-                made.append(manager)
-                manager.configure(
-                    SystemContext(
-                        self.world,
-                        entity,
-                        None,
-                        self.bus,
-                        logging.getLogger("controller_manager"),
-                        world_name=self.world_name,
-                    )
-                )
-            for plan in plan_sensors(entity.model, self.world_plugins)[0]:
-                system = plan.make()
-                named = plan.plugin.name if plan.plugin is not None else plan.sensor.name
-                logger = logging.getLogger(named or plan.sensor.name)
-                made.append(system)
-                self._seed_noise(system, entity.name, f"{plan.link}/{plan.sensor.name}/{named}")
-                with self.bus.declaring(plugin_node_name(plan.plugin, entity.namespace)), config_reads() as reads:
-                    system.configure(
-                        SystemContext(
-                            self.world,
-                            entity,
-                            plan.plugin,
-                            self.bus,
-                            logger,
-                            sensor=plan.sensor,
-                            link=plan.link,
-                            world_name=self.world_name,
-                            spherical_coordinates=self.spherical_coordinates,
-                            magnetic_field=self.magnetic_field,
-                        )
-                    )
-                for problem in unread_parameters(plan.plugin, reads):
-                    logger.warning(problem)
-                self._announce_node(entity, system, plan.plugin)
-            if self.robot_state_publisher and (entity.model.joints or entity.model.urdf):
-                logger = logging.getLogger(f"{entity.name}.robot_state_publisher")
-                config, plugin = robot_state_config(entity, logger)
-                if config.enabled:
-                    rsp = RobotStatePublisher(config)
-                    made.append(rsp)
-                    rsp.configure(SystemContext(self.world, entity, plugin, self.bus, logger))
-        except Exception:
-            self._undo_systems(entity.name, made)
-            raise
-        return made
-
-    def _announce_node(self, entity: Entity, system: System, plugin: Plugin | None) -> None:
-        """A gazebo_ros plugin is a ROS node of its own (its parameters: its configuration)."""
-        node = plugin_node(system, plugin, entity.namespace)
-        if node is not None:
-            self.bus.add_component(entity.name, node)
-
-    def _undo_systems(self, name: str, systems: list[System]) -> None:
-        """Shut down the systems of an entity that never made it into the world, and drop its endpoints."""
-        for system in systems:
-            _shutdown_system(system)
-        self.bus.remove_owner(name)
-
-    def _attach(self, entity: Entity, systems: list[System]) -> None:
-        entity.systems.extend(systems)
-        for s in systems:
-            self.systems.add(entity.name, s)
-
-    def _add_world_models(self, models: list[Model]) -> None:
-        """The world file's models, staged and configured one by one and compiled into MuJoCo once: one
-        recompile a model made loading quadratic (gz-sim's 3k_shapes.sdf, 3,000 models: over 5 minutes).
-        Should the batch not compile, the models are added one at a time, so the error names its model."""
-        names = [m.name for m in models]
-        if len(models) < 2 or len(set(names)) != len(names):
-            for m in models:
-                self._add_entity(m, name=m.name, pose=Pose(), namespace="", spawned=False)
-            return
-        staged: list[tuple[Entity, list[System]]] = []
-        try:
-            for m in models:
-                entity = self.world.stage(m, name=m.name, X_WM=m.pose, namespace="", spawned=False)
-                try:
-                    systems = self._configure_plugins(entity)
-                except Exception as err:
-                    self.world.discard(entity)
-                    raise build_failed(m.name, err) from None
-                staged.append((entity, systems))
-            self.world.commit([e for e, _ in staged])
-        except WorldError:
-            for entity, systems in staged:
-                if entity.name not in self.world.entities:
-                    self.world.discard(entity)
-                    self._undo_systems(entity.name, systems)
-            if any(e.name in self.world.entities for e, _ in staged):
-                raise  # committed, then refused (an overload): nothing to retry
-            for m in models:  # one at a time: the error names its model
-                self._add_entity(m, name=m.name, pose=Pose(), namespace="", spawned=False)
-            return
-        for entity, systems in staged:
-            self._attach(entity, systems)
-
-    def _add_entity(
-        self, model: Model, *, name: str, pose: Pose, namespace: str, spawned: bool, X_WM: Pose | None = None
-    ) -> Entity:
-        """Stage the model, configure its systems, commit: the one way an entity comes into the world.
-        ``X_WM``, when given, is where its model frame goes (else ``pose`` composed with the file's own)."""
-        placed = X_WM if X_WM is not None else pose * model.pose
-        entity = self.world.stage(model, name=name, X_WM=placed, namespace=namespace, spawned=spawned)
-        try:
-            systems = self._configure_plugins(entity)
-        except Exception as err:
-            self.world.discard(entity)
-            raise build_failed(name, err) from None
-        try:
-            self.world.commit([entity])
-        except WorldError:
-            self._undo_systems(name, systems)
-            raise
-        self._attach(entity, systems)
-        return entity
-
-    def add_entity_placed(
-        self, model: Model, name: str, X_WM: Pose, namespace: str = "", *, spawned: bool = True
-    ) -> Entity:
-        """Add a model with its model frame at ``X_WM`` (the file's own pose already composed in), as a
-        checkpoint recorded it (thread-safe)."""
-        prepare_meshes(model)
-        return self.call(
-            lambda: self._add_entity(model, name=name, pose=Pose(), namespace=namespace, spawned=spawned, X_WM=X_WM)
-        )
-
     # ------------------------------------------------------------------ checkpoints
     def checkpoint(self, path: str | os.PathLike[str]) -> Path:
         """Save everything this run needs to go on bit-identically to ``path`` (owner-only): the world and
@@ -674,39 +504,21 @@ class Simulation:
 
         return _checkpoint.restore(_checkpoint.read(path), world)
 
-    def spawn(self, model: Model, *, name: str | None = None, pose: Pose = Pose(), namespace: str = "") -> Entity:
-        """Add a model (thread-safe). ``pose`` is where its model frame goes, composed with the file's own pose.
-
-        Raises:
-            WorldError: on a duplicate/invalid name, a bad pose or a model that cannot be built.
-        """
-        prepare_meshes(model)  # slow work (convex decompositions) here, in the caller's thread
-        return self.call(
-            lambda: self._add_entity(model, name=name or model.name, pose=pose, namespace=namespace, spawned=True)
-        )
-
-    def delete(self, name: str) -> None:
-        """Remove an entity and its systems (thread-safe).
-
-        Raises:
-            WorldError: no such entity.
-        """
-
-        def do() -> None:
-            """On the simulation thread: the entity's systems, then its topics, then its bodies, so no system runs
-            on an entity that is gone."""
-            if name not in self.world.entities:
-                raise WorldError(ErrorKind.NOT_FOUND, f"entity '{name}' does not exist")
-            self.systems.remove_owner(name)
-            self.bus.remove_owner(name)
-            self.world.remove_entity(name)
-            self.diverged.pop(name, None)
-            self._divergence_log.pop(name, None)
-
-        self.call(do)
-
     def reset(self, *, time_: bool = True, state: bool = True, spawned: bool = True) -> None:
-        """Reset sim time, entity states and/or remove the spawned entities (thread-safe)."""
+        """Reset sim time, entity states and/or remove the spawned entities (thread-safe).
+
+        The three parts are Gazebo's three resets: gazebo_ros's ``/reset_world`` is ``state`` (models back
+        to their start, the clock going on), ``/reset_simulation`` is ``state`` and ``time_``, and
+        simulation_interfaces' ``ResetSimulation`` with SCOPE_ALL adds ``spawned`` (what was spawned since
+        the start is removed; the world file's own models stay). Every system is told (a diff drive's
+        odometry starts again at zero; a controller manager cycles at once, its controllers keeping their
+        state).
+
+        Args:
+            time_: the clock back to 0 (nodes on sim time see /clock go back, as after Gazebo's reset).
+            state: every entity's joints, poses and velocities back to their initial values.
+            spawned: remove the entities spawned at run time.
+        """
 
         def do() -> None:
             """On the simulation thread: spawned entities removed (``spawned``), the physics state back to the start
@@ -730,66 +542,3 @@ class Simulation:
             self.systems.reset(self._info(self.paused), self.world)
 
         self.call(do)
-
-    # ------------------------------------------------------------------ batch spawning (simulation_interfaces)
-    def spawn_many(self, requests: list[SpawnRequest], timeout: float | None = 60.0) -> list[Entity | WorldError]:
-        """Add several models in one sim-thread call with one recompile (thread-safe).
-
-        Returns, per request, the new entity or the :class:`WorldError` that refused it.
-        """
-        for request in requests:
-            prepare_meshes(request.model)
-        return self.call(lambda: self._spawn_many(requests), timeout=timeout)
-
-    def _spawn_many(self, requests: list[SpawnRequest]) -> list[Entity | WorldError]:
-        """Add several models with one MuJoCo recompile (SpawnEntities): names made unique where renaming is
-        allowed, each staged and its plugins configured, then all committed together. A model whose plugins fail
-        to configure is left out alone; if the combined build fails, each is added on its own, so one bad model
-        never takes the others with it. Returns, per request, the entity or the error."""
-        taken = set(self.world.entities)
-        names: list[str] = []
-        for r in requests:
-            name = r.name or r.model.name
-            if r.allow_renaming and name in taken:
-                i = 1
-                while f"{name}_{i}" in taken:
-                    i += 1
-                name = f"{name}_{i}"
-            taken.add(name)
-            names.append(name)
-        staged = self.world.stage_many(
-            [StagedRequest(r.model, name, r.pose * r.model.pose, r.namespace) for r, name in zip(requests, names)]
-        )
-        out: list[Entity | WorldError] = []
-        ready: list[tuple[Entity, list[System]]] = []
-        for res, name in zip(staged, names):
-            if isinstance(res, WorldError):
-                out.append(res)
-                continue
-            try:
-                systems = self._configure_plugins(res)
-            except Exception as err:
-                self.world.discard(res)
-                out.append(build_failed(name, err))
-                continue
-            ready.append((res, systems))
-            out.append(res)
-        try:
-            self.world.commit([e for e, _ in ready])
-        except WorldError:
-            # the combined build failed: undo every configure, then add one at a time
-            for e, systems in ready:
-                self._undo_systems(e.name, systems)
-            out = []
-            for r, name, res in zip(requests, names, staged):
-                if isinstance(res, WorldError):
-                    out.append(res)
-                    continue
-                try:
-                    out.append(self._add_entity(r.model, name=name, pose=r.pose, namespace=r.namespace, spawned=True))
-                except WorldError as err:
-                    out.append(err)
-            return out
-        for e, systems in ready:
-            self._attach(e, systems)
-        return out
