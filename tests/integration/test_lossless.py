@@ -30,8 +30,10 @@ def drive(server_args: tuple[str, ...]) -> tuple[list[float], float, Sim]:
     sim.spawn(SEED_XACRO, "simple_robot", pose=(0.0, 0.0, 0.07))
     odom = sim.ros.subscribe("/odom", Odometry)
     sim.ros.wait_until(lambda: sim.ros.node.count_publishers("/odom") > 0, 30, "/odom")
-    sim.run_for(0.05)
-    odom.wait(1, 30)
+    # the test has seen the server's publisher, but the server may not have matched the test's reader yet:
+    # what it publishes before then is lost (volatile), and a fixed 0.05 s of steps could all be (a fresh
+    # clone's run under load heard nothing in 30 s with --drop-when-behind). Step until one arrives
+    sim.run_until(lambda: len(odom) > 0, timeout=5.0, what="the first /odom at the test")
     t0 = time.perf_counter()
     end = sim.run_for(2.0)
     wall = time.perf_counter() - t0

@@ -180,11 +180,11 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
     # /odom at 100 Hz (the plugin's update rate), measured in simulated time (-s, as ros2cli's hz measures
     # with its node's clock), so a loaded machine does not change it (on the wall clock a busy CI machine
     # saw 92 and 115 Hz); --filter as ros2cli's (a Python expression of the message `m`). The verb subscribes
-    # as ros2cli's does (sensor data: best effort, depth 5), so while it starts up on a starved CPU it can
-    # miss messages: a fresh clone beside a CPU hog read 74, 87 and 91 Hz in windows of 75, 175 and 275
-    # intervals, each second after the first at exactly 100. A lost message makes one long interval, so
-    # once the window holds only intervals after start-up the rate is exact: the 4th report, with its
-    # window of 300 full and the first second's 75 or so intervals pushed out, is asserted
+    # as ros2cli's does (sensor data: best effort, depth 5), so on a starved CPU it can miss messages: a
+    # fresh clone beside a CPU hog read 74, 87 and 91 Hz in windows of 75, 175 and 275 intervals (lost at
+    # start-up), another under load 100, 100, then 96 and 91 (lost later: intervals of 0.18 and 0.28 s).
+    # A lost message only lengthens an interval, so on sim time no report reads above 100 (on the wall
+    # clock a busy machine read 115), and a window without a loss reads 100 exactly
     hz = ros2(
         "topic",
         "hz",
@@ -201,7 +201,7 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
     rates = [float(line.split(":")[1]) for line in hz.stdout.splitlines() if line.startswith("average rate:")]
     windows = [int(line.rsplit(":", 1)[1]) for line in hz.stdout.splitlines() if "window:" in line]
     assert len(rates) == 4 and windows[-1] == 300, hz.stdout + hz.stderr
-    assert rates[-1] == pytest.approx(100.0, rel=0.05), hz.stdout + hz.stderr
+    assert max(rates) <= 100.5 and max(rates) == pytest.approx(100.0, rel=0.01), hz.stdout + hz.stderr
 
     # pausing from the command line stops /clock
     clocks: list = []
