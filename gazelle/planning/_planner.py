@@ -26,16 +26,23 @@ IK_DIAGNOSIS_SEC = 0.2
 
 @dataclass(frozen=True)
 class Trajectory:
-    """A timed joint trajectory of a group: one row per point."""
+    """A timed joint trajectory of a group: one row per point, what MoveIt's ``RobotTrajectory`` carries
+    into a ``FollowJointTrajectory`` goal (``time_from_start`` = ``times``)."""
 
     joint_names: tuple[str, ...]
+    """The group's joints, in the order of the columns."""
     times: np.ndarray
+    """(n,) seconds from the start, increasing; the first is 0."""
     positions: np.ndarray
+    """(n, joints) rad or m."""
     velocities: np.ndarray
+    """(n, joints) rad/s or m/s, within the joints' limits times the velocity scaling."""
     accelerations: np.ndarray
+    """(n, joints) rad/s² or m/s², within the limits times the acceleration scaling."""
 
     @property
     def duration(self) -> float:
+        """The time of the last point, seconds (0 for an empty trajectory)."""
         return float(self.times[-1]) if len(self.times) else 0.0
 
 
@@ -55,10 +62,26 @@ class ArmPlanner(RobotScene):
         avoid_collisions: bool = True,
     ) -> np.ndarray:
         """A full configuration putting ``link`` at ``target`` (4x4, root frame) within 1e-4 m and 1e-3
-        rad, moving only ``group``'s joints, seeded from ``seed`` (else the current state), with restarts.
+        rad, moving only ``group``'s joints, seeded from ``seed`` (else the current state), with restarts:
+        what MoveIt's ``/compute_ik`` answers.
+
+        Args:
+            group: the SRDF planning group whose joints may move.
+            link: the link to place (MoveIt's ``ik_link_name``; usually the group's tip).
+            target: the link's pose as a 4x4 homogeneous matrix in the robot's root link frame, metres.
+            seed: a full configuration to start from (None: the current state); restarts draw random
+                configurations within the limits after it.
+            timeout: wall seconds for the search (MoveIt's ``timeout``).
+            avoid_collisions: refuse solutions in collision with the robot itself or the scene's objects.
+
+        Returns:
+            The full configuration (every joint of the model, in :attr:`joint_names` order), the other
+            groups' joints as in ``seed``.
 
         Raises:
-            PlanningError: ``NO_IK_SOLUTION``.
+            PlanningError: ``NO_IK_SOLUTION``; with collisions avoided, the message says whether the pose is
+                out of reach or reachable only in collision (naming the pairs), MoveIt's one code for both.
+            PlanningError: ``INVALID_GROUP_NAME`` or ``INVALID_LINK_NAME`` for names the robot lacks.
         """
         joints = self.group_joints(group)
         self.fk(self._current, link)
@@ -143,11 +166,24 @@ class ArmPlanner(RobotScene):
         timeout: float = 5.0,
     ) -> Trajectory:
         """A collision-free, time-parameterised motion of ``group`` from ``start`` (full configuration; the
-        current state when None) to the full configuration ``goal``.
+        current state when None) to the full configuration ``goal``: RRT-Connect in the group's joint space,
+        shortcut, then timed by TOPP-RA (what MoveIt's default pipeline does with OMPL and its time
+        parameterisation, with roboplan's implementations).
+
+        Args:
+            group: the SRDF planning group to move; the goal's other joints are ignored (they stay as they
+                start).
+            goal: a full configuration (:meth:`state` makes one from joint names).
+            start: a full configuration (None: the current state); put onto the joint limits first, as
+                MoveIt's FixStartStateBounds adapter does for a start a hair outside them.
+            velocity_scaling: MoveIt's ``max_velocity_scaling_factor``: 0 (unset), a negative value or NaN
+                means 1, a value above 1 is 1.
+            acceleration_scaling: ``max_acceleration_scaling_factor``, the same way.
+            timeout: wall seconds for the search (MoveIt's ``allowed_planning_time``).
 
         Raises:
             PlanningError: ``START_STATE_IN_COLLISION``, ``GOAL_IN_COLLISION``, ``GOAL_STATE_INVALID`` (outside
-            the joint limits) or ``PLANNING_FAILED``.
+                the joint limits), ``TIMED_OUT`` or ``PLANNING_FAILED``; collisions name the colliding pairs.
         """
         joints = self.group_joints(group)
         q0 = self.onto_limits(self._current.copy() if start is None else np.asarray(start, dtype=float))
@@ -179,6 +215,23 @@ class ArmPlanner(RobotScene):
         sopts.group_name = group
         path = self._core.PathShortcutter(self.scene, sopts).shortcut(path)
         return self._timed(group, path, velocity_scaling, acceleration_scaling)
+
+    def _line_solver(self, group: str, avoid_collisions: bool) -> Any:
+        """roboplan's SimpleIk for the poses of a Cartesian path: each solved from the last, within 1e-4 m and
+        1e-3 rad, without restarts."""
+        opts = self._simple_ik.SimpleIkOptions()
+        opts.group_name = group
+        opts.check_collisions = avoid_collisions
+        # Each pose is solved from the last in at most max_iters iterations (roboplan's default, 100): the
+        # same work and the same answer on any machine. The wall-clock budget is only a guard: at 50 ms a
+        # loaded machine took it from the solver between two iterations, and the chess robot's lift
+        # answered 0 % beside a CPU hog (tests/planning/test_planning.py stalls the planner's process to show it).
+        opts.max_iters = 100
+        opts.max_time = 2.0
+        opts.max_restarts = 0  # continuity: each pose from the last one, never a jump to another branch
+        opts.max_linear_error_norm = 1e-4
+        opts.max_angular_error_norm = 1e-3
+        return self._simple_ik.SimpleIk(self.scene, opts)
 
     def _timed(self, group: str, path, velocity_scaling: float, acceleration_scaling: float) -> Trajectory:
         """TOPP-RA over a joint path of ``group``, within the limits times the scaling factors."""
@@ -212,7 +265,24 @@ class ArmPlanner(RobotScene):
         each solved by IK seeded from the previous solution. Stops at the first pose with no solution,
         a collision on the way, or a joint jump (``jump_threshold`` times the mean step, when > 0).
 
-        Returns the timed trajectory of what was achieved (None if nothing) and the fraction achieved.
+        Args:
+            group: the SRDF planning group to move.
+            link: the link that follows the lines.
+            waypoints: poses (4x4, root link frame) the link passes through, in order.
+            start: a full configuration (None: the current state).
+            max_step: the largest Cartesian step between two solved poses, metres (MoveIt's ``max_step``).
+            jump_threshold: MoveIt's ``jump_threshold``: 0 disables the joint-jump check.
+            avoid_collisions: stop at the first pose in collision.
+            velocity_scaling: as :meth:`plan`'s.
+            acceleration_scaling: as :meth:`plan`'s.
+
+        Returns:
+            The timed trajectory of what was achieved (None if nothing) and the fraction achieved, between 0
+            and 1, as MoveIt's ``GetCartesianPath`` reply reports ``fraction``.
+
+        Raises:
+            PlanningError: ``INVALID_MOTION_PLAN`` for a ``max_step`` that is not positive; the group and link
+                names as :meth:`ik`'s.
         """
         joints = self.group_joints(group)
         self.fk(self._current, link)
@@ -221,19 +291,7 @@ class ArmPlanner(RobotScene):
         q = (self._current if start is None else np.asarray(start, dtype=float)).copy()
         idx = self._group_index(joints)
         poses = self._line_poses(self.fk(q, link), waypoints, max_step)
-        opts = self._simple_ik.SimpleIkOptions()
-        opts.group_name = group
-        opts.check_collisions = avoid_collisions
-        # Each pose is solved from the last in at most max_iters iterations (roboplan's default, 100): the
-        # same work and the same answer on any machine. The wall-clock budget is only a guard: at 50 ms a
-        # loaded machine took it from the solver between two iterations, and the chess robot's lift
-        # answered 0 % beside a CPU hog (tests/planning/test_planning.py stalls the planner's process to show it).
-        opts.max_iters = 100
-        opts.max_time = 2.0
-        opts.max_restarts = 0  # continuity: each pose from the last one, never a jump to another branch
-        opts.max_linear_error_norm = 1e-4
-        opts.max_angular_error_norm = 1e-3
-        solver = self._simple_ik.SimpleIk(self.scene, opts)
+        solver = self._line_solver(group, avoid_collisions)
         self.scene.setJointPositions(q)
         path = [q[idx].copy()]
         for pose in poses:
@@ -254,13 +312,7 @@ class ArmPlanner(RobotScene):
                 break
             path.append(nxt[idx].copy())
             q = nxt
-        if jump_threshold > 0.0 and len(path) > 2:
-            steps = np.linalg.norm(np.diff(np.asarray(path), axis=0), axis=1)
-            limit = jump_threshold * float(np.mean(steps))
-            for k, step in enumerate(steps):
-                if step > limit:
-                    path = path[: k + 1]
-                    break
+        path = _cut_at_jump(path, jump_threshold)
         fraction = (len(path) - 1) / len(poses) if poses else 1.0
         if len(path) < 2:
             return None, fraction
@@ -292,6 +344,22 @@ class ArmPlanner(RobotScene):
         config.joint_names = list(joints)
         config.positions = np.asarray(q_full, dtype=float)[self._group_index(joints)]
         return config
+
+
+def _cut_at_jump(path: list[np.ndarray], jump_threshold: float) -> list[np.ndarray]:
+    """``path`` up to the first step in joint space longer than ``jump_threshold`` times the mean step: a flip
+    to another IK branch (MoveIt's relative jump check, moveit_core cartesian_interpolator.cpp
+    ``hasRelativeJointSpaceJump``); the whole path when the threshold is 0 or there are too few steps to
+    judge. Differences kept: the step is the Euclidean norm of the joint change where MoveIt sums the joints'
+    distances (``RobotState::distance``), and MoveIt checks from two states on (warning under ten)."""
+    if jump_threshold <= 0.0 or len(path) <= 2:
+        return path
+    steps = np.linalg.norm(np.diff(np.asarray(path), axis=0), axis=1)
+    limit = jump_threshold * float(np.mean(steps))
+    for k, step in enumerate(steps):
+        if step > limit:
+            return path[: k + 1]
+    return path
 
 
 def _fraction(value: float) -> float:

@@ -276,6 +276,8 @@ class RobotScene:
 
     @property
     def groups(self) -> list[str]:
+        """The SRDF's planning groups that roboplan could build, in the file's order (a group naming links
+        or joints the URDF lacks was left out with a warning when the scene was made)."""
         return [g.name for g in self.semantics.groups if g.name in self._known_groups]
 
     def group_joints(self, group: str) -> list[str]:
@@ -362,6 +364,7 @@ class RobotScene:
         return np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
 
     def positions(self, q: np.ndarray) -> dict[str, float]:
+        """A full configuration as {joint name: value} (rad or m), the inverse of :meth:`state`."""
         return {n: float(v) for n, v in zip(self.joint_names, q)}
 
     def fk(self, q: np.ndarray, link: str) -> np.ndarray:
@@ -373,6 +376,8 @@ class RobotScene:
         return np.array(self.scene.forwardKinematics(np.asarray(q, dtype=float), link))
 
     def in_collision(self, q: np.ndarray) -> bool:
+        """Whether the robot at ``q`` touches itself (the pairs the SRDF's ``<disable_collisions>`` and the
+        allowed collision matrix do not excuse) or an object of the scene."""
         return bool(self.scene.hasCollisions(np.asarray(q, dtype=float)))
 
     def named_pairs(self, q: np.ndarray, shown: int = 3) -> str:
@@ -419,6 +424,8 @@ class RobotScene:
         return pairs
 
     def within_limits(self, q: np.ndarray) -> bool:
+        """Whether every joint of ``q`` is within the URDF's position limits (MoveIt's ``joint_limits.yaml``
+        changes velocities and accelerations only, here as in gazelle's ``moveit_joint_limits``)."""
         return bool(self.scene.isValidConfiguration(np.asarray(q, dtype=float)))
 
     # ------------------------------------------------------------------ world
@@ -676,6 +683,7 @@ class RobotScene:
         return True
 
     def objects(self) -> list[SceneObject]:
+        """The scene's objects (world and attached), as added: what ``/get_planning_scene`` reports."""
         return [obj for obj, _ in self._objects.values()]
 
 

@@ -225,7 +225,20 @@ class ServoCore:
     def twist(
         self, q: np.ndarray, twist: np.ndarray, others: Mapping[str, float] | None = None
     ) -> tuple[int, np.ndarray, str]:
-        """command.cpp jointDeltaFromTwist for a twist already in the planning frame."""
+        """command.cpp jointDeltaFromTwist for a twist already in the planning frame.
+
+        Args:
+            q: the group's positions (rad or m), the state the step starts from.
+            twist: (vx, vy, vz, wx, wy, wz) in the planning frame. ``speed_units``: m/s and rad/s, each
+                part capped at ``scale.linear``/``scale.rotational`` by shrinking it whole (its direction
+                kept); ``unitless``: fractions of those scales, each component in [-1, 1].
+            others: positions of joints outside the group that move its frames (a torso under an arm).
+
+        Returns:
+            (status, joint step for this cycle, message): the step is the twist times the period through the
+            Jacobian's pseudo-inverse, scaled down approaching a singularity (status 1 or 2) and zero at the
+            hard stop (3); an invalid twist is INVALID (-1) with MoveIt's message.
+        """
         n = len(q)
         if not np.all(np.isfinite(twist)):
             return INVALID, np.zeros(n), "Invalid twist command."
@@ -245,7 +258,12 @@ class ServoCore:
     def pose(
         self, q: np.ndarray, target: np.ndarray, others: Mapping[str, float] | None = None
     ) -> tuple[int, np.ndarray, str]:
-        """command.cpp jointDeltaFromPose: ``target`` (4x4, planning frame) approached at the capped speeds."""
+        """command.cpp jointDeltaFromPose: ``target`` (4x4, planning frame) approached at the capped speeds.
+
+        The end effector's position error and its rotation's angle are each cut to what
+        ``scale.linear`` (m/s) and ``scale.rotational`` (rad/s) allow in one period, so a far pose is
+        approached along a straight line at those speeds and a near one reached in one cycle. Returns as
+        :meth:`twist` does."""
         current = self.k.pose(q, self.k.ee_frame, others)
         error = target[:3, 3] - current[:3, 3]
         period = self.period
@@ -303,7 +321,21 @@ class ServoCore:
 
     # ------------------------------------------------------------------ the next state
     def next_state(self, q: np.ndarray, status: int, delta: np.ndarray, kind: int, warning: str = "") -> ServoStep:
-        """servo.cpp getNextJointState after the delta: velocity limits, position limits less the margins."""
+        """servo.cpp getNextJointState after the delta: velocity limits, position limits less the margins.
+
+        Args:
+            q: the group's positions the step starts from.
+            status: the status of the command's step (:meth:`twist`, :meth:`pose`, :meth:`joint_jog`).
+            delta: the joint step for this period.
+            kind: the command type (JOINT_JOG, TWIST or POSE): which ``halt_all_joints_in_*_mode`` applies.
+            warning: the command's message, passed on.
+
+        Returns:
+            The next state: positions and velocities after scaling every joint by the one factor that keeps
+            each within its velocity limit (so the motion keeps its direction), and, for a joint heading past
+            its position limit less ``joint_limit_margins``, JOINT_BOUND with that joint (or all of them)
+            held.
+        """
         period = self.period
         if status == INVALID:
             return ServoStep(INVALID, q.copy(), np.zeros(len(q)), warning)
