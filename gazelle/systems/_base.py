@@ -96,7 +96,16 @@ class System:
     context), never state that shapes what it does next."""
 
     def configure(self, ctx: SystemContext) -> None:
-        """Read the configuration, check the entity, declare endpoints and actuators."""
+        """Read the configuration, check the entity, declare endpoints and actuators.
+
+        Called once, on the simulation thread, while the entity is staged: its bodies and joints are in
+        the world's spec but not yet compiled, so this is the one moment a system may add actuators or
+        change joint properties. Read the ``<plugin>``'s children through ``ctx.plugin.config`` (each tag
+        looked up is recorded; one never looked up is warned about with its file:line, so a user's
+        parameter is never dropped silently). Raise ``ValueError`` (or a subclass) naming the parameter
+        and the file for configuration that cannot work: the spawn is then refused with that message and
+        the staged entity discarded, the world left bit-identical.
+        """
 
     def seed_noise(self, seed: int) -> None:
         """Draw this system's noise from a stream seeded with ``seed`` (called before :meth:`configure`
@@ -112,19 +121,36 @@ class System:
         return sim_time_sec
 
     def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
-        """Forget internal state after a world reset."""
+        """Forget internal state after a world reset (gazebo_ros's ``/reset_world`` and
+        ``/reset_simulation``, simulation_interfaces' ``ResetSimulation``): odometry back to zero, rate
+        gates re-armed (``info.sim_time_sec`` may have gone back to 0), commands dropped. The world's
+        state has been reset before this is called."""
 
     def pre_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
-        """Before physics: write commands."""
+        """Before physics: write commands (actuator controls, joint velocities) for the steps that follow.
+
+        ``info.sim_time_sec`` is the time at the start of the block of steps about to run; the commands
+        hold for every step of it, so a system that must act between two steps says so with
+        :meth:`next_update`. Runs on the simulation thread: hand anything slow to another thread and take
+        the result at a later update."""
 
     def update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
-        """Around physics, by priority."""
+        """Around physics, by priority: before the steps when :attr:`priority` < ``PHYSICS`` (gz-sim's
+        ``PreUpdate``-like systems that must follow others' commands), after them otherwise."""
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
-        """After physics: observe; must not change the world."""
+        """After physics: observe and publish; must not change the world (gz-sim's ``PostUpdate`` contract:
+        every observer of a step sees the same state, whatever their order).
+
+        ``info.sim_time_sec`` is the time after the block's steps and the state is the state then. Publish
+        through the bus (an endpoint's ``publish``): the bus hands the payload to the ROS bridge's
+        outbox, which converts and publishes it off the simulation thread, so this should cost no more
+        than building the payload."""
 
     def shutdown(self) -> None:
-        """The entity is being removed."""
+        """The entity is being removed (deleted, or a failed spawn undone): release what :meth:`configure`
+        took that the world does not own (threads, GL contexts, files). Endpoints and actuators go with
+        the entity."""
 
     def node_parameters(self) -> dict[str, ParamValue]:
         """Values this system adds to its plugin node's parameters, beyond the ``<plugin>`` elements

@@ -241,7 +241,21 @@ class Bus:
     def advertise(
         self, owner: str, topic: str, msg_type: MessageKind, *, qos: Qos = Qos.DEFAULT, depth: int = 10
     ) -> Endpoint:
-        """Declare a publisher."""
+        """Declare a publisher: the ROS bridge makes an rclpy publisher of it (under the plugin node being
+        declared, if any) and converts each payload published to the ROS message of ``msg_type``.
+
+        Args:
+            owner: the entity the endpoint belongs to (its endpoints go when it is deleted).
+            topic: the resolved topic name (see :func:`resolve_topic` for a plugin's namespace and
+                ``<remapping>``s).
+            msg_type: one of :class:`MsgType`'s, or a :class:`DeclaredMessage` of a new sensor kind's.
+            qos: the ROS QoS it is published with (:class:`Qos`: sensor data, latched or the default).
+            depth: the QoS history depth.
+
+        Returns:
+            The endpoint; publish with its ``publish`` (check ``wanted`` first to skip building a payload
+            nobody listens to).
+        """
         return self._add(Endpoint(owner, topic, msg_type, True, qos, depth))
 
     def subscribe(
@@ -254,7 +268,14 @@ class Bus:
         qos: Qos = Qos.DEFAULT,
         depth: int = 10,
     ) -> Endpoint:
-        """Declare a subscription; ``callback`` may run on any thread."""
+        """Declare a subscription: the ROS bridge subscribes to ``topic`` and calls ``callback`` with each message
+        converted to its payload (``inject`` does the same without ROS).
+
+        ``callback`` may run on any thread (a ROS executor's, the viewer's, the test's): keep it to storing
+        the payload (a single assignment, or under a lock) and act on it in the next ``pre_update``, as
+        Gazebo's plugins take their commands under a mutex and apply them at the next update. Arguments
+        as :meth:`advertise`'s.
+        """
         return self._add(Endpoint(owner, topic, msg_type, False, qos, depth, callback))
 
     def _add(self, ep: Endpoint) -> Endpoint:
@@ -288,7 +309,10 @@ class Bus:
                     removed(c)
 
     def add_component(self, owner: str, component: Any) -> None:
-        """Announce a component of entity ``owner`` to the listeners (see :meth:`BusListener.component_added`)."""
+        """Announce a component of entity ``owner`` to the listeners (see :meth:`BusListener.component_added`):
+        something the ROS layer serves beyond topics, such as a trajectory controller's action server or a
+        controller manager's services. The bus stays ROS-free: the component is an object of the systems
+        layer, and the ROS layer picks the interfaces to serve for it by its type."""
         with self._lock:
             self._components.append((owner, component))
             listeners = list(self._listeners)
