@@ -107,7 +107,11 @@ class _Reader(ElementReader):
         return Plugin(element.get("name", ""), filename, to_config(element, self.source), self.loc(element))
 
     def sensor(self, element: etree._Element) -> Sensor | None:
-        """A ``<sensor type name>`` inside ``<gazebo reference=link>``."""
+        """A ``<sensor type name>`` inside ``<gazebo reference=link>``: what sdformat's URDF parser copies into
+        that link's SDF, so it is read as SDF's ``<sensor>`` is. The ``<pose>`` (x y z roll pitch yaw, six
+        numbers, metres and radians) is in the link's frame; ``<update_rate>`` 0 or absent means every step
+        for Gazebo's sensors; the whole element is kept (``config``) for the sensor's system to read its own
+        block (``<ray>``, ``<camera>``, noise) and its ``<plugin>``s, which gazebo_ros's sensor plugins are."""
         name = self.name(element, "<sensor>")
         stype = element.get("type")
         if not stype:

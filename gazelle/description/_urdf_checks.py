@@ -143,7 +143,14 @@ def check_attributes(root: etree._Element, reader: ElementReader) -> None:
 
 # --------------------------------------------------------------------------- structure
 def check_structure(doc: UrdfDocument, reader: ElementReader) -> None:
-    """Parents and children exist, one parent per link, no loops, one root."""
+    """Parents and children exist, one parent per link, no loops, one root.
+
+    urdfdom's ``initTree`` and ``initRoot`` rules (what ``check_urdf`` and robot_state_publisher refuse),
+    each an error at the joint's line: a joint's parent or child that is not a link (``world`` allowed as
+    a parent, as Gazebo's URDF loader fixes the robot to the world through it), a link that is its own
+    parent, a link with two parent joints (a kinematic loop URDF cannot describe), and more than one root
+    link. A ``<mimic>`` naming a joint the robot lacks is a warning, and that mimic is not enforced.
+    """
     parent_of: dict[str, Joint] = {}
     for joint in doc.joints.values():
         loc = joint.location

@@ -368,7 +368,9 @@ class ElementReader:
 
     # ---- links
     def link(self, element: etree._Element, materials: dict[str, Material]) -> LinkDraft | None:
-        """A ``<link>`` with its visuals, collisions and inertial."""
+        """A ``<link>`` with its visuals, collisions and inertial: any number of ``<visual>`` and ``<collision>``
+        (urdfdom keeps them all, each in the link frame at its ``<origin>``), one ``<inertial>`` (a second is
+        warned about and left out)."""
         name = self.name(element, "<link>")
         if name is None:
             return None
@@ -420,7 +422,13 @@ class ElementReader:
         return Collision(name, pose, geometry, Surface(), self.loc(element))
 
     def inertial(self, element: etree._Element) -> InertialDraft:
-        """An ``<inertial>``; bad mass or inertia become problems (warnings later), not errors."""
+        """An ``<inertial>``; bad mass or inertia become problems (warnings later), not errors.
+
+        The ``<origin>`` is the centre of mass and the inertia's principal-axes frame in the link frame;
+        ``<inertia>``'s six values are kg·m² about the centre of mass, a missing one 0 (urdfdom's default). A
+        missing or non-positive mass, or a tensor that is not physical (not positive definite, or breaking
+        the triangle inequality, which MuJoCo refuses), is kept as a problem: the link's inertia is then
+        derived from its collision shapes, with the warning, rather than the spawn refused."""
         self.check_children(element, "<inertial>")
         draft = InertialDraft(element, self.pose(element), None, None)
         mass_el, inertia_el = element.find("mass"), element.find("inertia")
@@ -451,7 +459,13 @@ class ElementReader:
 
     # ---- joints
     def joint(self, element: etree._Element) -> Joint | None:
-        """A ``<joint>`` (JOINT_* errors for a bad type, axis, parent or child element)."""
+        """A ``<joint>`` (JOINT_* errors for a bad type, axis, parent or child element).
+
+        URDF's joint frame is its child link's frame: ``<origin>`` places it in the parent link (X_PJ), and the
+        child sits at the joint with no offset (SDF's joints differ: placed in the child). Types are
+        urdfdom's six (``revolute``, ``continuous``, ``prismatic``, ``fixed``, ``floating``, ``planar``);
+        ``<mimic>``, ``<safety_controller>`` and ``<calibration>`` are kept for the systems that read them
+        (joint_state_publisher, ros2_control's mimic joints)."""
         name = self.name(element, "<joint>")
         if name is None:
             return None
