@@ -170,6 +170,9 @@ class _ServoGroup(_Controlled):
 
 
 def _pid(cfg: ConfigElement | None, log: logging.Logger, defaults: PidGains) -> PidGains:
+    """The PID gains a gz-sim joint controller reads (``<p_gain>``, ``<i_gain>``, ``<d_gain>``, ``<i_max>``,
+    ``<i_min>``, ``<cmd_max>``, ``<cmd_min>``, ``<cmd_offset>``), each defaulting to the controller's own
+    default when absent; a value that is not a number is warned about and the default used."""
     vals = {k: parse_float(cfg, k, getattr(defaults, k), log) for k in PidGains.__dataclass_fields__}
     return PidGains(**vals)
 
@@ -193,7 +196,8 @@ class JointPositionControllerConfig:
     kp (N·m/rad or N/m), ``d_gain`` its kv (integrated implicitly), ``cmd_max``/``cmd_min`` bound the force (and
     so does the joint's ``<limit><effort>``)."""
     use_velocity_commands: bool = False
-    """``<use_velocity_commands>``: a velocity servo at (target − q)/dt, clamped to the joint's velocity limit."""
+    """``<use_velocity_commands>``: a velocity servo at (target − q)/dt, capped at ``<cmd_max>`` when written and
+    at the joint's velocity limit."""
     initial_position: float = 0.0
     """``<initial_position>``: target before the first command."""
 
@@ -208,7 +212,16 @@ class JointPositionController(_ServoGroup):
         self.config = JointPositionControllerConfig()
 
     def configure(self, ctx: SystemContext) -> None:
-        """Read the plugin block, check the joints, add a servo per joint and subscribe to the command topic."""
+        """Read the plugin block, check the joints, add a servo per joint and subscribe to the command topic.
+
+        As gz-sim 8's JointPositionController.cc ``Configure``: every ``<joint_name>`` follows the one
+        command; the topic is ``<topic>``, else ``/model/<model>/<sub_topic>``, else
+        ``/model/<model>/joint/<first joint>/<joint_index>/cmd_pos``; the target starts at
+        ``<initial_position>``. gz's PID computes a joint force each step from the position error; here
+        the same gains drive MuJoCo's position servo (kp, kv integrated implicitly: stable at any gain), and
+        ``<use_velocity_commands>`` sets the joint's velocity to reach the target in one step instead, as
+        gz's velocity mode does (capped at ``<cmd_max>`` in rad/s or m/s when one is written, and at the
+        joint's velocity limit). ``<use_actuator_msg>`` (gz's Actuators topic) is not read, and warned."""
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         names = all_texts(cfg, "joint_name")
@@ -227,14 +240,18 @@ class JointPositionController(_ServoGroup):
         joints = self._joints(ctx, names, "JointPositionController")
         if not joints:
             return
+        # velocity mode's speed cap: gz's PreUpdate caps (target - q)/dt at |cmd_max| when <cmd_max> is written
+        # (isMaxSet). The joint's <limit><velocity> caps it too: gz's physics engines keep a velocity command
+        # within the joint's limits (DART's servo joints, not checked here in their source), and uncapped, a
+        # force-limited servo commanded (target - q)/dt rings about the target (measured: -1.51 rad for -0.8)
+        written_max = abs(g.cmd_max) if cfg is not None and cfg.find("cmd_max") is not None else math.inf
         for jn in joints:
             if c.use_velocity_commands:
                 j = ctx.entity.model.joint(jn)
-                vmax = j.axis.limit.velocity if j.axis is not None and j.axis.limit.velocity else math.inf
+                limit = j.axis.limit.velocity if j.axis is not None and j.axis.limit.velocity else math.inf
+                vmax = min(written_max, limit if limit > 0 else math.inf)
                 vel = add_velocity_servo(ctx.world, ctx.entity, jn)
-                self._commands.append(
-                    _StepVelocityToPosition(jn, vel, c.initial_position, vmax if vmax > 0 else math.inf)
-                )
+                self._commands.append(_StepVelocityToPosition(jn, vel, c.initial_position, vmax))
             else:
                 self._commands.append(
                     _Command(jn, add_position_servo(ctx.world, ctx.entity, jn, g), c.initial_position)
@@ -273,7 +290,14 @@ class JointController(_ServoGroup):
         self.config = JointControllerConfig()
 
     def configure(self, ctx: SystemContext) -> None:
-        """Read the plugin block, check the joints, add a servo per joint and subscribe to the command topic."""
+        """Read the plugin block, check the joints, add a servo per joint and subscribe to the command topic.
+
+        As gz-sim 8's JointController.cc: the command (rad/s or m/s) goes on ``<topic>``, else
+        ``/model/<model>/<sub_topic>``, else ``/model/<model>/joint/<first joint>/cmd_vel``, starting at
+        ``<initial_velocity>``. gz sets the joint's velocity command, which its physics meets exactly;
+        here a stiff velocity servo does the same within the joint's effort limit. With
+        ``<use_force_commands>`` gz runs a PID on the velocity error: here ``p_gain`` is the servo's kv and
+        ``cmd_max``/``cmd_min`` bound its force (its ``i_gain`` and ``d_gain`` are not used)."""
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         names = all_texts(cfg, "joint_name")
@@ -338,7 +362,11 @@ class JointCommands(_Controlled):
         """Joint name -> its command topic."""
 
     def configure(self, ctx: SystemContext) -> None:
-        """Read the plugin block, check the joints, add a servo per joint and subscribe to the command topic."""
+        """Read the plugin block, check the joints, add a servo per joint and subscribe to its command topic:
+        ``<ns>/<joint>/cmd_pos`` or ``cmd_vel`` (std_msgs/Float64), every movable joint when no
+        ``<joint_name>`` is given. gazelle's own plugin (there is no gazebo_ros one for bare joint
+        commands in ROS 2): the topics a ROS 1-era launch file's ``<joint>_position_controller/command``
+        remaps to."""
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         d = JointCommandsConfig()

@@ -262,6 +262,27 @@ def test_gz_joint_position_controller_reaches_a_target_against_gravity() -> None
     assert float(sim.world.data.qpos[qadr]) == pytest.approx(-0.8, abs=2e-3)
 
 
+@pytest.mark.parametrize("cmd_max", [None, 0.5])
+def test_gz_joint_position_controllers_velocity_mode_caps_its_speed_at_cmd_max_only(cmd_max) -> None:
+    """gz-sim 8 JointPositionController.cc (PreUpdate, OperationMode::ABS): the joint's velocity command is
+    (target - q)/dt, capped at <cmd_max> when the file writes one (isMaxSet): gazelle ignored it and capped
+    only at the joint's <limit><velocity> (3 rad/s here), which it still does."""
+    extra = f"<cmd_max>{cmd_max}</cmd_max>" if cmd_max is not None else ""
+    plugin = (
+        '<plugin filename="gz-sim-joint-position-controller-system" name="gz::sim::systems::JointPositionController">'
+        f"<joint_name>shoulder</joint_name><use_velocity_commands>true</use_velocity_commands>{extra}</plugin>"
+    )
+    sim, entity = spawn(ARM % plugin, name="arm", z=0.0)
+    system(entity, JointPositionController).command(-0.8)
+    sim.step(round(0.1 / sim.world.timestep))
+    qadr, _ = sim.world.joint_address("arm", "shoulder")
+    turned = float(sim.world.data.qpos[qadr])
+    if cmd_max is None:
+        assert turned == pytest.approx(-0.3, abs=0.02)  # the joint's 3 rad/s for 0.1 s
+    else:
+        assert turned == pytest.approx(-0.05, abs=0.01)  # 0.5 rad/s for 0.1 s
+
+
 def test_gz_joint_velocity_controller_and_classic_command_topics() -> None:
     plugins = (
         '<plugin filename="gz-sim-joint-controller-system" name="gz::sim::systems::JointController">'
