@@ -221,7 +221,14 @@ class JointStatePublisher(System):
         return remaps
 
     def configure(self, ctx: SystemContext) -> None:
-        """Read the configuration, find the joints, advertise the topics (and publish the latched ones)."""
+        """Read the configuration, find the joints, advertise the topics (and publish the latched ones).
+
+        As gazebo_ros_joint_state_publisher.cpp (gazebo_ros_pkgs, ros2 branch) ``Load``: ``<update_rate>``
+        defaults to 100 Hz with its info line, only the ``<joint_name>``s listed are published (none listed is
+        its error "Plugin missing <joint_name>s"), a joint the model lacks is skipped with "Joint X does not
+        exist!", and the topic is ``joint_states`` in the plugin's ``<ros>`` namespace (the robot's, else)
+        with its remappings. A fixed or floating joint counts as missing here: it has no position to
+        publish."""
         log = ctx.logger
         model: Model = ctx.entity.model
         remaps = self._read_config(ctx, "joint_states")

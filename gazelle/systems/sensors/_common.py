@@ -125,7 +125,13 @@ SIMULATED_NOISE = frozenset({"none", "gaussian"})
 
 
 def parse_noise(el: ConfigElement | None, log: logging.Logger, what: str) -> Noise:
-    """A ``<noise>`` element, its type as an attribute (IMU channels) or a ``<type>`` child (rays)."""
+    """A ``<noise>`` element, its type as an attribute (IMU channels) or a ``<type>`` child (rays).
+
+    As gz-sensors' GaussianNoiseModel: each reading gets ``mean`` plus N(0, ``stddev``²), and a bias drawn
+    once per channel and run (see :meth:`Noise.bias`). What gazelle does not model is said once, naming the
+    element: ``gaussian_quantized`` runs without its quantization, another type reads exactly, and
+    ``<dynamic_bias_*>`` (a bias that wanders) and ``<precision>`` are not simulated. The draws come from
+    the system's seeded stream, so a run with the same seed repeats its noise bit for bit."""
     if el is None:
         return Noise()
     kind = (el.attr("type") or child_text(el, "type") or "none").strip().lower()
@@ -420,7 +426,15 @@ class _SensorSystem(System):
 
     def _configure_common(self, ctx: SystemContext, *, advertise: bool = True) -> bool:
         """Read link, pose, rate and output (and declare the output topic unless ``advertise`` is False);
-        False (after an error naming why) when it cannot run."""
+        False (after an error naming why) when it cannot run.
+
+        A sensor is configured one of two ways. Inside a ``<sensor>`` (SDF, or URDF's ``<gazebo
+        reference>``): the link is the sensor's, its pose the offset from it, its rate ``<update_rate>``.
+        As a ROS 1-era model plugin without a ``<sensor>`` (gazebo_ros's IMU plugin with ``<bodyName>`` and
+        ``<updateRate>``, as TurtleBot3's Noetic files have it): the link is ``<bodyName>``, no offset, the
+        plugin's rate. Either way the topic and frame follow the plugin's or gz-sim's rules
+        (:func:`sensor_output`), and a link the model lacks, or no link at all, leaves the sensor doing
+        nothing with an error naming the file and line."""
         log = ctx.logger
         self.sensor, link = ctx.sensor, ctx.link
         self.config = c = parse_plugin_config(ctx)
