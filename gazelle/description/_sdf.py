@@ -445,7 +445,13 @@ class _Loader(_Parts):
         joint_els: list[tuple[str, etree._Element]],
         frame_els: list[tuple[str, etree._Element]],
     ) -> None:
-        """A model's links, joints, frames (in the frame of the body they are attached to) and plugins."""
+        """A model's links, joints, frames (in the frame of the body they are attached to) and plugins.
+
+        SDF 1.7's ``<frame>`` is a named pose attached to a link, a joint or another frame; what a frame
+        finally rides on is a body, so each is kept as (that body, its pose in the body: X_BF = X_BM · X_MF),
+        which is what a sensor, a tf lookup or a joint's ``relative_to`` needs (sdformat's FrameAttachedTo
+        graph resolves it the same way). A frame attached to ``world`` is fixed in the world. Links come
+        before joints because a joint's frame is resolved against its child link's pose."""
         for link_name, link_el in link_els:
             link = self.link(link_name, link_el, doc, scope)
             if link is not None:
@@ -617,7 +623,12 @@ class _Loader(_Parts):
 
     def spherical_coordinates(self, element: etree._Element, doc: _Doc) -> SphericalCoordinates | None:
         """``<spherical_coordinates>``, which GPS sensors read; None when the world has none. Only an ENU world
-        frame is simulated (another orientation is a warning)."""
+        frame is simulated (another orientation is a warning).
+
+        The world origin's latitude and longitude (degrees, WGS84) and ``<elevation>`` (metres), and
+        ``<heading_deg>``, which turns the world frame about the vertical against ENU (the GPS sensor's
+        ``world_to_enu`` applies it). gz-sim reads the same element for its NavSat sensor; absent, gz puts
+        the origin at 0° N 0° E, where gazelle's GPS sensors publish too (with a warning at the sensor)."""
         spherical = None
         sph_el = _find(element, "spherical_coordinates")
         if sph_el is not None:

@@ -180,7 +180,12 @@ class _Reader:
         effectors: list[tuple[EndEffector, etree._Element]],
     ) -> None:
         """References between SRDF elements: a subgroup, a group state's group, an end effector's groups
-        that are not defined are warned about, and the semantics load."""
+        that are not defined are warned about, and the semantics load.
+
+        Warnings, not errors, as MoveIt's srdfdom loads such a file and leaves the dangling reference out
+        (a MoveIt Setup Assistant file edited by hand, a group renamed and one state forgotten): the rest of
+        the robot's semantics still plan. The planner then says which group it lacks if it is asked for
+        one."""
         for ref, element in subgroup_refs:
             if ref not in group_els:
                 self.sink.warning(
@@ -204,7 +209,13 @@ class _Reader:
 
     def group(self, element: etree._Element, passive: list[str], subgroup_refs: list) -> Group | None:
         """``<group>``: its links, joints, chains, subgroups (checked once every group is read) and passive joints
-        listed inside it."""
+        listed inside it.
+
+        The four ways SRDF names a group's members, as MoveIt's JointModelGroup reads them: ``<link>``s (their
+        parent joints), ``<joint>``s, a ``<chain base_link tip_link>`` (the joints between, the arm's usual
+        form) and ``<group>``s (subgroups, whose members join). Names are kept as written; whether the URDF
+        has them is checked against the robot when a scene is built (a group naming a missing link is left
+        out there, with its line)."""
         name = self.attr(element, "name")
         links: list[str] = []
         joints: list[str] = []
