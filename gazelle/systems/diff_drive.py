@@ -441,7 +441,14 @@ class DiffDrive(System):
 
     def _integrate_encoders(self, sim_time_sec: float) -> None:
         """Siegwart 2011, as the classic plugin's encoder odometry (pair 0 only): the wheels' travel
-        since the last update, once per update as the classic plugin does it."""
+        since the last update.
+
+        gazebo_ros_diff_drive.cpp (ROS 2 branch, ``UpdateOdometryEncoder``) integrates every physics step,
+        from each wheel's velocity times the step (pair 0's radius for both wheels); here it runs once per
+        update, from each wheel's change of angle, which keeps Python out of the steps between. The
+        distance travelled is then exact where the velocity sum approximates it; the heading's arc step
+        (Siegwart's midpoint) is taken over the update instead of a step. Kept as upstream: the reported
+        linear speed is the length of the step over its time, never negative, even driving backwards."""
         if len(self._wheels) < 2:
             return
         right, left = self._wheels[0], self._wheels[1]
