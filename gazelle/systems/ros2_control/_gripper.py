@@ -72,9 +72,11 @@ class GripperActionController(Controller):
         super().on_cleanup()
 
     def command_interfaces(self) -> list[str]:
+        """The joint's ``position`` (position variant) or ``effort`` (effort variant) command interface."""
         return [f"{self.joint}/{self.interface}"]
 
     def state_interfaces(self) -> list[str] | None:
+        """Position and velocity: the goal check and the stall clock read both (Jazzy claims the same two)."""
         return [f"{self.joint}/position", f"{self.joint}/velocity"]
 
     def submit(self, goal: GripperGoal) -> None:
@@ -96,6 +98,8 @@ class GripperActionController(Controller):
         self._slow_since: float | None = None
 
     def on_deactivate(self) -> None:
+        """Going inactive aborts the goal in progress (the action's client hears ABORTED); the last command
+        stays on the interface, so the finger holds where it was told."""
         if self._goal is not None:
             self._goal.finish(GoalState.ABORTED)
         self._goal = None
@@ -103,7 +107,13 @@ class GripperActionController(Controller):
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
         """One cycle: take a new goal (aborting the one it replaces), command its position (or the PID's effort,
         bounded by the goal's ``max_effort``), feed back position and effort, and end the goal when the finger is
-        within ``goal_tolerance`` or has stalled (see the module docstring)."""
+        within ``goal_tolerance`` or has stalled (see the module docstring).
+
+        The end is Jazzy's ``check_for_success`` (gripper_action_controller_impl.hpp): within tolerance is
+        success with ``reached_goal``; otherwise each cycle faster than ``stall_velocity_threshold`` restarts
+        the stall clock, and ``stall_timeout`` seconds without movement end it with ``stalled`` (succeeded when
+        ``allow_stalling``, aborted else). Either way the goal's position stays commanded: a finger closing on
+        an object keeps squeezing it, which is how a grasp holds in Gazebo as on hardware."""
         q, v = states[f"{self.joint}/position"], states[f"{self.joint}/velocity"]
         with self._lock:
             incoming, self._incoming = self._incoming, None
