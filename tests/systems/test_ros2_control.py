@@ -194,6 +194,38 @@ def test_a_forward_command_controller_drives_the_wheels_and_switches_with_the_di
     assert joint.velocity == pytest.approx(10.0, rel=0.02)
 
 
+def test_a_forward_command_of_the_wrong_size_deactivates_the_controller_and_a_nan_is_dropped(make_sim, caplog):
+    """Jazzy's forward_controllers_base.cpp: a command with a non-finite value is dropped with "Non-finite
+    value received. Dropping message" (the last command stays); one of the wrong size makes update() return
+    ERROR ("command size (3) does not match number of interfaces (2)"), and the controller manager
+    deactivates the controller ("Deactivating controllers : [ wheels ] as their update resulted in an
+    error!"). gazelle refused the wrong size in the callback and kept the controller active."""
+    sim = make_sim()
+    cm = _manager(_diffbot(sim))
+    cm.files.append(
+        parse_params(
+            "wheels:\n  ros__parameters:\n    type: velocity_controllers/JointGroupVelocityController\n"
+            "    joints: [left_wheel_joint, right_wheel_joint]\n"
+        )
+    )
+    cm.load_controller("wheels")
+    cm.configure_controller("wheels")
+    cm.switch_controller(["wheels"], [])
+    sim.bus.inject("/wheels/commands", MsgType.FLOAT64_ARRAY, Float64Array((5.0, 5.0)))
+    sim.step(500)
+    sim.bus.inject("/wheels/commands", MsgType.FLOAT64_ARRAY, Float64Array((math.nan, 1.0)))
+    sim.step(500)
+    joint = sim.world.joint("diffbot", "left_wheel_joint")
+    assert joint.velocity == pytest.approx(5.0, rel=0.02)  # the NaN command was dropped
+    assert "Non-finite value received. Dropping message" in caplog.text
+    assert cm.controllers["wheels"].controller.state == "active"
+    sim.bus.inject("/wheels/commands", MsgType.FLOAT64_ARRAY, Float64Array((1.0, 2.0, 3.0)))
+    sim.step(20)
+    assert "command size (3) does not match number of interfaces (2)" in caplog.text
+    assert "Deactivating controllers : [ wheels ] as their update resulted in an error!" in caplog.text
+    assert cm.controllers["wheels"].controller.state == "inactive"
+
+
 # --------------------------------------------------------------------------- r6bot and JTC
 def _r6bot(yaml_path) -> tuple[Simulation, ControllerManager]:
     sim = new_simulation()

@@ -9,7 +9,7 @@ import numpy as np
 from .._bus import MsgType, Qos
 from .._payloads import DynamicJointState, Float64Array, Imu, JointStates, JointStatesBlock, WrenchStamped
 from ._controller import Controller, values_getter
-from ._hardware import FT_INTERFACES, IMU_INTERFACES, ControlError
+from ._hardware import FT_INTERFACES, IMU_INTERFACES, ControlError, UpdateFailed
 
 _JOINT_STATE_FIELDS = ("position", "velocity", "effort")
 
@@ -183,13 +183,11 @@ class ForwardCommandController(Controller):
         self.subscribe("~/commands", MsgType.FLOAT64_ARRAY, self._on_commands)
 
     def _on_commands(self, msg: Float64Array) -> None:
-        """Keep the latest command for the next cycle; one with the wrong number of values is refused with a log
-        line and the previous command stays, as in ros2_controllers."""
-        if len(msg.data) != len(self._joints):
-            self.log.error(
-                f"{self.name}: command size ({len(msg.data)}) does not match the number of joints "
-                f"({len(self._joints)}); ignored"
-            )
+        """Keep the latest command for the next cycle, as Jazzy's forward_controllers_base.cpp does: a command
+        with a value that is not finite is dropped with its warning (the previous one stays); its size is
+        checked by the cycle that writes it."""
+        if not all(math.isfinite(v) for v in msg.data):
+            self.log.warning("Non-finite value received. Dropping message")
             return
         self._latest, self._fresh = msg.data, True
 
@@ -200,8 +198,17 @@ class ForwardCommandController(Controller):
         self._latest, self._fresh = None, False  # commands from before activation are not replayed
 
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
-        """Write the command that arrived since the last cycle; between commands the hardware holds the last one."""
+        """Write the command that arrived since the last cycle; between commands the hardware holds the last one.
+
+        A command whose size is not the number of joints fails the cycle, as Jazzy's ``update`` returns
+        ERROR with its log line: the manager then deactivates the controller (the hardware keeps the last
+        command it had)."""
         if self._fresh and self._latest is not None:
+            if len(self._latest) != len(self._joints):
+                self.log.error(
+                    f"command size ({len(self._latest)}) does not match number of interfaces ({len(self._joints)})"
+                )
+                raise UpdateFailed(f"controller '{self.name}': command size does not match its joints")
             for key, value in zip(self.command_interfaces(), self._latest, strict=True):
                 commands[key] = value
             self._fresh = False

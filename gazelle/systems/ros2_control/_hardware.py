@@ -67,6 +67,11 @@ class ControlError(ValueError):
     """A ``<ros2_control>`` block or request that cannot be honoured; the message names it."""
 
 
+class UpdateFailed(ControlError):
+    """A controller's ``update`` returned ros2_control's ``return_type::ERROR`` (it logged why): the manager
+    deactivates it, as Jazzy's ``ControllerManager::update`` does, with its log line."""
+
+
 @dataclass
 class _Joint:
     """One ``<joint>`` of a ``<ros2_control>`` block: the simulated joint, the MuJoCo actuator behind each of

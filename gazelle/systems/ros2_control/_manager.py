@@ -43,7 +43,7 @@ from ._broadcasters import (
 from ._controller import ACTIVE, FINALIZED, INACTIVE, UNCONFIGURED, Controller, ControllerContext
 from ._diff_drive import DiffDriveController
 from ._gripper import EffortGripperActionController, GripperActionController
-from ._hardware import ControlError, SimHardware
+from ._hardware import ControlError, SimHardware, UpdateFailed
 from ._params import Params, ParamsError, ParamsFile, load_params, parse_params
 from ._trajectory import JointTrajectoryController
 
@@ -378,6 +378,9 @@ class ControllerManager(System):
             loaded.last_update = t
             try:
                 c.update(t, period, states, commands)
+            except UpdateFailed:  # return_type::ERROR: Jazzy's controller_manager.cpp update() deactivates it
+                self.log.error(f"Deactivating controllers : [ {name} ] as their update resulted in an error!")
+                self._deactivate(name)
             except Exception as err:  # a controller that raises is deactivated, the robot holds
                 self.log.error(f"controller '{name}' raised in update: {type(err).__name__}: {err}; it is deactivated")
                 self._deactivate(name)
