@@ -130,7 +130,8 @@ from std_msgs.msg import Float64
 NODE = {node!r}
 
 
-def test_a_slow_node_ticks_every_tenth_of_a_second_of_sim_time(gazelle_sim, ros):
+def _ticking(gazelle_sim, ros):
+    # the slow ticker started and past its start-up: (its ticks, how many came before)
     ticks = ros.subscribe("/ticks", Float64)
     gazelle_sim.run([sys.executable, NODE], name="slow_ticker")
     ros.wait_until(lambda: ros.node.count_publishers("/ticks") > 0, 60, "the slow_ticker node")
@@ -138,22 +139,25 @@ def test_a_slow_node_ticks_every_tenth_of_a_second_of_sim_time(gazelle_sim, ros)
     # world steps on meanwhile: nothing waits for discovery), and its timer's first period is measured
     # from whichever clock it had; from its third tick on it runs on the clock the test steps
     gazelle_sim.run_until(lambda: len(ticks) >= 3, timeout=10.0, what="3 ticks", step=0.01)
-    first = len(ticks)
-    gazelle_sim.run_until(lambda: len(ticks) >= first + 30, timeout=10.0, what="30 more ticks", step=0.01)
+    return ticks, len(ticks)
+
+
+def _gaps(ticks, first):
     times = [m.data for m in ticks.messages[first - 1 :]]
-    gaps = [round(b - a, 4) for a, b in zip(times, times[1:])]
+    return [round(b - a, 4) for a, b in zip(times, times[1:])]
+
+
+def test_a_slow_node_ticks_every_tenth_of_a_second_of_sim_time(gazelle_sim, ros):
+    ticks, first = _ticking(gazelle_sim, ros)
+    gazelle_sim.run_until(lambda: len(ticks) >= first + 30, timeout=10.0, what="30 more ticks", step=0.01)
+    gaps = _gaps(ticks, first)
     assert len(gaps) >= 30 and all(abs(g - 0.1) < 0.011 for g in gaps), gaps
 
 
 def test_one_long_run_for_waits_for_the_slow_node_too(gazelle_sim, ros):
-    ticks = ros.subscribe("/ticks", Float64)
-    gazelle_sim.run([sys.executable, NODE], name="slow_ticker")
-    ros.wait_until(lambda: ros.node.count_publishers("/ticks") > 0, 60, "the slow_ticker node")
-    gazelle_sim.run_until(lambda: len(ticks) >= 3, timeout=10.0, what="3 ticks", step=0.01)
-    first = len(ticks)
+    ticks, first = _ticking(gazelle_sim, ros)
     gazelle_sim.run_for(3.0)  # one call: stepped 50 ms at a time, waiting for the node after each
-    times = [m.data for m in ticks.messages[first - 1 :]]
-    gaps = [round(b - a, 4) for a, b in zip(times, times[1:])]
+    gaps = _gaps(ticks, first)
     # a tick reads the newest /clock it has heard: at most one 50 ms chunk after its time
     assert len(gaps) >= 29 and all(abs(g - 0.1) < 0.051 for g in gaps), gaps
 """

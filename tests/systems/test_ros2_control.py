@@ -173,7 +173,8 @@ def test_two_namespaced_robots_each_have_their_own_manager_and_topics(make_sim):
     assert odom2[-1].frame_id == "r2/odom"  # tf_frame_prefix defaults to the namespace
 
 
-def test_a_forward_command_controller_drives_the_wheels_and_switches_with_the_diff_drive(make_sim):
+def _diffbot_with_wheels(make_sim) -> tuple[Simulation, ControllerManager]:
+    """The diffbot with a configured (inactive) JointGroupVelocityController ``wheels`` on its two wheels."""
     sim = make_sim()
     cm = _manager(_diffbot(sim))
     cm.files.append(
@@ -182,9 +183,14 @@ def test_a_forward_command_controller_drives_the_wheels_and_switches_with_the_di
             "    joints: [left_wheel_joint, right_wheel_joint]\n"
         )
     )
-    _start(cm, DIFFBOT_YAML, "diffbot_base_controller")
     cm.load_controller("wheels")
     cm.configure_controller("wheels")
+    return sim, cm
+
+
+def test_a_forward_command_controller_drives_the_wheels_and_switches_with_the_diff_drive(make_sim):
+    sim, cm = _diffbot_with_wheels(make_sim)
+    _start(cm, DIFFBOT_YAML, "diffbot_base_controller")
     with pytest.raises(ControlError, match="claimed by 'diffbot_base_controller'"):
         cm.switch_controller(["wheels"], [])
     cm.switch_controller(["wheels"], ["diffbot_base_controller"])
@@ -200,16 +206,7 @@ def test_a_forward_command_of_the_wrong_size_deactivates_the_controller_and_a_na
     ERROR ("command size (3) does not match number of interfaces (2)"), and the controller manager
     deactivates the controller ("Deactivating controllers : [ wheels ] as their update resulted in an
     error!"). gazelle refused the wrong size in the callback and kept the controller active."""
-    sim = make_sim()
-    cm = _manager(_diffbot(sim))
-    cm.files.append(
-        parse_params(
-            "wheels:\n  ros__parameters:\n    type: velocity_controllers/JointGroupVelocityController\n"
-            "    joints: [left_wheel_joint, right_wheel_joint]\n"
-        )
-    )
-    cm.load_controller("wheels")
-    cm.configure_controller("wheels")
+    sim, cm = _diffbot_with_wheels(make_sim)
     cm.switch_controller(["wheels"], [])
     sim.bus.inject("/wheels/commands", MsgType.FLOAT64_ARRAY, Float64Array((5.0, 5.0)))
     sim.step(500)
