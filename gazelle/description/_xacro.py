@@ -207,7 +207,15 @@ def _xacro_parse(inp: Any, filename: str | None = None) -> Any:
 
 @contextlib.contextmanager
 def _patched(resolver: ResourceResolver, tracker: _Tracker) -> Iterator[None]:
-    """Install our hooks into the xacro modules, restoring everything afterwards."""
+    """Install our hooks into the xacro modules, restoring everything afterwards.
+
+    xacro (the PyPI package ROS uses) is a module of globals, not an object: ``$(find pkg)`` is answered by
+    a function in its substitution table, files are read by ``xacro.parse``, warnings printed by
+    ``xacro.warning``. To expand a user's file unchanged and still name file:line in every message, the
+    hooks answer ``$(find)`` from gazelle's resource roots (a package outside them is an error, not a file
+    read from anywhere), parse with line numbers kept, and record which element each step was on. Each
+    global is saved and put back (and xacro's include list and argument table emptied), so one expansion
+    leaves nothing for the next, in this process or a test's."""
     find = _find_with(resolver)
     patches: list[tuple[Any, str, Any]] = [
         (xacro_subst, "_eval_find", find),
@@ -235,7 +243,12 @@ def _patched(resolver: ResourceResolver, tracker: _Tracker) -> Iterator[None]:
 
 
 def _describe(err: BaseException) -> str:
-    """A one-line message for a xacro failure, without xacro's repeated wrapping."""
+    """A one-line message for a xacro failure, without xacro's repeated wrapping.
+
+    xacro wraps an error once per level it passes through (an include in a macro in an include), each
+    wrapper repeating the message with a suffix naming where; unwrapped here into the innermost message,
+    then the places, so the user reads the cause first. A missing package and a name error are shown as
+    they are; anything else with its type, as it is a xacro failure the user may need to search for."""
     parts: list[str] = []
     suffixes: list[str] = []
     node: BaseException | None = err

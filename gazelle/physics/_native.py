@@ -106,7 +106,16 @@ def library_path() -> Path:
 
 
 def build(quiet: bool = False) -> Path | None:
-    """Build the library unless it is there; its path, or None (after a warning) when it cannot be built."""
+    """Build the library unless it is there; its path, or None (after a warning) when it cannot be built.
+
+    The library is named by the hash of its source, the compiler flags and the MuJoCo version (see
+    :func:`library_path`), so a stale build is never loaded: a change to any of them is a new file. It is
+    built into a temporary file in the owner-only cache folder and renamed into place (two processes
+    building at once each finish whole, and neither loads half a file); a folder another user could write
+    to is refused, as loading code from it would run theirs. Without a compiler the servo cycles run in
+    Python: the same numbers (the C loop mirrors the Python arithmetic, ``-ffp-contract=off``), slower.
+    The build is linked against the very ``libmujoco`` the Python bindings load, with its folder as the
+    rpath: the loop reads the bindings' mjModel and mjData, whose layouts are that library's."""
     target = library_path()
     if target.is_file() and not target.is_symlink():
         return target
