@@ -188,7 +188,13 @@ def _plugin_plans(
     warn: Callable[[str, Any], None],
 ) -> list[SensorPlan]:
     """A sensor's plans through the gazebo_ros plugins inside it: one per plugin that publishes its type;
-    a warning for each other plugin (unknown, or of another sensor type)."""
+    a warning for each other plugin (unknown, or of another sensor type).
+
+    In Gazebo Classic a sensor publishes nothing by itself: each ``<plugin>`` inside it makes one ROS
+    interface of it (a ray sensor with gazebo_ros_ray_sensor publishes LaserScan or PointCloud2 as its
+    ``<output_type>`` says; two plugins, two topics). A plugin is found by its file name first, then by its
+    ``name`` attribute. A plugin that exists but for another sensor type (a camera plugin in an IMU) is
+    warned about rather than run on data it was not written for."""
     plans = []
     for plugin in sensor.plugins:
         key = normalised(plugin.filename) if normalised(plugin.filename) in sensor_plugins else normalised(plugin.name)
@@ -238,6 +244,9 @@ def plan_sensors(
     def warn(text: str, where: Any) -> None:
         out.append(Diagnostic(ErrorCode.ELEMENT_UNSUPPORTED, Severity.WARNING, text, where))
 
+    # per sensor, the first rule that applies: its own plugins; a Classic model's sensor without one
+    # publishes nothing (said); a gz-sim world system for its type; a known type whose world system the
+    # world lacks (said, naming the system to add); a type gazelle does not simulate (said)
     for link in model.links:
         for sensor in link.sensors:
             label = f"sensor '{sensor.name}' ({sensor.type}) on link '{link.name}'"
