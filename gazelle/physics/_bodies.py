@@ -127,7 +127,14 @@ def _add_dof(
     limited: bool,
     axis: JointAxis | None,
 ) -> mujoco.MjsJoint:
-    """One MuJoCo joint of a description's joint: its limits, damping, friction, spring and effort limit."""
+    """One MuJoCo joint of a description's joint: its limits, damping, friction, spring and effort limit.
+
+    The mapping is what gz-sim's physics gives the same joint: ``<dynamics><damping>`` is viscous damping
+    (MuJoCo integrates it implicitly, stable at any value), ``<friction>`` Coulomb friction
+    (``frictionloss``), the SDF spring ``stiffness`` about ``springref``; ``<limit><effort>`` bounds the
+    force actuators may apply to a hinge or slide (``actfrcrange``: what ros2_control and plugins command
+    cannot exceed it, as Gazebo clamps a joint's force command to its effort limit), while a passive force
+    (a spring, gravity through a contact) is not bounded by it, as in Gazebo."""
     limit = axis.limit if axis is not None else None
     dyn = axis.dynamics if axis is not None else None
     j = body.add_joint(name=jname, type=kind, pos=pos, axis=jaxis)

@@ -598,7 +598,13 @@ class PhysicsWorld(WorldState):
 
     def _steps(self, k: int, plans: list[ServoPlan] | None = None) -> int:
         """``k`` steps in one MuJoCo call (with ``plans``' cycles, which may stop it sooner: the steps
-        taken are returned); after an arena growth (see :meth:`_guarded`) only the rest."""
+        taken are returned); after an arena growth (see :meth:`_guarded`) only the rest.
+
+        One ``mj_step(nstep=k)`` keeps the whole block in C: Python runs once per block, not per step.
+        MuJoCo reports a full arena (more contacts than the model's memory holds: a pile of spawned
+        objects) as a fatal error partway through; the steps already taken stand, the arena is grown and
+        only the steps left to ``t_end`` are taken, so the block ends at the time it would have. Any other
+        fatal error is the caller's (a diverged world, reported with the entity that diverged)."""
         if plans:
             return self._planned_steps(k, plans)
         t0 = self.data.time
