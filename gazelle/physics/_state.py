@@ -218,7 +218,17 @@ class WorldState(WorldQueries):
         self, entity: str, joint: str, position: float | None = None, velocity: float | None = None
     ) -> None:
         """Set the position and/or velocity of a 1-dof (hinge or slide) joint of an entity, by its
-        description name; the way to move a kinematic joint, which no force moves."""
+        description name; the way to move a kinematic joint, which no force moves.
+
+        Used for a ros2_control ``initial_value`` and for kinematic joints: the value is written into the
+        state and the kinematics recomputed at once (``mj_forward``), so a pose read, a sensor or a contact
+        check before the next step already sees it. Units are the joint's (rad
+        or m, per second for the velocity); a value that is not finite is refused before anything changes.
+
+        Raises:
+            WorldError: no such entity or joint (NOT_FOUND), a value that is not finite (INVALID_POSE), or a
+                joint with more than one degree of freedom (INCORRECT_STATE).
+        """
         e = self.entities.get(entity)
         if e is None:
             raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' does not exist")

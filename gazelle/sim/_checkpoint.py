@@ -162,7 +162,13 @@ class _Unpickler(pickle.Unpickler):
 
     def persistent_load(self, pid: Any) -> Any:
         """The rebuilt world's object for a saved reference; a reference the rebuilt world lacks (another world, a
-        spawn that failed) is a CheckpointError naming it."""
+        spawn that failed) is a CheckpointError naming it.
+
+        The world, its bus, the simulation, its entities and models are not pickled: a checkpoint holds
+        their names, and the loading process rebuilds them from the description files (MuJoCo's compiled
+        model cannot be unpickled into another process's MuJoCo anyway). What systems hold of them
+        (a controller's endpoint, a sensor's entity) is therefore saved as a reference and resolved here,
+        so the restored system talks to the rebuilt bus, not to a copy of the old one."""
         kind = pid[0]
         if kind == "world":
             return self.sim.world
@@ -202,7 +208,12 @@ def _dumps(obj: Any, sim: Simulation, what: str) -> bytes:
 
 
 def _culprit(obj: Any, sim: Simulation, path: str, depth: int) -> str | None:
-    """The attribute path (``Lidar._renderer: ``) of the first value under ``obj`` that cannot be saved."""
+    """The attribute path (``Lidar._renderer: ``) of the first value under ``obj`` that cannot be saved.
+
+    pickle's own error names the type it could not pickle (``cannot pickle 'EGLContext' object``), not
+    where it sits: a plugin author needs the attribute, to list it in the system's ``checkpoint_skip``.
+    The search tries each attribute in turn down to ``depth`` levels and returns the deepest path that
+    still fails; its cost is paid only when a save has already failed."""
     try:
         _Pickler(io.BytesIO(), sim).dump(obj)
         return None
