@@ -287,7 +287,14 @@ class Camera(_SensorSystem):
         """gazebo_ros_camera's own CameraInfo and depth limits (None: gz-sim's, from the rendered projection)."""
 
     def configure(self, ctx: SystemContext) -> None:
-        """Parse the ``<camera>`` block and the plugin; declare the image, info, depth and points topics."""
+        """Parse the ``<camera>`` block and the plugin; declare the image, info, depth and points topics.
+
+        Who configured the camera decides its topics and its CameraInfo: a gazebo_ros camera plugin
+        (``<camera_name>/image_raw`` and ``camera_info`` in its node's namespace, its own projection and
+        ``<hack_baseline>``; a depth camera adds ``depth/image_raw`` and ``points``), or gz-sim's sensor
+        system (the sensor's ``<topic>`` with ``camera_info`` beside it, the projection from the rendered
+        intrinsics). The image is rendered at the sensor's rate off the physics state of its step; what
+        the plugin asks that is not simulated (``<triggered>``) is said, never silently dropped."""
         spec = self._parse_sensor(ctx, "camera", parse_camera)
         if spec is None or ctx.sensor is None:
             return
