@@ -27,24 +27,28 @@ def drive(server_args: tuple[str, ...]) -> tuple[list[float], float, Sim]:
     domain = reserve_domain()
     env = {**os.environ, "GAZELLE_TEST_PUBLISH_DELAY_SEC": str(DELAY)}
     sim = Sim(domain_id=domain.domain_id, env=env, server_args=server_args)
-    sim.spawn(SEED_XACRO, "simple_robot", pose=(0.0, 0.0, 0.07))
-    odom = sim.ros.subscribe("/odom", Odometry)
-    sim.ros.wait_until(lambda: sim.ros.node.count_publishers("/odom") > 0, 30, "/odom")
-    # the test has seen the server's publisher, but the server may not have matched the test's reader yet:
-    # what it publishes before then is lost (volatile), and a fixed 0.05 s of steps could all be (a fresh
-    # clone's run under load heard nothing in 30 s with --drop-when-behind). Step until one arrives
-    sim.run_until(lambda: len(odom) > 0, timeout=5.0, what="the first /odom at the test")
-    t0 = time.perf_counter()
-    end = sim.run_for(2.0)
-    wall = time.perf_counter() - t0
+    try:
+        sim.spawn(SEED_XACRO, "simple_robot", pose=(0.0, 0.0, 0.07))
+        odom = sim.ros.subscribe("/odom", Odometry)
+        sim.ros.wait_until(lambda: sim.ros.node.count_publishers("/odom") > 0, 30, "/odom")
+        # the test has seen the server's publisher, but the server may not have matched the test's reader yet:
+        # what it publishes before then is lost (volatile), and a fixed 0.05 s of steps could all be (a fresh
+        # clone's run under load heard nothing in 30 s with --drop-when-behind). Step until one arrives
+        sim.run_until(lambda: len(odom) > 0, timeout=5.0, what="the first /odom at the test")
+        t0 = time.perf_counter()
+        end = sim.run_for(2.0)
+        wall = time.perf_counter() - t0
 
-    def stamps() -> list[float]:
-        return [m.header.stamp.sec + m.header.stamp.nanosec * 1e-9 for m in odom.messages]
+        def stamps() -> list[float]:
+            return [m.header.stamp.sec + m.header.stamp.nanosec * 1e-9 for m in odom.messages]
 
-    # /clock goes out from the simulation thread, /odom from the publisher thread behind it (3 ms a message
-    # here): beside a CPU hog the test heard /clock at 2 s while /odom's last 0.2 s was still on its way
-    sim.ros.wait_until(lambda: stamps() and stamps()[-1] >= end - 0.01, 30, "/odom up to the last stepped time")
-    return stamps(), wall, sim
+        # /clock goes out from the simulation thread, /odom from the publisher thread behind it (3 ms a message
+        # here): beside a CPU hog the test heard /clock at 2 s while /odom's last 0.2 s was still on its way
+        sim.ros.wait_until(lambda: stamps() and stamps()[-1] >= end - 0.01, 30, "/odom up to the last stepped time")
+        return stamps(), wall, sim
+    except BaseException:  # the caller's finally closes it only once it is returned: a failure here left a
+        sim.close()  # `gazelle sim` server running after the test (found beside a later fresh clone's run)
+        raise
 
 
 def test_every_message_is_published_in_order_and_the_simulation_waits_for_the_publisher() -> None:
