@@ -337,6 +337,22 @@ def test_a_trajectory_whose_first_point_is_past_is_sampled_between_its_own_point
     assert state.reference.positions == pytest.approx(want, abs=1e-6)
 
 
+def test_a_topic_trajectory_that_ended_before_it_arrived_is_refused(r6bot, caplog):
+    """validate_trajectory_msg (Jazzy): a trajectory stamped so that it ended before the controller's now is
+    refused with its line, and the arm holds. gazelle took it silently; now that a trajectory whose first
+    point is past is sampled between its points, one wholly past would be a jump to its last point."""
+    sim, cm = r6bot
+    jtc = cm.controllers["joint_trajectory_controller"].controller
+    assert isinstance(jtc, JointTrajectoryController)
+    sim.step(2000)
+    q0 = _positions(cm)
+    points = (TrajectoryPoint(0.5, tuple(q + 0.1 for q in q0)), TrajectoryPoint(1.0, tuple(q + 0.3 for q in q0)))
+    jtc._queue(JointTrajectory(sim.world.time - 1.5, R6_JOINTS, points), None)  # as ~/joint_trajectory does
+    sim.step(200)
+    assert "that ends in the past" in caplog.text
+    assert max(abs(a - b) for a, b in zip(_positions(cm), q0, strict=True)) < 1e-3
+
+
 @pytest.mark.parametrize("from_desired", [False, True])
 def test_interpolate_from_desired_state_starts_a_new_trajectory_from_the_last_command(
     from_desired, tmp_path, monkeypatch

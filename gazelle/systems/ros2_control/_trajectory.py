@@ -457,6 +457,12 @@ class JointTrajectoryController(Controller):
                 goal.finish(GoalState.SUCCEEDED, TrajectoryResult.SUCCESSFUL, "empty trajectory: holding")
             return
         start = traj.stamp_sec if traj.stamp_sec > 0 else t
+        if goal is None and traj.stamp_sec > 0 and start + traj.points[-1].time_from_start_sec < t:
+            # validate_trajectory_msg (Jazzy) refuses a topic trajectory that ends before the controller's now:
+            # sampled, it would be a jump to its last point; the one running goes on
+            end = start + traj.points[-1].time_from_start_sec
+            self.log.error(f"Received trajectory with non-zero start time ({start:f}) that ends in the past ({end:f})")
+            return
         index = {j: i for i, j in enumerate(traj.joint_names)}
         base = self._hold if self._hold is not None else actual
         n = len(self.joints)
