@@ -222,7 +222,12 @@ class BoundedWorker:
             _write_message(rep_w, data)
 
     def _stop(self) -> str:
-        """Kill and reap the helper; returns how it ended (for messages)."""
+        """Kill and reap the helper; returns how it ended (for messages).
+
+        SIGKILL, not a polite signal: the helper may be deep in a runaway expansion (a xacro macro that
+        recurses, a document that inflates) and is there only to be expendable. It is reaped at once so no
+        zombie outlives the request, and how it ended (a signal of its own, such as the kernel's OOM kill, or
+        an exit status) goes into the message the user sees."""
         how = "ended"
         if self._pid:
             for fd in (self._to_child, self._from_child):

@@ -569,7 +569,14 @@ class _Loader(_Parts):
 
     def world(self, element: etree._Element, doc: _Doc) -> World | None:
         """A ``<world>``: gravity and the magnetic field, ``<spherical_coordinates>``, ``<physics>`` (step size and
-        pace), ``<scene>``, its models (``<include>`` resolved) and lights, and its plugins."""
+        pace), ``<scene>``, its models (``<include>`` resolved) and lights, and its plugins.
+
+        What gz-sim takes from a world file is what is kept; the physics engine's own blocks are skipped on
+        purpose (MuJoCo steps every world). The world's plugins matter beyond themselves: gz-sim's sensor
+        systems among them (``gz-sim-sensors-system``, ``-imu-system``...) decide which of a gz model's
+        sensors publish, and gazebo_ros's world plugins (``gazebo_ros_state``, ``gazebo_ros_factory``) are
+        the services gazelle serves anyway. Every part is read even when the world has no name (so all
+        problems are reported in one pass); then the world is refused."""
         name = self.name(element, doc)
         loc = self.loc(element, doc)
         self.check(element, doc, "world")
@@ -752,7 +759,11 @@ class _Loader(_Parts):
         return models, lights
 
     def world_frame(self, child: etree._Element, doc: _Doc, scope: Scope, names: set[str], world: str | None) -> None:
-        """A world's ``<frame>`` into its frame graph (a name used twice is an error)."""
+        """A world's ``<frame>`` into its frame graph (a name used twice is an error).
+
+        SDF 1.7's world frames: a named pose in the world, ``attached_to`` a model or another frame (moving
+        with it) or to the world. Its pose is ``relative_to`` its ``<pose>``'s frame, else to the frame it is
+        attached to, else the world (sdformat's rule); models' and lights' poses may then be relative to it."""
         frame_name = self.name(child, doc)
         if frame_name is None:
             return

@@ -226,7 +226,15 @@ class _Reader:
 
     # ================================================================== documents
     def read(self, text: str, source: str, base_dir: Path | None) -> tuple[etree._Element, _Doc] | None:
-        """Parse text into its root and the document context, checking the version."""
+        """Parse text into its root and the document context, checking the version.
+
+        The text is first prepared (``_sdf_text.prepare``: a byte-order mark or blank lines before the XML
+        declaration removed, names with a ``:`` that XML would take for a namespace prefix encoded), with
+        line numbers unchanged, so every later message still points at the user's line. The root must be
+        ``<sdf version>`` (or Gazebo 1.x's ``<gazebo version="1.2">``), from SDF 1.2 to the newest version
+        gazelle reads: the version decides how poses and joint axes are read (see the module docstring of
+        ``_sdf``). The version is never guessed: a file without one, or of a version outside that range, is
+        refused with the reason at the root's line."""
         prepared, renamed = prepare(text)
         root = parse_xml(prepared, source=source, sink=self.sink)
         if root is None:
