@@ -364,9 +364,8 @@ class JointCommands(_Controlled):
     def configure(self, ctx: SystemContext) -> None:
         """Read the plugin block, check the joints, add a servo per joint and subscribe to its command topic:
         ``<ns>/<joint>/cmd_pos`` or ``cmd_vel`` (std_msgs/Float64), every movable joint when no
-        ``<joint_name>`` is given. gazelle's own plugin (there is no gazebo_ros one for bare joint
-        commands in ROS 2): the topics a ROS 1-era launch file's ``<joint>_position_controller/command``
-        remaps to."""
+        ``<joint_name>`` is given. gazelle's own plugin: gazebo_ros has none for bare joint commands in
+        ROS 2."""
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         d = JointCommandsConfig()

@@ -493,7 +493,7 @@ class Sim:
                 raise TestTimeout(f"{what}: not within {timeout:g} s of sim time")
             if time.monotonic() > deadline:
                 raise SimError(f"{what}: {wall_timeout:g} s of wall time passed (the simulation is hung?)")
-            self.run_for(min(step, timeout - (self.ros.sim_time - start)))
+            self.run_for(min(step, timeout - (self.ros.sim_time - start)), step=step)
 
     def reset(self, wall_timeout: float = 30.0) -> None:
         """Back to the start: sim time 0, the world's own models at their initial state, every entity the
