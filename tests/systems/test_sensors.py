@@ -104,6 +104,8 @@ def test_a_lidar_facing_a_wall_reads_the_geometry_to_1_mm_with_exact_first_and_l
     assert scan.stamp_sec == pytest.approx(0.1, abs=1e-9)  # stamped with the sim time of the scan
     assert (scan.angle_min, scan.angle_max) == (-math.pi / 2, math.pi / 2)
     assert scan.angle_increment == pytest.approx(math.pi / 180, rel=1e-12)
+    # one instant of sim time: gazebo_ros and ros_gz_bridge both send 0 for these two
+    assert (scan.scan_time, scan.time_increment) == (0.0, 0.0)
     ranges = np.frombuffer(scan.ranges, np.float32)
     assert len(ranges) == 181
     angles = scan.angle_min + scan.angle_increment * np.arange(181)
@@ -146,6 +148,31 @@ def test_gaussian_noise_has_the_configured_stddev_over_10000_samples(make_sim):
     assert abs(errors.mean()) < 0.001
 
 
+@pytest.mark.parametrize(("face", "mean", "expect"), [(9.9, 0.3, 10.0), (0.35, -0.2, 0.3)])
+def test_noise_never_turns_a_hit_into_inf_it_is_clamped_into_the_range_as_gz_sensors_does(make_sim, face, mean, expect):
+    # gz-sensors 8 Lidar::ApplyNoise: noise on the readings in range, then Clamp into [min, max]; ±inf untouched
+    sim = make_sim()
+    _spawn(sim, _wall("wall", face + 0.1, 0.0, 0.2, 0.02), "wall")  # 2 cm wide: only the straight ray hits it
+    noise = f"<noise><type>gaussian</type><mean>{mean}</mean><stddev>0.0</stddev></noise>"
+    model = _lidar_model(samples=3, min_angle=-0.5, max_angle=0.5, rmin=0.3, noise=noise)
+    lidar = _lidar(_spawn(sim, model, "scanner"))
+    sim.step(1)
+    ranges = lidar.scan(sim.world)[0]
+    assert ranges[1] == pytest.approx(expect, abs=1e-9)
+    assert np.all(np.isposinf(ranges[[0, 2]]))  # the misses stay +inf however large the noise
+
+
+def test_a_lidar_noise_bias_is_drawn_once_and_adds_to_every_scan(make_sim):
+    # gz-sensors GaussianNoiseModel: a bias of magnitude bias_mean and random sign, drawn when loaded
+    sim = make_sim()
+    _spawn(sim, _wall("wall", 2.1, 0.0, 0.2, 20.0), "wall")
+    noise = "<noise><type>gaussian</type><bias_mean>0.05</bias_mean></noise>"
+    lidar = _lidar(_spawn(sim, _lidar_model(samples=3, min_angle=-0.1, max_angle=0.1, noise=noise), "scanner"))
+    sim.step(1)
+    scans = np.array([lidar.scan(sim.world)[0][1] for _ in range(5)])
+    assert np.all(scans == scans[0]) and abs(scans[0] - 2.0) == pytest.approx(0.05, abs=1e-9)
+
+
 def test_rays_nearer_than_the_minimum_are_minus_inf_and_the_own_link_is_not_seen(make_sim):
     sim = make_sim()
     _spawn(sim, _wall("wall", 0.35, 0.0, 0.2, 20.0), "wall")  # near face at 0.25 m
@@ -177,6 +204,25 @@ def test_pointcloud2_and_range_outputs(make_sim):
     assert rng.radiation_type == 1 and rng.field_of_view == pytest.approx(0.4)
     # the ranger stands 5 m to the side, facing the same wall: its nearest ray is the straight one
     assert rng.range == pytest.approx(2.0 / math.cos(0.0), abs=1e-3)
+
+
+def test_a_range_is_the_least_of_its_rays_so_one_too_near_reads_minus_inf_as_in_gazebo_ros(make_sim):
+    # gazebo_ros conversions/sensor_msgs.hpp Convert<Range>: the minimum over every ray of the cone
+    sim = make_sim()
+    _spawn(sim, _wall("wall", 2.1, 0.0, 0.2, 20.0), "wall")  # straight ahead: 2 m, in range
+    _spawn(sim, _wall("post", 0.2, 0.3, 0.1, 0.1), "post")  # the leftmost ray's way: 0.3 m, under range_min
+    model = _lidar_model(samples=5, min_angle=-1.0, max_angle=1.0, output="sensor_msgs/Range", rmin=0.5)
+    ranger = _spawn(sim, model.replace("~/out:=scan", "~/out:=range"), "ranger")
+    got = _record(sim, "/range")
+    sim.step(1)
+    rays = _lidar(ranger).scan(sim.world, noise=False)[0]
+    assert np.isneginf(rays[-1]) and np.all(np.isfinite(rays[1:4]))  # the set-up: one ray too near, others hit
+    assert got[-1].range == -math.inf
+    # and a cone that sees nothing reads +inf (REP 117; gazebo_ros sends FLT_MAX there)
+    sim.delete("wall")
+    sim.delete("post")
+    sim.step(100)
+    assert got[-1].range == math.inf
 
 
 def _imu_box(extra: str = "", offset: str = "0.3 0 0 0 0 0", plugin: bool = True) -> str:

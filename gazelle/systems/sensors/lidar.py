@@ -1,6 +1,19 @@
 """Lidars and rays (``ray``, ``gpu_ray``, ``lidar``, ``gpu_lidar``): LaserScan, PointCloud2 or Range, cast in one
 ``mj_multiRay`` call against collision geoms (excluding the sensor's own link); beyond the maximum range +inf,
-nearer than the minimum -inf (REP 117)."""
+nearer than the minimum -inf (REP 117).
+
+What is matched, and where:
+
+- the ±inf readings: gz-sensors 8's ``GpuLidarSensor.cc`` turns clamping off ("Mask ranges outside of min/max to
+  +/- inf, as per REP 117"); noise (with its bias drawn once) is then added to the readings in range only and
+  the result clamped into ``[range_min, range_max]`` (``Lidar::ApplyNoise``), so noise never makes a hit ±inf.
+- the LaserScan of a multi-row lidar, its zero ``scan_time``/``time_increment``, the PointCloud2 of hits only and
+  the Range as the least ray: gazebo_ros's ``conversions/sensor_msgs.hpp`` (ros_gz_bridge fills the LaserScan's
+  two times with 0 too).
+- Differs: Gazebo's ``gpu_*`` sensors render visuals, gazelle casts against collision geoms for every type (a
+  model whose visuals and collisions differ reads differently); intensities are one value for every ray (the
+  plugin's ``<min_intensity>``, at least 0), where Gazebo reads a retro-reflectivity per visual.
+"""
 
 from __future__ import annotations
 
@@ -160,6 +173,7 @@ class Lidar(_SensorSystem):
         super().__init__(seed)
         self.spec = LidarSpec()
         self._dirs = np.zeros((0, 3))
+        self._bias = 0.0
         self._intensity_cache: tuple[tuple[int, float], bytes] = ((0, 0.0), b"")
 
     def configure(self, ctx: SystemContext) -> None:
@@ -171,6 +185,7 @@ class Lidar(_SensorSystem):
         if not self._configure_common(ctx):
             return
         self._dirs = self.spec.directions()
+        self._bias = self.spec.noise.bias(self._rng)  # one bias per sensor and run (GaussianNoiseModel::Load)
         assert self.output is not None
         s = self.spec
         ctx.logger.info(
@@ -185,12 +200,16 @@ class Lidar(_SensorSystem):
         assert self._body is not None
         s = self.spec
         dist, _ = self._body.cast_rays_from(self.offset, self._dirs, s.range_max)
-        hit = dist >= 0
-        if noise and s.noise.active:
-            dist += s.noise.mean + (self._rng.normal(0.0, s.noise.stddev, len(dist)) if s.noise.stddev > 0 else 0.0)
-        ranges = np.where(hit, dist, np.inf)  # a miss is +inf; a hit nearer than range_min is -inf
+        # REP 117 from the true distance first: a miss is +inf, a hit nearer than range_min -inf
+        ranges = np.where(dist >= 0, dist, np.inf)
         np.copyto(ranges, -np.inf, where=ranges < s.range_min)
-        np.copyto(ranges, np.inf, where=ranges > s.range_max)
+        if noise and s.noise.active:
+            # then noise on the readings in range, clamped back into [range_min, range_max]: gz-sensors 8's
+            # Lidar::ApplyNoise (Lidar.cc: Apply, then Clamp, which leaves ±inf alone), so noise never turns a
+            # hit into ±inf nor a miss into a hit
+            ok = np.isfinite(ranges)
+            jitter = self._rng.normal(0.0, s.noise.stddev, int(ok.sum())) if s.noise.stddev > 0 else 0.0
+            ranges[ok] = np.clip(ranges[ok] + self._bias + s.noise.mean + jitter, s.range_min, s.range_max)
         return ranges.reshape(s.vertical.count, s.horizontal.count)
 
     def _intensities(self, n: int, value: float) -> bytes:
@@ -217,7 +236,11 @@ class Lidar(_SensorSystem):
         intensity = max(0.0, out.min_intensity)
         # the message the plugin's <output_type> asks for (gazebo_ros_ray_sensor; gz-sim: LaserScan for a lidar)
         if out.msg_type is MsgType.LASER_SCAN:
-            # a LaserScan is one plane: of a multi-row lidar, its middle row
+            # a LaserScan is one plane: of a multi-row lidar, its middle row (row vertical_count // 2, as
+            # gazebo_ros's conversions/sensor_msgs.hpp `Convert<LaserScan>` takes it). scan_time and
+            # time_increment stay 0: both gazebo_ros (same file) and ros_gz_bridge (convert/sensor_msgs.cpp) send
+            # 0: the scan is one instant of sim time (a time_increment of 0 tells laser_geometry's
+            # transformLaserScanToPointCloud that every ray was taken at the stamp)
             row = ranges[s.vertical.count // 2].astype(np.float32)
             self._pub.publish(
                 LaserScan(
@@ -230,14 +253,14 @@ class Lidar(_SensorSystem):
                     s.range_max,
                     row.tobytes(),
                     self._intensities(len(row), intensity),
-                    scan_time=1.0 / self.rate_hz if self.rate_hz > 0 else 0.0,
                 )
             )
         elif out.msg_type is MsgType.RANGE:
-            # a Range (sonar, IR): the nearest hit of every ray in the cone; -inf when something is nearer than
-            # range_min and nothing is in range, +inf when nothing is within range_max (REP 117)
-            valid = ranges[np.isfinite(ranges)]
-            r = float(valid.min()) if valid.size else (-math.inf if np.any(ranges < 0) else math.inf)
+            # a Range (sonar, IR): the least of the cone's rays, as gazebo_ros's `Convert<Range>`
+            # (conversions/sensor_msgs.hpp) takes it: a ray nearer than range_min (-inf) wins over hits in range.
+            # Where every ray misses, upstream's loop leaves its start value, FLT_MAX; gazelle sends REP 117's
+            # +inf (both read as out of range to a `range >= max_range` check)
+            r = float(ranges.min())
             fov = max(s.horizontal.max_angle - s.horizontal.min_angle, s.vertical.max_angle - s.vertical.min_angle)
             self._pub.publish(Range(t, out.frame_id, out.radiation_type, fov, s.range_min, s.range_max, r))
         else:
