@@ -795,6 +795,38 @@ def test_a_gps_moved_100_m_north_changes_latitude_by_100_m_over_the_earth_radius
     assert gps.output is not None and gps.output.frame_id == "base"
 
 
+def _gps_fix_with_noise(make_sim, inner: str, horizontal: str, vertical: str = ""):
+    """The first fix of a GPS at the origin (47° N, 8° E, 400 m) run by ``inner`` (a plugin or a <topic>)."""
+    from gazelle.description import SphericalCoordinates
+
+    origin = SphericalCoordinates(latitude_deg=47.0, longitude_deg=8.0, elevation=400.0)
+    sim = make_sim(dataclasses.replace(default_world(), spherical_coordinates=origin))
+    noise = f"""<gps><position_sensing><horizontal><noise type="gaussian">{horizontal}</noise></horizontal>
+      <vertical><noise type="gaussian">{vertical}</noise></vertical></position_sensing></gps>"""
+    plugin = '<plugin name="gps" filename="libgazebo_ros_gps_sensor.so"><ros><remapping>~/out:=fix</remapping></ros></plugin>'
+    _spawn(sim, _gps_box().replace(plugin, inner + noise), "rover")
+    fixes = _record(sim, "/fix")
+    sim.step(1)
+    return fixes[-1]
+
+
+def test_gps_position_noise_is_metres_with_gazebo_ros_and_degrees_with_gz_sim(make_sim):
+    """Classic GpsSensor::UpdateImpl adds position noise in metres to the Gazebo frame's x, y, z before turning
+    them into latitude and longitude; gz-sensors' NavSatSensor::Update adds it to the latitude and longitude in
+    degrees (one model, so one bias, for both) and to the altitude in metres."""
+    plugin = '<plugin name="gps" filename="libgazebo_ros_gps_sensor.so"><ros><remapping>~/out:=fix</remapping></ros></plugin>'
+    earth = 6_371_000.0
+    fix = _gps_fix_with_noise(make_sim, plugin, "<mean>1.0</mean>", "<mean>2.0</mean>")
+    assert math.radians(fix.latitude - 47.0) == pytest.approx(1.0 / earth, rel=0.01)  # 1 m north
+    assert math.radians(fix.longitude - 8.0) * math.cos(math.radians(47.0)) == pytest.approx(1.0 / earth, rel=0.01)
+    assert fix.altitude == pytest.approx(402.0, abs=1e-9)
+    fix = _gps_fix_with_noise(make_sim, "<topic>fix</topic>", "<mean>0.001</mean>", "<mean>2.0</mean>")
+    assert (fix.latitude, fix.longitude, fix.altitude) == pytest.approx((47.001, 8.001, 402.0), abs=1e-12)
+    fix = _gps_fix_with_noise(make_sim, "<topic>fix</topic>", "<bias_mean>0.01</bias_mean>")
+    assert abs(fix.latitude - 47.0) == pytest.approx(0.01, abs=1e-12)
+    assert fix.longitude - 8.0 == pytest.approx(fix.latitude - 47.0, abs=1e-12)  # the one bias on both
+
+
 def _arm(sensor: str = "", plugin: str = "") -> str:
     return f"""<?xml version="1.0"?>
 <sdf version="1.9"><model name="arm">

@@ -1,5 +1,21 @@
 """GPS / NavSat: the position as latitude, longitude and altitude from the world's spherical coordinates,
-with noise (sensor_msgs/NavSatFix), and gazebo_ros's velocity (geometry_msgs/Vector3Stamped)."""
+with noise (sensor_msgs/NavSatFix), and gazebo_ros's velocity (geometry_msgs/Vector3Stamped).
+
+The two Gazebos add the same ``<noise>`` elements in different units, and gazelle follows the one the sensor is
+written for:
+
+- with ``libgazebo_ros_gps_sensor`` (Classic; ``GpsSensor::UpdateImpl`` in gazebo's ``GpsSensor.cc``), position
+  noise is metres on the Gazebo frame's x, y and z *before* the point becomes latitude and longitude, one noise
+  model (and bias) for each of the three;
+- without it (gz-sim's ``NavSat`` system and gz-sensors' ``NavSatSensor::Update``), the horizontal noise is added
+  to the latitude and the longitude *in degrees*, one model (so one bias) for both, and the vertical to the
+  altitude in metres: a ``<stddev>`` of 1 there is a degree, about 111 km;
+- velocity noise is m/s on East, North and Up after the conversion in both (only Classic's plugin publishes the
+  velocity; ros_gz_bridge's NavSatFix has none).
+
+Every noise model is gz-sensors' and Classic's Gaussian: ``mean`` + N(0, ``stddev``²) per reading plus a bias drawn
+once (see :class:`~gazelle.systems.sensors._common.Noise`).
+"""
 
 from __future__ import annotations
 
@@ -108,6 +124,10 @@ class GpsSensor(_SensorSystem):
         self._vel: Endpoint | None = None
         self._covariance: tuple[tuple[float, ...], int, int] = ((0.0,) * 9, 0, 0)
         """The fix's (position_covariance, covariance_type, service), as the Gazebo that runs it sends them."""
+        self._classic = True
+        """Whether Classic's gazebo_ros_gps_sensor runs it (position noise in metres) or gz-sim (in degrees)."""
+        self._bias = (0.0,) * 6
+        """The biases of the six noise channels (x or latitude, y or longitude, altitude, east, north, up)."""
 
     def configure(self, ctx: SystemContext) -> None:
         """Read the world's spherical coordinates and the noise; declare ``~/out`` and ``~/vel``."""
@@ -124,13 +144,23 @@ class GpsSensor(_SensorSystem):
             c = self.config
             vel = resolve_topic("~/vel", c.namespace, dict(c.remappings), node=ctx.plugin.name)
             self._vel = ctx.bus.advertise(ctx.entity.name, vel, MsgType.VECTOR3_STAMPED, depth=SENSOR_DEPTH)
-        if ctx.spherical_coordinates is None:  # gz-sim too puts the origin at 0° N 0° E then, silently
+        # without <spherical_coordinates>, gz-sim 8's NavSat warns at every update and publishes a fix that stays
+        # at 0, 0, 0 however the sensor moves (NavSat.cc: Update skips it; its sensor publishes the unset values);
+        # gazelle warns once and measures from an origin at 0° N 0° E
+        if ctx.spherical_coordinates is None:
             where = f"{ctx.sensor.location}: " if ctx.sensor.location else ""
             ctx.logger.warning(
                 f"{where}GPS '{ctx.sensor.name}': the world has no <spherical_coordinates>; its origin is 0° N 0° E"
             )
         self.origin = ctx.spherical_coordinates or SphericalCoordinates()
         self.noise = parse_gps_noise(ctx.sensor, ctx.logger)
+        self._classic = ctx.plugin is not None
+        nz, draw = self.noise, (lambda n: n.bias(self._rng))
+        # Classic loads one noise model per axis from the same element; gz-sensors one for latitude and longitude
+        lat_bias = draw(nz.position_horizontal)
+        lon_bias = draw(nz.position_horizontal) if self._classic else lat_bias
+        vel = (draw(nz.velocity_horizontal), draw(nz.velocity_horizontal), draw(nz.velocity_vertical))
+        self._bias = (lat_bias, lon_bias, draw(nz.position_vertical), *vel)
         if ctx.plugin is not None:
             # gazebo_ros_gps_sensor.cpp: each noise's variance on the diagonal (East, North, Up; 0 without
             # noise: gazebo_ros NoiseVariance), always COVARIANCE_TYPE_DIAGONAL_KNOWN, service GPS
@@ -145,30 +175,37 @@ class GpsSensor(_SensorSystem):
         ctx.logger.info(f"GPS '{ctx.sensor.name}' at {self.rate_hz:g} Hz on [{self.output.topic}]")
 
     def read(self, world: PhysicsWorld) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
-        """((latitude, longitude, altitude), ENU velocity) of the sensor now, with noise."""
+        """((latitude, longitude, altitude), ENU velocity) of the sensor now, with noise as the Gazebo that runs
+        it adds it (see the module docstring)."""
         assert self._body is not None
         X_WB = self._body.pose
         X = X_WB * self.offset
-        # the noise is drawn in metres on the local ENU plane, then the point is turned into latitude, longitude
-        # and altitude, as gz-sensors' NavSat does: a stddev of 1 m is 1 m whatever the latitude
-        h = self.origin.heading_deg
-        e, n, u = world_to_enu(X.position, h)
+        h, nz, b = self.origin.heading_deg, self.noise, self._bias
+        x, y, z = X.position
+        if self._classic:  # metres on the Gazebo frame, then to the sphere
+            x = self._noisy(x, nz.position_horizontal, b[0])
+            y = self._noisy(y, nz.position_horizontal, b[1])
+            z = self._noisy(z, nz.position_vertical, b[2])
+        lat, lon, alt = enu_to_geodetic(*world_to_enu((x, y, z), h), self.origin)
+        if not self._classic:  # on the sphere: degrees, then metres of altitude
+            lat = self._noisy(lat, nz.position_horizontal, b[0])
+            lon = self._noisy(lon, nz.position_horizontal, b[1])
+            alt = self._noisy(alt, nz.position_vertical, b[2])
         lin, ang = self._body.velocity
         r = np.asarray(X.position) - np.asarray(X_WB.position)
         v = np.asarray(lin) + np.cross(np.asarray(ang), r)  # the sensor point's velocity
         ve, vn, vu = world_to_enu((float(v[0]), float(v[1]), float(v[2])), h)
-        nz = self.noise
+        ve = self._noisy(ve, nz.velocity_horizontal, b[3])
+        vn = self._noisy(vn, nz.velocity_horizontal, b[4])
+        vu = self._noisy(vu, nz.velocity_vertical, b[5])
+        return (lat, lon, alt), (ve, vn, vu)
 
-        def noisy(value: float, noise: Noise) -> float:
-            if not noise.active:
-                return value
-            return value + noise.mean + (float(self._rng.normal(0.0, noise.stddev)) if noise.stddev > 0 else 0.0)
-
-        e, n = noisy(e, nz.position_horizontal), noisy(n, nz.position_horizontal)
-        u = noisy(u, nz.position_vertical)
-        ve, vn = noisy(ve, nz.velocity_horizontal), noisy(vn, nz.velocity_horizontal)
-        vu = noisy(vu, nz.velocity_vertical)
-        return enu_to_geodetic(e, n, u, self.origin), (ve, vn, vu)
+    def _noisy(self, value: float, noise: Noise, bias: float) -> float:
+        """``value`` through one Gaussian noise model: its bias, mean and one N(0, stddev²) draw."""
+        if not noise.active:
+            return value
+        jitter = float(self._rng.normal(0.0, noise.stddev)) if noise.stddev > 0 else 0.0
+        return value + bias + noise.mean + jitter
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         """At the sensor's rate, while listened to: publish the fix (and the velocity) stamped with this sim time."""
