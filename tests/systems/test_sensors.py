@@ -949,16 +949,23 @@ def test_a_lidar_or_camera_too_large_to_simulate_is_refused_with_file_and_line_a
     sim.step(10)  # the world steps on
 
 
-def test_a_bumper_frame_that_is_no_link_is_named_and_the_contacts_stay_in_the_world_frame(caplog, make_sim):
-    from gazelle.systems.sensors import ContactSensor
+@pytest.mark.parametrize("frame", ["base", "nope"])
+def test_a_bumper_frame_name_only_labels_the_header_the_contacts_stay_in_the_world_frame(caplog, make_sim, frame):
+    """ROS 2's gazebo_ros_bumper.cpp writes <frame_name> into the header and nothing else (its
+    Convert<ContactsState> keeps the frame rotation at identity); ROS 1's turned the contacts into that frame."""
+    from gazelle.systems import Contacts
 
     sim = make_sim()
-    xml = _bumper_plate().replace("</ros></plugin>", "</ros><frame_name>nope</frame_name></plugin>")
+    xml = _bumper_plate().replace("</ros></plugin>", f"</ros><frame_name>{frame}</frame_name></plugin>")
     with caplog.at_level(logging.WARNING):
-        plate = _spawn(sim, xml, "plate")
-    sensor = next(s for s in plate.systems if isinstance(s, ContactSensor))
-    assert sensor.output is not None and sensor.output.frame_id == "world"
-    assert any("<frame_name> 'nope' is not a link of 'plate'" in r.getMessage() for r in caplog.records)
+        _spawn(sim, xml, "plate", Pose((0.0, 0.0, 0.5)))
+    assert any(f"<frame_name> '{frame}': as gazebo_ros_bumper in ROS 2" in r.getMessage() for r in caplog.records)
+    got = _record(sim, "/plate/bumper_states")
+    sim.spawn(load_string(BOX_2KG).model, name="box", pose=Pose((0.0, 0.0, 0.8)))
+    sim.step(800)
+    msg: Contacts = got[-1]
+    assert msg.frame_id == frame and msg.states
+    assert all(abs(p[2] - 0.51) < 0.002 for p in msg.states[0].positions)  # the plate's top face, in the world
 
 
 MAG_BOT = """<?xml version="1.0"?>

@@ -6,13 +6,10 @@ from __future__ import annotations
 import dataclasses
 from typing import ClassVar
 
-import numpy as np
-
 from ...description import (
     Sensor,
-    rotation_matrix,
 )
-from ...physics import BodyHandle, PerGeneration, PhysicsWorld
+from ...physics import PerGeneration, PhysicsWorld
 from .._base import SystemContext, UpdateInfo
 from .._bus import MsgType, resolve_topic
 from .._payloads import ContactPair, Contacts
@@ -29,8 +26,9 @@ from ._common import (
 @sensor_system
 class ContactSensor(_SensorSystem):
     """A contact sensor (``<sensor type="contact">`` with ``<contact><collision>``): every contact of its
-    collisions, forces on the sensor's collision. gazebo_ros_bumper publishes gazebo_msgs/ContactsState on
-    ``bumper_states`` in ``<frame_name>`` (default ``world``) at the sensor's rate; gz-sim's contact system
+    collisions, forces on the sensor's collision, all in the world frame. gazebo_ros_bumper publishes
+    gazebo_msgs/ContactsState on ``bumper_states`` labelled ``<frame_name>`` (default ``world``) at the sensor's
+    rate; gz-sim's contact system
     ros_gz_interfaces/Contacts on ``<contact><topic>``, else ``/world/<w>/model/<m>/link/<l>/sensor/<s>/contact``,
     at every step with contacts (see :meth:`_configure_gz`)."""
 
@@ -44,8 +42,6 @@ class ContactSensor(_SensorSystem):
     def __init__(self, seed: int | None = None) -> None:
         super().__init__(seed)
         self.collisions: tuple[str, ...] = ()
-        self._frame: BodyHandle | None = None
-        """``<frame_name>``'s link, when the contacts are reported in a link's frame (None: the world)."""
         self._geoms: PerGeneration[frozenset[int]] | None = None
         self._only_contacts = False
         """Publish only while there are contacts (gz-sim); gazebo_ros_bumper publishes every update."""
@@ -86,7 +82,7 @@ class ContactSensor(_SensorSystem):
         assert self.output is not None
         if ctx.plugin is None:
             self._configure_gz(ctx, sensor, gz_topic)
-        else:  # gazebo_ros_bumper: bumper_states under its node's namespace (remappable), in <frame_name>
+        else:  # gazebo_ros_bumper: bumper_states under its node's namespace (remappable), labelled <frame_name>
             c = self.config
             self.output = dataclasses.replace(
                 self.output,
@@ -94,15 +90,14 @@ class ContactSensor(_SensorSystem):
                 frame_id=c.frame_name or "world",
             )
             if c.frame_name and c.frame_name not in ("world", "map"):
-                if c.frame_name in {lk.name for lk in ctx.entity.model.links}:
-                    self._frame = ctx.world.body(ctx.entity.name, c.frame_name)
-                else:
-                    where = f"{ctx.plugin.location}: " if ctx.plugin.location else ""
-                    ctx.logger.warning(
-                        f"{where}<frame_name> '{c.frame_name}' is not a link of '{ctx.entity.name}'; "
-                        "contacts are reported in the world frame"
-                    )
-                    self.output = dataclasses.replace(self.output, frame_id="world")
+                # ROS 1's bumper turned the contacts into <frame_name>'s frame; ROS 2's only writes the name into
+                # the header (gazebo_ros_bumper.cpp OnUpdate; Convert<ContactsState> in conversions/gazebo_msgs.hpp
+                # keeps "frame_rot is identity"), so a file written for ROS 1 gets world values under a link's name
+                where = f"{ctx.plugin.location}: " if ctx.plugin.location else ""
+                ctx.logger.warning(
+                    f"{where}<frame_name> '{c.frame_name}': as gazebo_ros_bumper in ROS 2, the contacts are in the "
+                    "world frame; the name is only the header's frame_id"
+                )
         self._pub = ctx.bus.advertise(ctx.entity.name, self.output.topic, self.output.msg_type, depth=SENSOR_DEPTH)
         self._entity, self._collisions = ctx.entity.name, tuple(names)
         self._geoms = PerGeneration(self._find_geoms)
@@ -135,39 +130,26 @@ class ContactSensor(_SensorSystem):
         )
 
     def read(self, world: PhysicsWorld) -> tuple[ContactPair, ...]:
-        """The current contacts of the watched collisions, grouped by pair, in the output frame."""
+        """The current contacts of the watched collisions, grouped by pair, in the world frame."""
         assert self._geoms is not None
         # every MuJoCo contact touching a watched geom, seen from its side: the force the other body exerts on
         # it (MuJoCo's contact force turned into the world frame), the normal pointing into it
         points = world.contacts_of(self._geoms.get(world))
-        # gazebo_ros_bumper reports in <frame_name>'s frame: points relative to its origin, vectors rotated
-        # (gz-sim's contact sensor and a bumper without <frame_name> report in the world frame)
-        R = None
-        origin = np.zeros(3)
-        if self._frame is not None:
-            X = self._frame.pose
-            R, origin = rotation_matrix(X.orientation).T, np.asarray(X.position)
+        # in the world frame: gz-sim's Contact system, and gazebo_ros_bumper whatever its <frame_name>
         pairs: dict[tuple[str, str], list] = {}  # one ContactState per pair of collisions, as Gazebo groups them
         for p in points:
-            pos, n, f, t = (np.asarray(v) for v in (p.position, p.normal, p.force, p.torque))
-            if R is not None:
-                pos, n, f, t = R @ (pos - origin), R @ n, R @ f, R @ t
-            pairs.setdefault((p.collision1, p.collision2), []).append((pos, n, f, t, p.depth))
-
-        def vec(a: np.ndarray) -> tuple[float, float, float]:
-            return (float(a[0]), float(a[1]), float(a[2]))
-
+            pairs.setdefault((p.collision1, p.collision2), []).append(p)
         return tuple(
             ContactPair(
                 c1,
                 c2,
-                tuple(vec(x[0]) for x in items),
-                tuple(vec(x[1]) for x in items),
-                tuple(vec(x[2]) for x in items),
-                tuple(vec(x[3]) for x in items),
-                tuple(float(x[4]) for x in items),
+                tuple(p.position for p in group),
+                tuple(p.normal for p in group),
+                tuple(p.force for p in group),
+                tuple(p.torque for p in group),
+                tuple(p.depth for p in group),
             )
-            for (c1, c2), items in pairs.items()
+            for (c1, c2), group in pairs.items()
         )
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
