@@ -2,14 +2,22 @@
 
 Publishes nav_msgs/Odometry of one link on ``odom`` (under ``<ros><namespace>``, remappable) at
 ``update_rate`` Hz of sim time (0 = every step): pose and twist of ``body_name`` in ``frame_name``
-(``world`` by default, or a link of the same model), with constant ``xyz_offsets`` / ``rpy_offsets``
-and Gaussian noise of standard deviation ``gaussian_noise`` on position and velocities (covariance
-diagonal = noise²). The ROS 1 names (``bodyName``, ``frameName``, ``topicName``, ``updateRate``,
-``xyzOffsets``/``xyzOffset``, ``rpyOffsets``/``rpyOffset``, ``gaussianNoise``, ``robotNamespace``)
-are accepted too.
+(``world`` by default, or a link of the same model), with constant ``xyz_offset`` / ``rpy_offset`` and
+Gaussian noise of standard deviation ``gaussian_noise`` on the velocities (covariance diagonals = noise²).
 
-Unlike gazebo_ros_p3d's own arithmetic, a reference link's pose and velocities are removed
-exactly: the pose is ``X_WF⁻¹·X_WB`` and the twist is ``R_WF⁻¹·(v_B − v_F)``.
+Read against the ros2 branch's ``gazebo_plugins/src/gazebo_ros_p3d.cpp``:
+
+- ``<xyz_offset>``/``<rpy_offset>`` are the names; the older ``<xyz_offsets>``/``<rpy_offsets>`` still work with
+  upstream's deprecation warning, the singular winning when both are given.
+- the noise is on the six velocities only (upstream draws it for the twist; the pose is exact), but both
+  covariances carry its variance, as upstream fills them.
+- The ROS 1 names (``bodyName``, ``frameName``, ``topicName``, ``updateRate``, ``xyzOffsets``/``xyzOffset``,
+  ``rpyOffsets``/``rpyOffset``, ``gaussianNoise``, ``robotNamespace``), which the ROS 2 plugin does not read,
+  are accepted too: a ROS 1-era description keeps its ground truth.
+- Differs: a reference link's pose and velocities are removed exactly, the pose as ``X_WF⁻¹·X_WB`` and the twist
+  as ``R_WF⁻¹·(v_B − v_F)``; upstream composes the orientation as ``q_B·q_F⁻¹`` and rotates the velocity
+  differences by ``R_WF`` rather than its inverse, which agree with these only while the reference link is
+  level and unturned.
 """
 
 from __future__ import annotations
@@ -32,10 +40,10 @@ ROS1_NAMES = {
     "frameName": "frame_name",
     "topicName": "topic",
     "updateRate": "update_rate",
-    "xyzOffsets": "xyz_offsets",
-    "xyzOffset": "xyz_offsets",
-    "rpyOffsets": "rpy_offsets",
-    "rpyOffset": "rpy_offsets",
+    "xyzOffsets": "xyz_offset",
+    "xyzOffset": "xyz_offset",
+    "rpyOffsets": "rpy_offset",
+    "rpyOffset": "rpy_offset",
     "gaussianNoise": "gaussian_noise",
 }
 
@@ -52,12 +60,12 @@ class P3dConfig:
     """Topic (``odom`` in ROS 2, remappable; ``<topicName>`` in ROS 1); relative names go under the namespace."""
     update_rate: float = 0.0
     """``<update_rate>``, Hz of sim time; 0 = every step (the default)."""
-    xyz_offsets: tuple[float, float, float] = (0.0, 0.0, 0.0)
-    """``<xyz_offsets>``: added to the position."""
-    rpy_offsets: tuple[float, float, float] = (0.0, 0.0, 0.0)
-    """``<rpy_offsets>``: pre-multiplied onto the orientation."""
+    xyz_offset: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    """``<xyz_offset>`` (deprecated ``<xyz_offsets>``), metres: added to the position."""
+    rpy_offset: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    """``<rpy_offset>`` (deprecated ``<rpy_offsets>``), radians: pre-multiplied onto the orientation."""
     gaussian_noise: float = 0.0
-    """``<gaussian_noise>``: standard deviation on position and velocities."""
+    """``<gaussian_noise>``: standard deviation on each of the six velocities (m/s, rad/s)."""
     namespace: str = ""
     """``<ros><namespace>`` (ROS 1: ``<robotNamespace>``); default the entity's namespace."""
     remappings: tuple[tuple[str, str], ...] = ()
@@ -79,6 +87,17 @@ def _vec3(cfg: ConfigElement, tag: str, log: logging.Logger) -> tuple[float, flo
     return (0.0, 0.0, 0.0)
 
 
+def _offset(cfg: ConfigElement, tag: str, log: logging.Logger) -> tuple[float, float, float]:
+    """``<xyz_offset>`` or ``<rpy_offset>``; the deprecated plural with gazebo_ros_p3d.cpp's warning, overridden
+    by the singular when both are given (upstream reads the plural first, then the singular over it)."""
+    old = tag + "s"
+    if child_text(cfg, old) is not None:
+        log.warning(f"<{old}> is deprecated, use <{tag}> instead.")
+        if child_text(cfg, tag) is None:
+            return _vec3(cfg, old, log)
+    return _vec3(cfg, tag, log)
+
+
 def parse_config(ctx: SystemContext, log: logging.Logger) -> P3dConfig:
     """The plugin's parameters, ROS 1 names mapped to ROS 2 ones first."""
     cfg = ctx.plugin.config if ctx.plugin is not None else None
@@ -96,8 +115,8 @@ def parse_config(ctx: SystemContext, log: logging.Logger) -> P3dConfig:
         frame_name=child_text(cfg, "frame_name") or "world",
         topic=child_text(cfg, "topic") or "odom",
         update_rate=parse_float(cfg, "update_rate", 0.0, log),
-        xyz_offsets=_vec3(cfg, "xyz_offsets", log),
-        rpy_offsets=_vec3(cfg, "rpy_offsets", log),
+        xyz_offset=_offset(cfg, "xyz_offset", log),
+        rpy_offset=_offset(cfg, "rpy_offset", log),
         gaussian_noise=parse_float(cfg, "gaussian_noise", 0.0, log),
         namespace=ns or child_text(cfg, "robotNamespace") or ctx.entity.namespace,
         remappings=tuple(remaps.items()),
@@ -156,7 +175,7 @@ class P3D(System):
         self._entity = ctx.entity.name
         self.topic = resolve_topic(c.topic, c.namespace, dict(c.remappings))
         self._pub = ctx.bus.advertise(self._entity, self.topic, MsgType.ODOMETRY, depth=10)
-        self._offset = Pose(c.xyz_offsets, quat_from_rpy(*c.rpy_offsets))
+        self._offset = Pose(c.xyz_offset, quat_from_rpy(*c.rpy_offset))
         log.info(f"p3d: ground truth of [{self.child_frame_id}] in [{self.frame_id}] on [{self.topic}]")
 
     def next_update(self, sim_time_sec: float) -> float:
@@ -181,8 +200,8 @@ class P3D(System):
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
         """At ``<update_rate>``, while anyone listens: the body's ground-truth pose and twist (with the offsets, in
-        the reference frame), Gaussian noise of ``<gaussian_noise>`` stddev on position and velocities (not on
-        the orientation, as gazebo_ros_p3d), and its variance on the covariance diagonals."""
+        the reference frame), Gaussian noise of ``<gaussian_noise>`` stddev on the velocities only (as
+        gazebo_ros_p3d), and its variance on both covariance diagonals."""
         if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.config.update_rate):
             return
         if not self._pub.wanted:
@@ -191,8 +210,7 @@ class P3D(System):
         gn = self.config.gaussian_noise
         if gn > 0:
             g = self._rng.gauss
-            # (drawn in the order x, y, z of the position, then of each velocity)
-            pose = Pose(_noisy(pose.position, g, gn), pose.orientation)
+            # drawn in gazebo_ros_p3d's order: linear x, y, z, then angular x, y, z
             twist = Twist(_noisy(twist.linear, g, gn), _noisy(twist.angular, g, gn))
         cov = [0.0] * 36
         for i in (0, 7, 14, 21, 28, 35):

@@ -13,6 +13,7 @@ from _paths import BOX, REAL, REPO, SEED_XACRO
 from _sim import new_simulation
 
 from gazelle.description import Pose, load, load_string
+from gazelle.physics import EntityState
 from gazelle.systems import System, UpdateInfo
 from gazelle.systems._bus import MsgType
 from gazelle.systems._payloads import Twist
@@ -328,6 +329,42 @@ def test_p3d_publishes_ground_truth_with_offsets() -> None:
     pose, twist = p3d.measure(sim.world)
     assert [a - b for a, b in zip(pose.position, truth.pose.position)] == pytest.approx([1, 2, 3], abs=1e-9)
     assert twist.linear[0] == pytest.approx(0.2, rel=0.05)
+
+
+def _p3d_odometry(caplog, inner: str) -> tuple[list, EntityState, P3D]:
+    """The Odometry a gazebo_ros_p3d with ``inner`` parameters sends over 0.1 s, the robot's truth, the system."""
+    plugin = (
+        '<plugin name="truth" filename="libgazebo_ros_p3d.so"><ros><remapping>odom:=truth</remapping></ros>'
+        f"<body_name>base_link</body_name>{inner}</plugin>"
+    )
+    urdf = load(SEED_XACRO).model.urdf.replace("</robot>", f"<gazebo>{plugin}</gazebo></robot>")
+    with caplog.at_level(logging.WARNING):
+        sim, entity = spawn(urdf)
+    got = []
+    next(e for e in sim.bus.endpoints() if e.topic == "/truth").add_sink(got.append)
+    sim.step(100)
+    return got, sim.world.entity_state("robot", "base_link"), system(entity, P3D)
+
+
+def test_p3d_reads_xyz_offset_and_warns_about_the_deprecated_plural_as_gazebo_ros_p3d(caplog) -> None:
+    """gazebo_ros_p3d.cpp (ros2): <xyz_offset>/<rpy_offset>; <xyz_offsets> works with a deprecation warning, and
+    the singular wins when both are there."""
+    got, truth, _ = _p3d_odometry(caplog, "<xyz_offset>1 2 3</xyz_offset>")
+    assert [a - b for a, b in zip(got[-1].pose.position, truth.pose.position)] == pytest.approx([1, 2, 3], abs=1e-9)
+    assert not [r for r in caplog.records if "offset" in r.getMessage()]
+    caplog.clear()
+    got, truth, _ = _p3d_odometry(caplog, "<xyz_offsets>5 5 5</xyz_offsets><xyz_offset>1 2 3</xyz_offset>")
+    assert [a - b for a, b in zip(got[-1].pose.position, truth.pose.position)] == pytest.approx([1, 2, 3], abs=1e-9)
+    assert any("<xyz_offsets> is deprecated, use <xyz_offset> instead." in r.getMessage() for r in caplog.records)
+
+
+def test_p3d_noise_is_on_the_velocities_only_and_both_covariances_carry_it(caplog) -> None:
+    """gazebo_ros_p3d.cpp (ros2) draws <gaussian_noise> for the six twist values; the pose is exact."""
+    got, truth, _ = _p3d_odometry(caplog, "<gaussian_noise>0.5</gaussian_noise>")
+    odom = got[-1]
+    assert odom.pose.position == pytest.approx(truth.pose.position, abs=1e-12)
+    assert max(abs(v) for v in odom.twist.linear + odom.twist.angular) > 0.01  # at rest: all noise
+    assert odom.pose_covariance[0] == odom.twist_covariance[35] == pytest.approx(0.25)
 
 
 # --------------------------------------------------------------------------- plugin declarations
