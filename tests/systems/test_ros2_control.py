@@ -1055,6 +1055,33 @@ def test_joint_state_broadcaster_frames_orders_and_filters_as_jazzys(tmp_path, m
     assert (raw.names, raw.frame_id) == (("zeta", "alpha"), "")
 
 
+def test_joint_state_broadcaster_extra_joints_join_both_messages_at_zero_once_each(tmp_path, make_sim):
+    """Jazzy joint_state_broadcaster.cpp init_joint_data: an extra joint not already known is added with
+    position, velocity and effort 0 to joint_states and dynamic_joint_states; a hardware joint named there
+    keeps its own values, and a name listed twice is added once."""
+    config = tmp_path / "c.yaml"
+    config.write_text(
+        "controller_manager:\n  ros__parameters:\n    jsb: {type: joint_state_broadcaster/JointStateBroadcaster}\n"
+        "jsb:\n  ros__parameters:\n    extra_joints: [gripper, zeta, gripper]\n"
+    )
+    sim = make_sim()
+    cm = _manager(sim.spawn(load_string(_TWO_JOINT_ARM).model, name="arm", pose=Pose((0, 0, 0.1))))
+    cm.files.append(load_params(config))
+    cm.load_controller("jsb")
+    cm.configure_controller("jsb")
+    cm.switch_controller(["jsb"], [])
+    heard: dict[str, list] = {}
+    for ep in sim.bus.endpoints():
+        if ep.topic in ("/joint_states", "/dynamic_joint_states"):
+            ep.add_sink(heard.setdefault(ep.topic, []).append)
+    sim.step(50)
+    js, djs = heard["/joint_states"][-1], heard["/dynamic_joint_states"][-1]
+    assert js.names == ("alpha", "zeta", "gripper")
+    assert (js.positions[2], js.velocities[2], js.efforts[2]) == (0.0, 0.0, 0.0)
+    assert djs.joint_names[-1] == "gripper" and djs.joint_names.count("zeta") == 1
+    assert djs.interface_values[-1] == (("position", "velocity", "effort"), (0.0, 0.0, 0.0))
+
+
 def test_remapping_rules_a_ros_peer_sets_that_rcl_would_refuse_refuse_the_load_and_the_manager_goes_on(make_sim):
     """``<name>.node_options_args`` is a parameter any ROS peer can set: a value that is not a list of strings,
     or a rule whose names are not ROS names (as rcl refuses them, and the node is not made), refuses that

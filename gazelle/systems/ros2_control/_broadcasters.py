@@ -41,7 +41,9 @@ class JointStateBroadcaster(Controller):
                 f"controller '{self.name}': 'joints' and 'interfaces' must be given together (or neither, for all)"
             )
         self._map = {f: self.param(f"map_interface_to_joint_state.{f}", f, str) for f in _JOINT_STATE_FIELDS}
-        self._extra = self.string_list("extra_joints")
+        self._extra_param = self.string_list("extra_joints")
+        self._extra: list[str] = []
+        """The extra joints published at 0: ``extra_joints`` less those the hardware has (set when activated)."""
         self._frame_id = self.param("frame_id", "base_link", str)
         if not self._frame_id:
             self.log.warning("Frame ID is not set.")
@@ -76,6 +78,9 @@ class JointStateBroadcaster(Controller):
                 names.append(prefix)
             groups[prefix].append(iface)
         self._groups = [(n, tuple(groups[n])) for n in names]
+        # init_joint_data: each of extra_joints not already a name (nor listed before) joins both messages with
+        # position, velocity and effort 0 (Jazzy joint_state_broadcaster.cpp; a hardware joint keeps its values)
+        self._extra = [e for e in dict.fromkeys(self._extra_param) if e not in groups]
         mapped = {v: k for k, v in self._map.items()}
         self._js_joints = tuple(n for n, ifaces in self._groups if any(i in mapped for i in ifaces))
         urdf = self.ctx.description_joints
@@ -106,14 +111,16 @@ class JointStateBroadcaster(Controller):
                 pos, vel, eff = pos + zeros, vel + zeros, eff + zeros
             self._js.publish(JointStates(t, self._js_joints + tuple(self._extra), pos, vel, eff, self._frame_id))
         if self._djs is not None and self._djs.wanted:
+            extra = [(_JOINT_STATE_FIELDS, (0.0, 0.0, 0.0))] * len(self._extra)
             self._djs.publish(
                 DynamicJointState(
                     t,
-                    tuple(n for n, _ in self._groups),
+                    tuple(n for n, _ in self._groups) + tuple(self._extra),
                     tuple(
                         (ifaces, tuple(states[k] for k in keys))
                         for (_, ifaces), keys in zip(self._groups, self._djs_keys, strict=True)
-                    ),
+                    )
+                    + tuple(extra),
                     self._frame_id,
                 )
             )
