@@ -496,23 +496,49 @@ class _Reader:
             return None
 
     def pick_sdf(self, folder: Path, loc: SourceLocation) -> Path | None:
-        """The SDF file of a model folder: the highest ``model.config`` version we support."""
+        """The SDF file of a model folder, chosen from its ``model.config`` as sdformat 14 chooses it
+        (``parser.cc``, ``getModelFilePath`` and ``getBestSupportedModelVersion``).
+
+        The config is ``model.config``, else the deprecated ``manifest.xml`` (warned). Of its ``<sdf>`` entries,
+        the one with the highest ``version`` this reader supports wins, the first of equals; an entry newer than
+        that is ignored with sdformat's warning; when no entry has a version gazelle can read (old models often
+        give none), the first entry is used, as sdformat does. gazelle is more forgiving in one place: a config it
+        cannot read or that names no file falls back to ``model.sdf`` with a warning, where sdformat fails."""
         config = folder / "model.config"
-        candidates: list[tuple[Version, int, Path]] = []
+        if not config.is_file() and (folder / "manifest.xml").is_file():
+            config = folder / "manifest.xml"
+            self.sink.warning(
+                ErrorCode.URI_UNRESOLVED,
+                f"{config}: The manifest.xml for a model is deprecated. Please rename manifest.xml to model.config.",
+                loc,
+            )
+        chosen: str | None = None
         if config.is_file():
             try:
                 root = etree.fromstring(config.read_bytes(), etree.XMLParser(resolve_entities=False, no_network=True))
             except (etree.XMLSyntaxError, OSError, ValueError):
                 root = None
                 self.sink.warning(ErrorCode.URI_UNRESOLVED, f"cannot read {config}; trying model.sdf", loc)
-            if root is not None:
-                for i, entry in enumerate(root.iter("sdf")):
-                    version = parse_version(entry.get("version"))
-                    file = (entry.text or "").strip()
-                    if version is not None and file and version <= MAX_VERSION:
-                        candidates.append((version, -i, folder / file))
-        for _, _, path in sorted(candidates, reverse=True):
-            if path.is_file():
-                return path
+            entries = list(root.iter("sdf")) if root is not None else []
+            best: etree._Element | None = entries[0] if entries else None
+            best_version: Version = (0, 0)
+            for entry in entries:
+                version = parse_version(entry.get("version"))
+                if version is None or version <= best_version:
+                    continue
+                if version <= MAX_VERSION:
+                    best, best_version = entry, version
+                else:
+                    self.sink.warning(
+                        ErrorCode.SDF_VERSION_UNSUPPORTED,
+                        f"{config}: ignoring version {entry.get('version')} of model '{folder.name}' because it is "
+                        f"newer than the SDFormat gazelle reads ({'.'.join(map(str, MAX_VERSION))})",
+                        loc,
+                    )
+            chosen = (best.text or "").strip() if best is not None else None
+            if root is not None and not chosen:
+                self.sink.warning(ErrorCode.URI_UNRESOLVED, f"{config} names no <sdf> file; trying model.sdf", loc)
+        if chosen:
+            return folder / chosen
         fallback = folder / "model.sdf"
         return fallback if fallback.is_file() else None

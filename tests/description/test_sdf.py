@@ -212,7 +212,31 @@ def test_model_config_picks_highest_supported_version(tmp_path):
     (folder / "future.sdf").write_text(f'<sdf version="1.12">{body.format("future")}</sdf>')
     world = '<sdf version="1.9"><world name="w"><include><uri>model://widget</uri></include></world></sdf>'
     result = load_string(world, format="sdf", resolver=resolver(tmp_path))
-    assert [m.name for m in result.world.models] == ["current"] and not result.diagnostics
+    assert [m.name for m in result.world.models] == ["current"]
+    # sdformat's getBestSupportedModelVersion warns about the entry it is too old to read
+    assert [d.message for d in result.diagnostics] == [
+        f"{folder / 'model.config'}: ignoring version 1.12 of model 'widget' because it is newer than the "
+        "SDFormat gazelle reads (1.11)"
+    ]
+
+
+def test_a_model_config_without_versions_uses_its_first_sdf_entry_and_manifest_xml_still_works(tmp_path):
+    """sdformat 14 parser.cc: with no readable version, the first <sdf> entry is the model's file, whatever
+    its name; without model.config, the deprecated manifest.xml is read, with a warning."""
+    body = '<sdf version="1.6"><model name="{0}"><link name="l"/></model></sdf>'
+    for name, config in (("plain", "model.config"), ("old", "manifest.xml")):
+        folder = tmp_path / name
+        folder.mkdir()
+        (folder / config).write_text(f"<model><name>{name}</name><sdf>{name}.sdf</sdf><sdf>other.sdf</sdf></model>")
+        (folder / f"{name}.sdf").write_text(body.format(name))
+        (folder / "other.sdf").write_text(body.format("other"))
+    world = (
+        '<sdf version="1.9"><world name="w"><include><uri>model://plain</uri></include>'
+        "<include><uri>model://old</uri></include></world></sdf>"
+    )
+    result = load_string(world, format="sdf", resolver=resolver(tmp_path))
+    assert [m.name for m in result.world.models] == ["plain", "old"]
+    assert ["manifest.xml for a model is deprecated" in d.message for d in result.diagnostics] == [True]
 
 
 @needs_real
