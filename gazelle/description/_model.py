@@ -593,14 +593,14 @@ class Light:
 
     name: str
     """The light's name."""
-    type: str = "directional"
-    """"directional", "point" or "spot"."""
+    type: str = "point"
+    """"directional", "point" or "spot" (SDF's default: point)."""
     pose: Pose = IDENTITY
     """Where the light is, in the world (point and spot lights)."""
-    diffuse: RGBA = (0.8, 0.8, 0.8, 1.0)
-    """RGBA 0..1."""
-    specular: RGBA = (0.2, 0.2, 0.2, 1.0)
-    """RGBA 0..1."""
+    diffuse: RGBA = (1.0, 1.0, 1.0, 1.0)
+    """RGBA 0..1; SDF's default (sdf/1.11/light.sdf, which sdformat's Light returns for an element left out)."""
+    specular: RGBA = (0.1, 0.1, 0.1, 1.0)
+    """RGBA 0..1; SDF's default, as :attr:`diffuse`."""
     direction: Vec3 = (0.0, 0.0, -1.0)
     """Where a directional or spot light points, in the light's frame."""
     cast_shadows: bool = False

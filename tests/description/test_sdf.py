@@ -470,6 +470,8 @@ def test_lone_light_is_a_world():
         resolver=resolver(),
     ).value
     assert isinstance(world, World) and world.name == "default" and world.lights[0].name == "bulb"
+    # the colours it leaves out are sdf/1.11/light.sdf's defaults, as sdformat's Light reads them
+    assert (world.lights[0].diffuse, world.lights[0].specular) == ((1, 1, 1, 1), (0.1, 0.1, 0.1, 1))
 
 
 # --------------------------------------------------------------------------- invalid files
