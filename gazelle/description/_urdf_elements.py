@@ -261,18 +261,27 @@ class ElementReader:
 
     # ---- geometry
     def geometry(self, parent: etree._Element, what: str) -> Geometry | None:
-        """The one shape inside ``parent``'s ``<geometry>`` (errors when missing or invalid)."""
+        """The shape inside ``parent``'s ``<geometry>`` (errors when missing or invalid).
+
+        As urdfdom's ``parseGeometry`` (link.cpp), the first child element is the shape: an empty ``<geometry>``
+        is an error ("Geometry tag contains no child element."), and a second shape, which urdfdom (so
+        robot_state_publisher and Gazebo's URDF reader) passes over in silence, is warned about by name."""
         geom = parent.find("geometry")
         if geom is None:
             self.error(ErrorCode.ELEMENT_MISSING, f"{what} has no <geometry>", parent)
             return None
         shapes = child_elements(geom)
-        if len(shapes) != 1:
-            self.error(
-                ErrorCode.GEOMETRY_INVALID, f"<geometry> of {what} must hold exactly one shape, has {len(shapes)}", geom
-            )
+        if not shapes:
+            self.error(ErrorCode.GEOMETRY_INVALID, f"<geometry> of {what} contains no child element", geom)
             return None
         shape = shapes[0]
+        for extra in shapes[1:]:
+            self.warn(
+                ErrorCode.GEOMETRY_INVALID,
+                f"<geometry> of {what} holds a second shape <{local_name(extra)}>; only the first, "
+                f"<{local_name(shape)}>, is used (as urdfdom reads it)",
+                extra,
+            )
         reader = _SHAPE_READERS.get(local_name(shape))
         if reader is None:
             self.error(

@@ -612,3 +612,18 @@ def test_a_load_result_gives_its_value_typed_or_says_what_it_holds() -> None:
     assert isinstance(world.world, World) and world.world.name == "w"
     with pytest.raises(TypeError, match="expected an SRDF, but the description is a World"):
         _ = world.semantics
+
+
+def test_a_geometry_with_two_shapes_uses_the_first_as_urdfdom_and_names_the_second() -> None:
+    """urdfdom's parseGeometry (link.cpp) reads the first child element of <geometry> and passes over the rest:
+    robot_state_publisher and Gazebo load such a file, so gazelle does too, and says what it left out."""
+    urdf = """<robot name="r"><link name="a">
+  <visual><geometry><box size="1 2 3"/><sphere radius="1"/></geometry></visual>
+  <inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>
+</link></robot>"""
+    result = load_string(urdf)
+    assert result.model is not None and result.model.links[0].visuals[0].geometry == Box((1.0, 2.0, 3.0))
+    assert [d.format() for d in result.diagnostics] == [
+        "<string>.urdf:2: warning: [GEOMETRY_INVALID] <geometry> of visual 'a_visual_0' of link 'a' holds a second "
+        "shape <sphere>; only the first, <box>, is used (as urdfdom reads it)"
+    ]
