@@ -86,7 +86,13 @@ _PATH = re.compile(r"^/(?:[\d.]+/)?(?P<owner>[^/]+)/models/(?P<name>[^/]+)(?:/(?
 
 
 def parse_fuel_uri(uri: str) -> FuelModel | None:
-    """The Fuel model a URI names, or None when it is not a Fuel model URI."""
+    """The Fuel model a URI names, or None when it is not a Fuel model URI.
+
+    The forms worlds use: ``https://fuel.gazebosim.org/1.0/<owner>/models/<name>``, with or without the API
+    version, with a version number or ``tip`` after the name, and with a file path after that (a mesh inside
+    the model). Owner and name are percent-decoded (Fuel's names have spaces: ``Construction Cone``); ``tip``
+    means the newest version, as gz-fuel-tools reads it. Only the Fuel hosts are models; any other
+    ``https://`` URI is not one, and is never fetched."""
     uri = uri.strip()
     if not uri.lower().startswith(("https://", "http://")):
         return None
@@ -115,7 +121,12 @@ def cache_roots(environ: dict[str, str] | os._Environ[str] = os.environ) -> list
 
 
 def find_cached(model: FuelModel, roots: list[Path]) -> Path | None:
-    """The folder of ``model`` in a local Fuel cache (the newest version unless one is named), or None."""
+    """The folder of ``model`` in a local Fuel cache (the newest version unless one is named), or None.
+
+    gz-fuel-tools keeps a download as ``<cache>/<host>/<owner>/models/<name>/<version>/``; the owner and
+    name are matched without regard to case, and a name's folder may be percent-encoded, so a cache written by
+    either spelling is found. Only numbered version folders count; the highest wins when the URI names none,
+    which is what a world that says ``tip`` (or nothing) got when it was downloaded."""
     want_owner, want_name = model.owner.lower(), model.name.lower()
     for root in roots:
         host_dir = root / model.host

@@ -109,7 +109,13 @@ def _ellipsoid_props(a: float, b: float, c: float) -> UnitProperties:
 
 # --------------------------------------------------------------------------- meshes
 def _read_stl(path: str) -> npt.NDArray[np.float64]:
-    """Triangles (n, 3, 3) of a binary or ASCII STL file."""
+    """Triangles (n, 3, 3) of a binary or ASCII STL file, in the file's units (metres for ROS meshes).
+
+    Read here rather than through trimesh because STL is most robots' collision format and this is the
+    inertia path's hot spot: a binary file is one numpy view of its records (50 bytes each after the
+    84-byte header, so the size check tells binary from an ASCII file that happens to start with "solid");
+    an ASCII one is its ``vertex`` lines. Anything else is a :class:`MeshReadError`, which the caller
+    reports with the mesh's file:line."""
     with open(path, "rb") as f:
         data = f.read()
     if len(data) >= 84:

@@ -688,7 +688,11 @@ class _Loader(_Parts):
         return physics
 
     def scene(self, element: etree._Element, doc: _Doc) -> Scene:
-        """``<scene>``: ambient and background colours, shadows, grid; SDF's defaults for what it leaves out."""
+        """``<scene>``: ambient and background colours, shadows, grid; SDF's defaults for what it leaves out.
+
+        The defaults are ``sdf/1.11/scene.sdf``'s (ambient 0.4 grey, background 0.7 grey, shadows and grid on),
+        kept in :class:`Scene`. Cameras render with the ambient, background and shadows; the grid is the
+        browser viewer's. ``<fog>``, ``<sky>`` and the rest are named by :meth:`check` as not simulated."""
         scene_el = _find(element, "scene")
         scene = Scene()
         if scene_el is not None:

@@ -310,7 +310,11 @@ class _Reader:
         return None if child is None else (child.text or "").strip()
 
     def number(self, element: etree._Element | None, tag: str, default: float, doc: _Doc) -> float:
-        """A finite number child; the default when absent; an error (and the default) when malformed."""
+        """A finite number child; the default when absent; an error (and the default) when malformed.
+
+        sdformat reports a number it cannot parse as an error too; gazelle reports it at its line and carries
+        on with the default, so each slip in a file is named in one pass instead of one per run. NaN and infinities count as malformed: MuJoCo would accept them and
+        the simulation would fail later, far from the line that caused it."""
         if element is None:
             return default
         child = _find(element, tag)
@@ -336,7 +340,9 @@ class _Reader:
     def vector(
         self, element: etree._Element | None, tag: str, count: int, default: tuple[float, ...] | None, doc: _Doc
     ) -> tuple[float, ...] | None:
-        """``count`` numbers from a child; default when absent; error + default when malformed."""
+        """``count`` numbers from a child; default when absent; error + default when malformed (see
+        :meth:`number`). The count is SDF's type for the element (3 for a vector3, 2 for a vector2d); colours
+        have their own reader, :meth:`color`, which takes RGB as opaque RGBA."""
         if element is None:
             return default
         child = _find(element, tag)

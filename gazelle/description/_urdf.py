@@ -171,7 +171,11 @@ class _Reader(ElementReader):
             )
 
     def apply_model_gazebo(self, element: etree._Element, doc: UrdfDocument) -> None:
-        """Robot-level ``<gazebo>``: plugins and model flags."""
+        """Robot-level ``<gazebo>`` (no ``reference``): plugins and model flags.
+
+        sdformat's URDF conversion (``parser_urdf.cc``) copies such a block into the SDF ``<model>``: its
+        ``<plugin>`` elements become the model's plugins, ``<static>`` and ``<self_collide>`` the model's
+        flags. Anything else in it is warned about by name rather than dropped in silence."""
         for child in child_elements(element):
             tag = local_name(child)
             if tag == "plugin":
@@ -321,7 +325,13 @@ class _Reader(ElementReader):
         )
 
     def control_component(self, element: etree._Element, tag: str) -> ControlComponent | None:
-        """A ``<joint>``/``<sensor>``/``<gpio>`` of a ros2_control block, with its interfaces."""
+        """A ``<joint>``/``<sensor>``/``<gpio>`` of a ros2_control block, with its interfaces.
+
+        Read as ros2_control Jazzy's ``component_parser.cpp`` reads it: the component's and each interface's
+        ``name`` attribute, the ``<param name=...>`` children of both (an interface's ``min``, ``max`` and
+        ``initial_value`` among them, kept as text, as there). Where upstream throws and the whole hardware
+        fails to load (an interface without a name), gazelle warns at the line and leaves that interface
+        out, so one slip does not take the robot's other joints down with it."""
         name = self.name(element, f"<{tag}> in <ros2_control>")
         if name is None:
             return None
@@ -340,7 +350,14 @@ class _Reader(ElementReader):
         return ControlComponent(name, tuple(commands), tuple(states), self.control_params(element), self.loc(element))
 
     def named_materials(self, root: etree._Element) -> dict[str, Material]:
-        """Materials usable by name: top-level ones first, then any defined inline in a visual."""
+        """Materials usable by name: top-level ones first, then any defined inline in a visual.
+
+        urdfdom (``model.cpp``) registers the top-level ``<material>`` elements, then, link by link, a
+        visual's material that has a colour or texture under its name, so that a later visual can use it by
+        name alone. gazelle takes the inline ones from every link before resolving any, so the order of the
+        links does not matter; and where urdfdom refuses the whole robot (a top-level name given twice, a
+        name never defined), gazelle warns at the line and goes on: the first definition wins, and an
+        undefined name leaves the visual its own colour (see :meth:`material`)."""
         named: dict[str, Material] = {}
         top = [el for el in root.findall("material")]
         inline = [el for el in root.iterfind("link/visual/material")]

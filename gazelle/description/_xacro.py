@@ -337,7 +337,12 @@ def expand(
 
 
 def _expand_request(request: dict) -> tuple[str | None, list[tuple[str, str, str, str | None, int | None]]]:
-    """The worker's side of :func:`expand_bounded`: plain data in, plain data out."""
+    """The worker's side of :func:`expand_bounded`: plain data in, plain data out.
+
+    It runs in the bounded helper process, so everything crossing over is picklable and small: the text,
+    the arguments and the resolver's roots in; the expanded XML and the diagnostics as tuples (code,
+    severity, message, file, line) out, rebuilt into :class:`Diagnostic` objects on the caller's side. The
+    resolver is rebuilt from the same roots, so the worker reads exactly the files the caller could."""
     resolver = ResourceResolver(
         [Path(p) for p in request["extra_paths"]], request["env"], [Path(p) for p in request["trusted_dirs"]]
     )
