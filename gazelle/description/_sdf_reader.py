@@ -313,8 +313,9 @@ class _Reader:
         """A finite number child; the default when absent; an error (and the default) when malformed.
 
         sdformat reports a number it cannot parse as an error too; gazelle reports it at its line and carries
-        on with the default, so each slip in a file is named in one pass instead of one per run. NaN and infinities count as malformed: MuJoCo would accept them and
-        the simulation would fail later, far from the line that caused it."""
+        on with the default, so each slip in a file is named in one pass instead of one per run. NaN and
+        infinities count as malformed: MuJoCo would accept them and the simulation would fail later, far from
+        the line that caused it."""
         if element is None:
             return default
         child = _find(element, tag)
