@@ -736,6 +736,24 @@ def test_a_ros2_control_initial_value_that_is_not_a_number_is_a_warning_naming_i
     assert said and "initial_value of joint 'left_wheel_joint' must be a number, got 'half'; using 0" in said[0], said
 
 
+def test_a_velocity_initial_value_sets_the_joint_moving_and_an_effort_one_is_named(make_sim, caplog):
+    """gz_ros2_control (jazzy gz_system.cpp initSim): a velocity state interface's initial_value becomes the
+    joint's starting velocity (JointVelocityReset); an effort one has nothing to act on in a simulated joint."""
+    text = DIFFBOT_URDF.read_text().replace(
+        '<state_interface name="velocity"/>',
+        '<state_interface name="velocity"><param name="initial_value">2.5</param></state_interface>'
+        '<state_interface name="effort"><param name="initial_value">1.0</param></state_interface>',
+        1,
+    )
+    sim = make_sim()
+    with caplog.at_level("WARNING"):
+        entity = sim.spawn(load_string(text, format="urdf").model, name="diffbot", pose=Pose((0.0, 0.0, 0.05)))
+    _manager(entity).hardware[0].start()  # what the manager's first cycle does
+    _, dof = sim.world.joint_address("diffbot", "left_wheel_joint")
+    assert float(sim.world.data.qvel[dof]) == 2.5
+    assert "initial_value of joint 'left_wheel_joint' (effort) is not simulated" in caplog.text
+
+
 def test_unknown_types_missing_interfaces_and_unloaded_controllers_are_clear_errors(make_sim):
     sim = make_sim()
     cm = _manager(_diffbot(sim))

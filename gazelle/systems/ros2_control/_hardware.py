@@ -100,6 +100,8 @@ class _Joint:
     """The command interface whose actuator is switched on."""
     initial: float | None = None
     """``initial_value`` of the position state interface, applied by :meth:`SimHardware.start`."""
+    initial_velocity: float = 0.0
+    """``initial_value`` of the velocity state interface (0 without one), applied with :attr:`initial`."""
     last_target: tuple[float, float] | None = None
     """(position target, sim time) last sent in position mode."""
     keys: dict[str, str] = field(default_factory=dict)
@@ -241,10 +243,18 @@ class SimHardware:
                 continue
             self.states[f"{comp.name}/{si.name}"] = 0.0
             init = si.param("initial_value")
-            if si.name == "position" and init is not None:
-                joint.initial = self._number(
-                    init, 0.0, f"{where}ros2_control '{rc.name}': initial_value of joint '{comp.name}'"
-                )
+            if init is None:
+                continue
+            # gz_ros2_control's GazeboSimSystem::initSim (jazzy gz_system.cpp): a position initial_value resets
+            # the joint there (JointPositionReset), a velocity one sets it moving (JointVelocityReset); an effort
+            # one only seeds the reported effort and its command, which a simulated joint has no use for
+            what = f"{where}ros2_control '{rc.name}': initial_value of joint '{comp.name}'"
+            if si.name == "position":
+                joint.initial = self._number(init, 0.0, what)
+            elif si.name == "velocity":
+                joint.initial_velocity = self._number(init, 0.0, f"{what} (velocity)")
+            else:
+                self._warn(f"{what} (effort) is not simulated: a joint's effort comes from its actuator")
         if j.mimic is not None:
             joint.mimic = (j.mimic.joint, j.mimic.multiplier, j.mimic.offset)
         joint.velocity = self._velocity_servos.get(comp.name)
@@ -348,14 +358,16 @@ class SimHardware:
 
     # ------------------------------------------------------------------ after the spawn
     def start(self) -> None:
-        """Once the entity is in the world (idempotent): joints go to their ``initial_value``, and
-        those no controller commands hold there."""
+        """Once the entity is in the world (idempotent): joints go to their ``initial_value`` (position, and
+        velocity: a wheel given one starts turning), and those no controller commands hold there."""
         if self._started:
             return
         self._started = True
         for joint in self.joints.values():
-            if joint.initial is not None:
-                self.world.set_joint_state(self.entity, joint.name, position=joint.initial, velocity=0.0)
+            if joint.initial is not None or joint.initial_velocity != 0.0:
+                self.world.set_joint_state(
+                    self.entity, joint.name, position=joint.initial, velocity=joint.initial_velocity
+                )
         for joint in self.joints.values():
             if joint.position is not None:
                 # now the joint's real inertia is known (with all it carries): the servo's gains from it
