@@ -2,8 +2,8 @@
 
 Each control cycle (the controller manager's ``update_rate``, in sim time):
 
-1. The latest ``~/cmd_vel`` (geometry_msgs/TwistStamped; ``~/cmd_vel_unstamped`` with
-   ``use_stamped_vel: false``) is the command until ``cmd_vel_timeout`` seconds after it arrived; then
+1. The latest ``~/cmd_vel`` (geometry_msgs/TwistStamped; ``~/cmd_vel_unstamped`` with Humble's
+   ``use_stamped_vel: false``, kept with a warning: Jazzy has no such parameter) is the command until ``cmd_vel_timeout`` seconds after it arrived; then
    the robot is commanded to stop. Only ``linear.x`` (m/s) and ``angular.z`` (rad/s) are read.
 2. :class:`SpeedLimiter` bounds each by its ``linear.x.*`` / ``angular.z.*`` velocity, acceleration
    and jerk limits (a limit left out is not applied).
@@ -127,6 +127,15 @@ class DiffDriveController(Controller):
         self.linear = SpeedLimiter("linear.x", self)
         self.angular = SpeedLimiter("angular.z", self)
         stamped = self.param("use_stamped_vel", True, bool)
+        if not stamped:
+            # ros2_controllers removed the parameter in 4.0.0, Jazzy's first release ("Remove non-stamped Twist
+            # option", #812): on a real Jazzy robot this YAML's controller listens to ~/cmd_vel (TwistStamped)
+            # only. gazelle keeps Humble's unstamped topic so the file runs unchanged, and says so once
+            self.log.warning(
+                "use_stamped_vel: false is Humble's: Jazzy's diff_drive_controller has no such parameter and "
+                "takes geometry_msgs/TwistStamped on ~/cmd_vel only; gazelle listens on ~/cmd_vel_unstamped "
+                "(geometry_msgs/Twist) as Humble did"
+            )
         self._cmd: tuple[Twist, float | None] | None = None
         """(twist, header stamp or None) as received; its arrival time is taken at the next cycle."""
         if stamped:
