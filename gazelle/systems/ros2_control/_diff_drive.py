@@ -3,8 +3,9 @@
 Each control cycle (the controller manager's ``update_rate``, in sim time):
 
 1. The latest ``~/cmd_vel`` (geometry_msgs/TwistStamped; ``~/cmd_vel_unstamped`` with Humble's
-   ``use_stamped_vel: false``, kept with a warning: Jazzy has no such parameter) is the command until ``cmd_vel_timeout`` seconds after it arrived; then
-   the robot is commanded to stop. Only ``linear.x`` (m/s) and ``angular.z`` (rad/s) are read.
+   ``use_stamped_vel: false``, kept with a warning: Jazzy has no such parameter) is the command until
+   ``cmd_vel_timeout`` seconds after it arrived; then the robot is commanded to stop. Only ``linear.x``
+   (m/s) and ``angular.z`` (rad/s) are read.
 2. :class:`SpeedLimiter` bounds each by its ``linear.x.*`` / ``angular.z.*`` velocity, acceleration
    and jerk limits (a limit left out is not applied).
 3. The wheels get ``(v ∓ ω·s/2) / r`` rad/s on their velocity command interfaces, with ``s`` the
