@@ -32,12 +32,12 @@ if TYPE_CHECKING:
     from ._params import load_params as load_params
     from ._params import parse_params as parse_params
     from ._params import yaml_problem as yaml_problem
+    from ._tolerances import SegmentTolerances as SegmentTolerances
+    from ._tolerances import Tolerance as Tolerance
+    from ._tolerances import segment_tolerances as segment_tolerances
     from ._trajectory import JointTrajectoryController as JointTrajectoryController
-    from ._trajectory import SegmentTolerances as SegmentTolerances
-    from ._trajectory import Tolerance as Tolerance
     from ._trajectory import TrajectoryGoal as TrajectoryGoal
     from ._trajectory import TrajectoryResult as TrajectoryResult
-    from ._trajectory import segment_tolerances as segment_tolerances
 
 __getattr__ = lazy_attributes(__name__, __file__)
 

@@ -35,6 +35,7 @@ from .._bus import MsgType
 from .._payloads import JointTrajectory, TrajectoryControllerState, TrajectoryPoint
 from ._controller import Controller, GoalState, values_getter, values_or_zero
 from ._hardware import ControlError
+from ._tolerances import FLOAT_EPSILON, Tolerance, violates
 
 
 class TrajectoryResult(enum.IntEnum):
@@ -48,9 +49,6 @@ class TrajectoryResult(enum.IntEnum):
     GOAL_TOLERANCE_VIOLATED = -5
 
 
-_FLOAT_EPSILON = 1.1920929e-07
-"""std::numeric_limits<float>::epsilon(), the JTC's "not zero" threshold for the last point's velocities."""
-
 _ALLOWED_COMMANDS = (
     ("position",),
     ("position", "velocity"),
@@ -58,15 +56,6 @@ _ALLOWED_COMMANDS = (
     ("velocity",),
     ("effort",),
 )
-
-
-@dataclass(frozen=True)
-class Tolerance:
-    """Position, velocity and acceleration tolerance of one joint (0: not checked)."""
-
-    position: float = 0.0
-    velocity: float = 0.0
-    acceleration: float = 0.0
 
 
 @dataclass
@@ -314,30 +303,33 @@ class JointTrajectoryController(Controller):
         """Why a trajectory is refused (code, reason), or None when it is acceptable."""
         if self.state != "active":
             return TrajectoryResult.INVALID_GOAL, f"controller '{self.name}' is not active"
-        unknown = [j for j in traj.joint_names if j not in self.joints]
-        if unknown:
+        # the checks of jazzy's validate_trajectory_msg (joint_trajectory_controller.cpp), with its texts (and
+        # gazelle's joint list after them, which upstream's log leaves out); the action's goal callback rejects
+        # with them and the topic logs them. A joint named twice and a value that is not finite are gazelle's
+        # own refusals: upstream would send the NaN to the hardware, or command one joint twice
+        if not self.allow_partial and len(traj.joint_names) != len(self.joints):  # upstream counts them
+            missing = [j for j in self.joints if j not in traj.joint_names]
             return (
                 TrajectoryResult.INVALID_JOINTS,
-                f"joints {unknown} are not controlled by '{self.name}' (it has {self.joints})",
+                f"Joints on incoming trajectory don't match the controller joints. (missing: {missing}; "
+                "allow_partial_joints_goal is false)",
             )
-        if len(set(traj.joint_names)) != len(traj.joint_names):
-            return TrajectoryResult.INVALID_JOINTS, "a joint is named twice"
-        # the checks of jazzy's validate_trajectory_msg (joint_trajectory_controller.cpp), with its texts where
-        # it has one; the action's goal callback rejects with them and the topic logs them
         if not traj.joint_names:
             return TrajectoryResult.INVALID_JOINTS, "Empty joint names on incoming trajectory."
         if not traj.points:
             return TrajectoryResult.INVALID_GOAL, "Empty trajectory received."
-        if not self.allow_partial and set(traj.joint_names) != set(self.joints):
-            missing = [j for j in self.joints if j not in traj.joint_names]
+        unknown = [j for j in traj.joint_names if j not in self.joints]
+        if unknown:
             return (
                 TrajectoryResult.INVALID_JOINTS,
-                f"joints {missing} are missing and allow_partial_joints_goal is false",
+                f"Incoming joint {unknown[0]} doesn't match the controller's joints. ('{self.name}' has {self.joints})",
             )
+        if len(set(traj.joint_names)) != len(traj.joint_names):
+            return TrajectoryResult.INVALID_JOINTS, "a joint is named twice"
         n = len(traj.joint_names)
         if not self.allow_nonzero_end_velocity:  # Jazzy's default: a trajectory must end at rest
             for name, v in zip(traj.joint_names, traj.points[-1].velocities):
-                if abs(v) > _FLOAT_EPSILON:
+                if abs(v) > FLOAT_EPSILON:
                     return (
                         TrajectoryResult.INVALID_GOAL,
                         f"Velocity of last trajectory point of joint {name} is not zero: {v:.15f} "
@@ -350,11 +342,15 @@ class JointTrajectoryController(Controller):
                 return TrajectoryResult.INVALID_GOAL, why
             for label, values in (("velocities", p.velocities), ("accelerations", p.accelerations)):
                 if values and len(values) != n:
-                    return TrajectoryResult.INVALID_GOAL, f"point {i} has {len(values)} {label} for {n} joints"
+                    return TrajectoryResult.INVALID_GOAL, _size_mismatch(n, label, len(values), i)
             if not all(math.isfinite(v) for v in (*p.positions, *p.velocities, *p.accelerations)):
                 return TrajectoryResult.INVALID_GOAL, f"point {i} has a value that is not finite"
             if p.time_from_start_sec <= last:
-                return TrajectoryResult.INVALID_GOAL, f"point {i}: time_from_start must increase strictly"
+                return (
+                    TrajectoryResult.INVALID_GOAL,
+                    f"Time between points {i - 1} and {i} is not strictly increasing, it is {last:f} and "
+                    f"{p.time_from_start_sec:f} respectively",
+                )
             last = p.time_from_start_sec
         if now is not None and traj.stamp_sec > 0 and traj.points:
             if traj.stamp_sec + traj.points[-1].time_from_start_sec < now:
@@ -380,7 +376,7 @@ class JointTrajectoryController(Controller):
             if self.cmd_kinds not in (("velocity",), ("effort",)):
                 return f"point {i} has no positions: gazelle integrates positions only for velocity or effort commands"
         elif len(p.positions) != n:
-            return f"point {i} has {len(p.positions)} positions for {n} joints"
+            return _size_mismatch(n, "positions", len(p.positions), i)
         return None
 
     def submit(self, goal: TrajectoryGoal) -> None:
@@ -668,7 +664,7 @@ class JointTrajectoryController(Controller):
         assert goal is not None
         end = traj.times[-1]
         if t < end:
-            left = [k for k, tol in enumerate(traj.path_tolerance or ()) if _violates(tol, err_p[k], err_v[k])]
+            left = [k for k, tol in enumerate(traj.path_tolerance or ()) if violates(tol, err_p[k], err_v[k])]
             if left:
                 assert traj.path_tolerance is not None
                 self._log_tolerance_failures(left, traj.path_tolerance, err_p, err_v)
@@ -681,7 +677,7 @@ class JointTrajectoryController(Controller):
                 )
             return
         tolerances = [goal.goal_tolerance.get(j, self.goal_tol[j]) for j in self.joints]
-        outside = [k for k, tol in enumerate(tolerances) if _violates(tol, err_p[k], err_v[k])]
+        outside = [k for k, tol in enumerate(tolerances) if violates(tol, err_p[k], err_v[k])]
         if not outside:
             self._traj = None
             self.log.info("Goal reached, success!")
@@ -710,6 +706,12 @@ class JointTrajectoryController(Controller):
                 self.log.error(f"Velocity Error: {err_v[k]:f}, Velocity Tolerance: {tol.velocity:f}")
 
 
+def _size_mismatch(joints: int, field: str, size: int, i: int) -> str:
+    """validate_trajectory_point_field's text (Jazzy joint_trajectory_controller.cpp) for a point whose
+    ``field`` has ``size`` values where the trajectory names ``joints`` joints."""
+    return f"Mismatch between joint_names size ({joints}) and {field} ({size}) at point #{i}."
+
+
 def _preempted_by(goal: TrajectoryGoal | None) -> str:
     """Why a goal ended when a newer trajectory replaced it. A new goal aborts it as jazzy's
     ``preempt_active_goal`` does (ABORTED, INVALID_GOAL, its text); a trajectory on ``~/joint_trajectory``
@@ -718,81 +720,3 @@ def _preempted_by(goal: TrajectoryGoal | None) -> str:
     if goal is not None:
         return "Current goal preempted by new incoming action."
     return "Current goal preempted by a trajectory on ~/joint_trajectory."
-
-
-def _violates(tol: Tolerance, err_p: float, err_v: float) -> bool:
-    """Whether an error breaks a tolerance (a tolerance of 0 is not checked)."""
-    return (tol.position > 0 and abs(err_p) > tol.position) or (tol.velocity > 0 and abs(err_v) > tol.velocity)
-
-
-@dataclass(frozen=True)
-class SegmentTolerances:
-    """What a goal is held to (tolerances.hpp ``SegmentTolerances``): per joint its path and goal tolerances,
-    and the time after the trajectory's end within which the goal tolerances must be met (0: no limit)."""
-
-    path: dict[str, Tolerance]
-    goal: dict[str, Tolerance]
-    goal_time: float
-    """Seconds after the last point's time (0: wait for ever, as Jazzy does)."""
-
-
-_ERASE = -1.0
-"""control_msgs/JointTolerance: -1 erases a default (the joint moves without that check)."""
-
-
-def resolve_tolerance(default: float, given: float) -> float:
-    """One tolerance of a goal over the controller's (control_msgs/JointTolerance; tolerances.hpp
-    ``resolve_tolerance_source``): > 0 replaces it, 0 keeps it, -1 erases it (0: not checked).
-
-    Raises:
-        ValueError: any other negative value.
-    """
-    if given > 0.0:
-        return given
-    if abs(given - _ERASE) < _FLOAT_EPSILON:  # within a float's epsilon of -1, as upstream compares
-        return 0.0
-    if given < 0.0:
-        raise ValueError(given)
-    return default
-
-
-def segment_tolerances(
-    controller: JointTrajectoryController,
-    path: Sequence[tuple[str, float, float, float]],
-    goal: Sequence[tuple[str, float, float, float]],
-    goal_time: float,
-) -> SegmentTolerances:
-    """A FollowJointTrajectory goal's ``path_tolerance``, ``goal_tolerance`` ((joint, position, velocity,
-    acceleration) each) and ``goal_time_tolerance`` over the controller's ``constraints``, as ros2_controllers
-    jazzy's ``get_segment_tolerances`` resolves them: a joint the controller does not have, or an illegal
-    value, discards all of the goal's tolerances for the controller's own, with upstream's error."""
-    defaults = SegmentTolerances(dict(controller.path_tol), dict(controller.goal_tol), controller.goal_time)
-    log = controller.log
-    try:
-        resolved_time = resolve_tolerance(defaults.goal_time, goal_time)
-    except ValueError:
-        log.error(f"Specified illegal goal_time_tolerance: {goal_time:f}. Using default tolerances")
-        return defaults
-    out = SegmentTolerances(dict(defaults.path), dict(defaults.goal), resolved_time)
-    for which, given, table in (("path_tolerance", path, out.path), ("goal_tolerance", goal, out.goal)):
-        for name, *values in given:
-            if name not in table:
-                log.error(f"joint '{name}' specified in goal.{which} does not exist. Using default tolerances.")
-                return defaults
-            before = table[name]
-            resolved = []
-            for interface, value, old in zip(
-                ("position", "velocity", "acceleration"),
-                values,
-                (before.position, before.velocity, before.acceleration),
-            ):
-                try:
-                    resolved.append(resolve_tolerance(old, value))
-                except ValueError:
-                    log.error(
-                        f"joint '{name}' specified in goal.{which} has a invalid {interface} tolerance. "
-                        "Using default tolerances."
-                    )
-                    return defaults
-            table[name] = Tolerance(*resolved)
-    return out
