@@ -49,10 +49,9 @@ class Magnetometer(_SensorSystem):
         block = self.sensor.config.find("magnetometer") if self.sensor and self.sensor.config is not None else None
         self._noise = xyz_noise(block, ctx.logger, "magnetometer")
         self._bias = np.array([n.bias(self._rng) for n in self._noise])
-        cov = [0.0] * 9
-        for i, n in enumerate(self._noise):
-            cov[4 * i] = n.stddev**2 if n.active else 0.0
-        self._cov = tuple(cov)
+        # the covariance stays zeros whatever the noise: gz-msgs' Magnetometer has none to carry, and
+        # ros_gz_bridge (convert/sensor_msgs.cpp) says "magnetic_field_covariance is not supported"
+        self._cov = (0.0,) * 9
         assert self.output is not None
         ctx.logger.info(
             f"magnetometer on [{self.link}] at {self.rate_hz:g} Hz on [{self.output.topic}] "
