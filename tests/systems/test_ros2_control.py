@@ -1081,6 +1081,52 @@ def test_joint_state_broadcaster_frames_orders_and_filters_as_jazzys(tmp_path, m
     assert (raw.names, raw.frame_id) == (("zeta", "alpha"), "")
 
 
+def test_an_effort_trajectory_controller_adds_the_trajectorys_efforts_as_feedforward(tmp_path, make_sim):
+    """Jazzy's JTC with an effort command interface commands PID + ``command_next_.effort``: the trajectory's
+    efforts, linear between its points (trajectory.cpp interpolate_between_points), sampled a cycle ahead;
+    none on the segment from the state before the trajectory. With zero gains the command is the feedforward."""
+    from gazelle.systems import JointTrajectory, TrajectoryPoint
+
+    urdf = _TWO_JOINT_ARM.replace('<command_interface name="position"/>', '<command_interface name="effort"/>')
+    both = '<state_interface name="position"/><state_interface name="velocity"/>'
+    urdf = urdf.replace('<state_interface name="velocity"/>', "").replace('<state_interface name="position"/>', both)
+    config = tmp_path / "c.yaml"
+    gains = "{p: 0.0, i: 0.0, d: 0.0, ff_velocity_scale: 0.0}"
+    config.write_text(
+        "controller_manager:\n  ros__parameters:\n    update_rate: 100\n"
+        "    arm: {type: joint_trajectory_controller/JointTrajectoryController}\n"
+        "arm:\n  ros__parameters:\n    joints: [zeta, alpha]\n    command_interfaces: [effort]\n"
+        f"    state_interfaces: [position, velocity]\n    gains: {{zeta: {gains}, alpha: {gains}}}\n"
+    )
+    sim = make_sim()
+    cm = _manager(sim.spawn(load_string(urdf).model, name="arm", pose=Pose((0, 0, 0.1))))
+    cm.files.append(load_params(config))
+    cm.load_controller("arm")
+    cm.configure_controller("arm")
+    cm.switch_controller(["arm"], [])
+    points = (
+        TrajectoryPoint(0.5, (0.0, 0.0), effort=(1.0, 2.0)),
+        TrajectoryPoint(1.0, (0.0, 0.0), effort=(3.0, 6.0)),
+    )
+    assert (
+        sim.bus.inject(
+            "/arm/joint_trajectory", MsgType.JOINT_TRAJECTORY, JointTrajectory(0.0, ("zeta", "alpha"), points)
+        )
+        == 1
+    )
+    hw = cm.hardware[0]
+    seen = []
+    for _ in range(120):  # 100 Hz cycles over 1.2 s
+        sim.step(10)
+        seen.append((sim.world.time, hw.commands["zeta/effort"], hw.commands["alpha/effort"]))
+    before = [z for t, z, _ in seen if t < 0.45]
+    assert before and all(z == 0.0 for z in before)  # the segment from the state before the trajectory
+    between = [(t, z, a) for t, z, a in seen if 0.55 < t < 0.95]
+    # 1 -> 3 over 0.5 s, sampled a cycle (10 ms) ahead of a start within one cycle of 0
+    assert all(z == pytest.approx(1.0 + 4.0 * (t - 0.5), abs=0.05) and a == 2 * z for t, z, a in between)
+    assert seen[-1][1:] == (3.0, 6.0)  # past the end: the last point's efforts
+
+
 def test_joint_state_broadcaster_extra_joints_join_both_messages_at_zero_once_each(tmp_path, make_sim):
     """Jazzy joint_state_broadcaster.cpp init_joint_data: an extra joint not already known is added with
     position, velocity and effort 0 to joint_states and dynamic_joint_states; a hardware joint named there

@@ -112,6 +112,26 @@ class _Segmented:
     goal: TrajectoryGoal | None
     path_tolerance: list[Tolerance] | None = None
     """Per joint (controller order), what the goal's path must keep to; None: nothing to check."""
+    eff: list[list[float] | None] | None = None
+    """Per point, the efforts (N·m or N) when every point of the trajectory has them (None for the state
+    before it, which has none); None otherwise."""
+
+    def effort(self, t: float) -> list[float]:
+        """The efforts at sim time ``t``, linear between two points as trajectory.cpp's
+        ``interpolate_between_points`` makes them (``has_effort``): the last point's after the end, 0 on a
+        segment whose start has none (the state before the trajectory), and 0 without efforts."""
+        n = len(self.pos[0])
+        eff, times = self.eff, self.times
+        if eff is None or t < times[0]:
+            return [0.0] * n
+        if t >= times[-1]:
+            return list(eff[-1] or [0.0] * n)
+        k = bisect.bisect_right(times, t) - 1
+        a, b = eff[k], eff[k + 1]
+        if a is None or b is None:
+            return [0.0] * n
+        T, s = times[k + 1] - times[k], t - times[k]
+        return [x + (y - x) / T * s for x, y in zip(a, b, strict=True)]
 
     def sample(self, t: float) -> tuple[list[float], list[float], list[float]]:
         """The desired (positions, velocities, accelerations) at sim time ``t``: before the first point, its
@@ -268,6 +288,9 @@ class JointTrajectoryController(Controller):
         self._incoming: tuple[JointTrajectory, TrajectoryGoal | None] | None = None
         self._lock = threading.Lock()
         self._hold: list[float] | None = None
+        self._hold_effort: list[float] | None = None
+        """The efforts held with :attr:`_hold` after a trajectory that had them ended (an effort interface's
+        feedforward, as upstream keeps sampling the last point); None otherwise."""
         self._last: tuple | None = None
         self._commanded: tuple[float, list[float], list[float]] | None = None
         """(cycle time, positions, velocities) last commanded: Jazzy's last_commanded_time_/_state_."""
@@ -412,6 +435,7 @@ class JointTrajectoryController(Controller):
         self._traj = None
         self._commanded = None
         self._hold = [states[f"{j}/position"] for j in self.joints]
+        self._hold_effort = None
         self._integral = [0.0] * len(self.joints)
         if not all(k in states for k in self._vel_keys):
             self._get_vel = functools.partial(values_or_zero, tuple(self._vel_keys))
@@ -448,7 +472,7 @@ class JointTrajectoryController(Controller):
             old.goal.finish(GoalState.ABORTED, TrajectoryResult.INVALID_GOAL, _preempted_by(goal))
         if not traj.points:
             self._traj = None
-            self._hold = list(actual)
+            self._hold, self._hold_effort = list(actual), None
             if goal is not None:
                 goal.finish(GoalState.SUCCEEDED, TrajectoryResult.SUCCESSFUL, "empty trajectory: holding")
             return
@@ -474,7 +498,10 @@ class JointTrajectoryController(Controller):
             times, pos, vel, acc = [before_t], [list(before_p)], [list(before_v)], [[0.0] * n]
         have_vel = all(p.velocities for p in traj.points)
         have_acc = have_vel and all(p.accelerations for p in traj.points)
+        have_eff = all(p.effort for p in traj.points)  # validate() allows them for an effort interface only
+        eff: list[list[float] | None] = [None] * len(times)  # the state before the trajectory has none
         for p in traj.points:
+            eff.append([p.effort[index[j]] if j in index and have_eff else 0.0 for j in self.joints])
             times.append(start + p.time_from_start_sec)  # strictly increasing: validate() saw to it
             pos.append([p.positions[index[j]] if j in index else base[k] for k, j in enumerate(self.joints)])
             vel.append([p.velocities[index[j]] if j in index and have_vel else 0.0 for j in self.joints])
@@ -484,8 +511,10 @@ class JointTrajectoryController(Controller):
             tols = [goal.path_tolerance.get(j, self.path_tol[j]) for j in self.joints]
             if any(tol.position > 0 or tol.velocity > 0 for tol in tols):
                 path_tol = tols
-        self._traj = _Segmented(times, pos, vel if have_vel else None, acc if have_acc else None, goal, path_tol)
-        self._hold = pos[-1]
+        self._traj = _Segmented(
+            times, pos, vel if have_vel else None, acc if have_acc else None, goal, path_tol, eff if have_eff else None
+        )
+        self._hold, self._hold_effort = pos[-1], None
         if goal is not None:
             goal.status = GoalState.EXECUTING
 
@@ -499,7 +528,7 @@ class JointTrajectoryController(Controller):
         traj = self._traj
         if traj is not None and traj.goal is not None and traj.goal.done.is_set():
             # canceled (or ended) from outside: hold where the joints are
-            self._traj, self._hold = None, list(actual)
+            self._traj, self._hold, self._hold_effort = None, list(actual), None
             traj = None
         return traj
 
@@ -520,12 +549,15 @@ class JointTrajectoryController(Controller):
             cmd_p, cmd_v = des_p, des_v
         err_p = [d - a for d, a in zip(des_p, actual, strict=True)]
         err_v = self._velocity_errors(des_v, actual_v)
-        self._write(commands, cmd_p, cmd_v, err_p, err_v, period)
+        # an effort interface adds the trajectory's efforts of the next cycle as feedforward (command_next_)
+        ff = traj.effort(t + self._lead) if traj is not None and traj.eff is not None else self._hold_effort
+        self._write(commands, cmd_p, cmd_v, err_p, err_v, period, ff)
         self._commanded = (t, list(cmd_p), list(cmd_v))
         if traj is not None and traj.goal is not None:
             self._check(traj, t, err_p, err_v, actual)
         elif traj is not None and t >= traj.times[-1]:
-            self._traj = None  # a topic trajectory ran out: hold its last point
+            self._traj = None  # a topic trajectory ran out: hold its last point (and its efforts)
+            self._hold_effort = traj.effort(t) if traj.eff is not None else None
         if self._state_pub.wanted:
             self._state_pub.publish(self._state(t, des_p, des_v, des_a, actual, actual_v, err_p, err_v, commands))
         self._last = (t, des_p, des_v, des_a, actual, actual_v, err_p, err_v, commands)
@@ -630,11 +662,14 @@ class JointTrajectoryController(Controller):
         err_p: list[float],
         err_v: list[float],
         period: float,
+        effort: list[float] | None = None,
     ) -> None:
         """The commands of one cycle from the set point ``des_p``, ``des_v`` (the next cycle's sample) and the
         errors at this one: with position interfaces, the set point's positions (and velocities, when
         claimed), which the simulated hardware's servos follow; with velocity or effort interfaces,
-        ``ff_velocity_scale·v_next + p·e + i·∫e + d·ė`` per joint, as the real controller's PID."""
+        ``ff_velocity_scale·v_next + p·e + i·∫e + d·ė`` per joint, as the real controller's PID, plus, on an
+        effort interface, the trajectory's ``effort`` at the next cycle (Jazzy's ``update()`` adds
+        ``command_next_.effort`` when it has an effort command interface)."""
         kinds = self.cmd_kinds
         if kinds[0] == "position":
             commands.update(zip(self._out_keys, des_p))
@@ -645,6 +680,8 @@ class JointTrajectoryController(Controller):
             p, i, d, ff = self.gains[j]
             self._integral[k] += err_p[k] * period
             u = ff * des_v[k] + p * err_p[k] + i * self._integral[k] + d * err_v[k]
+            if effort is not None and kinds[0] == "effort":
+                u += effort[k]
             commands[self._out_keys[k]] = u
 
     def _velocity_errors(self, des_v: Sequence[float], actual_v: Sequence[float]) -> list[float]:
@@ -669,7 +706,7 @@ class JointTrajectoryController(Controller):
                 assert traj.path_tolerance is not None
                 self._log_tolerance_failures(left, traj.path_tolerance, err_p, err_v)
                 self.log.warning("Aborted due to state tolerance violation")
-                self._traj, self._hold = None, list(actual)
+                self._traj, self._hold, self._hold_effort = None, list(actual), None
                 goal.finish(
                     GoalState.ABORTED,
                     TrajectoryResult.PATH_TOLERANCE_VIOLATED,
@@ -679,7 +716,8 @@ class JointTrajectoryController(Controller):
         tolerances = [goal.goal_tolerance.get(j, self.goal_tol[j]) for j in self.joints]
         outside = [k for k, tol in enumerate(tolerances) if violates(tol, err_p[k], err_v[k])]
         if not outside:
-            self._traj = None
+            self._traj = None  # upstream keeps sampling the last point: its position, and its efforts
+            self._hold_effort = traj.effort(t) if traj.eff is not None else None
             self.log.info("Goal reached, success!")
             goal.finish(GoalState.SUCCEEDED, TrajectoryResult.SUCCESSFUL, "Goal successfully reached!")
             return
@@ -689,7 +727,7 @@ class JointTrajectoryController(Controller):
             # std::to_string(double): six decimals
             text = f"Aborted due to goal_time_tolerance exceeding by {t - end:f} seconds"
             self.log.warning(text)
-            self._traj, self._hold = None, list(actual)
+            self._traj, self._hold, self._hold_effort = None, list(actual), None
             goal.finish(GoalState.ABORTED, TrajectoryResult.GOAL_TOLERANCE_VIOLATED, text)
 
     def _log_tolerance_failures(
