@@ -228,7 +228,10 @@ class SystemManager:
         ]
 
     def next_update(self, sim_time_sec: float) -> float:
-        """The earliest :meth:`System.next_update` of the systems that have a per-step phase."""
+        """The earliest :meth:`System.next_update` of the systems that have a per-step phase: the runtime
+        steps MuJoCo without calling Python until then (a block of steps). A system whose ``next_update``
+        raises is disabled with its error and the answer is "now", so a broken system costs one block, not
+        the run; an answer at or before now ends the search early, since nothing can be sooner."""
         earliest = math.inf
         for s in self._stepped:
             try:

@@ -219,7 +219,9 @@ class Bus:
             self._declaring.node = before
 
     def add_listener(self, listener: BusListener) -> None:
-        """Attach a listener; it is told about every existing endpoint first."""
+        """Attach a listener; it is told about every existing endpoint (and component) first, so one that
+        attaches late (a ROS bridge started after the world was loaded) sees what an early one would have
+        seen. The calls happen outside the lock: a listener may advertise or look up endpoints in them."""
         with self._lock:
             self._listeners.append(listener)
             existing = list(self._endpoints)
@@ -290,7 +292,10 @@ class Bus:
         return ep
 
     def remove_owner(self, owner: str) -> None:
-        """Remove every endpoint of an entity."""
+        """Remove every endpoint of an entity (it was deleted): each endpoint loses its sinks first, so a
+        message a system is still handing over as it goes reaches no one, then the listeners (the ROS layer,
+        the viewer) are told, outside the lock, so that one of them calling back into the bus cannot
+        deadlock; the entity's components (its controller manager) are withdrawn the same way."""
         with self._lock:
             gone = [ep for ep in self._endpoints if ep.owner == owner]
             self._endpoints = [ep for ep in self._endpoints if ep.owner != owner]

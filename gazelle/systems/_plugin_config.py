@@ -45,7 +45,9 @@ def parse_float(cfg: ConfigElement | None, tag: str, default: float, log: loggin
 
 
 def parse_bool(cfg: ConfigElement | None, tag: str, default: bool, log: logging.Logger) -> bool:
-    """``true``/``false``/``1``/``0`` in ``<tag>``, else ``default``; anything else is warned about."""
+    """``true``/``false``/``1``/``0`` in ``<tag>`` (any case, as sdformat's ``Param`` parses a bool, which
+    is what a plugin's ``_sdf->Get<bool>`` reads), else ``default``; anything else is warned about with its
+    file:line and the default used, where sdformat would refuse the file."""
     raw = child_text(cfg, tag)
     if cfg is None or raw is None or raw == "":
         return default

@@ -872,6 +872,27 @@ def test_a_force_torque_sensor_reads_the_weight_and_moment_a_joint_carries(make_
     assert f == pytest.approx((0.0, 0.0, -2 * 9.81), abs=1e-6)
 
 
+def test_a_gz_force_torque_sensor_adds_each_channels_noise(make_sim):
+    """gz-sensors 8 ForceTorqueSensor: <force>/<torque> <x|y|z><noise> are six Gaussian models, one per channel,
+    added to the wrench in its output frame (gazelle read none of them before)."""
+    from gazelle.systems.sensors import ForceTorqueSensor
+
+    world = dataclasses.replace(default_world(), gravity=(0.0, 0.0, -9.81))
+    noise = "<force><z><noise type='gaussian'><mean>1.5</mean></noise></z></force>"
+    noise += "<torque><x><noise type='gaussian'><stddev>0.2</stddev></noise></x></torque>"
+    gz = f"""<sensor name="ft" type="force_torque"><update_rate>100</update_rate>
+      <force_torque><measure_direction>parent_to_child</measure_direction>{noise}</force_torque></sensor>"""
+    sim = make_sim(world)
+    ft = next(s for s in _spawn(sim, _arm(gz), "arm").systems if isinstance(s, ForceTorqueSensor))
+    sim.step(2)
+    readings = [ft.read(sim.world) for _ in range(2000)]
+    fz = {float(f[2]) for f, _ in readings}
+    tx = np.array([float(t[0]) for _, t in readings])
+    assert len(fz) == 1 and fz.pop() == pytest.approx(2 * 9.81 + 1.5, abs=1e-6)  # the mean alone: the same each time
+    assert tx.std() == pytest.approx(0.2, rel=0.1) and abs(tx.mean()) < 0.03
+    assert all(float(f[0]) == pytest.approx(0.0, abs=1e-6) for f, _ in readings)  # no noise on force x
+
+
 def test_namespaced_robots_get_namespaced_sensor_topics_and_prefixed_frames(make_sim):
     """Two sensor_bots spawned with namespaces (as `gazelle spawn -robot_namespace r1`): each sensor's
     topics and frames are its own (gz-sensors #359 is about sensors that ignored the namespace)."""

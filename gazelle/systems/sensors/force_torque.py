@@ -21,8 +21,10 @@ from .._payloads import WrenchStamped
 from .._plugin_config import child_text, parse_float, ros_block
 from ._common import (
     SENSOR_DEPTH,
+    Noise,
     checked_rate,
     sensor_system,
+    xyz_noise,
 )
 
 
@@ -44,6 +46,8 @@ class ForceTorqueConfig:
     """``<gaussian_noise>`` (ROS 1: ``<gaussianNoise>``): standard deviation on every component."""
     topic: str = "wrench"
     """The plugin's topic (ROS 1: ``<topicName>``); gz-sim: ``<topic>``."""
+    noise: tuple[Noise, ...] = ()
+    """gz-sim: ``<force>`` and ``<torque>`` ``<x|y|z><noise>``, force x, y, z then torque x, y, z (N, N·m)."""
 
 
 @sensor_system
@@ -78,6 +82,8 @@ class ForceTorqueSensor(System):
         self._gate = RateGate()
         self.phase_gate = self._gate
         self._rng = np.random.default_rng(seed)
+        self._bias = np.zeros(6)
+        """The six channels' biases (force x, y, z, torque x, y, z), drawn once (gz-sim's noise)."""
 
     def seed_noise(self, seed: int) -> None:
         self._rng = np.random.default_rng(seed)
@@ -100,7 +106,12 @@ class ForceTorqueSensor(System):
             direction = (child_text(block, "measure_direction") or "child_to_parent").strip().lower()
             scoped = f"/world/{ctx.world_name}/model/{ctx.entity.name}/joint/{sensor.joint}"
             topic = resolve_topic(sensor.topic or f"{scoped}/sensor/{sensor.name}/forcetorque", ctx.entity.namespace)
-            return ForceTorqueConfig(sensor.joint, frame, direction, sensor.update_rate_hz, 0.0, topic), where
+            what = f"force-torque sensor '{sensor.name}'"
+            noise = (
+                *xyz_noise(block.find("force") if block else None, log, f"{what} force"),
+                *xyz_noise(block.find("torque") if block else None, log, f"{what} torque"),
+            )
+            return ForceTorqueConfig(sensor.joint, frame, direction, sensor.update_rate_hz, 0.0, topic, noise), where
         cfg = plugin.config if plugin is not None else None
         ns, remaps = ros_block(cfg)
         ns = ns or child_text(cfg, "robotNamespace") or ctx.entity.namespace
@@ -150,6 +161,7 @@ class ForceTorqueSensor(System):
         else:
             self.frame_id = prefix + joint.child
         self._pub = ctx.bus.advertise(ctx.entity.name, c.topic, MsgType.WRENCH_STAMPED, depth=SENSOR_DEPTH)
+        self._bias = np.array([n.bias(self._rng) for n in c.noise]) if c.noise else np.zeros(6)
         log.info(f"force-torque on joint [{c.joint_name}] at {c.update_rate:g} Hz on [{c.topic}] in [{self.frame_id}]")
 
     def next_update(self, sim_time_sec: float) -> float:
@@ -181,6 +193,14 @@ class ForceTorqueSensor(System):
         if c.gaussian_noise > 0:  # gazebo_ros_ft_sensor: one stddev on all six components
             f = f + self._rng.normal(0.0, c.gaussian_noise, 3)
             t = t + self._rng.normal(0.0, c.gaussian_noise, 3)
+        if any(n.active for n in c.noise):
+            # gz-sensors 8 ForceTorqueSensor::Update: each channel's own Gaussian model, in the output frame
+            ft = np.concatenate([f, t])
+            for k, n in enumerate(c.noise):
+                if n.active:
+                    jitter = self._rng.normal(0.0, n.stddev) if n.stddev > 0 else 0.0
+                    ft[k] += self._bias[k] + n.mean + jitter
+            f, t = ft[:3], ft[3:]
         return f, t
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
