@@ -127,7 +127,12 @@ class ResourceResolver:
         return path if self.allowed(path) else None
 
     def unresolved_reason(self, uri: str, base_dir: str | os.PathLike[str] | None = None) -> str:
-        """Why :meth:`resolve_uri` gave None for ``uri``: an unknown package, or a file outside the allowed folders."""
+        """Why :meth:`resolve_uri` gave None for ``uri``: an unknown package, or a file outside the allowed folders.
+
+        The message a mesh or include warning carries, so that the user learns which of the three it was: a
+        package or model not on any search path (with where gazelle looked), a scheme gazelle does not fetch
+        (``https://`` outside Fuel: nothing is downloaded), or a file it found but will not read because it
+        lies outside the resource roots (the refusal names the roots)."""
         raw = uri.strip()
         if raw.startswith(("package://", "model://")):
             name = raw.split("://", 1)[1].partition("/")[0]

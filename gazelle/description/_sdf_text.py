@@ -41,6 +41,10 @@ def _encode(name: str) -> str:
 
 
 def _rewrite_tag(match: re.Match[str]) -> str:
+    """One tag of :data:`_TOKEN` with the colons of its element and attribute names encoded (see the module
+    docstring); comments, CDATA, processing instructions, the doctype and tags without a colon come back as
+    they were. ``xmlns:`` and ``xml:`` attributes keep theirs: they are real namespace syntax lxml needs, and a
+    prefix they declare is then legal. Attribute values are never touched (a ``model://`` URI has colons)."""
     name = match.group(2)
     if name is None:  # comment, CDATA, PI, doctype
         return match.group(0)

@@ -54,7 +54,11 @@ def is_fragment(root: etree._Element) -> bool:
 
 
 def report_fragment(root: etree._Element, doc: UrdfDocument, reader: ElementReader) -> None:
-    """One FRAGMENT warning for a document that defines no links or joints."""
+    """One FRAGMENT warning for a document that defines no links or joints.
+
+    A xacro file meant to be included (macros, materials, ``<gazebo>`` blocks for links defined elsewhere) is
+    a common thing to point gazelle at by mistake; the warning says what the file does hold, so the user sees
+    at once that it is a fragment and which file to open instead, rather than an empty robot."""
     kept = []
     if doc.materials:
         kept.append(f"{len(doc.materials)} material(s)")
@@ -204,7 +208,12 @@ def check_structure(doc: UrdfDocument, reader: ElementReader) -> None:
 
 
 def _check_loops(doc: UrdfDocument, parent_of: dict[str, Joint], reader: ElementReader) -> None:
-    """Report each cycle of the child -> parent relation once."""
+    """Report each cycle of the child -> parent relation once.
+
+    Each link's parent chain is walked until it reaches the root, a link already cleared, or itself; the
+    links cleared are never walked again, so a 5,000-link chain costs one pass. The message lists the cycle
+    in joint order (``'a' -> 'b' -> 'a'``) at the line of the joint that closes it, where urdfdom's
+    ``initRoot`` tells of a loop less directly (no root link found, or two)."""
     done: set[str] = set()
     for start in doc.links:
         path: list[str] = []
@@ -290,7 +299,13 @@ def drop_massless_links(doc: UrdfDocument, reader: ElementReader) -> None:
 
 # --------------------------------------------------------------------------- finishing links
 def finish_link(draft: LinkDraft, movable_by: str | None, reader: ElementReader, derive: bool) -> Link:
-    """The frozen :class:`Link`: ``<gazebo>`` applied and the inertial settled."""
+    """The frozen :class:`Link`: ``<gazebo>`` applied and the inertial settled.
+
+    What the link's ``<gazebo reference>`` blocks set is applied here, after all of them were read, so their
+    order in the file does not matter: surface parameters (``mu1``, ``kp`` ...) onto every collision, a
+    material script onto every visual, the flags (``gravity``, ``kinematic``, ``self_collide``). ``movable_by``
+    names the joint that moves the link (None for one welded to its parent or the root), which decides
+    whether a missing inertial matters (see :func:`_settle_inertial`)."""
     collisions = tuple(
         dataclasses.replace(c, surface=dataclasses.replace(c.surface, **draft.surface)) for c in draft.collisions
     )
@@ -349,7 +364,12 @@ def _settle_inertial(draft: LinkDraft, movable_by: str | None, reader: ElementRe
 
 
 def _derive(draft: LinkDraft, mass: float | None) -> tuple[Inertial, str]:
-    """Inertia from the collision shapes (mass from volume when ``mass`` is None) and a note saying how."""
+    """Inertia from the collision shapes (mass from volume when ``mass`` is None) and a note saying how.
+
+    The note ends the warning the user reads, so it says what was assumed: the number of shapes used, the
+    volume and the density behind a mass that was made up, and anything the shapes could not give (a mesh
+    that would not load). With no volume at all, a placeholder inertia keeps MuJoCo from refusing the link;
+    the warning says it is one."""
     result = _inertia.inertia_from_geometries([(c.geometry, c.pose) for c in draft.collisions], mass)
     if result is None:
         inertial = _inertia.default_inertial(mass)

@@ -203,7 +203,11 @@ class ElementReader:
     def floats(
         self, element: etree._Element, attr: str, count: int, default: tuple[float, ...] | None
     ) -> tuple[float, ...] | None:
-        """``count`` floats from attribute ``attr``; ``default`` if absent; None (after an error) if invalid."""
+        """``count`` floats from attribute ``attr``; ``default`` if absent; None (after an error) if invalid.
+
+        urdfdom throws on a malformed vector and the robot does not load at all; gazelle reports it at the
+        element's line, saying whether the count or a number was wrong, and the caller decides what stands in
+        (an origin reads as zero, a shape is left out)."""
         text = element.get(attr)
         if text is None:
             return default

@@ -175,7 +175,11 @@ def parse_float(text: str | None) -> float | None:
 
 
 def parse_floats(text: str | None, count: int | None = None) -> tuple[float, ...] | None:
-    """Whitespace-separated finite floats; None if any is invalid or the count differs."""
+    """Whitespace-separated finite floats; None if any is invalid or the count differs.
+
+    The one reader of number lists for URDF attributes and SDF elements alike. Any whitespace separates
+    (xacro output often has newlines and doubled spaces inside ``xyz``), and a count that differs is a failure
+    rather than a truncation or a padding: ``xyz="0 0"`` is a mistake to report, not a point at z = 0."""
     if text is None:
         return None
     parts = text.split()
