@@ -90,7 +90,12 @@ def xacro_markup(text: str) -> str | None:
 
 
 def detect_format(text: str) -> str | None:
-    """Guess the format of XML text from its content (xacro markup, root element)."""
+    """Guess the format of XML text from its content (xacro markup, root element).
+
+    Files arrive with misleading names (a ``.urdf`` that is xacro, a ``.xml`` that is SDF, a description
+    on a topic with no name at all), so the text decides: any xacro markup makes it xacro; an ``<sdf>`` root
+    is SDF; a ``<robot>`` root is SRDF when it holds SRDF's elements and no link with geometry, else URDF.
+    None when it is none of these (the caller says what it expected)."""
     if xacro_markup(text) is not None:
         return "xacro"
     # skip comments and the declaration, find the first element name

@@ -143,7 +143,12 @@ def _read_with_trimesh(path: str) -> npt.NDArray[np.float64]:
 
 
 def _triangle_props(tris: npt.NDArray[np.float64]) -> UnitProperties:
-    """Volume, centre and inertia of a closed triangle mesh (signed tetrahedra to the origin)."""
+    """Volume, centre and inertia of a closed triangle mesh (signed tetrahedra to the origin).
+
+    Each triangle and the origin make a tetrahedron whose signed volume is det/6; summed over a closed mesh
+    they give the exact volume, centroid and second moments whatever the winding (a mesh wound inside out
+    gets its sign flipped). A mesh that does not close (its volume is ~0 next to its bounding box), or
+    holds non-finite vertices, uses its bounding box instead, and the note says so."""
     if tris.size == 0:
         raise MeshReadError("mesh has no triangles")
     a_mats = np.transpose(tris, (0, 2, 1))  # columns are the three vertices

@@ -209,7 +209,13 @@ def _exports(prefixes: str, stamp: tuple[float, ...]) -> tuple[Path, ...]:
 
 def _gazebo_model_paths(share: Path) -> list[Path]:
     """The ``<export><gazebo_ros gazebo_model_path="${prefix}/models"/>`` folders of the package at ``share``
-    (``${prefix}``: the package's share folder), those inside the package only."""
+    (``${prefix}``: the package's share folder), those inside the package only.
+
+    This is how gazebo_ros's launch files (``gazebo_ros_paths.py``) add a package's models to
+    ``GAZEBO_MODEL_PATH``, so ``model://`` URIs of a workspace's worlds resolve the same here. The
+    manifest is read only when it mentions the attribute (most do not), parsed without entities, DTDs or the
+    network, and a path that leaves the package is not added: a package.xml is data, and cannot widen what
+    gazelle reads."""
     from lxml import etree
 
     manifest = share / "package.xml"
