@@ -21,6 +21,7 @@ from dataclasses import replace
 
 from lxml import etree
 
+from ._colors import GAZEBO_COLORS
 from ._diagnostics import ErrorCode, SourceLocation
 from ._inertia import default_inertial, inertia_from_geometries, inertia_problem
 from ._model import (
@@ -99,7 +100,12 @@ class _Parts(_Reader):
 
     def link(self, name: str, element: etree._Element, doc: _Doc, scope: Scope) -> Link | None:
         """A ``<link>`` with its shapes, sensors and mass, every pose in the link's frame; None when its
-        own pose cannot be resolved (the frame graph reported why)."""
+        own pose cannot be resolved (the frame graph reported why).
+
+        The typed model keeps a link's parts in the link's frame, as MuJoCo places a body's geoms, so each
+        part's ``<pose relative_to=...>`` is turned into the link frame here once (``X_LM · X_MR · pose``);
+        the frame graph (SDF 1.7+) already knows where every named frame is in the model. ``<self_collide>``
+        left out of the link stays unset, so that the model's value applies, which is gz-sim's rule."""
         loc = self.loc(element, doc)
         self.check(element, doc, "link")
         X_ML = scope.pose(name, loc)
@@ -404,7 +410,11 @@ class _Parts(_Reader):
 
     def material(self, element: etree._Element | None, doc: _Doc) -> Material | None:
         """``<material>``: its colours, an OGRE ``<script><name>`` (Gazebo Classic's Gazebo/Grey and the like,
-        kept by name) and a PBR albedo map as the texture, from whichever workflow (metal, specular) has one."""
+        kept by name) and a PBR albedo map as the texture, from whichever workflow (metal, specular) has one.
+
+        Colours left out stay None rather than take SDF's defaults, so that a visual with only a Classic
+        script gets the script's colour (:data:`GAZEBO_COLORS`, shared with the URDF reader) and a visual with
+        no material at all the viewer's; the albedo map is the one texture a camera or the viewer can draw."""
         if element is None:
             return None
         self.check(element, doc, "material")
@@ -420,7 +430,7 @@ class _Parts(_Reader):
                 texture = self.text(workflow, "albedo_map") or texture
         return Material(
             name=name,
-            diffuse=self.color(element, "diffuse", doc),
+            diffuse=self.color(element, "diffuse", doc) or GAZEBO_COLORS.get(name),
             ambient=self.color(element, "ambient", doc),
             specular=self.color(element, "specular", doc),
             emissive=self.color(element, "emissive", doc),
@@ -429,7 +439,12 @@ class _Parts(_Reader):
 
     def sensor(self, element: etree._Element, doc: _Doc, pose: Pose) -> Sensor | None:
         """A ``<sensor>`` at ``pose`` (in its link), kept whole for its sensor system to read its own block;
-        None when it has no type or name (reported)."""
+        None when it has no type or name (reported).
+
+        The description layer reads only what every sensor has (type, name, rate, ``<always_on>``,
+        ``<topic>``, plugins); the ``<camera>``, ``<ray>``, ``<imu>`` ... blocks go through as a read-only copy
+        (:class:`ConfigElement`) to the sensor systems, which own their meaning and say what they do not
+        read, each at its own line."""
         name = self.name(element, doc)
         loc = self.loc(element, doc)
         kind = (element.get("type") or "").strip()
@@ -536,7 +551,12 @@ class _Parts(_Reader):
     def _joint_ends(
         self, name: str, element: etree._Element, doc: _Doc, scope: Scope, loc: SourceLocation
     ) -> tuple[str, str] | None:
-        """(parent, child) as bodies of the scope; None (an error said why) if either is missing or wrong."""
+        """(parent, child) as bodies of the scope; None (an error said why) if either is missing or wrong.
+
+        sdformat's rules: the child may not be ``world``, parent and child must differ (after frames are
+        resolved to the links they are attached to), and a name must exist in the model's frame graph or a
+        nested model. Each problem is an error at the ``<parent>`` or ``<child>`` line, and the joint is left
+        out rather than attached to a guess."""
         ends = []
         for role, code in (("parent", ErrorCode.JOINT_PARENT_INVALID), ("child", ErrorCode.JOINT_CHILD_INVALID)):
             el = _find(element, role)

@@ -9,6 +9,7 @@ import dataclasses
 from lxml import etree
 
 from . import _inertia
+from ._colors import GAZEBO_COLORS
 from ._diagnostics import ErrorCode
 from ._model import (
     Inertial,
@@ -24,27 +25,6 @@ from ._xml import (
     child_elements,
     local_name,
 )
-
-# Colours of the common Gazebo classic material scripts (diffuse RGBA), as Gazebo classic's
-# media/materials/scripts/gazebo.material gives them (Gazebo/Wood, a texture there, as a wood colour).
-# A URDF's <gazebo reference><material>Gazebo/Red</material> is how most ROS 1-era robots are coloured
-# in Gazebo (their URDF <material> is for RViz): without this table they would all be grey. A script
-# name not listed keeps the visual's own colour.
-_GAZEBO_COLORS: dict[str, tuple[float, float, float, float]] = {
-    "Gazebo/Black": (0.0, 0.0, 0.0, 1.0),
-    "Gazebo/FlatBlack": (0.1, 0.1, 0.1, 1.0),
-    "Gazebo/DarkGrey": (0.175, 0.175, 0.175, 1.0),
-    "Gazebo/Grey": (0.7, 0.7, 0.7, 1.0),
-    "Gazebo/White": (1.0, 1.0, 1.0, 1.0),
-    "Gazebo/Red": (1.0, 0.0, 0.0, 1.0),
-    "Gazebo/Green": (0.0, 1.0, 0.0, 1.0),
-    "Gazebo/Blue": (0.0, 0.0, 1.0, 1.0),
-    "Gazebo/Yellow": (1.0, 1.0, 0.0, 1.0),
-    "Gazebo/Orange": (1.0, 0.5088, 0.0468, 1.0),
-    "Gazebo/Purple": (1.0, 0.0, 1.0, 1.0),
-    "Gazebo/Turquoise": (0.0, 1.0, 1.0, 1.0),
-    "Gazebo/Wood": (0.5, 0.3, 0.1, 1.0),
-}
 
 
 # --------------------------------------------------------------------------- fragments
@@ -325,10 +305,10 @@ def finish_link(draft: LinkDraft, movable_by: str | None, reader: ElementReader,
 
 def _apply_gazebo_material(visual: Visual, script: str | None) -> Visual:
     """``visual`` with its link's ``<gazebo><material>`` script applied: the script's name, and its colour when
-    :data:`_GAZEBO_COLORS` knows it (else the visual's own). Gazebo draws the script, not the URDF colour."""
+    :data:`GAZEBO_COLORS` knows it (else the visual's own). Gazebo draws the script, not the URDF colour."""
     if script is None:
         return visual
-    diffuse = _GAZEBO_COLORS.get(script) or (visual.material.diffuse if visual.material else None)
+    diffuse = GAZEBO_COLORS.get(script) or (visual.material.diffuse if visual.material else None)
     base = visual.material or Material()
     return dataclasses.replace(visual, material=dataclasses.replace(base, name=script, diffuse=diffuse))
 

@@ -186,6 +186,8 @@ def test_gazebo_models_contents():
     assert ground.links[0].collisions[0].surface.mu == 100 and ground.links[0].collisions[0].surface.mu2 == 50
     material = ground.links[0].visuals[0].material
     assert material is not None and material.name == "Gazebo/Grey"
+    # the script's colour, as Classic's gazebo.material draws it (the visual gives no <diffuse> of its own)
+    assert material.diffuse == (0.7, 0.7, 0.7, 1.0)
     table = load(GZM / "table/model.sdf", resolver=res).model
     assert len(table.links[0].collisions) == 5
     can = load(GZM / "coke_can/model.sdf", resolver=res).model
