@@ -219,7 +219,9 @@ class DiffDrive(System):
     plugin_files = ("gazebo_ros_diff_drive",)
 
     def __init__(self) -> None:
-        """An unconfigured gazebo_ros diff drive (see :meth:`configure`)."""
+        """An unconfigured gazebo_ros diff drive (see :meth:`configure`). Its state: the last command (held
+        until a new one, as the plugin holds it), the wheels and their servos, the encoder odometry's pose,
+        twist and the wheel angles it last integrated from, and the links it publishes wheel TF between."""
         self.config = DiffDriveConfig()
         self.log = logging.getLogger("diff_drive")
         self._wheels: list[_Wheel] = []

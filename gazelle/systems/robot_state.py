@@ -45,7 +45,12 @@ class RobotStateConfig:
 
 
 def robot_state_config(entity: Entity, log: logging.Logger) -> tuple[RobotStateConfig, Plugin | None]:
-    """The configuration from the model's own ``gazelle_robot_state_publisher`` plugin block, if any."""
+    """The configuration from the model's own ``gazelle_robot_state_publisher`` plugin block, if any.
+
+    Gazebo runs no robot_state_publisher: a ROS user starts one from a launch file. gazelle runs one per
+    spawned robot so that a bare ``gazelle sim robot.urdf`` has /tf and /robot_description; this plugin
+    block is the way a model file turns it off (``<enabled>false</enabled>``, when the user's launch file
+    starts its own) or sets its rate and frame prefix. Without it: on, 50 Hz, the namespace as the prefix."""
     plugin = next((p for p in entity.model.plugins if p.filename == RSP_PLUGIN), None)
     if plugin is None:
         return RobotStateConfig(namespace=entity.namespace), None

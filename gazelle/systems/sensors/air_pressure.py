@@ -77,7 +77,10 @@ class AirPressureSensor(_SensorSystem):
         self._bias = 0.0
 
     def configure(self, ctx: SystemContext) -> None:
-        """``<reference_altitude>`` and the noise; declare the output topic."""
+        """``<reference_altitude>`` (metres: the altitude the sensor's world z = 0 stands for, as gz-sensors'
+        AirPressureSensor adds it before the US Standard Atmosphere gives a pressure) and the noise of
+        ``<pressure>``, in pascals; declare the output topic. A reference that is not a number is warned
+        about at its line and read as 0."""
         if not self._configure_common(ctx):
             return
         block = self.sensor.config.find("air_pressure") if self.sensor and self.sensor.config is not None else None

@@ -38,7 +38,9 @@ class AltimeterSensor(_SensorSystem):
         self.reference: float | None = None
 
     def configure(self, ctx: SystemContext) -> None:
-        """The noise; declare the output topic."""
+        """The noise of ``<vertical_position>`` and ``<vertical_velocity>`` (each its own Gaussian model with a
+        bias drawn once, as gz-sensors' AltimeterSensor); declare the output topic. The vertical reference is
+        taken at the first reading, as gz-sim's Altimeter system takes the sensor's height when it is made."""
         if not self._configure_common(ctx):
             return
         block = self.sensor.config.find("altimeter") if self.sensor and self.sensor.config is not None else None

@@ -70,6 +70,8 @@ class ForceTorqueSensor(System):
     plugin_files = ("gazebo_ros_ft_sensor",)  # a model plugin naming a <joint_name>
 
     def __init__(self, seed: int | None = None) -> None:
+        """An unconfigured sensor (see :meth:`configure`); ``seed`` seeds its noise, so that a run with the same
+        seed reads the same noisy wrenches."""
         self.config = ForceTorqueConfig()
         self.offset = Pose()
         """The sensor frame in the joint frame (frame "sensor")."""
@@ -204,7 +206,11 @@ class ForceTorqueSensor(System):
         return f, t
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
-        """At the sensor's rate, while listened to: publish the wrench stamped with this sim time."""
+        """At the sensor's rate, while listened to: publish the wrench stamped with this sim time.
+
+        The wrench is read after the step, from the constraint forces MuJoCo solved in it, so it is what the
+        joint carried during the step that ends at the stamp; nobody listening costs nothing (no read and no
+        noise drawn)."""
         if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.config.update_rate):
             return
         if not self._pub.wanted:

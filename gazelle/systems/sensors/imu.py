@@ -161,6 +161,8 @@ class ImuSensor(_SensorSystem):
     kind = "IMU"
 
     def __init__(self, seed: int | None = None) -> None:
+        """An unconfigured IMU (see :meth:`configure`) reporting against the world, gazebo_ros's default;
+        ``seed`` seeds its noise and biases."""
         super().__init__(seed)
         self.noise = ImuNoise()
         self.reference = OrientationReference(fixed=(1.0, 0.0, 0.0, 0.0))
