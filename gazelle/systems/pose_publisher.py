@@ -185,7 +185,11 @@ class P3D(System):
         self._gate.reset()
 
     def measure(self, world: PhysicsWorld) -> tuple[Pose, Twist]:
-        """Noise-free pose and twist of the body in the frame, with the offsets applied."""
+        """Noise-free pose and twist of the body in the frame, with the offsets applied.
+
+        In the world frame the twist is the link's world velocity (linear and angular, world axes), as
+        gazebo_ros_p3d reports ``WorldLinearVel``/``WorldAngularVel``; against a reference link both are
+        taken relative to it and expressed in its axes (see the module docstring for how this differs)."""
         body = world.entity_state(self._entity, self.config.body_name)
         pose, lin, ang = body.pose, body.linear_velocity, body.angular_velocity
         if self._frame_link is not None:

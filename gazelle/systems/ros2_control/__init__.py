@@ -25,12 +25,12 @@ if TYPE_CHECKING:
     from ._manager import CONTROLLER_TYPES as CONTROLLER_TYPES
     from ._manager import STRICT as STRICT
     from ._manager import ControllerManager as ControllerManager
-    from ._manager import params_file_paths as params_file_paths
-    from ._manager import valid_controller_name as valid_controller_name
     from ._params import ParamsError as ParamsError
     from ._params import ParamsFile as ParamsFile
     from ._params import load_params as load_params
+    from ._params import params_file_paths as params_file_paths
     from ._params import parse_params as parse_params
+    from ._params import valid_controller_name as valid_controller_name
     from ._params import yaml_problem as yaml_problem
     from ._tolerances import SegmentTolerances as SegmentTolerances
     from ._tolerances import Tolerance as Tolerance

@@ -103,7 +103,12 @@ class JointStateBroadcaster(Controller):
         state key (made once per record layout)."""
 
     def update(self, t: float, period: float, states: dict[str, float], commands: dict[str, float]) -> None:
-        """Publish JointState and DynamicJointState for this cycle, each only while it has a subscriber."""
+        """Publish JointState and DynamicJointState for this cycle, each only while it has a subscriber.
+
+        Every cycle of the manager, as upstream's ``update()`` (no rate of its own): the values are this
+        cycle's reads, stamped with the cycle's sim time, NaN where a joint lacks the interface; the extra
+        joints follow at 0. Building the message costs one C-level lookup per field (see ``on_activate``),
+        which matters at a 1 kHz manager."""
         if self._js.wanted:
             pos, vel, eff = (get(states) for get in self._getters)
             if self._extra:

@@ -264,7 +264,12 @@ class SimHardware:
         self.joints[comp.name] = joint
 
     def _wheel_casters(self, rc: Ros2Control, world: PhysicsWorld, entity: Entity) -> None:
-        """With two or more velocity-driven wheels, the spheres level with them roll as frictionless casters."""
+        """With two or more velocity-driven wheels, the spheres level with them roll as frictionless casters.
+
+        A deliberate difference from Gazebo, said in the log: URDF has no ball joint for a caster, so robots
+        weld a sphere under the base, and in Gazebo it drags unless its author gave it ``mu 0`` (the
+        ros2_control diffbot's do drag: at default friction they carried as much weight as the wheels and
+        halved its speed). See :func:`gazelle.systems._actuation.ball_casters` for what counts as one."""
         model, log = entity.model, self._log
         wheels = list(self._velocity_servos_wheels)
         if len(wheels) >= 2:
@@ -387,7 +392,11 @@ class SimHardware:
         return list(self.states)
 
     def read(self) -> None:
-        """Fill :attr:`states` from the joints (one array read per interface kind) and the sensors."""
+        """Fill :attr:`states` from the joints (one array read per interface kind) and the sensors.
+
+        gz_ros2_control's ``read()`` copies the joints' position, velocity and effort out of the simulator
+        each cycle; here each kind is one numpy gather over the robot's joints (the plan, made once, says
+        which joints and keys), and each wired sensor (imu, force_torque) one reading."""
         states, group = self.states, self._group
         for kind, idx, keys, every in self._read_plan:
             arr = (

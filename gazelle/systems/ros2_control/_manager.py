@@ -27,7 +27,6 @@ from typing import Any
 from ...description import MAX_PARAMS_FILE_BYTES, JointType, ResourceResolver
 from ...physics import PhysicsWorld
 from .._base import RateGate, System, SystemContext, UpdateInfo
-from .._bus import NODE_NAME as _NODE_NAME
 from .._bus import remap_problem
 from .._plugin_config import child_text, parse_bool, remap_arguments, ros_block, ros_remaps
 from ._blocks import PlannedBlocks
@@ -44,7 +43,15 @@ from ._controller import ACTIVE, FINALIZED, INACTIVE, UNCONFIGURED, Controller, 
 from ._diff_drive import DiffDriveController
 from ._gripper import EffortGripperActionController, GripperActionController
 from ._hardware import ControlError, SimHardware, UpdateFailed
-from ._params import Params, ParamsError, ParamsFile, load_params, parse_params
+from ._params import (
+    Params,
+    ParamsError,
+    ParamsFile,
+    load_params,
+    params_file_paths,
+    parse_params,
+    valid_controller_name,
+)
 from ._trajectory import JointTrajectoryController
 
 CONTROLLER_TYPES: dict[str, type[Controller]] = {
@@ -72,26 +79,6 @@ STRICT, BEST_EFFORT = 2, 1
 """``switch_controller`` strictness (controller_manager_msgs/SwitchController)."""
 
 _FIND = re.compile(r"\$\(find\s+([A-Za-z0-9_]+)\)")
-
-NODE_NAME_MAX = 255
-"""rmw's longest node name (``RMW_NODE_NAME_MAX_NAME_LENGTH``)."""
-
-
-def valid_controller_name(name: str) -> str | None:
-    """Why ``name`` cannot name a controller, or None. ros2_control makes each controller a node of that
-    name (controller_manager.cpp, ``load_controller``: the node is created with the controller's name and
-    rcl refuses an invalid one), so a name follows rmw's node-name rules: letters, digits and ``_``, not
-    starting with a digit, at most 255 characters. The refusal quotes at most 40 characters of it, with
-    control characters escaped, so a hostile name can neither flood nor forge a log line."""
-    if _NODE_NAME.fullmatch(name) and len(name) <= NODE_NAME_MAX:
-        return None
-    shown = repr(name[:40]) + (f"... ({len(name)} characters)" if len(name) > 40 else "")
-    if not name:
-        return "a controller name must not be empty"
-    return (
-        f"controller name {shown} is not a valid node name (letters, digits and '_', not starting with a digit, "
-        f"at most {NODE_NAME_MAX} characters)"
-    )
 
 
 @dataclass(frozen=True)
@@ -518,7 +505,12 @@ class ControllerManager(System):
         }
 
     def restore_structure(self, structure: dict[str, Any]) -> None:
-        """Load, configure and activate the checkpoint's controllers as the spawner did, in their order."""
+        """Load, configure and activate the checkpoint's controllers as the spawner did, in their order.
+
+        A checkpoint saves which controllers were loaded and in which state, with the parameter files and
+        overrides they were read from, rather than the controllers themselves: restoring goes through the
+        same load, configure and switch a spawner uses, so a restored controller has read its parameters and
+        claimed its interfaces exactly as the original had. The active ones are switched on together."""
         self.files[:] = structure["files"]
         self._params_files.update(structure["params_files"])
         self.overrides.update(structure["overrides"])
@@ -787,12 +779,3 @@ class ControllerManager(System):
                     except ParamsError as err:
                         raise ControlError(str(err)) from None
         self.overrides[name] = value  # type: ignore[assignment] - a parameter set at run time is any YAML value; ParamValue is the declared subset
-
-
-def params_file_paths(value: object) -> list[str]:
-    """The file names of a ``params_file`` parameter: a string or a list of strings."""
-    if isinstance(value, str):
-        return [value] if value else []
-    if isinstance(value, (list, tuple)):
-        return [str(v) for v in value if v]
-    return []

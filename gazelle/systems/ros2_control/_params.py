@@ -1,4 +1,4 @@
-"""ROS 2 parameter files (``--params-file`` YAML) as ros2_control reads them.
+"""ROS 2 parameter files (``--params-file`` YAML) as ros2_control reads them, and the names controllers may take.
 
 A file maps node names to ``ros__parameters``; a node's section is found by its name, its
 fully qualified name (``/ns/name``) or a wildcard (``/**``). Nested mappings flatten to dotted
@@ -20,6 +20,7 @@ from ...description import (
     safe_load_bounded,
 )
 from ...description import yaml_problem as yaml_problem
+from .._bus import NODE_NAME as _NODE_NAME
 
 ParamValue = bool | int | float | str | list[Any]
 Params = dict[str, ParamValue]
@@ -128,3 +129,33 @@ def load_params(path: str | Path) -> ParamsFile:
     except UntrustedInputError as err:
         raise ParamsError(str(err)) from None
     return parse_params(text, str(p))
+
+
+NODE_NAME_MAX = 255
+"""rmw's longest node name (``RMW_NODE_NAME_MAX_NAME_LENGTH``)."""
+
+
+def valid_controller_name(name: str) -> str | None:
+    """Why ``name`` cannot name a controller, or None. ros2_control makes each controller a node of that
+    name (controller_manager.cpp, ``load_controller``: the node is created with the controller's name and
+    rcl refuses an invalid one), so a name follows rmw's node-name rules: letters, digits and ``_``, not
+    starting with a digit, at most 255 characters. The refusal quotes at most 40 characters of it, with
+    control characters escaped, so a hostile name can neither flood nor forge a log line."""
+    if _NODE_NAME.fullmatch(name) and len(name) <= NODE_NAME_MAX:
+        return None
+    shown = repr(name[:40]) + (f"... ({len(name)} characters)" if len(name) > 40 else "")
+    if not name:
+        return "a controller name must not be empty"
+    return (
+        f"controller name {shown} is not a valid node name (letters, digits and '_', not starting with a digit, "
+        f"at most {NODE_NAME_MAX} characters)"
+    )
+
+
+def params_file_paths(value: object) -> list[str]:
+    """The file names of a ``params_file`` parameter: a string or a list of strings."""
+    if isinstance(value, str):
+        return [value] if value else []
+    if isinstance(value, (list, tuple)):
+        return [str(v) for v in value if v]
+    return []
