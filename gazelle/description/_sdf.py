@@ -37,22 +37,17 @@ from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
 from ._fuel import BUILTIN as FUEL_BUILTIN
 from ._fuel import CLASSIC_BUILTIN, FuelModel, cache_roots, find_cached, parse_fuel_uri
 from ._model import (
-    DEFAULT_MAGNETIC_FIELD,
     Frame,
     Joint,
     JointType,
     Light,
     Mimic,
     Model,
-    PhysicsSettings,
-    Scene,
-    SphericalCoordinates,
     World,
 )
-from ._pose import IDENTITY, Pose, Vec3
+from ._pose import IDENTITY, Pose
 from ._resources import ResourceResolver
 from ._sdf_frames import FrameNode, Scope
-from ._sdf_parts import _Parts
 from ._sdf_reader import (
     MAX_NESTING,
     MAX_VERSION,
@@ -62,9 +57,9 @@ from ._sdf_reader import (
     _findall,
     _tag,
 )
+from ._sdf_world import _WorldParts
 from ._xml import (
     child_elements,
-    parse_bool,
 )
 
 __all__ = ["parse_sdf"]
@@ -99,7 +94,7 @@ def parse_sdf(
         return None
 
 
-class _Loader(_Parts):
+class _Loader(_WorldParts):
     """Documents, models (nested and included) and worlds."""
 
     def load_text(self, text: str, source: str, base_dir: Path | None) -> Model | World | None:
@@ -157,7 +152,13 @@ class _Loader(_Parts):
         return None
 
     def include_file(self, uri: str, path: Path | None, doc: _Doc, loc: SourceLocation) -> tuple[str, str, Path] | None:
-        """(text, source, folder) of an included file, or None after reporting why it is not read."""
+        """(text, source, folder) of an included file, or None after reporting why it is not read.
+
+        A folder is a model folder: its ``model.config`` picks the file (:meth:`pick_sdf`). What is refused
+        and what is merely missing are told apart, because the user's fix differs: a URI outside the
+        resource roots (or a file that links out of them) is an error naming the roots; a model that is not
+        found is a warning and the include is skipped, as Gazebo skips it; a file that cannot be decoded is
+        an error with the reason."""
         if path is not None and path.is_dir():
             path = self.pick_sdf(path, loc)
         if path is None and self.resolver.refused(uri, doc.base_dir):
@@ -603,110 +604,12 @@ class _Loader(_Parts):
             magnetic_field=magnetic,
         )
 
-    def physics_element(self, element: etree._Element, doc: _Doc) -> etree._Element | None:
-        """The world's ``<physics>``: the one marked default, else the first (checked)."""
-        physics_els = _findall(element, "physics")  # one per engine profile; gz-sim runs the default one
-        physics_el = next(
-            (p for p in physics_els if parse_bool(p.get("default") or "") is True),
-            physics_els[0] if physics_els else None,
-        )
-        if physics_el is not None:
-            self.check(physics_el, doc, "physics")
-        return physics_el
-
-    def world_fields(self, element: etree._Element, physics_el: etree._Element | None, doc: _Doc) -> tuple[Vec3, Vec3]:
-        """Gravity and the magnetic field: the world's own elements, else the ones SDF ≤ 1.5 kept in ``<physics>``."""
-        gravity = (0.0, 0.0, -9.8)  # SDF's default (world.sdf), not 9.81: m/s², world frame
-        if _find(element, "gravity") is not None:
-            gravity = self.vec3(element, "gravity", gravity, doc)
-        elif physics_el is not None:
-            gravity = self.vec3(physics_el, "gravity", gravity, doc)
-        magnetic = DEFAULT_MAGNETIC_FIELD  # tesla, world frame: what magnetometers read before their noise
-        if _find(element, "magnetic_field") is not None:
-            magnetic = self.vec3(element, "magnetic_field", magnetic, doc)
-        elif physics_el is not None and _find(physics_el, "magnetic_field") is not None:
-            magnetic = self.vec3(physics_el, "magnetic_field", magnetic, doc)
-        return gravity, magnetic
-
-    def spherical_coordinates(self, element: etree._Element, doc: _Doc) -> SphericalCoordinates | None:
-        """``<spherical_coordinates>``, which GPS sensors read; None when the world has none. Only an ENU world
-        frame is simulated (another orientation is a warning).
-
-        The world origin's latitude and longitude (degrees, WGS84) and ``<elevation>`` (metres), and
-        ``<heading_deg>``, which turns the world frame about the vertical against ENU (the GPS sensor's
-        ``world_to_enu`` applies it). gz-sim reads the same element for its NavSat sensor; absent, gz puts
-        the origin at 0° N 0° E, where gazelle's GPS sensors publish too (with a warning at the sensor)."""
-        spherical = None
-        sph_el = _find(element, "spherical_coordinates")
-        if sph_el is not None:
-            self.check(sph_el, doc, "spherical_coordinates")
-            orientation = (self.text(sph_el, "world_frame_orientation") or "ENU").strip().upper()
-            if orientation != "ENU":
-                self.sink.warning(
-                    ErrorCode.VALUE_INVALID,
-                    f"<world_frame_orientation> {orientation} is not simulated; GPS sensors assume ENU",
-                    self.loc(sph_el, doc),
-                )
-            spherical = SphericalCoordinates(
-                latitude_deg=self.number(sph_el, "latitude_deg", 0.0, doc),
-                longitude_deg=self.number(sph_el, "longitude_deg", 0.0, doc),
-                elevation=self.number(sph_el, "elevation", 0.0, doc),
-                heading_deg=self.number(sph_el, "heading_deg", 0.0, doc),
-                surface_model=(self.text(sph_el, "surface_model") or "EARTH_WGS84").strip(),
-                world_frame_orientation=orientation,
-            )
-        return spherical
-
-    def physics(self, physics_el: etree._Element | None, doc: _Doc) -> PhysicsSettings:
-        """Step size and real-time settings (SDF ≤ 1.3 called the rate ``update_rate``); bad values reported."""
-        # only these three are read: the engine is always MuJoCo, so the engine blocks (<ode>, <bullet>,
-        # <dart>, <simbody>: solver iterations, ERP/CFM) are skipped on purpose (_sdf_reader.IGNORED)
-        default_physics = PhysicsSettings()
-        step = self.number(physics_el, "max_step_size", default_physics.max_step_size_sec, doc)
-        rate_tag = (
-            "update_rate"
-            if doc.version <= (1, 3) and physics_el is not None and _find(physics_el, "update_rate") is not None
-            else "real_time_update_rate"
-        )
-        physics = PhysicsSettings(
-            max_step_size_sec=step,
-            real_time_factor=self.number(physics_el, "real_time_factor", default_physics.real_time_factor, doc),
-            real_time_update_rate_hz=self.number(physics_el, rate_tag, default_physics.real_time_update_rate_hz, doc),
-        )
-        if physics_el is not None:
-            for value, what in ((physics.max_step_size_sec, "max_step_size"),):
-                if not value > 0:
-                    self.sink.error(
-                        ErrorCode.VALUE_INVALID, f"<{what}> must be > 0, got {value:g}", self.loc(physics_el, doc)
-                    )
-            if physics.real_time_factor < 0 or physics.real_time_update_rate_hz < 0:
-                self.sink.error(
-                    ErrorCode.VALUE_INVALID,
-                    "real_time_factor and real_time_update_rate must be >= 0",
-                    self.loc(physics_el, doc),
-                )
-        return physics
-
-    def scene(self, element: etree._Element, doc: _Doc) -> Scene:
-        """``<scene>``: ambient and background colours, shadows, grid; SDF's defaults for what it leaves out.
-
-        The defaults are ``sdf/1.11/scene.sdf``'s (ambient 0.4 grey, background 0.7 grey, shadows and grid on),
-        kept in :class:`Scene`. Cameras render with the ambient, background and shadows; the grid is the
-        browser viewer's. ``<fog>``, ``<sky>`` and the rest are named by :meth:`check` as not simulated."""
-        scene_el = _find(element, "scene")
-        scene = Scene()
-        if scene_el is not None:
-            self.check(scene_el, doc, "scene")
-            scene = Scene(
-                ambient=self.color(scene_el, "ambient", doc) or scene.ambient,
-                background=self.color(scene_el, "background", doc) or scene.background,
-                shadows=self.flag(scene_el, "shadows", scene.shadows, doc),
-                grid=self.flag(scene_el, "grid", scene.grid, doc),
-            )
-        return scene
-
     def world_contents(self, element: etree._Element, doc: _Doc, name: str | None) -> tuple[list[Model], list[Light]]:
-        """The world's models (and includes) placed through its frame graph, and its lights."""
+        """The world's models (and includes) placed through its frame graph, and its lights.
+
+        An ``<include>`` may bring a light (Fuel's ``sun`` is one), so lights are collected from both, in
+        file order. Other children of ``<world>`` are read elsewhere (physics, scene, plugins, gravity) or
+        reported by :meth:`check`."""
         # the world is a frame graph of its own (SDF 1.7+): a model's <pose relative_to> may name another
         # model or a world <frame>, so every model is read first and placed once the whole graph is known;
         # model names must be unique in a world (sdformat's rule; the second is an error, not a rename)
@@ -761,34 +664,6 @@ class _Loader(_Parts):
             if light is not None:
                 lights.append(light)
         return models, lights
-
-    def world_frame(self, child: etree._Element, doc: _Doc, scope: Scope, names: set[str], world: str | None) -> None:
-        """A world's ``<frame>`` into its frame graph (a name used twice is an error).
-
-        SDF 1.7's world frames: a named pose in the world, ``attached_to`` a model or another frame (moving
-        with it) or to the world. Its pose is ``relative_to`` its ``<pose>``'s frame, else to the frame it is
-        attached to, else the world (sdformat's rule); models' and lights' poses may then be relative to it."""
-        frame_name = self.name(child, doc)
-        if frame_name is None:
-            return
-        if frame_name in names:
-            self.sink.error(
-                ErrorCode.DUPLICATE_NAME,
-                f"name '{frame_name}' is used twice in world '{world}'",
-                self.loc(child, doc),
-            )
-            return
-        names.add(frame_name)
-        fpose, frel = self.pose(child, doc)
-        attached = (child.get("attached_to") or "").strip() or None
-        scope.nodes[frame_name] = FrameNode(
-            frame_name,
-            "frame",
-            fpose,
-            frel or attached or "world",
-            attached_to=attached,
-            location=self.loc(child, doc),
-        )
 
 
 def _link_pose(built: _Built, link_name: str) -> Pose:

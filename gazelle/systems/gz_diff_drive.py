@@ -174,7 +174,11 @@ def _limits(cfg: ConfigElement, which: str, log: logging.Logger) -> SpeedLimits:
 
 
 def parse_config(ctx: SystemContext, log: logging.Logger) -> GzDiffDriveConfig:
-    """Read the ``<plugin>`` block; unknown children are warned about by name and location."""
+    """Read the ``<plugin>`` block; unknown children are warned about by name and location.
+
+    gz-sim 8's names and defaults (``DiffDrive.cc`` ``Configure``): one or more ``<left_joint>`` and
+    ``<right_joint>``, ``wheel_separation`` 1.0 m, ``wheel_radius`` 0.2 m, odometry at 50 Hz; the topics and
+    frames empty here mean gz-sim's model-scoped defaults, filled in by :meth:`GzDiffDrive.configure`."""
     cfg = ctx.plugin.config if ctx.plugin is not None else None
     if cfg is None:
         return GzDiffDriveConfig(namespace=ctx.entity.namespace)

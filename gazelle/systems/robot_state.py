@@ -301,7 +301,12 @@ class GzJointStatePublisher(JointStatePublisher):
         """Per published joint: its handle, or None for a joint without one degree of freedom (zeros)."""
 
     def configure(self, ctx: SystemContext) -> None:
-        """Read ``<joint_name>``, ``<topic>`` and ``<update_rate>``; find the joints; advertise the topic."""
+        """Read ``<joint_name>``, ``<topic>`` and ``<update_rate>``; find the joints; advertise the topic.
+
+        As gz-sim 8's ``JointStatePublisher.cc``: every joint of the model when no ``<joint_name>`` is given,
+        in the model's order; a named joint the model lacks is an error with upstream's text and the others
+        still publish; the topic defaults to ``/world/<world>/model/<model>/joint_state``; a joint without one
+        degree of freedom is listed at 0, and every effort is 0 (gz-sim's physics fills no ``JointForce``)."""
         log = ctx.logger
         cfg = ctx.plugin.config if ctx.plugin is not None else None
         model: Model = ctx.entity.model

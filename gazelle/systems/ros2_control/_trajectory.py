@@ -204,7 +204,11 @@ def _cubic(a: Any, b: Any, va: Any, vb: Any, T: Any, s: Any) -> tuple[Any, Any, 
 
 
 def _quintic(a: Any, b: Any, va: Any, vb: Any, aa: Any, ab: Any, T: Any, s: Any) -> tuple[Any, Any, Any]:
-    """As :func:`_cubic`, the quintic with position, velocity and acceleration given at both ends."""
+    """As :func:`_cubic`, the quintic with position, velocity and acceleration given at both ends.
+
+    Written in the offsets from the cubic-free part (``h``: the distance left after the start's own
+    velocity and acceleration, ``dv``, ``da``): algebraically the coefficients of trajectory.cpp's quintic in
+    ``interpolate_between_points``, arranged so that the float and the numpy forms round alike."""
     T3 = T * T * T
     T4, s2 = T3 * T, s * s
     T5, s3 = T4 * T, s2 * s

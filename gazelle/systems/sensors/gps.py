@@ -208,7 +208,10 @@ class GpsSensor(_SensorSystem):
         return value + bias + noise.mean + jitter
 
     def post_update(self, info: UpdateInfo, world: PhysicsWorld) -> None:
-        """At the sensor's rate, while listened to: publish the fix (and the velocity) stamped with this sim time."""
+        """At the sensor's rate, while listened to: publish the fix (and the velocity) stamped with this sim time.
+
+        One reading serves both topics (the fix and the velocity of one instant); the fix always says
+        STATUS_FIX, as gazebo_ros_gps_sensor and ros_gz_bridge both send it (neither models a loss of fix)."""
         if self._pub is None or info.paused or not self._gate.due(info.sim_time_sec, self.rate_hz):
             return
         want_fix = self._pub.wanted
