@@ -183,8 +183,12 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
     # as ros2cli's does (sensor data: best effort, depth 5), so on a starved CPU it can miss messages: a
     # fresh clone beside a CPU hog read 74, 87 and 91 Hz in windows of 75, 175 and 275 intervals (lost at
     # start-up), another under load 100, 100, then 96 and 91 (lost later: intervals of 0.18 and 0.28 s).
-    # A lost message only lengthens an interval, so on sim time no report reads above 100 (on the wall
-    # clock a busy machine read 115), and a window without a loss reads 100 exactly
+    # A lost message only lengthens an interval. What can shorten the measured time is the clock itself: the
+    # verb stamps each arrival with its node's sim time, which moves only when a /clock message comes, so a
+    # short window can read high (a fresh clone beside other test runs: 109 Hz in the first 109 intervals,
+    # with intervals of 0 s between messages that came under one clock value, then 104.5, 100, 99.3). Over a
+    # full 300-interval window (3 s) that error is under half a percent: there, no report reads above 100.5,
+    # and one without a loss reads 100
     hz = ros2(
         "topic",
         "hz",
@@ -201,7 +205,9 @@ def test_topic_service_node_and_interface_verbs_on_a_running_simulation(sim_fact
     rates = [float(line.split(":")[1]) for line in hz.stdout.splitlines() if line.startswith("average rate:")]
     windows = [int(line.rsplit(":", 1)[1]) for line in hz.stdout.splitlines() if "window:" in line]
     assert len(rates) == 4 and windows[-1] == 300, hz.stdout + hz.stderr
-    assert max(rates) <= 100.5 and max(rates) == pytest.approx(100.0, rel=0.01), hz.stdout + hz.stderr
+    full = [r for r, w in zip(rates, windows, strict=True) if w == 300]
+    assert full and max(full) <= 100.5, hz.stdout + hz.stderr
+    assert any(r == pytest.approx(100.0, rel=0.01) for r in full), hz.stdout + hz.stderr
 
     # pausing from the command line stops /clock
     clocks: list = []

@@ -160,6 +160,12 @@ def test_noise_never_turns_a_hit_into_inf_it_is_clamped_into_the_range_as_gz_sen
     ranges = lidar.scan(sim.world)[0]
     assert ranges[1] == pytest.approx(expect, abs=1e-9)
     assert np.all(np.isposinf(ranges[[0, 2]]))  # the misses stay +inf however large the noise
+    # a wall past range_max is no hit, noise or not (MuJoCo's ray cutoff does not filter it by distance)
+    far = make_sim()
+    _spawn(far, _wall("wall", 10.6, 0.0, 0.2, 40.0), "wall")
+    lidar = _lidar(_spawn(far, model, "scanner"))
+    far.step(1)
+    assert np.all(np.isposinf(lidar.scan(far.world)[0]))
 
 
 def test_a_lidar_noise_bias_is_drawn_once_and_adds_to_every_scan(make_sim):

@@ -200,8 +200,10 @@ class Lidar(_SensorSystem):
         assert self._body is not None
         s = self.spec
         dist, _ = self._body.cast_rays_from(self.offset, self._dirs, s.range_max)
-        # REP 117 from the true distance first: a miss is +inf, a hit nearer than range_min -inf
+        # REP 117 from the true distance first: a miss, or a hit past range_max (mj_multiRay's cutoff only
+        # prunes by bounding box, so farther hits come back too), is +inf; a hit nearer than range_min -inf
         ranges = np.where(dist >= 0, dist, np.inf)
+        np.copyto(ranges, np.inf, where=ranges > s.range_max)
         np.copyto(ranges, -np.inf, where=ranges < s.range_min)
         if noise and s.noise.active:
             # then noise on the readings in range, clamped back into [range_min, range_max]: gz-sensors 8's
