@@ -178,7 +178,12 @@ class _Loader(_WorldParts):
         return text, str(path), path.parent
 
     def fuel_include(self, fuel: FuelModel, uri: str, loc: SourceLocation) -> tuple[str, str, Path | None] | None:
-        """A Fuel model without the network: built in, or from Gazebo's local Fuel cache (see :mod:`._fuel`)."""
+        """A Fuel model without the network: built in, or from Gazebo's local Fuel cache (see :mod:`._fuel`).
+
+        gazelle never downloads (a simulation's inputs must not change under it, and CI has no network):
+        the handful of models nearly every world includes (ground plane, sun) are built in, and anything
+        Gazebo itself once downloaded is read from its cache, trusted as the user's own files. Anything else
+        is skipped with a warning that says where gazelle looked."""
         builtin = FUEL_BUILTIN.get(fuel.name.lower()) if fuel.owner.lower() == "openrobotics" else None
         if builtin is not None:
             return builtin, f"<builtin:fuel {fuel.label()}>", None

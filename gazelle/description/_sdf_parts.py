@@ -77,7 +77,11 @@ class _Parts(_Reader):
         self, link: etree._Element, doc: _Doc, tag: str, link_name: str
     ) -> list[tuple[etree._Element, str, Geometry]]:
         """The link's ``<collision>`` or ``<visual>`` elements (``tag``) that have a name, used once in the
-        link, and a geometry, as (element, name, geometry); the others are reported and left out."""
+        link, and a geometry, as (element, name, geometry); the others are reported and left out.
+
+        sdformat requires both: a collision or visual is named, and names are unique among its siblings,
+        because Gazebo addresses them by ``model::link::name`` (contact sensors, the viewer's selection, a
+        ``<contact><collision>`` list); a second one of a name would be unreachable, so it is an error."""
         out: list[tuple[etree._Element, str, Geometry]] = []
         seen: set[str] = set()
         for el in _findall(link, tag):
@@ -597,7 +601,11 @@ class _Parts(_Reader):
         loc: SourceLocation,
     ) -> list[tuple[JointAxis, Mimic | None] | None]:
         """[<axis>, <axis2>], each (JointAxis, mimic) or None where the type has no such axis; a missing
-        <axis> is 0 0 1 (with a warning), a universal joint's missing <axis2> 0 1 0."""
+        <axis> is 0 0 1 (with a warning), a universal joint's missing <axis2> 0 1 0.
+
+        ``0 0 1`` is SDF's default ``<xyz>`` for both axes (sdf/1.11/joint.sdf); for a universal joint two
+        z axes would be the same axis twice, so gazelle takes y for the second, the usual cardan layout,
+        rather than build a joint that cannot move in its second direction."""
         raw_type, jtype = typed
         axes: list[tuple[JointAxis, Mimic | None] | None] = []
         for axis_tag in ("axis", "axis2"):

@@ -91,7 +91,11 @@ def _registry() -> dict[str, type[System]]:
 
 def _gz_spellings(name: str, file: str = "") -> tuple[str, ...]:
     """Every way a world names gz-sim's system ``name`` (``Imu``): gz and Ignition, file (``file``, else the
-    lower-case name) and class."""
+    lower-case name) and class.
+
+    Worlds written for Fortress say ``ignition-gazebo-imu-system`` / ``ignition::gazebo::systems::Imu``,
+    those for Garden on ``gz-sim-imu-system`` / ``gz::sim::systems::Imu``; gz-sim 8 still loads the
+    Ignition names, so gazelle answers to all four."""
     kebab = file or name.lower()
     return (
         f"gz-sim-{kebab}-system",
