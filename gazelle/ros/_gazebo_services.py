@@ -25,8 +25,8 @@ from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.node import Node
 from std_srvs.srv import Empty
 
-from ..description import Model, ModelLoadError, Pose, World, load_string, quat_conj, quat_rotate, reply_text
-from ..physics import WORLD_FRAMES, ErrorKind, WorldError, pose_out_of_range
+from ..description import Model, ModelLoadError, Pose, Vec3, World, load_string, quat_conj, quat_rotate, reply_text
+from ..physics import WORLD_FRAMES, EntityState, ErrorKind, WorldError, pose_out_of_range
 from ..sim import Simulation
 from ..systems import (
     RSP_PLUGIN,
@@ -39,6 +39,22 @@ from ._spawn_entity import with_joint_state_publisher, with_robot_state_options
 
 RSP_WATCH_SEC = 30.0
 """How long after a spawn the user's robot_state_publisher may still appear and take the robot's TF over."""
+
+
+def relative_state(entity: EntityState, frame: EntityState | None) -> tuple[Pose, Vec3, Vec3]:
+    """An entity's pose, linear and angular velocity as gazebo_ros's ``/get_entity_state`` reports them in a
+    reference frame (gazebo_ros_state.cpp ``GetEntityState``): the pose relative to the frame's, and each
+    velocity less the frame's, turned into the frame's axes; unchanged against the world (``frame`` None).
+    Upstream's arithmetic, kept as it is: the linear difference omits the ``ω × r`` a rigid frame would add,
+    so it is the difference of the two points' world velocities, seen in the frame's axes."""
+    if frame is None:
+        return entity.pose, entity.linear_velocity, entity.angular_velocity
+    q_inv = quat_conj(frame.pose.orientation)
+    (ex, ey, ez), (fx, fy, fz) = entity.linear_velocity, frame.linear_velocity
+    (ax, ay, az), (bx, by, bz) = entity.angular_velocity, frame.angular_velocity
+    lin = quat_rotate(q_inv, (ex - fx, ey - fy, ez - fz))
+    ang = quat_rotate(q_inv, (ax - bx, ay - by, az - bz))
+    return frame.pose.inverse() * entity.pose, lin, ang
 
 
 class SpawnFailure(enum.StrEnum):
@@ -256,20 +272,19 @@ class GazeboServices(Node):
         entity, _, link = req.name.partition("::")
         frame = req.reference_frame
 
-        def query() -> tuple[Any, Pose, float]:
-            st = self.sim.world.entity_state(entity, link or None)
-            return st, self.sim.world.frame_pose(frame), self.sim.world.time
+        def query() -> tuple[EntityState, EntityState | None, float]:
+            world = self.sim.world
+            st = world.entity_state(entity, link or None)
+            fe, _, fl = frame.partition("::")
+            return st, None if frame in WORLD_FRAMES else world.entity_state(fe, fl or None), world.time
 
         try:
-            st, X_WF, t = self.sim.call(query)
+            st, frame_state, t = self.sim.call(query)
         except (WorldError, TimeoutError) as err:
             res.success = False
             self.get_logger().error(f"GetEntityState: {err}")
             return res
-        X_FE = X_WF.inverse() * st.pose
-        q_inv = quat_conj(X_WF.orientation)
-        lin = quat_rotate(q_inv, st.linear_velocity)
-        ang = quat_rotate(q_inv, st.angular_velocity)
+        X_FE, lin, ang = relative_state(st, frame_state)
         res.header.stamp = to_time(t)
         res.header.frame_id = frame
         res.state.name = req.name
