@@ -1100,10 +1100,7 @@ def test_an_effort_trajectory_controller_adds_the_trajectorys_efforts_as_feedfor
     )
     sim = make_sim()
     cm = _manager(sim.spawn(load_string(urdf).model, name="arm", pose=Pose((0, 0, 0.1))))
-    cm.files.append(load_params(config))
-    cm.load_controller("arm")
-    cm.configure_controller("arm")
-    cm.switch_controller(["arm"], [])
+    _start(cm, config, "arm")
     points = (
         TrajectoryPoint(0.5, (0.0, 0.0), effort=(1.0, 2.0)),
         TrajectoryPoint(1.0, (0.0, 0.0), effort=(3.0, 6.0)),
@@ -1138,10 +1135,7 @@ def test_joint_state_broadcaster_extra_joints_join_both_messages_at_zero_once_ea
     )
     sim = make_sim()
     cm = _manager(sim.spawn(load_string(_TWO_JOINT_ARM).model, name="arm", pose=Pose((0, 0, 0.1))))
-    cm.files.append(load_params(config))
-    cm.load_controller("jsb")
-    cm.configure_controller("jsb")
-    cm.switch_controller(["jsb"], [])
+    _start(cm, config, "jsb")
     heard: dict[str, list] = {}
     for ep in sim.bus.endpoints():
         if ep.topic in ("/joint_states", "/dynamic_joint_states"):

@@ -135,12 +135,20 @@ def test_a_lidar_in_a_closed_square_room_matches_the_analytic_ranges(make_sim):
     assert np.max(np.abs(ranges - expect)) < 1e-3
 
 
-def test_gaussian_noise_has_the_configured_stddev_over_10000_samples(make_sim):
+def _lidar_facing_a_wall(make_sim, noise: str, samples: int, half_angle: float):
+    """A world with a long wall whose near face is 2 m ahead of a lidar of ``samples`` rays over ±``half_angle``
+    with ``noise``, stepped once."""
     sim = make_sim()
     _spawn(sim, _wall("wall", 2.1, 0.0, 0.2, 20.0), "wall")
-    noise = "<noise><type>gaussian</type><mean>0.0</mean><stddev>0.01</stddev></noise>"
-    lidar = _lidar(_spawn(sim, _lidar_model(samples=100, min_angle=-0.5, max_angle=0.5, noise=noise), "scanner"))
+    model = _lidar_model(samples=samples, min_angle=-half_angle, max_angle=half_angle, noise=noise)
+    lidar = _lidar(_spawn(sim, model, "scanner"))
     sim.step(1)
+    return sim, lidar
+
+
+def test_gaussian_noise_has_the_configured_stddev_over_10000_samples(make_sim):
+    noise = "<noise><type>gaussian</type><mean>0.0</mean><stddev>0.01</stddev></noise>"
+    sim, lidar = _lidar_facing_a_wall(make_sim, noise, 100, 0.5)
     angles = np.linspace(-0.5, 0.5, 100)
     errors = np.concatenate([lidar.scan(sim.world)[0] - 2.0 / np.cos(angles) for _ in range(100)])
     assert errors.size == 10_000
@@ -170,11 +178,9 @@ def test_noise_never_turns_a_hit_into_inf_it_is_clamped_into_the_range_as_gz_sen
 
 def test_a_lidar_noise_bias_is_drawn_once_and_adds_to_every_scan(make_sim):
     # gz-sensors GaussianNoiseModel: a bias of magnitude bias_mean and random sign, drawn when loaded
-    sim = make_sim()
-    _spawn(sim, _wall("wall", 2.1, 0.0, 0.2, 20.0), "wall")
-    noise = "<noise><type>gaussian</type><bias_mean>0.05</bias_mean></noise>"
-    lidar = _lidar(_spawn(sim, _lidar_model(samples=3, min_angle=-0.1, max_angle=0.1, noise=noise), "scanner"))
-    sim.step(1)
+    sim, lidar = _lidar_facing_a_wall(
+        make_sim, "<noise><type>gaussian</type><bias_mean>0.05</bias_mean></noise>", 3, 0.1
+    )
     scans = np.array([lidar.scan(sim.world)[0][1] for _ in range(5)])
     assert np.all(scans == scans[0]) and abs(scans[0] - 2.0) == pytest.approx(0.05, abs=1e-9)
 
