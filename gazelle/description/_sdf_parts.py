@@ -85,17 +85,9 @@ class _Parts(_Reader):
         out: list[tuple[etree._Element, str, Geometry]] = []
         seen: set[str] = set()
         for el in _findall(link, tag):
-            name = self.name(el, doc)
+            name = self.unique(el, doc, seen, f"{tag} name", f"link '{link_name}'")
             if name is None:
                 continue
-            if name in seen:
-                self.sink.error(
-                    ErrorCode.DUPLICATE_NAME,
-                    f"{tag} name '{name}' is used twice in link '{link_name}'",
-                    self.loc(el, doc),
-                )
-                continue
-            seen.add(name)
             self.check(el, doc, tag)
             geometry = self.geometry(el, doc)
             if geometry is not None:

@@ -304,6 +304,21 @@ class _Reader:
             return None
         return value.strip()
 
+    def unique(self, element: etree._Element, doc: _Doc, seen: set[str], label: str, owner: str) -> str | None:
+        """The name of ``element`` when it is new in ``seen`` (added to it); None when it has none (reported by
+        :meth:`name`) or ``label`` '...' is already used in ``owner``, an error at its line, as sdformat refuses
+        a second sibling of one name (Gazebo addresses each by its scoped name, so the second would be lost)."""
+        name = self.name(element, doc)
+        if name is None:
+            return None
+        if name in seen:
+            self.sink.error(
+                ErrorCode.DUPLICATE_NAME, f"{label} '{name}' is used twice in {owner}", self.loc(element, doc)
+            )
+            return None
+        seen.add(name)
+        return name
+
     def text(self, element: etree._Element, tag: str) -> str | None:
         """The stripped text of child ``tag``; None when it is absent."""
         child = _find(element, tag)

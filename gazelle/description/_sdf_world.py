@@ -130,17 +130,9 @@ class _WorldParts(_Parts):
         SDF 1.7's world frames: a named pose in the world, ``attached_to`` a model or another frame (moving
         with it) or to the world. Its pose is ``relative_to`` its ``<pose>``'s frame, else to the frame it is
         attached to, else the world (sdformat's rule); models' and lights' poses may then be relative to it."""
-        frame_name = self.name(child, doc)
+        frame_name = self.unique(child, doc, names, "name", f"world '{world}'")
         if frame_name is None:
             return
-        if frame_name in names:
-            self.sink.error(
-                ErrorCode.DUPLICATE_NAME,
-                f"name '{frame_name}' is used twice in world '{world}'",
-                self.loc(child, doc),
-            )
-            return
-        names.add(frame_name)
         fpose, frel = self.pose(child, doc)
         attached = (child.get("attached_to") or "").strip() or None
         scope.nodes[frame_name] = FrameNode(
