@@ -456,6 +456,42 @@ def test_a_goal_outside_its_goal_tolerance_after_goal_time_aborts_with_jazzys_st
     assert "Position Tolerance: 0.000000" in caplog.text  # %f of 1e-9, as upstream prints it
 
 
+def _reconfigure(cm: ControllerManager, name: str, **params: float) -> None:
+    """``params`` set in the controller's YAML, then configured and activated again (a user's edit and restart)."""
+    cm.switch_controller([], [name])
+    cm.files[0].nodes[name].update(params)
+    cm.configure_controller(name)
+    cm.switch_controller([name], [])
+
+
+def test_cmd_timeout_holds_where_the_joints_are_and_ends_a_waiting_goal_as_jazzy_does(r6bot, caplog):
+    """Jazzy's JTC: ``cmd_timeout`` seconds after the last point, "Aborted due to command timeout" and a hold
+    at the measured positions; a goal still waiting for goal tolerances nobody meets (goal_time 0: for ever)
+    then reports success, as upstream's next cycle does with its checks off while holding. A timeout not above
+    constraints.goal_time is switched off with upstream's warning."""
+    sim, cm = r6bot
+    jtc = cm.controllers["joint_trajectory_controller"].controller
+    with caplog.at_level(logging.WARNING):
+        _reconfigure(cm, "joint_trajectory_controller", cmd_timeout=0.3, **{"constraints.goal_time": 0.5})
+    assert (
+        jtc.cmd_timeout == 0.0
+        and "Command timeout must be higher than goal_time tolerance (0.300000 vs. 0.500000)" in caplog.text
+    )
+    _reconfigure(cm, "joint_trajectory_controller", cmd_timeout=0.2, **{"constraints.goal_time": 0.0})
+    sim.step(100)
+    target = tuple(q + 0.2 for q in _positions(cm))
+    goal = TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, (TrajectoryPoint(0.5, target),)))
+    goal.goal_tolerance = segment_tolerances(jtc, [], [(j, 1e-9, 0.0, 0.0) for j in R6_JOINTS], 0.0).goal
+    start = sim.world.time
+    caplog.clear()
+    with caplog.at_level(logging.INFO):
+        jtc.submit(goal)
+        _run(sim, goal)
+    assert (goal.status, goal.error_string) == ("succeeded", "Goal successfully reached!")
+    assert sim.world.time - start == pytest.approx(0.5 + 0.2, abs=0.03)  # not before the timeout
+    assert "Aborted due to command timeout" in caplog.text
+
+
 def test_r6bot_refuses_goals_it_cannot_run(r6bot):
     sim, cm = r6bot
     jtc = cm.controllers["joint_trajectory_controller"].controller

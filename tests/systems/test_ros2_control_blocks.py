@@ -110,7 +110,7 @@ def test_a_path_tolerance_aborts_at_the_same_cycle_with_the_same_message():
 
 
 def test_the_vectorised_sample_is_the_scalar_sample_bit_for_bit():
-    from gazelle.systems.ros2_control._trajectory import _Segmented
+    from gazelle.systems.ros2_control._segments import _Segmented
 
     rng = np.random.default_rng(3)
     times = [0.0, 0.3, 0.7, 1.2]

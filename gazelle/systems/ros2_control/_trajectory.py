@@ -15,19 +15,19 @@
   ``<joint>.goal``; a goal's own tolerances override them (0: the default, -1: none). A path
   violation aborts with PATH_TOLERANCE_VIOLATED and holds where the joints are; missing the goal
   by more than ``goal_time`` after the end aborts with GOAL_TOLERANCE_VIOLATED.
+* ``cmd_timeout`` (above ``goal_time``, else switched off with Jazzy's warning): that long after the last
+  point, "Aborted due to command timeout" and a hold where the joints are.
 * ``~/controller_state`` (control_msgs/JointTrajectoryControllerState) every cycle.
 """
 
 from __future__ import annotations
 
-import bisect
 import enum
 import functools
 import math
 import threading
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Any
 
 import numpy as np
 
@@ -35,6 +35,7 @@ from .._bus import MsgType
 from .._payloads import JointTrajectory, TrajectoryControllerState, TrajectoryPoint
 from ._controller import Controller, GoalState, values_getter, values_or_zero
 from ._hardware import ControlError
+from ._segments import _Segmented
 from ._tolerances import FLOAT_EPSILON, Tolerance, violates
 
 
@@ -101,133 +102,6 @@ class TrajectoryBlock:
     """Per joint with a path tolerance: (position, velocity, the position and velocity reference per cycle)."""
 
 
-@dataclass
-class _Segmented:
-    """A trajectory in the controller's joint order, times absolute (sim seconds)."""
-
-    times: list[float]
-    pos: list[list[float]]
-    vel: list[list[float]] | None
-    acc: list[list[float]] | None
-    goal: TrajectoryGoal | None
-    path_tolerance: list[Tolerance] | None = None
-    """Per joint (controller order), what the goal's path must keep to; None: nothing to check."""
-    eff: list[list[float] | None] | None = None
-    """Per point, the efforts (N·m or N) when every point of the trajectory has them (None for the state
-    before it, which has none); None otherwise."""
-
-    def effort(self, t: float) -> list[float]:
-        """The efforts at sim time ``t``, linear between two points as trajectory.cpp's
-        ``interpolate_between_points`` makes them (``has_effort``): the last point's after the end, 0 on a
-        segment whose start has none (the state before the trajectory), and 0 without efforts."""
-        n = len(self.pos[0])
-        eff, times = self.eff, self.times
-        if eff is None or t < times[0]:
-            return [0.0] * n
-        if t >= times[-1]:
-            return list(eff[-1] or [0.0] * n)
-        k = bisect.bisect_right(times, t) - 1
-        a, b = eff[k], eff[k + 1]
-        if a is None or b is None:
-            return [0.0] * n
-        T, s = times[k + 1] - times[k], t - times[k]
-        return [x + (y - x) / T * s for x, y in zip(a, b, strict=True)]
-
-    def sample(self, t: float) -> tuple[list[float], list[float], list[float]]:
-        """The desired (positions, velocities, accelerations) at sim time ``t``: before the first point, its
-        position at rest (at it, the first segment's start: the state before the trajectory, moving as it
-        was); after the last, the last position at rest; between two points, the segment's polynomial:
-        linear with positions only, cubic with velocities, quintic with accelerations (ros2_controllers'
-        spline interpolation)."""
-        times = self.times
-        n = len(self.pos[0])
-        if t < times[0]:
-            return list(self.pos[0]), [0.0] * n, [0.0] * n
-        if t >= times[-1]:
-            return list(self.pos[-1]), [0.0] * n, [0.0] * n
-        k = bisect.bisect_right(times, t) - 1
-        t0, t1 = times[k], times[k + 1]
-        T, s = t1 - t0, t - t0
-        p0, p1 = self.pos[k], self.pos[k + 1]
-        if self.vel is None:
-            v = [(b - a) / T for a, b in zip(p0, p1, strict=True)]
-            return [a + vi * s for a, vi in zip(p0, v, strict=True)], v, [0.0] * n
-        v0, v1 = self.vel[k], self.vel[k + 1]
-        if self.acc is None:
-            rows = [_cubic(a, b, va, vb, T, s) for a, b, va, vb in zip(p0, p1, v0, v1, strict=True)]
-        else:
-            a0s, a1s = self.acc[k], self.acc[k + 1]
-            rows = [
-                _quintic(a, b, va, vb, aa, ab, T, s)
-                for a, b, va, vb, aa, ab in zip(p0, p1, v0, v1, a0s, a1s, strict=True)
-            ]
-        return [r[0] for r in rows], [r[1] for r in rows], [r[2] for r in rows]
-
-    def sample_many(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """:meth:`sample` at each of the times ``t`` at once (rows), with the same arithmetic in the same
-        order, so each row is bit-identical to :meth:`sample` at that time."""
-        times = np.asarray(self.times)
-        P = np.asarray(self.pos, dtype=np.float64)
-        m = len(t)
-        n = P.shape[1]
-        zeros = np.zeros((m, n))
-        if len(times) < 2:
-            return np.repeat(P[:1], m, axis=0), zeros, zeros.copy()
-        k = np.clip(np.searchsorted(times, t, side="right") - 1, 0, len(times) - 2)
-        t0 = times[k][:, None]
-        T, s = times[k + 1][:, None] - t0, t[:, None] - t0
-        p0, p1 = P[k], P[k + 1]
-        if self.vel is None:
-            v = (p1 - p0) / T
-            pos, vel, acc = p0 + v * s, v, zeros.copy()
-        else:
-            V = np.asarray(self.vel, dtype=np.float64)
-            if self.acc is None:
-                pos, vel, acc = _cubic(p0, P[k + 1], V[k], V[k + 1], T, s)
-            else:
-                A = np.asarray(self.acc, dtype=np.float64)
-                pos, vel, acc = _quintic(p0, P[k + 1], V[k], V[k + 1], A[k], A[k + 1], T, s)
-        for rows, row in ((t < times[0], P[0]), (t >= times[-1], P[-1])):
-            if rows.any():
-                pos[rows], vel[rows], acc[rows] = row, 0.0, 0.0
-        return pos, vel, acc
-
-
-def _cubic(a: Any, b: Any, va: Any, vb: Any, T: Any, s: Any) -> tuple[Any, Any, Any]:
-    """Position, velocity and acceleration at ``s`` into a segment of length ``T`` of the cubic with positions
-    ``a``, ``b`` and velocities ``va``, ``vb`` at its ends. Floats (one joint) or numpy arrays (every joint at
-    every cycle of a planned block): the same operations in the same order, so the same roundings."""
-    T2, s3 = T * T, s * s * s
-    c2 = (3 * (b - a) - (2 * va + vb) * T) / T2
-    c3 = (2 * (a - b) + (va + vb) * T) / (T2 * T)
-    return a + va * s + c2 * s * s + c3 * s3, va + 2 * c2 * s + 3 * c3 * s * s, 2 * c2 + 6 * c3 * s
-
-
-def _quintic(a: Any, b: Any, va: Any, vb: Any, aa: Any, ab: Any, T: Any, s: Any) -> tuple[Any, Any, Any]:
-    """As :func:`_cubic`, the quintic with position, velocity and acceleration given at both ends.
-
-    Written in the offsets from the cubic-free part (``h``: the distance left after the start's own
-    velocity and acceleration, ``dv``, ``da``): algebraically the coefficients of trajectory.cpp's quintic in
-    ``interpolate_between_points``, arranged so that the float and the numpy forms round alike."""
-    T3 = T * T * T
-    T4, s2 = T3 * T, s * s
-    T5, s3 = T4 * T, s2 * s
-    s4 = s3 * s
-    s5 = s4 * s
-    c0, c1, c2 = a, va, aa / 2.0
-    h = b - a - va * T - aa * T * T / 2.0
-    dv = vb - va - aa * T
-    da = ab - aa
-    c3 = (10 * h - 4 * dv * T + da * T * T / 2.0) / T3
-    c4 = (-15 * h + 7 * dv * T - da * T * T) / T4
-    c5 = (6 * h - 3 * dv * T + da * T * T / 2.0) / T5
-    return (
-        c0 + c1 * s + c2 * s2 + c3 * s3 + c4 * s4 + c5 * s5,
-        c1 + 2 * c2 * s + 3 * c3 * s2 + 4 * c4 * s3 + 5 * c5 * s4,
-        2 * c2 + 6 * c3 * s + 12 * c4 * s2 + 20 * c5 * s3,
-    )
-
-
 class JointTrajectoryController(Controller):
     """See the module docstring."""
 
@@ -264,26 +138,8 @@ class JointTrajectoryController(Controller):
         self.from_desired = self.param("interpolate_from_desired_state", False, bool) or self.open_loop
         self.allow_nonzero_end_velocity = self.param("allow_nonzero_velocity_at_trajectory_end", False, bool)
         self.allow_integration = self.param("allow_integration_in_goal_trajectories", False, bool)
-        self.stopped_velocity = self.param("constraints.stopped_velocity_tolerance", 0.01, float)
-        self.goal_time = self.param("constraints.goal_time", 0.0, float)
-        self.path_tol = {j: Tolerance(self.param(f"constraints.{j}.trajectory", 0.0, float)) for j in self.joints}
-        self.goal_tol = {
-            j: Tolerance(self.param(f"constraints.{j}.goal", 0.0, float), self.stopped_velocity) for j in self.joints
-        }
-        self.gains = {
-            j: (
-                self.param(f"gains.{j}.p", 0.0, float),
-                self.param(f"gains.{j}.i", 0.0, float),
-                self.param(f"gains.{j}.d", 0.0, float),
-                self.param(f"gains.{j}.ff_velocity_scale", 0.0, float),
-            )
-            for j in self.joints
-        }
-        if cmd in (("velocity",), ("effort",)) and all(g[0] == 0 for g in self.gains.values()):
-            self.log.warning(
-                f"{self.name}: {cmd[0]} command interface without gains.<joint>.p: only the feed-forward "
-                "velocity is commanded"
-            )
+        self._read_constraints()
+        self._read_gains()
         rate = self.update_rate or self.ctx.manager_rate
         # ros2_controllers' update_period_: rclcpp::Duration(0, uint32(1e9 / rate)), whole nanoseconds
         self._lead = int(1.0e9 / rate) / 1.0e9
@@ -295,6 +151,9 @@ class JointTrajectoryController(Controller):
         self._hold_effort: list[float] | None = None
         """The efforts held with :attr:`_hold` after a trajectory that had them ended (an effort interface's
         feedforward, as upstream keeps sampling the last point); None otherwise."""
+        self._ended: float | None = None
+        """When the trajectory whose last point is held ended (sim s), for ``cmd_timeout``; None while a
+        trajectory runs or the joints hold where they were stopped."""
         self._last: tuple | None = None
         self._commanded: tuple[float, list[float], list[float]] | None = None
         """(cycle time, positions, velocities) last commanded: Jazzy's last_commanded_time_/_state_."""
@@ -314,6 +173,42 @@ class JointTrajectoryController(Controller):
         self._state_pub = self.advertise("~/controller_state", MsgType.TRAJECTORY_CONTROLLER_STATE)
         self.action_name = self.topic("~/follow_joint_trajectory")
         self.ctx.add_component(self)
+
+    def _read_constraints(self) -> None:
+        """``constraints`` (``stopped_velocity_tolerance``, ``goal_time``, each joint's ``trajectory`` and
+        ``goal``) and ``cmd_timeout``, which Jazzy's on_configure switches off (with its warning) unless it is
+        above ``goal_time``: a timeout that would cut a goal's own time short."""
+        self.stopped_velocity = self.param("constraints.stopped_velocity_tolerance", 0.01, float)
+        self.goal_time = self.param("constraints.goal_time", 0.0, float)
+        self.cmd_timeout = self.param("cmd_timeout", 0.0, float)
+        if self.cmd_timeout > 0 and not self.cmd_timeout > self.goal_time:
+            self.log.warning(
+                f"Command timeout must be higher than goal_time tolerance ({self.cmd_timeout:f} vs. {self.goal_time:f})"
+            )
+            self.cmd_timeout = 0.0
+        self.path_tol = {j: Tolerance(self.param(f"constraints.{j}.trajectory", 0.0, float)) for j in self.joints}
+        self.goal_tol = {
+            j: Tolerance(self.param(f"constraints.{j}.goal", 0.0, float), self.stopped_velocity) for j in self.joints
+        }
+
+    def _read_gains(self) -> None:
+        """``gains.<joint>.{p,i,d,ff_velocity_scale}``, which close the loop on a velocity or effort command
+        interface (a position one ignores them, as upstream's PID adapter exists only for those two)."""
+        self.gains = {
+            j: (
+                self.param(f"gains.{j}.p", 0.0, float),
+                self.param(f"gains.{j}.i", 0.0, float),
+                self.param(f"gains.{j}.d", 0.0, float),
+                self.param(f"gains.{j}.ff_velocity_scale", 0.0, float),
+            )
+            for j in self.joints
+        }
+        cmd = self.cmd_kinds
+        if cmd in (("velocity",), ("effort",)) and all(g[0] == 0 for g in self.gains.values()):
+            self.log.warning(
+                f"{self.name}: {cmd[0]} command interface without gains.<joint>.p: only the feed-forward "
+                "velocity is commanded"
+            )
 
     def on_cleanup(self) -> None:
         self.ctx.remove_component(self)
@@ -436,7 +331,7 @@ class JointTrajectoryController(Controller):
         missing = [s for s in self.state_interfaces() or [] if s not in states]
         if missing:
             raise ControlError(f"controller '{self.name}': the hardware has no state interface {', '.join(missing)}")
-        self._traj = None
+        self._traj, self._ended = None, None
         self._commanded = None
         self._hold = [states[f"{j}/position"] for j in self.joints]
         self._hold_effort = None
@@ -476,7 +371,7 @@ class JointTrajectoryController(Controller):
             old.goal.finish(GoalState.ABORTED, TrajectoryResult.INVALID_GOAL, _preempted_by(goal))
         if not traj.points:
             self._traj = None
-            self._hold, self._hold_effort = list(actual), None
+            self._hold, self._hold_effort, self._ended = list(actual), None, None
             if goal is not None:
                 goal.finish(GoalState.SUCCEEDED, TrajectoryResult.SUCCESSFUL, "empty trajectory: holding")
             return
@@ -518,7 +413,7 @@ class JointTrajectoryController(Controller):
         self._traj = _Segmented(
             times, pos, vel if have_vel else None, acc if have_acc else None, goal, path_tol, eff if have_eff else None
         )
-        self._hold, self._hold_effort = pos[-1], None
+        self._hold, self._hold_effort, self._ended = pos[-1], None, None
         if goal is not None:
             goal.status = GoalState.EXECUTING
 
@@ -532,7 +427,7 @@ class JointTrajectoryController(Controller):
         traj = self._traj
         if traj is not None and traj.goal is not None and traj.goal.done.is_set():
             # canceled (or ended) from outside: hold where the joints are
-            self._traj, self._hold, self._hold_effort = None, list(actual), None
+            self._traj, self._hold, self._hold_effort, self._ended = None, list(actual), None, None
             traj = None
         return traj
 
@@ -544,6 +439,9 @@ class JointTrajectoryController(Controller):
         actual = list(self._get_pos(states))
         actual_v = self._get_vel(states)
         traj = self._intake(t, actual, actual_v)
+        end = traj.times[-1] if traj is not None else self._ended
+        if self.cmd_timeout > 0 and end is not None and t - end > self.cmd_timeout:
+            traj = self._command_timeout(actual)
         if traj is not None:
             des_p, des_v, des_a = traj.sample(t)
             cmd_p, cmd_v, _cmd_a = traj.sample(t + self._lead)  # where the joints should be next cycle
@@ -562,6 +460,7 @@ class JointTrajectoryController(Controller):
         elif traj is not None and t >= traj.times[-1]:
             self._traj = None  # a topic trajectory ran out: hold its last point (and its efforts)
             self._hold_effort = traj.effort(t) if traj.eff is not None else None
+            self._ended = traj.times[-1]
         if self._state_pub.wanted:
             self._state_pub.publish(self._state(t, des_p, des_v, des_a, actual, actual_v, err_p, err_v, commands))
         self._last = (t, des_p, des_v, des_a, actual, actual_v, err_p, err_v, commands)
@@ -575,6 +474,8 @@ class JointTrajectoryController(Controller):
         cycle). A goal's block ends before its trajectory's end."""
         if self.cmd_kinds[0] != "position" or self._state_pub.wanted:
             return None
+        if self.cmd_timeout > 0 and (self._traj is not None or self._incoming is not None or self._ended is not None):
+            return None  # a command timeout may fall inside the block: its check runs each cycle
         traj = self._intake(float(times[0]), list(self._get_pos(states)), self._get_vel(states))
         m = len(times)
         if traj is None:
@@ -626,7 +527,7 @@ class JointTrajectoryController(Controller):
         if traj is not None and traj.goal is not None and t < traj.times[-1]:
             self._check(traj, t, err_p, err_v, act)
         elif traj is not None and traj.goal is None and t >= traj.times[-1]:
-            self._traj = None
+            self._traj, self._ended = None, traj.times[-1]
         self._last = (t, des_p, des_v, des_a, act, act_v, err_p, err_v, commands)
 
     @property
@@ -688,6 +589,18 @@ class JointTrajectoryController(Controller):
                 u += effort[k]
             commands[self._out_keys[k]] = u
 
+    def _command_timeout(self, actual: list[float]) -> None:
+        """``cmd_timeout`` seconds after the last point's time (Jazzy ``update()``): "Aborted due to command
+        timeout", and the joints hold where they are now (``set_hold_position``), the trajectory and its
+        efforts dropped. A goal still waiting for its goal tolerances (``goal_time`` 0) then ends as
+        upstream's next cycle ends it: holding turns the tolerance checks off, so it reports success."""
+        self.log.warning("Aborted due to command timeout")
+        traj = self._traj
+        self._traj, self._hold, self._hold_effort, self._ended = None, list(actual), None, None
+        if traj is not None and traj.goal is not None and not traj.goal.done.is_set():
+            self.log.info("Goal reached, success!")
+            traj.goal.finish(GoalState.SUCCEEDED, TrajectoryResult.SUCCESSFUL, "Goal successfully reached!")
+
     def _velocity_errors(self, des_v: Sequence[float], actual_v: Sequence[float]) -> list[float]:
         """Desired minus measured velocities, or zeros where Jazzy's controller does not compute them (see
         ``_velocity_error``)."""
@@ -710,7 +623,7 @@ class JointTrajectoryController(Controller):
                 assert traj.path_tolerance is not None
                 self._log_tolerance_failures(left, traj.path_tolerance, err_p, err_v)
                 self.log.warning("Aborted due to state tolerance violation")
-                self._traj, self._hold, self._hold_effort = None, list(actual), None
+                self._traj, self._hold, self._hold_effort, self._ended = None, list(actual), None, None
                 goal.finish(
                     GoalState.ABORTED,
                     TrajectoryResult.PATH_TOLERANCE_VIOLATED,
@@ -722,6 +635,7 @@ class JointTrajectoryController(Controller):
         if not outside:
             self._traj = None  # upstream keeps sampling the last point: its position, and its efforts
             self._hold_effort = traj.effort(t) if traj.eff is not None else None
+            self._ended = end
             self.log.info("Goal reached, success!")
             goal.finish(GoalState.SUCCEEDED, TrajectoryResult.SUCCESSFUL, "Goal successfully reached!")
             return
@@ -731,7 +645,7 @@ class JointTrajectoryController(Controller):
             # std::to_string(double): six decimals
             text = f"Aborted due to goal_time_tolerance exceeding by {t - end:f} seconds"
             self.log.warning(text)
-            self._traj, self._hold, self._hold_effort = None, list(actual), None
+            self._traj, self._hold, self._hold_effort, self._ended = None, list(actual), None, None
             goal.finish(GoalState.ABORTED, TrajectoryResult.GOAL_TOLERANCE_VIOLATED, text)
 
     def _log_tolerance_failures(
