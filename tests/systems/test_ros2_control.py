@@ -567,13 +567,13 @@ def test_a_controller_parameter_gazelle_does_not_read_is_named(r6bot, caplog):
     _sim, cm = r6bot
     cm.switch_controller([], ["joint_trajectory_controller"])
     cm.files[0].nodes["joint_trajectory_controller"].update(
-        {"cmd_timeout": 0.5, "state_publish_rate": 50.0, "use_sim_time": True}
+        {"action_monitor_rate": 10.0, "state_publish_rate": 50.0, "use_sim_time": True}
     )
     with caplog.at_level(logging.WARNING):
         cm.configure_controller("joint_trajectory_controller")
     said = [r.getMessage() for r in caplog.records if "not read" in r.getMessage()]
     assert said == [
-        "controller 'joint_trajectory_controller': parameter(s) cmd_timeout, state_publish_rate are not read by "
+        "controller 'joint_trajectory_controller': parameter(s) action_monitor_rate, state_publish_rate are not read by "
         "gazelle's joint_trajectory_controller/JointTrajectoryController: they have no effect"
     ]
 
