@@ -8,8 +8,10 @@ line, which starts it) imports rclpy; and no package reaches into another packag
 from __future__ import annotations
 
 import ast
+import io
 import subprocess
 import sys
+import tokenize
 from pathlib import Path
 
 import pytest
@@ -315,3 +317,56 @@ def test_the_house_check_finds_a_long_function_a_big_file_and_a_bare_suppression
     )
     problems = _house_problems(pkg)
     assert [p.split(":")[0].split(" ")[0] for p in problems] == ["pkg/bare.py", "pkg/big.py", "pkg/long.py"]
+
+
+WHY_PACKAGES = ("description", "physics", "systems", "sim", "planning", "testing")
+"""The packages whose readers need the why (units, frames, which Gazebo behaviour is matched and where it
+differs): the ones that model, simulate, plan and test. ros, viewer, cli and sweep are glue to rclpy, viser,
+typer and Ray whose why lives in these (issue 32's decision, said in the stop-51 note)."""
+MIN_DOC_DENSITY = 0.35
+
+
+def _doc_density(package: Path) -> float:
+    """Comment and docstring lines per non-blank code line over a package's modules (a docstring of any
+    module, class, function or attribute counts whole; a line holding code and a trailing comment counts as
+    both)."""
+    doc = code = 0
+    for path in sorted(package.rglob("*.py")):
+        text = path.read_text()
+        lines = text.splitlines()
+        docstrings: set[int] = set()
+        for node in ast.walk(ast.parse(text)):
+            body = getattr(node, "body", None)  # a lambda's body is one expression, not statements
+            for stmt in body if isinstance(body, list) else []:
+                if (
+                    isinstance(stmt, ast.Expr)
+                    and isinstance(stmt.value, ast.Constant)
+                    and isinstance(stmt.value.value, str)
+                ):
+                    docstrings.update(range(stmt.lineno, (stmt.end_lineno or stmt.lineno) + 1))
+        comments = {
+            tok.start[0] for tok in tokenize.generate_tokens(io.StringIO(text).readline) if tok.type == tokenize.COMMENT
+        }
+        doc += len(docstrings) + len(comments - docstrings)
+        code += sum(
+            1 for i, s in enumerate(lines, 1) if s.strip() and i not in docstrings and not s.strip().startswith("#")
+        )
+    return doc / max(code, 1)
+
+
+def test_the_packages_that_need_the_why_keep_their_doc_density() -> None:
+    thin = {p: round(d, 3) for p in WHY_PACKAGES if (d := _doc_density(REPO / "gazelle" / p)) < MIN_DOC_DENSITY}
+    assert not thin, f"comment and docstring lines per code line under {MIN_DOC_DENSITY}: {thin}"
+
+
+def test_the_doc_density_check_counts_docstrings_and_comments(tmp_path: Path) -> None:
+    bare = tmp_path / "bare"
+    bare.mkdir()
+    (bare / "m.py").write_text("def f(x):\n    y = x + 1\n    return y\n")
+    told = tmp_path / "told"
+    told.mkdir()
+    (told / "m.py").write_text(
+        '"""A module."""\n\n\ndef f(x):\n    """Why."""\n    y = x + 1  # metres\n    return y\n'
+    )
+    assert _doc_density(bare) == 0.0
+    assert _doc_density(told) == pytest.approx(3 / 3)
