@@ -313,9 +313,7 @@ def _control_plugins() -> frozenset[str]:
 
 
 # Plugins gazelle knows but does not simulate yet, and what to say about them.
-_NOT_YET: dict[str, str] = {
-    **{n: "sensors are not simulated yet" for n in ("gazebo_ros_range",)},
-}
+_NOT_YET: dict[str, str] = {}
 
 # gz-sim world systems whose work gazelle does itself: no warning.
 BUILT_IN_WORLD_SYSTEMS = frozenset(

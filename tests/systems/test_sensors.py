@@ -237,6 +237,36 @@ def test_a_range_is_the_least_of_its_rays_so_one_too_near_reads_minus_inf_as_in_
     assert got[-1].range == math.inf
 
 
+def _ros1_sonar(plugin_extra: str = "") -> str:
+    """A post with a ROS 1-era sonar: a 5-ray cone and libgazebo_ros_range.so, as ROS 1 robot descriptions wrote it."""
+    plugin = f"""<plugin name="sonar" filename="libgazebo_ros_range.so">
+        <robotNamespace>/bot</robotNamespace><topicName>sonar</topicName><frameName>sonar_link</frameName>
+        <updateRate>5</updateRate>{plugin_extra}</plugin>"""
+    xml = _lidar_model(samples=5, min_angle=-0.1, max_angle=0.1, rmin=0.1, rmax=4.0)
+    return xml[: xml.index("<plugin")] + plugin + xml[xml.index("</plugin>") + len("</plugin>") :]
+
+
+def test_ros1_gazebo_ros_range_publishes_the_nearest_ray_as_its_plugin_did(make_sim, caplog):
+    """ROS 1's gazebo_ros_range.cpp (PutRangeData): sensor_msgs/Range on <topicName> under <robotNamespace>, the
+    least raw ray (a miss reads range_max, not +inf), <radiation> ultrasound by default, the plugin's <fov> (0.05
+    by default), throttled to <updateRate>; it was a warning ('not simulated yet') before."""
+    sim = make_sim()
+    _spawn(sim, _wall("wall", 2.1, 0.0, 0.2, 20.0), "wall")
+    with caplog.at_level(logging.WARNING):
+        _spawn(sim, _ros1_sonar(), "bot")
+    assert not caplog.records, [r.getMessage() for r in caplog.records]  # every parameter read
+    got = _record(sim, "/bot/sonar")
+    sim.step(1000)  # 1 s: the 10 Hz sensor throttled to 5 Hz
+    stamps = [m.stamp_sec for m in got]
+    assert len(stamps) == 6 and all(b - a == pytest.approx(0.2, abs=1e-9) for a, b in zip(stamps[1:], stamps[2:]))
+    r: Range = got[-1]
+    assert (r.radiation_type, r.field_of_view, r.min_range, r.max_range) == (0, 0.05, 0.1, 4.0)
+    assert r.frame_id == "sonar_link" and r.range == pytest.approx(2.0, abs=1e-3)
+    sim.delete("wall")
+    sim.step(200)
+    assert got[-1].range == 4.0  # nothing in range: Classic's raw rays report range_max
+
+
 def _imu_box(extra: str = "", offset: str = "0.3 0 0 0 0 0", plugin: bool = True) -> str:
     ros = """<plugin name="imu_plugin" filename="libgazebo_ros_imu_sensor.so">
         <ros><namespace>/demo</namespace><remapping>~/out:=imu</remapping></ros>

@@ -227,7 +227,8 @@ class SensorPluginConfig:
     frame_name: str = ""
     """``<frame_name>`` (ROS 1: ``<frameName>``): the header's frame_id; default the sensor's link."""
     radiation_type: str = "infrared"
-    """Range output: ``infrared`` or ``ultrasound``."""
+    """Range output: ``infrared`` or ``ultrasound`` (``<radiation_type>``; ROS 1's gazebo_ros_range:
+    ``<radiation>``, ultrasound by default)."""
     min_intensity: float = -math.inf
     """Intensities below it are raised to it (gazelle's rays have intensity 0: no laser_retro yet)."""
     initial_orientation_as_reference: bool = False
@@ -257,12 +258,17 @@ def parse_plugin_config(ctx: SystemContext) -> SensorPluginConfig:
     log = ctx.logger
     ns, remaps = ros_block(cfg)
     raw_type = child_text(cfg, "output_type")
-    if raw_type is None and ctx.plugin is not None and "laser" in ctx.plugin.filename.lower():
+    filename = ctx.plugin.filename.lower() if ctx.plugin is not None else ""
+    ros1_range = "gazebo_ros_range" in filename
+    if raw_type is None and "laser" in filename:
         raw_type = "sensor_msgs/LaserScan"  # ROS 1's gazebo_ros_laser publishes LaserScan
+    if raw_type is None and ros1_range:
+        raw_type = "sensor_msgs/Range"  # ROS 1's gazebo_ros_range (<radiation>, default ultrasound)
+    radiation = child_text(cfg, "radiation_type") or child_text(cfg, "radiation")
     return SensorPluginConfig(
         output_type=raw_type or "sensor_msgs/PointCloud2",
         frame_name=child_text(cfg, "frame_name") or child_text(cfg, "frameName") or "",
-        radiation_type=(child_text(cfg, "radiation_type") or "infrared").strip().lower(),
+        radiation_type=(radiation or ("ultrasound" if ros1_range else "infrared")).strip().lower(),
         min_intensity=parse_float(cfg, "min_intensity", -math.inf, log),
         initial_orientation_as_reference=parse_bool(
             cfg,
@@ -272,7 +278,7 @@ def parse_plugin_config(ctx: SystemContext) -> SensorPluginConfig:
             False,
             log,
         ),
-        topic=child_text(cfg, "topicName") or "~/out",
+        topic=child_text(cfg, "topicName") or ("/range" if ros1_range else "~/out"),
         body_name=child_text(cfg, "bodyName") or child_text(cfg, "body_name") or "",
         update_rate=parse_float(cfg, "updateRate", 0.0, log),
         gaussian_noise=parse_float(cfg, "gaussianNoise", 0.0, log),

@@ -30,7 +30,7 @@ from ...description import (
     rotation_matrix,
 )
 from ...physics import PhysicsWorld
-from .._base import SystemContext, UpdateInfo
+from .._base import RateGate, SystemContext, UpdateInfo
 from .._bus import MsgType
 from .._payloads import LaserScan, PointCloud, Range
 from .._plugin_config import parse_float
@@ -162,6 +162,7 @@ class Lidar(_SensorSystem):
         "gazebo_ros_ray_sensor": None,
         "gazebo_ros_laser": None,
         "gazebo_ros_gpu_laser": None,
+        "gazebo_ros_range": None,
     }
     gz_system = "Sensors"
     output_kind = "scan"
@@ -175,6 +176,11 @@ class Lidar(_SensorSystem):
         self._dirs = np.zeros((0, 3))
         self._bias = 0.0
         self._intensity_cache: tuple[tuple[int, float], bytes] = ((0, 0.0), b"")
+        self._ros1_range: tuple[float, float] | None = None
+        """ROS 1's gazebo_ros_range: its (``<fov>``, ``<gaussianNoise>``); None for the other plugins."""
+        self._ros1_gate = RateGate()
+        self._ros1_rate = 0.0
+        """ROS 1's gazebo_ros_range ``<updateRate>``, Hz of sim time (0: at the sensor's own rate)."""
 
     def configure(self, ctx: SystemContext) -> None:
         """Parse the sensor's ``<ray>``/``<lidar>`` block and the plugin; declare the output topic."""
@@ -185,6 +191,11 @@ class Lidar(_SensorSystem):
         if not self._configure_common(ctx):
             return
         self._dirs = self.spec.directions()
+        if ctx.plugin is not None and "gazebo_ros_range" in ctx.plugin.filename.lower():
+            cfg = ctx.plugin.config
+            fov = parse_float(cfg, "fov", 0.05, ctx.logger)  # gazebo_ros_range.cpp's defaults
+            self._ros1_range = (fov, parse_float(cfg, "gaussianNoise", 0.0, ctx.logger))
+            self._ros1_rate = parse_float(cfg, "updateRate", 0.0, ctx.logger)
         self._bias = self.spec.noise.bias(self._rng)  # one bias per sensor and run (GaussianNoiseModel::Load)
         assert self.output is not None
         s = self.spec
@@ -193,6 +204,11 @@ class Lidar(_SensorSystem):
             f"{s.range_min:g}..{s.range_max:g} m at {self.rate_hz:g} Hz on [{self.output.topic}] "
             f"({self.output.msg_type.value.rsplit('/', 1)[-1]}) in frame [{self.output.frame_id}]"
         )
+
+    def reset(self, info: UpdateInfo, world: PhysicsWorld) -> None:
+        """A world reset: the sensor's rate gate and gazebo_ros_range's throttle start again."""
+        super().reset(info, world)
+        self._ros1_gate.reset()
 
     def scan(self, world: PhysicsWorld, *, noise: bool = True) -> np.ndarray:
         """Ranges (vertical-major, v rows x h columns) with noise (unless ``noise`` is False: the viewer's
@@ -257,6 +273,8 @@ class Lidar(_SensorSystem):
                     self._intensities(len(row), intensity),
                 )
             )
+        elif out.msg_type is MsgType.RANGE and self._ros1_range is not None:
+            self._publish_ros1_range(t, ranges)
         elif out.msg_type is MsgType.RANGE:
             # a Range (sonar, IR): the least of the cone's rays, as gazebo_ros's `Convert<Range>`
             # (conversions/sensor_msgs.hpp) takes it: a ray nearer than range_min (-inf) wins over hits in range.
@@ -274,3 +292,20 @@ class Lidar(_SensorSystem):
             cloud[:, :3] = pts
             cloud[:, 3] = intensity
             self._pub.publish(PointCloud(t, out.frame_id, len(pts), 1, cloud.astype("<f4").tobytes()))
+
+    def _publish_ros1_range(self, t: float, ranges: np.ndarray) -> None:
+        """ROS 1's gazebo_ros_range (gazebo_plugins ``gazebo_ros_range.cpp`` ``PutRangeData``), throttled to its
+        ``<updateRate>``: the least of the rays' raw ranges, where Classic's rays report ``range_max`` for a miss
+        (so the message says ``range_max``, never +inf), then ``<gaussianNoise>`` added to a reading below
+        ``range_max`` and capped there; ``field_of_view`` is the plugin's ``<fov>`` (0.05 by default), not the
+        rays' spread. Classic's rays start at ``range_min``; a hit nearer than that reads ``range_min`` here."""
+        if not self._ros1_gate.due(t, self._ros1_rate):
+            return
+        assert self._pub is not None and self.output is not None and self._ros1_range is not None
+        s, out = self.spec, self.output
+        fov, noise = self._ros1_range
+        raw = np.where(np.isposinf(ranges), s.range_max, np.where(np.isneginf(ranges), s.range_min, ranges))
+        r = float(raw.min())
+        if r < s.range_max and noise > 0:
+            r = min(r + float(self._rng.normal(0.0, noise)), s.range_max)
+        self._pub.publish(Range(t, out.frame_id, out.radiation_type, fov, s.range_min, s.range_max, r))
