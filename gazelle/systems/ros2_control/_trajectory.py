@@ -370,8 +370,7 @@ class JointTrajectoryController(Controller):
         if old is not None and old.goal is not None and old.goal is not goal:
             old.goal.finish(GoalState.ABORTED, TrajectoryResult.INVALID_GOAL, _preempted_by(goal))
         if not traj.points:
-            self._traj = None
-            self._hold, self._hold_effort, self._ended = list(actual), None, None
+            self._hold_here(actual)
             if goal is not None:
                 goal.finish(GoalState.SUCCEEDED, TrajectoryResult.SUCCESSFUL, "empty trajectory: holding")
             return
@@ -427,7 +426,7 @@ class JointTrajectoryController(Controller):
         traj = self._traj
         if traj is not None and traj.goal is not None and traj.goal.done.is_set():
             # canceled (or ended) from outside: hold where the joints are
-            self._traj, self._hold, self._hold_effort, self._ended = None, list(actual), None, None
+            self._hold_here(actual)
             traj = None
         return traj
 
@@ -458,9 +457,7 @@ class JointTrajectoryController(Controller):
         if traj is not None and traj.goal is not None:
             self._check(traj, t, err_p, err_v, actual)
         elif traj is not None and t >= traj.times[-1]:
-            self._traj = None  # a topic trajectory ran out: hold its last point (and its efforts)
-            self._hold_effort = traj.effort(t) if traj.eff is not None else None
-            self._ended = traj.times[-1]
+            self._hold_last(traj, t)  # a topic trajectory ran out
         if self._state_pub.wanted:
             self._state_pub.publish(self._state(t, des_p, des_v, des_a, actual, actual_v, err_p, err_v, commands))
         self._last = (t, des_p, des_v, des_a, actual, actual_v, err_p, err_v, commands)
@@ -527,7 +524,7 @@ class JointTrajectoryController(Controller):
         if traj is not None and traj.goal is not None and t < traj.times[-1]:
             self._check(traj, t, err_p, err_v, act)
         elif traj is not None and traj.goal is None and t >= traj.times[-1]:
-            self._traj, self._ended = None, traj.times[-1]
+            self._hold_last(traj, t)
         self._last = (t, des_p, des_v, des_a, act, act_v, err_p, err_v, commands)
 
     @property
@@ -589,6 +586,18 @@ class JointTrajectoryController(Controller):
                 u += effort[k]
             commands[self._out_keys[k]] = u
 
+    def _hold_here(self, actual: list[float]) -> None:
+        """Drop the trajectory and hold where the joints are (an abort, a cancel, a timeout, an empty
+        trajectory): Jazzy's ``set_hold_position``, which carries no efforts and no end to time out from."""
+        self._traj, self._hold, self._hold_effort, self._ended = None, list(actual), None, None
+
+    def _hold_last(self, traj: _Segmented, t: float) -> None:
+        """A trajectory that ended (a topic one run out, a goal reached): upstream keeps sampling its last
+        point, so hold that position (set when it started) with its efforts, and time ``cmd_timeout`` from
+        its end."""
+        self._traj, self._ended = None, traj.times[-1]
+        self._hold_effort = traj.effort(t) if traj.eff is not None else None
+
     def _command_timeout(self, actual: list[float]) -> None:
         """``cmd_timeout`` seconds after the last point's time (Jazzy ``update()``): "Aborted due to command
         timeout", and the joints hold where they are now (``set_hold_position``), the trajectory and its
@@ -596,7 +605,7 @@ class JointTrajectoryController(Controller):
         upstream's next cycle ends it: holding turns the tolerance checks off, so it reports success."""
         self.log.warning("Aborted due to command timeout")
         traj = self._traj
-        self._traj, self._hold, self._hold_effort, self._ended = None, list(actual), None, None
+        self._hold_here(actual)
         if traj is not None and traj.goal is not None and not traj.goal.done.is_set():
             self.log.info("Goal reached, success!")
             traj.goal.finish(GoalState.SUCCEEDED, TrajectoryResult.SUCCESSFUL, "Goal successfully reached!")
@@ -623,7 +632,7 @@ class JointTrajectoryController(Controller):
                 assert traj.path_tolerance is not None
                 self._log_tolerance_failures(left, traj.path_tolerance, err_p, err_v)
                 self.log.warning("Aborted due to state tolerance violation")
-                self._traj, self._hold, self._hold_effort, self._ended = None, list(actual), None, None
+                self._hold_here(actual)
                 goal.finish(
                     GoalState.ABORTED,
                     TrajectoryResult.PATH_TOLERANCE_VIOLATED,
@@ -633,9 +642,7 @@ class JointTrajectoryController(Controller):
         tolerances = [goal.goal_tolerance.get(j, self.goal_tol[j]) for j in self.joints]
         outside = [k for k, tol in enumerate(tolerances) if violates(tol, err_p[k], err_v[k])]
         if not outside:
-            self._traj = None  # upstream keeps sampling the last point: its position, and its efforts
-            self._hold_effort = traj.effort(t) if traj.eff is not None else None
-            self._ended = end
+            self._hold_last(traj, t)
             self.log.info("Goal reached, success!")
             goal.finish(GoalState.SUCCEEDED, TrajectoryResult.SUCCESSFUL, "Goal successfully reached!")
             return
@@ -645,7 +652,7 @@ class JointTrajectoryController(Controller):
             # std::to_string(double): six decimals
             text = f"Aborted due to goal_time_tolerance exceeding by {t - end:f} seconds"
             self.log.warning(text)
-            self._traj, self._hold, self._hold_effort, self._ended = None, list(actual), None, None
+            self._hold_here(actual)
             goal.finish(GoalState.ABORTED, TrajectoryResult.GOAL_TOLERANCE_VIOLATED, text)
 
     def _log_tolerance_failures(

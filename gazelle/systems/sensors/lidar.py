@@ -179,8 +179,6 @@ class Lidar(_SensorSystem):
         self._ros1_range: tuple[float, float] | None = None
         """ROS 1's gazebo_ros_range: its (``<fov>``, ``<gaussianNoise>``); None for the other plugins."""
         self._ros1_gate = RateGate()
-        self._ros1_rate = 0.0
-        """ROS 1's gazebo_ros_range ``<updateRate>``, Hz of sim time (0: at the sensor's own rate)."""
 
     def configure(self, ctx: SystemContext) -> None:
         """Parse the sensor's ``<ray>``/``<lidar>`` block and the plugin; declare the output topic."""
@@ -192,10 +190,9 @@ class Lidar(_SensorSystem):
             return
         self._dirs = self.spec.directions()
         if ctx.plugin is not None and "gazebo_ros_range" in ctx.plugin.filename.lower():
-            cfg = ctx.plugin.config
-            fov = parse_float(cfg, "fov", 0.05, ctx.logger)  # gazebo_ros_range.cpp's defaults
-            self._ros1_range = (fov, parse_float(cfg, "gaussianNoise", 0.0, ctx.logger))
-            self._ros1_rate = parse_float(cfg, "updateRate", 0.0, ctx.logger)
+            # <updateRate> and <gaussianNoise> are read with the other ROS 1 names (parse_plugin_config)
+            fov = parse_float(ctx.plugin.config, "fov", 0.05, ctx.logger)  # gazebo_ros_range.cpp's default
+            self._ros1_range = (fov, self.config.gaussian_noise)
         self._bias = self.spec.noise.bias(self._rng)  # one bias per sensor and run (GaussianNoiseModel::Load)
         assert self.output is not None
         s = self.spec
@@ -299,7 +296,7 @@ class Lidar(_SensorSystem):
         (so the message says ``range_max``, never +inf), then ``<gaussianNoise>`` added to a reading below
         ``range_max`` and capped there; ``field_of_view`` is the plugin's ``<fov>`` (0.05 by default), not the
         rays' spread. Classic's rays start at ``range_min``; a hit nearer than that reads ``range_min`` here."""
-        if not self._ros1_gate.due(t, self._ros1_rate):
+        if not self._ros1_gate.due(t, self.config.update_rate):
             return
         assert self._pub is not None and self.output is not None and self._ros1_range is not None
         s, out = self.spec, self.output

@@ -39,7 +39,6 @@ class Magnetometer(_SensorSystem):
         self.field_W = np.zeros(3)
         self._noise: tuple[Noise, Noise, Noise] = (Noise(), Noise(), Noise())
         self._bias = np.zeros(3)
-        self._cov: tuple[float, ...] = (0.0,) * 9
 
     def configure(self, ctx: SystemContext) -> None:
         """The world's field and the noise; declare the output topic."""
@@ -49,9 +48,6 @@ class Magnetometer(_SensorSystem):
         block = self.sensor.config.find("magnetometer") if self.sensor and self.sensor.config is not None else None
         self._noise = xyz_noise(block, ctx.logger, "magnetometer")
         self._bias = np.array([n.bias(self._rng) for n in self._noise])
-        # the covariance stays zeros whatever the noise: gz-msgs' Magnetometer has none to carry, and
-        # ros_gz_bridge (convert/sensor_msgs.cpp) says "magnetic_field_covariance is not supported"
-        self._cov = (0.0,) * 9
         assert self.output is not None
         ctx.logger.info(
             f"magnetometer on [{self.link}] at {self.rate_hz:g} Hz on [{self.output.topic}] "
@@ -73,4 +69,6 @@ class Magnetometer(_SensorSystem):
             return
         assert self._pub is not None and self.output is not None
         b = self.read().tolist()
-        self._pub.publish(MagneticField(info.sim_time_sec, self.output.frame_id, (b[0], b[1], b[2]), self._cov))
+        # no covariance (MagneticField's zeros) whatever the noise: gz-msgs' Magnetometer has none to carry, and
+        # ros_gz_bridge (convert/sensor_msgs.cpp) says "magnetic_field_covariance is not supported"
+        self._pub.publish(MagneticField(info.sim_time_sec, self.output.frame_id, (b[0], b[1], b[2])))
