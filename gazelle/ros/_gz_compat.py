@@ -3,7 +3,7 @@
 * ``create`` (ros_gz_sim): ``-name -topic -file -string -param -x -y -z -R -P -Y -world``, spawned
   as ``gazelle spawn`` spawns.
 * ``parameter_bridge`` (ros_gz_bridge): gazelle publishes ROS topics itself, under the gz topic's
-  name (see the README's sensors section), so an entry with equal names has nothing to bridge (one
+  name (see docs/sensors.md), so an entry with equal names has nothing to bridge (one
   line says so); an entry that renames (``gz_topic_name: lidar``, ``ros_topic_name: scan``) is
   relayed between the two names, in its direction. Arguments as the bridge's:
   ``/topic@ros_type@gz_type`` (``[`` gz to ROS, ``]`` ROS to gz) and the ``config_file`` YAML.
@@ -13,6 +13,7 @@
 from __future__ import annotations
 
 import sys
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -60,19 +61,15 @@ class BridgeEntry:
     """GZ_TO_ROS, ROS_TO_GZ or BIDIRECTIONAL (the YAML's ``direction``; ``[``, ``]``, ``@`` on the command line)."""
 
 
-def _bridge_entries(argv: list[str]) -> tuple[list[BridgeEntry], list[str]]:
-    """The entries of the command line (``/topic@ros_type[gz_type``) and the config file; and the problems."""
+def _bridge_entries(
+    argv: list[str], config: str = "", expand: Callable[[str], str] | None = None
+) -> tuple[list[BridgeEntry], list[str]]:
+    """The entries of the command line (``/topic@ros_type[gz_type``, ROS arguments already removed) and of the
+    ``config_file`` YAML; and the problems. ``expand`` turns a YAML's gz name into the node's namespace, as
+    ``expand_gz_topic_names: true`` has ros_gz_bridge do (``RosGzBridge::spin`` in ros_gz_bridge.cpp, jazzy)."""
     entries: list[BridgeEntry] = []
     problems: list[str] = []
-    config = None
-    args = list(argv)
-    if "--ros-args" in args:
-        ros = args[args.index("--ros-args") + 1 :]
-        args = args[: args.index("--ros-args")]
-        for i, a in enumerate(ros):
-            if a == "-p" and i + 1 < len(ros) and ros[i + 1].startswith("config_file:="):
-                config = ros[i + 1].split(":=", 1)[1]
-    for a in args:
+    for a in argv:
         if a.startswith("-"):
             continue
         cut = min((a.find(d) for d in BRIDGE_DIRECTIONS if d in a), default=-1)
@@ -97,7 +94,8 @@ def _bridge_entries(argv: list[str]) -> tuple[list[BridgeEntry], list[str]]:
         for item in data if isinstance(data, list) else []:
             if isinstance(item, dict):
                 ros_name = str(item.get("ros_topic_name") or item.get("topic_name") or "")
-                gz_name = gz_topic_on_ros(str(item.get("gz_topic_name") or item.get("topic_name") or ros_name))
+                gz_raw = str(item.get("gz_topic_name") or item.get("topic_name") or ros_name)
+                gz_name = gz_topic_on_ros(expand(gz_raw) if expand else gz_raw)
                 if ros_name:
                     entries.append(
                         BridgeEntry(
@@ -108,6 +106,27 @@ def _bridge_entries(argv: list[str]) -> tuple[list[BridgeEntry], list[str]]:
                         )
                     )
     return entries, problems
+
+
+def _bridge_node(argv: list[str]) -> tuple[Any, list[str], str, bool]:
+    """The ``ros_gz_bridge`` node, made before anything is read, as ``RosGzBridge``'s constructor declares its
+    parameters (ros_gz_bridge.cpp, jazzy): rcl then applies every form a user gives them, ``-p config_file:=F``,
+    ``--params-file`` (what a launch file's ``parameters=[{...}]`` becomes) with its ``/**`` and node-name
+    sections, and a renamed node (``__node:=``). Returns the node, the non-ROS arguments, ``config_file`` and
+    ``expand_gz_topic_names``."""
+    import rclpy
+    from rclpy.utilities import remove_ros_args
+
+    rclpy.init(args=["parameter_bridge", *argv])
+    node = rclpy.create_node("ros_gz_bridge")
+    node.declare_parameter("subscription_heartbeat", 1000)
+    node.declare_parameter("config_file", "")
+    node.declare_parameter("expand_gz_topic_names", False)
+    node.declare_parameter("override_timestamps_with_wall_time", False)
+    node.declare_parameter("lazy", False)  # parameter_bridge.cpp's own
+    config = str(node.get_parameter("config_file").value or "")
+    expand = bool(node.get_parameter("expand_gz_topic_names").value)
+    return node, remove_ros_args(["parameter_bridge", *argv])[1:], config, expand
 
 
 def _message_class(type_name: str) -> Any:
@@ -127,9 +146,13 @@ def bridge_main(argv: list[str]) -> int:
     ROS name differs is relayed between the two names in this process, as the bridge would; the rest
     get one line saying there is nothing to do."""
     import rclpy
+    from rclpy.expand_topic_name import expand_topic_name
     from rclpy.qos import QoSPresetProfiles
 
-    entries, problems = _bridge_entries(argv)
+    node, args, config, expand_names = _bridge_node(argv)
+    namespace, name = node.get_namespace(), node.get_name()
+    expand = (lambda gz: expand_topic_name(gz, name, namespace)) if expand_names else None
+    entries, problems = _bridge_entries(args, config, expand)
     for p in problems:
         print(f"[ERROR] [ros_gz_bridge]: {p}", file=sys.stderr)
     relays = [e for e in entries if e.ros_name.strip("/") != e.gz_name.strip("/")]
@@ -143,12 +166,10 @@ def bridge_main(argv: list[str]) -> int:
             )
     if not entries and not problems:
         print("[INFO] [ros_gz_bridge]: nothing to bridge", file=sys.stderr)
-    if problems:
-        return 1
-    if not relays and not typed:
-        return 0
-    rclpy.init(args=["--ros-args", *argv[argv.index("--ros-args") + 1 :]] if "--ros-args" in argv else None)
-    node = rclpy.create_node("ros_gz_bridge")
+    if problems or (not relays and not typed):
+        node.destroy_node()
+        rclpy.try_shutdown()
+        return 1 if problems else 0
     qos = QoSPresetProfiles.SYSTEM_DEFAULT.value
     keep: list[Any] = []
     if typed:

@@ -168,3 +168,46 @@ def test_parameter_bridge_relays_a_renamed_topic_in_its_direction(sim_factory, r
         wait_for(moved, 30, "the robot to drive on /cmd_vel_renamed", interval=0.1)
     finally:
         bridge.interrupt()
+
+
+BRIDGE_LAUNCH = """
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package="ros_gz_bridge", executable="parameter_bridge", name="{name}",
+             parameters=[{{"config_file": {config!r}, "expand_gz_topic_names": True}}], output="screen"),
+    ])
+"""
+
+
+@pytest.mark.parametrize("how", ["launch dict", "params-file node section"])
+def test_parameter_bridge_takes_config_file_in_every_parameter_form(how, tmp_path):
+    """ros_gz_bridge declares `config_file` on its node and rcl applies the parameters however they come: a launch
+    file's `parameters=[{...}]` (a `/**` params file, as ros_gz_project_template gives it) or a params file whose
+    section names the node. gazelle's stand-in read only `-p config_file:=` and said "nothing to bridge".
+    Its entry is relayed, so the bridge says it creates the relay; with `expand_gz_topic_names` the YAML's
+    relative gz name is put in the node's namespace, as RosGzBridge::spin does."""
+    config = tmp_path / "bridge.yaml"
+    config.write_text(
+        '- {ros_topic_name: "odom_renamed", gz_topic_name: "odom", '
+        'ros_type_name: "nav_msgs/msg/Odometry", direction: GZ_TO_ROS}\n'
+    )
+    if how == "launch dict":
+        launch_file = tmp_path / "bridge.launch.py"
+        launch_file.write_text(BRIDGE_LAUNCH.format(name="my_bridge", config=str(config)))
+        cmd = [ROS2, "launch", str(launch_file)]
+        relay = "Creating relay [/odom] -> [odom_renamed]"
+    else:
+        params = tmp_path / "params.yaml"
+        params.write_text(f"ros_gz_bridge:\n  ros__parameters:\n    config_file: {config}\n")
+        cmd = [ROS2, "run", "ros_gz_bridge", "parameter_bridge", "--ros-args", "--params-file", str(params)]
+        relay = "Creating relay [odom] -> [odom_renamed]"
+    bridge = start(cmd, "bridge")
+    try:
+        bridge.wait_line(relay, 30)
+        assert "nothing to bridge" not in bridge.output
+    finally:
+        bridge.interrupt()
