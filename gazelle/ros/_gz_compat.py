@@ -145,9 +145,9 @@ def bridge_main(argv: list[str]) -> int:
     """``parameter_bridge``: gazelle has every topic on ROS under its gz name already; an entry whose
     ROS name differs is relayed between the two names in this process, as the bridge would; the rest
     get one line saying there is nothing to do."""
-    import rclpy
     from rclpy.expand_topic_name import expand_topic_name
     from rclpy.qos import QoSPresetProfiles
+    from rclpy.utilities import try_shutdown
 
     node, args, config, expand_names = _bridge_node(argv)
     namespace, name = node.get_namespace(), node.get_name()
@@ -168,7 +168,7 @@ def bridge_main(argv: list[str]) -> int:
         print("[INFO] [ros_gz_bridge]: nothing to bridge", file=sys.stderr)
     if problems or (not relays and not typed):
         node.destroy_node()
-        rclpy.try_shutdown()
+        try_shutdown()
         return 1 if problems else 0
     qos = QoSPresetProfiles.SYSTEM_DEFAULT.value
     keep: list[Any] = []
