@@ -15,9 +15,7 @@ when ``GAZELLE_GZSERVER_VIEWER`` is not 0) and stays up until it is stopped, as 
 from __future__ import annotations
 
 import os
-import signal
 import sys
-import threading
 
 GAZEBO_ROS_SYSTEM_PLUGINS = ("libgazebo_ros_init.so", "libgazebo_ros_factory.so", "libgazebo_ros_force_system.so")
 """gazebo_ros's system plugins: /clock, the spawn and state services, the force services; gazelle sim serves
@@ -67,14 +65,10 @@ def gzserver_main() -> None:
 
 
 def gzclient_main() -> None:
-    """The ``gzclient`` console script: says where the viewer is, and waits to be stopped."""
-    print(
-        "gzclient (gazelle): the simulation is drawn in the browser by gzserver's `gazelle sim`: open the "
-        "viewer URL it printed (http://127.0.0.1:8080 unless that port was taken)",
-        flush=True,
+    """The ``gzclient`` console script (and ``gz sim -g``): says where the running server's viewer is, by the
+    address that server announced, and waits to be stopped."""
+    from ..ros import gui_stand_in_main
+
+    sys.exit(
+        gui_stand_in_main("gzclient", "the simulation is drawn in the browser by gazelle sim's viewer", sys.argv[1:])
     )
-    stop = threading.Event()
-    signal.signal(signal.SIGINT, lambda *_a: stop.set())
-    signal.signal(signal.SIGTERM, lambda *_a: stop.set())
-    while not stop.wait(1.0):
-        pass

@@ -105,6 +105,8 @@ def run_sim(
     replays = _Replays(ReplayRecorder(sim, topics=replay_topics), replay, world.name) if replay is not None else None
     sim.start()
     view = _start_viewer(sim, viewer_host, viewer_port, viewer_allow_origins) if viewer else None
+    if view is not None and bridge.registry is not None:
+        bridge.registry.announce_viewer(view.url)
     fox = _start_foxglove(viewer_host, foxglove_port, viewer_allow_origins) if foxglove_port is not None else None
     target = "as fast as possible" if sim.rtf == 0 else f"{sim.rtf:g}"
     print(

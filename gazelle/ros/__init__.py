@@ -25,6 +25,7 @@ if TYPE_CHECKING:
     from ._definitions import InterfaceError, message_class
     from ._definitions import full_text as message_definition
     from ._exposure import choose_discovery_range
+    from ._gui_stand_ins import gui_stand_in_main, image_bridge_main
     from ._planning_scene import pose as matrix_to_pose
     from ._signals import await_signal_shutdown, silence_half_made_objects
     from ._spawn_entity import main as spawn_main
@@ -65,6 +66,8 @@ __all__ = [
     "message_class",
     "message_definition",
     "choose_discovery_range",
+    "gui_stand_in_main",
+    "image_bridge_main",
     "matrix_to_pose",
     "spawn_main",
     "move_group_main",

@@ -76,9 +76,17 @@ class ServerRegistry:
         qos = QoSProfile(depth=10, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
         self._pub = node.create_publisher(String, ANNOUNCE_TOPIC, qos)
         self._sub = node.create_subscription(String, ANNOUNCE_TOPIC, self._on_announce, qos)
-        self._pub.publish(
-            String(data=json.dumps({"started": self.me.started, "host": self.me.host, "pid": self.me.pid}))
-        )
+        self._announce()
+
+    def _announce(self, **extra: str) -> None:
+        """Publish who this server is (latched), with ``extra`` facts such as its viewer's address."""
+        me = {"started": self.me.started, "host": self.me.host, "pid": self.me.pid, **extra}
+        self._pub.publish(String(data=json.dumps(me)))
+
+    def announce_viewer(self, url: str) -> None:
+        """Announce again, with the address the viewer really took (8080, or the next free port): gzclient,
+        ``gz sim -g`` and rviz2's stand-ins print it (:mod:`._gui_stand_ins`)."""
+        self._announce(viewer=url)
 
     def _on_announce(self, msg: String) -> None:
         """Another server's announcement: the older one keeps the domain; this one, if it is the newer, records why

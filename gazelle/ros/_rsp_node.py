@@ -174,14 +174,16 @@ def main(argv: list[str] | None = None) -> int:
     return 0
 
 
-def spin_until_interrupted(node: Node) -> None:
-    """Spin ``node`` until Ctrl-C (or an external shutdown), then destroy it and shut rclpy down. The signal
+def spin_until_interrupted(node: Node, *others: Node) -> None:
+    """Spin ``node`` (and ``others``, of its context) until Ctrl-C (or an external shutdown), then destroy them and
+    shut rclpy down. The signal
     may come at any point, even before the executor exists: rclpy's signal thread has then shut the context
     down, and rclpy refuses to make the executor (an RCLError, the end that was asked for)."""
     executor: SingleThreadedExecutor | None = None
     try:
         executor = SingleThreadedExecutor(context=node.context)
-        executor.add_node(node)
+        for each in (node, *others):
+            executor.add_node(each)
         spin_until_shutdown(executor, node)
     except KeyboardInterrupt:
         await_signal_shutdown(node.context)
@@ -192,5 +194,6 @@ def spin_until_interrupted(node: Node) -> None:
     finally:
         if executor is not None:
             executor.shutdown()
-        node.destroy_node()
+        for each in (*others, node):
+            each.destroy_node()
         try_shutdown()

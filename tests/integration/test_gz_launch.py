@@ -211,3 +211,36 @@ def test_parameter_bridge_takes_config_file_in_every_parameter_form(how, tmp_pat
         assert "nothing to bridge" not in bridge.output
     finally:
         bridge.interrupt()
+
+
+SERVER_AND_GUI_LAUNCH = """
+import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+
+GZ_SIM = os.path.join(get_package_share_directory("ros_gz_sim"), "launch", "gz_sim.launch.py")
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(GZ_SIM), launch_arguments={"gz_args": "-r -s empty.sdf"}.items()),
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(GZ_SIM), launch_arguments={"gz_args": "-g"}.items()),
+    ])
+"""
+
+
+def test_gz_sim_server_and_gui_from_two_includes_show_the_servers_viewer(tmp_path):
+    """TurtleBot3's jazzy launch includes gz_sim.launch.py twice, `-r -s WORLD` and `-g`. gazelle's `-s` served no
+    viewer, so there was none at all; the server now serves it (its GUI is the browser) and `-g` prints its real
+    address."""
+    launch_file = tmp_path / "server_and_gui.launch.py"
+    launch_file.write_text(SERVER_AND_GUI_LAUNCH)
+    launch = start([ROS2, "launch", str(launch_file)], "ros2 launch")
+    try:
+        launch.wait_line("gazelle: viewer at ", 60)
+        url = launch.output.split("gazelle: viewer at ", 1)[1].split()[0]
+        launch.wait_line(f"open {url}", 30)
+    finally:
+        launch.interrupt()

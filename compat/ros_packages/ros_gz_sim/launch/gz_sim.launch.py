@@ -1,5 +1,5 @@
 """ros_gz_sim's gz_sim.launch.py for gazelle: `gazelle sim` from gz_args (a world file, -r to run,
--s for no GUI: no viewer; gz's empty.sdf is gazelle's default world; -g, the GUI alone: gzclient's stand-in)."""
+-s for no GUI: the server still serves its viewer, which -g shows; gz's empty.sdf is gazelle's default world; -g, the GUI alone: gzclient's stand-in)."""
 
 import os
 import shlex
@@ -30,7 +30,11 @@ def _server(context):
         if tok == "-r":
             run = True
         elif tok in ("-s", "--headless-rendering"):
-            cmd.append("--no-viewer") if tok == "-s" else None
+            # `-s`: gz's server without its GUI, which a `gz sim -g` may join later. gazelle's GUI is the
+            # server's browser viewer, so the server serves it (as gzserver does; GAZELLE_GZSERVER_VIEWER=0
+            # turns it off) and `-g` prints where it is: with `-s` and `-g` in two includes there was none
+            if os.environ.get("GAZELLE_GZSERVER_VIEWER", "1") == "0":
+                cmd.append("--no-viewer")
         elif tok in ("-v", "--verbose", "--render-engine", "--physics-engine", "--gui-config"):
             skip = i + 1 < len(tokens) and not tokens[i + 1].startswith("-")
             ignored.append(tok)
