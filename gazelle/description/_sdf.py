@@ -314,6 +314,8 @@ class _Loader(_WorldParts):
         joint_els: list[tuple[str, etree._Element]] = []
         frame_els: list[tuple[str, etree._Element]] = []
         nested: list[_Built] = []
+        merged: list[tuple[str, _Built]] = []  # (proxy frame, model) of each <include merge="true">
+        merged_first = False  # a merged include came before any link of the model's own
         for child in child_elements(element):
             tag = _tag(child)
             if tag in ("link", "joint", "frame"):
@@ -324,6 +326,10 @@ class _Loader(_WorldParts):
                 scope.nodes[child_name] = self.frame_node(tag, child_name, child, doc)
             elif tag in ("model", "include"):
                 sub = self.model(child, doc, depth + 1) if tag == "model" else self.include(child, doc, depth, False)
+                if isinstance(sub, _Built) and tag == "include" and _merge(child):
+                    merged_first = merged_first or not (link_els or merged)
+                    merged.append((self.merge(sub, child, doc, kinds, scope, name), sub))
+                    continue
                 if not isinstance(sub, _Built) or not self.register(kinds, sub.name, "model", child, doc, name):
                     continue
                 post = self.placement(sub) or IDENTITY  # a bad placement_frame: reported, placed as if none
@@ -335,6 +341,8 @@ class _Loader(_WorldParts):
 
         # -- canonical link
         built.canonical = self.canonical_link(element, scope, link_els, nested, name, loc)
+        if merged and merged[0][1].canonical and element.get("canonical_link") is None and merged_first:
+            built.canonical = merged[0][1].canonical  # merged links are this model's own, in the file's order
         scope.canonical = built.canonical
         if built.canonical is None:
             self.sink.error(ErrorCode.LINK_MISSING, f"model '{name}' has no link", loc)
@@ -342,9 +350,33 @@ class _Loader(_WorldParts):
 
         # -- pass 2: links, joints, frames; then the nested models flattened into this one
         self.model_parts(element, doc, scope, built, link_els, joint_els, frame_els)
+        for proxy, sub in merged:
+            X_MS = scope.pose(proxy, sub.location)
+            if X_MS is not None:
+                self.flatten(built, sub, X_MS, prefix="")
         self.flatten_nested(built, nested, scope)
         built.exported = scope.export()
         return built
+
+    def merge(self, sub: _Built, el: etree._Element, doc: _Doc, kinds: dict[str, str], scope: Scope, model: str) -> str:
+        """sdformat 1.9's ``<include merge="true">`` (sdf/1.9/model.sdf; libsdformat's merge-include): the included
+        model's links, joints, frames and plugins become the parent model's own, with their own names (not
+        ``sub::``), placed through a proxy frame ``_merged__<name>__model__`` that stands where the included
+        model frame would (the include's ``<pose>``), attached to its canonical link. Returns the proxy's name;
+        the content is moved in by :meth:`flatten` once the parent's frames are resolved."""
+        proxy = f"_merged__{sub.name}__model__"
+        post = self.placement(sub) or IDENTITY
+        scope.nodes[proxy] = FrameNode(
+            proxy, "frame", sub.pose, sub.relative_to or "__model__", sub.canonical, post, sub.location
+        )
+        links = {link.name for link in sub.links}
+        for frame_name, X_SF in sub.exported.poses.items():
+            kind = "link" if frame_name in links else "frame"
+            if frame_name == "__model__" or not self.register(kinds, frame_name, kind, el, doc, model):
+                continue
+            body = sub.exported.bodies.get(frame_name)
+            scope.nodes[frame_name] = FrameNode(frame_name, kind, X_SF, proxy, body, location=sub.location)
+        return proxy
 
     def register(
         self, kinds: dict[str, str], node_name: str, kind: str, el: etree._Element, doc: _Doc, model: str
@@ -498,14 +530,15 @@ class _Loader(_WorldParts):
                 )
                 built.world_joints[f"{sub.name}::__static_weld__"] = X_MS * _link_pose(sub, sub.canonical)
 
-    def flatten(self, parent: _Built, sub: _Built, X_PS: Pose) -> None:
-        """Move ``sub``'s content into ``parent`` with ``sub::`` names, given X_PS.
+    def flatten(self, parent: _Built, sub: _Built, X_PS: Pose, prefix: str | None = None) -> None:
+        """Move ``sub``'s content into ``parent`` with ``sub::`` names (``prefix``: "" for a merged include),
+        given X_PS.
 
         A nested model becomes part of one flat model, its links, joints and frames scoped as gz-sim scopes
         them (``gripper::finger``), so a plugin or a sensor topic that names ``gripper::finger`` finds it; its
         plugins run on the flat model. Links are re-expressed in the parent's frame; joints keep their
         origins, which are relative to their own links."""
-        prefix = f"{sub.name}::"
+        prefix = f"{sub.name}::" if prefix is None else prefix
 
         def scoped(n: str) -> str:
             return n if n == "world" else prefix + n
@@ -628,6 +661,13 @@ class _Loader(_WorldParts):
             if tag == "model":
                 sub = self.model(child, doc, 1)
             elif tag == "include":
+                if _merge(child):  # libsdformat refuses it too (MERGE_INCLUDE_UNSUPPORTED)
+                    self.sink.error(
+                        ErrorCode.VALUE_INVALID,
+                        "merge-include does not support a parent element of type world",
+                        self.loc(child, doc),
+                    )
+                    continue
                 sub = self.include(child, doc, 0, allow_light=True)
             elif tag == "light":
                 light_items.append(child)
@@ -677,3 +717,8 @@ def _link_pose(built: _Built, link_name: str) -> Pose:
         if link.name == link_name:
             return link.pose or IDENTITY
     return IDENTITY
+
+
+def _merge(include: etree._Element) -> bool:
+    """``<include merge="true">`` (SDF 1.9): sdformat reads the attribute as a bool."""
+    return (include.get("merge") or "").strip().lower() in ("true", "1")

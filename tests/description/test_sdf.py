@@ -628,3 +628,61 @@ def test_placement_frame_puts_the_named_frame_at_the_pose_and_a_frame_the_model_
     assert close(load_string(model_only, source="m.sdf").model.pose.position, (1.0, 0.0, -0.7))
     with pytest.raises(ModelLoadError, match=r"m.sdf:1: error: \[FRAME_INVALID\] placement_frame 'nope'"):
         load_string(model_only.replace('placement_frame="f"', 'placement_frame="nope"'), source="m.sdf")
+
+
+MERGED_ROBOT = """<sdf version="1.8"><model name="diff_drive">
+  <link name="chassis"><pose>-0.15 0 0.4 0 0 0</pose></link>
+  <link name="left_wheel"><pose>0.55 0.6 0.4 -1.5707 0 0</pose></link>
+  <link name="right_wheel"><pose>0.55 -0.6 0.4 -1.5707 0 0</pose></link>
+  <frame name="lidar_frame" attached_to="chassis"><pose>0.8 0 0.5 0 0 0</pose></frame>
+  <joint name="left_wheel_joint" type="revolute"><parent>chassis</parent><child>left_wheel</child>
+    <axis><xyz expressed_in="__model__">0 1 0</xyz></axis></joint>
+  <joint name="right_wheel_joint" type="revolute"><parent>chassis</parent><child>right_wheel</child>
+    <axis><xyz expressed_in="__model__">0 1 0</xyz></axis></joint>
+  <plugin filename="gz-sim-diff-drive-system" name="gz::sim::systems::DiffDrive">
+    <left_joint>left_wheel_joint</left_joint><right_joint>right_wheel_joint</right_joint>
+  </plugin>
+</model></sdf>"""
+
+
+def test_a_merged_include_gives_the_parent_model_its_content_under_their_own_names(tmp_path):
+    """ros_gz_project_template's world: `<model name="diff_drive"><include merge="true">` of a model whose DiffDrive
+    names `left_wheel_joint`. gazelle scoped the merged content (`diff_drive::left_wheel_joint`), so the DiffDrive
+    found no joints. SDF 1.9's merge-include (sdf/1.9/model.sdf, libsdformat's merge) puts the links, joints, frames
+    and plugins in the parent under their own names, placed through a proxy frame at the include's pose; the
+    parent's own elements may name them."""
+    folder = tmp_path / "diff_drive"
+    folder.mkdir()
+    (folder / "model.config").write_text("<model><name>diff_drive</name><sdf>model.sdf</sdf></model>")
+    (folder / "model.sdf").write_text(MERGED_ROBOT)
+    world = """<sdf version="1.9"><world name="w">
+      <model name="diff_drive"><pose>0 0 0.35 0 0 0</pose>
+        <include merge="true"><uri>model://diff_drive</uri><pose>0.1 0 0 0 0 0</pose></include>
+        <link name="mast"><pose relative_to="lidar_frame">0 0 0.1 0 0 0</pose></link>
+        <joint name="mast_joint" type="fixed"><parent>chassis</parent><child>mast</child></joint>
+        <plugin filename="gz-sim-joint-state-publisher-system" name="gz::sim::systems::JointStatePublisher"/>
+      </model></world></sdf>"""
+    result = load_string(world, format="sdf", resolver=resolver(tmp_path))
+    assert [d for d in result.diagnostics if d.severity.value == "error"] == []
+    model = result.world.models[0]
+    assert sorted(j.name for j in model.joints) == ["left_wheel_joint", "mast_joint", "right_wheel_joint"]
+    assert sorted(link.name for link in model.links) == ["chassis", "left_wheel", "mast", "right_wheel"]
+    assert model.canonical_link == "chassis"
+    assert close(model.link("chassis").pose.position, (-0.05, 0, 0.4))  # the include's pose carried in
+    # lidar_frame is 0.8 0 0.5 from the chassis (its attached_to), so the mast stands at 0.75 0 1.0
+    assert close(model.link("mast").pose.position, (0.75, 0, 1.0))
+    assert [p.name for p in model.plugins] == ["gz::sim::systems::JointStatePublisher", "gz::sim::systems::DiffDrive"]
+    assert [f.name for f in model.frames] == ["lidar_frame"]
+
+
+def test_a_merged_include_in_a_world_is_refused_as_sdformat_refuses_it(tmp_path):
+    folder = tmp_path / "diff_drive"
+    folder.mkdir()
+    (folder / "model.config").write_text("<model><name>diff_drive</name><sdf>model.sdf</sdf></model>")
+    (folder / "model.sdf").write_text(MERGED_ROBOT)
+    world = (
+        '<sdf version="1.9"><world name="w"><include merge="true"><uri>model://diff_drive</uri></include></world></sdf>'
+    )
+    with pytest.raises(ModelLoadError) as info:
+        load_string(world, format="sdf", resolver=resolver(tmp_path))
+    assert "merge-include does not support a parent element of type world" in str(info.value)
