@@ -668,9 +668,11 @@ def test_a_merged_include_gives_the_parent_model_its_content_under_their_own_nam
     assert sorted(j.name for j in model.joints) == ["left_wheel_joint", "mast_joint", "right_wheel_joint"]
     assert sorted(link.name for link in model.links) == ["chassis", "left_wheel", "mast", "right_wheel"]
     assert model.canonical_link == "chassis"
-    assert close(model.link("chassis").pose.position, (-0.05, 0, 0.4))  # the include's pose carried in
+    chassis, mast = model.link("chassis").pose, model.link("mast").pose
+    assert chassis is not None and mast is not None
+    assert close(chassis.position, (-0.05, 0, 0.4))  # the include's pose carried in
     # lidar_frame is 0.8 0 0.5 from the chassis (its attached_to), so the mast stands at 0.75 0 1.0
-    assert close(model.link("mast").pose.position, (0.75, 0, 1.0))
+    assert close(mast.position, (0.75, 0, 1.0))
     assert [p.name for p in model.plugins] == ["gz::sim::systems::JointStatePublisher", "gz::sim::systems::DiffDrive"]
     assert [f.name for f in model.frames] == ["lidar_frame"]
 
