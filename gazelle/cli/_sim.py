@@ -58,6 +58,13 @@ def load_world(path: Path | None, args: dict[str, str]) -> World:
     raise ModelLoadError(result.diagnostics)
 
 
+PAUSED_NOTE = (
+    "; PAUSED: time stands still until the viewer's play button, /unpause_physics or "
+    "/gazelle/set_simulation_state runs it (gz sim starts paused without -r, gzserver with -u)"
+)
+"""Said on the ready line of a server started paused: a world that starts paused and says nothing looks broken."""
+
+
 def run_sim(
     path: Path | None,
     *,
@@ -113,7 +120,8 @@ def run_sim(
         f"gazelle: ready: world '{world.name}' ({len(sim.world.entities)} entities), "
         f"step {sim.world.timestep * 1000:g} ms, real-time factor {target}, "
         f"ROS_DOMAIN_ID={os.environ.get('ROS_DOMAIN_ID', '0')}, discovery {discovery}, publishing "
-        + ("drops the oldest when behind (--drop-when-behind)" if drop_when_behind else "lossless"),
+        + ("drops the oldest when behind (--drop-when-behind)" if drop_when_behind else "lossless")
+        + (PAUSED_NOTE if paused else ""),
         flush=True,
     )
     rc = _serve(stop, write_replay, sim, bridge, replays)

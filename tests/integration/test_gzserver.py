@@ -29,11 +29,15 @@ def test_gzserver_and_gzclient_run_as_a_launch_file_runs_them(tmp_path: Path) ->
         '<sdf version="1.6"><world name="empty"><include><uri>model://ground_plane</uri></include></world></sdf>'
     )
     env = {**os.environ, "GAZELLE_GZSERVER_VIEWER": "0"}
-    server = start([str(bin_dir / "gzserver"), str(world), "-s", "libgazebo_ros_init.so", "--verbose"], "gzserver", env)
+    server = start(
+        [str(bin_dir / "gzserver"), str(world), "-u", "-s", "libgazebo_ros_init.so", "--verbose"], "gzserver", env
+    )
     client = start([str(bin_dir / "gzclient")], "gzclient", env)
     try:
         server.wait_line("gazelle: ready: world 'empty'", 60)
         assert "not used: --verbose" in server.output
+        # started paused (-u), it says so and how to run it: a world that stood still silently looked broken
+        assert "PAUSED: time stands still until" in server.output
         client.wait_line("the simulation is drawn in the browser", 30)
     finally:
         assert client.interrupt() == 0, client.output
