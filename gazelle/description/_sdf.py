@@ -642,6 +642,46 @@ class _Loader(_WorldParts):
             magnetic_field=magnetic,
         )
 
+    def world_state(self, element: etree._Element, doc: _Doc, builts: dict[str, _Built]) -> dict[str, Pose]:
+        """X_WM of each model a world's ``<state>`` places: a world saved from Gazebo Classic keeps where its models
+        were moved in ``<state>`` (Husky's playpen turns its barriers there), and Classic's ``World::Load`` applies
+        the first ``<state>`` over the models' own poses (``WorldState``, ``World::SetState``; gz-sim reads no
+        ``<state>``). A model's state pose is in the world frame; its links' state poses are only where the model
+        pose puts them in a saved world, and one that says otherwise (a link moved apart from its model, a joint
+        turned) is named, not applied. Insertions and deletions are named as not applied."""
+        out: dict[str, Pose] = {}
+        state = _find(element, "state")
+        if state is None:
+            return out
+        for child in child_elements(state):
+            tag = _tag(child)
+            if tag in _STATE_STAMPS or tag == "light":
+                continue
+            if tag != "model":
+                self.unsupported(child, doc, "state")
+                continue
+            model_name = (child.get("name") or "").strip()
+            if model_name not in builts:
+                self.sink.warning(
+                    ErrorCode.VALUE_INVALID,
+                    f"<state> names model '{model_name}', which the world does not have; ignored",
+                    self.loc(child, doc),
+                )
+                continue
+            if _find(child, "pose") is None:
+                continue
+            X_WM = out[model_name] = self.pose(child, doc)[0]
+            for link_el in _findall(child, "link"):
+                X_ML = _link_pose(builts[model_name], (link_el.get("name") or "").strip())
+                if _find(link_el, "pose") is not None and not _near(self.pose(link_el, doc)[0], X_WM * X_ML):
+                    self.sink.warning(
+                        ErrorCode.ELEMENT_UNSUPPORTED,
+                        f"<state> moves link '{model_name}::{link_el.get('name')}' apart from its model; only the "
+                        "model's state pose is applied",
+                        self.loc(link_el, doc),
+                    )
+        return out
+
     def world_contents(self, element: etree._Element, doc: _Doc, name: str | None) -> tuple[list[Model], list[Light]]:
         """The world's models (and includes) placed through its frame graph, and its lights.
 
@@ -695,8 +735,9 @@ class _Loader(_WorldParts):
                     sub.name, "model", sub.pose, sub.relative_to or "world", post=post, location=sub.location
                 )
         models = []
+        saved = self.world_state(element, doc, {sub.name: sub for sub in builts})
         for sub in builts:
-            X_WM = scope.pose(sub.name, sub.location)
+            X_WM = saved.get(sub.name) or scope.pose(sub.name, sub.location)
             if X_WM is None:
                 continue
             model = self.finish_model(sub, X_WM)
@@ -711,12 +752,24 @@ class _Loader(_WorldParts):
         return models, lights
 
 
+_STATE_STAMPS = frozenset({"sim_time", "wall_time", "real_time", "iterations"})
+"""When a world was saved: Gazebo Classic sets its clock from ``sim_time``; gazelle's clock starts at 0."""
+
+
 def _link_pose(built: _Built, link_name: str) -> Pose:
     """The pose of link ``link_name`` in the model frame (the identity when it has none or is not there)."""
     for link in built.links:
         if link.name == link_name:
             return link.pose or IDENTITY
     return IDENTITY
+
+
+def _near(a: Pose, b: Pose, tol: float = 1e-3) -> bool:
+    """Two poses within ``tol`` (metres, and quaternion components, either sign)."""
+    if any(abs(x - y) > tol for x, y in zip(a.position, b.position, strict=True)):
+        return False
+    same = all(abs(x - y) <= tol for x, y in zip(a.orientation, b.orientation, strict=True))
+    return same or all(abs(x + y) <= tol for x, y in zip(a.orientation, b.orientation, strict=True))
 
 
 def _merge(include: etree._Element) -> bool:

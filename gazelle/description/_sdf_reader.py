@@ -114,6 +114,7 @@ _USED: dict[str, frozenset[str]] = {
             "frame",
             "spherical_coordinates",
             "magnetic_field",
+            "state",
         }
     ),
     "spherical_coordinates": frozenset(

@@ -688,3 +688,27 @@ def test_a_merged_include_in_a_world_is_refused_as_sdformat_refuses_it(tmp_path)
     with pytest.raises(ModelLoadError) as info:
         load_string(world, format="sdf", resolver=resolver(tmp_path))
     assert "merge-include does not support a parent element of type world" in str(info.value)
+
+
+def test_a_classic_worlds_state_places_its_models_where_they_were_saved():
+    """Husky's playpen (a world saved from Gazebo Classic) turns its barriers in `<state>`: yaw 2.36 there, 0 in the
+    model. Classic's World::Load applies the first `<state>` (World::SetState); gazelle ignored it with a warning,
+    and a barrier stood across the robot's spawn point. The save's time stamps are not warned about; a link moved
+    apart from its model, and a model the world lacks, are named."""
+    world = """<sdf version="1.6"><world name="playpen">
+      <model name="barrier"><static>true</static><pose>1 0 0 0 0 0</pose><link name="link"/></model>
+      <model name="robot_stand"><pose>0 1 0 0 0 0</pose><link name="base"><pose>0 0 0.5 0 0 0</pose></link></model>
+      <state world_name="playpen"><sim_time>412 5000</sim_time><real_time>420 1</real_time><iterations>412005</iterations>
+        <model name="barrier"><pose>-2 3 0 0 0 2.36</pose><scale>1 1 1</scale>
+          <link name="link"><pose>-2 3 0 0 0 2.36</pose><velocity>0 0 0 0 0 0</velocity></link></model>
+        <model name="robot_stand"><pose>0 1 0 0 0 0</pose><link name="base"><pose>0 1 0.9 0 0 0</pose></link></model>
+        <model name="gone"><pose>5 5 0 0 0 0</pose></model>
+      </state></world></sdf>"""
+    result = load_string(world, format="sdf")
+    barrier = result.world.models[0]
+    assert close(barrier.pose.position, (-2, 3, 0))
+    assert abs(2 * math.atan2(barrier.pose.orientation[3], barrier.pose.orientation[0]) - 2.36) < 1e-9
+    messages = [d.message for d in result.diagnostics]
+    assert len(messages) == 2, messages
+    assert "<state> moves link 'robot_stand::base' apart from its model" in messages[0]
+    assert "<state> names model 'gone', which the world does not have" in messages[1]
