@@ -1,7 +1,8 @@
 """robot_state_publisher as a ROS node (the real one is C++ and not on PyPI): ``ros2 run
 robot_state_publisher robot_state_publisher --ros-args -p robot_description:=...``.
 
-Reads the ``robot_description`` parameter (URDF text: data, never xacro-expanded) and ``joint_states``;
+Reads the ``robot_description`` parameter (URDF, or a one-model SDF as Jazzy's sdformat_urdf plugin reads it:
+data, never xacro-expanded) and ``joint_states``;
 publishes ``robot_description`` (latched), ``/tf_static`` for fixed joints and ``/tf`` for moving ones,
 every frame prefixed with ``frame_prefix``. What it does is robot_state_publisher 3.3.3's (Jazzy;
 ``src/robot_state_publisher.cpp``), read from its source:
@@ -57,6 +58,16 @@ def joint_motion(joint: Joint, q: float) -> Pose:
     return joint.origin * motion * joint.child_offset
 
 
+def _format_of(text: str) -> str:
+    """``sdf`` when the description's root element is ``<sdf>``, else ``urdf`` (xacro markup in either is refused as
+    data, never expanded)."""
+    head = text.lstrip()
+    while head.startswith(("<?", "<!--")):
+        end = head.find("?>" if head.startswith("<?") else "-->")
+        head = head[end + (2 if head.startswith("<?") else 3) :].lstrip() if end >= 0 else ""
+    return "sdf" if head.startswith("<sdf") else "urdf"
+
+
 def _tf(stamp, parent: str, child: str, pose: Pose) -> TransformStamped:
     """A TransformStamped of ``child`` in ``parent`` at ``pose`` (wxyz reordered into the message's x, y, z, w)."""
     t = TransformStamped()
@@ -83,11 +94,14 @@ class RobotStatePublisherNode(Node):
         if not text:
             raise RuntimeError("robot_description parameter must not be empty")
         try:
-            loaded = load_string(str(text), format="urdf", source="robot_description").value
+            # URDF, or SDF: Jazzy's robot_state_publisher parses through urdf::Model's parser plugins, and the
+            # sdformat_urdf plugin reads a one-model SDF (ros_gz_project_template gives it the model's SDF);
+            # the format is told from the root element
+            loaded = load_string(str(text), format=_format_of(str(text)), source="robot_description").value
         except ModelLoadError as err:
-            raise RuntimeError(f"robot_description is not a URDF robot_state_publisher can use: {err}") from None
+            raise RuntimeError(f"robot_description is not a URDF or SDF robot_state_publisher can use: {err}") from None
         if not isinstance(loaded, Model):
-            raise RuntimeError("robot_description is not a robot (URDF)")
+            raise RuntimeError("robot_description is not a robot (a URDF <robot> or an SDF <model>)")
         model = loaded
         prefix = str(self.get_parameter("frame_prefix").value)
         frequency = float(self.get_parameter("publish_frequency").value or 20.0)

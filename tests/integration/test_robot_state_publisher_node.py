@@ -50,7 +50,8 @@ def _start(ros: RosClient, **params: Any) -> tuple[Any, list[Any], list[Any], An
 
     from gazelle.ros._rsp_node import RobotStatePublisherNode
 
-    overrides = [Parameter("robot_description", value=_ARM)] + [Parameter(k, value=v) for k, v in params.items()]
+    params.setdefault("robot_description", _ARM)
+    overrides = [Parameter(k, value=v) for k, v in params.items()]
     rsp = RobotStatePublisherNode(context=ros.context, parameter_overrides=overrides)
     ros.executor.add_node(rsp)
     tf: list[Any] = []
@@ -112,3 +113,26 @@ def test_ignore_timestamp_publishes_every_state_with_its_own_stamp() -> None:
             pub.publish(_state(sec, 0.1))
         wait_for(lambda: len(tf) >= 3, 10, "three /tf messages")
         assert [_stamp(m) for m in tf] == [2.0, 2.001, 0.0]
+
+
+_SDF_ARM = """<sdf version="1.9"><model name="arm">
+  <link name="base"/><link name="a"><pose>0 0 0.5 0 0 0</pose></link><link name="tool"><pose>0 0 0.8 0 0 0</pose></link>
+  <joint name="j1" type="revolute"><parent>base</parent><child>a</child><axis><xyz>0 0 1</xyz></axis></joint>
+  <joint name="tool_joint" type="fixed"><parent>a</parent><child>tool</child></joint>
+</model></sdf>"""
+
+
+def test_an_sdf_robot_description_is_read_as_jazzy_reads_it_through_sdformat_urdf() -> None:
+    """ros_gz_project_template's launch gives robot_state_publisher the model's SDF. Jazzy's robot_state_publisher
+    parses it with the sdformat_urdf plugin (urdf::Model's parser plugins); gazelle's died with `root element is
+    <sdf>`. The SDF's links are the frames, its fixed joint a static transform, its revolute joint moves."""
+    with _node("rsp_sdf_test", robot_description=_SDF_ARM) as (tf, static, pub):
+        wait_for(lambda: static, 10, "/tf_static")
+        fixed = {t.child_frame_id: t for t in static[-1].transforms}
+        assert set(fixed) == {"tool"} and fixed["tool"].header.frame_id == "a"
+        assert fixed["tool"].transform.translation.z == pytest.approx(0.3)
+        pub.publish(_state(1.0, 0.3))
+        wait_for(lambda: tf, 10, "/tf")
+        moved = tf[0].transforms[0]
+        assert (moved.header.frame_id, moved.child_frame_id) == ("base", "a")
+        assert moved.transform.translation.z == pytest.approx(0.5)
