@@ -193,11 +193,14 @@ class _Loader(_WorldParts):
             sdf = self.pick_sdf(cached, loc)
             if sdf is not None:
                 return self.include_file(uri, sdf, _Doc(str(sdf), cached, MAX_VERSION, False), loc)
+        # a warning, not an error: gz-sim too goes on loading the world without a model it cannot get
         self.sink.warning(
             ErrorCode.URI_UNRESOLVED,
             f"Fuel model '{fuel.label()}' is not built in and not in a local Fuel cache "
             f"({', '.join(str(r) for r in cache_roots()) or '~/.gz/fuel: none'}); nothing was fetched "
-            "(no network); include skipped",
+            f"(gazelle never downloads): get it with `gz fuel download -u \"{uri}\"` where Gazebo is installed "
+            "and copy ~/.gz/fuel here (or set GZ_FUEL_CACHE_PATH), or put the model folder on "
+            "GZ_SIM_RESOURCE_PATH and include it as model://; include skipped, the world loads without it",
             loc,
         )
         return None

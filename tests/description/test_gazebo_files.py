@@ -142,6 +142,7 @@ def test_other_fuel_models_come_from_the_local_cache_or_are_named_in_a_warning(m
     result = load_string(_fuel_world("OpenRobotics/models/Construction Cone"))
     [d] = result.diagnostics
     assert "Fuel model 'OpenRobotics/Construction Cone'" in d.message and "nothing was fetched" in d.message
+    assert "get it with `gz fuel download -u" in d.message  # what the user can do, in the same line
     # gz-sim's cache layout: <cache>/<host>/<owner>/models/<name>/<version>/model.sdf
     cache = tmp_path / "cache"
     model_dir = cache / "fuel.gazebosim.org" / "openrobotics" / "models" / "construction cone" / "2"
