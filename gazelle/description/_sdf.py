@@ -198,7 +198,7 @@ class _Loader(_WorldParts):
             ErrorCode.URI_UNRESOLVED,
             f"Fuel model '{fuel.label()}' is not built in and not in a local Fuel cache "
             f"({', '.join(str(r) for r in cache_roots()) or '~/.gz/fuel: none'}); nothing was fetched "
-            f"(gazelle never downloads): get it with `gz fuel download -u \"{uri}\"` where Gazebo is installed "
+            f'(gazelle never downloads): get it with `gz fuel download -u "{uri}"` where Gazebo is installed '
             "and copy ~/.gz/fuel here (or set GZ_FUEL_CACHE_PATH), or put the model folder on "
             "GZ_SIM_RESOURCE_PATH and include it as model://; include skipped, the world loads without it",
             loc,
