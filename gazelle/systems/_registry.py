@@ -37,6 +37,7 @@ PLUGIN_SYSTEMS = (
     "joint_controllers:JointController",
     "joint_controllers:JointCommands",
     "pose_publisher:P3D",
+    "odometry_publisher:OdometryPublisher",
     "sensors:ForceTorqueSensor",
     "sensors:ImuSensor",
     "ros2_control:ControllerManager",

@@ -410,6 +410,15 @@ KNOWN_PLUGIN_NAMES = {
     ),
     "gazelle_joint_commands": "JointCommands",
     "gazebo_ros_p3d": "P3D",
+    **dict.fromkeys(
+        (
+            "gz-sim-odometry-publisher-system",
+            "gz::sim::systems::OdometryPublisher",
+            "ignition-gazebo-odometry-publisher-system",
+            "ignition::gazebo::systems::OdometryPublisher",
+        ),
+        "OdometryPublisher",
+    ),
     "gazebo_ros_ft_sensor": "ForceTorqueSensor",
     "gazebo_ros_imu": "ImuSensor",
     **dict.fromkeys(
