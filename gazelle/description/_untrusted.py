@@ -9,8 +9,9 @@ Two ways a small input becomes a large cost, each closed here once for every rea
   693-byte file loads at once, but every consumer that walks it (flattening parameters, filling a
   message) expands it: 2.1 million parameters, or a 9-million-float trajectory from 30 KB.
   :func:`safe_load_bounded` composes the document (aliases still shared), counts the nodes it would
-  have once expanded, refuses more than ``max_nodes`` and any recursive alias, and only then
-  constructs it.
+  have once expanded, refuses more than ``max_nodes`` and any recursive alias, and an integer literal
+  longer than :data:`MAX_YAML_INT_CHARS` (past Python's int-string-conversion limit, PyYAML raised a
+  bare ValueError), and only then constructs it.
 
 Errors are :class:`UntrustedInputError` with the file (and line where YAML knows it); they never echo
 the file's content, so a refusal logged on ``/rosout`` cannot leak what it refused.
@@ -32,6 +33,12 @@ MAX_YAML_NODES = 200_000
 """The most YAML nodes (scalars, sequences, mappings) a document may hold once its aliases are
 expanded: a JointTrajectory of 2,000 points of 7 joints with positions, velocities and accelerations
 is ~50,000; TurtleBot3's, Panda's and r6bot's parameter files are under 500."""
+MAX_YAML_INT_CHARS = 1000
+"""The longest integer literal a document may hold (int64's largest is 19 digits). PyYAML reads an integer
+with ``int()``, whose string-conversion limit (``sys.get_int_max_str_digits()``, 4,300 decimal digits by
+default) raises a ValueError that is not a YAMLError: a 5,000-digit ``depth`` was a traceback. Below that
+limit in every base (1,000 hex digits are 1,205 decimal ones), so a value read can always be printed,
+and with ``PYTHONINTMAXSTRDIGITS=0`` (no limit) a megabyte of digits is not a quadratic-time conversion."""
 
 _Loader: Any = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 
@@ -122,6 +129,7 @@ def _expanded_size(root: yaml.Node, limit: int, where: str) -> int:
             continue
         if key in size:
             continue
+        _check_scalar(node, where)
         if key in open_:
             line = node.start_mark.line + 1 if node.start_mark is not None else 0
             raise UntrustedInputError(f"{where}:{line}: a YAML alias refers to itself (a recursive structure)")
@@ -136,6 +144,19 @@ def _expanded_size(root: yaml.Node, limit: int, where: str) -> int:
     return size[id(root)]
 
 
+def _check_scalar(node: yaml.Node, where: str) -> None:
+    """Refuse an integer literal longer than :data:`MAX_YAML_INT_CHARS` (its line named, not its digits)."""
+    if (
+        isinstance(node, yaml.ScalarNode)
+        and node.tag == "tag:yaml.org,2002:int"
+        and len(node.value) > MAX_YAML_INT_CHARS
+    ):
+        line = node.start_mark.line + 1 if node.start_mark is not None else 0
+        raise UntrustedInputError(
+            f"{where}:{line}: an integer of {len(node.value)} characters (at most {MAX_YAML_INT_CHARS})"
+        )
+
+
 def _children(node: yaml.Node) -> list[yaml.Node]:
     if isinstance(node, yaml.SequenceNode):
         return list(node.value)
@@ -148,8 +169,8 @@ def safe_load_bounded(text: str, where: str = "<string>", max_nodes: int = MAX_Y
     """``yaml.safe_load`` that refuses a document of more than ``max_nodes`` values once expanded.
 
     Raises:
-        UntrustedInputError: YAML that does not parse (with its line), expands past the bound, or has a
-            recursive alias.
+        UntrustedInputError: YAML that does not parse (with its line), expands past the bound, has a
+            recursive alias or an integer literal of more than :data:`MAX_YAML_INT_CHARS` characters.
     """
     loader = _Loader(text)
     try:
@@ -166,5 +187,7 @@ def safe_load_bounded(text: str, where: str = "<string>", max_nodes: int = MAX_Y
             raise UntrustedInputError(yaml_problem(err, where)) from None
         except RecursionError:
             raise UntrustedInputError(f"{where}: the YAML is nested too deeply") from None
+        except ValueError as err:  # a conversion PyYAML does not wrap in a YAMLError
+            raise UntrustedInputError(f"{where}: not valid YAML: {str(err)[:200]}") from None
     finally:
         loader.dispose()

@@ -4,7 +4,8 @@
 gazebo_ros and simulation_interfaces services, and every system's topics (mirrored from the bus).
 ``spawn_main`` is ``gazelle spawn`` (gazebo_ros's spawn_entity.py); ``choose_discovery_range``
 keeps a server on this host unless asked otherwise. ``message_definition`` is an interface's text with
-its dependencies (rosbag2's and Foxglove's ``ros2msg`` schemas).
+its dependencies (rosbag2's and Foxglove's ``ros2msg`` schemas); ``resolve_interface`` is the one way a type
+name from a file, the graph or a command line becomes a class (checked against the ament index first).
 """
 
 from __future__ import annotations
@@ -22,10 +23,12 @@ if TYPE_CHECKING:
     from ._controller_spawner import spawner_main as spawner_main
     from ._controller_spawner import unspawner_main as unspawner_main
     from ._dds import announce_often
-    from ._definitions import InterfaceError, message_class
+    from ._definitions import definition_path as interface_file
     from ._definitions import full_text as message_definition
+    from ._definitions import message_class
     from ._exposure import choose_discovery_range
     from ._gui_stand_ins import gui_stand_in_main, image_bridge_main
+    from ._interfaces import InterfaceError, resolve_interface, split_type_name
     from ._planning_scene import pose as matrix_to_pose
     from ._signals import await_signal_shutdown, silence_half_made_objects
     from ._spawn_entity import main as spawn_main
@@ -64,6 +67,9 @@ __all__ = [
     "RosBridge",
     "serialized_joint_states",
     "message_class",
+    "interface_file",
+    "resolve_interface",
+    "split_type_name",
     "message_definition",
     "choose_discovery_range",
     "gui_stand_in_main",

@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import dataclasses
 import functools
-import importlib
 import math
 from array import array
 from collections.abc import Callable, Iterator
@@ -89,6 +88,7 @@ from ..systems import (
     Vector3Stamped,
     WrenchStamped,
 )
+from ._interfaces import InterfaceError, resolve_interface
 
 
 def split_seconds(sec: float) -> tuple[int, int]:
@@ -535,16 +535,16 @@ def ros_type(kind: MsgType | DeclaredMessage) -> Any:
 
 
 def interface_class(full_name: str) -> Any:
-    """The rclpy class of ``pkg/msg/Name`` (or ``srv``, ``action``), imported now; a package the set-up has
-    not built yet is an :class:`InterfaceMissing` that says how to build it."""
-    package, kind, name = full_name.split("/")
+    """The rclpy class of ``pkg/msg/Name`` (or ``srv``, ``action``), imported now by the one checked resolver
+    (:func:`~._interfaces.resolve_interface`); a package of the set-up's second tier that is not built yet is
+    an :class:`InterfaceMissing` that says how to build it."""
+    package, kind = full_name.split("/")[:2]
     try:
-        module = importlib.import_module(f"{package}.{kind}")
-    except ModuleNotFoundError as e:
-        if e.name is not None and e.name.split(".")[0] == package:
+        return resolve_interface(full_name, kind)
+    except InterfaceError:
+        if package in ARM_PACKAGES:  # not listed in the ament index, or listed but not importable
             raise InterfaceMissing(package) from None
         raise
-    return getattr(module, name)
 
 
 ARM_PACKAGES = frozenset(

@@ -5,15 +5,10 @@ MCAP schema (encoding ``ros2msg``): each dependency after a line of 80 ``=`` and
 
 from __future__ import annotations
 
-import importlib
-import os
 import re
 from typing import Any
 
-
-class InterfaceError(ValueError):
-    """A type name that does not name an installed interface; the message says which."""
-
+from ._interfaces import KINDS, InterfaceError, checked_type_name, interface_package, resolve_interface, shown
 
 PRIMITIVES = frozenset(
     "bool byte char float32 float64 int8 uint8 int16 uint16 int32 uint32 int64 uint64 string wstring".split()
@@ -22,27 +17,23 @@ SEPARATOR = "=" * 80
 
 
 def definition_path(type_name: str) -> str:
-    """The file of ``pkg/msg/Name`` (``pkg/Name``: a message).
+    """The file of ``pkg/msg/Name`` (``pkg/Name``: a message; ``srv`` and ``action`` too), found as
+    :mod:`._interfaces` finds a type: a name by rosidl's rules, of an interface the ament index lists, in
+    ``share/<pkg>/<kind>/`` of the prefix that lists it.
 
     Raises:
-        InterfaceError: no such package or interface.
+        InterfaceError: a bad name, no such package or interface.
     """
-    from ament_index_python.packages import get_package_share_directory
-
-    parts = type_name.strip("/").split("/")
-    if len(parts) == 2:
-        parts = [parts[0], "msg", parts[1]]
-    if len(parts) != 3 or not all(parts):
-        raise InterfaceError(f"Invalid name '{type_name}'. Expected pkg/msg|srv|action/Name")
-    pkg, kind, name = parts
-    try:
-        share = get_package_share_directory(pkg)
-    except (LookupError, ValueError, OSError):  # OSError: AMENT_PREFIX_PATH is not set
-        raise InterfaceError(f"Unknown package '{pkg}'") from None
-    path = os.path.join(share, kind, f"{name}.{kind}")
-    if not os.path.isfile(path):
-        raise InterfaceError(f"Could not find the interface '{type_name}'")
-    return path
+    parts = type_name.split("/") if isinstance(type_name, str) else []
+    kind = parts[1] if len(parts) == 3 and parts[1] in KINDS else "msg"
+    package, kind, name, suffix = checked_type_name(type_name, kind)
+    if suffix:
+        raise InterfaceError(f"{shown(type_name)} is derived by rosidl: it has no definition file of its own")
+    prefix, _names = interface_package(package)
+    path = prefix / "share" / package / kind / f"{name}.{kind}"
+    if not path.is_file():
+        raise InterfaceError(f"Could not find the interface {shown(type_name)}")
+    return str(path)
 
 
 def definition_text(type_name: str) -> str:
@@ -96,17 +87,10 @@ def full_text(type_name: str) -> str:
 
 
 def message_class(type_name: str) -> Any:
-    """``pkg/msg/Name``'s Python class (from the installed interface packages).
+    """``pkg/msg/Name``'s Python class (from the installed interface packages), by
+    :func:`~._interfaces.resolve_interface`: a type name from the graph is checked before it is imported.
 
     Raises:
         InterfaceError: no such message.
     """
-    parts = type_name.strip("/").split("/")
-    pkg, name = parts[0], parts[-1]
-    try:
-        cls = getattr(importlib.import_module(f"{pkg}.msg"), name, None)
-    except ImportError:
-        cls = None
-    if cls is None:
-        raise InterfaceError(f"The message type '{type_name}' is not installed")
-    return cls
+    return resolve_interface(type_name, "msg")

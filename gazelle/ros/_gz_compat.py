@@ -17,6 +17,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
+from ._interfaces import resolve_interface
 from ._names import gz_topic_on_ros
 
 BRIDGE_DIRECTIONS = ("@", "[", "]")
@@ -130,15 +131,10 @@ def _bridge_node(argv: list[str]) -> tuple[Any, list[str], str, bool]:
 
 
 def _message_class(type_name: str) -> Any:
-    """``pkg/msg/Type`` (or ``pkg/Type``) -> the rclpy message class."""
-    import importlib
-
-    parts = type_name.split("/")
-    if len(parts) == 2:
-        parts = [parts[0], "msg", parts[1]]
-    if len(parts) != 3:
-        raise ValueError(f"'{type_name}' is not a message type (pkg/msg/Type)")
-    return getattr(importlib.import_module(f"{parts[0]}.{parts[1]}"), parts[2])
+    """``pkg/msg/Type`` (or ``pkg/Type``) -> the rclpy message class, by the one checked resolver: a
+    ``ros_type_name`` from the bridge's YAML or command line is data, imported only as an interface the
+    ament index lists (:func:`~._interfaces.resolve_interface`)."""
+    return resolve_interface(type_name, "msg")
 
 
 def bridge_main(argv: list[str]) -> int:

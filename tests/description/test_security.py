@@ -207,3 +207,19 @@ def test_a_spawn_string_reads_no_file_outside_the_resource_paths(roots) -> None:
     assert isinstance(mesh, Mesh) and mesh.path is None
     messages = " ".join(d.message for d in result.diagnostics)
     assert "outside the folders files may be read from" in messages and "root:" not in messages
+
+
+def test_a_5000_digit_integer_in_yaml_is_refused_with_its_line() -> None:
+    """Issue 48: PyYAML reads an integer with ``int()``, and past Python's int-string-conversion limit
+    (``sys.get_int_max_str_digits()``, 4,300 digits) that raised a bare ValueError, not a YAMLError: a
+    traceback from every reader of untrusted YAML (a QoS overrides file, a bag's metadata.yaml, ``ros2 topic
+    pub``'s values). The bounded loader refuses an integer literal of over 1,000 characters, in any base,
+    naming its line and not its digits."""
+    from gazelle.description import UntrustedInputError, safe_load_bounded
+
+    assert sys.get_int_max_str_digits() in (0, 4300)
+    for text, line in (("a: 1\nb: " + "9" * 5000, 2), ("- 0x" + "f" * 2000, 1), ("x: !!int '" + "1" * 1001 + "'", 1)):
+        with pytest.raises(UntrustedInputError) as err:
+            safe_load_bounded(text, "q.yaml")
+        assert str(err.value).startswith(f"q.yaml:{line}: an integer of ") and "999" not in str(err.value)
+    assert safe_load_bounded("a: " + "9" * 1000) == {"a": int("9" * 1000)}

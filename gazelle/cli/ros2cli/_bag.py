@@ -33,6 +33,7 @@ from typing import Any
 
 import yaml
 
+from ._bag_files import BagError, brief, qos_overrides, read_metadata
 from ._graph import absolute, cli_node, is_hidden, matching_qos, offers, spin_once
 from ._messages import InterfaceError, get_interface
 
@@ -65,82 +66,7 @@ def _mixed_offers(node: Any, topic: str) -> list[str]:
     return out
 
 
-class BagError(Exception):
-    """What makes a bag command fail; the message is the one line printed."""
-
-
 OVERRIDES_HELP = "Path to a yaml file defining overrides of the QoS profile for specific topics."
-_DURATION_KEYS = ("deadline", "lifespan", "liveliness_lease_duration")
-_VALUE_KEYS = ("depth", "avoid_ros_namespace_conventions")
-
-
-def qos_overrides(file: Any) -> dict[str, Any]:
-    """``--qos-profile-overrides-path``: topic -> rclpy QoSProfile, read as ros2bag/api/__init__.py's
-    ``convert_yaml_to_qos_profile`` does (policies by their short keys, durations as ``{sec, nsec}``, no
-    negative value, no other key, rclpy's own rule that history or depth is given). What rosbag2 would
-    stop on with a traceback (not a mapping, an unknown policy value) is a :class:`BagError` here too."""
-    from rclpy.duration import Duration
-    from rclpy.qos import (
-        InvalidQoSProfileException,
-        QoSDurabilityPolicy,
-        QoSHistoryPolicy,
-        QoSLivelinessPolicy,
-        QoSProfile,
-        QoSReliabilityPolicy,
-    )
-
-    policies = {
-        "history": QoSHistoryPolicy,
-        "reliability": QoSReliabilityPolicy,
-        "durability": QoSDurabilityPolicy,
-        "liveliness": QoSLivelinessPolicy,
-    }
-    name = getattr(file, "name", "the QoS overrides file")
-    try:
-        loaded = yaml.safe_load(file)
-    except yaml.YAMLError as err:
-        raise BagError(f"{name}: not YAML: {err}") from None
-    if loaded is None:
-        return {}
-    if not isinstance(loaded, dict) or not all(isinstance(v, dict) for v in loaded.values()):
-        raise BagError(f"{name}: expected a mapping of topic names to QoS profiles")
-    out = {}
-    for topic, profile in loaded.items():
-        fields: dict[str, Any] = {}
-        try:
-            for key, value in profile.items():
-                if key in _DURATION_KEYS:
-                    fields[key] = _duration(value, Duration)
-                elif key in policies:
-                    try:
-                        fields[key] = policies[key].get_from_short_key(str(value))
-                    except KeyError:
-                        keys = ", ".join(policies[key].short_keys())
-                        raise ValueError(f"`{value}` is not a {key} policy (one of {keys})") from None
-                elif key in _VALUE_KEYS:
-                    if not isinstance(value, (int, bool)) or value < 0:
-                        raise ValueError(f"`{key}` may not be a negative value.")
-                    fields[key] = value
-                else:
-                    raise ValueError(f"Unexpected key `{key}` for QoS profile.")
-            out[str(topic)] = QoSProfile(**fields)
-        except (InvalidQoSProfileException, ValueError) as err:
-            raise BagError(f"{name}: topic {topic}: {err}") from None
-    return out
-
-
-def _duration(value: Any, duration: Any) -> Any:
-    """A ``{sec, nsec}`` YAML duration as rclpy's Duration (ros2bag's ``dict_to_duration``: empty is 0)."""
-    if not value:
-        return duration()
-    if not isinstance(value, dict) or "sec" not in value or "nsec" not in value:
-        raise ValueError("Time overrides must include both seconds (sec) and nanoseconds (nsec).")
-    if not all(isinstance(value[k], int) and not isinstance(value[k], bool) for k in ("sec", "nsec")):
-        raise ValueError(f"sec and nsec must be whole numbers, got {value['sec']!r} and {value['nsec']!r}")
-    d = duration(seconds=value["sec"], nanoseconds=value["nsec"])
-    if d < duration(seconds=0):
-        raise ValueError("Time duration may not be a negative value.")
-    return d
 
 
 def main(argv: list[str]) -> int:
@@ -161,7 +87,7 @@ def main(argv: list[str]) -> int:
     )
     rec.add_argument("--include-hidden-topics", action="store_true")
     rec.add_argument("--use-sim-time", action="store_true", help="stamp messages with /clock's time")
-    rec.add_argument("--qos-profile-overrides-path", type=argparse.FileType("r"), help=OVERRIDES_HELP)
+    rec.add_argument("--qos-profile-overrides-path", type=Path, help=OVERRIDES_HELP)
     play = sub.add_parser("play", help="Play back ROS data from a bag")
     play.add_argument("bag_path")
     play.add_argument("-r", "--rate", type=float, default=1.0)
@@ -172,7 +98,7 @@ def main(argv: list[str]) -> int:
     play.add_argument("--delay", type=float, default=0.0, help="seconds to wait before playing")
     play.add_argument("--wait", type=float, default=2.0, help="(gazelle) at most this long for subscribers to match")
     play.add_argument("-s", "--storage", default="mcap")
-    play.add_argument("--qos-profile-overrides-path", type=argparse.FileType("r"), help=OVERRIDES_HELP)
+    play.add_argument("--qos-profile-overrides-path", type=Path, help=OVERRIDES_HELP)
     info = sub.add_parser("info", help="Print information about a bag to the screen")
     info.add_argument("bag_path")
     info.add_argument("-s", "--storage", default="mcap")
@@ -217,30 +143,6 @@ def _qos_dicts(infos: list[Any]) -> list[dict[str, Any]]:
             }
         )
     return out
-
-
-def _read_metadata(bag: Path) -> dict[str, Any]:
-    """The ``rosbag2_bagfile_information`` of a bag folder's metadata.yaml, checked for the keys ``info``
-    and ``play`` read; only the mcap storage is supported."""
-    if not bag.exists():
-        raise BagError(f"bag '{bag}' does not exist")
-    meta_path = bag / "metadata.yaml"
-    if not meta_path.is_file():
-        raise BagError(f"'{bag}' is not a bag folder: it has no metadata.yaml")
-    try:
-        meta = yaml.safe_load(meta_path.read_text(encoding="utf-8"))["rosbag2_bagfile_information"]
-        missing = [
-            k
-            for k in ("relative_file_paths", "topics_with_message_count", "duration", "starting_time")
-            if k not in meta
-        ]
-        if missing:
-            raise KeyError(", ".join(missing))
-    except (yaml.YAMLError, KeyError, TypeError) as err:
-        raise BagError(f"{meta_path}: not rosbag2 metadata ({type(err).__name__}: {err})") from None
-    if meta.get("storage_identifier") != "mcap":
-        raise BagError(f"{meta_path}: storage '{meta.get('storage_identifier')}' is not supported (only mcap)")
-    return meta
 
 
 def _mcap_files(bag: Path, meta: dict[str, Any]) -> list[Path]:
@@ -357,7 +259,7 @@ def _size(n: float) -> str:
 def _info(bag: Path) -> int:
     """``info BAG``: rosbag2's layout of files, size, duration, start/end, counts and per-topic lines; every
     MCAP file is opened first, so a damaged one is reported instead of described from metadata.yaml."""
-    meta = _read_metadata(bag)
+    meta = read_metadata(bag)
     files = _mcap_files(bag, meta)
     for f in files:
         _summary(f)  # a damaged file is reported, not described from metadata.yaml alone
@@ -614,15 +516,33 @@ def _qos_profile(topic: str, offered: list[dict[str, Any]], overrides: dict[str,
     return qos
 
 
-def _offered(meta_qos: Any) -> list[dict[str, Any]]:
-    """The recorded ``offered_qos_profiles`` as a list (rosbag2 writes it as a YAML string in
-    metadata.yaml, as a list in the MCAP channel)."""
-    if isinstance(meta_qos, str):
+def _played(bag: Path, meta: dict[str, Any], wanted: list[str] | None) -> dict[str, tuple[Any, dict[str, Any]]]:
+    """topic -> (message class, its recorded metadata) of each topic to play (``--topics``: those), before any
+    node exists: its name a valid topic name and its type an installed message by the one checked resolver
+    (rosidl's rules, the ament index's interface packages; nothing else is imported, see
+    :func:`gazelle.ros.resolve_interface`).
+
+    Raises:
+        BagError: a bad name or type, one line naming metadata.yaml, the topic and the type.
+    """
+    from rclpy.exceptions import NameValidationException
+    from rclpy.validate_full_topic_name import validate_full_topic_name
+
+    recorded = {t["topic_metadata"]["name"]: t["topic_metadata"] for t in meta["topics_with_message_count"]}
+    out = {}
+    for topic, md in recorded.items():
+        if wanted is not None and topic not in wanted:
+            continue
+        where = f"{bag / 'metadata.yaml'}: topic {brief(topic)}"
         try:
-            meta_qos = yaml.safe_load(meta_qos) if meta_qos.strip() else []
-        except yaml.YAMLError:
-            return []
-    return meta_qos if isinstance(meta_qos, list) else []
+            validate_full_topic_name(topic)
+        except NameValidationException as err:
+            raise BagError(f"{where}: {str(err).splitlines()[0].rstrip(':')}") from None
+        try:
+            out[topic] = (get_interface(md["type"]), md)
+        except InterfaceError as err:
+            raise BagError(f"{where}: {err}") from None
+    return out
 
 
 def _play(args: argparse.Namespace) -> int:
@@ -634,21 +554,19 @@ def _play(args: argparse.Namespace) -> int:
 
     overrides = qos_overrides(args.qos_profile_overrides_path) if args.qos_profile_overrides_path else {}
     bag = Path(args.bag_path)
-    meta = _read_metadata(bag)
+    meta = read_metadata(bag)
     files = _mcap_files(bag, meta)
     for f in files:
         _summary(f)
         _check_chunks(f)
     if args.rate <= 0:
         raise BagError("--rate must be positive")
-    recorded = {t["topic_metadata"]["name"]: t["topic_metadata"] for t in meta["topics_with_message_count"]}
-    topics = [t for t in recorded if args.topics is None or t in args.topics]
+    played = _played(bag, meta, args.topics)
     with cli_node("ros2bag_player") as node:
         pubs: dict[str, Any] = {}
-        for topic in topics:
-            md = recorded[topic]
-            qos = _qos_profile(topic, _offered(md.get("offered_qos_profiles")), overrides)
-            pubs[topic] = node.create_publisher(get_interface(md["type"]), topic, qos)
+        for topic, (cls, md) in played.items():
+            qos = _qos_profile(topic, md["offered_qos_profiles"], overrides)
+            pubs[topic] = node.create_publisher(cls, topic, qos)
         clock_pub = None
         if args.clock is not None:
             from rosgraph_msgs.msg import Clock

@@ -7,6 +7,7 @@ import argparse
 import os
 import sys
 
+from ...ros import interface_file
 from ._messages import InterfaceError, get_interface, to_yaml
 
 
@@ -38,7 +39,8 @@ def main(argv: list[str]) -> int:
     from ament_index_python.packages import get_packages_with_prefixes
 
     if args.cmd == "proto":
-        kind = args.type.strip("/").split("/")[1] if args.type.count("/") >= 2 else "msg"
+        parts = args.type.strip("/").split("/")
+        kind = parts[1] if len(parts) == 3 and parts[1] in ("msg", "srv", "action") else "msg"
         try:
             cls = get_interface(args.type, kind)
         except InterfaceError as err:
@@ -110,7 +112,6 @@ def _show(identifier: str, comments: bool, nested_comments: bool, indent: int) -
     message type followed by that type's definition one tab further in; comments (whole lines and trailing
     ones) and blank lines shown at the top level unless ``--no-comments``, in nested ones only with
     ``--all-comments``. Lines are read with rosidl_adapter's parser, as upstream reads them."""
-    from ament_index_python.packages import get_package_share_directory
     from rosidl_adapter.parser import (
         ACTION_REQUEST_RESPONSE_SEPARATOR,
         SERVICE_REQUEST_RESPONSE_SEPARATOR,
@@ -121,12 +122,10 @@ def _show(identifier: str, comments: bool, nested_comments: bool, indent: int) -
     if len(parts) != 3:
         raise LookupError(f"Invalid name '{identifier}'. Expected three parts separated by '/'")
     package, kind, name = parts
-    try:
-        path = os.path.join(get_package_share_directory(package), kind, f"{name}.{kind}")
-    except (LookupError, ValueError):
-        raise LookupError(f"Unknown package '{package}'") from None
-    if not os.path.isfile(path):
-        raise LookupError(f"Could not find the interface '{identifier}'")
+    try:  # the one checked way from a name to a file: rosidl's rules, the ament index's interfaces
+        path = interface_file(identifier)
+    except InterfaceError as err:
+        raise LookupError(str(err)) from None
     with open(path, encoding="utf-8") as f:
         lines = [line.rstrip() for line in f]
     tabs = "\t" * indent

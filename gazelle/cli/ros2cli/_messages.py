@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import array
 import functools
-import importlib
 from collections import OrderedDict
 from collections.abc import Callable
 from typing import Any
@@ -13,28 +12,14 @@ from typing import Any
 import yaml
 
 from ...description import UntrustedInputError, safe_load_bounded
-
-
-class InterfaceError(ValueError):
-    """A type name that does not name an installed interface, or values that do not fit it."""
+from ...ros import InterfaceError, resolve_interface
 
 
 def get_interface(type_name: str, kind: str = "msg") -> Any:
-    """``pkg/msg/Type`` (or ``pkg/Type``) -> its Python class (``kind`` msg, srv or action)."""
-    parts = type_name.strip("/").split("/")
-    if len(parts) == 2:
-        parts = [parts[0], kind, parts[1]]
-    if len(parts) != 3 or not all(parts):
-        raise InterfaceError(f"The passed {kind} type '{type_name}' is invalid")
-    pkg, sub, name = parts
-    try:
-        module = importlib.import_module(f"{pkg}.{sub}")
-    except ImportError:
-        raise InterfaceError(f"The passed {kind} type '{type_name}' is invalid (no package '{pkg}')") from None
-    cls = getattr(module, name, None)
-    if cls is None:
-        raise InterfaceError(f"The passed {kind} type '{type_name}' is invalid (no '{name}' in {pkg}/{sub})")
-    return cls
+    """``pkg/msg/Type`` (or ``pkg/Type``) -> its Python class (``kind`` msg, srv or action), by gazelle's one
+    checked resolver (:func:`gazelle.ros.resolve_interface`): a type name from the command line, the graph or
+    a bag's metadata.yaml is held to rosidl's rules and the ament index before anything is imported."""
+    return resolve_interface(type_name, kind)
 
 
 def type_name_of(cls: Any) -> str:
