@@ -84,12 +84,11 @@ def _bridge_entries(
         direction = {"[": "GZ_TO_ROS", "]": "ROS_TO_GZ"}.get(mark, "BIDIRECTIONAL")
         entries.append(BridgeEntry(topic, topic, ros_type, direction))
     if config:
-        import yaml
+        from ..description import MAX_PARAMS_FILE_BYTES, UntrustedInputError, read_regular_file, safe_load_bounded
 
-        try:
-            with open(config, encoding="utf-8") as f:
-                data = yaml.safe_load(f) or []
-        except (OSError, yaml.YAMLError) as err:
+        try:  # the bounded loader: a bridge YAML is a file, and a bad one is one line, never a traceback
+            data = safe_load_bounded(read_regular_file(config, MAX_PARAMS_FILE_BYTES, "config_file"), config) or []
+        except (OSError, UntrustedInputError) as err:
             problems.append(f"config_file {config}: {err}")
             data = []
         for item in data if isinstance(data, list) else []:

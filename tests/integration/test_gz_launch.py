@@ -244,3 +244,20 @@ def test_gz_sim_server_and_gui_from_two_includes_show_the_servers_viewer(tmp_pat
         launch.wait_line(f"open {url}", 30)
     finally:
         launch.interrupt()
+
+
+def test_parameter_bridge_names_a_bad_config_file_in_one_line(tmp_path):
+    """A config_file that is not YAML, or a 5,000-digit number in it, is one line naming the file (it went through
+    plain yaml.safe_load: a traceback for the number)."""
+    for name, text in (
+        ("broken.yaml", "- {ros_topic_name: [unclosed\n"),
+        ("huge.yaml", f"- {{depth: {'9' * 5000}}}\n"),
+    ):
+        config = tmp_path / name
+        config.write_text(text)
+        bridge = start(
+            [ROS2, "run", "ros_gz_bridge", "parameter_bridge", "--ros-args", "-p", f"config_file:={config}"], "bridge"
+        )
+        assert bridge.popen.wait(30) == 1, bridge.output
+        bridge.wait_line(f"config_file {config}", 5)
+        assert "Traceback" not in bridge.output
