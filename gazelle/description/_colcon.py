@@ -50,16 +50,16 @@ def colcon_workspace(folder: Path) -> Path | None:
 
     The nearest folder at or above ``folder`` that is an install base (its ``.colcon_install_layout``)
     decides: its parent is the workspace when it also holds colcon's build base (``build/.built_by``).
-    An install base without one beside it (``--install-base`` elsewhere, a copied install tree) has no
-    workspace: None, and no folder above is tried."""
+    An install base without one beside it (``--install-base`` elsewhere, a copied install tree), or one
+    whose parent is the file system's root, has no workspace: None, and no folder above is tried."""
     for base in (folder, *folder.parents):
         if (base / INSTALL_MARKER).exists():
             if not _reads(base / INSTALL_MARKER, INSTALL_LAYOUTS):
                 return None
-            workspace = base.parent
-            if base == workspace or not _reads(workspace / "build" / BUILD_MARKER, ("colcon",)):
-                return None
-            return workspace.resolve()
+            workspace = base.parent.resolve()
+            if workspace == Path(workspace.anchor) or not _reads(workspace / "build" / BUILD_MARKER, ("colcon",)):
+                return None  # a build in / would make every link of the install tree readable
+            return workspace
     return None
 
 
