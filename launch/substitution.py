@@ -26,13 +26,20 @@ SomeSubstitutionsType = str | Substitution | Iterable[str | Substitution]
 
 
 def normalize_to_list_of_substitutions(subs: Any) -> list[Substitution]:
-    """A string, a substitution or an iterable of them, as a list of substitutions."""
+    """A string, a substitution or an iterable of them, as a list of substitutions.
+
+    Like launch's (launch/utilities/normalize_to_list_of_substitutions_impl.py) it takes no bare bool or
+    number: ``DeclareLaunchArgument('x', default_value=True)`` fails in ROS 2 as well. Only
+    ``LaunchConfiguration``'s ``default`` and ``EqualsSubstitution``'s operands turn other values into
+    text first (:func:`text_items`)."""
     from .substitutions.text_substitution import TextSubstitution
 
     if isinstance(subs, str):
         return [TextSubstitution(text=subs)]
     if isinstance(subs, Substitution):
         return [subs]
+    if not isinstance(subs, Iterable):
+        raise TypeError(f"expected a string, a substitution or a list of them, got {type(subs).__name__}: {subs!r}")
     out: list[Substitution] = []
     for s in subs:
         if isinstance(s, (str, Substitution)):
@@ -42,6 +49,14 @@ def normalize_to_list_of_substitutions(subs: Any) -> list[Substitution]:
         else:
             raise TypeError(f"expected a string or a substitution, got {type(s).__name__}: {s!r}")
     return out
+
+
+def text_items(value: Any) -> list[str | Substitution]:
+    """``value`` (one item or an iterable of them) with every item that is neither text nor a substitution
+    turned into its ``str()``: what launch's ``LaunchConfiguration`` does with its ``default``
+    (launch/substitutions/launch_configuration.py), so ``default=True`` is the text ``True``."""
+    items = value if isinstance(value, Iterable) else (value,)
+    return [item if isinstance(item, (str, Substitution)) else str(item) for item in items]
 
 
 def perform_substitutions(context: LaunchContext, subs: list[Substitution]) -> str:

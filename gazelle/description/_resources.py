@@ -11,9 +11,11 @@ Search order for a package or model name ``NAME``:
 Only names that resolve this way are read: a URI never escapes the folder it resolves to,
 and no file is read from outside the *allowed folders*: the resource roots (the search paths
 and the ament prefixes' ``share``), the folder of the file the user named (``trusted_dirs``),
-and, for a package installed by ``colcon build --symlink-install``, the source folder its
-``package.xml`` links to. Symbolic links are resolved first, so a ``model.sdf`` that links to
-``/etc/passwd`` is not read. A description that arrives as a string has no trusted folder.
+for a package installed by ``colcon build --symlink-install``, the source folder its ``package.xml``
+links to, and, for a link colcon made in an install prefix on the roots, the file it leads to in the
+workspace that prefix was built from (see :mod:`._colcon`). Symbolic links are resolved first, so a
+``model.sdf`` that links to ``/etc/passwd`` is not read. A description that arrives as a string has no
+trusted folder.
 """
 
 from __future__ import annotations
@@ -23,6 +25,8 @@ import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
+
+from ._colcon import colcon_linked
 
 SEARCH_PATH_VARIABLES = (
     "GAZELLE_RESOURCE_PATH",
@@ -59,15 +63,17 @@ class ResourceResolver:
         return [*self.roots(), *(t.resolve() for t in self.trusted_dirs if t.is_dir())]
 
     def allowed(self, path: str | os.PathLike[str]) -> bool:
-        """Whether ``path``, with its symbolic links resolved, lies in an allowed folder."""
+        """Whether ``path``, with its symbolic links resolved, lies in an allowed folder, or ``path`` is a
+        link that colcon's ``--symlink-install`` made in an allowed folder (:func:`._colcon.colcon_linked`)."""
+        roots = self.allowed_roots()
         real = Path(path).resolve()
-        for root in self.allowed_roots():
+        for root in roots:
             if real == root or root in real.parents:
                 return True
             source = _symlinked_source(root, real)
             if source is not None:
                 return True
-        return False
+        return colcon_linked(path, roots) is not None
 
     def search_paths(self) -> list[Path]:
         """Folders whose sub-folders are packages or models, in search order: the extra folders, the
@@ -116,15 +122,27 @@ class ResourceResolver:
                 root = self.find_package(name)
                 if root is None:
                     return None
-                path = (root / sub).resolve()
-                if path != root and root not in path.parents and not _in_package_source(root, path):
-                    return None
-                return path
+                return self.file_in(root, sub)
         path = _local_path(uri, base_dir)
         if path is None:
             return None
-        path = path.resolve()
-        return path if self.allowed(path) else None
+        real = path.resolve()
+        if self.allowed(real):
+            return real
+        return colcon_linked(path, self.allowed_roots())
+
+    def file_in(self, root: Path, sub: str) -> Path | None:
+        """``root/sub`` for the package or model folder ``root`` (resolved), when it does not leave it: its
+        real location, in the folder or in the package's source (a ``--symlink-install`` package.xml's);
+        or, when it is a link colcon made that leads into the workspace, the link (:mod:`._colcon`). None
+        when it climbs out (``model://a/../../etc``) or links out of both."""
+        path = (root / sub).resolve()
+        if path == root or root in path.parents or _in_package_source(root, path):
+            return path
+        lexical = Path(os.path.normpath(root / sub))
+        if root not in lexical.parents:
+            return None
+        return colcon_linked(lexical, self.allowed_roots())
 
     def unresolved_reason(self, uri: str, base_dir: str | os.PathLike[str] | None = None) -> str:
         """Why :meth:`resolve_uri` gave None for ``uri``: an unknown package, or a file outside the allowed folders.
@@ -184,9 +202,11 @@ class ResourceResolver:
         return [r.resolve() for r in found if r.is_dir()]
 
     def is_inside_roots(self, path: Path) -> bool:
-        """Whether ``path`` lies in one of :meth:`roots` (spawning by URI reads nothing else)."""
-        path = path.resolve()
-        return any(path == root or root in path.parents for root in self.roots())
+        """Whether ``path`` lies in one of :meth:`roots`, or is a link colcon made there that leads into its
+        workspace (spawning by URI reads nothing else)."""
+        roots = self.roots()
+        real = path.resolve()
+        return any(real == root or root in real.parents for root in roots) or colcon_linked(path, roots) is not None
 
 
 @functools.lru_cache(maxsize=8)

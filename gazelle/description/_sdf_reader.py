@@ -510,9 +510,9 @@ class _Reader:
             if root is None:
                 return None
             # model://name/sub: the model's folder is found by name on the resource roots (Gazebo's
-            # GZ_SIM_RESOURCE_PATH search); the rest may not climb out of it (model://a/../../etc)
-            path = (root / sub).resolve()
-            return path if path == root or root in path.parents else None
+            # GZ_SIM_RESOURCE_PATH search); the rest may not climb out of it (model://a/../../etc), save
+            # through a link colcon's --symlink-install made (TurtleBot3's models/turtlebot3_world/meshes)
+            return self.resolver.file_in(root, sub)
         try:
             return self.resolver.resolve_uri(uri, base_dir=doc.base_dir)
         except (OSError, ValueError):

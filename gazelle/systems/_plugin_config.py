@@ -63,11 +63,54 @@ def parse_bool(cfg: ConfigElement | None, tag: str, default: bool, log: logging.
 
 
 def ros_block(cfg: ConfigElement | None) -> tuple[str, dict[str, str]]:
-    """The ``<ros><namespace>`` and ``<remapping>from:=to`` entries of a gazebo_ros plugin."""
+    """The namespace and topic remapping rules of a gazebo_ros plugin's node, from its ``<ros>`` block as
+    gazebo_ros builds the node (gazebo_ros/src/node.cpp, ``Node::Get``): ``<namespace>``, then the rules
+    of its ``<argument>`` elements and its ``<remapping>`` elements (:func:`node_remaps`). A ``__ns:=``
+    rule replaces the namespace, as rcl's does; for the others the first rule for a name wins."""
     ros = cfg.find("ros") if cfg is not None else None
     if ros is None:
         return "", {}
-    return child_text(ros, "namespace") or "", dict(ros_remaps(cfg))
+    ns = child_text(ros, "namespace") or ""
+    rules: dict[str, str] = {}
+    for src, dst in node_remaps(cfg):
+        rules.setdefault(src, dst)
+    ns = rules.pop("__ns", ns)
+    return ns, rules
+
+
+def node_remaps(cfg: ConfigElement | None) -> tuple[tuple[str, str], ...]:
+    """The remapping rules of a gazebo_ros plugin's node in the order rcl tries them.
+
+    gazebo_ros hands the node its ``<ros><argument>`` texts as they are, then ``--ros-args`` and
+    ``--remap RULE`` for each ``<remapping>`` (node.cpp). rcl (humble's rcl/src/rcl/arguments.c) reads a
+    ``from:=to`` before ``--ros-args`` as a remapping rule (the deprecated form, which Dashing-era
+    robots such as articubot_one's lidar write: ``<argument>~/out:=scan</argument>``) and one after
+    ``-r``/``--remap`` within the ROS arguments; other arguments rename nothing."""
+    ros = cfg.find("ros") if cfg is not None else None
+    if ros is None:
+        return ()
+    rules: list[tuple[str, str]] = []
+    in_ros_args = False
+    args = [a.text.strip() for a in ros.findall("argument")]
+    for i, arg in enumerate(args):
+        if in_ros_args:
+            if arg == "--":
+                in_ros_args = False
+            elif i > 0 and args[i - 1] in ("-r", "--remap"):
+                rules.extend(_remap_rule(arg))
+        elif arg == "--ros-args":
+            in_ros_args = True
+        else:
+            rules.extend(_remap_rule(arg))
+    return (*rules, *ros_remaps(cfg))
+
+
+def _remap_rule(text: str) -> list[tuple[str, str]]:
+    """``[(from, to)]`` for a rule ``from:=to`` (both sides non-empty, no spaces), else ``[]``."""
+    src, sep, dst = text.partition(":=")
+    if not sep or not src or not dst or any(c.isspace() for c in text):
+        return []
+    return [(src, dst)]
 
 
 def ros_remaps(cfg: ConfigElement | None) -> tuple[tuple[str, str], ...]:

@@ -77,7 +77,7 @@ class DiffDriveConfig:
     namespace: str = ""
     """``<ros><namespace>``."""
     remappings: tuple[tuple[str, str], ...] = ()
-    """``<ros><remapping>from:=to``."""
+    """``<ros><argument>from:=to`` and ``<ros><remapping>from:=to``, as gazebo_ros gives them to rcl."""
 
 
 ROS1_NAMES = {

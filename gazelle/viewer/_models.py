@@ -28,25 +28,26 @@ class ModelFile:
     path: Path
 
 
-def _config_sdf(folder: Path) -> Path | None:
-    """The SDF a Gazebo ``model.config`` names (the last ``<sdf>`` element, as Gazebo picks the newest)."""
+def _config_sdf(folder: Path, resolver: ResourceResolver) -> Path | None:
+    """The SDF a Gazebo ``model.config`` names (the last ``<sdf>`` element, as Gazebo picks the newest), when it
+    lies in the model's folder (or is a link ``colcon build --symlink-install`` made: ``ResourceResolver.file_in``)."""
     try:
         root = ET.parse(folder / "model.config").getroot()
     except (OSError, ET.ParseError):
         return None
     names = [e.text.strip() for e in root.iter("sdf") if e.text and e.text.strip()]
     for name in reversed(names):
-        cand = (folder / name).resolve()
-        if cand.is_file() and folder.resolve() in cand.parents:
+        cand = resolver.file_in(folder.resolve(), name)
+        if cand is not None and cand != folder.resolve() and cand.is_file():
             return cand
     return None
 
 
-def _files_in(folder: Path) -> list[Path]:
+def _files_in(folder: Path, resolver: ResourceResolver) -> list[Path]:
     """The model files of one folder of a resource path: a Gazebo model folder's SDF (from its model.config), else
     its URDF and SDF files."""
     if (folder / "model.config").is_file():
-        sdf = _config_sdf(folder)
+        sdf = _config_sdf(folder, resolver)
         return [sdf] if sdf is not None else []
     try:
         return sorted(p for p in folder.iterdir() if p.is_file() and p.suffix in MODEL_SUFFIXES)
@@ -67,7 +68,7 @@ def find_models(resolver: ResourceResolver | None = None) -> list[ModelFile]:
         except OSError:
             pass
         for folder in folders:
-            for f in _files_in(folder):
+            for f in _files_in(folder, resolver):
                 if f.resolve() not in found:
                     rel = f.relative_to(root) if root in f.parents else Path(f.name)
                     found[f.resolve()] = ModelFile(str(rel), f.resolve())

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import os
 import shlex
 import shutil
@@ -9,7 +10,7 @@ import subprocess
 from typing import Any
 
 from ..launch_context import LaunchContext
-from ..substitution import Substitution, normalize_to_list_of_substitutions, perform_substitutions
+from ..substitution import Substitution, normalize_to_list_of_substitutions, perform_substitutions, text_items
 from .text_substitution import TextSubstitution
 
 
@@ -22,7 +23,9 @@ class LaunchConfiguration(Substitution):
 
     def __init__(self, variable_name: Any, *, default: Any = None) -> None:
         self.variable_name = normalize_to_list_of_substitutions(variable_name)
-        self.default = None if default is None else normalize_to_list_of_substitutions(default)
+        # launch turns a default that is not text into text (default=True is 'True'; every gz_ros2_control
+        # demo writes LaunchConfiguration('use_sim_time', default=True)); None means no default
+        self.default = None if default is None else normalize_to_list_of_substitutions(text_items(default))
 
     def perform(self, context: LaunchContext) -> str:
         name = perform_substitutions(context, self.variable_name)
@@ -204,12 +207,54 @@ class OrSubstitution(Substitution):
         return str(either).lower()
 
 
+def _operand(value: Any) -> list[Substitution]:
+    """An ``EqualsSubstitution`` operand as launch takes it (launch/substitutions/equals_substitution.py): a
+    substitution, or a list of text and substitutions holding one, as it is; anything else as text, None as
+    ``''`` and a bool as ``true``/``false``."""
+    is_substitution = isinstance(value, Substitution) or (
+        isinstance(value, (list, tuple))
+        and value
+        and all(isinstance(v, (str, Substitution)) for v in value)
+        and any(isinstance(v, Substitution) for v in value)
+    )
+    if not is_substitution:
+        value = "" if value is None else str(value).lower() if isinstance(value, bool) else str(value)
+    return normalize_to_list_of_substitutions(value)
+
+
+def _is_bool_text(text: str) -> bool:
+    return text.lower() in ("true", "false", "1", "0")
+
+
+def _is_float_text(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
 class EqualsSubstitution(Substitution):
+    """``'true'`` when both sides are equal: as booleans when both read as one (``True`` equals ``1``), as
+    numbers when both read as one (``1.0`` equals ``1``), else as text (launch's EqualsSubstitution)."""
+
     def __init__(self, left: Any, right: Any) -> None:
-        self.left, self.right = normalize_to_list_of_substitutions(left), normalize_to_list_of_substitutions(right)
+        self.left, self.right = _operand(left), _operand(right)
 
     def perform(self, context: LaunchContext) -> str:
-        return str(perform_substitutions(context, self.left) == perform_substitutions(context, self.right)).lower()
+        left, right = perform_substitutions(context, self.left), perform_substitutions(context, self.right)
+        if _is_bool_text(left) and _is_bool_text(right):
+            return str((left.lower() in ("true", "1")) == (right.lower() in ("true", "1"))).lower()
+        if _is_float_text(left) and _is_float_text(right):
+            return str(math.isclose(float(left), float(right))).lower()
+        return str(left == right).lower()
+
+
+class NotEqualsSubstitution(EqualsSubstitution):
+    """``'true'`` when :class:`EqualsSubstitution` of the same sides is ``'false'``."""
+
+    def perform(self, context: LaunchContext) -> str:
+        return str(super().perform(context) != "true").lower()
 
 
 class LocalSubstitution(Substitution):
@@ -231,6 +276,7 @@ __all__ = [
     "FindExecutable",
     "LaunchConfiguration",
     "LocalSubstitution",
+    "NotEqualsSubstitution",
     "NotSubstitution",
     "OrSubstitution",
     "PathJoinSubstitution",

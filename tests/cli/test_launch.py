@@ -154,6 +154,109 @@ def test_a_launch_file_with_includes_conditions_events_groups_and_nodes(tmp_path
     assert "__ns" not in outside[0]  # the group's namespace stayed inside the group
 
 
+GZ_ROS2_CONTROL_DEMO = """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, LogInfo
+from launch.conditions import IfCondition
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    # Launch Arguments
+    use_sim_time = LaunchConfiguration('use_sim_time', default=True)
+    params = {'robot_description': '<robot name="r"/>', 'use_sim_time': use_sim_time}
+    node_robot_state_publisher = Node(
+        package='demo_pkg', executable='echo_args', output='screen', parameters=[params])
+    return LaunchDescription([
+        node_robot_state_publisher,
+        LogInfo(msg=['use_sim_time=', use_sim_time, ' gui=', LaunchConfiguration('gui', default=False),
+                     ' mixed=', LaunchConfiguration('mixed', default=[1, '-', 2.5])]),
+        LogInfo(msg='sim clock', condition=IfCondition(use_sim_time)),
+        # Launch Arguments
+        DeclareLaunchArgument(
+            'use_sim_time',
+            default_value=use_sim_time,
+            description='If true, use simulated clock'),
+    ])
+"""
+
+
+def test_a_launch_configuration_default_that_is_not_text_is_its_text_as_in_launch(prefix):
+    """gz_ros2_control's demos write ``LaunchConfiguration('use_sim_time', default=True)`` and declare the
+    argument with it as its own default: launch turns the bool into the text ``True``
+    (launch/substitutions/launch_configuration.py)."""
+    write(prefix / "share" / "demo_pkg" / "launch" / "demo.launch.py", GZ_ROS2_CONTROL_DEMO)
+    out = ros2(["launch", "demo_pkg", "demo.launch.py"], prefix)
+    text = out.stdout + out.stderr
+    assert out.returncode == 0, text
+    assert "Traceback" not in text
+    for line in (
+        "[INFO] [launch.user]: use_sim_time=True gui=False mixed=1-2.5",
+        "[INFO] [launch.user]: sim clock",
+    ):
+        assert line in text, f"missing {line!r} in:\n{text}"
+    params = " ".join(ln for ln in text.splitlines() if ln.startswith("[echo_args-") and "PARAMS" in ln)
+    assert "use_sim_time: true" in params, text
+    # the argument it declares still takes a value from the command line
+    out = ros2(["launch", "demo_pkg", "demo.launch.py", "use_sim_time:=false"], prefix)
+    text = out.stdout + out.stderr
+    assert out.returncode == 0 and "use_sim_time=false gui=False" in text and "sim clock" not in text, text
+    params = " ".join(ln for ln in text.splitlines() if ln.startswith("[echo_args-") and "PARAMS" in ln)
+    assert "use_sim_time: false" in params, text
+
+
+def test_equals_substitutions_take_bools_numbers_and_none_as_in_launch(prefix):
+    """launch's EqualsSubstitution (launch/substitutions/equals_substitution.py) writes a bool operand as
+    ``true``/``false``, None as ``''``, anything else with ``str()``, and compares two bools as bools and two
+    numbers as numbers; NotEqualsSubstitution is its negation (``IfCondition(EqualsSubstitution(
+    LaunchConfiguration('use_sim_time'), True))`` in Jazzy launch files)."""
+    write(
+        prefix / "share" / "demo_pkg" / "launch" / "equals.launch.py",
+        """
+        from launch import LaunchDescription
+        from launch.actions import DeclareLaunchArgument, LogInfo
+        from launch.conditions import IfCondition
+        from launch.substitutions import EqualsSubstitution, LaunchConfiguration, NotEqualsSubstitution
+
+
+        def generate_launch_description():
+            sim = LaunchConfiguration('use_sim_time')
+            return LaunchDescription([
+                DeclareLaunchArgument('use_sim_time', default_value='1'),
+                LogInfo(msg='sim clock', condition=IfCondition(EqualsSubstitution(sim, True))),
+                LogInfo(msg=['equals ', EqualsSubstitution('1.0', 1), ' ', EqualsSubstitution(None, ''), ' ',
+                             EqualsSubstitution('a', 'b'), ' ', NotEqualsSubstitution(sim, False)]),
+            ])
+        """,
+    )
+    out = ros2(["launch", "demo_pkg", "equals.launch.py"], prefix)
+    text = out.stdout + out.stderr
+    assert out.returncode == 0, text
+    assert "[INFO] [launch.user]: sim clock" in text and "[INFO] [launch.user]: equals true true false true" in text
+
+
+def test_a_bool_where_launch_takes_only_text_is_refused_as_in_launch_with_the_line(prefix):
+    """``DeclareLaunchArgument(default_value=True)`` fails in ROS 2's launch too (its
+    normalize_to_list_of_substitutions takes text and substitutions only): refused, the user's line and
+    what was given named."""
+    write(
+        prefix / "share" / "demo_pkg" / "launch" / "bool.launch.py",
+        """
+        from launch import LaunchDescription
+        from launch.actions import DeclareLaunchArgument
+
+
+        def generate_launch_description():
+            return LaunchDescription([DeclareLaunchArgument('use_sim_time', default_value=True)])
+        """,
+    )
+    out = ros2(["launch", "demo_pkg", "bool.launch.py"], prefix)
+    assert out.returncode == 1
+    assert 'bool.launch.py", line 7, in generate_launch_description' in out.stderr, out.stderr
+    assert "expected a string, a substitution or a list of them, got bool: True" in out.stderr, out.stderr
+
+
 def test_show_args_lists_the_arguments_of_the_file_and_its_includes(prefix):
     launch_dir = prefix / "share" / "demo_pkg" / "launch"
     write(launch_dir / "included.launch.py", INCLUDED)

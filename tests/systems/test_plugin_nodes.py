@@ -4,9 +4,10 @@ the bridge is given; the ROS side is tested in tests/integration/test_ros2cli.py
 
 from __future__ import annotations
 
+import pytest
 from _paths import SEED_XACRO
 
-from gazelle.description import load
+from gazelle.description import load, load_string
 from gazelle.sim import Simulation
 from gazelle.systems import PluginNode
 from systems.test_sensors import _lidar, _lidar_model, _record, _spawn
@@ -53,3 +54,72 @@ def test_a_sensor_node_s_update_rate_is_set_at_run_time_and_checked(make_sim):
     assert "must be a number >= 0" in (node.settable["update_rate"]("fast") or "")
     assert "must be a number >= 0" in (node.settable["update_rate"](-1.0) or "")
     assert _lidar(scanner).rate_hz == 2.0
+
+
+@pytest.mark.parametrize(
+    ("ros", "node", "topic"),
+    [
+        # articubot_one's lidar: the deprecated bare rule, which rcl still applies before --ros-args
+        ("<namespace>/x</namespace><argument>~/out:=scan</argument>", "/x/my_laser", "/x/scan"),
+        (
+            "<namespace>x</namespace><argument>--ros-args</argument><argument>-r</argument><argument>~/out:=scan</argument>",
+            "/x/my_laser",
+            "/x/scan",
+        ),
+        # one argv word with spaces is no ROS argument and no rule: rcl leaves ~/out alone
+        ("<namespace>/x</namespace><argument>--ros-args -r ~/out:=scan</argument>", "/x/my_laser", "/x/my_laser/out"),
+        # after the ROS arguments' explicit end (--) a bare rule is one again; inside them it needs -r
+        (
+            "<argument>--ros-args</argument><argument>--</argument><argument>-r</argument><argument>~/out:=a</argument>",
+            "/my_laser",
+            "/a",
+        ),
+        ("<argument>--ros-args</argument><argument>~/out:=scan</argument>", "/my_laser", "/my_laser/out"),
+        # __ns:= moves the node, as rcl's node namespace remapping does
+        (
+            "<namespace>/x</namespace><argument>__ns:=/y</argument><argument>~/out:=scan</argument>",
+            "/y/my_laser",
+            "/y/scan",
+        ),
+        # the <argument>s come before the <remapping>s, and rcl takes the first rule that matches
+        (
+            "<namespace>/x</namespace><remapping>~/out:=second</remapping><argument>~/out:=first</argument>",
+            "/x/my_laser",
+            "/x/first",
+        ),
+    ],
+)
+def test_a_plugins_ros_arguments_remap_its_node_as_gazebo_ros_hands_them_to_rcl(make_sim, ros, node, topic):
+    """gazebo_ros/src/node.cpp gives the plugin's node its ``<argument>`` texts, then ``--ros-args --remap`` for
+    each ``<remapping>``; rcl (humble's arguments.c) reads ``from:=to`` before ``--ros-args`` as a rule (its
+    deprecated form) and after ``-r`` within them. The ray sensor's ``~/out`` is its node's private topic."""
+    sim = make_sim()
+    _spawn(sim, _lidar_model(ros=f"<ros>{ros}</ros>"), "scanner")
+    assert set(_nodes(sim)) == {node}
+    owners = {(e.topic, e.node) for e in sim.bus.endpoints() if e.is_publisher}
+    assert (topic, node) in owners, owners
+    scans = _record(sim, topic)
+    sim.step(150)
+    assert len(scans) == 2
+
+
+def test_every_gazebo_ros_plugin_takes_its_ros_arguments_as_the_diff_drive_demo_world_writes_them(make_sim):
+    """gazebo_plugins' Dashing demo world (gazebo_ros_diff_drive_demo.world) renames the drive's topics with
+    ``<argument>cmd_vel:=cmd_demo</argument>`` and ``<argument>odom:=odom_demo</argument>``; a p3d beside it
+    (``<argument>odom:=p3d_demo</argument>``, its gazebo_ros_p3d_demo.world) under a namespace."""
+    ros = "<ros><namespace>/demo</namespace><argument>cmd_vel:=cmd_demo</argument><argument>odom:=odom_demo</argument></ros>"
+    p3d = (
+        '<plugin name="p3d" filename="libgazebo_ros_p3d.so"><ros><namespace>/demo</namespace>'
+        "<argument>odom:=p3d_demo</argument></ros><body_name>base_link</body_name></plugin>"
+    )
+    urdf = load(SEED_XACRO).model.urdf.replace("<left_joint>", f"{ros}<left_joint>", 1)
+    urdf = urdf.replace("</robot>", f"<gazebo>{p3d}</gazebo></robot>")
+    sim = make_sim()
+    sim.spawn(load_string(urdf).model, name="bot")
+    owners = {(e.topic, e.node, e.is_publisher) for e in sim.bus.endpoints()}
+    assert {
+        ("/demo/cmd_demo", "/demo/differential_drive", False),
+        ("/demo/odom_demo", "/demo/differential_drive", True),
+        ("/demo/p3d_demo", "/demo/p3d", True),
+    } <= owners, owners
+    assert not [o for o in owners if o[0] in ("/demo/cmd_vel", "/demo/odom", "/cmd_vel", "/odom")]

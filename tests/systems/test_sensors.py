@@ -40,8 +40,10 @@ def _lidar_model(
     output: str = "sensor_msgs/LaserScan",
     vertical: str = "",
     z: float = 0.5,
+    ros: str = "<ros><remapping>~/out:=scan</remapping></ros>",
 ) -> str:
-    """A static post carrying a lidar at height ``z`` with a gazebo_ros ray sensor plugin (``~/out:=scan``)."""
+    """A static post carrying a lidar at height ``z`` with a gazebo_ros ray sensor plugin (``~/out:=scan``,
+    or the plugin's ``ros`` block)."""
     return f"""<?xml version="1.0"?>
 <sdf version="1.9"><model name="scanner"><static>true</static>
   <link name="base">
@@ -56,7 +58,7 @@ def _lidar_model(
         {noise}
       </ray>
       <plugin name="my_laser" filename="libgazebo_ros_ray_sensor.so">
-        <ros><remapping>~/out:=scan</remapping></ros>
+        {ros}
         <output_type>{output}</output_type>
       </plugin>
     </sensor>

@@ -203,6 +203,35 @@ def test_find_models_lists_model_folders_and_description_files(tmp_path) -> None
     assert labels == {"my_box/model.sdf", "robots/r.urdf"}
 
 
+def test_find_models_lists_a_model_colcon_symlink_installed(tmp_path) -> None:
+    """``colcon build --symlink-install`` links a model's model.config and model.sdf into the install prefix
+    (issue 49): the model is offered, its SDF read through the link; a model whose SDF links out of the
+    workspace is not."""
+    from gazelle.description import ResourceResolver
+    from gazelle.viewer._models import find_models
+
+    ws = tmp_path / "ws"
+    (ws / "install").mkdir(parents=True)
+    (ws / "install" / ".colcon_install_layout").write_text("isolated\n")
+    (ws / "build").mkdir()
+    (ws / "build" / ".built_by").write_text("colcon\n")
+    models, src = ws / "install" / "pkg" / "share" / "pkg" / "models", ws / "src" / "pkg" / "models"
+    (tmp_path / "elsewhere.sdf").write_text("<sdf version='1.6'><model name='x'/></sdf>")
+    for name, sdf in (("arena", src / "arena" / "model.sdf"), ("leak", tmp_path / "elsewhere.sdf")):
+        (src / name).mkdir(parents=True)
+        (src / name / "model.config").write_text(
+            f"<model><name>{name}</name><sdf version='1.6'>model.sdf</sdf></model>"
+        )
+        if not sdf.exists():
+            sdf.write_text(f"<sdf version='1.6'><model name='{name}'/></sdf>")
+        (models / name).mkdir(parents=True)
+        (models / name / "model.config").symlink_to(src / name / "model.config")
+        (models / name / "model.sdf").symlink_to(sdf)
+    found = find_models(ResourceResolver(extra_paths=[models], env={}))
+    assert [m.label for m in found] == ["arena/model.sdf"]
+    assert found[0].path.resolve() == src / "arena" / "model.sdf"
+
+
 def test_trail_contacts_and_spawn_from_the_resource_paths(monkeypatch, make_sim) -> None:
     from gazelle.viewer import Viewer
 

@@ -28,7 +28,7 @@ from ...description import MAX_PARAMS_FILE_BYTES, JointType, ResourceResolver
 from ...physics import PhysicsWorld
 from .._base import RateGate, System, SystemContext, UpdateInfo
 from .._bus import remap_problem
-from .._plugin_config import child_text, parse_bool, remap_arguments, ros_block, ros_remaps
+from .._plugin_config import child_text, parse_bool, remap_arguments, ros_remaps
 from ._blocks import PlannedBlocks
 from ._broadcasters import (
     ForceTorqueSensorBroadcaster,
@@ -162,7 +162,9 @@ class ControllerManager(System):
         self._ctx = ctx
         model = ctx.entity.model
         cfg = ctx.plugin.config if ctx.plugin is not None else None
-        ns, _ = ros_block(cfg)
+        # the <ros><namespace> only: gz_ros2_control / gazebo_ros2_control build the manager's node themselves,
+        # without gazebo_ros's <argument> elements (ros_block's)
+        ns = child_text(cfg.find("ros") if cfg is not None else None, "namespace") or ""
         # gz_ros2_control / gazebo_ros2_control pass <ros><remapping> to the manager's node as arguments, and
         # ros2_control Jazzy hands the manager's arguments on to every controller's node (controller_manager.cpp,
         # determine_controller_node_options): a remapped controller topic is remapped here the same way

@@ -9,7 +9,8 @@ Each sensor is a :class:`System` made for one ``<sensor>`` of a link (or, for RO
 ``libgazebo_ros_imu.so``, for a model plugin naming a ``<bodyName>``):
 
 * **gazebo_ros** (Gazebo Classic): a ``<plugin>`` inside the ``<sensor>`` publishes it on ``~/out``,
-  which is ``/<ns>/<plugin name>/out`` unless ``<ros><remapping>~/out:=scan</remapping>`` renames it,
+  which is ``/<ns>/<plugin name>/out`` unless ``<ros><remapping>~/out:=scan</remapping>`` (or Dashing's
+  ``<argument>~/out:=scan</argument>``) renames it,
   in ``<frame_name>`` (else the sensor's link). ``libgazebo_ros_ray_sensor.so`` takes ``<output_type>``
   (``sensor_msgs/PointCloud2`` by default, ``LaserScan`` or ``Range``), ``<radiation_type>`` and
   ``<min_intensity>``; ``libgazebo_ros_imu_sensor.so`` takes ``<initial_orientation_as_reference>``.

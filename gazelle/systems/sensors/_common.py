@@ -235,7 +235,8 @@ class SensorPluginConfig:
     """IMU (``<initial_orientation_as_reference>``, ROS 1: ``<initialOrientationAsReference>``): report the
     orientation relative to the sensor's spawn orientation instead of the world (REP 145's reference)."""
     topic: str = "~/out"
-    """``~/out`` in ROS 2 (rename it with ``<ros><remapping>~/out:=scan``); ROS 1: ``<topicName>``."""
+    """``~/out`` in ROS 2 (rename it with ``<ros><remapping>~/out:=scan``, or Dashing's
+    ``<argument>~/out:=scan``); ROS 1: ``<topicName>``."""
     body_name: str = ""
     """ROS 1's IMU model plugin: ``<bodyName>``, the link it measures."""
     update_rate: float = 0.0
@@ -247,7 +248,7 @@ class SensorPluginConfig:
     namespace: str = ""
     """``<ros><namespace>`` (ROS 1: ``<robotNamespace>``); default the entity's namespace."""
     remappings: tuple[tuple[str, str], ...] = ()
-    """``<ros><remapping>from:=to``."""
+    """``<ros><argument>from:=to`` and ``<ros><remapping>from:=to``, as gazebo_ros gives them to rcl."""
 
 
 def parse_plugin_config(ctx: SystemContext) -> SensorPluginConfig:
