@@ -23,6 +23,7 @@ README_MAX_LINES = 300
 
 _LINK = re.compile(r"(?<!!)\[[^\]]*\]\(([^)\s]+)\)")
 _FENCE = re.compile(r"^```(\w*)\s*$")
+_INLINE_CODE = re.compile(r"`[^`]*`")
 # console scripts gazelle installs beside `gazelle` and `ros2` (pyproject's [project.scripts])
 _OTHER_SCRIPTS = {"gzserver", "gzclient"}
 
@@ -55,7 +56,7 @@ def broken_links(page: Path) -> list[str]:
             in_code = not in_code
         if in_code:
             continue
-        for target in _LINK.findall(line):
+        for target in _LINK.findall(_INLINE_CODE.sub("", line)):
             if re.match(r"^[a-z]+:", target):  # http:, https:, mailto:
                 continue
             path_part, _, anchor = target.partition("#")
@@ -128,7 +129,7 @@ def test_the_checks_can_fail(tmp_path: Path) -> None:
     page = tmp_path / "page.md"
     page.write_text(
         "# Page\n\n[ok](other.md#a-heading) [gone](missing.md) [bad anchor](other.md#nope)\n"
-        "[web](https://example.org/x)\n\n```bash\ngazelle sim &\ngazelle teleport x\nros2 topic list && ros2 frobnicate\n```\n"
+        "[web](https://example.org/x) `[a-z](_?[a-z])` is code, not a link\n\n```bash\ngazelle sim &\ngazelle teleport x\nros2 topic list && ros2 frobnicate\n```\n"
     )
     assert broken_links(page) == ["page.md:3: missing.md (no such file)", "page.md:3: other.md#nope (no such heading)"]
     assert unknown_commands(page) == ["page.md:8: gazelle teleport", "page.md:9: ros2 frobnicate"]
