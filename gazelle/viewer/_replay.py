@@ -21,7 +21,7 @@ PALETTE = ["#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42d4f4", "#f
 """Colours of the bodies, in the order they are met (the first is red; a ground plane stays pale)."""
 
 _PAGE = """<!DOCTYPE html>
-<html lang="en"><head><meta charset="utf-8"><title>__TITLE__</title>
+<html lang="en"><head><meta charset="utf-8"><meta name="generator" content="gazelle replay"><title>__TITLE__</title>
 <style>
 body { font: 13px system-ui, sans-serif; margin: 0; background: #f4f4f4; color: #222; display: flex; }
 #main { padding: 10px; }
