@@ -493,20 +493,15 @@ def sweep(
         atomic_write(log, "".join(json.dumps(r, sort_keys=True) + "\n" for r in previous))  # a kill keeps the old
     done_keys = {r.get("key") for r in previous}
     todo = [s for s in specs if s.key not in done_keys]
-    atomic_write(
-        folder / "sweep.json",
-        json.dumps(
-            {
-                "scenario": f"{path}::{name}",
-                "params": {n: list(v) for n, v in params},
-                "seeds": [min(seeds), max(seeds), len(seeds)],
-                "runs": len(specs),
-                "from": begin,
-                "python": sys.version.split()[0],
-            },
-            indent=2,
-        ),
-    )
+    about = {
+        "scenario": f"{path}::{name}",
+        "params": {n: list(v) for n, v in params},
+        "seeds": [min(seeds), max(seeds), len(seeds)],
+        "runs": len(specs),
+        "from": begin,
+        "python": sys.version.split()[0],
+    }
+    atomic_write(folder / "sweep.json", json.dumps(about, indent=2))
     result = SweepResult(folder, rows=list(previous))
     mode = "a" if resume else "w"
     artifacts = str(folder.resolve() / "artifacts")  # a run that does not pass leaves its replay here
