@@ -98,6 +98,15 @@ def test_a_library_in_a_folder_others_may_write_is_not_loaded_though_it_is_built
     assert folder.stat().st_mode & 0o777 == 0o777
 
 
+@pytest.mark.skipif(os.getuid() != 0, reason="giving a folder to another user takes root")
+def test_a_native_folder_another_user_owns_is_not_loaded_from(native, caplog: pytest.LogCaptureFixture) -> None:
+    _native, path = native
+    os.chown(path.parent, 65534, -1)  # nobody's, mode 0700 still
+    with caplog.at_level(logging.WARNING):
+        assert _native._load() is None
+    assert f"{path.parent} belongs to another user (uid 65534)" in caplog.text
+
+
 def test_a_library_name_swapped_between_the_check_and_the_load_loads_the_checked_file(
     native, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
