@@ -1,7 +1,8 @@
 """A ROS domain of a bench's own, set before anything imports rclpy.
 
-``GAZELLE_BENCH_DOMAIN_ID`` when given; else one reserved with the lock files gazelle's tests and robot-CI
-plugin hold (:func:`gazelle.testing.reserve_domain`), kept until the process exits. A domain picked from
+``GAZELLE_BENCH_DOMAIN_ID`` when given; else one reserved as gazelle's tests and robot-CI plugin reserve
+theirs (:func:`gazelle.testing.reserve_domain`: a bound port, as ROS 2's domain_coordinator does, and the
+lock file earlier versions held), kept until the process exits. A domain picked from
 the process id (``pid % 100 + 1``) could be a test worker's reserved domain: a bench run by the suite's
 smoke test on one worker then served the other worker's requests with its own world (the likely cause of
 a ``set_entity_state`` that found no entity just spawned, in a run beside a CPU hog).

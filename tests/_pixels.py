@@ -90,8 +90,9 @@ class ReplayPage:
         return self.page.locator("#view").screenshot()
 
 
-def open_replay(path: Any) -> Any:
-    """A context manager: a :class:`ReplayPage` of the HTML file at ``path`` (file://, no server)."""
+def open_replay(path: Any, timeout_ms: float = 30_000) -> Any:
+    """A context manager: a :class:`ReplayPage` of the HTML file at ``path`` (file://, no server), once its
+    script has run (failing after ``timeout_ms`` when it never does)."""
     import contextlib
 
     from playwright.sync_api import sync_playwright
@@ -105,7 +106,7 @@ def open_replay(path: Any) -> Any:
             try:
                 page = browser.new_page(viewport=VIEWPORT)
                 page.goto(path.as_uri())
-                page.wait_for_function("() => window.gazelleReplay !== undefined")
+                page.wait_for_function("() => window.gazelleReplay !== undefined", timeout=timeout_ms)
                 yield ReplayPage(page)
             finally:
                 browser.close()

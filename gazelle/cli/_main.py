@@ -100,8 +100,13 @@ SimReplay = Annotated[
         "--replay",
         help="Record where every body is (30 times a sim second) and, at shutdown (or at once on SIGUSR1), write "
         "a replay of the run since the last world reset: a page that opens from disk in a browser (FILE.html), "
-        "or its data (FILE.json). gazelle's pytest plugin keeps one for each failing test.",
+        "or its data (FILE.json). gazelle's pytest plugin keeps one for each failing test. An earlier replay "
+        "there is replaced; any other file is refused unless --force.",
     ),
+]
+SimForce = Annotated[
+    bool,
+    typer.Option("--force", help="Let --replay FILE replace a file that is not a replay (or a link, itself)."),
 ]
 
 
@@ -130,6 +135,7 @@ def sim(
     replay_topic: list[str] = typer.Option(
         [], "--replay-topic", help="A topic of the simulation's whose values the replay shows (repeatable)."
     ),
+    force: SimForce = False,
 ) -> None:
     """Run a simulation server: /clock, /spawn_entity, /delete_entity, every plugin's topics, and the browser viewer."""
     from ._sim import run_sim
@@ -151,6 +157,7 @@ def sim(
             drop_when_behind=drop_when_behind,
             replay=replay,
             replay_topics=tuple(replay_topic),
+            replay_force=force,
         )
     )
 

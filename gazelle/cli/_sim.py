@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from ..description import Model, ModelLoadError, World, load
-from ..sim import start_signal_watchdog
+from ..sim import ReplayRecorder, start_signal_watchdog
 from ..worlds import default_world
 
 GIL_SWITCH_INTERVAL_SEC = 0.0002
@@ -82,9 +82,13 @@ def run_sim(
     drop_when_behind: bool = False,
     replay: Path | None = None,
     replay_topics: tuple[str, ...] = (),
+    replay_force: bool = False,
 ) -> int:
     """Run the server; returns the process exit code."""
     logging.basicConfig(level=logging.INFO, format="[%(levelname)s] [%(name)s]: %(message)s", stream=sys.stderr)
+    if replay is not None and (why := ReplayRecorder.refusal(replay, replay_force)) is not None:
+        print(f"gazelle: --replay {why}", file=sys.stderr)  # said now, not after a run whose replay it loses
+        return 2
     stop, write_replay = _install_signal_handlers()
     start_signal_watchdog(
         SHUTDOWN_DEADLINE_SEC + 0.5
@@ -95,7 +99,7 @@ def run_sim(
         print(str(err), file=sys.stderr)
         return 1
     from ..ros import RosBridge, announce_often, choose_discovery_range
-    from ..sim import ReplayRecorder, Simulation
+    from ..sim import Simulation
 
     # The sim thread holds the GIL while it steps; ROS callbacks (a cmd_vel arriving) wait
     # for the interpreter's switch interval, 5 ms by default: at 30x real time that is
@@ -109,7 +113,11 @@ def run_sim(
         logging.getLogger().removeHandler(h)
     announce_often()  # before the first DDS participant: later processes find this one at once (see _dds)
     bridge = RosBridge(sim, clock_rate_hz=clock_rate_hz, announce=True, drop_when_behind=drop_when_behind)
-    replays = _Replays(ReplayRecorder(sim, topics=replay_topics), replay, world.name) if replay is not None else None
+    replays = (
+        _Replays(ReplayRecorder(sim, topics=replay_topics), replay, world.name, replay_force)
+        if replay is not None
+        else None
+    )
     sim.start()
     view = _start_viewer(sim, viewer_host, viewer_port, viewer_allow_origins) if viewer else None
     if view is not None and bridge.registry is not None:
@@ -148,8 +156,8 @@ def _install_signal_handlers() -> tuple[threading.Event, threading.Event]:
 class _Replays:
     """``--replay FILE``: the recorder and where (and as what) its replay is written."""
 
-    def __init__(self, recorder: Any, path: Path, world_name: str) -> None:
-        self.recorder, self.path, self.world_name = recorder, path, world_name
+    def __init__(self, recorder: Any, path: Path, world_name: str, force: bool = False) -> None:
+        self.recorder, self.path, self.world_name, self.force = recorder, path, world_name, force
         self.page = None
         if path.suffix.lower() in (".html", ".htm"):
             from ..viewer import replay_html  # now: the shutdown has 3 s for everything
@@ -162,9 +170,9 @@ class _Replays:
         try:
             if self.page is not None:
                 data = self.page(self.recorder.data(), title=f"gazelle replay: {self.world_name}")
-                self.recorder.write(self.path, data)
+                self.recorder.write(self.path, data, force=self.force)
             else:
-                self.recorder.write(self.path)
+                self.recorder.write(self.path, force=self.force)
         except OSError as err:
             print(f"gazelle: the replay was not written: {err}", file=sys.stderr)
 

@@ -9,7 +9,8 @@ memory and in ``$GAZELLE_CACHE_DIR`` (default ``~/.cache/gazelle/convex``), so o
 of a mesh pays for it (TurtleBot3's wall: 0.8 s, 6 parts).
 
 The cache is not trusted: its folder is created owner-only (``0700``) and a folder or entry that another
-user owns, or that others may write, is not used; an entry is read only when it is a regular file of at
+user owns, or that others may write (the folder or any folder above it: :func:`gazelle._files.private_folder`),
+is not used; an entry is read only when it is a regular file of at
 most :data:`MAX_ENTRY_BYTES`, holds the key of the mesh it was computed for, no more than
 :data:`COACD_MAX_PARTS` parts, and parts inside the mesh's bounding box. Anything else is recomputed
 (and replaced), with a warning. "The decomposition failed" is cached with the gazelle version that
@@ -26,6 +27,7 @@ them at most ``GAZELLE_DECOMPOSE_LOAD_BUDGET`` (2 s) in all: the rest finish in 
 from __future__ import annotations
 
 import hashlib
+import io
 import logging
 import os
 import queue
@@ -36,6 +38,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .._files import atomic_write, private_folder
 from ..description import BoundExceeded, Mesh, MeshReadError, Model, load_mesh, run_bounded
 
 _log = logging.getLogger("gazelle.physics")
@@ -140,6 +143,8 @@ MAX_ENTRY_BYTES = 16 << 20
 """The largest cache entry read (64 parts of a few hundred hull vertices are well under 1 MB)."""
 BOUNDS_SLACK = 0.02
 """How far (a fraction of the mesh's size, plus 1 µm) a cached part may stick out of the mesh's box."""
+CACHE_WHAT = "the convex-decomposition cache"
+"""What its folder is called in a refusal's warning."""
 
 
 def _gazelle_version() -> str:
@@ -150,26 +155,6 @@ def _gazelle_version() -> str:
         return version("gazelle")
     except Exception:  # not installed as a distribution (a source tree on sys.path)
         return "unknown"
-
-
-def _private_dir(folder: Path, what: str = "the convex-decomposition cache") -> bool:
-    """Create ``folder`` owner-only, or check that an existing one is this user's and not writable by
-    others; False (after a warning naming ``what`` it holds) when it is not, so nothing is read from or
-    written to it."""
-    try:
-        folder.mkdir(mode=0o700, parents=True, exist_ok=True)
-        info = folder.stat()
-    except OSError as err:
-        _log.debug(f"cannot use {what} {folder}: {err}")
-        return False
-    # a cache another user can write is a way to hand this process geometry (or a pickle, were it one): refused
-    if info.st_uid != os.getuid() or info.st_mode & 0o022:
-        _log.warning(
-            f"{what} {folder} belongs to another user or others may write to it; "
-            "it is not used (make it yours with mode 0700, or set GAZELLE_CACHE_DIR)"
-        )
-        return False
-    return True
 
 
 def _load_disk(path: Path, key: str, vertices: np.ndarray) -> tuple[tuple[np.ndarray, ...], str] | None:
@@ -223,21 +208,16 @@ def _implausible(pieces: tuple[np.ndarray, ...], vertices: np.ndarray) -> str | 
 def _save_disk(path: Path, key: str, pieces: tuple[np.ndarray, ...]) -> None:
     """Store a decomposition in the owner-only cache folder, atomically (written to a temporary file, then renamed);
     a folder that is not the user's own, or a read-only home, means no cache, never a failure."""
-    if not _private_dir(path.parent):
+    folder = private_folder(path.parent, CACHE_WHAT)
+    if folder is None:
         return
-    tmp = path.with_suffix(f".{os.getpid()}.{threading.get_ident()}.tmp.npz")
+    blob = io.BytesIO()
+    arrays = {f"p{i}": p for i, p in enumerate(pieces)}
+    np.savez(blob, key=np.asarray(key), version=np.asarray(_gazelle_version()), **arrays)  # pyright: ignore[reportArgumentType] - numpy's stub types **kwds of savez narrower than the arrays it takes
     try:
-        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
-        with os.fdopen(fd, "wb") as f:
-            arrays = {f"p{i}": p for i, p in enumerate(pieces)}
-            np.savez(f, key=np.asarray(key), version=np.asarray(_gazelle_version()), **arrays)  # pyright: ignore[reportArgumentType] - numpy's stub types **kwds of savez narrower than the arrays it takes
-        os.replace(tmp, path)
+        atomic_write(folder / path.name, blob.getvalue(), mode=0o600)
     except OSError as err:  # a read-only home: decompose again next time
         _log.debug(f"cannot cache a convex decomposition in {path.parent}: {err}")
-        try:
-            tmp.unlink()
-        except OSError:
-            pass
 
 
 def collision_parts(path: str, scale: tuple[float, float, float]) -> Parts | None:
@@ -275,8 +255,9 @@ def collision_parts(path: str, scale: tuple[float, float, float]) -> Parts | Non
     if len(faces) > max_faces:
         return _hull(key, path, f"it has {len(faces)} faces, more than GAZELLE_DECOMPOSE_MAX_FACES={max_faces}")
     folder = cache_dir()
-    disk = folder / f"{key}.npz"
-    usable = _private_dir(folder)
+    real = private_folder(folder, CACHE_WHAT)
+    disk = (real or folder) / f"{key}.npz"
+    usable = real is not None
     entry = _load_disk(disk, key, verts) if usable else None
     if entry is not None and entry[0] == () and entry[1] != _gazelle_version():
         entry = None  # failed with another gazelle version: this one tries once more

@@ -8,10 +8,17 @@ The library is built from its source with the system C compiler (the one the int
 built with) into ``$GAZELLE_CACHE_DIR/native`` (default ``~/.cache/gazelle/native``), named by a hash of
 the source, the MuJoCo version and the compile flags, so a new MuJoCo or a changed source builds anew.
 ``scripts/setup.sh`` builds it (:func:`main`); a process that finds it missing
-builds it on first use (an atomic rename: concurrent builders never see half a file). The folder is the
-cache's: owner-only, and a folder another user owns or may write to is refused. Where no compiler is
+builds it on first use (an atomic rename: concurrent builders never see half a file). Where no compiler is
 found the loop is unavailable: :func:`available` says so and the callers run their Python cycles
 (the same results, slower), after one warning.
+
+Loading code from a file is running it, so what is loaded is what was checked. The folder is checked at
+every start, built or not (:func:`gazelle._files.private_folder`: it and every folder above it out of other
+users' reach; one that is not is refused with one warning, and the Python cycles run). The library is opened
+once, without following a link, its descriptor checked (a regular file of this user's that no one else may
+write) and loaded through ``/proc/self/fd/N``: the file checked is the file mapped, even if its name were
+swapped between the two (a ``renameat2`` exchange in a folder others could write loaded their library in 5
+starts of 20 when the check and the load each went by name).
 """
 
 from __future__ import annotations
@@ -21,6 +28,7 @@ import hashlib
 import logging
 import os
 import shutil
+import stat
 import subprocess
 import sys
 import tempfile
@@ -30,7 +38,7 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from ._convex import _private_dir
+from .._files import private_folder
 
 _log = logging.getLogger(__name__)
 
@@ -41,6 +49,8 @@ CFLAGS = ("-O2", "-fPIC", "-shared", "-ffp-contract=off", "-fno-fast-math", "-st
 _lock = threading.Lock()
 _lib: ctypes.CDLL | None = None
 _tried = False
+_fd_names: set[str] = set()
+"""The ``/proc/self/fd/N`` names a library was loaded under (:func:`_fd_name` never reuses one)."""
 
 
 class ServoGroupStruct(ctypes.Structure):
@@ -111,16 +121,19 @@ def build(quiet: bool = False) -> Path | None:
     The library is named by the hash of its source, the compiler flags and the MuJoCo version (see
     :func:`library_path`), so a stale build is never loaded: a change to any of them is a new file. It is
     built into a temporary file in the owner-only cache folder and renamed into place (two processes
-    building at once each finish whole, and neither loads half a file); a folder another user could write
-    to is refused, as loading code from it would run theirs. Without a compiler the servo cycles run in
-    Python: the same numbers (the C loop mirrors the Python arithmetic, ``-ffp-contract=off``), slower.
+    building at once each finish whole, and neither loads half a file). A folder another user could write
+    to, or one above it, is refused whether the library is there or not: loading code from it would run
+    theirs. Without a compiler the servo cycles run in Python: the same numbers (the C loop mirrors the
+    Python arithmetic, ``-ffp-contract=off``), slower.
     The build is linked against the very ``libmujoco`` the Python bindings load, with its folder as the
     rpath: the loop reads the bindings' mjModel and mjData, whose layouts are that library's."""
-    target = library_path()
+    named = library_path()
+    folder = private_folder(named.parent, "the compiled servo loop's cache")  # every time: built or not
+    if folder is None:
+        return None
+    target = folder / named.name
     if target.is_file() and not target.is_symlink():
         return target
-    if not _private_dir(target.parent, "the compiled servo loop's cache"):
-        return None
     lib = _mujoco_library()
     cc = os.environ.get("CC") or shutil.which("cc") or shutil.which("gcc")
     if lib is None or cc is None:
@@ -162,8 +175,7 @@ def build(quiet: bool = False) -> Path | None:
 
 def _load() -> ctypes.CDLL | None:
     """The native servo library, built on first use and loaded once per process (None: not available, and
-    the Python path runs instead). ``GAZELLE_NO_NATIVE`` turns it off. A library file that another user owns
-    or others may write is refused with a warning: loading it would run their code in this process."""
+    the Python path runs instead). ``GAZELLE_NO_NATIVE`` turns it off."""
     global _lib, _tried
     with _lock:
         if _tried:
@@ -174,11 +186,9 @@ def _load() -> ctypes.CDLL | None:
         path = build(quiet=True)
         if path is None:
             return None
-        info = path.stat()
-        if info.st_uid != os.getuid() or info.st_mode & 0o022:
-            _log.warning(f"{path} belongs to another user or others may write to it: not loaded")
+        lib = _load_checked(path)
+        if lib is None:
             return None
-        lib = ctypes.CDLL(str(path))
         lib.gz_run_servo_groups.restype = ctypes.c_int
         lib.gz_run_servo_groups.argtypes = [
             ctypes.c_void_p,
@@ -190,6 +200,51 @@ def _load() -> ctypes.CDLL | None:
         lib.gz_last_error.restype = ctypes.c_char_p
         _lib = lib
         return lib
+
+
+def _load_checked(path: Path) -> ctypes.CDLL | None:
+    """The library at ``path`` loaded from the very file that was checked; None (after a warning) when that
+    file is not a regular file of this user's that no one else may write.
+
+    Opened once (``O_NOFOLLOW``: a link is not followed), checked by ``fstat`` of the descriptor, and loaded
+    through ``/proc/self/fd/N``, which names that open file and no other: a name swapped after the check
+    changes nothing. The descriptor is closed once the library is mapped."""
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC)
+    except OSError as err:
+        _log.warning(f"{path} cannot be opened ({err.strerror or err}): servo cycles run in Python")
+        return None
+    try:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode) or info.st_uid != os.getuid() or info.st_mode & 0o022:
+            _log.warning(
+                f"{path} is not a regular file of this user's that no one else may write: not loaded "
+                "(servo cycles run in Python)"
+            )
+            return None
+        name, spare = _fd_name(fd)
+        try:
+            return ctypes.CDLL(name)
+        finally:
+            for extra in spare:
+                os.close(extra)
+    finally:
+        os.close(fd)
+
+
+def _fd_name(fd: int) -> tuple[str, list[int]]:
+    """``/proc/self/fd/N`` for the open file ``fd``, with N a number this module has not loaded a library
+    under before (and the extra descriptors, duplicates of ``fd``, to close after the load).
+
+    glibc's ``dlopen`` returns the library it already loaded under the same name without opening the file,
+    so a name reused for another file (a second load in one process: tests) would map the first one."""
+    spare: list[int] = []
+    name = f"/proc/self/fd/{fd}"
+    while name in _fd_names:
+        spare.append(os.dup(fd))
+        name = f"/proc/self/fd/{spare[-1]}"
+    _fd_names.add(name)
+    return name, spare
 
 
 def available() -> bool:

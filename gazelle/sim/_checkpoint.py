@@ -31,6 +31,7 @@ import io
 import os
 import pickle
 import platform
+import stat
 import threading
 import types
 from pathlib import Path
@@ -38,6 +39,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .._files import atomic_write
 from ..physics import Entity
 from ..systems import Endpoint
 
@@ -345,13 +347,18 @@ def _systems_blob(sim: Simulation, entity: Entity) -> dict[str, Any]:
     }
 
 
-def save(sim: Simulation, path: str | os.PathLike[str]) -> Path:
+def save(sim: Simulation, path: str | os.PathLike[str], force: bool = False) -> Path:
     """Write ``sim``'s checkpoint to ``path`` (owner-only); call on the simulation thread or while it is
     not running.
 
     Owner-only because a checkpoint is a pickle: whoever can write one can run code in the process that
-    loads it, so no other user may replace it; it is written beside the target and renamed over it, so a
-    reader sees the old file or the new one, never half of one."""
+    loads it, so no other user may replace it. Written through :func:`gazelle._files.atomic_write` (a new
+    file of a random name beside the target, renamed over it): a reader sees the old file or the new one,
+    never half of one, and nothing planted beside the target is written through. A file at ``path`` that is
+    not a checkpoint (a link included) is not replaced unless ``force``."""
+    why = _refusal(Path(path), force)
+    if why is not None:
+        raise CheckpointError(why)
     world = sim.world
     entities = [
         {"name": e.name, "model": e.model, "X_WM": e.X_WM, "namespace": e.namespace, "spawned": e.spawned}
@@ -376,13 +383,36 @@ def save(sim: Simulation, path: str | os.PathLike[str]) -> Path:
         blob = pickle.dumps(payload, protocol=pickle.HIGHEST_PROTOCOL)
     except Exception as err:
         raise CheckpointError(f"cannot save the world's description: {err}") from None
-    out = Path(path)
-    tmp = out.with_name(out.name + f".{os.getpid()}.tmp")
-    fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
-    with os.fdopen(fd, "wb") as f:
-        f.write(blob)
-    os.replace(tmp, out)
-    return out
+    try:
+        return atomic_write(path, blob, mode=0o600)
+    except OSError as err:
+        raise CheckpointError(f"{path}: {err.strerror or err}") from None
+
+
+def _refusal(path: Path, force: bool) -> str | None:
+    """Why a checkpoint must not replace what is at ``path`` (None: nothing is there, a checkpoint is, or
+    ``force``). A checkpoint is recognised by its pickle's first key, ``MAGIC``, in its first bytes; nothing
+    is unpickled to tell."""
+    if force:
+        return None
+    try:
+        info = path.lstat()
+    except FileNotFoundError:
+        return None
+    except OSError as err:
+        return f"{path}: {err.strerror or err}"
+    head = b""
+    if stat.S_ISREG(info.st_mode):
+        try:
+            fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC)
+            with os.fdopen(fd, "rb") as f:
+                head = f.read(64)
+        except OSError:
+            pass
+    if MAGIC.encode() in head:
+        return None
+    kind = "a link" if stat.S_ISLNK(info.st_mode) else "not a checkpoint"
+    return f"{path} exists and is {kind}: it is not overwritten (name another file, or pass force=True)"
 
 
 def read(path: str | os.PathLike[str]) -> dict[str, Any]:

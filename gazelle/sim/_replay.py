@@ -16,12 +16,14 @@ import enum
 import json
 import math
 import os
+import stat
 import threading
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from .._files import atomic_write
 from ..physics import WorldError
 from ..systems import UpdateInfo
 from ._scene import SceneShape, link_shapes
@@ -34,8 +36,31 @@ MAX_TOPIC_SAMPLES = 2_000
 """Messages kept per topic before that topic thins itself."""
 MAX_FIELDS = 24
 """Fields shown of a message."""
+REPLAY_SIGNATURES = (
+    b'{"shapes":',
+    b'<meta name="generator" content="gazelle replay">',
+    b'<script id="data" type="application/json">',
+)
+"""What a replay file holds in its first :data:`SIGNATURE_BYTES` bytes: its data (JSON) starts with the first;
+a replay page (:func:`gazelle.viewer.replay_html`) has the second in its head, and one that an earlier gazelle
+wrote the third. A file with none of them is not overwritten by a replay unless forced."""
+SIGNATURE_BYTES = 4096
 FLOAT32_FIELDS = ("ranges", "intensities")
 """Byte fields of the bus's messages that hold float32 arrays (LaserScan's)."""
+
+
+def _starts_like_a_replay(path: Path) -> bool:
+    """Whether the regular file ``path`` starts as a replay does (:data:`REPLAY_SIGNATURES`); opened without
+    following a link, or waiting on a FIFO."""
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC)
+    except OSError:
+        return False
+    with os.fdopen(fd, "rb") as f:
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            return False
+        head = f.read(SIGNATURE_BYTES)
+    return head.startswith(REPLAY_SIGNATURES[0]) or any(mark in head for mark in REPLAY_SIGNATURES[1:])
 
 
 def _shape(s: SceneShape) -> dict[str, Any]:
@@ -229,14 +254,40 @@ class ReplayRecorder:
             out.append([t, dict(zip(names, rounded))])
         return {"shapes": shapes, "frames": out, "topics": topics}
 
-    def write(self, path: str | os.PathLike[str], text: str | None = None) -> Path:
+    def write(self, path: str | os.PathLike[str], text: str | None = None, force: bool = False) -> Path:
         """Write ``text`` (default: :meth:`data` as JSON) to ``path``, whole or not at all.
 
-        Written beside the target and renamed over it (``os.replace`` is atomic on one file system), so a
-        run killed mid-write (a test's timeout, Ctrl-C) leaves the previous replay or none, never a page
-        that fails to parse."""
+        Written through :func:`gazelle._files.atomic_write` (a new file of a random name beside the target,
+        renamed over it), so a run killed mid-write (a test's timeout, Ctrl-C) leaves the previous replay or
+        none, never a page that fails to parse, and nothing planted beside the target is written through.
+
+        Raises:
+            FileExistsError: ``path`` is there and is not a replay (see :meth:`refusal`), unless ``force``.
+        """
         out = Path(path)
-        tmp = out.with_name(f".{out.name}.{os.getpid()}.tmp")
-        tmp.write_text(text if text is not None else json.dumps(self.data(), separators=(",", ":")))
-        os.replace(tmp, out)
-        return out
+        why = self.refusal(out, force)
+        if why is not None:
+            raise FileExistsError(why)
+        return atomic_write(out, text if text is not None else json.dumps(self.data(), separators=(",", ":")))
+
+    @staticmethod
+    def refusal(path: str | os.PathLike[str], force: bool = False) -> str | None:
+        """Why a replay must not be written to ``path`` (one line), or None when it may: nothing is there,
+        or a replay is (a page or data a replay wrote, :data:`REPLAY_SIGNATURES`), or ``force``.
+
+        Anything else is refused, as rosbag2 refuses an existing output: ``--replay "my world.sdf"`` once
+        replaced the world. A link counts as something else, whatever it points to: a forced write replaces
+        the link itself, never its target."""
+        out = Path(path)
+        if force:
+            return None
+        try:
+            info = out.lstat()
+        except FileNotFoundError:
+            return None
+        except OSError as err:
+            return f"{out}: {err.strerror or err}"
+        if stat.S_ISREG(info.st_mode) and _starts_like_a_replay(out):
+            return None
+        kind = "a link" if stat.S_ISLNK(info.st_mode) else "not a replay"
+        return f"{out} exists and is {kind}: it is not overwritten (name another file, or pass --force)"

@@ -479,17 +479,19 @@ class Simulation(SpawningMixin):
         self._divergence_log[name] = (count, last)
 
     # ------------------------------------------------------------------ checkpoints
-    def checkpoint(self, path: str | os.PathLike[str]) -> Path:
+    def checkpoint(self, path: str | os.PathLike[str], force: bool = False) -> Path:
         """Save everything this run needs to go on bit-identically to ``path`` (owner-only): the world and
         its entities, MuJoCo's whole data, every system's and controller's state, the noise streams (see
-        :mod:`gazelle.sim._checkpoint`). :meth:`from_checkpoint` goes on from it, in any process.
+        :mod:`gazelle.sim._checkpoint`). :meth:`from_checkpoint` goes on from it, in any process. An earlier
+        checkpoint at ``path`` is replaced; any other file only with ``force``.
 
         Raises:
-            CheckpointError: something a system holds cannot be saved (the message names it).
+            CheckpointError: something a system holds cannot be saved (the message names it), ``path`` holds
+                something else than a checkpoint, or it cannot be written.
         """
         from . import _checkpoint
 
-        return self.call(lambda: _checkpoint.save(self, path))
+        return self.call(lambda: _checkpoint.save(self, path, force))
 
     @classmethod
     def from_checkpoint(cls, path: str | os.PathLike[str], world: World | None = None) -> Simulation:

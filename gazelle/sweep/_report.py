@@ -11,6 +11,8 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
+from .._files import atomic_write
+
 
 def _numeric(v: Any) -> bool:
     """Whether ``v`` can be plotted as a number: a finite int or float, not a bool (Python's ``True`` is an
@@ -111,4 +113,4 @@ td,th{{border:1px solid #ccc;padding:4px 8px;text-align:left;vertical-align:top}
 {failing_rows}
 </table></body></html>
 """
-    path.write_text(page)
+    atomic_write(path, page)

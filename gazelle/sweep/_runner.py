@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from .._files import atomic_write, private_folder
 from ._spec import ParamValue, RunSpec, SweepError, grid, load_scenario, scenario_from_file
 
 RESULTS = "runs.jsonl"
@@ -251,16 +252,24 @@ def _source_file(source: str, origin: str) -> Path:
         pass
 
     digest = hashlib.sha256((origin + "\0" + source).encode()).hexdigest()[:16]
-    folder = Path(tempfile.gettempdir()) / f"gazelle-scenarios-{os.getuid()}"
-    folder.mkdir(mode=0o700, exist_ok=True)
-    if folder.stat().st_uid != os.getuid() or folder.stat().st_mode & 0o077:
-        raise PermissionError(f"{folder} is not this user's own folder")
+    folder = _own_folder(f"gazelle-scenarios-{os.getuid()}")
     path = folder / f"{digest}_{Path(origin).name}"
     if not path.is_file() or path.read_text() != source:
-        tmp = path.with_suffix(".tmp")
-        tmp.write_text(source)
-        tmp.replace(path)
+        atomic_write(path, source, mode=0o600)
     return path
+
+
+def _own_folder(name: str) -> Path:
+    """``$TMPDIR/name``, this user's own (made 0700; see :func:`gazelle._files.private_folder`), for the files a
+    Ray worker is shipped (a scenario is code, a checkpoint a pickle: no other user may replace them).
+
+    Raises:
+        PermissionError: it exists and is not this user's own, or others may write to it.
+    """
+    folder = private_folder(Path(tempfile.gettempdir()) / name, "the folder of a sweep's shipped files")
+    if folder is None:
+        raise PermissionError(f"{Path(tempfile.gettempdir()) / name} is not this user's own folder")
+    return folder
 
 
 def _ray_task(
@@ -285,17 +294,10 @@ def _checkpoint_file(blob: bytes | None) -> str | None:
         return None
     import hashlib
 
-    folder = Path(tempfile.gettempdir()) / f"gazelle-checkpoints-{os.getuid()}"
-    folder.mkdir(mode=0o700, exist_ok=True)
-    if folder.stat().st_uid != os.getuid() or folder.stat().st_mode & 0o077:
-        raise PermissionError(f"{folder} is not this user's own folder")
+    folder = _own_folder(f"gazelle-checkpoints-{os.getuid()}")
     path = folder / f"{hashlib.sha256(blob).hexdigest()[:24]}.ckpt"
     if not path.is_file() or hashlib.sha256(path.read_bytes()).digest() != hashlib.sha256(blob).digest():
-        tmp = path.with_name(f"{path.name}.{os.getpid()}.tmp")
-        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
-        with os.fdopen(fd, "wb") as f:
-            f.write(blob)
-        tmp.replace(path)
+        atomic_write(path, blob, mode=0o600)
     return str(path)
 
 
@@ -488,22 +490,18 @@ def sweep(
     log = folder / RESULTS
     previous = read_rows(log) if resume else []
     if resume:  # the whole rows only: a line torn by a kill mid-write is dropped (its run runs again)
-        log.write_text("".join(json.dumps(r, sort_keys=True) + "\n" for r in previous))
+        atomic_write(log, "".join(json.dumps(r, sort_keys=True) + "\n" for r in previous))  # a kill keeps the old
     done_keys = {r.get("key") for r in previous}
     todo = [s for s in specs if s.key not in done_keys]
-    (folder / "sweep.json").write_text(
-        json.dumps(
-            {
-                "scenario": f"{path}::{name}",
-                "params": {n: list(v) for n, v in params},
-                "seeds": [min(seeds), max(seeds), len(seeds)],
-                "runs": len(specs),
-                "from": begin,
-                "python": sys.version.split()[0],
-            },
-            indent=2,
-        )
-    )
+    about = {
+        "scenario": f"{path}::{name}",
+        "params": {n: list(v) for n, v in params},
+        "seeds": [min(seeds), max(seeds), len(seeds)],
+        "runs": len(specs),
+        "from": begin,
+        "python": sys.version.split()[0],
+    }
+    atomic_write(folder / "sweep.json", json.dumps(about, indent=2))
     result = SweepResult(folder, rows=list(previous))
     mode = "a" if resume else "w"
     artifacts = str(folder.resolve() / "artifacts")  # a run that does not pass leaves its replay here

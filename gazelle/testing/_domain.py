@@ -1,9 +1,20 @@
-"""A ROS_DOMAIN_ID no other process on this machine holds, reserved with a lock file.
+"""A ROS_DOMAIN_ID no other process on this machine holds, whoever runs it.
 
 Two test runs on one machine (two developers, or a developer and CI) that picked the same domain would
-answer each other's service calls. A domain is taken by holding an exclusive ``flock`` on
-``$TMPDIR/gazelle-ros-domain-<id>.lock`` while it is in use; the kernel drops the lock when the
-process ends, however it ends, so a killed run never leaves a domain taken.
+answer each other's service calls, and DDS domains are the machine's, not a user's: the reservation must be
+seen by every user. A domain is taken by holding two things while it is in use, both dropped by the kernel
+when the process ends, however it ends (a killed run never leaves a domain taken):
+
+* a TCP socket bound to ``127.0.0.1:32768 + id``, ROS 2's own scheme (``domain_coordinator``, which
+  launch_testing and ament's test runners use: its port base, so a ROS package's tests on this machine and
+  gazelle's never share a domain either). Binding a port touches no file: nothing can be planted for it.
+* an exclusive ``flock`` on ``$TMPDIR/gazelle-ros-domain-<id>.lock``, the scheme of earlier gazelle versions,
+  so that their runs (another developer's checkout) and this one still see each other's domains. The file
+  is opened without following a link, created only with ``O_EXCL``, and used only if it is a regular file: a
+  planted link, a directory or a FIFO of that name makes the domain skipped, never a file created through the
+  link (as root, the plugin once created a planted link's target) nor an error out of the reservation.
+
+A port someone else holds, or a lock file that is taken or odd, means the next domain is tried.
 """
 
 from __future__ import annotations
@@ -11,44 +22,95 @@ from __future__ import annotations
 import contextlib
 import fcntl
 import os
+import socket
+import stat
 import tempfile
 from collections.abc import Iterator, Mapping
-from typing import IO
 
 FIRST, LAST = 10, 100
 """Domains handed out. Fast DDS maps a domain to UDP ports 7400 + 250 * id and up, and Linux's ephemeral
 ports start at 32768: ids up to 101 stay below them (ROS 2's own guidance for Linux)."""
+PORT_BASE = 32768
+"""Domain ``id`` is held by binding TCP port ``PORT_BASE + id`` on 127.0.0.1 (domain_coordinator's base)."""
 
 
 class DomainReservation:
     """One reserved domain id; :meth:`release` (or the end of the process) frees it."""
 
-    def __init__(self, domain_id: int, handle: IO[str]) -> None:
+    def __init__(self, domain_id: int, port: socket.socket, lock_fd: int) -> None:
         self.domain_id = domain_id
-        self._handle: IO[str] | None = handle
+        self._port: socket.socket | None = port
+        self._lock_fd: int | None = lock_fd
 
     def release(self) -> None:
-        if self._handle is not None:
-            self._handle.close()  # closing the file drops the flock
-            self._handle = None
+        """Free the domain: close the bound socket and the lock file (which drops the flock)."""
+        if self._port is not None:
+            self._port.close()
+            self._port = None
+        if self._lock_fd is not None:
+            os.close(self._lock_fd)
+            self._lock_fd = None
 
 
 def reserve_domain(preferred: int | None = None) -> DomainReservation:
     """The first free domain in [FIRST, LAST], starting at ``preferred`` (default: one picked from the
-    process id, so concurrent runs rarely contend for the same lock)."""
+    process id, so concurrent runs rarely contend for the same one)."""
     span = LAST - FIRST + 1
     start = preferred if preferred is not None else FIRST + os.getpid() % span
-    folder = tempfile.gettempdir()
     for k in range(span):
         domain = FIRST + (start - FIRST + k) % span
-        handle = open(os.path.join(folder, f"gazelle-ros-domain-{domain}.lock"), "a+")
-        try:
-            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError:
-            handle.close()
+        port = _bind_port(domain)
+        if port is None:
             continue
-        return DomainReservation(domain, handle)
+        lock_fd = _lock_file(domain)
+        if lock_fd is None:
+            port.close()
+            continue
+        return DomainReservation(domain, port, lock_fd)
     raise RuntimeError(f"no free ROS domain id in {FIRST}..{LAST}: {span} runs hold one each")
+
+
+def _bind_port(domain: int) -> socket.socket | None:
+    """A TCP socket bound to 127.0.0.1:``PORT_BASE + domain`` (not listening: nothing can connect), or None
+    when another process holds that port (domain_coordinator binds every interface, which conflicts too)."""
+    sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    try:
+        sock.bind(("127.0.0.1", PORT_BASE + domain))
+    except OSError:
+        sock.close()
+        return None
+    return sock
+
+
+def lock_path(domain: int) -> str:
+    """The lock file of ``domain`` earlier gazelle versions reserve it with."""
+    return os.path.join(tempfile.gettempdir(), f"gazelle-ros-domain-{domain}.lock")
+
+
+def _lock_file(domain: int) -> int | None:
+    """A descriptor holding the exclusive flock on :func:`lock_path`, or None when another process holds it or
+    the name is anything but a regular file (a link is never followed, nothing is created through one)."""
+    path = lock_path(domain)
+    flags = os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC
+    fd = None
+    for create in (0, os.O_CREAT | os.O_EXCL, 0):  # open; else create (refuses any name there); else it just was
+        try:
+            fd = os.open(path, flags | create, 0o644)
+            break
+        except (FileNotFoundError, FileExistsError):
+            continue
+        except OSError:  # a link (ELOOP), no permission...: this domain is skipped
+            return None
+    if fd is None:
+        return None
+    try:
+        if stat.S_ISREG(os.fstat(fd).st_mode):
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            return fd
+    except OSError:
+        pass
+    os.close(fd)
+    return None
 
 
 @contextlib.contextmanager

@@ -21,7 +21,7 @@ PALETTE = ["#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42d4f4", "#f
 """Colours of the bodies, in the order they are met (the first is red; a ground plane stays pale)."""
 
 _PAGE = """<!DOCTYPE html>
-<html lang="en"><head><meta charset="utf-8"><title>__TITLE__</title>
+<html lang="en"><head><meta charset="utf-8"><meta name="generator" content="gazelle replay"><title>__TITLE__</title>
 <style>
 body { font: 13px system-ui, sans-serif; margin: 0; background: #f4f4f4; color: #222; display: flex; }
 #main { padding: 10px; }
@@ -159,7 +159,8 @@ function draw(i) {
   }
   if (shown.length) document.getElementById("topics").innerHTML = shown.join("");
 }
-document.getElementById("key").innerHTML = bodies.map((e) => `<span style="background:${colorOf(e)}"></span>${e.replace(/</g, "&lt;")}`).join(" &nbsp; ");
+const escHtml = (x) => x.replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;");
+document.getElementById("key").innerHTML = bodies.map((e) => `<span style="background:${colorOf(e)}"></span>${escHtml(e)}`).join(" &nbsp; ");
 let playing = false, clock = 0, wall = 0;
 function seek(i) { slider.value = String(i); draw(i); }
 slider.addEventListener("input", () => draw(Number(slider.value)));
@@ -192,7 +193,21 @@ def replay_html(data: dict[str, Any], topics: dict[str, list[Any]] | None = None
         "frames": data.get("frames", []),
         "topics": topics if topics is not None else data.get("topics", {}),
     }
-    # inside <script type="application/json">: only "</" could end it early
-    text = json.dumps(payload, separators=(",", ":")).replace("</", "<\\/")
-    parts = {"TITLE": html.escape(title), "PALETTE": json.dumps(PALETTE), "DATA": text}
+    parts = {"TITLE": html.escape(title), "PALETTE": script_json(PALETTE), "DATA": script_json(payload)}
     return re.sub(r"__(TITLE|PALETTE|DATA)__", lambda m: parts[m.group(1)], _PAGE)  # one pass: data stays data
+
+
+_SCRIPT_ESCAPES = {ord("<"): "\\u003C", ord(">"): "\\u003E", ord("&"): "\\u0026"}
+
+
+def script_json(value: Any) -> str:
+    """``value`` as JSON that can sit inside an HTML ``<script>`` element, whatever its strings hold: every
+    ``<``, ``>`` and ``&`` written as ``\\u003C``, ``\\u003E``, ``\\u0026`` (as Django's ``json_script``
+    does), which JSON and JavaScript read back as the same characters.
+
+    Escaping only ``</`` is not enough: the HTML parser also reads ``<!--`` followed by ``<script`` inside a
+    script as the start of an escaped section, in which the element's own ``</script>`` no longer ends it,
+    so an entity named ``bot<!--<script>`` swallowed the page's code and left it blank. Non-ASCII characters
+    (U+2028 and U+2029 among them) are escaped by ``json.dumps`` already. Every JSON a page of gazelle's
+    embeds goes through here."""
+    return json.dumps(value, separators=(",", ":")).translate(_SCRIPT_ESCAPES)

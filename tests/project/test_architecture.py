@@ -20,7 +20,7 @@ from _paths import REPO
 PACKAGE = REPO / "gazelle"
 
 ALLOWED: dict[str, tuple[str, ...]] = {
-    "": (),  # gazelle/__init__.py and gazelle/_lazy.py
+    "": (),  # gazelle/__init__.py, gazelle/_lazy.py and gazelle/_files.py
     "description": (),
     "physics": ("description",),
     "systems": ("description", "physics"),
@@ -39,7 +39,8 @@ ALLOWED: dict[str, tuple[str, ...]] = {
 }
 """Every folder of the gazelle package -> the gazelle packages it may import (an allow-list: a new folder,
 or a new arrow between two, fails until it is declared here and in docs/architecture.md). Every folder may
-import ``gazelle._lazy`` (the lazy-attribute helper)."""
+import ``gazelle._lazy`` (the lazy-attribute helper) and ``gazelle._files`` (the one atomic writer and
+private-folder check)."""
 
 LAYERS = tuple(k for k in ALLOWED if k)
 
@@ -93,7 +94,7 @@ def _violations() -> list[str]:
                 found.append(
                     f"{where}: the {layer or 'top'} layer imports {mod} (only {', '.join(THIRD_PARTY[parts[0]])} may)"
                 )
-            if parts[0] != "gazelle" or len(parts) < 2 or parts[1] in ("_lazy", layer):
+            if parts[0] != "gazelle" or len(parts) < 2 or parts[1] in ("_lazy", "_files", layer):
                 continue
             if parts[1] not in ALLOWED[layer]:
                 found.append(f"{where}: the {layer or 'top'} layer imports gazelle.{parts[1]}, which it may not")

@@ -215,3 +215,24 @@ def test_a_killed_worker_is_retried_once_then_lost_and_a_hung_run_times_out(scen
     assert by_seed[1]["status"] == "lost" and "died under it twice" in by_seed[1]["error"]
     assert by_seed[3]["status"] == "timeout" and "longer than 1 s" in by_seed[3]["error"]
     assert by_seed[0]["status"] == by_seed[2]["status"] == "passed"
+
+
+def test_the_report_keeps_a_hostile_parameter_value_out_of_its_scripts(tmp_path: Path) -> None:
+    """The report's charts embed their data as JSON in scripts (plotly's, which writes ``<``, ``>`` and ``/``
+    as ``\\u`` escapes); a parameter value or error from a run that would open an escaped section or end a
+    script (issue 48, item 9) stays data there, and HTML-escaped in the table of failures."""
+    import re
+
+    from gazelle.sweep import write_report
+
+    hostile = "bot<!--<script>"
+    rows = [
+        {"status": s, "seed": i, "param.name": hostile, "metric.d": float(i), "error": f"</script>{hostile}"}
+        for i, s in enumerate(("passed", "failed"))
+    ]
+    path = tmp_path / "report.html"
+    write_report(rows, path, title=hostile)
+    page = path.read_text()
+    for body in re.findall(r"<script[^>]*>(.*?)</script>", page, flags=re.S)[1:]:  # [0]: plotly.js itself
+        assert not re.search(r"<!--|<script|</script", body, flags=re.I)
+    assert hostile not in page and "bot&lt;!--&lt;script&gt;" in page

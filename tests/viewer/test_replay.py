@@ -9,6 +9,7 @@ first frame, the other way round.
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 import numpy as np
@@ -100,6 +101,52 @@ def test_chromium_opens_the_replay_from_disk_and_scrubbing_moves_the_robot(tmp_p
         assert share_near(at_start, replay.to_screen(*start), red) > 0.9
         assert share_near(at_start, replay.to_screen(*end), red) < 0.5
         assert "nothing yet" not in replay.page.locator("#topics").inner_text()
+
+
+HOSTILE = "bot<!--<script>"
+"""An entity name that blanked the page when only ``</`` was escaped (issue 48, item 9)."""
+
+
+def _renamed(data: dict, old: str, new: str) -> dict:
+    """A recording with entity ``old`` called ``new`` (its links' names, in shapes and frames)."""
+
+    def rename(link: str) -> str:
+        return new + link[len(old) :] if link.split("::")[0] == old else link
+
+    return {
+        "shapes": {rename(k): v for k, v in data["shapes"].items()},
+        "frames": [[t, {rename(k): p for k, p in f.items()}] for t, f in data["frames"]],
+        "topics": data.get("topics", {}),
+    }
+
+
+def test_no_name_can_open_an_escaped_section_in_the_pages_scripts(run) -> None:
+    data, *_ = run
+    page = replay_html(_renamed(data, "robot", HOSTILE), {"/odom": [[0.0, {"note": "<!--<script>&</script>"}]]})
+    scripts = re.findall(r"<script[^>]*>(.*?)</script>", page, flags=re.S)
+    assert len(scripts) == 2
+    for body in scripts:
+        assert not re.search(r"<!--|<script|</script", body, flags=re.I)
+    payload = json.loads(scripts[0])
+    assert f"{HOSTILE}::base_link" in payload["shapes"]  # the name itself reads back unchanged
+    assert payload["topics"]["/odom"][0][1]["note"] == "<!--<script>&</script>"
+
+
+@pytest.mark.skipif(find_chromium() is None, reason="no system chromium (scripts/setup.sh installs it)")
+def test_an_entity_named_to_open_a_comment_does_not_blank_the_page(tmp_path: Path, run) -> None:
+    """The issue's page: an entity named ``bot<!--<script>`` made chromium read the rest of the page as
+    script data, so the page's code never ran (no drawing, no key, no timeline). Now the code runs, the key
+    shows the name as text, and the renamed robot is drawn where the simulation ended it."""
+    pytest.importorskip("playwright")
+    data, _start, end = run
+    path = tmp_path / "replay.html"
+    path.write_text(replay_html(_renamed(data, "robot", HOSTILE), title=HOSTILE))
+    with open_replay(path, timeout_ms=10_000) as replay:
+        assert replay.page.evaluate("() => window.gazelleReplay.moving") == [HOSTILE]
+        assert HOSTILE in replay.page.locator("#key").inner_text()
+        assert replay.page.title() == HOSTILE
+        replay.seek(replay.frames() - 1)
+        assert share_near(replay.canvas(), replay.to_screen(*end), replay.color_of(HOSTILE)) > 0.9
 
 
 def test_a_60_s_turtlebot3_world_run_makes_a_page_under_20_mb(resource_path, make_sim) -> None:
