@@ -29,6 +29,9 @@ REPORT = "report.html"
 """The sweep's self-contained HTML report (:func:`~gazelle.sweep._report.write_report`)."""
 REPLAY_RATE_HZ = 10.0
 """Body poses a sim second in the replay of an in-process run that does not pass."""
+MAX_TIMEOUT = 365 * 86400.0
+"""The longest ``timeout`` a run may have, in seconds (a year; the kernel's interval timer takes no more than
+about 1e9 s, and infinity or NaN none at all)."""
 
 
 def _metric(value: Any) -> Any:
@@ -439,6 +442,8 @@ def sweep(
     the run's seed: N perturbed continuations of one moment.
     """
     path, name, _fn = load_scenario(scenario)  # bad input fails here, before anything starts
+    if timeout is not None and not (math.isfinite(timeout) and 0 < timeout <= MAX_TIMEOUT):
+        raise SweepError(f"--timeout {timeout:g}: expected seconds, more than 0 and at most {MAX_TIMEOUT:.0f} (a year)")
     begin: str | None = None
     if start is not None:  # checked here, once: a bad checkpoint is one line, nothing started
         from ..sim import CheckpointError, Simulation

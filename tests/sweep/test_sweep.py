@@ -135,6 +135,11 @@ def test_the_command_line_prints_one_line_for_bad_input(scenario: Path, tmp_path
         ([*slide, "--ray", "ray://127.0.0.1:9"], "cannot connect"),
         # no cluster to join: gazelle's line, not Ray's advice about an --address flag gazelle has not
         ([*slide, "--ray", "auto"], "--ray auto: no Ray cluster to join"),
+        # a wall-clock limit the interval timer cannot hold (a traceback from the worker), or none at all
+        ([*slide, "--timeout", "inf"], "--timeout inf: expected seconds"),
+        ([*slide, "--timeout", "1e12"], "--timeout 1e+12: expected seconds"),
+        ([*slide, "--timeout", "nan"], "--timeout nan: expected seconds"),
+        ([*slide, "--timeout", "-1"], "--timeout -1: expected seconds"),
     ]
     # no RAY_ADDRESS, and a Ray temp folder where `ray start` recorded no cluster (whatever this machine runs)
     env = {k: v for k, v in os.environ.items() if k != "RAY_ADDRESS"} | {"RAY_TMPDIR": str(tmp_path)}
