@@ -442,17 +442,7 @@ def sweep(
     the run's seed: N perturbed continuations of one moment.
     """
     path, name, _fn = load_scenario(scenario)  # bad input fails here, before anything starts
-    if timeout is not None and not (math.isfinite(timeout) and 0 < timeout <= MAX_TIMEOUT):
-        raise SweepError(f"--timeout {timeout:g}: expected seconds, more than 0 and at most {MAX_TIMEOUT:.0f} (a year)")
-    begin: str | None = None
-    if start is not None:  # checked here, once: a bad checkpoint is one line, nothing started
-        from ..sim import CheckpointError, Simulation
-
-        begin = str(Path(start).resolve())
-        try:
-            Simulation.from_checkpoint(begin)
-        except CheckpointError as err:
-            raise SweepError(f"--from {start}: {err}") from None
+    begin = _checked_start(timeout, start)
     specs = grid(params, seeds)
     jobs = max(1, jobs if jobs is not None else (os.cpu_count() or 1))
     folder = Path(out)
@@ -498,6 +488,24 @@ def sweep(
 
         write_report(result.rows, folder / REPORT, title=f"{path.name}::{name}")
     return result
+
+
+def _checked_start(timeout: float | None, start: str | os.PathLike[str] | None) -> str | None:
+    """The sweep's options checked once, before anything starts (bad input is one line, nothing run): a ``timeout``
+    must be finite seconds in (0, :data:`MAX_TIMEOUT`], a ``start`` checkpoint must load. Returns the checkpoint's
+    absolute path."""
+    if timeout is not None and not (math.isfinite(timeout) and 0 < timeout <= MAX_TIMEOUT):
+        raise SweepError(f"--timeout {timeout:g}: expected seconds, more than 0 and at most {MAX_TIMEOUT:.0f} (a year)")
+    if start is None:
+        return None
+    from ..sim import CheckpointError, Simulation
+
+    begin = str(Path(start).resolve())
+    try:
+        Simulation.from_checkpoint(begin)
+    except CheckpointError as err:
+        raise SweepError(f"--from {start}: {err}") from None
+    return begin
 
 
 def write_table(rows: Sequence[Mapping[str, Any]], path: Path) -> None:
