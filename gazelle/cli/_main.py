@@ -297,7 +297,10 @@ def sweep(
     seeds: str = typer.Option("0", "--seeds", help="START:STOP (STOP excluded), N, or a,b,c."),
     jobs: int | None = typer.Option(None, "-j", "--jobs", help="Worker processes (default: one per core)."),
     ray: str | None = typer.Option(
-        None, "--ray", help="Run on Ray: local (a Ray instance of -j CPUs here), auto, or ray://HOST:PORT."
+        None,
+        "--ray",
+        help="Run on Ray: local (a Ray instance of -j CPUs here, on 127.0.0.1 only), auto (RAY_ADDRESS, or the "
+        "cluster `ray start` recorded here), or ray://HOST:PORT.",
     ),
     out: Path | None = typer.Option(None, "--out", help="Results folder (default: out/sweep_FUNCTION)."),
     resume: bool = typer.Option(False, "--resume", help="Keep the runs already in --out and run the others."),

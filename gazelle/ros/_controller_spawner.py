@@ -12,6 +12,7 @@ has ``--service-call-timeout``.
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 import time
 from pathlib import Path
@@ -37,6 +38,21 @@ from ..systems.ros2_control import ParamsError, load_params
 from ._convert import to_duration
 
 STRICT = SwitchController.Request.STRICT
+MAX_SECONDS = 2**31 - 1
+"""The longest timeout the command line takes: builtin_interfaces/Duration keeps its seconds in an int32 (the
+switch's timeout travels as one), about 68 years."""
+
+
+def _seconds(text: str) -> float:
+    """A timeout argument: finite seconds from 0 to :data:`MAX_SECONDS`. One past a Duration was a traceback as the
+    switch request was built, infinity a wait for ever, NaN or a negative value none at all: now argparse's line."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of seconds") from None
+    if not (math.isfinite(value) and 0.0 <= value <= MAX_SECONDS):
+        raise argparse.ArgumentTypeError(f"{text}: expected seconds from 0 to {MAX_SECONDS}")
+    return value
 
 
 def build_parser(prog: str, unspawner: bool = False) -> argparse.ArgumentParser:
@@ -45,9 +61,11 @@ def build_parser(prog: str, unspawner: bool = False) -> argparse.ArgumentParser:
     p.add_argument("controller_names", nargs="+", help="names of the controllers")
     p.add_argument("-c", "--controller-manager", default="controller_manager", help="name of the controller manager")
     p.add_argument(
-        "--switch-timeout", type=float, default=5.0, help="time to wait for a successful state switch of controllers"
+        "--switch-timeout", type=_seconds, default=5.0, help="time to wait for a successful state switch of controllers"
     )
-    p.add_argument("--service-call-timeout", type=float, default=10.0, help="time to wait for a service call to answer")
+    p.add_argument(
+        "--service-call-timeout", type=_seconds, default=10.0, help="time to wait for a service call to answer"
+    )
     if not unspawner:
         p.add_argument(
             "-p", "--param-file", action="append", default=[], help="controller parameters file (repeatable)"
@@ -60,7 +78,7 @@ def build_parser(prog: str, unspawner: bool = False) -> argparse.ArgumentParser:
         p.add_argument("-t", "--controller-type", default=None, help="controller type (else from the parameters)")
         p.add_argument("-u", "--unload-on-kill", action="store_true", help="unload the controllers on SIGINT")
         p.add_argument(
-            "--controller-manager-timeout", type=float, default=10.0, help="time to wait for the controller manager"
+            "--controller-manager-timeout", type=_seconds, default=10.0, help="time to wait for the controller manager"
         )
         p.add_argument("--activate-as-group", action="store_true", help="activate all controllers in one switch")
         p.add_argument(

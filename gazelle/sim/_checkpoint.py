@@ -422,6 +422,7 @@ def read(path: str | os.PathLike[str]) -> dict[str, Any]:
         raw = p.read_bytes()
     except OSError as err:
         raise CheckpointError(f"{p}: {err.strerror or err}") from None
+    _check_header(raw, p)  # before anything in it runs: unpickling a foreign pickle would run its code
     try:
         payload = pickle.loads(raw)
     except Exception as err:
@@ -435,6 +436,36 @@ def read(path: str | os.PathLike[str]) -> dict[str, Any]:
     if different:
         raise CheckpointError(f"{p}: made by another version: {', '.join(different)}; use that version")
     return payload
+
+
+_MEMO_OPS = frozenset({"PROTO", "FRAME", "MEMOIZE", "PUT", "BINPUT", "LONG_BINPUT"})
+_STRING_OPS = frozenset({"SHORT_BINUNICODE", "BINUNICODE", "BINUNICODE8", "UNICODE"})
+_INT_OPS = frozenset({"BININT1", "BININT2", "BININT", "INT", "LONG1"})
+
+
+def _check_header(raw: bytes, p: Path) -> None:
+    """The checkpoint's first two keys, ``magic`` and ``format`` (:func:`save` writes them first), read from the
+    pickle's opcodes without running any: a file that is not a gazelle checkpoint (another pickle, whose
+    loading would run what it names) or of another format is refused before anything in it is loaded. A file
+    forged with this header still runs its code when loaded: a checkpoint is code, load only your own."""
+    import pickletools
+
+    ops: list[tuple[str, Any]] = []
+    try:
+        for op, arg, _pos in pickletools.genops(raw):
+            if op.name not in _MEMO_OPS:
+                ops.append((op.name, arg))
+            if len(ops) == 6:
+                break
+    except Exception as err:  # not a pickle at all: an unknown opcode, a length past the end
+        raise CheckpointError(f"{p}: not a gazelle checkpoint ({type(err).__name__})") from None
+    names = [name for name, _ in ops]
+    keys = [arg for _, arg in ops[2:5]]
+    if names[:2] != ["EMPTY_DICT", "MARK"] or keys != ["magic", MAGIC, "format"] or set(names[2:5]) - _STRING_OPS:
+        raise CheckpointError(f"{p}: not a gazelle checkpoint")
+    kind, value = ops[5] if len(ops) == 6 else ("", None)
+    if kind not in _INT_OPS or value != FORMAT:
+        raise CheckpointError(f"{p}: checkpoint format {value}, this gazelle reads {FORMAT}")
 
 
 def restore(payload: dict[str, Any], world: Any = None) -> Simulation:

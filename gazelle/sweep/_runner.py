@@ -30,6 +30,9 @@ REPORT = "report.html"
 """The sweep's self-contained HTML report (:func:`~gazelle.sweep._report.write_report`)."""
 REPLAY_RATE_HZ = 10.0
 """Body poses a sim second in the replay of an in-process run that does not pass."""
+MAX_TIMEOUT = 365 * 86400.0
+"""The longest ``timeout`` a run may have, in seconds (a year; the kernel's interval timer takes no more than
+about 1e9 s, and infinity or NaN none at all)."""
 
 
 def _metric(value: Any) -> Any:
@@ -393,37 +396,18 @@ def _ray_runs(
     start: str | None = None,
     artifacts: str | None = None,
 ) -> Iterator[dict[str, Any]]:
-    """The runs on a Ray cluster (``address``: ``local`` for a Ray of this machine's ``jobs`` cores, else the
-    cluster's address), one CPU each, a dead worker's run retried once and then reported as lost. A Ray session
-    the caller already has is used and left running; one started here is shut down at the end."""
-    try:
-        import ray
+    """The runs on Ray (``address``: ``local`` for a Ray of this machine's ``jobs`` cores on its loopback, else
+    the cluster's, see :func:`~gazelle.sweep._ray.ray_session`), one CPU each, a dead worker's run retried once and
+    then reported as lost."""
+    from ._ray import ray_session
+
+    with ray_session(address, jobs) as ray:
         from ray.exceptions import RayError
-    except ImportError as err:
-        raise SweepError(f"--ray needs the ray package: {err}") from None
-    kwargs: dict[str, Any] = {"include_dashboard": False, "log_to_driver": False, "ignore_reinit_error": True}
-    if address == "local":
-        kwargs["num_cpus"] = jobs
-        address_arg = None
-    else:
-        address_arg = address
-    owned = not ray.is_initialized()  # a caller's own Ray session is used as it is, and left running
-    if owned and address.startswith("ray://"):
-        _probe(address)
-    if owned:
-        try:
-            ray.init(address=address_arg, **kwargs)
-        except Exception as err:
-            first = (str(err).splitlines() or [""])[0]
-            raise SweepError(f"--ray {address}: cannot connect: {type(err).__name__}: {first}") from None
-    try:
+
         source = path.read_text()
         task = ray.remote(num_cpus=1, max_retries=1)(_ray_task)  # a dead worker's run goes again once
         blob = ray.put(Path(start).read_bytes()) if start is not None else None  # once, to every node
-        refs = [
-            task.remote(source, str(path), name, spec, timeout, blob, artifacts)  # pyright: ignore[reportCallIssue] - ray's remote functions are typed by a decorator pyright cannot follow
-            for spec in todo
-        ]
+        refs = [task.remote(source, str(path), name, spec, timeout, blob, artifacts) for spec in todo]
         specs = dict(zip(refs, todo, strict=True))
         while refs:
             done, refs = ray.wait(refs, num_returns=1)
@@ -431,21 +415,6 @@ def _ray_runs(
                 yield ray.get(done[0])
             except RayError as err:  # its worker died twice
                 yield lost_row(specs[done[0]], f"Ray could not run it: {type(err).__name__}")
-    finally:
-        if owned:
-            ray.shutdown()
-
-
-def _probe(address: str, timeout: float = 5.0) -> None:
-    """Refuse at once a Ray client address that nothing answers (Ray's own client waits 30 s)."""
-    host, _, port = address.removeprefix("ray://").rpartition(":")
-    try:
-        with socket.create_connection((host.strip("[]") or "127.0.0.1", int(port)), timeout=timeout):
-            pass
-    except ValueError:
-        raise SweepError(f"--ray {address}: expected ray://HOST:PORT") from None
-    except OSError as err:
-        raise SweepError(f"--ray {address}: cannot connect: {err.strerror or err}") from None
 
 
 def sweep(
@@ -465,24 +434,17 @@ def sweep(
     """Run ``scenario`` (``file.py::function``) for every combination of ``params`` and every seed.
 
     ``jobs`` worker processes on this machine (default: one per core), or Ray tasks (``ray``: ``"local"``
-    for a Ray instance of ``jobs`` CPUs on this machine, ``"auto"`` or ``"ray://host:port"`` for a
-    cluster). Rows go to ``out/runs.jsonl`` as runs finish; at the end ``out/runs.parquet`` and the
-    report ``out/report.html``. ``resume`` keeps the rows already in ``out`` and runs only the others.
+    for a Ray instance of ``jobs`` CPUs on this machine, listening on 127.0.0.1 only, ``"auto"`` (the cluster
+    in ``RAY_ADDRESS`` or the one ``ray start`` recorded) or ``"ray://host:port"`` for a cluster). Rows go to
+    ``out/runs.jsonl`` as runs finish; at the end ``out/runs.parquet`` and the report ``out/report.html``.
+    ``resume`` keeps the rows already in ``out`` and runs only the others.
     ``on_row(row, done, total)`` is called after each run (progress). ``timeout``: seconds of wall time
     a run may take (status ``timeout``); a run whose worker dies is run once more, then is ``lost``.
     ``start``: a checkpoint (``Simulation.checkpoint``) every run goes on from, its noise reseeded with
     the run's seed: N perturbed continuations of one moment.
     """
     path, name, _fn = load_scenario(scenario)  # bad input fails here, before anything starts
-    begin: str | None = None
-    if start is not None:  # checked here, once: a bad checkpoint is one line, nothing started
-        from ..sim import CheckpointError, Simulation
-
-        begin = str(Path(start).resolve())
-        try:
-            Simulation.from_checkpoint(begin)
-        except CheckpointError as err:
-            raise SweepError(f"--from {start}: {err}") from None
+    begin = _checked_start(timeout, start)
     specs = grid(params, seeds)
     jobs = max(1, jobs if jobs is not None else (os.cpu_count() or 1))
     folder = Path(out)
@@ -524,6 +486,24 @@ def sweep(
 
         write_report(result.rows, folder / REPORT, title=f"{path.name}::{name}")
     return result
+
+
+def _checked_start(timeout: float | None, start: str | os.PathLike[str] | None) -> str | None:
+    """The sweep's options checked once, before anything starts (bad input is one line, nothing run): a ``timeout``
+    must be finite seconds in (0, :data:`MAX_TIMEOUT`], a ``start`` checkpoint must load. Returns the checkpoint's
+    absolute path."""
+    if timeout is not None and not (math.isfinite(timeout) and 0 < timeout <= MAX_TIMEOUT):
+        raise SweepError(f"--timeout {timeout:g}: expected seconds, more than 0 and at most {MAX_TIMEOUT:.0f} (a year)")
+    if start is None:
+        return None
+    from ..sim import CheckpointError, Simulation
+
+    begin = str(Path(start).resolve())
+    try:
+        Simulation.from_checkpoint(begin)
+    except CheckpointError as err:
+        raise SweepError(f"--from {start}: {err}") from None
+    return begin
 
 
 def write_table(rows: Sequence[Mapping[str, Any]], path: Path) -> None:

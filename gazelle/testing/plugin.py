@@ -26,6 +26,7 @@ must cost nothing where it is not used.
 
 from __future__ import annotations
 
+import hashlib
 import os
 import re
 import shutil
@@ -87,7 +88,13 @@ def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo[None]) ->
 
 
 def _safe(nodeid: str) -> str:
-    return re.sub(r"[^A-Za-z0-9_.-]+", "_", nodeid).strip("_")[:150]
+    """A test's artifacts folder name: its node id with what a file name should not hold replaced by ``_`` and,
+    where that changed the id, a short hash of the whole id after it, so two tests never share a folder
+    (``t[a/b]`` and ``t[a_b]`` did: the second's start deleted the first's artifacts)."""
+    safe = re.sub(r"[^A-Za-z0-9_.-]+", "_", nodeid).strip("_")[:150]
+    if safe == nodeid:
+        return safe
+    return f"{safe}-{hashlib.sha256(nodeid.encode()).hexdigest()[:10]}"
 
 
 def _marker_options(request: pytest.FixtureRequest) -> dict[str, Any]:

@@ -218,7 +218,7 @@ def test_a_failing_test_keeps_its_bag_and_log_and_bad_input_is_one_line_each(tmp
     # the failing test: its assertion, its seed and where its artifacts are
     assert "the robot is on the ground" in text
     assert "seed 42 (rerun with --gazelle-seed 42)" in text
-    folder = tmp_path / "artifacts" / "test_user.py_test_the_robot_should_fly"
+    (folder,) = (tmp_path / "artifacts").glob("test_user.py_test_the_robot_should_fly-*")
     assert f"artifacts (bag, replay.html, server log): {folder}" in text
     assert "gazelle: ready" in (folder / "server.log").read_text()
     # the replay: one file, opened from disk, shows the robot where the run left it and the topic it named
@@ -274,7 +274,7 @@ def test_a_module_shares_one_server_reset_before_each_test_and_a_failing_one_kee
     assert out.returncode == 1, out.stdout[-4000:] + out.stderr[-2000:]
     assert "1 failed, 3 passed" in out.stdout  # the tests after the failing one ran on, recorded anew
     folders = [f for f in (tmp_path / "artifacts").iterdir() if f.is_dir()]
-    assert [f.name for f in folders] == ["test_shared.py_test_each_test_starts_from_a_reset_world_1"], folders
+    assert [f.name[:-11] for f in folders] == ["test_shared.py_test_each_test_starts_from_a_reset_world_1"], folders
     kept = folders[0]
     assert f"artifacts (bag, replay.html, server log): {kept}" in out.stdout
     # its replay: its own run only (the server's since the reset before it), half a second of the robot
@@ -291,6 +291,28 @@ def test_a_module_shares_one_server_reset_before_each_test_and_a_failing_one_kee
     odom = [m for m in read_ros2_messages(str(bag)) if m.channel.topic == "/odom"]
     assert len(odom) > 10
     assert "gazelle: ready" in (kept / "server.log").read_text()
+    assert survivors(mark) == []
+
+
+TWINS = """
+import pytest
+
+
+@pytest.mark.parametrize("name", ["a/b", "a_b"])
+def test_twin(gazelle_sim, name):
+    gazelle_sim.run_for(0.1)
+"""
+
+
+def test_two_tests_whose_ids_differ_only_in_what_a_file_name_cannot_hold_keep_two_folders(tmp_path: Path) -> None:
+    """``test_twin[a/b]`` and ``test_twin[a_b]`` both keep their artifacts (``--gazelle-artifacts=all``), each in
+    a folder of its own (before: one folder, the first test's artifacts deleted as the second started)."""
+    (tmp_path / "test_twins.py").write_text(TWINS)
+    out, mark = inner_pytest(["test_twins.py", "--gazelle-artifacts=all"], tmp_path)
+    assert out.returncode == 0 and "2 passed" in out.stdout, out.stdout[-4000:] + out.stderr[-2000:]
+    folders = sorted((tmp_path / "artifacts").iterdir())
+    assert len(folders) == 2 and all(f.name.startswith("test_twins.py_test_twin_a_b-") for f in folders), folders
+    assert all("gazelle: ready" in (f / "server.log").read_text() for f in folders)
     assert survivors(mark) == []
 
 

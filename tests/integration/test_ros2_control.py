@@ -150,6 +150,11 @@ def test_the_spawners_controller_ros_args_remap_the_controllers_topics(sim_facto
     wait_for(lambda: pub.get_subscription_count() > 0, 15, "the controller on /cmd_vel")
     assert ros_client.node.count_publishers("/diffbot_base_controller/odom") >= 1
     wait_for(lambda: ros_client.node.count_subscribers("/diffbot_base_controller/cmd_vel") == 0, 5, "no old name")
+    # a switch timeout no Duration holds: one line before the manager is asked anything (before: the controller
+    # loaded and configured, then a traceback building the switch request)
+    rc, out = _spawner("joint_state_broadcaster", "--switch-timeout", "1e30")
+    assert rc == 2 and "argument --switch-timeout: 1e30: expected seconds from 0 to" in out, out
+    assert "Traceback" not in out and "Loaded" not in out, out
 
 
 @pytest.mark.slow
@@ -277,6 +282,24 @@ def test_spawner_without_a_manager_says_so_and_exits_1():
     rc, out = _spawner("joint_state_broadcaster", "--controller-manager-timeout", "1", timeout=30)
     assert rc == 1
     assert "Controller manager not available" in out
+
+
+@pytest.mark.parametrize(
+    ("command", "flag", "value"),
+    [
+        ("spawner", "--controller-manager-timeout", "inf"),  # before: waited for ever
+        ("spawner", "--service-call-timeout", "nan"),
+        ("spawner", "--switch-timeout", "-1"),
+        ("unspawner", "--switch-timeout", "1e10"),  # past a Duration's int32 seconds
+    ],
+)
+def test_spawner_timeouts_that_are_not_seconds_are_one_line_each(command: str, flag: str, value: str) -> None:
+    """Checked as the arguments are read: no manager is needed (one would be waited for 1 s)."""
+    wait = ["--controller-manager-timeout", "1"] if command == "spawner" and "manager" not in flag else []
+    proc = start([*GAZELLE, command, "joint_state_broadcaster", flag, value, *wait], command)
+    assert proc.wait(30) == 2, proc.output
+    assert f"argument {flag}: {value}: expected seconds from 0 to 2147483647" in proc.output, proc.output
+    assert "Traceback" not in proc.output and "Controller manager not available" not in proc.output
 
 
 @pytest.mark.slow

@@ -9,6 +9,7 @@ import hashlib
 import json
 import os
 import pickle
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -151,6 +152,55 @@ def test_a_checkpoint_of_another_world_version_or_no_checkpoint_at_all_is_one_cl
         Simulation.from_checkpoint(tmp_path / "foreign.ckpt")
     with pytest.raises(CheckpointError, match="No such file"):
         Simulation.from_checkpoint(tmp_path / "none.ckpt")
+
+
+class _Runs:
+    """What a forged pickle holds: loading it calls ``os.makedirs(path)`` (any call would do)."""
+
+    def __init__(self, path: Path) -> None:
+        self.path = path
+
+    def __reduce__(self) -> tuple:
+        return (os.makedirs, (str(self.path),))
+
+
+def test_a_forged_checkpoint_is_refused_before_any_of_it_runs(tmp_path: Path) -> None:
+    """A pickle that is not a checkpoint, or one of another format, runs nothing: the header is read from the
+    pickle's opcodes first (before: the file was unpickled, running what it named, and only then refused)."""
+    ran = tmp_path / "ran"
+    forged = {
+        "plain.ckpt": pickle.dumps(_Runs(ran)),
+        "first.ckpt": pickle.dumps({"code": _Runs(ran), "magic": "gazelle-checkpoint", "format": 1}),
+        "format.ckpt": pickle.dumps({"magic": "gazelle-checkpoint", "format": 99, "code": _Runs(ran)}),
+    }
+    for name, blob in forged.items():
+        (tmp_path / name).write_bytes(blob)
+        with pytest.raises(CheckpointError, match="not a gazelle checkpoint|checkpoint format 99") as err:
+            Simulation.from_checkpoint(tmp_path / name)
+        assert str(tmp_path / name) in str(err.value)
+        assert not ran.exists(), f"{name}: loading it ran its code"
+    (tmp_path / "text.ckpt").write_text("not a pickle at all\n")
+    with pytest.raises(CheckpointError, match="not a gazelle checkpoint"):
+        Simulation.from_checkpoint(tmp_path / "text.ckpt")
+
+
+def _loads_checkpoints(folder: Path) -> list[str]:
+    """The lines under ``folder`` that load a checkpoint or any pickle."""
+    pattern = re.compile(r"from_checkpoint|_checkpoint\.read|pickle\.loads?\b|Unpickler")
+    return [
+        f"{path.name}:{n}: {line.strip()}"
+        for path in sorted(folder.rglob("*.py"))
+        for n, line in enumerate(path.read_text().splitlines(), 1)
+        if pattern.search(line)
+    ]
+
+
+def test_nothing_on_the_ros_graph_loads_a_checkpoint(tmp_path: Path) -> None:
+    """A request's path is data: no service, topic or action of gazelle's ROS side loads a checkpoint (a pickle
+    runs code), so none can be made to load one. The check finds a planted loader."""
+    assert _loads_checkpoints(REPO / "gazelle" / "ros") == []
+    (tmp_path / "service.py").write_text("def on_load(req):\n    return Simulation.from_checkpoint(req.path)\n")
+    assert _loads_checkpoints(tmp_path) == ["service.py:2: return Simulation.from_checkpoint(req.path)"]
 
 
 def test_a_checkpoint_whose_models_changed_since_is_refused(tmp_path: Path, seed_robot_sim: Simulation) -> None:

@@ -4,6 +4,7 @@ rows written as runs finish, --resume, a report a person reads, and bad input as
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -124,20 +125,31 @@ def test_resume_runs_only_what_an_interrupted_sweep_had_not_finished(scenario: P
 
 def test_the_command_line_prints_one_line_for_bad_input(scenario: Path, tmp_path: Path) -> None:
     gazelle = [sys.executable, "-m", "gazelle.cli", "sweep"]
+    slide = [f"{scenario}::slide", "--param", "mu=1"]
     cases = [
         ([f"{tmp_path}/nope.py::x"], "no such scenario file"),
         ([f"{scenario}::missing"], "has no function 'missing'"),
         ([f"{scenario}::slide", "--param", "mu"], "expected NAME=a,b,c"),
-        ([f"{scenario}::slide", "--param", "mu=1", "--ray", "http://x"], "expected local, auto or ray://"),
+        ([*slide, "--ray", "http://x"], "expected local, auto or ray://"),
         # nothing listens on port 9 here: one line at once (Ray's own client waits 30 s), nothing ran
-        ([f"{scenario}::slide", "--param", "mu=1", "--ray", "ray://127.0.0.1:9"], "cannot connect"),
+        ([*slide, "--ray", "ray://127.0.0.1:9"], "cannot connect"),
+        # no cluster to join: gazelle's line, not Ray's advice about an --address flag gazelle has not
+        ([*slide, "--ray", "auto"], "--ray auto: no Ray cluster to join"),
+        # a wall-clock limit the interval timer cannot hold (a traceback from the worker), or none at all
+        ([*slide, "--timeout", "inf"], "--timeout inf: expected seconds"),
+        ([*slide, "--timeout", "1e12"], "--timeout 1e+12: expected seconds"),
+        ([*slide, "--timeout", "nan"], "--timeout nan: expected seconds"),
+        ([*slide, "--timeout", "-1"], "--timeout -1: expected seconds"),
     ]
+    # no RAY_ADDRESS, and a Ray temp folder where `ray start` recorded no cluster (whatever this machine runs)
+    env = {k: v for k, v in os.environ.items() if k != "RAY_ADDRESS"} | {"RAY_TMPDIR": str(tmp_path)}
     for args, says in cases:
         out = subprocess.run(
-            [*gazelle, *args, "--out", str(tmp_path / "cli")], capture_output=True, text=True, timeout=60
+            [*gazelle, *args, "--out", str(tmp_path / "cli")], capture_output=True, text=True, timeout=60, env=env
         )
         assert out.returncode == 2, (args, out.stdout, out.stderr)
         assert says in out.stderr and "Traceback" not in out.stderr, out.stderr
+        assert "--address" not in out.stderr, out.stderr
 
 
 @pytest.mark.slow
