@@ -1,5 +1,6 @@
 """ros_gz_sim's gz_sim.launch.py for gazelle: `gazelle sim` from gz_args (a world file, -r to run,
--s for no GUI: the server still serves its viewer, which -g shows; gz's empty.sdf is gazelle's default world; -g, the GUI alone: gzclient's stand-in)."""
+-s for no GUI: the server still serves its viewer, which -g shows; gz's empty.sdf is gazelle's default
+world; -g, the GUI alone: gzclient's stand-in)."""
 
 import os
 import shlex
