@@ -16,7 +16,7 @@ import importlib
 import os
 import socket
 import tempfile
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
@@ -62,7 +62,9 @@ def _start_local(ray: Any, jobs: int) -> None:
     services = importlib.import_module("ray._private.services")
     temp = _private_folder("gazelle-ray") / "r"  # Ray makes its temp dir world-writable: one level down
     saved = constants.ENABLE_RAY_CLUSTER
-    with _environ({_CLUSTER_VAR: "0", _ADDRESS_VAR: None}):
+    from ..testing import environ_applied
+
+    with environ_applied({_CLUSTER_VAR: "0", _ADDRESS_VAR: None}):
         constants.ENABLE_RAY_CLUSTER = False
         try:
             resolved = services.resolve_ip_for_localhost(LOOPBACK)
@@ -131,22 +133,3 @@ def _private_folder(prefix: str) -> Path:
     if folder.is_symlink() or st.st_uid != os.getuid() or st.st_mode & 0o077:
         raise SweepError(f"--ray local: {folder} is not this user's own folder (owner-only): not started")
     return folder
-
-
-@contextmanager
-def _environ(changes: Mapping[str, str | None]) -> Iterator[None]:
-    """``os.environ`` with ``changes`` applied (None: the variable removed) while the block runs, then as it was."""
-    saved = {k: os.environ.get(k) for k in changes}
-    try:
-        for k, v in changes.items():
-            if v is None:
-                os.environ.pop(k, None)
-            else:
-                os.environ[k] = v
-        yield
-    finally:
-        for k, v in saved.items():
-            if v is None:
-                os.environ.pop(k, None)
-            else:
-                os.environ[k] = v

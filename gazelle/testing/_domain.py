@@ -114,10 +114,15 @@ def _lock_file(domain: int) -> int | None:
 
 
 @contextlib.contextmanager
-def environ_applied(values: Mapping[str, str]) -> Iterator[None]:
-    """``os.environ`` with ``values`` set while the block runs, each key put back as it was (or removed)."""
+def environ_applied(values: Mapping[str, str | None]) -> Iterator[None]:
+    """``os.environ`` with ``values`` set (None: the variable removed) while the block runs, each key put back as it
+    was (or removed)."""
     saved = {k: os.environ.get(k) for k in values}
-    os.environ.update(values)
+    for k, v in values.items():
+        if v is None:
+            os.environ.pop(k, None)
+        else:
+            os.environ[k] = v
     try:
         yield
     finally:
