@@ -41,6 +41,7 @@ from ._semantic_model import *  # noqa: F403  (SRDF semantics and ros2_control b
 from ._semantic_model import Semantics
 from ._untrusted import MAX_PARAMS_FILE_BYTES as MAX_PARAMS_FILE_BYTES
 from ._untrusted import MAX_YAML_NODES as MAX_YAML_NODES
+from ._untrusted import PARAMETERS_TEXT_TAG as PARAMETERS_TEXT_TAG
 from ._untrusted import UntrustedInputError as UntrustedInputError
 from ._untrusted import read_regular_file as read_regular_file
 from ._untrusted import safe_load_bounded as safe_load_bounded

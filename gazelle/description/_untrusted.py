@@ -43,6 +43,12 @@ and with ``PYTHONINTMAXSTRDIGITS=0`` (no limit) a megabyte of digits is not a qu
 _Loader: Any = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 
 
+PARAMETERS_TEXT_TAG = "gazelle_parameters_text"
+"""A ``<plugin>`` child that carries a ros2_control ``<parameters>`` file's text, read by ``gazelle spawn -file``
+beside the robot file with the user's own rights (the server reads no file of the user's): parsed by the
+controller manager with the same bounds as a file, as the spawner's ``<ctrl>.params_file_yaml``."""
+
+
 class UntrustedInputError(ValueError):
     """A file or text refused by a bound; the message names it (and the line) but never its content."""
 

@@ -10,9 +10,11 @@ from __future__ import annotations
 
 import argparse
 import math
+import re
 import sys
 import time
 from pathlib import Path
+from xml.sax.saxutils import escape
 
 import rclpy
 from gazebo_msgs.srv import SpawnEntity
@@ -189,6 +191,34 @@ def _xml_from_file(path: str, xacro_args: dict[str, str] | None = None) -> str:
     return out
 
 
+_PARAMETERS = re.compile(r"<parameters>\s*([^<]*?)\s*</parameters>")
+
+
+def with_parameters_text(xml: str, folder: Path) -> str:
+    """A robot file's ros2_control ``<parameters>`` that name a file beside it (or an absolute path): read here,
+    with the user's own rights, and carried in the XML for the server, which cannot read the folder of a file it
+    never saw (gazebo_ros2_control reads them next to the robot file, and so does ``gazelle sim FILE``). Each is
+    added on the ``</parameters>`` line, its newlines as character references, so the file's line numbers hold.
+    ``package://``/``$(find)`` paths are left to the server's resource roots; a file that cannot be read is left
+    for the server to name."""
+    from ..description import MAX_PARAMS_FILE_BYTES, PARAMETERS_TEXT_TAG, UntrustedInputError, read_regular_file
+
+    def carry(match: re.Match[str]) -> str:
+        raw = match.group(1)
+        if not raw or "://" in raw or "$(" in raw:
+            return match.group(0)
+        path = Path(raw) if Path(raw).is_absolute() else folder / raw
+        try:
+            text = read_regular_file(path, MAX_PARAMS_FILE_BYTES, "parameters file")
+        except (OSError, UntrustedInputError):
+            return match.group(0)
+        body = escape(text, {"\n": "&#10;", "\r": "&#13;", "\t": "&#9;"})
+        name = escape(raw, {'"': "&quot;"})
+        return f'{match.group(0)}<{PARAMETERS_TEXT_TAG} file="{name}">{body}</{PARAMETERS_TEXT_TAG}>'
+
+    return _PARAMETERS.sub(carry, xml)
+
+
 def with_robot_state_options(xml: str, *, enabled: bool, frame_prefix: str | None) -> str:
     """Add a ``gazelle_robot_state_publisher`` plugin block (see gazelle.systems.robot_state) to URDF or SDF text."""
     from xml.sax.saxutils import escape
@@ -286,6 +316,7 @@ def main(argv: list[str]) -> int:
         print(f"[INFO] [spawn_entity]: Loading entity XML from file {args.file}", file=sys.stderr)
         try:
             file_xml = _xml_from_file(args.file, dict(a.split(":=", 1) for a in args.xacro_args))
+            file_xml = with_parameters_text(file_xml, Path(args.file).resolve().parent)
         except FileNotFoundError:
             return _fail(None, f"Error: specified file {args.file} does not exist")
         except Exception as err:

@@ -397,3 +397,23 @@ def test_ros2_control_verbs_list_switch_and_set_the_diffbots_controllers(sim_fac
     unknown = _ros2_control("set_controller_state", "no_such_controller", "active")
     assert unknown.returncode == 1 and "does not seem to be loaded" in unknown.stderr
     assert "Traceback" not in missing.stderr + unknown.stderr
+
+
+def test_parameters_next_to_the_robot_file_are_read_by_spawn_file(sim_factory, tmp_path):
+    """Issue 50: `<parameters>diffbot_controllers.yaml</parameters>` beside the robot file was refused for
+    `gazelle spawn -file` ("is not in a package or model folder gazelle may read"): the server only ever saw the
+    XML. The client reads the file beside the robot file with the user's rights and carries its text, so the
+    spawner finds the controllers' types with no -p, as with gazebo_ros2_control."""
+    (tmp_path / "diffbot_controllers.yaml").write_text(DIFFBOT_YAML.read_text())
+    plugin = (
+        '<gazebo><plugin filename="libgazebo_ros2_control.so" name="gazebo_ros2_control">'
+        "<parameters>diffbot_controllers.yaml</parameters></plugin></gazebo>"
+    )
+    robot = tmp_path / "diffbot.urdf"
+    robot.write_text(DIFFBOT_URDF.read_text().replace("</robot>", plugin + "</robot>"))
+    sim = sim_factory("--no-viewer")
+    spawn = start([*GAZELLE, "spawn", "-entity", "diffbot", "-file", str(robot), "-z", "0.05"], "spawn")
+    assert spawn.wait(60) == 0, spawn.output
+    sim.wait_line("controller manager '/controller_manager'", 10)
+    rc, out = _spawner("joint_state_broadcaster", "diffbot_base_controller")
+    assert rc == 0, out

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ...description import MAX_PARAMS_FILE_BYTES, JointType, ResourceResolver
+from ...description import MAX_PARAMS_FILE_BYTES, PARAMETERS_TEXT_TAG, JointType, ResourceResolver
 from ...physics import PhysicsWorld
 from .._base import RateGate, System, SystemContext, UpdateInfo
 from .._bus import remap_problem
@@ -191,8 +191,10 @@ class ControllerManager(System):
         self._base = Path(model.source_file).parent if real_file else None
         self._resolver = ResourceResolver().trusting(self._base)
         where = f"{cfg.location}: " if cfg is not None and cfg.location else ""
+        # a <parameters> file beside the robot file, read by `gazelle spawn -file` and carried in the XML
+        carried = {el.attr("file"): el.text or "" for el in cfg.findall(PARAMETERS_TEXT_TAG)} if cfg is not None else {}
         for raw in (*self.config.parameters, *self._extra_files):
-            self.files.append(self.read_params_file(raw, where))
+            self.files.append(self.read_params_file(raw, where, carried.get(raw)))
         for key, value in self.manager_params().items():
             if key.endswith(".params_file"):
                 for raw in params_file_paths(value):
