@@ -1,5 +1,6 @@
-"""ros_gz_sim's gz_sim.launch.py for gazelle: `gazelle sim` from gz_args (a world file, -r to run,
--s for no GUI: no viewer; gz's empty.sdf is gazelle's default world; -g, the GUI alone: gzclient's stand-in)."""
+"""ros_gz_sim's gz_sim.launch.py for gazelle: `gazelle sim` from gz_args (a world file, found where gz sim
+finds it: as given, on GZ_SIM_RESOURCE_PATH, then the installed worlds, where gz's empty.sdf is gazelle's
+default world; -r to run, -s for no GUI: no viewer; -g, the GUI alone: gzclient's stand-in)."""
 
 import os
 import shlex
@@ -40,7 +41,7 @@ def _server(context):
             world = tok
         else:
             ignored.append(tok)
-    if world and world not in ("empty.sdf", "empty.world"):
+    if world:
         cmd.insert(2, world)
     if not run:
         cmd.append("--paused")  # gz sim starts paused without -r
