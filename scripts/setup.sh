@@ -135,4 +135,11 @@ case ":${AMENT_PREFIX_PATH:-}:" in
 esac
 ACTIVATE
 fi
+if ! grep -q "gazelle: ament's shell functions" "$VENV/bin/activate"; then
+  cat >>"$VENV/bin/activate" <<'ACTIVATE'
+# gazelle: ament's shell functions, as /opt/ros/<distro>/setup.bash leaves them defined for the environment
+# hooks of a workspace's packages (ament_prepend_unique_value, ament_append_unique_value)
+. "$VIRTUAL_ENV/local_setup.sh"
+ACTIVATE
+fi
 say "ready in $((SECONDS - SETUP_START)) s"
