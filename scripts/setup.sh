@@ -135,10 +135,13 @@ case ":${AMENT_PREFIX_PATH:-}:" in
 esac
 ACTIVATE
 fi
-if ! grep -q "gazelle: ament's shell functions" "$VENV/bin/activate"; then
+if ! grep -q "gazelle: what /opt/ros/jazzy/setup.bash gives a shell" "$VENV/bin/activate"; then
   cat >>"$VENV/bin/activate" <<'ACTIVATE'
-# gazelle: ament's shell functions, as /opt/ros/<distro>/setup.bash leaves them defined for the environment
-# hooks of a workspace's packages (ament_prepend_unique_value, ament_append_unique_value)
+# gazelle: what /opt/ros/jazzy/setup.bash gives a shell, besides the prefix: ros_environment's variables
+# (unless a sourced ROS set them), and ament's shell functions, which the environment hooks of a workspace's
+# packages call (ament_prepend_unique_value, ament_append_unique_value)
+: "${ROS_DISTRO:=jazzy}" "${ROS_VERSION:=2}" "${ROS_PYTHON_VERSION:=3}"
+export ROS_DISTRO ROS_VERSION ROS_PYTHON_VERSION
 . "$VIRTUAL_ENV/local_setup.sh"
 ACTIVATE
 fi

@@ -40,7 +40,7 @@ ament_prepend_unique_value GAZEBO_MODEL_PATH "@CMAKE_INSTALL_PREFIX@/share/@PROJ
 DSV_HOOK = "prepend-non-duplicate;IGN_GAZEBO_RESOURCE_PATH;share/@PROJECT_NAME@/worlds\n"
 
 _CLEAN = ("AMENT_PREFIX_PATH", "PYTHONPATH", "COLCON_PREFIX_PATH", "GZ_SIM_RESOURCE_PATH", "GAZEBO_MODEL_PATH",
-          "IGN_GAZEBO_RESOURCE_PATH", "CMAKE_PREFIX_PATH")  # fmt: skip
+          "IGN_GAZEBO_RESOURCE_PATH", "CMAKE_PREFIX_PATH", "ROS_DISTRO", "ROS_VERSION", "ROS_PYTHON_VERSION")  # fmt: skip
 
 
 def _run(shell_name: str, script: str, cwd: Path) -> subprocess.CompletedProcess:
@@ -77,15 +77,18 @@ def test_a_workspaces_env_hooks_reach_the_shell_over_the_venv(tmp_path: Path) ->
         assert out.stdout.splitlines() == expected, f"{shell_name}: {script}\n{out.stdout}"
 
 
-def test_activation_defines_what_ros_setup_leaves_for_hooks(tmp_path: Path) -> None:
+def test_activation_gives_what_ros_setup_gives_a_shell(tmp_path: Path) -> None:
     """ament_prepend_unique_value (exported, no duplicate, no stray ':') and ament_append_unique_value, as
-    /opt/ros/jazzy/setup.bash leaves them defined (ament_package template/prefix_level)."""
+    /opt/ros/jazzy/setup.bash leaves them defined (ament_package template/prefix_level), and ros_environment's
+    ROS_DISTRO, ROS_VERSION and ROS_PYTHON_VERSION, which launch files and hooks read (a sourced ROS's win)."""
     script = (
         f"source {VENV_ACTIVATE} && ament_prepend_unique_value GAZEBO_MODEL_PATH /b"
         " && ament_prepend_unique_value GAZEBO_MODEL_PATH /a && ament_prepend_unique_value GAZEBO_MODEL_PATH /b"
         " && ament_append_unique_value GAZEBO_MODEL_PATH '/z z' && ament_append_unique_value GAZEBO_MODEL_PATH /a"
-        " && sh -c 'echo \"$GAZEBO_MODEL_PATH\"'"
+        ' && sh -c \'echo "$GAZEBO_MODEL_PATH"; echo "$ROS_DISTRO $ROS_VERSION $ROS_PYTHON_VERSION"\''
     )
     out = _run("bash", script, tmp_path)
     assert out.returncode == 0, out.stderr
-    assert out.stdout.strip() == "/a:/b:/z z"
+    assert out.stdout.splitlines() == ["/a:/b:/z z", "jazzy 2 3"]
+    sourced = _run("bash", f"export ROS_DISTRO=rolling; source {VENV_ACTIVATE} && echo $ROS_DISTRO", tmp_path)
+    assert sourced.stdout.strip() == "rolling"
