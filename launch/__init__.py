@@ -5,7 +5,7 @@ The API follows launch (Jazzy): substitutions are evaluated lazily in a LaunchCo
 visited in order, processes run with their output prefixed ``[name-N]``, Ctrl-C stops the tree.
 """
 
-from . import actions, conditions, event_handlers, events, launch_description_sources, substitutions
+from . import actions, conditions, event_handlers, events, launch_description_sources, substitutions, utilities
 from .action import Action
 from .condition import Condition
 from .event import Event, EventHandler
@@ -33,4 +33,5 @@ __all__ = [
     "events",
     "launch_description_sources",
     "substitutions",
+    "utilities",
 ]

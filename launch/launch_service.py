@@ -368,11 +368,34 @@ class _Respawn:
 
 
 def _user_traceback(err: BaseException) -> str:
-    """The traceback frames from outside launch, launch_ros and gazelle (the user's launch file)."""
+    """The traceback frames from outside launch, launch_ros, gazelle and gazelle's stand-ins for ROS packages'
+    Python modules (nav2_common, ros2run...: their errors are one line, as launch's own are): the user's launch
+    file."""
     here = os.path.dirname(os.path.abspath(__file__))
     root = os.path.dirname(here)
     ours = (here, os.path.join(root, "launch_ros"), os.path.join(root, "gazelle"))
-    frames = [f for f in traceback.extract_tb(err.__traceback__) if not os.path.abspath(f.filename).startswith(ours)]
+    frames = [
+        f
+        for f in traceback.extract_tb(err.__traceback__)
+        if not os.path.abspath(f.filename).startswith(ours) and not _gazelle_compat_module(f.filename)
+    ]
     if not frames:
         return ""
     return "Traceback (user code):\n" + "".join(traceback.format_list(frames)) + f"{type(err).__name__}: {err}\n"
+
+
+COMPAT_MARKER = ".gazelle-compat"
+"""The file scripts/install_ros_packages.py leaves in each Python package it installs for gazelle."""
+
+
+def _gazelle_compat_module(filename: str) -> bool:
+    """Whether ``filename`` belongs to a Python package gazelle installed as a ROS package's stand-in: some
+    folder above it holds the marker that scripts/install_ros_packages.py writes."""
+    folder = os.path.dirname(os.path.abspath(filename))
+    while True:
+        if os.path.isfile(os.path.join(folder, COMPAT_MARKER)):
+            return True
+        parent = os.path.dirname(folder)
+        if parent == folder or os.path.basename(folder) in ("site-packages", "dist-packages"):
+            return False
+        folder = parent

@@ -195,12 +195,26 @@ def main() -> int:
     install_python_modules(venv)
     install_xacro_command(venv)
     repair_cmake_exports(venv)
-    # colcon chains workspaces over prefixes with a local_setup file; the venv is one
-    for shell in ("sh", "bash"):
-        f = venv / f"local_setup.{shell}"
-        if not f.exists():
-            f.write_text("# the gazelle virtualenv: nothing to set up (activate it to use it)\n")
+    install_prefix_setup(venv)
     return 0
+
+
+PREFIX_SETUP_MARKERS = ("# the gazelle virtualenv", "# gazelle virtualenv")
+"""How the first line of a local_setup file gazelle wrote starts (this one's, and an earlier setup's)."""
+
+
+def install_prefix_setup(venv: Path) -> None:
+    """The venv prefix's ``local_setup.{sh,bash,zsh}``: colcon chains a workspace built over the venv to the
+    prefixes with such a file, as it chains to /opt/ros/<distro>, and sources it first; it defines the shell
+    functions ament's prefix-level setup leaves defined (scripts/ament_prefix_setup.sh), which packages'
+    environment hooks call. One a user put there themselves is left alone."""
+    text = (ROOT / "scripts" / "ament_prefix_setup.sh").read_text()
+    for shell in ("sh", "bash", "zsh"):
+        f = venv / f"local_setup.{shell}"
+        if f.exists() and not f.read_text().startswith(PREFIX_SETUP_MARKERS):
+            continue
+        if not f.exists() or f.read_text() != text:
+            f.write_text(text)
 
 
 if __name__ == "__main__":

@@ -135,4 +135,14 @@ case ":${AMENT_PREFIX_PATH:-}:" in
 esac
 ACTIVATE
 fi
+if ! grep -q "gazelle: what /opt/ros/jazzy/setup.bash gives a shell" "$VENV/bin/activate"; then
+  cat >>"$VENV/bin/activate" <<'ACTIVATE'
+# gazelle: what /opt/ros/jazzy/setup.bash gives a shell, besides the prefix: ros_environment's variables
+# (unless a sourced ROS set them), and ament's shell functions, which the environment hooks of a workspace's
+# packages call (ament_prepend_unique_value, ament_append_unique_value)
+: "${ROS_DISTRO:=jazzy}" "${ROS_VERSION:=2}" "${ROS_PYTHON_VERSION:=3}"
+export ROS_DISTRO ROS_VERSION ROS_PYTHON_VERSION
+. "$VIRTUAL_ENV/local_setup.sh"
+ACTIVATE
+fi
 say "ready in $((SECONDS - SETUP_START)) s"

@@ -42,7 +42,10 @@ def _parse_args(values: list[str]) -> dict[str, str]:
 # `gazelle sim`'s options with long help, declared once here so that the command reads as its parameters
 SimWorld = Annotated[
     Path | None,
-    typer.Argument(help="World file (.sdf/.world) or a model (.urdf/.xacro/.sdf); default: the embedded empty world."),
+    typer.Argument(
+        help="World file (.sdf/.world), found as gz sim finds it (as given, then on GZ_SIM_RESOURCE_PATH, then "
+        "the installed empty.sdf), or a model (.urdf/.xacro/.sdf); default: the embedded empty world."
+    ),
 ]
 SimRtf = Annotated[
     float | None,

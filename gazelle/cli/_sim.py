@@ -14,6 +14,7 @@ from typing import Any
 from ..description import Model, ModelLoadError, World, load
 from ..sim import ReplayRecorder, start_signal_watchdog
 from ..worlds import default_world
+from ._world_file import find_world_file
 
 GIL_SWITCH_INTERVAL_SEC = 0.0002
 SHUTDOWN_DEADLINE_SEC = 4.5
@@ -37,14 +38,16 @@ def _force_exit() -> None:
 
 
 def load_world(path: Path | None, args: dict[str, str]) -> World:
-    """The world to simulate: the embedded default, a world file, or the default world plus one model.
+    """The world to simulate: the embedded default, a world file (found where gz sim finds one:
+    :func:`~._world_file.find_world_file`), or the default world plus one model.
 
     Raises:
-        ModelLoadError: the file has errors.
+        ModelLoadError: the file is nowhere gz sim would look, or has errors.
     """
-    if path is None:
+    found = None if path is None else find_world_file(path)
+    if found is None:
         return default_world()
-    result = load(path, args=args)
+    result = load(found, args=args)
     for d in result.diagnostics:
         print(d.format(), file=sys.stderr)
     value = result.value

@@ -366,7 +366,7 @@ def give_params_files(
             return str(err)
         absolute = str(Path(path).resolve())
         cm = pf.for_node(manager_name, manager_ns)
-        names = {k.rsplit("/", 1)[-1] for k in pf.nodes if "*" not in k and k.rsplit("/", 1)[-1] != manager_name}
+        names = pf.names_in(manager_ns) - {manager_name}
         names |= {k[: -len(".type")] for k in cm if k.endswith(".type")}
         text = _text(path)
         for name in sorted(names):

@@ -231,6 +231,24 @@ def generate_launch_description():
 """
 
 
+WAREHOUSE_LAUNCH = """
+import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import AppendEnvironmentVariable, IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+
+
+def generate_launch_description():
+    gz = os.path.join(get_package_share_directory("ros_gz_sim"), "launch", "gz_sim.launch.py")
+    return LaunchDescription([
+        AppendEnvironmentVariable("GZ_SIM_RESOURCE_PATH", {worlds!r}),
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(gz),
+                                 launch_arguments={{"gz_args": "-r -s warehouse.sdf"}}.items()),
+    ])
+"""
+
+
 def test_gz_sim_server_and_gui_from_two_includes_show_the_servers_viewer(tmp_path):
     """TurtleBot3's jazzy launch includes gz_sim.launch.py twice, `-r -s WORLD` and `-g`. gazelle's `-s` served no
     viewer, so there was none at all; the server now serves it (its GUI is the browser) and `-g` prints its real
@@ -261,3 +279,28 @@ def test_parameter_bridge_names_a_bad_config_file_in_one_line(tmp_path):
         assert bridge.popen.wait(30) == 1, bridge.output
         bridge.wait_line(f"config_file {config}", 5)
         assert "Traceback" not in bridge.output
+
+
+def test_a_bare_world_name_in_gz_args_is_found_on_the_resource_path_the_launch_sets(tmp_path, monkeypatch):
+    """A bring-up's `gz_args: -r -s warehouse.sdf` with its worlds folder appended to GZ_SIM_RESOURCE_PATH
+    (AppendEnvironmentVariable), launched from another folder: gz sim finds the world there, so gazelle must."""
+    worlds = tmp_path / "share" / "my_bringup" / "worlds"
+    worlds.mkdir(parents=True)
+    (worlds / "warehouse.sdf").write_text(
+        '<?xml version="1.0"?><sdf version="1.9"><world name="warehouse"><model name="ground_plane">'
+        "<static>true</static><link name='link'><collision name='c'><geometry><plane><normal>0 0 1</normal>"
+        "</plane></geometry></collision></link></model></world></sdf>"
+    )
+    launch_file = tmp_path / "bringup.launch.py"
+    launch_file.write_text(textwrap.dedent(WAREHOUSE_LAUNCH.format(worlds=str(worlds))))
+    monkeypatch.delenv("GZ_SIM_RESOURCE_PATH", raising=False)
+    monkeypatch.chdir(tmp_path)
+    proc = start([ROS2, "launch", str(launch_file)], "ros2 launch")
+    try:
+        proc.wait_line("gazelle: ready: world 'warehouse'", 60)
+    finally:
+        if proc.popen.poll() is None:
+            os.kill(proc.popen.pid, signal.SIGINT)
+        rc = proc.wait(20)
+    assert rc == 0, proc.output
+    assert "FILE_NOT_FOUND" not in proc.output

@@ -30,6 +30,7 @@ if TYPE_CHECKING:
     from ._params import load_params as load_params
     from ._params import params_file_paths as params_file_paths
     from ._params import parse_params as parse_params
+    from ._params import section_matches as section_matches
     from ._params import valid_controller_name as valid_controller_name
     from ._params import yaml_problem as yaml_problem
     from ._tolerances import SegmentTolerances as SegmentTolerances
@@ -68,6 +69,7 @@ __all__ = [
     "load_params",
     "params_file_paths",
     "parse_params",
+    "section_matches",
     "valid_controller_name",
     "yaml_problem",
 ]

@@ -1,13 +1,15 @@
 """ROS 2 parameter files (``--params-file`` YAML) as ros2_control reads them, and the names controllers may take.
 
-A file maps node names to ``ros__parameters``; a node's section is found by its name, its
-fully qualified name (``/ns/name``) or a wildcard (``/**``). Nested mappings flatten to dotted
-names (``linear: {x: {max_velocity: 1.0}}`` is ``linear.x.max_velocity``), as rclcpp does.
+A file maps node names to ``ros__parameters``; a node's sections are found by :func:`section_matches`,
+rcl's rules (a fully qualified name, ``/**`` for zero or more namespace levels, ``/*`` for exactly one).
+Nested mappings flatten to dotted names (``linear: {x: {max_velocity: 1.0}}`` is ``linear.x.max_velocity``),
+as rclcpp does.
 """
 
 from __future__ import annotations
 
-import fnmatch
+import functools
+import re
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -38,24 +40,58 @@ class ParamsFile:
     nodes: dict[str, Params]
 
     def for_node(self, name: str, namespace: str = "") -> Params:
-        """The parameters of node ``name`` in ``namespace``: wildcard sections (``/**``), then the bare
-        name's, then the fully qualified name's (the most specific wins).
-
-        A bare name (``diffbot_base_controller:``) also applies in a namespace: rcl would not match it
-        there, but controller files are written for one robot and reused for namespaced copies; a
-        ``/ns/name`` section is the way to give one of them other values."""
+        """The parameters of node ``name`` in ``namespace``: every section that names it
+        (:func:`section_matches`), merged in the order the file first names them, a later section's value
+        winning, as rclcpp and rclpy merge a node's overrides (parameter_map.cpp ``parameter_map_from``,
+        rclpy node.cpp ``_populate_node_parameters_from_rcl_params``): ``/**`` before ``name`` in the file
+        is a default the node's own section overrides."""
         ns = "/" + namespace.strip("/") if namespace.strip("/") else ""
-        fq = f"{ns}/{name}"
         out: Params = {}
         for key, params in self.nodes.items():
-            if "*" in key and fnmatch.fnmatchcase(fq, "/" + key.strip("/").replace("**", "*")):
+            if section_matches(key, name, ns):
                 out.update(params)
-        for key in (name, f"/{name}"):
-            out.update(self.nodes.get(key, {}))
-        if ns:
-            for key in (fq, fq.lstrip("/")):
-                out.update(self.nodes.get(key, {}))
         return out
+
+    def names_in(self, namespace: str = "") -> set[str]:
+        """The node names the file's sections spell out (the last part of a key, wildcards left out) that
+        apply in ``namespace``: ``/**/imu_broadcaster`` names ``imu_broadcaster`` in every namespace,
+        ``/r1/diff`` names ``diff`` in ``/r1`` only."""
+        ns = "/" + namespace.strip("/") if namespace.strip("/") else ""
+        names = {key.rsplit("/", 1)[-1] for key in self.nodes}
+        return {n for n in names if "*" not in n and any(section_matches(k, n, ns) for k in self.nodes)}
+
+
+def section_matches(key: str, name: str, namespace: str = "") -> bool:
+    """Whether a parameters file's section ``key`` applies to node ``name`` in ``namespace`` (``""`` or
+    ``/ns``): the one matcher of every parameters file gazelle reads (the controller manager's files,
+    spawners' ``--param-file``, ``spawn --ros-args --params-file``).
+
+    rcl's rules, as rclcpp and rclpy apply them to a node's fully qualified name (rclcpp parameter_map.cpp
+    ``is_node_name_matched``): a key without a leading ``/`` gets one; ``/**`` is zero or more namespace
+    levels and ``/*`` exactly one (one token of letters, digits and ``_``), so ``/**/controller_manager``
+    is ``/controller_manager`` and ``/r1/controller_manager``, ``/**`` every node; anything else must be
+    equal. One addition: a name with no namespace (``diffbot_base_controller:``, ``/diffbot_base_controller:``)
+    also applies in a namespace. rcl would not match it there, but controller files are written for one
+    robot and reused for namespaced copies; a ``/ns/name`` section is the way to give one of them other
+    values."""
+    if key in (name, "/" + name):
+        return True
+    fq = f"{namespace}/{name}"
+    return _key_pattern(key if key.startswith("/") else "/" + key).fullmatch(fq) is not None
+
+
+@functools.lru_cache(maxsize=1024)
+def _key_pattern(key: str) -> re.Pattern[str]:
+    """A section key as the expression rclcpp makes of it (``/*`` -> one ``/token``, its ``/**`` -> any
+    number of them); every other character stands for itself (a stray ``*`` matches no valid name)."""
+    parts = key.split("/*")
+    out = [re.escape(parts[0])]
+    for part in parts[1:]:
+        if part.startswith("*"):  # "/**": zero or more levels
+            out.append(r"(?:/[A-Za-z0-9_]+)*" + re.escape(part[1:]))
+        else:
+            out.append(r"(?:/[A-Za-z0-9_]+)" + re.escape(part))
+    return re.compile("".join(out))
 
 
 def _flatten(prefix: str, value: Any, out: Params, where: str) -> None:

@@ -1,6 +1,7 @@
-"""ros_gz_sim's gz_sim.launch.py for gazelle: `gazelle sim` from gz_args (a world file, -r to run,
--s for no GUI: the server still serves its viewer, which -g shows; gz's empty.sdf is gazelle's default
-world; -g, the GUI alone: gzclient's stand-in)."""
+"""ros_gz_sim's gz_sim.launch.py for gazelle: `gazelle sim` from gz_args (a world file, found where gz sim
+finds it: as given, on GZ_SIM_RESOURCE_PATH, then the installed worlds, where gz's empty.sdf is gazelle's
+default world; -r to run; -s for no GUI: the server still serves its viewer, which -g shows; -g, the GUI
+alone: gzclient's stand-in)."""
 
 import os
 import shlex
@@ -45,7 +46,7 @@ def _server(context):
             world = tok
         else:
             ignored.append(tok)
-    if world and world not in ("empty.sdf", "empty.world"):
+    if world:
         cmd.insert(2, world)
     if not run:
         cmd.append("--paused")  # gz sim starts paused without -r
