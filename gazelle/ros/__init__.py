@@ -29,6 +29,7 @@ if TYPE_CHECKING:
     from ._exposure import choose_discovery_range
     from ._gui_stand_ins import gui_stand_in_main, image_bridge_main
     from ._interfaces import InterfaceError, resolve_interface, split_type_name
+    from ._names import gz_topic_on_ros
     from ._planning_scene import pose as matrix_to_pose
     from ._signals import await_signal_shutdown, silence_half_made_objects
     from ._spawn_entity import main as spawn_main
@@ -73,6 +74,7 @@ __all__ = [
     "message_definition",
     "choose_discovery_range",
     "gui_stand_in_main",
+    "gz_topic_on_ros",
     "image_bridge_main",
     "matrix_to_pose",
     "spawn_main",

@@ -6,6 +6,7 @@ alone: gzclient's stand-in)."""
 import os
 import shlex
 
+from gazelle.cli import gz_sim_args
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, ExecuteProcess, LogInfo, OpaqueFunction, Shutdown
 
@@ -23,33 +24,10 @@ def _server(context):
         # was a second server on the domain, and the two stopped each other
         client = os.path.join(os.path.dirname(GAZELLE), "gzclient")
         return [ExecuteProcess(cmd=[client], name="gazebo", output="screen", on_exit=Shutdown() if shutdown else None)]
-    cmd, world, run, ignored = [GAZELLE, "sim"], "", False, []
-    skip = False
-    for i, tok in enumerate(tokens):
-        if skip:
-            skip = False
-            continue
-        if tok == "-r":
-            run = True
-        elif tok in ("-s", "--headless-rendering"):
-            # `-s`: gz's server without its GUI, which a `gz sim -g` may join later. gazelle's GUI is the
-            # server's browser viewer, so the server serves it (as gzserver does; GAZELLE_GZSERVER_VIEWER=0
-            # turns it off) and `-g` prints where it is: with `-s` and `-g` in two includes there was none
-            if os.environ.get("GAZELLE_GZSERVER_VIEWER", "1") == "0":
-                cmd.append("--no-viewer")
-        elif tok in ("-v", "--verbose", "--render-engine", "--physics-engine", "--gui-config"):
-            skip = i + 1 < len(tokens) and not tokens[i + 1].startswith("-")
-            ignored.append(tok)
-        elif tok.startswith("-v") and tok[2:].isdigit():
-            ignored.append(tok)
-        elif not tok.startswith("-"):
-            world = tok
-        else:
-            ignored.append(tok)
-    if world:
-        cmd.insert(2, world)
-    if not run:
-        cmd.append("--paused")  # gz sim starts paused without -r
+    parsed = gz_sim_args(tokens, viewer=os.environ.get("GAZELLE_GZSERVER_VIEWER", "1") != "0")
+    # `-s` serves the viewer, as gzserver does: gazelle's GUI is the server's browser viewer, which a `-g` include
+    # (with -s and -g in two includes there was none) or gzclient points at; GAZELLE_GZSERVER_VIEWER=0 turns it off
+    cmd, ignored = [GAZELLE, "sim", *parsed.sim_args], parsed.ignored
     actions = []
     if ignored:
         actions.append(LogInfo(msg=f"gz_args {' '.join(ignored)} have no meaning for gazelle sim"))
