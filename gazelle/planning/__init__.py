@@ -7,6 +7,8 @@ from . import _servo as servo  # noqa: F401  (MoveIt Servo's status codes and co
 from ._collision_matrix import CollisionMatrix as CollisionMatrix
 from ._group_urdf import GroupUrdfError as GroupUrdfError
 from ._group_urdf import group_urdf as group_urdf
+from ._names import NAME_CHARS as NAME_CHARS
+from ._names import quoted as quoted
 from ._planner import ArmPlanner as ArmPlanner
 from ._planner import Trajectory as Trajectory
 from ._robot_scene import DEFAULT_ACCELERATION as DEFAULT_ACCELERATION

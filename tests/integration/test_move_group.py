@@ -961,3 +961,19 @@ def test_a_groups_urdf_and_clear_octomap_are_served_as_moveits_default_capabilit
     assert bad.error_code.message == "Cannot create URDF because planning group 'tail' does not exist"
     panda.ros.call(Empty, "/clear_octomap", Empty.Request())
     panda.move_group.wait_line("Octomap cleared.", timeout=10)
+
+
+def test_a_10_mb_group_name_to_get_urdf_is_quoted_at_most_40_characters(panda):
+    """Issue 48 item 10: a 10 MB group name was echoed whole into get_urdf's reply and one log line; gazelle
+    quotes a requested name at most 40 characters long elsewhere (controller names)."""
+    from moveit_msgs.srv import GetGroupUrdf
+
+    name = "g" * 10_000_000
+    res = panda.ros.call(GetGroupUrdf, "/get_urdf", GetGroupUrdf.Request(group_name=name), timeout=60)
+    assert res.error_code.val == MoveItErrorCodes.FAILURE and res.urdf_string == ""
+    assert res.error_code.message == (
+        f"Cannot create URDF because planning group '{'g' * 40}'… (10000000 characters) does not exist"
+    )
+    line = panda.move_group.wait_line("(10000000 characters) does not exist", timeout=10)
+    assert len(line) < 300, len(line)
+    assert max(len(line) for line in panda.move_group.lines) < 10_000
