@@ -963,6 +963,62 @@ def test_a_groups_urdf_and_clear_octomap_are_served_as_moveits_default_capabilit
     panda.move_group.wait_line("Octomap cleared.", timeout=10)
 
 
+def _peak_rss_mb(pid: int) -> tuple[float, float]:
+    """A process's resident memory now and at its peak (VmRSS, VmHWM), MB."""
+    fields = {}
+    with open(f"/proc/{pid}/status") as f:
+        for line in f:
+            key, _, value = line.partition(":")
+            if key in ("VmRSS", "VmHWM"):
+                fields[key] = int(value.split()[0]) / 1024
+    return fields["VmRSS"], fields["VmHWM"]
+
+
+def _line_request(ready: dict[str, float], begin: Any, dy: float, max_step: float) -> Any:
+    """A GetCartesianPath request: panda_link8 from 'ready' ``dy`` m sideways in steps of ``max_step``."""
+    from geometry_msgs.msg import Pose
+    from moveit_msgs.srv import GetCartesianPath
+
+    end = Pose(position=type(begin.position)(x=begin.position.x, y=begin.position.y + dy, z=begin.position.z))
+    end.orientation = begin.orientation
+    req = GetCartesianPath.Request()
+    req.header.frame_id = "panda_link0"
+    req.group_name = "panda_arm"
+    req.link_name = "panda_link8"
+    req.waypoints = [end]
+    req.max_step = max_step
+    req.avoid_collisions = True
+    req.start_state.joint_state.name = list(ready)
+    req.start_state.joint_state.position = list(ready.values())
+    return req
+
+
+def test_a_cartesian_path_at_max_step_1e_6_is_refused_at_once_with_moveits_failure_and_memory_stays(panda):
+    """Issue 48: 0.3 m at max_step 1e-6 from 'ready' was answered after 51.5 s with a MemoryError, move_group's
+    RSS going from 224 MB to 1.6 GB, every other request waiting. Its 300,000 poses are now counted before any
+    is made and refused (FAILURE, MoveIt's code for a max_step it cannot use) in well under a second."""
+    import time
+
+    from moveit_msgs.srv import GetCartesianPath
+
+    ready = _group_states("panda_arm")["ready"]
+    (begin,) = _fk(panda, ready, ["panda_link8"])
+    pid = panda.move_group.popen.pid
+    rss_before, peak_before = _peak_rss_mb(pid)
+    t0 = time.monotonic()
+    res = panda.ros.call(GetCartesianPath, "/compute_cartesian_path", _line_request(ready, begin, 0.3, 1e-6), 15)
+    took = time.monotonic() - t0
+    assert res.error_code.val == MoveItErrorCodes.FAILURE, (res.error_code.val, res.error_code.message)
+    assert "max_step 1e-06" in res.error_code.message and "10000 poses" in res.error_code.message
+    assert res.fraction == 0.0 and not res.solution.joint_trajectory.points
+    assert took < 5.0, took
+    _, peak_after = _peak_rss_mb(pid)
+    assert peak_after <= max(peak_before, rss_before + 50.0), (rss_before, peak_before, peak_after)
+    # the same line in steps move_group solves is drawn whole
+    res = panda.ros.call(GetCartesianPath, "/compute_cartesian_path", _line_request(ready, begin, 0.3, 0.01))
+    assert res.error_code.val == MoveItErrorCodes.SUCCESS and res.fraction == pytest.approx(1.0)
+
+
 def test_a_10_mb_group_name_to_get_urdf_is_quoted_at_most_40_characters(panda):
     """Issue 48 item 10: a 10 MB group name was echoed whole into get_urdf's reply and one log line; gazelle
     quotes a requested name at most 40 characters long elsewhere (controller names)."""

@@ -1,7 +1,13 @@
-"""A planning error quotes a name a request gave at most 40 characters long (issue 48). On MoveIt's Panda."""
+"""The work one planning request may cost is bounded (issue 48): a Cartesian path of too many poses is refused
+before any is made, a slow trajectory is sampled within a point bound, an unsolvable plan stops at its bound
+with MoveIt's code; and names are quoted short. On MoveIt's Panda."""
 
 from __future__ import annotations
 
+import time
+import tracemalloc
+
+import numpy as np
 import pytest
 import yaml
 
@@ -27,6 +33,101 @@ def _make_planner():
 def planner():
     pytest.importorskip("roboplan")
     return _make_planner()
+
+
+def test_a_cartesian_path_of_300000_poses_is_refused_before_any_is_made(planner):
+    """Issue 48's payload: 0.3 m at max_step 1e-6 from 'ready'. Every pose was made before the first IK (300,000
+    of them), and move_group answered after 51 s with a MemoryError at 1.6 GB. Now it is refused with MoveIt's
+    FAILURE (what cartesian_path_service_capability.cpp answers for a max_step it cannot use) at once, having
+    made nothing; so are a max_step MoveIt refuses and a waypoint that is no pose."""
+    from gazelle.planning import PlanningError
+
+    ready = planner.state(READY)
+    end = planner.fk(ready, "panda_link8")
+    end[1, 3] += 0.3
+    tracemalloc.start()
+    t0 = time.monotonic()
+    try:
+        with pytest.raises(PlanningError) as err:
+            planner.cartesian_path("panda_arm", "panda_link8", [end], ready, max_step=1e-6)
+        took = time.monotonic() - t0
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert err.value.code == "FAILURE", err.value.message
+    assert "max_step 1e-06" in err.value.message and "10000 poses" in err.value.message  # MAX_CARTESIAN_STEPS
+    assert took < 1.0 and peak < 1_000_000, (took, peak)
+    for bad in (0.0, -0.01, 1e-300, float("nan"), float("inf")):
+        with pytest.raises(PlanningError) as err:
+            planner.cartesian_path("panda_arm", "panda_link8", [end], ready, max_step=bad)
+        assert err.value.code == "FAILURE" and "max_step" in err.value.message
+    nowhere = end.copy()
+    nowhere[0, 3] = float("nan")
+    with pytest.raises(PlanningError) as err:
+        planner.cartesian_path("panda_arm", "panda_link8", [end, nowhere], ready, max_step=0.01)
+    assert (err.value.code, err.value.message) == ("FAILURE", "waypoint 1 is not a finite pose")
+    # within the bound, the same line is drawn whole
+    traj, fraction = planner.cartesian_path("panda_arm", "panda_link8", [end], ready, max_step=0.3 / 5000)
+    assert fraction == pytest.approx(1.0) and traj is not None
+
+
+def test_a_cartesian_path_past_its_time_budget_is_refused_timed_out(planner):
+    """The poses' IK has a wall-clock budget (CARTESIAN_TIMEOUT_SEC, 30 s, by default): past it the request is
+    refused with MoveIt's TIMED_OUT, saying how far it got, rather than holding its planner for as long as its
+    poses take (each pose's IK has a 2 s guard of its own)."""
+    from gazelle.planning import PlanningError
+
+    ready = planner.state(READY)
+    end = planner.fk(ready, "panda_link8")
+    end[1, 3] += 0.3
+    with pytest.raises(PlanningError) as err:
+        planner.cartesian_path("panda_arm", "panda_link8", [end], ready, max_step=0.3 / 9_000, timeout=0.05)
+    assert err.value.code == "TIMED_OUT" and "more than 0.05 s" in err.value.message, err.value.message
+
+
+def test_a_slow_trajectory_is_sampled_within_the_point_bound(planner):
+    """A velocity scaling of 1e-4 makes a 0.3 rad move ~1,250 s long: at TOPP-RA's 10 ms that was 125,000
+    points (1e-6 asked for 12.5 million); now at most MAX_TRAJECTORY_POINTS (20,000), evenly spread over the
+    same duration, still ending at the goal within the scaled limits."""
+    most = 20_000
+    start = planner.state(READY)
+    goal = planner.state({**READY, "panda_joint1": 0.3})
+    fast = planner.plan("panda_arm", goal, start)
+    slow = planner.plan("panda_arm", goal, start, velocity_scaling=1e-4, acceleration_scaling=1e-4)
+    assert len(fast.times) == pytest.approx(fast.duration / 0.01, abs=2)  # a short one keeps its 10 ms
+    assert slow.duration > 1000.0
+    assert len(slow.times) <= most, len(slow.times)
+    assert np.diff(slow.times).max() <= slow.duration / (most - 2)
+    assert slow.positions[-1] == pytest.approx(fast.positions[-1], abs=1e-6)
+    assert np.abs(slow.velocities).max() <= 1e-4 * 2.61 * 1.01  # the Panda's fastest joint, scaled
+
+
+def test_a_plan_with_no_way_through_ends_planning_failed_at_the_searchs_bound(planner):
+    """roboplan's RRT stops at 1,000 nodes with a RuntimeError ("Added maximum number of nodes"), which
+    move_group answered as FAILURE "internal error"; MoveIt says PLANNING_FAILED. An allowed planning time
+    beyond MAX_PLANNING_SEC is cut to it."""
+    from gazelle.planning import PlanningError
+
+    start = planner.state(READY)
+    behind = planner.state({**READY, "panda_joint1": 2.8})
+    # two walls beside the base and a roof above 'ready': the arm cannot pass from the front to the back
+    for side in (1, -1):
+        wall = np.eye(4)
+        wall[:3, 3] = [0.0, side * 1.08, 1.0]
+        planner.add_box(f"wall{side}", [0.02, 1.84, 4.0], wall)
+    roof = np.eye(4)
+    roof[2, 3] = 0.85
+    planner.add_box("roof", [4.0, 4.0, 0.02], roof)
+    try:
+        assert not planner.in_collision(start) and not planner.in_collision(behind)
+        t0 = time.monotonic()
+        with pytest.raises(PlanningError) as err:
+            planner.plan("panda_arm", behind, start, timeout=1e9)
+        assert err.value.code in ("PLANNING_FAILED", "TIMED_OUT"), err.value.message
+        assert time.monotonic() - t0 < 35.0
+    finally:
+        for name in ("wall1", "wall-1", "roof"):
+            planner.remove_object(name)
 
 
 def test_a_huge_name_is_quoted_at_most_40_characters(planner):
