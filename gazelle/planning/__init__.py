@@ -16,6 +16,7 @@ from ._planner import MAX_PLANNING_SEC as MAX_PLANNING_SEC
 from ._planner import MAX_TRAJECTORY_POINTS as MAX_TRAJECTORY_POINTS
 from ._planner import ArmPlanner as ArmPlanner
 from ._planner import Trajectory as Trajectory
+from ._pool import PlannerPool as PlannerPool
 from ._robot_scene import DEFAULT_ACCELERATION as DEFAULT_ACCELERATION
 from ._robot_scene import START_BOUNDS_ERROR as START_BOUNDS_ERROR
 from ._robot_scene import PlanningError as PlanningError

@@ -120,7 +120,7 @@ def moveit_joint_limits(config: Mapping) -> dict[str, dict[str, float]]:
 class RobotScene:
     """Planning for one robot: FK, IK, collision checks and timed paths for its SRDF groups.
 
-    Not thread-safe: one request at a time (the ROS node serialises them).
+    Not thread-safe: one request at a time (a ``PlannerPool`` gives each kind of work its own copy).
     """
 
     def __init__(

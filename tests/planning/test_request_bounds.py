@@ -1,9 +1,11 @@
 """The work one planning request may cost is bounded (issue 48): a Cartesian path of too many poses is refused
 before any is made, a slow trajectory is sampled within a point bound, an unsolvable plan stops at its bound
-with MoveIt's code; and names are quoted short. On MoveIt's Panda."""
+with MoveIt's code, names are quoted short, and the planners of a
+:class:`PlannerPool` keep one scene while a query answers beside a long plan. On MoveIt's Panda."""
 
 from __future__ import annotations
 
+import threading
 import time
 import tracemalloc
 
@@ -27,6 +29,14 @@ def _make_planner():
         return ArmPlanner(urdf, (CONFIG / "panda.srdf").read_text(), joint_limits=limits, seed=1)
     finally:
         os.environ.pop("GAZELLE_RESOURCE_PATH")
+
+
+@pytest.fixture(scope="module")
+def pool():
+    pytest.importorskip("roboplan")
+    from gazelle.planning import PlannerPool
+
+    return PlannerPool(_make_planner)
 
 
 @pytest.fixture(scope="module")
@@ -147,3 +157,94 @@ def test_a_huge_name_is_quoted_at_most_40_characters(planner):
     with pytest.raises(PlanningError) as err:
         planner.group_joints("left_arm")
     assert "no planning group 'left_arm'" in err.value.message  # a short name as before
+
+
+def _scene_of(planner) -> list[tuple]:
+    """What a scene holds, comparably: each object's name, link, touch links, pose and shapes, in order."""
+    return [
+        (o.name, o.link, o.touch_links, o.pose.round(12).tolist(), [(s.kind, s.dimensions) for s in o.shapes])
+        for o in planner.objects()
+    ]
+
+
+def test_the_pools_planners_keep_one_scene(pool):
+    """A change made on the primary planner is copied to the others when the pool's write ends: objects added,
+    moved, attached, detached, replaced and removed, and a new allowed collision matrix; the copies then
+    answer collision checks as the primary does."""
+    from gazelle.planning import CollisionMatrix, SceneObject, Shape
+
+    roles = ("plan", "ik", "query")
+    ready = pool.primary.state(READY)
+    samples = [ready, pool.primary.state({**READY, "panda_joint1": 0.8, "panda_joint2": 0.6})]
+    flange = pool.primary.fk(ready, "panda_link8")
+
+    def check() -> None:
+        for role in roles:
+            with pool.using(role) as planner:
+                assert _scene_of(planner) == _scene_of(pool.primary), role
+                assert planner.acm == pool.primary.acm
+                assert [planner.in_collision(q) for q in samples] == [pool.primary.in_collision(q) for q in samples]
+
+    cube = (Shape("box", (0.1, 0.1, 0.1), np.eye(4)),)
+    try:
+        with pool.writing() as primary:
+            primary.add_box("table", [1.0, 1.0, 0.02], np.eye(4))
+            primary.add_object(SceneObject("block", cube, flange))
+        check()
+        assert pool.primary.in_collision(ready)  # the block is where the flange is
+        with pool.writing() as primary:
+            moved = flange.copy()
+            moved[2, 3] += 0.5
+            primary.move_object("block", moved)
+            primary.add_object(SceneObject("held", cube, np.eye(4), "panda_hand", ("panda_leftfinger",)))
+        check()
+        with pool.writing() as primary:
+            primary.add_box("table", [1.0, 1.0, 0.04], np.eye(4))  # replaced: now after the held one
+            primary.remove_object("block")
+            names = [*primary.acm.names, "held"]
+            rows = [[True] * len(names) for _ in names]
+            primary.set_allowed_collision_matrix(CollisionMatrix.from_rows(names, rows))
+        check()
+        assert [name for name, *_ in _scene_of(pool.primary)] == ["held", "table"]
+        with pool.writing() as primary:
+            primary.add_object(SceneObject("held", cube, flange))  # detached into the world
+        check()
+        assert [name for name, *_ in _scene_of(pool.primary)] == ["table", "held"]
+    finally:
+        with pool.writing() as primary:
+            for obj in primary.objects():
+                primary.remove_object(obj.name)
+            primary.set_allowed_collision_matrix(CollisionMatrix.initial([], []))
+        check()
+
+
+def test_the_query_planner_answers_while_a_long_path_holds_the_primary(pool):
+    """move_group served every request under one lock: an FK waited for the longest plan. A pool's query
+    planner is free while the primary draws a 10,000-pose Cartesian path (seconds)."""
+    primary = pool.primary
+    ready = primary.state(READY)
+    end = primary.fk(ready, "panda_link8")
+    end[1, 3] += 0.3
+    running, finished = threading.Event(), threading.Event()
+    box: dict[str, float] = {}
+
+    def long_path() -> None:
+        with pool.using("plan") as planner:
+            running.set()
+            t0 = time.monotonic()
+            planner.cartesian_path("panda_arm", "panda_link8", [end], ready, max_step=0.3 / 9_999)
+            box["path"] = time.monotonic() - t0
+        finished.set()
+
+    worker = threading.Thread(target=long_path, daemon=True)
+    worker.start()
+    assert running.wait(10)
+    t0 = time.monotonic()
+    with pool.using("query") as query:
+        query.fk(query.state(READY), "panda_link8")
+        valid = not query.in_collision(query.state(READY))
+    box["fk"] = time.monotonic() - t0
+    answered_before = not finished.is_set()
+    worker.join(60)
+    assert valid and answered_before, box
+    assert box["fk"] < 0.25 * box["path"], box
