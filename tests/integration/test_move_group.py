@@ -1019,6 +1019,61 @@ def test_a_cartesian_path_at_max_step_1e_6_is_refused_at_once_with_moveits_failu
     assert res.error_code.val == MoveItErrorCodes.SUCCESS and res.fraction == pytest.approx(1.0)
 
 
+def test_queries_answer_while_a_long_cartesian_path_is_planned(panda):
+    """Every move_group service waited on one lock: a /compute_fk sent beside issue 48's payload waited 49.6 s.
+    FK, state validity and the planning scene are now served by their own planner (MoveIt serves them
+    beside a plan): while a 10,000-pose Cartesian path is computed (seconds), each answers within a
+    second, well under the path's time, and several answer before the path does."""
+    import time
+
+    from moveit_msgs.srv import GetCartesianPath, GetPlanningScene
+
+    ready = _group_states("panda_arm")["ready"]
+    (begin,) = _fk(panda, ready, ["panda_link8"])
+    valid = GetStateValidity.Request(group_name="panda_arm")
+    valid.robot_state.joint_state.name = list(ready)
+    valid.robot_state.joint_state.position = list(ready.values())
+    fk = GetPositionFK.Request(fk_link_names=["panda_link8"])
+    fk.header.frame_id = "panda_link0"
+    queries = [
+        (GetPositionFK, "/compute_fk", fk),
+        (GetStateValidity, "/check_state_validity", valid),
+        (GetPlanningScene, "/get_planning_scene", GetPlanningScene.Request()),
+    ]
+    for srv_type, name, req in queries:  # clients made and their services discovered before the path starts
+        panda.ros.call(srv_type, name, req)
+    client = panda.ros.client(GetCartesianPath, "/compute_cartesian_path")
+    t0 = time.monotonic()
+    path = client.call_async(_line_request(ready, begin, 0.3, 0.3 / 9_999))
+    latencies: list[float] = []
+    while not path.done() and time.monotonic() - t0 < 120:
+        srv_type, name, req = queries[len(latencies) % len(queries)]
+        asked = time.monotonic()
+        panda.ros.call(srv_type, name, req, timeout=1.0)  # fails the test if it waits a second
+        if not path.done():
+            latencies.append(time.monotonic() - asked)
+    wait_for(path.done, 120, "the Cartesian path's answer")
+    planned = time.monotonic() - t0
+    res = path.result()
+    assert res.error_code.val == MoveItErrorCodes.SUCCESS and res.fraction == pytest.approx(1.0), res.error_code
+    assert len(latencies) >= 3, (latencies, planned)
+    assert max(latencies) < planned / 2, (latencies, planned)
+
+
+def test_compute_fk_answers_at_most_1000_links_a_request(panda):
+    """Each link named is an FK and a pose in the reply (MoveIt lets a link be named again): a request naming
+    one link a million times (11 MB) was a million FKs and a 100 MB reply. At most 1,000 are answered; more is
+    MoveIt's FAILURE saying so."""
+    ready = _group_states("panda_arm")["ready"]
+    assert len(_fk(panda, ready, ["panda_link8"] * 1000)) == 1000
+    req = GetPositionFK.Request(fk_link_names=["panda_link8"] * 1001)
+    req.robot_state.joint_state.name = list(ready)
+    req.robot_state.joint_state.position = list(ready.values())
+    res = panda.ros.call(GetPositionFK, "/compute_fk", req)
+    assert res.error_code.val == MoveItErrorCodes.FAILURE and not res.pose_stamped
+    assert res.error_code.message == "fk_link_names names 1001 links; at most 1000 a request"
+
+
 def test_a_10_mb_group_name_to_get_urdf_is_quoted_at_most_40_characters(panda):
     """Issue 48 item 10: a 10 MB group name was echoed whole into get_urdf's reply and one log line; gazelle
     quotes a requested name at most 40 characters long elsewhere (controller names)."""
