@@ -275,6 +275,7 @@ class ArmPlanner(RobotScene):
         # the samples are what grow), then the samples the duration allows
         topts.dt = 1e12
         duration = float(np.asarray(parameterizer.generate(path, topts).times, dtype=float)[-1])
+        # (a hair wider than the even split, so that rounding never adds a point past the bound)
         topts.dt = max(TRAJECTORY_DT, duration / (MAX_TRAJECTORY_POINTS - 1) * (1.0 + 1e-9))
         traj = parameterizer.generate(path, topts)
         return Trajectory(
@@ -398,7 +399,7 @@ class ArmPlanner(RobotScene):
 
         Raises:
             PlanningError: ``FAILURE`` for a waypoint that is not a finite pose, or more than
-                :data:`MAX_CARTESIAN_STEPS` poses in all (saying the ``max_step`` that would do).
+                :data:`MAX_CARTESIAN_STEPS` poses in all (naming ``max_step``).
         """
         steps: list[int] = []
         previous = np.asarray(start, dtype=float)

@@ -525,23 +525,11 @@ def _ready(panda: Panda) -> dict[str, float]:
 
 
 def test_compute_cartesian_path_draws_a_20_cm_line_that_the_arm_follows_within_2_mm(panda):
-    from geometry_msgs.msg import Pose
     from moveit_msgs.srv import GetCartesianPath
 
     ready = _ready(panda)
     (begin,) = _fk(panda, ready, ["panda_link8"])
-    end = Pose(position=type(begin.position)(x=begin.position.x, y=begin.position.y + 0.2, z=begin.position.z))
-    end.orientation = begin.orientation
-    req = GetCartesianPath.Request()
-    req.header.frame_id = "panda_link0"
-    req.group_name = "panda_arm"
-    req.link_name = "panda_link8"
-    req.waypoints = [end]
-    req.max_step = 0.01
-    req.avoid_collisions = True
-    req.start_state.joint_state.name = list(ready)
-    req.start_state.joint_state.position = list(ready.values())
-    res = panda.ros.call(GetCartesianPath, "/compute_cartesian_path", req)
+    res = panda.ros.call(GetCartesianPath, "/compute_cartesian_path", _line_request(ready, begin, 0.2, 0.01))
     assert res.error_code.val == MoveItErrorCodes.SUCCESS, res.error_code.message
     assert res.fraction == pytest.approx(1.0)
 

@@ -1,7 +1,7 @@
 """The work one planning request may cost is bounded (issue 48): a Cartesian path of too many poses is refused
 before any is made, a slow trajectory is sampled within a point bound, an unsolvable plan stops at its bound
-with MoveIt's code, names are quoted short, and the planners of a
-:class:`PlannerPool` keep one scene while a query answers beside a long plan. On MoveIt's Panda."""
+with MoveIt's code, names are quoted short, and the planners of a :class:`PlannerPool` keep one scene while a
+query answers beside a long plan. On MoveIt's Panda."""
 
 from __future__ import annotations
 
@@ -11,24 +11,8 @@ import tracemalloc
 
 import numpy as np
 import pytest
-import yaml
 
-from planning.test_planning import CONFIG, PANDA, READY
-
-
-def _make_planner():
-    import os
-
-    from gazelle.description import read_description_file
-    from gazelle.planning import ArmPlanner, moveit_joint_limits
-
-    os.environ["GAZELLE_RESOURCE_PATH"] = str(PANDA)  # the meshes are read from the resource roots only
-    try:
-        urdf = read_description_file(str(CONFIG / "panda.urdf.xacro"))
-        limits = moveit_joint_limits(yaml.safe_load((CONFIG / "joint_limits.yaml").read_text()))
-        return ArmPlanner(urdf, (CONFIG / "panda.srdf").read_text(), joint_limits=limits, seed=1)
-    finally:
-        os.environ.pop("GAZELLE_RESOURCE_PATH")
+from planning.test_planning import READY, panda_planner
 
 
 @pytest.fixture(scope="module")
@@ -36,13 +20,13 @@ def pool():
     pytest.importorskip("roboplan")
     from gazelle.planning import PlannerPool
 
-    return PlannerPool(_make_planner)
+    return PlannerPool(panda_planner)
 
 
 @pytest.fixture(scope="module")
 def planner():
     pytest.importorskip("roboplan")
-    return _make_planner()
+    return panda_planner()
 
 
 def test_a_cartesian_path_of_300000_poses_is_refused_before_any_is_made(planner):
