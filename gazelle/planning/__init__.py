@@ -7,8 +7,16 @@ from . import _servo as servo  # noqa: F401  (MoveIt Servo's status codes and co
 from ._collision_matrix import CollisionMatrix as CollisionMatrix
 from ._group_urdf import GroupUrdfError as GroupUrdfError
 from ._group_urdf import group_urdf as group_urdf
+from ._names import NAME_CHARS as NAME_CHARS
+from ._names import quoted as quoted
+from ._planner import CARTESIAN_TIMEOUT_SEC as CARTESIAN_TIMEOUT_SEC
+from ._planner import MAX_CARTESIAN_STEPS as MAX_CARTESIAN_STEPS
+from ._planner import MAX_IK_SEC as MAX_IK_SEC
+from ._planner import MAX_PLANNING_SEC as MAX_PLANNING_SEC
+from ._planner import MAX_TRAJECTORY_POINTS as MAX_TRAJECTORY_POINTS
 from ._planner import ArmPlanner as ArmPlanner
 from ._planner import Trajectory as Trajectory
+from ._pool import PlannerPool as PlannerPool
 from ._robot_scene import DEFAULT_ACCELERATION as DEFAULT_ACCELERATION
 from ._robot_scene import START_BOUNDS_ERROR as START_BOUNDS_ERROR
 from ._robot_scene import PlanningError as PlanningError

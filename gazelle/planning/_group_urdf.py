@@ -16,6 +16,7 @@ from __future__ import annotations
 from lxml import etree
 
 from ..description import Semantics
+from ._names import quoted
 
 _HEADER = '<?xml version="1.0" ?><robot name="{}" xmlns:xacro="http://ros.org/wiki/xacro">'
 
@@ -77,7 +78,7 @@ def group_urdf(urdf: str, semantics: Semantics, group: str) -> str:
     """The URDF text of ``group`` (see the module's docstring); :class:`GroupUrdfError` when the SRDF has
     no such group or the result would have no single root link (urdfdom's rule)."""
     if group not in {g.name for g in semantics.groups}:
-        raise GroupUrdfError(f"Cannot create URDF because planning group '{group}' does not exist")
+        raise GroupUrdfError(f"Cannot create URDF because planning group {quoted(group)} does not exist")
     parser = etree.XMLParser(resolve_entities=False, no_network=True, remove_blank_text=True)
     robot = etree.fromstring(urdf.encode(), parser)
     joints, links = group_joints_and_links(robot, semantics, group)

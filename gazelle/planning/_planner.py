@@ -23,6 +23,28 @@ from ._robot_scene import PlanningError, RobotScene
 IK_DIAGNOSIS_SEC = 0.2
 """s a failed IK spends finding out why: the same IK with collisions ignored (out of reach, or in collision)."""
 
+# The work one request may cost. MoveIt bounds none of these; gazelle's move_group serves a ROS domain, and
+# one request once held it for 51 s and 1.4 GB (a 0.3 m line at max_step 1e-6, issue 48).
+MAX_CARTESIAN_STEPS = 10_000
+"""The most poses one Cartesian path interpolates, over all its waypoints (a 1 m line at 0.1 mm); a request
+that needs more is refused (FAILURE, as MoveIt refuses a ``max_step`` it cannot use) before any IK."""
+CARTESIAN_TIMEOUT_SEC = 30.0
+"""s one Cartesian path's IK may take (10,000 poses take ~2 s on an idle core: room for a loaded machine, and a
+bound on the IK's own 2 s guard a pose); past it the request is refused (TIMED_OUT)."""
+MAX_PLANNING_SEC = 30.0
+"""s the most one plan searches: a longer ``allowed_planning_time`` is cut to this (MoveIt's default is 5)."""
+MAX_IK_SEC = 5.0
+"""s the most one IK searches: a longer ``timeout`` is cut to this."""
+MAX_TRAJECTORY_POINTS = 20_000
+"""The most points a timed trajectory has: 200 s at TOPP-RA's 10 ms; a longer one (a tiny velocity scaling,
+a dense Cartesian path) is sampled more coarsely rather than grown without bound (a velocity scaling of 1e-6
+made a 0.3 rad move 125,000 s long: 12.5 million points)."""
+TRAJECTORY_DT = 0.01
+"""s between the points of a timed trajectory, up to :data:`MAX_TRAJECTORY_POINTS` of them."""
+MIN_MAX_STEP = 2.220446049250313e-16
+"""MoveIt's smallest ``max_step`` (``std::numeric_limits<double>::epsilon()``; cartesian_path_service_capability.cpp
+answers FAILURE below it)."""
+
 
 @dataclass(frozen=True)
 class Trajectory:
@@ -71,7 +93,7 @@ class ArmPlanner(RobotScene):
             target: the link's pose as a 4x4 homogeneous matrix in the robot's root link frame, metres.
             seed: a full configuration to start from (None: the current state); restarts draw random
                 configurations within the limits after it.
-            timeout: wall seconds for the search (MoveIt's ``timeout``).
+            timeout: wall seconds for the search (MoveIt's ``timeout``), at most :data:`MAX_IK_SEC`.
             avoid_collisions: refuse solutions in collision with the robot itself or the scene's objects.
 
         Returns:
@@ -85,6 +107,7 @@ class ArmPlanner(RobotScene):
         """
         joints = self.group_joints(group)
         self.fk(self._current, link)
+        timeout = _budget(timeout, MAX_IK_SEC)
         start_full = self._current.copy() if seed is None else np.asarray(seed, dtype=float)
         goal = self._core.CartesianConfiguration(self.root_link, link, np.asfortranarray(target, dtype=float))
         start = self._group_config(group, joints, start_full)
@@ -179,11 +202,13 @@ class ArmPlanner(RobotScene):
             velocity_scaling: MoveIt's ``max_velocity_scaling_factor``: 0 (unset), a negative value or NaN
                 means 1, a value above 1 is 1.
             acceleration_scaling: ``max_acceleration_scaling_factor``, the same way.
-            timeout: wall seconds for the search (MoveIt's ``allowed_planning_time``).
+            timeout: wall seconds for the search (MoveIt's ``allowed_planning_time``), at most
+                :data:`MAX_PLANNING_SEC`.
 
         Raises:
             PlanningError: ``START_STATE_IN_COLLISION``, ``GOAL_IN_COLLISION``, ``GOAL_STATE_INVALID`` (outside
-                the joint limits), ``TIMED_OUT`` or ``PLANNING_FAILED``; collisions name the colliding pairs.
+                the joint limits), ``TIMED_OUT`` or ``PLANNING_FAILED`` (also when roboplan's search has grown
+                to its 1,000 nodes); collisions name the colliding pairs.
         """
         joints = self.group_joints(group)
         q0 = self.onto_limits(self._current.copy() if start is None else np.asarray(start, dtype=float))
@@ -198,19 +223,25 @@ class ArmPlanner(RobotScene):
             raise PlanningError("GOAL_IN_COLLISION", f"the goal state is in collision{self.named_pairs(q1)}")
         if self.in_collision(q0):
             raise PlanningError("START_STATE_IN_COLLISION", f"the start state is in collision{self.named_pairs(q0)}")
+        asked, timeout = float(timeout), _budget(timeout, MAX_PLANNING_SEC)
         opts = self._rrt.RRTOptions()
         opts.group_name = group
         opts.rrt_connect = True
-        opts.max_planning_time = float(timeout)
+        opts.max_planning_time = timeout
         opts.collision_check_step_size = 0.02
         deadline = time.monotonic() + timeout
         planner = self._rrt.RRT(self.scene, opts)
         self.scene.setJointPositions(q0)
-        path = planner.plan(self._group_config(group, joints, q0), self._group_config(group, joints, q1))
+        why = ""
+        try:
+            path = planner.plan(self._group_config(group, joints, q0), self._group_config(group, joints, q1))
+        except RuntimeError as err:  # roboplan's search ends at its max_nodes: "Added maximum number of nodes"
+            path, why = None, f" ({err})"
         if path is None or len(path.positions) < 2:
             if time.monotonic() >= deadline:
-                raise PlanningError("TIMED_OUT", f"no collision-free path found in {timeout:g} s")
-            raise PlanningError("PLANNING_FAILED", "no collision-free path was found")
+                cut = f" (allowed_planning_time {asked:g} s is cut to {MAX_PLANNING_SEC:g})" if asked > timeout else ""
+                raise PlanningError("TIMED_OUT", f"no collision-free path found in {timeout:g} s{cut}")
+            raise PlanningError("PLANNING_FAILED", f"no collision-free path was found{why}")
         sopts = self._core.PathShortcuttingOptions()
         sopts.group_name = group
         path = self._core.PathShortcutter(self.scene, sopts).shortcut(path)
@@ -234,11 +265,19 @@ class ArmPlanner(RobotScene):
         return self._simple_ik.SimpleIk(self.scene, opts)
 
     def _timed(self, group: str, path, velocity_scaling: float, acceleration_scaling: float) -> Trajectory:
-        """TOPP-RA over a joint path of ``group``, within the limits times the scaling factors."""
+        """TOPP-RA over a joint path of ``group``, within the limits times the scaling factors, a point every
+        :data:`TRAJECTORY_DT` and at most :data:`MAX_TRAJECTORY_POINTS` points (then evenly spread)."""
         topts = self._toppra.TOPPRAOptions()
         topts.velocity_scale = _fraction(velocity_scaling)
         topts.acceleration_scale = _fraction(acceleration_scaling)
-        traj = self._toppra.PathParameterizerTOPPRA(self.scene, group).generate(path, topts)
+        parameterizer = self._toppra.PathParameterizerTOPPRA(self.scene, group)
+        # the duration first, sampled at its two ends (the solve is the cheap part: ~20 ms for 10,000 waypoints;
+        # the samples are what grow), then the samples the duration allows
+        topts.dt = 1e12
+        duration = float(np.asarray(parameterizer.generate(path, topts).times, dtype=float)[-1])
+        # (a hair wider than the even split, so that rounding never adds a point past the bound)
+        topts.dt = max(TRAJECTORY_DT, duration / (MAX_TRAJECTORY_POINTS - 1) * (1.0 + 1e-9))
+        traj = parameterizer.generate(path, topts)
         return Trajectory(
             tuple(traj.joint_names),
             np.asarray(traj.times, dtype=float),
@@ -259,11 +298,14 @@ class ArmPlanner(RobotScene):
         avoid_collisions: bool = True,
         velocity_scaling: float = 1.0,
         acceleration_scaling: float = 1.0,
+        timeout: float = CARTESIAN_TIMEOUT_SEC,
     ) -> tuple[Trajectory | None, float]:
         """``link`` along straight lines (orientation slerped) through ``waypoints`` (4x4, root frame)
         from where it is at ``start``, as MoveIt's compute_cartesian_path: poses every ``max_step`` m,
         each solved by IK seeded from the previous solution. Stops at the first pose with no solution,
-        a collision on the way, or a joint jump (``jump_threshold`` times the mean step, when > 0).
+        a collision on the way, or a joint jump (``jump_threshold`` times the mean step, when > 0). Each
+        pose is made when it is solved, as MoveIt's cartesian_interpolator.cpp makes them: a path that
+        stops early costs only the poses before it.
 
         Args:
             group: the SRDF planning group to move.
@@ -275,26 +317,60 @@ class ArmPlanner(RobotScene):
             avoid_collisions: stop at the first pose in collision.
             velocity_scaling: as :meth:`plan`'s.
             acceleration_scaling: as :meth:`plan`'s.
+            timeout: wall seconds the poses' IK may take, at most :data:`CARTESIAN_TIMEOUT_SEC`.
 
         Returns:
             The timed trajectory of what was achieved (None if nothing) and the fraction achieved, between 0
             and 1, as MoveIt's ``GetCartesianPath`` reply reports ``fraction``.
 
         Raises:
-            PlanningError: ``INVALID_MOTION_PLAN`` for a ``max_step`` that is not positive; the group and link
-                names as :meth:`ik`'s.
+            PlanningError: ``FAILURE`` for a ``max_step`` below MoveIt's smallest (:data:`MIN_MAX_STEP`), a
+                waypoint that is not a finite pose, or more than :data:`MAX_CARTESIAN_STEPS` poses to solve;
+                ``TIMED_OUT`` past ``timeout``; the group and link names as :meth:`ik`'s.
         """
         joints = self.group_joints(group)
         self.fk(self._current, link)
-        if not math.isfinite(max_step) or max_step <= 0.0:
-            raise PlanningError("INVALID_MOTION_PLAN", f"max_step must be positive (got {max_step})")
+        if not math.isfinite(max_step) or max_step < MIN_MAX_STEP:
+            # cartesian_path_service_capability.cpp: "this value needs to be > 0", FAILURE
+            raise PlanningError(
+                "FAILURE", f"max_step must be a positive number of metres, at least {MIN_MAX_STEP:.3g} (got {max_step})"
+            )
         q = (self._current if start is None else np.asarray(start, dtype=float)).copy()
+        begin = self.fk(q, link)
+        steps = self._line_steps(begin, waypoints, max_step)
+        total = sum(steps)
+        poses = self._line_poses(begin, waypoints, steps)
+        path = self._follow(group, link, q, poses, avoid_collisions, _budget(timeout, CARTESIAN_TIMEOUT_SEC), total)
+        path = _cut_at_jump(path, jump_threshold)
+        fraction = (len(path) - 1) / total if total else 1.0
+        if len(path) < 2:
+            return None, fraction
+        joint_path = self._core.JointPath()
+        joint_path.joint_names = list(joints)
+        joint_path.positions = [np.asarray(p, dtype=float) for p in path]
+        return self._timed(group, joint_path, velocity_scaling, acceleration_scaling), fraction
+
+    def _follow(
+        self, group: str, link: str, q: np.ndarray, poses: Any, avoid_collisions: bool, budget: float, total: int
+    ) -> list[np.ndarray]:
+        """The group's joint values along ``poses`` from the full configuration ``q``: each pose solved from the
+        last, up to the first with no solution or (``avoid_collisions``) in collision.
+
+        Raises:
+            PlanningError: ``TIMED_OUT`` when the poses take more than ``budget`` seconds (``total`` poses).
+        """
+        joints = self.group_joints(group)
         idx = self._group_index(joints)
-        poses = self._line_poses(self.fk(q, link), waypoints, max_step)
         solver = self._line_solver(group, avoid_collisions)
         self.scene.setJointPositions(q)
         path = [q[idx].copy()]
+        deadline = time.monotonic() + budget
         for pose in poses:
+            if time.monotonic() > deadline:
+                raise PlanningError(
+                    "TIMED_OUT",
+                    f"the Cartesian path's IK took more than {budget:g} s ({len(path) - 1} of {total} poses)",
+                )
             goal = self._core.CartesianConfiguration(self.root_link, link, np.asfortranarray(pose, dtype=float))
             solution = self._core.JointConfiguration()
             try:
@@ -312,31 +388,51 @@ class ArmPlanner(RobotScene):
                 break
             path.append(nxt[idx].copy())
             q = nxt
-        path = _cut_at_jump(path, jump_threshold)
-        fraction = (len(path) - 1) / len(poses) if poses else 1.0
-        if len(path) < 2:
-            return None, fraction
-        joint_path = self._core.JointPath()
-        joint_path.joint_names = list(joints)
-        joint_path.positions = [np.asarray(p, dtype=float) for p in path]
-        return self._timed(group, joint_path, velocity_scaling, acceleration_scaling), fraction
+        return path
 
     # ------------------------------------------------------------------ helpers
-    def _line_poses(self, start: np.ndarray, waypoints: Sequence[np.ndarray], max_step: float) -> list[np.ndarray]:
-        """The poses along straight lines from ``start`` through ``waypoints``: one every ``max_step`` m
-        (and every ``10 x max_step`` rad of rotation, slerped), each waypoint the last pose of its line."""
-        poses: list[np.ndarray] = []
-        previous = start
-        for waypoint in waypoints:
+    @staticmethod
+    def _line_steps(start: np.ndarray, waypoints: Sequence[np.ndarray], max_step: float) -> list[int]:
+        """How many poses each line from ``start`` through ``waypoints`` is cut into: one every ``max_step`` m
+        and every ``10 x max_step`` rad of rotation (at least 1 mrad), at least one a line. Counted before any
+        is made.
+
+        Raises:
+            PlanningError: ``FAILURE`` for a waypoint that is not a finite pose, or more than
+                :data:`MAX_CARTESIAN_STEPS` poses in all (naming ``max_step``).
+        """
+        steps: list[int] = []
+        previous = np.asarray(start, dtype=float)
+        total = 0
+        for k, waypoint in enumerate(waypoints):
             target = np.asarray(waypoint, dtype=float)
+            if target.shape != (4, 4) or not np.isfinite(target).all():
+                raise PlanningError("FAILURE", f"waypoint {k} is not a finite pose")
             distance = float(np.linalg.norm(target[:3, 3] - previous[:3, 3]))
             cos = (np.trace(previous[:3, :3].T @ target[:3, :3]) - 1.0) / 2.0
             angle = math.acos(max(-1.0, min(1.0, cos)))
-            steps = max(1, math.ceil(max(distance / max_step, angle / max(max_step * 10.0, 1e-3))))
-            a, b = np.asfortranarray(previous), np.asfortranarray(target)
-            poses += [np.asarray(self._core.interpolatePose(a, b, k / steps)) for k in range(1, steps + 1)]
+            need = max(1.0, distance / max_step, angle / max(max_step * 10.0, 1e-3))
+            if total + need > MAX_CARTESIAN_STEPS:  # a float: inf and 1e300 compare before any rounding
+                raise PlanningError(
+                    "FAILURE",
+                    f"max_step {max_step:g} m cuts the path into more than {MAX_CARTESIAN_STEPS} poses, the most one "
+                    f"Cartesian path solves (the line to waypoint {k} alone needs {need:.0f}): use a larger max_step",
+                )
+            steps.append(math.ceil(need))
+            total += steps[-1]
             previous = target
-        return poses
+        return steps
+
+    def _line_poses(self, start: np.ndarray, waypoints: Sequence[np.ndarray], steps: Sequence[int]):
+        """The poses along straight lines from ``start`` through ``waypoints``, ``steps[k]`` on the ``k``-th
+        line (:meth:`_line_steps`), orientations slerped, each waypoint the last pose of its line: made one at a
+        time, as they are solved."""
+        previous = np.asfortranarray(start, dtype=float)
+        for waypoint, count in zip(waypoints, steps):
+            target = np.asfortranarray(waypoint, dtype=float)
+            for k in range(1, count + 1):
+                yield np.asarray(self._core.interpolatePose(previous, target, k / count))
+            previous = target
 
     def _group_config(self, group: str, joints: Sequence[str], q_full: np.ndarray):
         """A roboplan JointConfiguration of ``joints``, their values taken from a full-robot vector."""
@@ -360,6 +456,12 @@ def _cut_at_jump(path: list[np.ndarray], jump_threshold: float) -> list[np.ndarr
         if step > limit:
             return path[: k + 1]
     return path
+
+
+def _budget(seconds: float, most: float) -> float:
+    """A time budget a request gives, cut to ``most`` (not a number, or infinite: ``most``)."""
+    seconds = float(seconds)
+    return min(seconds, most) if math.isfinite(seconds) else most
 
 
 def _fraction(value: float) -> float:

@@ -18,6 +18,7 @@ from lxml import etree
 
 from ..description import ModelLoadError, ResourceResolver, Semantics, Severity, load_string
 from ._collision_matrix import CollisionMatrix
+from ._names import quoted
 
 DEFAULT_ACCELERATION = 1.0
 """rad/s² (m/s²) for a joint whose limits give no acceleration, as MoveIt's time parameterisation assumes."""
@@ -119,7 +120,7 @@ def moveit_joint_limits(config: Mapping) -> dict[str, dict[str, float]]:
 class RobotScene:
     """Planning for one robot: FK, IK, collision checks and timed paths for its SRDF groups.
 
-    Not thread-safe: one request at a time (the ROS node serialises them).
+    Not thread-safe: one request at a time (a ``PlannerPool`` gives each kind of work its own copy).
     """
 
     def __init__(
@@ -285,7 +286,7 @@ class RobotScene:
         groups when there is no such group."""
         if group not in self._known_groups:
             known = ", ".join(self.groups) or "none"
-            raise PlanningError("INVALID_GROUP_NAME", f"no planning group '{group}' (the SRDF has: {known})")
+            raise PlanningError("INVALID_GROUP_NAME", f"no planning group {quoted(group)} (the SRDF has: {known})")
         return list(self.scene.getJointGroupInfo(group).joint_names)
 
     def tip_link(self, group: str) -> str:
@@ -300,7 +301,7 @@ class RobotScene:
         if g.links:
             return g.links[-1]
         if not links:
-            raise PlanningError("INVALID_LINK_NAME", f"group '{group}' has no links to put a pose goal on")
+            raise PlanningError("INVALID_LINK_NAME", f"group {quoted(group)} has no links to put a pose goal on")
         return links[-1]
 
     def named_state(self, group: str, name: str) -> dict[str, float]:
@@ -312,7 +313,7 @@ class RobotScene:
         names = sorted(s.name for s in self.semantics.group_states if s.group == group)
         raise PlanningError(
             "INVALID_GOAL_CONSTRAINTS",
-            f"group '{group}' has no named state '{name}' (it has: {', '.join(names) or 'none'})",
+            f"group {quoted(group)} has no named state {quoted(name)} (it has: {', '.join(names) or 'none'})",
         )
 
     # ------------------------------------------------------------------ state
@@ -372,7 +373,7 @@ class RobotScene:
         try:
             self.scene.getFrameId(link)
         except Exception:
-            raise PlanningError("INVALID_LINK_NAME", f"the robot has no link '{link}'") from None
+            raise PlanningError("INVALID_LINK_NAME", f"the robot has no link {quoted(link)}") from None
         return np.array(self.scene.forwardKinematics(np.asarray(q, dtype=float), link))
 
     def in_collision(self, q: np.ndarray) -> bool:

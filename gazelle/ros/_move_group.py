@@ -52,8 +52,8 @@ from rclpy.utilities import try_shutdown
 from std_msgs.msg import String
 from std_srvs.srv import Empty
 
-from ..description import read_description_file
-from ..planning import ArmPlanner, PlanningError, moveit_joint_limits
+from ..description import read_description_file, reply_text
+from ..planning import ArmPlanner, PlannerPool, PlanningError, moveit_joint_limits
 from ._dds import announce_often
 from ._joint_state_monitor import JointStateMonitor
 from ._move_group_base import (
@@ -87,7 +87,7 @@ class MoveGroupNode(_Execution, _PlannerQueries, _ModelServices):
         self._srdf_source = srdf_source  # what SRDF warnings name: the file, when one was given
         self._resolve_mesh = resolve_mesh  # how mesh URIs are found (None: the resource roots)
         super().__init__("move_group", automatically_declare_parameters_from_overrides=True, **kwargs)
-        self._lock = threading.Lock()  # one planning request at a time
+        self._pool = None  # the robot's planners, once it is known
         self._ready = threading.Event()
         self.planner = None
         self._warned_no_state = False  # from /joint_states; the planner takes it when it plans
@@ -139,20 +139,22 @@ class MoveGroupNode(_Execution, _PlannerQueries, _ModelServices):
     def _serve_interfaces(self) -> None:
         """move_group's services, planning-scene topics, display topic and actions, under its names."""
         cb = self._cb
-        for srv_type, name, fn in (
-            (GetPositionFK, "compute_fk", self._compute_fk),
-            (GetPositionIK, "compute_ik", self._compute_ik),
-            (GetMotionPlan, "plan_kinematic_path", self._plan_kinematic_path),
-            (GetStateValidity, "check_state_validity", self._check_state_validity),
-            (GetCartesianPath, "compute_cartesian_path", self._compute_cartesian_path),
-            (GetPlanningScene, "get_planning_scene", self._get_planning_scene),
-            (ApplyPlanningScene, "apply_planning_scene", self._apply_planning_scene),
-            (QueryPlannerInterfaces, "query_planner_interface", self._query_planner_interface),
-            (GetPlannerParams, "get_planner_params", self._get_planner_params),
-            (SetPlannerParams, "set_planner_params", self._set_planner_params),
-            (GetGroupUrdf, "get_urdf", self._get_urdf),
+        # each on the planner of its kind of work (gazelle.planning's PlannerPool): FK, state validity and the
+        # scene answer while a plan or an IK runs, as MoveIt's services do; a change of the scene waits for them
+        for srv_type, name, fn, role in (
+            (GetPositionFK, "compute_fk", self._compute_fk, "query"),
+            (GetPositionIK, "compute_ik", self._compute_ik, "ik"),
+            (GetMotionPlan, "plan_kinematic_path", self._plan_kinematic_path, "plan"),
+            (GetStateValidity, "check_state_validity", self._check_state_validity, "query"),
+            (GetCartesianPath, "compute_cartesian_path", self._compute_cartesian_path, "plan"),
+            (GetPlanningScene, "get_planning_scene", self._get_planning_scene, "query"),
+            (ApplyPlanningScene, "apply_planning_scene", self._apply_planning_scene, "write"),
+            (QueryPlannerInterfaces, "query_planner_interface", self._query_planner_interface, "query"),
+            (GetPlannerParams, "get_planner_params", self._get_planner_params, "query"),
+            (SetPlannerParams, "set_planner_params", self._set_planner_params, "query"),
+            (GetGroupUrdf, "get_urdf", self._get_urdf, "query"),
         ):
-            serve(self, srv_type, name, self._guard(name, fn), cb)
+            serve(self, srv_type, name, self._guard(name, fn, role), cb)
         serve(self, Empty, "clear_octomap", self._clear_octomap, cb)  # needs no robot
         for msg_type, topic, fn in (
             (PlanningScene, "planning_scene", self._on_scene_diff),
@@ -241,8 +243,10 @@ class MoveGroupNode(_Execution, _PlannerQueries, _ModelServices):
         if grouped:
             limits = moveit_joint_limits({"joint_limits": grouped})
         try:
-            planner = ArmPlanner(
-                urdf, srdf, joint_limits=limits, srdf_source=self._srdf_source, resolve_mesh=self._resolve_mesh
+            pool = PlannerPool(
+                lambda: ArmPlanner(
+                    urdf, srdf, joint_limits=limits, srdf_source=self._srdf_source, resolve_mesh=self._resolve_mesh
+                )
             )
         except PlanningError as err:
             self.get_logger().error(f"cannot plan for this robot: {err.message}")
@@ -250,6 +254,7 @@ class MoveGroupNode(_Execution, _PlannerQueries, _ModelServices):
         except Exception as err:  # a URDF roboplan cannot model: say so once and keep serving errors
             self.get_logger().error(f"cannot plan for this robot: {type(err).__name__}: {err}")
             return
+        planner = pool.primary
         for warning in planner.warnings:
             self.get_logger().warning(warning)
         solvers = "robot_description_kinematics."
@@ -269,10 +274,11 @@ class MoveGroupNode(_Execution, _PlannerQueries, _ModelServices):
                 "configurations and adapters): gazelle plans every request with roboplan's RRT-Connect, "
                 "shortcutting and TOPP-RA time parameterization within the joint limits"
             )
-        self.planner = planner
         self._urdf_text = urdf
+        self.planner = planner
+        self._pool = pool
         if self._sim_world is not None:
-            with self._lock:
+            with pool.writing():
                 self._take_sim_world(self._sim_world)
         self._ready.set()
         self.get_logger().info(
@@ -301,27 +307,32 @@ class MoveGroupNode(_Execution, _PlannerQueries, _ModelServices):
         return out
 
     # ------------------------------------------------------------------ plumbing
-    def _guard(self, name: str, fn: Any) -> Any:
-        """``fn`` as a service callback that answers every request: with no robot yet, a FAILURE saying what is
-        missing; a PlanningError as its MoveIt error code and message; anything else as FAILURE naming the error.
-        One request is served at a time (the planner is not re-entrant)."""
+    def _guard(self, name: str, fn: Any, role: str) -> Any:
+        """``fn(request, response, planner)`` as a service callback that answers every request: with no robot
+        yet, a FAILURE saying what is missing; a PlanningError as its MoveIt error code and message; anything else
+        as FAILURE naming the error (every message cut to a reply's length, its quoted values to excerpts). It
+        runs on the pool's planner of ``role`` under that planner's lock, or, for ``write``, on the primary
+        planner with every lock held (roboplan's scenes are not re-entrant)."""
 
         def wrapper(request: Any, response: Any) -> Any:
-            if self.planner is None:
+            pool = self._pool
+            if pool is None:
                 return _failed(
                     response,
                     "FAILURE",
                     "move_group has no robot yet (robot_description and robot_description_semantic)",
                 )
             try:
-                with self._lock:
-                    return fn(request, response)
+                with pool.writing() if role == "write" else pool.using(role) as planner:
+                    return fn(request, response, planner)
             except PlanningError as err:
-                self.get_logger().warning(f"{name}: {err.code}: {err.message}")
-                return _failed(response, err.code, err.message)
+                message = reply_text(err.message)
+                self.get_logger().warning(f"{name}: {err.code}: {message}")
+                return _failed(response, err.code, message)
             except Exception as err:
-                self.get_logger().error(f"{name}: {type(err).__name__}: {err}")
-                return _failed(response, "FAILURE", f"{name}: internal error: {type(err).__name__}: {err}")
+                message = reply_text(f"{type(err).__name__}: {err}")
+                self.get_logger().error(f"{name}: {message}")
+                return _failed(response, "FAILURE", f"{name}: internal error: {message}")
 
         return wrapper
 
@@ -381,7 +392,7 @@ def move_group_main(argv: list[str]) -> int:
     node = MoveGroupNode(
         parameter_overrides=overrides, srdf_source=args.srdf or "robot_description_semantic", resolve_mesh=resolve_mesh
     )
-    executor = MultiThreadedExecutor(num_threads=4)
+    executor = MultiThreadedExecutor(num_threads=EXECUTOR_THREADS)
     executor.add_node(node)
     try:
         spin_until_shutdown(executor, node)
@@ -411,6 +422,12 @@ def _check_srdf(text: str, source: str) -> None:
     except ModelLoadError as err:
         raise ValueError(str(err)) from None
 
+
+EXECUTOR_THREADS = 12
+"""Threads of move_group's executor. rclpy runs one callback of an entity at a time, so a plan holds at most
+one thread per planning interface (plan_kinematic_path, compute_cartesian_path, each move_action goal) and a
+scene change waiting for it one per scene topic and apply_planning_scene: with four, those could take every
+thread and leave none for compute_fk."""
 
 PIPELINE_PARAMETERS = frozenset(
     {"ompl", "planning_pipelines", "planning_plugin", "planning_plugins", "request_adapters", "response_adapters"}

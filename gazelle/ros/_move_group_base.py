@@ -27,7 +27,7 @@ from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from trajectory_msgs.msg import JointTrajectoryPoint
 
-from ..planning import ArmPlanner, PlanningError, Trajectory
+from ..planning import ArmPlanner, PlannerPool, PlanningError, Trajectory, quoted
 from ._joint_state_monitor import JointStateMonitor
 
 _log = logging.getLogger("gazelle.move_group")
@@ -57,6 +57,10 @@ GZ_CMD_POS = re.compile(r"/joint/(?P<joint>[^/]+)/n?\d+/cmd_pos$")
 """gz-sim JointPositionController's default command topic, ``/model/<model>/joint/<joint>/<index>/cmd_pos``
 (on ROS ``.../n0/cmd_pos``: see ``gazelle.ros._names``)."""
 LATCHED = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
+MAX_FK_LINKS = 1_000
+"""The most links one compute_fk request may name (a link may be named again): each is a pose in the reply."""
+PLANNING_TIME = 5.0
+"""s a plan searches when the request's ``allowed_planning_time`` is 0 or not a number (MoveIt's default)."""
 MAX_SCENE_OBJECTS = 256
 """The most collision objects one planning-scene request may carry, and a scene may hold besides the
 simulation's own. Adding one costs time in all the others (roboplan rebuilds its collision pairs): 200
@@ -115,10 +119,11 @@ class _MoveGroupBase(Node):
     """What every part of move_group shares: its state (set up by :class:`MoveGroupNode`) and the helpers
     that turn requests into planner states and planner results into messages."""
 
-    _lock: threading.Lock
-    """One planning request at a time."""
+    _pool: PlannerPool | None
+    """The robot's planners, one per kind of work, each under its own lock (see gazelle.planning's _pool.py)."""
     _ready: threading.Event
     planner: ArmPlanner | None
+    """The pool's primary planner: plans are made, and scene changes applied, on it."""
     _joint_states: JointStateMonitor
     """The current state's source: /joint_states, taken without an executor (see its module)."""
     _warned_no_state: bool
@@ -180,14 +185,16 @@ class _MoveGroupBase(Node):
         value = self.get_parameter(name).value
         return value if isinstance(value, str) else ""
 
-    def _start_state(self, state: RobotState) -> np.ndarray:
-        """The request's start state: the current one with what the request gives put in."""
-        assert self.planner is not None
+    def _start_state(self, state: RobotState, planner: ArmPlanner | None = None) -> np.ndarray:
+        """The request's start state on ``planner`` (the primary by default): the current one with what the
+        request gives put in."""
+        planner = planner or self.planner
+        assert planner is not None
         deadline = time.monotonic() + CURRENT_STATE_WAIT
         while not self._latest_joints and time.monotonic() < deadline:
             time.sleep(0.01)  # as MoveIt waits for a current state (the callback takes no lock)
         if self._latest_joints:
-            self.planner.set_current(self._latest_joints)
+            planner.set_current(self._latest_joints)
         elif not self._warned_no_state:
             self._warned_no_state = True
             self.get_logger().warning(
@@ -205,19 +212,21 @@ class _MoveGroupBase(Node):
             given = None
         # a start state read from /joint_states may be a hair past a limit: moved onto it, as the current
         # state is (MoveIt's start_state_max_bounds_error, 0.05)
-        return self.planner.onto_limits(self.planner.state(given))
+        return planner.onto_limits(planner.state(given))
 
-    def _frame(self, frame: str, q: np.ndarray) -> np.ndarray:
+    def _frame(self, frame: str, q: np.ndarray, planner: ArmPlanner | None = None) -> np.ndarray:
         """The pose of ``frame`` in the planning frame: the root link, the SRDF's virtual joint parent
-        (a fixed virtual joint is the identity, as in MoveIt) or another link of the robot."""
-        assert self.planner is not None
-        virtual = {v.parent_frame for v in self.planner.semantics.virtual_joints if v.type == "fixed"}
-        if not frame or frame == self.planner.root_link or frame in virtual:
+        (a fixed virtual joint is the identity, as in MoveIt) or another link of the robot (on ``planner``, the
+        primary by default)."""
+        planner = planner or self.planner
+        assert planner is not None
+        virtual = {v.parent_frame for v in planner.semantics.virtual_joints if v.type == "fixed"}
+        if not frame or frame == planner.root_link or frame in virtual:
             return np.eye(4)
         try:
-            return self.planner.fk(q, frame)
+            return planner.fk(q, frame)
         except PlanningError:
-            raise PlanningError("FRAME_TRANSFORM_FAILURE", f"unknown frame '{frame}'") from None
+            raise PlanningError("FRAME_TRANSFORM_FAILURE", f"unknown frame {quoted(frame)}") from None
 
     def _warn(self, text: str) -> None:
         self.get_logger().warning(text)

@@ -19,7 +19,7 @@ from rclpy.action.client import ActionClient
 from std_msgs.msg import Float64
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
-from ..planning import START_BOUNDS_ERROR, PlanningError
+from ..planning import START_BOUNDS_ERROR, ArmPlanner, PlanningError, quoted
 from ._move_group_base import (
     _ENDED,
     CONTROLLER_WAIT,
@@ -44,11 +44,11 @@ class _Execution(_Planning):
         """MoveIt's ``TrajectoryExecutionManager::receiveEvent``/``processEvent``
         (trajectory_execution_manager.cpp, Jazzy): "stop" stops every execution in progress (its goal ends
         with PREEMPTED); any other event is a warning."""
-        self.get_logger().info(f"Received event '{msg.data}'")
+        self.get_logger().info(f"Received event {quoted(msg.data)}")
         if msg.data == "stop":
             self._stops += 1
         else:
-            self.get_logger().warning(f"Unknown event type: '{msg.data}'")
+            self.get_logger().warning(f"Unknown event type: {quoted(msg.data)}")
 
     # ------------------------------------------------------------------ actions
     def _execute_move_group(self, handle: Any) -> MoveGroup.Result:
@@ -56,7 +56,7 @@ class _Execution(_Planning):
         plan on /display_planned_path, and unless ``plan_only`` execute it (feedback MONITOR); the result carries
         the start state, the planned trajectory and, on success, the executed one."""
         result = MoveGroup.Result()
-        if self.planner is None:
+        if self._pool is None or self.planner is None:
             result.error_code = _code("FAILURE")
             result.error_code.message = "move_group has no robot yet (robot_description and robot_description_semantic)"
             handle.abort()
@@ -65,12 +65,15 @@ class _Execution(_Planning):
         t0 = time.monotonic()
         handle.publish_feedback(MoveGroup.Feedback(state="PLANNING"))
         try:
-            with self._lock:
+            assert self._pool is not None
+            with self._pool.using("plan"):
                 start, traj = self._plan(goal.request)
         except PlanningError as err:
             result.error_code = _code(err.code)
             result.error_code.message = err.message
-            self.get_logger().warning(f"planning for '{goal.request.group_name}' failed: {err.code}: {err.message}")
+            self.get_logger().warning(
+                f"planning for {quoted(goal.request.group_name)} failed: {err.code}: {err.message}"
+            )
             handle.abort()
             return result
         except Exception as err:
@@ -128,21 +131,21 @@ class _Execution(_Planning):
     def _check_trajectory(self, trajectory: JointTrajectory) -> str | None:
         """Why a trajectory sent to execute_trajectory cannot run (positions or speeds beyond the limits).
 
-        Under the planner's lock, as every use of roboplan's scene: the simulation's scene updates (a
-        message for every millimetre anything moves, so a stream while an arm executes) add, move and
+        On the query planner, under its lock, as every use of roboplan's scene: the simulation's scene updates
+        (a message for every millimetre anything moves, so a stream while an arm executes) add, move and
         rebuild its pinocchio/coal models on another executor thread. Read without the lock, the limits
         came from a model being replaced: pymoveit2's execute_trajectory on a YuMi died of "double free
         or corruption" 4 runs in 4, while the MoveGroup action (which plans under the lock) did not."""
-        with self._lock:
-            return self._check_trajectory_locked(trajectory)
-
-    def _check_trajectory_locked(self, trajectory: JointTrajectory) -> str | None:
-        """Why ``trajectory`` cannot be executed (None: it can): no robot, no points, a joint the robot lacks,
-        a position outside its limits (the first point may be off by the start-state tolerance), or a speed
-        between two points more than 1 % over the joint's velocity limit."""
-        planner = self.planner
-        if planner is None:
+        pool = self._pool
+        if pool is None:
             return "move_group has no robot yet"
+        with pool.using("query") as planner:
+            return self._check_trajectory_locked(trajectory, planner)
+
+    def _check_trajectory_locked(self, trajectory: JointTrajectory, planner: ArmPlanner) -> str | None:
+        """Why ``trajectory`` cannot be executed (None: it can): no points, a joint the robot lacks, a position
+        outside its limits (the first point may be off by the start-state tolerance), or a speed between two
+        points more than 1 % over the joint's velocity limit."""
         if not trajectory.points:
             return "the trajectory has no points"
         unknown = [j for j in trajectory.joint_names if j not in planner.joint_names]

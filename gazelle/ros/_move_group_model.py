@@ -20,7 +20,7 @@ from moveit_msgs.msg import MoveItErrorCodes
 from moveit_msgs.srv import GetGroupUrdf
 from std_srvs.srv import Empty
 
-from ..planning import GroupUrdfError, group_urdf
+from ..planning import ArmPlanner, GroupUrdfError, group_urdf
 from ._move_group_base import _MoveGroupBase
 
 
@@ -30,13 +30,13 @@ class _ModelServices(_MoveGroupBase):
     _urdf_text: str = ""
     """The robot_description the planner was built from (MoveIt's RDFLoader URDF string)."""
 
-    def _get_urdf(self, req: GetGroupUrdf.Request, res: GetGroupUrdf.Response) -> Any:
+    def _get_urdf(self, req: GetGroupUrdf.Request, res: GetGroupUrdf.Response, planner: ArmPlanner) -> Any:
         """``get_urdf`` (moveit_msgs/GetGroupUrdf): the URDF of one planning group's links and joints, with
-        the error code's source ``GetUrdfService`` as MoveIt sets it; an unknown group is FAILURE with why."""
-        assert self.planner is not None
+        the error code's source ``GetUrdfService`` as MoveIt sets it; an unknown group is FAILURE with why (the
+        name quoted, at most ``NAME_CHARS`` characters of it)."""
         res.error_code.source = "GetUrdfService"
         try:
-            res.urdf_string = group_urdf(self._urdf_text, self.planner.semantics, req.group_name)
+            res.urdf_string = group_urdf(self._urdf_text, planner.semantics, req.group_name)
         except GroupUrdfError as err:
             self.get_logger().error(str(err))
             res.error_code.val = MoveItErrorCodes.FAILURE

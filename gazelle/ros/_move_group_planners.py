@@ -28,6 +28,7 @@ from typing import Any
 from moveit_msgs.msg import PlannerInterfaceDescription
 from moveit_msgs.srv import GetPlannerParams, QueryPlannerInterfaces, SetPlannerParams
 
+from ..planning import quoted
 from ._move_group_base import _MoveGroupBase
 
 PIPELINE = "ompl"
@@ -119,7 +120,9 @@ class _PlannerQueries(_MoveGroupBase):
         prefix = f"{PIPELINE}.planner_configs.{planner_id}."
         own = {name[len(prefix) :]: value for name, value in params.items() if name.startswith(prefix)}
         if not own:
-            self.get_logger().error(f"Could not find the planner configuration '{planner_id}' on the param server")
+            self.get_logger().error(
+                f"Could not find the planner configuration {quoted(planner_id)} on the param server"
+            )
             return None
         return {**inherited, **{key: _value_to_string(value) for key, value in own.items()}}
 
@@ -128,12 +131,12 @@ class _PlannerQueries(_MoveGroupBase):
         is MoveIt's "Pipeline '...' does not exist." and an empty answer."""
         if pipeline_id in ("", PIPELINE):
             return True
-        self.get_logger().warning(f"Couldn't find requested planning pipeline '{pipeline_id}'")
-        self.get_logger().error(f"Pipeline '{pipeline_id}' does not exist.")
+        self.get_logger().warning(f"Couldn't find requested planning pipeline {quoted(pipeline_id)}")
+        self.get_logger().error(f"Pipeline {quoted(pipeline_id)} does not exist.")
         return False
 
     def _query_planner_interface(
-        self, _req: QueryPlannerInterfaces.Request, res: QueryPlannerInterfaces.Response
+        self, _req: QueryPlannerInterfaces.Request, res: QueryPlannerInterfaces.Response, _planner: Any
     ) -> QueryPlannerInterfaces.Response:
         """``query_planner_interface``: one description, pipeline ``ompl``, its configurations' names in
         MoveIt's (std::map's) order."""
@@ -145,7 +148,7 @@ class _PlannerQueries(_MoveGroupBase):
         return res
 
     def _get_planner_params(
-        self, req: GetPlannerParams.Request, res: GetPlannerParams.Response
+        self, req: GetPlannerParams.Request, res: GetPlannerParams.Response, _planner: Any
     ) -> GetPlannerParams.Response:
         """``get_planner_params``: the configuration ``planner_config``, merged with ``group[planner_config]``
         when a group is given (the group's values do not replace the configuration's: std::map::insert)."""
@@ -161,7 +164,7 @@ class _PlannerQueries(_MoveGroupBase):
         return res
 
     def _set_planner_params(
-        self, req: SetPlannerParams.Request, res: SetPlannerParams.Response
+        self, req: SetPlannerParams.Request, res: SetPlannerParams.Response, _planner: Any
     ) -> SetPlannerParams.Response:
         """``set_planner_params``: store the values under ``planner_config`` (``group[planner_config]``
         with a group), cleared first with ``replace``."""
@@ -181,7 +184,7 @@ class _PlannerQueries(_MoveGroupBase):
         if "planner_params" not in self._noted:
             self._noted.add("planner_params")
             self.get_logger().warning(
-                f"set_planner_params: '{name}' is stored and answered by get_planner_params, but gazelle's "
+                f"set_planner_params: {quoted(name)} is stored and answered by get_planner_params, but gazelle's "
                 "planner does not read planner configurations: every request is planned with roboplan's RRT-Connect"
             )
         return res

@@ -19,8 +19,10 @@ from moveit_msgs.srv import (
     GetStateValidity,
 )
 
-from ..planning import PlanningError, Trajectory
+from ..planning import MAX_CARTESIAN_STEPS, ArmPlanner, PlanningError, Trajectory, quoted
 from ._move_group_base import (
+    MAX_FK_LINKS,
+    PLANNING_TIME,
     _code,
     _quat,
     _seconds,
@@ -34,17 +36,23 @@ class _Planning(_Scene):
     """The kinematics and planning services."""
 
     # ------------------------------------------------------------------ services
-    def _compute_fk(self, req: GetPositionFK.Request, res: GetPositionFK.Response) -> GetPositionFK.Response:
+    def _compute_fk(
+        self, req: GetPositionFK.Request, res: GetPositionFK.Response, planner: ArmPlanner
+    ) -> GetPositionFK.Response:
         """``compute_fk`` (MoveIt's kinematics_service_capability.cpp): each named link's pose at the request's
-        robot state (the current state where it gives none), in the request's frame, else the robot's root."""
-        assert self.planner is not None
-        q = self._start_state(req.robot_state)
-        base = np.linalg.inv(self._frame(req.header.frame_id, q))
+        robot state (the current state where it gives none), in the request's frame, else the robot's root; at
+        most :data:`MAX_FK_LINKS` links a request."""
+        if len(req.fk_link_names) > MAX_FK_LINKS:
+            raise PlanningError(
+                "FAILURE", f"fk_link_names names {len(req.fk_link_names)} links; at most {MAX_FK_LINKS} a request"
+            )
+        q = self._start_state(req.robot_state, planner)
+        base = np.linalg.inv(self._frame(req.header.frame_id, q, planner))
         poses = []
         for link in req.fk_link_names:
             ps = PoseStamped()
-            ps.header.frame_id = req.header.frame_id or self.planner.root_link
-            ps.pose = _pose(base @ self.planner.fk(q, link))
+            ps.header.frame_id = req.header.frame_id or planner.root_link
+            ps.pose = _pose(base @ planner.fk(q, link))
             poses.append(ps)
         res.pose_stamped = poses
         res.fk_link_names = list(req.fk_link_names)
@@ -61,42 +69,40 @@ class _Planning(_Scene):
                 return float(value)
         return 0.5
 
-    def _compute_ik(self, req: GetPositionIK.Request, res: GetPositionIK.Response) -> GetPositionIK.Response:
+    def _compute_ik(
+        self, req: GetPositionIK.Request, res: GetPositionIK.Response, planner: ArmPlanner
+    ) -> GetPositionIK.Response:
         """``compute_ik`` (kinematics_service_capability.cpp): a joint solution for ``ik_link_name`` (the group's
         tip by default) at the pose, seeded from the request's robot state, within its timeout (kinematics.yaml's
-        ``kinematics_solver_timeout`` where it gives none), collision-free when ``avoid_collisions``; the full
-        robot state is returned, as MoveIt fills it."""
-        assert self.planner is not None
+        ``kinematics_solver_timeout`` where it gives none, and at most the planner's ``MAX_IK_SEC``),
+        collision-free when ``avoid_collisions``; the full robot state is returned, as MoveIt fills it."""
         ik = req.ik_request
-        q = self._start_state(ik.robot_state)
-        link = ik.ik_link_name or self.planner.tip_link(ik.group_name)
-        target = self._frame(ik.pose_stamped.header.frame_id, q) @ _matrix(ik.pose_stamped.pose)
+        q = self._start_state(ik.robot_state, planner)
+        link = ik.ik_link_name or planner.tip_link(ik.group_name)
+        target = self._frame(ik.pose_stamped.header.frame_id, q, planner) @ _matrix(ik.pose_stamped.pose)
         timeout = _seconds(ik.timeout) or self._ik_timeout(ik.group_name)
-        solution = self.planner.ik(
-            ik.group_name, link, target, q, timeout=timeout, avoid_collisions=ik.avoid_collisions
-        )
-        res.solution.joint_state.name = list(self.planner.joint_names)
+        solution = planner.ik(ik.group_name, link, target, q, timeout=timeout, avoid_collisions=ik.avoid_collisions)
+        res.solution.joint_state.name = list(planner.joint_names)
         res.solution.joint_state.position = [float(v) for v in solution]
         res.error_code = _code("SUCCESS")
         return res
 
-    def _check_state_validity(self, req: GetStateValidity.Request, res: GetStateValidity.Response) -> Any:
+    def _check_state_validity(
+        self, req: GetStateValidity.Request, res: GetStateValidity.Response, planner: ArmPlanner
+    ) -> Any:
         """``check_state_validity`` (state_validation_service_capability.cpp): valid when within the joint limits
         and free of collisions; the colliding pairs as contacts (their bodies and kinds; gazelle has no contact
         points to give)."""
-        assert self.planner is not None
-        q = self._start_state(req.robot_state)
-        colliding = self.planner.in_collision(q)
-        res.valid = self.planner.within_limits(q) and not colliding
+        q = self._start_state(req.robot_state, planner)
+        colliding = planner.in_collision(q)
+        res.valid = planner.within_limits(q) and not colliding
         if colliding:  # as MoveIt: the pairs in contact (gazelle knows the bodies, not the points)
-            res.contacts = [self._contact(a, b) for a, b in self.planner.colliding_pairs(q)]
+            res.contacts = [self._contact(a, b, planner) for a, b in planner.colliding_pairs(q)]
         return res
 
-    def _contact(self, a: str, b: str) -> ContactInformation:
+    def _contact(self, a: str, b: str, planner: ArmPlanner) -> ContactInformation:
         """A ContactInformation for two colliding bodies, typed as MoveIt types them (a robot link, an object
         attached to the robot, a world object)."""
-        planner = self.planner
-        assert planner is not None
         attached = {o.name for o in planner.objects() if o.link}
 
         def kind(body: str) -> int:
@@ -108,15 +114,16 @@ class _Planning(_Scene):
         info.header.frame_id = planner.root_link
         return info
 
-    def _plan_kinematic_path(self, req: GetMotionPlan.Request, res: GetMotionPlan.Response) -> Any:
-        """``plan_kinematic_path`` (plan_service_capability.cpp): plan without executing; a failure is the
-        response's error code and message (MoveIt's MoveItErrorCodes), never an exception to the client."""
+    def _plan_kinematic_path(self, req: GetMotionPlan.Request, res: GetMotionPlan.Response, _planner: Any) -> Any:
+        """``plan_kinematic_path`` (plan_service_capability.cpp): plan without executing (on the primary planner,
+        held by the caller); a failure is the response's error code and message (MoveIt's MoveItErrorCodes),
+        never an exception to the client."""
         t0 = time.monotonic()
         try:
             start, traj = self._plan(req.motion_plan_request)
         except PlanningError as err:
             group = req.motion_plan_request.group_name
-            self.get_logger().warning(f"plan_kinematic_path for '{group}' failed: {err.code}: {err.message}")
+            self.get_logger().warning(f"plan_kinematic_path for {quoted(group)} failed: {err.code}: {err.message}")
             res.motion_plan_response.error_code = _code(err.code)
             res.motion_plan_response.error_code.message = err.message
             return res
@@ -128,16 +135,22 @@ class _Planning(_Scene):
         mpr.error_code = _code("SUCCESS")
         return res
 
-    def _compute_cartesian_path(self, req: GetCartesianPath.Request, res: GetCartesianPath.Response) -> Any:
+    def _compute_cartesian_path(
+        self, req: GetCartesianPath.Request, res: GetCartesianPath.Response, planner: ArmPlanner
+    ) -> Any:
         """``compute_cartesian_path`` (cartesian_path_service_capability.cpp): the link's straight-line path
         through the waypoints in ``max_step`` steps, cut where IK fails, a joint jumps (``jump_threshold``) or a
         collision begins; ``fraction`` says how much was achieved, and a partial path still answers SUCCESS, as
-        MoveIt does."""
-        planner = self.planner
-        assert planner is not None
-        q = self._start_state(req.start_state)
+        MoveIt does. The planner's bounds refuse more than ``MAX_CARTESIAN_STEPS`` poses (FAILURE, before any IK;
+        so are more waypoints, before they are converted) and IK past ``CARTESIAN_TIMEOUT_SEC`` (TIMED_OUT)."""
+        if len(req.waypoints) > MAX_CARTESIAN_STEPS:
+            raise PlanningError(
+                "FAILURE",
+                f"{len(req.waypoints)} waypoints; a Cartesian path solves at most {MAX_CARTESIAN_STEPS} poses",
+            )
+        q = self._start_state(req.start_state, planner)
         link = req.link_name or planner.tip_link(req.group_name)
-        frame = self._frame(req.header.frame_id, q)
+        frame = self._frame(req.header.frame_id, q, planner)
         traj, fraction = planner.cartesian_path(
             req.group_name,
             link,
@@ -168,7 +181,8 @@ class _Planning(_Scene):
             raise PlanningError("INVALID_GOAL_CONSTRAINTS", "the request has no goal_constraints")
         goal = self._goal(group, joints, request.goal_constraints[0], start)
         self._note_unhonoured(request)
-        timeout = request.allowed_planning_time or 5.0
+        asked = request.allowed_planning_time
+        timeout = asked if asked > 0.0 else PLANNING_TIME  # NaN too; the planner cuts a long one to its bound
         traj = planner.plan(
             group,
             goal,
@@ -184,9 +198,9 @@ class _Planning(_Scene):
         is planned all the same, as MoveIt plans with what it has)."""
         notes: list[tuple[str, str]] = []  # (kind, what is said the first time that kind comes)
         if request.pipeline_id and request.pipeline_id != "ompl":
-            notes.append(("pipeline", f"pipeline_id '{request.pipeline_id}' is not simulated"))
+            notes.append(("pipeline", f"pipeline_id {quoted(request.pipeline_id)} is not simulated"))
         if request.planner_id and "rrtconnect" not in request.planner_id.lower():
-            notes.append(("planner", f"planner_id '{request.planner_id}' is not simulated"))
+            notes.append(("planner", f"planner_id {quoted(request.planner_id)} is not simulated"))
         path = request.path_constraints
         if path.joint_constraints or path.position_constraints or path.orientation_constraints:
             notes.append(
@@ -209,7 +223,9 @@ class _Planning(_Scene):
             values = {}
             for jc in constraints.joint_constraints:
                 if jc.joint_name not in planner.joint_names:
-                    raise PlanningError("INVALID_GOAL_CONSTRAINTS", f"unknown joint '{jc.joint_name}' in the goal")
+                    raise PlanningError(
+                        "INVALID_GOAL_CONSTRAINTS", f"unknown joint {quoted(jc.joint_name)} in the goal"
+                    )
                 values[jc.joint_name] = jc.position
             missing = [j for j in joints if j not in values]
             if missing and len(missing) == len(joints):

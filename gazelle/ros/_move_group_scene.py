@@ -18,7 +18,7 @@ from moveit_msgs.srv import (
     GetPlanningScene,
 )
 
-from ..planning import CollisionMatrix, PlanningError, SceneObject
+from ..planning import ArmPlanner, CollisionMatrix, PlanningError, SceneObject, quoted
 from ._move_group_base import (
     MAX_SCENE_OBJECTS,
     _MoveGroupBase,
@@ -32,12 +32,13 @@ class _Scene(_MoveGroupBase):
     """The planning scene services and topics."""
 
     # ------------------------------------------------------------------ planning scene
-    def _get_planning_scene(self, req: GetPlanningScene.Request, res: GetPlanningScene.Response) -> Any:
+    def _get_planning_scene(
+        self, req: GetPlanningScene.Request, res: GetPlanningScene.Response, planner: ArmPlanner
+    ) -> Any:
         """``get_planning_scene`` (get_planning_scene_service_capability.cpp): the robot's current state with its
         attached objects and the world's collision objects (the simulation's own included), as a whole scene;
-        gazelle fills every component whatever ``components`` asks (a superset of what MoveIt returns)."""
-        planner = self.planner
-        assert planner is not None
+        gazelle fills every component whatever ``components`` asks (a superset of what MoveIt returns). Read
+        from the query planner, a copy of the primary's scene, so it answers while a plan runs."""
         scene = res.scene
         scene.name = "gazelle"
         scene.robot_model_name = planner.semantics.robot_name
@@ -53,21 +54,26 @@ class _Scene(_MoveGroupBase):
         scene.is_diff = False
         return res
 
-    def _apply_planning_scene(self, req: ApplyPlanningScene.Request, res: ApplyPlanningScene.Response) -> Any:
+    def _apply_planning_scene(
+        self, req: ApplyPlanningScene.Request, res: ApplyPlanningScene.Response, _planner: Any
+    ) -> Any:
         """``apply_planning_scene`` (apply_planning_scene_service_capability.cpp): a diff or a whole scene, checked
-        whole before any of it is applied (a bad one changes nothing and is refused with why)."""
+        whole before any of it is applied (a bad one changes nothing and is refused with why); the caller holds
+        the pool for writing."""
         self._apply_scene(req.scene)
         res.success = True
         return res
 
     def _scene_topic(self, topic: str, fn: Any) -> Any:
-        """A planning-scene topic's callback: under the planning lock, a bad message logged, not raised."""
+        """A planning-scene topic's callback: the pool held for writing (it waits for a plan in progress, as
+        MoveIt's scene monitor waits for its readers), a bad message logged, not raised."""
 
         def callback(msg: Any) -> None:
-            if self.planner is None:
+            pool = self._pool
+            if pool is None:
                 return
             try:
-                with self._lock:
+                with pool.writing():
                     fn(msg)
             except PlanningError as err:
                 self.get_logger().warning(f"/{topic}: {err.code}: {err.message}")
@@ -90,10 +96,11 @@ class _Scene(_MoveGroupBase):
 
     def _on_sim_world(self, msg: PlanningSceneWorld) -> None:
         """The simulation's collision geometry: every entity link but this robot's, in the planning frame."""
-        if self.planner is None:
+        pool = self._pool
+        if pool is None:
             self._sim_world = msg  # taken when the robot is known
             return
-        with self._lock:
+        with pool.writing():
             self._take_sim_world(msg)
 
     def _take_sim_world(self, msg: PlanningSceneWorld) -> None:
@@ -241,7 +248,7 @@ class _Scene(_MoveGroupBase):
         at = self._frame(co.header.frame_id, planner.state(self._latest_joints or None)) @ pose
         if co.operation == CollisionObject.MOVE:
             if existing is None:
-                raise PlanningError("INVALID_OBJECT_NAME", f"no collision object '{co.id}' to move")
+                raise PlanningError("INVALID_OBJECT_NAME", f"no collision object {quoted(co.id)} to move")
             planner.add_object(SceneObject(co.id, existing.shapes, at))
             return
         shapes = tuple(shapes_of(co, self._warn))
@@ -250,7 +257,9 @@ class _Scene(_MoveGroupBase):
             shapes = existing.shapes + tuple(type(sh)(sh.kind, sh.dimensions, relative @ sh.pose) for sh in shapes)
             at = existing.pose
         if not shapes:
-            raise PlanningError("INVALID_OBJECT_NAME", f"collision object '{co.id}' has no shape gazelle plans with")
+            raise PlanningError(
+                "INVALID_OBJECT_NAME", f"collision object {quoted(co.id)} has no shape gazelle plans with"
+            )
         planner.add_object(SceneObject(co.id, shapes, at))
 
     def _apply_attached(self, aco: AttachedCollisionObject) -> None:
@@ -268,7 +277,7 @@ class _Scene(_MoveGroupBase):
                 planner.add_object(SceneObject(obj.name, obj.shapes, world))
             return
         if not aco.link_name:
-            raise PlanningError("INVALID_LINK_NAME", f"attached object '{co.id}' names no link")
+            raise PlanningError("INVALID_LINK_NAME", f"attached object {quoted(co.id)} names no link")
         link_pose = planner.fk(q, aco.link_name)
         existing = self._find(co.id)
         if existing is not None and not co.primitives and not co.meshes:
@@ -277,7 +286,9 @@ class _Scene(_MoveGroupBase):
         else:
             shapes = tuple(shapes_of(co, self._warn))
             if not shapes:
-                raise PlanningError("INVALID_OBJECT_NAME", f"attached object '{co.id}' has no shape gazelle plans with")
+                raise PlanningError(
+                    "INVALID_OBJECT_NAME", f"attached object {quoted(co.id)} has no shape gazelle plans with"
+                )
             frame = self._frame(co.header.frame_id or aco.link_name, q)
             at = np.linalg.inv(link_pose) @ frame @ checked_matrix(co.pose, f"attached object '{co.id[:80]}'")
         planner.add_object(SceneObject(co.id, shapes, at, aco.link_name, tuple(aco.touch_links)))

@@ -116,7 +116,7 @@ def shapes_of(co: CollisionObject, warn: Callable[[str], None]) -> list[Shape]:
         at = checked_matrix(poses[i], f"{what}: primitive_poses[{i}]") if i < len(poses) else np.eye(4)
         kind = _KINDS.get(primitive.type)
         if kind is None:
-            warn(f"collision object '{co.id}': primitive {i} of type {primitive.type} is not planned with")
+            warn(f"{what}: primitive {i} of type {primitive.type} is not planned with")
             continue
         out.append(Shape(kind, _checked_dimensions(kind, list(primitive.dimensions), f"{what}: primitives[{i}]"), at))
     mesh_poses = list(co.mesh_poses)
@@ -135,9 +135,9 @@ def shapes_of(co: CollisionObject, warn: Callable[[str], None]) -> list[Shape]:
         lo, hi = points.min(axis=0), points.max(axis=0)
         at = (matrix(mesh_poses[i]) if i < len(mesh_poses) else np.eye(4)) @ _translation((lo + hi) / 2)
         out.append(Shape("box", tuple(float(v) for v in np.maximum(hi - lo, 1e-4)), at))
-        warn(f"collision object '{co.id}': mesh {i} is planned with as its bounding box")
+        warn(f"{what}: mesh {i} is planned with as its bounding box")
     if co.planes:
-        warn(f"collision object '{co.id}': {len(co.planes)} plane(s) are not planned with")
+        warn(f"{what}: {len(co.planes)} plane(s) are not planned with")
     return out
 
 

@@ -525,23 +525,11 @@ def _ready(panda: Panda) -> dict[str, float]:
 
 
 def test_compute_cartesian_path_draws_a_20_cm_line_that_the_arm_follows_within_2_mm(panda):
-    from geometry_msgs.msg import Pose
     from moveit_msgs.srv import GetCartesianPath
 
     ready = _ready(panda)
     (begin,) = _fk(panda, ready, ["panda_link8"])
-    end = Pose(position=type(begin.position)(x=begin.position.x, y=begin.position.y + 0.2, z=begin.position.z))
-    end.orientation = begin.orientation
-    req = GetCartesianPath.Request()
-    req.header.frame_id = "panda_link0"
-    req.group_name = "panda_arm"
-    req.link_name = "panda_link8"
-    req.waypoints = [end]
-    req.max_step = 0.01
-    req.avoid_collisions = True
-    req.start_state.joint_state.name = list(ready)
-    req.start_state.joint_state.position = list(ready.values())
-    res = panda.ros.call(GetCartesianPath, "/compute_cartesian_path", req)
+    res = panda.ros.call(GetCartesianPath, "/compute_cartesian_path", _line_request(ready, begin, 0.2, 0.01))
     assert res.error_code.val == MoveItErrorCodes.SUCCESS, res.error_code.message
     assert res.fraction == pytest.approx(1.0)
 
@@ -961,3 +949,130 @@ def test_a_groups_urdf_and_clear_octomap_are_served_as_moveits_default_capabilit
     assert bad.error_code.message == "Cannot create URDF because planning group 'tail' does not exist"
     panda.ros.call(Empty, "/clear_octomap", Empty.Request())
     panda.move_group.wait_line("Octomap cleared.", timeout=10)
+
+
+def _peak_rss_mb(pid: int) -> tuple[float, float]:
+    """A process's resident memory now and at its peak (VmRSS, VmHWM), MB."""
+    fields = {}
+    with open(f"/proc/{pid}/status") as f:
+        for line in f:
+            key, _, value = line.partition(":")
+            if key in ("VmRSS", "VmHWM"):
+                fields[key] = int(value.split()[0]) / 1024
+    return fields["VmRSS"], fields["VmHWM"]
+
+
+def _line_request(ready: dict[str, float], begin: Any, dy: float, max_step: float) -> Any:
+    """A GetCartesianPath request: panda_link8 from 'ready' ``dy`` m sideways in steps of ``max_step``."""
+    from geometry_msgs.msg import Pose
+    from moveit_msgs.srv import GetCartesianPath
+
+    end = Pose(position=type(begin.position)(x=begin.position.x, y=begin.position.y + dy, z=begin.position.z))
+    end.orientation = begin.orientation
+    req = GetCartesianPath.Request()
+    req.header.frame_id = "panda_link0"
+    req.group_name = "panda_arm"
+    req.link_name = "panda_link8"
+    req.waypoints = [end]
+    req.max_step = max_step
+    req.avoid_collisions = True
+    req.start_state.joint_state.name = list(ready)
+    req.start_state.joint_state.position = list(ready.values())
+    return req
+
+
+def test_a_cartesian_path_at_max_step_1e_6_is_refused_at_once_with_moveits_failure_and_memory_stays(panda):
+    """Issue 48: 0.3 m at max_step 1e-6 from 'ready' was answered after 51.5 s with a MemoryError, move_group's
+    RSS going from 224 MB to 1.6 GB, every other request waiting. Its 300,000 poses are now counted before any
+    is made and refused (FAILURE, MoveIt's code for a max_step it cannot use) in well under a second."""
+    import time
+
+    from moveit_msgs.srv import GetCartesianPath
+
+    ready = _group_states("panda_arm")["ready"]
+    (begin,) = _fk(panda, ready, ["panda_link8"])
+    pid = panda.move_group.popen.pid
+    rss_before, peak_before = _peak_rss_mb(pid)
+    t0 = time.monotonic()
+    res = panda.ros.call(GetCartesianPath, "/compute_cartesian_path", _line_request(ready, begin, 0.3, 1e-6), 15)
+    took = time.monotonic() - t0
+    assert res.error_code.val == MoveItErrorCodes.FAILURE, (res.error_code.val, res.error_code.message)
+    assert "max_step 1e-06" in res.error_code.message and "10000 poses" in res.error_code.message
+    assert res.fraction == 0.0 and not res.solution.joint_trajectory.points
+    assert took < 5.0, took
+    _, peak_after = _peak_rss_mb(pid)
+    assert peak_after <= max(peak_before, rss_before + 50.0), (rss_before, peak_before, peak_after)
+    # the same line in steps move_group solves is drawn whole
+    res = panda.ros.call(GetCartesianPath, "/compute_cartesian_path", _line_request(ready, begin, 0.3, 0.01))
+    assert res.error_code.val == MoveItErrorCodes.SUCCESS and res.fraction == pytest.approx(1.0)
+
+
+def test_queries_answer_while_a_long_cartesian_path_is_planned(panda):
+    """Every move_group service waited on one lock: a /compute_fk sent beside issue 48's payload waited 49.6 s.
+    FK, state validity and the planning scene are now served by their own planner (MoveIt serves them
+    beside a plan): while a 10,000-pose Cartesian path is computed (seconds), each answers within a
+    second, well under the path's time, and several answer before the path does."""
+    import time
+
+    from moveit_msgs.srv import GetCartesianPath, GetPlanningScene
+
+    ready = _group_states("panda_arm")["ready"]
+    (begin,) = _fk(panda, ready, ["panda_link8"])
+    valid = GetStateValidity.Request(group_name="panda_arm")
+    valid.robot_state.joint_state.name = list(ready)
+    valid.robot_state.joint_state.position = list(ready.values())
+    fk = GetPositionFK.Request(fk_link_names=["panda_link8"])
+    fk.header.frame_id = "panda_link0"
+    queries = [
+        (GetPositionFK, "/compute_fk", fk),
+        (GetStateValidity, "/check_state_validity", valid),
+        (GetPlanningScene, "/get_planning_scene", GetPlanningScene.Request()),
+    ]
+    for srv_type, name, req in queries:  # clients made and their services discovered before the path starts
+        panda.ros.call(srv_type, name, req)
+    client = panda.ros.client(GetCartesianPath, "/compute_cartesian_path")
+    t0 = time.monotonic()
+    path = client.call_async(_line_request(ready, begin, 0.3, 0.3 / 9_999))
+    latencies: list[float] = []
+    while not path.done() and time.monotonic() - t0 < 120:
+        srv_type, name, req = queries[len(latencies) % len(queries)]
+        asked = time.monotonic()
+        panda.ros.call(srv_type, name, req, timeout=1.0)  # fails the test if it waits a second
+        if not path.done():
+            latencies.append(time.monotonic() - asked)
+    wait_for(path.done, 120, "the Cartesian path's answer")
+    planned = time.monotonic() - t0
+    res = path.result()
+    assert res.error_code.val == MoveItErrorCodes.SUCCESS and res.fraction == pytest.approx(1.0), res.error_code
+    assert len(latencies) >= 3, (latencies, planned)
+    assert max(latencies) < planned / 2, (latencies, planned)
+
+
+def test_compute_fk_answers_at_most_1000_links_a_request(panda):
+    """Each link named is an FK and a pose in the reply (MoveIt lets a link be named again): a request naming
+    one link a million times (11 MB) was a million FKs and a 100 MB reply. At most 1,000 are answered; more is
+    MoveIt's FAILURE saying so."""
+    ready = _group_states("panda_arm")["ready"]
+    assert len(_fk(panda, ready, ["panda_link8"] * 1000)) == 1000
+    req = GetPositionFK.Request(fk_link_names=["panda_link8"] * 1001)
+    req.robot_state.joint_state.name = list(ready)
+    req.robot_state.joint_state.position = list(ready.values())
+    res = panda.ros.call(GetPositionFK, "/compute_fk", req)
+    assert res.error_code.val == MoveItErrorCodes.FAILURE and not res.pose_stamped
+    assert res.error_code.message == "fk_link_names names 1001 links; at most 1000 a request"
+
+
+def test_a_10_mb_group_name_to_get_urdf_is_quoted_at_most_40_characters(panda):
+    """Issue 48 item 10: a 10 MB group name was echoed whole into get_urdf's reply and one log line; gazelle
+    quotes a requested name at most 40 characters long elsewhere (controller names)."""
+    from moveit_msgs.srv import GetGroupUrdf
+
+    name = "g" * 10_000_000
+    res = panda.ros.call(GetGroupUrdf, "/get_urdf", GetGroupUrdf.Request(group_name=name), timeout=60)
+    assert res.error_code.val == MoveItErrorCodes.FAILURE and res.urdf_string == ""
+    assert res.error_code.message == (
+        f"Cannot create URDF because planning group '{'g' * 40}'… (10000000 characters) does not exist"
+    )
+    line = panda.move_group.wait_line("(10000000 characters) does not exist", timeout=10)
+    assert len(line) < 300, len(line)
+    assert max(len(line) for line in panda.move_group.lines) < 10_000

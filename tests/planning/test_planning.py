@@ -22,6 +22,11 @@ TIPS = ["left_panda_hand", "right_panda_hand"]
 @pytest.fixture(scope="module")
 def planner():
     pytest.importorskip("roboplan")
+    return panda_planner()
+
+
+def panda_planner():
+    """An ArmPlanner of MoveIt's Panda config (URDF, SRDF, joint_limits.yaml), its meshes from the resource roots."""
     import os
 
     from gazelle.description import read_description_file as _read_description

@@ -85,8 +85,10 @@ def test_what_is_there_at_once_is_not_waited_for(kind) -> None:
 def test_execute_trajectory_reads_the_planners_scene_under_its_lock() -> None:
     """Issue 27 item 1: execute_trajectory checked the trajectory against roboplan's scene with no lock while
     the simulation's scene updates rebuilt that scene on another executor thread; YuMi's move_group died of
-    "double free or corruption" 4 runs in 4. Every read of the scene now holds the planner's lock."""
+    "double free or corruption" 4 runs in 4. Every read of the scene now holds the planner's lock (the query
+    planner's, since each kind of work has its own: issue 48)."""
     import threading
+    from contextlib import contextmanager
     from types import SimpleNamespace
 
     import numpy as np
@@ -102,8 +104,16 @@ def test_execute_trajectory_reads_the_planners_scene_under_its_lock() -> None:
             return np.array([-3.0, -3.0]), np.array([3.0, 3.0])
 
     planner = SimpleNamespace(joint_names=JOINTS, scene=Scene(), velocity_limits=dict.fromkeys(JOINTS, 2.0))
-    node = SimpleNamespace(_lock=lock, planner=planner)
-    node._check_trajectory_locked = lambda t: MoveGroupNode._check_trajectory_locked(node, t)  # type: ignore[arg-type]
+    roles: list[str] = []
+
+    @contextmanager
+    def using(role: str):
+        roles.append(role)
+        with lock:
+            yield planner
+
+    node = SimpleNamespace(_pool=SimpleNamespace(using=using), planner=None)
+    node._check_trajectory_locked = lambda t, p: MoveGroupNode._check_trajectory_locked(node, t, p)  # type: ignore[arg-type]
     trajectory = JointTrajectory(
         joint_names=JOINTS,
         points=[
@@ -113,6 +123,7 @@ def test_execute_trajectory_reads_the_planners_scene_under_its_lock() -> None:
     )
     assert MoveGroupNode._check_trajectory(node, trajectory) is None  # type: ignore[arg-type]
     assert reads and all(reads), "roboplan's scene was read without the planner's lock"
+    assert roles == ["query"]
 
 
 def test_a_two_arm_trajectory_goes_to_both_arms_controllers_each_with_its_part() -> None:
