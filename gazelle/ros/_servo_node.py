@@ -244,9 +244,9 @@ class ServoNode(Node):
             self.get_logger().warning(f"{text} (said once)")
 
     def _warn_often(self, key: str, text: str) -> None:
-        """Log ``text`` unless a warning of the same ``key`` (a status code, not the wire's text) was logged less
-        than :data:`WARNING_INTERVAL` s ago (wall time); the next one says how many were held back. MoveIt
-        warns each cycle (100 a second for a stream of bad commands)."""
+        """Log ``text`` unless a warning of the same ``key`` (a command type and status, never the wire's text)
+        was logged less than :data:`WARNING_INTERVAL` s ago (wall time); the next one says how many were held
+        back. MoveIt warns each cycle (100 a second for a stream of bad commands)."""
         now = time.monotonic()
         last, held = self._warned.get(key, (-math.inf, 0))
         if now - last < WARNING_INTERVAL:
@@ -435,7 +435,7 @@ class ServoNode(Node):
             status, delta, warning = self._pose_delta(q, msg)
         step = self.core.next_state(q, status, delta, kind, warning)
         if step.warning:
-            self._warn_often(f"status {step.status}", step.warning)
+            self._warn_often(f"command type {kind}, status {step.status}", step.warning)
         if step.status == core.INVALID:
             self._new[kind] = False  # stop trying this message
         return step

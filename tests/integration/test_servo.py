@@ -426,9 +426,10 @@ def test_one_bad_command_is_refused_with_one_warning_and_the_servo_keeps_serving
     after it; NaN and inf commands stay INVALID, and nothing but finite positions reaches the controller.
     Three bad streams, each followed by a good jog, in lockstep chunks after the fixture's start: ~40 s."""
     from control_msgs.msg import JointJog
-    from geometry_msgs.msg import TwistStamped
+    from geometry_msgs.msg import Point, Pose, PoseStamped, TwistStamped
     from moveit_msgs.msg import ServoStatus
     from sensor_msgs.msg import JointState
+    from std_msgs.msg import Header
     from trajectory_msgs.msg import JointTrajectory
 
     from gazelle.planning import servo as core
@@ -484,20 +485,24 @@ def test_one_bad_command_is_refused_with_one_warning_and_the_servo_keeps_serving
     assert 1 <= node.output.count(core.UNITLESS_RANGE) <= 1 + math.ceil(seconds), node.tail(30)
     still_serves("a unitless twist of 1.7e308")
 
-    # NaN and inf, in a twist and a jog: INVALID as they were, nothing moves
+    # NaN and inf, in a twist, a jog and a pose: INVALID as they were, nothing moves
     _switch(ros, 1)
     before = _arm(joints, kinematics)
     for x in (math.nan, math.inf, -math.inf):
         _drive(gazelle_sim, ros, twists, lambda x=x: twist(x), 0.04)
     _switch(ros, 0)
     _drive(gazelle_sim, ros, jogs, lambda: JointJog(joint_names=["panda_joint1"], velocities=[math.nan]), 0.04)
+    _switch(ros, 2)
+    poses = ros.publisher("/servo_node/pose_target_cmds", PoseStamped)
+    nan_pose = lambda: PoseStamped(header=Header(frame_id="panda_link0"), pose=Pose(position=Point(x=math.nan)))
+    _drive(gazelle_sim, ros, poses, nan_pose, 0.04)
     gazelle_sim.run_for(0.2)
     assert np.abs(_arm(joints, kinematics) - before).max() < 1e-3
     still_serves("NaN and inf commands")
     for msg in sent.messages:
         for point in msg.points:
             assert all(math.isfinite(v) for v in [*point.positions, *point.velocities]), point
-    assert "Traceback" not in node.output, node.tail(30)
+    assert "Traceback" not in node.output and "Invalid pose command." in node.output, node.tail(30)
 
 
 @pytest.fixture
