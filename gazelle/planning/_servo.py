@@ -44,6 +44,10 @@ STATUS_MESSAGES = {
     JOINT_BOUND: "Close to a joint bound (position or velocity), halting",
 }
 """moveit_servo's SERVO_STATUS_CODE_MAP (utils/datatypes.hpp): the ServoStatus codes and their messages."""
+TOO_LARGE = "Invalid command: too large to compute a finite joint step."
+UNITLESS_RANGE = "Invalid twist command: a component of a unitless command is outside [-1, 1]."
+"""gazelle: what a command whose step overflows is told (MoveIt's arithmetic would pass on NaN positions), and
+a unitless twist out of its range (Humble's rule)."""
 JOINT_JOG, TWIST, POSE = 0, 1, 2
 """moveit_msgs/ServoCommandType's command types."""
 
@@ -155,6 +159,21 @@ def _rotation_vector(r: np.ndarray) -> np.ndarray:
     return axis * angle
 
 
+def _capped(v: np.ndarray, cap: float) -> np.ndarray:
+    """``v`` shrunk whole (its direction kept) to the length ``cap`` when longer (a cap <= 0 caps nothing);
+    its length is taken without overflow, so a vector of 1e308s is capped, not zeroed by an infinite norm."""
+    if cap <= 0.0:
+        return v
+    big = float(np.max(np.abs(v))) if len(v) else 0.0
+    if big == 0.0:
+        return v
+    unit = v / big
+    length = float(np.linalg.norm(unit))  # |v| / big, in [1, sqrt(len(v))]
+    if length * (big / cap) <= 1.0:
+        return v
+    return unit * (cap / length)
+
+
 def _skew(v: np.ndarray) -> np.ndarray:
     return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
 
@@ -201,6 +220,13 @@ class ServoCore:
             delta *= self.s.scale_joint
         return NO_WARNING, delta, ""
 
+    def out_of_range(self, twist: Sequence[float]) -> bool:
+        """Whether an incoming twist (in its own frame) is out of the unitless range: servo_parameters.yaml says
+        "unitless commands are in the range [-1:1]", and Humble's servo_calcs.cpp skipped one out of it (Jazzy
+        scales it, and a twist of 1e308 then overflowed into NaN joint positions). Never for speed_units, whose
+        speeds are capped."""
+        return self.s.command_in_type == "unitless" and any(abs(v) > 1.0 for v in twist)
+
     def twist_in_planning_frame(
         self, q: np.ndarray, frame: str, twist: Sequence[float], others: Mapping[str, float] | None = None
     ) -> np.ndarray | None:
@@ -214,13 +240,14 @@ class ServoCore:
         except PlanningError:
             return None
         r, p = tf[:3, :3], tf[:3, 3]
-        if self.s.apply_twist_commands_about_ee_frame:
-            return np.concatenate([r @ t[:3], r @ t[3:]])
-        adjoint = np.zeros((6, 6))  # [linear; angular] order: Modern Robotics eq. 3.83, reordered
-        adjoint[:3, :3] = _skew(p) @ r
-        adjoint[:3, 3:] = r
-        adjoint[3:, :3] = r
-        return adjoint @ t
+        with np.errstate(over="ignore", invalid="ignore"):  # a twist of 1e308s: inf, refused by twist()
+            if self.s.apply_twist_commands_about_ee_frame:
+                return np.concatenate([r @ t[:3], r @ t[3:]])
+            adjoint = np.zeros((6, 6))  # [linear; angular] order: Modern Robotics eq. 3.83, reordered
+            adjoint[:3, :3] = _skew(p) @ r
+            adjoint[:3, 3:] = r
+            adjoint[3:, :3] = r
+            return adjoint @ t
 
     def twist(
         self, q: np.ndarray, twist: np.ndarray, others: Mapping[str, float] | None = None
@@ -244,15 +271,13 @@ class ServoCore:
             return INVALID, np.zeros(n), "Invalid twist command."
         if not np.any(twist):
             return NO_WARNING, np.zeros(n), ""
-        dx = twist * self.period
         if self.s.command_in_type == "unitless":
+            dx = twist * self.period
             dx[:3] *= self.s.scale_linear
             dx[3:] *= self.s.scale_rotational
         else:
-            for part, cap in ((slice(0, 3), self.s.scale_linear), (slice(3, 6), self.s.scale_rotational)):
-                speed = float(np.linalg.norm(twist[part]))
-                if cap > 0.0 and speed / cap > 1.0:
-                    dx[part] /= speed / cap
+            dx = np.concatenate([_capped(twist[:3], self.s.scale_linear), _capped(twist[3:], self.s.scale_rotational)])
+            dx *= self.period
         return self._through_jacobian(q, dx, others)
 
     def pose(
@@ -267,25 +292,27 @@ class ServoCore:
         current = self.k.pose(q, self.k.ee_frame, others)
         error = target[:3, 3] - current[:3, 3]
         period = self.period
-        if self.s.scale_linear > 0.0:
-            scale = (np.linalg.norm(error) / period) / self.s.scale_linear
-            if scale > 1.0:
-                error = error / scale
+        error = _capped(error, self.s.scale_linear * period)
         rotation = target[:3, :3] @ current[:3, :3].T
-        rotvec = _rotation_vector(rotation)
-        if self.s.scale_rotational > 0.0:
-            scale = (np.linalg.norm(rotvec) / period) / self.s.scale_rotational
-            if scale > 1.0:
-                rotvec = rotvec / scale  # a slerp by 1/scale: the same axis, a fraction of the angle
+        # a slerp by the cap's fraction: the same axis, a fraction of the angle
+        rotvec = _capped(_rotation_vector(rotation), self.s.scale_rotational * period)
         return self._through_jacobian(q, np.concatenate([error, rotvec]), others)
 
     def _through_jacobian(
         self, q: np.ndarray, dx: np.ndarray, others: Mapping[str, float] | None
     ) -> tuple[int, np.ndarray, str]:
         """command.cpp jointDeltaFromIK without an IK plugin: the Jacobian's pseudo-inverse (from its SVD, which
-        the singularity check below shares)."""
-        u, sv, vt = np.linalg.svd(self.k.jacobian(q, others), full_matrices=False)
-        delta = vt.T @ ((u.T @ dx) / sv)
+        the singularity check below shares). A step too large to compute (a unitless twist of 1e308: the
+        pseudo-inverse overflows) is INVALID, as is a Jacobian whose SVD does not converge."""
+        n = len(q)
+        try:
+            u, sv, vt = np.linalg.svd(self.k.jacobian(q, others), full_matrices=False)
+        except np.linalg.LinAlgError:
+            return INVALID, np.zeros(n), "Invalid command: the Jacobian's SVD did not converge."
+        with np.errstate(over="ignore", invalid="ignore"):
+            delta = vt.T @ ((u.T @ dx) / sv)
+        if not np.all(np.isfinite(delta)):
+            return INVALID, np.zeros(n), TOO_LARGE
         scale, status = self._singularity_scale(q, u, sv, vt, dx, others)
         if status != NO_WARNING:
             return status, delta * scale, STATUS_MESSAGES[status]
@@ -309,7 +336,8 @@ class ServoCore:
         next_condition = next_sv[0] / next_sv[-1] if next_sv[-1] > 0 else math.inf
         if next_condition <= condition:
             towards *= -1
-        approaching = float(towards @ dx) > 0
+        with np.errstate(over="ignore", invalid="ignore"):
+            approaching = float(towards @ dx) > 0
         lower, hard = self.s.lower_singularity_threshold, self.s.hard_stop_singularity_threshold
         upper = hard if approaching else lower + (hard - lower) * self.s.leaving_singularity_threshold_multiplier
         if lower < condition < hard:
@@ -334,15 +362,19 @@ class ServoCore:
             The next state: positions and velocities after scaling every joint by the one factor that keeps
             each within its velocity limit (so the motion keeps its direction), and, for a joint heading past
             its position limit less ``joint_limit_margins``, JOINT_BOUND with that joint (or all of them)
-            held.
+            held; INVALID (no motion) when the step is not finite.
         """
         period = self.period
         if status == INVALID:
             return ServoStep(INVALID, q.copy(), np.zeros(len(q)), warning)
-        velocities = delta / period
-        scale = self._velocity_limit_scale(velocities)
-        positions = q + velocities * scale * period
-        velocities = (positions - q) / period
+        with np.errstate(over="ignore", invalid="ignore"):
+            velocities = delta / period
+            scale = self._velocity_limit_scale(velocities)
+            positions = q + velocities * scale * period
+            velocities = (positions - q) / period
+        if not (np.all(np.isfinite(positions)) and np.all(np.isfinite(velocities))):
+            # a step that overflowed (a command of 1e308): never a NaN position for the controller
+            return ServoStep(INVALID, q.copy(), np.zeros(len(q)), TOO_LARGE)
         halt = [
             i
             for i in range(len(q))

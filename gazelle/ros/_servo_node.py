@@ -16,6 +16,18 @@ and ``robot_description_semantic``. As MoveIt's node it:
   sliding window of ``max_expected_latency``: common.cpp ``updateSlidingWindow`` and
   ``composeTrajectoryMessage``) or ``std_msgs/Float64MultiArray``; a command older than
   ``incoming_command_timeout`` (its header stamp, by the node's clock) halts;
+* refuses, with one warning per topic and reason, a command stamped before 1970 (``sec`` < 0: MoveIt's
+  rclcpp::Time throws) or more than :data:`FUTURE_STAMP_TOLERANCE` ahead of the node's clock (a publisher
+  on another clock, such as ``ros2 topic pub``'s ``stamp: now`` in wall time against a node on sim time,
+  which MoveIt's rule would keep fresh for as long as the clocks are apart); a stamp a little ahead counts
+  from the command's arrival, so no command acts longer than ``incoming_command_timeout`` after it came. A
+  zero stamp is MoveIt's: stale once the node's clock is past ``incoming_command_timeout``. A command already
+  stale on arrival is said once (a publisher on another clock, the other way round);
+* keeps the robot's joints only from ``joint_topic``, and refuses a position that is not finite (said once per
+  joint), so the Jacobian never sees a NaN; a unitless twist outside [-1, 1] is INVALID (Humble's rule: Jazzy
+  scaled one of 1e308 into NaN joint positions), and so is any command whose step is not finite, so no NaN
+  reaches the controller; MoveIt's per-cycle warnings about commands are logged at most once a second per
+  kind (:data:`WARNING_INTERVAL`), with the count held back;
 * publishes a moveit_msgs/ServoStatus on ``~/status`` each cycle; ``~/pause_servo`` (std_srvs/SetBool)
   pauses and resumes.
 
@@ -28,6 +40,7 @@ from __future__ import annotations
 import math
 import sys
 import threading
+import time
 from collections import deque
 from dataclasses import dataclass
 from typing import Any
@@ -59,6 +72,17 @@ STOPPED_VELOCITY_EPS = 1e-4
 MAX_CYCLE_PERIODS = 10
 """A cycle covers at most this many periods of clock time (a clock that jumped, a node that was stopped)."""
 OUT_TYPES = ("trajectory_msgs/JointTrajectory", "std_msgs/Float64MultiArray")
+WARNING_INTERVAL = 1.0
+"""gazelle (s, wall): a warning about commands is logged at most this often per kind (a stream of bad ones)."""
+MAX_WARNING_CHARS = 300
+"""gazelle: a warning quoting the wire is cut to this many characters."""
+FUTURE_STAMP_TOLERANCE = 1.0
+"""gazelle (s): a command stamped further ahead of the node's clock than this is refused (another clock's)."""
+TOPIC_PARAMETERS = {
+    core.JOINT_JOG: "joint_command_in_topic",
+    core.TWIST: "cartesian_command_in_topic",
+    core.POSE: "pose_command_in_topic",
+}
 
 
 @dataclass
@@ -93,6 +117,11 @@ class ServoNode(Node):
         self.paused = False
         self._joints: dict[str, float] = {}
         self._latest: dict[int, Any] = {}
+        self._stamps: dict[int, int] = {}  # the age of each newest command counts from here (ns, node clock)
+        self._said: set[str] = set()  # the once-only warnings given
+        self._warned: dict[str, tuple[float, int]] = {}  # key: (when last logged, how many held back since)
+        self._robot_joints = set(self.kinematics.scene.joint_names)
+        self._topics: dict[int, str] = {}
         self._new: dict[int, bool] = {core.JOINT_JOG: False, core.TWIST: False, core.POSE: False}
         self._window: deque[_State] = deque()
         self._last_commanded: _State | None = None
@@ -100,12 +129,10 @@ class ServoNode(Node):
         self._last_cycle_ns: int | None = None
         self._status = ServoStatus(code=core.NO_WARNING, message=core.STATUS_MESSAGES[core.NO_WARNING])
         self.create_subscription(JointState, self.p["joint_topic"], self._on_joints, 10)
-        for kind, msg_type, topic in (
-            (core.JOINT_JOG, JointJog, "joint_command_in_topic"),
-            (core.TWIST, TwistStamped, "cartesian_command_in_topic"),
-            (core.POSE, PoseStamped, "pose_command_in_topic"),
-        ):
-            self.create_subscription(msg_type, self.p[topic], lambda m, k=kind: self._on_command(k, m), 10)
+        for kind, msg_type in ((core.JOINT_JOG, JointJog), (core.TWIST, TwistStamped), (core.POSE, PoseStamped)):
+            topic = self.p[TOPIC_PARAMETERS[kind]]
+            self._topics[kind] = self.resolve_topic_name(topic)  # ~/delta_twist_cmds: /servo_node/delta_twist_cmds
+            self.create_subscription(msg_type, topic, lambda m, k=kind: self._on_command(k, m), 10)
         out_type = self.p["command_out_type"]
         self._out = self.create_publisher(
             JointTrajectory if out_type == OUT_TYPES[0] else Float64MultiArray, self.p["command_out_topic"], 10
@@ -210,15 +237,81 @@ class ServoNode(Node):
             log.warning("moveit_servo.active_subgroup is not supported: the whole move group is servoed")
 
     # ------------------------------------------------------------------ inputs
+    def _warn_once(self, key: str, text: str) -> None:
+        """Log ``text`` the first time ``key`` comes up, never again (a flood of bad input is one line)."""
+        if key not in self._said:
+            self._said.add(key)
+            self.get_logger().warning(f"{text} (said once)")
+
+    def _warn_often(self, key: str, text: str) -> None:
+        """Log ``text`` unless a warning of the same ``key`` (a command type and status, never the wire's text)
+        was logged less than :data:`WARNING_INTERVAL` s ago (wall time); the next one says how many were held
+        back. MoveIt warns each cycle (100 a second for a stream of bad commands)."""
+        now = time.monotonic()
+        last, held = self._warned.get(key, (-math.inf, 0))
+        if now - last < WARNING_INTERVAL:
+            self._warned[key] = (last, held + 1)
+            return
+        self._warned[key] = (now, 0)
+        if len(text) > MAX_WARNING_CHARS:  # a joint name or frame from the wire, a megabyte long
+            text = text[:MAX_WARNING_CHARS] + f"... ({len(text)} characters)"
+        more = f" ({held} more like it in the last {now - last:.1f} s)" if held else ""
+        self.get_logger().warning(text + more)
+
     def _on_joints(self, msg: JointState) -> None:
+        """The robot's joints' positions; other names are not kept, and a position that is not finite is refused
+        (the joint keeps its last reading) with one warning."""
         with self._lock:
             for name, value in zip(msg.name, msg.position):
+                if name not in self._robot_joints:
+                    continue
+                if not math.isfinite(value):
+                    self._warn_once(
+                        f"joints:{name}",
+                        f"{self.p['joint_topic']}: position {value} of joint '{name}' is not finite; "
+                        "ignored (the joint keeps its last reading)",
+                    )
+                    continue
                 self._joints[name] = float(value)
 
     def _on_command(self, kind: int, msg: Any) -> None:
+        """A command becomes the newest of its type unless its stamp is refused (see the module docstring)."""
+        now = self.get_clock().now().nanoseconds
+        stamp = msg.header.stamp
+        topic = self._topics[kind]
+        what = f"{type(msg).__name__} on {topic}"
+        if stamp.sec < 0:
+            self._warn_once(
+                f"{topic}:negative", f"{what} refused: header.stamp.sec {stamp.sec} is negative (before 1970)"
+            )
+            return
+        stamp_ns = stamp.sec * 1_000_000_000 + stamp.nanosec
+        ahead = (stamp_ns - now) / 1e9
+        if ahead > FUTURE_STAMP_TOLERANCE:
+            self._warn_once(
+                f"{topic}:future",
+                f"{what} refused: header.stamp {stamp_ns / 1e9:.3f} s is {ahead:.3f} s ahead of "
+                f"{self._clock_reading(now)}: its publisher is on another clock (wall time against use_sim_time? "
+                "`ros2 topic pub -s` stamps `now` with /clock's time)",
+            )
+            return
+        timeout = self.p["incoming_command_timeout"]
+        if -ahead >= timeout:
+            self._warn_once(
+                f"{topic}:stale",
+                f"{what} is stale on arrival: header.stamp {stamp_ns / 1e9:.3f} s is {-ahead:.3f} s behind "
+                f"{self._clock_reading(now)}, over incoming_command_timeout ({timeout} s), so it halts "
+                "(a zero stamp, or a publisher on another clock?)",
+            )
         with self._lock:
             self._latest[kind] = msg
+            self._stamps[kind] = min(stamp_ns, now)  # a stamp a little ahead ages from the command's arrival
             self._new[kind] = True
+
+    def _clock_reading(self, now_ns: int) -> str:
+        """What the node's clock reads, and which clock it is: for a warning about a command's stamp."""
+        which = "sim time" if self.get_parameter("use_sim_time").value else "wall time"
+        return f"servo_node's clock ({which}, {now_ns / 1e9:.3f} s)"
 
     def _switch_command_type(self, req: ServoCommandType.Request, res: ServoCommandType.Response) -> Any:
         """``~/switch_command_type``: joint jog (0), twist (1) or pose (2); another value is refused with a warning
@@ -226,7 +319,7 @@ class ServoNode(Node):
         if core.JOINT_JOG <= req.command_type <= core.POSE:
             self.command_type = int(req.command_type)
         else:
-            self.get_logger().warning(f"Unknown command type {req.command_type} requested")
+            self._warn_often("switch", f"Unknown command type {req.command_type} requested")
         res.success = req.command_type == self.command_type
         return res
 
@@ -307,9 +400,11 @@ class ServoNode(Node):
             code = step.status if step is not None else core.NO_WARNING
             self._status_pub.publish(ServoStatus(code=code, message=core.STATUS_MESSAGES[code]))
 
-    def _stale(self, msg: Any, now_ns: int) -> bool:
-        stamp = Time.from_msg(msg.header.stamp).nanoseconds
-        return now_ns - stamp >= self.p["incoming_command_timeout"] * 1e9
+    def _stale(self, kind: int, now_ns: int) -> bool:
+        """servo_node.cpp's rule: the command is at least ``incoming_command_timeout`` old. Its age is negative only
+        when the clock went back past it (a simulation reset): a command of the old time line is stale too."""
+        age = now_ns - self._stamps[kind]
+        return age < 0 or age >= self.p["incoming_command_timeout"] * 1e9
 
     def _next(self, current: _State, now_ns: int) -> core.ServoStep | None:
         """servo_node.cpp's dispatch: the expected type's new command, else a warning for another type."""
@@ -318,39 +413,44 @@ class ServoNode(Node):
             if any(self._new.values()):
                 for k in self._new:
                     self._new[k] = False
-                self.get_logger().warning("Command type has not been set, cannot accept input")
+                self._warn_often("type", "Command type has not been set, cannot accept input")
             return None
         for k in self._new:  # the other types that arrived meanwhile are rejected
             if k != kind:
                 self._new[k] = False
         msg = self._latest[kind]
-        if self._stale(msg, now_ns):
+        if self._stale(kind, now_ns):
             return self._halt()
         q = current.positions
         if kind == core.JOINT_JOG:
             if list(msg.displacements):
-                self.get_logger().warning("Joint jog command displacements field is not yet supported, ignoring.")
+                self._warn_often(
+                    "displacements", "Joint jog command displacements field is not yet supported, ignoring."
+                )
+                msg.displacements = []  # servo_node.cpp: once per message, not once per cycle
             status, delta, warning = self.core.joint_jog(list(msg.joint_names), list(msg.velocities))
         elif kind == core.TWIST:
-            t = msg.twist
-            twist = [t.linear.x, t.linear.y, t.linear.z, t.angular.x, t.angular.y, t.angular.z]
-            moved = self.core.twist_in_planning_frame(q, msg.header.frame_id, twist, self._joints)
-            if moved is None:
-                status, delta, warning = (
-                    core.INVALID,
-                    np.zeros(len(q)),
-                    "Could not transform twist command to planning frame.",
-                )
-            else:
-                status, delta, warning = self.core.twist(q, moved, self._joints)
+            status, delta, warning = self._twist_delta(q, msg)
         else:
             status, delta, warning = self._pose_delta(q, msg)
         step = self.core.next_state(q, status, delta, kind, warning)
         if step.warning:
-            self.get_logger().warning(step.warning)
+            self._warn_often(f"command type {kind}, status {step.status}", step.warning)
         if step.status == core.INVALID:
             self._new[kind] = False  # stop trying this message
         return step
+
+    def _twist_delta(self, q: np.ndarray, msg: TwistStamped) -> tuple[int, np.ndarray, str]:
+        """A twist command's joint step: in range (unitless), brought to the planning frame (an unknown frame is
+        INVALID with MoveIt's message), then through the Jacobian."""
+        t = msg.twist
+        twist = [t.linear.x, t.linear.y, t.linear.z, t.angular.x, t.angular.y, t.angular.z]
+        if self.core.out_of_range(twist):
+            return core.INVALID, np.zeros(len(q)), core.UNITLESS_RANGE
+        moved = self.core.twist_in_planning_frame(q, msg.header.frame_id, twist, self._joints)
+        if moved is None:
+            return core.INVALID, np.zeros(len(q)), "Could not transform twist command to planning frame."
+        return self.core.twist(q, moved, self._joints)
 
     def _pose_delta(self, q: np.ndarray, msg: PoseStamped) -> tuple[int, np.ndarray, str]:
         """A pose command's joint step: the pose must be in the planning frame, finite and a unit quaternion

@@ -3,6 +3,7 @@ joint_limits.yaml unchanged): MoveIt's error names, IK, collision checking and t
 
 from __future__ import annotations
 
+import math
 import re
 
 import numpy as np
@@ -862,3 +863,37 @@ def test_servo_approaches_a_pose_target_at_the_capped_speeds(planner):
     near[1, 3] += 0.001  # 1 mm: within one cycle's reach
     status, delta, _ = core.pose(q, near)
     assert np.linalg.norm(k.pose(q + delta, k.ee_frame)[:3, 3] - near[:3, 3]) < 1e-5
+
+
+def test_servo_commands_of_1e308_are_capped_or_invalid_never_nan(planner):
+    """gazelle issue 48: a unitless twist of 1.7e308 overflowed into NaN joint positions (the next cycle's SVD
+    then did not converge and servo_node died). A unitless twist outside [-1, 1] is INVALID (Humble's rule,
+    the range servo_parameters.yaml gives), a speed_units twist of 1.7e308 is capped at scale.linear along
+    its direction (its norm overflowed to inf and zeroed it), a pose target of 1e308 is approached at the
+    capped speed, and any step that is not finite is INVALID with no motion."""
+    from gazelle.planning import ServoCore, ServoKinematics, ServoSettings
+    from gazelle.planning import servo as sv
+
+    k = ServoKinematics(planner, "panda_arm")
+    q = np.array(list(READY.values()))
+    unitless = ServoCore(k, ServoSettings())
+    assert unitless.out_of_range([1.7e308, 0, 0, 0, 0, 0]) and unitless.out_of_range([0, 0, 0, 0, 0, -1.01])
+    assert not unitless.out_of_range([1.0, -1.0, 0.5, 0, 0, 1.0])
+    speed = ServoCore(k, ServoSettings(command_in_type="speed_units", scale_linear=0.2))
+    assert not speed.out_of_range([1.7e308, 0, 0, 0, 0, 0])
+    status, delta, _ = speed.twist(q, np.array([1.7e308, 1.7e308, 0.0, 0.0, 0.0, 0.0]))
+    dx = k.jacobian(q) @ delta
+    assert status == sv.NO_WARNING and np.all(np.isfinite(delta))
+    assert dx[0] == pytest.approx(0.2 * 0.01 / math.sqrt(2), rel=1e-3) and dx[1] == pytest.approx(dx[0], rel=1e-3)
+    target = k.pose(q, k.ee_frame)
+    target[0, 3] = 1e308
+    status, delta, _ = speed.pose(q, target)
+    step = k.pose(q + delta, k.ee_frame)[:3, 3] - k.pose(q, k.ee_frame)[:3, 3]
+    assert status == sv.NO_WARNING and step[0] == pytest.approx(0.002, rel=0.02)
+    with np.errstate(over="ignore"):
+        huge = np.full(7, 1e307) * 10.0  # a delta the arithmetic cannot hold: inf
+    step = unitless.next_state(q, sv.NO_WARNING, huge, sv.TWIST)
+    assert step.status == sv.INVALID and step.warning == sv.TOO_LARGE
+    assert np.array_equal(step.positions, q) and not step.velocities.any()
+    step = unitless.next_state(q, sv.NO_WARNING, np.full(7, 1e307), sv.TWIST)  # finite, but /period overflows
+    assert step.status == sv.INVALID and np.all(np.isfinite(step.positions))
