@@ -272,7 +272,6 @@ def test_show_args_lists_the_arguments_of_the_file_and_its_includes(prefix):
     [
         (["launch", "no_such_pkg", "x.launch.py"], "Package 'no_such_pkg' not found"),
         (["launch", "demo_pkg", "missing.launch.py"], "file 'missing.launch.py' was not found in the share directory"),
-        (["launch", "demo_pkg", "main.launch.py", "colour:=red"], "launch argument(s) 'colour' not declared"),
         (["run", "no_such_pkg", "x"], "Package 'no_such_pkg' not found"),
         (["run", "demo_pkg", "no_such_exe"], "No executable found"),
         (
@@ -287,6 +286,24 @@ def test_bad_input_is_a_clear_error_without_a_traceback_of_ours(prefix, args, ex
     assert out.returncode != 0
     assert expected in out.stdout + out.stderr
     assert "Traceback" not in out.stderr
+
+
+def test_an_argument_the_launch_file_does_not_declare_is_taken_as_ros2_launch_takes_it(prefix):
+    """ros2launch (Jazzy api.py ``launch_a_launch_file``) includes the file with every argument, and launch's
+    IncludeLaunchDescription sets each as a launch configuration, checking only that the declared ones without a
+    default are given: ``launch_rviz:=false`` to a file that declares no ``launch_rviz`` runs, and a substitution
+    of an undeclared one reads its value. gazelle refused it ("not declared by ...") and exited 1 (issue 51)."""
+    write(
+        prefix / "share" / "demo_pkg" / "launch" / "main.launch.py",
+        INCLUDED.replace(
+            'LogInfo(msg=["included',
+            'LogInfo(msg=["colour=", LaunchConfiguration("colour")]),\n        LogInfo(msg=["included',
+        ),
+    )
+    out = ros2(["launch", "demo_pkg", "main.launch.py", "launch_rviz:=false", "colour:=red"], prefix)
+    assert out.returncode == 0, out.stdout + out.stderr
+    said = out.stdout + out.stderr
+    assert "colour=red" in said and "included with robot=burger" in said, said
 
 
 def test_a_launch_file_that_raises_shows_the_users_traceback(prefix):

@@ -361,7 +361,9 @@ def test_interpolate_from_desired_state_starts_a_new_trajectory_from_the_last_co
     trajectory's first segment starts from the state last commanded instead of the measured one. Replacing
     a trajectory while the arm moves at 0.3 rad/s: the first cycle's reference is the measured position
     without it (error 0), and where the arm was commanded to be with it (ahead of it by the servo's lag,
-    ~0.1 mrad); gazelle read the parameter and did nothing with it."""
+    ~0.1 mrad); gazelle read the parameter and did nothing with it. The first trajectory starts with the
+    arm's own position at 0 s, as MoveIt's do, so that the replacement comes after its first point (one
+    replacing a trajectory still on its way to its first point starts from that segment's desired state)."""
     yaml_path = tmp_path / "r6bot.yaml"
     extra = "    interpolate_from_desired_state: true\n" if from_desired else ""
     yaml_path.write_text(R6BOT_YAML.read_text().replace("    joints: [joint_1", extra + "    joints: [joint_1", 1))
@@ -371,7 +373,8 @@ def test_interpolate_from_desired_state_starts_a_new_trajectory_from_the_last_co
     assert isinstance(jtc, JointTrajectoryController) and jtc.from_desired is from_desired
     sim.step(100)
     q0 = _positions(cm)
-    jtc.submit(TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, (TrajectoryPoint(1.0, tuple(q + 0.3 for q in q0)),))))
+    points = (TrajectoryPoint(0.0, tuple(q0)), TrajectoryPoint(1.0, tuple(q + 0.3 for q in q0)))
+    jtc.submit(TrajectoryGoal(JointTrajectory(0.0, R6_JOINTS, points)))
     sim.step(500)
     q1 = _positions(cm)
     stop = TrajectoryPoint(1.0, tuple(q + 0.3 for q in q1), (0.0,) * 6)  # with velocities: a cubic

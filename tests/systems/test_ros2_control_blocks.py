@@ -130,6 +130,32 @@ def test_the_vectorised_sample_is_the_scalar_sample_bit_for_bit():
                 assert got[row].tolist() == want, (ti, got[row].tolist(), want)
 
 
+def test_blocks_clamp_a_goal_past_the_joints_limits_as_the_python_cycle_does():
+    """A goal that takes joint_1 to 3.4 rad, past its upper limit (pi in the URDF): the blocks' planned commands
+    are clamped to it as the Python cycle's are (issue 51 item 1), and both runs give the same joint states,
+    joint_1 stopping at the limit. Without the clamp in ``plan_block`` the blocks commanded 3.4 rad."""
+    from gazelle.systems import JointTrajectory, TrajectoryPoint
+    from gazelle.systems.ros2_control import TrajectoryGoal
+
+    runs = []
+    for blocks in (False, True):
+        sim, cm, jtc, heard = _arm(blocks)
+        sim.step(100)
+        points = (TrajectoryPoint(0.0, (0.0,) * 6), TrajectoryPoint(2.0, (3.4, 0.0, 0.0, 0.0, 0.0, 0.0)))
+        jtc.submit(TrajectoryGoal(JointTrajectory(0.0, JOINTS, points)))
+        highest = -10.0
+        for _ in range(30):
+            sim.step(100)
+            cm.settle()
+            highest = max(highest, cm.hardware[0].commands["joint_1/position"])
+        runs.append((np.array([m.positions for m in heard]), highest, cm.block_cycles))
+    (ref, ref_high, ref_blocks), (got, high, used) = runs
+    assert ref_blocks == 0 and used > 1000, "the blocks were not used"
+    assert ref_high == high == math.pi
+    assert float(np.abs(got - ref).max()) <= 1e-6
+    assert got[-1][0] == pytest.approx(math.pi, abs=1e-3)
+
+
 def test_a_controller_state_listener_keeps_the_python_cycle():
     """~/controller_state is published every cycle from the cycle's own reference and error: with a
     listener, the cycles stay in Python (and give the same joint states)."""

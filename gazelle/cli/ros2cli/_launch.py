@@ -13,10 +13,6 @@ _PACKAGE_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 """A ROS package name (REP 144: lower case by rule; upper case is found in the wild, so accepted)."""
 
 
-PREFIX_ARGUMENTS = frozenset({"launch-prefix", "launch-prefix-filter"})
-"""Launch arguments every launch takes, declared or not: every process's ``ExecuteProcess`` reads them."""
-
-
 def _find_launch_file(package: str, name: str) -> str:
     """The launch file ``name`` in ``package``'s share folder, as ros2launch's ``get_share_file_path_from_package``
     finds it (searched below it; two files of that name are an error naming both)."""
@@ -47,7 +43,7 @@ def _find_launch_file(package: str, name: str) -> str:
 
 def main(argv: list[str]) -> int:
     """``ros2 launch <package> <file> [name:=value ...]`` (or a launch file's path), with ros2launch's options: the
-    launch file found in the package's share folder, its arguments checked against those it declares, then run."""
+    launch file found in the package's share folder, then run with its arguments."""
     p = argparse.ArgumentParser(prog="ros2 launch", description="Run a launch file")
     p.add_argument("-n", "--noninteractive", action="store_true")
     p.add_argument("-d", "--debug", action="store_true", help="Put the launch system in debug mode")
@@ -116,8 +112,11 @@ def run_launch_file(
     print_description: bool = False,
 ) -> int:
     """Run a Python launch file as ros2launch does: its declared arguments shown (``--show-args``) or its entities
-    printed (``--print``), else a launch argument it does not declare is an error listing those it does, and the
-    launch service runs it with the arguments and ``current_launch_file_path``/``_directory`` set. XML and YAML
+    printed (``--print``), else the launch service runs it with the arguments and
+    ``current_launch_file_path``/``_directory`` set. Every argument becomes a launch configuration, declared or not:
+    ros2launch's ``launch_a_launch_file`` includes the file with them, and launch's ``IncludeLaunchDescription``
+    (Jazzy) checks only that the declared ones without a default are given (``launch_rviz:=false`` to a file that
+    declares no ``launch_rviz`` runs). XML and YAML
     launch files are refused with a clear error (not supported yet)."""
     from launch import LaunchService
     from launch.logging import log
@@ -148,16 +147,6 @@ def run_launch_file(
         for e in ld.entities:
             print(type(e).__name__)
         return 0
-    names = {d.name for d in declared} | PREFIX_ARGUMENTS
-    unknown = [k for k, _ in launch_args if k not in names]
-    if unknown:
-        log(
-            "ERROR",
-            "launch",
-            f"launch argument(s) {', '.join(repr(u) for u in unknown)} not declared by '{path}' or what it includes; "
-            f"its arguments are: {', '.join(sorted(names)) or '(none)'}",
-        )
-        return 1
     log("INFO", "launch", f"All log files can be found below {os.path.expanduser('~/.ros/log')}")
     log("INFO", "launch", "Default logging verbosity is set to INFO")
     service = LaunchService(argv=[f"{k}:={v}" for k, v in launch_args], debug=debug)

@@ -30,10 +30,11 @@ import functools
 import logging
 import math
 import operator
-from collections.abc import Callable
-from dataclasses import dataclass
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass, field
 from typing import Any, ClassVar, TypeVar
 
+from ...description import Joint, JointType
 from .._bus import Bus, Endpoint, MsgType, Qos, remap_name
 from ._hardware import ControlError
 from ._params import Params
@@ -91,6 +92,10 @@ class ControllerContext:
     remaps: tuple[tuple[str, str], ...] = ()
     """Remapping rules of the controller's node (``from``, ``to``), first match wins: the manager's own
     (``<ros><remapping>``), then the spawner's ``--controller-ros-args``, as ros2_control Jazzy gives them."""
+    position_limits: dict[str, tuple[float, float]] = field(default_factory=dict)
+    """Joint -> its description's position range (URDF ``<limit lower upper>``) for the revolute and prismatic
+    joints that have one (:func:`position_limits`): what a trajectory controller clamps its position commands
+    to."""
 
 
 class Controller:
@@ -237,6 +242,19 @@ def _type_name(t: type | tuple[type, ...]) -> str:
 def finite(values: list[float]) -> bool:
     """Whether every value is finite."""
     return all(math.isfinite(v) for v in values)
+
+
+def position_limits(joints: Iterable[Joint]) -> dict[str, tuple[float, float]]:
+    """The position range (lower, upper) of each revolute or prismatic joint of ``joints`` whose description
+    gives both bounds (a continuous joint has none); what ros2_control's joint limits read from the URDF as
+    ``min_position`` / ``max_position``."""
+    out: dict[str, tuple[float, float]] = {}
+    for j in joints:
+        if j.type in (JointType.REVOLUTE, JointType.PRISMATIC) and j.axis is not None:
+            lo, hi = j.axis.limit.lower, j.axis.limit.upper
+            if lo is not None and hi is not None and lo <= hi:
+                out[j.name] = (lo, hi)
+    return out
 
 
 def values_getter(keys: list[str]) -> Callable[[dict[str, float]], tuple[float, ...]]:

@@ -39,7 +39,7 @@ from ._broadcasters import (
     JointGroupVelocityController,
     JointStateBroadcaster,
 )
-from ._controller import ACTIVE, FINALIZED, INACTIVE, UNCONFIGURED, Controller, ControllerContext
+from ._controller import ACTIVE, FINALIZED, INACTIVE, UNCONFIGURED, Controller, ControllerContext, position_limits
 from ._diff_drive import DiffDriveController
 from ._gripper import EffortGripperActionController, GripperActionController
 from ._hardware import ControlError, SimHardware, UpdateFailed
@@ -490,6 +490,7 @@ class ControllerManager(System):
             description_joints=tuple(j.name for j in ctx.entity.model.joints if j.type is not JointType.FIXED)
             if ctx.entity.model.urdf
             else None,
+            position_limits=position_limits(ctx.entity.model.joints),
         )
         controller = cls(name, self.controller_params(name), cctx)
         self.controllers[name] = _Loaded(controller, type_name)

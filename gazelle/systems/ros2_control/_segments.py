@@ -35,6 +35,15 @@ class _Segmented:
     eff: list[list[float] | None] | None = None
     """Per point, the efforts (N·m or N) when every point of the trajectory has them (None for the state
     before it, which has none); None otherwise."""
+    first: int = 0
+    """Where the message's first point is in :attr:`times`: 1 when the state before the trajectory came first
+    (the first segment runs from it), 0 when the trajectory was sampled between its own points from the start."""
+
+    def on_first_segment(self, t: float) -> bool:
+        """Whether sim time ``t`` is on the segment from the state before the trajectory to its first point
+        (Jazzy's ``sample()`` interpolating from ``state_before_traj_msg_``): the controller is still on its
+        way to, or waiting for, the trajectory's first point."""
+        return self.first == 1 and t < self.times[1]
 
     def effort(self, t: float) -> list[float]:
         """The efforts at sim time ``t``, linear between two points as trajectory.cpp's

@@ -2,13 +2,17 @@
 
 * Trajectories come from the ``~/follow_joint_trajectory`` action (served by the ROS layer through
   :class:`TrajectoryGoal`) or the ``~/joint_trajectory`` topic; a new one replaces the one running.
-* The first segment starts from the joints' state when the trajectory starts. Between points it
-  interpolates as ``interpolation_method: splines`` does: linear with positions only, cubic with
+* The first segment starts from the joints' state when the trajectory starts (one that replaces a trajectory still
+  on its own first segment, waiting for a point ahead, starts from that segment's desired state: see
+  ``_state_before``); a header stamp in the future makes that segment end there, so the arm holds meanwhile.
+  Between points it interpolates as ``interpolation_method: splines`` does: linear with positions only, cubic with
   velocities, quintic with accelerations. After the last point it holds the last positions.
 * Each cycle at time ``t`` commands the trajectory's sample at ``t + 1/update_rate`` (the set point the
   joints should have reached by the next cycle) and measures its errors, path and goal tolerances against
   the sample at ``t``, as Jazzy's controller does since ros2_controllers 4.17 (``update()``:
   ``command_next_`` sampled at ``traj_time_ + update_period_``, ``state_desired_`` at ``traj_time_``).
+* Position commands are clamped to the joints' position limits (the URDF's ``<limit lower upper>``), as
+  ros2_control's joint limiter would with ``enforce_command_limits``; a trajectory past them is warned about once.
 * Command interfaces ``position`` (+ ``velocity``, + ``acceleration``), ``velocity`` or ``effort``;
   the last two close the loop with ``gains.<joint>.{p,i,d,ff_velocity_scale}``.
 * ``constraints``: ``stopped_velocity_tolerance``, ``goal_time``, ``<joint>.trajectory`` (path) and
@@ -157,6 +161,9 @@ class JointTrajectoryController(Controller):
         self._last: tuple | None = None
         self._commanded: tuple[float, list[float], list[float]] | None = None
         """(cycle time, positions, velocities) last commanded: Jazzy's last_commanded_time_/_state_."""
+        limits = [self.ctx.position_limits.get(j, (-math.inf, math.inf)) for j in self.joints]
+        self._lower, self._upper = [lo for lo, _ in limits], [hi for _, hi in limits]
+        self._limited = any(math.isfinite(v) for v in (*self._lower, *self._upper))
         self._pos_keys = [f"{j}/position" for j in self.joints]
         self._vel_keys = [f"{j}/velocity" for j in self.joints]
         self._out_keys = [f"{j}/{self.cmd_kinds[0]}" for j in self.joints]
@@ -384,10 +391,7 @@ class JointTrajectoryController(Controller):
         index = {j: i for i, j in enumerate(traj.joint_names)}
         base = self._hold if self._hold is not None else actual
         n = len(self.joints)
-        if self.from_desired and self._commanded is not None:
-            before_t, before_p, before_v = self._commanded
-        else:
-            before_t, before_p, before_v = t, list(actual), list(actual_v)
+        before_t, before_p, before_v = self._state_before(old, t, actual, actual_v)
         times: list[float] = []
         pos: list[list[float]] = []
         vel: list[list[float]] = []
@@ -404,17 +408,60 @@ class JointTrajectoryController(Controller):
             pos.append([p.positions[index[j]] if j in index else base[k] for k, j in enumerate(self.joints)])
             vel.append([p.velocities[index[j]] if j in index and have_vel else 0.0 for j in self.joints])
             acc.append([p.accelerations[index[j]] if j in index and have_acc else 0.0 for j in self.joints])
+        if self._limited:
+            self._warn_outside_limits(pos[len(pos) - len(traj.points) :])
         path_tol = None
         if goal is not None:
             tols = [goal.path_tolerance.get(j, self.path_tol[j]) for j in self.joints]
             if any(tol.position > 0 or tol.velocity > 0 for tol in tols):
                 path_tol = tols
         self._traj = _Segmented(
-            times, pos, vel if have_vel else None, acc if have_acc else None, goal, path_tol, eff if have_eff else None
+            times,
+            pos,
+            vel if have_vel else None,
+            acc if have_acc else None,
+            goal,
+            path_tol,
+            eff if have_eff else None,
+            first=len(times) - len(traj.points),
         )
         self._hold, self._hold_effort, self._ended = pos[-1], None, None
         if goal is not None:
             goal.status = GoalState.EXECUTING
+
+    def _warn_outside_limits(self, points: list[list[float]]) -> None:
+        """One warning for a trajectory that puts a joint outside its position limits (the first such point and
+        joint): its position commands are clamped to them (see :meth:`_write`)."""
+        for i, row in enumerate(points):
+            for j, p, lo, hi in zip(self.joints, row, self._lower, self._upper, strict=True):
+                if not lo <= p <= hi:
+                    self.log.warning(
+                        f"{self.name}: trajectory point {i} puts {j} at {p:.6g}, outside its limits "
+                        f"[{lo:.6g}, {hi:.6g}]: its position commands are clamped to them"
+                    )
+                    return
+
+    def _state_before(
+        self, old: _Segmented | None, t: float, actual: list[float], actual_v: Sequence[float]
+    ) -> tuple[float, list[float], list[float]]:
+        """(time, positions, velocities) a new trajectory's first segment starts from.
+
+        Jazzy's ``update()`` sets the point before the trajectory from the state interfaces (``state_current_``),
+        or, with ``interpolate_from_desired_state``, from the state last commanded and its cycle's time. One
+        case differs, and says why: a trajectory that replaces one the controller is still on the first segment
+        of (on its way to, or waiting for, its first point: a header stamp in the future, a single point ahead)
+        starts from that segment's desired state now, as the replaced one never reached its own points. On the
+        mock hardware MoveIt's configurations run, the state interfaces mirror the commands, so upstream does
+        the same there; on gazelle's simulated servos the measured state lags the command, and a stream of such
+        replacements at the controller's rate (MoveIt Servo stamping wall-clock time against a sim-time
+        controller, a teleop stream of single points) restarting each cycle from the measured position and
+        velocity fed the servo's lag back into its own command: the Panda drifted past its joint limits."""
+        if old is not None and old.on_first_segment(t):
+            p, v, _a = old.sample(t)
+            return t, p, v
+        if self.from_desired and self._commanded is not None:
+            return self._commanded
+        return t, list(actual), list(actual_v)
 
     def _intake(self, t: float, actual: list[float], actual_v: Sequence[float]) -> _Segmented | None:
         """Start a trajectory that came in since the last cycle; stop one canceled from outside."""
@@ -481,7 +528,7 @@ class JointTrajectoryController(Controller):
             hold = np.asarray(self._hold, dtype=np.float64)
             des_p = np.repeat(hold[None, :], m, axis=0)
             zeros = np.zeros_like(des_p)
-            return TrajectoryBlock(times, des_p, zeros, zeros.copy(), des_p, zeros, None)
+            return TrajectoryBlock(times, des_p, zeros, zeros.copy(), self._clamped(des_p), zeros, None)
         if traj.goal is not None:
             m = int(np.searchsorted(times, traj.times[-1], side="left"))
             if m == 0:
@@ -489,6 +536,7 @@ class JointTrajectoryController(Controller):
             times = times[:m]
         des_p, des_v, des_a = traj.sample_many(times)
         cmd_p, cmd_v, _cmd_a = traj.sample_many(times + self._lead)  # as update(): the next cycle's set point
+        cmd_p = self._clamped(cmd_p)
         tolerances = None
         if traj.goal is not None and traj.path_tolerance is not None:
             tolerances = {
@@ -496,6 +544,12 @@ class JointTrajectoryController(Controller):
                 for k, (j, tol) in enumerate(zip(self.joints, traj.path_tolerance, strict=True))
             }
         return TrajectoryBlock(times, des_p, des_v, des_a, cmd_p, cmd_v, tolerances)
+
+    def _clamped(self, positions: np.ndarray) -> np.ndarray:
+        """Planned position commands (rows: cycles) within the joints' limits, as :meth:`_write` clamps them."""
+        if not self._limited:
+            return positions
+        return np.minimum(np.maximum(positions, np.asarray(self._lower)), np.asarray(self._upper))
 
     def interrupted(self) -> bool:
         """Whether a planned block must end for this controller: a new trajectory came in, or the running
@@ -568,12 +622,19 @@ class JointTrajectoryController(Controller):
     ) -> None:
         """The commands of one cycle from the set point ``des_p``, ``des_v`` (the next cycle's sample) and the
         errors at this one: with position interfaces, the set point's positions (and velocities, when
-        claimed), which the simulated hardware's servos follow; with velocity or effort interfaces,
+        claimed), which the simulated hardware's servos follow, each clamped to its joint's position limits
+        (the description's ``<limit lower upper>``: what ros2_control's joint limiter, ``joint_limits``'
+        ``compute_position_limits``, saturates a position command to when the manager's
+        ``enforce_command_limits`` is on; gazelle's trajectory controller always does, so no trajectory sent
+        to it commands a joint past its range; the limiter's narrowing by the velocity limit is not applied);
+        with velocity or effort interfaces,
         ``ff_velocity_scale·v_next + p·e + i·∫e + d·ė`` per joint, as the real controller's PID, plus, on an
         effort interface, the trajectory's ``effort`` at the next cycle (Jazzy's ``update()`` adds
         ``command_next_.effort`` when it has an effort command interface)."""
         kinds = self.cmd_kinds
         if kinds[0] == "position":
+            if self._limited:
+                des_p = [min(max(p, lo), hi) for p, lo, hi in zip(des_p, self._lower, self._upper, strict=True)]
             commands.update(zip(self._out_keys, des_p))
             if self._write_velocity:
                 commands.update(zip(self._vel_keys, des_v))
