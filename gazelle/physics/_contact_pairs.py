@@ -33,6 +33,7 @@ shapes (box, mesh, ellipsoid, cone), and ``mu ≠ mu2`` without ``<fdir1>`` (ODE
 
 from __future__ import annotations
 
+import logging
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -41,6 +42,8 @@ import mujoco
 import numpy as np
 
 from ..description import Capsule, Collision, Cylinder, Sphere, Surface, Vec3
+
+_log = logging.getLogger("gazelle.physics")
 
 PROXY_SUFFIX = "#contact"
 """Name suffix of a proxy geom (its collision's geom name + this): contacts of it are the collision's."""
@@ -57,6 +60,10 @@ MIN_FRICTION_RATIO = 0.01
 regularizes the second tangent by (mu1 / mu2)² (``mj_makeImpedance``): a wheel's mu2 = 0 across (MuJoCo's floor,
 1e-5, against 1 along) made its contact force grow without bound (5 kN in 4 steps), 1e-4 still did on a turn;
 1e-2 is stable and leaves 1 % of the sideways grip (the skid-steer test turns 99.8 % of its odometry's claim)."""
+MAX_FRICTION_PAIRS = 4096
+"""The most pairs :func:`sync_contact_pairs` makes (MuJoCo tests every pair at every step; a robot's wheels on one
+ground make 2 each). Past it, the remaining collisions keep their isotropic contact with a plane, and a warning
+says how many (a world of thousands of planes, or of thousands of anisotropic wheels, still steps)."""
 SDF_DEFAULT_MU = 1.0
 """SDFormat's ``<mu>`` and ``<mu2>`` when left out (``sdf/1.x/friction.sdf``)."""
 
@@ -156,24 +163,34 @@ def sync_contact_pairs(spec: mujoco.MjSpec, proxies: dict[str, ContactProxy]) ->
     for gone in [name for name, p in proxies.items() if name not in geoms or p.original not in geoms]:
         del proxies[gone]
     planes = [g for g in geoms.values() if g.type == mujoco.mjtGeom.mjGEOM_PLANE]
+    made = left_out = 0
     for p in proxies.values():
         original = geoms[p.original]
-        for plane in planes:
-            if plane.name.startswith(p.entity_prefix) or not _may_touch(original, plane):
-                continue
+        touched = [g for g in planes if not g.name.startswith(p.entity_prefix) and _may_touch(original, g)]
+        per_plane = 1 if p.proxy == p.original else 2
+        if made + per_plane * len(touched) > MAX_FRICTION_PAIRS:
+            left_out += 1
+            continue
+        made += per_plane * len(touched)
+        for plane in touched:
             spec.add_pair(
                 name=f"{PAIR_PREFIX}{p.proxy}|{plane.name}",
                 geomname1=p.proxy,
                 geomname2=plane.name,
                 **_pair_parameters(p, original, plane),
             )
-            if p.proxy != p.original:
+            if per_plane == 2:
                 spec.add_pair(
                     name=f"{PAIR_PREFIX}{p.original}|{plane.name}",
                     geomname1=p.original,
                     geomname2=plane.name,
                     margin=NO_CONTACT_MARGIN,
                 )
+    if left_out:
+        _log.warning(
+            f"{left_out} collision(s) with anisotropic friction keep isotropic contacts with the planes: the world "
+            f"has more than {MAX_FRICTION_PAIRS} such contact pairs (see docs/contact_parameters.md)"
+        )
 
 
 def _may_touch(a: mujoco.MjsGeom, b: mujoco.MjsGeom) -> bool:

@@ -154,3 +154,22 @@ def test_the_wheels_pairs_follow_the_planes_and_robots_that_come_and_go(make_sim
     assert sim.world.entity_state("skid").pose.position[2] == pytest.approx(-0.5 + RADIUS, abs=0.005)
     sim.delete("skid")
     assert sim.world.model.npair == 0
+
+
+def test_past_the_pair_budget_the_remaining_wheels_keep_isotropic_ground_contacts_and_a_warning_says_so(
+    make_sim, monkeypatch, caplog
+):
+    """MuJoCo tests every pair at every step: a world of thousands of planes or anisotropic wheels must not make
+    millions. With a budget of 4 pairs, two wheels get theirs (2 each), the other two touch the ground as before."""
+    import logging
+
+    from gazelle.physics import _contact_pairs
+
+    monkeypatch.setattr(_contact_pairs, "MAX_FRICTION_PAIRS", 4)
+    sim = make_sim()
+    with caplog.at_level(logging.WARNING, logger="gazelle.physics"):
+        sim.spawn(load_string(skid_steer_urdf(BLOB)).model, name="skid", pose=Pose((0.0, 0.0, RADIUS + 0.005)))
+    assert sim.world.model.npair == 4
+    assert "2 collision(s) with anisotropic friction keep isotropic contacts with the planes" in caplog.text
+    sim.step(300)
+    assert sim.world.entity_state("skid").pose.position[2] == pytest.approx(RADIUS, abs=0.005)  # on all four
