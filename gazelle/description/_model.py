@@ -129,7 +129,9 @@ class Surface:
     mu2: float | None = None
     """Friction in the second direction (SDF ode/mu2, URDF gazebo mu2)."""
     fdir1: Vec3 | None = None
-    """First friction direction (ODE); not simulated: MuJoCo's friction is isotropic here, a warning names it."""
+    """ODE's first friction direction (``mu`` along it, ``mu2`` across), in the collision's frame; applied to a moving
+    cylinder, sphere or capsule's contacts with planes (gazelle/physics/_contact_pairs.py), elsewhere friction is
+    isotropic and a warning names it. ``0 0 0`` is no direction, as in Gazebo."""
     slip1: float | None = None
     """ODE's force-dependent slip in the first direction; not simulated (warned about)."""
     slip2: float | None = None

@@ -29,14 +29,15 @@ Classic and gz-sim use):
 * **``<gazebo>`` blocks.** The tags sdformat converts (``mu1``, ``mu2``, ``kp``, ``kd``, ``fdir1``,
   ``maxVel``, ``minDepth``, ``selfCollide``, ``turnGravityOff``) are applied from the tables below, as are
   the SDF elements sdformat copies into the link verbatim (``gravity``, ``kinematic``, ``material``,
-  ``sensor``, ``plugin``). The rest (``dampingFactor``, ``maxContacts``, ``laserRetro``, the joint tags
+  ``sensor``, ``plugin``) and into each of its collisions (``<collision><surface>``, before the short
+  forms). The rest (``dampingFactor``, ``maxContacts``, ``laserRetro``, the joint tags
   ``stopCfm``/``stopErp``/``springStiffness``/...) are kept in :attr:`Model.gazebo` and named in a
   warning: nothing a user wrote is dropped silently.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields, replace
 
 from lxml import etree
 
@@ -44,6 +45,8 @@ from ._diagnostics import DiagnosticSink, ErrorCode
 from ._model import GazeboExtension, JointType, Material, Model, Plugin, Sensor
 from ._pose import Pose
 from ._resources import ResourceResolver
+from ._sdf_parts import _Parts
+from ._sdf_reader import IGNORED, MAX_VERSION, _Doc
 from ._semantic_model import ControlComponent, ControlInterface, Ros2Control
 from ._urdf_checks import (
     check_attributes,
@@ -190,9 +193,18 @@ class _Reader(ElementReader):
                 self.unsupported(child, f"<{tag}> in <gazebo>")
 
     def apply_link_gazebo(self, element: etree._Element, link: LinkDraft, doc: UrdfDocument) -> None:
-        """``<gazebo reference=link>``: surface, flags, material, sensors and plugins."""
+        """``<gazebo reference=link>``: surface, flags, material, sensors and plugins.
+
+        The block's ``<collision>`` children are applied first, then its short forms (``<mu1>`` ...), whatever
+        their order in the block: sdformat's ``InsertSDFExtensionCollision`` inserts a block's collision blobs
+        into the link's collisions and then writes the short forms over them."""
+        for child in child_elements(element):
+            if local_name(child) == "collision":
+                self.apply_collision_blob(child, link)
         for child in child_elements(element):
             tag = local_name(child)
+            if tag == "collision":
+                continue
             if tag in _SURFACE_TAGS:
                 field_name, count = _SURFACE_TAGS[tag]
                 text = gazebo_value(child)
@@ -220,6 +232,22 @@ class _Reader(ElementReader):
                     doc.plugins.append(plugin)
             else:
                 self.unsupported(child, f'<{tag}> in <gazebo reference="{link.name}">')
+
+    def apply_collision_blob(self, element: etree._Element, link: LinkDraft) -> None:
+        """``<gazebo reference=link><collision>``: what it holds goes into every collision of the link, as sdformat's
+        URDF conversion (``parser_urdf.cc``, ``collision_blobs``) copies it. Its ``<surface>`` is read as an SDF
+        collision's (friction ``<ode><mu>/<mu2>/<fdir1>``, torsional, contact ``<kp>``/``<kd>``, the bitmask, ...)
+        and, like sdformat's copy, replaces the surface the link's earlier blocks gave (a later block's short forms
+        still apply on top). ``<laser_retro>`` and ``<max_contacts>`` are read silently as an SDF collision's are;
+        anything else would be a second ``<pose>`` or ``<geometry>`` of the collision, and is warned about."""
+        sdf, sdf_doc = _Parts(self.sink, self.resolver), _Doc(self.source, None, MAX_VERSION, False)
+        for child in child_elements(element):
+            tag = local_name(child)
+            if tag == "surface":
+                surface = sdf.surface(child, sdf_doc)
+                link.surface = {f.name: v for f in fields(surface) if (v := getattr(surface, f.name)) is not None}
+            elif tag not in IGNORED["collision"]:
+                self.unsupported(child, f'<{tag}> in <gazebo reference="{link.name}"><collision>')
 
     # ---- top level
     def document(self, root: etree._Element) -> UrdfDocument | None:

@@ -69,6 +69,7 @@ from ._builder import (
     scoped,
     unsimulated_surface_parameters,
 )
+from ._contact_pairs import add_contact_proxy
 
 _log = logging.getLogger("gazelle.physics")
 
@@ -382,19 +383,24 @@ class _ModelTree:
             (v.material.diffuse for v in link.visuals if v.material is not None and v.material.diffuse is not None),
             None,
         )
+        moving = not self.model.static
         for i, col in enumerate(link.collisions):
+            name = scoped(self.entity, f"{link.name}::{col.name or 'collision'}#{i}")
             add_geom(
                 self.spec,
                 body,
                 col,
-                scoped(self.entity, f"{link.name}::{col.name or 'collision'}#{i}"),
+                name,
                 mass_hint,
                 self.decomposed,
                 group=COLLISION_GROUP if visuals else SHOWN_COLLISION_GROUP,
                 rgba=None if visuals else colour,
-                moving=not self.model.static,
+                moving=moving,
             )
-            for param in unsimulated_surface_parameters(col):
+            proxy = add_contact_proxy(body, col, name, scoped(self.entity, "")) if moving else None
+            if proxy is not None:
+                self.built.contact_proxies.append(proxy)
+            for param in unsimulated_surface_parameters(col, anisotropic=proxy is not None):
                 self.ignored.setdefault(param, []).append(f"{link.name}/{col.name}")
 
 

@@ -34,6 +34,7 @@ from ..description import (
     load_mesh,
     load_mesh_look,
 )
+from ._contact_pairs import ContactProxy, anisotropic_friction
 from ._convex import collision_parts
 
 _log = logging.getLogger("gazelle.physics")
@@ -80,6 +81,8 @@ class BuiltEntity:
     """Non-convex collision meshes split into convex parts: (file, parts, seconds, where from)."""
     visuals: bool = False
     """Whether its visual shapes are in the model (see :func:`add_visuals`)."""
+    contact_proxies: list[ContactProxy] = field(default_factory=list)
+    """Its collisions with anisotropic friction on planes (see ``_contact_pairs``)."""
 
 
 def friction_priority(mu: float) -> int:
@@ -94,9 +97,10 @@ def friction_priority(mu: float) -> int:
 
 def _surface_friction(col: Collision) -> list[float]:
     """MuJoCo's friction triple (sliding, torsional, rolling) of a collision: sliding is ODE's ``<mu>`` (1 by
-    default, as SDF's), or the smaller of ``<mu>`` and ``<mu2>`` when both are given, since MuJoCo's sliding
-    friction is isotropic; torsional is ``<torsional><coefficient>`` (a small default keeps a wheel from spinning
-    in place on a point contact); a frictionless surface gets none of the three."""
+    default, as SDF's), or the smaller of ``<mu>`` and ``<mu2>`` when both are given, since a MuJoCo geom's sliding
+    friction is isotropic (anisotropic contacts with planes are pairs: ``_contact_pairs``); torsional is
+    ``<torsional><coefficient>`` (a small default keeps a wheel from spinning in place on a point contact); a
+    frictionless surface gets none of the three."""
     s = col.surface
     mu = s.mu if s.mu is not None else 1.0
     if s.mu2 is not None:
@@ -400,7 +404,7 @@ DEFAULT_COLLIDE_BITMASK = 0xFFFF
 """Gazebo's default ``collide_bitmask``."""
 
 _NOT_SIMULATED = {
-    "fdir1": "fdir1",
+    "fdir1": "fdir1",  # where no contact proxy applies it (see unsimulated_surface_parameters)
     "slip1": "slip1",
     "slip2": "slip2",
     "kd": "kd",
@@ -418,9 +422,13 @@ _NOT_SIMULATED = {
 """Surface fields gazelle does not apply: field name -> the SDF element a warning names."""
 
 
-def unsimulated_surface_parameters(col: Collision) -> list[str]:
-    """The contact parameters a collision sets that gazelle does not honour (see docs/contact_parameters.md)."""
-    return [element for field, element in _NOT_SIMULATED.items() if getattr(col.surface, field) is not None]
+def unsimulated_surface_parameters(col: Collision, *, anisotropic: bool = False) -> list[str]:
+    """The contact parameters a collision sets that gazelle does not honour (see docs/contact_parameters.md).
+    ``<fdir1>`` counts only where it matters (``mu`` ≠ ``mu2``) and is not applied (``anisotropic`` False: no
+    contact proxy, see ``_contact_pairs``)."""
+    skip = "fdir1" if anisotropic or anisotropic_friction(col.surface) is None else ""
+    given = {field for field in _NOT_SIMULATED if field != skip and getattr(col.surface, field) is not None}
+    return [element for field, element in _NOT_SIMULATED.items() if field in given]
 
 
 def _load_mesh(path: str) -> tuple[np.ndarray, np.ndarray]:

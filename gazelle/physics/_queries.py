@@ -14,6 +14,7 @@ import numpy as np
 
 from ..description import Pose, rotation_matrix
 from ._builder import SEP, scoped
+from ._contact_pairs import PROXY_SUFFIX
 from ._entities import WORLD_FRAMES, Entity, EntityState, ErrorKind, WorldError
 
 ONE_DOF_JOINTS = (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
@@ -56,7 +57,9 @@ def _vec3(v: Sequence[float] | np.ndarray) -> tuple[float, float, float]:
 
 
 def _gazebo_collision_name(geom_name: str) -> str:
-    """``entity::link::collision#i`` (MuJoCo) -> ``entity::link::collision`` (Gazebo)."""
+    """``entity::link::collision#i`` (MuJoCo; its anisotropic-friction proxy ``...#i#contact``) ->
+    ``entity::link::collision`` (Gazebo)."""
+    geom_name = geom_name.removesuffix(PROXY_SUFFIX)
     return geom_name.rsplit("#", 1)[0] if "#" in geom_name else geom_name
 
 

@@ -32,6 +32,7 @@ from ._builder import (
     friction_priority,
     scoped,
 )
+from ._contact_pairs import POINT_HALF_LENGTH, PROXY_SUFFIX, ContactProxy, sync_contact_pairs
 from ._convex import cache_dir
 from ._entities import (
     Entity,
@@ -122,6 +123,8 @@ class PhysicsWorld(WorldState):
         """(qpos addresses, dof addresses) of the hinge/slide dofs above kinematic links; False = not indexed yet."""
         self._servo_plans: list[ServoPlan] = []
         """Planned servo cycles the steps run (see :meth:`add_servo_plan`)."""
+        self._contact_proxies: dict[str, ContactProxy] = {}
+        """Proxy geom -> the collision with anisotropic friction it stands for on planes (see ``_contact_pairs``)."""
         self.model: mujoco.MjModel = self.spec.compile()
         self._timestep = float(self.model.opt.timestep)
         self.data = mujoco.MjData(self.model)
@@ -172,6 +175,7 @@ class PhysicsWorld(WorldState):
                 reason = str(err).strip().splitlines()[0]
 
     def _recompile(self) -> None:
+        sync_contact_pairs(self.spec, self._contact_proxies)  # the anisotropic wheels' pairs with today's planes
         self.model, self.data = self.spec.recompile(self.model, self.data)
         self.generation += 1
         self._held = False  # re-indexed at the next step, once ``entities`` matches the model
@@ -207,6 +211,7 @@ class PhysicsWorld(WorldState):
         except Exception as err:
             self._remove_elements(name)
             raise build_failed(name, err) from None
+        self._contact_proxies.update((p.proxy, p) for p in built.contact_proxies)
         return Entity(name, model, namespace, X_WM, built, spawned)
 
     def discard(self, entity: Entity) -> None:
@@ -444,15 +449,18 @@ class PhysicsWorld(WorldState):
         in place scrubs its wheels sideways: we measured the seed robot turning 1.5 %
         slower than (v_r - v_l)/separation. An ellipsoid with semi-axes (r, r, width/2)
         rolls exactly like the cylinder but touches at one point, the centre of a real
-        tyre's contact patch. Call from ``configure`` (before the recompile).
-        Returns how many geoms were changed.
+        tyre's contact patch. The capsule standing in for a wheel with anisotropic friction on planes
+        (``_contact_pairs``) becomes a point at its centre too. Call from ``configure`` (before the
+        recompile). Returns how many geoms were changed.
         """
         body = self.spec.body(scoped(entity.name, link))
         if body is None:
             return 0
         changed = 0
         for geom in body.geoms:
-            if geom.type == mujoco.mjtGeom.mjGEOM_CYLINDER:
+            if geom.type == mujoco.mjtGeom.mjGEOM_CAPSULE and geom.name.endswith(PROXY_SUFFIX):
+                geom.size = [float(geom.size[0]), POINT_HALF_LENGTH, 0.0]
+            elif geom.type == mujoco.mjtGeom.mjGEOM_CYLINDER:
                 r, half = float(geom.size[0]), float(geom.size[1])
                 geom.type = mujoco.mjtGeom.mjGEOM_ELLIPSOID
                 geom.size = [r, r, half]

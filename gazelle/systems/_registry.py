@@ -228,13 +228,18 @@ def plan_sensors(
     """Which sensors of ``model`` run, and a warning naming each one that does not and why.
 
     A sensor runs through a gazebo_ros plugin inside it, or, without one and in a model that uses no
-    gazebo_ros plugin (a gz-sim model), through the gz-sim world system for its type among
-    ``world_plugins`` (None: not known, e.g. ``gazelle check`` of a model file; then no warning is
-    given for that case).
+    gazebo_ros plugin (a gz-sim model), through the gz-sim system for its type among ``world_plugins``
+    (None: not known, e.g. ``gazelle check`` of a model file; then no warning is given for that case)
+    or among the model's own plugins. gz-sim loads a ``<plugin>`` of a model as it does one of the world
+    (gz-sim8 ``SdfEntityCreator::LoadModelPlugins`` -> ``SimulationRunner::LoadPlugins`` ->
+    ``SystemManager::LoadPlugin``, the model as its entity), and its sensor systems ignore that entity
+    (``Sensors::Configure``, ``ImuPrivate::CreateSensors`` take every sensor of their type), so a robot that
+    carries ``gz-sim-sensors-system`` runs its sensors in a world without one. (In gz-sim such a system
+    runs the other models' sensors too; here it runs its own model's.)
     """
     sensor_plugins, gz_world_systems = _sensor_tables()
     gz_types: dict[str, Callable[[], System]] = {}
-    for wp in world_plugins or ():
+    for wp in (*(world_plugins or ()), *model.plugins):
         for key in (normalised(wp.filename), normalised(wp.name)):
             gz_types.update(gz_world_systems.get(key, {}))
     plans: list[SensorPlan] = []
@@ -373,6 +378,8 @@ def _did_you_mean(plugin: Plugin) -> str:
         key = normalised(raw)
         scored = []
         for name in names:
+            if name == key:
+                continue  # the name it already has: the reason it is refused is not a typo
             whole = SequenceMatcher(None, key, name).ratio()
             core = SequenceMatcher(None, _core(key), _core(name)).ratio()
             if whole >= 0.8 and core >= 0.7:
@@ -397,8 +404,8 @@ def plugin_problem(plugin: Plugin, *, world: bool = False) -> str | None:
         return None
     label = f"{'world ' if world else ''}plugin '{plugin.name}' ({plugin.filename})"
     sensor_plugins, gz_world_systems = _sensor_tables()
-    if world and {key_f, key_n} & set(gz_world_systems):
-        return None
+    if {key_f, key_n} & set(gz_world_systems):
+        return None  # a world's or a model's (gz-sim loads both; :func:`plan_sensors` runs its sensors)
     if {key_f, key_n} & set(sensor_plugins):
         return f"{label} is ignored: a sensor plugin works only inside the <sensor> it publishes"
     why = _NOT_YET.get(key_f) or _NOT_YET.get(key_n)

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from gazelle.description import Cone, ErrorCode, Pose, load, load_string
+from gazelle.description import Cone, ErrorCode, ModelLoadError, Pose, load, load_string
 
 
 def test_gazebo_extension_values_may_be_attributes() -> None:
@@ -185,3 +185,44 @@ def test_a_cached_fuel_model_without_a_model_is_a_clear_error(monkeypatch, tmp_p
     monkeypatch.setenv("GZ_FUEL_CACHE_PATH", str(cache))
     with pytest.raises(ModelLoadError, match=r"holds no <model>"):
         load_string(_fuel_world("someone/models/Empty Thing"))
+
+
+def test_a_collision_block_is_applied_to_every_collision_of_its_link_then_the_short_forms_over_it():
+    """sdformat's parser_urdf.cc: a <gazebo reference> block's <collision> children go into each collision of the
+    link (a <surface> replacing what earlier blocks gave), then that block's short forms are written over them."""
+    urdf = """<?xml version="1.0"?><robot name="r">
+  <link name="w"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><geometry><cylinder radius="0.1" length="0.05"/></geometry></collision>
+    <collision><origin xyz="0 0 0.1"/><geometry><sphere radius="0.05"/></geometry></collision></link>
+  <gazebo reference="w"><kp>1e5</kp></gazebo>
+  <gazebo reference="w">
+    <mu2>0.25</mu2>
+    <collision>
+      <laser_retro>100</laser_retro>
+      <surface><friction><ode><mu>0.8</mu><mu2>0.5</mu2><fdir1>0 0 1</fdir1></ode></friction>
+        <contact><collide_bitmask>0x03</collide_bitmask></contact></surface>
+      <geometry><box><size>1 1 1</size></box></geometry>
+    </collision>
+  </gazebo>
+</robot>"""
+    result = load_string(urdf)
+    surfaces = [c.surface for c in result.model.links[0].collisions]
+    assert len(surfaces) == 2 and surfaces[0] == surfaces[1]
+    s = surfaces[0]
+    # the block's <surface> replaced the first block's kp; its own <mu2> short form went over the surface's
+    assert (s.mu, s.mu2, s.fdir1, s.collide_bitmask, s.kp) == (0.8, 0.25, (0.0, 0.0, 1.0), 3, None)
+    assert [d.format() for d in result.diagnostics] == [
+        '<string>.urdf:12: warning: [ELEMENT_UNSUPPORTED] <geometry> in <gazebo reference="w"><collision> is not '
+        "supported and is ignored"
+    ]
+
+
+def test_a_bad_value_in_a_collision_block_is_an_error_at_its_line():
+    urdf = """<?xml version="1.0"?><robot name="r">
+  <link name="w"><collision><geometry><sphere radius="0.05"/></geometry></collision></link>
+  <gazebo reference="w"><collision><surface><friction><ode>
+    <mu>QQQ</mu></ode></friction></surface></collision></gazebo>
+</robot>"""
+    with pytest.raises(ModelLoadError) as err:
+        load_string(urdf)
+    assert "<string>.urdf:4: error: [VALUE_INVALID] <mu> must be a number, got 'QQQ'" in str(err.value)
