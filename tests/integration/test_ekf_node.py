@@ -267,12 +267,13 @@ def test_a_launch_files_remapping_puts_the_filtered_odometry_on_odom(ros_client,
     ("args", "said"),
     [
         (["-p", "frequency:=0.0"], "parameter 'frequency' must be a positive number of Hz, not 0.0"),
-        (["-p", "odom0:=odom", "-p", "odom0_config:=[true, false]"], "parameter 'odom0_config' must have 15 booleans"),
+        (
+            ["-p", "odom0:=odom", "-p", "odom0_config:=[true, false]"],
+            "parameter 'odom0_config' must have 15 booleans, not 2",
+        ),
     ],
 )
 def test_a_parameter_it_cannot_use_is_one_line_naming_it(args, said):
     proc = start([ROS2, "run", "robot_localization", "ekf_node", "--ros-args", *args], "ekf_node")
     assert proc.wait(30) == 1
-    assert [line for line in proc.lines if line.strip()] == [f"[ERROR] [ekf_filter_node]: {said}"] or (
-        said in proc.output and "Traceback" not in proc.output
-    ), proc.output
+    assert [line for line in proc.lines if line.strip()] == [f"[ERROR] [ekf_filter_node]: {said}"], proc.output
