@@ -52,6 +52,13 @@ def servo_main(argv: list[str]) -> int:
     return main(argv)
 
 
+def ekf_main(argv: list[str]) -> int:
+    """robot_localization's ``ekf_node`` (compat/ros_packages/robot_localization), on gazelle.estimation."""
+    from ._ekf_node import main
+
+    return main(argv)
+
+
 def arm_main(argv: list[str]) -> int:
     """``gazelle arm``: move an arm through a running move_group."""
     from ._arm_cli import arm_main as main
@@ -80,6 +87,7 @@ __all__ = [
     "spawn_main",
     "move_group_main",
     "servo_main",
+    "ekf_main",
     "spawner_main",
     "unspawner_main",
     "controller_file_params",

@@ -1,6 +1,6 @@
 """The layers import one way (docs/architecture.md), checked by walking every import with ``ast``.
 
-description <- physics <- systems <- sim <- ros / viewer <- cli, and description <- planning <- ros. Physics never sees systems, the
+description <- physics <- systems <- sim <- ros / viewer <- cli, description <- planning <- ros, and estimation <- ros. Physics never sees systems, the
 runtime or ROS; systems never touch MuJoCo or the builder; only ``gazelle.ros`` (and the command
 line, which starts it) imports rclpy; and no package reaches into another package's private modules.
 """
@@ -28,14 +28,28 @@ ALLOWED: dict[str, tuple[str, ...]] = {
     # arms: kinematics and collisions of the description on roboplan; served by gazelle.ros
     "planning": ("description",),
     "worlds": ("description",),
-    "ros": ("description", "physics", "systems", "sim", "planning"),
+    # state estimation (robot_localization's EKF) on numpy; served by gazelle.ros's ekf_node
+    "estimation": (),
+    "ros": ("description", "physics", "systems", "sim", "planning", "estimation"),
     "viewer": ("description", "physics", "systems", "sim"),
     # users' robot tests: gazelle's commands as processes, over ROS; in-process, the runtime's public API
     "testing": ("description", "systems", "sim", "worlds"),
     # many in-process runs of a scenario: the runtime without ROS (ROS scenarios run on the robot-test
     # fixtures' server), and the viewer's self-contained replay page for runs that fail
     "sweep": ("description", "sim", "testing", "viewer", "worlds"),
-    "cli": ("description", "physics", "systems", "sim", "planning", "worlds", "ros", "viewer", "testing", "sweep"),
+    "cli": (
+        "description",
+        "physics",
+        "systems",
+        "sim",
+        "planning",
+        "estimation",
+        "worlds",
+        "ros",
+        "viewer",
+        "testing",
+        "sweep",
+    ),
 }
 """Every folder of the gazelle package -> the gazelle packages it may import (an allow-list: a new folder,
 or a new arrow between two, fails until it is declared here and in docs/architecture.md). Every folder may
@@ -320,7 +334,7 @@ def test_the_house_check_finds_a_long_function_a_big_file_and_a_bare_suppression
     assert [p.split(":")[0].split(" ")[0] for p in problems] == ["pkg/bare.py", "pkg/big.py", "pkg/long.py"]
 
 
-WHY_PACKAGES = ("description", "physics", "systems", "sim", "planning", "testing")
+WHY_PACKAGES = ("description", "physics", "systems", "sim", "planning", "estimation", "testing")
 """The packages whose readers need the why (units, frames, which Gazebo behaviour is matched and where it
 differs): the ones that model, simulate, plan and test. ros, viewer, cli and sweep are glue to rclpy, viser,
 typer and Ray whose why lives in these (issue 32's decision, said in the stop-51 note)."""
