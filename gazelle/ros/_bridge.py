@@ -51,6 +51,7 @@ from ._cdr import raw_serializer, serialize_clock, serialized_joint_states
 from ._convert import FROM_ROS, InterfaceMissing, ros_type, second_tier, to_pose_msg, to_ros, to_time
 from ._exposure import ServerRegistry
 from ._gazebo_services import GazeboServices
+from ._inbound import InboundGroup
 from ._names import gz_topic_on_ros
 from ._outbox import Lane, Outbox
 from ._plugin_nodes import PluginNodes
@@ -199,6 +200,8 @@ class SimulationNode(GazeboServices):
         super().__init__(node_name, context=context)
         self.sim = sim
         self._cb = ReentrantCallbackGroup()
+        self._inbound = InboundGroup()
+        """The bus's subscriptions: taken before each requested step (:meth:`take_inbound`)."""
         self._lock = threading.Lock()
         self._pubs: dict[tuple[str, str, str], _RosEndpoint] = {}
         self._subs: dict[int, Any] = {}
@@ -419,11 +422,16 @@ class SimulationNode(GazeboServices):
                 topic,
                 lambda msg: deliver(callback, convert_in(msg)),
                 qos_profile(ep.qos, ep.depth),
-                callback_group=self._cb,
+                callback_group=self._inbound,
                 event_callbacks=_no_sub_events(),
             )
             with self._lock:
                 self._subs[id(ep)] = (sub, owner)
+
+    def take_inbound(self) -> int:
+        """Hand the simulation every message its subscriptions' readers hold now, on this thread (the step
+        services call it before stepping: see :class:`InboundGroup`); returns how many there were."""
+        return self._inbound.drain()
 
     def _publish_static(self, lane: Lane, ep: Endpoint, batch: TransformBatch) -> None:
         """/tf_static keeps one latched message: it must hold every robot's static transforms."""

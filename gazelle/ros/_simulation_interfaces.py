@@ -19,7 +19,9 @@ Decisions (also what :func:`features` advertises, nothing more):
   never by a service request.
 * StepSimulation and SimulateSteps require the simulation to be paused
   (``RESULT_INCORRECT_STATE`` otherwise) and step in chunks, each chunk one
-  ``sim.call``, so other requests are served between chunks.
+  ``sim.call``, so other requests are served between chunks. Before the first chunk, the messages
+  the server's subscriptions had received are handed to the simulation (``_inbound``): a command
+  delivered before the request acts from its first step.
 * Entity categories: ``CATEGORY_STATIC_OBJECT`` for static models (no free
   root), ``CATEGORY_ROBOT`` for dynamic models that have plugins or a movable
   (non-fixed) joint, ``CATEGORY_DYNAMIC_OBJECT`` for the other dynamic models.
@@ -307,9 +309,11 @@ class SimulationInterfaces(EntityQueries):
         return self.sim.call(do)
 
     def step_simulation(self, req: StepSimulation.Request, res: StepSimulation.Response) -> Any:
-        """StepSimulation: take N steps while paused (the reply comes when they are done)."""
+        """StepSimulation: take N steps while paused (the reply comes when they are done). What the server's
+        subscriptions had received when the request came takes effect from the first step (``_inbound``)."""
         try:
             self._check_steps(req.steps)
+            self.node.take_inbound()
             done = 0
             while done < req.steps:
                 taken = self._step_chunk(min(STEP_CHUNK, req.steps - done))
@@ -337,6 +341,7 @@ class SimulationInterfaces(EntityQueries):
             result.result = _result(err.code, str(err))
             goal_handle.abort()
             return result
+        self.node.take_inbound()  # as StepSimulation: what came before the goal acts from its first step
         done = 0
         last_feedback = 0.0
         try:

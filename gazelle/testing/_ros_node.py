@@ -11,23 +11,29 @@ test's assertions should be about, and what ``gazelle_sim.run_for``/``run_until`
     def test_the_robot_drives(gazelle_sim, ros):
         odom = ros.subscribe("/odom", Odometry)
         cmd = ros.publisher("/cmd_vel", TwistStamped)
-        cmd.publish(forward)
+        ros.wait_for_subscribers(cmd)       # the robot's subscription, matched
+        cmd.publish(forward)                # acts from the first step of the next run_for
         gazelle_sim.run_for(2.0)            # sim seconds, in lockstep with the nodes started
         assert odom.last.pose.pose.position.x > 0.5
 """
 
 from __future__ import annotations
 
+import os
 import threading
 import time
 from collections.abc import Callable
+from pathlib import Path
 from typing import Any
 
 import rclpy
 from rclpy.context import Context
+from rclpy.duration import Duration
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from rosgraph_msgs.msg import Clock
+
+from ._domain import environ_applied
 
 __all__ = ["MessageLog", "RosTestNode", "TestTimeout"]
 
@@ -122,6 +128,22 @@ def qos_for(reliable: bool = True, latched: bool = False, depth: int = 1000) -> 
     )
 
 
+WRITER_PROFILE = Path(__file__).with_name("fastdds_test_node.xml")
+"""Fast DDS's settings for the test's node: heartbeats every 5 ms, so acknowledgements come at once."""
+
+
+def _writer_profile() -> dict[str, str]:
+    """The environment that gives this process's Fast DDS participants :data:`WRITER_PROFILE`: nothing when
+    the user set a profile file of their own (each step after a publish may then wait for Fast DDS's 3 s
+    heartbeat) or uses another RMW."""
+    variables = ("FASTRTPS_DEFAULT_PROFILES_FILE", "FASTDDS_DEFAULT_PROFILES_FILE")
+    if any(os.environ.get(v) for v in variables) or not WRITER_PROFILE.is_file():
+        return {}
+    if os.environ.get("RMW_IMPLEMENTATION", "rmw_fastrtps_cpp") not in ("rmw_fastrtps_cpp", "rmw_fastrtps_dynamic_cpp"):
+        return {}
+    return {"FASTRTPS_DEFAULT_PROFILES_FILE": str(WRITER_PROFILE)}
+
+
 class RosTestNode:
     """A plain rclpy node for the test (``ros`` fixture): subscribe, wait, call, all with timeouts.
 
@@ -137,12 +159,16 @@ class RosTestNode:
             name: the node's name in the graph (what ``ros2 node list`` shows).
         """
         self.context = Context()
-        rclpy.init(context=self.context, domain_id=domain_id)
-        self.node = rclpy.create_node(name, context=self.context, start_parameter_services=False)
+        with environ_applied(_writer_profile()):  # read by Fast DDS at the process's first participant
+            rclpy.init(context=self.context, domain_id=domain_id)
+            self.node = rclpy.create_node(name, context=self.context, start_parameter_services=False)
         self._executor = SingleThreadedExecutor(context=self.context)
         self._executor.add_node(self.node)
         self._sim_time = 0.0
         self._clock_cond = threading.Condition()
+        self.recorder: tuple[str, frozenset[str]] | None = None
+        """(node name, topics) of the simulation's bag recorder: :meth:`publisher` waits until it hears a
+        publisher of one of those topics (the harness sets it; None: nothing is recorded)."""
         # reliable, unlike rclpy's TimeSource: a paused server sends no tick after the last one of a step, and
         # the test waits for that one. Best effort lost it beside CPU hogs (1 run in 8 to 12 of
         # test_lossless's stopped-listener test: /clock heard up to 3.13 s while /odom, reliable, came up to
@@ -233,11 +259,68 @@ class RosTestNode:
         """
         return self.subscribe(topic, msg_type, **qos).wait(1, timeout)
 
-    def publisher(self, topic: str, msg_type: Any, *, latched: bool = False) -> Any:
+    def publisher(self, topic: str, msg_type: Any, *, latched: bool = False, timeout: float = 10.0) -> Any:
         """An rclpy publisher on ``topic``: reliable, depth 10, transient local with ``latched`` (what the
-        simulation's subscriptions accept, like ``ros2 topic pub``'s default). Publish before a step: the
-        lockstep after each chunk has the receiving node take it within that chunk."""
-        return self.node.create_publisher(msg_type, topic, qos_for(True, latched, depth=10))
+        simulation's subscriptions accept, like ``ros2 topic pub``'s default).
+
+        What it publishes before ``run_for``/``run_until`` acts from their first step: they wait until every
+        subscriber has acknowledged it, and the server takes what it received before it steps. A topic the
+        failure bag records is returned once the recorder has subscribed to it (at most ``timeout`` wall
+        seconds), so the bag holds the test's first message too. Wait for the receiver before publishing
+        (:meth:`wait_for_subscribers`): a message sent before a subscriber matched is not sent to it."""
+        pub = self.node.create_publisher(msg_type, topic, qos_for(True, latched, depth=10))
+        recorder = self.recorder
+        if recorder is not None and pub.topic_name in recorder[1]:
+            try:
+                self.wait_until(lambda: self._heard_by(pub, {recorder[0]}), timeout, f"the bag recorder on {topic}")
+            except TestTimeout as err:
+                import warnings
+
+                warnings.warn(f"gazelle: {err}: the bag may miss what the test publishes there", stacklevel=2)
+        return pub
+
+    def _heard_by(self, pub: Any, nodes: set[str] | None = None, others: int = 0) -> bool:
+        """Whether ``pub`` has matched every subscription on its topic the graph shows that its QoS can
+        match, among them one of each node in ``nodes`` and ``others`` more of nodes not the harness's own
+        (this node, the recorder)."""
+        reliable = pub.qos_profile.reliability == ReliabilityPolicy.RELIABLE
+        latched = pub.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL
+        infos = [
+            i
+            for i in self.node.get_subscriptions_info_by_topic(pub.topic_name)
+            if (reliable or i.qos_profile.reliability != ReliabilityPolicy.RELIABLE)
+            and (latched or i.qos_profile.durability != DurabilityPolicy.TRANSIENT_LOCAL)
+        ]
+        names = {i.node_name for i in infos}
+        own = {self.node.get_name(), *([self.recorder[0]] if self.recorder else [])}
+        if not (nodes or set()) <= names or sum(i.node_name not in own for i in infos) < others:
+            return False
+        return pub.get_subscription_count() >= len(infos)
+
+    def wait_for_subscribers(self, pub: Any, count: int = 1, timeout: float = 10.0) -> None:
+        """Wait (wall clock) until ``count`` subscribers besides the harness's own (this node, the bag
+        recorder) are on ``pub``'s topic and ``pub`` has matched every one it can: what it publishes from
+        then on reaches them (a reliable publisher sends nothing to a subscriber it has not yet matched).
+
+        Raises:
+            TestTimeout: not within ``timeout``.
+        """
+        what = f"{count} subscriber(s) of {pub.topic_name}"
+        self.wait_until(lambda: self._heard_by(pub, others=count), timeout, what)
+
+    def wait_for_acks(self, timeout: float) -> list[str]:
+        """Wait until every message this node's reliable publishers sent has been acknowledged by each
+        subscriber they matched (in its reader's history: taken or not); returns the topics that were not
+        within ``timeout`` wall seconds in all (a subscriber that died, before DDS noticed)."""
+        deadline = time.monotonic() + timeout
+        late = []
+        for pub in list(self.node.publishers):
+            if pub.qos_profile.reliability != ReliabilityPolicy.RELIABLE:
+                continue
+            left = max(0.0, deadline - time.monotonic())
+            if not pub.wait_for_all_acked(Duration(nanoseconds=int(left * 1e9))):
+                late.append(pub.topic_name)
+        return late
 
     # ------------------------------------------------------------------ services
     def wait_for_service(self, name: str, srv_type: Any, timeout: float = 10.0) -> Any:

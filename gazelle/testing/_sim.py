@@ -26,6 +26,8 @@ __all__ = ["ChildProcess", "Sim", "SimError"]
 _READY = re.compile(r"gazelle: ready: .* step ([0-9.eE+-]+) ms")
 STEP_CHUNK_SEC = 0.05
 """run_until checks its predicate every this much sim time (and the test node catches up in between)."""
+ACK_TIMEOUT = 10.0
+"""Wall seconds a step waits for the subscribers of the test's topics to acknowledge what it published."""
 
 
 class SimError(RuntimeError):
@@ -133,6 +135,11 @@ def gazelle_command(*args: str) -> list[str]:
     return [sys.executable, "-m", "gazelle.cli", *args]
 
 
+def recorded_names(topics: Sequence[str]) -> list[str]:
+    """The topics a test's bag records: those it names, then /tf, /tf_static and /clock."""
+    return list(dict.fromkeys([*topics, "/tf", "/tf_static", "/clock"]))
+
+
 def _server_args(
     world: str | os.PathLike[str] | None,
     seed: int,
@@ -220,6 +227,8 @@ class Sim:
         self.replay_path = Path(replay[0]) if replay is not None else None
         self._recorder: ChildProcess | None = None
         self._record_topics: list[str] = list(record[1]) if record is not None else []
+        self._unacked: set[str] = set()
+        """Topics already warned about: a subscriber did not acknowledge what the test published."""
         args = _server_args(world, seed, paused, rtf, replay, server_args)
         self.server = self._child("gazelle sim", gazelle_command(*args))
         try:
@@ -232,6 +241,7 @@ class Sim:
             if record is not None:
                 self._recorder = self.record(*record)
             self._ros = RosTestNode(domain_id)
+            self._tell_recorder()
             self._kept = len(self.children)
             """The server and its recorder: what a reset keeps running."""
             from simulation_interfaces.srv import StepSimulation
@@ -366,8 +376,22 @@ class Sim:
 
     def _step(self, steps: int, wall_timeout: float) -> None:
         """Step the server by ``steps`` through StepSimulation, waiting at most ``wall_timeout`` seconds of wall
-        time; a server that died, hung or refused (it was not paused) is a SimError saying which."""
+        time; a server that died, hung or refused (it was not paused) is a SimError saying which.
+
+        What the test published before is in every subscriber's reader first (acknowledged), and the server
+        takes what its readers hold before it steps: a command sent before ``run_for`` acts from its first
+        step (without this, the start command of a 5 s drive acted up to 0.93 s of sim time late)."""
         self._check_server()
+        for topic in self.ros.wait_for_acks(min(ACK_TIMEOUT, wall_timeout)):
+            if topic not in self._unacked:
+                self._unacked.add(topic)
+                import warnings
+
+                warnings.warn(
+                    f"gazelle: what the test published on {topic} was not acknowledged by all its subscribers "
+                    f"within {ACK_TIMEOUT:g} s of wall time; the world steps on",
+                    stacklevel=3,
+                )
         req = self._step_srv.Request()
         req.steps = steps
         done = threading.Event()
@@ -526,8 +550,7 @@ class Sim:
         Returns:
             The recorder's process; :meth:`wait_for_recorder` waits until it hears the graph.
         """
-        names = list(dict.fromkeys([*topics, "/tf", "/tf_static", "/clock"]))
-        argv = [str(Path(sys.prefix) / "bin" / "ros2"), "bag", "record", "-o", str(folder), *names]
+        argv = [str(Path(sys.prefix) / "bin" / "ros2"), "bag", "record", "-o", str(folder), *recorded_names(topics)]
         return self._child("ros2 bag record", argv)
 
     def restart_recording(self, folder: str | os.PathLike[str], timeout: float = 30.0) -> Path | None:
@@ -542,8 +565,18 @@ class Sim:
         self.children.remove(new)
         self.children[self.children.index(old)] = new  # kept across resets, as the one before
         self._recorder = new
+        self._tell_recorder()
         self.wait_for_recorder(timeout)
         return done
+
+    def _tell_recorder(self) -> None:
+        """Let the test's node know the recorder's node and topics (its ``publisher`` waits for it)."""
+        rec = self._recorder
+        if self._ros is not None and rec is not None:
+            # gazelle's `ros2 bag record` names its node _ros2bag_<pid> (cli_node), and the console script is
+            # the process the harness started
+            names = frozenset("/" + n.lstrip("/") for n in recorded_names(self._record_topics))
+            self._ros.recorder = (f"_ros2bag_{rec.popen.pid}", names)
 
     def save_replay(self, timeout: float = 10.0) -> Path | None:
         """Have the server write its replay (the run since the last reset) now, and return the file; None

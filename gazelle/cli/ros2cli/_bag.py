@@ -9,8 +9,10 @@ recording). rosbag2 itself, ``rosbags`` and Foxglove read it.
 Decisions where rosbag2 leaves a choice:
 
 * ``record`` subscribes with a QoS compatible with every publisher (reliable and transient local each only
-  if all publishers offer it, as rosbag2) and stamps each message with its receive time
-  (``--use-sim-time``: /clock's);
+  if all publishers offer it, as rosbag2), once a topic has a publisher (rosbag2's default;
+  ``--include-unpublished-topics`` for the others), and logs each message at the time its reader received
+  it, published at the time its writer sent it (``--use-sim-time``: logged at /clock's time), as rosbag2
+  does; on Ctrl-C it writes what its readers still hold before it stops;
 * ``--qos-profile-overrides-path`` (record and play) takes rosbag2's YAML, ``TOPIC: {history, depth,
   reliability, durability, deadline: {sec, nsec}, lifespan, liveliness, liveliness_lease_duration,
   avoid_ros_namespace_conventions}``, read as ros2bag's ``convert_yaml_to_qos_profile`` does: the profile
@@ -86,6 +88,7 @@ def main(argv: list[str]) -> int:
         "--max-duration", type=float, default=0.0, help="stop after this many seconds from the first message"
     )
     rec.add_argument("--include-hidden-topics", action="store_true")
+    rec.add_argument("--include-unpublished-topics", action="store_true", help="also topics nobody publishes yet")
     rec.add_argument("--use-sim-time", action="store_true", help="stamp messages with /clock's time")
     rec.add_argument("--qos-profile-overrides-path", type=Path, help=OVERRIDES_HELP)
     play = sub.add_parser("play", help="Play back ROS data from a bag")
@@ -345,14 +348,21 @@ class _Recorder:
         entry = {"type": type_name, "channel": channel, "count": 0, "qos": qos}
         self.topics[topic] = entry
 
-        def on_message(data: bytes, entry: dict[str, Any] = entry) -> None:
-            now = self._clock.now().nanoseconds if self._clock is not None else time.time_ns()
+        def on_message(data: bytes, info: dict[str, Any], entry: dict[str, Any] = entry) -> None:
+            # as rosbag2_transport's recorder: logged when the reader received it (or at the node's sim time
+            # with --use-sim-time), published when the writer sent it: the bag's order is the order of
+            # arrival, not the order this Python loop came to each topic's queue
+            sent = info.get("source_timestamp") or time.time_ns()
+            if self._clock is not None:
+                now = self._clock.now().nanoseconds
+            else:
+                now = info.get("received_timestamp") or time.time_ns()
             entry["count"] += 1
             self.count += 1
             self.first = min(self.first, now)
             self.last = max(self.last, now)
             self._writer.add_message(
-                channel_id=entry["channel"], log_time=now, publish_time=now, data=data, sequence=entry["count"]
+                channel_id=entry["channel"], log_time=now, publish_time=sent, data=data, sequence=entry["count"]
             )
 
         if topic in self.overrides:  # rosbag2_transport recorder.cpp, subscription_qos_for_topic
@@ -446,6 +456,13 @@ def _record(args: argparse.Namespace) -> int:
     signal.signal(signal.SIGINT, on_signal)
     signal.signal(signal.SIGTERM, on_signal)
     with cli_node("ros2bag") as node:
+        from rclpy.signals import uninstall_signal_handlers
+
+        # a signal ends the loop below (on_signal) and leaves the context up, so that what the readers
+        # hold is still written (_take_the_rest); rclpy's own handler shut the context down at once
+        uninstall_signal_handlers()
+        signal.signal(signal.SIGINT, on_signal)
+        signal.signal(signal.SIGTERM, on_signal)
         if args.use_sim_time:
             from rclpy.parameter import Parameter
 
@@ -468,18 +485,42 @@ def _record(args: argparse.Namespace) -> int:
                 if now >= next_scan:
                     next_scan = now + DISCOVERY_PERIOD_SEC
                     for topic, types in node.get_topic_names_and_types():
-                        if topic not in rec.topics and types and chosen(topic):
+                        # a topic nobody publishes yet waits for its first publisher, as rosbag2's
+                        # (include_unpublished_topics false): its QoS is then the publishers' (a reliable
+                        # one gets a reliable reader, which acknowledges what it got)
+                        unpublished = not args.include_unpublished_topics and not node.count_publishers(topic)
+                        if topic not in rec.topics and types and chosen(topic) and not unpublished:
                             try:
                                 rec.add(topic, types[0])
                             except InterfaceError as err:
                                 print(f"[WARN] [rosbag2_recorder]: topic '{topic}' not recorded: {err}", flush=True)
                                 rec.topics[topic] = {"type": types[0], "channel": -1, "count": 0, "qos": []}
                 spin_once(node, timeout_sec=0.01)
+            _take_the_rest(node, rec)
         finally:
             rec.topics = {t: e for t, e in rec.topics.items() if e["channel"] >= 0}
             rec.finish()
         print(f"[INFO] [rosbag2_recorder]: Recording stopped: {rec.count} messages in '{out}'", flush=True)
     return 0
+
+
+STOP_QUIET_SEC = 0.05
+"""On Ctrl-C, ``record`` writes what its readers still hold until none came for this long..."""
+STOP_MAX_SEC = 3.0
+"""...or this long in all."""
+
+
+def _take_the_rest(node: Any, rec: _Recorder) -> None:
+    """Record what the readers received before the stop and the loop has not taken yet: a recorder that
+    fell behind (a loaded machine) lost up to 1.8 s of sim time at the end of a test's bag, the test's last
+    commands among it."""
+    end = time.monotonic() + STOP_MAX_SEC
+    quiet = time.monotonic() + STOP_QUIET_SEC
+    while time.monotonic() < min(end, quiet):
+        before = rec.count
+        spin_once(node, timeout_sec=0.02)
+        if rec.count != before:
+            quiet = time.monotonic() + STOP_QUIET_SEC
 
 
 # --------------------------------------------------------------------------- play
