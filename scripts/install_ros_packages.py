@@ -126,8 +126,11 @@ def install_python_modules(venv: Path) -> None:
     site = Path(sysconfig.get_paths(vars={"base": str(venv), "platbase": str(venv)})["purelib"])
     for module in sorted((ROOT / "compat" / "python").iterdir()):
         dest = site / module.name
-        if dest.exists() and not (dest / MARKER).exists():
-            continue  # a real one
+        # a real one has Python files of its own; a folder of nothing but __pycache__ is what the bytecode cache
+        # restored for an earlier venv's copy of ours (a fresh clone skipped nav2_common and failed its imports)
+        real = any("__pycache__" not in p.parts for p in dest.rglob("*.py")) if dest.exists() else False
+        if real and not (dest / MARKER).exists():
+            continue
         if dest.exists():
             shutil.rmtree(dest)
         shutil.copytree(module, dest, ignore=shutil.ignore_patterns("__pycache__"))

@@ -234,3 +234,23 @@ def test_the_interface_bytecode_script_compiles_what_is_missing_or_stale(tmp_pat
     os.utime(mod, ns=(was.st_atime_ns, was.st_mtime_ns))
     subprocess.run(script, check=True, timeout=120)
     assert _pyc_matches(mod)
+
+
+def test_a_compat_module_whose_folder_holds_only_restored_bytecode_is_installed(tmp_path: Path) -> None:
+    """The wheels' bytecode cache restores `__pycache__` folders of an earlier venv, ours among them: a fresh clone
+    then found `site-packages/nav2_common/` holding nothing but bytecode, took it for a real package and skipped
+    ours, and `from nav2_common.launch import ParseMultiRobotPose` failed. Only Python files make a package real."""
+    import importlib.util
+    import sysconfig
+
+    spec = importlib.util.spec_from_file_location("install_ros_packages", REPO / "scripts" / "install_ros_packages.py")
+    assert spec is not None and spec.loader is not None
+    installer = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(installer)
+    venv = tmp_path / "venv"
+    site = Path(sysconfig.get_paths(vars={"base": str(venv), "platbase": str(venv)})["purelib"])
+    (site / "nav2_common" / "launch" / "__pycache__").mkdir(parents=True)
+    (site / "real_pkg").mkdir()
+    installer.install_python_modules(venv)
+    assert (site / "nav2_common" / "launch" / "parse_multirobot_pose.py").is_file()
+    assert (site / "nav2_common" / installer.MARKER).is_file()
