@@ -19,11 +19,9 @@ test's assertions should be about, and what ``gazelle_sim.run_for``/``run_until`
 
 from __future__ import annotations
 
-import os
 import threading
 import time
 from collections.abc import Callable
-from pathlib import Path
 from typing import Any
 
 import rclpy
@@ -33,6 +31,7 @@ from rclpy.executors import SingleThreadedExecutor
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from rosgraph_msgs.msg import Clock
 
+from ._dds_profile import writer_profile
 from ._domain import environ_applied
 
 __all__ = ["MessageLog", "RosTestNode", "TestTimeout"]
@@ -128,22 +127,6 @@ def qos_for(reliable: bool = True, latched: bool = False, depth: int = 1000) -> 
     )
 
 
-WRITER_PROFILE = Path(__file__).with_name("fastdds_test_node.xml")
-"""Fast DDS's settings for the test's node: heartbeats every 5 ms, so acknowledgements come at once."""
-
-
-def _writer_profile() -> dict[str, str]:
-    """The environment that gives this process's Fast DDS participants :data:`WRITER_PROFILE`: nothing when
-    the user set a profile file of their own (each step after a publish may then wait for Fast DDS's 3 s
-    heartbeat) or uses another RMW."""
-    variables = ("FASTRTPS_DEFAULT_PROFILES_FILE", "FASTDDS_DEFAULT_PROFILES_FILE")
-    if any(os.environ.get(v) for v in variables) or not WRITER_PROFILE.is_file():
-        return {}
-    if os.environ.get("RMW_IMPLEMENTATION", "rmw_fastrtps_cpp") not in ("rmw_fastrtps_cpp", "rmw_fastrtps_dynamic_cpp"):
-        return {}
-    return {"FASTRTPS_DEFAULT_PROFILES_FILE": str(WRITER_PROFILE)}
-
-
 class RosTestNode:
     """A plain rclpy node for the test (``ros`` fixture): subscribe, wait, call, all with timeouts.
 
@@ -159,7 +142,7 @@ class RosTestNode:
             name: the node's name in the graph (what ``ros2 node list`` shows).
         """
         self.context = Context()
-        with environ_applied(_writer_profile()):  # read by Fast DDS at the process's first participant
+        with environ_applied(writer_profile()):  # read by Fast DDS at the process's first participant
             rclpy.init(context=self.context, domain_id=domain_id)
             self.node = rclpy.create_node(name, context=self.context, start_parameter_services=False)
         self._executor = SingleThreadedExecutor(context=self.context)

@@ -17,6 +17,7 @@ from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
+from ._dds_profile import without_writer_profile
 from ._domain import environ_applied
 from ._ros_node import RosTestNode, TestTimeout
 from ._settle import Settler
@@ -214,7 +215,7 @@ class Sim:
         self.seed = seed
         self.paused = paused
         self.env = {
-            **(env if env is not None else os.environ),
+            **without_writer_profile(dict(env if env is not None else os.environ)),
             "ROS_DOMAIN_ID": str(domain_id),
             "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST",
             "RMW_IMPLEMENTATION": "rmw_fastrtps_cpp",

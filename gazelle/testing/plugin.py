@@ -66,7 +66,13 @@ def pytest_addoption(parser: pytest.Parser) -> None:
 
 
 def pytest_configure(config: pytest.Config) -> None:
-    """Declare the ``gazelle`` marker, so ``--strict-markers`` accepts it."""
+    """Declare the ``gazelle`` marker, so ``--strict-markers`` accepts it, and give the process's Fast DDS
+    writers their test settings before any participant exists (see ``_dds_profile``: Fast DDS reads them at
+    the process's first participant, and a test node made after another rclpy node of the session
+    otherwise waited 3 s for the acknowledgements of each step after a publish)."""
+    from ._dds_profile import writer_profile
+
+    os.environ.update(writer_profile())
     config.addinivalue_line(
         "markers",
         "gazelle(world=None, record=(), paused=True, rtf=None, start_timeout=60): configure the gazelle_sim fixture",
