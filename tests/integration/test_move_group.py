@@ -1010,8 +1010,9 @@ def test_a_cartesian_path_at_max_step_1e_6_is_refused_at_once_with_moveits_failu
 def test_queries_answer_while_a_long_cartesian_path_is_planned(panda):
     """Every move_group service waited on one lock: a /compute_fk sent beside issue 48's payload waited 49.6 s.
     FK, state validity and the planning scene are now served by their own planner (MoveIt serves them
-    beside a plan): while a 10,000-pose Cartesian path is computed (seconds), each answers within a
-    second, well under the path's time, and several answer before the path does."""
+    beside a plan): while a 10,000-pose Cartesian path is computed (seconds), each answers within half the
+    path's time (~20 ms idle; a fixed 1 s bound failed beside a CPU hog and the whole suite), and several
+    answer before the path does. Behind one lock the first would have waited for the whole path."""
     import time
 
     from moveit_msgs.srv import GetCartesianPath, GetPlanningScene
@@ -1037,7 +1038,7 @@ def test_queries_answer_while_a_long_cartesian_path_is_planned(panda):
     while not path.done() and time.monotonic() - t0 < 120:
         srv_type, name, req = queries[len(latencies) % len(queries)]
         asked = time.monotonic()
-        panda.ros.call(srv_type, name, req, timeout=1.0)  # fails the test if it waits a second
+        panda.ros.call(srv_type, name, req, timeout=60.0)  # how long it took is judged against the path's time
         if not path.done():
             latencies.append(time.monotonic() - asked)
     wait_for(path.done, 120, "the Cartesian path's answer")
