@@ -26,6 +26,7 @@ import numpy as np
 from .._files import atomic_write
 from ..physics import WorldError
 from ..systems import UpdateInfo
+from ..systems.sensors import Lidar
 from ._scene import SceneShape, link_shapes
 
 RATE_HZ = 30.0
@@ -36,6 +37,8 @@ MAX_TOPIC_SAMPLES = 2_000
 """Messages kept per topic before that topic thins itself."""
 MAX_FIELDS = 24
 """Fields shown of a message."""
+MAX_RAYS = 120
+"""Lidar hits kept per lidar and frame (every n-th hit of a scan): the rays the page draws at the cursor."""
 REPLAY_SIGNATURES = (
     b'{"shapes":',
     b'<meta name="generator" content="gazelle replay">',
@@ -88,6 +91,12 @@ def flatten(msg: Any, prefix: str = "", out: dict[str, Any] | None = None, depth
             flatten(getattr(msg, f.name), f"{prefix}{f.name}.", out, depth + 1)
         return out
     key = prefix[:-1] or "value"
+    if key.rsplit(".", 1)[-1] == "orientation" and isinstance(msg, tuple | list) and len(msg) == 4:
+        # the bus's quaternions are w first (MuJoCo's order); the page shows ROS's fields, x, y, z, w, as
+        # `ros2 topic echo` does, so that a value read off the replay reads the same as in the bag
+        for name, v in zip(("x", "y", "z", "w"), (msg[1], msg[2], msg[3], msg[0])):
+            out[f"{key}.{name}"] = round(float(v), 4) if math.isfinite(float(v)) else str(v)
+        return out
     if isinstance(msg, bytes | bytearray):
         if key.rsplit(".", 1)[-1] in FLOAT32_FIELDS and len(msg) % 4 == 0 and msg:
             values = np.frombuffer(msg, dtype=np.float32)  # a scan's ranges: their count and span
@@ -133,7 +142,8 @@ class ReplayRecorder:
         self._shapes: dict[str, list[dict[str, Any]]] = {}
         self._models: dict[str, int] = {}
         self._index: tuple[int, tuple[str, ...], np.ndarray] | None = None
-        self._frames: list[tuple[float, tuple[str, ...], np.ndarray]] = []
+        self._frames: list[tuple[float, tuple[str, ...], np.ndarray, dict[str, list[float]]]] = []
+        self._lidars: list[tuple[str, Lidar]] = []
         self._samples = 0
         self._rate_hz = rate_hz
         self._period = 1.0 / rate_hz
@@ -206,6 +216,12 @@ class ReplayRecorder:
                     with self._lock:
                         self._shapes[name] = [_shape(s) for s in link_shapes_]
                         self._models[name] = id(entity.model)
+        self._lidars = [
+            (f"{entity_name}::{system.sensor.name}", system)
+            for entity_name, entity in list(world.entities.items())
+            for system in entity.systems
+            if isinstance(system, Lidar) and system.sensor is not None
+        ]
         if self._topics:
             self._attach()
         return world.generation, tuple(names), np.asarray(ids, dtype=int)
@@ -232,26 +248,43 @@ class ReplayRecorder:
             self._index = self._reindex()
         _, names, ids = self._index
         poses = world.body_poses(ids) if len(ids) else np.zeros((0, 7))
+        rays = self._lidar_rays(world)
         with self._lock:
-            self._frames.append((round(t, 4), names, poses))
-            self._samples += len(names)
+            self._frames.append((round(t, 4), names, poses, rays))
+            self._samples += len(names) + sum(len(r) for r in rays.values()) // 7
             if self._samples > MAX_SAMPLES:  # thin out: every other frame, and half the rate from now on
                 self._frames = self._frames[::2]
-                self._samples = sum(len(n) for _, n, _ in self._frames)
+                self._samples = sum(len(n) + sum(len(r) for r in rays.values()) // 7 for _, n, _, rays in self._frames)
                 self._period *= 2.0
+
+    def _lidar_rays(self, world: Any) -> dict[str, list[float]]:
+        """Each lidar's scan now, for the page to draw as rays: ``{entity::sensor: [ox, oy, x1, y1, ...]}``, the
+        sensor's origin then at most :data:`MAX_RAYS` of its hits (noise-free, as the viewer's overlay draws
+        them), in the world frame, to the centimetre."""
+        out = {}
+        for key, lidar in self._lidars:
+            pts = lidar.world_points(world)
+            if len(pts) > MAX_RAYS:
+                pts = pts[:: math.ceil(len(pts) / MAX_RAYS)]
+            origin = lidar.sensor_pose().position
+            out[key] = [round(float(origin[0]), 2), round(float(origin[1]), 2)] + np.round(
+                pts[:, :2], 2
+            ).ravel().tolist()
+        return out
 
     # ------------------------------------------------------------------ any thread
     def data(self) -> dict[str, Any]:
-        """``{"shapes": {link: [shape]}, "frames": [[t, {link: [x, y, z, qw, qx, qy, qz]}]], "topics":
-        {topic: [[t, {field: value}]]}}``, positions rounded to 0.1 mm."""
+        """``{"shapes": {link: [shape]}, "frames": [[t, {link: [x, y, z, qw, qx, qy, qz]}, rays?]], "topics":
+        {topic: [[t, {field: value}]]}}``, positions rounded to 0.1 mm; ``rays`` (in frames with a lidar) is
+        ``{entity::sensor: [ox, oy, x1, y1, ...]}`` (see :meth:`_lidar_rays`)."""
         with self._lock:
             frames = list(self._frames)
             shapes = dict(self._shapes)
             topics = {t: [[s[0], dict(s[1])] for s in samples] for t, samples in self._topics.items()}
         out = []
-        for t, names, poses in frames:
+        for t, names, poses, rays in frames:
             rounded = np.concatenate((np.round(poses[:, :3], 4), np.round(poses[:, 3:], 5)), axis=1).tolist()
-            out.append([t, dict(zip(names, rounded))])
+            out.append([t, dict(zip(names, rounded)), rays] if rays else [t, dict(zip(names, rounded))])
         return {"shapes": shapes, "frames": out, "topics": topics}
 
     def write(self, path: str | os.PathLike[str], text: str | None = None, force: bool = False) -> Path:

@@ -1,13 +1,14 @@
 """A replay of a run as one self-contained HTML file: opens from disk, no server, no gazelle, no network.
 
 The page draws the world from above (every body's collision shapes as their outlines on the ground plane,
-the higher drawn over the lower), the paths of the bodies that moved, a timeline to play, pause and scrub,
-and the recorded topics' values at the cursor. The data is :meth:`gazelle.sim.ReplayRecorder.data` (with its topic
+the higher drawn over the lower), the paths of the bodies that moved (the whole path faint, the part up to
+the cursor over it), each lidar's rays at the cursor, a timeline to play, pause and scrub (it opens at the
+end of the run), and the recorded topics' values at the cursor (quaternions as ROS writes them: x, y, z, w). The data is :meth:`gazelle.sim.ReplayRecorder.data` (with its topic
 samples ``{topic: [[sim_time, {field: value}], ...]}``, or others given), inlined as JSON; the drawing is
 a few hundred lines of plain JavaScript on a canvas (no library), so the file is its data plus ~10 KB.
 
 ``window.gazelleReplay`` lets a test drive the page: ``frames``, ``times``, ``seek(i)``, ``toScreen(x, y)``
-(canvas pixels of a world point) and ``colorOf(entity)``.
+(canvas pixels of a world point), ``colorOf(entity)`` and ``raysAt(i)`` (each lidar's origin and hits at frame ``i``).
 """
 
 from __future__ import annotations
@@ -136,12 +137,21 @@ function draw(i) {
     ctx.fill();
     ctx.strokeStyle = "#555"; ctx.stroke();
   }
-  ctx.lineWidth = 2;
-  for (const [e, tr] of Object.entries(track)) {  // the path so far
-    const n = Math.min(tr.xy.length, i + 1);
-    ctx.beginPath();
-    for (let k = 0; k < n; k++) { const [x, y] = toScreen(tr.xy[k][0], tr.xy[k][1]); k ? ctx.lineTo(x, y) : ctx.moveTo(x, y); }
-    ctx.strokeStyle = colorOf(e); ctx.globalAlpha = 0.6; ctx.stroke(); ctx.globalAlpha = 1;
+  for (const [e, tr] of Object.entries(track)) {  // the whole path, faint, and the path so far over it
+    for (const [n, width, alpha] of [[tr.xy.length, 1, 0.25], [Math.min(tr.xy.length, i + 1), 2, 0.7]]) {
+      ctx.beginPath();
+      for (let k = 0; k < n; k++) { const [x, y] = toScreen(tr.xy[k][0], tr.xy[k][1]); k ? ctx.lineTo(x, y) : ctx.moveTo(x, y); }
+      ctx.lineWidth = width; ctx.strokeStyle = colorOf(e); ctx.globalAlpha = alpha; ctx.stroke();
+    }
+    ctx.globalAlpha = 1;
+  }
+  for (const [sensor, r] of Object.entries(frames[i][2] || {})) {  // each lidar's rays at the cursor
+    const [ox, oy] = toScreen(r[0], r[1]);
+    ctx.strokeStyle = colorOf(entityOf(sensor)); ctx.fillStyle = ctx.strokeStyle; ctx.lineWidth = 1;
+    ctx.globalAlpha = 0.3; ctx.beginPath();
+    for (let k = 2; k + 1 < r.length; k += 2) { const [x, y] = toScreen(r[k], r[k + 1]); ctx.moveTo(ox, oy); ctx.lineTo(x, y); }
+    ctx.stroke(); ctx.globalAlpha = 1;
+    for (let k = 2; k + 1 < r.length; k += 2) { const [x, y] = toScreen(r[k], r[k + 1]); ctx.fillRect(x - 2, y - 2, 4, 4); }
   }
   // a scale bar, bottom left
   const len = [0.05, 0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100].filter((l) => l * scale <= canvas.width / 4).pop() || 0.05;
@@ -180,8 +190,9 @@ function tick(now) {
   if (i >= frames.length - 1) { playing = false; document.getElementById("play").textContent = "play"; return; }
   requestAnimationFrame(tick);
 }
-seek(0);
-window.gazelleReplay = { frames: frames.length, times: frames.map((f) => f[0]), seek, toScreen, colorOf, moving, bodies };
+seek(Math.max(0, frames.length - 1));  // opens at the end: where the run stopped, its whole path drawn
+const raysAt = (i) => frames[i] ? frames[i][2] || {} : {};
+window.gazelleReplay = { frames: frames.length, times: frames.map((f) => f[0]), seek, toScreen, colorOf, moving, bodies, raysAt };
 </script></body></html>
 """
 

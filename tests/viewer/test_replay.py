@@ -9,7 +9,9 @@ first frame, the other way round.
 from __future__ import annotations
 
 import json
+import os
 import re
+from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
@@ -168,3 +170,79 @@ def test_a_60_s_turtlebot3_world_run_makes_a_page_under_20_mb(resource_path, mak
     assert len(page.encode()) < 20_000_000
     assert len(data["frames"]) == pytest.approx(1800, abs=5)
     assert len(data["topics"]["/odom"]) > 1000 and "ranges" in data["topics"]["/scan"][-1][1]
+
+
+@pytest.fixture(scope="module")
+def tb3_run() -> Iterator[dict]:
+    """TurtleBot3 burger in its world for 1 s of sim time, turning: the recording with /odom."""
+    from _paths import REAL
+
+    tb3 = REAL / "turtlebot3" / "turtlebot3_gazebo"
+    with pytest.MonkeyPatch.context() as mp:
+        for var in ("GZ_SIM_RESOURCE_PATH", "IGN_GAZEBO_RESOURCE_PATH", "GAZEBO_MODEL_PATH", "ROS_PACKAGE_PATH"):
+            mp.delenv(var, raising=False)
+        mp.setenv("GAZELLE_RESOURCE_PATH", f"{tb3 / 'models'}{os.pathsep}{REAL / 'turtlebot3'}")
+        yield _tb3_recording(tb3)
+
+
+def _tb3_recording(tb3: Path) -> dict:
+    sim = new_simulation(load(tb3 / "worlds" / "turtlebot3_world.world").world)
+    sim.spawn(
+        load(tb3 / "models" / "turtlebot3_burger" / "model.sdf").model, name="burger", pose=Pose((-2.0, -0.5, 0.01))
+    )
+    recorder = ReplayRecorder(sim, topics=("/odom",))
+    assert sim.bus.inject("/cmd_vel", MsgType.TWIST, Twist((0.0, 0.0, 0.0), (0.0, 0.0, 0.8))) == 1
+    sim.step(1000)
+    recorder.close()
+    return recorder.data()
+
+
+def test_quaternions_read_as_ros_writes_them_x_y_z_w(tb3_run) -> None:
+    """Issue 50, item 10: the bus's quaternions are w first; the page showed them so, beside ROS's x, y, z, w."""
+    fields = tb3_run["topics"]["/odom"][-1][1]
+    assert "pose.orientation" not in fields
+    q = [fields[f"pose.orientation.{c}"] for c in "xyzw"]
+    assert q[0] == pytest.approx(0.0, abs=1e-3) and q[1] == pytest.approx(0.0, abs=1e-3)  # a yaw only
+    assert q[3] > 0.9 and 0.2 < abs(q[2]) < 0.5  # ~0.8 rad turned: z = sin(0.4), w = cos(0.4)
+    assert list(fields).index("pose.orientation.x") < list(fields).index("pose.orientation.w")
+
+
+@pytest.mark.skipif(find_chromium() is None, reason="no system chromium (scripts/setup.sh installs it)")
+def test_the_page_opens_at_the_end_with_the_whole_path_and_draws_the_lidar_s_rays(tmp_path: Path, run, tb3_run) -> None:
+    """Issue 50, item 10: the page opened at t = 0 with no path drawn and had no lidar rays. Now it opens at
+    the end; at t = 0 the path ahead is drawn faint; the burger's lidar hits are drawn at the cursor where
+    the world's pillars and walls are (within its 3.5 m range)."""
+    pytest.importorskip("playwright")
+    data, start, end = run
+    path = tmp_path / "drive.html"
+    path.write_text(replay_html(data, title="drive"))
+    robot = [f[1]["robot::base_link"] for f in data["frames"]]
+    mid = robot[len(robot) // 2][:2]
+    with open_replay(path) as replay:
+        assert replay.page.locator("#cursor").input_value() == str(replay.frames() - 1)
+        assert share_near(replay.canvas(), replay.to_screen(*end), replay.color_of("robot")) > 0.9
+        replay.seek(0)
+        rgb = _patch(replay.canvas(), replay.to_screen(*mid))
+        assert ((rgb[..., 0] - rgb[..., 1]) > 25).any(), "no path drawn ahead of the robot at t = 0"
+    rays = tb3_run["frames"][-1][2]
+    ((sensor, r),) = rays.items()
+    assert sensor.startswith("burger::")
+    origin, hits = np.array(r[:2]), np.array(r[2:]).reshape(-1, 2)
+    burger = next(p for link, p in tb3_run["frames"][-1][1].items() if link.startswith("burger::base"))[:2]
+    assert np.hypot(*(origin - burger)) < 0.1
+    reach = np.hypot(*(hits - origin).T)
+    assert 30 < len(hits) <= 120 and reach.max() < 3.6 and reach.min() > 0.1
+    page = tmp_path / "tb3.html"
+    page.write_text(replay_html(tb3_run, title="tb3"))
+    with open_replay(page) as replay:
+        color = replay.color_of("burger")
+        shot = replay.canvas()
+        drawn = [share_near(shot, replay.to_screen(*h), color, half=1) for h in hits]
+        assert np.mean([d > 0.5 for d in drawn]) > 0.8, "the lidar's hits are not drawn where they are"
+
+
+def _patch(png: bytes, at: tuple[float, float], half: int = 3) -> np.ndarray:
+    from _pixels import rgb_of
+
+    x, y = int(round(at[0])), int(round(at[1]))
+    return rgb_of(png)[y - half : y + half + 1, x - half : x + half + 1]
