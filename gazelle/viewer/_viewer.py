@@ -39,7 +39,6 @@ panel's rate while one is chosen.
 from __future__ import annotations
 
 import contextlib
-import functools
 import io
 import logging
 import math
@@ -55,6 +54,7 @@ import viser
 from ..description import Model, Pose, load
 from ..physics import PerGeneration
 from ..systems import DisplayTrajectory, Endpoint, MsgType, Twist
+from ._framing import fit_view
 from ._geometry import rgba_to_rgb255, to_trimesh
 from ._models import ModelFile, find_models
 from ._origin import OriginPolicy, guarded
@@ -86,6 +86,14 @@ LINEAR_STEP = 0.5
 """m/s per drive button press (teleop_twist_keyboard's default ``speed``)."""
 ANGULAR_STEP = 1.0
 """rad/s per turn button press (teleop_twist_keyboard's default ``turn``)."""
+DRIVE_BUTTONS = {
+    "Forward": (LINEAR_STEP, 0.0),
+    "Back": (-LINEAR_STEP, 0.0),
+    "Left": (0.0, ANGULAR_STEP),
+    "Right": (0.0, -ANGULAR_STEP),
+    "Stop": (0.0, 0.0),
+}
+"""(linear m/s, angular rad/s) each Drive button sends."""
 CAMERA_POSITION = (1.6, -1.6, 1.2)
 CAMERA_LOOK_AT = (0.0, 0.0, 0.05)
 CAMERA_FOV_RAD = 50.0 * np.pi / 180.0
@@ -353,6 +361,9 @@ class Viewer(ViewerOverlays):
         """The panel: a folder each for the simulation, entities, driving, spawning, overlays and cameras,
         then what each control does."""
         g = self.server.gui
+        # the small panel, and the folders used less folded (Spawn, Overlays, Camera): open, the medium panel
+        # covered a quarter of a 1200 x 800 view (issue 50, item 10)
+        g.configure_theme(control_width="small")
         self._gui_simulation(g)
         self._gui_entities(g)
         self._gui_drive(g)
@@ -366,8 +377,12 @@ class Viewer(ViewerOverlays):
         factor."""
         with g.add_folder("Simulation"):
             self._play = g.add_button("Pause", hint="Pause or resume physics")
-            self._step_btn = g.add_button("Step", hint="One physics step (while paused)")
-            self._reset_btn = g.add_button("Reset", hint="Reset time and state; removes spawned entities")
+            self._sim_btns = g.add_button_group(
+                "World",
+                ("Step", "Reset", "Fit all"),
+                hint="Step: one physics step (while paused). Reset: time and state; removes spawned entities. "
+                "Fit all: the camera moves to see every entity.",
+            )
             self._time_text = g.add_text("Sim time", initial_value="0.000 s", disabled=True)
             self._real_text = g.add_text("Real time", initial_value="0.0 s", disabled=True)
             self._rtf_text = g.add_text("RTF", initial_value="-", disabled=True)
@@ -388,11 +403,9 @@ class Viewer(ViewerOverlays):
         switch (WASD/arrows press the buttons instead of moving the camera)."""
         with g.add_folder("Drive"):
             self._drive_text = g.add_text("cmd_vel", initial_value="select a diff-drive robot", disabled=True)
-            self._fwd = g.add_button("Forward")
-            self._back = g.add_button("Back")
-            self._left = g.add_button("Left")
-            self._right = g.add_button("Right")
-            self._stop_btn = g.add_button("Stop")
+            # two rows of buttons, not five: the panel stays short enough to leave the view to the scene
+            self._turn_btns = g.add_button_group("Turn", ("Left", "Stop", "Right"))
+            self._move_btns = g.add_button_group("Move", ("Forward", "Back"))
             self._keys_box = g.add_checkbox(
                 "Keyboard drive",
                 initial_value=False,
@@ -404,7 +417,7 @@ class Viewer(ViewerOverlays):
         """Spawn a model found on the resource paths (GAZELLE_RESOURCE_PATH, GZ_SIM_RESOURCE_PATH,
         GAZEBO_MODEL_PATH, ROS_PACKAGE_PATH, ...) at a position and yaw, under a name of the user's or the
         model's own."""
-        with g.add_folder("Spawn"):
+        with g.add_folder("Spawn", expand_by_default=False):
             model_options: list[str] = [NO_MODELS]
             self._model_dd = g.add_dropdown("Model", options=model_options, initial_value=NO_MODELS)
             self._spawn_name = g.add_text("Name", initial_value="", hint="empty: the model's own name")
@@ -418,7 +431,7 @@ class Viewer(ViewerOverlays):
         """What is drawn over the scene: TF frames, collision shapes, the selected robot's path trail (from its
         odometry or from ground truth), MuJoCo contact points, where each lidar's rays hit, and the latest
         planned arm path."""
-        with g.add_folder("Overlays"):
+        with g.add_folder("Overlays", expand_by_default=False):
             self._tf_box = g.add_checkbox("TF frames", initial_value=False)
             self._col_box = g.add_checkbox("Collision geometry", initial_value=False)
             self._trail_box = g.add_checkbox(
@@ -446,7 +459,7 @@ class Viewer(ViewerOverlays):
     def _gui_camera(self, g: viser.GuiApi) -> None:
         """A camera sensor's live image, rendered for the panel (directly, not through its ROS topic) at the
         panel's rate while one is chosen."""
-        with g.add_folder("Camera"):
+        with g.add_folder("Camera", expand_by_default=False):
             camera_options: list[str] = [NO_CAMERA]
             self._camera_dd = g.add_dropdown(
                 "Camera", options=camera_options, initial_value=NO_CAMERA, hint="A camera sensor's image, live"
@@ -458,17 +471,10 @@ class Viewer(ViewerOverlays):
         touches the world goes through ``Simulation.call`` (spawn, delete, step) or takes the snapshot the frame
         loop made."""
         self._play.on_click(lambda _e: self._toggle_pause())
-        self._step_btn.on_click(lambda _e: self._step())
-        self._reset_btn.on_click(lambda _e: self.sim.reset(time_=True, state=True, spawned=False))
+        self._sim_btns.on_click(self._world_button)
         self._delete_btn.on_click(lambda _e: self._delete_selected())
-        for btn, lin, ang in (
-            (self._fwd, LINEAR_STEP, 0.0),
-            (self._back, -LINEAR_STEP, 0.0),
-            (self._left, 0.0, ANGULAR_STEP),
-            (self._right, 0.0, -ANGULAR_STEP),
-            (self._stop_btn, 0.0, 0.0),
-        ):
-            btn.on_click(functools.partial(self._drive_button, lin, ang))
+        for group in (self._turn_btns, self._move_btns):
+            group.on_click(self._drive_button)
         self._tf_box.on_update(lambda _e: self._set_overlays())
         self._col_box.on_update(lambda _e: self._set_overlays())
         self._trail_box.on_update(lambda _e: self._redraw_trail(force=True))
@@ -481,6 +487,27 @@ class Viewer(ViewerOverlays):
         self._spawn_btn.on_click(lambda _e: self._spawn_selected())
         self._rescan_btn.on_click(self._on_gui_event(self.rescan_models))
         self.rescan_models()
+
+    def _world_button(self, event: Any) -> None:
+        """Step, Reset or Fit all."""
+        if event.target.value == "Step":
+            self._step()
+        elif event.target.value == "Reset":
+            self.sim.reset(time_=True, state=True, spawned=False)
+        else:
+            self.fit_all()
+
+    def fit_all(self) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
+        """Move every browser's camera to see all entities (their links' origins, from the last frame), looking
+        from the initial camera's direction; returns (position, look-at)."""
+        snap = self._last
+        points = [pos for links in snap.poses.values() for pos, _q in links.values()] if snap is not None else []
+        eye, target = fit_view(points, CAMERA_POSITION, CAMERA_LOOK_AT, CAMERA_FOV_RAD)
+        for client in self.server.get_clients().values():
+            with client.atomic():  # position first: viser keeps the view direction when the position moves
+                client.camera.position = eye
+                client.camera.look_at = target
+        return eye, target
 
     def _toggle_pause(self) -> None:
         paused, t = self.sim.call(self._flip_paused)
@@ -520,8 +547,9 @@ class Viewer(ViewerOverlays):
 
         return run
 
-    def _drive_button(self, linear: float, angular: float, _event: object) -> None:
-        self.drive(linear, angular)
+    def _drive_button(self, event: Any) -> None:
+        """A Drive button: its command (DRIVE_BUTTONS) to the selected robot."""
+        self.drive(*DRIVE_BUTTONS[event.target.value])
 
     def drive(self, linear_x: float, angular_z: float, entity: str | None = None) -> int:
         """Publish a Twist to the cmd_vel subscriptions of ``entity`` (default: the selected one).
