@@ -11,9 +11,10 @@ Where things are (docs/extending.md has the checklists):
 * ``_base.py``: :class:`System` and its phases, :class:`SystemContext` (what a system may touch while it
   configures), :class:`RateGate`; the names a plugin answers to are declared on the class
   (``plugin_files``, ``gz_plugin``).
-* ``_registry.py``: which system runs a ``<plugin>`` or a ``<sensor>`` (derived from the declarations:
-  ``PLUGIN_SYSTEMS`` lists the plugin classes, ``sensors.SENSOR_SYSTEMS`` the sensor classes), and the
-  warning for each one that does not run.
+* ``_registration.py``: ``add_plugin(Cls)``, the one call at the bottom of a plugin's or sensor's own module
+  that registers it (gz-sim's ``GZ_ADD_PLUGIN``); the registry imports every module of this package to find them.
+* ``_registry.py``: which system runs a ``<plugin>`` or a ``<sensor>`` (derived from the registered classes'
+  declarations), and the warning for each one that does not run.
 * ``_bus.py``: the topics between systems and the ROS bridge (endpoints, QoS, the message types);
   ``_payloads.py``: the message payloads (plain dataclasses; ``gazelle.ros`` converts them).
 * ``_plugin_config.py``: reading a ``<plugin>`` block (texts, numbers, flags, the ``<ros>`` block) and a

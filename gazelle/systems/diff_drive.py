@@ -23,6 +23,7 @@ from ._base import System, SystemContext, UpdateInfo
 from ._bus import Endpoint, MsgType, resolve_topic
 from ._payloads import JointStates, Odometry, Transform, TransformBatch, Twist
 from ._plugin_config import all_texts, child_text, parse_bool, parse_float, ros_block
+from ._registration import add_plugin
 
 ODOM_ENCODER = 0
 ODOM_WORLD = 1
@@ -533,3 +534,6 @@ def joints_listing(model: Model) -> str:
     """``The model's joints: a (continuous), b (fixed)`` for messages about a joint that is not there."""
     names = ", ".join(f"{j.name} ({j.type.value})" for j in model.joints) or "none"
     return f"The model's joints: {names}."
+
+
+add_plugin(DiffDrive)

@@ -32,6 +32,7 @@ from ._base import RateGate, System, SystemContext, UpdateInfo
 from ._bus import Endpoint, MsgType, resolve_topic
 from ._payloads import Odometry, Transform, TransformBatch, Twist
 from ._plugin_config import all_texts, child_text, parse_float
+from ._registration import add_plugin
 from .diff_drive import joints_listing, wheel_direction_hint
 
 _INF = math.inf
@@ -336,3 +337,6 @@ class GzDiffDrive(System):
         batch = TransformBatch((Transform(stamp, self.frame_id, self.child_frame_id, pose),))
         for pub in tf_pubs:
             pub.publish(batch)
+
+
+add_plugin(GzDiffDrive)

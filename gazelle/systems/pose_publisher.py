@@ -34,6 +34,7 @@ from ._base import RateGate, System, SystemContext, UpdateInfo
 from ._bus import Endpoint, MsgType, resolve_topic
 from ._payloads import Odometry, Twist
 from ._plugin_config import child_text, parse_float, ros_block
+from ._registration import add_plugin
 
 ROS1_NAMES = {
     "bodyName": "body_name",
@@ -240,3 +241,6 @@ def _noisy(v: Vec3, gauss: Callable[[float, float], float], stddev: float) -> Ve
     x = v[0] + gauss(0.0, stddev)
     y = v[1] + gauss(0.0, stddev)
     return (x, y, v[2] + gauss(0.0, stddev))
+
+
+add_plugin(P3D)

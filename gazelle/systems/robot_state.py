@@ -22,6 +22,7 @@ from ._bus import Endpoint, MsgType, Qos, resolve_topic
 from ._payloads import JointStates, Text, Transform, TransformBatch
 from ._plugin_config import all_texts, child_text, parse_bool, parse_float, ros_block
 from ._plugin_names import RSP_PLUGIN as RSP_PLUGIN
+from ._registration import add_plugin
 
 
 def default_frame_prefix(namespace: str) -> str:
@@ -343,3 +344,7 @@ class GzJointStatePublisher(JointStatePublisher):
                 (0.0,) * len(self._moving),
             )
         )
+
+
+add_plugin(JointStatePublisher)
+add_plugin(GzJointStatePublisher)

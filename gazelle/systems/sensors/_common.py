@@ -1,12 +1,12 @@
 """What every sensor shares: noise, rates, the output's topic, frame and message (gazebo_ros and gz-sim
-naming), the base class with its rate gate, and the registration of sensor kinds (:func:`sensor_system`).
+naming), the base class with its rate gate, and what a sensor kind declares (:class:`SensorClass`).
 
 A sensor's life, whichever kind it is:
 
 * **Chosen.** ``systems/_registry.py`` plans one system per ``<sensor>``: a gazebo_ros plugin inside it
   (``classic_plugins``) makes it publish as that plugin does; else a gz-sim world system that simulates
   the kind (``gz_system``: ``Sensors``, ``Imu``, ...) makes it publish on gz-sim's topic; else it is warned
-  about and not simulated. The tables come from the classes' declarations (:func:`sensor_system`).
+  about and not simulated. The tables come from the classes' declarations (:class:`SensorClass`).
 * **Configured** (:meth:`_SensorSystem._configure_common`): its link, its pose on the link, its rate
   (:func:`checked_rate`), where it publishes (:func:`sensor_output`: topic, frame_id, message type) and
   its noise (:func:`parse_noise`). A block that cannot be simulated raises :class:`SensorConfigError`,
@@ -26,7 +26,7 @@ import logging
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import ClassVar, Protocol, TypeVar, cast
+from typing import ClassVar, Protocol, TypeVar
 
 import numpy as np
 
@@ -50,25 +50,8 @@ T = TypeVar("T")
 
 
 class SensorClass(Protocol):
-    """A sensor system's class, as :func:`sensor_system` registers it."""
-
-    sdf_types: frozenset[str]
-    classic_plugins: ClassVar[dict[str, frozenset[str] | None]]
-    gz_system: str
-    gz_file: str
-
-    def __call__(self) -> System: ...
-
-
-SENSOR_SYSTEMS: list[SensorClass] = []
-"""Every sensor kind gazelle simulates, each declaring what runs it (see :func:`sensor_system`); the plugin
-registry derives its tables from these declarations."""
-
-S = TypeVar("S", bound=type)
-
-
-def sensor_system(cls: S) -> S:
-    """Register a sensor class. It declares, as class attributes:
+    """A sensor system's class, as it registers itself (``add_plugin(Lidar)`` at the bottom of its module). It
+    declares, as class attributes:
 
     * ``sdf_types``: the ``<sensor type>`` values it simulates;
     * ``classic_plugins``: the gazebo_ros plugins (file names without ``lib``/``.so``) that publish it from
@@ -79,8 +62,13 @@ def sensor_system(cls: S) -> S:
       name: ``air-pressure``);
     * ``output_kind`` (the gz-sim topic's suffix) and, for a message of its own, ``output_message``.
     """
-    SENSOR_SYSTEMS.append(cast(SensorClass, cls))
-    return cls
+
+    sdf_types: frozenset[str]
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]]
+    gz_system: str
+    gz_file: str
+
+    def __call__(self) -> System: ...
 
 
 SENSOR_DEPTH = 5

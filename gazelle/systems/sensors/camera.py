@@ -47,6 +47,7 @@ from .._base import SystemContext, UpdateInfo
 from .._bus import Endpoint, MsgType, resolve_topic
 from .._payloads import XYZ_RGB, XYZ_RGB_PADDED, CameraInfo, Image, PointCloud
 from .._plugin_config import child_text, parse_float
+from .._registration import add_plugin
 from ._common import (
     SENSOR_DEPTH,
     Noise,
@@ -55,7 +56,6 @@ from ._common import (
     _SensorSystem,
     gz_scoped_topic,
     parse_noise,
-    sensor_system,
 )
 
 CAMERA_TYPES = frozenset({"camera", "depth", "depth_camera", "rgbd_camera", "rgbd"})
@@ -256,7 +256,6 @@ OPTICAL = np.array([[0.0, -1.0, 0.0], [0.0, 0.0, -1.0], [1.0, 0.0, 0.0]])
 """Rotation from a link frame (x forward, z up) to the optical frame (z forward, x right, y down)."""
 
 
-@sensor_system
 class Camera(_SensorSystem):
     """A camera or depth camera: Image, CameraInfo, depth Image (32FC1) and PointCloud2 (see the module
     docstring). It renders only while someone subscribes."""
@@ -478,3 +477,6 @@ class Camera(_SensorSystem):
         if self._renderer is not None:
             self._renderer.close()
             self._renderer = None
+
+
+add_plugin(Camera)

@@ -19,11 +19,11 @@ from .._base import RateGate, System, SystemContext, UpdateInfo
 from .._bus import Endpoint, MsgType, resolve_topic
 from .._payloads import WrenchStamped
 from .._plugin_config import child_text, parse_float, ros_block
+from .._registration import add_plugin
 from ._common import (
     SENSOR_DEPTH,
     Noise,
     checked_rate,
-    sensor_system,
     xyz_noise,
 )
 
@@ -50,7 +50,6 @@ class ForceTorqueConfig:
     """gz-sim: ``<force>`` and ``<torque>`` ``<x|y|z><noise>``, force x, y, z then torque x, y, z (N, N·m)."""
 
 
-@sensor_system
 class ForceTorqueSensor(System):
     """The wrench through a joint (geometry_msgs/WrenchStamped), at the joint's origin.
 
@@ -224,3 +223,6 @@ class ForceTorqueSensor(System):
                 (float(t[0]), float(t[1]), float(t[2])),
             )
         )
+
+
+add_plugin(ForceTorqueSensor)

@@ -37,12 +37,12 @@ from ...physics import PhysicsWorld
 from .._base import SystemContext, UpdateInfo
 from .._payloads import Imu, Vec3
 from .._plugin_config import child_text, parse_bool, parse_float
+from .._registration import add_plugin
 from ._common import (
     NOISE_ROWS,
     Noise,
     _SensorSystem,
     parse_noise,
-    sensor_system,
     xyz_noise,
 )
 
@@ -148,7 +148,6 @@ def _imu_block(sensor: Sensor | None) -> ConfigElement | None:
     return config.find("imu") if config is not None else None
 
 
-@sensor_system
 class ImuSensor(_SensorSystem):
     """An IMU: orientation, angular velocity and proper linear acceleration (sensor_msgs/Imu)."""
 
@@ -270,3 +269,6 @@ class ImuSensor(_SensorSystem):
                 linear_acceleration_covariance=self._cov[1],
             )
         )
+
+
+add_plugin(ImuSensor)

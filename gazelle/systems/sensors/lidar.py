@@ -34,13 +34,13 @@ from .._base import RateGate, SystemContext, UpdateInfo
 from .._bus import MsgType
 from .._payloads import LaserScan, PointCloud, Range
 from .._plugin_config import parse_float
+from .._registration import add_plugin
 from ._common import (
     Noise,
     SensorConfigError,
     SensorLimitError,
     _SensorSystem,
     parse_noise,
-    sensor_system,
 )
 
 LIDAR_TYPES = frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"})
@@ -153,7 +153,6 @@ def parse_lidar(sensor: Sensor, log: logging.Logger) -> LidarSpec:
     return LidarSpec(h, v, rmin, rmax, parse_noise(block.find("noise"), log, f"sensor '{sensor.name}'"))
 
 
-@sensor_system
 class Lidar(_SensorSystem):
     """A ray / lidar sensor: LaserScan, PointCloud2 or Range (see the module docstring)."""
 
@@ -306,3 +305,6 @@ class Lidar(_SensorSystem):
         if r < s.range_max and noise > 0:
             r = min(r + float(self._rng.normal(0.0, noise)), s.range_max)
         self._pub.publish(Range(t, out.frame_id, out.radiation_type, fov, s.range_min, s.range_max, r))
+
+
+add_plugin(Lidar)
