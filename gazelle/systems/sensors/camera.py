@@ -33,12 +33,13 @@ from __future__ import annotations
 import logging
 import math
 from dataclasses import dataclass
-from typing import ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 
 from ...description import (
     ConfigElement,
+    Plugin,
     Sensor,
     parse_floats,
 )
@@ -53,6 +54,7 @@ from ._common import (
     Noise,
     SensorConfigError,
     SensorLimitError,
+    SensorPluginConfig,
     _SensorSystem,
     gz_scoped_topic,
     parse_noise,
@@ -256,6 +258,26 @@ OPTICAL = np.array([[0.0, -1.0, 0.0], [0.0, 0.0, -1.0], [1.0, 0.0, 0.0]])
 """Rotation from a link frame (x forward, z up) to the optical frame (z forward, x right, y down)."""
 
 
+@dataclass(frozen=True)
+class CameraPluginConfig(SensorPluginConfig):
+    """The camera plugins' settings (``libgazebo_ros_camera.so``, its depth and openni_kinect variants): the common
+    ones and ``<camera_name>``, which names the topics."""
+
+    camera_name: str = ""
+    """``<camera_name>`` (ROS 1: ``<cameraName>``), the first part of the topics; default the sensor's name."""
+
+    @classmethod
+    def settings(cls, plugin: Plugin, cfg: ConfigElement, ctx: SystemContext) -> dict[str, Any]:
+        """The common settings and ``<camera_name>``."""
+        name = child_text(cfg, "camera_name") or child_text(cfg, "cameraName") or ""
+        return super().settings(plugin, cfg, ctx) | {"camera_name": name}
+
+    def plugin_topic(self, ctx: SystemContext, sensor: Sensor | None) -> str:
+        """gazebo_ros_camera's ``<camera_name>/image_raw`` in the plugin's namespace (remappable)."""
+        name = self.camera_name or (sensor.name if sensor is not None else "camera")
+        return resolve_topic(f"{name}/image_raw", self.namespace, dict(self.remappings))
+
+
 class Camera(_SensorSystem):
     """A camera or depth camera: Image, CameraInfo, depth Image (32FC1) and PointCloud2 (see the module
     docstring). It renders only while someone subscribes."""
@@ -268,6 +290,8 @@ class Camera(_SensorSystem):
     }
     gz_system = "Sensors"
     output_kind = "image"
+    plugin_config = CameraPluginConfig
+    config: CameraPluginConfig
 
     kind = "camera"
 
