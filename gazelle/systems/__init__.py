@@ -58,6 +58,7 @@ if TYPE_CHECKING:
     from ._bus import PluginNode as PluginNode
     from ._bus import Qos as Qos
     from ._bus import resolve_topic as resolve_topic
+    from ._frames import robot_state_config as robot_state_config
     from ._payloads import Altimeter as Altimeter
     from ._payloads import CameraInfo as CameraInfo
     from ._payloads import CloudLayout as CloudLayout
@@ -101,7 +102,6 @@ if TYPE_CHECKING:
     from ._registry import supported_plugins as supported_plugins
     from .robot_state import JointStatePublisher as JointStatePublisher
     from .robot_state import RobotStatePublisher as RobotStatePublisher
-    from .robot_state import robot_state_config as robot_state_config
 
 __getattr__ = lazy_attributes(__name__, __file__)
 

@@ -45,6 +45,7 @@ from .._bus import (
     ParamValue,
     resolve_topic,
 )
+from .._frames import entity_frame_prefix
 from .._plugin_config import child_text, parse_float, ros_block
 
 T = TypeVar("T")
@@ -280,7 +281,6 @@ def sensor_output(
     gazebo_ros: the plugin's topic under its node's namespace and remappings, in ``<frame_name>``, else the
     link, as the kind's settings ``c`` (:class:`SensorPluginConfig` or its own subclass) say. Frames get the
     robot's frame prefix (its namespace) as the robot's TF does."""
-    from ..robot_state import entity_frame_prefix
 
     log = ctx.logger
     prefix = entity_frame_prefix(ctx.entity, log)

@@ -17,6 +17,7 @@ from ...description import (
 from ...physics import BodyHandle, PhysicsWorld
 from .._base import RateGate, System, SystemContext, UpdateInfo
 from .._bus import Endpoint, MsgType, resolve_topic
+from .._frames import entity_frame_prefix
 from .._payloads import WrenchStamped
 from .._plugin_config import child_text, parse_float, ros_block
 from .._registration import add_plugin
@@ -150,7 +151,6 @@ class ForceTorqueSensor(System):
         self._X_CJ = joint.child_offset.inverse()
         self._child = ctx.world.body(ctx.entity.name, joint.child)
         self._parent = ctx.world.body(ctx.entity.name, joint.parent)
-        from ..robot_state import entity_frame_prefix
 
         prefix = entity_frame_prefix(ctx.entity, log)
         if ctx.sensor is not None:  # frame_id: the frame the wrench is in (gz-sim's scoped name for the sensor frame)
