@@ -39,6 +39,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .._errors import SimError
 from .._files import atomic_write
 from ..physics import Entity
 from ..systems import Endpoint
@@ -72,7 +73,7 @@ FORMAT = 1
 checkpoint is refused by name instead of failing with a KeyError mid-restore."""
 
 
-class CheckpointError(RuntimeError):
+class CheckpointError(SimError, RuntimeError):
     """A checkpoint cannot be made or used here: the message says why."""
 
 

@@ -8,6 +8,7 @@ line, which starts it) imports rclpy; and no package reaches into another packag
 from __future__ import annotations
 
 import ast
+import builtins
 import io
 import subprocess
 import sys
@@ -20,7 +21,7 @@ from _paths import REPO
 PACKAGE = REPO / "gazelle"
 
 ALLOWED: dict[str, tuple[str, ...]] = {
-    "": (),  # gazelle/__init__.py, gazelle/_lazy.py and gazelle/_files.py
+    "": (),  # gazelle/__init__.py, gazelle/_lazy.py, gazelle/_files.py and gazelle/_errors.py
     "description": (),
     "physics": ("description",),
     "systems": ("description", "physics"),
@@ -53,8 +54,8 @@ ALLOWED: dict[str, tuple[str, ...]] = {
 }
 """Every folder of the gazelle package -> the gazelle packages it may import (an allow-list: a new folder,
 or a new arrow between two, fails until it is declared here and in docs/architecture.md). Every folder may
-import ``gazelle._lazy`` (the lazy-attribute helper) and ``gazelle._files`` (the one atomic writer and
-private-folder check)."""
+import ``gazelle._lazy`` (the lazy-attribute helper), ``gazelle._files`` (the one atomic writer and
+private-folder check) and ``gazelle._errors`` (``SimError``, the root of every error gazelle raises)."""
 
 LAYERS = tuple(k for k in ALLOWED if k)
 
@@ -108,7 +109,7 @@ def _violations() -> list[str]:
                 found.append(
                     f"{where}: the {layer or 'top'} layer imports {mod} (only {', '.join(THIRD_PARTY[parts[0]])} may)"
                 )
-            if parts[0] != "gazelle" or len(parts) < 2 or parts[1] in ("_lazy", "_files", layer):
+            if parts[0] != "gazelle" or len(parts) < 2 or parts[1] in ("_lazy", "_files", "_errors", layer):
                 continue
             if parts[1] not in ALLOWED[layer]:
                 found.append(f"{where}: the {layer or 'top'} layer imports gazelle.{parts[1]}, which it may not")
@@ -385,3 +386,68 @@ def test_the_doc_density_check_counts_docstrings_and_comments(tmp_path: Path) ->
     )
     assert _doc_density(bare) == 0.0
     assert _doc_density(told) == pytest.approx(3 / 3)
+
+
+# --------------------------------------------------------------------------- one hierarchy of errors
+_BUILTIN_EXCEPTIONS = frozenset(
+    name for name, value in vars(builtins).items() if isinstance(value, type) and issubclass(value, BaseException)
+)
+
+ERRORS_OUTSIDE_THE_ROOT = {
+    # gazelle/ros/_gazebo_services.py is being reworked with SimulationNode (issue 53, another helper's part);
+    # to be removed when that lands: SpawnFailed then derives from SimError like every other error
+    "gazelle/ros/_gazebo_services.py:SpawnFailed",
+}
+"""Exception classes not yet under :class:`SimError`; each is a to-do, not a rule."""
+
+
+def _error_problems(package: Path) -> list[str]:
+    """Every exception class of ``package`` must derive from ``SimError`` (directly or through another one of
+    the package), and no two may share a name (issue 53: SimError, MeshReadError, ControlError were each
+    defined twice, and 38 classes had one that derived from the root)."""
+    classes: dict[str, list[tuple[str, list[str]]]] = {}
+    for path in sorted(package.rglob("*.py")):
+        rel = path.relative_to(package.parent).as_posix()
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.ClassDef):
+                bases = [
+                    b.id if isinstance(b, ast.Name) else b.attr
+                    for b in node.bases
+                    if isinstance(b, ast.Name | ast.Attribute)
+                ]
+                classes.setdefault(node.name, []).append((rel, bases))
+
+    def reaches(name: str, goal: str | frozenset[str], seen: frozenset[str] = frozenset()) -> bool:
+        if (name == goal) if isinstance(goal, str) else name in goal:
+            return True
+        if name in seen:
+            return False
+        return any(reaches(b, goal, seen | {name}) for _rel, bases in classes.get(name, []) for b in bases)
+
+    problems = []
+    for name, defs in sorted(classes.items()):
+        errors = [(rel, bases) for rel, bases in defs if any(reaches(b, _BUILTIN_EXCEPTIONS) for b in bases)]
+        if len(errors) > 1:
+            problems.append(f"{name} is defined {len(errors)} times: {', '.join(rel for rel, _ in errors)}")
+        for rel, bases in errors:
+            if name != "SimError" and not any(reaches(b, "SimError") for b in bases):
+                if f"{rel}:{name}" not in ERRORS_OUTSIDE_THE_ROOT:
+                    problems.append(f"{rel}: {name} does not derive from SimError")
+    return problems
+
+
+def test_every_error_derives_from_the_one_root_and_none_is_defined_twice() -> None:
+    problems = _error_problems(REPO / "gazelle")
+    assert not problems, "\n".join(problems)
+
+
+def test_the_error_check_finds_a_stray_error_and_a_twin(tmp_path: Path) -> None:
+    pkg = tmp_path / "pkg"
+    pkg.mkdir()
+    (pkg / "_errors.py").write_text("class SimError(Exception):\n    pass\n")
+    (pkg / "a.py").write_text("class Fine(SimError, ValueError):\n    pass\nclass Stray(RuntimeError):\n    pass\n")
+    (pkg / "b.py").write_text("class Fine(SimError):\n    pass\nclass NotAnError:\n    pass\n")
+    assert _error_problems(pkg) == [
+        "Fine is defined 2 times: pkg/a.py, pkg/b.py",
+        "pkg/a.py: Stray does not derive from SimError",
+    ]

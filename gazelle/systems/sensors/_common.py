@@ -30,6 +30,7 @@ from typing import Any, ClassVar, Protocol, Self, TypeVar
 
 import numpy as np
 
+from ..._errors import SimError
 from ...description import (
     ConfigElement,
     Plugin,
@@ -144,7 +145,7 @@ def parse_noise(el: ConfigElement | None, log: logging.Logger, what: str) -> Noi
     )
 
 
-class SensorConfigError(ValueError):
+class SensorConfigError(SimError, ValueError):
     """A sensor's configuration that cannot be simulated (the message names the file:line)."""
 
 
