@@ -196,14 +196,15 @@ def gz_scoped_topic(ctx: SystemContext, link: str, sensor: Sensor, suffix: str) 
     return f"/world/{ctx.world_name}/model/{ctx.entity.name}/link/{link}/sensor/{sensor.name}/{suffix}"
 
 
+# A kind whose plugin has settings of its own subclasses SensorPluginConfig in its own module and names the subclass
+# in its class's ``plugin_config`` (the lidar's RayPluginConfig, the IMU's ImuPluginConfig, the camera's
+# CameraPluginConfig), overriding ``settings`` to read them and, where its output differs, ``plugin_topic``,
+# ``message_type`` or ``output``: nothing here knows a kind or a plugin's file name.
 @dataclass(frozen=True)
 class SensorPluginConfig:
     """What every gazebo_ros sensor plugin (inside a ``<sensor>``) is configured with: where it publishes and in
-    which frame, ROS 2's names and ROS 1's. A kind whose plugin has settings of its own subclasses this in its own
-    module and names the subclass in its class's ``plugin_config`` (the lidar's ``RayPluginConfig``, the IMU's
-    ``ImuPluginConfig``, the camera's ``CameraPluginConfig``), overriding :meth:`settings` to read them and, where
-    its output differs, :meth:`plugin_topic`, :meth:`message_type` or :meth:`output`. Without a plugin (a gz-sim
-    model), the sensor's own ``<topic>`` and ``<frame_id>``/``<gz_frame_id>`` apply."""
+    which frame, ROS 2's names and ROS 1's. Without a plugin (a gz-sim model), the sensor's own ``<topic>`` and
+    ``<frame_id>``/``<gz_frame_id>`` apply."""
 
     frame_name: str = ""
     """``<frame_name>`` (ROS 1: ``<frameName>``): the header's frame_id; default the sensor's link."""
