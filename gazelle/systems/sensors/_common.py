@@ -219,8 +219,8 @@ class SensorPluginConfig:
     """A ROS 1-era model plugin without a ``<sensor>`` (``<bodyName>``): the link it measures; read by the kinds
     whose plugin has that form (the IMU)."""
     update_rate: float = 0.0
-    """A ROS 1 plugin's ``<updateRate>``, Hz of sim time (0: every step), read by the kinds whose plugin has one;
-    sensors use their ``<update_rate>``."""
+    """A ROS 1 plugin's ``<updateRate>``, Hz of sim time (0: every step), which every ROS 1 sensor plugin has: the
+    IMU's model plugin and the range plugin run at it; sensors use their ``<update_rate>``."""
 
     @classmethod
     def read(cls, ctx: SystemContext) -> Self:
@@ -238,6 +238,7 @@ class SensorPluginConfig:
             "topic": child_text(cfg, "topicName") or "~/out",
             "namespace": ns or child_text(cfg, "robotNamespace") or ctx.entity.namespace,
             "remappings": tuple(remaps.items()),
+            "update_rate": parse_float(cfg, "updateRate", 0.0, ctx.logger),
         }
 
     def plugin_topic(self, ctx: SystemContext, sensor: Sensor | None) -> str:

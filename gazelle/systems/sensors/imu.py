@@ -153,16 +153,18 @@ def _imu_block(sensor: Sensor | None) -> ConfigElement | None:
 @dataclass(frozen=True)
 class ImuPluginConfig(SensorPluginConfig):
     """The IMU plugins' settings: ``libgazebo_ros_imu_sensor.so`` (inside a ``<sensor>``) and ROS 1's
-    ``libgazebo_ros_imu.so`` model plugin (``<bodyName>``, ``<updateRate>``; its ``<gaussianNoise>`` is read with
-    the noise)."""
+    ``libgazebo_ros_imu.so`` model plugin (``<bodyName>``, ``<updateRate>``, ``<gaussianNoise>``)."""
 
+    gaussian_noise: float = 0.0
+    """ROS 1's ``<gaussianNoise>``: the standard deviation of every channel when no ``<imu><noise>`` says more
+    (:func:`parse_imu_noise`)."""
     initial_orientation_as_reference: bool = False
     """``<initial_orientation_as_reference>`` (ROS 1: ``<initialOrientationAsReference>``): report the orientation
     relative to the sensor's spawn orientation instead of the world (REP 145's reference)."""
 
     @classmethod
     def settings(cls, plugin: Plugin, cfg: ConfigElement, ctx: SystemContext) -> dict[str, Any]:
-        """The common settings, the orientation reference and ROS 1's model plugin's link and rate."""
+        """The common settings, the orientation reference and ROS 1's model plugin's link and noise."""
         log = ctx.logger
         return super().settings(plugin, cfg, ctx) | {
             "initial_orientation_as_reference": parse_bool(
@@ -174,7 +176,7 @@ class ImuPluginConfig(SensorPluginConfig):
                 log,
             ),
             "body_name": child_text(cfg, "bodyName") or child_text(cfg, "body_name") or "",
-            "update_rate": parse_float(cfg, "updateRate", 0.0, log),
+            "gaussian_noise": parse_float(cfg, "gaussianNoise", 0.0, log),
         }
 
 

@@ -186,7 +186,7 @@ class RayPluginConfig(SensorPluginConfig):
     @classmethod
     def settings(cls, plugin: Plugin, cfg: ConfigElement, ctx: SystemContext) -> dict[str, Any]:
         """The common settings, the output type (each ROS 1 plugin's own default) and the range's radiation,
-        and ROS 1's range plugin's ``<updateRate>``/``<gaussianNoise>``."""
+        and ROS 1's ``<gaussianNoise>`` (the range plugin adds it to its readings)."""
         out = super().settings(plugin, cfg, ctx)
         log, filename = ctx.logger, plugin.filename.lower()
         ros1_range = "gazebo_ros_range" in filename
@@ -202,7 +202,6 @@ class RayPluginConfig(SensorPluginConfig):
             "output_type": raw_type or "sensor_msgs/PointCloud2",
             "radiation_type": (radiation or ("ultrasound" if ros1_range else "infrared")).strip().lower(),
             "min_intensity": parse_float(cfg, "min_intensity", -math.inf, log),
-            "update_rate": parse_float(cfg, "updateRate", 0.0, log),
             "gaussian_noise": parse_float(cfg, "gaussianNoise", 0.0, log),
         }
 
