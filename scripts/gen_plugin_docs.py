@@ -21,7 +21,17 @@ OUT = REPO / "docs" / "plugins.md"
 
 
 def field_docs(cls: type) -> dict[str, str]:
-    """Attribute docstrings (the string literal right after each field) of a dataclass."""
+    """Attribute docstrings (the string literal right after each field) of a dataclass, its bases' included (a
+    sensor kind's plugin settings extend the ones every sensor plugin has)."""
+    docs: dict[str, str] = {}
+    for base in reversed(cls.__mro__[:-1]):  # object has no source
+        if dataclasses.is_dataclass(base):
+            docs.update(_own_field_docs(base))
+    return docs
+
+
+def _own_field_docs(cls: type) -> dict[str, str]:
+    """The attribute docstrings written in ``cls``'s own body."""
     tree = ast.parse(textwrap.dedent(inspect.getsource(cls)))
     body = tree.body[0].body  # type: ignore[attr-defined]
     docs: dict[str, str] = {}

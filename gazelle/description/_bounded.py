@@ -31,6 +31,8 @@ import time
 from collections.abc import Callable
 from typing import TypeVar
 
+from .._errors import SimError
+
 T = TypeVar("T")
 
 DEFAULT_TIMEOUT_SEC = 5.0
@@ -78,7 +80,7 @@ class _Budget:
         return min(0.05, self.wall_end - now)
 
 
-class BoundExceeded(Exception):
+class BoundExceeded(SimError):
     """The bounded work ran out of time or memory, or its child process died."""
 
     def __init__(self, message: str, *, timed_out: bool = False) -> None:
@@ -318,7 +320,7 @@ class BoundedWorker:
         raise BoundExceeded(f"{what} failed: {value}")
 
 
-class _Timeout(Exception):
+class _Timeout(SimError):
     pass
 
 

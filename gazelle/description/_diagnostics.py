@@ -13,6 +13,8 @@ import enum
 import re
 from dataclasses import dataclass, field
 
+from .._errors import SimError
+
 EXCERPT_CHARS = 160
 """The longest excerpt of a user's value that a message echoes (then ``…`` and its length)."""
 MESSAGE_CHARS = 600
@@ -139,10 +141,6 @@ class Diagnostic:
 
     def __str__(self) -> str:
         return self.format()
-
-
-class SimError(Exception):
-    """Base class of every error gazelle raises on purpose."""
 
 
 class ModelLoadError(SimError, ValueError):

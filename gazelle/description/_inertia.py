@@ -21,8 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from ._meshes import MeshReadError as _MeshFileError
-from ._meshes import load_mesh
+from ._meshes import MeshReadError, load_mesh
 from ._model import Box, Capsule, Cone, Cylinder, Ellipsoid, Geometry, Inertial, Mesh, Sphere
 from ._pose import IDENTITY, Pose, Quat
 
@@ -53,10 +52,6 @@ class UnitProperties:
     """Inertia tensor about ``center`` at density 1 (kg·m^2 per kg/m^3)."""
     note: str = ""
     """How it was obtained when approximated (e.g. bounding box), else empty."""
-
-
-class MeshReadError(Exception):
-    """A mesh file could not be read for its mass properties."""
 
 
 def _diag(x: float, y: float, z: float) -> Matrix3:
@@ -135,10 +130,7 @@ def _read_stl(path: str) -> npt.NDArray[np.float64]:
 def _read_with_trimesh(path: str) -> npt.NDArray[np.float64]:
     """A mesh file's triangles (n x 3 x 3 vertices) for the mass-properties integration; an unreadable file is a
     MeshReadError naming why."""
-    try:
-        vertices, faces = load_mesh(path)
-    except _MeshFileError as err:
-        raise MeshReadError(str(err)) from err
+    vertices, faces = load_mesh(path)
     return vertices[faces]
 
 

@@ -13,8 +13,10 @@ import os
 import numpy as np
 import numpy.typing as npt
 
+from .._errors import SimError
 
-class MeshReadError(Exception):
+
+class MeshReadError(SimError):
     """A mesh file could not be read."""
 
 

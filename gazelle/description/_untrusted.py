@@ -27,6 +27,8 @@ from typing import Any
 
 import yaml
 
+from .._errors import SimError
+
 MAX_PARAMS_FILE_BYTES = 4 * 1024 * 1024
 """A parameters file larger than this is refused (MoveIt's and ros2_control's are a few KB)."""
 MAX_YAML_NODES = 200_000
@@ -49,7 +51,7 @@ beside the robot file with the user's own rights (the server reads no file of th
 controller manager with the same bounds as a file, as the spawner's ``<ctrl>.params_file_yaml``."""
 
 
-class UntrustedInputError(ValueError):
+class UntrustedInputError(SimError, ValueError):
     """A file or text refused by a bound; the message names it (and the line) but never its content."""
 
 

@@ -45,8 +45,8 @@ from ._diagnostics import DiagnosticSink, ErrorCode
 from ._model import GazeboExtension, JointType, Material, Model, Plugin, Sensor
 from ._pose import Pose
 from ._resources import ResourceResolver
-from ._sdf_parts import _Parts
-from ._sdf_reader import IGNORED, MAX_VERSION, _Doc
+from ._sdf_parts import read_surface
+from ._sdf_reader import IGNORED, MAX_VERSION, Workspace, _Doc
 from ._semantic_model import ControlComponent, ControlInterface, Ros2Control
 from ._urdf_checks import (
     check_attributes,
@@ -240,11 +240,11 @@ class _Reader(ElementReader):
         and, like sdformat's copy, replaces the surface the link's earlier blocks gave (a later block's short forms
         still apply on top). ``<laser_retro>`` and ``<max_contacts>`` are read silently as an SDF collision's are;
         anything else would be a second ``<pose>`` or ``<geometry>`` of the collision, and is warned about."""
-        sdf, sdf_doc = _Parts(self.sink, self.resolver), _Doc(self.source, None, MAX_VERSION, False)
+        sdf, sdf_doc = Workspace(self.sink, self.resolver), _Doc(self.source, None, MAX_VERSION, False)
         for child in child_elements(element):
             tag = local_name(child)
             if tag == "surface":
-                surface = sdf.surface(child, sdf_doc)
+                surface = read_surface(sdf, child, sdf_doc)
                 link.surface = {f.name: v for f in fields(surface) if (v := getattr(surface, f.name)) is not None}
             elif tag not in IGNORED["collision"]:
                 self.unsupported(child, f'<{tag}> in <gazebo reference="{link.name}"><collision>')

@@ -36,6 +36,7 @@ from xml.dom import expatbuilder
 import xacro
 import xacro.substitution_args as xacro_subst
 
+from .._errors import SimError
 from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
 from ._resources import ResourceResolver
 from ._xml import LOCATION_ATTRIBUTE, encode_location, relax_comments
@@ -46,7 +47,7 @@ _TRACKED = ("eval_all", "process_include", "grab_macro", "grab_property", "handl
 """xacro functions whose first argument is the element being processed."""
 
 
-class _PackageNotFound(Exception):
+class _PackageNotFound(SimError):
     """``$(find pkg)`` named a package the resolver does not know."""
 
     def __init__(self, package: str):
@@ -57,7 +58,7 @@ class _PackageNotFound(Exception):
         )
 
 
-class _IncludedXmlError(Exception):
+class _IncludedXmlError(SimError):
     """A file read by xacro (the main text or an include) is not well-formed XML."""
 
     def __init__(self, file: str | None, line: int | None, message: str):

@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from .._errors import SimError
 from ._control import TWIST_CONTROLS, ControlSettings
 from ._measurement import STATE_NAMES, STATE_SIZE
 from ._sensor_config import KINDS, SensorConfig
@@ -27,7 +28,7 @@ NO_EFFECT = frozenset({"tf_prefix", "reset_on_time_jump", "debug_out_file", "sta
 ``stamped_control`` (in params/ekf.yaml, never declared: ``cmd_vel`` is a geometry_msgs/Twist)."""
 
 
-class ConfigError(ValueError):
+class ConfigError(SimError, ValueError):
     """A parameter ekf_node cannot use; the message names it."""
 
 

@@ -21,6 +21,7 @@ import mujoco
 import numpy as np
 
 from .. import description as desc
+from .._errors import SimError
 from ..description import (
     Collision,
     Cone,
@@ -52,7 +53,7 @@ KINEMATIC_ARMATURE = 1e8
 """Armature of the dofs above a kinematic link (kg·m² or kg): contacts see an immovable obstacle."""
 
 
-class BuildError(Exception):
+class BuildError(SimError):
     """A description cannot become a MuJoCo model; the message names the element."""
 
 

@@ -13,6 +13,7 @@ from typing import Any
 
 import mujoco
 
+from .._errors import SimError
 from ..description import Model, Pose, excerpt
 from ._builder import SEP, BuildError, BuiltEntity
 
@@ -53,7 +54,7 @@ class ErrorKind(enum.StrEnum):
     """MuJoCo ran out of its memory bounds (too many contacts or constraints)."""
 
 
-class WorldError(Exception):
+class WorldError(SimError):
     """A request on the world failed; :attr:`kind` says how."""
 
     def __init__(self, kind: ErrorKind, message: str):

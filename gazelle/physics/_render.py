@@ -20,11 +20,12 @@ import os
 import mujoco
 import numpy as np
 
+from .._errors import SimError
 from ..description import Pose, rotation_matrix
 from ._builder import SHOWN_COLLISION_GROUP, VISUAL_GROUP
 
 
-class RenderError(RuntimeError):
+class RenderError(SimError, RuntimeError):
     """No OpenGL context could be made (no EGL or OSMesa library): the message says which were tried."""
 
 

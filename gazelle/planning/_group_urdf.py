@@ -15,13 +15,14 @@ from __future__ import annotations
 
 from lxml import etree
 
+from .._errors import SimError
 from ..description import Semantics
 from ._names import quoted
 
 _HEADER = '<?xml version="1.0" ?><robot name="{}" xmlns:xacro="http://ros.org/wiki/xacro">'
 
 
-class GroupUrdfError(ValueError):
+class GroupUrdfError(SimError, ValueError):
     """The group is not in the SRDF, or its URDF would not be valid: the message says which, as MoveIt's."""
 
 

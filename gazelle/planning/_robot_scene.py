@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 from lxml import etree
 
+from .._errors import SimError
 from ..description import ModelLoadError, ResourceResolver, Semantics, Severity, load_string
 from ._collision_matrix import CollisionMatrix
 from ._names import quoted
@@ -41,7 +42,7 @@ START_BOUNDS_ERROR = 0.05
 """How far past a joint limit a measured start state may read and still be planned from (moved onto it)."""
 
 
-class PlanningError(Exception):
+class PlanningError(SimError):
     """A request that cannot be met; ``code`` is the name of a MoveIt error code (``NO_IK_SOLUTION``)."""
 
     def __init__(self, code: str, message: str) -> None:

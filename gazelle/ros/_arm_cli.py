@@ -18,6 +18,7 @@ import sys
 import time
 from typing import Any
 
+from .._errors import SimError
 from ..description import ModelLoadError, Semantics, load_string
 
 TOLERANCE_M = 1e-4
@@ -25,7 +26,7 @@ TOLERANCE_RAD = 1e-3
 """MoveGroupCommander's default goal tolerances."""
 
 
-class ArmError(Exception):
+class ArmError(SimError):
     """A request this command refuses before anything moves."""
 
 

@@ -57,6 +57,7 @@ from tf2_msgs.msg import TFMessage
 from trajectory_msgs.msg import JointTrajectory as JointTrajectoryMsg
 from trajectory_msgs.msg import JointTrajectoryPoint
 
+from .._errors import SimError
 from ..description import Pose
 from ..systems import (
     Altimeter,
@@ -566,7 +567,7 @@ def second_tier() -> Iterator[None]:
         raise
 
 
-class InterfaceMissing(ImportError):
+class InterfaceMissing(SimError, ImportError):
     """An interface package gazelle builds (control_msgs, moveit_msgs, ...) is not in this venv yet."""
 
     def __init__(self, package: str) -> None:

@@ -24,6 +24,7 @@ from simulation_interfaces.srv import (
     SetEntityState,
 )
 
+from .._errors import SimError
 from ..description import (
     BoundedWorker,
     BoundExceeded,
@@ -47,7 +48,7 @@ def _result(code: int, message: str = "") -> Result:
 OK = Result.RESULT_OK
 
 
-class _Refused(Exception):
+class _Refused(SimError):
     """A request failed with a result code."""
 
     def __init__(self, code: int, message: str):

@@ -21,6 +21,8 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from .._errors import SimError
+
 KINDS = ("msg", "srv", "action")
 """The interface kinds, and the only submodules of an interface package that are imported."""
 PACKAGE_NAME = re.compile(r"[a-z](?:_?[a-z0-9])*")
@@ -60,7 +62,7 @@ _NESTED = {
 """An action's parts that rosidl_generator_py keeps on the action class rather than in the module."""
 
 
-class InterfaceError(ValueError):
+class InterfaceError(SimError, ValueError):
     """A type name that does not name an installed interface, or values that do not fit it; the message is
     the one line to print."""
 

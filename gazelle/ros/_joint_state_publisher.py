@@ -36,6 +36,7 @@ from typing import Any
 
 from rclpy.node import Node
 
+from .._errors import SimError
 from ..description import JointType, Model, ModelLoadError, load_string
 
 URDF_SKIPPED = frozenset({JointType.FIXED, JointType.FLOATING, JointType.PLANAR})
@@ -45,7 +46,7 @@ SDF_SKIPPED = frozenset({JointType.FIXED, JointType.BALL, JointType.UNIVERSAL, J
 description has no type for and so never reach here)."""
 
 
-class DescriptionError(ValueError):
+class DescriptionError(SimError, ValueError):
     """A description joint_state_publisher cannot use; the message names the joint (upstream's wording)."""
 
 

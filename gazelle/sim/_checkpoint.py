@@ -34,17 +34,43 @@ import platform
 import stat
 import threading
 import types
+from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol, TypeVar
 
 import numpy as np
 
+from .._errors import SimError
 from .._files import atomic_write
-from ..physics import Entity
-from ..systems import Endpoint
+from ..description import Model, Pose
+from ..physics import Entity, PhysicsWorld
+from ..systems import Bus, Endpoint, SystemManager
 
-if TYPE_CHECKING:
-    from ._simulation import Simulation
+T = TypeVar("T")
+
+
+class Simulation(Protocol):
+    """What a checkpoint saves of a simulation and sets again (``_simulation.Simulation``): its world, systems and
+    bus, the options it was made with, its counters, and the two calls that add an entity and run on its thread."""
+
+    world: PhysicsWorld
+    systems: SystemManager
+    bus: Bus
+    rtf: float
+    seed: int | None
+    visual_geoms: bool
+    robot_state_publisher: bool
+    iterations: int
+    paused: bool
+
+    def call(self, fn: Callable[[], T], timeout: float | None = 10.0) -> T: ...
+
+    def add_entity_placed(
+        self, model: Model, name: str, X_WM: Pose, namespace: str = "", *, spawned: bool = True
+    ) -> Entity: ...
+
+
+S = TypeVar("S", bound=Simulation)
 
 MAGIC = "gazelle-checkpoint"
 """The first key of every checkpoint: a pickle of something else is refused with "not a gazelle checkpoint"
@@ -72,7 +98,7 @@ FORMAT = 1
 checkpoint is refused by name instead of failing with a KeyError mid-restore."""
 
 
-class CheckpointError(RuntimeError):
+class CheckpointError(SimError, RuntimeError):
     """A checkpoint cannot be made or used here: the message says why."""
 
 
@@ -468,18 +494,16 @@ def _check_header(raw: bytes, p: Path) -> None:
         raise CheckpointError(f"{p}: checkpoint format {value}, this gazelle reads {FORMAT}")
 
 
-def restore(payload: dict[str, Any], world: Any = None) -> Simulation:
-    """A new Simulation that goes on from the checkpoint. ``world``, when given, must be the checkpoint's
-    world (a scenario's world): another one is a CheckpointError."""
-    from ._simulation import Simulation
-
+def restore(payload: dict[str, Any], make: Callable[..., S], world: Any = None) -> S:
+    """A new simulation (made by ``make``, the Simulation class) that goes on from the checkpoint. ``world``, when
+    given, must be the checkpoint's world (a scenario's world): another one is a CheckpointError."""
     saved_world = payload["world"]
     if world is not None and pickle.dumps(world) != pickle.dumps(saved_world):
         raise CheckpointError(
             f"the checkpoint is of world '{saved_world.name}', not of the one given ('{getattr(world, 'name', '?')}')"
         )
     opts = payload["options"]
-    sim = Simulation(
+    sim = make(
         saved_world,
         rtf=opts["rtf"],
         robot_state_publisher=opts["robot_state_publisher"],

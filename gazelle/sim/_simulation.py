@@ -504,7 +504,7 @@ class Simulation(SpawningMixin):
         """
         from . import _checkpoint
 
-        return _checkpoint.restore(_checkpoint.read(path), world)
+        return _checkpoint.restore(_checkpoint.read(path), cls, world)
 
     def reset(self, *, time_: bool = True, state: bool = True, spawned: bool = True) -> None:
         """Reset sim time, entity states and/or remove the spawned entities (thread-safe).

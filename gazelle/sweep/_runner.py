@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from .._errors import SimError
 from .._files import atomic_write, private_folder
 from ._spec import ParamValue, RunSpec, SweepError, grid, load_scenario, scenario_from_file
 
@@ -47,7 +48,7 @@ def _metric(value: Any) -> Any:
     return f if math.isfinite(f) else str(f)
 
 
-class _RunTimeout(Exception):
+class _RunTimeout(SimError):
     pass
 
 

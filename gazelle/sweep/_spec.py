@@ -12,6 +12,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, cast
 
+from .._errors import SimError
+
 ParamValue = float | int | str
 Scenario = Callable[..., Mapping[str, Any]]
 """``scenario(sim, params, seed) -> metrics``: ``sim`` is a fresh in-process ``Simulation`` (no ROS),
@@ -19,7 +21,7 @@ Scenario = Callable[..., Mapping[str, Any]]
 A metric ``passed`` (bool) says whether the run passed; other metrics are numbers."""
 
 
-class SweepError(ValueError):
+class SweepError(SimError, ValueError):
     """Bad input to a sweep (a scenario that cannot be found, a parameter that cannot be read): one line."""
 
 

@@ -11,9 +11,10 @@ Where things are (docs/extending.md has the checklists):
 * ``_base.py``: :class:`System` and its phases, :class:`SystemContext` (what a system may touch while it
   configures), :class:`RateGate`; the names a plugin answers to are declared on the class
   (``plugin_files``, ``gz_plugin``).
-* ``_registry.py``: which system runs a ``<plugin>`` or a ``<sensor>`` (derived from the declarations:
-  ``PLUGIN_SYSTEMS`` lists the plugin classes, ``sensors.SENSOR_SYSTEMS`` the sensor classes), and the
-  warning for each one that does not run.
+* ``_registration.py``: ``add_plugin(Cls)``, the one call at the bottom of a plugin's or sensor's own module
+  that registers it (gz-sim's ``GZ_ADD_PLUGIN``); the registry imports every module of this package to find them.
+* ``_registry.py``: which system runs a ``<plugin>`` or a ``<sensor>`` (derived from the registered classes'
+  declarations), and the warning for each one that does not run.
 * ``_bus.py``: the topics between systems and the ROS bridge (endpoints, QoS, the message types);
   ``_payloads.py``: the message payloads (plain dataclasses; ``gazelle.ros`` converts them).
 * ``_plugin_config.py``: reading a ``<plugin>`` block (texts, numbers, flags, the ``<ros>`` block) and a
@@ -57,6 +58,7 @@ if TYPE_CHECKING:
     from ._bus import PluginNode as PluginNode
     from ._bus import Qos as Qos
     from ._bus import resolve_topic as resolve_topic
+    from ._frames import robot_state_config as robot_state_config
     from ._payloads import Altimeter as Altimeter
     from ._payloads import CameraInfo as CameraInfo
     from ._payloads import CloudLayout as CloudLayout
@@ -100,7 +102,6 @@ if TYPE_CHECKING:
     from ._registry import supported_plugins as supported_plugins
     from .robot_state import JointStatePublisher as JointStatePublisher
     from .robot_state import RobotStatePublisher as RobotStatePublisher
-    from .robot_state import robot_state_config as robot_state_config
 
 __getattr__ = lazy_attributes(__name__, __file__)
 

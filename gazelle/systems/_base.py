@@ -77,7 +77,8 @@ class System:
     plugin_files: ClassVar[tuple[str, ...]] = ()
     """The ``<plugin filename>`` values of a model or world (without ``lib`` and ``.so``; a ``name`` matches
     too) that run this system, for plugins that are not gz-sim systems: gazebo_ros's, ros2_control's,
-    gazelle's own. A class that declares a name and is listed in ``_registry.PLUGIN_SYSTEMS`` is run for it."""
+    gazelle's own. A class that declares a name and registers itself (``add_plugin(Cls)`` at the bottom of its
+    module, ``_registration.py``) is run for it."""
     gz_plugin: ClassVar[str] = ""
     """The gz-sim system this one is, by its class name (``DiffDrive``): gz-sim's and Ignition's file and
     class spellings all select it (``gz-sim-diff-drive-system``, ``gz::sim::systems::DiffDrive``,

@@ -1,7 +1,8 @@
 """Which system runs a ``<plugin>`` or a ``<sensor>``, and a warning naming each one that does not run.
 
-Nothing here is a table kept by hand: the plugin names come from the systems' declarations
-(:data:`PLUGIN_SYSTEMS`, and the sensor classes' ``sdf_types`` / ``classic_plugins`` / ``gz_system``).
+Nothing here is a table kept by hand: the plugin names come from the declarations of the systems that register
+themselves in their own modules (``_registration.add_plugin``): ``plugin_files`` / ``gz_plugin``, and the sensor
+classes' ``sdf_types`` / ``classic_plugins`` / ``gz_system``.
 The rest is what to say about the others: not simulated yet, built in, or a likely typo of a known name."""
 
 from __future__ import annotations
@@ -9,13 +10,17 @@ from __future__ import annotations
 import functools
 import logging
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any, cast
 
 from ..description import Diagnostic, ErrorCode, Model, Plugin, Sensor, Severity, World
 from ._base import System
 from ._plugin_names import RSP_PLUGIN
+from ._registration import registered
+
+if TYPE_CHECKING:
+    from .sensors import SensorClass
 
 _log = logging.getLogger("gazelle.systems")
 
@@ -26,26 +31,6 @@ def normalised(filename: str) -> str:
     name = re.sub(r"^lib", "", name)
     name = re.sub(r"\.(so|dylib|dll)$", "", name)
     return name
-
-
-PLUGIN_SYSTEMS = (
-    "diff_drive:DiffDrive",
-    "robot_state:JointStatePublisher",
-    "robot_state:GzJointStatePublisher",
-    "gz_diff_drive:GzDiffDrive",
-    "joint_controllers:JointPositionController",
-    "joint_controllers:JointController",
-    "joint_controllers:JointCommands",
-    "pose_publisher:P3D",
-    "odometry_publisher:OdometryPublisher",
-    "sensors:ForceTorqueSensor",
-    "sensors:ImuSensor",
-    "ros2_control:ControllerManager",
-)
-"""The systems a model's or world's ``<plugin>`` can run (``module:Class`` under gazelle.systems, imported on
-first use): each declares the names it answers to (:attr:`System.plugin_files`, :attr:`System.gz_plugin`).
-A new plugin is its class plus one line here; the sensors that sit inside a ``<sensor>`` are declared in
-``systems.sensors.SENSOR_SYSTEMS`` instead."""
 
 
 def _kebab(name: str) -> str:
@@ -63,21 +48,27 @@ def plugin_names(cls: type[System]) -> tuple[str, ...]:
     return (*own.get("plugin_files", ()), *gz)
 
 
-def plugin_table(entries: tuple[str, ...] = PLUGIN_SYSTEMS) -> dict[str, type[System]]:
-    """Plugin name -> system class, from the declarations of ``entries``.
+def is_sensor(cls: type[System]) -> bool:
+    """Whether ``cls`` runs ``<sensor>`` elements: it declares the ``sdf_types`` it simulates."""
+    return bool(getattr(cls, "sdf_types", None))
+
+
+def plugin_table(classes: Iterable[type[System]] | None = None) -> dict[str, type[System]]:
+    """Plugin name -> system class, from the declarations of ``classes`` (None: every registered system,
+    :func:`~._registration.add_plugin`).
 
     Raises:
-        ValueError: an entry that declares no name, or two that declare the same one.
+        ValueError: a class that declares neither a plugin name nor a sensor type, or two classes that declare
+            the same name.
     """
-    import importlib
-
     out: dict[str, type[System]] = {}
-    for entry in entries:
-        module, _, cls_name = entry.partition(":")
-        cls = getattr(importlib.import_module(f"{__package__}.{module}"), cls_name)
+    for cls in registered() if classes is None else classes:
         names = plugin_names(cls)
-        if not names:
-            raise ValueError(f"{entry} declares no plugin name (plugin_files or gz_plugin)")
+        if not names and not is_sensor(cls):
+            raise ValueError(
+                f"{cls.__module__}.{cls.__qualname__} declares no plugin name (plugin_files or gz_plugin) "
+                "and no sensor type (sdf_types)"
+            )
         for name in names:
             if name in out:
                 raise ValueError(f"plugin name '{name}' is declared by {out[name].__name__} and {cls.__name__}")
@@ -106,18 +97,21 @@ def _gz_spellings(name: str, file: str = "") -> tuple[str, ...]:
     )
 
 
+def sensor_classes() -> list[SensorClass]:
+    """Every registered sensor kind (a class that declares ``sdf_types``), by module."""
+    return [cast("SensorClass", cls) for cls in registered() if is_sensor(cls)]
+
+
 @functools.cache
 def _sensor_tables() -> tuple[
     dict[str, tuple[Callable[[], System], frozenset[str]]], dict[str, dict[str, Callable[[], System]]]
 ]:
-    """From every sensor class's declaration (``systems.sensors.SENSOR_SYSTEMS``): the gazebo_ros plugins
-    that sit inside a ``<sensor>`` (the system and the sensor types each takes), and the gz-sim world
-    systems that run the sensors of a type that have no gazebo_ros plugin (imported on first use)."""
-    from .sensors import SENSOR_SYSTEMS
-
+    """From every sensor class's declaration (:func:`sensor_classes`): the gazebo_ros plugins that sit inside a
+    ``<sensor>`` (the system and the sensor types each takes), and the gz-sim world systems that run the sensors
+    of a type that have no gazebo_ros plugin."""
     plugins: dict[str, tuple[Callable[[], System], frozenset[str]]] = {}
     world: dict[str, dict[str, Callable[[], System]]] = {}
-    for cls in SENSOR_SYSTEMS:
+    for cls in sensor_classes():
         for plugin, types in cls.classic_plugins.items():
             plugins[plugin] = (cls, types if types is not None else cls.sdf_types)
         for spelling in _gz_spellings(cls.gz_system, cls.gz_file) if cls.gz_system else ():

@@ -21,8 +21,10 @@ from ..physics import BodyHandle, PhysicsWorld
 from ._actuation import VelocityServo, add_wheel_servo
 from ._base import System, SystemContext, UpdateInfo
 from ._bus import Endpoint, MsgType, resolve_topic
+from ._frames import entity_frame_prefix
 from ._payloads import JointStates, Odometry, Transform, TransformBatch, Twist
 from ._plugin_config import all_texts, child_text, parse_bool, parse_float, ros_block
+from ._registration import add_plugin
 
 ODOM_ENCODER = 0
 ODOM_WORLD = 1
@@ -253,7 +255,6 @@ class DiffDrive(System):
         self.log = ctx.logger
         self.config = c = parse_config(ctx, self.log)
         self._entity = ctx.entity.name
-        from .robot_state import entity_frame_prefix  # a namespaced robot's frames: r1/odom, r1/base_link
 
         self.prefix = entity_frame_prefix(ctx.entity, self.log)
         model = ctx.entity.model
@@ -533,3 +534,6 @@ def joints_listing(model: Model) -> str:
     """``The model's joints: a (continuous), b (fixed)`` for messages about a joint that is not there."""
     names = ", ".join(f"{j.name} ({j.type.value})" for j in model.joints) or "none"
     return f"The model's joints: {names}."
+
+
+add_plugin(DiffDrive)

@@ -30,8 +30,10 @@ from ..physics import PhysicsWorld
 from ._actuation import VelocityServo, add_wheel_servo
 from ._base import RateGate, System, SystemContext, UpdateInfo
 from ._bus import Endpoint, MsgType, resolve_topic
+from ._frames import entity_frame_prefix
 from ._payloads import Odometry, Transform, TransformBatch, Twist
 from ._plugin_config import all_texts, child_text, parse_float
+from ._registration import add_plugin
 from .diff_drive import joints_listing, wheel_direction_hint
 
 _INF = math.inf
@@ -233,7 +235,6 @@ class GzDiffDrive(System):
         self.config = c = parse_config(ctx, log)
         entity = ctx.entity
         self._entity = model_name = entity.name
-        from .robot_state import entity_frame_prefix
 
         prefix = entity_frame_prefix(entity, log)
         if not c.left_joints or not c.right_joints:
@@ -336,3 +337,6 @@ class GzDiffDrive(System):
         batch = TransformBatch((Transform(stamp, self.frame_id, self.child_frame_id, pose),))
         for pub in tf_pubs:
             pub.publish(batch)
+
+
+add_plugin(GzDiffDrive)

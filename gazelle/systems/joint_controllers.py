@@ -27,6 +27,7 @@ from ._base import RateGate, System, SystemContext, UpdateInfo
 from ._bus import MsgType, resolve_topic
 from ._payloads import Float64
 from ._plugin_config import all_texts, child_text, parse_bool, parse_float, ros_block
+from ._registration import add_plugin
 
 _MOVABLE = (JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC)
 
@@ -398,3 +399,8 @@ class JointCommands(_Controlled):
     def command(self, joint: str, value: float) -> None:
         """Set one joint's target directly, as a message on its topic would."""
         self.servos[joint].command(value)
+
+
+add_plugin(JointPositionController)
+add_plugin(JointController)
+add_plugin(JointCommands)

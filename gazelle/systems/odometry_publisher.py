@@ -35,6 +35,7 @@ from ._base import RateGate, System, SystemContext, UpdateInfo
 from ._bus import Endpoint, MsgType, resolve_topic
 from ._payloads import Odometry, Transform, TransformBatch, Twist
 from ._plugin_config import child_text, parse_float
+from ._registration import add_plugin
 
 Vec3 = tuple[float, float, float]
 
@@ -225,3 +226,6 @@ def _sub(a: Vec3, b: Vec3) -> Vec3:
 
 def _cross(a: Vec3, b: Vec3) -> Vec3:
     return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+add_plugin(OdometryPublisher)

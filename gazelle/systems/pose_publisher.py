@@ -32,8 +32,10 @@ from ..description import ConfigElement, Pose, alias_tags, quat_conj, quat_from_
 from ..physics import WORLD_FRAMES, PhysicsWorld
 from ._base import RateGate, System, SystemContext, UpdateInfo
 from ._bus import Endpoint, MsgType, resolve_topic
+from ._frames import entity_frame_prefix
 from ._payloads import Odometry, Twist
 from ._plugin_config import child_text, parse_float, ros_block
+from ._registration import add_plugin
 
 ROS1_NAMES = {
     "bodyName": "body_name",
@@ -158,7 +160,6 @@ class P3D(System):
         if c.body_name not in links:
             log.error(f"body_name: {c.body_name} does not exist")
             return
-        from .robot_state import entity_frame_prefix
 
         prefix = entity_frame_prefix(ctx.entity, log)
         if c.frame_name in WORLD_FRAMES:
@@ -240,3 +241,6 @@ def _noisy(v: Vec3, gauss: Callable[[float, float], float], stddev: float) -> Ve
     x = v[0] + gauss(0.0, stddev)
     y = v[1] + gauss(0.0, stddev)
     return (x, y, v[2] + gauss(0.0, stddev))
+
+
+add_plugin(P3D)

@@ -10,62 +10,20 @@ get the namespace as prefix (``r1/base_link``) unless ``frame_prefix`` says othe
 
 from __future__ import annotations
 
-import logging
 import math
 from dataclasses import dataclass
 from typing import Any
 
-from ..description import JointType, Model, Plugin, Pose
+from ..description import JointType, Model, Pose
 from ..physics import BodyHandle, Entity, JointHandle, PhysicsWorld
 from ._base import RateGate, System, SystemContext, UpdateInfo
 from ._bus import Endpoint, MsgType, Qos, resolve_topic
+from ._frames import RobotStateConfig as RobotStateConfig
+from ._frames import entity_frame_prefix
 from ._payloads import JointStates, Text, Transform, TransformBatch
-from ._plugin_config import all_texts, child_text, parse_bool, parse_float, ros_block
+from ._plugin_config import all_texts, child_text, parse_float, ros_block
 from ._plugin_names import RSP_PLUGIN as RSP_PLUGIN
-
-
-def default_frame_prefix(namespace: str) -> str:
-    """``r1/`` for namespace ``/r1`` (so two robots never publish the same frame); '' without one."""
-    ns = namespace.strip("/")
-    return f"{ns}/" if ns else ""
-
-
-@dataclass(frozen=True)
-class RobotStateConfig:
-    """Parameters of the built-in robot_state_publisher (``<plugin filename="gazelle_robot_state_publisher">``)."""
-
-    enabled: bool = True
-    """``<enabled>``: false when you run your own robot_state_publisher (nothing is published twice)."""
-    publish_frequency: float = 50.0
-    """``<publish_frequency>``, Hz of sim time, for /tf of the moving joints. Default 50."""
-    frame_prefix: str | None = None
-    """``<frame_prefix>``: prepended to every frame; default: the namespace plus '/', or nothing."""
-    namespace: str = ""
-    """``<ros><namespace>``; default: the entity's namespace."""
-
-
-def robot_state_config(entity: Entity, log: logging.Logger) -> tuple[RobotStateConfig, Plugin | None]:
-    """The configuration from the model's own ``gazelle_robot_state_publisher`` plugin block, if any.
-
-    Gazebo runs no robot_state_publisher: a ROS user starts one from a launch file. gazelle runs one per
-    spawned robot so that a bare ``gazelle sim robot.urdf`` has /tf and /robot_description; this plugin
-    block is the way a model file turns it off (``<enabled>false</enabled>``, when the user's launch file
-    starts its own) or sets its rate and frame prefix. Without it: on, 50 Hz, the namespace as the prefix."""
-    plugin = next((p for p in entity.model.plugins if p.filename == RSP_PLUGIN), None)
-    if plugin is None:
-        return RobotStateConfig(namespace=entity.namespace), None
-    cfg = plugin.config
-    ns, _ = ros_block(cfg)
-    prefix = child_text(cfg, "frame_prefix")
-    return (
-        RobotStateConfig(
-            enabled=parse_bool(cfg, "enabled", True, log),
-            publish_frequency=parse_float(cfg, "publish_frequency", 50.0, log),
-            frame_prefix=prefix,
-            namespace=ns or entity.namespace,
-        ),
-        plugin,
-    )
+from ._registration import add_plugin
 
 
 def gz_scoped_frames(model: Model) -> bool:
@@ -75,12 +33,6 @@ def gz_scoped_frames(model: Model) -> bool:
     from .gz_diff_drive import GzDiffDrive
 
     return any(system_class(p) is GzDiffDrive and p.config.find("child_frame_id") is None for p in model.plugins)
-
-
-def entity_frame_prefix(entity: Entity, log: logging.Logger) -> str:
-    """The prefix of every TF frame of an entity: its RSP ``frame_prefix``, else ``<namespace>/``."""
-    config, _ = robot_state_config(entity, log)
-    return config.frame_prefix if config.frame_prefix is not None else default_frame_prefix(config.namespace)
 
 
 @dataclass
@@ -343,3 +295,7 @@ class GzJointStatePublisher(JointStatePublisher):
                 (0.0,) * len(self._moving),
             )
         )
+
+
+add_plugin(JointStatePublisher)
+add_plugin(GzJointStatePublisher)

@@ -31,13 +31,14 @@ from rclpy.executors import SingleThreadedExecutor
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from rosgraph_msgs.msg import Clock
 
+from .._errors import SimError
 from ._dds_profile import writer_profile
 from ._domain import environ_applied
 
 __all__ = ["MessageLog", "RosTestNode", "TestTimeout"]
 
 
-class TestTimeout(AssertionError):
+class TestTimeout(SimError, AssertionError):
     """A wait ran out of time: the message names what was waited for (an AssertionError, so pytest
     reports it as the test's failure, not as an error in the harness)."""
 

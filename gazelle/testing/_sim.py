@@ -17,12 +17,13 @@ from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
+from .._errors import SimError
 from ._dds_profile import without_writer_profile
 from ._domain import environ_applied
 from ._ros_node import RosTestNode, TestTimeout
 from ._settle import Settler
 
-__all__ = ["ChildProcess", "Sim", "SimError"]
+__all__ = ["ChildProcess", "Sim", "SimError", "SimFailed"]
 
 _READY = re.compile(r"gazelle: ready: .* step ([0-9.eE+-]+) ms")
 STEP_CHUNK_SEC = 0.05
@@ -31,9 +32,10 @@ ACK_TIMEOUT = 10.0
 """Wall seconds a step waits for the subscribers of the test's topics to acknowledge what it published."""
 
 
-class SimError(RuntimeError):
+class SimFailed(SimError, RuntimeError):
     """The simulation could not do what the test asked (start, spawn, launch): the message says why,
-    with the last lines the process printed."""
+    with the last lines the process printed. A :class:`SimError`, gazelle's one root (``except SimError``, as
+    the docs say, catches it)."""
 
 
 def collect_lines(popen: subprocess.Popen[str], lines: list[str], cond: threading.Condition) -> None:
@@ -99,10 +101,10 @@ class ChildProcess:
                         return m
                 seen = len(self.lines)
                 if self.popen.poll() is not None:
-                    raise SimError(f"{self.name} exited with {self.popen.returncode}:\n{self.tail()}")
+                    raise SimFailed(f"{self.name} exited with {self.popen.returncode}:\n{self.tail()}")
                 left = deadline - time.monotonic()
                 if left <= 0:
-                    raise SimError(
+                    raise SimFailed(
                         f"{self.name} did not print {pattern.pattern!r} within {timeout:g} s:\n{self.tail()}"
                     )
                 self._cond.wait(min(left, 0.1))
@@ -112,7 +114,7 @@ class ChildProcess:
         try:
             return self.popen.wait(timeout)
         except subprocess.TimeoutExpired:
-            raise SimError(f"{self.name} did not end within {timeout:g} s:\n{self.tail()}") from None
+            raise SimFailed(f"{self.name} did not end within {timeout:g} s:\n{self.tail()}") from None
 
     def stop(self, timeout: float = 10.0) -> int | None:
         """SIGINT to its whole group (as Ctrl-C), SIGKILL after ``timeout``; returns the exit status."""
@@ -265,7 +267,7 @@ class Sim:
             SimError: the simulation is closed (or never started).
         """
         if self._ros is None:
-            raise SimError("this simulation is closed: its ROS node is gone")
+            raise SimFailed("this simulation is closed: its ROS node is gone")
         return self._ros
 
     @property
@@ -319,7 +321,7 @@ class Sim:
             argv += ["--arg", f"{k}:={v}"]
         child = self._child(f"gazelle spawn {name}", gazelle_command(*argv))
         if child.wait(timeout) != 0:
-            raise SimError(f"spawning {name} from {file} failed:\n{child.tail()}")
+            raise SimFailed(f"spawning {name} from {file} failed:\n{child.tail()}")
 
     def launch(
         self, package_or_path: str | os.PathLike[str], file: str | None = None, **arguments: Any
@@ -373,7 +375,7 @@ class Sim:
 
     def _check_server(self) -> None:
         if self.server.popen.poll() is not None:
-            raise SimError(f"the simulation server exited with {self.server.popen.returncode}:\n{self.server.tail()}")
+            raise SimFailed(f"the simulation server exited with {self.server.popen.returncode}:\n{self.server.tail()}")
 
     def _step(self, steps: int, wall_timeout: float) -> None:
         """Step the server by ``steps`` through StepSimulation, waiting at most ``wall_timeout`` seconds of wall
@@ -400,10 +402,10 @@ class Sim:
         future.add_done_callback(lambda _f: done.set())
         if not done.wait(wall_timeout):
             self._check_server()
-            raise SimError(f"the simulation did not take {steps} steps within {wall_timeout:g} s of wall time (hung?)")
+            raise SimFailed(f"the simulation did not take {steps} steps within {wall_timeout:g} s of wall time (hung?)")
         result = future.result().result
         if result.result != 1:  # simulation_interfaces/Result RESULT_OK
-            raise SimError(f"StepSimulation({steps}) refused: {result.error_message}")
+            raise SimFailed(f"StepSimulation({steps}) refused: {result.error_message}")
 
     def run_for(self, seconds: float, wall_timeout: float = 300.0, step: float = STEP_CHUNK_SEC) -> float:
         """Advance sim time by ``seconds`` (paused server: stepped as fast as possible; running server:
@@ -517,7 +519,7 @@ class Sim:
             if self.ros.sim_time - start >= timeout - 1e-9:
                 raise TestTimeout(f"{what}: not within {timeout:g} s of sim time")
             if time.monotonic() > deadline:
-                raise SimError(f"{what}: {wall_timeout:g} s of wall time passed (the simulation is hung?)")
+                raise SimFailed(f"{what}: {wall_timeout:g} s of wall time passed (the simulation is hung?)")
             self.run_for(min(step, timeout - (self.ros.sim_time - start)), step=step)
 
     def reset(self, wall_timeout: float = 30.0) -> None:
@@ -539,7 +541,7 @@ class Sim:
         req.scope = ResetSimulation.Request.SCOPE_ALL
         reply = self.ros.call("/gazelle/reset_simulation", ResetSimulation, req, timeout=wall_timeout)
         if reply.result.result != 1:
-            raise SimError(f"ResetSimulation refused: {reply.result.error_message}")
+            raise SimFailed(f"ResetSimulation refused: {reply.result.error_message}")
         self.ros.restart_clock()
 
     # ------------------------------------------------------------------ recording
@@ -598,7 +600,7 @@ class Sim:
         deadline = time.monotonic() + timeout
         while written() == before:
             if time.monotonic() > deadline:
-                raise SimError(f"the server did not write its replay to {path} within {timeout:g} s")
+                raise SimFailed(f"the server did not write its replay to {path} within {timeout:g} s")
             time.sleep(0.02)  # another process writes it: nothing to wait on but the file
         return path
 
@@ -609,7 +611,7 @@ class Sim:
         try:
             self.ros.wait_until(lambda: node.count_subscribers("/clock") >= 2, timeout, "the bag recorder on /clock")
         except AssertionError as err:
-            raise SimError(f"{err}:\n{self.children[-1].tail()}") from None
+            raise SimFailed(f"{err}:\n{self.children[-1].tail()}") from None
 
     def process_groups(self) -> frozenset[int]:
         """The process groups of every process the harness started (each child leads one: it and what it

@@ -14,10 +14,12 @@ from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
+from .._errors import SimError
+
 __all__ = ["InProcessWorld", "WorldTimeout"]
 
 
-class WorldTimeout(AssertionError):
+class WorldTimeout(SimError, AssertionError):
     """``run_until``'s condition did not hold within its sim time."""
 
 

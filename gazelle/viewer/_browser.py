@@ -15,6 +15,8 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from .._errors import SimError
+
 if TYPE_CHECKING:
     from playwright.sync_api import ViewportSize
 
@@ -42,7 +44,7 @@ _RAF_CAP_JS = """(() => { const fps = %s; if (!(fps > 0)) return;
   window.cancelAnimationFrame = (id) => { queue.delete(id); }; })()"""
 
 
-class BrowserUnavailable(RuntimeError):
+class BrowserUnavailable(SimError, RuntimeError):
     """No system chromium, or no playwright package."""
 
 

@@ -7,6 +7,7 @@ import math
 import re
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 from _paths import BOX, REAL, REPO, SEED_XACRO
@@ -435,9 +436,14 @@ KNOWN_PLUGIN_NAMES = {
 
 
 def test_the_plugin_table_is_derived_from_the_systems_declarations() -> None:
-    from gazelle.systems._registry import plugin_table
+    """Every name of the old hand-kept table still runs its system, and every name in the table is one a registered
+    class declares (a new plugin adds its own names, tested with it, without editing this list)."""
+    from gazelle.systems._registration import registered
+    from gazelle.systems._registry import plugin_names, plugin_table
 
-    assert {name: cls.__name__ for name, cls in plugin_table().items()} == KNOWN_PLUGIN_NAMES
+    table = plugin_table()
+    assert {name: table[name].__name__ for name in KNOWN_PLUGIN_NAMES if name in table} == KNOWN_PLUGIN_NAMES
+    assert table == {name: cls for cls in registered() for name in plugin_names(cls)}
 
 
 def test_a_gz_system_declared_by_its_class_name_answers_to_every_gz_and_ignition_spelling() -> None:
@@ -460,13 +466,31 @@ def test_a_gz_system_declared_by_its_class_name_answers_to_every_gz_and_ignition
     assert plugin_names(Classic)[:2] == ("gazebo_ros_thing", "gz-sim-navsat-system")
 
 
-def test_a_plugin_declared_twice_or_a_listed_system_without_a_name_is_refused() -> None:
+def test_a_plugin_declared_twice_or_a_registered_system_without_a_name_is_refused() -> None:
     from gazelle.systems._registry import plugin_table
+    from gazelle.systems.diff_drive import DiffDrive
+    from gazelle.systems.robot_state import RobotStatePublisher
 
     with pytest.raises(ValueError, match="'gazebo_ros_diff_drive' is declared by DiffDrive and DiffDrive"):
-        plugin_table(("diff_drive:DiffDrive", "diff_drive:DiffDrive"))
-    with pytest.raises(ValueError, match="robot_state:RobotStatePublisher declares no plugin name"):
-        plugin_table(("robot_state:RobotStatePublisher",))
+        plugin_table((DiffDrive, DiffDrive))
+    with pytest.raises(ValueError, match="robot_state.RobotStatePublisher declares no plugin name"):
+        plugin_table((RobotStatePublisher,))
+
+
+def test_every_system_registers_itself_at_the_bottom_of_its_own_module() -> None:
+    """Issue 53: one way to extend. A plugin or a sensor kind registers itself in its own module (gz-sim's
+    ``GZ_ADD_PLUGIN``), found by the registry without a list kept elsewhere; ``add_plugin`` takes systems only."""
+    from gazelle.systems._registration import add_plugin, registered
+    from gazelle.systems.odometry_publisher import OdometryPublisher
+    from gazelle.systems.sensors.air_pressure import AirPressureSensor
+
+    classes = registered()
+    assert OdometryPublisher in classes and AirPressureSensor in classes
+    for cls in classes:
+        module = Path(sys.modules[cls.__module__].__file__ or "").read_text()
+        assert module.rstrip().splitlines()[-1].startswith("add_plugin("), cls
+    with pytest.raises(TypeError, match="add_plugin takes a System class"):
+        add_plugin(int)  # type: ignore[type-var]
 
 
 # --------------------------------------------------------------------------- docs
@@ -557,10 +581,10 @@ def test_every_sensor_kind_declares_what_runs_it_and_the_registry_is_derived_fro
     its class (one place); the registry's tables come from those declarations. Before, they were spelled
     in three tables, and a sensor without an entry in a fourth was silently a lidar."""
     from gazelle.systems import _registry
-    from gazelle.systems.sensors import OUTPUT_MESSAGES, SENSOR_SYSTEMS, Camera, GpsSensor, ImuSensor, Lidar
+    from gazelle.systems.sensors import OUTPUT_MESSAGES, Camera, GpsSensor, ImuSensor, Lidar
 
-    assert len(SENSOR_SYSTEMS) == 9
-    for cls in SENSOR_SYSTEMS:
+    assert len(_registry.sensor_classes()) == 9
+    for cls in _registry.sensor_classes():
         assert cls.sdf_types and cls.sdf_types <= _registry.SDF_SENSOR_TYPES, cls
         assert cls.gz_system, cls
         kind = getattr(cls, "output_kind", None)

@@ -15,6 +15,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from ..._errors import SimError
 from ...description import UntrustedInputError, read_regular_file, safe_load_bounded
 from ...ros import InterfaceError, split_type_name
 
@@ -31,7 +32,7 @@ MAX_DURATION_NS = 2**63 - 1
 _DURATION_KEYS = ("deadline", "lifespan", "liveliness_lease_duration")
 
 
-class BagError(Exception):
+class BagError(SimError):
     """What makes a bag command fail; the message is the one line printed."""
 
 

@@ -10,6 +10,7 @@ import sys
 import time
 from typing import Any
 
+from ..._errors import SimError
 from ._graph import cli_node, spin_once
 
 VERBS = (
@@ -38,7 +39,7 @@ class _Colors:
     ok_green = ok_cyan = ok_blue = warning = fail = end = ""
 
 
-class ControlError(Exception):
+class ControlCommandError(SimError):
     """One line for the user (no traceback)."""
 
 
@@ -93,7 +94,7 @@ def main(argv: list[str]) -> int:
     try:
         with cli_node("ros2control") as node:
             return _VERBS[args.cmd](_Manager(node, args), args, colors)
-    except ControlError as err:
+    except ControlCommandError as err:
         print(f"{colors.fail}{err}{colors.end}", file=sys.stderr)
         return 1
 
@@ -111,11 +112,13 @@ class _Manager:
 
     def call(self, srv_type: Any, service: str, **fields: Any) -> Any:
         """Call one of the manager's services with ``fields`` set on the request; a manager that is not there, or
-        does not reply within the timeout, is a ControlError in ros2controlcli's words."""
+        does not reply within the timeout, is a ControlCommandError in ros2controlcli's words."""
         name = f"{self.prefix.rstrip('/')}/{service}"
         client = self.node.create_client(srv_type, name)
         if not client.wait_for_service(timeout_sec=self.timeout):
-            raise ControlError(f"Could not contact service {name} (is the controller manager {self.prefix} running?)")
+            raise ControlCommandError(
+                f"Could not contact service {name} (is the controller manager {self.prefix} running?)"
+            )
         request = srv_type.Request()
         for k, v in fields.items():
             setattr(request, k, v)
@@ -124,7 +127,7 @@ class _Manager:
         while not future.done() and time.monotonic() < deadline:
             spin_once(self.node, timeout_sec=0.05)
         if not future.done():
-            raise ControlError(f"{name} did not reply within {self.timeout:g} s")
+            raise ControlCommandError(f"{name} did not reply within {self.timeout:g} s")
         return future.result()
 
 
@@ -243,7 +246,7 @@ def _switch_call(
 def _by_name(cm: _Manager, srv_type: Any, service: str, name: str, doing: str) -> None:
     """Call a manager service that takes a controller's name; a refusal is one line."""
     if not cm.call(srv_type, service, name=name).ok:
-        raise ControlError(f"Error {doing} controller {name}, check controller_manager logs")
+        raise ControlCommandError(f"Error {doing} controller {name}, check controller_manager logs")
 
 
 def _load(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
@@ -261,13 +264,13 @@ def _load(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
         if args.param_file:
             _give_param_file(cm, name, args.param_file)
         if not cm.call(LoadController, "load_controller", name=name).ok:
-            raise ControlError(f"Failed loading controller {name} check controller_manager logs")
+            raise ControlCommandError(f"Failed loading controller {name} check controller_manager logs")
         print(f"{c.ok_blue}Successfully loaded controller {name}{c.end}")
     if args.set_state:
         if not cm.call(ConfigureController, "configure_controller", name=name).ok:
-            raise ControlError(f"Error configuring controller : {name}")
+            raise ControlCommandError(f"Error configuring controller : {name}")
         if args.set_state == "active" and not _switch_call(cm, [name], [], True, True, 5.0):
-            raise ControlError(f"Error activating controller : {name}, check controller_manager logs")
+            raise ControlCommandError(f"Error activating controller : {name}, check controller_manager logs")
         print(f"{c.ok_blue}Successfully loaded controller {name} into state {args.set_state}{c.end}")
     return 0
 
@@ -283,14 +286,14 @@ def _give_param_file(cm: _Manager, name: str, param_file: str) -> None:
 
     path = Path(param_file)
     if not path.exists():
-        raise ControlError(f"Controller parameter file : {param_file} does not exist, Aborting!")
+        raise ControlCommandError(f"Controller parameter file : {param_file} does not exist, Aborting!")
     try:
         params = controller_file_params(cm.prefix, name, str(path.absolute()))
     except ParamsError as err:
-        raise ControlError(str(err)) from None
+        raise ControlCommandError(str(err)) from None
     for result in cm.call(SetParameters, "set_parameters", parameters=params).results:
         if not result.successful:
-            raise ControlError(f"Could not set the parameters of {name} on {cm.prefix}: {result.reason}")
+            raise ControlCommandError(f"Could not set the parameters of {name} on {cm.prefix}: {result.reason}")
 
 
 def _configure(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
@@ -312,27 +315,27 @@ def _set_state(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
     name, want = args.controller_name, args.state
     now = _controller_state(cm, name)
     if now is None:
-        raise ControlError(f"controller {name} does not seem to be loaded")
+        raise ControlCommandError(f"controller {name} does not seem to be loaded")
     if want == "unconfigured":
         if now != "inactive":
-            raise ControlError(f"cannot cleanup {name} from its current state {now}")
+            raise ControlCommandError(f"cannot cleanup {name} from its current state {now}")
         if not cm.call(CleanupController, "cleanup_controller", name=name).ok:
-            raise ControlError("Error cleaning up controller, check controller_manager logs")
+            raise ControlCommandError("Error cleaning up controller, check controller_manager logs")
         print(f"{c.ok_blue}successfully cleaned up {name}{c.end}")
     elif want == "inactive" and now == "unconfigured":
         if not cm.call(ConfigureController, "configure_controller", name=name).ok:
-            raise ControlError("Error configuring controller, check controller_manager logs")
+            raise ControlCommandError("Error configuring controller, check controller_manager logs")
         print(f"{c.ok_blue}Successfully configured {name}{c.end}")
     elif want == "inactive" and now == "active":
         if not _switch_call(cm, [], [name], True, True, 5.0):
-            raise ControlError("Error stopping controller, check controller_manager logs")
+            raise ControlCommandError("Error stopping controller, check controller_manager logs")
         print(f"{c.ok_blue}Successfully deactivated {name}{c.end}")
     elif want == "inactive":
-        raise ControlError(f"cannot put {name} in 'inactive' state from its current state {now}")
+        raise ControlCommandError(f"cannot put {name} in 'inactive' state from its current state {now}")
     elif now != "inactive":
-        raise ControlError(f"cannot activate {name} from its current state {now}")
+        raise ControlCommandError(f"cannot activate {name} from its current state {now}")
     elif not _switch_call(cm, [name], [], True, True, 5.0):
-        raise ControlError("Error activating controller, check controller_manager logs")
+        raise ControlCommandError("Error activating controller, check controller_manager logs")
     else:
         print(f"{c.ok_blue}Successfully activated {name}{c.end}")
     return 0
@@ -341,7 +344,7 @@ def _set_state(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
 def _switch(cm: _Manager, args: argparse.Namespace, c: _Colors) -> int:
     """``switch_controllers --activate ... --deactivate ...``: one request, strict when asked."""
     if not _switch_call(cm, args.activate, args.deactivate, args.strict, args.activate_asap, args.switch_timeout):
-        raise ControlError("Error switching controllers, check controller_manager logs")
+        raise ControlCommandError("Error switching controllers, check controller_manager logs")
     print(f"{c.ok_blue}Successfully switched controllers{c.end}")
     return 0
 

@@ -10,11 +10,13 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
 
+from ..._errors import SimError
+
 DEFAULT_SPIN_TIME = 1.5
 """Seconds to discover the graph before listing (ros2cli's daemon remembers it; we have no daemon)."""
 
 
-class ShutDown(Exception):
+class ShutDown(SimError):
     """The verb's context was shut down under it (rclpy's own SIGINT/SIGTERM handler does that): whatever
     rcl call was running then fails (a wait set, a node, a subscription), and the verb ends in order."""
 

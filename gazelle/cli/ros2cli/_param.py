@@ -9,6 +9,7 @@ from typing import Any
 
 import yaml
 
+from ..._errors import SimError
 from ._graph import absolute, cli_node, discover, wait_until
 
 SERVICE_TIMEOUT_SEC = 5.0
@@ -38,7 +39,7 @@ _TYPE_NAMES = {
 }
 
 
-class ParamError(Exception):
+class ParamError(SimError):
     """A one-line failure (printed to stderr, exit status 1)."""
 
 

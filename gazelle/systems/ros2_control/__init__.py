@@ -17,6 +17,8 @@ if TYPE_CHECKING:
     from ._controller import UNCONFIGURED as UNCONFIGURED
     from ._controller import Controller as Controller
     from ._controller import GoalState as GoalState
+    from ._goal import TrajectoryGoal as TrajectoryGoal
+    from ._goal import TrajectoryResult as TrajectoryResult
     from ._gripper import GripperActionController as GripperActionController
     from ._gripper import GripperGoal as GripperGoal
     from ._hardware import ControlError as ControlError
@@ -37,8 +39,6 @@ if TYPE_CHECKING:
     from ._tolerances import Tolerance as Tolerance
     from ._tolerances import segment_tolerances as segment_tolerances
     from ._trajectory import JointTrajectoryController as JointTrajectoryController
-    from ._trajectory import TrajectoryGoal as TrajectoryGoal
-    from ._trajectory import TrajectoryResult as TrajectoryResult
 
 __getattr__ = lazy_attributes(__name__, __file__)
 

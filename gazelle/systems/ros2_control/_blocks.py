@@ -12,18 +12,18 @@ goal through it.
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
 import numpy as np
 
 from ...physics import PhysicsWorld
+from .._base import RateGate
 from ._broadcasters import JointStateBroadcaster
 from ._controller import ACTIVE
+from ._hardware import SimHardware
 from ._trajectory import JointTrajectoryController, TrajectoryBlock
-
-if TYPE_CHECKING:
-    from ._manager import ControllerManager
 
 BLOCK_CYCLES = 100
 """The most cycles planned at once (see :meth:`PlannedBlocks.plan`). A block is cut short where
@@ -42,10 +42,25 @@ class _Block:
     published: int = 0
 
 
+class _Manager(Protocol):
+    """What the planned blocks use of the controller manager that owns them (``_manager.ControllerManager``): its
+    rate and rate gate, its hardware and loaded controllers, and its merged state and command values."""
+
+    @property
+    def update_rate(self) -> float: ...
+    @property
+    def hardware(self) -> Sequence[SimHardware]: ...
+    @property
+    def controllers(self) -> Mapping[str, Any]: ...
+    @property
+    def _gate(self) -> RateGate: ...
+    def _merged(self) -> tuple[dict[str, float], dict[str, float]]: ...
+
+
 class PlannedBlocks:
     """One controller manager's planned blocks of cycles (see the module docstring)."""
 
-    def __init__(self, cm: ControllerManager) -> None:
+    def __init__(self, cm: _Manager) -> None:
         """The planned blocks of one controller manager; none runs yet."""
         self.cm = cm
         self.block: _Block | None = None

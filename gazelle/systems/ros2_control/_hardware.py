@@ -36,6 +36,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..._errors import SimError
 from ...description import ControlComponent, JointType, Pose, Ros2Control, rotation_matrix
 from ...physics import ActuatorHandle, ActuatorKind, BodyHandle, Entity, JointHandle, PhysicsWorld, ServoPlan
 from .._actuation import (
@@ -63,7 +64,7 @@ STEP_FACTOR = 2.0
 """A position target moving more than this times the joint's velocity limit is a step (see _drive_position)."""
 
 
-class ControlError(ValueError):
+class ControlError(SimError, ValueError):
     """A ``<ros2_control>`` block or request that cannot be honoured; the message names it."""
 
 

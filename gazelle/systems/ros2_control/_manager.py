@@ -29,6 +29,7 @@ from ...physics import PhysicsWorld
 from .._base import RateGate, System, SystemContext, UpdateInfo
 from .._bus import remap_problem
 from .._plugin_config import child_text, parse_bool, remap_arguments, ros_remaps
+from .._registration import add_plugin
 from ._blocks import PlannedBlocks
 from ._broadcasters import (
     ForceTorqueSensorBroadcaster,
@@ -784,3 +785,6 @@ class ControllerManager(System):
                     except ParamsError as err:
                         raise ControlError(str(err)) from None
         self.overrides[name] = value  # type: ignore[assignment] - a parameter set at run time is any YAML value; ParamValue is the declared subset
+
+
+add_plugin(ControllerManager)

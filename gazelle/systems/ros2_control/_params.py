@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from ..._errors import SimError
 from ...description import (
     MAX_PARAMS_FILE_BYTES,
     MAX_YAML_NODES,
@@ -28,7 +29,7 @@ ParamValue = bool | int | float | str | list[Any]
 Params = dict[str, ParamValue]
 
 
-class ParamsError(ValueError):
+class ParamsError(SimError, ValueError):
     """A parameters file that cannot be used; the message names the file (and line where YAML says)."""
 
 

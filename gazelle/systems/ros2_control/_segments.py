@@ -11,14 +11,12 @@ from __future__ import annotations
 
 import bisect
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
+from ._goal import TrajectoryGoal
 from ._tolerances import Tolerance
-
-if TYPE_CHECKING:
-    from ._trajectory import TrajectoryGoal
 
 
 @dataclass

@@ -8,12 +8,10 @@ rules (> 0 replaces, 0 keeps, -1 erases), which :func:`segment_tolerances` appli
 
 from __future__ import annotations
 
+import logging
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
-
-if TYPE_CHECKING:
-    from ._trajectory import JointTrajectoryController
+from typing import Protocol
 
 FLOAT_EPSILON = 1.1920929e-07
 """std::numeric_limits<float>::epsilon(): the controller's "not zero" for a last point's velocity, and how near -1 a
@@ -65,8 +63,17 @@ def resolve_tolerance(default: float, given: float) -> float:
     return default
 
 
+class ToleranceDefaults(Protocol):
+    """What a goal's tolerances fall back on: the trajectory controller's own ``constraints`` (and its logger)."""
+
+    path_tol: dict[str, Tolerance]
+    goal_tol: dict[str, Tolerance]
+    goal_time: float
+    log: logging.Logger
+
+
 def segment_tolerances(
-    controller: JointTrajectoryController,
+    controller: ToleranceDefaults,
     path: Sequence[tuple[str, float, float, float]],
     goal: Sequence[tuple[str, float, float, float]],
     goal_time: float,

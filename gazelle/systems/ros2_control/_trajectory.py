@@ -26,33 +26,22 @@
 
 from __future__ import annotations
 
-import enum
 import functools
 import math
 import threading
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
 from .._bus import MsgType
 from .._payloads import JointTrajectory, TrajectoryControllerState, TrajectoryPoint
 from ._controller import Controller, GoalState, values_getter, values_or_zero
+from ._goal import TrajectoryGoal as TrajectoryGoal
+from ._goal import TrajectoryResult as TrajectoryResult
 from ._hardware import ControlError
 from ._segments import _Segmented
 from ._tolerances import FLOAT_EPSILON, Tolerance, violates
-
-
-class TrajectoryResult(enum.IntEnum):
-    """control_msgs/FollowJointTrajectory's result codes (``FollowJointTrajectory.Result``'s constants)."""
-
-    SUCCESSFUL = 0
-    INVALID_GOAL = -1
-    INVALID_JOINTS = -2
-    OLD_HEADER_TIMESTAMP = -3
-    PATH_TOLERANCE_VIOLATED = -4
-    GOAL_TOLERANCE_VIOLATED = -5
-
 
 _ALLOWED_COMMANDS = (
     ("position",),
@@ -61,33 +50,6 @@ _ALLOWED_COMMANDS = (
     ("velocity",),
     ("effort",),
 )
-
-
-@dataclass
-class TrajectoryGoal:
-    """One FollowJointTrajectory goal as the controller runs it; the ROS layer reads its progress.
-
-    Fields written on the simulation thread, read from the ROS thread (single assignments).
-    """
-
-    trajectory: JointTrajectory
-    path_tolerance: dict[str, Tolerance] = field(default_factory=dict)
-    goal_tolerance: dict[str, Tolerance] = field(default_factory=dict)
-    goal_time_tolerance: float | None = None
-    """Seconds after the end to meet the goal tolerances (0: no limit); None: the controller's ``goal_time``."""
-    status: GoalState = GoalState.PENDING
-    """Where the goal stands; set on the simulation thread, read by the ROS layer."""
-    error_code: TrajectoryResult = TrajectoryResult.SUCCESSFUL
-    error_string: str = ""
-    feedback: TrajectoryControllerState | None = None
-    done: threading.Event = field(default_factory=threading.Event)
-
-    def finish(self, status: GoalState, code: TrajectoryResult, text: str) -> None:
-        """End the goal (once)."""
-        if self.done.is_set():
-            return
-        self.status, self.error_code, self.error_string = status, code, text
-        self.done.set()
 
 
 @dataclass(frozen=True)

@@ -1,9 +1,10 @@
 """Sensors, one module per kind, published as gazebo_ros's plugins and gz-sim's sensors publish them:
 lidars and rays (:mod:`.lidar`), IMUs (:mod:`.imu`), magnetometers, altimeters, cameras and depth cameras,
 contact sensors, GPS and force-torque. What they share (noise, rates, topic naming, the base class) is in
-:mod:`._common`. A sensor kind is one class decorated with :func:`sensor_system` that declares its SDF types,
-its gazebo_ros plugins and its gz-sim world system; the plugin registry is derived from those declarations.
-Importing this package registers every kind (add a new module to the imports below).
+:mod:`._common`. A sensor kind is one class that declares its SDF types, its gazebo_ros plugins and its gz-sim
+world system (:class:`SensorClass`) and registers itself at the bottom of its module (``add_plugin(Lidar)``); the
+plugin registry is derived from those declarations and finds the module by itself (nothing to add here unless
+a name is to be public).
 
 Each sensor is a :class:`System` made for one ``<sensor>`` of a link (or, for ROS 1's
 ``libgazebo_ros_imu.so``, for a model plugin naming a ``<bodyName>``):
@@ -30,7 +31,7 @@ acceleration (+g upwards at rest) and angular velocity in its own frame. Gaussia
 applied as configured; any other noise type is warned about with its file:line and left out.
 """
 
-from ._common import OUTPUT_MESSAGES, SENSOR_SYSTEMS, Noise, SensorClass, parse_noise, sensor_system
+from ._common import OUTPUT_MESSAGES, Noise, SensorClass, parse_noise
 from .air_pressure import AirPressureSensor as AirPressureSensor
 from .altimeter import AltimeterSensor
 from .camera import CAMERA_TYPES, DEPTH_TYPES, MAX_IMAGE_SIDE, Camera
@@ -48,7 +49,6 @@ __all__ = [
     "MAX_IMAGE_SIDE",
     "MAX_RAYS",
     "OUTPUT_MESSAGES",
-    "SENSOR_SYSTEMS",
     "AltimeterSensor",
     "Camera",
     "ContactSensor",
@@ -61,5 +61,4 @@ __all__ = [
     "SensorClass",
     "parse_lidar",
     "parse_noise",
-    "sensor_system",
 ]

@@ -1,12 +1,12 @@
 """What every sensor shares: noise, rates, the output's topic, frame and message (gazebo_ros and gz-sim
-naming), the base class with its rate gate, and the registration of sensor kinds (:func:`sensor_system`).
+naming), the base class with its rate gate, and what a sensor kind declares (:class:`SensorClass`).
 
 A sensor's life, whichever kind it is:
 
 * **Chosen.** ``systems/_registry.py`` plans one system per ``<sensor>``: a gazebo_ros plugin inside it
   (``classic_plugins``) makes it publish as that plugin does; else a gz-sim world system that simulates
   the kind (``gz_system``: ``Sensors``, ``Imu``, ...) makes it publish on gz-sim's topic; else it is warned
-  about and not simulated. The tables come from the classes' declarations (:func:`sensor_system`).
+  about and not simulated. The tables come from the classes' declarations (:class:`SensorClass`).
 * **Configured** (:meth:`_SensorSystem._configure_common`): its link, its pose on the link, its rate
   (:func:`checked_rate`), where it publishes (:func:`sensor_output`: topic, frame_id, message type) and
   its noise (:func:`parse_noise`). A block that cannot be simulated raises :class:`SensorConfigError`,
@@ -26,12 +26,14 @@ import logging
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import ClassVar, Protocol, TypeVar, cast
+from typing import Any, ClassVar, Protocol, Self, TypeVar
 
 import numpy as np
 
+from ..._errors import SimError
 from ...description import (
     ConfigElement,
+    Plugin,
     Pose,
     Sensor,
 )
@@ -44,31 +46,15 @@ from .._bus import (
     ParamValue,
     resolve_topic,
 )
-from .._plugin_config import child_text, parse_bool, parse_float, ros_block
+from .._frames import entity_frame_prefix
+from .._plugin_config import child_text, parse_float, ros_block
 
 T = TypeVar("T")
 
 
 class SensorClass(Protocol):
-    """A sensor system's class, as :func:`sensor_system` registers it."""
-
-    sdf_types: frozenset[str]
-    classic_plugins: ClassVar[dict[str, frozenset[str] | None]]
-    gz_system: str
-    gz_file: str
-
-    def __call__(self) -> System: ...
-
-
-SENSOR_SYSTEMS: list[SensorClass] = []
-"""Every sensor kind gazelle simulates, each declaring what runs it (see :func:`sensor_system`); the plugin
-registry derives its tables from these declarations."""
-
-S = TypeVar("S", bound=type)
-
-
-def sensor_system(cls: S) -> S:
-    """Register a sensor class. It declares, as class attributes:
+    """A sensor system's class, as it registers itself (``add_plugin(Lidar)`` at the bottom of its module). It
+    declares, as class attributes:
 
     * ``sdf_types``: the ``<sensor type>`` values it simulates;
     * ``classic_plugins``: the gazebo_ros plugins (file names without ``lib``/``.so``) that publish it from
@@ -79,8 +65,13 @@ def sensor_system(cls: S) -> S:
       name: ``air-pressure``);
     * ``output_kind`` (the gz-sim topic's suffix) and, for a message of its own, ``output_message``.
     """
-    SENSOR_SYSTEMS.append(cast(SensorClass, cls))
-    return cls
+
+    sdf_types: frozenset[str]
+    classic_plugins: ClassVar[dict[str, frozenset[str] | None]]
+    gz_system: str
+    gz_file: str
+
+    def __call__(self) -> System: ...
 
 
 SENSOR_DEPTH = 5
@@ -154,7 +145,7 @@ def parse_noise(el: ConfigElement | None, log: logging.Logger, what: str) -> Noi
     )
 
 
-class SensorConfigError(ValueError):
+class SensorConfigError(SimError, ValueError):
     """A sensor's configuration that cannot be simulated (the message names the file:line)."""
 
 
@@ -200,93 +191,68 @@ class Output:
     min_intensity: float = -math.inf
 
 
-_OUTPUT_TYPES = {
-    "sensor_msgs/laserscan": MsgType.LASER_SCAN,
-    "sensor_msgs/msg/laserscan": MsgType.LASER_SCAN,
-    "sensor_msgs/pointcloud2": MsgType.POINT_CLOUD2,
-    "sensor_msgs/msg/pointcloud2": MsgType.POINT_CLOUD2,
-    "sensor_msgs/range": MsgType.RANGE,
-    "sensor_msgs/msg/range": MsgType.RANGE,
-}
-
-
 def gz_scoped_topic(ctx: SystemContext, link: str, sensor: Sensor, suffix: str) -> str:
     """gz-sim's topic for a sensor without ``<topic>``."""
     return f"/world/{ctx.world_name}/model/{ctx.entity.name}/link/{link}/sensor/{sensor.name}/{suffix}"
 
 
+# A kind whose plugin has settings of its own subclasses SensorPluginConfig in its own module and names the subclass
+# in its class's ``plugin_config`` (the lidar's RayPluginConfig, the IMU's ImuPluginConfig, the camera's
+# CameraPluginConfig), overriding ``settings`` to read them and, where its output differs, ``plugin_topic``,
+# ``message_type`` or ``output``: nothing here knows a kind or a plugin's file name.
 @dataclass(frozen=True)
 class SensorPluginConfig:
-    """Parameters of ``libgazebo_ros_ray_sensor.so`` and ``libgazebo_ros_imu_sensor.so`` (inside a
-    ``<sensor>``), and of ROS 1's ``libgazebo_ros_laser.so`` and ``libgazebo_ros_imu.so``. Without any
-    of them (a gz-sim model), the sensor's own ``<topic>`` and ``<frame_id>``/``<gz_frame_id>`` apply."""
+    """What every gazebo_ros sensor plugin (inside a ``<sensor>``) is configured with: where it publishes and in
+    which frame, ROS 2's names and ROS 1's. Without a plugin (a gz-sim model), the sensor's own ``<topic>`` and
+    ``<frame_id>``/``<gz_frame_id>`` apply."""
 
-    output_type: str = ""
-    """Ray sensors: ``sensor_msgs/PointCloud2`` (the default; ROS 1's laser plugin: LaserScan),
-    ``sensor_msgs/LaserScan`` or ``sensor_msgs/Range``."""
     frame_name: str = ""
     """``<frame_name>`` (ROS 1: ``<frameName>``): the header's frame_id; default the sensor's link."""
-    radiation_type: str = "infrared"
-    """Range output: ``infrared`` or ``ultrasound`` (``<radiation_type>``; ROS 1's gazebo_ros_range:
-    ``<radiation>``, ultrasound by default)."""
-    min_intensity: float = -math.inf
-    """Intensities below it are raised to it (gazelle's rays have intensity 0: no laser_retro yet)."""
-    initial_orientation_as_reference: bool = False
-    """IMU (``<initial_orientation_as_reference>``, ROS 1: ``<initialOrientationAsReference>``): report the
-    orientation relative to the sensor's spawn orientation instead of the world (REP 145's reference)."""
     topic: str = "~/out"
     """``~/out`` in ROS 2 (rename it with ``<ros><remapping>~/out:=scan``, or Dashing's
     ``<argument>~/out:=scan``); ROS 1: ``<topicName>``."""
-    body_name: str = ""
-    """ROS 1's IMU model plugin: ``<bodyName>``, the link it measures."""
-    update_rate: float = 0.0
-    """ROS 1's IMU model plugin: ``<updateRate>``, Hz of sim time (0: every step). Sensors use ``<update_rate>``."""
-    gaussian_noise: float = 0.0
-    """ROS 1's IMU model plugin: ``<gaussianNoise>``, standard deviation of every channel."""
-    camera_name: str = ""
-    """Cameras: ``<camera_name>``, the first part of their topics; default the sensor's name."""
     namespace: str = ""
     """``<ros><namespace>`` (ROS 1: ``<robotNamespace>``); default the entity's namespace."""
     remappings: tuple[tuple[str, str], ...] = ()
     """``<ros><argument>from:=to`` and ``<ros><remapping>from:=to``, as gazebo_ros gives them to rcl."""
+    body_name: str = ""
+    """A ROS 1-era model plugin without a ``<sensor>`` (``<bodyName>``): the link it measures; read by the kinds
+    whose plugin has that form (the IMU)."""
+    update_rate: float = 0.0
+    """A ROS 1 plugin's ``<updateRate>``, Hz of sim time (0: every step), which every ROS 1 sensor plugin has: the
+    IMU's model plugin and the range plugin run at it; sensors use their ``<update_rate>``."""
 
+    @classmethod
+    def read(cls, ctx: SystemContext) -> Self:
+        """The settings of the plugin ``ctx`` configures (defaults, in the entity's namespace, without one)."""
+        if ctx.plugin is None or ctx.plugin.config is None:
+            return cls(namespace=ctx.entity.namespace)
+        return cls(**cls.settings(ctx.plugin, ctx.plugin.config, ctx))
 
-def parse_plugin_config(ctx: SystemContext) -> SensorPluginConfig:
-    """The plugin's parameters (ROS 2 and ROS 1 names); defaults without a plugin."""
-    cfg = ctx.plugin.config if ctx.plugin is not None else None
-    if cfg is None:
-        return SensorPluginConfig(namespace=ctx.entity.namespace)
-    log = ctx.logger
-    ns, remaps = ros_block(cfg)
-    raw_type = child_text(cfg, "output_type")
-    filename = ctx.plugin.filename.lower() if ctx.plugin is not None else ""
-    ros1_range = "gazebo_ros_range" in filename
-    if raw_type is None and "laser" in filename:
-        raw_type = "sensor_msgs/LaserScan"  # ROS 1's gazebo_ros_laser publishes LaserScan
-    if raw_type is None and ros1_range:
-        raw_type = "sensor_msgs/Range"  # ROS 1's gazebo_ros_range (<radiation>, default ultrasound)
-    radiation = child_text(cfg, "radiation_type") or child_text(cfg, "radiation")
-    return SensorPluginConfig(
-        output_type=raw_type or "sensor_msgs/PointCloud2",
-        frame_name=child_text(cfg, "frame_name") or child_text(cfg, "frameName") or "",
-        radiation_type=(radiation or ("ultrasound" if ros1_range else "infrared")).strip().lower(),
-        min_intensity=parse_float(cfg, "min_intensity", -math.inf, log),
-        initial_orientation_as_reference=parse_bool(
-            cfg,
-            "initial_orientation_as_reference"
-            if cfg.find("initialOrientationAsReference") is None
-            else "initialOrientationAsReference",  # ROS 1's gazebo_ros_imu_sensor spelling
-            False,
-            log,
-        ),
-        topic=child_text(cfg, "topicName") or ("/range" if ros1_range else "~/out"),
-        body_name=child_text(cfg, "bodyName") or child_text(cfg, "body_name") or "",
-        update_rate=parse_float(cfg, "updateRate", 0.0, log),
-        gaussian_noise=parse_float(cfg, "gaussianNoise", 0.0, log),
-        camera_name=child_text(cfg, "camera_name") or child_text(cfg, "cameraName") or "",
-        namespace=ns or child_text(cfg, "robotNamespace") or ctx.entity.namespace,
-        remappings=tuple(remaps.items()),
-    )
+    @classmethod
+    def settings(cls, plugin: Plugin, cfg: ConfigElement, ctx: SystemContext) -> dict[str, Any]:
+        """The fields read from the plugin's block ``cfg`` (a subclass adds its own to these)."""
+        ns, remaps = ros_block(cfg)
+        return {
+            "frame_name": child_text(cfg, "frame_name") or child_text(cfg, "frameName") or "",
+            "topic": child_text(cfg, "topicName") or "~/out",
+            "namespace": ns or child_text(cfg, "robotNamespace") or ctx.entity.namespace,
+            "remappings": tuple(remaps.items()),
+            "update_rate": parse_float(cfg, "updateRate", 0.0, ctx.logger),
+        }
+
+    def plugin_topic(self, ctx: SystemContext, sensor: Sensor | None) -> str:
+        """The ROS topic it publishes on: its ``topic`` under its node's namespace and remappings."""
+        node = ctx.plugin.name if ctx.plugin is not None else ""
+        return resolve_topic(self.topic, self.namespace, dict(self.remappings), node=node)
+
+    def message_type(self, ctx: SystemContext, default: MessageKind) -> MessageKind:
+        """The message it publishes: the kind's own (a ray sensor's follows its ``<output_type>``)."""
+        return default
+
+    def output(self, topic: str, frame_id: str, msg_type: MessageKind) -> Output:
+        """The :class:`Output` of these settings (a range sensor's adds its radiation type)."""
+        return Output(topic, frame_id, msg_type)
 
 
 OUTPUT_MESSAGES = {
@@ -315,10 +281,9 @@ def sensor_output(
     gz-sim: the sensor's ``<topic>``, else its scoped name ``/world/<w>/model/<m>/link/<l>/sensor/<s>/<kind>``
     (``depth_image`` for a depth camera), in ``<frame_id>`` (``<gz_frame_id>`` in older files), else
     gz's scoped frame ``<model>::<link>::<sensor>``, which no TF tree has: a user who wants TF names one.
-    gazebo_ros: the plugin's topic under its node's namespace and remappings (a camera's
-    ``<camera_name>/image_raw``), in ``<frame_name>``, else the link; ``<output_type>`` picks a ray sensor's
-    message. Frames get the robot's frame prefix (its namespace) as the robot's TF does."""
-    from ..robot_state import entity_frame_prefix
+    gazebo_ros: the plugin's topic under its node's namespace and remappings, in ``<frame_name>``, else the
+    link, as the kind's settings ``c`` (:class:`SensorPluginConfig` or its own subclass) say. Frames get the
+    robot's frame prefix (its namespace) as the robot's TF does."""
 
     log = ctx.logger
     prefix = entity_frame_prefix(ctx.entity, log)
@@ -331,30 +296,7 @@ def sensor_output(
         frame = child_text(cfg, "frame_id") or child_text(cfg, "gz_frame_id")
         frame = prefix + frame if frame else f"{ctx.entity.name}::{link}::{sensor.name}"
         return Output(resolve_topic(topic, ctx.entity.namespace), frame, default_type)
-    if kind == "image":  # gazebo_ros_camera: <camera_name>/image_raw in the plugin's namespace
-        name = c.camera_name or (sensor.name if sensor is not None else "camera")
-        topic = resolve_topic(f"{name}/image_raw", c.namespace, dict(c.remappings))
-    else:
-        topic = resolve_topic(c.topic, c.namespace, dict(c.remappings), node=ctx.plugin.name)
-    msg_type = default_type
-    if kind == "scan":
-        found = _OUTPUT_TYPES.get(c.output_type.strip().lower())
-        if found is None:
-            el = ctx.plugin.config.find("output_type")
-            where = f"{el.location}: " if el is not None and el.location else ""
-            log.warning(
-                f"{where}<output_type> '{c.output_type}' is not one gazelle publishes (LaserScan, PointCloud2, "
-                "Range); publishing sensor_msgs/PointCloud2"
-            )
-            found = MsgType.POINT_CLOUD2
-        msg_type = found
-    return Output(
-        topic,
-        prefix + (c.frame_name or link),
-        msg_type,
-        radiation_type=0 if c.radiation_type == "ultrasound" else 1,
-        min_intensity=c.min_intensity,
-    )
+    return c.output(c.plugin_topic(ctx, sensor), prefix + (c.frame_name or link), c.message_type(ctx, default_type))
 
 
 # --------------------------------------------------------------------------- systems
@@ -369,6 +311,8 @@ class _SensorSystem(System):
     classic_plugins: ClassVar[dict[str, frozenset[str] | None]] = {}
     gz_system = ""
     gz_file = ""
+    plugin_config: ClassVar[type[SensorPluginConfig]] = SensorPluginConfig
+    """The settings its gazebo_ros plugins take: :class:`SensorPluginConfig`, or a subclass in the kind's module."""
     output_message: ClassVar[MessageKind | None] = None
     """The message it publishes, when not its ``output_kind``'s in :data:`OUTPUT_MESSAGES` (a
     :class:`DeclaredMessage` of its own module)."""
@@ -381,7 +325,7 @@ class _SensorSystem(System):
         """X_LS: the sensor in its link's frame."""
         self.rate_hz = 0.0
         self.output: Output | None = None
-        self.config = SensorPluginConfig()
+        self.config = self.plugin_config()
         self._pub: Endpoint | None = None
         self._body: BodyHandle | None = None
         self._gate = RateGate()
@@ -444,7 +388,7 @@ class _SensorSystem(System):
         nothing with an error naming the file and line."""
         log = ctx.logger
         self.sensor, link = ctx.sensor, ctx.link
-        self.config = c = parse_plugin_config(ctx)
+        self.config = c = self.plugin_config.read(ctx)
         if self.sensor is None:
             if not c.body_name:
                 where = f"{ctx.plugin.location}: " if ctx.plugin and ctx.plugin.location else ""

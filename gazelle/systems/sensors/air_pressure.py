@@ -22,7 +22,8 @@ from typing import ClassVar
 from ...physics import PhysicsWorld
 from .._base import SystemContext, UpdateInfo
 from .._bus import DeclaredMessage, MessageKind
-from ._common import Noise, _SensorSystem, parse_noise, sensor_system
+from .._registration import add_plugin
+from ._common import Noise, _SensorSystem, parse_noise
 
 FLUID_PRESSURE = DeclaredMessage("FLUID_PRESSURE", "sensor_msgs/msg/FluidPressure")
 
@@ -57,7 +58,6 @@ class FluidPressure:
     variance: float
 
 
-@sensor_system
 class AirPressureSensor(_SensorSystem):
     """An air pressure sensor on a link (see the module docstring)."""
 
@@ -114,3 +114,6 @@ class AirPressureSensor(_SensorSystem):
         assert self._pub is not None and self.output is not None
         pressure, variance = self.read()
         self._pub.publish(FluidPressure(info.sim_time_sec, self.output.frame_id, pressure, variance))
+
+
+add_plugin(AirPressureSensor)

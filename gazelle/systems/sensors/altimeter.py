@@ -7,16 +7,15 @@ from typing import ClassVar
 from ...physics import PhysicsWorld
 from .._base import SystemContext, UpdateInfo
 from .._payloads import Altimeter
+from .._registration import add_plugin
 from ._common import (
     Noise,
     _SensorSystem,
     parse_noise,
-    sensor_system,
 )
 
 
 # --------------------------------------------------------------------------- altimeter
-@sensor_system
 class AltimeterSensor(_SensorSystem):
     """gz-sim's altimeter (``gz-sim-altimeter-system``): the sensor's height above where it started
     (``vertical_reference``) and its vertical velocity, with ``<altimeter><vertical_position|
@@ -80,3 +79,6 @@ class AltimeterSensor(_SensorSystem):
         assert self._pub is not None and self.output is not None
         h, v, ref = self.read()
         self._pub.publish(Altimeter(info.sim_time_sec, self.output.frame_id, h, v, ref))
+
+
+add_plugin(AltimeterSensor)

@@ -33,12 +33,13 @@ from __future__ import annotations
 import logging
 import math
 from dataclasses import dataclass
-from typing import ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 
 from ...description import (
     ConfigElement,
+    Plugin,
     Sensor,
     parse_floats,
 )
@@ -47,15 +48,16 @@ from .._base import SystemContext, UpdateInfo
 from .._bus import Endpoint, MsgType, resolve_topic
 from .._payloads import XYZ_RGB, XYZ_RGB_PADDED, CameraInfo, Image, PointCloud
 from .._plugin_config import child_text, parse_float
+from .._registration import add_plugin
 from ._common import (
     SENSOR_DEPTH,
     Noise,
     SensorConfigError,
     SensorLimitError,
+    SensorPluginConfig,
     _SensorSystem,
     gz_scoped_topic,
     parse_noise,
-    sensor_system,
 )
 
 CAMERA_TYPES = frozenset({"camera", "depth", "depth_camera", "rgbd_camera", "rgbd"})
@@ -256,7 +258,26 @@ OPTICAL = np.array([[0.0, -1.0, 0.0], [0.0, 0.0, -1.0], [1.0, 0.0, 0.0]])
 """Rotation from a link frame (x forward, z up) to the optical frame (z forward, x right, y down)."""
 
 
-@sensor_system
+@dataclass(frozen=True)
+class CameraPluginConfig(SensorPluginConfig):
+    """The camera plugins' settings (``libgazebo_ros_camera.so``, its depth and openni_kinect variants): the common
+    ones and ``<camera_name>``, which names the topics."""
+
+    camera_name: str = ""
+    """``<camera_name>`` (ROS 1: ``<cameraName>``), the first part of the topics; default the sensor's name."""
+
+    @classmethod
+    def settings(cls, plugin: Plugin, cfg: ConfigElement, ctx: SystemContext) -> dict[str, Any]:
+        """The common settings and ``<camera_name>``."""
+        name = child_text(cfg, "camera_name") or child_text(cfg, "cameraName") or ""
+        return super().settings(plugin, cfg, ctx) | {"camera_name": name}
+
+    def plugin_topic(self, ctx: SystemContext, sensor: Sensor | None) -> str:
+        """gazebo_ros_camera's ``<camera_name>/image_raw`` in the plugin's namespace (remappable)."""
+        name = self.camera_name or (sensor.name if sensor is not None else "camera")
+        return resolve_topic(f"{name}/image_raw", self.namespace, dict(self.remappings))
+
+
 class Camera(_SensorSystem):
     """A camera or depth camera: Image, CameraInfo, depth Image (32FC1) and PointCloud2 (see the module
     docstring). It renders only while someone subscribes."""
@@ -269,6 +290,8 @@ class Camera(_SensorSystem):
     }
     gz_system = "Sensors"
     output_kind = "image"
+    plugin_config = CameraPluginConfig
+    config: CameraPluginConfig
 
     kind = "camera"
 
@@ -478,3 +501,6 @@ class Camera(_SensorSystem):
         if self._renderer is not None:
             self._renderer.close()
             self._renderer = None
+
+
+add_plugin(Camera)

@@ -14,16 +14,15 @@ from .._base import SystemContext, UpdateInfo
 from .._bus import MsgType, resolve_topic
 from .._payloads import ContactPair, Contacts
 from .._plugin_config import child_text
+from .._registration import add_plugin
 from ._common import (
     SENSOR_DEPTH,
     _SensorSystem,
     gz_scoped_topic,
-    sensor_system,
 )
 
 
 # --------------------------------------------------------------------------- contact
-@sensor_system
 class ContactSensor(_SensorSystem):
     """A contact sensor (``<sensor type="contact">`` with ``<contact><collision>``): every contact of its
     collisions, forces on the sensor's collision, all in the world frame. gazebo_ros_bumper publishes
@@ -160,3 +159,6 @@ class ContactSensor(_SensorSystem):
         pairs = self.read(world)
         if pairs or not self._only_contacts:  # gz-sim's Contact system sends nothing while nothing touches
             self._pub.publish(Contacts(info.sim_time_sec, self.output.frame_id, pairs))
+
+
+add_plugin(ContactSensor)

@@ -17,13 +17,14 @@ from ...description import (
 from ...physics import BodyHandle, PhysicsWorld
 from .._base import RateGate, System, SystemContext, UpdateInfo
 from .._bus import Endpoint, MsgType, resolve_topic
+from .._frames import entity_frame_prefix
 from .._payloads import WrenchStamped
 from .._plugin_config import child_text, parse_float, ros_block
+from .._registration import add_plugin
 from ._common import (
     SENSOR_DEPTH,
     Noise,
     checked_rate,
-    sensor_system,
     xyz_noise,
 )
 
@@ -50,7 +51,6 @@ class ForceTorqueConfig:
     """gz-sim: ``<force>`` and ``<torque>`` ``<x|y|z><noise>``, force x, y, z then torque x, y, z (N, N·m)."""
 
 
-@sensor_system
 class ForceTorqueSensor(System):
     """The wrench through a joint (geometry_msgs/WrenchStamped), at the joint's origin.
 
@@ -151,7 +151,6 @@ class ForceTorqueSensor(System):
         self._X_CJ = joint.child_offset.inverse()
         self._child = ctx.world.body(ctx.entity.name, joint.child)
         self._parent = ctx.world.body(ctx.entity.name, joint.parent)
-        from ..robot_state import entity_frame_prefix
 
         prefix = entity_frame_prefix(ctx.entity, log)
         if ctx.sensor is not None:  # frame_id: the frame the wrench is in (gz-sim's scoped name for the sensor frame)
@@ -224,3 +223,6 @@ class ForceTorqueSensor(System):
                 (float(t[0]), float(t[1]), float(t[2])),
             )
         )
+
+
+add_plugin(ForceTorqueSensor)

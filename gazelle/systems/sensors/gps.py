@@ -35,13 +35,13 @@ from ...physics import PhysicsWorld
 from .._base import SystemContext, UpdateInfo
 from .._bus import Endpoint, MsgType, resolve_topic
 from .._payloads import NavSatFix, Vector3Stamped
+from .._registration import add_plugin
 from ._common import (
     SENSOR_DEPTH,
     Noise,
     _SensorSystem,
     gz_scoped_topic,
     parse_noise,
-    sensor_system,
 )
 
 WGS84_A = 6378137.0
@@ -105,7 +105,6 @@ def parse_gps_noise(sensor: Sensor, log: logging.Logger) -> GpsNoise:
     )
 
 
-@sensor_system
 class GpsSensor(_SensorSystem):
     """A GPS (``gps``/``navsat``): NavSatFix from the world's ``<spherical_coordinates>`` and, with
     gazebo_ros_gps_sensor, the ENU velocity on ``~/vel``."""
@@ -225,3 +224,6 @@ class GpsSensor(_SensorSystem):
             self._pub.publish(NavSatFix(t, frame, lat, lon, alt, *self._covariance))
         if want_vel and self._vel is not None:
             self._vel.publish(Vector3Stamped(t, frame, vel))
+
+
+add_plugin(GpsSensor)

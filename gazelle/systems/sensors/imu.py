@@ -20,12 +20,13 @@ from __future__ import annotations
 import logging
 import math
 from dataclasses import dataclass
-from typing import ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 
 from ...description import (
     ConfigElement,
+    Plugin,
     Quat,
     Sensor,
     parse_floats,
@@ -37,12 +38,13 @@ from ...physics import PhysicsWorld
 from .._base import SystemContext, UpdateInfo
 from .._payloads import Imu, Vec3
 from .._plugin_config import child_text, parse_bool, parse_float
+from .._registration import add_plugin
 from ._common import (
     NOISE_ROWS,
     Noise,
+    SensorPluginConfig,
     _SensorSystem,
     parse_noise,
-    sensor_system,
     xyz_noise,
 )
 
@@ -148,7 +150,36 @@ def _imu_block(sensor: Sensor | None) -> ConfigElement | None:
     return config.find("imu") if config is not None else None
 
 
-@sensor_system
+@dataclass(frozen=True)
+class ImuPluginConfig(SensorPluginConfig):
+    """The IMU plugins' settings: ``libgazebo_ros_imu_sensor.so`` (inside a ``<sensor>``) and ROS 1's
+    ``libgazebo_ros_imu.so`` model plugin (``<bodyName>``, ``<updateRate>``, ``<gaussianNoise>``)."""
+
+    gaussian_noise: float = 0.0
+    """ROS 1's ``<gaussianNoise>``: the standard deviation of every channel when no ``<imu><noise>`` says more
+    (:func:`parse_imu_noise`)."""
+    initial_orientation_as_reference: bool = False
+    """``<initial_orientation_as_reference>`` (ROS 1: ``<initialOrientationAsReference>``): report the orientation
+    relative to the sensor's spawn orientation instead of the world (REP 145's reference)."""
+
+    @classmethod
+    def settings(cls, plugin: Plugin, cfg: ConfigElement, ctx: SystemContext) -> dict[str, Any]:
+        """The common settings, the orientation reference and ROS 1's model plugin's link and noise."""
+        log = ctx.logger
+        return super().settings(plugin, cfg, ctx) | {
+            "initial_orientation_as_reference": parse_bool(
+                cfg,
+                "initial_orientation_as_reference"
+                if cfg.find("initialOrientationAsReference") is None
+                else "initialOrientationAsReference",  # ROS 1's gazebo_ros_imu_sensor spelling
+                False,
+                log,
+            ),
+            "body_name": child_text(cfg, "bodyName") or child_text(cfg, "body_name") or "",
+            "gaussian_noise": parse_float(cfg, "gaussianNoise", 0.0, log),
+        }
+
+
 class ImuSensor(_SensorSystem):
     """An IMU: orientation, angular velocity and proper linear acceleration (sensor_msgs/Imu)."""
 
@@ -157,6 +188,8 @@ class ImuSensor(_SensorSystem):
     gz_system = "Imu"
     plugin_files = ("gazebo_ros_imu",)  # ROS 1's IMU model plugin (<bodyName>), as in TurtleBot3's noetic xacro
     output_kind = "imu"
+    plugin_config = ImuPluginConfig
+    config: ImuPluginConfig
 
     kind = "IMU"
 
@@ -270,3 +303,6 @@ class ImuSensor(_SensorSystem):
                 linear_acceleration_covariance=self._cov[1],
             )
         )
+
+
+add_plugin(ImuSensor)

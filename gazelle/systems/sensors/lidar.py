@@ -20,27 +20,30 @@ from __future__ import annotations
 import logging
 import math
 from dataclasses import dataclass
-from typing import ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 
 from ...description import (
     ConfigElement,
+    Plugin,
     Sensor,
     rotation_matrix,
 )
 from ...physics import PhysicsWorld
 from .._base import RateGate, SystemContext, UpdateInfo
-from .._bus import MsgType
+from .._bus import MessageKind, MsgType
 from .._payloads import LaserScan, PointCloud, Range
-from .._plugin_config import parse_float
+from .._plugin_config import child_text, parse_float
+from .._registration import add_plugin
 from ._common import (
     Noise,
+    Output,
     SensorConfigError,
     SensorLimitError,
+    SensorPluginConfig,
     _SensorSystem,
     parse_noise,
-    sensor_system,
 )
 
 LIDAR_TYPES = frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar"})
@@ -153,7 +156,79 @@ def parse_lidar(sensor: Sensor, log: logging.Logger) -> LidarSpec:
     return LidarSpec(h, v, rmin, rmax, parse_noise(block.find("noise"), log, f"sensor '{sensor.name}'"))
 
 
-@sensor_system
+_OUTPUT_TYPES = {
+    "sensor_msgs/laserscan": MsgType.LASER_SCAN,
+    "sensor_msgs/msg/laserscan": MsgType.LASER_SCAN,
+    "sensor_msgs/pointcloud2": MsgType.POINT_CLOUD2,
+    "sensor_msgs/msg/pointcloud2": MsgType.POINT_CLOUD2,
+    "sensor_msgs/range": MsgType.RANGE,
+    "sensor_msgs/msg/range": MsgType.RANGE,
+}
+"""``<output_type>`` -> the message a ray sensor publishes."""
+
+
+@dataclass(frozen=True)
+class RayPluginConfig(SensorPluginConfig):
+    """The ray plugins' settings: ``libgazebo_ros_ray_sensor.so`` (ROS 2), ROS 1's ``libgazebo_ros_laser.so`` /
+    ``libgazebo_ros_gpu_laser.so`` (LaserScan) and ``libgazebo_ros_range.so`` (Range on ``/range``, ultrasound)."""
+
+    output_type: str = "sensor_msgs/PointCloud2"
+    """``sensor_msgs/PointCloud2`` (the default; ROS 1's laser plugins: LaserScan, its range plugin: Range),
+    ``sensor_msgs/LaserScan`` or ``sensor_msgs/Range``."""
+    radiation_type: str = "infrared"
+    """Range output: ``infrared`` or ``ultrasound`` (``<radiation_type>``; ROS 1's gazebo_ros_range:
+    ``<radiation>``, ultrasound by default)."""
+    min_intensity: float = -math.inf
+    """Intensities below it are raised to it (gazelle's rays have intensity 0: no laser_retro yet)."""
+    gaussian_noise: float = 0.0
+    """ROS 1's gazebo_ros_range: ``<gaussianNoise>``, the standard deviation added to a reading."""
+
+    @classmethod
+    def settings(cls, plugin: Plugin, cfg: ConfigElement, ctx: SystemContext) -> dict[str, Any]:
+        """The common settings, the output type (each ROS 1 plugin's own default) and the range's radiation,
+        and ROS 1's ``<gaussianNoise>`` (the range plugin adds it to its readings)."""
+        out = super().settings(plugin, cfg, ctx)
+        log, filename = ctx.logger, plugin.filename.lower()
+        ros1_range = "gazebo_ros_range" in filename
+        raw_type = child_text(cfg, "output_type")
+        if raw_type is None and "laser" in filename:
+            raw_type = "sensor_msgs/LaserScan"  # ROS 1's gazebo_ros_laser publishes LaserScan
+        if raw_type is None and ros1_range:
+            raw_type = "sensor_msgs/Range"  # ROS 1's gazebo_ros_range (<radiation>, default ultrasound)
+        radiation = child_text(cfg, "radiation_type") or child_text(cfg, "radiation")
+        if ros1_range:
+            out["topic"] = child_text(cfg, "topicName") or "/range"
+        return out | {
+            "output_type": raw_type or "sensor_msgs/PointCloud2",
+            "radiation_type": (radiation or ("ultrasound" if ros1_range else "infrared")).strip().lower(),
+            "min_intensity": parse_float(cfg, "min_intensity", -math.inf, log),
+            "gaussian_noise": parse_float(cfg, "gaussianNoise", 0.0, log),
+        }
+
+    def message_type(self, ctx: SystemContext, default: MessageKind) -> MessageKind:
+        """``<output_type>``'s message; one gazelle does not publish is warned about, and PointCloud2 used."""
+        found = _OUTPUT_TYPES.get(self.output_type.strip().lower())
+        if found is None:
+            el = ctx.plugin.config.find("output_type") if ctx.plugin is not None and ctx.plugin.config else None
+            where = f"{el.location}: " if el is not None and el.location else ""
+            ctx.logger.warning(
+                f"{where}<output_type> '{self.output_type}' is not one gazelle publishes (LaserScan, PointCloud2, "
+                "Range); publishing sensor_msgs/PointCloud2"
+            )
+            found = MsgType.POINT_CLOUD2
+        return found
+
+    def output(self, topic: str, frame_id: str, msg_type: MessageKind) -> Output:
+        """With the range's radiation type (sensor_msgs/Range: 0 ultrasound, 1 infrared) and the intensity floor."""
+        return Output(
+            topic,
+            frame_id,
+            msg_type,
+            radiation_type=0 if self.radiation_type == "ultrasound" else 1,
+            min_intensity=self.min_intensity,
+        )
+
+
 class Lidar(_SensorSystem):
     """A ray / lidar sensor: LaserScan, PointCloud2 or Range (see the module docstring)."""
 
@@ -166,6 +241,8 @@ class Lidar(_SensorSystem):
     }
     gz_system = "Sensors"
     output_kind = "scan"
+    plugin_config = RayPluginConfig
+    config: RayPluginConfig
 
     kind = "lidar"
 
@@ -190,7 +267,7 @@ class Lidar(_SensorSystem):
             return
         self._dirs = self.spec.directions()
         if ctx.plugin is not None and "gazebo_ros_range" in ctx.plugin.filename.lower():
-            # <updateRate> and <gaussianNoise> are read with the other ROS 1 names (parse_plugin_config)
+            # <updateRate> and <gaussianNoise> are read with the other ROS 1 names (RayPluginConfig)
             fov = parse_float(ctx.plugin.config, "fov", 0.05, ctx.logger)  # gazebo_ros_range.cpp's default
             self._ros1_range = (fov, self.config.gaussian_noise)
         self._bias = self.spec.noise.bias(self._rng)  # one bias per sensor and run (GaussianNoiseModel::Load)
@@ -306,3 +383,6 @@ class Lidar(_SensorSystem):
         if r < s.range_max and noise > 0:
             r = min(r + float(self._rng.normal(0.0, noise)), s.range_max)
         self._pub.publish(Range(t, out.frame_id, out.radiation_type, fov, s.range_min, s.range_max, r))
+
+
+add_plugin(Lidar)

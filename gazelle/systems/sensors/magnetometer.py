@@ -12,16 +12,15 @@ from ...description import (
 from ...physics import PhysicsWorld
 from .._base import SystemContext, UpdateInfo
 from .._payloads import MagneticField
+from .._registration import add_plugin
 from ._common import (
     Noise,
     _SensorSystem,
-    sensor_system,
     xyz_noise,
 )
 
 
 # --------------------------------------------------------------------------- magnetometer
-@sensor_system
 class Magnetometer(_SensorSystem):
     """gz-sim's magnetometer (``gz-sim-magnetometer-system``): the world's ``<magnetic_field>`` in the
     sensor's frame, with ``<magnetometer><x|y|z><noise>``, as sensor_msgs/MagneticField on ``<topic>``
@@ -72,3 +71,6 @@ class Magnetometer(_SensorSystem):
         # no covariance (MagneticField's zeros) whatever the noise: gz-msgs' Magnetometer has none to carry, and
         # ros_gz_bridge (convert/sensor_msgs.cpp) says "magnetic_field_covariance is not supported"
         self._pub.publish(MagneticField(info.sim_time_sec, self.output.frame_id, (b[0], b[1], b[2])))
+
+
+add_plugin(Magnetometer)
