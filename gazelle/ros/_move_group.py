@@ -95,12 +95,9 @@ class MoveGroupNode(Node):
         context.scene = PlanningSceneMonitor(context)
         context.pipeline = PlanningPipeline(context)
         context.execution = TrajectoryExecutionManager(context)
-        self._take_descriptions()
-        self._capabilities: list[MoveGroupCapability] = [capability(context) for capability in CAPABILITIES]
-        for capability in self._capabilities:
-            capability.initialize()
+        self._capabilities: list[MoveGroupCapability] = []  # made once the robot is known (see _build)
         context.scene.start()
-        context.execution.start()
+        self._take_descriptions()
         # a second move_group on the domain answers every request too: said once, after discovery
         self._twin_check = self.create_timer(TWIN_CHECK_SEC, self._warn_of_twins, callback_group=context.callback_group)
 
@@ -160,7 +157,7 @@ class MoveGroupNode(Node):
     def _build(self, urdf: str, srdf: str) -> None:
         """Build the planners for the robot, with the joint limits of ``robot_description_planning``, and say once
         what of the user's MoveIt configuration is not used (kinematics solver plugins, the OMPL pipeline); a
-        robot the planner cannot model is an error in the log, and the node keeps answering with that error. Ends
+        robot the planner cannot model is an error in the log, and nothing is served (MoveIt's move_group ends). Ends
         with MoveIt's "You can start planning now!"."""
         context = self.group_context
         prefix = "robot_description_planning.joint_limits."
@@ -189,6 +186,13 @@ class MoveGroupNode(Node):
         context.urdf_text = urdf
         context.pool = pool
         context.scene.robot_loaded()
+        # MoveIt's move_group makes its capabilities once MoveItCpp has loaded the robot model (move_group.cpp,
+        # main: MoveGroupExe after MoveItCpp; MoveGroupExe::configureCapabilities): until then nothing is served,
+        # and a client that waits for a service or action finds one that can answer
+        self._capabilities = [capability(context) for capability in CAPABILITIES]
+        for capability in self._capabilities:
+            capability.initialize()
+        context.execution.start()
         context.ready.set()
         self.get_logger().info(
             f"You can start planning now! (groups: {', '.join(planner.groups)}; planning frame {planner.root_link})"

@@ -1,7 +1,7 @@
 """move_group's ``clear_octomap`` (std_srvs/Empty): MoveIt's ``ClearOctomapService`` capability
 (moveit_ros/move_group/src/default_capabilities/clear_octomap_service_capability.cpp, jazzy), RViz's "Clear
 octomap" button. gazelle's planning scene holds no octomap (no sensor plugin feeds one), so there is nothing
-to clear; it says MoveIt's two log lines all the same, robot or not."""
+to clear; it says MoveIt's two log lines all the same."""
 
 from __future__ import annotations
 
@@ -16,7 +16,7 @@ if TYPE_CHECKING:
 
 
 class ClearOctomapService:
-    """``clear_octomap``: needs no robot."""
+    """``clear_octomap``: nothing to clear."""
 
     def __init__(self, context: MoveGroupContext) -> None:
         self.context = context
