@@ -95,6 +95,8 @@ class Controller:
     name: str
     action: str
     joints: tuple[str, ...]
+    default: bool = False
+    """moveit_simple_controller_manager's ``default``: preferred where several controllers have the joints."""
 
 
 def _quat(q: np.ndarray) -> Any:

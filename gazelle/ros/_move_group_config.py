@@ -103,4 +103,6 @@ def config_parameters(folder: Path) -> list[Parameter]:
             out.append(
                 Parameter(f"moveit_simple_controller_manager.{name}.joints", value=list(spec.get("joints") or []))
             )
+            if isinstance(spec.get("default"), bool):
+                out.append(Parameter(f"moveit_simple_controller_manager.{name}.default", value=spec["default"]))
     return out

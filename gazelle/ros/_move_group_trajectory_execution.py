@@ -83,14 +83,16 @@ class TrajectoryExecutionManager:
     def _read_controllers(self) -> list[Controller]:
         """The controllers MoveIt's simple controller manager would use:
         ``moveit_simple_controller_manager.controller_names`` with each one's ``action_ns`` (default
-        ``follow_joint_trajectory``) and ``joints``."""
+        ``follow_joint_trajectory``), ``joints`` and ``default`` (false unless given:
+        moveit_simple_controller_manager.cpp, jazzy, reads it with get_parameter_or(..., false))."""
         prefix = "moveit_simple_controller_manager."
         names = self.context.parameter(prefix + "controller_names", [])
         out = []
         for name in names or []:
             ns = self.context.param(f"{prefix}{name}.action_ns") or "follow_joint_trajectory"
             joints = self.context.parameter(f"{prefix}{name}.joints", [])
-            out.append(Controller(name, f"/{name}/{ns}".replace("//", "/"), tuple(joints or ())))
+            default = self.context.parameter(f"{prefix}{name}.default", False) is True
+            out.append(Controller(name, f"/{name}/{ns}".replace("//", "/"), tuple(joints or ()), default))
         return out
 
     def _spin(self) -> None:
@@ -147,9 +149,12 @@ class TrajectoryExecutionManager:
             else:
                 listed = self.ros2_control_controllers()
                 pool = listed
-            single = next((c for c in pool if wanted <= set(c.joints)), None)
-            if single is not None:
-                return [single]
+            # MoveIt's findControllers ranks the options: default controllers first, then the ones of fewer
+            # joints (trajectory_execution_manager.cpp, OrderPotentialControllerCombination; the simple
+            # controller manager reports every controller active); the listed order breaks ties
+            singles = [c for c in pool if wanted <= set(c.joints)]
+            if singles:
+                return [min(singles, key=lambda c: (not c.default, len(c.joints)))]
             chosen = _cover(wanted, pool)
             if chosen:
                 return chosen

@@ -175,3 +175,35 @@ def test_the_execution_nodes_entities_are_made_on_the_thread_that_spins_it() -> 
     made = lambda: made_on.append(threading.current_thread().name) or 7
     got = TrajectoryExecutionManager.on_execution_thread(node, made)  # type: ignore[arg-type] - a stand-in manager
     assert got == 7 and made_on == ["spinner"]
+
+
+def test_of_two_controllers_with_the_joints_the_one_marked_default_is_used() -> None:
+    """Issue 51 item 3: moveit_simple_controller_manager's ``default: true`` was ignored and the first controller
+    listed was used. MoveIt's TrajectoryExecutionManager ranks default controllers first, then those of fewer
+    joints (trajectory_execution_manager.cpp, OrderPotentialControllerCombination)."""
+    from types import SimpleNamespace
+
+    plain = Controller(
+        "joint_trajectory_controller", "/joint_trajectory_controller/follow_joint_trajectory", tuple(JOINTS)
+    )
+    scaled = Controller(
+        "scaled_joint_trajectory_controller", "/scaled/follow_joint_trajectory", tuple(JOINTS), default=True
+    )
+    wide = Controller("whole_body_controller", "/whole/follow_joint_trajectory", (*JOINTS, "panda_joint3"))
+    manager = SimpleNamespace(controllers=[plain, scaled, wide], ros2_control_controllers=list)
+    assert TrajectoryExecutionManager.controllers_for(manager, JOINTS) == [scaled]  # type: ignore[arg-type]
+    manager.controllers = [wide, plain]
+    assert TrajectoryExecutionManager.controllers_for(manager, JOINTS) == [plain]  # type: ignore[arg-type]
+
+
+def test_a_moveit_controllers_yaml_default_becomes_a_parameter(tmp_path) -> None:
+    from gazelle.ros._move_group_config import config_parameters
+
+    (tmp_path / "moveit_controllers.yaml").write_text(
+        "moveit_simple_controller_manager:\n  controller_names: [a, b]\n"
+        "  a: {action_ns: follow_joint_trajectory, joints: [j1], default: false}\n"
+        "  b: {action_ns: follow_joint_trajectory, joints: [j1], default: true}\n"
+    )
+    params = {p.name: p.value for p in config_parameters(tmp_path)}
+    assert params["moveit_simple_controller_manager.b.default"] is True
+    assert params["moveit_simple_controller_manager.a.default"] is False
