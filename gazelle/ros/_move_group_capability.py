@@ -29,12 +29,23 @@ class MoveGroupCapability(Protocol):
     def destroy(self) -> None: ...
 
 
+INTERNAL_ERROR = "internal error in gazelle's planner (move_group's log has the details)"
+"""What a reply says of an error that is not MoveIt's: the collision checker's own words (coal's assertions,
+``pair_id < geom_model.collisionPairs.size()``) and exception names mean nothing to a client; the log keeps
+them."""
+
+
 def serve_on_planner(context: MoveGroupContext, srv_type: Any, name: str, fn: Any, role: str) -> Any:
-    """Serve ``name`` with ``fn(request, response, planner)``, answering every request: with no robot yet, a
-    FAILURE saying what is missing; a PlanningError as its MoveIt error code and message; anything else as
-    FAILURE naming the error (every message cut to a reply's length, its quoted values to excerpts). ``fn`` runs
-    on the pool's planner of ``role`` under that planner's lock, or, for ``write``, on the primary planner with
-    every lock held (roboplan's scenes are not re-entrant)."""
+    """Serve ``name`` with :func:`planner_callback` of ``fn``."""
+    return serve(context.node, srv_type, name, planner_callback(context, name, fn, role), context.callback_group)
+
+
+def planner_callback(context: MoveGroupContext, name: str, fn: Any, role: str) -> Any:
+    """``fn(request, response, planner)`` as a service callback that answers every request: with no robot yet, a
+    FAILURE saying what is missing; a PlanningError as its MoveIt error code and message (cut to a reply's
+    length, its quoted values to excerpts); anything else as FAILURE with :data:`INTERNAL_ERROR`, the error
+    itself in the log. ``fn`` runs on the pool's planner of ``role`` under that planner's lock, or, for
+    ``write``, on the primary planner with every lock held (roboplan's scenes are not re-entrant)."""
     logger = context.logger
 
     def wrapper(request: Any, response: Any) -> Any:
@@ -49,8 +60,7 @@ def serve_on_planner(context: MoveGroupContext, srv_type: Any, name: str, fn: An
             logger.warning(f"{name}: {err.code}: {message}")
             return _failed(response, err.code, message)
         except Exception as err:
-            message = reply_text(f"{type(err).__name__}: {err}")
-            logger.error(f"{name}: {message}")
-            return _failed(response, "FAILURE", f"{name}: internal error: {message}")
+            logger.error(f"{name}: {reply_text(f'{type(err).__name__}: {err}')}")
+            return _failed(response, "FAILURE", f"{name}: {INTERNAL_ERROR}")
 
-    return serve(context.node, srv_type, name, wrapper, context.callback_group)
+    return wrapper

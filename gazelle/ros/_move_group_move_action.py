@@ -10,7 +10,7 @@ from moveit_msgs.action import MoveGroup
 from moveit_msgs.msg import DisplayTrajectory
 
 from ..planning import PlanningError, quoted
-from ._move_group_capability import NO_ROBOT
+from ._move_group_capability import INTERNAL_ERROR, NO_ROBOT
 from ._move_group_common import _code, _end_goal
 from ._replies import serve_action
 
@@ -65,7 +65,7 @@ class MoveAction:
         except Exception as err:
             self.context.logger.error(f"planning failed: {type(err).__name__}: {err}")
             result.error_code = _code("FAILURE")
-            result.error_code.message = f"internal error: {type(err).__name__}: {err}"
+            result.error_code.message = f"planning: {INTERNAL_ERROR}"
             handle.abort()
             return result
         result.planning_time = time.monotonic() - t0

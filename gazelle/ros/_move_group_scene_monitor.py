@@ -12,15 +12,16 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from moveit_msgs.msg import (
+    AllowedCollisionEntry,
     AttachedCollisionObject,
     CollisionObject,
     PlanningScene,
     PlanningSceneWorld,
 )
 
-from ..planning import CollisionMatrix, PlanningError, SceneObject, quoted
+from ..planning import ArmPlanner, CollisionMatrix, PlanningError, SceneObject, quoted
 from ._move_group_common import LATCHED, MAX_SCENE_OBJECTS, OBJECT_PADDING_PARAMETER, _log, _same_shapes
-from ._planning_scene import checked_matrix, padded, shapes_of
+from ._planning_scene import attached_message, checked_matrix, padded, shapes_of, to_message
 from ._planning_scene import matrix as _matrix
 
 if TYPE_CHECKING:
@@ -38,6 +39,10 @@ class PlanningSceneMonitor:
         self.sim_world: PlanningSceneWorld | None = None
         """The simulation's geometry heard before the robot was known (taken when it is)."""
         self.object_padding = self._object_padding()
+        self.changed = False
+        """Whether the scene changed since it was last published on /monitored_planning_scene."""
+        self._published_joints: dict[str, float] = {}
+        self._publisher: Any = None
 
     def start(self) -> None:
         """Subscribe to the scene topics and the simulation's world (gazelle sim publishes its collision geometry:
@@ -54,11 +59,66 @@ class PlanningSceneMonitor:
         )
 
     def robot_loaded(self) -> None:
-        """The robot is known: the simulation's world heard before it goes into the scene."""
+        """The robot is known: the simulation's world heard before it goes into the scene, and the scene is
+        published from now on."""
         pool = self.context.pool
         if pool is not None and self.sim_world is not None:
             with pool.writing():
                 self.take_sim_world(self.sim_world)
+        self._start_publishing()
+
+    def _start_publishing(self) -> None:
+        """``/monitored_planning_scene`` (moveit_msgs/PlanningScene; RViz's MotionPlanning display and other
+        tools follow the scene there), as MoveIt's PlanningSceneMonitor publishes it for move_group
+        (planning_scene_monitor.cpp, startPublishingPlanningScene and scenePublishingThread: the whole scene
+        once, then the updates at most ``publish_planning_scene_hz``, 4 by default). MoveItConfigsBuilder's
+        launch files turn it on (moveit_configs_builder.py, planning_scene_monitor: ``publish_planning_scene``
+        True), and so does gazelle unless the parameter says False. Each change of the objects or the
+        allowed collisions is published as a whole scene; a move of the robot alone as a robot-state diff."""
+        context = self.context
+        if context.parameter("publish_planning_scene", True) is False:
+            return
+        hz = context.parameter("publish_planning_scene_hz", 4.0)
+        hz = float(hz) if isinstance(hz, (int, float)) and not isinstance(hz, bool) and 0 < hz <= 100 else 4.0
+        self._publisher = context.node.create_publisher(PlanningScene, "monitored_planning_scene", 100)
+        self.changed = True  # the whole scene first
+        context.node.create_timer(1.0 / hz, self._publish, callback_group=context.callback_group)
+
+    def _publish(self) -> None:
+        """The scene's update since the last one, if any (see :meth:`_start_publishing`)."""
+        pool = self.context.pool
+        if pool is None or self._publisher is None:
+            return
+        joints = self.context.latest_joints
+        if self.changed:
+            self.changed = False
+            with pool.using("query") as planner:
+                msg = self.scene_message(planner)
+        elif joints and joints != self._published_joints:
+            msg = PlanningScene(is_diff=True)
+            msg.robot_state.is_diff = True
+            msg.robot_state.joint_state.name = list(joints)
+            msg.robot_state.joint_state.position = [float(v) for v in joints.values()]
+        else:
+            return
+        self._published_joints = joints
+        self._publisher.publish(msg)
+
+    def scene_message(self, planner: ArmPlanner) -> PlanningScene:
+        """The whole scene as a PlanningScene (what ``get_planning_scene`` answers with every component): the
+        robot's current state with its attached objects, the world's collision objects (the simulation's
+        own included) and the allowed collision matrix, from ``planner`` (held by the caller)."""
+        scene = PlanningScene(name="gazelle", robot_model_name=planner.semantics.robot_name, is_diff=False)
+        scene.robot_state = self.context.robot_state(planner.state(self.context.latest_joints or None))
+        objects = planner.objects()
+        scene.robot_state.attached_collision_objects = [attached_message(o) for o in objects if o.link]
+        scene.world.collision_objects = [to_message(o, planner.root_link) for o in objects if not o.link]
+        acm = planner.acm
+        scene.allowed_collision_matrix.entry_names = acm.message_names()
+        scene.allowed_collision_matrix.entry_values = [AllowedCollisionEntry(enabled=row) for row in acm.rows()]
+        scene.allowed_collision_matrix.default_entry_names = list(acm.defaults)
+        scene.allowed_collision_matrix.default_entry_values = list(acm.defaults.values())
+        return scene
 
     def _object_padding(self) -> float:
         """:data:`OBJECT_PADDING_PARAMETER`, 0 when absent; a value that is no finite non-negative number is
@@ -83,6 +143,7 @@ class PlanningSceneMonitor:
                 return
             try:
                 with pool.writing():
+                    self.changed = True
                     fn(msg)
             except PlanningError as err:
                 self.context.logger.warning(f"/{topic}: {err.code}: {err.message}")
@@ -96,6 +157,7 @@ class PlanningSceneMonitor:
             self.sim_world = msg  # taken when the robot is known
             return
         with pool.writing():
+            self.changed = True
             self.take_sim_world(msg)
 
     def take_sim_world(self, msg: PlanningSceneWorld) -> None:
@@ -187,10 +249,15 @@ class PlanningSceneMonitor:
                 )
             except ValueError as err:
                 raise PlanningError("FAILURE", f"allowed_collision_matrix: {err}") from None
+        self.changed = True
         self.note_scene_parts(scene)
-        if not scene.is_diff:  # a whole scene replaces the objects there are
+        if not scene.is_diff:  # a whole scene replaces the objects there are but the simulation's own
+            # MoveIt clears its world (planning_scene.cpp, setPlanningSceneMsg) and its world geometry monitor
+            # fills in again what the sensors see; the simulation's objects are that sensed world, published
+            # again only when they move: they stay (the ground was gone until the next movement)
             for obj in planner.objects():
-                planner.remove_object(obj.name)
+                if obj.link or obj.name not in self.sim_objects:
+                    planner.remove_object(obj.name)
         for co in scene.world.collision_objects:
             self.apply_world_object(co)
         for aco in scene.robot_state.attached_collision_objects:
