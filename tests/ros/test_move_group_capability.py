@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from contextlib import contextmanager
 from types import SimpleNamespace
+from typing import Any
 
 from moveit_msgs.msg import MoveItErrorCodes
 from moveit_msgs.srv import ApplyPlanningScene, GetMotionPlan
@@ -17,7 +18,9 @@ from gazelle.ros._move_group_capability import planner_callback
 COAL = "pair_id < geom_model.collisionPairs.size()"
 
 
-def _context(said: list[str]) -> SimpleNamespace:
+def _context(said: list[str]) -> Any:
+    """A stand-in MoveGroupContext: a pool whose planner is a string, and a logger into ``said``."""
+
     @contextmanager
     def held(*_role: str):
         yield "planner"
