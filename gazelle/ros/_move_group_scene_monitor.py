@@ -74,7 +74,8 @@ class PlanningSceneMonitor:
         once, then the updates at most ``publish_planning_scene_hz``, 4 by default). MoveItConfigsBuilder's
         launch files turn it on (moveit_configs_builder.py, planning_scene_monitor: ``publish_planning_scene``
         True), and so does gazelle unless the parameter says False. Each change of the objects or the
-        allowed collisions is published as a whole scene; a move of the robot alone as a robot-state diff."""
+        allowed collisions is published as a whole scene; a move of the robot alone as a robot-state diff.
+        Nothing is built while no one subscribes; the changes since are then one whole scene."""
         context = self.context
         if context.parameter("publish_planning_scene", True) is False:
             return
@@ -87,8 +88,8 @@ class PlanningSceneMonitor:
     def _publish(self) -> None:
         """The scene's update since the last one, if any (see :meth:`_start_publishing`)."""
         pool = self.context.pool
-        if pool is None or self._publisher is None:
-            return
+        if pool is None or self._publisher is None or not self._publisher.get_subscription_count():
+            return  # no one listens: nothing is built (a subscriber's first message is a whole scene)
         joints = self.context.latest_joints
         if self.changed:
             self.changed = False
