@@ -20,7 +20,10 @@ CONFIG = PANDA / "moveit_resources_panda_moveit_config" / "config"
 LATCHED = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
 READY = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785]
 """The SRDF's 'ready' state of panda_arm (no /joint_states here: the start state is given)."""
-SERVED_BY_CAPABILITIES = ("/plan_kinematic_path", "/compute_fk", "/get_planning_scene", "/move_action")
+NS = "/startup_test"
+SERVED_BY_CAPABILITIES = tuple(
+    f"{NS}/{name}" for name in ("plan_kinematic_path", "compute_fk", "get_planning_scene", "move_action")
+)
 
 
 def _names(ros: RosClient) -> set[str]:
@@ -33,10 +36,11 @@ def test_move_group_serves_nothing_until_its_robot_is_known_then_answers_at_once
     """Waits 3 s on purpose for services that must not appear (they came with the node's own parameter
     services before)."""
     monkeypatch.setenv("GAZELLE_RESOURCE_PATH", str(PANDA))
-    move_group = start([*GAZELLE, "move_group"], "move_group")
     ros = RosClient("move_group_startup_test")
+    # in a namespace of its own: a move_group an earlier test module stopped may linger in the graph
+    move_group = start([*GAZELLE, "move_group", "--ros-args", "-r", f"__ns:={NS}"], "move_group")
     try:
-        wait_for(lambda: "/move_group/get_parameters" in _names(ros), 30, "move_group's parameter services")
+        wait_for(lambda: f"{NS}/move_group/get_parameters" in _names(ros), 30, "move_group's parameter services")
         deadline = time.monotonic() + 3.0
         while time.monotonic() < deadline:  # polled as wait_for polls: nothing may appear in these 3 s
             early = _names(ros) & set(SERVED_BY_CAPABILITIES)
@@ -44,13 +48,13 @@ def test_move_group_serves_nothing_until_its_robot_is_known_then_answers_at_once
             time.sleep(0.05)
         publishers = []
         for topic, text in (
-            ("robot_description", read_description_file(str(CONFIG / "panda.urdf.xacro"))),
-            ("robot_description_semantic", (CONFIG / "panda.srdf").read_text()),
+            (f"{NS}/robot_description", read_description_file(str(CONFIG / "panda.urdf.xacro"))),
+            (f"{NS}/robot_description_semantic", (CONFIG / "panda.srdf").read_text()),
         ):
             pub = ros.node.create_publisher(String, topic, LATCHED)
             pub.publish(String(data=text))
             publishers.append(pub)
-        wait_for(lambda: "/plan_kinematic_path" in _names(ros), 60, "/plan_kinematic_path once the robot is known")
+        wait_for(lambda: f"{NS}/plan_kinematic_path" in _names(ros), 60, "plan_kinematic_path once the robot is known")
         request = GetMotionPlan.Request()
         mpr = request.motion_plan_request
         mpr.group_name = "panda_arm"
@@ -59,7 +63,7 @@ def test_move_group_serves_nothing_until_its_robot_is_known_then_answers_at_once
         mpr.goal_constraints = [
             Constraints(joint_constraints=[JointConstraint(joint_name="panda_joint1", position=0.3, weight=1.0)])
         ]
-        reply = ros.call(GetMotionPlan, "/plan_kinematic_path", request, timeout=30)
+        reply = ros.call(GetMotionPlan, f"{NS}/plan_kinematic_path", request, timeout=30)
         code = reply.motion_plan_response.error_code
         assert code.val == MoveItErrorCodes.SUCCESS, (code.val, code.message, move_group.output)
         move_group.wait_line("You can start planning now!", 5)
