@@ -35,7 +35,10 @@ pytestmark = pytest.mark.slow
 
 
 def _plan(panda: Panda, request: Any, timeout: float = 60.0) -> tuple[Any, float]:
-    """plan_kinematic_path: (its MoveItErrorCodes, how long the answer took)."""
+    """plan_kinematic_path: (its MoveItErrorCodes, how long the answer took, the service's discovery not
+    counted)."""
+    panda.ros.client(GetMotionPlan, "/plan_kinematic_path")
+    panda.joints()  # and the arm's /joint_states are there (move_group waits for its current state)
     t0 = time.monotonic()
     reply = panda.ros.call(
         GetMotionPlan, "/plan_kinematic_path", GetMotionPlan.Request(motion_plan_request=request), timeout
