@@ -9,11 +9,13 @@ from ._group_urdf import GroupUrdfError as GroupUrdfError
 from ._group_urdf import group_urdf as group_urdf
 from ._names import NAME_CHARS as NAME_CHARS
 from ._names import quoted as quoted
+from ._path_constraints import PathConstraints as PathConstraints
 from ._planner import CARTESIAN_TIMEOUT_SEC as CARTESIAN_TIMEOUT_SEC
 from ._planner import MAX_CARTESIAN_STEPS as MAX_CARTESIAN_STEPS
 from ._planner import MAX_IK_SEC as MAX_IK_SEC
 from ._planner import MAX_PLANNING_SEC as MAX_PLANNING_SEC
 from ._planner import MAX_TRAJECTORY_POINTS as MAX_TRAJECTORY_POINTS
+from ._planner import PLANNERS as PLANNERS
 from ._planner import ArmPlanner as ArmPlanner
 from ._planner import Trajectory as Trajectory
 from ._pool import PlannerPool as PlannerPool

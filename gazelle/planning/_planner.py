@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from ._path_constraints import PathConstraints
 from ._robot_scene import PlanningError, RobotScene
 
 IK_DIAGNOSIS_SEC = 0.2
@@ -33,6 +34,14 @@ CARTESIAN_TIMEOUT_SEC = 30.0
 bound on the IK's own 2 s guard a pose); past it the request is refused (TIMED_OUT)."""
 MAX_PLANNING_SEC = 30.0
 """s the most one plan searches: a longer ``allowed_planning_time`` is cut to this (MoveIt's default is 5)."""
+MAX_PLANNING_ATTEMPTS = 100
+"""The most searches one plan makes for MoveIt's ``num_planning_attempts`` (they share its time)."""
+TREE_NODES = 5_000
+"""The most nodes one search's trees grow (roboplan's default is 1,000, which gave up on a UR5e pose goal 2
+tries in 3): a search that fills them starts again from another seed while the plan's time lasts."""
+PLANNERS = {"RRTConnect": "rrt_connect", "RRTstar": "rrt_star", "RRT": "rrt"}
+"""The OMPL planners gazelle plans with (roboplan's RRT in its three forms), by OMPL's name
+(``geometric::RRTConnect``); every other planner_id is planned with RRT-Connect."""
 MAX_IK_SEC = 5.0
 """s the most one IK searches: a longer ``timeout`` is cut to this."""
 MAX_TRAJECTORY_POINTS = 20_000
@@ -187,6 +196,9 @@ class ArmPlanner(RobotScene):
         velocity_scaling: float = 1.0,
         acceleration_scaling: float = 1.0,
         timeout: float = 5.0,
+        algorithm: str = "RRTConnect",
+        attempts: int = 1,
+        constraints: PathConstraints = PathConstraints(),
     ) -> Trajectory:
         """A collision-free, time-parameterised motion of ``group`` from ``start`` (full configuration; the
         current state when None) to the full configuration ``goal``: RRT-Connect in the group's joint space,
@@ -203,12 +215,19 @@ class ArmPlanner(RobotScene):
                 means 1, a value above 1 is 1.
             acceleration_scaling: ``max_acceleration_scaling_factor``, the same way.
             timeout: wall seconds for the search (MoveIt's ``allowed_planning_time``), at most
-                :data:`MAX_PLANNING_SEC`.
+                :data:`MAX_PLANNING_SEC`: searched until a path is found or the time is up, as OMPL does.
+            algorithm: a key of :data:`PLANNERS` (OMPL's planner name).
+            attempts: MoveIt's ``num_planning_attempts``: the searches made (within the one ``timeout``; at most
+                :data:`MAX_PLANNING_ATTEMPTS`), the shortest path kept, as OMPL's parallel plan keeps it.
+            constraints: MoveIt's ``path_constraints``, kept by every state of the path (see
+                ``_path_constraints.py``); the start and the goal must keep them too
+                (``START_STATE_VIOLATES_PATH_CONSTRAINTS``, ``GOAL_VIOLATES_PATH_CONSTRAINTS``).
 
         Raises:
             PlanningError: ``START_STATE_IN_COLLISION``, ``GOAL_IN_COLLISION``, ``GOAL_STATE_INVALID`` (outside
-                the joint limits), ``TIMED_OUT`` or ``PLANNING_FAILED`` (also when roboplan's search has grown
-                to its 1,000 nodes); collisions name the colliding pairs.
+                the joint limits), or ``TIMED_OUT`` when no path was found in the time (OMPL's TIMEOUT status in
+                moveit_planners/ompl/ompl_interface/src/model_based_planning_context.cpp, logPlannerStatus);
+                collisions name the colliding pairs.
         """
         joints = self.group_joints(group)
         q0 = self.onto_limits(self._current.copy() if start is None else np.asarray(start, dtype=float))
@@ -223,29 +242,107 @@ class ArmPlanner(RobotScene):
             raise PlanningError("GOAL_IN_COLLISION", f"the goal state is in collision{self.named_pairs(q1)}")
         if self.in_collision(q0):
             raise PlanningError("START_STATE_IN_COLLISION", f"the start state is in collision{self.named_pairs(q0)}")
+        outside = self.outside_limits(q0, joints)
+        if outside is not None:  # roboplan refuses it on every search ("Invalid start configuration requested")
+            raise PlanningError("START_STATE_INVALID", f"the start state lies outside the joints' limits: {outside}")
+        keeps, poses = self._keeping(group, constraints)
+        for q, who in ((q0, "START_STATE"), (q1, "GOAL")):
+            if not keeps(q):
+                raise PlanningError(
+                    f"{who}_VIOLATES_PATH_CONSTRAINTS", f"the {who.lower()} breaks the path constraints"
+                )
         asked, timeout = float(timeout), _budget(timeout, MAX_PLANNING_SEC)
-        opts = self._rrt.RRTOptions()
-        opts.group_name = group
-        opts.rrt_connect = True
-        opts.max_planning_time = timeout
-        opts.collision_check_step_size = 0.02
-        deadline = time.monotonic() + timeout
-        planner = self._rrt.RRT(self.scene, opts)
-        self.scene.setJointPositions(q0)
-        why = ""
-        try:
-            path = planner.plan(self._group_config(group, joints, q0), self._group_config(group, joints, q1))
-        except RuntimeError as err:  # roboplan's search ends at its max_nodes: "Added maximum number of nodes"
-            path, why = None, f" ({err})"
-        if path is None or len(path.positions) < 2:
-            if time.monotonic() >= deadline:
-                cut = f" (allowed_planning_time {asked:g} s is cut to {MAX_PLANNING_SEC:g})" if asked > timeout else ""
-                raise PlanningError("TIMED_OUT", f"no collision-free path found in {timeout:g} s{cut}")
-            raise PlanningError("PLANNING_FAILED", f"no collision-free path was found{why}")
+        kept = (lambda path: self._kept(group, joints, q0, path, keeps)) if constraints else None
+        path = self._search(group, joints, q0, q1, timeout, algorithm, attempts, poses, kept)
+        if path is None:
+            cut = f" (allowed_planning_time {asked:g} s is cut to {MAX_PLANNING_SEC:g})" if asked > timeout else ""
+            raise PlanningError("TIMED_OUT", f"no collision-free path found in {timeout:g} s{cut}")
         sopts = self._core.PathShortcuttingOptions()
         sopts.group_name = group
-        path = self._core.PathShortcutter(self.scene, sopts).shortcut(path)
+        shortcut = self._core.PathShortcutter(self.scene, sopts).shortcut(path)
+        if not constraints or self._kept(group, joints, q0, shortcut, keeps):  # a shortcut may leave them
+            path = shortcut
         return self._timed(group, path, velocity_scaling, acceleration_scaling)
+
+    def _keeping(self, group: str, constraints: PathConstraints) -> tuple[Any, list[Any]]:
+        """A test of a full configuration against ``constraints`` (roboplan's own test for the poses, the
+        ranges for the joints), and the roboplan pose constraints for its RRT."""
+        poses = [
+            self._rrt.PoseConstraint(
+                self.scene,
+                group,
+                link,
+                np.asarray(lower, dtype=float),
+                np.asarray(upper, dtype=float),
+                np.asfortranarray(region, dtype=float),
+                self.root_link,
+            )
+            for link, region, lower, upper in constraints.poses
+        ]
+        index = {n: i for i, n in enumerate(self.joint_names)}
+        ranges = [(index[j], lo, hi) for j, lo, hi in constraints.joints if j in index]
+
+        def keeps(q: np.ndarray) -> bool:
+            if any(not lo - 1e-9 <= q[i] <= hi + 1e-9 for i, lo, hi in ranges):
+                return False
+            return all(c.satisfies(np.asarray(q, dtype=float)) for c in poses)
+
+        return keeps, poses
+
+    def _kept(self, group: str, joints: list[str], q0: np.ndarray, path: Any, keeps: Any, step: float = 0.02) -> bool:
+        """Whether every state of ``path`` (the group's joints; the others as in ``q0``), and of the straight
+        lines between them every ``step`` rad, keeps the constraints."""
+        index = self._group_index(joints)
+        full = np.asarray(q0, dtype=float).copy()
+        points = np.asarray(path.positions, dtype=float)
+        for a, b in zip(points[:-1], points[1:]):
+            for s in np.linspace(0.0, 1.0, max(2, int(np.max(np.abs(b - a)) / step) + 2)):
+                full[index] = a + s * (b - a)
+                if not keeps(full):
+                    return False
+        return True
+
+    def _search(
+        self,
+        group: str,
+        joints: list[str],
+        q0: np.ndarray,
+        q1: np.ndarray,
+        timeout: float,
+        algorithm: str,
+        attempts: int,
+        poses: list[Any],
+        kept: Any,
+    ) -> Any:
+        """roboplan's RRT searches from ``q0`` to ``q1`` until ``attempts`` paths are found or ``timeout`` s are
+        up, each from its own seed, each tree at most :data:`TREE_NODES` nodes (a full one is a failed
+        search, not an error), its nodes projected onto ``poses`` (roboplan PoseConstraints); a path that
+        ``kept`` (when given) refuses is searched again: the shortest path found, or None."""
+        opts = self._rrt.RRTOptions()
+        opts.group_name = group
+        opts.rrt_connect = PLANNERS.get(algorithm, "rrt_connect") == "rrt_connect"
+        opts.rrt_star = PLANNERS.get(algorithm) == "rrt_star"
+        opts.fast_return = not opts.rrt_star  # RRT* improves its path while its time lasts, as OMPL's does
+        opts.max_nodes = TREE_NODES
+        opts.collision_check_step_size = 0.02
+        deadline = time.monotonic() + timeout
+        wanted = max(1, min(int(attempts), MAX_PLANNING_ATTEMPTS))
+        start, goal = self._group_config(group, joints, q0), self._group_config(group, joints, q1)
+        found: list[Any] = []
+        search = 0
+        while len(found) < wanted and (left := deadline - time.monotonic()) > 0.0:
+            opts.max_planning_time = left
+            planner = self._rrt.RRT(self.scene, opts)
+            planner.setRngSeed(self._seed + search)
+            search += 1
+            self.scene.setJointPositions(q0)
+            try:
+                path = planner.plan(start, goal, poses)
+            except RuntimeError:  # roboplan's trees are full ("Added maximum number of nodes"): search again
+                continue
+            if path is not None and len(path.positions) >= 2 and (kept is None or kept(path)):
+                found.append(path)
+        return min(found, key=_length, default=None)
 
     def _line_solver(self, group: str, avoid_collisions: bool) -> Any:
         """roboplan's SimpleIk for the poses of a Cartesian path: each solved from the last, within 1e-4 m and
@@ -456,6 +553,12 @@ def _cut_at_jump(path: list[np.ndarray], jump_threshold: float) -> list[np.ndarr
         if step > limit:
             return path[: k + 1]
     return path
+
+
+def _length(path: Any) -> float:
+    """A joint path's length: the sum of its steps' norms (rad, m)."""
+    q = np.asarray(path.positions, dtype=float)
+    return float(np.linalg.norm(np.diff(q, axis=0), axis=1).sum())
 
 
 def _budget(seconds: float, most: float) -> float:

@@ -501,18 +501,19 @@ def test_bad_goals_get_moveit_error_codes_with_messages_nothing_moves_and_the_no
 
 def test_what_the_planner_does_not_honour_is_said_and_the_request_is_planned_all_the_same(panda):
     """ompl_planning.yaml (in the --config folder) is named at start; a request's planner_id of another
-    planner and its path constraints are named in a warning, once, and the goal is still reached."""
-    from moveit_msgs.msg import OrientationConstraint
+    planner and its visibility constraints are named in a warning, once, and the goal is still reached (path
+    constraints are kept: test_move_group_requests.py)."""
+    from moveit_msgs.msg import VisibilityConstraint
 
     panda.move_group.wait_line("MoveIt's planning pipeline settings are not used (ompl.", timeout=1)
     goal = panda.joint_goal(_group_states("panda_arm")["ready"])
     goal.request.planner_id = "PRMkConfigDefault"
-    goal.request.path_constraints.orientation_constraints.append(OrientationConstraint(link_name="panda_link8"))
+    goal.request.path_constraints.visibility_constraints.append(VisibilityConstraint(weight=1.0))
     for _ in range(2):
         result = panda.action(panda.move, goal)
         assert result.error_code.val == MoveItErrorCodes.SUCCESS, (result.error_code.message, panda.said())
     panda.move_group.wait_line("planner_id 'PRMkConfigDefault' is not simulated", timeout=10)
-    panda.move_group.wait_line("path_constraints are not honoured", timeout=10)
+    panda.move_group.wait_line("visibility and trajectory constraints are not honoured", timeout=10)
     said = [line for line in panda.move_group.lines if "planner_id 'PRMkConfigDefault'" in line]
     assert len(said) == 1, said  # once, not per request
 

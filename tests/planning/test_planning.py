@@ -366,7 +366,7 @@ def test_objects_of_the_world_may_touch_each_other(planner):
 def test_a_moveit_configs_kinematics_yaml_becomes_moveits_parameters():
     """kinematics.yaml, read by --config, as MoveIt's robot_description_kinematics.<group>.* parameters."""
     pytest.importorskip("rclpy")
-    from gazelle.ros._move_group import _config_parameters
+    from gazelle.ros._move_group_config import config_parameters as _config_parameters
 
     params = {p.name: p.value for p in _config_parameters(CONFIG)}
     assert params["robot_description_kinematics.panda_arm.kinematics_solver_timeout"] == 0.05
@@ -382,7 +382,8 @@ def test_a_moveit_configs_ompl_planning_yaml_becomes_ompl_parameters_that_move_g
     move_group can say at start that it plans with its own pipeline; keys no parameter can be named after
     are left out rather than failing the node."""
     pytest.importorskip("rclpy")
-    from gazelle.ros._move_group import PIPELINE_PARAMETERS, _config_parameters, _flat
+    from gazelle.ros._move_group_config import PIPELINE_PARAMETERS, _flat
+    from gazelle.ros._move_group_config import config_parameters as _config_parameters
 
     params = {p.name: p.value for p in _config_parameters(CONFIG)}
     assert params["ompl.planner_configs.RRTConnectkConfigDefault.type"] == "geometric::RRTConnect"
@@ -399,7 +400,7 @@ def test_a_config_file_that_is_not_yaml_is_an_error_naming_its_file_and_line(tmp
     """move_group --config: a malformed ompl_planning.yaml (or any of the files it reads) is a one-line
     error with its file and line, which the command prints and exits 2 on, never a traceback."""
     pytest.importorskip("rclpy")
-    from gazelle.ros._move_group import _config_parameters
+    from gazelle.ros._move_group_config import config_parameters as _config_parameters
 
     (tmp_path / "ompl_planning.yaml").write_text("planner_configs:\n  RRT: [unclosed\n")
     with pytest.raises(ValueError) as err:

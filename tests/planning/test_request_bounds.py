@@ -96,11 +96,14 @@ def test_a_slow_trajectory_is_sampled_within_the_point_bound(planner):
     assert np.abs(slow.velocities).max() <= 1e-4 * 2.61 * 1.01  # the Panda's fastest joint, scaled
 
 
-def test_a_plan_with_no_way_through_ends_planning_failed_at_the_searchs_bound(planner):
-    """roboplan's RRT stops at 1,000 nodes with a RuntimeError ("Added maximum number of nodes"), which
-    move_group answered as FAILURE "internal error"; MoveIt says PLANNING_FAILED. An allowed planning time
-    beyond MAX_PLANNING_SEC is cut to it."""
+def test_a_plan_with_no_way_through_searches_for_its_allowed_time_and_times_out(planner, monkeypatch):
+    """Issue 51 item 4: roboplan's RRT stopped at 1,000 tree nodes (a RuntimeError, "Added maximum number of
+    nodes"), so a plan gave up long before its allowed_planning_time and a UR5e pose goal failed 2 tries in 3.
+    A plan searches until its time is up, as OMPL does, and then answers TIMED_OUT (OMPL's TIMEOUT status in
+    MoveIt's model_based_planning_context.cpp), never roboplan's words. An allowed planning time beyond
+    MAX_PLANNING_SEC is cut to it (here made 2 s)."""
     from gazelle.planning import PlanningError
+    from gazelle.planning import _planner as planner_module
 
     start = planner.state(READY)
     behind = planner.state({**READY, "panda_joint1": 2.8})
@@ -116,9 +119,17 @@ def test_a_plan_with_no_way_through_ends_planning_failed_at_the_searchs_bound(pl
         assert not planner.in_collision(start) and not planner.in_collision(behind)
         t0 = time.monotonic()
         with pytest.raises(PlanningError) as err:
+            planner.plan("panda_arm", behind, start, timeout=3.0)
+        took = time.monotonic() - t0
+        assert err.value.code == "TIMED_OUT", err.value.message
+        assert "maximum number of nodes" not in err.value.message
+        assert 3.0 <= took < 4.5, took
+        monkeypatch.setattr(planner_module, "MAX_PLANNING_SEC", 2.0)
+        t0 = time.monotonic()
+        with pytest.raises(PlanningError) as err:
             planner.plan("panda_arm", behind, start, timeout=1e9)
-        assert err.value.code in ("PLANNING_FAILED", "TIMED_OUT"), err.value.message
-        assert time.monotonic() - t0 < 35.0
+        assert err.value.code == "TIMED_OUT" and "is cut to 2" in err.value.message, err.value.message
+        assert 2.0 <= time.monotonic() - t0 < 3.5
     finally:
         for name in ("wall1", "wall-1", "roof"):
             planner.remove_object(name)

@@ -9,15 +9,17 @@ import time
 
 import pytest
 
-from gazelle.ros import _move_group_execution
-from gazelle.ros._move_group import Controller, MoveGroupNode
+from gazelle.ros import _move_group_trajectory_execution
+from gazelle.ros._move_group_common import Controller
+from gazelle.ros._move_group_execute_trajectory_action import ExecuteTrajectoryAction
+from gazelle.ros._move_group_trajectory_execution import TrajectoryExecutionManager
 
 JOINTS = ["panda_joint1", "panda_joint2"]
 TOPICS = {j: f"/model/panda/joint/{j}/n0/cmd_pos" for j in JOINTS}
 
 
 class _Graph:
-    """What the graph shows ``MoveGroupNode`` from the ``after``-th query on: the action, or the topics;
+    """What the graph shows the ``TrajectoryExecutionManager`` from the ``after``-th query on: the action, or the topics;
     the controller (from moveit_controllers.yaml, or from a controller manager's list) from the
     ``named_after``-th."""
 
@@ -25,20 +27,20 @@ class _Graph:
         self.action, self.topics, self.after, self.queries = action, topics, after, 0
         self.named_after, self.lookups = named_after, 0
 
-    def _controllers_for(self, joints: list[str]) -> list[Controller]:
+    def controllers_for(self, joints: list[str]) -> list[Controller]:
         self.lookups += 1
         return [_controller()] if self.lookups > self.named_after else []
 
-    def _action_served(self, action: str) -> bool:
+    def action_served(self, action: str) -> bool:
         return self.action and self.queries >= self.after
 
-    def _position_topics(self, joints: list[str]) -> dict[str, str] | None:
+    def position_topics(self, joints: list[str]) -> dict[str, str] | None:
         self.queries += 1
         return dict(TOPICS) if self.topics and self.queries > self.after else None
 
 
 def _wait(graph: _Graph) -> tuple[bool, dict[str, str] | None]:
-    _, served, topics = MoveGroupNode._wait_for_execution(graph, JOINTS)  # type: ignore[arg-type]
+    _, served, topics = TrajectoryExecutionManager.wait_for_execution(graph, JOINTS)  # type: ignore[arg-type]
     return served, topics
 
 
@@ -59,13 +61,13 @@ def test_an_action_server_discovered_late_is_used() -> None:
 
 def test_a_controller_a_controller_manager_lists_late_is_used() -> None:
     graph = _Graph(action=True, topics=False, after=0, named_after=2)
-    controllers, served, topics = MoveGroupNode._wait_for_execution(graph, JOINTS)  # type: ignore[arg-type]
+    controllers, served, topics = TrajectoryExecutionManager.wait_for_execution(graph, JOINTS)  # type: ignore[arg-type]
     assert (controllers, served, topics) == ([_controller()], True, None)
     assert graph.lookups == 3
 
 
 def test_with_neither_the_wait_ends_at_its_bound(monkeypatch) -> None:
-    monkeypatch.setattr(_move_group_execution, "CONTROLLER_WAIT", 0.3)
+    monkeypatch.setattr(_move_group_trajectory_execution, "CONTROLLER_WAIT", 0.3)
     graph = _Graph(action=False, topics=False, after=0)
     t0 = time.monotonic()
     assert _wait(graph) == (False, None)
@@ -112,8 +114,8 @@ def test_execute_trajectory_reads_the_planners_scene_under_its_lock() -> None:
         with lock:
             yield planner
 
-    node = SimpleNamespace(_pool=SimpleNamespace(using=using), planner=None)
-    node._check_trajectory_locked = lambda t, p: MoveGroupNode._check_trajectory_locked(node, t, p)  # type: ignore[arg-type]
+    node = SimpleNamespace(context=SimpleNamespace(pool=SimpleNamespace(using=using)))
+    node.check_trajectory_locked = lambda t, p: ExecuteTrajectoryAction.check_trajectory_locked(node, t, p)  # type: ignore[arg-type]
     trajectory = JointTrajectory(
         joint_names=JOINTS,
         points=[
@@ -121,7 +123,7 @@ def test_execute_trajectory_reads_the_planners_scene_under_its_lock() -> None:
             JointTrajectoryPoint(positions=[0.5, 0.5], time_from_start=Duration(sec=1)),
         ],
     )
-    assert MoveGroupNode._check_trajectory(node, trajectory) is None  # type: ignore[arg-type]
+    assert ExecuteTrajectoryAction.check_trajectory(node, trajectory) is None  # type: ignore[arg-type]
     assert reads and all(reads), "roboplan's scene was read without the planner's lock"
     assert roles == ["query"]
 
@@ -136,8 +138,8 @@ def test_a_two_arm_trajectory_goes_to_both_arms_controllers_each_with_its_part()
     left = Controller("left_arm_controller", "/left_arm_controller/follow_joint_trajectory", ("l1", "l2"))
     right = Controller("right_arm_controller", "/right_arm_controller/follow_joint_trajectory", ("r1", "r2"))
     other = Controller("torso_controller", "/torso_controller/follow_joint_trajectory", ("t1",))
-    assert _move_group_execution._cover({"l1", "l2", "r1", "r2"}, [other, left, right]) == [left, right]
-    assert _move_group_execution._cover({"l1", "x"}, [left, right]) == []  # no controller has x
+    assert _move_group_trajectory_execution._cover({"l1", "l2", "r1", "r2"}, [other, left, right]) == [left, right]
+    assert _move_group_trajectory_execution._cover({"l1", "x"}, [left, right]) == []  # no controller has x
     trajectory = JointTrajectory(
         joint_names=["l1", "r1", "l2", "r2"],
         points=[
@@ -145,7 +147,7 @@ def test_a_two_arm_trajectory_goes_to_both_arms_controllers_each_with_its_part()
             JointTrajectoryPoint(positions=[5.0, 6.0, 7.0, 8.0], time_from_start=Duration(sec=2)),
         ],
     )
-    part = _move_group_execution._part(trajectory, ["r1", "r2"])
+    part = _move_group_trajectory_execution._part(trajectory, ["r1", "r2"])
     assert part.joint_names == ["r1", "r2"]
     assert [list(p.positions) for p in part.points] == [[2.0, 4.0], [6.0, 8.0]]
     first, second = list(part.points)
@@ -169,6 +171,39 @@ def test_the_execution_nodes_entities_are_made_on_the_thread_that_spins_it() -> 
             t.start()
             t.join()
 
-    node = SimpleNamespace(_execution_thread=spinning, _execution_executor=Executor())
-    got = MoveGroupNode._on_execution_thread(node, lambda: made_on.append(threading.current_thread().name) or 7)  # type: ignore[arg-type]
+    node = SimpleNamespace(_thread=spinning, executor=Executor())
+    made = lambda: made_on.append(threading.current_thread().name) or 7
+    got = TrajectoryExecutionManager.on_execution_thread(node, made)  # type: ignore[arg-type] - a stand-in manager
     assert got == 7 and made_on == ["spinner"]
+
+
+def test_of_two_controllers_with_the_joints_the_one_marked_default_is_used() -> None:
+    """Issue 51 item 3: moveit_simple_controller_manager's ``default: true`` was ignored and the first controller
+    listed was used. MoveIt's TrajectoryExecutionManager ranks default controllers first, then those of fewer
+    joints (trajectory_execution_manager.cpp, OrderPotentialControllerCombination)."""
+    from types import SimpleNamespace
+
+    plain = Controller(
+        "joint_trajectory_controller", "/joint_trajectory_controller/follow_joint_trajectory", tuple(JOINTS)
+    )
+    scaled = Controller(
+        "scaled_joint_trajectory_controller", "/scaled/follow_joint_trajectory", tuple(JOINTS), default=True
+    )
+    wide = Controller("whole_body_controller", "/whole/follow_joint_trajectory", (*JOINTS, "panda_joint3"))
+    manager = SimpleNamespace(controllers=[plain, scaled, wide], ros2_control_controllers=list)
+    assert TrajectoryExecutionManager.controllers_for(manager, JOINTS) == [scaled]  # type: ignore[arg-type]
+    manager.controllers = [wide, plain]
+    assert TrajectoryExecutionManager.controllers_for(manager, JOINTS) == [plain]  # type: ignore[arg-type]
+
+
+def test_a_moveit_controllers_yaml_default_becomes_a_parameter(tmp_path) -> None:
+    from gazelle.ros._move_group_config import config_parameters
+
+    (tmp_path / "moveit_controllers.yaml").write_text(
+        "moveit_simple_controller_manager:\n  controller_names: [a, b]\n"
+        "  a: {action_ns: follow_joint_trajectory, joints: [j1], default: false}\n"
+        "  b: {action_ns: follow_joint_trajectory, joints: [j1], default: true}\n"
+    )
+    params = {p.name: p.value for p in config_parameters(tmp_path)}
+    assert params["moveit_simple_controller_manager.b.default"] is True
+    assert params["moveit_simple_controller_manager.a.default"] is False

@@ -23,13 +23,16 @@ as ``true``/``false``), a group's with ``moveit::core::toString`` (a double as `
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from moveit_msgs.msg import PlannerInterfaceDescription
 from moveit_msgs.srv import GetPlannerParams, QueryPlannerInterfaces, SetPlannerParams
 
 from ..planning import quoted
-from ._move_group_base import _MoveGroupBase
+from ._move_group_capability import serve_on_planner
+
+if TYPE_CHECKING:
+    from ._move_group_context import MoveGroupContext
 
 PIPELINE = "ompl"
 """The one planning pipeline gazelle describes: requests planned by roboplan's RRT-Connect."""
@@ -70,11 +73,24 @@ def _group_value_to_string(value: Any) -> str:
     return str(value)
 
 
-class _PlannerQueries(_MoveGroupBase):
-    """The three planner services (see the module docstring)."""
+class QueryPlannersService:
+    """The three planner services (see the module docstring), on the query planner."""
 
-    _planner_configs: dict[str, dict[str, str]] | None = None
-    """Planner configuration name -> its parameters, read from the node's parameters on first use."""
+    def __init__(self, context: MoveGroupContext) -> None:
+        self.context = context
+        self._planner_configs: dict[str, dict[str, str]] | None = None
+        """Planner configuration name -> its parameters, read from the node's parameters on first use."""
+
+    def initialize(self) -> None:
+        for srv_type, name, fn in (
+            (QueryPlannerInterfaces, "query_planner_interface", self.query_planner_interface),
+            (GetPlannerParams, "get_planner_params", self.get_planner_params),
+            (SetPlannerParams, "set_planner_params", self.set_planner_params),
+        ):
+            serve_on_planner(self.context, srv_type, name, fn, "query")
+
+    def destroy(self) -> None:
+        pass  # its services go with the node
 
     def _configurations(self) -> dict[str, dict[str, str]]:
         if self._planner_configs is None:
@@ -83,10 +99,11 @@ class _PlannerQueries(_MoveGroupBase):
 
     def _read_configurations(self) -> dict[str, dict[str, str]]:
         """What MoveIt's OMPL interface reads (see the module docstring), for this robot's groups."""
-        assert self.planner is not None
-        params = {name: p.value for name, p in self._parameters.items()}
+        planner = self.context.planner
+        assert planner is not None
+        params = self.context.parameters()
         out: dict[str, dict[str, str]] = {}
-        for group in self.planner.groups:
+        for group in planner.groups:
             base = f"{PIPELINE}.{group}"
             inherited: dict[str, str] = {}
             for key, kind in GROUP_PARAMETERS.items():
@@ -94,7 +111,7 @@ class _PlannerQueries(_MoveGroupBase):
                     continue
                 value = params[f"{base}.{key}"]
                 if not isinstance(value, kind) or (kind is not bool and isinstance(value, bool)):
-                    self.get_logger().error(
+                    self.context.logger.error(
                         f"Invalid type for parameter '{key}' expected [{kind.__name__}] got [{type(value).__name__}]"
                     )
                     continue
@@ -120,7 +137,7 @@ class _PlannerQueries(_MoveGroupBase):
         prefix = f"{PIPELINE}.planner_configs.{planner_id}."
         own = {name[len(prefix) :]: value for name, value in params.items() if name.startswith(prefix)}
         if not own:
-            self.get_logger().error(
+            self.context.logger.error(
                 f"Could not find the planner configuration {quoted(planner_id)} on the param server"
             )
             return None
@@ -131,11 +148,11 @@ class _PlannerQueries(_MoveGroupBase):
         is MoveIt's "Pipeline '...' does not exist." and an empty answer."""
         if pipeline_id in ("", PIPELINE):
             return True
-        self.get_logger().warning(f"Couldn't find requested planning pipeline {quoted(pipeline_id)}")
-        self.get_logger().error(f"Pipeline {quoted(pipeline_id)} does not exist.")
+        self.context.logger.warning(f"Couldn't find requested planning pipeline {quoted(pipeline_id)}")
+        self.context.logger.error(f"Pipeline {quoted(pipeline_id)} does not exist.")
         return False
 
-    def _query_planner_interface(
+    def query_planner_interface(
         self, _req: QueryPlannerInterfaces.Request, res: QueryPlannerInterfaces.Response, _planner: Any
     ) -> QueryPlannerInterfaces.Response:
         """``query_planner_interface``: one description, pipeline ``ompl``, its configurations' names in
@@ -147,7 +164,7 @@ class _PlannerQueries(_MoveGroupBase):
         ]
         return res
 
-    def _get_planner_params(
+    def get_planner_params(
         self, req: GetPlannerParams.Request, res: GetPlannerParams.Response, _planner: Any
     ) -> GetPlannerParams.Response:
         """``get_planner_params``: the configuration ``planner_config``, merged with ``group[planner_config]``
@@ -163,28 +180,27 @@ class _PlannerQueries(_MoveGroupBase):
         res.params.values = [merged[k] for k in res.params.keys]
         return res
 
-    def _set_planner_params(
+    def set_planner_params(
         self, req: SetPlannerParams.Request, res: SetPlannerParams.Response, _planner: Any
     ) -> SetPlannerParams.Response:
         """``set_planner_params``: store the values under ``planner_config`` (``group[planner_config]``
         with a group), cleared first with ``replace``."""
         if len(req.params.keys) != len(req.params.values):
-            self.get_logger().error("Number of parameter names does not match the number of parameters")
+            self.context.logger.error("Number of parameter names does not match the number of parameters")
             return res
         if not self._pipeline_known(req.pipeline_id):
             return res
         name = f"{req.group}[{req.planner_config}]" if req.group else req.planner_config
         configs = self._configurations()
         if name not in configs and len(configs) >= MAX_CONFIGURATIONS:
-            self.get_logger().error(f"set_planner_params: more than {MAX_CONFIGURATIONS} planner configurations")
+            self.context.logger.error(f"set_planner_params: more than {MAX_CONFIGURATIONS} planner configurations")
             return res
         config = {} if req.replace else dict(configs.get(name, {}))
         config.update(zip(req.params.keys, req.params.values))
         configs[name] = config
-        if "planner_params" not in self._noted:
-            self._noted.add("planner_params")
-            self.get_logger().warning(
-                f"set_planner_params: {quoted(name)} is stored and answered by get_planner_params, but gazelle's "
-                "planner does not read planner configurations: every request is planned with roboplan's RRT-Connect"
-            )
+        self.context.note_once(
+            "planner_params",
+            f"set_planner_params: {quoted(name)} is stored and answered by get_planner_params, but gazelle's "
+            "planner does not read planner configurations: every request is planned with roboplan's RRT-Connect",
+        )
         return res

@@ -1,178 +1,142 @@
-"""move_group's execution: the move_action and execute_trajectory actions, run on the FollowJointTrajectory
-controllers moveit_controllers.yaml (or a controller manager) names, or streamed to gz-sim
-JointPositionController command topics."""
+"""move_group's trajectory execution: MoveIt's ``TrajectoryExecutionManager``
+(moveit_ros/planning/trajectory_execution_manager/src/trajectory_execution_manager.cpp, jazzy) with the
+controllers ``moveit_simple_controller_manager`` (moveit_controllers.yaml) or a controller manager names:
+a trajectory runs on their FollowJointTrajectory actions, or is streamed to gz-sim JointPositionController
+command topics; a "stop" on ``/trajectory_execution_event`` stops what runs."""
 
 from __future__ import annotations
 
 import math
 import threading
 import time
-from typing import Any
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+import rclpy
 from control_msgs.action import FollowJointTrajectory
-from moveit_msgs.action import ExecuteTrajectory, MoveGroup
-from moveit_msgs.msg import (
-    DisplayTrajectory,
-)
 from rclpy.action.client import ActionClient
-from std_msgs.msg import Float64
+from rclpy.executors import ExternalShutdownException, ShutdownException, SingleThreadedExecutor
+from std_msgs.msg import Float64, String
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
-from ..planning import START_BOUNDS_ERROR, ArmPlanner, PlanningError, quoted
-from ._move_group_base import (
+from ..planning import quoted
+from ._move_group_common import (
     _ENDED,
     CONTROLLER_WAIT,
     GZ_CMD_POS,
     STREAM_GOAL_TOLERANCE,
     STREAM_RATE_HZ,
     Controller,
-    _code,
     _seconds,
 )
-from ._move_group_planning import _Planning
+
+if TYPE_CHECKING:
+    from ._move_group_context import MoveGroupContext
 
 
-class _Execution(_Planning):
-    """The actions and the controllers they run on."""
+class TrajectoryExecutionManager:
+    """The controllers and how a trajectory is run on them.
 
-    _stops = 0
-    """How many "stop" events /trajectory_execution_event has brought: an execution that began before the
-    latest one stops as a cancelled goal does."""
+    The controllers' FollowJointTrajectory clients live on their own node and single-threaded executor: on
+    move_group's multi-threaded one, busy with /joint_states, their status and result messages came seconds
+    late or not at all (rclpy's executor is slow and its action client racy across threads: ros2/rclpy#1123)."""
+
+    def __init__(self, context: MoveGroupContext) -> None:
+        self.context = context
+        self.controllers = self._read_controllers()
+        """The controllers moveit_controllers.yaml lists (a controller manager's are asked when none fit)."""
+        self._trajectory_clients: dict[str, ActionClient] = {}
+        self._position_pubs: dict[str, Any] = {}  # gz JointPositionController command topics
+        self._controller_lists: dict[str, Any] = {}  # list_controllers clients by service name
+        self._stops = 0
+        """How many "stop" events /trajectory_execution_event has brought: an execution that began before the
+        latest one stops as a cancelled goal does."""
+        node = context.node
+        self.node = rclpy.create_node("move_group_trajectory_execution", context=node.context)
+        self.executor = SingleThreadedExecutor(context=node.context)
+        self.executor.add_node(self.node)
+        self._thread = threading.Thread(target=self._spin, name="move_group execution", daemon=True)
+        self._thread.start()
+
+    def start(self) -> None:
+        """Listen for "stop": MoveIt's trajectory execution manager listens on /trajectory_execution_event
+        (pymoveit2's cancel_execution publishes it): trajectory_execution_manager.cpp, EXECUTION_EVENT_TOPIC."""
+        self.context.node.create_subscription(
+            String,
+            "trajectory_execution_event",
+            self._on_execution_event,
+            10,
+            callback_group=self.context.callback_group,
+        )
+
+    def destroy(self) -> None:
+        """Stop the execution node's executor, wait for its thread to leave its wait (before destroying what the
+        wait set may hold: the segmentation faults seen on Ctrl-C were another race, with rclpy's signal
+        thread: see _signals.py), then destroy the clients and the node."""
+        self.executor.shutdown()
+        self._thread.join(timeout=2.0)
+        for client in self._trajectory_clients.values():
+            client.destroy()
+        self.node.destroy_node()
+
+    def _read_controllers(self) -> list[Controller]:
+        """The controllers MoveIt's simple controller manager would use:
+        ``moveit_simple_controller_manager.controller_names`` with each one's ``action_ns`` (default
+        ``follow_joint_trajectory``), ``joints`` and ``default`` (false unless given:
+        moveit_simple_controller_manager.cpp, jazzy, reads it with get_parameter_or(..., false))."""
+        prefix = "moveit_simple_controller_manager."
+        names = self.context.parameter(prefix + "controller_names", [])
+        out = []
+        for name in names or []:
+            ns = self.context.param(f"{prefix}{name}.action_ns") or "follow_joint_trajectory"
+            joints = self.context.parameter(f"{prefix}{name}.joints", [])
+            default = self.context.parameter(f"{prefix}{name}.default", False) is True
+            out.append(Controller(name, f"/{name}/{ns}".replace("//", "/"), tuple(joints or ()), default))
+        return out
+
+    def _spin(self) -> None:
+        """The execution node's thread: spin until rclpy shuts down."""
+        try:
+            self.executor.spin()
+        except (ExternalShutdownException, ShutdownException):
+            pass
+
+    def on_execution_thread(self, fn: Any, timeout: float = 10.0) -> Any:
+        """``fn()`` run on the thread that spins the execution node, which is where that node's clients and
+        publishers are made. Made from an action's worker thread while that executor waited on the node's
+        entities, rcl aborted the process: YuMi's move_group died on execute_trajectory ("double free or
+        corruption", "Fatal Python error: Aborted" in ``create_client`` under ``PYTHONMALLOC=debug``)."""
+        if threading.current_thread() is self._thread:
+            return fn()
+        done = threading.Event()
+        box: dict[str, Any] = {}
+
+        def task() -> None:
+            try:
+                box["value"] = fn()
+            except BaseException as err:  # handed to the caller
+                box["error"] = err
+            finally:
+                done.set()
+
+        self.executor.create_task(task)
+        if not done.wait(timeout):
+            raise TimeoutError("the execution thread did not run the task")
+        if "error" in box:
+            raise box["error"]
+        return box.get("value")
 
     def _on_execution_event(self, msg: Any) -> None:
-        """MoveIt's ``TrajectoryExecutionManager::receiveEvent``/``processEvent``
-        (trajectory_execution_manager.cpp, Jazzy): "stop" stops every execution in progress (its goal ends
-        with PREEMPTED); any other event is a warning."""
-        self.get_logger().info(f"Received event {quoted(msg.data)}")
+        """MoveIt's ``TrajectoryExecutionManager::receiveEvent``/``processEvent``: "stop" stops every execution
+        in progress (its goal ends with PREEMPTED); any other event is a warning."""
+        self.context.logger.info(f"Received event {quoted(msg.data)}")
         if msg.data == "stop":
             self._stops += 1
         else:
-            self.get_logger().warning(f"Unknown event type: {quoted(msg.data)}")
+            self.context.warn(f"Unknown event type: {quoted(msg.data)}")
 
-    # ------------------------------------------------------------------ actions
-    def _execute_move_group(self, handle: Any) -> MoveGroup.Result:
-        """The ``move_action`` goal (move_action_capability.cpp): plan the request (feedback PLANNING), show the
-        plan on /display_planned_path, and unless ``plan_only`` execute it (feedback MONITOR); the result carries
-        the start state, the planned trajectory and, on success, the executed one."""
-        result = MoveGroup.Result()
-        if self._pool is None or self.planner is None:
-            result.error_code = _code("FAILURE")
-            result.error_code.message = "move_group has no robot yet (robot_description and robot_description_semantic)"
-            handle.abort()
-            return result
-        goal = handle.request
-        t0 = time.monotonic()
-        handle.publish_feedback(MoveGroup.Feedback(state="PLANNING"))
-        try:
-            assert self._pool is not None
-            with self._pool.using("plan"):
-                start, traj = self._plan(goal.request)
-        except PlanningError as err:
-            result.error_code = _code(err.code)
-            result.error_code.message = err.message
-            self.get_logger().warning(
-                f"planning for {quoted(goal.request.group_name)} failed: {err.code}: {err.message}"
-            )
-            handle.abort()
-            return result
-        except Exception as err:
-            self.get_logger().error(f"planning failed: {type(err).__name__}: {err}")
-            result.error_code = _code("FAILURE")
-            result.error_code.message = f"internal error: {type(err).__name__}: {err}"
-            handle.abort()
-            return result
-        result.planning_time = time.monotonic() - t0
-        result.trajectory_start = self._robot_state(start)
-        result.planned_trajectory = self._robot_trajectory(traj)
-        # as MoveIt's move_group: every plan on /display_planned_path (RViz's and Foxglove's trajectory displays)
-        self._display.publish(
-            DisplayTrajectory(
-                model_id=self.planner.semantics.robot_name if self.planner else "",
-                trajectory=[result.planned_trajectory],
-                trajectory_start=result.trajectory_start,
-            )
-        )
-        if goal.planning_options.plan_only:
-            result.error_code = _code("SUCCESS")
-            handle.succeed()
-            return result
-        handle.publish_feedback(MoveGroup.Feedback(state="MONITOR"))
-        code, message = self._run(result.planned_trajectory.joint_trajectory, handle)
-        result.error_code = _code(code)
-        result.error_code.message = message
-        if code == "SUCCESS":
-            result.executed_trajectory = result.planned_trajectory
-        # move_action_capability.cpp: a preempted execution is a canceled goal (an aborted one when it was
-        # stopped by the execution event, not cancelled: an executing goal cannot become canceled)
-        _end_goal(handle, code, preempted="canceled" if handle.is_cancel_requested else "abort")
-        return result
-
-    def _execute_trajectory(self, handle: Any) -> ExecuteTrajectory.Result:
-        """The ``execute_trajectory`` goal (execute_trajectory_action_capability.cpp): a trajectory beyond the
-        limits is refused (INVALID_MOTION_PLAN) before anything moves; otherwise it runs on its controllers and
-        anything but success ends the goal aborted, as MoveIt ends it."""
-        result = ExecuteTrajectory.Result()
-        trajectory = handle.request.trajectory.joint_trajectory
-        problem = self._check_trajectory(trajectory)
-        if problem is not None:
-            result.error_code = _code("INVALID_MOTION_PLAN")
-            result.error_code.message = problem
-            handle.abort()
-            return result
-        code, message = self._run(trajectory, handle)
-        result.error_code = _code(code)
-        result.error_code.message = message
-        # execute_trajectory_action_capability.cpp (Jazzy): anything but success is aborted, a cancelled or
-        # stopped execution too (with PREEMPTED)
-        _end_goal(handle, code, preempted="abort")
-        return result
-
-    def _check_trajectory(self, trajectory: JointTrajectory) -> str | None:
-        """Why a trajectory sent to execute_trajectory cannot run (positions or speeds beyond the limits).
-
-        On the query planner, under its lock, as every use of roboplan's scene: the simulation's scene updates
-        (a message for every millimetre anything moves, so a stream while an arm executes) add, move and
-        rebuild its pinocchio/coal models on another executor thread. Read without the lock, the limits
-        came from a model being replaced: pymoveit2's execute_trajectory on a YuMi died of "double free
-        or corruption" 4 runs in 4, while the MoveGroup action (which plans under the lock) did not."""
-        pool = self._pool
-        if pool is None:
-            return "move_group has no robot yet"
-        with pool.using("query") as planner:
-            return self._check_trajectory_locked(trajectory, planner)
-
-    def _check_trajectory_locked(self, trajectory: JointTrajectory, planner: ArmPlanner) -> str | None:
-        """Why ``trajectory`` cannot be executed (None: it can): no points, a joint the robot lacks, a position
-        outside its limits (the first point may be off by the start-state tolerance), or a speed between two
-        points more than 1 % over the joint's velocity limit."""
-        if not trajectory.points:
-            return "the trajectory has no points"
-        unknown = [j for j in trajectory.joint_names if j not in planner.joint_names]
-        if unknown:
-            return f"unknown joints {unknown}"
-        lo, hi = planner.scene.getPositionLimitVectors("")
-        speed = planner.velocity_limits  # not roboplan's getVelocityLimitVectors: see ArmPlanner.velocity_limits
-        index = {n: i for i, n in enumerate(planner.joint_names)}
-        prev = None
-        for k, point in enumerate(trajectory.points):
-            t = _seconds(point.time_from_start)
-            for j, name in enumerate(trajectory.joint_names):
-                i = index[name]
-                p = point.positions[j]
-                # the first point is where the arm is: a reading a little past a limit is allowed there,
-                # as MoveIt allows a start state within start_state_max_bounds_error
-                slack = START_BOUNDS_ERROR if k == 0 else 1e-4
-                if not lo[i] - slack <= p <= hi[i] + slack:
-                    return f"point {k}: {name} = {p:.4f} is outside its limits [{lo[i]:.4f}, {hi[i]:.4f}]"
-                if prev is not None and t > prev[0]:
-                    v = (p - prev[1][j]) / (t - prev[0])
-                    if abs(v) > speed[name] * 1.01:
-                        return f"point {k}: {name} moves at {v:.3f} rad/s, beyond its velocity limit {speed[name]:.3f}"
-            prev = (t, list(point.positions))
-        return None
-
-    def _controllers_for(self, joints: list[str]) -> list[Controller]:
+    def controllers_for(self, joints: list[str]) -> list[Controller]:
         """The controllers that execute a trajectory of ``joints``, as MoveIt's TrajectoryExecutionManager
         picks them: one that has every joint, else the fewest that together have them (a dual arm's group
         of both arms, one joint_trajectory_controller an arm), each then given its own joints' part. From
@@ -181,31 +145,34 @@ class _Execution(_Planning):
         listed: list[Controller] | None = None
         for pool_of in ("yaml", "ros2_control"):
             if pool_of == "yaml":
-                pool = list(self._controllers)
+                pool = list(self.controllers)
             else:
-                listed = self._ros2_control_controllers()
+                listed = self.ros2_control_controllers()
                 pool = listed
-            single = next((c for c in pool if wanted <= set(c.joints)), None)
-            if single is not None:
-                return [single]
+            # MoveIt's findControllers ranks the options: default controllers first, then the ones of fewer
+            # joints (trajectory_execution_manager.cpp, OrderPotentialControllerCombination; the simple
+            # controller manager reports every controller active); the listed order breaks ties
+            singles = [c for c in pool if wanted <= set(c.joints)]
+            if singles:
+                return [min(singles, key=lambda c: (not c.default, len(c.joints)))]
             chosen = _cover(wanted, pool)
             if chosen:
                 return chosen
-        return _cover(wanted, [*self._controllers, *(listed or [])])
+        return _cover(wanted, [*self.controllers, *(listed or [])])
 
-    def _ros2_control_controllers(self) -> list[Controller]:
+    def ros2_control_controllers(self) -> list[Controller]:
         """The active joint_trajectory_controllers of the controller manager, as MoveIt's
         Ros2ControlManager finds them (moveit_controllers.yaml names no controllers then)."""
         from controller_manager_msgs.srv import ListControllers
 
-        namespace = (self._param("ros_control_namespace") or "/").rstrip("/")  # MoveIt's parameter
+        namespace = (self.context.param("ros_control_namespace") or "/").rstrip("/")  # MoveIt's parameter
         name = f"{namespace}/controller_manager/list_controllers"
         client = self._controller_lists.get(name)
         if client is None:
-            client = self._controller_lists[name] = self._on_execution_thread(
-                lambda: self._execution_node.create_client(ListControllers, name)
+            client = self._controller_lists[name] = self.on_execution_thread(
+                lambda: self.node.create_client(ListControllers, name)
             )
-        listed = any(n == name for n, _ in self._execution_node.get_service_names_and_types())
+        listed = any(n == name for n, _ in self.node.get_service_names_and_types())
         if not client.wait_for_service(timeout_sec=2.0 if listed else 0.3):  # none: gz arms, say
             return []
         done = threading.Event()
@@ -215,7 +182,7 @@ class _Execution(_Planning):
             future = client.call_async(ListControllers.Request())
             future.add_done_callback(lambda f: (box.__setitem__("result", f.result()), done.set()))
 
-        self._execution_executor.create_task(call)
+        self.executor.create_task(call)
         if not done.wait(5.0) or box.get("result") is None:
             return []
         out = []
@@ -226,21 +193,21 @@ class _Execution(_Planning):
             out.append(Controller(c.name, f"{namespace}/{c.name}/follow_joint_trajectory", joints))
         return out
 
-    def _position_topics(self, joints: list[str]) -> dict[str, str] | None:
+    def position_topics(self, joints: list[str]) -> dict[str, str] | None:
         """gz-sim JointPositionController command topics (std_msgs/Float64, the default names
         ``/model/<model>/joint/<joint>/n0/cmd_pos`` on ROS, with a subscriber) for every one of ``joints``; None
         unless each joint has exactly one."""
         found: dict[str, list[str]] = {}
-        for topic, types in self._execution_node.get_topic_names_and_types():
+        for topic, types in self.node.get_topic_names_and_types():
             m = GZ_CMD_POS.search(topic)
             if m and "std_msgs/msg/Float64" in types and m.group("joint") in joints:
-                if self._execution_node.count_subscribers(topic) > 0:
+                if self.node.count_subscribers(topic) > 0:
                     found.setdefault(m.group("joint"), []).append(topic)
         if set(found) != set(joints) or any(len(t) != 1 for t in found.values()):
             return None
         return {j: t[0] for j, t in found.items()}
 
-    def _wait_for_execution(self, joints: list[str]) -> tuple[list[Controller], bool, dict[str, str] | None]:
+    def wait_for_execution(self, joints: list[str]) -> tuple[list[Controller], bool, dict[str, str] | None]:
         """(the controllers of ``joints``, whether their actions are served, else the joints' gz command topics),
         waiting up to :data:`CONTROLLER_WAIT` for a served action or the topics to be discovered: right
         after a robot is spawned, a busy machine's graph may not list them, nor the controller manager
@@ -248,21 +215,23 @@ class _Execution(_Planning):
         likewise). Once the wait is over without either: (the controllers or [], False, None)."""
         deadline = time.monotonic() + CONTROLLER_WAIT
         while True:
-            controllers = self._controllers_for(joints)
-            if controllers and all(self._action_served(c.action) for c in controllers):
+            controllers = self.controllers_for(joints)
+            if controllers and all(self.action_served(c.action) for c in controllers):
                 return controllers, True, None
-            topics = self._position_topics(joints)
+            topics = self.position_topics(joints)
             if topics is not None or time.monotonic() >= deadline:
                 return controllers, False, topics
             time.sleep(0.1)  # the graph is kept by the middleware's threads
 
-    def _action_served(self, action: str) -> bool:
+    def action_served(self, action: str) -> bool:
         """Whether an action server of that name is in the graph now."""
         from rclpy.action.graph import get_action_names_and_types
 
-        return any(name == action for name, _ in get_action_names_and_types(self._execution_node))
+        return any(name == action for name, _ in get_action_names_and_types(self.node))
 
-    def _stream(self, trajectory: JointTrajectory, topics: dict[str, str], handle: Any) -> tuple[str, str]:
+    def stream(
+        self, trajectory: JointTrajectory, topics: dict[str, str], stop_requested: Callable[[], bool]
+    ) -> tuple[str, str]:
         """Execute ``trajectory`` on gz JointPositionController arms: its positions, interpolated, streamed
         to each joint's command topic at :data:`STREAM_RATE_HZ` on the wall clock, then the end held until
         every joint is within :data:`STREAM_GOAL_TOLERANCE` of it (by /joint_states)."""
@@ -271,8 +240,8 @@ class _Execution(_Planning):
         for j in joints:
             pub = self._position_pubs.get(topics[j])
             if pub is None:
-                pub = self._position_pubs[topics[j]] = self._on_execution_thread(
-                    lambda t=topics[j]: self._execution_node.create_publisher(Float64, t, 10)
+                pub = self._position_pubs[topics[j]] = self.on_execution_thread(
+                    lambda t=topics[j]: self.node.create_publisher(Float64, t, 10)
                 )
             pubs.append(pub)
         points = [p for p in trajectory.points if len(p.positions) == len(joints)]
@@ -287,14 +256,14 @@ class _Execution(_Planning):
                 pub.publish(Float64(data=float(v)))
 
         def measured() -> np.ndarray | None:
-            latest = self._latest_joints
+            latest = self.context.latest_joints
             return np.array([latest[j] for j in joints]) if all(j in latest for j in joints) else None
 
         started = time.monotonic()
         duration = float(times[-1])
         period = 1.0 / STREAM_RATE_HZ
         while True:
-            if handle.is_cancel_requested:
+            if stop_requested():
                 now = measured()
                 if now is not None:
                     send(now)  # stop where the arm is
@@ -314,7 +283,7 @@ class _Execution(_Planning):
             settled = settled + 1 if error <= STREAM_GOAL_TOLERANCE else 0
             if settled >= STREAM_RATE_HZ / 10:
                 return "SUCCESS", ""
-            if handle.is_cancel_requested:
+            if stop_requested():
                 if now is not None:
                     send(now)
                 return "PREEMPTED", "stopped"
@@ -324,16 +293,19 @@ class _Execution(_Planning):
             send(goal)
             time.sleep(period)
 
-    def _run(self, trajectory: JointTrajectory, handle: Any) -> tuple[str, str]:
+    def run(self, trajectory: JointTrajectory, handle: Any) -> tuple[str, str]:
         """Send ``trajectory`` to its FollowJointTrajectory controller and wait; cancel it when ``handle`` is,
         or when a "stop" event comes. Without a controller serving its joints, gz-sim JointPositionController
         arms get it streamed."""
         stops = self._stops
-        handle = _Stoppable(handle, lambda: self._stops != stops)
+
+        def stop_requested() -> bool:  # the client cancelled, or a "stop" came since the execution began
+            return bool(handle.is_cancel_requested or self._stops != stops)
+
         joints = list(trajectory.joint_names)
-        controllers, served, topics = self._wait_for_execution(joints)
+        controllers, served, topics = self.wait_for_execution(joints)
         if not served and topics is not None:
-            return self._stream(trajectory, topics, handle)
+            return self.stream(trajectory, topics, stop_requested)
         if not controllers:
             return (
                 "CONTROL_FAILED",
@@ -341,7 +313,7 @@ class _Execution(_Planning):
                 "of /controller_manager, or gz JointPositionController topics .../joint/<joint>/n0/cmd_pos)",
             )
         if len(controllers) == 1:
-            return self._follow(controllers[0], trajectory, handle, served)
+            return self.follow(controllers[0], trajectory, stop_requested, served)
         # each controller its joints' part, all at once (MoveIt's distributeTrajectory), as one execution
         parts, given = [], set()
         for c in controllers:
@@ -351,7 +323,7 @@ class _Execution(_Planning):
         results: list[tuple[str, str]] = [("CONTROL_FAILED", "not run")] * len(parts)
 
         def follow(i: int, controller: Controller, part: JointTrajectory) -> None:
-            results[i] = self._follow(controller, part, handle, served)
+            results[i] = self.follow(controller, part, stop_requested, served)
 
         threads = [
             threading.Thread(target=follow, args=(i, c, part), name=f"execute {c.name}", daemon=True)
@@ -365,15 +337,15 @@ class _Execution(_Planning):
             (r for r in results if r[0] != "SUCCESS"), ("SUCCESS", "")
         )
 
-    def _follow(
-        self, controller: Controller, trajectory: JointTrajectory, handle: Any, served: bool
+    def follow(
+        self, controller: Controller, trajectory: JointTrajectory, stop_requested: Callable[[], bool], served: bool
     ) -> tuple[str, str]:
         """Send ``trajectory`` to ``controller``'s FollowJointTrajectory action and wait; cancel it when
         ``handle`` is."""
         client = self._trajectory_clients.get(controller.action)
         if client is None:
-            client = self._trajectory_clients[controller.action] = self._on_execution_thread(
-                lambda: ActionClient(self._execution_node, FollowJointTrajectory, controller.action)
+            client = self._trajectory_clients[controller.action] = self.on_execution_thread(
+                lambda: ActionClient(self.node, FollowJointTrajectory, controller.action)
             )
         if not client.wait_for_server(timeout_sec=5.0 if served else 0.1):  # the graph was waited on above
             return "CONTROL_FAILED", f"controller action {controller.action} is not available"
@@ -398,7 +370,7 @@ class _Execution(_Planning):
 
         # every call on the client is made on its executor's thread: made from this one, a reply that came
         # back before rclpy filed the request was dropped and its future never completed (ros2/rclpy#1123)
-        on_thread = self._execution_executor.create_task
+        on_thread = self.executor.create_task
         on_thread(lambda: client.send_goal_async(goal, feedback_callback=on_feedback).add_done_callback(on_goal))
         points = list(trajectory.points)
         duration = _seconds(points[-1].time_from_start) if points else 0.0
@@ -409,7 +381,7 @@ class _Execution(_Planning):
         expected = duration * 1.2 + 0.5
         cancelled = False
         while not done.wait(0.02):
-            if handle.is_cancel_requested and not cancelled and "goal" in box:
+            if stop_requested() and not cancelled and "goal" in box:
                 on_thread(box["goal"].cancel_goal_async)
                 cancelled = True
             now = time.monotonic()
@@ -440,30 +412,6 @@ class _Execution(_Planning):
         if res.error_code != FollowJointTrajectory.Result.SUCCESSFUL:
             return "CONTROL_FAILED", f"{controller.name}: {res.error_string or res.error_code}"
         return "SUCCESS", ""
-
-
-class _Stoppable:
-    """An action goal's handle as the execution loops see it: cancel requested when the client asked, or
-    when ``stopped()`` (a "stop" on /trajectory_execution_event since the execution began)."""
-
-    def __init__(self, handle: Any, stopped: Any) -> None:
-        self._handle = handle
-        self._stopped = stopped
-
-    @property
-    def is_cancel_requested(self) -> bool:
-        return bool(self._handle.is_cancel_requested or self._stopped())
-
-
-def _end_goal(handle: Any, code: str, preempted: str) -> None:
-    """End an action goal as its MoveItErrorCodes name says: succeeded, aborted, or for PREEMPTED as the
-    action's capability ends it (``preempted``: "canceled" or "abort")."""
-    if code == "SUCCESS":
-        handle.succeed()
-    elif code == "PREEMPTED" and preempted == "canceled":
-        handle.canceled()
-    else:
-        handle.abort()
 
 
 def _cover(joints: set[str], controllers: list[Controller]) -> list[Controller]:
