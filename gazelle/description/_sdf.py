@@ -43,6 +43,7 @@ from ._model import (
     Light,
     Mimic,
     Model,
+    NamedPose,
     World,
 )
 from ._pose import IDENTITY, Pose
@@ -627,7 +628,7 @@ class _Loader(_WorldParts):
         spherical = self.spherical_coordinates(element, doc)
         physics = self.physics(physics_el, doc)
         scene = self.scene(element, doc)
-        models, lights = self.world_contents(element, doc, name)
+        models, lights, named = self.world_contents(element, doc, name)
         plugins = tuple(p for p in (self.plugin(e, doc) for e in _findall(element, "plugin")) if p is not None)
         if name is None:
             return None
@@ -643,6 +644,7 @@ class _Loader(_WorldParts):
             location=loc,
             spherical_coordinates=spherical,
             magnetic_field=magnetic,
+            named_poses=tuple(named),
         )
 
     def world_state(self, element: etree._Element, doc: _Doc, builts: dict[str, _Built]) -> dict[str, Pose]:
@@ -685,8 +687,10 @@ class _Loader(_WorldParts):
                     )
         return out
 
-    def world_contents(self, element: etree._Element, doc: _Doc, name: str | None) -> tuple[list[Model], list[Light]]:
-        """The world's models (and includes) placed through its frame graph, and its lights.
+    def world_contents(
+        self, element: etree._Element, doc: _Doc, name: str | None
+    ) -> tuple[list[Model], list[Light], list[NamedPose]]:
+        """The world's models (and includes) placed through its frame graph, its lights, and its named poses.
 
         An ``<include>`` may bring a light (Fuel's ``sun`` is one), so lights are collected from both, in
         file order. Other children of ``<world>`` are read elsewhere (physics, scene, plugins, gravity) or
@@ -697,6 +701,7 @@ class _Loader(_WorldParts):
         scope = Scope("world", self.sink, canonical="world")
         builts: list[_Built] = []
         light_items: list[etree._Element | Light] = []
+        frame_items: list[etree._Element] = []
         names: set[str] = set()
         for child in child_elements(element):
             tag = _tag(child)
@@ -717,6 +722,7 @@ class _Loader(_WorldParts):
                 continue
             elif tag == "frame":
                 self.world_frame(child, doc, scope, names, name)
+                frame_items.append(child)
                 continue
             else:
                 continue
@@ -752,7 +758,8 @@ class _Loader(_WorldParts):
             light = item if isinstance(item, Light) else self.light(item, doc, scope)
             if light is not None:
                 lights.append(light)
-        return models, lights
+        named = [p for p in (self.named_pose(el, doc, scope) for el in frame_items) if p is not None]
+        return models, lights, named
 
 
 _STATE_STAMPS = frozenset({"sim_time", "wall_time", "real_time", "iterations"})

@@ -10,7 +10,7 @@ from __future__ import annotations
 from lxml import etree
 
 from ._diagnostics import ErrorCode
-from ._model import DEFAULT_MAGNETIC_FIELD, PhysicsSettings, Scene, SphericalCoordinates
+from ._model import DEFAULT_MAGNETIC_FIELD, NamedPose, PhysicsSettings, Scene, SphericalCoordinates
 from ._pose import Vec3
 from ._sdf_frames import FrameNode, Scope
 from ._sdf_parts import _Parts
@@ -143,3 +143,35 @@ class _WorldParts(_Parts):
             attached_to=attached,
             location=self.loc(child, doc),
         )
+
+    def named_pose(self, child: etree._Element, doc: _Doc, scope: Scope) -> NamedPose | None:
+        """A world ``<frame>`` attached to the world as a named pose (None for one attached to a model, which
+        moves, or one whose pose the frame graph could not resolve: reported there), with gazelle's custom
+        elements: ``<gazelle:description>``, ``<gazelle:tag>`` (repeatable), and its free space,
+        ``<gazelle:box>`` (six numbers: two opposite corners in the pose's frame) or ``<gazelle:sphere>`` (a
+        radius about the pose)."""
+        name = (child.get("name") or "").strip()
+        attached = (child.get("attached_to") or "").strip()
+        if not name or attached not in ("", "world") or scope.nodes.get(name) is None:
+            return None
+        X_WF = scope.pose(name, self.loc(child, doc))
+        if X_WF is None:
+            return None
+        description = self.text(child, "gazelle:description") or ""
+        tags = tuple(t for t in ((e.text or "").strip() for e in _findall(child, "gazelle:tag")) if t)
+        box = None
+        raw = self.vector(child, "gazelle:box", 6, None, doc)
+        if raw is not None:
+            box = ((raw[0], raw[1], raw[2]), (raw[3], raw[4], raw[5]))
+        radius = self.opt_number(child, "gazelle:sphere", doc)
+        if radius is not None and radius <= 0:
+            self.sink.error(ErrorCode.VALUE_INVALID, f"<gazelle:sphere> must be > 0, got {radius:g}", self.loc(child, doc))
+            radius = None
+        if box is not None and radius is not None:
+            self.sink.warning(
+                ErrorCode.VALUE_INVALID,
+                f"frame '{name}' has both <gazelle:box> and <gazelle:sphere>; the box is used",
+                self.loc(child, doc),
+            )
+            radius = None
+        return NamedPose(name, X_WF, description, tags, box, radius, self.loc(child, doc))
