@@ -165,7 +165,9 @@ class _WorldParts(_Parts):
             box = ((raw[0], raw[1], raw[2]), (raw[3], raw[4], raw[5]))
         radius = self.opt_number(child, "gazelle:sphere", doc)
         if radius is not None and radius <= 0:
-            self.sink.error(ErrorCode.VALUE_INVALID, f"<gazelle:sphere> must be > 0, got {radius:g}", self.loc(child, doc))
+            self.sink.error(
+                ErrorCode.VALUE_INVALID, f"<gazelle:sphere> must be > 0, got {radius:g}", self.loc(child, doc)
+            )
             radius = None
         if box is not None and radius is not None:
             self.sink.warning(

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING
 import mujoco
 import numpy as np
 
+from ..description import Model, Pose, World
 from ._builder import VISUAL_GROUP
 from ._contact_pairs import PROXY_GROUP
 from ._entities import ErrorKind, WorldError
@@ -101,6 +102,20 @@ def entity_box(world: PhysicsWorld, entity: str) -> Aabb:
     if len(origins) == 0:
         raise WorldError(ErrorKind.NOT_FOUND, f"entity '{entity}' has no links in the world")
     return Aabb(_vec(origins.min(axis=0)), _vec(origins.max(axis=0)))
+
+
+def model_box(model: Model) -> Aabb:
+    """The box around a model's collision geometry in its own model frame, as it would be spawned (joints at
+    their zero positions), by building it alone in a scratch world; for simulation_interfaces' GetSpawnables.
+
+    Raises:
+        WorldError: the model cannot be built (BUILD_FAILED, with the reason).
+    """
+    from ._world import PhysicsWorld
+
+    scratch = PhysicsWorld(World(name="bounds"))
+    scratch.add_entity(model, name="model", X_WM=Pose())
+    return entity_box(scratch, "model")
 
 
 def overlapping(

@@ -126,7 +126,7 @@ class Simulation(SpawningMixin):
         """(lags not yet reported, their wall seconds lost, wall time of the last report)."""
         self.world_name = world.name
         self.named_poses = world.named_poses
-        """The world's named places (its ``<frame>``s attached to the world); see :class:`~gazelle.description.NamedPose`."""
+        """Its named places, the world's ``<frame>``s attached to the world (see ``description.NamedPose``)."""
         self.world_plugins = world.plugins
         self.spherical_coordinates = world.spherical_coordinates
         self.magnetic_field = world.magnetic_field
