@@ -18,7 +18,7 @@ Decisions (also what :func:`features` advertises, nothing more):
   with ``INCORRECT_TRANSITION``: the server is stopped with Ctrl-C / SIGTERM,
   never by a service request.
 * StepSimulation and SimulateSteps require the simulation to be paused
-  (``RESULT_INCORRECT_STATE`` otherwise) and step in chunks, each chunk one
+  (``RESULT_OPERATION_FAILED`` otherwise, as both .srv files say) and step in chunks, each chunk one
   ``sim.call``, so other requests are served between chunks. Before the first chunk, the messages
   the server's subscriptions had received are handed to the simulation (``_inbound``): a command
   delivered before the request acts from its first step.
@@ -315,10 +315,10 @@ class SimulationInterfaces(EntityQueries):
         time and each hop cost ~0.5 ms), or it was unpaused meanwhile."""
         if done == 0:
             return _Refused(
-                Result.RESULT_INCORRECT_STATE,
+                Result.RESULT_OPERATION_FAILED,
                 "the simulation must be paused to step it (SetSimulationState STATE_PAUSED first)",
             )
-        return _Refused(Result.RESULT_INCORRECT_STATE, f"the simulation was unpaused after {done} of {steps} steps")
+        return _Refused(Result.RESULT_OPERATION_FAILED, f"the simulation was unpaused after {done} of {steps} steps")
 
     def _step_chunk(self, n: int) -> int:
         """Take up to ``n`` steps on the sim thread; returns how many were taken (0 if it was unpaused)."""

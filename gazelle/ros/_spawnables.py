@@ -9,8 +9,8 @@ with its description and its spawn bounds.
   spawned (:func:`gazelle.physics.model_box`), remembered per file until the file changes.
 * ``sources``: folders, as a path, ``file://``, ``model://`` or ``package://`` URI, each read only when it lies
   inside the resource paths (the folders SpawnEntity reads; symbolic links resolved): the folder itself if it is
-  a model folder, and its direct sub-folders. Anything else is ``RESULT_NOT_FOUND``, naming the entry, without
-  saying whether such a folder exists.
+  a model folder, and its direct sub-folders. As the service says, an entry it does not recognise is named in
+  the reply's message (without saying whether such a folder exists) and the reply is still ``RESULT_OK``.
 
 A model folder whose file does not load or build is left out; the reply's message says how many and why (the
 first). At most :data:`MAX_SPAWNABLES` are listed (the message says when more were found).
@@ -38,7 +38,7 @@ from ..description import (
 )
 from ..physics import WorldError, model_box
 from ._replies import guarded_service, serve
-from ._si_results import OK, _Refused, _result
+from ._si_results import OK, _result
 
 if TYPE_CHECKING:
     from ..description import ResourceResolver
@@ -65,15 +65,11 @@ class SpawnablesService:
             serve(si.node, GetSpawnables, "~/get_spawnables", guarded_service("get_spawnables", self.get), si.cb)
         )
 
-    def _source(self, i: int, source: str) -> Path:
-        """``sources[i]`` as a folder inside the resource paths (see the module docstring)."""
+    def _source(self, source: str) -> Path | None:
+        """A source as a folder inside the resource paths (see the module docstring), or None."""
         path = self.resolver.resolve_uri(source) if source.strip() else None
         if path is None or not path.is_dir() or not self.resolver.is_inside_roots(path):
-            raise _Refused(
-                Result.RESULT_NOT_FOUND,
-                f"sources[{i}] {excerpt(source, 120)} is not a folder inside the resource paths "
-                "(GAZELLE_RESOURCE_PATH and the other search paths; symbolic links resolved)",
-            )
+            return None
         return path
 
     def _uri(self, found: Path, mf: ModelFolder) -> str:
@@ -126,15 +122,18 @@ class SpawnablesService:
 
     def get(self, req: GetSpawnables.Request, res: GetSpawnables.Response) -> Any:
         """GetSpawnables: the model folders on the resource paths and in ``sources``."""
-        try:
-            if len(req.sources) > MAX_SOURCES:
-                raise _Refused(
-                    Result.RESULT_OPERATION_FAILED, f"sources has {len(req.sources)} entries; at most {MAX_SOURCES}"
-                )
-            sources = [self._source(i, s) for i, s in enumerate(req.sources)]
-        except _Refused as err:
-            res.result = _result(err.code, str(err))
+        if len(req.sources) > MAX_SOURCES:
+            message = f"sources has {len(req.sources)} entries; at most {MAX_SOURCES}"
+            res.result = _result(Result.RESULT_OPERATION_FAILED, message)
             return res
+        sources: list[Path] = []
+        unrecognised: list[str] = []
+        for i, source in enumerate(req.sources):
+            path = self._source(source)
+            if path is None:
+                unrecognised.append(f"sources[{i}] {excerpt(source, 120)}")
+            else:
+                sources.append(path)
         folders, more = model_folders(self.resolver, sources, MAX_SPAWNABLES)
         listed: list[Spawnable] = []
         left_out: list[str] = []
@@ -145,6 +144,11 @@ class SpawnablesService:
             else:
                 listed.append(item)
         notes = []
+        if unrecognised:
+            notes.append(
+                f"not recognised as a folder inside the resource paths (GAZELLE_RESOURCE_PATH and the other search "
+                f"paths; symbolic links resolved), so not searched: {', '.join(unrecognised)}"
+            )
         if left_out:
             notes.append(f"{len(left_out)} model folder(s) left out, the first: {left_out[0]}")
         if more:
