@@ -36,15 +36,6 @@ class Aabb:
     lower: Vec
     upper: Vec
 
-    def overlaps_box(self, lower: Sequence[float], upper: Sequence[float]) -> bool:
-        """Whether this box and the box between ``lower`` and ``upper`` share a point (touching counts)."""
-        return all(self.lower[i] <= upper[i] and lower[i] <= self.upper[i] for i in range(3))
-
-    def overlaps_sphere(self, centre: Sequence[float], radius: float) -> bool:
-        """Whether this box and the ball of ``radius`` about ``centre`` share a point (touching counts)."""
-        nearest = [min(max(centre[i], self.lower[i]), self.upper[i]) for i in range(3)]
-        return sum((nearest[i] - centre[i]) ** 2 for i in range(3)) <= radius * radius
-
 
 def _vec(v: np.ndarray) -> Vec:
     return (float(v[0]), float(v[1]), float(v[2]))
@@ -59,6 +50,27 @@ def _entity_bodies(world: PhysicsWorld, entity: str) -> list[int]:
     return [i for i in ids if i >= 0]
 
 
+def _collision_mask(world: PhysicsWorld) -> np.ndarray:
+    """Which geoms are collision geometry: visuals are not, and a contact proxy repeats its collision."""
+    groups = world.model.geom_group
+    return (groups != VISUAL_GROUP) & (groups != PROXY_GROUP)
+
+
+def _geom_boxes(world: PhysicsWorld, geoms: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(lower, upper) corners, shape (n, 3), of the world-frame boxes of ``geoms`` at the current kinematics:
+    MuJoCo's local box (``geom_aabb``: centre, half sizes) turned by each geom's pose; a plane its drawn rectangle."""
+    m, d = world.model, world.data
+    R = d.geom_xmat[geoms].reshape(-1, 3, 3)
+    centre = m.geom_aabb[geoms, :3].copy()
+    half = m.geom_aabb[geoms, 3:].copy()
+    planes = m.geom_type[geoms] == mujoco.mjtGeom.mjGEOM_PLANE
+    centre[planes] = 0.0
+    half[planes] = np.column_stack([m.geom_size[geoms][planes, :2], np.zeros(int(planes.sum()))])
+    c = d.geom_xpos[geoms] + np.einsum("nij,nj->ni", R, centre)
+    h = np.einsum("nij,nj->ni", np.abs(R), half)
+    return c - h, c + h
+
+
 def collision_boxes(world: PhysicsWorld, entity: str) -> list[Aabb]:
     """The world-frame box of each collision geom of ``entity`` (every convex part of a decomposed mesh), at
     the current state; empty when it has none.
@@ -68,22 +80,9 @@ def collision_boxes(world: PhysicsWorld, entity: str) -> list[Aabb]:
     """
     bodies = _entity_bodies(world, entity)
     world.refresh_kinematics()
-    m, d = world.model, world.data
-    mine = np.isin(m.geom_bodyid, bodies)
-    groups = m.geom_group
-    out = []
-    for g in np.flatnonzero(mine):
-        if groups[g] in (VISUAL_GROUP, PROXY_GROUP):  # visuals are no collision; a proxy repeats its collision
-            continue
-        R = d.geom_xmat[g].reshape(3, 3)
-        if m.geom_type[g] == mujoco.mjtGeom.mjGEOM_PLANE:
-            centre, half = np.zeros(3), np.array([m.geom_size[g][0], m.geom_size[g][1], 0.0])
-        else:
-            centre, half = m.geom_aabb[g][:3], m.geom_aabb[g][3:]
-        c = d.geom_xpos[g] + R @ centre
-        h = np.abs(R) @ half
-        out.append(Aabb(_vec(c - h), _vec(c + h)))
-    return out
+    geoms = np.flatnonzero(np.isin(world.model.geom_bodyid, bodies) & _collision_mask(world))
+    lower, upper = _geom_boxes(world, geoms)
+    return [Aabb(_vec(lo), _vec(hi)) for lo, hi in zip(lower, upper, strict=True)]
 
 
 def entity_box(world: PhysicsWorld, entity: str) -> Aabb:
@@ -127,20 +126,33 @@ def overlapping(
 ) -> list[str]:
     """The entities of ``names`` (in their order) one of whose collision geoms' boxes (or, with none, the box of
     their links' origins) overlaps the world-frame ``box`` (two opposite corners) or ``sphere`` (centre,
-    radius); names no longer in the world are left out."""
-    out = []
-    for name in names:
-        if name not in world.entities:
-            continue
-        parts = collision_boxes(world, name) or [entity_box(world, name)]
-        if box is not None:
-            lower = [min(box[0][i], box[1][i]) for i in range(3)]
-            upper = [max(box[0][i], box[1][i]) for i in range(3)]
-            hit = any(p.overlaps_box(lower, upper) for p in parts)
-        elif sphere is not None:
-            hit = any(p.overlaps_sphere(sphere[0], sphere[1]) for p in parts)
-        else:
-            hit = True
-        if hit:
-            out.append(name)
-    return out
+    radius), touching included; names no longer in the world are left out. Every geom's box is computed at once
+    (a query over a world of thousands of entities is one pass over its geoms)."""
+    present = [n for n in names if n in world.entities]
+    if box is None and sphere is None:
+        return present
+    world.refresh_kinematics()
+    owner = np.full(world.model.nbody, -1)
+    for i, name in enumerate(present):
+        owner[_entity_bodies(world, name)] = i
+    geoms = np.flatnonzero(_collision_mask(world) & (owner[world.model.geom_bodyid] >= 0))
+    lower, upper = _geom_boxes(world, geoms)
+    if box is not None:
+        q_lo, q_hi = np.minimum(box[0], box[1]), np.maximum(box[0], box[1])
+
+        def hits(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+            return np.all((lo <= q_hi) & (q_lo <= hi), axis=1)
+    else:
+        assert sphere is not None
+        centre, radius = np.asarray(sphere[0], dtype=float), float(sphere[1])
+
+        def hits(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+            return np.sum((np.clip(centre, lo, hi) - centre) ** 2, axis=1) <= radius * radius
+
+    owners = owner[world.model.geom_bodyid[geoms]]
+    kept = set(owners[hits(lower, upper)].tolist())
+    for i in set(range(len(present))) - set(owners.tolist()):  # no collision geometry: its links' origins
+        b = entity_box(world, present[i])
+        if hits(np.array([b.lower]), np.array([b.upper]))[0]:
+            kept.add(i)
+    return [n for i, n in enumerate(present) if i in kept]

@@ -8,7 +8,15 @@ import math
 import pytest
 
 from gazelle.description import Pose, World, load_string, quat_from_rpy
-from gazelle.physics import PhysicsWorld, WorldError, collision_boxes, entity_box, overlapping
+from gazelle.physics import (
+    Entity,
+    PhysicsWorld,
+    StagedRequest,
+    WorldError,
+    collision_boxes,
+    entity_box,
+    overlapping,
+)
 
 
 def sdf(name: str, body: str, static: bool = False) -> str:
@@ -72,3 +80,23 @@ def test_overlap_with_a_box_and_a_sphere(world: PhysicsWorld) -> None:
     # a sphere at the ghost's origin: an entity without collision overlaps by its links' origins
     assert overlapping(world, names, sphere=((7.0, 7.0, 7.5), 0.6)) == ["ghost"]
     assert "ground" in overlapping(world, names, box=((-1.0, -1.0, -0.1), (0.0, 0.0, 0.1)))
+
+
+def test_a_query_over_many_entities_finds_exactly_those_it_touches() -> None:
+    """One pass over every geom: 400 crates on a 1 m grid, a sphere of 1.2 m about (10, 10, 0.5) touches the
+    crates (1 x 2 x 1, bottom at z = 0) whose box comes within 1.2 m of it."""
+    w = PhysicsWorld(World(name="grid"))
+    crate = load_string(sdf("crate", BOX)).model
+    grid = [
+        StagedRequest(crate, f"c{i}_{j}", Pose((float(i), float(3 * j), 0.0))) for i in range(20) for j in range(20)
+    ]
+    staged = w.stage_many(grid)
+    w.commit([e for e in staged if isinstance(e, Entity)])  # one build for all 400
+    centre, r = (10.0, 10.0, 0.5), 1.2
+
+    def touches(i: int, j: int) -> bool:
+        lo, hi = (i - 0.5, 3 * j - 1.0, 0.0), (i + 0.5, 3 * j + 1.0, 1.0)
+        return sum((min(max(c, a), b) - c) ** 2 for c, a, b in zip(centre, lo, hi)) <= r * r
+
+    expected = [f"c{i}_{j}" for i in range(20) for j in range(20) if touches(i, j)]
+    assert expected and overlapping(w, list(w.entities), sphere=(centre, r)) == expected
