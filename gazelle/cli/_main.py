@@ -111,6 +111,13 @@ SimForce = Annotated[
     bool,
     typer.Option("--force", help="Let --replay FILE replace a file that is not a replay (or a link, itself)."),
 ]
+SimNamedPoses = Annotated[
+    list[Path],
+    typer.Option(
+        "--named-poses",
+        help="An SDF file whose world <frame>s are added to the world's named poses (GetNamedPoses; repeatable).",
+    ),
+]
 
 
 @app.command()
@@ -139,6 +146,7 @@ def sim(
         [], "--replay-topic", help="A topic of the simulation's whose values the replay shows (repeatable)."
     ),
     force: SimForce = False,
+    named_poses: SimNamedPoses = [],  # noqa: B006 (typer reads the default; it is never mutated)
 ) -> None:
     """Run a simulation server: /clock, /spawn_entity, /delete_entity, every plugin's topics, and the browser viewer."""
     from ._sim import run_sim
@@ -161,6 +169,7 @@ def sim(
             replay=replay,
             replay_topics=tuple(replay_topic),
             replay_force=force,
+            named_poses=tuple(named_poses),
         )
     )
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import os
 import signal
@@ -61,6 +62,30 @@ def load_world(path: Path | None, args: dict[str, str]) -> World:
     raise ModelLoadError(result.diagnostics)
 
 
+def with_named_poses(world: World, files: tuple[Path, ...]) -> World:
+    """``world`` with the named poses of each ``--named-poses`` file added after its own: the world ``<frame>``s
+    of an SDF file that holds nothing else (see gazelle/ros/_named_poses.py).
+
+    Raises:
+        ModelLoadError: a file does not load.
+        ValueError: a file is not a world, holds models, or names a named pose again (the line says where).
+    """
+    places = list(world.named_poses)
+    for path in files:
+        extra = load(path, expand_xacro=False).value
+        if not isinstance(extra, World):
+            raise ValueError(f"--named-poses {path}: not an SDF world (its <world> holds the <frame>s)")
+        if extra.models:
+            raise ValueError(f"--named-poses {path}: holds models; a named-poses file holds only world <frame>s")
+        for place in extra.named_poses:
+            first = next((p for p in places if p.name == place.name), None)
+            if first is not None:
+                where = f"{first.location.file}:{first.location.line}" if first.location else "the world"
+                raise ValueError(f"--named-poses {path}: named pose '{place.name}' is already defined at {where}")
+            places.append(place)
+    return dataclasses.replace(world, named_poses=tuple(places))
+
+
 PAUSED_NOTE = (
     "; PAUSED: time stands still until the viewer's play button, /unpause_physics or "
     "/gazelle/set_simulation_state runs it (gz sim starts paused without -r, gzserver with -u)"
@@ -86,6 +111,7 @@ def run_sim(
     replay: Path | None = None,
     replay_topics: tuple[str, ...] = (),
     replay_force: bool = False,
+    named_poses: tuple[Path, ...] = (),
 ) -> int:
     """Run the server; returns the process exit code."""
     logging.basicConfig(level=logging.INFO, format="[%(levelname)s] [%(name)s]: %(message)s", stream=sys.stderr)
@@ -97,8 +123,8 @@ def run_sim(
         SHUTDOWN_DEADLINE_SEC + 0.5
     )  # before any thread, and before the world's build, which may be long
     try:
-        world = load_world(path, args)
-    except ModelLoadError as err:
+        world = with_named_poses(load_world(path, args), named_poses)
+    except (ModelLoadError, ValueError) as err:
         print(str(err), file=sys.stderr)
         return 1
     from ..ros import RosBridge, announce_often, choose_discovery_range

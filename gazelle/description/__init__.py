@@ -35,6 +35,9 @@ from ._meshes import load_mesh_look as load_mesh_look
 from ._meshes import load_trimesh_in_metres as load_trimesh_in_metres
 from ._model import *  # noqa: F403  (the model dataclasses are the public surface)
 from ._model import LoadResult, Model, World
+from ._model_folders import ModelFolder as ModelFolder
+from ._model_folders import model_folders as model_folders
+from ._model_folders import read_model_folder as read_model_folder
 from ._pose import *  # noqa: F403  (poses and rotations: part of the model's public surface)
 from ._resources import ResourceResolver as ResourceResolver
 from ._semantic_model import *  # noqa: F403  (SRDF semantics and ros2_control blocks: part of the model)

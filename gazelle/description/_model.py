@@ -661,6 +661,29 @@ class SphericalCoordinates:
     """ENU (x East, y North, z up), as gz-sim requires."""
 
 
+@dataclass(frozen=True, slots=True)
+class NamedPose:
+    """A world ``<frame>`` attached to the world: a named place (simulation_interfaces' named poses).
+
+    Its description, tags and bounds come from gazelle's custom elements in the frame (``<gazelle:description>``,
+    ``<gazelle:tag>`` repeated, ``<gazelle:box>`` or ``<gazelle:sphere>``), which sdformat and gz-sim ignore."""
+
+    name: str
+    """The frame's name."""
+    pose: Pose
+    """X_WF: where it is in the world frame."""
+    description: str = ""
+    """``<gazelle:description>``: what the place is for."""
+    tags: tuple[str, ...] = ()
+    """``<gazelle:tag>`` elements, in file order."""
+    box: tuple[Vec3, Vec3] | None = None
+    """``<gazelle:box>``: two opposite corners of the free space, in the pose's frame (metres)."""
+    sphere_radius: float | None = None
+    """``<gazelle:sphere>``: the radius of the free ball about the pose (metres)."""
+    location: SourceLocation | None = None
+    """Where the <frame> is written (file:line)."""
+
+
 DEFAULT_MAGNETIC_FIELD: Vec3 = (5.5645e-6, 22.8758e-6, -42.3884e-6)
 """SDF's default ``<magnetic_field>`` (tesla, ENU world frame)."""
 
@@ -691,6 +714,8 @@ class World:
     """None: the world does not say (GPS sensors then place its origin at 0° N, 0° E, as gz-sim does)."""
     magnetic_field: Vec3 = DEFAULT_MAGNETIC_FIELD
     """``<magnetic_field>`` in tesla, world frame (magnetometers read it); SDF's default otherwise."""
+    named_poses: tuple[NamedPose, ...] = ()
+    """Its ``<frame>``s attached to the world, in file order (see :class:`NamedPose`)."""
 
 
 _Loaded = TypeVar("_Loaded", Model, World, Semantics)

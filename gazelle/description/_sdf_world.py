@@ -10,7 +10,16 @@ from __future__ import annotations
 from lxml import etree
 
 from ._diagnostics import ErrorCode
-from ._model import DEFAULT_MAGNETIC_FIELD, Light, Model, PhysicsSettings, Scene, SphericalCoordinates, World
+from ._model import (
+    DEFAULT_MAGNETIC_FIELD,
+    Light,
+    Model,
+    NamedPose,
+    PhysicsSettings,
+    Scene,
+    SphericalCoordinates,
+    World,
+)
 from ._pose import IDENTITY, Pose, Vec3
 from ._sdf_frames import FrameNode, Scope
 from ._sdf_model import _link_pose, _merge, finish_model, placement_inverse, read_include, read_model
@@ -29,10 +38,12 @@ from ._sdf_reader import (
     read_flag,
     read_name,
     read_number,
+    read_opt_number,
     read_plugin,
     read_pose,
     read_unique_name,
     read_vec3,
+    read_vector,
     warn_unsupported,
 )
 from ._xml import child_elements, parse_bool
@@ -192,7 +203,7 @@ def read_world(ws: Workspace, element: etree._Element, doc: _Doc) -> World | Non
     spherical = read_spherical_coordinates(ws, element, doc)
     physics = read_physics(ws, physics_el, doc)
     scene = read_scene(ws, element, doc)
-    models, lights = read_world_contents(ws, element, doc, name)
+    models, lights, named = read_world_contents(ws, element, doc, name)
     plugins = tuple(p for p in (read_plugin(ws, e, doc) for e in _findall(element, "plugin")) if p is not None)
     if name is None:
         return None
@@ -208,7 +219,38 @@ def read_world(ws: Workspace, element: etree._Element, doc: _Doc) -> World | Non
         location=loc,
         spherical_coordinates=spherical,
         magnetic_field=magnetic,
+        named_poses=tuple(named),
     )
+
+
+def read_named_pose(ws: Workspace, child: etree._Element, doc: _Doc, scope: Scope) -> NamedPose | None:
+    """A world ``<frame>`` attached to the world as a named pose (None for one attached to a model, which
+    moves, or one whose pose the frame graph could not resolve: reported there), with gazelle's custom
+    elements: ``<gazelle:description>``, ``<gazelle:tag>`` (repeatable), and its free space,
+    ``<gazelle:box>`` (six numbers: two opposite corners in the pose's frame) or ``<gazelle:sphere>`` (a
+    radius about the pose)."""
+    name = (child.get("name") or "").strip()
+    attached = (child.get("attached_to") or "").strip()
+    loc = location_of(child, doc)
+    if not name or attached not in ("", "world") or scope.nodes.get(name) is None:
+        return None
+    X_WF = scope.pose(name, loc)
+    if X_WF is None:
+        return None
+    description = child_text(child, "gazelle:description") or ""
+    tags = tuple(t for t in ((e.text or "").strip() for e in _findall(child, "gazelle:tag")) if t)
+    raw = read_vector(ws, child, "gazelle:box", 6, None, doc)
+    box = ((raw[0], raw[1], raw[2]), (raw[3], raw[4], raw[5])) if raw is not None else None
+    radius = read_opt_number(ws, child, "gazelle:sphere", doc)
+    if radius is not None and radius <= 0:
+        ws.sink.error(ErrorCode.VALUE_INVALID, f"<gazelle:sphere> must be > 0, got {radius:g}", loc)
+        radius = None
+    if box is not None and radius is not None:
+        ws.sink.warning(
+            ErrorCode.VALUE_INVALID, f"frame '{name}' has both <gazelle:box> and <gazelle:sphere>; the box is used", loc
+        )
+        radius = None
+    return NamedPose(name, X_WF, description, tags, box, radius, loc)
 
 
 def read_world_state(ws: Workspace, element: etree._Element, doc: _Doc, builts: dict[str, _Built]) -> dict[str, Pose]:
@@ -254,8 +296,8 @@ def read_world_state(ws: Workspace, element: etree._Element, doc: _Doc, builts: 
 
 def read_world_contents(
     ws: Workspace, element: etree._Element, doc: _Doc, name: str | None
-) -> tuple[list[Model], list[Light]]:
-    """The world's models (and includes) placed through its frame graph, and its lights.
+) -> tuple[list[Model], list[Light], list[NamedPose]]:
+    """The world's models (and includes) placed through its frame graph, its lights, and its named poses.
 
     An ``<include>`` may bring a light (Fuel's ``sun`` is one), so lights are collected from both, in
     file order. Other children of ``<world>`` are read elsewhere (physics, scene, plugins, gravity) or
@@ -266,6 +308,7 @@ def read_world_contents(
     scope = Scope("world", ws.sink, canonical="world")
     builts: list[_Built] = []
     light_items: list[etree._Element | Light] = []
+    frame_items: list[etree._Element] = []
     names: set[str] = set()
     for child in child_elements(element):
         tag = _tag(child)
@@ -286,6 +329,7 @@ def read_world_contents(
             continue
         elif tag == "frame":
             read_world_frame(ws, child, doc, scope, names, name)
+            frame_items.append(child)
             continue
         else:
             continue
@@ -321,7 +365,8 @@ def read_world_contents(
         light = item if isinstance(item, Light) else read_light(ws, item, doc, scope)
         if light is not None:
             lights.append(light)
-    return models, lights
+    named = [p for p in (read_named_pose(ws, el, doc, scope) for el in frame_items) if p is not None]
+    return models, lights, named
 
 
 _STATE_STAMPS = frozenset({"sim_time", "wall_time", "real_time", "iterations"})

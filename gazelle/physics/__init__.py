@@ -20,6 +20,11 @@ if "MUJOCO_GL" not in _os.environ:
     finally:
         del _os.environ["MUJOCO_GL"]
 
+from ._bounds import Aabb as Aabb
+from ._bounds import collision_boxes as collision_boxes
+from ._bounds import entity_box as entity_box
+from ._bounds import model_box as model_box
+from ._bounds import overlapping as overlapping
 from ._builder import SEP as SEP
 from ._builder import BuildError as BuildError
 from ._convex import prepare as prepare_meshes
@@ -47,6 +52,11 @@ from ._servo_plan import ServoPlan as ServoPlan
 from ._world import PhysicsWorld as PhysicsWorld
 
 __all__ = [
+    "Aabb",
+    "collision_boxes",
+    "entity_box",
+    "model_box",
+    "overlapping",
     "ContactPoint",
     "ActuatorGroup",
     "ActuatorHandle",

@@ -149,6 +149,13 @@ class Entity:
     generation_added: int = 0
     systems: list[Any] = field(default_factory=list)
     """What the runtime attached to this entity (its plugins' systems); physics never looks inside."""
+    category: int | None = None
+    """The category a client set (simulation_interfaces' SetEntityInfo, its EntityCategory code); None: the one its
+    model implies. Physics never reads it, nor :attr:`description` and :attr:`tags`."""
+    description: str | None = None
+    """The description a client set; None: the one gazelle writes from the model."""
+    tags: tuple[str, ...] = ()
+    """The tags a client set (entity filters match them)."""
 
     @property
     def static(self) -> bool:

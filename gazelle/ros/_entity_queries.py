@@ -5,14 +5,11 @@ process) and the entity categories; see ``_simulation_interfaces.py`` for the de
 
 from __future__ import annotations
 
-import math
 import time
-from collections.abc import Callable, Mapping
-from typing import TYPE_CHECKING, Any, TypeVar
+from typing import TYPE_CHECKING, Any
 
 import regex
 from simulation_interfaces.msg import (
-    EntityCategory,
     EntityState,
     Result,
 )
@@ -28,52 +25,17 @@ from .._errors import SimError
 from ..description import (
     BoundedWorker,
     BoundExceeded,
-    JointType,
     Pose,
     excerpt,
     quat_rotate,
-    reply_text,
 )
-from ..physics import WORLD_FRAMES, Entity, ErrorKind, WorldError
+from ..physics import WORLD_FRAMES, ErrorKind, WorldError, overlapping
 from ._convert import from_pose_msg, to_pose_msg, to_time
+from ._entity_filters import CATEGORY_NAMES, EntityFilter, category_of
+from ._si_results import _attempt, _finite, _Refused, _result
 
 if TYPE_CHECKING:
     from ..sim import Simulation
-
-
-def _result(code: int, message: str = "") -> Result:
-    return Result(result=code, error_message=reply_text(message))
-
-
-OK = Result.RESULT_OK
-
-
-class _Refused(SimError):
-    """A request failed with a result code."""
-
-    def __init__(self, code: int, message: str):
-        super().__init__(message)
-        self.code = code
-
-
-_T = TypeVar("_T")
-
-
-def _attempt(fn: Callable[[], _T], codes: Mapping[ErrorKind, int] | None = None) -> tuple[Result, _T | None]:
-    """Run ``fn`` and say how it went as a simulation_interfaces Result, with its value when it succeeded
-    (None otherwise). A refusal answers with its own code; a WorldError by its kind through ``codes``
-    (a missing entity is RESULT_NOT_FOUND unless ``codes`` says otherwise, any other kind
-    RESULT_OPERATION_FAILED); a simulation that did not answer in time, RESULT_OPERATION_FAILED."""
-    try:
-        value = fn()
-    except _Refused as err:
-        return _result(err.code, str(err)), None
-    except WorldError as err:
-        table = {ErrorKind.NOT_FOUND: Result.RESULT_NOT_FOUND, **(codes or {})}
-        return _result(table.get(err.kind, Result.RESULT_OPERATION_FAILED), str(err)), None
-    except TimeoutError as err:
-        return _result(Result.RESULT_OPERATION_FAILED, f"the simulation did not answer: {err}"), None
-    return _result(OK), value
 
 
 FILTER_TIME_LIMIT_SEC = 0.2
@@ -153,27 +115,6 @@ def _matching(source: str | None, names: list[str]) -> list[str]:
     return [str(n) for n in reply["names"]]
 
 
-def category_of(entity: Entity) -> int:
-    """The EntityCategory of an entity (see the module docstring)."""
-    if entity.static or entity.built.free_joint is None:
-        return EntityCategory.CATEGORY_STATIC_OBJECT
-    m = entity.model
-    if m.plugins or any(j.type is not JointType.FIXED for j in m.joints):
-        return EntityCategory.CATEGORY_ROBOT
-    return EntityCategory.CATEGORY_DYNAMIC_OBJECT
-
-
-_CATEGORY_NAMES = {
-    EntityCategory.CATEGORY_STATIC_OBJECT: "static object",
-    EntityCategory.CATEGORY_ROBOT: "robot",
-    EntityCategory.CATEGORY_DYNAMIC_OBJECT: "dynamic object",
-}
-
-
-def _finite(*values: float) -> bool:
-    return all(math.isfinite(v) for v in values)
-
-
 class EntityQueries:
     """The entity queries of :class:`~._simulation_interfaces.SimulationInterfaces` (which builds ``sim``)."""
 
@@ -189,32 +130,20 @@ class EntityQueries:
                 Result.RESULT_OPERATION_FAILED, f"{field_name} '{frame}' not found: no such entity or entity::link"
             ) from None
 
-    def _compile_filters(self, filters: Any) -> tuple[str | None, set[int]]:
-        """A request's EntityFilters as (name pattern, categories): tags and bounds are refused as unsupported
-        features (gazelle has neither), and the pattern is checked before it runs (see :func:`_check_filter`)."""
-        if filters.tags.tags:
-            raise _Refused(
-                Result.RESULT_FEATURE_UNSUPPORTED, "entity tags are not supported (filters.tags must be empty)"
-            )
-        if filters.bounds.type != 0 or filters.bounds.points:
-            raise _Refused(
-                Result.RESULT_FEATURE_UNSUPPORTED, "bounds filters are not supported (filters.bounds must be empty)"
-            )
-        pattern = str(filters.filter) or None
-        if pattern is not None:
-            _check_filter(pattern)
-        return pattern, {c.category for c in filters.categories}
-
     def _select(self, filters: Any) -> list[str]:
-        pattern, cats = self._compile_filters(filters)
-        # categories on the sim thread (cheap); the pattern here, off it, and bounded in time
-        return _matching(pattern, self._names_in(cats))
+        """The names of the entities that pass a request's filters: categories and tags on the sim thread (cheap),
+        the name pattern off it (bounded in time), then the overlap bounds on it."""
+        f = EntityFilter.from_msg(filters)
+        if f.pattern is not None:
+            _check_filter(f.pattern)
+        names = _matching(f.pattern, self._names_in(f))
+        if f.overlap:
+            names = self.sim.call(lambda: overlapping(self.sim.world, names, box=f.box, sphere=f.sphere))
+        return names
 
-    def _names_in(self, cats: set[int]) -> list[str]:
-        """The entities of the given categories (all when none), read on the sim thread."""
-        return self.sim.call(
-            lambda: [name for name, e in self.sim.world.entities.items() if not cats or category_of(e) in cats]
-        )
+    def _names_in(self, f: EntityFilter) -> list[str]:
+        """The entities of the filter's categories and tags (all when it names none), read on the sim thread."""
+        return self.sim.call(lambda: [name for name, e in self.sim.world.entities.items() if f.keeps(e)])
 
     def get_entities(self, req: GetEntities.Request, res: GetEntities.Response) -> Any:
         """GetEntities: names, filtered by a bounded regular expression and by category."""
@@ -282,16 +211,17 @@ class EntityQueries:
         return res
 
     def get_entity_info(self, req: GetEntityInfo.Request, res: GetEntityInfo.Response) -> Any:
-        """GetEntityInfo: an entity's category and description."""
+        """GetEntityInfo: an entity's category, description and tags (what SetEntityInfo set, else gazelle's
+        own: the category its model implies, a description written from the model, no tags)."""
 
-        def do() -> tuple[int, str]:
+        def do() -> tuple[int, str, list[str]]:
             e = self.sim.world.entities.get(req.entity)
             if e is None:
                 raise WorldError(ErrorKind.NOT_FOUND, f"entity '{req.entity}' does not exist")
             cat = category_of(e)
             m = e.model
             parts = [
-                f"{_CATEGORY_NAMES[cat]} '{e.name}'",
+                f"{CATEGORY_NAMES.get(cat, 'entity')} '{e.name}'",
                 f"model '{m.name}' ({m.source_format or 'unknown format'}"
                 + (f", {m.source_file}" if m.source_file and not m.source_file.startswith("<") else "")
                 + ")",
@@ -302,9 +232,9 @@ class EntityQueries:
             parts.append("spawned" if e.spawned else "from the world file")
             if e.name in self.sim.diverged:
                 parts.append(f"DIVERGED: {self.sim.diverged[e.name]}")
-            return cat, "; ".join(parts)
+            return cat, "; ".join(parts) if e.description is None else e.description, list(e.tags)
 
         res.result, found = _attempt(lambda: self.sim.call(do))
         if found is not None:
-            res.info.category.category, res.info.description = found
+            res.info.category.category, res.info.description, res.info.tags = found
         return res

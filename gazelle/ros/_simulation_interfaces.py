@@ -18,14 +18,20 @@ Decisions (also what :func:`features` advertises, nothing more):
   with ``INCORRECT_TRANSITION``: the server is stopped with Ctrl-C / SIGTERM,
   never by a service request.
 * StepSimulation and SimulateSteps require the simulation to be paused
-  (``RESULT_INCORRECT_STATE`` otherwise) and step in chunks, each chunk one
+  (``RESULT_OPERATION_FAILED`` otherwise, as both .srv files say) and step in chunks, each chunk one
   ``sim.call``, so other requests are served between chunks. Before the first chunk, the messages
   the server's subscriptions had received are handed to the simulation (``_inbound``): a command
   delivered before the request acts from its first step.
 * Entity categories: ``CATEGORY_STATIC_OBJECT`` for static models (no free
   root), ``CATEGORY_ROBOT`` for dynamic models that have plugins or a movable
-  (non-fixed) joint, ``CATEGORY_DYNAMIC_OBJECT`` for the other dynamic models.
-  Tags and bounds filters are not supported (``RESULT_FEATURE_UNSUPPORTED``).
+  (non-fixed) joint, ``CATEGORY_DYNAMIC_OBJECT`` for the other dynamic models, unless SetEntityInfo set
+  another (``_entity_info.py``). Tags filters match what SetEntityInfo set (any or all); bounds filters are
+  ``TYPE_BOX`` and ``TYPE_SPHERE`` in the world frame, against each collision geom's world box
+  (``_entity_filters.py``); ``TYPE_CONVEX_HULL`` is ``RESULT_FEATURE_UNSUPPORTED``.
+* The other parts of the standard are classes of their own, each registering its services on the node and
+  declaring its features (``FEATURES``): SetEntityInfo (``_entity_info.py``), GetEntityBounds
+  (``_entity_bounds.py``), GetNamedPoses and GetNamedPoseBounds (``_named_poses.py``), GetSpawnables
+  (``_spawnables.py``). GetSimulatorFeatures lists the union, nothing more.
 * Name filters are Python regular expressions (the ``regex`` module, ``re`` syntax; POSIX-extended
   syntax is a subset for the usual cases) of at most 1,000 characters, compiled and matched in a
   helper process bounded to 256 MiB and 1 s of CPU, and 0.2 s of matching: a backtracking or
@@ -87,8 +93,13 @@ from ..description import (
 from ..physics import WORLD_FRAMES, Entity, ErrorKind, WorldError, pose_out_of_range
 from ..sim import SpawnRequest
 from ._convert import from_pose_msg
-from ._entity_queries import OK, EntityQueries, _attempt, _finite, _Refused, _result
+from ._entity_bounds import EntityBoundsService
+from ._entity_info import EntityInfoSetter
+from ._entity_queries import EntityQueries
+from ._named_poses import NamedPosesService
 from ._replies import guarded_service, serve, serve_action, with_warnings
+from ._si_results import OK, _attempt, _finite, _Refused, _result
+from ._spawnables import SpawnablesService
 from ._stepping import SteppingService
 
 if TYPE_CHECKING:
@@ -118,7 +129,13 @@ FEATURES = (
     SimulatorFeatures.STEP_SIMULATION_MULTIPLE,
     SimulatorFeatures.STEP_SIMULATION_ACTION,
     SimulatorFeatures.SPAWNING_ENTITIES,
+    SimulatorFeatures.ENTITY_TAGS,
+    SimulatorFeatures.ENTITY_BOUNDS_BOX,
 )
+"""What this class serves (the entity filters' tags and boxes included); each part adds its own."""
+
+PARTS = (EntityInfoSetter, EntityBoundsService, NamedPosesService, SpawnablesService)
+"""The parts of the standard served by classes of their own (each registers its services on the node)."""
 
 _NAMESPACE_RE = re.compile(r"^/?([A-Za-z_][A-Za-z0-9_]*)(/[A-Za-z_][A-Za-z0-9_]*)*/?$")
 
@@ -181,6 +198,12 @@ class SimulationInterfaces(EntityQueries):
             self.services.append(serve(node, srv_type, f"~/{name}", guarded_service(name, fn), self.cb))
         self.stepping = SteppingService(node, guarded_service("step_simulation", self.step_simulation))
         self.action = serve_action(node, SimulateSteps, "~/simulate_steps", self._simulate_steps, self.cb)
+        self.features: set[int] = {int(f) for f in FEATURES}
+        """Every feature id served: GetSimulatorFeatures lists these."""
+        self.parts: list[object] = []
+        for part in PARTS:
+            self.parts.append(part(self))
+            self.features.update(int(f) for f in part.FEATURES)
 
     def destroy(self) -> None:
         """Stop the action server and the services (the node is being destroyed)."""
@@ -192,7 +215,7 @@ class SimulationInterfaces(EntityQueries):
     # ------------------------------------------------------------------ features and state
     def get_simulator_features(self, req: Any, res: GetSimulatorFeatures.Response) -> Any:
         """simulation_interfaces GetSimulatorFeatures: what this simulator supports (features, formats)."""
-        res.features.features = [int(f) for f in FEATURES]
+        res.features.features = sorted(self.features)
         res.features.spawn_formats = ["urdf", "sdf"]
         res.features.custom_info = (
             "gazelle (MuJoCo): xacro is never expanded by the server (a description is data): "
@@ -292,10 +315,10 @@ class SimulationInterfaces(EntityQueries):
         time and each hop cost ~0.5 ms), or it was unpaused meanwhile."""
         if done == 0:
             return _Refused(
-                Result.RESULT_INCORRECT_STATE,
+                Result.RESULT_OPERATION_FAILED,
                 "the simulation must be paused to step it (SetSimulationState STATE_PAUSED first)",
             )
-        return _Refused(Result.RESULT_INCORRECT_STATE, f"the simulation was unpaused after {done} of {steps} steps")
+        return _Refused(Result.RESULT_OPERATION_FAILED, f"the simulation was unpaused after {done} of {steps} steps")
 
     def _step_chunk(self, n: int) -> int:
         """Take up to ``n`` steps on the sim thread; returns how many were taken (0 if it was unpaused)."""

@@ -125,6 +125,8 @@ class Simulation(SpawningMixin):
         self._lag_log: tuple[int, float, float] = (0, 0.0, -math.inf)
         """(lags not yet reported, their wall seconds lost, wall time of the last report)."""
         self.world_name = world.name
+        self.named_poses = world.named_poses
+        """Its named places, the world's ``<frame>``s attached to the world (see ``description.NamedPose``)."""
         self.world_plugins = world.plugins
         self.spherical_coordinates = world.spherical_coordinates
         self.magnetic_field = world.magnetic_field

@@ -1,0 +1,46 @@
+"""simulation_interfaces' GetEntityBounds (:class:`EntityBoundsService`): ``TYPE_BOX``, the axis-aligned box around
+the entity's collision geometry in the world frame at the current state (two points: its lower and upper
+corners), computed by :func:`gazelle.physics.entity_box`. An entity with no collision geometry is the box around
+its links' origins (a point, its model frame's origin, for one link); a plane is the rectangle its file draws.
+The world frame, not the entity's canonical link as Bounds.msg's header says: the box then compares directly with
+the ``bounds`` entity filter and named poses, and a moved entity's box moves with it."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from geometry_msgs.msg import Vector3
+from simulation_interfaces.msg import Bounds, SimulatorFeatures
+from simulation_interfaces.srv import GetEntityBounds
+
+from ..physics import entity_box
+from ._replies import guarded_service, serve
+from ._si_results import _attempt
+
+if TYPE_CHECKING:
+    from ._simulation_interfaces import SimulationInterfaces
+
+
+class EntityBoundsService:
+    """``~/get_entity_bounds``, registered on the node of ``si``."""
+
+    FEATURES = (SimulatorFeatures.ENTITY_BOUNDS,)
+
+    def __init__(self, si: SimulationInterfaces):
+        """Serve GetEntityBounds beside ``si``'s services (``si.services`` holds it, so ``si.destroy`` removes it)."""
+        self.sim = si.sim
+        si.services.append(
+            serve(
+                si.node, GetEntityBounds, "~/get_entity_bounds", guarded_service("get_entity_bounds", self.get), si.cb
+            )
+        )
+
+    def get(self, req: GetEntityBounds.Request, res: GetEntityBounds.Response) -> Any:
+        """GetEntityBounds: the entity's collision box in the world frame (RESULT_NOT_FOUND for no such entity)."""
+        res.result, box = _attempt(lambda: self.sim.call(lambda: entity_box(self.sim.world, req.entity)))
+        if box is not None:
+            res.bounds = Bounds(
+                type=Bounds.TYPE_BOX,
+                points=[Vector3(x=lo, y=y, z=z) for lo, y, z in (box.lower, box.upper)],
+            )
+        return res
