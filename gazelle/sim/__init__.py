@@ -18,10 +18,16 @@ from ._scene import moved as moved
 from ._simulation import MAX_CATCH_UP_SEC as MAX_CATCH_UP_SEC
 from ._simulation import Simulation as Simulation
 from ._watchdog import start_signal_watchdog as start_signal_watchdog
+from ._world_swap import MAX_WORLD_MODELS as MAX_WORLD_MODELS
+from ._world_swap import LoadedWorld as LoadedWorld
+from ._world_swap import WorldBusy as WorldBusy
+from ._world_swap import WorldSwap as WorldSwap
 
 __all__ = [
     "MAX_CATCH_UP_SEC",
+    "MAX_WORLD_MODELS",
     "CheckpointError",
+    "LoadedWorld",
     "RtfSample",
     "SceneGeometry",
     "SceneLink",
@@ -29,5 +35,7 @@ __all__ = [
     "Simulation",
     "SpawnRequest",
     "StepListener",
+    "WorldBusy",
+    "WorldSwap",
     "moved",
 ]
