@@ -18,15 +18,17 @@ request to step while a load runs is refused the same way.
 from __future__ import annotations
 
 import contextlib
+import ctypes
+import functools
 import logging
 import threading
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from ..description import World
 from ..physics import ErrorKind, PhysicsWorld, WorldError, prepare_meshes
 from ..systems import audit_world
+from ._runtime_types import LoadedWorld, WorldBusy
 
 if TYPE_CHECKING:
     from ._simulation import Simulation
@@ -39,19 +41,28 @@ LOAD_TIMEOUT_SEC = 600.0
 _log = logging.getLogger("gazelle")
 
 
-class WorldBusy(Exception):
-    """A load or unload refused because another load is under way, or a client is stepping the world on
-    request; or a step on request refused because a load is under way. The message says which."""
+def release_freed_memory() -> None:
+    """Hand the memory a replaced world freed back to the system (glibc's ``malloc_trim``; elsewhere nothing).
+
+    A world's MuJoCo model and data are large blocks; once glibc has seen such blocks freed it serves the next
+    ones from its heap (its dynamic mmap threshold), and the heap keeps what is freed. Measured in process on
+    the seed robot: a load, a spawn and another load, 400 times, grew the RSS by 20 MiB, linearly; with this
+    call after each load, 3.2 MiB over the first 100 and nothing after. Nothing leaked (one physics world alive,
+    and ``malloc_trim`` at the end took the 20 MiB back): the memory was free but kept.
+    """
+    libc = _libc()
+    if libc is not None:
+        libc.malloc_trim(0)
 
 
-@dataclass(frozen=True)
-class LoadedWorld:
-    """The world the simulation runs: its name, the URI a LoadWorld names it by again (empty for a world that
-    came as a string) and its description."""
-
-    name: str
-    uri: str
-    description: World
+@functools.cache
+def _libc() -> ctypes.CDLL | None:
+    """glibc, when this process runs on it (it has ``malloc_trim``)."""
+    try:
+        libc = ctypes.CDLL("libc.so.6")
+        return libc if hasattr(libc, "malloc_trim") else None
+    except OSError:
+        return None
 
 
 def empty_world(like: World) -> World:
@@ -78,6 +89,13 @@ class WorldSwap:
         self._lock = threading.Lock()
         self._loading: str | None = None
         self._holds: dict[str, int] = {}
+
+    def name_first(self, uri: str) -> None:
+        """How a LoadWorld names the world the simulation started with (``gazelle sim`` sets it: the file it
+        read, or ``empty.sdf``); a load of ``uri`` then takes that world again, without reading anything."""
+        self.first = LoadedWorld(self.first.name, uri, self.first.description)
+        if self.current is not None and self.current.description is self.first.description:
+            self.current = self.first
 
     # ------------------------------------------------------------------ who holds the world
     @property
@@ -135,7 +153,10 @@ class WorldSwap:
         with self._claim(f"loading world '{world.name}'"):
             for model in world.models:
                 prepare_meshes(model)  # slow work (convex decompositions) here, in the caller's thread
-            return self._sim.call(lambda: self._swap(world, uri), timeout=LOAD_TIMEOUT_SEC)
+            try:
+                return self._sim.call(lambda: self._swap(world, uri), timeout=LOAD_TIMEOUT_SEC)
+            finally:
+                release_freed_memory()
 
     def unload(self) -> None:
         """Remove the current world and every entity (thread-safe): an empty simulation, paused, its clock at
@@ -146,7 +167,10 @@ class WorldSwap:
             WorldError: (NOT_FOUND) no world is loaded.
         """
         with self._claim("unloading the world"):
-            self._sim.call(self._unload, timeout=LOAD_TIMEOUT_SEC)
+            try:
+                self._sim.call(self._unload, timeout=LOAD_TIMEOUT_SEC)
+            finally:
+                release_freed_memory()
 
     def _unload(self) -> None:
         if self.current is None:

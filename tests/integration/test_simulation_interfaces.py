@@ -128,7 +128,6 @@ def test_get_simulator_features(ros: RosClient) -> None:
         SimulatorFeatures.ENTITY_TAGS,
         SimulatorFeatures.ENTITY_BOUNDS,
         SimulatorFeatures.NAMED_POSES,
-        SimulatorFeatures.WORLD_LOADING,
         SimulatorFeatures.ENTITY_INFO_SETTING,
         SimulatorFeatures.SPAWNABLES,
     ):
