@@ -206,7 +206,11 @@ class WorldSwap:
         sim.diverged.clear()
         sim._divergence_log.clear()
         sim._rtf_window.clear()
+        generation = sim.world.generation
         sim.world = PhysicsWorld(world, visual_geoms=sim.visual_geoms)
+        # generations go on counting: what is cached against the old world's (the replay's body index, a
+        # handle's indices) must not look current in the new one
+        sim.world.generation = generation + 1
         sim.world_name = world.name
         sim.world_plugins = world.plugins
         sim.spherical_coordinates = world.spherical_coordinates

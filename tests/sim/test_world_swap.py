@@ -36,10 +36,12 @@ def test_load_replaces_the_world_and_every_entity_and_stops_the_clock(make_sim) 
     sim.step(50)
     heard: list[float] = []
     sim.add_step_listener(lambda info: heard.append(info.sim_time_sec))
+    generation = sim.world.generation
     loaded = sim.worlds.load(world_of("shelves", box("shelf_a"), box("shelf_b")), uri="file:///x/shelves.sdf")
     assert loaded.name == "shelves" and loaded.uri == "file:///x/shelves.sdf"
     assert sorted(sim.world.entities) == ["shelf_a", "shelf_b"]
     assert sim.world_name == "shelves"
+    assert sim.world.generation > generation  # what was cached against the old world is stale in the new
     assert sim.world.time == 0.0 and sim.iterations == 0 and sim.paused  # the standard's STOPPED
     assert sim.worlds.current is not None and sim.worlds.current.name == "shelves"
     sim.step(10)
