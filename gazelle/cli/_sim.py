@@ -15,7 +15,7 @@ from typing import Any
 from ..description import Model, ModelLoadError, World, load
 from ..sim import ReplayRecorder, start_signal_watchdog
 from ..worlds import default_world
-from ._world_file import find_world_file
+from ._world_file import INSTALLED_WORLDS, find_world_file
 
 GIL_SWITCH_INTERVAL_SEC = 0.0002
 SHUTDOWN_DEADLINE_SEC = 4.5
@@ -86,6 +86,15 @@ def with_named_poses(world: World, files: tuple[Path, ...]) -> World:
     return dataclasses.replace(world, named_poses=tuple(places))
 
 
+def _name_worlds(sim: Any, path: Path | None) -> None:
+    """The first LoadWorld is the world this server starts with: a LoadWorld of its URI (``file://`` and the
+    file's real path, or ``empty.sdf`` for the embedded default) takes it again without reading anything, and
+    the installed worlds are loadable by their bare names (as ``gazelle sim empty.sdf`` finds them)."""
+    sim.worlds.installed = {name: default_world for name in INSTALLED_WORLDS}
+    found = None if path is None else find_world_file(path)
+    sim.worlds.name_first(INSTALLED_WORLDS[0] if found is None else f"file://{found.resolve()}")
+
+
 PAUSED_NOTE = (
     "; PAUSED: time stands still until the viewer's play button, /unpause_physics or "
     "/gazelle/set_simulation_state runs it (gz sim starts paused without -r, gzserver with -u)"
@@ -137,6 +146,7 @@ def run_sim(
     discovery = choose_discovery_range(ros_discovery)
     sim = Simulation(world, rtf=rtf, seed=seed)  # its log lines (plugins, decompositions) go to stderr as they are
     sim.paused = paused
+    _name_worlds(sim, path)
     # rclpy prints our records itself once the bridge is up
     for h in list(logging.getLogger().handlers):
         logging.getLogger().removeHandler(h)

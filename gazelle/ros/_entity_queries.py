@@ -21,7 +21,6 @@ from simulation_interfaces.srv import (
     SetEntityState,
 )
 
-from .._errors import SimError
 from ..description import (
     BoundedWorker,
     BoundExceeded,

@@ -91,7 +91,7 @@ from ..description import (
     load_string,
 )
 from ..physics import WORLD_FRAMES, Entity, ErrorKind, WorldError, pose_out_of_range
-from ..sim import SpawnRequest
+from ..sim import SpawnRequest, WorldBusy
 from ._convert import from_pose_msg
 from ._entity_bounds import EntityBoundsService
 from ._entity_info import EntityInfoSetter
@@ -101,6 +101,7 @@ from ._replies import guarded_service, serve, serve_action, with_warnings
 from ._si_results import OK, _attempt, _finite, _Refused, _result
 from ._spawnables import SpawnablesService
 from ._stepping import SteppingService
+from ._world_services import WorldServices
 
 if TYPE_CHECKING:
     from ._bridge import SimulationNode
@@ -134,7 +135,7 @@ FEATURES = (
 )
 """What this class serves (the entity filters' tags and boxes included); each part adds its own."""
 
-PARTS = (EntityInfoSetter, EntityBoundsService, NamedPosesService, SpawnablesService)
+PARTS = (EntityInfoSetter, EntityBoundsService, NamedPosesService, SpawnablesService, WorldServices)
 """The parts of the standard served by classes of their own (each registers its services on the node)."""
 
 _NAMESPACE_RE = re.compile(r"^/?([A-Za-z_][A-Za-z0-9_]*)(/[A-Za-z_][A-Za-z0-9_]*)*/?$")
@@ -226,13 +227,16 @@ class SimulationInterfaces(EntityQueries):
         return res
 
     def _state(self) -> int:
+        if self.sim.worlds.current is None:
+            return SimulationState.STATE_NO_WORLD
         if self.sim.paused:
             return SimulationState.STATE_STOPPED if self.sim.iterations == 0 else SimulationState.STATE_PAUSED
         return SimulationState.STATE_PLAYING
 
     def get_simulation_state(self, req: Any, res: GetSimulationState.Response) -> Any:
-        """GetSimulationState: playing, paused or stopped."""
-        res.state.state = self.sim.call(self._state)
+        """GetSimulationState: playing, paused or stopped; no world, or loading one (said without waiting for it)."""
+        loading = self.sim.worlds.loading
+        res.state.state = SimulationState.STATE_LOADING_WORLD if loading else self.sim.call(self._state)
         res.result = _result(OK)
         return res
 
@@ -244,8 +248,8 @@ class SimulationInterfaces(EntityQueries):
         if target in (S.STATE_QUITTING, S.STATE_NO_WORLD, S.STATE_LOADING_WORLD):
             res.result = _result(
                 SetSimulationState.Response.INCORRECT_TRANSITION,
-                f"transition to state {target} is not supported: gazelle always has its world loaded, "
-                "and the server quits on Ctrl-C / SIGTERM only",
+                f"transition to state {target} is not supported: worlds are loaded and unloaded with "
+                "LoadWorld and UnloadWorld, and the server quits on Ctrl-C / SIGTERM only",
             )
             return res
         if target not in names:
@@ -254,6 +258,8 @@ class SimulationInterfaces(EntityQueries):
 
         def do() -> int:
             current = self._state()
+            if current == S.STATE_NO_WORLD:
+                raise WorldError(ErrorKind.INCORRECT_STATE, "no world is loaded: LoadWorld first")
             if current == target:
                 return current
             if target == S.STATE_PLAYING:
@@ -336,13 +342,17 @@ class SimulationInterfaces(EntityQueries):
         subscriptions had received when the request came takes effect from the first step (``_inbound``)."""
         try:
             self._check_steps(req.steps)
-            self.node.take_inbound()
-            done = 0
-            while done < req.steps:
-                taken = self._step_chunk(min(STEP_CHUNK, req.steps - done))
-                if taken == 0:
-                    raise self._not_paused(done, req.steps)
-                done += taken
+            with self.sim.worlds.stepping("a StepSimulation call"):
+                self.node.take_inbound()
+                done = 0
+                while done < req.steps:
+                    taken = self._step_chunk(min(STEP_CHUNK, req.steps - done))
+                    if taken == 0:
+                        raise self._not_paused(done, req.steps)
+                    done += taken
+        except WorldBusy as err:
+            res.result = _result(Result.RESULT_INCORRECT_STATE, str(err))
+            return res
         except _Refused as err:
             res.result = _result(err.code, str(err))
             return res
@@ -360,10 +370,15 @@ class SimulationInterfaces(EntityQueries):
         result = SimulateSteps.Result()
         try:
             self._check_steps(steps)
-        except _Refused as err:
-            result.result = _result(err.code, str(err))
+            with self.sim.worlds.stepping("a SimulateSteps goal"):  # no LoadWorld while the goal runs
+                return self._run_goal(goal_handle, steps, result)
+        except (_Refused, WorldBusy) as err:
+            result.result = _result(getattr(err, "code", Result.RESULT_INCORRECT_STATE), str(err))
             goal_handle.abort()
             return result
+
+    def _run_goal(self, goal_handle: Any, steps: int, result: Any) -> Any:
+        """The steps of one accepted SimulateSteps goal (see :meth:`_simulate_steps`)."""
         self.node.take_inbound()  # as StepSimulation: what came before the goal acts from its first step
         done = 0
         last_feedback = 0.0

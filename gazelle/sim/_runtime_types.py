@@ -1,11 +1,13 @@
-"""The runtime's small value types: what a spawn asks for, a listener of the steps, a measured real-time factor."""
+"""The runtime's small value types: what a spawn asks for, a listener of the steps, a measured real-time factor,
+the loaded world and a load refused because the world is busy."""
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from ..description import Model, Pose
+from .._errors import SimError
+from ..description import Model, Pose, World
 from ..systems import RateGate, UpdateInfo
 
 
@@ -38,3 +40,18 @@ class StepListener:
     fn: Callable[[UpdateInfo], None]
     rate_hz: float = 0.0
     gate: RateGate = field(default_factory=RateGate)
+
+
+class WorldBusy(SimError):
+    """A load or unload refused because another load is under way, or a client is stepping the world on
+    request; or a step on request refused because a load is under way. The message says which."""
+
+
+@dataclass(frozen=True)
+class LoadedWorld:
+    """The world the simulation runs: its name, the URI a LoadWorld names it by again (empty for a world that
+    came as a string) and its description."""
+
+    name: str
+    uri: str
+    description: World

@@ -46,6 +46,7 @@ from ..systems import (
 )
 from ._runtime_types import RtfSample, StepListener
 from ._spawning import SpawningMixin
+from ._world_swap import WorldSwap
 
 T = TypeVar("T")
 
@@ -60,7 +61,8 @@ _log = logging.getLogger("gazelle")
 
 class Simulation(SpawningMixin):
     """A world plus systems, stepped on its own thread (or by hand, in lock-step); its entities are added and
-    removed by :class:`~._spawning.SpawningMixin`'s methods (``spawn``, ``spawn_many``, ``delete``)."""
+    removed by :class:`~._spawning.SpawningMixin`'s methods (``spawn``, ``spawn_many``, ``delete``), and its
+    world replaced at run time by its :class:`~._world_swap.WorldSwap` (``worlds``)."""
 
     def __init__(
         self,
@@ -85,6 +87,7 @@ class Simulation(SpawningMixin):
                 as Gazebo without ``--seed``: fresh entropy, runs with noise differ.
         """
         self.seed = seed
+        asked_rtf = rtf
         self._noise_places: weakref.WeakKeyDictionary[System, tuple[str, str]] = weakref.WeakKeyDictionary()
         """Each noisy system's place (entity, name), from which its stream is seeded (see :meth:`reseed`)."""
         if rtf is not None and (not math.isfinite(rtf) or rtf < 0):
@@ -134,6 +137,8 @@ class Simulation(SpawningMixin):
         for problem in audit_world(World(name=world.name, plugins=world.plugins)):
             _log.warning(problem.format())
         self._add_world_models(list(world.models))
+        self.worlds = WorldSwap(self, world, asked_rtf)
+        """The loaded world, and the one way to replace it at run time (``load``, ``unload``)."""
 
     def _seed_noise(self, system: System, entity: str, name: str) -> None:
         """Seed ``system``'s noise from the simulation's seed and its place (stable across processes and

@@ -72,6 +72,9 @@ class SpawningMixin:
     _divergence_log: dict[str, tuple[int, float]]
 
     if TYPE_CHECKING:  # Simulation's, which this half calls
+        from ._world_swap import WorldSwap
+
+        worlds: WorldSwap
 
         def call(self, fn: Callable[[], T], timeout: float | None = 10.0) -> T: ...
 
@@ -210,6 +213,8 @@ class SpawningMixin:
     ) -> Entity:
         """Stage the model, configure its systems, commit: the one way an entity comes into the world.
         ``X_WM``, when given, is where its model frame goes (else ``pose`` composed with the file's own)."""
+        if spawned:
+            self._require_world()
         placed = X_WM if X_WM is not None else pose * model.pose
         entity = self.world.stage(model, name=name, X_WM=placed, namespace=namespace, spawned=spawned)
         try:
@@ -224,6 +229,13 @@ class SpawningMixin:
             raise
         self._attach(entity, systems)
         return entity
+
+    def _require_world(self) -> None:
+        """Refuse a spawn while no world is loaded (after an unload: see :mod:`._world_swap`)."""
+        if self.worlds.current is None:
+            raise WorldError(
+                ErrorKind.INCORRECT_STATE, "no world is loaded (it was unloaded): load one before spawning entities"
+            )
 
     def add_entity_placed(
         self, model: Model, name: str, X_WM: Pose, namespace: str = "", *, spawned: bool = True
@@ -311,6 +323,10 @@ class SpawningMixin:
         allowed, each staged and its plugins configured, then all committed together. A model whose plugins fail
         to configure is left out alone; if the combined build fails, each is added on its own, so one bad model
         never takes the others with it. Returns, per request, the entity or the error."""
+        try:
+            self._require_world()
+        except WorldError as err:
+            return [err] * len(requests)
         taken = set(self.world.entities)
         names: list[str] = []
         for r in requests:

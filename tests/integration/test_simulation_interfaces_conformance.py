@@ -37,7 +37,6 @@ pytestmark = pytest.mark.ros
 OK = Result.RESULT_OK
 NS = "/gazelle/"
 F = SimulatorFeatures
-WORLDS_SKIP = pytest.mark.skip(reason="world services land in branch worlds")
 
 SERVICES = {
     "get_simulator_features": srv.GetSimulatorFeatures,
@@ -245,7 +244,6 @@ def test_every_service_of_the_standard_is_advertised(ros: RosClient) -> None:
     assert ActionClient(node, SimulateSteps, NS + "simulate_steps").wait_for_server(timeout_sec=15)
 
 
-@WORLDS_SKIP
 def test_the_world_services_are_advertised(ros: RosClient) -> None:
     names = {NS + n for n in WORLD_SERVICES}
     wait_for(lambda: names <= {n for n, _ in ros.node.get_service_names_and_types()}, 15, "the world services")
@@ -511,20 +509,17 @@ def test_get_spawnables(ros: RosClient, server: Proc) -> None:
 
 
 # ---------------------------------------------------------------------- worlds (last: UnloadWorld empties the simulation)
-@WORLDS_SKIP
 def test_get_available_worlds(ros: RosClient, server: Proc) -> None:
     res = call(ros, "get_available_worlds")
     assert code(res) == OK
     assert any(w.world_resource.uri.endswith("conformance.sdf") for w in res.worlds)
 
 
-@WORLDS_SKIP
 def test_get_current_world(ros: RosClient) -> None:
     res = call(ros, "get_current_world")
     assert code(res) == OK and res.world.name == "conformance"
 
 
-@WORLDS_SKIP
 def test_load_world_codes(ros: RosClient, server: Proc) -> None:
     R = srv.LoadWorld.Response
     unparsable = call(ros, "load_world", resource_string="<sdf version='1.9'><world name='w'><model>")
@@ -545,7 +540,6 @@ def test_load_world_codes(ros: RosClient, server: Proc) -> None:
     assert code(call(ros, "load_world", uri=uri)) == OK
 
 
-@WORLDS_SKIP
 def test_unload_world_codes(ros: RosClient, server: Proc) -> None:
     assert code(call(ros, "unload_world")) == OK
     assert code(call(ros, "get_current_world")) == srv.GetCurrentWorld.Response.NO_WORLD_LOADED

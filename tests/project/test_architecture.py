@@ -531,8 +531,20 @@ IMPORT_CIRCLES_TO_UNDO = {
     # type-only: the handles and servo plans name the world that makes them (a protocol would narrow the public
     # PerGeneration's type); to be removed when the physics package is given one
     ("gazelle/physics/_handles.py", "gazelle/physics/_servo_plan.py", "gazelle/physics/_world.py"),
-    # SimulationNode and the simulation_interfaces node are being reworked (issue 53, another helper's part)
-    ("gazelle/ros/_bridge.py", "gazelle/ros/_scene_publisher.py", "gazelle/ros/_simulation_interfaces.py"),
+    # SimulationNode and the simulation_interfaces node are being reworked (issue 53): the parts of the standard
+    # served by classes of their own name the node that builds them (type-only)
+    (
+        "gazelle/ros/_bridge.py",
+        "gazelle/ros/_entity_bounds.py",
+        "gazelle/ros/_entity_info.py",
+        "gazelle/ros/_named_poses.py",
+        "gazelle/ros/_scene_publisher.py",
+        "gazelle/ros/_simulation_interfaces.py",
+        "gazelle/ros/_spawnables.py",
+        "gazelle/ros/_world_services.py",
+    ),
+    # the world swap is a part of Simulation and names it (type-only, and one constant); goes with SpawningMixin
+    ("gazelle/sim/_simulation.py", "gazelle/sim/_spawning.py", "gazelle/sim/_world_swap.py"),
     # type-only: move_group's context names the scene monitor, pipeline and execution manager it holds, and each
     # of them is given the context (MoveIt's MoveGroupContext holds them the same way); to be removed when the
     # parts take a protocol of what they use instead of the context's class
