@@ -43,6 +43,8 @@ from ._settle import _stat_fields
 
 _REPORT = pytest.StashKey[dict[str, pytest.TestReport]]()
 _ARTIFACTS = pytest.StashKey[tuple[Path, int]]()
+_DOMAINS = pytest.StashKey[tuple[int, ...]]()
+"""The ROS domains this run's tests may use (``--gazelle-domains``, else ``GAZELLE_ROS_DOMAINS``, else 10-100)."""
 _SIM = pytest.StashKey[Any]()
 """The test's simulation (its server's warnings go into a failing test's report)."""
 _MODULE_BAGS = pytest.StashKey[tuple[Path, list[int]]]()
@@ -66,6 +68,14 @@ def pytest_addoption(parser: pytest.Parser) -> None:
         "--gazelle-artifacts-dir", default=None, help="where artifacts go (default: gazelle-artifacts/ in the rootdir)"
     )
     group.addoption(
+        "--gazelle-domains",
+        default=None,
+        metavar="IDS",
+        help="the ROS domain ids tests may use, e.g. 20-29 or 20,22,25-27 (default: $GAZELLE_ROS_DOMAINS, else "
+        "10-100); "
+        "each test holds one no other process on the machine holds",
+    )
+    group.addoption(
         "--gazelle-strict",
         action="store_true",
         default=False,
@@ -75,12 +85,21 @@ def pytest_addoption(parser: pytest.Parser) -> None:
 
 
 def pytest_configure(config: pytest.Config) -> None:
-    """Declare the ``gazelle`` marker, so ``--strict-markers`` accepts it, and give the process's Fast DDS
-    writers their test settings before any participant exists (see ``_dds_profile``: Fast DDS reads them at
-    the process's first participant, and a test node made after another rclpy node of the session
-    otherwise waited 3 s for the acknowledgements of each step after a publish)."""
+    """Declare the ``gazelle`` marker, so ``--strict-markers`` accepts it; check the domains the user gave; and
+    give the process's Fast DDS writers their test settings before any participant exists (see
+    ``_dds_profile``: Fast DDS reads them at the process's first participant, and a test node made after
+    another rclpy node of the session otherwise waited 3 s for the acknowledgements of each step after a
+    publish)."""
     from ._dds_profile import writer_profile
+    from ._domain import DOMAINS_VAR, domains_from_environment, parse_domains
 
+    given = config.getoption("--gazelle-domains")
+    try:
+        config.stash[_DOMAINS] = (
+            parse_domains(given, "--gazelle-domains") if given is not None else domains_from_environment()
+        )
+    except ValueError as err:
+        raise pytest.UsageError(str(err).replace(DOMAINS_VAR, f"${DOMAINS_VAR}")) from None
     os.environ.update(writer_profile())
     config.addinivalue_line(
         "markers",
@@ -215,7 +234,7 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
     subprocesses) runs on that domain. At the end the server stops, a process the test left running fails the
     test (and is killed), and a failing test keeps its bag, replay page and server log."""
     try:
-        from ._domain import environ_applied, reserve_domain
+        from ._domain import environ_applied
         from ._sim import Sim
     except ImportError as err:  # ROS 2's Python packages are not in this environment
         pytest.fail(f"gazelle_sim needs ROS 2 (rclpy) in this environment: {err}", pytrace=False)
@@ -234,7 +253,7 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
 
     if mode != "none":
         folder.mkdir(parents=True, exist_ok=True)
-    domain = reserve_domain()
+    domain = _reserve(request.config)
     token = uuid.uuid4().hex
     env = {**os.environ, TOKEN_VAR: token}
     sim = None
@@ -312,6 +331,17 @@ def _say_warnings(unsaid: list[str], strict: bool, failed: bool) -> None:
             warnings.warn(GazelleWarning(f"the server warned: {w}"), stacklevel=1)
 
 
+def _reserve(config: pytest.Config) -> Any:
+    """A domain of the run's (see ``--gazelle-domains``) that no other process on the machine holds; the test
+    fails, in one line, when every one is held."""
+    from ._domain import reserve_domain
+
+    try:
+        return reserve_domain(domains=config.stash[_DOMAINS])
+    except RuntimeError as err:
+        pytest.fail(str(err), pytrace=False)
+
+
 def _start_sim(
     sim_class: Any,
     fixture: str,
@@ -354,7 +384,6 @@ def gazelle_sim_module(request: pytest.FixtureRequest) -> Iterator[Any]:
     Unless ``--gazelle-artifacts=none``, the module's bag is recorded and its server keeps a replay of
     the run since the last reset: a failing test gets both (see ``gazelle_shared_sim``)."""
     try:
-        from ._domain import reserve_domain
         from ._sim import Sim
     except ImportError as err:
         pytest.fail(f"gazelle_sim_module needs ROS 2 (rclpy) in this environment: {err}", pytrace=False)
@@ -367,7 +396,7 @@ def gazelle_sim_module(request: pytest.FixtureRequest) -> Iterator[Any]:
         shutil.rmtree(live)
     if mode != "none":
         live.mkdir(parents=True)
-    domain = reserve_domain()
+    domain = _reserve(request.config)
     sim = None
     try:
         bag = (live / "bag0", record) if mode != "none" else None

@@ -146,3 +146,47 @@ def test_spawn_gives_a_params_file_to_the_robots_controller_manager(tmp_path: Pa
     finally:
         sim.close()
         domain.release()
+
+
+DOMAIN_TEST = """
+import os
+
+
+def test_on_the_given_domain(gazelle_sim):
+    assert gazelle_sim.domain_id == int(os.environ["EXPECTED_DOMAIN"]) == int(os.environ["ROS_DOMAIN_ID"])
+    gazelle_sim.run_for(0.1)
+"""
+
+
+def test_the_plugin_keeps_to_the_domains_the_user_gives(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """``--gazelle-domains`` and ``GAZELLE_ROS_DOMAINS`` (before: a hard-coded 10-100, whatever the user said);
+    a bad range is one usage line, and a range whose every domain is held fails the test in one line."""
+    import socket
+
+    from tests.testing.test_domain import _free_run
+
+    (tmp_path / "test_domain_given.py").write_text(DOMAIN_TEST)
+    d = _free_run(2)
+    monkeypatch.setenv("EXPECTED_DOMAIN", str(d + 1))
+    out, mark = inner_pytest(
+        ["test_domain_given.py", "--gazelle-artifacts=none", "--gazelle-domains", str(d + 1)], tmp_path
+    )
+    assert out.returncode == 0, out.stdout[-3000:]
+    monkeypatch.setenv("GAZELLE_ROS_DOMAINS", f"{d}-{d}")
+    monkeypatch.setenv("EXPECTED_DOMAIN", str(d))
+    out, mark = inner_pytest(["test_domain_given.py", "--gazelle-artifacts=none"], tmp_path)
+    assert out.returncode == 0, out.stdout[-3000:]
+    # every domain of the range held (here by a bound port, as domain_coordinator holds one): one line
+    held = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    held.bind(("127.0.0.1", 32768 + d))
+    try:
+        out, mark = inner_pytest(["test_domain_given.py", "--gazelle-artifacts=none"], tmp_path)
+    finally:
+        held.close()
+    assert out.returncode == 1 and f"no free ROS domain id in {d}..{d}" in out.stdout, out.stdout[-3000:]
+    assert "Traceback" not in out.stdout
+    out, mark = inner_pytest(["test_domain_given.py", "--gazelle-domains", "20-x"], tmp_path)
+    assert out.returncode == 4, out.stdout[-2000:] + out.stderr[-2000:]
+    assert "--gazelle-domains: '20-x' is not a domain id or a range such as 20-29" in out.stderr, out.stderr[-2000:]
+    assert "Traceback" not in out.stderr
+    assert survivors(mark) == []
