@@ -116,6 +116,10 @@ def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo[None]) ->
     item.stash.setdefault(_REPORT, {})[report.when] = report
     if report.failed:
         _one_line_sim_error(item, call, report)
+    if report.when == "teardown" and _ARTIFACTS in item.stash and not _any_failed(item):
+        folder = item.stash[_ARTIFACTS][0]
+        if item.config.getoption("--gazelle-artifacts") == "all" and folder.is_dir():
+            report.sections.append((_KEPT_SECTION, f"artifacts (bag, replay.html, server log): {folder}"))
     if report.failed and _ARTIFACTS in item.stash:
         folder, seed = item.stash[_ARTIFACTS]
         mode = item.config.getoption("--gazelle-artifacts")
@@ -125,6 +129,32 @@ def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo[None]) ->
         if said:
             report.sections.append(("gazelle: the server's warnings", "\n".join(said)))
     return report
+
+
+_KEPT_SECTION = "gazelle: artifacts kept"
+
+
+def _any_failed(item: pytest.Item) -> bool:
+    return any(r.failed for r in item.stash.get(_REPORT, {}).values())
+
+
+def pytest_runtest_logreport(report: pytest.TestReport) -> None:
+    """Note where a passing test's artifacts went (``--gazelle-artifacts=all``), for the run's summary (also
+    under xdist: the workers' reports come here with their sections)."""
+    for name, text in report.sections:
+        if name == _KEPT_SECTION:
+            _kept_list.append((report.nodeid, text))
+
+
+_kept_list: list[tuple[str, str]] = []
+
+
+def pytest_terminal_summary(terminalreporter: Any) -> None:
+    """``--gazelle-artifacts=all``: where each passing test's artifacts are (a failing one says it in its report)."""
+    if _kept_list:
+        terminalreporter.write_sep("-", "gazelle: artifacts of passing tests")
+        for nodeid, text in _kept_list:
+            terminalreporter.write_line(f"{nodeid}: {text}")
 
 
 def _server_warnings(item: pytest.Item) -> list[str]:

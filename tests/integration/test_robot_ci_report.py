@@ -160,7 +160,8 @@ def test_on_the_given_domain(gazelle_sim):
 
 def test_the_plugin_keeps_to_the_domains_the_user_gives(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """``--gazelle-domains`` and ``GAZELLE_ROS_DOMAINS`` (before: a hard-coded 10-100, whatever the user said);
-    a bad range is one usage line, and a range whose every domain is held fails the test in one line."""
+    a bad range is one usage line, and a range whose every domain is held fails the test in one line. With
+    ``--gazelle-artifacts=all`` the run's summary says where a passing test's artifacts went."""
     import socket
 
     from tests.testing.test_domain import _free_run
@@ -169,9 +170,16 @@ def test_the_plugin_keeps_to_the_domains_the_user_gives(tmp_path: Path, monkeypa
     d = _free_run(2)
     monkeypatch.setenv("EXPECTED_DOMAIN", str(d + 1))
     out, mark = inner_pytest(
-        ["test_domain_given.py", "--gazelle-artifacts=none", "--gazelle-domains", str(d + 1)], tmp_path
+        ["test_domain_given.py", "--gazelle-artifacts=all", "--gazelle-domains", str(d + 1)], tmp_path
     )
     assert out.returncode == 0, out.stdout[-3000:]
+    # (issue 50 item 10) a passing test kept its artifacts, and the run says where
+    (kept,) = (tmp_path / "artifacts").iterdir()
+    assert "gazelle: artifacts of passing tests" in out.stdout, out.stdout[-3000:]
+    assert (
+        f"test_domain_given.py::test_on_the_given_domain: artifacts (bag, replay.html, server log): {kept}"
+        in out.stdout
+    )
     monkeypatch.setenv("GAZELLE_ROS_DOMAINS", f"{d}-{d}")
     monkeypatch.setenv("EXPECTED_DOMAIN", str(d))
     out, mark = inner_pytest(["test_domain_given.py", "--gazelle-artifacts=none"], tmp_path)
