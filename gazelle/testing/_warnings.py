@@ -11,15 +11,17 @@ from __future__ import annotations
 import re
 from typing import Protocol
 
+from .._errors import SimError
+
 __all__ = ["GazelleWarning", "client_warnings", "server_warning", "spawn_failure"]
 
 _LOGGED = re.compile(r"^\[(WARN|WARNING|ERROR|FATAL)\] (?:\[[0-9.]+\] )?\[([^\]]*)\]: (.*)$")
 _REFUSAL = re.compile(r"^(?:Spawn service failed: )?(?:SpawnEntity: Failure - )?")
 
 
-class GazelleWarning(UserWarning):
+class GazelleWarning(SimError, UserWarning):
     """A warning of the simulation about what the test set up (pytest lists it under the test; ``strict``
-    makes it a failure)."""
+    makes it a failure). A :class:`SimError`, gazelle's one root, of the built-in kind ``UserWarning``."""
 
 
 class _Output(Protocol):
