@@ -175,20 +175,37 @@ def _topic_hint(node: Node, topic: str) -> str:
     return f"{who} publishes {name} (latched) but sent nothing yet; is its description parameter empty?"
 
 
+def _is_xacro(p: Path, text: str) -> bool:
+    """Whether a file is xacro (by its suffix or its markup)."""
+    from ..description import xacro_markup
+
+    return p.name.endswith(".xacro") or xacro_markup(text) is not None
+
+
 def _xml_from_file(path: str, xacro_args: dict[str, str] | None = None) -> str:
     """The entity XML of a file the user named: xacro (by suffix or markup) is expanded here, in the
-    user's own process and bounded in time and memory, so the server only ever receives plain XML."""
-    from ..description import DiagnosticSink, ModelLoadError, ResourceResolver, expand_xacro_bounded, xacro_markup
+    user's own process and bounded in time and memory, so the server only ever receives plain XML (the
+    expanded elements carry their file and line); any other file is sent as it is."""
+    from ..description import DiagnosticSink, ModelLoadError, ResourceResolver, expand_xacro_bounded
 
     p = Path(path)
     text = p.read_text(encoding="utf-8")
-    if not p.name.endswith(".xacro") and xacro_markup(text) is None:
+    if not _is_xacro(p, text):
         return text
     sink = DiagnosticSink()
     out = expand_xacro_bounded(text, source=str(p), args=xacro_args or {}, sink=sink, resolver=ResourceResolver())
     if out is None:
         raise ModelLoadError(sink.items)
     return out
+
+
+def with_file_named(message: str, args: argparse.Namespace) -> str:
+    """The server's reply with the file's name where it says ``<spawn_entity:NAME>`` (the label of XML it got as
+    a string): for a plain file sent as it is, whose lines are the file's (a refused spawn said
+    ``<spawn_entity:bot>:19`` where the user's file is ``robot.urdf:19``); xacro output names its files itself."""
+    if not getattr(args, "plain_file", False) or args.package_to_model:
+        return message
+    return message.replace(f"<spawn_entity:{args.entity or 'entity'}>", str(args.file))
 
 
 _PARAMETERS = re.compile(r"<parameters>\s*([^<]*?)\s*</parameters>")
@@ -316,6 +333,7 @@ def main(argv: list[str]) -> int:
         print(f"[INFO] [spawn_entity]: Loading entity XML from file {args.file}", file=sys.stderr)
         try:
             file_xml = _xml_from_file(args.file, dict(a.split(":=", 1) for a in args.xacro_args))
+            args.plain_file = not _is_xacro(Path(args.file), Path(args.file).read_text(encoding="utf-8"))
             file_xml = with_parameters_text(file_xml, Path(args.file).resolve().parent)
         except FileNotFoundError:
             return _fail(None, f"Error: specified file {args.file} does not exist")
@@ -431,8 +449,8 @@ def _run(
     if res is None:
         return _fail(node, f"Service {service} did not answer within {max(timeout, 1.0):g} s")
     if not res.success:
-        return _fail(node, f"Spawn service failed: {res.status_message}")
-    log.info(f"Spawn status: {res.status_message}")
+        return _fail(node, f"Spawn service failed: {with_file_named(res.status_message, args)}")
+    log.info(f"Spawn status: {with_file_named(res.status_message, args)}")
     if args.params_files and _give_params_files(node, executor, args, timeout):
         return 1
     if args.unpause:

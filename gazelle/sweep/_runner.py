@@ -459,7 +459,7 @@ def sweep(
     about = {
         "scenario": f"{path}::{name}",
         "params": {n: list(v) for n, v in params},
-        "seeds": [min(seeds), max(seeds), len(seeds)],
+        "seeds": list(seeds),  # as given, in order (was [min, max, count]: --seeds 1,4,9 read as [1, 9, 3])
         "runs": len(specs),
         "from": begin,
         "python": sys.version.split()[0],

@@ -6,7 +6,8 @@ build a simulation themselves (outside pytest, or with other scopes):
 
 * :class:`Sim`: a ``gazelle sim`` process on a private domain, paused, stepped by the test in sim time;
 * :class:`RosTestNode`: the test's rclpy node with waits that time out;
-* :func:`reserve_domain`: a ROS_DOMAIN_ID no other process on the machine holds.
+* :func:`reserve_domain`: a ROS_DOMAIN_ID no other process on the machine holds;
+* :class:`GazelleWarning`: the server's warning about what a test set up (``strict`` makes it a failure).
 
 This layer sits beside ``gazelle.cli``: it starts gazelle's commands as processes and talks to them over
 ROS, and imports rclpy only when a fixture is used.
@@ -17,6 +18,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from ._domain import DomainReservation, environ_applied, reserve_domain
+from ._warnings import GazelleWarning
 
 if TYPE_CHECKING:
     from ._ros_node import MessageLog, RosTestNode, TestTimeout
@@ -47,6 +49,7 @@ def __getattr__(name: str) -> Any:
 __all__ = [
     "ChildProcess",
     "DomainReservation",
+    "GazelleWarning",
     "InProcessWorld",
     "MessageLog",
     "RosTestNode",

@@ -15,6 +15,10 @@ when the process ends, however it ends (a killed run never leaves a domain taken
   link (as root, the plugin once created a planted link's target) nor an error out of the reservation.
 
 A port someone else holds, or a lock file that is taken or odd, means the next domain is tried.
+
+The domains tried are 10-100, or the user's: ``--gazelle-domains`` of the pytest plugin, else the
+environment variable :data:`DOMAINS_VAR` (``20-29``, ``20,22,25-27``, ``42``), for a team with a range of its own
+(the rest of the machine's domains kept for its robots, or for launch_testing's coordinator).
 """
 
 from __future__ import annotations
@@ -25,11 +29,15 @@ import os
 import socket
 import stat
 import tempfile
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator, Mapping, Sequence
 
 FIRST, LAST = 10, 100
 """Domains handed out. Fast DDS maps a domain to UDP ports 7400 + 250 * id and up, and Linux's ephemeral
 ports start at 32768: ids up to 101 stay below them (ROS 2's own guidance for Linux)."""
+MAX_DOMAIN = 232
+"""The largest domain id Fast DDS takes (its ports stay below 65536); ids above 101 reach Linux's ephemeral ports."""
+DOMAINS_VAR = "GAZELLE_ROS_DOMAINS"
+"""The environment variable with the domains tests may use (see :func:`parse_domains`)."""
 PORT_BASE = 32768
 """Domain ``id`` is held by binding TCP port ``PORT_BASE + id`` on 127.0.0.1 (domain_coordinator's base)."""
 
@@ -52,13 +60,47 @@ class DomainReservation:
             self._lock_fd = None
 
 
-def reserve_domain(preferred: int | None = None) -> DomainReservation:
-    """The first free domain in [FIRST, LAST], starting at ``preferred`` (default: one picked from the
-    process id, so concurrent runs rarely contend for the same one)."""
-    span = LAST - FIRST + 1
-    start = preferred if preferred is not None else FIRST + os.getpid() % span
+def parse_domains(text: str, what: str = DOMAINS_VAR) -> tuple[int, ...]:
+    """The domain ids of ``text``: comma-separated ids and ``first-last`` ranges (``20-29``, ``20,22,25-27``),
+    each in 0..:data:`MAX_DOMAIN`, in order and each once.
+
+    Raises:
+        ValueError: one line naming ``what`` and the part that is not an id or a range.
+    """
+    out: list[int] = []
+    for part in text.replace(" ", "").split(","):
+        first, dash, last = part.partition("-")
+        if not first.isdigit() or (dash and not last.isdigit()):
+            raise ValueError(f"{what}: {part!r} is not a domain id or a range such as 20-29 (got {text!r})")
+        lo, hi = int(first), int(last) if dash else int(first)
+        if not 0 <= lo <= hi <= MAX_DOMAIN:
+            raise ValueError(f"{what}: {part!r} is not within 0-{MAX_DOMAIN}, first to last (got {text!r})")
+        out.extend(range(lo, hi + 1))
+    return tuple(dict.fromkeys(out))
+
+
+def domains_from_environment() -> tuple[int, ...]:
+    """The domains of :data:`DOMAINS_VAR`, else FIRST..LAST."""
+    text = os.environ.get(DOMAINS_VAR, "").strip()
+    return parse_domains(text) if text else tuple(range(FIRST, LAST + 1))
+
+
+def reserve_domain(preferred: int | None = None, domains: Sequence[int] | None = None) -> DomainReservation:
+    """The first free domain of ``domains`` (default: :func:`domains_from_environment`, the user's range or
+    10..100), starting at ``preferred`` if it is one of them (default: one picked from the process id, so
+    concurrent runs rarely contend for the same one).
+
+    Raises:
+        RuntimeError: every one of them is held (the message names the range and how to give another).
+        ValueError: :data:`DOMAINS_VAR` is not a list of ids and ranges.
+    """
+    pool = tuple(domains) if domains is not None else domains_from_environment()
+    if not pool:
+        raise ValueError("reserve_domain: no domains to choose from")
+    span = len(pool)
+    start = pool.index(preferred) if preferred in pool else os.getpid() % span
     for k in range(span):
-        domain = FIRST + (start - FIRST + k) % span
+        domain = pool[(start + k) % span]
         port = _bind_port(domain)
         if port is None:
             continue
@@ -67,7 +109,11 @@ def reserve_domain(preferred: int | None = None) -> DomainReservation:
             port.close()
             continue
         return DomainReservation(domain, port, lock_fd)
-    raise RuntimeError(f"no free ROS domain id in {FIRST}..{LAST}: {span} runs hold one each")
+    shown = f"{pool[0]}..{pool[-1]}" if pool == tuple(range(pool[0], pool[-1] + 1)) else ",".join(map(str, pool))
+    raise RuntimeError(
+        f"no free ROS domain id in {shown}: each is held by a run or another process "
+        f"(give more with --gazelle-domains or {DOMAINS_VAR})"
+    )
 
 
 def _bind_port(domain: int) -> socket.socket | None:

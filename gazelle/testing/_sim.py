@@ -13,6 +13,7 @@ import subprocess
 import sys
 import threading
 import time
+import warnings
 from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -22,6 +23,7 @@ from ._dds_profile import without_writer_profile
 from ._domain import environ_applied
 from ._ros_node import RosTestNode, TestTimeout
 from ._settle import Settler
+from ._warnings import GazelleWarning, client_warnings, server_warning, spawn_failure
 
 __all__ = ["ChildProcess", "Sim", "SimError", "SimFailed"]
 
@@ -86,6 +88,11 @@ class ChildProcess:
         with self._cond:
             return "\n".join(self.lines)
 
+    def lines_from(self, start: int) -> list[str]:
+        """The output lines from the ``start``-th on (a copy)."""
+        with self._cond:
+            return self.lines[start:]
+
     def tail(self, n: int = 20) -> str:
         with self._cond:
             return "\n".join(self.lines[-n:])
@@ -131,6 +138,17 @@ class ChildProcess:
         with contextlib.suppress(subprocess.TimeoutExpired):
             self.popen.wait(5)
         return self.popen.returncode
+
+
+def _sent_as_it_is(file: Path) -> bool:
+    """Whether ``gazelle spawn -file`` sends the file's text as it is (its lines the file's): not xacro, which it
+    expands (the expanded elements name their files and lines themselves)."""
+    from ..description import xacro_markup
+
+    try:
+        return not file.name.endswith(".xacro") and xacro_markup(file.read_text(encoding="utf-8")) is None
+    except (OSError, UnicodeDecodeError):
+        return False
 
 
 def gazelle_command(*args: str) -> list[str]:
@@ -190,6 +208,8 @@ class Sim:
         settle_timeout: after each chunk of stepped time, wait up to this many wall seconds until the
             processes the test started (:meth:`run`, :meth:`launch`) are idle (lockstep, see
             ``_settle``); 0 steps without waiting for them.
+        strict: a warning of the server about a spawn (:meth:`spawn`) is a :class:`SimError`, not a
+            :class:`GazelleWarning`.
 
     Raises:
         SimError: the server did not start (its output's end is in the message).
@@ -209,6 +229,7 @@ class Sim:
         server_args: Sequence[str] = (),
         replay: tuple[str | os.PathLike[str], Sequence[str]] | None = None,
         settle_timeout: float = 10.0,
+        strict: bool = False,
     ) -> None:
         """Start a ``gazelle sim`` server (headless) on ``domain_id`` and the test's node, and return once the
         server's StepSimulation service is reachable (the arguments: see the class docstring)."""
@@ -216,6 +237,13 @@ class Sim:
         self._settler = Settler(settle_timeout)
         self.seed = seed
         self.paused = paused
+        self.strict = strict
+        self.warnings: list[str] = []
+        """The server's warnings about what the test spawned since the last reset ("spawning NAME from FILE: ...")."""
+        self._warnings_from = 0
+        self._sources: dict[str, str] = {}
+        """The server's label of a spawn's XML -> the plain file it came from (see :meth:`_named`)."""
+        """The server's first output line that :meth:`server_warnings` reads (its first, then each reset's)."""
         self.env = {
             **without_writer_profile(dict(env if env is not None else os.environ)),
             "ROS_DOMAIN_ID": str(domain_id),
@@ -294,24 +322,32 @@ class Sim:
         pose: Sequence[float] = (0.0, 0.0, 0.0),
         yaw: float = 0.0,
         args: Mapping[str, str] | None = None,
+        params_file: str | os.PathLike[str] | Sequence[str | os.PathLike[str]] | None = None,
         timeout: float = 60.0,
-    ) -> None:
+    ) -> list[str]:
         """Spawn a robot from a file as ``gazelle spawn -file`` (and gazebo_ros's ``spawn_entity.py``) does, and
-        return once the server has it.
+        return once the server has it, with what the server warned about it.
 
         Args:
             file: a URDF, xacro or SDF file; meshes and ros2_control ``<parameters>`` are resolved from the
-                file's package (``package://``, ``$(find ...)``), as a launch file's would be.
+                file's package (``package://``, ``$(find ...)``) or its folder, as a launch file's would be.
             name: the entity's name, unique in the world.
             namespace: the robot's ROS namespace (its topics, its controller manager), as ``-robot_namespace``.
             pose: (x, y, z) in metres, in the world frame.
             yaw: rotation about z in radians.
             args: xacro arguments (``{"use_gazebo": "true"}`` is ``--arg use_gazebo:=true``).
+            params_file: a controllers' parameters file (or several) for the robot's controller manager, as
+                ``gazelle spawn ... --ros-args --params-file FILE``.
             timeout: wall seconds for the spawn to be done.
 
+        Returns:
+            The server's warnings about this spawn (a plugin it does not know, with its "did you mean", a
+            mesh it cannot find, a parameter nothing reads), one line each; each is also a
+            :class:`GazelleWarning` (pytest lists them), and with ``strict`` a :class:`SimError`.
+
         Raises:
-            SimError: the spawn was refused or failed; the message holds the server's reason (file:line
-                for a bad description), and the world is as it was.
+            SimError: the spawn was refused or failed (one line: the server's reason, file:line for a bad
+                description; the world is as it was), or the server warned about it and ``strict`` is on.
         """
         x, y, z = (list(pose) + [0.0, 0.0, 0.0])[:3]
         argv = ["spawn", "-file", str(file), "-entity", name, "-x", f"{x}", "-y", f"{y}", "-z", f"{z}", "-Y", f"{yaw}"]
@@ -319,9 +355,47 @@ class Sim:
             argv += ["-robot_namespace", namespace]
         for k, v in (args or {}).items():
             argv += ["--arg", f"{k}:={v}"]
+        files = [params_file] if isinstance(params_file, (str, os.PathLike)) else list(params_file or ())
+        if files:
+            argv += ["--ros-args", *[a for f in files for a in ("--params-file", str(f))]]
+        if _sent_as_it_is(Path(file)):
+            self._sources[f"<spawn_entity:{name}>"] = str(file)
+        start = len(self.server.lines_from(0))
         child = self._child(f"gazelle spawn {name}", gazelle_command(*argv))
         if child.wait(timeout) != 0:
-            raise SimFailed(f"spawning {name} from {file} failed:\n{child.tail()}")
+            raise SimFailed(f"spawning {name} from {file} was refused: {spawn_failure(child)}")
+        found = self._spawn_warnings(name, start) + client_warnings(child)
+        self.warnings.extend(f"spawning {name} from {file}: {w}" for w in found)
+        if found and self.strict:
+            raise SimFailed(f"spawning {name} from {file}: the server warned (strict): " + " | ".join(found))
+        for w in found:
+            warnings.warn(GazelleWarning(f"spawning {name} from {file}: {w}"), stacklevel=2)
+        return found
+
+    def _spawn_warnings(self, name: str, start: int, timeout: float = 5.0) -> list[str]:
+        """The server's warnings between output line ``start`` and its line saying it spawned ``name`` (it logs its
+        warnings about an entity before that line; the line is waited for, the output being read on a thread)."""
+        done = re.compile(rf"Successfully spawned entity \[{re.escape(name)}\]")
+        deadline = time.monotonic() + timeout
+        while True:
+            lines = self.server.lines_from(start)
+            end = next((i for i, line in enumerate(lines) if done.search(line)), None)
+            if end is not None or time.monotonic() > deadline:
+                return [self._named(w) for line in lines[:end] if (w := server_warning(line)) is not None]
+            time.sleep(0.02)  # another process's output, read by its thread: nothing to wait on here
+
+    def server_warnings(self) -> list[str]:
+        """Every warning and error the server printed since it started (loading the world) or was last reset, one
+        line each."""
+        lines = self.server.lines_from(self._warnings_from)
+        return [self._named(w) for line in lines if (w := server_warning(line)) is not None]
+
+    def _named(self, warning: str) -> str:
+        """A server's warning with the file's name where it names the XML of a spawn from a plain file
+        (``<spawn_entity:bot>:23`` is the user's ``robot.urdf:23``: the file went as it is, lines and all)."""
+        for label, file in self._sources.items():
+            warning = warning.replace(label, file)
+        return warning
 
     def launch(
         self, package_or_path: str | os.PathLike[str], file: str | None = None, **arguments: Any
@@ -388,8 +462,6 @@ class Sim:
         for topic in self.ros.wait_for_acks(min(ACK_TIMEOUT, wall_timeout)):
             if topic not in self._unacked:
                 self._unacked.add(topic)
-                import warnings
-
                 warnings.warn(
                     f"gazelle: what the test published on {topic} was not acknowledged by all its subscribers "
                     f"within {ACK_TIMEOUT:g} s of wall time; the world steps on",
@@ -466,8 +538,6 @@ class Sim:
         run, their replies sent), so that a node the machine delays does not fall behind the world."""
         busy = self._settler.wait(self._lockstep_nodes())
         if busy:
-            import warnings
-
             names = ", ".join(sorted({f"{name} (pid {pid})" for pid, name in busy}))
             warnings.warn(
                 f"gazelle: {names} stayed busy for {self._settler.timeout:g} s of wall time after a step; "
@@ -537,6 +607,8 @@ class Sim:
         for child in self.children[self._kept :]:
             child.stop()
         del self.children[self._kept :]
+        self._warnings_from = len(self.server.lines_from(0))
+        self.warnings.clear()
         req = ResetSimulation.Request()
         req.scope = ResetSimulation.Request.SCOPE_ALL
         reply = self.ros.call("/gazelle/reset_simulation", ResetSimulation, req, timeout=wall_timeout)

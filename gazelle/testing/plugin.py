@@ -43,6 +43,10 @@ from ._settle import _stat_fields
 
 _REPORT = pytest.StashKey[dict[str, pytest.TestReport]]()
 _ARTIFACTS = pytest.StashKey[tuple[Path, int]]()
+_DOMAINS = pytest.StashKey[tuple[int, ...]]()
+"""The ROS domains this run's tests may use (``--gazelle-domains``, else ``GAZELLE_ROS_DOMAINS``, else 10-100)."""
+_SIM = pytest.StashKey[Any]()
+"""The test's simulation (its server's warnings go into a failing test's report)."""
 _MODULE_BAGS = pytest.StashKey[tuple[Path, list[int]]]()
 """A module's shared server: the folder of its live recording and how many bags it has handed out."""
 TOKEN_VAR = "GAZELLE_TEST_TOKEN"
@@ -63,19 +67,44 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     group.addoption(
         "--gazelle-artifacts-dir", default=None, help="where artifacts go (default: gazelle-artifacts/ in the rootdir)"
     )
+    group.addoption(
+        "--gazelle-domains",
+        default=None,
+        metavar="IDS",
+        help="the ROS domain ids tests may use, e.g. 20-29 or 20,22,25-27 (default: $GAZELLE_ROS_DOMAINS, else "
+        "10-100); "
+        "each test holds one no other process on the machine holds",
+    )
+    group.addoption(
+        "--gazelle-strict",
+        action="store_true",
+        default=False,
+        help="a warning of the server about the test's set-up (an unknown plugin, a missing mesh) fails the test, "
+        "as @pytest.mark.gazelle(strict=True) does",
+    )
 
 
 def pytest_configure(config: pytest.Config) -> None:
-    """Declare the ``gazelle`` marker, so ``--strict-markers`` accepts it, and give the process's Fast DDS
-    writers their test settings before any participant exists (see ``_dds_profile``: Fast DDS reads them at
-    the process's first participant, and a test node made after another rclpy node of the session
-    otherwise waited 3 s for the acknowledgements of each step after a publish)."""
+    """Declare the ``gazelle`` marker, so ``--strict-markers`` accepts it; check the domains the user gave; and
+    give the process's Fast DDS writers their test settings before any participant exists (see
+    ``_dds_profile``: Fast DDS reads them at the process's first participant, and a test node made after
+    another rclpy node of the session otherwise waited 3 s for the acknowledgements of each step after a
+    publish)."""
     from ._dds_profile import writer_profile
+    from ._domain import DOMAINS_VAR, domains_from_environment, parse_domains
 
+    given = config.getoption("--gazelle-domains")
+    try:
+        config.stash[_DOMAINS] = (
+            parse_domains(given, "--gazelle-domains") if given is not None else domains_from_environment()
+        )
+    except ValueError as err:
+        raise pytest.UsageError(str(err).replace(DOMAINS_VAR, f"${DOMAINS_VAR}")) from None
     os.environ.update(writer_profile())
     config.addinivalue_line(
         "markers",
-        "gazelle(world=None, record=(), paused=True, rtf=None, start_timeout=60): configure the gazelle_sim fixture",
+        "gazelle(world=None, record=(), paused=True, rtf=None, start_timeout=60, lockstep=True, strict=False): "
+        "configure the gazelle_sim fixture",
     )
 
 
@@ -85,12 +114,75 @@ def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo[None]) ->
     report its seed (how to run it again the same way) and where its artifacts are."""
     report = yield
     item.stash.setdefault(_REPORT, {})[report.when] = report
+    if report.failed:
+        _one_line_sim_error(item, call, report)
+    if report.when == "teardown" and _ARTIFACTS in item.stash and not _any_failed(item):
+        folder = item.stash[_ARTIFACTS][0]
+        if item.config.getoption("--gazelle-artifacts") == "all" and folder.is_dir():
+            report.sections.append((_KEPT_SECTION, f"artifacts (bag, replay.html, server log): {folder}"))
     if report.failed and _ARTIFACTS in item.stash:
         folder, seed = item.stash[_ARTIFACTS]
         mode = item.config.getoption("--gazelle-artifacts")
         kept = f"; artifacts (bag, replay.html, server log): {folder}" if mode != "none" else ""
         report.sections.append(("gazelle", f"seed {seed} (rerun with --gazelle-seed {seed}){kept}"))
+        said = _server_warnings(item)
+        if said:
+            report.sections.append(("gazelle: the server's warnings", "\n".join(said)))
     return report
+
+
+_KEPT_SECTION = "gazelle: artifacts kept"
+
+
+def _any_failed(item: pytest.Item) -> bool:
+    return any(r.failed for r in item.stash.get(_REPORT, {}).values())
+
+
+def pytest_runtest_logreport(report: pytest.TestReport) -> None:
+    """Note where a passing test's artifacts went (``--gazelle-artifacts=all``), for the run's summary (also
+    under xdist: the workers' reports come here with their sections)."""
+    for name, text in report.sections:
+        if name == _KEPT_SECTION:
+            _kept_list.append((report.nodeid, text))
+
+
+_kept_list: list[tuple[str, str]] = []
+
+
+def pytest_terminal_summary(terminalreporter: Any) -> None:
+    """``--gazelle-artifacts=all``: where each passing test's artifacts are (a failing one says it in its report)."""
+    if _kept_list:
+        terminalreporter.write_sep("-", "gazelle: artifacts of passing tests")
+        for nodeid, text in _kept_list:
+            terminalreporter.write_line(f"{nodeid}: {text}")
+
+
+def _server_warnings(item: pytest.Item) -> list[str]:
+    """What the test's server warned since the test started (its world, what the test spawned), each once."""
+    sim = item.stash.get(_SIM, None)
+    if sim is None or not sim.is_open:
+        return []
+    return list(dict.fromkeys(sim.server_warnings()))
+
+
+def _one_line_sim_error(item: pytest.Item, call: pytest.CallInfo[None], report: pytest.TestReport) -> None:
+    """A :class:`~gazelle.testing.SimError` (a refused spawn, a server that died) or
+    :class:`~gazelle.testing.TestTimeout` (a wait that ran out) reported as the test's line and the error's
+    message, not as a traceback through the harness."""
+    import sys
+
+    harness = [getattr(sys.modules.get(f"gazelle.testing.{m}"), c, None) for m, c in _HARNESS_ERRORS]
+    kinds = tuple(k for k in harness if isinstance(k, type))
+    excinfo = call.excinfo
+    if not kinds or excinfo is None or not isinstance(excinfo.value, kinds):
+        return
+    where = [e for e in excinfo.traceback if Path(str(e.path)) == Path(item.path)]
+    line = f"{item.path}:{where[-1].lineno + 1}: " if where else ""
+    report.longrepr = f"{line}{type(excinfo.value).__name__}: {excinfo.value}"
+
+
+_HARNESS_ERRORS = (("_sim", "SimFailed"), ("_ros_node", "TestTimeout"))
+"""The harness's own failures (module, class), reported in one line (see :func:`_one_line_sim_error`)."""
 
 
 def _safe(nodeid: str) -> str:
@@ -172,14 +264,14 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
     subprocesses) runs on that domain. At the end the server stops, a process the test left running fails the
     test (and is killed), and a failing test keeps its bag, replay page and server log."""
     try:
-        from ._domain import environ_applied, reserve_domain
+        from ._domain import environ_applied
         from ._sim import Sim
     except ImportError as err:  # ROS 2's Python packages are not in this environment
         pytest.fail(f"gazelle_sim needs ROS 2 (rclpy) in this environment: {err}", pytrace=False)
     options = _marker_options(request)
     record = list(options.pop("record", ()))
     options.pop("seed", None)
-    unknown = set(options) - {"world", "paused", "rtf", "start_timeout", "lockstep"}
+    unknown = set(options) - {"world", "paused", "rtf", "start_timeout", "lockstep", "strict"}
     if unknown:
         pytest.fail(f"@pytest.mark.gazelle: unknown option(s) {', '.join(sorted(unknown))}", pytrace=False)
     config = request.config
@@ -191,7 +283,7 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
 
     if mode != "none":
         folder.mkdir(parents=True, exist_ok=True)
-    domain = reserve_domain()
+    domain = _reserve(request.config)
     token = uuid.uuid4().hex
     env = {**os.environ, TOKEN_VAR: token}
     sim = None
@@ -207,13 +299,16 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
             rtf=options.get("rtf"),
             env=env,
             start_timeout=float(options.get("start_timeout", 60.0)),
+            strict=_strict(config, options),
         )
+        request.node.stash[_SIM] = sim
         # what the test itself starts (rclpy's default context, a subprocess) is on this domain too
         test_env = {"ROS_DOMAIN_ID": str(domain.domain_id), "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}
         with environ_applied({**test_env, TOKEN_VAR: token}):
             yield sim
     finally:
         own: frozenset[int] = frozenset()
+        unsaid = _unsaid_warnings(sim)
         if sim is not None:
             own = sim.process_groups()
             sim.close()
@@ -233,6 +328,48 @@ def gazelle_sim(request: pytest.FixtureRequest, gazelle_seed: int) -> Iterator[A
         if leaks:
             listed = "; ".join(f"pid {pid} ({cmd[:120]})" for pid, cmd in leaks)
             pytest.fail(f"the test left {len(leaks)} process(es) running (killed now): {listed}", pytrace=False)
+        _say_warnings(unsaid, sim is not None and sim.strict, failed)
+
+
+def _strict(config: pytest.Config, options: dict[str, Any]) -> bool:
+    """Whether the server's warnings fail the test: the marker's ``strict``, else ``--gazelle-strict``."""
+    if "strict" in options:
+        return bool(options["strict"])
+    return bool(config.getoption("--gazelle-strict"))
+
+
+def _unsaid_warnings(sim: Any) -> list[str]:
+    """The server's warnings that no spawn returned (about the world, or a spawn from a launch file)."""
+    if sim is None or not sim.is_open:
+        return []
+    return [w for w in dict.fromkeys(sim.server_warnings()) if not any(w in said for said in sim.warnings)]
+
+
+def _say_warnings(unsaid: list[str], strict: bool, failed: bool) -> None:
+    """The server's warnings no spawn said: a failure with ``strict`` (unless the test failed already: they are in
+    its report), else a :class:`~gazelle.testing.GazelleWarning` each (pytest lists them under the test)."""
+    if not unsaid:
+        return
+    if strict and not failed:
+        pytest.fail("the server warned (strict): " + " | ".join(unsaid), pytrace=False)
+    if not strict:
+        import warnings
+
+        from ._warnings import GazelleWarning
+
+        for w in unsaid:
+            warnings.warn(GazelleWarning(f"the server warned: {w}"), stacklevel=1)
+
+
+def _reserve(config: pytest.Config) -> Any:
+    """A domain of the run's (see ``--gazelle-domains``) that no other process on the machine holds; the test
+    fails, in one line, when every one is held."""
+    from ._domain import reserve_domain
+
+    try:
+        return reserve_domain(domains=config.stash[_DOMAINS])
+    except RuntimeError as err:
+        pytest.fail(str(err), pytrace=False)
 
 
 def _start_sim(
@@ -277,7 +414,6 @@ def gazelle_sim_module(request: pytest.FixtureRequest) -> Iterator[Any]:
     Unless ``--gazelle-artifacts=none``, the module's bag is recorded and its server keeps a replay of
     the run since the last reset: a failing test gets both (see ``gazelle_shared_sim``)."""
     try:
-        from ._domain import reserve_domain
         from ._sim import Sim
     except ImportError as err:
         pytest.fail(f"gazelle_sim_module needs ROS 2 (rclpy) in this environment: {err}", pytrace=False)
@@ -290,11 +426,20 @@ def gazelle_sim_module(request: pytest.FixtureRequest) -> Iterator[Any]:
         shutil.rmtree(live)
     if mode != "none":
         live.mkdir(parents=True)
-    domain = reserve_domain()
+    domain = _reserve(request.config)
     sim = None
     try:
         bag = (live / "bag0", record) if mode != "none" else None
-        sim = _start_sim(Sim, "gazelle_sim_module", domain.domain_id, options, bag, seed=int(seed or 0), paused=True)
+        sim = _start_sim(
+            Sim,
+            "gazelle_sim_module",
+            domain.domain_id,
+            options,
+            bag,
+            seed=int(seed or 0),
+            paused=True,
+            strict=_strict(request.config, options),
+        )
         request.node.stash[_MODULE_BAGS] = (live, [0])
         yield sim
     finally:
@@ -317,6 +462,7 @@ def gazelle_shared_sim(request: pytest.FixtureRequest, gazelle_sim_module: Any) 
     folder = _artifacts_base(request.config) / _safe(request.node.nodeid)
     request.node.stash[_ARTIFACTS] = (folder, sim.seed)
     sim.reset()
+    request.node.stash[_SIM] = sim
     try:
         with environ_applied({k: sim.env[k] for k in ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE")}):
             yield sim

@@ -66,7 +66,8 @@ def test_bad_spawns_fail_clearly_and_the_server_keeps_running(sim_factory, ros_c
     cli = start([*GAZELLE, "spawn", "-entity", "broken", "-file", str(bad), "-timeout", "20"], "gazelle spawn")
     assert cli.wait(60) == 1
     errors = [ln for ln in cli.lines if "[ERROR]" in ln]
-    assert len(errors) == 1 and "<spawn_entity:broken>:5: error: [JOINT_PARENT_INVALID]" in errors[0], cli.output
+    # the file's own name and line (the server got its text as it is): not <spawn_entity:broken>:5 (issue 50 item 3)
+    assert len(errors) == 1 and f"{bad}:5: error: [JOINT_PARENT_INVALID]" in errors[0], cli.output
     assert "Traceback" not in cli.output
 
     missing = start([*GAZELLE, "spawn", "-entity", "x", "-file", str(tmp_path / "nope.urdf")], "gazelle spawn")

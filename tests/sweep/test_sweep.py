@@ -248,3 +248,10 @@ def test_the_report_keeps_a_hostile_parameter_value_out_of_its_scripts(tmp_path:
     for body in re.findall(r"<script[^>]*>(.*?)</script>", page, flags=re.S)[1:]:  # [0]: plotly.js itself
         assert not re.search(r"<!--|<script|</script", body, flags=re.I)
     assert hostile not in page and "bot&lt;!--&lt;script&gt;" in page
+
+
+def test_sweep_json_lists_the_seeds_as_given(scenario: Path, tmp_path: Path) -> None:
+    """``--seeds 1,4,9`` is ``"seeds": [1, 4, 9]`` in sweep.json (issue 50 item 10: it read ``[1, 9, 3]``, its
+    min, max and count, which looks like three seeds that were never run)."""
+    sweep(f"{scenario}::slide", [], [1, 4, 9], out=tmp_path / "s", jobs=1, report=False)
+    assert json.loads((tmp_path / "s" / "sweep.json").read_text())["seeds"] == [1, 4, 9]

@@ -119,3 +119,30 @@ def test_a_domain_held_by_an_earlier_gazelle_or_domain_coordinator_is_skipped(lo
                 assert held.domain_id not in (d, d + 1)
             finally:
                 held.release()
+
+
+def test_domains_given_as_ids_and_ranges_are_the_only_ones_used(
+    lock_dir: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """``GAZELLE_ROS_DOMAINS`` and ``domains=`` (issue 50 item 6): ids and ranges, in 0..232; a taken one is skipped,
+    none outside is ever used; a bad value is one line naming the variable."""
+    from gazelle.testing._domain import parse_domains
+
+    assert parse_domains("20-22, 30,21") == (20, 21, 22, 30)
+    for bad in ("x", "5-", "30-20", "233", "-1"):
+        with pytest.raises(ValueError, match="GAZELLE_ROS_DOMAINS: "):
+            parse_domains(bad)
+    d = _free_run(2)
+    monkeypatch.setenv("GAZELLE_ROS_DOMAINS", f"{d},{d + 1}")
+    first = reserve_domain()
+    second = reserve_domain()
+    try:
+        assert {first.domain_id, second.domain_id} == {d, d + 1}
+        with pytest.raises(RuntimeError, match=f"no free ROS domain id in {d}..{d + 1}"):
+            reserve_domain()
+    finally:
+        first.release()
+        second.release()
+    explicit = reserve_domain(domains=[d + 1])
+    assert explicit.domain_id == d + 1
+    explicit.release()

@@ -99,7 +99,12 @@ def main(argv: list[str]) -> int:
     play.add_argument("--clock", nargs="?", type=float, const=40.0, default=None, help="publish /clock at HZ (40)")
     play.add_argument("--start-offset", type=float, default=0.0)
     play.add_argument("--delay", type=float, default=0.0, help="seconds to wait before playing")
-    play.add_argument("--wait", type=float, default=2.0, help="(gazelle) at most this long for subscribers to match")
+    play.add_argument(
+        "--wait",
+        type=float,
+        default=3.5,
+        help="(gazelle) at most this long for the subscribers already running to be found and matched (0: none)",
+    )
     play.add_argument("-s", "--storage", default="mcap")
     play.add_argument("--qos-profile-overrides-path", type=Path, help=OVERRIDES_HELP)
     info = sub.add_parser("info", help="Print information about a bag to the screen")
@@ -629,15 +634,27 @@ def _play(args: argparse.Namespace) -> int:
     return 0
 
 
-def _wait_for_matches(node: Any, pubs: dict[str, Any], timeout: float) -> None:
-    """Until every subscriber in the graph on a played topic has matched our publisher (or ``timeout``)."""
+MATCH_SETTLE_SEC = 0.3
+"""Once every reader in the graph is matched, how long play looks for more before it starts."""
 
-    deadline = time.monotonic() + timeout
-    settle = time.monotonic() + min(0.5, timeout)
+
+def _wait_for_matches(node: Any, pubs: dict[str, Any], timeout: float) -> None:
+    """Until the readers of the played topics are matched, at most ``timeout`` seconds: every subscriber the
+    graph lists on a played topic matched by our publisher, and none more found for :data:`MATCH_SETTLE_SEC`.
+
+    While the graph lists no subscriber at all, play waits the whole ``timeout``: a listener started before
+    play is found only once its participant answers ours, which a node with Fast DDS's defaults may do at its
+    next announcement, up to 3 s later (a fixed 0.5 s look lost the first 0.5-2.5 s of a bag, issue 50)."""
+    start = time.monotonic()
+    deadline = start + timeout
+    seen, since = -1, start
     while time.monotonic() < deadline:
         spin_once(node, timeout_sec=0.05)
+        in_graph = sum(node.count_subscribers(t) for t in pubs)
         pending = [t for t, p in pubs.items() if node.count_subscribers(t) > p.get_subscription_count()]
-        if not pending and time.monotonic() >= settle:
+        if in_graph != seen:
+            seen, since = in_graph, time.monotonic()
+        if in_graph and not pending and time.monotonic() - since >= MATCH_SETTLE_SEC:
             return
 
 
