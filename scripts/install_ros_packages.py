@@ -81,6 +81,10 @@ set({pkg}_LIBRARY_DIRS "")
 set({pkg}_DEFINITIONS "")
 set({pkg}_TARGETS "")
 set({pkg}_INTERFACES "")
+# in a colcon build (compat/python/colcon_gazelle): a compiled target that links {pkg} is not built, and says so
+if(COMMAND gazelle_unavailable_package)
+  gazelle_unavailable_package({pkg})
+endif()
 """
 
 LINT_AUTO_CONFIG = """# gazelle's stand-in (scripts/install_ros_packages.py) for ament_lint_auto, which the default
