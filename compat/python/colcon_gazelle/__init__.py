@@ -33,7 +33,7 @@ class GazelleCppTargetsAugmentation(PackageAugmentationExtensionPoint):
         super().__init__()
         satisfies_version(PackageAugmentationExtensionPoint.EXTENSION_POINT_VERSION, "^1.0")
 
-    def augment_package(self, desc, *, additional_argument_names=None) -> None:  # noqa: ANN001
+    def augment_package(self, desc, *, additional_argument_names=None) -> None:
         if desc.type not in CMAKE_TYPES or not CMAKE_FILE.is_file():
             return
         args = desc.metadata.setdefault("cmake_args", [])
