@@ -1,8 +1,9 @@
-"""ROBOTIS-GIT/turtlebot3_simulations (jazzy) unchanged, as its README says (issue 49): `colcon build
---symlink-install` of its turtlebot3_gazebo (whose CMakeLists compiles turtlebot3_drive against rclcpp and three
-gz-sim plugins: each is one line, the rest installs), then `TURTLEBOT3_MODEL=burger ros2 launch turtlebot3_gazebo
-turtlebot3_world.launch.py`. The burger sees the arena's walls and pillars on /scan, its IMU publishes, and it
-drives 1 m on /cmd_vel (TwistStamped through the package's bridge YAML) with odometry and ground truth within 2 %."""
+"""ROBOTIS-GIT/turtlebot3_simulations unchanged, as its README says (issue 49): `colcon build --symlink-install` of
+its turtlebot3_gazebo, then `TURTLEBOT3_MODEL=burger ros2 launch turtlebot3_gazebo turtlebot3_world.launch.py`;
+the jazzy branch (gz-sim, ros_gz_bridge) and the humble one (Gazebo Classic, gazebo_ros). Each CMakeLists compiles
+turtlebot3_drive against rclcpp and obstacle plugins against gz-sim or Gazebo: each is one line, the rest installs.
+The burger sees the arena's walls and pillars on /scan, its IMU publishes, and it drives 1 m on /cmd_vel
+(jazzy: a TwistStamped through the package's bridge YAML) with odometry and ground truth within 2 %."""
 
 from __future__ import annotations
 
@@ -11,7 +12,7 @@ import shutil
 
 import pytest
 from _harness import wait_for
-from geometry_msgs.msg import TwistStamped
+from geometry_msgs.msg import Twist, TwistStamped
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import Imu, LaserScan
 
@@ -23,15 +24,15 @@ pytestmark = pytest.mark.slow
 MESHES = ("bases/burger_base.stl", "sensors/lds.stl", "wheels/left_tire.stl", "wheels/right_tire.stl")
 
 
-def test_turtlebot3_jazzy_world_builds_sees_the_arena_and_drives(tmp_path, ros_client):
-    assert (DATA / "turtlebot3_simulations" / "LICENSE").is_file()
-    ws = workspace(tmp_path, "turtlebot3_simulations", ["turtlebot3_gazebo"])
+def _run(tmp_path, ros_client, repo: str, skipped: dict[str, str], stamped: bool) -> None:
+    assert (DATA / repo / "LICENSE").is_file()
+    ws = workspace(tmp_path, repo, ["turtlebot3_gazebo"])
     meshes = ws / "src" / "turtlebot3_gazebo" / "models" / "turtlebot3_common" / "meshes"
-    for mesh in MESHES:  # the STL meshes, from the shared fixture (tests/data/turtlebot3_simulations/SOURCES.md)
+    for mesh in MESHES:  # the STL meshes, from the shared fixture (tests/data/<repo>/SOURCES.md)
         (meshes / mesh).parent.mkdir(parents=True, exist_ok=True)
         shutil.copy(TB3 / "turtlebot3_gazebo" / "models" / "turtlebot3_common" / "meshes" / mesh, meshes / mesh)
     out = colcon_build(ws)
-    for target, needs in (("turtlebot3_drive", "rclcpp, tf2"), ("obstacles", "gz-sim, gz-math")):
+    for target, needs in skipped.items():
         assert f"gazelle: turtlebot3_gazebo: {target} is not built (it needs {needs}," in out, out
     scan = Topic.subscribe(ros_client, LaserScan, "/scan")
     imu = Topic.subscribe(ros_client, Imu, "/imu")
@@ -44,14 +45,25 @@ def test_turtlebot3_jazzy_world_builds_sees_the_arena_and_drives(tmp_path, ros_c
         hits = sum(1 for r in scan.latest().ranges if math.isfinite(r))
         assert hits > 300, f"{hits} of 360 rays hit"
         assert "MESH_NOT_FOUND" not in proc.output, proc.output
-        proc.wait_line("Converting [/cmd_vel] geometry_msgs/TwistStamped -> geometry_msgs/Twist", 30)
-        cmd = ros_client.node.create_publisher(TwistStamped, "/cmd_vel", 10)
+        if stamped:
+            proc.wait_line("Converting [/cmd_vel] geometry_msgs/TwistStamped -> geometry_msgs/Twist", 30)
+        cmd = ros_client.node.create_publisher(TwistStamped if stamped else Twist, "/cmd_vel", 10)
 
         def send(speed: float) -> None:
-            msg = TwistStamped()
-            msg.twist.linear.x = speed
+            msg = TwistStamped() if stamped else Twist()
+            (msg.twist if stamped else msg).linear.x = speed
             cmd.publish(msg)
 
         drive_a_metre(ros_client, "burger", send, odom, speed=0.2)
     finally:
         stop(proc)
+
+
+def test_turtlebot3_jazzy_world_builds_sees_the_arena_and_drives(tmp_path, ros_client):
+    skipped = {"turtlebot3_drive": "rclcpp, tf2", "obstacles": "gz-sim, gz-math"}
+    _run(tmp_path, ros_client, "turtlebot3_simulations", skipped, stamped=True)
+
+
+def test_turtlebot3_humble_classic_world_builds_sees_the_arena_and_drives(tmp_path, ros_client):
+    skipped = {"turtlebot3_drive": "rclcpp, tf2", "traffic_light_plugin": "gazebo", "obstacles": "gazebo"}
+    _run(tmp_path, ros_client, "turtlebot3_simulations_humble", skipped, stamped=False)
