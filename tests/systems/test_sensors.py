@@ -664,7 +664,9 @@ def test_a_camera_names_the_topics_it_publishes_images_on(caplog, make_sim):
         '<plugin name="front_camera" filename="libgazebo_ros_camera.so"><ros><namespace>/bot</namespace></ros></plugin>',
         "<topic>depth</topic>",
     )
-    rgbd = gz.replace('type="depth_camera"', 'type="rgbd_camera"').replace("<topic>depth</topic>", "<topic>rgbd</topic>")
+    rgbd = gz.replace('type="depth_camera"', 'type="rgbd_camera"').replace(
+        "<topic>depth</topic>", "<topic>rgbd</topic>"
+    )
     with caplog.at_level(logging.INFO):
         _spawn(sim, gz, "depth")
         _spawn(sim, rgbd, "rgbd")
