@@ -77,7 +77,7 @@ def main(argv: list[str]) -> int:
     except (ValueError, TypeError) as exc:
         print(str(exc), file=sys.stderr, flush=True)
         node.destroy_node()
-        rclpy.try_shutdown()
+        node.context.try_shutdown()
         return 1
     out = node.create_publisher(Twist, "cmd_vel_out", QoSProfile(depth=1))
 
@@ -88,7 +88,7 @@ def main(argv: list[str]) -> int:
         locked = [h.priority for h in locks if h.expired(t) or (h.message is not None and h.message.data)]
         return max(locked, default=0)
 
-    def on_velocity(handle: _Handle, msg: Twist) -> None:
+    def on_velocity(handle: _Handle, msg: Any) -> None:
         t = now()
         handle.stamp, handle.message = t, msg
         floor = lock_priority(t)
@@ -99,7 +99,7 @@ def main(argv: list[str]) -> int:
         if name == handle.name:
             out.publish(msg)
 
-    def on_lock(handle: _Handle, msg: Bool) -> None:
+    def on_lock(handle: _Handle, msg: Any) -> None:
         handle.stamp, handle.message = now(), msg
 
     for h in inputs:

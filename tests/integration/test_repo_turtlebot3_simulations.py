@@ -50,9 +50,12 @@ def _run(tmp_path, ros_client, repo: str, skipped: dict[str, str], stamped: bool
         cmd = ros_client.node.create_publisher(TwistStamped if stamped else Twist, "/cmd_vel", 10)
 
         def send(speed: float) -> None:
-            msg = TwistStamped() if stamped else Twist()
-            (msg.twist if stamped else msg).linear.x = speed
-            cmd.publish(msg)
+            twist = Twist()
+            twist.linear.x = speed
+            if stamped:
+                cmd.publish(TwistStamped(twist=twist))
+            else:
+                cmd.publish(twist)
 
         drive_a_metre(ros_client, "burger", send, odom, speed=0.2)
     finally:
