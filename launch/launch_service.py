@@ -21,6 +21,9 @@ SIGINT_GRACE_SEC = 3.0
 """After Ctrl-C: how long processes get to exit on SIGINT before SIGTERM."""
 SIGTERM_GRACE_SEC = 1.5
 """Then how long after SIGTERM before SIGKILL."""
+STARTUP_FATAL = "Fatal Python error: init_import_site"
+"""What CPython prints (then a traceback of importlib frames) when a signal's KeyboardInterrupt comes while it
+imports its site module: a Python child the launch stopped before it had started."""
 
 
 @dataclass
@@ -33,6 +36,7 @@ class _Running:
     popen: subprocess.Popen
     respawn: bool
     readers: list[threading.Thread] = field(default_factory=list)
+    stopped_while_starting: bool = False
 
 
 class LaunchService:
@@ -212,7 +216,14 @@ class LaunchService:
 
     def _pump(self, run: _Running, stream: Any) -> None:
         for raw in iter(stream.readline, b""):
-            output(run.name, raw.decode("utf-8", "replace").rstrip("\n"))
+            line = raw.decode("utf-8", "replace").rstrip("\n")
+            if run.stopped_while_starting:
+                continue  # the rest of CPython's start-up traceback
+            if self._shutting_down and line.startswith(STARTUP_FATAL):
+                run.stopped_while_starting = True
+                output(run.name, "interrupted while Python was starting (the launch was shutting down)")
+                continue
+            output(run.name, line)
         stream.close()
 
     def _wait(self, run: _Running) -> None:
@@ -228,7 +239,7 @@ class LaunchService:
     ) -> None:
         from .events.process import ProcessExited
 
-        if rc == 0:
+        if rc == 0 or (run is not None and run.stopped_while_starting):
             log("INFO", name, f"process has finished cleanly [pid {pid}]")
         elif self._shutting_down and rc in (-signal.SIGINT, -signal.SIGTERM, -signal.SIGKILL, 130, 143):
             log(

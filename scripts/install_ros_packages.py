@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Register gazelle's stand-ins for ROS packages that are not on PyPI (compat/ros_packages/: gazebo_ros,
 robot_state_publisher, controller_manager, ros_gz_sim, ros_gz_bridge, ros_gz_image, rviz2, joint_state_publisher, xacro,
-robot_localization (ekf_node), moveit_ros_move_group, moveit_configs_utils (its default planning pipeline configs)
-and gazelle itself (move_group); compat/python/: gazebo_ros's Python module, MoveIt's moveit_configs_utils and the
-launch_param_builder it builds on, nav2_common, ros2run, ros2pkg) in a virtualenv's ament index, so that
-get_package_share_directory, FindPackageShare and `ros2 run` find them, as an install of the real
+robot_localization (ekf_node), twist_mux, interactive_marker_twist_server, joy, teleop_twist_joy,
+moveit_ros_move_group, moveit_configs_utils (its default planning pipeline configs) and gazelle itself
+(move_group); compat/python/: gazebo_ros's Python module, MoveIt's moveit_configs_utils and the launch_param_builder
+it builds on, colcon_gazelle (C++ targets a venv cannot build), nav2_common, ros2run, ros2pkg) in a virtualenv's
+ament index, so that get_package_share_directory, FindPackageShare and `ros2 run` find them, as an install of the real
 packages would lay them out:
 
     VENV/share/ament_index/resource_index/packages/PKG
@@ -81,6 +82,10 @@ set({pkg}_LIBRARY_DIRS "")
 set({pkg}_DEFINITIONS "")
 set({pkg}_TARGETS "")
 set({pkg}_INTERFACES "")
+# in a colcon build (compat/python/colcon_gazelle): a compiled target that links {pkg} is not built, and says so
+if(COMMAND gazelle_unavailable_package)
+  gazelle_unavailable_package({pkg})
+endif()
 """
 
 LINT_AUTO_CONFIG = """# gazelle's stand-in (scripts/install_ros_packages.py) for ament_lint_auto, which the default

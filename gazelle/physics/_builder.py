@@ -193,6 +193,7 @@ def _mesh_shape(
     g: Mesh,
     piece_names: list[str],
     decomposed: list[tuple[str, int, float, str]] | None,
+    moving: bool = True,
 ) -> dict[str, Any] | None:
     """A collision mesh's geom fields: the mesh itself if convex, else its convex parts' meshes appended
     to ``piece_names`` (one geom each). None, with a warning naming it, for a mesh that cannot be found
@@ -204,7 +205,7 @@ def _mesh_shape(
         _log.warning(f"{where}collision '{col.name}': mesh '{g.uri}' could not be resolved; it is left out")
         return None
     try:
-        parts = collision_parts(g.path, g.scale)
+        parts = collision_parts(g.path, g.scale, static=not moving)
     except MeshReadError as err:
         _log.warning(f"{where}collision '{col.name}': {err}; it is left out")
         return None
@@ -278,7 +279,7 @@ def add_geom(
         mesh = _shared_mesh(spec, "collision", cone_vertices(g.radius, g.length))
         kwargs.update(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh.name)
     elif isinstance(g, Mesh):
-        shape = _mesh_shape(spec, col, g, piece_names, decomposed)
+        shape = _mesh_shape(spec, col, g, piece_names, decomposed, moving)
         if shape is None:
             return
         kwargs.update(shape)

@@ -64,6 +64,12 @@ DEFAULT_MAX_FACES = 5000
 raised: CoACD's time grows quickly with detail (TurtleBot3's 34,320-face burger_base.stl: 193 s), while
 the concave meshes that matter for contact (walls, arenas, bins) are simple."""
 
+PRISM_THICKNESS = 0.01
+"""m: how deep behind its face each triangle of a static non-convex mesh collides (see :func:`triangle_prisms`)."""
+STATIC_MAX_FACES = 20000
+"""The most triangles a static non-convex mesh without convex parts may collide as
+(``GAZELLE_STATIC_MESH_MAX_FACES``); past it the mesh collides as its hull, said at error level."""
+
 
 @dataclass(frozen=True)
 class Parts:
@@ -74,13 +80,20 @@ class Parts:
     seconds: float
     """Time spent decomposing (0 when it came from a cache)."""
     source: str
-    """"computed", "disk cache" or "memory"."""
+    """"computed", "disk cache", "memory", or "triangles" (a static mesh's :func:`triangle_prisms`)."""
 
 
 _memory: dict[str, Parts | None] = {}
 """Cache key -> the parts, or None for a convex mesh (collide as it is)."""
 _keys: dict[tuple[str, int, tuple[float, ...]], str] = {}
 """(file, its modification time, scale) -> cache key of its content."""
+_hulls: dict[str, str] = {}
+"""Cache key -> why that non-convex mesh has no convex parts (its decomposition failed, it is too large, or it
+goes on in the background)."""
+_triangles: dict[str, Parts | None] = {}
+"""Cache key -> the triangle prisms a static non-convex mesh without parts collides as (None: too many faces)."""
+_told: set[tuple[str, str]] = set()
+"""(cache key, what) already logged: each fallback is said once per process."""
 _lock = threading.Lock()
 
 
@@ -220,7 +233,95 @@ def _save_disk(path: Path, key: str, pieces: tuple[np.ndarray, ...]) -> None:
         _log.debug(f"cannot cache a convex decomposition in {path.parent}: {err}")
 
 
-def collision_parts(path: str, scale: tuple[float, float, float]) -> Parts | None:
+def triangle_prisms(
+    vertices: np.ndarray, faces: np.ndarray, thickness: float = PRISM_THICKNESS
+) -> tuple[np.ndarray, ...]:
+    """Each triangle of a mesh as a convex prism: the triangle and its copy ``thickness`` behind it (against the
+    face's normal, by the winding's right-hand rule: into a closed mesh wound outwards, below a floor facing up).
+    A static mesh collides as these where Gazebo collides its triangles; degenerate triangles are skipped."""
+    v = np.asarray(vertices, dtype=float)
+    tri = v[np.asarray(faces, dtype=np.int64)]
+    normals = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    lengths = np.linalg.norm(normals, axis=1)
+    keep = lengths > 1e-12
+    unit = normals[keep] / lengths[keep, None]
+    front = tri[keep]
+    prisms = np.concatenate((front, front - thickness * unit[:, None, :]), axis=1)
+    return tuple(prisms)
+
+
+def collision_parts(path: str, scale: tuple[float, float, float], *, static: bool = False) -> Parts | None:
+    """The convex parts the collision mesh at ``path`` (scaled) collides as, or None when it collides as it is:
+    convex, or (said once, as a warning) its convex hull because it has no parts (see :func:`_parts`).
+
+    A ``static`` mesh (of a static model) without parts collides as its triangles (:func:`triangle_prisms`), as
+    Gazebo collides a mesh: its hull would be a solid block, and a robot spawned inside a building would stand
+    in it. Past ``GAZELLE_STATIC_MESH_MAX_FACES`` faces it collides as its hull, said at error level with what
+    the user can do."""
+    parts = _parts(path, scale)
+    if parts is not None:
+        return parts
+    seen = (path, os.stat(path).st_mtime_ns, tuple(float(v) for v in scale))
+    with _lock:
+        key = _keys.get(seen)
+        why = _hulls.get(key) if key is not None else None
+    if key is None or why is None:
+        return None  # convex
+    if static:
+        return _static_triangles(key, path, scale, why)
+    _tell(
+        key,
+        "hull",
+        logging.WARNING,
+        f"collision mesh '{path}' is not convex, but {why}: it collides as its convex hull (an approximation)",
+    )
+    return None
+
+
+def _tell(key: str, what: str, level: int, message: str) -> None:
+    with _lock:
+        if (key, what) in _told:
+            return
+        _told.add((key, what))
+    _log.log(level, message)
+
+
+def _static_triangles(key: str, path: str, scale: tuple[float, float, float], why: str) -> Parts | None:
+    """The triangle prisms of a static non-convex mesh that has no convex parts, or None (its hull) past the
+    face limit; each outcome said once."""
+    with _lock:
+        if key in _triangles:
+            return _triangles[key]
+    verts, faces = _welded(*load_mesh(path))
+    verts = verts * np.asarray(scale, dtype=float)
+    limit = int(float(os.environ.get("GAZELLE_STATIC_MESH_MAX_FACES") or STATIC_MAX_FACES))
+    result: Parts | None = None
+    if len(faces) > limit:
+        _tell(
+            key,
+            "static",
+            logging.ERROR,
+            f"collision mesh '{path}' of a static model is not convex, but {why}, and its {len(faces)} faces are "
+            f"more than the {limit} it may collide as (GAZELLE_STATIC_MESH_MAX_FACES): it collides as its convex "
+            "hull, a solid block that whatever is inside it is pushed out of or stands on. Give the model a "
+            "simpler collision mesh, several convex ones or primitives, or raise GAZELLE_STATIC_MESH_MAX_FACES",
+        )
+    else:
+        result = Parts(triangle_prisms(verts, faces), 0.0, "triangles")
+        _tell(
+            key,
+            "static",
+            logging.WARNING,
+            f"collision mesh '{path}' is not convex, but {why}: the model is static, so it collides as its "
+            f"{len(result.pieces)} triangles, each a {PRISM_THICKNESS * 100:g} cm prism behind its face, as Gazebo "
+            "collides a mesh's triangles",
+        )
+    with _lock:
+        _triangles[key] = result
+    return result
+
+
+def _parts(path: str, scale: tuple[float, float, float]) -> Parts | None:
     """The convex parts of the collision mesh at ``path`` (scaled), or None when it is convex already.
 
     Raises:
@@ -367,14 +468,10 @@ def _background_loop() -> None:
 
 
 def _hull(key: str, path: str, why: str) -> None:
-    """Fall back to the convex hull for a mesh, with a warning (once per process)."""
+    """No parts for a non-convex mesh: why is kept for :func:`collision_parts`, which says what it collides as."""
     with _lock:
-        known = key in _memory
         _memory[key] = None
-    if not known:
-        _log.warning(
-            f"collision mesh '{path}' is not convex, but {why}: it collides as its convex hull (an approximation)"
-        )
+        _hulls[key] = why
     return None
 
 
@@ -421,7 +518,7 @@ def prepare(model: Model) -> None:
                 g = col.geometry
                 if isinstance(g, Mesh) and g.path is not None:
                     try:
-                        collision_parts(g.path, g.scale)
+                        collision_parts(g.path, g.scale, static=model.static)
                     except MeshReadError:
                         pass
     finally:

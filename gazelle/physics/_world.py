@@ -268,6 +268,8 @@ class PhysicsWorld(WorldState):
             if key in self._reported:
                 continue
             self._reported[key] = 1
+            if source == "triangles":  # a static mesh without parts: _convex said so when it made them
+                continue
             how = f"in {seconds:.2f} s" if source == "computed" else f"from the {source}"
             _log.info(
                 f"'{entity.name}': collision mesh {path} is not convex: it collides as {parts} convex parts "

@@ -59,6 +59,13 @@ def ekf_main(argv: list[str]) -> int:
     return main(argv)
 
 
+def twist_mux_main(argv: list[str]) -> int:
+    """twist_mux's ``twist_mux`` (compat/ros_packages/twist_mux)."""
+    from ._twist_mux import main
+
+    return main(argv)
+
+
 def arm_main(argv: list[str]) -> int:
     """``gazelle arm``: move an arm through a running move_group."""
     from ._arm_cli import arm_main as main
@@ -70,6 +77,7 @@ __all__ = [
     "InterfaceError",
     "announce_often",
     "arm_main",
+    "twist_mux_main",
     "await_signal_shutdown",
     "silence_half_made_objects",
     "RosBridge",

@@ -27,6 +27,9 @@ from rclpy.signals import SignalHandlerOptions, get_current_signal_handlers_opti
 SIGNAL_SHUTDOWN_WAIT_SEC = 2.0
 """How long to wait for rclpy's signal thread after a signal (it takes microseconds on an idle machine;
 the processes' own watchdogs end them 3 s after the signal whatever happens)."""
+TAKE_RACE_SEC = 0.5
+"""How long a RuntimeError out of a spin may wait for the signal thread to finish shutting the context down
+before it counts as a real error."""
 
 
 def await_signal_shutdown(context: Context, timeout: float = SIGNAL_SHUTDOWN_WAIT_SEC) -> bool:
@@ -61,6 +64,16 @@ def spin_until_shutdown(executor: Any, node: Node) -> None:
     except (KeyboardInterrupt, ExternalShutdownException):
         await_signal_shutdown(node.context)
     except RCLError:
+        if node.context.ok():
+            raise
+    except RuntimeError:
+        # a take from a subscription whose context the signal thread is shutting down: pybind11 cannot convert
+        # the invalid handle ("Unable to convert call argument '0' to Python object"; an image_bridge with
+        # use_sim_time, its /clock subscription, died on Ctrl-C with that traceback). With the context still up
+        # a moment later, it is a real error
+        deadline = time.monotonic() + TAKE_RACE_SEC
+        while node.context.ok() and time.monotonic() < deadline:
+            time.sleep(0.001)
         if node.context.ok():
             raise
 

@@ -545,3 +545,33 @@ def test_launch_prefix_goes_before_the_executables_its_filter_matches(prefix):
     assert filtered.returncode == 0 and "ENV hi" in text and "PLAIN -" in text, text
     alone = ros2(["launch", "demo_pkg", "two.launch.py", "--launch-prefix-filter", "echo_"], prefix)
     assert alone.returncode == 2 and "--launch-prefix must be specified" in alone.stderr, alone.stderr
+
+
+STARTING_CHILD = """
+import sys
+from launch import LaunchDescription
+from launch.actions import ExecuteProcess, TimerAction
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    slow = ExecuteProcess(cmd=[sys.executable, "-c", "print('never')"], name="starting",
+                          additional_env={{"PYTHONPATH": "{site}"}}, output="screen")
+    return LaunchDescription([slow, TimerAction(period=1.0, actions=[Node(package="no_such_pkg", executable="x")])])
+"""
+
+
+def test_a_child_interrupted_while_python_starts_is_one_line(tmp_path: Path) -> None:
+    """Issue 55 item 9: when a launch aborts, a child still importing Python's site module gets the SIGINT there
+    and Python prints `Fatal Python error: init_import_site` and a traceback of importlib frames; one line says it."""
+    site = tmp_path / "site"
+    site.mkdir()
+    # sitecustomize is imported by site at start-up: this child is inside that import when the launch aborts
+    (site / "sitecustomize.py").write_text("import time\ntime.sleep(30)\n")
+    launch_file = write(tmp_path / "starting.launch.py", STARTING_CHILD.format(site=site))
+    result = ros2(["launch", str(launch_file)])
+    out = result.stdout + result.stderr
+    assert "Package 'no_such_pkg' not found" in out, out
+    lines = [line for line in out.splitlines() if line.startswith("[starting-1] ")]
+    assert lines == ["[starting-1] interrupted while Python was starting (the launch was shutting down)"], out
+    assert "Traceback" not in out and "init_import_site" not in out, out

@@ -108,3 +108,37 @@ def test_a_ctrl_c_before_the_spin_starts_ends_robot_state_publisher_quietly() ->
     assert proc.wait(60) == 0, proc.output
     proc.wait_line("ended", 5)
     assert "Traceback" not in proc.output, proc.output
+
+
+def test_a_take_on_a_context_the_signal_shut_down_ends_the_spin_quietly() -> None:
+    """nav2_minimal_turtlebot_simulation's image_bridge (a node with use_sim_time, so a /clock subscription)
+    died on Ctrl-C with a traceback and exit 1: the executor took a message from a subscription while rclpy's
+    signal thread shut the context down, and pybind11 raised RuntimeError "Unable to convert call argument '0'
+    to Python object". That is the end Ctrl-C asked for; the same error with the context up is a real one."""
+    import os
+
+    import rclpy
+    import rclpy.context
+
+    from gazelle.ros._signals import spin_until_shutdown
+
+    context = rclpy.context.Context()
+    rclpy.init(context=context, domain_id=int(os.environ.get("ROS_DOMAIN_ID", "0")))
+    node = rclpy.create_node("take_probe", context=context)
+
+    class ShutDownMidTake:
+        def spin(self) -> None:
+            context.try_shutdown()  # what the signal thread does while the executor takes
+            raise RuntimeError("Unable to convert call argument '0' to Python object")
+
+    class Broken:
+        def spin(self) -> None:
+            raise RuntimeError("a callback's own bug")
+
+    try:
+        with pytest.raises(RuntimeError, match="a callback's own bug"):
+            spin_until_shutdown(Broken(), node)  # the context is up: a real error
+        spin_until_shutdown(ShutDownMidTake(), node)  # returns
+    finally:
+        node.destroy_node()
+        context.try_shutdown()

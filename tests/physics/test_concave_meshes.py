@@ -181,3 +181,92 @@ def test_all_of_a_models_meshes_share_one_load_budget(tmp_path: Path, monkeypatc
         assert _convex.background_done.wait_for(
             lambda: all(_convex.collision_parts(str(p), (1.0, 1.0, 1.0)) is not None for p in rings), timeout=120
         )
+
+
+def building_stl(path: Path) -> Path:
+    """A 6 m x 6 m room as one mesh: a floor slab 0.2 m thick (its top at z = 0.2) and four walls 1 m high, five
+    closed boxes in one file (an office building's shape, in small)."""
+    boxes = [
+        trimesh.creation.box(extents=(6.0, 6.0, 0.2), transform=trimesh.transformations.translation_matrix((0, 0, 0.1)))
+    ]
+    for x, y, ex, ey in ((2.9, 0, 0.2, 6.0), (-2.9, 0, 0.2, 6.0), (0, 2.9, 6.0, 0.2), (0, -2.9, 6.0, 0.2)):
+        boxes.append(
+            trimesh.creation.box(
+                extents=(ex, ey, 1.0), transform=trimesh.transformations.translation_matrix((x, y, 0.7))
+            )
+        )
+    trimesh.util.concatenate(boxes).export(path)
+    return path
+
+
+def _forget_meshes() -> None:
+    for name in ("_memory", "_keys", "_hulls", "_triangles", "_told"):
+        getattr(_convex, name, set()).clear()
+
+
+def _drive_a_metre(sim, entity_name: str) -> tuple[float, float]:
+    """(odometry's distance, ground truth's) after the seed robot drove until its odometry said 1 m."""
+    from gazelle.systems._bus import MsgType
+    from gazelle.systems._payloads import Twist
+
+    odom_ep = next(e for e in sim.bus.endpoints() if e.topic == "/odom" and e.is_publisher)
+    seen: list = []
+    odom_ep.add_sink(seen.append)
+    sim.step(200)
+    start = sim.world.entity_state(entity_name).pose.position
+    o0 = seen[-1].pose.position
+    for _ in range(200):
+        sim.bus.inject("/cmd_vel", MsgType.TWIST, Twist((0.3, 0.0, 0.0), (0.0, 0.0, 0.0)))
+        sim.step(100)
+        if math.dist(seen[-1].pose.position[:2], o0[:2]) >= 1.0:
+            break
+    sim.bus.inject("/cmd_vel", MsgType.TWIST, Twist((0.0, 0.0, 0.0), (0.0, 0.0, 0.0)))
+    sim.step(1000)
+    end = sim.world.entity_state(entity_name).pose.position
+    return math.dist(seen[-1].pose.position[:2], o0[:2]), math.dist(end[:2], start[:2])
+
+
+def test_a_robot_inside_a_static_building_without_parts_stands_on_its_floor_and_drives(
+    tmp_path: Path, monkeypatch, caplog, make_sim
+) -> None:
+    """Issue 55 item 2: a static concave mesh whose decomposition failed (cached), was too large or overran the
+    load's budget collided as its convex hull: a robot spawned inside the building ended 10 cm under the floor,
+    drifted and barely moved. Such a mesh now collides as its triangles: the seed robot stands on the floor as it
+    does on the ground plane (within 1 cm) and drives 1 m within 3 % of its odometry."""
+    from _paths import SEED_XACRO
+
+    monkeypatch.setenv("GAZELLE_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setenv("GAZELLE_DECOMPOSE_MAX_FACES", "10")  # no parts for the building (60 faces)
+    _forget_meshes()
+    stl = building_stl(tmp_path / "building.stl")
+    on_ground = make_sim()
+    on_ground.spawn(load(SEED_XACRO).model, name="bot", pose=Pose((0.0, 0.0, 0.1)))
+    on_ground.step(1500)
+    ground_z = on_ground.world.entity_state("bot").pose.position[2]
+    sim = make_sim()
+    with caplog.at_level(logging.WARNING, logger="gazelle.physics"):
+        sim.spawn(load_string(ring_model(stl), source=str(tmp_path / "b.sdf")).model, name="building")
+    sim.spawn(load(SEED_XACRO).model, name="bot", pose=Pose((-1.0, 0.0, 0.3)))
+    sim.step(1500)
+    z = sim.world.entity_state("bot").pose.position[2]
+    assert z == pytest.approx(ground_z + 0.2, abs=0.01), f"on the floor: {z:.3f} (on the ground {ground_z:.3f})"
+    assert "the model is static, so it collides as its 60 triangles" in caplog.text, caplog.text
+    by_odom, truth = _drive_a_metre(sim, "bot")
+    assert truth == pytest.approx(by_odom, rel=0.03) and by_odom >= 1.0, (by_odom, truth)
+
+
+def test_a_static_mesh_too_large_for_triangles_is_an_error_saying_what_to_do(
+    tmp_path: Path, monkeypatch, caplog, make_sim
+) -> None:
+    monkeypatch.setenv("GAZELLE_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setenv("GAZELLE_DECOMPOSE_MAX_FACES", "10")
+    monkeypatch.setenv("GAZELLE_STATIC_MESH_MAX_FACES", "50")
+    _forget_meshes()
+    stl = building_stl(tmp_path / "building.stl")
+    sim = make_sim()
+    with caplog.at_level(logging.WARNING, logger="gazelle.physics"):
+        sim.spawn(load_string(ring_model(stl), source=str(tmp_path / "b.sdf")).model, name="building")
+    errors = [r.getMessage() for r in caplog.records if r.levelno == logging.ERROR]
+    assert len(errors) == 1 and str(stl) in errors[0], caplog.text
+    assert "its 60 faces are more than the 50 it may collide as" in errors[0]
+    assert "simpler collision mesh" in errors[0] and "GAZELLE_STATIC_MESH_MAX_FACES" in errors[0]

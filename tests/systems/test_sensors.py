@@ -656,6 +656,32 @@ def test_a_gz_depth_camera_cloud_is_organised_in_its_x_forward_frame(make_sim):
     assert raw[24, 32, 12] > 100 and raw[24, 32, 13] < 60 and raw[24, 32, 14] < 60  # b, g, r bytes
 
 
+def test_a_camera_names_the_topics_it_publishes_images_on(caplog, make_sim):
+    """Issue 55 item 9: a gz depth camera (its <topic> is the depth image, no colour image) logged
+    `on [] and [/depth]`; each camera names the topics it really publishes images and clouds on."""
+    sim = make_sim()
+    gz = _camera_model("depth_camera", width=64, height=48).replace(
+        '<plugin name="front_camera" filename="libgazebo_ros_camera.so"><ros><namespace>/bot</namespace></ros></plugin>',
+        "<topic>depth</topic>",
+    )
+    rgbd = gz.replace('type="depth_camera"', 'type="rgbd_camera"').replace(
+        "<topic>depth</topic>", "<topic>rgbd</topic>"
+    )
+    with caplog.at_level(logging.INFO):
+        _spawn(sim, gz, "depth")
+        _spawn(sim, rgbd, "rgbd")
+        _spawn(sim, _camera_model(), "plain")
+    said = [r.getMessage() for r in caplog.records if "' at " in r.getMessage() or ": 64x48 at" in r.getMessage()]
+    said += [r.getMessage() for r in caplog.records if ": 320x240 at" in r.getMessage()]
+    assert any("depth_camera 'front': 64x48 at 10 Hz on [/depth] and [/depth/points] in frame" in m for m in said), said
+    assert any(
+        "rgbd_camera 'front': 64x48 at 10 Hz on [/rgbd/image] and [/rgbd/depth_image] and [/rgbd/points]" in m
+        for m in said
+    ), said
+    assert any("camera 'front': 320x240 at 10 Hz on [/bot/front/image_raw] in frame" in m for m in said), said
+    assert not any("[]" in m for m in said), said
+
+
 def test_a_camera_of_zero_pixels_is_an_error_naming_file_and_line(caplog, make_sim):
     sim = make_sim()
     with caplog.at_level(logging.ERROR):

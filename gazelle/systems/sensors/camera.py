@@ -348,11 +348,10 @@ class Camera(_SensorSystem):
             if topic:
                 self._eps[key] = ctx.bus.advertise(ctx.entity.name, topic, msg_type, depth=SENSOR_DEPTH)
         s = self.spec
+        streams = " and ".join(f"[{t}]" for t in (self.topics.image, self.topics.depth, self.topics.points) if t)
         ctx.logger.info(
-            f"{ctx.sensor.type} '{ctx.sensor.name}': {s.width}x{s.height} at {self.rate_hz:g} Hz on "
-            f"[{self.topics.image}]"
-            + (f" and [{self.topics.depth}]" if self.depth else "")
-            + f" in frame [{self.output.frame_id}]"
+            f"{ctx.sensor.type} '{ctx.sensor.name}': {s.width}x{s.height} at {self.rate_hz:g} Hz on {streams} "
+            f"in frame [{self.output.frame_id}]"
         )
 
     def _topics(self, ctx: SystemContext) -> CameraTopics:

@@ -1,0 +1,84 @@
+/**
+*      _____
+*     /  _  \
+*    / _/ \  \
+*   / / \_/   \
+*  /  \_/  _   \  ___  _    ___   ___   ____   ____   ___   _____  _   _
+*  \  / \_/ \  / /  _\| |  | __| / _ \ | ++ \ | ++ \ / _ \ |_   _|| | | |
+*   \ \_/ \_/ /  | |  | |  | ++ | |_| || ++ / | ++_/| |_| |  | |  | +-+ |
+*    \  \_/  /   | |_ | |_ | ++ |  _  || |\ \ | |   |  _  |  | |  | +-+ |
+*     \_____/    \___/|___||___||_| |_||_| \_\|_|   |_| |_|  |_|  |_| |_|
+*             ROBOTICS™
+*
+*  File: Number.h
+*  Desc: Provides a family of functions similar in form to stdlib atoi and
+*        friends, for conversion between numeric primitives and small-endian
+*        byte arrays.
+*  Auth: Iain Peet
+*
+*  Copyright (c) 2010, Clearpath Robotics, Inc.
+*  All Rights Reserved
+*
+* Redistribution and use in source and binary forms, with or without
+* modification, are permitted provided that the following conditions are met:
+*     * Redistributions of source code must retain the above copyright
+*       notice, this list of conditions and the following disclaimer.
+*     * Redistributions in binary form must reproduce the above copyright
+*       notice, this list of conditions and the following disclaimer in the
+*       documentation and/or other materials provided with the distribution.
+*     * Neither the name of Clearpath Robotics, Inc. nor the
+*       names of its contributors may be used to endorse or promote products
+*       derived from this software without specific prior written permission.
+*
+* THIS SOFTWARE IS PROVIDED BY THE COPYRIGHT HOLDERS AND CONTRIBUTORS "AS IS" AND
+* ANY EXPRESS OR IMPLIED WARRANTIES, INCLUDING, BUT NOT LIMITED TO, THE IMPLIED
+* WARRANTIES OF MERCHANTABILITY AND FITNESS FOR A PARTICULAR PURPOSE ARE
+* DISCLAIMED. IN NO EVENT SHALL CLEARPATH ROBOTICS, INC. BE LIABLE FOR ANY
+* DIRECT, INDIRECT, INCIDENTAL, SPECIAL, EXEMPLARY, OR CONSEQUENTIAL DAMAGES
+* (INCLUDING, BUT NOT LIMITED TO, PROCUREMENT OF SUBSTITUTE GOODS OR SERVICES;
+* LOSS OF USE, DATA, OR PROFITS; OR BUSINESS INTERRUPTION) HOWEVER CAUSED AND
+* ON ANY THEORY OF LIABILITY, WHETHER IN CONTRACT, STRICT LIABILITY, OR TORT
+* (INCLUDING NEGLIGENCE OR OTHERWISE) ARISING IN ANY WAY OUT OF THE USE OF THIS
+* SOFTWARE, EVEN IF ADVISED OF THE POSSIBILITY OF SUCH DAMAGE.
+*
+* Please send comments, questions, or patches to skynet@clearpathrobotics.com
+*
+*/
+
+#ifndef NUMBER_H_
+#define NUMBER_H_
+
+#include <cstdlib>
+#include <stdint.h>
+#include <iostream>
+
+namespace clearpath
+{
+
+/* Little-endian byte array to number conversion routines. */
+  void utob(void *dest, size_t dest_len, uint64_t src);
+
+  void utob(void *dest, size_t dest_len, uint32_t src);
+
+  void utob(void *dest, size_t dest_len, uint16_t src);
+
+  void itob(void *dest, size_t dest_len, int64_t src);
+
+  void itob(void *dest, size_t dest_len, int32_t src);
+
+  void itob(void *dest, size_t dest_len, int16_t src);
+
+/* void toBytes(void* dest, size_t dest_len, float src, float scale); */
+  void ftob(void *dest, size_t dest_len, double src, double scale);
+
+/* Number to little-endian byte array conversion routines
+ * Need to provide all, since size of the int param matters. */
+  uint64_t btou(void *src, size_t src_len);
+
+  int64_t btoi(void *src, size_t src_len);
+
+  double btof(void *src, size_t src_len, double scale);
+
+} // namespace clearpath
+
+#endif // NUMBER_H_
