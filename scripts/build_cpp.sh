@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# rclcpp (Jazzy) and what C++ nodes use most, built from the released sources under cpp/ against the ROS 2
+# rclcpp (Jazzy) and what C++ nodes use most (rclcpp_action, rclcpp_lifecycle, rclcpp_components), built from the released sources under cpp/ against the ROS 2
 # wheels in a virtualenv and installed into it, so a workspace's `find_package(rclcpp)` finds it there.
 #
 #   scripts/build_cpp.sh VENV_DIR build   the tier, from the cache or built (what `setup.sh --cpp` runs)
@@ -30,10 +30,13 @@ source "$REPO_ROOT/scripts/_cache.sh"
 PY="$VENV_DIR/bin/python"
 BUILD_ROOT="$REPO_ROOT/build/cpp"
 STAMP="$VENV_DIR/.gazelle_cpp.sha256"
-# In build order; the last two build side by side.
-PKGS=(statistics_msgs libstatistics_collector rclcpp rclcpp_action rclcpp_lifecycle)
+# In build order: the packages of a stage build side by side (each needs only earlier stages').
+STAGES=("statistics_msgs composition_interfaces" "libstatistics_collector class_loader" "rclcpp"
+  "rclcpp_action rclcpp_lifecycle rclcpp_components")
+# shellcheck disable=SC2206  # package names are words
+PKGS=(${STAGES[*]})
 # What a workspace finds: these get a stub until the tier is installed.
-USER_PKGS=(rclcpp rclcpp_action rclcpp_lifecycle)
+USER_PKGS=(rclcpp rclcpp_action rclcpp_lifecycle rclcpp_components)
 STUB_MARK="gazelle: built on first need"
 # Wheel packages whose version change must trigger a rebuild.
 DEP_PKGS=(ament_cmake ament_index_cpp builtin_interfaces rcl rcl_action rcl_interfaces rcl_lifecycle
@@ -75,7 +78,7 @@ write_stubs() {
     mkdir -p "$dir"
     cat >"$dir/${pkg}Config.cmake.tmp" <<STUB
 # $STUB_MARK (scripts/build_cpp.sh stubs). The first package that finds $pkg builds gazelle's C++ tier
-# (rclcpp, rclcpp_action, rclcpp_lifecycle from their released sources, against the wheels), or takes it
+# (rclcpp and friends from their released sources, against the wheels), or takes it
 # from the cache; the tier's real ${pkg}Config.cmake then replaces this file and is read in its place.
 message(STATUS "gazelle: $pkg is built once, on first need (scripts/build_cpp.sh; cached afterwards)")
 execute_process(COMMAND "$REPO_ROOT/scripts/build_cpp.sh" "$VENV_DIR" build RESULT_VARIABLE _gazelle_cpp_rc)
@@ -108,6 +111,16 @@ prepare_venv() {
   done
 }
 
+# class_loader (rclcpp_components' loader) logs through console_bridge: Debian's, as setup.sh installs its
+# build tools.
+need_console_bridge() {
+  compgen -G "/usr/lib/*/console_bridge/cmake/console_bridge-config.cmake" >/dev/null && return 0
+  local sudo=""
+  [[ $(id -u) -eq 0 ]] || sudo="sudo"
+  echo "cpp: installing Debian's libconsole-bridge-dev" >&2
+  $sudo apt-get update -qq >&2 && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq libconsole-bridge-dev >&2
+}
+
 if [[ "$MODE" == stubs ]]; then
   installed || write_stubs
   exit 0
@@ -120,6 +133,7 @@ done
 exec 9>"$VENV_DIR/.gazelle_cpp.lock"
 flock 9
 prepare_venv
+need_console_bridge
 HASH="$(compute_hash)"
 CACHE_ROOT="$CACHE_HOME/cpp"
 ENTRY="$CACHE_ROOT/$HASH-$(uname -m)"
@@ -189,10 +203,10 @@ mkdir -p "$BUILD_ROOT"
 if command -v ninja >/dev/null; then GENERATOR=(-G Ninja); BUILD_TOOL=ninja; else GENERATOR=(); BUILD_TOOL=make; fi
 JOBS="${GAZELLE_BUILD_JOBS:-$(nproc)}"
 
-# What is compiled: each package's library only (no tests, no tools). How: a unity build (a dozen of a
-# package's sources compiled as one file, so rclcpp's headers are parsed 8 times, not 90) at -O1, as the
-# interface packages are; rclcpp alone then takes ~60 s of one core instead of ~15 min.
-# Its libraries find the wheels' by RPATH $ORIGIN (they all live in VENV_DIR/lib).
+# What is compiled: each package's libraries (and rclcpp_components' containers), no tests. How: unity
+# builds (a dozen of a library's sources compiled as one file, so rclcpp's headers are parsed 8 times, not
+# 90) at -O1, as the interface packages are: rclcpp took 60-75 s on the shared 2-core machine.
+# The libraries find the wheels' by RPATH $ORIGIN (they all live in VENV_DIR/lib).
 build_pkg() {
   local pkg="$1" bdir="$BUILD_ROOT/$1" log="$BUILD_ROOT/$1/build.log" start=$SECONDS
   if [[ -f "$bdir/CMakeCache.txt" ]] &&
@@ -206,7 +220,7 @@ build_pkg() {
     cmake "${GENERATOR[@]}" -S "$REPO_ROOT/cpp/$pkg" -B "$bdir" \
       -DCMAKE_BUILD_TYPE=None -DCMAKE_C_FLAGS=-O1 -DCMAKE_CXX_FLAGS=-O1 \
       -DCMAKE_INSTALL_PREFIX="$VENV_DIR" -DCMAKE_INSTALL_RPATH='$ORIGIN' \
-      -DCMAKE_SHARED_LINKER_FLAGS=-Wl,--disable-new-dtags \
+      -DCMAKE_SHARED_LINKER_FLAGS=-Wl,--disable-new-dtags -DCMAKE_EXE_LINKER_FLAGS=-Wl,--disable-new-dtags \
       -DPython3_EXECUTABLE="$PY" -DBUILD_TESTING=OFF &&
     cmake --build "$bdir" --target install -- -j"$JOBS"
   } >>"$log" 2>&1; then
@@ -217,17 +231,18 @@ build_pkg() {
   echo "cpp: built $pkg in $((SECONDS - start))s"
 }
 
-echo "cpp: building rclcpp, rclcpp_action, rclcpp_lifecycle against the wheels (once; cached afterwards)"
+echo "cpp: building ${USER_PKGS[*]} against the wheels (once; cached afterwards)"
 build_started=$SECONDS
-for pkg in statistics_msgs libstatistics_collector rclcpp; do
-  build_pkg "$pkg" >&2 || exit 1
+for stage in "${STAGES[@]}"; do
+  pids=()
+  for pkg in $stage; do
+    build_pkg "$pkg" >&2 &
+    pids+=($!)
+  done
+  failed=0
+  for pid in "${pids[@]}"; do wait "$pid" || failed=1; done
+  ((failed == 0)) || exit 1
 done
-pids=()
-for pkg in rclcpp_action rclcpp_lifecycle; do
-  build_pkg "$pkg" >&2 &
-  pids+=($!)
-done
-for pid in "${pids[@]}"; do wait "$pid" || exit 1; done
 installed || { echo "build_cpp: the C++ tier built but is not complete in $VENV_DIR" >&2; exit 1; }
 echo "$HASH" >"$STAMP"
 echo "cpp: built the C++ tier in $((SECONDS - build_started))s"
