@@ -3,9 +3,10 @@
 # wheels in a virtualenv and installed into it, so a workspace's `find_package(rclcpp)` finds it there.
 #
 #   scripts/build_cpp.sh VENV_DIR build   the tier, from the cache or built (what `setup.sh --cpp` runs)
-#   scripts/build_cpp.sh VENV_DIR stubs   until the tier is installed: VENV_DIR/share/<pkg>/cmake/<pkg>Config.cmake
-#                                         for each package of the tier runs `build` when a package first
-#                                         finds it (a workspace's `colcon build`), then reads the real one
+#   scripts/build_cpp.sh VENV_DIR stubs   unless the tier is installed and up to date: VENV_DIR/share/<pkg>/cmake/
+#                                         <pkg>Config.cmake for each package of the tier runs `build` when a
+#                                         package first finds it (a workspace's `colcon build`), then reads
+#                                         the real one
 #
 # Built on first need only: a team that never writes C++ never pays for it (`stubs` writes four small files).
 # Cached by content outside the clone like the interface tiers (~/.cache/gazelle/cpp, scripts/_cache.sh),
@@ -122,7 +123,8 @@ need_console_bridge() {
 }
 
 if [[ "$MODE" == stubs ]]; then
-  installed || write_stubs
+  # a tier installed from other sources or for other wheels (a pull, an upgrade) is rebuilt on next need too
+  if ! installed || [[ ! -f "$STAMP" || "$(cat "$STAMP")" != "$(compute_hash)" ]]; then write_stubs; fi
   exit 0
 fi
 

@@ -146,7 +146,9 @@ def _spawn_seed_robot(ros_client, sim: Proc) -> None:
     """The seed robot spawned from robot_description (as test_square does), at rest on its wheels."""
     qos = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
     ros_client.node.create_publisher(String, "robot_description", qos).publish(String(data=xacro_to_urdf(SEED_XACRO)))
-    spawn = start([*GAZELLE, "spawn", "-entity", "simple_robot", "-topic", "robot_description", "-timeout", "30"], "spawn")
+    spawn = start(
+        [*GAZELLE, "spawn", "-entity", "simple_robot", "-topic", "robot_description", "-timeout", "30"], "spawn"
+    )
     assert spawn.wait(60) == 0, spawn.output
     assert "Subscribed to [/cmd_vel]" in sim.wait_line("Subscribed to", 10)
     wait_for(lambda: abs(ros_client.entity_state("simple_robot").state.twist.linear.z) < 1e-3, 10, "the robot at rest")
