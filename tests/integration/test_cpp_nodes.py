@@ -14,6 +14,7 @@ import math
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import threading
@@ -60,6 +61,26 @@ def ros2_run(ws: Path, package: str, executable: str, *ros_args: str) -> Proc:
     script = f"source {ACTIVATE} && source {ws}/install/setup.bash && exec ros2 run {package} {executable} {args}"
     env = {**CLEAN_ENV, "ROS_DOMAIN_ID": os.environ["ROS_DOMAIN_ID"]}
     return start(["bash", "-c", script], f"{package}/{executable}", env)
+
+
+COMPONENT_LAUNCH = """\
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='cpp_nodes', executable='component_talker_node', output='screen',
+             parameters=[{'use_sim_time': True}]),
+    ])
+"""
+
+
+def ros2_launch(ws: Path, launch_file: Path) -> Proc:
+    """`ros2 launch LAUNCH_FILE` in a shell that activated the venv and sourced the workspace."""
+    script = f"source {ACTIVATE} && source {ws}/install/setup.bash && exec ros2 launch {launch_file}"
+    env = {**CLEAN_ENV, "ROS_DOMAIN_ID": os.environ["ROS_DOMAIN_ID"]}
+    return start(["bash", "-c", script], "ros2 launch", env)
 
 
 def sim_seconds(text: str) -> float:
@@ -133,13 +154,18 @@ def test_cpp_talker_server_lifecycle_node_and_component_talk_to_rclpy_on_sim_tim
     assert near_sim_time(lifecycle[-1]), (lifecycle[-1], clocks[-1])
     assert "configured" in managed.output and "activated" in managed.output
 
-    # a component, loaded from its library by the executable rclcpp_components_register_node() made
-    loaded = ros2_run(ws, "cpp_nodes", "component_talker_node", "-p", "use_sim_time:=true")
+    # a component, loaded from its library by the executable rclcpp_components_register_node() made, started
+    # by `ros2 launch` with its parameters from the launch file
+    launch_file = ws / "component.launch.py"
+    launch_file.write_text(COMPONENT_LAUNCH)
+    loaded = ros2_launch(ws, launch_file)
     wait_for(lambda: component, 30, f"/component_chatter from the component:\n{loaded.output}")
     assert near_sim_time(component[-1]), (component[-1], clocks[-1])
 
-    for proc in (talker, server, managed, loaded):
+    for proc in (talker, server, managed):
         assert proc.interrupt() == 0, proc.output
+    assert loaded.interrupt() in (0, -signal.SIGINT, 130), loaded.output  # as ros2 launch ends on Ctrl-C
+    assert "component_talker_node-1]: process has finished cleanly" in loaded.output, loaded.output
 
 
 def _spawn_seed_robot(ros_client, sim: Proc) -> None:
