@@ -15,15 +15,21 @@ from pathlib import Path
 
 ANNOUNCE_PROFILE = Path(__file__).with_name("fastdds_announce.xml")
 PROFILE_VARIABLES = ("FASTRTPS_DEFAULT_PROFILES_FILE", "FASTDDS_DEFAULT_PROFILES_FILE")
+TEST_PROFILE_VARIABLE = "GAZELLE_TEST_WRITER_PROFILE"
+"""Names the profile a gazelle test process set for its own writers (gazelle/testing/_dds_profile.py)."""
 FAST_DDS = ("rmw_fastrtps_cpp", "rmw_fastrtps_dynamic_cpp")
 
 
 def announce_often() -> bool:
     """Before this process's first DDS participant: have its participants announce every 0.1 s.
 
-    Nothing changes when the user gave Fast DDS a profile of their own or chose another RMW.
+    Nothing changes when the user gave Fast DDS a profile of their own or chose another RMW. The profile a
+    gazelle test process gives its own writers (named in ``GAZELLE_TEST_WRITER_PROFILE`` by the pytest plugin)
+    is not the user's: a server or node the test starts inherits it, and still announces often (without it, a
+    ``ros2`` verb the test ran found the server at its 3 s announcement, or missed it).
     Returns whether the profile was set (the children this process starts inherit it)."""
-    if any(os.environ.get(v) for v in PROFILE_VARIABLES):
+    inherited = os.environ.get(TEST_PROFILE_VARIABLE)
+    if any(os.environ.get(v) and os.environ.get(v) != inherited for v in PROFILE_VARIABLES):
         return False
     if os.environ.get("RMW_IMPLEMENTATION", FAST_DDS[0]) not in FAST_DDS or not ANNOUNCE_PROFILE.is_file():
         return False

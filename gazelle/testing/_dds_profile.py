@@ -26,7 +26,9 @@ def writer_profile() -> dict[str, str]:
         return {}
     if os.environ.get("RMW_IMPLEMENTATION", "rmw_fastrtps_cpp") not in ("rmw_fastrtps_cpp", "rmw_fastrtps_dynamic_cpp"):
         return {}
-    return {"FASTRTPS_DEFAULT_PROFILES_FILE": str(WRITER_PROFILE)}
+    # the second variable tells gazelle's own processes the test starts that this profile is not the user's
+    # (gazelle/ros/_dds.py's announce_often then still gives them theirs)
+    return {"FASTRTPS_DEFAULT_PROFILES_FILE": str(WRITER_PROFILE), "GAZELLE_TEST_WRITER_PROFILE": str(WRITER_PROFILE)}
 
 
 def without_writer_profile(env: dict[str, str]) -> dict[str, str]:
