@@ -33,6 +33,7 @@ if TYPE_CHECKING:
     from ._params import section_matches as section_matches
     from ._params import valid_controller_name as valid_controller_name
     from ._params import yaml_problem as yaml_problem
+    from ._scaled_trajectory import ScaledJointTrajectoryController as ScaledJointTrajectoryController
     from ._tolerances import SegmentTolerances as SegmentTolerances
     from ._tolerances import Tolerance as Tolerance
     from ._tolerances import segment_tolerances as segment_tolerances
@@ -61,6 +62,7 @@ __all__ = [
     "JointTrajectoryController",
     "ParamsError",
     "ParamsFile",
+    "ScaledJointTrajectoryController",
     "SimHardware",
     "Tolerance",
     "TrajectoryGoal",

@@ -52,6 +52,7 @@ from ._params import (
     parse_params,
     valid_controller_name,
 )
+from ._scaled_trajectory import ScaledJointTrajectoryController
 from ._trajectory import JointTrajectoryController
 
 CONTROLLER_TYPES: dict[str, type[Controller]] = {
@@ -60,6 +61,7 @@ CONTROLLER_TYPES: dict[str, type[Controller]] = {
         JointStateBroadcaster,
         DiffDriveController,
         JointTrajectoryController,
+        ScaledJointTrajectoryController,
         ForwardCommandController,
         JointGroupPositionController,
         JointGroupVelocityController,
