@@ -207,7 +207,6 @@ class OrSubstitution(Substitution):
         return str(either).lower()
 
 
-
 class IfElseSubstitution(Substitution):
     """``if_value`` when ``condition`` is true, else ``else_value`` (launch's if_else_substitution.py, Jazzy): the
     condition evaluated as IfCondition evaluates it; at least one of the two values must be given."""
@@ -224,6 +223,7 @@ class IfElseSubstitution(Substitution):
 
         chosen = self.if_value if evaluate_condition_expression(context, self.condition) else self.else_value
         return perform_substitutions(context, chosen)
+
 
 def _operand(value: Any) -> list[Substitution]:
     """An ``EqualsSubstitution`` operand as launch takes it (launch/substitutions/equals_substitution.py): a

@@ -62,10 +62,12 @@ def test_the_ur5e_of_urs_gazebo_simulation_follows_a_trajectory_through_the_scal
         goal.trajectory.joint_names = JOINTS
         final = [0.5, -1.2, 1.0, -1.4, -0.5, 0.3]
         middle = [0.25, -1.4, 0.5, -1.5, -0.25, 0.15]
+        points = []
         for t, q in ((1.5, middle), (3.0, final)):
             point = JointTrajectoryPoint(positions=q)
             point.time_from_start.sec, point.time_from_start.nanosec = int(t), int((t % 1) * 1e9)
-            goal.trajectory.points.append(point)
+            points.append(point)
+        goal.trajectory.points = points
         accepted, result = ros.send_goal(client, goal, 60, said=lambda: "\n".join(launch.lines[-30:]))
         assert accepted
         assert result.result.error_code == FollowJointTrajectory.Result.SUCCESSFUL, result.result.error_string

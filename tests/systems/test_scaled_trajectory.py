@@ -14,7 +14,7 @@ from _sim import new_simulation
 
 from gazelle.description import load_string
 from gazelle.systems import JointTrajectory, TrajectoryPoint
-from gazelle.systems.ros2_control import ControllerManager, TrajectoryGoal, parse_params
+from gazelle.systems.ros2_control import ControllerManager, JointTrajectoryController, TrajectoryGoal, parse_params
 
 R6BOT = REAL / "ros2_control_r6bot"
 URDF = R6BOT / "_xacro_expanded" / "r6bot.urdf"
@@ -49,7 +49,9 @@ def _arm(monkeypatch, kind: str, scaling_interface: bool):
     cm.load_controller("arm")
     cm.configure_controller("arm")
     cm.switch_controller(["arm"], [])
-    return sim, cm, cm.controllers["arm"].controller
+    ctrl = cm.controllers["arm"].controller
+    assert isinstance(ctrl, JointTrajectoryController)
+    return sim, cm, ctrl
 
 
 def _goal(cm: ControllerManager) -> TrajectoryGoal:
@@ -118,7 +120,10 @@ def test_without_a_scaling_interface_it_runs_as_joint_trajectory_controller_with
     1.0, said once, and every joint of every cycle is what joint_trajectory_controller commands."""
     caplog.set_level(logging.WARNING)
     runs = {}
-    for kind in ("ur_controllers/ScaledJointTrajectoryController", "joint_trajectory_controller/JointTrajectoryController"):
+    for kind in (
+        "ur_controllers/ScaledJointTrajectoryController",
+        "joint_trajectory_controller/JointTrajectoryController",
+    ):
         sim, cm, ctrl = _arm(monkeypatch, kind, scaling_interface=False)
         sim.step(100)
         goal = _goal(cm)

@@ -50,7 +50,7 @@ class ScaledJointTrajectoryController(JointTrajectoryController):
             self.log.warning(
                 f"{self.name}: the hardware has no state interface '{name}' (speed_scaling_interface_name): the speed "
                 "scaling stays 1.0, as UR's driver reports it when nothing slows the robot (ros2_control would refuse "
-                "to activate ur_controllers' controller here; speed_scaling_interface_name: \"\" says no scaling)"
+                'to activate ur_controllers\' controller here; speed_scaling_interface_name: "" says no scaling)'
             )
         else:
             self.log.info(f"Using scaling state from the hardware from interface {name}.")
