@@ -17,6 +17,7 @@ if TYPE_CHECKING:
     from ._controller import UNCONFIGURED as UNCONFIGURED
     from ._controller import Controller as Controller
     from ._controller import GoalState as GoalState
+    from ._controller_parameters import ControllerParameters as ControllerParameters
     from ._gripper import GripperActionController as GripperActionController
     from ._gripper import GripperGoal as GripperGoal
     from ._hardware import ControlError as ControlError
@@ -56,6 +57,7 @@ __all__ = [
     "UNCONFIGURED",
     "ControlError",
     "Controller",
+    "ControllerParameters",
     "ControllerManager",
     "GripperActionController",
     "GripperGoal",
