@@ -20,6 +20,7 @@ names (there: mock_components/GenericSystem). Here the robot runs in gazelle ins
 from __future__ import annotations
 
 import os
+import signal
 import subprocess
 import sys
 import tempfile
@@ -31,7 +32,7 @@ import yaml
 from gazebo_msgs.srv import DeleteEntity
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
-from rclpy.utilities import try_shutdown
+from rclpy.utilities import ok, try_shutdown
 from std_msgs.msg import String
 
 from ..description import load_string
@@ -155,7 +156,7 @@ def main(argv: list[str] | None = None) -> int:
 
 def _cleanup(node: Ros2ControlNode) -> None:
     """Delete the robot (when the server is still there) and stop the server this node started."""
-    if not rclpy.ok():
+    if not ok():
         rclpy.init()
     try:
         deleter = Node("ros2_control_node_standin_exit")
@@ -167,7 +168,7 @@ def _cleanup(node: Ros2ControlNode) -> None:
     finally:
         try_shutdown()
     if node.server is not None:
-        node.server.send_signal(2)
+        node.server.send_signal(signal.SIGINT)
         try:
             node.server.wait(20)
         except subprocess.TimeoutExpired:
