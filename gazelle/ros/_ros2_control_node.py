@@ -10,22 +10,25 @@ names (there: mock_components/GenericSystem). Here the robot runs in gazelle ins
 * the URDF comes from that topic (the remap applies), else from a ``robot_description`` in the parameters files;
 * a gazelle server already running (its ``/spawn_entity``) is used, else one is started (``gazelle sim
   --no-viewer``, stopped with this node);
-* the robot is spawned as ``gazelle spawn`` spawns it, with the parameters files for its controller manager and
-  without gazelle's own robot_state_publisher (the launch runs one); a robot whose root link is not fixed to a
-  ``world`` link is fixed there first, as MoveIt's configurations run it on mock hardware, which has no dynamics:
-  the arm stays on its base (MoveIt's static transform from ``world`` says where the base is);
+* the robot is spawned as ``gazelle spawn`` spawns it, its controller manager given the parameters files in its
+  plugin tag (read before it serves anything) and without gazelle's own robot_state_publisher (the launch runs
+  one); a robot whose root link is not fixed to a ``world`` link is fixed there first, as MoveIt's configurations
+  run it on mock hardware, which has no dynamics: the arm stays on its base (MoveIt's static transform from
+  ``world`` says where the base is);
 * the controller manager is ``/controller_manager`` (the spawners' default); Ctrl-C deletes the robot.
 """
 
 from __future__ import annotations
 
 import os
+import re
 import signal
 import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
+from xml.sax.saxutils import escape
 
 import rclpy
 import yaml
@@ -40,8 +43,10 @@ from ._rsp_node import spin_until_interrupted
 
 WAIT_DESCRIPTION_SEC = 60.0
 """How long the robot_description may take to come (robot_state_publisher starting beside it)."""
-WAIT_SERVER_SEC = 5.0
-"""How long a running gazelle server has to answer before one is started."""
+WAIT_SERVER_SEC = 2.0
+"""How long a running gazelle server has to answer before one is started: short, as the demo's spawners give the
+manager 10 s (gazelle's spawner's --controller-manager-timeout; Jazzy's waits for ever) and the server must still
+start and spawn the robot within them."""
 ENTITY = "ros2_control_robot"
 
 
@@ -64,22 +69,32 @@ def _description_in(files: list[str]) -> str | None:
     return None
 
 
-def fixed_to_world(urdf: str) -> str:
-    """The URDF with its root link fixed to a ``world`` link, unless a ``world`` link is its root already."""
+def prepared(urdf: str, files: list[str]) -> str:
+    """The URDF as gazelle runs it for ros2_control_node: its root link fixed to a ``world`` link (unless a ``world``
+    link is its root already), and, unless it names a ros2_control plugin of its own, gz_ros2_control's plugin tag
+    with the parameters files, so that the manager has them when it starts, as ros2_control_node has its
+    parameters before it serves anything (given after the spawn, a spawner could ask first)."""
+    extra = ""
     try:
         model = load_string(urdf, format="urdf").model
     except Exception:  # a description gazelle cannot read: the spawn names what is wrong with it
-        return urdf
-    children = {j.child for j in model.joints}
-    roots = [link.name for link in model.links if link.name not in children]
-    if not roots or roots[0] == "world":
-        return urdf
-    joint = (
-        '<link name="world"/><joint name="ros2_control_node_fixed_base" type="fixed">'
-        f'<parent link="world"/><child link="{roots[0]}"/></joint></robot>'
-    )
+        model = None
+    if model is not None:
+        children = {j.child for j in model.joints}
+        roots = [link.name for link in model.links if link.name not in children]
+        if roots and roots[0] != "world":
+            extra += (
+                '<link name="world"/><joint name="ros2_control_node_fixed_base" type="fixed">'
+                f'<parent link="world"/><child link="{escape(roots[0])}"/></joint>'
+            )
+    if "ros2_control" not in "".join(re.findall(r"<plugin[^>]*>", urdf)):
+        given = "".join(f"<parameters>{escape(str(Path(f).resolve()))}</parameters>" for f in files)
+        extra += (
+            '<gazebo><plugin filename="gz_ros2_control-system" name="gz_ros2_control::GazeboSimROS2ControlPlugin">'
+            f"{given}</plugin></gazebo>"
+        )
     head, sep, _tail = urdf.rpartition("</robot>")
-    return head + joint if sep else urdf
+    return head + extra + "</robot>" if sep else urdf
 
 
 class Ros2ControlNode(Node):
@@ -138,9 +153,8 @@ def main(argv: list[str] | None = None) -> int:
         log.error("the gazelle server did not come up")
         return _stop(node, 1)
     with tempfile.NamedTemporaryFile("w", suffix=".urdf", delete=False) as f:
-        f.write(fixed_to_world(urdf))
+        f.write(prepared(urdf, files))
     cmd = [gazelle, "spawn", "-entity", ENTITY, "-file", f.name, "-no_robot_state_publisher"]
-    cmd += ["--ros-args", *(a for p in files for a in ("--params-file", p))]
     spawned = subprocess.run(cmd, env=os.environ.copy(), check=False)
     os.unlink(f.name)
     if spawned.returncode != 0:
