@@ -219,6 +219,8 @@ class SimulationNode(GazeboServices):
         self.create_timer(0.5, self._watch_for_user_publishers, callback_group=self._cb)
         self._managers: dict[str, Any] = {}
         """Entity -> the node of its controller manager (see ``_control``)."""
+        self._controller_nodes: dict[int, Any] = {}
+        """Each loaded controller's own node (``_controller_node.py``), by its parameters component's id."""
         self._executor: Any = None
         self._pending_nodes: list[Any] = []
         """Manager and plugin nodes made before the executor was attached."""
@@ -470,10 +472,17 @@ class SimulationNode(GazeboServices):
     def component_added(self, owner: str, component: Any) -> None:
         """A gazebo_ros plugin gets its node; a controller manager its node; a trajectory controller its
         action server."""
-        from ..systems.ros2_control import ControllerManager
+        from ..systems.ros2_control import ControllerManager, ControllerParameters
 
         if isinstance(component, PluginNode):
             self.plugin_nodes.declare(component)
+        elif isinstance(component, ControllerParameters):  # a loaded controller's own node
+            with second_tier():
+                from ._controller_node import ControllerNode
+            cnode = ControllerNode(self.sim, component, self.context)
+            with self._lock:
+                self._controller_nodes[id(component)] = cnode
+            self._add_node(cnode)
         elif isinstance(component, ControllerManager):
             with second_tier():
                 from ._control import ControllerManagerNode
@@ -492,12 +501,23 @@ class SimulationNode(GazeboServices):
         with self._lock:
             return list(self._managers.values())
 
+    def controller_nodes(self) -> list[Any]:
+        """The loaded controllers' own nodes."""
+        with self._lock:
+            return list(self._controller_nodes.values())
+
     def component_removed(self, component: Any) -> None:
         """Undo :meth:`component_added`."""
-        from ..systems.ros2_control import ControllerManager
+        from ..systems.ros2_control import ControllerManager, ControllerParameters
 
         if isinstance(component, PluginNode):
             self.plugin_nodes.undeclare(component)
+        elif isinstance(component, ControllerParameters):
+            with self._lock:
+                cnode = self._controller_nodes.pop(id(component), None)
+            if cnode is not None:
+                self._remove_node(cnode)
+                cnode.destroy_node()
         elif isinstance(component, ControllerManager):
             with self._lock:
                 owner = next((o for o, n in self._managers.items() if n.manager is component), None)
@@ -641,6 +661,8 @@ class RosBridge:
         self.executor.shutdown(timeout_sec=2.0)
         for manager_node in self.node.manager_nodes():
             manager_node.destroy_node()
+        for controller_node in self.node.controller_nodes():
+            controller_node.destroy_node()
         self.node.plugin_nodes.destroy_all()
         self.node.destroy_node()
         if self.context.ok():

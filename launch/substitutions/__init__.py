@@ -207,6 +207,24 @@ class OrSubstitution(Substitution):
         return str(either).lower()
 
 
+class IfElseSubstitution(Substitution):
+    """``if_value`` when ``condition`` is true, else ``else_value`` (launch's if_else_substitution.py, Jazzy): the
+    condition evaluated as IfCondition evaluates it; at least one of the two values must be given."""
+
+    def __init__(self, condition: Any, if_value: Any = "", else_value: Any = "") -> None:
+        if if_value == else_value == "":
+            raise ValueError("At least one of `if_value` or `else_value` must be provided")
+        self.condition = normalize_to_list_of_substitutions(condition)
+        self.if_value = normalize_to_list_of_substitutions(if_value)
+        self.else_value = normalize_to_list_of_substitutions(else_value)
+
+    def perform(self, context: LaunchContext) -> str:
+        from ..conditions import evaluate_condition_expression
+
+        chosen = self.if_value if evaluate_condition_expression(context, self.condition) else self.else_value
+        return perform_substitutions(context, chosen)
+
+
 def _operand(value: Any) -> list[Substitution]:
     """An ``EqualsSubstitution`` operand as launch takes it (launch/substitutions/equals_substitution.py): a
     substitution, or a list of text and substitutions holding one, as it is; anything else as text, None as
@@ -274,6 +292,7 @@ __all__ = [
     "EnvironmentVariable",
     "EqualsSubstitution",
     "FindExecutable",
+    "IfElseSubstitution",
     "LaunchConfiguration",
     "LocalSubstitution",
     "NotEqualsSubstitution",

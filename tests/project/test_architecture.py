@@ -467,6 +467,14 @@ MIXIN_CHAINS_TO_UNDO = {
     "gazelle/viewer/_viewer.py:Viewer": ("ViewerOverlays",),
     "gazelle/description/_urdf.py:_Reader": ("ElementReader",),
 }
+SUBCLASSES_BY_DESIGN = {
+    # ur_controllers' ScaledJointTrajectoryController is a subclass of ros2_controllers' JTC upstream too
+    # (scaled_joint_trajectory_controller.hpp): one kind of controller specialising another, not one class split
+    "gazelle/systems/ros2_control/_scaled_trajectory.py:ScaledJointTrajectoryController": (
+        "JointTrajectoryController",
+    ),
+}
+"""Subclasses the check finds that are a kind of their base, as upstream's are: not on the to-do list."""
 """Classes still spread over files by a chain of bases, each with the bases that spread it: a to-do list that
 only shrinks (a new entry is a new class split across files)."""
 
@@ -505,7 +513,7 @@ def test_no_class_is_spread_over_files_by_a_mixin_chain() -> None:
     """Issue 53: a class split into bases in other files (to keep each file under the line limit) makes a reader
     search them all for where ``self._x`` comes from. One class lives in one file; what it needs from elsewhere
     it owns (composition). The entries still to be undone are listed; the list only shrinks."""
-    found = _mixin_chains(REPO / "gazelle")
+    found = {k: v for k, v in _mixin_chains(REPO / "gazelle").items() if SUBCLASSES_BY_DESIGN.get(k) != v}
     new = {cls: bases for cls, bases in found.items() if MIXIN_CHAINS_TO_UNDO.get(cls) != bases}
     assert not new, f"classes spread over files by a chain of bases: {new}"
     undone = sorted(set(MIXIN_CHAINS_TO_UNDO) - set(found))

@@ -3,10 +3,10 @@
 Each ``generate_*_launch(moveit_config)`` builds what upstream's builds, from a :class:`MoveItConfigs`: the same
 launch arguments, nodes and parameters. The nodes are found by package and executable as any launch file's are;
 gazelle installs stand-ins for ``moveit_ros_move_group move_group`` (gazelle's move_group),
-``robot_state_publisher``, ``rviz2`` (a line saying where gazelle's viewer is) and ``controller_manager spawner``.
-``tf2_ros static_transform_publisher``, ``controller_manager ros2_control_node`` (MoveIt's mock hardware),
-``moveit_setup_assistant`` and ``warehouse_ros_mongo`` have none: a description that starts them stops with the
-launch's line naming the executable it could not find.
+``robot_state_publisher``, ``rviz2`` (a line saying where gazelle's viewer is), ``controller_manager spawner``,
+``tf2_ros static_transform_publisher`` and ``controller_manager ros2_control_node`` (the robot and its controller
+manager in gazelle, in place of MoveIt's mock hardware). ``moveit_setup_assistant`` and ``warehouse_ros_mongo`` have
+none: a description that starts them stops with the launch's line naming the executable it could not find.
 """
 
 from __future__ import annotations

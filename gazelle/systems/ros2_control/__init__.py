@@ -17,6 +17,7 @@ if TYPE_CHECKING:
     from ._controller import UNCONFIGURED as UNCONFIGURED
     from ._controller import Controller as Controller
     from ._controller import GoalState as GoalState
+    from ._controller_parameters import ControllerParameters as ControllerParameters
     from ._goal import TrajectoryGoal as TrajectoryGoal
     from ._goal import TrajectoryResult as TrajectoryResult
     from ._gripper import GripperActionController as GripperActionController
@@ -35,6 +36,7 @@ if TYPE_CHECKING:
     from ._params import section_matches as section_matches
     from ._params import valid_controller_name as valid_controller_name
     from ._params import yaml_problem as yaml_problem
+    from ._scaled_trajectory import ScaledJointTrajectoryController as ScaledJointTrajectoryController
     from ._tolerances import SegmentTolerances as SegmentTolerances
     from ._tolerances import Tolerance as Tolerance
     from ._tolerances import segment_tolerances as segment_tolerances
@@ -55,12 +57,14 @@ __all__ = [
     "UNCONFIGURED",
     "ControlError",
     "Controller",
+    "ControllerParameters",
     "ControllerManager",
     "GripperActionController",
     "GripperGoal",
     "JointTrajectoryController",
     "ParamsError",
     "ParamsFile",
+    "ScaledJointTrajectoryController",
     "SimHardware",
     "Tolerance",
     "TrajectoryGoal",

@@ -26,6 +26,22 @@ class JointStateBroadcaster(Controller):
     and no ``joints`` list, ``joint_states`` holds the URDF's moving joints that have a state interface, in
     the order of the URDF model's joint map, which is by name; a value a joint has no interface for is NaN."""
 
+    read_only_parameters = frozenset(
+        {
+            "use_local_topics",
+            "joints",
+            "extra_joints",
+            "interfaces",
+            "map_interface_to_joint_state.position",
+            "map_interface_to_joint_state.velocity",
+            "map_interface_to_joint_state.effort",
+            "use_urdf_to_filter",
+            "frame_id",
+            "publish_dynamic_joint_states",
+        }
+    )
+    """joint_state_broadcaster_parameters.yaml's ``read_only`` parameters (ros2_controllers jazzy)."""
+
     type_name = "joint_state_broadcaster/JointStateBroadcaster"
 
     def on_configure(self) -> None:

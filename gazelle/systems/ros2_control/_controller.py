@@ -104,6 +104,9 @@ class Controller:
 
     type_name: ClassVar[str] = ""
     """``package/Class`` as in the controller YAML."""
+    read_only_parameters: ClassVar[frozenset[str]] = frozenset()
+    """Parameters its node refuses to set at run time (``read_only: true`` in the upstream controller's
+    generate_parameter_library YAML)."""
     action_type: ClassVar[str] = ""
     """The action the controller serves on ``action_name`` (``control_msgs/action/FollowJointTrajectory``),
     announced with ``ctx.add_component``; the ROS layer serves it by this type. "" for none."""
@@ -123,6 +126,9 @@ class Controller:
         self._endpoints: list[Endpoint] = []
         self._read: set[str] = set()
         """The parameters :meth:`param` was asked for since the last configure (the rest are reported)."""
+        self.defaults: dict[str, Any] = {}
+        """Each parameter :meth:`param` was asked for, with its default: what the controller's node declares beside
+        the values it was given (upstream's nodes declare every parameter of the controller, with its default)."""
 
     # ------------------------------------------------------------------ parameters
     def param(self, key: str, default: T, kind: type | tuple[type, ...] | None = None) -> T:
@@ -132,6 +138,7 @@ class Controller:
             ControlError: a value of the wrong type, naming the controller and the parameter.
         """
         self._read.add(key)
+        self.defaults.setdefault(key, default)
         if key not in self.params:
             return default
         value = self.params[key]
@@ -205,6 +212,11 @@ class Controller:
     def on_configure(self) -> None:
         """Subclasses: read parameters, declare topics."""
 
+    def on_parameters_changed(self) -> None:
+        """A parameter was set on the controller's node (``params`` holds the new values; the simulation thread).
+        Upstream's controllers read their parameters in ``on_configure``, so by default a new value takes effect at
+        the next configure; a controller that reads some again while it runs (the JTC) overrides this."""
+
     def command_interfaces(self) -> list[str]:
         """The command interfaces this controller claims while active."""
         return []
@@ -231,6 +243,26 @@ MANAGER_READ_PARAMETERS = frozenset({"type", "params_file", "use_sim_time", "fal
 """A controller's parameters that are not the controller's to read: its type and parameter files (the
 controller manager's), ``use_sim_time`` (every node's: the simulation's clock is the one it runs on), and
 ros2_control's scheduling options (gazelle runs every controller in the simulation's step, in order)."""
+
+
+def missing_interfaces(c: Controller, commands: Iterable[str], states: Iterable[str]) -> str:
+    """Why the hardware cannot run controller ``c``: the command or state interfaces it needs and the hardware does
+    not offer, named with what the hardware has ("" when none is missing; ros2_control refuses it at activation
+    the same way)."""
+    have_c, have_s = set(commands), set(states)
+    missing_c = [i for i in c.command_interfaces() if i not in have_c]
+    missing_s = [i for i in (c.state_interfaces() or []) if i not in have_s]
+    if not missing_c and not missing_s:
+        return ""
+    parts = []
+    if missing_c:
+        parts.append(f"command interface(s) {', '.join(missing_c)}")
+    if missing_s:
+        parts.append(f"state interface(s) {', '.join(missing_s)}")
+    return (
+        f"controller '{c.name}' needs {' and '.join(parts)}, which the hardware does not offer "
+        f"(it has command interfaces {sorted(have_c)})"
+    )
 
 
 def _type_name(t: type | tuple[type, ...]) -> str:

@@ -40,7 +40,17 @@ from ._broadcasters import (
     JointGroupVelocityController,
     JointStateBroadcaster,
 )
-from ._controller import ACTIVE, FINALIZED, INACTIVE, UNCONFIGURED, Controller, ControllerContext, position_limits
+from ._controller import (
+    ACTIVE,
+    FINALIZED,
+    INACTIVE,
+    UNCONFIGURED,
+    Controller,
+    ControllerContext,
+    missing_interfaces,
+    position_limits,
+)
+from ._controller_parameters import ControllerParameters
 from ._diff_drive import DiffDriveController
 from ._gripper import EffortGripperActionController, GripperActionController
 from ._hardware import ControlError, SimHardware, UpdateFailed
@@ -53,6 +63,7 @@ from ._params import (
     parse_params,
     valid_controller_name,
 )
+from ._scaled_trajectory import ScaledJointTrajectoryController
 from ._trajectory import JointTrajectoryController
 
 CONTROLLER_TYPES: dict[str, type[Controller]] = {
@@ -61,6 +72,7 @@ CONTROLLER_TYPES: dict[str, type[Controller]] = {
         JointStateBroadcaster,
         DiffDriveController,
         JointTrajectoryController,
+        ScaledJointTrajectoryController,
         ForwardCommandController,
         JointGroupPositionController,
         JointGroupVelocityController,
@@ -110,6 +122,8 @@ class ControlPluginConfig:
 class _Loaded:
     controller: Controller
     type_name: str
+    node: ControllerParameters | None = None
+    """The parameters of its node, announced on the bus (the ROS layer serves them)."""
     cycle: int = 0
     last_update: float = -math.inf
 
@@ -138,6 +152,8 @@ class ControllerManager(System):
         self.files: list[ParamsFile] = []
         self.overrides: Params = {}
         """Parameters set on the manager's node at run time (``<ctrl>.type``, ``<ctrl>.params_file``)."""
+        self.node_params: dict[str, Params] = {}
+        """Parameters set on each controller's own node at run time (see ``_controller_parameters.py``)."""
         self.remaps: tuple[tuple[str, str], ...] = ()
         """The plugin's ``<ros><remapping>`` rules, in order (handed on to every controller's node)."""
         self.config = ControlPluginConfig()
@@ -260,8 +276,7 @@ class ControllerManager(System):
         ``<ctrl>.params_file_yaml``): parsed with the same bounds, and nothing is read here.
 
         Raises:
-            ControlError: the file is outside those folders or cannot be used; the message names the file,
-                never its content.
+            ControlError: the file is outside those folders or cannot be used (named, never its content).
         """
         if not isinstance(raw, str) or not raw or len(raw) > 4096 or any(ord(c) < 32 for c in raw):
             raise ControlError(f"{where}a parameters file must be named by a path of at most 4096 printable characters")
@@ -308,6 +323,7 @@ class ControllerManager(System):
             if loaded is None:  # set by a path that never went through set_parameter's read
                 raise ControlError(f"parameters file '{raw}' of controller '{name}' was not read when it was set")
             out.update(loaded.for_node(name, self.namespace))
+        out.update(self.node_params.get(name, {}))
         return out
 
     def controller_type(self, name: str) -> str | None:
@@ -494,7 +510,8 @@ class ControllerManager(System):
             position_limits=position_limits(ctx.entity.model.joints),
         )
         controller = cls(name, self.controller_params(name), cctx)
-        self.controllers[name] = _Loaded(controller, type_name)
+        loaded = self.controllers[name] = _Loaded(controller, type_name, ControllerParameters(self, name))
+        ctx.bus.add_component(ctx.entity.name, loaded.node)  # its node, with its parameters
         self.log.info(f"Loaded controller '{name}' ({type_name})")
         return controller
 
@@ -556,24 +573,15 @@ class ControllerManager(System):
             c.state = UNCONFIGURED
             raise ControlError(f"controller '{name}' failed to configure: {type(err).__name__}: {err}") from None
         c.state = INACTIVE
+        if loaded.node is not None:
+            loaded.node.changed()
         self.log.info(f"Configured controller '{name}'")
 
     def _check_interfaces(self, c: Controller) -> None:
-        """Refuse a controller whose command or state interfaces the hardware does not have, naming them and what
-        the hardware offers (ros2_control refuses it at activation the same way)."""
-        commands, states = set(self.all_command_interfaces()), set(self.all_state_interfaces())
-        missing_c = [i for i in c.command_interfaces() if i not in commands]
-        missing_s = [i for i in (c.state_interfaces() or []) if i not in states]
-        if missing_c or missing_s:
-            parts = []
-            if missing_c:
-                parts.append(f"command interface(s) {', '.join(missing_c)}")
-            if missing_s:
-                parts.append(f"state interface(s) {', '.join(missing_s)}")
-            raise ControlError(
-                f"controller '{c.name}' needs {' and '.join(parts)}, which the hardware does not offer "
-                f"(it has command interfaces {sorted(commands)})"
-            )
+        """Refuse a controller whose interfaces the hardware does not have (see :func:`missing_interfaces`)."""
+        why = missing_interfaces(c, self.all_command_interfaces(), self.all_state_interfaces())
+        if why:
+            raise ControlError(why)
 
     def switch_controller(self, activate: list[str], deactivate: list[str], strictness: int = STRICT) -> list[str]:
         """Deactivate then activate controllers, all at once between two cycles.
@@ -661,8 +669,7 @@ class ControllerManager(System):
         self.log.info(f"Activated controller '{name}'")
 
     def _deactivate(self, name: str) -> None:
-        """Deactivate a controller and release its command interfaces: the joints it commanded hold their last
-        command."""
+        """Deactivate a controller and release its command interfaces (its joints hold their last command)."""
         c = self.controllers[name].controller
         c.on_deactivate()
         c.state = INACTIVE
@@ -687,6 +694,9 @@ class ControllerManager(System):
             c.on_cleanup()
         c.state = FINALIZED
         del self.controllers[name]
+        self.node_params.pop(name, None)  # its node goes, and what was set on it
+        if loaded.node is not None and self._ctx is not None:
+            self._ctx.bus.remove_component(loaded.node)
         self.log.info(f"Unloaded controller '{name}'")
 
     def cleanup_controller(self, name: str) -> None:

@@ -73,6 +73,20 @@ class JointTrajectoryController(Controller):
 
     type_name = "joint_trajectory_controller/JointTrajectoryController"
     action_type = "control_msgs/action/FollowJointTrajectory"
+    read_only_parameters = frozenset(
+        {
+            "joints",
+            "command_joints",
+            "command_interfaces",
+            "state_interfaces",
+            "open_loop_control",
+            "interpolate_from_desired_state",
+            "action_monitor_rate",
+            "interpolation_method",
+            "constraints.decelerate_on_cancel",
+        }
+    )
+    """joint_trajectory_controller_parameters.yaml's ``read_only`` parameters (ros2_controllers jazzy)."""
 
     def on_configure(self) -> None:
         """Read Jazzy's parameters: ``joints``, the command interface combination (refused unless it is one the real
@@ -178,6 +192,13 @@ class JointTrajectoryController(Controller):
                 f"{self.name}: {cmd[0]} command interface without gains.<joint>.p: only the feed-forward "
                 "velocity is commanded"
             )
+
+    def on_parameters_changed(self) -> None:
+        """Jazzy's ``update()`` reads its parameters again when they changed (``param_listener_->is_old``): the
+        default tolerances (``constraints``, ``cmd_timeout``) and the PID gains, from the next cycle on."""
+        if self.state != "unconfigured":
+            self._read_constraints()
+            self._read_gains()
 
     def on_cleanup(self) -> None:
         self.ctx.remove_component(self)
