@@ -52,8 +52,10 @@ def test_the_panda_configs_demo_launch_brings_up_move_group_the_robot_and_its_co
         assert "controller manager '/controller_manager' at 100 Hz" in said, said  # ros2_controllers.yaml's rate
 
         static: list[TFMessage] = []
+        # depth 100 as tf2's listener has for /tf_static: robot_state_publisher and the static_transform_publisher
+        # both send their latched transforms at once, and a depth-1 reader kept only the one taken last
         latched = QoSProfile(
-            depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE
+            depth=100, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE
         )
         ros.node.create_subscription(TFMessage, "/tf_static", static.append, latched)
         wait_for(
