@@ -53,8 +53,10 @@ def test_new_and_old_style_command_lines_publish_a_latched_static_transform(ros_
                 for tf in msg.transforms:
                     heard[tf.child_frame_id] = tf
 
+        # depth 100 as tf2's listener has for /tf_static: three latched publishers answer at once, and a depth-1
+        # reader kept only the one taken last (it failed twice beside other tests)
         latched = QoSProfile(
-            depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE
+            depth=100, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE
         )
         ros_client.node.create_subscription(TFMessage, "/tf_static", keep, latched)  # after they published
         wait_for(lambda: {"panda_link0", "old9", "old8"} <= set(heard), 20, "the three static transforms")
