@@ -11,7 +11,11 @@ import time
 from typing import Any
 
 from ..._errors import SimError
-from ._graph import cli_node, spin_once
+from ._daemon_graph import daemon_graph
+from ._daemon_link import WARM_SEC
+from ._graph import cli_node, spin_once, wait_until
+
+DEFAULT_SERVICE_TIMEOUT = 10.0
 
 VERBS = (
     "list_controllers",
@@ -58,7 +62,14 @@ def main(argv: list[str]) -> int:
         )
         v.add_argument("--spin-time", type=float, default=0.5, help="Spin time in seconds to wait for discovery")
         v.add_argument("--include-hidden-nodes", action="store_true", help="Consider hidden nodes as well")
-        v.add_argument("--service-timeout", type=float, default=10.0, help="Seconds to wait for the service")
+        v.add_argument(
+            "--service-timeout",
+            type=float,
+            default=None,
+            help="Seconds to wait for the service (default: 10 once the manager's node is in the graph; "
+            "none when it is not)",
+        )
+        v.add_argument("--no-daemon", action="store_true", help="Do not spawn nor use an already running daemon")
         return v
 
     lc = verb("list_controllers", "Output the list of loaded controllers, their type and status")
@@ -108,12 +119,35 @@ class _Manager:
         self.node = node
         name = args.controller_manager
         self.prefix = name if name.startswith("/") else f"/{name}"
-        self.timeout = args.service_timeout
+        self.timeout = DEFAULT_SERVICE_TIMEOUT if args.service_timeout is None else args.service_timeout
+        self.node_checked = args.service_timeout is not None  # an explicit timeout waits it out, as before
+        self.no_daemon = args.no_daemon
+
+    def require_node(self, service: str) -> None:
+        """Fail at once when the graph (the daemon's, else this verb's own node after at most
+        :data:`WARM_SEC`) has no node named as the manager: waiting 10 s for its service then said
+        nothing more (ros2controlcli waits for ever, logging every 10 s)."""
+        graph = None if self.no_daemon else daemon_graph()
+        source = self.node if graph is None else graph
+
+        def seen() -> bool:
+            return self.prefix in {f"{ns.rstrip('/')}/{n}" for n, ns in source.get_node_names_and_namespaces()}
+
+        if graph is None:
+            wait_until(self.node, seen, WARM_SEC)
+        if not seen():
+            raise ControlCommandError(
+                f"Could not contact service {self.prefix.rstrip('/')}/{service}: no node {self.prefix} in the graph "
+                f"(is the controller manager {self.prefix} running?)"
+            )
 
     def call(self, srv_type: Any, service: str, **fields: Any) -> Any:
         """Call one of the manager's services with ``fields`` set on the request; a manager that is not there, or
         does not reply within the timeout, is a ControlCommandError in ros2controlcli's words."""
         name = f"{self.prefix.rstrip('/')}/{service}"
+        if not self.node_checked:
+            self.require_node(service)
+            self.node_checked = True
         client = self.node.create_client(srv_type, name)
         if not client.wait_for_service(timeout_sec=self.timeout):
             raise ControlCommandError(
