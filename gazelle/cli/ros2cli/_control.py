@@ -13,7 +13,7 @@ from typing import Any
 from ..._errors import SimError
 from ._daemon_graph import daemon_graph
 from ._daemon_link import WARM_SEC
-from ._graph import cli_node, spin_once, wait_until
+from ._graph import SETTLE_SEC, cli_node, spin_once, wait_until
 
 DEFAULT_SERVICE_TIMEOUT = 10.0
 
@@ -124,17 +124,22 @@ class _Manager:
         self.no_daemon = args.no_daemon
 
     def require_node(self, service: str) -> None:
-        """Fail at once when the graph (the daemon's, else this verb's own node after at most
-        :data:`WARM_SEC`) has no node named as the manager: waiting 10 s for its service then said
-        nothing more (ros2controlcli waits for ever, logging every 10 s)."""
+        """Fail soon when the graph (the daemon's, asked again for :data:`SETTLE_SEC` in case the manager is
+        starting; else this verb's own node after at most :data:`WARM_SEC`) has no node named as the manager:
+        waiting 10 s for its service then said nothing more (ros2controlcli waits for ever, logging every
+        10 s)."""
         graph = None if self.no_daemon else daemon_graph()
-        source = self.node if graph is None else graph
 
         def seen() -> bool:
+            source = self.node if graph is None else graph
             return self.prefix in {f"{ns.rstrip('/')}/{n}" for n, ns in source.get_node_names_and_namespaces()}
 
         if graph is None:
             wait_until(self.node, seen, WARM_SEC)
+        deadline = time.monotonic() + SETTLE_SEC
+        while graph is not None and not seen() and time.monotonic() < deadline:
+            time.sleep(0.05)
+            graph = daemon_graph(start=False) or graph
         if not seen():
             raise ControlCommandError(
                 f"Could not contact service {self.prefix.rstrip('/')}/{service}: no node {self.prefix} in the graph "
