@@ -45,8 +45,8 @@ def test_listings_find_a_users_node_that_answers_late(tmp_path: Path, monkeypatc
     `topic list` and `node info` run side by side with no daemon running (the first starts it; all three ask
     it). Such a node answers a new participant only at its next announcement, up to 3 s later: before, each
     verb discovered for itself and stopped when its graph had been still for 2 s, and missed it now and then
-    (2 of 24 `node list` runs on this machine; `--no-daemon` still can). ~4 s a round: each waits for the
-    new daemon to have been up 3.3 s."""
+    (2 of 24 `node list` runs on this machine; `--no-daemon` still can). ~5 s a round: each waits for the
+    new daemon to have been up 4 s."""
     monkeypatch.setenv("GAZELLE_ROS2_DAEMON_DIR", str(tmp_path / "daemons"))
 
     def seen(name: str) -> bool:

@@ -30,8 +30,9 @@ DIR_VARIABLE = "GAZELLE_ROS2_DAEMON_DIR"
 TIMEOUT_VARIABLE = "GAZELLE_ROS2_DAEMON_TIMEOUT"
 """Seconds without a request after which a daemon a verb starts ends (ros2cli's ``--timeout``: 2 h)."""
 DEFAULT_TIMEOUT = 2 * 60 * 60
-WARM_SEC = 3.3
-"""A daemon up this long has heard every participant of the domain (Fast DDS announces every 3 s)."""
+WARM_SEC = 4.0
+"""A daemon up this long has heard every participant of the domain: Fast DDS announces every 3 s, and the
+exchange of endpoints that follows an announcement gets a second on a loaded machine."""
 MAX_REQUEST = 4096
 MAX_REPLY = 32 * 1024 * 1024
 REPLY_TIMEOUT = 5.0
