@@ -10,7 +10,9 @@ The names a script or a sweep scenario needs, importable from the package root
   :class:`ResourceResolver` says which folders a file may read.
 - :class:`Pose`, :func:`quat_to_rpy`, :func:`quat_from_rpy`: poses (metres; quaternions w, x, y, z).
 - :class:`DiffDrive`: the diff drive system a spawned robot's plugin becomes (``command(v, w)``).
-- :func:`sweep`: run a scenario over parameters and seeds (``gazelle sweep``'s Python form).
+
+``sweep`` is not among them: ``gazelle.sweep`` is the sweeps package (``from gazelle.sweep import sweep``),
+and a package attribute of that name would be replaced by the subpackage once it is imported.
 """
 
 from __future__ import annotations
@@ -22,7 +24,6 @@ from ._lazy import lazy_attributes
 if TYPE_CHECKING:
     from .description import Pose, ResourceResolver, load, load_string, quat_from_rpy, quat_to_rpy
     from .sim import Simulation
-    from .sweep import sweep
     from .systems.diff_drive import DiffDrive
 
 __all__ = [
@@ -34,7 +35,6 @@ __all__ = [
     "load_string",
     "quat_from_rpy",
     "quat_to_rpy",
-    "sweep",
 ]
 
 __getattr__ = lazy_attributes(__name__, __file__)

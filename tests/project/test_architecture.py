@@ -23,7 +23,7 @@ PACKAGE = REPO / "gazelle"
 ALLOWED: dict[str, tuple[str, ...]] = {
     # gazelle/__init__.py (the public names a script or a sweep scenario needs, loaded on first use),
     # gazelle/_lazy.py, gazelle/_files.py and gazelle/_errors.py
-    "": ("description", "sim", "systems", "sweep"),
+    "": ("description", "sim", "systems"),
     "description": (),
     "physics": ("description",),
     "systems": ("description", "physics"),

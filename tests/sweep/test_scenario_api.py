@@ -39,7 +39,7 @@ def test_the_public_names_load_on_first_use_and_import_gazelle_loads_none_of_the
         import gazelle
         heavy = [m for m in ("mujoco", "rclpy", "gazelle.sim", "gazelle.sweep", "numpy") if m in sys.modules]
         assert not heavy, heavy
-        from gazelle import DiffDrive, Pose, ResourceResolver, Simulation, load, load_string, quat_to_rpy, sweep
+        from gazelle import DiffDrive, Pose, ResourceResolver, Simulation, load, load_string, quat_to_rpy
         from gazelle.sim import Simulation as Internal
         assert Simulation is Internal and sorted(gazelle.__all__) == gazelle.__all__
         print("ok")
