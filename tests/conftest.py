@@ -3,8 +3,13 @@
 
 from __future__ import annotations
 
+import json
 import os
+import socket
+import tempfile
+import time
 from collections import defaultdict
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -34,6 +39,33 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
     if deselected:
         config.hook.pytest_deselected(items=deselected)
         items[:] = keep
+
+
+@pytest.fixture(autouse=True, scope="session")
+def _ros2_daemons_of_this_run() -> Iterator[Path]:
+    """The ``ros2`` verbs a test runs start gazelle's graph daemon, as ros2cli's do: this run's daemons live in
+    a folder of its own (0700), end after 10 idle minutes at most, and are stopped when the run ends."""
+    folder = Path(tempfile.mkdtemp(prefix="gazelle-ros2-daemons-"))
+    os.environ["GAZELLE_ROS2_DAEMON_DIR"] = str(folder)
+    os.environ["GAZELLE_ROS2_DAEMON_TIMEOUT"] = "600"
+    yield folder
+    for path in folder.glob("*.sock"):
+        stop_ros2_daemon(path)
+
+
+def stop_ros2_daemon(path: Path, wait: float = 10.0) -> None:
+    """Ask the daemon on socket ``path`` to stop and wait for its socket to go (it removes it as it ends)."""
+    with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as conn:
+        conn.settimeout(5.0)
+        try:
+            conn.connect(str(path))
+            conn.sendall(json.dumps({"op": "stop"}).encode() + b"\n")
+            conn.recv(4096)
+        except OSError:
+            return
+    deadline = time.monotonic() + wait
+    while path.exists() and time.monotonic() < deadline:
+        time.sleep(0.05)
 
 
 @pytest.fixture

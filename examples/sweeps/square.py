@@ -10,35 +10,23 @@ Metrics: the side's length, the heading after the turn (degrees) and whether bot
 import math
 from pathlib import Path
 
-from gazelle.description import DiagnosticSink, Pose, ResourceResolver, expand_xacro_bounded, load_string, quat_to_rpy
-from gazelle.systems.diff_drive import DiffDrive
+from gazelle import DiffDrive, Pose, ResourceResolver, Simulation, load_string, quat_to_rpy
 
 ROBOT = Path(__file__).resolve().parents[1] / "simple_robot" / "simple_robot" / "robot.urdf.xacro"
-_URDF: dict[float, str] = {}
 
 
-def robot_with_wheel_friction(mu: float) -> str:
-    """The seed robot's URDF with its wheels' <mu1>/<mu2> set to ``mu`` (expanded once per value)."""
-    if mu not in _URDF:
-        text = (
-            ROBOT.read_text()
-            .replace("<mu1>1.0</mu1>", f"<mu1>{mu}</mu1>")
-            .replace("<mu2>1.0</mu2>", f"<mu2>{mu}</mu2>")
-        )
-        sink = DiagnosticSink()
-        out = expand_xacro_bounded(
-            text, source=str(ROBOT), sink=sink, resolver=ResourceResolver().trusting(ROBOT.parent)
-        )
-        if out is None:
-            raise ValueError("; ".join(d.format() for d in sink.items))
-        _URDF[mu] = out
-    return _URDF[mu]
+def robot_with_wheel_friction(mu: float):
+    """The seed robot with its wheels' <mu1>/<mu2> set to ``mu`` (a model to spawn)."""
+    text = ROBOT.read_text().replace("<mu1>1.0</mu1>", f"<mu1>{mu}</mu1>").replace("<mu2>1.0</mu2>", f"<mu2>{mu}</mu2>")
+    # xacro text read from our own file: expanded, reading only next to it
+    resolver = ResourceResolver().trusting(ROBOT.parent)
+    return load_string(text, format="urdf", source=str(ROBOT), expand_xacro=True, resolver=resolver).value
 
 
-def square(sim, params, seed):
+def square(sim: Simulation, params: dict, seed: int) -> dict:
     mu = float(params.get("wheel_mu", 1.0))
     speed = float(params.get("speed", 0.2))
-    model = load_string(robot_with_wheel_friction(mu), format="urdf", source=str(ROBOT)).value
+    model = robot_with_wheel_friction(mu)
     # the seed varies where the robot starts, by up to 5 mm and 2 degrees
     jitter = ((seed * 7919) % 101 - 50) / 10_000
     yaw0 = math.radians(((seed * 104729) % 41 - 20) / 10)

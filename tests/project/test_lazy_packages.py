@@ -13,7 +13,7 @@ import pytest
 
 from gazelle._lazy import lazy_attributes, type_checking_imports
 
-LAZY_PACKAGES = ("gazelle.ros", "gazelle.systems", "gazelle.systems.ros2_control", "gazelle.viewer")
+LAZY_PACKAGES = ("gazelle", "gazelle.ros", "gazelle.systems", "gazelle.systems.ros2_control", "gazelle.viewer")
 
 
 @pytest.mark.parametrize("name", LAZY_PACKAGES)

@@ -2,11 +2,13 @@
 introspection verbs: ``topic`` (list, echo, hz, bw, delay, info, type, find, pub), ``service`` (list,
 type, find, call), ``action`` (list, info, type, send_goal), ``node`` (list, info), ``param`` (list, get,
 set, describe, dump, load), ``interface`` (show, list, package, packages, proto), ``bag`` (record, play,
-info: rosbag2's MCAP) and ``control`` (ros2controlcli's verbs over a controller manager's services).
+info: rosbag2's MCAP), ``daemon`` (start, stop, status) and ``control`` (ros2controlcli's verbs over a
+controller manager's services).
 
 Same arguments and output as ros2cli Jazzy for what it covers (each verb's module names the upstream file
 it follows); an unknown verb lists the verbs that exist. Where gazelle differs it says so in the verb's
-docstring: no daemon (each verb discovers the graph itself, for ``--spin-time``), and a few waits that
+docstring: the listing verbs ask gazelle's graph daemon (``ros2 daemon``: a Unix socket only its user may
+use, see ``_daemon_link``) or, with ``--no-daemon``, discover the graph themselves; and a few waits that
 upstream leaves unbounded are bounded where a wedged peer would otherwise hang a script (parameter
 services, 5 s). ``gazelle launch`` and ``gazelle run`` are the same commands.
 """
@@ -24,6 +26,7 @@ COMMANDS = {
     "action": ("_action", "main", "Various action related sub-commands"),
     "bag": ("_bag", "main", "Various rosbag related sub-commands"),
     "control": ("_control", "main", "Various control related sub-commands"),
+    "daemon": ("_daemon", "main", "Various daemon related sub-commands"),
     "interface": ("_interface", "main", "Show information about ROS interfaces"),
     "launch": ("_launch", "main", "Run a launch file"),
     "node": ("_node", "main", "Various node related sub-commands"),

@@ -11,7 +11,14 @@ import time
 from typing import Any
 
 from ..._errors import SimError
-from ._graph import cli_node, spin_once
+from ._daemon_graph import daemon_graph
+from ._daemon_link import WARM_SEC
+from ._graph import cli_node, spin_once, wait_until
+
+DEFAULT_SERVICE_TIMEOUT = 10.0
+MANAGER_RECHECK_SEC = 0.5
+"""A manager missing from the daemon's graph is looked for again this long (it may have just started; a
+short time: a missing manager is the common case, and the answer a script waits for)."""
 
 VERBS = (
     "list_controllers",
@@ -58,7 +65,14 @@ def main(argv: list[str]) -> int:
         )
         v.add_argument("--spin-time", type=float, default=0.5, help="Spin time in seconds to wait for discovery")
         v.add_argument("--include-hidden-nodes", action="store_true", help="Consider hidden nodes as well")
-        v.add_argument("--service-timeout", type=float, default=10.0, help="Seconds to wait for the service")
+        v.add_argument(
+            "--service-timeout",
+            type=float,
+            default=None,
+            help="Seconds to wait for the service (default: 10 once the manager's node is in the graph; "
+            "none when it is not)",
+        )
+        v.add_argument("--no-daemon", action="store_true", help="Do not spawn nor use an already running daemon")
         return v
 
     lc = verb("list_controllers", "Output the list of loaded controllers, their type and status")
@@ -92,11 +106,39 @@ def main(argv: list[str]) -> int:
     args = p.parse_args(argv)
     colors = _Colors(sys.stdout.isatty())
     try:
+        args.manager_seen = args.service_timeout is None and not args.no_daemon and _manager_in_daemon_graph(args)
         with cli_node("ros2control") as node:
             return _VERBS[args.cmd](_Manager(node, args), args, colors)
     except ControlCommandError as err:
         print(f"{colors.fail}{err}{colors.end}", file=sys.stderr)
         return 1
+
+
+def _full_names(names_and_namespaces: list[tuple[str, str]]) -> set[str]:
+    """``/ns/name`` of each (name, namespace)."""
+    return {f"{ns.rstrip('/')}/{n}" for n, ns in names_and_namespaces}
+
+
+def _no_manager(prefix: str) -> str:
+    """The one line for a controller manager that is not in the graph."""
+    return f"Could not contact the controller manager {prefix}: no node {prefix} in the graph (is it running?)"
+
+
+def _manager_in_daemon_graph(args: argparse.Namespace) -> bool:
+    """Whether the daemon's graph has the manager's node (False: no daemon answers, this verb looks itself);
+    a ControlCommandError, before any rclpy is loaded, when it does not have it after being asked again for
+    :data:`MANAGER_RECHECK_SEC`: waiting 10 s for the manager's service then said nothing more
+    (ros2controlcli waits for ever, logging every 10 s)."""
+    name = args.controller_manager
+    prefix = name if name.startswith("/") else f"/{name}"
+    graph = daemon_graph()
+    deadline = time.monotonic() + MANAGER_RECHECK_SEC
+    while graph is not None and prefix not in _full_names(graph.get_node_names_and_namespaces()):
+        if time.monotonic() > deadline:
+            raise ControlCommandError(_no_manager(prefix))
+        time.sleep(0.05)
+        graph = daemon_graph(start=False) or graph
+    return graph is not None
 
 
 class _Manager:
@@ -108,12 +150,27 @@ class _Manager:
         self.node = node
         name = args.controller_manager
         self.prefix = name if name.startswith("/") else f"/{name}"
-        self.timeout = args.service_timeout
+        self.timeout = DEFAULT_SERVICE_TIMEOUT if args.service_timeout is None else args.service_timeout
+        # an explicit timeout waits it out, as before; a manager the daemon has seen needs no look of our own
+        self.node_checked = args.service_timeout is not None or args.manager_seen
+
+    def require_node(self) -> None:
+        """Without the daemon: fail when this verb's own node has not seen the manager's node within
+        :data:`WARM_SEC` (every participant has announced itself by then)."""
+
+        def seen() -> bool:
+            return self.prefix in _full_names(self.node.get_node_names_and_namespaces())
+
+        if not wait_until(self.node, seen, WARM_SEC):
+            raise ControlCommandError(_no_manager(self.prefix))
 
     def call(self, srv_type: Any, service: str, **fields: Any) -> Any:
         """Call one of the manager's services with ``fields`` set on the request; a manager that is not there, or
         does not reply within the timeout, is a ControlCommandError in ros2controlcli's words."""
         name = f"{self.prefix.rstrip('/')}/{service}"
+        if not self.node_checked:
+            self.require_node()
+            self.node_checked = True
         client = self.node.create_client(srv_type, name)
         if not client.wait_for_service(timeout_sec=self.timeout):
             raise ControlCommandError(

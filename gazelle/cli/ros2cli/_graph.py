@@ -1,5 +1,5 @@
 """A short-lived rclpy node for the ros2 verbs (as ros2cli's --no-daemon mode: it discovers the graph
-for ``spin_time`` seconds before answering)."""
+for ``spin_time`` seconds before answering), or the graph daemon's view for a listing (:func:`graph_view`)."""
 
 from __future__ import annotations
 
@@ -13,7 +13,7 @@ from typing import Any
 from ..._errors import SimError
 
 DEFAULT_SPIN_TIME = 1.5
-"""Seconds to discover the graph before listing (ros2cli's daemon remembers it; we have no daemon)."""
+"""Seconds to discover the graph before listing without the daemon (``--no-daemon``, or the first verb)."""
 
 
 class ShutDown(SimError):
@@ -129,6 +129,23 @@ def discover(
             return
         if now - start >= seconds and others and now - changed >= quiet:
             return
+
+
+@contextmanager
+def graph_view(name: str, no_daemon: bool = False, spin_time: float = DEFAULT_SPIN_TIME) -> Iterator[Any]:
+    """The graph a listing verb reads (``get_node_names_and_namespaces`` and the other getters): a warm graph
+    daemon's, in milliseconds (ros2cli's ``NodeStrategy``: the daemon when it runs, else a direct node, and
+    the daemon started for the next verb); this verb's own node after :func:`discover` with ``no_daemon``
+    or when no daemon runs yet."""
+    from ._daemon_graph import daemon_graph
+
+    graph = None if no_daemon else daemon_graph()
+    if graph is not None:
+        yield graph
+        return
+    with cli_node(name) as node:
+        discover(node, spin_time)
+        yield node
 
 
 def absolute(name: str) -> str:

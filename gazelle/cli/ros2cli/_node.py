@@ -4,9 +4,13 @@ from __future__ import annotations
 
 import argparse
 import sys
+import time
 from typing import Any
 
-from ._graph import QUIET_SEC, absolute, cli_node, discover, wait_until
+from ._daemon_graph import SECTIONS, DaemonGraph, daemon_graph
+from ._graph import DEFAULT_SPIN_TIME, QUIET_SEC, SETTLE_SEC, absolute, cli_node, discover, graph_view, wait_until
+
+TITLES = ("Subscribers", "Publishers", "Service Servers", "Service Clients", "Action Servers", "Action Clients")
 
 
 def main(argv: list[str]) -> int:
@@ -22,14 +26,26 @@ def main(argv: list[str]) -> int:
     info.add_argument(
         "--include-hidden", action="store_true", help="Display hidden topics, services, and actions as well"
     )
+    for verb in (ls, info):  # ros2cli's NodeStrategy options
+        verb.add_argument(
+            "--spin-time",
+            type=float,
+            default=DEFAULT_SPIN_TIME,
+            help="Spin time in seconds to wait for discovery (only applies when not using an already running daemon)",
+        )
+        verb.add_argument("--no-daemon", action="store_true", help="Do not spawn nor use an already running daemon")
     args = p.parse_args(argv)
+    if args.cmd == "list":
+        with graph_view("ros2node", args.no_daemon, args.spin_time) as graph:
+            names = sorted(full for full in _node_names(graph) if args.all or not _hidden(full))
+        print(len(names) if args.count_nodes else "\n".join(names))
+        return 0
+    target = absolute(args.node_name)
+    graph = None if args.no_daemon else daemon_graph()
+    if graph is not None:
+        return _daemon_info(graph, target, args.include_hidden)
     with cli_node("ros2node") as node:
-        if args.cmd == "list":
-            discover(node)
-            names = sorted(full for full in _node_names(node) if args.all or not _hidden(full))
-            print(len(names) if args.count_nodes else "\n".join(names))
-            return 0
-        return _info(node, absolute(args.node_name), args.include_hidden)
+        return _info(node, target, args.include_hidden)
 
 
 def _node_names(node: Any) -> list[str]:
@@ -41,6 +57,38 @@ def _hidden(name: str) -> bool:
     """ros2node's ``_is_hidden_name``: a part of the name starts with ``_`` (hidden nodes, and the topics and
     services an action is made of: ``/x/_action/feedback``)."""
     return any(part.startswith("_") for part in name.split("/"))
+
+
+def _daemon_info(graph: DaemonGraph, target: str, include_hidden: bool) -> int:
+    """``info`` from the daemon's graph: a node not in it is looked for again for :data:`SETTLE_SEC` (it may
+    be starting), then "Unable to find node"."""
+    deadline = time.monotonic() + SETTLE_SEC
+    while target not in _node_names(graph) and time.monotonic() < deadline:
+        time.sleep(0.05)
+        graph = daemon_graph(start=False) or graph
+    count = _node_names(graph).count(target)
+    if count == 0:
+        print(f"Unable to find node '{target}'", file=sys.stderr)
+        return 1
+    ns, _, name = target.rpartition("/")
+    found = graph.endpoints(name, ns or "/")
+    _print_info(target, count, [found[s] for s in SECTIONS], include_hidden)
+    return 0
+
+
+def _print_info(target: str, count: int, lists: list[list[tuple[str, list[str]]]], include_hidden: bool) -> None:
+    """ros2node's ``info`` output: a warning when several nodes have the name, then each section."""
+    if count > 1:
+        print(
+            f'There are {count} nodes in the graph with the exact name "{target}". '
+            "You are seeing information about only one of them.",
+            file=sys.stderr,
+        )
+    print(target)
+    for title, found in zip(TITLES, lists, strict=True):
+        print(f"  {title}:")
+        shown = [(n, t) for n, t in sorted(found) if include_hidden or not _hidden(n)]
+        print(*[f"    {n}: {', '.join(t)}" for n, t in shown], sep="\n")
 
 
 def _info(node: Any, target: str, include_hidden: bool) -> int:
@@ -71,15 +119,5 @@ def _info(node: Any, target: str, include_hidden: bool) -> int:
 
     # its endpoints arrive after the node itself (services last): until its own lists are still
     discover(node, 0.0, QUIET_SEC, watch=endpoints)
-    if count > 1:
-        print(
-            f'There are {count} nodes in the graph with the exact name "{target}". '
-            "You are seeing information about only one of them.",
-            file=sys.stderr,
-        )
-    print(target)
-    for title, getter in sections:
-        print(f"  {title}:")
-        shown = [(n, t) for n, t in sorted(getter(name, ns)) if include_hidden or not _hidden(n)]
-        print(*[f"    {n}: {', '.join(t)}" for n, t in shown], sep="\n")
+    _print_info(target, count, [list(getter(name, ns)) for _title, getter in sections], include_hidden)
     return 0

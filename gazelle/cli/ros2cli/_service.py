@@ -7,7 +7,7 @@ import sys
 import time
 from typing import Any
 
-from ._graph import absolute, cli_node, discover, is_hidden, spin_once, wait_until
+from ._graph import DEFAULT_SPIN_TIME, absolute, cli_node, graph_view, is_hidden, spin_once
 from ._messages import InterfaceError, get_interface, parse_values, set_fields
 
 
@@ -30,12 +30,20 @@ def service_main(argv: list[str]) -> int:
     source.add_argument("values", nargs="?", default="{}", help="the request's fields in YAML")
     source.add_argument("--stdin", action="store_true", help="read the YAML values from standard input")
     call.add_argument("-r", "--rate", type=float, default=None, help="repeat the call at this rate in Hz")
+    for verb in (ls, typ, find):  # ros2cli's NodeStrategy options
+        verb.add_argument(
+            "--spin-time",
+            type=float,
+            default=DEFAULT_SPIN_TIME,
+            help="Spin time in seconds to wait for discovery (only applies when not using an already running daemon)",
+        )
+        verb.add_argument("--no-daemon", action="store_true", help="Do not spawn nor use an already running daemon")
     args = p.parse_args(argv)
     try:
-        with cli_node("ros2service") as node:
-            if args.cmd == "call":
+        if args.cmd == "call":
+            with cli_node("ros2service") as node:
                 return _call(node, args)
-            discover(node)
+        with graph_view("ros2service", args.no_daemon, args.spin_time) as node:
             services = {n: t for n, t in node.get_service_names_and_types()}
             if args.cmd == "list":
                 shown = {n: t for n, t in services.items() if args.include_hidden_services or not is_hidden(n)}
@@ -46,8 +54,6 @@ def service_main(argv: list[str]) -> int:
                 return 0
             if args.cmd == "type":
                 name = absolute(args.service_name)
-                wait_until(node, lambda: name in dict(node.get_service_names_and_types()))
-                services = dict(node.get_service_names_and_types())
                 if name not in services:
                     print(f"Unknown service '{name}'", file=sys.stderr)
                     return 1

@@ -16,6 +16,7 @@ from ._graph import (
     absolute,
     cli_node,
     discover,
+    graph_view,
     is_hidden,
     matching_qos,
     offers,
@@ -55,10 +56,13 @@ def main(argv: list[str]) -> int:
     stderr for a type or value that does not fit, 0 on Ctrl-C."""
     args = parser().parse_args(argv)
     try:
+        if args.cmd in ("list", "find"):  # the graph alone: the daemon's when it runs
+            with graph_view("ros2topic", args.no_daemon, args.spin_time) as graph:
+                return (_list if args.cmd == "list" else _find)(graph, args)
         named = {"node_name": getattr(args, "node_name", None), "use_sim_time": getattr(args, "use_sim_time", False)}
         with cli_node("ros2topic", **named) as node:
             verbs = {"list": _list, "echo": _echo, "hz": _hz, "info": _info, "type": _type, "pub": _pub}
-            verbs.update({"bw": _bw, "delay": _delay, "find": _find})
+            verbs.update({"bw": _bw, "delay": _delay})
             return verbs[args.cmd](node, args)
     except InterfaceError as err:
         print(str(err), file=sys.stderr)
@@ -84,11 +88,18 @@ def _add_listing_verbs(sub: Any) -> None:
     ls.add_argument("-t", "--show-types", action="store_true")
     ls.add_argument("-c", "--count-topics", action="store_true")
     ls.add_argument("--include-hidden-topics", action="store_true")
-    ls.add_argument("--spin-time", type=float, default=1.5)
     find = sub.add_parser("find", help="Output a list of available topics of a given type")
     find.add_argument("topic_type")
     find.add_argument("-c", "--count-topics", action="store_true")
     find.add_argument("--include-hidden-topics", action="store_true")
+    for verb in (ls, find):  # ros2cli's NodeStrategy options
+        verb.add_argument(
+            "--spin-time",
+            type=float,
+            default=DEFAULT_SPIN_TIME,
+            help="Spin time in seconds to wait for discovery (only applies when not using an already running daemon)",
+        )
+        verb.add_argument("--no-daemon", action="store_true", help="Do not spawn nor use an already running daemon")
 
 
 def _add_echo(sub: Any) -> None:
@@ -206,9 +217,8 @@ def _nonnegative_int(text: str) -> int:
 
 
 def _list(node: Any, args: argparse.Namespace) -> int:
-    """``list``: discover for ``--spin-time`` (ros2cli's direct node; there is no daemon), then the names,
-    sorted, with ``[types]`` for ``-t``."""
-    discover(node, args.spin_time)
+    """``list``: the names in the graph (the daemon's, or discovered for ``--spin-time``), sorted, with
+    ``[types]`` for ``-t``."""
     topics = _topic_types(node, args.include_hidden_topics)
     if args.count_topics:
         print(len(topics))
@@ -514,8 +524,7 @@ def _delay(node: Any, args: argparse.Namespace) -> int:
 
 
 def _find(node: Any, args: argparse.Namespace) -> int:
-    """``find TYPE``: the topics of that type, sorted."""
-    discover(node)
+    """``find TYPE``: the topics of that type in the graph, sorted."""
     found = sorted(n for n, types in _topic_types(node, args.include_hidden_topics).items() if args.topic_type in types)
     if args.count_topics:
         print(len(found))
