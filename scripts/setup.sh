@@ -9,7 +9,15 @@ VENV="$ROOT/.venv"
 say() { printf '[setup] %s\n' "$*"; }
 # `./demo.sh` without --snapshot/--record needs no browser: GAZELLE_SETUP_NO_BROWSER=1 skips chromium;
 # GAZELLE_SETUP_INTERFACES=first builds only the first tier of interface packages (step 4), what the demo needs
+# --cpp also installs rclcpp, rclcpp_action and rclcpp_lifecycle (step 6), which are otherwise built on first need
 UV_VERSION=0.13.9
+CPP=""
+for arg in "$@"; do
+  case "$arg" in
+    --cpp) CPP=1 ;;
+    *) echo "usage: $0 [--cpp]" >&2; exit 2 ;;
+  esac
+done
 SETUP_START=$SECONDS
 step_start=$SECONDS
 took() { say "$1 took $((SECONDS - step_start)) s"; step_start=$SECONDS; }
@@ -144,5 +152,15 @@ if ! grep -q "gazelle: what /opt/ros/jazzy/setup.bash gives a shell" "$VENV/bin/
 export ROS_DISTRO ROS_VERSION ROS_PYTHON_VERSION
 . "$VIRTUAL_ENV/local_setup.sh"
 ACTIVATE
+fi
+# 6. C++ nodes: rclcpp and friends from their released sources against the wheels (cpp/,
+#    scripts/build_cpp.sh), built when a workspace's package first finds them (their stub configs, written
+#    here in a few milliseconds) or now with --cpp; cached by content outside the clone.
+if [[ -n "$CPP" ]]; then
+  step_start=$SECONDS
+  "$ROOT/scripts/build_cpp.sh" "$VENV" build
+  took "the C++ tier"
+else
+  "$ROOT/scripts/build_cpp.sh" "$VENV" stubs
 fi
 say "ready in $((SECONDS - SETUP_START)) s"
