@@ -112,14 +112,11 @@ prepare_venv() {
   done
 }
 
-# class_loader (rclcpp_components' loader) logs through console_bridge: Debian's, as setup.sh installs its
-# build tools.
+# class_loader (rclcpp_components' loader) logs through Debian's console_bridge: set-up installs it
+# (scripts/setup.sh --cpp-debian), or says in one line why it cannot.
 need_console_bridge() {
   compgen -G "/usr/lib/*/console_bridge/cmake/console_bridge-config.cmake" >/dev/null && return 0
-  local sudo=""
-  [[ $(id -u) -eq 0 ]] || sudo="sudo"
-  echo "cpp: installing Debian's libconsole-bridge-dev" >&2
-  $sudo apt-get update -qq >&2 && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq libconsole-bridge-dev >&2
+  "$REPO_ROOT/scripts/setup.sh" --cpp-debian >&2
 }
 
 if [[ "$MODE" == stubs ]]; then
