@@ -91,7 +91,7 @@ def sim_seconds(text: str) -> float:
 
 
 @pytest.mark.slow
-def test_cpp_talker_server_lifecycle_node_and_component_talk_to_rclpy_on_sim_time(tmp_path, sim_factory, ros_client):
+def test_cpp_talker_server_lifecycle_node_and_component_talk_to_rclpy_on_sim_time(tmp_path, sim_factory, ros_client, cpp_tier):
     ws = build_workspace(tmp_path, "cpp_nodes")
     sim_factory("--no-viewer", "--rtf", "2")
     node = ros_client.node
@@ -182,7 +182,7 @@ def _spawn_seed_robot(ros_client, sim: Proc) -> None:
 
 @pytest.mark.slow
 @pytest.mark.serial  # real time: the square is driven on a 10 Hz timer
-def test_cpp_square_movement_drives_the_seed_robot_like_the_python_one(tmp_path, sim_factory, ros_client):
+def test_cpp_square_movement_drives_the_seed_robot_like_the_python_one(tmp_path, sim_factory, ros_client, cpp_tier):
     """The seed's square_movement ported to rclcpp drives one side and turn within test_square's tolerance
     (1.00 m +- 0.03, 90 deg +- 3), on sim time at twice the wall clock's speed."""
     ws = build_workspace(tmp_path, "cpp_square")
