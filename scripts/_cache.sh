@@ -8,30 +8,11 @@
 
 CACHE_HOME="${GAZELLE_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/gazelle}"
 
-# cache_dir DIR: DIR (and each missing folder above it) created owner-only, then checked, at every use, as
-# gazelle's Python caches are (gazelle/_files.py, docs/security.md): DIR's real path is ours with no group or
-# other write, and every folder above it is ours or root's with no group or other write unless sticky (/tmp).
-# 1 otherwise, with CACHE_WHY saying why.
+# cache_dir DIR: DIR created owner-only, or an existing one checked to be ours and not writable by others.
 cache_dir() {
-  local dir="$1" missing=() d uid mode me
-  me="$(id -u)"
-  CACHE_WHY=""
-  d="$dir"
-  while [[ ! -e "$d" ]]; do missing=("$d" "${missing[@]}"); d="$(dirname "$d")"; done
-  for d in "${missing[@]}"; do mkdir -m 700 "$d" 2>/dev/null || [[ -d "$d" ]] || { CACHE_WHY="cannot create $d"; return 1; }; done
-  d="$(cd "$dir" 2>/dev/null && pwd -P)" || { CACHE_WHY="$dir is not a folder"; return 1; }
-  read -r uid mode < <(stat -c '%u %a' "$d")
-  [[ "$uid" == "$me" ]] || { CACHE_WHY="$d belongs to another user (uid $uid)"; return 1; }
-  (( (8#$mode & 8#022) == 0 )) || { CACHE_WHY="others may write to $d (mode $mode)"; return 1; }
-  while [[ "$d" != / ]]; do
-    d="$(dirname "$d")"
-    read -r uid mode < <(stat -c '%u %a' "$d")
-    [[ "$uid" == "$me" || "$uid" == 0 ]] || { CACHE_WHY="$d above it belongs to another user (uid $uid)"; return 1; }
-    if (( (8#$mode & 8#022) != 0 && (8#$mode & 8#1000) == 0 )); then
-      CACHE_WHY="others may write to $d above it (mode $mode)"
-      return 1
-    fi
-  done
+  mkdir -p -m 700 "$1" 2>/dev/null || return 1
+  [[ "$(stat -c %u "$1")" == "$(id -u)" ]] || return 1
+  (( (8#$(stat -c %a "$1") & 8#022) == 0 )) || return 1
 }
 
 # cache_usable WHO ROOT ENTRY WHAT_NEXT: 0 when ENTRY exists, is ours and its files.tar matches its checksum;
@@ -39,12 +20,8 @@ cache_dir() {
 cache_usable() {
   local who="$1" root="$2" entry="$3" next="$4"
   [[ -d "$entry" ]] || return 1
-  if ! cache_dir "$root"; then
-    echo "$who: cache $root is not private ($CACHE_WHY); not used" >&2
-    return 1
-  fi
-  if [[ "$(stat -c %u "$entry")" != "$(id -u)" ]] || (( (8#$(stat -c %a "$entry") & 8#022) != 0 )); then
-    echo "$who: cached entry $entry belongs to another user or is writable by others; not used" >&2
+  if ! cache_dir "$root" || [[ "$(stat -c %u "$entry")" != "$(id -u)" ]]; then
+    echo "$who: cache $root belongs to another user or is writable by others; not used" >&2
     return 1
   fi
   if [[ -f "$entry/files.tar" && -f "$entry/files.sha256" ]] &&

@@ -28,6 +28,8 @@ MODE="$2"
 REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # shellcheck source=scripts/_cache.sh
 source "$REPO_ROOT/scripts/_cache.sh"
+# shellcheck source=scripts/_cache_private.sh
+source "$REPO_ROOT/scripts/_cache_private.sh"  # every folder above the cache checked too, at every use
 PY="$VENV_DIR/bin/python"
 BUILD_ROOT="$REPO_ROOT/build/cpp"
 STAMP="$VENV_DIR/.gazelle_cpp.sha256"
@@ -48,7 +50,7 @@ DEP_PKGS=(ament_cmake ament_index_cpp builtin_interfaces rcl rcl_action rcl_inte
 compute_hash() {
   {
     (cd "$REPO_ROOT" && find cpp -type f -print0 | LC_ALL=C sort -z | xargs -0 sha256sum &&
-      sha256sum scripts/build_cpp.sh scripts/_cache.sh)
+      sha256sum scripts/build_cpp.sh scripts/_cache.sh scripts/_cache_private.sh)
     "$PY" -c 'import os, sys; print("python", sys.version.split()[0], os.path.realpath(sys.executable))'
     g++ --version 2>/dev/null | head -n1
     local d xml
@@ -144,6 +146,10 @@ fi
 
 restore() {
   local start=$SECONDS old_prefix
+  if ! cache_dir "$CACHE_ROOT"; then
+    echo "build_cpp: cache $CACHE_ROOT is not private ($CACHE_WHY); not used" >&2
+    return 1
+  fi
   cache_usable build_cpp "$CACHE_ROOT" "$ENTRY" rebuilding || return 1
   if [[ ! -f "$ENTRY/prefix" ]]; then
     echo "build_cpp: cached entry $ENTRY is incomplete or corrupt; rebuilding" >&2

@@ -91,7 +91,9 @@ def sim_seconds(text: str) -> float:
 
 
 @pytest.mark.slow
-def test_cpp_talker_server_lifecycle_node_and_component_talk_to_rclpy_on_sim_time(tmp_path, sim_factory, ros_client, cpp_tier):
+def test_cpp_talker_server_lifecycle_node_and_component_talk_to_rclpy_on_sim_time(
+    tmp_path, sim_factory, ros_client, cpp_tier
+):
     ws = build_workspace(tmp_path, "cpp_nodes")
     sim_factory("--no-viewer", "--rtf", "2")
     node = ros_client.node

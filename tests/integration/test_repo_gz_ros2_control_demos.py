@@ -44,7 +44,9 @@ def test_gz_ros2_control_diff_drive_demo_builds_spawns_controllers_and_drives(tm
 
         drive_a_metre(ros_client, "diff_drive", send, odom, speed=0.5)
         # the README's C++ example: 0.1 m/s and 0.1 rad/s, every 50 ms, until stopped
-        example = shell(f"cd {ws} && source install/setup.bash && ros2 run gz_ros2_control_demos example_diff_drive", "cpp")
+        example = shell(
+            f"cd {ws} && source install/setup.bash && ros2 run gz_ros2_control_demos example_diff_drive", "cpp"
+        )
         try:
 
             def circling() -> bool:

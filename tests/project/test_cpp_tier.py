@@ -73,7 +73,9 @@ def test_a_cache_others_could_swap_is_not_used_whoever_made_it(tmp_path: Path) -
     finally:
         shared.chmod(0o755)
     assert done.returncode == 3, done.stdout + done.stderr
-    assert f"build_cpp: cache {cache}/cpp is not private (others may write to {shared} above it (mode 777))" in done.stderr
+    assert (
+        f"build_cpp: cache {cache}/cpp is not private (others may write to {shared} above it (mode 777))" in done.stderr
+    )
     assert not (venv / "lib" / "librclcpp.so").exists()
     assert entry.is_dir()  # reported and left alone, not removed
 
@@ -107,7 +109,9 @@ def test_the_tiers_debian_package_comes_from_set_up_or_one_line_says_why_not(tmp
     assert done.stderr.splitlines() == [
         "[setup] cannot install Debian packages libconsole-bridge-dev: no apt-get here; install them and run again"
     ]
-    failing_apt = 'echo "apt-get $*" >>"$HOME/apt.calls"; [[ $1 == update ]] || { echo "E: Unable to locate package"; exit 100; }'
+    failing_apt = (
+        'echo "apt-get $*" >>"$HOME/apt.calls"; [[ $1 == update ]] || { echo "E: Unable to locate package"; exit 100; }'
+    )
     setup, env = _setup_copy(tmp_path / "again", {"apt-get": failing_apt})
     done = subprocess.run(["bash", str(setup), "--cpp-debian"], capture_output=True, text=True, env=env, timeout=60)
     assert done.returncode == 1, done.stdout + done.stderr
