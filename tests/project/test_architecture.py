@@ -465,7 +465,6 @@ MIXIN_CHAINS_TO_UNDO = {
     "gazelle/physics/_state.py:WorldState": ("WorldQueries",),
     "gazelle/planning/_planner.py:ArmPlanner": ("RobotScene",),
     "gazelle/viewer/_viewer.py:Viewer": ("ViewerOverlays",),
-    "gazelle/description/_urdf.py:_Reader": ("ElementReader",),
 }
 SUBCLASSES_BY_DESIGN = {
     # ur_controllers' ScaledJointTrajectoryController is a subclass of ros2_controllers' JTC upstream too
