@@ -13,13 +13,13 @@ MoveGroup action goal. Exit status 0 when the arm got there; 1 with MoveIt's err
 from __future__ import annotations
 
 import argparse
-import math
 import sys
 import time
 from typing import Any
 
 from .._errors import SimError
 from ..description import ModelLoadError, Semantics, load_string
+from ..estimation import quaternion_from_rpy
 
 TOLERANCE_M = 1e-4
 TOLERANCE_RAD = 1e-3
@@ -28,19 +28,6 @@ TOLERANCE_RAD = 1e-3
 
 class ArmError(SimError):
     """A request this command refuses before anything moves."""
-
-
-def quaternion(roll: float, pitch: float, yaw: float) -> tuple[float, float, float, float]:
-    """(x, y, z, w) of fixed-axis roll, pitch, yaw (tf's quaternion_from_euler)."""
-    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
-    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
-    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
-    return (
-        sr * cp * cy - cr * sp * sy,
-        cr * sp * cy + sr * cp * sy,
-        cr * cp * sy - sr * sp * cy,
-        cr * cp * cy + sr * sp * sy,
-    )
 
 
 def semantics(srdf: str) -> Semantics:
@@ -236,7 +223,7 @@ def _pose_goal(link: str, frame: str, pose: tuple[float, float, float, float, fl
     position.constraint_region.primitive_poses = [target]
     orientation = OrientationConstraint(link_name=link, weight=1.0)
     orientation.header.frame_id = frame
-    q = quaternion(roll, pitch, yaw)
+    q = quaternion_from_rpy(roll, pitch, yaw)
     orientation.orientation.x, orientation.orientation.y, orientation.orientation.z, orientation.orientation.w = q
     orientation.absolute_x_axis_tolerance = TOLERANCE_RAD
     orientation.absolute_y_axis_tolerance = TOLERANCE_RAD
