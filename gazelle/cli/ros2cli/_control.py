@@ -8,10 +8,13 @@ from __future__ import annotations
 import argparse
 import sys
 import time
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..._errors import SimError
 from ._graph import cli_node, spin_once
+
+if TYPE_CHECKING:
+    from rclpy.node import Node
 
 VERBS = (
     "list_controllers",
@@ -102,7 +105,7 @@ def main(argv: list[str]) -> int:
 class _Manager:
     """Calls to one controller manager's services, each waiting for the service and the reply."""
 
-    def __init__(self, node: Any, args: argparse.Namespace) -> None:
+    def __init__(self, node: Node, args: argparse.Namespace) -> None:
         """The controller manager a ``ros2 control`` verb talks to (``-c``, default ``/controller_manager``), with
         the verb's service timeout."""
         self.node = node

@@ -4,9 +4,12 @@ from __future__ import annotations
 
 import argparse
 import sys
-from typing import Any
+from typing import TYPE_CHECKING
 
 from ._graph import QUIET_SEC, absolute, cli_node, discover, wait_until
+
+if TYPE_CHECKING:
+    from rclpy.node import Node
 
 
 def main(argv: list[str]) -> int:
@@ -32,7 +35,7 @@ def main(argv: list[str]) -> int:
         return _info(node, absolute(args.node_name), args.include_hidden)
 
 
-def _node_names(node: Any) -> list[str]:
+def _node_names(node: Node) -> list[str]:
     """Every node in the graph by its full name (a name twice when two nodes have it)."""
     return [f"{ns.rstrip('/')}/{n}" for n, ns in node.get_node_names_and_namespaces()]
 
@@ -43,7 +46,7 @@ def _hidden(name: str) -> bool:
     return any(part.startswith("_") for part in name.split("/"))
 
 
-def _info(node: Any, target: str, include_hidden: bool) -> int:
+def _info(node: Node, target: str, include_hidden: bool) -> int:
     """``info``: the node's subscribers, publishers, service servers and clients, action servers and clients,
     each under its title with an empty line when there are none; hidden names only with
     ``--include-hidden``; a warning on stderr when several nodes have the name, as upstream."""
