@@ -15,11 +15,14 @@ from __future__ import annotations
 import argparse
 import sys
 import time
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .._errors import SimError
 from ..description import ModelLoadError, Semantics, load_string
 from ..estimation import quaternion_from_rpy
+
+if TYPE_CHECKING:
+    from rclpy.node import Node
 
 TOLERANCE_M = 1e-4
 TOLERANCE_RAD = 1e-3
@@ -170,7 +173,7 @@ def _served(client: Any, timeout: float) -> bool:
     return True
 
 
-def _parameters(node: Any, names: list[str], timeout: float) -> list[str]:
+def _parameters(node: Node, names: list[str], timeout: float) -> list[str]:
     """move_group's parameters ``names`` as strings (its URDF and SRDF); an ArmError when no move_group answers
     within ``timeout`` or it has no robot yet."""
     import rclpy
@@ -181,9 +184,10 @@ def _parameters(node: Any, names: list[str], timeout: float) -> list[str]:
         raise ArmError(f"no move_group is running (/move_group/get_parameters did not answer in {timeout:g} s)")
     future = client.call_async(GetParameters.Request(names=names))
     rclpy.spin_until_future_complete(node, future, timeout_sec=timeout)
-    if not future.done() or future.result() is None:
+    reply = future.result() if future.done() else None
+    if reply is None:
         raise ArmError("move_group did not say its parameters")
-    values = [v.string_value for v in future.result().values]
+    values = [v.string_value for v in reply.values]
     if len(values) != len(names):  # a move_group with no robot yet leaves them out
         raise ArmError(
             f"move_group has no robot yet (its parameters {', '.join(names)} are not set): give it the robot's "
@@ -234,7 +238,7 @@ def _pose_goal(link: str, frame: str, pose: tuple[float, float, float, float, fl
     return constraints
 
 
-def _run(node: Any, args: argparse.Namespace) -> int:
+def _run(node: Node, args: argparse.Namespace) -> int:
     """Build the MoveGroup goal (joint constraints for a named state or joint values, position and orientation
     constraints for a pose), send it, and print the plan's duration and planning time, or MoveIt's error code and
     message."""

@@ -15,10 +15,13 @@ from __future__ import annotations
 import sys
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ._interfaces import resolve_interface
 from ._names import gz_topic_on_ros
+
+if TYPE_CHECKING:
+    from rclpy.node import Node
 
 BRIDGE_DIRECTIONS = ("@", "[", "]")
 
@@ -216,7 +219,7 @@ class _TypeRelays:
     may be spawned after the bridge starts), a relay on the same name converts between the two types, in
     the entry's direction, as the bridge would."""
 
-    def __init__(self, node: Any, entries: list[BridgeEntry], qos: Any, keep: list[Any]) -> None:
+    def __init__(self, node: Node, entries: list[BridgeEntry], qos: Any, keep: list[Any]) -> None:
         """Relays for ros_gz_bridge YAML entries whose ROS type differs from the one gazelle publishes (the YAML's
         ``ros_type_name`` is what the user's nodes expect); checked every 0.5 s until every topic has appeared."""
         self.node, self.pending, self.qos, self.keep = node, list(entries), qos, keep
