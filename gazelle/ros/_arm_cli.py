@@ -15,14 +15,18 @@ from __future__ import annotations
 import argparse
 import sys
 import time
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from .._errors import SimError
 from ..description import ModelLoadError, Semantics, load_string
 from ..estimation import quaternion_from_rpy
 
 if TYPE_CHECKING:
+    from moveit_msgs.msg import Constraints
+    from rclpy.client import Client
     from rclpy.node import Node
+
+    from ..description import Group
 
 TOLERANCE_M = 1e-4
 TOLERANCE_RAD = 1e-3
@@ -76,7 +80,7 @@ def group_joints(sem: Semantics, urdf: str, group: str) -> list[str]:
     return list(dict.fromkeys(joints))
 
 
-def _group(sem: Semantics, name: str) -> Any:
+def _group(sem: Semantics, name: str) -> Group:
     """The SRDF's planning group ``name``; an ArmError listing the groups when there is none."""
     for g in sem.groups:
         if g.name == name:
@@ -162,7 +166,7 @@ def arm_main(argv: list[str]) -> int:
         try_shutdown()
 
 
-def _served(client: Any, timeout: float) -> bool:
+def _served(client: Client, timeout: float) -> bool:
     """Whether ``client``'s service is found within ``timeout`` s, looked for every 10 ms (rclpy's
     ``wait_for_service`` looks every 0.25 s, a quarter of a second added to most answers)."""
     deadline = time.monotonic() + timeout
@@ -196,7 +200,7 @@ def _parameters(node: Node, names: list[str], timeout: float) -> list[str]:
     return values
 
 
-def _joint_goal(values: dict[str, float]) -> Any:
+def _joint_goal(values: dict[str, float]) -> Constraints:
     """moveit_msgs/Constraints: each joint at its value, within TOLERANCE_RAD."""
     from moveit_msgs.msg import Constraints, JointConstraint
 
@@ -210,7 +214,7 @@ def _joint_goal(values: dict[str, float]) -> Any:
     return constraints
 
 
-def _pose_goal(link: str, frame: str, pose: tuple[float, float, float, float, float, float]) -> Any:
+def _pose_goal(link: str, frame: str, pose: tuple[float, float, float, float, float, float]) -> Constraints:
     """moveit_msgs/Constraints: ``link`` within TOLERANCE_M of (x, y, z) and TOLERANCE_RAD of (roll, pitch,
     yaw) in ``frame`` (a sphere region, absolute axis tolerances)."""
     from geometry_msgs.msg import Pose
