@@ -15,7 +15,7 @@ import logging
 import sys
 import threading
 import time
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol
 
 from rclpy._rclpy_pybind11 import RCLError
 from rclpy.context import Context
@@ -56,7 +56,13 @@ def silence_half_made_objects() -> None:
     sys.unraisablehook = lambda _unraisable: None
 
 
-def spin_until_shutdown(executor: Executor, node: Node) -> None:
+class Spinning(Protocol):
+    """What :func:`spin_until_shutdown` asks of an executor: to spin until it is stopped."""
+
+    def spin(self) -> None: ...
+
+
+def spin_until_shutdown(executor: Spinning, node: Node) -> None:
     """Spin until Ctrl-C (or SIGTERM) shuts the node's context down, however the shutdown lands: as an
     interrupt, as rclpy's ExternalShutdownException, or as the RCLError "the given context is not valid"
     when it came while the executor was making its next wait set (seen under load). Any other rcl error,
