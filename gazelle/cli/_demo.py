@@ -18,7 +18,10 @@ import threading
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from rclpy.node import Node
 
 REPO = Path(__file__).resolve().parents[2]
 EXAMPLE = REPO / "examples" / "simple_robot" / "simple_robot"
@@ -166,7 +169,7 @@ def _viewer_url(sim: _Child) -> str | None:
 class _GroundTruth:
     """/odom heard, and the robot's pose asked of /get_entity_state every 20 ms (a thread of its own)."""
 
-    def __init__(self, node: Any) -> None:
+    def __init__(self, node: Node) -> None:
         """Sample the robot's true pose (gazebo_msgs GetEntityState) beside its odometry (``/odom``), to print how
         far they drift apart over the square."""
         from gazebo_msgs.srv import GetEntityState
@@ -296,7 +299,7 @@ def _report(out: Path, truth_s: list[Sample], odom_s: list[Sample], url: str | N
     return True
 
 
-def _publish_description(node: Any) -> None:
+def _publish_description(node: Node) -> None:
     """Step 2: the seed robot's xacro expanded, latched on robot_description (as robot_state_publisher)."""
     import xacro
     from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy

@@ -10,12 +10,17 @@ import subprocess
 import sys
 import threading
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 from ..description import Model, ModelLoadError, World, load
 from ..sim import ReplayRecorder, start_signal_watchdog
 from ..worlds import default_world
 from ._world_file import INSTALLED_WORLDS, find_world_file
+
+if TYPE_CHECKING:
+    from ..ros import RosBridge
+    from ..sim import Simulation
+    from ..viewer import Viewer
 
 GIL_SWITCH_INTERVAL_SEC = 0.0002
 SHUTDOWN_DEADLINE_SEC = 4.5
@@ -86,7 +91,7 @@ def with_named_poses(world: World, files: tuple[Path, ...]) -> World:
     return dataclasses.replace(world, named_poses=tuple(places))
 
 
-def _name_worlds(sim: Any, path: Path | None) -> None:
+def _name_worlds(sim: Simulation, path: Path | None) -> None:
     """The first LoadWorld is the world this server starts with: a LoadWorld of its URI (``file://`` and the
     file's real path, or ``empty.sdf`` for the embedded default) takes it again without reading anything, and
     the installed worlds are loadable by their bare names (as ``gazelle sim empty.sdf`` finds them)."""
@@ -195,7 +200,7 @@ def _install_signal_handlers() -> tuple[threading.Event, threading.Event]:
 class _Replays:
     """``--replay FILE``: the recorder and where (and as what) its replay is written."""
 
-    def __init__(self, recorder: Any, path: Path, world_name: str, force: bool = False) -> None:
+    def __init__(self, recorder: ReplayRecorder, path: Path, world_name: str, force: bool = False) -> None:
         self.recorder, self.path, self.world_name, self.force = recorder, path, world_name, force
         self.page = None
         if path.suffix.lower() in (".html", ".htm"):
@@ -216,7 +221,7 @@ class _Replays:
             print(f"gazelle: the replay was not written: {err}", file=sys.stderr)
 
 
-def _start_viewer(sim: Any, host: str, port: int, allow_origins: tuple[str, ...]) -> Any:
+def _start_viewer(sim: Simulation, host: str, port: int, allow_origins: tuple[str, ...]) -> Viewer | None:
     """The browser viewer, started; None (said on stderr) if its port cannot be had."""
     from ..viewer import Viewer
 
@@ -240,7 +245,7 @@ def _start_foxglove(host: str, port: int, allow_origins: tuple[str, ...]) -> sub
 
 
 def _serve(
-    stop: threading.Event, write_replay: threading.Event, sim: Any, bridge: Any, replays: _Replays | None
+    stop: threading.Event, write_replay: threading.Event, sim: Simulation, bridge: RosBridge, replays: _Replays | None
 ) -> int:
     """Until a signal asks to stop (0) or a part of the server died (1, said on stderr): never a deaf
     server that looks alive."""
@@ -261,7 +266,13 @@ def _serve(
     return 0
 
 
-def _shut_down(sim: Any, bridge: Any, view: Any, fox: subprocess.Popen[bytes] | None, replays: _Replays | None) -> None:
+def _shut_down(
+    sim: Simulation,
+    bridge: RosBridge,
+    view: Viewer | None,
+    fox: subprocess.Popen[bytes] | None,
+    replays: _Replays | None,
+) -> None:
     """The user asked to stop: whatever a thread is in the middle of, the process ends within
     SHUTDOWN_DEADLINE_SEC (an orderly shutdown takes ~0.3 s)."""
     import time

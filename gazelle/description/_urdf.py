@@ -37,7 +37,7 @@ Classic and gz-sim use):
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields, replace
+from dataclasses import fields, replace
 
 from lxml import etree
 
@@ -92,22 +92,28 @@ _LINK_FLAGS: dict[str, tuple[str, bool]] = {
 _MODEL_FLAGS: dict[str, str] = {"static": "static", "self_collide": "self_collide"}
 
 
-@dataclass
-class _Reader(ElementReader):
-    """Reads a whole ``<robot>``: its ``<gazebo>`` blocks and ``<ros2_control>`` on top of the elements."""
+class _Reader:
+    """Reads a whole ``<robot>``: its ``<gazebo>`` blocks and ``<ros2_control>``, the elements (links, joints,
+    materials, values) through the :class:`ElementReader` it owns."""
+
+    def __init__(self, elements: ElementReader) -> None:
+        self.elements = elements
+        """Reads the URDF elements and reports every problem with its location."""
 
     # ---- <gazebo>
     def plugin(self, element: etree._Element) -> Plugin | None:
         """A ``<plugin name filename>`` with its whole element as config."""
         filename = element.get("filename")
         if not filename:
-            self.error(
+            self.elements.error(
                 ErrorCode.ATTRIBUTE_MISSING,
                 f"<plugin name={element.get('name', '')!r}> has no 'filename' attribute",
                 element,
             )
             return None
-        return Plugin(element.get("name", ""), filename, to_config(element, self.source), self.loc(element))
+        return Plugin(
+            element.get("name", ""), filename, to_config(element, self.elements.source), self.elements.loc(element)
+        )
 
     def sensor(self, element: etree._Element) -> Sensor | None:
         """A ``<sensor type name>`` inside ``<gazebo reference=link>``: what sdformat's URDF parser copies into
@@ -115,10 +121,10 @@ class _Reader(ElementReader):
         numbers, metres and radians) is in the link's frame; ``<update_rate>`` 0 or absent means every step
         for Gazebo's sensors; the whole element is kept (``config``) for the sensor's system to read its own
         block (``<ray>``, ``<camera>``, noise) and its ``<plugin>``s, which gazebo_ros's sensor plugins are."""
-        name = self.name(element, "<sensor>")
+        name = self.elements.name(element, "<sensor>")
         stype = element.get("type")
         if not stype:
-            self.error(ErrorCode.ATTRIBUTE_MISSING, f"sensor '{name}' has no 'type' attribute", element)
+            self.elements.error(ErrorCode.ATTRIBUTE_MISSING, f"sensor '{name}' has no 'type' attribute", element)
         if name is None or not stype:
             return None
         pose = Pose()
@@ -126,13 +132,13 @@ class _Reader(ElementReader):
         if pose_el is not None:
             values = parse_floats(pose_el.text or "0 0 0 0 0 0", 6)
             if values is None:
-                self.error(
+                self.elements.error(
                     ErrorCode.VALUE_INVALID, f"sensor '{name}' <pose> needs 6 numbers, got {pose_el.text!r}", pose_el
                 )
             else:
                 pose = Pose.from_xyz_rpy((values[0], values[1], values[2]), (values[3], values[4], values[5]))
-        rate = self.gazebo_float(element, "update_rate")
-        always_on = self.gazebo_flag(element, "always_on")
+        rate = self.elements.gazebo_float(element, "update_rate")
+        always_on = self.elements.gazebo_flag(element, "always_on")
         plugins = [p for p in (self.plugin(el) for el in element.findall("plugin")) if p is not None]
         return Sensor(
             name=name,
@@ -141,15 +147,17 @@ class _Reader(ElementReader):
             update_rate_hz=rate if rate is not None else 0.0,
             always_on=bool(always_on),
             topic=(element.findtext("topic") or "").strip(),
-            config=to_config(element, self.source),
+            config=to_config(element, self.elements.source),
             plugins=tuple(plugins),
-            location=self.loc(element),
+            location=self.elements.loc(element),
         )
 
     def gazebo(self, element: etree._Element, doc: UrdfDocument) -> None:
         """A ``<gazebo>`` block: kept whole, and its known tags applied."""
         reference = element.get("reference")
-        doc.gazebo.append(GazeboExtension(reference, to_config(element, self.source), self.loc(element)))
+        doc.gazebo.append(
+            GazeboExtension(reference, to_config(element, self.elements.source), self.elements.loc(element))
+        )
         if reference is None:
             self.apply_model_gazebo(element, doc)
         elif reference in doc.links:
@@ -165,9 +173,11 @@ class _Reader(ElementReader):
                     if sensor is not None:
                         doc.links[joint.child].sensors.append(replace(sensor, joint=reference))
                 else:
-                    self.unsupported(child, f'<{local_name(child)}> in <gazebo reference="{reference}"> (a joint)')
+                    self.elements.unsupported(
+                        child, f'<{local_name(child)}> in <gazebo reference="{reference}"> (a joint)'
+                    )
         else:
-            self.warn(
+            self.elements.warn(
                 ErrorCode.GAZEBO_REFERENCE_INVALID,
                 f'<gazebo reference="{reference}"> names no link or joint; the block is ignored',
                 element,
@@ -186,11 +196,11 @@ class _Reader(ElementReader):
                 if plugin is not None:
                     doc.plugins.append(plugin)
             elif tag in _MODEL_FLAGS:
-                value = self.gazebo_flag(element, tag)
+                value = self.elements.gazebo_flag(element, tag)
                 if value is not None:
                     doc.model_flags[_MODEL_FLAGS[tag]] = bool(value)
             else:
-                self.unsupported(child, f"<{tag}> in <gazebo>")
+                self.elements.unsupported(child, f"<{tag}> in <gazebo>")
 
     def apply_link_gazebo(self, element: etree._Element, link: LinkDraft, doc: UrdfDocument) -> None:
         """``<gazebo reference=link>``: surface, flags, material, sensors and plugins.
@@ -210,12 +220,14 @@ class _Reader(ElementReader):
                 text = gazebo_value(child)
                 values = parse_floats(text, count)
                 if values is None:
-                    self.error(ErrorCode.VALUE_INVALID, f"<{tag}> needs {count} number(s), got {text!r}", child)
+                    self.elements.error(
+                        ErrorCode.VALUE_INVALID, f"<{tag}> needs {count} number(s), got {text!r}", child
+                    )
                 else:
                     link.surface[field_name] = values if count > 1 else values[0]
             elif tag in _LINK_FLAGS:
                 field_name, inverted = _LINK_FLAGS[tag]
-                flag = self.gazebo_flag(element, tag)
+                flag = self.elements.gazebo_flag(element, tag)
                 if flag is not None:
                     link.flags[field_name] = bool(flag) != inverted
             elif tag == "material":
@@ -231,7 +243,7 @@ class _Reader(ElementReader):
                 if plugin is not None:
                     doc.plugins.append(plugin)
             else:
-                self.unsupported(child, f'<{tag}> in <gazebo reference="{link.name}">')
+                self.elements.unsupported(child, f'<{tag}> in <gazebo reference="{link.name}">')
 
     def apply_collision_blob(self, element: etree._Element, link: LinkDraft) -> None:
         """``<gazebo reference=link><collision>``: what it holds goes into every collision of the link, as sdformat's
@@ -240,14 +252,17 @@ class _Reader(ElementReader):
         and, like sdformat's copy, replaces the surface the link's earlier blocks gave (a later block's short forms
         still apply on top). ``<laser_retro>`` and ``<max_contacts>`` are read silently as an SDF collision's are;
         anything else would be a second ``<pose>`` or ``<geometry>`` of the collision, and is warned about."""
-        sdf, sdf_doc = Workspace(self.sink, self.resolver), _Doc(self.source, None, MAX_VERSION, False)
+        sdf, sdf_doc = (
+            Workspace(self.elements.sink, self.elements.resolver),
+            _Doc(self.elements.source, None, MAX_VERSION, False),
+        )
         for child in child_elements(element):
             tag = local_name(child)
             if tag == "surface":
                 surface = read_surface(sdf, child, sdf_doc)
                 link.surface = {f.name: v for f in fields(surface) if (v := getattr(surface, f.name)) is not None}
             elif tag not in IGNORED["collision"]:
-                self.unsupported(child, f'<{tag}> in <gazebo reference="{link.name}"><collision>')
+                self.elements.unsupported(child, f'<{tag}> in <gazebo reference="{link.name}"><collision>')
 
     # ---- top level
     def document(self, root: etree._Element) -> UrdfDocument | None:
@@ -258,23 +273,23 @@ class _Reader(ElementReader):
         needs no name, and its ``<gazebo reference>`` blocks name links defined elsewhere.
         """
         fragment = is_fragment(root)
-        name = root.get("name", "").strip() if fragment else self.name(root, "<robot>")
+        name = root.get("name", "").strip() if fragment else self.elements.name(root, "<robot>")
         doc = UrdfDocument(name or "")
         doc.materials = self.named_materials(root)
         gazebo_blocks: list[etree._Element] = []
         for child in child_elements(root):
             tag = local_name(child)
             if tag == "link":
-                self.add_unique(doc.links, self.link(child, doc.materials), "link", child)
+                self.add_unique(doc.links, self.elements.link(child, doc.materials), "link", child)
             elif tag == "joint":
-                self.add_unique(doc.joints, self.joint(child), "joint", child)
+                self.add_unique(doc.joints, self.elements.joint(child), "joint", child)
             elif tag == "gazebo":
                 gazebo_blocks.append(child)  # after all links and joints are known
             elif tag == "transmission":
                 # ROS 1's gazebo_ros_control read transmissions; ros2_control reads <ros2_control> instead, so
                 # they are kept (a converter could use them) and named, not run
-                doc.transmissions.append(to_config(child, self.source))
-                self.warn(
+                doc.transmissions.append(to_config(child, self.elements.source))
+                self.elements.warn(
                     ErrorCode.ELEMENT_UNSUPPORTED,
                     f"transmission '{child.get('name', '')}' is kept but not simulated",
                     child,
@@ -282,11 +297,13 @@ class _Reader(ElementReader):
             elif tag == "ros2_control":
                 doc.ros2_control.append(child)  # read once every joint is known
             elif tag != "material":
-                self.unsupported(child, f"<{tag}> in <robot>")
+                self.elements.unsupported(child, f"<{tag}> in <robot>")
         for block in gazebo_blocks:
             if fragment and block.get("reference") is not None:
                 doc.gazebo.append(
-                    GazeboExtension(block.get("reference"), to_config(block, self.source), self.loc(block))
+                    GazeboExtension(
+                        block.get("reference"), to_config(block, self.elements.source), self.elements.loc(block)
+                    )
                 )
             else:
                 self.gazebo(block, doc)
@@ -295,12 +312,12 @@ class _Reader(ElementReader):
     def ros2_control(self, element: etree._Element, doc: UrdfDocument) -> Ros2Control | None:
         """A ``<ros2_control name type>`` block. A joint it names that the robot lacks, or a tag it
         does not know, is warned about (file:line) and left out; the rest is kept."""
-        name = self.name(element, "<ros2_control>")
+        name = self.elements.name(element, "<ros2_control>")
         if name is None:
             return None
         kind = (element.get("type") or "system").strip()
         if kind not in ("system", "actuator", "sensor"):
-            self.warn(
+            self.elements.warn(
                 ErrorCode.VALUE_INVALID,
                 f"ros2_control '{name}' has type '{kind}' (system, actuator or sensor)",
                 element,
@@ -321,14 +338,16 @@ class _Reader(ElementReader):
                 plugin = (plugin_el.text or "").strip() if plugin_el is not None else ""
                 hw_params = self.control_params(child)
                 if not plugin:
-                    self.warn(ErrorCode.ELEMENT_MISSING, f"ros2_control '{name}' has no <hardware><plugin>", child)
+                    self.elements.warn(
+                        ErrorCode.ELEMENT_MISSING, f"ros2_control '{name}' has no <hardware><plugin>", child
+                    )
             elif tag in ("joint", "sensor", "gpio"):
                 component = self.control_component(child, tag)
                 if component is None:
                     continue
                 if tag == "joint" and component.name not in doc.joints:
                     known = ", ".join(sorted(doc.joints)) or "none"
-                    self.warn(
+                    self.elements.warn(
                         ErrorCode.CONTROL_JOINT_INVALID,
                         f"ros2_control '{name}': joint '{component.name}' is not a joint of the robot "
                         f"(it has {known}); it is left out",
@@ -337,11 +356,11 @@ class _Reader(ElementReader):
                     continue
                 {"joint": joints, "sensor": sensors, "gpio": gpios}[tag].append(component)
             else:
-                self.unsupported(child, f"<{tag}> in <ros2_control>")
+                self.elements.unsupported(child, f"<{tag}> in <ros2_control>")
         if element.find("hardware") is None:
-            self.warn(ErrorCode.ELEMENT_MISSING, f"ros2_control '{name}' has no <hardware>", element)
+            self.elements.warn(ErrorCode.ELEMENT_MISSING, f"ros2_control '{name}' has no <hardware>", element)
         return Ros2Control(
-            name, kind, plugin, hw_params, tuple(joints), tuple(sensors), tuple(gpios), self.loc(element)
+            name, kind, plugin, hw_params, tuple(joints), tuple(sensors), tuple(gpios), self.elements.loc(element)
         )
 
     def control_params(self, element: etree._Element) -> tuple[tuple[str, str], ...]:
@@ -360,7 +379,7 @@ class _Reader(ElementReader):
         ``initial_value`` among them, kept as text, as there). Where upstream throws and the whole hardware
         fails to load (an interface without a name), gazelle warns at the line and leaves that interface
         out, so one slip does not take the robot's other joints down with it."""
-        name = self.name(element, f"<{tag}> in <ros2_control>")
+        name = self.elements.name(element, f"<{tag}> in <ros2_control>")
         if name is None:
             return None
         commands, states = [], []
@@ -369,13 +388,15 @@ class _Reader(ElementReader):
             if t in ("command_interface", "state_interface"):
                 iname = (child.get("name") or "").strip()
                 if not iname:
-                    self.warn(ErrorCode.ATTRIBUTE_MISSING, f"<{t}> of {tag} '{name}' has no name", child)
+                    self.elements.warn(ErrorCode.ATTRIBUTE_MISSING, f"<{t}> of {tag} '{name}' has no name", child)
                     continue
-                iface = ControlInterface(iname, self.control_params(child), self.loc(child))
+                iface = ControlInterface(iname, self.control_params(child), self.elements.loc(child))
                 (commands if t == "command_interface" else states).append(iface)
             elif t != "param":
-                self.unsupported(child, f"<{t}> in ros2_control {tag} '{name}'")
-        return ControlComponent(name, tuple(commands), tuple(states), self.control_params(element), self.loc(element))
+                self.elements.unsupported(child, f"<{t}> in ros2_control {tag} '{name}'")
+        return ControlComponent(
+            name, tuple(commands), tuple(states), self.control_params(element), self.elements.loc(element)
+        )
 
     def named_materials(self, root: etree._Element) -> dict[str, Material]:
         """Materials usable by name: top-level ones first, then any defined inline in a visual.
@@ -393,17 +414,17 @@ class _Reader(ElementReader):
             has_content = el.find("color") is not None or el.find("texture") is not None
             name = el.get("name")
             if el in top and not name:
-                self.error(ErrorCode.ATTRIBUTE_MISSING, "<material> has no 'name' attribute", el)
+                self.elements.error(ErrorCode.ATTRIBUTE_MISSING, "<material> has no 'name' attribute", el)
                 continue
             if not name or not has_content:
                 continue
             if name in named:
                 if el in top:
-                    self.warn(
+                    self.elements.warn(
                         ErrorCode.DUPLICATE_NAME, f"material '{name}' is defined more than once; the first is used", el
                     )
                 continue
-            named[name] = self.material(el, named)
+            named[name] = self.elements.material(el, named)
         return named
 
     def add_unique(self, table: dict[str, D], item: D | None, what: str, element: etree._Element) -> None:
@@ -414,7 +435,7 @@ class _Reader(ElementReader):
         if name in table:
             first = getattr(table[name], "location", None)
             where = f" (first at {first})" if first is not None else ""
-            self.error(ErrorCode.DUPLICATE_NAME, f"{what} '{name}' is defined more than once{where}", element)
+            self.elements.error(ErrorCode.DUPLICATE_NAME, f"{what} '{name}' is defined more than once{where}", element)
             return
         table[name] = item
 
@@ -443,32 +464,33 @@ def parse_urdf(
     root = parse_xml(text, source=source, sink=sink)
     if root is None:
         return None
-    reader = _Reader(source, sink, resolver, base_dir)
+    elements = ElementReader(source, sink, resolver, base_dir)
+    reader = _Reader(elements)
     if local_name(root) != "robot":
-        reader.error(
+        elements.error(
             ErrorCode.ROOT_ELEMENT_INVALID, f"root element is <{local_name(root)}>; a URDF must have <robot>", root
         )
         return None
-    check_attributes(root, reader)
+    check_attributes(root, elements)
     doc = reader.document(root)
     # Warnings promoted by strict mode do not stop the structure checks: only real errors do.
     if doc is None or sink.has_hard_errors:
         return None
-    check_structure(doc, reader)
+    check_structure(doc, elements)
     if sink.has_hard_errors:
         return None
     if not doc.links:
-        report_fragment(root, doc, reader)
+        report_fragment(root, doc, elements)
     derive = False
     if doc.links and not doc.model_flags.get("static", False):
         if any(has_mass(d) for d in doc.links.values()):
-            drop_massless_links(doc, reader)
+            drop_massless_links(doc, elements)
         else:
             # Gazebo would model none of it (moveit_resources' Panda, kinematics-only descriptions):
             # here each link gets an inertia from its collision shapes, with a warning per link
             derive = True
     movers = {j.child: j.name for j in doc.joints.values() if j.type is not JointType.FIXED}
-    links = tuple(finish_link(d, movers.get(d.name), reader, derive) for d in doc.links.values())
+    links = tuple(finish_link(d, movers.get(d.name), elements, derive) for d in doc.links.values())
     if sink.has_errors:
         return None  # strict mode: warnings were promoted, every one of them is reported
     return Model(
@@ -481,7 +503,7 @@ def parse_urdf(
         self_collide=doc.model_flags.get("self_collide", False),
         source_format="urdf",
         source_file=source,
-        location=reader.loc(root),
+        location=elements.loc(root),
         transmissions=tuple(doc.transmissions),
         ros2_control=tuple(rc for rc in (reader.ros2_control(el, doc) for el in doc.ros2_control) if rc is not None),
     )

@@ -12,14 +12,16 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from ..description import Semantics
+from ._collision_matrix import CollisionMatrix
 from ._path_constraints import PathConstraints
-from ._robot_scene import PlanningError, RobotScene
+from ._robot_scene import PlanningError, RobotScene, SceneObject, roboplan_modules
 
 IK_DIAGNOSIS_SEC = 0.2
 """s a failed IK spends finding out why: the same IK with collisions ignored (out of reach, or in collision)."""
@@ -77,9 +79,159 @@ class Trajectory:
         return float(self.times[-1]) if len(self.times) else 0.0
 
 
-class ArmPlanner(RobotScene):
-    """Plans for the groups of a :class:`RobotScene`: IK, joint-space plans (RRT-Connect, shortcut, TOPP-RA) and
-    Cartesian paths, each checked against the scene's collisions and limits."""
+class ArmPlanner:
+    """Plans for the groups of the :class:`RobotScene` it owns (:attr:`robot`): IK, joint-space plans (RRT-Connect,
+    shortcut, TOPP-RA) and Cartesian paths, each checked against the scene's collisions and limits. The robot's
+    own queries and its scene (FK, states, limits, objects) are the robot's, answered here as well so a caller
+    holds one object.
+
+    Not thread-safe: one request at a time (a ``PlannerPool`` gives each kind of work its own copy).
+    """
+
+    def __init__(
+        self,
+        urdf: str,
+        srdf: str,
+        *,
+        srdf_source: str = "robot_description_semantic",
+        resolve_mesh: Callable[[str], str | None] | None = None,
+        joint_limits: Mapping[str, Mapping[str, float]] | None = None,
+        seed: int = 0,
+    ) -> None:
+        """A planner for the robot of ``urdf`` and ``srdf`` (see :class:`RobotScene` for the arguments); its
+        searches (RRT seeds) come from ``seed``: a plan repeats."""
+        self.robot = RobotScene(
+            urdf, srdf, srdf_source=srdf_source, resolve_mesh=resolve_mesh, joint_limits=joint_limits, seed=seed
+        )
+        """The robot planned for: its model, limits, current state and the objects its plans keep clear of."""
+        self._core, self._rrt, self._simple_ik, self._toppra = roboplan_modules()
+        self._seed = seed
+
+    # ------------------------------------------------------------------ the robot's (see RobotScene)
+    @property
+    def scene(self) -> Any:
+        """roboplan's scene of the robot (remade when an object is attached or detached) (:attr:`RobotScene.scene`)."""
+        return self.robot.scene
+
+    @property
+    def joint_names(self) -> list[str]:
+        """Every joint of the model, in the order of a full configuration (:attr:`RobotScene.joint_names`)."""
+        return self.robot.joint_names
+
+    @property
+    def semantics(self) -> Semantics:
+        """The SRDF as read (:attr:`RobotScene.semantics`)."""
+        return self.robot.semantics
+
+    @property
+    def root_link(self) -> str:
+        """The link plans and poses are expressed in (:attr:`RobotScene.root_link`)."""
+        return self.robot.root_link
+
+    @property
+    def warnings(self) -> list[str]:
+        """What was left out when the robot was loaded (groups, meshes), one line each (:attr:`RobotScene.warnings`)."""
+        return self.robot.warnings
+
+    @property
+    def velocity_limits(self) -> dict[str, float]:
+        """rad/s (m/s) each joint may move at (:attr:`RobotScene.velocity_limits`)."""
+        return self.robot.velocity_limits
+
+    @property
+    def fixed_links(self) -> frozenset[str]:
+        """Links that no plan moves (:attr:`RobotScene.fixed_links`)."""
+        return self.robot.fixed_links
+
+    @property
+    def acm(self) -> CollisionMatrix:
+        """The allowed collision matrix (:attr:`RobotScene.acm`)."""
+        return self.robot.acm
+
+    @property
+    def groups(self) -> list[str]:
+        """The SRDF's planning groups that could be built (:attr:`RobotScene.groups`)."""
+        return self.robot.groups
+
+    def group_joints(self, group: str) -> list[str]:
+        """:meth:`RobotScene.group_joints` of :attr:`robot`."""
+        return self.robot.group_joints(group)
+
+    def tip_link(self, group: str) -> str:
+        """:meth:`RobotScene.tip_link` of :attr:`robot`."""
+        return self.robot.tip_link(group)
+
+    def named_state(self, group: str, name: str) -> dict[str, float]:
+        """:meth:`RobotScene.named_state` of :attr:`robot`."""
+        return self.robot.named_state(group, name)
+
+    def state(self, positions: Mapping[str, float] | None = None) -> np.ndarray:
+        """:meth:`RobotScene.state` of :attr:`robot`."""
+        return self.robot.state(positions)
+
+    def set_current(self, positions: Mapping[str, float]) -> None:
+        """:meth:`RobotScene.set_current` of :attr:`robot`."""
+        self.robot.set_current(positions)
+
+    def onto_limits(self, q: np.ndarray) -> np.ndarray:
+        """:meth:`RobotScene.onto_limits` of :attr:`robot`."""
+        return self.robot.onto_limits(q)
+
+    def outside_limits(self, q: np.ndarray, joints: Sequence[str] | None = None) -> str | None:
+        """:meth:`RobotScene.outside_limits` of :attr:`robot`."""
+        return self.robot.outside_limits(q, joints)
+
+    def positions(self, q: np.ndarray) -> dict[str, float]:
+        """:meth:`RobotScene.positions` of :attr:`robot`."""
+        return self.robot.positions(q)
+
+    def fk(self, q: np.ndarray, link: str) -> np.ndarray:
+        """:meth:`RobotScene.fk` of :attr:`robot`."""
+        return self.robot.fk(q, link)
+
+    def in_collision(self, q: np.ndarray) -> bool:
+        """:meth:`RobotScene.in_collision` of :attr:`robot`."""
+        return self.robot.in_collision(q)
+
+    def named_pairs(self, q: np.ndarray, shown: int = 3) -> str:
+        """:meth:`RobotScene.named_pairs` of :attr:`robot`."""
+        return self.robot.named_pairs(q, shown)
+
+    def colliding_pairs(self, q: np.ndarray, most: int = 50) -> list[tuple[str, str]]:
+        """:meth:`RobotScene.colliding_pairs` of :attr:`robot`."""
+        return self.robot.colliding_pairs(q, most)
+
+    def within_limits(self, q: np.ndarray) -> bool:
+        """:meth:`RobotScene.within_limits` of :attr:`robot`."""
+        return self.robot.within_limits(q)
+
+    def add_object(self, obj: SceneObject) -> None:
+        """:meth:`RobotScene.add_object` of :attr:`robot`."""
+        self.robot.add_object(obj)
+
+    def set_allowed_collision_matrix(self, matrix: CollisionMatrix) -> None:
+        """:meth:`RobotScene.set_allowed_collision_matrix` of :attr:`robot`."""
+        self.robot.set_allowed_collision_matrix(matrix)
+
+    def add_box(self, name: str, size: Sequence[float], pose: np.ndarray) -> None:
+        """:meth:`RobotScene.add_box` of :attr:`robot`."""
+        self.robot.add_box(name, size, pose)
+
+    def remove_object(self, name: str) -> bool:
+        """:meth:`RobotScene.remove_object` of :attr:`robot`."""
+        return self.robot.remove_object(name)
+
+    def move_object(self, name: str, pose: np.ndarray) -> None:
+        """:meth:`RobotScene.move_object` of :attr:`robot`."""
+        self.robot.move_object(name, pose)
+
+    def has_link(self, link: str) -> bool:
+        """:meth:`RobotScene.has_link` of :attr:`robot`."""
+        return self.robot.has_link(link)
+
+    def objects(self) -> list[SceneObject]:
+        """:meth:`RobotScene.objects` of :attr:`robot`."""
+        return self.robot.objects()
 
     # ------------------------------------------------------------------ queries
     def ik(
@@ -114,11 +266,11 @@ class ArmPlanner(RobotScene):
                 out of reach or reachable only in collision (naming the pairs), MoveIt's one code for both.
             PlanningError: ``INVALID_GROUP_NAME`` or ``INVALID_LINK_NAME`` for names the robot lacks.
         """
-        joints = self.group_joints(group)
-        self.fk(self._current, link)
+        joints = self.robot.group_joints(group)
+        self.robot.fk(self.robot.state(), link)
         timeout = _budget(timeout, MAX_IK_SEC)
-        start_full = self._current.copy() if seed is None else np.asarray(seed, dtype=float)
-        goal = self._core.CartesianConfiguration(self.root_link, link, np.asfortranarray(target, dtype=float))
+        start_full = self.robot.state() if seed is None else np.asarray(seed, dtype=float)
+        goal = self._core.CartesianConfiguration(self.robot.root_link, link, np.asfortranarray(target, dtype=float))
         start = self._group_config(group, joints, start_full)
         try:
             return self._ik(group, joints, link, goal, start, start_full, float(timeout), avoid_collisions)
@@ -138,7 +290,7 @@ class ArmPlanner(RobotScene):
             q = self._ik(group, joints, link, goal, start, start_full, IK_DIAGNOSIS_SEC, False)
         except PlanningError:
             return "it is out of reach (no joint values reach it even with collisions ignored)"
-        pairs = self.named_pairs(q)
+        pairs = self.robot.named_pairs(q)
         return f"it is reachable, but in collision there{pairs}" if pairs else "no collision-free solution was found"
 
     def _ik(
@@ -156,7 +308,7 @@ class ArmPlanner(RobotScene):
         ``timeout``), the joints outside the group kept at ``start_full``. With ``avoid_collisions``, a solution
         in collision is not returned: the search goes on from a random start until the time runs out
         (NO_IK_SOLUTION, MoveIt's code)."""
-        idx = self._group_index(joints)
+        idx = self.robot.group_index(joints)
         deadline = time.monotonic() + timeout
         failed = PlanningError("NO_IK_SOLUTION", f"no joint values of '{group}' put '{link}' at the goal pose")
         while True:
@@ -170,8 +322,8 @@ class ArmPlanner(RobotScene):
             opts.max_restarts = 1000
             opts.max_linear_error_norm = 1e-4
             opts.max_angular_error_norm = 1e-3
-            solver = self._simple_ik.SimpleIk(self.scene, opts)
-            self.scene.setJointPositions(start_full)  # the joints outside the group stay where they are
+            solver = self._simple_ik.SimpleIk(self.robot.scene, opts)
+            self.robot.scene.setJointPositions(start_full)  # the joints outside the group stay where they are
             solution = self._core.JointConfiguration()
             try:
                 solved = solver.solveIk(goal, start, solution)
@@ -179,13 +331,13 @@ class ArmPlanner(RobotScene):
                 raise PlanningError("NO_IK_SOLUTION", f"{failed.message} ({err})") from None
             if not solved:
                 raise failed
-            q = self.scene.toFullJointPositions(group, np.asarray(solution.positions, dtype=float))
+            q = self.robot.scene.toFullJointPositions(group, np.asarray(solution.positions, dtype=float))
             out = start_full.copy()  # the joints outside the group keep their values
             out[idx] = q[idx]
-            if not avoid_collisions or not self.in_collision(out):
+            if not avoid_collisions or not self.robot.in_collision(out):
                 return out
             # roboplan checks its restarts, not the solution it converged to: go on from elsewhere
-            start = self._group_config(group, joints, np.asarray(self.scene.randomPositions(), dtype=float))
+            start = self._group_config(group, joints, np.asarray(self.robot.scene.randomPositions(), dtype=float))
 
     def plan(
         self,
@@ -229,20 +381,21 @@ class ArmPlanner(RobotScene):
                 moveit_planners/ompl/ompl_interface/src/model_based_planning_context.cpp, logPlannerStatus);
                 collisions name the colliding pairs.
         """
-        joints = self.group_joints(group)
-        q0 = self.onto_limits(self._current.copy() if start is None else np.asarray(start, dtype=float))
+        joints = self.robot.group_joints(group)
+        q0 = self.robot.onto_limits(self.robot.state() if start is None else np.asarray(start, dtype=float))
         q1 = np.asarray(goal, dtype=float).copy()
         others = np.ones(len(q1), dtype=bool)
-        others[self._group_index(joints)] = False
+        others[self.robot.group_index(joints)] = False
         q1[others] = q0[others]  # the joints the group does not move stay as they start (onto their limits)
-        outside = self.outside_limits(q1, joints)
+        outside = self.robot.outside_limits(q1, joints)
         if outside is not None:
             raise PlanningError("GOAL_STATE_INVALID", f"the goal lies outside the joints' limits: {outside}")
-        if self.in_collision(q1):
-            raise PlanningError("GOAL_IN_COLLISION", f"the goal state is in collision{self.named_pairs(q1)}")
-        if self.in_collision(q0):
-            raise PlanningError("START_STATE_IN_COLLISION", f"the start state is in collision{self.named_pairs(q0)}")
-        outside = self.outside_limits(q0, joints)
+        if self.robot.in_collision(q1):
+            raise PlanningError("GOAL_IN_COLLISION", f"the goal state is in collision{self.robot.named_pairs(q1)}")
+        if self.robot.in_collision(q0):
+            pairs = self.robot.named_pairs(q0)
+            raise PlanningError("START_STATE_IN_COLLISION", f"the start state is in collision{pairs}")
+        outside = self.robot.outside_limits(q0, joints)
         if outside is not None:  # roboplan refuses it on every search ("Invalid start configuration requested")
             raise PlanningError("START_STATE_INVALID", f"the start state lies outside the joints' limits: {outside}")
         keeps, poses = self._keeping(group, constraints)
@@ -259,7 +412,7 @@ class ArmPlanner(RobotScene):
             raise PlanningError("TIMED_OUT", f"no collision-free path found in {timeout:g} s{cut}")
         sopts = self._core.PathShortcuttingOptions()
         sopts.group_name = group
-        shortcut = self._core.PathShortcutter(self.scene, sopts).shortcut(path)
+        shortcut = self._core.PathShortcutter(self.robot.scene, sopts).shortcut(path)
         if not constraints or self._kept(group, joints, q0, shortcut, keeps):  # a shortcut may leave them
             path = shortcut
         return self._timed(group, path, velocity_scaling, acceleration_scaling)
@@ -269,17 +422,17 @@ class ArmPlanner(RobotScene):
         ranges for the joints), and the roboplan pose constraints for its RRT."""
         poses = [
             self._rrt.PoseConstraint(
-                self.scene,
+                self.robot.scene,
                 group,
                 link,
                 np.asarray(lower, dtype=float),
                 np.asarray(upper, dtype=float),
                 np.asfortranarray(region, dtype=float),
-                self.root_link,
+                self.robot.root_link,
             )
             for link, region, lower, upper in constraints.poses
         ]
-        index = {n: i for i, n in enumerate(self.joint_names)}
+        index = {n: i for i, n in enumerate(self.robot.joint_names)}
         ranges = [(index[j], lo, hi) for j, lo, hi in constraints.joints if j in index]
 
         def keeps(q: np.ndarray) -> bool:
@@ -292,7 +445,7 @@ class ArmPlanner(RobotScene):
     def _kept(self, group: str, joints: list[str], q0: np.ndarray, path: Any, keeps: Any, step: float = 0.02) -> bool:
         """Whether every state of ``path`` (the group's joints; the others as in ``q0``), and of the straight
         lines between them every ``step`` rad, keeps the constraints."""
-        index = self._group_index(joints)
+        index = self.robot.group_index(joints)
         full = np.asarray(q0, dtype=float).copy()
         points = np.asarray(path.positions, dtype=float)
         for a, b in zip(points[:-1], points[1:]):
@@ -332,10 +485,10 @@ class ArmPlanner(RobotScene):
         search = 0
         while len(found) < wanted and (left := deadline - time.monotonic()) > 0.0:
             opts.max_planning_time = left
-            planner = self._rrt.RRT(self.scene, opts)
+            planner = self._rrt.RRT(self.robot.scene, opts)
             planner.setRngSeed(self._seed + search)
             search += 1
-            self.scene.setJointPositions(q0)
+            self.robot.scene.setJointPositions(q0)
             try:
                 path = planner.plan(start, goal, poses)
             except RuntimeError:  # roboplan's trees are full ("Added maximum number of nodes"): search again
@@ -359,7 +512,7 @@ class ArmPlanner(RobotScene):
         opts.max_restarts = 0  # continuity: each pose from the last one, never a jump to another branch
         opts.max_linear_error_norm = 1e-4
         opts.max_angular_error_norm = 1e-3
-        return self._simple_ik.SimpleIk(self.scene, opts)
+        return self._simple_ik.SimpleIk(self.robot.scene, opts)
 
     def _timed(self, group: str, path, velocity_scaling: float, acceleration_scaling: float) -> Trajectory:
         """TOPP-RA over a joint path of ``group``, within the limits times the scaling factors, a point every
@@ -367,7 +520,7 @@ class ArmPlanner(RobotScene):
         topts = self._toppra.TOPPRAOptions()
         topts.velocity_scale = _fraction(velocity_scaling)
         topts.acceleration_scale = _fraction(acceleration_scaling)
-        parameterizer = self._toppra.PathParameterizerTOPPRA(self.scene, group)
+        parameterizer = self._toppra.PathParameterizerTOPPRA(self.robot.scene, group)
         # the duration first, sampled at its two ends (the solve is the cheap part: ~20 ms for 10,000 waypoints;
         # the samples are what grow), then the samples the duration allows
         topts.dt = 1e12
@@ -425,15 +578,15 @@ class ArmPlanner(RobotScene):
                 waypoint that is not a finite pose, or more than :data:`MAX_CARTESIAN_STEPS` poses to solve;
                 ``TIMED_OUT`` past ``timeout``; the group and link names as :meth:`ik`'s.
         """
-        joints = self.group_joints(group)
-        self.fk(self._current, link)
+        joints = self.robot.group_joints(group)
+        self.robot.fk(self.robot.state(), link)
         if not math.isfinite(max_step) or max_step < MIN_MAX_STEP:
             # cartesian_path_service_capability.cpp: "this value needs to be > 0", FAILURE
             raise PlanningError(
                 "FAILURE", f"max_step must be a positive number of metres, at least {MIN_MAX_STEP:.3g} (got {max_step})"
             )
-        q = (self._current if start is None else np.asarray(start, dtype=float)).copy()
-        begin = self.fk(q, link)
+        q = self.robot.state() if start is None else np.asarray(start, dtype=float).copy()
+        begin = self.robot.fk(q, link)
         steps = self._line_steps(begin, waypoints, max_step)
         total = sum(steps)
         poses = self._line_poses(begin, waypoints, steps)
@@ -456,10 +609,10 @@ class ArmPlanner(RobotScene):
         Raises:
             PlanningError: ``TIMED_OUT`` when the poses take more than ``budget`` seconds (``total`` poses).
         """
-        joints = self.group_joints(group)
-        idx = self._group_index(joints)
+        joints = self.robot.group_joints(group)
+        idx = self.robot.group_index(joints)
         solver = self._line_solver(group, avoid_collisions)
-        self.scene.setJointPositions(q)
+        self.robot.scene.setJointPositions(q)
         path = [q[idx].copy()]
         deadline = time.monotonic() + budget
         for pose in poses:
@@ -468,7 +621,7 @@ class ArmPlanner(RobotScene):
                     "TIMED_OUT",
                     f"the Cartesian path's IK took more than {budget:g} s ({len(path) - 1} of {total} poses)",
                 )
-            goal = self._core.CartesianConfiguration(self.root_link, link, np.asfortranarray(pose, dtype=float))
+            goal = self._core.CartesianConfiguration(self.robot.root_link, link, np.asfortranarray(pose, dtype=float))
             solution = self._core.JointConfiguration()
             try:
                 if not solver.solveIk(goal, self._group_config(group, joints, q), solution):
@@ -476,12 +629,12 @@ class ArmPlanner(RobotScene):
             except RuntimeError:
                 break
             nxt = q.copy()
-            nxt[idx] = self.scene.toFullJointPositions(group, np.asarray(solution.positions, dtype=float))[idx]
+            nxt[idx] = self.robot.scene.toFullJointPositions(group, np.asarray(solution.positions, dtype=float))[idx]
             # each pose's state is checked, not the start nor the way between two poses: MoveIt's
             # compute_cartesian_path (moveit_ros/move_group cartesian_path_service_capability.cpp,
             # isStateValid on every IK solution). So a retreat starts from a state that touches, as a
             # grasped piece standing on the board does.
-            if avoid_collisions and self.in_collision(nxt):
+            if avoid_collisions and self.robot.in_collision(nxt):
                 break
             path.append(nxt[idx].copy())
             q = nxt
@@ -535,7 +688,7 @@ class ArmPlanner(RobotScene):
         """A roboplan JointConfiguration of ``joints``, their values taken from a full-robot vector."""
         config = self._core.JointConfiguration()
         config.joint_names = list(joints)
-        config.positions = np.asarray(q_full, dtype=float)[self._group_index(joints)]
+        config.positions = np.asarray(q_full, dtype=float)[self.robot.group_index(joints)]
         return config
 
 

@@ -61,7 +61,7 @@ class PlannerPool:
                 yield self.primary
             finally:
                 for role in ROLES[1:]:
-                    copy_scene(self.primary, self._planners[role])
+                    copy_scene(self.primary.robot, self._planners[role].robot)
 
 
 def copy_scene(source: RobotScene, target: RobotScene) -> None:

@@ -1,4 +1,4 @@
-"""The robot a planner plans for (:class:`RobotScene`, the base of :class:`~gazelle.planning.ArmPlanner`):
+"""The robot a planner plans for (:class:`RobotScene`, owned by :class:`~gazelle.planning.ArmPlanner`):
 the URDF's kinematic and collision model with the SRDF's groups and disabled pairs loaded into roboplan, the
 joint limits (URDF overridden by MoveIt's joint_limits.yaml), the current state, and the world and attached
 objects the plans keep clear of. Names and codes are MoveIt's, so the ROS layer only converts messages."""
@@ -77,7 +77,7 @@ class SceneObject:
     touch_links: tuple[str, ...] = ()
 
 
-def _rp():  # roboplan's modules, imported on first use (they load pinocchio and coal)
+def roboplan_modules():  # roboplan's modules, imported on first use (they load pinocchio and coal)
     import importlib
 
     return tuple(importlib.import_module(f"roboplan.{m}") for m in ("core", "rrt", "simple_ik", "toppra"))
@@ -139,7 +139,7 @@ class RobotScene:
         resource roots; a mesh not found leaves its geometry out, with a warning), ``joint_limits`` (MoveIt's
         joint_limits.yaml, over the URDF's), and an allowed collision matrix as MoveIt keeps it. Random draws
         (RRT, IK restarts) come from ``seed``: a plan repeats."""
-        core, rrt, simple_ik, toppra = _rp()
+        core, rrt, simple_ik, toppra = roboplan_modules()
         self._core, self._rrt, self._simple_ik, self._toppra = core, rrt, simple_ik, toppra
         self.warnings: list[str] = []
         try:
@@ -351,12 +351,13 @@ class RobotScene:
         group's joint models), so a gripper finger a hair past its limit does not refuse an arm's plan."""
         lo, hi = self._bounds
         names = list(joints) if joints is not None else list(self.joint_names)
-        for name, i in zip(names, self._group_index(names)):
+        for name, i in zip(names, self.group_index(names)):
             if not lo[i] - 1e-9 <= q[i] <= hi[i] + 1e-9:
                 return f"joint '{name}' at {q[i]:.6g} is outside its limits [{lo[i]:.6g}, {hi[i]:.6g}]"
         return None
 
-    def _group_index(self, joints: Sequence[str]) -> list[int]:
+    def group_index(self, joints: Sequence[str]) -> list[int]:
+        """The positions of ``joints`` in a full configuration (:attr:`joint_names` order)."""
         index = {n: i for i, n in enumerate(self.joint_names)}
         return [index[j] for j in joints]
 

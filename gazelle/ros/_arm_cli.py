@@ -13,13 +13,20 @@ MoveGroup action goal. Exit status 0 when the arm got there; 1 with MoveIt's err
 from __future__ import annotations
 
 import argparse
-import math
 import sys
 import time
-from typing import Any
+from typing import TYPE_CHECKING
 
 from .._errors import SimError
 from ..description import ModelLoadError, Semantics, load_string
+from ..estimation import quaternion_from_rpy
+
+if TYPE_CHECKING:
+    from moveit_msgs.msg import Constraints
+    from rclpy.client import Client
+    from rclpy.node import Node
+
+    from ..description import Group
 
 TOLERANCE_M = 1e-4
 TOLERANCE_RAD = 1e-3
@@ -28,19 +35,6 @@ TOLERANCE_RAD = 1e-3
 
 class ArmError(SimError):
     """A request this command refuses before anything moves."""
-
-
-def quaternion(roll: float, pitch: float, yaw: float) -> tuple[float, float, float, float]:
-    """(x, y, z, w) of fixed-axis roll, pitch, yaw (tf's quaternion_from_euler)."""
-    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
-    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
-    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
-    return (
-        sr * cp * cy - cr * sp * sy,
-        cr * sp * cy + sr * cp * sy,
-        cr * cp * sy - sr * sp * cy,
-        cr * cp * cy + sr * sp * sy,
-    )
 
 
 def semantics(srdf: str) -> Semantics:
@@ -86,7 +80,7 @@ def group_joints(sem: Semantics, urdf: str, group: str) -> list[str]:
     return list(dict.fromkeys(joints))
 
 
-def _group(sem: Semantics, name: str) -> Any:
+def _group(sem: Semantics, name: str) -> Group:
     """The SRDF's planning group ``name``; an ArmError listing the groups when there is none."""
     for g in sem.groups:
         if g.name == name:
@@ -172,7 +166,7 @@ def arm_main(argv: list[str]) -> int:
         try_shutdown()
 
 
-def _served(client: Any, timeout: float) -> bool:
+def _served(client: Client, timeout: float) -> bool:
     """Whether ``client``'s service is found within ``timeout`` s, looked for every 10 ms (rclpy's
     ``wait_for_service`` looks every 0.25 s, a quarter of a second added to most answers)."""
     deadline = time.monotonic() + timeout
@@ -183,7 +177,7 @@ def _served(client: Any, timeout: float) -> bool:
     return True
 
 
-def _parameters(node: Any, names: list[str], timeout: float) -> list[str]:
+def _parameters(node: Node, names: list[str], timeout: float) -> list[str]:
     """move_group's parameters ``names`` as strings (its URDF and SRDF); an ArmError when no move_group answers
     within ``timeout`` or it has no robot yet."""
     import rclpy
@@ -194,9 +188,10 @@ def _parameters(node: Any, names: list[str], timeout: float) -> list[str]:
         raise ArmError(f"no move_group is running (/move_group/get_parameters did not answer in {timeout:g} s)")
     future = client.call_async(GetParameters.Request(names=names))
     rclpy.spin_until_future_complete(node, future, timeout_sec=timeout)
-    if not future.done() or future.result() is None:
+    reply = future.result() if future.done() else None
+    if reply is None:
         raise ArmError("move_group did not say its parameters")
-    values = [v.string_value for v in future.result().values]
+    values = [v.string_value for v in reply.values]
     if len(values) != len(names):  # a move_group with no robot yet leaves them out
         raise ArmError(
             f"move_group has no robot yet (its parameters {', '.join(names)} are not set): give it the robot's "
@@ -205,7 +200,7 @@ def _parameters(node: Any, names: list[str], timeout: float) -> list[str]:
     return values
 
 
-def _joint_goal(values: dict[str, float]) -> Any:
+def _joint_goal(values: dict[str, float]) -> Constraints:
     """moveit_msgs/Constraints: each joint at its value, within TOLERANCE_RAD."""
     from moveit_msgs.msg import Constraints, JointConstraint
 
@@ -219,7 +214,7 @@ def _joint_goal(values: dict[str, float]) -> Any:
     return constraints
 
 
-def _pose_goal(link: str, frame: str, pose: tuple[float, float, float, float, float, float]) -> Any:
+def _pose_goal(link: str, frame: str, pose: tuple[float, float, float, float, float, float]) -> Constraints:
     """moveit_msgs/Constraints: ``link`` within TOLERANCE_M of (x, y, z) and TOLERANCE_RAD of (roll, pitch,
     yaw) in ``frame`` (a sphere region, absolute axis tolerances)."""
     from geometry_msgs.msg import Pose
@@ -236,7 +231,7 @@ def _pose_goal(link: str, frame: str, pose: tuple[float, float, float, float, fl
     position.constraint_region.primitive_poses = [target]
     orientation = OrientationConstraint(link_name=link, weight=1.0)
     orientation.header.frame_id = frame
-    q = quaternion(roll, pitch, yaw)
+    q = quaternion_from_rpy(roll, pitch, yaw)
     orientation.orientation.x, orientation.orientation.y, orientation.orientation.z, orientation.orientation.w = q
     orientation.absolute_x_axis_tolerance = TOLERANCE_RAD
     orientation.absolute_y_axis_tolerance = TOLERANCE_RAD
@@ -247,7 +242,7 @@ def _pose_goal(link: str, frame: str, pose: tuple[float, float, float, float, fl
     return constraints
 
 
-def _run(node: Any, args: argparse.Namespace) -> int:
+def _run(node: Node, args: argparse.Namespace) -> int:
     """Build the MoveGroup goal (joint constraints for a named state or joint values, position and orientation
     constraints for a pose), send it, and print the plan's duration and planning time, or MoveIt's error code and
     message."""

@@ -14,7 +14,8 @@ from __future__ import annotations
 
 import logging
 import threading
-from typing import Any
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Protocol, TypeVar, cast, runtime_checkable
 
 from control_msgs.action import FollowJointTrajectory, GripperCommand
 from controller_manager_msgs.msg import ControllerState, HardwareComponentState, HardwareInterface
@@ -56,6 +57,30 @@ from ..systems.ros2_control import (
 from ._convert import from_duration, from_joint_trajectory_msg, to_trajectory_point_msg
 from ._replies import serve, serve_action
 
+if TYPE_CHECKING:
+    from rclpy.action.server import ServerGoalHandle
+    from rclpy.context import Context
+    from rclpy.parameter import Parameter
+
+    from ..systems.ros2_control import Controller
+
+Req = TypeVar("Req")
+Res = TypeVar("Res")
+
+
+class _NamedRequest(Protocol):
+    """A controller_manager request naming one controller (Load, Configure, Cleanup, Unload)."""
+
+    name: str
+
+
+@runtime_checkable
+class _OkResponse(Protocol):
+    """A controller_manager response that says whether it was done."""
+
+    ok: bool
+
+
 _LIFECYCLE = {
     UNCONFIGURED: (State.PRIMARY_STATE_UNCONFIGURED, "unconfigured"),
     INACTIVE: (State.PRIMARY_STATE_INACTIVE, "inactive"),
@@ -81,7 +106,7 @@ def _state(label: str) -> State:
 class ControllerManagerNode(Node):
     """The ROS face of one controller manager (see the module docstring)."""
 
-    def __init__(self, sim: Simulation, manager: ControllerManager, context: Any) -> None:
+    def __init__(self, sim: Simulation, manager: ControllerManager, context: Context | None) -> None:
         """The node named as the manager (in its namespace) with the ten controller_manager services the spawner and
         ``ros2 control`` call, each guarded so that a refusal answers ``ok: false``; ``update_rate`` is declared
         as the manager read it."""
@@ -98,31 +123,54 @@ class ControllerManagerNode(Node):
         self._cb = ReentrantCallbackGroup()
         self._actions: dict[int, ActionServer] = {}
         self._lock = threading.Lock()
-        self._texts: dict[str, Any] = {}
+        self._texts: dict[str, object] = {}
         """``<ctrl>.params_file_yaml`` values waiting for their ``<ctrl>.params_file``."""
         self.declare_parameter("update_rate", manager.update_rate)
         self.add_on_set_parameters_callback(self._on_set_parameters)
-        for srv_type, name, fn in (
-            (ListControllers, "list_controllers", self._list_controllers),
-            (ListControllerTypes, "list_controller_types", self._list_types),
-            (ListHardwareInterfaces, "list_hardware_interfaces", self._list_interfaces),
-            (ListHardwareComponents, "list_hardware_components", self._list_components),
-            (LoadController, "load_controller", self._by_name(manager.load_controller)),
-            (ConfigureController, "configure_controller", self._by_name(manager.configure_controller)),
-            (CleanupController, "cleanup_controller", self._by_name(manager.cleanup_controller)),
-            (SwitchController, "switch_controller", self._switch),
-            (UnloadController, "unload_controller", self._by_name(manager.unload_controller)),
-            (SetHardwareComponentState, "set_hardware_component_state", self._set_hw_state),
+        guarded = self._guard
+        cb = self._cb
+        serve(self, ListControllers, "~/list_controllers", guarded("list_controllers", self._list_controllers), cb)
+        serve(
+            self, ListControllerTypes, "~/list_controller_types", guarded("list_controller_types", self._list_types), cb
+        )
+        serve(
+            self,
+            ListHardwareInterfaces,
+            "~/list_hardware_interfaces",
+            guarded("list_hardware_interfaces", self._list_interfaces),
+            cb,
+        )
+        serve(
+            self,
+            ListHardwareComponents,
+            "~/list_hardware_components",
+            guarded("list_hardware_components", self._list_components),
+            cb,
+        )
+        for srv_type, name, action in (
+            (LoadController, "load_controller", manager.load_controller),
+            (ConfigureController, "configure_controller", manager.configure_controller),
+            (CleanupController, "cleanup_controller", manager.cleanup_controller),
         ):
-            serve(self, srv_type, f"~/{name}", self._guard(name, fn), self._cb)
+            serve(self, srv_type, f"~/{name}", guarded(name, self._by_name(action)), cb)
+        serve(self, SwitchController, "~/switch_controller", guarded("switch_controller", self._switch), cb)
+        unload = self._by_name(manager.unload_controller)
+        serve(self, UnloadController, "~/unload_controller", guarded("unload_controller", unload), cb)
+        serve(
+            self,
+            SetHardwareComponentState,
+            "~/set_hardware_component_state",
+            guarded("set_hardware_component_state", self._set_hw_state),
+            cb,
+        )
 
     # ------------------------------------------------------------------ plumbing
-    def _guard(self, name: str, fn: Any) -> Any:
+    def _guard(self, name: str, fn: Callable[[Req, Res], Res]) -> Callable[[Req, Res], Res]:
         """``fn`` as a service callback that never raises: a ControlError (a refusal the user caused), a timeout of
         the simulation thread or an internal error is logged on this node's logger and answered ``ok: false``, as
         ros2_control answers a refused request; the server keeps serving."""
 
-        def wrapper(req: Any, res: Any) -> Any:
+        def wrapper(req: Req, res: Res) -> Res:
             # refusals go to this node's logger: on the console and on /rosout as the manager's own
             # lines, where the spawner finds the reason to print
             try:
@@ -134,13 +182,13 @@ class ControllerManagerNode(Node):
             except Exception as err:
                 self._log.error(f"{name}: internal error", exc_info=err)
                 self.get_logger().error(f"{name}: internal error: {type(err).__name__}: {err}")
-            if hasattr(res, "ok"):
+            if isinstance(res, _OkResponse):
                 res.ok = False
             return res
 
         return wrapper
 
-    def _on_set_parameters(self, params: list[Any]) -> SetParametersResult:
+    def _on_set_parameters(self, params: list[Parameter]) -> SetParametersResult:
         """Parameters set on the manager node (``ros2 param set``, the spawner's ``<ctrl>.type`` and
         ``<ctrl>.params_file``): ``update_rate`` is refused (the manager reads it once, as ros2_control does); a
         parameters file is read here, on the ROS thread, and the values are applied on the simulation thread in
@@ -182,7 +230,9 @@ class ControllerManagerNode(Node):
         return SetParametersResult(successful=True)
 
     # ------------------------------------------------------------------ services
-    def _list_controllers(self, req: Any, res: Any) -> Any:
+    def _list_controllers(
+        self, req: ListControllers.Request, res: ListControllers.Response
+    ) -> ListControllers.Response:
         """ListControllers: each loaded controller's state, type, update rate and interfaces (claimed ones, and
         those it requires once configured), read in one simulation-thread call so the answer is one moment's."""
 
@@ -211,13 +261,17 @@ class ControllerManagerNode(Node):
         res.controller = self.sim.call(query)
         return res
 
-    def _list_types(self, req: Any, res: Any) -> Any:
+    def _list_types(
+        self, req: ListControllerTypes.Request, res: ListControllerTypes.Response
+    ) -> ListControllerTypes.Response:
         """ListControllerTypes: the controller types gazelle simulates (every one a ControllerInterface)."""
         res.types = sorted(CONTROLLER_TYPES)
         res.base_classes = ["controller_interface::ControllerInterface"] * len(res.types)
         return res
 
-    def _list_interfaces(self, req: Any, res: Any) -> Any:
+    def _list_interfaces(
+        self, req: ListHardwareInterfaces.Request, res: ListHardwareInterfaces.Response
+    ) -> ListHardwareInterfaces.Response:
         """ListHardwareInterfaces: every command interface (claimed or not) and every state interface, all doubles."""
 
         def query() -> tuple[list[HardwareInterface], list[HardwareInterface]]:
@@ -235,7 +289,9 @@ class ControllerManagerNode(Node):
         res.command_interfaces, res.state_interfaces = self.sim.call(query)
         return res
 
-    def _list_components(self, req: Any, res: Any) -> Any:
+    def _list_components(
+        self, req: ListHardwareComponents.Request, res: ListHardwareComponents.Response
+    ) -> ListHardwareComponents.Response:
         """ListHardwareComponents: each ``<ros2_control>`` block's hardware with its lifecycle state and interfaces;
         ``rw_rate`` is the manager's rate, at which the simulated hardware is read and written."""
 
@@ -265,17 +321,17 @@ class ControllerManagerNode(Node):
         res.component = self.sim.call(query)
         return res
 
-    def _by_name(self, action: Any) -> Any:
+    def _by_name(self, action: Callable[[str], object]) -> Callable[[_NamedRequest, _OkResponse], _OkResponse]:
         """A service whose request is a controller's ``name``: ``action(name)`` on the simulation thread."""
 
-        def serve(req: Any, res: Any) -> Any:
+        def serve(req: _NamedRequest, res: _OkResponse) -> _OkResponse:
             self.sim.call(lambda: action(req.name))
             res.ok = True
             return res
 
         return serve
 
-    def _switch(self, req: Any, res: Any) -> Any:
+    def _switch(self, req: SwitchController.Request, res: SwitchController.Response) -> SwitchController.Response:
         """SwitchController: activate and deactivate in one switch. STRICT (2) refuses the whole switch on a
         problem; BEST_EFFORT (1) does what it can and says what it could not in ``message``. AUTO and FORCE_AUTO
         (Jazzy's 3 and 4, which would also switch the controllers a chain needs) are read as STRICT."""
@@ -288,7 +344,9 @@ class ControllerManagerNode(Node):
         res.message = "; ".join(problems) if problems else "Switch successful"
         return res
 
-    def _set_hw_state(self, req: Any, res: Any) -> Any:
+    def _set_hw_state(
+        self, req: SetHardwareComponentState.Request, res: SetHardwareComponentState.Response
+    ) -> SetHardwareComponentState.Response:
         """SetHardwareComponentState: move a hardware component to a lifecycle state, by id or by label; the reply
         carries the state it reached."""
         target = _BY_ID.get(req.target_state.id) or req.target_state.label
@@ -298,12 +356,12 @@ class ControllerManagerNode(Node):
         return res
 
     # ------------------------------------------------------------------ controllers' actions
-    def add_controller_action(self, controller: Any) -> None:
+    def add_controller_action(self, controller: Controller) -> None:
         """Serve a controller's action, by the type it declares (``Controller.action_type``):
         ``follow_joint_trajectory`` of a JTC, ``gripper_cmd`` of a gripper. A type gazelle does not serve
         is an error naming it (a new controller's action needs its server here)."""
         if controller.action_type == "control_msgs/action/FollowJointTrajectory":
-            jtc = controller
+            jtc = cast(JointTrajectoryController, controller)
             server = serve_action(
                 self,
                 FollowJointTrajectory,
@@ -313,7 +371,7 @@ class ControllerManagerNode(Node):
                 accept=lambda goal: self._accept(jtc, goal),
             )
         elif controller.action_type == "control_msgs/action/GripperCommand":
-            gripper = controller
+            gripper = cast(GripperActionController, controller)
             server = serve_action(
                 self,
                 GripperCommand,
@@ -328,7 +386,7 @@ class ControllerManagerNode(Node):
         with self._lock:
             self._actions[id(controller)] = server
 
-    def remove_controller_action(self, controller: Any) -> None:
+    def remove_controller_action(self, controller: Controller) -> None:
         """Stop serving a controller's action (it was cleaned up or unloaded)."""
         with self._lock:
             server = self._actions.pop(id(controller), None)
@@ -344,14 +402,14 @@ class ControllerManagerNode(Node):
             server.destroy()
         super().destroy_node()
 
-    def _execute_gripper(self, gripper: GripperActionController, handle: Any) -> Any:
+    def _execute_gripper(self, gripper: GripperActionController, handle: ServerGoalHandle) -> GripperCommand.Result:
         """GripperCommand's execute callback: submit the goal to the gripper controller, feed back the finger's
         position, effort and whether it stalled, and end as the goal ended."""
         cmd = handle.request.command
         goal = GripperGoal(float(cmd.position), float(cmd.max_effort))
         self.sim.call(lambda: gripper.submit(goal))
 
-        def feedback() -> Any:
+        def feedback() -> GripperCommand.Feedback:
             q, effort = goal.feedback
             return GripperCommand.Feedback(
                 position=q, effort=effort, stalled=goal.stalled, reached_goal=goal.reached_goal
@@ -361,7 +419,13 @@ class ControllerManagerNode(Node):
         q, effort = goal.feedback
         return GripperCommand.Result(position=q, effort=effort, stalled=goal.stalled, reached_goal=goal.reached_goal)
 
-    def _follow(self, handle: Any, goal: Any, cancel: Any, feedback: Any) -> None:
+    def _follow(
+        self,
+        handle: ServerGoalHandle,
+        goal: TrajectoryGoal | GripperGoal,
+        cancel: Callable[[], object],
+        feedback: Callable[[], object | None],
+    ) -> None:
         """Watch a submitted goal until it ends: feedback at the monitor rate, a cancel request passed on
         to the controller, and the action ended as the goal did (succeeded, canceled or aborted)."""
         while not goal.done.wait(ACTION_MONITOR_SEC):
@@ -380,7 +444,7 @@ class ControllerManagerNode(Node):
         else:
             handle.abort()
 
-    def _accept(self, jtc: JointTrajectoryController, goal: Any) -> GoalResponse:
+    def _accept(self, jtc: JointTrajectoryController, goal: FollowJointTrajectory.Goal) -> GoalResponse:
         """FollowJointTrajectory's goal callback: the trajectory is checked on the simulation thread (the controller
         is active, its joints are the controller's, its points are well formed and not all in the past) and
         refused with the reason in the log, as the JTC refuses it."""
@@ -394,7 +458,7 @@ class ControllerManagerNode(Node):
             return GoalResponse.REJECT
         return GoalResponse.ACCEPT
 
-    def _execute(self, jtc: JointTrajectoryController, handle: Any) -> Any:
+    def _execute(self, jtc: JointTrajectoryController, handle: ServerGoalHandle) -> FollowJointTrajectory.Result:
         """FollowJointTrajectory's execute callback: the goal with its path and goal tolerances (the controller's
         own where the request gives none) is submitted; feedback is the controller's last state at the monitor
         rate; the result carries the controller's error code and text (PATH_TOLERANCE_VIOLATED,
@@ -413,7 +477,7 @@ class ControllerManagerNode(Node):
             result.error_code, result.error_string = FollowJointTrajectory.Result.INVALID_GOAL, "simulation busy"
             return result
 
-        def feedback() -> Any:
+        def feedback() -> FollowJointTrajectory.Feedback | None:
             state = jtc.last_state
             if state is None:
                 return None

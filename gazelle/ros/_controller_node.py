@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import logging
 import threading
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
 from rclpy.node import Node
@@ -22,13 +22,16 @@ from ..sim import Simulation
 from ..systems.ros2_control import ControlError
 from ..systems.ros2_control import ControllerParameters as Parameters
 
+if TYPE_CHECKING:
+    from rclpy.context import Context
+
 _log = logging.getLogger(__name__)
 
 
 class ControllerNode(Node):
     """See the module docstring."""
 
-    def __init__(self, sim: Simulation, params: Parameters, context: Any) -> None:
+    def __init__(self, sim: Simulation, params: Parameters, context: Context | None) -> None:
         """The node, its parameters declared with the values they have now (call on the thread that loaded the
         controller: the simulation's, between two steps)."""
         super().__init__(params.name, namespace=params.namespace or "/", context=context)

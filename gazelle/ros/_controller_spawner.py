@@ -15,6 +15,7 @@ import argparse
 import math
 import sys
 import time
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -194,7 +195,7 @@ def unspawner_main(argv: list[str]) -> int:
     return _with_node("unspawner", lambda cli: _unspawn(cli, args), _manager_name(args), args.service_call_timeout)
 
 
-def _with_node(name: str, body: Any, manager: str, timeout: float) -> int:
+def _with_node(name: str, body: Callable[[_Client], int], manager: str, timeout: float) -> int:
     """Run a spawner body with a node and executor of its own, shut down after; Ctrl-C or a service that
     never answers is one error line and status 1, never a traceback."""
     context = Context()

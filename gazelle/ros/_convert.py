@@ -25,7 +25,7 @@ import math
 from array import array
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from builtin_interfaces.msg import Duration, Time
 from gazebo_msgs.msg import ContactsState, ContactState
@@ -90,6 +90,10 @@ from ..systems import (
     WrenchStamped,
 )
 from ._interfaces import InterfaceError, resolve_interface
+
+if TYPE_CHECKING:
+    from control_msgs.msg import DynamicJointState as DynamicJointStateMsg
+    from control_msgs.msg import JointTrajectoryControllerState as JointTrajectoryControllerStateMsg
 
 
 def split_seconds(sec: float) -> tuple[int, int]:
@@ -422,7 +426,7 @@ def to_joint_trajectory_msg(t: JointTrajectory) -> JointTrajectoryMsg:
     return msg
 
 
-def to_jtc_state_msg(s: TrajectoryControllerState) -> Any:
+def to_jtc_state_msg(s: TrajectoryControllerState) -> JointTrajectoryControllerStateMsg:
     """Bus payload -> control_msgs/JointTrajectoryControllerState."""
     msg = ros_type(MsgType.TRAJECTORY_CONTROLLER_STATE)(
         joint_names=list(s.joint_names),
@@ -435,7 +439,7 @@ def to_jtc_state_msg(s: TrajectoryControllerState) -> Any:
     return msg
 
 
-def to_dynamic_joint_state_msg(s: DynamicJointState) -> Any:
+def to_dynamic_joint_state_msg(s: DynamicJointState) -> DynamicJointStateMsg:
     """Bus payload -> control_msgs/DynamicJointState."""
     interface_value = interface_class("control_msgs/msg/InterfaceValue")
     msg = ros_type(MsgType.DYNAMIC_JOINT_STATE)(

@@ -29,21 +29,29 @@ from __future__ import annotations
 
 import array
 import sys
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 import rclpy
+from builtin_interfaces.msg import Time
 from geometry_msgs.msg import (
     AccelWithCovarianceStamped,
+    Point,
+    PoseWithCovariance,
     PoseWithCovarianceStamped,
+    Quaternion,
     TransformStamped,
     Twist,
+    TwistWithCovariance,
     TwistWithCovarianceStamped,
+    Vector3,
 )
 from nav_msgs.msg import Odometry
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 from sensor_msgs.msg import Imu
+from std_msgs.msg import Header
 from std_srvs.srv import Empty
 from tf2_msgs.msg import TFMessage
 
@@ -67,40 +75,38 @@ NODE_NAME = "ekf_filter_node"
 INPUT_TYPES = {"odom": Odometry, "pose": PoseWithCovarianceStamped, "twist": TwistWithCovarianceStamped, "imu": Imu}
 
 
-def _ns(stamp: Any) -> int:
+def _ns(stamp: Time) -> int:
     return int(stamp.sec) * 1_000_000_000 + int(stamp.nanosec)
 
 
-def _stamp(ns: int) -> Any:
-    from builtin_interfaces.msg import Time
-
+def _stamp(ns: int) -> Time:
     return Time(sec=ns // 1_000_000_000, nanosec=ns % 1_000_000_000)
 
 
-def _xyz(v: Any) -> tuple[float, float, float]:
+def _xyz(v: Vector3 | Point) -> tuple[float, float, float]:
     return (float(v.x), float(v.y), float(v.z))
 
 
-def _xyzw(q: Any) -> tuple[float, float, float, float]:
+def _xyzw(q: Quaternion) -> tuple[float, float, float, float]:
     return (float(q.x), float(q.y), float(q.z), float(q.w))
 
 
-def _matrix(values: Any, n: int) -> np.ndarray:
+def _matrix(values: Sequence[float] | np.ndarray, n: int) -> np.ndarray:
     return np.asarray(values, dtype=float).reshape(n, n)
 
 
-def pose_reading(header: Any, p: Any) -> PoseReading:
+def pose_reading(header: Header, p: PoseWithCovariance) -> PoseReading:
     """A geometry_msgs/PoseWithCovariance with its header as plain values."""
     position, orientation = _xyz(p.pose.position), _xyzw(p.pose.orientation)
     return PoseReading(_ns(header.stamp), header.frame_id, position, orientation, _matrix(p.covariance, 6))
 
 
-def twist_reading(stamp: Any, frame: str, t: Any) -> TwistReading:
+def twist_reading(stamp: Time, frame: str, t: TwistWithCovariance) -> TwistReading:
     """A geometry_msgs/TwistWithCovariance as plain values."""
     return TwistReading(_ns(stamp), frame, _xyz(t.twist.linear), _xyz(t.twist.angular), _matrix(t.covariance, 6))
 
 
-def imu_reading(m: Any) -> ImuReading:
+def imu_reading(m: Imu) -> ImuReading:
     """A sensor_msgs/Imu as plain values."""
     return ImuReading(
         _ns(m.header.stamp),
@@ -148,10 +154,10 @@ class EkfNode(Node):
         self.create_timer(1.0 / self.cfg.frequency, self._cycle)
 
     # ------------------------------------------------------------------ set-up
-    def _parameter_values(self) -> dict[str, Any]:
+    def _parameter_values(self) -> dict[str, object]:
         """Every parameter set (a params file, ``-p``, a launch file's dict) -> its value, arrays as lists."""
         names = self.list_parameters([], 0).names
-        out: dict[str, Any] = {}
+        out: dict[str, object] = {}
         for name in names:
             value = self.get_parameter(name).value
             out[name] = list(value) if isinstance(value, array.array | tuple) else value
@@ -224,12 +230,12 @@ class EkfNode(Node):
         self.get_logger().info(f"Received set_pose request with value {m.pose.pose}")
         self.estimator.set_pose(pose_reading(m.header, m.pose), self._now())
 
-    def _on_reset(self, _request: Any, response: Any) -> Any:
+    def _on_reset(self, _request: Empty.Request, response: Empty.Response) -> Empty.Response:
         self.get_logger().info("Received a request to reset filter.")
         self.estimator.reset()
         return response
 
-    def _on_enable(self, _request: Any, response: Any) -> Any:
+    def _on_enable(self, _request: Empty.Request, response: Empty.Response) -> Empty.Response:
         if self.estimator.enabled:
             self.get_logger().warning(
                 f"[{self.get_name()}:] Asking for enabling filter service, but the filter was already enabled! "

@@ -21,10 +21,13 @@ import socket
 import threading
 import time
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING
 
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
+
+if TYPE_CHECKING:
+    from rclpy.node import Node
 
 DISCOVERY_VARIABLES = ("ROS_AUTOMATIC_DISCOVERY_RANGE", "ROS_LOCALHOST_ONLY", "ROS_STATIC_PEERS")
 ANNOUNCE_TOPIC = "/_gazelle/servers"
@@ -64,7 +67,7 @@ class ServerId:
 class ServerRegistry:
     """Announces this server and notices others on the same domain (see the module docstring)."""
 
-    def __init__(self, node: Any) -> None:
+    def __init__(self, node: Node) -> None:
         """Announce this server on the domain (latched: start time, host, pid) and listen for others: two ``gazelle
         sim`` on one domain would both answer every spawn."""
         self.me = ServerId(time.time(), socket.gethostname(), os.getpid())

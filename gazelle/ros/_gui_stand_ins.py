@@ -20,10 +20,14 @@ from __future__ import annotations
 import json
 import os
 import sys
-from typing import Any
+from typing import TYPE_CHECKING
 
 from ._exposure import ANNOUNCE_TOPIC
 from ._names import gz_topic_on_ros
+
+if TYPE_CHECKING:
+    from rclpy.publisher import Publisher
+    from rclpy.subscription import Subscription
 
 NO_SERVER_NOTICE_SEC = 5.0
 """How long a GUI stand-in waits for a server's viewer before saying what it waits for."""
@@ -94,7 +98,7 @@ def image_bridge_main(argv: list[str]) -> int:
         print("image_bridge (gazelle): usage: image_bridge TOPIC [TOPIC ...] (nothing to bridge)", file=sys.stderr)
     # the gz-named side of a relay: a node that ignores the command line's remapping rules
     raw = rclpy.create_node("image_bridge_gz_side", use_global_arguments=False, start_parameter_services=False)
-    keep: list[Any] = []
+    keep: list[Publisher | Subscription] = []
     for topic in topics:
         gz_name = gz_topic_on_ros(topic)
         ros_name = node.resolve_topic_name(topic)

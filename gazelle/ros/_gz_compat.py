@@ -15,10 +15,16 @@ from __future__ import annotations
 import sys
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ._interfaces import resolve_interface
 from ._names import gz_topic_on_ros
+
+if TYPE_CHECKING:
+    from rclpy.node import Node
+    from rclpy.publisher import Publisher
+    from rclpy.qos import QoSProfile
+    from rclpy.subscription import Subscription
 
 BRIDGE_DIRECTIONS = ("@", "[", "]")
 
@@ -108,7 +114,7 @@ def _bridge_entries(
     return entries, problems
 
 
-def _bridge_node(argv: list[str]) -> tuple[Any, list[str], str, bool]:
+def _bridge_node(argv: list[str]) -> tuple[Node, list[str], str, bool]:
     """The ``ros_gz_bridge`` node, made before anything is read, as ``RosGzBridge``'s constructor declares its
     parameters (ros_gz_bridge.cpp, jazzy): rcl then applies every form a user gives them, ``-p config_file:=F``,
     ``--params-file`` (what a launch file's ``parameters=[{...}]`` becomes) with its ``/**`` and node-name
@@ -166,7 +172,7 @@ def bridge_main(argv: list[str]) -> int:
         try_shutdown()
         return 1 if problems else 0
     qos = QoSPresetProfiles.SYSTEM_DEFAULT.value
-    keep: list[Any] = []
+    keep: list[Publisher | Subscription] = []
     if typed:
         _TypeRelays(node, typed, qos, keep)
     for e in relays:
@@ -191,7 +197,7 @@ def bridge_main(argv: list[str]) -> int:
     return 0
 
 
-def _type_name(cls: Any) -> str:
+def _type_name(cls: type) -> str:
     """``geometry_msgs/Twist`` for the rclpy class (rosidl's field types name nested messages so)."""
     return f"{cls.__module__.split('.')[0]}/{cls.__name__}"
 
@@ -216,15 +222,17 @@ class _TypeRelays:
     may be spawned after the bridge starts), a relay on the same name converts between the two types, in
     the entry's direction, as the bridge would."""
 
-    def __init__(self, node: Any, entries: list[BridgeEntry], qos: Any, keep: list[Any]) -> None:
+    def __init__(
+        self, node: Node, entries: list[BridgeEntry], qos: QoSProfile, keep: list[Publisher | Subscription]
+    ) -> None:
         """Relays for ros_gz_bridge YAML entries whose ROS type differs from the one gazelle publishes (the YAML's
         ``ros_type_name`` is what the user's nodes expect); checked every 0.5 s until every topic has appeared."""
         self.node, self.pending, self.qos, self.keep = node, list(entries), qos, keep
-        self._out: Any = None
+        self._out: Node | None = None
         self.timer = node.create_timer(0.5, self.check)
         self.check()
 
-    def out_node(self) -> Any:
+    def out_node(self) -> Node:
         """A node in a context of its own for the converted side: one DDS participant refuses a topic name
         with two types ("create_subscription() called for existing topic name rt/cmd_vel with incompatible
         type"), so the two types of one name live in two participants. Publishing needs no spinning."""

@@ -32,12 +32,16 @@ from __future__ import annotations
 import math
 import sys
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rclpy.node import Node
 
 from .._errors import SimError
 from ..description import JointType, Model, ModelLoadError, load_string
+
+if TYPE_CHECKING:
+    from sensor_msgs.msg import JointState
+    from std_msgs.msg import String
 
 URDF_SKIPPED = frozenset({JointType.FIXED, JointType.FLOATING, JointType.PLANAR})
 """URDF joint types that are never in the message (``init_urdf``)."""
@@ -294,7 +298,7 @@ class JointStatePublisherNode(Node):
             )
         return out
 
-    def _on_description(self, msg: Any) -> None:
+    def _on_description(self, msg: String) -> None:
         """A description published on ``robot_description`` (latched): the robot from now on."""
         self._configure(str(msg.data))
 
@@ -321,7 +325,7 @@ class JointStatePublisherNode(Node):
             return
         self._robot = robot
 
-    def _on_source(self, msg: Any) -> None:
+    def _on_source(self, msg: JointState) -> None:
         """A source's values for the free joints it names (an array it leaves empty changes nothing)."""
         for i, name in enumerate(msg.name):
             joint = self._robot.free.get(name)

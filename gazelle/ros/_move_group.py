@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import os
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -81,7 +82,11 @@ class MoveGroupNode(Node):
     capabilities that serve through it, as MoveIt's ``MoveGroupExe`` owns its context and capability plugins."""
 
     def __init__(
-        self, *, srdf_source: str = "robot_description_semantic", resolve_mesh: Any = None, **kwargs: Any
+        self,
+        *,
+        srdf_source: str = "robot_description_semantic",
+        resolve_mesh: Callable[[str], str | None] | None = None,
+        **kwargs: Any,
     ) -> None:
         """The ``move_group`` node: it takes the robot from ``robot_description`` and ``robot_description_semantic``
         (parameters, or the latched topics), serves MoveIt's planning, kinematics and scene interfaces, and
@@ -261,7 +266,7 @@ def move_group_main(argv: list[str]) -> int:
     start_signal_watchdog(SHUTDOWN_DEADLINE_SEC)
     announce_often()
     rclpy.init(args=["move_group", *ros_args])
-    resolve_mesh: Any = None
+    resolve_mesh: Callable[[str], str | None] | None = None
     if args.urdf:  # the folder of the file the user named may be read, as for a spawn
         from ..description import ResourceResolver
 

@@ -3,13 +3,14 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from moveit_msgs.srv import ApplyPlanningScene
 
 from ._move_group_capability import serve_on_planner
 
 if TYPE_CHECKING:
+    from ..planning import ArmPlanner
     from ._move_group_context import MoveGroupContext
 
 
@@ -26,8 +27,8 @@ class ApplyPlanningSceneService:
         pass  # its service goes with the node
 
     def apply_planning_scene(
-        self, req: ApplyPlanningScene.Request, res: ApplyPlanningScene.Response, _planner: Any
-    ) -> Any:
+        self, req: ApplyPlanningScene.Request, res: ApplyPlanningScene.Response, _planner: ArmPlanner
+    ) -> ApplyPlanningScene.Response:
         """A diff or a whole scene, checked whole before any of it is applied (a bad one changes nothing and is
         refused with why); the caller holds the pool for writing."""
         self.context.scene.apply_scene(req.scene)

@@ -7,7 +7,8 @@ service registration they share: every request answered, on the planner of its k
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, Protocol
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Protocol, TypeVar
 
 from ..description import reply_text
 from ..planning import PlanningError
@@ -15,7 +16,13 @@ from ._move_group_common import _failed
 from ._replies import serve
 
 if TYPE_CHECKING:
+    from rclpy.service import Service
+
+    from ..planning import ArmPlanner
     from ._move_group_context import MoveGroupContext
+
+Req = TypeVar("Req")
+Res = TypeVar("Res")
 
 NO_ROBOT = "move_group has no robot yet (robot_description and robot_description_semantic)"
 """What a request is answered while the robot is not known."""
@@ -35,12 +42,16 @@ INTERNAL_ERROR = "internal error in gazelle's planner (move_group's log has the 
 them."""
 
 
-def serve_on_planner(context: MoveGroupContext, srv_type: Any, name: str, fn: Any, role: str) -> Any:
+def serve_on_planner(
+    context: MoveGroupContext, srv_type: type, name: str, fn: Callable[[Req, Res, ArmPlanner], Res], role: str
+) -> Service:
     """Serve ``name`` with :func:`planner_callback` of ``fn``."""
     return serve(context.node, srv_type, name, planner_callback(context, name, fn, role), context.callback_group)
 
 
-def planner_callback(context: MoveGroupContext, name: str, fn: Any, role: str) -> Any:
+def planner_callback(
+    context: MoveGroupContext, name: str, fn: Callable[[Req, Res, ArmPlanner], Res], role: str
+) -> Callable[[Req, Res], Res]:
     """``fn(request, response, planner)`` as a service callback that answers every request: with no robot yet, a
     FAILURE saying what is missing; a PlanningError as its MoveIt error code and message (cut to a reply's
     length, its quoted values to excerpts); anything else as FAILURE with :data:`INTERNAL_ERROR`, the error
@@ -48,7 +59,7 @@ def planner_callback(context: MoveGroupContext, name: str, fn: Any, role: str) -
     ``write``, on the primary planner with every lock held (roboplan's scenes are not re-entrant)."""
     logger = context.logger
 
-    def wrapper(request: Any, response: Any) -> Any:
+    def wrapper(request: Req, response: Res) -> Res:
         pool = context.pool
         if pool is None:
             return _failed(response, "FAILURE", NO_ROBOT)

@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from moveit_msgs.srv import GetCartesianPath
 
@@ -30,7 +30,7 @@ class CartesianPathService:
 
     def compute_cartesian_path(
         self, req: GetCartesianPath.Request, res: GetCartesianPath.Response, planner: ArmPlanner
-    ) -> Any:
+    ) -> GetCartesianPath.Response:
         """The link's straight-line path through the waypoints in ``max_step`` steps, cut where IK fails, a joint
         jumps (``jump_threshold``) or a collision begins; ``fraction`` says how much was achieved, and a partial
         path still answers SUCCESS, as MoveIt does. The planner's bounds refuse more than ``MAX_CARTESIAN_STEPS``

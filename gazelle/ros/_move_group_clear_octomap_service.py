@@ -5,7 +5,7 @@ to clear; it says MoveIt's two log lines all the same."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from std_srvs.srv import Empty
 
@@ -27,7 +27,7 @@ class ClearOctomapService:
     def destroy(self) -> None:
         pass  # its service goes with the node
 
-    def clear_octomap(self, _req: Empty.Request, res: Empty.Response) -> Any:
+    def clear_octomap(self, _req: Empty.Request, res: Empty.Response) -> Empty.Response:
         self.context.logger.info("Clearing octomap...")
         self.context.logger.info("Octomap cleared.")
         return res

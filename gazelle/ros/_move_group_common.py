@@ -8,17 +8,44 @@ import logging
 import math
 import re
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Protocol, TypeVar, runtime_checkable
 
 import numpy as np
 from action_msgs.msg import GoalStatus
 from builtin_interfaces.msg import Duration as DurationMsg
-from moveit_msgs.msg import (
-    MoveItErrorCodes,
-)
+from geometry_msgs.msg import Quaternion
+from moveit_msgs.msg import MotionPlanResponse, MoveItErrorCodes
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
+if TYPE_CHECKING:
+    from rclpy.action.server import ServerGoalHandle
+
+    from ..planning import Shape
+
 _log = logging.getLogger("gazelle.move_group")
+R = TypeVar("R")
+
+
+@runtime_checkable
+class _WithPlanResponse(Protocol):
+    """A reply whose error code is in its motion plan response (GetMotionPlan)."""
+
+    motion_plan_response: MotionPlanResponse
+
+
+@runtime_checkable
+class _WithErrorCode(Protocol):
+    """A reply with a MoveIt error code of its own."""
+
+    error_code: MoveItErrorCodes
+
+
+@runtime_checkable
+class _WithSuccess(Protocol):
+    """A reply that says only whether it succeeded."""
+
+    success: bool
+
 
 OBJECT_PADDING_PARAMETER = "robot_description_planning.default_object_padding"
 """MoveIt's parameter (m) by which world objects are grown for collision checking; 0 by default, as MoveIt's
@@ -59,22 +86,22 @@ def _code(name: str) -> MoveItErrorCodes:
     return MoveItErrorCodes(val=getattr(MoveItErrorCodes, name, MoveItErrorCodes.FAILURE))
 
 
-def _same_shapes(a: tuple[Any, ...], b: tuple[Any, ...]) -> bool:
+def _same_shapes(a: tuple[Shape, ...], b: tuple[Shape, ...]) -> bool:
     return len(a) == len(b) and all(
         x.kind == y.kind and x.dimensions == y.dimensions and np.allclose(x.pose, y.pose) for x, y in zip(a, b)
     )
 
 
-def _failed(response: Any, code: str, message: str) -> Any:
+def _failed(response: R, code: str, message: str) -> R:
     """A service response that says why it failed: its error_code (GetMotionPlan's is in its
     motion_plan_response: an internal error there answered code 0 with no message), or ``success``."""
-    if hasattr(response, "motion_plan_response"):
+    if isinstance(response, _WithPlanResponse):
         response.motion_plan_response.error_code = _code(code)
         response.motion_plan_response.error_code.message = message
-    elif hasattr(response, "error_code"):
+    elif isinstance(response, _WithErrorCode):
         response.error_code = _code(code)
         response.error_code.message = message
-    elif hasattr(response, "success"):
+    elif isinstance(response, _WithSuccess):
         response.success = False
     return response
 
@@ -99,13 +126,11 @@ class Controller:
     """moveit_simple_controller_manager's ``default``: preferred where several controllers have the joints."""
 
 
-def _quat(q: np.ndarray) -> Any:
-    from geometry_msgs.msg import Quaternion
-
+def _quat(q: np.ndarray) -> Quaternion:
     return Quaternion(x=float(q[0]), y=float(q[1]), z=float(q[2]), w=float(q[3]))
 
 
-def _end_goal(handle: Any, code: str, preempted: str) -> None:
+def _end_goal(handle: ServerGoalHandle, code: str, preempted: str) -> None:
     """End an action goal as its MoveItErrorCodes name says: succeeded, aborted, or for PREEMPTED as the
     action's capability ends it (``preempted``: "canceled" or "abort")."""
     if code == "SUCCESS":

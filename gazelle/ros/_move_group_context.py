@@ -19,6 +19,9 @@ from ._joint_state_monitor import JointStateMonitor
 from ._move_group_common import CURRENT_STATE_WAIT, _duration
 
 if TYPE_CHECKING:
+    from rclpy.callback_groups import CallbackGroup
+    from rclpy.impl.rcutils_logger import RcutilsLogger
+
     from ._move_group_pipeline import PlanningPipeline
     from ._move_group_scene_monitor import PlanningSceneMonitor
     from ._move_group_trajectory_execution import TrajectoryExecutionManager
@@ -38,7 +41,7 @@ class MoveGroupContext:
     execution: TrajectoryExecutionManager
     """Runs trajectories on the controllers (or gz command topics)."""
 
-    def __init__(self, node: Node, callback_group: Any) -> None:
+    def __init__(self, node: Node, callback_group: CallbackGroup) -> None:
         self.node = node
         """The move_group node: its parameters, its logger, where capabilities register."""
         self.callback_group = callback_group
@@ -66,7 +69,7 @@ class MoveGroupContext:
         return self.joint_states.positions()
 
     @property
-    def logger(self) -> Any:
+    def logger(self) -> RcutilsLogger:
         return self.node.get_logger()
 
     def warn(self, text: str) -> None:
@@ -90,7 +93,7 @@ class MoveGroupContext:
         """A parameter's value of any type, ``default`` when it is not set."""
         return self.node.get_parameter(name).value if self.node.has_parameter(name) else default
 
-    def parameters(self) -> dict[str, Any]:
+    def parameters(self) -> dict[str, object]:
         """Every parameter of the node, name -> value (MoveIt's configs are read from them)."""
         return {name: p.value for name, p in self.node._parameters.items()}
 

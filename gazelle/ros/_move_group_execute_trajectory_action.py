@@ -4,7 +4,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from moveit_msgs.action import ExecuteTrajectory
 from trajectory_msgs.msg import JointTrajectory
@@ -14,6 +14,8 @@ from ._move_group_common import _code, _end_goal, _seconds
 from ._replies import serve_action
 
 if TYPE_CHECKING:
+    from rclpy.action.server import ActionServer, ServerGoalHandle
+
     from ._move_group_context import MoveGroupContext
 
 
@@ -23,7 +25,7 @@ class ExecuteTrajectoryAction:
 
     def __init__(self, context: MoveGroupContext) -> None:
         self.context = context
-        self._server: Any = None
+        self._server: ActionServer | None = None
 
     def initialize(self) -> None:
         self._server = serve_action(
@@ -35,7 +37,7 @@ class ExecuteTrajectoryAction:
         if self._server is not None:
             self._server.destroy()
 
-    def execute(self, handle: Any) -> ExecuteTrajectory.Result:
+    def execute(self, handle: ServerGoalHandle) -> ExecuteTrajectory.Result:
         """The ``execute_trajectory`` goal (execute_trajectory_action_capability.cpp): a trajectory beyond the
         limits is refused (INVALID_MOTION_PLAN) before anything moves; otherwise it runs on its controllers and
         anything but success ends the goal aborted, as MoveIt ends it."""

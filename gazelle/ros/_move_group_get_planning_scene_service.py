@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from moveit_msgs.srv import GetPlanningScene
 
@@ -28,7 +28,7 @@ class GetPlanningSceneService:
 
     def get_planning_scene(
         self, req: GetPlanningScene.Request, res: GetPlanningScene.Response, planner: ArmPlanner
-    ) -> Any:
+    ) -> GetPlanningScene.Response:
         """The robot's current state with its attached objects and the world's collision objects (the
         simulation's own included), as a whole scene; gazelle fills every component whatever ``components`` asks
         (a superset of what MoveIt returns). Read from the query planner, a copy of the primary's scene, so it

@@ -8,7 +8,7 @@ write and read any path a ROS peer names, which gazelle's servers do not do."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from moveit_msgs.msg import MoveItErrorCodes
 from moveit_msgs.srv import GetGroupUrdf
@@ -32,7 +32,9 @@ class GetUrdfService:
     def destroy(self) -> None:
         pass  # its service goes with the node
 
-    def get_urdf(self, req: GetGroupUrdf.Request, res: GetGroupUrdf.Response, planner: ArmPlanner) -> Any:
+    def get_urdf(
+        self, req: GetGroupUrdf.Request, res: GetGroupUrdf.Response, planner: ArmPlanner
+    ) -> GetGroupUrdf.Response:
         """The URDF of one planning group's links and joints, with the error code's source ``GetUrdfService`` as
         MoveIt sets it; an unknown group is FAILURE with why (the name quoted, at most ``NAME_CHARS`` characters
         of it)."""

@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 import time
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from moveit_msgs.action import MoveGroup
 from moveit_msgs.msg import DisplayTrajectory
@@ -15,6 +15,8 @@ from ._move_group_common import _code, _end_goal
 from ._replies import serve_action
 
 if TYPE_CHECKING:
+    from rclpy.action.server import ActionServer, ServerGoalHandle
+
     from ._move_group_context import MoveGroupContext
 
 
@@ -24,7 +26,7 @@ class MoveAction:
 
     def __init__(self, context: MoveGroupContext) -> None:
         self.context = context
-        self._server: Any = None
+        self._server: ActionServer | None = None
 
     def initialize(self) -> None:
         self._server = serve_action(
@@ -37,7 +39,7 @@ class MoveAction:
         if self._server is not None:
             self._server.destroy()
 
-    def execute(self, handle: Any) -> MoveGroup.Result:
+    def execute(self, handle: ServerGoalHandle) -> MoveGroup.Result:
         """The ``move_action`` goal (move_action_capability.cpp): plan the request (feedback PLANNING), show the
         plan on /display_planned_path, and unless ``plan_only`` execute it (feedback MONITOR); the result carries
         the start state, the planned trajectory and, on success, the executed one."""

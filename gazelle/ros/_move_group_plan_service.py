@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 import time
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from moveit_msgs.srv import GetMotionPlan
 
@@ -13,6 +13,7 @@ from ._move_group_capability import serve_on_planner
 from ._move_group_common import _code
 
 if TYPE_CHECKING:
+    from ..planning import ArmPlanner
     from ._move_group_context import MoveGroupContext
 
 
@@ -28,7 +29,9 @@ class PlanService:
     def destroy(self) -> None:
         pass  # its service goes with the node
 
-    def plan_kinematic_path(self, req: GetMotionPlan.Request, res: GetMotionPlan.Response, _planner: Any) -> Any:
+    def plan_kinematic_path(
+        self, req: GetMotionPlan.Request, res: GetMotionPlan.Response, _planner: ArmPlanner
+    ) -> GetMotionPlan.Response:
         """Plan without executing (on the primary planner, held by the caller); a failure is the response's error
         code and message (MoveIt's MoveItErrorCodes), never an exception to the client."""
         t0 = time.monotonic()

@@ -32,6 +32,7 @@ from ..planning import quoted
 from ._move_group_capability import serve_on_planner
 
 if TYPE_CHECKING:
+    from ..planning import ArmPlanner
     from ._move_group_context import MoveGroupContext
 
 PIPELINE = "ompl"
@@ -82,12 +83,12 @@ class QueryPlannersService:
         """Planner configuration name -> its parameters, read from the node's parameters on first use."""
 
     def initialize(self) -> None:
-        for srv_type, name, fn in (
-            (QueryPlannerInterfaces, "query_planner_interface", self.query_planner_interface),
-            (GetPlannerParams, "get_planner_params", self.get_planner_params),
-            (SetPlannerParams, "set_planner_params", self.set_planner_params),
-        ):
-            serve_on_planner(self.context, srv_type, name, fn, "query")
+        context = self.context
+        serve_on_planner(
+            context, QueryPlannerInterfaces, "query_planner_interface", self.query_planner_interface, "query"
+        )
+        serve_on_planner(context, GetPlannerParams, "get_planner_params", self.get_planner_params, "query")
+        serve_on_planner(context, SetPlannerParams, "set_planner_params", self.set_planner_params, "query")
 
     def destroy(self) -> None:
         pass  # its services go with the node
@@ -153,7 +154,7 @@ class QueryPlannersService:
         return False
 
     def query_planner_interface(
-        self, _req: QueryPlannerInterfaces.Request, res: QueryPlannerInterfaces.Response, _planner: Any
+        self, _req: QueryPlannerInterfaces.Request, res: QueryPlannerInterfaces.Response, _planner: ArmPlanner
     ) -> QueryPlannerInterfaces.Response:
         """``query_planner_interface``: one description, pipeline ``ompl``, its configurations' names in
         MoveIt's (std::map's) order."""
@@ -165,7 +166,7 @@ class QueryPlannersService:
         return res
 
     def get_planner_params(
-        self, req: GetPlannerParams.Request, res: GetPlannerParams.Response, _planner: Any
+        self, req: GetPlannerParams.Request, res: GetPlannerParams.Response, _planner: ArmPlanner
     ) -> GetPlannerParams.Response:
         """``get_planner_params``: the configuration ``planner_config``, merged with ``group[planner_config]``
         when a group is given (the group's values do not replace the configuration's: std::map::insert)."""
@@ -181,7 +182,7 @@ class QueryPlannersService:
         return res
 
     def set_planner_params(
-        self, req: SetPlannerParams.Request, res: SetPlannerParams.Response, _planner: Any
+        self, req: SetPlannerParams.Request, res: SetPlannerParams.Response, _planner: ArmPlanner
     ) -> SetPlannerParams.Response:
         """``set_planner_params``: store the values under ``planner_config`` (``group[planner_config]``
         with a group), cleared first with ``replace``."""

@@ -8,7 +8,8 @@ the simulation's collision geometry (``/gazelle/planning_scene_world``); the cap
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable
+from typing import TYPE_CHECKING, TypeVar
 
 import numpy as np
 from moveit_msgs.msg import (
@@ -25,7 +26,11 @@ from ._planning_scene import attached_message, checked_matrix, padded, shapes_of
 from ._planning_scene import matrix as _matrix
 
 if TYPE_CHECKING:
+    from rclpy.publisher import Publisher
+
     from ._move_group_context import MoveGroupContext
+
+M = TypeVar("M")
 
 
 class PlanningSceneMonitor:
@@ -42,18 +47,26 @@ class PlanningSceneMonitor:
         self.changed = False
         """Whether the scene changed since it was last published on /monitored_planning_scene."""
         self._published_joints: dict[str, float] = {}
-        self._publisher: Any = None
+        self._publisher: Publisher | None = None
 
     def start(self) -> None:
         """Subscribe to the scene topics and the simulation's world (gazelle sim publishes its collision geometry:
         the table, the board, the other robots; this robot itself is left out)."""
         node, cb = self.context.node, self.context.callback_group
-        for msg_type, topic, fn in (
-            (PlanningScene, "planning_scene", self.apply_scene),
-            (CollisionObject, "collision_object", self.apply_world_object),
-            (AttachedCollisionObject, "attached_collision_object", self.apply_attached),
-        ):
-            node.create_subscription(msg_type, topic, self.scene_topic(topic, fn), 10, callback_group=cb)
+        on = self.scene_topic
+        node.create_subscription(
+            PlanningScene, "planning_scene", on("planning_scene", self.apply_scene), 10, callback_group=cb
+        )
+        node.create_subscription(
+            CollisionObject, "collision_object", on("collision_object", self.apply_world_object), 10, callback_group=cb
+        )
+        node.create_subscription(
+            AttachedCollisionObject,
+            "attached_collision_object",
+            on("attached_collision_object", self.apply_attached),
+            10,
+            callback_group=cb,
+        )
         node.create_subscription(
             PlanningSceneWorld, "/gazelle/planning_scene_world", self.on_sim_world, LATCHED, callback_group=cb
         )
@@ -134,11 +147,11 @@ class PlanningSceneMonitor:
             _log.info(f"world objects are padded by {value:g} m for collision checking ({OBJECT_PADDING_PARAMETER})")
         return float(value)
 
-    def scene_topic(self, topic: str, fn: Any) -> Any:
+    def scene_topic(self, topic: str, fn: Callable[[M], object]) -> Callable[[M], None]:
         """A planning-scene topic's callback: the pool held for writing (it waits for a plan in progress, as
         MoveIt's scene monitor waits for its readers), a bad message logged, not raised."""
 
-        def callback(msg: Any) -> None:
+        def callback(msg: M) -> None:
             pool = self.context.pool
             if pool is None:
                 return

@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from moveit_msgs.msg import ContactInformation
 from moveit_msgs.srv import GetStateValidity
@@ -29,7 +29,7 @@ class StateValidationService:
 
     def check_state_validity(
         self, req: GetStateValidity.Request, res: GetStateValidity.Response, planner: ArmPlanner
-    ) -> Any:
+    ) -> GetStateValidity.Response:
         """Valid when within the joint limits and free of collisions; the colliding pairs as contacts (their
         bodies and kinds; gazelle has no contact points to give)."""
         q = self.context.start_state(req.robot_state, planner)

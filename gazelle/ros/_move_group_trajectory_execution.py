@@ -10,7 +10,7 @@ import math
 import threading
 import time
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import numpy as np
 import rclpy
@@ -32,7 +32,14 @@ from ._move_group_common import (
 )
 
 if TYPE_CHECKING:
+    from rclpy.action.server import ServerGoalHandle
+    from rclpy.client import Client
+    from rclpy.publisher import Publisher
+    from rclpy.task import Future
+
     from ._move_group_context import MoveGroupContext
+
+T = TypeVar("T")
 
 
 class TrajectoryExecutionManager:
@@ -47,8 +54,8 @@ class TrajectoryExecutionManager:
         self.controllers = self._read_controllers()
         """The controllers moveit_controllers.yaml lists (a controller manager's are asked when none fit)."""
         self._trajectory_clients: dict[str, ActionClient] = {}
-        self._position_pubs: dict[str, Any] = {}  # gz JointPositionController command topics
-        self._controller_lists: dict[str, Any] = {}  # list_controllers clients by service name
+        self._position_pubs: dict[str, Publisher] = {}  # gz JointPositionController command topics
+        self._controller_lists: dict[str, Client] = {}  # list_controllers clients by service name
         self._stops = 0
         """How many "stop" events /trajectory_execution_event has brought: an execution that began before the
         latest one stops as a cancelled goal does."""
@@ -102,7 +109,7 @@ class TrajectoryExecutionManager:
         except (ExternalShutdownException, ShutdownException):
             pass
 
-    def on_execution_thread(self, fn: Any, timeout: float = 10.0) -> Any:
+    def on_execution_thread(self, fn: Callable[[], T], timeout: float = 10.0) -> T:
         """``fn()`` run on the thread that spins the execution node, which is where that node's clients and
         publishers are made. Made from an action's worker thread while that executor waited on the node's
         entities, rcl aborted the process: YuMi's move_group died on execute_trajectory ("double free or
@@ -110,24 +117,25 @@ class TrajectoryExecutionManager:
         if threading.current_thread() is self._thread:
             return fn()
         done = threading.Event()
-        box: dict[str, Any] = {}
+        values: list[T] = []
+        errors: list[BaseException] = []
 
         def task() -> None:
             try:
-                box["value"] = fn()
+                values.append(fn())
             except BaseException as err:  # handed to the caller
-                box["error"] = err
+                errors.append(err)
             finally:
                 done.set()
 
         self.executor.create_task(task)
         if not done.wait(timeout):
             raise TimeoutError("the execution thread did not run the task")
-        if "error" in box:
-            raise box["error"]
-        return box.get("value")
+        if errors:
+            raise errors[0]
+        return values[0]
 
-    def _on_execution_event(self, msg: Any) -> None:
+    def _on_execution_event(self, msg: String) -> None:
         """MoveIt's ``TrajectoryExecutionManager::receiveEvent``/``processEvent``: "stop" stops every execution
         in progress (its goal ends with PREEMPTED); any other event is a warning."""
         self.context.logger.info(f"Received event {quoted(msg.data)}")
@@ -293,7 +301,7 @@ class TrajectoryExecutionManager:
             send(goal)
             time.sleep(period)
 
-    def run(self, trajectory: JointTrajectory, handle: Any) -> tuple[str, str]:
+    def run(self, trajectory: JointTrajectory, handle: ServerGoalHandle) -> tuple[str, str]:
         """Send ``trajectory`` to its FollowJointTrajectory controller and wait; cancel it when ``handle`` is,
         or when a "stop" event comes. Without a controller serving its joints, gz-sim JointPositionController
         arms get it streamed."""
@@ -353,7 +361,7 @@ class TrajectoryExecutionManager:
         done = threading.Event()
         box: dict[str, Any] = {}
 
-        def on_result(f: Any) -> None:
+        def on_result(f: Future) -> None:
             box["result"] = f.result()
             done.set()
 
@@ -365,7 +373,7 @@ class TrajectoryExecutionManager:
                 return
             goal_handle.get_result_async().add_done_callback(on_result)
 
-        def on_feedback(_msg: Any) -> None:
+        def on_feedback(_msg: object) -> None:
             box["progress"] = time.monotonic()
 
         # every call on the client is made on its executor's thread: made from this one, a reply that came

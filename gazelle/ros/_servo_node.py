@@ -43,7 +43,7 @@ import threading
 import time
 from collections import deque
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import rclpy
@@ -63,6 +63,9 @@ from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 from ..planning import PlanningError, RobotScene, ServoCore, ServoKinematics, ServoSettings
 from ..planning import servo as core
 from ._planning_scene import matrix as pose_matrix
+
+if TYPE_CHECKING:
+    from rclpy.context import Context
 
 PREFIX = "moveit_servo."
 MIN_POINTS_FOR_TRAJ_MSG = 3
@@ -97,7 +100,7 @@ class _State:
 class ServoNode(Node):
     """servo_node (see the module docstring)."""
 
-    def __init__(self, parameter_overrides: list[Parameter] | None = None, context: Any = None) -> None:
+    def __init__(self, parameter_overrides: list[Parameter] | None = None, context: Context | None = None) -> None:
         """MoveIt Servo's ``servo_node`` (Jazzy): the ``moveit_servo.*`` parameters read and checked as its
         parameter library does, the robot from ``robot_description`` and ``robot_description_semantic``, the
         three command topics (JointJog, TwistStamped, PoseStamped), the output (a JointTrajectory or a
@@ -313,7 +316,9 @@ class ServoNode(Node):
         which = "sim time" if self.get_parameter("use_sim_time").value else "wall time"
         return f"servo_node's clock ({which}, {now_ns / 1e9:.3f} s)"
 
-    def _switch_command_type(self, req: ServoCommandType.Request, res: ServoCommandType.Response) -> Any:
+    def _switch_command_type(
+        self, req: ServoCommandType.Request, res: ServoCommandType.Response
+    ) -> ServoCommandType.Response:
         """``~/switch_command_type``: joint jog (0), twist (1) or pose (2); another value is refused with a warning
         and the type stays."""
         if core.JOINT_JOG <= req.command_type <= core.POSE:
@@ -323,7 +328,7 @@ class ServoNode(Node):
         res.success = req.command_type == self.command_type
         return res
 
-    def _pause_servo(self, req: SetBool.Request, res: SetBool.Response) -> Any:
+    def _pause_servo(self, req: SetBool.Request, res: SetBool.Response) -> SetBool.Response:
         """``~/pause_servo``: pause or resume; resuming starts from the measured state (the commands sent before the
         pause are forgotten)."""
         if self.paused == req.data:

@@ -15,7 +15,7 @@ import logging
 import sys
 import threading
 import time
-from typing import Any
+from typing import TYPE_CHECKING, Protocol
 
 from rclpy._rclpy_pybind11 import RCLError
 from rclpy.context import Context
@@ -23,6 +23,9 @@ from rclpy.exceptions import InvalidHandle
 from rclpy.executors import ExternalShutdownException, ShutdownException
 from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions, get_current_signal_handlers_options
+
+if TYPE_CHECKING:
+    from rclpy.executors import Executor
 
 SIGNAL_SHUTDOWN_WAIT_SEC = 2.0
 """How long to wait for rclpy's signal thread after a signal (it takes microseconds on an idle machine;
@@ -53,7 +56,13 @@ def silence_half_made_objects() -> None:
     sys.unraisablehook = lambda _unraisable: None
 
 
-def spin_until_shutdown(executor: Any, node: Node) -> None:
+class Spinning(Protocol):
+    """What :func:`spin_until_shutdown` asks of an executor: to spin until it is stopped."""
+
+    def spin(self) -> None: ...
+
+
+def spin_until_shutdown(executor: Spinning, node: Node) -> None:
     """Spin until Ctrl-C (or SIGTERM) shuts the node's context down, however the shutdown lands: as an
     interrupt, as rclpy's ExternalShutdownException, or as the RCLError "the given context is not valid"
     when it came while the executor was making its next wait set (seen under load). Any other rcl error,
@@ -78,7 +87,7 @@ def spin_until_shutdown(executor: Any, node: Node) -> None:
             raise
 
 
-def spin_until_stopped(executor: Any, context: Context, stopping: threading.Event) -> BaseException | None:
+def spin_until_stopped(executor: Executor, context: Context, stopping: threading.Event) -> BaseException | None:
     """Serve ``executor``'s callbacks on this thread until ``stopping`` is set or ``context`` shuts down;
     the loop of the server's executor threads. An entity destroyed while the executor built its wait set
     (InvalidHandle) only costs that wait. Anything else raised with the context up and ``stopping`` unset

@@ -19,7 +19,6 @@ The quaternion is published as given (tf2 does not normalise it either); Euler a
 
 from __future__ import annotations
 
-import math
 import random
 import re
 import string
@@ -35,6 +34,7 @@ from rclpy.utilities import remove_ros_args, try_shutdown
 from tf2_msgs.msg import TFMessage
 
 from .._errors import SimError
+from ..estimation import quaternion_from_rpy
 from ._dds import announce_often
 from ._rsp_node import spin_until_interrupted
 
@@ -72,19 +72,6 @@ def _stod(name: str, text: str) -> float:
     if m is None:
         raise ArgumentError(f"Failed to parse {name} argument as float")
     return float(m.group(0))
-
-
-def quaternion_from_rpy(roll: float, pitch: float, yaw: float) -> tuple[float, float, float, float]:
-    """(x, y, z, w) as tf2's ``Quaternion::setRPY`` makes it (rotation about fixed x, then y, then z)."""
-    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
-    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
-    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
-    return (
-        sr * cp * cy - cr * sp * sy,
-        cr * sp * cy + sr * cp * sy,
-        cr * cp * sy - sr * sp * cy,
-        cr * cp * cy + sr * sp * sy,
-    )
 
 
 def parse_args(args: Sequence[str]) -> tuple[list[float], list[float], str, str] | None:

@@ -1,4 +1,4 @@
-"""The viewer's overlays (:class:`ViewerOverlays`, a part of :class:`~gazelle.viewer.Viewer`): the path
+"""The viewer's overlays (:class:`ViewerOverlays`, owned by :class:`~gazelle.viewer.Viewer`): the path
 trail (from odometry or ground truth), MoveIt's planned paths heard on :data:`PLAN_TOPIC`, contact points,
 where each lidar's rays hit, and the chosen camera's image. Each is sampled on the simulation thread
 (``sim.call``) at the panel's rate and drawn only while its box is ticked; see :mod:`._viewer` for the
@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import logging
 import math
+from collections.abc import Callable, Collection
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -111,47 +112,118 @@ def plan_tips(model: Model, joints: set[str]) -> list[str]:
     return tips
 
 
+def void(_result: object) -> None:
+    """Nothing, whatever it is given: a GUI callback drops what the update it runs returns (viser's callbacks
+    return None)."""
+
+
 def safe_name(name: str) -> str:
     return name.replace("/", "_").replace(" ", "_") or "_"
 
 
 class ViewerOverlays:
-    """The overlays of :class:`~gazelle.viewer.Viewer` (which builds the state and the panel declared here)."""
+    """The overlays a :class:`~gazelle.viewer.Viewer` owns: their state, their part of the panel (the Overlays
+    and Camera folders, :meth:`add_panel`) and their drawing in the viewer's scene."""
 
-    sim: Simulation
-    server: viser.ViserServer
-    planned: PlannedPath | None
-    _nodes: dict[str, Any]
-    _last: Any
-    _trail: list[tuple[float, float, float]]
-    _trail_entity: tuple[str, int, str] | None
-    _trail_anchor: tuple[float, float, float] | None
-    _trail_handle: Any
-    _odom_heard: Endpoint | None
-    _trail_drawn: tuple[int, tuple[float, float, float] | None] | int
-    """What the trail drawn last showed (points, anchor); -1 before the first drawing."""
-    _trail_last_t: float
-    _contact_handle: Any
-    _lidar_handles: dict[str, Any]
-    _plan_heard: DisplayTrajectory | None
-    _plan_drawn: tuple[PlannedPath | None, bool]
-    _plan_handles: list[Any]
-    # the panel's controls (Viewer._setup_gui)
-    _entity_dd: Any
-    _trail_box: Any
-    _trail_source: Any
-    _trail_text: Any
-    _tf_box: Any
-    _plan_box: Any
-    _col_box: Any
-    _contact_box: Any
-    _lidar_box: Any
-    _camera_dd: Any
-    _camera_img: Any
+    def __init__(self, sim: Simulation, server: viser.ViserServer, selected: Callable[[], str]) -> None:
+        """Overlays of ``sim`` drawn on ``server``'s scene; ``selected()`` is the entity chosen in the viewer's
+        panel (:data:`NO_SELECTION` for none), whose path the trail follows."""
+        self.sim = sim
+        self.server = server
+        self._selected = selected
+        self._trail: list[tuple[float, float, float]] = []
+        self._trail_entity: tuple[str, int, str] | None = None
+        """(entity, generation added, source) the trail belongs to; a change starts a new trail."""
+        self._trail_anchor: tuple[float, float, float] | None = None
+        """/odom trails: the odometry frame in the world, planar (x, y, yaw)."""
+        self._trail_handle: Any = None
+        self._odom_heard: Endpoint | None = None
+        """The odometry endpoint the trail listens to."""
+        self._trail_drawn: tuple[int, tuple[float, float, float] | None] | int = -1
+        """What the trail drawn last showed (points, anchor); -1 before the first drawing."""
+        self._trail_last_t = -1.0
+        self._contact_handle: Any = None
+        self._lidar_handles: dict[str, Any] = {}
+        self._plan_heard: DisplayTrajectory | None = None
+        """The latest planned motion heard on :data:`PLAN_TOPIC`, not yet turned into a path."""
+        self.planned: PlannedPath | None = None
+        """The planned motion drawn (its tips' paths and goals), for tests and the panel."""
+        self._plan_drawn: tuple[PlannedPath | None, bool] = (None, True)
+        self._plan_handles: list[Any] = []
+
+    # ------------------------------------------------------------------ panel
+    def add_panel(self, g: viser.GuiApi, on_frames: Callable[[], None]) -> None:
+        """The Overlays and Camera folders of the panel, each control wired to what it draws; the TF frames and
+        collision geometry switches call ``on_frames`` (the viewer shows or hides its entities' nodes)."""
+        with g.add_folder("Overlays", expand_by_default=False):
+            self._tf_box = g.add_checkbox("TF frames", initial_value=False)
+            self._col_box = g.add_checkbox("Collision geometry", initial_value=False)
+            self._trail_box = g.add_checkbox(
+                "Path trail",
+                initial_value=True,
+                hint="Path of the selected entity (or of the first diff-drive robot)",
+            )
+            self._trail_source = g.add_dropdown(
+                "Trail source",
+                options=TRAIL_SOURCES,
+                initial_value=TRAIL_ODOM,
+                hint="odom: what the robot's odometry topic reports (ground truth for entities without one)",
+            )
+            self._trail_text = g.add_text("Trail of", initial_value="", disabled=True)
+            self._contact_box = g.add_checkbox("Contact points", initial_value=False, hint="MuJoCo contacts (red)")
+            self._lidar_box = g.add_checkbox(
+                "Lidar points", initial_value=True, hint="Where each lidar's rays hit now (green, noise-free)"
+            )
+            self._plan_box = g.add_checkbox(
+                "Planned path",
+                initial_value=True,
+                hint=f"The latest arm motion planned ({PLAN_TOPIC}): the tool's path (blue) and goal (axes)",
+            )
+        # a camera sensor's live image, rendered for the panel (directly, not through its ROS topic) at the
+        # panel's rate while one is chosen
+        with g.add_folder("Camera", expand_by_default=False):
+            camera_options: list[str] = [NO_CAMERA]
+            self._camera_dd = g.add_dropdown(
+                "Camera", options=camera_options, initial_value=NO_CAMERA, hint="A camera sensor's image, live"
+            )
+            self._camera_img = g.add_image(np.zeros((48, 64, 3), dtype=np.uint8), label="Image", format="jpeg")
+        # callbacks run on viser's event-loop thread: what touches the world goes through Simulation.call
+        self._tf_box.on_update(lambda _e: on_frames())
+        self._col_box.on_update(lambda _e: on_frames())
+        self._trail_box.on_update(lambda _e: self.redraw_trail(force=True))
+        self._contact_box.on_update(lambda _e: void(self._update_contacts()))
+        self._lidar_box.on_update(lambda _e: void(self._update_lidars()))
+        self._plan_box.on_update(lambda _e: self._redraw_plan())
+
+    @property
+    def show_frames(self) -> bool:
+        """The TF frames switch: each link's axes shown."""
+        return bool(self._tf_box.value)
+
+    @property
+    def show_collisions(self) -> bool:
+        """The collision geometry switch: each link's collision shapes shown as wireframes."""
+        return bool(self._col_box.value)
+
+    def hear_plan(self, plan: DisplayTrajectory) -> None:
+        """A planned motion arrived on :data:`PLAN_TOPIC` (any thread): kept for the viewer thread, which draws
+        the latest."""
+        self._plan_heard = plan
+
+    def refresh(self, entities: Collection[str] | None) -> None:
+        """At the panel's rate, with a browser connected: contacts, lidar points and the planned path (each while
+        on, or to clear it), and the camera image; ``entities`` are the world's as the last frame saw them."""
+        if self._contact_box.value or self._contact_handle is not None:
+            self._update_contacts()
+        if self._lidar_box.value or self._lidar_handles:
+            self._update_lidars()
+        if self._plan_heard is not None or self.planned is not None:
+            self.update_plan(entities)
+        self._update_camera()
 
     def trail_target(self) -> str | None:
         """The entity whose path is drawn: the selected one, else the first with a cmd_vel subscriber."""
-        sel = self._entity_dd.value
+        sel = self._selected()
         names = self.sim.call(lambda: set(self.sim.world.entities), timeout=5.0)  # the world is the sim thread's
         if sel != NO_SELECTION and sel in names:
             return sel
@@ -241,7 +313,7 @@ class ViewerOverlays:
         """The trail's points (world frame), oldest first."""
         return list(self._trail)
 
-    def _redraw_trail(self, *, force: bool = False) -> None:
+    def redraw_trail(self, *, force: bool = False) -> None:
         """Draw the path trail as line segments just above the ground, only when it changed (a new point, or the
         overlay switched)."""
         pts = self._trail if self._trail_box.value else []
@@ -259,10 +331,6 @@ class ViewerOverlays:
             self._trail_handle = self.server.scene.add_line_segments(
                 "/overlays/trail", segs, TRAIL_RGB, thickness=4.0, thickness_units="screen"
             )
-
-    def _hear_plan(self, plan: DisplayTrajectory) -> None:
-        """A planned motion arrived (any thread): kept for the viewer thread, which draws the latest."""
-        self._plan_heard = plan
 
     def _plan_path(self, plan: DisplayTrajectory) -> PlannedPath | None:
         """Runs on the sim thread: the tips' paths along ``plan`` (forward kinematics of the robot that
@@ -291,9 +359,10 @@ class ViewerOverlays:
             tuple(poses[-1] for _, poses in kept),
         )
 
-    def update_plan(self) -> PlannedPath | None:
+    def update_plan(self, entities: Collection[str] | None = None) -> PlannedPath | None:
         """Turn the latest planned motion heard into paths (on the sim thread) and draw them; a plan whose
-        robot is gone is cleared. Returns what is drawn."""
+        robot is not among ``entities`` (the last frame's; None: not known yet) is cleared. Returns what is
+        drawn."""
         heard, self._plan_heard = self._plan_heard, None
         if heard is not None:
             try:
@@ -302,7 +371,7 @@ class ViewerOverlays:
                 _log.warning("viewer: cannot draw the planned path: %s", err)
                 self.planned = None
         planned = self.planned
-        if planned is not None and self._last is not None and planned.entity not in self._last.entities:
+        if planned is not None and entities is not None and planned.entity not in entities:
             self.planned = None
         self._redraw_plan()
         return self.planned
@@ -419,13 +488,3 @@ class ViewerOverlays:
         if image is not None:
             self._camera_img.image = image
         return image
-
-    def _set_overlays(self) -> None:
-        """Show or hide every entity's link frames and collision shapes as the two switches say, in one update."""
-        tf, col = bool(self._tf_box.value), bool(self._col_box.value)
-        with self.server.atomic():
-            for nodes in self._nodes.values():
-                for ln in nodes.links.values():
-                    ln.frame.show_axes = tf
-                for h in nodes.collisions:
-                    h.visible = col

@@ -53,22 +53,12 @@ import viser
 
 from ..description import Model, Pose, load
 from ..physics import PerGeneration
-from ..systems import DisplayTrajectory, Endpoint, MsgType, Twist
+from ..systems import MsgType, Twist
 from ._framing import fit_view
 from ._geometry import rgba_to_rgb255, to_trimesh
 from ._models import ModelFile, find_models
 from ._origin import OriginPolicy, guarded
-from ._overlays import (
-    NO_CAMERA,
-    NO_SELECTION,
-    PLAN_TOPIC,
-    TRAIL_ODOM,
-    TRAIL_RATE_HZ,
-    TRAIL_SOURCES,
-    PlannedPath,
-    ViewerOverlays,
-    safe_name,
-)
+from ._overlays import NO_SELECTION, PLAN_TOPIC, TRAIL_RATE_HZ, PlannedPath, ViewerOverlays, safe_name
 
 if TYPE_CHECKING:
     from ..physics import PhysicsWorld
@@ -187,8 +177,9 @@ def _bodies(w: PhysicsWorld) -> list[tuple[str, str, int]]:
     ]
 
 
-class Viewer(ViewerOverlays):
-    """A viser server mirroring a simulation; :meth:`start` it, :meth:`stop` it."""
+class Viewer:
+    """A viser server mirroring a simulation; :meth:`start` it, :meth:`stop` it. Its overlays (path trail,
+    planned paths, contacts, lidar points, camera image) are :attr:`overlays`."""
 
     def __init__(
         self,
@@ -221,25 +212,9 @@ class Viewer(ViewerOverlays):
         self._lock = threading.Lock()
         self._last: Snapshot | None = None
         self._wall0 = time.monotonic()
-        self._trail: list[tuple[float, float, float]] = []
-        self._trail_entity: tuple[str, int, str] | None = None
-        """(entity, generation added, source) the trail belongs to; a change starts a new trail."""
-        self._trail_anchor: tuple[float, float, float] | None = None
-        """/odom trails: the odometry frame in the world, planar (x, y, yaw)."""
-        self._trail_handle: Any = None
-        self._odom_heard: Endpoint | None = None
-        """The odometry endpoint the trail listens to."""
-        self._trail_drawn = -1
-        self._trail_last_t = -1.0
         self._next_trail = 0.0
-        self._contact_handle: Any = None
-        self._lidar_handles: dict[str, Any] = {}
-        self._plan_heard: DisplayTrajectory | None = None
-        """The latest planned motion heard on :data:`PLAN_TOPIC`, not yet turned into a path."""
-        self.planned: PlannedPath | None = None
-        """The planned motion drawn (its tips' paths and goals), for tests and the panel."""
-        self._plan_drawn: tuple[PlannedPath | None, bool] = (None, True)
-        self._plan_handles: list[Any] = []
+        self.overlays = ViewerOverlays(sim, self.server, lambda: self._entity_dd.value)
+        """What is drawn over the scene, and its part of the panel."""
         self._models: list[ModelFile] = []
         self.frames = 0
         """Frames pushed so far (for tests and the bench)."""
@@ -248,7 +223,7 @@ class Viewer(ViewerOverlays):
         self._setup_scene()
         self._setup_gui()
         # MoveIt's planned paths: with a ROS bridge, a subscription of the simulation's node
-        sim.bus.subscribe(VIEWER_OWNER, PLAN_TOPIC, MsgType.DISPLAY_TRAJECTORY, self._hear_plan, depth=1)
+        sim.bus.subscribe(VIEWER_OWNER, PLAN_TOPIC, MsgType.DISPLAY_TRAJECTORY, self.overlays.hear_plan, depth=1)
 
     # ------------------------------------------------------------------ lifecycle
     @property
@@ -300,8 +275,8 @@ class Viewer(ViewerOverlays):
         nodes = _EntityNodes((name, view.generation), s.add_frame(root_name, show_axes=False))
         nodes.selectable = view.selectable
         nodes.root_link = view.root_link
-        show_tf = bool(self._tf_box.value)
-        show_col = bool(self._col_box.value)
+        show_tf = self.overlays.show_frames
+        show_col = self.overlays.show_collisions
         for link in view.model.links:
             if link.name not in view.links:
                 continue
@@ -356,6 +331,39 @@ class Viewer(ViewerOverlays):
         if nodes is not None:
             nodes.root.remove()
 
+    def _set_overlays(self) -> None:
+        """Show or hide every entity's link frames and collision shapes as the two switches say, in one update."""
+        tf, col = self.overlays.show_frames, self.overlays.show_collisions
+        with self.server.atomic():
+            for nodes in self._nodes.values():
+                for ln in nodes.links.values():
+                    ln.frame.show_axes = tf
+                for h in nodes.collisions:
+                    h.visible = col
+
+    # ------------------------------------------------------------------ overlays (see ViewerOverlays)
+    @property
+    def trail(self) -> list[tuple[float, float, float]]:
+        """The path trail's points (world frame), oldest first."""
+        return self.overlays.trail
+
+    def trail_target(self) -> str | None:
+        """The entity whose path is drawn: the selected one, else the first with a cmd_vel subscriber."""
+        return self.overlays.trail_target()
+
+    def sample_trail(self) -> None:
+        """Add the trail target's current position to the trail (:meth:`ViewerOverlays.sample_trail`)."""
+        self.overlays.sample_trail()
+
+    def update_plan(self) -> PlannedPath | None:
+        """Draw the latest planned motion heard (a plan whose robot is gone is cleared); returns what is drawn."""
+        return self.overlays.update_plan(self._last.entities if self._last is not None else None)
+
+    @property
+    def planned(self) -> PlannedPath | None:
+        """The planned motion drawn (its tips' paths and goals)."""
+        return self.overlays.planned
+
     # ------------------------------------------------------------------ gui
     def _setup_gui(self) -> None:
         """The panel: a folder each for the simulation, entities, driving, spawning, overlays and cameras,
@@ -368,8 +376,7 @@ class Viewer(ViewerOverlays):
         self._gui_entities(g)
         self._gui_drive(g)
         self._gui_spawn(g)
-        self._gui_overlays(g)
-        self._gui_camera(g)
+        self.overlays.add_panel(g, self._set_overlays)
         self._wire_gui()
 
     def _gui_simulation(self, g: viser.GuiApi) -> None:
@@ -427,45 +434,6 @@ class Viewer(ViewerOverlays):
             self._rescan_btn = g.add_button("Rescan resource paths")
             self._spawn_text = g.add_text("Spawn result", initial_value="", disabled=True)
 
-    def _gui_overlays(self, g: viser.GuiApi) -> None:
-        """What is drawn over the scene: TF frames, collision shapes, the selected robot's path trail (from its
-        odometry or from ground truth), MuJoCo contact points, where each lidar's rays hit, and the latest
-        planned arm path."""
-        with g.add_folder("Overlays", expand_by_default=False):
-            self._tf_box = g.add_checkbox("TF frames", initial_value=False)
-            self._col_box = g.add_checkbox("Collision geometry", initial_value=False)
-            self._trail_box = g.add_checkbox(
-                "Path trail",
-                initial_value=True,
-                hint="Path of the selected entity (or of the first diff-drive robot)",
-            )
-            self._trail_source = g.add_dropdown(
-                "Trail source",
-                options=TRAIL_SOURCES,
-                initial_value=TRAIL_ODOM,
-                hint="odom: what the robot's odometry topic reports (ground truth for entities without one)",
-            )
-            self._trail_text = g.add_text("Trail of", initial_value="", disabled=True)
-            self._contact_box = g.add_checkbox("Contact points", initial_value=False, hint="MuJoCo contacts (red)")
-            self._lidar_box = g.add_checkbox(
-                "Lidar points", initial_value=True, hint="Where each lidar's rays hit now (green, noise-free)"
-            )
-            self._plan_box = g.add_checkbox(
-                "Planned path",
-                initial_value=True,
-                hint=f"The latest arm motion planned ({PLAN_TOPIC}): the tool's path (blue) and goal (axes)",
-            )
-
-    def _gui_camera(self, g: viser.GuiApi) -> None:
-        """A camera sensor's live image, rendered for the panel (directly, not through its ROS topic) at the
-        panel's rate while one is chosen."""
-        with g.add_folder("Camera", expand_by_default=False):
-            camera_options: list[str] = [NO_CAMERA]
-            self._camera_dd = g.add_dropdown(
-                "Camera", options=camera_options, initial_value=NO_CAMERA, hint="A camera sensor's image, live"
-            )
-            self._camera_img = g.add_image(np.zeros((48, 64, 3), dtype=np.uint8), label="Image", format="jpeg")
-
     def _wire_gui(self) -> None:
         """Connect the panel's widgets to what they do. Callbacks run on viser's event-loop thread: anything that
         touches the world goes through ``Simulation.call`` (spawn, delete, step) or takes the snapshot the frame
@@ -475,12 +443,6 @@ class Viewer(ViewerOverlays):
         self._delete_btn.on_click(lambda _e: self._delete_selected())
         for group in (self._turn_btns, self._move_btns):
             group.on_click(self._drive_button)
-        self._tf_box.on_update(lambda _e: self._set_overlays())
-        self._col_box.on_update(lambda _e: self._set_overlays())
-        self._trail_box.on_update(lambda _e: self._redraw_trail(force=True))
-        self._contact_box.on_update(self._on_gui_event(self._update_contacts))
-        self._lidar_box.on_update(self._on_gui_event(self._update_lidars))
-        self._plan_box.on_update(lambda _e: self._redraw_plan())
         self._keys_box.on_update(
             lambda _e: setattr(self._keys_html, "content", KEYS_HTML if self._keys_box.value else "")
         )
@@ -741,17 +703,11 @@ class Viewer(ViewerOverlays):
                 if snap is not None and now >= next_gui:
                     with self.server.atomic():  # one wake-up of viser's event loop for the whole panel
                         self._update_gui(snap)
-                    if self._contact_box.value or self._contact_handle is not None:
-                        self._update_contacts()
-                    if self._lidar_box.value or self._lidar_handles:
-                        self._update_lidars()
-                    if self._plan_heard is not None or self.planned is not None:
-                        self.update_plan()
-                    self._update_camera()
+                    self.overlays.refresh(snap.entities)
                     next_gui = now + gui_period
                 if now >= self._next_trail:
                     self.sample_trail()
-                    self._redraw_trail()
+                    self.overlays.redraw_trail()
                     self._next_trail = now + 1.0 / TRAIL_RATE_HZ
             except Exception:
                 _log.exception("viewer: frame update failed")

@@ -771,7 +771,7 @@ def test_a_groups_urdf_is_built_as_moveits_get_urdf_builds_it(planner):
 
     from gazelle.planning import GroupUrdfError, group_urdf
 
-    urdf = planner._urdf
+    urdf = planner.robot._urdf
     arm = etree.fromstring(group_urdf(urdf, planner.semantics, "panda_arm").encode())
     assert arm.tag == "robot" and arm.get("name") == "panda_arm"
     order = [(e.tag, e.get("name")) for e in arm]

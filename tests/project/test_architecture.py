@@ -465,9 +465,6 @@ MIXIN_CHAINS_TO_UNDO = {
     # found by this check beside those the issue names; to be removed when each is made a composition too
     "gazelle/physics/_world.py:PhysicsWorld": ("WorldState",),
     "gazelle/physics/_state.py:WorldState": ("WorldQueries",),
-    "gazelle/planning/_planner.py:ArmPlanner": ("RobotScene",),
-    "gazelle/viewer/_viewer.py:Viewer": ("ViewerOverlays",),
-    "gazelle/description/_urdf.py:_Reader": ("ElementReader",),
 }
 SUBCLASSES_BY_DESIGN = {
     # ur_controllers' ScaledJointTrajectoryController is a subclass of ros2_controllers' JTC upstream too

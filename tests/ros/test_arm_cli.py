@@ -8,7 +8,8 @@ import math
 import pytest
 from _paths import REAL
 
-from gazelle.ros._arm_cli import ArmError, group_joints, joint_values, named_state, quaternion, semantics, tip_link
+from gazelle.estimation import quaternion_from_rpy
+from gazelle.ros._arm_cli import ArmError, group_joints, joint_values, named_state, semantics, tip_link
 
 PANDA = REAL / "moveit_panda" / "moveit_resources_panda_moveit_config" / "config"
 DUAL = REAL / "moveit_panda" / "dual_arm_panda_moveit_config" / "config"
@@ -73,7 +74,7 @@ def test_the_dual_arm_srdf_s_groups(panda):
 
 
 def test_roll_pitch_yaw_as_tf_gives_them():
-    x, y, z, w = quaternion(math.pi, 0.0, 0.0)
+    x, y, z, w = quaternion_from_rpy(math.pi, 0.0, 0.0)
     assert (abs(x), abs(y), abs(z), abs(w)) == pytest.approx((1.0, 0.0, 0.0, 0.0), abs=1e-12)
-    x, y, z, w = quaternion(0.0, 0.0, math.pi / 2)
+    x, y, z, w = quaternion_from_rpy(0.0, 0.0, math.pi / 2)
     assert (x, y, z, w) == pytest.approx((0.0, 0.0, math.sqrt(0.5), math.sqrt(0.5)))

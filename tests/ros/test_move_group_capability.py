@@ -5,6 +5,7 @@ and where the details are; the log keeps the error itself."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from contextlib import contextmanager
 from types import SimpleNamespace
 from typing import Any
@@ -29,8 +30,8 @@ def _context(said: list[str]) -> Any:
     return SimpleNamespace(pool=SimpleNamespace(using=held, writing=held), logger=logger)
 
 
-def _raises(err: Exception):
-    def fn(_request, _response, _planner):
+def _raises(err: Exception) -> Callable[[Any, Any, Any], Any]:
+    def fn(_request: Any, _response: Any, _planner: Any) -> Any:
         raise err
 
     return fn

@@ -256,16 +256,16 @@ def test_trail_contacts_and_spawn_from_the_resource_paths(monkeypatch, make_sim)
         # forward along the path; settling after the spawn drop may move x back by a fraction of a mm
         assert all(b > a - 1e-3 for a, b in zip(xs, xs[1:])), xs[:20]
         # the seed's odometry is gazebo_ros' world odometry: its odom frame is the world, so the /odom trail is truth
-        assert viewer._trail_text.value == "r1 (/odom)"
+        assert viewer.overlays._trail_text.value == "r1 (/odom)"
         sim.call(lambda: setattr(sim, "paused", True))  # the last point and the truth at the same instant
         viewer.sample_trail()
         truth = sim.call(lambda: sim.world.entity_state("r1").pose.position)
         assert viewer.trail[-1][:2] == pytest.approx(truth[:2], abs=0.02)  # the message is <= 10 ms old
         sim.call(lambda: setattr(sim, "paused", False))
-        viewer._redraw_trail(force=True)
-        assert viewer._trail_handle is not None
-        viewer._contact_box.value = True
-        pts = viewer._update_contacts()
+        viewer.overlays.redraw_trail(force=True)
+        assert viewer.overlays._trail_handle is not None
+        viewer.overlays._contact_box.value = True
+        pts = viewer.overlays._update_contacts()
         assert (
             pts is not None and len(pts) >= 2 and np.all(np.abs(pts[:, 2]) < 0.05)
         )  # wheels (and caster) on the ground
@@ -327,28 +327,28 @@ def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_
         drive(2.0)
         pause_and_sample()
         x1, y1 = truth_xy()
-        assert viewer._trail_text.value == "r1 (/odom)"
+        assert viewer.overlays._trail_text.value == "r1 (/odom)"
         end = viewer.trail[-1]
         moved, reported = x1 - x0, end[0] - x0
         assert moved > 0.5, f"the robot moved {moved:.3f} m"
         assert reported == pytest.approx(1.1 * moved, rel=0.03), f"odom trail {reported:.3f} m for {moved:.3f} m moved"
         assert abs(end[1] - y0) < 0.02  # anchored where the robot started: (1, 2), not the odom origin (0, 0)
 
-        viewer._trail_source.value = TRAIL_TRUTH
+        viewer.overlays._trail_source.value = TRAIL_TRUTH
         sim.call(lambda: setattr(sim, "paused", False))
         drive(1.0)
         pause_and_sample()
-        assert viewer._trail_text.value == "r1 (ground truth)"
+        assert viewer.overlays._trail_text.value == "r1 (ground truth)"
         assert viewer.trail[0][0] > x1 - 0.05  # a new trail, from where the robot was
         assert viewer.trail[-1][:2] == pytest.approx(truth_xy(), abs=0.006)  # within a trail step (5 mm)
         sim.call(lambda: setattr(sim, "paused", False))
 
         sim.spawn(load_string(BOX).model, name="box", pose=Pose((-1.0, 0.0, 0.2)))
-        viewer._trail_source.value = "odom"
+        viewer.overlays._trail_source.value = "odom"
         viewer.update()  # the scene and the Entities dropdown catch up with the spawn
         assert viewer.select("box")
         drive(0.2)
-        assert viewer._trail_text.value == "box (ground truth: no odometry topic)"
+        assert viewer.overlays._trail_text.value == "box (ground truth: no odometry topic)"
         assert viewer.trail[-1][:2] == pytest.approx((-1.0, 0.0), abs=0.01)
 
         # a reset puts the robot back and zeroes its encoder odometry: a new trail from (1, 2)
@@ -361,7 +361,7 @@ def test_odom_trail_shows_what_odometry_reports_and_ground_truth_on_request(tmp_
         assert viewer.trail == []
         sim.call(lambda: setattr(sim, "paused", False))
         drive(0.3)
-        assert viewer._trail_text.value == "r1 (/odom)"
+        assert viewer.overlays._trail_text.value == "r1 (/odom)"
         assert viewer.trail and all(p[:2] == pytest.approx((1.0, 2.0), abs=0.02) for p in viewer.trail), viewer.trail[
             :3
         ]
@@ -385,17 +385,17 @@ def test_lidar_points_land_on_the_wall_and_the_camera_panel_shows_the_camera_ima
     viewer = Viewer(sim, port=0)  # no thread: the panel is updated by hand
     sim.start()
     try:
-        pts = viewer._update_lidars()
+        pts = viewer.overlays._update_lidars()
         p = pts["bot/lidar"]
         assert len(p) > 50
         assert np.all(np.abs(p[:, 0] - 2.0) < 0.01)  # every hit on the wall's face, x = 2.0 m
-        assert "bot/lidar" in viewer._lidar_handles
-        viewer._lidar_box.value = False
-        assert viewer._update_lidars() == {} and not viewer._lidar_handles
-        assert viewer._update_camera() is None  # no camera chosen: nothing rendered
-        assert "bot/camera" in viewer._camera_dd.options
-        viewer._camera_dd.value = "bot/camera"
-        image = viewer._update_camera()
+        assert "bot/lidar" in viewer.overlays._lidar_handles
+        viewer.overlays._lidar_box.value = False
+        assert viewer.overlays._update_lidars() == {} and not viewer.overlays._lidar_handles
+        assert viewer.overlays._update_camera() is None  # no camera chosen: nothing rendered
+        assert "bot/camera" in viewer.overlays._camera_dd.options
+        viewer.overlays._camera_dd.value = "bot/camera"
+        image = viewer.overlays._update_camera()
         assert image is not None and image.shape == (240, 320, 3)
         red = (image[..., 0] > 100) & (image[..., 1] < 60) & (image[..., 2] < 60)
         assert red[90:125, 140:180].mean() > 0.9  # the red wall straight ahead (its foot is ~15 px below centre)
@@ -437,7 +437,7 @@ def test_a_planned_arm_motion_is_drawn_as_its_tools_path_and_goal_and_the_arm_do
     try:
         sim.spawn(load_string(TWO_LINK_ARM).model, name="arm", pose=Pose())
         viewer.update()
-        assert viewer.update_plan() is None and not viewer._plan_handles  # nothing planned yet
+        assert viewer.update_plan() is None and not viewer.overlays._plan_handles  # nothing planned yet
         rows = [(0.0, 0.0), (np.pi / 4, 0.0), (np.pi / 2, 0.0), (np.pi / 2, np.pi / 2)]
         points = tuple(TrajectoryPoint(i * 0.5, r) for i, r in enumerate(rows))
         plan = DisplayTrajectory("arm2", (JointTrajectory(0.0, ("j1", "j2"), points),))
@@ -450,20 +450,20 @@ def test_a_planned_arm_motion_is_drawn_as_its_tools_path_and_goal_and_the_arm_do
         np.testing.assert_allclose(goal.position, (-0.3, 0.5, 1.0), atol=1e-5)
         # yaw of pi (j1 + j2): the tool's x axis points along -x
         assert abs(abs(goal.orientation[3]) - 1.0) < 1e-5, goal.orientation
-        assert len(viewer._plan_handles) == 2  # the path and the goal's axes
+        assert len(viewer.overlays._plan_handles) == 2  # the path and the goal's axes
         # the simulated arm did not move
         arm = sim.call(lambda: sim.world.entity_state("arm", "tool").pose.position)
         np.testing.assert_allclose(arm, (0.8, 0.0, 1.0), atol=1e-3)
-        viewer._plan_box.value = False
+        viewer.overlays._plan_box.value = False
         viewer.update_plan()
-        assert not viewer._plan_handles
-        viewer._plan_box.value = True
+        assert not viewer.overlays._plan_handles
+        viewer.overlays._plan_box.value = True
         viewer.update_plan()
-        assert len(viewer._plan_handles) == 2
+        assert len(viewer.overlays._plan_handles) == 2
         # a plan for joints no entity has is not drawn, and the older one goes (it is not the latest)
         other = DisplayTrajectory("ghost", (JointTrajectory(0.0, ("nope",), (TrajectoryPoint(0.0, (1.0,)),)),))
         sim.bus.inject(PLAN_TOPIC, MsgType.DISPLAY_TRAJECTORY, other)
-        assert viewer.update_plan() is None and not viewer._plan_handles
+        assert viewer.update_plan() is None and not viewer.overlays._plan_handles
         sim.bus.inject(PLAN_TOPIC, MsgType.DISPLAY_TRAJECTORY, plan)
         assert viewer.update_plan() is not None
         # issue 27: the next plan of another length replaces the drawn one (comparing the two raised
@@ -473,12 +473,12 @@ def test_a_planned_arm_motion_is_drawn_as_its_tools_path_and_goal_and_the_arm_do
         )
         sim.bus.inject(PLAN_TOPIC, MsgType.DISPLAY_TRAJECTORY, longer)
         redrawn = viewer.update_plan()
-        assert redrawn is not None and len(redrawn.paths[0]) == 5 and len(viewer._plan_handles) == 2
+        assert redrawn is not None and len(redrawn.paths[0]) == 5 and len(viewer.overlays._plan_handles) == 2
         sim.bus.inject(PLAN_TOPIC, MsgType.DISPLAY_TRAJECTORY, plan)
         assert len(viewer.update_plan().paths[0]) == 4  # type: ignore[union-attr]
         sim.delete("arm")
         viewer.update()
-        assert viewer.update_plan() is None and not viewer._plan_handles  # its robot is gone
+        assert viewer.update_plan() is None and not viewer.overlays._plan_handles  # its robot is gone
     finally:
         viewer.stop()
         sim.stop()

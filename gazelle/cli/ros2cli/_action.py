@@ -4,10 +4,13 @@ from __future__ import annotations
 
 import argparse
 import sys
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ._graph import QUIET_SEC, absolute, cli_node, discover, wait_until
 from ._messages import InterfaceError, get_interface, parse_values, set_fields, to_yaml
+
+if TYPE_CHECKING:
+    from rclpy.node import Node
 
 _STATUS = {1: "ACCEPTED", 2: "EXECUTING", 3: "CANCELING", 4: "SUCCEEDED", 5: "CANCELED", 6: "ABORTED"}
 """action_msgs/GoalStatus codes."""
@@ -44,14 +47,14 @@ def main(argv: list[str]) -> int:
         return 0
 
 
-def _actions(node: Any) -> list[tuple[str, list[str]]]:
+def _actions(node: Node) -> list[tuple[str, list[str]]]:
     """(name, types) of every action in the graph, as rclpy's action graph finds them."""
     from rclpy.action.graph import get_action_names_and_types
 
     return get_action_names_and_types(node)
 
 
-def _list(node: Any, args: argparse.Namespace) -> int:
+def _list(node: Node, args: argparse.Namespace) -> int:
     """``list [-t] [-c]``: the actions, sorted, after discovery."""
     discover(node)
     actions = sorted(_actions(node))
@@ -63,7 +66,7 @@ def _list(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _info(node: Any, args: argparse.Namespace) -> int:
+def _info(node: Node, args: argparse.Namespace) -> int:
     """``info NAME [-t] [-c]``: the nodes serving and calling the action, once the graph has settled."""
     from rclpy.action import graph
 
@@ -92,7 +95,7 @@ def _info(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _type(node: Any, args: argparse.Namespace) -> int:
+def _type(node: Node, args: argparse.Namespace) -> int:
     """``type NAME``: the action's type; "Unknown action" with status 1."""
     name = absolute(args.action_name)
     wait_until(node, lambda: name in dict(_actions(node)))
@@ -104,7 +107,7 @@ def _type(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _send_goal(node: Any, args: argparse.Namespace) -> int:
+def _send_goal(node: Node, args: argparse.Namespace) -> int:
     """As ros2cli Jazzy's ``send_goal()`` (ros2action/verb/send_goal.py): wait for the server however long it
     takes, send the goal, print its feedback with ``-f``, and its result and final status; Ctrl-C while it
     runs cancels it."""

@@ -30,14 +30,27 @@ import re
 import signal
 import sys
 import time
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any, BinaryIO
 
 import yaml
 
 from ._bag_files import BagError, brief, qos_overrides, read_metadata
 from ._graph import absolute, cli_node, is_hidden, matching_qos, offers, spin_once
 from ._messages import InterfaceError, get_interface
+
+if TYPE_CHECKING:
+    from builtin_interfaces.msg import Time
+    from mcap.reader import McapReader
+    from mcap.records import Chunk
+    from mcap.summary import Summary
+    from rclpy.duration import Duration
+    from rclpy.node import Node
+    from rclpy.publisher import Publisher
+    from rclpy.qos import QoSProfile
+    from rclpy.subscription import Subscription
+    from rclpy.topic_endpoint_info import TopicEndpointInfo
 
 ROSBAG2_VERSION = 9
 """metadata.yaml's layout version (rosbag2 Jazzy's)."""
@@ -47,7 +60,7 @@ DISCOVERY_PERIOD_SEC = 0.1
 """How often ``record`` looks for new topics (rosbag2's default topic polling interval)."""
 
 
-def _mixed_offers(node: Any, topic: str) -> list[str]:
+def _mixed_offers(node: Node, topic: str) -> list[str]:
     """rosbag2's warnings when only some of a topic's publishers offer reliable or transient local
     (rosbag2_transport qos.cpp, ``adapt_request_to_offers``): the recorder then asks for best effort or
     volatile, to match them all."""
@@ -127,13 +140,13 @@ def main(argv: list[str]) -> int:
 
 
 # --------------------------------------------------------------------------- metadata
-def _qos_dicts(infos: list[Any]) -> list[dict[str, Any]]:
+def _qos_dicts(infos: list[TopicEndpointInfo]) -> list[dict[str, Any]]:
     """The offered QoS of publishers as rosbag2 Jazzy writes them (names lower case)."""
     out = []
     for info in infos:
         q = info.qos_profile
 
-        def dur(d: Any) -> dict[str, int]:
+        def dur(d: Duration) -> dict[str, int]:
             ns = int(d.nanoseconds)
             return {"sec": ns // 1_000_000_000, "nsec": ns % 1_000_000_000}
 
@@ -163,7 +176,7 @@ def _mcap_files(bag: Path, meta: dict[str, Any]) -> list[Path]:
     return files
 
 
-def _summary(path: Path) -> Any:
+def _summary(path: Path) -> Summary:
     """The MCAP file's summary (schemas, channels, statistics); a corrupt file is a :class:`BagError`."""
     from mcap.reader import make_reader
 
@@ -219,7 +232,7 @@ def _check_chunks(path: Path, limit: int = MAX_CHUNK_BYTES) -> None:
         raise BagError(f"could not read '{path}': not a valid MCAP file ({type(err).__name__}: {err})") from None
 
 
-def _decompressed_size(chunk: Any, stop_at: int) -> int:
+def _decompressed_size(chunk: Chunk, stop_at: int) -> int:
     """How many bytes ``chunk`` decompresses to, counting no further than ``stop_at``."""
     import io
 
@@ -303,7 +316,7 @@ class _Recorder:
     """One bag being written: a channel per topic (its ``ros2msg`` schema and its publishers' offered QoS
     as rosbag2 stores it), the CDR bytes of each message as received, metadata.yaml written at the end."""
 
-    def __init__(self, node: Any, out: Path, use_sim_time: bool, overrides: dict[str, Any] | None = None) -> None:
+    def __init__(self, node: Node, out: Path, use_sim_time: bool, overrides: dict[str, Any] | None = None) -> None:
         """An MCAP bag in ``out`` as rosbag2 writes one (``<name>_0.mcap`` with ZSTD chunks and the ros2 profile,
         and ``metadata.yaml`` at the end), stamping messages with the node's clock (sim time under
         ``use_sim_time``) or the wall clock."""
@@ -320,7 +333,7 @@ class _Recorder:
         self._schemas: dict[str, int] = {}
         self.topics: dict[str, dict[str, Any]] = {}
         """topic -> {type, channel, count, qos}"""
-        self._subs: list[Any] = []
+        self._subs: list[Subscription] = []
         self._clock = node.get_clock() if use_sim_time else None
         self.first = 2**63 - 1
         self.last = 0
@@ -378,7 +391,8 @@ class _Recorder:
                 print(f"[WARN] [rosbag2_transport]: {warning}", flush=True)
             qos = matching_qos(self.node, topic)
             qos.depth = RECORD_DEPTH
-        self._subs.append(self.node.create_subscription(cls, topic, on_message, qos, raw=True))
+        with_info: Callable[..., None] = on_message  # called with the message info, as rclpy does for two arguments
+        self._subs.append(self.node.create_subscription(cls, topic, with_info, qos, raw=True))
         print(f"[INFO] [rosbag2_recorder]: Subscribed to topic '{topic}'", flush=True)
 
     def finish(self) -> None:
@@ -515,7 +529,7 @@ STOP_MAX_SEC = 3.0
 """...or this long in all."""
 
 
-def _take_the_rest(node: Any, rec: _Recorder) -> None:
+def _take_the_rest(node: Node, rec: _Recorder) -> None:
     """Record what the readers received before the stop and the loop has not taken yet: a recorder that
     fell behind (a loaded machine) lost up to 1.8 s of sim time at the end of a test's bag, the test's last
     commands among it."""
@@ -534,7 +548,7 @@ _SAME_OFFER_KEYS = ("reliability", "durability", "deadline", "liveliness", "live
 history, depth and lifespan excluded)."""
 
 
-def _qos_profile(topic: str, offered: list[dict[str, Any]], overrides: dict[str, Any]) -> Any:
+def _qos_profile(topic: str, offered: list[dict[str, Any]], overrides: dict[str, Any]) -> QoSProfile:
     """The QoS to publish a topic with, as rosbag2_transport player.cpp's ``publisher_qos_for_topic``
     chooses it: an override as it is; else the recorded publishers' reliability and durability when they
     all offered the same (``adapt_offer_to_recorded_offers``); else, said once, rosbag2's default offer
@@ -609,7 +623,7 @@ def _play(args: argparse.Namespace) -> int:
         raise BagError("--rate must be positive")
     played = _played(bag, meta, args.topics)
     with cli_node("ros2bag_player") as node:
-        pubs: dict[str, Any] = {}
+        pubs: dict[str, Publisher] = {}
         for topic, (cls, md) in played.items():
             qos = _qos_profile(topic, md["offered_qos_profiles"], overrides)
             pubs[topic] = node.create_publisher(cls, topic, qos)
@@ -638,7 +652,7 @@ MATCH_SETTLE_SEC = 0.3
 """Once every reader in the graph is matched, how long play looks for more before it starts."""
 
 
-def _wait_for_matches(node: Any, pubs: dict[str, Any], timeout: float) -> None:
+def _wait_for_matches(node: Node, pubs: dict[str, Publisher], timeout: float) -> None:
     """Until the readers of the played topics are matched, at most ``timeout`` seconds: every subscriber the
     graph lists on a played topic matched by our publisher, and none more found for :data:`MATCH_SETTLE_SEC`.
 
@@ -659,7 +673,12 @@ def _wait_for_matches(node: Any, pubs: dict[str, Any], timeout: float) -> None:
 
 
 def _play_file(
-    node: Any, path: Path, pubs: dict[str, Any], clock_pub: Any, args: argparse.Namespace, make_reader: Any
+    node: Node,
+    path: Path,
+    pubs: dict[str, Publisher],
+    clock_pub: Publisher | None,
+    args: argparse.Namespace,
+    make_reader: Callable[[BinaryIO], McapReader],
 ) -> None:
     """Publish one MCAP file's messages on their due wall times (and /clock, when asked, at its rate from
     the bag's time); a damaged chunk met midway is a :class:`BagError`."""
@@ -696,7 +715,7 @@ def _play_file(
             raise BagError(f"could not read '{path}': {type(err).__name__}: {err}") from None
 
 
-def _time_msg(ns: int) -> Any:
+def _time_msg(ns: int) -> Time:
     """builtin_interfaces/Time of nanoseconds since the epoch."""
     from builtin_interfaces.msg import Time
 

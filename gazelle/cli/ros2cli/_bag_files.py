@@ -13,7 +13,7 @@ at most :data:`MAX_DURATION_NS`.
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import Any, TextIO
 
 from ..._errors import SimError
 from ...description import UntrustedInputError, read_regular_file, safe_load_bounded
@@ -36,7 +36,7 @@ class BagError(SimError):
     """What makes a bag command fail; the message is the one line printed."""
 
 
-def brief(value: Any) -> str:
+def brief(value: object) -> str:
     """A value from a file as an error shows it: short, on one line, and never a huge integer's digits (their
     conversion to text is what Python's int-string-conversion limit refuses)."""
     if isinstance(value, int) and not isinstance(value, bool) and value.bit_length() > 128:
@@ -45,7 +45,7 @@ def brief(value: Any) -> str:
     return text if len(text) <= 80 else text[:77] + "..."
 
 
-def load_yaml(path: Path, max_bytes: int, what: str) -> Any:
+def load_yaml(path: Path, max_bytes: int, what: str) -> object:
     """The YAML document of a regular file of at most ``max_bytes``, within the bounded loader's bounds.
 
     Raises:
@@ -121,7 +121,7 @@ def read_metadata(bag: Path) -> dict[str, Any]:
     return meta
 
 
-def _check_topic(topics: list[Any], i: int, where: str) -> None:
+def _check_topic(topics: list[object], i: int, where: str) -> None:
     """One entry of ``topics_with_message_count``: its count, name, type (rosidl's rules, nothing imported),
     serialization format and offered QoS profiles (parsed in place from rosbag2's YAML string)."""
     entry = _field(topics, i, where, dict, "a mapping")
@@ -139,7 +139,7 @@ def _check_topic(topics: list[Any], i: int, where: str) -> None:
     md["offered_qos_profiles"] = _offered(md.get("offered_qos_profiles", ""), f"{here}.offered_qos_profiles")
 
 
-def _offered(value: Any, where: str) -> list[dict[str, Any]]:
+def _offered(value: object, where: str) -> list[dict[str, Any]]:
     """The recorded ``offered_qos_profiles`` as a list of mappings (rosbag2 writes it as a YAML string in
     metadata.yaml, as a list in the MCAP channel); empty is none."""
     if isinstance(value, str):
@@ -154,7 +154,7 @@ def _offered(value: Any, where: str) -> list[dict[str, Any]]:
     return value
 
 
-def qos_overrides(source: Any) -> dict[str, Any]:
+def qos_overrides(source: str | Path | TextIO) -> dict[str, Any]:
     """``--qos-profile-overrides-path`` (a path, or an open text file): topic -> rclpy QoSProfile, read as
     ros2bag/api/__init__.py's ``convert_yaml_to_qos_profile`` does (policies by their short keys, durations
     as ``{sec, nsec}``, no negative value, no other key, rclpy's own rule that history or depth is given).
@@ -163,7 +163,10 @@ def qos_overrides(source: Any) -> dict[str, Any]:
     topic and the field."""
     from rclpy.qos import InvalidQoSProfileException, QoSProfile
 
-    if hasattr(source, "read"):
+    if isinstance(source, str | Path):
+        name = str(source)
+        loaded = load_yaml(Path(source), MAX_OVERRIDES_BYTES, "QoS overrides file")
+    else:
         name = getattr(source, "name", "the QoS overrides file")
         text = source.read(MAX_OVERRIDES_BYTES + 1)
         if len(text) > MAX_OVERRIDES_BYTES:
@@ -172,9 +175,6 @@ def qos_overrides(source: Any) -> dict[str, Any]:
             loaded = safe_load_bounded(text, name)
         except UntrustedInputError as err:
             raise BagError(str(err)) from None
-    else:
-        name = str(source)
-        loaded = load_yaml(Path(source), MAX_OVERRIDES_BYTES, "QoS overrides file")
     if loaded is None:
         return {}
     if not isinstance(loaded, dict) or not all(isinstance(v, dict) for v in loaded.values()):
@@ -188,7 +188,7 @@ def qos_overrides(source: Any) -> dict[str, Any]:
     return out
 
 
-def _qos_field(key: Any, value: Any) -> Any:
+def _qos_field(key: Any, value: object) -> Any:
     """One policy of an override, as rclpy takes it.
 
     Raises:
@@ -228,7 +228,7 @@ def _qos_field(key: Any, value: Any) -> Any:
     raise ValueError(f"Unexpected key `{brief(key).strip(chr(39))}` for QoS profile.")
 
 
-def _duration_ns(key: str, value: Any) -> int:
+def _duration_ns(key: str, value: object) -> int:
     """A ``{sec, nsec}`` YAML duration in nanoseconds (ros2bag's ``dict_to_duration``: empty is 0), within
     what rclpy's Duration holds."""
     if not value:

@@ -8,7 +8,7 @@ from __future__ import annotations
 import argparse
 import sys
 import time
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..._errors import SimError
 from ._daemon_graph import daemon_graph
@@ -19,6 +19,9 @@ DEFAULT_SERVICE_TIMEOUT = 10.0
 MANAGER_RECHECK_SEC = 0.5
 """A manager missing from the daemon's graph is looked for again this long (it may have just started; a
 short time: a missing manager is the common case, and the answer a script waits for)."""
+
+if TYPE_CHECKING:
+    from rclpy.node import Node
 
 VERBS = (
     "list_controllers",
@@ -144,7 +147,7 @@ def _manager_in_daemon_graph(args: argparse.Namespace) -> bool:
 class _Manager:
     """Calls to one controller manager's services, each waiting for the service and the reply."""
 
-    def __init__(self, node: Any, args: argparse.Namespace) -> None:
+    def __init__(self, node: Node, args: argparse.Namespace) -> None:
         """The controller manager a ``ros2 control`` verb talks to (``-c``, default ``/controller_manager``), with
         the verb's service timeout."""
         self.node = node

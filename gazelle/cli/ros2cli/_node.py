@@ -5,12 +5,15 @@ from __future__ import annotations
 import argparse
 import sys
 import time
-from typing import Any
+from typing import TYPE_CHECKING
 
 from ._daemon_graph import SECTIONS, DaemonGraph, daemon_graph
 from ._graph import DEFAULT_SPIN_TIME, QUIET_SEC, SETTLE_SEC, absolute, cli_node, discover, graph_view, wait_until
 
 TITLES = ("Subscribers", "Publishers", "Service Servers", "Service Clients", "Action Servers", "Action Clients")
+
+if TYPE_CHECKING:
+    from rclpy.node import Node
 
 
 def main(argv: list[str]) -> int:
@@ -48,7 +51,7 @@ def main(argv: list[str]) -> int:
         return _info(node, target, args.include_hidden)
 
 
-def _node_names(node: Any) -> list[str]:
+def _node_names(node: Node | DaemonGraph) -> list[str]:
     """Every node in the graph by its full name (a name twice when two nodes have it)."""
     return [f"{ns.rstrip('/')}/{n}" for n, ns in node.get_node_names_and_namespaces()]
 
@@ -91,7 +94,7 @@ def _print_info(target: str, count: int, lists: list[list[tuple[str, list[str]]]
         print(*[f"    {n}: {', '.join(t)}" for n, t in shown], sep="\n")
 
 
-def _info(node: Any, target: str, include_hidden: bool) -> int:
+def _info(node: Node, target: str, include_hidden: bool) -> int:
     """``info``: the node's subscribers, publishers, service servers and clients, action servers and clients,
     each under its title with an empty line when there are none; hidden names only with
     ``--include-hidden``; a warning on stderr when several nodes have the name, as upstream."""

@@ -5,12 +5,15 @@ from __future__ import annotations
 
 import argparse
 import sys
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import yaml
 
 from ..._errors import SimError
 from ._graph import absolute, cli_node, discover, wait_until
+
+if TYPE_CHECKING:
+    from rclpy.node import Node
 
 SERVICE_TIMEOUT_SEC = 5.0
 
@@ -96,7 +99,7 @@ def main(argv: list[str]) -> int:
 
 
 # --------------------------------------------------------------------------- helpers
-def _node_names(node: Any, hidden: bool) -> list[str]:
+def _node_names(node: Node, hidden: bool) -> list[str]:
     """The graph's nodes as full names; hidden ones (a name part starting with ``_``) only when asked."""
     out = []
     for name, ns in node.get_node_names_and_namespaces():
@@ -106,7 +109,7 @@ def _node_names(node: Any, hidden: bool) -> list[str]:
     return sorted(set(out))
 
 
-def _find_node(node: Any, name: str, hidden: bool) -> str:
+def _find_node(node: Node, name: str, hidden: bool) -> str:
     """The full name of the node the user named, once discovery has seen it; "Node not found" otherwise
     (ros2param's message)."""
     full = absolute(name)
@@ -115,7 +118,7 @@ def _find_node(node: Any, name: str, hidden: bool) -> str:
     return full
 
 
-def _client(node: Any, target: str) -> Any:
+def _client(node: Node, target: str) -> Any:
     """An rclpy parameter client for ``target``, its services ready; an error naming the node when they never
     appear (a node started with ``start_parameter_services=False``)."""
     from rclpy.parameter_client import AsyncParameterClient
@@ -126,7 +129,7 @@ def _client(node: Any, target: str) -> Any:
     return client
 
 
-def _result(node: Any, future: Any, what: str) -> Any:
+def _result(node: Node, future: Any, what: str) -> Any:
     """Spin until a parameter service's answer; an error naming the node after
     :data:`SERVICE_TIMEOUT_SEC` (upstream waits forever; a wedged node must not hang a script)."""
     import rclpy
@@ -146,7 +149,7 @@ def _python(value: Any) -> Any:
 
 
 # --------------------------------------------------------------------------- verbs
-def _list(node: Any, args: argparse.Namespace) -> int:
+def _list(node: Node, args: argparse.Namespace) -> int:
     """``list [NODE]``: each node's parameter names, sorted, under a ``/node:`` line when no node is named;
     ``--param-type`` adds each one's type as ``describe`` names it."""
     if args.node_name:
@@ -172,7 +175,7 @@ def _list(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _get(node: Any, args: argparse.Namespace) -> int:
+def _get(node: Node, args: argparse.Namespace) -> int:
     """``get NODE NAME``: ros2param's ``Double value is: 0.34`` (the label by type), ``--hide-type`` the value
     alone, "Parameter not set." for an undeclared one."""
     target = _find_node(node, args.node_name, args.include_hidden_nodes)
@@ -188,7 +191,7 @@ def _get(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _set(node: Any, args: argparse.Namespace) -> int:
+def _set(node: Node, args: argparse.Namespace) -> int:
     """``set NODE NAME VALUE [NAME VALUE ...]``: each value parsed as YAML (``0.5`` a double, ``true`` a bool,
     ``[1, 2]`` an array), as ros2param's ``get_parameter_value``; one result line each, a refusal on stderr
     with the node's reason and status 1."""
@@ -209,7 +212,7 @@ def _set(node: Any, args: argparse.Namespace) -> int:
     return 1 if failed else 0
 
 
-def _describe(node: Any, args: argparse.Namespace) -> int:
+def _describe(node: Node, args: argparse.Namespace) -> int:
     """``describe NODE NAME...``: type, description and constraints (read only, ranges) as ros2param
     prints them."""
     target = _find_node(node, args.node_name, args.include_hidden_nodes)
@@ -233,7 +236,7 @@ def _describe(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _dump(node: Any, args: argparse.Namespace) -> int:
+def _dump(node: Node, args: argparse.Namespace) -> int:
     """``dump NODE``: every parameter as a parameters file (``/node: ros__parameters: ...``, dotted names
     nested), which ``load`` and ``--params-file`` read back."""
     target = _find_node(node, args.node_name, args.include_hidden_nodes)
@@ -251,7 +254,7 @@ def _dump(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _load(node: Any, args: argparse.Namespace) -> int:
+def _load(node: Node, args: argparse.Namespace) -> int:
     """``load NODE FILE``: the file's sections for this node (``/**`` first, the node's own over it) set in
     one call; one line per parameter, refusals on stderr."""
     from rclpy.parameter import Parameter

@@ -5,10 +5,13 @@ from __future__ import annotations
 import argparse
 import sys
 import time
-from typing import Any
+from typing import TYPE_CHECKING
 
 from ._graph import DEFAULT_SPIN_TIME, absolute, cli_node, graph_view, is_hidden, spin_once
 from ._messages import InterfaceError, get_interface, parse_values, set_fields
+
+if TYPE_CHECKING:
+    from rclpy.node import Node
 
 
 def service_main(argv: list[str]) -> int:
@@ -67,7 +70,7 @@ def service_main(argv: list[str]) -> int:
         return 1
 
 
-def _call(node: Any, args: argparse.Namespace) -> int:
+def _call(node: Node, args: argparse.Namespace) -> int:
     """Call as ros2cli Jazzy's ``requester()`` (ros2service/verb/call.py): wait for the service however long
     it takes (saying so once), print the request and the response as their reprs (Jazzy prints
     ``response:`` and ``std_srvs.srv.SetBool_Response(success=True, message='')``, not YAML), wait for the

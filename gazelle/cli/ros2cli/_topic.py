@@ -6,7 +6,8 @@ import argparse
 import copy
 import sys
 import time
-from typing import Any
+from collections.abc import Callable, Mapping
+from typing import TYPE_CHECKING, Any
 
 import yaml
 
@@ -25,6 +26,15 @@ from ._graph import (
 )
 from ._messages import InterfaceError, StampSetter, get_interface, parse_values, set_fields, to_csv, to_yaml
 
+if TYPE_CHECKING:
+    from rclpy.event_handler import QoSMessageLostInfo
+    from rclpy.node import Node
+    from rclpy.publisher import Publisher
+    from rclpy.qos import QoSProfile
+    from rclpy.topic_endpoint_info import TopicEndpointInfo
+
+    from ._daemon_graph import DaemonGraph
+
 _QOS_PRESETS = [
     "system_default",
     "sensor_data",
@@ -38,12 +48,12 @@ _QOS_PRESETS = [
 """rclpy's ``QoSPresetProfiles`` short keys, which ros2cli's ``--qos-profile`` offers."""
 
 
-def _topic_types(node: Any, hidden: bool = False) -> dict[str, list[str]]:
+def _topic_types(node: Node | DaemonGraph, hidden: bool = False) -> dict[str, list[str]]:
     """Topic name -> its type names, from the graph as discovered so far (hidden ones when asked)."""
     return {n: t for n, t in node.get_topic_names_and_types() if hidden or not is_hidden(n)}
 
 
-def _resolve_type(node: Any, topic: str, given: str | None, wait: float = 5.0) -> str | None:
+def _resolve_type(node: Node, topic: str, given: str | None, wait: float = 5.0) -> str | None:
     """The topic's type: the one given, else the first the graph names within ``wait`` seconds (None)."""
     if given:
         return given
@@ -82,7 +92,7 @@ def parser() -> argparse.ArgumentParser:
     return p
 
 
-def _add_listing_verbs(sub: Any) -> None:
+def _add_listing_verbs(sub: argparse._SubParsersAction) -> None:
     """``list`` and ``find``, with ros2cli's options."""
     ls = sub.add_parser("list", help="Output a list of available topics")
     ls.add_argument("-t", "--show-types", action="store_true")
@@ -102,7 +112,7 @@ def _add_listing_verbs(sub: Any) -> None:
         verb.add_argument("--no-daemon", action="store_true", help="Do not spawn nor use an already running daemon")
 
 
-def _add_echo(sub: Any) -> None:
+def _add_echo(sub: argparse._SubParsersAction) -> None:
     """``echo``, with ros2cli's options (QoS chosen to match every publisher unless given)."""
     echo = sub.add_parser("echo", help="Output messages from a topic")
     echo.add_argument("topic_name")
@@ -127,7 +137,7 @@ def _add_echo(sub: Any) -> None:
     _add_qos_arguments(echo, "subscribe", "sensor_data")
 
 
-def _add_rate_verbs(sub: Any) -> None:
+def _add_rate_verbs(sub: argparse._SubParsersAction) -> None:
     """``hz``, ``info``, ``type``, ``bw`` and ``delay``; ``--count`` (gazelle's) ends them after that many reports."""
     hz = sub.add_parser("hz", help="Print the average publishing rate to screen")
     hz.add_argument("topic_name")
@@ -153,7 +163,7 @@ def _add_rate_verbs(sub: Any) -> None:
     delay.add_argument("--use-sim-time", action="store_true", help="(gazelle) compare with /clock's time")
 
 
-def _add_pub(sub: Any) -> None:
+def _add_pub(sub: argparse._SubParsersAction) -> None:
     """``pub``, with ros2cli Jazzy's options (ros2topic/verb/pub.py and the direct node's ``-s``/``--spin-time``)."""
     pub = sub.add_parser("pub", help="Publish a message to a topic")
     pub.add_argument("topic_name")
@@ -181,7 +191,7 @@ def _add_pub(sub: Any) -> None:
     pub.add_argument("-s", "--use-sim-time", action="store_true", help="stamp `auto`/`now` with /clock's time")
 
 
-def _add_qos_arguments(parser: Any, direction: str, preset: str) -> None:
+def _add_qos_arguments(parser: argparse.ArgumentParser, direction: str, preset: str) -> None:
     """The ``--qos-*`` options of ``echo`` and ``pub`` (ros2topic/api ``add_qos_arguments``, jazzy): a preset
     (``--qos-profile``, echo's ``sensor_data``, pub's ``default``) and the overrides of its parts."""
     parser.add_argument(
@@ -216,7 +226,7 @@ def _nonnegative_int(text: str) -> int:
     return value
 
 
-def _list(node: Any, args: argparse.Namespace) -> int:
+def _list(node: Node | DaemonGraph, args: argparse.Namespace) -> int:
     """``list``: the names in the graph (the daemon's, or discovered for ``--spin-time``), sorted, with
     ``[types]`` for ``-t``."""
     topics = _topic_types(node, args.include_hidden_topics)
@@ -228,7 +238,7 @@ def _list(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _echo(node: Any, args: argparse.Namespace) -> int:
+def _echo(node: Node, args: argparse.Namespace) -> int:
     """As ros2cli Jazzy's ``EchoVerb`` (ros2topic/verb/echo.py): a QoS that matches every publisher unless
     ``--qos-*`` says otherwise; each message (or its ``--field``) that passes ``--filter`` printed as YAML,
     CSV or its serialized bytes (``--raw``), with its message info first for ``-i``; "A message was
@@ -243,11 +253,12 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
     cls = get_interface(type_name)
     keep = _filter(args.filter_expr)
     qos = _echo_qos(node, topic, args)
-    got: list[tuple[Any, Any]] = []
+    got: list[tuple[object, Mapping[str, object]]] = []
     lost = None if args.no_lost_messages else SubscriptionEventCallbacks(message_lost=_said_lost)
-    node.create_subscription(
-        cls, topic, lambda msg, info: got.append((msg, info)), qos, event_callbacks=lost, raw=args.raw
-    )
+    # rclpy calls a two-argument callback with the message info (Subscription.CallbackType.WithMessageInfo),
+    # which create_subscription's hint (one argument) does not say
+    with_info: Callable[..., None] = lambda msg, info: got.append((msg, info))
+    node.create_subscription(cls, topic, with_info, qos, event_callbacks=lost, raw=args.raw)
     deadline = time.monotonic() + args.timeout if args.timeout else None
     while True:
         spin_once(node, timeout_sec=0.1)
@@ -266,7 +277,7 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
             return 0 if not args.once else 1
 
 
-def _echo_qos(node: Any, topic: str, args: argparse.Namespace) -> Any:
+def _echo_qos(node: Node, topic: str, args: argparse.Namespace) -> QoSProfile:
     """The subscription's QoS as ros2topic's echo chooses it (verb/echo.py ``choose_qos``, jazzy): with any
     ``--qos-*`` override, the preset with the overrides; else the preset made reliable only when every
     publisher is, and transient local only when every publisher is (each said when only some are, as
@@ -311,7 +322,7 @@ def _echo_qos(node: Any, topic: str, args: argparse.Namespace) -> Any:
     return qos
 
 
-def _print_echoed(msg: Any, info: Any, args: argparse.Namespace) -> None:
+def _print_echoed(msg: object, info: Mapping[str, object], args: argparse.Namespace) -> None:
     """One echoed message as ros2cli prints it (``_subscriber_callback``)."""
     is_message = hasattr(msg, "get_fields_and_field_types")
     if not is_message and args.raw:
@@ -331,7 +342,7 @@ def _print_echoed(msg: Any, info: Any, args: argparse.Namespace) -> None:
             print(f"{msg}\n---", flush=True)
 
 
-def _said_lost(status: Any) -> None:
+def _said_lost(status: QoSMessageLostInfo) -> None:
     """ros2cli's ``_message_lost_event_callback``."""
     print(
         f"A message was lost!!!\n\ttotal count change:{status.total_count_change}\n\ttotal count: {status.total_count}",
@@ -340,7 +351,7 @@ def _said_lost(status: Any) -> None:
     )
 
 
-def _hz(node: Any, args: argparse.Namespace) -> int:
+def _hz(node: Node, args: argparse.Namespace) -> int:
     """As ros2cli Jazzy's ``ROSTopicHz`` (ros2topic/verb/hz.py): each message is timed by the node's clock
     when it arrives (ROS time, /clock's with ``-s``, the system's with ``--wall-time``); a report is due
     once the latest message came a second of that clock after the last report, so with ``-s`` it reports
@@ -354,7 +365,7 @@ def _hz(node: Any, args: argparse.Namespace) -> int:
     state = {"t0": -1, "tn": 0, "printed": 0}
     intervals: list[int] = []
 
-    def on_message(msg: Any) -> None:
+    def on_message(msg: object) -> None:
         """Note a message's arrival on the node's clock (sim time when the graph has /clock, as ros2 topic hz with
         use_sim_time): the interval since the last one joins the window. A clock that went back (a reset) starts
         the counts again, as ros2cli's does."""
@@ -403,7 +414,7 @@ def _hz(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _filter(expr: str | None) -> Any:
+def _filter(expr: str | None) -> Callable[[object], bool] | None:
     """ros2cli's ``--filter EXPR``: a function of the message ``m``, evaluated as Python as upstream does
     (``eval(expr)`` with ``m`` in scope: the expression is the user's own, typed on their command line)."""
     if expr is None:
@@ -413,7 +424,7 @@ def _filter(expr: str | None) -> Any:
     except SyntaxError as err:
         raise InterfaceError(f"--filter '{expr}' is not a Python expression: {err.msg}") from None
 
-    def keep(m: Any) -> bool:
+    def keep(m: object) -> bool:
         """Whether a message passes the user's ``--filter`` expression (``m`` is the message), as ros2cli evaluates
         it; an expression that fails on a message ends the verb with its error, once, not a traceback per
         message."""
@@ -431,7 +442,7 @@ def _stats(values: list[float]) -> tuple[float, float, float, float]:
     return mean, min(values), max(values), (sum((v - mean) ** 2 for v in values) / len(values)) ** 0.5
 
 
-def _subscribed(node: Any, args: argparse.Namespace, callback: Any, raw: bool = False) -> str | None:
+def _subscribed(node: Node, args: argparse.Namespace, callback: Callable[..., None], raw: bool = False) -> str | None:
     """Subscribe ``callback`` to the topic (its type discovered); the topic's name, None when unknown."""
     topic = absolute(args.topic_name)
     type_name = _resolve_type(node, topic, None)
@@ -442,7 +453,7 @@ def _subscribed(node: Any, args: argparse.Namespace, callback: Any, raw: bool = 
     return topic
 
 
-def _every_second(node: Any, count: int | None, report: Any) -> None:
+def _every_second(node: Node, count: int | None, report: Callable[[], bool]) -> None:
     """Spin, calling ``report()`` once a second (``count`` times, or until Ctrl-C); it returns whether it printed."""
     reports, last = 0, time.monotonic()
     while count is None or reports < count:
@@ -461,7 +472,7 @@ def _bytes(n: float) -> str:
     return f"{n:.2f} MB"
 
 
-def _bw(node: Any, args: argparse.Namespace) -> int:
+def _bw(node: Node, args: argparse.Namespace) -> int:
     """``bw``: the serialized sizes of the messages (a raw subscription: nothing is deserialized), their
     rate over the window and their mean/min/max, once a second of wall time, as ros2topic's ROSTopicBandwidth."""
     sizes: list[tuple[float, int]] = []
@@ -486,7 +497,7 @@ def _bw(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _delay(node: Any, args: argparse.Namespace) -> int:
+def _delay(node: Node, args: argparse.Namespace) -> int:
     """``delay``: now minus each message's ``header.stamp`` (messages without a header are counted and said),
     once a second; ``--use-sim-time`` compares with /clock's time, which a simulation's stamps are in."""
     if args.use_sim_time:
@@ -496,7 +507,7 @@ def _delay(node: Any, args: argparse.Namespace) -> int:
     clock = node.get_clock()
     delays: list[float] = []
 
-    def on_message(msg: Any) -> None:
+    def on_message(msg: object) -> None:
         """A message's delay: the clock now minus its header stamp (a message without a header is not counted)."""
         header = getattr(msg, "header", None)
         if header is None:
@@ -523,7 +534,7 @@ def _delay(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _find(node: Any, args: argparse.Namespace) -> int:
+def _find(node: Node | DaemonGraph, args: argparse.Namespace) -> int:
     """``find TYPE``: the topics of that type in the graph, sorted."""
     found = sorted(n for n, types in _topic_types(node, args.include_hidden_topics).items() if args.topic_type in types)
     if args.count_topics:
@@ -534,7 +545,7 @@ def _find(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _info(node: Any, args: argparse.Namespace) -> int:
+def _info(node: Node, args: argparse.Namespace) -> int:
     """``info [-v]``: the type, publisher and subscription counts, and with ``-v`` each endpoint's node and
     QoS, after the graph has settled (a new topic's endpoints arrive in several discovery messages)."""
     topic = absolute(args.topic_name)
@@ -554,7 +565,7 @@ def _info(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _endpoint(info: Any, kind: str) -> None:
+def _endpoint(info: TopicEndpointInfo, kind: str) -> None:
     """One endpoint block of ``info -v``, in ros2topic's layout."""
     q = info.qos_profile
     print(f"Node name: {info.node_name}")
@@ -567,7 +578,7 @@ def _endpoint(info: Any, kind: str) -> None:
     print(f"  Durability: {q.durability.name}\n")
 
 
-def _type(node: Any, args: argparse.Namespace) -> int:
+def _type(node: Node, args: argparse.Namespace) -> int:
     """``type``: the topic's type names, one a line; "Unknown topic" with status 1."""
     topic = absolute(args.topic_name)
     types = wait_until(node, lambda: dict(node.get_topic_names_and_types()).get(topic))
@@ -579,7 +590,7 @@ def _type(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _pub(node: Any, args: argparse.Namespace) -> int:
+def _pub(node: Node, args: argparse.Namespace) -> int:
     """Publish as ros2cli Jazzy's ``publisher()`` (ros2topic/verb/pub.py): wait for the matching
     subscriptions asked for (1 with ``--once``/``--times``, however long it takes unless
     ``--max-wait-time-secs``), publish the first message at once and the others every ``1 / rate`` seconds,
@@ -631,7 +642,7 @@ def _pub(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _configured(qos: Any, args: argparse.Namespace) -> Any:
+def _configured(qos: QoSProfile, args: argparse.Namespace) -> QoSProfile:
     """``qos`` with the ``--qos-*`` overrides, as ros2topic's ``profile_configure_short_keys`` (jazzy): a
     depth of 0 or less keeps the preset's, and a transient local profile of depth 0 gets depth 1."""
     from rclpy.duration import Duration
@@ -655,7 +666,7 @@ def _configured(qos: Any, args: argparse.Namespace) -> Any:
     return qos
 
 
-def _wait_for_subscriptions(node: Any, pub: Any, wanted: int, max_wait: float | None) -> bool:
+def _wait_for_subscriptions(node: Node, pub: Publisher, wanted: int, max_wait: float | None) -> bool:
     """Spin until ``pub`` matches ``wanted`` subscriptions, saying so once a second as ros2cli does; False
     (with ros2cli's message) when ``max_wait`` seconds pass first."""
     start = last_said = time.monotonic()
