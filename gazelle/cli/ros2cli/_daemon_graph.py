@@ -4,7 +4,6 @@
 from __future__ import annotations
 
 import time
-from typing import Any
 
 from ._daemon_link import WARM_SEC, names_and_types, request, start_daemon
 
@@ -18,7 +17,7 @@ class DaemonGraph:
     """A snapshot of the daemon's graph: node, topic and service names with their types, and one node's
     endpoints on request. Every name is a string checked on arrival; none is evaluated."""
 
-    def __init__(self, reply: dict[str, Any]) -> None:
+    def __init__(self, reply: dict[str, object]) -> None:
         """The daemon's ``graph`` answer (already known to be an ``ok`` reply)."""
         nodes = reply.get("nodes")
         self._nodes = [

@@ -23,7 +23,6 @@ import stat
 import subprocess
 import sys
 from pathlib import Path
-from typing import Any
 
 DIR_VARIABLE = "GAZELLE_ROS2_DAEMON_DIR"
 """The daemons' folder (default ``$XDG_RUNTIME_DIR/gazelle-ros2-daemon``, else ``/tmp/gazelle-ros2-daemon-UID``)."""
@@ -93,7 +92,7 @@ def socket_name() -> str:
     return f"domain{domain}-{hashlib.sha256(key.encode()).hexdigest()[:12]}.sock"
 
 
-def request(message: dict[str, Any], create: bool = False) -> dict[str, Any] | None:
+def request(message: dict[str, object], create: bool = False) -> dict[str, object] | None:
     """Send one request to this environment's daemon and return its answer; None when no daemon answers."""
     folder = private_dir(create)
     if folder is None:
@@ -141,7 +140,7 @@ def start_daemon() -> bool:
     return True
 
 
-def names_and_types(value: Any) -> list[tuple[str, list[str]]]:
+def names_and_types(value: object) -> list[tuple[str, list[str]]]:
     """``[[name, [type, ...]], ...]`` from the wire, checked; anything else is an empty list."""
     if not isinstance(value, list):
         return []

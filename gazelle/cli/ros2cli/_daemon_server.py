@@ -18,15 +18,18 @@ import struct
 import sys
 import time
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 from ._daemon_graph import SECTIONS
 from ._daemon_link import MAX_REQUEST
 
+if TYPE_CHECKING:
+    from rclpy.node import Node
+
 PEER_TIMEOUT = 2.0
 
 
-def _by_node(node: Any, name: str, namespace: str) -> dict[str, Any]:
+def _by_node(node: Node, name: str, namespace: str) -> dict[str, object]:
     """One node's endpoints, each section as ``[[name, [types]], ...]`` (empty when the node has gone)."""
     from rclpy.action import graph
 
@@ -38,7 +41,7 @@ def _by_node(node: Any, name: str, namespace: str) -> dict[str, Any]:
         lambda n, ns: graph.get_action_server_names_and_types_by_node(node, n, ns),
         lambda n, ns: graph.get_action_client_names_and_types_by_node(node, n, ns),
     )
-    out: dict[str, Any] = {"ok": True}
+    out: dict[str, object] = {"ok": True}
     for section, get in zip(SECTIONS, getters, strict=True):
         try:
             out[section] = [[n, list(t)] for n, t in get(name, namespace)]
@@ -47,10 +50,11 @@ def _by_node(node: Any, name: str, namespace: str) -> dict[str, Any]:
     return out
 
 
-def answer(node: Any, started: float, message: Any) -> dict[str, Any]:
+def answer(node: Node, started: float, message: object) -> dict[str, object]:
     """The reply to one request (its fields are data: only ``op`` chooses, the names are passed to rcl)."""
-    op = message.get("op") if isinstance(message, dict) else None
-    base = {"ok": True, "age": time.monotonic() - started, "pid": os.getpid()}
+    fields: dict[object, object] = message if isinstance(message, dict) else {}
+    op = fields.get("op")
+    base: dict[str, object] = {"ok": True, "age": time.monotonic() - started, "pid": os.getpid()}
     if op in ("status", "stop"):
         return base
     if op == "graph":
@@ -58,13 +62,13 @@ def answer(node: Any, started: float, message: Any) -> dict[str, Any]:
         base["topics"] = [[n, list(t)] for n, t in node.get_topic_names_and_types()]
         base["services"] = [[n, list(t)] for n, t in node.get_service_names_and_types()]
         return base
-    name, namespace = (message.get(k) for k in ("name", "namespace")) if op == "node" else (None, None)
+    name, namespace = (fields.get(k) for k in ("name", "namespace")) if op == "node" else (None, None)
     if isinstance(name, str) and isinstance(namespace, str) and name and namespace.startswith("/"):
         return _by_node(node, name, namespace)
     return {"ok": False}
 
 
-def _serve_one(conn: socket.socket, node: Any, started: float) -> bool:
+def _serve_one(conn: socket.socket, node: Node, started: float) -> bool:
     """Answer one connection; True when it asked the daemon to stop."""
     with conn:
         _pid, uid, _gid = struct.unpack("3i", conn.getsockopt(socket.SOL_SOCKET, socket.SO_PEERCRED, 12))

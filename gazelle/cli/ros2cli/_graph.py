@@ -8,9 +8,14 @@ import threading
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..._errors import SimError
+
+if TYPE_CHECKING:
+    from rclpy.node import Node
+
+    from ._daemon_graph import DaemonGraph
 
 DEFAULT_SPIN_TIME = 1.5
 """Seconds to discover the graph before listing without the daemon (``--no-daemon``, or the first verb)."""
@@ -132,7 +137,9 @@ def discover(
 
 
 @contextmanager
-def graph_view(name: str, no_daemon: bool = False, spin_time: float = DEFAULT_SPIN_TIME) -> Iterator[Any]:
+def graph_view(
+    name: str, no_daemon: bool = False, spin_time: float = DEFAULT_SPIN_TIME
+) -> Iterator[Node | DaemonGraph]:
     """The graph a listing verb reads (``get_node_names_and_namespaces`` and the other getters): a warm graph
     daemon's, in milliseconds (ros2cli's ``NodeStrategy``: the daemon when it runs, else a direct node, and
     the daemon started for the next verb); this verb's own node after :func:`discover` with ``no_daemon``
