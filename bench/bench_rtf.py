@@ -39,7 +39,7 @@ from _domain import private_ros_domain
 
 private_ros_domain()
 # the DDS settings of `gazelle sim` (its writers' 5 ms heartbeats), before the first participant
-from gazelle.ros._dds import announce_often  # noqa: E402
+from gazelle.ros import announce_often  # noqa: E402
 
 announce_often()
 

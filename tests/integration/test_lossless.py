@@ -207,10 +207,9 @@ def test_a_slow_reliable_reader_gets_every_message_and_a_best_effort_one_does_no
         slow_be = _slow_reader(sim, "best_effort", 0.05)
         readers.append(slow_be)
         sim.ros.wait_until(lambda: sim.ros.node.count_subscribers("/odom") >= 1, 30, "the best-effort reader")
-        assert slow_be.stdout is not None
-        sim.run_until(
-            lambda: select.select([slow_be.stdout], [], [], 0)[0] != [], 5.0, "the best-effort reader's first /odom"
-        )
+        be_out = slow_be.stdout
+        assert be_out is not None
+        sim.run_until(lambda: select.select([be_out], [], [], 0)[0] != [], 5.0, "the best-effort reader's first /odom")
         t0 = time.perf_counter()
         end_be = sim.run_for(20.0)
         wall_be = time.perf_counter() - t0
@@ -221,9 +220,10 @@ def test_a_slow_reliable_reader_gets_every_message_and_a_best_effort_one_does_no
         reliable = _slow_reader(sim, "reliable", 0.002, {"FASTRTPS_DEFAULT_PROFILES_FILE": small})
         readers.append(reliable)
         sim.ros.wait_until(lambda: sim.ros.node.count_subscribers("/odom") >= 1, 30, "the reliable reader")
-        assert reliable.stdout is not None
+        reliable_out = reliable.stdout
+        assert reliable_out is not None
         sim.run_until(
-            lambda: select.select([reliable.stdout], [], [], 0)[0] != [], 5.0, "the reliable reader's first /odom"
+            lambda: select.select([reliable_out], [], [], 0)[0] != [], 5.0, "the reliable reader's first /odom"
         )
         start = sim.time
         end = sim.run_for(20.0)
