@@ -9,8 +9,10 @@ Run: ``.venv/bin/python bench/bench_rtf.py [-n STEPS] [--seconds S]``. One run p
   same on the simulation thread (``sim.start()`` at rtf=0);
 * gazelle with the ROS bridge (``RosBridge``: /clock at 100 Hz as ``gazelle sim`` by default, odom + tf
   at the diff drive's 100 Hz) on its thread at rtf=0: with nobody subscribed (nothing is built for
-  nobody), with a plain rclpy process on /odom and /tf (every message built, converted and sent), and
-  with one on /clock (the bridge then holds the sim back to keep /clock's resolution: at most one
+  nobody), with a plain rclpy process on /odom and /tf (every message built, converted and sent): a reliable
+  KEEP_ALL one, which gets every message written (printed: written and received; the simulation goes at
+  its pace), then a best-effort one (DDS's semantics: it gets what it can take, and never slows the
+  simulation), and with one on /clock (the bridge then holds the sim back to keep /clock's resolution: at most one
   clock period per ms of wall time).
 
 The raw loop and ``sim.step(N)`` are measured three times, alternating; the best of each counts. The rows
@@ -36,6 +38,10 @@ from pathlib import Path
 from _domain import private_ros_domain
 
 private_ros_domain()
+# the DDS settings of `gazelle sim` (its writers' 5 ms heartbeats), before the first participant
+from gazelle.ros import announce_often  # noqa: E402
+
+announce_often()
 
 REPO = Path(__file__).resolve().parent.parent
 ROBOT = REPO / "examples/simple_robot/simple_robot/robot.urdf.xacro"
@@ -44,22 +50,31 @@ CLOCK_HZ = 100.0
 
 SUBSCRIBER = textwrap.dedent(
     """
-    import select, sys
+    import select, sys, time
     import rclpy
-    from rclpy.qos import QoSProfile, ReliabilityPolicy
+    from rclpy.qos import HistoryPolicy, QoSProfile, ReliabilityPolicy
     from rosgraph_msgs.msg import Clock
     from nav_msgs.msg import Odometry
     from tf2_msgs.msg import TFMessage
     TYPES = {"/clock": Clock, "/odom": Odometry, "/tf": TFMessage}
+    QOS = {
+        "best_effort": QoSProfile(depth=1, reliability=ReliabilityPolicy.BEST_EFFORT),
+        "reliable": QoSProfile(depth=1, history=HistoryPolicy.KEEP_ALL, reliability=ReliabilityPolicy.RELIABLE),
+    }
     rclpy.init()
     node = rclpy.create_node("bench_listener")
     n = [0]
     for topic in sys.argv[1].split(","):
-        node.create_subscription(TYPES[topic], topic, lambda m: n.__setitem__(0, n[0] + 1),
-                                 QoSProfile(depth=1, reliability=ReliabilityPolicy.BEST_EFFORT))
+        node.create_subscription(TYPES[topic], topic, lambda m: n.__setitem__(0, n[0] + 1), QOS[sys.argv[2]])
     print("ready", flush=True)
     while not select.select([sys.stdin], [], [], 0)[0]:  # until the parent closes our stdin
         rclpy.spin_once(node, timeout_sec=0.05)
+    # the parent closed it once everything was acknowledged: take what the reader holds, until 0.5 s of quiet
+    last = (n[0], time.monotonic())
+    while time.monotonic() - last[1] < 0.5:
+        rclpy.spin_once(node, timeout_sec=0.05)
+        if n[0] != last[0]:
+            last = (n[0], time.monotonic())
     print(n[0], flush=True)
     node.destroy_node()
     rclpy.shutdown()
@@ -77,14 +92,18 @@ def cpu_seconds(pid: int) -> float:
     return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
-def with_listener(topics: str, pubs: list, sim, seconds: float) -> tuple[float, str]:
-    """Run the sim thread for ``seconds`` while a plain rclpy process subscribes to ``topics``, once every
-    publisher in ``pubs`` has matched it (none given is an error: the runs would start before discovery,
-    and a run then timed up to 3 s with nobody matched, publishing nothing)."""
+def with_listener(
+    topics: str, pubs: list, sim, seconds: float, qos: str = "best_effort", outbox=None
+) -> tuple[float, str, int]:
+    """Run the sim thread for ``seconds`` while a plain rclpy process subscribes to ``topics`` with ``qos``
+    (``best_effort``, or ``reliable``: KEEP_ALL), once every publisher in ``pubs`` has matched it (none given is
+    an error: the runs would start before discovery, and a run then timed up to 3 s with nobody matched,
+    publishing nothing). Returns the steps per wall second, a note, and how many messages the listener got
+    (-1: unknown); before the listener counts, ``outbox`` is flushed and what was published acknowledged."""
     if not pubs:
         raise RuntimeError(f"no publishers on {topics} to wait for")
     proc = subprocess.Popen(
-        [sys.executable, "-c", SUBSCRIBER, topics],
+        [sys.executable, "-c", SUBSCRIBER, topics, qos],
         stdin=subprocess.PIPE,
         stdout=subprocess.PIPE,
         stderr=subprocess.DEVNULL,
@@ -105,9 +124,16 @@ def with_listener(topics: str, pubs: list, sim, seconds: float) -> tuple[float, 
             rate, note = n / w, f"{s:.1f} sim s in {w:.1f} wall s; {cpu}"
         else:
             rate, note = float("nan"), "subscriber never matched (discovery?)"
-        out, _ = proc.communicate(timeout=10)  # closes its stdin: it prints its count and exits
+        if outbox is not None:
+            outbox.flush(10.0)
+        from rclpy.duration import Duration
+
+        for pub in pubs:
+            pub.wait_for_all_acked(Duration(seconds=10))  # at once for a best-effort listener
+        out, _ = proc.communicate(timeout=30)  # closes its stdin: it prints its count and exits
         received = out.strip().splitlines()[-1] if out.strip() else "?"
-        return rate, note + f"; listener got {received} msgs"
+        got = int(received) if received.isdigit() else -1
+        return rate, note + f"; listener got {received} msgs", got
     finally:
         if proc.poll() is None:
             proc.kill()
@@ -211,19 +237,31 @@ def main() -> int:
     )
     with_ros = rows[-1][1]
 
-    # --- a plain rclpy process on /odom and /tf (not /clock): every message is built and sent
+    # --- a plain rclpy process on /odom and /tf (not /clock): every message is built and sent. A reliable
+    # (KEEP_ALL) listener gets every message, and the simulation goes at its pace; a best-effort one keeps
+    # DDS's semantics and never slows the simulation
     odom_tf = node.ros_publishers("/odom") + node.ros_publishers("/tf")
     box = node.outbox
-    p0, d0 = box.published, box.dropped
-    rate, note = with_listener("/odom,/tf", odom_tf, sim, opts.seconds)
-    note += f"; bridge published {box.published - p0}, dropped {box.dropped - d0}" + (
-        " (lossless: the simulation waited for the publisher)" if box.lossless else " (--drop-when-behind)"
-    )
+
+    def heard(qos: str) -> tuple[float, str]:
+        p0, d0 = box.published, box.dropped
+        w0 = node.published_on("/odom") + node.published_on("/tf")
+        rate, note, got = with_listener("/odom,/tf", odom_tf, sim, opts.seconds, qos, box)
+        written = node.published_on("/odom") + node.published_on("/tf") - w0
+        note += f"; bridge published {box.published - p0}, dropped {box.dropped - d0}" + (
+            " (lossless)" if box.lossless else " (--drop-when-behind)"
+        )
+        verdict = "every one" if got == written else f"{written - got} missing"
+        return rate, note + f"; /odom + /tf written {written}, the {qos} listener got {got} ({verdict})"
+
+    rate, note = heard("reliable")
     rows.append(("gazelle + RosBridge, /odom + /tf heard", rate, note))
-    heard = rate
+    heard_rate = rate
+    rate, note = heard("best_effort")
+    rows.append(("  ... heard best effort", rate, note))
 
     # --- the same on /clock: the bridge then holds the sim back to keep /clock's resolution
-    throttled, note = with_listener("/clock", [clock_pub], sim, opts.seconds)
+    throttled, note, _ = with_listener("/clock", [clock_pub], sim, opts.seconds)
     rows.append(("gazelle + RosBridge, /clock subscribed", throttled, note))
     bridge.shutdown()
 
@@ -242,7 +280,7 @@ def main() -> int:
     print(
         f"ratios vs raw Python-loop mj_step: gazelle no-ROS {no_ros / raw:.3f},"
         f" gazelle + ROS (nobody subscribed) {with_ros / raw:.3f},"
-        f" + ROS (/odom, /tf heard) {heard / raw:.3f}, + ROS (/clock subscribed) {throttled / raw:.3f}"
+        f" + ROS (/odom, /tf heard) {heard_rate / raw:.3f}, + ROS (/clock subscribed) {throttled / raw:.3f}"
     )
     cap = (1.0 / CLOCK_HZ) / 1e-3  # MIN_CLOCK_WALL_PERIOD_SEC = 1 ms: one clock period of sim time per ms of wall time
     print(f"(the /clock-subscribed case is capped by design at {cap:g}x real time = {cap / dt:.0f} steps/s)")

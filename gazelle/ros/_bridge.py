@@ -47,6 +47,7 @@ from ..systems import (
     TransformBatch,
     UpdateInfo,
 )
+from ._acked_writer import ACK_WINDOW, AckedWriter
 from ._cdr import raw_serializer, serialize_clock, serialized_joint_states
 from ._convert import FROM_ROS, InterfaceMissing, ros_type, second_tier, to_pose_msg, to_ros, to_time
 from ._exposure import ServerRegistry
@@ -172,6 +173,8 @@ class _RosEndpoint:
     handle: Any
     node: Any
     """The node it was made on (this one, or a plugin's)."""
+    writer: AckedWriter
+    """Publishes through ``handle`` without overwriting what a reliable reader has not acknowledged."""
     users: int = 0
     lane: Lane | None = None
     """/tf_static: the one lane of the union of every robot's static transforms."""
@@ -377,16 +380,12 @@ class SimulationNode(GazeboServices):
             with self._lock:
                 entry = self._pubs.get(key)
                 if entry is None:
-                    entry = _RosEndpoint(
-                        owner.create_publisher(
-                            msg_class, topic, qos_profile(ep.qos, ep.depth), event_callbacks=_no_pub_events()
-                        ),
-                        owner,
-                    )
+                    entry = self._ros_endpoint(owner, msg_class, topic, ep)
                     self._pubs[key] = entry
                 entry.users += 1
             convert = to_ros(ep.msg_type)
             handle = entry.handle
+            writer = entry.writer
             if ep.msg_type is MsgType.TF_STATIC:
                 with self._lock:
                     if entry.lane is None:
@@ -396,7 +395,7 @@ class SimulationNode(GazeboServices):
                 static_lane = entry.lane
                 sink = lambda payload: self._publish_static(static_lane, ep, payload)
             else:
-                publish = functools.partial(_publish_converted, handle, convert, raw_serializer(ep.msg_type))
+                publish = functools.partial(_publish_converted, writer, convert, raw_serializer(ep.msg_type))
                 lane = self.outbox.lane(publish, ep.depth, ep.topic)
                 sink = lane.put
                 with self._lock:
@@ -429,6 +428,29 @@ class SimulationNode(GazeboServices):
             )
             with self._lock:
                 self._subs[id(ep)] = (sub, owner)
+
+    def _ros_endpoint(self, owner: Node, msg_class: Any, topic: str, ep: Endpoint) -> _RosEndpoint:
+        """A new rclpy publisher for ``ep`` and its :class:`AckedWriter`. A reliable volatile topic's DDS history
+        is ``ACK_WINDOW`` deep (at least its QoS depth), and the writer waits for its reliable readers'
+        acknowledgements before that history would overflow, unless the outbox drops when behind
+        (``--drop-when-behind``: the declared depth, never a wait). Latched topics are state, published once."""
+        waits = ep.qos is Qos.DEFAULT and self.outbox.lossless
+        depth = max(ep.depth, ACK_WINDOW) if waits else ep.depth
+        handle = owner.create_publisher(msg_class, topic, qos_profile(ep.qos, depth), event_callbacks=_no_pub_events())
+        outbox = self.outbox
+        writer = AckedWriter(
+            handle,
+            depth if waits else 0,
+            waiting=lambda: outbox.lossless,
+            stall_timeout=outbox.stall_timeout,
+            name=topic,
+        )
+        return _RosEndpoint(handle, owner, writer)
+
+    def published_on(self, topic: str) -> int:
+        """Messages this bridge's writers on ``topic`` have written (benches compare it with what a reader got)."""
+        with self._lock:
+            return sum(entry.writer.published for key, entry in self._pubs.items() if key[1] == topic)
 
     def take_inbound(self) -> int:
         """Hand the simulation every message its subscriptions' readers hold now, on this thread (the step
@@ -565,6 +587,7 @@ class SimulationNode(GazeboServices):
             if last:
                 del self._pubs[key]
         if last:
+            entry.writer.cancelled = True
             if entry.lane is not None:
                 entry.lane.close()
             entry.node.destroy_publisher(entry.handle)

@@ -9,8 +9,11 @@ Nothing is dropped by default: when the publisher thread falls behind (faster th
 machine) and a lane holds ``depth`` payloads, the simulation thread waits for room (backpressure), as
 Gazebo's simulation does, whose publishers run inside its step: every message the simulation produces
 is handed to DDS, in order, and what a listener receives no longer depends on the machine's load.
-Downstream, DDS's own QoS holds as ROS defines it (a KEEP_LAST reader that cannot keep up loses
-samples in DDS, and a reader that never reads never blocks a KEEP_LAST writer).
+Downstream, a reliable writer never overwrites what a reliable reader has not acknowledged: before its
+history would overflow it waits (``_acked_writer``), this thread with it, and so the simulation goes at the
+slowest reliable reader's pace. A KEEP_LAST reader that takes slower than it receives still keeps only its
+newest ``depth`` (its own QoS); best-effort readers are never waited for; a reader that acknowledges nothing
+for ``stall_timeout`` (a stopped process) is then not waited for.
 
 ``Outbox(lossless=False)`` (``gazelle sim --drop-when-behind``) is the opt-in trade: a full lane drops its
 oldest payload, as a DDS writer with KEEP_LAST history does, the simulation never waits, and

@@ -5,8 +5,11 @@ and counts what it dropped on /gazelle/dropped_messages."""
 
 from __future__ import annotations
 
+import json
 import os
 import re
+import select
+import subprocess
 import sys
 import time
 from pathlib import Path
@@ -165,3 +168,80 @@ def test_the_tests_node_hears_clock_reliably() -> None:
     finally:
         ros.close()
         domain.release()
+
+
+def _slow_reader(sim: Sim, qos: str, pause: float, env: dict[str, str] | None = None) -> subprocess.Popen[str]:
+    """A plain rclpy process on /odom that sleeps ``pause`` s in its callback (``slow_reader.py``), on the sim's
+    domain; not a process of the simulation's (those are waited for in lockstep), so nothing but DDS paces it."""
+    proc = subprocess.Popen(
+        [sys.executable, str(Path(__file__).resolve().parent / "slow_reader.py"), qos, str(pause)],
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        text=True,
+        env={**sim.env, **(env or {})},
+    )
+    assert proc.stdout is not None
+    assert proc.stdout.readline().strip() == "ready"
+    return proc
+
+
+def _stamps_up_to(proc: subprocess.Popen[str], end: float) -> list[float]:
+    """Tell the reader the last stamp to wait for; the stamps (s) it got."""
+    out, _ = proc.communicate(f"{round(end * 1e9)}\n", timeout=60)
+    return [ns * 1e-9 for ns in json.loads(out.strip().splitlines()[-1])]
+
+
+def test_a_slow_reliable_reader_gets_every_message_and_a_best_effort_one_does_not_slow_the_simulation() -> None:
+    """Issue 50 item 2: a reliable KEEP_ALL reader that holds at most 50 messages and sleeps 2 ms in its callback
+    gets every /odom message of 20 s driven at --rtf 0 (2,000 messages, written faster than it takes them):
+    gazelle's writer waits for its acknowledgements before its history would overflow, and the simulation goes
+    at the reader's pace. Before, the writer (KEEP_LAST 10, Fast DDS's 3 s heartbeat) overwrote what the
+    reader had not acknowledged. A best-effort reader sleeping 50 ms keeps DDS's
+    semantics (it loses what it cannot take) and does not slow the simulation: paced by it, 20 s of /odom would
+    take 100 s."""
+    domain = reserve_domain()
+    sim = Sim(domain_id=domain.domain_id)
+    readers: list[subprocess.Popen[str]] = []
+    try:
+        sim.spawn(SEED_XACRO, "simple_robot", pose=(0.0, 0.0, 0.07))
+        slow_be = _slow_reader(sim, "best_effort", 0.05)
+        readers.append(slow_be)
+        sim.ros.wait_until(lambda: sim.ros.node.count_subscribers("/odom") >= 1, 30, "the best-effort reader")
+        be_out = slow_be.stdout
+        assert be_out is not None
+        sim.run_until(lambda: select.select([be_out], [], [], 0)[0] != [], 5.0, "the best-effort reader's first /odom")
+        t0 = time.perf_counter()
+        end_be = sim.run_for(20.0)
+        wall_be = time.perf_counter() - t0
+        got_be = _stamps_up_to(slow_be, end_be)
+
+        # its reader holds 50 messages it has not taken: it acknowledges no more until it takes them
+        small = str(Path(__file__).resolve().parent / "fastdds_small_reader.xml")
+        reliable = _slow_reader(sim, "reliable", 0.002, {"FASTRTPS_DEFAULT_PROFILES_FILE": small})
+        readers.append(reliable)
+        sim.ros.wait_until(lambda: sim.ros.node.count_subscribers("/odom") >= 1, 30, "the reliable reader")
+        reliable_out = reliable.stdout
+        assert reliable_out is not None
+        sim.run_until(
+            lambda: select.select([reliable_out], [], [], 0)[0] != [], 5.0, "the reliable reader's first /odom"
+        )
+        start = sim.time
+        end = sim.run_for(20.0)
+        got = _stamps_up_to(reliable, end)
+    finally:
+        for proc in readers:
+            if proc.poll() is None:
+                proc.kill()
+        sim.close()
+        domain.release()
+    # every message from the first the reliable reader heard to the end of the 20 s: one each 10 ms of sim time
+    period = 0.01
+    steady = [t for t in got if t > start + period]
+    gaps = [(a, b) for a, b in zip(steady, steady[1:]) if b - a > 1.5 * period]
+    assert not gaps and steady[-1] >= end - period, (
+        f"the reliable reader lost messages: {len(gaps)} gaps, first {gaps[:3]}; last stamp {steady[-1]:.2f} of {end:.2f}"
+    )
+    assert len(steady) >= 1990, len(steady)
+    # the best-effort reader lost what it could not take, and the simulation did not wait for it
+    assert len([t for t in got_be if t > end_be - 20.0]) < 1000, len(got_be)
+    assert wall_be < 30.0, f"20 s of sim took {wall_be:.1f} s with a best-effort reader at 50 ms a message"
