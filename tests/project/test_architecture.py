@@ -458,8 +458,7 @@ def test_the_error_check_finds_a_stray_error_and_a_twin(tmp_path: Path) -> None:
 # --------------------------------------------------------------------------- one class, one file
 MIXIN_CHAINS_TO_UNDO = {
     # To be removed as each is reworked into composition (issue 53, section 2), as move_group was (a context and
-    # one capability per file); Simulation and SimulationNode are next:
-    "gazelle/sim/_simulation.py:Simulation": ("SpawningMixin",),
+    # one capability per file); SimulationNode is next:
     "gazelle/ros/_bridge.py:SimulationNode": ("GazeboServices",),
     "gazelle/ros/_simulation_interfaces.py:SimulationInterfaces": ("EntityQueries",),
     # found by this check beside those the issue names; to be removed when each is made a composition too
@@ -553,8 +552,6 @@ IMPORT_CIRCLES_TO_UNDO = {
         "gazelle/ros/_spawnables.py",
         "gazelle/ros/_world_services.py",
     ),
-    # the world swap is a part of Simulation and names it (type-only, and one constant); goes with SpawningMixin
-    ("gazelle/sim/_simulation.py", "gazelle/sim/_spawning.py", "gazelle/sim/_world_swap.py"),
     # type-only: move_group's context names the scene monitor, pipeline and execution manager it holds, and each
     # of them is given the context (MoveIt's MoveGroupContext holds them the same way); to be removed when the
     # parts take a protocol of what they use instead of the context's class
