@@ -395,11 +395,7 @@ _BUILTIN_EXCEPTIONS = frozenset(
     name for name, value in vars(builtins).items() if isinstance(value, type) and issubclass(value, BaseException)
 )
 
-ERRORS_OUTSIDE_THE_ROOT = {
-    # gazelle/ros/_gazebo_services.py is being reworked with SimulationNode (issue 53, another helper's part);
-    # to be removed when that lands: SpawnFailed then derives from SimError like every other error
-    "gazelle/ros/_gazebo_services.py:SpawnFailed",
-}
+ERRORS_OUTSIDE_THE_ROOT: set[str] = set()
 """Exception classes not yet under :class:`SimError`; each is a to-do, not a rule."""
 
 
@@ -457,11 +453,8 @@ def test_the_error_check_finds_a_stray_error_and_a_twin(tmp_path: Path) -> None:
 
 # --------------------------------------------------------------------------- one class, one file
 MIXIN_CHAINS_TO_UNDO = {
-    # To be removed as each is reworked into composition (issue 53, section 2), as move_group was (a context and
-    # one capability per file); SimulationNode is next:
-    "gazelle/ros/_bridge.py:SimulationNode": ("GazeboServices",),
-    "gazelle/ros/_simulation_interfaces.py:SimulationInterfaces": ("EntityQueries",),
-    # found by this check beside those the issue names; to be removed when each is made a composition too
+    # found by this check beside those the issue names (Simulation, SimulationNode and SimulationInterfaces are
+    # compositions now, as move_group is: a context and parts); to be removed when each is made a composition too
     "gazelle/physics/_world.py:PhysicsWorld": ("WorldState",),
     "gazelle/physics/_state.py:WorldState": ("WorldQueries",),
     "gazelle/planning/_planner.py:ArmPlanner": ("RobotScene",),
@@ -540,18 +533,6 @@ IMPORT_CIRCLES_TO_UNDO = {
     # type-only: the handles and servo plans name the world that makes them (a protocol would narrow the public
     # PerGeneration's type); to be removed when the physics package is given one
     ("gazelle/physics/_handles.py", "gazelle/physics/_servo_plan.py", "gazelle/physics/_world.py"),
-    # SimulationNode and the simulation_interfaces node are being reworked (issue 53): the parts of the standard
-    # served by classes of their own name the node that builds them (type-only)
-    (
-        "gazelle/ros/_bridge.py",
-        "gazelle/ros/_entity_bounds.py",
-        "gazelle/ros/_entity_info.py",
-        "gazelle/ros/_named_poses.py",
-        "gazelle/ros/_scene_publisher.py",
-        "gazelle/ros/_simulation_interfaces.py",
-        "gazelle/ros/_spawnables.py",
-        "gazelle/ros/_world_services.py",
-    ),
     # type-only: move_group's context names the scene monitor, pipeline and execution manager it holds, and each
     # of them is given the context (MoveIt's MoveGroupContext holds them the same way); to be removed when the
     # parts take a protocol of what they use instead of the context's class
