@@ -530,9 +530,6 @@ def test_the_mixin_chain_check_finds_a_planted_chain(tmp_path: Path) -> None:
 
 # --------------------------------------------------------------------------- no circle inside a package
 IMPORT_CIRCLES_TO_UNDO = {
-    # type-only: the handles and servo plans name the world that makes them (a protocol would narrow the public
-    # PerGeneration's type); to be removed when the physics package is given one
-    ("gazelle/physics/_handles.py", "gazelle/physics/_servo_plan.py", "gazelle/physics/_world.py"),
     # type-only: move_group's context names the scene monitor, pipeline and execution manager it holds, and each
     # of them is given the context (MoveIt's MoveGroupContext holds them the same way); to be removed when the
     # parts take a protocol of what they use instead of the context's class
