@@ -453,10 +453,9 @@ def test_the_error_check_finds_a_stray_error_and_a_twin(tmp_path: Path) -> None:
 
 # --------------------------------------------------------------------------- one class, one file
 MIXIN_CHAINS_TO_UNDO = {
-    # found by this check beside those the issue names (Simulation, SimulationNode and SimulationInterfaces are
-    # compositions now, as move_group is: a context and parts); to be removed when each is made a composition too
-    "gazelle/physics/_world.py:PhysicsWorld": ("WorldState",),
-    "gazelle/physics/_state.py:WorldState": ("WorldQueries",),
+    # found by this check beside those the issue names (Simulation, SimulationNode, SimulationInterfaces and
+    # PhysicsWorld are compositions now, as move_group is: a context and parts); to be removed when each is made a
+    # composition too
     "gazelle/planning/_planner.py:ArmPlanner": ("RobotScene",),
     "gazelle/viewer/_viewer.py:Viewer": ("ViewerOverlays",),
     "gazelle/description/_urdf.py:_Reader": ("ElementReader",),
