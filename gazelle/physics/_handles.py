@@ -5,7 +5,9 @@ command the simulation through these and never through MuJoCo: a handle knows it
 entity and element by name, and resolves MuJoCo's indices again after every recompile
 (a spawn or a delete renumbers them), so it stays valid for the entity's lifetime.
 
-A handle is used on the simulation thread only, like the world it belongs to.
+A handle is used on the simulation thread only, like the world it belongs to. It names that world as a
+:class:`CompiledWorld`, what it uses of it (:class:`~._world.PhysicsWorld` is one), so this module imports nothing
+of the world that makes the handles.
 """
 
 from __future__ import annotations
@@ -13,19 +15,62 @@ from __future__ import annotations
 import enum
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, Generic, TypeVar
+from typing import TYPE_CHECKING, Any, Generic, Protocol, TypeVar
 
 import numpy as np
 
 from ..description import Pose
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ._world import PhysicsWorld
+    import mujoco
 
+
+class CompiledWorld(Protocol):
+    """What the handles and servo plans use of the world they belong to (:class:`~._world.PhysicsWorld`): its
+    compiled model and data, the generation that numbers each compile, and the queries and writes that take MuJoCo
+    ids. A protocol, so the handles name no class of the module that makes them."""
+
+    @property
+    def generation(self) -> int: ...
+
+    @property
+    def model(self) -> mujoco.MjModel: ...
+
+    @property
+    def data(self) -> mujoco.MjData: ...
+
+    def joint_address(self, entity: str, mj_joint: str) -> tuple[int, int]: ...
+
+    def actuator_id(self, name: str) -> int: ...
+
+    def body_id(self, entity: str, link: str | None = None) -> int: ...
+
+    def body_pose(self, body_id: int) -> Pose: ...
+
+    def body_velocity(self, body_id: int) -> tuple[tuple[float, float, float], tuple[float, float, float]]: ...
+
+    def cast_rays(
+        self, origin: np.ndarray, directions: np.ndarray, exclude_body: int, max_range: float
+    ) -> tuple[np.ndarray, np.ndarray]: ...
+
+    def cast_rays_from(
+        self, body_id: int, offset: Pose, directions: np.ndarray, max_range: float
+    ) -> tuple[np.ndarray, np.ndarray]: ...
+
+    def joint_wrench(self, body_id: int, point: np.ndarray) -> tuple[np.ndarray, np.ndarray]: ...
+
+    def imu_reading(self, body_id: int, offset: Pose) -> list[float]: ...
+
+    def set_actuator_gains(self, handle: ActuatorHandle, kp: float, kv: float) -> None: ...
+
+    def set_actuator_enabled(self, handle: ActuatorHandle, enabled: bool) -> None: ...
+
+
+W = TypeVar("W", bound=CompiledWorld)
 T = TypeVar("T")
 
 
-class PerGeneration(Generic[T]):
+class PerGeneration(Generic[W, T]):
     """A value derived from the compiled model (MuJoCo ids, qpos/qvel addresses).
 
     ``get(world)`` computes it once per ``world.generation``: every recompile (a spawn,
@@ -34,12 +79,12 @@ class PerGeneration(Generic[T]):
 
     __slots__ = ("_compute", "_generation", "_value")
 
-    def __init__(self, compute: Callable[[PhysicsWorld], T]) -> None:
+    def __init__(self, compute: Callable[[W], T]) -> None:
         self._compute = compute
         self._generation = -1
         self._value: T | None = None
 
-    def get(self, world: PhysicsWorld) -> T:
+    def get(self, world: W) -> T:
         """The value for the world's current model, computed at most once per recompile."""
         value = self._value
         if self._generation != world.generation or value is None:
@@ -78,7 +123,7 @@ class JointHandle:
         """Saved by what it names (a checkpoint): found again in the world it is loaded into."""
         return (JointHandle, (self.world, self.entity, self.name))
 
-    def __init__(self, world: PhysicsWorld, entity: str, name: str) -> None:
+    def __init__(self, world: CompiledWorld, entity: str, name: str) -> None:
         """A handle on joint ``name`` of ``entity``; its MuJoCo ids are looked up again whenever the model is
         recompiled (a spawn, a delete)."""
         self.world = world
@@ -88,7 +133,7 @@ class JointHandle:
         """The joint's name in the entity's description."""
         self._ids = PerGeneration(self._resolve)
 
-    def _resolve(self, world: PhysicsWorld) -> _JointIds:
+    def _resolve(self, world: CompiledWorld) -> _JointIds:
         qadr, dadr = world.joint_address(self.entity, self.name)
         return _JointIds(qadr, dadr)
 
@@ -134,14 +179,14 @@ class JointGroup:
         """Saved by what it names (a checkpoint): found again in the world it is loaded into."""
         return (JointGroup, (self.world, self.entity, self.names))
 
-    def __init__(self, world: PhysicsWorld, entity: str, names: tuple[str, ...]) -> None:
+    def __init__(self, world: CompiledWorld, entity: str, names: tuple[str, ...]) -> None:
         """A handle on several joints of one entity, read or written with one indexed array operation."""
         self.world = world
         self.entity = entity
         self.names = names
         self._ids = PerGeneration(self._resolve)
 
-    def _resolve(self, world: PhysicsWorld) -> tuple[np.ndarray, np.ndarray]:
+    def _resolve(self, world: CompiledWorld) -> tuple[np.ndarray, np.ndarray]:
         """The joints' position and velocity addresses in the compiled model."""
         addresses = [world.joint_address(self.entity, n) for n in self.names]
         return (
@@ -228,7 +273,7 @@ class ActuatorGroup:
         """Saved by what it names (a checkpoint): found again in the world it is loaded into."""
         return (ActuatorGroup, (self.world, self.actuators))
 
-    def __init__(self, world: PhysicsWorld, actuators: tuple[ActuatorHandle, ...]) -> None:
+    def __init__(self, world: CompiledWorld, actuators: tuple[ActuatorHandle, ...]) -> None:
         self.world = world
         self.actuators = actuators
         self._ids = PerGeneration(lambda w: np.array([w.actuator_id(a.name) for a in actuators], dtype=np.intp))
@@ -248,7 +293,7 @@ class BodyHandle:
         """Saved by what it names (a checkpoint): found again in the world it is loaded into."""
         return (BodyHandle, (self.world, self.entity, self.link))
 
-    def __init__(self, world: PhysicsWorld, entity: str, link: str | None) -> None:
+    def __init__(self, world: CompiledWorld, entity: str, link: str | None) -> None:
         """A handle on a link's body (or, with ``link`` None, the entity's root), found again in each compiled
         model."""
         self.world = world

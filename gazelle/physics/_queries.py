@@ -1,13 +1,15 @@
-"""What the world answers without changing it (:class:`WorldQueries`, a part of
-:class:`~gazelle.physics.PhysicsWorld`): poses and twists of bodies and frames, ray casts against the
-collision geoms, an ideal IMU's reading, the wrench through a joint and the contacts of a link. Each brings
-the kinematics up to date first; only MuJoCo's derived fields are computed, so no query changes a
-trajectory."""
+"""What the world answers without changing it (:class:`WorldQueries`, a part :class:`~gazelle.physics.PhysicsWorld`
+owns, ``world.queries``, whose public methods the world hands on to it): poses and twists of bodies and frames,
+ray casts against the collision geoms, an ideal IMU's reading, the wrench through a joint and the contacts of a
+link. Each brings the kinematics up to date first; only MuJoCo's derived fields are computed, so no query changes
+a trajectory. The part sees the world as a :class:`QueriedWorld` (its compiled model and data, its entities), so
+it imports nothing of the module that builds it."""
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Protocol
 
 import mujoco
 import numpy as np
@@ -63,22 +65,50 @@ def _gazebo_collision_name(geom_name: str) -> str:
     return geom_name.rsplit("#", 1)[0] if "#" in geom_name else geom_name
 
 
-class WorldQueries:
-    """The read-only queries of :class:`~gazelle.physics.PhysicsWorld` (which builds the state below)."""
+class QueriedWorld(Protocol):
+    """What the queries read of the world (:class:`~gazelle.physics.PhysicsWorld` is one)."""
 
-    model: mujoco.MjModel
-    data: mujoco.MjData
-    entities: dict[str, Entity]
-    _kinematics_stale: bool
-    """Whether qpos/qvel changed since the body poses were computed (a set-state, a reset)."""
-    _offsets: dict[Pose, tuple[np.ndarray, np.ndarray, bool, bool]]
-    """Sensor offsets (in their body) -> (position, rotation matrix, at the origin, unrotated)."""
-    _imu_acc: np.ndarray
-    _imu_vel: np.ndarray
-    _imu_quat: np.ndarray
-    _imu_R: np.ndarray
-    _imu_wa: np.ndarray
-    """Scratch arrays of :meth:`imu_reading` (6, 6, 4, 3x3 and 2x3)."""
+    @property
+    def model(self) -> mujoco.MjModel: ...
+
+    @property
+    def data(self) -> mujoco.MjData: ...
+
+    @property
+    def entities(self) -> dict[str, Entity]: ...
+
+
+class WorldQueries:
+    """The read-only queries of a world (see the module docstring)."""
+
+    def __init__(self, world: QueriedWorld) -> None:
+        self._world = world
+        self.kinematics_stale = False
+        """Whether qpos/qvel changed since the body poses were computed (a block of steps, a set-state)."""
+        self._offsets: dict[Pose, tuple[np.ndarray, np.ndarray, bool, bool]] = {}
+        """Sensor offsets (in their body) -> (position, rotation matrix, at the origin, unrotated)."""
+        self._imu_acc, self._imu_vel, self._imu_quat, self._imu_R, self._imu_wa = (
+            np.empty(6),
+            np.empty(6),
+            np.empty(4),
+            np.empty((3, 3)),
+            np.empty((2, 3)),
+        )
+        """Scratch arrays of :meth:`imu_reading` (6, 6, 4, 3x3 and 2x3)."""
+
+    @property
+    def model(self) -> mujoco.MjModel:
+        """The world's compiled model (a recompile replaces it)."""
+        return self._world.model
+
+    @property
+    def data(self) -> mujoco.MjData:
+        """The world's data (a recompile replaces it)."""
+        return self._world.data
+
+    @property
+    def entities(self) -> dict[str, Entity]:
+        return self._world.entities
 
     def refresh_kinematics(self) -> None:
         """Bring body poses up to the current state (cheap when already current); for renderers."""
@@ -87,11 +117,11 @@ class WorldQueries:
     def _refresh_kinematics(self) -> None:
         """Bring body poses and velocities up to the current qpos/qvel (derived fields only:
         the next mj_step recomputes them anyway, so trajectories are unchanged)."""
-        if self._kinematics_stale:
+        if self.kinematics_stale:
             mujoco.mj_kinematics(self.model, self.data)
             mujoco.mj_comPos(self.model, self.data)
             mujoco.mj_comVel(self.model, self.data)
-            self._kinematics_stale = False
+            self.kinematics_stale = False
 
     def joint_wrench(self, body_id: int, point: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(force, torque) that the parent exerts on body ``body_id`` through the joint above it, in the

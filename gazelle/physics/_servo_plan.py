@@ -16,15 +16,11 @@ from __future__ import annotations
 
 import ctypes
 import math
-from typing import TYPE_CHECKING
 
 import numpy as np
 
 from . import _native
-from ._handles import ActuatorGroup, JointGroup, PerGeneration
-
-if TYPE_CHECKING:
-    from ._world import PhysicsWorld
+from ._handles import ActuatorGroup, CompiledWorld, JointGroup, PerGeneration
 
 
 def _f64(values: object, n: int) -> np.ndarray:
@@ -88,7 +84,7 @@ class ServoPlan:
         self._struct: _native.ServoGroupStruct | None = None
         self._struct_key: tuple[int, ...] | None = None
 
-    def _resolve(self, world: PhysicsWorld) -> tuple[np.ndarray, ...]:
+    def _resolve(self, world: CompiledWorld) -> tuple[np.ndarray, ...]:
         """The actuators' and joints' addresses in the compiled model, as the native loop takes them."""
         act = self.actuators._ids.get(self.world).astype(np.int32)
         sq, sd = (a.astype(np.int32) for a in self.servo_joints._ids.get(self.world))
@@ -214,7 +210,7 @@ class ServoPlan:
         self._struct_key = None
 
 
-def run_plans(world: PhysicsWorld, plans: list[ServoPlan], nstep: int) -> tuple[int, str | None]:
+def run_plans(world: CompiledWorld, plans: list[ServoPlan], nstep: int) -> tuple[int, str | None]:
     """Take up to ``nstep`` steps of ``world`` running ``plans``' cycles; the steps taken and, after a
     MuJoCo error, its message (the steps before it are taken)."""
     if len(plans) == 1:

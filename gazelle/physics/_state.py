@@ -1,15 +1,16 @@
-"""What writes the world's state outside its steps (:class:`WorldState`, a part of
-:class:`~gazelle.physics.PhysicsWorld`): an entity's pose and twist, a joint's position and velocity, resets,
+"""What writes the world's state outside its steps (:class:`WorldState`, a part :class:`~gazelle.physics.PhysicsWorld`
+owns, ``world.state``, whose public methods the world hands on to it): an entity's pose and twist, a joint's
+position and velocity, resets,
 the repair of a diverged state, and checkpoints (the whole of MuJoCo's data and the model's run-time
-parameters, for ``gazelle.sim``'s checkpoint and branch)."""
+parameters, for ``gazelle.sim``'s checkpoint and branch). The part sees the world as a :class:`StatefulWorld`, so
+it imports nothing of the module that builds it."""
 
 from __future__ import annotations
 
 import hashlib
 import math
 import pickle
-from collections.abc import Callable
-from typing import Any
+from typing import Any, Protocol
 
 import mujoco
 import numpy as np
@@ -20,18 +21,65 @@ from ._entities import Entity, ErrorKind, WorldError, pose_out_of_range
 from ._queries import ONE_DOF_JOINTS, WorldQueries
 
 
-class WorldState(WorldQueries):
-    """The state-writing part of :class:`~gazelle.physics.PhysicsWorld` (which builds what is declared here)."""
+class StatefulWorld(Protocol):
+    """What the state part uses of the world (:class:`~gazelle.physics.PhysicsWorld` is one): its spec, model, data
+    and entities, and its own stepping state, which a checkpoint keeps."""
 
-    spec: mujoco.MjSpec
     _overlap_steps: int
+    """Steps left in which deep overlaps are limited."""
     _deep: bool
+    """Whether the last overlap check found a deep one."""
     _actuator_gains: dict[str, tuple[np.ndarray, np.ndarray]]
-    _state_views: tuple[Any, np.ndarray, np.ndarray]
-    _forward: Callable[[], None]
-    """``mj_forward`` with the arena grown when contacts need it (PhysicsWorld's)."""
-    _watch_overlaps: Callable[[], None]
-    """Watch for deep overlaps after something was placed (PhysicsWorld's)."""
+    """Actuator name -> its gain and bias parameters as added."""
+
+    @property
+    def spec(self) -> mujoco.MjSpec: ...
+
+    @property
+    def model(self) -> mujoco.MjModel: ...
+
+    @property
+    def data(self) -> mujoco.MjData: ...
+
+    @property
+    def entities(self) -> dict[str, Entity]: ...
+
+    def _forward(self) -> None:
+        """``mj_forward`` with the arena grown when contacts need it."""
+        ...
+
+    def _watch_overlaps(self) -> None:
+        """Watch for deep overlaps after something was placed."""
+        ...
+
+
+class WorldState:
+    """The state-writing part of a world (see the module docstring); ``queries`` is the world's query part (its
+    kinematics are current after a write)."""
+
+    def __init__(self, world: StatefulWorld, queries: WorldQueries) -> None:
+        self._world = world
+        self._queries = queries
+        self._state_views: tuple[Any, np.ndarray, np.ndarray] = (None, np.zeros(0), np.zeros(0))
+        """(MjData, its qpos, its qvel): array views kept for the divergence check before every block of steps."""
+
+    @property
+    def spec(self) -> mujoco.MjSpec:
+        return self._world.spec
+
+    @property
+    def model(self) -> mujoco.MjModel:
+        """The world's compiled model (a recompile replaces it)."""
+        return self._world.model
+
+    @property
+    def data(self) -> mujoco.MjData:
+        """The world's data (a recompile replaces it)."""
+        return self._world.data
+
+    @property
+    def entities(self) -> dict[str, Entity]:
+        return self._world.entities
 
     def state_digest(self) -> str:
         """SHA-256 of the whole physics state (time, positions, velocities, actuator states, controls,
@@ -47,10 +95,10 @@ class WorldState(WorldQueries):
         state (see ``gazelle.sim`` checkpoints). Picklable."""
         return {
             "data": pickle.dumps(self.data, protocol=pickle.HIGHEST_PROTOCOL),
-            "overlap_steps": self._overlap_steps,
-            "deep": self._deep,
-            "kinematics_stale": self._kinematics_stale,
-            "actuator_gains": {k: (g.copy(), b.copy()) for k, (g, b) in self._actuator_gains.items()},
+            "overlap_steps": self._world._overlap_steps,
+            "deep": self._world._deep,
+            "kinematics_stale": self._queries.kinematics_stale,
+            "actuator_gains": {k: (g.copy(), b.copy()) for k, (g, b) in self._world._actuator_gains.items()},
             "model": self.model,
         }
 
@@ -82,10 +130,10 @@ class WorldState(WorldQueries):
         # saved run would have taken (bit for bit)
         data = pickle.loads(extras["data"])
         mujoco.mj_copyData(self.data, self.model, data)
-        self._overlap_steps = int(extras["overlap_steps"])
-        self._deep = bool(extras["deep"])
-        self._kinematics_stale = bool(extras["kinematics_stale"])
-        self._actuator_gains = dict(extras["actuator_gains"])
+        self._world._overlap_steps = int(extras["overlap_steps"])
+        self._world._deep = bool(extras["deep"])
+        self._queries.kinematics_stale = bool(extras["kinematics_stale"])
+        self._world._actuator_gains = dict(extras["actuator_gains"])
         # the gains written into the model at run time go into the spec too: the next recompile (a spawn) builds
         # the model from the spec, and would otherwise put the spawn-time gains back
         n_g, n_b = self.model.actuator_gainprm.shape[1], self.model.actuator_biasprm.shape[1]
@@ -188,10 +236,10 @@ class WorldState(WorldQueries):
             # itself (body_pos/body_quat), and it cannot move, so a twist is refused
             if any(linear) or any(angular):
                 raise WorldError(ErrorKind.INCORRECT_STATE, f"entity '{entity}' is static; it cannot have a twist")
-            bid = self.body_id(entity)
+            bid = self._queries.body_id(entity)
             self.model.body_pos[bid] = pose.position
             self.model.body_quat[bid] = [v / qn for v in pose.orientation]
-            self._forward()
+            self._world._forward()
             return
         jid = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, e.built.free_joint)
         a, v = self.model.jnt_qposadr[jid], self.model.jnt_dofadr[jid]
@@ -204,8 +252,8 @@ class WorldState(WorldQueries):
         self.data.qvel[v : v + 3] = linear
         # free joint angular velocity is in the body frame
         self.data.qvel[v + 3 : v + 6] = quat_rotate(quat_conj(q), angular)
-        self._watch_overlaps()
-        self._forward()
+        self._world._watch_overlaps()
+        self._world._forward()
 
     def joint_address(self, entity: str, mj_joint: str) -> tuple[int, int]:
         """(qposadr, dofadr) of a MuJoCo joint of an entity."""
@@ -244,8 +292,8 @@ class WorldState(WorldQueries):
             self.data.qpos[self.model.jnt_qposadr[jid]] = position
         if velocity is not None:
             self.data.qvel[self.model.jnt_dofadr[jid]] = velocity
-        self._forward()
-        self._kinematics_stale = False
+        self._world._forward()
+        self._queries.kinematics_stale = False
 
     def actuator_id(self, name: str) -> int:
         """MuJoCo id of an actuator by its name (-1 when absent)."""
@@ -261,8 +309,8 @@ class WorldState(WorldQueries):
         for e in self.entities.values():
             if e.built.free_joint:
                 self.set_entity_state(e.name, self._spawn_root_pose(e))
-        self._watch_overlaps()
-        self._forward()
+        self._world._watch_overlaps()
+        self._world._forward()
 
     def _spawn_root_pose(self, e: Entity) -> Pose:
         """Where the entity's root link was placed when it was added: its model's world pose times the

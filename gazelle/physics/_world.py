@@ -1,14 +1,16 @@
 """The simulated world: a MuJoCo model and data built from description objects.
 
 ``PhysicsWorld`` is not thread-safe by itself; :class:`gazelle.sim.Simulation` owns one and serialises
-every access through its command queue. Its parts, each a layer of the class:
+every access through its command queue. It owns two parts, and hands their public methods on to them (one line
+each, at the end of the class), so a caller asks the world:
 
-* ``_queries.py`` (:class:`WorldQueries`): what it answers without changing anything: poses, rays, IMU,
-  the wrench through a joint, contacts;
-* ``_state.py`` (:class:`WorldState`): what writes the state outside the steps: set-state, resets, the
-  repair of a diverged state, checkpoints;
+* ``_queries.py`` (:class:`WorldQueries`, ``world.queries``): what it answers without changing anything: poses,
+  rays, IMU, the wrench through a joint, contacts;
+* ``_state.py`` (:class:`WorldState`, ``world.state``): what writes the state outside the steps: set-state,
+  resets, the repair of a diverged state, checkpoints;
 * here: building (spawn in two steps, remove, actuators, contact tweaks) and stepping (blocks of steps,
-  servo plans, deep overlaps).
+  servo plans, deep overlaps). What it says of a compiled entity is in ``_reports.py``, its lights and
+  background in ``_lights.py``.
 
 The entities, the errors and the rules of a name and a pose are in ``_entities.py``.
 """
@@ -17,13 +19,13 @@ from __future__ import annotations
 
 import logging
 import math
-from collections.abc import Callable, Container
+from collections.abc import Callable, Container, Sequence
 from typing import Any
 
 import mujoco
 import numpy as np
 
-from ..description import Light, Model, Pose, World, rotation_matrix
+from ..description import Model, Pose, World
 from ._bodies import add_model, add_visuals
 from ._builder import (
     JOINT_ARMATURE,
@@ -33,9 +35,9 @@ from ._builder import (
     scoped,
 )
 from ._contact_pairs import POINT_HALF_LENGTH, PROXY_SUFFIX, ContactProxy, sync_contact_pairs
-from ._convex import cache_dir
 from ._entities import (
     Entity,
+    EntityState,
     ErrorKind,
     PhysicsOverload,
     StagedRequest,
@@ -46,8 +48,10 @@ from ._entities import (
 from ._entities import checked_placement as _checked_placement
 from ._entities import no_joint_message as _no_joint_message
 from ._handles import ActuatorGroup, ActuatorHandle, ActuatorKind, BodyHandle, JointGroup, JointHandle
-from ._queries import ONE_DOF_JOINTS
+from ._lights import add_light, background_of
+from ._queries import ONE_DOF_JOINTS, ContactPoint, WorldQueries
 from ._render import OffscreenRenderer
+from ._reports import report_decomposed, report_unsimulated
 from ._servo_plan import ServoPlan, run_plans
 from ._state import WorldState
 
@@ -69,8 +73,9 @@ MAX_ARENA_BYTES = 1 << 30
 """The most MuJoCo arena (contacts, constraints, solver scratch) the world may grow to: 1 GiB."""
 
 
-class PhysicsWorld(WorldState):
-    """MuJoCo model + data, with spawn and delete while running."""
+class PhysicsWorld:
+    """MuJoCo model + data, with spawn and delete while running; its queries and state writes are its parts'
+    (:attr:`queries`, :attr:`state`)."""
 
     def __init__(self, world: World, *, timestep_sec: float | None = None, visual_geoms: bool = False):
         """
@@ -95,22 +100,17 @@ class PhysicsWorld(WorldState):
         opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_AUTORESET)
         self.spec.compiler.degree = False
         for light in world.lights:
-            self._add_light(light)
-        self._add_background(world)
+            add_light(self.spec, light)
+        self.background = background_of(world)
+        """The cameras' background, 8-bit RGB."""
         self.entities: dict[str, Entity] = {}
         self.generation = 0
         """Bumped at every recompile: indices cached against an older generation are stale."""
         self._before_compile: list[Callable[[], None]] = []
-        self._kinematics_stale = False
-        self._imu_acc, self._imu_vel, self._imu_quat, self._imu_R, self._imu_wa = (
-            np.empty(6),
-            np.empty(6),
-            np.empty(4),
-            np.empty((3, 3)),
-            np.empty((2, 3)),
-        )
-        self._offsets: dict[Pose, tuple[np.ndarray, np.ndarray, bool, bool]] = {}
-        """Sensor offsets (in their body) -> (position, rotation matrix, at the origin, unrotated)."""
+        self.queries = WorldQueries(self)
+        """What the world answers without changing it (poses, rays, IMU, wrenches, contacts)."""
+        self.state = WorldState(self, self.queries)
+        """What writes the world's state outside its steps (set-state, resets, divergence, checkpoints)."""
         self._actuator_gains: dict[str, tuple[np.ndarray, np.ndarray]] = {}
         """Actuator name -> its gain and bias parameters as added (see :meth:`set_actuator_enabled`)."""
         self._overlap_steps = 0
@@ -128,8 +128,6 @@ class PhysicsWorld(WorldState):
         self.model: mujoco.MjModel = self.spec.compile()
         self._timestep = float(self.model.opt.timestep)
         self.data = mujoco.MjData(self.model)
-        self._state_views: tuple[Any, np.ndarray, np.ndarray] = (None, np.zeros(0), np.zeros(0))
-        """(MjData, its qpos, its qvel): array views kept for the divergence check before every block of steps."""
 
     # ------------------------------------------------------------------ building
     def _forward(self) -> None:
@@ -240,8 +238,8 @@ class PhysicsWorld(WorldState):
         for e in staged:
             e.generation_added = self.generation
             self.entities[e.name] = e
-            self._report_unsimulated(e)
-            self._report_decomposed(e)
+            report_unsimulated(e, self._reported)
+            report_decomposed(e, self._reported)
         self._watch_overlaps()
         try:
             self._forward()
@@ -260,45 +258,6 @@ class PhysicsWorld(WorldState):
         entity = self.stage(model, name=name, X_WM=X_WM, namespace=namespace, spawned=spawned)
         self.commit([entity])
         return entity
-
-    def _report_decomposed(self, entity: Entity) -> None:
-        """Say once per mesh file what was done to its non-convex collision mesh, and what it cost."""
-        for path, parts, seconds, source in entity.built.decomposed:
-            key = (path, ("decomposed",))
-            if key in self._reported:
-                continue
-            self._reported[key] = 1
-            if source == "triangles":  # a static mesh without parts: _convex said so when it made them
-                continue
-            how = f"in {seconds:.2f} s" if source == "computed" else f"from the {source}"
-            _log.info(
-                f"'{entity.name}': collision mesh {path} is not convex: it collides as {parts} convex parts "
-                f"(CoACD, {how}; cache: {cache_dir()})"
-            )
-
-    def _report_unsimulated(self, entity: Entity) -> None:
-        """One warning per model file (or string) for the contact parameters MuJoCo cannot honour,
-        naming them all with their places; the same file spawned again is not reported again
-        (32 chess pieces made 100 lines)."""
-        params = entity.built.unsimulated
-        if not params:
-            return
-        source = entity.model.source_file
-        origin = source if source and not source.startswith("<") else f"{source}:{entity.model.name}"
-        key = (origin, tuple(sorted(params)))
-        if key in self._reported:
-            self._reported[key] += 1
-            return
-        self._reported[key] = 1
-        places = sorted({w for where in params.values() for w in where})
-        shown = ", ".join(places[:3]) + (f" and {len(places) - 3} more" if len(places) > 3 else "")
-        names = ", ".join(f"<{p}>" for p in sorted(params))
-        source = f" ({entity.model.source_file})" if entity.model.source_file else ""
-        _log.warning(
-            f"'{entity.name}'{source}: surface {names} not simulated (no MuJoCo counterpart, or read only by an "
-            f"engine other than Gazebo's defaults; see docs/contact_parameters.md), on {shown}; later spawns of "
-            "this model are not reported again"
-        )
 
     def _remove_elements(self, name: str) -> None:
         """Delete every spec element of entity ``name`` (by its name prefix): actuators, equalities, contact
@@ -540,7 +499,7 @@ class PhysicsWorld(WorldState):
         if plans:
             n = min(n, min(p.remaining for p in plans))
         if not self._overlap_steps and self._held_dofs() is None:  # the usual case: one MuJoCo call
-            self._kinematics_stale = True
+            self.queries.kinematics_stale = True
             return self._steps(n, plans)
         taken = 0
         while taken < n:
@@ -595,7 +554,7 @@ class PhysicsWorld(WorldState):
             self.data.qpos[qadr] = q0 + v0 * self.model.opt.timestep
         # mj_step computes kinematics *before* it integrates, so xpos/xquat/cvel now describe
         # the previous step's state; refresh them lazily, on the first query
-        self._kinematics_stale = True
+        self.queries.kinematics_stale = True
         if self._overlap_steps:  # only for a while after something was placed: costs nothing in steady state
             self._overlap_steps = max(0, self._overlap_steps - k)
             # every step while something is deep in, else every OVERLAP_CHECK_EVERY steps (~2 µs a check)
@@ -694,42 +653,6 @@ class PhysicsWorld(WorldState):
                 if spin > MAX_CORRECTING_SPIN:
                     w *= MAX_CORRECTING_SPIN / spin
 
-    def _add_background(self, world: World) -> None:
-        """What cameras see where nothing is drawn (:attr:`background`): the world's ``<scene>
-        <background>`` (SDFormat's default 0.7 grey), or the gz-sim Sensors system's ``<background_color>``,
-        which wins over it, as gz-sim's sensors render (``src/systems/sensors/Sensors.cc``:
-        ``background_color``, else ``src/rendering/RenderUtil.cc``: ``scene->SetBackgroundColor(
-        scene.Background())``)."""
-        colour = world.scene.background[:3]
-        for plugin in world.plugins:
-            if "sensors" not in (plugin.filename or "").lower() and not plugin.name.endswith("::Sensors"):
-                continue
-            el = plugin.config.find("background_color")
-            try:
-                values = [float(v) for v in (el.text or "").split()] if el is not None else []
-            except ValueError:
-                values = []
-            if len(values) in (3, 4):
-                colour = (values[0], values[1], values[2])
-        self.background = tuple(int(round(255 * min(max(float(c), 0.0), 1.0))) for c in colour)
-        """The cameras' background, 8-bit RGB."""
-
-    def _add_light(self, light: Light) -> None:
-        """A world light for cameras (its direction is in the light's frame, as SDF gives it)."""
-        kinds = {"directional": mujoco.mjtLightType.mjLIGHT_DIRECTIONAL, "spot": mujoco.mjtLightType.mjLIGHT_SPOT}
-        R = rotation_matrix(light.pose.orientation)
-        direction = R @ np.asarray(light.direction, dtype=float)
-        n = float(np.linalg.norm(direction))
-        self.spec.worldbody.add_light(
-            name=f"light::{light.name}",
-            type=kinds.get(light.type, mujoco.mjtLightType.mjLIGHT_POINT),
-            pos=list(light.pose.position),
-            dir=list(direction / n) if n > 0 else [0.0, 0.0, -1.0],
-            diffuse=list(light.diffuse[:3]),
-            specular=list(light.specular[:3]),
-            castshadow=bool(light.cast_shadows),
-        )
-
     def offscreen_renderer(self, width: int, height: int) -> OffscreenRenderer:
         """A renderer of this world's images (create and use it on the simulation thread)."""
         return OffscreenRenderer(self, width, height)
@@ -747,3 +670,123 @@ class PhysicsWorld(WorldState):
             taken.add(it.name)
             out.append(entity)
         return out
+
+    # ------------------------------------------------------------------ queries (the WorldQueries part's)
+    def refresh_kinematics(self) -> None:
+        """See :meth:`WorldQueries.refresh_kinematics`."""
+        self.queries.refresh_kinematics()
+
+    def joint_wrench(self, body_id: int, point: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """See :meth:`WorldQueries.joint_wrench`."""
+        return self.queries.joint_wrench(body_id, point)
+
+    def collision_geoms(self, entity: str, link: str, collision: str | None = None) -> frozenset[int]:
+        """See :meth:`WorldQueries.collision_geoms`."""
+        return self.queries.collision_geoms(entity, link, collision)
+
+    def contacts_of(self, geoms: frozenset[int]) -> list[ContactPoint]:
+        """See :meth:`WorldQueries.contacts_of`."""
+        return self.queries.contacts_of(geoms)
+
+    def body_id(self, entity: str, link: str | None = None) -> int:
+        """See :meth:`WorldQueries.body_id`."""
+        return self.queries.body_id(entity, link)
+
+    def body_pose(self, body_id: int) -> Pose:
+        """See :meth:`WorldQueries.body_pose`."""
+        return self.queries.body_pose(body_id)
+
+    def body_poses(self, body_ids: Sequence[int] | np.ndarray) -> np.ndarray:
+        """See :meth:`WorldQueries.body_poses`."""
+        return self.queries.body_poses(body_ids)
+
+    def link_poses_along(
+        self, entity: str, link: str, joints: Sequence[str], positions: Sequence[Sequence[float]]
+    ) -> list[Pose]:
+        """See :meth:`WorldQueries.link_poses_along`."""
+        return self.queries.link_poses_along(entity, link, joints, positions)
+
+    def body_velocity(self, body_id: int) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
+        """See :meth:`WorldQueries.body_velocity`."""
+        return self.queries.body_velocity(body_id)
+
+    def cast_rays(
+        self, origin: np.ndarray, directions: np.ndarray, exclude_body: int, max_range: float
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """See :meth:`WorldQueries.cast_rays`."""
+        return self.queries.cast_rays(origin, directions, exclude_body, max_range)
+
+    def cast_rays_from(
+        self, body_id: int, offset: Pose, directions: np.ndarray, max_range: float
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """See :meth:`WorldQueries.cast_rays_from`."""
+        return self.queries.cast_rays_from(body_id, offset, directions, max_range)
+
+    def imu_reading(self, body_id: int, offset: Pose) -> list[float]:
+        """See :meth:`WorldQueries.imu_reading`."""
+        return self.queries.imu_reading(body_id, offset)
+
+    def frame_pose(self, frame: str) -> Pose:
+        """See :meth:`WorldQueries.frame_pose`."""
+        return self.queries.frame_pose(frame)
+
+    def entity_state(self, entity: str, link: str | None = None) -> EntityState:
+        """See :meth:`WorldQueries.entity_state`."""
+        return self.queries.entity_state(entity, link)
+
+    # ------------------------------------------------------------------ state (the WorldState part's)
+    def state_digest(self) -> str:
+        """See :meth:`WorldState.state_digest`."""
+        return self.state.state_digest()
+
+    def checkpoint_extras(self) -> dict[str, object]:
+        """See :meth:`WorldState.checkpoint_extras`."""
+        return self.state.checkpoint_extras()
+
+    def restore_checkpoint_extras(self, extras: dict[str, Any]) -> None:
+        """See :meth:`WorldState.restore_checkpoint_extras`."""
+        self.state.restore_checkpoint_extras(extras)
+
+    def same_structure(self, extras: dict[str, Any]) -> bool:
+        """See :meth:`WorldState.same_structure`."""
+        return self.state.same_structure(extras)
+
+    def recover_divergence(self) -> list[str] | None:
+        """See :meth:`WorldState.recover_divergence`."""
+        return self.state.recover_divergence()
+
+    def diverged_entities(self) -> list[str]:
+        """See :meth:`WorldState.diverged_entities`."""
+        return self.state.diverged_entities()
+
+    def set_entity_state(
+        self,
+        entity: str,
+        pose: Pose,
+        linear: tuple[float, float, float] = (0.0, 0.0, 0.0),
+        angular: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    ) -> None:
+        """See :meth:`WorldState.set_entity_state`."""
+        self.state.set_entity_state(entity, pose, linear, angular)
+
+    def joint_address(self, entity: str, mj_joint: str) -> tuple[int, int]:
+        """See :meth:`WorldState.joint_address`."""
+        return self.state.joint_address(entity, mj_joint)
+
+    def set_joint_state(
+        self, entity: str, joint: str, position: float | None = None, velocity: float | None = None
+    ) -> None:
+        """See :meth:`WorldState.set_joint_state`."""
+        self.state.set_joint_state(entity, joint, position, velocity)
+
+    def actuator_id(self, name: str) -> int:
+        """See :meth:`WorldState.actuator_id`."""
+        return self.state.actuator_id(name)
+
+    def reset_time(self) -> None:
+        """See :meth:`WorldState.reset_time`."""
+        self.state.reset_time()
+
+    def reset_state(self) -> None:
+        """See :meth:`WorldState.reset_state`."""
+        self.state.reset_state()

@@ -1,8 +1,8 @@
 """The ROS 2 side of a running simulation: /clock, services, and every system's topics.
 
 The node is called ``gazelle``. The classic gazebo_ros services live at the root
-(``/spawn_entity``, ``/delete_entity``, ...) as gazebo_ros had them (``_gazebo_services.py``, a layer of
-the node, with spawning from XML); simulation_interfaces' under ``~/`` (``_simulation_interfaces.py``).
+(``/spawn_entity``, ``/delete_entity``, ...) as gazebo_ros had them (``_gazebo_services.py``, a part the
+node owns, with spawning from XML); simulation_interfaces' under ``~/`` (``_simulation_interfaces.py``, another).
 Service callbacks run on a multi-threaded executor and hand the world work to
 the simulation thread (:meth:`Simulation.call`), so a request never races a
 physics step and a slow request never blocks the others.
@@ -57,6 +57,8 @@ from ._names import gz_topic_on_ros
 from ._outbox import Lane, Outbox
 from ._plugin_nodes import PluginNodes
 from ._signals import spin_until_stopped
+from ._simulation_interfaces import SimulationInterfaces
+from ._subscribed import Subscribed
 
 
 def qos_profile(qos: Qos, depth: int) -> QoSProfile:
@@ -142,30 +144,6 @@ def _no_sub_events() -> SubscriptionEventCallbacks:
     return SubscriptionEventCallbacks(use_default_callbacks=False)
 
 
-class _Subscribed:
-    """Whether an rclpy publisher has subscribers, asked of rclpy at most every ``refresh_sec`` of wall
-    time: the simulation asks before building each message (thousands of times a second faster than
-    real time), and a subscriber that just matched waits at most that long (far less than discovery)."""
-
-    __slots__ = ("_handle", "_refresh", "_until", "_value")
-
-    def __init__(self, handle: Any, refresh_sec: float = 0.02):
-        """Whether an rclpy publisher has subscribers, asked again at most every ``refresh_sec`` (the count is a
-        graph query, too slow to ask every step)."""
-        self._handle = handle
-        self._refresh = refresh_sec
-        self._until = -math.inf
-        self._value = False
-
-    def __call__(self) -> bool:
-        """The publisher's subscriber count is above zero (as of the last refresh)."""
-        now = time.monotonic()
-        if now >= self._until:
-            self._value = self._handle.get_subscription_count() > 0
-            self._until = now + self._refresh
-        return self._value
-
-
 @dataclass
 class _RosEndpoint:
     """One rclpy publisher, shared by every bus endpoint of one node with the same topic."""
@@ -180,11 +158,9 @@ class _RosEndpoint:
     """/tf_static: the one lane of the union of every robot's static transforms."""
 
 
-class SimulationNode(GazeboServices):
-    """The simulation's ROS 2 node."""
-
-    simulation_interfaces: Any = None
-    """The simulation_interfaces services and action (``_simulation_interfaces.register`` sets it)."""
+class SimulationNode(Node):
+    """The simulation's ROS 2 node: it mirrors the bus and publishes /clock itself, and owns the parts that serve
+    on it (:attr:`gazebo`, :attr:`simulation_interfaces`), each registering its own services."""
 
     def __init__(
         self,
@@ -217,9 +193,6 @@ class SimulationNode(GazeboServices):
             self._count_dropped()
         self._lanes: dict[int, Lane] = {}
         """id(publisher endpoint) -> its lane in the outbox."""
-        self._watched: dict[str, tuple[str, float]] = {}
-        """Entity -> (its description topic, until when): see :meth:`_watch_for_user_publishers`."""
-        self.create_timer(0.5, self._watch_for_user_publishers, callback_group=self._cb)
         self._managers: dict[str, Any] = {}
         """Entity -> the node of its controller manager (see ``_control``)."""
         self._controller_nodes: dict[int, Any] = {}
@@ -231,12 +204,12 @@ class SimulationNode(GazeboServices):
         """gazebo_ros plugins' own nodes (``/differential_drive``)."""
         self._clock_pub = self.create_publisher(Clock, "/clock", CLOCK_QOS)
         clock_pub = self._clock_pub
-        self._clock_heard = _Subscribed(clock_pub)
+        self._clock_heard = Subscribed(clock_pub)
         self._last_clock_wall = -math.inf
-        self._srv = self._serve_gazebo_services()
-        from ._simulation_interfaces import register  # simulation_interfaces services under ~/
-
-        register(self)
+        self.gazebo = GazeboServices(self, sim, self._cb)
+        """gazebo_ros's services at the root (``/spawn_entity``, ...) and spawning from XML."""
+        self.simulation_interfaces = SimulationInterfaces(self, sim, self.publish_clock, self.take_inbound)
+        """simulation_interfaces' services and action under ``~/`` (``/gazelle/spawn_entity``, ...)."""
         # /clock at its rate (held back while listened to: see _on_step); the runtime steps inside
         # MuJoCo between two clock periods
         sim.add_step_listener(self._on_step, clock_rate_hz)
@@ -273,7 +246,7 @@ class SimulationNode(GazeboServices):
         """/model_states (gazebo_ros's), at MODEL_STATES_RATE_HZ of sim time, through a keep-last lane."""
         self._model_states_pub = self.create_publisher(ModelStates, "/model_states", MODEL_STATES_QOS)
         states_pub = self._model_states_pub
-        self._model_states_heard = _Subscribed(states_pub)
+        self._model_states_heard = Subscribed(states_pub)
         self._model_states_lane = self.outbox.lane(
             lambda states: states_pub.publish(model_states_msg(states)), 1, "/model_states", keep_last=True
         )
@@ -404,7 +377,7 @@ class SimulationNode(GazeboServices):
                 self._sinks[id(ep)] = sink
             # latched topics always publish (late joiners get the last one); the others only while
             # someone in ROS subscribes, so nothing is built for nobody
-            wanted = None if ep.qos is Qos.LATCHED else _Subscribed(handle)
+            wanted = None if ep.qos is Qos.LATCHED else Subscribed(handle)
             # a block of payloads (a planned block's joint states) goes to the lane whole: its messages
             # are built on the publisher thread
             ep.add_sink(sink, wanted, blocks=ep.msg_type is not MsgType.TF_STATIC)
@@ -608,9 +581,7 @@ class SimulationNode(GazeboServices):
         # the simulate_steps action server holds the node's handle: left alive, a half-destroyed /gazelle
         # (its action, /rosout and type description only) stayed in the graph as long as the process
         # lived, and `ros2 node info /gazelle` described it instead of a running server's node
-        interfaces = self.simulation_interfaces
-        if interfaces is not None:
-            interfaces.destroy()
+        self.simulation_interfaces.destroy()
         super().destroy_node()
 
 
@@ -659,14 +630,12 @@ class RosBridge:
     def alive(self) -> bool:
         """Whether the executor threads are serving: the bridge's own and StepSimulation's (False after a
         crash of either, or shutdown)."""
-        interfaces = self.node.simulation_interfaces
-        return self._thread.is_alive() and (interfaces is None or interfaces.stepping.alive)
+        return self._thread.is_alive() and self.node.simulation_interfaces.stepping.alive
 
     @property
     def failure(self) -> BaseException | None:
         """What ended an executor thread, if one died (the server then exits non-zero)."""
-        interfaces = self.node.simulation_interfaces
-        return self._failure or (interfaces.stepping.failure if interfaces is not None else None)
+        return self._failure or self.node.simulation_interfaces.stepping.failure
 
     def _spin(self) -> None:
         """Serve callbacks until shutdown (:func:`spin_until_stopped`); a crash is logged with its traceback

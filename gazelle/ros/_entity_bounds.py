@@ -14,26 +14,21 @@ from simulation_interfaces.msg import Bounds, SimulatorFeatures
 from simulation_interfaces.srv import GetEntityBounds
 
 from ..physics import entity_box
-from ._replies import guarded_service, serve
 from ._si_results import _attempt
 
 if TYPE_CHECKING:
-    from ._simulation_interfaces import SimulationInterfaces
+    from ._si_context import InterfacesContext
 
 
 class EntityBoundsService:
-    """``~/get_entity_bounds``, registered on the node of ``si``."""
+    """``~/get_entity_bounds``, a part of simulation_interfaces registered on the context's node."""
 
     FEATURES = (SimulatorFeatures.ENTITY_BOUNDS,)
 
-    def __init__(self, si: SimulationInterfaces):
-        """Serve GetEntityBounds beside ``si``'s services (``si.services`` holds it, so ``si.destroy`` removes it)."""
-        self.sim = si.sim
-        si.services.append(
-            serve(
-                si.node, GetEntityBounds, "~/get_entity_bounds", guarded_service("get_entity_bounds", self.get), si.cb
-            )
-        )
+    def __init__(self, context: InterfacesContext):
+        """Serve GetEntityBounds (``context.services`` holds it, so ``context.destroy`` removes it)."""
+        self.sim = context.sim
+        context.serve(GetEntityBounds, "get_entity_bounds", self.get)
 
     def get(self, req: GetEntityBounds.Request, res: GetEntityBounds.Response) -> Any:
         """GetEntityBounds: the entity's collision box in the world frame (RESULT_NOT_FOUND for no such entity)."""

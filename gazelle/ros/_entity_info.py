@@ -13,27 +13,24 @@ from simulation_interfaces.srv import SetEntityInfo
 
 from ..physics import ErrorKind, WorldError
 from ._entity_filters import CATEGORY_NAMES, checked_tags
-from ._replies import guarded_service, serve
 from ._si_results import _attempt, _Refused
 
 if TYPE_CHECKING:
-    from ._simulation_interfaces import SimulationInterfaces
+    from ._si_context import InterfacesContext
 
 MAX_DESCRIPTION_CHARS = 10_000
 """The longest description an entity may be given."""
 
 
 class EntityInfoSetter:
-    """``~/set_entity_info``, registered on the node of ``si``."""
+    """``~/set_entity_info``, a part of simulation_interfaces registered on the context's node."""
 
     FEATURES = (SimulatorFeatures.ENTITY_INFO_SETTING,)
 
-    def __init__(self, si: SimulationInterfaces):
-        """Serve SetEntityInfo beside ``si``'s services (``si.services`` holds it, so ``si.destroy`` removes it)."""
-        self.sim = si.sim
-        si.services.append(
-            serve(si.node, SetEntityInfo, "~/set_entity_info", guarded_service("set_entity_info", self.set), si.cb)
-        )
+    def __init__(self, context: InterfacesContext):
+        """Serve SetEntityInfo (``context.services`` holds it, so ``context.destroy`` removes it)."""
+        self.sim = context.sim
+        context.serve(SetEntityInfo, "set_entity_info", self.set)
 
     def set(self, req: SetEntityInfo.Request, res: SetEntityInfo.Response) -> Any:
         """SetEntityInfo: the entity's category, description and tags become the request's."""

@@ -1,5 +1,5 @@
-"""simulation_interfaces' entity queries and set-state (:class:`EntityQueries`, a part of
-:class:`~._simulation_interfaces.SimulationInterfaces`): GetEntities, GetEntityState, GetEntitiesStates,
+"""simulation_interfaces' entity queries and set-state (:class:`EntityQueries`, a part of simulation_interfaces
+that registers its own services on the context's node): GetEntities, GetEntityState, GetEntitiesStates,
 SetEntityState and GetEntityInfo, with the name filters (Python regular expressions matched in a bounded helper
 process) and the entity categories; see ``_simulation_interfaces.py`` for the decisions."""
 
@@ -12,6 +12,7 @@ import regex
 from simulation_interfaces.msg import (
     EntityState,
     Result,
+    SimulatorFeatures,
 )
 from simulation_interfaces.srv import (
     GetEntities,
@@ -32,9 +33,10 @@ from ..physics import WORLD_FRAMES, ErrorKind, WorldError, overlapping
 from ._convert import from_pose_msg, to_pose_msg, to_time
 from ._entity_filters import CATEGORY_NAMES, EntityFilter, category_of
 from ._si_results import _attempt, _finite, _Refused, _result
+from ._spawn_preamble import SpawnFailed, frame_in_world
 
 if TYPE_CHECKING:
-    from ..sim import Simulation
+    from ._si_context import InterfacesContext
 
 
 FILTER_TIME_LIMIT_SEC = 0.2
@@ -115,19 +117,38 @@ def _matching(source: str | None, names: list[str]) -> list[str]:
 
 
 class EntityQueries:
-    """The entity queries of :class:`~._simulation_interfaces.SimulationInterfaces` (which builds ``sim``)."""
+    """``~/get_entities``, ``~/get_entity_state``, ``~/get_entities_states``, ``~/set_entity_state`` and
+    ``~/get_entity_info``: a part of simulation_interfaces registered on the context's node."""
 
-    sim: Simulation
+    FEATURES = (
+        SimulatorFeatures.ENTITY_CATEGORIES,
+        SimulatorFeatures.ENTITY_STATE_GETTING,
+        SimulatorFeatures.ENTITY_STATE_SETTING,
+        SimulatorFeatures.ENTITY_INFO_GETTING,
+        SimulatorFeatures.ENTITY_TAGS,
+        SimulatorFeatures.ENTITY_BOUNDS_BOX,
+    )
+    """What these serve (the entity filters' tags and boxes included), added to GetSimulatorFeatures' list."""
+
+    def __init__(self, context: InterfacesContext):
+        """Serve the five (``context.services`` holds them, so ``context.destroy`` removes them)."""
+        self.sim = context.sim
+        for srv_type, name, fn in (
+            (GetEntities, "get_entities", self.get_entities),
+            (GetEntityState, "get_entity_state", self.get_entity_state),
+            (GetEntitiesStates, "get_entities_states", self.get_entities_states),
+            (SetEntityState, "set_entity_state", self.set_entity_state),
+            (GetEntityInfo, "get_entity_info", self.get_entity_info),
+        ):
+            context.serve(srv_type, name, fn)
 
     def _frame_pose(self, frame: str, field_name: str) -> Pose:
         """The world pose of a request's reference frame (an entity, or ``entity::link``); RESULT_OPERATION_FAILED
         naming the request field when there is no such frame."""
         try:
-            return self.sim.call(lambda: self.sim.world.frame_pose(frame))
-        except WorldError:
-            raise _Refused(
-                Result.RESULT_OPERATION_FAILED, f"{field_name} '{frame}' not found: no such entity or entity::link"
-            ) from None
+            return frame_in_world(self.sim, frame, field_name)
+        except SpawnFailed as err:
+            raise _Refused(Result.RESULT_OPERATION_FAILED, str(err)) from None
 
     def _select(self, filters: Any) -> list[str]:
         """The names of the entities that pass a request's filters: categories and tags on the sim thread (cheap),

@@ -1,13 +1,12 @@
-"""Spawning from XML and gazebo_ros's services (:class:`GazeboServices`, a layer of the simulation's node,
-``SimulationNode`` in ``_bridge.py``): ``/spawn_entity``, ``/delete_entity``, ``/get_entity_state``,
-``/set_entity_state``, ``/get_model_list``, pause, unpause and the two resets at the root as gazebo_ros
-(ROS 2) serves them, and ROS 1's ``/gazebo/...`` names that older spawners call; the XML a request
-carries is data (parsed, never expanded), and a refused spawn leaves the world as it was."""
+"""Spawning from XML and gazebo_ros's services (:class:`GazeboServices`, a part the simulation's node,
+``SimulationNode`` in ``_bridge.py``, owns; it registers its own services on the node): ``/spawn_entity``,
+``/delete_entity``, ``/get_entity_state``, ``/set_entity_state``, ``/get_model_list``, pause, unpause and the two
+resets at the root as gazebo_ros (ROS 2) serves them, and ROS 1's ``/gazebo/...`` names that older spawners call;
+the XML a request carries is data (parsed, never expanded: ``_spawn_preamble.py``, shared with
+simulation_interfaces' spawns), and a refused spawn leaves the world as it was."""
 
 from __future__ import annotations
 
-import enum
-import math
 import threading
 import time
 from typing import Any
@@ -25,8 +24,8 @@ from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.node import Node
 from std_srvs.srv import Empty
 
-from ..description import Model, ModelLoadError, Pose, Vec3, World, load_string, quat_conj, quat_rotate, reply_text
-from ..physics import WORLD_FRAMES, EntityState, ErrorKind, WorldError, pose_out_of_range
+from ..description import Pose, Vec3, quat_conj, quat_rotate, reply_text
+from ..physics import WORLD_FRAMES, EntityState, WorldError
 from ..sim import Simulation
 from ..systems import (
     RSP_PLUGIN,
@@ -36,6 +35,7 @@ from ..systems import (
 from ._convert import from_pose_msg, to_pose_msg, to_time
 from ._replies import guarded_service, serve, with_warnings
 from ._spawn_entity import with_joint_state_publisher, with_robot_state_options
+from ._spawn_preamble import SpawnFailed, check_pose, frame_in_world, model_to_spawn
 
 RSP_WATCH_SEC = 30.0
 """How long after a spawn the user's robot_state_publisher may still appear and take the robot's TF over."""
@@ -57,31 +57,26 @@ def relative_state(entity: EntityState, frame: EntityState | None) -> tuple[Pose
     return frame.pose.inverse() * entity.pose, lin, ang
 
 
-class SpawnFailure(enum.StrEnum):
-    """Why a spawn request was refused before it reached the world."""
+class GazeboServices:
+    """gazebo_ros's services and spawning from XML, registered on the simulation's node (see the module
+    docstring)."""
 
-    PARSE = "parse"
-    NO_MODEL = "no_model"
-    FRAME = "frame"
+    def __init__(self, node: Node, sim: Simulation, callback_group: ReentrantCallbackGroup):
+        """Serve gazebo_ros's services on ``node`` (at the root, and ROS 1's names) for ``sim``, every callback in
+        ``callback_group``; and, every 0.5 s, hand a robot's TF to a robot_state_publisher the user starts
+        (:meth:`_watch_for_user_publishers`)."""
+        self.node = node
+        self.sim = sim
+        self._cb = callback_group
+        self._lock = threading.Lock()
+        self._watched: dict[str, tuple[str, float]] = {}
+        """Entity -> (its description topic, until when): see :meth:`_watch_for_user_publishers`."""
+        node.create_timer(0.5, self._watch_for_user_publishers, callback_group=callback_group)
+        self.services = self._serve_gazebo_services()
 
-
-class SpawnFailed(Exception):
-    """A spawn request was refused; ``kind`` says why (maps to result codes)."""
-
-    def __init__(self, kind: SpawnFailure, message: str):
-        super().__init__(message)
-        self.kind = kind
-
-
-class GazeboServices(Node):
-    """The spawning and gazebo_ros services of ``SimulationNode`` (which builds the state declared here)."""
-
-    sim: Simulation
-    simulation_interfaces: Any
-    _cb: ReentrantCallbackGroup
-    _lock: threading.Lock
-    _watched: dict[str, tuple[str, float]]
-    """Entity -> (its description topic, until when): see :meth:`_watch_for_user_publishers`."""
+    def get_logger(self) -> Any:
+        """The node's logger (gazebo_ros's services log as the ``gazelle`` node)."""
+        return self.node.get_logger()
 
     def _serve_gazebo_services(self) -> list[Any]:
         """gazebo_ros's services (ROS 2 names, and ROS 1's that the seed's chessboard spawner calls)."""
@@ -103,19 +98,8 @@ class GazeboServices(Node):
             (GzGetModelState, "/gazebo/get_model_state", self._ros1_get_state),
             (GzSetModelState, "/gazebo/set_model_state", self._ros1_set_state),
         ):
-            served.append(serve(self, srv_type, name, guarded_service(name, cb), self._cb))
+            served.append(serve(self.node, srv_type, name, guarded_service(name, cb), self._cb))
         return served
-
-    def resolve_frame(self, frame: str) -> Pose:
-        """World pose of a reference frame: '' / world / map, an entity, or ``entity::link``."""
-        if frame in WORLD_FRAMES:
-            return Pose()
-        try:
-            return self.sim.call(lambda: self.sim.world.frame_pose(frame))
-        except WorldError:
-            raise SpawnFailed(
-                SpawnFailure.FRAME, f"reference_frame '{frame}' not found: no such entity or link"
-            ) from None
 
     def spawn_xml(
         self, xml: str, *, name: str, namespace: str, pose: Pose, reference_frame: str, source: str
@@ -123,39 +107,22 @@ class GazeboServices(Node):
         """Parse and spawn; returns the entity name and the description's warnings.
 
         Raises:
-            SpawnFailed: the XML is bad or holds no model, or the frame is unknown.
+            SpawnFailed: the pose is not finite or out of reach, the XML is bad or holds no model, or the frame
+                is unknown.
             WorldError: the world refused (duplicate name, NaN pose, build failure).
         """
-        for v in (*pose.position, *pose.orientation):
-            if not math.isfinite(v):
-                raise WorldError(ErrorKind.INVALID_POSE, f"initial_pose is not finite: {pose}")
-        far = pose_out_of_range(pose, "initial_pose.position")
-        if far is not None:
-            raise WorldError(ErrorKind.INVALID_POSE, far)
+        check_pose(pose, "initial_pose")
         auto = RSP_PLUGIN not in xml
         xml = self._leave_tf_to_a_running_publisher(xml, namespace)
         watch = auto and RSP_PLUGIN not in xml  # gazelle publishes its TF: unless the user's shows up soon
-        try:
-            result = load_string(xml, source=source)
-        except ModelLoadError as err:
-            raise SpawnFailed(SpawnFailure.PARSE, err.summary()) from None
-        value = result.value
-        model: Model | None
-        if isinstance(value, Model):
-            model = value
-        elif isinstance(value, World) and value.models:
-            model = value.models[0]
-        else:
-            raise SpawnFailed(SpawnFailure.NO_MODEL, f"{source}: no <model> or <robot> to spawn")
-        for d in result.diagnostics:
-            self.get_logger().warning(d.format())
-        X_WF = self.resolve_frame(reference_frame)
+        model, warnings = model_to_spawn(xml, source=source, logger=self.get_logger())
+        X_WF = frame_in_world(self.sim, reference_frame, "reference_frame")
         entity = self.sim.spawn(model, name=name or model.name, pose=X_WF * pose, namespace=namespace)
         if watch:
             ns = "/" + namespace.strip("/") if namespace.strip("/") else ""
             with self._lock:
                 self._watched[entity.name] = (f"{ns}/robot_description", time.monotonic() + RSP_WATCH_SEC)
-        return entity.name, [d.format() for d in result.diagnostics]
+        return entity.name, list(warnings)
 
     def _watch_for_user_publishers(self) -> None:
         """A robot spawned while the user's robot_state_publisher was still starting (a launch file starts both
@@ -173,7 +140,7 @@ class GazeboServices(Node):
                     self._watched.pop(entity_name, None)
                 continue
             try:
-                names = {p.node_name for p in self.get_publishers_info_by_topic(topic)}
+                names = {p.node_name for p in self.node.get_publishers_info_by_topic(topic)}
             except Exception:
                 names = set()
             if "robot_state_publisher" not in names:
@@ -216,7 +183,7 @@ class GazeboServices(Node):
             return xml
         ns = "/" + namespace.strip("/") if namespace.strip("/") else ""
         try:
-            publishers = self.get_publishers_info_by_topic(f"{ns}/robot_description")
+            publishers = self.node.get_publishers_info_by_topic(f"{ns}/robot_description")
         except Exception:  # a namespace that is no valid topic: the spawn says so itself
             return xml
         if not any(p.node_name == "robot_state_publisher" for p in publishers):
@@ -301,7 +268,7 @@ class GazeboServices(Node):
         s = req.state
         entity, _, _link = s.name.partition("::")
         try:
-            X_WF = self.resolve_frame(s.reference_frame)
+            X_WF = frame_in_world(self.sim, s.reference_frame, "reference_frame")
             pose = X_WF * from_pose_msg(s.pose)
             lin = quat_rotate(X_WF.orientation, (s.twist.linear.x, s.twist.linear.y, s.twist.linear.z))
             ang = quat_rotate(X_WF.orientation, (s.twist.angular.x, s.twist.angular.y, s.twist.angular.z))

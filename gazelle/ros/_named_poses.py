@@ -21,11 +21,10 @@ from ..description import NamedPose as Place
 from ..description import excerpt
 from ._convert import to_pose_msg
 from ._entity_filters import checked_tags
-from ._replies import guarded_service, serve
 from ._si_results import OK, _Refused, _result
 
 if TYPE_CHECKING:
-    from ._simulation_interfaces import SimulationInterfaces
+    from ._si_context import InterfacesContext
 
 
 def _bounds(place: Place) -> Bounds:
@@ -38,18 +37,19 @@ def _bounds(place: Place) -> Bounds:
 
 
 class NamedPosesService:
-    """``~/get_named_poses`` and ``~/get_named_pose_bounds``, registered on the node of ``si``."""
+    """``~/get_named_poses`` and ``~/get_named_pose_bounds``, a part of simulation_interfaces registered on the
+    context's node."""
 
     FEATURES = (SimulatorFeatures.NAMED_POSES, SimulatorFeatures.POSE_BOUNDS)
 
-    def __init__(self, si: SimulationInterfaces):
-        """Serve both beside ``si``'s services (``si.services`` holds them, so ``si.destroy`` removes them)."""
-        self.sim = si.sim
+    def __init__(self, context: InterfacesContext):
+        """Serve both (``context.services`` holds them, so ``context.destroy`` removes them)."""
+        self.sim = context.sim
         for srv_type, name, fn in (
             (GetNamedPoses, "get_named_poses", self.get_named_poses),
             (GetNamedPoseBounds, "get_named_pose_bounds", self.get_named_pose_bounds),
         ):
-            si.services.append(serve(si.node, srv_type, f"~/{name}", guarded_service(name, fn), si.cb))
+            context.serve(srv_type, name, fn)
 
     def _places(self) -> tuple[Place, ...]:
         """The current world's named poses (read on the sim thread: a world loaded at run time replaces them)."""

@@ -17,6 +17,7 @@ from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from ..sim import SceneGeometry, SceneLink, moved
 from ..systems import UpdateInfo
 from ._convert import to_pose_msg
+from ._subscribed import Subscribed
 
 TOPIC = "/gazelle/planning_scene_world"
 LATCHED = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
@@ -30,12 +31,10 @@ class ScenePublisher:
     def __init__(self, node: Any) -> None:
         from moveit_msgs.msg import PlanningSceneWorld  # built by the set-up; the sim runs without it
 
-        from ._bridge import _Subscribed
-
         self._node = node
         self._sim = node.sim
         self._pub = node.create_publisher(PlanningSceneWorld, TOPIC, LATCHED)
-        self._heard = _Subscribed(self._pub)
+        self._heard = Subscribed(self._pub)
         self._geometry = SceneGeometry()
         self._last: dict[str, SceneLink] | None = None
         self._last_wall = 0.0

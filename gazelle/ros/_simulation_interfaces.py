@@ -4,9 +4,10 @@ Everything is advertised as ``~/<name>`` on the node named ``gazelle``, i.e.
 ``/gazelle/spawn_entity``, ``/gazelle/get_entities``, ... and the action
 ``/gazelle/simulate_steps``. Callbacks run in a :class:`ReentrantCallbackGroup`
 on the bridge's multi-threaded executor and hand every piece of world work to
-the simulation thread with ``node.sim.call``. The entity queries and SetEntityState are in
-``_entity_queries.py`` (:class:`EntityQueries`, a part of :class:`SimulationInterfaces`); StepSimulation's
-node and executor in ``_stepping.py``.
+the simulation thread with ``sim.call``. Its parts share an :class:`~._si_context.InterfacesContext` (the node,
+the simulation, the resolver, the callback group) and each registers its own services: the entity queries and
+SetEntityState (``_entity_queries.py``), and the others below; StepSimulation's node and executor are in
+``_stepping.py``. A spawn's pose, description and frame go through ``_spawn_preamble.py``, as gazebo_ros's do.
 
 Decisions (also what :func:`features` advertises, nothing more):
 
@@ -29,9 +30,10 @@ Decisions (also what :func:`features` advertises, nothing more):
   ``TYPE_BOX`` and ``TYPE_SPHERE`` in the world frame, against each collision geom's world box
   (``_entity_filters.py``); ``TYPE_CONVEX_HULL`` is ``RESULT_FEATURE_UNSUPPORTED``.
 * The other parts of the standard are classes of their own, each registering its services on the node and
-  declaring its features (``FEATURES``): SetEntityInfo (``_entity_info.py``), GetEntityBounds
-  (``_entity_bounds.py``), GetNamedPoses and GetNamedPoseBounds (``_named_poses.py``), GetSpawnables
-  (``_spawnables.py``). GetSimulatorFeatures lists the union, nothing more.
+  declaring its features (``FEATURES``): the entity queries (``_entity_queries.py``), SetEntityInfo
+  (``_entity_info.py``), GetEntityBounds (``_entity_bounds.py``), GetNamedPoses and GetNamedPoseBounds
+  (``_named_poses.py``), GetSpawnables (``_spawnables.py``), the worlds (``_world_services.py``).
+  GetSimulatorFeatures lists the union, nothing more.
 * Name filters are Python regular expressions (the ``regex`` module, ``re`` syntax; POSIX-extended
   syntax is a subset for the usual cases) of at most 1,000 characters, compiled and matched in a
   helper process bounded to 256 MiB and 1 s of CPU, and 0.2 s of matching: a backtracking or
@@ -52,11 +54,12 @@ from __future__ import annotations
 
 import re
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-from rclpy.callback_groups import ReentrantCallbackGroup
+from rclpy.node import Node
 from simulation_interfaces.action import SimulateSteps
 from simulation_interfaces.msg import (
     Result,
@@ -66,14 +69,9 @@ from simulation_interfaces.msg import (
 )
 from simulation_interfaces.srv import (
     DeleteEntity,
-    GetEntities,
-    GetEntitiesStates,
-    GetEntityInfo,
-    GetEntityState,
     GetSimulationState,
     GetSimulatorFeatures,
     ResetSimulation,
-    SetEntityState,
     SetSimulationState,
     SpawnEntities,
     SpawnEntity,
@@ -81,30 +79,25 @@ from simulation_interfaces.srv import (
 )
 
 from ..description import (
-    ErrorCode,
     Model,
-    ModelLoadError,
     Pose,
     ResourceResolver,
-    World,
     format_for_path,
-    load_string,
 )
-from ..physics import WORLD_FRAMES, Entity, ErrorKind, WorldError, pose_out_of_range
-from ..sim import SpawnRequest, WorldBusy
+from ..physics import Entity, ErrorKind, WorldError
+from ..sim import Simulation, SpawnRequest, WorldBusy
 from ._convert import from_pose_msg
 from ._entity_bounds import EntityBoundsService
 from ._entity_info import EntityInfoSetter
 from ._entity_queries import EntityQueries
 from ._named_poses import NamedPosesService
-from ._replies import guarded_service, serve, serve_action, with_warnings
-from ._si_results import OK, _attempt, _finite, _Refused, _result
+from ._replies import guarded_service, serve_action, with_warnings
+from ._si_context import InterfacesContext
+from ._si_results import OK, _attempt, _Refused, _result
+from ._spawn_preamble import SpawnFailed, SpawnFailure, check_pose, frame_in_world, model_to_spawn
 from ._spawnables import SpawnablesService
 from ._stepping import SteppingService
 from ._world_services import WorldServices
-
-if TYPE_CHECKING:
-    from ._bridge import SimulationNode
 
 STEP_CHUNK = 200
 """Physics steps per sim-thread call while stepping on request."""
@@ -114,11 +107,7 @@ MAX_STEPS = 2**32 - 1
 FEATURES = (
     SimulatorFeatures.SPAWNING,
     SimulatorFeatures.DELETING,
-    SimulatorFeatures.ENTITY_CATEGORIES,
     SimulatorFeatures.SPAWNING_RESOURCE_STRING,
-    SimulatorFeatures.ENTITY_STATE_GETTING,
-    SimulatorFeatures.ENTITY_STATE_SETTING,
-    SimulatorFeatures.ENTITY_INFO_GETTING,
     SimulatorFeatures.SIMULATION_RESET,
     SimulatorFeatures.SIMULATION_RESET_TIME,
     SimulatorFeatures.SIMULATION_RESET_STATE,
@@ -130,15 +119,22 @@ FEATURES = (
     SimulatorFeatures.STEP_SIMULATION_MULTIPLE,
     SimulatorFeatures.STEP_SIMULATION_ACTION,
     SimulatorFeatures.SPAWNING_ENTITIES,
-    SimulatorFeatures.ENTITY_TAGS,
-    SimulatorFeatures.ENTITY_BOUNDS_BOX,
 )
-"""What this class serves (the entity filters' tags and boxes included); each part adds its own."""
+"""What this class serves; each part adds its own."""
 
-PARTS = (EntityInfoSetter, EntityBoundsService, NamedPosesService, SpawnablesService, WorldServices)
+PARTS = (EntityQueries, EntityInfoSetter, EntityBoundsService, NamedPosesService, SpawnablesService, WorldServices)
 """The parts of the standard served by classes of their own (each registers its services on the node)."""
 
 _NAMESPACE_RE = re.compile(r"^/?([A-Za-z_][A-Za-z0-9_]*)(/[A-Za-z_][A-Za-z0-9_]*)*/?$")
+
+_PREAMBLE_TO_SPAWN = {
+    SpawnFailure.INVALID_POSE: SpawnEntity.Response.INVALID_POSE,
+    SpawnFailure.PARSE: SpawnEntity.Response.RESOURCE_PARSE_ERROR,
+    SpawnFailure.UNSUPPORTED_FORMAT: SpawnEntity.Response.UNSUPPORTED_FORMAT,
+    SpawnFailure.NO_MODEL: SpawnEntity.Response.RESOURCE_PARSE_ERROR,
+    SpawnFailure.FRAME: Result.RESULT_OPERATION_FAILED,
+}
+"""The result code of a spawn the preamble refused (``_spawn_preamble.py``), by why."""
 
 _WORLD_KIND_TO_SPAWN = {
     ErrorKind.NAME_NOT_UNIQUE: SpawnResult.NAME_NOT_UNIQUE,
@@ -164,24 +160,34 @@ class _Prepared:
     """The description's warnings, also carried in the success reply's message."""
 
 
-class SimulationInterfaces(EntityQueries):
-    """The services and action, bound to one :class:`SimulationNode`."""
+class SimulationInterfaces:
+    """The services and action, on the simulation's node, with their parts (see the module docstring)."""
 
-    def __init__(self, node: SimulationNode, resolver: ResourceResolver | None = None):
-        """The simulation_interfaces (ROS 2's standard simulator API) services under the node's ``~/``, each guarded
+    def __init__(
+        self,
+        node: Node,
+        sim: Simulation,
+        publish_clock: Callable[[float], None],
+        take_inbound: Callable[[], int],
+        resolver: ResourceResolver | None = None,
+    ):
+        """The simulation_interfaces (ROS 2's standard simulator API) services under ``node``'s ``~/``, each guarded
         so that bad input gets a result code and a message, never a dead server; StepSimulation on a service of
-        its own; the SimulateSteps action; and a diverged entity reported on /rosout."""
+        its own; the SimulateSteps action; and a diverged entity reported on /rosout. ``publish_clock`` sends /clock
+        at once, ``take_inbound`` hands the simulation what its subscriptions hold (the bridge node's)."""
+        resolver = resolver or ResourceResolver(extra_paths=builtin_resource_paths())
+        self.context = InterfacesContext(node, sim, resolver, publish_clock, take_inbound)
+        """What the parts share: the node, the simulation, the resolver, the callback group, the services."""
         self.node = node
-        self.sim = node.sim
-        self.resolver = resolver or ResourceResolver(extra_paths=builtin_resource_paths())
-        self.cb = ReentrantCallbackGroup()
+        self.sim = sim
+        self.resolver = resolver
+        self.cb = self.context.cb
 
         # a diverged entity is reported on /rosout (the sim thread calls this once per divergence)
         def report(_name: str, reason: str) -> None:
             node.get_logger().error(reason)
 
         self.sim.divergence_listeners.append(report)
-        self.services = []
         for srv_type, name, fn in (
             (GetSimulatorFeatures, "get_simulator_features", self.get_simulator_features),
             (GetSimulationState, "get_simulation_state", self.get_simulation_state),
@@ -190,27 +196,21 @@ class SimulationInterfaces(EntityQueries):
             (SpawnEntity, "spawn_entity", self.spawn_entity),
             (SpawnEntities, "spawn_entities", self.spawn_entities),
             (DeleteEntity, "delete_entity", self.delete_entity),
-            (GetEntities, "get_entities", self.get_entities),
-            (GetEntityState, "get_entity_state", self.get_entity_state),
-            (GetEntitiesStates, "get_entities_states", self.get_entities_states),
-            (SetEntityState, "set_entity_state", self.set_entity_state),
-            (GetEntityInfo, "get_entity_info", self.get_entity_info),
         ):
-            self.services.append(serve(node, srv_type, f"~/{name}", guarded_service(name, fn), self.cb))
+            self.context.serve(srv_type, name, fn)
         self.stepping = SteppingService(node, guarded_service("step_simulation", self.step_simulation))
         self.action = serve_action(node, SimulateSteps, "~/simulate_steps", self._simulate_steps, self.cb)
         self.features: set[int] = {int(f) for f in FEATURES}
         """Every feature id served: GetSimulatorFeatures lists these."""
         self.parts: list[object] = []
         for part in PARTS:
-            self.parts.append(part(self))
+            self.parts.append(part(self.context))
             self.features.update(int(f) for f in part.FEATURES)
 
     def destroy(self) -> None:
         """Stop the action server and the services (the node is being destroyed)."""
         self.action.destroy()
-        for s in self.services:
-            self.node.destroy_service(s)
+        self.context.destroy()
         self.stepping.destroy()
 
     # ------------------------------------------------------------------ features and state
@@ -343,7 +343,7 @@ class SimulationInterfaces(EntityQueries):
         try:
             self._check_steps(req.steps)
             with self.sim.worlds.stepping("a StepSimulation call"):
-                self.node.take_inbound()
+                self.context.take_inbound()
                 done = 0
                 while done < req.steps:
                     taken = self._step_chunk(min(STEP_CHUNK, req.steps - done))
@@ -379,7 +379,7 @@ class SimulationInterfaces(EntityQueries):
 
     def _run_goal(self, goal_handle: Any, steps: int, result: Any) -> Any:
         """The steps of one accepted SimulateSteps goal (see :meth:`_simulate_steps`)."""
-        self.node.take_inbound()  # as StepSimulation: what came before the goal acts from its first step
+        self.context.take_inbound()  # as StepSimulation: what came before the goal acts from its first step
         done = 0
         last_feedback = 0.0
         try:
@@ -460,44 +460,24 @@ class SimulationInterfaces(EntityQueries):
     ) -> _Prepared:
         """Parse and place one spawn request (off the sim thread, except the frame lookup)."""
         R = SpawnEntity.Response
-        p = initial_pose.pose
-        if not _finite(
-            p.position.x, p.position.y, p.position.z, p.orientation.x, p.orientation.y, p.orientation.z, p.orientation.w
-        ):
-            raise _Refused(R.INVALID_POSE, "initial_pose is not finite (NaN or inf)")
-        far = pose_out_of_range(from_pose_msg(p), "initial_pose.pose.position")
-        if far is not None:
-            raise _Refused(R.INVALID_POSE, far)
-        if namespace and not _NAMESPACE_RE.match(namespace):
-            raise _Refused(R.NAMESPACE_INVALID, f"entity_namespace {namespace!r} is not a valid ROS namespace")
-        if uri:
-            text, fmt, source = self._read_uri(uri)
-        elif resource_string:
-            text, fmt, source = resource_string, "auto", f"<resource_string:{name or 'entity'}>"
-        else:
-            raise _Refused(R.NO_RESOURCE, "either uri or resource_string must be set")
         try:
-            loaded = load_string(text, format=fmt, source=source, resolver=self.resolver)
-        except ModelLoadError as err:
-            first = err.first
-            if first is not None and first.code is ErrorCode.UNKNOWN_FORMAT:
-                raise _Refused(R.UNSUPPORTED_FORMAT, err.summary()) from None
-            raise _Refused(R.RESOURCE_PARSE_ERROR, err.summary()) from None
-        value = loaded.value
-        if isinstance(value, Model):
-            model = value
-        elif isinstance(value, World) and value.models:
-            model = value.models[0]
-        else:
-            raise _Refused(R.RESOURCE_PARSE_ERROR, f"{source}: no <model> or <robot> to spawn")
-        for d in loaded.diagnostics:
-            self.node.get_logger().warning(d.format())
-        frame = initial_pose.header.frame_id
-        X_WF = Pose()
-        if frame not in WORLD_FRAMES:
-            X_WF = self._frame_pose(frame, "initial_pose.header.frame_id")
-        warnings = tuple(d.format() for d in loaded.diagnostics)
-        return _Prepared(model, name, X_WF * from_pose_msg(p), namespace.strip("/"), allow_renaming, warnings)
+            requested = from_pose_msg(initial_pose.pose)
+            check_pose(requested, "initial_pose.pose")
+            if namespace and not _NAMESPACE_RE.match(namespace):
+                raise _Refused(R.NAMESPACE_INVALID, f"entity_namespace {namespace!r} is not a valid ROS namespace")
+            if uri:
+                text, fmt, source = self._read_uri(uri)
+            elif resource_string:
+                text, fmt, source = resource_string, "auto", f"<resource_string:{name or 'entity'}>"
+            else:
+                raise _Refused(R.NO_RESOURCE, "either uri or resource_string must be set")
+            model, warnings = model_to_spawn(
+                text, source=source, logger=self.node.get_logger(), format=fmt, resolver=self.resolver
+            )
+            X_WF = frame_in_world(self.sim, initial_pose.header.frame_id, "initial_pose.header.frame_id")
+        except SpawnFailed as err:
+            raise _Refused(_PREAMBLE_TO_SPAWN[err.kind], str(err)) from None
+        return _Prepared(model, name, X_WF * requested, namespace.strip("/"), allow_renaming, warnings)
 
     def _commit(self, prepared: list[_Prepared]) -> list[Entity | WorldError]:
         return self.sim.spawn_many(
@@ -585,10 +565,3 @@ class SimulationInterfaces(EntityQueries):
         """DeleteEntity: remove one entity and its systems."""
         res.result, _ = _attempt(lambda: self.sim.delete(req.entity))
         return res
-
-
-def register(node: SimulationNode) -> SimulationInterfaces:
-    """Advertise the simulation_interfaces services and action on ``node`` (under ``~/``)."""
-    si = SimulationInterfaces(node)
-    node.simulation_interfaces = si
-    return si

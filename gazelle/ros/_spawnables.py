@@ -37,12 +37,11 @@ from ..description import (
     read_model_folder,
 )
 from ..physics import WorldError, model_box
-from ._replies import guarded_service, serve
 from ._si_results import OK, _result
 
 if TYPE_CHECKING:
     from ..description import ResourceResolver
-    from ._simulation_interfaces import SimulationInterfaces
+    from ._si_context import InterfacesContext
 
 MAX_SPAWNABLES = 500
 """The most model folders one reply lists."""
@@ -53,17 +52,15 @@ CACHE_ENTRIES = 1024
 
 
 class SpawnablesService:
-    """``~/get_spawnables``, registered on the node of ``si``."""
+    """``~/get_spawnables``, a part of simulation_interfaces registered on the context's node."""
 
     FEATURES = (SimulatorFeatures.SPAWNABLES,)
 
-    def __init__(self, si: SimulationInterfaces):
-        """Serve GetSpawnables beside ``si``'s services (``si.services`` holds it, so ``si.destroy`` removes it)."""
-        self.resolver: ResourceResolver = si.resolver
+    def __init__(self, context: InterfacesContext):
+        """Serve GetSpawnables (``context.services`` holds it, so ``context.destroy`` removes it)."""
+        self.resolver: ResourceResolver = context.resolver
         self._bounds: OrderedDict[tuple[Path, int, int], Bounds | str] = OrderedDict()
-        si.services.append(
-            serve(si.node, GetSpawnables, "~/get_spawnables", guarded_service("get_spawnables", self.get), si.cb)
-        )
+        context.serve(GetSpawnables, "get_spawnables", self.get)
 
     def _source(self, source: str) -> Path | None:
         """A source as a folder inside the resource paths (see the module docstring), or None."""

@@ -48,13 +48,11 @@ from ..description import (
 from ..physics import ErrorKind, WorldError
 from ..sim import MAX_WORLD_MODELS, LoadedWorld, WorldBusy
 from ..systems import audit_world
-from ._replies import guarded_service, serve
 from ._si_results import OK, _Refused, _result
 from ._world_catalog import WorldCatalog, check_filter, matches
 
 if TYPE_CHECKING:
-    from ._bridge import SimulationNode
-    from ._simulation_interfaces import SimulationInterfaces
+    from ._si_context import InterfacesContext
 
 MAX_WORLD_BYTES = 16 * 1024 * 1024
 """The largest world text LoadWorld reads, from a file or a string (gz-sim's 3k_shapes.sdf: about 0.6 MB)."""
@@ -74,7 +72,7 @@ _MODEL_TAG = re.compile(r"<\s*(model|include)\b")
 
 
 class WorldServices:
-    """The four world services, beside those of a :class:`SimulationInterfaces` (see the module docstring)."""
+    """The four world services, a part of simulation_interfaces (see the module docstring)."""
 
     FEATURES = (
         SimulatorFeatures.WORLD_LOADING,
@@ -86,12 +84,13 @@ class WorldServices:
     )
     """The feature ids these services serve, added to GetSimulatorFeatures' list."""
 
-    def __init__(self, si: SimulationInterfaces):
-        """Serve the four services on ``si``'s node under ``~/``, finding files with its resolver; ``si.services``
-        holds them, so ``si.destroy`` removes them."""
-        self.node: SimulationNode = si.node
-        self.sim = si.sim
-        self.resolver: ResourceResolver = si.resolver
+    def __init__(self, context: InterfacesContext):
+        """Serve the four services on the context's node under ``~/``, finding files with its resolver;
+        ``context.services`` holds them, so ``context.destroy`` removes them."""
+        self.context = context
+        self.node = context.node
+        self.sim = context.sim
+        self.resolver: ResourceResolver = context.resolver
         worlds = self.sim.worlds
         installed = {uri: make().name for uri, make in sorted(worlds.installed.items())}
         self.catalog = WorldCatalog(self.resolver, installed, (worlds.first.name, worlds.first.uri))
@@ -103,7 +102,7 @@ class WorldServices:
             (UnloadWorld, "unload_world", self.unload_world),
             (GetCurrentWorld, "get_current_world", self.get_current_world),
         ):
-            si.services.append(serve(si.node, kind, f"~/{name}", guarded_service(name, fn), si.cb))
+            context.serve(kind, name, fn)
 
     # ------------------------------------------------------------------ the services
     def get_available_worlds(self, req: GetAvailableWorlds.Request, res: GetAvailableWorlds.Response) -> Any:
@@ -147,7 +146,7 @@ class WorldServices:
             return res
         if not uri:
             self._from_string = (loaded, req.resource_string)
-        self.node.publish_clock(self.sim.world.time)  # nodes on sim time see the clock start again now
+        self.context.publish_clock(self.sim.world.time)  # nodes on sim time see the clock start again now
         res.world = self._resource(loaded)
         more = f"; {len(warnings)} warning(s) ignored, the first: {warnings[0]}" if warnings else ""
         res.result = _result(OK, f"loaded world '{loaded.name}' ({len(self.sim.world.entities)} entities){more}")
@@ -168,7 +167,7 @@ class WorldServices:
         except TimeoutError as err:
             res.result = _result(Result.RESULT_OPERATION_FAILED, f"the simulation did not answer: {err}")
             return res
-        self.node.publish_clock(self.sim.world.time)
+        self.context.publish_clock(self.sim.world.time)
         res.result = _result(OK)
         return res
 

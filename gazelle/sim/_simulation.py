@@ -32,10 +32,12 @@ from concurrent.futures import TimeoutError as FutureTimeout
 from pathlib import Path
 from typing import Any, TypeVar
 
-from ..description import World
+from ..description import Model, Pose, World
 from ..physics import (
+    Entity,
     PhysicsOverload,
     PhysicsWorld,
+    WorldError,
 )
 from ..systems import (
     Bus,
@@ -44,8 +46,8 @@ from ..systems import (
     UpdateInfo,
     audit_world,
 )
-from ._runtime_types import RtfSample, StepListener
-from ._spawning import SpawningMixin
+from ._runtime_types import RtfSample, SpawnRequest, StepListener
+from ._spawning import Spawner
 from ._world_swap import WorldSwap
 
 T = TypeVar("T")
@@ -59,10 +61,11 @@ MAX_BLOCK_SEC = 0.01
 _log = logging.getLogger("gazelle")
 
 
-class Simulation(SpawningMixin):
+class Simulation:
     """A world plus systems, stepped on its own thread (or by hand, in lock-step); its entities are added and
-    removed by :class:`~._spawning.SpawningMixin`'s methods (``spawn``, ``spawn_many``, ``delete``), and its
-    world replaced at run time by its :class:`~._world_swap.WorldSwap` (``worlds``)."""
+    removed by its :class:`~._spawning.Spawner` (``spawner``; ``spawn``, ``spawn_many`` and ``delete`` here hand
+    their work on to it), and its world replaced at run time by its :class:`~._world_swap.WorldSwap` (``worlds``).
+    Both parts see it as a :class:`~._host.SimulationHost`."""
 
     def __init__(
         self,
@@ -136,8 +139,10 @@ class Simulation(SpawningMixin):
         """The world's plugins: gz-sim's sensor systems among them run the sensors without a gazebo_ros plugin."""
         for problem in audit_world(World(name=world.name, plugins=world.plugins)):
             _log.warning(problem.format())
-        self._add_world_models(list(world.models))
-        self.worlds = WorldSwap(self, world, asked_rtf)
+        self.spawner = Spawner(self, lambda: self.worlds.current is not None)
+        """How models become entities and entities go (``spawn``, ``spawn_many``, ``delete`` hand their work to it)."""
+        self.spawner.add_world_models(list(world.models))
+        self.worlds = WorldSwap(self, self.spawner, world, asked_rtf)
         """The loaded world, and the one way to replace it at run time (``load``, ``unload``)."""
 
     def _seed_noise(self, system: System, entity: str, name: str) -> None:
@@ -159,6 +164,103 @@ class Simulation(SpawningMixin):
                 self._seed_noise(system, entity, name)
 
         self.call(do)
+
+    # ------------------------------------------------------------------ entities (the spawner's)
+    def spawn(self, model: Model, *, name: str | None = None, pose: Pose = Pose(), namespace: str = "") -> Entity:
+        """Add a model (thread-safe), as gazebo_ros's ``/spawn_entity`` and simulation_interfaces'
+        ``SpawnEntity`` do: the model's plugins configured, its ros2_control started, its topics declared,
+        all in the simulation thread's next gap between blocks.
+
+        Args:
+            model: a loaded robot or model (:func:`gazelle.description.load`).
+            name: the entity's name (None: the model's own); it must not be taken.
+            pose: where the model frame goes in the world, composed with the file's own ``<pose>`` (an SDF
+                model's), as Gazebo places a spawned model: the request's pose times the model's.
+            namespace: the ROS namespace of its topics and controller manager (``-robot_namespace``).
+
+        Returns:
+            The new entity.
+
+        Raises:
+            WorldError: on a duplicate/invalid name, a bad pose or a model that cannot be built; the world is
+                then as it was (bit-identical: nothing of the model is left in it).
+        """
+        return self.spawner.spawn(model, name=name, pose=pose, namespace=namespace)
+
+    def spawn_many(self, requests: list[SpawnRequest], timeout: float | None = 60.0) -> list[Entity | WorldError]:
+        """Add several models in one sim-thread call with one recompile (thread-safe): simulation_interfaces'
+        batch spawn, where a MuJoCo model rebuilt once for N models costs what one spawn does (a chessboard's
+        32 pieces).
+
+        Args:
+            requests: the models with their names, poses and namespaces (:class:`SpawnRequest`).
+            timeout: wall seconds to wait for the simulation thread (None: for ever).
+
+        Returns:
+            Per request, in order, the new entity or the :class:`WorldError` that refused it: one bad model
+            never takes the others with it.
+        """
+        return self.spawner.spawn_many(requests, timeout)
+
+    def add_entity_placed(
+        self, model: Model, name: str, X_WM: Pose, namespace: str = "", *, spawned: bool = True
+    ) -> Entity:
+        """Add a model with its model frame at ``X_WM`` (the file's own pose already composed in), as a
+        checkpoint recorded it (thread-safe).
+
+        Args:
+            model: the model as loaded.
+            name: its entity's name.
+            X_WM: the model frame in the world: :meth:`spawn`'s ``pose`` composed with the model's own.
+            namespace: its ROS namespace.
+            spawned: whether a reset with ``spawned`` removes it (spawned at run time) or keeps it (one of the
+                world file's own models).
+        """
+        return self.spawner.add_entity_placed(model, name, X_WM, namespace, spawned=spawned)
+
+    def delete(self, name: str) -> None:
+        """Remove an entity and its systems (thread-safe).
+
+        Raises:
+            WorldError: no such entity.
+        """
+        self.spawner.delete(name)
+
+    def _forget_divergence(self, name: str) -> None:
+        """Drop what is remembered of a deleted entity's divergences (the spawner calls this)."""
+        self.diverged.pop(name, None)
+        self._divergence_log.pop(name, None)
+
+    def _install_world(self, world: World, rtf: float | None) -> None:
+        """The world swap's half on the simulation thread: every entity taken out the way a delete takes one,
+        then ``world``'s physics started (no models yet), its clock at zero, paused; ``rtf`` the real-time factor
+        asked for (None: the world's own)."""
+        for name in list(self.world.entities):
+            self.systems.remove_owner(name)
+            self.bus.remove_owner(name)
+        with self._inbox_lock:  # messages for the systems that just went
+            self._inbox.clear()
+        self.diverged.clear()
+        self._divergence_log.clear()
+        self._rtf_window.clear()
+        generation = self.world.generation
+        self.world = PhysicsWorld(world, visual_geoms=self.visual_geoms)
+        # generations go on counting: what is cached against the old world's (the replay's body index, a
+        # handle's indices) must not look current in the new one
+        self.world.generation = generation + 1
+        self.world_name = world.name
+        self.world_plugins = world.plugins
+        self.spherical_coordinates = world.spherical_coordinates
+        self.magnetic_field = world.magnetic_field
+        if rtf is None:
+            physics = world.physics
+            self.rtf = 0.0 if physics.real_time_update_rate_hz == 0 else physics.real_time_factor
+        self.max_block_steps = max(1, round(MAX_BLOCK_SEC / self.world.timestep))
+        self.paused = True
+        self.iterations = 0
+        for listener in self.step_listeners:
+            listener.gate.reset()
+        self._reanchor()
 
     # ------------------------------------------------------------------ threading
     @property

@@ -7,21 +7,21 @@ and the staged entity is discarded, so a bad spawn leaves the world bit-identica
 simulation_interfaces' SpawnEntities) stage and configure each, then commit once: one recompile per batch,
 not per model; a batch that does not compile is added one model at a time, so an error names its model.
 
-:class:`Simulation` takes these methods from :class:`SpawningMixin`; everything here runs on the simulation
-thread (the public methods hand their work to it with ``call``).
+The stage/configure/commit/undo/retry sequence is written once (:meth:`Spawner._add_batch`): a single spawn is a
+batch of one. :class:`Simulation` owns a :class:`Spawner` (``sim.spawner``) and hands its ``spawn``, ``spawn_many``,
+``delete`` and ``add_entity_placed`` on to it; everything here runs on the simulation thread (the public methods
+hand their work to it with ``call``).
 """
 
 from __future__ import annotations
 
 import logging
 from collections.abc import Callable
-from typing import TYPE_CHECKING, TypeVar
 
-from ..description import Model, Plugin, Pose, SphericalCoordinates, Vec3, config_reads
+from ..description import Model, Plugin, Pose, config_reads
 from ..physics import (
     Entity,
     ErrorKind,
-    PhysicsWorld,
     StagedRequest,
     WorldError,
     build_failed,
@@ -29,11 +29,9 @@ from ..physics import (
 )
 from ..systems import (
     RSP_PLUGIN,
-    Bus,
     RobotStatePublisher,
     System,
     SystemContext,
-    SystemManager,
     audit_model,
     create_system,
     plan_sensors,
@@ -43,9 +41,9 @@ from ..systems import (
     unread_parameters,
 )
 from ..systems.ros2_control import ControllerManager
+from ._host import SimulationHost
 from ._runtime_types import SpawnRequest
 
-T = TypeVar("T")
 _log = logging.getLogger("gazelle")
 
 
@@ -57,40 +55,28 @@ def _shutdown_system(system: System) -> None:
         _log.exception(f"{type(system).__name__}.shutdown raised after a failed spawn")
 
 
-class SpawningMixin:
-    """The entity half of :class:`~gazelle.sim.Simulation` (see the module docstring)."""
+class Spawner:
+    """How models become entities of the running simulation, and how entities go (see the module docstring): a
+    part the simulation owns (``sim.spawner``); its thread-safe methods are also :class:`Simulation`'s."""
 
-    world: PhysicsWorld
-    bus: Bus
-    systems: SystemManager
-    robot_state_publisher: bool
-    world_name: str
-    world_plugins: tuple[Plugin, ...]
-    spherical_coordinates: SphericalCoordinates | None
-    magnetic_field: Vec3
-    diverged: dict[str, str]
-    _divergence_log: dict[str, tuple[int, float]]
+    def __init__(self, sim: SimulationHost, loaded: Callable[[], bool]):
+        """``sim`` is the simulation this part adds to; ``loaded`` says whether a world is loaded (a spawn is
+        refused after an unload: see :mod:`._world_swap`)."""
+        self._sim = sim
+        self._loaded = loaded
 
-    if TYPE_CHECKING:  # Simulation's, which this half calls
-        from ._world_swap import WorldSwap
-
-        worlds: WorldSwap
-
-        def call(self, fn: Callable[[], T], timeout: float | None = 10.0) -> T: ...
-
-        def _seed_noise(self, system: System, entity: str, name: str) -> None: ...
-
-    # ------------------------------------------------------------------ entities
+    # ------------------------------------------------------------------ plugins
     def _configure_plugins(self, entity: Entity) -> list[System]:
         """Create and configure (while the entity is staged) a system for each supported plugin of
         ``entity``, and the built-in robot_state_publisher for anything with joints or a URDF.
 
         Raises whatever a plugin's ``configure`` raises, after shutting down the systems made so far.
         """
+        sim = self._sim
         made: list[System] = []
         try:
             # unsupported plugins and sensors: named, never dropped silently
-            for problem in audit_model(entity.model, self.world_plugins):
+            for problem in audit_model(entity.model, sim.world_plugins):
                 _log.warning(f"'{entity.name}': {problem.format()}")
             for plugin in entity.model.plugins:
                 if plugin.filename == RSP_PLUGIN:
@@ -100,10 +86,10 @@ class SpawningMixin:
                     continue
                 logger = logging.getLogger(plugin.name or plugin.filename)
                 made.append(system)
-                self._seed_noise(system, entity.name, plugin.name or plugin.filename)
-                with self.bus.declaring(plugin_node_name(plugin, entity.namespace)), config_reads() as reads:
+                sim._seed_noise(system, entity.name, plugin.name or plugin.filename)
+                with sim.bus.declaring(plugin_node_name(plugin, entity.namespace)), config_reads() as reads:
                     system.configure(
-                        SystemContext(self.world, entity, plugin, self.bus, logger, world_name=self.world_name)
+                        SystemContext(sim.world, entity, plugin, sim.bus, logger, world_name=sim.world_name)
                     )
                 for problem in unread_parameters(plugin, reads):
                     logger.warning(problem)
@@ -114,220 +100,227 @@ class SpawningMixin:
                 made.append(manager)
                 manager.configure(
                     SystemContext(
-                        self.world,
+                        sim.world,
                         entity,
                         None,
-                        self.bus,
+                        sim.bus,
                         logging.getLogger("controller_manager"),
-                        world_name=self.world_name,
+                        world_name=sim.world_name,
                     )
                 )
-            for plan in plan_sensors(entity.model, self.world_plugins)[0]:
-                system = plan.make()
-                named = plan.plugin.name if plan.plugin is not None else plan.sensor.name
-                logger = logging.getLogger(named or plan.sensor.name)
-                made.append(system)
-                self._seed_noise(system, entity.name, f"{plan.link}/{plan.sensor.name}/{named}")
-                with self.bus.declaring(plugin_node_name(plan.plugin, entity.namespace)), config_reads() as reads:
-                    system.configure(
-                        SystemContext(
-                            self.world,
-                            entity,
-                            plan.plugin,
-                            self.bus,
-                            logger,
-                            sensor=plan.sensor,
-                            link=plan.link,
-                            world_name=self.world_name,
-                            spherical_coordinates=self.spherical_coordinates,
-                            magnetic_field=self.magnetic_field,
-                        )
-                    )
-                for problem in unread_parameters(plan.plugin, reads):
-                    logger.warning(problem)
-                self._announce_node(entity, system, plan.plugin)
-            if self.robot_state_publisher and (entity.model.joints or entity.model.urdf):
+            self._configure_sensors(entity, made)
+            if sim.robot_state_publisher and (entity.model.joints or entity.model.urdf):
                 logger = logging.getLogger(f"{entity.name}.robot_state_publisher")
                 config, plugin = robot_state_config(entity, logger)
                 if config.enabled:
                     rsp = RobotStatePublisher(config)
                     made.append(rsp)
-                    rsp.configure(SystemContext(self.world, entity, plugin, self.bus, logger))
+                    rsp.configure(SystemContext(sim.world, entity, plugin, sim.bus, logger))
         except Exception:
             self._undo_systems(entity.name, made)
             raise
         return made
 
+    def _configure_sensors(self, entity: Entity, made: list[System]) -> None:
+        """A system for each sensor of ``entity`` that something runs (its plugin, or a world sensor system),
+        each added to ``made`` before it configures (so a failure shuts it down with the others)."""
+        sim = self._sim
+        for plan in plan_sensors(entity.model, sim.world_plugins)[0]:
+            system = plan.make()
+            named = plan.plugin.name if plan.plugin is not None else plan.sensor.name
+            logger = logging.getLogger(named or plan.sensor.name)
+            made.append(system)
+            sim._seed_noise(system, entity.name, f"{plan.link}/{plan.sensor.name}/{named}")
+            with sim.bus.declaring(plugin_node_name(plan.plugin, entity.namespace)), config_reads() as reads:
+                system.configure(
+                    SystemContext(
+                        sim.world,
+                        entity,
+                        plan.plugin,
+                        sim.bus,
+                        logger,
+                        sensor=plan.sensor,
+                        link=plan.link,
+                        world_name=sim.world_name,
+                        spherical_coordinates=sim.spherical_coordinates,
+                        magnetic_field=sim.magnetic_field,
+                    )
+                )
+            for problem in unread_parameters(plan.plugin, reads):
+                logger.warning(problem)
+            self._announce_node(entity, system, plan.plugin)
+
     def _announce_node(self, entity: Entity, system: System, plugin: Plugin | None) -> None:
         """A gazebo_ros plugin is a ROS node of its own (its parameters: its configuration)."""
         node = plugin_node(system, plugin, entity.namespace)
         if node is not None:
-            self.bus.add_component(entity.name, node)
+            self._sim.bus.add_component(entity.name, node)
 
     def _undo_systems(self, name: str, systems: list[System]) -> None:
         """Shut down the systems of an entity that never made it into the world, and drop its endpoints."""
         for system in systems:
             _shutdown_system(system)
-        self.bus.remove_owner(name)
+        self._sim.bus.remove_owner(name)
 
-    def _attach(self, entity: Entity, systems: list[System]) -> None:
-        entity.systems.extend(systems)
-        for s in systems:
-            self.systems.add(entity.name, s)
+    # ------------------------------------------------------------------ the one sequence
+    def _add_batch(self, requests: list[StagedRequest], *, whole: bool) -> list[Entity | WorldError]:
+        """The one way entities come into the world: each model staged and its plugins configured, then all
+        committed with one MuJoCo recompile and their systems attached. Returns, per request, its entity or the
+        error that refused it.
 
-    def _add_world_models(self, models: list[Model]) -> None:
-        """The world file's models, staged and configured one by one and compiled into MuJoCo once: one
-        recompile a model made loading quadratic (gz-sim's 3k_shapes.sdf, 3,000 models: over 5 minutes).
-        Should the batch not compile, the models are added one at a time, so the error names its model."""
-        names = [m.name for m in models]
-        if len(models) < 2 or len(set(names)) != len(names):
-            for m in models:
-                self._add_entity(m, name=m.name, pose=Pose(), namespace="", spawned=False)
-            return
-        staged: list[tuple[Entity, list[System]]] = []
+        A model that fails its own checks or its plugins' configure is left out with its error (its staged
+        elements discarded, its systems shut down). A batch that does not compile is undone (each model's staged
+        elements and systems) and added again one model at a time, so an error names its model. ``whole`` (the
+        world file's models): no model may fail, so any refusal undoes the batch and adds it one at a time, and
+        the first model refused raises its error (the ones before it stay, the ones after are never tried). A
+        batch of one is not retried (a retry would be the same batch); with ``whole`` it raises its error."""
+        world = self._sim.world
+        staged = world.stage_many(requests)
+        out = list(staged)
+        ready: list[tuple[Entity, list[System]]] = []
+        for i, entity in enumerate(staged):
+            if isinstance(entity, WorldError):
+                continue
+            try:
+                ready.append((entity, self._configure_plugins(entity)))
+            except Exception as err:
+                world.discard(entity)
+                out[i] = build_failed(entity.name, err)
+        refused = [r for r in out if isinstance(r, WorldError)]
+        if refused and whole:
+            self._undo(ready)
+            if len(requests) == 1:
+                raise refused[0]
+            return self._one_at_a_time(requests, staged, whole)
         try:
-            for m in models:
-                entity = self.world.stage(m, name=m.name, X_WM=m.pose, namespace="", spawned=False)
-                try:
-                    systems = self._configure_plugins(entity)
-                except Exception as err:
-                    self.world.discard(entity)
-                    raise build_failed(m.name, err) from None
-                staged.append((entity, systems))
-            self.world.commit([e for e, _ in staged])
-        except WorldError:
-            for entity, systems in staged:
-                if entity.name not in self.world.entities:
-                    self.world.discard(entity)
-                    self._undo_systems(entity.name, systems)
-            if any(e.name in self.world.entities for e, _ in staged):
+            world.commit([e for e, _ in ready])
+        except WorldError as err:
+            self._undo(ready)
+            if len(requests) == 1:
+                if whole:
+                    raise
+                return [err]
+            if whole and any(e.name in world.entities for e, _ in ready):
                 raise  # committed, then refused (an overload): nothing to retry
-            for m in models:  # one at a time: the error names its model
-                self._add_entity(m, name=m.name, pose=Pose(), namespace="", spawned=False)
-            return
-        for entity, systems in staged:
-            self._attach(entity, systems)
+            return self._one_at_a_time(requests, staged, whole)
+        for entity, systems in ready:
+            entity.systems.extend(systems)
+            for system in systems:
+                self._sim.systems.add(entity.name, system)
+        return out
 
-    def _add_entity(
-        self, model: Model, *, name: str, pose: Pose, namespace: str, spawned: bool, X_WM: Pose | None = None
-    ) -> Entity:
-        """Stage the model, configure its systems, commit: the one way an entity comes into the world.
-        ``X_WM``, when given, is where its model frame goes (else ``pose`` composed with the file's own)."""
-        if spawned:
-            self._require_world()
-        placed = X_WM if X_WM is not None else pose * model.pose
-        entity = self.world.stage(model, name=name, X_WM=placed, namespace=namespace, spawned=spawned)
-        try:
-            systems = self._configure_plugins(entity)
-        except Exception as err:
-            self.world.discard(entity)
-            raise build_failed(name, err) from None
-        try:
-            self.world.commit([entity])
-        except WorldError:
-            self._undo_systems(name, systems)
-            raise
-        self._attach(entity, systems)
-        return entity
+    def _undo(self, ready: list[tuple[Entity, list[System]]]) -> None:
+        """Take back what a batch that failed staged and configured: each entity not in the world (a commit that
+        failed already took its elements out: discarding again finds nothing) discarded, its systems shut down."""
+        world = self._sim.world
+        for entity, systems in ready:
+            if entity.name not in world.entities:
+                world.discard(entity)
+                self._undo_systems(entity.name, systems)
+
+    def _one_at_a_time(
+        self, requests: list[StagedRequest], staged: list[Entity | WorldError], whole: bool
+    ) -> list[Entity | WorldError]:
+        """A batch that failed, added again one model at a time (each a batch of one); a model the batch's staging
+        refused keeps that error (a taken name, a bad pose, a description that does not build) unless ``whole``,
+        where every model is tried again and the first refusal raises."""
+        out: list[Entity | WorldError] = []
+        for request, tried in zip(requests, staged):
+            if isinstance(tried, WorldError) and not whole:
+                out.append(tried)
+                continue
+            try:
+                out += self._add_batch([request], whole=whole)
+            except WorldError as err:
+                if whole:
+                    raise
+                out.append(err)
+        return out
 
     def _require_world(self) -> None:
         """Refuse a spawn while no world is loaded (after an unload: see :mod:`._world_swap`)."""
-        if self.worlds.current is None:
+        if not self._loaded():
             raise WorldError(
                 ErrorKind.INCORRECT_STATE, "no world is loaded (it was unloaded): load one before spawning entities"
             )
 
+    # ------------------------------------------------------------------ on the simulation thread
+    def add_world_models(self, models: list[Model]) -> None:
+        """The world file's models, staged and configured one by one and compiled into MuJoCo once: one
+        recompile a model made loading quadratic (gz-sim's 3k_shapes.sdf, 3,000 models: over 5 minutes).
+        Should the batch not compile, the models are added one at a time, so the error names its model
+        (on the simulation thread: the constructor's, or a load's).
+
+        Raises:
+            WorldError: the first model that cannot be added (the ones before it are in the world).
+        """
+        names = [m.name for m in models]
+        if len(models) < 2 or len(set(names)) != len(names):
+            for m in models:
+                self.add_entity(m, name=m.name, pose=Pose(), namespace="", spawned=False)
+            return
+        self._add_batch([StagedRequest(m, m.name, m.pose, "", spawned=False) for m in models], whole=True)
+
+    def add_entity(
+        self, model: Model, *, name: str, pose: Pose, namespace: str, spawned: bool, X_WM: Pose | None = None
+    ) -> Entity:
+        """Stage the model, configure its systems, commit (on the simulation thread). ``X_WM``, when given, is
+        where its model frame goes (else ``pose`` composed with the file's own)."""
+        if spawned:
+            self._require_world()
+        placed = X_WM if X_WM is not None else pose * model.pose
+        (entity,) = self._add_batch([StagedRequest(model, name, placed, namespace, spawned)], whole=True)
+        assert isinstance(entity, Entity)  # a batch of one raises its error
+        return entity
+
+    # ------------------------------------------------------------------ thread-safe (Simulation's own)
     def add_entity_placed(
         self, model: Model, name: str, X_WM: Pose, namespace: str = "", *, spawned: bool = True
     ) -> Entity:
-        """Add a model with its model frame at ``X_WM`` (the file's own pose already composed in), as a
-        checkpoint recorded it (thread-safe).
-
-        Args:
-            model: the model as loaded.
-            name: its entity's name.
-            X_WM: the model frame in the world: :meth:`spawn`'s ``pose`` composed with the model's own.
-            namespace: its ROS namespace.
-            spawned: whether a reset with ``spawned`` removes it (spawned at run time) or keeps it (one of the
-                world file's own models).
-        """
+        """:meth:`Simulation.add_entity_placed`: a model added with its model frame at ``X_WM`` (thread-safe)."""
         prepare_meshes(model)
-        return self.call(
-            lambda: self._add_entity(model, name=name, pose=Pose(), namespace=namespace, spawned=spawned, X_WM=X_WM)
+        return self._sim.call(
+            lambda: self.add_entity(model, name=name, pose=Pose(), namespace=namespace, spawned=spawned, X_WM=X_WM)
         )
 
     def spawn(self, model: Model, *, name: str | None = None, pose: Pose = Pose(), namespace: str = "") -> Entity:
-        """Add a model (thread-safe), as gazebo_ros's ``/spawn_entity`` and simulation_interfaces'
-        ``SpawnEntity`` do: the model's plugins configured, its ros2_control started, its topics declared,
-        all in the simulation thread's next gap between blocks.
-
-        Args:
-            model: a loaded robot or model (:func:`gazelle.description.load`).
-            name: the entity's name (None: the model's own); it must not be taken.
-            pose: where the model frame goes in the world, composed with the file's own ``<pose>`` (an SDF
-                model's), as Gazebo places a spawned model: the request's pose times the model's.
-            namespace: the ROS namespace of its topics and controller manager (``-robot_namespace``).
-
-        Returns:
-            The new entity.
-
-        Raises:
-            WorldError: on a duplicate/invalid name, a bad pose or a model that cannot be built; the world is
-                then as it was (bit-identical: nothing of the model is left in it).
-        """
+        """:meth:`Simulation.spawn`: a model added at run time (thread-safe)."""
         prepare_meshes(model)  # slow work (convex decompositions) here, in the caller's thread
-        return self.call(
-            lambda: self._add_entity(model, name=name or model.name, pose=pose, namespace=namespace, spawned=True)
+        return self._sim.call(
+            lambda: self.add_entity(model, name=name or model.name, pose=pose, namespace=namespace, spawned=True)
         )
 
     def delete(self, name: str) -> None:
-        """Remove an entity and its systems (thread-safe).
-
-        Raises:
-            WorldError: no such entity.
-        """
+        """:meth:`Simulation.delete`: an entity and its systems removed (thread-safe)."""
+        sim = self._sim
 
         def do() -> None:
             """On the simulation thread: the entity's systems, then its topics, then its bodies, so no system runs
             on an entity that is gone."""
-            if name not in self.world.entities:
+            if name not in sim.world.entities:
                 raise WorldError(ErrorKind.NOT_FOUND, f"entity '{name}' does not exist")
-            self.systems.remove_owner(name)
-            self.bus.remove_owner(name)
-            self.world.remove_entity(name)
-            self.diverged.pop(name, None)
-            self._divergence_log.pop(name, None)
+            sim.systems.remove_owner(name)
+            sim.bus.remove_owner(name)
+            sim.world.remove_entity(name)
+            sim._forget_divergence(name)
 
-        self.call(do)
+        sim.call(do)
 
-    # ------------------------------------------------------------------ batch spawning (simulation_interfaces)
     def spawn_many(self, requests: list[SpawnRequest], timeout: float | None = 60.0) -> list[Entity | WorldError]:
-        """Add several models in one sim-thread call with one recompile (thread-safe): simulation_interfaces'
-        batch spawn, where a MuJoCo model rebuilt once for N models costs what one spawn does (a chessboard's
-        32 pieces).
-
-        Args:
-            requests: the models with their names, poses and namespaces (:class:`SpawnRequest`).
-            timeout: wall seconds to wait for the simulation thread (None: for ever).
-
-        Returns:
-            Per request, in order, the new entity or the :class:`WorldError` that refused it: one bad model
-            never takes the others with it.
-        """
+        """:meth:`Simulation.spawn_many`: several models, one recompile (thread-safe)."""
         for request in requests:
             prepare_meshes(request.model)
-        return self.call(lambda: self._spawn_many(requests), timeout=timeout)
+        return self._sim.call(lambda: self._spawn_many(requests), timeout=timeout)
 
     def _spawn_many(self, requests: list[SpawnRequest]) -> list[Entity | WorldError]:
         """Add several models with one MuJoCo recompile (SpawnEntities): names made unique where renaming is
-        allowed, each staged and its plugins configured, then all committed together. A model whose plugins fail
-        to configure is left out alone; if the combined build fails, each is added on its own, so one bad model
-        never takes the others with it. Returns, per request, the entity or the error."""
+        allowed, then one batch (:meth:`_add_batch`), so one bad model never takes the others with it. Returns,
+        per request, the entity or the error."""
         try:
             self._require_world()
         except WorldError as err:
             return [err] * len(requests)
-        taken = set(self.world.entities)
+        taken = set(self._sim.world.entities)
         names: list[str] = []
         for r in requests:
             name = r.name or r.model.name
@@ -338,39 +331,5 @@ class SpawningMixin:
                 name = f"{name}_{i}"
             taken.add(name)
             names.append(name)
-        staged = self.world.stage_many(
-            [StagedRequest(r.model, name, r.pose * r.model.pose, r.namespace) for r, name in zip(requests, names)]
-        )
-        out: list[Entity | WorldError] = []
-        ready: list[tuple[Entity, list[System]]] = []
-        for res, name in zip(staged, names):
-            if isinstance(res, WorldError):
-                out.append(res)
-                continue
-            try:
-                systems = self._configure_plugins(res)
-            except Exception as err:
-                self.world.discard(res)
-                out.append(build_failed(name, err))
-                continue
-            ready.append((res, systems))
-            out.append(res)
-        try:
-            self.world.commit([e for e, _ in ready])
-        except WorldError:
-            # the combined build failed: undo every configure, then add one at a time
-            for e, systems in ready:
-                self._undo_systems(e.name, systems)
-            out = []
-            for r, name, res in zip(requests, names, staged):
-                if isinstance(res, WorldError):
-                    out.append(res)
-                    continue
-                try:
-                    out.append(self._add_entity(r.model, name=name, pose=r.pose, namespace=r.namespace, spawned=True))
-                except WorldError as err:
-                    out.append(err)
-            return out
-        for e, systems in ready:
-            self._attach(e, systems)
-        return out
+        batch = [StagedRequest(r.model, name, r.pose * r.model.pose, r.namespace) for r, name in zip(requests, names)]
+        return self._add_batch(batch, whole=False)

@@ -23,15 +23,13 @@ import functools
 import logging
 import threading
 from collections.abc import Callable, Iterator
-from typing import TYPE_CHECKING
 
 from ..description import World
-from ..physics import ErrorKind, PhysicsWorld, WorldError, prepare_meshes
+from ..physics import ErrorKind, WorldError, prepare_meshes
 from ..systems import audit_world
+from ._host import SimulationHost
 from ._runtime_types import LoadedWorld, WorldBusy
-
-if TYPE_CHECKING:
-    from ._simulation import Simulation
+from ._spawning import Spawner
 
 MAX_WORLD_MODELS = 4096
 """The most models a world loaded at run time may place (gz-sim's 3k_shapes.sdf has 3,000): a world of ten
@@ -74,10 +72,11 @@ def empty_world(like: World) -> World:
 class WorldSwap:
     """The simulation's current world and the one way to replace it (see the module docstring)."""
 
-    def __init__(self, sim: Simulation, world: World, rtf: float | None):
-        """``world`` is the one ``sim`` was built with; ``rtf`` the real-time factor asked for (None: each
-        world's own, taken again at every load)."""
+    def __init__(self, sim: SimulationHost, spawner: Spawner, world: World, rtf: float | None):
+        """``world`` is the one ``sim`` was built with, ``spawner`` the part that adds a world's models to it;
+        ``rtf`` the real-time factor asked for (None: each world's own, taken again at every load)."""
         self._sim = sim
+        self._spawner = spawner
         self._rtf = rtf
         self.first = LoadedWorld(world.name, world.source_file, world)
         """The world the process started with: ``gazelle sim WORLD``'s first load."""
@@ -175,52 +174,19 @@ class WorldSwap:
     def _unload(self) -> None:
         if self.current is None:
             raise WorldError(ErrorKind.NOT_FOUND, "no world is loaded")
-        self._install(empty_world(self._sim.world.description))
+        self._sim._install_world(empty_world(self._sim.world.description), self._rtf)
         self.current = None
 
     def _swap(self, world: World, uri: str) -> LoadedWorld:
         """On the simulation thread: the old world out, ``world`` in (its models as at start-up)."""
         self.current = None
-        self._install(world)
+        self._sim._install_world(world, self._rtf)
         for problem in audit_world(World(name=world.name, plugins=world.plugins)):
             _log.warning(problem.format())
         try:
-            self._sim._add_world_models(list(world.models))
+            self._spawner.add_world_models(list(world.models))
         except WorldError:
-            self._install(empty_world(world))  # what was added goes: no half world is left loaded
+            self._sim._install_world(empty_world(world), self._rtf)  # what was added goes: no half world is left
             raise
         self.current = LoadedWorld(world.name, uri, world)
         return self.current
-
-    def _install(self, world: World) -> None:
-        """Take every entity out the way a delete does, then start ``world``'s physics (no models yet), its
-        clock at zero, paused."""
-        from ._simulation import MAX_BLOCK_SEC  # the module that imports this one
-
-        sim = self._sim
-        for name in list(sim.world.entities):
-            sim.systems.remove_owner(name)
-            sim.bus.remove_owner(name)
-        with sim._inbox_lock:  # messages for the systems that just went
-            sim._inbox.clear()
-        sim.diverged.clear()
-        sim._divergence_log.clear()
-        sim._rtf_window.clear()
-        generation = sim.world.generation
-        sim.world = PhysicsWorld(world, visual_geoms=sim.visual_geoms)
-        # generations go on counting: what is cached against the old world's (the replay's body index, a
-        # handle's indices) must not look current in the new one
-        sim.world.generation = generation + 1
-        sim.world_name = world.name
-        sim.world_plugins = world.plugins
-        sim.spherical_coordinates = world.spherical_coordinates
-        sim.magnetic_field = world.magnetic_field
-        if self._rtf is None:
-            physics = world.physics
-            sim.rtf = 0.0 if physics.real_time_update_rate_hz == 0 else physics.real_time_factor
-        sim.max_block_steps = max(1, round(MAX_BLOCK_SEC / sim.world.timestep))
-        sim.paused = True
-        sim.iterations = 0
-        for listener in sim.step_listeners:
-            listener.gate.reset()
-        sim._reanchor()

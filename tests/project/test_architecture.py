@@ -395,11 +395,7 @@ _BUILTIN_EXCEPTIONS = frozenset(
     name for name, value in vars(builtins).items() if isinstance(value, type) and issubclass(value, BaseException)
 )
 
-ERRORS_OUTSIDE_THE_ROOT = {
-    # gazelle/ros/_gazebo_services.py is being reworked with SimulationNode (issue 53, another helper's part);
-    # to be removed when that lands: SpawnFailed then derives from SimError like every other error
-    "gazelle/ros/_gazebo_services.py:SpawnFailed",
-}
+ERRORS_OUTSIDE_THE_ROOT: set[str] = set()
 """Exception classes not yet under :class:`SimError`; each is a to-do, not a rule."""
 
 
@@ -456,15 +452,9 @@ def test_the_error_check_finds_a_stray_error_and_a_twin(tmp_path: Path) -> None:
 
 
 # --------------------------------------------------------------------------- one class, one file
-MIXIN_CHAINS_TO_UNDO = {
-    # To be removed as each is reworked into composition (issue 53, section 2), as move_group was (a context and
-    # one capability per file); Simulation and SimulationNode are next:
-    "gazelle/sim/_simulation.py:Simulation": ("SpawningMixin",),
-    "gazelle/ros/_bridge.py:SimulationNode": ("GazeboServices",),
-    "gazelle/ros/_simulation_interfaces.py:SimulationInterfaces": ("EntityQueries",),
-    # found by this check beside those the issue names; to be removed when each is made a composition too
-    "gazelle/physics/_world.py:PhysicsWorld": ("WorldState",),
-    "gazelle/physics/_state.py:WorldState": ("WorldQueries",),
+MIXIN_CHAINS_TO_UNDO: dict[str, tuple[str, ...]] = {
+    # empty: every class the check found split over files by a chain of bases is a composition now (issue 53),
+    # as move_group is (a context and parts); a new entry is a new class split across files
 }
 SUBCLASSES_BY_DESIGN = {
     # ur_controllers' ScaledJointTrajectoryController is a subclass of ros2_controllers' JTC upstream too
@@ -535,23 +525,6 @@ def test_the_mixin_chain_check_finds_a_planted_chain(tmp_path: Path) -> None:
 
 # --------------------------------------------------------------------------- no circle inside a package
 IMPORT_CIRCLES_TO_UNDO = {
-    # type-only: the handles and servo plans name the world that makes them (a protocol would narrow the public
-    # PerGeneration's type); to be removed when the physics package is given one
-    ("gazelle/physics/_handles.py", "gazelle/physics/_servo_plan.py", "gazelle/physics/_world.py"),
-    # SimulationNode and the simulation_interfaces node are being reworked (issue 53): the parts of the standard
-    # served by classes of their own name the node that builds them (type-only)
-    (
-        "gazelle/ros/_bridge.py",
-        "gazelle/ros/_entity_bounds.py",
-        "gazelle/ros/_entity_info.py",
-        "gazelle/ros/_named_poses.py",
-        "gazelle/ros/_scene_publisher.py",
-        "gazelle/ros/_simulation_interfaces.py",
-        "gazelle/ros/_spawnables.py",
-        "gazelle/ros/_world_services.py",
-    ),
-    # the world swap is a part of Simulation and names it (type-only, and one constant); goes with SpawningMixin
-    ("gazelle/sim/_simulation.py", "gazelle/sim/_spawning.py", "gazelle/sim/_world_swap.py"),
     # type-only: move_group's context names the scene monitor, pipeline and execution manager it holds, and each
     # of them is given the context (MoveIt's MoveGroupContext holds them the same way); to be removed when the
     # parts take a protocol of what they use instead of the context's class

@@ -41,7 +41,7 @@ class ContactSensor(_SensorSystem):
     def __init__(self, seed: int | None = None) -> None:
         super().__init__(seed)
         self.collisions: tuple[str, ...] = ()
-        self._geoms: PerGeneration[frozenset[int]] | None = None
+        self._geoms: PerGeneration[PhysicsWorld, frozenset[int]] | None = None
         self._only_contacts = False
         """Publish only while there are contacts (gz-sim); gazebo_ros_bumper publishes every update."""
 
