@@ -1,9 +1,9 @@
 """Every demo launch file of ros-controls/gz_ros2_control (jazzy) gz_ros2_control_demos, unchanged (issue 49): each
 starts with `ros2 launch` after `colcon build --symlink-install`, its controllers come up, and the command its
 README pairs with it moves the robot as the example intends. The examples (`ros2 run gz_ros2_control_demos
-example_*`) are C++ nodes gazelle cannot build (no rclcpp: each is one line at build time, see the diff drive
-test), so the test sends what each example's source sends (examples/example_*.cpp, cited at each helper),
-on the same topic or action. The diff drive demo is test_repo_gz_ros2_control_demos.py.
+example_*`) are C++ nodes; the test sends what each example's source sends (examples/example_*.cpp, cited at
+each helper), on the same topic or action, and judges the motion while it does (the diff drive test runs the
+real example_diff_drive). The diff drive demo is test_repo_gz_ros2_control_demos.py.
 
 Demos are grouped so that one workspace build serves several launch files, started one after another on the
 test's domain (each stopped with Ctrl-C before the next starts, as a user would)."""
@@ -27,8 +27,11 @@ from ._real_repos import Topic, colcon_build, launch, stop, workspace
 pytestmark = pytest.mark.slow
 
 
-def _demo_workspace(tmp_path: Path) -> Path:
-    ws = workspace(tmp_path, "gz_ros2_control", ["gz_ros2_control_demos"])
+@pytest.fixture(scope="module")
+def demos_ws(tmp_path_factory: pytest.TempPathFactory, cpp_tier: None) -> Path:
+    """One `colcon build --symlink-install` of the demos for the whole module (its six rclcpp example nodes
+    compile: ~30 s on this 2-core machine)."""
+    ws = workspace(tmp_path_factory.mktemp("demos"), "gz_ros2_control", ["gz_ros2_control_demos"])
     colcon_build(ws)
     return ws
 
@@ -162,9 +165,9 @@ def _gripper_example(ros: RosClient, joints: Joints, effort: bool) -> None:
         ("pendulum_example_effort.launch.py", "effort_controller", "effort"),
     ],
 )
-def test_cart_and_pendulum_demos_move_as_their_examples_say(tmp_path, ros_client, launch_file, controller, example):
+def test_cart_and_pendulum_demos_move_as_their_examples_say(demos_ws, ros_client, launch_file, controller, example):
     joints = Joints(ros_client)
-    ws = _demo_workspace(tmp_path)
+    ws = demos_ws
     proc = _start(ws, launch_file, "joint_state_broadcaster", controller)
     try:
         if example == "position":
@@ -178,11 +181,11 @@ def test_cart_and_pendulum_demos_move_as_their_examples_say(tmp_path, ros_client
 
 
 @pytest.mark.parametrize("kind", ["position", "effort"])
-def test_gripper_demos_open_and_close_the_gripper(tmp_path, ros_client, kind):
+def test_gripper_demos_open_and_close_the_gripper(demos_ws, ros_client, kind):
     """gripper_mimic_joint_example_{position,effort}.launch.py. Their .launch.xml twins are not run: gazelle's
     launch has no XML front end yet (it refuses them in one line)."""
     joints = Joints(ros_client)
-    ws = _demo_workspace(tmp_path)
+    ws = demos_ws
     proc = _start(ws, f"gripper_mimic_joint_example_{kind}.launch.py", "joint_state_broadcaster", "gripper_controller")
     try:
         _gripper_example(ros_client, joints, kind == "effort")
@@ -223,11 +226,11 @@ def _arc_check(ros: RosClient, entity: str, odom: Topic, send: Any, v: float, w:
         assert truth == pytest.approx(gone(), rel=0.15), said
 
 
-def test_tricycle_and_ackermann_demos_drive_the_arc_their_examples_command(tmp_path, ros_client):
+def test_tricycle_and_ackermann_demos_drive_the_arc_their_examples_command(demos_ws, ros_client):
     """tricycle_drive_example.launch.py and ackermann_drive_example.launch.py with ros2_controllers' tricycle and
     Ackermann steering controllers, each driven with its example's command for 1 m of odometry (~40 s in all on
     this 2-core machine: two servers, and the tricycle's 0.2 m/s)."""
-    ws = _demo_workspace(tmp_path)
+    ws = demos_ws
     cases = [
         # examples/example_tricycle_drive.cpp: /tricycle_controller/cmd_vel, 0.2 m/s and 0.1 rad/s every 50 ms
         (
