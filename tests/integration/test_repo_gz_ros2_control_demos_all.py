@@ -116,7 +116,7 @@ def _position_example(ros: RosClient, joints: Joints, proc: Proc) -> None:
     0 m at 1, 2 and 3 s (goal_time_tolerance 1 s): the cart swings through the points and the goal succeeds."""
     from builtin_interfaces.msg import Duration
     from control_msgs.action import FollowJointTrajectory
-    from rclpy.action import ActionClient
+    from rclpy.action.client import ActionClient
     from trajectory_msgs.msg import JointTrajectoryPoint
 
     client = ActionClient(ros.node, FollowJointTrajectory, "/joint_trajectory_controller/follow_joint_trajectory")

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import logging
 import math
+from typing import Any
 
 import pytest
 
@@ -29,7 +30,7 @@ ACKERMANN = {
 }
 
 
-def _controller(type_name: str, params: dict, joints: tuple[str, ...]):
+def _controller(type_name: str, params: dict, joints: tuple[str, ...]) -> Any:
     states = tuple(f"{j}/{k}" for j in joints for k in ("position", "velocity"))
     commands = tuple(f"{j}/{k}" for j in joints for k in ("position", "velocity"))
     ctx = ControllerContext(Bus(), "r", "", logging.getLogger("test"), states, commands, joints)
