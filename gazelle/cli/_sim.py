@@ -249,7 +249,20 @@ def _serve(
 ) -> int:
     """Until a signal asks to stop (0) or a part of the server died (1, said on stderr): never a deaf
     server that looks alive."""
+    from ..ros import LAUNCH_ID_VAR, launch_ended
+
+    launch_id = os.environ.get(LAUNCH_ID_VAR, "")
+    ticks = 0
     while not stop.wait(0.1):
+        ticks += 1
+        if launch_id and ticks % 10 == 0 and launch_ended(launch_id):
+            domain = os.environ.get("ROS_DOMAIN_ID", "0")
+            print(
+                f"gazelle: the ros2 launch that started this server (pid {launch_id.split(':')[0]}) has ended without "
+                f"stopping it; exiting, so that the next launch on ROS_DOMAIN_ID={domain} gets its own server",
+                file=sys.stderr,
+            )
+            return 1
         if write_replay.is_set():
             write_replay.clear()
             if replays is not None:

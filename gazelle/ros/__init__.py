@@ -26,7 +26,7 @@ if TYPE_CHECKING:
     from ._definitions import definition_path as interface_file
     from ._definitions import full_text as message_definition
     from ._definitions import message_class
-    from ._exposure import choose_discovery_range
+    from ._exposure import LAUNCH_ID_VAR, choose_discovery_range, launch_ended, new_launch_id
     from ._gui_stand_ins import gui_stand_in_main, image_bridge_main
     from ._interfaces import InterfaceError, resolve_interface, split_type_name
     from ._names import gz_topic_on_ros
@@ -88,6 +88,9 @@ __all__ = [
     "split_type_name",
     "message_definition",
     "choose_discovery_range",
+    "LAUNCH_ID_VAR",
+    "launch_ended",
+    "new_launch_id",
     "gui_stand_in_main",
     "gz_topic_on_ros",
     "image_bridge_main",

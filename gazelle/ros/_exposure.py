@@ -11,6 +11,12 @@ One server per domain. Two servers on one domain would both answer every ``/spaw
 and spawn every robot twice. Each server announces itself on a hidden latched topic; a server
 that hears of one started before it says so and stops (exit status 1), and the older keeps
 serving. The newer one is told the older's host, process id and start time.
+
+A server its ``ros2 launch`` left behind. gazelle's ``ros2 launch`` names itself to every process it starts
+(:data:`LAUNCH_ID_VAR`: its process id and start time), and a server started by a launch announces that name.
+A server whose launch has ended (Ctrl-C that did not reach it, a killed terminal, a launch killed with
+SIGKILL) stops by itself within a second, saying why (:func:`launch_ended`): otherwise it would keep the domain
+and the next launch's own server would yield to it, and that launch's robot would spawn into the old world.
 """
 
 from __future__ import annotations
@@ -30,6 +36,8 @@ if TYPE_CHECKING:
     from rclpy.node import Node
 
 DISCOVERY_VARIABLES = ("ROS_AUTOMATIC_DISCOVERY_RANGE", "ROS_LOCALHOST_ONLY", "ROS_STATIC_PEERS")
+LAUNCH_ID_VAR = "GAZELLE_LAUNCH_ID"
+"""Set by gazelle's ``ros2 launch`` for the processes it starts: ``<pid>:<start time in clock ticks>``."""
 ANNOUNCE_TOPIC = "/_gazelle/servers"
 """Hidden (a leading underscore): ``ros2 topic list`` shows it only with ``--include-hidden-topics``."""
 
@@ -48,6 +56,33 @@ def choose_discovery_range(requested: str | None, environ: dict[str, str] | os._
         return ", ".join(f"{v}={environ[v]}" for v in chosen) + " (from the environment)"
     environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
     return "LOCALHOST (default of gazelle sim; --ros-discovery subnet opens it)"
+
+
+def _start_ticks(pid: int) -> str | None:
+    """The process's start time in clock ticks since boot (``/proc/<pid>/stat`` field 22), which tells a process
+    from a later one given the same id; None when there is no such process (or no /proc)."""
+    try:
+        with open(f"/proc/{pid}/stat", encoding="ascii", errors="replace") as f:
+            stat = f.read()
+    except OSError:
+        return None
+    # the command name (field 2) is in parentheses and may hold spaces: count fields after its last ")"
+    fields = stat.rsplit(")", 1)[-1].split()
+    return fields[19] if len(fields) > 19 else None
+
+
+def new_launch_id(pid: int) -> str:
+    """The name a launch gives its processes (:data:`LAUNCH_ID_VAR`)."""
+    return f"{pid}:{_start_ticks(pid) or ''}"
+
+
+def launch_ended(launch_id: str) -> bool:
+    """Whether the launch named ``launch_id`` has ended: its process is gone, or the id is now another process's.
+    False when it runs, or when this machine cannot tell (no /proc, an id that is not gazelle's form)."""
+    pid_text, sep, ticks = launch_id.partition(":")
+    if not sep or not pid_text.isdigit() or not ticks or not os.path.isdir("/proc/self"):
+        return False
+    return _start_ticks(int(pid_text)) != ticks
 
 
 @dataclass(frozen=True, order=True)
@@ -83,7 +118,13 @@ class ServerRegistry:
 
     def _announce(self, **extra: str) -> None:
         """Publish who this server is (latched), with ``extra`` facts such as its viewer's address."""
-        me = {"started": self.me.started, "host": self.me.host, "pid": self.me.pid, **extra}
+        me = {
+            "started": self.me.started,
+            "host": self.me.host,
+            "pid": self.me.pid,
+            "launch": os.environ.get(LAUNCH_ID_VAR, ""),
+            **extra,
+        }
         self._pub.publish(String(data=json.dumps(me)))
 
     def announce_viewer(self, url: str) -> None:

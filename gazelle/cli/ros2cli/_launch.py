@@ -147,6 +147,10 @@ def run_launch_file(
         for e in ld.entities:
             print(type(e).__name__)
         return 0
+    from gazelle.ros import LAUNCH_ID_VAR, new_launch_id
+
+    # every process this launch starts knows it (a server it started stops if the launch ends without it)
+    os.environ.setdefault(LAUNCH_ID_VAR, new_launch_id(os.getpid()))
     log("INFO", "launch", f"All log files can be found below {os.path.expanduser('~/.ros/log')}")
     log("INFO", "launch", "Default logging verbosity is set to INFO")
     service = LaunchService(argv=[f"{k}:={v}" for k, v in launch_args], debug=debug)

@@ -18,6 +18,7 @@ if TYPE_CHECKING:
     from ._controller import Controller as Controller
     from ._controller import GoalState as GoalState
     from ._controller_parameters import ControllerParameters as ControllerParameters
+    from ._controller_types import CONTROLLER_TYPES as CONTROLLER_TYPES
     from ._goal import TrajectoryGoal as TrajectoryGoal
     from ._goal import TrajectoryResult as TrajectoryResult
     from ._gripper import GripperActionController as GripperActionController
@@ -25,7 +26,6 @@ if TYPE_CHECKING:
     from ._hardware import ControlError as ControlError
     from ._hardware import SimHardware as SimHardware
     from ._manager import BEST_EFFORT as BEST_EFFORT
-    from ._manager import CONTROLLER_TYPES as CONTROLLER_TYPES
     from ._manager import STRICT as STRICT
     from ._manager import ControllerManager as ControllerManager
     from ._params import ParamsError as ParamsError

@@ -35,7 +35,7 @@ from dataclasses import dataclass, field
 from typing import Any, ClassVar, TypeVar
 
 from ...description import Joint, JointType
-from .._bus import Bus, Endpoint, MsgType, Qos, remap_name
+from .._bus import Bus, Endpoint, MessageKind, MsgType, Qos, remap_name
 from ._hardware import ControlError
 from ._params import Params
 
@@ -174,15 +174,17 @@ class Controller:
         after the node's remapping rules (:func:`~gazelle.systems._bus.remap_name`)."""
         return remap_name(name, self.ctx.namespace, self.name, self.ctx.remaps)
 
-    def advertise(self, name: str, msg_type: MsgType, qos: Qos = Qos.DEFAULT, depth: int = 10) -> Endpoint:
+    def advertise(self, name: str, msg_type: MessageKind, qos: Qos = Qos.DEFAULT, depth: int = 10) -> Endpoint:
         """A publisher of the controller's, removed at cleanup."""
         ep = self.ctx.bus.advertise(self.ctx.owner, self.topic(name), msg_type, qos=qos, depth=depth)
         self._endpoints.append(ep)
         return ep
 
-    def subscribe(self, name: str, msg_type: MsgType, callback: Callable[[Any], None], depth: int = 10) -> Endpoint:
+    def subscribe(
+        self, name: str, msg_type: MsgType, callback: Callable[[Any], None], depth: int = 10, qos: Qos = Qos.DEFAULT
+    ) -> Endpoint:
         """A subscription of the controller's, removed at cleanup."""
-        ep = self.ctx.bus.subscribe(self.ctx.owner, self.topic(name), msg_type, callback, depth=depth)
+        ep = self.ctx.bus.subscribe(self.ctx.owner, self.topic(name), msg_type, callback, qos=qos, depth=depth)
         self._endpoints.append(ep)
         return ep
 

@@ -31,15 +31,6 @@ from .._bus import remap_problem
 from .._plugin_config import child_text, parse_bool, remap_arguments, ros_remaps
 from .._registration import add_plugin
 from ._blocks import PlannedBlocks
-from ._broadcasters import (
-    ForceTorqueSensorBroadcaster,
-    ForwardCommandController,
-    ImuSensorBroadcaster,
-    JointGroupEffortController,
-    JointGroupPositionController,
-    JointGroupVelocityController,
-    JointStateBroadcaster,
-)
 from ._controller import (
     ACTIVE,
     FINALIZED,
@@ -51,8 +42,7 @@ from ._controller import (
     position_limits,
 )
 from ._controller_parameters import ControllerParameters
-from ._diff_drive import DiffDriveController
-from ._gripper import EffortGripperActionController, GripperActionController
+from ._controller_types import CONTROLLER_TYPES
 from ._hardware import ControlError, SimHardware, UpdateFailed
 from ._params import (
     Params,
@@ -63,27 +53,6 @@ from ._params import (
     parse_params,
     valid_controller_name,
 )
-from ._scaled_trajectory import ScaledJointTrajectoryController
-from ._trajectory import JointTrajectoryController
-
-CONTROLLER_TYPES: dict[str, type[Controller]] = {
-    c.type_name: c
-    for c in (
-        JointStateBroadcaster,
-        DiffDriveController,
-        JointTrajectoryController,
-        ScaledJointTrajectoryController,
-        ForwardCommandController,
-        JointGroupPositionController,
-        JointGroupVelocityController,
-        JointGroupEffortController,
-        GripperActionController,
-        EffortGripperActionController,
-        ImuSensorBroadcaster,
-        ForceTorqueSensorBroadcaster,
-    )
-}
-"""Controller types this manager can load, by their ``package/Class`` name."""
 
 DEFAULT_UPDATE_RATE = 100
 """ros2_control's default ``update_rate`` (Hz)."""
