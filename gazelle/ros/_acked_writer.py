@@ -31,9 +31,12 @@ from __future__ import annotations
 import logging
 import time
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rclpy.duration import Duration
+
+if TYPE_CHECKING:
+    from rclpy.publisher import Publisher
 
 _log = logging.getLogger("gazelle.ros")
 
@@ -52,7 +55,7 @@ class AckedWriter:
 
     def __init__(
         self,
-        publisher: Any,
+        publisher: Publisher,
         window: int,
         *,
         waiting: Callable[[], bool] = lambda: True,

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import threading
 import time
-from typing import Any
+from typing import TYPE_CHECKING
 
 from gazebo_msgs.srv import DeleteEntity as GzDeleteEntity
 from gazebo_msgs.srv import DeleteModel as GzDeleteModel
@@ -36,6 +36,10 @@ from ._convert import from_pose_msg, to_pose_msg, to_time
 from ._replies import guarded_service, serve, with_warnings
 from ._spawn_entity import with_joint_state_publisher, with_robot_state_options
 from ._spawn_preamble import SpawnFailed, check_pose, frame_in_world, model_to_spawn
+
+if TYPE_CHECKING:
+    from rclpy.impl.rcutils_logger import RcutilsLogger
+    from rclpy.service import Service
 
 RSP_WATCH_SEC = 30.0
 """How long after a spawn the user's robot_state_publisher may still appear and take the robot's TF over."""
@@ -74,11 +78,11 @@ class GazeboServices:
         node.create_timer(0.5, self._watch_for_user_publishers, callback_group=callback_group)
         self.services = self._serve_gazebo_services()
 
-    def get_logger(self) -> Any:
+    def get_logger(self) -> RcutilsLogger:
         """The node's logger (gazebo_ros's services log as the ``gazelle`` node)."""
         return self.node.get_logger()
 
-    def _serve_gazebo_services(self) -> list[Any]:
+    def _serve_gazebo_services(self) -> list[Service]:
         """gazebo_ros's services (ROS 2 names, and ROS 1's that the seed's chessboard spawner calls)."""
         served = []
         for srv_type, name, cb in (

@@ -6,12 +6,17 @@ import logging
 import threading
 import time
 import warnings
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 
 from ..description import reply_text
+
+if TYPE_CHECKING:
+    from rclpy.callback_groups import CallbackGroup
+    from rclpy.node import Node
+    from rclpy.service import Service
 
 
 def failure_reply(res: Any, message: str) -> Any:
@@ -69,14 +74,16 @@ at once lost one reply in a loaded test run ("no reply in 30 s"). The request si
 so a burst of callers is not cut to the last ten."""
 
 
-def serve(node: Any, srv_type: Any, name: str, callback: Any, callback_group: Any) -> Any:
+def serve(node: Node, srv_type: Any, name: str, callback: Any, callback_group: CallbackGroup | None) -> Service:
     """``node.create_service`` with :data:`SERVICE_QOS`, its lost replies offered again
     (:func:`resend_lost_replies`); returns the service."""
     service = node.create_service(srv_type, name, callback, qos_profile=SERVICE_QOS, callback_group=callback_group)
     return resend_lost_replies(service, name)
 
 
-def serve_action(node: Any, action_type: Any, name: str, execute: Any, callback_group: Any, accept: Any = None) -> Any:
+def serve_action(
+    node: Node, action_type: Any, name: str, execute: Any, callback_group: CallbackGroup | None, accept: Any = None
+) -> ActionServer:
     """An rclpy ActionServer for ``action_type`` on ``name``: ``execute`` runs an accepted goal, ``accept(goal)``
     says whether a goal is taken (None: every goal, as MoveIt's and simulation_interfaces' servers do), and a
     cancel request is always accepted (the execute callback decides how the goal ends)."""
@@ -134,7 +141,7 @@ def _send(send: Any, response: Any, header: Any) -> bool:
     return not _sending.lost
 
 
-def resend_lost_replies(service: Any, name: str) -> Any:
+def resend_lost_replies(service: Service, name: str) -> Service:
     """Make ``service`` offer a reply again until the client's reader is discovered (at most
     :data:`RESEND_SEC`), on a thread of its own; returns ``service``.
 

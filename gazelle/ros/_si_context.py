@@ -8,7 +8,7 @@ with :meth:`InterfacesContext.serve` and names nothing that builds it."""
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.node import Node
@@ -16,6 +16,10 @@ from rclpy.node import Node
 from ..description import ResourceResolver
 from ..sim import Simulation
 from ._replies import guarded_service, serve
+
+if TYPE_CHECKING:
+    from rclpy.impl.rcutils_logger import RcutilsLogger
+    from rclpy.service import Service
 
 
 class InterfacesContext:
@@ -36,7 +40,7 @@ class InterfacesContext:
         """How a spawn's or a load's ``uri`` is found (and what it may read)."""
         self.cb = ReentrantCallbackGroup()
         """Every service and the action are in it: requests are served side by side."""
-        self.services: list[Any] = []
+        self.services: list[Service] = []
         """Every service the parts registered (:meth:`destroy` removes them)."""
         self.publish_clock = publish_clock
         """/clock, at once (a load or a reset starts the clock again: nodes on sim time hear it now)."""
@@ -49,7 +53,7 @@ class InterfacesContext:
         self.services.append(serve(self.node, srv_type, f"~/{name}", guarded_service(name, fn), self.cb))
 
     @property
-    def logger(self) -> Any:
+    def logger(self) -> RcutilsLogger:
         return self.node.get_logger()
 
     def destroy(self) -> None:

@@ -8,12 +8,15 @@ from __future__ import annotations
 
 import enum
 import math
-from typing import Any
+from typing import TYPE_CHECKING
 
 from .._errors import SimError
 from ..description import ErrorCode, Model, ModelLoadError, Pose, ResourceResolver, World, load_string
 from ..physics import WORLD_FRAMES, WorldError, pose_out_of_range
 from ..sim import Simulation
+
+if TYPE_CHECKING:
+    from rclpy.impl.rcutils_logger import RcutilsLogger
 
 
 class SpawnFailure(enum.StrEnum):
@@ -45,7 +48,7 @@ def check_pose(pose: Pose, field: str) -> None:
 
 
 def model_to_spawn(
-    text: str, *, source: str, logger: Any, format: str = "auto", resolver: ResourceResolver | None = None
+    text: str, *, source: str, logger: RcutilsLogger, format: str = "auto", resolver: ResourceResolver | None = None
 ) -> tuple[Model, tuple[str, ...]]:
     """The one model a description holds (a model or robot, or a world's first model) and its warnings, each
     also logged on ``logger``.

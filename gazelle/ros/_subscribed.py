@@ -5,7 +5,10 @@ from __future__ import annotations
 
 import math
 import time
-from typing import Any
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from rclpy.publisher import Publisher
 
 
 class Subscribed:
@@ -15,7 +18,7 @@ class Subscribed:
 
     __slots__ = ("_handle", "_refresh", "_until", "_value")
 
-    def __init__(self, handle: Any, refresh_sec: float = 0.02):
+    def __init__(self, handle: Publisher, refresh_sec: float = 0.02):
         """Whether an rclpy publisher has subscribers, asked again at most every ``refresh_sec`` (the count is a
         graph query, too slow to ask every step)."""
         self._handle = handle
