@@ -23,6 +23,7 @@ from lxml import etree
 
 from ._colors import GAZEBO_COLORS
 from ._diagnostics import ErrorCode, SourceLocation
+from ._fuel import cache_roots, cached_file, parse_fuel_uri
 from ._inertia import default_inertial, inertia_from_geometries, inertia_problem
 from ._model import (
     Box,
@@ -329,8 +330,14 @@ def read_mesh(ws: Workspace, shape: etree._Element, doc: _Doc, loc: SourceLocati
         ws.sink.error(ErrorCode.ELEMENT_MISSING, "<mesh> has no <uri>", loc)
         return None
     scale = read_vec3(ws, shape, "scale", (1.0, 1.0, 1.0), doc)
-    # model://, package://, file:// and plain paths are files on the resource roots; other schemes
-    # (https:// to Fuel) were fetched, or not, by the include that brought the model in
+    # model://, package://, file:// and plain paths are files on the resource roots; a Fuel model's file
+    # (https://fuel.../<owner>/models/<name>/<version>/files/<path>) is read from Gazebo's local Fuel cache, as
+    # gz-sim's find-file callback reads it (FuelClient::CachedModelFile); nothing is ever downloaded
+    fuel = parse_fuel_uri(uri)
+    in_cache = cached_file(fuel, cache_roots()) if fuel is not None else None
+    if in_cache is not None:
+        ws.resolver = ws.resolver.trusting(in_cache[0])  # the user's own Gazebo cache
+        return Mesh(uri, str(in_cache[1]), scale)
     path = (
         resolve_uri(ws, uri, doc)
         if ("://" not in uri or uri.startswith(("model://", "package://", "file://")))

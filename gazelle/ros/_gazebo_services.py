@@ -34,6 +34,7 @@ from ..systems import (
     RobotStatePublisher,
 )
 from ._convert import from_pose_msg, to_pose_msg, to_time
+from ._log_diagnostic import log_diagnostic
 from ._replies import guarded_service, serve, with_warnings
 from ._spawn_entity import with_joint_state_publisher, with_robot_state_options
 
@@ -148,7 +149,7 @@ class GazeboServices(Node):
         else:
             raise SpawnFailed(SpawnFailure.NO_MODEL, f"{source}: no <model> or <robot> to spawn")
         for d in result.diagnostics:
-            self.get_logger().warning(d.format())
+            log_diagnostic(self.get_logger(), d)
         X_WF = self.resolve_frame(reference_frame)
         entity = self.sim.spawn(model, name=name or model.name, pose=X_WF * pose, namespace=namespace)
         if watch:

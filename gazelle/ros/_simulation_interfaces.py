@@ -96,6 +96,7 @@ from ._convert import from_pose_msg
 from ._entity_bounds import EntityBoundsService
 from ._entity_info import EntityInfoSetter
 from ._entity_queries import EntityQueries
+from ._log_diagnostic import log_diagnostic
 from ._named_poses import NamedPosesService
 from ._replies import guarded_service, serve, serve_action, with_warnings
 from ._si_results import OK, _attempt, _finite, _Refused, _result
@@ -491,7 +492,7 @@ class SimulationInterfaces(EntityQueries):
         else:
             raise _Refused(R.RESOURCE_PARSE_ERROR, f"{source}: no <model> or <robot> to spawn")
         for d in loaded.diagnostics:
-            self.node.get_logger().warning(d.format())
+            log_diagnostic(self.node.get_logger(), d)
         frame = initial_pose.header.frame_id
         X_WF = Pose()
         if frame not in WORLD_FRAMES:
