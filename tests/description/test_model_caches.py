@@ -15,11 +15,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-import trimesh
+from _fuel_depot import DEPOT_URI, fuel_depot
 
 from gazelle.description import ErrorCode, Pose, Severity, load_string
-
-DEPOT_URI = "https://fuel.gazebosim.org/1.0/OpenRobotics/models/Depot"
 
 
 def depot_world() -> str:
@@ -38,31 +36,6 @@ def depot_world() -> str:
     </include>
   </world>
 </sdf>"""
-
-
-def fuel_depot(cache: Path, version: int = 7) -> Path:
-    """A stand-in Depot where gz-fuel-tools would have put the real one: a 10 m x 6 m hall (a 0.1 m floor slab
-    whose top is at z = 0 and 2 m walls) as one STL named by a Fuel file URL, as Fuel models name their meshes."""
-    folder = cache / "fuel.gazebosim.org" / "openrobotics" / "models" / "depot" / str(version)
-    (folder / "meshes").mkdir(parents=True)
-    parts = [trimesh.creation.box(extents=(10.0, 6.0, 0.1), transform=_at(0, 0, -0.05))]
-    for x, y, ex, ey in ((4.95, 0, 0.1, 6.0), (-4.95, 0, 0.1, 6.0), (0, 2.95, 10.0, 0.1), (0, -2.95, 10.0, 0.1)):
-        parts.append(trimesh.creation.box(extents=(ex, ey, 2.0), transform=_at(x, y, 1.0)))
-    trimesh.util.concatenate(parts).export(folder / "meshes" / "depot.stl")
-    (folder / "model.config").write_text(
-        '<?xml version="1.0"?><model><name>Depot</name><version>1.0</version><sdf version="1.6">model.sdf</sdf></model>'
-    )
-    mesh = f"<mesh><uri>{DEPOT_URI}/tip/files/meshes/depot.stl</uri></mesh>"
-    (folder / "model.sdf").write_text(
-        f"""<?xml version="1.0"?><sdf version="1.6"><model name="Depot"><static>true</static>
-<link name="main"><collision name="collision"><geometry>{mesh}</geometry></collision>
-<visual name="ROOF_visual"><geometry>{mesh}</geometry></visual></link></model></sdf>"""
-    )
-    return folder
-
-
-def _at(x: float, y: float, z: float):
-    return trimesh.transformations.translation_matrix((x, y, z))
 
 
 @pytest.fixture
