@@ -71,8 +71,10 @@ def include_file(
     if path is None and uri.strip().startswith("model://"):
         name = uri.strip()[len("model://") :].partition("/")[0]
         if ws.resolver.find_package(name) is None:  # a model found nowhere: Classic's and gz-sim's error
-            env = ws.resolver.env if ws.resolver.env is not None else os.environ
-            ws.sink.skipped(ErrorCode.URI_UNRESOLVED, classic_model_advice(name, env), loc)
+            if name not in ws.missing_models:  # one line per model, however often it is named
+                ws.missing_models.add(name)
+                env = ws.resolver.env if ws.resolver.env is not None else os.environ
+                ws.sink.skipped(ErrorCode.URI_UNRESOLVED, classic_model_advice(name, env), loc)
             return None
     if path is None or not path.is_file():
         ws.sink.warning(ErrorCode.URI_UNRESOLVED, f"cannot resolve include URI '{uri}'; include skipped", loc)

@@ -17,6 +17,7 @@ warning naming file:line, never a silent default.
 from __future__ import annotations
 
 import math
+import os
 from dataclasses import replace
 
 from lxml import etree
@@ -51,6 +52,7 @@ from ._model import (
     Visual,
 )
 from ._pose import IDENTITY, Pose, quat_conj, quat_rotate
+from ._resources import classic_model_advice
 from ._sdf_frames import Scope
 from ._sdf_reader import (
     _AXIS_JOINTS,
@@ -343,6 +345,15 @@ def read_mesh(ws: Workspace, shape: etree._Element, doc: _Doc, loc: SourceLocati
         if ("://" not in uri or uri.startswith(("model://", "package://", "file://")))
         else None
     )
+    name = uri.strip()[len("model://") :].partition("/")[0] if uri.strip().startswith("model://") else None
+    if path is None and name and ws.resolver.find_package(name) is None and ws.resolver.confined_out(name) is None:
+        # a model found nowhere (a Classic world saved with the online database's models inlined): one error line
+        # per model saying how to get it, as gazebo's find_file would have fetched it (ModelDatabase)
+        if name not in ws.missing_models:
+            ws.missing_models.add(name)
+            env = ws.resolver.env if ws.resolver.env is not None else os.environ
+            ws.sink.skipped(ErrorCode.URI_UNRESOLVED, classic_model_advice(name, env), loc)
+        return Mesh(uri, None, scale)
     if path is None or not path.is_file():
         why = f": {ws.resolver.unresolved_reason(uri, doc.base_dir)}" if path is None else ""
         ws.sink.warning(ErrorCode.MESH_NOT_FOUND, f"mesh '{uri}' not found{why}", loc)

@@ -15,6 +15,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+import trimesh
 from _fuel_depot import DEPOT_URI, fuel_depot
 
 from gazelle.description import ErrorCode, Pose, Severity, load_string
@@ -130,3 +131,28 @@ def test_a_classic_model_found_nowhere_is_one_error_line_naming_the_model_databa
     assert str(home / ".gazebo" / "models") in line and "http://models.example.org" in line
     assert "github.com/osrf/gazebo_models" in line and "\n" not in line
     assert [m.name for m in result.world.models] == ["ground_plane"]
+
+
+def test_a_saved_classic_world_names_each_missing_database_model_once_and_reads_those_in_dot_gazebo_models(home):
+    """Husky's playpen is a world Gazebo Classic saved: the database's models are inlined and their meshes named
+    ``model://construction_barrel/meshes/...``, 18 barrels. Each model found nowhere is one error line (not one
+    warning per mesh); a model in ~/.gazebo/models gives its mesh."""
+    folder = home / ".gazebo" / "models" / "construction_cone" / "meshes"
+    folder.mkdir(parents=True)
+    trimesh.creation.box(extents=(0.4, 0.4, 0.7)).export(folder / "cone.stl")
+
+    def barrel(i: int, model: str, mesh: str) -> str:
+        uri = f"<mesh><uri>model://{model}/meshes/{mesh}</uri></mesh>"
+        return (
+            f'<model name="{model}_{i}"><static>true</static><link name="link"><collision name="c"><geometry>{uri}'
+            f'</geometry></collision><visual name="v"><geometry>{uri}</geometry></visual></link></model>'
+        )
+
+    models = "".join(barrel(i, "construction_barrel", "construction_barrel.dae") for i in range(3))
+    result = load_string(
+        f'<sdf version="1.6"><world name="default">{models}{barrel(0, "construction_cone", "cone.stl")}</world></sdf>'
+    )
+    [d] = result.diagnostics
+    assert d.severity is Severity.SKIPPED and "model 'construction_barrel' is not on the model paths" in d.message
+    cone = result.world.models[-1].links[0].collisions[0].geometry
+    assert Path(cone.path) == (folder / "cone.stl").resolve()  # type: ignore[union-attr]
