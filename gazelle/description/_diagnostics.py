@@ -54,6 +54,10 @@ class Severity(enum.Enum):
 
     WARNING = "warning"
     ERROR = "error"
+    SKIPPED = "skipped"
+    """An error the load goes on past: a part the user must get (a model not downloaded) is left out, as gz-sim
+    and Gazebo Classic log an error for a model they cannot find and load the rest of the world. Shown as
+    ``error``; it does not fail the load (strict mode makes it an :attr:`ERROR`)."""
 
 
 class ErrorCode(enum.Enum):
@@ -137,7 +141,8 @@ class Diagnostic:
     def format(self) -> str:
         """Format like a compiler: ``file:line: error: [CODE] message``."""
         where = f"{self.location}: " if self.location is not None else ""
-        return f"{where}{self.severity.value}: [{self.code.value}] {self.message}"
+        level = "error" if self.severity is Severity.SKIPPED else self.severity.value
+        return f"{where}{level}: [{self.code.value}] {self.message}"
 
     def __str__(self) -> str:
         return self.format()
@@ -187,6 +192,13 @@ class DiagnosticSink:
         """Report a warning (an error in strict mode)."""
         sev = Severity.ERROR if self.strict else Severity.WARNING
         self.items.append(Diagnostic(code, sev, shorten_message(message), location))
+
+    def skipped(self, code: ErrorCode, message: str, location: SourceLocation | None = None) -> None:
+        """Report an error the load goes on past (:attr:`Severity.SKIPPED`; an error in strict mode)."""
+        if self.strict:
+            self.error(code, message, location)
+            return
+        self.items.append(Diagnostic(code, Severity.SKIPPED, shorten_message(message), location))
 
     @property
     def has_errors(self) -> bool:

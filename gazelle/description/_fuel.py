@@ -3,9 +3,14 @@
 Gazebo downloads ``https://fuel.gazebosim.org/1.0/<owner>/models/<name>[/<version>]`` on first
 use; here nothing is fetched. TurtleBot3's worlds (and most gz-sim worlds) include Fuel's
 "Ground Plane" and "Sun": those resolve to built-in equivalents with Fuel's own values. Any
-other Fuel model is looked up in the local cache Gazebo keeps (``GZ_FUEL_CACHE_PATH``, else
-``~/.gz/fuel``, and Ignition's ``IGN_FUEL_CACHE_PATH`` / ``~/.ignition/fuel``); if it is not
-there, the include is skipped with a warning naming the model and saying nothing was fetched.
+other Fuel model is looked up in the local cache Gazebo keeps, where gz-fuel-tools' ClientConfig puts it
+(src/ClientConfig.cc): ``GZ_FUEL_CACHE_PATH`` if set, else the ``cache: path:`` of ``~/.gz/fuel/config.yaml``
+(or ``config.yml``), else ``~/.gz/fuel``; and Ignition's ``IGN_FUEL_CACHE_PATH`` / ``~/.ignition/fuel``. Its
+layout is ``<cache>/<host>/<owner>/models/<name>/<version>/`` with owner and name lowercased
+(ModelIdentifier::SetName/SetOwner, UniqueName). A file inside a Fuel model
+(``.../<owner>/models/<name>/<version>/files/<path>``, FuelClient's model file URLs) is read from the same
+folder. If the model is not there, the include is skipped with one error-level line naming the model and
+saying how to get it (nothing is ever fetched).
 """
 
 from __future__ import annotations
@@ -76,13 +81,18 @@ class FuelModel:
     owner: str
     name: str
     version: str | None
+    file: str | None = None
+    """The path of a file inside the model (``.../files/<path>``), percent-decoded, or None."""
 
     def label(self) -> str:
         """``owner/name`` (and the version), as messages name the model."""
         return f"{self.owner}/{self.name}" + (f" (version {self.version})" if self.version else "")
 
 
-_PATH = re.compile(r"^/(?:[\d.]+/)?(?P<owner>[^/]+)/models/(?P<name>[^/]+)(?:/(?P<version>\d+|tip))?(?:/.*)?$", re.I)
+_PATH = re.compile(
+    r"^/(?:[\d.]+/)?(?P<owner>[^/]+)/models/(?P<name>[^/]+)(?:/(?P<version>\d+|tip))?(?:/files/(?P<file>.+)|/.*)?$",
+    re.I,
+)
 
 
 def parse_fuel_uri(uri: str) -> FuelModel | None:
@@ -104,20 +114,74 @@ def parse_fuel_uri(uri: str) -> FuelModel | None:
     if m is None:
         return None
     version = m.group("version")
+    file = m.group("file")
     return FuelModel(
-        host, unquote(m.group("owner")), unquote(m.group("name")), None if version in (None, "tip") else version
+        host,
+        unquote(m.group("owner")),
+        unquote(m.group("name")),
+        None if version in (None, "tip") else version,
+        unquote(file) if file else None,
     )
 
 
 def cache_roots(environ: dict[str, str] | os._Environ[str] = os.environ) -> list[Path]:
-    """The folders Gazebo keeps downloaded Fuel models in, that exist."""
+    """The folders Gazebo keeps downloaded Fuel models in, that exist: gz-fuel-tools' cache location
+    (``GZ_FUEL_CACHE_PATH``, else the config file's ``cache: path:``, else ``~/.gz/fuel``), then Ignition's."""
     home = Path(environ.get("HOME", "~")).expanduser()
+    gz = environ.get("GZ_FUEL_CACHE_PATH") or configured_cache(home / ".gz" / "fuel")
     cands = [
-        *(Path(p) for p in (environ.get("GZ_FUEL_CACHE_PATH"), environ.get("IGN_FUEL_CACHE_PATH")) if p),
+        *(Path(p) for p in (gz, environ.get("IGN_FUEL_CACHE_PATH")) if p),
         home / ".gz" / "fuel",
         home / ".ignition" / "fuel",
     ]
     return [c for c in dict.fromkeys(cands) if c.is_dir()]
+
+
+MAX_CONFIG_BYTES = 64 * 1024
+"""The largest Fuel config file read (gz-fuel-tools' own lists one cache and a few servers: under 1 KiB)."""
+
+
+def configured_cache(folder: Path) -> str | None:
+    """The ``cache: path:`` that ``folder/config.yaml`` (else ``config.yml``) sets, as ClientConfig::LoadConfig
+    reads it, or None (no file, not YAML, no such key: gz-fuel-tools then keeps its default)."""
+    import yaml
+
+    for name in ("config.yaml", "config.yml"):
+        path = folder / name
+        try:
+            if not path.is_file() or path.stat().st_size > MAX_CONFIG_BYTES:
+                continue
+            data = yaml.safe_load(path.read_text(encoding="utf-8"))
+        except (OSError, UnicodeDecodeError, yaml.YAMLError):
+            return None
+        cache = data.get("cache") if isinstance(data, dict) else None
+        value = cache.get("path") if isinstance(cache, dict) else None
+        return str(Path(value).expanduser()) if isinstance(value, str) and value else None
+    return None
+
+
+def cached_file(model: FuelModel, roots: list[Path]) -> tuple[Path, Path] | None:
+    """(the model's cache folder, the file) for a Fuel model file URL (``.../files/<path>``) whose model is in a
+    local Fuel cache, or None. The file must stay inside the model's folder."""
+    if model.file is None:
+        return None
+    folder = find_cached(model, roots)
+    if folder is None:
+        return None
+    path = (folder / model.file).resolve()
+    real = folder.resolve()
+    return (folder, path) if real in path.parents and path.is_file() else None
+
+
+def how_to_get(model: FuelModel, uri: str, roots: list[Path]) -> str:
+    """The one line that says a Fuel model is not here and how to get it."""
+    where = ", ".join(str(r) for r in roots) or "no cache folder exists: ~/.gz/fuel, GZ_FUEL_CACHE_PATH"
+    return (
+        f"Fuel model '{model.label()}' is not built in and not in a local Fuel cache ({where}); nothing was "
+        f'fetched (gazelle never downloads): get it with `gz fuel download -u "{uri}"` where Gazebo is installed '
+        "and copy ~/.gz/fuel here (or set GZ_FUEL_CACHE_PATH), or put the model folder on GZ_SIM_RESOURCE_PATH "
+        "and include it as model://; include skipped, the world loads without it"
+    )
 
 
 def find_cached(model: FuelModel, roots: list[Path]) -> Path | None:

@@ -37,6 +37,30 @@ SEARCH_PATH_VARIABLES = (
 )
 
 
+CLASSIC_MODEL_DATABASE = "http://models.gazebosim.org"
+"""Gazebo Classic's online model database (``GAZEBO_MODEL_DATABASE_URI``'s default; its models are also in
+github.com/osrf/gazebo_models)."""
+
+
+def classic_model_folder(env: dict[str, str] | os._Environ[str]) -> Path:
+    """``$HOME/.gazebo/models``: the first of Gazebo Classic's model paths (gazebo/common/SystemPaths.cc) and where
+    its ModelDatabase puts a ``model://`` model it downloads; a user's own copy of the models, read like
+    ``GAZEBO_MODEL_PATH`` (gazelle downloads nothing into it)."""
+    return Path(env.get("HOME") or "/tmp/gazebo") / ".gazebo" / "models"
+
+
+def classic_model_advice(name: str, env: dict[str, str] | os._Environ[str]) -> str:
+    """What a user does about a ``model://NAME`` found nowhere: where Gazebo Classic would have got it."""
+    database = env.get("GAZEBO_MODEL_DATABASE_URI") or CLASSIC_MODEL_DATABASE
+    return (
+        f"model '{name}' is not on the model paths nor in {classic_model_folder(env)}; Gazebo Classic downloads such "
+        f"a model from its online model database ({database}) into ~/.gazebo/models, gazelle never downloads: get it "
+        "by running Gazebo Classic once where there is a network, or copy its folder from "
+        "https://github.com/osrf/gazebo_models into ~/.gazebo/models (or onto GAZEBO_MODEL_PATH / "
+        "GZ_SIM_RESOURCE_PATH); include skipped, the world loads without it"
+    )
+
+
 def _split(value: str | None) -> list[Path]:
     return [Path(p) for p in (value or "").split(os.pathsep) if p]
 
@@ -77,10 +101,14 @@ class ResourceResolver:
 
     def search_paths(self) -> list[Path]:
         """Folders whose sub-folders are packages or models, in search order: the extra folders, the
-        environment's, then the model folders that installed packages export (``gazebo_model_path``)."""
+        environment's (with Gazebo Classic's ``~/.gazebo/models`` before ``GAZEBO_MODEL_PATH``, as Classic's
+        SystemPaths puts it first), then the model folders that installed packages export
+        (``gazebo_model_path``)."""
         env = self.env if self.env is not None else os.environ
         paths = list(self.extra_paths)
         for var in SEARCH_PATH_VARIABLES:
+            if var == "GAZEBO_MODEL_PATH":
+                paths.append(classic_model_folder(env))
             paths.extend(_split(env.get(var)))
         paths.extend(exported_model_paths(env.get("AMENT_PREFIX_PATH") or ""))
         return paths

@@ -7,6 +7,7 @@ models; :mod:`._sdf_parts` reads the parts, :mod:`._sdf_world` the worlds that h
 
 from __future__ import annotations
 
+import os
 from dataclasses import replace
 from pathlib import Path
 
@@ -14,7 +15,7 @@ from lxml import etree
 
 from ._diagnostics import ErrorCode, SourceLocation
 from ._fuel import BUILTIN as FUEL_BUILTIN
-from ._fuel import CLASSIC_BUILTIN, FuelModel, cache_roots, find_cached, parse_fuel_uri
+from ._fuel import CLASSIC_BUILTIN, FuelModel, cache_roots, find_cached, how_to_get, parse_fuel_uri
 from ._model import (
     Frame,
     Joint,
@@ -24,6 +25,7 @@ from ._model import (
     Model,
 )
 from ._pose import IDENTITY, Pose
+from ._resources import classic_model_advice
 from ._sdf_frames import FrameNode, Scope
 from ._sdf_parts import read_joint, read_light, read_link
 from ._sdf_reader import (
@@ -66,6 +68,14 @@ def include_file(
     if path is None and ws.resolver.refused(uri, doc.base_dir):
         ws.sink.error(ErrorCode.URI_UNRESOLVED, f"include {ws.resolver.refusal(uri)}", loc)
         return None
+    if path is None and uri.strip().startswith("model://"):
+        name = uri.strip()[len("model://") :].partition("/")[0]
+        if ws.resolver.find_package(name) is None:  # a model found nowhere: Classic's and gz-sim's error
+            if name not in ws.missing_models:  # one line per model, however often it is named
+                ws.missing_models.add(name)
+                env = ws.resolver.env if ws.resolver.env is not None else os.environ
+                ws.sink.skipped(ErrorCode.URI_UNRESOLVED, classic_model_advice(name, env), loc)
+            return None
     if path is None or not path.is_file():
         ws.sink.warning(ErrorCode.URI_UNRESOLVED, f"cannot resolve include URI '{uri}'; include skipped", loc)
         return None
@@ -86,7 +96,7 @@ def fuel_include(ws: Workspace, fuel: FuelModel, uri: str, loc: SourceLocation) 
     gazelle never downloads (a simulation's inputs must not change under it, and CI has no network):
     the handful of models nearly every world includes (ground plane, sun) are built in, and anything
     Gazebo itself once downloaded is read from its cache, trusted as the user's own files. Anything else
-    is skipped with a warning that says where gazelle looked."""
+    is skipped with one error-level line that says where gazelle looked and how to get the model."""
     builtin = FUEL_BUILTIN.get(fuel.name.lower()) if fuel.owner.lower() == "openrobotics" else None
     if builtin is not None:
         return builtin, f"<builtin:fuel {fuel.label()}>", None
@@ -96,16 +106,8 @@ def fuel_include(ws: Workspace, fuel: FuelModel, uri: str, loc: SourceLocation) 
         sdf = pick_sdf(ws, cached, loc)
         if sdf is not None:
             return include_file(ws, uri, sdf, _Doc(str(sdf), cached, MAX_VERSION, False), loc)
-    # a warning, not an error: gz-sim too goes on loading the world without a model it cannot get
-    ws.sink.warning(
-        ErrorCode.URI_UNRESOLVED,
-        f"Fuel model '{fuel.label()}' is not built in and not in a local Fuel cache "
-        f"({', '.join(str(r) for r in cache_roots()) or '~/.gz/fuel: none'}); nothing was fetched "
-        f'(gazelle never downloads): get it with `gz fuel download -u "{uri}"` where Gazebo is installed '
-        "and copy ~/.gz/fuel here (or set GZ_FUEL_CACHE_PATH), or put the model folder on "
-        "GZ_SIM_RESOURCE_PATH and include it as model://; include skipped, the world loads without it",
-        loc,
-    )
+    # an error the load goes on past: gz-sim too logs an error and loads the world without a model it cannot get
+    ws.sink.skipped(ErrorCode.URI_UNRESOLVED, how_to_get(fuel, uri, cache_roots()), loc)
     return None
 
 

@@ -17,12 +17,14 @@ warning naming file:line, never a silent default.
 from __future__ import annotations
 
 import math
+import os
 from dataclasses import replace
 
 from lxml import etree
 
 from ._colors import GAZEBO_COLORS
 from ._diagnostics import ErrorCode, SourceLocation
+from ._fuel import cache_roots, cached_file, parse_fuel_uri
 from ._inertia import default_inertial, inertia_from_geometries, inertia_problem
 from ._model import (
     Box,
@@ -50,6 +52,7 @@ from ._model import (
     Visual,
 )
 from ._pose import IDENTITY, Pose, quat_conj, quat_rotate
+from ._resources import classic_model_advice
 from ._sdf_frames import Scope
 from ._sdf_reader import (
     _AXIS_JOINTS,
@@ -329,13 +332,28 @@ def read_mesh(ws: Workspace, shape: etree._Element, doc: _Doc, loc: SourceLocati
         ws.sink.error(ErrorCode.ELEMENT_MISSING, "<mesh> has no <uri>", loc)
         return None
     scale = read_vec3(ws, shape, "scale", (1.0, 1.0, 1.0), doc)
-    # model://, package://, file:// and plain paths are files on the resource roots; other schemes
-    # (https:// to Fuel) were fetched, or not, by the include that brought the model in
+    # model://, package://, file:// and plain paths are files on the resource roots; a Fuel model's file
+    # (https://fuel.../<owner>/models/<name>/<version>/files/<path>) is read from Gazebo's local Fuel cache, as
+    # gz-sim's find-file callback reads it (FuelClient::CachedModelFile); nothing is ever downloaded
+    fuel = parse_fuel_uri(uri)
+    in_cache = cached_file(fuel, cache_roots()) if fuel is not None else None
+    if in_cache is not None:
+        ws.resolver = ws.resolver.trusting(in_cache[0])  # the user's own Gazebo cache
+        return Mesh(uri, str(in_cache[1]), scale)
     path = (
         resolve_uri(ws, uri, doc)
         if ("://" not in uri or uri.startswith(("model://", "package://", "file://")))
         else None
     )
+    name = uri.strip()[len("model://") :].partition("/")[0] if uri.strip().startswith("model://") else None
+    if path is None and name and ws.resolver.find_package(name) is None and ws.resolver.confined_out(name) is None:
+        # a model found nowhere (a Classic world saved with the online database's models inlined): one error line
+        # per model saying how to get it, as gazebo's find_file would have fetched it (ModelDatabase)
+        if name not in ws.missing_models:
+            ws.missing_models.add(name)
+            env = ws.resolver.env if ws.resolver.env is not None else os.environ
+            ws.sink.skipped(ErrorCode.URI_UNRESOLVED, classic_model_advice(name, env), loc)
+        return Mesh(uri, None, scale)
     if path is None or not path.is_file():
         why = f": {ws.resolver.unresolved_reason(uri, doc.base_dir)}" if path is None else ""
         ws.sink.warning(ErrorCode.MESH_NOT_FOUND, f"mesh '{uri}' not found{why}", loc)

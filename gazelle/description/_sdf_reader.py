@@ -229,6 +229,8 @@ class Workspace:
     """Receives every diagnostic, with file:line."""
     resolver: ResourceResolver
     """Finds ``model://``, ``package://`` and ``file://`` URIs."""
+    missing_models: set[str] = field(default_factory=set)
+    """The ``model://`` names found nowhere that were already reported (one error line per model, not per file)."""
 
 
 # The readers of values into the description model, each reporting a bad value into ``ws.sink``.

@@ -14,6 +14,7 @@ from .._errors import SimError
 from ..description import ErrorCode, Model, ModelLoadError, Pose, ResourceResolver, World, load_string
 from ..physics import WORLD_FRAMES, WorldError, pose_out_of_range
 from ..sim import Simulation
+from ._log_diagnostic import log_diagnostic
 
 if TYPE_CHECKING:
     from rclpy.impl.rcutils_logger import RcutilsLogger
@@ -71,7 +72,7 @@ def model_to_spawn(
     else:
         raise SpawnFailed(SpawnFailure.NO_MODEL, f"{source}: no <model> or <robot> to spawn")
     for d in loaded.diagnostics:
-        logger.warning(d.format())
+        log_diagnostic(logger, d)
     return model, tuple(d.format() for d in loaded.diagnostics)
 
 

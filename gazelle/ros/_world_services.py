@@ -48,6 +48,7 @@ from ..description import (
 from ..physics import ErrorKind, WorldError
 from ..sim import MAX_WORLD_MODELS, LoadedWorld, WorldBusy
 from ..systems import audit_world
+from ._log_diagnostic import log_diagnostic
 from ._si_results import OK, _Refused, _result
 from ._world_catalog import WorldCatalog, check_filter, matches
 
@@ -297,5 +298,5 @@ class WorldServices:
                 note = "" if len(found) == 1 else f" (and {len(found) - 1} more)"
                 raise _Refused(R.UNSUPPORTED_ELEMENTS, f"{found[0].format()}{note}")
         for d in problems:
-            self.node.get_logger().warning(d.format())
+            log_diagnostic(self.node.get_logger(), d)
         return [d.format() for d in problems]

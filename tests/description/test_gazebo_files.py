@@ -136,7 +136,7 @@ def test_fuel_ground_plane_and_sun_are_built_in(monkeypatch, tmp_path: Path, mak
     assert sim.world.entity_state("b").pose.position[2] == pytest.approx(0.1, abs=0.005)  # rests on Fuel's plane
 
 
-def test_other_fuel_models_come_from_the_local_cache_or_are_named_in_a_warning(monkeypatch, tmp_path: Path) -> None:
+def test_other_fuel_models_come_from_the_local_cache_or_are_named_in_an_error_line(monkeypatch, tmp_path: Path) -> None:
     monkeypatch.setenv("HOME", str(tmp_path / "home"))
     monkeypatch.delenv("GZ_FUEL_CACHE_PATH", raising=False)
     result = load_string(_fuel_world("OpenRobotics/models/Construction Cone"))
