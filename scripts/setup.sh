@@ -9,19 +9,7 @@ VENV="$ROOT/.venv"
 say() { printf '[setup] %s\n' "$*"; }
 # `./demo.sh` without --snapshot/--record needs no browser: GAZELLE_SETUP_NO_BROWSER=1 skips chromium;
 # GAZELLE_SETUP_INTERFACES=first builds only the first tier of interface packages (step 4), what the demo needs
-# --cpp also installs the C++ tier (rclcpp, rclcpp_action, rclcpp_lifecycle, rclcpp_components: step 6), which is
-# otherwise built on first need; --cpp-debian installs only the Debian packages that tier needs (step 1) and stops:
-# what scripts/build_cpp.sh runs when it first builds.
 UV_VERSION=0.13.9
-CPP=""
-CPP_DEBIAN_ONLY=""
-for arg in "$@"; do
-  case "$arg" in
-    --cpp) CPP=1 ;;
-    --cpp-debian) CPP=1; CPP_DEBIAN_ONLY=1 ;;
-    *) echo "usage: $0 [--cpp | --cpp-debian]" >&2; exit 2 ;;
-  esac
-done
 SETUP_START=$SECONDS
 step_start=$SECONDS
 took() { say "$1 took $((SECONDS - step_start)) s"; step_start=$SECONDS; }
@@ -37,38 +25,13 @@ command -v make >/dev/null || missing+=(make)
 if ! compgen -G "/usr/lib/*/libEGL.so.1" >/dev/null || ! compgen -G "/usr/lib/*/libEGL_mesa.so.0" >/dev/null; then
   missing+=(libegl1 libegl-mesa0 libgl1-mesa-dri)
 fi
-# the C++ tier only (--cpp, or its first build): class_loader (rclcpp_components') logs through console_bridge
-if [[ -n "$CPP_DEBIAN_ONLY" ]]; then missing=(); fi
-if [[ -n "$CPP" ]] && ! compgen -G "/usr/lib/*/console_bridge/cmake/console_bridge-config.cmake" >/dev/null; then
-  missing+=(libconsole-bridge-dev)
-fi
-# apt-get as root (or through sudo without a password); any failure is one line naming the packages and why
-debian_install() {
-  local sudo="" log
-  if ! command -v apt-get >/dev/null; then
-    echo "[setup] cannot install Debian packages ${*}: no apt-get here; install them and run again" >&2
-    return 1
-  fi
-  if [[ $(id -u) -ne 0 ]]; then
-    if ! command -v sudo >/dev/null || ! sudo -n true 2>/dev/null; then
-      echo "[setup] cannot install Debian packages ${*}: not root and no password-less sudo; install them and run again" >&2
-      return 1
-    fi
-    sudo="sudo"
-  fi
-  log="$(mktemp "${TMPDIR:-/tmp}/gazelle-apt.XXXXXX")"
-  say "installing Debian packages: $*"
-  if ! { $sudo apt-get update -qq && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "$@"; } >"$log" 2>&1; then
-    echo "[setup] apt-get could not install Debian packages ${*} ($(tail -n 1 "$log")); its log: $log" >&2
-    return 1
-  fi
-  rm -f "$log"
-}
 if ((${#missing[@]})); then
-  debian_install "${missing[@]}" || exit 1
+  if [[ $(id -u) -eq 0 ]]; then SUDO=""; else SUDO="sudo"; fi
+  say "installing Debian packages: ${missing[*]}"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
   took "Debian packages"
 fi
-if [[ -n "$CPP_DEBIAN_ONLY" ]]; then exit 0; fi
 
 # 2. The virtualenv, with a Python >= 3.11.
 PY=""
@@ -181,15 +144,5 @@ if ! grep -q "gazelle: what /opt/ros/jazzy/setup.bash gives a shell" "$VENV/bin/
 export ROS_DISTRO ROS_VERSION ROS_PYTHON_VERSION
 . "$VIRTUAL_ENV/local_setup.sh"
 ACTIVATE
-fi
-# 6. C++ nodes: rclcpp and friends from their released sources against the wheels (cpp/,
-#    scripts/build_cpp.sh), built when a workspace's package first finds them (their stub configs, written
-#    here in a few milliseconds) or now with --cpp; cached by content outside the clone.
-if [[ -n "$CPP" ]]; then
-  step_start=$SECONDS
-  "$ROOT/scripts/build_cpp.sh" "$VENV" build
-  took "the C++ tier"
-else
-  "$ROOT/scripts/build_cpp.sh" "$VENV" stubs
 fi
 say "ready in $((SECONDS - SETUP_START)) s"

@@ -9,11 +9,10 @@ from __future__ import annotations
 
 import signal
 import subprocess
-import sys
 from collections.abc import Callable, Iterator
 
 import pytest
-from _harness import _STARTED, GAZELLE, REPO, Proc, RosClient, ros_env, start  # noqa: F401 - ros_env: the fixture
+from _harness import _STARTED, GAZELLE, Proc, RosClient, ros_env, start  # noqa: F401 - ros_env: the fixture
 
 rclpy = pytest.importorskip("rclpy")
 
@@ -31,25 +30,6 @@ def _no_leftover_processes() -> Iterator[None]:
             except subprocess.TimeoutExpired:
                 proc.popen.kill()
                 proc.popen.wait()
-
-
-CPP_TIER_TIMEOUT = 900  # built cold: ~90 s alone on 2 cores, a few minutes beside the other worker's tests
-
-
-@pytest.fixture(scope="session")
-def cpp_tier() -> None:
-    """The C++ tier (rclcpp and its companions, scripts/build_cpp.sh) installed in this venv, for the tests whose
-    workspace finds rclcpp: from the cache (under a second), or built once per machine when no clone has built
-    it yet. A workspace's first ``find_package(rclcpp)`` would install it as well (the stub set-up writes); done
-    here first so that a cold build is not counted in a test's own colcon timeout, and a failed one is said once,
-    with its log. A second xdist worker waits on the tier's lock, then finds it up to date."""
-    done = subprocess.run(
-        [str(REPO / "scripts" / "build_cpp.sh"), sys.prefix, "build"],
-        capture_output=True,
-        text=True,
-        timeout=CPP_TIER_TIMEOUT,
-    )
-    assert done.returncode == 0, f"scripts/build_cpp.sh {sys.prefix} build failed:\n{done.stdout}{done.stderr}"
 
 
 @pytest.fixture

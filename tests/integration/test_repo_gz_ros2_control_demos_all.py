@@ -28,9 +28,9 @@ pytestmark = pytest.mark.slow
 
 
 @pytest.fixture(scope="module")
-def demos_ws(tmp_path_factory: pytest.TempPathFactory, cpp_tier: None) -> Path:
-    """One `colcon build --symlink-install` of the demos for the whole module (its six rclcpp example nodes
-    compile: ~30 s on this 2-core machine)."""
+def demos_ws(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """One `colcon build --symlink-install` of the demos for the whole module (its rclcpp example nodes are one
+    line each: gazelle has no rclcpp, see docs/workspaces.md)."""
     ws = workspace(tmp_path_factory.mktemp("demos"), "gz_ros2_control", ["gz_ros2_control_demos"])
     colcon_build(ws)
     return ws

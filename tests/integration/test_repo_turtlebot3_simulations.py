@@ -1,8 +1,7 @@
 """ROBOTIS-GIT/turtlebot3_simulations unchanged, as its README says (issue 49): `colcon build --symlink-install` of
 its turtlebot3_gazebo, then `TURTLEBOT3_MODEL=burger ros2 launch turtlebot3_gazebo turtlebot3_world.launch.py`;
 the jazzy branch (gz-sim, ros_gz_bridge) and the humble one (Gazebo Classic, gazebo_ros). Each CMakeLists compiles
-turtlebot3_drive against rclcpp and tf2 (gazelle has rclcpp, issue 54, but not tf2's C++ library) and obstacle
-plugins against gz-sim or Gazebo: each is one line naming what is missing, the rest installs.
+turtlebot3_drive against rclcpp and obstacle plugins against gz-sim or Gazebo: each is one line, the rest installs.
 The burger sees the arena's walls and pillars on /scan, its IMU publishes, and it drives 1 m on /cmd_vel
 (jazzy: a TwistStamped through the package's bridge YAML) with odometry and ground truth within 2 %."""
 
@@ -63,11 +62,11 @@ def _run(tmp_path, ros_client, repo: str, skipped: dict[str, str], stamped: bool
         stop(proc)
 
 
-def test_turtlebot3_jazzy_world_builds_sees_the_arena_and_drives(tmp_path, ros_client, cpp_tier):
-    skipped = {"turtlebot3_drive": "tf2", "obstacles": "gz-sim, gz-math"}
+def test_turtlebot3_jazzy_world_builds_sees_the_arena_and_drives(tmp_path, ros_client):
+    skipped = {"turtlebot3_drive": "rclcpp, tf2", "obstacles": "gz-sim, gz-math"}
     _run(tmp_path, ros_client, "turtlebot3_simulations", skipped, stamped=True)
 
 
-def test_turtlebot3_humble_classic_world_builds_sees_the_arena_and_drives(tmp_path, ros_client, cpp_tier):
-    skipped = {"turtlebot3_drive": "tf2", "traffic_light_plugin": "gazebo", "obstacles": "gazebo"}
+def test_turtlebot3_humble_classic_world_builds_sees_the_arena_and_drives(tmp_path, ros_client):
+    skipped = {"turtlebot3_drive": "rclcpp, tf2", "traffic_light_plugin": "gazebo", "obstacles": "gazebo"}
     _run(tmp_path, ros_client, "turtlebot3_simulations_humble", skipped, stamped=False)

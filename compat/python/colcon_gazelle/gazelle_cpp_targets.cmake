@@ -3,16 +3,12 @@
 # colcon includes this file in every CMake package it builds (gazelle's colcon extension, colcon_gazelle,
 # passes -DCMAKE_PROJECT_TOP_LEVEL_INCLUDES=<this file>; CMake includes it in the package's first project()).
 #
-# A gazelle venv has rclcpp and its usual companions (the C++ tier, scripts/build_cpp.sh, built on first need)
-# and the wheels' message packages in C++, but no Gazebo or other C++ ROS 2 libraries (gz-sim, Gazebo Classic,
-# hardware_interface, pluginlib, tf2, ...), and gazelle's own interface packages (control_msgs, gazebo_msgs,
-# moveit_msgs, ...) have no C++ headers: a package that compiles a node or a plugin against them could not
-# configure or compile, and colcon stopped before installing the package's launch files, worlds, models and
-# configs. Here:
+# A gazelle venv has no C++ ROS 2 or Gazebo libraries (rclcpp, gz-sim, Gazebo Classic, hardware_interface,
+# pluginlib, ...): a package that compiles a node or a plugin against them could not configure, and colcon
+# stopped before installing the package's launch files, worlds, models and configs. Here:
 #
 # * a REQUIRED find_package() that finds nothing (and a gazelle stand-in config of a package that exists
-#   only at run time, such as gazebo_ros), or that finds an interface package without its C++ headers, makes
-#   the package "unavailable": its <pkg>_FOUND is set, its
+#   only at run time, such as gazebo_ros) makes the package "unavailable": its <pkg>_FOUND is set, its
 #   <pkg>_TARGETS/<pkg>_LIBRARIES name the interface target gazelle_unavailable::<pkg>, and the CMake
 #   functions it would define for its users (rclcpp_components_register_node(s),
 #   pluginlib_export_plugin_description_file) do nothing;
@@ -31,12 +27,7 @@ set_property(GLOBAL PROPERTY GAZELLE_UNAVAILABLE_PACKAGES "")
 set_property(GLOBAL PROPERTY GAZELLE_PROJECT_TARGETS "")
 
 # Marks <pkg> unavailable and sets, in the caller's scope, what a found package sets.
-# An optional second argument says why (default: not found).
 function(gazelle_unavailable_package pkg)
-  set(_why "not found")
-  if(ARGC GREATER 1)
-    set(_why "${ARGV1}")
-  endif()
   get_property(_known GLOBAL PROPERTY GAZELLE_UNAVAILABLE_PACKAGES)
   set(_target "gazelle_unavailable::${pkg}")
   if(NOT TARGET "${_target}")
@@ -45,7 +36,8 @@ function(gazelle_unavailable_package pkg)
   endif()
   if(NOT pkg IN_LIST _known)
     set_property(GLOBAL APPEND PROPERTY GAZELLE_UNAVAILABLE_PACKAGES "${pkg}")
-    message(STATUS "gazelle: ${pkg} is not available here (${_why}); compiled targets that need it are not built")
+    message(STATUS "gazelle: ${pkg} is not available here (no C++ ROS 2 or Gazebo libraries); "
+      "compiled targets that need it are not built")
   endif()
   string(TOUPPER "${pkg}" _upper)
   string(REPLACE "-" "_" _upper "${_upper}")
@@ -94,32 +86,8 @@ macro(find_package)
   _find_package(${_gazelle_fp_args_${ARGV0}})
   if(_gazelle_fp_required_${ARGV0} AND NOT ${ARGV0}_FOUND)
     gazelle_unavailable_package("${ARGV0}")
-  elseif(${ARGV0}_FOUND)
-    _gazelle_interfaces_without_cpp("${ARGV0}" _gazelle_fp_no_cpp_${ARGV0})
-    if(_gazelle_fp_no_cpp_${ARGV0})
-      gazelle_unavailable_package("${ARGV0}" "${_gazelle_fp_no_cpp_${ARGV0}}")
-    endif()
   endif()
 endmacro()
-
-# An interface package found without its C++ headers (gazelle builds its own, control_msgs, gazebo_msgs,
-# moveit_msgs..., for Python and C only): out is why, for a C++ target that uses it; "" otherwise. It is an
-# ament index rosidl_interfaces package whose prefix has no include/<pkg>/<pkg>/{msg,srv,action}/*.hpp.
-function(_gazelle_interfaces_without_cpp pkg out)
-  set(${out} "" PARENT_SCOPE)
-  if(NOT ${pkg}_DIR OR NOT IS_DIRECTORY "${${pkg}_DIR}")
-    return()
-  endif()
-  get_filename_component(_prefix "${${pkg}_DIR}/../../.." ABSOLUTE)  # <prefix>/share/<pkg>/cmake
-  if(NOT EXISTS "${_prefix}/share/ament_index/resource_index/rosidl_interfaces/${pkg}")
-    return()
-  endif()
-  file(GLOB _headers "${_prefix}/include/${pkg}/${pkg}/msg/*.hpp" "${_prefix}/include/${pkg}/${pkg}/srv/*.hpp"
-    "${_prefix}/include/${pkg}/${pkg}/action/*.hpp")
-  if(NOT _headers)
-    set(${out} "its C++ headers: gazelle builds ${pkg} for Python and C" PARENT_SCOPE)
-  endif()
-endfunction()
 
 function(_gazelle_find_arguments out_args out_required)
   set(_args ${ARGN})
@@ -226,7 +194,7 @@ function(_gazelle_placeholder target reason)
     set(_lang CXX)
   endif()
   set(_line "${PROJECT_NAME}'s ${target} is a compiled program gazelle did not build: it needs ${reason}, "
-    "which a gazelle venv does not have")
+    "which a gazelle venv does not have (no C++ ROS 2 or Gazebo libraries)")
   string(REPLACE ";" "" _line "${_line}")
   string(REPLACE "\\" "\\\\" _text "${_line}")
   string(REPLACE "\"" "\\\"" _text "${_text}")
