@@ -181,11 +181,17 @@ class ArmPlanner(RobotScene):
                 raise failed
             q = self.scene.toFullJointPositions(group, np.asarray(solution.positions, dtype=float))
             out = start_full.copy()  # the joints outside the group keep their values
-            out[idx] = q[idx]
+            lo, hi = self._bounds
+            out[idx] = _turns_toward(q[idx], start_full[idx], lo[idx], hi[idx], self._revolute(joints))
             if not avoid_collisions or not self.in_collision(out):
                 return out
             # roboplan checks its restarts, not the solution it converged to: go on from elsewhere
             start = self._group_config(group, joints, np.asarray(self.scene.randomPositions(), dtype=float))
+
+    def _revolute(self, joints: Sequence[str]) -> np.ndarray:
+        """Which of ``joints`` are revolute (bounded; a continuous joint wraps by itself)."""
+        revolute = self._core.JointType.REVOLUTE
+        return np.array([self.scene.getJointInfo(j).type == revolute for j in joints], dtype=bool)
 
     def plan(
         self,
@@ -537,6 +543,22 @@ class ArmPlanner(RobotScene):
         config.joint_names = list(joints)
         config.positions = np.asarray(q_full, dtype=float)[self._group_index(joints)]
         return config
+
+
+def _turns_toward(q: np.ndarray, seed: np.ndarray, lo: np.ndarray, hi: np.ndarray, revolute: np.ndarray) -> np.ndarray:
+    """``q`` with each revolute joint moved by whole turns to the value nearest ``seed`` within [lo, hi]: the same
+    pose and geometry. MoveIt's IK plugins search from the seed (KDL's Newton iterations; random restarts only when
+    that fails), so a client gets the solution near it; roboplan's restarts from random values can converge a turn
+    away on joints whose limits span two turns (UR's +-2 pi), and RRT-Connect then had to find a way round a whole
+    turn (a UR5e's upper arm through its base: no path in 20 s)."""
+    out = q.copy()
+    turn = 2.0 * math.pi
+    turns = np.round((seed - q) / turn)
+    for fewer in (0.0, 1.0):  # the nearest value; if it leaves the limits, the one a turn less far
+        moved = q + (turns - np.sign(turns) * fewer) * turn
+        ok = revolute & (moved >= lo) & (moved <= hi) & (np.abs(moved - seed) < np.abs(out - seed))
+        out[ok] = moved[ok]
+    return out
 
 
 def _cut_at_jump(path: list[np.ndarray], jump_threshold: float) -> list[np.ndarray]:
