@@ -14,6 +14,7 @@ import math
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
+from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
@@ -39,6 +40,8 @@ MAX_PLANNING_ATTEMPTS = 100
 TREE_NODES = 5_000
 """The most nodes one search's trees grow (roboplan's default is 1,000, which gave up on a UR5e pose goal 2
 tries in 3): a search that fills them starts again from another seed while the plan's time lasts."""
+SHORTCUT_WITHIN_SEC = 0.5
+"""s the most a constrained path's shortcutting takes (a 65-point Panda path takes some 5 ms)."""
 PLANNERS = {"RRTConnect": "rrt_connect", "RRTstar": "rrt_star", "RRT": "rrt"}
 """The OMPL planners gazelle plans with (roboplan's RRT in its three forms), by OMPL's name
 (``geometric::RRTConnect``); every other planner_id is planned with RRT-Connect."""
@@ -268,6 +271,8 @@ class ArmPlanner(RobotScene):
         shortcut = self._core.PathShortcutter(self.scene, sopts).shortcut(path)
         if not constraints or self._kept(group, joints, q0, shortcut, keeps):  # a shortcut may leave them
             path = shortcut
+        else:
+            path = self._shortcut_within(group, joints, q0, path, keeps)
         return self._timed(group, path, velocity_scaling, acceleration_scaling)
 
     def _keeping(self, group: str, constraints: PathConstraints) -> tuple[Any, list[Any]]:
@@ -307,6 +312,36 @@ class ArmPlanner(RobotScene):
                 if not keeps(full):
                     return False
         return True
+
+    def _shortcut_within(self, group: str, joints: list[str], q0: np.ndarray, path: Any, keeps: Any) -> Any:
+        """``path`` shortened by straight joint-space lines that keep the constraints and are collision free
+        (both checked every 0.02 rad): from each point kept, the farthest later point such a line reaches. ompl's
+        PathSimplifier, which MoveIt's OMPL runs on a constrained path, takes a shortcut only where the constrained
+        state validity checker passes it, the same test. For at most :data:`SHORTCUT_WITHIN_SEC`; then the rest
+        of the path as it is."""
+        index = self._group_index(joints)
+        points = [np.asarray(p, dtype=float) for p in path.positions]
+        a_full, b_full = np.asarray(q0, dtype=float).copy(), np.asarray(q0, dtype=float).copy()
+        deadline = time.monotonic() + SHORTCUT_WITHIN_SEC
+
+        def line_ok(a: np.ndarray, b: np.ndarray) -> bool:
+            if time.monotonic() >= deadline:
+                return False
+            a_full[index], b_full[index] = a, b
+            if self._core.hasCollisionsAlongPath(self.scene, a_full, b_full, 0.02):
+                return False
+            return self._kept(group, joints, q0, SimpleNamespace(positions=[a, b]), keeps)
+
+        kept, i = [points[0]], 0
+        while i < len(points) - 1:
+            j = len(points) - 1
+            while j > i + 1 and not line_ok(points[i], points[j]):
+                j -= 1
+            kept.append(points[j])
+            i = j
+        out = self._core.JointPath()
+        out.joint_names, out.positions = path.joint_names, kept
+        return out
 
     def _search(
         self,
