@@ -14,6 +14,7 @@ import math
 import time
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
+from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
@@ -41,6 +42,8 @@ MAX_PLANNING_ATTEMPTS = 100
 TREE_NODES = 5_000
 """The most nodes one search's trees grow (roboplan's default is 1,000, which gave up on a UR5e pose goal 2
 tries in 3): a search that fills them starts again from another seed while the plan's time lasts."""
+SHORTCUT_WITHIN_SEC = 0.5
+"""s the most a constrained path's shortcutting takes (a 65-point Panda path takes some 5 ms)."""
 PLANNERS = {"RRTConnect": "rrt_connect", "RRTstar": "rrt_star", "RRT": "rrt"}
 """The OMPL planners gazelle plans with (roboplan's RRT in its three forms), by OMPL's name
 (``geometric::RRTConnect``); every other planner_id is planned with RRT-Connect."""
@@ -333,11 +336,17 @@ class ArmPlanner:
                 raise failed
             q = self.robot.scene.toFullJointPositions(group, np.asarray(solution.positions, dtype=float))
             out = start_full.copy()  # the joints outside the group keep their values
-            out[idx] = q[idx]
-            if not avoid_collisions or not self.robot.in_collision(out):
+            lo, hi = self.robot.bounds
+            out[idx] = _turns_toward(q[idx], start_full[idx], lo[idx], hi[idx], self._revolute(joints))
+            if not avoid_collisions or not self.in_collision(out):
                 return out
             # roboplan checks its restarts, not the solution it converged to: go on from elsewhere
             start = self._group_config(group, joints, np.asarray(self.robot.scene.randomPositions(), dtype=float))
+
+    def _revolute(self, joints: Sequence[str]) -> np.ndarray:
+        """Which of ``joints`` are revolute (bounded; a continuous joint wraps by itself)."""
+        revolute = self._core.JointType.REVOLUTE
+        return np.array([self.scene.getJointInfo(j).type == revolute for j in joints], dtype=bool)
 
     def plan(
         self,
@@ -415,6 +424,8 @@ class ArmPlanner:
         shortcut = self._core.PathShortcutter(self.robot.scene, sopts).shortcut(path)
         if not constraints or self._kept(group, joints, q0, shortcut, keeps):  # a shortcut may leave them
             path = shortcut
+        else:
+            path = self._shortcut_within(group, joints, q0, path, keeps)
         return self._timed(group, path, velocity_scaling, acceleration_scaling)
 
     def _keeping(self, group: str, constraints: PathConstraints) -> tuple[Any, list[Any]]:
@@ -454,6 +465,36 @@ class ArmPlanner:
                 if not keeps(full):
                     return False
         return True
+
+    def _shortcut_within(self, group: str, joints: list[str], q0: np.ndarray, path: Any, keeps: Any) -> Any:
+        """``path`` shortened by straight joint-space lines that keep the constraints and are collision free
+        (both checked every 0.02 rad): from each point kept, the farthest later point such a line reaches. ompl's
+        PathSimplifier, which MoveIt's OMPL runs on a constrained path, takes a shortcut only where the constrained
+        state validity checker passes it, the same test. For at most :data:`SHORTCUT_WITHIN_SEC`; then the rest
+        of the path as it is."""
+        index = self.robot.group_index(joints)
+        points = [np.asarray(p, dtype=float) for p in path.positions]
+        a_full, b_full = np.asarray(q0, dtype=float).copy(), np.asarray(q0, dtype=float).copy()
+        deadline = time.monotonic() + SHORTCUT_WITHIN_SEC
+
+        def line_ok(a: np.ndarray, b: np.ndarray) -> bool:
+            if time.monotonic() >= deadline:
+                return False
+            a_full[index], b_full[index] = a, b
+            if self._core.hasCollisionsAlongPath(self.scene, a_full, b_full, 0.02):
+                return False
+            return self._kept(group, joints, q0, SimpleNamespace(positions=[a, b]), keeps)
+
+        kept, i = [points[0]], 0
+        while i < len(points) - 1:
+            j = len(points) - 1
+            while j > i + 1 and not line_ok(points[i], points[j]):
+                j -= 1
+            kept.append(points[j])
+            i = j
+        out = self._core.JointPath()
+        out.joint_names, out.positions = path.joint_names, kept
+        return out
 
     def _search(
         self,
@@ -690,6 +731,22 @@ class ArmPlanner:
         config.joint_names = list(joints)
         config.positions = np.asarray(q_full, dtype=float)[self.robot.group_index(joints)]
         return config
+
+
+def _turns_toward(q: np.ndarray, seed: np.ndarray, lo: np.ndarray, hi: np.ndarray, revolute: np.ndarray) -> np.ndarray:
+    """``q`` with each revolute joint moved by whole turns to the value nearest ``seed`` within [lo, hi]: the same
+    pose and geometry. MoveIt's IK plugins search from the seed (KDL's Newton iterations; random restarts only when
+    that fails), so a client gets the solution near it; roboplan's restarts from random values can converge a turn
+    away on joints whose limits span two turns (UR's +-2 pi), and RRT-Connect then had to find a way round a whole
+    turn (a UR5e's upper arm through its base: no path in 20 s)."""
+    out = q.copy()
+    turn = 2.0 * math.pi
+    turns = np.round((seed - q) / turn)
+    for fewer in (0.0, 1.0):  # the nearest value; if it leaves the limits, the one a turn less far
+        moved = q + (turns - np.sign(turns) * fewer) * turn
+        ok = revolute & (moved >= lo) & (moved <= hi) & (np.abs(moved - seed) < np.abs(out - seed))
+        out[ok] = moved[ok]
+    return out
 
 
 def _cut_at_jump(path: list[np.ndarray], jump_threshold: float) -> list[np.ndarray]:

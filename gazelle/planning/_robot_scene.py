@@ -339,7 +339,7 @@ class RobotScene:
     def onto_limits(self, q: np.ndarray) -> np.ndarray:
         """``q`` with every joint within :data:`START_BOUNDS_ERROR` past a limit moved onto it (a request's
         start state read from /joint_states: a finger at -6.6e-12 m against its limit 0)."""
-        lo, hi = self._bounds
+        lo, hi = self.bounds
         q = np.asarray(q, dtype=float)
         near = (q >= lo - START_BOUNDS_ERROR) & (q <= hi + START_BOUNDS_ERROR)
         return np.where(near, np.clip(q, lo, hi), q)
@@ -349,7 +349,7 @@ class RobotScene:
         limits (for GOAL_STATE_INVALID), or None. MoveIt checks only the planned group's joints
         (moveit_ros/planning/planning_request_adapter_plugins/src/check_start_state_bounds.cpp takes the
         group's joint models), so a gripper finger a hair past its limit does not refuse an arm's plan."""
-        lo, hi = self._bounds
+        lo, hi = self.bounds
         names = list(joints) if joints is not None else list(self.joint_names)
         for name, i in zip(names, self.group_index(names)):
             if not lo[i] - 1e-9 <= q[i] <= hi[i] + 1e-9:
@@ -362,7 +362,8 @@ class RobotScene:
         return [index[j] for j in joints]
 
     @property
-    def _bounds(self) -> tuple[np.ndarray, np.ndarray]:
+    def bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """Every joint's lower and upper position limits (rad or m), in the full configuration's order."""
         lo, hi = self.scene.getPositionLimitVectors("")
         return np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
 

@@ -6,7 +6,8 @@ import logging
 import threading
 import time
 import warnings
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 
 from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
@@ -98,6 +99,14 @@ def serve_action(
     )
 
 
+class _Replying(Protocol):
+    """What :func:`resend_lost_replies` uses of a service: the method the executor sends each reply with."""
+
+    send_response: Callable[..., None]
+
+
+_S = TypeVar("_S", bound=_Replying)
+
 RESEND_SEC = 10.0
 """How long a reply the middleware could not deliver is offered again."""
 
@@ -141,7 +150,7 @@ def _send(send: Any, response: Any, header: Any) -> bool:
     return not _sending.lost
 
 
-def resend_lost_replies(service: Service, name: str) -> Service:
+def resend_lost_replies(service: _S, name: str) -> _S:
     """Make ``service`` offer a reply again until the client's reader is discovered (at most
     :data:`RESEND_SEC`), on a thread of its own; returns ``service``.
 

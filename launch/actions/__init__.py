@@ -111,7 +111,8 @@ class _SetLocals(Action):
 
 
 class IncludeLaunchDescription(Action):
-    """Another launch file (or LaunchDescription) with ``launch_arguments``; what it sets stays inside it."""
+    """Another launch file (or LaunchDescription) with ``launch_arguments``; the configurations it sets stay set
+    after it, as in ROS 2's launch (a GroupAction scopes them)."""
 
     def __init__(self, launch_description_source: Any, *, launch_arguments: Any = None, **kwargs: Any) -> None:
         super().__init__(**kwargs)
@@ -146,12 +147,16 @@ class IncludeLaunchDescription(Action):
                 "current_launch_file_path": location,
                 "current_launch_file_directory": os.path.dirname(os.path.abspath(location)),
             }
+        # Jazzy's IncludeLaunchDescription.execute returns the arguments' SetLaunchConfiguration actions and the
+        # description with no push or pop of the configurations: what the included file sets stays set after it
+        # (ur_moveit.launch.py's move_group, started by an event handler, reads them); only GroupAction scopes.
+        # The file's own path (current_launch_file_path/_directory) stays inside it.
         return [
-            _PushScope(configs=True, locals_=True),
             *(SetLaunchConfiguration(k, v) for k, v in args),
+            _PushScope(configs=False, locals_=True),
             _SetLocals(local_values),
             ld,
-            _PopScope(configs=True, locals_=True),
+            _PopScope(configs=False, locals_=True),
         ]
 
 

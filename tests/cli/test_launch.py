@@ -276,7 +276,7 @@ def test_show_args_lists_the_arguments_of_the_file_and_its_includes(prefix):
         (["run", "demo_pkg", "no_such_exe"], "No executable found"),
         (
             ["doctor"],
-            "invalid choice: 'doctor' (choose from 'action', 'bag', 'control', 'interface', 'launch', 'node', 'param'",
+            "invalid choice: 'doctor' (choose from 'action', 'bag', 'control', 'daemon', 'interface', 'launch', 'node', 'param'",
         ),
     ],
 )
@@ -304,6 +304,61 @@ def test_an_argument_the_launch_file_does_not_declare_is_taken_as_ros2_launch_ta
     assert out.returncode == 0, out.stdout + out.stderr
     said = out.stdout + out.stderr
     assert "colour=red" in said and "included with robot=burger" in said, said
+
+
+MOVEIT_LIKE = """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, ExecuteProcess, LogInfo, RegisterEventHandler
+from launch.event_handlers import OnProcessExit
+from launch.substitutions import FindExecutable, LaunchConfiguration
+
+
+def generate_launch_description():
+    ld = LaunchDescription()
+    ld.add_entity(LaunchDescription([DeclareLaunchArgument("warehouse_path", default_value="/tmp/w.sqlite")]))
+    wait = ExecuteProcess(cmd=[FindExecutable(name="python3"), "-c", "print('waited')"], output="screen")
+    ld.add_action(wait)
+    ld.add_action(RegisterEventHandler(OnProcessExit(target_action=wait, on_exit=[
+        LogInfo(msg=["after the wait: warehouse=", LaunchConfiguration("warehouse_path"),
+                     " use_sim_time=", LaunchConfiguration("use_sim_time")]),
+    ])))
+    return ld
+"""
+
+OUTER = """
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription, LogInfo
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import LaunchConfiguration, PathJoinSubstitution, ThisLaunchFileDir
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        IncludeLaunchDescription(
+            PythonLaunchDescriptionSource(PathJoinSubstitution([ThisLaunchFileDir(), "moveit_like.launch.py"])),
+            launch_arguments={"use_sim_time": "true"}.items(),
+        ),
+        LogInfo(msg=["after the include: use_sim_time=", LaunchConfiguration("use_sim_time")]),
+    ])
+"""
+
+
+def test_an_included_files_configurations_stay_set_after_it_as_in_jazzys_launch(prefix):
+    """Jazzy's IncludeLaunchDescription (launch/actions/include_launch_description.py ``execute``) returns its
+    arguments' SetLaunchConfiguration actions and the description, with no push or pop of the configurations: what
+    the included file declares or is given stays set after it, and an action its event handler starts later reads it.
+    ur_moveit_config's ur_moveit.launch.py starts move_group when ``wait_for_robot_description`` exits, with
+    ``LaunchConfiguration("warehouse_sqlite_path")`` and ``use_sim_time`` from ur_sim_moveit.launch.py's include:
+    gazelle scoped an include's configurations, so that stopped at "launch configuration 'warehouse_sqlite_path'
+    does not exist" (issue 51)."""
+    launch_dir = prefix / "share" / "demo_pkg" / "launch"
+    write(launch_dir / "moveit_like.launch.py", MOVEIT_LIKE)
+    write(launch_dir / "outer.launch.py", OUTER)
+    out = ros2(["launch", "demo_pkg", "outer.launch.py"], prefix)
+    said = out.stdout + out.stderr
+    assert out.returncode == 0, said
+    assert "after the include: use_sim_time=true" in said, said
+    assert "after the wait: warehouse=/tmp/w.sqlite use_sim_time=true" in said, said
 
 
 def test_a_launch_file_that_raises_shows_the_users_traceback(prefix):
