@@ -49,6 +49,9 @@ PLANNERS = {"RRTConnect": "rrt_connect", "RRTstar": "rrt_star", "RRT": "rrt"}
 (``geometric::RRTConnect``); every other planner_id is planned with RRT-Connect."""
 MAX_IK_SEC = 5.0
 """s the most one IK searches: a longer ``timeout`` is cut to this."""
+IK_RESTARTS = 1_000
+"""The random restarts one IK makes after the attempt from its seed (roboplan's SimpleIk tries 100 iterations
+from each): what bounds an IK's work, the same on any machine; its ``timeout`` is a guard."""
 MAX_TRAJECTORY_POINTS = 20_000
 """The most points a timed trajectory has: 200 s at TOPP-RA's 10 ms; a longer one (a tiny velocity scaling,
 a dense Cartesian path) is sampled more coarsely rather than grown without bound (a velocity scaling of 1e-6
@@ -307,41 +310,49 @@ class ArmPlanner:
         timeout: float,
         avoid_collisions: bool,
     ) -> np.ndarray:
-        """Joint values of ``group`` that put ``link`` at ``goal`` (roboplan's SimpleIk with restarts, within
-        ``timeout``), the joints outside the group kept at ``start_full``. With ``avoid_collisions``, a solution
-        in collision is not returned: the search goes on from a random start until the time runs out
-        (NO_IK_SOLUTION, MoveIt's code)."""
+        """Joint values of ``group`` that put ``link`` at ``goal`` (roboplan's SimpleIk from ``start``, then from
+        random configurations), the joints outside the group kept at ``start_full``. With ``avoid_collisions``, a
+        solution in collision is not returned: the search goes on from the next restart. NO_IK_SOLUTION (MoveIt's
+        code) after :data:`IK_RESTARTS` restarts or ``timeout`` s, whichever comes first.
+
+        The restarts are drawn here, from the scene's generator restarted at the planner's seed, rather than by
+        roboplan's own restarts (``max_restarts``), whose generator is seeded anew by every solver: the same
+        request answers the same on any machine, whatever was asked before it. A CI run flipped on that: the
+        UR5e's random goals (tests/planning/test_random_pose_goals.py) took other IK branches there than here,
+        and two of them found no path in 5 s."""
         idx = self.robot.group_index(joints)
         deadline = time.monotonic() + timeout
         failed = PlanningError("NO_IK_SOLUTION", f"no joint values of '{group}' put '{link}' at the goal pose")
-        while True:
+        self.robot.scene.setRngSeed(self._seed)
+        lo, hi = self.robot.bounds
+        revolute = self._revolute(joints)
+        for restart in range(IK_RESTARTS + 1):
             remaining = deadline - time.monotonic()
             if remaining <= 0.0:
-                raise failed
+                break
+            if restart:
+                try:  # roboplan's restarts start from collision-free draws; so do these
+                    drawn = np.asarray(self.robot.scene.randomCollisionFreePositions(), dtype=float)
+                except RuntimeError as err:  # no collision-free configuration could be sampled
+                    raise PlanningError("NO_IK_SOLUTION", f"{failed.message} ({err})") from None
+                start = self._group_config(group, joints, drawn)
             opts = self._simple_ik.SimpleIkOptions()
             opts.group_name = group
             opts.check_collisions = avoid_collisions
-            opts.max_time = remaining
-            opts.max_restarts = 1000
+            opts.max_time = remaining  # a guard: an attempt is at most max_iters (100) iterations
+            opts.max_restarts = 0
             opts.max_linear_error_norm = 1e-4
             opts.max_angular_error_norm = 1e-3
-            solver = self._simple_ik.SimpleIk(self.robot.scene, opts)
             self.robot.scene.setJointPositions(start_full)  # the joints outside the group stay where they are
             solution = self._core.JointConfiguration()
-            try:
-                solved = solver.solveIk(goal, start, solution)
-            except RuntimeError as err:  # roboplan: no collision-free restart could be sampled
-                raise PlanningError("NO_IK_SOLUTION", f"{failed.message} ({err})") from None
-            if not solved:
-                raise failed
+            if not self._simple_ik.SimpleIk(self.robot.scene, opts).solveIk(goal, start, solution):
+                continue
             q = self.robot.scene.toFullJointPositions(group, np.asarray(solution.positions, dtype=float))
             out = start_full.copy()  # the joints outside the group keep their values
-            lo, hi = self.robot.bounds
-            out[idx] = _turns_toward(q[idx], start_full[idx], lo[idx], hi[idx], self._revolute(joints))
+            out[idx] = _turns_toward(q[idx], start_full[idx], lo[idx], hi[idx], revolute)
             if not avoid_collisions or not self.in_collision(out):
                 return out
-            # roboplan checks its restarts, not the solution it converged to: go on from elsewhere
-            start = self._group_config(group, joints, np.asarray(self.robot.scene.randomPositions(), dtype=float))
+        raise failed
 
     def _revolute(self, joints: Sequence[str]) -> np.ndarray:
         """Which of ``joints`` are revolute (bounded; a continuous joint wraps by itself)."""
