@@ -73,9 +73,13 @@ class Joints:
 
 
 def _forward(ros: RosClient, topic: str) -> Any:
+    """A sender of one-value commands on ``topic``, each sent once (as the examples send them) after the
+    controller's subscription has matched: a message published before discovery matched it is lost, and beside a
+    CPU hog the gripper's first command once was (the finger stayed shut for 30 s)."""
     pub = ros.node.create_publisher(Float64MultiArray, topic, 10)
 
     def send(value: float) -> None:
+        wait_for(lambda: pub.get_subscription_count() >= 1, 30, f"the controller's subscription on {topic}")
         pub.publish(Float64MultiArray(data=[value]))
 
     return send
