@@ -52,7 +52,7 @@ def read_yaml(path: str) -> tuple[str, Any, int]:
 
 class YamlEntity(Entity):
     def __init__(self, element: Any, type_name: str, file: str, line: int, parent: Entity | None = None) -> None:
-        super().__init__(type_name, file, getattr(element, "line", line), parent)
+        super().__init__(type_name, file, line, parent)
         self._element = element
         self._read_keys: set[str] = set()
         self._children_read = False
@@ -97,7 +97,7 @@ class YamlEntity(Entity):
         data = element[name]
         if is_entity_list(data_type):
             if isinstance(data, list) and data and all(isinstance(d, dict) for d in data):
-                return [YamlEntity(d, name, self._file, self._line, self) for d in data]
+                return [YamlEntity(d, name, self._file, getattr(d, "line", self._line), self) for d in data]
             raise TypeError(f"Attribute '{name}' of `{self.type_name}` must be a list of mappings")
         if not is_instance_of(data, data_type, can_be_str=can_be_str):
             raise TypeError(

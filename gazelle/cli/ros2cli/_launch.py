@@ -117,7 +117,7 @@ def run_launch_file(
     ros2launch's ``launch_a_launch_file`` includes the file with them, and launch's ``IncludeLaunchDescription``
     (Jazzy) checks only that the declared ones without a default are given (``launch_rviz:=false`` to a file that
     declares no ``launch_rviz`` runs). XML and YAML launch files are read by launch.frontend (launch_xml and
-    launch_yaml's tags and substitutions, docs/launch.md)."""
+    launch_yaml's tags and substitutions, docs/launch_xml_yaml.md)."""
     from launch import LaunchService
     from launch.logging import log
 
