@@ -329,8 +329,9 @@ def test_a_python_launch_file_includes_an_xml_and_a_yaml_one(prefix):
         """
         from launch import LaunchDescription
         from launch.actions import IncludeLaunchDescription
-        from launch.launch_description_sources import (AnyLaunchDescriptionSource, XMLLaunchDescriptionSource,
-            YAMLLaunchDescriptionSource)
+        from launch.launch_description_sources import AnyLaunchDescriptionSource
+        from launch_xml.launch_description_sources import XMLLaunchDescriptionSource
+        from launch_yaml.launch_description_sources import YAMLLaunchDescriptionSource
         from launch.substitutions import PathJoinSubstitution, ThisLaunchFileDir
 
 
