@@ -5,8 +5,8 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 PY="$ROOT/.venv/bin"
-"$PY/ruff" check gazelle tests bench launch launch_ros scripts compat
-"$PY/ruff" format --check gazelle tests bench launch launch_ros scripts compat
+"$PY/ruff" check gazelle tests bench launch launch_ros launch_xml launch_yaml scripts compat
+"$PY/ruff" format --check gazelle tests bench launch launch_ros launch_xml launch_yaml scripts compat
 stamp="build/typings/.mujoco-$("$PY/python" -c 'import mujoco; print(mujoco.__version__)')"
 if [ ! -e "$stamp" ]; then
   rm -rf build/typings

@@ -106,7 +106,7 @@ if [[ ! -f "$bytecode" || "$(cat "$bytecode")" != "$want" ]]; then
   fi
   echo "$want" > "$bytecode"
 fi
-own=("$ROOT/gazelle" "$ROOT/launch" "$ROOT/launch_ros" "$ROOT/compat/python")
+own=("$ROOT/gazelle" "$ROOT/launch" "$ROOT/launch_ros" "$ROOT/launch_xml" "$ROOT/launch_yaml" "$ROOT/compat/python")
 "$VENV/bin/python" "$ROOT/scripts/drop_stale_bytecode.py" "${own[@]}" >/dev/null 2>&1 || true
 "$VENV/bin/python" -m compileall -q -j 0 "${own[@]}" >/dev/null 2>&1 || true
 

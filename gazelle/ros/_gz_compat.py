@@ -30,12 +30,15 @@ BRIDGE_DIRECTIONS = ("@", "[", "]")
 
 
 def create_main(argv: list[str]) -> int:
-    """``create``: ros_gz_sim's arguments, run as ``gazelle spawn``."""
+    """``create``: ros_gz_sim's arguments, run as ``gazelle spawn``. A flag it does not know is passed over with
+    one line, as ros_gz_sim's create (jazzy, src/create.cpp) does: it parses its gflags after
+    ``gflags::AllowCommandLineReparsing()``, so gz_ros2_control_demos' XML launch files' ``-allow-renaming true``
+    (its flag is ``-allow_renaming``) is ignored there, not an error."""
     import argparse
 
     from ._spawn_entity import main as spawn_main
 
-    p = argparse.ArgumentParser(prog="create", description="Spawn an entity (ros_gz_sim's create)")
+    p = argparse.ArgumentParser(prog="create", description="Spawn an entity (ros_gz_sim's create)", allow_abbrev=False)
     src = p.add_mutually_exclusive_group(required=True)
     src.add_argument("-file")
     src.add_argument("-string")
@@ -46,7 +49,9 @@ def create_main(argv: list[str]) -> int:
     p.add_argument("-allow_renaming", default="false")
     for axis in ("x", "y", "z", "R", "P", "Y"):
         p.add_argument(f"-{axis}", default="0")
-    args = p.parse_args(argv)
+    args, unknown = p.parse_known_args(argv)
+    if unknown:
+        print(f"create: ignoring what it does not know: {' '.join(unknown)}", file=sys.stderr, flush=True)
     out = ["-entity", args.name or "entity"]
     for key in ("file", "string", "topic", "param"):
         value = getattr(args, key)

@@ -1,4 +1,4 @@
-"""launch.launch_description_sources: Python launch files (XML and YAML are refused with a clear error)."""
+"""launch.launch_description_sources: Python launch files, and XML and YAML ones through launch.frontend."""
 
 from __future__ import annotations
 
@@ -76,28 +76,44 @@ class PythonLaunchDescriptionSource(LaunchDescriptionSource):
             return None
 
 
+class FrontendLaunchDescriptionSource(PythonLaunchDescriptionSource):
+    """An XML or YAML launch file (launch's FrontendLaunchDescriptionSource): read by launch.frontend."""
+
+    def __init__(self, launch_file_path: Any) -> None:
+        super().__init__(launch_file_path)
+        self.method = "interpreted frontend launch file"
+
+    def get_launch_description(self, context: Any) -> Any:
+        from ..frontend import load_frontend_launch_description
+
+        path = self.path(context)
+        self.location = path
+        if path not in self._loaded:
+            self._loaded[path] = load_frontend_launch_description(path)
+        return self._loaded[path]
+
+
+class XMLLaunchDescriptionSource(FrontendLaunchDescriptionSource):
+    """launch_xml.launch_description_sources.XMLLaunchDescriptionSource."""
+
+
+class YAMLLaunchDescriptionSource(FrontendLaunchDescriptionSource):
+    """launch_yaml.launch_description_sources.YAMLLaunchDescriptionSource."""
+
+
 class AnyLaunchDescriptionSource(PythonLaunchDescriptionSource):
-    """By extension: Python works; XML and YAML launch files are refused with a clear error."""
+    """By extension, as launch's: ``.py`` is Python, anything else is read by the XML or YAML front end."""
 
     def get_launch_description(self, context: Any) -> Any:
         path = self.path(context)
-        if path.endswith((".xml", ".yaml", ".yml")):
-            raise InvalidLaunchFileError(
-                f"'{path}': XML and YAML launch files are not supported by gazelle's launch yet; use a .launch.py"
-            )
-        return super().get_launch_description(context)
+        if path.endswith(".py"):
+            return super().get_launch_description(context)
+        from ..frontend import load_frontend_launch_description
 
-
-class FrontendLaunchDescriptionSource(AnyLaunchDescriptionSource):
-    pass
-
-
-class XMLLaunchDescriptionSource(AnyLaunchDescriptionSource):
-    pass
-
-
-class YAMLLaunchDescriptionSource(AnyLaunchDescriptionSource):
-    pass
+        self.location = path
+        if path not in self._loaded:
+            self._loaded[path] = load_frontend_launch_description(path)
+        return self._loaded[path]
 
 
 __all__ = [

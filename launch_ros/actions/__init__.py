@@ -160,15 +160,7 @@ class Node(ExecuteProcess):
 
     def _param_args(self, context: LaunchContext, p: Any) -> list[str]:
         if isinstance(p, dict):
-            values = {
-                perform_substitutions(context, normalize_to_list_of_substitutions(k))
-                if not isinstance(k, str)
-                else k: (v.evaluate(context) if isinstance(v, ParameterValue) else evaluate_parameter_value(context, v))
-                for k, v in p.items()
-            }
-            nested: dict[str, Any] = {}
-            for k, v in values.items():
-                nested[k] = v
+            nested = _evaluate_parameter_dict(context, p)
             fd, path = tempfile.mkstemp(prefix="launch_params_", suffix=".yaml")
             with os.fdopen(fd, "w") as f:
                 yaml.safe_dump({"/**": {"ros__parameters": nested}}, f)
@@ -183,6 +175,22 @@ class Node(ExecuteProcess):
             base = perform_substitutions(context, self.executable)
             self.name = normalize_to_list_of_substitutions(os.path.basename(base))
         return super().execute(context)
+
+
+def _evaluate_parameter_dict(context: LaunchContext, params: dict[Any, Any]) -> dict[str, Any]:
+    """A node's ``{name: value}`` with names and values performed; a value that is itself a dict is a group of
+    nested names (XML's ``<param name="a"><param name="b" value="1"/></param>`` is ``a.b``), dumped as nested
+    YAML, which rcl reads as ``a.b`` (launch_ros's normalize_parameters flattens it to the same names)."""
+    out: dict[str, Any] = {}
+    for k, v in params.items():
+        name = k if isinstance(k, str) else perform_substitutions(context, normalize_to_list_of_substitutions(k))
+        if isinstance(v, dict):
+            out[name] = _evaluate_parameter_dict(context, v)
+        elif isinstance(v, ParameterValue):
+            out[name] = v.evaluate(context)
+        else:
+            out[name] = evaluate_parameter_value(context, v)
+    return out
 
 
 class LifecycleNode(Node):

@@ -72,7 +72,7 @@ THIRD_PARTY: dict[str, tuple[str, ...]] = {
 }
 """Libraries that only some folders may import (directly or inside a function)."""
 
-OTHER_FOLDERS = ("compat", "scripts", "launch", "launch_ros", "bench")
+OTHER_FOLDERS = ("compat", "scripts", "launch", "launch_ros", "launch_xml", "launch_yaml", "bench")
 """Importable folders beside the package: they may use only gazelle's public surfaces."""
 
 

@@ -116,18 +116,11 @@ def run_launch_file(
     ``current_launch_file_path``/``_directory`` set. Every argument becomes a launch configuration, declared or not:
     ros2launch's ``launch_a_launch_file`` includes the file with them, and launch's ``IncludeLaunchDescription``
     (Jazzy) checks only that the declared ones without a default are given (``launch_rviz:=false`` to a file that
-    declares no ``launch_rviz`` runs). XML and YAML
-    launch files are refused with a clear error (not supported yet)."""
+    declares no ``launch_rviz`` runs). XML and YAML launch files are read by launch.frontend (launch_xml and
+    launch_yaml's tags and substitutions, docs/launch_xml_yaml.md)."""
     from launch import LaunchService
     from launch.logging import log
 
-    if path.endswith((".xml", ".yaml", ".yml")):
-        log(
-            "ERROR",
-            "launch",
-            f"'{path}': XML and YAML launch files are not supported by gazelle's launch yet; use a .launch.py",
-        )
-        return 1
     ld = _load_description(path, debug)
     if ld is None:
         return 1
@@ -180,7 +173,8 @@ def _load_description(path: str, debug: bool) -> Any:
     except Exception as err:
         from launch.launch_service import _user_traceback
 
-        log("ERROR", "launch", f"Caught exception when trying to load file of format [py]: {err}")
+        kind = os.path.splitext(path)[1].lstrip(".") or "py"
+        log("ERROR", "launch", f"Caught exception when trying to load file of format [{kind}]: {err}")
         tb = _user_traceback(err)
         sys.stderr.write(tb if tb else "".join(traceback.format_exception(err)))
         if debug:

@@ -1,0 +1,5 @@
+"""``from launch_yaml.launch_description_sources import YAMLLaunchDescriptionSource``, as in Jazzy."""
+
+from launch.launch_description_sources import YAMLLaunchDescriptionSource
+
+__all__ = ["YAMLLaunchDescriptionSource"]
