@@ -133,14 +133,11 @@ class EntityQueries:
     def __init__(self, context: InterfacesContext):
         """Serve the five (``context.services`` holds them, so ``context.destroy`` removes them)."""
         self.sim = context.sim
-        for srv_type, name, fn in (
-            (GetEntities, "get_entities", self.get_entities),
-            (GetEntityState, "get_entity_state", self.get_entity_state),
-            (GetEntitiesStates, "get_entities_states", self.get_entities_states),
-            (SetEntityState, "set_entity_state", self.set_entity_state),
-            (GetEntityInfo, "get_entity_info", self.get_entity_info),
-        ):
-            context.serve(srv_type, name, fn)
+        context.serve(GetEntities, "get_entities", self.get_entities)
+        context.serve(GetEntityState, "get_entity_state", self.get_entity_state)
+        context.serve(GetEntitiesStates, "get_entities_states", self.get_entities_states)
+        context.serve(SetEntityState, "set_entity_state", self.set_entity_state)
+        context.serve(GetEntityInfo, "get_entity_info", self.get_entity_info)
 
     def _frame_pose(self, frame: str, field_name: str) -> Pose:
         """The world pose of a request's reference frame (an entity, or ``entity::link``); RESULT_OPERATION_FAILED

@@ -45,11 +45,8 @@ class NamedPosesService:
     def __init__(self, context: InterfacesContext):
         """Serve both (``context.services`` holds them, so ``context.destroy`` removes them)."""
         self.sim = context.sim
-        for srv_type, name, fn in (
-            (GetNamedPoses, "get_named_poses", self.get_named_poses),
-            (GetNamedPoseBounds, "get_named_pose_bounds", self.get_named_pose_bounds),
-        ):
-            context.serve(srv_type, name, fn)
+        context.serve(GetNamedPoses, "get_named_poses", self.get_named_poses)
+        context.serve(GetNamedPoseBounds, "get_named_pose_bounds", self.get_named_pose_bounds)
 
     def _places(self) -> tuple[Place, ...]:
         """The current world's named poses (read on the sim thread: a world loaded at run time replaces them)."""

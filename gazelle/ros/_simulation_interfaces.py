@@ -188,16 +188,13 @@ class SimulationInterfaces:
             node.get_logger().error(reason)
 
         self.sim.divergence_listeners.append(report)
-        for srv_type, name, fn in (
-            (GetSimulatorFeatures, "get_simulator_features", self.get_simulator_features),
-            (GetSimulationState, "get_simulation_state", self.get_simulation_state),
-            (SetSimulationState, "set_simulation_state", self.set_simulation_state),
-            (ResetSimulation, "reset_simulation", self.reset_simulation),
-            (SpawnEntity, "spawn_entity", self.spawn_entity),
-            (SpawnEntities, "spawn_entities", self.spawn_entities),
-            (DeleteEntity, "delete_entity", self.delete_entity),
-        ):
-            self.context.serve(srv_type, name, fn)
+        self.context.serve(GetSimulatorFeatures, "get_simulator_features", self.get_simulator_features)
+        self.context.serve(GetSimulationState, "get_simulation_state", self.get_simulation_state)
+        self.context.serve(SetSimulationState, "set_simulation_state", self.set_simulation_state)
+        self.context.serve(ResetSimulation, "reset_simulation", self.reset_simulation)
+        self.context.serve(SpawnEntity, "spawn_entity", self.spawn_entity)
+        self.context.serve(SpawnEntities, "spawn_entities", self.spawn_entities)
+        self.context.serve(DeleteEntity, "delete_entity", self.delete_entity)
         self.stepping = SteppingService(node, guarded_service("step_simulation", self.step_simulation))
         self.action = serve_action(node, SimulateSteps, "~/simulate_steps", self._simulate_steps, self.cb)
         self.features: set[int] = {int(f) for f in FEATURES}

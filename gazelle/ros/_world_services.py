@@ -97,13 +97,10 @@ class WorldServices:
         self.catalog = WorldCatalog(self.resolver, installed, (worlds.first.name, worlds.first.uri))
         self._from_string: tuple[LoadedWorld, str] | None = None
         """The last world loaded from a resource_string, and the string (GetCurrentWorld gives it back)."""
-        for kind, name, fn in (
-            (GetAvailableWorlds, "get_available_worlds", self.get_available_worlds),
-            (LoadWorld, "load_world", self.load_world),
-            (UnloadWorld, "unload_world", self.unload_world),
-            (GetCurrentWorld, "get_current_world", self.get_current_world),
-        ):
-            context.serve(kind, name, fn)
+        context.serve(GetAvailableWorlds, "get_available_worlds", self.get_available_worlds)
+        context.serve(LoadWorld, "load_world", self.load_world)
+        context.serve(UnloadWorld, "unload_world", self.unload_world)
+        context.serve(GetCurrentWorld, "get_current_world", self.get_current_world)
 
     # ------------------------------------------------------------------ the services
     def get_available_worlds(self, req: GetAvailableWorlds.Request, res: GetAvailableWorlds.Response) -> Any:
