@@ -227,7 +227,7 @@ class SimulationNode(Node):
         try:  # the world's collision geometry for move_group (moveit_msgs is built by the set-up)
             from ._scene_publisher import ScenePublisher
 
-            self._scene_publisher = ScenePublisher(self)
+            self._scene_publisher = ScenePublisher(self, sim, self.outbox)
         except ImportError as err:
             self.get_logger().debug(f"no /gazelle/planning_scene_world: {err}")
         sim.bus.add_listener(self)
@@ -256,7 +256,7 @@ class SimulationNode(Node):
         self._model_states_pub = self.create_publisher(ModelStates, "/model_states", MODEL_STATES_QOS)
         states_pub = self._model_states_pub
         self._model_states_heard = Subscribed(states_pub)
-        self._model_states_lane = self.outbox.lane(
+        self._model_states_lane: Lane[list[tuple[str, EntityState]]] = self.outbox.lane(
             lambda states: states_pub.publish(model_states_msg(states)), 1, "/model_states", keep_last=True
         )
         self._model_states_period = 1.0 / MODEL_STATES_RATE_HZ
