@@ -18,7 +18,7 @@ import time
 import traceback
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import rclpy
 from gazebo_msgs.msg import ModelStates
@@ -27,9 +27,10 @@ from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.context import Context
 from rclpy.event_handler import PublisherEventCallbacks, SubscriptionEventCallbacks
 from rclpy.exceptions import InvalidTopicNameException
-from rclpy.executors import MultiThreadedExecutor
+from rclpy.executors import Executor, MultiThreadedExecutor
 from rclpy.logging import get_logger
 from rclpy.node import Node
+from rclpy.publisher import Publisher
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 from rclpy.validate_full_topic_name import validate_full_topic_name
 from rosgraph_msgs.msg import Clock
@@ -59,6 +60,13 @@ from ._plugin_nodes import PluginNodes
 from ._signals import spin_until_stopped
 from ._simulation_interfaces import SimulationInterfaces
 from ._subscribed import Subscribed
+
+if TYPE_CHECKING:
+    from rclpy.subscription import Subscription
+
+    from ._control import ControllerManagerNode
+    from ._controller_node import ControllerNode
+    from ._scene_publisher import ScenePublisher
 
 
 def qos_profile(qos: Qos, depth: int) -> QoSProfile:
@@ -148,8 +156,8 @@ def _no_sub_events() -> SubscriptionEventCallbacks:
 class _RosEndpoint:
     """One rclpy publisher, shared by every bus endpoint of one node with the same topic."""
 
-    handle: Any
-    node: Any
+    handle: Publisher
+    node: Node
     """The node it was made on (this one, or a plugin's)."""
     writer: AckedWriter
     """Publishes through ``handle`` without overwriting what a reliable reader has not acknowledged."""
@@ -183,8 +191,9 @@ class SimulationNode(Node):
         """The bus's subscriptions: taken before each requested step (:meth:`take_inbound`)."""
         self._lock = threading.Lock()
         self._pubs: dict[tuple[str, str, str], _RosEndpoint] = {}
-        self._subs: dict[int, Any] = {}
-        self._sinks: dict[int, Any] = {}
+        self._subs: dict[int, tuple[Subscription, Node]] = {}
+        """id(subscriber endpoint) -> its rclpy subscription and the node it is on."""
+        self._sinks: dict[int, Callable[[object], None]] = {}
         """id(publisher endpoint) -> the sink this bridge added to it (other sinks stay)."""
         self._static: dict[int, tuple[Transform, ...]] = {}
         self.outbox = Outbox(lossless=not drop_when_behind)
@@ -193,12 +202,12 @@ class SimulationNode(Node):
             self._count_dropped()
         self._lanes: dict[int, Lane] = {}
         """id(publisher endpoint) -> its lane in the outbox."""
-        self._managers: dict[str, Any] = {}
+        self._managers: dict[str, ControllerManagerNode] = {}
         """Entity -> the node of its controller manager (see ``_control``)."""
-        self._controller_nodes: dict[int, Any] = {}
+        self._controller_nodes: dict[int, ControllerNode] = {}
         """Each loaded controller's own node (``_controller_node.py``), by its parameters component's id."""
-        self._executor: Any = None
-        self._pending_nodes: list[Any] = []
+        self._executor: Executor | None = None
+        self._pending_nodes: list[Node] = []
         """Manager and plugin nodes made before the executor was attached."""
         self.plugin_nodes = PluginNodes(sim, self.context, self._add_node, self._remove_node)
         """gazebo_ros plugins' own nodes (``/differential_drive``)."""
@@ -214,11 +223,11 @@ class SimulationNode(Node):
         # MuJoCo between two clock periods
         sim.add_step_listener(self._on_step, clock_rate_hz)
         self._publish_model_states()
-        self._scene_publisher: Any = None
+        self._scene_publisher: ScenePublisher | None = None
         try:  # the world's collision geometry for move_group (moveit_msgs is built by the set-up)
             from ._scene_publisher import ScenePublisher
 
-            self._scene_publisher = ScenePublisher(self)
+            self._scene_publisher = ScenePublisher(self, sim, self.outbox)
         except ImportError as err:
             self.get_logger().debug(f"no /gazelle/planning_scene_world: {err}")
         sim.bus.add_listener(self)
@@ -247,7 +256,7 @@ class SimulationNode(Node):
         self._model_states_pub = self.create_publisher(ModelStates, "/model_states", MODEL_STATES_QOS)
         states_pub = self._model_states_pub
         self._model_states_heard = Subscribed(states_pub)
-        self._model_states_lane = self.outbox.lane(
+        self._model_states_lane: Lane[list[tuple[str, EntityState]]] = self.outbox.lane(
             lambda states: states_pub.publish(model_states_msg(states)), 1, "/model_states", keep_last=True
         )
         self._model_states_period = 1.0 / MODEL_STATES_RATE_HZ
@@ -257,11 +266,11 @@ class SimulationNode(Node):
     # ------------------------------------------------------------------ clock
 
     @property
-    def clock_publisher(self) -> Any:
+    def clock_publisher(self) -> Publisher:
         """The rclpy publisher of ``/clock`` (benches and tools count its subscribers)."""
         return self._clock_pub
 
-    def ros_publishers(self, topic: str) -> list[Any]:
+    def ros_publishers(self, topic: str) -> list[Publisher]:
         """The rclpy publishers this bridge has on ``topic`` (one per message type and QoS)."""
         with self._lock:
             return [entry.handle for key, entry in self._pubs.items() if key[1] == topic]  # (node, topic, type)
@@ -438,7 +447,7 @@ class SimulationNode(Node):
         lane.put(union)
 
     # ------------------------------------------------------------------ ros2_control
-    def attach_executor(self, executor: Any) -> None:
+    def attach_executor(self, executor: Executor) -> None:
         """Give the node the executor that spins it: controller managers' nodes are added to it."""
         with self._lock:
             self._executor = executor
@@ -464,10 +473,10 @@ class SimulationNode(Node):
         if executor is not None:
             executor.remove_node(node)
 
-    def component_added(self, owner: str, component: Any) -> None:
+    def component_added(self, owner: str, component: object) -> None:
         """A gazebo_ros plugin gets its node; a controller manager its node; a trajectory controller its
         action server."""
-        from ..systems.ros2_control import ControllerManager, ControllerParameters
+        from ..systems.ros2_control import Controller, ControllerManager, ControllerParameters
 
         if isinstance(component, PluginNode):
             self.plugin_nodes.declare(component)
@@ -485,25 +494,25 @@ class SimulationNode(Node):
             with self._lock:
                 self._managers[owner] = node
             self._add_node(node)
-        elif getattr(component, "action_type", ""):  # a controller that serves an action (JTC, gripper)
+        elif isinstance(component, Controller) and component.action_type:  # one serving an action (JTC, gripper)
             with self._lock:
                 node = self._managers.get(owner)
             if node is not None:
                 node.add_controller_action(component)
 
-    def manager_nodes(self) -> list[Any]:
+    def manager_nodes(self) -> list[ControllerManagerNode]:
         """The controller managers' nodes."""
         with self._lock:
             return list(self._managers.values())
 
-    def controller_nodes(self) -> list[Any]:
+    def controller_nodes(self) -> list[ControllerNode]:
         """The loaded controllers' own nodes."""
         with self._lock:
             return list(self._controller_nodes.values())
 
-    def component_removed(self, component: Any) -> None:
+    def component_removed(self, component: object) -> None:
         """Undo :meth:`component_added`."""
-        from ..systems.ros2_control import ControllerManager, ControllerParameters
+        from ..systems.ros2_control import Controller, ControllerManager, ControllerParameters
 
         if isinstance(component, PluginNode):
             self.plugin_nodes.undeclare(component)
@@ -520,7 +529,7 @@ class SimulationNode(Node):
             if node is not None:
                 self._remove_node(node)
                 node.destroy_node()
-        elif getattr(component, "action_type", ""):
+        elif isinstance(component, Controller) and component.action_type:
             with self._lock:
                 nodes = list(self._managers.values())
             for node in nodes:
@@ -663,7 +672,7 @@ class RosBridge:
 
 
 def _publish_converted(
-    handle: Any, convert: Callable[[Any], Any], raw: Callable[[Any], bytes | None] | None, payload: Any
+    handle: AckedWriter, convert: Callable[[Any], Any], raw: Callable[[Any], bytes | None] | None, payload: object
 ) -> None:
     """Publish one payload, or each of a :class:`PayloadBlock`'s in order (on the publisher thread): as
     bytes serialized from a template where its kind has one (:mod:`._cdr`: a block of joint states,

@@ -71,15 +71,22 @@ Res = TypeVar("Res")
 class _NamedRequest(Protocol):
     """A controller_manager request naming one controller (Load, Configure, Cleanup, Unload)."""
 
-    name: str
+    @property
+    def name(self) -> str: ...
 
 
 @runtime_checkable
 class _OkResponse(Protocol):
     """A controller_manager response that says whether it was done."""
 
-    ok: bool
+    @property
+    def ok(self) -> bool: ...
 
+    @ok.setter
+    def ok(self, value: bool) -> None: ...
+
+
+_Ok = TypeVar("_Ok", bound=_OkResponse)
 
 _LIFECYCLE = {
     UNCONFIGURED: (State.PRIMARY_STATE_UNCONFIGURED, "unconfigured"),
@@ -147,12 +154,12 @@ class ControllerManagerNode(Node):
             guarded("list_hardware_components", self._list_components),
             cb,
         )
-        for srv_type, name, action in (
-            (LoadController, "load_controller", manager.load_controller),
-            (ConfigureController, "configure_controller", manager.configure_controller),
-            (CleanupController, "cleanup_controller", manager.cleanup_controller),
-        ):
-            serve(self, srv_type, f"~/{name}", guarded(name, self._by_name(action)), cb)
+        load = self._by_name(manager.load_controller)
+        serve(self, LoadController, "~/load_controller", guarded("load_controller", load), cb)
+        configure = self._by_name(manager.configure_controller)
+        serve(self, ConfigureController, "~/configure_controller", guarded("configure_controller", configure), cb)
+        cleanup = self._by_name(manager.cleanup_controller)
+        serve(self, CleanupController, "~/cleanup_controller", guarded("cleanup_controller", cleanup), cb)
         serve(self, SwitchController, "~/switch_controller", guarded("switch_controller", self._switch), cb)
         unload = self._by_name(manager.unload_controller)
         serve(self, UnloadController, "~/unload_controller", guarded("unload_controller", unload), cb)
@@ -321,10 +328,10 @@ class ControllerManagerNode(Node):
         res.component = self.sim.call(query)
         return res
 
-    def _by_name(self, action: Callable[[str], object]) -> Callable[[_NamedRequest, _OkResponse], _OkResponse]:
+    def _by_name(self, action: Callable[[str], object]) -> Callable[[_NamedRequest, _Ok], _Ok]:
         """A service whose request is a controller's ``name``: ``action(name)`` on the simulation thread."""
 
-        def serve(req: _NamedRequest, res: _OkResponse) -> _OkResponse:
+        def serve(req: _NamedRequest, res: _Ok) -> _Ok:
             self.sim.call(lambda: action(req.name))
             res.ok = True
             return res

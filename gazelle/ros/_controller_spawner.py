@@ -17,7 +17,7 @@ import sys
 import time
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 import rclpy
 from controller_manager_msgs.srv import (
@@ -37,6 +37,9 @@ from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from ..description import MAX_PARAMS_FILE_BYTES, read_regular_file
 from ..systems.ros2_control import ParamsError, load_params
 from ._convert import to_duration
+
+if TYPE_CHECKING:
+    from ._replies import Req, Res, ServiceType
 
 STRICT = SwitchController.Request.STRICT
 MAX_SECONDS = 2**31 - 1
@@ -123,7 +126,7 @@ class _Client:
             self.executor.spin_once(timeout_sec=0.05)
         return f"the reason is in {self.manager}'s log"
 
-    def call(self, srv_type: Any, name: str, request: Any) -> Any:
+    def call(self, srv_type: ServiceType[Req, Res], name: str, request: Req) -> Res:
         """Call the manager's service ``name``; a manager that is not there or does not answer within the timeout is
         a RuntimeError naming the service."""
         client = self.node.create_client(srv_type, f"{self.manager}/{name}")
@@ -132,9 +135,10 @@ class _Client:
                 raise RuntimeError(f"service {self.manager}/{name} is not available")
             future = client.call_async(request)
             self.executor.spin_until_future_complete(future, timeout_sec=self.timeout)
-            if not future.done():
+            reply = future.result() if future.done() else None  # a done future holds None only if cancelled
+            if reply is None:
                 raise RuntimeError(f"service {self.manager}/{name} did not answer in {self.timeout:g} s")
-            return future.result()
+            return reply
         finally:
             self.node.destroy_client(client)
 

@@ -7,7 +7,7 @@ the ``bounds`` entity filter and named poses, and a moved entity's box moves wit
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from geometry_msgs.msg import Vector3
 from simulation_interfaces.msg import Bounds, SimulatorFeatures
@@ -30,7 +30,7 @@ class EntityBoundsService:
         self.sim = context.sim
         context.serve(GetEntityBounds, "get_entity_bounds", self.get)
 
-    def get(self, req: GetEntityBounds.Request, res: GetEntityBounds.Response) -> Any:
+    def get(self, req: GetEntityBounds.Request, res: GetEntityBounds.Response) -> GetEntityBounds.Response:
         """GetEntityBounds: the entity's collision box in the world frame (RESULT_NOT_FOUND for no such entity)."""
         res.result, box = _attempt(lambda: self.sim.call(lambda: entity_box(self.sim.world, req.entity)))
         if box is not None:

@@ -7,9 +7,8 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
-from typing import Any
 
-from simulation_interfaces.msg import Bounds, EntityCategory, Result, TagsFilter
+from simulation_interfaces.msg import Bounds, EntityCategory, EntityFilters, Result, TagsFilter
 
 from ..description import JointType, excerpt
 from ..physics import Entity
@@ -59,7 +58,11 @@ def checked_tags(tags: Iterable[str], field_name: str) -> tuple[str, ...]:
     return tuple(str(t) for t in tags)
 
 
-def _overlap_shape(bounds: Any) -> tuple[tuple[Any, Any] | None, tuple[Any, float] | None]:
+Point = tuple[float, float, float]
+"""A point in the world frame, as a request's ``geometry_msgs/Vector3`` gives it."""
+
+
+def _overlap_shape(bounds: Bounds) -> tuple[tuple[Point, Point] | None, tuple[Point, float] | None]:
     """(box, sphere) of a request's ``filters.bounds``; both None when it is empty."""
     pts = [(p.x, p.y, p.z) for p in bounds.points]
     if bounds.type == Bounds.TYPE_EMPTY:
@@ -97,13 +100,13 @@ class EntityFilter:
     """Empty for all."""
     all_tags: bool
     """``FILTER_MODE_ALL``: an entity needs every tag; else any one."""
-    box: tuple[Any, Any] | None
+    box: tuple[Point, Point] | None
     """Two opposite corners in the world frame, or None."""
-    sphere: tuple[Any, float] | None
+    sphere: tuple[Point, float] | None
     """Centre in the world frame and radius, or None."""
 
     @classmethod
-    def from_msg(cls, filters: Any) -> EntityFilter:
+    def from_msg(cls, filters: EntityFilters) -> EntityFilter:
         """A request's ``filters``; raises :class:`_Refused` naming the field that is wrong."""
         mode = filters.tags.filter_mode
         if mode not in (TagsFilter.FILTER_MODE_ANY, TagsFilter.FILTER_MODE_ALL):

@@ -6,7 +6,7 @@ stays through a SCOPE_STATE reset."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from simulation_interfaces.msg import Result, SimulatorFeatures
 from simulation_interfaces.srv import SetEntityInfo
@@ -32,7 +32,7 @@ class EntityInfoSetter:
         self.sim = context.sim
         context.serve(SetEntityInfo, "set_entity_info", self.set)
 
-    def set(self, req: SetEntityInfo.Request, res: SetEntityInfo.Response) -> Any:
+    def set(self, req: SetEntityInfo.Request, res: SetEntityInfo.Response) -> SetEntityInfo.Response:
         """SetEntityInfo: the entity's category, description and tags become the request's."""
         info = req.info
         category = info.category.category

@@ -6,10 +6,11 @@ process) and the entity categories; see ``_simulation_interfaces.py`` for the de
 from __future__ import annotations
 
 import time
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import regex
 from simulation_interfaces.msg import (
+    EntityFilters,
     EntityState,
     Result,
     SimulatorFeatures,
@@ -133,14 +134,11 @@ class EntityQueries:
     def __init__(self, context: InterfacesContext):
         """Serve the five (``context.services`` holds them, so ``context.destroy`` removes them)."""
         self.sim = context.sim
-        for srv_type, name, fn in (
-            (GetEntities, "get_entities", self.get_entities),
-            (GetEntityState, "get_entity_state", self.get_entity_state),
-            (GetEntitiesStates, "get_entities_states", self.get_entities_states),
-            (SetEntityState, "set_entity_state", self.set_entity_state),
-            (GetEntityInfo, "get_entity_info", self.get_entity_info),
-        ):
-            context.serve(srv_type, name, fn)
+        context.serve(GetEntities, "get_entities", self.get_entities)
+        context.serve(GetEntityState, "get_entity_state", self.get_entity_state)
+        context.serve(GetEntitiesStates, "get_entities_states", self.get_entities_states)
+        context.serve(SetEntityState, "set_entity_state", self.set_entity_state)
+        context.serve(GetEntityInfo, "get_entity_info", self.get_entity_info)
 
     def _frame_pose(self, frame: str, field_name: str) -> Pose:
         """The world pose of a request's reference frame (an entity, or ``entity::link``); RESULT_OPERATION_FAILED
@@ -150,7 +148,7 @@ class EntityQueries:
         except SpawnFailed as err:
             raise _Refused(Result.RESULT_OPERATION_FAILED, str(err)) from None
 
-    def _select(self, filters: Any) -> list[str]:
+    def _select(self, filters: EntityFilters) -> list[str]:
         """The names of the entities that pass a request's filters: categories and tags on the sim thread (cheap),
         the name pattern off it (bounded in time), then the overlap bounds on it."""
         f = EntityFilter.from_msg(filters)
@@ -165,7 +163,7 @@ class EntityQueries:
         """The entities of the filter's categories and tags (all when it names none), read on the sim thread."""
         return self.sim.call(lambda: [name for name, e in self.sim.world.entities.items() if f.keeps(e)])
 
-    def get_entities(self, req: GetEntities.Request, res: GetEntities.Response) -> Any:
+    def get_entities(self, req: GetEntities.Request, res: GetEntities.Response) -> GetEntities.Response:
         """GetEntities: names, filtered by a bounded regular expression and by category."""
         res.result, found = _attempt(lambda: self._select(req.filters))
         res.entities = found or []
@@ -182,14 +180,16 @@ class EntityQueries:
         msg.twist.angular.x, msg.twist.angular.y, msg.twist.angular.z = (float(v) for v in st.angular_velocity)
         return msg
 
-    def get_entity_state(self, req: GetEntityState.Request, res: GetEntityState.Response) -> Any:
+    def get_entity_state(self, req: GetEntityState.Request, res: GetEntityState.Response) -> GetEntityState.Response:
         """GetEntityState: an entity's pose and twist in a reference frame."""
         res.result, state = _attempt(lambda: self.sim.call(lambda: self._state_msg(req.entity)))
         if state is not None:
             res.state = state
         return res
 
-    def get_entities_states(self, req: GetEntitiesStates.Request, res: GetEntitiesStates.Response) -> Any:
+    def get_entities_states(
+        self, req: GetEntitiesStates.Request, res: GetEntitiesStates.Response
+    ) -> GetEntitiesStates.Response:
         """GetEntitiesStates: the states of the filtered entities, in one sim-thread call."""
 
         def states() -> tuple[list[str], list[EntityState]]:
@@ -206,7 +206,7 @@ class EntityQueries:
             res.entities, res.states = found
         return res
 
-    def set_entity_state(self, req: SetEntityState.Request, res: SetEntityState.Response) -> Any:
+    def set_entity_state(self, req: SetEntityState.Request, res: SetEntityState.Response) -> SetEntityState.Response:
         """SetEntityState: teleport an entity and set its twist."""
         s = req.state
         p, tw = s.pose, s.twist
@@ -230,7 +230,7 @@ class EntityQueries:
         res.result, _ = _attempt(teleport, {ErrorKind.INVALID_POSE: SetEntityState.Response.INVALID_POSE})
         return res
 
-    def get_entity_info(self, req: GetEntityInfo.Request, res: GetEntityInfo.Response) -> Any:
+    def get_entity_info(self, req: GetEntityInfo.Request, res: GetEntityInfo.Response) -> GetEntityInfo.Response:
         """GetEntityInfo: an entity's category, description and tags (what SetEntityInfo set, else gazelle's
         own: the category its model implies, a description written from the model, no tags)."""
 

@@ -33,7 +33,7 @@ from ..systems import (
     RobotStatePublisher,
 )
 from ._convert import from_pose_msg, to_pose_msg, to_time
-from ._replies import guarded_service, serve, with_warnings
+from ._replies import Req, Res, ServiceCallback, ServiceType, guarded_service, serve, with_warnings
 from ._spawn_entity import with_joint_state_publisher, with_robot_state_options
 from ._spawn_preamble import SpawnFailed, check_pose, frame_in_world, model_to_spawn
 
@@ -84,26 +84,27 @@ class GazeboServices:
 
     def _serve_gazebo_services(self) -> list[Service]:
         """gazebo_ros's services (ROS 2 names, and ROS 1's that the seed's chessboard spawner calls)."""
-        served = []
-        for srv_type, name, cb in (
-            (GzSpawnEntity, "/spawn_entity", self._gz_spawn),
-            (GzDeleteEntity, "/delete_entity", self._gz_delete),
-            (GzGetEntityState, "/get_entity_state", self._gz_get_state),
-            (GzSetEntityState, "/set_entity_state", self._gz_set_state),
-            (GzGetModelList, "/get_model_list", self._gz_model_list),
-            (Empty, "/pause_physics", self._pause),
-            (Empty, "/unpause_physics", self._unpause),
-            (Empty, "/reset_simulation", self._reset_simulation),
-            (Empty, "/reset_world", self._reset_world),
+
+        def one(srv_type: ServiceType[Req, Res], name: str, cb: ServiceCallback[Req, Res]) -> Service:
+            return serve(self.node, srv_type, name, guarded_service(name, cb), self._cb)
+
+        return [
+            one(GzSpawnEntity, "/spawn_entity", self._gz_spawn),
+            one(GzDeleteEntity, "/delete_entity", self._gz_delete),
+            one(GzGetEntityState, "/get_entity_state", self._gz_get_state),
+            one(GzSetEntityState, "/set_entity_state", self._gz_set_state),
+            one(GzGetModelList, "/get_model_list", self._gz_model_list),
+            one(Empty, "/pause_physics", self._pause),
+            one(Empty, "/unpause_physics", self._unpause),
+            one(Empty, "/reset_simulation", self._reset_simulation),
+            one(Empty, "/reset_world", self._reset_world),
             # ROS 1 gazebo_ros's names (the seed's chessboard spawner calls /gazebo/spawn_sdf_model)
-            (GzSpawnModel, "/gazebo/spawn_sdf_model", self._ros1_spawn),
-            (GzSpawnModel, "/gazebo/spawn_urdf_model", self._ros1_spawn),
-            (GzDeleteModel, "/gazebo/delete_model", self._ros1_delete),
-            (GzGetModelState, "/gazebo/get_model_state", self._ros1_get_state),
-            (GzSetModelState, "/gazebo/set_model_state", self._ros1_set_state),
-        ):
-            served.append(serve(self.node, srv_type, name, guarded_service(name, cb), self._cb))
-        return served
+            one(GzSpawnModel, "/gazebo/spawn_sdf_model", self._ros1_spawn),
+            one(GzSpawnModel, "/gazebo/spawn_urdf_model", self._ros1_spawn),
+            one(GzDeleteModel, "/gazebo/delete_model", self._ros1_delete),
+            one(GzGetModelState, "/gazebo/get_model_state", self._ros1_get_state),
+            one(GzSetModelState, "/gazebo/set_model_state", self._ros1_set_state),
+        ]
 
     def spawn_xml(
         self, xml: str, *, name: str, namespace: str, pose: Pose, reference_frame: str, source: str

@@ -6,11 +6,14 @@ import logging
 import os
 import threading
 import time
-from typing import Any
 
 from rclpy.callback_groups import CallbackGroup
+from rclpy.client import Client
 from rclpy.exceptions import InvalidHandle
+from rclpy.service import Service
 from rclpy.subscription import Subscription
+from rclpy.timer import Timer
+from rclpy.waitable import Waitable
 
 _log = logging.getLogger("gazelle.ros")
 
@@ -20,6 +23,10 @@ message to the simulation, so they take microseconds; a stuck one is not waited 
 TAKE_CAP = 1000
 """At most this many messages taken per subscription in one drain, for one whose depth is unbounded
 (KEEP_ALL): a publisher flooding a topic delays a step by at most that, never for ever."""
+
+
+Entity = Subscription | Timer | Client | Service | Waitable
+"""What rclpy's executor asks a callback group about (the entities a node's callbacks belong to)."""
 
 
 class InboundGroup(CallbackGroup):
@@ -53,12 +60,12 @@ class InboundGroup(CallbackGroup):
         self._test_delay = float(os.environ.get("GAZELLE_TEST_INBOUND_DELAY_SEC", "0") or 0)
         """A test hook: the executor made slow on purpose (seconds before it begins each callback)."""
 
-    def can_execute(self, entity: Any) -> bool:
+    def can_execute(self, entity: Entity) -> bool:
         """Whether the executor may run the entity's callback now: not while a drain takes the messages."""
         with self._cond:
             return not self._draining
 
-    def beginning_execution(self, entity: Any) -> bool:
+    def beginning_execution(self, entity: Entity) -> bool:
         """The executor is about to take a message and run its callback: counted, unless a drain is under way."""
         if self._test_delay:
             time.sleep(self._test_delay)
@@ -68,7 +75,7 @@ class InboundGroup(CallbackGroup):
             self._running += 1
             return True
 
-    def ending_execution(self, entity: Any) -> None:
+    def ending_execution(self, entity: Entity) -> None:
         """The callback begun last by :meth:`beginning_execution` has ended (a drain may be waiting for it)."""
         with self._cond:
             self._running -= 1

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Protocol, TypeVar
 from ..description import reply_text
 from ..planning import PlanningError
 from ._move_group_common import _failed
-from ._replies import serve
+from ._replies import ServiceType, serve
 
 if TYPE_CHECKING:
     from rclpy.service import Service
@@ -43,7 +43,11 @@ them."""
 
 
 def serve_on_planner(
-    context: MoveGroupContext, srv_type: type, name: str, fn: Callable[[Req, Res, ArmPlanner], Res], role: str
+    context: MoveGroupContext,
+    srv_type: ServiceType[Req, Res],
+    name: str,
+    fn: Callable[[Req, Res, ArmPlanner], Res],
+    role: str,
 ) -> Service:
     """Serve ``name`` with :func:`planner_callback` of ``fn``."""
     return serve(context.node, srv_type, name, planner_callback(context, name, fn, role), context.callback_group)

@@ -36,7 +36,7 @@ the pipeline's own): not used by gazelle's planner, and said so at start."""
 _PARAMETER_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*)*")
 
 
-def _flat(prefix: str, data: Any) -> list[Parameter]:
+def _flat(prefix: str, data: object) -> list[Parameter]:
     """A YAML mapping as ROS parameters named ``prefix.key.subkey`` (MoveItConfigsBuilder's layout); values
     a ROS parameter cannot hold (mixed lists, nulls) are left out."""
     out: list[Parameter] = []

@@ -23,7 +23,7 @@ as ``true``/``false``), a group's with ``moveit::core::toString`` (a double as `
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from moveit_msgs.msg import PlannerInterfaceDescription
 from moveit_msgs.srv import GetPlannerParams, QueryPlannerInterfaces, SetPlannerParams
@@ -51,7 +51,7 @@ MAX_CONFIGURATIONS = 1024
 """set_planner_params adds at most this many configurations (a peer cannot grow the node without end)."""
 
 
-def _value_to_string(value: Any) -> str:
+def _value_to_string(value: object) -> str:
     """rclcpp's ``to_string(ParameterValue)`` (rclcpp/src/rclcpp/parameter_value.cpp)."""
     if isinstance(value, bool):
         return "true" if value else "false"
@@ -65,7 +65,7 @@ def _value_to_string(value: Any) -> str:
     return str(value)
 
 
-def _group_value_to_string(value: Any) -> str:
+def _group_value_to_string(value: object) -> str:
     """``moveit::core::toString`` for doubles (an ostream's default: ``%g``), std::to_string otherwise."""
     if isinstance(value, bool):
         return "1" if value else "0"
@@ -129,7 +129,7 @@ class QueryPlannersService:
         return out
 
     def _configuration(
-        self, params: dict[str, Any], group: str, planner_id: Any, inherited: dict[str, str]
+        self, params: dict[str, object], group: str, planner_id: object, inherited: dict[str, str]
     ) -> dict[str, str] | None:
         """One ``ompl.planner_configs.<planner_id>`` configuration over the group's parameters (MoveIt's
         ``loadPlannerConfiguration``), or None with MoveIt's error when it has no parameters."""

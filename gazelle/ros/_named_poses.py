@@ -11,7 +11,7 @@ no tags keeps every pose. A named pose without bounds answers ``TYPE_EMPTY`` (un
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from geometry_msgs.msg import Vector3
 from simulation_interfaces.msg import Bounds, NamedPose, Result, SimulatorFeatures, TagsFilter
@@ -45,17 +45,14 @@ class NamedPosesService:
     def __init__(self, context: InterfacesContext):
         """Serve both (``context.services`` holds them, so ``context.destroy`` removes them)."""
         self.sim = context.sim
-        for srv_type, name, fn in (
-            (GetNamedPoses, "get_named_poses", self.get_named_poses),
-            (GetNamedPoseBounds, "get_named_pose_bounds", self.get_named_pose_bounds),
-        ):
-            context.serve(srv_type, name, fn)
+        context.serve(GetNamedPoses, "get_named_poses", self.get_named_poses)
+        context.serve(GetNamedPoseBounds, "get_named_pose_bounds", self.get_named_pose_bounds)
 
     def _places(self) -> tuple[Place, ...]:
         """The current world's named poses (read on the sim thread: a world loaded at run time replaces them)."""
         return self.sim.call(lambda: tuple(self.sim.named_poses))
 
-    def get_named_poses(self, req: GetNamedPoses.Request, res: GetNamedPoses.Response) -> Any:
+    def get_named_poses(self, req: GetNamedPoses.Request, res: GetNamedPoses.Response) -> GetNamedPoses.Response:
         """GetNamedPoses: every named pose that passes the tags filter."""
         mode = req.tags.filter_mode
         try:
@@ -81,7 +78,9 @@ class NamedPosesService:
         res.result = _result(OK)
         return res
 
-    def get_named_pose_bounds(self, req: GetNamedPoseBounds.Request, res: GetNamedPoseBounds.Response) -> Any:
+    def get_named_pose_bounds(
+        self, req: GetNamedPoseBounds.Request, res: GetNamedPoseBounds.Response
+    ) -> GetNamedPoseBounds.Response:
         """GetNamedPoseBounds: the free space about a named pose, relative to it (RESULT_NOT_FOUND for no such
         name)."""
         try:

@@ -35,31 +35,34 @@ import threading
 import time
 from collections import deque
 from collections.abc import Callable
-from typing import Any
+from typing import Generic, TypeVar
 
 from ..systems import PayloadBlock
 
 _log = logging.getLogger("gazelle.ros")
 
+P = TypeVar("P")
+"""What a lane carries: the bus's payload of its topic (an Odometry, a TransformBatch, a PayloadBlock of them)."""
 
-class Lane:
-    """One publisher's queue in an :class:`Outbox` (keep-last ``depth``)."""
+
+class Lane(Generic[P]):
+    """One publisher's queue in an :class:`Outbox` (keep-last ``depth``) of ``P`` payloads."""
 
     __slots__ = ("_box", "_publish", "closed", "depth", "items", "keep_last", "name")
 
-    def __init__(self, box: Outbox, publish: Callable[[Any], None], depth: int, name: str, keep_last: bool = False):
+    def __init__(self, box: Outbox, publish: Callable[[P], None], depth: int, name: str, keep_last: bool = False):
         """One topic's queue in the outbox: ``depth`` payloads wait for the publisher thread; ``publish`` hands one
         to rclpy."""
         self._box = box
         self._publish = publish
         self.depth = max(1, depth)
-        self.items: deque[Any] = deque()
+        self.items: deque[P] = deque()
         self.name = name
         self.keep_last = keep_last
         """A lane of state (the newest is all that matters): never waits, keeps its newest ``depth``."""
         self.closed = False
 
-    def put(self, payload: Any) -> None:
+    def put(self, payload: P) -> None:
         """Queue ``payload`` for publishing. When the lane is full: waits for room (a lossless outbox),
         or drops the lane's oldest (a lossy outbox, or a keep-last lane)."""
         self._box._put(self, payload)
@@ -101,11 +104,11 @@ class Outbox:
         self._thread = threading.Thread(target=self._run, name=name, daemon=True)
         self._thread.start()
 
-    def lane(self, publish: Callable[[Any], None], depth: int, name: str = "", keep_last: bool = False) -> Lane:
+    def lane(self, publish: Callable[[P], None], depth: int, name: str = "", keep_last: bool = False) -> Lane[P]:
         """A new lane whose payloads go to ``publish`` (called on the publisher thread)."""
         return Lane(self, publish, depth, name, keep_last)
 
-    def _put(self, lane: Lane, payload: Any) -> None:
+    def _put(self, lane: Lane[P], payload: P) -> None:
         """Queue a payload on its lane. When the lane is full: lossless, wait for the publisher thread to make room
         (never on that thread itself, and not for a state lane, whose newest value is all that matters); lossy,
         or after a wait that ran out, drop the oldest payload and count it."""

@@ -7,7 +7,7 @@ import threading
 import time
 import warnings
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any, Protocol, TypeVar
+from typing import TYPE_CHECKING, Protocol, TextIO, TypeVar, runtime_checkable
 
 from rclpy.action.server import ActionServer, CancelResponse, GoalResponse
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
@@ -15,17 +15,66 @@ from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPo
 from ..description import reply_text
 
 if TYPE_CHECKING:
+    from rclpy.action.server import ServerGoalHandle
     from rclpy.callback_groups import CallbackGroup
     from rclpy.node import Node
     from rclpy.service import Service
 
+Req = TypeVar("Req")
+Res = TypeVar("Res")
+_Goal = TypeVar("_Goal")
+_Result = TypeVar("_Result")
+_Req_co = TypeVar("_Req_co", covariant=True)
+_Res_co = TypeVar("_Res_co", covariant=True)
+_Goal_co = TypeVar("_Goal_co", covariant=True)
+_Result_co = TypeVar("_Result_co", covariant=True)
 
-def failure_reply(res: Any, message: str) -> Any:
+
+class ServiceType(Protocol[_Req_co, _Res_co]):
+    """A generated service class (``simulation_interfaces.srv.SpawnEntity``), as rclpy's ``create_service`` takes
+    it: what matters here are its Request and Response classes, which a callback of it takes and returns."""
+
+    @property
+    def Request(self) -> type[_Req_co]: ...
+
+    @property
+    def Response(self) -> type[_Res_co]: ...
+
+
+class ActionType(Protocol[_Goal_co, _Result_co]):
+    """A generated action class (``control_msgs.action.FollowJointTrajectory``): its Goal and Result classes."""
+
+    @property
+    def Goal(self) -> type[_Goal_co]: ...
+
+    @property
+    def Result(self) -> type[_Result_co]: ...
+
+
+ServiceCallback = Callable[[Req, Res], Res]
+"""A service callback: fills in and returns the response it is given for the request."""
+
+
+@runtime_checkable
+class _Succeeds(Protocol):
+    """A response that says whether it succeeded (gazebo_msgs', std_srvs')."""
+
+    success: bool
+
+
+@runtime_checkable
+class _SaysWhy(Protocol):
+    """A response with a line for its client (gazebo_msgs')."""
+
+    status_message: str
+
+
+def failure_reply(res: Res, message: str) -> Res:
     """Mark any gazebo_msgs / simulation_interfaces / std_srvs response as failed with ``message``."""
     message = reply_text(message)
-    if hasattr(res, "success"):
+    if isinstance(res, _Succeeds):  # as hasattr: a runtime-checkable protocol checks its members are there
         res.success = False
-    if hasattr(res, "status_message"):
+    if isinstance(res, _SaysWhy):
         res.status_message = message
     result = getattr(res, "result", None)
     if result is not None and hasattr(result, "error_message"):
@@ -34,7 +83,7 @@ def failure_reply(res: Any, message: str) -> Any:
     return res
 
 
-def guarded_service(name: str, callback: Any) -> Any:
+def guarded_service(name: str, callback: ServiceCallback[Req, Res]) -> ServiceCallback[Req, Res]:
     """Wrap a service callback so that an unexpected exception becomes a failure reply.
 
     Without it, the exception would end up in the executor's thread: the request would get no
@@ -42,7 +91,7 @@ def guarded_service(name: str, callback: Any) -> Any:
     """
     log = logging.getLogger("gazelle.ros")
 
-    def wrapper(request: Any, response: Any) -> Any:
+    def wrapper(request: Req, response: Res) -> Res:
         try:
             return callback(request, response)
         except Exception as err:
@@ -75,7 +124,13 @@ at once lost one reply in a loaded test run ("no reply in 30 s"). The request si
 so a burst of callers is not cut to the last ten."""
 
 
-def serve(node: Node, srv_type: Any, name: str, callback: Any, callback_group: CallbackGroup | None) -> Service:
+def serve(
+    node: Node,
+    srv_type: ServiceType[Req, Res],
+    name: str,
+    callback: ServiceCallback[Req, Res],
+    callback_group: CallbackGroup | None,
+) -> Service:
     """``node.create_service`` with :data:`SERVICE_QOS`, its lost replies offered again
     (:func:`resend_lost_replies`); returns the service."""
     service = node.create_service(srv_type, name, callback, qos_profile=SERVICE_QOS, callback_group=callback_group)
@@ -83,7 +138,12 @@ def serve(node: Node, srv_type: Any, name: str, callback: Any, callback_group: C
 
 
 def serve_action(
-    node: Node, action_type: Any, name: str, execute: Any, callback_group: CallbackGroup | None, accept: Any = None
+    node: Node,
+    action_type: ActionType[_Goal, _Result],
+    name: str,
+    execute: Callable[[ServerGoalHandle], _Result],
+    callback_group: CallbackGroup | None,
+    accept: Callable[[_Goal], GoalResponse] | None = None,
 ) -> ActionServer:
     """An rclpy ActionServer for ``action_type`` on ``name``: ``execute`` runs an accepted goal, ``accept(goal)``
     says whether a goal is taken (None: every goal, as MoveIt's and simulation_interfaces' servers do), and a
@@ -131,7 +191,14 @@ def _hook_warnings() -> None:
         warnings.filterwarnings("always", message=r"failed to send response \(timeout\)", category=RuntimeWarning)
         shown = warnings.showwarning
 
-        def showwarning(message: Any, category: Any, filename: str, lineno: int, file: Any = None, line: Any = None):
+        def showwarning(
+            message: Warning | str,
+            category: type[Warning],
+            filename: str,
+            lineno: int,
+            file: TextIO | None = None,
+            line: str | None = None,
+        ) -> None:
             if getattr(_sending, "active", False) and str(message).startswith(_LOST):
                 _sending.lost = True
                 return
@@ -140,7 +207,7 @@ def _hook_warnings() -> None:
         warnings.showwarning = showwarning
 
 
-def _send(send: Any, response: Any, header: Any) -> bool:
+def _send(send: Callable[[object, object], None], response: object, header: object) -> bool:
     """Send once; False when the middleware dropped the reply for want of a matched reader."""
     _sending.active, _sending.lost = True, False
     try:
@@ -162,7 +229,7 @@ def resend_lost_replies(service: _S, name: str) -> _S:
     send = service.send_response
     log = logging.getLogger("gazelle.ros")
 
-    def resend(response: Any, header: Any) -> None:
+    def resend(response: object, header: object) -> None:
         deadline = time.monotonic() + RESEND_SEC
         tries = 1
         while time.monotonic() < deadline:
@@ -176,7 +243,7 @@ def resend_lost_replies(service: _S, name: str) -> _S:
             time.sleep(0.05)  # a breath between tries when the middleware answers at once
         log.warning(f"{name}: a reply was not delivered in {RESEND_SEC:g} s: the client's reader was never discovered")
 
-    def send_response(response: Any, header: Any) -> None:
+    def send_response(response: object, header: object) -> None:
         if not _send(send, response, header):
             threading.Thread(target=resend, args=(response, header), name=f"resend {name}", daemon=True).start()
 

@@ -10,7 +10,7 @@ its own robot; it is how the table, the board and the other arm get there.
 from __future__ import annotations
 
 import time
-from typing import Any
+from typing import TYPE_CHECKING
 
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
@@ -19,6 +19,13 @@ from ..systems import UpdateInfo
 from ._convert import to_pose_msg
 from ._subscribed import Subscribed
 
+if TYPE_CHECKING:
+    from moveit_msgs.msg import PlanningSceneWorld
+    from rclpy.node import Node
+
+    from ..sim import Simulation
+    from ._outbox import Lane, Outbox
+
 TOPIC = "/gazelle/planning_scene_world"
 LATCHED = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
 RATE_HZ = 5.0
@@ -26,19 +33,20 @@ RATE_HZ = 5.0
 
 
 class ScenePublisher:
-    """Publishes the world's collision geometry for a :class:`SimulationNode` (attach with :meth:`start`)."""
+    """Publishes the world's collision geometry for a :class:`SimulationNode` (from its making; :meth:`close` stops)."""
 
-    def __init__(self, node: Any) -> None:
+    def __init__(self, node: Node, sim: Simulation, outbox: Outbox) -> None:
+        """The latched topic on ``node``, published through a lane of ``outbox`` as ``sim`` steps."""
         from moveit_msgs.msg import PlanningSceneWorld  # built by the set-up; the sim runs without it
 
         self._node = node
-        self._sim = node.sim
+        self._sim = sim
         self._pub = node.create_publisher(PlanningSceneWorld, TOPIC, LATCHED)
         self._heard = Subscribed(self._pub)
         self._geometry = SceneGeometry()
         self._last: dict[str, SceneLink] | None = None
         self._last_wall = 0.0
-        self._lane = node.outbox.lane(lambda links: self._pub.publish(world_msg(links)), 1, TOPIC)
+        self._lane: Lane[list[SceneLink]] = outbox.lane(lambda links: self._pub.publish(world_msg(links)), 1, TOPIC)
         self._sim.add_step_listener(self._on_step, RATE_HZ)
 
     def close(self) -> None:
@@ -67,7 +75,7 @@ class ScenePublisher:
         self._lane.put(links)
 
 
-def world_msg(links: list[SceneLink]) -> Any:
+def world_msg(links: list[SceneLink]) -> PlanningSceneWorld:
     """moveit_msgs/PlanningSceneWorld of the links (shapes in each link's frame, the link in ``world``)."""
     from moveit_msgs.msg import CollisionObject, PlanningSceneWorld
     from shape_msgs.msg import SolidPrimitive

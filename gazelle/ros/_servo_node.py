@@ -37,13 +37,14 @@ Where gazelle differs, said once at start: no collision checking (``check_collis
 
 from __future__ import annotations
 
+import functools
 import math
 import sys
 import threading
 import time
 from collections import deque
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Literal, TypedDict
 
 import numpy as np
 import rclpy
@@ -81,11 +82,34 @@ MAX_WARNING_CHARS = 300
 """gazelle: a warning quoting the wire is cut to this many characters."""
 FUTURE_STAMP_TOLERANCE = 1.0
 """gazelle (s): a command stamped further ahead of the node's clock than this is refused (another clock's)."""
-TOPIC_PARAMETERS = {
+_CommandTopic = Literal["joint_command_in_topic", "cartesian_command_in_topic", "pose_command_in_topic"]
+TOPIC_PARAMETERS: dict[int, _CommandTopic] = {
     core.JOINT_JOG: "joint_command_in_topic",
     core.TWIST: "cartesian_command_in_topic",
     core.POSE: "pose_command_in_topic",
 }
+
+
+class _NodeParameters(TypedDict):
+    """The node's own parameters (topics, timeouts, what it publishes), read once by ``_read_parameters``."""
+
+    move_group_name: str
+    joint_topic: str
+    joint_command_in_topic: str
+    cartesian_command_in_topic: str
+    pose_command_in_topic: str
+    command_out_topic: str
+    command_out_type: str
+    status_topic: str
+    incoming_command_timeout: float
+    max_expected_latency: float
+    publish_joint_positions: bool
+    publish_joint_velocities: bool
+    publish_joint_accelerations: bool
+
+
+Command = JointJog | TwistStamped | PoseStamped
+"""A servo command: a joint jog, a twist or a pose target (one subscription of each)."""
 
 
 @dataclass
@@ -119,7 +143,7 @@ class ServoNode(Node):
         self.command_type = core.JOINT_JOG
         self.paused = False
         self._joints: dict[str, float] = {}
-        self._latest: dict[int, Any] = {}
+        self._latest: dict[int, Command] = {}
         self._stamps: dict[int, int] = {}  # the age of each newest command counts from here (ns, node clock)
         self._said: set[str] = set()  # the once-only warnings given
         self._warned: dict[str, tuple[float, int]] = {}  # key: (when last logged, how many held back since)
@@ -135,7 +159,7 @@ class ServoNode(Node):
         for kind, msg_type in ((core.JOINT_JOG, JointJog), (core.TWIST, TwistStamped), (core.POSE, PoseStamped)):
             topic = self.p[TOPIC_PARAMETERS[kind]]
             self._topics[kind] = self.resolve_topic_name(topic)  # ~/delta_twist_cmds: /servo_node/delta_twist_cmds
-            self.create_subscription(msg_type, topic, lambda m, k=kind: self._on_command(k, m), 10)
+            self.create_subscription(msg_type, topic, functools.partial(self._on_command, kind), 10)
         out_type = self.p["command_out_type"]
         self._out = self.create_publisher(
             JointTrajectory if out_type == OUT_TYPES[0] else Float64MultiArray, self.p["command_out_topic"], 10
@@ -158,7 +182,7 @@ class ServoNode(Node):
         value = self.get_parameter(full).value
         return default if value is None else value
 
-    def _read_parameters(self) -> tuple[ServoSettings, dict[str, Any]]:
+    def _read_parameters(self) -> tuple[ServoSettings, _NodeParameters]:
         """The servo settings (the cycle, input scaling, singularity thresholds, joint limit margins) and the node's
         topics and timeouts, with MoveIt's defaults; the checks MoveIt's ``servo_parameters.yaml`` declares are
         enforced, and every violation is named in one ValueError."""
@@ -180,7 +204,7 @@ class ServoNode(Node):
         s.scale_rotational = float(self._get("scale.rotational", s.scale_rotational))
         s.scale_joint = float(self._get("scale.joint", s.scale_joint))
         s.joint_limit_margins = [float(m) for m in self._get("joint_limit_margins", s.joint_limit_margins)]
-        p = {
+        p: _NodeParameters = {
             "move_group_name": str(self._get("move_group_name", "")),
             "joint_topic": str(self._get("joint_topic", "/joint_states")),
             "joint_command_in_topic": str(self._get("joint_command_in_topic", "~/delta_joint_cmds")),
@@ -277,7 +301,7 @@ class ServoNode(Node):
                     continue
                 self._joints[name] = float(value)
 
-    def _on_command(self, kind: int, msg: Any) -> None:
+    def _on_command(self, kind: int, msg: Command) -> None:
         """A command becomes the newest of its type unless its stamp is refused (see the module docstring)."""
         now = self.get_clock().now().nanoseconds
         stamp = msg.header.stamp
@@ -427,14 +451,14 @@ class ServoNode(Node):
         if self._stale(kind, now_ns):
             return self._halt()
         q = current.positions
-        if kind == core.JOINT_JOG:
+        if isinstance(msg, JointJog):  # _latest[kind] holds its kind's class: JOINT_JOG's, TWIST's, POSE's
             if list(msg.displacements):
                 self._warn_often(
                     "displacements", "Joint jog command displacements field is not yet supported, ignoring."
                 )
                 msg.displacements = []  # servo_node.cpp: once per message, not once per cycle
             status, delta, warning = self.core.joint_jog(list(msg.joint_names), list(msg.velocities))
-        elif kind == core.TWIST:
+        elif isinstance(msg, TwistStamped):
             status, delta, warning = self._twist_delta(q, msg)
         else:
             status, delta, warning = self._pose_delta(q, msg)

@@ -8,14 +8,14 @@ with :meth:`InterfacesContext.serve` and names nothing that builds it."""
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.node import Node
 
 from ..description import ResourceResolver
 from ..sim import Simulation
-from ._replies import guarded_service, serve
+from ._replies import Req, Res, ServiceCallback, ServiceType, guarded_service, serve
 
 if TYPE_CHECKING:
     from rclpy.impl.rcutils_logger import RcutilsLogger
@@ -47,7 +47,7 @@ class InterfacesContext:
         self.take_inbound = take_inbound
         """Hand the simulation the messages its subscriptions hold now (before a requested step)."""
 
-    def serve(self, srv_type: Any, name: str, fn: Callable[[Any, Any], Any]) -> None:
+    def serve(self, srv_type: ServiceType[Req, Res], name: str, fn: ServiceCallback[Req, Res]) -> None:
         """Register ``fn`` as the node's ``~/<name>`` service, guarded (bad input gets a result code and a message,
         never a dead server), in the shared callback group."""
         self.services.append(serve(self.node, srv_type, f"~/{name}", guarded_service(name, fn), self.cb))

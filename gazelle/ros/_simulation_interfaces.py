@@ -57,7 +57,7 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 from rclpy.node import Node
 from simulation_interfaces.action import SimulateSteps
@@ -98,6 +98,10 @@ from ._spawn_preamble import SpawnFailed, SpawnFailure, check_pose, frame_in_wor
 from ._spawnables import SpawnablesService
 from ._stepping import SteppingService
 from ._world_services import WorldServices
+
+if TYPE_CHECKING:
+    from geometry_msgs.msg import PoseStamped
+    from rclpy.action.server import ServerGoalHandle
 
 STEP_CHUNK = 200
 """Physics steps per sim-thread call while stepping on request."""
@@ -188,16 +192,13 @@ class SimulationInterfaces:
             node.get_logger().error(reason)
 
         self.sim.divergence_listeners.append(report)
-        for srv_type, name, fn in (
-            (GetSimulatorFeatures, "get_simulator_features", self.get_simulator_features),
-            (GetSimulationState, "get_simulation_state", self.get_simulation_state),
-            (SetSimulationState, "set_simulation_state", self.set_simulation_state),
-            (ResetSimulation, "reset_simulation", self.reset_simulation),
-            (SpawnEntity, "spawn_entity", self.spawn_entity),
-            (SpawnEntities, "spawn_entities", self.spawn_entities),
-            (DeleteEntity, "delete_entity", self.delete_entity),
-        ):
-            self.context.serve(srv_type, name, fn)
+        self.context.serve(GetSimulatorFeatures, "get_simulator_features", self.get_simulator_features)
+        self.context.serve(GetSimulationState, "get_simulation_state", self.get_simulation_state)
+        self.context.serve(SetSimulationState, "set_simulation_state", self.set_simulation_state)
+        self.context.serve(ResetSimulation, "reset_simulation", self.reset_simulation)
+        self.context.serve(SpawnEntity, "spawn_entity", self.spawn_entity)
+        self.context.serve(SpawnEntities, "spawn_entities", self.spawn_entities)
+        self.context.serve(DeleteEntity, "delete_entity", self.delete_entity)
         self.stepping = SteppingService(node, guarded_service("step_simulation", self.step_simulation))
         self.action = serve_action(node, SimulateSteps, "~/simulate_steps", self._simulate_steps, self.cb)
         self.features: set[int] = {int(f) for f in FEATURES}
@@ -214,7 +215,9 @@ class SimulationInterfaces:
         self.stepping.destroy()
 
     # ------------------------------------------------------------------ features and state
-    def get_simulator_features(self, req: Any, res: GetSimulatorFeatures.Response) -> Any:
+    def get_simulator_features(
+        self, req: GetSimulatorFeatures.Request, res: GetSimulatorFeatures.Response
+    ) -> GetSimulatorFeatures.Response:
         """simulation_interfaces GetSimulatorFeatures: what this simulator supports (features, formats)."""
         res.features.features = sorted(self.features)
         res.features.spawn_formats = ["urdf", "sdf"]
@@ -233,14 +236,18 @@ class SimulationInterfaces:
             return SimulationState.STATE_STOPPED if self.sim.iterations == 0 else SimulationState.STATE_PAUSED
         return SimulationState.STATE_PLAYING
 
-    def get_simulation_state(self, req: Any, res: GetSimulationState.Response) -> Any:
+    def get_simulation_state(
+        self, req: GetSimulationState.Request, res: GetSimulationState.Response
+    ) -> GetSimulationState.Response:
         """GetSimulationState: playing, paused or stopped; no world, or loading one (said without waiting for it)."""
         loading = self.sim.worlds.loading
         res.state.state = SimulationState.STATE_LOADING_WORLD if loading else self.sim.call(self._state)
         res.result = _result(OK)
         return res
 
-    def set_simulation_state(self, req: SetSimulationState.Request, res: SetSimulationState.Response) -> Any:
+    def set_simulation_state(
+        self, req: SetSimulationState.Request, res: SetSimulationState.Response
+    ) -> SetSimulationState.Response:
         """SetSimulationState: play, pause, stop (reset and pause) or quit (refused)."""
         target = req.state.state
         S = SimulationState
@@ -284,7 +291,7 @@ class SimulationInterfaces:
             res.result = _result(OK)
         return res
 
-    def reset_simulation(self, req: ResetSimulation.Request, res: ResetSimulation.Response) -> Any:
+    def reset_simulation(self, req: ResetSimulation.Request, res: ResetSimulation.Response) -> ResetSimulation.Response:
         """ResetSimulation: time, state and/or spawned entities, by scope."""
         R = ResetSimulation.Request
         scope = req.scope
@@ -337,7 +344,7 @@ class SimulationInterfaces:
 
         return self.sim.call(do)
 
-    def step_simulation(self, req: StepSimulation.Request, res: StepSimulation.Response) -> Any:
+    def step_simulation(self, req: StepSimulation.Request, res: StepSimulation.Response) -> StepSimulation.Response:
         """StepSimulation: take N steps while paused (the reply comes when they are done). What the server's
         subscriptions had received when the request came takes effect from the first step (``_inbound``)."""
         try:
@@ -362,7 +369,7 @@ class SimulationInterfaces:
         res.result = _result(OK)
         return res
 
-    def _simulate_steps(self, goal_handle: Any) -> Any:
+    def _simulate_steps(self, goal_handle: ServerGoalHandle) -> SimulateSteps.Result:
         """SimulateSteps: the requested steps in chunks, feedback at most every :data:`FEEDBACK_PERIOD_SEC` and at
         the end; a cancel ends it after the chunk in progress; a simulation that is not paused (someone pressed
         play) or fails aborts it with the steps done so far."""
@@ -377,7 +384,9 @@ class SimulationInterfaces:
             goal_handle.abort()
             return result
 
-    def _run_goal(self, goal_handle: Any, steps: int, result: Any) -> Any:
+    def _run_goal(
+        self, goal_handle: ServerGoalHandle, steps: int, result: SimulateSteps.Result
+    ) -> SimulateSteps.Result:
         """The steps of one accepted SimulateSteps goal (see :meth:`_simulate_steps`)."""
         self.context.take_inbound()  # as StepSimulation: what came before the goal acts from its first step
         done = 0
@@ -456,7 +465,14 @@ class SimulationInterfaces:
         return text, fmt, str(path)
 
     def _prepare(
-        self, *, name: str, allow_renaming: bool, uri: str, resource_string: str, namespace: str, initial_pose: Any
+        self,
+        *,
+        name: str,
+        allow_renaming: bool,
+        uri: str,
+        resource_string: str,
+        namespace: str,
+        initial_pose: PoseStamped,
     ) -> _Prepared:
         """Parse and place one spawn request (off the sim thread, except the frame lookup)."""
         R = SpawnEntity.Response
@@ -489,7 +505,7 @@ class SimulationInterfaces:
         code = _WORLD_KIND_TO_SPAWN.get(err.kind, Result.RESULT_OPERATION_FAILED)
         return _result(code, str(err))
 
-    def spawn_entity(self, req: SpawnEntity.Request, res: SpawnEntity.Response) -> Any:
+    def spawn_entity(self, req: SpawnEntity.Request, res: SpawnEntity.Response) -> SpawnEntity.Response:
         """SpawnEntity: by ``uri`` (a resolvable model or package path) or ``resource_string`` (data, never xacro)."""
         t0 = time.monotonic()
         try:
@@ -516,7 +532,7 @@ class SimulationInterfaces:
         self.node.get_logger().info(f"SpawnEntity: spawned [{out.name}] in {1000 * (time.monotonic() - t0):.1f} ms")
         return res
 
-    def spawn_entities(self, req: SpawnEntities.Request, res: SpawnEntities.Response) -> Any:
+    def spawn_entities(self, req: SpawnEntities.Request, res: SpawnEntities.Response) -> SpawnEntities.Response:
         """SpawnEntities: several models with one recompile; one result per request."""
         results: list[SpawnResult | None] = []
         todo: list[tuple[int, _Prepared]] = []
@@ -561,7 +577,7 @@ class SimulationInterfaces:
             res.result = _result(OK)
         return res
 
-    def delete_entity(self, req: DeleteEntity.Request, res: DeleteEntity.Response) -> Any:
+    def delete_entity(self, req: DeleteEntity.Request, res: DeleteEntity.Response) -> DeleteEntity.Response:
         """DeleteEntity: remove one entity and its systems."""
         res.result, _ = _attempt(lambda: self.sim.delete(req.entity))
         return res

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from collections import OrderedDict
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from geometry_msgs.msg import Vector3
 from simulation_interfaces.msg import Bounds, Result, SimulatorFeatures, Spawnable
@@ -117,7 +117,7 @@ class SpawnablesService:
         text = f"{mf.name}: {mf.description}" if mf.description else mf.name
         return Spawnable(uri=self._uri(found, mf), description=text, spawn_bounds=bounds)
 
-    def get(self, req: GetSpawnables.Request, res: GetSpawnables.Response) -> Any:
+    def get(self, req: GetSpawnables.Request, res: GetSpawnables.Response) -> GetSpawnables.Response:
         """GetSpawnables: the model folders on the resource paths and in ``sources``."""
         if len(req.sources) > MAX_SOURCES:
             message = f"sources has {len(req.sources)} entries; at most {MAX_SOURCES}"

@@ -13,11 +13,16 @@ highest-priority unmasked one (the first listed among equals). Time is the node'
 
 from __future__ import annotations
 
+import functools
 import sys
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING
 
 from rclpy.node import Node
+
+if TYPE_CHECKING:
+    from geometry_msgs.msg import Twist
+    from std_msgs.msg import Bool
 
 PRIORITY_RANGE = (0, 255)
 """twist_mux clamps every priority to this range."""
@@ -32,7 +37,8 @@ class _Handle:
     timeout: float
     priority: int
     stamp: float = 0.0
-    message: Any = None
+    message: Twist | Bool | None = None
+    """An input's last Twist, a lock's last Bool."""
 
     def expired(self, now: float) -> bool:
         return self.timeout > 0.0 and now - self.stamp > self.timeout
@@ -85,10 +91,10 @@ def main(argv: list[str]) -> int:
         return node.get_clock().now().nanoseconds * 1e-9
 
     def lock_priority(t: float) -> int:
-        locked = [h.priority for h in locks if h.expired(t) or (h.message is not None and h.message.data)]
+        locked = [h.priority for h in locks if h.expired(t) or (isinstance(h.message, Bool) and h.message.data)]
         return max(locked, default=0)
 
-    def on_velocity(handle: _Handle, msg: Any) -> None:
+    def on_velocity(handle: _Handle, msg: Twist) -> None:
         t = now()
         handle.stamp, handle.message = t, msg
         floor = lock_priority(t)
@@ -99,12 +105,12 @@ def main(argv: list[str]) -> int:
         if name == handle.name:
             out.publish(msg)
 
-    def on_lock(handle: _Handle, msg: Any) -> None:
+    def on_lock(handle: _Handle, msg: Bool) -> None:
         handle.stamp, handle.message = now(), msg
 
     for h in inputs:
-        node.create_subscription(Twist, h.topic, lambda m, h=h: on_velocity(h, m), qos_profile_system_default)
+        node.create_subscription(Twist, h.topic, functools.partial(on_velocity, h), qos_profile_system_default)
     for h in locks:
-        node.create_subscription(Bool, h.topic, lambda m, h=h: on_lock(h, m), qos_profile_system_default)
+        node.create_subscription(Bool, h.topic, functools.partial(on_lock, h), qos_profile_system_default)
     spin_until_interrupted(node)
     return 0

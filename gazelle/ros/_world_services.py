@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import re
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from simulation_interfaces.msg import Resource, Result, SimulatorFeatures, WorldResource
 from simulation_interfaces.srv import GetAvailableWorlds, GetCurrentWorld, LoadWorld, UnloadWorld
@@ -97,16 +97,15 @@ class WorldServices:
         self.catalog = WorldCatalog(self.resolver, installed, (worlds.first.name, worlds.first.uri))
         self._from_string: tuple[LoadedWorld, str] | None = None
         """The last world loaded from a resource_string, and the string (GetCurrentWorld gives it back)."""
-        for kind, name, fn in (
-            (GetAvailableWorlds, "get_available_worlds", self.get_available_worlds),
-            (LoadWorld, "load_world", self.load_world),
-            (UnloadWorld, "unload_world", self.unload_world),
-            (GetCurrentWorld, "get_current_world", self.get_current_world),
-        ):
-            context.serve(kind, name, fn)
+        context.serve(GetAvailableWorlds, "get_available_worlds", self.get_available_worlds)
+        context.serve(LoadWorld, "load_world", self.load_world)
+        context.serve(UnloadWorld, "unload_world", self.unload_world)
+        context.serve(GetCurrentWorld, "get_current_world", self.get_current_world)
 
     # ------------------------------------------------------------------ the services
-    def get_available_worlds(self, req: GetAvailableWorlds.Request, res: GetAvailableWorlds.Response) -> Any:
+    def get_available_worlds(
+        self, req: GetAvailableWorlds.Request, res: GetAvailableWorlds.Response
+    ) -> GetAvailableWorlds.Response:
         """GetAvailableWorlds: the world files on the resource paths and in ``additional_sources``, filtered by
         tags; local only (``offline_only`` is always taken as true)."""
         try:
@@ -127,7 +126,7 @@ class WorldServices:
         res.result = _result(OK, note)
         return res
 
-    def load_world(self, req: LoadWorld.Request, res: LoadWorld.Response) -> Any:
+    def load_world(self, req: LoadWorld.Request, res: LoadWorld.Response) -> LoadWorld.Response:
         """LoadWorld: the current world and every entity go, the requested one comes; the clock starts again at
         zero, paused (STOPPED); the node, its services and /clock stay."""
         try:
@@ -154,7 +153,7 @@ class WorldServices:
         self.node.get_logger().info(f"LoadWorld: loaded world '{loaded.name}'" + (f" from {uri}" if uri else ""))
         return res
 
-    def unload_world(self, req: Any, res: UnloadWorld.Response) -> Any:
+    def unload_world(self, req: UnloadWorld.Request, res: UnloadWorld.Response) -> UnloadWorld.Response:
         """UnloadWorld: every entity and the world go; an empty simulation, paused, until the next LoadWorld."""
         try:
             self.sim.worlds.unload()
@@ -172,7 +171,9 @@ class WorldServices:
         res.result = _result(OK)
         return res
 
-    def get_current_world(self, req: Any, res: GetCurrentWorld.Response) -> Any:
+    def get_current_world(
+        self, req: GetCurrentWorld.Request, res: GetCurrentWorld.Response
+    ) -> GetCurrentWorld.Response:
         """GetCurrentWorld: the loaded world's name, URI (or the string it came from) and tags."""
         loaded = self.sim.worlds.current
         if loaded is None:

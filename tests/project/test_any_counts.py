@@ -1,9 +1,11 @@
 """``Any`` in the glue packages only goes down (issue 53: "type the ROS callbacks with their message types").
 
 The ROS callbacks, services and actions are typed with their real message, Request/Response and rclpy types
-(imported under ``TYPE_CHECKING``); what stays ``Any`` is a message class chosen at run time (``ros2 topic echo
-TYPE``, a bag's topics) or the bridge's parts still being reworked. The count is of ``Any`` used in code
-(annotations, casts, aliases), walked with ``ast``; the imports of the name are not counted.
+(imported under ``TYPE_CHECKING``; a service helper is generic over the Request and Response of the service it
+serves); what stays ``Any`` is a message class chosen at run time (``ros2 topic echo TYPE``, a bag's topics, a bus
+endpoint's kind), a parameter's or a YAML file's value as the user wrote it, and ``**kwargs`` passed on to rclpy's
+``Node``. The count is of ``Any`` used in code (annotations, casts, aliases), walked with ``ast``; the imports of
+the name are not counted.
 """
 
 from __future__ import annotations
@@ -13,10 +15,9 @@ from pathlib import Path
 
 from _paths import REPO
 
-ANY_CEILING = {"ros": 155, "cli": 83}
+ANY_CEILING = {"ros": 45, "cli": 83}
 """The most uses of ``Any`` each package may have: lower it when a change takes some away, never raise it
-(issue 53's bound is under 100 in each; ros is over it by the bridge and the simulation_interfaces parts,
-reworked elsewhere, and ``_replies.py``'s service helpers)."""
+(issue 53's bound is under 100 in each)."""
 ISSUE_BOUND = 100
 
 
@@ -49,6 +50,10 @@ def test_any_in_the_glue_packages_only_goes_down() -> None:
 
 def test_cli_is_within_the_issues_bound() -> None:
     assert sum(any_count(REPO / "gazelle" / "cli").values()) < ISSUE_BOUND
+
+
+def test_ros_is_within_the_issues_bound() -> None:
+    assert sum(any_count(REPO / "gazelle" / "ros").values()) < ISSUE_BOUND
 
 
 def test_the_count_finds_every_use_and_not_the_import(tmp_path: Path) -> None:

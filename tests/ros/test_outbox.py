@@ -6,14 +6,14 @@ import threading
 import time
 from collections.abc import Callable
 
-from gazelle.ros._outbox import Outbox
+from gazelle.ros._outbox import Lane, Outbox
 
 
 def test_everything_is_published_in_the_order_it_was_queued_across_lanes():
     box = Outbox()
     got: list[tuple[str, int]] = []
-    odom = box.lane(lambda p: got.append(("odom", p)), 10, "/odom")
-    tf = box.lane(lambda p: got.append(("tf", p)), 10, "/tf")
+    odom: Lane[int] = box.lane(lambda p: got.append(("odom", p)), 10, "/odom")
+    tf: Lane[int] = box.lane(lambda p: got.append(("tf", p)), 10, "/tf")
     for i in range(5):
         odom.put(i)
         tf.put(i)
@@ -59,7 +59,7 @@ def test_a_lossy_outbox_behind_drops_the_oldest_of_a_lane_and_never_blocks_the_q
 def test_a_closed_lane_publishes_nothing_more_and_close_waits_for_its_publish_in_progress():
     box, release, publishing, got, slow = _stuck_publisher()
     lane = box.lane(slow, 10, "/odom")
-    other = box.lane(lambda p: got.append(100 + p), 10, "/tf")
+    other: Lane[int] = box.lane(lambda p: got.append(100 + p), 10, "/tf")
     lane.put(0)
     assert publishing.wait(5)
     lane.put(1)
