@@ -58,18 +58,24 @@ def atomic_write(path: str | os.PathLike[str], data: bytes | str, mode: int | No
     return out
 
 
-def _unsafe(folder: Path) -> str | None:
-    """Why another user could replace what is in the real folder ``folder`` (None: nobody could).
+def _unsafe(folder: Path, owner_only: bool = False) -> str | None:
+    """Why another user could replace what is in the real folder ``folder`` (None: nobody could), or, with
+    ``owner_only``, enter it.
 
-    The folder itself must be this user's, with no group or other write; each folder above it this user's
-    or root's, and without group or other write unless sticky (``/tmp``): in a sticky folder only an
-    entry's owner may rename or remove it, and the entry below was checked to be this user's or root's."""
+    The folder itself must be a folder, this user's, with no group or other write (with ``owner_only``, no group
+    or other access at all: 0700); each folder above it this user's or root's, and without group or other write
+    unless sticky (``/tmp``): in a sticky folder only an entry's owner may rename or remove it, and the entry
+    below was checked to be this user's or root's."""
     me = os.getuid()
     info = folder.lstat()
+    if not stat.S_ISDIR(info.st_mode):
+        return f"{folder} is not a folder"
     if info.st_uid != me:
         return f"{folder} belongs to another user (uid {info.st_uid})"
     if info.st_mode & 0o022:
         return f"others may write to {folder} (mode {stat.S_IMODE(info.st_mode):04o})"
+    if owner_only and info.st_mode & 0o077:
+        return f"others may enter {folder} (mode {stat.S_IMODE(info.st_mode):04o}, not 0700)"
     for parent in folder.parents:
         info = parent.lstat()
         if info.st_uid not in (me, 0):
@@ -79,20 +85,34 @@ def _unsafe(folder: Path) -> str | None:
     return None
 
 
+def checked_folder(folder: Path, *, create: bool = True, owner_only: bool = False) -> tuple[Path | None, str | None]:
+    """The one check of a folder whose files no other user may replace: ``(its real path, None)`` when nobody else
+    can (see :func:`_unsafe`; with ``owner_only``, nor enter it: 0700), ``(None, why)`` when someone could,
+    ``(None, None)`` when it does not exist and ``create`` is false. A missing folder (and each missing folder
+    above it) is made owner-only (0700) when ``create``, whatever the umask. Links are resolved: the chain checked
+    is the real one, which callers use. Raises ``OSError`` when it cannot be made or read."""
+    if not create and not folder.exists():
+        return None, None
+    for missing in [*reversed(folder.parents), folder]:  # each one made here is owner-only, whatever the umask
+        if not missing.exists():
+            missing.mkdir(mode=0o700, exist_ok=True)
+    real = folder.resolve(strict=True)
+    why = _unsafe(real, owner_only)
+    if why is None:
+        return real, None
+    return None, why if real == folder.absolute() else f"{why} (the real folder of {folder})"
+
+
 def private_folder(folder: Path, what: str) -> Path | None:
     """``folder`` created owner-only (0700) when missing, as its real path (links resolved), when no other
-    user can replace what is in it (see :func:`_unsafe`); else None, after one warning naming ``what`` it
+    user can replace what is in it (:func:`checked_folder`); else None, after one warning naming ``what`` it
     holds and why, so that nothing is read from it or written to it. Checked at each use, not once: a folder
     made writable after the first check is refused at the next.
 
     Callers open files under the path returned, not the one given: a link on the way that another user
     could re-point was resolved when the chain was checked."""
     try:
-        for missing in [*reversed(folder.parents), folder]:  # each one made here is owner-only, whatever the umask
-            if not missing.exists():
-                missing.mkdir(mode=0o700, exist_ok=True)
-        real = folder.resolve(strict=True)
-        why = _unsafe(real)
+        real, why = checked_folder(folder)
     except OSError as err:
         _log.debug(f"cannot use {what} {folder}: {err}")
         return None
@@ -102,5 +122,4 @@ def private_folder(folder: Path, what: str) -> Path | None:
             "(make it and the folders above it yours and not writable by others, e.g. mode 0700, or set "
             "GAZELLE_CACHE_DIR)"
         )
-        return None
     return real

@@ -2,14 +2,13 @@
 owns, ``world.queries``, whose public methods the world hands on to it): poses and twists of bodies and frames,
 ray casts against the collision geoms, an ideal IMU's reading, the wrench through a joint and the contacts of a
 link. Each brings the kinematics up to date first; only MuJoCo's derived fields are computed, so no query changes
-a trajectory. The part sees the world as a :class:`QueriedWorld` (its compiled model and data, its entities), so
-it imports nothing of the module that builds it."""
+a trajectory. The part sees the world as a :class:`~._world_part.WorldView` (its compiled model and data, its entities),
+so it imports nothing of the module that builds it."""
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Protocol
 
 import mujoco
 import numpy as np
@@ -17,7 +16,8 @@ import numpy as np
 from ..description import Pose, rotation_matrix
 from ._builder import SEP, scoped
 from ._contact_pairs import PROXY_SUFFIX
-from ._entities import WORLD_FRAMES, Entity, EntityState, ErrorKind, WorldError
+from ._entities import WORLD_FRAMES, EntityState, ErrorKind, WorldError
+from ._world_part import WorldPart, WorldView
 
 ONE_DOF_JOINTS = (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
 """MuJoCo's joint types with one degree of freedom (hinge, slide)."""
@@ -65,24 +65,11 @@ def _gazebo_collision_name(geom_name: str) -> str:
     return geom_name.rsplit("#", 1)[0] if "#" in geom_name else geom_name
 
 
-class QueriedWorld(Protocol):
-    """What the queries read of the world (:class:`~gazelle.physics.PhysicsWorld` is one)."""
-
-    @property
-    def model(self) -> mujoco.MjModel: ...
-
-    @property
-    def data(self) -> mujoco.MjData: ...
-
-    @property
-    def entities(self) -> dict[str, Entity]: ...
-
-
-class WorldQueries:
+class WorldQueries(WorldPart[WorldView]):
     """The read-only queries of a world (see the module docstring)."""
 
-    def __init__(self, world: QueriedWorld) -> None:
-        self._world = world
+    def __init__(self, world: WorldView) -> None:
+        super().__init__(world)
         self.kinematics_stale = False
         """Whether qpos/qvel changed since the body poses were computed (a block of steps, a set-state)."""
         self._offsets: dict[Pose, tuple[np.ndarray, np.ndarray, bool, bool]] = {}
@@ -95,20 +82,6 @@ class WorldQueries:
             np.empty((2, 3)),
         )
         """Scratch arrays of :meth:`imu_reading` (6, 6, 4, 3x3 and 2x3)."""
-
-    @property
-    def model(self) -> mujoco.MjModel:
-        """The world's compiled model (a recompile replaces it)."""
-        return self._world.model
-
-    @property
-    def data(self) -> mujoco.MjData:
-        """The world's data (a recompile replaces it)."""
-        return self._world.data
-
-    @property
-    def entities(self) -> dict[str, Entity]:
-        return self._world.entities
 
     def refresh_kinematics(self) -> None:
         """Bring body poses up to the current state (cheap when already current); for renderers."""

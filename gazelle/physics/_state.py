@@ -19,9 +19,10 @@ from ..description import Pose, quat_conj, quat_rotate
 from ._builder import scoped
 from ._entities import Entity, ErrorKind, WorldError, pose_out_of_range
 from ._queries import ONE_DOF_JOINTS, WorldQueries
+from ._world_part import WorldPart, WorldView
 
 
-class StatefulWorld(Protocol):
+class StatefulWorld(WorldView, Protocol):
     """What the state part uses of the world (:class:`~gazelle.physics.PhysicsWorld` is one): its spec, model, data
     and entities, and its own stepping state, which a checkpoint keeps."""
 
@@ -35,15 +36,6 @@ class StatefulWorld(Protocol):
     @property
     def spec(self) -> mujoco.MjSpec: ...
 
-    @property
-    def model(self) -> mujoco.MjModel: ...
-
-    @property
-    def data(self) -> mujoco.MjData: ...
-
-    @property
-    def entities(self) -> dict[str, Entity]: ...
-
     def _forward(self) -> None:
         """``mj_forward`` with the arena grown when contacts need it."""
         ...
@@ -53,12 +45,12 @@ class StatefulWorld(Protocol):
         ...
 
 
-class WorldState:
+class WorldState(WorldPart[StatefulWorld]):
     """The state-writing part of a world (see the module docstring); ``queries`` is the world's query part (its
     kinematics are current after a write)."""
 
     def __init__(self, world: StatefulWorld, queries: WorldQueries) -> None:
-        self._world = world
+        super().__init__(world)
         self._queries = queries
         self._state_views: tuple[Any, np.ndarray, np.ndarray] = (None, np.zeros(0), np.zeros(0))
         """(MjData, its qpos, its qvel): array views kept for the divergence check before every block of steps."""
@@ -66,20 +58,6 @@ class WorldState:
     @property
     def spec(self) -> mujoco.MjSpec:
         return self._world.spec
-
-    @property
-    def model(self) -> mujoco.MjModel:
-        """The world's compiled model (a recompile replaces it)."""
-        return self._world.model
-
-    @property
-    def data(self) -> mujoco.MjData:
-        """The world's data (a recompile replaces it)."""
-        return self._world.data
-
-    @property
-    def entities(self) -> dict[str, Entity]:
-        return self._world.entities
 
     def state_digest(self) -> str:
         """SHA-256 of the whole physics state (time, positions, velocities, actuator states, controls,

@@ -12,16 +12,17 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from types import SimpleNamespace
-from typing import Any
+from typing import Any, Unpack
 
 import numpy as np
 
 from ..description import Semantics
 from ._collision_matrix import CollisionMatrix
 from ._path_constraints import PathConstraints
+from ._robot_options import RobotOptions
 from ._robot_scene import PlanningError, RobotScene, SceneObject, roboplan_modules
 
 IK_DIAGNOSIS_SEC = 0.2
@@ -94,24 +95,13 @@ class ArmPlanner:
     Not thread-safe: one request at a time (a ``PlannerPool`` gives each kind of work its own copy).
     """
 
-    def __init__(
-        self,
-        urdf: str,
-        srdf: str,
-        *,
-        srdf_source: str = "robot_description_semantic",
-        resolve_mesh: Callable[[str], str | None] | None = None,
-        joint_limits: Mapping[str, Mapping[str, float]] | None = None,
-        seed: int = 0,
-    ) -> None:
-        """A planner for the robot of ``urdf`` and ``srdf`` (see :class:`RobotScene` for the arguments); its
-        searches (RRT seeds) come from ``seed``: a plan repeats."""
-        self.robot = RobotScene(
-            urdf, srdf, srdf_source=srdf_source, resolve_mesh=resolve_mesh, joint_limits=joint_limits, seed=seed
-        )
+    def __init__(self, urdf: str, srdf: str, **options: Unpack[RobotOptions]) -> None:
+        """A planner for the robot of ``urdf`` and ``srdf`` (see :class:`RobotScene` for the keyword arguments and
+        their defaults); its searches (RRT seeds) come from the scene's ``seed``: a plan repeats."""
+        self.robot = RobotScene(urdf, srdf, **options)
         """The robot planned for: its model, limits, current state and the objects its plans keep clear of."""
         self._core, self._rrt, self._simple_ik, self._toppra = roboplan_modules()
-        self._seed = seed
+        self._seed = self.robot.seed
 
     # ------------------------------------------------------------------ the robot's (see RobotScene)
     @property

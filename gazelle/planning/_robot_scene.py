@@ -162,7 +162,7 @@ class RobotScene:
         self.warnings.extend(
             f"mesh '{uri}' could not be resolved: its collision geometry is left out" for uri in missing
         )
-        self._urdf, self._srdf, self._seed, self._joint_limits = urdf, srdf, seed, dict(joint_limits or {})
+        self._urdf, self._srdf, self.seed, self._joint_limits = urdf, srdf, seed, dict(joint_limits or {})
         # the scene's description is kept as long as the scene: roboplan's bindings do not say that a
         # Scene owns the description it was made from, so it is not left to the garbage collector
         self._description = core.loadUrdfSceneDescriptionFromXml(urdf, [])
@@ -654,7 +654,7 @@ class RobotScene:
         description = core.loadUrdfSceneDescriptionFromXml(urdf, [])
         self.scene = core.Scene(self.semantics.robot_name or "robot", description)
         self._description = description  # see __init__
-        self.scene.setRngSeed(self._seed)
+        self.scene.setRngSeed(self.seed)
         try:
             self.scene.importSrdf(srdf)
         except Exception:  # said once, when the planner was made

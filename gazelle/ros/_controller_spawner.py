@@ -45,6 +45,11 @@ STRICT = SwitchController.Request.STRICT
 MAX_SECONDS = 2**31 - 1
 """The longest timeout the command line takes: builtin_interfaces/Duration keeps its seconds in an int32 (the
 switch's timeout travels as one), about 68 years."""
+REASON_WAIT_SEC = 10.0
+"""How long a refused step waits for the manager's reason on /rosout: as long as /rosout keeps a line for a reader
+that matches late (rcl's rosout QoS: lifespan 10 s; a later wait could not get it). The manager logs it before it
+answers, so it is there in milliseconds on an idle machine, and the wait ends as soon as it is; beside other tests
+it once came after the former 1 s wait, and the spawner said only where to look."""
 
 
 def _seconds(text: str) -> float:
@@ -117,8 +122,8 @@ class _Client:
         self._rosout = node.create_subscription(Log, "/rosout", on_log, qos)
 
     def reason(self, about: str) -> str:
-        """The manager's last logged refusal mentioning ``about`` (waiting briefly for it to arrive)."""
-        deadline = time.monotonic() + 1.0
+        """The manager's last logged refusal mentioning ``about``, waited for up to :data:`REASON_WAIT_SEC`."""
+        deadline = time.monotonic() + REASON_WAIT_SEC
         while time.monotonic() < deadline:
             found = [e for e in self.errors if about in e]
             if found:

@@ -18,13 +18,13 @@ from ._move_group_common import PLANNING_TIME, _quat
 from ._planning_scene import matrix as _matrix
 
 if TYPE_CHECKING:
-    from ._move_group_context import MoveGroupContext
+    from ._move_group_protocols import MoveGroupCore
 
 
 class PlanningPipeline:
     """MotionPlanRequests planned on the context's primary planner (the caller holds it)."""
 
-    def __init__(self, context: MoveGroupContext) -> None:
+    def __init__(self, context: MoveGroupCore) -> None:
         self.context = context
         self._display = context.node.create_publisher(DisplayTrajectory, "display_planned_path", 10)
 

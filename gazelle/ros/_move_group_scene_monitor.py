@@ -28,7 +28,7 @@ from ._planning_scene import matrix as _matrix
 if TYPE_CHECKING:
     from rclpy.publisher import Publisher
 
-    from ._move_group_context import MoveGroupContext
+    from ._move_group_protocols import MoveGroupCore
 
 M = TypeVar("M")
 
@@ -37,7 +37,7 @@ class PlanningSceneMonitor:
     """The planning scene's topics and the changes they and ``apply_planning_scene`` make (each under the
     pool's write lock, which waits for the plans in progress, as MoveIt's scene monitor waits for its readers)."""
 
-    def __init__(self, context: MoveGroupContext) -> None:
+    def __init__(self, context: MoveGroupCore) -> None:
         self.context = context
         self.sim_objects: set[str] = set()
         """Ids of the objects that came from the simulation."""

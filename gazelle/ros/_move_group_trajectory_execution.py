@@ -37,7 +37,7 @@ if TYPE_CHECKING:
     from rclpy.publisher import Publisher
     from rclpy.task import Future
 
-    from ._move_group_context import MoveGroupContext
+    from ._move_group_protocols import MoveGroupCore
 
 T = TypeVar("T")
 
@@ -49,7 +49,7 @@ class TrajectoryExecutionManager:
     move_group's multi-threaded one, busy with /joint_states, their status and result messages came seconds
     late or not at all (rclpy's executor is slow and its action client racy across threads: ros2/rclpy#1123)."""
 
-    def __init__(self, context: MoveGroupContext) -> None:
+    def __init__(self, context: MoveGroupCore) -> None:
         self.context = context
         self.controllers = self._read_controllers()
         """The controllers moveit_controllers.yaml lists (a controller manager's are asked when none fit)."""
@@ -95,11 +95,12 @@ class TrajectoryExecutionManager:
         prefix = "moveit_simple_controller_manager."
         names = self.context.parameter(prefix + "controller_names", [])
         out = []
-        for name in names or []:
+        for name in names if isinstance(names, (list, tuple)) else []:  # a string array (rclpy gives a list)
             ns = self.context.param(f"{prefix}{name}.action_ns") or "follow_joint_trajectory"
             joints = self.context.parameter(f"{prefix}{name}.joints", [])
+            joints = tuple(joints) if isinstance(joints, (list, tuple)) else ()
             default = self.context.parameter(f"{prefix}{name}.default", False) is True
-            out.append(Controller(name, f"/{name}/{ns}".replace("//", "/"), tuple(joints or ()), default))
+            out.append(Controller(name, f"/{name}/{ns}".replace("//", "/"), joints, default))
         return out
 
     def _spin(self) -> None:

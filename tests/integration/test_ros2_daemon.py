@@ -98,19 +98,33 @@ def test_control_without_a_controller_manager_fails_in_well_under_its_10_s(sim_f
 
 
 def test_the_daemon_answers_only_in_a_private_folder_and_survives_bad_requests(tmp_path: Path, monkeypatch) -> None:
-    """The daemon's folder must be this user's alone: a shared one is refused in one line and the verb works
-    without it. A request that is not JSON, too long or of an unknown kind is answered `ok: false` (or
-    dropped) and the daemon goes on answering."""
+    """The daemon's folder must be this user's alone, checked as every private folder of gazelle is
+    (gazelle/_files.py's ``checked_folder``, owner-only): one others may enter, one below a folder others may
+    write (they could swap it), a link to such a one, or a file, is refused in one line and the verb works without
+    it. A request that is not JSON, too long or of an unknown kind is answered `ok: false` (or dropped) and the
+    daemon goes on answering."""
     shared = tmp_path / "shared"
     shared.mkdir(mode=0o755)
     shared.chmod(0o755)
-    monkeypatch.setenv("GAZELLE_ROS2_DAEMON_DIR", str(shared))
-    refused = ros2("daemon", "start")
-    assert refused.returncode == 1
-    assert refused.stderr.strip() == (
-        f"ros2: not using the graph daemon: {shared} is not a folder only this user may enter"
-    ), refused.stderr
-    assert not list(shared.iterdir())
+    loose = tmp_path / "loose"
+    loose.mkdir()
+    loose.chmod(0o777)  # not sticky: anyone may rename what is in it
+    (tmp_path / "to-shared").symlink_to(shared)
+    (tmp_path / "a-file").write_text("")
+    refusals = {
+        shared: f"others may enter {shared} (mode 0755, not 0700)",
+        loose / "daemons": f"others may write to {loose} above it (mode 0777)",
+        tmp_path
+        / "to-shared": f"others may enter {shared} (mode 0755, not 0700) (the real folder of {tmp_path}/to-shared)",
+        tmp_path / "a-file": f"{tmp_path}/a-file is not a folder",
+    }
+    for folder, why in refusals.items():
+        monkeypatch.setenv("GAZELLE_ROS2_DAEMON_DIR", str(folder))
+        refused = ros2("daemon", "start")
+        assert refused.returncode == 1
+        assert refused.stderr.strip() == f"ros2: not using the graph daemon: {why}", refused.stderr
+    assert not list(shared.iterdir()) and [p.name for p in loose.iterdir()] == ["daemons"]
+    assert not list((loose / "daemons").iterdir())
 
     monkeypatch.setenv("GAZELLE_ROS2_DAEMON_DIR", str(tmp_path / "private"))
     assert ros2("daemon", "start").stdout.strip() == "The daemon has been started"

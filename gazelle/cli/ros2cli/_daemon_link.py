@@ -7,9 +7,10 @@ participant that stays: once it has been up longer than one announcement period 
 heard every participant in the domain, and a verb asks it for the graph in milliseconds, without importing
 rclpy. As ros2cli, the first verb starts the daemon and discovers the graph itself meanwhile.
 
-The link is a Unix socket in a folder only this user may enter (0700, owned by the user, not a link: else
-the daemon is not used and a warning says why); the daemon answers only its own user (SO_PEERCRED). What
-comes back is JSON, each field checked for its shape: names are data, printed and never evaluated.
+The link is a Unix socket in a folder only this user may enter (0700, owned by the user, and no other user may
+replace it or a folder above it: ``gazelle._files.checked_folder``; else the daemon is not used and a warning
+says why); the daemon answers only its own user (SO_PEERCRED). What comes back is JSON, each field checked for
+its shape: names are data, printed and never evaluated.
 Nothing here imports rclpy; ``_daemon_graph.DaemonGraph`` answers the graph queries a verb makes of a node.
 """
 
@@ -19,10 +20,11 @@ import hashlib
 import json
 import os
 import socket
-import stat
 import subprocess
 import sys
 from pathlib import Path
+
+from ..._files import checked_folder
 
 DIR_VARIABLE = "GAZELLE_ROS2_DAEMON_DIR"
 """The daemons' folder (default ``$XDG_RUNTIME_DIR/gazelle-ros2-daemon``, else ``/tmp/gazelle-ros2-daemon-UID``)."""
@@ -61,27 +63,19 @@ def daemon_dir() -> Path:
 
 
 def private_dir(create: bool) -> Path | None:
-    """The daemons' folder, made 0700 when ``create``; None (with one warning line) when it is not a folder of
-    this user that no one else may enter, or when it does not exist and ``create`` is false."""
+    """The daemons' folder (its real path), made 0700 when ``create``; None (with one warning line) when it is not
+    a folder of this user that no one else may enter or replace (gazelle._files.checked_folder, owner-only), or
+    when it does not exist and ``create`` is false."""
     folder = daemon_dir()
-    if create:
-        try:
-            folder.mkdir(mode=0o700, parents=False, exist_ok=True)
-        except OSError as err:
-            print(f"ros2: not using the graph daemon: cannot make {folder}: {err.strerror}", file=sys.stderr)
-            return None
     try:
-        info = os.lstat(folder)
-    except FileNotFoundError:
+        real, why = checked_folder(folder, create=create, owner_only=True)
+    except OSError as err:
+        print(f"ros2: not using the graph daemon: cannot make {folder}: {err.strerror or err}", file=sys.stderr)
         return None
-    if not stat.S_ISDIR(info.st_mode) or info.st_uid != os.getuid() or info.st_mode & 0o077:
-        if folder not in _WARNED:  # once a process
-            _WARNED.add(folder)
-            print(
-                f"ros2: not using the graph daemon: {folder} is not a folder only this user may enter", file=sys.stderr
-            )
-        return None
-    return folder
+    if why is not None and folder not in _WARNED:  # once a process
+        _WARNED.add(folder)
+        print(f"ros2: not using the graph daemon: {why}", file=sys.stderr)
+    return real
 
 
 def socket_name() -> str:

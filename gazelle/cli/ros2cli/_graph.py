@@ -3,6 +3,7 @@ for ``spin_time`` seconds before answering), or the graph daemon's view for a li
 
 from __future__ import annotations
 
+import argparse
 import os
 import threading
 import time
@@ -19,6 +20,19 @@ if TYPE_CHECKING:
 
 DEFAULT_SPIN_TIME = 1.5
 """Seconds to discover the graph before listing without the daemon (``--no-daemon``, or the first verb)."""
+
+
+def add_discovery_options(*verbs: argparse.ArgumentParser) -> None:
+    """ros2cli's ``NodeStrategy`` options (ros2cli/node/strategy.py, ``add_arguments``) on each listing verb:
+    ``--spin-time`` (how long :func:`discover` waits without the daemon) and ``--no-daemon``."""
+    for verb in verbs:
+        verb.add_argument(
+            "--spin-time",
+            type=float,
+            default=DEFAULT_SPIN_TIME,
+            help="Spin time in seconds to wait for discovery (only applies when not using an already running daemon)",
+        )
+        verb.add_argument("--no-daemon", action="store_true", help="Do not spawn nor use an already running daemon")
 
 
 class ShutDown(SimError):

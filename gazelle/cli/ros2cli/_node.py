@@ -8,7 +8,7 @@ import time
 from typing import TYPE_CHECKING
 
 from ._daemon_graph import SECTIONS, DaemonGraph, daemon_graph
-from ._graph import DEFAULT_SPIN_TIME, QUIET_SEC, SETTLE_SEC, absolute, cli_node, discover, graph_view, wait_until
+from ._graph import QUIET_SEC, SETTLE_SEC, absolute, add_discovery_options, cli_node, discover, graph_view, wait_until
 
 TITLES = ("Subscribers", "Publishers", "Service Servers", "Service Clients", "Action Servers", "Action Clients")
 
@@ -29,14 +29,7 @@ def main(argv: list[str]) -> int:
     info.add_argument(
         "--include-hidden", action="store_true", help="Display hidden topics, services, and actions as well"
     )
-    for verb in (ls, info):  # ros2cli's NodeStrategy options
-        verb.add_argument(
-            "--spin-time",
-            type=float,
-            default=DEFAULT_SPIN_TIME,
-            help="Spin time in seconds to wait for discovery (only applies when not using an already running daemon)",
-        )
-        verb.add_argument("--no-daemon", action="store_true", help="Do not spawn nor use an already running daemon")
+    add_discovery_options(ls, info)  # ros2cli's NodeStrategy options
     args = p.parse_args(argv)
     if args.cmd == "list":
         with graph_view("ros2node", args.no_daemon, args.spin_time) as graph:

@@ -7,7 +7,7 @@ import sys
 import time
 from typing import TYPE_CHECKING
 
-from ._graph import DEFAULT_SPIN_TIME, absolute, cli_node, graph_view, is_hidden, spin_once
+from ._graph import absolute, add_discovery_options, cli_node, graph_view, is_hidden, spin_once
 from ._messages import InterfaceError, get_interface, parse_values, set_fields
 
 if TYPE_CHECKING:
@@ -33,14 +33,7 @@ def service_main(argv: list[str]) -> int:
     source.add_argument("values", nargs="?", default="{}", help="the request's fields in YAML")
     source.add_argument("--stdin", action="store_true", help="read the YAML values from standard input")
     call.add_argument("-r", "--rate", type=float, default=None, help="repeat the call at this rate in Hz")
-    for verb in (ls, typ, find):  # ros2cli's NodeStrategy options
-        verb.add_argument(
-            "--spin-time",
-            type=float,
-            default=DEFAULT_SPIN_TIME,
-            help="Spin time in seconds to wait for discovery (only applies when not using an already running daemon)",
-        )
-        verb.add_argument("--no-daemon", action="store_true", help="Do not spawn nor use an already running daemon")
+    add_discovery_options(ls, typ, find)  # ros2cli's NodeStrategy options
     args = p.parse_args(argv)
     try:
         if args.cmd == "call":

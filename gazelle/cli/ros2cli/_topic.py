@@ -15,6 +15,7 @@ from ._graph import (
     DEFAULT_SPIN_TIME,
     SETTLE_SEC,
     absolute,
+    add_discovery_options,
     cli_node,
     discover,
     graph_view,
@@ -102,14 +103,7 @@ def _add_listing_verbs(sub: argparse._SubParsersAction) -> None:
     find.add_argument("topic_type")
     find.add_argument("-c", "--count-topics", action="store_true")
     find.add_argument("--include-hidden-topics", action="store_true")
-    for verb in (ls, find):  # ros2cli's NodeStrategy options
-        verb.add_argument(
-            "--spin-time",
-            type=float,
-            default=DEFAULT_SPIN_TIME,
-            help="Spin time in seconds to wait for discovery (only applies when not using an already running daemon)",
-        )
-        verb.add_argument("--no-daemon", action="store_true", help="Do not spawn nor use an already running daemon")
+    add_discovery_options(ls, find)  # ros2cli's NodeStrategy options
 
 
 def _add_echo(sub: argparse._SubParsersAction) -> None:
