@@ -231,7 +231,7 @@ ARM_TYPES = {
 second tier (``scripts/build_interfaces.sh``), which ``./demo.sh`` builds after the demo, so a world
 without arms runs before they exist."""
 
-TO_ROS: dict[MsgType, Callable[[Any], Any]] = {
+TO_ROS: dict[MsgType, Callable[..., object]] = {
     # PointCloud's layout object expands into three message fields (fields, point_step, row_step)
     MsgType.POINT_CLOUD2: to_point_cloud_msg,
     # a pair's forces and torques become wrenches plus their sum and a made-up info line
@@ -240,7 +240,7 @@ TO_ROS: dict[MsgType, Callable[[Any], Any]] = {
     MsgType.GZ_CONTACTS: to_gz_contacts_msg,
 }
 """The payload-to-message conversions written by hand (the rest take the generic plan, see ``_layouts.py``)."""
-FROM_ROS: dict[MsgType, Callable[[Any], Any]] = {
+FROM_ROS: dict[MsgType, Callable[..., object]] = {
     # each segment sits inside a RobotTrajectory (its multi-DOF part is dropped)
     MsgType.DISPLAY_TRAJECTORY: from_display_trajectory_msg,
 }
@@ -302,7 +302,7 @@ class InterfaceMissing(SimError, ImportError):
         self.package = package
 
 
-def to_ros(kind: MsgType | DeclaredMessage) -> Callable[[Any], Any]:
+def to_ros(kind: MsgType | DeclaredMessage) -> Callable[..., Any]:
     """The payload-to-message conversion of an endpoint's kind: a hand-written one of :data:`TO_ROS`, else the
     generic plan (``_layouts.py``) of its payload class (:data:`~gazelle.systems.PAYLOADS`; a declared
     message's: that of the first payload it converts, kept per class)."""
@@ -312,9 +312,9 @@ def to_ros(kind: MsgType | DeclaredMessage) -> Callable[[Any], Any]:
             return found
         return payload_to_msg(PAYLOADS[kind], ros_type(kind))
     cls = ros_type(kind)
-    plans: dict[type, Callable[[Any], Any]] = {}
+    plans: dict[type, Callable[[object], object]] = {}
 
-    def convert(payload: Any) -> Any:
+    def convert(payload: object) -> object:
         plan = plans.get(type(payload))
         if plan is None:
             plan = plans[type(payload)] = payload_to_msg(type(payload), cls)
@@ -323,7 +323,7 @@ def to_ros(kind: MsgType | DeclaredMessage) -> Callable[[Any], Any]:
     return convert
 
 
-def from_ros(kind: MsgType) -> Callable[[Any], Any]:
+def from_ros(kind: MsgType) -> Callable[..., object]:
     """The message-to-payload conversion of a subscription's kind: a hand-written one of :data:`FROM_ROS`,
     else the generic plan of its payload class."""
     found = FROM_ROS.get(kind)

@@ -34,14 +34,35 @@ import math
 import operator
 import typing
 from array import array
-from collections.abc import Callable, Mapping
-from typing import Any
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from typing import Any, Protocol, SupportsFloat, TypeGuard, TypeVar, cast
 
 from builtin_interfaces.msg import Duration, Time
+from geometry_msgs.msg import Point, Quaternion, Vector3
 
 from ._interfaces import InterfaceError, resolve_interface
 
-Converter = Callable[[Any], Any]
+Converter = Callable[[Any], object]
+"""A field's value converted: its type is what the plan learnt at run time from the payload's hints and the
+message's field types (the one ``Any`` of this module)."""
+Step = Callable[[object, object], None]
+"""One field's part of filling a message: ``step(msg, payload)``."""
+P = TypeVar("P")
+M = TypeVar("M")
+
+
+class _RosidlClass(Protocol):
+    """What the plan reads of a generated message class."""
+
+    @classmethod
+    def get_fields_and_field_types(cls) -> dict[str, str]: ...
+
+
+def _message_fields(msg_cls: type) -> dict[str, str]:
+    """A generated message class's fields: name -> rosidl type (``sequence<double>``, ``std_msgs/Header``)."""
+    return cast(_RosidlClass, msg_cls).get_fields_and_field_types()
+
+
 Renames = tuple[tuple[str, str], ...]
 """A nested payload's renames for one message, as sorted (field, path) pairs (hashable, for the plan cache)."""
 
@@ -110,13 +131,13 @@ def _element(ftype: str) -> tuple[str, bool]:
     return ftype, False
 
 
-def _message_class(ftype: str) -> Any:
+def _message_class(ftype: str) -> type:
     """The rclpy class of a nested field type ``pkg/Name``."""
     package, name = ftype.split("/")
     return resolve_interface(f"{package}/msg/{name}", "msg")
 
 
-def _fields(payload_cls: type) -> list[tuple[str, Any]]:
+def _fields(payload_cls: type) -> list[tuple[str, object]]:
     """A payload dataclass's fields with their resolved type hints, in order."""
     if not dataclasses.is_dataclass(payload_cls):
         raise InterfaceError(f"{payload_cls.__name__} is not a dataclass")
@@ -144,12 +165,12 @@ def _path(name: str, renames: dict[str, str], msg_fields: dict[str, str]) -> str
     return None
 
 
-def _walk(msg_cls: Any, path: str, where: str) -> str:
+def _walk(msg_cls: type, path: str, where: str) -> str:
     """The rosidl type of the field at dotted ``path`` of ``msg_cls`` (every step but the last a nested message)."""
     cls = msg_cls
     parts = path.split(".")
     for i, part in enumerate(parts):
-        ftype = cls.get_fields_and_field_types().get(part)
+        ftype = _message_fields(cls).get(part)
         if ftype is None:
             raise InterfaceError(f"{where}: {cls.__name__} has no field {'.'.join(parts[: i + 1])!r}")
         if i == len(parts) - 1:
@@ -166,11 +187,11 @@ def _nested(name: str, renames: dict[str, str]) -> Renames:
     return tuple(sorted((k[len(prefix) :], v) for k, v in renames.items() if k.startswith(prefix)))
 
 
-def _layout(payload_cls: type, msg_cls: Any, outer: Renames) -> list[tuple[str, Any, str, str, Renames]]:
+def _layout(payload_cls: type, msg_cls: type, outer: Renames) -> list[tuple[str, object, str, str, Renames]]:
     """Per payload field: (name, type hint, message path, rosidl type, renames inside it); refused with an
     :class:`InterfaceError` when a field has no place in the message."""
     renames = _renames(payload_cls, outer)
-    msg_fields = msg_cls.get_fields_and_field_types()
+    msg_fields = _message_fields(msg_cls)
     out = []
     for name, hint in _fields(payload_cls):
         where = f"{payload_cls.__name__}.{name} -> {msg_cls.__name__}"
@@ -181,7 +202,7 @@ def _layout(payload_cls: type, msg_cls: Any, outer: Renames) -> list[tuple[str, 
     return out
 
 
-def _tuple_of(hint: Any) -> Any:
+def _tuple_of(hint: object) -> object:
     """X of a ``tuple[X, ...]`` hint, or None."""
     args = typing.get_args(hint)
     if typing.get_origin(hint) is tuple and len(args) == 2 and args[1] is Ellipsis:
@@ -189,7 +210,7 @@ def _tuple_of(hint: Any) -> Any:
     return None
 
 
-def _fixed_floats(hint: Any) -> int:
+def _fixed_floats(hint: object) -> int:
     """n of a ``tuple[float, ...n times]`` hint, else 0."""
     args = typing.get_args(hint)
     if typing.get_origin(hint) is tuple and args and Ellipsis not in args and all(a is float for a in args):
@@ -197,16 +218,12 @@ def _fixed_floats(hint: Any) -> int:
     return 0
 
 
-def _is_dataclass_type(hint: Any) -> bool:
+def _is_dataclass_type(hint: object) -> TypeGuard[type]:
     return isinstance(hint, type) and dataclasses.is_dataclass(hint)
 
 
 # --------------------------------------------------------------------------- payload -> message
-Step = Callable[[Any, Any], None]
-"""One field's part of filling a message: ``step(msg, payload)``."""
-
-
-def _step(hint: Any, ftype: str, inner: Renames, where: str, path: str, get: Converter) -> Step:
+def _step(hint: object, ftype: str, inner: Renames, where: str, path: str, get: Converter) -> Step:
     """The step that fills the message field at ``path`` (rosidl type ``ftype``) from the payload value
     ``get(payload)`` of type ``hint``. A nested message the message already holds is filled in place (its
     fields set, no new message made: the cheapest way through rclpy's setters); arrays and primitives are set."""
@@ -227,7 +244,7 @@ def _step(hint: Any, ftype: str, inner: Renames, where: str, path: str, get: Con
     return lambda msg, p: setattr(owner(msg), last, convert(get(p)))
 
 
-def _filler(hint: Any, ftype: str, inner: Renames, where: str) -> Step:
+def _filler(hint: object, ftype: str, inner: Renames, where: str) -> Callable[..., None]:
     """How a nested message of type ``ftype`` is filled in place from a payload value of ``hint``."""
     if ftype in (_TIME, _DURATION) and hint is float:
         return _fill_time if ftype == _TIME else _fill_duration
@@ -240,23 +257,23 @@ def _filler(hint: Any, ftype: str, inner: Renames, where: str) -> Step:
     raise InterfaceError(f"{where}: a {hint} does not convert to a {ftype}")
 
 
-def _fill_time(t: Any, sec: float) -> None:
+def _fill_time(t: Time, sec: float) -> None:
     t.sec, t.nanosec = split_seconds(sec)
 
 
-def _fill_duration(d: Any, sec: float) -> None:
+def _fill_duration(d: Duration, sec: float) -> None:
     d.sec, d.nanosec = split_duration(sec)
 
 
-def _fill_vector(m: Any, v: Any) -> None:
+def _fill_vector(m: Vector3 | Point, v: Sequence[float]) -> None:
     m.x, m.y, m.z = float(v[0]), float(v[1]), float(v[2])
 
 
-def _fill_quaternion(m: Any, q: Any) -> None:
+def _fill_quaternion(m: Quaternion, q: Sequence[float]) -> None:
     m.w, m.x, m.y, m.z = float(q[0]), float(q[1]), float(q[2]), float(q[3])
 
 
-def _to_value(hint: Any, elem: str, many: bool, inner: Renames, where: str) -> Converter | None:
+def _to_value(hint: object, elem: str, many: bool, inner: Renames, where: str) -> Converter | None:
     """How a payload value of ``hint`` becomes the value of a field of element type ``elem`` that is an array
     (``many``) or a primitive (None: as it is)."""
     item = _tuple_of(hint)
@@ -282,7 +299,7 @@ def _to_value(hint: Any, elem: str, many: bool, inner: Renames, where: str) -> C
 
 
 @functools.cache
-def _fill_plan(payload_cls: type, msg_cls: Any, outer: Renames = ()) -> Step:
+def _fill_plan(payload_cls: type, msg_cls: type, outer: Renames = ()) -> Step:
     """``fill(msg, payload)``: every field of a ``payload_cls`` payload set in a ``msg_cls`` message."""
     steps = []
     for name, hint, path, ftype, inner in _layout(payload_cls, msg_cls, outer):
@@ -290,24 +307,29 @@ def _fill_plan(payload_cls: type, msg_cls: Any, outer: Renames = ()) -> Step:
         steps.append(_step(hint, ftype, inner, where, path, operator.attrgetter(name)))
     run = tuple(steps)
 
-    def fill(msg: Any, payload: Any) -> None:
+    def fill(msg: object, payload: object) -> None:
         for step in run:
             step(msg, payload)
 
     return fill
 
 
-@functools.cache
-def payload_to_msg(payload_cls: type, msg_cls: Any, outer: Renames = ()) -> Converter:
+def payload_to_msg(payload_cls: type[P], msg_cls: type[M], outer: Renames = ()) -> Callable[[P], M]:
     """The conversion of ``payload_cls`` payloads to ``msg_cls`` messages by the rules of the module
     docstring, made once per pair.
 
     Raises:
         InterfaceError: a field of the payload has no place in the message (one line naming it).
     """
+    return cast("Callable[[P], M]", _writer(payload_cls, msg_cls, outer))
+
+
+@functools.cache
+def _writer(payload_cls: type, msg_cls: type, outer: Renames) -> Callable[[object], object]:
+    """:func:`payload_to_msg`'s conversion, made once per pair."""
     fill = _fill_plan(payload_cls, msg_cls, outer)
 
-    def convert(payload: Any) -> Any:
+    def convert(payload: object) -> object:
         msg = msg_cls()
         fill(msg, payload)
         return msg
@@ -316,11 +338,11 @@ def payload_to_msg(payload_cls: type, msg_cls: Any, outer: Renames = ()) -> Conv
 
 
 # --------------------------------------------------------------------------- message -> payload
-def _floats(v: Any) -> tuple[float, ...]:
+def _floats(v: Iterable[SupportsFloat]) -> tuple[float, ...]:
     return tuple(map(float, v))
 
 
-def _from_value(hint: Any, ftype: str, inner: Renames, where: str) -> Converter | None:
+def _from_value(hint: object, ftype: str, inner: Renames, where: str) -> Converter | None:
     """How a message value of rosidl type ``ftype`` becomes a payload value of ``hint`` (None: as it is)."""
     elem, many = _element(ftype)
     if not many:
@@ -344,7 +366,7 @@ def _from_value(hint: Any, ftype: str, inner: Renames, where: str) -> Converter 
     raise InterfaceError(f"{where}: a {ftype} does not fill a {hint}")
 
 
-def _from_single(hint: Any, ftype: str, inner: Renames, where: str) -> Converter | None:
+def _from_single(hint: object, ftype: str, inner: Renames, where: str) -> Converter | None:
     """:func:`_from_value` for a field that is not an array."""
     if ftype in (_TIME, _DURATION) and hint is float:
         return from_time if ftype == _TIME else from_duration
@@ -365,14 +387,19 @@ def _from_single(hint: Any, ftype: str, inner: Renames, where: str) -> Converter
     raise InterfaceError(f"{where}: a {ftype} is not a {hint}")
 
 
-@functools.cache
-def msg_to_payload(msg_cls: Any, payload_cls: type, outer: Renames = ()) -> Converter:
+def msg_to_payload(msg_cls: type[M], payload_cls: type[P], outer: Renames = ()) -> Callable[[M], P]:
     """The conversion of ``msg_cls`` messages to ``payload_cls`` payloads (the inverse of
     :func:`payload_to_msg`), made once per pair.
 
     Raises:
         InterfaceError: a field of the payload has no place in the message (one line naming it).
     """
+    return cast("Callable[[M], P]", _reader(msg_cls, payload_cls, outer))
+
+
+@functools.cache
+def _reader(msg_cls: type, payload_cls: type, outer: Renames) -> Callable[[object], object]:
+    """:func:`msg_to_payload`'s conversion, made once per pair."""
     getters = []
     for name, hint, path, ftype, inner in _layout(payload_cls, msg_cls, outer):
         where = f"{msg_cls.__name__}.{path} -> {payload_cls.__name__}.{name}"
@@ -381,7 +408,7 @@ def msg_to_payload(msg_cls: Any, payload_cls: type, outer: Renames = ()) -> Conv
         getters.append(get if convert is None else _compose(convert, get))
     run = tuple(getters)
 
-    def convert_back(msg: Any) -> Any:
+    def convert_back(msg: object) -> object:
         return payload_cls(*[get(msg) for get in run])
 
     return convert_back

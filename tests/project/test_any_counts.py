@@ -13,7 +13,7 @@ from pathlib import Path
 
 from _paths import REPO
 
-ANY_CEILING = {"ros": 155, "cli": 83}
+ANY_CEILING = {"ros": 150, "cli": 83}
 """The most uses of ``Any`` each package may have: lower it when a change takes some away, never raise it
 (issue 53's bound is under 100 in each; ros is over it by the bridge and the simulation_interfaces parts,
 reworked elsewhere, and ``_replies.py``'s service helpers)."""
