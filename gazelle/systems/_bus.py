@@ -99,9 +99,10 @@ message by its fields (``ROS_FIELDS`` where their names differ; see ``_payloads.
 @dataclass(frozen=True)
 class DeclaredMessage:
     """A message type declared by the system that publishes it, beside :class:`MsgType`'s (a new sensor
-    kind's, in its own module). The ROS layer publishes it as ``value`` (``pkg/msg/Name``) by a generic
-    conversion: the payload is a dataclass whose fields are the ROS message's own, ``stamp_sec`` and
-    ``frame_id`` going into its ``header``."""
+    kind's, in its own module). The ROS layer publishes it as ``value`` (``pkg/msg/Name``) by the generic
+    conversion every payload takes (``gazelle/ros/_layouts.py``): the payload is a dataclass whose fields are
+    the ROS message's own, ``stamp_sec`` and ``frame_id`` going into its ``header`` (a field named otherwise
+    says where it goes in a ``ROS_FIELDS`` class attribute)."""
 
     name: str
     value: str
