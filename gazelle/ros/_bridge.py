@@ -50,7 +50,7 @@ from ..systems import (
 )
 from ._acked_writer import ACK_WINDOW, AckedWriter
 from ._cdr import raw_serializer, serialize_clock, serialized_joint_states
-from ._convert import FROM_ROS, InterfaceMissing, ros_type, second_tier, to_pose_msg, to_ros, to_time
+from ._convert import InterfaceMissing, from_ros, ros_type, second_tier, to_pose_msg, to_ros, to_time
 from ._exposure import ServerRegistry
 from ._gazebo_services import GazeboServices
 from ._inbound import InboundGroup
@@ -396,7 +396,7 @@ class SimulationNode(Node):
                     f"'{ep.owner}': {ep.topic} ({ep.msg_type.value}) is not one gazelle subscribes to; not on ROS"
                 )
                 return
-            convert_in = FROM_ROS[ep.msg_type]
+            convert_in = from_ros(ep.msg_type)
             callback = ep.callback
             assert callback is not None
             deliver = self.sim.deliver  # at the sim time the message came, also while catching up

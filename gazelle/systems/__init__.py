@@ -49,6 +49,7 @@ if TYPE_CHECKING:
     from ._base import SystemContext as SystemContext
     from ._base import SystemManager as SystemManager
     from ._base import UpdateInfo as UpdateInfo
+    from ._bus import PAYLOADS as PAYLOADS
     from ._bus import Bus as Bus
     from ._bus import DeclaredMessage as DeclaredMessage
     from ._bus import Endpoint as Endpoint
@@ -70,6 +71,7 @@ if TYPE_CHECKING:
     from ._payloads import Float64Array as Float64Array
     from ._payloads import Image as Image
     from ._payloads import Imu as Imu
+    from ._payloads import InterfaceValue as InterfaceValue
     from ._payloads import JointStates as JointStates
     from ._payloads import JointStatesBlock as JointStatesBlock
     from ._payloads import JointTrajectory as JointTrajectory
@@ -117,6 +119,7 @@ __all__ = [
     "TrajectoryPoint",
     "TwistStamped",
     "Bus",
+    "PAYLOADS",
     "CameraInfo",
     "ContactPair",
     "Contacts",
@@ -124,6 +127,7 @@ __all__ = [
     "Float64",
     "Image",
     "Imu",
+    "InterfaceValue",
     "JointStates",
     "JointStatesBlock",
     "LaserScan",

@@ -16,6 +16,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
+from . import _payloads as payloads
 from ._payloads import PayloadBlock
 
 
@@ -62,13 +63,46 @@ class Qos(enum.Enum):
     """reliable, transient local (like /tf_static, /robot_description)."""
 
 
+PAYLOADS: dict[MsgType, type] = {
+    MsgType.TWIST: payloads.Twist,
+    MsgType.ODOMETRY: payloads.Odometry,
+    MsgType.TF: payloads.TransformBatch,
+    MsgType.TF_STATIC: payloads.TransformBatch,
+    MsgType.JOINT_STATE: payloads.JointStates,
+    MsgType.STRING: payloads.Text,
+    MsgType.FLOAT64: payloads.Float64,
+    MsgType.LASER_SCAN: payloads.LaserScan,
+    MsgType.POINT_CLOUD2: payloads.PointCloud,
+    MsgType.RANGE: payloads.Range,
+    MsgType.IMU: payloads.Imu,
+    MsgType.IMAGE: payloads.Image,
+    MsgType.CAMERA_INFO: payloads.CameraInfo,
+    MsgType.CONTACTS: payloads.Contacts,
+    MsgType.GZ_CONTACTS: payloads.Contacts,
+    MsgType.NAV_SAT_FIX: payloads.NavSatFix,
+    MsgType.VECTOR3_STAMPED: payloads.Vector3Stamped,
+    MsgType.WRENCH_STAMPED: payloads.WrenchStamped,
+    MsgType.TWIST_STAMPED: payloads.TwistStamped,
+    MsgType.MAGNETIC_FIELD: payloads.MagneticField,
+    MsgType.ALTIMETER: payloads.Altimeter,
+    MsgType.FLOAT64_ARRAY: payloads.Float64Array,
+    MsgType.JOINT_TRAJECTORY: payloads.JointTrajectory,
+    MsgType.TRAJECTORY_CONTROLLER_STATE: payloads.TrajectoryControllerState,
+    MsgType.DYNAMIC_JOINT_STATE: payloads.DynamicJointState,
+    MsgType.DISPLAY_TRAJECTORY: payloads.DisplayTrajectory,
+}
+"""The payload dataclass each :class:`MsgType` carries on the bus: the ROS layer converts it to and from the
+message by its fields (``ROS_FIELDS`` where their names differ; see ``_payloads.py``)."""
+
+
 # --------------------------------------------------------------------------- endpoints
 @dataclass(frozen=True)
 class DeclaredMessage:
     """A message type declared by the system that publishes it, beside :class:`MsgType`'s (a new sensor
-    kind's, in its own module). The ROS layer publishes it as ``value`` (``pkg/msg/Name``) by a generic
-    conversion: the payload is a dataclass whose fields are the ROS message's own, ``stamp_sec`` and
-    ``frame_id`` going into its ``header``."""
+    kind's, in its own module). The ROS layer publishes it as ``value`` (``pkg/msg/Name``) by the generic
+    conversion every payload takes (``gazelle/ros/_layouts.py``): the payload is a dataclass whose fields are
+    the ROS message's own, ``stamp_sec`` and ``frame_id`` going into its ``header`` (a field named otherwise
+    says where it goes in a ``ROS_FIELDS`` class attribute)."""
 
     name: str
     value: str

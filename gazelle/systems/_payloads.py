@@ -1,13 +1,17 @@
 """The payloads the bus carries: plain frozen dataclasses mirroring ROS messages, field for field where
 it matters, converted to and from rclpy messages only in ``gazelle.ros`` (``_convert.py``). Stamps are
 ``stamp_sec``, sim time in seconds; frames are ``frame_id`` strings as the message's header has them;
-arrays that are large (scans, images, clouds) are ``bytes``, cheap to hand to the publisher thread."""
+arrays that are large (scans, images, clouds) are ``bytes``, cheap to hand to the publisher thread.
+
+A payload whose fields are not its message's by name says where they go in ``ROS_FIELDS`` (payload field ->
+dotted message path); ``gazelle.ros._layouts`` converts every payload with one generic plan by these names
+(its docstring has the rules), and ``_convert.py`` writes by hand only the few whose layout differs."""
 
 from __future__ import annotations
 
 from collections.abc import Iterator
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, ClassVar
 
 from ..description import Pose
 
@@ -29,6 +33,12 @@ class Twist:
 class Odometry:
     """nav_msgs/Odometry."""
 
+    ROS_FIELDS: ClassVar[dict[str, str]] = {
+        "pose": "pose.pose",
+        "twist": "twist.twist",
+        "pose_covariance": "pose.covariance",
+        "twist_covariance": "twist.covariance",
+    }
     stamp_sec: float
     frame_id: str
     child_frame_id: str
@@ -47,6 +57,13 @@ class Odometry:
 class Transform:
     """geometry_msgs/TransformStamped: ``pose`` is the child frame in the parent frame."""
 
+    ROS_FIELDS: ClassVar[dict[str, str]] = {
+        "parent": "header.frame_id",
+        "child": "child_frame_id",
+        "pose": "transform",
+        "pose.position": "translation",
+        "pose.orientation": "rotation",
+    }
     stamp_sec: float
     parent: str
     """The frame the child is placed in (tf's header.frame_id)."""
@@ -68,6 +85,12 @@ class TransformBatch:
 class JointStates:
     """sensor_msgs/JointState."""
 
+    ROS_FIELDS: ClassVar[dict[str, str]] = {
+        "names": "name",
+        "positions": "position",
+        "velocities": "velocity",
+        "efforts": "effort",
+    }
     stamp_sec: float
     names: tuple[str, ...]
     """Joint names, in the order of the values below."""
@@ -326,6 +349,11 @@ class Contacts:
 class NavSatFix:
     """sensor_msgs/NavSatFix, status FIX."""
 
+    ROS_FIELDS: ClassVar[dict[str, str]] = {
+        "covariance_type": "position_covariance_type",
+        "service": "status.service",
+        "status": "status.status",
+    }
     stamp_sec: float
     frame_id: str
     latitude: float
@@ -340,6 +368,8 @@ class NavSatFix:
     """0 unknown, 1 approximated, 2 diagonal known, 3 known."""
     service: int = 1
     """NavSatStatus's service bits: 1 GPS (gazebo_ros_gps_sensor), 0 none (ros_gz_bridge leaves it unset)."""
+    status: int = 0
+    """NavSatStatus's status: 0 STATUS_FIX (the message's own default is -2, unknown)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -356,6 +386,7 @@ class Vector3Stamped:
 class WrenchStamped:
     """geometry_msgs/WrenchStamped."""
 
+    ROS_FIELDS: ClassVar[dict[str, str]] = {"force": "wrench.force", "torque": "wrench.torque"}
     stamp_sec: float
     frame_id: str
     force: Vec3
@@ -368,6 +399,7 @@ class WrenchStamped:
 class MagneticField:
     """sensor_msgs/MagneticField (tesla, in the sensor's frame)."""
 
+    ROS_FIELDS: ClassVar[dict[str, str]] = {"field": "magnetic_field", "covariance": "magnetic_field_covariance"}
     stamp_sec: float
     frame_id: str
     field: Vec3
@@ -466,13 +498,23 @@ class TrajectoryControllerState:
 
 
 @dataclass(frozen=True, slots=True)
+class InterfaceValue:
+    """control_msgs/InterfaceValue: one joint's interfaces and their values, in the same order."""
+
+    interface_names: tuple[str, ...]
+    """``position``, ``velocity``, ``effort``, ... as the hardware names them."""
+    values: tuple[float, ...]
+    """One per interface name."""
+
+
+@dataclass(frozen=True, slots=True)
 class DynamicJointState:
     """control_msgs/DynamicJointState: every interface of every joint (and sensor) by name."""
 
     stamp_sec: float
     joint_names: tuple[str, ...]
     """Joints (and sensors, gpios) of the hardware, in order."""
-    interface_values: tuple[tuple[tuple[str, ...], tuple[float, ...]], ...]
-    """Per joint: (interface names, values)."""
+    interface_values: tuple[InterfaceValue, ...]
+    """Per joint, in the order of ``joint_names``."""
     frame_id: str = ""
     """The header's frame (joint_state_broadcaster's ``frame_id``)."""

@@ -15,7 +15,7 @@ from pathlib import Path
 
 from _paths import REPO
 
-ANY_CEILING = {"ros": 45, "cli": 83}
+ANY_CEILING = {"ros": 40, "cli": 83}
 """The most uses of ``Any`` each package may have: lower it when a change takes some away, never raise it
 (issue 53's bound is under 100 in each)."""
 ISSUE_BOUND = 100

@@ -14,7 +14,7 @@ from _sim import new_simulation
 
 from gazelle.description import Joint, JointType, Pose, load, load_string
 from gazelle.sim import Simulation
-from gazelle.systems import Float64Array, JointTrajectory, MsgType, TrajectoryPoint, Twist, TwistStamped
+from gazelle.systems import Float64Array, InterfaceValue, JointTrajectory, MsgType, TrajectoryPoint, Twist, TwistStamped
 from gazelle.systems.ros2_control import (
     ControlError,
     ControllerManager,
@@ -1184,7 +1184,7 @@ def test_joint_state_broadcaster_extra_joints_join_both_messages_at_zero_once_ea
     assert js.names == ("alpha", "zeta", "gripper")
     assert (js.positions[2], js.velocities[2], js.efforts[2]) == (0.0, 0.0, 0.0)
     assert djs.joint_names[-1] == "gripper" and djs.joint_names.count("zeta") == 1
-    assert djs.interface_values[-1] == (("position", "velocity", "effort"), (0.0, 0.0, 0.0))
+    assert djs.interface_values[-1] == InterfaceValue(("position", "velocity", "effort"), (0.0, 0.0, 0.0))
 
 
 def test_remapping_rules_a_ros_peer_sets_that_rcl_would_refuse_refuse_the_load_and_the_manager_goes_on(make_sim):

@@ -1148,14 +1148,14 @@ def test_an_altimeter_reads_height_above_where_it_started_and_vertical_velocity(
 
 
 def test_altimeter_and_magnetic_field_convert_to_their_ros_messages():
-    from gazelle.ros._convert import ROS_TYPES, TO_ROS
+    from gazelle.ros._convert import ROS_TYPES, to_ros
     from gazelle.systems import Altimeter, MagneticField, MsgType
 
-    alt = TO_ROS[MsgType.ALTIMETER](Altimeter(1.5, "alt_frame", -0.25, -1.0, 2.0))
+    alt = to_ros(MsgType.ALTIMETER)(Altimeter(1.5, "alt_frame", -0.25, -1.0, 2.0))
     assert type(alt) is ROS_TYPES[MsgType.ALTIMETER] and type(alt).__module__.startswith("ros_gz_interfaces")
     assert (alt.vertical_position, alt.vertical_velocity, alt.vertical_reference) == (-0.25, -1.0, 2.0)
     assert (alt.header.stamp.sec, alt.header.stamp.nanosec, alt.header.frame_id) == (1, 500_000_000, "alt_frame")
-    mag = TO_ROS[MsgType.MAGNETIC_FIELD](MagneticField(2.0, "m", (1e-5, 2e-5, -3e-5)))
+    mag = to_ros(MsgType.MAGNETIC_FIELD)(MagneticField(2.0, "m", (1e-5, 2e-5, -3e-5)))
     assert (mag.magnetic_field.x, mag.magnetic_field.y, mag.magnetic_field.z) == (1e-5, 2e-5, -3e-5)
 
 

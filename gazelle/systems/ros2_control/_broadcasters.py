@@ -7,7 +7,15 @@ import math
 import numpy as np
 
 from .._bus import MsgType, Qos
-from .._payloads import DynamicJointState, Float64Array, Imu, JointStates, JointStatesBlock, WrenchStamped
+from .._payloads import (
+    DynamicJointState,
+    Float64Array,
+    Imu,
+    InterfaceValue,
+    JointStates,
+    JointStatesBlock,
+    WrenchStamped,
+)
 from ._controller import Controller, values_getter
 from ._hardware import FT_INTERFACES, IMU_INTERFACES, ControlError, UpdateFailed
 
@@ -132,13 +140,13 @@ class JointStateBroadcaster(Controller):
                 pos, vel, eff = pos + zeros, vel + zeros, eff + zeros
             self._js.publish(JointStates(t, self._js_joints + tuple(self._extra), pos, vel, eff, self._frame_id))
         if self._djs is not None and self._djs.wanted:
-            extra = [(_JOINT_STATE_FIELDS, (0.0, 0.0, 0.0))] * len(self._extra)
+            extra = [InterfaceValue(_JOINT_STATE_FIELDS, (0.0, 0.0, 0.0))] * len(self._extra)
             self._djs.publish(
                 DynamicJointState(
                     t,
                     tuple(n for n, _ in self._groups) + tuple(self._extra),
                     tuple(
-                        (ifaces, tuple(states[k] for k in keys))
+                        InterfaceValue(ifaces, tuple(states[k] for k in keys))
                         for (_, ifaces), keys in zip(self._groups, self._djs_keys, strict=True)
                     )
                     + tuple(extra),
