@@ -1,12 +1,12 @@
 """``gazelle spawner`` / ``gazelle unspawner``: controller_manager's spawner and unspawner, with
 ros2_control Jazzy's command line, for the simulated controller managers (or any real one).
 
-The spawner waits for the manager (``--controller-manager-timeout``, 10 s), then for each
+The spawner waits for the manager (``--controller-manager-timeout``; 0, the default, for ever), then for each
 controller: sets its ``params_file`` (and ``type``) on the manager when ``--param-file`` is given,
 loads it, configures it and, unless ``--inactive`` or ``--load-only``, activates it (strict).
-Without a manager it says "Controller manager not available" and exits 1, as the real one does;
-any refused step exits 1 with the reason the manager logged. It never hangs: every service call
-has ``--service-call-timeout``.
+With a timeout and no manager by then it says "Controller manager not available" and exits 1, as the real one
+does; any refused step exits 1 with the reason the manager logged. Once the manager is there it never hangs: every
+service call has ``--service-call-timeout``.
 """
 
 from __future__ import annotations
@@ -45,6 +45,8 @@ STRICT = SwitchController.Request.STRICT
 MAX_SECONDS = 2**31 - 1
 """The longest timeout the command line takes: builtin_interfaces/Duration keeps its seconds in an int32 (the
 switch's timeout travels as one), about 68 years."""
+MANAGER_RETRY_SEC = 10.0
+"""s between the spawner's "Could not contact service" lines while it waits for ever for the manager."""
 REASON_WAIT_SEC = 10.0
 """How long a refused step waits for the manager's reason on /rosout: as long as /rosout keeps a line for a reader
 that matches late (rcl's rosout QoS: lifespan 10 s; a later wait could not get it). The manager logs it before it
@@ -87,7 +89,10 @@ def build_parser(prog: str, unspawner: bool = False) -> argparse.ArgumentParser:
         p.add_argument("-t", "--controller-type", default=None, help="controller type (else from the parameters)")
         p.add_argument("-u", "--unload-on-kill", action="store_true", help="unload the controllers on SIGINT")
         p.add_argument(
-            "--controller-manager-timeout", type=_seconds, default=10.0, help="time to wait for the controller manager"
+            "--controller-manager-timeout",
+            type=_seconds,
+            default=0.0,
+            help="time to wait for the controller manager (0: for ever, as Jazzy's spawner)",
         )
         p.add_argument("--activate-as-group", action="store_true", help="activate all controllers in one switch")
         p.add_argument(
@@ -153,6 +158,11 @@ def _error(text: str) -> None:
     print(f"[ERROR] [spawner]: {text}", file=sys.stderr)
 
 
+def _warn(text: str) -> None:
+    """A warning line as the spawner prints it."""
+    print(f"[WARN] [spawner]: {text}", file=sys.stderr)
+
+
 def _info(text: str) -> None:
     """An info line as the spawner prints it."""
     print(f"[INFO] [spawner]: {text}", file=sys.stderr)
@@ -169,11 +179,22 @@ def _manager_name(args: argparse.Namespace) -> str:
 
 
 def _wait_for_manager(cli: _Client, timeout: float) -> bool:
-    """Wait for the manager's list_controllers service (``--controller-manager-timeout``); False after
-    saying it never came."""
-    client = cli.node.create_client(ListControllers, f"{cli.manager}/list_controllers")
+    """Wait for the manager's list_controllers service for ``--controller-manager-timeout`` s; False when it
+    did not come. 0, the default, waits for ever, saying so every :data:`MANAGER_RETRY_SEC` s, as Jazzy's
+    spawner does (controller_manager/controller_manager_services.py, ``service_caller``: "0 means waiting
+    forever, retrying every 10 seconds"): a launch file's spawner that starts before a slow simulation's
+    manager waits for it rather than failing after 10 s."""
+    service = f"{cli.manager}/list_controllers"
+    client = cli.node.create_client(ListControllers, service)
     try:
-        return client.wait_for_service(timeout_sec=timeout)
+        if client.service_is_ready():
+            return True
+        _info(f"waiting for service {service} to become available...")
+        if timeout:
+            return client.wait_for_service(timeout_sec=timeout)
+        while not client.wait_for_service(timeout_sec=MANAGER_RETRY_SEC):
+            _warn(f"Could not contact service {service}")
+        return True
     finally:
         cli.node.destroy_client(client)
 

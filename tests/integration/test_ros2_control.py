@@ -278,6 +278,25 @@ def test_r6bot_follows_a_trajectory_holds_and_aborts_on_path_tolerance(sim_facto
     assert ros_client.entity_state("r6bot").success
 
 
+@pytest.mark.slow
+def test_the_spawner_waits_for_a_manager_that_comes_late_as_jazzys_does(sim_factory):
+    """Jazzy's spawner waits for ever by default (``--controller-manager-timeout`` 0; controller_manager_services.py
+    ``service_caller`` says "Could not contact service" every 10 s): a launch file's spawner started before a slow
+    simulation's manager gets its controllers. Before, gazelle's gave up after 10 s with "Controller manager not
+    available". ~25 s: the spawner's first 10 s wait is the behaviour under test."""
+    sim = sim_factory("--no-viewer")
+    spawner = start([*GAZELLE, "spawner", "joint_state_broadcaster", "diffbot_base_controller"], "spawner")
+    try:
+        spawner.wait_line("Could not contact service /controller_manager/list_controllers", 30)
+        assert spawner.popen.poll() is None, spawner.output
+        _spawn_diffbot(sim)
+        assert spawner.wait(60) == 0, spawner.output
+        assert "Configured and activated diffbot_base_controller" in spawner.output
+    finally:
+        if spawner.popen.poll() is None:
+            spawner.popen.kill()
+
+
 def test_spawner_without_a_manager_says_so_and_exits_1():
     rc, out = _spawner("joint_state_broadcaster", "--controller-manager-timeout", "1", timeout=30)
     assert rc == 1
