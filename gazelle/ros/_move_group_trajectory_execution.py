@@ -346,6 +346,19 @@ class TrajectoryExecutionManager:
             (r for r in results if r[0] != "SUCCESS"), ("SUCCESS", "")
         )
 
+    def _instead(self, missing: Controller) -> str:
+        """What to use instead of ``missing``, said as MoveIt's user would fix it: another controller of
+        moveit_controllers.yaml for the same joints whose action is up (UR's config makes
+        scaled_joint_trajectory_controller the default while ur_sim_control.launch.py starts
+        joint_trajectory_controller). MoveIt itself sends to the default controller only, and so does gazelle."""
+        for other in self.controllers:
+            if other is not missing and set(missing.joints) <= set(other.joints) and self.action_served(other.action):
+                return (
+                    f" ({other.name}, listed for the same joints, is running: start {missing.name} in its place, or "
+                    f"make {other.name} MoveIt's default controller in moveit_controllers.yaml)"
+                )
+        return ""
+
     def follow(
         self, controller: Controller, trajectory: JointTrajectory, stop_requested: Callable[[], bool], served: bool
     ) -> tuple[str, str]:
@@ -357,7 +370,10 @@ class TrajectoryExecutionManager:
                 lambda: ActionClient(self.node, FollowJointTrajectory, controller.action)
             )
         if not client.wait_for_server(timeout_sec=5.0 if served else 0.1):  # the graph was waited on above
-            return "CONTROL_FAILED", f"controller action {controller.action} is not available"
+            return (
+                "CONTROL_FAILED",
+                f"controller action {controller.action} is not available{self._instead(controller)}",
+            )
         goal = FollowJointTrajectory.Goal(trajectory=trajectory)
         done = threading.Event()
         box: dict[str, Any] = {}
