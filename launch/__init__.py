@@ -5,10 +5,21 @@ The API follows launch (Jazzy): substitutions are evaluated lazily in a LaunchCo
 visited in order, processes run with their output prefixed ``[name-N]``, Ctrl-C stops the tree.
 """
 
-from . import actions, conditions, event_handlers, events, launch_description_sources, substitutions, utilities
+from . import (
+    actions,
+    conditions,
+    event_handlers,
+    events,
+    frontend,
+    launch_description_sources,
+    launch_exposures,  # noqa: F401 - exposes launch's tags and substitutions to XML and YAML files
+    substitutions,
+    utilities,
+)
 from .action import Action
 from .condition import Condition
 from .event import Event, EventHandler
+from .invalid_launch_file_error import InvalidLaunchFileError
 from .launch_context import LaunchContext
 from .launch_description import LaunchDescription
 from .launch_service import LaunchService
@@ -22,6 +33,7 @@ __all__ = [
     "Condition",
     "Event",
     "EventHandler",
+    "InvalidLaunchFileError",
     "LaunchContext",
     "LaunchDescription",
     "LaunchService",
@@ -31,6 +43,7 @@ __all__ = [
     "conditions",
     "event_handlers",
     "events",
+    "frontend",
     "launch_description_sources",
     "substitutions",
     "utilities",

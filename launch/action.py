@@ -37,6 +37,16 @@ class Action:
     def get_sub_entities(self) -> list[Any]:
         return []
 
+    def launch_arguments_walk(self, context: LaunchContext, found: list[Any]) -> tuple[list[Any], LaunchContext]:
+        """One step of ``LaunchDescription.get_launch_arguments``: the entities below this one that the listing
+        goes into, and the context it reads them in (here: the sub-entities, in the same context). A
+        DeclareLaunchArgument adds itself to ``found``; an IncludeLaunchDescription gives its file's entities in
+        a context of its own. Each action says this of itself, so the description knows no action class."""
+        try:
+            return self.get_sub_entities(), context
+        except Exception:
+            return [], context
+
 
 def _user_frame(stack: Any) -> str:
     """``file:line`` of the innermost frame outside these packages (the launch file)."""

@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from .action import Action
+from .launch_context import LaunchContext
 
 
 class LaunchDescription(Action):
@@ -32,13 +33,8 @@ class LaunchDescription(Action):
     def get_launch_arguments(self, conditional_inclusion: bool = False, context: Any = None) -> list[Any]:
         """Every DeclareLaunchArgument here and in what it includes, in order (best effort: an include
         whose path needs values only known at run time is skipped). ``context`` gives the file's folder
-        (ThisLaunchFileDir) and the configurations known so far."""
-        import copy
-        import os
-
-        from .actions import DeclareLaunchArgument, IncludeLaunchDescription
-        from .launch_context import LaunchContext
-
+        (ThisLaunchFileDir) and the configurations known so far. Each entity says what lies below it
+        (:meth:`Action.launch_arguments_walk`)."""
         found: list[Any] = []
         seen: set[int] = set()
 
@@ -47,34 +43,14 @@ class LaunchDescription(Action):
                 if id(e) in seen:
                     continue
                 seen.add(id(e))
-                if isinstance(e, DeclareLaunchArgument):
-                    if all(d.name != e.name for d in found):
-                        found.append(e)
-                    default = e.default_text(ctx)
-                    if default is not None:
-                        ctx.launch_configurations.setdefault(e.name, default)
-                    continue
-                if isinstance(e, IncludeLaunchDescription):
+                if isinstance(e, Action):
+                    below, inner = e.launch_arguments_walk(ctx, found)
+                else:
                     try:
-                        ld = e.launch_description_source.get_launch_description(ctx)
+                        below, inner = list(e.get_sub_entities()), ctx
                     except Exception:
-                        continue
-                    inner = copy.copy(ctx)
-                    inner.launch_configurations = dict(ctx.launch_configurations)
-                    location = getattr(e.launch_description_source, "location", "")
-                    inner.locals = copy.copy(ctx.locals)
-                    if location and os.path.isfile(location):
-                        inner.locals.__dict__.update(
-                            current_launch_file_path=location,
-                            current_launch_file_directory=os.path.dirname(os.path.abspath(location)),
-                        )
-                    walk(list(getattr(ld, "entities", [])), inner)
-                    continue
-                try:
-                    subs = e.get_sub_entities()
-                except Exception:
-                    subs = []
-                walk(subs, ctx)
+                        below, inner = [], ctx
+                walk(below, inner)
 
         walk(self.entities, context if context is not None else LaunchContext())
         return found

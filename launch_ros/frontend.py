@@ -13,8 +13,8 @@ from typing import Any
 
 from launch.frontend.entity import Entity
 from launch.frontend.expose import expose_action, expose_substitution
-from launch.frontend.launch_exposures import condition_kwargs, parse_cmdline, process_kwargs
 from launch.frontend.type_utils import data_type_from_identifier
+from launch.launch_exposures import condition_kwargs, parse_cmdline, process_kwargs
 
 from . import actions, substitutions
 from .parameter_descriptions import ParameterFile, ParameterValue

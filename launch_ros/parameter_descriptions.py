@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from launch.substitution import normalize_to_list_of_substitutions, perform_substitutions
+from launch.utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 
 class ParameterValue:

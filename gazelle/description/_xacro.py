@@ -38,6 +38,7 @@ import xacro.substitution_args as xacro_subst
 
 from .._errors import SimError
 from ._diagnostics import DiagnosticSink, ErrorCode, SourceLocation
+from ._formats import detect_format
 from ._resources import ResourceResolver
 from ._xml import LOCATION_ATTRIBUTE, encode_location, relax_comments
 
@@ -287,8 +288,6 @@ def _strip_locations(doc: xml.dom.minidom.Document) -> None:
 
 def _keeps_locations(doc: xml.dom.minidom.Document) -> bool:
     """Only URDF output keeps the location attributes (the URDF parser reads them)."""
-    from . import detect_format  # the package's format sniffing; imported late to avoid a cycle
-
     root = doc.documentElement
     return root is not None and root.tagName == "robot" and detect_format(root.toxml()) == "urdf"
 

@@ -2,13 +2,20 @@
 
 from __future__ import annotations
 
+import copy
 import os
 from collections.abc import Callable, Iterable
 from typing import Any
 
 from ..action import Action
+from ..conditions import evaluate_condition_expression
+from ..events import Shutdown as ShutdownEvent
 from ..launch_context import LaunchContext
-from ..substitution import normalize_to_list_of_substitutions, perform_substitutions
+from ..launch_description import LaunchDescription
+from ..launch_description_sources import AnyLaunchDescriptionSource, LaunchDescriptionSource
+from ..logging import log
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
+from .execute_process import ExecuteProcess
 
 
 class DeclareLaunchArgument(Action):
@@ -50,6 +57,15 @@ class DeclareLaunchArgument(Action):
                 f"Argument '{self.name}' provided value '{value}' is not valid. Valid options are: {self.choices}"
             )
         return None
+
+    def launch_arguments_walk(self, context: LaunchContext, found: list[Any]) -> tuple[list[Any], LaunchContext]:
+        """Listed once (the first declaration of a name); its default counts for what comes after it."""
+        if all(d.name != self.name for d in found):
+            found.append(self)
+        default = self.default_text(context)
+        if default is not None:
+            context.launch_configurations.setdefault(self.name, default)
+        return [], context
 
 
 class LaunchArgumentError(RuntimeError):
@@ -116,14 +132,9 @@ class IncludeLaunchDescription(Action):
 
     def __init__(self, launch_description_source: Any, *, launch_arguments: Any = None, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        from ..launch_description import LaunchDescription
-        from ..launch_description_sources import LaunchDescriptionSource
-
         if isinstance(launch_description_source, LaunchDescription):
             launch_description_source = LaunchDescriptionSource(launch_description_source)
         elif isinstance(launch_description_source, (str, list)) or hasattr(launch_description_source, "perform"):
-            from ..launch_description_sources import AnyLaunchDescriptionSource
-
             launch_description_source = AnyLaunchDescriptionSource(launch_description_source)
         self.launch_description_source = launch_description_source
         items = launch_arguments.items() if isinstance(launch_arguments, dict) else (launch_arguments or [])
@@ -134,6 +145,24 @@ class IncludeLaunchDescription(Action):
     def get_sub_entities(self) -> list[Any]:
         ld = self.launch_description_source.try_get_launch_description_without_context()
         return [ld] if ld is not None else []
+
+    def launch_arguments_walk(self, context: LaunchContext, found: list[Any]) -> tuple[list[Any], LaunchContext]:
+        """The included file's entities, read in a copy of the context (its configurations and the file's own
+        path stay inside); nothing where the path needs values only known at run time."""
+        try:
+            ld = self.launch_description_source.get_launch_description(context)
+        except Exception:
+            return [], context
+        inner = copy.copy(context)
+        inner.launch_configurations = dict(context.launch_configurations)
+        inner.locals = copy.copy(context.locals)
+        location = getattr(self.launch_description_source, "location", "")
+        if location and os.path.isfile(location):
+            inner.locals.__dict__.update(
+                current_launch_file_path=location,
+                current_launch_file_directory=os.path.dirname(os.path.abspath(location)),
+            )
+        return list(getattr(ld, "entities", [])), inner
 
     def execute(self, context: LaunchContext) -> list[Any]:
         ld = self.launch_description_source.get_launch_description(context)
@@ -241,8 +270,6 @@ class AppendEnvironmentVariable(Action):
         sep = perform_substitutions(context, self.separator)
         prepend = self.prepend
         if not isinstance(prepend, bool):
-            from ..conditions import evaluate_condition_expression
-
             prepend = evaluate_condition_expression(context, normalize_to_list_of_substitutions(prepend))
         old = context.environment.get(name, "")
         context.environment[name] = value if not old else (f"{value}{sep}{old}" if prepend else f"{old}{sep}{value}")
@@ -265,8 +292,6 @@ class LogInfo(Action):
         self.msg = normalize_to_list_of_substitutions(msg)
 
     def execute(self, context: LaunchContext) -> None:
-        from ..logging import log
-
         log("INFO", "launch.user", perform_substitutions(context, self.msg))
 
 
@@ -326,12 +351,8 @@ class Shutdown(EmitEvent):
     """Stop the whole launch (``reason`` is logged)."""
 
     def __init__(self, *, reason: str = "reason not given", **kwargs: Any) -> None:
-        from ..events import Shutdown as ShutdownEvent
-
         super().__init__(event=ShutdownEvent(reason=reason), **kwargs)
 
-
-from .execute_process import ExecuteProcess  # noqa: E402
 
 ExecuteLocal = ExecuteProcess
 

@@ -8,8 +8,9 @@ import shlex
 from typing import Any
 
 from ..action import Action
+from ..conditions import evaluate_condition_expression
 from ..launch_context import LaunchContext
-from ..substitution import normalize_to_list_of_substitutions, perform_substitutions
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 
 class ExecuteProcess(Action):
@@ -102,8 +103,6 @@ class ExecuteProcess(Action):
         cwd = perform_substitutions(context, self.cwd) if self.cwd is not None else None
         respawn = self.respawn
         if not isinstance(respawn, bool):
-            from ..conditions import evaluate_condition_expression
-
             respawn = evaluate_condition_expression(context, normalize_to_list_of_substitutions(respawn))
         context.service.start_process(self, base, cmd, cwd, self._env(context), respawn)
         return None

@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..condition import Condition
-from ..substitution import normalize_to_list_of_substitutions, perform_substitutions
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 _TRUE = ("true", "1")
 _FALSE = ("false", "0")

@@ -4,6 +4,12 @@
 with a ``parse`` classmethod); after it runs, every attribute and nested tag of the entity must have been
 read, else the file has one the action does not know. ``expose_substitution('name')`` registers
 ``(args) -> (substitution_type, kwargs)`` where ``args`` is a list of argument substitution lists.
+
+This registry is the bottom of the front end: the modules that expose tags register themselves when they are
+imported (launch's own, launch/launch_exposures.py, by ``import launch``), and the other packages'
+through the ``launch.frontend.launch_extension`` entry points, loaded once before the first tag or
+substitution is made (launch's Parser.load_launch_extensions; launch_ros declares one). So the reader of
+files knows no action, and launch knows no launch_ros.
 """
 
 from __future__ import annotations
@@ -11,6 +17,12 @@ from __future__ import annotations
 import inspect
 from collections.abc import Callable
 from typing import Any
+
+from ..logging import log
+
+EXTENSION_GROUP = "launch.frontend.launch_extension"
+"""The entry-point group through which other packages expose their tags and substitutions (Jazzy's launch reads
+it; launch_ros's setup.py declares ``launch_ros = launch_ros`` in it, and so does gazelle's pyproject.toml)."""
 
 action_parse_methods: dict[str, Callable[..., Any]] = {}
 substitution_parse_methods: dict[str, Callable[..., Any]] = {}
@@ -62,8 +74,28 @@ def expose_substitution(name: str) -> Callable[[Any], Any]:
     return decorate
 
 
+_extensions_loaded = False
+
+
+def load_launch_extensions() -> None:
+    """Imports, once, every package declared in :data:`EXTENSION_GROUP` (their modules expose their tags as
+    they are imported); one that fails to load is one warning line, as launch's warns, and the rest load."""
+    global _extensions_loaded
+    if _extensions_loaded:
+        return
+    _extensions_loaded = True
+    import importlib.metadata  # ~20 ms: only for the first file read, not at every `import launch`
+
+    for entry_point in importlib.metadata.entry_points(group=EXTENSION_GROUP):
+        try:
+            entry_point.load()
+        except Exception as err:
+            log("WARNING", "launch", f"Failed to load the launch extension: {entry_point.name}: {err}")
+
+
 def instantiate_action(entity: Any, parser: Any) -> Any:
     """The action the entity's tag is exposed as."""
+    load_launch_extensions()
     method = action_parse_methods.get(entity.type_name)
     if method is None:
         raise ValueError(f"Unrecognized tag <{entity.type_name}>")
@@ -73,9 +105,7 @@ def instantiate_action(entity: Any, parser: Any) -> Any:
 
 def instantiate_substitution(type_name: str, args: list[Any] | None = None) -> Any:
     """The substitution ``$(type_name ...)`` with its arguments."""
-    from .parser import Parser
-
-    Parser.load_launch_extensions()
+    load_launch_extensions()
     method = substitution_parse_methods.get(type_name)
     if method is None:
         raise ValueError(f"Unknown substitution: $({type_name} ...)")
@@ -83,4 +113,10 @@ def instantiate_substitution(type_name: str, args: list[Any] | None = None) -> A
     return subst_type(**kwargs)
 
 
-__all__ = ["expose_action", "expose_substitution", "instantiate_action", "instantiate_substitution"]
+__all__ = [
+    "expose_action",
+    "expose_substitution",
+    "instantiate_action",
+    "instantiate_substitution",
+    "load_launch_extensions",
+]

@@ -21,7 +21,8 @@ import re
 from typing import Any
 
 from ..substitution import Substitution
-from ..substitutions.text_substitution import TextSubstitution
+from ..text_substitution import TextSubstitution
+from .expose import instantiate_substitution
 
 
 class SubstitutionSyntaxError(ValueError):
@@ -77,8 +78,6 @@ class _Reader:
 
     # -- substitutions ---------------------------------------------------------------------------------
     def substitution(self, quote: str) -> Substitution:
-        from .expose import instantiate_substitution
-
         self.pos += 2  # "$("
         match = _IDENT.match(self.text, self.pos)
         if match is None:

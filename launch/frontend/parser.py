@@ -7,9 +7,10 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from ..launch_description_sources import InvalidLaunchFileError
+from ..invalid_launch_file_error import InvalidLaunchFileError
+from ..launch_description import LaunchDescription
 from .entity import Entity, LocatedError
-from .expose import instantiate_action
+from .expose import instantiate_action, load_launch_extensions
 from .parse_substitution import parse_if_substitutions, parse_substitution, replace_escaped_characters
 
 XML_EXTENSIONS = (".xml", ".launch")
@@ -23,21 +24,12 @@ class InvalidFrontendLaunchFileError(InvalidLaunchFileError):
 class Parser:
     """Parses one file's entities; :meth:`load` picks XML or YAML by the file's extension."""
 
-    extensions_loaded = False
-
     @classmethod
     def load_launch_extensions(cls) -> None:
-        """Registers the tags and substitutions of launch and launch_ros (upstream loads them through the
-        ``launch.frontend.launch_extension`` entry points; here they are known modules)."""
-        if cls.extensions_loaded:
-            return
-        cls.extensions_loaded = True
-        from . import launch_exposures  # noqa: F401 - registers launch's tags and substitutions
-
-        try:
-            import launch_ros.frontend  # noqa: F401 - registers Node, push_ros_namespace, find-pkg-share...
-        except ImportError:  # pragma: no cover - launch_ros ships beside launch
-            pass
+        """Imports the packages that expose tags and substitutions through the ``launch.frontend.launch_extension``
+        entry points (launch_ros's), as launch's Parser does (:func:`launch.frontend.expose.load_launch_extensions`);
+        launch's own are exposed by ``import launch``."""
+        load_launch_extensions()
 
     def parse_action(self, entity: Entity) -> Any:
         """The action of one tag, made with the file and line it came from; an error names them."""
@@ -64,8 +56,6 @@ class Parser:
 
     def parse_description(self, entity: Entity) -> Any:
         """The LaunchDescription of the root ``<launch>``."""
-        from ..launch_description import LaunchDescription
-
         if entity.type_name != "launch":
             raise InvalidFrontendLaunchFileError(
                 f"{entity.location}: expected <launch> as the root, got <{entity.type_name}>"

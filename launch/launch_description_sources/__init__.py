@@ -7,11 +7,10 @@ import os
 import sys
 from typing import Any
 
-from ..substitution import normalize_to_list_of_substitutions, perform_substitutions
-
-
-class InvalidLaunchFileError(Exception):
-    pass
+from ..frontend.parser import load_frontend_launch_description
+from ..invalid_launch_file_error import InvalidLaunchFileError
+from ..launch_context import LaunchContext
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 
 def load_python_launch_file_as_module(path: str) -> Any:
@@ -68,8 +67,6 @@ class PythonLaunchDescriptionSource(LaunchDescriptionSource):
         return self._loaded[path]
 
     def try_get_launch_description_without_context(self) -> Any:
-        from ..launch_context import LaunchContext
-
         try:
             return self.get_launch_description(LaunchContext())
         except Exception:
@@ -84,8 +81,6 @@ class FrontendLaunchDescriptionSource(PythonLaunchDescriptionSource):
         self.method = "interpreted frontend launch file"
 
     def get_launch_description(self, context: Any) -> Any:
-        from ..frontend import load_frontend_launch_description
-
         path = self.path(context)
         self.location = path
         if path not in self._loaded:
@@ -108,8 +103,6 @@ class AnyLaunchDescriptionSource(PythonLaunchDescriptionSource):
         path = self.path(context)
         if path.endswith(".py"):
             return super().get_launch_description(context)
-        from ..frontend import load_frontend_launch_description
-
         self.location = path
         if path not in self._loaded:
             self._loaded[path] = load_frontend_launch_description(path)

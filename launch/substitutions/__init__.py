@@ -10,8 +10,10 @@ import subprocess
 from typing import Any
 
 from ..launch_context import LaunchContext
-from ..substitution import Substitution, normalize_to_list_of_substitutions, perform_substitutions, text_items
-from .text_substitution import TextSubstitution
+from ..substitution import Substitution
+from ..text_substitution import TextSubstitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
+from ..utilities.normalize_to_list_of_substitutions_impl import text_items
 
 
 class SubstitutionFailure(RuntimeError):

@@ -1,18 +1,7 @@
-from __future__ import annotations
+"""``launch.substitutions.text_substitution`` (Jazzy's module path): TextSubstitution is defined on the ground
+floor, launch/text_substitution.py, so that normalize_to_list_of_substitutions (launch.utilities) can make
+literal text without importing this package, whose substitutions use it."""
 
-from ..substitution import Substitution
+from ..text_substitution import TextSubstitution
 
-
-class TextSubstitution(Substitution):
-    """Literal text."""
-
-    def __init__(self, *, text: str) -> None:
-        if not isinstance(text, str):
-            raise TypeError(f"TextSubstitution expects a string, got {type(text).__name__}")
-        self.text = text
-
-    def perform(self, context) -> str:
-        return self.text
-
-    def describe(self) -> str:
-        return repr(self.text)
+__all__ = ["TextSubstitution"]

@@ -6,10 +6,11 @@ Not here: ``AsyncSafeSignalManager`` and ``visit_all_entities_and_collect_future
 which gazelle's launch service does its own way.
 """
 
-from ..substitution import normalize_to_list_of_substitutions, perform_substitutions
 from .class_tools import is_a, is_a_subclass, isclassinstance
 from .ensure_argument_type import ensure_argument_type
 from .normalize_to_list_of_entities import normalize_to_list_of_entities
+from .normalize_to_list_of_substitutions_impl import normalize_to_list_of_substitutions
+from .perform_substitutions_impl import perform_substitutions
 
 __all__ = [
     "ensure_argument_type",

@@ -11,7 +11,7 @@ import yaml
 from launch.action import Action
 from launch.actions import ExecuteProcess
 from launch.launch_context import LaunchContext
-from launch.substitution import normalize_to_list_of_substitutions, perform_substitutions
+from launch.utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 from ..parameter_descriptions import ParameterFile, ParameterValue, evaluate_parameter_value
 from ..substitutions import find_executable

@@ -5,8 +5,9 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from launch.substitution import Substitution, normalize_to_list_of_substitutions, perform_substitutions
+from launch.substitution import Substitution
 from launch.substitutions import SubstitutionFailure
+from launch.utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 
 class PackageNotFoundError(SubstitutionFailure):

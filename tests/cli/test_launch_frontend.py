@@ -7,6 +7,7 @@ parameters file and environment)."""
 from __future__ import annotations
 
 import json
+import subprocess
 import sys
 from pathlib import Path
 
@@ -14,7 +15,7 @@ import pytest
 
 from launch.frontend import InvalidFrontendLaunchFileError, load_frontend_launch_description, parse_substitution
 from launch.launch_context import LaunchContext
-from launch.substitution import perform_substitutions
+from launch.utilities import perform_substitutions
 
 from .test_launch import ECHO_ARGS, ros2, write
 
@@ -427,3 +428,38 @@ def test_a_bad_xml_file_through_ros2_launch_is_one_line_without_a_traceback(pref
     assert late.returncode != 0 and "Traceback" not in text
     assert "launch configuration 'never_set' does not exist" in text
     assert f"in LogInfo made at {launch_dir / 'late.launch.xml'}:2" in text
+
+
+def test_a_process_that_never_imports_launch_ros_reads_its_tags(tmp_path):
+    """launch knows no launch_ros (issue 53: the reader imported it, a circle of ten files): launch_ros's tags and
+    substitutions reach the reader through the ``launch.frontend.launch_extension`` entry point, as in Jazzy."""
+    path = tmp_path / "n.launch.xml"
+    path.write_text(
+        '<launch>\n  <let name="p" value="$(find-pkg-prefix demo)"/>\n  <node pkg="demo" exec="e"/>\n</launch>\n'
+    )
+    code = (
+        "import sys\n"
+        "from launch.frontend import load_frontend_launch_description\n"
+        "assert 'launch_ros' not in sys.modules\n"
+        "print([type(e).__name__ for e in load_frontend_launch_description(sys.argv[1]).entities])\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code, str(path)], capture_output=True, text=True, timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "['SetLaunchConfiguration', 'Node']"
+
+
+def test_an_extension_that_fails_to_load_is_one_warning_line(monkeypatch, capsys):
+    import importlib.metadata
+
+    from launch.frontend import expose
+
+    declared = list(importlib.metadata.entry_points(group=expose.EXTENSION_GROUP))
+    assert [(e.name, e.value) for e in declared] == [("launch_ros", "launch_ros")]
+    broken = importlib.metadata.EntryPoint("broken", "no_such_launch_extension", expose.EXTENSION_GROUP)
+    monkeypatch.setattr(importlib.metadata, "entry_points", lambda group: [broken, *declared])
+    monkeypatch.setattr(expose, "_extensions_loaded", False)
+    expose.load_launch_extensions()
+    assert capsys.readouterr().err.splitlines() == [
+        "[WARNING] [launch]: Failed to load the launch extension: broken: No module named 'no_such_launch_extension'"
+    ]
+    assert "node" in expose.action_parse_methods and "find-pkg-share" in expose.substitution_parse_methods

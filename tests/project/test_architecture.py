@@ -533,34 +533,57 @@ IMPORT_CIRCLES_TO_UNDO: set[tuple[str, ...]] = set()
 """Circles of imports still inside a package, each its files sorted: a to-do list that only shrinks."""
 
 
-def _import_circles(package: Path) -> set[tuple[str, ...]]:
-    """Every set of files of one package (``gazelle/<package>/``, its sub-folders included) that import each other
-    in a loop, counting imports inside functions and under ``TYPE_CHECKING`` (a circle a reader must walk all the
-    same): Tarjan's strongly connected components of the graph of relative imports between its files."""
+def _module_file(root: Path, dotted: str) -> Path | None:
+    """The file of module ``dotted`` under ``root`` (``a/b.py`` or ``a/b/__init__.py``), if it is there."""
+    if not dotted:
+        return None
+    base = root.joinpath(*dotted.split("."))
+    return next((f for f in (base.with_suffix(".py"), base / "__init__.py") if f.is_file()), None)
+
+
+def _imported_files(path: Path, root: Path) -> set[Path]:
+    """The files under ``root`` that ``path`` imports, inside functions and under ``TYPE_CHECKING`` too (a circle a
+    reader must walk all the same): ``from M import n`` names M's module ``n`` where there is one, else M itself.
+    The ``__init__.py`` of the packages above a module, which Python runs first, is no arrow of its own."""
+    package = list(path.relative_to(root).parts[:-1])
+    found: set[Path] = set()
+    for node in ast.walk(ast.parse(path.read_text(), str(path))):
+        if isinstance(node, ast.Import):
+            found |= {f for a in node.names if (f := _module_file(root, a.name))}
+        elif isinstance(node, ast.ImportFrom):
+            base = package[: len(package) - node.level + 1] if node.level else []
+            module = ".".join(base + ([node.module] if node.module else []))
+            for alias in node.names:
+                target = _module_file(root, f"{module}.{alias.name}") or _module_file(root, module)
+                if target is not None:
+                    found.add(target)
+    found.discard(path)
+    return found
+
+
+def _import_circles(root: Path, packages: tuple[str, ...], *, per_folder: bool = False) -> set[tuple[str, ...]]:
+    """Every set of files of ``packages`` (folders of ``root``, with their sub-folders) that import each other in a
+    loop, relative and absolute imports alike: Tarjan's strongly connected components of the graph of imports
+    between their files (:func:`_imported_files`). A package's ``__init__.py`` is a file like any other: one that
+    only hands names on carries the arrows through it. With ``per_folder`` each first-level folder of a package
+    stands apart (gazelle's layers, whose one-way arrows ALLOWED checks): only a loop inside one of them counts;
+    without it a loop across the packages counts too (launch and launch_ros)."""
+
+    def unit(file: Path) -> tuple[str, ...]:
+        parts = file.relative_to(root).parts
+        if not per_folder:
+            return ()
+        return parts[:2] if len(parts) > 2 else parts[:1]
+
     edges: dict[str, set[str]] = {}
-
-    def layer(file: Path) -> str:
-        parts = file.relative_to(package).parts
-        return parts[0] if len(parts) > 1 else ""
-
-    for path in sorted(package.rglob("*.py")):
-        if path.name == "__init__.py":
-            continue  # a package's face: it hands names on (a circle through it is one of the modules it names)
-        rel = path.relative_to(package.parent).as_posix()
-        targets = edges.setdefault(rel, set())
-        for node in ast.walk(ast.parse(path.read_text())):
-            if not (isinstance(node, ast.ImportFrom) and node.level):
-                continue
-            base = path.parent
-            for _ in range(node.level - 1):
-                base = base.parent
-            module = base.joinpath(*node.module.split(".")) if node.module else base
-            candidates = [module.with_suffix(".py"), module / "__init__.py"]
-            candidates += [module / f"{a.name}.py" for a in node.names]  # `from . import x`, `from .pkg import mod`
-            for target in candidates:
-                inside = target.is_relative_to(package) and layer(target) == layer(path)
-                if target.exists() and target != path and inside and target.name != "__init__.py":
-                    targets.add(target.relative_to(package.parent).as_posix())
+    for package in packages:
+        for path in sorted((root / package).rglob("*.py")):
+            targets = _imported_files(path, root)
+            edges[path.relative_to(root).as_posix()] = {
+                t.relative_to(root).as_posix()
+                for t in targets
+                if t.relative_to(root).parts[0] in packages and unit(t) == unit(path)
+            }
     index: dict[str, int] = {}
     low: dict[str, int] = {}
     stack: list[str] = []
@@ -593,7 +616,7 @@ def _import_circles(package: Path) -> set[tuple[str, ...]]:
 
 def test_no_import_circle_inside_a_package() -> None:
     """Issue 53: ``entity_frame_prefix`` imported inside functions tied 15 files of systems/ into one circle."""
-    found = _import_circles(REPO / "gazelle")
+    found = _import_circles(REPO, ("gazelle",), per_folder=True)
     assert found - IMPORT_CIRCLES_TO_UNDO == set(), f"import circles: {sorted(found - IMPORT_CIRCLES_TO_UNDO)}"
     assert IMPORT_CIRCLES_TO_UNDO - found == set(), f"gone: remove {sorted(IMPORT_CIRCLES_TO_UNDO - found)}"
 
@@ -604,4 +627,70 @@ def test_the_circle_check_finds_a_planted_circle(tmp_path: Path) -> None:
     (pkg / "a.py").write_text("def f():\n    from .b import g\n")
     (pkg / "b.py").write_text("from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n    from .a import f\n")
     (pkg / "c.py").write_text("from . import a\n")
-    assert _import_circles(pkg) == {("pkg/a.py", "pkg/b.py")}
+    assert _import_circles(tmp_path, ("pkg",), per_folder=True) == {("pkg/a.py", "pkg/b.py")}
+
+
+def test_the_circle_check_sees_a_package_init_that_defines(tmp_path: Path) -> None:
+    """A package's ``__init__.py`` that defines what it exports is a module like any other: a late import of it
+    from one of its own modules closes a circle (gazelle/description's ``_xacro.py`` imported ``detect_format``
+    from the package inside a function)."""
+    pkg = tmp_path / "pkg" / "layer"
+    pkg.mkdir(parents=True)
+    (pkg / "__init__.py").write_text("from ._x import expand\n\n\ndef detect():\n    pass\n")
+    (pkg / "_x.py").write_text("def expand():\n    from . import detect\n")
+    (pkg / "_y.py").write_text("from . import _x\n")
+    assert _import_circles(tmp_path, ("pkg",), per_folder=True) == {("pkg/layer/__init__.py", "pkg/layer/_x.py")}
+
+
+LAUNCH_PACKAGES: dict[str, tuple[str, ...]] = {
+    "launch": (),
+    "launch_ros": ("launch",),
+    "launch_xml": ("launch",),
+    "launch_yaml": ("launch",),
+}
+"""gazelle's implementation of ROS 2's launch packages -> the others each may import: launch knows none of them
+(launch_ros's tags reach launch's XML and YAML reader through the ``launch.frontend.launch_extension`` entry
+point, as in Jazzy)."""
+
+
+def _launch_package_violations(root: Path) -> list[str]:
+    found: list[str] = []
+    for package, allowed in LAUNCH_PACKAGES.items():
+        for path in sorted((root / package).rglob("*.py")):
+            for target in sorted(_imported_files(path, root)):
+                other = target.relative_to(root).parts[0]
+                if other in LAUNCH_PACKAGES and other != package and other not in allowed:
+                    found.append(f"{path.relative_to(root)}: imports {target.relative_to(root)} ({package} may not)")
+    return found
+
+
+def test_no_import_circle_inside_the_launch_packages() -> None:
+    """Issue 53: the XML and YAML front end tied ten files of launch and launch_ros into one circle (the reader of
+    files imported launch_ros and the actions, the actions the description sources, the sources the reader),
+    and launch/substitution.py and the TextSubstitution it makes another. A loop across the four packages
+    counts too; and launch imports none of the other three."""
+    assert _import_circles(REPO, tuple(LAUNCH_PACKAGES)) == set()
+    assert _launch_package_violations(REPO) == []
+
+
+def test_the_launch_circle_check_finds_a_planted_circle(tmp_path: Path) -> None:
+    """The shape of the circle the front end had: a late import of launch_ros in launch's reader, launch_ros's
+    tags importing launch's actions, whose package ``__init__.py`` defines them and imports the reader."""
+    for folder in ("launch/actions", "launch/frontend", "launch_ros"):
+        (tmp_path / folder).mkdir(parents=True)
+    (tmp_path / "launch" / "__init__.py").write_text("from . import actions\n")
+    (tmp_path / "launch" / "actions" / "__init__.py").write_text(
+        "from ..frontend.parser import read\n\n\nclass Include:\n    pass\n"
+    )
+    (tmp_path / "launch" / "frontend" / "__init__.py").write_text("from .parser import read\n")
+    (tmp_path / "launch" / "frontend" / "parser.py").write_text("def read():\n    import launch_ros.frontend\n")
+    (tmp_path / "launch" / "frontend" / "entity.py").write_text("from . import parser\n")
+    (tmp_path / "launch_ros" / "__init__.py").write_text("")
+    (tmp_path / "launch_ros" / "frontend.py").write_text("from launch.actions import Include\n")
+    packages = ("launch", "launch_ros")
+    assert _import_circles(tmp_path, packages) == {
+        ("launch/actions/__init__.py", "launch/frontend/parser.py", "launch_ros/frontend.py")
+    }
+    assert _launch_package_violations(tmp_path) == [
+        "launch/frontend/parser.py: imports launch_ros/frontend.py (launch may not)"
+    ]

@@ -8,7 +8,8 @@ from typing import Any
 
 from launch_param_builder import load_xacro
 
-from launch.substitution import Substitution, normalize_to_list_of_substitutions, perform_substitutions
+from launch.substitution import Substitution
+from launch.utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 
 class Xacro(Substitution):

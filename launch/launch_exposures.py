@@ -6,19 +6,22 @@ Tags: ``arg`` (with ``choice``), ``let``, ``include`` (with ``arg``), ``group`` 
 ``shutdown``. Every tag takes ``if`` / ``unless``.
 Substitutions: ``var``, ``env``, ``optenv`` (ROS 1's, which Jazzy does not have: ``env`` with an empty
 default), ``find-exec``, ``command``, ``eval``, ``dirname``, ``filename``, ``anon``, ``not``, ``and``,
-``or``, ``equals``, ``not-equals``, ``if``."""
+``or``, ``equals``, ``not-equals``, ``if``.
+
+It stands above the actions and the front end's reader (launch/frontend/, which knows no action) and registers
+them as ``import launch`` imports it; launch_ros/frontend.py is its like for launch_ros."""
 
 from __future__ import annotations
 
 import shlex
 from typing import Any
 
-from .. import actions, substitutions
-from ..conditions import IfCondition, UnlessCondition
-from ..substitutions.text_substitution import TextSubstitution
-from .entity import Entity
-from .expose import expose_action, expose_substitution
-from .type_utils import is_entity_list
+from . import actions, substitutions
+from .conditions import IfCondition, UnlessCondition
+from .frontend.entity import Entity
+from .frontend.expose import expose_action, expose_substitution
+from .frontend.type_utils import is_entity_list
+from .text_substitution import TextSubstitution
 
 ENTITIES = list[Entity]
 
