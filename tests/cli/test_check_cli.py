@@ -72,8 +72,11 @@ def test_missing_file_one_line() -> None:
     no_traceback(proc)
 
 
-def test_unknown_suffix() -> None:
-    proc = check(REPO / "pyproject.toml")
+def test_unknown_suffix(tmp_path: Path) -> None:
+    # a file of its own: the repository's pyproject.toml once held "<node>" in a comment, and was sniffed as XML
+    path = tmp_path / "settings.toml"
+    path.write_text('[tool.example]\nname = "robot"\n')
+    proc = check(path)
     assert proc.returncode == 1
     assert "[UNKNOWN_FORMAT]" in proc.stderr
     no_traceback(proc)

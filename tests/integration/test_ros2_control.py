@@ -283,9 +283,13 @@ def test_the_spawner_waits_for_a_manager_that_comes_late_as_jazzys_does(sim_fact
     """Jazzy's spawner waits for ever by default (``--controller-manager-timeout`` 0; controller_manager_services.py
     ``service_caller`` says "Could not contact service" every 10 s): a launch file's spawner started before a slow
     simulation's manager gets its controllers. Before, gazelle's gave up after 10 s with "Controller manager not
-    available". ~25 s: the spawner's first 10 s wait is the behaviour under test."""
+    available". ~15 s: the spawner's first 10 s wait is the behaviour under test."""
     sim = sim_factory("--no-viewer")
-    spawner = start([*GAZELLE, "spawner", "joint_state_broadcaster", "diffbot_base_controller"], "spawner")
+    # the controllers' file given to the spawner, as Jazzy launch files do (the spawn's own --params-file reaches the
+    # manager only after it is up: a spawner already waiting could load before the types were set)
+    spawner = start(
+        [*GAZELLE, "spawner", "joint_state_broadcaster", "diffbot_base_controller", "-p", str(DIFFBOT_YAML)], "spawner"
+    )
     try:
         spawner.wait_line("Could not contact service /controller_manager/list_controllers", 30)
         assert spawner.popen.poll() is None, spawner.output
